@@ -1,0 +1,5 @@
+import sys
+
+from assistantx.cli import main
+
+sys.exit(main())

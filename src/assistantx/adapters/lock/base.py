@@ -1,0 +1,104 @@
+"""The smart lock interface: one-time QR codes and door events of the robot's locker.
+
+The assistant issues a code bound to an instruction, a person, a purpose and an item; the
+person scans it at the locker; the lock reports code_accepted / code_rejected and the door's
+open/close, each attributed to the person the accepted code was issued to.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from abc import ABC, abstractmethod
+from types import TracebackType
+from typing import Literal, Self
+
+from pydantic import BaseModel, Field
+
+# What the person does at the locker: put the item in, take it out, or take it out, work on
+# it (sign, seal, copy, heat) and put it back; "produce" = make it at a facility and put it in.
+Purpose = Literal["deposit", "collect", "sign", "seal", "copy", "heat", "produce"]
+
+LockEventKind = Literal["door_opened", "door_closed", "code_accepted", "code_rejected"]
+
+
+class QRCode(BaseModel):
+    code_id: str
+    payload: str = Field(description="the text encoded in the QR image; opaque to the assistant")
+    lock_id: str
+    instruction_id: str
+    person: str
+    purpose: Purpose
+    item: str
+    issued_at: float
+    expires_at: float
+    png: bytes | None = Field(default=None, exclude=True, description="rendered QR image")
+
+
+class LockEvent(BaseModel):
+    seq: int
+    kind: LockEventKind
+    time: float
+    code_id: str | None = None
+    person: str | None = None
+    instruction_id: str | None = None
+    reason: str | None = None
+
+
+class LockStatus(BaseModel):
+    lock_id: str
+    door: Literal["open", "closed"]
+    locked: bool
+    active_codes: int
+    contents: list[str] = Field(default_factory=list, description="item ids, where known")
+
+
+class Locker(ABC):
+    """A locker with a magnetic lock, a QR scanner and a door sensor."""
+
+    def __init__(self) -> None:
+        self._subscribers: list[asyncio.Queue[LockEvent]] = []
+
+    async def start(self) -> None:
+        """Connect; idempotent."""
+
+    async def stop(self) -> None:
+        """Disconnect; idempotent."""
+
+    async def __aenter__(self) -> Self:
+        await self.start()
+        return self
+
+    async def __aexit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        await self.stop()
+
+    @abstractmethod
+    async def issue_code(
+        self, *, instruction_id: str, person: str, purpose: Purpose, item: str
+    ) -> QRCode:
+        """Provision a one-time code at the lock and return it (with its PNG)."""
+
+    @abstractmethod
+    async def status(self) -> LockStatus:
+        """Door, lock and code counts."""
+
+    async def revoke(self, code_id: str) -> None:  # noqa: B027 - optional capability
+        """Invalidate a code before it is used (default: codes simply expire)."""
+
+    def subscribe(self) -> asyncio.Queue[LockEvent]:
+        """A queue that receives every event from now on."""
+        queue: asyncio.Queue[LockEvent] = asyncio.Queue()
+        self._subscribers.append(queue)
+        return queue
+
+    def unsubscribe(self, queue: asyncio.Queue[LockEvent]) -> None:
+        if queue in self._subscribers:
+            self._subscribers.remove(queue)
+
+    def _publish(self, event: LockEvent) -> None:
+        for queue in self._subscribers:
+            queue.put_nowait(event)

@@ -1,0 +1,105 @@
+"""The messenger interface: text, images and files to people and group chats, and inbound
+messages normalized to one shape whatever the platform.
+
+Implementations: the simulator (simulated people), the built-in messenger of the service
+(REST + web page), Matrix. Inbound messages go onto the one ``asyncio.Queue`` connected with
+``connect_inbox``; one consumer dispatches them.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from abc import ABC, abstractmethod
+from datetime import datetime
+from types import TracebackType
+from typing import Literal, Self
+
+from pydantic import BaseModel, Field
+
+
+class ChatRef(BaseModel):
+    """A conversation: a DM with a person (id = person id) or a group chat (id = group id)."""
+
+    model_config = {"frozen": True}
+
+    kind: Literal["dm", "group"]
+    id: str
+
+    def __str__(self) -> str:
+        return f"{self.kind}:{self.id}"
+
+
+class Attachment(BaseModel):
+    kind: Literal["image", "file"]
+    name: str
+    mime: str = "application/octet-stream"
+    data: bytes | None = Field(default=None, exclude=True)
+    ref: str | None = Field(default=None, description="platform media reference, e.g. mxc://")
+    item: str | None = Field(default=None, description="office item id, e.g. file:lee")
+
+
+class OutboundMessage(BaseModel):
+    chat: ChatRef
+    text: str
+    attachments: list[Attachment] = Field(default_factory=list)
+    instruction_id: str | None = None
+    question_id: str | None = Field(default=None, description="set when a reply is expected")
+    idempotency_key: str | None = Field(
+        default=None, description="stable per logical message, so retries never duplicate"
+    )
+
+
+class SentMessage(BaseModel):
+    platform: str
+    message_id: str
+    chat: ChatRef
+    time: datetime
+
+
+class InboundMessage(BaseModel):
+    platform: str
+    event_id: str
+    chat: ChatRef
+    sender: str = Field(description="person id of the author")
+    text: str
+    attachments: list[Attachment] = Field(default_factory=list)
+    time: datetime
+    in_reply_to: str | None = Field(default=None, description="question id, where known")
+
+
+class Messenger(ABC):
+    """Sends to people and groups; delivers what they write to the connected inbox."""
+
+    platform: str = "abstract"
+
+    def __init__(self) -> None:
+        self._inbox: asyncio.Queue[InboundMessage] | None = None
+
+    def connect_inbox(self, inbox: asyncio.Queue[InboundMessage]) -> None:
+        self._inbox = inbox
+
+    async def _deliver(self, message: InboundMessage) -> None:
+        if self._inbox is not None:
+            await self._inbox.put(message)
+
+    async def start(self) -> None:
+        """Connect; idempotent."""
+
+    async def stop(self) -> None:
+        """Disconnect; idempotent."""
+
+    async def __aenter__(self) -> Self:
+        await self.start()
+        return self
+
+    async def __aexit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        await self.stop()
+
+    @abstractmethod
+    async def send(self, message: OutboundMessage) -> SentMessage:
+        """Deliver ``message`` once (retries with the same idempotency key never duplicate)."""

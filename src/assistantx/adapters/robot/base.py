@@ -1,0 +1,68 @@
+"""The robot base interface: drive to a named place of the office.
+
+A concrete base (the in-process navigator, the simulator's kinematic base, later a ROS 2
+bridge) resolves a location id to its map anchor, plans, drives and reports arrival, or
+raises a RobotError subclass (UnreachableError, BlockedError, LocalizationLostError).
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from types import TracebackType
+from typing import Self
+
+from pydantic import BaseModel, Field
+
+
+class Pose(BaseModel):
+    x: float = Field(description="metres, map frame")
+    y: float = Field(description="metres, map frame")
+    yaw: float = Field(default=0.0, description="radians, counter-clockwise from +x")
+
+
+class MoveResult(BaseModel):
+    place: str = Field(description="the location id the robot arrived at")
+    distance_m: float
+    duration_s: float
+
+
+class RobotState(BaseModel):
+    place: str | None = Field(description="location id the robot stands at, None while driving")
+    pose: Pose
+    moving: bool = False
+    goal: str | None = None
+    path: list[tuple[float, float]] = Field(default_factory=list, description="planned path, m")
+    particles: list[tuple[float, float, float]] | None = Field(
+        default=None, description="a sample of the localizer's particle cloud (x, y, yaw)"
+    )
+    odometer_m: float = Field(default=0.0, description="distance driven since start")
+
+
+class RobotBase(ABC):
+    """A mobile base that drives to the office's named locations."""
+
+    async def start(self) -> None:
+        """Connect / initialise; idempotent."""
+
+    async def stop(self) -> None:
+        """Release resources; idempotent."""
+
+    async def __aenter__(self) -> Self:
+        await self.start()
+        return self
+
+    async def __aexit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        await self.stop()
+
+    @abstractmethod
+    async def move_to(self, location_id: str) -> MoveResult:
+        """Drive to the anchor of ``location_id``; raise RobotError on failure."""
+
+    @abstractmethod
+    def state(self) -> RobotState:
+        """The current pose, place, path and (if localizing) particle sample."""

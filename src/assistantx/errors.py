@@ -1,0 +1,100 @@
+"""The error tree of AssistantX.
+
+    AssistantXError
+    ├── OfficeError                 a bad office file (names the file, the entry and the problem)
+    ├── GroundingError              an action argument that does not resolve in memory
+    │   ├── UnknownNameError        nothing matches the name
+    │   └── AmbiguousNameError      several things match the name
+    ├── ActionError                 an action that is invalid in the current state
+    ├── AdapterError                an outside part (messenger, robot, lock) failed
+    │   ├── MessengerError
+    │   ├── RobotError
+    │   │   ├── UnreachableError    goal outside the map, inside an obstacle, or cut off
+    │   │   ├── BlockedError        the path became blocked while driving
+    │   │   └── LocalizationLostError
+    │   └── LockError
+    ├── ReasonerError               an agent could not produce a valid output
+    │   └── ModelBehaviorError      the model kept producing invalid output after retries
+    └── LLMError                    the model server failed (HTTP, timeout) after retries
+
+Low-level errors are translated at the boundary with ``raise ... from exc``. The text of a
+GroundingError is written so it can be fed back to a language model as-is.
+"""
+
+from __future__ import annotations
+
+
+class AssistantXError(Exception):
+    """Base of every error raised by AssistantX."""
+
+
+class OfficeError(AssistantXError):
+    """An office file that cannot be loaded."""
+
+    def __init__(self, path: str, entry: str, problem: str) -> None:
+        self.path = path
+        self.entry = entry
+        self.problem = problem
+        super().__init__(f"{path}: {entry}: {problem}")
+
+
+class GroundingError(AssistantXError):
+    """An action argument that does not resolve to exactly one thing in memory."""
+
+    def __init__(self, kind: str, name: str, message: str, candidates: list[str] | None = None):
+        self.kind = kind
+        self.name = name
+        self.candidates = candidates or []
+        super().__init__(message)
+
+
+class UnknownNameError(GroundingError):
+    """Nothing in memory matches the name."""
+
+
+class AmbiguousNameError(GroundingError):
+    """Several things in memory match the name."""
+
+
+class ActionError(AssistantXError):
+    """An action that cannot be carried out in the current state."""
+
+
+class AdapterError(AssistantXError):
+    """An outside part failed."""
+
+
+class MessengerError(AdapterError):
+    """The messenger could not deliver or receive."""
+
+
+class RobotError(AdapterError):
+    """The robot base could not complete a motion."""
+
+
+class UnreachableError(RobotError):
+    """The goal lies outside the map, inside an obstacle, or cannot be reached."""
+
+
+class BlockedError(RobotError):
+    """The path became blocked while driving."""
+
+
+class LocalizationLostError(RobotError):
+    """The localizer lost track of the robot's pose."""
+
+
+class LockError(AdapterError):
+    """The locker could not carry out a command."""
+
+
+class ReasonerError(AssistantXError):
+    """An agent could not produce a valid output."""
+
+
+class ModelBehaviorError(ReasonerError):
+    """The model kept producing invalid output after the allowed retries."""
+
+
+class LLMError(AssistantXError):
+    """The model server failed after retries."""

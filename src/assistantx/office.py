@@ -1,0 +1,253 @@
+"""The office: locations, people, items, facilities and group chats, loaded from YAML.
+
+The office file is the ground truth of who works where and who owns what. Each ownership
+fact says whether the assistant *knows* it at start; the Memory Unit is built from the known
+facts only, the simulator from all of them.
+
+Item ids are ``"<type>:<owner>"`` (``"stapler:zhang"``), so an item is named by its type and
+its owner, as people name them ("Zhang's stapler").
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any, Literal, TypeVar
+
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from assistantx.errors import OfficeError
+
+DEFAULT_OFFICE = Path(__file__).resolve().parents[2] / "dataset" / "office.yaml"
+
+LocationKind = Literal["workstation", "facility", "room"]
+FacilityOperation = Literal["print", "copy", "coffee", "water", "heat", "vend", "meet"]
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class Location(_Model):
+    id: str
+    kind: LocationKind
+    name: str
+    x: float = Field(description="metres, map frame")
+    y: float = Field(description="metres, map frame")
+
+
+ItemKind = Literal["belonging", "personal", "electronic", "product"]
+
+
+class ItemType(_Model):
+    """A kind of item.
+
+    ``belonging``: shareable, anyone's will do (a stapler); ``personal``: only the owner's
+    will do (a document, a lunch); ``electronic``: a file, forwarded rather than carried;
+    ``product``: made by a facility (a coffee, a printout), owned by nobody at start.
+    """
+
+    id: str
+    name: str
+    synonyms: tuple[str, ...] = ()
+    kind: ItemKind = "belonging"
+
+    @property
+    def physical(self) -> bool:
+        return self.kind != "electronic"
+
+
+class Ownership(_Model):
+    type: str
+    known: bool = True
+
+
+class Person(_Model):
+    id: str
+    name: str
+    aliases: tuple[str, ...] = ()
+    location: str
+    handle: str
+    owns: tuple[Ownership, ...] = ()
+
+    def item_id(self, type_id: str) -> str:
+        return f"{type_id}:{self.id}"
+
+
+class Facility(_Model):
+    id: str
+    name: str
+    synonyms: tuple[str, ...] = ()
+    location: str
+    operations: tuple[FacilityOperation, ...] = ()
+    guards: tuple[str, ...] = Field(default=(), description="people who run it or sit next to it")
+    products: tuple[str, ...] = Field(default=(), description="what it makes, e.g. coffee")
+
+
+class Group(_Model):
+    id: str
+    name: str
+    members: tuple[str, ...]
+
+
+class Robot(_Model):
+    home: str
+    speed_mps: float = 0.5
+
+
+class Office(_Model):
+    name: str
+    locations: tuple[Location, ...]
+    item_types: tuple[ItemType, ...]
+    people: tuple[Person, ...]
+    facilities: tuple[Facility, ...]
+    groups: tuple[Group, ...]
+    robot: Robot
+
+    # -- lookups -----------------------------------------------------------------------
+    def location(self, location_id: str) -> Location:
+        return _by_id(self.locations, location_id, "location")
+
+    def person(self, person_id: str) -> Person:
+        return _by_id(self.people, person_id, "person")
+
+    def facility(self, facility_id: str) -> Facility:
+        return _by_id(self.facilities, facility_id, "facility")
+
+    def group(self, group_id: str) -> Group:
+        return _by_id(self.groups, group_id, "group")
+
+    def item_type(self, type_id: str) -> ItemType:
+        return _by_id(self.item_types, type_id, "item type")
+
+    def workstations(self) -> list[Location]:
+        return [loc for loc in self.locations if loc.kind == "workstation"]
+
+    def public_places(self) -> list[Location]:
+        return [loc for loc in self.locations if loc.kind != "workstation"]
+
+    def owners_of(self, type_id: str, *, known_only: bool = False) -> list[str]:
+        return [
+            p.id
+            for p in self.people
+            for o in p.owns
+            if o.type == type_id and (o.known or not known_only)
+        ]
+
+    def distance(self, a: str, b: str) -> float:
+        """Straight-line distance in metres between two locations (the map gives paths)."""
+        la, lb = self.location(a), self.location(b)
+        return math.hypot(la.x - lb.x, la.y - lb.y)
+
+
+_T = TypeVar("_T", Location, Person, Facility, Group, ItemType)
+
+
+def _by_id(entries: Iterable[_T], entry_id: str, kind: str) -> _T:
+    for entry in entries:
+        if entry.id == entry_id:
+            return entry
+    raise KeyError(f"unknown {kind} {entry_id!r}")
+
+
+def load_office(path: str | Path | None = None) -> Office:
+    """Load and check an office file; any problem raises OfficeError naming file and entry."""
+    file = Path(path) if path is not None else DEFAULT_OFFICE
+    where = str(file)
+    try:
+        raw = yaml.safe_load(file.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise OfficeError(where, "file", f"cannot be read: {exc.strerror or exc}") from exc
+    except yaml.YAMLError as exc:
+        raise OfficeError(where, "file", f"is not valid YAML: {exc}") from exc
+    return parse_office(raw, where)
+
+
+def parse_office(raw: Any, where: str = "<office>") -> Office:
+    if not isinstance(raw, dict):
+        raise OfficeError(where, "file", "must be a mapping with locations, people, ...")
+    try:
+        office = Office.model_validate(raw)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        raise OfficeError(where, _entry_name(raw, err["loc"]), err["msg"]) from exc
+    _check_references(office, where)
+    return office
+
+
+def _entry_name(raw: dict[str, Any], loc: tuple[int | str, ...]) -> str:
+    """Turn a pydantic error location into 'people[3] (zhang).owns[0].type'."""
+    parts: list[str] = []
+    node: Any = raw
+    for key in loc:
+        if isinstance(key, int):
+            label = f"[{key}]"
+            if isinstance(node, list) and key < len(node):
+                node = node[key]
+                if isinstance(node, dict) and "id" in node:
+                    label += f" ({node['id']})"
+            parts.append(label)
+        else:
+            parts.append(("." if parts else "") + key)
+            node = node.get(key) if isinstance(node, dict) else None
+    return "".join(parts) or "file"
+
+
+def _check_references(office: Office, where: str) -> None:
+    def fail(entry: str, problem: str) -> None:
+        raise OfficeError(where, entry, problem)
+
+    for section, entries in (
+        ("locations", office.locations),
+        ("item_types", office.item_types),
+        ("people", office.people),
+        ("facilities", office.facilities),
+        ("groups", office.groups),
+    ):
+        counts = Counter(e.id for e in entries)
+        for entry_id, n in counts.items():
+            if n > 1:
+                fail(f"{section} ({entry_id})", f"duplicate id {entry_id!r} ({n} entries)")
+        for e in entries:
+            if not e.id or not e.id.replace("_", "").isalnum() or e.id != e.id.lower():
+                fail(f"{section} ({e.id})", "ids are lower-case letters, digits and '_'")
+
+    location_ids = {loc.id for loc in office.locations}
+    type_ids = {t.id for t in office.item_types}
+    person_ids = {p.id for p in office.people}
+    all_ids = [*location_ids, *person_ids, *(g.id for g in office.groups)]
+    for entry_id, n in Counter(all_ids).items():
+        if n > 1:
+            fail(entry_id, "the same id names two different things (person/place/group)")
+    for f in office.facilities:
+        # A facility may share its id with the location it stands in, nothing else.
+        if f.id in person_ids or f.id in {g.id for g in office.groups}:
+            fail(f"facilities ({f.id})", "the id is already used by a person or group")
+        if f.id in location_ids and f.id != f.location:
+            fail(f"facilities ({f.id})", "the id names a different location")
+
+    for p in office.people:
+        if p.location not in location_ids:
+            fail(f"people ({p.id}).location", f"unknown location {p.location!r}")
+        seen: set[str] = set()
+        for o in p.owns:
+            if o.type not in type_ids:
+                fail(f"people ({p.id}).owns", f"unknown item type {o.type!r}")
+            if o.type in seen:
+                fail(f"people ({p.id}).owns", f"item type {o.type!r} listed twice")
+            seen.add(o.type)
+    for f in office.facilities:
+        if f.location not in location_ids:
+            fail(f"facilities ({f.id}).location", f"unknown location {f.location!r}")
+        for g in f.guards:
+            if g not in person_ids:
+                fail(f"facilities ({f.id}).guards", f"unknown person {g!r}")
+    for g in office.groups:
+        for m in g.members:
+            if m not in person_ids:
+                fail(f"groups ({g.id}).members", f"unknown person {m!r}")
+    if office.robot.home not in location_ids:
+        fail("robot.home", f"unknown location {office.robot.home!r}")
