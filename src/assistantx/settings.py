@@ -1,0 +1,53 @@
+"""One settings object, read from ``ASSISTANTX_*`` environment variables.
+
+Nothing else in the code base reads ``os.environ``. Secrets are ``SecretStr`` so they are
+masked in reprs and logs. Components take the fields they need as arguments.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Literal
+
+from pydantic import Field, SecretStr
+from pydantic_settings import BaseSettings, SettingsConfigDict
+
+from assistantx.office import DEFAULT_OFFICE
+
+
+class Settings(BaseSettings):
+    model_config = SettingsConfigDict(env_prefix="ASSISTANTX_", extra="ignore", frozen=True)
+
+    # -- the office and the data directory ---------------------------------------------
+    office: Path = Field(default=DEFAULT_OFFICE, description="office YAML file")
+    data_dir: Path = Field(default=Path("data"), description="journal, snapshots, keys")
+
+    # -- the reasoner ---------------------------------------------------------------------
+    llm_base_url: str | None = Field(default=None, description="OpenAI-compatible /v1 URL")
+    llm_model: str = "gpt-4o-mini"
+    llm_api_key: SecretStr | None = None
+    llm_timeout_s: float = 60.0
+    llm_temperature: float = 0.0
+    llm_seed: int | None = 0
+    llm_max_retries: int = Field(default=4, description="HTTP retries on 429/5xx/timeouts")
+    llm_output_retries: int = Field(default=2, description="retries on invalid model output")
+    reasoner: Literal["auto", "symbolic", "llm"] = "auto"
+
+    # -- the loop -----------------------------------------------------------------------
+    max_steps: int = 30
+    instruction_deadline_s: float = 3600.0
+
+    # -- the service --------------------------------------------------------------------
+    host: str = "127.0.0.1"
+    port: int = 8000
+    operator_token: SecretStr | None = None
+
+    @property
+    def llm_enabled(self) -> bool:
+        return bool(self.llm_base_url)
+
+    @property
+    def effective_reasoner(self) -> Literal["symbolic", "llm"]:
+        if self.reasoner == "auto":
+            return "llm" if self.llm_enabled else "symbolic"
+        return self.reasoner
