@@ -2,6 +2,7 @@
 
     AssistantXError
     ├── OfficeError                 a bad office file (names the file, the entry and the problem)
+    ├── MapError                    a bad map_server map or anchors file
     ├── GroundingError              an action argument that does not resolve in memory
     │   ├── UnknownNameError        nothing matches the name
     │   └── AmbiguousNameError      several things match the name
@@ -36,6 +37,10 @@ class OfficeError(AssistantXError):
         self.entry = entry
         self.problem = problem
         super().__init__(f"{path}: {entry}: {problem}")
+
+
+class MapError(AssistantXError):
+    """A map or anchors file that cannot be loaded (names the file and the problem)."""
 
 
 class GroundingError(AssistantXError):
