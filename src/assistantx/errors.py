@@ -14,6 +14,12 @@
     │   │   ├── BlockedError        the path became blocked while driving
     │   │   └── LocalizationLostError
     │   └── LockError
+    │       ├── LockConnectionError the lock cannot be reached, or the link dropped
+    │       │   └── LockTimeoutError  no answer within the timeout
+    │       ├── LockAuthError       the handshake failed: wrong shared key or a fake peer
+    │       ├── LockProtocolError   a malformed, oversized or unexpected frame
+    │       ├── LockCommandError    the lock refused a command (door state, unknown code)
+    │       └── InvalidCodeError    a QR payload that is malformed, forged or under an unknown key
     ├── ReasonerError               an agent could not produce a valid output
     │   └── ModelBehaviorError      the model kept producing invalid output after retries
     └── LLMError                    the model server failed (HTTP, timeout) after retries
@@ -91,6 +97,38 @@ class LocalizationLostError(RobotError):
 
 class LockError(AdapterError):
     """The locker could not carry out a command."""
+
+
+class LockConnectionError(LockError):
+    """The lock cannot be reached, or the link to it dropped."""
+
+
+class LockTimeoutError(LockConnectionError):
+    """The lock gave no answer within the timeout."""
+
+
+class LockAuthError(LockError):
+    """The link handshake failed: a wrong shared key, or a peer that does not hold it."""
+
+
+class LockProtocolError(LockError):
+    """A malformed, oversized or unexpected frame on the lock link."""
+
+
+class LockCommandError(LockError):
+    """The lock refused a command; ``kind`` names why (e.g. ``door_closed``, ``unknown_code``)."""
+
+    def __init__(self, kind: str, message: str) -> None:
+        self.kind = kind
+        super().__init__(message)
+
+
+class InvalidCodeError(LockError):
+    """A QR payload that is malformed, forged, or encrypted under a key the keyring lacks."""
+
+    def __init__(self, reason: str, message: str) -> None:
+        self.reason = reason
+        super().__init__(message)
 
 
 class ReasonerError(AssistantXError):

@@ -1,0 +1,263 @@
+"""Long-term memory: the assistant's belief about the office as an undirected networkx graph.
+
+Node ids are typed: ``person:zhang``, ``location:desk_04``, ``facility:printer``,
+``item:stapler:zhang``, ``group:office_work``. Edges carry a ``rel``: ``at`` (person/facility →
+location), ``owns`` (person → item), ``member`` (person → group), ``guards`` (person → facility).
+The graph starts from the office's *known* facts; updates come from observations, each
+recorded with its time and evidence.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Literal
+
+import networkx as nx
+from pydantic import TypeAdapter
+
+from assistantx.memory.updates import (
+    AppliedUpdate,
+    AvailabilityUpdate,
+    ItemLocationUpdate,
+    MemoryUpdate,
+    OwnershipUpdate,
+)
+from assistantx.office import Office
+
+Availability = Literal["available", "unavailable", "unknown"]
+LOCKER = "locker"
+
+_applied_list: TypeAdapter[list[AppliedUpdate]] = TypeAdapter(list[AppliedUpdate])
+
+
+def pid(person_id: str) -> str:
+    return f"person:{person_id}"
+
+
+def lid(location_id: str) -> str:
+    return f"location:{location_id}"
+
+
+def fid(facility_id: str) -> str:
+    return f"facility:{facility_id}"
+
+
+def gid(group_id: str) -> str:
+    return f"group:{group_id}"
+
+
+def iid(item_id: str) -> str:
+    return f"item:{item_id}"
+
+
+def _bare(node: str) -> str:
+    return node.split(":", 1)[1]
+
+
+class LongTermMemory:
+    """Typed queries and updates over the belief graph."""
+
+    def __init__(self, office: Office, graph: nx.Graph | None = None) -> None:
+        self.office = office
+        self.graph: nx.Graph = graph if graph is not None else _graph_from_office(office)
+        self.updates: list[AppliedUpdate] = []
+
+    # -- queries -------------------------------------------------------------------------
+    def availability(self, person_id: str) -> Availability:
+        value: Availability = self.graph.nodes[pid(person_id)]["available"]
+        return value
+
+    def availability_observed_at(self, person_id: str) -> float | None:
+        value: float | None = self.graph.nodes[pid(person_id)].get("observed_at")
+        return value
+
+    def people(self) -> list[str]:
+        return [p.id for p in self.office.people]
+
+    def available_people(self) -> list[str]:
+        return [p for p in self.people() if self.availability(p) == "available"]
+
+    def location_of(self, person_id: str) -> str:
+        return self._neighbour(pid(person_id), "at", "location")
+
+    def facility_location(self, facility_id: str) -> str:
+        return self._neighbour(fid(facility_id), "at", "location")
+
+    def people_at(self, location_id: str) -> list[str]:
+        return sorted(
+            _bare(n)
+            for n in self.graph.neighbors(lid(location_id))
+            if self.graph.nodes[n]["kind"] == "person"
+        )
+
+    def guards(self, facility_id: str) -> list[str]:
+        return self._neighbours(fid(facility_id), "guards", "person")
+
+    def guarded_by(self, person_id: str) -> list[str]:
+        return self._neighbours(pid(person_id), "guards", "facility")
+
+    def members(self, group_id: str) -> list[str]:
+        return self._neighbours(gid(group_id), "member", "person")
+
+    def groups_of(self, person_id: str) -> list[str]:
+        return self._neighbours(pid(person_id), "member", "group")
+
+    def owners(self, item_type: str) -> list[str]:
+        """People known to own an item of this type."""
+        return sorted(
+            self.graph.nodes[n]["owner"]
+            for n, d in self.graph.nodes(data=True)
+            if d["kind"] == "item" and d["type"] == item_type and d.get("owner")
+        )
+
+    def known_not_owners(self, item_type: str) -> list[str]:
+        return sorted(
+            p for p in self.people() if item_type in self.graph.nodes[pid(p)]["lacks"]
+        )
+
+    def known_not_owners_of(self, person_id: str) -> list[str]:
+        return sorted(self.graph.nodes[pid(person_id)]["lacks"])
+
+    def ownership(self, person_id: str, item_type: str) -> bool | None:
+        """True/False when known, None when memory does not know."""
+        if self.graph.has_node(iid(f"{item_type}:{person_id}")):
+            return True
+        if item_type in self.graph.nodes[pid(person_id)]["lacks"]:
+            return False
+        return None
+
+    def items_of(self, person_id: str) -> list[str]:
+        return self._neighbours(pid(person_id), "owns", "item")
+
+    def item_holder(self, item_id: str) -> str | None:
+        node = iid(item_id)
+        if not self.graph.has_node(node):
+            return None
+        holder: str | None = self.graph.nodes[node].get("holder")
+        return holder
+
+    def has_item(self, item_id: str) -> bool:
+        return self.graph.has_node(iid(item_id))
+
+    def _neighbours(self, node: str, rel: str, kind: str) -> list[str]:
+        return sorted(
+            _bare(n)
+            for n in self.graph.neighbors(node)
+            if self.graph.edges[node, n]["rel"] == rel and self.graph.nodes[n]["kind"] == kind
+        )
+
+    def _neighbour(self, node: str, rel: str, kind: str) -> str:
+        found = self._neighbours(node, rel, kind)
+        if len(found) != 1:
+            raise KeyError(f"{node} has {len(found)} {rel} {kind} neighbours")
+        return found[0]
+
+    # -- updates -------------------------------------------------------------------------
+    def apply(
+        self, update: MemoryUpdate, time: float, instruction_id: str | None = None
+    ) -> AppliedUpdate:
+        """Apply a typed update (ids already resolved) and record it with its evidence."""
+        if isinstance(update, AvailabilityUpdate):
+            changed = self._set_availability(update.person, update.available, time)
+        elif isinstance(update, OwnershipUpdate):
+            changed = self._set_ownership(update.person, update.item_type, update.owns)
+        else:
+            changed = self._set_holder(update.item, update.holder)
+        applied = AppliedUpdate(
+            time=time, instruction_id=instruction_id, update=update, changed=changed
+        )
+        self.updates.append(applied)
+        return applied
+
+    def _set_availability(self, person_id: str, available: bool | None, time: float) -> bool:
+        node = self.graph.nodes[pid(person_id)]
+        value: Availability = (
+            "unknown" if available is None else "available" if available else "unavailable"
+        )
+        changed = node["available"] != value
+        node["available"] = value
+        node["observed_at"] = time
+        return changed
+
+    def _set_ownership(self, person_id: str, item_type: str, owns: bool) -> bool:
+        self.office.person(person_id)
+        self.office.item_type(item_type)
+        node = iid(f"{item_type}:{person_id}")
+        lacks: set[str] = self.graph.nodes[pid(person_id)]["lacks"]
+        if owns:
+            lacks.discard(item_type)
+            if self.graph.has_node(node):
+                return False
+            self._add_item(person_id, item_type)
+            return True
+        changed = item_type not in lacks or self.graph.has_node(node)
+        lacks.add(item_type)
+        if self.graph.has_node(node):
+            self.graph.remove_node(node)
+        return changed
+
+    def _set_holder(self, item_id: str, holder: str) -> bool:
+        node = iid(item_id)
+        if not self.graph.has_node(node):
+            item_type, _, owner = item_id.partition(":")
+            self.office.item_type(item_type)
+            self.graph.add_node(node, kind="item", type=item_type, owner=None, holder=None)
+            if owner and self.graph.has_node(pid(owner)):
+                self.graph.nodes[node]["for"] = owner
+        changed = self.graph.nodes[node].get("holder") != holder
+        self.graph.nodes[node]["holder"] = holder
+        return changed
+
+    def _add_item(self, person_id: str, item_type: str) -> None:
+        node = iid(f"{item_type}:{person_id}")
+        self.graph.add_node(
+            node, kind="item", type=item_type, owner=person_id, holder=person_id
+        )
+        self.graph.add_edge(pid(person_id), node, rel="owns")
+
+    # -- persistence ---------------------------------------------------------------------
+    def snapshot(self) -> dict[str, Any]:
+        data = nx.node_link_data(self.graph, edges="edges")
+        for node in data["nodes"]:
+            if "lacks" in node:
+                node["lacks"] = sorted(node["lacks"])
+        return {
+            "graph": data,
+            "updates": [u.model_dump(mode="json") for u in self.updates],
+        }
+
+    @classmethod
+    def restore(cls, office: Office, snapshot: dict[str, Any]) -> LongTermMemory:
+        data = json.loads(json.dumps(snapshot["graph"]))
+        for node in data["nodes"]:
+            if "lacks" in node:
+                node["lacks"] = set(node["lacks"])
+        graph = nx.node_link_graph(data, edges="edges")
+        memory = cls(office, graph)
+        memory.updates = _applied_list.validate_python(snapshot.get("updates", []))
+        return memory
+
+
+def _graph_from_office(office: Office) -> nx.Graph:
+    g = nx.Graph()
+    for loc in office.locations:
+        g.add_node(lid(loc.id), kind="location", name=loc.name, type=loc.kind)
+    for f in office.facilities:
+        g.add_node(fid(f.id), kind="facility", name=f.name)
+        g.add_edge(fid(f.id), lid(f.location), rel="at")
+    for p in office.people:
+        g.add_node(pid(p.id), kind="person", name=p.name, available="unknown", lacks=set())
+        g.add_edge(pid(p.id), lid(p.location), rel="at")
+        for o in p.owns:
+            if o.known:
+                node = iid(p.item_id(o.type))
+                g.add_node(node, kind="item", type=o.type, owner=p.id, holder=p.id)
+                g.add_edge(pid(p.id), node, rel="owns")
+    for f in office.facilities:
+        for guard in f.guards:
+            g.add_edge(pid(guard), fid(f.id), rel="guards")
+    for grp in office.groups:
+        g.add_node(gid(grp.id), kind="group", name=grp.name)
+        for m in grp.members:
+            g.add_edge(pid(m), gid(grp.id), rel="member")
+    return g

@@ -1,0 +1,62 @@
+"""Tolerant name matching: case, spacing, punctuation, titles and possessives.
+
+People say "Dr. Zhang", "zhang's", "ZHANG  Wei"; all mean the person ``zhang``. Matching is
+tiered so that exact names win over partial ones, and an answer is only given when exactly one
+thing matches in the best tier; otherwise the caller reports ambiguity, never guesses.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from collections.abc import Iterable
+
+TITLES = frozenset(
+    {"dr", "doctor", "mr", "mrs", "ms", "miss", "prof", "professor", "manager", "boss",
+     "teacher", "sir", "madam", "colleague", "mx", "the", "a", "an", "our"}
+)
+_NON_WORD = re.compile(r"[^a-z0-9]+")
+
+
+def normalize(text: str) -> str:
+    """Lower-case, drop punctuation, possessive 's, and titles; collapse spaces."""
+    text = text.lower().replace("’", "'")
+    text = re.sub(r"'s\b", "", text)
+    words = [w for w in _NON_WORD.split(text) if w and w not in TITLES]
+    return " ".join(words)
+
+
+class NameIndex:
+    """Maps names to ids in tiers: 0 = ids, full names and declared aliases; 1 = name words."""
+
+    def __init__(self) -> None:
+        self._tiers: list[dict[str, set[str]]] = [{}, {}]
+
+    def add(self, entity_id: str, names: Iterable[str], words: Iterable[str] = ()) -> None:
+        for name in (entity_id, entity_id.replace("_", " "), *names):
+            key = normalize(name)
+            if key:
+                self._tiers[0].setdefault(key, set()).add(entity_id)
+        for word in words:
+            key = normalize(word)
+            if key:
+                self._tiers[1].setdefault(key, set()).add(entity_id)
+
+    def lookup(self, name: str, *, fuzzy: float = 0.86) -> list[str]:
+        """Ids that match ``name`` in the best tier (several = ambiguous; none = unknown)."""
+        key = normalize(name)
+        if not key:
+            return []
+        for tier in self._tiers:
+            if key in tier:
+                return sorted(tier[key])
+        if fuzzy < 1.0:
+            for tier in self._tiers:
+                close = difflib.get_close_matches(key, list(tier), n=3, cutoff=fuzzy)
+                found = sorted({i for k in close for i in tier[k]})
+                if found:
+                    return found
+        return []
+
+    def keys(self) -> list[str]:
+        return sorted({k for tier in self._tiers for k in tier})

@@ -1,0 +1,174 @@
+"""Grounding: resolve the names in actions to ids of the office, or fail with a message.
+
+Names are matched tolerantly (case, spacing, titles, possessives; small typos only when one
+candidate is close). Ambiguity is an error listing the candidates, never a guess. The error
+texts are written to be fed back to a language model as they are.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+
+from assistantx.actions import (
+    Action,
+    ForwardFile,
+    Inform,
+    Inquire,
+    Move,
+    SendQR,
+    Stop,
+    Wait,
+    WaitInPlace,
+)
+from assistantx.errors import AmbiguousNameError, UnknownNameError
+from assistantx.memory.names import NameIndex, normalize
+from assistantx.office import Office
+
+ContactKind = str  # "person" | "group"
+
+
+class Resolver:
+    """Name → id lookups over one office."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self.people = NameIndex()
+        for p in office.people:
+            self.people.add(p.id, [p.name, *p.aliases], words=p.name.split())
+        self.groups = NameIndex()
+        for g in office.groups:
+            self.groups.add(g.id, [g.name, f"{g.name} group", f"{g.name} chat"], g.name.split())
+        self.facilities = NameIndex()
+        for f in office.facilities:
+            self.facilities.add(f.id, [f.name, *f.synonyms])
+        self.locations = NameIndex()
+        for loc in office.locations:
+            self.locations.add(loc.id, [loc.name])
+        self.item_types = NameIndex()
+        for t in office.item_types:
+            plural = [f"{n}s" for n in (t.name, *t.synonyms) if not n.endswith("s")]
+            self.item_types.add(t.id, [t.name, *t.synonyms, *plural])
+
+    # -- single lookups ------------------------------------------------------------------
+    def person(self, name: str) -> str:
+        return self._one("person", name, self.people.lookup(name), self._people_hint())
+
+    def group(self, name: str) -> str:
+        return self._one("group chat", name, self.groups.lookup(name), self._groups_hint())
+
+    def contact(self, name: str) -> tuple[ContactKind, str]:
+        """A person or a group chat. A name that matches both is ambiguous."""
+        people = self.people.lookup(name)
+        groups = self.groups.lookup(name)
+        if people and groups:
+            raise AmbiguousNameError(
+                "contact",
+                name,
+                f"Contact {name!r} matches both people {people} and group chats {groups}; "
+                "use an id.",
+                [*people, *groups],
+            )
+        if groups:
+            return "group", self._one("group chat", name, groups, self._groups_hint())
+        return "person", self._one(
+            "contact", name, people, self._people_hint() + " " + self._groups_hint()
+        )
+
+    def place(self, name: str) -> str:
+        """A location id from a location, a facility or a person's name (their desk)."""
+        found: set[str] = set()
+        found.update(self.locations.lookup(name, fuzzy=1.0))
+        found.update(self.office.facility(f).location for f in self.facilities.lookup(name, fuzzy=1.0))
+        found.update(self.office.person(p).location for p in self.people.lookup(name, fuzzy=1.0))
+        if not found:
+            found.update(self.locations.lookup(name))
+            found.update(self.office.facility(f).location for f in self.facilities.lookup(name))
+            found.update(self.office.person(p).location for p in self.people.lookup(name))
+        hint = (
+            "Use a person's name (their desk), a facility ("
+            + ", ".join(f.id for f in self.office.facilities)
+            + ") or a location id."
+        )
+        return self._one("place", name, sorted(found), hint)
+
+    def facility(self, name: str) -> str:
+        hint = "Facilities: " + ", ".join(f.id for f in self.office.facilities) + "."
+        return self._one("facility", name, self.facilities.lookup(name), hint)
+
+    def item_type(self, name: str) -> str:
+        hint = "Item types: " + ", ".join(t.id for t in self.office.item_types) + "."
+        return self._one("item type", name, self.item_types.lookup(name), hint)
+
+    def item(self, name: str) -> str:
+        """An item id ``type:person`` from ``stapler:zhang``, "Zhang's stapler", "stapler of Zhang"."""
+        text = name.strip()
+        if ":" in text:
+            type_part, _, owner_part = text.partition(":")
+        elif m := re.match(r"^(.+?)(?:'s|’s|s')\s+(.+)$", text):
+            owner_part, type_part = m.group(1), m.group(2)
+        elif m := re.match(r"^(.+?)\s+(?:of|from|for|belonging to)\s+(.+)$", text, re.I):
+            type_part, owner_part = m.group(1), m.group(2)
+        else:
+            raise UnknownNameError(
+                "item",
+                name,
+                f"Item {name!r} does not say whose it is. Name items as 'type:person', "
+                "e.g. 'stapler:zhang' or 'document:lee'.",
+            )
+        return f"{self.item_type(type_part)}:{self.person(owner_part)}"
+
+    # -- whole actions -------------------------------------------------------------------
+    def ground(self, action: Action) -> Action:
+        """The same action with every name replaced by its id; raises GroundingError."""
+        match action:
+            case Inform():
+                return action.model_copy(update={"contact": self.contact(action.contact)[1]})
+            case Inquire():
+                return action.model_copy(update={"contact": self.contact(action.contact)[1]})
+            case ForwardFile():
+                source = self.person(action.source)
+                target = self.contact(action.target)[1]
+                file = self.item(action.file) if action.file else f"file:{source}"
+                if self.office.item_type(file.split(":")[0]).kind != "electronic":
+                    raise UnknownNameError(
+                        "file", file, f"{file!r} is not an electronic file; use 'file:<person>'."
+                    )
+                return action.model_copy(update={"source": source, "target": target, "file": file})
+            case SendQR():
+                return action.model_copy(
+                    update={"contact": self.person(action.contact), "item": self.item(action.item)}
+                )
+            case Move():
+                return action.model_copy(update={"place": self.place(action.place)})
+            case WaitInPlace():
+                return action.model_copy(update={"person": self.person(action.person)})
+            case Wait() | Stop():
+                return action
+        raise TypeError(f"unknown action {action!r}")  # pragma: no cover
+
+    # -- errors --------------------------------------------------------------------------
+    def _one(self, kind: str, name: str, found: list[str], hint: str) -> str:
+        if len(found) == 1:
+            return found[0]
+        if found:
+            raise AmbiguousNameError(
+                kind,
+                name,
+                f"The {kind} {name!r} is ambiguous: it matches {', '.join(found)}. "
+                "Use one of these ids.",
+                found,
+            )
+        universe = (
+            self.people.keys() + self.groups.keys() + self.facilities.keys()
+            + self.locations.keys() + self.item_types.keys()
+        )
+        close = difflib.get_close_matches(normalize(name), universe, n=3, cutoff=0.6)
+        maybe = f" Did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+        raise UnknownNameError(kind, name, f"Unknown {kind} {name!r}.{maybe} {hint}".strip())
+
+    def _people_hint(self) -> str:
+        return "Known people: " + ", ".join(p.id for p in self.office.people) + "."
+
+    def _groups_hint(self) -> str:
+        return "Group chats: " + ", ".join(g.id for g in self.office.groups) + "."
