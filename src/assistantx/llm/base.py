@@ -143,10 +143,10 @@ class ChatModel(ABC):
     ) -> None:
         await self.stop()
 
-    async def _start(self) -> None:
+    async def _start(self) -> None:  # noqa: B027 - optional hook, most fakes need none
         """Acquire resources (connection pools, processes). Called once per start."""
 
-    async def _stop(self) -> None:
+    async def _stop(self) -> None:  # noqa: B027 - optional hook, most fakes need none
         """Release what ``_start`` acquired. Called once per stop."""
 
     @abstractmethod
