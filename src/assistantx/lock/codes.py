@@ -135,8 +135,7 @@ def _claims_from_plaintext(plaintext: bytes) -> CodeClaims:
     texts = (code_id, lock_id, instruction_id, person, purpose, item)
     times = (issued_at, expires_at)
     if not all(isinstance(t, str) for t in texts) or not all(
-        isinstance(t, (int, float)) and not isinstance(t, bool) and math.isfinite(t)
-        for t in times
+        isinstance(t, (int, float)) and not isinstance(t, bool) and math.isfinite(t) for t in times
     ):
         raise InvalidCodeError("malformed", "lock code body has wrong field types")
     if purpose not in PURPOSES:

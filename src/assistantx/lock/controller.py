@@ -159,8 +159,9 @@ class LockController:
         if claims.code_id in self._used or claims.code_id in self._revoked:
             raise LockCommandError("code_spent", f"code {claims.code_id} was used or revoked")
         self._provisioned[claims.code_id] = claims
-        logger.info("lock %s: provisioned code %s for %s", self.lock_id, claims.code_id,
-                    claims.person)
+        logger.info(
+            "lock %s: provisioned code %s for %s", self.lock_id, claims.code_id, claims.person
+        )
         return claims
 
     def revoke(self, code_id: str) -> None:
@@ -174,8 +175,7 @@ class LockController:
     def open_for_maintenance(self, reason: str = "") -> LockEvent:
         if self.door_open:
             raise LockCommandError("door_open", "the door is already open")
-        self._opening = _Opening(person=MAINTENANCE, instruction_id=None, code_id=None,
-                                 claims=None)
+        self._opening = _Opening(person=MAINTENANCE, instruction_id=None, code_id=None, claims=None)
         return self._emit("door_opened", person=MAINTENANCE, reason=reason or None)
 
     # -- the physical world -------------------------------------------------------------

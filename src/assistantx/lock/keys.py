@@ -185,7 +185,11 @@ class LockKeys:
     def to_json(self) -> str:
         keys = {k: b64encode(v) for k in self.codes.key_ids() if (v := self.codes.get(k))}
         return json.dumps(
-            {"link_key": b64encode(self.link_key), "code_keys": keys, "current": self.codes.current_id},
+            {
+                "link_key": b64encode(self.link_key),
+                "code_keys": keys,
+                "current": self.codes.current_id,
+            },
             indent=2,
         )
 
