@@ -22,13 +22,16 @@
     │       └── InvalidCodeError    a QR payload that is malformed, forged or under an unknown key
     ├── ReasonerError               an agent could not produce a valid output
     │   └── ModelBehaviorError      the model kept producing invalid output after retries
-    └── LLMError                    the model server failed (HTTP, timeout) after retries
+    ├── LLMError                    the model server failed (HTTP, timeout) after retries
+    └── PromptError (ValueError)    a prompt template file that is malformed, or a bad render
 
 Low-level errors are translated at the boundary with ``raise ... from exc``. The text of a
 GroundingError is written so it can be fed back to a language model as-is.
 """
 
 from __future__ import annotations
+
+from collections.abc import Sequence
 
 
 class AssistantXError(Exception):
@@ -136,8 +139,28 @@ class ReasonerError(AssistantXError):
 
 
 class ModelBehaviorError(ReasonerError):
-    """The model kept producing invalid output after the allowed retries."""
+    """The model kept producing invalid output after the allowed retries.
+
+    ``last_error`` is the problem fed back after the last try; ``attempts`` holds one record
+    per try (the LLM layer stores its ``Attempt`` objects there).
+    """
+
+    def __init__(
+        self, message: str, *, last_error: str = "", attempts: Sequence[object] = ()
+    ) -> None:
+        self.last_error = last_error
+        self.attempts = tuple(attempts)
+        super().__init__(message)
 
 
 class LLMError(AssistantXError):
     """The model server failed after retries."""
+
+
+class PromptError(AssistantXError, ValueError):
+    """A prompt template that cannot be loaded or rendered; names the file."""
+
+    def __init__(self, path: str, problem: str) -> None:
+        self.path = path
+        self.problem = problem
+        super().__init__(f"{path}: {problem}")
