@@ -32,9 +32,9 @@ class ChatRequest(BaseModel):
     """One chat-completion call.
 
     ``agent`` names the caller (perception, planning, decision, reflection or a baseline's
-    name); with ``instruction_id`` and ``step`` it is bookkeeping for the usage ledger and the
-    trace and is not part of the prompt. ``json_schema`` asks for structured output; the
-    provider sends it the best way the server accepts.
+    name); with ``instruction_id``, ``step`` and ``attempt`` it is bookkeeping for the usage
+    ledger and the trace and is not part of the prompt. ``json_schema`` asks for structured
+    output; the provider sends it the best way the server accepts.
     """
 
     model_config = ConfigDict(frozen=True)
@@ -50,6 +50,7 @@ class ChatRequest(BaseModel):
     )
     instruction_id: str | None = None
     step: int | None = None
+    attempt: int = Field(default=0, ge=0, description="0, or the n-th repair of invalid output")
 
     def followed_by(self, *messages: Message) -> ChatRequest:
         """The same request with ``messages`` appended to the conversation."""
