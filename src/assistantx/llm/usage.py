@@ -169,7 +169,7 @@ class UsageLedger:
         """Rebuild from :meth:`to_dict` output; only ``calls`` is read, totals are derived."""
         calls = data.get("calls")
         if not isinstance(calls, list):
-            raise ValueError("usage ledger data needs a 'calls' list")
+            raise TypeError("usage ledger data needs a 'calls' list")
         return cls(CallRecord.model_validate(c) for c in calls)
 
 
