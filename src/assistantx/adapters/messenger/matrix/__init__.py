@@ -1,0 +1,29 @@
+"""The Matrix messenger: application-service push, /sync pull, or both."""
+
+from assistantx.adapters.messenger.matrix.adapter import MatrixMessenger, transaction_id
+from assistantx.adapters.messenger.matrix.appservice import create_appservice_router
+from assistantx.adapters.messenger.matrix.client import MatrixClient, MatrixError, RetryPolicy
+from assistantx.adapters.messenger.matrix.config import MatrixConfig, load_matrix_config
+from assistantx.adapters.messenger.matrix.ingest import EventIngestor
+from assistantx.adapters.messenger.matrix.normalize import EventNormalizer
+from assistantx.adapters.messenger.matrix.registration import registration, write_registration
+from assistantx.adapters.messenger.matrix.store import EventStore, SqliteEventStore
+from assistantx.adapters.messenger.matrix.sync import SyncPoller
+
+__all__ = [
+    "EventIngestor",
+    "EventNormalizer",
+    "EventStore",
+    "MatrixClient",
+    "MatrixConfig",
+    "MatrixError",
+    "MatrixMessenger",
+    "RetryPolicy",
+    "SqliteEventStore",
+    "SyncPoller",
+    "create_appservice_router",
+    "load_matrix_config",
+    "registration",
+    "transaction_id",
+    "write_registration",
+]

@@ -1,0 +1,214 @@
+"""The durable memory of inbound delivery: which events and transactions were already taken in,
+which are not yet handled, and where each poller stopped.
+
+``EventStore`` is the protocol the push routers and the poller use; ``SqliteEventStore`` keeps
+it in one SQLite file in WAL mode with ``synchronous=FULL``, so once ``accept`` returns, the
+messages survive a crash and a push may be acknowledged. The service may later replace it with
+its journal.
+
+The same store deduplicates across paths: an event taken in by the application-service push
+is not taken in again by the /sync poller (and vice versa), because ``accept`` keeps only
+``(platform, event_id)`` pairs it has never seen, in one SQL transaction.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import sqlite3
+import threading
+from collections.abc import Callable, Sequence
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Protocol, TypeVar
+
+from assistantx.adapters.messenger.base import InboundMessage
+from assistantx.errors import MessengerError
+
+T = TypeVar("T")
+
+
+class EventStore(Protocol):
+    """Durable dedup of inbound events and transactions, plus poller positions."""
+
+    async def transaction_seen(self, txn_id: str) -> bool:
+        """Whether a pushed transaction was already accepted."""
+        ...
+
+    async def event_seen(self, platform: str, event_id: str) -> bool:
+        """Whether an event was already accepted (by any path)."""
+        ...
+
+    async def accept(
+        self,
+        messages: Sequence[InboundMessage],
+        *,
+        txn_id: str | None = None,
+        sync_key: str | None = None,
+        sync_token: str | None = None,
+    ) -> list[InboundMessage]:
+        """Durably record, in one atomic write, the messages never seen before, the transaction
+        id and the poller position; return the new messages in the order given."""
+        ...
+
+    async def mark_handled(self, platform: str, event_id: str) -> None:
+        """The consumer finished with an event; it is no longer replayed on start."""
+        ...
+
+    async def unhandled(self) -> list[InboundMessage]:
+        """Accepted but not yet handled messages, oldest first (replayed after a restart)."""
+        ...
+
+    async def sync_token(self, sync_key: str) -> str | None:
+        """Where the poller named ``sync_key`` stopped, or None before its first run."""
+        ...
+
+    async def close(self) -> None: ...
+
+
+_SCHEMA = """
+CREATE TABLE IF NOT EXISTS inbound_events (
+    seq INTEGER PRIMARY KEY AUTOINCREMENT,
+    platform TEXT NOT NULL,
+    event_id TEXT NOT NULL,
+    message TEXT NOT NULL,
+    accepted_at TEXT NOT NULL,
+    handled INTEGER NOT NULL DEFAULT 0,
+    UNIQUE (platform, event_id)
+);
+CREATE TABLE IF NOT EXISTS transactions (
+    txn_id TEXT PRIMARY KEY,
+    accepted_at TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS sync_tokens (
+    sync_key TEXT PRIMARY KEY,
+    token TEXT NOT NULL,
+    saved_at TEXT NOT NULL
+);
+"""
+
+
+class SqliteEventStore:
+    """``EventStore`` in one SQLite file. Calls run in a worker thread, one at a time."""
+
+    def __init__(self, path: Path | str) -> None:
+        self.path = Path(path)
+        self._lock = threading.Lock()
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            self._db = sqlite3.connect(self.path, check_same_thread=False, isolation_level=None)
+            self._db.execute("PRAGMA journal_mode=WAL")
+            # FULL: a commit is on disk before accept() returns, so an ack never loses events.
+            self._db.execute("PRAGMA synchronous=FULL")
+            self._db.execute("PRAGMA busy_timeout=5000")
+            self._db.executescript(_SCHEMA)
+        except sqlite3.Error as exc:
+            raise MessengerError(f"{self.path}: cannot open the event store: {exc}") from exc
+        self._closed = False
+
+    async def _run(self, work: Callable[[sqlite3.Connection], T]) -> T:
+        def locked() -> T:
+            with self._lock:
+                if self._closed:
+                    raise MessengerError(f"{self.path}: the event store is closed")
+                try:
+                    return work(self._db)
+                except sqlite3.Error as exc:
+                    raise MessengerError(f"{self.path}: event store failed: {exc}") from exc
+
+        return await asyncio.to_thread(locked)
+
+    async def transaction_seen(self, txn_id: str) -> bool:
+        def work(db: sqlite3.Connection) -> bool:
+            row = db.execute("SELECT 1 FROM transactions WHERE txn_id = ?", (txn_id,)).fetchone()
+            return row is not None
+
+        return await self._run(work)
+
+    async def event_seen(self, platform: str, event_id: str) -> bool:
+        def work(db: sqlite3.Connection) -> bool:
+            row = db.execute(
+                "SELECT 1 FROM inbound_events WHERE platform = ? AND event_id = ?",
+                (platform, event_id),
+            ).fetchone()
+            return row is not None
+
+        return await self._run(work)
+
+    async def accept(
+        self,
+        messages: Sequence[InboundMessage],
+        *,
+        txn_id: str | None = None,
+        sync_key: str | None = None,
+        sync_token: str | None = None,
+    ) -> list[InboundMessage]:
+        if (sync_key is None) != (sync_token is None):
+            raise ValueError("sync_key and sync_token go together")
+        now = datetime.now(UTC).isoformat()
+
+        def work(db: sqlite3.Connection) -> list[InboundMessage]:
+            fresh: list[InboundMessage] = []
+            db.execute("BEGIN IMMEDIATE")
+            try:
+                for message in messages:
+                    cursor = db.execute(
+                        "INSERT OR IGNORE INTO inbound_events"
+                        " (platform, event_id, message, accepted_at) VALUES (?, ?, ?, ?)",
+                        (message.platform, message.event_id, message.model_dump_json(), now),
+                    )
+                    if cursor.rowcount == 1:
+                        fresh.append(message)
+                if txn_id is not None:
+                    db.execute(
+                        "INSERT OR IGNORE INTO transactions (txn_id, accepted_at) VALUES (?, ?)",
+                        (txn_id, now),
+                    )
+                if sync_key is not None:
+                    db.execute(
+                        "INSERT OR REPLACE INTO sync_tokens (sync_key, token, saved_at)"
+                        " VALUES (?, ?, ?)",
+                        (sync_key, sync_token, now),
+                    )
+                db.execute("COMMIT")
+            except BaseException:
+                db.execute("ROLLBACK")
+                raise
+            return fresh
+
+        return await self._run(work)
+
+    async def mark_handled(self, platform: str, event_id: str) -> None:
+        def work(db: sqlite3.Connection) -> None:
+            db.execute(
+                "UPDATE inbound_events SET handled = 1 WHERE platform = ? AND event_id = ?",
+                (platform, event_id),
+            )
+
+        await self._run(work)
+
+    async def unhandled(self) -> list[InboundMessage]:
+        def work(db: sqlite3.Connection) -> list[str]:
+            rows = db.execute(
+                "SELECT message FROM inbound_events WHERE handled = 0 ORDER BY seq"
+            ).fetchall()
+            return [str(row[0]) for row in rows]
+
+        return [InboundMessage.model_validate_json(text) for text in await self._run(work)]
+
+    async def sync_token(self, sync_key: str) -> str | None:
+        def work(db: sqlite3.Connection) -> str | None:
+            row = db.execute(
+                "SELECT token FROM sync_tokens WHERE sync_key = ?", (sync_key,)
+            ).fetchone()
+            return None if row is None else str(row[0])
+
+        return await self._run(work)
+
+    async def close(self) -> None:
+        def work() -> None:
+            with self._lock:
+                if not self._closed:
+                    self._closed = True
+                    self._db.close()
+
+        await asyncio.to_thread(work)

@@ -1,0 +1,164 @@
+"""The /sync long-poll loop of an ordinary bot account (an application service's own user
+cannot /sync).
+
+Each round: GET ``/sync?since=...&timeout=...``, join the rooms it was invited to, fill the
+gap of every ``limited`` timeline from ``/rooms/{id}/messages`` (back to an event already
+seen), hand all events to the ingestor, which stores the new messages and ``next_batch`` in
+one write. So the position advances only after the events are safe, and a crash repeats at
+most one round, which the event-id dedup absorbs.
+
+On its very first run (no stored position) the poller takes the position without replaying the
+account's history as new messages, but still joins pending invites. Errors back off
+exponentially; the first failure and the recovery are logged, not every attempt.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import json
+import logging
+import random
+from collections.abc import Mapping
+from typing import Any
+
+from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError
+from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
+from assistantx.adapters.messenger.matrix.normalize import PLATFORM
+
+logger = logging.getLogger(__name__)
+
+_FILTER = json.dumps(
+    {
+        "presence": {"not_types": ["*"]},
+        "account_data": {"not_types": ["*"]},
+        "room": {
+            "timeline": {"types": ["m.room.message"], "limit": 50},
+            "state": {"lazy_load_members": True},
+            "ephemeral": {"not_types": ["*"]},
+            "account_data": {"not_types": ["*"]},
+        },
+    },
+    separators=(",", ":"),
+)
+
+
+class SyncPoller:
+    """Polls one account; ``start``/``stop`` are idempotent; ``ready`` is set after round one."""
+
+    def __init__(
+        self,
+        client: MatrixClient,
+        ingestor: EventIngestor,
+        *,
+        sync_key: str,
+        timeout_s: float = 30.0,
+        max_backfill_pages: int = 5,
+        backoff_max_s: float = 60.0,
+    ) -> None:
+        self._client = client
+        self._ingestor = ingestor
+        self._sync_key = sync_key
+        self._timeout_ms = int(timeout_s * 1000)
+        self._max_backfill_pages = max_backfill_pages
+        self._backoff_max_s = backoff_max_s
+        self._task: asyncio.Task[None] | None = None
+        self.ready = asyncio.Event()
+
+    async def start(self) -> None:
+        if self._task is None or self._task.done():
+            self._task = asyncio.create_task(self._run(), name=f"matrix-sync:{self._sync_key}")
+
+    async def stop(self) -> None:
+        task, self._task = self._task, None
+        if task is not None:
+            task.cancel()
+            with contextlib.suppress(asyncio.CancelledError):
+                await task
+
+    async def _run(self) -> None:
+        failures = 0
+        while True:
+            try:
+                await self.sync_once()
+            except asyncio.CancelledError:
+                raise
+            except Exception as exc:
+                if failures == 0:
+                    logger.warning("Matrix /sync failed (%s); retrying with backoff", exc)
+                failures += 1
+                ceiling = min(self._backoff_max_s, 0.5 * 2 ** min(failures, 10))
+                await asyncio.sleep(random.uniform(ceiling / 2, ceiling))
+                continue
+            if failures:
+                logger.info("Matrix /sync recovered after %d failed attempts", failures)
+                failures = 0
+            self.ready.set()
+
+    async def sync_once(self) -> None:
+        """One round: sync, join invites, backfill gaps, ingest, advance."""
+        since = await self._ingestor.store.sync_token(self._sync_key)
+        first_run = since is None
+        response = await self._client.sync(
+            since=since,
+            timeout_ms=0 if first_run else self._timeout_ms,
+            filter_json=_FILTER,
+        )
+        next_batch = response.get("next_batch")
+        if not isinstance(next_batch, str):
+            raise MatrixError("/sync answer has no next_batch")
+        rooms = response.get("rooms", {})
+        events = await self._invites(rooms.get("invite", {}))
+        if not first_run:
+            for room_id, room in rooms.get("join", {}).items():
+                events.extend(await self._timeline(room_id, room))
+        await self._ingestor.ingest(events, sync_key=self._sync_key, sync_token=next_batch)
+
+    async def _invites(self, invited: Mapping[str, Any]) -> list[RoomEvent]:
+        """Synthesize invite events so the ingestor's invite handling joins the rooms."""
+        events: list[RoomEvent] = []
+        for room_id, room in invited.items():
+            for event in room.get("invite_state", {}).get("events", []):
+                if event.get("type") == "m.room.member" and isinstance(event, dict):
+                    events.append((room_id, event))
+        return events
+
+    async def _timeline(self, room_id: str, room: Mapping[str, Any]) -> list[RoomEvent]:
+        timeline = room.get("timeline", {})
+        events: list[JSON] = list(timeline.get("events", []))
+        prev_batch = timeline.get("prev_batch")
+        if timeline.get("limited") and isinstance(prev_batch, str):
+            events = await self._backfill(room_id, prev_batch) + events
+        return [(room_id, event) for event in events]
+
+    async def _backfill(self, room_id: str, from_token: str) -> list[JSON]:
+        """Older events of a gap, oldest first, back to the first one already seen."""
+        gathered: list[JSON] = []
+        token: str | None = from_token
+        for _ in range(self._max_backfill_pages):
+            if token is None:
+                break
+            page = await self._client.room_messages(room_id, from_token=token)
+            chunk: list[JSON] = page.get("chunk", [])
+            reached_known = False
+            for event in chunk:  # newest first
+                event_id = event.get("event_id")
+                if isinstance(event_id, str) and await self._ingestor.store.event_seen(
+                    PLATFORM, event_id
+                ):
+                    reached_known = True
+                    break
+                gathered.append(event)
+            end = page.get("end")
+            if reached_known or not chunk or not isinstance(end, str):
+                break
+            token = end
+        else:
+            logger.warning(
+                "gap in %s larger than %d pages; older events skipped",
+                room_id,
+                self._max_backfill_pages,
+            )
+        gathered.reverse()
+        logger.debug("back-filled %d events in %s", len(gathered), room_id)
+        return gathered
