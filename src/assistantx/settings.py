@@ -42,6 +42,14 @@ class Settings(BaseSettings):
     port: int = 8000
     operator_token: SecretStr | None = None
 
+    # -- the smart lock ------------------------------------------------------------------
+    lock_host: str = "127.0.0.1"
+    lock_port: int = 7420
+    lock_id: str = "locker-1"
+    lock_shared_key: SecretStr | None = Field(default=None, description="link + code keys")
+    lock_key_file: Path | None = Field(default=None, description="JSON keys; wins over the secret")
+    lock_code_expiry_min: float = Field(default=15.0, gt=0, description="QR code lifetime")
+
     @property
     def llm_enabled(self) -> bool:
         return bool(self.llm_base_url)
