@@ -63,6 +63,7 @@ class ItemType(_Model):
 class Ownership(_Model):
     type: str
     known: bool = True
+    at: str | None = Field(default=None, description="location where it is kept, if not the desk")
 
 
 class Person(_Model):
@@ -236,6 +237,8 @@ def _check_references(office: Office, where: str) -> None:
         for o in p.owns:
             if o.type not in type_ids:
                 fail(f"people ({p.id}).owns", f"unknown item type {o.type!r}")
+            if o.at is not None and o.at not in location_ids:
+                fail(f"people ({p.id}).owns ({o.type}).at", f"unknown location {o.at!r}")
             if o.type in seen:
                 fail(f"people ({p.id}).owns", f"item type {o.type!r} listed twice")
             seen.add(o.type)
@@ -245,9 +248,9 @@ def _check_references(office: Office, where: str) -> None:
         for g in f.guards:
             if g not in person_ids:
                 fail(f"facilities ({f.id}).guards", f"unknown person {g!r}")
-    for g in office.groups:
-        for m in g.members:
+    for grp in office.groups:
+        for m in grp.members:
             if m not in person_ids:
-                fail(f"groups ({g.id}).members", f"unknown person {m!r}")
+                fail(f"groups ({grp.id}).members", f"unknown person {m!r}")
     if office.robot.home not in location_ids:
         fail("robot.home", f"unknown location {office.robot.home!r}")

@@ -18,7 +18,6 @@ from pydantic import TypeAdapter
 from assistantx.memory.updates import (
     AppliedUpdate,
     AvailabilityUpdate,
-    ItemLocationUpdate,
     MemoryUpdate,
     OwnershipUpdate,
 )
@@ -111,9 +110,7 @@ class LongTermMemory:
         )
 
     def known_not_owners(self, item_type: str) -> list[str]:
-        return sorted(
-            p for p in self.people() if item_type in self.graph.nodes[pid(p)]["lacks"]
-        )
+        return sorted(p for p in self.people() if item_type in self.graph.nodes[pid(p)]["lacks"])
 
     def known_not_owners_of(self, person_id: str) -> list[str]:
         return sorted(self.graph.nodes[pid(person_id)]["lacks"])
@@ -137,7 +134,7 @@ class LongTermMemory:
         return holder
 
     def has_item(self, item_id: str) -> bool:
-        return self.graph.has_node(iid(item_id))
+        return bool(self.graph.has_node(iid(item_id)))
 
     def _neighbours(self, node: str, rel: str, kind: str) -> list[str]:
         return sorted(
@@ -174,7 +171,7 @@ class LongTermMemory:
         value: Availability = (
             "unknown" if available is None else "available" if available else "unavailable"
         )
-        changed = node["available"] != value
+        changed = bool(node["available"] != value)
         node["available"] = value
         node["observed_at"] = time
         return changed
@@ -190,7 +187,7 @@ class LongTermMemory:
                 return False
             self._add_item(person_id, item_type)
             return True
-        changed = item_type not in lacks or self.graph.has_node(node)
+        changed = bool(item_type not in lacks or self.graph.has_node(node))
         lacks.add(item_type)
         if self.graph.has_node(node):
             self.graph.remove_node(node)
@@ -204,15 +201,13 @@ class LongTermMemory:
             self.graph.add_node(node, kind="item", type=item_type, owner=None, holder=None)
             if owner and self.graph.has_node(pid(owner)):
                 self.graph.nodes[node]["for"] = owner
-        changed = self.graph.nodes[node].get("holder") != holder
+        changed = bool(self.graph.nodes[node].get("holder") != holder)
         self.graph.nodes[node]["holder"] = holder
         return changed
 
     def _add_item(self, person_id: str, item_type: str) -> None:
         node = iid(f"{item_type}:{person_id}")
-        self.graph.add_node(
-            node, kind="item", type=item_type, owner=person_id, holder=person_id
-        )
+        self.graph.add_node(node, kind="item", type=item_type, owner=person_id, holder=person_id)
         self.graph.add_edge(pid(person_id), node, rel="owns")
 
     # -- persistence ---------------------------------------------------------------------

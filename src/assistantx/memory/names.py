@@ -12,8 +12,27 @@ import re
 from collections.abc import Iterable
 
 TITLES = frozenset(
-    {"dr", "doctor", "mr", "mrs", "ms", "miss", "prof", "professor", "manager", "boss",
-     "teacher", "sir", "madam", "colleague", "mx", "the", "a", "an", "our"}
+    {
+        "dr",
+        "doctor",
+        "mr",
+        "mrs",
+        "ms",
+        "miss",
+        "prof",
+        "professor",
+        "manager",
+        "boss",
+        "teacher",
+        "sir",
+        "madam",
+        "colleague",
+        "mx",
+        "the",
+        "a",
+        "an",
+        "our",
+    }
 )
 _NON_WORD = re.compile(r"[^a-z0-9]+")
 

@@ -73,7 +73,9 @@ def render_short_term(stm: ShortTermMemory, *, last_steps: int = 6) -> str:
     for step in steps:
         for r in step.results:
             status = "refused" if r.refused else ("ok" if r.ok else "failed")
-            lines.append(f"- step {step.index}: {r.action.signature()} -> {status}: {r.observation}")
+            lines.append(
+                f"- step {step.index}: {r.action.signature()} -> {status}: {r.observation}"
+            )
         if step.reflection:
             lines.append(
                 f"  reflection {step.reflection.verdict}: {quote(step.reflection.reason, 300)}"

@@ -79,7 +79,9 @@ class Resolver:
         """A location id from a location, a facility or a person's name (their desk)."""
         found: set[str] = set()
         found.update(self.locations.lookup(name, fuzzy=1.0))
-        found.update(self.office.facility(f).location for f in self.facilities.lookup(name, fuzzy=1.0))
+        found.update(
+            self.office.facility(f).location for f in self.facilities.lookup(name, fuzzy=1.0)
+        )
         found.update(self.office.person(p).location for p in self.people.lookup(name, fuzzy=1.0))
         if not found:
             found.update(self.locations.lookup(name))
@@ -101,7 +103,7 @@ class Resolver:
         return self._one("item type", name, self.item_types.lookup(name), hint)
 
     def item(self, name: str) -> str:
-        """An item id ``type:person`` from ``stapler:zhang``, "Zhang's stapler", "stapler of Zhang"."""
+        """An item id ``type:person``: ``stapler:zhang``, "Zhang's stapler", "stapler of Zhang"."""
         text = name.strip()
         if ":" in text:
             type_part, _, owner_part = text.partition(":")
@@ -160,8 +162,11 @@ class Resolver:
                 found,
             )
         universe = (
-            self.people.keys() + self.groups.keys() + self.facilities.keys()
-            + self.locations.keys() + self.item_types.keys()
+            self.people.keys()
+            + self.groups.keys()
+            + self.facilities.keys()
+            + self.locations.keys()
+            + self.item_types.keys()
         )
         close = difflib.get_close_matches(normalize(name), universe, n=3, cutoff=0.6)
         maybe = f" Did you mean {', '.join(repr(c) for c in close)}?" if close else ""

@@ -56,12 +56,12 @@ class Locker(ABC):
     """A locker with a magnetic lock, a QR scanner and a door sensor."""
 
     def __init__(self) -> None:
-        self._subscribers: list[asyncio.Queue[LockEvent]] = []
+        self._subscribers: list[tuple[asyncio.Queue[LockEvent], asyncio.Event | None]] = []
 
-    async def start(self) -> None:
+    async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Connect; idempotent."""
 
-    async def stop(self) -> None:
+    async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Disconnect; idempotent."""
 
     async def __aenter__(self) -> Self:
@@ -89,16 +89,17 @@ class Locker(ABC):
     async def revoke(self, code_id: str) -> None:  # noqa: B027 - optional capability
         """Invalidate a code before it is used (default: codes simply expire)."""
 
-    def subscribe(self) -> asyncio.Queue[LockEvent]:
-        """A queue that receives every event from now on."""
+    def subscribe(self, notify: asyncio.Event | None = None) -> asyncio.Queue[LockEvent]:
+        """A queue that receives every event from now on; ``notify`` is set on each event."""
         queue: asyncio.Queue[LockEvent] = asyncio.Queue()
-        self._subscribers.append(queue)
+        self._subscribers.append((queue, notify))
         return queue
 
     def unsubscribe(self, queue: asyncio.Queue[LockEvent]) -> None:
-        if queue in self._subscribers:
-            self._subscribers.remove(queue)
+        self._subscribers = [(q, n) for q, n in self._subscribers if q is not queue]
 
     def _publish(self, event: LockEvent) -> None:
-        for queue in self._subscribers:
+        for queue, notify in self._subscribers:
             queue.put_nowait(event)
+            if notify is not None:
+                notify.set()

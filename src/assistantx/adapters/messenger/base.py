@@ -36,6 +36,12 @@ class Attachment(BaseModel):
     data: bytes | None = Field(default=None, exclude=True)
     ref: str | None = Field(default=None, description="platform media reference, e.g. mxc://")
     item: str | None = Field(default=None, description="office item id, e.g. file:lee")
+    qr_payload: str | None = Field(
+        default=None, exclude=True, description="the text a QR image encodes (for simulators)"
+    )
+    qr_purpose: str | None = Field(
+        default=None, exclude=True, description="what the QR code is for (for simulators)"
+    )
 
 
 class OutboundMessage(BaseModel):
@@ -82,10 +88,10 @@ class Messenger(ABC):
         if self._inbox is not None:
             await self._inbox.put(message)
 
-    async def start(self) -> None:
+    async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Connect; idempotent."""
 
-    async def stop(self) -> None:
+    async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Disconnect; idempotent."""
 
     async def __aenter__(self) -> Self:

@@ -41,10 +41,10 @@ class RobotState(BaseModel):
 class RobotBase(ABC):
     """A mobile base that drives to the office's named locations."""
 
-    async def start(self) -> None:
+    async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Connect / initialise; idempotent."""
 
-    async def stop(self) -> None:
+    async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Release resources; idempotent."""
 
     async def __aenter__(self) -> Self:

@@ -1,0 +1,52 @@
+"""``assistantx office show``: the office, and what the assistant knows of it at start."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from assistantx.errors import OfficeError
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.render import render_long_term
+from assistantx.office import Office, load_office
+
+
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    office = sub.add_parser("office", help="inspect the office")
+    office_sub = office.add_subparsers(dest="office_command", required=True, metavar="ACTION")
+    show = office_sub.add_parser("show", help="print the office and what the assistant knows")
+    show.add_argument("--office", default=None, help="office YAML (default: the default office)")
+    show.add_argument("--json", action="store_true", help="print the office as JSON")
+    show.set_defaults(func=_show)
+
+
+def _show(args: argparse.Namespace) -> int:
+    try:
+        office = load_office(args.office)
+    except OfficeError as exc:
+        print(f"error: {exc}")
+        return 2
+    if args.json:
+        print(json.dumps(office.model_dump(mode="json"), indent=2))
+        return 0
+    print(describe(office))
+    return 0
+
+
+def describe(office: Office) -> str:
+    ws, public = office.workstations(), office.public_places()
+    lines = [
+        office.name,
+        f"{len(office.locations)} locations: {len(ws)} workstations, {len(public)} facilities",
+        "",
+        "Workstations: " + ", ".join(f"{w.id} ({w.name})" for w in ws),
+        "Facilities and rooms: " + ", ".join(f"{p.id} ({p.name})" for p in public),
+        "",
+        f"{len(office.people)} people (owned items; * = unknown to the assistant at start):",
+    ]
+    for p in office.people:
+        owns = ", ".join(o.type + ("" if o.known else "*") for o in p.owns)
+        aliases = f" aka {', '.join(p.aliases)}" if p.aliases else ""
+        lines.append(f"  {p.id:8} {p.name}{aliases} @ {p.location}: {owns}")
+    lines += ["", "What the assistant knows at start:", render_long_term(LongTermMemory(office))]
+    return "\n".join(lines)

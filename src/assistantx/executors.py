@@ -1,0 +1,350 @@
+"""Executors: turn grounded actions into adapter calls and return typed results.
+
+They update short-term memory (dialogue, embodied state, files received) with what they saw;
+long-term memory changes are Reflection's job. Every message carries a stable idempotency key
+(instruction, step, position), so a resumed instruction never sends a message twice.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+from dataclasses import dataclass
+from typing import Literal
+
+from assistantx.actions import (
+    Action,
+    ForwardFile,
+    Inform,
+    Inquire,
+    Move,
+    SendQR,
+    Stop,
+    Wait,
+    WaitInPlace,
+)
+from assistantx.adapters.lock.base import Locker, LockEvent
+from assistantx.adapters.messenger.base import (
+    Attachment,
+    ChatRef,
+    InboundMessage,
+    Messenger,
+    OutboundMessage,
+)
+from assistantx.adapters.robot.base import RobotBase
+from assistantx.clock import Clock
+from assistantx.errors import AdapterError
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.short_term import DialogueTurn, IssuedCode, ShortTermMemory
+from assistantx.office import Office
+from assistantx.replies import ReplyBox
+from assistantx.trace import ActionResult
+
+logger = logging.getLogger(__name__)
+
+PURPOSE_TEXT = {
+    "deposit": "put {item} into the locker",
+    "collect": "take {item} out of the locker",
+    "sign": "take {item} out, sign it and put it back",
+    "seal": "take {item} out, stamp it with the seal and put it back",
+    "copy": "take {item} out, copy it and put the original and the copy back",
+    "heat": "take {item} out, heat it and put it back",
+    "produce": "make {item} and put it into the locker",
+}
+
+
+@dataclass
+class ExecutionContext:
+    office: Office
+    ltm: LongTermMemory
+    messenger: Messenger
+    robot: RobotBase
+    locker: Locker
+    clock: Clock
+    replies: ReplyBox
+
+
+class Executor:
+    def __init__(self, ctx: ExecutionContext) -> None:
+        self.ctx = ctx
+
+    async def execute(self, stm: ShortTermMemory, action: Action, key: str) -> ActionResult:
+        """Run one grounded action; ``key`` is its stable id (instruction:step:position)."""
+        started = self.ctx.clock.now()
+        try:
+            ok, observation, data = await self._run(stm, action, key)
+            error = None
+        except AdapterError as exc:
+            logger.warning("action %s failed: %s", action.type, exc)
+            ok, observation, data, error = False, f"failed: {exc}", {}, type(exc).__name__
+        return ActionResult(
+            action=action,
+            ok=ok,
+            observation=observation,
+            error=error,
+            started_at=started,
+            ended_at=self.ctx.clock.now(),
+            data=data,
+        )
+
+    async def _run(
+        self, stm: ShortTermMemory, action: Action, key: str
+    ) -> tuple[bool, str, dict[str, object]]:
+        match action:
+            case Inform():
+                await self._send(stm, _chat(self.ctx.office, action.contact), action.content, key)
+                return True, f"told {action.contact}", {}
+            case Inquire():
+                chat = _chat(self.ctx.office, action.contact)
+                qid = f"{stm.instruction_id}:{key}"
+                self.ctx.replies.ask(qid, stm.instruction_id, chat, self.ctx.clock.now())
+                await self._send(stm, chat, action.question, key, question_id=qid)
+                return (
+                    True,
+                    f"asked {action.contact}; the reply will arrive in the dialogue",
+                    {"question_id": qid},
+                )
+            case ForwardFile():
+                return await self._forward(stm, action, key)
+            case SendQR():
+                return await self._send_qr(stm, action, key)
+            case Wait():
+                return await self._wait(stm, action)
+            case Move():
+                result = await self.ctx.robot.move_to(action.place)
+                stm.embodied.robot_place = result.place
+                return (
+                    True,
+                    f"arrived at {result.place} ({result.distance_m:.1f} m)",
+                    {
+                        "distance_m": result.distance_m,
+                        "duration_s": result.duration_s,
+                    },
+                )
+            case WaitInPlace():
+                return await self._wait_in_place(stm, action)
+            case Stop():
+                text = f"[{action.outcome}] {action.summary}"
+                await self._send(stm, ChatRef(kind="dm", id=stm.requester), text, key)
+                return True, f"stopped with {action.outcome}; {stm.requester} was told", {}
+        raise TypeError(f"unknown action {action!r}")  # pragma: no cover
+
+    # -- messaging -----------------------------------------------------------------------
+    async def _send(
+        self,
+        stm: ShortTermMemory,
+        chat: ChatRef,
+        text: str,
+        key: str,
+        *,
+        question_id: str | None = None,
+        attachments: list[Attachment] | None = None,
+    ) -> None:
+        message = OutboundMessage(
+            chat=chat,
+            text=text,
+            attachments=attachments or [],
+            instruction_id=stm.instruction_id,
+            question_id=question_id,
+            idempotency_key=f"{stm.instruction_id}:{key}",
+        )
+        await self.ctx.messenger.send(message)
+        stm.dialogue.append(
+            DialogueTurn(
+                time=self.ctx.clock.now(),
+                direction="out",
+                chat=chat,
+                person=chat.id,
+                text=text,
+                question_id=question_id,
+                files=[a.item for a in message.attachments if a.item and a.kind == "file"],
+            )
+        )
+
+    async def _forward(
+        self, stm: ShortTermMemory, action: ForwardFile, key: str
+    ) -> tuple[bool, str, dict[str, object]]:
+        file = action.file or f"file:{action.source}"
+        have = set(stm.files_received.get(action.source, []))
+        if action.source == stm.requester:
+            have.add(f"file:{stm.requester}")  # sent along with the instruction
+        if file not in have:
+            return (
+                False,
+                (
+                    f"no file {file} received from {action.source}; ask {action.source} to send "
+                    "it first"
+                ),
+                {},
+            )
+        attachment = Attachment(kind="file", name=f"{file}.pdf", item=file)
+        text = f"Forwarding {file} from {action.source} (instruction {stm.instruction_id})."
+        chat = _chat(self.ctx.office, action.target)
+        await self._send(stm, chat, text, key, attachments=[attachment])
+        return True, f"forwarded {file} to {action.target}", {"file": file}
+
+    async def _send_qr(
+        self, stm: ShortTermMemory, action: SendQR, key: str
+    ) -> tuple[bool, str, dict[str, object]]:
+        for code in stm.embodied.codes:
+            same = (code.person, code.item, code.purpose) == (
+                action.contact,
+                action.item,
+                action.purpose,
+            )
+            if same and not code.used:
+                return (
+                    False,
+                    (
+                        f"{action.contact} already holds an unused QR code for {action.purpose} "
+                        f"{action.item}; never resend the same QR code"
+                    ),
+                    {},
+                )
+        qr = await self.ctx.locker.issue_code(
+            instruction_id=stm.instruction_id,
+            person=action.contact,
+            purpose=action.purpose,
+            item=action.item,
+        )
+        todo = PURPOSE_TEXT[action.purpose].format(item=action.item)
+        text = (
+            f"Here is your one-time code for the robot's locker: scan it at the robot to {todo}. "
+            f"It works once and expires in {round((qr.expires_at - qr.issued_at) / 60)} minutes."
+        )
+        attachment = Attachment(
+            kind="image",
+            name="locker-code.png",
+            mime="image/png",
+            data=qr.png,
+            item=action.item,
+            qr_payload=qr.payload,
+            qr_purpose=action.purpose,
+        )
+        await self._send(
+            stm, ChatRef(kind="dm", id=action.contact), text, key, attachments=[attachment]
+        )
+        stm.embodied.codes.append(
+            IssuedCode(
+                code_id=qr.code_id, person=action.contact, item=action.item, purpose=action.purpose
+            )
+        )
+        return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
+
+    # -- waiting -------------------------------------------------------------------------
+    def take_messages(self, stm: ShortTermMemory) -> list[InboundMessage]:
+        """Move messages that arrived for this instruction into its dialogue."""
+        messages = self.ctx.replies.take(stm.instruction_id)
+        for m in messages:
+            files = [a.item for a in m.attachments if a.item]
+            if files:
+                stm.files_received.setdefault(m.sender, []).extend(files)
+            stm.dialogue.append(
+                DialogueTurn(
+                    time=m.time.timestamp(),
+                    direction="in",
+                    chat=m.chat,
+                    person=m.sender,
+                    text=m.text,
+                    in_reply_to=m.in_reply_to,
+                    files=files,
+                    event_id=m.event_id,
+                )
+            )
+        return messages
+
+    async def _wait(
+        self, stm: ShortTermMemory, action: Wait
+    ) -> tuple[bool, str, dict[str, object]]:
+        event = self.ctx.replies.event(stm.instruction_id)
+        got = await self.ctx.clock.wait_event(event, action.timeout_s)
+        messages = self.take_messages(stm) if got else []
+        if not messages:
+            return False, f"no reply within {action.timeout_s:.0f} s", {"timed_out": True}
+        said = "; ".join(f"{m.sender} said {m.text!r}" for m in messages)
+        return True, said, {"replies": [m.sender for m in messages]}
+
+    async def _wait_in_place(
+        self, stm: ShortTermMemory, action: WaitInPlace
+    ) -> tuple[bool, str, dict[str, object]]:
+        notify = asyncio.Event()
+        queue = self.ctx.locker.subscribe(notify)
+        events: list[LockEvent] = []
+        deadline = self.ctx.clock.now() + action.timeout_s
+        try:
+            while True:
+                while not queue.empty():
+                    events.append(queue.get_nowait())
+                mine = [e for e in events if e.person == action.person]
+                if any(e.kind == "door_closed" for e in mine):
+                    break
+                if any(e.kind == "code_rejected" for e in mine):
+                    break
+                if self.ctx.replies.event(stm.instruction_id).is_set():
+                    break  # the person wrote instead of coming (e.g. "I don't have it")
+                remaining = deadline - self.ctx.clock.now()
+                if remaining <= 0:
+                    break
+                notify.clear()
+                await self.ctx.clock.wait_event(
+                    _either(notify, self.ctx.replies.event(stm.instruction_id)), remaining
+                )
+        finally:
+            self.ctx.locker.unsubscribe(queue)
+        self.take_messages(stm)
+        mine = [e for e in events if e.person == action.person]
+        closed = any(e.kind == "door_closed" for e in mine)
+        kinds = [e.kind for e in mine]
+        if closed:
+            for code in stm.embodied.codes:
+                if any(e.code_id == code.code_id for e in mine):
+                    code.used = True
+                    _apply_to_locker(stm, code)
+            stm.embodied.door = "closed"
+            return True, f"{action.person} used the locker ({', '.join(kinds)})", {"events": kinds}
+        rejected = [e.reason for e in mine if e.kind == "code_rejected"]
+        if rejected:
+            return False, f"{action.person}'s code was rejected: {rejected[0]}", {"events": kinds}
+        return False, f"{action.person} did not come to the locker", {"events": kinds}
+
+
+class _EitherEvent(asyncio.Event):
+    """An event that counts as set when either of two events is set."""
+
+    def __init__(self, a: asyncio.Event, b: asyncio.Event) -> None:
+        super().__init__()
+        self._a, self._b = a, b
+
+    def is_set(self) -> bool:
+        return self._a.is_set() or self._b.is_set()
+
+    async def wait(self) -> Literal[True]:
+        waiters = [asyncio.ensure_future(self._a.wait()), asyncio.ensure_future(self._b.wait())]
+        try:
+            await asyncio.wait(waiters, return_when=asyncio.FIRST_COMPLETED)
+        finally:
+            for w in waiters:
+                w.cancel()
+        return True
+
+
+def _either(a: asyncio.Event, b: asyncio.Event) -> asyncio.Event:
+    return _EitherEvent(a, b)
+
+
+def _apply_to_locker(stm: ShortTermMemory, code: IssuedCode) -> None:
+    contents = stm.embodied.locker_contents
+    if code.purpose in ("deposit", "produce") and code.item not in contents:
+        contents.append(code.item)
+    elif code.purpose == "collect" and code.item in contents:
+        contents.remove(code.item)
+    elif code.purpose == "copy":
+        copy = f"copy:{code.item.split(':', 1)[1]}"
+        if copy not in contents:
+            contents.append(copy)
+
+
+def _chat(office: Office, contact: str) -> ChatRef:
+    if any(g.id == contact for g in office.groups):
+        return ChatRef(kind="group", id=contact)
+    return ChatRef(kind="dm", id=contact)

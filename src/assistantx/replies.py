@@ -1,0 +1,75 @@
+"""Matching inbound messages to the instruction and question that asked for them.
+
+Every question the assistant sends gets a question id. A reply is matched by, in order:
+the platform's explicit reply reference (``in_reply_to``), else the most recent open question
+in the same chat (a DM with that person, or that group). Anything unmatched goes back to the
+caller (a new instruction, or chatter to ignore). Replies are kept per instruction, so two
+instructions asking the same person never see each other's answers.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections import defaultdict
+from dataclasses import dataclass, field
+
+from assistantx.adapters.messenger.base import ChatRef, InboundMessage
+
+
+@dataclass
+class OpenQuestion:
+    question_id: str
+    instruction_id: str
+    chat: ChatRef
+    asked_at: float
+    answers: list[InboundMessage] = field(default_factory=list)
+
+
+class ReplyBox:
+    def __init__(self) -> None:
+        self._questions: dict[str, OpenQuestion] = {}
+        self._by_chat: dict[ChatRef, list[str]] = defaultdict(list)
+        self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
+        self._inbox: dict[str, list[InboundMessage]] = defaultdict(list)
+
+    def ask(self, question_id: str, instruction_id: str, chat: ChatRef, time: float) -> None:
+        self._questions[question_id] = OpenQuestion(question_id, instruction_id, chat, time)
+        self._by_chat[chat].append(question_id)
+
+    def event(self, instruction_id: str) -> asyncio.Event:
+        """Set whenever a message for ``instruction_id`` arrives."""
+        return self._events[instruction_id]
+
+    def route(self, message: InboundMessage) -> str | None:
+        """File ``message`` under its instruction; return the instruction id (None: unmatched)."""
+        question = self._questions.get(message.in_reply_to or "")
+        if question is None:
+            open_here = self._by_chat.get(message.chat, [])
+            question = self._questions[open_here[-1]] if open_here else None
+        if question is None:
+            return None
+        if message.in_reply_to is None:
+            message = message.model_copy(update={"in_reply_to": question.question_id})
+        question.answers.append(message)
+        self._inbox[question.instruction_id].append(message)
+        self._events[question.instruction_id].set()
+        return question.instruction_id
+
+    def deliver(self, instruction_id: str, message: InboundMessage) -> None:
+        """File a message known to belong to ``instruction_id`` (e.g. a requester's answer)."""
+        self._inbox[instruction_id].append(message)
+        self._events[instruction_id].set()
+
+    def take(self, instruction_id: str) -> list[InboundMessage]:
+        """The messages for ``instruction_id`` not yet taken."""
+        messages = self._inbox.pop(instruction_id, [])
+        self._events[instruction_id].clear()
+        return messages
+
+    def close(self, instruction_id: str) -> None:
+        """Forget an ended instruction's questions; later replies go unmatched."""
+        for qid in [q for q, o in self._questions.items() if o.instruction_id == instruction_id]:
+            question = self._questions.pop(qid)
+            self._by_chat[question.chat].remove(qid)
+        self._inbox.pop(instruction_id, None)
+        self._events.pop(instruction_id, None)

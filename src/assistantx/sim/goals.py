@@ -1,0 +1,38 @@
+"""Goal milestones (DESIGN §5): world-state predicates the simulator checks against the truth.
+
+A milestone is a one-key mapping, as in the task files:
+``{"holds": [person, item]}``, ``{"signed": [document, person]}``, ``{"sealed": document}``,
+``{"printed": file}``, ``{"copied": document}``, ``{"heated": item}``,
+``{"received": [person, file]}``, ``{"made": product}``, ``{"informed": person}``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+PREDICATES: dict[str, int] = {
+    "holds": 2,
+    "signed": 2,
+    "sealed": 1,
+    "printed": 1,
+    "copied": 1,
+    "heated": 1,
+    "received": 2,
+    "made": 1,
+    "informed": 1,
+}
+
+Milestone = dict[str, Any]
+
+
+def parse_milestone(raw: Any) -> tuple[str, tuple[str, ...]]:
+    """Check a milestone's shape; return (predicate, arguments)."""
+    if not isinstance(raw, dict) or len(raw) != 1:
+        raise ValueError(f"a milestone is a mapping with one predicate, got {raw!r}")
+    ((name, args),) = raw.items()
+    if name not in PREDICATES:
+        raise ValueError(f"unknown predicate {name!r}; known: {', '.join(PREDICATES)}")
+    values = tuple(args) if isinstance(args, list | tuple) else (args,)
+    if len(values) != PREDICATES[name] or not all(isinstance(v, str) for v in values):
+        raise ValueError(f"{name} takes {PREDICATES[name]} string argument(s), got {args!r}")
+    return name, values

@@ -1,0 +1,279 @@
+"""The simulated office: the world's truth plus simulated messenger, robot base and locker.
+
+It implements the same adapter interfaces as the real messenger, navigator and smart lock,
+so the PPDR loop cannot tell it from the real office. People answer after ``reply_delay_s``
+and come to the locker ``handover_delay_s`` after the robot stands at their place with a
+code for them; both run on the clock (a SimClock makes them instant in real time).
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import itertools
+import logging
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from datetime import UTC, datetime
+
+from assistantx.adapters.lock.local import LocalLocker
+from assistantx.adapters.messenger.base import (
+    Attachment,
+    ChatRef,
+    InboundMessage,
+    Messenger,
+    OutboundMessage,
+    SentMessage,
+)
+from assistantx.adapters.robot.base import MoveResult, Pose, RobotBase, RobotState
+from assistantx.clock import Clock, SimClock
+from assistantx.errors import UnreachableError
+from assistantx.lock.controller import LockController
+from assistantx.lock.keys import Keyring
+from assistantx.office import Office
+from assistantx.sim.people import Reply, direct_reply, group_replies, handover_problem
+from assistantx.sim.people import perform_handover as do_handover
+from assistantx.sim.world import World
+
+logger = logging.getLogger(__name__)
+
+DistanceFn = Callable[[str, str], float]
+
+
+@dataclass
+class HeldCode:
+    """A QR code in a simulated person's hands."""
+
+    instruction_id: str
+    person: str
+    payload: str
+    purpose: str
+    item: str
+    scheduled: bool = False
+    done: bool = False
+
+
+class SimMessenger(Messenger):
+    platform = "sim"
+
+    def __init__(self, office_sim: SimOffice) -> None:
+        super().__init__()
+        self._sim = office_sim
+        self._ids = itertools.count(1)
+        self.sent: list[OutboundMessage] = []
+        self.received: list[InboundMessage] = []
+        self._seen_keys: dict[str, SentMessage] = {}
+
+    async def send(self, message: OutboundMessage) -> SentMessage:
+        if message.idempotency_key and message.idempotency_key in self._seen_keys:
+            return self._seen_keys[message.idempotency_key]
+        self.sent.append(message)
+        sent = SentMessage(
+            platform=self.platform,
+            message_id=f"sim-{next(self._ids)}",
+            chat=message.chat,
+            time=self._sim.timestamp(),
+        )
+        if message.idempotency_key:
+            self._seen_keys[message.idempotency_key] = sent
+        self._sim.on_message(message)
+        return sent
+
+    def post(
+        self,
+        person: str,
+        chat: ChatRef,
+        text: str,
+        *,
+        files: Iterable[str] = (),
+        in_reply_to: str | None = None,
+    ) -> InboundMessage:
+        """A simulated person writes to the assistant (used by people and by the CLI)."""
+        inbound = InboundMessage(
+            platform=self.platform,
+            event_id=f"sim-in-{next(self._ids)}",
+            chat=chat,
+            sender=person,
+            text=text,
+            attachments=[Attachment(kind="file", name=f"{f}.pdf", item=f) for f in files],
+            time=self._sim.timestamp(),
+            in_reply_to=in_reply_to,
+        )
+        self.received.append(inbound)
+        if self._inbox is not None:
+            self._inbox.put_nowait(inbound)
+        return inbound
+
+
+class SimRobot(RobotBase):
+    """A kinematic base: drives at constant speed along ``distance(a, b)`` metres."""
+
+    def __init__(self, office_sim: SimOffice, distance: DistanceFn, speed_mps: float) -> None:
+        self._sim = office_sim
+        self._distance = distance
+        self._speed = speed_mps
+        self.place: str | None = office_sim.office.robot.home
+        self.moving = False
+        self.odometer_m = 0.0
+
+    async def move_to(self, location_id: str) -> MoveResult:
+        office = self._sim.office
+        try:
+            target = office.location(location_id)
+        except KeyError as exc:
+            raise UnreachableError(f"no anchor for location {location_id!r}") from exc
+        start = self.place or office.robot.home
+        distance = self._distance(start, target.id) if start != target.id else 0.0
+        duration = distance / self._speed
+        self.moving, self.place = True, None
+        await self._sim.clock.sleep(duration)
+        self.moving, self.place = False, target.id
+        self.odometer_m += distance
+        self._sim.world.note(self._sim.clock.now(), "robot_arrived", place=target.id)
+        self._sim.on_robot_arrived()
+        return MoveResult(place=target.id, distance_m=distance, duration_s=duration)
+
+    def state(self) -> RobotState:
+        loc = self._sim.office.location(self.place or self._sim.office.robot.home)
+        return RobotState(
+            place=self.place,
+            pose=Pose(x=loc.x, y=loc.y),
+            moving=self.moving,
+            odometer_m=self.odometer_m,
+        )
+
+
+class SimOffice:
+    """World + simulated adapters. Build one per instruction for evaluation."""
+
+    def __init__(
+        self,
+        office: Office,
+        *,
+        unavailable: Iterable[str] = (),
+        clock: Clock | None = None,
+        seed: int = 0,
+        reply_delay_s: float = 20.0,
+        handover_delay_s: float = 30.0,
+        distance: DistanceFn | None = None,
+        locker: LocalLocker | None = None,
+    ) -> None:
+        self.office = office
+        self.clock = clock or SimClock()
+        self.world = World.from_office(office, unavailable)
+        self.reply_delay_s = reply_delay_s
+        self.handover_delay_s = handover_delay_s
+        self.messenger = SimMessenger(self)
+        self.robot = SimRobot(self, distance or office.distance, office.robot.speed_mps)
+        if locker is None:
+            key = hashlib.sha256(f"assistantx-sim-{seed}".encode()).digest()
+            controller = LockController("sim-locker", Keyring.single("sim", key), self.clock)
+            locker = LocalLocker(controller, clock=self.clock, render_png=False)
+        self.locker = locker
+        self.codes: list[HeldCode] = []
+        self.told: set[tuple[str | None, str]] = set()  # (instruction id, person)
+
+    def timestamp(self) -> datetime:
+        return datetime.fromtimestamp(self.clock.now(), tz=UTC)
+
+    def register_instruction(self, instruction_id: str, requester: str) -> None:
+        """The requester asked for it, so they know what the robot comes for."""
+        self.told.add((instruction_id, requester))
+
+    # -- messages ------------------------------------------------------------------------
+    def on_message(self, message: OutboundMessage) -> None:
+        now = self.clock.now()
+        if message.chat.kind == "group":
+            members = self.office.group(message.chat.id).members
+            for person in members:
+                self._receive(now, person, message)
+            if message.question_id:
+                replies = group_replies(self.world, list(members), message.text)
+                for n, reply in enumerate(replies):
+                    self._schedule_reply(reply, message.chat, message.question_id, n)
+            return
+        person = message.chat.id
+        self._receive(now, person, message)
+        if message.question_id:
+            answer = direct_reply(self.world, person, message.text)
+            if answer is not None:
+                self._schedule_reply(answer, message.chat, message.question_id, 0)
+        self._schedule_handovers()
+
+    def _receive(self, now: float, person: str, message: OutboundMessage) -> None:
+        self.world.record_message(now, person)
+        qr = [a for a in message.attachments if a.qr_payload]
+        if not qr:
+            self.told.add((message.instruction_id, person))
+        for a in qr:
+            self.codes.append(
+                HeldCode(
+                    message.instruction_id or "",
+                    person,
+                    a.qr_payload or "",
+                    a.qr_purpose or "deposit",
+                    a.item or "",
+                )
+            )
+        for a in message.attachments:
+            if a.kind == "file" and a.item and self.world.available(person):
+                self.world.receive_file(now, person, a.item)
+
+    def _schedule_reply(self, reply: Reply, chat: ChatRef, question_id: str, n: int) -> None:
+        def deliver() -> None:
+            if self.world.available(reply.person):
+                self.messenger.post(
+                    reply.person, chat, reply.text, files=reply.files, in_reply_to=question_id
+                )
+
+        self.clock.call_later(self.reply_delay_s + 5.0 * n, deliver)
+
+    # -- hand-overs ----------------------------------------------------------------------
+    def on_robot_arrived(self) -> None:
+        self._schedule_handovers()
+
+    def _schedule_handovers(self) -> None:
+        place = self.robot.place
+        if place is None or self.robot.moving:
+            return
+        for code in self.codes:
+            if code.done or code.scheduled or not self.world.available(code.person):
+                continue
+            if place not in self.world.places_of(code.person):
+                continue
+            if (code.instruction_id, code.person) not in self.told:
+                continue
+            code.scheduled = True
+            self.clock.call_later(
+                self.handover_delay_s, functools.partial(self._handover, code, place)
+            )
+
+    def _handover(self, code: HeldCode, place: str) -> None:
+        code.scheduled = False
+        if self.robot.moving or self.robot.place != place or code.done:
+            return  # the robot left before the person came
+        now = self.clock.now()
+        problem = handover_problem(self.world, code.person, code.purpose, code.item, place)
+        if problem is not None:
+            # They keep the code and come again the next time the robot is here.
+            self.messenger.post(
+                code.person,
+                ChatRef(kind="dm", id=code.person),
+                f"I came to the robot, but: {problem}",
+            )
+            return
+        code.done = True
+        result = self.locker.controller.scan(code.payload)
+        if not result.accepted:
+            reason = result.decision.reason or "rejected"
+            self.messenger.post(
+                code.person,
+                ChatRef(kind="dm", id=code.person),
+                f"The locker rejected my code ({reason}).",
+            )
+            return
+        do_handover(self.world, now, code.person, code.purpose, code.item)
+        self.locker.controller.close()
+
+    def check(self, milestones: Iterable[dict[str, object]]) -> list[bool]:
+        return [self.world.check(dict(m)) for m in milestones]

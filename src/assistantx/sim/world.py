@@ -1,0 +1,131 @@
+"""The simulated office's truth: where everyone and everything is, who is available, what has
+been printed, signed, sealed, copied, heated, made, received, and who was told what.
+
+The world only changes through its methods, each of which logs what happened, so tests and the
+evaluator can see every hand-over (and catch one to the wrong person).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from typing import Any
+
+from assistantx.errors import ActionError
+from assistantx.office import Office
+from assistantx.sim.goals import parse_milestone
+
+LOCKER = "locker"
+
+
+@dataclass
+class WorldEvent:
+    time: float
+    kind: str
+    detail: dict[str, Any]
+
+
+@dataclass
+class World:
+    office: Office
+    unavailable: set[str] = field(default_factory=set)
+    holder: dict[str, str] = field(default_factory=dict)  # item id → person / locker / location
+    signed: set[tuple[str, str]] = field(default_factory=set)  # (document, signer)
+    sealed: set[tuple[str, str]] = field(default_factory=set)  # (document, sealer)
+    printed: set[str] = field(default_factory=set)  # file ids
+    copied: set[str] = field(default_factory=set)  # document ids
+    heated: set[str] = field(default_factory=set)
+    made: set[str] = field(default_factory=set)  # product item ids
+    received: set[tuple[str, str]] = field(default_factory=set)  # (person, file)
+    messages_to: dict[str, int] = field(default_factory=dict)  # person → messages received
+    log: list[WorldEvent] = field(default_factory=list)
+
+    @classmethod
+    def from_office(cls, office: Office, unavailable: Iterable[str] = ()) -> World:
+        world = cls(office=office, unavailable=set(unavailable))
+        for person_id in world.unavailable:
+            office.person(person_id)  # unknown ids fail here, not mid-run
+        for p in office.people:
+            for o in p.owns:
+                if office.item_type(o.type).physical:
+                    world.holder[p.item_id(o.type)] = o.at or p.id
+        return world
+
+    # -- facts ---------------------------------------------------------------------------
+    def available(self, person_id: str) -> bool:
+        return person_id not in self.unavailable
+
+    def owns(self, person_id: str, item_type: str) -> bool:
+        return any(o.type == item_type for o in self.office.person(person_id).owns)
+
+    def owners(self, item_type: str) -> list[str]:
+        return self.office.owners_of(item_type)
+
+    def locker_contents(self) -> list[str]:
+        return sorted(i for i, h in self.holder.items() if h == LOCKER)
+
+    def can_operate(self, person_id: str, operation: str) -> bool:
+        return any(
+            operation in f.operations and person_id in f.guards for f in self.office.facilities
+        )
+
+    def places_of(self, person_id: str) -> set[str]:
+        """Where a person can meet the robot: their desk and the facilities they guard."""
+        places = {self.office.person(person_id).location}
+        places.update(f.location for f in self.office.facilities if person_id in f.guards)
+        return places
+
+    # -- changes -------------------------------------------------------------------------
+    def note(self, time: float, kind: str, **detail: Any) -> None:
+        self.log.append(WorldEvent(time, kind, detail))
+
+    def record_message(self, time: float, person_id: str) -> None:
+        self.messages_to[person_id] = self.messages_to.get(person_id, 0) + 1
+
+    def move_item(self, time: float, item_id: str, to: str, by: str) -> None:
+        frm = self.holder.get(item_id)
+        self.holder[item_id] = to
+        self.note(time, "item_moved", item=item_id, frm=frm, to=to, by=by)
+
+    def produce(self, time: float, item_id: str, by: str) -> None:
+        self.made.add(item_id)
+        self.holder[item_id] = LOCKER
+        self.note(time, "produced", item=item_id, by=by)
+
+    def receive_file(self, time: float, person_id: str, file_id: str) -> None:
+        self.received.add((person_id, file_id))
+        self.note(time, "file_received", person=person_id, file=file_id)
+
+    def set_available(self, person_id: str, available: bool) -> None:
+        self.office.person(person_id)
+        if available:
+            self.unavailable.discard(person_id)
+        else:
+            self.unavailable.add(person_id)
+
+    # -- milestones ----------------------------------------------------------------------
+    def check(self, milestone: dict[str, Any]) -> bool:
+        name, args = parse_milestone(milestone)
+        match name:
+            case "holds":
+                return self.holder.get(args[1]) == args[0]
+            case "signed":
+                return (args[0], args[1]) in self.signed
+            case "sealed":
+                return any(doc == args[0] for doc, _ in self.sealed)
+            case "printed":
+                return args[0] in self.printed
+            case "copied":
+                return args[0] in self.copied
+            case "heated":
+                return args[0] in self.heated
+            case "received":
+                return (args[0], args[1]) in self.received
+            case "made":
+                return args[0] in self.made
+            case "informed":
+                return self.messages_to.get(args[0], 0) > 0
+        raise ActionError(f"unknown milestone {milestone!r}")  # pragma: no cover
+
+    def handovers(self) -> list[WorldEvent]:
+        return [e for e in self.log if e.kind == "item_moved"]
