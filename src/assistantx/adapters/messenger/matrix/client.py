@@ -187,9 +187,12 @@ class MatrixClient:
         )
 
     async def room_messages(
-        self, room_id: str, *, from_token: str, direction: str = "b", limit: int = 100
+        self, room_id: str, *, from_token: str | None, direction: str = "b", limit: int = 100
     ) -> JSON:
-        params: dict[str, str | int] = {"from": from_token, "dir": direction, "limit": limit}
+        """A page of a room's events; ``from_token`` None starts at the newest (dir ``b``)."""
+        params: dict[str, str | int] = {"dir": direction, "limit": limit}
+        if from_token is not None:
+            params["from"] = from_token
         return await self._json(
             "GET", f"/_matrix/client/v3/rooms/{_path_part(room_id)}/messages", params=params
         )

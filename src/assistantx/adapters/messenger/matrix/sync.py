@@ -28,19 +28,21 @@ from assistantx.adapters.messenger.matrix.normalize import PLATFORM
 
 logger = logging.getLogger(__name__)
 
-_FILTER = json.dumps(
-    {
-        "presence": {"not_types": ["*"]},
-        "account_data": {"not_types": ["*"]},
-        "room": {
-            "timeline": {"types": ["m.room.message"], "limit": 50},
-            "state": {"lazy_load_members": True},
-            "ephemeral": {"not_types": ["*"]},
+
+def _sync_filter(timeline_limit: int) -> str:
+    return json.dumps(
+        {
+            "presence": {"not_types": ["*"]},
             "account_data": {"not_types": ["*"]},
+            "room": {
+                "timeline": {"types": ["m.room.message"], "limit": timeline_limit},
+                "state": {"lazy_load_members": True},
+                "ephemeral": {"not_types": ["*"]},
+                "account_data": {"not_types": ["*"]},
+            },
         },
-    },
-    separators=(",", ":"),
-)
+        separators=(",", ":"),
+    )
 
 
 class SyncPoller:
@@ -54,6 +56,7 @@ class SyncPoller:
         sync_key: str,
         timeout_s: float = 30.0,
         max_backfill_pages: int = 5,
+        timeline_limit: int = 50,
         backoff_max_s: float = 60.0,
     ) -> None:
         self._client = client
@@ -61,6 +64,7 @@ class SyncPoller:
         self._sync_key = sync_key
         self._timeout_ms = int(timeout_s * 1000)
         self._max_backfill_pages = max_backfill_pages
+        self._filter = _sync_filter(timeline_limit)
         self._backoff_max_s = backoff_max_s
         self._task: asyncio.Task[None] | None = None
         self.ready = asyncio.Event()
@@ -102,7 +106,7 @@ class SyncPoller:
         response = await self._client.sync(
             since=since,
             timeout_ms=0 if first_run else self._timeout_ms,
-            filter_json=_FILTER,
+            filter_json=self._filter,
         )
         next_batch = response.get("next_batch")
         if not isinstance(next_batch, str):

@@ -1,0 +1,96 @@
+"""Session fixtures: one Synapse for the whole run, and one application-service gateway.
+
+The gateway is a real uvicorn server on the port written into the appservice registration. It
+lives for the whole session (so Synapse never sees the assistant "down" between tests and
+never backs off); each test mounts its own router on it. With nothing mounted it acknowledges
+and discards, because leftover events of an earlier test concern nobody.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import secrets
+import uuid
+from collections.abc import AsyncIterator, Iterator
+from pathlib import Path
+
+import pytest
+import pytest_asyncio
+from pydantic import SecretStr
+
+from assistantx.adapters.messenger.matrix import MatrixConfig, write_registration
+from synapse.gateway import AppserviceGateway
+from synapse.homeserver import (
+    Account,
+    SynapseHomeserver,
+    SynapseUnavailableError,
+    free_port,
+    install_synapse,
+)
+
+
+@pytest.fixture(scope="session")
+def appservice_config(tmp_path_factory: pytest.TempPathFactory) -> MatrixConfig:
+    """The assistant's application service; its URL points at the gateway's port."""
+    return MatrixConfig(
+        homeserver_url="http://127.0.0.1:1",  # replaced once Synapse has a port
+        server_name="office.test",
+        as_token=SecretStr(secrets.token_hex(16)),
+        hs_token=SecretStr(secrets.token_hex(16)),
+        appservice_id="assistantx-test",
+        appservice_url=f"http://127.0.0.1:{free_port()}",
+        sender_localpart="assistant",
+        mode="push",
+    )
+
+
+@pytest.fixture(scope="session")
+def homeserver(
+    tmp_path_factory: pytest.TempPathFactory, appservice_config: MatrixConfig
+) -> Iterator[SynapseHomeserver]:
+    try:
+        python = install_synapse()
+    except SynapseUnavailableError as exc:
+        pytest.fail(f"cannot install Synapse: {exc}", pytrace=False)
+    workdir: Path = tmp_path_factory.mktemp("synapse")
+    registration = write_registration(appservice_config, workdir / "appservice.yaml")
+    server = SynapseHomeserver(workdir, [registration])
+    try:
+        server.start(python)
+    except SynapseUnavailableError as exc:
+        pytest.fail(f"cannot start Synapse: {exc}", pytrace=False)
+    yield server
+    server.stop()
+
+
+@pytest.fixture(scope="session")
+def base_config(appservice_config: MatrixConfig, homeserver: SynapseHomeserver) -> MatrixConfig:
+    return appservice_config.model_copy(update={"homeserver_url": homeserver.url})
+
+
+@pytest_asyncio.fixture(scope="session", loop_scope="session")
+async def gateway(base_config: MatrixConfig) -> AsyncIterator[AppserviceGateway]:
+    assert base_config.appservice_url is not None
+    port = int(base_config.appservice_url.rsplit(":", 1)[1])
+    async with AppserviceGateway.serve(port) as running:
+        yield running
+
+
+@pytest.fixture
+def gateway_mounts(gateway: AppserviceGateway) -> Iterator[AppserviceGateway]:
+    """The gateway, emptied again after the test."""
+    yield gateway
+    gateway.unmount()
+
+
+@pytest.fixture
+def new_account(homeserver: SynapseHomeserver) -> object:
+    def register(prefix: str) -> Account:
+        return homeserver.register(f"{prefix}-{uuid.uuid4().hex[:8]}")
+
+    return register
+
+
+@pytest.fixture
+def inbox() -> asyncio.Queue[object]:
+    return asyncio.Queue()

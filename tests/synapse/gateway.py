@@ -1,0 +1,78 @@
+"""A real uvicorn server on the registered appservice port, routing to whichever router the
+current test mounted (or acknowledging and discarding when none is)."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import logging
+from collections.abc import AsyncIterator
+from typing import Any
+
+import uvicorn
+from fastapi import APIRouter, FastAPI
+from starlette.responses import JSONResponse
+from starlette.types import Receive, Scope, Send
+
+logger = logging.getLogger(__name__)
+
+
+class AppserviceGateway:
+    def __init__(self) -> None:
+        self._app: Any = None
+        self._down = False
+        self.discarded = 0
+
+    def mount(self, router: APIRouter) -> None:
+        app = FastAPI()
+        app.include_router(router)
+        self._app = app
+        self._down = False
+
+    def unmount(self) -> None:
+        self._app = None
+        self._down = False
+
+    def go_down(self) -> None:
+        """Answer 503 to everything, as a restarting service would."""
+        self._app = None
+        self._down = True
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            return
+        if self._app is not None:
+            await self._app(scope, receive, send)
+            return
+        if self._down:
+            response = JSONResponse({"errcode": "M_UNKNOWN", "error": "restarting"}, 503)
+        else:
+            self.discarded += 1
+            response = JSONResponse({})
+        await response(scope, receive, send)
+
+    @classmethod
+    @contextlib.asynccontextmanager
+    async def serve(cls, port: int) -> AsyncIterator[AppserviceGateway]:
+        gateway = cls()
+        config = uvicorn.Config(
+            gateway,
+            host="127.0.0.1",
+            port=port,
+            lifespan="off",
+            log_level="warning",
+            ws="none",
+            http="h11",
+        )
+        server = uvicorn.Server(config)
+        task = asyncio.create_task(server.serve())
+        while not server.started:
+            if task.done():
+                task.result()
+                raise RuntimeError("the appservice gateway did not start")
+            await asyncio.sleep(0.02)
+        try:
+            yield gateway
+        finally:
+            server.should_exit = True
+            await task

@@ -1,0 +1,72 @@
+"""Small waits and reads shared by the Synapse tests."""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from typing import Any
+
+from assistantx.adapters.messenger.base import InboundMessage
+from assistantx.adapters.messenger.matrix import MatrixClient, MatrixConfig
+
+WAIT_S = 20.0
+
+
+async def next_message(
+    inbox: asyncio.Queue[InboundMessage], timeout_s: float = WAIT_S
+) -> InboundMessage:
+    return await asyncio.wait_for(inbox.get(), timeout_s)
+
+
+async def assert_quiet(inbox: asyncio.Queue[InboundMessage], seconds: float) -> None:
+    """Nothing more arrives within ``seconds`` (no duplicate deliveries)."""
+    try:
+        extra = await asyncio.wait_for(inbox.get(), seconds)
+    except TimeoutError:
+        return
+    raise AssertionError(f"unexpected extra inbound message: {extra!r}")
+
+
+async def wait_joined(client: MatrixClient, room_id: str, user_id: str) -> None:
+    deadline = time.monotonic() + WAIT_S
+    while time.monotonic() < deadline:
+        if user_id in await client.joined_members(room_id):
+            return
+        await asyncio.sleep(0.1)
+    raise AssertionError(f"{user_id} did not join {room_id} in {WAIT_S}s")
+
+
+async def room_messages(client: MatrixClient, room_id: str) -> list[dict[str, Any]]:
+    """The room's m.room.message events, oldest first."""
+    page = await client.room_messages(room_id, from_token=None, direction="b", limit=100)
+    events = [e for e in page.get("chunk", []) if e.get("type") == "m.room.message"]
+    return list(reversed(events))
+
+
+async def wait_room_messages(
+    client: MatrixClient, room_id: str, count: int
+) -> list[dict[str, Any]]:
+    deadline = time.monotonic() + WAIT_S
+    while time.monotonic() < deadline:
+        events = await room_messages(client, room_id)
+        if len(events) >= count:
+            return events
+        await asyncio.sleep(0.1)
+    raise AssertionError(f"fewer than {count} messages in {room_id} after {WAIT_S}s")
+
+
+async def join_when_invited(client: MatrixClient, room_id: str) -> None:
+    deadline = time.monotonic() + WAIT_S
+    while True:
+        try:
+            await client.join(room_id)
+            return
+        except Exception:
+            if time.monotonic() > deadline:
+                raise
+            await asyncio.sleep(0.1)
+
+
+def derive(config: MatrixConfig, **update: Any) -> MatrixConfig:
+    """A validated copy with ``update`` applied (``model_copy`` would skip validation)."""
+    return MatrixConfig.model_validate({**config.model_dump(), **update})

@@ -1,0 +1,199 @@
+"""A person writes to the assistant on a real Synapse: push, pull, and both at once."""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+import pytest
+
+from assistantx.adapters.messenger.base import InboundMessage
+from assistantx.adapters.messenger.matrix import (
+    EventIngestor,
+    EventNormalizer,
+    MatrixClient,
+    MatrixConfig,
+    MatrixMessenger,
+    SqliteEventStore,
+    SyncPoller,
+)
+from synapse.gateway import AppserviceGateway
+from synapse.helpers import assert_quiet, derive, next_message, wait_joined
+from synapse.homeserver import Account, SynapseHomeserver
+
+pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
+
+
+class OfferCountingStore(SqliteEventStore):
+    """The real store, also counting how often each event was offered (by any path)."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__(path)
+        self.offered: dict[str, int] = {}
+
+    async def accept(
+        self, messages: Sequence[InboundMessage], **kwargs: str | None
+    ) -> list[InboundMessage]:
+        for message in messages:
+            self.offered[message.event_id] = self.offered.get(message.event_id, 0) + 1
+        return await super().accept(messages, **kwargs)  # type: ignore[arg-type]
+
+
+async def test_push_dm_arrives_normalized_once(
+    base_config: MatrixConfig,
+    gateway_mounts: AppserviceGateway,
+    new_account: Callable[[str], Account],
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    lee = new_account("lee")
+    config = derive(base_config, **{"people": {"lee": lee.user_id}})
+    messenger = MatrixMessenger(config, SqliteEventStore(tmp_path / "events.db"))
+    messenger.connect_inbox(inbox)
+    gateway_mounts.mount(messenger.appservice_router())
+    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
+        room = await person.create_room(invite=[config.bot_user_id], is_direct=True)
+        await wait_joined(person, room, config.bot_user_id)  # auto-joined on the pushed invite
+        event_id = await person.send_event(
+            room,
+            "m.room.message",
+            {"msgtype": "m.text", "body": "Please fetch my printout"},
+            txn_id="t1",
+        )
+        message = await next_message(inbox)
+        assert message.platform == "matrix"
+        assert message.event_id == event_id
+        assert str(message.chat) == "dm:lee"
+        assert message.sender == "lee"
+        assert message.text == "Please fetch my printout"
+        assert message.time.tzinfo is not None
+        await assert_quiet(inbox, 1.0)
+
+
+async def test_pull_dm_arrives_once_and_position_is_kept(
+    base_config: MatrixConfig,
+    new_account: Callable[[str], Account],
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    lee, bot = new_account("lee"), new_account("syncbot")
+    config = derive(
+        base_config,
+        **{
+            "mode": "pull",
+            "pull_user_id": bot.user_id,
+            "pull_access_token": bot.access_token,
+            "people": {"lee": lee.user_id},
+            "sync_timeout_s": 2.0,
+        },
+    )
+    store = SqliteEventStore(tmp_path / "events.db")
+    messenger = MatrixMessenger(config, store)
+    messenger.connect_inbox(inbox)
+    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
+        assert messenger.poller is not None
+        await asyncio.wait_for(messenger.poller.ready.wait(), 20)
+        room = await person.create_room(invite=[bot.user_id], is_direct=True)
+        await wait_joined(person, room, bot.user_id)  # the poller joined on the invite
+        event_id = await person.send_event(
+            room, "m.room.message", {"msgtype": "m.text", "body": "hello by sync"}, txn_id="t1"
+        )
+        message = await next_message(inbox)
+        assert (message.event_id, str(message.chat), message.text) == (
+            event_id,
+            "dm:lee",
+            "hello by sync",
+        )
+        await assert_quiet(inbox, 1.0)
+    assert await store.sync_token(f"matrix:{bot.user_id}") is not None
+
+
+async def test_both_modes_each_message_handled_once(
+    base_config: MatrixConfig,
+    gateway_mounts: AppserviceGateway,
+    new_account: Callable[[str], Account],
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    lee, bot = new_account("lee"), new_account("syncbot")
+    config = derive(
+        base_config,
+        **{
+            "mode": "both",
+            "pull_user_id": bot.user_id,
+            "pull_access_token": bot.access_token,
+            "people": {"lee": lee.user_id},
+            "sync_timeout_s": 1.0,
+        },
+    )
+    store = OfferCountingStore(tmp_path / "events.db")
+    messenger = MatrixMessenger(config, store)
+    messenger.connect_inbox(inbox)
+    gateway_mounts.mount(messenger.appservice_router())
+    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
+        assert messenger.poller is not None
+        await asyncio.wait_for(messenger.poller.ready.wait(), 20)
+        room = await person.create_room(invite=[config.bot_user_id, bot.user_id])
+        await wait_joined(person, room, config.bot_user_id)
+        await wait_joined(person, room, bot.user_id)
+        sent = [
+            await person.send_event(
+                room, "m.room.message", {"msgtype": "m.text", "body": f"m{i}"}, txn_id=f"t{i}"
+            )
+            for i in range(3)
+        ]
+        received = [await next_message(inbox) for _ in sent]
+        assert sorted(m.event_id for m in received) == sorted(sent)
+        # Wait until BOTH paths have offered every message, then nothing more may arrive.
+        async with asyncio.timeout(20):
+            while not all(store.offered.get(e, 0) >= 2 for e in sent):
+                await asyncio.sleep(0.1)
+        await assert_quiet(inbox, 0.5)
+
+
+async def test_pull_fills_a_limited_timeline_gap(
+    homeserver: SynapseHomeserver,
+    base_config: MatrixConfig,
+    new_account: Callable[[str], Account],
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    lee, bot = new_account("lee"), new_account("syncbot")
+    config = derive(base_config, **{"people": {"lee": lee.user_id}})
+    store = SqliteEventStore(tmp_path / "events.db")
+    ingestor = EventIngestor(store, EventNormalizer(config, {}), inbox.put)
+    async with (
+        MatrixClient(homeserver.url, bot.access_token) as bot_client,
+        MatrixClient(homeserver.url, lee.access_token) as person,
+    ):
+        room = await person.create_room(invite=[bot.user_id])
+        await bot_client.join(room)
+        poller = SyncPoller(bot_client, ingestor, sync_key="gap", timeout_s=0.5, timeline_limit=2)
+        await poller.sync_once()  # first run: takes the position, replays nothing
+        bodies = [f"while away {i}" for i in range(7)]
+        for i, body in enumerate(bodies):
+            await person.send_event(
+                room, "m.room.message", {"msgtype": "m.text", "body": body}, txn_id=f"g{i}"
+            )
+        await poller.sync_once()  # a timeline of 2, limited: the other 5 come from /messages
+        got = [inbox.get_nowait().text for _ in range(inbox.qsize())]
+        assert got == bodies
+
+
+async def test_homeserver_ping_reaches_the_router(
+    homeserver: SynapseHomeserver,
+    base_config: MatrixConfig,
+    gateway_mounts: AppserviceGateway,
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    messenger = MatrixMessenger(base_config, SqliteEventStore(tmp_path / "events.db"))
+    gateway_mounts.mount(messenger.appservice_router())
+    async with MatrixClient(homeserver.url, base_config.as_token.get_secret_value()) as client:
+        response = await client.request(
+            "POST",
+            f"/_matrix/client/v1/appservice/{base_config.appservice_id}/ping",
+            json={"transaction_id": "ping-1"},
+        )
+    assert "duration_ms" in response.json()
