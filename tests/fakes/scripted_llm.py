@@ -161,11 +161,20 @@ def reject_response_format(status: int = 400) -> Reply:
 
 
 class _QuietServer(uvicorn.Server):
-    """uvicorn without signal handling: a test must not take over SIGINT."""
+    """uvicorn without signal handling (a test must not take over SIGINT) that stops as soon
+    as asked instead of on its next 0.1 s tick."""
+
+    def __init__(self, config: uvicorn.Config) -> None:
+        super().__init__(config)
+        self.exit_requested = asyncio.Event()
 
     @contextlib.contextmanager
     def capture_signals(self) -> Generator[None, None, None]:
         yield
+
+    async def main_loop(self) -> None:
+        await self.on_tick(0)  # sets the default response headers
+        await self.exit_requested.wait()
 
 
 def _usage_for(body: dict[str, Any], content: str | None) -> dict[str, int]:
@@ -276,6 +285,7 @@ class ScriptedLLM:
             return
         self._closing.set()  # wake replies that are still waiting out their delay
         self._server.should_exit = True
+        self._server.exit_requested.set()
         try:
             await self._task
         finally:
