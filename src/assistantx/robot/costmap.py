@@ -1,0 +1,90 @@
+"""A static costmap: the occupancy map inflated the way nav2's InflationLayer does it.
+
+Costs (uint8, nav2 values): 254 LETHAL on occupied cells, 253 INSCRIBED within
+``robot_radius`` of one (the robot's centre there means a collision), then an exponential
+decay ``252 * exp(-cost_scaling_factor * (d - robot_radius))`` out to ``inflation_radius``,
+0 beyond, and 255 NO_INFORMATION on unknown cells. ``d`` is the Euclidean distance in metres
+between cell centres, from scipy's exact distance transform.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+from scipy.ndimage import distance_transform_edt
+
+from assistantx.robot.occupancy_map import UNKNOWN, OccupancyMap
+
+FREE_SPACE = 0
+INSCRIBED = 253
+LETHAL = 254
+NO_INFORMATION = 255
+
+
+@dataclass(frozen=True)
+class InflationParams:
+    """nav2 inflation_layer parameter names; robot_radius in metres."""
+
+    inflation_radius: float = 0.55
+    cost_scaling_factor: float = 10.0
+    robot_radius: float = 0.25
+
+    def __post_init__(self) -> None:
+        if self.robot_radius < 0 or self.inflation_radius < self.robot_radius:
+            raise ValueError("need 0 <= robot_radius <= inflation_radius")
+        if self.cost_scaling_factor <= 0:
+            raise ValueError("cost_scaling_factor must be positive")
+
+
+def inflation_cost(distance_m: npt.ArrayLike, params: InflationParams) -> npt.NDArray[np.uint8]:
+    """nav2's cost for a cell at ``distance_m`` from the nearest obstacle."""
+    d = np.asarray(distance_m, dtype=float)
+    decay = (INSCRIBED - 1) * np.exp(-params.cost_scaling_factor * (d - params.robot_radius))
+    cost = np.where(d <= params.inflation_radius, np.floor(decay), FREE_SPACE)
+    cost = np.where(d <= params.robot_radius, INSCRIBED, cost)
+    cost = np.where(d <= 0.0, LETHAL, cost)
+    return cost.astype(np.uint8)
+
+
+@dataclass(frozen=True, eq=False)
+class Costmap:
+    grid: OccupancyMap
+    costs: npt.NDArray[np.uint8]
+    obstacle_distance_m: npt.NDArray[np.float64]
+    params: InflationParams
+
+    @classmethod
+    def inflate(cls, grid: OccupancyMap, params: InflationParams | None = None) -> Costmap:
+        params = params or InflationParams()
+        lethal = grid.data >= 65
+        unknown = grid.data == UNKNOWN
+        # Distance (m) from each cell centre to the nearest lethal cell centre.
+        distance = np.asarray(distance_transform_edt(~lethal), dtype=np.float64) * grid.resolution
+        if not lethal.any():
+            distance = np.full(grid.data.shape, math.inf)
+        costs = inflation_cost(distance, params)
+        costs[unknown] = NO_INFORMATION
+        return cls(grid, costs, distance, params)
+
+    @property
+    def traversable(self) -> npt.NDArray[np.bool_]:
+        """Cells the robot's centre may occupy."""
+        return self.costs < INSCRIBED
+
+    def cost_at(self, x: float, y: float) -> int:
+        """Cost at a world point; NO_INFORMATION off the map."""
+        ix, iy = self.grid.world_to_cell(x, y)
+        if not (0 <= ix < self.grid.width and 0 <= iy < self.grid.height):
+            return NO_INFORMATION
+        return int(self.costs[iy, ix])
+
+    def with_obstacles(self, points_xy: npt.NDArray[np.float64]) -> Costmap:
+        """A new costmap with the given world points marked occupied (e.g. seen by the LiDAR)."""
+        data = self.grid.data.copy()
+        ix, iy = self.grid.world_to_cell(points_xy[:, 0], points_xy[:, 1])
+        inside = (ix >= 0) & (ix < self.grid.width) & (iy >= 0) & (iy < self.grid.height)
+        data[iy[inside], ix[inside]] = 100
+        return Costmap.inflate(self.grid.with_data(data), self.params)
