@@ -158,7 +158,7 @@ async def test_retries_exhausted_raise_llm_error_with_cause(scripted_llm: Script
 async def test_client_errors_are_not_retried(scripted_llm: ScriptedLLM) -> None:
     scripted_llm.script("planning", Reply(status=404, error="model 'test-model' not found"))
     async with make_model(scripted_llm) as model:
-        with pytest.raises(LLMError, match="HTTP 404.*not found"):
+        with pytest.raises(LLMError, match=r"HTTP 404.*not found"):
             await model.complete(ask())
     assert len(scripted_llm.requests) == 1
 
@@ -177,7 +177,7 @@ async def test_connection_refused_is_retried_then_reported() -> None:
 async def test_body_that_is_not_json_is_a_clear_error(scripted_llm: ScriptedLLM) -> None:
     scripted_llm.script("planning", Reply(raw_body="<html>proxy says hi</html>"))
     async with make_model(scripted_llm) as model:
-        with pytest.raises(LLMError, match="not JSON.*proxy says hi"):
+        with pytest.raises(LLMError, match=r"not JSON.*proxy says hi"):
             await model.complete(ask())
 
 
