@@ -1,0 +1,124 @@
+"""Synapse redelivers what the assistant did not acknowledge; nothing is lost or doubled.
+
+Synapse retries a failed transaction after 2 s, then 4 s, 8 s... (``_Recoverer`` in
+synapse/appservice/scheduler.py), so one injected failure costs about 2 s here.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+import pytest
+
+from assistantx.adapters.messenger.base import InboundMessage
+from assistantx.adapters.messenger.matrix import (
+    MatrixClient,
+    MatrixConfig,
+    MatrixMessenger,
+    SqliteEventStore,
+)
+from assistantx.errors import MessengerError
+from synapse.gateway import AppserviceGateway
+from synapse.helpers import assert_quiet, derive, next_message, wait_joined
+from synapse.homeserver import Account
+
+pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
+
+
+class FailsOnceStore(SqliteEventStore):
+    """The real store, except the first write holding a message fails (a disk hiccup)."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__(path)
+        self.failures_left = 1
+        self.failed_at: float | None = None
+
+    async def accept(
+        self, messages: Sequence[InboundMessage], **kwargs: str | None
+    ) -> list[InboundMessage]:
+        if messages and self.failures_left:
+            self.failures_left -= 1
+            self.failed_at = time.monotonic()
+            raise MessengerError("injected: the event store is unavailable")
+        return await super().accept(messages, **kwargs)  # type: ignore[arg-type]
+
+
+async def _dm_room(person: MatrixClient, bot_user: str) -> str:
+    room = await person.create_room(invite=[bot_user], is_direct=True)
+    await wait_joined(person, room, bot_user)
+    return room
+
+
+async def _say(person: MatrixClient, room: str, text: str) -> str:
+    return await person.send_event(
+        room, "m.room.message", {"msgtype": "m.text", "body": text}, txn_id=text
+    )
+
+
+async def test_a_failed_transaction_is_retried_and_handled_once(
+    base_config: MatrixConfig,
+    gateway_mounts: AppserviceGateway,
+    new_account: Callable[[str], Account],
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    lee = new_account("lee")
+    config = derive(base_config, people={"lee": lee.user_id})
+    store = FailsOnceStore(tmp_path / "e.db")
+    messenger = MatrixMessenger(config, store)
+    messenger.connect_inbox(inbox)
+    gateway_mounts.mount(messenger.appservice_router())
+    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
+        room = await _dm_room(person, config.bot_user_id)
+        event_id = await _say(person, room, "bring the signed form")
+        message = await next_message(inbox)
+        assert store.failures_left == 0 and store.failed_at is not None
+        assert message.event_id == event_id
+        # It came from Synapse's retry, after the backoff, not from the first attempt.
+        assert time.monotonic() - store.failed_at >= 1.0
+        await assert_quiet(inbox, 1.0)
+
+
+async def test_restart_between_transactions_loses_nothing(
+    base_config: MatrixConfig,
+    gateway_mounts: AppserviceGateway,
+    new_account: Callable[[str], Account],
+    inbox: asyncio.Queue[InboundMessage],
+    tmp_path: Path,
+) -> None:
+    lee = new_account("lee")
+    config = derive(base_config, people={"lee": lee.user_id})
+    db = tmp_path / "events.db"
+    async with MatrixClient(config.homeserver_url, lee.access_token) as person:
+        first = MatrixMessenger(config, SqliteEventStore(db))
+        first.connect_inbox(inbox)
+        gateway_mounts.mount(first.appservice_router())
+        async with first:
+            room = await _dm_room(person, config.bot_user_id)
+            one = await _say(person, room, "first")
+            got_one = await next_message(inbox)
+            assert got_one.event_id == one
+            await first.acknowledge(got_one)
+            # A second message is accepted (stored, queued) but the app dies before handling it.
+            two = await _say(person, room, "second")
+            assert (await next_message(inbox)).event_id == two
+        await first.store.close()
+
+        gateway_mounts.go_down()  # the service is restarting: Synapse gets 503 and backs off
+        three = await _say(person, room, "third")
+        await asyncio.sleep(0.5)
+
+        second = MatrixMessenger(config, SqliteEventStore(db))
+        fresh_inbox: asyncio.Queue[InboundMessage] = asyncio.Queue()
+        second.connect_inbox(fresh_inbox)
+        async with second:
+            gateway_mounts.mount(second.appservice_router())
+            replayed = await next_message(fresh_inbox)  # accepted before the restart, unhandled
+            assert replayed.event_id == two
+            redelivered = await next_message(fresh_inbox)  # Synapse's retry after the 503
+            assert redelivered.event_id == three
+            await assert_quiet(fresh_inbox, 1.0)
+        await second.store.close()
