@@ -17,6 +17,7 @@ COMMAND_MODULES = [
     "assistantx.cli.office_cmd",
     "assistantx.cli.sim_cmd",
     "assistantx.cli.lock_cmd",
+    "assistantx.cli.map_cmd",
 ]
 
 

@@ -1,0 +1,255 @@
+"""NavigatorRobot: the in-process robot base on the simulated navigation stack.
+
+``move_to(location_id)`` resolves the id to its map anchor, plans on the inflated costmap,
+drives with pure pursuit while AMCL localizes from the simulated LiDAR, and checks arrival
+against the true pose within ``arrival_tolerance_m``. The clock advances by the driving time
+(a SimClock costs no real time; a WallClock lets the robot drive in real time).
+
+``localize=False`` is the fast mode for the evaluation: the base traverses the planned path
+kinematically (no LiDAR, no AMCL), taking path length / speed. Paths between anchors are
+planned once per start anchor (one Dijkstra to every anchor) and cached, which also serves
+``path_distance``.
+
+Obstacles the map does not know can be dropped into the simulated world with ``block``;
+a path that cannot get round them ends in BlockedError.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+import math
+from collections.abc import Mapping
+from pathlib import Path as FilePath
+
+import numpy as np
+
+from assistantx.adapters.robot.base import MoveResult, Pose, RobotBase, RobotState
+from assistantx.clock import Clock
+from assistantx.errors import (
+    BlockedError,
+    LocalizationLostError,
+    MapError,
+    RobotError,
+    UnreachableError,
+)
+from assistantx.office import Office
+from assistantx.robot.anchors import Anchor, load_anchors
+from assistantx.robot.geometry import FloatArray
+from assistantx.robot.navigation import NavigationParams, Navigator
+from assistantx.robot.occupancy_map import OCCUPIED, OccupancyMap, load_map
+from assistantx.robot.planner import GridPlanner, Path
+
+logger = logging.getLogger(__name__)
+
+DEFAULT_MAP = FilePath(__file__).resolve().parents[4] / "maps" / "office.yaml"
+MAX_PARTICLES_SHOWN = 500
+
+
+class NavigatorRobot(RobotBase):
+    def __init__(
+        self,
+        office: Office,
+        grid: OccupancyMap,
+        anchors: Mapping[str, Anchor],
+        clock: Clock,
+        seed: int = 0,
+        *,
+        localize: bool = True,
+        start: str | None = None,
+        params: NavigationParams | None = None,
+        arrival_tolerance_m: float = 0.15,
+    ) -> None:
+        missing = sorted({loc.id for loc in office.locations} - anchors.keys())
+        if missing:
+            raise MapError(f"no map anchor for location(s): {', '.join(missing)}")
+        self.office = office
+        self.anchors = dict(anchors)
+        self.clock = clock
+        self.localize = localize
+        self.arrival_tolerance_m = arrival_tolerance_m
+        self._place: str | None = start or office.robot.home
+        if self._place not in self.anchors:
+            raise MapError(f"start place {self._place!r} has no map anchor")
+        home = self.anchors[self._place]
+        self._grid = grid
+        self._navigator = Navigator(
+            grid,
+            np.array([home.x, home.y, home.yaw]),
+            np.random.default_rng(seed),
+            params,
+            localize=localize,
+        )
+        self._paths: dict[tuple[str, str], Path | None] = {}
+        self._obstacles: list[tuple[float, float, float]] = []
+        self._goal: str | None = None
+        self._path: Path | None = None
+        self._lock = asyncio.Lock()
+
+    @classmethod
+    def from_files(
+        cls,
+        office: Office,
+        clock: Clock,
+        seed: int = 0,
+        *,
+        map_yaml: str | FilePath = DEFAULT_MAP,
+        anchors_yaml: str | FilePath | None = None,
+        localize: bool = True,
+        start: str | None = None,
+    ) -> NavigatorRobot:
+        map_path = FilePath(map_yaml)
+        anchors_path = anchors_yaml or map_path.with_name(map_path.stem + ".anchors.yaml")
+        grid, anchors = load_map(map_path), load_anchors(anchors_path)
+        return cls(office, grid, anchors, clock, seed, localize=localize, start=start)
+
+    @property
+    def grid(self) -> OccupancyMap:
+        """The map the robot believes (without obstacles dropped into the world)."""
+        return self._grid
+
+    @property
+    def navigator(self) -> Navigator:
+        """The simulated navigation stack (for tests, benchmarks and the simulator)."""
+        return self._navigator
+
+    # -- RobotBase ---------------------------------------------------------------------------
+    async def move_to(self, location_id: str) -> MoveResult:
+        if location_id not in self.anchors:
+            raise UnreachableError(f"{location_id!r} is not a place on the map")
+        if self._lock.locked():
+            raise RobotError(f"already driving to {self._goal}")
+        async with self._lock:
+            return await self._move(location_id)
+
+    async def _move(self, location_id: str) -> MoveResult:
+        nav = self._navigator
+        anchor = self.anchors[location_id]
+        started_at, odometer_before = nav.base.time_s, nav.base.odometer_m
+        path = self._plan(location_id)
+        self._goal, self._path, self._place = location_id, path, None
+        logger.info("driving to %s (%.1f m)", location_id, path.length_m)
+        try:
+            for seconds in nav.follow(path, anchor.yaw):
+                await self.clock.sleep(seconds)
+        except RobotError:
+            self._goal = None
+            raise
+        true = nav.base.true_pose
+        miss = math.hypot(true[0] - anchor.x, true[1] - anchor.y)
+        self._goal, self._path = None, None
+        if miss > self.arrival_tolerance_m:
+            raise LocalizationLostError(
+                f"believed to be at {location_id} but {miss:.2f} m away from it"
+            )
+        self._place = location_id
+        return MoveResult(
+            place=location_id,
+            distance_m=round(nav.base.odometer_m - odometer_before, 3),
+            duration_s=round(nav.base.time_s - started_at, 3),
+        )
+
+    def state(self) -> RobotState:
+        nav = self._navigator
+        believed = nav.pose
+        particles = None
+        if nav.filter is not None:
+            sample = nav.filter.sample(MAX_PARTICLES_SHOWN)
+            particles = [(float(x), float(y), float(t)) for x, y, t in sample]
+        path = self._path.points if self._path is not None else np.zeros((0, 2))
+        return RobotState(
+            place=self._place,
+            pose=Pose(x=float(believed[0]), y=float(believed[1]), yaw=float(believed[2])),
+            moving=self._goal is not None,
+            goal=self._goal,
+            path=[(float(x), float(y)) for x, y in path],
+            particles=particles,
+            odometer_m=nav.base.odometer_m,
+        )
+
+    # -- planning ----------------------------------------------------------------------------
+    def path_distance(self, a: str, b: str) -> float:
+        """Metres along the planned path between the anchors of two locations (cached)."""
+        for location_id in (a, b):
+            if location_id not in self.anchors:
+                raise UnreachableError(f"{location_id!r} is not a place on the map")
+        path = self._anchor_path(a, b)
+        if path is None:
+            raise UnreachableError(f"no path from {a} to {b}")
+        return path.length_m
+
+    def _anchor_path(self, a: str, b: str) -> Path | None:
+        if (a, b) not in self._paths:
+            names = list(self.anchors)
+            start = self.anchors[a]
+            paths = self._navigator.planner.plan_many(
+                (start.x, start.y), [(self.anchors[n].x, self.anchors[n].y) for n in names]
+            )
+            for name, path in zip(names, paths, strict=True):
+                self._paths[(a, name)] = path
+                if path is not None and (name, a) not in self._paths:
+                    reverse = Path(
+                        path.points[::-1].copy(), path.length_m, path.cost, path.grid_cells
+                    )
+                    self._paths[(name, a)] = reverse
+        return self._paths[(a, b)]
+
+    def plan_to(self, location_id: str) -> Path:
+        """The path the robot would take from where it is to ``location_id``."""
+        if location_id not in self.anchors:
+            raise UnreachableError(f"{location_id!r} is not a place on the map")
+        return self._plan(location_id)
+
+    def _plan(self, location_id: str) -> Path:
+        anchor = self.anchors[location_id]
+        nav = self._navigator
+        if not self.localize and self._place is not None and not self._obstacles:
+            cached = self._anchor_path(self._place, location_id)
+            if cached is None:
+                raise UnreachableError(f"no path from {self._place} to {location_id}")
+            return cached
+        path = nav.plan((anchor.x, anchor.y))
+        if not self.localize and self._obstacles and self._crosses_obstacle(path):
+            # The kinematic base has no LiDAR: it "sees" the world's obstacles by replanning
+            # on a costmap that holds them, and is blocked if there is no way round.
+            try:
+                path = GridPlanner(
+                    nav.costmap.with_obstacles(self._obstacle_points()), nav.params.planner
+                ).plan((float(nav.pose[0]), float(nav.pose[1])), (anchor.x, anchor.y))
+            except UnreachableError as exc:
+                raise BlockedError(f"the way to {location_id} is blocked: {exc}") from exc
+        return path
+
+    # -- the simulated world -----------------------------------------------------------------
+    def block(self, x: float, y: float, radius_m: float) -> None:
+        """Drop a round obstacle (unknown to the map) into the simulated world."""
+        self._obstacles.append((x, y, radius_m))
+        data = self._grid.data.copy()
+        ix, iy = np.meshgrid(np.arange(self._grid.width), np.arange(self._grid.height))
+        cx, cy = self._grid.cell_to_world(ix, iy)
+        for ox, oy, r in self._obstacles:
+            data[np.hypot(cx - ox, cy - oy) <= r] = OCCUPIED
+        self._navigator.set_world(self._grid.with_data(data))
+
+    def clear_obstacles(self) -> None:
+        self._obstacles.clear()
+        self._navigator.set_world(self._grid)
+
+    def _obstacle_points(self) -> FloatArray:
+        points = []
+        res = self._grid.resolution
+        for ox, oy, r in self._obstacles:
+            xs, ys = np.meshgrid(
+                np.arange(ox - r, ox + r + res, res), np.arange(oy - r, oy + r + res, res)
+            )
+            inside = np.hypot(xs - ox, ys - oy) <= r
+            points.append(np.column_stack([xs[inside], ys[inside]]))
+        return np.concatenate(points)
+
+    def _crosses_obstacle(self, path: Path) -> bool:
+        dense = path.resampled(self._grid.resolution)
+        clearance = self._navigator.params.inflation.robot_radius
+        return any(
+            bool((np.hypot(dense[:, 0] - ox, dense[:, 1] - oy) <= r + clearance).any())
+            for ox, oy, r in self._obstacles
+        )

@@ -1,0 +1,69 @@
+"""``assistantx map render``: draw the office map with its anchors, a planned path and AMCL's
+particle cloud to a PNG."""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+from pathlib import Path
+
+import numpy as np
+
+from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
+from assistantx.clock import SimClock
+from assistantx.errors import AssistantXError
+from assistantx.office import DEFAULT_OFFICE, load_office
+from assistantx.robot.render import render_map
+
+
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = sub.add_parser("map", help="robot map tools")
+    map_sub = parser.add_subparsers(dest="map_command", required=True, metavar="ACTION")
+    render = map_sub.add_parser("render", help="render the map, anchors, a path, particles")
+    render.add_argument("--out", required=True, type=Path, help="PNG file to write")
+    render.add_argument("--map", type=Path, default=DEFAULT_MAP, help="map_server YAML")
+    render.add_argument("--anchors", type=Path, default=None, help="anchors YAML")
+    render.add_argument("--office", type=Path, default=DEFAULT_OFFICE, help="office YAML")
+    render.add_argument("--path", default=None, metavar="A,B", help="plan (and drive) A to B")
+    render.add_argument("--particles", action="store_true", help="show AMCL's particle cloud")
+    render.add_argument("--seed", type=int, default=0)
+    render.set_defaults(func=run_render)
+
+
+def run_render(args: argparse.Namespace) -> int:
+    try:
+        return asyncio.run(_render(args))
+    except AssistantXError as exc:
+        print(f"error: {exc}")
+        return 1
+
+
+async def _render(args: argparse.Namespace) -> int:
+    office = load_office(args.office)
+    start, goal = None, None
+    if args.path:
+        parts = [p.strip() for p in args.path.split(",")]
+        if len(parts) != 2 or not all(parts):
+            print("error: --path takes two location ids, e.g. --path desk_01,print_room")
+            return 2
+        start, goal = parts
+    robot = NavigatorRobot.from_files(
+        office,
+        SimClock(),
+        args.seed,
+        map_yaml=args.map,
+        anchors_yaml=args.anchors,
+        localize=args.particles,
+        start=start,
+    )
+    path = None
+    if goal is not None:
+        path = robot.plan_to(goal).points
+        if args.particles:  # drive there, so the cloud shows localization after the trip
+            await robot.move_to(goal)
+    state = robot.state()
+    particles = np.array(state.particles) if state.particles else None
+    out = render_map(robot.grid, args.out, anchors=robot.anchors, path=path, particles=particles)
+    length = f", path {robot.path_distance(start, goal):.2f} m" if start and goal else ""
+    print(f"wrote {out}{length}")
+    return 0
