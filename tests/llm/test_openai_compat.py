@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import time
+from typing import Any
 
 import httpx
 import pytest
@@ -36,24 +37,24 @@ def tiny_retries(max_retries: int = 3, *, cap_s: float = 0.05) -> RetryPolicy:
 
 
 def make_model(
-    server: ScriptedLLM, *, retry: RetryPolicy | None = None, **kwargs: object
+    server: ScriptedLLM, *, retry: RetryPolicy | None = None, **kwargs: Any
 ) -> OpenAICompatibleModel:
     return OpenAICompatibleModel(
         server.base_url,
         "test-model",
         retry=retry or tiny_retries(),
-        **kwargs,  # type: ignore[arg-type]
+        **kwargs,
     )
 
 
-def ask(agent: str = "planning", text: str = "What next?", **kwargs: object) -> ChatRequest:
+def ask(agent: str = "planning", text: str = "What next?", **kwargs: Any) -> ChatRequest:
     return ChatRequest(
         messages=(
             Message(role="system", content=f"AGENT: {agent}"),
             Message(role="user", content=text),
         ),
         agent=agent,
-        **kwargs,  # type: ignore[arg-type]
+        **kwargs,
     )
 
 

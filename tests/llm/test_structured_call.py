@@ -9,6 +9,7 @@ from pydantic import BaseModel, Field
 
 from assistantx.errors import LLMError, ModelBehaviorError, UnknownNameError
 from assistantx.llm import (
+    Attempt,
     ChatRequest,
     Message,
     OpenAICompatibleModel,
@@ -136,7 +137,13 @@ async def test_gives_up_with_model_behavior_error(scripted_llm: ScriptedLLM) -> 
     assert len(error.attempts) == 3
     assert "goal: Field required" in error.last_error
     assert "after 3 attempt(s)" in str(error)
-    assert [a.error is not None for a in error.attempts] == [True, True, True]
+    attempts = [a for a in error.attempts if isinstance(a, Attempt)]
+    assert [a.text for a in attempts] == [
+        "I cannot help with that.",
+        malformed_json().content,
+        "{}",
+    ]
+    assert all(a.error for a in attempts)
     assert len(scripted_llm.requests) == 3
     # Each retry carries the whole conversation so far: 2 + 2 + 2 messages.
     assert [len(r.messages) for r in scripted_llm.requests] == [2, 4, 6]

@@ -222,7 +222,7 @@ class OpenAICompatibleModel(ChatModel):
         retries = 0
         while True:
             body = self._body(request, mode)
-            if self.log_bodies:
+            if self.log_bodies and logger.isEnabledFor(logging.DEBUG):
                 logger.debug(
                     "LLM request agent=%s mode=%s messages=%s",
                     request.agent,
