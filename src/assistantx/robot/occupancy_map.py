@@ -266,7 +266,7 @@ def save_map(grid: OccupancyMap, yaml_path: str | Path, *, image_name: str | Non
         "origin": [grid.origin_x, grid.origin_y, grid.origin_yaw],
         "negate": 0,
         "occupied_thresh": 0.65,
-        "free_thresh": 0.25,
+        "free_thresh": 0.196,  # so that 205 (unknown) reads back as unknown
     }
     path.write_text(yaml.safe_dump(header, sort_keys=False), encoding="utf-8")
     return path
