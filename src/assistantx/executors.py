@@ -33,9 +33,10 @@ from assistantx.adapters.messenger.base import (
 )
 from assistantx.adapters.robot.base import RobotBase
 from assistantx.clock import Clock
+from assistantx.dialogue import DialogueTurn
 from assistantx.errors import AdapterError
 from assistantx.memory.graph import LongTermMemory
-from assistantx.memory.short_term import DialogueTurn, IssuedCode, ShortTermMemory
+from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.office import Office
 from assistantx.replies import ReplyBox
 from assistantx.trace import ActionResult

@@ -11,6 +11,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, Field
 
 from assistantx.actions import Action, Outcome
+from assistantx.dialogue import DialogueTurn
 from assistantx.memory.updates import AppliedUpdate, MemoryUpdate
 
 
@@ -79,6 +80,16 @@ class AgentCall(BaseModel):
     estimated: bool = False
 
 
+class Observation(BaseModel):
+    """ΔM: what changed in the world as the assistant saw it during a step."""
+
+    messages: list[DialogueTurn] = Field(default_factory=list, description="new inbound turns")
+    robot_place: str | None = None
+    moved: bool = False
+    locker_contents: list[str] = Field(default_factory=list)
+    locker_changed: bool = False
+
+
 class TraceStep(BaseModel):
     index: int
     started_at: float
@@ -87,9 +98,7 @@ class TraceStep(BaseModel):
     plan: Plan | None = None
     decision: Decision | None = None
     results: list[ActionResult] = Field(default_factory=list)
-    observed: list[AppliedUpdate] = Field(
-        default_factory=list, description="ΔM: memory changes observed while executing"
-    )
+    observed: Observation | None = None
     reflection: Reflection | None = None
     applied: list[AppliedUpdate] = Field(
         default_factory=list, description="memory updates from the reflection"

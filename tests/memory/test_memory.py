@@ -8,6 +8,7 @@ import pytest
 
 from assistantx.actions import Move, SendQR, action_json_schema, parse_action
 from assistantx.adapters.messenger.base import ChatRef
+from assistantx.dialogue import DialogueTurn
 from assistantx.errors import AmbiguousNameError, UnknownNameError
 from assistantx.memory import (
     AvailabilityUpdate,
@@ -18,7 +19,6 @@ from assistantx.memory import (
     ShortTermMemory,
     render_memory,
 )
-from assistantx.memory.short_term import DialogueTurn
 from assistantx.office import Office, load_office
 from assistantx.trace import Trace
 

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 COMMAND_MODULES = [
     "assistantx.cli.office_cmd",
     "assistantx.cli.sim_cmd",
+    "assistantx.cli.run_cmd",
     "assistantx.cli.lock_cmd",
     "assistantx.cli.map_cmd",
 ]

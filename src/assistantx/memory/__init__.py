@@ -1,9 +1,10 @@
 """The Memory Unit: long-term belief graph, per-instruction short-term memory, one renderer."""
 
+from assistantx.dialogue import DialogueTurn
 from assistantx.memory.graph import LOCKER, Availability, LongTermMemory
 from assistantx.memory.render import render_long_term, render_memory, render_short_term
 from assistantx.memory.resolve import Resolver
-from assistantx.memory.short_term import DialogueTurn, EmbodiedState, IssuedCode, ShortTermMemory
+from assistantx.memory.short_term import EmbodiedState, IssuedCode, ShortTermMemory
 from assistantx.memory.updates import (
     AppliedUpdate,
     AvailabilityUpdate,

@@ -1,0 +1,153 @@
+"""``assistantx run``: one instruction in the simulated office, its trace printed step by step.
+
+With ``--json`` the last line of stdout is one JSON object with ``outcome``, ``steps``,
+``actions`` (and the goal-free facts: messages sent, distance driven, usage); ``--trace-out``
+writes the full trace JSON to a file.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+from pathlib import Path
+from typing import Any
+
+from assistantx.assistant import Assistant, AssistantParts
+from assistantx.errors import AssistantXError, GroundingError, OfficeError
+from assistantx.office import load_office
+from assistantx.ppdr.loop import LoopLimits
+from assistantx.reasoners import reasoner_factory
+from assistantx.settings import Settings
+from assistantx.sim.office import SimOffice
+from assistantx.trace import Trace
+
+
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    p = sub.add_parser("run", help="run one instruction in the simulated office")
+    p.add_argument("instruction", help="the instruction, in plain words")
+    p.add_argument("--as", dest="requester", required=True, help="who asks (person id or name)")
+    p.add_argument("--unavailable", default="", help="comma-separated ids of absent people")
+    p.add_argument(
+        "--reasoner",
+        choices=["symbolic", "llm"],
+        default=None,
+        help="default: llm when ASSISTANTX_LLM_BASE_URL is set, else symbolic",
+    )
+    p.add_argument("--office", default=None, help="office YAML (default: the default office)")
+    p.add_argument("--max-steps", type=int, default=None)
+    p.add_argument("--json", action="store_true", help="end with one JSON summary line")
+    p.add_argument("--trace-out", default=None, help="write the full trace JSON here")
+    p.add_argument("--quiet", action="store_true", help="do not print the trace")
+    p.set_defaults(func=_run)
+
+
+def _run(args: argparse.Namespace) -> int:
+    settings = Settings()
+    try:
+        office = load_office(args.office or settings.office)
+    except OfficeError as exc:
+        print(f"error: {exc}")
+        return 2
+    kind = args.reasoner or settings.effective_reasoner
+    try:
+        summary, trace = asyncio.run(_execute(args, settings, office, kind))
+    except GroundingError as exc:
+        print(f"error: {exc}")
+        return 2
+    except AssistantXError as exc:
+        print(f"error: {exc}")
+        return 1
+    if not args.quiet:
+        print_trace(trace)
+    if args.trace_out:
+        Path(args.trace_out).write_text(trace.model_dump_json(indent=2))
+    if args.json:
+        print(json.dumps(summary))
+    return 0 if trace.outcome in ("done", "unachievable") else 1
+
+
+async def _execute(
+    args: argparse.Namespace, settings: Settings, office: Any, kind: str
+) -> tuple[dict[str, Any], Trace]:
+    unavailable = tuple(p for p in args.unavailable.split(",") if p)
+    sim = SimOffice(office, unavailable=unavailable)
+    factory = reasoner_factory(kind, office, settings)
+    limits = LoopLimits(
+        max_steps=args.max_steps or settings.max_steps, deadline_s=settings.instruction_deadline_s
+    )
+    assistant = Assistant(
+        AssistantParts(
+            office=office,
+            messenger=sim.messenger,
+            robot=sim.robot,
+            locker=sim.locker,
+            clock=sim.clock,
+            reasoner_factory=factory,
+            reasoner_name=kind,
+            limits=limits,
+        )
+    )
+
+    async def register(stm: Any) -> None:
+        sim.register_instruction(stm.instruction_id, stm.requester)
+
+    assistant.on_instruction_start(register)
+    await sim.locker.start()
+    await assistant.start()
+    try:
+        stm = await assistant.submit(args.requester, args.instruction)
+        stm = await assistant.wait(stm.instruction_id)
+    finally:
+        await assistant.stop()
+        await sim.locker.stop()
+    trace = stm.trace
+    actions = [r.action.model_dump(mode="json") for r in trace.actions()]
+    summary = {
+        "instruction_id": trace.instruction_id,
+        "requester": trace.requester,
+        "reasoner": kind,
+        "outcome": trace.outcome,
+        "summary": trace.summary,
+        "steps": len(trace.steps),
+        "actions": actions,
+        "refused": sum(1 for r in trace.actions() if r.refused),
+        "sim_time_s": round(sim.clock.now(), 1),
+        "distance_m": round(sim.robot.odometer_m, 1),
+        "llm_calls": trace.usage.calls,
+        "prompt_tokens": trace.usage.prompt_tokens,
+        "completion_tokens": trace.usage.completion_tokens,
+    }
+    return summary, trace
+
+
+def print_trace(trace: Trace) -> None:
+    print(f"instruction {trace.instruction_id} from {trace.requester}: {trace.text!r}")
+    for step in trace.steps:
+        print(f"-- step {step.index}")
+        if step.percept and step.percept.summary:
+            print(f"   percept: {step.percept.summary}")
+        if step.plan:
+            todo = [("[x] " if s.done else "[ ] ") + s.description for s in step.plan.subgoals]
+            print(f"   plan: {step.plan.goal}")
+            for line in todo:
+                print(f"     {line}")
+        for f in step.feedback:
+            print(f"   feedback: {f}")
+        for r in step.results:
+            status = "refused" if r.refused else ("ok" if r.ok else "failed")
+            print(f"   t={r.started_at:6.0f}s {r.action.signature()}")
+            print(f"            -> {status}: {r.observation}")
+        if step.reflection:
+            print(f"   reflection {step.reflection.verdict}: {step.reflection.reason}")
+            for applied in step.applied:
+                print(f"     memory: {applied.update.model_dump(exclude={'evidence'})}")
+        if step.queue:
+            print(f"   queued behind: {', '.join(step.queue)}")
+    print(f"outcome: {trace.outcome} — {trace.summary}")
+    if trace.usage.calls:
+        u = trace.usage
+        print(
+            f"llm: {u.calls} calls, {u.prompt_tokens}+{u.completion_tokens} tokens, "
+            f"{u.latency_s:.1f} s"
+        )
