@@ -31,12 +31,21 @@ class OfferCountingStore(SqliteEventStore):
     def __init__(self, path: Path) -> None:
         super().__init__(path)
         self.offered: dict[str, int] = {}
+        self._changed = asyncio.Condition()
+
+    async def wait_offered(self, event_ids: list[str], times: int) -> None:
+        async with self._changed:
+            await self._changed.wait_for(
+                lambda: all(self.offered.get(e, 0) >= times for e in event_ids)
+            )
 
     async def accept(
         self, messages: Sequence[InboundMessage], **kwargs: str | None
     ) -> list[InboundMessage]:
         for message in messages:
             self.offered[message.event_id] = self.offered.get(message.event_id, 0) + 1
+        async with self._changed:
+            self._changed.notify_all()
         return await super().accept(messages, **kwargs)  # type: ignore[arg-type]
 
 
@@ -147,8 +156,7 @@ async def test_both_modes_each_message_handled_once(
         assert sorted(m.event_id for m in received) == sorted(sent)
         # Wait until BOTH paths have offered every message, then nothing more may arrive.
         async with asyncio.timeout(20):
-            while not all(store.offered.get(e, 0) >= 2 for e in sent):
-                await asyncio.sleep(0.1)
+            await store.wait_offered(sent, times=2)
         await assert_quiet(inbox, 0.5)
 
 
