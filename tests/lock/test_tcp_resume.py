@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import asyncio
-from collections.abc import AsyncIterator
+from collections.abc import AsyncIterator, Callable
 
 import pytest
 
@@ -48,10 +48,10 @@ async def _hand_over(locker: TcpLocker, person: str) -> None:
     await locker.simulate_close()
 
 
-async def _wait_until(condition: object, timeout: float = 3.0) -> None:
-    assert callable(condition)
-    async with asyncio.timeout(timeout):
-        while not condition():
+async def _wait_until(condition: Callable[[], bool], limit_s: float = 3.0) -> None:
+    # Polling: the conditions are counters inside the client, with no event to wait on.
+    async with asyncio.timeout(limit_s):
+        while not condition():  # noqa: ASYNC110
             await asyncio.sleep(0.01)
 
 

@@ -1,0 +1,102 @@
+"""``python -m assistantx lock-sim`` as its own process, driven over TCP."""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import signal
+import socket
+import sys
+from collections.abc import AsyncIterator
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+from assistantx.adapters.lock.tcp import TcpLocker
+from assistantx.clock import WallClock
+from assistantx.errors import LockAuthError
+from assistantx.lock import LockKeys
+from assistantx.lock.keys import new_key
+
+from .conftest import FAST, QUICK_RETRY
+
+
+@dataclass
+class LockSim:
+    process: asyncio.subprocess.Process
+    port: int
+
+
+def _free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return int(probe.getsockname()[1])
+
+
+@pytest.fixture
+async def lock_sim(tmp_path: Path) -> AsyncIterator[tuple[LockSim, LockKeys]]:
+    keys = LockKeys.generate()
+    key_file = tmp_path / "keys.json"
+    key_file.write_text(keys.to_json())
+    port = _free_port()
+    env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
+    process = await asyncio.create_subprocess_exec(
+        sys.executable,
+        "-m",
+        "assistantx",
+        "lock-sim",
+        "--port",
+        str(port),
+        "--key-file",
+        str(key_file),
+        "--lock-id",
+        "locker-7",
+        "--handshake-timeout",
+        "0.5",
+        stdout=asyncio.subprocess.PIPE,
+        env=env,
+    )
+    assert process.stdout is not None
+    async with asyncio.timeout(20):
+        banner = (await process.stdout.readline()).decode()
+    assert f"listening on 127.0.0.1:{port}" in banner, banner
+    try:
+        yield LockSim(process, port), keys
+    finally:
+        if process.returncode is None:
+            process.kill()
+            await process.wait()
+
+
+async def test_hand_over_with_the_emulator_process(lock_sim: tuple[LockSim, LockKeys]) -> None:
+    sim, keys = lock_sim
+    clock = WallClock()
+    async with TcpLocker(
+        "127.0.0.1",
+        sim.port,
+        keys,
+        lock_id="locker-7",
+        clock=clock,
+        timeouts=FAST,
+        backoff=QUICK_RETRY,
+        expiry_s=60,
+    ) as locker:
+        events = locker.subscribe()
+        qr = await locker.issue_code(
+            instruction_id="ins-1", person="lee", purpose="collect", item="key:lee"
+        )
+        assert (await locker.simulate_scan(qr.payload)).kind == "code_accepted"
+        assert (await locker.simulate_close()).person == "lee"
+        assert (await locker.simulate_scan(qr.payload)).reason == "replayed"
+        async with asyncio.timeout(2):
+            kinds = [(await events.get()).kind for _ in range(4)]
+        assert kinds == ["code_accepted", "door_opened", "door_closed", "code_rejected"]
+
+    intruder = LockKeys(link_key=new_key(), codes=keys.codes)
+    with pytest.raises(LockAuthError):
+        await TcpLocker("127.0.0.1", sim.port, intruder, timeouts=FAST).start()
+
+    sim.process.send_signal(signal.SIGTERM)
+    async with asyncio.timeout(5):
+        assert await sim.process.wait() == 0
