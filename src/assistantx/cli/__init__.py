@@ -19,6 +19,7 @@ COMMAND_MODULES = [
     "assistantx.cli.run_cmd",
     "assistantx.cli.lock_cmd",
     "assistantx.cli.map_cmd",
+    "assistantx.cli.llm_cmd",
 ]
 
 

@@ -285,7 +285,7 @@ class OpenAICompatibleModel(ChatModel):
         client = self._client
         if client is None:
             raise RuntimeError(f"{self!r} is not started")
-        headers = {AGENT_HEADER: agent} if agent.isascii() else {}
+        headers = {AGENT_HEADER: agent} if agent.isascii() and agent.isprintable() else {}
         attempts = self.retry.max_retries + 1
         failure: Exception | None = None
         for attempt in range(attempts):

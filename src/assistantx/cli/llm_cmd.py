@@ -1,0 +1,89 @@
+"""``assistantx llm check``: does the configured model server answer, and how?
+
+Sends one small structured request to ``ASSISTANTX_LLM_BASE_URL`` with the configured model
+and key, and reports the answer, the latency, the token usage (reported or estimated) and the
+structured-output mode the server accepted (json_schema, json_object or plain prompting).
+Exit codes: 0 answered correctly, 1 the server or the model failed, 2 no LLM configured.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+from typing import Any
+
+from pydantic import BaseModel, ValidationError
+
+from assistantx.errors import LLMError, ModelBehaviorError
+from assistantx.llm import ChatRequest, Message, OpenAICompatibleModel, structured_call
+from assistantx.settings import Settings
+
+
+class _Echo(BaseModel):
+    word: str
+
+
+_PROMPT = (
+    "AGENT: llm-check\nYou are checking that a connection works. "
+    'Answer with the JSON object {"word": "pong"} and nothing else.'
+)
+
+
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    llm = sub.add_parser("llm", help="inspect the configured language model server")
+    llm_sub = llm.add_subparsers(dest="llm_command", required=True, metavar="ACTION")
+    check = llm_sub.add_parser("check", help="send one structured request and report")
+    check.add_argument("--json", action="store_true", help="print the report as one JSON line")
+    check.set_defaults(func=_check)
+
+
+def _check(args: argparse.Namespace) -> int:
+    try:
+        settings = Settings()
+    except ValidationError as exc:
+        print(f"error: bad ASSISTANTX_* settings: {exc}")
+        return 2
+    if not settings.llm_enabled:
+        print("error: ASSISTANTX_LLM_BASE_URL is not set; the LLM reasoner is off")
+        return 2
+    report = asyncio.run(check(settings))
+    if args.json:
+        print(json.dumps(report))
+    else:
+        for key, value in report.items():
+            print(f"{key}: {value}")
+    return 0 if report["ok"] else 1
+
+
+async def check(settings: Settings) -> dict[str, Any]:
+    """Ask the configured server for one tiny structured answer; a JSON-able report."""
+    model = OpenAICompatibleModel.from_settings(settings)
+    report: dict[str, Any] = {"ok": False, "endpoint": model.endpoint, "model": model.model}
+    request = ChatRequest(
+        messages=(Message(role="system", content=_PROMPT), Message(role="user", content="ping")),
+        agent="llm-check",
+    )
+    async with model:
+        try:
+            result = await structured_call(
+                model, request, _Echo, max_retries=settings.llm_output_retries
+            )
+        except (LLMError, ModelBehaviorError) as exc:
+            report["error"] = str(exc)
+            report["structured_mode"] = model.structured_mode
+            return report
+    last = result.attempts[-1].response
+    report.update(
+        ok=True,
+        answer=result.output.word,
+        served_by=last.model,
+        structured_mode=last.structured_mode,
+        latency_s=round(result.latency_s, 3),
+        prompt_tokens=result.usage.prompt_tokens,
+        completion_tokens=result.usage.completion_tokens,
+        usage_estimated=result.usage.estimated,
+        attempts=len(result.attempts),
+        transport_retries=sum(a.response.retries for a in result.attempts),
+    )
+    return report
