@@ -249,9 +249,20 @@ class SimOffice:
             )
 
     def _handover(self, code: HeldCode, place: str) -> None:
+        """The person comes to the robot and uses every code they hold that works here."""
         code.scheduled = False
         if self.robot.moving or self.robot.place != place or code.done:
             return  # the robot left before the person came
+        mine = [
+            c
+            for c in self.codes
+            if c.person == code.person and c.instruction_id == code.instruction_id and not c.done
+        ]
+        for held in sorted(mine, key=lambda c: c is not code):
+            held.scheduled = False
+            self._use_code(held, place)
+
+    def _use_code(self, code: HeldCode, place: str) -> None:
         now = self.clock.now()
         problem = handover_problem(self.world, code.person, code.purpose, code.item, place)
         if problem is not None:

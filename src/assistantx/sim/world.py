@@ -108,7 +108,7 @@ class World:
         name, args = parse_milestone(milestone)
         match name:
             case "holds":
-                return self.holder.get(args[1]) == args[0]
+                return any(self.holder.get(i) == args[0] for i in self.matching(args[1]))
             case "signed":
                 return (args[0], args[1]) in self.signed
             case "sealed":
@@ -126,6 +126,13 @@ class World:
             case "informed":
                 return self.messages_to.get(args[0], 0) > 0
         raise ActionError(f"unknown milestone {milestone!r}")  # pragma: no cover
+
+    def matching(self, item: str) -> list[str]:
+        """``type:owner`` as is; ``type:*`` = every item of that type the world knows."""
+        item_type, _, owner = item.partition(":")
+        if owner != "*":
+            return [item]
+        return sorted(i for i in self.holder if i.partition(":")[0] == item_type)
 
     def handovers(self) -> list[WorldEvent]:
         return [e for e in self.log if e.kind == "item_moved"]
