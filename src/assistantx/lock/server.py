@@ -121,15 +121,19 @@ class LockServer:
             logger.exception("lock %s: key reload failed; old keys kept", self.controller.lock_id)
 
     async def _accept(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
-        task = asyncio.current_task()
-        assert task is not None
         if len(self._connections) >= self.max_connections:
             logger.warning("lock: connection limit %s reached; refusing", self.max_connections)
             await close_writer(writer)
             return
+        # The connection runs in a task of its own, so stop() cancels it without cancelling
+        # the stream callback's task (which asyncio reports as an unhandled error).
+        task = asyncio.create_task(self._serve_connection(reader, writer))
         self._connections.add(task)
         try:
-            await self._serve_connection(reader, writer)
+            await task
+        except asyncio.CancelledError:
+            if not task.cancelled():
+                raise  # we ourselves are being cancelled, not just the connection
         except Exception:
             # A bug in one connection must never take the emulator down.
             logger.exception("lock: connection handler failed")
