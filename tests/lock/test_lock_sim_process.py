@@ -15,7 +15,7 @@ import pytest
 
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.clock import WallClock
-from assistantx.errors import LockAuthError
+from assistantx.errors import InvalidCodeError, LockAuthError
 from assistantx.lock import LockKeys
 from assistantx.lock.keys import new_key
 
@@ -26,6 +26,7 @@ from .conftest import FAST, QUICK_RETRY
 class LockSim:
     process: asyncio.subprocess.Process
     port: int
+    key_file: Path
 
 
 def _free_port() -> int:
@@ -62,7 +63,7 @@ async def lock_sim(tmp_path: Path) -> AsyncIterator[tuple[LockSim, LockKeys]]:
         banner = (await process.stdout.readline()).decode()
     assert f"listening on 127.0.0.1:{port}" in banner, banner
     try:
-        yield LockSim(process, port), keys
+        yield LockSim(process, port, key_file), keys
     finally:
         if process.returncode is None:
             process.kill()
@@ -100,3 +101,37 @@ async def test_hand_over_with_the_emulator_process(lock_sim: tuple[LockSim, Lock
     sim.process.send_signal(signal.SIGTERM)
     async with asyncio.timeout(5):
         assert await sim.process.wait() == 0
+
+
+async def test_sighup_reloads_rotated_keys(lock_sim: tuple[LockSim, LockKeys]) -> None:
+    sim, keys = lock_sim
+    async with TcpLocker(
+        "127.0.0.1",
+        sim.port,
+        keys,
+        clock=WallClock(),
+        timeouts=FAST,
+        backoff=QUICK_RETRY,
+        render_png=False,
+    ) as locker:
+        old = await locker.issue_code(instruction_id="i", person="lee", purpose="seal", item="x")
+        keys.codes.rotate("k2", new_key())
+        sim.key_file.write_text(keys.to_json())
+        # Before the lock reloads, it cannot read codes under the new key...
+        _, early = locker.issuer.issue(instruction_id="i", person="lee", purpose="seal", item="x")
+        assert (await locker.simulate_scan(early)).reason == "unknown_key"
+        sim.process.send_signal(signal.SIGHUP)
+        async with asyncio.timeout(3):
+            while True:
+                try:
+                    new = await locker.issue_code(
+                        instruction_id="i", person="zhang", purpose="seal", item="y"
+                    )
+                    break
+                except InvalidCodeError:
+                    await asyncio.sleep(0.02)  # the signal has not been handled yet
+        # ...afterwards codes of both keys open the door, on the same connection.
+        assert (await locker.simulate_scan(old.payload)).kind == "code_accepted"
+        await locker.simulate_close()
+        assert (await locker.simulate_scan(new.payload)).kind == "code_accepted"
+        assert locker.client.connections == 1
