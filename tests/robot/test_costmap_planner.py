@@ -145,7 +145,7 @@ def test_start_slightly_inside_the_inscribed_zone_snaps_out() -> None:
     planner = _planner(data)
     path = planner.plan(_centre(14, 5), _centre(5, 5))  # start touches the wall
     assert path.length_m == pytest.approx(9 * RES, abs=1e-9)
-    with pytest.raises(UnreachableError, match="start .* is off the map"):
+    with pytest.raises(UnreachableError, match=r"start .* is off the map"):
         planner.plan((-1.0, 0.0), _centre(5, 5))
 
 

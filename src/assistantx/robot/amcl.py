@@ -256,8 +256,22 @@ def weighted_pose_stats(poses: FloatArray, weights: FloatArray) -> tuple[FloatAr
 # -- the filter ----------------------------------------------------------------------------
 @dataclass
 class _RecoveryState:
+    """Exponential averages of w_avg in the log domain, started from zero and bias-corrected
+    (divided by 1 - (1 - alpha)^t): early on each is the plain mean so far, so w_slow does not
+    stay pinned to the first, poorly converged value for 1 / alpha_slow updates."""
+
     log_w_slow: float | None = None
     log_w_fast: float | None = None
+    count: int = 0
+    _raw_slow: float = -math.inf
+    _raw_fast: float = -math.inf
+
+    def add(self, log_w_avg: float, alpha_slow: float, alpha_fast: float) -> None:
+        self.count += 1
+        self._raw_slow = _smooth_log(self._raw_slow, log_w_avg, alpha_slow)
+        self._raw_fast = _smooth_log(self._raw_fast, log_w_avg, alpha_fast)
+        self.log_w_slow = self._raw_slow - math.log1p(-((1 - alpha_slow) ** self.count))
+        self.log_w_fast = self._raw_fast - math.log1p(-((1 - alpha_fast) ** self.count))
 
 
 @dataclass
@@ -365,11 +379,10 @@ class ParticleFilter:
         return ranges[ok], angles[ok]
 
     def _track_recovery(self, log_w_avg: float) -> None:
-        state, p = self._recovery, self.params
+        p = self.params
         if p.recovery_alpha_slow <= 0 or p.recovery_alpha_fast <= 0:
             return
-        state.log_w_slow = _smooth_log(state.log_w_slow, log_w_avg, p.recovery_alpha_slow)
-        state.log_w_fast = _smooth_log(state.log_w_fast, log_w_avg, p.recovery_alpha_fast)
+        self._recovery.add(log_w_avg, p.recovery_alpha_slow, p.recovery_alpha_fast)
 
     @property
     def random_pose_probability(self) -> float:
@@ -411,8 +424,6 @@ class ParticleFilter:
         return self.particles[low_variance_resample(weights, n, self.rng)]
 
 
-def _smooth_log(previous: float | None, value: float, alpha: float) -> float:
-    """log((1 - alpha) * exp(previous) + alpha * exp(value)); first value taken as is."""
-    if previous is None:
-        return value
+def _smooth_log(previous: float, value: float, alpha: float) -> float:
+    """log((1 - alpha) * exp(previous) + alpha * exp(value))."""
     return float(np.logaddexp(math.log1p(-alpha) + previous, math.log(alpha) + value))
