@@ -123,7 +123,7 @@ class SyncPoller:
         events: list[RoomEvent] = []
         for room_id, room in invited.items():
             for event in room.get("invite_state", {}).get("events", []):
-                if event.get("type") == "m.room.member" and isinstance(event, dict):
+                if isinstance(event, dict) and event.get("type") == "m.room.member":
                     events.append((room_id, event))
         return events
 
