@@ -175,8 +175,15 @@ class NavigatorRobot(RobotBase):
                 raise UnreachableError(f"{location_id!r} is not a place on the map")
         path = self._anchor_path(a, b)
         if path is None:
-            raise UnreachableError(f"no path from {a} to {b}")
+            self._explain_unreachable(a, b)
+        assert path is not None
         return path.length_m
+
+    def _explain_unreachable(self, a: str, b: str) -> None:
+        """Re-plan the one pair to raise UnreachableError with the planner's reason."""
+        start, goal = self.anchors[a], self.anchors[b]
+        self._navigator.planner.plan((start.x, start.y), (goal.x, goal.y))
+        raise UnreachableError(f"no path from {a} to {b}")
 
     def _anchor_path(self, a: str, b: str) -> Path | None:
         if (a, b) not in self._paths:
@@ -206,7 +213,8 @@ class NavigatorRobot(RobotBase):
         if not self.localize and self._place is not None and not self._obstacles:
             cached = self._anchor_path(self._place, location_id)
             if cached is None:
-                raise UnreachableError(f"no path from {self._place} to {location_id}")
+                self._explain_unreachable(self._place, location_id)
+            assert cached is not None
             return cached
         path = nav.plan((anchor.x, anchor.y))
         if not self.localize and self._obstacles and self._crosses_obstacle(path):
