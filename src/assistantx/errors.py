@@ -23,7 +23,8 @@
     ├── ReasonerError               an agent could not produce a valid output
     │   └── ModelBehaviorError      the model kept producing invalid output after retries
     ├── LLMError                    the model server failed (HTTP, timeout) after retries
-    └── PromptError (ValueError)    a prompt template file that is malformed, or a bad render
+    ├── PromptError (ValueError)    a prompt template file that is malformed, or a bad render
+    └── DatasetError                a bad base-instruction or task file (names file and entry)
 
 Low-level errors are translated at the boundary with ``raise ... from exc``. The text of a
 GroundingError is written so it can be fed back to a language model as-is.
@@ -164,3 +165,7 @@ class PromptError(AssistantXError, ValueError):
         self.path = path
         self.problem = problem
         super().__init__(f"{path}: {problem}")
+
+
+class DatasetError(AssistantXError):
+    """A base-instruction or task file that cannot be loaded (names the file and the entry)."""
