@@ -154,6 +154,7 @@ class Assistant:
             )
             stm.embodied.robot_place = self.parts.robot.state().place
         reasoner = self.parts.reasoner_factory()
+        await reasoner.start()  # its stop() runs when the instruction ends, in _run
         runner = InstructionRunner(
             ltm=self.ltm,
             resolver=self.resolver,
@@ -175,6 +176,10 @@ class Assistant:
         finally:
             self.running.pop(stm.instruction_id, None)
             self.finished[stm.instruction_id] = stm
+            try:
+                await runner.reasoner.stop()
+            except Exception:
+                logger.exception("could not stop the reasoner of %s", stm.instruction_id)
         for hook in self._on_end:
             try:
                 await hook(stm)
