@@ -213,6 +213,11 @@ class Assistant:
                 await self.handle_inbound(message)
             except Exception:
                 logger.exception("could not handle inbound message %s", message.event_id)
+            try:
+                # Also after a failure: a message that broke the handler would break it again.
+                await self.parts.messenger.acknowledge(message)
+            except Exception:
+                logger.exception("could not acknowledge inbound message %s", message.event_id)
 
     async def handle_inbound(self, message: InboundMessage) -> str | None:
         """Route a reply to its instruction, or start an instruction from a direct message."""

@@ -94,6 +94,9 @@ class Messenger(ABC):
     async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Disconnect; idempotent."""
 
+    async def acknowledge(self, message: InboundMessage) -> None:  # noqa: B027 - optional hook
+        """The consumer is done with ``message``; a durable messenger stops replaying it."""
+
     async def __aenter__(self) -> Self:
         await self.start()
         return self
