@@ -1,0 +1,218 @@
+"""The dashboard's own routes over a real uvicorn server: the page, the map and its PNG (checked
+against the map file through the documented world→pixel transform), and evaluation results."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import io
+import json
+import os
+import socket
+from collections.abc import AsyncIterator
+from pathlib import Path
+
+import httpx
+import numpy as np
+import pytest
+import uvicorn
+from fastapi import Depends, FastAPI, Header, HTTPException
+from matplotlib.image import imread
+
+from assistantx.adapters.robot.navigator import DEFAULT_MAP
+from assistantx.office import load_office
+from assistantx.robot.anchors import load_anchors
+from assistantx.robot.occupancy_map import load_map
+from assistantx.service.dashboard import dashboard_router, mount_static, occupancy_grey
+
+TOKEN = "test-token-0123456789"
+
+
+def _require_token(authorization: str | None = Header(default=None)) -> None:
+    if authorization != f"Bearer {TOKEN}":
+        raise HTTPException(401, "missing or invalid token")
+
+
+def _free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        port: int = sock.getsockname()[1]
+        return port
+
+
+@contextlib.asynccontextmanager
+async def serve(
+    results_dir: Path, map_yaml: Path = DEFAULT_MAP
+) -> AsyncIterator[httpx.AsyncClient]:
+    app = FastAPI()
+    app.include_router(
+        dashboard_router(
+            load_office(),
+            results_dir,
+            map_yaml=map_yaml,
+            dependencies=[Depends(_require_token)],
+        )
+    )
+    mount_static(app)
+    config = uvicorn.Config(
+        app, host="127.0.0.1", port=_free_port(), lifespan="off", log_level="warning", ws="none"
+    )
+    server = uvicorn.Server(config)
+    task = asyncio.create_task(server.serve())
+    while not server.started:
+        if task.done():
+            task.result()
+        await asyncio.sleep(0.01)
+    try:
+        async with httpx.AsyncClient(
+            base_url=f"http://127.0.0.1:{config.port}",
+            headers={"Authorization": f"Bearer {TOKEN}"},
+        ) as client:
+            yield client
+    finally:
+        server.should_exit = True
+        await task
+
+
+@pytest.fixture
+async def client(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
+    async with serve(tmp_path / "results") as c:
+        yield c
+
+
+async def test_the_page_and_its_scripts_are_public(client: httpx.AsyncClient) -> None:
+    page = await client.get("/", headers={"Authorization": ""})
+    assert page.status_code == 200
+    assert page.headers["content-type"].startswith("text/html")
+    assert "<title>AssistantX dashboard</title>" in page.text
+    assert '<script type="module" src="/static/js/app.js">' in page.text
+    for asset in ("/static/js/app.js", "/static/styles.css", "/static/js/map.js"):
+        response = await client.get(asset, headers={"Authorization": ""})
+        assert response.status_code == 200, asset
+    assert (await client.get("/static/../dashboard.py")).status_code == 404
+
+
+async def test_map_routes_need_the_token(client: httpx.AsyncClient) -> None:
+    for path in ("/v1/map", "/v1/map.png", "/v1/evaluation/latest"):
+        response = await client.get(path, headers={"Authorization": "Bearer wrong"})
+        assert response.status_code == 401, path
+
+
+async def test_map_metadata_describes_the_map_file_and_names_every_place(
+    client: httpx.AsyncClient,
+) -> None:
+    info = (await client.get("/v1/map")).json()
+    grid = load_map(DEFAULT_MAP)
+    assert info["image"] == "/v1/map.png"
+    assert info["resolution"] == grid.resolution
+    assert info["origin"] == [grid.origin_x, grid.origin_y]
+    assert (info["width"], info["height"]) == (grid.width, grid.height)
+    office = load_office()
+    for location in office.locations:
+        anchor = info["anchors"][location.id]
+        assert anchor["name"] == location.name
+        assert anchor["kind"] == location.kind
+    file_anchors = load_anchors(DEFAULT_MAP.with_name("office.anchors.yaml"))
+    assert info["anchors"]["print_room"]["x"] == file_anchors["print_room"].x
+    assert info["anchors"]["print_room"]["yaw"] == file_anchors["print_room"].yaw
+
+
+async def test_map_png_has_one_pixel_per_cell_with_the_top_row_last(
+    client: httpx.AsyncClient,
+) -> None:
+    info = (await client.get("/v1/map")).json()
+    response = await client.get("/v1/map.png")
+    assert response.headers["content-type"] == "image/png"
+    image = imread(io.BytesIO(response.content), format="png")
+    assert image.shape[:2] == (info["height"], info["width"])
+    grey = np.rint(image[:, :, 0] * 255).astype(int)
+    grid = load_map(DEFAULT_MAP)
+    expected = occupancy_grey(grid.data)
+
+    def pixel(x: float, y: float) -> tuple[int, int]:  # the transform the page uses
+        px = (x - info["origin"][0]) / info["resolution"]
+        py = info["height"] - (y - info["origin"][1]) / info["resolution"]
+        return int(px), int(py)
+
+    # Every anchor stands on free floor, as the page draws it.
+    for anchor in info["anchors"].values():
+        px, py = pixel(anchor["x"], anchor["y"])
+        assert grey[py, px] == 254
+    # And a whole-image comparison: the PNG is the grid flipped (row 0 of the grid = bottom).
+    assert np.array_equal(grey, np.flipud(expected))
+    assert (grey == 0).any()  # walls are there, dark
+
+
+async def test_a_missing_map_costs_the_map_view_only(tmp_path: Path) -> None:
+    async with serve(tmp_path, map_yaml=tmp_path / "nowhere.yaml") as client:
+        response = await client.get("/v1/map")
+        assert response.status_code == 503
+        assert "nowhere.yaml" in response.json()["detail"]
+        assert (await client.get("/")).status_code == 200
+
+
+def _write_run(results: Path, name: str, summary: object, mtime: float) -> Path:
+    run = results / name
+    run.mkdir(parents=True)
+    (run / "summary.json").write_text(json.dumps(summary), encoding="utf-8")
+    (run / "summary.md").write_text(f"# {name}\n\n| level | SR |\n|---|---|\n| L1 | 0.9 |\n")
+    (run / "sr_by_level.png").write_bytes(b"\x89PNG fake chart of " + name.encode())
+    os.utime(run / "summary.json", (mtime, mtime))
+    return run
+
+
+async def test_evaluation_latest_is_the_newest_summary(tmp_path: Path) -> None:
+    results = tmp_path / "results"
+    _write_run(results, "2024-old", {"levels": {"L1": {"SR": 0.5}}}, mtime=1_000)
+    _write_run(results, "2024-new", {"levels": {"L1": {"SR": 0.9}}}, mtime=2_000)
+    (results / "not-a-run").mkdir()
+    async with serve(results) as client:
+        latest = (await client.get("/v1/evaluation/latest")).json()
+        assert latest["run"] == "2024-new"
+        assert latest["summary"] == {"levels": {"L1": {"SR": 0.9}}}
+        assert latest["markdown"].startswith("# 2024-new")
+        assert latest["charts"] == ["/v1/evaluation/runs/2024-new/sr_by_level.png"]
+        chart = await client.get(latest["charts"][0])
+        assert chart.status_code == 200
+        assert chart.headers["content-type"] == "image/png"
+        assert chart.content == b"\x89PNG fake chart of 2024-new"
+        old = await client.get("/v1/evaluation/runs/2024-old/summary.json")
+        assert old.json() == {"levels": {"L1": {"SR": 0.5}}}
+
+
+@pytest.mark.parametrize(
+    "path",
+    [
+        "/v1/evaluation/runs/2024-new/..%2F..%2Fsecret.png",
+        "/v1/evaluation/runs/..%2F/summary.json",
+        "/v1/evaluation/runs/2024-new/.hidden.png",
+        "/v1/evaluation/runs/2024-new/notes.txt",
+        "/v1/evaluation/runs/2024-new/missing.png",
+    ],
+)
+async def test_evaluation_files_are_plain_names_inside_a_run(tmp_path: Path, path: str) -> None:
+    results = tmp_path / "results"
+    _write_run(results, "2024-new", {}, mtime=1_000)
+    (tmp_path / "secret.png").write_bytes(b"secret")
+    (results / "2024-new" / "notes.txt").write_text("not served")
+    async with serve(results) as client:
+        response = await client.get(path)
+        assert response.status_code == 404
+        assert b"secret" not in response.content
+
+
+async def test_no_evaluation_yet_says_where_it_looked(client: httpx.AsyncClient) -> None:
+    response = await client.get("/v1/evaluation/latest")
+    assert response.status_code == 404
+    assert "results" in response.json()["detail"]
+
+
+async def test_a_half_written_summary_is_a_clear_503(tmp_path: Path) -> None:
+    results = tmp_path / "results"
+    run = _write_run(results, "run-1", {}, mtime=1_000)
+    (run / "summary.json").write_text('{"levels": ', encoding="utf-8")
+    async with serve(results) as client:
+        response = await client.get("/v1/evaluation/latest")
+        assert response.status_code == 503
+        assert "run-1" in response.json()["detail"]
+        assert "summary.json" in response.json()["detail"]
