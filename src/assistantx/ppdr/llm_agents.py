@@ -6,7 +6,8 @@ the model for its pydantic output with :func:`~assistantx.llm.structured_call`. 
 model names is checked against the office before anything runs:
 
 - Perception's focus (people, places, groups, items) must resolve; it is returned with ids,
-  and the requester is always in focus, because later agents see only the people in focus;
+  and the requester is added to a non-empty focus, because later agents see only the people
+  in focus (an empty focus shows everyone);
 - every action of a Decision must ground (``Resolver.ground``); a ``stop`` must be the last
   action; a QR code that the person already holds unused may not be sent again;
 - Reflection's memory updates must name known people, item types, items and places.
@@ -138,9 +139,10 @@ class SharedModel:
 
 
 def focus_ids(percept: Percept, resolver: Resolver, requester: str) -> Percept:
-    """The percept with every name replaced by its id (the requester added); GroundingError."""
+    """The percept with every name replaced by its id (and the requester added to a non-empty
+    list of people); GroundingError when a name does not resolve."""
     people = [resolver.person(p) for p in percept.people]
-    if requester not in people:
+    if people and requester not in people:  # no people at all: no filter, everyone is shown
         people.insert(0, requester)
     places = [_place_or_facility(resolver, p) for p in percept.places]
     groups = [resolver.group(g) for g in percept.groups]
