@@ -36,6 +36,9 @@ logger = logging.getLogger(__name__)
 
 ReasonerFactory = Callable[[], Reasoner]
 InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
+# Claims a direct message that answers no open question (True: handled, e.g. a survey reply)
+# before it would start a new instruction.
+DirectMessageHook = Callable[[InboundMessage], Awaitable[bool]]
 
 
 @dataclass
@@ -84,6 +87,7 @@ class Assistant:
         self._sinks: list[EventSink] = []
         self._on_start: list[InstructionHook] = []
         self._on_end: list[InstructionHook] = []
+        self._dm_hooks: list[DirectMessageHook] = []
         self._ids = itertools.count(1)
         self._dispatcher: asyncio.Task[None] | None = None
         self.unmatched: list[InboundMessage] = []
@@ -115,6 +119,9 @@ class Assistant:
 
     def on_instruction_end(self, hook: InstructionHook) -> None:
         self._on_end.append(hook)
+
+    def intercept_direct_messages(self, hook: DirectMessageHook) -> None:
+        self._dm_hooks.append(hook)
 
     async def _emit(self, event: TraceEvent) -> None:
         for sink in self._sinks:
@@ -230,6 +237,9 @@ class Assistant:
             except GroundingError:
                 logger.warning("message from unknown sender %s ignored", message.sender)
                 return None
+            for hook in self._dm_hooks:
+                if await hook(message):
+                    return None
             stm = await self.submit(message.sender, message.text)
             return stm.instruction_id
         self.unmatched.append(message)
