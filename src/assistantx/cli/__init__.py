@@ -20,6 +20,8 @@ COMMAND_MODULES = [
     "assistantx.cli.lock_cmd",
     "assistantx.cli.map_cmd",
     "assistantx.cli.llm_cmd",
+    "assistantx.cli.serve_cmd",
+    "assistantx.cli.dataset_cmd",
 ]
 
 

@@ -1,0 +1,291 @@
+"""From a base instruction's spec to what a task needs: goal milestones, roles and visits.
+
+A *role* is a person the task needs and whose availability is unknown until asked: a named
+person (Zhang, who must sign) or anyone able among candidates (an owner of a stapler, a guard
+of the printer). A *visit* is one stop of the robot: drive to a place, hand out QR codes to one
+person, wait there for the hand-over. A plan is the roles to resolve, the cyber actions that
+need no visit (forwarding a file), the visits, and the final deliveries, in that order.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.dataset.spec import PRODUCT_OPERATION, BaseInstruction, Part
+from assistantx.memory.graph import LongTermMemory
+from assistantx.office import Office
+from assistantx.sim.goals import Milestone
+
+RoleKind = Literal["named", "owner", "guard"]
+
+
+@dataclass(frozen=True)
+class Role:
+    """A person slot; ``key`` identifies it so that parts needing the same person share it."""
+
+    key: str
+    kind: RoleKind
+    question: str  # what the assistant asks a candidate
+    group_question: str | None = None  # what it asks a group when every candidate is away
+    person: str | None = None  # named roles
+    item_type: str | None = None  # owner roles
+    facility: str | None = None  # guard roles
+    wants_file: bool = False  # the answer carries the person's file
+
+
+@dataclass(frozen=True)
+class Code:
+    role: str  # role key, or "@requester"
+    item: str  # item id; "{role}" is replaced by the role's person when resolved
+    purpose: str
+
+
+@dataclass(frozen=True)
+class Visit:
+    """Drive to ``place`` (a role's person, the requester or a facility id), hand out codes."""
+
+    place: str
+    person: str  # role key or "@requester"
+    codes: tuple[Code, ...]
+
+
+@dataclass(frozen=True)
+class Forward:
+    source: str  # role key or "@requester"
+    target: str  # role key, person id or "@requester"
+
+
+@dataclass
+class TaskPlan:
+    roles: list[Role] = field(default_factory=list)
+    forwards: list[Forward] = field(default_factory=list)
+    visits: list[Visit] = field(default_factory=list)
+    deliveries: list[tuple[str, Code]] = field(default_factory=list)  # recipient → collect code
+    goal: list[Milestone] = field(default_factory=list)
+    must_be_available: set[str] = field(default_factory=set)  # told without being asked
+
+    def role(self, key: str) -> Role:
+        return next(r for r in self.roles if r.key == key)
+
+    def add_role(self, role: Role) -> None:
+        if all(r.key != role.key for r in self.roles):
+            self.roles.append(role)
+
+    def add_goal(self, milestone: Milestone) -> None:
+        if milestone not in self.goal:
+            self.goal.append(milestone)
+
+
+REQUESTER = "@requester"
+
+
+def facility_for(office: Office, operation: str) -> str:
+    return next(f.id for f in office.facilities if operation in f.operations)
+
+
+def candidates(role: Role, ltm: LongTermMemory, requester: str) -> list[str]:
+    """Who memory says could fill the role (unordered; the policy orders them)."""
+    if role.kind == "named":
+        assert role.person is not None
+        return [role.person]
+    if role.kind == "owner":
+        assert role.item_type is not None
+        found = ltm.owners(role.item_type)
+    else:
+        assert role.facility is not None
+        found = ltm.guards(role.facility)
+    return [p for p in found if p != requester]
+
+
+def able(role: Role, office: Office, person: str) -> bool:
+    """Whether ``person`` could fill the role in truth (used to find group helpers)."""
+    if role.kind == "named":
+        return person == role.person
+    if role.kind == "owner":
+        return any(o.type == role.item_type for o in office.person(person).owns)
+    return person in office.facility(role.facility or "").guards
+
+
+def build_plan(base: BaseInstruction, office: Office) -> TaskPlan:
+    plan = TaskPlan()
+    a = base.requester
+    who = office.person(a).name
+    for part in base.parts:
+        _add_part(plan, part, a, who, office)
+    plan.add_goal({"informed": a})
+    return plan
+
+
+def _named(person: str, question: str, *, wants_file: bool = False) -> Role:
+    return Role(
+        key=f"person:{person}",
+        kind="named",
+        question=question,
+        person=person,
+        wants_file=wants_file,
+    )
+
+
+def _guard(office: Office, operation: str, question: str, group_question: str | None) -> Role:
+    facility = facility_for(office, operation)
+    return Role(
+        key=f"guard:{facility}",
+        kind="guard",
+        question=question,
+        group_question=group_question,
+        facility=facility,
+    )
+
+
+def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> None:
+    match part.kind:
+        case "fetch":
+            item_type = part.item or ""
+            name = office.item_type(item_type).name
+            if part.owner is not None:
+                role = _named(part.owner, f"Could you lend {who} your {name}?")
+                item = f"{item_type}:{part.owner}"
+                plan.add_goal({"holds": [a, item]})
+            else:
+                role = Role(
+                    key=f"owner:{item_type}",
+                    kind="owner",
+                    question=f"Could you lend {who} your {name}?",
+                    group_question=f"Does anyone have a {name} {who} could borrow?",
+                    item_type=item_type,
+                )
+                item = f"{item_type}:{{{role.key}}}"
+                plan.add_goal({"holds": [a, f"{item_type}:*"]})
+            plan.add_role(role)
+            plan.visits.append(Visit(role.key, role.key, (Code(role.key, item, "deposit"),)))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, item, "collect")))
+        case "deliver":
+            to = part.to or ""
+            item = f"{part.item}:{a}"
+            role = _named(
+                to, f"Could you be at your desk? The robot brings you something from {who}."
+            )
+            plan.add_role(role)
+            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, item, "deposit"),)))
+            plan.deliveries.append((role.key, Code(role.key, item, "collect")))
+            plan.add_goal({"holds": [to, item]})
+        case "print":
+            role = _guard(
+                office,
+                "print",
+                f"Could you print {who}'s file at the printer?",
+                f"Could anyone print {who}'s file at the printer?",
+            )
+            plan.add_role(role)
+            product = f"printout:{a}"
+            plan.forwards.append(Forward(REQUESTER, role.key))
+            place = role.facility or ""
+            plan.visits.append(Visit(place, role.key, (Code(role.key, product, "produce"),)))
+            recipient = REQUESTER
+            if part.to is not None:
+                target = _named(
+                    part.to,
+                    f"Could you be at your desk? The robot brings you something from {who}.",
+                )
+                plan.add_role(target)
+                recipient = target.key
+            plan.deliveries.append((recipient, Code(recipient, product, "collect")))
+            plan.add_goal({"printed": f"file:{a}"})
+            plan.add_goal({"holds": [part.to or a, product]})
+        case "copy":
+            role = _guard(
+                office,
+                "copy",
+                f"Could you copy {who}'s document at the copier?",
+                f"Could anyone copy {who}'s document at the copier?",
+            )
+            plan.add_role(role)
+            doc = f"document:{a}"
+            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
+            plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, f"copy:{a}", "collect")))
+            plan.add_goal({"copied": doc})
+            plan.add_goal({"holds": [a, f"copy:{a}"]})
+            plan.add_goal({"holds": [a, doc]})
+        case "sign" | "seal":
+            doc = f"document:{a}"
+            if part.kind == "sign":
+                signer = part.signer or ""
+                role = _named(signer, f"Could you sign {who}'s document?")
+                plan.add_goal({"signed": [doc, signer]})
+            else:
+                role = Role(
+                    key="owner:seal",
+                    kind="owner",
+                    question=f"Could you stamp {who}'s document with your seal?",
+                    group_question=f"Could anyone stamp {who}'s document with the company seal?",
+                    item_type="seal",
+                )
+                plan.add_goal({"sealed": doc})
+            plan.add_role(role)
+            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
+            plan.visits.append(Visit(role.key, role.key, (Code(role.key, doc, part.kind),)))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
+            plan.add_goal({"holds": [a, doc]})
+        case "coffee" | "water" | "snack":
+            wording = {
+                "coffee": f"make a coffee for {who} at the coffee machine",
+                "water": f"get a glass of water for {who} from the water dispenser",
+                "snack": f"buy a snack for {who} at the vending machine",
+            }[part.kind]
+            role = _guard(
+                office,
+                PRODUCT_OPERATION[part.kind],
+                f"Could you {wording}?",
+                f"Could anyone {wording}?",
+            )
+            plan.add_role(role)
+            product = f"{part.kind}:{a}"
+            plan.visits.append(
+                Visit(role.facility or "", role.key, (Code(role.key, product, "produce"),))
+            )
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, product, "collect")))
+            plan.add_goal({"holds": [a, product]})
+        case "heat":
+            lunch = f"lunch:{a}"
+            kept = next(o.at for o in office.person(a).owns if o.type == "lunch")
+            fridge = next(f for f in office.facilities if f.location == kept)
+            fridge_role = Role(
+                key=f"guard:{fridge.id}",
+                kind="guard",
+                question=f"Could you take {who}'s lunch out of the {fridge.name} for the robot?",
+                group_question=f"Could anyone take {who}'s lunch out of the {fridge.name}?",
+                facility=fridge.id,
+            )
+            heat_role = _guard(
+                office,
+                "heat",
+                f"Could you heat {who}'s lunch in the microwave?",
+                f"Could anyone heat {who}'s lunch in the microwave?",
+            )
+            plan.add_role(fridge_role)
+            plan.add_role(heat_role)
+            plan.visits.append(
+                Visit(fridge.id, fridge_role.key, (Code(fridge_role.key, lunch, "deposit"),))
+            )
+            plan.visits.append(
+                Visit(
+                    heat_role.facility or "", heat_role.key, (Code(heat_role.key, lunch, "heat"),)
+                )
+            )
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, lunch, "collect")))
+            plan.add_goal({"heated": lunch})
+            plan.add_goal({"holds": [a, lunch]})
+        case "forward_file":
+            to = part.to or ""
+            plan.forwards.append(Forward(REQUESTER, to))
+            plan.must_be_available.add(to)
+            plan.add_goal({"received": [to, f"file:{a}"]})
+        case "get_file":
+            owner = part.owner or ""
+            role = _named(owner, f"Could you send me your file for {who}?", wants_file=True)
+            plan.add_role(role)
+            plan.forwards.append(Forward(role.key, REQUESTER))
+            plan.add_goal({"received": [a, f"file:{owner}"]})

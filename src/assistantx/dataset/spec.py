@@ -1,0 +1,174 @@
+"""Base instructions: free text plus a structured spec of what the text means.
+
+``dataset/base_instructions.yaml`` lists them; each names its requester, the instruction text
+and its ``parts`` (one part per task kind; several parts make a combination). The goal
+milestones, the roles to fill and the optimal plan are all computed from the parts, never typed
+by hand. A part's fields:
+
+- ``kind``: ``fetch`` (``item``; ``owner`` for a named owner, else anyone's will do),
+  ``deliver`` (the requester's ``item`` ``to`` someone), ``print`` (the requester's file,
+  printed and brought ``to`` someone, default the requester), ``copy`` (the requester's
+  document), ``sign`` (the requester's document, by ``signer``), ``seal`` (the requester's
+  document, stamped by any seal owner), ``coffee`` / ``water`` / ``snack`` (made at the facility
+  and brought to the requester), ``heat`` (the requester's lunch, from the fridge to the
+  microwave), ``forward_file`` (the requester's file ``to`` someone), ``get_file`` (the
+  ``owner``'s file, forwarded to the requester).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Literal
+
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from assistantx.errors import DatasetError
+from assistantx.office import Office
+
+PartKind = Literal[
+    "fetch",
+    "deliver",
+    "print",
+    "copy",
+    "sign",
+    "seal",
+    "coffee",
+    "water",
+    "snack",
+    "heat",
+    "forward_file",
+    "get_file",
+]
+
+# product made at a facility → the facility operation that makes it
+PRODUCT_OPERATION: dict[str, str] = {"coffee": "coffee", "water": "water", "snack": "vend"}
+
+
+class Part(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    kind: PartKind
+    item: str | None = Field(default=None, description="item type (fetch, deliver)")
+    owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
+    to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
+    signer: str | None = Field(default=None, description="who signs (sign)")
+
+
+class BaseInstruction(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    id: str = Field(min_length=1)
+    requester: str
+    text: str = Field(min_length=1)
+    parts: tuple[Part, ...] = Field(min_length=1)
+
+    @property
+    def kinds(self) -> list[str]:
+        return [p.kind for p in self.parts]
+
+
+def load_base_instructions(path: str | Path, office: Office) -> list[BaseInstruction]:
+    """Load and check base instructions against the office; problems raise DatasetError."""
+    file = Path(path)
+    try:
+        raw = yaml.safe_load(file.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise DatasetError(f"{file}: cannot be read: {exc.strerror or exc}") from exc
+    except yaml.YAMLError as exc:
+        raise DatasetError(f"{file}: not valid YAML: {exc}") from exc
+    entries = raw.get("instructions") if isinstance(raw, dict) else None
+    if not isinstance(entries, list):
+        raise DatasetError(f"{file}: expected a mapping with a list under 'instructions'")
+    bases: list[BaseInstruction] = []
+    for n, entry in enumerate(entries):
+        try:
+            base = BaseInstruction.model_validate(entry)
+        except ValidationError as exc:
+            err = exc.errors()[0]
+            where = ".".join(str(p) for p in err["loc"])
+            raise DatasetError(f"{file}: instructions[{n}].{where}: {err['msg']}") from exc
+        try:
+            check_base(base, office)
+        except (KeyError, ValueError) as exc:
+            raise DatasetError(f"{file}: instruction {base.id}: {exc}") from exc
+        bases.append(base)
+    ids = [b.id for b in bases]
+    if len(set(ids)) != len(ids):
+        raise DatasetError(f"{file}: duplicate instruction ids")
+    return bases
+
+
+def _owns(office: Office, person: str, item_type: str) -> bool:
+    return any(o.type == item_type for o in office.person(person).owns)
+
+
+def _facility_for(office: Office, operation: str) -> str:
+    for f in office.facilities:
+        if operation in f.operations:
+            return f.id
+    raise ValueError(f"no facility does {operation!r}")
+
+
+def check_base(base: BaseInstruction, office: Office) -> None:
+    """The spec must make sense in the office (raises KeyError/ValueError saying why)."""
+    a = base.requester
+    office.person(a)
+    for part in base.parts:
+        for person in (part.owner, part.to, part.signer):
+            if person is not None:
+                office.person(person)
+                if person == a:
+                    raise ValueError(f"{part.kind}: the requester cannot be the other party")
+        if part.item is not None:
+            office.item_type(part.item)
+        need: dict[str, tuple[Any, ...]] = {
+            "fetch": ("item",),
+            "deliver": ("item", "to"),
+            "forward_file": ("to",),
+            "get_file": ("owner",),
+            "sign": ("signer",),
+        }
+        for field in need.get(part.kind, ()):
+            if getattr(part, field) is None:
+                raise ValueError(f"{part.kind} needs {field!r}")
+        if part.kind == "fetch":
+            assert part.item is not None
+            if office.item_type(part.item).kind not in ("belonging", "personal"):
+                raise ValueError("fetch is for physical items")
+            if part.owner is None and _owns(office, a, part.item):
+                raise ValueError(f"the requester owns a {part.item} already")
+            if part.owner is not None and not _owns(office, part.owner, part.item):
+                raise ValueError(f"{part.owner} owns no {part.item}")
+            if part.owner is None:
+                able = office.owners_of(part.item)
+                if a in able:
+                    raise ValueError("the requester could do it alone")
+        if part.kind == "deliver":
+            assert part.item is not None
+            if not _owns(office, a, part.item):
+                raise ValueError(f"the requester owns no {part.item}")
+        if part.kind in ("copy", "sign", "seal") and not _owns(office, a, "document"):
+            raise ValueError("the requester has no document")
+        if part.kind in ("print", "forward_file") and not _owns(office, a, "file"):
+            raise ValueError("the requester has no file")
+        if part.kind == "seal" and _owns(office, a, "seal"):
+            raise ValueError("the requester owns a seal already")
+        if part.kind == "get_file":
+            assert part.owner is not None
+            if not _owns(office, part.owner, "file"):
+                raise ValueError(f"{part.owner} has no file")
+        if part.kind == "heat":
+            lunch = [o for o in office.person(a).owns if o.type == "lunch"]
+            if not lunch or lunch[0].at is None:
+                raise ValueError("the requester has no lunch kept in a fridge")
+        operation = {
+            "print": "print",
+            "copy": "copy",
+            "heat": "heat",
+            **PRODUCT_OPERATION,
+        }.get(part.kind)
+        if operation is not None:
+            facility = office.facility(_facility_for(office, operation))
+            if a in facility.guards:
+                raise ValueError(f"the requester guards the {facility.id} already")
