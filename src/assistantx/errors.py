@@ -23,6 +23,7 @@
     ├── ReasonerError               an agent could not produce a valid output
     │   └── ModelBehaviorError      the model kept producing invalid output after retries
     ├── LLMError                    the model server failed (HTTP, timeout) after retries
+    ├── JournalError                the service's journal file is unusable
     ├── PromptError (ValueError)    a prompt template file that is malformed, or a bad render
     └── DatasetError                a bad base-instruction or task file (names file and entry)
 
@@ -156,6 +157,10 @@ class ModelBehaviorError(ReasonerError):
 
 class LLMError(AssistantXError):
     """The model server failed after retries."""
+
+
+class JournalError(AssistantXError):
+    """The journal database is unusable (another schema version, a corrupt file)."""
 
 
 class PromptError(AssistantXError, ValueError):

@@ -68,9 +68,15 @@ class ExecutionContext:
 class Executor:
     def __init__(self, ctx: ExecutionContext) -> None:
         self.ctx = ctx
+        # Results journaled before a restart, by "<instruction>:<key>": a resumed step that
+        # decides the same action at the same position gets the result, not a second effect.
+        self.replay: dict[str, ActionResult] = {}
 
     async def execute(self, stm: ShortTermMemory, action: Action, key: str) -> ActionResult:
         """Run one grounded action; ``key`` is its stable id (instruction:step:position)."""
+        recorded = self.replay.pop(f"{stm.instruction_id}:{key}", None)
+        if recorded is not None and recorded.action.signature() == action.signature():
+            return recorded
         started = self.ctx.clock.now()
         try:
             ok, observation, data = await self._run(stm, action, key)

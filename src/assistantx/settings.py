@@ -21,6 +21,7 @@ class Settings(BaseSettings):
     # -- the office and the data directory ---------------------------------------------
     office: Path = Field(default=DEFAULT_OFFICE, description="office YAML file")
     data_dir: Path = Field(default=Path("data"), description="journal, snapshots, keys")
+    results_dir: Path = Field(default=Path("results"), description="evaluation runs, one folder each")
 
     # -- the reasoner ---------------------------------------------------------------------
     llm_base_url: str | None = Field(default=None, description="OpenAI-compatible /v1 URL")
@@ -41,6 +42,21 @@ class Settings(BaseSettings):
     host: str = "127.0.0.1"
     port: int = 8000
     operator_token: SecretStr | None = None
+    tokens: SecretStr | None = Field(
+        default=None,
+        description='person tokens: JSON {"token": "person"} or CSV "token:person,..."',
+    )
+    max_body_bytes: int = Field(default=64 * 1024, gt=0, description="larger bodies get 413")
+    people: Literal["simulated", "human"] = Field(
+        default="simulated", description="who answers: the SimOffice's people or real people"
+    )
+    sim_unavailable: str = Field(default="", description="CSV of simulated people who are away")
+    sim_reply_delay_s: float = Field(default=20.0, ge=0, description="simulated reply delay")
+    sim_handover_delay_s: float = Field(default=30.0, ge=0, description="time to the locker")
+    speedup: float = Field(default=10.0, gt=0, description="wall-clock speed-up of sim time")
+    reasoner_builder: str | None = Field(
+        default=None, description="'module:builder' of a custom reasoner factory (tests, plugins)"
+    )
 
     # -- the smart lock ------------------------------------------------------------------
     lock_host: str = "127.0.0.1"
@@ -49,6 +65,15 @@ class Settings(BaseSettings):
     lock_shared_key: SecretStr | None = Field(default=None, description="link + code keys")
     lock_key_file: Path | None = Field(default=None, description="JSON keys; wins over the secret")
     lock_code_expiry_min: float = Field(default=15.0, gt=0, description="QR code lifetime")
+
+    # -- the messenger -------------------------------------------------------------------
+    messenger: Literal["builtin", "matrix"] = Field(
+        default="builtin", description="builtin (REST + web page) or matrix (a homeserver)"
+    )
+    matrix_config: Path | None = Field(default=None, description="Matrix YAML (MatrixConfig)")
+    matrix_store: Path | None = Field(
+        default=None, description="Matrix inbound event store (default: DATA_DIR/matrix.sqlite3)"
+    )
 
     @property
     def llm_enabled(self) -> bool:

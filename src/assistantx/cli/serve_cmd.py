@@ -1,0 +1,41 @@
+"""``assistantx serve [--host H] [--port P]``: the REST API, live events and the dashboard."""
+
+from __future__ import annotations
+
+import argparse
+
+import uvicorn
+
+from assistantx.settings import Settings
+
+
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    p = sub.add_parser("serve", help="run the assistant as a service (REST API + dashboard)")
+    p.add_argument("--host", default=None, help="bind address (default: ASSISTANTX_HOST)")
+    p.add_argument("--port", type=int, default=None, help="port (default: ASSISTANTX_PORT)")
+    p.set_defaults(func=_serve)
+
+
+def _serve(args: argparse.Namespace) -> int:
+    from assistantx.service.app import create_app
+    from assistantx.service.runtime import ServiceRuntime
+
+    settings = Settings()
+    host = args.host or settings.host
+    port = args.port if args.port is not None else settings.port
+    shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
+
+    def announce(runtime: ServiceRuntime) -> None:
+        print(f"AssistantX is serving on http://{shown}:{port}/", flush=True)
+        print(f"  API docs: http://{shown}:{port}/docs", flush=True)
+        if runtime.auth.generated_token:
+            print(
+                f"  operator token (also in {runtime.auth.token_file}): "
+                f"{runtime.auth.generated_token}",
+                flush=True,
+            )
+
+    app = create_app(settings, on_ready=announce)
+    config = uvicorn.Config(app, host=host, port=port, log_level="info", access_log=False)
+    uvicorn.Server(config).run()
+    return 0

@@ -1,0 +1,25 @@
+"""The durable journal of the service (SQLite, WAL)."""
+
+from assistantx.errors import JournalError
+from assistantx.journal.store import (
+    FINAL_STATUSES,
+    STATUSES,
+    ChatSummary,
+    EventRecord,
+    InstructionRecord,
+    Journal,
+    MessageRecord,
+    Status,
+)
+
+__all__ = [
+    "FINAL_STATUSES",
+    "STATUSES",
+    "ChatSummary",
+    "EventRecord",
+    "InstructionRecord",
+    "Journal",
+    "JournalError",
+    "MessageRecord",
+    "Status",
+]

@@ -1,0 +1,65 @@
+"""The journal's SQL schema; one version, created on first open."""
+
+from __future__ import annotations
+
+SCHEMA_VERSION = 1
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS meta (
+    key   TEXT PRIMARY KEY,
+    value TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS instructions (
+    seq        INTEGER PRIMARY KEY AUTOINCREMENT,
+    id         TEXT NOT NULL UNIQUE,
+    requester  TEXT NOT NULL,
+    text       TEXT NOT NULL,
+    status     TEXT NOT NULL,
+    outcome    TEXT,
+    summary    TEXT,
+    created_at REAL NOT NULL,
+    updated_at REAL NOT NULL,
+    cancel_requested INTEGER NOT NULL DEFAULT 0,
+    stm        TEXT
+);
+CREATE INDEX IF NOT EXISTS instructions_status ON instructions (status, seq);
+CREATE INDEX IF NOT EXISTS instructions_requester ON instructions (requester, seq);
+CREATE TABLE IF NOT EXISTS events (
+    seq            INTEGER PRIMARY KEY AUTOINCREMENT,
+    instruction_id TEXT NOT NULL,
+    kind           TEXT NOT NULL,
+    time           REAL NOT NULL,
+    step           INTEGER,
+    data           TEXT NOT NULL
+);
+CREATE INDEX IF NOT EXISTS events_instruction ON events (instruction_id, seq);
+CREATE TABLE IF NOT EXISTS messages (
+    seq             INTEGER PRIMARY KEY AUTOINCREMENT,
+    direction       TEXT NOT NULL CHECK (direction IN ('in', 'out')),
+    chat_kind       TEXT NOT NULL,
+    chat_id         TEXT NOT NULL,
+    sender          TEXT NOT NULL,
+    text            TEXT NOT NULL,
+    time            REAL NOT NULL,
+    instruction_id  TEXT,
+    question_id     TEXT,
+    in_reply_to     TEXT,
+    idempotency_key TEXT UNIQUE,
+    event_id        TEXT UNIQUE,
+    status          TEXT NOT NULL,
+    message_id      TEXT,
+    body            TEXT NOT NULL
+);
+CREATE INDEX IF NOT EXISTS messages_chat ON messages (chat_kind, chat_id, seq);
+CREATE TABLE IF NOT EXISTS memory_updates (
+    seq            INTEGER PRIMARY KEY AUTOINCREMENT,
+    time           REAL NOT NULL,
+    instruction_id TEXT,
+    body           TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS state (
+    name       TEXT PRIMARY KEY,
+    updated_at REAL NOT NULL,
+    body       TEXT NOT NULL
+);
+"""

@@ -1,0 +1,133 @@
+"""The ASGI app: ``create_app(settings)``; the lifespan builds the runtime (adapters entered
+through an AsyncExitStack) and tears it down in reverse order. Nothing runs at import time."""
+
+from __future__ import annotations
+
+import logging
+import time
+from collections.abc import AsyncIterator, Callable
+from contextlib import AsyncExitStack, asynccontextmanager
+from pathlib import Path
+
+from fastapi import FastAPI
+from fastapi.staticfiles import StaticFiles
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
+
+from assistantx.service import devices, events, health, instructions, memory, messages, metrics
+from assistantx.service.errors import error_body, install_error_handlers
+from assistantx.service.runtime import ServiceRuntime
+from assistantx.settings import Settings
+
+logger = logging.getLogger(__name__)
+
+STATIC_DIR = Path(__file__).resolve().parents[1] / "static"
+
+
+class BodyLimit:
+    """Answers 413 when a request body exceeds ``max_bytes`` (declared or streamed)."""
+
+    def __init__(self, app: ASGIApp, max_bytes: int) -> None:
+        self.app = app
+        self.max_bytes = max_bytes
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        declared = dict(scope["headers"]).get(b"content-length")
+        if declared is not None and (not declared.isdigit() or int(declared) > self.max_bytes):
+            await _too_large(send, self.max_bytes)
+            return
+        seen = 0
+        started = False
+
+        async def limited_receive() -> Message:
+            nonlocal seen
+            message = await receive()
+            if message["type"] == "http.request":
+                seen += len(message.get("body", b""))
+                if seen > self.max_bytes:
+                    raise _TooLargeError
+            return message
+
+        async def tracking_send(message: Message) -> None:
+            nonlocal started
+            started = started or message["type"] == "http.response.start"
+            await send(message)
+
+        try:
+            await self.app(scope, limited_receive, tracking_send)
+        except _TooLargeError:
+            if not started:
+                await _too_large(send, self.max_bytes)
+
+
+class _TooLargeError(Exception):
+    pass
+
+
+async def _too_large(send: Send, limit: int) -> None:
+    import json
+
+    body = json.dumps(
+        error_body("payload_too_large", f"the request body exceeds {limit} bytes")
+    ).encode()
+    await send(
+        {
+            "type": "http.response.start",
+            "status": 413,
+            "headers": [
+                (b"content-type", b"application/json"),
+                (b"content-length", str(len(body)).encode()),
+            ],
+        }
+    )
+    await send({"type": "http.response.body", "body": body})
+
+
+def create_app(
+    settings: Settings | None = None,
+    *,
+    on_ready: Callable[[ServiceRuntime], None] | None = None,
+) -> FastAPI:
+    """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go)."""
+    settings = settings or Settings()
+    runtime = ServiceRuntime(settings)
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        async with AsyncExitStack() as stack:
+            await runtime.start(stack)
+            logger.info("assistant ready (%s reasoner)", runtime.assistant.parts.reasoner_name)
+            if on_ready is not None:
+                on_ready(runtime)
+            yield
+
+    app = FastAPI(
+        title="AssistantX",
+        version="0.1.0",
+        description="A proactive office assistant: instructions, live traces, memory, chats.",
+        lifespan=lifespan,
+    )
+    app.state.runtime = runtime
+    install_error_handlers(app)
+
+    @app.middleware("http")
+    async def count_requests(request, call_next):  # type: ignore[no-untyped-def]
+        started = time.perf_counter()
+        response = await call_next(request)
+        route = request.scope.get("route")
+        path = getattr(route, "path", "unmatched")
+        if runtime.ready:
+            runtime.metrics.http_requests.inc(
+                method=request.method, route=path, status=str(response.status_code)
+            )
+            runtime.metrics.http_latency.observe(time.perf_counter() - started, route=path)
+        return response
+
+    for module in (health, instructions, events, memory, messages, devices, metrics):
+        app.include_router(module.router)
+    if STATIC_DIR.is_dir():
+        app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
+    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    return app

@@ -1,0 +1,104 @@
+"""The simulated colleagues behind the built-in messenger, and the simulated world's snapshot.
+
+With ``ASSISTANTX_PEOPLE=simulated`` the SimOffice's rule-based people read what the assistant
+sends through the built-in messenger and answer through it, so their replies land in the same
+journaled transcripts a human's would. Their world (who holds what, the codes in their hands,
+where the robot stands) is the demo's physical world; it is snapshotted into the journal with
+every checkpoint, and restored on start-up, so a restart does not undo a hand-over.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import dataclasses
+import logging
+from typing import Any
+
+from assistantx.adapters.messenger.base import InboundMessage, OutboundMessage
+from assistantx.adapters.messenger.builtin import BuiltinMessenger
+from assistantx.errors import LockError
+from assistantx.journal import Journal
+from assistantx.sim.office import HeldCode, SimOffice
+
+logger = logging.getLogger(__name__)
+
+SIM_STATE = "sim_world"
+
+
+class _InboxRelay(asyncio.Queue[InboundMessage]):
+    """Stands in for the simulator's inbox: what a simulated person writes goes to the
+    built-in messenger (journal + assistant), not to a private queue."""
+
+    def __init__(self, messenger: BuiltinMessenger) -> None:
+        super().__init__()
+        self._messenger = messenger
+
+    def put_nowait(self, item: InboundMessage) -> None:
+        self._messenger.accept(item)
+
+
+def connect_colleagues(sim: SimOffice, messenger: BuiltinMessenger) -> None:
+    async def relay(message: OutboundMessage) -> None:
+        await sim.messenger.send(message)
+
+    messenger.relay_to(relay)
+    sim.messenger.connect_inbox(_InboxRelay(messenger))
+
+
+def snapshot(sim: SimOffice) -> dict[str, Any]:
+    world = sim.world
+    return {
+        "holder": dict(world.holder),
+        "signed": sorted(world.signed),
+        "sealed": sorted(world.sealed),
+        "printed": sorted(world.printed),
+        "copied": sorted(world.copied),
+        "heated": sorted(world.heated),
+        "made": sorted(world.made),
+        "received": sorted(world.received),
+        "messages_to": dict(world.messages_to),
+        "codes": [dataclasses.asdict(c) for c in sim.codes],
+        "told": sorted([i or "", p] for i, p in sim.told),
+        "robot": {"place": sim.robot.place, "odometer_m": sim.robot.odometer_m},
+    }
+
+
+def restore(sim: SimOffice, state: dict[str, Any]) -> None:
+    """Put the simulated world back as it was journaled; re-arm the codes people hold."""
+    world = sim.world
+    world.holder = {str(k): str(v) for k, v in state["holder"].items()}
+    world.signed = {(a, b) for a, b in state["signed"]}
+    world.sealed = {(a, b) for a, b in state["sealed"]}
+    world.printed = set(state["printed"])
+    world.copied = set(state["copied"])
+    world.heated = set(state["heated"])
+    world.made = set(state["made"])
+    world.received = {(a, b) for a, b in state["received"]}
+    world.messages_to = {str(k): int(v) for k, v in state["messages_to"].items()}
+    sim.told = {(i or None, p) for i, p in state["told"]}
+    sim.codes = [HeldCode(**{**c, "scheduled": False}) for c in state["codes"]]
+    sim.robot.place = state["robot"]["place"] or sim.office.robot.home
+    sim.robot.odometer_m = float(state["robot"]["odometer_m"])
+    for code in sim.codes:
+        if code.done:
+            continue
+        try:
+            sim.locker.controller.provision(code.payload)
+        except LockError as exc:  # expired meanwhile: the person keeps a dead code
+            logger.info("held code of %s not re-armed: %s", code.person, exc)
+    sim.on_robot_arrived()  # people with a code for this place come (again)
+
+
+def reask_unanswered(sim: SimOffice, journal: Journal, instruction_id: str) -> int:
+    """Questions sent before a restart whose answer never arrived: the simulated person reads
+    them again (their pending reply was lost with the process). Returns how many."""
+    records = journal.messages_of(instruction_id)
+    answered = {r.in_reply_to for r in records if r.direction == "in" and r.in_reply_to}
+    count = 0
+    for r in records:
+        if r.direction == "out" and r.status == "sent" and r.question_id not in answered:
+            if r.question_id is None:
+                continue
+            sim.on_message(OutboundMessage.model_validate(r.body))
+            count += 1
+    return count

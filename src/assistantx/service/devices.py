@@ -1,0 +1,22 @@
+"""The robot's and the locker's state."""
+
+from __future__ import annotations
+
+from fastapi import APIRouter
+
+from assistantx.adapters.lock.base import LockStatus
+from assistantx.adapters.robot.base import RobotState
+from assistantx.service.deps import Caller, Runtime
+
+router = APIRouter(prefix="/v1", tags=["devices"])
+
+
+@router.get("/robot", response_model=RobotState)
+async def robot(runtime: Runtime, caller: Caller) -> RobotState:
+    """Pose, place (None while driving), planned path; plus who holds the robot."""
+    return runtime.sim.robot.state().model_copy(update={"goal": runtime.assistant.lease.holder})
+
+
+@router.get("/locker", response_model=LockStatus)
+async def locker(runtime: Runtime, caller: Caller) -> LockStatus:
+    return await runtime.locker.status()

@@ -1,0 +1,142 @@
+"""What the service journals as instructions run, and how it resumes them after a restart.
+
+Every trace event is journaled; with ``step_started`` and ``action_result`` the instruction's
+short-term memory is checkpointed together with the simulated world, in one transaction. On
+start-up an instruction that was running resumes from its checkpoint: the step that was cut
+short runs again under the same step index, so its actions carry the same idempotency keys;
+actions whose results were journaled are replayed (not executed again), and sends whose key is
+journaled as sent are answered from the journal by the built-in messenger. Questions asked
+before the restart are registered again, and replies that arrived meanwhile are delivered.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable
+from typing import Any
+
+from assistantx.adapters.messenger.base import InboundMessage
+from assistantx.assistant import Assistant
+from assistantx.journal import EventRecord, InstructionRecord, Journal, Status
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.ppdr.events import TraceEvent
+from assistantx.service.hub import EventHub
+from assistantx.service.telemetry import ServiceMetrics
+from assistantx.trace import ActionResult
+
+logger = logging.getLogger(__name__)
+
+LTM_STATE = "long_term_memory"
+
+_OUTCOME_STATUS: dict[str, Status] = {
+    "done": "done",
+    "failed": "failed",
+    "unachievable": "unachievable",
+}
+
+
+class Durability:
+    def __init__(
+        self,
+        journal: Journal,
+        assistant: Assistant,
+        hub: EventHub,
+        metrics: ServiceMetrics,
+        world_state: Callable[[], dict[str, dict[str, Any]]],
+    ) -> None:
+        self.journal = journal
+        self.assistant = assistant
+        self.hub = hub
+        self.metrics = metrics
+        self._world_state = world_state
+        self.cancelled: set[str] = set()
+        self.frozen = False  # set on shutdown: what happens after is not journaled
+
+    def attach(self) -> None:
+        self.assistant.subscribe(self.on_event)
+        self.assistant.on_instruction_start(self.on_start)
+        self.assistant.on_instruction_end(self.on_end)
+
+    # -- recording -----------------------------------------------------------------------
+    async def on_start(self, stm: ShortTermMemory) -> None:
+        if not self.frozen:
+            self.journal.checkpoint(stm, "running")
+
+    async def on_event(self, event: TraceEvent) -> None:
+        if self.frozen:
+            return
+        stm = self.assistant.get(event.instruction_id)
+        status: Status | None = None
+        checkpoint: ShortTermMemory | None = None
+        states: dict[str, dict[str, Any]] = {}
+        match event.kind:
+            case "step_started" | "action_result":
+                checkpoint, status = stm, "running"
+                states = self._world_state()
+                if event.kind == "step_started" and stm is not None and len(stm.trace.steps) > 1:
+                    self.metrics.step_completed(stm.trace.steps[-2])
+                if event.kind == "action_result":
+                    self._count_failure(event.data.get("result", {}))
+            case "queued":
+                status = "queued"
+            case "memory_updated":
+                states = {LTM_STATE: self.assistant.ltm.snapshot()}
+                for update in event.data.get("updates", []):
+                    self.journal.record_memory_update(event.time, event.instruction_id, update)
+            case "instruction_ended":
+                checkpoint, status = stm, self._final_status(event.instruction_id, stm)
+                states = {**self._world_state(), LTM_STATE: self.assistant.ltm.snapshot()}
+                if stm is not None and stm.trace.steps:
+                    self.metrics.step_completed(stm.trace.steps[-1])
+            case _:
+                pass
+        seq = self.journal.record(event, stm=checkpoint, status=status, states=states)
+        self.hub.publish(EventRecord(seq=seq, event=event))
+
+    async def on_end(self, stm: ShortTermMemory) -> None:
+        if not self.frozen:
+            self.journal.checkpoint(stm, self._final_status(stm.instruction_id, stm))
+
+    def _final_status(self, instruction_id: str, stm: ShortTermMemory | None) -> Status:
+        if instruction_id in self.cancelled:
+            return "cancelled"
+        outcome = stm.trace.outcome if stm is not None else None
+        return _OUTCOME_STATUS.get(outcome or "failed", "failed")
+
+    def _count_failure(self, result: dict[str, Any]) -> None:
+        error = result.get("error")
+        if error and not result.get("refused"):
+            self.metrics.action_failed(str(error))
+
+    # -- resuming ------------------------------------------------------------------------
+    def prepare_resume(self, record: InstructionRecord) -> ShortTermMemory:
+        """The checkpointed memory with the cut-short step removed, its results set to replay."""
+        assert record.stm is not None
+        stm = record.stm.model_copy(deep=True)
+        steps = stm.trace.steps
+        while steps and steps[-1].ended_at is None:
+            cut = steps.pop()
+            for n, result in enumerate(cut.results):
+                if not result.refused:
+                    self._replay(stm.instruction_id, f"s{cut.index}a{n}", result)
+        replies = self.assistant.replies
+        asked: dict[str, float] = {}
+        for turn in stm.dialogue:
+            if turn.direction == "out" and turn.question_id:
+                replies.ask(turn.question_id, stm.instruction_id, turn.chat, turn.time)
+                asked[turn.question_id] = turn.time
+        self._redeliver(stm, asked)
+        return stm
+
+    def _replay(self, instruction_id: str, key: str, result: ActionResult) -> None:
+        self.assistant.executor.replay[f"{instruction_id}:{key}"] = result
+
+    def _redeliver(self, stm: ShortTermMemory, asked: dict[str, float]) -> None:
+        """Replies journaled before the restart that never reached the instruction's memory."""
+        seen = {t.event_id for t in stm.dialogue if t.event_id}
+        for record in self.journal.messages_of(stm.instruction_id):
+            if record.direction != "in" or record.in_reply_to not in asked:
+                continue
+            message = InboundMessage.model_validate(record.body)
+            if message.event_id not in seen:
+                self.assistant.replies.deliver(stm.instruction_id, message)

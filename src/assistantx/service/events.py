@@ -1,0 +1,129 @@
+"""Server-Sent Events: one instruction's trace events, or everyone's.
+
+A stream first replays the journaled events after ``Last-Event-ID`` (or ``?after=``), then
+follows live ones; the SSE ``id`` is the journal sequence number, so a reconnecting client
+misses nothing and sees nothing twice. One instruction's stream ends after its
+``instruction_ended`` event.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from collections.abc import AsyncIterator
+from typing import Annotated
+
+from fastapi import APIRouter, Header, Query
+from fastapi.responses import StreamingResponse
+
+from assistantx.journal import EventRecord
+from assistantx.service.auth import Principal
+from assistantx.service.deps import Caller, Runtime
+from assistantx.service.errors import ForbiddenError, UnprocessableError
+from assistantx.service.runtime import ServiceRuntime
+
+router = APIRouter(prefix="/v1", tags=["events"])
+
+KEEPALIVE_S = 15.0
+FINAL_STATUSES = {"done", "failed", "unachievable", "cancelled"}
+
+
+def _start(last_event_id: str | None, after: int | None) -> int:
+    if after is not None:
+        return after
+    if last_event_id is None:
+        return 0
+    try:
+        return max(0, int(last_event_id))
+    except ValueError as exc:
+        raise UnprocessableError(f"Last-Event-ID {last_event_id!r} is not an event id") from exc
+
+
+def _format(record: EventRecord) -> str:
+    payload = record.event.model_dump(mode="json")
+    return f"id: {record.seq}\nevent: {record.event.kind}\ndata: {json.dumps(payload)}\n\n"
+
+
+async def _stream(
+    runtime: ServiceRuntime, caller: Principal, instruction_id: str | None, after: int
+) -> AsyncIterator[str]:
+    listener = runtime.hub.subscribe(instruction_id)
+    owners: dict[str, str | None] = {}
+
+    def visible(record: EventRecord) -> bool:
+        if caller.is_operator:
+            return True
+        iid = record.event.instruction_id
+        if iid not in owners:
+            found = runtime.journal.instruction(iid)
+            owners[iid] = found.requester if found else None
+        return owners[iid] == caller.person
+
+    try:
+        last = after
+        while True:  # replay from the journal in pages
+            page = runtime.journal.events(instruction_id, after_seq=last, limit=500)
+            for record in page:
+                last = record.seq
+                if visible(record):
+                    yield _format(record)
+                if instruction_id and record.event.kind == "instruction_ended":
+                    return
+            if len(page) < 500:
+                break
+        if instruction_id:
+            found = runtime.journal.instruction(instruction_id)
+            if found is not None and found.status in FINAL_STATUSES:
+                return
+        while True:
+            try:
+                live = await asyncio.wait_for(listener.queue.get(), KEEPALIVE_S)
+            except TimeoutError:
+                yield ": keepalive\n\n"
+                continue
+            if live is None:
+                return  # dropped (slow) or shutting down: the client reconnects
+            if live.seq <= last:
+                continue
+            last = live.seq
+            if visible(live):
+                yield _format(live)
+            if instruction_id and live.event.kind == "instruction_ended":
+                return
+    finally:
+        runtime.hub.unsubscribe(listener)
+
+
+def _response(body: AsyncIterator[str]) -> StreamingResponse:
+    return StreamingResponse(
+        body,
+        media_type="text/event-stream",
+        headers={"Cache-Control": "no-cache", "X-Accel-Buffering": "no"},
+    )
+
+
+@router.get("/instructions/{instruction_id}/events")
+async def instruction_events(
+    instruction_id: str,
+    runtime: Runtime,
+    caller: Caller,
+    last_event_id: Annotated[str | None, Header(max_length=20)] = None,
+    after: Annotated[int | None, Query(ge=0)] = None,
+) -> StreamingResponse:
+    record = runtime.instruction(instruction_id)
+    if not caller.may_act_as(record.requester):
+        raise ForbiddenError("this instruction belongs to someone else")
+    start = _start(last_event_id, after)
+    return _response(_stream(runtime, caller, instruction_id, start))
+
+
+@router.get("/events")
+async def all_events(
+    runtime: Runtime,
+    caller: Caller,
+    last_event_id: Annotated[str | None, Header(max_length=20)] = None,
+    after: Annotated[int | None, Query(ge=0)] = None,
+) -> StreamingResponse:
+    """Every instruction's events (a person's token: only their own instructions)."""
+    start = _start(last_event_id, after)
+    return _response(_stream(runtime, caller, None, start))

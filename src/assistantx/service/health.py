@@ -1,0 +1,27 @@
+"""/healthz (the process answers) and /readyz (the assistant runs); no token needed."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import APIRouter, Request
+from fastapi.responses import JSONResponse
+
+router = APIRouter(tags=["health"])
+
+
+@router.get("/healthz")
+async def healthz() -> dict[str, str]:
+    return {"status": "ok"}
+
+
+@router.get("/readyz", response_model=None)
+async def readyz(request: Request) -> JSONResponse | dict[str, Any]:
+    runtime = getattr(request.app.state, "runtime", None)
+    if runtime is None or not runtime.ready:
+        return JSONResponse({"status": "starting"}, status_code=503)
+    return {
+        "status": "ready",
+        "running": len(runtime.assistant.running),
+        "resumed": runtime.resumed,
+    }

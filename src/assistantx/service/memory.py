@@ -1,0 +1,99 @@
+"""/v1/memory and /v1/people: the belief graph as JSON, and the operator's corrections."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import APIRouter
+
+from assistantx.memory.graph import LongTermMemory, lid, pid
+from assistantx.memory.updates import AvailabilityUpdate, OwnershipUpdate
+from assistantx.service.deps import Caller, Runtime
+from assistantx.service.durability import LTM_STATE
+from assistantx.service.runtime import ServiceRuntime
+from assistantx.service.schemas import PersonOut, PersonPatch
+
+router = APIRouter(prefix="/v1", tags=["memory"])
+
+
+@router.get("/memory")
+async def get_memory(runtime: Runtime, caller: Caller) -> dict[str, Any]:
+    """The long-term memory graph (node-link JSON) and the updates applied to it."""
+    return runtime.assistant.ltm.snapshot()
+
+
+def _person(ltm: LongTermMemory, person_id: str) -> PersonOut:
+    node = ltm.graph.nodes[pid(person_id)]
+    return PersonOut(
+        id=person_id,
+        name=str(node.get("name", person_id)),
+        available=ltm.availability(person_id),
+        observed_at=ltm.availability_observed_at(person_id),
+        location=ltm.location_of(person_id),
+        items=ltm.items_of(person_id),
+        groups=ltm.groups_of(person_id),
+    )
+
+
+@router.get("/people/{person}", response_model=PersonOut)
+async def get_person(person: str, runtime: Runtime, caller: Caller) -> PersonOut:
+    return _person(runtime.assistant.ltm, runtime.resolver.person(person))
+
+
+@router.patch("/people/{person}", response_model=PersonOut)
+async def patch_person(
+    person: str, body: PersonPatch, runtime: Runtime, caller: Caller
+) -> PersonOut:
+    """Set availability (true/false/null = unknown) and/or desk location. Operator only."""
+    caller.require_operator()
+    person_id = runtime.resolver.person(person)
+    ltm = runtime.assistant.ltm
+    location = runtime.resolver.place(body.location) if body.location else None
+    if "available" in body.model_fields_set:
+        update = AvailabilityUpdate(
+            person=person_id, available=body.available, evidence=body.evidence
+        )
+        _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
+    if location is not None:
+        _move(ltm, person_id, location)
+    runtime.journal.put_state(LTM_STATE, ltm.snapshot())
+    return _person(ltm, person_id)
+
+
+@router.put("/people/{person}/items/{item_type}", response_model=PersonOut)
+async def put_item(person: str, item_type: str, runtime: Runtime, caller: Caller) -> PersonOut:
+    """Memory now believes ``person`` owns an item of ``item_type``. Operator only."""
+    return _ownership(person, item_type, True, runtime, caller)
+
+
+@router.delete("/people/{person}/items/{item_type}", response_model=PersonOut)
+async def delete_item(person: str, item_type: str, runtime: Runtime, caller: Caller) -> PersonOut:
+    """Memory now believes ``person`` owns no item of ``item_type``. Operator only."""
+    return _ownership(person, item_type, False, runtime, caller)
+
+
+def _ownership(
+    person: str, item_type: str, owns: bool, runtime: ServiceRuntime, caller: Caller
+) -> PersonOut:
+    caller.require_operator()
+    person_id = runtime.resolver.person(person)
+    type_id = runtime.resolver.item_type(item_type)
+    ltm = runtime.assistant.ltm
+    update = OwnershipUpdate(
+        person=person_id, item_type=type_id, owns=owns, evidence="set by the operator"
+    )
+    _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
+    runtime.journal.put_state(LTM_STATE, ltm.snapshot())
+    return _person(ltm, person_id)
+
+
+def _record(runtime: ServiceRuntime, applied: dict[str, Any]) -> None:
+    runtime.journal.record_memory_update(runtime.clock.now(), None, applied)
+
+
+def _move(ltm: LongTermMemory, person_id: str, location_id: str) -> None:
+    """Rewire the person's one ``at`` edge to the new location."""
+    node = pid(person_id)
+    for other in [n for n in ltm.graph.neighbors(node) if ltm.graph.edges[node, n]["rel"] == "at"]:
+        ltm.graph.remove_edge(node, other)
+    ltm.graph.add_edge(node, lid(location_id), rel="at")

@@ -1,0 +1,217 @@
+"""The service's composition: office, journal, adapters, the Assistant, auth and metrics.
+
+``ServiceRuntime.start`` builds everything from the settings and enters each adapter through
+the caller's ``AsyncExitStack`` (the app lifespan), so they stop in reverse order. Embedded
+defaults: the default office, the simulated robot base, the in-process lock, the built-in
+messenger, simulated colleagues, the embedded reasoner, all on a sped-up WallClock.
+"""
+
+from __future__ import annotations
+
+import importlib
+import logging
+import os
+import secrets
+from contextlib import AsyncExitStack
+from pathlib import Path
+from typing import Any
+
+from assistantx.adapters.lock.local import LocalLocker
+from assistantx.adapters.messenger.builtin import BuiltinMessenger
+from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
+from assistantx.clock import WallClock
+from assistantx.journal import InstructionRecord, Journal
+from assistantx.lock.controller import LockController
+from assistantx.lock.keys import LockKeys
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.resolve import Resolver
+from assistantx.office import Office, load_office
+from assistantx.ppdr.loop import LoopLimits
+from assistantx.reasoners import reasoner_factory
+from assistantx.service import colleagues
+from assistantx.service.auth import AuthSetup, build_authority
+from assistantx.service.durability import LTM_STATE, Durability
+from assistantx.service.errors import NotFoundError
+from assistantx.service.hub import EventHub
+from assistantx.service.telemetry import ServiceMetrics
+from assistantx.settings import Settings
+from assistantx.sim.office import SimOffice
+
+logger = logging.getLogger(__name__)
+
+JOURNAL_FILE = "journal.sqlite3"
+LOCK_KEYS_FILE = "lock-keys.json"
+
+
+def new_instruction_id() -> str:
+    return f"ins-{secrets.token_hex(6)}"
+
+
+class ServiceRuntime:
+    """Everything a request handler needs, built once per app."""
+
+    office: Office
+    resolver: Resolver
+    journal: Journal
+    clock: WallClock
+    sim: SimOffice
+    locker: LocalLocker
+    messenger: BuiltinMessenger
+    assistant: Assistant
+    durability: Durability
+    auth: AuthSetup
+    metrics: ServiceMetrics
+
+    def __init__(self, settings: Settings) -> None:
+        self.settings = settings
+        self.hub = EventHub()
+        self.ready = False
+        self.resumed: list[str] = []
+
+    # -- start-up ------------------------------------------------------------------------
+    async def start(self, stack: AsyncExitStack) -> None:
+        s = self.settings
+        self.office = load_office(s.office)
+        self.resolver = Resolver(self.office)
+        data_dir = _data_dir(s.data_dir)
+        self.journal = Journal.open(data_dir / JOURNAL_FILE)
+        stack.callback(self.journal.close)
+        self.metrics = ServiceMetrics(self.journal)
+        self.auth = build_authority(
+            s.operator_token.get_secret_value() if s.operator_token else None,
+            s.tokens.get_secret_value() if s.tokens else None,
+            self.resolver,
+            data_dir,
+        )
+        self.clock = WallClock(s.speedup)
+        keys = _lock_keys(s, data_dir)
+        controller = LockController(s.lock_id, keys.codes, self.clock)
+        self.locker = LocalLocker(
+            controller, clock=self.clock, expiry_s=s.lock_code_expiry_min * 60
+        )
+        unavailable = [self.resolver.person(p) for p in s.sim_unavailable.split(",") if p.strip()]
+        self.sim = SimOffice(
+            self.office,
+            unavailable=unavailable,
+            clock=self.clock,
+            reply_delay_s=s.sim_reply_delay_s,
+            handover_delay_s=s.sim_handover_delay_s,
+            locker=self.locker,
+        )
+        self.messenger = BuiltinMessenger(self.journal, self.clock)
+        self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
+        if s.people == "simulated":
+            colleagues.connect_colleagues(self.sim, self.messenger)
+        snapshot = self.journal.state(LTM_STATE)
+        ltm = LongTermMemory.restore(self.office, snapshot) if snapshot else None
+        factory, name = self._reasoner()
+        self.assistant = Assistant(
+            AssistantParts(
+                office=self.office,
+                messenger=self.messenger,
+                robot=self.sim.robot,
+                locker=self.locker,
+                clock=self.clock,
+                reasoner_factory=factory,
+                reasoner_name=name,
+                ltm=ltm,
+                limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
+            )
+        )
+        self.durability = Durability(
+            self.journal, self.assistant, self.hub, self.metrics, self._world_state
+        )
+        self.durability.attach()
+        self.assistant.on_instruction_start(self._register_with_sim)
+
+        await stack.enter_async_context(self.locker)
+        await stack.enter_async_context(self.messenger)
+        await stack.enter_async_context(self.sim.robot)
+        world = self.journal.state(colleagues.SIM_STATE)
+        if world is not None:
+            colleagues.restore(self.sim, world)
+        await self.assistant.start()
+        stack.push_async_callback(self._stop)
+        await self._resume()
+        self.ready = True
+
+    def _reasoner(self) -> tuple[ReasonerFactory, str]:
+        s = self.settings
+        if s.reasoner_builder:
+            module_name, _, attr = s.reasoner_builder.partition(":")
+            builder = getattr(importlib.import_module(module_name), attr)
+            factory: ReasonerFactory = builder(self.office, s)
+            return factory, attr
+        kind = s.effective_reasoner
+        return reasoner_factory(kind, self.office, s), kind
+
+    def _world_state(self) -> dict[str, dict[str, Any]]:
+        return {colleagues.SIM_STATE: colleagues.snapshot(self.sim)}
+
+    async def _register_with_sim(self, stm: Any) -> None:
+        self.sim.register_instruction(stm.instruction_id, stm.requester)
+
+    async def _resume(self) -> None:
+        for record in self.journal.unfinished():
+            if record.stm is None:  # journaled, acknowledged, never started
+                await self.assistant.submit(record.requester, record.text, instruction_id=record.id)
+            else:
+                stm = self.durability.prepare_resume(record)
+                await self.assistant.submit(record.requester, record.text, resume=stm)
+                if self.settings.people == "simulated":
+                    colleagues.reask_unanswered(self.sim, self.journal, record.id)
+            self.resumed.append(record.id)
+            logger.info("resumed instruction %s", record.id)
+            if record.cancel_requested:
+                self.cancel(record.id)
+
+    async def _stop(self) -> None:
+        """Shut down without ending running instructions: they resume on the next start."""
+        self.ready = False
+        self.durability.frozen = True
+        self.messenger.closed = True
+        self.hub.close()
+        await self.assistant.stop()
+
+    # -- operations ----------------------------------------------------------------------
+    async def submit(self, requester: str, text: str) -> InstructionRecord:
+        """Journal an instruction, then start it (the caller acknowledges after this)."""
+        person = self.resolver.person(requester)
+        instruction_id = new_instruction_id()
+        record = self.journal.create_instruction(instruction_id, person, text, self.clock.now())
+        await self.assistant.submit(person, text, instruction_id=instruction_id)
+        return record
+
+    def instruction(self, instruction_id: str) -> InstructionRecord:
+        record = self.journal.instruction(instruction_id)
+        if record is None:
+            raise NotFoundError(f"no instruction {instruction_id!r}")
+        return record
+
+    def cancel(self, instruction_id: str) -> bool:
+        """Ask a running instruction to stop; False when it had already ended."""
+        self.journal.request_cancel(instruction_id)
+        if instruction_id not in self.assistant.running:
+            return False
+        self.durability.cancelled.add(instruction_id)
+        return self.assistant.cancel(instruction_id)
+
+
+def _data_dir(path: Path) -> Path:
+    path.mkdir(parents=True, exist_ok=True)
+    os.chmod(path, 0o700)
+    return path
+
+
+def _lock_keys(settings: Settings, data_dir: Path) -> LockKeys:
+    """The lock's keys: the shared secret, else the key file, else one kept in the data dir."""
+    if settings.lock_shared_key is not None:
+        return LockKeys.from_secret(settings.lock_shared_key.get_secret_value())
+    path = settings.lock_key_file or data_dir / LOCK_KEYS_FILE
+    if path.exists():
+        return LockKeys.from_file(path)
+    keys = LockKeys.generate()
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    with os.fdopen(fd, "w", encoding="utf-8") as f:
+        f.write(keys.to_json())
+    return keys
