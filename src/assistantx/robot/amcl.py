@@ -10,7 +10,8 @@ One filter update, run when the odometry has moved ``update_min_d`` metres or tu
    ``log(z_hit * exp(-d^2 / (2 sigma_hit^2)) + z_rand / laser_max_range)``; a beam then costs
    one table lookup per particle. Beams are combined as a product (a sum of logs), the
    textbook model (Probabilistic Robotics table 6.3); up to ``max_beams`` evenly spaced beams are
-   used and max-range readings are skipped, as in nav2.
+   used and max-range readings are skipped, as in nav2. ``beam_product_exponent`` (not a nav2
+   name; default 1) tempers the product for global localization and recovery.
 3. Every ``resample_interval`` updates, KLD-sampling with augmented-MCL recovery: a
    low-variance (systematic) resample draws ``max_particles`` candidates in O(N log N); with
    probability ``max(0, 1 - w_fast / w_slow)`` a candidate is replaced by a uniform random pose
@@ -74,6 +75,10 @@ class AmclParams:
     update_min_d: float = 0.25
     z_hit: float = 0.5
     z_rand: float = 0.5
+    # Not in nav2: the exponent on the beam product (1 = the textbook product). Beams of one
+    # scan are not independent, so the product is overconfident; a smaller value keeps more
+    # hypotheses alive while the cloud is spread (global localization, recovery).
+    beam_product_exponent: float = 1.0
     # amcl's KLD histogram (pf_kdtree) bin sizes.
     bin_size_xy: float = 0.5
     bin_size_yaw: float = math.radians(10.0)
@@ -364,7 +369,7 @@ class ParticleFilter:
         # Recovery statistic: weighted mean of the per-beam geometric-mean likelihood.
         log_w_avg = float(logsumexp(prior + log_likelihood / ranges.size))
         self._track_recovery(log_w_avg)
-        posterior = prior + log_likelihood
+        posterior = prior + self.params.beam_product_exponent * log_likelihood
         self.log_weights = posterior - logsumexp(posterior)
 
     def usable_beams(self, scan: LaserScan) -> tuple[FloatArray, FloatArray]:
