@@ -1,0 +1,295 @@
+"""The office's vocabulary, scanned out of free text: people, item types and facilities.
+
+Every name comes from the office file (names, aliases, synonyms, plurals), so another office
+works unchanged; only the English function words and the task verbs are fixed here. Matching
+is longest-phrase-first, then single name words; a word that names several people is kept as
+an ambiguous mention, never resolved by guessing. Small typos ("stapeler", "Zhnag") are
+corrected against the same vocabulary, but only for words that are not ordinary English.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.memory.names import TITLES, normalize
+from assistantx.office import Office
+
+MentionKind = Literal["person", "item", "facility", "self", "pronoun", "cue", "word"]
+
+# Task cues: the English verbs (and nouns) that say what to do. Not office-specific.
+CUES: dict[str, frozenset[str]] = {
+    "print": frozenset({"print", "prints", "printed", "printing", "printout", "reprint"}),
+    "copy": frozenset(
+        {
+            "copy",
+            "copies",
+            "photocopy",
+            "photocopies",
+            "photocopied",
+            "copied",
+            "duplicate",
+            "xerox",
+            "scan",
+        }
+    ),
+    "sign": frozenset({"sign", "signs", "signed", "signature", "signing", "countersign"}),
+    "seal": frozenset({"stamp", "stamped", "stamping", "seal", "sealed", "sealing", "chop"}),
+    "heat": frozenset(
+        {
+            "heat",
+            "heated",
+            "reheat",
+            "reheated",
+            "warm",
+            "warmed",
+            "microwave",
+            "microwaved",
+            "nuke",
+            "hot",
+        }
+    ),
+    "send": frozenset(
+        {"send", "sent", "forward", "forwarded", "email", "emailed", "mail", "share", "shared"}
+    ),
+    "give": frozenset(
+        {
+            "bring",
+            "get",
+            "fetch",
+            "grab",
+            "borrow",
+            "take",
+            "give",
+            "deliver",
+            "carry",
+            "drop",
+            "pass",
+            "hand",
+            "lend",
+            "return",
+            "need",
+            "needs",
+            "want",
+            "wants",
+            "pick",
+            "find",
+            "collect",
+            "like",
+            "love",
+            "move",
+            "send",
+        }
+    ),
+    "make": frozenset({"make", "brew", "prepare", "buy", "purchase", "pour", "order", "fix"}),
+}
+CUE_WORDS = frozenset(w for words in CUES.values() for w in words)
+
+SELF_WORDS = frozenset({"me", "i", "my", "mine", "myself", "im", "id", "ive", "ill"})
+PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him"})
+OTHER_POSSESSIVES = frozenset({"his", "her", "their", "hers", "theirs"})
+# Words that connect a person to a role in the sentence.
+PREPOSITIONS = frozenset({"to", "for", "from", "by", "with", "of", "at"})
+
+# Ordinary English that must never be "corrected" into a name, and is never a name word
+# unless written with a capital letter.
+COMMON = frozenset(
+    """a about after again all also am an and any anyone anything are as asap ask at away back
+    be because been before being best better bit both bring but by call can cant chance come
+    could couple day desk did do does doing done dont down each else even ever every everyone
+    few find first for from get give go going good got great had has have having he hello help
+    her here hey hi him his hold home how however if in into is it its just keep kind kindly
+    know last later let lets like little look lot lots made make many may maybe me mind mine
+    minute more most much must my myself need new next nice no not now of off office ok okay
+    on once one only or other our out over own perhaps person pick place please possible put
+    quick quickly really right robot round same say see send should so some somebody someone
+    something soon sorry still such sure take tell than thank thanks that the their them then
+    there these they thing things this those time to today too two up urgent us use very want
+    wants was way we well were what when where which while who whom whose why will with
+    without would yes yet you your afternoon morning need needs anybody ones stuff""".split()
+)
+# Name words that are also English words only count when capitalized in the original.
+_ENGLISH_NAME_WORDS = frozenset(
+    """will may bill mark pat rob sue grace hope joy max page rose min jun art ray dawn
+    drew faith gene guy jack june ken lee""".split()
+) - {"lee"}
+
+_TOKEN = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
+
+
+@dataclass(frozen=True)
+class Token:
+    text: str  # original spelling
+    word: str  # lower-case, possessive removed, typo-corrected
+    possessive: bool
+
+
+@dataclass(frozen=True)
+class Mention:
+    kind: MentionKind
+    start: int  # token index
+    end: int  # exclusive
+    ids: tuple[str, ...] = ()  # person/item-type/facility ids (several = ambiguous)
+    possessive: bool = False
+    text: str = ""
+
+    @property
+    def id(self) -> str:
+        return self.ids[0]
+
+
+@dataclass
+class Lexicon:
+    """Phrase tables built from one office."""
+
+    office: Office
+    people: dict[str, set[str]] = field(default_factory=dict)  # phrase → person ids (tier 0)
+    name_words: dict[str, set[str]] = field(default_factory=dict)  # word → ids (tier 1)
+    items: dict[str, str] = field(default_factory=dict)  # phrase → item type id
+    facilities: dict[str, str] = field(default_factory=dict)  # phrase → facility id
+    max_words: int = 1
+    vocabulary: list[str] = field(default_factory=list)
+    _vocabulary_set: frozenset[str] = frozenset()
+
+    @classmethod
+    def from_office(cls, office: Office) -> Lexicon:
+        lex = cls(office)
+        for p in office.people:
+            for name in (p.id, p.name, *p.aliases):
+                key = normalize(name)
+                if key:
+                    lex.people.setdefault(key, set()).add(p.id)
+            for word in p.name.split():
+                lex.name_words.setdefault(normalize(word), set()).add(p.id)
+        for t in office.item_types:
+            for name in (t.id.replace("_", " "), t.name, *t.synonyms):
+                key = normalize(name)
+                if not key:
+                    continue
+                for variant in (key, _plural(key)):
+                    lex.items.setdefault(variant, t.id)
+        for f in office.facilities:
+            for name in (f.name, *f.synonyms, f.id.replace("_", " ")):
+                key = normalize(name)
+                if key:
+                    lex.facilities.setdefault(key, f.id)
+        phrases = [*lex.people, *lex.items, *lex.facilities]
+        lex.max_words = max(len(p.split()) for p in phrases)
+        words = {w for p in phrases for w in p.split()} | set(lex.name_words) | CUE_WORDS
+        lex.vocabulary = sorted(w for w in words if len(w) >= 4)
+        lex._vocabulary_set = frozenset(lex.vocabulary)
+        return lex
+
+    # -- tokens --------------------------------------------------------------------------
+    def tokens(self, text: str) -> list[Token]:
+        out: list[Token] = []
+        for m in _TOKEN.finditer(text.replace("’", "'")):
+            raw = m.group(0)
+            lower = raw.lower()
+            possessive = lower.endswith("'s") or lower.endswith("s'")
+            word = re.sub(r"'s$|'$", "", lower).replace("'", "")
+            if not possessive and word.endswith("s'"):
+                word = word[:-1]
+            out.append(Token(raw, self._correct(word), possessive))
+        return out
+
+    def _correct(self, word: str) -> str:
+        """Fix a small typo in an office word or a cue; leave English and numbers alone."""
+        if len(word) < 4 or word.isdigit() or word in COMMON or self._known(word):
+            return word
+        for n in range(len(word) - 1):  # one swapped pair of letters: "zhnag", "pirnt"
+            swapped = word[:n] + word[n + 1] + word[n] + word[n + 2 :]
+            if swapped in self._vocabulary_set:
+                return swapped
+        if len(word) < 5:
+            return word
+        close = difflib.get_close_matches(word, self.vocabulary, n=1, cutoff=0.85)
+        return close[0] if close else word
+
+    def _known(self, word: str) -> bool:
+        return (
+            word in CUE_WORDS
+            or word in self.name_words
+            or word in self.people
+            or word in self.items
+            or word in self.facilities
+            or word in TITLES
+        )
+
+    # -- mentions ------------------------------------------------------------------------
+    def scan(self, tokens: list[Token]) -> list[Mention]:
+        """Mentions in text order; titles and articles are skipped inside phrases."""
+        content = [i for i, t in enumerate(tokens) if t.word not in TITLES]
+        mentions: list[Mention] = []
+        k = 0
+        while k < len(content):
+            found = self._match_at(tokens, content, k)
+            if found is None:
+                i = content[k]
+                mentions.append(self._single(tokens, i))
+                k += 1
+                continue
+            mention, used = found
+            mentions.append(mention)
+            k += used
+        return mentions
+
+    def _match_at(
+        self, tokens: list[Token], content: list[int], k: int
+    ) -> tuple[Mention, int] | None:
+        for n in range(min(self.max_words, len(content) - k), 0, -1):
+            idx = content[k : k + n]
+            # a possessive ends a phrase ("zhang's stapler" is two mentions)
+            if any(tokens[i].possessive for i in idx[:-1]):
+                continue
+            phrase = " ".join(tokens[i].word for i in idx)
+            start, end = idx[0], idx[-1] + 1
+            poss = tokens[idx[-1]].possessive
+            text = " ".join(tokens[i].text for i in idx)
+            if phrase in self.people and self._name_ok(tokens, idx):
+                ids = tuple(sorted(self.people[phrase]))
+                return Mention("person", start, end, ids, poss, text), n
+            if phrase in self.facilities:
+                return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
+            if phrase in self.items and not (n == 1 and phrase in CUE_WORDS):
+                return Mention("item", start, end, (self.items[phrase],), poss, text), n
+        return None
+
+    def _single(self, tokens: list[Token], i: int) -> Mention:
+        t = tokens[i]
+        w = t.word
+        if w in self.name_words and self._name_ok(tokens, [i]):
+            return Mention(
+                "person", i, i + 1, tuple(sorted(self.name_words[w])), t.possessive, t.text
+            )
+        if w in SELF_WORDS:
+            return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
+        if w in PRONOUNS or w in OTHER_POSSESSIVES:
+            return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
+        if w in CUE_WORDS:
+            kinds = tuple(k for k, words in CUES.items() if w in words)
+            return Mention("cue", i, i + 1, kinds, t.possessive, t.text)
+        if w in self.items:  # a cue word that is also an item name ("print", "copy")
+            return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
+        return Mention("word", i, i + 1, (w,), t.possessive, t.text)
+
+    def _name_ok(self, tokens: list[Token], idx: list[int]) -> bool:
+        """An English-looking single name word counts only when capitalized."""
+        if len(idx) != 1:
+            return True
+        t = tokens[idx[0]]
+        if t.word in _ENGLISH_NAME_WORDS or t.word in COMMON:
+            return t.text[:1].isupper()
+        return True
+
+
+def _plural(phrase: str) -> str:
+    if phrase.endswith("s"):
+        return phrase
+    if phrase.endswith(("ch", "sh", "x")):
+        return phrase + "es"
+    if phrase.endswith("y") and not phrase.endswith(("ay", "ey", "oy")):
+        return phrase[:-1] + "ies"
+    return phrase + "s"

@@ -1,0 +1,500 @@
+"""Instruction understanding: free text → a typed task frame, or a clarifying question.
+
+The frame says what to do (the task kinds of docs/task-semantics.md), with which item, whose,
+for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lexicon``):
+
+1. the text is split into clauses at sentence ends and at "and"/"then"/commas that start a
+   new request ("print my file and take it to Wang" is a print and a hand-on);
+2. each clause's mentions (people, items, facilities, task cues, "me"/"my") get roles from
+   the words around them: "to/for X" → recipient, "from X"/"X's" → owner, "by X"/"get X to"
+   → actor;
+3. the clause's kind follows from its cues and item kinds; a clause with no task of its own
+   ("and bring it to me", or the answer "Dr. Zhang") fills in the previous task;
+4. anything missing, unknown or ambiguous becomes a question for the requester, never a guess.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from assistantx.office import Office
+from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token
+
+TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
+
+# Product types named by the task contract: a printout of a file, a copy of a document.
+PRINTOUT, COPY, SEAL = "printout", "copy", "seal"
+
+_BREAK_WORDS = frozenset({"then", "also", "plus", "afterwards", "additionally"})
+_JOIN_WORDS = frozenset({"and", "but"})
+_SKIP_AFTER_JOIN = frozenset(
+    {"also", "then", "please", "could", "can", "would", "will", "you", "kindly", "maybe", "pls"}
+)
+_ASK_VERBS = frozenset({"ask", "have", "let", "tell", "get", "make", "need", "want"})
+_DATIVE_VERBS = frozenset(
+    {
+        "bring",
+        "give",
+        "hand",
+        "pass",
+        "lend",
+        "send",
+        "get",
+        "make",
+        "buy",
+        "fetch",
+        "grab",
+        "take",
+        "pour",
+        "brew",
+        "email",
+        "forward",
+        "mail",
+    }
+)
+_OBJECT_PRONOUNS = frozenset({"him", "her", "them"})
+_SUPPORTED_OPERATIONS = frozenset({"print", "copy", "coffee", "water", "heat", "vend"})
+_SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
+
+
+class Task(BaseModel):
+    """One thing to get done."""
+
+    model_config = ConfigDict(frozen=True)
+
+    kind: TaskKind
+    item: str | None = Field(default=None, description="item type id (a product for produce)")
+    owner: str | None = Field(default=None, description="whose item; None = anyone's")
+    recipient: str = Field(description="who ends up with the result")
+    actor: str | None = Field(default=None, description="who must do it (signer, named helper)")
+
+    def item_id(self) -> str | None:
+        """The concrete item, when the frame fixes it (``stapler:zhang``, ``coffee:lee``)."""
+        if self.item is None:
+            return None
+        if self.kind == "produce":
+            return f"{self.item}:{self.recipient}"
+        if self.kind == "print":
+            return f"file:{self.owner}"
+        return f"{self.item}:{self.owner}" if self.owner else None
+
+
+class TaskFrame(BaseModel):
+    """What the requester wants, or the question to ask them first."""
+
+    requester: str
+    tasks: list[Task] = Field(default_factory=list)
+    question: str | None = Field(default=None, description="set when the request is unclear")
+
+    @property
+    def understood(self) -> bool:
+        return self.question is None and bool(self.tasks)
+
+
+@dataclass
+class _Clause:
+    mentions: list[Mention]
+    cues: set[str] = field(default_factory=set)
+
+
+@dataclass
+class _Roles:
+    recipient: list[str] = field(default_factory=list)
+    source: list[str] = field(default_factory=list)
+    actor: list[str] = field(default_factory=list)
+    bare: list[str] = field(default_factory=list)
+    owners: dict[int, str] = field(default_factory=dict)  # item mention start → owner id
+
+
+class InstructionParser:
+    """Parses instructions against one office."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self.lex = Lexicon.from_office(office)
+        self._kinds = {t.id: t.kind for t in office.item_types}
+
+    # -- public --------------------------------------------------------------------------
+    def parse(self, text: str, requester: str) -> TaskFrame:
+        tokens = self.lex.tokens(text)
+        mentions = self._owned_cue_items(self.lex.scan(tokens), tokens)
+        problems = self._problems(tokens, mentions)
+        if problems:
+            return TaskFrame(requester=requester, question=problems[0])
+        tasks: list[Task] = []
+        last_person: list[str] = []
+        previous_cues = True
+        for clause in self._clauses(tokens, text, mentions):
+            roles = self._roles(tokens, clause, requester, last_person)
+            made = self._tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            if made and tasks and not previous_cues and self._refers_back(clause):
+                tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
+            previous_cues = bool(clause.cues)
+            if made:
+                tasks.extend(made)
+            elif tasks:
+                tasks[-1] = self._fill(tasks[-1], clause, roles, requester)
+        question = self._check(tasks, requester)
+        return TaskFrame(
+            requester=requester, tasks=tasks if question is None else [], question=question
+        )
+
+    def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
+        """Re-parse after clarifying answers: the original with the answers, else the answer."""
+        frame = self.parse(text, requester)
+        for answer in answers:
+            if frame.understood:
+                break
+            combined = self.parse(f"{text}. {answer}", requester)
+            alone = self.parse(answer, requester)
+            frame = combined if combined.understood or not alone.understood else alone
+        return frame
+
+    @staticmethod
+    def _refers_back(clause: _Clause) -> bool:
+        return any(m.kind == "pronoun" and not m.possessive for m in clause.mentions) and not any(
+            m.kind == "item" for m in clause.mentions
+        )
+
+    def _owned_cue_items(self, mentions: list[Mention], tokens: list[Token]) -> list[Mention]:
+        """ "Fang's seal", "my stamp": a task word after a possessive names an item."""
+        out = list(mentions)
+        for n in range(1, len(out)):
+            m, before = out[n], out[n - 1]
+            word = tokens[m.start].word
+            if m.kind == "cue" and word in self.lex.items and before.possessive:
+                out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
+        return out
+
+    # -- clauses -------------------------------------------------------------------------
+    def _clauses(self, tokens: list[Token], text: str, mentions: list[Mention]) -> list[_Clause]:
+        gaps = _gaps(text, tokens)
+        clauses: list[_Clause] = [_Clause([])]
+        for n, m in enumerate(mentions):
+            word = tokens[m.start].word
+            hard = any(c in gaps[m.start] for c in ".!?;") and bool(clauses[-1].mentions)
+            soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
+                self._starts_request(
+                    mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
+                )
+            )
+            if (hard or soft) and clauses[-1].mentions:
+                clauses.append(_Clause([]))
+            if m.kind == "word" and (word in _JOIN_WORDS or word in _BREAK_WORDS):
+                continue
+            clauses[-1].mentions.append(m)
+        for c in clauses:
+            c.cues = {k for m in c.mentions if m.kind == "cue" for k in m.ids}
+        return [c for c in clauses if c.mentions]
+
+    @staticmethod
+    def _starts_request(mentions: list[Mention], n: int, tokens: list[Token]) -> bool:
+        while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
+            n += 1
+        return n < len(mentions) and mentions[n].kind == "cue"
+
+    # -- roles ---------------------------------------------------------------------------
+    def _roles(
+        self, tokens: list[Token], clause: _Clause, requester: str, last_person: list[str]
+    ) -> _Roles:
+        roles = _Roles()
+        ms = clause.mentions
+        for n, m in enumerate(ms):
+            if m.kind == "person":
+                who = m.ids[0]
+                last_person.append(who)
+                self._person_role(tokens, ms, n, who, roles)
+            elif m.kind == "self":
+                word = tokens[m.start].word
+                if word in ("my", "mine"):
+                    continue
+                prev = _prev_word(tokens, m.start)
+                if prev in ("to", "for", "with") or prev in _DATIVE_VERBS:
+                    roles.recipient.append(requester)
+            elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
+                following = ms[n + 1] if n + 1 < len(ms) else None
+                others = [x for x in last_person if x != requester]
+                if following is not None and following.kind == "item":
+                    continue  # "her stapler": a possessive
+                if _prev_word(tokens, m.start) in ("to", "for") and others:
+                    roles.recipient.append(others[-1])
+            elif m.kind == "item":
+                owner = self._owner_of(tokens, ms, n, requester, last_person)
+                if owner is not None:
+                    roles.owners[m.start] = owner
+        return roles
+
+    def _person_role(
+        self, tokens: list[Token], ms: list[Mention], n: int, who: str, roles: _Roles
+    ) -> None:
+        m = ms[n]
+        prev = _prev_word(tokens, m.start)
+        nxt = tokens[m.end].word if m.end < len(tokens) else ""
+        following = ms[n + 1] if n + 1 < len(ms) else None
+        if m.possessive:
+            if following is not None and following.kind == "cue" and "sign" in following.ids:
+                roles.actor.append(who)
+            return  # an owner, attached to the item that follows
+        if prev == "from":
+            roles.source.append(who)
+        elif prev == "by":
+            roles.actor.append(who)
+        elif prev in ("to", "for", "with"):
+            roles.recipient.append(who)
+        elif nxt == "to" or prev in ("ask", "have", "let", "tell"):
+            roles.actor.append(who)
+        elif prev in _DATIVE_VERBS and following is not None and following.kind != "cue":
+            roles.recipient.append(who)
+        else:
+            roles.bare.append(who)
+
+    def _owner_of(
+        self,
+        tokens: list[Token],
+        ms: list[Mention],
+        n: int,
+        requester: str,
+        last_person: list[str],
+    ) -> str | None:
+        m = ms[n]
+        # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
+        for k in range(n - 1, max(-1, n - 3), -1):
+            p = ms[k]
+            if p.kind == "self" and p.possessive:
+                return requester
+            if p.kind == "person" and p.possessive:
+                return p.ids[0]
+            if p.kind == "pronoun" and p.possessive:
+                others = [x for x in last_person if x != requester]
+                return others[-1] if others else None
+            if p.kind not in ("word", "item"):  # "Wang's report file": a compound noun
+                break
+        # "the stapler of Zhang" / "a stapler from Zhang"
+        if n + 2 < len(ms) + 1 and n + 1 < len(ms):
+            nxt = tokens[m.end].word if m.end < len(tokens) else ""
+            after = ms[n + 1]
+            if nxt in ("of", "from") and after.kind == "word" and n + 2 < len(ms):
+                after = ms[n + 2]
+            if nxt in ("of", "from") and after.kind == "person":
+                return after.ids[0]
+        return None
+
+    # -- kinds ---------------------------------------------------------------------------
+    def _tasks(
+        self, clause: _Clause, roles: _Roles, requester: str, previous: Task | None
+    ) -> list[Task]:
+        items = [m for m in clause.mentions if m.kind == "item"]
+        cues = set(clause.cues)
+        for m in items:  # products of the printer are cues: "a printout", "a copy"
+            if m.id == PRINTOUT:
+                cues.add("print")
+            if m.id == COPY:
+                cues.add("copy")
+        facilities = [self.office.facility(m.id) for m in clause.mentions if m.kind == "facility"]
+        if any("heat" in f.operations for f in facilities):
+            cues.add("heat")
+        items = [m for m in items if m.id not in (PRINTOUT, COPY)]
+        files = [m for m in items if self._kinds[m.id] == "electronic"]
+        personal = [m for m in items if self._kinds[m.id] == "personal"]
+        products = [m for m in items if self._kinds[m.id] == "product"]
+        physical = [m for m in items if self._kinds[m.id] in ("belonging", "personal")]
+        # "my report file": a document word naming a file
+        if files and personal and personal[-1].end == files[0].start:
+            dropped = personal.pop()
+            physical = [m for m in physical if m is not dropped]
+
+        recipient = roles.recipient[-1] if roles.recipient else requester
+
+        def owner(m: Mention | None) -> str | None:
+            if m is None:
+                return None
+            return roles.owners.get(m.start) or (roles.source[-1] if roles.source else None)
+
+        doc = (personal or [None])[0]
+        refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
+        if doc is None and refers and previous is not None and previous.item is not None:
+            if self._kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
+                doc = Mention("item", -1, -1, (previous.item,))
+                roles.owners[-1] = previous.owner or requester
+        if "sign" in cues:
+            actor = next(iter(roles.actor + roles.bare + roles.recipient), None)
+            item = doc.id if doc else None
+            return [
+                Task(
+                    kind="sign",
+                    item=item,
+                    owner=owner(doc) or requester,
+                    recipient=requester if actor in roles.recipient else recipient,
+                    actor=actor,
+                )
+            ]
+        seal_items = [m for m in items if m.id == SEAL]
+        if ("seal" in cues or seal_items) and doc is not None:
+            sealer = next((roles.owners.get(m.start) for m in seal_items), None)
+            sealer = sealer or next(iter(roles.actor + roles.bare), None)
+            return [
+                Task(
+                    kind="seal",
+                    item=doc.id,
+                    owner=owner(doc) or requester,
+                    recipient=recipient,
+                    actor=sealer,
+                )
+            ]
+        if "heat" in cues and not products:
+            return [
+                Task(
+                    kind="heat",
+                    item=doc.id if doc else None,
+                    owner=owner(doc) or requester,
+                    recipient=recipient,
+                )
+            ]
+        if "print" in cues:
+            source = (files or personal or [None])[0]
+            return [
+                Task(
+                    kind="print", item="file", owner=owner(source) or requester, recipient=recipient
+                )
+            ]
+        if "copy" in cues and doc is not None and not files:
+            return [
+                Task(kind="copy", item=doc.id, owner=owner(doc) or requester, recipient=recipient)
+            ]
+        made = [m.id for m in products]
+        if not made:
+            made = [
+                p
+                for f in facilities
+                for p in f.products[:1]
+                if p not in (PRINTOUT, COPY) and ("give" in cues or "make" in cues)
+            ]
+        if made:
+            return [Task(kind="produce", item=p, recipient=recipient) for p in made]
+        sends = any(m.kind == "cue" and m.text.lower() in _SEND_WORDS for m in clause.mentions)
+        if files or (personal and sends and not roles.source):
+            source = (files or personal)[0]
+            file_owner = owner(source) or next(iter(roles.actor + roles.bare), None)
+            return [
+                Task(
+                    kind="send_file",
+                    item="file",
+                    owner=file_owner or requester,
+                    recipient=recipient,
+                )
+            ]
+        if not physical and "seal" in cues:  # "bring me the stamp": the seal as an item
+            physical = [
+                Mention("item", m.start, m.end, (SEAL,), m.possessive, m.text)
+                for m in clause.mentions
+                if m.kind == "cue" and "seal" in m.ids
+            ][:1]
+        tasks = []
+        for m in physical:
+            who = owner(m) or next(iter(roles.actor + roles.bare), None)
+            tasks.append(Task(kind="transfer", item=m.id, owner=who, recipient=recipient))
+        return tasks
+
+    def _fill(self, task: Task, clause: _Clause, roles: _Roles, requester: str) -> Task:
+        """A clause with no task of its own completes the previous one."""
+        update: dict[str, str] = {}
+        if roles.recipient:
+            update["recipient"] = roles.recipient[-1]
+        for who in roles.actor + roles.bare:
+            if task.kind in ("sign", "seal") and task.actor is None and "actor" not in update:
+                update["actor"] = who
+            elif task.kind == "transfer" and task.owner is None and "owner" not in update:
+                update["owner"] = who
+            elif "recipient" not in update and task.recipient == requester:
+                update["recipient"] = who
+        return task.model_copy(update=update) if update else task
+
+    def _unsupported_facility(self, facility_id: str) -> bool:
+        """A facility whose operations are none the assistant can run (a meeting room)."""
+        ops = set(self.office.facility(facility_id).operations)
+        return bool(ops) and not ops & _SUPPORTED_OPERATIONS
+
+    # -- checks --------------------------------------------------------------------------
+    def _problems(self, tokens: list[Token], mentions: list[Mention]) -> list[str]:
+        out: list[str] = []
+        for n, m in enumerate(mentions):
+            if m.kind == "person" and len(m.ids) > 1:
+                names = " or ".join(self.office.person(i).name for i in m.ids)
+                out.append(f"Who do you mean by {m.text!r}: {names}?")
+            if m.kind == "word" and self._unknown_name(tokens, mentions, n):
+                name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
+                out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
+            if m.kind == "facility" and self._unsupported_facility(m.id):
+                f = self.office.facility(m.id)
+                out.append(
+                    f"Sorry, I can't help with the {f.name}. I can fetch and deliver things, "
+                    "pass on files, and run errands at the office machines. What would you "
+                    "like me to do?"
+                )
+        return out
+
+    def _unknown_name(self, tokens: list[Token], mentions: list[Mention], n: int) -> bool:
+        m = mentions[n]
+        word = tokens[m.start].word
+        if word in COMMON or word in PRONOUNS or word.isdigit() or len(word) < 2:
+            return False
+        following = mentions[n + 1] if n + 1 < len(mentions) else None
+        if m.possessive and following is not None and following.kind == "item":
+            return True  # "Smith's stapler"
+        prev = _prev_word(tokens, m.start, skip_titles=False)
+        capital = m.text[:1].isupper() and m.start > 0
+        titled = prev in ("dr", "mr", "mrs", "ms", "prof", "professor", "doctor")
+        return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+
+    def _check(self, tasks: list[Task], requester: str) -> str | None:
+        if not tasks:
+            return (
+                "Sorry, I'm not sure what you need. What should I do, with which item, "
+                "and for whom?"
+            )
+        for t in tasks:
+            name = self._item_name(t.item) if t.item else "item"
+            if t.item is None:
+                return f"Which item do you mean for the {t.kind.replace('_', ' ')} request?"
+            if t.kind in ("sign",) and (t.actor is None or t.actor == requester):
+                return f"Who should do that with your {name}? Please tell me their name."
+            if t.kind == "transfer":
+                if t.owner is None and self._kinds[t.item] == "personal":
+                    return f"Whose {name} do you mean?"
+                if t.owner is not None and t.owner == t.recipient:
+                    who = "you" if t.owner == requester else self.office.person(t.owner).name
+                    return (
+                        f"Who should get {who}r {name}?"
+                        if who == "you"
+                        else (f"{who} already has their {name}; who should get it?")
+                    )
+            if t.kind == "send_file" and t.owner == t.recipient:
+                return "Who should I pass your file on to?"
+        return None
+
+    def _item_name(self, type_id: str) -> str:
+        return self.office.item_type(type_id).name
+
+
+def _prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:
+    from assistantx.memory.names import TITLES
+
+    k = start - 1
+    while k >= 0 and skip_titles and tokens[k].word in TITLES:
+        k -= 1
+    return tokens[k].word if k >= 0 else ""
+
+
+def _gaps(text: str, tokens: list[Token]) -> list[str]:
+    """The characters between each token and the one before it (punctuation)."""
+    gaps: list[str] = []
+    pos = 0
+    flat = text.replace("’", "'")
+    for t in tokens:
+        at = flat.find(t.text, pos)
+        gaps.append(flat[pos:at] if at >= 0 else "")
+        pos = at + len(t.text) if at >= 0 else pos
+    return gaps
