@@ -12,6 +12,7 @@ from typing import Any
 
 import pytest
 from llm_office import decision, llm_settings, people_rows, run_llm, script_helpers, section
+from pydantic import BaseModel
 
 from assistantx.actions import Inform, SendQR, Stop, Wait
 from assistantx.adapters.messenger.base import ChatRef
@@ -90,7 +91,7 @@ async def test_each_agent_sends_its_prompt_with_its_schema_and_the_data_rule(
     await reasoner.reflect(ctx, percept, plan, made, [], Observation(robot_place="meeting_room"))
     await reasoner.stop()
 
-    schemas = {
+    schemas: dict[str, type[BaseModel]] = {
         "perception": Percept,
         "planning": Plan,
         "decision": Decision,
