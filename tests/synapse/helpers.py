@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import asyncio
 import time
+from collections.abc import Sequence
+from pathlib import Path
 from typing import Any
 
 from assistantx.adapters.messenger.base import InboundMessage
-from assistantx.adapters.messenger.matrix import MatrixClient, MatrixConfig
+from assistantx.adapters.messenger.matrix import MatrixClient, MatrixConfig, SqliteEventStore
 
 WAIT_S = 20.0
 
@@ -70,3 +72,27 @@ async def join_when_invited(client: MatrixClient, room_id: str) -> None:
 def derive(config: MatrixConfig, **update: Any) -> MatrixConfig:
     """A validated copy with ``update`` applied (``model_copy`` would skip validation)."""
     return MatrixConfig.model_validate({**config.model_dump(), **update})
+
+
+class OfferCountingStore(SqliteEventStore):
+    """The real store, also counting how often each event was offered (by any path)."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__(path)
+        self.offered: dict[str, int] = {}
+        self._changed = asyncio.Condition()
+
+    async def wait_offered(self, event_ids: list[str], times: int) -> None:
+        async with self._changed:
+            await self._changed.wait_for(
+                lambda: all(self.offered.get(e, 0) >= times for e in event_ids)
+            )
+
+    async def accept(
+        self, messages: Sequence[InboundMessage], **kwargs: str | None
+    ) -> list[InboundMessage]:
+        for message in messages:
+            self.offered[message.event_id] = self.offered.get(message.event_id, 0) + 1
+        async with self._changed:
+            self._changed.notify_all()
+        return await super().accept(messages, **kwargs)  # type: ignore[arg-type]

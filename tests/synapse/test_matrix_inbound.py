@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -19,34 +19,10 @@ from assistantx.adapters.messenger.matrix import (
     SyncPoller,
 )
 from synapse.gateway import AppserviceGateway
-from synapse.helpers import assert_quiet, derive, next_message, wait_joined
+from synapse.helpers import OfferCountingStore, assert_quiet, derive, next_message, wait_joined
 from synapse.homeserver import Account, SynapseHomeserver
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
-
-
-class OfferCountingStore(SqliteEventStore):
-    """The real store, also counting how often each event was offered (by any path)."""
-
-    def __init__(self, path: Path) -> None:
-        super().__init__(path)
-        self.offered: dict[str, int] = {}
-        self._changed = asyncio.Condition()
-
-    async def wait_offered(self, event_ids: list[str], times: int) -> None:
-        async with self._changed:
-            await self._changed.wait_for(
-                lambda: all(self.offered.get(e, 0) >= times for e in event_ids)
-            )
-
-    async def accept(
-        self, messages: Sequence[InboundMessage], **kwargs: str | None
-    ) -> list[InboundMessage]:
-        for message in messages:
-            self.offered[message.event_id] = self.offered.get(message.event_id, 0) + 1
-        async with self._changed:
-            self._changed.notify_all()
-        return await super().accept(messages, **kwargs)  # type: ignore[arg-type]
 
 
 async def test_push_dm_arrives_normalized_once(

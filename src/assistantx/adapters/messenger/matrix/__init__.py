@@ -7,6 +7,11 @@ from assistantx.adapters.messenger.matrix.config import MatrixConfig, load_matri
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor
 from assistantx.adapters.messenger.matrix.normalize import EventNormalizer
 from assistantx.adapters.messenger.matrix.registration import registration, write_registration
+from assistantx.adapters.messenger.matrix.runtime import (
+    MatrixRuntime,
+    build_matrix_runtime,
+    matrix_runtime,
+)
 from assistantx.adapters.messenger.matrix.store import EventStore, SqliteEventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
 
@@ -18,11 +23,14 @@ __all__ = [
     "MatrixConfig",
     "MatrixError",
     "MatrixMessenger",
+    "MatrixRuntime",
     "RetryPolicy",
     "SqliteEventStore",
     "SyncPoller",
+    "build_matrix_runtime",
     "create_appservice_router",
     "load_matrix_config",
+    "matrix_runtime",
     "registration",
     "transaction_id",
     "write_registration",

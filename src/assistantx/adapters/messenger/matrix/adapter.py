@@ -11,6 +11,10 @@ with a transaction id derived from ``OutboundMessage.idempotency_key``, so a ret
 posts twice. The sender is the application service's bot in ``push``/``both`` modes and the
 pull account in ``pull`` mode.
 
+In ``both`` mode the pull account is kept in every room the bot talks in (it is invited to
+the DM rooms the bot creates or joins, and joins the group rooms), so either path alone
+receives everything: the poller is a real fallback while pushes fail, not a half view.
+
 Consumers call ``acknowledge(message)`` when done with an inbound message; messages accepted
 but never acknowledged are put on the inbox again by the next ``start()``.
 """
@@ -183,6 +187,22 @@ class MatrixMessenger(Messenger):
                 return
             raise
         logger.info("joined %s as %s", room_id, user_id)
+        if user_id == self.config.bot_user_id:
+            await self._invite_pull_account(room_id)
+
+    async def _invite_pull_account(self, room_id: str) -> None:
+        """In ``both`` mode, bring the pull account into a room the bot is in (its poller
+        joins on the invite)."""
+        if self.config.mode != "both" or self.config.pull_user_id is None:
+            return
+        try:
+            await self._sender().invite(room_id, self.config.pull_user_id)
+        except MatrixError as exc:
+            if exc.status is not None and 400 <= exc.status < 500:
+                # Typically "already in the room" (a person invited both accounts).
+                logger.debug("pull account not invited to %s: %s", room_id, exc)
+                return
+            raise
 
     async def _remember_room(self, room_id: str, message: InboundMessage) -> None:
         if message.chat.kind == "dm":
@@ -220,6 +240,8 @@ class MatrixMessenger(Messenger):
         client = self._sender()
         room_id = await client.resolve_alias(target) if target.startswith("#") else target
         await client.join(room_id)
+        if self.config.mode == "both" and self._pull_client is not None:
+            await self._pull_client.join(room_id)
         self._group_rooms[group] = room_id
         self.normalizer.set_group_rooms({room: g for g, room in self._group_rooms.items()})
         return room_id
@@ -239,8 +261,11 @@ class MatrixMessenger(Messenger):
             if room_id in joined:
                 self._dm_rooms[person] = room_id
                 return str(room_id)
+        invite = [user_id]
+        if self.config.mode == "both" and self.config.pull_user_id is not None:
+            invite.append(self.config.pull_user_id)
         room_id = await client.create_room(
-            invite=[user_id], is_direct=True, preset="trusted_private_chat"
+            invite=invite, is_direct=True, preset="trusted_private_chat"
         )
         direct.setdefault(user_id, []).append(room_id)
         await client.set_account_data(self._sender_id(), "m.direct", direct)
