@@ -114,7 +114,7 @@ class Surveyor:
             sent_at=now,
         )
         self.store.put_survey(survey)
-        await self._send(survey, survey.invitation(), survey.question_id)
+        await self._send(survey, survey.invitation())
 
     # -- replies ---------------------------------------------------------------------------
     async def handle_message(self, message: InboundMessage) -> bool:
@@ -138,7 +138,7 @@ class Surveyor:
         self.store.record_reply(survey, now, message.text, _effect(parsed, survey, invalid=invalid))
         if answer is not None:
             replies = len(self.store.replies(survey.instruction_id))
-            await self._send(survey, answer, None, suffix=f"r{replies}")
+            await self._send(survey, answer, suffix=f"r{replies}")
         return True
 
     def _survey_for(
@@ -193,21 +193,21 @@ class Surveyor:
             elif survey.reminder_due(now, self.policy) and not self.store.opted_out(survey.person):
                 text = survey.remind(now)
                 self.store.put_survey(survey)
-                await self._send(survey, text, survey.question_id, suffix="reminder")
+                await self._send(survey, text, suffix="reminder")
                 sent += 1
         return sent
 
     # -- sending ---------------------------------------------------------------------------
-    async def _send(
-        self, survey: Survey, text: str, question_id: str | None, *, suffix: str = ""
-    ) -> None:
+    async def _send(self, survey: Survey, text: str, *, suffix: str = "") -> None:
+        # No ``question_id``: that marks a question of a running instruction (the simulated
+        # colleagues answer those); survey replies are matched by chat, or by ``in_reply_to``
+        # where a platform reports the survey message replied to.
         key = survey.question_id + (f":{suffix}" if suffix else "")
         await self._post(
             OutboundMessage(
                 chat=survey.chat,
                 text=text,
                 instruction_id=survey.instruction_id,
-                question_id=question_id,
                 idempotency_key=key,
             )
         )
