@@ -21,7 +21,7 @@ class Settings(BaseSettings):
     # -- the office and the data directory ---------------------------------------------
     office: Path = Field(default=DEFAULT_OFFICE, description="office YAML file")
     data_dir: Path = Field(default=Path("data"), description="journal, snapshots, keys")
-    results_dir: Path = Field(default=Path("results"), description="evaluation runs, one folder each")
+    results_dir: Path = Field(default=Path("results"), description="evaluation run folders")
 
     # -- the reasoner ---------------------------------------------------------------------
     llm_base_url: str | None = Field(default=None, description="OpenAI-compatible /v1 URL")

@@ -13,7 +13,16 @@ from fastapi import FastAPI
 from fastapi.staticfiles import StaticFiles
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from assistantx.service import devices, events, health, instructions, memory, messages, metrics
+from assistantx.service import (
+    dashboard,
+    devices,
+    events,
+    health,
+    instructions,
+    memory,
+    messages,
+    metrics,
+)
 from assistantx.service.errors import error_body, install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.settings import Settings
@@ -125,7 +134,7 @@ def create_app(
             runtime.metrics.http_latency.observe(time.perf_counter() - started, route=path)
         return response
 
-    for module in (health, instructions, events, memory, messages, devices, metrics):
+    for module in (health, instructions, events, memory, messages, devices, metrics, dashboard):
         app.include_router(module.router)
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")

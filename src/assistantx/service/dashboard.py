@@ -1,21 +1,20 @@
-"""The web dashboard's own routes: the page itself, the office map, and evaluation results.
+"""The web dashboard's own routes, beyond the REST API (the page itself is ``static/``,
+served at ``/`` by the app).
 
-Everything else the page shows comes from the REST API and the SSE streams. Routes here:
-
-- ``GET /`` the single page (``static/index.html``), ``/static/...`` its scripts and styles;
-  both public, since the page asks for a token before it calls the API.
 - ``GET /v1/map``: the occupancy map's metadata (resolution, origin, size in cells) and the
   anchors of the office's places with their names, so the page can turn world metres into
   pixels of ``GET /v1/map.png``: ``px = (x - origin_x) / resolution`` and
   ``py = height - (y - origin_y) / resolution`` (the image's top row is the map's last row).
-- ``GET /v1/map.png``: the map rendered one pixel per cell (free white, occupied dark,
+- ``GET /v1/map.png``: the map rendered one pixel per cell (free white, occupied black,
   unknown grey, as map_server shows them).
 - ``GET /v1/evaluation/latest``: the newest evaluation run under ``settings.results_dir``
   (its ``summary.json``, ``summary.md`` and the URLs of its charts), and
   ``GET /v1/evaluation/runs/{run}/{file}`` to fetch one of those files.
+- ``GET /v1/locker/codes``, ``POST /v1/locker/scan`` and ``POST /v1/locker/close``: the QR
+  codes recent instructions issued, and the operator acting as the person at the locker
+  (scan a code, shut the door), so a demo with human colleagues can finish a hand-over.
 
-The API routes take the caller's dependencies (the service's authentication) so the page
-is public while the data is not.
+Every route needs a token (the page asks for one); the locker's are for the operator only.
 """
 
 from __future__ import annotations
@@ -25,26 +24,29 @@ import io
 import json
 import logging
 import re
-from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
-from fastapi import APIRouter, HTTPException, Response, params
-from fastapi.responses import FileResponse, HTMLResponse
-from fastapi.staticfiles import StaticFiles
-from pydantic import BaseModel, Field
+from fastapi import APIRouter, Request, Response
+from fastapi.responses import FileResponse
+from pydantic import BaseModel, ConfigDict, Field
 
+from assistantx.adapters.lock.base import LockEvent
+from assistantx.adapters.messenger.base import OutboundMessage
 from assistantx.adapters.robot.navigator import DEFAULT_MAP
-from assistantx.errors import MapError
+from assistantx.errors import InvalidCodeError, MapError
+from assistantx.lock.codes import unseal
+from assistantx.lock.keys import Keyring
 from assistantx.office import Office
 from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.occupancy_map import OccupancyMap, load_map
+from assistantx.service.deps import Caller, Runtime
+from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
+from assistantx.service.runtime import ServiceRuntime
 
 logger = logging.getLogger(__name__)
-
-STATIC_DIR = Path(__file__).resolve().parents[1] / "static"
 
 # Grey levels of map_server's own rendering (free 254, occupied 0, unknown 205).
 _FREE_GREY, _UNKNOWN_GREY = 254, 205
@@ -155,11 +157,11 @@ def read_run(run: Path) -> EvaluationRun:
         summary = json.loads(summary_file.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         # A run being written, or a broken one: say which file and why, serve nothing half-read.
-        raise HTTPException(
-            503, f"evaluation run {run.name}: cannot read summary.json: {exc}"
+        raise UnavailableError(
+            f"evaluation run {run.name}: cannot read summary.json: {exc}"
         ) from exc
     if not isinstance(summary, dict | list):
-        raise HTTPException(503, f"evaluation run {run.name}: summary.json is not an object")
+        raise UnavailableError(f"evaluation run {run.name}: summary.json is not an object")
     markdown_file = run / "summary.md"
     markdown = markdown_file.read_text(encoding="utf-8") if markdown_file.is_file() else None
     charts = sorted(
@@ -174,83 +176,186 @@ def read_run(run: Path) -> EvaluationRun:
     )
 
 
-# -- the router ------------------------------------------------------------------------------
-def dashboard_router(
-    office: Office,
-    results_dir: Path,
-    *,
-    map_yaml: Path = DEFAULT_MAP,
-    dependencies: Sequence[params.Depends] = (),
-) -> APIRouter:
-    """The page (public) and its data routes (guarded by ``dependencies``).
+# -- codes in people's hands (for the simulated scan) ----------------------------------------
+class LockerCode(BaseModel):
+    code_id: str
+    instruction_id: str
+    person: str
+    item: str
+    purpose: str
+    used: bool = Field(description="the instruction saw it used at the locker")
+    scannable: bool = Field(description="the dashboard knows the code's payload")
 
-    The map is loaded when the first request needs it, so a missing map file costs the
-    dashboard its map view (a 503 naming the file), never the service its start-up.
+
+class ScanIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    code_id: str = Field(min_length=1, max_length=100)
+
+
+class CodeBook:
+    """The payloads of the QR codes the assistant sent, keyed by code id.
+
+    A QR image's payload never reaches the journal (it is a credential), so the dashboard
+    notes each one as the messenger sends it, which is what a person's phone would hold.
+    Simulated colleagues keep theirs in the simulator, which survives restarts; the book is
+    consulted first, then the simulator.
     """
-    router = APIRouter()
-    api = APIRouter(prefix="/v1", dependencies=list(dependencies), tags=["dashboard"])
 
-    @functools.cache
-    def office_map() -> OfficeMap:
-        return OfficeMap.from_files(map_yaml, office)
+    def __init__(self, keyring: Keyring) -> None:
+        self._keyring = keyring
+        self._payloads: dict[str, str] = {}
 
-    def loaded_map() -> OfficeMap:
+    async def note(self, message: OutboundMessage) -> None:
+        for attachment in message.attachments:
+            if attachment.qr_payload:
+                self.add(attachment.qr_payload)
+
+    def add(self, payload: str) -> None:
         try:
-            return office_map()
+            self._payloads[unseal(payload, self._keyring).code_id] = payload
+        except InvalidCodeError:
+            logger.info("a QR payload under an unknown key was not noted")
+
+    def payload(self, code_id: str) -> str | None:
+        return self._payloads.get(code_id)
+
+
+def _codebook(request: Request, runtime: ServiceRuntime) -> CodeBook:
+    book: CodeBook | None = getattr(request.app.state, "dashboard_codebook", None)
+    if book is None:
+        book = CodeBook(runtime.locker.controller.keyring)
+        runtime.messenger.relay_to(book.note)
+        request.app.state.dashboard_codebook = book
+    for held in runtime.sim.codes:  # simulated people's codes (restored after a restart)
+        if held.payload:
+            book.add(held.payload)
+    return book
+
+
+def _recent_codes(runtime: ServiceRuntime, book: CodeBook, limit: int = 30) -> list[LockerCode]:
+    codes: list[LockerCode] = []
+    for record in runtime.journal.instructions(limit=limit):
+        stm = runtime.assistant.get(record.id)
+        if stm is None:
+            full = runtime.journal.instruction(record.id)
+            stm = full.stm if full else None
+        if stm is None:
+            continue
+        codes.extend(
+            LockerCode(
+                code_id=c.code_id,
+                instruction_id=record.id,
+                person=c.person,
+                item=c.item,
+                purpose=c.purpose,
+                used=c.used,
+                scannable=book.payload(c.code_id) is not None,
+            )
+            for c in stm.embodied.codes
+        )
+    return codes
+
+
+# -- the router ------------------------------------------------------------------------------
+router = APIRouter(prefix="/v1", tags=["dashboard"])
+
+
+def _office_map(request: Request, runtime: ServiceRuntime) -> OfficeMap:
+    """Loaded on first use, so a missing map file costs the map view, not the start-up."""
+    cached: OfficeMap | None = getattr(request.app.state, "dashboard_map", None)
+    if cached is None:
+        try:
+            cached = OfficeMap.from_files(DEFAULT_MAP, runtime.office)
         except MapError as exc:
             logger.warning("dashboard map unavailable: %s", exc)
-            raise HTTPException(503, f"the office map cannot be loaded: {exc}") from exc
+            raise UnavailableError(f"the office map cannot be loaded: {exc}") from exc
+        request.app.state.dashboard_map = cached
+    return cached
 
-    @router.get("/", include_in_schema=False)
-    async def index() -> HTMLResponse:
-        return HTMLResponse((STATIC_DIR / "index.html").read_text(encoding="utf-8"))
 
-    @api.get("/map", response_model=MapInfo, summary="The office map's metadata and anchors")
-    async def map_info() -> MapInfo:
-        return loaded_map().info
+@router.get("/map", response_model=MapInfo, summary="The office map's metadata and anchors")
+async def map_info(request: Request, runtime: Runtime, caller: Caller) -> MapInfo:
+    return _office_map(request, runtime).info
 
-    @api.get(
-        "/map.png",
-        response_class=Response,
-        responses={200: {"content": {"image/png": {}}}},
-        summary="The office map as a PNG, one pixel per cell",
-    )
-    async def map_png() -> Response:
-        return Response(
-            loaded_map().png, media_type="image/png", headers={"Cache-Control": "max-age=3600"}
+
+@router.get(
+    "/map.png",
+    response_class=Response,
+    responses={200: {"content": {"image/png": {}}}},
+    summary="The office map as a PNG, one pixel per cell",
+)
+async def map_png(request: Request, runtime: Runtime, caller: Caller) -> Response:
+    png = _office_map(request, runtime).png
+    return Response(png, media_type="image/png", headers={"Cache-Control": "max-age=3600"})
+
+
+@router.get(
+    "/evaluation/latest",
+    response_model=EvaluationRun,
+    summary="The newest evaluation run's summary and chart URLs",
+)
+async def evaluation_latest(runtime: Runtime, caller: Caller) -> EvaluationRun:
+    results_dir = runtime.settings.results_dir
+    run = latest_run(results_dir)
+    if run is None:
+        raise NotFoundError(f"no evaluation run with a summary.json in {results_dir}")
+    return read_run(run)
+
+
+@router.get(
+    "/evaluation/runs/{run}/{name}",
+    response_class=FileResponse,
+    summary="One file (chart, summary) of an evaluation run",
+)
+async def evaluation_file(run: str, name: str, runtime: Runtime, caller: Caller) -> FileResponse:
+    media_type = _RUN_FILES.get(Path(name).suffix)
+    if not (_SAFE_NAME.match(run) and _SAFE_NAME.match(name)) or media_type is None:
+        raise NotFoundError("unknown evaluation file (plain names only; .png, .json or .md)")
+    path = runtime.settings.results_dir / run / name
+    if not path.is_file():
+        raise NotFoundError(f"evaluation run {run!r} has no file {name!r}")
+    return FileResponse(path, media_type=media_type)
+
+
+@router.get(
+    "/locker/codes",
+    response_model=list[LockerCode],
+    summary="QR codes issued by recent instructions, newest instruction first",
+)
+async def locker_codes(request: Request, runtime: Runtime, caller: Caller) -> list[LockerCode]:
+    caller.require_operator()
+    return _recent_codes(runtime, _codebook(request, runtime))
+
+
+@router.post(
+    "/locker/scan",
+    response_model=LockEvent,
+    summary="Simulate a person scanning a code at the locker (operator only)",
+)
+async def locker_scan(
+    body: ScanIn, request: Request, runtime: Runtime, caller: Caller
+) -> LockEvent:
+    """Holds the code's QR payload up to the scanner: answers ``code_accepted`` (the door
+    opens) or ``code_rejected`` with the lock's reason (used, expired, door open, ...)."""
+    caller.require_operator()
+    payload = _codebook(request, runtime).payload(body.code_id)
+    if payload is None:
+        raise NotFoundError(
+            f"no QR code {body.code_id!r} is known to the dashboard (it notes codes sent "
+            "while the service runs, and those simulated colleagues hold)"
         )
-
-    @api.get(
-        "/evaluation/latest",
-        response_model=EvaluationRun,
-        summary="The newest evaluation run's summary and chart URLs",
-    )
-    async def evaluation_latest() -> EvaluationRun:
-        run = latest_run(results_dir)
-        if run is None:
-            raise HTTPException(404, f"no evaluation run with a summary.json in {results_dir}")
-        return read_run(run)
-
-    @api.get(
-        "/evaluation/runs/{run}/{name}",
-        response_class=FileResponse,
-        summary="One file (chart, summary) of an evaluation run",
-    )
-    async def evaluation_file(run: str, name: str) -> FileResponse:
-        media_type = _RUN_FILES.get(Path(name).suffix)
-        if not (_SAFE_NAME.match(run) and _SAFE_NAME.match(name)) or media_type is None:
-            raise HTTPException(
-                404, "unknown evaluation file (runs and files are plain names; .png/.json/.md)"
-            )
-        path = results_dir / run / name
-        if not path.is_file():
-            raise HTTPException(404, f"evaluation run {run!r} has no file {name!r}")
-        return FileResponse(path, media_type=media_type)
-
-    router.include_router(api)
-    return router
+    event = await runtime.locker.simulate_scan(payload)
+    logger.info("dashboard: simulated scan of %s: %s", body.code_id, event.kind)
+    return event
 
 
-def mount_static(app: Any) -> None:
-    """Serve the page's scripts and styles at ``/static`` (public, no API behind it)."""
-    app.mount("/static", StaticFiles(directory=STATIC_DIR), name="static")
+@router.post(
+    "/locker/close",
+    response_model=LockEvent,
+    summary="Simulate the person shutting the locker's door (operator only)",
+)
+async def locker_close(runtime: Runtime, caller: Caller) -> LockEvent:
+    caller.require_operator()
+    if not runtime.locker.controller.door_open:
+        raise ConflictError("the locker's door is already closed")
+    return await runtime.locker.simulate_close()
