@@ -186,3 +186,20 @@ def test_params_validation() -> None:
         AmclParams(min_particles=10, max_particles=5)
     with pytest.raises(ValueError, match="resample_interval"):
         AmclParams(resample_interval=0)
+
+
+def test_beam_product_exponent_tempers_the_weights() -> None:
+    world = _small_world()
+    rng = np.random.default_rng(9)
+    scan = Lidar(world, LidarParams(beams=90, max_range_m=8.0)).scan(np.array([4.5, 2.0, 0.0]), rng)
+    spreads = []
+    for exponent in (1.0, 0.25):
+        pf = ParticleFilter(
+            world,
+            AmclParams(max_particles=300, min_particles=300, beam_product_exponent=exponent),
+            np.random.default_rng(1),
+        )
+        pf.initialize(np.array([4.5, 2.0, 0.0]))
+        pf.sensor_update(scan)
+        spreads.append(float(np.ptp(pf.log_weights)))
+    assert spreads[1] == pytest.approx(spreads[0] * 0.25)

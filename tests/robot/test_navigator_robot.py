@@ -156,3 +156,14 @@ async def test_kidnapped_robot_reports_localization_lost(
     robot.navigator.base.teleport(np.array([37.0, 20.5, 0.0]))  # carried off to vending
     with pytest.raises(LocalizationLostError):
         await robot.move_to("desk_03")
+
+
+async def test_robots_on_the_same_files_share_the_planner(office: Office) -> None:
+    first = NavigatorRobot.from_files(office, SimClock(), localize=False)
+    second = NavigatorRobot.from_files(office, SimClock(), localize=False)
+    assert first.grid is second.grid
+    assert first.navigator.planner is second.navigator.planner
+    distance = first.path_distance("desk_01", "kitchenette")
+    assert second.path_distance("kitchenette", "desk_01") == pytest.approx(distance, rel=0.02)
+    with pytest.raises(MapError, match="cannot read map files"):
+        NavigatorRobot.from_files(office, SimClock(), map_yaml="/nonexistent/map.yaml")

@@ -20,7 +20,9 @@ import asyncio
 import logging
 import math
 from collections.abc import Mapping
+from functools import lru_cache
 from pathlib import Path as FilePath
+from weakref import WeakKeyDictionary
 
 import numpy as np
 
@@ -44,6 +46,24 @@ logger = logging.getLogger(__name__)
 
 DEFAULT_MAP = FilePath(__file__).resolve().parents[4] / "maps" / "office.yaml"
 MAX_PARTICLES_SHOWN = 500
+
+
+# Anchor-to-anchor paths per planner (so per map), keyed by anchor coordinates: shared by
+# every robot on the same map, so the evaluation's thousands of moves plan each pair once.
+_PATH_TABLES: WeakKeyDictionary[
+    GridPlanner, dict[tuple[tuple[float, float], tuple[float, float]], Path | None]
+] = WeakKeyDictionary()
+
+
+def _xy(anchor: Anchor) -> tuple[float, float]:
+    return (anchor.x, anchor.y)
+
+
+@lru_cache(maxsize=8)
+def _load_cached(
+    map_yaml: FilePath, anchors_yaml: FilePath, _stamp: tuple[int, int]
+) -> tuple[OccupancyMap, dict[str, Anchor]]:
+    return load_map(map_yaml), load_anchors(anchors_yaml)
 
 
 class NavigatorRobot(RobotBase):
@@ -80,7 +100,10 @@ class NavigatorRobot(RobotBase):
             params,
             localize=localize,
         )
-        self._paths: dict[tuple[str, str], Path | None] = {}
+        # The planner on the map alone; the navigator may swap in one that holds obstacles it
+        # saw, which must not leak into the shared anchor path table.
+        self._map_planner = self._navigator.planner
+        self._paths = _PATH_TABLES.setdefault(self._map_planner, {})
         self._obstacles: list[tuple[float, float, float]] = []
         self._goal: str | None = None
         self._path: Path | None = None
@@ -98,9 +121,17 @@ class NavigatorRobot(RobotBase):
         localize: bool = True,
         start: str | None = None,
     ) -> NavigatorRobot:
-        map_path = FilePath(map_yaml)
-        anchors_path = anchors_yaml or map_path.with_name(map_path.stem + ".anchors.yaml")
-        grid, anchors = load_map(map_path), load_anchors(anchors_path)
+        map_path = FilePath(map_yaml).resolve()
+        anchors_path = FilePath(
+            anchors_yaml or map_path.with_name(map_path.stem + ".anchors.yaml")
+        ).resolve()
+        # Cached per file version: every robot built from the same files shares one map
+        # object, and with it the planner graph and the anchor path table.
+        try:
+            stamp = (map_path.stat().st_mtime_ns, anchors_path.stat().st_mtime_ns)
+        except OSError as exc:
+            raise MapError(f"cannot read map files: {exc}") from exc
+        grid, anchors = _load_cached(map_path, anchors_path, stamp)
         return cls(office, grid, anchors, clock, seed, localize=localize, start=start)
 
     @property
@@ -182,24 +213,22 @@ class NavigatorRobot(RobotBase):
     def _explain_unreachable(self, a: str, b: str) -> None:
         """Re-plan the one pair to raise UnreachableError with the planner's reason."""
         start, goal = self.anchors[a], self.anchors[b]
-        self._navigator.planner.plan((start.x, start.y), (goal.x, goal.y))
+        self._map_planner.plan((start.x, start.y), (goal.x, goal.y))
         raise UnreachableError(f"no path from {a} to {b}")
 
     def _anchor_path(self, a: str, b: str) -> Path | None:
-        if (a, b) not in self._paths:
-            names = list(self.anchors)
-            start = self.anchors[a]
-            paths = self._navigator.planner.plan_many(
-                (start.x, start.y), [(self.anchors[n].x, self.anchors[n].y) for n in names]
-            )
-            for name, path in zip(names, paths, strict=True):
-                self._paths[(a, name)] = path
-                if path is not None and (name, a) not in self._paths:
+        start, goal = _xy(self.anchors[a]), _xy(self.anchors[b])
+        if (start, goal) not in self._paths:
+            ends = [_xy(anchor) for anchor in self.anchors.values()]
+            paths = self._map_planner.plan_many(start, ends)
+            for end, path in zip(ends, paths, strict=True):
+                self._paths[(start, end)] = path
+                if path is not None and (end, start) not in self._paths:
                     reverse = Path(
                         path.points[::-1].copy(), path.length_m, path.cost, path.grid_cells
                     )
-                    self._paths[(name, a)] = reverse
-        return self._paths[(a, b)]
+                    self._paths[(end, start)] = reverse
+        return self._paths[(start, goal)]
 
     def plan_to(self, location_id: str) -> Path:
         """The path the robot would take from where it is to ``location_id``."""
@@ -240,8 +269,11 @@ class NavigatorRobot(RobotBase):
         self._navigator.set_world(self._grid.with_data(data))
 
     def clear_obstacles(self) -> None:
+        """Remove the dropped obstacles from the world and from what the robot remembers."""
         self._obstacles.clear()
         self._navigator.set_world(self._grid)
+        self._navigator.planner = self._map_planner
+        self._navigator.costmap = self._map_planner.costmap
 
     def _obstacle_points(self) -> FloatArray:
         points = []

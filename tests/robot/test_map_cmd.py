@@ -1,0 +1,34 @@
+"""``assistantx map render`` writes a PNG of the map, anchors, path and particles."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib.image as mpimg
+import numpy as np
+import pytest
+
+from assistantx.cli import main
+
+
+def test_render_with_path_and_particles(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "office.png"
+    code = main(["map", "render", "--out", str(out), "--path", "desk_01,desk_02", "--particles"])
+    assert code == 0
+    assert "path 4.00 m" in capsys.readouterr().out
+    image = mpimg.imread(out)
+    assert image.shape[0] > 300
+    assert image.shape[1] > 500
+    # Blue path, red particles and green anchors are drawn on the grey map.
+    rgb = image[..., :3]
+    assert np.any((rgb[..., 2] > 0.6) & (rgb[..., 0] < 0.3))
+    assert np.any((rgb[..., 0] > 0.7) & (rgb[..., 1] < 0.4) & (rgb[..., 2] < 0.4))
+
+
+def test_render_errors(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "x.png"
+    assert main(["map", "render", "--out", str(out), "--path", "desk_01"]) == 2
+    assert main(["map", "render", "--out", str(out), "--path", "desk_01,attic"]) == 1
+    assert "'attic' is not a place on the map" in capsys.readouterr().out
+    assert main(["map", "render", "--out", str(out), "--map", str(tmp_path / "no.yaml")]) == 1
+    assert not out.exists()
