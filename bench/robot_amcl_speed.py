@@ -31,7 +31,11 @@ class LoopAmcl:
         self.field = LikelihoodField(grid, params)
 
     def update(
-        self, particles: list[list[float]], odom_prev: np.ndarray, odom_now: np.ndarray, scan: LaserScan
+        self,
+        particles: list[list[float]],
+        odom_prev: np.ndarray,
+        odom_now: np.ndarray,
+        scan: LaserScan,
     ) -> tuple[list[list[float]], tuple[float, float, float]]:
         p, rng, grid = self.params, self.rng, self.grid
         dx, dy = odom_now[0] - odom_prev[0], odom_now[1] - odom_prev[1]
@@ -40,10 +44,14 @@ class LoopAmcl:
         rot2 = odom_now[2] - odom_prev[2] - rot1
         weights = []
         step = max(1, (len(scan.ranges) - 1) // (p.max_beams - 1))
-        beams = [(float(scan.ranges[i]), float(scan.angles[i])) for i in range(0, len(scan.ranges), step)]
+        beams = [
+            (float(scan.ranges[i]), float(scan.angles[i])) for i in range(0, len(scan.ranges), step)
+        ]
         for particle in particles:
             r1 = rot1 - rng.normal(0, math.sqrt(p.alpha1 * rot1**2 + p.alpha2 * trans**2))
-            t = trans - rng.normal(0, math.sqrt(p.alpha3 * trans**2 + p.alpha4 * (rot1**2 + rot2**2)))
+            t = trans - rng.normal(
+                0, math.sqrt(p.alpha3 * trans**2 + p.alpha4 * (rot1**2 + rot2**2))
+            )
             r2 = rot2 - rng.normal(0, math.sqrt(p.alpha1 * rot2**2 + p.alpha2 * trans**2))
             particle[0] += t * math.cos(particle[2] + r1)
             particle[1] += t * math.sin(particle[2] + r1)
@@ -81,7 +89,9 @@ class LoopAmcl:
         return out, (sx, sy, math.atan2(ss, sc))
 
 
-def time_vectorized(grid: OccupancyMap, n: int, scan: LaserScan, pose: np.ndarray, reps: int) -> float:
+def time_vectorized(
+    grid: OccupancyMap, n: int, scan: LaserScan, pose: np.ndarray, reps: int
+) -> float:
     params = AmclParams(min_particles=n, max_particles=n)
     rng = np.random.default_rng(1)
     pf = ParticleFilter(grid, params, rng)
