@@ -1,0 +1,108 @@
+"""Start ``python -m assistantx serve`` as a real subprocess on a free 127.0.0.1 port."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+import httpx
+
+HERE = Path(__file__).resolve().parent
+OPERATOR = "operator-token-for-tests-0001"
+LEE = "lee-token-for-tests-00000001"
+ZHANG = "zhang-token-for-tests-000001"
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def base_env(data_dir: Path, **extra: str) -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
+    env.update(
+        {
+            "ASSISTANTX_DATA_DIR": str(data_dir),
+            "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
+            "ASSISTANTX_TOKENS": json.dumps({LEE: "lee", ZHANG: "zhang"}),
+            "ASSISTANTX_SPEEDUP": "50",
+            "ASSISTANTX_REASONER_BUILDER": "stapler_reasoner:build_factory",
+            "PYTHONPATH": str(HERE),
+        }
+    )
+    env.update(extra)
+    return env
+
+
+@dataclass
+class Server:
+    process: subprocess.Popen[bytes]
+    url: str
+    log: Path
+
+    def kill(self) -> None:
+        self.process.send_signal(signal.SIGKILL)
+        self.process.wait(10)
+
+    def stop(self) -> None:
+        if self.process.poll() is None:
+            self.process.terminate()
+            try:
+                self.process.wait(10)
+            except subprocess.TimeoutExpired:
+                self.kill()
+
+
+def start(args: list[str], env: Mapping[str, str], port: int, timeout_s: float = 20.0) -> Server:
+    log = Path(env["ASSISTANTX_DATA_DIR"]).parent / f"server-{port}-{time.monotonic_ns()}.log"
+    with log.open("wb") as out:  # the child keeps its own copy of the descriptor
+        process = subprocess.Popen(args, env=dict(env), stdout=out, stderr=subprocess.STDOUT)
+    url = f"http://127.0.0.1:{port}"
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if process.poll() is not None:
+            raise RuntimeError(f"server exited with {process.returncode}:\n{log.read_text()}")
+        try:
+            if httpx.get(f"{url}/readyz", timeout=1).status_code == 200:
+                return Server(process, url, log)
+        except httpx.TransportError:
+            pass
+        time.sleep(0.1)
+    process.kill()
+    raise RuntimeError("server did not become ready")
+
+
+def serve(data_dir: Path, port: int, **extra: str) -> Server:
+    cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1", "--port", str(port)]
+    return start(cmd, base_env(data_dir, **extra), port)
+
+
+def sse(
+    client: httpx.Client, path: str, token: str, last_id: int | None = None
+) -> Iterator[tuple[int, str, dict[str, object]]]:
+    """Yield (id, event, data) from an SSE endpoint until the server ends the stream."""
+    headers = {"Authorization": f"Bearer {token}"}
+    if last_id is not None:
+        headers["Last-Event-ID"] = str(last_id)
+    with client.stream("GET", path, headers=headers, timeout=30) as response:
+        assert response.status_code == 200, response.read()
+        event_id, kind, data = 0, "", ""
+        for line in response.iter_lines():
+            if line.startswith("id: "):
+                event_id = int(line[4:])
+            elif line.startswith("event: "):
+                kind = line[7:]
+            elif line.startswith("data: "):
+                data = line[6:]
+            elif line == "" and data:
+                yield event_id, kind, json.loads(data)
+                data = ""

@@ -1,0 +1,116 @@
+"""A deterministic stand-in for the embedded reasoner, for the service's end-to-end tests.
+
+It fetches a stapler for the requester: asks the known owners in order (skipping those memory
+believes unavailable), and once one agrees runs the hand-over. Its decisions depend only on
+the instruction's memory, so a resumed instruction decides the same actions again.
+Used until ``assistantx.symbolic.build_factory`` exists; loaded through
+``ASSISTANTX_REASONER_BUILDER=stapler_reasoner:build_factory``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from assistantx.actions import Action, Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.memory.updates import AvailabilityUpdate, MemoryUpdate
+from assistantx.ppdr.agents import AgentContext, Reasoner
+from assistantx.trace import (
+    ActionResult,
+    AgentCall,
+    Decision,
+    Observation,
+    Percept,
+    Plan,
+    Reflection,
+    SubGoal,
+)
+
+
+def _done(ctx: AgentContext, kind: str, **match: str) -> bool:
+    for r in ctx.stm.trace.actions():
+        a = r.action
+        if r.ok and a.type == kind and all(getattr(a, k) == v for k, v in match.items()):
+            return True
+    return False
+
+
+class StaplerReasoner(Reasoner):
+    name = "stapler"
+
+    def _lender(self, ctx: AgentContext) -> str | None:
+        for turn in ctx.stm.dialogue:
+            if turn.direction == "in" and turn.person != ctx.stm.requester:
+                return turn.person
+        return None
+
+    async def perceive(self, ctx: AgentContext) -> Percept:
+        ctx.record(AgentCall(agent="perception", latency_s=0.001))
+        return Percept(summary="a stapler for the requester", items=["stapler"])
+
+    async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
+        return Plan(goal="bring a stapler", subgoals=[SubGoal(description="find a lender")])
+
+    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
+        me = ctx.stm.requester
+        lender = self._lender(ctx)
+        actions: list[Action]
+        if lender is None:
+            asked = {t.person for t in ctx.stm.dialogue if t.direction == "out" and t.question_id}
+            owners = [
+                o
+                for o in ctx.ltm.owners("stapler")
+                if o != me and ctx.ltm.availability(o) != "unavailable"
+            ]
+            todo = [o for o in owners if o not in asked]
+            if not todo:
+                actions = [Stop(outcome="unachievable", summary="Nobody can lend a stapler.")]
+            else:
+                actions = [
+                    Inquire(contact=todo[0], question="Could you lend me your stapler?"),
+                    Wait(reason="their answer", timeout_s=60),
+                ]
+        elif not _done(ctx, "wait_in_place", person=lender):
+            if not _done(ctx, "send_qr", contact=lender):
+                actions = [
+                    Inform(contact=lender, content="The robot is coming for your stapler."),
+                    Move(place=lender),
+                    SendQR(contact=lender, item=f"stapler:{lender}"),
+                ]
+            else:
+                actions = [WaitInPlace(person=lender)]
+        elif not _done(ctx, "wait_in_place", person=me):
+            if not _done(ctx, "send_qr", contact=me):
+                actions = [
+                    Move(place=me),
+                    SendQR(contact=me, item=f"stapler:{lender}", purpose="collect"),
+                ]
+            else:
+                actions = [WaitInPlace(person=me)]
+        else:
+            actions = [Stop(outcome="done", summary=f"{lender}'s stapler is in your hands.")]
+        return Decision(thought="stapler", actions=actions)
+
+    async def reflect(
+        self,
+        ctx: AgentContext,
+        percept: Percept,
+        plan: Plan,
+        decision: Decision,
+        results: list[ActionResult],
+        observed: Observation,
+    ) -> Reflection:
+        updates: list[MemoryUpdate] = []
+        for r in results:
+            if r.action.type == "wait" and not r.ok:
+                asked = [a for a in decision.actions if isinstance(a, Inquire)]
+                for a in asked:
+                    updates.append(
+                        AvailabilityUpdate(person=a.contact, available=False, evidence="no answer")
+                    )
+        ok = all(r.ok for r in results)
+        return Reflection(verdict="Y" if ok else "N", reason="stapler", updates=updates)
+
+
+def build_factory(office: Any, settings: Any) -> Callable[[], Reasoner]:
+    return StaplerReasoner

@@ -1,0 +1,100 @@
+"""The real server as a subprocess: an L2 instruction over REST, its SSE stream, the built-in
+messenger's transcripts, and a kill -9 mid-instruction followed by a restart that finishes
+the instruction once, with no message or QR code sent twice."""
+
+from __future__ import annotations
+
+from collections import Counter
+from pathlib import Path
+
+import httpx
+from server import LEE, OPERATOR, free_port, serve, sse
+
+AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
+AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
+
+
+def _submit(client: httpx.Client) -> str:
+    r = client.post(
+        "/v1/instructions",
+        json={"requester": "lee", "text": "Please bring me a stapler."},
+        headers=AUTH_LEE,
+    )
+    assert r.status_code == 202, r.text
+    assert r.headers["location"] == f"/v1/instructions/{r.json()['id']}"
+    return str(r.json()["id"])
+
+
+def _transcript(client: httpx.Client, person: str) -> list[dict[str, object]]:
+    r = client.get(f"/v1/chats/dm/{person}", headers=AUTH_OP)
+    assert r.status_code == 200
+    return list(r.json())
+
+
+def test_l2_instruction_over_rest_with_sse_and_transcripts(tmp_path: Path) -> None:
+    port = free_port()
+    server = serve(tmp_path / "data", port, ASSISTANTX_SIM_UNAVAILABLE="wang")
+    try:
+        with httpx.Client(base_url=server.url, timeout=10) as client:
+            iid = _submit(client)
+            kinds = [kind for _, kind, _ in sse(client, f"/v1/instructions/{iid}/events", LEE)]
+            assert kinds[0] == "instruction_started" and kinds[-1] == "instruction_ended"
+            body = client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json()
+            assert body["status"] == "done" and body["outcome"] == "done"
+            asked = [
+                s["results"][0]["action"]["contact"]
+                for s in body["trace"]["steps"]
+                if s["results"] and s["results"][0]["action"]["type"] == "inquire"
+            ]
+            assert asked == ["wang", "zhang"]  # wang (first known owner) never answered
+            memory = client.get("/v1/people/wang", headers=AUTH_LEE).json()
+            assert memory["available"] == "unavailable"
+            zhang = _transcript(client, "zhang")
+            assert [m["direction"] for m in zhang][:2] == ["out", "in"]
+            lee = _transcript(client, "lee")
+            assert str(lee[-1]["text"]).startswith("[done]")
+    finally:
+        server.stop()
+
+
+def test_kill_mid_instruction_then_restart_finishes_once(tmp_path: Path) -> None:
+    port = free_port()
+    server = serve(tmp_path / "data", port, ASSISTANTX_SIM_UNAVAILABLE="wang")
+    last = 0
+    try:
+        with httpx.Client(base_url=server.url, timeout=10) as client:
+            iid = _submit(client)
+            for event_id, kind, data in sse(client, f"/v1/instructions/{iid}/events", LEE):
+                last = event_id
+                result = data["data"].get("result", {})  # type: ignore[union-attr]
+                if kind == "action_result" and result["action"]["type"] == "send_qr":
+                    break  # zhang holds a code and the robot waits at her desk: kill now
+    finally:
+        server.kill()
+
+    server = serve(tmp_path / "data", port, ASSISTANTX_SIM_UNAVAILABLE="wang")
+    try:
+        with httpx.Client(base_url=server.url, timeout=10) as client:
+            ready = client.get("/readyz").json()
+            assert iid in ready["resumed"]
+            rest = list(sse(client, f"/v1/instructions/{iid}/events", LEE, last_id=last))
+            assert rest and rest[-1][1] == "instruction_ended"
+            assert all(event_id > last for event_id, _, _ in rest)
+            body = client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json()
+            assert body["status"] == "done", body["summary"]
+            messages = _transcript(client, "zhang") + _transcript(client, "lee")
+            outbound = Counter(
+                (m["chat"]["id"], m["text"])  # type: ignore[index]
+                for m in messages
+                if m["direction"] == "out"
+            )
+            assert outbound and max(outbound.values()) == 1, outbound
+            qr = [m for m in messages if m["attachments"] and m["direction"] == "out"]
+            codes = [m for m in qr if "one-time code" in str(m["text"])]
+            assert sorted(m["chat"]["id"] for m in codes) == ["lee", "zhang"]  # type: ignore[index]
+            done = [m for m in messages if str(m["text"]).startswith("[done]")]
+            assert len(done) == 1
+            ended = client.get(f"/v1/instructions/{iid}/events", headers=AUTH_OP).text
+            assert ended.count("event: instruction_ended") == 1
+    finally:
+        server.stop()
