@@ -37,7 +37,7 @@ from assistantx.trace import (
     TraceStep,
 )
 from fakes.fixtures import scripted_llm  # noqa: F401
-from fakes.scripted_llm import ScriptedLLM
+from fakes.scripted_llm import Reply, ScriptedLLM
 
 PLAN = Plan(goal="get Lee a stapler", subgoals=[SubGoal(description="ask an owner")])
 
@@ -356,3 +356,21 @@ async def test_reasoners_share_one_model_opened_by_the_first_closed_by_the_last(
     assert factory.model.started
     await lazy.stop()
     assert not factory.model.started
+
+
+async def test_a_server_without_usage_gives_estimated_counts(
+    office: Office,
+    factory: LLMReasonerFactory,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    scripted_llm.script("perception", Reply(content='{"summary": "nothing yet"}', usage=None))
+    reasoner = factory()
+    ctx = context(office)
+    await reasoner.perceive(ctx)
+    await reasoner.stop()
+
+    (call,) = ctx.calls
+    assert call.estimated is True
+    sent = sum(len(m["content"]) for m in scripted_llm.requests[0].messages)
+    assert call.prompt_tokens == -(-sent // 4)  # about four characters per token
+    assert call.completion_tokens == -(-len('{"summary": "nothing yet"}') // 4)
