@@ -51,6 +51,11 @@ class PurePursuit:
     params: DriveParams = field(default_factory=DriveParams)
     _progress: int = 0
 
+    @property
+    def remaining(self) -> FloatArray:
+        """The part of the path not yet passed."""
+        return self.path[self._progress :]
+
     def command(self, pose: FloatArray) -> tuple[float, float, bool]:
         """(v m/s, w rad/s, done) for the robot at ``pose``."""
         p = self.params

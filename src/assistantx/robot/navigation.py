@@ -99,6 +99,7 @@ class Navigator:
         self.filter: ParticleFilter | None = None
         if localize:
             self.filter = ParticleFilter(grid, self.params.amcl, rng)
+            # The base starts docked at a known place: a tight initial cloud (10 cm, 1.8 deg).
             self.filter.initialize(self.base.true_pose, (0.01, 0.01, 0.001))
             self.filter.update(self.base.odom_pose, self.lidar.scan(self.base.true_pose, rng))
         self.tracking: list[TrackingSample] = []
@@ -213,7 +214,7 @@ class Navigator:
         points = points[unmapped]
         if points.size == 0:
             return None
-        ahead = controller.path[controller._progress :]
+        ahead = controller.remaining
         travelled = np.r_[0.0, np.cumsum(np.hypot(*np.diff(ahead, axis=0).T))]
         ahead = ahead[travelled <= self.params.block_lookahead_m]
         clearance = self.params.inflation.robot_radius + 0.05
