@@ -1,0 +1,97 @@
+"""Who and where is relevant to a goal, from the milestones and the office's truth.
+
+An action that reaches nobody and nothing in these sets is redundant (DESIGN §5). The sets
+are generous on purpose: everyone who could fill a part of the goal in truth (every owner of
+a stapler, every guard of the printer), the requester, the groups the requester is in, and
+every place where the robot could meet one of them.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from assistantx.office import Office
+from assistantx.sim.goals import parse_milestone
+
+# product type → facility operation that makes it
+_PRODUCT_OPERATION = {
+    "coffee": "coffee",
+    "water": "water",
+    "snack": "vend",
+    "printout": "print",
+    "copy": "copy",
+}
+
+
+def _owner(item: str) -> str:
+    return item.partition(":")[2]
+
+
+def _type(item: str) -> str:
+    return item.partition(":")[0]
+
+
+def _guards(office: Office, operation: str) -> set[str]:
+    return {g for f in office.facilities if operation in f.operations for g in f.guards}
+
+
+def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) -> set[str]:
+    people = {requester}
+    people.update(g.id for g in office.groups if requester in g.members)
+    for milestone in goal:
+        name, args = parse_milestone(milestone)
+        match name:
+            case "holds":
+                person, item = args
+                people.add(person)
+                people.update(_item_people(office, item))
+            case "signed":
+                people.update((_owner(args[0]), args[1]))
+            case "sealed":
+                people.add(_owner(args[0]))
+                people.update(office.owners_of("seal"))
+            case "printed":
+                people.add(_owner(args[0]))
+                people.update(_guards(office, "print"))
+            case "copied":
+                people.add(_owner(args[0]))
+                people.update(_guards(office, "copy"))
+            case "heated":
+                people.add(_owner(args[0]))
+                people.update(_item_people(office, args[0]))
+                people.update(_guards(office, "heat"))
+            case "received":
+                people.update((args[0], _owner(args[1])))
+            case "made":
+                people.update(_item_people(office, args[0]))
+            case "informed":
+                people.add(args[0])
+    return {p for p in people if p}
+
+
+def _item_people(office: Office, item: str) -> set[str]:
+    """Who could hand this item over: its owner(s), or the guards that make or keep it."""
+    item_type, owner = _type(item), _owner(item)
+    found: set[str] = set()
+    if item_type in _PRODUCT_OPERATION:
+        found.update(_guards(office, _PRODUCT_OPERATION[item_type]))
+        if item_type == "copy":
+            found.add(owner)
+        return found
+    found.update(office.owners_of(item_type) if owner == "*" else [owner])
+    for person in list(found):
+        if person == "*" or not any(p.id == person for p in office.people):
+            continue
+        for o in office.person(person).owns:
+            if o.type == item_type and o.at is not None:  # kept at a facility (the fridge)
+                found.update(g for f in office.facilities if f.location == o.at for g in f.guards)
+    return found
+
+
+def relevant_places(office: Office, people: set[str]) -> set[str]:
+    places: set[str] = set()
+    for p in office.people:
+        if p.id in people:
+            places.add(p.location)
+            places.update(f.location for f in office.facilities if p.id in f.guards)
+    return places
