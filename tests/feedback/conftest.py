@@ -1,0 +1,10 @@
+from __future__ import annotations
+
+import pytest
+
+from assistantx.office import Office, load_office
+
+
+@pytest.fixture(scope="session")
+def office() -> Office:
+    return load_office()
