@@ -110,4 +110,9 @@ def load_matrix_config(path: Path | str) -> MatrixConfig:
     try:
         return MatrixConfig.model_validate(raw)
     except ValidationError as exc:
-        raise MessengerError(f"{path}: invalid Matrix config: {exc}") from exc
+        problems = "; ".join(
+            f"{'.'.join(str(part) for part in error['loc']) or 'config'}: {error['msg']}"
+            for error in exc.errors(include_url=False, include_input=False)
+        )
+        # Not chained: pydantic's own message repeats the input, tokens included.
+        raise MessengerError(f"{path}: invalid Matrix config: {problems}") from None
