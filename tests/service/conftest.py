@@ -1,0 +1,44 @@
+"""An in-process app served by a real uvicorn server on 127.0.0.1, with an httpx client."""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import AsyncIterator
+from pathlib import Path
+
+import httpx
+import pytest
+import uvicorn
+from server import LEE, OPERATOR, ZHANG, free_port
+
+from assistantx.service.app import create_app
+from assistantx.settings import Settings
+
+
+@pytest.fixture
+async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
+    import json
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    settings = Settings(
+        data_dir=tmp_path / "data",
+        operator_token=OPERATOR,
+        tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
+        speedup=50,
+        reasoner_builder="stapler_reasoner:build_factory",
+        max_body_bytes=4096,
+    )
+    port = free_port()
+    server = uvicorn.Server(
+        uvicorn.Config(create_app(settings), host="127.0.0.1", port=port, log_level="warning")
+    )
+    task = asyncio.create_task(server.serve())
+    for _ in range(500):  # uvicorn offers no event for "listening"
+        if server.started:
+            break
+        await asyncio.sleep(0.02)
+    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+        yield client
+    server.should_exit = True
+    await task
