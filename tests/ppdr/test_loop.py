@@ -48,12 +48,14 @@ async def _run(
         sim.register_instruction(stm.instruction_id, stm.requester)
 
     assistant.on_instruction_start(register)
+    await sim.locker.start()
     await assistant.start()
     try:
         stm = await assistant.submit("lee", "bring me Zhang's stapler")
         stm = await assistant.wait(stm.instruction_id)
     finally:
         await assistant.stop()
+        await sim.locker.stop()
     return stm, sim, scripted
 
 
@@ -74,6 +76,7 @@ L1_STAPLER: list[Step] = [
 async def test_scripted_l1_reaches_the_goal_and_tells_the_requester(office: Office) -> None:
     stm, sim, _ = await _run(office, list(L1_STAPLER))
     assert stm.trace.outcome == "done"
+    assert all(r.ok for r in stm.trace.actions()), [r.observation for r in stm.trace.actions()]
     assert sim.world.check({"holds": ["lee", "stapler:zhang"]})
     last = sim.messenger.sent[-1]
     assert last.chat.id == "lee" and last.text.startswith("[done]")

@@ -74,7 +74,7 @@ def render_short_term(stm: ShortTermMemory, *, last_steps: int = 6) -> str:
         for r in step.results:
             status = "refused" if r.refused else ("ok" if r.ok else "failed")
             lines.append(
-                f"- step {step.index}: {r.action.signature()} -> {status}: {r.observation}"
+                f"- step {step.index}: {r.action.signature()} -> {status}: {quote(r.observation)}"
             )
         if step.reflection:
             lines.append(
