@@ -2,53 +2,15 @@
 
 from __future__ import annotations
 
-import ipaddress
 import socket
-from typing import Any
 
 import pytest
 
-_real_connect = socket.socket.connect
-_real_connect_ex = socket.socket.connect_ex
-_real_getaddrinfo = socket.getaddrinfo
-
-
-def _is_local(address: Any) -> bool:
-    if isinstance(address, (str, bytes)):  # AF_UNIX path
-        return True
-    host = address[0]
-    if host in ("localhost", "", None):
-        return True
-    try:
-        return ipaddress.ip_address(host).is_loopback
-    except ValueError:
-        return False
-
-
-class NetworkAccessError(AssertionError):
-    """A test tried to reach beyond the loopback interface."""
-
-
-def _guarded_connect(self: socket.socket, address: Any) -> None:
-    if not _is_local(address):
-        raise NetworkAccessError(f"test tried to connect to {address!r}; only 127.0.0.1 allowed")
-    _real_connect(self, address)
-
-
-def _guarded_connect_ex(self: socket.socket, address: Any) -> int:
-    if not _is_local(address):
-        raise NetworkAccessError(f"test tried to connect to {address!r}; only 127.0.0.1 allowed")
-    return _real_connect_ex(self, address)
-
-
-def _guarded_getaddrinfo(host: Any, *args: Any, **kwargs: Any) -> Any:
-    if host not in (None, "localhost") and not _is_local((host, 0)):
-        raise NetworkAccessError(f"test tried to resolve {host!r}; only 127.0.0.1 allowed")
-    return _real_getaddrinfo(host, *args, **kwargs)
+from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 
 @pytest.fixture(autouse=True)
 def _no_network(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(socket.socket, "connect", _guarded_connect)
-    monkeypatch.setattr(socket.socket, "connect_ex", _guarded_connect_ex)
-    monkeypatch.setattr(socket, "getaddrinfo", _guarded_getaddrinfo)
+    monkeypatch.setattr(socket.socket, "connect", guarded_connect)
+    monkeypatch.setattr(socket.socket, "connect_ex", guarded_connect_ex)
+    monkeypatch.setattr(socket, "getaddrinfo", guarded_getaddrinfo)

@@ -1,7 +1,8 @@
 import socket
 
 import pytest
-from conftest import NetworkAccessError
+
+from netguard import NetworkAccessError
 
 
 def test_connect_beyond_loopback_fails() -> None:
