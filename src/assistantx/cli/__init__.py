@@ -22,6 +22,7 @@ COMMAND_MODULES = [
     "assistantx.cli.llm_cmd",
     "assistantx.cli.serve_cmd",
     "assistantx.cli.dataset_cmd",
+    "assistantx.cli.eval_cmd",
 ]
 
 
