@@ -3,8 +3,8 @@
 Computed, not asked. The requester's errand is the robot's errand seen from their desk: from
 their desk to every place the robot went to for the instruction (people's desks and
 facilities, in the order the robot first reached them), and back to their desk. Each leg is
-measured with ``distance(a, b)``: over the map's planner (``NavigatorRobot.path_distance``)
-where the map is known, else the office's straight-line ``Office.distance`` (and the figure
+measured with ``distance(a, b)``: over the map's planner (``PlannedDistance``) where the
+map is known, else the office's straight-line ``Office.distance`` (and the figure
 says which it used). The robot's distance is what it actually drove for the instruction,
 summed from its move results.
 
@@ -16,20 +16,59 @@ from __future__ import annotations
 
 import itertools
 import logging
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Literal
 
 from pydantic import BaseModel, Field
 
 from assistantx.actions import Move
-from assistantx.errors import RobotError
+from assistantx.adapters.robot.navigator import NavigatorRobot
+from assistantx.errors import RobotError, UnreachableError
 from assistantx.office import Office
+from assistantx.robot.anchors import Anchor
+from assistantx.robot.planner import GridPlanner
 from assistantx.trace import Trace
 
 logger = logging.getLogger(__name__)
 
 DistanceFn = Callable[[str, str], float]
 DistanceMethod = Literal["map", "straight-line"]
+
+
+class PlannedDistance:
+    """``distance(a, b)``: metres along the map planner's path from a's anchor to b's.
+
+    Each leg is planned from its own start (one Dijkstra per start, cached): smoothed grid
+    paths are not symmetric, and a cache filled in whatever order the robot happened to drive
+    would make the same walk measure differently from one day to the next.
+    """
+
+    def __init__(self, planner: GridPlanner, anchors: Mapping[str, Anchor]) -> None:
+        self._planner = planner
+        self._anchors = dict(anchors)
+        self._from: dict[str, dict[str, float | None]] = {}
+
+    @classmethod
+    def of_robot(cls, robot: NavigatorRobot) -> PlannedDistance:
+        return cls(robot.navigator.planner, robot.anchors)
+
+    def __call__(self, a: str, b: str) -> float:
+        for place in (a, b):
+            if place not in self._anchors:
+                raise UnreachableError(f"{place!r} is not a place on the map")
+        if a not in self._from:
+            start = self._anchors[a]
+            names = list(self._anchors)
+            paths = self._planner.plan_many(
+                (start.x, start.y), [(self._anchors[n].x, self._anchors[n].y) for n in names]
+            )
+            self._from[a] = {
+                n: None if p is None else p.length_m for n, p in zip(names, paths, strict=True)
+            }
+        length = self._from[a][b]
+        if length is None:
+            raise UnreachableError(f"no path from {a} to {b}")
+        return length
 
 
 class WalkingEstimate(BaseModel):
