@@ -56,7 +56,7 @@ class MethodBuilder:
         elif spec.method != "optimal":
             try:
                 self._shared = reasoner_factory(spec.reasoner, office, settings)
-            except ImportError as exc:
+            except (ImportError, AttributeError) as exc:
                 raise ReasonerError(
                     f"the {spec.reasoner} reasoner is not available: {exc}"
                 ) from exc
