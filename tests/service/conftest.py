@@ -9,24 +9,22 @@ from pathlib import Path
 import httpx
 import pytest
 import uvicorn
-from server import LEE, OPERATOR, ZHANG, free_port
 
 from assistantx.service.app import create_app
 from assistantx.settings import Settings
+from service.server import LEE, OPERATOR, ZHANG, free_port
 
 
 @pytest.fixture
 async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
     import json
-    import sys
 
-    sys.path.insert(0, str(Path(__file__).parent))
     settings = Settings(
         data_dir=tmp_path / "data",
         operator_token=OPERATOR,
         tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
         speedup=50,
-        reasoner_builder="stapler_reasoner:build_factory",
+        reasoner_builder="service.stapler_reasoner:build_factory",
         max_body_bytes=4096,
     )
     port = free_port()

@@ -4,7 +4,7 @@ It fetches a stapler for the requester: asks the known owners in order (skipping
 believes unavailable), and once one agrees runs the hand-over. Its decisions depend only on
 the instruction's memory, so a resumed instruction decides the same actions again.
 Used until ``assistantx.symbolic.build_factory`` exists; loaded through
-``ASSISTANTX_REASONER_BUILDER=stapler_reasoner:build_factory``.
+``ASSISTANTX_REASONER_BUILDER=service.stapler_reasoner:build_factory`` (with tests/ on PYTHONPATH).
 """
 
 from __future__ import annotations

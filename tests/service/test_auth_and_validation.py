@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import httpx
-from server import LEE, OPERATOR, ZHANG
+
+from service.server import LEE, OPERATOR, ZHANG
 
 OP = {"Authorization": f"Bearer {OPERATOR}"}
 AS_LEE = {"Authorization": f"Bearer {LEE}"}

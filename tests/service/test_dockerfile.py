@@ -8,7 +8,8 @@ import sys
 from pathlib import Path
 
 import httpx
-from server import OPERATOR, base_env, free_port, start
+
+from service.server import OPERATOR, base_env, free_port, start
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -8,7 +8,8 @@ from collections import Counter
 from pathlib import Path
 
 import httpx
-from server import LEE, OPERATOR, free_port, serve, sse
+
+from service.server import LEE, OPERATOR, free_port, serve, sse
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}

@@ -1,0 +1,75 @@
+"""The SQLite journal: instructions, events, messages with idempotency, state, bad files."""
+
+from __future__ import annotations
+
+from datetime import UTC, datetime
+from pathlib import Path
+
+import pytest
+
+from assistantx.adapters.messenger.base import ChatRef, InboundMessage, OutboundMessage
+from assistantx.errors import JournalError
+from assistantx.journal import Journal
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.ppdr.events import TraceEvent
+from assistantx.trace import Trace
+
+
+def _stm(iid: str = "ins-1") -> ShortTermMemory:
+    trace = Trace(instruction_id=iid, requester="lee", text="t", reasoner="x", started_at=1.0)
+    return ShortTermMemory(instruction_id=iid, requester="lee", text="t", trace=trace)
+
+
+def test_instruction_lifecycle_survives_reopening(tmp_path: Path) -> None:
+    path = tmp_path / "j.sqlite3"
+    journal = Journal.open(path)
+    journal.create_instruction("ins-1", "lee", "t", 1.0)
+    event = TraceEvent(instruction_id="ins-1", kind="step_started", time=2.0, step=0)
+    seq = journal.record(event, stm=_stm(), status="running", states={"w": {"a": 1}})
+    journal.close()
+    journal = Journal.open(path)
+    record = journal.instruction("ins-1")
+    assert record is not None and record.status == "running" and record.stm is not None
+    assert [r.seq for r in journal.events("ins-1")] == [seq]
+    assert journal.state("w") == {"a": 1}
+    assert [r.id for r in journal.unfinished()] == ["ins-1"]
+    journal.close()
+
+
+def test_listing_filters_and_pages_newest_first(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    for n in range(5):
+        journal.create_instruction(f"ins-{n}", "lee" if n % 2 else "zhang", "t", float(n))
+    first = journal.instructions(limit=2)
+    assert [r.id for r in first] == ["ins-4", "ins-3"]
+    rest = journal.instructions(after_seq=first[-1].seq, limit=10)
+    assert [r.id for r in rest] == ["ins-2", "ins-1", "ins-0"]
+    assert [r.id for r in journal.instructions(requester="lee")] == ["ins-3", "ins-1"]
+    assert journal.count_by_status() == {"queued": 5}
+
+
+def test_outbound_keys_and_inbound_event_ids_deduplicate(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    message = OutboundMessage(chat=ChatRef(kind="dm", id="lee"), text="hi", idempotency_key="k1")
+    first = journal.record_outbound(message, "assistant", 1.0)
+    journal.mark_sent(first.seq, "m-1")
+    again = journal.record_outbound(message, "assistant", 2.0)
+    assert again.seq == first.seq and again.status == "sent"
+    inbound = InboundMessage(
+        platform="p",
+        event_id="e1",
+        chat=ChatRef(kind="dm", id="lee"),
+        sender="lee",
+        text="yo",
+        time=datetime.fromtimestamp(3, tz=UTC),
+    )
+    assert journal.record_inbound(inbound) is not None
+    assert journal.record_inbound(inbound) is None
+    assert [m.direction for m in journal.messages(ChatRef(kind="dm", id="lee"))] == ["out", "in"]
+
+
+def test_a_file_that_is_not_a_journal_is_a_clear_error(tmp_path: Path) -> None:
+    path = tmp_path / "j.sqlite3"
+    path.write_bytes(b"this is not sqlite" * 100)
+    with pytest.raises(JournalError, match="not a usable journal"):
+        Journal.open(path)
