@@ -29,7 +29,7 @@ export function authHeaders(extra = {}) {
 
 /** FastAPI errors carry "detail": a string, or a list of validation errors. */
 function describe(status, body) {
-  const detail = body && typeof body === "object" ? body.detail ?? body.error ?? body.message : body;
+  const detail = body && typeof body === "object" ? body.message ?? body.detail ?? body.error : body;
   if (Array.isArray(detail)) {
     return detail.map((d) => `${(d.loc ?? []).slice(1).join(".") || "body"}: ${d.msg}`).join("; ");
   }

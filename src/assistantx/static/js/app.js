@@ -1,1 +1,291 @@
-export {};
+// The dashboard: wires the panels to the REST API and to the live event stream (/v1/events).
+// Every trace event schedules one refresh of what it may have changed; a slow poll catches
+// what has no trace event (a colleague typing, the operator elsewhere), and the robot is
+// polled quickly while an instruction runs so its marker moves smoothly.
+
+import { api, onUnauthorized, token } from "./api.js";
+import { ChatsPanel } from "./chats.js";
+import { $, badge, clock, h, replace } from "./dom.js";
+import { showEvaluation } from "./evaluation.js";
+import { LockerPanel } from "./locker.js";
+import { MapView } from "./map.js";
+import { readMemory } from "./memory.js";
+import { PeoplePanel } from "./people.js";
+import { follow } from "./stream.js";
+import { renderTrace } from "./timeline.js";
+
+const ROBOT_POLL_BUSY_MS = 400;
+const ROBOT_POLL_IDLE_MS = 3000;
+const SLOW_POLL_MS = 4000;
+const REFRESH_DEBOUNCE_MS = 200;
+const FINAL = new Set(["done", "failed", "unachievable", "cancelled"]);
+
+const state = { memory: null, instructions: [], selected: null, stream: null, started: false, busy: false };
+
+// -- messages to the user ------------------------------------------------------------------
+const banner = $("#banner");
+function showBanner(text, kind = "warning") {
+  banner.textContent = text;
+  banner.className = `banner${kind === "error" ? " error" : ""}`;
+  banner.hidden = false;
+}
+function hideBanner() {
+  banner.hidden = true;
+}
+function reportError(text) {
+  showBanner(text, "error");
+}
+function setConnection(kind, text) {
+  const el = $("#connection");
+  el.dataset.state = kind;
+  $("#connection-text").textContent = text;
+}
+
+// -- the token -----------------------------------------------------------------------------
+const dialog = $("#token-dialog");
+function askToken(reason) {
+  $("#token-input").value = "";
+  if (reason) showBanner(reason, "error");
+  if (!dialog.open) dialog.showModal();
+}
+$("#token-button").addEventListener("click", () => askToken());
+$("#token-cancel").addEventListener("click", () => dialog.close());
+$("#token-form").addEventListener("submit", () => {
+  const value = $("#token-input").value.trim();
+  if (!value) return;
+  token.set(value);
+  hideBanner();
+  start();
+});
+onUnauthorized(() => askToken("The token was refused. Enter a valid API token."));
+
+// -- tabs (WAI-ARIA tabs pattern: arrow keys move between tabs) ------------------------------
+const tabs = [...document.querySelectorAll('[role="tab"]')];
+function selectTab(tab) {
+  for (const t of tabs) {
+    const selected = t === tab;
+    t.setAttribute("aria-selected", String(selected));
+    t.tabIndex = selected ? 0 : -1;
+    document.getElementById(t.getAttribute("aria-controls")).hidden = !selected;
+  }
+  tab.focus();
+  if (tab.id === "tab-evaluation" && state.started) showEvaluation($("#evaluation"));
+}
+tabs.forEach((tab, n) => {
+  tab.addEventListener("click", () => selectTab(tab));
+  tab.addEventListener("keydown", (event) => {
+    const step = { ArrowRight: 1, ArrowLeft: -1 }[event.key];
+    if (step) selectTab(tabs[(n + step + tabs.length) % tabs.length]);
+    if (event.key === "Home") selectTab(tabs[0]);
+    if (event.key === "End") selectTab(tabs.at(-1));
+  });
+});
+
+// -- panels --------------------------------------------------------------------------------
+const mapView = new MapView($("#map"));
+$("#show-particles").addEventListener("change", (e) => {
+  mapView.showParticles = e.target.checked;
+  mapView.draw();
+});
+$("#show-labels").addEventListener("change", (e) => {
+  mapView.showLabels = e.target.checked;
+  mapView.draw();
+});
+
+const people = new PeoplePanel($("#people-table tbody"), $("#learned"), {
+  onChanged: () => refreshMemory(),
+  onError: reportError,
+});
+const chats = new ChatsPanel({
+  select: $("#chat-select"),
+  transcript: $("#transcript"),
+  form: $("#reply-form"),
+  sender: $("#reply-sender"),
+  text: $("#reply-text"),
+  status: $("#reply-status"),
+}, { onError: reportError });
+const locker = new LockerPanel($("#locker-state"), $("#codes"), {
+  onChanged: () => refreshLocker(),
+  onError: reportError,
+  announce: (text) => { $("#robot-status").textContent = text; },
+});
+
+// -- data ----------------------------------------------------------------------------------
+async function refreshMemory() {
+  state.memory = readMemory(await api("/v1/memory"));
+  people.render(state.memory);
+  mapView.setPeople(state.memory.people);
+  chats.setMemory(state.memory);
+  fillRequesters();
+}
+
+function fillRequesters() {
+  const select = $("#submit-requester");
+  const keep = select.value;
+  replace(select, state.memory.people.map((p) => h("option", { value: p.id }, p.name)));
+  if (keep) select.value = keep;
+}
+
+async function refreshInstructions() {
+  const page = await api("/v1/instructions?limit=50");
+  state.instructions = page.items;
+  state.busy = page.items.some((i) => !FINAL.has(i.status));
+  const list = $("#instruction-list");
+  replace(list, page.items.length ? page.items.map((ins) => h("li", {},
+    h("button", {
+      type: "button",
+      "aria-current": ins.id === state.selected ? "true" : "false",
+      dataset: { id: ins.id, status: ins.status },
+      onclick: () => select(ins.id),
+    },
+    h("span", { class: "meta" }, badge(ins.status), ins.outcome && ins.outcome !== ins.status ? badge(ins.outcome) : null,
+      `${nameOf(ins.requester)} · ${clock(ins.created_at)} · ${ins.steps} steps`),
+    h("span", {}, ins.text))))
+    : h("li", { class: "hint" }, "No instructions yet."));
+}
+
+function nameOf(id) {
+  return state.memory?.people.find((p) => p.id === id)?.name ?? id;
+}
+
+async function refreshSelected() {
+  if (!state.selected) return;
+  const detail = await api(`/v1/instructions/${encodeURIComponent(state.selected)}`);
+  renderTrace($("#trace-header"), $("#timeline"), detail);
+}
+
+async function select(id) {
+  state.selected = id;
+  await Promise.all([refreshInstructions(), refreshSelected()]);
+}
+
+async function refreshLocker() {
+  await locker.refresh();
+}
+
+async function refreshRobot() {
+  const robot = await api("/v1/robot");
+  mapView.setRobot(robot);
+  const place = robot.place ? (state.memory?.places[robot.place] ?? robot.place) : null;
+  $("#robot-status").textContent = robot.moving
+    ? `Robot: driving${robot.goal ? ` (for ${robot.goal})` : ""}`
+    : `Robot: at ${place ?? "an unnamed spot"}, ${robot.odometer_m.toFixed(1)} m driven`;
+}
+
+async function refreshAll() {
+  await Promise.all([refreshInstructions(), refreshSelected(), refreshMemory(), chats.refresh(), refreshLocker(), refreshRobot()]);
+}
+
+// Coalesce bursts of events into one refresh; never two refreshes at once.
+let refreshTimer = null;
+let refreshing = null;
+function scheduleRefresh() {
+  clearTimeout(refreshTimer);
+  refreshTimer = setTimeout(async () => {
+    await refreshing;
+    refreshing = refreshAll().catch(handleError);
+    await refreshing;
+    refreshing = null;
+  }, REFRESH_DEBOUNCE_MS);
+}
+
+function handleError(err) {
+  if (err?.status === 401) return; // the token dialog is open
+  if (err?.status === 0) return; // the stream's reconnect handles a down server
+  reportError(err?.message ?? String(err));
+}
+
+// -- live stream, polling ------------------------------------------------------------------
+function startStream() {
+  state.stream?.stop();
+  state.stream = follow("/v1/events", {
+    onEvent: (message) => {
+      let event;
+      try {
+        event = JSON.parse(message.data);
+      } catch {
+        return;
+      }
+      if (event.kind === "instruction_started" && !state.selected) state.selected = event.instruction_id;
+      scheduleRefresh();
+    },
+    onState: (kind, detail) => {
+      if (kind === "live") {
+        setConnection("live", "Live");
+        if (!banner.classList.contains("error")) hideBanner();
+        scheduleRefresh(); // catch up on what changed while away
+      } else if (kind === "connecting") {
+        setConnection("reconnecting", "Connecting…");
+      } else if (kind === "reconnecting") {
+        const seconds = detail.delayMs ? Math.ceil(detail.delayMs / 1000) : 0;
+        setConnection("down", "Disconnected");
+        showBanner(`Connection to the assistant lost${detail.problem ? ` (${detail.problem})` : ""}. Reconnecting${seconds ? ` in ${seconds} s` : ""} (attempt ${detail.attempt})…`);
+      } else if (kind === "unauthorized") {
+        setConnection("down", "Not signed in");
+        askToken("The token was refused. Enter a valid API token.");
+      }
+    },
+  });
+}
+
+let robotTimer = null;
+function pollRobot() {
+  clearTimeout(robotTimer);
+  refreshRobot()
+    .catch(() => {})
+    .finally(() => {
+      robotTimer = setTimeout(pollRobot, state.busy ? ROBOT_POLL_BUSY_MS : ROBOT_POLL_IDLE_MS);
+    });
+}
+
+let slowTimer = null;
+function slowPoll() {
+  clearTimeout(slowTimer);
+  slowTimer = setTimeout(() => {
+    if (!document.hidden) scheduleRefresh();
+    slowPoll();
+  }, SLOW_POLL_MS);
+}
+
+// -- submitting ----------------------------------------------------------------------------
+$("#submit-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  const requester = $("#submit-requester").value;
+  const text = $("#submit-text").value.trim();
+  const status = $("#submit-status");
+  if (!text) return;
+  status.textContent = "Submitting…";
+  try {
+    const created = await api("/v1/instructions", { method: "POST", body: { requester, text } });
+    status.textContent = `Submitted as ${created.id}.`;
+    $("#submit-text").value = "";
+    state.busy = true;
+    await select(created.id);
+    pollRobot();
+  } catch (err) {
+    status.textContent = "";
+    reportError(`Not submitted: ${err.message}`);
+  }
+});
+
+// -- start-up ------------------------------------------------------------------------------
+async function start() {
+  if (!token.get()) {
+    askToken();
+    return;
+  }
+  try {
+    await refreshMemory();
+    await mapView.load().catch((err) => reportError(`Map unavailable: ${err.message}`));
+    await refreshAll();
+  } catch (err) {
+    handleError(err);
+    if (err?.status === 401) return;
+  }
+  state.started = true;
+  startStream();
+  pollRobot();
+  slowPoll();
+}
+
+start();

@@ -6,7 +6,6 @@
 
 import { authHeaders } from "./api.js";
 
-const SCALE = 1.6; // canvas pixels per map cell: room for legible labels
 const COLOURS = {
   robot: "#6a1b9a",
   path: "#0b5cad",
@@ -15,7 +14,7 @@ const COLOURS = {
   label: "#1b1f24",
   available: "#1e7d3c",
   unavailable: "#b3261e",
-  unknown: "#8a94a3",
+  unknown: "#5f6b7a",
 };
 
 export class MapView {
@@ -28,6 +27,23 @@ export class MapView {
     this.people = [];
     this.showParticles = true;
     this.showLabels = true;
+    this.scale = 1; // canvas pixels per map cell
+    this.unit = 1; // canvas pixels per CSS pixel: marks and labels keep their on-screen size
+    // The canvas backing store follows its on-screen size, so labels stay sharp and legible.
+    new ResizeObserver(() => this.resize()).observe(canvas.parentElement);
+  }
+
+  resize() {
+    if (!this.info) return;
+    const unit = window.devicePixelRatio || 1;
+    const cssWidth = this.canvas.parentElement.clientWidth || this.info.width;
+    const width = Math.round(cssWidth * unit);
+    if (width === this.canvas.width && unit === this.unit) return;
+    this.unit = unit;
+    this.scale = width / this.info.width;
+    this.canvas.width = width;
+    this.canvas.height = Math.round(this.info.height * this.scale);
+    this.draw();
   }
 
   async load() {
@@ -39,16 +55,15 @@ export class MapView {
     if (!imageResponse.ok) throw new Error(`map image: HTTP ${imageResponse.status}`);
     this.image = await createImageBitmap(await imageResponse.blob());
     this.info = info;
-    this.canvas.width = Math.round(info.width * SCALE);
-    this.canvas.height = Math.round(info.height * SCALE);
+    this.canvas.width = 0; // force resize() to size the backing store
+    this.resize();
     this.canvas.dataset.ready = "true";
-    this.draw();
   }
 
   /** World metres to canvas pixels. */
   toPixel(x, y) {
     const { resolution, origin, height } = this.info;
-    return [((x - origin[0]) / resolution) * SCALE, (height - (y - origin[1]) / resolution) * SCALE];
+    return [((x - origin[0]) / resolution) * this.scale, (height - (y - origin[1]) / resolution) * this.scale];
   }
 
   setRobot(state) {
@@ -77,22 +92,28 @@ export class MapView {
   }
 
   drawAnchors() {
-    const { ctx } = this;
-    ctx.font = "11px system-ui, sans-serif";
+    const { ctx, unit: u } = this;
+    ctx.font = `${11 * u}px system-ui, sans-serif`;
     ctx.textBaseline = "middle";
+    ctx.textAlign = "center";
     for (const anchor of Object.values(this.info.anchors)) {
       const [px, py] = this.toPixel(anchor.x, anchor.y);
       ctx.fillStyle = COLOURS.anchor;
-      ctx.fillRect(px - 2, py - 2, 4, 4);
+      ctx.fillRect(px - 2 * u, py - 2 * u, 4 * u, 4 * u);
       if (this.showLabels) {
+        // A white halo keeps the label readable over walls.
+        ctx.lineWidth = 3 * u;
+        ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
+        ctx.strokeText(anchor.name, px, py - 10 * u);
         ctx.fillStyle = COLOURS.label;
-        ctx.fillText(anchor.name, px + 5, py - 8);
+        ctx.fillText(anchor.name, px, py - 10 * u);
       }
     }
+    ctx.textAlign = "start";
   }
 
   drawPeople() {
-    const { ctx } = this;
+    const { ctx, unit: u } = this;
     const atPlace = new Map();
     for (const person of this.people) {
       const anchor = this.info.anchors[person.place];
@@ -101,15 +122,15 @@ export class MapView {
       atPlace.set(person.place, n + 1);
       let [px, py] = this.toPixel(anchor.x, anchor.y);
       // Several people at one place (a facility's guards) sit side by side.
-      px += 14 + n * 20;
-      py += 10;
+      px += (n - 0.5) * 20 * u;
+      py += 14 * u;
       ctx.beginPath();
-      ctx.arc(px, py, 8, 0, 2 * Math.PI);
+      ctx.arc(px, py, 9 * u, 0, 2 * Math.PI);
       ctx.fillStyle = person.available === true ? COLOURS.available
         : person.available === false ? COLOURS.unavailable : COLOURS.unknown;
       ctx.fill();
       ctx.fillStyle = "#ffffff";
-      ctx.font = "bold 9px system-ui, sans-serif";
+      ctx.font = `bold ${9 * u}px system-ui, sans-serif`;
       ctx.textAlign = "center";
       ctx.fillText(initials(person.name || person.id), px, py + 0.5);
       ctx.textAlign = "start";
@@ -119,14 +140,14 @@ export class MapView {
   drawParticles() {
     const particles = this.robot?.particles;
     if (!particles?.length) return;
-    const { ctx } = this;
+    const { ctx, unit: u } = this;
     ctx.strokeStyle = COLOURS.particle;
-    ctx.lineWidth = 1;
+    ctx.lineWidth = u;
     ctx.beginPath();
     for (const [x, y, yaw] of particles) {
       const [px, py] = this.toPixel(x, y);
       ctx.moveTo(px, py);
-      ctx.lineTo(px + 6 * Math.cos(yaw), py - 6 * Math.sin(yaw));
+      ctx.lineTo(px + 6 * u * Math.cos(yaw), py - 6 * u * Math.sin(yaw));
     }
     ctx.stroke();
   }
@@ -134,10 +155,10 @@ export class MapView {
   drawPath() {
     const path = this.robot?.path;
     if (!path?.length) return;
-    const { ctx } = this;
+    const { ctx, unit: u } = this;
     ctx.strokeStyle = COLOURS.path;
-    ctx.lineWidth = 3;
-    ctx.setLineDash([8, 5]);
+    ctx.lineWidth = 3 * u;
+    ctx.setLineDash([8 * u, 5 * u]);
     ctx.beginPath();
     path.forEach(([x, y], i) => {
       const [px, py] = this.toPixel(x, y);
@@ -151,22 +172,22 @@ export class MapView {
   drawRobot() {
     const pose = this.robot?.pose;
     if (!pose) return;
-    const { ctx } = this;
+    const { ctx, unit: u } = this;
     const [px, py] = this.toPixel(pose.x, pose.y);
     const yaw = pose.yaw ?? 0;
     // A disc with a nose pointing along the heading (canvas y grows downwards: -sin).
     ctx.beginPath();
-    ctx.arc(px, py, 11, 0, 2 * Math.PI);
+    ctx.arc(px, py, 11 * u, 0, 2 * Math.PI);
     ctx.fillStyle = COLOURS.robot;
     ctx.fill();
     ctx.strokeStyle = "#ffffff";
-    ctx.lineWidth = 2;
+    ctx.lineWidth = 2 * u;
     ctx.stroke();
     ctx.beginPath();
     ctx.moveTo(px, py);
-    ctx.lineTo(px + 16 * Math.cos(yaw), py - 16 * Math.sin(yaw));
+    ctx.lineTo(px + 16 * u * Math.cos(yaw), py - 16 * u * Math.sin(yaw));
     ctx.strokeStyle = "#ffffff";
-    ctx.lineWidth = 3;
+    ctx.lineWidth = 3 * u;
     ctx.stroke();
     // Where the marker is, in canvas pixels, for tests and assistive summaries.
     this.canvas.dataset.robot = `${px.toFixed(1)},${py.toFixed(1)}`;

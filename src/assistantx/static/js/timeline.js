@@ -2,7 +2,7 @@
 // results, the reflection's verdict and reason, memory updates, and the agents' token use and
 // latency. Renders the Trace model (src/assistantx/trace.py) as the API returns it.
 
-import { badge, clock, duration, h, replace } from "./dom.js";
+import { badge, clock, duration, h, keepScrolledToEnd, replace } from "./dom.js";
 
 /** "inform(contact=lee, content=…)" from an action object. */
 export function describeAction(action) {
@@ -117,5 +117,7 @@ export function renderTrace(headerEl, timelineEl, instruction) {
     total && total.calls ? h("p", { class: "usage" },
       `${total.calls} agent calls · ${total.prompt_tokens} prompt + ${total.completion_tokens} completion tokens · ${duration(total.latency_s)} in agents`) : null);
   const steps = trace?.steps ?? [];
-  replace(timelineEl, steps.length ? steps.map(stepItem) : h("li", { class: "hint" }, "No steps yet."));
+  // Follow new steps as they arrive, unless the reader scrolled back to an earlier one.
+  keepScrolledToEnd(timelineEl, () =>
+    replace(timelineEl, steps.length ? steps.map(stepItem) : h("li", { class: "hint" }, "No steps yet.")));
 }

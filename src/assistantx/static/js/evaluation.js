@@ -1,0 +1,63 @@
+// The evaluation tab: the newest run's summary table (from its summary.md, whose tables and
+// headings are rendered here without any HTML from the file) and its charts.
+
+import { api, authHeaders } from "./api.js";
+import { h, replace } from "./dom.js";
+
+function cells(line) {
+  return line.trim().replace(/^\|/, "").replace(/\|$/, "").split("|").map((c) => c.trim().replace(/\*\*/g, ""));
+}
+
+/** A small Markdown subset: headings, pipe tables, paragraphs. Anything else stays text. */
+export function renderMarkdown(text) {
+  const out = [];
+  const lines = text.split(/\r?\n/);
+  for (let i = 0; i < lines.length; i++) {
+    const line = lines[i];
+    const heading = /^(#{1,4})\s+(.*)$/.exec(line);
+    if (heading) {
+      out.push(h(`h${Math.min(6, heading[1].length + 2)}`, {}, heading[2]));
+    } else if (line.trim().startsWith("|") && /^\s*\|?[\s:|-]+\|?\s*$/.test(lines[i + 1] ?? "")) {
+      const head = cells(line);
+      const body = [];
+      i += 2;
+      while (i < lines.length && lines[i].trim().startsWith("|")) body.push(cells(lines[i++]));
+      i -= 1;
+      out.push(h("div", { class: "table-wrap" }, h("table", {},
+        h("thead", {}, h("tr", {}, head.map((c) => h("th", { scope: "col" }, c)))),
+        h("tbody", {}, body.map((row) => h("tr", {}, row.map((c, n) => (n === 0 ? h("th", { scope: "row" }, c) : h("td", {}, c)))))))));
+    } else if (line.trim()) {
+      out.push(h("p", {}, line.replace(/[*`_]/g, "")));
+    }
+  }
+  return out;
+}
+
+async function chart(url) {
+  const response = await fetch(url, { headers: authHeaders() });
+  if (!response.ok) throw new Error(`HTTP ${response.status}`);
+  return URL.createObjectURL(await response.blob());
+}
+
+export async function showEvaluation(container) {
+  replace(container, h("p", { class: "hint" }, "Loading…"));
+  let run;
+  try {
+    run = await api("/v1/evaluation/latest");
+  } catch (err) {
+    replace(container, h("p", {}, err.status === 404 ? `No evaluation yet: ${err.message}. Run "assistantx eval".` : `Cannot load the evaluation: ${err.message}`));
+    return;
+  }
+  const figures = await Promise.all(run.charts.map(async (url) => {
+    const name = decodeURIComponent(url.split("/").pop()).replace(/\.png$/, "").replace(/[_-]+/g, " ");
+    try {
+      return h("figure", {}, h("img", { src: await chart(url), alt: `Chart: ${name}` }), h("figcaption", {}, name));
+    } catch (err) {
+      return h("figure", {}, h("figcaption", {}, `${name}: ${err.message}`));
+    }
+  }));
+  replace(container,
+    h("p", { class: "hint" }, `Run ${run.run}, written ${new Date(run.modified * 1000).toLocaleString()}`),
+    run.markdown ? renderMarkdown(run.markdown) : h("pre", {}, JSON.stringify(run.summary, null, 2)),
+    figures.length ? [h("h3", {}, "Charts"), h("div", { class: "charts" }, figures)] : null);
+}
