@@ -1,5 +1,6 @@
-"""The dashboard's own routes over a real uvicorn server: the page, the map and its PNG (checked
-against the map file through the documented world→pixel transform), and evaluation results."""
+"""The dashboard's own routes on the real app over a real uvicorn server: the page, the map and
+its PNG (checked against the map file through the documented world→pixel transform), evaluation
+results, and the locker codes with the operator's simulated scan."""
 
 from __future__ import annotations
 
@@ -16,21 +17,18 @@ import httpx
 import numpy as np
 import pytest
 import uvicorn
-from fastapi import Depends, FastAPI, Header, HTTPException
 from matplotlib.image import imread
 
 from assistantx.adapters.robot.navigator import DEFAULT_MAP
 from assistantx.office import load_office
 from assistantx.robot.anchors import load_anchors
 from assistantx.robot.occupancy_map import load_map
-from assistantx.service.dashboard import dashboard_router, mount_static, occupancy_grey
+from assistantx.service.app import create_app
+from assistantx.service.dashboard import occupancy_grey
+from assistantx.settings import Settings
 
-TOKEN = "test-token-0123456789"
-
-
-def _require_token(authorization: str | None = Header(default=None)) -> None:
-    if authorization != f"Bearer {TOKEN}":
-        raise HTTPException(401, "missing or invalid token")
+TOKEN = "operator-token-for-dashboard-tests"
+LEE_TOKEN = "lee-token-for-dashboard-tests-01"
 
 
 def _free_port() -> int:
@@ -41,21 +39,19 @@ def _free_port() -> int:
 
 
 @contextlib.asynccontextmanager
-async def serve(
-    results_dir: Path, map_yaml: Path = DEFAULT_MAP
-) -> AsyncIterator[httpx.AsyncClient]:
-    app = FastAPI()
-    app.include_router(
-        dashboard_router(
-            load_office(),
-            results_dir,
-            map_yaml=map_yaml,
-            dependencies=[Depends(_require_token)],
-        )
+async def serve(tmp_path: Path, **overrides: object) -> AsyncIterator[httpx.AsyncClient]:
+    settings = Settings(
+        data_dir=tmp_path / "data",
+        results_dir=tmp_path / "results",
+        operator_token=TOKEN,
+        tokens=json.dumps({LEE_TOKEN: "lee"}),
+        people="human",
+        speedup=200,
+        reasoner_builder="service.stapler_reasoner:build_factory",
+        **overrides,
     )
-    mount_static(app)
     config = uvicorn.Config(
-        app, host="127.0.0.1", port=_free_port(), lifespan="off", log_level="warning", ws="none"
+        create_app(settings), host="127.0.0.1", port=_free_port(), log_level="warning", ws="none"
     )
     server = uvicorn.Server(config)
     task = asyncio.create_task(server.serve())
@@ -67,6 +63,7 @@ async def serve(
         async with httpx.AsyncClient(
             base_url=f"http://127.0.0.1:{config.port}",
             headers={"Authorization": f"Bearer {TOKEN}"},
+            timeout=10,
         ) as client:
             yield client
     finally:
@@ -76,7 +73,7 @@ async def serve(
 
 @pytest.fixture
 async def client(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
-    async with serve(tmp_path / "results") as c:
+    async with serve(tmp_path) as c:
         yield c
 
 
@@ -85,17 +82,24 @@ async def test_the_page_and_its_scripts_are_public(client: httpx.AsyncClient) ->
     assert page.status_code == 200
     assert page.headers["content-type"].startswith("text/html")
     assert "<title>AssistantX dashboard</title>" in page.text
-    assert '<script type="module" src="/static/js/app.js">' in page.text
-    for asset in ("/static/js/app.js", "/static/styles.css", "/static/js/map.js"):
+    assert '<script type="module" src="/js/app.js">' in page.text
+    for asset in ("/js/app.js", "/styles.css", "/js/map.js", "/js/stream.js"):
         response = await client.get(asset, headers={"Authorization": ""})
         assert response.status_code == 200, asset
-    assert (await client.get("/static/../dashboard.py")).status_code == 404
+    assert (await client.get("/../service/dashboard.py")).status_code == 404
 
 
-async def test_map_routes_need_the_token(client: httpx.AsyncClient) -> None:
-    for path in ("/v1/map", "/v1/map.png", "/v1/evaluation/latest"):
-        response = await client.get(path, headers={"Authorization": "Bearer wrong"})
+async def test_dashboard_routes_need_a_token_and_the_locker_the_operator(
+    client: httpx.AsyncClient,
+) -> None:
+    for path in ("/v1/map", "/v1/map.png", "/v1/evaluation/latest", "/v1/locker/codes"):
+        response = await client.get(path, headers={"Authorization": "Bearer wrong-token-123456"})
         assert response.status_code == 401, path
+    lee = {"Authorization": f"Bearer {LEE_TOKEN}"}
+    assert (await client.get("/v1/map", headers=lee)).status_code == 200
+    assert (await client.get("/v1/locker/codes", headers=lee)).status_code == 403
+    scan = await client.post("/v1/locker/scan", json={"code_id": "x"}, headers=lee)
+    assert scan.status_code == 403
 
 
 async def test_map_metadata_describes_the_map_file_and_names_every_place(
@@ -143,14 +147,6 @@ async def test_map_png_has_one_pixel_per_cell_with_the_top_row_last(
     assert (grey == 0).any()  # walls are there, dark
 
 
-async def test_a_missing_map_costs_the_map_view_only(tmp_path: Path) -> None:
-    async with serve(tmp_path, map_yaml=tmp_path / "nowhere.yaml") as client:
-        response = await client.get("/v1/map")
-        assert response.status_code == 503
-        assert "nowhere.yaml" in response.json()["detail"]
-        assert (await client.get("/")).status_code == 200
-
-
 def _write_run(results: Path, name: str, summary: object, mtime: float) -> Path:
     run = results / name
     run.mkdir(parents=True)
@@ -166,7 +162,7 @@ async def test_evaluation_latest_is_the_newest_summary(tmp_path: Path) -> None:
     _write_run(results, "2024-old", {"levels": {"L1": {"SR": 0.5}}}, mtime=1_000)
     _write_run(results, "2024-new", {"levels": {"L1": {"SR": 0.9}}}, mtime=2_000)
     (results / "not-a-run").mkdir()
-    async with serve(results) as client:
+    async with serve(tmp_path) as client:
         latest = (await client.get("/v1/evaluation/latest")).json()
         assert latest["run"] == "2024-new"
         assert latest["summary"] == {"levels": {"L1": {"SR": 0.9}}}
@@ -195,7 +191,7 @@ async def test_evaluation_files_are_plain_names_inside_a_run(tmp_path: Path, pat
     _write_run(results, "2024-new", {}, mtime=1_000)
     (tmp_path / "secret.png").write_bytes(b"secret")
     (results / "2024-new" / "notes.txt").write_text("not served")
-    async with serve(results) as client:
+    async with serve(tmp_path) as client:
         response = await client.get(path)
         assert response.status_code == 404
         assert b"secret" not in response.content
@@ -204,15 +200,79 @@ async def test_evaluation_files_are_plain_names_inside_a_run(tmp_path: Path, pat
 async def test_no_evaluation_yet_says_where_it_looked(client: httpx.AsyncClient) -> None:
     response = await client.get("/v1/evaluation/latest")
     assert response.status_code == 404
-    assert "results" in response.json()["detail"]
+    assert "results" in response.json()["message"]
 
 
 async def test_a_half_written_summary_is_a_clear_503(tmp_path: Path) -> None:
     results = tmp_path / "results"
     run = _write_run(results, "run-1", {}, mtime=1_000)
     (run / "summary.json").write_text('{"levels": ', encoding="utf-8")
-    async with serve(results) as client:
+    async with serve(tmp_path) as client:
         response = await client.get("/v1/evaluation/latest")
         assert response.status_code == 503
-        assert "run-1" in response.json()["detail"]
-        assert "summary.json" in response.json()["detail"]
+        assert "run-1" in response.json()["message"]
+        assert "summary.json" in response.json()["message"]
+
+
+async def _wait_for(
+    client: httpx.AsyncClient, path: str, ready: object, timeout_s: float = 20
+) -> object:
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + timeout_s
+    while loop.time() < deadline:
+        body = (await client.get(path)).json()
+        if ready(body):  # type: ignore[operator]
+            return body
+        await asyncio.sleep(0.05)
+    raise AssertionError(f"{path} never became ready: {body}")
+
+
+async def test_the_operator_plays_the_people_at_the_locker(tmp_path: Path) -> None:
+    """Human colleagues: Zhang lends the stapler over chat; the operator scans Zhang's code and
+    shuts the door (deposit), then Lee's (collect); the instruction ends done. A code scanned
+    twice is rejected by the lock as replayed."""
+    async with serve(tmp_path) as client:
+        await client.patch("/v1/people/wang", json={"available": False})
+        created = (
+            await client.post(
+                "/v1/instructions", json={"requester": "lee", "text": "a stapler please"}
+            )
+        ).json()
+        instruction = created["id"]
+
+        def asked_zhang(messages: list[dict[str, object]]) -> bool:
+            return any(m["question_id"] for m in messages)
+
+        asked = await _wait_for(client, "/v1/chats/dm/zhang", asked_zhang)
+        question = next(m["question_id"] for m in asked if m["question_id"])  # type: ignore[union-attr,index]
+        await client.post(
+            "/v1/messages",
+            json={"sender": "zhang", "text": "Yes, you can have it.", "in_reply_to": question},
+        )
+        for person in ("zhang", "lee"):
+            codes = await _wait_for(
+                client,
+                "/v1/locker/codes",
+                lambda cs, p=person: any(c["person"] == p and c["scannable"] for c in cs),
+            )
+            code = next(c for c in codes if c["person"] == person)  # type: ignore[union-attr]
+            scanned = await client.post("/v1/locker/scan", json={"code_id": code["code_id"]})
+            assert scanned.status_code == 200
+            assert scanned.json()["kind"] == "code_accepted"
+            assert scanned.json()["person"] == person
+            assert (await client.get("/v1/locker")).json()["door"] == "open"
+            again = await client.post("/v1/locker/scan", json={"code_id": code["code_id"]})
+            assert again.json()["kind"] == "code_rejected"
+            closed = await client.post("/v1/locker/close")
+            assert closed.json()["kind"] == "door_closed"
+            assert (await client.post("/v1/locker/close")).status_code == 409
+        final = await _wait_for(
+            client, f"/v1/instructions/{instruction}", lambda b: b["status"] == "done"
+        )
+        assert final["outcome"] == "done"  # type: ignore[index]
+        codes = (await client.get("/v1/locker/codes")).json()
+        assert {(c["person"], c["used"]) for c in codes} == {("zhang", True), ("lee", True)}
+        unknown = await client.post("/v1/locker/scan", json={"code_id": "no-such-code"})
+        assert unknown.status_code == 404
+        assert "no-such-code" in unknown.json()["message"]
+        assert (await client.post("/v1/locker/scan", json={"code": "x"})).status_code == 422
