@@ -37,6 +37,7 @@ CHARTS: tuple[ChartName, ...] = ("outcomes", "survey", "walking")
 class Period(BaseModel):
     start: float | None = Field(description="seconds since the epoch, inclusive")
     end: float | None = Field(description="seconds since the epoch, exclusive")
+    requester: str | None = Field(default=None, description="only this person's instructions")
 
 
 class Durations(BaseModel):
@@ -145,13 +146,21 @@ def parse_time(text: str, *, end: bool = False) -> float:
 
 # -- aggregation -------------------------------------------------------------------------------
 def load_report(
-    store: FeedbackStore, start: float | None = None, end: float | None = None, now: float = 0.0
+    store: FeedbackStore,
+    start: float | None = None,
+    end: float | None = None,
+    now: float = 0.0,
+    *,
+    requester: str | None = None,
 ) -> UsageReport:
+    """The report of the instructions that ended in [start, end) (of one requester if given)."""
     if start is not None and end is not None and end <= start:
         raise ValueError("the end of the period must come after its start")
     records = store.instructions(start, end)
+    if requester is not None:
+        records = [r for r in records if r.requester == requester]
     surveys = store.surveys([r.instruction_id for r in records])
-    return build_report(records, surveys, Period(start=start, end=end), now)
+    return build_report(records, surveys, Period(start=start, end=end, requester=requester), now)
 
 
 def build_report(

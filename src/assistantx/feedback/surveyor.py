@@ -59,6 +59,7 @@ class Surveyor:
         self.policy = policy or SurveyPolicy()
         self.poll_s = poll_s
         self._task: asyncio.Task[None] | None = None
+        self._closed = False
 
     def attach(self, assistant: Assistant) -> None:
         assistant.on_instruction_end(self.instruction_ended)
@@ -66,10 +67,13 @@ class Surveyor:
 
     # -- lifecycle (reminders in real time) ------------------------------------------------
     async def start(self) -> None:
+        self._closed = False
         if self._task is None:
             self._task = asyncio.create_task(self._remind_forever(), name="survey-reminders")
 
     async def stop(self) -> None:
+        """Stop reminding and stop taking instruction ends and replies (the store may close)."""
+        self._closed = True
         if self._task is not None:
             self._task.cancel()
             with contextlib.suppress(asyncio.CancelledError):
@@ -95,6 +99,8 @@ class Surveyor:
 
     # -- instruction end -------------------------------------------------------------------
     async def instruction_ended(self, stm: ShortTermMemory) -> None:
+        if self._closed:
+            return  # shutting down: the instruction resumes (and ends) on the next start
         now = self.clock.now()
         record = summarise(self.office, stm.trace, now, self.distance)
         self.store.put_instruction(record)
@@ -119,7 +125,7 @@ class Surveyor:
     # -- replies ---------------------------------------------------------------------------
     async def handle_message(self, message: InboundMessage) -> bool:
         """Claim a direct message that belongs to a survey (True), else leave it (False)."""
-        if message.chat.kind != "dm" or not message.text.strip():
+        if self._closed or message.chat.kind != "dm" or not message.text.strip():
             return False
         now = self.clock.now()
         parsed = parse_reply(message.text)

@@ -22,6 +22,7 @@ from assistantx.service import (
     memory,
     messages,
     metrics,
+    reports,
 )
 from assistantx.service.errors import error_body, install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
@@ -136,6 +137,7 @@ def create_app(
 
     for module in (health, instructions, events, memory, messages, devices, metrics, dashboard):
         app.include_router(module.router)
+    app.include_router(reports.router)  # also starts surveys (router lifespan)
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)

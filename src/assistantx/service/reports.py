@@ -1,0 +1,208 @@
+"""/v1/reports/usage and /v1/surveys: the usage report and the surveys behind it.
+
+Mounting this router (``app.include_router(reports.router)``) also starts the feedback part
+through the router's lifespan, which runs once the app's own lifespan has built the runtime:
+the Surveyor is attached to the Assistant (surveys after each instruction, replies taken
+before a direct message becomes an instruction, reminders every minute) and the feedback
+tables are opened in the journal's SQLite file.
+
+Endpoints (a person sees their own figures; the operator everyone's, or one person's with
+``?person=``):
+
+- ``GET /v1/reports/usage?from=&to=`` — the report as JSON
+- ``GET /v1/reports/usage.md?from=&to=`` — the Markdown summary
+- ``GET /v1/reports/usage/charts/{outcomes|survey|walking}.png?from=&to=`` — a PNG chart
+- ``GET /v1/surveys/{instruction_id}`` — one survey: state, answers, comment, replies
+
+``from``/``to``: YYYY-MM-DD (``to`` includes that day), an ISO date-time (UTC unless a zone
+is given) or epoch seconds; ``from`` inclusive, ``to`` exclusive.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+from typing import Annotated, Any
+
+from fastapi import APIRouter, FastAPI, Query, Request
+from fastapi.responses import PlainTextResponse, Response
+from pydantic import BaseModel
+
+from assistantx.adapters.robot.navigator import NavigatorRobot
+from assistantx.errors import AssistantXError
+from assistantx.feedback.report import (
+    CHARTS,
+    ChartName,
+    UsageReport,
+    load_report,
+    parse_time,
+    render_chart,
+    render_markdown,
+)
+from assistantx.feedback.store import FeedbackStore
+from assistantx.feedback.survey import Survey
+from assistantx.feedback.surveyor import Surveyor
+from assistantx.feedback.walking import DistanceFn, PlannedDistance
+from assistantx.service.auth import Principal
+from assistantx.service.deps import Caller, Runtime
+from assistantx.service.errors import NotFoundError, UnprocessableError
+from assistantx.service.runtime import JOURNAL_FILE, ServiceRuntime
+
+logger = logging.getLogger(__name__)
+
+FEEDBACK_STATE = "feedback"  # app.state attribute holding the FeedbackParts
+
+
+class FeedbackParts:
+    def __init__(self, store: FeedbackStore, surveyor: Surveyor) -> None:
+        self.store = store
+        self.surveyor = surveyor
+
+
+def map_distance(runtime: ServiceRuntime) -> DistanceFn | None:
+    """Walks over the office map's planner; straight lines when the map cannot be loaded."""
+    try:
+        robot = NavigatorRobot.from_files(runtime.office, runtime.clock, localize=False)
+    except (AssistantXError, OSError) as exc:
+        logger.warning("walking saved in straight lines: the office map is unusable (%s)", exc)
+        return None
+    return PlannedDistance.of_robot(robot)
+
+
+@asynccontextmanager
+async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+    runtime: ServiceRuntime = app.state.runtime
+    store = FeedbackStore.open(runtime.settings.data_dir / JOURNAL_FILE)
+    distance = await asyncio.to_thread(map_distance, runtime)
+    surveyor = Surveyor(runtime.office, store, runtime.messenger, runtime.clock, distance=distance)
+    surveyor.attach(runtime.assistant)
+    await surveyor.start()
+    setattr(app.state, FEEDBACK_STATE, FeedbackParts(store, surveyor))
+    try:
+        yield
+    finally:
+        await surveyor.stop()
+        store.close()
+
+
+router = APIRouter(tags=["reports"], lifespan=lifespan)
+
+
+def _feedback(request: Request) -> FeedbackParts:
+    parts: FeedbackParts | None = getattr(request.app.state, FEEDBACK_STATE, None)
+    if parts is None:
+        raise NotFoundError("reports are not enabled on this server")
+    return parts
+
+
+def _period(
+    runtime: ServiceRuntime,
+    caller: Principal,
+    start: str | None,
+    end: str | None,
+    person: str | None,
+) -> tuple[float | None, float | None, str | None]:
+    try:
+        lo = parse_time(start) if start else None
+        hi = parse_time(end, end=True) if end else None
+    except ValueError as exc:
+        raise UnprocessableError(str(exc)) from exc
+    if lo is not None and hi is not None and hi <= lo:
+        raise UnprocessableError("'to' must come after 'from'")
+    requester = runtime.resolver.person(person) if person else None  # 422 naming it
+    if not caller.is_operator:
+        if requester is not None:
+            caller.require_person(requester)
+        requester = caller.person
+    return lo, hi, requester
+
+
+_From = Annotated[str | None, Query(alias="from", max_length=40, description="start (incl.)")]
+_To = Annotated[str | None, Query(alias="to", max_length=40, description="end (excl.)")]
+_Person = Annotated[str | None, Query(max_length=100, description="operator: one person")]
+
+
+async def _report(
+    request: Request,
+    runtime: ServiceRuntime,
+    caller: Principal,
+    start: str | None,
+    end: str | None,
+    person: str | None,
+) -> UsageReport:
+    lo, hi, requester = _period(runtime, caller, start, end, person)
+    store = _feedback(request).store
+    return await asyncio.to_thread(
+        load_report, store, lo, hi, runtime.clock.now(), requester=requester
+    )
+
+
+@router.get("/v1/reports/usage", response_model=UsageReport)
+async def usage(
+    request: Request,
+    runtime: Runtime,
+    caller: Caller,
+    start: _From = None,
+    end: _To = None,
+    person: _Person = None,
+) -> UsageReport:
+    """Instructions by kind and outcome, times, group requests, survey shares, walking."""
+    return await _report(request, runtime, caller, start, end, person)
+
+
+@router.get("/v1/reports/usage.md", response_class=PlainTextResponse)
+async def usage_markdown(
+    request: Request,
+    runtime: Runtime,
+    caller: Caller,
+    start: _From = None,
+    end: _To = None,
+    person: _Person = None,
+) -> PlainTextResponse:
+    report = await _report(request, runtime, caller, start, end, person)
+    return PlainTextResponse(render_markdown(report), media_type="text/markdown; charset=utf-8")
+
+
+@router.get(
+    "/v1/reports/usage/charts/{name}.png",
+    response_class=Response,
+    responses={200: {"content": {"image/png": {}}}},
+)
+async def usage_chart(
+    request: Request,
+    name: str,
+    runtime: Runtime,
+    caller: Caller,
+    start: _From = None,
+    end: _To = None,
+    person: _Person = None,
+) -> Response:
+    if name not in CHARTS:
+        raise NotFoundError(f"no chart {name!r}; charts: {', '.join(CHARTS)}")
+    chart: ChartName = name
+    report = await _report(request, runtime, caller, start, end, person)
+    png = await asyncio.to_thread(render_chart, report, chart)
+    return Response(png, media_type="image/png", headers={"Cache-Control": "no-store"})
+
+
+class SurveyOut(BaseModel):
+    survey: Survey
+    replies: list[dict[str, Any]]
+
+
+@router.get("/v1/surveys/{instruction_id}", response_model=SurveyOut)
+async def survey(
+    request: Request, instruction_id: str, runtime: Runtime, caller: Caller
+) -> SurveyOut:
+    store = _feedback(request).store
+    found = store.survey(instruction_id)
+    if found is None:
+        raise NotFoundError(f"no survey for instruction {instruction_id!r}")
+    caller.require_person(found.person)
+    replies = [
+        {"time": t, "text": text, "effect": effect}
+        for t, text, effect in store.replies(instruction_id)
+    ]
+    return SurveyOut(survey=found, replies=replies)

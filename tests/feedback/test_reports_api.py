@@ -1,0 +1,141 @@
+"""The survey and the usage report through the real service (uvicorn on 127.0.0.1)."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from collections.abc import AsyncIterator
+from pathlib import Path
+
+import httpx
+import pytest
+import uvicorn
+
+from assistantx.service.app import create_app
+from assistantx.settings import Settings
+from service.server import LEE, OPERATOR, ZHANG, free_port
+
+AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
+AUTH_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
+AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
+
+
+@pytest.fixture
+async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
+    settings = Settings(
+        data_dir=tmp_path / "data",
+        operator_token=OPERATOR,
+        tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
+        speedup=200,
+        reasoner_builder="service.stapler_reasoner:build_factory",
+    )
+    port = free_port()
+    server = uvicorn.Server(
+        uvicorn.Config(create_app(settings), host="127.0.0.1", port=port, log_level="warning")
+    )
+    task = asyncio.create_task(server.serve())
+    for _ in range(500):
+        if server.started:
+            break
+        await asyncio.sleep(0.02)
+    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+        yield client
+    server.should_exit = True
+    await task
+
+
+async def _until(client: httpx.AsyncClient, url: str, ok: int = 200) -> httpx.Response:
+    for _ in range(400):
+        r = await client.get(url, headers=AUTH_OP)
+        if r.status_code == ok:
+            return r
+        await asyncio.sleep(0.025)
+    raise AssertionError(f"{url} never answered {ok}: {r.status_code} {r.text}")
+
+
+async def test_survey_over_the_builtin_messenger_and_the_report(api: httpx.AsyncClient) -> None:
+    r = await api.post(
+        "/v1/instructions",
+        json={"requester": "lee", "text": "Bring me a stapler"},
+        headers=AUTH_LEE,
+    )
+    assert r.status_code == 202, r.text
+    iid = r.json()["id"]
+    survey = (await _until(api, f"/v1/surveys/{iid}")).json()["survey"]
+    assert survey["state"] == "open" and survey["person"] == "lee"
+    chat = (await api.get("/v1/chats/dm/lee", headers=AUTH_LEE)).json()
+    assert any("A short survey" in m["text"] for m in chat)
+
+    # Lee answers through the built-in messenger; it is a survey reply, not an instruction.
+    r = await api.post("/v1/messages", json={"text": "y/n/?/y, quick and easy"}, headers=AUTH_LEE)
+    assert r.status_code == 202
+    for _ in range(200):
+        body = (await api.get(f"/v1/surveys/{iid}", headers=AUTH_LEE)).json()
+        if body["survey"]["state"] == "complete":
+            break
+        await asyncio.sleep(0.025)
+    assert body["survey"]["answers"] == {
+        "success": "yes",
+        "walking": "no",
+        "satisfied": "unsure",
+        "productivity": "yes",
+    }
+    assert body["survey"]["comment"] == "quick and easy"
+    assert [r["text"] for r in body["replies"]] == ["y/n/?/y, quick and easy"]
+    listed = (await api.get("/v1/instructions", headers=AUTH_OP)).json()["items"]
+    assert [i["id"] for i in listed] == [iid]
+
+    report = (await api.get("/v1/reports/usage", headers=AUTH_OP)).json()
+    assert report["instructions"]["total"] == 1
+    assert report["instructions"]["by_outcome"]["done"] == 1
+    assert report["instructions"]["by_kind"] == {"delivery": {"done": 1}}
+    assert report["surveys"]["complete"] == 1
+    walking = report["surveys"]["questions"][1]
+    assert walking["id"] == "walking" and walking["answers"]["no"] == {"count": 1, "share": 1.0}
+    assert report["walking"]["method"] == {"map": 1}
+    assert report["walking"]["by_person"]["lee"]["saved_m"] > 0
+
+    # A person sees only their own figures; Zhang has none.
+    mine = (await api.get("/v1/reports/usage", headers=AUTH_ZHANG)).json()
+    assert mine["instructions"]["total"] == 0 and mine["period"]["requester"] == "zhang"
+    assert (await api.get("/v1/reports/usage?person=lee", headers=AUTH_ZHANG)).status_code == 403
+    assert (await api.get(f"/v1/surveys/{iid}", headers=AUTH_ZHANG)).status_code == 403
+
+    # The period: ended before 'from' counts nothing; a bare 'to' date includes that day.
+    empty = (await api.get("/v1/reports/usage?from=2999-01-01", headers=AUTH_OP)).json()
+    assert empty["instructions"]["total"] == 0
+    assert empty["surveys"]["response_rate"] is None
+    dated = await api.get("/v1/reports/usage?from=2000-01-01&to=2999-12-31", headers=AUTH_OP)
+    assert dated.json()["instructions"]["total"] == 1
+
+    md = await api.get("/v1/reports/usage.md", headers=AUTH_OP)
+    assert md.headers["content-type"].startswith("text/markdown")
+    assert "| Did it save you walking? | 0 (0%) | 1 (100%) | 0 (0%) | 0 |" in md.text
+    for name in ("outcomes", "survey", "walking"):
+        png = await api.get(f"/v1/reports/usage/charts/{name}.png", headers=AUTH_OP)
+        assert png.headers["content-type"] == "image/png"
+        assert png.content.startswith(b"\x89PNG\r\n\x1a\n") and len(png.content) > 5000
+
+
+@pytest.mark.parametrize(
+    ("url", "status"),
+    [
+        ("/v1/reports/usage?from=yesterday", 422),
+        ("/v1/reports/usage?from=2025-02-01&to=2025-01-01", 422),
+        ("/v1/reports/usage?person=nobody", 422),
+        ("/v1/reports/usage/charts/pie.png", 404),
+        ("/v1/surveys/ins-unknown", 404),
+    ],
+)
+async def test_bad_requests_say_what_is_wrong(
+    api: httpx.AsyncClient, url: str, status: int
+) -> None:
+    r = await api.get(url, headers=AUTH_OP)
+    assert r.status_code == status, r.text
+    assert r.json()["message"]
+
+
+async def test_reports_need_a_token(api: httpx.AsyncClient) -> None:
+    r = await api.get("/v1/reports/usage")
+    assert r.status_code == 401
+    assert "www-authenticate" in r.headers
