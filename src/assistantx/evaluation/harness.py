@@ -171,6 +171,19 @@ def load_episodes(out: Path) -> list[Episode]:
     return episodes
 
 
+def _drop_partial_line(file: Path) -> None:
+    """An interrupted write leaves a last line without its newline: cut it off, so the next
+    episode starts on a line of its own (the cut episode is simply run again)."""
+    if not file.is_file():
+        return
+    data = file.read_bytes()
+    if data and not data.endswith(b"\n"):
+        keep = data.rfind(b"\n") + 1
+        logger.warning("dropping an unfinished last line of %s", file)
+        with file.open("r+b") as f:
+            f.truncate(keep)
+
+
 def _check_meta(config: EvalConfig) -> None:
     meta = {"method": config.method, "reasoner": config.reasoner, "tasks": str(config.tasks)}
     file = config.out / META
@@ -207,6 +220,7 @@ def evaluate(
     progress = Progress(total=len(tasks) * config.runs)
     progress.skipped = progress.total - len(todo)
     results = config.out / RESULTS
+    _drop_partial_line(results)
     with results.open("a", encoding="utf-8") as sink:
 
         def record(line: str) -> None:
