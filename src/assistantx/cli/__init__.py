@@ -23,6 +23,7 @@ COMMAND_MODULES = [
     "assistantx.cli.serve_cmd",
     "assistantx.cli.dataset_cmd",
     "assistantx.cli.eval_cmd",
+    "assistantx.cli.report_cmd",
 ]
 
 
