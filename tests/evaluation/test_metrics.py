@@ -1,4 +1,4 @@
-"""Every metric on hand-made episodes: perfect, redundant, wrong hand-over, false done, unachievable."""
+"""Every metric on hand-made episodes: perfect, redundant, wrong hand-over, false done, etc."""
 
 from __future__ import annotations
 
