@@ -1,0 +1,53 @@
+"""Reading a colleague's reply: yes, no, or unclear, by tolerant rules.
+
+Real people write "yep, got one", "nope", "sorry, not today", "no problem!"; the simulator
+writes "Yes, I have a stapler…". Both are read by the same word rules, not by matching the
+simulator's sentences. A negative marker wins over a positive one ("yes, but I can't"),
+except in the fixed phrases that are positive despite a "no" ("no problem").
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Literal
+
+Stance = Literal["yes", "no", "unclear"]
+
+_POSITIVE_PHRASES = (
+    "no problem",
+    "no worries",
+    "not a problem",
+    "why not",
+    "of course",
+    "no prob",
+)
+_NEGATIVE = re.compile(
+    r"\b(no|nope|nah|sorry|cant|cannot|dont|do not|doesnt|unable|not available|havent|"
+    r"have not|wont|will not|busy|away|not me|negative|unfortunately|afraid not|out of office|"
+    r"not here|not at my desk|lost|none)\b"
+)
+_POSITIVE = re.compile(
+    r"\b(yes|yeah|yep|yup|ya|sure|ok|okay|certainly|absolutely|definitely|will do|i have|"
+    r"i can|ive got|got one|got it|here is|heres|here you go|happy to|on my way|coming|fine|"
+    r"alright|i do|go ahead|can do|no problem|i am here|im here|count me in|ill do it|"
+    r"help with that)\b"
+)
+
+
+def _clean(text: str) -> str:
+    text = text.lower().replace("’", "'").replace("'", "")
+    return re.sub(r"\s+", " ", re.sub(r"[^a-z0-9 ]+", " ", text)).strip()
+
+
+def stance(text: str) -> Stance:
+    """Whether a reply agrees, refuses, or says neither."""
+    t = _clean(text)
+    for phrase in _POSITIVE_PHRASES:
+        t = t.replace(phrase, "no problem_ok")
+    positive = bool(_POSITIVE.search(t)) or "problem_ok" in t
+    negative = bool(_NEGATIVE.search(t.replace("no problem_ok", "")))
+    if negative:
+        return "no"
+    if positive:
+        return "yes"
+    return "unclear"

@@ -1,0 +1,451 @@
+"""Planning: a task frame split into ordered sub-goals, with the progress read from memory.
+
+Each task compiles to roles (who lends, prints, signs, receives) and phases, following the
+canonical sequences of docs/task-semantics.md:
+
+- ``Confirm(role)``: find someone for the role (ask, wait, next candidate, group chat);
+- ``Forward``: pass an electronic file on;
+- ``Handover(role, legs)``: the robot goes to the person, who uses one-time codes for each leg
+  (deposit, collect, sign, seal, copy, heat, produce).
+
+Progress is recomputed at every step from the evidence (codes used, files forwarded, answers),
+so a deviation (a refusal, a timeout, a person who did not come) re-plans by itself: the role
+loses its person and its Confirm phase is unmet again.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.adapters.lock.base import Purpose
+from assistantx.memory.graph import LongTermMemory
+from assistantx.office import Office
+from assistantx.symbolic.evidence import Evidence
+from assistantx.symbolic.frames import Task, TaskFrame
+from assistantx.symbolic.roles import Role, Roles, RoleState
+from assistantx.trace import Plan, SubGoal
+
+TaskStatus = Literal["done", "active", "unachievable", "failed"]
+
+
+@dataclass(frozen=True)
+class Leg:
+    item_type: str
+    owner_fixed: str | None  # the item's owner when the frame fixes it
+    owner_role: str | None  # else: whoever fills this role (any owner's stapler)
+    purpose: Purpose
+
+
+@dataclass(frozen=True)
+class Confirm:
+    role: Role
+
+
+@dataclass(frozen=True)
+class Forward:
+    source: str
+    target_role: Role
+    file: str
+
+
+@dataclass(frozen=True)
+class Handover:
+    role: Role
+    legs: tuple[Leg, ...]
+
+
+Phase = Confirm | Forward | Handover
+
+
+@dataclass
+class CompiledTask:
+    task: Task
+    roles: list[Role]
+    phases: list[Phase]
+
+
+@dataclass
+class PhaseView:
+    phase: Phase
+    done: bool
+    description: str
+    person: str | None = None
+    place: str | None = None
+    items: list[tuple[str, Purpose]] = field(default_factory=list)
+
+
+@dataclass
+class TaskView:
+    compiled: CompiledTask
+    states: dict[str, RoleState]
+    phases: list[PhaseView]
+    status: TaskStatus
+    reason: str = ""
+
+    @property
+    def current(self) -> PhaseView | None:
+        return next((p for p in self.phases if not p.done), None)
+
+
+@dataclass
+class Agenda:
+    frame: TaskFrame
+    tasks: list[TaskView]
+
+    @property
+    def active(self) -> TaskView | None:
+        return next((t for t in self.tasks if t.status == "active"), None)
+
+
+class Planner:
+    def __init__(self, office: Office, roles: Roles) -> None:
+        self.office = office
+        self.roles = roles
+
+    # -- compiling -----------------------------------------------------------------------
+    def compile(self, frame: TaskFrame) -> list[CompiledTask]:
+        return [self._compile(n, t, frame.requester) for n, t in enumerate(frame.tasks)]
+
+    def _facility_for(self, operation: str | None = None, product: str | None = None) -> str:
+        for f in self.office.facilities:
+            if (operation and operation in f.operations) or (product and product in f.products):
+                return f.id
+        raise LookupError(f"no facility for {operation or product}")
+
+    def _source(self, n: int, t: Task, requester: str) -> Role:
+        """Who puts the item into the locker."""
+        item_type = t.item or ""
+        kept_at = self._kept_at(t.owner, item_type)
+        if kept_at is not None:
+            keeper = next((f.id for f in self.office.facilities if f.location == kept_at), None)
+            if keeper is not None:
+                return Role(
+                    f"{n}.source",
+                    "keep",
+                    requester,
+                    item_type=item_type,
+                    item_owner=t.owner,
+                    facility=keeper,
+                )
+        if t.owner is None:
+            return Role(
+                f"{n}.source", "lend", requester, item_type=item_type, beneficiary=t.recipient
+            )
+        kind = "lend" if self.office.item_type(item_type).kind == "belonging" else "give"
+        return Role(
+            f"{n}.source",
+            kind,
+            requester,
+            fixed=t.owner,
+            item_type=item_type,
+            item_owner=t.owner,
+            beneficiary=t.recipient,
+        )
+
+    def _kept_at(self, owner: str | None, item_type: str) -> str | None:
+        if owner is None:
+            return None
+        return next((o.at for o in self.office.person(owner).owns if o.type == item_type), None)
+
+    def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
+        recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
+        phases: list[Phase] = []
+        roles: list[Role] = []
+
+        def leg(
+            item_type: str, purpose: Purpose, owner: str | None = None, role: Role | None = None
+        ) -> Leg:
+            return Leg(item_type, owner, role.key if role else None, purpose)
+
+        owner = t.owner or requester
+        item = t.item or ""
+        match t.kind:
+            case "transfer":
+                source = self._source(n, t, requester)
+                roles = [source, recipient]
+                it = leg(item, "deposit", t.owner, None if t.owner else source)
+                phases = [
+                    Handover(source, (it,)),
+                    Handover(
+                        recipient, (Leg(it.item_type, it.owner_fixed, it.owner_role, "collect"),)
+                    ),
+                ]
+            case "print":
+                guard = Role(
+                    f"{n}.printer",
+                    "print",
+                    requester,
+                    item_type="file",
+                    item_owner=owner,
+                    facility=self._facility_for("print"),
+                )
+                roles = [guard, recipient]
+                if owner != requester:
+                    roles.append(
+                        Role(
+                            f"{n}.file",
+                            "send_file",
+                            requester,
+                            fixed=owner,
+                            item_type="file",
+                            beneficiary=requester,
+                        )
+                    )
+                phases = [
+                    Forward(owner, guard, f"file:{owner}"),
+                    Handover(guard, (leg("printout", "produce", owner),)),
+                    Handover(recipient, (leg("printout", "collect", owner),)),
+                ]
+            case "copy":
+                source = self._source(n, t, requester)
+                guard = Role(
+                    f"{n}.copier",
+                    "copy",
+                    requester,
+                    item_type=item,
+                    item_owner=owner,
+                    facility=self._facility_for("copy"),
+                )
+                roles = [guard, source, recipient]
+                back: list[Phase]
+                if t.recipient == owner:
+                    back = [
+                        Handover(
+                            source, (leg(item, "collect", owner), leg("copy", "collect", owner))
+                        )
+                    ]
+                else:
+                    back = [
+                        Handover(source, (leg(item, "collect", owner),)),
+                        Handover(recipient, (leg("copy", "collect", owner),)),
+                    ]
+                phases = [
+                    Handover(source, (leg(item, "deposit", owner),)),
+                    Handover(guard, (leg(item, "copy", owner),)),
+                    *back,
+                ]
+            case "sign" | "seal":
+                source = self._source(n, t, requester)
+                doer = Role(
+                    f"{n}.{t.kind}er",
+                    t.kind,
+                    requester,
+                    fixed=t.actor,
+                    item_type=item,
+                    item_owner=owner,
+                )
+                roles = [doer, source, recipient]
+                phases = [
+                    Handover(source, (leg(item, "deposit", owner),)),
+                    Handover(doer, (leg(item, t.kind, owner),)),
+                    Handover(recipient, (leg(item, "collect", owner),)),
+                ]
+            case "produce":
+                guard = Role(
+                    f"{n}.maker",
+                    "produce",
+                    requester,
+                    item_type=item,
+                    facility=self._facility_for(product=item),
+                    beneficiary=t.recipient,
+                )
+                roles = [guard, recipient]
+                phases = [
+                    Handover(guard, (leg(item, "produce", t.recipient),)),
+                    Handover(recipient, (leg(item, "collect", t.recipient),)),
+                ]
+            case "heat":
+                source = self._source(n, t, requester)
+                heater = Role(
+                    f"{n}.heater",
+                    "heat",
+                    requester,
+                    item_type=item,
+                    item_owner=owner,
+                    facility=self._facility_for("heat"),
+                )
+                roles = [source, heater, recipient]
+                phases = [
+                    Handover(source, (leg(item, "deposit", owner),)),
+                    Handover(heater, (leg(item, "heat", owner),)),
+                    Handover(recipient, (leg(item, "collect", owner),)),
+                ]
+            case "send_file":
+                if owner != requester:
+                    roles = [
+                        Role(
+                            f"{n}.file",
+                            "send_file",
+                            requester,
+                            fixed=owner,
+                            item_type="file",
+                            beneficiary=t.recipient,
+                        )
+                    ]
+                phases = [Forward(owner, recipient, f"file:{owner}")]
+        confirms: list[Phase] = [Confirm(r) for r in roles if r.confirm]
+        return CompiledTask(t, roles, [*confirms, *phases])
+
+    # -- progress ------------------------------------------------------------------------
+    def agenda(self, frame: TaskFrame, ltm: LongTermMemory, ev: Evidence, now: float) -> Agenda:
+        views: list[TaskView] = []
+        for compiled in self.compile(frame):
+            views.append(self._view(compiled, ltm, ev, now))
+        return Agenda(frame, views)
+
+    def _view(
+        self, compiled: CompiledTask, ltm: LongTermMemory, ev: Evidence, now: float
+    ) -> TaskView:
+        states: dict[str, RoleState] = {}
+        for role in compiled.roles:
+            states[role.key] = self.roles.resolve(role, ltm, ev, now)
+        phases: list[PhaseView] = []
+        for phase in compiled.phases:
+            phases.append(self._phase(phase, states, ltm, ev))
+        # a Confirm is also done once every phase using its role is done
+        for k, view in enumerate(phases):
+            if isinstance(view.phase, Confirm) and not view.done:
+                key = view.phase.role.key
+                users = [p for p in phases[k + 1 :] if _uses(p.phase, key)]
+                view.done = bool(users) and all(p.done for p in users)
+        status: TaskStatus = "done" if all(p.done for p in phases) else "active"
+        reason = ""
+        if status == "active":
+            pending_keys = {_role_key(p.phase) for p in phases if not p.done} - {None}
+            pending_keys |= {
+                leg.owner_role
+                for p in phases
+                if not p.done and isinstance(p.phase, Handover)
+                for leg in p.phase.legs
+                if leg.owner_role
+            }
+            out = [
+                states[k] for k in pending_keys if k in states and states[k].status == "exhausted"
+            ]
+            if out:
+                moved = any(p.done and isinstance(p.phase, Handover) for p in phases)
+                status = "failed" if moved else "unachievable"
+                reason = "; ".join(self._why(s) for s in out)
+        return TaskView(compiled, states, phases, status, reason)
+
+    def _phase(
+        self, phase: Phase, states: dict[str, RoleState], ltm: LongTermMemory, ev: Evidence
+    ) -> PhaseView:
+        if isinstance(phase, Confirm):
+            state = states[phase.role.key]
+            return PhaseView(
+                phase,
+                state.bound,
+                f"find who can {phase.role.kind} ({_item_text(phase.role)})",
+                person=state.person,
+            )
+        if isinstance(phase, Forward):
+            target = states.get(phase.target_role.key)
+            person = target.person if target and target.bound else phase.target_role.fixed
+            done = any(
+                s == phase.source and f == phase.file and (person is None or t == person)
+                for s, t, f in ev.forwarded
+            )
+            return PhaseView(
+                phase, done, f"forward {phase.file} to {person or 'the helper'}", person=person
+            )
+        state = states[phase.role.key]
+        items: list[tuple[str, Purpose]] = []
+        for leg in phase.legs:
+            owner = leg.owner_fixed
+            if owner is None and leg.owner_role is not None:
+                s = states.get(leg.owner_role)
+                owner = s.person if s is not None and s.bound else None
+            if owner is None:  # whose item is not known until someone lends one
+                owner = self._used_owner(ev, leg)
+            if owner is not None:
+                items.append((f"{leg.item_type}:{owner}", leg.purpose))
+        done = len(items) == len(phase.legs) and all(ev.used(i, p) for i, p in items)
+        person = state.person if state.bound else None
+        place = self.roles.meeting_place(phase.role, person, ltm) if person else None
+        what = ", ".join(f"{p} {i}" for i, p in items) or phase.legs[0].item_type
+        return PhaseView(
+            phase,
+            done,
+            f"hand-over with {person or phase.role.kind}: {what}",
+            person=person,
+            place=place,
+            items=items,
+        )
+
+    @staticmethod
+    def _used_owner(ev: Evidence, leg: Leg) -> str | None:
+        for code in ev.codes:
+            if code.used and code.item.split(":", 1)[0] == leg.item_type:
+                return code.item.split(":", 1)[1]
+        return None
+
+    def _why(self, state: RoleState) -> str:
+        role = state.role
+        what = _item_text(role)
+        if not state.excluded and state.group is None:
+            return f"nobody in memory can {role.kind} ({what})"
+        parts = [f"{self.office.person(p).name} {why}" for p, why in state.excluded.items()]
+        if state.group is not None:
+            parts.append(f"nobody in the {self.office.group(state.group).name} group could help")
+        return f"no one could {role.kind} ({what}): " + ", ".join(parts)
+
+    # -- the Plan of the trace -----------------------------------------------------------
+    def plan_model(self, agenda: Agenda, notes: str = "") -> Plan:
+        subgoals: list[SubGoal] = []
+        for n, view in enumerate(agenda.tasks):
+            for p in view.phases:
+                subgoals.append(SubGoal(description=f"task {n + 1}: {p.description}", done=p.done))
+        subgoals.append(SubGoal(description="tell the requester the outcome", done=False))
+        goal = "; ".join(describe(t.compiled.task, self.office) for t in agenda.tasks)
+        return Plan(
+            goal=goal or "understand the request", subgoals=subgoals[:30], notes=notes[:2000]
+        )
+
+
+def _uses(phase: Phase, key: str) -> bool:
+    if isinstance(phase, Handover):
+        return phase.role.key == key or any(leg.owner_role == key for leg in phase.legs)
+    if isinstance(phase, Forward):
+        return phase.target_role.key == key
+    return False
+
+
+def _role_key(phase: Phase) -> str | None:
+    if isinstance(phase, Confirm | Handover):
+        return phase.role.key
+    return phase.target_role.key
+
+
+def _item_text(role: Role) -> str:
+    return role.item_type or "help"
+
+
+def describe(task: Task, office: Office) -> str:
+    """A short English description of a task, for plans and summaries."""
+
+    def name(person: str | None) -> str:
+        return office.person(person).name if person else "anyone"
+
+    item = office.item_type(task.item).name if task.item else "item"
+    whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
+    to = name(task.recipient)
+    match task.kind:
+        case "transfer":
+            return f"bring {whose} to {to}"
+        case "print":
+            return f"print {name(task.owner)}'s file for {to}"
+        case "copy":
+            return f"copy {whose} for {to}"
+        case "sign":
+            return f"get {whose} signed by {name(task.actor)}"
+        case "seal":
+            return f"get {whose} stamped with the seal"
+        case "produce":
+            return f"get {item} for {to}"
+        case "heat":
+            return f"heat {whose} for {to}"
+        case "send_file":
+            return f"pass {name(task.owner)}'s file to {to}"
+    return task.kind  # pragma: no cover
