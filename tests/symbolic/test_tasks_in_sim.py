@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import pytest
-from conftest import run_instruction
+from symbolic_run import run_instruction
 
 from assistantx.office import Office
 
@@ -31,11 +31,21 @@ class Case:
 CASES = [
     # fetch, any owner: nearest known owner, then the next, then the group chat
     Case("fetch L1", "bring me a stapler", [{"holds": ["lee", "stapler:*"]}], actions=9),
-    Case("fetch L2", "Could you get me a stapler?", [{"holds": ["lee", "stapler:zhang"]}],
-         ("wang",), actions=11),
+    Case(
+        "fetch L2",
+        "Could you get me a stapler?",
+        [{"holds": ["lee", "stapler:zhang"]}],
+        ("wang",),
+        actions=11,
+    ),
     Case("fetch L3", "I need a stapler", [{"holds": ["lee", "stapler:hu"]}], ("wang", "zhang")),
-    Case("fetch L3 unachievable", "bring me a stapler", [], ("wang", "zhang", "hu", "gao"),
-         outcome="unachievable"),
+    Case(
+        "fetch L3 unachievable",
+        "bring me a stapler",
+        [],
+        ("wang", "zhang", "hu", "gao"),
+        outcome="unachievable",
+    ),
     # fetch from a named owner
     Case("fetch named L1", "bring me Yang's book", [{"holds": ["lee", "book:yang"]}], actions=9),
     Case("fetch named away", "bring me Yang's book", [], ("yang",), outcome="unachievable"),
@@ -43,58 +53,129 @@ CASES = [
     Case("deliver L1", "take my book to Wang", [{"holds": ["wang", "book:lee"]}], actions=9),
     Case("deliver away", "take my book to Wang", [], ("wang",), outcome="unachievable"),
     # print: the two printer guards, then nobody
-    Case("print L1", "print my file and bring it to me",
-         [{"printed": "file:lee"}, {"holds": ["lee", "printout:lee"]}], actions=10),
-    Case("print L2", "please print my slides",
-         [{"printed": "file:lee"}, {"holds": ["lee", "printout:lee"]}], ("mao",), actions=12),
+    Case(
+        "print L1",
+        "print my file and bring it to me",
+        [{"printed": "file:lee"}, {"holds": ["lee", "printout:lee"]}],
+        actions=10,
+    ),
+    Case(
+        "print L2",
+        "please print my slides",
+        [{"printed": "file:lee"}, {"holds": ["lee", "printout:lee"]}],
+        ("mao",),
+        actions=12,
+    ),
     Case("print unachievable", "print my file", [], ("mao", "xu"), outcome="unachievable"),
     # copy
-    Case("copy L1", "make a copy of my contract",
-         [{"copied": "document:lee"}, {"holds": ["lee", "copy:lee"]},
-          {"holds": ["lee", "document:lee"]}], actions=13),
-    Case("copy L2", "photocopy my contract",
-         [{"copied": "document:lee"}, {"holds": ["lee", "copy:lee"]}], ("mao",)),
+    Case(
+        "copy L1",
+        "make a copy of my contract",
+        [
+            {"copied": "document:lee"},
+            {"holds": ["lee", "copy:lee"]},
+            {"holds": ["lee", "document:lee"]},
+        ],
+        actions=13,
+    ),
+    Case(
+        "copy L2",
+        "photocopy my contract",
+        [{"copied": "document:lee"}, {"holds": ["lee", "copy:lee"]}],
+        ("mao",),
+    ),
     # sign: only the named signer will do
-    Case("sign L1", "get Zhang to sign my contract",
-         [{"signed": ["document:lee", "zhang"]}, {"holds": ["lee", "document:lee"]}], actions=12),
+    Case(
+        "sign L1",
+        "get Zhang to sign my contract",
+        [{"signed": ["document:lee", "zhang"]}, {"holds": ["lee", "document:lee"]}],
+        actions=12,
+    ),
     Case("sign away", "get Zhang to sign my contract", [], ("zhang",), outcome="unachievable"),
     # seal: known seal owners, then the group finds Sun, whose seal memory did not know
-    Case("seal L1", "get my contract stamped with the company seal",
-         [{"sealed": "document:lee"}, {"holds": ["lee", "document:lee"]}], actions=12),
-    Case("seal L2", "get my contract stamped with the company seal",
-         [{"sealed": "document:lee"}, {"holds": ["lee", "document:lee"]}], ("wang",)),
-    Case("seal L3", "my invoice needs the official seal",
-         [{"sealed": "document:lee"}, {"holds": ["lee", "document:lee"]}], ("wang", "mao")),
-    Case("seal L3 unachievable", "get my contract stamped with the company seal", [],
-         ("wang", "mao", "sun"), outcome="unachievable"),
+    Case(
+        "seal L1",
+        "get my contract stamped with the company seal",
+        [{"sealed": "document:lee"}, {"holds": ["lee", "document:lee"]}],
+        actions=12,
+    ),
+    Case(
+        "seal L2",
+        "get my contract stamped with the company seal",
+        [{"sealed": "document:lee"}, {"holds": ["lee", "document:lee"]}],
+        ("wang",),
+    ),
+    Case(
+        "seal L3",
+        "my invoice needs the official seal",
+        [{"sealed": "document:lee"}, {"holds": ["lee", "document:lee"]}],
+        ("wang", "mao"),
+    ),
+    Case(
+        "seal L3 unachievable",
+        "get my contract stamped with the company seal",
+        [],
+        ("wang", "mao", "sun"),
+        outcome="unachievable",
+    ),
     # coffee, water, vending
     Case("coffee L1", "make me a coffee", [{"holds": ["lee", "coffee:lee"]}], actions=9),
-    Case("coffee L2", "I'd love a latte", [{"holds": ["lee", "coffee:lee"]}], ("gao",),
-         actions=11),
+    Case("coffee L2", "I'd love a latte", [{"holds": ["lee", "coffee:lee"]}], ("gao",), actions=11),
     Case("coffee unachievable", "make me a coffee", [], ("gao", "sun"), outcome="unachievable"),
     Case("water L1", "grab me a glass of water", [{"holds": ["lee", "water:lee"]}], actions=9),
-    Case("vend L1", "buy me a soda from the vending machine",
-         [{"holds": ["lee", "snack:lee"]}], actions=9),
+    Case(
+        "vend L1",
+        "buy me a soda from the vending machine",
+        [{"holds": ["lee", "snack:lee"]}],
+        actions=9,
+    ),
     # heat: fridge guard, then microwave guard
-    Case("heat L1", "heat up my lunch",
-         [{"heated": "lunch:lee"}, {"holds": ["lee", "lunch:lee"]}], actions=14),
-    Case("heat L2", "warm up my leftovers",
-         [{"heated": "lunch:lee"}, {"holds": ["lee", "lunch:lee"]}], ("chen", "hu")),
+    Case(
+        "heat L1",
+        "heat up my lunch",
+        [{"heated": "lunch:lee"}, {"holds": ["lee", "lunch:lee"]}],
+        actions=14,
+    ),
+    Case(
+        "heat L2",
+        "warm up my leftovers",
+        [{"heated": "lunch:lee"}, {"holds": ["lee", "lunch:lee"]}],
+        ("chen", "hu"),
+    ),
     # files
-    Case("forward own file", "send my slides to Zhou", [{"received": ["zhou", "file:lee"]}],
-         actions=2),
-    Case("get a file", "get Wang's report file for me", [{"received": ["lee", "file:wang"]}],
-         actions=4),
-    Case("get a file away", "get Wang's report file for me", [], ("wang",),
-         outcome="unachievable"),
+    Case(
+        "forward own file",
+        "send my slides to Zhou",
+        [{"received": ["zhou", "file:lee"]}],
+        actions=2,
+    ),
+    Case(
+        "get a file",
+        "get Wang's report file for me",
+        [{"received": ["lee", "file:wang"]}],
+        actions=4,
+    ),
+    Case("get a file away", "get Wang's report file for me", [], ("wang",), outcome="unachievable"),
     # combinations
-    Case("print and deliver", "print my file and take it to Wang",
-         [{"printed": "file:lee"}, {"holds": ["wang", "printout:lee"]}]),
-    Case("two fetches", "get me a stapler and a pen",
-         [{"holds": ["lee", "stapler:*"]}, {"holds": ["lee", "pen:*"]}]),
-    Case("heat then coffee", "Could you heat up my lunch and then make me a coffee?",
-         [{"heated": "lunch:lee"}, {"holds": ["lee", "lunch:lee"]},
-          {"holds": ["lee", "coffee:lee"]}]),
+    Case(
+        "print and deliver",
+        "print my file and take it to Wang",
+        [{"printed": "file:lee"}, {"holds": ["wang", "printout:lee"]}],
+    ),
+    Case(
+        "two fetches",
+        "get me a stapler and a pen",
+        [{"holds": ["lee", "stapler:*"]}, {"holds": ["lee", "pen:*"]}],
+    ),
+    Case(
+        "heat then coffee",
+        "Could you heat up my lunch and then make me a coffee?",
+        [
+            {"heated": "lunch:lee"},
+            {"holds": ["lee", "lunch:lee"]},
+            {"holds": ["lee", "coffee:lee"]},
+        ],
+    ),
 ]
 
 

@@ -7,7 +7,7 @@ from typing import Any
 
 import pytest
 import yaml
-from conftest import run_instruction
+from symbolic_run import run_instruction
 
 from assistantx.adapters.messenger.base import ChatRef
 from assistantx.office import Office, parse_office
@@ -73,10 +73,20 @@ def test_ambiguous_name_is_asked_about_never_guessed() -> None:
             ],
             "item_types": [{"id": "mug", "name": "mug", "synonyms": ["cup"]}],
             "people": [
-                {"id": "ann", "name": "Ann Park", "location": "d1", "handle": "@a",
-                 "owns": [{"type": "mug"}]},
-                {"id": "bo", "name": "Bo Park", "location": "d2", "handle": "@b",
-                 "owns": [{"type": "mug"}]},
+                {
+                    "id": "ann",
+                    "name": "Ann Park",
+                    "location": "d1",
+                    "handle": "@a",
+                    "owns": [{"type": "mug"}],
+                },
+                {
+                    "id": "bo",
+                    "name": "Bo Park",
+                    "location": "d2",
+                    "handle": "@b",
+                    "owns": [{"type": "mug"}],
+                },
                 {"id": "cy", "name": "Cy Lo", "location": "d3", "handle": "@c"},
             ],
             "facilities": [],

@@ -112,7 +112,9 @@ class Decider:
 
     def _handover(self, view: PhaseView, phase: Handover, ev: Evidence) -> tuple[str, list[Action]]:
         person, place = view.person, view.place
-        assert person is not None and place is not None  # its Confirm came first
+        # its Confirm phase came first, so the role has a person and a place
+        assert person is not None
+        assert place is not None
         actions: list[Action] = []
         if not self._told_for(phase.role, person, ev):
             actions.append(Inform(contact=person, content=self.roles.inform(phase.role, person)))
@@ -195,7 +197,8 @@ class Decider:
         owner = collected[0].split(":", 1)[1] if collected else task.owner
         match task.kind:
             case "transfer":
-                text = f"{who(task.recipient)} now {'have' if task.recipient == requester else 'has'} {whose(owner)} {item}"
+                verb = "have" if task.recipient == requester else "has"
+                text = f"{who(task.recipient)} now {verb} {whose(owner)} {item}"
             case "print":
                 text = (
                     f"the printout of {whose(task.owner)} file was handed to {who(task.recipient)}"
@@ -205,9 +208,15 @@ class Decider:
                     f"{whose(task.owner)} {item} and its copy were handed to {who(task.recipient)}"
                 )
             case "sign":
-                text = f"{whose(task.owner)} {item} was signed by {who(task.actor)} and handed to {who(task.recipient)}"
+                text = (
+                    f"{whose(task.owner)} {item} was signed by {who(task.actor)} "
+                    f"and handed to {who(task.recipient)}"
+                )
             case "seal":
-                text = f"{whose(task.owner)} {item} was stamped with the seal and handed to {who(task.recipient)}"
+                text = (
+                    f"{whose(task.owner)} {item} was stamped with the seal "
+                    f"and handed to {who(task.recipient)}"
+                )
             case "produce":
                 text = f"{item} was handed to {who(task.recipient)}"
             case "heat":

@@ -313,7 +313,7 @@ class InstructionParser:
                 return None
             return roles.owners.get(m.start) or (roles.source[-1] if roles.source else None)
 
-        doc = (personal or [None])[0]
+        doc: Mention | None = personal[0] if personal else None
         refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
         if doc is None and refers and previous is not None and previous.item is not None:
             if self._kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
@@ -354,7 +354,7 @@ class InstructionParser:
                 )
             ]
         if "print" in cues:
-            source = (files or personal or [None])[0]
+            source = (files or personal)[0] if files or personal else None
             return [
                 Task(
                     kind="print", item="file", owner=owner(source) or requester, recipient=recipient

@@ -37,7 +37,9 @@ def perceive(
             if state.role.facility:
                 places.append(ltm.facility_location(state.role.facility))
             shown = ", ".join(
-                f"{p}({ltm.availability(p)}{', ' + state.excluded[p] if p in state.excluded else ''})"
+                f"{p}({ltm.availability(p)}"
+                + (f", {state.excluded[p]}" if p in state.excluded else "")
+                + ")"
                 for p in candidates
             )
             notes.append(

@@ -23,7 +23,7 @@ from assistantx.memory.graph import LongTermMemory
 from assistantx.office import Office
 from assistantx.symbolic.evidence import Evidence
 from assistantx.symbolic.frames import Task, TaskFrame
-from assistantx.symbolic.roles import Role, Roles, RoleState
+from assistantx.symbolic.roles import Role, RoleKind, Roles, RoleState
 from assistantx.trace import Plan, SubGoal
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
@@ -132,7 +132,7 @@ class Planner:
             return Role(
                 f"{n}.source", "lend", requester, item_type=item_type, beneficiary=t.recipient
             )
-        kind = "lend" if self.office.item_type(item_type).kind == "belonging" else "give"
+        kind: RoleKind = "lend" if self.office.item_type(item_type).kind == "belonging" else "give"
         return Role(
             f"{n}.source",
             kind,

@@ -1,0 +1,69 @@
+"""Running one instruction through the Assistant in the simulated office (a test helper)."""
+
+from __future__ import annotations
+
+from collections.abc import Awaitable, Callable
+from dataclasses import dataclass
+
+from assistantx.assistant import Assistant, AssistantParts
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.office import Office
+from assistantx.ppdr.events import TraceEvent
+from assistantx.settings import Settings
+from assistantx.sim.office import SimOffice
+from assistantx.symbolic import build_factory
+
+EventHook = Callable[[TraceEvent, SimOffice], Awaitable[None]]
+
+
+@dataclass
+class Run:
+    stm: ShortTermMemory
+    sim: SimOffice
+    assistant: Assistant
+
+    @property
+    def actions(self) -> list[str]:
+        return [r.action.type for r in self.stm.trace.actions() if not r.refused]
+
+
+async def run_instruction(
+    office: Office,
+    requester: str,
+    text: str,
+    *,
+    unavailable: tuple[str, ...] = (),
+    on_event: EventHook | None = None,
+) -> Run:
+    sim = SimOffice(office, unavailable=unavailable)
+    assistant = Assistant(
+        AssistantParts(
+            office=office,
+            messenger=sim.messenger,
+            robot=sim.robot,
+            locker=sim.locker,
+            clock=sim.clock,
+            reasoner_factory=build_factory(office, Settings()),
+        )
+    )
+
+    async def register(stm: ShortTermMemory) -> None:
+        sim.register_instruction(stm.instruction_id, stm.requester)
+
+    assistant.on_instruction_start(register)
+    if on_event is not None:
+        hook = on_event
+
+        async def sink(event: TraceEvent) -> None:
+            await hook(event, sim)
+
+        assistant.subscribe(sink)
+    await sim.locker.start()
+    await assistant.start()
+    try:
+        stm = await assistant.submit(requester, text)
+        stm = await assistant.wait(stm.instruction_id)
+    finally:
+        await assistant.stop()
+        await sim.locker.stop()
+    return Run(stm, sim, assistant)
