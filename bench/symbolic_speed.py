@@ -1,0 +1,131 @@
+"""Reasoning time of the embedded symbolic reasoner, per step and per instruction.
+
+Runs every kind of instruction at its levels (L1, L2, L3, unachievable) in the simulated
+office and measures the time spent inside the four agents (Perception, Planning, Decision,
+Reflection) as recorded in the trace; simulated travel and waiting cost no real time and are
+excluded. Prints one line per instruction, then the medians; the last line is one JSON object.
+
+    python bench/symbolic_speed.py [--repeat N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import statistics
+import time
+
+from assistantx.assistant import Assistant, AssistantParts
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.office import Office, load_office
+from assistantx.settings import Settings
+from assistantx.sim.office import SimOffice
+from assistantx.symbolic import build_factory
+
+# (requester, instruction, unavailable people)
+INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [
+    ("lee", "bring me a stapler", ()),
+    ("lee", "could you get me a stapler?", ("wang",)),
+    ("lee", "I need a stapler", ("wang", "zhang")),
+    ("lee", "bring me a stapler", ("wang", "zhang", "hu", "gao")),
+    ("lee", "bring me Yang's book", ()),
+    ("lee", "bring me Yang's book", ("yang",)),
+    ("lee", "take my book to Wang", ()),
+    ("lee", "print my file and bring it to me", ()),
+    ("lee", "please print my slides", ("mao",)),
+    ("lee", "print my file", ("mao", "xu")),
+    ("lee", "make a copy of my contract", ()),
+    ("lee", "get Zhang to sign my contract", ()),
+    ("lee", "get Zhang to sign my contract", ("zhang",)),
+    ("lee", "get my contract stamped with the company seal", ()),
+    ("lee", "get my contract stamped with the company seal", ("wang", "mao")),
+    ("lee", "get my contract stamped with the company seal", ("wang", "mao", "sun")),
+    ("lee", "make me a coffee", ()),
+    ("lee", "I'd love a latte", ("gao",)),
+    ("lee", "grab me a glass of water", ()),
+    ("lee", "buy me a soda from the vending machine", ()),
+    ("lee", "heat up my lunch", ()),
+    ("lee", "warm up my leftovers", ("chen", "hu")),
+    ("lee", "send my slides to Zhou", ()),
+    ("lee", "get Wang's report file for me", ()),
+    ("lee", "print my file and take it to Wang", ()),
+    ("lee", "Could you heat up my lunch and then make me a coffee?", ()),
+]
+
+
+async def run_one(
+    office: Office, requester: str, text: str, away: tuple[str, ...]
+) -> ShortTermMemory:
+    sim = SimOffice(office, unavailable=away)
+    assistant = Assistant(
+        AssistantParts(
+            office=office,
+            messenger=sim.messenger,
+            robot=sim.robot,
+            locker=sim.locker,
+            clock=sim.clock,
+            reasoner_factory=build_factory(office, Settings()),
+        )
+    )
+
+    async def register(stm: ShortTermMemory) -> None:
+        sim.register_instruction(stm.instruction_id, stm.requester)
+
+    assistant.on_instruction_start(register)
+    await sim.locker.start()
+    await assistant.start()
+    try:
+        stm = await assistant.submit(requester, text)
+        return await assistant.wait(stm.instruction_id)
+    finally:
+        await assistant.stop()
+        await sim.locker.stop()
+
+
+async def main(repeat: int) -> dict[str, object]:
+    office = load_office()
+    per_step_ms: list[float] = []
+    per_instruction_ms: list[float] = []
+    wall_ms: list[float] = []
+    outcomes: dict[str, int] = {}
+    for _ in range(repeat):
+        for requester, text, away in INSTRUCTIONS:
+            started = time.perf_counter()
+            stm = await run_one(office, requester, text, away)
+            wall = (time.perf_counter() - started) * 1000
+            steps = [sum(c.latency_s for c in s.calls) * 1000 for s in stm.trace.steps if s.calls]
+            per_step_ms += steps
+            per_instruction_ms.append(sum(steps))
+            wall_ms.append(wall)
+            outcome = stm.trace.outcome or "none"
+            outcomes[outcome] = outcomes.get(outcome, 0) + 1
+            label = f"{text!r} away={','.join(away) or '-'}"
+            print(
+                f"{label:75.75} {outcome:12} steps={len(steps):2d} "
+                f"reasoning={sum(steps):7.2f} ms  wall={wall:7.1f} ms"
+            )
+    result = {
+        "instructions": len(per_instruction_ms),
+        "steps": len(per_step_ms),
+        "median_step_ms": round(statistics.median(per_step_ms), 3),
+        "p95_step_ms": round(sorted(per_step_ms)[int(0.95 * (len(per_step_ms) - 1))], 3),
+        "max_step_ms": round(max(per_step_ms), 3),
+        "median_instruction_reasoning_ms": round(statistics.median(per_instruction_ms), 3),
+        "median_instruction_wall_ms": round(statistics.median(wall_ms), 3),
+        "outcomes": outcomes,
+    }
+    print(
+        f"median per step {result['median_step_ms']} ms (p95 {result['p95_step_ms']} ms, "
+        f"max {result['max_step_ms']} ms); median per instruction "
+        f"{result['median_instruction_reasoning_ms']} ms reasoning, "
+        f"{result['median_instruction_wall_ms']} ms wall"
+    )
+    return result
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    print(json.dumps(asyncio.run(main(args.repeat))))
