@@ -156,6 +156,9 @@ class Executor:
             idempotency_key=f"{stm.instruction_id}:{key}",
         )
         await self.ctx.messenger.send(message)
+        if chat != ChatRef(kind="dm", id=stm.requester):
+            # The requester's unprompted messages are new instructions, not chatter about this.
+            self.ctx.replies.engage(stm.instruction_id, chat)
         stm.dialogue.append(
             DialogueTurn(
                 time=self.ctx.clock.now(),
@@ -288,7 +291,9 @@ class Executor:
                 if any(e.kind == "code_rejected" for e in mine):
                     break
                 if self.ctx.replies.event(stm.instruction_id).is_set():
-                    break  # the person wrote instead of coming (e.g. "I don't have it")
+                    arrived = self.take_messages(stm)
+                    if any(m.sender == action.person for m in arrived):
+                        break  # the person wrote instead of coming (e.g. "I don't have it")
                 remaining = deadline - self.ctx.clock.now()
                 if remaining <= 0:
                     break

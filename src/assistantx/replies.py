@@ -1,10 +1,12 @@
 """Matching inbound messages to the instruction and question that asked for them.
 
 Every question the assistant sends gets a question id. A reply is matched by, in order:
-the platform's explicit reply reference (``in_reply_to``), else the most recent open question
-in the same chat (a DM with that person, or that group). Anything unmatched goes back to the
-caller (a new instruction, or chatter to ignore). Replies are kept per instruction, so two
-instructions asking the same person never see each other's answers.
+the platform's explicit reply reference (``in_reply_to``), the most recent open question in
+the same chat (a DM with that person, or that group), else the most recent open instruction
+that wrote to that chat (a colleague told to meet the robot writes back "I can't come").
+Anything unmatched goes back to the caller (a new instruction, or chatter to ignore).
+Replies are kept per instruction, so two instructions asking the same person never see
+each other's answers.
 """
 
 from __future__ import annotations
@@ -31,10 +33,18 @@ class ReplyBox:
         self._by_chat: dict[ChatRef, list[str]] = defaultdict(list)
         self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
         self._inbox: dict[str, list[InboundMessage]] = defaultdict(list)
+        self._engaged: dict[ChatRef, list[str]] = defaultdict(list)
 
     def ask(self, question_id: str, instruction_id: str, chat: ChatRef, time: float) -> None:
         self._questions[question_id] = OpenQuestion(question_id, instruction_id, chat, time)
         self._by_chat[chat].append(question_id)
+
+    def engage(self, instruction_id: str, chat: ChatRef) -> None:
+        """``instruction_id`` wrote to ``chat``: unprompted messages there may concern it."""
+        engaged = self._engaged[chat]
+        if instruction_id in engaged:
+            engaged.remove(instruction_id)
+        engaged.append(instruction_id)
 
     def event(self, instruction_id: str) -> asyncio.Event:
         """Set whenever a message for ``instruction_id`` arrives."""
@@ -47,7 +57,11 @@ class ReplyBox:
             open_here = self._by_chat.get(message.chat, [])
             question = self._questions[open_here[-1]] if open_here else None
         if question is None:
-            return None
+            engaged = self._engaged.get(message.chat)
+            if not engaged:
+                return None
+            self.deliver(engaged[-1], message)
+            return engaged[-1]
         if message.in_reply_to is None:
             message = message.model_copy(update={"in_reply_to": question.question_id})
         question.answers.append(message)
@@ -71,5 +85,8 @@ class ReplyBox:
         for qid in [q for q, o in self._questions.items() if o.instruction_id == instruction_id]:
             question = self._questions.pop(qid)
             self._by_chat[question.chat].remove(qid)
+        for engaged in self._engaged.values():
+            if instruction_id in engaged:
+                engaged.remove(instruction_id)
         self._inbox.pop(instruction_id, None)
         self._events.pop(instruction_id, None)

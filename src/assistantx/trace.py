@@ -12,7 +12,7 @@ from pydantic import BaseModel, Field
 
 from assistantx.actions import Action, Outcome
 from assistantx.dialogue import DialogueTurn
-from assistantx.memory.updates import AppliedUpdate, MemoryUpdate
+from assistantx.updates import AppliedUpdate, MemoryUpdate
 
 
 class Percept(BaseModel):

@@ -1,0 +1,51 @@
+"""Replies reach the instruction that asked; unprompted messages are routed with care."""
+
+from __future__ import annotations
+
+from datetime import UTC, datetime
+
+from assistantx.adapters.messenger.base import ChatRef, InboundMessage
+from assistantx.replies import ReplyBox
+
+
+def _msg(
+    sender: str, chat: ChatRef, text: str = "hi", reply_to: str | None = None
+) -> InboundMessage:
+    return InboundMessage(
+        platform="t",
+        event_id=f"e-{sender}-{text}",
+        chat=chat,
+        sender=sender,
+        text=text,
+        time=datetime.now(tz=UTC),
+        in_reply_to=reply_to,
+    )
+
+
+def test_explicit_reference_beats_recency() -> None:
+    box = ReplyBox()
+    zhang = ChatRef(kind="dm", id="zhang")
+    box.ask("q1", "ins-1", zhang, 0)
+    box.ask("q2", "ins-2", zhang, 1)
+    assert box.route(_msg("zhang", zhang, reply_to="q1")) == "ins-1"
+    assert box.route(_msg("zhang", zhang, "later")) == "ins-2"
+    assert [m.in_reply_to for m in box.take("ins-2")] == ["q2"]
+
+
+def test_unprompted_message_goes_to_the_instruction_that_wrote_there() -> None:
+    box = ReplyBox()
+    zhang = ChatRef(kind="dm", id="zhang")
+    box.engage("ins-1", zhang)
+    assert box.route(_msg("zhang", zhang, "I can't come")) == "ins-1"
+    box.close("ins-1")
+    assert box.route(_msg("zhang", zhang, "bring me a coffee")) is None
+
+
+def test_group_answers_are_filed_under_the_asking_instruction() -> None:
+    box = ReplyBox()
+    group = ChatRef(kind="group", id="office_work")
+    box.ask("q9", "ins-3", group, 0)
+    assert box.route(_msg("hu", group, "I have one")) == "ins-3"
+    assert box.route(_msg("gao", group, "me too")) == "ins-3"
+    assert [m.sender for m in box.take("ins-3")] == ["hu", "gao"]
+    assert box.route(_msg("lin", ChatRef(kind="group", id="study_group"))) is None
