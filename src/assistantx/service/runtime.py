@@ -18,6 +18,7 @@ from typing import Any
 
 from assistantx.adapters.lock.local import LocalLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
+from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
 from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
 from assistantx.clock import WallClock
 from assistantx.journal import InstructionRecord, Journal
@@ -67,6 +68,10 @@ class ServiceRuntime:
         self.hub = EventHub()
         self.ready = False
         self.resumed: list[str] = []
+        # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix (checked at create_app).
+        self.matrix: MatrixRuntime | None = (
+            build_matrix_runtime(settings) if settings.messenger == "matrix" else None
+        )
 
     # -- start-up ------------------------------------------------------------------------
     async def start(self, stack: AsyncExitStack) -> None:
@@ -108,7 +113,7 @@ class ServiceRuntime:
         self.assistant = Assistant(
             AssistantParts(
                 office=self.office,
-                messenger=self.messenger,
+                messenger=self.matrix.messenger if self.matrix else self.messenger,
                 robot=self.sim.robot,
                 locker=self.locker,
                 clock=self.clock,
@@ -131,6 +136,9 @@ class ServiceRuntime:
         if world is not None:
             colleagues.restore(self.sim, world)
         await self.assistant.start()
+        if self.matrix is not None:  # started once the assistant's inbox is connected
+            stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
+            await self.matrix.messenger.start()
         stack.push_async_callback(self._stop)
         await self._resume()
         self.ready = True
