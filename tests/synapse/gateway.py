@@ -29,6 +29,11 @@ class AppserviceGateway:
         self._app = app
         self._down = False
 
+    def mount_app(self, app: Any) -> None:
+        """Route everything to a whole ASGI app (its lifespan is the caller's to run)."""
+        self._app = app
+        self._down = False
+
     def unmount(self) -> None:
         self._app = None
         self._down = False
