@@ -73,6 +73,7 @@ class AgentCall(BaseModel):
 
     agent: str
     model: str | None = None
+    llm: bool = Field(default=True, description="False for the embedded, model-free agents")
     prompt_tokens: int = 0
     completion_tokens: int = 0
     latency_s: float = 0.0
@@ -109,7 +110,8 @@ class TraceStep(BaseModel):
 
 
 class Usage(BaseModel):
-    calls: int = 0
+    calls: int = Field(default=0, description="agent calls of any kind")
+    llm_calls: int = Field(default=0, description="calls that went to a language model")
     prompt_tokens: int = 0
     completion_tokens: int = 0
     latency_s: float = 0.0
@@ -117,6 +119,7 @@ class Usage(BaseModel):
 
     def add(self, call: AgentCall) -> None:
         self.calls += 1
+        self.llm_calls += 1 if call.llm else 0
         self.prompt_tokens += call.prompt_tokens
         self.completion_tokens += call.completion_tokens
         self.latency_s += call.latency_s

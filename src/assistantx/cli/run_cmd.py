@@ -114,7 +114,7 @@ async def _execute(
         "refused": sum(1 for r in trace.actions() if r.refused),
         "sim_time_s": round(sim.clock.now(), 1),
         "distance_m": round(sim.robot.odometer_m, 1),
-        "llm_calls": trace.usage.calls,
+        "llm_calls": trace.usage.llm_calls,
         "prompt_tokens": trace.usage.prompt_tokens,
         "completion_tokens": trace.usage.completion_tokens,
     }
@@ -145,7 +145,7 @@ def print_trace(trace: Trace) -> None:
         if step.queue:
             print(f"   queued behind: {', '.join(step.queue)}")
     print(f"outcome: {trace.outcome} — {trace.summary}")
-    if trace.usage.calls:
+    if trace.usage.llm_calls:
         u = trace.usage
         print(
             f"llm: {u.calls} calls, {u.prompt_tokens}+{u.completion_tokens} tokens, "

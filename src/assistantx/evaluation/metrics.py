@@ -212,7 +212,7 @@ def score(episode: Episode) -> Scores:
         redundant=redundant,
         wrong_handover=bool(wrong_handovers(episode)),
         steps=len(episode.trace.steps),
-        llm_calls=usage.calls,
+        llm_calls=usage.llm_calls,
         prompt_tokens=usage.prompt_tokens,
         completion_tokens=usage.completion_tokens,
         wall_s=episode.wall_s,

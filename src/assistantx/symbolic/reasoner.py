@@ -166,7 +166,9 @@ class SymbolicReasoner(Reasoner):
 
 
 def _record(ctx: AgentContext, agent: str, started: float) -> None:
-    ctx.record(AgentCall(agent=agent, model=MODEL, latency_s=time.perf_counter() - started))
+    ctx.record(
+        AgentCall(agent=agent, model=MODEL, llm=False, latency_s=time.perf_counter() - started)
+    )
 
 
 def build_factory(office: Office, settings: object) -> Callable[[], Reasoner]:
