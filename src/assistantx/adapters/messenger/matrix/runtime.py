@@ -2,7 +2,7 @@
 
 ``ASSISTANTX_MESSENGER=matrix`` selects it and ``ASSISTANTX_MATRIX_CONFIG`` names its YAML file
 (see ``config.py``); the inbound event store is ``ASSISTANTX_MATRIX_STORE`` or
-``DATA_DIR/matrix.sqlite3``. The host wires it like this::
+``DATA_DIR/matrix.sqlite3``. The service (``assistantx.service.runtime``) wires it like this::
 
     runtime = build_matrix_runtime(settings)       # fails fast on a bad or missing config
     if runtime.router is not None:
