@@ -5,7 +5,7 @@
 
 import { api, onUnauthorized, token } from "./api.js";
 import { ChatsPanel } from "./chats.js";
-import { $, badge, clock, h, replace } from "./dom.js";
+import { $, badge, clock, h, keepFocus, replace } from "./dom.js";
 import { showEvaluation } from "./evaluation.js";
 import { LockerPanel } from "./locker.js";
 import { MapView } from "./map.js";
@@ -131,7 +131,7 @@ async function refreshInstructions() {
   state.instructions = page.items;
   state.busy = page.items.some((i) => !FINAL.has(i.status));
   const list = $("#instruction-list");
-  replace(list, page.items.length ? page.items.map((ins) => h("li", {},
+  keepFocus(list, () => replace(list, page.items.length ? page.items.map((ins) => h("li", { dataset: { key: ins.id } },
     h("button", {
       type: "button",
       "aria-current": ins.id === state.selected ? "true" : "false",
@@ -139,9 +139,9 @@ async function refreshInstructions() {
       onclick: () => select(ins.id),
     },
     h("span", { class: "meta" }, badge(ins.status), ins.outcome && ins.outcome !== ins.status ? badge(ins.outcome) : null,
-      `${nameOf(ins.requester)} · ${clock(ins.created_at)} · ${ins.steps} steps`),
+      `${nameOf(ins.requester)} · ${clock(ins.created_at)}`),
     h("span", {}, ins.text))))
-    : h("li", { class: "hint" }, "No instructions yet."));
+    : h("li", { class: "hint" }, "No instructions yet.")));
 }
 
 function nameOf(id) {

@@ -62,3 +62,20 @@ export function keepScrolledToEnd(el, update) {
   update();
   if (atEnd) el.scrollTop = el.scrollHeight;
 }
+
+/**
+ * Re-render a container without losing keyboard focus: if focus was on a control inside an
+ * element marked with data-key, the same control of the re-rendered element gets it back.
+ * (A background refresh must never throw a keyboard user back to the top of the page.)
+ */
+export function keepFocus(container, update) {
+  const active = document.activeElement;
+  const keyed = active && container.contains(active) ? active.closest("[data-key]") : null;
+  const key = keyed?.dataset.key;
+  const tag = active?.tagName;
+  update();
+  if (key === undefined) return;
+  const again = container.querySelector(`[data-key="${CSS.escape(key)}"]`);
+  const target = again && (again.tagName === tag ? again : again.querySelector(tag.toLowerCase()));
+  target?.focus();
+}

@@ -2,7 +2,7 @@
 // the operator's stand-in for a person at the locker (scan a code, shut the door).
 
 import { api } from "./api.js";
-import { badge, h, replace } from "./dom.js";
+import { badge, h, keepFocus, replace } from "./dom.js";
 
 export class LockerPanel {
   constructor(stateList, codesList, { onChanged, onError, announce }) {
@@ -24,13 +24,13 @@ export class LockerPanel {
       replace(this.codesList, h("li", { class: "hint" }, "Codes are shown to the operator."));
       return;
     }
-    replace(this.codesList, codes.length ? codes.map((code) => h("li", { dataset: { code: code.code_id } },
+    keepFocus(this.codesList, () => replace(this.codesList, codes.length ? codes.map((code) => h("li", { dataset: { code: code.code_id, key: code.code_id } },
       h("span", { class: "what" }, `${code.person}: ${code.purpose} ${code.item}`, h("span", { class: "hint" }, ` · ${code.instruction_id}`)),
       badge(code.used ? "used" : "issued", code.used ? "done" : "queued"),
       code.scannable && !code.used
         ? h("button", { type: "button", onclick: (e) => this.scan(code, e.currentTarget), "aria-label": `Scan ${code.person}'s code for ${code.item}` }, "Scan")
         : null))
-      : h("li", { class: "hint" }, "No codes issued yet."));
+      : h("li", { class: "hint" }, "No codes issued yet.")));
   }
 
   async scan(code, button) {

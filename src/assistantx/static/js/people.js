@@ -2,7 +2,7 @@
 // operator toggles it), what it knows they own, and what it learned during the run.
 
 import { api } from "./api.js";
-import { clock, h, replace } from "./dom.js";
+import { clock, h, keepFocus, replace } from "./dom.js";
 import { describeUpdate } from "./timeline.js";
 
 export class PeoplePanel {
@@ -14,12 +14,12 @@ export class PeoplePanel {
   }
 
   render(memory) {
-    const rows = memory.people.map((person) => h("tr", { dataset: { person: person.id } },
+    const rows = memory.people.map((person) => h("tr", { dataset: { person: person.id, key: person.id } },
       h("th", { scope: "row" }, person.name),
       h("td", {}, memory.places[person.place] ?? person.place ?? "—"),
       h("td", {}, this.toggle(person)),
       h("td", {}, person.items.length ? person.items.join(", ") : "—")));
-    replace(this.tbody, rows);
+    keepFocus(this.tbody, () => replace(this.tbody, rows));
     const learned = memory.updates.filter((u) => u.changed !== false).slice(-50).reverse();
     replace(this.learnedList, learned.length
       ? learned.map((applied) => h("li", {},

@@ -1,0 +1,174 @@
+"""Debian's Chromium through Playwright, and the real server as a subprocess.
+
+Browser tests never download a browser: they drive ``/usr/bin/chromium`` (installed by
+``.ci/install-browser``) and are skipped, loudly, where it is missing. Screenshots go to
+``test-artifacts/`` (gitignored); with ``ASSISTANTX_UPDATE_SCREENSHOTS=1`` the README's
+images in ``docs/screenshots/`` are rewritten too.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import httpx
+import pytest
+from playwright.sync_api import Browser, Playwright, sync_playwright
+
+ROOT = Path(__file__).resolve().parents[2]
+CHROMIUM = Path("/usr/bin/chromium")
+CHROMIUM_ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+ARTIFACTS = ROOT / "test-artifacts" / "browser"
+SCREENSHOTS = ROOT / "docs" / "screenshots"
+OPERATOR = "operator-token-for-browser-tests"
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def _reasoner_env() -> dict[str, str]:
+    """The embedded default reasoner once it exists; until then the service tests' scripted
+    stapler reasoner, which plays the same L2 instruction."""
+    import assistantx.symbolic
+
+    if hasattr(assistantx.symbolic, "build_factory"):
+        return {}
+    return {
+        "ASSISTANTX_REASONER_BUILDER": "stapler_reasoner:build_factory",
+        "PYTHONPATH": str(ROOT / "tests" / "service"),
+    }
+
+
+@dataclass
+class Server:
+    """``python -m assistantx serve`` on a fixed port and data directory; restartable."""
+
+    data_dir: Path
+    results_dir: Path
+    port: int = field(default_factory=free_port)
+    process: subprocess.Popen[bytes] | None = None
+
+    @property
+    def url(self) -> str:
+        return f"http://127.0.0.1:{self.port}"
+
+    def start(self, timeout_s: float = 30.0) -> None:
+        env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
+        env.update(
+            {
+                "ASSISTANTX_DATA_DIR": str(self.data_dir),
+                "ASSISTANTX_RESULTS_DIR": str(self.results_dir),
+                "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
+                "ASSISTANTX_PEOPLE": "human",  # the test plays the colleagues
+                "ASSISTANTX_SPEEDUP": "50",
+                **_reasoner_env(),
+            }
+        )
+        cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1"]
+        with (self.data_dir.parent / f"server-{self.port}.log").open("ab") as log:
+            # The child keeps its own copy of the descriptor.
+            self.process = subprocess.Popen(
+                [*cmd, "--port", str(self.port)], env=env, stdout=log, stderr=log
+            )
+        deadline = time.monotonic() + timeout_s
+        while time.monotonic() < deadline:
+            if self.process.poll() is not None:
+                raise RuntimeError(f"server exited with {self.process.returncode}")
+            try:
+                if httpx.get(f"{self.url}/readyz", timeout=1).status_code == 200:
+                    return
+            except httpx.TransportError:
+                pass
+            time.sleep(0.1)
+        raise RuntimeError("server did not become ready")
+
+    def stop(self, *, crash: bool = False) -> None:
+        """Stop gracefully (SIGTERM), or as a crash would (SIGKILL): connections just drop."""
+        if self.process is not None and self.process.poll() is None:
+            self.process.send_signal(signal.SIGKILL if crash else signal.SIGTERM)
+            try:
+                self.process.wait(10)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait(10)
+        self.process = None
+
+    def api(self, method: str, path: str, **kwargs: object) -> httpx.Response:
+        headers = {"Authorization": f"Bearer {OPERATOR}"}
+        return httpx.request(method, f"{self.url}{path}", headers=headers, timeout=10, **kwargs)  # type: ignore[arg-type]
+
+
+@pytest.fixture
+def server(tmp_path: Path) -> Iterator[Server]:
+    (tmp_path / "data").mkdir()
+    srv = Server(tmp_path / "data", tmp_path / "results")
+    srv.start()
+    try:
+        yield srv
+    finally:
+        srv.stop()
+
+
+@pytest.fixture(scope="session")
+def playwright() -> Iterator[Playwright]:
+    if not CHROMIUM.exists():
+        pytest.skip(f"{CHROMIUM} is missing: run .ci/install-browser")
+    with sync_playwright() as p:
+        yield p
+
+
+@pytest.fixture
+def browser(playwright: Playwright, server: Server) -> Iterator[Browser]:
+    # Depends on the server so that it closes first: an open event stream would hold up the
+    # server's graceful shutdown.
+    browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
+    try:
+        yield browser
+    finally:
+        browser.close()
+
+
+def screenshot_targets(name: str) -> list[Path]:
+    """Where a screenshot goes: the test artifacts, and the README's images when asked."""
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    targets = [ARTIFACTS / f"{name}.png"]
+    if os.environ.get("ASSISTANTX_UPDATE_SCREENSHOTS") == "1":
+        SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+        targets.append(SCREENSHOTS / f"{name}.png")
+    return targets
+
+
+def write_sample_evaluation(results_dir: Path) -> None:
+    """A results folder as the evaluator writes one (summary.json, summary.md, a chart)."""
+    from matplotlib.figure import Figure
+
+    run = results_dir / "sample-run"
+    run.mkdir(parents=True)
+    levels = {"L1": 0.93, "L2": 0.81, "L3": 0.64}
+    (run / "summary.json").write_text(json.dumps({"method": "ppdr", "SR": levels}))
+    rows = "\n".join(f"| {lvl} | {sr:.2f} |" for lvl, sr in levels.items())
+    (run / "summary.md").write_text(f"# Sample run\n\n| level | SR |\n|---|---|\n{rows}\n")
+    fig = Figure(figsize=(4, 3), dpi=80)
+    ax = fig.add_subplot()
+    ax.bar(list(levels), list(levels.values()))
+    ax.set_ylabel("SR")
+    fig.savefig(run / "sr_by_level.png")
