@@ -3,8 +3,10 @@
 Every name comes from the office file (names, aliases, synonyms, plurals), so another office
 works unchanged; only the English function words and the task verbs are fixed here. Matching
 is longest-phrase-first, then single name words; a word that names several people is kept as
-an ambiguous mention, never resolved by guessing. Small typos ("stapeler", "Zhnag") are
-corrected against the same vocabulary, but only for words that are not ordinary English.
+an ambiguous mention, never resolved by guessing. Small typos ("stapeler", "cofee") are
+corrected against the same vocabulary, but only for words that are not ordinary English; a
+misspelt name that is as close to another person's name ("Zhnag": Zhang or Zheng) is
+ambiguous, since fetching from the wrong colleague is worse than asking.
 """
 
 from __future__ import annotations
@@ -116,6 +118,9 @@ _ENGLISH_NAME_WORDS = frozenset(
     drew faith gene guy jack june ken lee""".split()
 ) - {"lee"}
 
+# How close a misspelt name must be to a person's name to count as possibly meaning them.
+_NAME_TYPO_CUTOFF = 0.8
+
 _TOKEN = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
 
 
@@ -124,6 +129,11 @@ class Token:
     text: str  # original spelling
     word: str  # lower-case, possessive removed, typo-corrected
     possessive: bool
+    typed: str = ""  # ``word`` before the typo correction
+
+    @property
+    def corrected(self) -> bool:
+        return bool(self.typed) and self.typed != self.word
 
 
 @dataclass(frozen=True)
@@ -192,7 +202,7 @@ class Lexicon:
             word = re.sub(r"'s$|'$", "", lower).replace("'", "")
             if not possessive and word.endswith("s'"):
                 word = word[:-1]
-            out.append(Token(raw, self._correct(word), possessive))
+            out.append(Token(raw, self._correct(word), possessive, word))
         return out
 
     def _correct(self, word: str) -> str:
@@ -249,7 +259,7 @@ class Lexicon:
             poss = tokens[idx[-1]].possessive
             text = " ".join(tokens[i].text for i in idx)
             if phrase in self.people and self._name_ok(tokens, idx):
-                ids = tuple(sorted(self.people[phrase]))
+                ids = self._person_ids(tokens, idx, self.people[phrase])
                 return Mention("person", start, end, ids, poss, text), n
             if phrase in self.facilities:
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
@@ -261,9 +271,8 @@ class Lexicon:
         t = tokens[i]
         w = t.word
         if w in self.name_words and self._name_ok(tokens, [i]):
-            return Mention(
-                "person", i, i + 1, tuple(sorted(self.name_words[w])), t.possessive, t.text
-            )
+            ids = self._person_ids(tokens, [i], self.name_words[w])
+            return Mention("person", i, i + 1, ids, t.possessive, t.text)
         if w in SELF_WORDS:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
@@ -274,6 +283,16 @@ class Lexicon:
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
+
+    def _person_ids(self, tokens: list[Token], idx: list[int], ids: set[str]) -> tuple[str, ...]:
+        """The people a name may mean; a corrected one-word name adds everyone as close."""
+        found = set(ids)
+        if len(idx) == 1 and tokens[idx[0]].corrected:
+            typed = tokens[idx[0]].typed
+            keys = [k for k in (*self.people, *self.name_words) if " " not in k]
+            for key in difflib.get_close_matches(typed, keys, n=8, cutoff=_NAME_TYPO_CUTOFF):
+                found |= self.people.get(key, set()) | self.name_words.get(key, set())
+        return tuple(sorted(found))
 
     def _name_ok(self, tokens: list[Token], idx: list[int]) -> bool:
         """An English-looking single name word counts only when capitalized."""

@@ -22,6 +22,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from assistantx.office import Office
 from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token
+from assistantx.symbolic._objects import modifiers, verb_uses
 
 TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
 
@@ -31,7 +32,21 @@ PRINTOUT, COPY, SEAL = "printout", "copy", "seal"
 _BREAK_WORDS = frozenset({"then", "also", "plus", "afterwards", "additionally"})
 _JOIN_WORDS = frozenset({"and", "but"})
 _SKIP_AFTER_JOIN = frozenset(
-    {"also", "then", "please", "could", "can", "would", "will", "you", "kindly", "maybe", "pls"}
+    {
+        "also",
+        "then",
+        "please",
+        "could",
+        "can",
+        "would",
+        "will",
+        "you",
+        "u",
+        "kindly",
+        "maybe",
+        "pls",
+        "plz",
+    }
 )
 _ASK_VERBS = frozenset({"ask", "have", "let", "tell", "get", "make", "need", "want"})
 _DATIVE_VERBS = frozenset(
@@ -55,8 +70,11 @@ _DATIVE_VERBS = frozenset(
         "mail",
     }
 )
+# "Wang's desk": a person's place, where the robot meets them.
+_PLACE_WORDS = frozenset({"desk", "office", "place", "seat", "workstation", "cubicle", "table"})
 _OBJECT_PRONOUNS = frozenset({"him", "her", "them"})
 _SUPPORTED_OPERATIONS = frozenset({"print", "copy", "coffee", "water", "heat", "vend"})
+_FILE_KINDS = frozenset({"print", "send_file"})
 _SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
 
 
@@ -94,19 +112,40 @@ class TaskFrame(BaseModel):
         return self.question is None and bool(self.tasks)
 
 
+class _UnresolvedPronoun(Exception):
+    """A possessive pronoun with nobody it could refer to ("bring me his stapler")."""
+
+
 @dataclass
 class _Clause:
     mentions: list[Mention]
     cues: set[str] = field(default_factory=set)
+    modifiers: set[int] = field(default_factory=set)  # starts of mentions that only modify
+
+    def objects(self) -> list[Mention]:
+        """The item mentions the request acts on, in text order."""
+        return [m for m in self.mentions if m.kind == "item" and m.start not in self.modifiers]
 
 
 @dataclass
 class _Roles:
     recipient: list[str] = field(default_factory=list)
+    recipient_at: list[int] = field(default_factory=list)  # token start of each recipient
     source: list[str] = field(default_factory=list)
     actor: list[str] = field(default_factory=list)
     bare: list[str] = field(default_factory=list)
     owners: dict[int, str] = field(default_factory=dict)  # item mention start → owner id
+
+    def add_recipient(self, who: str, at: int) -> None:
+        self.recipient.append(who)
+        self.recipient_at.append(at)
+
+    def recipient_between(self, start: int, end: int) -> str | None:
+        """The last recipient named in tokens [start, end) ("a coffee *for me* and ...")."""
+        found = [
+            w for w, at in zip(self.recipient, self.recipient_at, strict=True) if start <= at < end
+        ]
+        return found[-1] if found else None
 
 
 class InstructionParser:
@@ -120,15 +159,21 @@ class InstructionParser:
     # -- public --------------------------------------------------------------------------
     def parse(self, text: str, requester: str) -> TaskFrame:
         tokens = self.lex.tokens(text)
-        mentions = self._owned_cue_items(self.lex.scan(tokens), tokens)
+        mentions = verb_uses(tokens, self._owned_cue_items(self.lex.scan(tokens), tokens))
         problems = self._problems(tokens, mentions)
         if problems:
             return TaskFrame(requester=requester, question=problems[0])
         tasks: list[Task] = []
         last_person: list[str] = []
+        objects: list[Mention] = []
         previous_cues = True
         for clause in self._clauses(tokens, text, mentions):
-            roles = self._roles(tokens, clause, requester, last_person)
+            try:
+                roles = self._roles(tokens, clause, requester, last_person)
+            except _UnresolvedPronoun as exc:
+                unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
+                return TaskFrame(requester=requester, question=unclear)
+            objects += clause.objects()
             made = self._tasks(clause, roles, requester, tasks[-1] if tasks else None)
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
@@ -137,7 +182,7 @@ class InstructionParser:
                 tasks.extend(made)
             elif tasks:
                 tasks[-1] = self._fill(tasks[-1], clause, roles, requester)
-        question = self._check(tasks, requester)
+        question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
         )
@@ -187,7 +232,13 @@ class InstructionParser:
                 continue
             clauses[-1].mentions.append(m)
         for c in clauses:
-            c.cues = {k for m in c.mentions if m.kind == "cue" for k in m.ids}
+            c.modifiers = modifiers(tokens, c.mentions)
+            c.cues = {
+                k
+                for m in c.mentions
+                if m.kind == "cue" and m.start not in c.modifiers
+                for k in m.ids
+            }
         return [c for c in clauses if c.mentions]
 
     @staticmethod
@@ -213,14 +264,14 @@ class InstructionParser:
                     continue
                 prev = _prev_word(tokens, m.start)
                 if prev in ("to", "for", "with") or prev in _DATIVE_VERBS:
-                    roles.recipient.append(requester)
+                    roles.add_recipient(requester, m.start)
             elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
                 following = ms[n + 1] if n + 1 < len(ms) else None
                 others = [x for x in last_person if x != requester]
                 if following is not None and following.kind == "item":
                     continue  # "her stapler": a possessive
                 if _prev_word(tokens, m.start) in ("to", "for") and others:
-                    roles.recipient.append(others[-1])
+                    roles.add_recipient(others[-1], m.start)
             elif m.kind == "item":
                 owner = self._owner_of(tokens, ms, n, requester, last_person)
                 if owner is not None:
@@ -234,6 +285,20 @@ class InstructionParser:
         prev = _prev_word(tokens, m.start)
         nxt = tokens[m.end].word if m.end < len(tokens) else ""
         following = ms[n + 1] if n + 1 < len(ms) else None
+        if (
+            m.possessive
+            and following is not None
+            and following.kind == "word"
+            and (following.ids[0] in _PLACE_WORDS)
+        ):
+            # "at Wang's desk": the person met at their place, not an owner
+            if prev in ("to", "at", "for"):
+                roles.add_recipient(who, m.start)
+            elif prev == "from":
+                roles.source.append(who)
+            else:
+                roles.bare.append(who)
+            return
         if m.possessive:
             if following is not None and following.kind == "cue" and "sign" in following.ids:
                 roles.actor.append(who)
@@ -243,11 +308,11 @@ class InstructionParser:
         elif prev == "by":
             roles.actor.append(who)
         elif prev in ("to", "for", "with"):
-            roles.recipient.append(who)
+            roles.add_recipient(who, m.start)
         elif nxt == "to" or prev in ("ask", "have", "let", "tell"):
             roles.actor.append(who)
         elif prev in _DATIVE_VERBS and following is not None and following.kind != "cue":
-            roles.recipient.append(who)
+            roles.add_recipient(who, m.start)
         else:
             roles.bare.append(who)
 
@@ -269,7 +334,9 @@ class InstructionParser:
                 return p.ids[0]
             if p.kind == "pronoun" and p.possessive:
                 others = [x for x in last_person if x != requester]
-                return others[-1] if others else None
+                if not others:  # "his stapler" with nobody named before: whose?
+                    raise _UnresolvedPronoun(p.text)
+                return others[-1]
             if p.kind not in ("word", "item"):  # "Wang's report file": a compound noun
                 break
         # "the stapler of Zhang" / "a stapler from Zhang"
@@ -286,7 +353,7 @@ class InstructionParser:
     def _tasks(
         self, clause: _Clause, roles: _Roles, requester: str, previous: Task | None
     ) -> list[Task]:
-        items = [m for m in clause.mentions if m.kind == "item"]
+        items = clause.objects()
         cues = set(clause.cues)
         for m in items:  # products of the printer are cues: "a printout", "a copy"
             if m.id == PRINTOUT:
@@ -331,7 +398,7 @@ class InstructionParser:
                     actor=actor,
                 )
             ]
-        seal_items = [m for m in items if m.id == SEAL]
+        seal_items = [m for m in clause.mentions if m.kind == "item" and m.id == SEAL]
         if ("seal" in cues or seal_items) and doc is not None:
             sealer = next((roles.owners.get(m.start) for m in seal_items), None)
             sealer = sealer or next(iter(roles.actor + roles.bare), None)
@@ -364,39 +431,46 @@ class InstructionParser:
             return [
                 Task(kind="copy", item=doc.id, owner=owner(doc) or requester, recipient=recipient)
             ]
-        made = [m.id for m in products]
-        if not made:
+        sends = any(
+            m.kind == "cue" and m.text.lower() in _SEND_WORDS and m.start not in clause.modifiers
+            for m in clause.mentions
+        )
+        if not items:
+            if refers and sends and previous is not None and previous.kind in _FILE_KINDS:
+                # "print my slides and forward them to Zhou": the same file, passed on
+                file_owner = previous.owner or requester
+                return [Task(kind="send_file", item="file", owner=file_owner, recipient=recipient)]
             made = [
                 p
                 for f in facilities
                 for p in f.products[:1]
                 if p not in (PRINTOUT, COPY) and ("give" in cues or "make" in cues)
             ]
-        if made:
-            return [Task(kind="produce", item=p, recipient=recipient) for p in made]
-        sends = any(m.kind == "cue" and m.text.lower() in _SEND_WORDS for m in clause.mentions)
-        if files or (personal and sends and not roles.source):
-            source = (files or personal)[0]
-            file_owner = owner(source) or next(iter(roles.actor + roles.bare), None)
-            return [
-                Task(
-                    kind="send_file",
-                    item="file",
-                    owner=file_owner or requester,
-                    recipient=recipient,
+            if made:
+                return [Task(kind="produce", item=p, recipient=recipient) for p in made]
+            if "seal" in cues:  # "bring me the stamp": the seal as an item
+                items = physical = [
+                    Mention("item", m.start, m.end, (SEAL,), m.possessive, m.text)
+                    for m in clause.mentions
+                    if m.kind == "cue" and "seal" in m.ids
+                ][:1]
+        # every object of the verb is a task of its own: "a stapler and a coffee"
+        objects = [m for m in items if m in files or m in physical or m in products]
+        tasks: list[Task] = []
+        for k, m in enumerate(objects):
+            to = recipient if len(objects) == 1 else _recipient_of(objects, k, roles, recipient)
+            kind = self._kinds[m.id]
+            helper = next(iter(roles.actor + roles.bare), None)
+            if kind == "product":
+                tasks.append(Task(kind="produce", item=m.id, recipient=to))
+            elif kind == "electronic" or (kind == "personal" and sends and not roles.source):
+                file_owner = owner(m) or helper or requester
+                tasks.append(Task(kind="send_file", item="file", owner=file_owner, recipient=to))
+            else:
+                tasks.append(
+                    Task(kind="transfer", item=m.id, owner=owner(m) or helper, recipient=to)
                 )
-            ]
-        if not physical and "seal" in cues:  # "bring me the stamp": the seal as an item
-            physical = [
-                Mention("item", m.start, m.end, (SEAL,), m.possessive, m.text)
-                for m in clause.mentions
-                if m.kind == "cue" and "seal" in m.ids
-            ][:1]
-        tasks = []
-        for m in physical:
-            who = owner(m) or next(iter(roles.actor + roles.bare), None)
-            tasks.append(Task(kind="transfer", item=m.id, owner=who, recipient=recipient))
-        return tasks
+        return list(dict.fromkeys(tasks))
 
     def _fill(self, task: Task, clause: _Clause, roles: _Roles, requester: str) -> Task:
         """A clause with no task of its own completes the previous one."""
@@ -423,7 +497,8 @@ class InstructionParser:
         for n, m in enumerate(mentions):
             if m.kind == "person" and len(m.ids) > 1:
                 names = " or ".join(self.office.person(i).name for i in m.ids)
-                out.append(f"Who do you mean by {m.text!r}: {names}?")
+                said = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
+                out.append(f"Who do you mean by {said!r}: {names}?")
             if m.kind == "word" and self._unknown_name(tokens, mentions, n):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
@@ -448,6 +523,26 @@ class InstructionParser:
         capital = m.text[:1].isupper() and m.start > 0
         titled = prev in ("dr", "mr", "mrs", "ms", "prof", "professor", "doctor")
         return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+
+    def _uncovered(self, objects: list[Mention], tasks: list[Task]) -> str | None:
+        """An object of the request that no task acts on: ask, never drop part of a request."""
+        if not tasks:
+            return None  # ``_check`` asks what is needed at all
+        for m in objects:
+            if not any(self._covers(t, m.id) for t in tasks):
+                return (
+                    f"Sorry, I'm not sure what you want me to do with the "
+                    f"{self._item_name(m.id)}. Could you tell me?"
+                )
+        return None
+
+    def _covers(self, task: Task, type_id: str) -> bool:
+        """Whether ``task`` acts on an item of ``type_id`` (as its item, source or product)."""
+        if task.item == type_id:
+            return True
+        if task.kind in _FILE_KINDS and self._kinds[type_id] in ("electronic", "personal"):
+            return True  # "print my report", "email my contract"
+        return (task.kind, type_id) in {("print", PRINTOUT), ("copy", COPY), ("seal", SEAL)}
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
@@ -477,6 +572,19 @@ class InstructionParser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def _recipient_of(objects: list[Mention], k: int, roles: _Roles, default: str) -> str:
+    """Whom one of several objects is for: a "for/to X" right after it ("a coffee for me and
+    some water for Wang"), else one named before all objects ("get me X and Y"), else the
+    clause's recipient ("take my book and my pen to Wang")."""
+    m = objects[k]
+    end = objects[k + 1].start if k + 1 < len(objects) else 1 << 30
+    return (
+        roles.recipient_between(m.end, end)
+        or roles.recipient_between(0, objects[0].start)
+        or default
+    )
 
 
 def _prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:
