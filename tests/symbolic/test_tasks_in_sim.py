@@ -168,6 +168,27 @@ CASES = [
         [{"holds": ["lee", "stapler:*"]}, {"holds": ["lee", "pen:*"]}],
     ),
     Case(
+        "fetch with a time phrase",
+        "Please find me a book to read over lunch.",
+        [{"holds": ["zhang", "book:*"]}],
+        requester="zhang",
+        actions=9,
+    ),
+    Case(
+        "a belonging and a product",
+        "Bring me a stapler and a coffee, please.",
+        [{"holds": ["lee", "stapler:*"]}, {"holds": ["lee", "coffee:lee"]}],
+    ),
+    Case(
+        "three fetches",
+        "bring me scissors, a pen and some wipes",
+        [
+            {"holds": ["lee", "scissors:*"]},
+            {"holds": ["lee", "pen:*"]},
+            {"holds": ["lee", "wipes:*"]},
+        ],
+    ),
+    Case(
         "heat then coffee",
         "Could you heat up my lunch and then make me a coffee?",
         [
@@ -234,3 +255,38 @@ async def test_trace_records_four_agents_with_zero_tokens(office: Office) -> Non
     assert all(c.latency_s >= 0 and c.model == "symbolic" for c in step.calls)
     assert step.percept is not None and "gao" in step.percept.people
     assert step.plan is not None and not step.plan.subgoals[0].done
+
+
+async def test_partly_done_request_says_what_was_and_was_not_done(office: Office) -> None:
+    # every stapler owner is away, the coffee machine has Sun: only the coffee can be had
+    run = await run_instruction(
+        office,
+        "lee",
+        "Bring me a stapler and a coffee, please.",
+        unavailable=("wang", "zhang", "hu", "gao"),
+    )
+    trace = run.stm.trace
+    assert trace.outcome == "unachievable", trace.summary  # never "done" with a task left
+    assert run.sim.world.check({"holds": ["lee", "coffee:lee"]})
+    assert not run.sim.world.check({"holds": ["lee", "stapler:*"]})
+    summary = trace.summary or ""
+    done, _, not_done = summary.partition("Not done:")
+    assert "coffee" in done and "Sun Li" in done
+    assert "stapler" in not_done and "Office Work" in not_done
+    assert run.sim.messenger.sent[-1].text == f"[unachievable] {summary}"
+
+
+async def test_requester_who_never_collects_hears_failed_and_where_things_are(
+    office: Office,
+) -> None:
+    run = await run_instruction(
+        office, "lee", "Bring me a stapler and a coffee, please.", unavailable=("lee",)
+    )
+    trace = run.stm.trace
+    assert trace.outcome == "failed", trace.summary
+    summary = trace.summary or ""
+    assert "Done:" not in summary
+    assert "you did not come to the robot" in summary
+    # the stapler was put in the locker and never collected: the requester is told so
+    assert "Still in the robot's locker: Wang Fang's stapler" in summary
+    assert run.sim.world.locker_contents() == ["stapler:wang"]

@@ -146,3 +146,59 @@ async def test_unanswered_question_ends_without_acting(office: Office) -> None:
     assert not run.sim.world.handovers()
     contacts = {r.action.contact for r in trace.actions() if r.action.type == "inquire"}  # type: ignore[union-attr]
     assert contacts == {"lee"}  # only the requester was asked; nobody else bothered
+
+
+@pytest.mark.parametrize(
+    ("text", "unclear"),
+    [
+        ("bring me the thing", "which item"),
+        ("bring me Zhnag's stapler", "Zhang Wei or Zheng Hui"),
+        ("please find me something for lunch", "which item"),
+    ],
+)
+async def test_answer_that_says_nothing_gets_one_reask_then_a_failed_stop(
+    office: Office, text: str, unclear: str
+) -> None:
+    # the rule-based requester answers every question with "Yes, I'm here. What do you need?"
+    run = await run_instruction(office, "lee", text)
+    trace = run.stm.trace
+    asked = [r.action for r in trace.actions() if r.action.type == "inquire"]
+    assert [a.contact for a in asked] == ["lee", "lee"]  # type: ignore[union-attr]
+    assert asked[1].question.startswith("Sorry, I still don't understand.")  # type: ignore[union-attr]
+    assert trace.outcome == "failed"
+    last = run.sim.messenger.sent[-1]
+    assert last.chat.id == "lee" and last.text.startswith("[failed]")
+    assert repr(text) in last.text and unclear in last.text
+    assert "Yes, I'm here" in last.text  # the answer that did not help is quoted
+    assert not run.sim.world.handovers()
+
+
+def test_time_phrases_and_purpose_clauses_are_not_objects(office: Office) -> None:
+    parser = InstructionParser(office)
+    book = [Task(kind="transfer", item="book", recipient="lee")]
+    for text in (
+        "find me a book to read over lunch",
+        "after lunch, find me a book",
+        "find me a book for lunch",
+        "find me a book to read during my lunch",
+    ):
+        assert parser.parse(text, "lee").tasks == book, text
+    # with no object before it, the same noun is the object
+    assert parser.parse("heat up my lunch", "lee").tasks[0].item == "lunch"
+
+
+def test_each_coordinated_object_gets_its_recipient(office: Office) -> None:
+    frame = InstructionParser(office).parse("get me a stapler and a coffee for Wang", "lee")
+    assert frame.tasks == [
+        Task(kind="transfer", item="stapler", recipient="lee"),
+        Task(kind="produce", item="coffee", recipient="wang"),
+    ]
+    frame = InstructionParser(office).parse("take my book and my pen to Wang", "lee")
+    assert [t.recipient for t in frame.tasks] == ["wang", "wang"]
+
+
+@pytest.mark.parametrize("text", ["heat my lunch and my book", "print my slides and my stapler"])
+def test_an_object_no_task_covers_is_asked_about(office: Office, text: str) -> None:
+    frame = InstructionParser(office).parse(text, "lee")
+    assert not frame.understood
+    assert frame.question is not None and "what you want me to do with the" in frame.question

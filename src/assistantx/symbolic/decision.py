@@ -36,7 +36,7 @@ from assistantx.symbolic.planning import (
 from assistantx.symbolic.roles import Role, Roles, RoleState
 
 MAX_ACTIONS = 4
-MAX_CLARIFICATIONS = 2
+MAX_CLARIFICATIONS = 3  # questions to the requester in all (one re-ask of each)
 REPLY_TIMEOUT_S = 60.0
 CLARIFY_TIMEOUT_S = 300.0
 HANDOVER_TIMEOUT_S = 300.0
@@ -51,30 +51,45 @@ class Decider:
         return self.office.person(person).name
 
     # -- clarification -------------------------------------------------------------------
-    def clarify(self, question: str, ev: Evidence) -> tuple[str, list[Action]]:
+    def clarify(self, question: str, ev: Evidence, request: str) -> tuple[str, list[Action]]:
+        """Ask the requester what is unclear; re-ask once (in other words) after an answer that
+        did not settle it; then stop ``failed``, telling them what could not be understood."""
         asked = [q for q in ev.questions if q.contact == ev.requester and not q.group]
         if asked and ev.pending(asked[-1]):
             return "waiting for the requester's answer", [
                 Wait(reason="waiting for the requester to clarify", timeout_s=CLARIFY_TIMEOUT_S)
             ]
-        if len(asked) >= MAX_CLARIFICATIONS or (asked and ev.expired(asked[-1])):
+        same = [q for q in asked if q.text == question or q.text.endswith(_plain(question))]
+        if len(same) >= 2 or len(asked) >= MAX_CLARIFICATIONS or (asked and ev.expired(asked[-1])):
             return "the request stays unclear", [
-                Stop(
-                    outcome="failed",
-                    summary="I could not understand the request, so I did nothing. "
-                    "Please send it again in other words.",
-                )
+                Stop(outcome="failed", summary=self._not_understood(request, question, ev)[:2000])
             ]
+        text = f"Sorry, I still don't understand. {_plain(question)}" if same else question
         return "the request is unclear: ask the requester", [
-            Inquire(contact=ev.requester, question=question),
+            Inquire(contact=ev.requester, question=text),
             Wait(reason="waiting for the requester to clarify", timeout_s=CLARIFY_TIMEOUT_S),
         ]
+
+    @staticmethod
+    def _not_understood(request: str, question: str, ev: Evidence) -> str:
+        asked = [q for q in ev.questions if q.contact == ev.requester and not q.group]
+        answers = [t.text for q in asked for t in ev.answers(q) if t.person == ev.requester]
+        heard = (
+            f" Your answer {answers[-1][:200]!r} did not tell me."
+            if answers
+            else " I got no answer."
+        )
+        return (
+            f"I could not understand your request {request[:300]!r}, so I did nothing. "
+            f"What I could not work out: {_plain(question)}{heard} "
+            "Please send the request again with that detail."
+        )
 
     # -- the plan ------------------------------------------------------------------------
     def decide(self, agenda: Agenda, ev: Evidence) -> tuple[str, list[Action]]:
         task = agenda.active
         if task is None:
-            return self._stop(agenda)
+            return self._stop(agenda, ev)
         phase = task.current
         assert phase is not None  # an active task has an unmet phase
         if isinstance(phase.phase, Confirm):
@@ -151,23 +166,40 @@ class Decider:
         )
 
     # -- the end -------------------------------------------------------------------------
-    def _stop(self, agenda: Agenda) -> tuple[str, list[Action]]:
+    def _stop(self, agenda: Agenda, ev: Evidence) -> tuple[str, list[Action]]:
+        """The end: ``done`` only when every task of the frame is done; otherwise ``failed``
+        (something went wrong part-way) or ``unachievable`` (nobody could help), and the
+        summary says what was done and what was not, and why."""
+        requester = agenda.frame.requester
         done = [t for t in agenda.tasks if t.status == "done"]
-        failed = [t for t in agenda.tasks if t.status == "failed"]
-        impossible = [t for t in agenda.tasks if t.status == "unachievable"]
+        not_done = [t for t in agenda.tasks if t.status != "done"]
         parts: list[str] = []
         if done:
             parts.append("Done: " + "; ".join(self._result(t, agenda) for t in done) + ".")
-        for t in [*impossible, *failed]:
-            parts.append(f"I could not {describe(t.compiled.task, self.office)}: {t.reason}.")
-        summary = " ".join(parts) or "Nothing to do."
-        if failed:
-            return "a task failed part-way", [Stop(outcome="failed", summary=summary[:2000])]
-        if impossible:
-            return "some of it cannot be done", [
-                Stop(outcome="unachievable", summary=summary[:2000])
-            ]
-        return "every task is done", [Stop(outcome="done", summary=summary[:2000])]
+        if not_done:
+            missed = "; ".join(
+                f"{describe(t.compiled.task, self.office, requester)} ({t.reason or t.status})"
+                for t in not_done
+            )
+            parts.append(f"Not done: I could not {missed}.")
+            if ev.locker:
+                kept = ", ".join(self._item_words(i, requester) for i in ev.locker)
+                parts.append(f"Still in the robot's locker: {kept}.")
+        summary = " ".join(parts)[:2000] or "Nothing to do."
+        if not not_done:
+            return "every task is done", [Stop(outcome="done", summary=summary)]
+        if all(t.status == "unachievable" for t in not_done):
+            why = "nobody could help with part of it" if done else "nobody could help"
+            return why, [Stop(outcome="unachievable", summary=summary)]
+        return "a task failed part-way", [Stop(outcome="failed", summary=summary)]
+
+    def _item_words(self, item: str, requester: str) -> str:
+        """``stapler:wang`` → "Wang Fang's stapler" ("your stapler" for the requester)."""
+        type_id, _, owner = item.partition(":")
+        name = self.office.item_type(type_id).name
+        if owner == requester:
+            return f"your {name}"
+        return f"{self._name(owner)}'s {name}" if owner else name
 
     def _result(self, view: TaskView, agenda: Agenda) -> str:
         """What is now true, in words, naming who holds what."""
@@ -224,3 +256,9 @@ class Decider:
             case _:
                 text = f"{whose(task.owner)} file was passed to {who(task.recipient)}"
         return text + by
+
+
+def _plain(question: str) -> str:
+    """The question without its opening apology, to quote it inside another sentence."""
+    rest = question.removeprefix("Sorry, ")
+    return rest[:1].upper() + rest[1:]

@@ -44,6 +44,7 @@ class HandoverAttempt:
 class Evidence:
     requester: str
     robot_place: str | None
+    locker: list[str] = field(default_factory=list)  # item ids in the robot's locker now
     questions: list[Question] = field(default_factory=list)
     replies: dict[str, list[DialogueTurn]] = field(default_factory=dict)  # question id → turns
     timeouts: list[float] = field(default_factory=list)  # start times of timed-out waits
@@ -102,6 +103,7 @@ def gather(stm: ShortTermMemory, office: Office) -> Evidence:
     ev = Evidence(
         requester=stm.requester,
         robot_place=stm.embodied.robot_place,
+        locker=list(stm.embodied.locker_contents),
         codes=list(stm.embodied.codes),
         files_received={k: list(v) for k, v in stm.files_received.items()},
     )

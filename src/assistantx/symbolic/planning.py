@@ -386,6 +386,8 @@ class Planner:
         what = _item_text(role)
         if not state.excluded and state.group is None:
             return f"nobody in memory can {role.kind} ({what})"
+        if role.kind == "receive" and list(state.excluded) == [role.requester]:
+            return "you did not come to the robot to collect it"
         parts = [f"{self.office.person(p).name} {why}" for p, why in state.excluded.items()]
         if state.group is not None:
             parts.append(f"nobody in the {self.office.group(state.group).name} group could help")
@@ -422,14 +424,18 @@ def _item_text(role: Role) -> str:
     return role.item_type or "help"
 
 
-def describe(task: Task, office: Office) -> str:
-    """A short English description of a task, for plans and summaries."""
+def describe(task: Task, office: Office, you: str | None = None) -> str:
+    """A short English description of a task, for plans and summaries (``you``: the person
+    spoken to, named "you")."""
 
     def name(person: str | None) -> str:
+        if person is not None and person == you:
+            return "you"
         return office.person(person).name if person else "anyone"
 
     item = office.item_type(task.item).name if task.item else "item"
     whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
+    whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     match task.kind:
         case "transfer":

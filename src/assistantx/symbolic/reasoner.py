@@ -127,7 +127,9 @@ class SymbolicReasoner(Reasoner):
         started = time.perf_counter()
         v = self._current(ctx)
         if v.agenda is None:
-            thought, actions = self.decider.clarify(v.frame.question or "", v.evidence)
+            thought, actions = self.decider.clarify(
+                v.frame.question or "", v.evidence, ctx.stm.text
+            )
         else:
             thought, actions = self.decider.decide(v.agenda, v.evidence)
         if ctx.feedback:
