@@ -202,3 +202,13 @@ def test_an_object_no_task_covers_is_asked_about(office: Office, text: str) -> N
     frame = InstructionParser(office).parse(text, "lee")
     assert not frame.understood
     assert frame.question is not None and "what you want me to do with the" in frame.question
+
+
+@pytest.mark.parametrize(
+    "text", ["take the stapler back to zhang", "give the book back to Wang Fang"]
+)
+def test_returning_an_item_to_its_owner_is_asked_about(office: Office, text: str) -> None:
+    # "back to X" makes X the owner: X already has it, so where it is must be asked, not
+    # guessed (fetching anyone's stapler for Zhang would hand over the wrong item)
+    frame = InstructionParser(office).parse(text, "lee")
+    assert not frame.understood and "already has" in (frame.question or "")

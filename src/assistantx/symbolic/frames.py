@@ -131,6 +131,7 @@ class _Clause:
 class _Roles:
     recipient: list[str] = field(default_factory=list)
     recipient_at: list[int] = field(default_factory=list)  # token start of each recipient
+    returned_to: list[str] = field(default_factory=list)  # "back to X": X owns the item
     source: list[str] = field(default_factory=list)
     actor: list[str] = field(default_factory=list)
     bare: list[str] = field(default_factory=list)
@@ -309,6 +310,8 @@ class InstructionParser:
             roles.actor.append(who)
         elif prev in ("to", "for", "with"):
             roles.add_recipient(who, m.start)
+            if prev == "to" and m.start >= 2 and tokens[m.start - 2].word == "back":
+                roles.returned_to.append(who)  # "take the stapler back to Zhang": Zhang's
         elif nxt == "to" or prev in ("ask", "have", "let", "tell"):
             roles.actor.append(who)
         elif prev in _DATIVE_VERBS and following is not None and following.kind != "cue":
@@ -460,7 +463,7 @@ class InstructionParser:
         for k, m in enumerate(objects):
             to = recipient if len(objects) == 1 else _recipient_of(objects, k, roles, recipient)
             kind = self._kinds[m.id]
-            helper = next(iter(roles.actor + roles.bare), None)
+            helper = next(iter(roles.actor + roles.bare + roles.returned_to), None)
             if kind == "product":
                 tasks.append(Task(kind="produce", item=m.id, recipient=to))
             elif kind == "electronic" or (kind == "personal" and sends and not roles.source):
