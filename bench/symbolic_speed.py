@@ -3,7 +3,8 @@
 Runs every kind of instruction at its levels (L1, L2, L3, unachievable) in the simulated
 office and measures the time spent inside the four agents (Perception, Planning, Decision,
 Reflection) as recorded in the trace; simulated travel and waiting cost no real time and are
-excluded. Prints one line per instruction, then the medians; the last line is one JSON object.
+excluded. Also times the instruction parser alone over the paraphrase set. Prints one line
+per instruction, then the medians; the last line is one JSON object.
 
     python bench/symbolic_speed.py [--repeat N]
 """
@@ -15,13 +16,16 @@ import asyncio
 import json
 import statistics
 import time
+from pathlib import Path
+
+import yaml
 
 from assistantx.assistant import Assistant, AssistantParts
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.office import Office, load_office
 from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
-from assistantx.symbolic import build_factory
+from assistantx.symbolic import InstructionParser, build_factory
 
 # (requester, instruction, unavailable people)
 INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [
@@ -51,7 +55,13 @@ INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [
     ("lee", "get Wang's report file for me", ()),
     ("lee", "print my file and take it to Wang", ()),
     ("lee", "Could you heat up my lunch and then make me a coffee?", ()),
+    ("zhang", "Please find me a book to read over lunch.", ()),
+    ("lin", "Bring me a stapler and a coffee, please.", ()),
+    ("lee", "Bring me a stapler and a coffee, please.", ("wang", "zhang", "hu", "gao")),
+    ("lee", "bring me scissors, a pen and some wipes", ()),
+    ("lee", "bring me the thing", ()),
 ]
+PARAPHRASES = Path(__file__).resolve().parent.parent / "tests" / "symbolic" / "paraphrases.yaml"
 
 
 async def run_one(
@@ -105,6 +115,13 @@ async def main(repeat: int) -> dict[str, object]:
                 f"{label:75.75} {outcome:12} steps={len(steps):2d} "
                 f"reasoning={sum(steps):7.2f} ms  wall={wall:7.1f} ms"
             )
+    parser = InstructionParser(office)
+    parse_us: list[float] = []
+    for case in yaml.safe_load(PARAPHRASES.read_text(encoding="utf-8")):
+        for _ in range(repeat):
+            started = time.perf_counter()
+            parser.parse(case["text"], case.get("as", "lee"))
+            parse_us.append((time.perf_counter() - started) * 1e6)
     result = {
         "instructions": len(per_instruction_ms),
         "steps": len(per_step_ms),
@@ -114,12 +131,16 @@ async def main(repeat: int) -> dict[str, object]:
         "median_instruction_reasoning_ms": round(statistics.median(per_instruction_ms), 3),
         "median_instruction_wall_ms": round(statistics.median(wall_ms), 3),
         "outcomes": outcomes,
+        "paraphrases_parsed": len(parse_us) // repeat,
+        "median_parse_us": round(statistics.median(parse_us), 1),
+        "max_parse_us": round(max(parse_us), 1),
     }
     print(
         f"median per step {result['median_step_ms']} ms (p95 {result['p95_step_ms']} ms, "
         f"max {result['max_step_ms']} ms); median per instruction "
         f"{result['median_instruction_reasoning_ms']} ms reasoning, "
-        f"{result['median_instruction_wall_ms']} ms wall"
+        f"{result['median_instruction_wall_ms']} ms wall; parsing alone: median "
+        f"{result['median_parse_us']} us, max {result['max_parse_us']} us"
     )
     return result
 

@@ -8,9 +8,14 @@ for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lex
 2. each clause's mentions (people, items, facilities, task cues, "me"/"my") get roles from
    the words around them: "to/for X" → recipient, "from X"/"X's" → owner, "by X"/"get X to"
    → actor;
-3. the clause's kind follows from its cues and item kinds; a clause with no task of its own
+3. only the objects of the request count (``_objects``): not time phrases ("over lunch"),
+   purpose clauses ("to read"), modifiers after the object ("a mug for my coffee"), nor
+   container words ("a cup of coffee"); every coordinated object ("a stapler and a coffee")
+   is a task of its own, with the recipient named next to it;
+4. the clause's kind follows from its cues and item kinds; a clause with no task of its own
    ("and bring it to me", or the answer "Dr. Zhang") fills in the previous task;
-4. anything missing, unknown or ambiguous becomes a question for the requester, never a guess.
+5. anything missing, unknown or ambiguous becomes a question for the requester, never a guess,
+   and so does an object no task acts on: part of a request is never dropped silently.
 """
 
 from __future__ import annotations
