@@ -212,3 +212,19 @@ def test_returning_an_item_to_its_owner_is_asked_about(office: Office, text: str
     # guessed (fetching anyone's stapler for Zhang would hand over the wrong item)
     frame = InstructionParser(office).parse(text, "lee")
     assert not frame.understood and "already has" in (frame.question or "")
+
+
+def test_an_answer_naming_the_person_resolves_a_pronoun(office: Office) -> None:
+    parser = InstructionParser(office)
+    assert not parser.parse("bring me his stapler", "lee").understood
+    frame = parser.parse_with_answers("bring me his stapler", "lee", ["Zhang Wei"])
+    assert frame.tasks == [Task(kind="transfer", item="stapler", owner="zhang", recipient="lee")]
+
+
+def test_an_answer_settles_an_ambiguous_name(office: Office) -> None:
+    parser = InstructionParser(office)
+    frame = parser.parse_with_answers("bring me Zhnag's stapler", "lee", ["Zheng Hui"])
+    assert frame.tasks == [Task(kind="transfer", item="stapler", owner="zheng", recipient="lee")]
+    # in the same sentence a second name is a role of its own, not an answer
+    frame = parser.parse("take Zhnag's stapler to Zhang Wei", "lee")
+    assert not frame.understood and "Zheng Hui" in (frame.question or "")

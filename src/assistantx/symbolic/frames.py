@@ -166,6 +166,7 @@ class InstructionParser:
     def parse(self, text: str, requester: str) -> TaskFrame:
         tokens = self.lex.tokens(text)
         mentions = verb_uses(tokens, self._owned_cue_items(self.lex.scan(tokens), tokens))
+        mentions = _settled_by_later_sentence(mentions, _gaps(text, tokens))
         problems = self._problems(tokens, mentions)
         if problems:
             return TaskFrame(requester=requester, question=problems[0])
@@ -173,12 +174,21 @@ class InstructionParser:
         last_person: list[str] = []
         objects: list[Mention] = []
         previous_cues = True
-        for clause in self._clauses(tokens, text, mentions):
+        clauses = self._clauses(tokens, text, mentions)
+        answered: set[int] = set()  # clauses that only named whom a pronoun meant
+        for k, clause in enumerate(clauses):
+            if k in answered:
+                continue
             try:
                 roles = self._roles(tokens, clause, requester, last_person)
             except _UnresolvedPronoun as exc:
-                unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
-                return TaskFrame(requester=requester, question=unclear)
+                later = _named_later(clauses, k + 1)
+                if later is None:
+                    unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
+                    return TaskFrame(requester=requester, question=unclear)
+                # "bring me his stapler. Zhang Wei": the answer names him
+                answered.add(later[0])
+                roles = self._roles(tokens, clause, requester, [*last_person, later[1]])
             objects += clause.objects()
             made = self._tasks(clause, roles, requester, tasks[-1] if tasks else None)
             if made and tasks and not previous_cues and self._refers_back(clause):
@@ -580,6 +590,38 @@ class InstructionParser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def _settled_by_later_sentence(mentions: list[Mention], gaps: list[str]) -> list[Mention]:
+    """ "Bring me Zhnag's stapler. Zhang Wei": a later sentence that names one of the people
+    an ambiguous name may mean settles it (the answer to "who do you mean?"), and is used up."""
+    out = list(mentions)
+    used: set[int] = set()
+    for n, m in enumerate(out):
+        if m.kind != "person" or len(m.ids) < 2:
+            continue
+        for k in range(n + 1, len(out)):
+            later = out[k]
+            new_sentence = any(c in gap for gap in gaps[m.end : later.start + 1] for c in ".!?;")
+            if later.kind == "person" and len(later.ids) == 1 and later.id in m.ids:
+                if new_sentence:
+                    out[n] = Mention("person", m.start, m.end, later.ids, m.possessive, m.text)
+                    used.add(k)
+                break
+    return [m for k, m in enumerate(out) if k not in used]
+
+
+def _named_later(clauses: list[_Clause], first: int) -> tuple[int, str] | None:
+    """A clause from ``first`` on that only names one person (an answer like "Zhang Wei" or
+    "I mean Wang"): its index and the person."""
+    for k in range(first, len(clauses)):
+        clause = clauses[k]
+        people = {m.ids for m in clause.mentions if m.kind == "person"}
+        if clause.cues or any(m.kind in ("item", "facility") for m in clause.mentions):
+            continue
+        if len(people) == 1 and len(next(iter(people))) == 1:
+            return k, next(iter(people))[0]
+    return None
 
 
 def _recipient_of(objects: list[Mention], k: int, roles: _Roles, default: str) -> str:
