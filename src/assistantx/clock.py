@@ -42,13 +42,19 @@ class Clock(ABC):
 class WallClock(Clock):
     """Real time, optionally sped up (a demo where the robot drives 10x faster)."""
 
-    def __init__(self, speedup: float = 1.0) -> None:
+    def __init__(self, speedup: float = 1.0, start: float | None = None) -> None:
+        """``start``: what ``now()`` reads at creation (a restarted service continues its
+        sped-up time from the journal instead of jumping back to the real time)."""
         if speedup <= 0:
             raise ValueError("speedup must be positive")
         self.speedup = speedup
+        self._origin = time.time()
+        self._start = self._origin if start is None else start
 
     def now(self) -> float:
-        return time.time()
+        # Sped up like sleep(): a deadline of now() + 300 must pass after 300 / speedup real
+        # seconds, or a timed loop waits speedup times too long. Equals time.time() at 1x.
+        return self._start + (time.time() - self._origin) * self.speedup
 
     async def sleep(self, seconds: float) -> None:
         await asyncio.sleep(max(0.0, seconds) / self.speedup)

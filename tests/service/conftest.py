@@ -24,7 +24,6 @@ async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
         operator_token=OPERATOR,
         tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
         speedup=50,
-        reasoner_builder="service.stapler_reasoner:build_factory",
         max_body_bytes=4096,
     )
     port = free_port()

@@ -35,7 +35,6 @@ def base_env(data_dir: Path, **extra: str) -> dict[str, str]:
             "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
             "ASSISTANTX_TOKENS": json.dumps({LEE: "lee", ZHANG: "zhang"}),
             "ASSISTANTX_SPEEDUP": "50",
-            "ASSISTANTX_REASONER_BUILDER": "service.stapler_reasoner:build_factory",
             "PYTHONPATH": str(HERE.parent),
         }
     )

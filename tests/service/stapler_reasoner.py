@@ -27,11 +27,11 @@ from assistantx.trace import (
 )
 
 
-def _done(ctx: AgentContext, kind: str, **match: str) -> bool:
+def _done(ctx: AgentContext, kind: str, ok: bool = True, **match: str) -> bool:
     for r in ctx.stm.trace.actions():
         a = r.action
-        if r.ok and a.type == kind and all(getattr(a, k) == v for k, v in match.items()):
-            return True
+        if r.ok == ok and a.type == kind and all(getattr(a, k) == v for k, v in match.items()):
+            return not r.refused
     return False
 
 
@@ -70,6 +70,8 @@ class StaplerReasoner(Reasoner):
                     Inquire(contact=todo[0], question="Could you lend me your stapler?"),
                     Wait(reason="their answer", timeout_s=60),
                 ]
+        elif _done(ctx, "wait_in_place", ok=False, person=lender):
+            actions = [Stop(outcome="failed", summary=f"{lender} did not hand the stapler over.")]
         elif not _done(ctx, "wait_in_place", person=lender):
             if not _done(ctx, "send_qr", contact=lender):
                 actions = [

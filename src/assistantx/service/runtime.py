@@ -12,6 +12,7 @@ import importlib
 import logging
 import os
 import secrets
+import time
 from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
@@ -42,6 +43,7 @@ logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
+CLOCK_STATE = "clock"
 
 
 def new_instruction_id() -> str:
@@ -88,7 +90,9 @@ class ServiceRuntime:
             self.resolver,
             data_dir,
         )
-        self.clock = WallClock(s.speedup)
+        # Sped-up time runs ahead of real time; after a restart it continues from the journal.
+        journaled = self.journal.state(CLOCK_STATE) or {}
+        self.clock = WallClock(s.speedup, start=max(time.time(), journaled.get("now", 0.0)))
         keys = _lock_keys(s, data_dir)
         controller = LockController(s.lock_id, keys.codes, self.clock)
         self.locker = LocalLocker(
@@ -154,7 +158,10 @@ class ServiceRuntime:
         return reasoner_factory(kind, self.office, s), kind
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
-        return {colleagues.SIM_STATE: colleagues.snapshot(self.sim)}
+        return {
+            colleagues.SIM_STATE: colleagues.snapshot(self.sim),
+            CLOCK_STATE: {"now": self.clock.now()},
+        }
 
     async def _register_with_sim(self, stm: Any) -> None:
         self.sim.register_instruction(stm.instruction_id, stm.requester)
@@ -179,6 +186,7 @@ class ServiceRuntime:
         self.durability.frozen = True
         self.messenger.closed = True
         self.hub.close()
+        self.journal.put_state(CLOCK_STATE, {"now": self.clock.now()})
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------
