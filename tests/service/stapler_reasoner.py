@@ -70,8 +70,6 @@ class StaplerReasoner(Reasoner):
                     Inquire(contact=todo[0], question="Could you lend me your stapler?"),
                     Wait(reason="their answer", timeout_s=60),
                 ]
-        elif _done(ctx, "wait_in_place", ok=False, person=lender):
-            actions = [Stop(outcome="failed", summary=f"{lender} did not hand the stapler over.")]
         elif not _done(ctx, "wait_in_place", person=lender):
             if not _done(ctx, "send_qr", contact=lender):
                 actions = [
@@ -80,7 +78,7 @@ class StaplerReasoner(Reasoner):
                     SendQR(contact=lender, item=f"stapler:{lender}"),
                 ]
             else:
-                actions = [WaitInPlace(person=lender)]
+                actions = [WaitInPlace(person=lender, timeout_s=3600)]
         elif not _done(ctx, "wait_in_place", person=me):
             if not _done(ctx, "send_qr", contact=me):
                 actions = [
@@ -88,7 +86,7 @@ class StaplerReasoner(Reasoner):
                     SendQR(contact=me, item=f"stapler:{lender}", purpose="collect"),
                 ]
             else:
-                actions = [WaitInPlace(person=me)]
+                actions = [WaitInPlace(person=me, timeout_s=3600)]
         else:
             actions = [Stop(outcome="done", summary=f"{lender}'s stapler is in your hands.")]
         return Decision(thought="stapler", actions=actions)
