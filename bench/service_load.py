@@ -81,19 +81,22 @@ async def _wait_ready(url: str) -> None:
 async def _follow(
     url: str, ended: dict[str, float], outcomes: dict[str, str], n: int, done: asyncio.Event
 ) -> None:
-    headers = {"Authorization": f"Bearer {TOKEN}"}
-    async with (
-        httpx.AsyncClient(timeout=None) as client,
-        client.stream("GET", f"{url}/v1/events", headers=headers) as response,
-    ):
-        async for line in response.aiter_lines():
-            if line.startswith("data: "):
-                event = json.loads(line[6:])
-                if event["kind"] == "instruction_ended":
-                    ended[event["instruction_id"]] = time.perf_counter()
-                    outcomes[event["instruction_id"]] = str(event["data"].get("outcome"))
-                    if len(ended) >= n:
-                        done.set()
+    last = 0
+    async with httpx.AsyncClient(timeout=None) as client:
+        while True:  # a listener that falls behind is dropped: reconnect with Last-Event-ID
+            headers = {"Authorization": f"Bearer {TOKEN}", "Last-Event-ID": str(last)}
+            async with client.stream("GET", f"{url}/v1/events", headers=headers) as response:
+                async for line in response.aiter_lines():
+                    if line.startswith("id: "):
+                        last = int(line[4:])
+                    if not line.startswith("data: "):
+                        continue
+                    event = json.loads(line[6:])
+                    if event["kind"] == "instruction_ended":
+                        ended[event["instruction_id"]] = time.perf_counter()
+                        outcomes[event["instruction_id"]] = str(event["data"].get("outcome"))
+                        if len(ended) >= n:
+                            done.set()
 
 
 async def _run(url: str, n: int) -> dict[str, object]:
