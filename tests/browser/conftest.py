@@ -128,10 +128,12 @@ def server(tmp_path: Path) -> Iterator[Server]:
         srv.stop()
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def playwright() -> Iterator[Playwright]:
+    # Module scope: the sync API keeps an event loop running on this thread until it exits,
+    # and the asyncio tests collected after this folder need the thread's loop free again.
     if not CHROMIUM.exists():
-        pytest.skip(f"{CHROMIUM} is missing: run .ci/install-browser")
+        pytest.fail(f"{CHROMIUM} is missing: run .ci/install-browser")
     with sync_playwright() as p:
         yield p
 
