@@ -58,7 +58,18 @@ class Settings(BaseSettings):
         default=None, description="'module:builder' of a custom reasoner factory (tests, plugins)"
     )
 
+    # -- the robot base ------------------------------------------------------------------
+    robot: Literal["navigator", "sim"] = Field(
+        default="navigator", description="navigator (map, planner, AMCL) or sim (kinematic)"
+    )
+    map: Path | None = Field(default=None, description="ROS map YAML (default: maps/office.yaml)")
+    map_anchors: Path | None = Field(default=None, description="default: MAP's .anchors.yaml")
+    robot_localize: bool = Field(default=True, description="AMCL on (False: kinematic paths)")
+
     # -- the smart lock ------------------------------------------------------------------
+    lock: Literal["local", "tcp"] = Field(
+        default="local", description="local (in-process) or tcp (LOCK_HOST:LOCK_PORT)"
+    )
     lock_host: str = "127.0.0.1"
     lock_port: int = 7420
     lock_id: str = "locker-1"

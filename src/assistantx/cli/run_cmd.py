@@ -93,6 +93,11 @@ async def _execute(
         sim.register_instruction(stm.instruction_id, stm.requester)
 
     assistant.on_instruction_start(register)
+
+    async def forget(stm: Any) -> None:  # nothing people write about it arrives later
+        sim.end_instruction(stm.instruction_id)
+
+    assistant.on_instruction_end(forget)
     await sim.locker.start()
     await assistant.start()
     try:

@@ -54,6 +54,11 @@ async def run_in_sim(
         sim.register_instruction(stm.instruction_id, stm.requester)
 
     assistant.on_instruction_start(register)
+
+    async def forget(stm: ShortTermMemory) -> None:  # nothing people write about it arrives later
+        sim.end_instruction(stm.instruction_id)
+
+    assistant.on_instruction_end(forget)
     await sim.locker.start()
     await assistant.start()
     try:

@@ -14,6 +14,7 @@ import dataclasses
 import logging
 from typing import Any
 
+from assistantx.adapters.lock.local import LocalLocker
 from assistantx.adapters.messenger.base import InboundMessage, OutboundMessage
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.errors import LockError
@@ -77,15 +78,16 @@ def restore(sim: SimOffice, state: dict[str, Any]) -> None:
     world.messages_to = {str(k): int(v) for k, v in state["messages_to"].items()}
     sim.told = {(i or None, p) for i, p in state["told"]}
     sim.codes = [HeldCode(**{**c, "scheduled": False}) for c in state["codes"]]
-    sim.robot.place = state["robot"]["place"] or sim.office.robot.home
-    sim.robot.odometer_m = float(state["robot"]["odometer_m"])
-    for code in sim.codes:
-        if code.done:
-            continue
-        try:
-            sim.locker.controller.provision(code.payload)
-        except LockError as exc:  # expired meanwhile: the person keeps a dead code
-            logger.info("held code of %s not re-armed: %s", code.person, exc)
+    robot = state["robot"]
+    sim.robot.restore(robot["place"] or sim.office.robot.home, float(robot["odometer_m"]))
+    if isinstance(sim.locker, LocalLocker):  # an in-process lock forgot them; a TCP one did not
+        for code in sim.codes:
+            if code.done:
+                continue
+            try:
+                sim.locker.controller.provision(code.payload)
+            except LockError as exc:  # expired meanwhile: the person keeps a dead code
+                logger.info("held code of %s not re-armed: %s", code.person, exc)
     sim.on_robot_arrived()  # people with a code for this place come (again)
 
 

@@ -35,7 +35,6 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from assistantx.adapters.lock.base import LockEvent
 from assistantx.adapters.messenger.base import OutboundMessage
-from assistantx.adapters.robot.navigator import DEFAULT_MAP
 from assistantx.errors import InvalidCodeError, MapError
 from assistantx.lock.codes import unseal
 from assistantx.lock.keys import Keyring
@@ -100,8 +99,10 @@ class OfficeMap:
         )
 
     @classmethod
-    def from_files(cls, map_yaml: Path, office: Office) -> OfficeMap:
-        anchors_path = map_yaml.with_name(map_yaml.stem + ".anchors.yaml")
+    def from_files(
+        cls, map_yaml: Path, office: Office, anchors_yaml: Path | None = None
+    ) -> OfficeMap:
+        anchors_path = anchors_yaml or map_yaml.with_name(map_yaml.stem + ".anchors.yaml")
         return cls(load_map(map_yaml), load_anchors(anchors_path), office)
 
     @functools.cached_property
@@ -223,7 +224,7 @@ class CodeBook:
 def _codebook(request: Request, runtime: ServiceRuntime) -> CodeBook:
     book: CodeBook | None = getattr(request.app.state, "dashboard_codebook", None)
     if book is None:
-        book = CodeBook(runtime.locker.controller.keyring)
+        book = CodeBook(runtime.lock_keys.codes)
         runtime.messenger.relay_to(book.note)
         request.app.state.dashboard_codebook = book
     for held in runtime.sim.codes:  # simulated people's codes (restored after a restart)
@@ -265,7 +266,9 @@ def _office_map(request: Request, runtime: ServiceRuntime) -> OfficeMap:
     cached: OfficeMap | None = getattr(request.app.state, "dashboard_map", None)
     if cached is None:
         try:
-            cached = OfficeMap.from_files(DEFAULT_MAP, runtime.office)
+            cached = OfficeMap.from_files(
+                runtime.map_yaml, runtime.office, runtime.settings.map_anchors
+            )
         except MapError as exc:
             logger.warning("dashboard map unavailable: %s", exc)
             raise UnavailableError(f"the office map cannot be loaded: {exc}") from exc
@@ -344,7 +347,7 @@ async def locker_scan(
             f"no QR code {body.code_id!r} is known to the dashboard (it notes codes sent "
             "while the service runs, and those simulated colleagues hold)"
         )
-    event = await runtime.locker.simulate_scan(payload)
+    event = await runtime.sim.desk.simulate_scan(payload)
     logger.info("dashboard: simulated scan of %s: %s", body.code_id, event.kind)
     return event
 
@@ -356,6 +359,6 @@ async def locker_scan(
 )
 async def locker_close(runtime: Runtime, caller: Caller) -> LockEvent:
     caller.require_operator()
-    if not runtime.locker.controller.door_open:
+    if (await runtime.locker.status()).door != "open":
         raise ConflictError("the locker's door is already closed")
-    return await runtime.locker.simulate_close()
+    return await runtime.sim.desk.simulate_close()

@@ -64,7 +64,13 @@ class FeedbackParts:
 def map_distance(runtime: ServiceRuntime) -> DistanceFn | None:
     """Walks over the office map's planner; straight lines when the map cannot be loaded."""
     try:
-        robot = NavigatorRobot.from_files(runtime.office, runtime.clock, localize=False)
+        robot = NavigatorRobot.from_files(
+            runtime.office,
+            runtime.clock,
+            map_yaml=runtime.map_yaml,
+            anchors_yaml=runtime.settings.map_anchors,
+            localize=False,
+        )
     except (AssistantXError, OSError) as exc:
         logger.warning("walking saved in straight lines: the office map is unusable (%s)", exc)
         return None

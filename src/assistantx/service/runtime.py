@@ -2,12 +2,15 @@
 
 ``ServiceRuntime.start`` builds everything from the settings and enters each adapter through
 the caller's ``AsyncExitStack`` (the app lifespan), so they stop in reverse order. Embedded
-defaults: the default office, the simulated robot base, the in-process lock, the built-in
-messenger, simulated colleagues, the embedded reasoner, all on a sped-up WallClock.
+defaults: the default office, the navigator robot base (map, planner, AMCL) in simulation,
+the in-process lock, the built-in messenger, simulated colleagues, the embedded reasoner, all
+on a sped-up WallClock. ``ASSISTANTX_ROBOT=sim`` swaps in the kinematic base,
+``ASSISTANTX_LOCK=tcp`` the locker behind ``assistantx lock-sim`` (or a real one).
 """
 
 from __future__ import annotations
 
+import asyncio
 import importlib
 import logging
 import os
@@ -17,11 +20,16 @@ from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
 
+from assistantx.adapters.lock.base import Locker
 from assistantx.adapters.lock.local import LocalLocker
+from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
+from assistantx.adapters.robot.base import RobotBase
+from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
 from assistantx.clock import WallClock
+from assistantx.errors import LockError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import LockKeys
@@ -58,7 +66,8 @@ class ServiceRuntime:
     journal: Journal
     clock: WallClock
     sim: SimOffice
-    locker: LocalLocker
+    locker: Locker
+    lock_keys: LockKeys
     messenger: BuiltinMessenger
     assistant: Assistant
     durability: Durability
@@ -93,11 +102,10 @@ class ServiceRuntime:
         # Sped-up time runs ahead of real time; after a restart it continues from the journal.
         journaled = self.journal.state(CLOCK_STATE) or {}
         self.clock = WallClock(s.speedup, start=max(time.time(), journaled.get("now", 0.0)))
-        keys = _lock_keys(s, data_dir)
-        controller = LockController(s.lock_id, keys.codes, self.clock)
-        self.locker = LocalLocker(
-            controller, clock=self.clock, expiry_s=s.lock_code_expiry_min * 60
-        )
+        self.lock_keys = _lock_keys(s, data_dir)
+        self.locker = self._locker()
+        world = self.journal.state(colleagues.SIM_STATE)
+        robot_place = world["robot"]["place"] if world else None
         unavailable = [self.resolver.person(p) for p in s.sim_unavailable.split(",") if p.strip()]
         self.sim = SimOffice(
             self.office,
@@ -106,6 +114,7 @@ class ServiceRuntime:
             reply_delay_s=s.sim_reply_delay_s,
             handover_delay_s=s.sim_handover_delay_s,
             locker=self.locker,
+            robot=await asyncio.to_thread(self._robot_base, robot_place),
         )
         self.messenger = BuiltinMessenger(self.journal, self.clock)
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
@@ -132,11 +141,12 @@ class ServiceRuntime:
         )
         self.durability.attach()
         self.assistant.on_instruction_start(self._register_with_sim)
+        self.assistant.on_instruction_end(self._end_with_sim)
 
         await stack.enter_async_context(self.locker)
         await stack.enter_async_context(self.messenger)
         await stack.enter_async_context(self.sim.robot)
-        world = self.journal.state(colleagues.SIM_STATE)
+        stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
             colleagues.restore(self.sim, world)
         await self.assistant.start()
@@ -157,6 +167,47 @@ class ServiceRuntime:
         kind = s.effective_reasoner
         return reasoner_factory(kind, self.office, s), kind
 
+    @property
+    def map_yaml(self) -> Path:
+        return self.settings.map or DEFAULT_MAP
+
+    def _robot_base(self, place: str | None) -> RobotBase | None:
+        """The navigator standing where the journaled world left the robot; None: the
+        simulator's kinematic base."""
+        s = self.settings
+        if s.robot == "sim":
+            return None
+        return NavigatorRobot.from_files(
+            self.office,
+            self.clock,
+            map_yaml=self.map_yaml,
+            anchors_yaml=s.map_anchors,
+            localize=s.robot_localize,
+            start=place,
+        )
+
+    def _locker(self) -> Locker:
+        s = self.settings
+        expiry_s = s.lock_code_expiry_min * 60
+        if s.lock == "tcp":
+            if s.lock_shared_key is None and s.lock_key_file is None:
+                raise LockError(
+                    "ASSISTANTX_LOCK=tcp needs the lock's keys: set ASSISTANTX_LOCK_SHARED_KEY "
+                    "or ASSISTANTX_LOCK_KEY_FILE to what `assistantx lock-sim` uses"
+                )
+            # The lock checks a code's times on its own (real) clock, so codes are stamped in
+            # real time, not in the sped-up simulated time.
+            return TcpLocker(
+                s.lock_host,
+                s.lock_port,
+                self.lock_keys,
+                lock_id=s.lock_id,
+                clock=WallClock(),
+                expiry_s=expiry_s,
+            )
+        controller = LockController(s.lock_id, self.lock_keys.codes, self.clock)
+        return LocalLocker(controller, clock=self.clock, expiry_s=expiry_s)
+
     def _world_state(self) -> dict[str, dict[str, Any]]:
         return {
             colleagues.SIM_STATE: colleagues.snapshot(self.sim),
@@ -165,6 +216,9 @@ class ServiceRuntime:
 
     async def _register_with_sim(self, stm: Any) -> None:
         self.sim.register_instruction(stm.instruction_id, stm.requester)
+
+    async def _end_with_sim(self, stm: Any) -> None:
+        self.sim.end_instruction(stm.instruction_id)
 
     async def _resume(self) -> None:
         for record in self.journal.unfinished():

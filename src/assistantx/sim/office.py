@@ -8,14 +8,17 @@ code for them; both run on the clock (a SimClock makes them instant in real time
 
 from __future__ import annotations
 
+import asyncio
 import functools
 import hashlib
 import itertools
 import logging
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass
 from datetime import UTC, datetime
+from typing import Protocol, runtime_checkable
 
+from assistantx.adapters.lock.base import Locker, LockEvent
 from assistantx.adapters.lock.local import LocalLocker
 from assistantx.adapters.messenger.base import (
     Attachment,
@@ -25,19 +28,29 @@ from assistantx.adapters.messenger.base import (
     OutboundMessage,
     SentMessage,
 )
-from assistantx.adapters.robot.base import MoveResult, Pose, RobotBase, RobotState
+from assistantx.adapters.robot.base import RobotBase
 from assistantx.clock import Clock, SimClock
-from assistantx.errors import UnreachableError
+from assistantx.errors import LockError
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import Keyring
 from assistantx.office import Office
 from assistantx.sim.people import Reply, direct_reply, group_replies, handover_problem
 from assistantx.sim.people import perform_handover as do_handover
+from assistantx.sim.robot import DistanceFn, ObservedRobot, SimRobot
 from assistantx.sim.world import World
+
+__all__ = ["HandOverDesk", "HeldCode", "SimMessenger", "SimOffice", "SimRobot"]
 
 logger = logging.getLogger(__name__)
 
-DistanceFn = Callable[[str, str], float]
+
+@runtime_checkable
+class HandOverDesk(Protocol):
+    """What simulated people do at a locker (``LocalLocker`` and ``TcpLocker`` offer it)."""
+
+    async def simulate_scan(self, payload: str) -> LockEvent: ...
+
+    async def simulate_close(self) -> LockEvent: ...
 
 
 @dataclass
@@ -105,46 +118,14 @@ class SimMessenger(Messenger):
         return inbound
 
 
-class SimRobot(RobotBase):
-    """A kinematic base: drives at constant speed along ``distance(a, b)`` metres."""
-
-    def __init__(self, office_sim: SimOffice, distance: DistanceFn, speed_mps: float) -> None:
-        self._sim = office_sim
-        self._distance = distance
-        self._speed = speed_mps
-        self.place: str | None = office_sim.office.robot.home
-        self.moving = False
-        self.odometer_m = 0.0
-
-    async def move_to(self, location_id: str) -> MoveResult:
-        office = self._sim.office
-        try:
-            target = office.location(location_id)
-        except KeyError as exc:
-            raise UnreachableError(f"no anchor for location {location_id!r}") from exc
-        start = self.place or office.robot.home
-        distance = self._distance(start, target.id) if start != target.id else 0.0
-        duration = distance / self._speed
-        self.moving, self.place = True, None
-        await self._sim.clock.sleep(duration)
-        self.moving, self.place = False, target.id
-        self.odometer_m += distance
-        self._sim.world.note(self._sim.clock.now(), "robot_arrived", place=target.id)
-        self._sim.on_robot_arrived()
-        return MoveResult(place=target.id, distance_m=distance, duration_s=duration)
-
-    def state(self) -> RobotState:
-        loc = self._sim.office.location(self.place or self._sim.office.robot.home)
-        return RobotState(
-            place=self.place,
-            pose=Pose(x=loc.x, y=loc.y),
-            moving=self.moving,
-            odometer_m=self.odometer_m,
-        )
-
-
 class SimOffice:
-    """World + simulated adapters. Build one per instruction for evaluation."""
+    """World + simulated adapters. Build one per instruction for evaluation.
+
+    ``robot``: the base that drives (default: a kinematic ``SimRobot``); it is wrapped in an
+    ``ObservedRobot`` so hand-overs follow it. ``locker``: any ``Locker`` whose people's acts
+    can be simulated (``simulate_scan`` / ``simulate_close``: ``LocalLocker``, ``TcpLocker``).
+    Call ``aclose`` when done: hand-overs in flight on a networked locker are tasks.
+    """
 
     def __init__(
         self,
@@ -156,7 +137,8 @@ class SimOffice:
         reply_delay_s: float = 20.0,
         handover_delay_s: float = 30.0,
         distance: DistanceFn | None = None,
-        locker: LocalLocker | None = None,
+        locker: Locker | None = None,
+        robot: RobotBase | None = None,
     ) -> None:
         self.office = office
         self.clock = clock or SimClock()
@@ -164,14 +146,25 @@ class SimOffice:
         self.reply_delay_s = reply_delay_s
         self.handover_delay_s = handover_delay_s
         self.messenger = SimMessenger(self)
-        self.robot = SimRobot(self, distance or office.distance, office.robot.speed_mps)
+        base = robot or SimRobot(
+            office, self.clock, distance or office.distance, office.robot.speed_mps
+        )
+        self.robot = ObservedRobot(base, office.robot.home, self._on_robot_arrived)
         if locker is None:
             key = hashlib.sha256(f"assistantx-sim-{seed}".encode()).digest()
             controller = LockController("sim-locker", Keyring.single("sim", key), self.clock)
             locker = LocalLocker(controller, clock=self.clock, render_png=False)
-        self.locker = locker
+        if not isinstance(locker, HandOverDesk):
+            raise TypeError(
+                f"{type(locker).__name__} cannot be used by simulated people: "
+                "it needs simulate_scan and simulate_close"
+            )
+        self.locker: Locker = locker
+        self.desk: HandOverDesk = locker
         self.codes: list[HeldCode] = []
         self.told: set[tuple[str | None, str]] = set()  # (instruction id, person)
+        self.ended: set[str] = set()  # instructions whose codes and replies are forgotten
+        self._visits: set[asyncio.Task[None]] = set()
 
     def timestamp(self) -> datetime:
         return datetime.fromtimestamp(self.clock.now(), tz=UTC)
@@ -180,8 +173,26 @@ class SimOffice:
         """The requester asked for it, so they know what the robot comes for."""
         self.told.add((instruction_id, requester))
 
+    def end_instruction(self, instruction_id: str) -> None:
+        """The instruction ended: people drop its codes and forget its questions, so nothing
+        they would have written about it arrives afterwards (and starts a new instruction)."""
+        self.ended.add(instruction_id)
+        self.codes = [c for c in self.codes if c.instruction_id != instruction_id]
+        self.told = {(i, p) for i, p in self.told if i != instruction_id}
+
+    async def aclose(self) -> None:
+        """Wait for the hand-overs under way at a networked locker (cancelled)."""
+        for task in list(self._visits):
+            task.cancel()
+        if self._visits:
+            await asyncio.gather(*self._visits, return_exceptions=True)
+
     # -- messages ------------------------------------------------------------------------
     def on_message(self, message: OutboundMessage) -> None:
+        if message.instruction_id is not None and message.instruction_id in self.ended:
+            # Sent by an instruction that has ended (a resumed send): read, never acted on.
+            self.world.record_message(self.clock.now(), message.chat.id)
+            return
         now = self.clock.now()
         if message.chat.kind == "group":
             members = self.office.group(message.chat.id).members
@@ -190,14 +201,14 @@ class SimOffice:
             if message.question_id:
                 replies = group_replies(self.world, list(members), message.text)
                 for n, reply in enumerate(replies):
-                    self._schedule_reply(reply, message.chat, message.question_id, n)
+                    self._schedule_reply(reply, message, n)
             return
         person = message.chat.id
         self._receive(now, person, message)
         if message.question_id:
             answer = direct_reply(self.world, person, message.text)
             if answer is not None:
-                self._schedule_reply(answer, message.chat, message.question_id, 0)
+                self._schedule_reply(answer, message, 0)
         self._schedule_handovers()
 
     def _receive(self, now: float, person: str, message: OutboundMessage) -> None:
@@ -219,17 +230,28 @@ class SimOffice:
             if a.kind == "file" and a.item and self.world.available(person):
                 self.world.receive_file(now, person, a.item)
 
-    def _schedule_reply(self, reply: Reply, chat: ChatRef, question_id: str, n: int) -> None:
+    def _schedule_reply(self, reply: Reply, question: OutboundMessage, n: int) -> None:
         def deliver() -> None:
+            if question.instruction_id in self.ended:
+                return  # the instruction ended before they answered: they let it be
             if self.world.available(reply.person):
                 self.messenger.post(
-                    reply.person, chat, reply.text, files=reply.files, in_reply_to=question_id
+                    reply.person,
+                    question.chat,
+                    reply.text,
+                    files=reply.files,
+                    in_reply_to=question.question_id,
                 )
 
         self.clock.call_later(self.reply_delay_s + 5.0 * n, deliver)
 
     # -- hand-overs ----------------------------------------------------------------------
+    def _on_robot_arrived(self, place: str) -> None:
+        self.world.note(self.clock.now(), "robot_arrived", place=place)
+        self._schedule_handovers()
+
     def on_robot_arrived(self) -> None:
+        """People with a code for where the robot stands come (again): after a restore."""
         self._schedule_handovers()
 
     def _schedule_handovers(self) -> None:
@@ -274,9 +296,35 @@ class SimOffice:
             )
             return
         code.done = True
-        result = self.locker.controller.scan(code.payload)
-        if not result.accepted:
-            reason = result.decision.reason or "rejected"
+        if isinstance(self.locker, LocalLocker):
+            # In-process lock: the whole visit happens at this instant of the clock.
+            decision = self.locker.controller.scan(code.payload).decision
+            self._after_scan(code, decision, now)
+            if decision.kind == "code_accepted":
+                self.locker.controller.close()
+            return
+        task = asyncio.get_running_loop().create_task(self._visit(code, now))
+        self._visits.add(task)
+        task.add_done_callback(self._visits.discard)
+
+    async def _visit(self, code: HeldCode, now: float) -> None:
+        """A hand-over at a networked locker: scan, swap the item, shut the door."""
+        try:
+            decision = await self.desk.simulate_scan(code.payload)
+        except LockError as exc:
+            logger.warning("simulated scan by %s failed: %s", code.person, exc)
+            code.done = False  # they try again the next time the robot is here
+            return
+        self._after_scan(code, decision, now)
+        if decision.kind == "code_accepted":
+            try:
+                await self.desk.simulate_close()
+            except LockError as exc:
+                logger.warning("simulated door close by %s failed: %s", code.person, exc)
+
+    def _after_scan(self, code: HeldCode, decision: LockEvent, now: float) -> None:
+        if decision.kind != "code_accepted":
+            reason = decision.reason or "rejected"
             self.messenger.post(
                 code.person,
                 ChatRef(kind="dm", id=code.person),
@@ -284,7 +332,6 @@ class SimOffice:
             )
             return
         do_handover(self.world, now, code.person, code.purpose, code.item)
-        self.locker.controller.close()
 
     def check(self, milestones: Iterable[dict[str, object]]) -> list[bool]:
         return [self.world.check(dict(m)) for m in milestones]
