@@ -73,3 +73,40 @@ def test_a_file_that_is_not_a_journal_is_a_clear_error(tmp_path: Path) -> None:
     path.write_bytes(b"this is not sqlite" * 100)
     with pytest.raises(JournalError, match="not a usable journal"):
         Journal.open(path)
+
+
+def test_the_step_count_is_kept_for_lists(tmp_path: Path) -> None:
+    from assistantx.trace import TraceStep
+
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    journal.create_instruction("ins-1", "lee", "t", 1.0)
+    stm = _stm()
+    for n in range(3):
+        stm.trace.steps.append(TraceStep(index=n, started_at=2.0 + n))
+        event = TraceEvent(instruction_id="ins-1", kind="step_started", time=2.0 + n, step=n)
+        journal.record(event, stm=stm, status="running")
+    [listed] = journal.instructions()
+    assert listed.stm is None and listed.steps == 3
+
+
+def test_a_journal_written_before_the_step_count_opens(tmp_path: Path) -> None:
+    import sqlite3
+
+    from assistantx.journal._schema import SCHEMA
+
+    path = tmp_path / "old.sqlite3"
+    old_schema = SCHEMA.replace(",\n    steps      INTEGER NOT NULL DEFAULT 0", "")
+    assert old_schema != SCHEMA
+    with sqlite3.connect(path) as db:
+        db.executescript(old_schema)
+        db.execute("INSERT INTO meta VALUES ('schema', '1')")
+        db.execute(
+            "INSERT INTO instructions (id, requester, text, status, created_at, updated_at)"
+            " VALUES ('ins-0', 'lee', 't', 'done', 1.0, 1.0)"
+        )
+    db.close()
+    journal = Journal.open(path)
+    [listed] = journal.instructions()
+    assert (listed.id, listed.steps) == ("ins-0", 0)
+    journal.checkpoint(_stm("ins-0"), "done")
+    journal.close()

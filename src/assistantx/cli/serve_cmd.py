@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-import uvicorn
-
 from assistantx.settings import Settings
 
 
@@ -19,6 +17,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 def _serve(args: argparse.Namespace) -> int:
     from assistantx.service.app import create_app
     from assistantx.service.runtime import ServiceRuntime
+    from assistantx.service.server import service_server
 
     settings = Settings()
     host = args.host or settings.host
@@ -36,6 +35,5 @@ def _serve(args: argparse.Namespace) -> int:
             )
 
     app = create_app(settings, on_ready=announce)
-    config = uvicorn.Config(app, host=host, port=port, log_level="info", access_log=False)
-    uvicorn.Server(config).run()
+    service_server(app, host, port).run()
     return 0

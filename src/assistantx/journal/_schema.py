@@ -1,4 +1,8 @@
-"""The journal's SQL schema; one version, created on first open."""
+"""The journal's SQL schema; one version, created on first open.
+
+Columns added since are listed in ``ADDED_COLUMNS`` and added to older files on open (their
+default fills existing rows), so a journal written before keeps working.
+"""
 
 from __future__ import annotations
 
@@ -20,7 +24,8 @@ CREATE TABLE IF NOT EXISTS instructions (
     created_at REAL NOT NULL,
     updated_at REAL NOT NULL,
     cancel_requested INTEGER NOT NULL DEFAULT 0,
-    stm        TEXT
+    stm        TEXT,
+    steps      INTEGER NOT NULL DEFAULT 0
 );
 CREATE INDEX IF NOT EXISTS instructions_status ON instructions (status, seq);
 CREATE INDEX IF NOT EXISTS instructions_requester ON instructions (requester, seq);
@@ -63,3 +68,8 @@ CREATE TABLE IF NOT EXISTS state (
     body       TEXT NOT NULL
 );
 """
+
+# (table, column, definition) added after the first release of schema 1.
+ADDED_COLUMNS: tuple[tuple[str, str, str], ...] = (
+    ("instructions", "steps", "INTEGER NOT NULL DEFAULT 0"),
+)

@@ -25,7 +25,7 @@ from typing import Any, Literal
 
 from assistantx.adapters.messenger.base import ChatRef, InboundMessage, OutboundMessage
 from assistantx.errors import JournalError
-from assistantx.journal._schema import SCHEMA, SCHEMA_VERSION
+from assistantx.journal._schema import ADDED_COLUMNS, SCHEMA, SCHEMA_VERSION
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.ppdr.events import TraceEvent
 
@@ -49,6 +49,7 @@ class InstructionRecord:
     updated_at: float
     cancel_requested: bool
     stm: ShortTermMemory | None
+    steps: int = 0  # steps begun, as of the last checkpoint (lists do not load the memory)
 
 
 @dataclass(frozen=True)
@@ -97,6 +98,7 @@ class Journal:
             conn.execute("PRAGMA synchronous=NORMAL")
             conn.execute("PRAGMA busy_timeout=5000")
             conn.executescript(SCHEMA)
+            _add_missing_columns(conn)
             row = conn.execute("SELECT value FROM meta WHERE key='schema'").fetchone()
             if row is None:
                 conn.execute("INSERT INTO meta VALUES ('schema', ?)", (str(SCHEMA_VERSION),))
@@ -170,14 +172,14 @@ class Journal:
         body = stm.model_dump_json()
         trace = stm.trace
         cur = db.execute(
-            "UPDATE instructions SET status=?, outcome=?, summary=?, updated_at=?, stm=?"
-            " WHERE id=?",
-            (status, trace.outcome, trace.summary, now, body, stm.instruction_id),
+            "UPDATE instructions SET status=?, outcome=?, summary=?, updated_at=?, stm=?,"
+            " steps=? WHERE id=?",
+            (status, trace.outcome, trace.summary, now, body, len(trace.steps), stm.instruction_id),
         )
         if cur.rowcount == 0:
             db.execute(
                 "INSERT INTO instructions (id, requester, text, status, outcome, summary,"
-                " created_at, updated_at, stm) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                " created_at, updated_at, stm, steps) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 (
                     stm.instruction_id,
                     stm.requester,
@@ -188,6 +190,7 @@ class Journal:
                     trace.started_at,
                     now,
                     body,
+                    len(trace.steps),
                 ),
             )
 
@@ -231,7 +234,7 @@ class Journal:
             args.append(after_seq)
         rows = self._conn.execute(
             "SELECT seq, id, requester, text, status, outcome, summary, created_at, updated_at,"
-            f" cancel_requested, NULL AS stm FROM instructions WHERE {' AND '.join(where)}"
+            f" cancel_requested, steps, NULL AS stm FROM instructions WHERE {' AND '.join(where)}"
             " ORDER BY seq DESC LIMIT ?",
             (*args, limit),
         ).fetchall()
@@ -435,7 +438,15 @@ def _instruction(row: sqlite3.Row) -> InstructionRecord:
         updated_at=float(row["updated_at"]),
         cancel_requested=bool(row["cancel_requested"]),
         stm=ShortTermMemory.model_validate_json(stm) if stm else None,
+        steps=int(row["steps"]),
     )
+
+
+def _add_missing_columns(conn: sqlite3.Connection) -> None:
+    for table, column, definition in ADDED_COLUMNS:
+        present = {r[1] for r in conn.execute(f"PRAGMA table_info({table})")}
+        if column not in present:
+            conn.execute(f"ALTER TABLE {table} ADD COLUMN {column} {definition}")
 
 
 def _message(row: sqlite3.Row) -> MessageRecord:

@@ -27,9 +27,14 @@ class EventHub:
     def __init__(self, max_backlog: int = 1000) -> None:
         self._listeners: set[Listener] = set()
         self._max_backlog = max_backlog
+        self.closed = False
 
     def subscribe(self, instruction_id: str | None = None) -> Listener:
         listener = Listener(asyncio.Queue(self._max_backlog), instruction_id)
+        if self.closed:  # shutting down: the stream replays what is journaled, then ends
+            listener.queue.put_nowait(None)
+            listener.dropped = True
+            return listener
         self._listeners.add(listener)
         return listener
 
@@ -47,7 +52,8 @@ class EventHub:
                 self._drop(listener)
 
     def close(self) -> None:
-        """End every stream (shutdown)."""
+        """End every stream, and any opened from now on (shutdown); idempotent."""
+        self.closed = True
         for listener in list(self._listeners):
             self._drop(listener)
 

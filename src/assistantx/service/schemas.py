@@ -29,7 +29,7 @@ class InstructionOut(BaseModel):
     summary: str | None
     created_at: float
     updated_at: float
-    steps: int = 0
+    steps: int = Field(default=0, description="steps begun so far")
     links: dict[str, str]
 
     @classmethod
@@ -44,7 +44,7 @@ class InstructionOut(BaseModel):
             summary=record.summary,
             created_at=record.created_at,
             updated_at=record.updated_at,
-            steps=len(record.stm.trace.steps) if record.stm else 0,
+            steps=len(record.stm.trace.steps) if record.stm else record.steps,
             links={"self": base, "events": f"{base}/events", "cancel": f"{base}/cancel"},
         )
 

@@ -12,7 +12,10 @@ from types import TracebackType
 from typing import Self
 
 from assistantx.actions import Action
+from assistantx.adapters.lock.base import Locker
 from assistantx.adapters.messenger.base import InboundMessage
+from assistantx.adapters.robot.base import RobotBase
+from assistantx.clock import Clock
 from assistantx.errors import GroundingError
 from assistantx.executors import ExecutionContext, Executor
 from assistantx.memory.graph import LongTermMemory
@@ -33,9 +36,15 @@ class SimSession:
         text: str = "(driven by hand)",
         unavailable: tuple[str, ...] = (),
         instruction_id: str = "sim-1",
+        robot: RobotBase | None = None,
+        locker: Locker | None = None,
+        clock: Clock | None = None,
     ) -> None:
+        """``robot``, ``locker``, ``clock``: as for ``SimOffice`` (default: all simulated)."""
         self.office = office
-        self.sim = SimOffice(office, unavailable=unavailable)
+        self.sim = SimOffice(
+            office, unavailable=unavailable, robot=robot, locker=locker, clock=clock
+        )
         self.ltm = LongTermMemory(office)
         self.resolver = Resolver(office)
         self.replies = ReplyBox()
@@ -86,6 +95,7 @@ class SimSession:
             self._pump.cancel()
             with contextlib.suppress(asyncio.CancelledError):
                 await self._pump
+        await self.sim.aclose()
         await self.sim.locker.stop()
 
     async def _route(self) -> None:
