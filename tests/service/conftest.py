@@ -8,9 +8,9 @@ from pathlib import Path
 
 import httpx
 import pytest
-import uvicorn
 
 from assistantx.service.app import create_app
+from assistantx.service.server import service_server
 from assistantx.settings import Settings
 from service.server import LEE, OPERATOR, ZHANG, free_port
 
@@ -27,9 +27,7 @@ async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
         max_body_bytes=4096,
     )
     port = free_port()
-    server = uvicorn.Server(
-        uvicorn.Config(create_app(settings), host="127.0.0.1", port=port, log_level="warning")
-    )
+    server = service_server(create_app(settings), "127.0.0.1", port, log_level="warning")
     task = asyncio.create_task(server.serve())
     for _ in range(500):  # uvicorn offers no event for "listening"
         if server.started:

@@ -1,0 +1,50 @@
+"""SIGTERM stops the service within a couple of seconds, even with live event streams open."""
+
+from __future__ import annotations
+
+import threading
+import time
+from pathlib import Path
+
+import httpx
+
+from service.server import OPERATOR, free_port, serve
+
+
+def _follow(url: str, lines: list[str], opened: threading.Event) -> None:
+    headers = {"Authorization": f"Bearer {OPERATOR}"}
+    with (
+        httpx.Client(base_url=url, timeout=30) as client,
+        client.stream("GET", "/v1/events", headers=headers) as response,
+    ):
+        opened.set()
+        for line in response.iter_lines():
+            lines.append(line)
+
+
+def test_sigterm_with_open_sse_streams_stops_quickly(tmp_path: Path) -> None:
+    server = serve(tmp_path / "data", free_port())
+    lines: list[str] = []
+    followers = []
+    try:
+        for _ in range(2):
+            opened = threading.Event()
+            follower = threading.Thread(target=_follow, args=(server.url, lines, opened))
+            follower.start()
+            assert opened.wait(10)
+            followers.append(follower)
+        time.sleep(0.2)  # both streams are in their live phase
+        started = time.monotonic()
+        server.process.terminate()
+        code = server.process.wait(10)
+        took = time.monotonic() - started
+    finally:
+        server.stop()
+    for follower in followers:
+        follower.join(5)
+        assert not follower.is_alive()  # the server ended the streams
+    assert code in (0, -15)  # uvicorn re-raises the signal it handled once it has stopped
+    assert took < 2.5, f"stopping took {took:.1f} s"
+    log = server.log.read_text()
+    assert "Application shutdown complete" in log  # the lifespan ran: journal closed
+    assert "timeout graceful shutdown exceeded" not in log  # ended, not cancelled
