@@ -1,4 +1,15 @@
 # AssistantX on embedded defaults: `docker run -p 8000:8000 IMAGE`.
+# Stage 1 builds a wheel (it carries the default office, map and prompts as package data);
+# stage 2 installs it as a regular package, with no source tree in the image.
+FROM python:3.11-slim AS build
+WORKDIR /src
+COPY pyproject.toml README.md ./
+COPY src ./src
+COPY dataset ./dataset
+COPY maps ./maps
+COPY prompts ./prompts
+RUN pip wheel --no-cache-dir --no-deps -w /wheels .
+
 FROM python:3.11-slim
 
 ENV PYTHONDONTWRITEBYTECODE=1 \
@@ -8,15 +19,14 @@ ENV PYTHONDONTWRITEBYTECODE=1 \
     ASSISTANTX_HOST=0.0.0.0 \
     ASSISTANTX_PORT=8000
 
-WORKDIR /app
-COPY . /app
-# An editable install keeps dataset/, maps/ and prompts/ next to the package, where it looks
-# for the default office, map and prompts.
-RUN pip install -e . \
-    && useradd --system --uid 10001 --home-dir /app --shell /usr/sbin/nologin assistantx \
+COPY --from=build /wheels /wheels
+RUN pip install /wheels/*.whl \
+    && rm -rf /wheels \
+    && useradd --system --uid 10001 --home-dir /data --shell /usr/sbin/nologin assistantx \
     && mkdir -p /data && chown assistantx:assistantx /data
 
 USER assistantx
+WORKDIR /data
 VOLUME ["/data"]
 EXPOSE 8000
 HEALTHCHECK --interval=30s --timeout=5s --start-period=20s --retries=3 \

@@ -21,7 +21,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.errors import OfficeError
 
-DEFAULT_OFFICE = Path(__file__).resolve().parents[2] / "dataset" / "office.yaml"
+DEFAULT_OFFICE = Path(__file__).resolve().parent / "data" / "dataset" / "office.yaml"
 
 LocationKind = Literal["workstation", "facility", "room"]
 FacilityOperation = Literal["print", "copy", "coffee", "water", "heat", "vend", "meet"]

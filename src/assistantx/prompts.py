@@ -36,7 +36,7 @@ import yaml
 from assistantx.errors import PromptError
 from assistantx.llm.base import Message
 
-DEFAULT_PROMPTS = Path(__file__).resolve().parents[2] / "prompts"
+DEFAULT_PROMPTS = Path(__file__).resolve().parent / "data" / "prompts"
 PROMPT_SUFFIX = ".md"
 
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")

@@ -39,6 +39,10 @@ def test_dockerfile_shape() -> None:
     assert exposed == ["8000"] and cmd[cmd.index("--port") + 1] == "8000"
     assert "USER assistantx" in text and "HEALTHCHECK" in text and 'VOLUME ["/data"]' in text
     assert env["ASSISTANTX_DATA_DIR"] == "/data"
+    # A regular install of the built wheel: the package data, not a source tree, serves.
+    assert "pip install -e" not in text and "pip wheel" in text
+    for folder in ("src", "dataset", "maps", "prompts"):  # the wheel's package-data links
+        assert f"COPY {folder} ./{folder}" in text
 
 
 def test_the_entry_command_serves(tmp_path: Path) -> None:

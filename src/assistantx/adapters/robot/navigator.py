@@ -44,7 +44,7 @@ from assistantx.robot.planner import GridPlanner, Path
 
 logger = logging.getLogger(__name__)
 
-DEFAULT_MAP = FilePath(__file__).resolve().parents[4] / "maps" / "office.yaml"
+DEFAULT_MAP = FilePath(__file__).resolve().parents[2] / "data" / "maps" / "office.yaml"
 MAX_PARTICLES_SHOWN = 500
 
 
