@@ -56,7 +56,7 @@ def test_load_prompts_by_name_and_all(tmp_path: Path) -> None:
 
 
 def test_default_directory_is_the_repository_prompts_folder() -> None:
-    assert DEFAULT_PROMPTS == Path(__file__).resolve().parents[2] / "prompts"
+    assert DEFAULT_PROMPTS.resolve() == Path(__file__).resolve().parents[2] / "prompts"
 
 
 @pytest.mark.parametrize(
