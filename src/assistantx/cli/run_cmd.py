@@ -13,13 +13,12 @@ import json
 from pathlib import Path
 from typing import Any
 
-from assistantx.assistant import Assistant, AssistantParts
+from assistantx.dataset.simrun import run_in_sim
 from assistantx.errors import AssistantXError, GroundingError, OfficeError
 from assistantx.office import load_office
 from assistantx.ppdr.loop import LoopLimits
 from assistantx.reasoners import reasoner_factory
 from assistantx.settings import Settings
-from assistantx.sim.office import SimOffice
 from assistantx.trace import Trace
 
 
@@ -71,42 +70,20 @@ async def _execute(
     args: argparse.Namespace, settings: Settings, office: Any, kind: str
 ) -> tuple[dict[str, Any], Trace]:
     unavailable = tuple(p for p in args.unavailable.split(",") if p)
-    sim = SimOffice(office, unavailable=unavailable)
-    factory = reasoner_factory(kind, office, settings)
     limits = LoopLimits(
         max_steps=args.max_steps or settings.max_steps, deadline_s=settings.instruction_deadline_s
     )
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=factory,
-            reasoner_name=kind,
-            limits=limits,
-        )
+    run = await run_in_sim(
+        office,
+        args.requester,
+        args.instruction,
+        reasoner_factory(kind, office, settings),
+        unavailable=unavailable,
+        limits=limits,
+        reasoner_name=kind,
     )
-
-    async def register(stm: Any) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-
-    async def forget(stm: Any) -> None:  # nothing people write about it arrives later
-        sim.end_instruction(stm.instruction_id)
-
-    assistant.on_instruction_end(forget)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit(args.requester, args.instruction)
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
-    trace = stm.trace
+    sim = run.sim
+    trace = run.trace
     actions = [r.action.model_dump(mode="json") for r in trace.actions()]
     summary = {
         "instruction_id": trace.instruction_id,
