@@ -128,8 +128,11 @@ def test_an_l2_instruction_from_the_page_to_its_outcome(browser: Browser, server
     expect(page.locator("#tab-evaluation")).to_be_focused()
     expect(page.locator("#view-live")).to_be_hidden()
     expect(page.locator("#evaluation table")).to_contain_text("L2")
-    expect(page.locator("#evaluation img")).to_have_attribute("alt", "Chart: sr by level")
-    assert page.locator("#evaluation img").evaluate("img => img.complete && img.naturalWidth > 0")
+    expect(page.locator("#evaluation table")).to_contain_text("100.0")
+    expect(page.locator("#evaluation img").first).to_have_attribute("alt", "Chart: cr")
+    assert page.locator("#evaluation img").first.evaluate(
+        "img => img.complete && img.naturalWidth > 0"
+    )
     shoot(page, "dashboard-evaluation")
 
 
