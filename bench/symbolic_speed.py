@@ -20,12 +20,11 @@ from pathlib import Path
 
 import yaml
 
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.memory.short_term import ShortTermMemory
+from assistantx.dataset.simrun import run_in_sim
 from assistantx.office import Office, load_office
 from assistantx.settings import Settings
-from assistantx.sim.office import SimOffice
 from assistantx.symbolic import InstructionParser, build_factory
+from assistantx.trace import Trace
 
 # (requester, instruction, unavailable people)
 INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [
@@ -64,33 +63,11 @@ INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [
 PARAPHRASES = Path(__file__).resolve().parent.parent / "tests" / "symbolic" / "paraphrases.yaml"
 
 
-async def run_one(
-    office: Office, requester: str, text: str, away: tuple[str, ...]
-) -> ShortTermMemory:
-    sim = SimOffice(office, unavailable=away)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=build_factory(office, Settings()),
-        )
+async def run_one(office: Office, requester: str, text: str, away: tuple[str, ...]) -> Trace:
+    run = await run_in_sim(
+        office, requester, text, build_factory(office, Settings()), unavailable=away
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit(requester, text)
-        return await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    return run.trace
 
 
 async def main(repeat: int) -> dict[str, object]:
@@ -102,13 +79,13 @@ async def main(repeat: int) -> dict[str, object]:
     for _ in range(repeat):
         for requester, text, away in INSTRUCTIONS:
             started = time.perf_counter()
-            stm = await run_one(office, requester, text, away)
+            trace = await run_one(office, requester, text, away)
             wall = (time.perf_counter() - started) * 1000
-            steps = [sum(c.latency_s for c in s.calls) * 1000 for s in stm.trace.steps if s.calls]
+            steps = [sum(c.latency_s for c in s.calls) * 1000 for s in trace.steps if s.calls]
             per_step_ms += steps
             per_instruction_ms.append(sum(steps))
             wall_ms.append(wall)
-            outcome = stm.trace.outcome or "none"
+            outcome = trace.outcome or "none"
             outcomes[outcome] = outcomes.get(outcome, 0) + 1
             label = f"{text!r} away={','.join(away) or '-'}"
             print(
