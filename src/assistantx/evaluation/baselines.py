@@ -18,17 +18,17 @@ repetition refusal and feedback are the same as for PPDR, so the comparison is f
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from pathlib import Path
 from typing import Literal, TypeVar
 
 from pydantic import BaseModel, Field
 
-from assistantx.errors import ModelBehaviorError, ReasonerError
-from assistantx.llm import Attempt, ChatModel, ChatRequest, OpenAICompatibleModel, structured_call
+from assistantx.errors import ReasonerError
+from assistantx.llm import ChatModel, OpenAICompatibleModel
 from assistantx.memory.render import render_memory
-from assistantx.ppdr.agents import AgentContext, Reasoner
-from assistantx.ppdr.llm_agents import SharedModel, agent_call, check_actions, schema_text
+from assistantx.ppdr.agents import AgentContext
+from assistantx.ppdr.llm_agents import ModelReasoner, SharedModel, check_actions, schema_text
 from assistantx.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt
 from assistantx.settings import Settings
 from assistantx.trace import (
@@ -82,7 +82,7 @@ def load_baseline_prompts(
     return {f: load_prompt(folder / f"{f}.md", name=f"baselines/{f}") for f in _prompt_files(name)}
 
 
-class BaselineReasoner(Reasoner):
+class BaselineReasoner(ModelReasoner):
     def __init__(
         self,
         name: BaselineName,
@@ -91,24 +91,12 @@ class BaselineReasoner(Reasoner):
         *,
         output_retries: int = 2,
     ) -> None:
+        super().__init__(shared, output_retries=output_retries)
         self.name = name
-        self.shared = shared
         self.prompts = prompts
-        self.output_retries = output_retries
         self.lessons: list[str] = []
         self.progress: Progress | None = None
         self.judgement: StepJudgement | None = None
-        self._started = False
-
-    async def start(self) -> None:
-        if not self._started:
-            await self.shared.acquire()
-            self._started = True
-
-    async def stop(self) -> None:
-        if self._started:
-            self._started = False
-            await self.shared.release()
 
     # -- the four hooks ------------------------------------------------------------------
     async def perceive(self, ctx: AgentContext) -> Percept:
@@ -204,23 +192,7 @@ class BaselineReasoner(Reasoner):
         **values: str,
     ) -> OutputT:
         messages = self.prompts[prompt].render(values)
-        request = ChatRequest(
-            messages=tuple(messages),
-            agent=prompt,
-            instruction_id=ctx.stm.instruction_id,
-            step=ctx.step,
-        )
-        try:
-            result = await structured_call(
-                self.shared.model, request, output_type, check, max_retries=self.output_retries
-            )
-        except ModelBehaviorError as exc:
-            attempts: Sequence[Attempt] = [a for a in exc.attempts if isinstance(a, Attempt)]
-            if attempts:
-                ctx.record(agent_call(prompt, attempts))
-            raise
-        ctx.record(agent_call(prompt, result.attempts))
-        return result.output
+        return await self._ask(ctx, prompt, messages, output_type, check)
 
 
 def _results_text(results: list[ActionResult]) -> str:

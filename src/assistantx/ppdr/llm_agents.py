@@ -289,29 +289,19 @@ def _observed_text(observed: Observation) -> str:
     return "\n".join(lines)
 
 
-# -- the reasoner ----------------------------------------------------------------------------
+# -- a reasoner on a shared model -------------------------------------------------------------
 
 
-class LLMReasoner(Reasoner):
-    """Perception, Planning, Decision and Reflection, each one prompt and one typed output."""
+class ModelReasoner(Reasoner):
+    """A reasoner whose agents are structured calls to a shared chat model, accounted in the
+    trace. Holds the shared model from ``start`` to ``stop`` (both idempotent)."""
 
-    name = "llm"
-
-    def __init__(
-        self, shared: SharedModel, prompts: AgentPrompts, *, output_retries: int = 2
-    ) -> None:
+    def __init__(self, shared: SharedModel, *, output_retries: int = 2) -> None:
         if output_retries < 0:
             raise ValueError("output_retries must be >= 0")
         self.shared = shared
-        self.prompts = prompts
         self.output_retries = output_retries
         self._holding = False
-        self._schemas = {
-            "perception": schema_text(Percept),
-            "planning": schema_text(Plan),
-            "decision": schema_text(Decision),
-            "reflection": schema_text(Reflection),
-        }
 
     async def start(self) -> None:
         if not self._holding:
@@ -322,6 +312,58 @@ class LLMReasoner(Reasoner):
         if self._holding:
             self._holding = False
             await self.shared.release()
+
+    async def _ask(
+        self,
+        ctx: AgentContext,
+        agent: str,
+        messages: list[Message],
+        output_type: type[OutputT],
+        check: Callable[[OutputT], None] | None,
+        *,
+        schema_name: str | None = None,
+    ) -> OutputT:
+        """One structured call, its attempts recorded on ``ctx`` even when it gives up."""
+        await self.start()
+        request = ChatRequest(
+            messages=tuple(messages),
+            agent=agent,
+            schema_name=schema_name,
+            instruction_id=ctx.stm.instruction_id,
+            step=ctx.step,
+        )
+        try:
+            result = await structured_call(
+                self.shared.model, request, output_type, check, max_retries=self.output_retries
+            )
+        except ModelBehaviorError as exc:
+            attempts = [a for a in exc.attempts if isinstance(a, Attempt)]
+            if attempts:
+                ctx.record(agent_call(agent, attempts))
+            raise
+        ctx.record(agent_call(agent, result.attempts))
+        return result.output
+
+
+# -- the reasoner ----------------------------------------------------------------------------
+
+
+class LLMReasoner(ModelReasoner):
+    """Perception, Planning, Decision and Reflection, each one prompt and one typed output."""
+
+    name = "llm"
+
+    def __init__(
+        self, shared: SharedModel, prompts: AgentPrompts, *, output_retries: int = 2
+    ) -> None:
+        super().__init__(shared, output_retries=output_retries)
+        self.prompts = prompts
+        self._schemas = {
+            "perception": schema_text(Percept),
+            "planning": schema_text(Plan),
+            "decision": schema_text(Decision),
+            "reflection": schema_text(Reflection),
+        }
 
     # -- the four agents -----------------------------------------------------------------
     async def perceive(self, ctx: AgentContext) -> Percept:
@@ -336,7 +378,9 @@ class LLMReasoner(Reasoner):
         def check(percept: Percept) -> None:
             focus_ids(percept, ctx.resolver, ctx.stm.requester)
 
-        percept = await self._ask(ctx, "perception", messages, Percept, check)
+        percept = await self._ask(
+            ctx, "perception", messages, Percept, check, schema_name="Percept"
+        )
         return focus_ids(percept, ctx.resolver, ctx.stm.requester)
 
     async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
@@ -348,7 +392,7 @@ class LLMReasoner(Reasoner):
             feedback=_feedback_text(ctx.feedback),
             output_schema=self._schemas["planning"],
         )
-        return await self._ask(ctx, "planning", messages, Plan, None)
+        return await self._ask(ctx, "planning", messages, Plan, None, schema_name="Plan")
 
     async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
         messages = self.prompts.decision.render(
@@ -363,7 +407,7 @@ class LLMReasoner(Reasoner):
         def check(decision: Decision) -> None:
             check_actions(decision.actions, ctx.resolver, ctx.stm)
 
-        return await self._ask(ctx, "decision", messages, Decision, check)
+        return await self._ask(ctx, "decision", messages, Decision, check, schema_name="Decision")
 
     async def reflect(
         self,
@@ -387,39 +431,12 @@ class LLMReasoner(Reasoner):
         def check(reflection: Reflection) -> None:
             ground_updates(reflection.updates, ctx.resolver)
 
-        reflection = await self._ask(ctx, "reflection", messages, Reflection, check)
+        reflection = await self._ask(
+            ctx, "reflection", messages, Reflection, check, schema_name="Reflection"
+        )
         return reflection.model_copy(
             update={"updates": ground_updates(reflection.updates, ctx.resolver)}
         )
-
-    # -- one structured call, accounted ---------------------------------------------------
-    async def _ask(
-        self,
-        ctx: AgentContext,
-        agent: str,
-        messages: list[Message],
-        output_type: type[OutputT],
-        check: Callable[[OutputT], None] | None,
-    ) -> OutputT:
-        await self.start()
-        request = ChatRequest(
-            messages=tuple(messages),
-            agent=agent,
-            schema_name=output_type.__name__,
-            instruction_id=ctx.stm.instruction_id,
-            step=ctx.step,
-        )
-        try:
-            result = await structured_call(
-                self.shared.model, request, output_type, check, max_retries=self.output_retries
-            )
-        except ModelBehaviorError as exc:
-            attempts = [a for a in exc.attempts if isinstance(a, Attempt)]
-            if attempts:
-                ctx.record(agent_call(agent, attempts))
-            raise
-        ctx.record(agent_call(agent, result.attempts))
-        return result.output
 
 
 def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
