@@ -56,6 +56,8 @@ async def test_push_runtime_from_environment_delivers_a_pushed_message(
     assert runtime.router is not None
     inbox: asyncio.Queue[InboundMessage] = asyncio.Queue()
     runtime.messenger.connect_inbox(inbox)
+    # Only a recorded DM room is a DM (a room the bot was merely pulled into is not).
+    await runtime.messenger.directory.set_dm("lee", "!dm:office.test")
     event = {
         "type": "m.room.message",
         "event_id": "$e1",

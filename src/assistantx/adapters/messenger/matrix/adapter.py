@@ -4,12 +4,17 @@ Inbound, by mode: ``push`` (the homeserver pushes to ``appservice_router()``, wh
 mounts), ``pull`` (a /sync poller on an ordinary bot account) or ``both`` (each message still
 reaches the inbox once: both paths deduplicate on the event id in the shared ``EventStore``).
 
-Outbound: text to a person's DM room (found through the bot's ``m.direct`` account data, or
-created and recorded there) or to a group's room; images and files are uploaded to the media
-repository, or forwarded by their ``mxc://`` URI without a copy. Each part of a message is sent
-with a transaction id derived from ``OutboundMessage.idempotency_key``, so a retried send never
-posts twice. The sender is the application service's bot in ``push``/``both`` modes and the
-pull account in ``pull`` mode.
+Outbound: text to a person's DM room (recorded in the store, checked to be private before
+anything is sent; else found through the bot's ``m.direct`` account data, or created) or to a
+group's room; images and files are uploaded to the media repository, or forwarded by their
+``mxc://`` URI without a copy (a file a person sent is found by its office item, ``file:lee``).
+Each part of a message gets a random transaction id recorded in the store under its
+``OutboundMessage.idempotency_key``: a retry of the same message reuses it (and is answered
+from the store once sent), while a new message is never taken for a repeat of an old one, also
+after a restart. The sender is the application service's bot in ``push``/``both`` modes and
+the pull account in ``pull`` mode. Once ``closing`` is set (the service is shutting down),
+nothing more is sent: an instruction cut short resumes after the restart instead of telling
+its requester it failed.
 
 In ``both`` mode the pull account is kept in every room the bot talks in (it is invited to
 the DM rooms the bot creates or joins, and joins the group rooms), so either path alone
@@ -22,11 +27,13 @@ but never acknowledged are put on the inbox again by the next ``start()``.
 from __future__ import annotations
 
 import hashlib
+import json
 import logging
 import struct
 import uuid
+from collections.abc import Mapping, Sequence
 from datetime import UTC, datetime
-from typing import Any
+from typing import Any, Protocol
 
 import httpx
 from fastapi import APIRouter
@@ -39,11 +46,20 @@ from assistantx.adapters.messenger.base import (
     OutboundMessage,
     SentMessage,
 )
-from assistantx.adapters.messenger.matrix.appservice import create_appservice_router
+from assistantx.adapters.messenger.matrix.appservice import (
+    create_appservice_router,
+    create_discarding_router,
+)
 from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError, RetryPolicy
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
-from assistantx.adapters.messenger.matrix.ingest import EventIngestor
-from assistantx.adapters.messenger.matrix.normalize import PLATFORM, EventNormalizer
+from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
+from assistantx.adapters.messenger.matrix.normalize import (
+    PLATFORM,
+    STRANGER_TEXT,
+    AutoReply,
+    EventNormalizer,
+)
+from assistantx.adapters.messenger.matrix.rooms import RoomDirectory
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
 from assistantx.errors import MessengerError
@@ -54,7 +70,7 @@ _PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
 
 def transaction_id(idempotency_key: str, part: int) -> str:
-    """Stable per (logical message, part): the homeserver drops a repeated id."""
+    """Stable per (key, part); only for keys unique for ever (an answered event's id)."""
     digest = hashlib.sha256(f"{idempotency_key}\x00{part}".encode()).hexdigest()
     return f"ax{digest[:40]}"
 
@@ -67,6 +83,21 @@ def png_size(data: bytes) -> tuple[int, int] | None:
     return int(width), int(height)
 
 
+def content_digest(room_id: str, content: Mapping[str, Any]) -> str:
+    """What makes two sends the same message: room and content, not the upload's new URL."""
+    stable = {k: v for k, v in content.items() if k not in ("url", "info")}
+    text = json.dumps([room_id, stable], sort_keys=True, ensure_ascii=False)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+class Transcript(Protocol):
+    """Where every message in and out is also written (the service's journal)."""
+
+    def record_outbound(self, message: OutboundMessage, sender: str, now: float) -> Any: ...
+
+    def record_inbound(self, message: InboundMessage) -> Any: ...
+
+
 class MatrixMessenger(Messenger):
     platform = PLATFORM
 
@@ -76,26 +107,32 @@ class MatrixMessenger(Messenger):
         store: EventStore,
         *,
         http: httpx.AsyncClient | None = None,
+        transcript: Transcript | None = None,
     ) -> None:
         super().__init__()
         self.config = config
         self.store = store
+        self.transcript = transcript
         self._external_http = http
         self._http: httpx.AsyncClient | None = None
         self._as_client: MatrixClient | None = None
         self._pull_client: MatrixClient | None = None
         self._poller: SyncPoller | None = None
-        self._group_rooms: dict[str, str] = {}  # group id → room id
-        self._dm_rooms: dict[str, str] = {}  # person id → room id
         self.normalizer = EventNormalizer(config, {})
+        self.normalizer.rooms.strict = True  # only recorded DMs and configured groups count
+        self.directory = RoomDirectory(config, store, self.normalizer.rooms)
         self.ingestor = EventIngestor(
             store,
             self.normalizer,
             self._deliver_or_fail,
-            on_invite=self._join_invited,
-            on_accepted=self._remember_room,
+            on_invite=self._on_invite,
+            on_accepted=self._remember_media,
+            prepare=self._prepare,
+            on_auto_reply=self._auto_reply,
         )
         self._started = False
+        self.closing = False  # set on shutdown: nothing more goes out
+        self._pushes_discarded = 0
 
     # -- lifecycle ----------------------------------------------------------------------
 
@@ -120,8 +157,11 @@ class MatrixMessenger(Messenger):
                 http=self._http,
             )
         self._started = True
+        self.closing = False
         try:
+            await self.directory.load()
             await self._resolve_groups()
+            await self._bring_pull_account_along()
             for message in await self.store.unhandled():
                 if message.platform == PLATFORM:
                     await self._deliver_or_fail(message)
@@ -131,6 +171,7 @@ class MatrixMessenger(Messenger):
                     self.ingestor,
                     sync_key=f"matrix:{config.pull_user_id}",
                     timeout_s=config.sync_timeout_s,
+                    own_user_id=config.pull_user_id,
                 )
                 await self._poller.start()
         except BaseException:
@@ -159,9 +200,20 @@ class MatrixMessenger(Messenger):
             raise MessengerError(f"mode {self.config.mode!r} receives no pushes")
         return create_appservice_router(hs_token=self.config.hs_token, ingestor=self.ingestor)
 
+    def leftover_push_router(self) -> APIRouter:
+        """For ``pull`` mode: pushes of a registration left from ``push`` mode are acknowledged
+        and dropped (the poller receives everything), so the homeserver does not retry them
+        for ever against a 405."""
+        return create_discarding_router(hs_token=self.config.hs_token)
+
     async def acknowledge(self, message: InboundMessage) -> None:
         """The consumer is done with ``message``; it will not be replayed on restart."""
         await self.store.mark_handled(message.platform, message.event_id)
+
+    async def instruction_ended(self, instruction_id: str) -> None:
+        """The instruction is over: a later one reusing its id never has a send deduplicated
+        against its messages."""
+        await self.store.close_instruction(instruction_id)
 
     # -- inbound plumbing ---------------------------------------------------------------
 
@@ -169,14 +221,55 @@ class MatrixMessenger(Messenger):
         if self._inbox is None:
             # Stored already; failing here makes the push answer 500 and the poller retry.
             raise MessengerError("no inbox connected; call connect_inbox() before start()")
+        if self.transcript is not None:
+            self.transcript.record_inbound(message)
         await self._deliver(message)
 
-    async def _join_invited(self, room_id: str, user_id: str) -> None:
+    async def _prepare(self, events: Sequence[RoomEvent]) -> None:
+        if self._started:  # not started: nothing to learn rooms from (the push fails later)
+            await self.directory.observe(self._sender(), events)
+
+    async def _remember_media(self, room_id: str, message: InboundMessage) -> None:
+        for attachment in message.attachments:
+            if attachment.item and attachment.ref:
+                await self.store.remember_media(
+                    attachment.item, attachment.ref, attachment.name, attachment.mime
+                )
+
+    async def _auto_reply(self, reply: AutoReply) -> None:
+        if self.closing:
+            return
+        content = {"msgtype": "m.notice", "body": reply.text}
+        # Keyed by the answered event, whose id is unique for ever: one answer per event.
+        txn = transaction_id(f"auto:{reply.event_id}", 0)
+        await self._sender().send_event(reply.room_id, "m.room.message", content, txn_id=txn)
+        person = self.normalizer.rooms.dms.get(reply.room_id)
+        group = self.normalizer.rooms.groups.get(reply.room_id)
+        if self.transcript is not None and (person or group):
+            chat = (
+                ChatRef(kind="dm", id=person) if person else ChatRef(kind="group", id=group or "")
+            )
+            self.transcript.record_outbound(
+                OutboundMessage(chat=chat, text=reply.text),
+                "assistant",
+                datetime.now(UTC).timestamp(),
+            )
+
+    async def _on_invite(self, room_id: str, user_id: str, event: Mapping[str, Any]) -> None:
         if user_id == self.config.bot_user_id and self.config.push_enabled:
             client = self._sender()
         elif user_id == self.config.pull_user_id and self._pull_client is not None:
             client = self._pull_client
         else:
+            return
+        inviter = event.get("sender")
+        content = event.get("content")
+        is_direct = isinstance(content, dict) and content.get("is_direct") is True
+        person = self.config.person_of(inviter) if isinstance(inviter, str) else None
+        own = isinstance(inviter, str) and self.normalizer.is_own(inviter)
+        group = await self.directory.group_of(client, room_id)
+        if person is None and group is None and not own:
+            await self._turn_away(client, room_id, user_id, inviter)
             return
         try:
             await client.join(room_id)
@@ -187,8 +280,25 @@ class MatrixMessenger(Messenger):
                 return
             raise
         logger.info("joined %s as %s", room_id, user_id)
+        if person is not None and group is None and is_direct:
+            await self.directory.set_dm(person, room_id)
         if user_id == self.config.bot_user_id:
             await self._invite_pull_account(room_id)
+
+    async def _turn_away(
+        self, client: MatrixClient, room_id: str, user_id: str, inviter: object
+    ) -> None:
+        """Someone outside the office: say so once (as the sending account), then leave."""
+        logger.info("declining the invite of %s to %s: not of the office", inviter, room_id)
+        try:
+            if user_id == self._sender_id() and not self.closing:
+                await client.join(room_id)
+                txn = transaction_id(f"decline:{room_id}", 0)
+                content = {"msgtype": "m.notice", "body": STRANGER_TEXT}
+                await client.send_event(room_id, "m.room.message", content, txn_id=txn)
+            await client.leave(room_id)
+        except MatrixError as exc:
+            logger.warning("could not decline the invite to %s: %s", room_id, exc)
 
     async def _invite_pull_account(self, room_id: str) -> None:
         """In ``both`` mode, bring the pull account into a room the bot is in (its poller
@@ -204,10 +314,15 @@ class MatrixMessenger(Messenger):
                 return
             raise
 
-    async def _remember_room(self, room_id: str, message: InboundMessage) -> None:
-        if message.chat.kind == "dm":
-            # Answer a person in the room they wrote in.
-            self._dm_rooms[message.chat.id] = room_id
+    async def _bring_pull_account_along(self) -> None:
+        """``both`` mode after ``push``: DM rooms made earlier get the pull account too."""
+        if self.config.mode != "both":
+            return
+        for room_id in list(self.normalizer.rooms.dms):
+            try:
+                await self._invite_pull_account(room_id)
+            except MatrixError as exc:
+                logger.warning("could not bring the pull account into %s: %s", room_id, exc)
 
     # -- rooms --------------------------------------------------------------------------
 
@@ -231,35 +346,33 @@ class MatrixMessenger(Messenger):
                 logger.warning("group %s is not reachable yet: %s", group, exc)
 
     async def _group_room(self, group: str) -> str:
-        room_id = self._group_rooms.get(group)
-        if room_id is not None:
-            return room_id
-        target = self.config.groups.get(group)
-        if target is None:
-            raise MessengerError(f"group {group!r} has no Matrix room in the configuration")
         client = self._sender()
-        room_id = await client.resolve_alias(target) if target.startswith("#") else target
-        await client.join(room_id)
-        if self.config.mode == "both" and self._pull_client is not None:
-            await self._pull_client.join(room_id)
-        self._group_rooms[group] = room_id
-        self.normalizer.set_group_rooms({room: g for g, room in self._group_rooms.items()})
+        room_id = await self.directory.resolve_group(client, group)
+        joined = set(await client.joined_rooms())
+        if room_id not in joined:
+            await client.join(room_id)
+            if self.config.mode == "both" and self._pull_client is not None:
+                await self._pull_client.join(room_id)
         return room_id
 
     async def dm_room(self, person: str) -> str:
-        """The room to write to ``person`` in: known, recorded in m.direct, or new."""
+        """The room to write to ``person`` in: recorded and still private, recorded in
+        m.direct and private, or new."""
         user_id = self.config.people.get(person)
         if user_id is None:
-            raise MessengerError(f"person {person!r} has no Matrix account in the configuration")
+            raise MessengerError(
+                f"{person} cannot be reached on Matrix: no Matrix account is configured for "
+                "them; reach them another way or ask someone else"
+            )
         client = self._sender()
-        joined = set(await client.joined_rooms())
-        known = self._dm_rooms.get(person)
-        if known is not None and known in joined:
+        known = self.directory.dm_of(person)
+        if known is not None and await self.directory.is_private(client, known, user_id):
             return known
         direct = await client.get_account_data(self._sender_id(), "m.direct") or {}
+        joined = set(await client.joined_rooms())
         for room_id in reversed(direct.get(user_id, [])):
-            if room_id in joined:
-                self._dm_rooms[person] = room_id
+            if room_id in joined and await self.directory.is_private(client, room_id, user_id):
+                await self.directory.set_dm(person, str(room_id))
                 return str(room_id)
         invite = [user_id]
         if self.config.mode == "both" and self.config.pull_user_id is not None:
@@ -269,7 +382,7 @@ class MatrixMessenger(Messenger):
         )
         direct.setdefault(user_id, []).append(room_id)
         await client.set_account_data(self._sender_id(), "m.direct", direct)
-        self._dm_rooms[person] = room_id
+        await self.directory.set_dm(person, room_id)
         logger.info("created DM room %s for %s", room_id, person)
         return room_id
 
@@ -281,23 +394,42 @@ class MatrixMessenger(Messenger):
     async def send(self, message: OutboundMessage) -> SentMessage:
         if not self._started:
             raise MessengerError("the Matrix messenger is not started")
+        if self.closing:
+            raise MessengerError("the service is shutting down; the message was not sent")
         if not message.text and not message.attachments:
             raise MessengerError("an outbound message needs text or an attachment")
         client = self._sender()
         room_id = await self._room_for(message.chat)
-        # Upload first: a failed upload must not leave half a message behind.
-        contents: list[JSON] = []
+        # Resolve everything first: a missing file must not leave half a message behind.
+        contents: list[tuple[JSON, Attachment | None]] = []
         if message.text:
-            contents.append({"msgtype": "m.text", "body": message.text})
+            contents.append(({"msgtype": "m.text", "body": message.text}, None))
         for attachment in message.attachments:
-            contents.append(await self._attachment_content(client, attachment))
+            contents.append((await self._describe(attachment), attachment))
         key = message.idempotency_key or uuid.uuid4().hex
-        event_ids = [
-            await client.send_event(
-                room_id, "m.room.message", content, txn_id=transaction_id(key, part)
+        event_ids: list[str] = []
+        for part, (content, original) in enumerate(contents):
+            record = await self.store.outbound_part(
+                key,
+                part,
+                content_digest(room_id, content),
+                room_id=room_id,
+                instruction_id=message.instruction_id,
             )
-            for part, content in enumerate(contents)
-        ]
+            if record.event_id is not None:
+                event_ids.append(record.event_id)  # sent before a restart: not again
+                continue
+            if original is not None and original.data is not None:
+                content = await self._upload(client, content, original.data)
+            event_id = await client.send_event(
+                room_id, "m.room.message", content, txn_id=record.txn_id
+            )
+            await self.store.part_sent(record.txn_id, event_id, message.question_id)
+            if message.question_id:
+                self.normalizer.rooms.questions[event_id] = message.question_id
+            event_ids.append(event_id)
+        if self.transcript is not None:
+            self.transcript.record_outbound(message, "assistant", datetime.now(UTC).timestamp())
         logger.debug("sent %d events to %s (%s)", len(event_ids), message.chat, room_id)
         return SentMessage(
             platform=PLATFORM,
@@ -306,32 +438,43 @@ class MatrixMessenger(Messenger):
             time=datetime.now(UTC),
         )
 
-    async def _attachment_content(self, client: MatrixClient, attachment: Attachment) -> JSON:
+    async def _describe(self, attachment: Attachment) -> JSON:
+        """The event content of an attachment (its URL filled in by ``_upload`` for data)."""
         mime = attachment.mime
         info: dict[str, Any] = {}
+        url: str | None = None
         if attachment.data is not None:
-            data = attachment.data
-            if mime == "application/octet-stream" and data.startswith(_PNG_MAGIC):
+            if mime == "application/octet-stream" and attachment.data.startswith(_PNG_MAGIC):
                 mime = "image/png"
-            url = await client.upload(data, content_type=mime, filename=attachment.name)
-            info["size"] = len(data)
-            size = png_size(data)
-            if size is not None:
-                info["w"], info["h"] = size
         elif attachment.ref is not None and attachment.ref.startswith("mxc://"):
             url = attachment.ref  # forward: the media stays where it is, no copy
+        elif attachment.item is not None and (found := await self.store.media(attachment.item)):
+            url, _name, mime = found
         else:
+            owner = (attachment.item or "").removeprefix("file:") or "anyone"
             raise MessengerError(
-                f"attachment {attachment.name!r} has neither data nor an mxc:// reference"
+                f"I have no copy of {attachment.item or attachment.name}: {owner} has not sent "
+                "it to me on Matrix; ask them to send it first"
             )
         info["mimetype"] = mime
-        return {
+        content: JSON = {
             "msgtype": "m.image" if attachment.kind == "image" else "m.file",
             "body": attachment.name,
             "filename": attachment.name,
-            "url": url,
             "info": info,
         }
+        if url is not None:
+            content["url"] = url
+        return content
+
+    async def _upload(self, client: MatrixClient, content: JSON, data: bytes) -> JSON:
+        info = dict(content["info"])
+        url = await client.upload(data, content_type=info["mimetype"], filename=content["body"])
+        info["size"] = len(data)
+        size = png_size(data)
+        if size is not None:
+            info["w"], info["h"] = size
+        return {**content, "url": url, "info": info}
 
     async def download(self, attachment: Attachment) -> bytes:
         """The bytes of a received attachment (by its ``mxc://`` reference)."""

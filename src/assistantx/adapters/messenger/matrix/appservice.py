@@ -129,3 +129,32 @@ def create_appservice_router(
         return matrix_error(404, "M_NOT_FOUND", "no rooms are created on demand")
 
     return router
+
+
+def create_discarding_router(*, hs_token: SecretStr) -> APIRouter:
+    """For ``pull`` mode: a registration left from ``push`` mode still pushes; acknowledge and
+    drop (the poller receives the same events), and say once in the log what to do."""
+    router = APIRouter(tags=["matrix-appservice"])
+    warned = False
+
+    @router.put("/_matrix/app/v1/transactions/{txn_id}")
+    async def push_transaction(txn_id: str, request: Request) -> JSONResponse:
+        nonlocal warned
+        refused = _authenticate(request, hs_token)
+        if refused is not None:
+            return refused
+        if not warned:
+            warned = True
+            logger.warning(
+                "the homeserver still pushes to us in pull mode; the pushes are dropped "
+                "(the /sync poller receives everything). Remove the appservice registration "
+                "from the homeserver, or use mode 'both'."
+            )
+        return JSONResponse({})
+
+    @router.post("/_matrix/app/v1/ping")
+    async def ping(request: Request) -> JSONResponse:
+        refused = _authenticate(request, hs_token)
+        return refused if refused is not None else JSONResponse({})
+
+    return router

@@ -210,6 +210,25 @@ class MatrixClient:
             json={"user_id": user_id},
         )
 
+    async def leave(self, room_id: str) -> None:
+        """Leave a room, or decline an invite to it."""
+        await self._json("POST", f"/_matrix/client/v3/rooms/{_path_part(room_id)}/leave", json={})
+
+    async def membership(self, room_id: str, user_id: str) -> str | None:
+        """``user_id``'s membership in ``room_id`` (join, invite, leave, ban), None if never."""
+        path = (
+            f"/_matrix/client/v3/rooms/{_path_part(room_id)}/state/m.room.member/"
+            f"{_path_part(user_id)}"
+        )
+        try:
+            body = await self._json("GET", path)
+        except MatrixError as exc:
+            if exc.errcode == "M_NOT_FOUND":
+                return None
+            raise
+        value = body.get("membership")
+        return value if isinstance(value, str) else None
+
     async def joined_rooms(self) -> list[str]:
         body = await self._json("GET", "/_matrix/client/v3/joined_rooms")
         return [str(room) for room in body.get("joined_rooms", [])]

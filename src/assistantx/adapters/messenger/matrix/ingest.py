@@ -2,10 +2,12 @@
 
 For a batch of events (one pushed transaction, or one /sync response) it
 
-1. joins the rooms the assistant was invited to (idempotent, so a retried batch is harmless);
+1. joins the rooms the assistant was invited to (idempotent, so a retried batch is harmless),
+   and lets the messenger learn what it needs about the rooms (``prepare``);
 2. normalizes the messages and, in ONE atomic store write, records those never seen before
    together with the transaction id or the poller's next position;
-3. only then puts the new messages on the inbox, in the order the homeserver gave them.
+3. only then puts the new messages on the inbox, in the order the homeserver gave them, and
+   sends the short answers the bot gives by itself (each event answered once, for ever).
 
 Because step 2 happens before step 3 and before the caller acknowledges, a crash loses
 nothing (the store replays what was never handled), and a redelivered batch adds nothing.
@@ -19,7 +21,7 @@ from collections.abc import Awaitable, Callable, Mapping, Sequence
 from typing import Any
 
 from assistantx.adapters.messenger.base import InboundMessage
-from assistantx.adapters.messenger.matrix.normalize import EventNormalizer
+from assistantx.adapters.messenger.matrix.normalize import PLATFORM, AutoReply, EventNormalizer
 from assistantx.adapters.messenger.matrix.store import EventStore
 
 logger = logging.getLogger(__name__)
@@ -28,9 +30,11 @@ RoomEvent = tuple[str, Mapping[str, Any]]
 """An event and the room it belongs to (/sync timelines leave ``room_id`` out of events)."""
 
 Deliver = Callable[[InboundMessage], Awaitable[None]]
-InviteHandler = Callable[[str, str], Awaitable[None]]
-"""(room id, invited user id) → join; called only for the assistant's own users."""
+InviteHandler = Callable[[str, str, Mapping[str, Any]], Awaitable[None]]
+"""(room id, invited user id, the invite event) → join or decline; only for the bot's users."""
 AcceptedHook = Callable[[str, InboundMessage], Awaitable[None]]
+PrepareHook = Callable[[Sequence[RoomEvent]], Awaitable[None]]
+ReplyHook = Callable[[AutoReply], Awaitable[None]]
 
 
 def invited_user(event: Mapping[str, Any]) -> str | None:
@@ -55,12 +59,16 @@ class EventIngestor:
         *,
         on_invite: InviteHandler | None = None,
         on_accepted: AcceptedHook | None = None,
+        prepare: PrepareHook | None = None,
+        on_auto_reply: ReplyHook | None = None,
     ) -> None:
         self.store = store
         self._normalizer = normalizer
         self._deliver = deliver
         self._on_invite = on_invite
         self._on_accepted = on_accepted
+        self._prepare = prepare
+        self._on_auto_reply = on_auto_reply
         # One batch at a time keeps the inbox in homeserver order across push and pull.
         self._lock = asyncio.Lock()
 
@@ -77,14 +85,25 @@ class EventIngestor:
             for room_id, event in events:
                 user = invited_user(event)
                 if user is not None and self._normalizer.is_own(user) and self._on_invite:
-                    await self._on_invite(room_id, user)
+                    await self._on_invite(room_id, user, event)
+            if self._prepare is not None:
+                await self._prepare(events)
             messages: list[InboundMessage] = []
+            replies: list[AutoReply] = []
             rooms: dict[str, str] = {}
             for room_id, event in events:
-                message = self._normalizer.normalize(room_id, event)
-                if message is not None:
-                    messages.append(message)
-                    rooms[message.event_id] = room_id
+                for item in self._normalizer.interpret(room_id, event):
+                    if isinstance(item, AutoReply):
+                        replies.append(item)
+                    else:
+                        messages.append(item)
+                        rooms[item.event_id] = room_id
+            if replies and self._on_auto_reply is not None:
+                # Claimed before sending: a redelivered event is never answered twice.
+                claimed = set(await self.store.claim(PLATFORM, [r.event_id for r in replies]))
+                for reply in replies:
+                    if reply.event_id in claimed:
+                        await self._send_reply(reply)
             fresh = await self.store.accept(
                 messages, txn_id=txn_id, sync_key=sync_key, sync_token=sync_token
             )
@@ -102,3 +121,11 @@ class EventIngestor:
             if len(messages) > len(fresh):
                 logger.debug("skipped %d already seen events", len(messages) - len(fresh))
             return fresh
+
+    async def _send_reply(self, reply: AutoReply) -> None:
+        assert self._on_auto_reply is not None
+        try:
+            await self._on_auto_reply(reply)
+        except Exception:
+            # A courtesy answer: losing it must not make the homeserver redeliver the batch.
+            logger.exception("could not answer %s in %s", reply.event_id, reply.room_id)

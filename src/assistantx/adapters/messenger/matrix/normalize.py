@@ -1,15 +1,30 @@
-"""Matrix events → ``InboundMessage``: sender user → person, room → chat, content → text and
-attachments, ``origin_server_ts`` → time.
+"""Matrix events → ``InboundMessage`` (or a short answer the bot gives by itself).
 
-A room listed among the office's groups is that group's chat; any other room is a DM with the
-sender. Only ``m.room.message`` events from people count: the assistant's own messages, edits,
-encrypted media and state events are dropped here (with a reason at DEBUG).
+Sender user → person, room → chat, content → text and attachments, ``origin_server_ts`` → time.
+
+A room is a chat only when the bot knows what it is: a configured group's room, or the DM room
+recorded for the sender. Messages in any other room (a "Lunch Club" someone invited the bot
+to) are not for the assistant, so a request or answer written there never makes that room
+anybody's DM, and nothing private is ever sent there.
+
+What people expect of a Matrix bot (as maubot and the mautrix bridges do it):
+
+- the bot's own messages and ``m.notice`` (other bots) are ignored, never answered;
+- a rich reply's fallback quote is stripped; a reply to a question is that question's answer;
+- a 👍/👎 reaction to a question is a "yes"/"no" answer; another reaction to the bot's message
+  is acknowledged;
+- an edit is answered with what the bot does about it (it keeps the original request);
+- an encrypted message, a stranger's direct message and an over-long text each get a short
+  answer in plain words instead of silence;
+- a file is delivered with the item name the office uses for a person's file (``file:lee``).
 """
 
 from __future__ import annotations
 
 import logging
+import re
 from collections.abc import Mapping
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from typing import Any
 
@@ -19,52 +34,138 @@ from assistantx.adapters.messenger.matrix.config import MatrixConfig
 logger = logging.getLogger(__name__)
 
 PLATFORM = "matrix"
-_TEXT_TYPES = frozenset({"m.text", "m.notice", "m.emote"})
+MAX_TEXT_CHARS = 4000
+"""As on REST (``POST /v1/instructions`` and ``/v1/messages`` take at most 4000 characters)."""
+
+_TEXT_TYPES = frozenset({"m.text", "m.emote"})
 _MEDIA_KINDS = {"m.image": "image", "m.file": "file"}
+_YES = frozenset({"👍", "👍️", "✅", "✔️", "🆗"})
+_NO = frozenset({"👎", "👎️", "❌", "✖️"})
+_SKIN_TONES = re.compile("[\U0001f3fb-\U0001f3ff]")
+
+ENCRYPTED_TEXT = (
+    "I can't read encrypted messages here — please message me in an unencrypted DM "
+    "(turn encryption off when you start the chat)."
+)
+STRANGER_TEXT = (
+    "Hello! I'm the assistant of this office and I only serve its people, so I can't help "
+    "you here. Please ask someone from the office."
+)
+EDIT_TEXT = (
+    "I saw your edit, but I keep working on your original message. If you want something "
+    "else, send it as a new message."
+)
+TOO_LONG_TEXT = (
+    "Your message is {length:,} characters long; I take at most {limit:,}. Please send a "
+    "shorter one."
+)
+REACTION_TEXT = "Thanks for the {key}! If it answers my question, please reply in words."
+FILE_TEXT = "I have your file {name}. If it goes with a request, tell me what to do with it."
+
+
+@dataclass(frozen=True)
+class AutoReply:
+    """A short answer the bot sends by itself to ``room_id`` about event ``event_id``."""
+
+    room_id: str
+    event_id: str
+    text: str
+
+
+Normalized = InboundMessage | AutoReply
+
+
+@dataclass
+class Rooms:
+    """What the bot knows about rooms and its own sent events (filled by the messenger)."""
+
+    groups: dict[str, str]  # room id → group id
+    dms: dict[str, str]  # room id → person id
+    questions: dict[str, str]  # sent event id → question id ("" for a sent plain message)
+    # False for a normalizer used on its own (tests, tools): any other room is the sender's DM.
+    # The messenger, which records DM rooms, sets it True.
+    strict: bool = False
 
 
 class EventNormalizer:
-    """Knows the office's people and group rooms; turns one event into one message or None."""
+    """Knows the office's people and rooms; turns one event into messages and answers."""
 
     def __init__(self, config: MatrixConfig, group_rooms: Mapping[str, str]) -> None:
         self._config = config
-        self._group_rooms = dict(group_rooms)  # room id → group id
+        self.rooms = Rooms(groups=dict(group_rooms), dms={}, questions={})
         self._own = config.own_user_ids()
 
     def set_group_rooms(self, group_rooms: Mapping[str, str]) -> None:
-        self._group_rooms = dict(group_rooms)
+        self.rooms.groups = dict(group_rooms)
 
     def is_own(self, user_id: str) -> bool:
         return user_id in self._own
 
+    def chat_of(self, room_id: str, person: str) -> ChatRef | None:
+        """The chat ``room_id`` is for a message from ``person``; None: not the bot's business."""
+        group = self.rooms.groups.get(room_id)
+        if group is not None:
+            return ChatRef(kind="group", id=group)
+        if self.rooms.dms.get(room_id) == person or (
+            not self.rooms.strict and room_id not in self.rooms.dms
+        ):
+            return ChatRef(kind="dm", id=person)
+        return None
+
     def normalize(self, room_id: str, event: Mapping[str, Any]) -> InboundMessage | None:
+        """The message in ``event`` for the inbox, if any (answers the bot gives are dropped)."""
+        for item in self.interpret(room_id, event):
+            if isinstance(item, InboundMessage):
+                return item
+        return None
+
+    def interpret(self, room_id: str, event: Mapping[str, Any]) -> list[Normalized]:
         event_id = event.get("event_id")
         sender = event.get("sender")
         content = event.get("content")
-        if event.get("type") != "m.room.message" or not isinstance(event_id, str):
-            return None
-        if not isinstance(sender, str) or sender in self._own:
-            return None
-        if not isinstance(content, dict) or "msgtype" not in content:
-            logger.debug("dropping %s: redacted or malformed", event_id)
-            return None
-        relation = content.get("m.relates_to")
-        if isinstance(relation, dict) and relation.get("rel_type") == "m.replace":
-            logger.debug("dropping %s: an edit of an earlier message", event_id)
-            return None
+        kind = event.get("type")
+        if not isinstance(event_id, str) or not isinstance(sender, str) or sender in self._own:
+            return []
+        if not isinstance(content, dict):
+            return []
         person = self._config.person_of(sender)
-        if person is None:
-            if not self._config.accept_unknown_senders:
-                logger.info("dropping %s from %s: not a person of the office", event_id, sender)
-                return None
+        if person is None and self._config.accept_unknown_senders:
             person = sender
-        parsed = _text_and_attachments(event_id, content)
+        if kind == "m.room.encrypted":
+            return [AutoReply(room_id, event_id, ENCRYPTED_TEXT)]
+        if kind == "m.reaction":
+            return self._reaction(room_id, event_id, person, content, event)
+        if kind != "m.room.message" or "msgtype" not in content:
+            return []
+        if content.get("msgtype") == "m.notice":
+            logger.debug("ignoring %s: a notice (from a bot)", event_id)
+            return []
+        if person is None:
+            if room_id in self.rooms.groups:
+                logger.info("ignoring %s from %s: not a person of the office", event_id, sender)
+                return []
+            return [AutoReply(room_id, event_id, STRANGER_TEXT)]
+        relation = content.get("m.relates_to")
+        relation = relation if isinstance(relation, dict) else {}
+        chat = self.chat_of(room_id, person)
+        if chat is None:
+            logger.info("ignoring %s: %s is neither a configured group nor a DM", event_id, room_id)
+            return []
+        if relation.get("rel_type") == "m.replace":
+            return [AutoReply(room_id, event_id, EDIT_TEXT)]
+        parsed = _text_and_attachments(event_id, person, content)
         if parsed is None:
-            return None
+            return []
         text, attachments = parsed
-        group = self._group_rooms.get(room_id)
-        chat = ChatRef(kind="group", id=group) if group else ChatRef(kind="dm", id=person)
-        return InboundMessage(
+        reply_to = relation.get("m.in_reply_to")
+        in_reply_to: str | None = None
+        if isinstance(reply_to, dict) and isinstance(reply_to.get("event_id"), str):
+            text = strip_reply_fallback(text)
+            in_reply_to = self.rooms.questions.get(reply_to["event_id"]) or None
+        if len(text) > MAX_TEXT_CHARS:
+            reply = TOO_LONG_TEXT.format(length=len(text), limit=MAX_TEXT_CHARS)
+            return [AutoReply(room_id, event_id, reply)]
+        message = InboundMessage(
             platform=PLATFORM,
             event_id=event_id,
             chat=chat,
@@ -72,11 +173,64 @@ class EventNormalizer:
             text=text,
             attachments=attachments,
             time=_event_time(event),
+            in_reply_to=in_reply_to,
         )
+        if attachments and not text and chat.kind == "dm":
+            # Clients send a file and its request separately: keep the file, say so.
+            note = AutoReply(
+                room_id, f"{event_id}:file", FILE_TEXT.format(name=attachments[0].name)
+            )
+            return [message, note]
+        return [message]
+
+    def _reaction(
+        self,
+        room_id: str,
+        event_id: str,
+        person: str | None,
+        content: Mapping[str, Any],
+        event: Mapping[str, Any],
+    ) -> list[Normalized]:
+        relation = content.get("m.relates_to")
+        if person is None or not isinstance(relation, dict):
+            return []
+        target, key = relation.get("event_id"), relation.get("key")
+        if not isinstance(target, str) or not isinstance(key, str):
+            return []
+        question = self.rooms.questions.get(target)
+        if question is None:
+            return []  # a reaction to someone else's message is not for the bot
+        chat = self.chat_of(room_id, person)
+        plain = _SKIN_TONES.sub("", key).strip()
+        answer = "Yes" if plain in _YES else "No" if plain in _NO else None
+        if not question or answer is None or chat is None:
+            return [AutoReply(room_id, event_id, REACTION_TEXT.format(key=key))]
+        return [
+            InboundMessage(
+                platform=PLATFORM,
+                event_id=event_id,
+                chat=chat,
+                sender=person,
+                text=answer,
+                time=_event_time(event),
+                in_reply_to=question,
+            )
+        ]
+
+
+def strip_reply_fallback(body: str) -> str:
+    """Drop the ``> <@user> quoted`` lines a rich reply starts with (Matrix spec 11.19.2)."""
+    lines = body.split("\n")
+    n = 0
+    while n < len(lines) and lines[n].startswith(">"):
+        n += 1
+    if n and n < len(lines) and lines[n] == "":
+        n += 1
+    return "\n".join(lines[n:]) if n else body
 
 
 def _text_and_attachments(
-    event_id: str, content: Mapping[str, Any]
+    event_id: str, person: str, content: Mapping[str, Any]
 ) -> tuple[str, list[Attachment]] | None:
     msgtype = content.get("msgtype")
     body = content.get("body")
@@ -105,6 +259,8 @@ def _text_and_attachments(
         name=name,
         mime=mime if isinstance(mime, str) and mime else "application/octet-stream",
         ref=url,
+        # The office names a person's electronic file "file:<person>" (see forward_file).
+        item=f"file:{person}" if kind == "file" else None,
     )
     return caption, [attachment]
 

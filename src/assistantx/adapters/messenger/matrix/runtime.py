@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 from fastapi import APIRouter
 
-from assistantx.adapters.messenger.matrix.adapter import MatrixMessenger
+from assistantx.adapters.messenger.matrix.adapter import MatrixMessenger, Transcript
 from assistantx.adapters.messenger.matrix.config import MatrixConfig, load_matrix_config
 from assistantx.adapters.messenger.matrix.store import EventStore, SqliteEventStore
 from assistantx.errors import MessengerError
@@ -39,11 +39,24 @@ DEFAULT_STORE_NAME = "matrix.sqlite3"
 
 @dataclass(frozen=True)
 class MatrixRuntime:
-    """The messenger, the push router to mount (None in pull mode) and the store they share."""
+    """The messenger, the push router to mount (None in pull mode) and the store they share.
+
+    In pull mode ``push_router`` still answers a registration left from push mode (it
+    acknowledges and drops), so the homeserver never retries pushes against a 405."""
 
     messenger: MatrixMessenger
     router: APIRouter | None
     store: EventStore
+
+    @property
+    def push_router(self) -> APIRouter:
+        """What to mount at the appservice URL whatever the mode."""
+        return self.router or self.messenger.leftover_push_router()
+
+    def closing(self) -> None:
+        """The service is shutting down: nothing more is sent (running instructions resume
+        after the restart rather than telling people they failed)."""
+        self.messenger.closing = True
 
     @property
     def config(self) -> MatrixConfig:
@@ -55,9 +68,12 @@ class MatrixRuntime:
         await self.store.close()
 
 
-def matrix_runtime(config: MatrixConfig, store: EventStore) -> MatrixRuntime:
-    """The messenger for ``config`` over ``store`` (not started; the runtime owns the store)."""
-    messenger = MatrixMessenger(config, store)
+def matrix_runtime(
+    config: MatrixConfig, store: EventStore, *, transcript: Transcript | None = None
+) -> MatrixRuntime:
+    """The messenger for ``config`` over ``store`` (not started; the runtime owns the store);
+    every message in and out is also written to ``transcript`` (the service's journal)."""
+    messenger = MatrixMessenger(config, store, transcript=transcript)
     router = messenger.appservice_router() if config.push_enabled else None
     logger.info(
         "Matrix messenger on %s as %s, mode %s, %d people, %d groups",
@@ -70,7 +86,9 @@ def matrix_runtime(config: MatrixConfig, store: EventStore) -> MatrixRuntime:
     return MatrixRuntime(messenger=messenger, router=router, store=store)
 
 
-def build_matrix_runtime(settings: Settings) -> MatrixRuntime:
+def build_matrix_runtime(
+    settings: Settings, *, transcript: Transcript | None = None
+) -> MatrixRuntime:
     """The Matrix messenger the settings describe; ``MessengerError`` when they do not."""
     if settings.messenger != "matrix":
         raise MessengerError(
@@ -80,4 +98,4 @@ def build_matrix_runtime(settings: Settings) -> MatrixRuntime:
         raise MessengerError("ASSISTANTX_MESSENGER=matrix needs ASSISTANTX_MATRIX_CONFIG (a YAML)")
     config = load_matrix_config(settings.matrix_config)
     store_path = settings.matrix_store or settings.data_dir / DEFAULT_STORE_NAME
-    return matrix_runtime(config, SqliteEventStore(store_path))
+    return matrix_runtime(config, SqliteEventStore(store_path), transcript=transcript)

@@ -6,6 +6,11 @@ it in one SQLite file in WAL mode with ``synchronous=FULL``, so once ``accept`` 
 messages survive a crash and a push may be acknowledged. The service may later replace it with
 its journal.
 
+It also keeps the bot's own state, which must survive a restart: each person's DM room, the
+transaction id of every outbound part (random, never reused, so the homeserver never takes a
+new message for a repeat of an old one), which sent event asked which question, and the
+``mxc://`` reference of each file a person sent (so it can be forwarded later).
+
 The same store deduplicates across paths: an event taken in by the application-service push
 is not taken in again by the /sync poller (and vice versa), because ``accept`` keeps only
 ``(platform, event_id)`` pairs it has never seen, in one SQL transaction.
@@ -16,7 +21,9 @@ from __future__ import annotations
 import asyncio
 import sqlite3
 import threading
+import uuid
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Protocol, TypeVar
@@ -62,7 +69,48 @@ class EventStore(Protocol):
         """Where the poller named ``sync_key`` stopped, or None before its first run."""
         ...
 
+    async def claim(self, platform: str, event_ids: Sequence[str]) -> list[str]:
+        """Record events answered without a message (a notice sent back); return the new ones."""
+        ...
+
+    async def dm_rooms(self) -> dict[str, str]:
+        """person id → the DM room recorded for them."""
+        ...
+
+    async def set_dm_room(self, person: str, room_id: str | None) -> None:
+        """Record (or, with None, forget) ``person``'s DM room."""
+        ...
+
+    async def outbound_part(
+        self, key: str, part: int, digest: str, *, room_id: str, instruction_id: str | None
+    ) -> OutboundPart:
+        """The transaction of one part of an outbound message: the recorded one when the same
+        key sent the same content to the same room before (a retry), else a fresh random id."""
+        ...
+
+    async def part_sent(self, txn_id: str, event_id: str, question_id: str | None) -> None: ...
+
+    async def close_instruction(self, instruction_id: str) -> None:
+        """The instruction ended: its keys never deduplicate a later send again."""
+        ...
+
+    async def question_of(self, event_id: str) -> str | None:
+        """The question a sent event asked ("" for a sent event that asked nothing)."""
+        ...
+
+    async def remember_media(self, item: str, ref: str, name: str, mime: str) -> None: ...
+
+    async def media(self, item: str) -> tuple[str, str, str] | None:
+        """(mxc:// reference, name, mime type) of the latest file recorded as ``item``."""
+        ...
+
     async def close(self) -> None: ...
+
+
+@dataclass(frozen=True)
+class OutboundPart:
+    txn_id: str
+    event_id: str | None  # set once the homeserver took it
 
 
 _SCHEMA = """
@@ -78,6 +126,32 @@ CREATE TABLE IF NOT EXISTS inbound_events (
 CREATE TABLE IF NOT EXISTS transactions (
     txn_id TEXT PRIMARY KEY,
     accepted_at TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS dm_rooms (
+    person TEXT PRIMARY KEY,
+    room_id TEXT NOT NULL,
+    saved_at TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS outbound_parts (
+    key TEXT NOT NULL,
+    part INTEGER NOT NULL,
+    digest TEXT NOT NULL,
+    room_id TEXT NOT NULL,
+    instruction_id TEXT,
+    closed INTEGER NOT NULL DEFAULT 0,
+    txn_id TEXT NOT NULL UNIQUE,
+    event_id TEXT,
+    question_id TEXT,
+    saved_at TEXT NOT NULL,
+    PRIMARY KEY (key, part)
+);
+CREATE INDEX IF NOT EXISTS outbound_parts_event ON outbound_parts (event_id);
+CREATE TABLE IF NOT EXISTS media (
+    item TEXT PRIMARY KEY,
+    ref TEXT NOT NULL,
+    name TEXT NOT NULL,
+    mime TEXT NOT NULL,
+    saved_at TEXT NOT NULL
 );
 CREATE TABLE IF NOT EXISTS sync_tokens (
     sync_key TEXT PRIMARY KEY,
@@ -201,6 +275,129 @@ class SqliteEventStore:
                 "SELECT token FROM sync_tokens WHERE sync_key = ?", (sync_key,)
             ).fetchone()
             return None if row is None else str(row[0])
+
+        return await self._run(work)
+
+    async def claim(self, platform: str, event_ids: Sequence[str]) -> list[str]:
+        now = datetime.now(UTC).isoformat()
+
+        def work(db: sqlite3.Connection) -> list[str]:
+            fresh: list[str] = []
+            db.execute("BEGIN IMMEDIATE")
+            try:
+                for event_id in event_ids:
+                    cursor = db.execute(
+                        "INSERT OR IGNORE INTO inbound_events"
+                        " (platform, event_id, message, accepted_at, handled)"
+                        " VALUES (?, ?, '{}', ?, 1)",
+                        (platform, event_id, now),
+                    )
+                    if cursor.rowcount == 1:
+                        fresh.append(event_id)
+                db.execute("COMMIT")
+            except BaseException:
+                db.execute("ROLLBACK")
+                raise
+            return fresh
+
+        return await self._run(work)
+
+    async def dm_rooms(self) -> dict[str, str]:
+        def work(db: sqlite3.Connection) -> dict[str, str]:
+            rows = db.execute("SELECT person, room_id FROM dm_rooms").fetchall()
+            return {str(person): str(room) for person, room in rows}
+
+        return await self._run(work)
+
+    async def set_dm_room(self, person: str, room_id: str | None) -> None:
+        now = datetime.now(UTC).isoformat()
+
+        def work(db: sqlite3.Connection) -> None:
+            if room_id is None:
+                db.execute("DELETE FROM dm_rooms WHERE person = ?", (person,))
+            else:
+                db.execute(
+                    "INSERT OR REPLACE INTO dm_rooms (person, room_id, saved_at) VALUES (?, ?, ?)",
+                    (person, room_id, now),
+                )
+
+        await self._run(work)
+
+    async def outbound_part(
+        self, key: str, part: int, digest: str, *, room_id: str, instruction_id: str | None
+    ) -> OutboundPart:
+        now = datetime.now(UTC).isoformat()
+
+        def work(db: sqlite3.Connection) -> OutboundPart:
+            db.execute("BEGIN IMMEDIATE")
+            try:
+                row = db.execute(
+                    "SELECT digest, room_id, closed, txn_id, event_id FROM outbound_parts"
+                    " WHERE key = ? AND part = ?",
+                    (key, part),
+                ).fetchone()
+                if row is not None and (row[0], row[1], row[2]) == (digest, room_id, 0):
+                    db.execute("COMMIT")
+                    return OutboundPart(txn_id=str(row[3]), event_id=row[4])
+                # New, or the key now names another message (a reused instruction id):
+                # a fresh transaction id, so the homeserver cannot take it for a repeat.
+                txn_id = f"ax{uuid.uuid4().hex}"
+                db.execute(
+                    "INSERT OR REPLACE INTO outbound_parts (key, part, digest, room_id,"
+                    " instruction_id, closed, txn_id, event_id, question_id, saved_at)"
+                    " VALUES (?, ?, ?, ?, ?, 0, ?, NULL, NULL, ?)",
+                    (key, part, digest, room_id, instruction_id, txn_id, now),
+                )
+                db.execute("COMMIT")
+            except BaseException:
+                db.execute("ROLLBACK")
+                raise
+            return OutboundPart(txn_id=txn_id, event_id=None)
+
+        return await self._run(work)
+
+    async def part_sent(self, txn_id: str, event_id: str, question_id: str | None) -> None:
+        def work(db: sqlite3.Connection) -> None:
+            db.execute(
+                "UPDATE outbound_parts SET event_id = ?, question_id = ? WHERE txn_id = ?",
+                (event_id, question_id or "", txn_id),
+            )
+
+        await self._run(work)
+
+    async def close_instruction(self, instruction_id: str) -> None:
+        def work(db: sqlite3.Connection) -> None:
+            db.execute(
+                "UPDATE outbound_parts SET closed = 1 WHERE instruction_id = ?", (instruction_id,)
+            )
+
+        await self._run(work)
+
+    async def question_of(self, event_id: str) -> str | None:
+        def work(db: sqlite3.Connection) -> str | None:
+            row = db.execute(
+                "SELECT question_id FROM outbound_parts WHERE event_id = ?", (event_id,)
+            ).fetchone()
+            return None if row is None else str(row[0] or "")
+
+        return await self._run(work)
+
+    async def remember_media(self, item: str, ref: str, name: str, mime: str) -> None:
+        now = datetime.now(UTC).isoformat()
+
+        def work(db: sqlite3.Connection) -> None:
+            db.execute(
+                "INSERT OR REPLACE INTO media (item, ref, name, mime, saved_at)"
+                " VALUES (?, ?, ?, ?, ?)",
+                (item, ref, name, mime, now),
+            )
+
+        await self._run(work)
+
+    async def media(self, item: str) -> tuple[str, str, str] | None:
+        def work(db: sqlite3.Connection) -> tuple[str, str, str] | None:
+            row = db.execute("SELECT ref, name, mime FROM media WHERE item = ?", (item,)).fetchone()
+            return None if row is None else (str(row[0]), str(row[1]), str(row[2]))
 
         return await self._run(work)
 

@@ -8,7 +8,9 @@ one write. So the position advances only after the events are safe, and a crash 
 most one round, which the event-id dedup absorbs.
 
 On its very first run (no stored position) the poller takes the position without replaying the
-account's history as new messages, but still joins pending invites. Errors back off
+account's history as new messages, but still joins pending invites. Likewise a room it has
+just joined shows its earlier history: everything before the account's own join is old news
+and is dropped, never taken for a new request. Errors back off
 exponentially; the first failure and the recovery are logged, not every attempt.
 """
 
@@ -35,7 +37,10 @@ def _sync_filter(timeline_limit: int) -> str:
             "presence": {"not_types": ["*"]},
             "account_data": {"not_types": ["*"]},
             "room": {
-                "timeline": {"types": ["m.room.message"], "limit": timeline_limit},
+                "timeline": {
+                    "types": ["m.room.message", "m.room.encrypted", "m.reaction", "m.room.member"],
+                    "limit": timeline_limit,
+                },
                 "state": {"lazy_load_members": True},
                 "ephemeral": {"not_types": ["*"]},
                 "account_data": {"not_types": ["*"]},
@@ -58,6 +63,7 @@ class SyncPoller:
         max_backfill_pages: int = 5,
         timeline_limit: int = 50,
         backoff_max_s: float = 60.0,
+        own_user_id: str | None = None,
     ) -> None:
         self._client = client
         self._ingestor = ingestor
@@ -66,6 +72,7 @@ class SyncPoller:
         self._max_backfill_pages = max_backfill_pages
         self._filter = _sync_filter(timeline_limit)
         self._backoff_max_s = backoff_max_s
+        self._own_user_id = own_user_id
         self._task: asyncio.Task[None] | None = None
         self.ready = asyncio.Event()
 
@@ -130,10 +137,28 @@ class SyncPoller:
     async def _timeline(self, room_id: str, room: Mapping[str, Any]) -> list[RoomEvent]:
         timeline = room.get("timeline", {})
         events: list[JSON] = list(timeline.get("events", []))
+        joined_at = self._own_join(events)
+        if joined_at is not None:
+            return [(room_id, event) for event in events[joined_at + 1 :]]
         prev_batch = timeline.get("prev_batch")
         if timeline.get("limited") and isinstance(prev_batch, str):
             events = await self._backfill(room_id, prev_batch) + events
         return [(room_id, event) for event in events]
+
+    def _own_join(self, events: list[JSON]) -> int | None:
+        """The index of this account's (last) join event among ``events``, if there."""
+        found: int | None = None
+        for index, event in enumerate(events):
+            content = event.get("content")
+            if (
+                event.get("type") == "m.room.member"
+                and event.get("state_key") == self._own_user_id
+                and isinstance(content, dict)
+                and content.get("membership") == "join"
+                and _previous_membership(event) != "join"  # not a mere profile change
+            ):
+                found = index
+        return found
 
     async def _backfill(self, room_id: str, from_token: str) -> list[JSON]:
         """Older events of a gap, oldest first, back to the first one already seen."""
@@ -146,6 +171,9 @@ class SyncPoller:
             chunk: list[JSON] = page.get("chunk", [])
             reached_known = False
             for event in chunk:  # newest first
+                if self._own_join([event]) is not None:
+                    reached_known = True  # before the join is history, not news
+                    break
                 event_id = event.get("event_id")
                 if isinstance(event_id, str) and await self._ingestor.store.event_seen(
                     PLATFORM, event_id
@@ -166,3 +194,10 @@ class SyncPoller:
         gathered.reverse()
         logger.debug("back-filled %d events in %s", len(gathered), room_id)
         return gathered
+
+
+def _previous_membership(event: JSON) -> str | None:
+    unsigned = event.get("unsigned")
+    prev = unsigned.get("prev_content") if isinstance(unsigned, dict) else None
+    value = prev.get("membership") if isinstance(prev, dict) else None
+    return value if isinstance(value, str) else None
