@@ -24,6 +24,7 @@ COMMAND_MODULES = [
     "assistantx.cli.dataset_cmd",
     "assistantx.cli.eval_cmd",
     "assistantx.cli.report_cmd",
+    "assistantx.cli.matrix_cmd",
 ]
 
 

@@ -138,8 +138,8 @@ def create_app(
     for module in (health, instructions, events, memory, messages, devices, metrics, dashboard):
         app.include_router(module.router)
     app.include_router(reports.router)  # also starts surveys (router lifespan)
-    if runtime.matrix is not None and runtime.matrix.router is not None:
-        app.include_router(runtime.matrix.router)  # the homeserver's pushes
+    if runtime.matrix is not None:
+        app.include_router(runtime.matrix.push_router)  # the homeserver's pushes
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)

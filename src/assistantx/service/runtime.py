@@ -151,8 +151,13 @@ class ServiceRuntime:
             colleagues.restore(self.sim, world)
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
+            matrix = self.matrix.messenger
+            matrix.transcript = self.journal  # Matrix traffic in the journal, like the built-in
+            self.assistant.on_instruction_end(
+                lambda stm: matrix.instruction_ended(stm.instruction_id)
+            )
             stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
-            await self.matrix.messenger.start()
+            await matrix.start()
         stack.push_async_callback(self._stop)
         await self._resume()
         self.ready = True
@@ -239,6 +244,8 @@ class ServiceRuntime:
         self.ready = False
         self.durability.frozen = True
         self.messenger.closed = True
+        if self.matrix is not None:
+            self.matrix.closing()  # cut-short instructions resume; nobody is told "failed"
         self.hub.close()
         self.journal.put_state(CLOCK_STATE, {"now": self.clock.now()})
         await self.assistant.stop()
