@@ -1,0 +1,221 @@
+"""People of the office at a Matrix client nobody here wrote: ``matrix-nio``'s ``AsyncClient``.
+
+Each person syncs in the background, accepts the invites they get (as people accept the
+assistant's DMs), and keeps every event others send to rooms they are in. ``expect`` hands out
+each received message once (oldest first among those that match), so a test reads a
+conversation the way a person does.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import io
+import logging
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import httpx
+import zxingcpp
+from nio import (
+    AsyncClient,
+    AsyncClientConfig,
+    JoinedMembersResponse,
+    RoomCreateResponse,
+    RoomSendResponse,
+    SyncResponse,
+    UploadResponse,
+)
+from PIL import Image
+
+from synapse.helpers import WAIT_S
+from synapse.homeserver import Account
+
+logger = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class Seen:
+    """One event from someone else, as the person's client received it."""
+
+    room_id: str
+    event_id: str
+    sender: str
+    type: str
+    content: dict[str, Any]
+
+    @property
+    def msgtype(self) -> str:
+        return str(self.content.get("msgtype", ""))
+
+    @property
+    def body(self) -> str:
+        return str(self.content.get("body", ""))
+
+
+class NioPerson:
+    def __init__(self, name: str, account: Account, homeserver_url: str) -> None:
+        self.name = name
+        self.user_id = account.user_id
+        self.client = AsyncClient(
+            homeserver_url,
+            account.user_id,
+            config=AsyncClientConfig(encryption_enabled=False, store_sync_tokens=False),
+        )
+        self.client.access_token = account.access_token
+        self.client.user_id = account.user_id
+        self.seen: list[Seen] = []
+        self.auto_join = True
+        self._taken: set[str] = set()
+        self._changed = asyncio.Condition()
+        self._task: asyncio.Task[None] | None = None
+
+    async def start(self) -> None:
+        first = await self.client.sync(timeout=0)
+        assert isinstance(first, SyncResponse), first
+        self._task = asyncio.create_task(self._run(), name=f"nio-{self.name}")
+
+    async def stop(self) -> None:
+        task, self._task = self._task, None
+        if task is not None:
+            task.cancel()
+            with contextlib.suppress(asyncio.CancelledError):
+                await task
+        await self.client.close()
+
+    async def _run(self) -> None:
+        while True:
+            response = await self.client.sync(timeout=300, since=self.client.next_batch)
+            if not isinstance(response, SyncResponse):
+                await asyncio.sleep(0.2)
+                continue
+            if self.auto_join:
+                for room_id in response.rooms.invite:
+                    await self.client.join(room_id)
+            fresh = [
+                Seen(
+                    room_id,
+                    str(event.source["event_id"]),
+                    str(event.source["sender"]),
+                    str(event.source.get("type")),
+                    dict(event.source.get("content", {})),
+                )
+                for room_id, room in response.rooms.join.items()
+                for event in room.timeline.events
+                if event.source.get("sender") != self.user_id
+                and event.source.get("type") in ("m.room.message", "m.reaction")
+            ]
+            if fresh:
+                async with self._changed:
+                    self.seen.extend(fresh)
+                    self._changed.notify_all()
+
+    # -- reading ---------------------------------------------------------------------------
+    def messages(self, predicate: Callable[[Seen], bool] = lambda m: True) -> list[Seen]:
+        return [m for m in self.seen if m.type == "m.room.message" and predicate(m)]
+
+    def from_(self, sender: str) -> list[Seen]:
+        return self.messages(lambda m: m.sender == sender)
+
+    async def expect(
+        self,
+        *,
+        sender: str | None = None,
+        room: str | None = None,
+        not_room: str | None = None,
+        msgtype: str | None = None,
+        timeout_s: float = WAIT_S,
+    ) -> Seen:
+        def matches(m: Seen) -> bool:
+            return (
+                m.event_id not in self._taken
+                and m.type == "m.room.message"
+                and (sender is None or m.sender == sender)
+                and (room is None or m.room_id == room)
+                and (not_room is None or m.room_id != not_room)
+                and (msgtype is None or m.msgtype == msgtype)
+            )
+
+        async with asyncio.timeout(timeout_s), self._changed:
+            await self._changed.wait_for(lambda: any(matches(m) for m in self.seen))
+        found = next(m for m in self.seen if matches(m))
+        self._taken.add(found.event_id)
+        return found
+
+    # -- acting ----------------------------------------------------------------------------
+    async def send(
+        self, room_id: str, content: dict[str, Any], kind: str = "m.room.message"
+    ) -> str:
+        response = await self.client.room_send(room_id, kind, content)
+        assert isinstance(response, RoomSendResponse), response
+        return str(response.event_id)
+
+    async def say(self, room_id: str, text: str, **extra: Any) -> str:
+        return await self.send(room_id, {"msgtype": "m.text", "body": text, **extra})
+
+    async def react(self, room_id: str, event_id: str, key: str) -> str:
+        relates = {"rel_type": "m.annotation", "event_id": event_id, "key": key}
+        return await self.send(room_id, {"m.relates_to": relates}, kind="m.reaction")
+
+    async def upload_file(self, room_id: str, name: str, data: bytes, caption: str = "") -> str:
+        """Upload ``data`` and post it as an m.file (with ``caption`` as its body, if any)."""
+        response, _keys = await self.client.upload(
+            io.BytesIO(data), content_type="application/pdf", filename=name, filesize=len(data)
+        )
+        assert isinstance(response, UploadResponse), response
+        content: dict[str, Any] = {
+            "msgtype": "m.file",
+            "body": caption or name,
+            "filename": name,
+            "url": response.content_uri,
+            "info": {"mimetype": "application/pdf", "size": len(data)},
+        }
+        await self.send(room_id, content)
+        return str(response.content_uri)
+
+    async def create_room(
+        self, invite: list[str], *, is_direct: bool = False, alias: str | None = None
+    ) -> str:
+        response = await self.client.room_create(
+            invite=invite, is_direct=is_direct, alias=alias, name=None
+        )
+        assert isinstance(response, RoomCreateResponse), response
+        return str(response.room_id)
+
+    async def open_dm(self, user_id: str, *, also: tuple[str, ...] = ()) -> str:
+        """A direct chat with ``user_id``; returns once it (and ``also``) joined."""
+        room = await self.create_room([user_id, *also], is_direct=True)
+        for member in (user_id, *also):
+            await self.wait_member(room, member)
+        return room
+
+    async def members(self, room_id: str) -> set[str]:
+        response = await self.client.joined_members(room_id)
+        if not isinstance(response, JoinedMembersResponse):
+            return set()
+        return {m.user_id for m in response.members}
+
+    async def wait_member(self, room_id: str, user_id: str, *, present: bool = True) -> None:
+        async with asyncio.timeout(WAIT_S):
+            while (user_id in await self.members(room_id)) != present:  # noqa: ASYNC110
+                await asyncio.sleep(0.1)
+
+    async def download(self, mxc: str) -> bytes:
+        # nio's download uses the legacy unauthenticated media path, which Synapse has
+        # frozen; clients today use the authenticated one.
+        server, media_id = mxc.removeprefix("mxc://").split("/")
+        async with httpx.AsyncClient(base_url=self.client.homeserver) as http:
+            response = await http.get(
+                f"/_matrix/client/v1/media/download/{server}/{media_id}",
+                headers={"Authorization": f"Bearer {self.client.access_token}"},
+            )
+        response.raise_for_status()
+        return response.content
+
+    async def read_qr(self, image: Seen) -> str:
+        assert image.msgtype == "m.image", image
+        data = await self.download(str(image.content["url"]))
+        codes = zxingcpp.read_barcodes(Image.open(io.BytesIO(data)))
+        assert len(codes) == 1, f"{len(codes)} QR codes in {image.body}"
+        return str(codes[0].text)
