@@ -67,6 +67,8 @@ class NioPerson:
         self.client.user_id = account.user_id
         self.seen: list[Seen] = []
         self.auto_join = True
+        # Messages a test reads apart (the feedback survey after each instruction).
+        self.aside: Callable[[Seen], bool] = lambda m: False
         self._taken: set[str] = set()
         self._changed = asyncio.Condition()
         self._task: asyncio.Task[None] | None = None
@@ -113,7 +115,14 @@ class NioPerson:
 
     # -- reading ---------------------------------------------------------------------------
     def messages(self, predicate: Callable[[Seen], bool] = lambda m: True) -> list[Seen]:
-        return [m for m in self.seen if m.type == "m.room.message" and predicate(m)]
+        return [
+            m
+            for m in self.seen
+            if m.type == "m.room.message" and not self.aside(m) and predicate(m)
+        ]
+
+    def set_aside(self) -> list[Seen]:
+        return [m for m in self.seen if m.type == "m.room.message" and self.aside(m)]
 
     def from_(self, sender: str) -> list[Seen]:
         return self.messages(lambda m: m.sender == sender)
@@ -131,6 +140,7 @@ class NioPerson:
             return (
                 m.event_id not in self._taken
                 and m.type == "m.room.message"
+                and not self.aside(m)
                 and (sender is None or m.sender == sender)
                 and (room is None or m.room_id == room)
                 and (not_room is None or m.room_id != not_room)

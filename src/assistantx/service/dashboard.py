@@ -226,6 +226,8 @@ def _codebook(request: Request, runtime: ServiceRuntime) -> CodeBook:
     if book is None:
         book = CodeBook(runtime.lock_keys.codes)
         runtime.messenger.relay_to(book.note)
+        if runtime.matrix is not None:  # codes sent over Matrix are scannable too
+            runtime.matrix.messenger.relay_to(book.note)
         request.app.state.dashboard_codebook = book
     for held in runtime.sim.codes:  # simulated people's codes (restored after a restart)
         if held.payload:

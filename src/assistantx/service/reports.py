@@ -82,7 +82,9 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     runtime: ServiceRuntime = app.state.runtime
     store = FeedbackStore.open(runtime.settings.data_dir / JOURNAL_FILE)
     distance = await asyncio.to_thread(map_distance, runtime)
-    surveyor = Surveyor(runtime.office, store, runtime.messenger, runtime.clock, distance=distance)
+    # Surveys go where the assistant talks to people (Matrix when configured).
+    messenger = runtime.assistant.parts.messenger
+    surveyor = Surveyor(runtime.office, store, messenger, runtime.clock, distance=distance)
     surveyor.attach(runtime.assistant)
     await surveyor.start()
     setattr(app.state, FEEDBACK_STATE, FeedbackParts(store, surveyor))

@@ -31,7 +31,7 @@ import json
 import logging
 import struct
 import uuid
-from collections.abc import Mapping, Sequence
+from collections.abc import Awaitable, Callable, Mapping, Sequence
 from datetime import UTC, datetime
 from typing import Any, Protocol
 
@@ -90,6 +90,9 @@ def content_digest(room_id: str, content: Mapping[str, Any]) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
+Relay = Callable[[OutboundMessage], Awaitable[None]]
+
+
 class Transcript(Protocol):
     """Where every message in and out is also written (the service's journal)."""
 
@@ -132,7 +135,7 @@ class MatrixMessenger(Messenger):
         )
         self._started = False
         self.closing = False  # set on shutdown: nothing more goes out
-        self._pushes_discarded = 0
+        self._relays: list[Relay] = []
 
     # -- lifecycle ----------------------------------------------------------------------
 
@@ -205,6 +208,11 @@ class MatrixMessenger(Messenger):
         and dropped (the poller receives everything), so the homeserver does not retry them
         for ever against a 405."""
         return create_discarding_router(hs_token=self.config.hs_token)
+
+    def relay_to(self, relay: Relay) -> None:
+        """Also hand every sent message to ``relay`` (the dashboard notes QR codes so the
+        operator can scan them at the locker, whatever the messenger)."""
+        self._relays.append(relay)
 
     async def acknowledge(self, message: InboundMessage) -> None:
         """The consumer is done with ``message``; it will not be replayed on restart."""
@@ -430,6 +438,11 @@ class MatrixMessenger(Messenger):
             event_ids.append(event_id)
         if self.transcript is not None:
             self.transcript.record_outbound(message, "assistant", datetime.now(UTC).timestamp())
+        for relay in self._relays:
+            try:
+                await relay(message)
+            except Exception:
+                logger.exception("relay of a sent message failed")
         logger.debug("sent %d events to %s (%s)", len(event_ids), message.chat, room_id)
         return SentMessage(
             platform=PLATFORM,
