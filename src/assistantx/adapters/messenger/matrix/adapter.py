@@ -453,7 +453,7 @@ class MatrixMessenger(Messenger):
 
     async def _describe(self, attachment: Attachment) -> JSON:
         """The event content of an attachment (its URL filled in by ``_upload`` for data)."""
-        mime = attachment.mime
+        mime, name = attachment.mime, attachment.name
         info: dict[str, Any] = {}
         url: str | None = None
         if attachment.data is not None:
@@ -462,7 +462,7 @@ class MatrixMessenger(Messenger):
         elif attachment.ref is not None and attachment.ref.startswith("mxc://"):
             url = attachment.ref  # forward: the media stays where it is, no copy
         elif attachment.item is not None and (found := await self.store.media(attachment.item)):
-            url, _name, mime = found
+            url, name, mime = found  # the person's own file name, not the office's item id
         else:
             owner = (attachment.item or "").removeprefix("file:") or "anyone"
             raise MessengerError(
@@ -472,8 +472,8 @@ class MatrixMessenger(Messenger):
         info["mimetype"] = mime
         content: JSON = {
             "msgtype": "m.image" if attachment.kind == "image" else "m.file",
-            "body": attachment.name,
-            "filename": attachment.name,
+            "body": name,
+            "filename": name,
             "info": info,
         }
         if url is not None:
