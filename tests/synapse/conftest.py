@@ -16,9 +16,11 @@ from pathlib import Path
 
 import pytest
 import pytest_asyncio
+import yaml
 from pydantic import SecretStr
 
-from assistantx.adapters.messenger.matrix import MatrixConfig, write_registration
+from assistantx.adapters.messenger.matrix import MatrixConfig
+from assistantx.cli import build_parser
 from synapse.gateway import AppserviceGateway
 from synapse.homeserver import (
     Account,
@@ -53,7 +55,17 @@ def homeserver(
     except SynapseUnavailableError as exc:
         pytest.fail(f"cannot install Synapse: {exc}", pytrace=False)
     workdir: Path = tmp_path_factory.mktemp("synapse")
-    registration = write_registration(appservice_config, workdir / "appservice.yaml")
+    # Written the way the README tells a user to: `assistantx matrix registration`.
+    config_file = workdir / "matrix.yaml"
+    raw = appservice_config.model_dump(mode="json") | {
+        "as_token": appservice_config.as_token.get_secret_value(),
+        "hs_token": appservice_config.hs_token.get_secret_value(),
+    }
+    config_file.write_text(yaml.safe_dump(raw), encoding="utf-8")
+    registration = workdir / "appservice.yaml"
+    command = ["matrix", "registration", "--config", str(config_file), "-o", str(registration)]
+    args = build_parser().parse_args(command)  # main() minus its logging set-up
+    assert args.func(args) == 0
     server = SynapseHomeserver(workdir, [registration])
     try:
         server.start(python)
