@@ -101,6 +101,17 @@ def borrow(ctx: AgentContext) -> list[Action]:
     return [Stop(outcome="done", summary=f"Zhang answered: {answers[0]}")]
 
 
+async def locker_codes(office: Office) -> list[dict[str, object]]:
+    assert office.config.appservice_url is not None
+    async with httpx.AsyncClient(base_url=office.config.appservice_url) as http:
+        response = await http.get(
+            "/v1/locker/codes", headers={"Authorization": f"Bearer {OPERATOR}"}
+        )
+    assert response.status_code == 200, response.text
+    codes: list[dict[str, object]] = response.json()
+    return codes
+
+
 async def quiet(seconds: float = 1.0) -> None:
     """Let anything that would still arrive arrive (asserting on nothing more)."""
     await asyncio.sleep(seconds)
@@ -193,13 +204,19 @@ async def test_a_collect_code_never_leaves_the_dm(office: Office) -> None:
         for member in (office.mao.user_id, office.hu.user_id):
             await office.lee.wait_member(lunch, member)
         lee_dm = await office.lee.open_dm(bot)
+        assert await locker_codes(office) == []  # the operator's locker panel is open
         await office.lee.say(lee_dm, "Please get Zhang's stapler for me.")
         await office.lee.say(lunch, "Anyone up for lunch?")
         code = await office.lee.expect(sender=bot, msgtype="m.image")
         assert code.room_id == lee_dm
-        assert (await office.lee.read_qr(code)).startswith("")  # a real, readable code
+        assert await office.lee.read_qr(code)  # a real, readable code
+        # The operator can scan a code sent over Matrix from the locker panel.
+        [held] = await locker_codes(office)
+        assert (held["person"], held["purpose"], held["scannable"]) == ("lee", "collect", True)
+        about = await office.lee.expect(sender=bot, msgtype="m.text", room=lee_dm)
+        assert "one-time code" in about.body
         done = await office.lee.expect(sender=bot, msgtype="m.text", room=lee_dm)
-        assert "[done]" in done.body or "code" in done.body
+        assert done.body == "[done] Your code is in this chat."
         await quiet()
         assert office.mao.from_(bot) == [] and office.hu.from_(bot) == []
         assert [m.room_id for m in office.lee.from_(bot)] == [lee_dm] * len(office.lee.from_(bot))
