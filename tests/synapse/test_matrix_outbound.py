@@ -176,7 +176,7 @@ async def test_a_received_file_is_forwarded_by_its_uri(
             "name": "report.pdf",
             "mime": "application/pdf",
             "ref": url,
-            "item": None,
+            "item": "file:lee",  # the office's name for Lee's file, so forward_file finds it
         }
         await messenger.send(
             OutboundMessage(
