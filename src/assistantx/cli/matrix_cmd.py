@@ -13,8 +13,6 @@ from pathlib import Path
 
 import yaml
 
-from assistantx.adapters.messenger.matrix import load_matrix_config, registration
-from assistantx.adapters.messenger.matrix.registration import write_registration
 from assistantx.errors import MessengerError
 from assistantx.settings import Settings
 
@@ -36,6 +34,13 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 
 
 def run_registration(args: argparse.Namespace) -> int:
+    # Imported here: every command builds the parser, few need the Matrix adapter.
+    from assistantx.adapters.messenger.matrix import (
+        load_matrix_config,
+        registration,
+        write_registration,
+    )
+
     path: Path | None = args.config or Settings().matrix_config
     if path is None:
         print("error: give --config or set ASSISTANTX_MATRIX_CONFIG", file=sys.stderr)
