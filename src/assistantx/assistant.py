@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import itertools
 import logging
+import secrets
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 
@@ -39,6 +39,12 @@ InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
 # Claims a direct message that answers no open question (True: handled, e.g. a survey reply)
 # before it would start a new instruction.
 DirectMessageHook = Callable[[InboundMessage], Awaitable[bool]]
+
+
+def new_instruction_id() -> str:
+    """A fresh instruction id, unique for ever: random, not a counter that restarts with the
+    process (a restarted service must not hand out an id its journal holds already)."""
+    return f"ins-{secrets.token_hex(6)}"
 
 
 @dataclass
@@ -88,7 +94,6 @@ class Assistant:
         self._on_start: list[InstructionHook] = []
         self._on_end: list[InstructionHook] = []
         self._dm_hooks: list[DirectMessageHook] = []
-        self._ids = itertools.count(1)
         self._dispatcher: asyncio.Task[None] | None = None
         self.unmatched: list[InboundMessage] = []
 
@@ -129,7 +134,7 @@ class Assistant:
 
     # -- instructions --------------------------------------------------------------------
     def new_id(self) -> str:
-        return f"ins-{next(self._ids)}"
+        return new_instruction_id()
 
     async def submit(
         self,

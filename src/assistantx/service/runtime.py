@@ -14,7 +14,6 @@ import asyncio
 import importlib
 import logging
 import os
-import secrets
 import time
 from contextlib import AsyncExitStack
 from pathlib import Path
@@ -27,7 +26,12 @@ from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
 from assistantx.adapters.robot.base import RobotBase
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
-from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
+from assistantx.assistant import (
+    Assistant,
+    AssistantParts,
+    ReasonerFactory,
+    new_instruction_id,
+)
 from assistantx.clock import WallClock
 from assistantx.errors import LockError
 from assistantx.journal import InstructionRecord, Journal
@@ -52,10 +56,6 @@ logger = logging.getLogger(__name__)
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
 CLOCK_STATE = "clock"
-
-
-def new_instruction_id() -> str:
-    return f"ins-{secrets.token_hex(6)}"
 
 
 class ServiceRuntime:
