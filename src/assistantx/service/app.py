@@ -24,6 +24,7 @@ from assistantx.service import (
     metrics,
     reports,
 )
+from assistantx.service.datalock import DataDirLock
 from assistantx.service.errors import error_body, install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.settings import Settings
@@ -99,10 +100,12 @@ def create_app(
     settings: Settings | None = None,
     *,
     on_ready: Callable[[ServiceRuntime], None] | None = None,
+    data_lock: DataDirLock | None = None,
 ) -> FastAPI:
-    """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go)."""
+    """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go);
+    ``data_lock``: the data folder's lock, when the caller holds it already."""
     settings = settings or Settings()
-    runtime = ServiceRuntime(settings)
+    runtime = ServiceRuntime(settings, data_lock)
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:

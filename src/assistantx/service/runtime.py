@@ -44,6 +44,7 @@ from assistantx.ppdr.loop import LoopLimits
 from assistantx.reasoners import reasoner_factory
 from assistantx.service import colleagues
 from assistantx.service.auth import AuthSetup, build_authority
+from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import LTM_STATE, Durability
 from assistantx.service.errors import NotFoundError
 from assistantx.service.hub import EventHub
@@ -74,8 +75,11 @@ class ServiceRuntime:
     auth: AuthSetup
     metrics: ServiceMetrics
 
-    def __init__(self, settings: Settings) -> None:
+    def __init__(self, settings: Settings, data_lock: DataDirLock | None = None) -> None:
+        """``data_lock``: the data folder's lock when the caller took it already (the CLI takes
+        it before binding its port); else ``start`` takes it."""
         self.settings = settings
+        self.data_lock = data_lock
         self.hub = EventHub()
         self.ready = False
         self.resumed: list[str] = []
@@ -90,6 +94,9 @@ class ServiceRuntime:
         self.office = load_office(s.office)
         self.resolver = Resolver(self.office)
         data_dir = _data_dir(s.data_dir)
+        if self.data_lock is None or not self.data_lock.held:
+            self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
+            stack.callback(self.data_lock.release)
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
         self.metrics = ServiceMetrics(self.journal)
