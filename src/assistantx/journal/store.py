@@ -33,6 +33,9 @@ logger = logging.getLogger(__name__)
 
 Status = Literal["queued", "running", "done", "failed", "unachievable", "cancelled"]
 FINAL_STATUSES: frozenset[str] = frozenset({"done", "failed", "unachievable", "cancelled"})
+MAX_SEQ = 2**63 - 1
+"""The largest sequence number SQLite stores (a signed 64-bit integer); larger ones a client
+sends (``after``, ``Last-Event-ID``, cursors) are refused before they reach a query."""
 STATUSES: tuple[Status, ...] = ("queued", "running", "done", "failed", "unachievable", "cancelled")
 
 

@@ -62,6 +62,11 @@ class EventNormalizer:
         if parsed is None:
             return None
         text, attachments = parsed
+        sent = _event_time(event)
+        if sent is None:
+            # Skipped, not failed: a failing transaction would be pushed again for ever.
+            logger.warning("dropping %s: origin_server_ts is out of range", event_id)
+            return None
         group = self._group_rooms.get(room_id)
         chat = ChatRef(kind="group", id=group) if group else ChatRef(kind="dm", id=person)
         return InboundMessage(
@@ -71,7 +76,7 @@ class EventNormalizer:
             sender=person,
             text=text,
             attachments=attachments,
-            time=_event_time(event),
+            time=sent,
         )
 
 
@@ -109,8 +114,12 @@ def _text_and_attachments(
     return caption, [attachment]
 
 
-def _event_time(event: Mapping[str, Any]) -> datetime:
+def _event_time(event: Mapping[str, Any]) -> datetime | None:
+    """When the event was sent (now when the server left it out); None when out of range."""
     ts = event.get("origin_server_ts")
-    if isinstance(ts, int | float):
+    if not isinstance(ts, int | float):
+        return datetime.now(UTC)
+    try:
         return datetime.fromtimestamp(ts / 1000, tz=UTC)
-    return datetime.now(UTC)
+    except (OverflowError, OSError, ValueError):
+        return None
