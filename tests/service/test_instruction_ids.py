@@ -4,44 +4,16 @@ out an id its journal holds, so every owner keeps reading and cancelling their o
 from __future__ import annotations
 
 import asyncio
-import json
-from collections.abc import AsyncIterator
-from contextlib import asynccontextmanager
 from pathlib import Path
 
 import httpx
 
-from assistantx.service.app import create_app
-from assistantx.service.server import service_server
-from assistantx.settings import Settings
-from service.server import LEE, OPERATOR, ZHANG, free_port
+from service.inprocess import running_service
+from service.server import LEE, ZHANG
 
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
 AS_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
 REQUEST = "please bring me a stapler"
-
-
-@asynccontextmanager
-async def running_service(data_dir: Path) -> AsyncIterator[httpx.AsyncClient]:
-    settings = Settings(
-        data_dir=data_dir,
-        operator_token=OPERATOR,
-        tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
-        speedup=50,
-    )
-    port = free_port()
-    server = service_server(create_app(settings), "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    for _ in range(500):  # uvicorn offers no event for "listening"
-        if server.started:
-            break
-        await asyncio.sleep(0.02)
-    try:
-        async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
-            yield client
-    finally:
-        server.should_exit = True
-        await task
 
 
 async def _dm_instruction(client: httpx.AsyncClient, headers: dict[str, str]) -> str:

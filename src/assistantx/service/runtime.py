@@ -14,7 +14,6 @@ import asyncio
 import importlib
 import logging
 import os
-import time
 from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
@@ -56,7 +55,6 @@ logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
-CLOCK_STATE = "clock"
 
 
 class ServiceRuntime:
@@ -106,9 +104,8 @@ class ServiceRuntime:
             self.resolver,
             data_dir,
         )
-        # Sped-up time runs ahead of real time; after a restart it continues from the journal.
-        journaled = self.journal.state(CLOCK_STATE) or {}
-        self.clock = WallClock(s.speedup, start=max(time.time(), journaled.get("now", 0.0)))
+        # Timestamps are real time; the speed-up shortens simulated durations only.
+        self.clock = WallClock(s.effective_speedup)
         self.lock_keys = _lock_keys(s, data_dir)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
@@ -216,10 +213,7 @@ class ServiceRuntime:
         return LocalLocker(controller, clock=self.clock, expiry_s=expiry_s)
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
-        return {
-            colleagues.SIM_STATE: colleagues.snapshot(self.sim),
-            CLOCK_STATE: {"now": self.clock.now()},
-        }
+        return {colleagues.SIM_STATE: colleagues.snapshot(self.sim)}
 
     async def _register_with_sim(self, stm: Any) -> None:
         self.sim.register_instruction(stm.instruction_id, stm.requester)
@@ -247,7 +241,6 @@ class ServiceRuntime:
         self.durability.frozen = True
         self.messenger.closed = True
         self.hub.close()
-        self.journal.put_state(CLOCK_STATE, {"now": self.clock.now()})
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------
