@@ -50,6 +50,7 @@ from assistantx.service.hub import EventHub
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
+from assistantx.symbolic.requests import RequestRecognizer
 
 logger = logging.getLogger(__name__)
 
@@ -138,6 +139,8 @@ class ServiceRuntime:
                 reasoner_name=name,
                 ltm=ltm,
                 limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
+                # A direct message starts an instruction only when it asks for something.
+                is_request=RequestRecognizer(self.office),
             )
         )
         self.durability = Durability(
