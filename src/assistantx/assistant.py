@@ -290,12 +290,12 @@ class Assistant:
         if contacted:
             return (
                 "Thanks. The request I contacted you about has already ended, so I did not "
-                "act on this message. If you need something yourself, tell me, e.g. "
-                "'please bring me a stapler'."
+                "act on this message. If you need something yourself, please tell me what, "
+                "and for whom."
             )
         return (
-            "I did not find a request in your message, so I did nothing. Tell me what you "
-            "need, e.g. 'please bring me a stapler'."
+            "I did not find a request in your message, so I did nothing. Please tell me "
+            "what you need, and for whom."
         )
 
     async def _acknowledge(self, message: InboundMessage, text: str) -> None:
