@@ -10,13 +10,19 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import itertools
 import logging
+import secrets
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
+from typing import Protocol
 
 from assistantx.adapters.lock.base import Locker
-from assistantx.adapters.messenger.base import InboundMessage, Messenger
+from assistantx.adapters.messenger.base import (
+    ChatRef,
+    InboundMessage,
+    Messenger,
+    OutboundMessage,
+)
 from assistantx.adapters.robot.base import RobotBase
 from assistantx.clock import Clock
 from assistantx.errors import GroundingError
@@ -41,6 +47,19 @@ InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
 DirectMessageHook = Callable[[InboundMessage], Awaitable[bool]]
 
 
+class RequestCheck(Protocol):
+    """Whether a direct message is a request; ``strict``: only explicit wording counts (the
+    sender was just contacted by an instruction that has ended)."""
+
+    def __call__(self, text: str, sender: str, *, strict: bool) -> bool: ...
+
+
+def new_instruction_id() -> str:
+    """A fresh instruction id, unique for ever: random, not a counter that restarts with the
+    process (a restarted service must not hand out an id its journal holds already)."""
+    return f"ins-{secrets.token_hex(6)}"
+
+
 @dataclass
 class Running:
     stm: ShortTermMemory
@@ -59,6 +78,8 @@ class AssistantParts:
     reasoner_name: str = "symbolic"
     ltm: LongTermMemory | None = None
     limits: LoopLimits = field(default_factory=LoopLimits)
+    # None: every direct message that answers nothing starts an instruction.
+    is_request: RequestCheck | None = None
 
 
 class Assistant:
@@ -88,7 +109,6 @@ class Assistant:
         self._on_start: list[InstructionHook] = []
         self._on_end: list[InstructionHook] = []
         self._dm_hooks: list[DirectMessageHook] = []
-        self._ids = itertools.count(1)
         self._dispatcher: asyncio.Task[None] | None = None
         self.unmatched: list[InboundMessage] = []
 
@@ -129,7 +149,7 @@ class Assistant:
 
     # -- instructions --------------------------------------------------------------------
     def new_id(self) -> str:
-        return f"ins-{next(self._ids)}"
+        return new_instruction_id()
 
     async def submit(
         self,
@@ -227,7 +247,9 @@ class Assistant:
                 logger.exception("could not acknowledge inbound message %s", message.event_id)
 
     async def handle_inbound(self, message: InboundMessage) -> str | None:
-        """Route a reply to its instruction, or start an instruction from a direct message."""
+        """Route a reply to its instruction, or start an instruction from a direct message
+        that is a request; a late reply to an ended instruction or a message that asks for
+        nothing is acknowledged in words instead."""
         routed = self.replies.route(message)
         if routed is not None:
             return routed
@@ -240,7 +262,56 @@ class Assistant:
             for hook in self._dm_hooks:
                 if await hook(message):
                     return None
+            refusal = self._not_a_new_request(message)
+            if refusal is not None:
+                await self._acknowledge(message, refusal)
+                return None
             stm = await self.submit(message.sender, message.text)
             return stm.instruction_id
         self.unmatched.append(message)
         return None
+
+    def _not_a_new_request(self, message: InboundMessage) -> str | None:
+        """Why ``message`` starts no instruction, in words for its author; None: it does."""
+        # A reply to one of our questions that no open question took: its instruction ended.
+        if message.in_reply_to is not None and _names_a_question(message.in_reply_to):
+            return (
+                "Thanks. The request I asked you about has already ended, so I did not act "
+                "on your reply."
+            )
+        check = self.parts.is_request
+        if check is None:
+            return None
+        ended = self.replies.ended_instruction(message)
+        ended_stm = self.finished.get(ended) if ended is not None else None
+        contacted = ended_stm is not None and ended_stm.requester != message.sender
+        if check(message.text, message.sender, strict=contacted):
+            return None
+        if contacted:
+            return (
+                "Thanks. The request I contacted you about has already ended, so I did not "
+                "act on this message. If you need something yourself, please tell me what, "
+                "and for whom."
+            )
+        return (
+            "I did not find a request in your message, so I did nothing. Please tell me "
+            "what you need, and for whom."
+        )
+
+    async def _acknowledge(self, message: InboundMessage, text: str) -> None:
+        logger.info("message %s acknowledged, not executed", message.event_id)
+        reply = OutboundMessage(
+            chat=ChatRef(kind="dm", id=message.sender),
+            text=text,
+            idempotency_key=f"ack:{message.platform}:{message.event_id}",
+        )
+        try:
+            await self.parts.messenger.send(reply)
+        except Exception:
+            logger.exception("could not acknowledge message %s in words", message.event_id)
+
+
+def _names_a_question(reference: str) -> bool:
+    """Whether a reply reference is one of our question ids (``<instruction id>:<key>``)."""
+    instruction_id, sep, key = reference.partition(":")
+    return bool(sep and key) and instruction_id.startswith("ins-")

@@ -26,6 +26,11 @@ class Clock(ABC):
     def now(self) -> float:
         """Seconds since the epoch (wall) or since the simulation started (sim)."""
 
+    def timer(self) -> float:
+        """Seconds as ``sleep`` and ``wait_event`` count them, for the deadline of a wait;
+        the same as ``now()`` except on a sped-up WallClock (never a time of day)."""
+        return self.now()
+
     @abstractmethod
     async def sleep(self, seconds: float) -> None:
         """Let ``seconds`` pass."""
@@ -40,21 +45,27 @@ class Clock(ABC):
 
 
 class WallClock(Clock):
-    """Real time, optionally sped up (a demo where the robot drives 10x faster)."""
+    """Real time; ``speedup`` shortens the simulated durations only (a demo where the robot
+    drives and simulated colleagues answer 10x faster).
 
-    def __init__(self, speedup: float = 1.0, start: float | None = None) -> None:
-        """``start``: what ``now()`` reads at creation (a restarted service continues its
-        sped-up time from the journal instead of jumping back to the real time)."""
+    ``now()`` is always the real time of day: it stamps instructions, messages and reports,
+    which people compare with their own clocks. Waits (``sleep``, ``call_later``,
+    ``wait_event``) take ``1/speedup`` of their duration, and ``timer()`` runs ``speedup``
+    times faster than real time, so a wait's deadline ``timer() + 300`` passes when its
+    ``wait_event(.., 300)`` would.
+    """
+
+    def __init__(self, speedup: float = 1.0) -> None:
         if speedup <= 0:
             raise ValueError("speedup must be positive")
         self.speedup = speedup
-        self._origin = time.time()
-        self._start = self._origin if start is None else start
+        self._origin = time.monotonic()
 
     def now(self) -> float:
-        # Sped up like sleep(): a deadline of now() + 300 must pass after 300 / speedup real
-        # seconds, or a timed loop waits speedup times too long. Equals time.time() at 1x.
-        return self._start + (time.time() - self._origin) * self.speedup
+        return time.time()
+
+    def timer(self) -> float:
+        return (time.monotonic() - self._origin) * self.speedup
 
     async def sleep(self, seconds: float) -> None:
         await asyncio.sleep(max(0.0, seconds) / self.speedup)

@@ -280,7 +280,7 @@ class Executor:
         notify = asyncio.Event()
         queue = self.ctx.locker.subscribe(notify)
         events: list[LockEvent] = []
-        deadline = self.ctx.clock.now() + action.timeout_s
+        deadline = self.ctx.clock.timer() + action.timeout_s
         try:
             while True:
                 while not queue.empty():
@@ -294,7 +294,7 @@ class Executor:
                     arrived = self.take_messages(stm)
                     if any(m.sender == action.person for m in arrived):
                         break  # the person wrote instead of coming (e.g. "I don't have it")
-                remaining = deadline - self.ctx.clock.now()
+                remaining = deadline - self.ctx.clock.timer()
                 if remaining <= 0:
                     break
                 notify.clear()

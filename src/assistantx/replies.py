@@ -6,7 +6,9 @@ the same chat (a DM with that person, or that group), else the most recent open 
 that wrote to that chat (a colleague told to meet the robot writes back "I can't come").
 Anything unmatched goes back to the caller (a new instruction, or chatter to ignore).
 Replies are kept per instruction, so two instructions asking the same person never see
-each other's answers.
+each other's answers. Once an instruction ends, its questions and the chats it wrote to are
+remembered as ended (``ended_instruction``): a late reply there is about that instruction,
+not a new request.
 """
 
 from __future__ import annotations
@@ -14,8 +16,12 @@ from __future__ import annotations
 import asyncio
 from collections import defaultdict
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from assistantx.adapters.messenger.base import ChatRef, InboundMessage
+
+_K = TypeVar("_K")
+_ENDED_KEPT = 10_000  # ended questions and chats remembered (a bound on memory)
 
 
 @dataclass
@@ -34,13 +40,17 @@ class ReplyBox:
         self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
         self._inbox: dict[str, list[InboundMessage]] = defaultdict(list)
         self._engaged: dict[ChatRef, list[str]] = defaultdict(list)
+        self._ended_questions: dict[str, str] = {}  # question id → its ended instruction
+        self._ended_chats: dict[ChatRef, str] = {}  # chat → the ended instruction last in it
 
     def ask(self, question_id: str, instruction_id: str, chat: ChatRef, time: float) -> None:
         self._questions[question_id] = OpenQuestion(question_id, instruction_id, chat, time)
         self._by_chat[chat].append(question_id)
+        self._ended_chats.pop(chat, None)
 
     def engage(self, instruction_id: str, chat: ChatRef) -> None:
         """``instruction_id`` wrote to ``chat``: unprompted messages there may concern it."""
+        self._ended_chats.pop(chat, None)
         engaged = self._engaged[chat]
         if instruction_id in engaged:
             engaged.remove(instruction_id)
@@ -81,12 +91,32 @@ class ReplyBox:
         return messages
 
     def close(self, instruction_id: str) -> None:
-        """Forget an ended instruction's questions; later replies go unmatched."""
+        """Forget an ended instruction's questions; later replies go unmatched, and
+        ``ended_instruction`` names it for them."""
         for qid in [q for q, o in self._questions.items() if o.instruction_id == instruction_id]:
             question = self._questions.pop(qid)
             self._by_chat[question.chat].remove(qid)
-        for engaged in self._engaged.values():
+            self._remember(self._ended_questions, qid, instruction_id)
+            if not self._engaged.get(question.chat):
+                self._remember(self._ended_chats, question.chat, instruction_id)
+        for chat, engaged in self._engaged.items():
             if instruction_id in engaged:
                 engaged.remove(instruction_id)
+                if not engaged and not self._by_chat.get(chat):
+                    self._remember(self._ended_chats, chat, instruction_id)
         self._inbox.pop(instruction_id, None)
         self._events.pop(instruction_id, None)
+
+    def ended_instruction(self, message: InboundMessage) -> str | None:
+        """The ended instruction an unmatched ``message`` answers (its ``in_reply_to``) or
+        writes back to (the last instruction in its chat has ended); None: none known."""
+        if message.in_reply_to is not None and message.in_reply_to in self._ended_questions:
+            return self._ended_questions[message.in_reply_to]
+        return self._ended_chats.get(message.chat)
+
+    @staticmethod
+    def _remember(table: dict[_K, str], key: _K, instruction_id: str) -> None:
+        table.pop(key, None)
+        table[key] = instruction_id
+        while len(table) > _ENDED_KEPT:  # oldest first: dicts keep insertion order
+            del table[next(iter(table))]

@@ -14,6 +14,8 @@ from pydantic_settings import BaseSettings, SettingsConfigDict
 
 from assistantx.office import DEFAULT_OFFICE
 
+DEFAULT_SIM_SPEEDUP = 10.0
+
 
 class Settings(BaseSettings):
     model_config = SettingsConfigDict(env_prefix="ASSISTANTX_", extra="ignore", frozen=True)
@@ -36,7 +38,7 @@ class Settings(BaseSettings):
 
     # -- the loop -----------------------------------------------------------------------
     max_steps: int = 30
-    instruction_deadline_s: float = 3600.0
+    instruction_deadline_s: float = 3600.0  # real seconds from its start (not sped up)
 
     # -- the service --------------------------------------------------------------------
     host: str = "127.0.0.1"
@@ -53,7 +55,14 @@ class Settings(BaseSettings):
     sim_unavailable: str = Field(default="", description="CSV of simulated people who are away")
     sim_reply_delay_s: float = Field(default=20.0, ge=0, description="simulated reply delay")
     sim_handover_delay_s: float = Field(default=30.0, ge=0, description="time to the locker")
-    speedup: float = Field(default=10.0, gt=0, description="wall-clock speed-up of sim time")
+    speedup: float | None = Field(
+        default=None,
+        gt=0,
+        description="how many times faster simulated durations (robot travel, simulated"
+        " colleagues' replies, waits) pass than real time; timestamps stay real. Default: 10"
+        " with simulated people, 1 with ASSISTANTX_PEOPLE=human (people need real time to"
+        " answer)",
+    )
     reasoner_builder: str | None = Field(
         default=None, description="'module:builder' of a custom reasoner factory (tests, plugins)"
     )
@@ -89,6 +98,13 @@ class Settings(BaseSettings):
     @property
     def llm_enabled(self) -> bool:
         return bool(self.llm_base_url)
+
+    @property
+    def effective_speedup(self) -> float:
+        """The stated speed-up, else 10 with simulated people and 1 with real ones."""
+        if self.speedup is not None:
+            return self.speedup
+        return 1.0 if self.people == "human" else DEFAULT_SIM_SPEEDUP
 
     @property
     def effective_reasoner(self) -> Literal["symbolic", "llm"]:

@@ -166,3 +166,12 @@ def test_a_wrong_token_is_refused_with_a_clear_message(browser: Browser, server:
     page.click("#token-form button[type=submit]")
     expect(page.locator("#connection-text")).to_have_text("Live", timeout=10_000)
     expect(page.locator("#banner")).to_be_hidden()
+
+
+def test_the_page_states_the_speedup(browser: Browser, server: Server) -> None:
+    page = open_dashboard(browser, server)
+    label = page.locator("#speedup")
+    expect(label).to_be_visible()
+    expect(label).to_contain_text("50× faster")
+    expect(label).to_contain_text("clock times are real")
+    page.close()

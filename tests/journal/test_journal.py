@@ -110,3 +110,22 @@ def test_a_journal_written_before_the_step_count_opens(tmp_path: Path) -> None:
     assert (listed.id, listed.steps) == ("ins-0", 0)
     journal.checkpoint(_stm("ins-0"), "done")
     journal.close()
+
+
+def test_inserting_a_taken_instruction_id_raises_instead_of_overwriting(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    journal.create_instruction("ins-1", "lee", "lee's own", 1.0)
+    with pytest.raises(JournalError, match="taken"):
+        journal.create_instruction("ins-1", "zhang", "zhang's", 2.0)
+    zhangs = _stm("ins-1").model_copy(update={"requester": "zhang", "text": "zhang's"})
+    with pytest.raises(JournalError, match="taken"):
+        journal.insert_instruction(zhangs)
+    with pytest.raises(JournalError, match="taken"):  # a checkpoint of another requester's
+        journal.checkpoint(zhangs, "running")
+    record = journal.instruction("ins-1")
+    assert record is not None
+    assert (record.requester, record.text, record.status) == ("lee", "lee's own", "queued")
+    journal.checkpoint(_stm("ins-1"), "running")  # its own row: an update
+    record = journal.instruction("ins-1")
+    assert record is not None and record.status == "running" and record.requester == "lee"
+    journal.close()

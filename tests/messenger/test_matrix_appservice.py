@@ -153,3 +153,52 @@ async def test_malformed_and_oversized_transactions_are_not_acknowledged(
     assert (big.status_code, big.json()["errcode"]) == (413, "M_TOO_LARGE")
     assert inbox.empty()
     assert not await store.transaction_seen("7")
+
+
+async def test_an_event_with_an_absurd_timestamp_is_skipped_not_a_500(
+    serve_routers: ServeRouters,
+    router: Any,
+    inbox: asyncio.Queue[InboundMessage],
+    store: SqliteEventStore,
+) -> None:
+    absurd = text_event("$absurd", "from the far future")
+    absurd["origin_server_ts"] = 10**22
+    txn = {"events": [absurd, text_event("$fine", "hello")]}
+    async with serve_routers(router) as url, httpx.AsyncClient(base_url=url) as client:
+        response = await client.put("/_matrix/app/v1/transactions/40", json=txn, headers=AUTH)
+    assert (response.status_code, response.json()) == (200, {})
+    assert [m.event_id for m in [inbox.get_nowait() for _ in range(inbox.qsize())]] == ["$fine"]
+    assert await store.transaction_seen("40")
+
+
+async def test_matrix_transactions_have_their_own_size_limit_in_the_service(
+    store: SqliteEventStore, inbox: asyncio.Queue[InboundMessage]
+) -> None:
+    """The service caps bodies at 64 KiB, but not the homeserver's pushes: they get Matrix's
+    limit and a Matrix error body, which the homeserver understands."""
+    from fastapi import FastAPI
+
+    from assistantx.service.app import OWN_BODY_LIMITS, BodyLimit
+    from messenger.conftest import serve_app
+
+    ingestor = EventIngestor(store, EventNormalizer(CONFIG, {}), inbox.put)
+    app = FastAPI()
+    app.include_router(create_appservice_router(hs_token=SecretStr(HS_TOKEN), ingestor=ingestor))
+
+    @app.post("/v1/echo")
+    async def echo() -> dict[str, str]:
+        return {}
+
+    app.add_middleware(BodyLimit, max_bytes=64 * 1024, own_limits=OWN_BODY_LIMITS)
+    events = [text_event(f"$e{n}", "x" * 1000) for n in range(100)]  # ~120 KiB
+    huge = b'{"events": [' + b" " * (17 * 1024 * 1024) + b"]}"
+    async with serve_app(app) as url, httpx.AsyncClient(base_url=url, timeout=30) as client:
+        big = await client.put(
+            "/_matrix/app/v1/transactions/50", json={"events": events}, headers=AUTH
+        )
+        too_big = await client.put("/_matrix/app/v1/transactions/51", content=huge, headers=AUTH)
+        other = await client.post("/v1/echo", content=b"x" * (65 * 1024))
+    assert (big.status_code, big.json()) == (200, {})
+    assert inbox.qsize() == 100
+    assert (too_big.status_code, too_big.json()["errcode"]) == (413, "M_TOO_LARGE")
+    assert other.status_code == 413 and other.json()["error"] == "payload_too_large"

@@ -186,3 +186,34 @@ async def test_bot_messages_and_strangers_are_acknowledged_but_dropped(
                 await client.post(PATH, content=body, headers=signed_headers(body))
             ).status_code == 200
     assert inbox.empty()
+
+
+MALFORMED_EVENTS: list[tuple[str, Any]] = [
+    ("event", "not an object"),
+    ("event_id", 42),
+    ("files", 5),
+    ("ts", [1]),
+    ("ts", "soon"),
+    ("ts", "1e300"),
+]
+
+
+@pytest.mark.parametrize(("field", "value"), MALFORMED_EVENTS)
+async def test_signed_but_malformed_events_get_400_and_queue_nothing(
+    serve_routers: ServeRouters,
+    router: Any,
+    inbox: asyncio.Queue[InboundMessage],
+    field: str,
+    value: Any,
+) -> None:
+    envelope = message_envelope()
+    if field in ("event", "event_id"):
+        envelope[field] = value
+    else:
+        envelope["event"][field] = value
+    body = json.dumps(envelope).encode()
+    async with serve_routers(router) as url, httpx.AsyncClient(base_url=url) as client:
+        response = await client.post(PATH, content=body, headers=signed_headers(body))
+    assert response.status_code == 400, response.text
+    assert response.json()["error"]
+    assert inbox.empty()

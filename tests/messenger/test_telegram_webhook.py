@@ -112,3 +112,33 @@ async def test_oversized_and_malformed_updates(
         junk = await client.post(PATH, content=b"\xff\xfe", headers=HEADERS)
     assert (too_big.status_code, no_id.status_code, junk.status_code) == (413, 400, 400)
     assert inbox.empty()
+
+
+MALFORMED_MESSAGES: list[tuple[str, Any]] = [
+    ("message", "not an object"),
+    ("from", 5),
+    ("chat", "private"),
+    ("photo", [1, 2]),
+    ("photo", [{"file_id": "x", "file_size": "big"}]),
+    ("date", 10**20),
+]
+
+
+@pytest.mark.parametrize(("field", "value"), MALFORMED_MESSAGES)
+async def test_authenticated_but_malformed_updates_get_400_and_queue_nothing(
+    serve_routers: ServeRouters,
+    router: Any,
+    inbox: asyncio.Queue[InboundMessage],
+    field: str,
+    value: Any,
+) -> None:
+    payload = update(30, "hello")
+    if field == "message":
+        payload["message"] = value
+    else:
+        payload["message"][field] = value
+    async with serve_routers(router) as url, httpx.AsyncClient(base_url=url) as client:
+        response = await client.post(PATH, json=payload, headers=HEADERS)
+    assert response.status_code == 400, response.text
+    assert response.json()["error"]
+    assert inbox.empty()

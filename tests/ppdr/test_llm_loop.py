@@ -319,8 +319,12 @@ async def test_two_instructions_share_the_robot_without_interleaving(
     assistant = make_assistant(office, sim, factory)
     await assistant.start()
     try:
-        a = await assistant.submit("lee", "tell Zhang the robot comes, then go to the printer")
-        b = await assistant.submit("chen", "tell Wang the robot comes, then go to the printer")
+        a = await assistant.submit(
+            "lee", "tell Zhang the robot comes, then go to the printer", instruction_id="ins-1"
+        )
+        b = await assistant.submit(
+            "chen", "tell Wang the robot comes, then go to the printer", instruction_id="ins-2"
+        )
         await asyncio.gather(assistant.wait(a.instruction_id), assistant.wait(b.instruction_id))
     finally:
         await assistant.stop()

@@ -35,7 +35,8 @@ def base_env(data_dir: Path, **extra: str) -> dict[str, str]:
             "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
             "ASSISTANTX_TOKENS": json.dumps({LEE: "lee", ZHANG: "zhang"}),
             "ASSISTANTX_SPEEDUP": "50",
-            "PYTHONPATH": str(HERE.parent),
+            # This checkout's code, also where an installed copy elsewhere comes first.
+            "PYTHONPATH": os.pathsep.join([str(HERE.parent), str(HERE.parents[1] / "src")]),
         }
     )
     env.update(extra)
@@ -61,7 +62,7 @@ class Server:
                 self.kill()
 
 
-def start(args: list[str], env: Mapping[str, str], port: int, timeout_s: float = 20.0) -> Server:
+def start(args: list[str], env: Mapping[str, str], port: int, timeout_s: float = 60.0) -> Server:
     log = Path(env["ASSISTANTX_DATA_DIR"]).parent / f"server-{port}-{time.monotonic_ns()}.log"
     with log.open("wb") as out:  # the child keeps its own copy of the descriptor
         process = subprocess.Popen(args, env=dict(env), stdout=out, stderr=subprocess.STDOUT)

@@ -1,8 +1,15 @@
-"""``assistantx serve [--host H] [--port P]``: the REST API, live events and the dashboard."""
+"""``assistantx serve [--host H] [--port P]``: the REST API, live events and the dashboard.
+
+Start-up order matters when a second process is started by mistake: the data folder's lock
+first, then the port, and only then the journal (resuming the running instructions). A second
+``serve`` on the same folder or port exits with a one-line error and has changed nothing.
+"""
 
 from __future__ import annotations
 
 import argparse
+import socket
+import sys
 
 from assistantx.settings import Settings
 
@@ -16,6 +23,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 
 def _serve(args: argparse.Namespace) -> int:
     from assistantx.service.app import create_app
+    from assistantx.service.datalock import DataDirBusyError, DataDirLock
     from assistantx.service.runtime import ServiceRuntime
     from assistantx.service.server import service_server
 
@@ -34,6 +42,32 @@ def _serve(args: argparse.Namespace) -> int:
                 flush=True,
             )
 
-    app = create_app(settings, on_ready=announce)
-    service_server(app, host, port).run()
+    try:
+        lock = DataDirLock(settings.data_dir).acquire()
+    except DataDirBusyError as exc:
+        print(f"assistantx serve: {exc}", file=sys.stderr)
+        return 1
+    try:
+        listener = _bind(host, port)
+    except OSError as exc:
+        lock.release()
+        print(f"assistantx serve: cannot listen on {host}:{port}: {exc.strerror}", file=sys.stderr)
+        return 1
+    app = create_app(settings, on_ready=announce, data_lock=lock)
+    service_server(app, host, port).run(sockets=[listener])
     return 0
+
+
+def _bind(host: str, port: int) -> socket.socket:
+    """The listening socket, bound before the app starts (as uvicorn would bind it)."""
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    listener = socket.socket(family, socket.SOCK_STREAM)
+    try:
+        listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        listener.bind((host, port))
+        listener.listen(2048)
+    except OSError:
+        listener.close()
+        raise
+    listener.set_inheritable(True)
+    return listener

@@ -3,6 +3,7 @@
 from assistantx.errors import JournalError
 from assistantx.journal.store import (
     FINAL_STATUSES,
+    MAX_SEQ,
     STATUSES,
     ChatSummary,
     EventRecord,
@@ -14,6 +15,7 @@ from assistantx.journal.store import (
 
 __all__ = [
     "FINAL_STATUSES",
+    "MAX_SEQ",
     "STATUSES",
     "ChatSummary",
     "EventRecord",

@@ -33,6 +33,9 @@ logger = logging.getLogger(__name__)
 
 Status = Literal["queued", "running", "done", "failed", "unachievable", "cancelled"]
 FINAL_STATUSES: frozenset[str] = frozenset({"done", "failed", "unachievable", "cancelled"})
+MAX_SEQ = 2**63 - 1
+"""The largest sequence number SQLite stores (a signed 64-bit integer); larger ones a client
+sends (``after``, ``Last-Event-ID``, cursors) are refused before they reach a query."""
 STATUSES: tuple[Status, ...] = ("queued", "running", "done", "failed", "unachievable", "cancelled")
 
 
@@ -130,7 +133,8 @@ class Journal:
     def create_instruction(
         self, instruction_id: str, requester: str, text: str, created_at: float
     ) -> InstructionRecord:
-        with self.transaction() as db:
+        """Insert a new instruction; JournalError when its id is taken (never overwrites)."""
+        with self.transaction() as db, _new_id(instruction_id):
             db.execute(
                 "INSERT INTO instructions (id, requester, text, status, created_at, updated_at)"
                 " VALUES (?, ?, ?, 'queued', ?, ?)",
@@ -140,8 +144,15 @@ class Journal:
         assert record is not None
         return record
 
+    def insert_instruction(self, stm: ShortTermMemory, status: Status = "running") -> None:
+        """Insert a new instruction with its first checkpoint; JournalError when its id is
+        taken (an instruction started without ``create_instruction``, e.g. from a message)."""
+        with self.transaction() as db, _new_id(stm.instruction_id):
+            self._insert(db, stm, status)
+
     def checkpoint(self, stm: ShortTermMemory, status: Status = "running") -> None:
-        """Store the instruction's latest memory; inserts the row when it is new."""
+        """Store the instruction's latest memory in its own row (same id and requester);
+        inserts the row when there is none, and never writes over another instruction's."""
         with self.transaction() as db:
             self._checkpoint(db, stm, status)
 
@@ -173,26 +184,41 @@ class Journal:
         trace = stm.trace
         cur = db.execute(
             "UPDATE instructions SET status=?, outcome=?, summary=?, updated_at=?, stm=?,"
-            " steps=? WHERE id=?",
-            (status, trace.outcome, trace.summary, now, body, len(trace.steps), stm.instruction_id),
+            " steps=? WHERE id=? AND requester=?",
+            (
+                status,
+                trace.outcome,
+                trace.summary,
+                now,
+                body,
+                len(trace.steps),
+                stm.instruction_id,
+                stm.requester,
+            ),
         )
         if cur.rowcount == 0:
-            db.execute(
-                "INSERT INTO instructions (id, requester, text, status, outcome, summary,"
-                " created_at, updated_at, stm, steps) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (
-                    stm.instruction_id,
-                    stm.requester,
-                    stm.text,
-                    status,
-                    trace.outcome,
-                    trace.summary,
-                    trace.started_at,
-                    now,
-                    body,
-                    len(trace.steps),
-                ),
-            )
+            with _new_id(stm.instruction_id):  # a row of another requester: an error
+                self._insert(db, stm, status)
+
+    def _insert(self, db: sqlite3.Connection, stm: ShortTermMemory, status: Status) -> None:
+        now = time.time()
+        trace = stm.trace
+        db.execute(
+            "INSERT INTO instructions (id, requester, text, status, outcome, summary,"
+            " created_at, updated_at, stm, steps) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            (
+                stm.instruction_id,
+                stm.requester,
+                stm.text,
+                status,
+                trace.outcome,
+                trace.summary,
+                trace.started_at,
+                now,
+                stm.model_dump_json(),
+                len(trace.steps),
+            ),
+        )
 
     def set_status(self, instruction_id: str, status: Status) -> None:
         self._conn.execute(
@@ -422,6 +448,15 @@ class Journal:
             return None
         body: dict[str, Any] = json.loads(row["body"])
         return body
+
+
+@contextmanager
+def _new_id(instruction_id: str) -> Iterator[None]:
+    """Turns the primary key's refusal of a taken id into a clear error."""
+    try:
+        yield
+    except sqlite3.IntegrityError as exc:
+        raise JournalError(f"instruction id {instruction_id!r} is taken") from exc
 
 
 def _instruction(row: sqlite3.Row) -> InstructionRecord:

@@ -24,6 +24,7 @@ from assistantx.service import (
     metrics,
     reports,
 )
+from assistantx.service.datalock import DataDirLock
 from assistantx.service.errors import error_body, install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.settings import Settings
@@ -33,15 +34,23 @@ logger = logging.getLogger(__name__)
 STATIC_DIR = Path(__file__).resolve().parents[1] / "static"
 
 
-class BodyLimit:
-    """Answers 413 when a request body exceeds ``max_bytes`` (declared or streamed)."""
+OWN_BODY_LIMITS = ("/_matrix/app/",)
+"""Routes that cap their bodies themselves, at their protocol's size and in its error format
+(a Matrix transaction may hold 100 events of 64 KiB; a 413 the homeserver cannot read would
+make it retry the transaction for ever)."""
 
-    def __init__(self, app: ASGIApp, max_bytes: int) -> None:
+
+class BodyLimit:
+    """Answers 413 when a request body exceeds ``max_bytes`` (declared or streamed), except
+    on the paths under ``own_limits``."""
+
+    def __init__(self, app: ASGIApp, max_bytes: int, own_limits: tuple[str, ...] = ()) -> None:
         self.app = app
         self.max_bytes = max_bytes
+        self.own_limits = own_limits
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] != "http":
+        if scope["type"] != "http" or str(scope["path"]).startswith(self.own_limits):
             await self.app(scope, receive, send)
             return
         declared = dict(scope["headers"]).get(b"content-length")
@@ -99,10 +108,12 @@ def create_app(
     settings: Settings | None = None,
     *,
     on_ready: Callable[[ServiceRuntime], None] | None = None,
+    data_lock: DataDirLock | None = None,
 ) -> FastAPI:
-    """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go)."""
+    """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go);
+    ``data_lock``: the data folder's lock, when the caller holds it already."""
     settings = settings or Settings()
-    runtime = ServiceRuntime(settings)
+    runtime = ServiceRuntime(settings, data_lock)
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
@@ -142,5 +153,5 @@ def create_app(
         app.include_router(runtime.matrix.push_router)  # the homeserver's pushes
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
-    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, own_limits=OWN_BODY_LIMITS)
     return app

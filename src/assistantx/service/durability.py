@@ -59,7 +59,12 @@ class Durability:
 
     # -- recording -----------------------------------------------------------------------
     async def on_start(self, stm: ShortTermMemory) -> None:
-        if not self.frozen:
+        if self.frozen:
+            return
+        if self.journal.instruction(stm.instruction_id) is None:
+            # Started from a message: its first row; a taken id raises, never overwrites.
+            self.journal.insert_instruction(stm, "running")
+        else:  # journaled by the REST submit, or resumed
             self.journal.checkpoint(stm, "running")
 
     async def on_event(self, event: TraceEvent) -> None:

@@ -16,7 +16,7 @@ from typing import Annotated
 from fastapi import APIRouter, Header, Query
 from fastapi.responses import StreamingResponse
 
-from assistantx.journal import EventRecord
+from assistantx.journal import MAX_SEQ, EventRecord
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
@@ -34,9 +34,12 @@ def _start(last_event_id: str | None, after: int | None) -> int:
     if last_event_id is None:
         return 0
     try:
-        return max(0, int(last_event_id))
+        start = max(0, int(last_event_id))
     except ValueError as exc:
         raise UnprocessableError(f"Last-Event-ID {last_event_id!r} is not an event id") from exc
+    if start > MAX_SEQ:
+        raise UnprocessableError(f"Last-Event-ID {last_event_id!r} is beyond any event id")
+    return start
 
 
 def _format(record: EventRecord) -> str:
@@ -108,12 +111,12 @@ async def instruction_events(
     runtime: Runtime,
     caller: Caller,
     last_event_id: Annotated[str | None, Header(max_length=20)] = None,
-    after: Annotated[int | None, Query(ge=0)] = None,
+    after: Annotated[int | None, Query(ge=0, le=MAX_SEQ)] = None,
 ) -> StreamingResponse:
+    start = _start(last_event_id, after)  # a malformed request is 422 before any lookup
     record = runtime.instruction(instruction_id)
     if not caller.may_act_as(record.requester):
         raise ForbiddenError("this instruction belongs to someone else")
-    start = _start(last_event_id, after)
     return _response(_stream(runtime, caller, instruction_id, start))
 
 
@@ -122,7 +125,7 @@ async def all_events(
     runtime: Runtime,
     caller: Caller,
     last_event_id: Annotated[str | None, Header(max_length=20)] = None,
-    after: Annotated[int | None, Query(ge=0)] = None,
+    after: Annotated[int | None, Query(ge=0, le=MAX_SEQ)] = None,
 ) -> StreamingResponse:
     """Every instruction's events (a person's token: only their own instructions)."""
     start = _start(last_event_id, after)

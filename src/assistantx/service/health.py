@@ -24,4 +24,6 @@ async def readyz(request: Request) -> JSONResponse | dict[str, Any]:
         "status": "ready",
         "running": len(runtime.assistant.running),
         "resumed": runtime.resumed,
+        # Simulated durations pass this many times faster than real time (the page says so).
+        "speedup": runtime.clock.speedup,
     }

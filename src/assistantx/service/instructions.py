@@ -7,7 +7,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Response
 
-from assistantx.journal import Status
+from assistantx.journal import MAX_SEQ, Status
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.schemas import (
@@ -103,6 +103,9 @@ def _decode_cursor(cursor: str) -> int:
         raw = base64.urlsafe_b64decode(cursor + "=" * (-len(cursor) % 4)).decode()
     except (ValueError, UnicodeDecodeError) as exc:
         raise problem from exc
-    if not raw.startswith("s") or not raw[1:].isdigit():
+    if not raw.startswith("s") or not raw[1:].isascii() or not raw[1:].isdigit():
         raise problem
-    return int(raw[1:])
+    seq = int(raw[1:])
+    if seq > MAX_SEQ:
+        raise problem
+    return seq

@@ -8,6 +8,7 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, Query
 
 from assistantx.adapters.messenger.base import ChatRef
+from assistantx.journal import MAX_SEQ
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
@@ -66,7 +67,7 @@ async def get_chat(
     chat_id: str,
     runtime: Runtime,
     caller: Caller,
-    after: Annotated[int, Query(ge=0)] = 0,
+    after: Annotated[int, Query(ge=0, le=MAX_SEQ)] = 0,
     limit: Annotated[int, Query(ge=1, le=500)] = 200,
 ) -> list[MessageOut]:
     """One chat's transcript, oldest first, after the message sequence number ``after``."""

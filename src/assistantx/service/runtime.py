@@ -14,8 +14,6 @@ import asyncio
 import importlib
 import logging
 import os
-import secrets
-import time
 from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
@@ -27,7 +25,12 @@ from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
 from assistantx.adapters.robot.base import RobotBase
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
-from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
+from assistantx.assistant import (
+    Assistant,
+    AssistantParts,
+    ReasonerFactory,
+    new_instruction_id,
+)
 from assistantx.clock import WallClock
 from assistantx.errors import LockError
 from assistantx.journal import InstructionRecord, Journal
@@ -40,22 +43,19 @@ from assistantx.ppdr.loop import LoopLimits
 from assistantx.reasoners import reasoner_factory
 from assistantx.service import colleagues
 from assistantx.service.auth import AuthSetup, build_authority
+from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import LTM_STATE, Durability
 from assistantx.service.errors import NotFoundError
 from assistantx.service.hub import EventHub
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
+from assistantx.symbolic.requests import RequestRecognizer
 
 logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
-CLOCK_STATE = "clock"
-
-
-def new_instruction_id() -> str:
-    return f"ins-{secrets.token_hex(6)}"
 
 
 class ServiceRuntime:
@@ -74,8 +74,11 @@ class ServiceRuntime:
     auth: AuthSetup
     metrics: ServiceMetrics
 
-    def __init__(self, settings: Settings) -> None:
+    def __init__(self, settings: Settings, data_lock: DataDirLock | None = None) -> None:
+        """``data_lock``: the data folder's lock when the caller took it already (the CLI takes
+        it before binding its port); else ``start`` takes it."""
         self.settings = settings
+        self.data_lock = data_lock
         self.hub = EventHub()
         self.ready = False
         self.resumed: list[str] = []
@@ -90,6 +93,9 @@ class ServiceRuntime:
         self.office = load_office(s.office)
         self.resolver = Resolver(self.office)
         data_dir = _data_dir(s.data_dir)
+        if self.data_lock is None or not self.data_lock.held:
+            self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
+            stack.callback(self.data_lock.release)
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
         self.metrics = ServiceMetrics(self.journal)
@@ -99,9 +105,8 @@ class ServiceRuntime:
             self.resolver,
             data_dir,
         )
-        # Sped-up time runs ahead of real time; after a restart it continues from the journal.
-        journaled = self.journal.state(CLOCK_STATE) or {}
-        self.clock = WallClock(s.speedup, start=max(time.time(), journaled.get("now", 0.0)))
+        # Timestamps are real time; the speed-up shortens simulated durations only.
+        self.clock = WallClock(s.effective_speedup)
         self.lock_keys = _lock_keys(s, data_dir)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
@@ -134,6 +139,8 @@ class ServiceRuntime:
                 reasoner_name=name,
                 ltm=ltm,
                 limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
+                # A direct message starts an instruction only when it asks for something.
+                is_request=RequestRecognizer(self.office),
             )
         )
         self.durability = Durability(
@@ -214,10 +221,7 @@ class ServiceRuntime:
         return LocalLocker(controller, clock=self.clock, expiry_s=expiry_s)
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
-        return {
-            colleagues.SIM_STATE: colleagues.snapshot(self.sim),
-            CLOCK_STATE: {"now": self.clock.now()},
-        }
+        return {colleagues.SIM_STATE: colleagues.snapshot(self.sim)}
 
     async def _register_with_sim(self, stm: Any) -> None:
         self.sim.register_instruction(stm.instruction_id, stm.requester)
@@ -247,7 +251,6 @@ class ServiceRuntime:
         if self.matrix is not None:
             self.matrix.closing()  # cut-short instructions resume; nobody is told "failed"
         self.hub.close()
-        self.journal.put_state(CLOCK_STATE, {"now": self.clock.now()})
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------

@@ -2,13 +2,35 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+import unicodedata
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
 from assistantx.journal import InstructionRecord, MessageRecord, Status
 
 Id = Field(min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_.:\- ]+$")
+
+
+def _visible_text(value: str) -> str:
+    """Words a person wrote: no NUL (it ends strings in C code and terminals downstream) and
+    at least one visible character."""
+    if "\x00" in value:
+        raise ValueError("text must not contain NUL characters")
+    if not any(ch.isprintable() and not ch.isspace() for ch in value):
+        raise ValueError("text must contain a visible character")
+    return value
+
+
+def _no_control_characters(value: str) -> str:
+    """A name or id: control characters would forge log lines and break transcripts."""
+    if any(unicodedata.category(ch) == "Cc" for ch in value):
+        raise ValueError("must not contain control characters")
+    return value
+
+
+Text = Annotated[str, AfterValidator(_visible_text)]
+Name = Annotated[str, AfterValidator(_no_control_characters)]
 
 
 class _Request(BaseModel):
@@ -16,8 +38,8 @@ class _Request(BaseModel):
 
 
 class InstructionIn(_Request):
-    requester: str = Field(min_length=1, max_length=100, description="person id or name")
-    text: str = Field(min_length=1, max_length=4000, description="the instruction in words")
+    requester: Name = Field(min_length=1, max_length=100, description="person id or name")
+    text: Text = Field(min_length=1, max_length=4000, description="the instruction in words")
 
 
 class InstructionOut(BaseModel):
@@ -74,10 +96,10 @@ class CancelOut(BaseModel):
 
 
 class MessageIn(_Request):
-    text: str = Field(min_length=1, max_length=4000)
-    group: str | None = Field(default=None, max_length=100, description="group chat id; else DM")
-    in_reply_to: str | None = Field(default=None, max_length=200, description="question id")
-    sender: str | None = Field(default=None, max_length=100, description="operator only")
+    text: Text = Field(min_length=1, max_length=4000)
+    group: Name | None = Field(default=None, max_length=100, description="group chat id; else DM")
+    in_reply_to: Name | None = Field(default=None, max_length=200, description="question id")
+    sender: Name | None = Field(default=None, max_length=100, description="operator only")
     files: list[str] = Field(default_factory=list, max_length=10, description="file item ids")
 
 

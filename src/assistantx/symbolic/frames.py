@@ -105,6 +105,12 @@ class Task(BaseModel):
         return f"{self.item}:{self.owner}" if self.owner else None
 
 
+NOT_UNDERSTOOD = (
+    "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
+)
+"""The question for a text in which no request was found (not an unclear request)."""
+
+
 class TaskFrame(BaseModel):
     """What the requester wants, or the question to ask them first."""
 
@@ -564,10 +570,7 @@ class InstructionParser:
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
-            return (
-                "Sorry, I'm not sure what you need. What should I do, with which item, "
-                "and for whom?"
-            )
+            return NOT_UNDERSTOOD
         for t in tasks:
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:

@@ -269,7 +269,22 @@ $("#submit-form").addEventListener("submit", async (event) => {
 });
 
 // -- start-up ------------------------------------------------------------------------------
+// Simulated durations (travel, simulated replies) may run faster than real time; say so, as
+// a watcher would otherwise take the robot's speed for real. Times of day are always real.
+async function showSpeedup() {
+  const label = $("#speedup");
+  try {
+    const ready = await (await fetch("/readyz")).json();
+    const speedup = Number(ready.speedup);
+    label.hidden = !(speedup > 0 && speedup !== 1);
+    label.textContent = `Simulated time runs ${speedup}× faster (robot travel, simulated replies, waits); clock times are real.`;
+  } catch {
+    label.hidden = true;
+  }
+}
+
 async function start() {
+  showSpeedup();
   if (!token.get()) {
     askToken();
     return;

@@ -165,6 +165,11 @@ class EventNormalizer:
         if len(text) > MAX_TEXT_CHARS:
             reply = TOO_LONG_TEXT.format(length=len(text), limit=MAX_TEXT_CHARS)
             return [AutoReply(room_id, event_id, reply)]
+        sent = _event_time(event)
+        if sent is None:
+            # Skipped, not failed: a failing transaction would be pushed again for ever.
+            logger.warning("dropping %s: origin_server_ts is out of range", event_id)
+            return []
         message = InboundMessage(
             platform=PLATFORM,
             event_id=event_id,
@@ -172,7 +177,7 @@ class EventNormalizer:
             sender=person,
             text=text,
             attachments=attachments,
-            time=_event_time(event),
+            time=sent,
             in_reply_to=in_reply_to,
         )
         if attachments and not text and chat.kind == "dm":
@@ -205,6 +210,9 @@ class EventNormalizer:
         answer = "Yes" if plain in _YES else "No" if plain in _NO else None
         if not question or answer is None or chat is None:
             return [AutoReply(room_id, event_id, REACTION_TEXT.format(key=key))]
+        sent = _event_time(event)
+        if sent is None:
+            return []
         return [
             InboundMessage(
                 platform=PLATFORM,
@@ -212,7 +220,7 @@ class EventNormalizer:
                 chat=chat,
                 sender=person,
                 text=answer,
-                time=_event_time(event),
+                time=sent,
                 in_reply_to=question,
             )
         ]
@@ -265,8 +273,12 @@ def _text_and_attachments(
     return caption, [attachment]
 
 
-def _event_time(event: Mapping[str, Any]) -> datetime:
+def _event_time(event: Mapping[str, Any]) -> datetime | None:
+    """When the event was sent (now when the server left it out); None when out of range."""
     ts = event.get("origin_server_ts")
-    if isinstance(ts, int | float):
+    if not isinstance(ts, int | float):
+        return datetime.now(UTC)
+    try:
         return datetime.fromtimestamp(ts / 1000, tz=UTC)
-    return datetime.now(UTC)
+    except (OverflowError, OSError, ValueError):
+        return None

@@ -32,7 +32,12 @@ from pydantic import SecretStr
 from assistantx.adapters.messenger.base import Attachment, ChatRef, InboundMessage
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.webhooks._accept import accept_and_enqueue
-from assistantx.adapters.messenger.webhooks.body import BodyTooLargeError, read_capped_body
+from assistantx.adapters.messenger.webhooks.body import (
+    BodyTooLargeError,
+    MalformedBodyError,
+    read_capped_body,
+    timestamp_utc,
+)
 
 logger = logging.getLogger(__name__)
 
@@ -80,11 +85,12 @@ def verify_slack_request(
 def normalize_slack_event(
     envelope: Mapping[str, Any], people: Mapping[str, str], channels: Mapping[str, str]
 ) -> InboundMessage | None:
-    """An ``event_callback`` envelope → a message, or None for anything we do not handle."""
+    """An ``event_callback`` envelope → a message, or None for anything we do not handle;
+    MalformedBodyError when a field is not of the type Slack documents."""
     event = envelope.get("event")
     event_id = envelope.get("event_id")
     if not isinstance(event, dict) or not isinstance(event_id, str):
-        return None
+        raise MalformedBodyError("an event_callback has an 'event' object and an 'event_id'")
     if event.get("type") != "message" or event.get("subtype") not in _ACCEPTED_SUBTYPES:
         return None
     if event.get("bot_id"):
@@ -101,6 +107,9 @@ def normalize_slack_event(
     else:
         logger.info("dropping Slack event %s: channel %s is not an office group", event_id, channel)
         return None
+    files = event.get("files", [])
+    if not isinstance(files, list):
+        raise MalformedBodyError("'files' is not a list")
     attachments = [
         Attachment(
             kind="image" if str(f.get("mimetype", "")).startswith("image/") else "file",
@@ -108,13 +117,18 @@ def normalize_slack_event(
             mime=str(f.get("mimetype") or "application/octet-stream"),
             ref=f.get("url_private"),
         )
-        for f in event.get("files", [])
+        for f in files
         if isinstance(f, dict)
     ]
-    try:
-        sent = datetime.fromtimestamp(float(event.get("ts", "")), tz=UTC)
-    except ValueError:
+    ts = event.get("ts")
+    if ts is None:
         sent = datetime.now(UTC)
+    else:
+        try:
+            seconds = float(ts)
+        except (TypeError, ValueError) as exc:
+            raise MalformedBodyError(f"'ts' {ts!r} is not a Slack timestamp") from exc
+        sent = timestamp_utc(seconds)
     return InboundMessage(
         platform=PLATFORM,
         event_id=event_id,
@@ -168,7 +182,10 @@ def create_slack_router(
         if kind == "url_verification":
             return JSONResponse({"challenge": str(envelope.get("challenge", ""))})
         if kind == "event_callback":
-            message = normalize_slack_event(envelope, people, groups)
+            try:
+                message = normalize_slack_event(envelope, people, groups)
+            except MalformedBodyError as exc:
+                return JSONResponse({"error": str(exc)}, status_code=400)
             if message is not None:
                 try:
                     new = await accept_and_enqueue(store, inbox, message)

@@ -28,7 +28,12 @@ from pydantic import SecretStr
 from assistantx.adapters.messenger.base import Attachment, ChatRef, InboundMessage
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.webhooks._accept import accept_and_enqueue
-from assistantx.adapters.messenger.webhooks.body import BodyTooLargeError, read_capped_body
+from assistantx.adapters.messenger.webhooks.body import (
+    BodyTooLargeError,
+    MalformedBodyError,
+    read_capped_body,
+    timestamp_utc,
+)
 
 logger = logging.getLogger(__name__)
 
@@ -48,6 +53,8 @@ def _attachments(message: Mapping[str, Any]) -> list[Attachment]:
     found: list[Attachment] = []
     photos = message.get("photo")
     if isinstance(photos, list) and photos:
+        if not all(isinstance(p, dict) and isinstance(p.get("file_size", 0), int) for p in photos):
+            raise MalformedBodyError("'photo' is not a list of PhotoSize objects")
         largest = max(photos, key=lambda p: int(p.get("file_size", 0) or 0))
         found.append(
             Attachment(
@@ -73,12 +80,17 @@ def _attachments(message: Mapping[str, Any]) -> list[Attachment]:
 def normalize_telegram_update(
     update: Mapping[str, Any], people: Mapping[str, str], groups: Mapping[str, str]
 ) -> InboundMessage | None:
-    """A ``message`` update → a message, or None for other updates and strangers."""
+    """A ``message`` update → a message, or None for other updates and strangers;
+    MalformedBodyError when a field is not of the type the Bot API documents."""
     message = update.get("message")
-    if not isinstance(message, dict):
+    if message is None:
         return None
+    if not isinstance(message, dict):
+        raise MalformedBodyError("'message' is not a Message object")
     author = message.get("from") or {}
     chat = message.get("chat") or {}
+    if not isinstance(author, dict) or not isinstance(chat, dict):
+        raise MalformedBodyError("'from' and 'chat' of a message are objects")
     if author.get("is_bot"):
         return None
     person = people.get(str(author.get("id")))
@@ -106,7 +118,7 @@ def normalize_telegram_update(
         sender=person,
         text=str(message.get("text") or message.get("caption") or ""),
         attachments=_attachments(message),
-        time=datetime.fromtimestamp(sent, tz=UTC) if isinstance(sent, int) else datetime.now(UTC),
+        time=timestamp_utc(sent) if isinstance(sent, int) else datetime.now(UTC),
     )
 
 
@@ -147,7 +159,10 @@ def create_telegram_router(
         async with lock:
             if newest and update_id < newest[0]:
                 logger.warning("Telegram update %d arrived after %d", update_id, newest[0])
-            message = normalize_telegram_update(update, people, group_chats)
+            try:
+                message = normalize_telegram_update(update, people, group_chats)
+            except MalformedBodyError as exc:
+                return JSONResponse({"error": str(exc)}, status_code=400)
             if message is not None:
                 try:
                     await accept_and_enqueue(store, inbox, message)

@@ -1,0 +1,45 @@
+"""The service app in this process, served by a real uvicorn server on 127.0.0.1, as a
+context manager (for tests that restart it on the same data folder or vary its settings)."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+from pathlib import Path
+from typing import Any
+
+import httpx
+
+from assistantx.service.app import create_app
+from assistantx.service.server import service_server
+from assistantx.settings import Settings
+from service.server import LEE, OPERATOR, ZHANG, free_port
+
+
+@asynccontextmanager
+async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[httpx.AsyncClient]:
+    """A client of a fresh server; ``settings`` override the tests' defaults (speed-up 50)."""
+    defaults: dict[str, Any] = {
+        "data_dir": data_dir,
+        "operator_token": OPERATOR,
+        "tokens": json.dumps({LEE: "lee", ZHANG: "zhang"}),
+        "speedup": 50,
+    }
+    app = create_app(Settings(**{**defaults, **settings}))
+    port = free_port()
+    server = service_server(app, "127.0.0.1", port, log_level="warning")
+    task = asyncio.create_task(server.serve())
+    for _ in range(1500):  # uvicorn offers no event for "listening"
+        if server.started or task.done():
+            break
+        await asyncio.sleep(0.02)
+    if task.done():
+        task.result()
+    try:
+        async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+            yield client
+    finally:
+        server.should_exit = True
+        await task

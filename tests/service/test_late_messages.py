@@ -1,0 +1,98 @@
+"""Late or stray direct messages start nothing: a colleague writing back after the instruction
+that contacted them ended, or a reply to an ended instruction's question, is acknowledged in
+words; a message that asks for nothing too. A request still starts an instruction."""
+
+from __future__ import annotations
+
+import asyncio
+from pathlib import Path
+from typing import Any
+
+import httpx
+
+from service.inprocess import running_service
+from service.server import LEE, OPERATOR
+
+OP = {"Authorization": f"Bearer {OPERATOR}"}
+AS_LEE = {"Authorization": f"Bearer {LEE}"}
+
+
+async def _ids(api: httpx.AsyncClient) -> list[str]:
+    items = (await api.get("/v1/instructions", headers=OP)).json()["items"]
+    return [str(i["id"]) for i in items]
+
+
+async def _until_ended(api: httpx.AsyncClient, iid: str) -> dict[str, Any]:
+    for _ in range(1500):
+        body: dict[str, Any] = (await api.get(f"/v1/instructions/{iid}", headers=OP)).json()
+        if body["status"] not in ("queued", "running"):
+            return body
+        await asyncio.sleep(0.02)
+    raise AssertionError(f"{iid} did not end")
+
+
+async def _dm(api: httpx.AsyncClient, sender: str, text: str, **extra: str) -> None:
+    body = {"text": text, "sender": sender, **extra}
+    r = await api.post("/v1/messages", json=body, headers=OP)
+    assert r.status_code == 202, r.text
+
+
+async def _last_out(api: httpx.AsyncClient, person: str, after: int) -> list[str]:
+    """The assistant's messages in ``person``'s DM after sequence number ``after``."""
+    for _ in range(250):
+        chat = (await api.get(f"/v1/chats/dm/{person}?after={after}", headers=OP)).json()
+        out = [str(m["text"]) for m in chat if m["direction"] == "out"]
+        if out:
+            return out
+        await asyncio.sleep(0.02)
+    return []
+
+
+async def _seq(api: httpx.AsyncClient, person: str) -> int:
+    chat = (await api.get(f"/v1/chats/dm/{person}", headers=OP)).json()
+    return max((int(m["seq"]) for m in chat), default=0)
+
+
+async def test_late_replies_and_chatter_are_acknowledged_not_executed(tmp_path: Path) -> None:
+    async with running_service(tmp_path / "data") as api:
+        r = await api.post(
+            "/v1/instructions",
+            json={"requester": "lee", "text": "Please bring me a stapler."},
+            headers=AS_LEE,
+        )
+        iid = r.json()["id"]
+        ended = await _until_ended(api, iid)
+        assert ended["status"] == "done"
+        wang = (await api.get("/v1/chats/dm/wang", headers=OP)).json()
+        [question] = [m["question_id"] for m in wang if m["question_id"]]
+
+        # Wang, contacted by the ended instruction, writes back late.
+        seq = await _seq(api, "wang")
+        await _dm(api, "wang", "I came to the robot, but: I don't have a stapler")
+        [ack] = await _last_out(api, "wang", seq)
+        assert "already ended" in ack and "ins-" not in ack
+        # A reply to the ended instruction's question.
+        seq = await _seq(api, "wang")
+        await _dm(api, "wang", "Yes, I have a stapler.", in_reply_to=question)
+        [ack] = await _last_out(api, "wang", seq)
+        assert "already ended" in ack
+        # Someone the assistant never contacted, asking for nothing.
+        seq = await _seq(api, "zhang")
+        await _dm(api, "zhang", "ok thanks")
+        [ack] = await _last_out(api, "zhang", seq)
+        assert "did not find a request" in ack
+        await asyncio.sleep(0.3)  # anything they would have started has started by now
+        assert await _ids(api) == [iid]
+
+        # Requests still start instructions, also from the colleague contacted before.
+        await _dm(api, "wang", "Please bring me a coffee.")
+        await _dm(api, "zhang", "Bring me a stapler")
+        for _ in range(250):
+            if len(await _ids(api)) == 3:
+                break
+            await asyncio.sleep(0.02)
+        started = (await api.get("/v1/instructions", headers=OP)).json()["items"]
+        assert sorted((i["requester"], i["text"]) for i in started[:2]) == [
+            ("wang", "Please bring me a coffee."),
+            ("zhang", "Bring me a stapler"),
+        ]
