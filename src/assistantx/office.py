@@ -54,6 +54,9 @@ class ItemType(_Model):
     name: str
     synonyms: tuple[str, ...] = ()
     kind: ItemKind = "belonging"
+    purposes: tuple[str, ...] = Field(
+        default=(), description="verbs it is for: 'cut' (scissors), 'write' (pen)"
+    )
 
     @property
     def physical(self) -> bool:

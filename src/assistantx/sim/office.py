@@ -164,6 +164,7 @@ class SimOffice:
         self.codes: list[HeldCode] = []
         self.told: set[tuple[str | None, str]] = set()  # (instruction id, person)
         self.ended: set[str] = set()  # instructions whose codes and replies are forgotten
+        self.requesters: dict[str, str] = {}  # instruction id → who asked for it
         self._visits: set[asyncio.Task[None]] = set()
 
     def timestamp(self) -> datetime:
@@ -172,6 +173,7 @@ class SimOffice:
     def register_instruction(self, instruction_id: str, requester: str) -> None:
         """The requester asked for it, so they know what the robot comes for."""
         self.told.add((instruction_id, requester))
+        self.requesters[instruction_id] = requester
 
     def end_instruction(self, instruction_id: str) -> None:
         """The instruction ended: people drop its codes and forget its questions, so nothing
@@ -199,7 +201,10 @@ class SimOffice:
             for person in members:
                 self._receive(now, person, message)
             if message.question_id:
-                replies = group_replies(self.world, list(members), message.text)
+                # the requester does not volunteer to help with their own request
+                asker = self.requesters.get(message.instruction_id or "")
+                helpers = [p for p in members if p != asker]
+                replies = group_replies(self.world, helpers, message.text)
                 for n, reply in enumerate(replies):
                     self._schedule_reply(reply, message, n)
             return

@@ -34,7 +34,6 @@ CUES: dict[str, frozenset[str]] = {
             "copied",
             "duplicate",
             "xerox",
-            "scan",
         }
     ),
     "sign": frozenset({"sign", "signs", "signed", "signature", "signing", "countersign"}),
@@ -118,6 +117,14 @@ _ENGLISH_NAME_WORDS = frozenset(
     drew faith gene guy jack june ken lee""".split()
 ) - {"lee"}
 
+# Words that open a verb's object: the word before one of them is in a verb's place.
+_VERB_OBJECT_STARTS = frozenset("my the a an your our his her their this these those some".split())
+
+_SUBJECT_PRONOUNS = frozenset("you u i we he she they it ya".split())
+_MONTHS = frozenset("may june april august".split())
+_MONTH_PREPOSITIONS = frozenset("in by until till since of early late mid end next last".split())
+_POLITE = frozenset("please pls plz kindly".split())
+
 # How close a misspelt name must be to a person's name to count as possibly meaning them.
 _NAME_TYPO_CUTOFF = 0.8
 
@@ -195,20 +202,29 @@ class Lexicon:
     # -- tokens --------------------------------------------------------------------------
     def tokens(self, text: str) -> list[Token]:
         out: list[Token] = []
-        for m in _TOKEN.finditer(text.replace("’", "'")):
-            raw = m.group(0)
+        raws = [m.group(0) for m in _TOKEN.finditer(text.replace("’", "'"))]
+        for n, raw in enumerate(raws):
             lower = raw.lower()
             possessive = lower.endswith("'s") or lower.endswith("s'")
             word = re.sub(r"'s$|'$", "", lower).replace("'", "")
             if not possessive and word.endswith("s'"):
                 word = word[:-1]
-            out.append(Token(raw, self._correct(word), possessive, word))
+            # a word right before a determiner is a verb: "printe my file" is print, not printer
+            verb_slot = n + 1 < len(raws) and raws[n + 1].lower() in _VERB_OBJECT_STARTS
+            out.append(Token(raw, self._correct(word, verb_slot=verb_slot), possessive, word))
         return out
 
-    def _correct(self, word: str) -> str:
-        """Fix a small typo in an office word or a cue; leave English and numbers alone."""
+    def _correct(self, word: str, *, verb_slot: bool = False) -> str:
+        """Fix a small typo in an office word or a cue; leave English and numbers alone.
+
+        In a verb's place the task verbs are tried first, so a misspelt verb is never turned
+        into a noun that is closer by letters (a typo keeps its part of speech)."""
         if len(word) < 4 or word.isdigit() or word in COMMON or self._known(word):
             return word
+        if verb_slot:
+            verbs = difflib.get_close_matches(word, sorted(CUE_WORDS), n=1, cutoff=0.8)
+            if verbs:
+                return verbs[0]
         for n in range(len(word) - 1):  # one swapped pair of letters: "zhnag", "pirnt"
             swapped = word[:n] + word[n + 1] + word[n] + word[n + 2 :]
             if swapped in self._vocabulary_set:
@@ -298,8 +314,19 @@ class Lexicon:
         """An English-looking single name word counts only when capitalized."""
         if len(idx) != 1:
             return True
-        t = tokens[idx[0]]
+        i = idx[0]
+        t = tokens[i]
         if t.word in _ENGLISH_NAME_WORDS or t.word in COMMON:
+            if t.possessive:
+                return True  # "May's stapler"
+            nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+            prev = tokens[i - 1].word if i > 0 else ""
+            if nxt in _SUBJECT_PRONOUNS:
+                return False  # "Will you ...", "May I ...": a modal verb
+            if prev in _MONTH_PREPOSITIONS and t.word in _MONTHS:
+                return False  # "in May"
+            if (i == 0 or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS:
+                return False  # "Mark my form as urgent": a verb in the verb's place
             return t.text[:1].isupper()
         return True
 

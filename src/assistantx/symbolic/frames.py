@@ -21,15 +21,14 @@ for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lex
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
-
-from pydantic import BaseModel, ConfigDict, Field
 
 from assistantx.office import Office
 from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token
 from assistantx.symbolic._objects import modifiers, verb_uses
+from assistantx.symbolic.screen import RequestScreen
+from assistantx.task_schema import Evidence, Task, TaskFrame, TaskKind
 
-TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
+__all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
 # Product types named by the task contract: a printout of a file, a copy of a document.
 PRINTOUT, COPY, SEAL = "printout", "copy", "seal"
@@ -83,40 +82,6 @@ _FILE_KINDS = frozenset({"print", "send_file"})
 _SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
 
 
-class Task(BaseModel):
-    """One thing to get done."""
-
-    model_config = ConfigDict(frozen=True)
-
-    kind: TaskKind
-    item: str | None = Field(default=None, description="item type id (a product for produce)")
-    owner: str | None = Field(default=None, description="whose item; None = anyone's")
-    recipient: str = Field(description="who ends up with the result")
-    actor: str | None = Field(default=None, description="who must do it (signer, named helper)")
-
-    def item_id(self) -> str | None:
-        """The concrete item, when the frame fixes it (``stapler:zhang``, ``coffee:lee``)."""
-        if self.item is None:
-            return None
-        if self.kind == "produce":
-            return f"{self.item}:{self.recipient}"
-        if self.kind == "print":
-            return f"file:{self.owner}"
-        return f"{self.item}:{self.owner}" if self.owner else None
-
-
-class TaskFrame(BaseModel):
-    """What the requester wants, or the question to ask them first."""
-
-    requester: str
-    tasks: list[Task] = Field(default_factory=list)
-    question: str | None = Field(default=None, description="set when the request is unclear")
-
-    @property
-    def understood(self) -> bool:
-        return self.question is None and bool(self.tasks)
-
-
 class _UnresolvedPronoun(Exception):
     """A possessive pronoun with nobody it could refer to ("bring me his stapler")."""
 
@@ -160,10 +125,43 @@ class InstructionParser:
     def __init__(self, office: Office) -> None:
         self.office = office
         self.lex = Lexicon.from_office(office)
+        self.screen = RequestScreen(office, self.lex)
         self._kinds = {t.id: t.kind for t in office.item_types}
 
     # -- public --------------------------------------------------------------------------
     def parse(self, text: str, requester: str) -> TaskFrame:
+        """The frame of a request: screened first (withdrawn, negated, destructive, facts,
+        unsupported services; ``screen``), then the tasks read from what is left."""
+        screened = self.screen.screen(text, requester)
+        if screened.decline is not None:
+            return TaskFrame(
+                requester=requester,
+                decline=screened.decline,
+                decline_outcome=screened.outcome,
+                hints=screened.hints,
+                evidence=screened.evidence,
+            )
+        frame = self._parse(screened.text, requester)
+        evidence = [*screened.evidence, *(self._evidence(t) for t in frame.tasks)]
+        return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+
+    def _evidence(self, task: Task) -> Evidence:
+        """A task in words: what it does, with whose item, for whom."""
+        name = self._item_name(task.item) if task.item else "item"
+        whose = (
+            f"{self.office.person(task.owner).name}'s {name}"
+            if task.owner
+            else f"anyone's {name}"
+            if task.kind == "transfer"
+            else name
+        )
+        parts = [f"{task.kind.replace('_', ' ')}: {whose}"]
+        if task.actor:
+            parts.append(f"by {self.office.person(task.actor).name}")
+        parts.append(f"for {self.office.person(task.recipient).name}")
+        return Evidence(words=task.kind, meaning=" ".join(parts))
+
+    def _parse(self, text: str, requester: str) -> TaskFrame:
         tokens = self.lex.tokens(text)
         mentions = verb_uses(tokens, self._owned_cue_items(self.lex.scan(tokens), tokens))
         mentions = _settled_by_later_sentence(mentions, _gaps(text, tokens))
@@ -648,11 +646,18 @@ def _prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> 
 
 def _gaps(text: str, tokens: list[Token]) -> list[str]:
     """The characters between each token and the one before it (punctuation)."""
+    from assistantx.memory.names import TITLES
+
     gaps: list[str] = []
     pos = 0
+    prev_title = False
     flat = text.replace("’", "'")
     for t in tokens:
         at = flat.find(t.text, pos)
-        gaps.append(flat[pos:at] if at >= 0 else "")
+        gap = flat[pos:at] if at >= 0 else ""
+        if gaps and prev_title:  # "Dr. Zhang": the title's full stop ends no sentence
+            gap = gap.replace(".", "", 1)
+        gaps.append(gap)
         pos = at + len(t.text) if at >= 0 else pos
+        prev_title = t.word in TITLES
     return gaps

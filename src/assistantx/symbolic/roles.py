@@ -194,7 +194,9 @@ class Roles:
             helpers = [
                 t.person
                 for t in ev.answers(group_q)
-                if ev.stance_of(group_q, t.person) == "yes" and t.person not in helpers
+                if ev.stance_of(group_q, t.person) == "yes"
+                and t.person not in helpers
+                and t.person != role.requester  # never the helper of their own request
             ]
         for person in [*people, *helpers]:
             why = self._exclusion(role, person, ltm, ev, now)
@@ -283,6 +285,10 @@ class Roles:
             return None
         if _fresh_availability(ltm, person, now) == "unavailable":
             return "known to be away"
+        if person in ev.said_away and role.fixed is None:  # a named person is still asked
+            return f"the requester said {ev.said_away[person]!r}"
+        if role.item_type and (person, role.item_type) in ev.said_unusable:
+            return f"their {role.item_type} is {ev.said_unusable[(person, role.item_type)]}"
         if (
             role.asks_ownership
             and role.item_type
