@@ -20,12 +20,23 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from assistantx.office import Office
+
 # The shapes of a task. ``transfer``: a physical item moves from its owner (or a keeper) to
 # the recipient; ``produce``: a facility makes a product for the recipient; ``print``/``copy``:
 # a facility turns the requester's file/document into a product; ``sign``/``seal``: a person
 # acts on the requester's document; ``heat``: a facility works on a kept item; ``send_file``:
 # an electronic file is forwarded.
 TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
+# The tool of a ``seal`` task: anyone who owns an item of this type can stamp a document.
+SEAL_TOOL = "seal"
+# The task kind each shape of office operation takes (office.Operation.shape).
+SHAPE_KIND: dict[str, TaskKind] = {
+    "make": "produce",
+    "render": "print",
+    "transform": "copy",
+    "treat": "heat",
+}
 HintKind = Literal["availability", "location", "condition"]
 DeclineOutcome = Literal["done", "unachievable"]
 
@@ -40,6 +51,9 @@ class Task(BaseModel):
     owner: str | None = Field(default=None, description="whose item; None = anyone's")
     recipient: str = Field(description="who ends up with the result")
     actor: str | None = Field(default=None, description="who must do it (signer, named helper)")
+    operation: str | None = Field(
+        default=None, description="the office's operation (print, copy, heat, produce kinds)"
+    )
 
     def item_id(self) -> str | None:
         """The concrete item, when the frame fixes it (``stapler:zhang``, ``coffee:lee``)."""
@@ -101,3 +115,22 @@ class TaskFrame(BaseModel):
     def explain(self) -> str:
         """The reading in words: what each phrase was taken to mean."""
         return "; ".join(f"{e.words!r} → {e.meaning}" for e in self.evidence)
+
+
+_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+
+
+def operation_of(office: Office, task: Task) -> str | None:
+    """The office operation a task needs: the one the frame names, the one that makes its
+    product, or the office's one operation of the task's shape; None for person-to-person
+    tasks (transfer, sign, seal, send_file)."""
+    if task.operation is not None:
+        return task.operation
+    if task.kind == "produce":
+        made = office.making(task.item or "")
+        return made.id if made else None
+    shape = _KIND_SHAPE.get(task.kind)
+    if shape is None:
+        return None
+    found = [o for o in office.with_shape(shape)]  # type: ignore[arg-type]
+    return found[0].id if found else None

@@ -18,40 +18,16 @@ from typing import Literal
 
 from assistantx.memory.names import TITLES, normalize
 from assistantx.office import Office
+from assistantx.task_schema import SHAPE_KIND
 
 MentionKind = Literal["person", "item", "facility", "self", "pronoun", "cue", "word"]
 
-# Task cues: the English verbs (and nouns) that say what to do. Not office-specific.
+# Task cues: the English verbs (and nouns) that say what to do, keyed by task kind. Not
+# office-specific: the verbs of the office's own operations are added per office
+# (``Lexicon.from_office``), under the task kind of their shape.
 CUES: dict[str, frozenset[str]] = {
-    "print": frozenset({"print", "prints", "printed", "printing", "printout", "reprint"}),
-    "copy": frozenset(
-        {
-            "copy",
-            "copies",
-            "photocopy",
-            "photocopies",
-            "photocopied",
-            "copied",
-            "duplicate",
-            "xerox",
-        }
-    ),
     "sign": frozenset({"sign", "signs", "signed", "signature", "signing", "countersign"}),
     "seal": frozenset({"stamp", "stamped", "stamping", "seal", "sealed", "sealing", "chop"}),
-    "heat": frozenset(
-        {
-            "heat",
-            "heated",
-            "reheat",
-            "reheated",
-            "warm",
-            "warmed",
-            "microwave",
-            "microwaved",
-            "nuke",
-            "hot",
-        }
-    ),
     "send": frozenset(
         {"send", "sent", "forward", "forwarded", "email", "emailed", "mail", "share", "shared"}
     ),
@@ -167,12 +143,23 @@ class Lexicon:
     items: dict[str, str] = field(default_factory=dict)  # phrase → item type id
     facilities: dict[str, str] = field(default_factory=dict)  # phrase → facility id
     max_words: int = 1
+    cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
+    cue_words: frozenset[str] = frozenset()
     vocabulary: list[str] = field(default_factory=list)
     _vocabulary_set: frozenset[str] = frozenset()
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
         lex = cls(office)
+        cues = {k: set(v) for k, v in CUES.items()}
+        for op in office.operations:
+            kind = SHAPE_KIND.get(op.shape(office))
+            if kind is not None:
+                cues.setdefault(kind, set()).update(
+                    form for verb in op.verbs for form in _inflections(normalize(verb))
+                )
+        lex.cues = {k: frozenset(v) for k, v in cues.items()}
+        lex.cue_words = frozenset(w for v in cues.values() for w in v)
         for p in office.people:
             for name in (p.id, p.name, *p.aliases):
                 key = normalize(name)
@@ -194,7 +181,7 @@ class Lexicon:
                     lex.facilities.setdefault(key, f.id)
         phrases = [*lex.people, *lex.items, *lex.facilities]
         lex.max_words = max(len(p.split()) for p in phrases)
-        words = {w for p in phrases for w in p.split()} | set(lex.name_words) | CUE_WORDS
+        words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
         lex.vocabulary = sorted(w for w in words if len(w) >= 4)
         lex._vocabulary_set = frozenset(lex.vocabulary)
         return lex
@@ -222,7 +209,7 @@ class Lexicon:
         if len(word) < 4 or word.isdigit() or word in COMMON or self._known(word):
             return word
         if verb_slot:
-            verbs = difflib.get_close_matches(word, sorted(CUE_WORDS), n=1, cutoff=0.8)
+            verbs = difflib.get_close_matches(word, sorted(self.cue_words), n=1, cutoff=0.8)
             if verbs:
                 return verbs[0]
         for n in range(len(word) - 1):  # one swapped pair of letters: "zhnag", "pirnt"
@@ -236,7 +223,7 @@ class Lexicon:
 
     def _known(self, word: str) -> bool:
         return (
-            word in CUE_WORDS
+            word in self.cue_words
             or word in self.name_words
             or word in self.people
             or word in self.items
@@ -279,7 +266,7 @@ class Lexicon:
                 return Mention("person", start, end, ids, poss, text), n
             if phrase in self.facilities:
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
-            if phrase in self.items and not (n == 1 and phrase in CUE_WORDS):
+            if phrase in self.items and not (n == 1 and phrase in self.cue_words):
                 return Mention("item", start, end, (self.items[phrase],), poss, text), n
         return None
 
@@ -293,8 +280,8 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
-        if w in CUE_WORDS:
-            kinds = tuple(k for k, words in CUES.items() if w in words)
+        if w in self.cue_words:
+            kinds = tuple(k for k, words in self.cues.items() if w in words)
             return Mention("cue", i, i + 1, kinds, t.possessive, t.text)
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
@@ -329,6 +316,20 @@ class Lexicon:
                 return False  # "Mark my form as urgent": a verb in the verb's place
             return t.text[:1].isupper()
         return True
+
+
+def _inflections(verb: str) -> set[str]:
+    """'print' → print, prints, printed, printing; 'copy' → copies, copied; 'heat' → heated."""
+    if not verb or " " in verb:
+        return {verb} if verb else set()
+    forms = {verb, _plural(verb)}
+    if verb.endswith("e"):
+        forms |= {verb + "d", verb[:-1] + "ing"}
+    elif verb.endswith("y") and not verb.endswith(("ay", "ey", "oy")):
+        forms |= {verb[:-1] + "ied", verb + "ing"}
+    else:
+        forms |= {verb + "ed", verb + "ing"}
+    return forms
 
 
 def _plural(phrase: str) -> str:

@@ -22,16 +22,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from assistantx.office import Office
+from assistantx.office import Office, OperationShape
 from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token
 from assistantx.symbolic._objects import modifiers, verb_uses
 from assistantx.symbolic.screen import RequestScreen
+from assistantx.task_schema import SEAL_TOOL as SEAL
 from assistantx.task_schema import Evidence, Task, TaskFrame, TaskKind
 
 __all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
-# Product types named by the task contract: a printout of a file, a copy of a document.
-PRINTOUT, COPY, SEAL = "printout", "copy", "seal"
 
 _BREAK_WORDS = frozenset({"then", "also", "plus", "afterwards", "additionally"})
 _JOIN_WORDS = frozenset({"and", "but"})
@@ -77,7 +76,6 @@ _DATIVE_VERBS = frozenset(
 # "Wang's desk": a person's place, where the robot meets them.
 _PLACE_WORDS = frozenset({"desk", "office", "place", "seat", "workstation", "cubicle", "table"})
 _OBJECT_PRONOUNS = frozenset({"him", "her", "them"})
-_SUPPORTED_OPERATIONS = frozenset({"print", "copy", "coffee", "water", "heat", "vend"})
 _FILE_KINDS = frozenset({"print", "send_file"})
 _SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
 
@@ -127,6 +125,10 @@ class InstructionParser:
         self.lex = Lexicon.from_office(office)
         self.screen = RequestScreen(office, self.lex)
         self._kinds = {t.id: t.kind for t in office.item_types}
+        # the products that name their task: "a printout" is a print, "a copy" a copy
+        self._printout = _product(office, "render")
+        self._copy = _product(office, "transform")
+        self._sourced = frozenset(p for p in (self._printout, self._copy) if p)
 
     # -- public --------------------------------------------------------------------------
     def parse(self, text: str, requester: str) -> TaskFrame:
@@ -246,7 +248,7 @@ class InstructionParser:
                 continue
             clauses[-1].mentions.append(m)
         for c in clauses:
-            c.modifiers = modifiers(tokens, c.mentions)
+            c.modifiers = modifiers(tokens, c.mentions, self._sourced)
             c.cues = {
                 k
                 for m in c.mentions
@@ -372,14 +374,18 @@ class InstructionParser:
         items = clause.objects()
         cues = set(clause.cues)
         for m in items:  # products of the printer are cues: "a printout", "a copy"
-            if m.id == PRINTOUT:
+            if m.id == self._printout:
                 cues.add("print")
-            if m.id == COPY:
+            if m.id == self._copy:
                 cues.add("copy")
         facilities = [self.office.facility(m.id) for m in clause.mentions if m.kind == "facility"]
-        if any("heat" in f.operations for f in facilities):
+        if any(
+            self.office.operation(op).shape(self.office) == "treat"
+            for f in facilities
+            for op in f.operations
+        ):
             cues.add("heat")
-        items = [m for m in items if m.id not in (PRINTOUT, COPY)]
+        items = [m for m in items if m.id not in (self._printout, self._copy)]
         files = [m for m in items if self._kinds[m.id] == "electronic"]
         personal = [m for m in items if self._kinds[m.id] == "personal"]
         products = [m for m in items if self._kinds[m.id] == "product"]
@@ -460,7 +466,7 @@ class InstructionParser:
                 p
                 for f in facilities
                 for p in f.products[:1]
-                if p not in (PRINTOUT, COPY) and ("give" in cues or "make" in cues)
+                if p not in (self._printout, self._copy) and ("give" in cues or "make" in cues)
             ]
             if made:
                 return [Task(kind="produce", item=p, recipient=recipient) for p in made]
@@ -504,8 +510,8 @@ class InstructionParser:
 
     def _unsupported_facility(self, facility_id: str) -> bool:
         """A facility whose operations are none the assistant can run (a meeting room)."""
-        ops = set(self.office.facility(facility_id).operations)
-        return bool(ops) and not ops & _SUPPORTED_OPERATIONS
+        ops = self.office.facility(facility_id).operations
+        return bool(ops) and not any(self.office.runnable(op) for op in ops)
 
     # -- checks --------------------------------------------------------------------------
     def _problems(self, tokens: list[Token], mentions: list[Mention]) -> list[str]:
@@ -558,7 +564,11 @@ class InstructionParser:
             return True
         if task.kind in _FILE_KINDS and self._kinds[type_id] in ("electronic", "personal"):
             return True  # "print my report", "email my contract"
-        return (task.kind, type_id) in {("print", PRINTOUT), ("copy", COPY), ("seal", SEAL)}
+        return (task.kind, type_id) in {
+            ("print", self._printout),
+            ("copy", self._copy),
+            ("seal", SEAL),
+        }
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
@@ -588,6 +598,10 @@ class InstructionParser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def _product(office: Office, shape: OperationShape) -> str | None:
+    return next((o.product for o in office.with_shape(shape)), None)
 
 
 def _settled_by_later_sentence(mentions: list[Mention], gaps: list[str]) -> list[Mention]:

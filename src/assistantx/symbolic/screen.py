@@ -38,7 +38,7 @@ from typing import Literal
 import yaml
 
 from assistantx.office import Office
-from assistantx.symbolic._lexicon import CUE_WORDS, Lexicon
+from assistantx.symbolic._lexicon import Lexicon
 from assistantx.task_schema import DeclineOutcome, Evidence, Hint
 
 ENGLISH = Path(__file__).with_name("english.yaml")
@@ -174,8 +174,14 @@ class RequestScreen:
         self.en = english()
         self._office_words = frozenset(
             w
-            for phrase in (*lex.items, *lex.facilities, *lex.people, *lex.name_words)
-            for w in phrase.split()
+            for phrase in (
+                *lex.items,
+                *lex.facilities,
+                *lex.people,
+                *lex.name_words,
+                *(o.name for o in office.operations),
+            )
+            for w in _words(phrase)
         )
 
     # -- the table -----------------------------------------------------------------------
@@ -317,8 +323,8 @@ class RequestScreen:
             if at < len(words) and words[at] in self.en.service_verbs:
                 verb = words[at]
                 nxt = words[at + 1] if at + 1 < len(words) else ""
-                ours = verb in CUE_WORDS or verb in self._office_words
-                if not ours or (verb not in CUE_WORDS and nxt in _DETERMINERS):
+                ours = verb in self.lex.cue_words or verb in self._office_words
+                if not ours or (verb not in self.lex.cue_words and nxt in _DETERMINERS):
                     return self._decline_service(piece, verb)
             cue = next((n for n, w in enumerate(words) if self._request_verb(words, n)), None)
             if cue is None:
@@ -396,7 +402,7 @@ class RequestScreen:
     # -- helpers -------------------------------------------------------------------------
     def _request_verb(self, words: list[str], at: int) -> bool:
         w = words[at]
-        return w in CUE_WORDS or (
+        return w in self.lex.cue_words or (
             w in self.en.service_verbs and (at + 1 >= len(words) or words[at + 1] in _DETERMINERS)
         )
 
