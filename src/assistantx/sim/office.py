@@ -304,15 +304,15 @@ class SimOffice:
         if isinstance(self.locker, LocalLocker):
             # In-process lock: the whole visit happens at this instant of the clock.
             decision = self.locker.controller.scan(code.payload).decision
-            self._after_scan(code, decision, now)
+            self._after_scan(code, decision, now, place)
             if decision.kind == "code_accepted":
                 self.locker.controller.close()
             return
-        task = asyncio.get_running_loop().create_task(self._visit(code, now))
+        task = asyncio.get_running_loop().create_task(self._visit(code, now, place))
         self._visits.add(task)
         task.add_done_callback(self._visits.discard)
 
-    async def _visit(self, code: HeldCode, now: float) -> None:
+    async def _visit(self, code: HeldCode, now: float, place: str) -> None:
         """A hand-over at a networked locker: scan, swap the item, shut the door."""
         try:
             decision = await self.desk.simulate_scan(code.payload)
@@ -320,14 +320,14 @@ class SimOffice:
             logger.warning("simulated scan by %s failed: %s", code.person, exc)
             code.done = False  # they try again the next time the robot is here
             return
-        self._after_scan(code, decision, now)
+        self._after_scan(code, decision, now, place)
         if decision.kind == "code_accepted":
             try:
                 await self.desk.simulate_close()
             except LockError as exc:
                 logger.warning("simulated door close by %s failed: %s", code.person, exc)
 
-    def _after_scan(self, code: HeldCode, decision: LockEvent, now: float) -> None:
+    def _after_scan(self, code: HeldCode, decision: LockEvent, now: float, place: str) -> None:
         if decision.kind != "code_accepted":
             reason = decision.reason or "rejected"
             self.messenger.post(
@@ -336,7 +336,7 @@ class SimOffice:
                 f"The locker rejected my code ({reason}).",
             )
             return
-        do_handover(self.world, now, code.person, code.purpose, code.item)
+        do_handover(self.world, now, code.person, code.purpose, code.item, place)
 
     def check(self, milestones: Iterable[dict[str, object]]) -> list[bool]:
         return [self.world.check(dict(m)) for m in milestones]
