@@ -169,6 +169,18 @@ class Office(_Model):
         """The operation whose product is ``product`` (a coffee → the coffee operation)."""
         return next((o for o in self.operations if o.product == product), None)
 
+    def made_from(self, input_type: str) -> str | None:
+        """The product an operation makes from an item of ``input_type`` while keeping the
+        original (a copy of a document): the item that joins the original in the locker."""
+        return next(
+            (
+                o.product
+                for o in self.operations
+                if o.input == input_type and o.product and o.shape(self) == "transform"
+            ),
+            None,
+        )
+
     def with_shape(self, shape: OperationShape) -> list[Operation]:
         return [o for o in self.operations if o.shape(self) == shape]
 

@@ -20,7 +20,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from assistantx.office import Office
+from assistantx.office import Office, OperationShape
 
 # The shapes of a task. ``transfer``: a physical item moves from its owner (or a keeper) to
 # the recipient; ``produce``: a facility makes a product for the recipient; ``print``/``copy``:
@@ -31,7 +31,7 @@ TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat
 # The tool of a ``seal`` task: anyone who owns an item of this type can stamp a document.
 SEAL_TOOL = "seal"
 # The task kind each shape of office operation takes (office.Operation.shape).
-SHAPE_KIND: dict[str, TaskKind] = {
+SHAPE_KIND: dict[OperationShape, TaskKind] = {
     "make": "produce",
     "render": "print",
     "transform": "copy",
@@ -132,5 +132,5 @@ def operation_of(office: Office, task: Task) -> str | None:
     shape = _KIND_SHAPE.get(task.kind)
     if shape is None:
         return None
-    found = [o for o in office.with_shape(shape)]  # type: ignore[arg-type]
+    found = office.with_shape(shape)
     return found[0].id if found else None

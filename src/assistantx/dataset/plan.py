@@ -143,6 +143,21 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
+            keeper = office.keeper(part.owner, item_type) if part.owner else None
+            if keeper is not None:  # kept in a cupboard: its guard takes it out
+                role = Role(
+                    key=f"guard:{keeper.id}",
+                    kind="guard",
+                    question=f"Could you take {part.owner}'s {name} out of the {keeper.name}?",
+                    group_question=f"Could anyone take the {name} out of the {keeper.name}?",
+                    facility=keeper.id,
+                )
+                item = f"{item_type}:{part.owner}"
+                plan.add_goal({"holds": [a, item]})
+                plan.add_role(role)
+                plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
+                plan.deliveries.append((REQUESTER, Code(REQUESTER, item, "collect")))
+                return
             if part.owner is not None:
                 role = _named(part.owner, f"Could you lend {who} your {name}?")
                 item = f"{item_type}:{part.owner}"
@@ -260,27 +275,31 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             source = op.input or ""
             kept = f"{source}:{a}"
             keeper = office.keeper(a, source)
-            assert keeper is not None  # check_base made sure
             thing = office.item_type(source).name
             place_name = office.facility(facility_for(office, op.id)).name
-            keeper_role = Role(
-                key=f"guard:{keeper.id}",
-                kind="guard",
-                question=f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?",
-                group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
-                facility=keeper.id,
-            )
             op_role = _guard(
                 office,
                 op.id,
                 f"Could you {op.name} {who}'s {thing} at the {place_name}?",
                 f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
             )
-            plan.add_role(keeper_role)
+            if keeper is not None:  # kept at a facility (a lunch in the fridge)
+                keeper_role = Role(
+                    key=f"guard:{keeper.id}",
+                    kind="guard",
+                    question=(
+                        f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?"
+                    ),
+                    group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
+                    facility=keeper.id,
+                )
+                plan.add_role(keeper_role)
+                plan.visits.append(
+                    Visit(keeper.id, keeper_role.key, (Code(keeper_role.key, kept, "deposit"),))
+                )
+            else:  # the requester has it
+                plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, kept, "deposit"),)))
             plan.add_role(op_role)
-            plan.visits.append(
-                Visit(keeper.id, keeper_role.key, (Code(keeper_role.key, kept, "deposit"),))
-            )
             plan.visits.append(
                 Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
             )

@@ -193,8 +193,6 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             op = part_operation(office, part)
             if op.input is not None and not _owns(office, a, op.input):
                 raise ValueError(f"the requester has no {op.input}")
-            if part.kind == "heat" and office.keeper(a, op.input or "") is None:
-                raise ValueError(f"the requester's {op.input} is not kept at a facility")
             facility = office.offering(op.id)[0]
             if a in facility.guards:
                 raise ValueError(f"the requester guards the {facility.id} already")

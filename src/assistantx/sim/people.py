@@ -83,6 +83,13 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     belongings = [t for t in types if world.office.item_type(t).kind == "belonging"]
     if belongings:
         t = belongings[0]
+        kept = [
+            i
+            for i, where in world.holder.items()
+            if i.startswith(f"{t}:") and where in world.places_of(person) and where != person
+        ]
+        if kept and not world.owns(person, t):  # kept in a cupboard they run
+            return Reply(person, f"Yes, I can take the {_item_name(world, t)} out for the robot.")
         if world.owns(person, t):
             return Reply(person, f"Yes, I have a {_item_name(world, t)}. Happy to lend it.")
         return Reply(person, f"No, I don't have a {_item_name(world, t)}.")
@@ -105,11 +112,20 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
             continue
         if requests and can_do(world, person, requests[0]):
             replies.append(Reply(person, f"I can help with that ({requests[0]})."))
-        elif not requests and types and world.owns(person, types[0]):
+        elif not requests and types and _can_bring(world, person, types[0]):
             replies.append(
                 Reply(person, f"I have a {_item_name(world, types[0])}, you can borrow it.")
             )
     return replies
+
+
+def _can_bring(world: World, person: str, type_id: str) -> bool:
+    """Whether ``person`` has their item of this type at hand (on them, or kept where they
+    can get at it); an item locked in a cupboard someone else runs is not at hand."""
+    if not world.owns(person, type_id):
+        return False
+    where = world.holder.get(f"{type_id}:{person}", person)
+    return where == person or where in world.places_of(person)
 
 
 def handover_problem(world: World, person: str, purpose: str, item: str, place: str) -> str | None:

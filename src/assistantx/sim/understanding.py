@@ -59,12 +59,20 @@ def mentioned_item_types(office: Office, text: str) -> list[str]:
 
 
 def mentioned_requests(office: Office, text: str) -> list[str]:
+    """Request kinds the text mentions. The office's own words are read first and used up, so
+    an English word inside one ("stamp" in "stamped envelope") does not count again."""
     haystack = _words(text)
-    return [
-        kind
-        for kind, words in request_words(office).items()
-        if any(re.search(rf" {w}\w* ", haystack) for w in words)
-    ]
+    found: set[str] = set()
+    words = request_words(office)
+    for kind in (k for k in words if k not in PERSON_REQUEST_WORDS):
+        for w in words[kind]:
+            if re.search(rf" {re.escape(w)}\w* ", haystack):
+                found.add(kind)
+                haystack = re.sub(rf" {re.escape(w)}\w* ", " ", haystack)
+    for kind, kind_words in PERSON_REQUEST_WORDS.items():
+        if any(re.search(rf" {w}\w* ", haystack) for w in kind_words):
+            found.add(kind)
+    return [k for k in words if k in found]
 
 
 def is_question(text: str) -> bool:

@@ -156,7 +156,7 @@ class Lexicon:
             kind = SHAPE_KIND.get(op.shape(office))
             if kind is not None:
                 cues.setdefault(kind, set()).update(
-                    form for verb in op.verbs for form in _inflections(normalize(verb))
+                    form for verb in op.verbs for form in inflections(normalize(verb))
                 )
         lex.cues = {k: frozenset(v) for k, v in cues.items()}
         lex.cue_words = frozenset(w for v in cues.values() for w in v)
@@ -318,7 +318,7 @@ class Lexicon:
         return True
 
 
-def _inflections(verb: str) -> set[str]:
+def inflections(verb: str) -> set[str]:
     """'print' → print, prints, printed, printing; 'copy' → copies, copied; 'heat' → heated."""
     if not verb or " " in verb:
         return {verb} if verb else set()
@@ -327,9 +327,23 @@ def _inflections(verb: str) -> set[str]:
         forms |= {verb + "d", verb[:-1] + "ing"}
     elif verb.endswith("y") and not verb.endswith(("ay", "ey", "oy")):
         forms |= {verb[:-1] + "ied", verb + "ing"}
+    elif _doubles(verb):  # "scan" → scanned, scanning
+        forms |= {verb + verb[-1] + "ed", verb + verb[-1] + "ing"}
     else:
         forms |= {verb + "ed", verb + "ing"}
     return forms
+
+
+def _doubles(verb: str) -> bool:
+    """Short consonant-vowel-consonant verbs double their last letter (scan, ship, stop)."""
+    vowels = "aeiou"
+    return (
+        len(verb) >= 3
+        and verb[-1] not in vowels + "wxy"
+        and verb[-2] in vowels
+        and verb[-3] not in vowels
+        and sum(c in vowels for c in verb) == 1
+    )
 
 
 def _plural(phrase: str) -> str:

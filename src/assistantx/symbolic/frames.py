@@ -22,12 +22,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from assistantx.memory.names import normalize
 from assistantx.office import Office, OperationShape
-from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token
+from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token, inflections
 from assistantx.symbolic._objects import modifiers, verb_uses
 from assistantx.symbolic.screen import RequestScreen
 from assistantx.task_schema import SEAL_TOOL as SEAL
-from assistantx.task_schema import Evidence, Task, TaskFrame, TaskKind
+from assistantx.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
+
+_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 
 __all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
@@ -129,6 +132,15 @@ class InstructionParser:
         self._printout = _product(office, "render")
         self._copy = _product(office, "transform")
         self._sourced = frozenset(p for p in (self._printout, self._copy) if p)
+        self._op_words = {
+            op.id: {
+                form
+                for phrase in (*op.verbs, op.name)
+                for verb in normalize(phrase).split()[:1]
+                for form in inflections(verb)
+            }
+            for op in office.operations
+        }
 
     # -- public --------------------------------------------------------------------------
     def parse(self, text: str, requester: str) -> TaskFrame:
@@ -144,8 +156,29 @@ class InstructionParser:
                 evidence=screened.evidence,
             )
         frame = self._parse(screened.text, requester)
+        if frame.understood:
+            frame = self._with_operations(frame, screened.text)
         evidence = [*screened.evidence, *(self._evidence(t) for t in frame.tasks)]
         return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+
+    def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
+        """Name the operation where the office has several of a task's shape ("scan" or
+        "copy" a contract); ask which when the words do not say."""
+        words = {t.word for t in self.lex.tokens(text)}
+        tasks: list[Task] = []
+        for t in frame.tasks:
+            shape = _KIND_SHAPE.get(t.kind)
+            ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
+            if len(ops) > 1 and t.operation is None:
+                said = [op for op in ops if self._op_words[op.id] & words]
+                if len(said) != 1:
+                    names = " or ".join(op.name for op in ops)
+                    return TaskFrame(
+                        requester=frame.requester, question=f"Which do you mean: {names}?"
+                    )
+                t = t.model_copy(update={"operation": said[0].id})
+            tasks.append(t)
+        return frame.model_copy(update={"tasks": tasks})
 
     def _evidence(self, task: Task) -> Evidence:
         """A task in words: what it does, with whose item, for whom."""
@@ -373,6 +406,12 @@ class InstructionParser:
     ) -> list[Task]:
         items = clause.objects()
         cues = set(clause.cues)
+        if (
+            previous is not None
+            and not cues & {"print", "copy"}
+            and any(m.id == self._product_of(previous.kind) for m in items)
+        ):
+            return []  # "print my draft and take the printout to Sue": the same task, on
         for m in items:  # products of the printer are cues: "a printout", "a copy"
             if m.id == self._printout:
                 cues.add("print")
@@ -493,6 +532,9 @@ class InstructionParser:
                     Task(kind="transfer", item=m.id, owner=owner(m) or helper, recipient=to)
                 )
         return list(dict.fromkeys(tasks))
+
+    def _product_of(self, kind: str) -> str | None:
+        return {"print": self._printout, "copy": self._copy}.get(kind)
 
     def _fill(self, task: Task, clause: _Clause, roles: _Roles, requester: str) -> Task:
         """A clause with no task of its own completes the previous one."""

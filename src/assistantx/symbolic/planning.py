@@ -177,6 +177,7 @@ class Planner:
                     item_type=source_type,
                     item_owner=owner,
                     facility=self._facility_for(t),
+                    operation=op,
                 )
                 roles = [guard, recipient]
                 if owner != requester:
@@ -204,6 +205,7 @@ class Planner:
                     item_type=item,
                     item_owner=owner,
                     facility=self._facility_for(t),
+                    operation=op,
                 )
                 roles = [guard, source, recipient]
                 back: list[Phase]
@@ -246,6 +248,7 @@ class Planner:
                     requester,
                     item_type=item,
                     facility=self._facility_for(t),
+                    operation=op,
                     beneficiary=t.recipient,
                 )
                 roles = [guard, recipient]
@@ -262,6 +265,7 @@ class Planner:
                     item_type=item,
                     item_owner=owner,
                     facility=self._facility_for(t),
+                    operation=op,
                 )
                 roles = [source, heater, recipient]
                 phases = [
