@@ -37,6 +37,7 @@ from typing import Literal
 
 import yaml
 
+from assistantx.memory.names import normalize
 from assistantx.office import Office
 from assistantx.symbolic._lexicon import Lexicon
 from assistantx.task_schema import DeclineOutcome, Evidence, Hint
@@ -73,11 +74,17 @@ class English:
     service_verbs: frozenset[str]
     service_products: frozenset[str]
     modifier_prepositions: frozenset[str]
+    courtesy: frozenset[str]
+    own_item_lost: tuple[tuple[str, ...], ...]
 
 
 @functools.cache
 def english() -> English:
     raw = yaml.safe_load(ENGLISH.read_text(encoding="utf-8"))
+    for key, entries in raw.items():
+        for entry in entries:
+            if not isinstance(entry, str):  # YAML reads a bare off/on/no as a boolean
+                raise TypeError(f"{ENGLISH}: {key}: {entry!r} is not a string; quote it")
 
     def phrases(key: str) -> tuple[tuple[str, ...], ...]:
         # longest first, so "throw away" wins over "throw"
@@ -106,6 +113,8 @@ def english() -> English:
         service_verbs=words("service_verbs"),
         service_products=words("service_products"),
         modifier_prepositions=words("modifier_prepositions"),
+        courtesy=words("courtesy"),
+        own_item_lost=phrases("own_item_lost"),
     )
 
 
@@ -180,6 +189,7 @@ class RequestScreen:
                 *lex.people,
                 *lex.name_words,
                 *(o.name for o in office.operations),
+                *lex.cue_words,
             )
             for w in _words(phrase)
         )
@@ -208,7 +218,7 @@ class RequestScreen:
             return out
         dropped = [f.piece for f in findings if f.verdict in ("negated", "fact", "withdrawn")]
         left = _without(text, cut, dropped)
-        if not _has_words(left):
+        if not set(_words(left)) - self.en.courtesy:
             negated = [f for f in live if f.verdict == "negated"]
             if withdrawn and not negated:
                 out.decline = "OK, I've dropped that request. I did nothing."
@@ -242,6 +252,10 @@ class RequestScreen:
                     continue
                 if at and words[at - 1] not in self.en.lead_in:
                     continue  # "I can't find my stapler": not the request verb
+                if self._request_verb(words, at + len(neg) - 1):
+                    return Finding(
+                        "negated", piece, f"negated: {' '.join(neg)}"
+                    )  # "no longer need"
                 k = at + len(neg)
                 while k < len(words):  # "don't actually need", "do not ever print"
                     if self._request_verb(words, k):
@@ -276,6 +290,8 @@ class RequestScreen:
             if tokens[mentions[k].start].word not in self.en.fact_openers:
                 return None
             k += 1
+        if k < len(mentions) and mentions[k].kind == "self":
+            return self._own_item_fact(piece, requester)
         if k >= len(mentions) or mentions[k].kind != "person" or len(mentions[k].ids) != 1:
             return None
         subject = mentions[k]
@@ -316,6 +332,31 @@ class RequestScreen:
                 return Finding("fact", piece, f"a fact: {name} is here", hint)
         return None
 
+    def _own_item_fact(self, piece: Piece, requester: str) -> Finding | None:
+        """ "I can't find my stapler", "my stapler is broken": the requester's own item is out
+        of use (so they want someone else's), said as a fact, not a request."""
+        tokens = self.lex.tokens(piece.text)
+        words = [t.word for t in tokens]
+        items = [m for m in self.lex.scan(tokens) if m.kind == "item"]
+        if len(items) != 1 or items[0].start == 0 or words[items[0].start - 1] != "my":
+            return None
+        before, after = words[: items[0].start - 1], words[items[0].end :]
+        lost = any(
+            _starts_with(before, n, p) for n in range(len(before)) for p in self.en.own_item_lost
+        )
+        copula = next((c for c in self.en.copulas if _starts_with(after, 0, c)), None)
+        broken = copula is not None and any(
+            _starts_with(after, len(copula), c) for c in self.en.conditions
+        )
+        if not (lost and before[:1] == ["i"]) and not (broken and not before):
+            return None
+        item = items[0].ids[0]
+        hint = Hint(
+            kind="condition", person=requester, value="missing", item_type=item, said=piece.text
+        )
+        thing = self.office.item_type(item).name
+        return Finding("fact", piece, f"a fact: the requester's {thing} is out of use", hint)
+
     def _unsupported(self, piece: Piece, requester: str) -> Finding | None:
         for sub in _sub_pieces(piece):
             words = sub.words
@@ -354,10 +395,11 @@ class RequestScreen:
         evidence: list[Evidence] = []
         text, found = self._purposes(text)
         evidence += found
+        text = self._name_pronouns(text, hints)
         broken = [h for h in hints if h.kind == "condition" and h.item_type]
         if broken and not self._names_an_item(text):
             thing = self.office.item_type(broken[-1].item_type or "").name
-            for phrase in self.en.another_one:
+            for phrase in (*self.en.another_one, "some"):
                 pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
                 match = pattern.search(text)
                 if match:
@@ -365,6 +407,21 @@ class RequestScreen:
                     text = text[: match.start()] + f"a {thing}" + text[match.end() :]
                     break
         return text, evidence
+
+    def _name_pronouns(self, text: str, hints: list[Hint]) -> str:
+        """ "Zhang is at his desk. Get him to sign ...": with the fact taken out, a pronoun
+        that can only mean the one person it named gets the name back."""
+        people = {h.person for h in hints if h.kind in ("availability", "location")}
+        if len(people) != 1:
+            return text
+        name = self.office.person(next(iter(people))).name
+
+        def named(match: re.Match[str]) -> str:
+            word, gap, following = match.group(1).lower(), match.group(2), match.group(3)
+            possessive = word == "his" or (word == "her" and normalize(following) in self.lex.items)
+            return (f"{name}'s" if possessive else name) + gap + following
+
+        return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
 
     def _purposes(self, text: str) -> tuple[str, list[Evidence]]:
         heads = "|".join(re.escape(h) for h in sorted(self.en.purpose_heads, key=len, reverse=True))
