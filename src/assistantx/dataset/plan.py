@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.dataset.spec import BaseInstruction, Part, part_operation
+from assistantx.dataset.spec import BaseInstruction, Part, made_kind, part_operation
 from assistantx.memory.graph import LongTermMemory
 from assistantx.office import Office
 from assistantx.sim.goals import Milestone
@@ -139,7 +139,8 @@ def _guard(office: Office, operation: str, question: str, group_question: str | 
 
 
 def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> None:
-    match part.kind:
+    kind = "make" if made_kind(office, part.kind) else part.kind  # "coffee": make a coffee
+    match kind:
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
@@ -252,7 +253,7 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(Visit(role.key, role.key, (Code(role.key, doc, part.kind),)))
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
             plan.add_goal({"holds": [a, doc]})
-        case "make" | "coffee" | "water" | "snack":
+        case "make":
             op = part_operation(office, part)
             made = op.product or ""
             place_name = office.facility(facility_for(office, op.id)).name

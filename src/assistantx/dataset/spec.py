@@ -18,7 +18,7 @@ by hand. A part's fields:
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
@@ -27,21 +27,20 @@ from assistantx.errors import DatasetError
 from assistantx.office import Office, Operation, OperationShape
 from assistantx.task_schema import SEAL_TOOL
 
-PartKind = Literal[
+# The part kinds with a structure of their own; any other kind must be a product of one of
+# the office's operations ("coffee" in the default office: made and brought to the requester).
+PART_KINDS = (
     "fetch",
     "deliver",
     "print",
     "copy",
     "sign",
     "seal",
-    "coffee",
-    "water",
-    "snack",
     "make",
     "heat",
     "forward_file",
     "get_file",
-]
+)
 
 # The shape of office operation each operating part kind uses (office.Operation.shape).
 _PART_SHAPE: dict[str, OperationShape] = {
@@ -49,16 +48,13 @@ _PART_SHAPE: dict[str, OperationShape] = {
     "copy": "transform",
     "heat": "treat",
     "make": "make",
-    "coffee": "make",
-    "water": "make",
-    "snack": "make",
 }
 
 
 class Part(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
-    kind: PartKind
+    kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
     item: str | None = Field(default=None, description="item type (fetch, deliver)")
     owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
     to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
@@ -116,9 +112,14 @@ def _owns(office: Office, person: str, item_type: str) -> bool:
     return any(o.type == item_type for o in office.person(person).owns)
 
 
+def made_kind(office: Office, kind: str) -> bool:
+    """Whether a part kind names a product of the office ("coffee": make a coffee)."""
+    return kind not in PART_KINDS and office.making(kind) is not None
+
+
 def part_operation(office: Office, part: Part) -> Operation:
     """The office operation an operating part needs (raises ValueError when there is none)."""
-    shape = _PART_SHAPE.get(part.kind)
+    shape = _PART_SHAPE.get(part.kind) or ("make" if made_kind(office, part.kind) else None)
     if shape is None:
         raise ValueError(f"{part.kind} uses no facility")
     if part.operation is not None:
@@ -146,6 +147,11 @@ def check_base(base: BaseInstruction, office: Office) -> None:
     a = base.requester
     office.person(a)
     for part in base.parts:
+        if part.kind not in PART_KINDS and not made_kind(office, part.kind):
+            raise ValueError(
+                f"unknown kind {part.kind!r}: one of {', '.join(PART_KINDS)}, or a product "
+                "an operation of the office makes"
+            )
         for person in (part.owner, part.to, part.signer):
             if person is not None:
                 office.person(person)
@@ -189,7 +195,7 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             assert part.owner is not None
             if not _owns(office, part.owner, "file"):
                 raise ValueError(f"{part.owner} has no file")
-        if part.kind in _PART_SHAPE:
+        if part.kind in _PART_SHAPE or made_kind(office, part.kind):
             op = part_operation(office, part)
             if op.input is not None and not _owns(office, a, op.input):
                 raise ValueError(f"the requester has no {op.input}")

@@ -171,7 +171,7 @@ class Planner:
                 ]
             case "print":
                 guard = Role(
-                    f"{n}.printer",
+                    f"{n}.renderer",
                     "print",
                     requester,
                     item_type=source_type,
