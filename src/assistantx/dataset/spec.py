@@ -97,6 +97,13 @@ def load_base_instructions(path: str | Path, office: Office) -> list[BaseInstruc
             err = exc.errors()[0]
             where = ".".join(str(p) for p in err["loc"])
             raise DatasetError(f"{file}: instructions[{n}].{where}: {err['msg']}") from exc
+        for k, part in enumerate(base.parts):
+            if part.kind not in PART_KINDS and not made_kind(office, part.kind):
+                raise DatasetError(
+                    f"{file}: instructions[{n}].parts[{k}].kind: unknown kind {part.kind!r}: "
+                    f"one of {', '.join(PART_KINDS)}, or a product an operation of the office "
+                    "makes"
+                )
         try:
             check_base(base, office)
         except (KeyError, ValueError) as exc:
