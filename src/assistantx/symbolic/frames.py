@@ -158,7 +158,8 @@ class InstructionParser:
         frame = self._parse(screened.text, requester)
         if frame.understood:
             frame = self._with_operations(frame, screened.text)
-        evidence = [*screened.evidence, *(self._evidence(t) for t in frame.tasks)]
+        said = screened.text.strip()
+        evidence = [*screened.evidence, *(self._evidence(t, said) for t in frame.tasks)]
         return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
 
     def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
@@ -180,7 +181,7 @@ class InstructionParser:
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
 
-    def _evidence(self, task: Task) -> Evidence:
+    def _evidence(self, task: Task, said: str) -> Evidence:
         """A task in words: what it does, with whose item, for whom."""
         name = self._item_name(task.item) if task.item else "item"
         whose = (
@@ -194,7 +195,7 @@ class InstructionParser:
         if task.actor:
             parts.append(f"by {self.office.person(task.actor).name}")
         parts.append(f"for {self.office.person(task.recipient).name}")
-        return Evidence(words=task.kind, meaning=" ".join(parts))
+        return Evidence(words=said[:300], meaning=" ".join(parts))
 
     def _parse(self, text: str, requester: str) -> TaskFrame:
         tokens = self.lex.tokens(text)

@@ -481,7 +481,11 @@ class RequestScreen:
     def capabilities(self) -> str:
         """What this office lets the assistant do, in words, from the office file."""
         things = [t.name for t in self.office.item_types if t.kind == "belonging"]
-        machines = [f.name for f in self.office.facilities if f.products or f.operations]
+        machines = [
+            f.name
+            for f in self.office.facilities
+            if any(self.office.runnable(o) for o in f.operations)
+        ]
         parts = []
         if things:
             parts.append(f"fetch and deliver things like {_listed(things[:5])}")
