@@ -311,7 +311,7 @@ class Executor:
             for code in stm.embodied.codes:
                 if any(e.code_id == code.code_id for e in mine):
                     code.used = True
-                    _apply_to_locker(stm, code)
+                    _apply_to_locker(self.ctx.office, stm, code)
             stm.embodied.door = "closed"
             return True, f"{action.person} used the locker ({', '.join(kinds)})", {"events": kinds}
         rejected = [e.reason for e in mine if e.kind == "code_rejected"]
@@ -344,16 +344,17 @@ def _either(a: asyncio.Event, b: asyncio.Event) -> asyncio.Event:
     return _EitherEvent(a, b)
 
 
-def _apply_to_locker(stm: ShortTermMemory, code: IssuedCode) -> None:
+def _apply_to_locker(office: Office, stm: ShortTermMemory, code: IssuedCode) -> None:
     contents = stm.embodied.locker_contents
     if code.purpose in ("deposit", "produce") and code.item not in contents:
         contents.append(code.item)
     elif code.purpose == "collect" and code.item in contents:
         contents.remove(code.item)
     elif code.purpose == "copy":
-        copy = f"copy:{code.item.split(':', 1)[1]}"
-        if copy not in contents:
-            contents.append(copy)
+        item_type, _, owner = code.item.partition(":")
+        product = office.made_from(item_type)  # what the office's operation makes of it
+        if product is not None and f"{product}:{owner}" not in contents:
+            contents.append(f"{product}:{owner}")
 
 
 def _chat(office: Office, contact: str) -> ChatRef:

@@ -24,7 +24,8 @@ from assistantx.errors import OfficeError
 DEFAULT_OFFICE = Path(__file__).resolve().parent / "data" / "dataset" / "office.yaml"
 
 LocationKind = Literal["workstation", "facility", "room"]
-FacilityOperation = Literal["print", "copy", "coffee", "water", "heat", "vend", "meet"]
+# How an operation works, from what it takes and what it makes (see Operation.shape).
+OperationShape = Literal["make", "render", "transform", "treat", "use"]
 
 
 class _Model(BaseModel):
@@ -54,16 +55,48 @@ class ItemType(_Model):
     name: str
     synonyms: tuple[str, ...] = ()
     kind: ItemKind = "belonging"
+    purposes: tuple[str, ...] = Field(
+        default=(), description="verbs it is for: 'cut' (scissors), 'write' (pen)"
+    )
 
     @property
     def physical(self) -> bool:
         return self.kind != "electronic"
 
 
+class Operation(_Model):
+    """Something a facility does, declared by the office (print, boil, scan, mail ...).
+
+    ``verbs`` are the words that ask for it; ``input`` the item type it works on (none: it
+    makes something from nothing the requester gives); ``product`` the item type it makes
+    (none: the input comes back changed, e.g. heated). The facilities that list it offer it,
+    and their guards run it.
+    """
+
+    id: str
+    name: str = Field(description="how a person names it, e.g. 'print'")
+    verbs: tuple[str, ...] = ()
+    input: str | None = None
+    product: str | None = None
+
+    def shape(self, office: Office) -> OperationShape:
+        """``make``: a product from nothing (coffee); ``render``: a product from a file
+        (a printout); ``transform``: a product from a physical item (a copy); ``treat``: the
+        item comes back changed (heated); ``use``: neither (a meeting room)."""
+        if self.input is None:
+            return "make" if self.product else "use"
+        if office.item_type(self.input).kind == "electronic":
+            return "render" if self.product else "use"
+        return "transform" if self.product else "treat"
+
+
 class Ownership(_Model):
     type: str
     known: bool = True
     at: str | None = Field(default=None, description="location where it is kept, if not the desk")
+    facility: str | None = Field(
+        default=None, description="the facility at ``at`` that keeps it, when several stand there"
+    )
 
 
 class Person(_Model):
@@ -83,7 +116,7 @@ class Facility(_Model):
     name: str
     synonyms: tuple[str, ...] = ()
     location: str
-    operations: tuple[FacilityOperation, ...] = ()
+    operations: tuple[str, ...] = Field(default=(), description="ids of operations it offers")
     guards: tuple[str, ...] = Field(default=(), description="people who run it or sit next to it")
     products: tuple[str, ...] = Field(default=(), description="what it makes, e.g. coffee")
 
@@ -107,6 +140,7 @@ class Office(_Model):
     facilities: tuple[Facility, ...]
     groups: tuple[Group, ...]
     robot: Robot
+    operations: tuple[Operation, ...] = ()
 
     # -- lookups -----------------------------------------------------------------------
     def location(self, location_id: str) -> Location:
@@ -123,6 +157,46 @@ class Office(_Model):
 
     def item_type(self, type_id: str) -> ItemType:
         return _by_id(self.item_types, type_id, "item type")
+
+    def operation(self, operation_id: str) -> Operation:
+        return _by_id(self.operations, operation_id, "operation")
+
+    def offering(self, operation_id: str) -> list[Facility]:
+        """The facilities that offer an operation (several may, even at one location)."""
+        return [f for f in self.facilities if operation_id in f.operations]
+
+    def making(self, product: str) -> Operation | None:
+        """The operation whose product is ``product`` (a coffee → the coffee operation)."""
+        return next((o for o in self.operations if o.product == product), None)
+
+    def made_from(self, input_type: str) -> str | None:
+        """The product an operation makes from an item of ``input_type`` while keeping the
+        original (a copy of a document): the item that joins the original in the locker."""
+        return next(
+            (
+                o.product
+                for o in self.operations
+                if o.input == input_type and o.product and o.shape(self) == "transform"
+            ),
+            None,
+        )
+
+    def with_shape(self, shape: OperationShape) -> list[Operation]:
+        return [o for o in self.operations if o.shape(self) == shape]
+
+    def runnable(self, operation_id: str) -> bool:
+        """Whether the assistant can run it on someone's behalf (not just a room to use)."""
+        return self.operation(operation_id).shape(self) != "use"
+
+    def keeper(self, owner: str, type_id: str) -> Facility | None:
+        """The facility where ``owner``'s item is kept (a fridge, a cupboard), if not on them."""
+        own = next((o for o in self.person(owner).owns if o.type == type_id), None)
+        if own is None or own.at is None:
+            return None
+        if own.facility is not None:
+            return self.facility(own.facility)
+        here = [f for f in self.facilities if f.location == own.at]
+        return here[0] if len(here) == 1 else None
 
     def workstations(self) -> list[Location]:
         return [loc for loc in self.locations if loc.kind == "workstation"]
@@ -144,7 +218,7 @@ class Office(_Model):
         return math.hypot(la.x - lb.x, la.y - lb.y)
 
 
-_T = TypeVar("_T", Location, Person, Facility, Group, ItemType)
+_T = TypeVar("_T", Location, Person, Facility, Group, ItemType, Operation)
 
 
 def _by_id(entries: Iterable[_T], entry_id: str, kind: str) -> _T:
@@ -207,6 +281,7 @@ def _check_references(office: Office, where: str) -> None:
         ("people", office.people),
         ("facilities", office.facilities),
         ("groups", office.groups),
+        ("operations", office.operations),
     ):
         counts = Counter(e.id for e in entries)
         for entry_id, n in counts.items():
@@ -239,6 +314,22 @@ def _check_references(office: Office, where: str) -> None:
                 fail(f"people ({p.id}).owns", f"unknown item type {o.type!r}")
             if o.at is not None and o.at not in location_ids:
                 fail(f"people ({p.id}).owns ({o.type}).at", f"unknown location {o.at!r}")
+            if o.facility is not None:
+                if o.facility not in {f.id for f in office.facilities}:
+                    fail(f"people ({p.id}).owns ({o.type}).facility", f"unknown {o.facility!r}")
+                if office.facility(o.facility).location != o.at:
+                    fail(
+                        f"people ({p.id}).owns ({o.type}).facility",
+                        f"{o.facility!r} is not at {o.at!r}",
+                    )
+            elif o.at is not None:
+                here = [f.id for f in office.facilities if f.location == o.at]
+                if len(here) > 1:
+                    fail(
+                        f"people ({p.id}).owns ({o.type}).at",
+                        f"several facilities at {o.at!r} ({', '.join(here)}): name one "
+                        "under 'facility'",
+                    )
             if o.type in seen:
                 fail(f"people ({p.id}).owns", f"item type {o.type!r} listed twice")
             seen.add(o.type)
@@ -248,6 +339,30 @@ def _check_references(office: Office, where: str) -> None:
         for g in f.guards:
             if g not in person_ids:
                 fail(f"facilities ({f.id}).guards", f"unknown person {g!r}")
+    operation_ids = {o.id for o in office.operations}
+    for op_ in office.operations:
+        for field_name, type_id in (("input", op_.input), ("product", op_.product)):
+            if type_id is not None and type_id not in type_ids:
+                fail(f"operations ({op_.id}).{field_name}", f"unknown item type {type_id!r}")
+        if op_.product is not None and office.item_type(op_.product).kind != "product":
+            fail(f"operations ({op_.id}).product", f"item type {op_.product!r} is not a product")
+        if not office.offering(op_.id):
+            fail(f"operations ({op_.id})", "no facility offers it")
+    makers = Counter(op_.product for op_ in office.operations if op_.product)
+    for product, n in makers.items():
+        if n > 1:
+            fail(f"operations (product {product})", f"{n} operations make {product!r}")
+    for f in office.facilities:
+        for op in f.operations:
+            if op not in operation_ids:
+                fail(
+                    f"facilities ({f.id}).operations",
+                    f"unknown operation {op!r} (declare it under 'operations')",
+                )
+        made = {office.operation(op).product for op in f.operations} - {None}
+        for product in f.products:
+            if product not in made:
+                fail(f"facilities ({f.id}).products", f"no operation here makes {product!r}")
     for grp in office.groups:
         for m in grp.members:
             if m not in person_ids:

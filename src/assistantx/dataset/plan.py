@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.dataset.spec import PRODUCT_OPERATION, BaseInstruction, Part
+from assistantx.dataset.spec import BaseInstruction, Part, made_kind, part_operation
 from assistantx.memory.graph import LongTermMemory
 from assistantx.office import Office
 from assistantx.sim.goals import Milestone
@@ -139,10 +139,26 @@ def _guard(office: Office, operation: str, question: str, group_question: str | 
 
 
 def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> None:
-    match part.kind:
+    kind = "make" if made_kind(office, part.kind) else part.kind  # "coffee": make a coffee
+    match kind:
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
+            keeper = office.keeper(part.owner, item_type) if part.owner else None
+            if keeper is not None:  # kept in a cupboard: its guard takes it out
+                role = Role(
+                    key=f"guard:{keeper.id}",
+                    kind="guard",
+                    question=f"Could you take {part.owner}'s {name} out of the {keeper.name}?",
+                    group_question=f"Could anyone take the {name} out of the {keeper.name}?",
+                    facility=keeper.id,
+                )
+                item = f"{item_type}:{part.owner}"
+                plan.add_goal({"holds": [a, item]})
+                plan.add_role(role)
+                plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
+                plan.deliveries.append((REQUESTER, Code(REQUESTER, item, "collect")))
+                return
             if part.owner is not None:
                 role = _named(part.owner, f"Could you lend {who} your {name}?")
                 item = f"{item_type}:{part.owner}"
@@ -171,14 +187,18 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.deliveries.append((role.key, Code(role.key, item, "collect")))
             plan.add_goal({"holds": [to, item]})
         case "print":
+            op = part_operation(office, part)
+            source, made = op.input or "", op.product or ""
+            place_name = office.facility(facility_for(office, op.id)).name
+            thing = office.item_type(source).name
             role = _guard(
                 office,
-                "print",
-                f"Could you print {who}'s file at the printer?",
-                f"Could anyone print {who}'s file at the printer?",
+                op.id,
+                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
             )
             plan.add_role(role)
-            product = f"printout:{a}"
+            product = f"{made}:{a}"
             plan.forwards.append(Forward(REQUESTER, role.key))
             place = role.facility or ""
             plan.visits.append(Visit(place, role.key, (Code(role.key, product, "produce"),)))
@@ -191,23 +211,27 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
                 plan.add_role(target)
                 recipient = target.key
             plan.deliveries.append((recipient, Code(recipient, product, "collect")))
-            plan.add_goal({"printed": f"file:{a}"})
+            plan.add_goal({"printed": f"{source}:{a}"})
             plan.add_goal({"holds": [part.to or a, product]})
         case "copy":
+            op = part_operation(office, part)
+            source, made = op.input or "", op.product or ""
+            place_name = office.facility(facility_for(office, op.id)).name
+            thing = office.item_type(source).name
             role = _guard(
                 office,
-                "copy",
-                f"Could you copy {who}'s document at the copier?",
-                f"Could anyone copy {who}'s document at the copier?",
+                op.id,
+                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
             )
             plan.add_role(role)
-            doc = f"document:{a}"
+            doc = f"{source}:{a}"
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
             plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, f"copy:{a}", "collect")))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, f"{made}:{a}", "collect")))
             plan.add_goal({"copied": doc})
-            plan.add_goal({"holds": [a, f"copy:{a}"]})
+            plan.add_goal({"holds": [a, f"{made}:{a}"]})
             plan.add_goal({"holds": [a, doc]})
         case "sign" | "seal":
             doc = f"document:{a}"
@@ -229,55 +253,60 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(Visit(role.key, role.key, (Code(role.key, doc, part.kind),)))
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
             plan.add_goal({"holds": [a, doc]})
-        case "coffee" | "water" | "snack":
-            wording = {
-                "coffee": f"make a coffee for {who} at the coffee machine",
-                "water": f"get a glass of water for {who} from the water dispenser",
-                "snack": f"buy a snack for {who} at the vending machine",
-            }[part.kind]
+        case "make":
+            op = part_operation(office, part)
+            made = op.product or ""
+            place_name = office.facility(facility_for(office, op.id)).name
+            thing = office.item_type(made).name
             role = _guard(
                 office,
-                PRODUCT_OPERATION[part.kind],
-                f"Could you {wording}?",
-                f"Could anyone {wording}?",
+                op.id,
+                f"Could you get {thing} for {who} from the {place_name}?",
+                f"Could anyone get {thing} for {who} from the {place_name}?",
             )
             plan.add_role(role)
-            product = f"{part.kind}:{a}"
+            product = f"{made}:{a}"
             plan.visits.append(
                 Visit(role.facility or "", role.key, (Code(role.key, product, "produce"),))
             )
             plan.deliveries.append((REQUESTER, Code(REQUESTER, product, "collect")))
             plan.add_goal({"holds": [a, product]})
         case "heat":
-            lunch = f"lunch:{a}"
-            kept = next(o.at for o in office.person(a).owns if o.type == "lunch")
-            fridge = next(f for f in office.facilities if f.location == kept)
-            fridge_role = Role(
-                key=f"guard:{fridge.id}",
-                kind="guard",
-                question=f"Could you take {who}'s lunch out of the {fridge.name} for the robot?",
-                group_question=f"Could anyone take {who}'s lunch out of the {fridge.name}?",
-                facility=fridge.id,
-            )
-            heat_role = _guard(
+            op = part_operation(office, part)
+            source = op.input or ""
+            kept = f"{source}:{a}"
+            keeper = office.keeper(a, source)
+            thing = office.item_type(source).name
+            place_name = office.facility(facility_for(office, op.id)).name
+            op_role = _guard(
                 office,
-                "heat",
-                f"Could you heat {who}'s lunch in the microwave?",
-                f"Could anyone heat {who}'s lunch in the microwave?",
+                op.id,
+                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
             )
-            plan.add_role(fridge_role)
-            plan.add_role(heat_role)
-            plan.visits.append(
-                Visit(fridge.id, fridge_role.key, (Code(fridge_role.key, lunch, "deposit"),))
-            )
-            plan.visits.append(
-                Visit(
-                    heat_role.facility or "", heat_role.key, (Code(heat_role.key, lunch, "heat"),)
+            if keeper is not None:  # kept at a facility (a lunch in the fridge)
+                keeper_role = Role(
+                    key=f"guard:{keeper.id}",
+                    kind="guard",
+                    question=(
+                        f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?"
+                    ),
+                    group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
+                    facility=keeper.id,
                 )
+                plan.add_role(keeper_role)
+                plan.visits.append(
+                    Visit(keeper.id, keeper_role.key, (Code(keeper_role.key, kept, "deposit"),))
+                )
+            else:  # the requester has it
+                plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, kept, "deposit"),)))
+            plan.add_role(op_role)
+            plan.visits.append(
+                Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
             )
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, lunch, "collect")))
-            plan.add_goal({"heated": lunch})
-            plan.add_goal({"holds": [a, lunch]})
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
+            plan.add_goal({"heated": kept})
+            plan.add_goal({"holds": [a, kept]})
         case "forward_file":
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))

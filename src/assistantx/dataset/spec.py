@@ -18,41 +18,50 @@ by hand. A part's fields:
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.errors import DatasetError
-from assistantx.office import Office
+from assistantx.office import Office, Operation, OperationShape
+from assistantx.task_schema import SEAL_TOOL
 
-PartKind = Literal[
+# The part kinds with a structure of their own; any other kind must be a product of one of
+# the office's operations ("coffee" in the default office: made and brought to the requester).
+PART_KINDS = (
     "fetch",
     "deliver",
     "print",
     "copy",
     "sign",
     "seal",
-    "coffee",
-    "water",
-    "snack",
+    "make",
     "heat",
     "forward_file",
     "get_file",
-]
+)
 
-# product made at a facility → the facility operation that makes it
-PRODUCT_OPERATION: dict[str, str] = {"coffee": "coffee", "water": "water", "snack": "vend"}
+# The shape of office operation each operating part kind uses (office.Operation.shape).
+_PART_SHAPE: dict[str, OperationShape] = {
+    "print": "render",
+    "copy": "transform",
+    "heat": "treat",
+    "make": "make",
+}
 
 
 class Part(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
-    kind: PartKind
+    kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
     item: str | None = Field(default=None, description="item type (fetch, deliver)")
     owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
     to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
     signer: str | None = Field(default=None, description="who signs (sign)")
+    operation: str | None = Field(
+        default=None, description="the office operation, when several of the shape exist"
+    )
 
 
 class BaseInstruction(BaseModel):
@@ -88,6 +97,13 @@ def load_base_instructions(path: str | Path, office: Office) -> list[BaseInstruc
             err = exc.errors()[0]
             where = ".".join(str(p) for p in err["loc"])
             raise DatasetError(f"{file}: instructions[{n}].{where}: {err['msg']}") from exc
+        for k, part in enumerate(base.parts):
+            if part.kind not in PART_KINDS and not made_kind(office, part.kind):
+                raise DatasetError(
+                    f"{file}: instructions[{n}].parts[{k}].kind: unknown kind {part.kind!r}: "
+                    f"one of {', '.join(PART_KINDS)}, or a product an operation of the office "
+                    "makes"
+                )
         try:
             check_base(base, office)
         except (KeyError, ValueError) as exc:
@@ -103,11 +119,34 @@ def _owns(office: Office, person: str, item_type: str) -> bool:
     return any(o.type == item_type for o in office.person(person).owns)
 
 
-def _facility_for(office: Office, operation: str) -> str:
-    for f in office.facilities:
-        if operation in f.operations:
-            return f.id
-    raise ValueError(f"no facility does {operation!r}")
+def made_kind(office: Office, kind: str) -> bool:
+    """Whether a part kind names a product of the office ("coffee": make a coffee)."""
+    return kind not in PART_KINDS and office.making(kind) is not None
+
+
+def part_operation(office: Office, part: Part) -> Operation:
+    """The office operation an operating part needs (raises ValueError when there is none)."""
+    shape = _PART_SHAPE.get(part.kind) or ("make" if made_kind(office, part.kind) else None)
+    if shape is None:
+        raise ValueError(f"{part.kind} uses no facility")
+    if part.operation is not None:
+        op = office.operation(part.operation)
+    elif shape == "make":
+        product = part.item if part.kind == "make" else part.kind
+        found = office.making(product or "")
+        if found is None:
+            raise ValueError(f"no operation makes {product!r}")
+        op = found
+    else:
+        ops = office.with_shape(shape)
+        if not ops:
+            raise ValueError(f"the office has no operation for {part.kind}")
+        op = ops[0]
+    if op.shape(office) != shape:
+        raise ValueError(f"operation {op.id!r} does not fit {part.kind}")
+    if not office.offering(op.id):
+        raise ValueError(f"no facility does {op.id!r}")
+    return op
 
 
 def check_base(base: BaseInstruction, office: Office) -> None:
@@ -115,6 +154,11 @@ def check_base(base: BaseInstruction, office: Office) -> None:
     a = base.requester
     office.person(a)
     for part in base.parts:
+        if part.kind not in PART_KINDS and not made_kind(office, part.kind):
+            raise ValueError(
+                f"unknown kind {part.kind!r}: one of {', '.join(PART_KINDS)}, or a product "
+                "an operation of the office makes"
+            )
         for person in (part.owner, part.to, part.signer):
             if person is not None:
                 office.person(person)
@@ -148,27 +192,20 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             assert part.item is not None
             if not _owns(office, a, part.item):
                 raise ValueError(f"the requester owns no {part.item}")
-        if part.kind in ("copy", "sign", "seal") and not _owns(office, a, "document"):
+        if part.kind in ("sign", "seal") and not _owns(office, a, "document"):
             raise ValueError("the requester has no document")
-        if part.kind in ("print", "forward_file") and not _owns(office, a, "file"):
+        if part.kind == "forward_file" and not _owns(office, a, "file"):
             raise ValueError("the requester has no file")
-        if part.kind == "seal" and _owns(office, a, "seal"):
+        if part.kind == "seal" and _owns(office, a, SEAL_TOOL):
             raise ValueError("the requester owns a seal already")
         if part.kind == "get_file":
             assert part.owner is not None
             if not _owns(office, part.owner, "file"):
                 raise ValueError(f"{part.owner} has no file")
-        if part.kind == "heat":
-            lunch = [o for o in office.person(a).owns if o.type == "lunch"]
-            if not lunch or lunch[0].at is None:
-                raise ValueError("the requester has no lunch kept in a fridge")
-        operation = {
-            "print": "print",
-            "copy": "copy",
-            "heat": "heat",
-            **PRODUCT_OPERATION,
-        }.get(part.kind)
-        if operation is not None:
-            facility = office.facility(_facility_for(office, operation))
+        if part.kind in _PART_SHAPE or made_kind(office, part.kind):
+            op = part_operation(office, part)
+            if op.input is not None and not _owns(office, a, op.input):
+                raise ValueError(f"the requester has no {op.input}")
+            facility = office.offering(op.id)[0]
             if a in facility.guards:
                 raise ValueError(f"the requester guards the {facility.id} already")

@@ -244,13 +244,13 @@ ACTION_SPACE = """\
   item or the request in the question ("Could you lend Lee your stapler?").
 - forward_file {source, target}: forward the file received from source (the requester's own
   file counts as received; anyone else's must first be sent to you after you asked for it).
-- send_qr {contact, item, purpose}: a one-time locker code. item is "type:owner" (e.g.
-  "stapler:zhang", "printout:lee", "coffee:lee"). purpose: deposit (put it in), collect (take
-  it out), sign, seal, copy, heat (take the document/lunch out, do it, put it back), produce
-  (make coffee/water/snack/printout at the facility and put it in).
+- send_qr {contact, item, purpose}: a one-time locker code. item is "type:owner", an item
+  type of the office and a person id. purpose: deposit (put it in), collect (take it out),
+  sign, seal, copy, heat (take the item out, do the facility's operation on it, put it back),
+  produce (make the facility's product at the facility and put it in).
 - wait {reason, timeout_s}: wait for a reply (60 s for a person); no reply = unavailable.
-- move {place}: drive to a person (their desk), a facility (printer, coffee_machine,
-  water_dispenser, fridge, microwave, vending_machine) or a location id.
+- move {place}: drive to a person (their desk), a facility id of the office (see memory) or
+  a location id.
 - wait_in_place {person, timeout_s}: stay until that person used the locker.
 - stop {outcome, summary}: end; outcome done, unachievable or failed; the summary goes to
   the requester. Never claim what did not happen.

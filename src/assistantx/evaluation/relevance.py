@@ -10,17 +10,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.office import Office
+from assistantx.office import Office, OperationShape
 from assistantx.sim.goals import parse_milestone
-
-# product type → facility operation that makes it
-_PRODUCT_OPERATION = {
-    "coffee": "coffee",
-    "water": "water",
-    "snack": "vend",
-    "printout": "print",
-    "copy": "copy",
-}
+from assistantx.task_schema import SEAL_TOOL
 
 
 def _owner(item: str) -> str:
@@ -32,7 +24,12 @@ def _type(item: str) -> str:
 
 
 def _guards(office: Office, operation: str) -> set[str]:
-    return {g for f in office.facilities if operation in f.operations for g in f.guards}
+    return {g for f in office.offering(operation) for g in f.guards}
+
+
+def _shape_guards(office: Office, shape: OperationShape) -> set[str]:
+    """Everyone who runs an operation of this shape (printing, copying, heating ...)."""
+    return {g for op in office.with_shape(shape) for g in _guards(office, op.id)}
 
 
 def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) -> set[str]:
@@ -49,17 +46,17 @@ def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) 
                 people.update((_owner(args[0]), args[1]))
             case "sealed":
                 people.add(_owner(args[0]))
-                people.update(office.owners_of("seal"))
+                people.update(office.owners_of(SEAL_TOOL))
             case "printed":
                 people.add(_owner(args[0]))
-                people.update(_guards(office, "print"))
+                people.update(_shape_guards(office, "render"))
             case "copied":
                 people.add(_owner(args[0]))
-                people.update(_guards(office, "copy"))
+                people.update(_shape_guards(office, "transform"))
             case "heated":
                 people.add(_owner(args[0]))
                 people.update(_item_people(office, args[0]))
-                people.update(_guards(office, "heat"))
+                people.update(_shape_guards(office, "treat"))
             case "received":
                 people.update((args[0], _owner(args[1])))
             case "made":
@@ -73,9 +70,10 @@ def _item_people(office: Office, item: str) -> set[str]:
     """Who could hand this item over: its owner(s), or the guards that make or keep it."""
     item_type, owner = _type(item), _owner(item)
     found: set[str] = set()
-    if item_type in _PRODUCT_OPERATION:
-        found.update(_guards(office, _PRODUCT_OPERATION[item_type]))
-        if item_type == "copy":
+    made = office.making(item_type)
+    if made is not None:
+        found.update(_guards(office, made.id))
+        if made.shape(office) == "transform":  # the copy comes back with the original
             found.add(owner)
         return found
     found.update(office.owners_of(item_type) if owner == "*" else [owner])
@@ -83,8 +81,9 @@ def _item_people(office: Office, item: str) -> set[str]:
         if person == "*" or not any(p.id == person for p in office.people):
             continue
         for o in office.person(person).owns:
-            if o.type == item_type and o.at is not None:  # kept at a facility (the fridge)
-                found.update(g for f in office.facilities if f.location == o.at for g in f.guards)
+            keeper = office.keeper(person, item_type) if o.type == item_type else None
+            if keeper is not None:  # kept at a facility (a fridge, a cupboard)
+                found.update(keeper.guards)
     return found
 
 

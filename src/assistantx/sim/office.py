@@ -164,6 +164,7 @@ class SimOffice:
         self.codes: list[HeldCode] = []
         self.told: set[tuple[str | None, str]] = set()  # (instruction id, person)
         self.ended: set[str] = set()  # instructions whose codes and replies are forgotten
+        self.requesters: dict[str, str] = {}  # instruction id → who asked for it
         self._visits: set[asyncio.Task[None]] = set()
 
     def timestamp(self) -> datetime:
@@ -172,6 +173,7 @@ class SimOffice:
     def register_instruction(self, instruction_id: str, requester: str) -> None:
         """The requester asked for it, so they know what the robot comes for."""
         self.told.add((instruction_id, requester))
+        self.requesters[instruction_id] = requester
 
     def end_instruction(self, instruction_id: str) -> None:
         """The instruction ended: people drop its codes and forget its questions, so nothing
@@ -199,7 +201,10 @@ class SimOffice:
             for person in members:
                 self._receive(now, person, message)
             if message.question_id:
-                replies = group_replies(self.world, list(members), message.text)
+                # the requester does not volunteer to help with their own request
+                asker = self.requesters.get(message.instruction_id or "")
+                helpers = [p for p in members if p != asker]
+                replies = group_replies(self.world, helpers, message.text)
                 for n, reply in enumerate(replies):
                     self._schedule_reply(reply, message, n)
             return
@@ -299,15 +304,15 @@ class SimOffice:
         if isinstance(self.locker, LocalLocker):
             # In-process lock: the whole visit happens at this instant of the clock.
             decision = self.locker.controller.scan(code.payload).decision
-            self._after_scan(code, decision, now)
+            self._after_scan(code, decision, now, place)
             if decision.kind == "code_accepted":
                 self.locker.controller.close()
             return
-        task = asyncio.get_running_loop().create_task(self._visit(code, now))
+        task = asyncio.get_running_loop().create_task(self._visit(code, now, place))
         self._visits.add(task)
         task.add_done_callback(self._visits.discard)
 
-    async def _visit(self, code: HeldCode, now: float) -> None:
+    async def _visit(self, code: HeldCode, now: float, place: str) -> None:
         """A hand-over at a networked locker: scan, swap the item, shut the door."""
         try:
             decision = await self.desk.simulate_scan(code.payload)
@@ -315,14 +320,14 @@ class SimOffice:
             logger.warning("simulated scan by %s failed: %s", code.person, exc)
             code.done = False  # they try again the next time the robot is here
             return
-        self._after_scan(code, decision, now)
+        self._after_scan(code, decision, now, place)
         if decision.kind == "code_accepted":
             try:
                 await self.desk.simulate_close()
             except LockError as exc:
                 logger.warning("simulated door close by %s failed: %s", code.person, exc)
 
-    def _after_scan(self, code: HeldCode, decision: LockEvent, now: float) -> None:
+    def _after_scan(self, code: HeldCode, decision: LockEvent, now: float, place: str) -> None:
         if decision.kind != "code_accepted":
             reason = decision.reason or "rejected"
             self.messenger.post(
@@ -331,7 +336,7 @@ class SimOffice:
                 f"The locker rejected my code ({reason}).",
             )
             return
-        do_handover(self.world, now, code.person, code.purpose, code.item)
+        do_handover(self.world, now, code.person, code.purpose, code.item, place)
 
     def check(self, milestones: Iterable[dict[str, object]]) -> list[bool]:
         return [self.world.check(dict(m)) for m in milestones]

@@ -11,13 +11,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from assistantx.office import Operation, OperationShape, Ownership
 from assistantx.sim.understanding import (
-    REQUEST_OPERATION,
     is_question,
     mentioned_item_types,
     mentioned_requests,
 )
 from assistantx.sim.world import LOCKER, World
+from assistantx.task_schema import SEAL_TOOL
 
 
 @dataclass(frozen=True)
@@ -35,20 +36,42 @@ def can_do(world: World, person: str, request: str) -> bool:
     if request == "sign":
         return True
     if request == "seal":
-        return world.owns(person, "seal")
+        return world.owns(person, SEAL_TOOL)
     if request == "send_file":
-        return world.owns(person, "file")
-    operation = REQUEST_OPERATION.get(request)
-    return operation is not None and world.can_operate(person, operation)
+        return any(
+            world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
+        )
+    return world.can_operate(person, request)
+
+
+def _owns(world: World, person: str) -> list[Ownership]:
+    return list(world.office.person(person).owns)
+
+
+def _operation_here(
+    world: World, person: str, place: str, shapes: tuple[OperationShape, ...]
+) -> Operation | None:
+    """The operation of one of ``shapes`` that ``person`` runs at a facility at ``place``."""
+    office = world.office
+    for f in office.facilities:
+        if f.location != place or person not in f.guards:
+            continue
+        for op_id in f.operations:
+            op = office.operation(op_id)
+            if op.shape(office) in shapes:
+                return op
+    return None
 
 
 def direct_reply(world: World, person: str, text: str) -> Reply | None:
     """What ``person`` answers to a direct message (None: no answer)."""
     if not world.available(person):
         return None
-    types = [t for t in mentioned_item_types(world.office, text) if t != "file"]
-    requests = mentioned_requests(text)
-    wants_file = "file" in mentioned_item_types(world.office, text) and "send_file" in requests
+    electronic = {t.id for t in world.office.item_types if t.kind == "electronic"}
+    named = mentioned_item_types(world.office, text)
+    types = [t for t in named if t not in electronic]
+    requests = mentioned_requests(world.office, text)
+    wants_file = bool(electronic & set(named)) and "send_file" in requests
     if wants_file:
         return Reply(person, "Sure, here is my file.", (f"file:{person}",))
     service = [r for r in requests if r not in ("send_file",)]
@@ -60,6 +83,13 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     belongings = [t for t in types if world.office.item_type(t).kind == "belonging"]
     if belongings:
         t = belongings[0]
+        kept = [
+            i
+            for i, where in world.holder.items()
+            if i.startswith(f"{t}:") and where in world.places_of(person) and where != person
+        ]
+        if kept and not world.owns(person, t):  # kept in a cupboard they run
+            return Reply(person, f"Yes, I can take the {_item_name(world, t)} out for the robot.")
         if world.owns(person, t):
             return Reply(person, f"Yes, I have a {_item_name(world, t)}. Happy to lend it.")
         return Reply(person, f"No, I don't have a {_item_name(world, t)}.")
@@ -75,18 +105,27 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
         for t in mentioned_item_types(world.office, text)
         if world.office.item_type(t).kind == "belonging"
     ]
-    requests = [r for r in mentioned_requests(text) if r != "send_file"]
+    requests = [r for r in mentioned_requests(world.office, text) if r != "send_file"]
     replies: list[Reply] = []
     for person in members:
         if not world.available(person):
             continue
         if requests and can_do(world, person, requests[0]):
             replies.append(Reply(person, f"I can help with that ({requests[0]})."))
-        elif not requests and types and world.owns(person, types[0]):
+        elif not requests and types and _can_bring(world, person, types[0]):
             replies.append(
                 Reply(person, f"I have a {_item_name(world, types[0])}, you can borrow it.")
             )
     return replies
+
+
+def _can_bring(world: World, person: str, type_id: str) -> bool:
+    """Whether ``person`` has their item of this type at hand (on them, or kept where they
+    can get at it); an item locked in a cupboard someone else runs is not at hand."""
+    if not world.owns(person, type_id):
+        return False
+    where = world.holder.get(f"{type_id}:{person}", person)
+    return where == person or where in world.places_of(person)
 
 
 def handover_problem(world: World, person: str, purpose: str, item: str, place: str) -> str | None:
@@ -104,37 +143,32 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     if purpose in ("sign", "seal", "copy", "heat"):
         if where != LOCKER:
             return f"{item} is not in the locker."
-        if purpose == "seal" and not world.owns(person, "seal"):
+        if purpose == "seal" and not world.owns(person, SEAL_TOOL):
             return "I don't have the seal."
-        if purpose in ("copy", "heat") and not world.can_operate(person, purpose):
+        shape: OperationShape = "transform" if purpose == "copy" else "treat"
+        if purpose in ("copy", "heat") and _operation_here(world, person, place, (shape,)) is None:
             return f"I can't {purpose} things here."
         return None
     if purpose == "produce":
-        operation = {
-            "coffee": "coffee",
-            "water": "water",
-            "snack": "vend",
-            "printout": "print",
-            "copy": "copy",
-        }.get(item_type)
-        if operation is None or not world.can_operate(person, operation):
+        op = world.office.making(item_type)
+        if op is None or not world.can_operate(person, op.id):
             return f"I can't make {item_type} here."
-        facility = next(f for f in world.office.facilities if operation in f.operations)
-        if place != facility.location:
-            return f"The robot is not at the {facility.name}."
-        if item_type == "printout":
-            owner = item.split(":", 1)[1]
-            if (person, f"file:{owner}") not in world.received:
-                return f"I haven't received the file to print (file:{owner})."
-        if item_type == "copy":
-            owner = item.split(":", 1)[1]
-            if world.holder.get(f"document:{owner}") != LOCKER:
-                return f"The document to copy (document:{owner}) is not in the locker."
+        if not any(f.location == place for f in world.office.offering(op.id)):
+            return f"The robot is not at a place that offers {op.name}."
+        owner = item.split(":", 1)[1]
+        if op.input is not None and op.shape(world.office) == "render":
+            if (person, f"{op.input}:{owner}") not in world.received:
+                return f"I haven't received the file to {op.name} ({op.input}:{owner})."
+        if op.input is not None and op.shape(world.office) == "transform":
+            if world.holder.get(f"{op.input}:{owner}") != LOCKER:
+                return f"The item to {op.name} ({op.input}:{owner}) is not in the locker."
         return None
     return f"I don't know how to {purpose}."
 
 
-def perform_handover(world: World, time: float, person: str, purpose: str, item: str) -> None:
+def perform_handover(
+    world: World, time: float, person: str, purpose: str, item: str, place: str
+) -> None:
     """Do the physical act once the door is open (the caller checked handover_problem)."""
     if purpose == "deposit":
         world.move_item(time, item, LOCKER, by=person)
@@ -148,14 +182,18 @@ def perform_handover(world: World, time: float, person: str, purpose: str, item:
         world.note(time, "sealed", item=item, by=person)
     elif purpose == "copy":
         world.copied.add(item)
-        world.produce(time, f"copy:{item.split(':', 1)[1]}", by=person)
+        op = _operation_here(world, person, place, ("transform",))
+        product = op.product if op is not None else item.split(":", 1)[0]
+        world.produce(time, f"{product}:{item.split(':', 1)[1]}", by=person)
     elif purpose == "heat":
         world.heated.add(item)
         world.note(time, "heated", item=item, by=person)
     elif purpose == "produce":
         item_type, _, owner = item.partition(":")
-        if item_type == "printout":
-            world.printed.add(f"file:{owner}")
-        if item_type == "copy":
-            world.copied.add(f"document:{owner}")
+        op = world.office.making(item_type)
+        if op is not None and op.input is not None:
+            if op.shape(world.office) == "render":
+                world.printed.add(f"{op.input}:{owner}")
+            else:
+                world.copied.add(f"{op.input}:{owner}")
         world.produce(time, item, by=person)

@@ -11,28 +11,29 @@ import re
 from assistantx.memory.names import normalize
 from assistantx.office import Office
 
-# request kind → words that signal it
-REQUEST_WORDS: dict[str, tuple[str, ...]] = {
+# person-to-person request kinds of the task schema → the English words that signal them; the
+# office's own operations are signalled by their verbs and their product's names
+# (``request_words``)
+PERSON_REQUEST_WORDS: dict[str, tuple[str, ...]] = {
     "sign": ("sign", "signature", "signed"),
     "seal": ("seal", "stamp", "chop"),
-    "print": ("print", "printout", "printed"),
-    "copy": ("copy", "photocopy", "copies", "photocopies"),
-    "coffee": ("coffee", "latte", "espresso", "americano", "cappuccino"),
-    "water": ("water",),
-    "heat": ("heat", "warm", "microwave"),
-    "vend": ("vending", "snack", "buy", "chips", "soda"),
-    "send_file": ("send", "share", "forward", "email"),
 }
+SEND_FILE_WORDS = ("send", "share", "forward", "email")
 
-# facility operation a request needs
-REQUEST_OPERATION = {
-    "print": "print",
-    "copy": "copy",
-    "coffee": "coffee",
-    "water": "water",
-    "heat": "heat",
-    "vend": "vend",
-}
+
+def request_words(office: Office) -> dict[str, tuple[str, ...]]:
+    """Request kind (or operation id) → the words that signal it, in the office's order."""
+    words = dict(PERSON_REQUEST_WORDS)
+    for op in office.operations:
+        if not office.runnable(op.id):
+            continue
+        found = [normalize(v) for v in op.verbs]
+        if op.product is not None:
+            product = office.item_type(op.product)
+            found += [normalize(n) for n in (product.name, *product.synonyms)]
+        words[op.id] = tuple(w for w in dict.fromkeys(found) if w)
+    words["send_file"] = SEND_FILE_WORDS
+    return words
 
 
 def _words(text: str) -> str:
@@ -57,13 +58,21 @@ def mentioned_item_types(office: Office, text: str) -> list[str]:
     return found
 
 
-def mentioned_requests(text: str) -> list[str]:
+def mentioned_requests(office: Office, text: str) -> list[str]:
+    """Request kinds the text mentions. The office's own words are read first and used up, so
+    an English word inside one ("stamp" in "stamped envelope") does not count again."""
     haystack = _words(text)
-    return [
-        kind
-        for kind, words in REQUEST_WORDS.items()
-        if any(re.search(rf" {w}\w* ", haystack) for w in words)
-    ]
+    found: set[str] = set()
+    words = request_words(office)
+    for kind in (k for k in words if k not in PERSON_REQUEST_WORDS):
+        for w in words[kind]:
+            if re.search(rf" {re.escape(w)}\w* ", haystack):
+                found.add(kind)
+                haystack = re.sub(rf" {re.escape(w)}\w* ", " ", haystack)
+    for kind, kind_words in PERSON_REQUEST_WORDS.items():
+        if any(re.search(rf" {w}\w* ", haystack) for w in kind_words):
+            found.add(kind)
+    return [k for k in words if k in found]
 
 
 def is_question(text: str) -> bool:

@@ -18,41 +18,16 @@ from typing import Literal
 
 from assistantx.memory.names import TITLES, normalize
 from assistantx.office import Office
+from assistantx.task_schema import SHAPE_KIND
 
 MentionKind = Literal["person", "item", "facility", "self", "pronoun", "cue", "word"]
 
-# Task cues: the English verbs (and nouns) that say what to do. Not office-specific.
+# Task cues: the English verbs (and nouns) that say what to do, keyed by task kind. Not
+# office-specific: the verbs of the office's own operations are added per office
+# (``Lexicon.from_office``), under the task kind of their shape.
 CUES: dict[str, frozenset[str]] = {
-    "print": frozenset({"print", "prints", "printed", "printing", "printout", "reprint"}),
-    "copy": frozenset(
-        {
-            "copy",
-            "copies",
-            "photocopy",
-            "photocopies",
-            "photocopied",
-            "copied",
-            "duplicate",
-            "xerox",
-            "scan",
-        }
-    ),
     "sign": frozenset({"sign", "signs", "signed", "signature", "signing", "countersign"}),
     "seal": frozenset({"stamp", "stamped", "stamping", "seal", "sealed", "sealing", "chop"}),
-    "heat": frozenset(
-        {
-            "heat",
-            "heated",
-            "reheat",
-            "reheated",
-            "warm",
-            "warmed",
-            "microwave",
-            "microwaved",
-            "nuke",
-            "hot",
-        }
-    ),
     "send": frozenset(
         {"send", "sent", "forward", "forwarded", "email", "emailed", "mail", "share", "shared"}
     ),
@@ -118,6 +93,14 @@ _ENGLISH_NAME_WORDS = frozenset(
     drew faith gene guy jack june ken lee""".split()
 ) - {"lee"}
 
+# Words that open a verb's object: the word before one of them is in a verb's place.
+_VERB_OBJECT_STARTS = frozenset("my the a an your our his her their this these those some".split())
+
+_SUBJECT_PRONOUNS = frozenset("you u i we he she they it ya".split())
+_MONTHS = frozenset("may june april august".split())
+_MONTH_PREPOSITIONS = frozenset("in by until till since of early late mid end next last".split())
+_POLITE = frozenset("please pls plz kindly".split())
+
 # How close a misspelt name must be to a person's name to count as possibly meaning them.
 _NAME_TYPO_CUTOFF = 0.8
 
@@ -160,12 +143,23 @@ class Lexicon:
     items: dict[str, str] = field(default_factory=dict)  # phrase → item type id
     facilities: dict[str, str] = field(default_factory=dict)  # phrase → facility id
     max_words: int = 1
+    cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
+    cue_words: frozenset[str] = frozenset()
     vocabulary: list[str] = field(default_factory=list)
     _vocabulary_set: frozenset[str] = frozenset()
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
         lex = cls(office)
+        cues = {k: set(v) for k, v in CUES.items()}
+        for op in office.operations:
+            kind = SHAPE_KIND.get(op.shape(office))
+            if kind is not None:
+                cues.setdefault(kind, set()).update(
+                    form for verb in op.verbs for form in inflections(normalize(verb))
+                )
+        lex.cues = {k: frozenset(v) for k, v in cues.items()}
+        lex.cue_words = frozenset(w for v in cues.values() for w in v)
         for p in office.people:
             for name in (p.id, p.name, *p.aliases):
                 key = normalize(name)
@@ -187,7 +181,7 @@ class Lexicon:
                     lex.facilities.setdefault(key, f.id)
         phrases = [*lex.people, *lex.items, *lex.facilities]
         lex.max_words = max(len(p.split()) for p in phrases)
-        words = {w for p in phrases for w in p.split()} | set(lex.name_words) | CUE_WORDS
+        words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
         lex.vocabulary = sorted(w for w in words if len(w) >= 4)
         lex._vocabulary_set = frozenset(lex.vocabulary)
         return lex
@@ -195,20 +189,29 @@ class Lexicon:
     # -- tokens --------------------------------------------------------------------------
     def tokens(self, text: str) -> list[Token]:
         out: list[Token] = []
-        for m in _TOKEN.finditer(text.replace("’", "'")):
-            raw = m.group(0)
+        raws = [m.group(0) for m in _TOKEN.finditer(text.replace("’", "'"))]
+        for n, raw in enumerate(raws):
             lower = raw.lower()
             possessive = lower.endswith("'s") or lower.endswith("s'")
             word = re.sub(r"'s$|'$", "", lower).replace("'", "")
             if not possessive and word.endswith("s'"):
                 word = word[:-1]
-            out.append(Token(raw, self._correct(word), possessive, word))
+            # a word right before a determiner is a verb: "printe my file" is print, not printer
+            verb_slot = n + 1 < len(raws) and raws[n + 1].lower() in _VERB_OBJECT_STARTS
+            out.append(Token(raw, self._correct(word, verb_slot=verb_slot), possessive, word))
         return out
 
-    def _correct(self, word: str) -> str:
-        """Fix a small typo in an office word or a cue; leave English and numbers alone."""
+    def _correct(self, word: str, *, verb_slot: bool = False) -> str:
+        """Fix a small typo in an office word or a cue; leave English and numbers alone.
+
+        In a verb's place the task verbs are tried first, so a misspelt verb is never turned
+        into a noun that is closer by letters (a typo keeps its part of speech)."""
         if len(word) < 4 or word.isdigit() or word in COMMON or self._known(word):
             return word
+        if verb_slot:
+            verbs = difflib.get_close_matches(word, sorted(self.cue_words), n=1, cutoff=0.8)
+            if verbs:
+                return verbs[0]
         for n in range(len(word) - 1):  # one swapped pair of letters: "zhnag", "pirnt"
             swapped = word[:n] + word[n + 1] + word[n] + word[n + 2 :]
             if swapped in self._vocabulary_set:
@@ -220,7 +223,7 @@ class Lexicon:
 
     def _known(self, word: str) -> bool:
         return (
-            word in CUE_WORDS
+            word in self.cue_words
             or word in self.name_words
             or word in self.people
             or word in self.items
@@ -263,7 +266,7 @@ class Lexicon:
                 return Mention("person", start, end, ids, poss, text), n
             if phrase in self.facilities:
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
-            if phrase in self.items and not (n == 1 and phrase in CUE_WORDS):
+            if phrase in self.items and not (n == 1 and phrase in self.cue_words):
                 return Mention("item", start, end, (self.items[phrase],), poss, text), n
         return None
 
@@ -277,8 +280,8 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
-        if w in CUE_WORDS:
-            kinds = tuple(k for k, words in CUES.items() if w in words)
+        if w in self.cue_words:
+            kinds = tuple(k for k, words in self.cues.items() if w in words)
             return Mention("cue", i, i + 1, kinds, t.possessive, t.text)
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
@@ -298,10 +301,49 @@ class Lexicon:
         """An English-looking single name word counts only when capitalized."""
         if len(idx) != 1:
             return True
-        t = tokens[idx[0]]
+        i = idx[0]
+        t = tokens[i]
         if t.word in _ENGLISH_NAME_WORDS or t.word in COMMON:
+            if t.possessive:
+                return True  # "May's stapler"
+            nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+            prev = tokens[i - 1].word if i > 0 else ""
+            if nxt in _SUBJECT_PRONOUNS:
+                return False  # "Will you ...", "May I ...": a modal verb
+            if prev in _MONTH_PREPOSITIONS and t.word in _MONTHS:
+                return False  # "in May"
+            if (i == 0 or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS:
+                return False  # "Mark my form as urgent": a verb in the verb's place
             return t.text[:1].isupper()
         return True
+
+
+def inflections(verb: str) -> set[str]:
+    """'print' → print, prints, printed, printing; 'copy' → copies, copied; 'heat' → heated."""
+    if not verb or " " in verb:
+        return {verb} if verb else set()
+    forms = {verb, _plural(verb)}
+    if verb.endswith("e"):
+        forms |= {verb + "d", verb[:-1] + "ing"}
+    elif verb.endswith("y") and not verb.endswith(("ay", "ey", "oy")):
+        forms |= {verb[:-1] + "ied", verb + "ing"}
+    elif _doubles(verb):  # "scan" → scanned, scanning
+        forms |= {verb + verb[-1] + "ed", verb + verb[-1] + "ing"}
+    else:
+        forms |= {verb + "ed", verb + "ing"}
+    return forms
+
+
+def _doubles(verb: str) -> bool:
+    """Short consonant-vowel-consonant verbs double their last letter (scan, ship, stop)."""
+    vowels = "aeiou"
+    return (
+        len(verb) >= 3
+        and verb[-1] not in vowels + "wxy"
+        and verb[-2] in vowels
+        and verb[-3] not in vowels
+        and sum(c in vowels for c in verb) == 1
+    )
 
 
 def _plural(phrase: str) -> str:

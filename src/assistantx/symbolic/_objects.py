@@ -57,8 +57,6 @@ DETERMINERS = frozenset(
 _BEFORE_VERB = frozenset(
     {"", "u", "you", "pls", "please", "plz", "robot", "to", "and", "then", "also", "just", "kindly"}
 )
-# Product-cue items whose "of" complement is their source, not a measure ("a copy of my form").
-_PRODUCT_CUES = frozenset({"printout", "copy"})
 
 
 def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
@@ -74,7 +72,9 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
     return out
 
 
-def modifiers(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[int]:
+def modifiers(
+    tokens: Sequence[Token], mentions: Sequence[Mention], sourced: frozenset[str] = frozenset()
+) -> set[int]:
     """Start tokens of the clause's item and cue mentions that are not its request."""
     out: set[int] = set()
     head_seen = False
@@ -91,7 +91,7 @@ def modifiers(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[int]:
             continue
         if _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
             out.add(m.start)
-        elif _container(tokens, mentions, n):
+        elif _container(tokens, mentions, n, sourced):
             out.add(m.start)
         else:
             head_seen = True
@@ -121,10 +121,13 @@ def _modifier_phrase(tokens: Sequence[Token], m: Mention) -> bool:
     return k >= 0 and tokens[k].word in MODIFIER_PREPOSITIONS
 
 
-def _container(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
-    """ "a cup of coffee": the item before "of" another item only measures it."""
+def _container(
+    tokens: Sequence[Token], mentions: Sequence[Mention], n: int, sourced: frozenset[str]
+) -> bool:
+    """ "a cup of coffee": the item before "of" another item only measures it; not a product
+    made from what follows "of" (``sourced``: "a copy of my form")."""
     m = mentions[n]
-    if m.id in _PRODUCT_CUES or m.end >= len(tokens) or tokens[m.end].word != "of":
+    if m.id in sourced or m.end >= len(tokens) or tokens[m.end].word != "of":
         return False
     for after in mentions[n + 1 :]:
         if after.kind == "item":

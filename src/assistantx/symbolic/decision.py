@@ -232,8 +232,10 @@ class Decider:
                 verb = "have" if task.recipient == requester else "has"
                 text = f"{who(task.recipient)} now {verb} {whose(owner)} {item}"
             case "print":
+                made = collected[0].partition(":")[0] if collected else ""
+                product = self.office.item_type(made).name if made else "result"
                 text = (
-                    f"the printout of {whose(task.owner)} file was handed to {who(task.recipient)}"
+                    f"the {product} of {whose(task.owner)} file was handed to {who(task.recipient)}"
                 )
             case "copy":
                 text = (

@@ -55,6 +55,10 @@ class Evidence:
     handovers: list[HandoverAttempt] = field(default_factory=list)
     inbound: list[DialogueTurn] = field(default_factory=list)
     outbound: list[DialogueTurn] = field(default_factory=list)
+    # what the requester stated in the request (the frame's hints): person → their words
+    said_away: dict[str, str] = field(default_factory=dict)
+    # (person, item type) → the condition the requester stated ("broken")
+    said_unusable: dict[tuple[str, str], str] = field(default_factory=dict)
 
     # -- questions -----------------------------------------------------------------------
     def asked(self, contact: str, text: str) -> Question | None:

@@ -21,18 +21,19 @@ for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lex
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
-
-from assistantx.office import Office
-from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token
+from assistantx.memory.names import normalize
+from assistantx.office import Office, OperationShape
+from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token, inflections
 from assistantx.symbolic._objects import modifiers, verb_uses
+from assistantx.symbolic.screen import RequestScreen
+from assistantx.task_schema import SEAL_TOOL as SEAL
+from assistantx.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
 
-TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
+_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 
-# Product types named by the task contract: a printout of a file, a copy of a document.
-PRINTOUT, COPY, SEAL = "printout", "copy", "seal"
+__all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
+
 
 _BREAK_WORDS = frozenset({"then", "also", "plus", "afterwards", "additionally"})
 _JOIN_WORDS = frozenset({"and", "but"})
@@ -78,49 +79,14 @@ _DATIVE_VERBS = frozenset(
 # "Wang's desk": a person's place, where the robot meets them.
 _PLACE_WORDS = frozenset({"desk", "office", "place", "seat", "workstation", "cubicle", "table"})
 _OBJECT_PRONOUNS = frozenset({"him", "her", "them"})
-_SUPPORTED_OPERATIONS = frozenset({"print", "copy", "coffee", "water", "heat", "vend"})
 _FILE_KINDS = frozenset({"print", "send_file"})
 _SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
-
-
-class Task(BaseModel):
-    """One thing to get done."""
-
-    model_config = ConfigDict(frozen=True)
-
-    kind: TaskKind
-    item: str | None = Field(default=None, description="item type id (a product for produce)")
-    owner: str | None = Field(default=None, description="whose item; None = anyone's")
-    recipient: str = Field(description="who ends up with the result")
-    actor: str | None = Field(default=None, description="who must do it (signer, named helper)")
-
-    def item_id(self) -> str | None:
-        """The concrete item, when the frame fixes it (``stapler:zhang``, ``coffee:lee``)."""
-        if self.item is None:
-            return None
-        if self.kind == "produce":
-            return f"{self.item}:{self.recipient}"
-        if self.kind == "print":
-            return f"file:{self.owner}"
-        return f"{self.item}:{self.owner}" if self.owner else None
 
 
 NOT_UNDERSTOOD = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
 )
 """The question for a text in which no request was found (not an unclear request)."""
-
-
-class TaskFrame(BaseModel):
-    """What the requester wants, or the question to ask them first."""
-
-    requester: str
-    tasks: list[Task] = Field(default_factory=list)
-    question: str | None = Field(default=None, description="set when the request is unclear")
-
-    @property
-    def understood(self) -> bool:
-        return self.question is None and bool(self.tasks)
 
 
 class _UnresolvedPronoun(Exception):
@@ -166,10 +132,78 @@ class InstructionParser:
     def __init__(self, office: Office) -> None:
         self.office = office
         self.lex = Lexicon.from_office(office)
+        self.screen = RequestScreen(office, self.lex)
         self._kinds = {t.id: t.kind for t in office.item_types}
+        # the products that name their task: "a printout" is a print, "a copy" a copy
+        self._printout = _product(office, "render")
+        self._copy = _product(office, "transform")
+        self._sourced = frozenset(p for p in (self._printout, self._copy) if p)
+        self._op_words = {
+            op.id: {
+                form
+                for phrase in (*op.verbs, op.name)
+                for verb in normalize(phrase).split()[:1]
+                for form in inflections(verb)
+            }
+            for op in office.operations
+        }
 
     # -- public --------------------------------------------------------------------------
     def parse(self, text: str, requester: str) -> TaskFrame:
+        """The frame of a request: screened first (withdrawn, negated, destructive, facts,
+        unsupported services; ``screen``), then the tasks read from what is left."""
+        screened = self.screen.screen(text, requester)
+        if screened.decline is not None:
+            return TaskFrame(
+                requester=requester,
+                decline=screened.decline,
+                decline_outcome=screened.outcome,
+                hints=screened.hints,
+                evidence=screened.evidence,
+            )
+        frame = self._parse(screened.text, requester)
+        if frame.understood:
+            frame = self._with_operations(frame, screened.text)
+        said = screened.text.strip()
+        evidence = [*screened.evidence, *(self._evidence(t, said) for t in frame.tasks)]
+        return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+
+    def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
+        """Name the operation where the office has several of a task's shape ("scan" or
+        "copy" a contract); ask which when the words do not say."""
+        words = {t.word for t in self.lex.tokens(text)}
+        tasks: list[Task] = []
+        for t in frame.tasks:
+            shape = _KIND_SHAPE.get(t.kind)
+            ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
+            if len(ops) > 1 and t.operation is None:
+                said = [op for op in ops if self._op_words[op.id] & words]
+                if len(said) != 1:
+                    names = " or ".join(op.name for op in ops)
+                    return TaskFrame(
+                        requester=frame.requester, question=f"Which do you mean: {names}?"
+                    )
+                t = t.model_copy(update={"operation": said[0].id})
+            tasks.append(t)
+        return frame.model_copy(update={"tasks": tasks})
+
+    def _evidence(self, task: Task, said: str) -> Evidence:
+        """A task in words: what it does, with whose item, for whom."""
+        name = self._item_name(task.item) if task.item else "item"
+        whose = (
+            f"{self.office.person(task.owner).name}'s {name}"
+            if task.owner
+            else f"anyone's {name}"
+            if task.kind == "transfer"
+            else name
+        )
+        parts = [f"{task.kind.replace('_', ' ')}: {whose}"]
+        if task.actor:
+            parts.append(f"by {self.office.person(task.actor).name}")
+        parts.append(f"for {self.office.person(task.recipient).name}")
+        return Evidence(words=said[:300], meaning=" ".join(parts))
+
+    def _parse(self, text: str, requester: str) -> TaskFrame:
         tokens = self.lex.tokens(text)
         mentions = verb_uses(tokens, self._owned_cue_items(self.lex.scan(tokens), tokens))
         mentions = _settled_by_later_sentence(mentions, _gaps(text, tokens))
@@ -254,7 +288,7 @@ class InstructionParser:
                 continue
             clauses[-1].mentions.append(m)
         for c in clauses:
-            c.modifiers = modifiers(tokens, c.mentions)
+            c.modifiers = modifiers(tokens, c.mentions, self._sourced)
             c.cues = {
                 k
                 for m in c.mentions
@@ -379,15 +413,25 @@ class InstructionParser:
     ) -> list[Task]:
         items = clause.objects()
         cues = set(clause.cues)
+        if (
+            previous is not None
+            and not cues & {"print", "copy"}
+            and any(m.id == self._product_of(previous.kind) for m in items)
+        ):
+            return []  # "print my draft and take the printout to Sue": the same task, on
         for m in items:  # products of the printer are cues: "a printout", "a copy"
-            if m.id == PRINTOUT:
+            if m.id == self._printout:
                 cues.add("print")
-            if m.id == COPY:
+            if m.id == self._copy:
                 cues.add("copy")
         facilities = [self.office.facility(m.id) for m in clause.mentions if m.kind == "facility"]
-        if any("heat" in f.operations for f in facilities):
+        if any(
+            self.office.operation(op).shape(self.office) == "treat"
+            for f in facilities
+            for op in f.operations
+        ):
             cues.add("heat")
-        items = [m for m in items if m.id not in (PRINTOUT, COPY)]
+        items = [m for m in items if m.id not in (self._printout, self._copy)]
         files = [m for m in items if self._kinds[m.id] == "electronic"]
         personal = [m for m in items if self._kinds[m.id] == "personal"]
         products = [m for m in items if self._kinds[m.id] == "product"]
@@ -468,7 +512,7 @@ class InstructionParser:
                 p
                 for f in facilities
                 for p in f.products[:1]
-                if p not in (PRINTOUT, COPY) and ("give" in cues or "make" in cues)
+                if p not in (self._printout, self._copy) and ("give" in cues or "make" in cues)
             ]
             if made:
                 return [Task(kind="produce", item=p, recipient=recipient) for p in made]
@@ -496,6 +540,9 @@ class InstructionParser:
                 )
         return list(dict.fromkeys(tasks))
 
+    def _product_of(self, kind: str) -> str | None:
+        return {"print": self._printout, "copy": self._copy}.get(kind)
+
     def _fill(self, task: Task, clause: _Clause, roles: _Roles, requester: str) -> Task:
         """A clause with no task of its own completes the previous one."""
         update: dict[str, str] = {}
@@ -512,8 +559,8 @@ class InstructionParser:
 
     def _unsupported_facility(self, facility_id: str) -> bool:
         """A facility whose operations are none the assistant can run (a meeting room)."""
-        ops = set(self.office.facility(facility_id).operations)
-        return bool(ops) and not ops & _SUPPORTED_OPERATIONS
+        ops = self.office.facility(facility_id).operations
+        return bool(ops) and not any(self.office.runnable(op) for op in ops)
 
     # -- checks --------------------------------------------------------------------------
     def _problems(self, tokens: list[Token], mentions: list[Mention]) -> list[str]:
@@ -566,7 +613,11 @@ class InstructionParser:
             return True
         if task.kind in _FILE_KINDS and self._kinds[type_id] in ("electronic", "personal"):
             return True  # "print my report", "email my contract"
-        return (task.kind, type_id) in {("print", PRINTOUT), ("copy", COPY), ("seal", SEAL)}
+        return (task.kind, type_id) in {
+            ("print", self._printout),
+            ("copy", self._copy),
+            ("seal", SEAL),
+        }
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
@@ -593,6 +644,10 @@ class InstructionParser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def _product(office: Office, shape: OperationShape) -> str | None:
+    return next((o.product for o in office.with_shape(shape)), None)
 
 
 def _settled_by_later_sentence(mentions: list[Mention], gaps: list[str]) -> list[Mention]:
@@ -651,11 +706,18 @@ def _prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> 
 
 def _gaps(text: str, tokens: list[Token]) -> list[str]:
     """The characters between each token and the one before it (punctuation)."""
+    from assistantx.memory.names import TITLES
+
     gaps: list[str] = []
     pos = 0
+    prev_title = False
     flat = text.replace("’", "'")
     for t in tokens:
         at = flat.find(t.text, pos)
-        gaps.append(flat[pos:at] if at >= 0 else "")
+        gap = flat[pos:at] if at >= 0 else ""
+        if gaps and prev_title:  # "Dr. Zhang": the title's full stop ends no sentence
+            gap = gap.replace(".", "", 1)
+        gaps.append(gap)
         pos = at + len(t.text) if at >= 0 else pos
+        prev_title = t.word in TITLES
     return gaps

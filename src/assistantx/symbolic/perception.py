@@ -23,6 +23,11 @@ def perceive(
     places: list[str] = [ev.robot_place] if ev.robot_place else []
     groups: list[str] = []
     notes: list[str] = []
+    if frame.evidence:
+        notes.append(f"read as: {frame.explain()}")
+    if frame.decline is not None:
+        notes.append(f"nothing to do; to tell {frame.requester}: {frame.decline}")
+        return Percept(people=people, places=places, summary="; ".join(notes)[:4000])
     if agenda is None or not frame.understood:
         notes.append(f"unclear request; to ask {frame.requester}: {frame.question}")
         return Percept(people=people, places=places, summary="; ".join(notes)[:4000])

@@ -22,8 +22,8 @@ from assistantx.adapters.lock.base import Purpose
 from assistantx.memory.graph import LongTermMemory
 from assistantx.office import Office
 from assistantx.symbolic.evidence import Evidence
-from assistantx.symbolic.frames import Task, TaskFrame
 from assistantx.symbolic.roles import Role, RoleKind, Roles, RoleState
+from assistantx.task_schema import Task, TaskFrame, operation_of
 from assistantx.trace import Plan, SubGoal
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
@@ -107,27 +107,27 @@ class Planner:
     def compile(self, frame: TaskFrame) -> list[CompiledTask]:
         return [self._compile(n, t, frame.requester) for n, t in enumerate(frame.tasks)]
 
-    def _facility_for(self, operation: str | None = None, product: str | None = None) -> str:
-        for f in self.office.facilities:
-            if (operation and operation in f.operations) or (product and product in f.products):
-                return f.id
-        raise LookupError(f"no facility for {operation or product}")
+    def _facility_for(self, t: Task) -> str:
+        """The facility that offers the task's operation (the first that does)."""
+        op = operation_of(self.office, t)
+        offering = self.office.offering(op) if op else []
+        if not offering:
+            raise LookupError(f"no facility for {t.kind} {t.item}")
+        return offering[0].id
 
     def _source(self, n: int, t: Task, requester: str) -> Role:
         """Who puts the item into the locker."""
         item_type = t.item or ""
-        kept_at = self._kept_at(t.owner, item_type)
-        if kept_at is not None:
-            keeper = next((f.id for f in self.office.facilities if f.location == kept_at), None)
-            if keeper is not None:
-                return Role(
-                    f"{n}.source",
-                    "keep",
-                    requester,
-                    item_type=item_type,
-                    item_owner=t.owner,
-                    facility=keeper,
-                )
+        kept = self.office.keeper(t.owner, item_type) if t.owner else None
+        if kept is not None:
+            return Role(
+                f"{n}.source",
+                "keep",
+                requester,
+                item_type=item_type,
+                item_owner=t.owner,
+                facility=kept.id,
+            )
         if t.owner is None:
             return Role(
                 f"{n}.source", "lend", requester, item_type=item_type, beneficiary=t.recipient
@@ -143,11 +143,6 @@ class Planner:
             beneficiary=t.recipient,
         )
 
-    def _kept_at(self, owner: str | None, item_type: str) -> str | None:
-        if owner is None:
-            return None
-        return next((o.at for o in self.office.person(owner).owns if o.type == item_type), None)
-
     def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
         phases: list[Phase] = []
@@ -160,6 +155,9 @@ class Planner:
 
         owner = t.owner or requester
         item = t.item or ""
+        op = operation_of(self.office, t)
+        product = (self.office.operation(op).product if op else None) or item
+        source_type = (self.office.operation(op).input if op else None) or item
         match t.kind:
             case "transfer":
                 source = self._source(n, t, requester)
@@ -173,12 +171,13 @@ class Planner:
                 ]
             case "print":
                 guard = Role(
-                    f"{n}.printer",
+                    f"{n}.renderer",
                     "print",
                     requester,
-                    item_type="file",
+                    item_type=source_type,
                     item_owner=owner,
-                    facility=self._facility_for("print"),
+                    facility=self._facility_for(t),
+                    operation=op,
                 )
                 roles = [guard, recipient]
                 if owner != requester:
@@ -188,14 +187,14 @@ class Planner:
                             "send_file",
                             requester,
                             fixed=owner,
-                            item_type="file",
+                            item_type=source_type,
                             beneficiary=requester,
                         )
                     )
                 phases = [
-                    Forward(owner, guard, f"file:{owner}"),
-                    Handover(guard, (leg("printout", "produce", owner),)),
-                    Handover(recipient, (leg("printout", "collect", owner),)),
+                    Forward(owner, guard, f"{source_type}:{owner}"),
+                    Handover(guard, (leg(product, "produce", owner),)),
+                    Handover(recipient, (leg(product, "collect", owner),)),
                 ]
             case "copy":
                 source = self._source(n, t, requester)
@@ -205,20 +204,21 @@ class Planner:
                     requester,
                     item_type=item,
                     item_owner=owner,
-                    facility=self._facility_for("copy"),
+                    facility=self._facility_for(t),
+                    operation=op,
                 )
                 roles = [guard, source, recipient]
                 back: list[Phase]
                 if t.recipient == owner:
                     back = [
                         Handover(
-                            source, (leg(item, "collect", owner), leg("copy", "collect", owner))
+                            source, (leg(item, "collect", owner), leg(product, "collect", owner))
                         )
                     ]
                 else:
                     back = [
                         Handover(source, (leg(item, "collect", owner),)),
-                        Handover(recipient, (leg("copy", "collect", owner),)),
+                        Handover(recipient, (leg(product, "collect", owner),)),
                     ]
                 phases = [
                     Handover(source, (leg(item, "deposit", owner),)),
@@ -247,7 +247,8 @@ class Planner:
                     "produce",
                     requester,
                     item_type=item,
-                    facility=self._facility_for(product=item),
+                    facility=self._facility_for(t),
+                    operation=op,
                     beneficiary=t.recipient,
                 )
                 roles = [guard, recipient]
@@ -263,7 +264,8 @@ class Planner:
                     requester,
                     item_type=item,
                     item_owner=owner,
-                    facility=self._facility_for("heat"),
+                    facility=self._facility_for(t),
+                    operation=op,
                 )
                 roles = [source, heater, recipient]
                 phases = [

@@ -14,6 +14,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from assistantx.actions import Action, Stop
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.office import Office
 from assistantx.ppdr.agents import AgentContext, Reasoner
@@ -34,6 +35,7 @@ from assistantx.trace import (
     Reflection,
     SubGoal,
 )
+from assistantx.updates import AvailabilityUpdate, MemoryUpdate
 
 logger = logging.getLogger(__name__)
 
@@ -84,10 +86,20 @@ class SymbolicReasoner(Reasoner):
         return self._frames[key]
 
     def _compute(self, ctx: AgentContext) -> _View:
-        ev = gather(ctx.stm, self.office)
         frame = self.frame(ctx.stm)
+        ev = self._gather(ctx.stm, frame)
         agenda = self.planner.agenda(frame, ctx.ltm, ev, ctx.now) if frame.understood else None
         return _View(ev, frame, agenda)
+
+    def _gather(self, stm: ShortTermMemory, frame: TaskFrame) -> Evidence:
+        """The evidence, with what the requester stated in the request (the frame's hints)."""
+        ev = gather(stm, self.office)
+        for h in frame.hints:
+            if h.kind == "availability" and h.value == "away":
+                ev.said_away[h.person] = h.said
+            if h.kind == "condition" and h.item_type:
+                ev.said_unusable[(h.person, h.item_type)] = h.value
+        return ev
 
     def _current(self, ctx: AgentContext) -> _View:
         if self._view is None:
@@ -109,7 +121,13 @@ class SymbolicReasoner(Reasoner):
         notes = ""
         if ctx.last_reflection is not None and ctx.last_reflection.verdict == "N":
             notes = f"re-planned after: {ctx.last_reflection.reason}"
-        if v.agenda is None:
+        if v.frame.decline is not None:
+            plan = Plan(
+                goal=f"decline the request {ctx.stm.text!r}",
+                subgoals=[SubGoal(description=f"tell {ctx.stm.requester}: {v.frame.decline}")],
+                notes=notes,
+            )
+        elif v.agenda is None:
             plan = Plan(
                 goal=f"understand the request {ctx.stm.text!r}",
                 subgoals=[
@@ -126,7 +144,12 @@ class SymbolicReasoner(Reasoner):
     async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
         started = time.perf_counter()
         v = self._current(ctx)
-        if v.agenda is None:
+        if v.frame.decline is not None:
+            thought = f"nothing to do: {v.frame.explain()}"
+            actions: list[Action] = [
+                Stop(outcome=v.frame.decline_outcome, summary=v.frame.decline[:2000])
+            ]
+        elif v.agenda is None:
             thought, actions = self.decider.clarify(
                 v.frame.question or "", v.evidence, ctx.stm.text
             )
@@ -155,6 +178,8 @@ class SymbolicReasoner(Reasoner):
             [r for c in self.planner.compile(frame) for r in c.roles] if frame.understood else []
         )
         reflection = self.reflector.reflect(roles, before, after, results, observed)
+        if not any(s.index < ctx.step for s in ctx.stm.trace.steps):
+            reflection = _with_hints(reflection, frame)
         _record(ctx, "reflection", started)
         return reflection
 
@@ -165,6 +190,23 @@ class SymbolicReasoner(Reasoner):
         trace.steps = [s for s in stm.trace.steps if s.index < ctx.step]
         stm.trace = trace
         return gather(stm, self.office)
+
+
+def _with_hints(reflection: Reflection, frame: TaskFrame) -> Reflection:
+    """After the first step, memory takes in what the requester stated ("Wang is away")."""
+    said: list[MemoryUpdate] = [
+        AvailabilityUpdate(
+            person=h.person,
+            available=h.value == "here",
+            evidence=f"{frame.requester} said: {h.said[:900]!r}",
+        )
+        for h in frame.hints
+        if h.kind == "availability"
+    ]
+    if not said:
+        return reflection
+    updates = [*said, *reflection.updates][:20]
+    return reflection.model_copy(update={"updates": updates})
 
 
 def _record(ctx: AgentContext, agent: str, started: float) -> None:

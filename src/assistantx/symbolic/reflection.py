@@ -180,11 +180,14 @@ class Reflector:
                             evidence=f"{person} used a {code.purpose} code",
                         )
                     )
-                if code.purpose == "copy":
+                product = self.roles.office.made_from(code.item.partition(":")[0])
+                if code.purpose == "copy" and product is not None:
                     owner = code.item.split(":", 1)[1]
                     out.append(
                         ItemLocationUpdate(
-                            item=f"copy:{owner}", holder=_LOCKER, evidence=f"{person} made a copy"
+                            item=f"{product}:{owner}",
+                            holder=_LOCKER,
+                            evidence=f"{person} made a copy",
                         )
                     )
             return out

@@ -42,7 +42,9 @@ class RequestRecognizer:
         if strict:
             return False
         frame = self._parser.parse(text, sender)
-        return frame.understood or (frame.question is not None and frame.question != NOT_UNDERSTOOD)
+        if frame.understood or frame.decline is not None:
+            return True  # a declined request is still answered with its reason
+        return frame.question is not None and frame.question != NOT_UNDERSTOOD
 
     def explicit(self, text: str) -> bool:
         if _REQUEST_WORDING.search(text):

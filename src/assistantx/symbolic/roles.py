@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.memory.graph import LongTermMemory
-from assistantx.office import Office
+from assistantx.office import Office, OperationShape
 from assistantx.symbolic.evidence import Evidence, Question
 
 DistanceFn = Callable[[str, str], float]
@@ -35,6 +35,13 @@ RoleKind = Literal[
     "heat",
     "send_file",
 ]
+# The shape of office operation each facility role runs (office.Operation.shape).
+_ROLE_SHAPE: dict[str, OperationShape] = {
+    "print": "render",
+    "copy": "transform",
+    "heat": "treat",
+    "produce": "make",
+}
 RoleStatus = Literal["bound", "ask", "waiting", "group", "group_waiting", "exhausted"]
 
 # How long an availability observation stays true (s): people come and go.
@@ -51,6 +58,7 @@ class Role:
     item_owner: str | None = None  # whose item the request is about (for the wording)
     facility: str | None = None  # where a guard meets the robot
     beneficiary: str | None = None  # for whom
+    operation: str | None = None  # the office operation a facility role runs
 
     @property
     def confirm(self) -> bool:
@@ -94,6 +102,18 @@ class Roles:
     def _thing(self, role: Role) -> str:
         return self.office.item_type(role.item_type).name if role.item_type else "item"
 
+    def _operation_name(self, role: Role) -> str:
+        """How the office names the operation the role runs at its facility ("print")."""
+        shape = _ROLE_SHAPE.get(role.kind)
+        if role.facility is not None:
+            for op_id in self.office.facility(role.facility).operations:
+                op = self.office.operation(op_id)
+                if op.shape(self.office) == shape and (
+                    role.operation is None or op.id == role.operation
+                ):
+                    return op.name
+        return role.kind
+
     def _request(self, role: Role, *, anyone: bool) -> str:
         """The request, for one person ('your') or for a group ('a')."""
         thing = self._thing(role)
@@ -110,10 +130,8 @@ class Roles:
                 return (
                     f"be at your desk soon to receive a delivery from {self._name(role.requester)}"
                 )
-            case "print":
-                return f"print {self._whose(role)} {thing} at the {place}"
-            case "copy":
-                return f"copy {self._whose(role)} {thing} at the {place}"
+            case "print" | "copy":
+                return f"{self._operation_name(role)} {self._whose(role)} {thing} at the {place}"
             case "sign":
                 return f"sign {self._whose(role)} {thing}"
             case "seal":
@@ -121,7 +139,7 @@ class Roles:
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
             case "heat":
-                return f"heat {self._whose(role)} {thing} in the {place}"
+                return f"{self._operation_name(role)} {self._whose(role)} {thing} in the {place}"
             case "send_file":
                 return f"send me your {thing} for {beneficiary}"
         raise ValueError(role.kind)  # pragma: no cover
@@ -194,7 +212,9 @@ class Roles:
             helpers = [
                 t.person
                 for t in ev.answers(group_q)
-                if ev.stance_of(group_q, t.person) == "yes" and t.person not in helpers
+                if ev.stance_of(group_q, t.person) == "yes"
+                and t.person not in helpers
+                and t.person != role.requester  # never the helper of their own request
             ]
         for person in [*people, *helpers]:
             why = self._exclusion(role, person, ltm, ev, now)
@@ -283,6 +303,10 @@ class Roles:
             return None
         if _fresh_availability(ltm, person, now) == "unavailable":
             return "known to be away"
+        if person in ev.said_away and role.fixed is None:  # a named person is still asked
+            return f"the requester said {ev.said_away[person]!r}"
+        if role.item_type and (person, role.item_type) in ev.said_unusable:
+            return f"their {role.item_type} is {ev.said_unusable[(person, role.item_type)]}"
         if (
             role.asks_ownership
             and role.item_type

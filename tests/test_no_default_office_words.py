@@ -1,0 +1,85 @@
+"""No module names an operation, product or facility of the default office (issue 16).
+
+The office file declares them and ``task_schema`` holds the task contract; every other
+module must get them from the office. The test reads every module's string literals (not
+its docstrings or comments, which may use the default office for examples) and fails on any
+that names one. Two words are exempt because they are the task schema's own kinds and lock
+purposes as well as operation ids of the default office: "print", "copy" and "heat" (see
+``task_schema.SHAPE_KIND``). ``robot/office_map_gen.py`` draws the default office's floor plan
+and is exempt as a whole.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+SRC = ROOT / "src" / "assistantx"
+ALLOWED_MODULES = {"office.py", "task_schema.py", "robot/office_map_gen.py"}
+SCHEMA_WORDS = {"print", "copy", "heat"}
+
+
+def _default_office_words() -> set[str]:
+    office = yaml.safe_load((ROOT / "dataset" / "office.yaml").read_text(encoding="utf-8"))
+    words: set[str] = set()
+    for op in office["operations"]:
+        words.add(op["id"])
+        if op.get("product"):
+            words.add(op["product"])
+    products = {t["id"]: t for t in office["item_types"] if t.get("kind") == "product"}
+    for t in products.values():
+        words |= {t["id"], t["name"]}
+    for f in office["facilities"]:
+        words |= {f["id"], f["name"], f["id"].replace("_", " ")}
+    return words - SCHEMA_WORDS
+
+
+WORDS = sorted(_default_office_words())
+PATTERN = re.compile(r"\b(" + "|".join(re.escape(w) for w in WORDS) + r")\b")
+
+
+def _strings(tree: ast.AST) -> list[tuple[int, str]]:
+    """String constants that are not docstrings, with their line numbers."""
+    docstrings = {
+        id(node.body[0].value)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Module | ast.ClassDef | ast.FunctionDef | ast.AsyncFunctionDef)
+        and node.body
+        and isinstance(node.body[0], ast.Expr)
+        and isinstance(node.body[0].value, ast.Constant)
+    }
+    return [
+        (node.lineno, node.value)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Constant)
+        and isinstance(node.value, str)
+        and id(node) not in docstrings
+    ]
+
+
+def test_the_word_list_is_the_default_office() -> None:
+    assert {"printer", "coffee_machine", "vend", "snack", "printout", "fridge"} <= set(WORDS)
+
+
+@pytest.mark.parametrize(
+    "module",
+    sorted(
+        str(p.relative_to(SRC))
+        for p in SRC.rglob("*.py")
+        if str(p.relative_to(SRC)) not in ALLOWED_MODULES
+    ),
+)
+def test_module_names_no_default_office_word(module: str) -> None:
+    tree = ast.parse((SRC / module).read_text(encoding="utf-8"))
+    found = [
+        f"line {line}: {match.group(0)!r} in {text[:60]!r}"
+        for line, text in _strings(tree)
+        for match in [PATTERN.search(text)]
+        if match is not None
+    ]
+    assert not found, found
