@@ -68,7 +68,7 @@ class Assistant:
         self.clock = parts.clock
         self.ltm = parts.ltm or LongTermMemory(parts.office)
         self.resolver = Resolver(parts.office)
-        self.replies = ReplyBox()
+        self.replies = ReplyBox(is_member=self._is_member)
         self.lease = BodyLease()
         self.inbox: asyncio.Queue[InboundMessage | None] = asyncio.Queue()
         self.executor = Executor(
@@ -110,6 +110,9 @@ class Assistant:
             with contextlib.suppress(asyncio.CancelledError):
                 await self._dispatcher
             self._dispatcher = None
+
+    def _is_member(self, person: str, group: str) -> bool:
+        return any(g.id == group and person in g.members for g in self.office.groups)
 
     def subscribe(self, sink: EventSink) -> None:
         self._sinks.append(sink)
