@@ -40,18 +40,9 @@ from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.office import Office
 from assistantx.replies import ReplyBox
 from assistantx.trace import ActionResult
+from assistantx.wording import PURPOSE_TEXT, item_phrase, person_name
 
 logger = logging.getLogger(__name__)
-
-PURPOSE_TEXT = {
-    "deposit": "put {item} into the locker",
-    "collect": "take {item} out of the locker",
-    "sign": "take {item} out, sign it and put it back",
-    "seal": "take {item} out, stamp it with the seal and put it back",
-    "copy": "take {item} out, copy it and put the original and the copy back",
-    "heat": "take {item} out, heat it and put it back",
-    "produce": "make {item} and put it into the locker",
-}
 
 
 @dataclass
@@ -187,9 +178,14 @@ class Executor:
                 ),
                 {},
             )
-        attachment = Attachment(kind="file", name=f"{file}.pdf", item=file)
-        text = f"Forwarding {file} from {action.source} (instruction {stm.instruction_id})."
-        chat = _chat(self.ctx.office, action.target)
+        office = self.ctx.office
+        # What the reader sees names people and items; the attachment's ``item`` keeps the id.
+        you = action.target
+        what = item_phrase(office, file, you=you)
+        attachment = Attachment(kind="file", name=f"{_file_name(what)}.pdf", item=file)
+        source = person_name(office, action.source, you=you)
+        text = f"Forwarding {what} from {source}."
+        chat = _chat(office, action.target)
         await self._send(stm, chat, text, key, attachments=[attachment])
         return True, f"forwarded {file} to {action.target}", {"file": file}
 
@@ -217,7 +213,9 @@ class Executor:
             purpose=action.purpose,
             item=action.item,
         )
-        todo = PURPOSE_TEXT[action.purpose].format(item=action.item)
+        todo = PURPOSE_TEXT[action.purpose].format(
+            item=item_phrase(self.ctx.office, action.item, you=action.contact)
+        )
         text = (
             f"Here is your one-time code for the robot's locker: scan it at the robot to {todo}. "
             f"It works once and expires in {round((qr.expires_at - qr.issued_at) / 60)} minutes."
@@ -354,6 +352,11 @@ def _apply_to_locker(stm: ShortTermMemory, code: IssuedCode) -> None:
         copy = f"copy:{code.item.split(':', 1)[1]}"
         if copy not in contents:
             contents.append(copy)
+
+
+def _file_name(phrase: str) -> str:
+    """The phrase with anything a file system or chat client may choke on replaced."""
+    return "".join(c if c.isalnum() or c in " -'" else "_" for c in phrase).strip() or "file"
 
 
 def _chat(office: Office, contact: str) -> ChatRef:

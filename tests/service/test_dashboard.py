@@ -256,6 +256,15 @@ async def test_the_operator_plays_the_people_at_the_locker(tmp_path: Path) -> No
                 lambda cs, p=person: any(c["person"] == p and c["scannable"] for c in cs),
             )
             code = next(c for c in codes if c["person"] == person)  # type: ignore[union-attr]
+            # What the panel shows names people and things (no stapler:zhang, no ins-…).
+            assert code["person_name"] == {"zhang": "Zhang Wei", "lee": "Lee Ming"}[person]
+            assert (
+                code["task"]
+                == {
+                    "zhang": "put Zhang Wei's stapler into the locker",
+                    "lee": "take Zhang Wei's stapler out of the locker",
+                }[person]
+            )
             scanned = await client.post("/v1/locker/scan", json={"code_id": code["code_id"]})
             assert scanned.status_code == 200
             assert scanned.json()["kind"] == "code_accepted"

@@ -44,6 +44,7 @@ from assistantx.robot.occupancy_map import OccupancyMap, load_map
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
 from assistantx.service.runtime import ServiceRuntime
+from assistantx.wording import PURPOSE_TEXT, item_phrase, person_name
 
 logger = logging.getLogger(__name__)
 
@@ -184,6 +185,8 @@ class LockerCode(BaseModel):
     person: str
     item: str
     purpose: str
+    person_name: str = Field(description="the holder's display name")
+    task: str = Field(description="what the holder does at the locker, in words")
     used: bool = Field(description="the instruction saw it used at the locker")
     scannable: bool = Field(description="the dashboard knows the code's payload")
 
@@ -249,6 +252,10 @@ def _recent_codes(runtime: ServiceRuntime, book: CodeBook, limit: int = 30) -> l
                 person=c.person,
                 item=c.item,
                 purpose=c.purpose,
+                person_name=person_name(runtime.office, c.person),
+                task=PURPOSE_TEXT.get(c.purpose, "{item}").format(
+                    item=item_phrase(runtime.office, c.item)
+                ),
                 used=c.used,
                 scannable=book.payload(c.code_id) is not None,
             )
