@@ -90,6 +90,7 @@ class Assistant:
         self._dm_hooks: list[DirectMessageHook] = []
         self._ids = itertools.count(1)
         self._dispatcher: asyncio.Task[None] | None = None
+        self._stopping = False
         self.unmatched: list[InboundMessage] = []
 
     # -- lifecycle -----------------------------------------------------------------------
@@ -100,6 +101,8 @@ class Assistant:
         self._dispatcher = asyncio.create_task(self._dispatch(), name="assistant-dispatch")
 
     async def stop(self) -> None:
+        # Instructions cut short by a shutdown resume on the next start: keep their codes.
+        self._stopping = True
         for running in list(self.running.values()):
             running.task.cancel()
         for running in list(self.running.values()):
@@ -181,8 +184,10 @@ class Assistant:
         return stm
 
     async def _run(self, runner: InstructionRunner, stm: ShortTermMemory) -> ShortTermMemory:
+        ended = False
         try:
             await runner.run(stm)
+            ended = True
         finally:
             self.running.pop(stm.instruction_id, None)
             self.finished[stm.instruction_id] = stm
@@ -190,12 +195,29 @@ class Assistant:
                 await runner.reasoner.stop()
             except Exception:
                 logger.exception("could not stop the reasoner of %s", stm.instruction_id)
+            # Ended, or cancelled by a person (not cut short by a shutdown: that resumes).
+            if ended or not self._stopping:
+                await self._revoke_codes(stm)
+                await self._end_hooks(stm)
+        return stm
+
+    async def _end_hooks(self, stm: ShortTermMemory) -> None:
         for hook in self._on_end:
             try:
                 await hook(stm)
             except Exception:
                 logger.exception("instruction end hook failed")
-        return stm
+
+    async def _revoke_codes(self, stm: ShortTermMemory) -> None:
+        """The instruction ended (done, failed, cancelled): none of its codes may open the
+        locker any more."""
+        try:
+            revoked = await self.executor.revoke_codes(stm)
+        except Exception:
+            logger.exception("could not revoke the codes of %s", stm.instruction_id)
+            return
+        if revoked:
+            logger.info("revoked %d unused code(s) of %s", revoked, stm.instruction_id)
 
     async def wait(self, instruction_id: str) -> ShortTermMemory:
         if instruction_id in self.running:

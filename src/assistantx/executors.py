@@ -198,7 +198,7 @@ class Executor:
                 action.item,
                 action.purpose,
             )
-            if same and not code.used:
+            if same and not (code.used or code.revoked):
                 return (
                     False,
                     (
@@ -238,6 +238,23 @@ class Executor:
             )
         )
         return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
+
+    async def revoke_codes(self, stm: ShortTermMemory, *, person: str | None = None) -> int:
+        """Withdraw at the lock this instruction's codes that were sent but never scanned
+        (only ``person``'s, if given); returns how many the lock revoked."""
+        revoked = 0
+        for code in stm.embodied.codes:
+            if not code.live or (person is not None and code.person != person):
+                continue
+            try:
+                await self.ctx.locker.revoke(code.code_id)
+            except AdapterError as exc:
+                # Expired, or scanned in a moment we did not see: nothing left to withdraw.
+                logger.info("code %s of %s not revoked: %s", code.code_id, code.person, exc)
+                continue
+            code.revoked = True
+            revoked += 1
+        return revoked
 
     # -- waiting -------------------------------------------------------------------------
     def take_messages(self, stm: ShortTermMemory) -> list[InboundMessage]:
@@ -305,6 +322,13 @@ class Executor:
         mine = [e for e in events if e.person == action.person]
         closed = any(e.kind == "door_closed" for e in mine)
         kinds = [e.kind for e in mine]
+        accepted = {e.code_id for e in mine if e.kind == "code_accepted"}
+        for code in stm.embodied.codes:
+            if code.code_id in accepted:
+                code.scanned = True
+        if not mine and self.ctx.clock.now() >= deadline:
+            # Timed out: the person's codes must not open the locker after the robot left.
+            await self.revoke_codes(stm, person=action.person)
         if closed:
             for code in stm.embodied.codes:
                 if any(e.code_id == code.code_id for e in mine):

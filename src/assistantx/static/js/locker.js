@@ -26,8 +26,8 @@ export class LockerPanel {
     }
     keepFocus(this.codesList, () => replace(this.codesList, codes.length ? codes.map((code) => h("li", { dataset: { code: code.code_id, key: code.code_id } },
       h("span", { class: "what" }, `${code.person_name}: ${code.task}`),
-      badge(code.used ? "used" : "issued", code.used ? "done" : "queued"),
-      code.scannable && !code.used
+      badge(code.state, { used: "done", scanned: "running", revoked: "failed" }[code.state] ?? "queued"),
+      code.scannable && code.state === "issued"
         ? h("button", { type: "button", onclick: (e) => this.scan(code, e.currentTarget), "aria-label": `Scan ${code.person_name}'s code to ${code.task}` }, "Scan")
         : null))
       : h("li", { class: "hint" }, "No codes issued yet.")));
