@@ -15,6 +15,8 @@ from symbolic_run import run_instruction
 from test_tasks_in_sim import CASES, Case
 
 from assistantx.office import Office, load_office
+from assistantx.sim.people import handover_problem
+from assistantx.sim.world import World
 from assistantx.symbolic.roles import RoleKind
 from assistantx.wording import PURPOSE_TEXT
 
@@ -60,3 +62,25 @@ async def test_no_internal_ids_reach_people(office: Office, case: Case) -> None:
         read = [message.text, *(a.name for a in message.attachments)]
         for text in read:
             assert offences(text) == [], f"{message.chat.id} read: {text!r}"
+
+
+@pytest.mark.parametrize(
+    ("person", "purpose", "item", "place"),
+    [
+        ("zhang", "deposit", "stapler:wang", "desk_03"),  # not his to put in
+        ("lee", "collect", "stapler:wang", "desk_03"),  # not in the locker
+        ("zhang", "sign", "document:lee", "desk_05"),
+        ("lee", "produce", "printout:lee", "print_room"),  # cannot print here
+        ("mao", "produce", "printout:lee", "print_room"),  # never got the file
+        ("mao", "produce", "copy:lee", "print_room"),  # the original is not there
+        ("mao", "produce", "stapler:mao", "print_room"),
+    ],
+)
+def test_what_simulated_people_say_at_the_locker_names_things(
+    person: str, purpose: str, item: str, place: str
+) -> None:
+    """Their "I came to the robot, but: …" reaches the assistant and the chat views."""
+    world = World.from_office(_OFFICE, ())
+    problem = handover_problem(world, person, purpose, item, place)
+    assert problem is not None
+    assert offences(problem) == [], problem

@@ -18,6 +18,7 @@ from assistantx.sim.understanding import (
     mentioned_requests,
 )
 from assistantx.sim.world import LOCKER, World
+from assistantx.wording import item_phrase
 
 
 @dataclass(frozen=True)
@@ -29,6 +30,13 @@ class Reply:
 
 def _item_name(world: World, type_id: str) -> str:
     return world.office.item_type(type_id).name
+
+
+def _thing(world: World, item: str, speaker: str) -> str:
+    """An item as ``speaker`` names it: "my stapler", "Lee Ming's document"."""
+    if item.partition(":")[2] == speaker:
+        return f"my {_item_name(world, item.partition(':')[0])}"
+    return item_phrase(world.office, item)
 
 
 def can_do(world: World, person: str, request: str) -> bool:
@@ -93,17 +101,19 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     """Why ``person`` cannot do ``purpose`` with ``item`` at the locker now (None: they can)."""
     where = world.holder.get(item)
     item_type = item.split(":", 1)[0]
+    thing = _thing(world, item, person)
+    missing = f"{thing[0].upper()}{thing[1:]} is not in the locker."
     if purpose == "deposit":
         if where == person:
             return None
         if where is not None and where == place and place in world.places_of(person):
             return None  # e.g. a lunch kept in the fridge they sit next to
-        return f"I don't have {item}."
+        return f"I don't have {thing}."
     if purpose == "collect":
-        return None if where == LOCKER else f"{item} is not in the locker."
+        return None if where == LOCKER else missing
     if purpose in ("sign", "seal", "copy", "heat"):
         if where != LOCKER:
-            return f"{item} is not in the locker."
+            return missing
         if purpose == "seal" and not world.owns(person, "seal"):
             return "I don't have the seal."
         if purpose in ("copy", "heat") and not world.can_operate(person, purpose):
@@ -118,18 +128,20 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
             "copy": "copy",
         }.get(item_type)
         if operation is None or not world.can_operate(person, operation):
-            return f"I can't make {item_type} here."
+            return f"I can't make {_item_name(world, item_type)} here."
         facility = next(f for f in world.office.facilities if operation in f.operations)
         if place != facility.location:
             return f"The robot is not at the {facility.name}."
         if item_type == "printout":
             owner = item.split(":", 1)[1]
             if (person, f"file:{owner}") not in world.received:
-                return f"I haven't received the file to print (file:{owner})."
+                what = _thing(world, f"file:{owner}", person)
+                return f"I haven't received the file to print ({what})."
         if item_type == "copy":
             owner = item.split(":", 1)[1]
             if world.holder.get(f"document:{owner}") != LOCKER:
-                return f"The document to copy (document:{owner}) is not in the locker."
+                what = _thing(world, f"document:{owner}", person)
+                return f"The document to copy ({what}) is not in the locker."
         return None
     return f"I don't know how to {purpose}."
 
