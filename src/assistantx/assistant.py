@@ -89,7 +89,7 @@ class Assistant:
         self.clock = parts.clock
         self.ltm = parts.ltm or LongTermMemory(parts.office)
         self.resolver = Resolver(parts.office)
-        self.replies = ReplyBox()
+        self.replies = ReplyBox(is_member=self._is_member)
         self.lease = BodyLease()
         self.inbox: asyncio.Queue[InboundMessage | None] = asyncio.Queue()
         self.executor = Executor(
@@ -110,6 +110,7 @@ class Assistant:
         self._on_end: list[InstructionHook] = []
         self._dm_hooks: list[DirectMessageHook] = []
         self._dispatcher: asyncio.Task[None] | None = None
+        self._stopping = False
         self.unmatched: list[InboundMessage] = []
 
     # -- lifecycle -----------------------------------------------------------------------
@@ -120,6 +121,8 @@ class Assistant:
         self._dispatcher = asyncio.create_task(self._dispatch(), name="assistant-dispatch")
 
     async def stop(self) -> None:
+        # Instructions cut short by a shutdown resume on the next start: keep their codes.
+        self._stopping = True
         for running in list(self.running.values()):
             running.task.cancel()
         for running in list(self.running.values()):
@@ -130,6 +133,9 @@ class Assistant:
             with contextlib.suppress(asyncio.CancelledError):
                 await self._dispatcher
             self._dispatcher = None
+
+    def _is_member(self, person: str, group: str) -> bool:
+        return any(g.id == group and person in g.members for g in self.office.groups)
 
     def subscribe(self, sink: EventSink) -> None:
         self._sinks.append(sink)
@@ -198,8 +204,10 @@ class Assistant:
         return stm
 
     async def _run(self, runner: InstructionRunner, stm: ShortTermMemory) -> ShortTermMemory:
+        ended = False
         try:
             await runner.run(stm)
+            ended = True
         finally:
             self.running.pop(stm.instruction_id, None)
             self.finished[stm.instruction_id] = stm
@@ -207,12 +215,29 @@ class Assistant:
                 await runner.reasoner.stop()
             except Exception:
                 logger.exception("could not stop the reasoner of %s", stm.instruction_id)
+            # Ended, or cancelled by a person (not cut short by a shutdown: that resumes).
+            if ended or not self._stopping:
+                await self._revoke_codes(stm)
+                await self._end_hooks(stm)
+        return stm
+
+    async def _end_hooks(self, stm: ShortTermMemory) -> None:
         for hook in self._on_end:
             try:
                 await hook(stm)
             except Exception:
                 logger.exception("instruction end hook failed")
-        return stm
+
+    async def _revoke_codes(self, stm: ShortTermMemory) -> None:
+        """The instruction ended (done, failed, cancelled): none of its codes may open the
+        locker any more."""
+        try:
+            revoked = await self.executor.revoke_codes(stm)
+        except Exception:
+            logger.exception("could not revoke the codes of %s", stm.instruction_id)
+            return
+        if revoked:
+            logger.info("revoked %d unused code(s) of %s", revoked, stm.instruction_id)
 
     async def wait(self, instruction_id: str) -> ShortTermMemory:
         if instruction_id in self.running:

@@ -40,18 +40,9 @@ from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.office import Office
 from assistantx.replies import ReplyBox
 from assistantx.trace import ActionResult
+from assistantx.wording import PURPOSE_TEXT, item_phrase, person_name
 
 logger = logging.getLogger(__name__)
-
-PURPOSE_TEXT = {
-    "deposit": "put {item} into the locker",
-    "collect": "take {item} out of the locker",
-    "sign": "take {item} out, sign it and put it back",
-    "seal": "take {item} out, stamp it with the seal and put it back",
-    "copy": "take {item} out, copy it and put the original and the copy back",
-    "heat": "take {item} out, heat it and put it back",
-    "produce": "make {item} and put it into the locker",
-}
 
 
 @dataclass
@@ -187,9 +178,14 @@ class Executor:
                 ),
                 {},
             )
-        attachment = Attachment(kind="file", name=f"{file}.pdf", item=file)
-        text = f"Forwarding {file} from {action.source} (instruction {stm.instruction_id})."
-        chat = _chat(self.ctx.office, action.target)
+        office = self.ctx.office
+        # What the reader sees names people and items; the attachment's ``item`` keeps the id.
+        you = action.target
+        what = item_phrase(office, file, you=you)
+        attachment = Attachment(kind="file", name=f"{_file_name(what)}.pdf", item=file)
+        source = person_name(office, action.source, you=you)
+        text = f"Forwarding {what} from {source}."
+        chat = _chat(office, action.target)
         await self._send(stm, chat, text, key, attachments=[attachment])
         return True, f"forwarded {file} to {action.target}", {"file": file}
 
@@ -202,7 +198,7 @@ class Executor:
                 action.item,
                 action.purpose,
             )
-            if same and not code.used:
+            if same and not (code.used or code.revoked):
                 return (
                     False,
                     (
@@ -217,7 +213,9 @@ class Executor:
             purpose=action.purpose,
             item=action.item,
         )
-        todo = PURPOSE_TEXT[action.purpose].format(item=action.item)
+        todo = PURPOSE_TEXT[action.purpose].format(
+            item=item_phrase(self.ctx.office, action.item, you=action.contact)
+        )
         text = (
             f"Here is your one-time code for the robot's locker: scan it at the robot to {todo}. "
             f"It works once and expires in {round((qr.expires_at - qr.issued_at) / 60)} minutes."
@@ -240,6 +238,23 @@ class Executor:
             )
         )
         return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
+
+    async def revoke_codes(self, stm: ShortTermMemory, *, person: str | None = None) -> int:
+        """Withdraw at the lock this instruction's codes that were sent but never scanned
+        (only ``person``'s, if given); returns how many the lock revoked."""
+        revoked = 0
+        for code in stm.embodied.codes:
+            if not code.live or (person is not None and code.person != person):
+                continue
+            try:
+                await self.ctx.locker.revoke(code.code_id)
+            except AdapterError as exc:
+                # Expired, or scanned in a moment we did not see: nothing left to withdraw.
+                logger.info("code %s of %s not revoked: %s", code.code_id, code.person, exc)
+                continue
+            code.revoked = True
+            revoked += 1
+        return revoked
 
     # -- waiting -------------------------------------------------------------------------
     def take_messages(self, stm: ShortTermMemory) -> list[InboundMessage]:
@@ -307,6 +322,13 @@ class Executor:
         mine = [e for e in events if e.person == action.person]
         closed = any(e.kind == "door_closed" for e in mine)
         kinds = [e.kind for e in mine]
+        accepted = {e.code_id for e in mine if e.kind == "code_accepted"}
+        for code in stm.embodied.codes:
+            if code.code_id in accepted:
+                code.scanned = True
+        if not mine and self.ctx.clock.now() >= deadline:
+            # Timed out: the person's codes must not open the locker after the robot left.
+            await self.revoke_codes(stm, person=action.person)
         if closed:
             for code in stm.embodied.codes:
                 if any(e.code_id == code.code_id for e in mine):
@@ -355,6 +377,11 @@ def _apply_to_locker(office: Office, stm: ShortTermMemory, code: IssuedCode) -> 
         product = office.made_from(item_type)  # what the office's operation makes of it
         if product is not None and f"{product}:{owner}" not in contents:
             contents.append(f"{product}:{owner}")
+
+
+def _file_name(phrase: str) -> str:
+    """The phrase with anything a file system or chat client may choke on replaced."""
+    return "".join(c if c.isalnum() or c in " -'" else "_" for c in phrase).strip() or "file"
 
 
 def _chat(office: Office, contact: str) -> ChatRef:

@@ -9,12 +9,18 @@ Replies are kept per instruction, so two instructions asking the same person nev
 each other's answers. Once an instruction ends, its questions and the chats it wrote to are
 remembered as ended (``ended_instruction``): a late reply there is about that instruction,
 not a new request.
+
+A question is answered only from the chat it was asked in: a DM question by that person in
+that DM, a group question by a member in that group. An ``in_reply_to`` naming a question
+asked elsewhere (Zhang quoting, in his own DM, the question sent to Wang) is not an answer to
+it; the reference is dropped and the message is routed as if it named no question.
 """
 
 from __future__ import annotations
 
 import asyncio
 from collections import defaultdict
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TypeVar
 
@@ -33,8 +39,13 @@ class OpenQuestion:
     answers: list[InboundMessage] = field(default_factory=list)
 
 
+# Whether a person belongs to a group (person id, group id); None: trust the chat alone.
+MembershipCheck = Callable[[str, str], bool]
+
+
 class ReplyBox:
-    def __init__(self) -> None:
+    def __init__(self, is_member: MembershipCheck | None = None) -> None:
+        self._is_member = is_member
         self._questions: dict[str, OpenQuestion] = {}
         self._by_chat: dict[ChatRef, list[str]] = defaultdict(list)
         self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
@@ -63,9 +74,14 @@ class ReplyBox:
     def route(self, message: InboundMessage) -> str | None:
         """File ``message`` under its instruction; return the instruction id (None: unmatched)."""
         question = self._questions.get(message.in_reply_to or "")
+        if question is not None and not self.may_answer(question, message):
+            message = message.model_copy(update={"in_reply_to": None})
+            question = None
         if question is None:
             open_here = self._by_chat.get(message.chat, [])
             question = self._questions[open_here[-1]] if open_here else None
+            if question is not None and not self.may_answer(question, message):
+                question = None
         if question is None:
             engaged = self._engaged.get(message.chat)
             if not engaged:
@@ -78,6 +94,14 @@ class ReplyBox:
         self._inbox[question.instruction_id].append(message)
         self._events[question.instruction_id].set()
         return question.instruction_id
+
+    def may_answer(self, question: OpenQuestion, message: InboundMessage) -> bool:
+        """Whether ``message`` comes from the chat ``question`` was asked in."""
+        if message.chat != question.chat:
+            return False
+        if question.chat.kind == "dm":
+            return message.sender == question.chat.id
+        return self._is_member is None or self._is_member(message.sender, question.chat.id)
 
     def deliver(self, instruction_id: str, message: InboundMessage) -> None:
         """File a message known to belong to ``instruction_id`` (e.g. a requester's answer)."""

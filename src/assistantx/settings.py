@@ -2,6 +2,11 @@
 
 Nothing else in the code base reads ``os.environ``. Secrets are ``SecretStr`` so they are
 masked in reprs and logs. Components take the fields they need as arguments.
+
+The lock's keys follow one precedence rule in ``assistantx serve`` and ``assistantx
+lock-sim`` alike (``assistantx.lock.keys.load_lock_keys``): ``--key-file`` /
+``ASSISTANTX_LOCK_KEY_FILE`` (must exist) wins over ``ASSISTANTX_LOCK_SHARED_KEY``; with
+neither, the service generates ``DATA_DIR/lock-keys.json`` once and keeps using it.
 """
 
 from __future__ import annotations

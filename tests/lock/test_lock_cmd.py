@@ -8,7 +8,10 @@ from pathlib import Path
 import pytest
 
 from assistantx.cli import main
+from assistantx.cli.lock_cmd import _load_keys
 from assistantx.lock import LockKeys
+from assistantx.service.runtime import _lock_keys
+from assistantx.settings import Settings
 
 
 def test_lock_keys_new_then_rotate(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -39,3 +42,36 @@ def test_lock_sim_refuses_to_start_without_keys(
     bad.write_text("{not json")
     assert main(["lock-sim", "--port", "0", "--key-file", str(bad)]) == 2
     assert "not a lock key file" in capsys.readouterr().out
+
+
+def test_serve_and_lock_sim_pick_the_same_keys_by_one_rule(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Both a key file and a shared secret configured: the key file wins, for the service
+    and for lock-sim alike (else they would not understand each other)."""
+    key_file = tmp_path / "keys.json"
+    assert main(["lock-keys", "new", str(key_file)]) == 0
+    monkeypatch.setenv("ASSISTANTX_LOCK_KEY_FILE", str(key_file))
+    monkeypatch.setenv("ASSISTANTX_LOCK_SHARED_KEY", "a long shared secret for the test")
+    settings = Settings()
+    service = _lock_keys(settings, tmp_path / "data-unused")
+    lock_sim = _load_keys(settings.lock_key_file, settings)
+    from_file = LockKeys.from_file(key_file)
+    assert service.link_key == lock_sim.link_key == from_file.link_key
+    assert service.codes.current_id == lock_sim.codes.current_id == "k1"
+    # Only the secret: both derive the same keys from it.
+    monkeypatch.delenv("ASSISTANTX_LOCK_KEY_FILE")
+    settings = Settings()
+    service = _lock_keys(settings, tmp_path / "data-unused")
+    lock_sim = _load_keys(settings.lock_key_file, settings)
+    assert service.link_key == lock_sim.link_key != from_file.link_key
+
+
+def test_a_missing_key_file_is_a_clear_error_not_a_new_key(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    missing = tmp_path / "typo.json"
+    monkeypatch.delenv("ASSISTANTX_LOCK_SHARED_KEY", raising=False)
+    assert main(["lock-sim", "--port", "0", "--key-file", str(missing)]) == 2
+    assert f"lock-keys new {missing}" in capsys.readouterr().out
+    assert not missing.exists()

@@ -67,7 +67,11 @@ async def test_the_emulator_survives_a_garbage_and_slowloris_storm(
 ) -> None:
     rng = random.Random(7)
     controller = LockController(LOCK_ID, keys.codes, clock)
-    server = LockServer(controller, keys.link_key, timeouts=FAST, max_connections=64)
+    # Room for every attacker at once, so each one meets its own timeout (eviction of the
+    # oldest unauthenticated connections is tested in test_tcp_flood).
+    server = LockServer(
+        controller, keys.link_key, timeouts=FAST, max_connections=64, max_pending_per_peer=64
+    )
     _, port = await server.start()
     auth_frame = encode_frame(encode_message({"type": "auth", "version": 1, "nonce": "x" * 22}))
     attacks: list[Attack] = [
@@ -109,19 +113,25 @@ async def test_the_emulator_survives_a_garbage_and_slowloris_storm(
         await server.stop()
 
 
-async def test_connections_beyond_the_limit_are_turned_away(
-    keys: LockKeys, clock: SimClock
-) -> None:
+async def test_sessions_beyond_the_limit_are_turned_away(keys: LockKeys, clock: SimClock) -> None:
+    """``max_connections`` bounds authenticated sessions: a third client that proves the key
+    is hung up on at once; unauthenticated sockets do not count against it."""
     controller = LockController(LOCK_ID, keys.codes, clock)
     server = LockServer(controller, keys.link_key, timeouts=FAST, max_connections=2)
     _, port = await server.start()
     try:
-        held = [await asyncio.open_connection("127.0.0.1", port) for _ in range(2)]
-        await asyncio.sleep(0.05)
+        idle = [await asyncio.open_connection("127.0.0.1", port) for _ in range(4)]
+        held = []
+        for _ in range(2):
+            reader, writer = await asyncio.open_connection("127.0.0.1", port)
+            await client_handshake(reader, writer, link_key=keys.link_key, handshake_s=1.0)
+            held.append((reader, writer))
         reader, writer = await asyncio.open_connection("127.0.0.1", port)
+        await client_handshake(reader, writer, link_key=keys.link_key, handshake_s=1.0)
         assert await _read_until_closed(reader, 0.4) < 0.3  # turned away at once
+        assert server.session_count == 2
         await close_writer(writer)
-        for _, held_writer in held:
+        for _, held_writer in [*held, *idle]:
             await close_writer(held_writer)
     finally:
         await server.stop()

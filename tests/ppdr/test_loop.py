@@ -9,11 +9,14 @@ from scripted_reasoner import ScriptedReasoner, Step
 
 from assistantx.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from assistantx.assistant import Assistant, AssistantParts
+from assistantx.errors import ReasonerError
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AvailabilityUpdate
 from assistantx.office import Office, load_office
+from assistantx.ppdr.agents import AgentContext
 from assistantx.ppdr.loop import LoopLimits
 from assistantx.sim.office import SimOffice
+from assistantx.trace import Decision, Percept, Plan
 
 
 @pytest.fixture(scope="module")
@@ -203,3 +206,18 @@ async def test_cancel_tells_the_requester(office: Office) -> None:
         await assistant.stop()
     assert stm.trace.outcome == "failed"
     assert "cancelled" in sim.messenger.sent[-1].text
+
+
+async def test_a_broken_reasoner_is_reported_in_words_with_details_in_the_trace(
+    office: Office,
+) -> None:
+    class Broken(ScriptedReasoner):
+        async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
+            raise ReasonerError(f"model at http://10.1.2.3:8000 failed on {ctx.stm.instruction_id}")
+
+    stm, sim, _ = await _run(office, [], reasoner=Broken([]))
+    told = sim.messenger.sent[-1].text
+    assert told == (
+        "[failed] I could not complete this: my reasoning model did not give a usable answer."
+    )
+    assert "http://10.1.2.3:8000" in (stm.trace.summary or "")  # for the operator

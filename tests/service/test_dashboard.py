@@ -256,6 +256,15 @@ async def test_the_operator_plays_the_people_at_the_locker(tmp_path: Path) -> No
                 lambda cs, p=person: any(c["person"] == p and c["scannable"] for c in cs),
             )
             code = next(c for c in codes if c["person"] == person)  # type: ignore[union-attr]
+            # What the panel shows names people and things (no stapler:zhang, no ins-…).
+            assert code["person_name"] == {"zhang": "Zhang Wei", "lee": "Lee Ming"}[person]
+            assert (
+                code["task"]
+                == {
+                    "zhang": "put Zhang Wei's stapler into the locker",
+                    "lee": "take Zhang Wei's stapler out of the locker",
+                }[person]
+            )
             scanned = await client.post("/v1/locker/scan", json={"code_id": code["code_id"]})
             assert scanned.status_code == 200
             assert scanned.json()["kind"] == "code_accepted"
@@ -276,3 +285,50 @@ async def test_the_operator_plays_the_people_at_the_locker(tmp_path: Path) -> No
         assert unknown.status_code == 404
         assert "no-such-code" in unknown.json()["message"]
         assert (await client.post("/v1/locker/scan", json={"code": "x"})).status_code == 422
+
+
+async def test_the_codes_panel_shows_each_codes_true_state(tmp_path: Path) -> None:
+    """issued → scanned the moment the lock accepts it (no Scan button any more) → used once
+    the door closes; a cancelled instruction's code is revoked at the lock."""
+    async with serve(tmp_path) as client:
+        await client.patch("/v1/people/wang", json={"available": False})
+        created = await client.post(
+            "/v1/instructions", json={"requester": "lee", "text": "a stapler please"}
+        )
+        instruction = created.json()["id"]
+        asked = await _wait_for(
+            client, "/v1/chats/dm/zhang", lambda ms: any(m["question_id"] for m in ms)
+        )
+        question = next(m["question_id"] for m in asked if m["question_id"])  # type: ignore[union-attr,index]
+        await client.post(
+            "/v1/messages",
+            json={"sender": "zhang", "text": "Yes, you can have it.", "in_reply_to": question},
+        )
+
+        def state_of(person: str, codes: list[dict[str, object]]) -> object:
+            return next((c["state"] for c in codes if c["person"] == person), None)
+
+        codes = await _wait_for(
+            client, "/v1/locker/codes", lambda cs: state_of("zhang", cs) == "issued"
+        )
+        zhang = next(c for c in codes if c["person"] == "zhang")  # type: ignore[union-attr]
+        await client.post("/v1/locker/scan", json={"code_id": zhang["code_id"]})
+        codes = (await client.get("/v1/locker/codes")).json()
+        assert state_of("zhang", codes) == "scanned"  # before the door closes
+        await client.post("/v1/locker/close")
+        await _wait_for(client, "/v1/locker/codes", lambda cs: state_of("zhang", cs) == "used")
+
+        codes = await _wait_for(
+            client, "/v1/locker/codes", lambda cs: state_of("lee", cs) == "issued"
+        )
+        lee = next(c for c in codes if c["person"] == "lee")  # type: ignore[union-attr]
+        await client.post(f"/v1/instructions/{instruction}/cancel")
+        await _wait_for(
+            client, f"/v1/instructions/{instruction}", lambda b: b["status"] == "cancelled"
+        )
+        codes = await _wait_for(
+            client, "/v1/locker/codes", lambda cs: state_of("lee", cs) == "revoked"
+        )
+        assert state_of("zhang", codes) == "used"  # type: ignore[arg-type]
+        scanned = await client.post("/v1/locker/scan", json={"code_id": lee["code_id"]})
+        assert (scanned.json()["kind"], scanned.json()["reason"]) == ("code_rejected", "revoked")

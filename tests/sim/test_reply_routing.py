@@ -49,3 +49,39 @@ def test_group_answers_are_filed_under_the_asking_instruction() -> None:
     assert box.route(_msg("gao", group, "me too")) == "ins-3"
     assert [m.sender for m in box.take("ins-3")] == ["hu", "gao"]
     assert box.route(_msg("lin", ChatRef(kind="group", id="study_group"))) is None
+
+
+def test_a_reference_to_a_question_asked_in_another_dm_is_not_an_answer() -> None:
+    box = ReplyBox()
+    wang, zhang = ChatRef(kind="dm", id="wang"), ChatRef(kind="dm", id="zhang")
+    box.ask("q-wang", "ins-1", wang, 0)
+    # Zhang quotes, in his own DM, the question sent to Wang: it answers nothing.
+    assert box.route(_msg("zhang", zhang, "yes, I have one", reply_to="q-wang")) is None
+    assert box.take("ins-1") == []
+    # Wang, in his DM, does answer it.
+    assert box.route(_msg("wang", wang, "yes", reply_to="q-wang")) == "ins-1"
+    assert [m.sender for m in box.take("ins-1")] == ["wang"]
+
+
+def test_a_foreign_reference_is_dropped_not_kept_as_an_answer() -> None:
+    box = ReplyBox()
+    wang, zhang = ChatRef(kind="dm", id="wang"), ChatRef(kind="dm", id="zhang")
+    box.ask("q-wang", "ins-1", wang, 0)
+    box.ask("q-zhang", "ins-2", zhang, 1)
+    # Zhang names Wang's question; he may still answer the one asked in his own DM.
+    assert box.route(_msg("zhang", zhang, "I have one", reply_to="q-wang")) == "ins-2"
+    assert [m.in_reply_to for m in box.take("ins-2")] == ["q-zhang"]
+    assert box.take("ins-1") == []
+
+
+def test_a_group_question_is_answered_only_in_the_group_by_members() -> None:
+    members = {"office_work": {"hu", "gao"}}
+    box = ReplyBox(is_member=lambda person, group: person in members.get(group, set()))
+    group = ChatRef(kind="group", id="office_work")
+    box.ask("q9", "ins-3", group, 0)
+    assert box.route(_msg("hu", ChatRef(kind="dm", id="hu"), "me", reply_to="q9")) is None
+    other = ChatRef(kind="group", id="study_group")
+    assert box.route(_msg("lin", other, "me", reply_to="q9")) is None
+    assert box.route(_msg("lin", group, "me", reply_to="q9")) is None  # not a member
+    assert box.route(_msg("gao", group, "me", reply_to="q9")) == "ins-3"
+    assert [m.sender for m in box.take("ins-3")] == ["gao"]

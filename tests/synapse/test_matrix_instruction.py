@@ -211,7 +211,7 @@ async def run_stapler_instruction(world: MatrixOffice) -> Transcript:
     code_text = await zhang.expect(sender=me, msgtype="m.text", not_room=world.group_room)
     code_image = await zhang.expect(sender=me, msgtype="m.image")
     assert (code_text.room_id, code_image.room_id) == (zhang_dm, zhang_dm)
-    assert "put stapler:zhang into the locker" in code_text.body
+    assert "put your stapler into the locker" in code_text.body
     payload = await zhang.read_qr(code_image)
     events = await hand_over_at_robot(world.sim.robot, world.locker, world.desk("zhang"), payload)
     assert [(e.kind, e.person) for e in events] == [
@@ -222,7 +222,7 @@ async def run_stapler_instruction(world: MatrixOffice) -> Transcript:
     code_text = await lee.expect(sender=me, msgtype="m.text", not_room=world.group_room)
     code_image = await lee.expect(sender=me, msgtype="m.image")
     assert (code_text.room_id, code_image.room_id) == (lee_dm, lee_dm)  # the DM Lee opened
-    assert "take stapler:zhang out of the locker" in code_text.body
+    assert "take Zhang Wei's stapler out of the locker" in code_text.body
     payload = await lee.read_qr(code_image)
     events = await hand_over_at_robot(world.sim.robot, world.locker, world.desk("lee"), payload)
     assert [e.kind for e in events] == ["code_accepted", "door_closed"]

@@ -2,7 +2,8 @@
 make and rotate key files.
 
 Keys come from ``--key-file`` (or ``ASSISTANTX_LOCK_KEY_FILE``), else from the shared secret
-in ``ASSISTANTX_LOCK_SHARED_KEY``. Rotation without downtime::
+in ``ASSISTANTX_LOCK_SHARED_KEY``: the same rule as ``assistantx serve``
+(``assistantx.lock.keys.load_lock_keys``). Rotation without downtime::
 
     assistantx lock-keys rotate keys.json   # new current key, previous one kept
     kill -HUP <lock-sim pid>                # the lock now accepts both keys
@@ -20,7 +21,7 @@ from pathlib import Path
 
 from assistantx.clock import WallClock
 from assistantx.lock.controller import LockController
-from assistantx.lock.keys import KeyringError, LockKeys, new_key
+from assistantx.lock.keys import KeyringError, LockKeys, load_lock_keys, new_key
 from assistantx.lock.link import LinkTimeouts
 from assistantx.lock.server import LockServer
 from assistantx.settings import Settings
@@ -34,10 +35,28 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     sim.add_argument("--port", type=int, help="default ASSISTANTX_LOCK_PORT; 0 picks a free one")
     sim.add_argument("--lock-id", help="default ASSISTANTX_LOCK_ID")
     sim.add_argument("--key-file", type=Path, help="default ASSISTANTX_LOCK_KEY_FILE")
-    sim.add_argument("--handshake-timeout", type=float, default=5.0, metavar="S")
+    sim.add_argument(
+        "--handshake-timeout",
+        type=float,
+        default=2.0,
+        metavar="S",
+        help="an unauthenticated connection gets this long to authenticate",
+    )
     sim.add_argument("--frame-timeout", type=float, default=5.0, metavar="S")
     sim.add_argument("--idle-timeout", type=float, default=30.0, metavar="S")
-    sim.add_argument("--max-connections", type=int, default=32)
+    sim.add_argument("--max-connections", type=int, default=32, help="authenticated sessions")
+    sim.add_argument(
+        "--max-pending",
+        type=int,
+        default=64,
+        help="connections still authenticating, in all (the oldest is evicted beyond it)",
+    )
+    sim.add_argument(
+        "--max-pending-per-peer",
+        type=int,
+        default=8,
+        help="connections still authenticating from one address (the oldest is evicted)",
+    )
     sim.add_argument("--event-log", type=int, default=1024, help="events kept for resuming")
     sim.set_defaults(func=run_lock_sim)
 
@@ -48,15 +67,18 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 
 
 def _load_keys(key_file: Path | None, settings: Settings) -> LockKeys:
-    if key_file is not None:
-        return LockKeys.from_file(key_file)
     secret = settings.lock_shared_key
-    if secret is None:
+    if key_file is None and secret is None:
         raise KeyringError("give --key-file, or set ASSISTANTX_LOCK_SHARED_KEY")
-    return LockKeys.from_secret(secret.get_secret_value())
+    return load_lock_keys(
+        key_file=key_file, secret=secret.get_secret_value() if secret is not None else None
+    )
 
 
 def run_lock_sim(args: argparse.Namespace) -> int:
+    if min(args.max_connections, args.max_pending, args.max_pending_per_peer) < 1:
+        print("lock-sim: --max-connections and --max-pending* must be at least 1")
+        return 2
     try:
         settings = Settings()
         args.port = settings.lock_port if args.port is None else args.port
@@ -86,6 +108,8 @@ async def _serve(args: argparse.Namespace, keys: LockKeys, timeouts: LinkTimeout
         port=args.port,
         timeouts=timeouts,
         max_connections=args.max_connections,
+        max_pending=args.max_pending,
+        max_pending_per_peer=args.max_pending_per_peer,
         reload_keys=(lambda: LockKeys.from_file(key_file).codes) if key_file else None,
     )
     try:

@@ -14,6 +14,11 @@ Key file (JSON, base64url-encoded 32-byte keys)::
 
 A single secret (e.g. from ``ASSISTANTX_LOCK_SHARED_KEY``) also works: both keys are derived
 from it with HKDF-SHA256, the code key under id ``k0``.
+
+Where the keys come from follows one rule everywhere (``assistantx serve``, ``assistantx
+lock-sim``, the settings), in ``load_lock_keys``: a key file (``--key-file`` or
+``ASSISTANTX_LOCK_KEY_FILE``) wins; else the shared secret; else a fallback file the caller
+names (the service's ``DATA_DIR/lock-keys.json``, generated on first start).
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ from __future__ import annotations
 import base64
 import binascii
 import json
+import os
 import secrets
 from dataclasses import dataclass
 from pathlib import Path
@@ -192,6 +198,31 @@ class LockKeys:
             },
             indent=2,
         )
+
+
+def load_lock_keys(
+    *, key_file: Path | None, secret: str | None, fallback_file: Path | None = None
+) -> LockKeys:
+    """The lock's keys by the one precedence rule: ``key_file`` (must exist), else the shared
+    ``secret``, else ``fallback_file`` (created, owner-only, when missing)."""
+    if key_file is not None:
+        if not key_file.exists():
+            raise KeyringError(
+                f"lock key file {key_file} does not exist "
+                f"(create one with `assistantx lock-keys new {key_file}`)"
+            )
+        return LockKeys.from_file(key_file)
+    if secret is not None:
+        return LockKeys.from_secret(secret)
+    if fallback_file is None:
+        raise KeyringError("no lock keys: give a key file or a shared secret")
+    if fallback_file.exists():
+        return LockKeys.from_file(fallback_file)
+    keys = LockKeys.generate()
+    fd = os.open(fallback_file, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    with os.fdopen(fd, "w", encoding="utf-8") as handle:
+        handle.write(keys.to_json())
+    return keys
 
 
 def _derive(secret: bytes, info: bytes) -> bytes:

@@ -52,7 +52,7 @@ class LinkTimeouts:
     """Every wait on the link, in seconds; tests use short ones."""
 
     connect_s: float = 5.0  # TCP connect + handshake, client side
-    handshake_s: float = 5.0  # whole handshake, server side (slowloris guard)
+    handshake_s: float = 2.0  # whole handshake, server side (slowloris guard; one round trip)
     frame_s: float = 5.0  # first byte to last byte of one frame
     idle_s: float = 30.0  # server hangs up on a client silent this long (half-open guard)
     keepalive_s: float = 10.0  # client pings this often; keep it well under idle_s

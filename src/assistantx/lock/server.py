@@ -14,6 +14,13 @@ Nothing a client sends can crash the server: each connection is its own task, bo
 handshake timeout, a per-frame timeout, an idle timeout, a frame size limit, a connection
 limit and a bounded outbound queue (a client too slow to read its events is dropped; it
 resumes from its last sequence when it reconnects).
+
+Connections are counted in two pools. *Pending* ones have not authenticated yet: they get a
+short handshake deadline, and at most ``max_pending_per_peer`` per peer address and
+``max_pending`` in all; a new connection beyond either bound evicts the *oldest* pending one
+(of that peer, or overall) instead of being refused, so idle or slow unauthenticated sockets
+can never keep the rightful client out, even from the same address (loopback). Only
+*sessions*, which proved the shared key, count against ``max_connections``.
 """
 
 from __future__ import annotations
@@ -56,8 +63,14 @@ class LockServer:
         timeouts: LinkTimeouts | None = None,
         max_frame: int = DEFAULT_MAX_FRAME,
         max_connections: int = 32,
+        max_pending: int = 64,
+        max_pending_per_peer: int = 8,
         reload_keys: Callable[[], Keyring] | None = None,
     ) -> None:
+        """``max_connections``: authenticated sessions; ``max_pending`` and
+        ``max_pending_per_peer``: connections still in the handshake (oldest evicted)."""
+        if min(max_connections, max_pending, max_pending_per_peer) < 1:
+            raise ValueError("connection limits must be at least 1")
         self.controller = controller
         self.link_key = link_key
         self.host = host
@@ -67,8 +80,14 @@ class LockServer:
         self.max_connections = max_connections
         self._reload_keys = reload_keys
         self._server: asyncio.Server | None = None
+        self.max_pending = max_pending
+        self.max_pending_per_peer = max_pending_per_peer
         self._connections: set[asyncio.Task[None]] = set()
+        # Connections still in the handshake, oldest first, with their peer address.
+        self._pending: dict[asyncio.Task[None], str] = {}
+        self._sessions: set[asyncio.Task[None]] = set()
         self.refused_handshakes = 0
+        self.evicted_pending = 0
 
     @property
     def address(self) -> tuple[str, int]:
@@ -80,6 +99,16 @@ class LockServer:
     @property
     def connection_count(self) -> int:
         return len(self._connections)
+
+    @property
+    def session_count(self) -> int:
+        """Authenticated connections."""
+        return len(self._sessions)
+
+    @property
+    def pending_count(self) -> int:
+        """Connections still in the handshake."""
+        return len(self._pending)
 
     async def start(self) -> tuple[str, int]:
         if self._server is None:
@@ -120,15 +149,34 @@ class LockServer:
         except Exception:
             logger.exception("lock %s: key reload failed; old keys kept", self.controller.lock_id)
 
+    def _make_room_for(self, peer: str) -> None:
+        """Evict the oldest pending connections so that one more from ``peer`` fits."""
+        from_peer = [t for t, p in self._pending.items() if p == peer]
+        while len(from_peer) >= self.max_pending_per_peer:
+            self._evict(from_peer.pop(0))
+        while len(self._pending) >= self.max_pending:
+            self._evict(next(iter(self._pending)))
+
+    def _evict(self, task: asyncio.Task[None]) -> None:
+        peer = self._pending.pop(task, "?")
+        self.evicted_pending += 1
+        if self.evicted_pending == 1 or self.evicted_pending % 100 == 0:
+            logger.warning(
+                "lock: unauthenticated connections piling up (from %s); evicted %d so far",
+                peer,
+                self.evicted_pending,
+            )
+        task.cancel()
+
     async def _accept(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
-        if len(self._connections) >= self.max_connections:
-            logger.warning("lock: connection limit %s reached; refusing", self.max_connections)
-            await close_writer(writer)
-            return
+        peername = writer.get_extra_info("peername")
+        peer = str(peername[0]) if isinstance(peername, tuple) and peername else "?"
+        self._make_room_for(peer)
         # The connection runs in a task of its own, so stop() cancels it without cancelling
         # the stream callback's task (which asyncio reports as an unhandled error).
         task = asyncio.create_task(self._serve_connection(reader, writer))
         self._connections.add(task)
+        self._pending[task] = peer
         try:
             await task
         except asyncio.CancelledError:
@@ -139,6 +187,8 @@ class LockServer:
             logger.exception("lock: connection handler failed")
         finally:
             self._connections.discard(task)
+            self._pending.pop(task, None)
+            self._sessions.discard(task)
             await close_writer(writer)
 
     async def _serve_connection(
@@ -159,6 +209,15 @@ class LockServer:
             self.refused_handshakes += 1
             logger.info("lock: handshake with %s failed: %s", peer, exc)
             return
+        task = asyncio.current_task()
+        assert task is not None
+        self._pending.pop(task, None)
+        if len(self._sessions) >= self.max_connections:
+            logger.warning(
+                "lock: session limit %s reached; refusing %s", self.max_connections, peer
+            )
+            return
+        self._sessions.add(task)
         logger.info("lock: %s authenticated", peer)
         session = _Session(self, channel)
         await session.run()

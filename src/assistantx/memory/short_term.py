@@ -9,13 +9,34 @@ from pydantic import BaseModel, Field
 from assistantx.dialogue import DialogueTurn
 from assistantx.trace import Trace
 
+CodeState = Literal["issued", "scanned", "used", "revoked"]
+
 
 class IssuedCode(BaseModel):
+    """A one-time code this instruction sent. ``scanned``: the lock accepted it (the door
+    opened); ``used``: the door closed after it; ``revoked``: withdrawn at the lock (the
+    hand-over timed out, or the instruction ended first)."""
+
     code_id: str
     person: str
     item: str
     purpose: str
     used: bool = False
+    scanned: bool = False
+    revoked: bool = False
+
+    @property
+    def state(self) -> CodeState:
+        if self.used:
+            return "used"
+        if self.scanned:
+            return "scanned"
+        return "revoked" if self.revoked else "issued"
+
+    @property
+    def live(self) -> bool:
+        """Still opens the locker (sent, neither scanned nor revoked)."""
+        return not (self.used or self.scanned or self.revoked)
 
 
 class EmbodiedState(BaseModel):

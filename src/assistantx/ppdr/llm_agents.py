@@ -186,7 +186,7 @@ def check_actions(actions: Sequence[Action], resolver: Resolver, stm: ShortTermM
             raise ValueError(f"{where}: stop ends the instruction, so it must be the last action")
         if isinstance(grounded, SendQR):
             for code in stm.embodied.codes:
-                if not code.used and (code.person, code.item, code.purpose) == (
+                if not (code.used or code.revoked) and (code.person, code.item, code.purpose) == (
                     grounded.contact,
                     grounded.item,
                     grounded.purpose,

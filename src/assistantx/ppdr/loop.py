@@ -19,7 +19,15 @@ import logging
 from dataclasses import dataclass
 
 from assistantx.actions import Action, Move, Outcome, SendQR, Stop, WaitInPlace
-from assistantx.errors import AssistantXError, GroundingError
+from assistantx.errors import (
+    AssistantXError,
+    GroundingError,
+    LLMError,
+    LockError,
+    MessengerError,
+    ReasonerError,
+    RobotError,
+)
 from assistantx.executors import Executor
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
@@ -105,7 +113,8 @@ class InstructionRunner:
             raise
         except AssistantXError as exc:
             logger.warning("instruction %s failed: %s", stm.instruction_id, exc)
-            await self._end(stm, "failed", f"I could not complete this: {exc}")
+            told = f"I could not complete this: {_in_words(exc)}."
+            await self._end(stm, "failed", told, detail=str(exc))
         except Exception as exc:
             logger.exception("instruction %s crashed", stm.instruction_id)
             await self._end(stm, "failed", f"I hit an internal error ({type(exc).__name__}).")
@@ -113,9 +122,11 @@ class InstructionRunner:
             await self._end(stm, "failed", "The instruction ended without an outcome.")
         return stm
 
-    async def _end(self, stm: ShortTermMemory, outcome: Outcome, summary: str) -> None:
+    async def _end(
+        self, stm: ShortTermMemory, outcome: Outcome, summary: str, detail: str | None = None
+    ) -> None:
         try:
-            await self._finish(stm, outcome, summary)
+            await self._finish(stm, outcome, summary, detail)
             await self._emit(
                 stm, "instruction_ended", None, outcome=stm.trace.outcome, summary=stm.trace.summary
             )
@@ -323,8 +334,11 @@ class InstructionRunner:
         trace.summary = summary
         trace.ended_at = self._now()
 
-    async def _finish(self, stm: ShortTermMemory, outcome: Outcome, summary: str) -> None:
-        """End without the reasoner's Stop, telling the requester (never raises)."""
+    async def _finish(
+        self, stm: ShortTermMemory, outcome: Outcome, summary: str, detail: str | None = None
+    ) -> None:
+        """End without the reasoner's Stop, telling the requester ``summary`` (never raises);
+        ``detail`` (an error's own words, with ids and addresses) goes to the trace only."""
         if stm.trace.outcome is None:
             stop = Stop(outcome=outcome, summary=summary)
             try:
@@ -339,4 +353,21 @@ class InstructionRunner:
                 )
             except Exception:
                 logger.exception("could not tell %s the outcome", stm.requester)
-            self._close(stm, outcome, summary)
+            self._close(stm, outcome, f"{summary} ({detail})" if detail else summary)
+
+
+def _in_words(exc: AssistantXError) -> str:
+    """Why an instruction broke off, for the requester: the details (addresses, ids) are in
+    the log, not in the message."""
+    match exc:
+        case RobotError():
+            return "the robot could not get where it had to go"
+        case LockError():
+            return "the robot's locker did not respond as it should"
+        case MessengerError():
+            return "I could not send a message I needed to send"
+        case LLMError() | ReasonerError():
+            return "my reasoning model did not give a usable answer"
+        case GroundingError():
+            return "I could not tell who or what was meant"
+    return f"an internal problem ({type(exc).__name__})"

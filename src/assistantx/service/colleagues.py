@@ -5,13 +5,22 @@ sends through the built-in messenger and answer through it, so their replies lan
 journaled transcripts a human's would. Their world (who holds what, the codes in their hands,
 where the robot stands) is the demo's physical world; it is snapshotted into the journal with
 every checkpoint, and restored on start-up, so a restart does not undo a hand-over.
+
+A code's payload is a credential (it opens the locker), so it never enters the journal: the
+snapshot names each held code by a digest of its payload, and the payloads themselves live
+in the people's "phones", an owner-only file beside the journal (``CodePhones``), written
+before the snapshot that refers to them.
 """
 
 from __future__ import annotations
 
 import asyncio
 import dataclasses
+import hashlib
+import json
 import logging
+import os
+from pathlib import Path
 from typing import Any
 
 from assistantx.adapters.lock.local import LocalLocker
@@ -58,14 +67,63 @@ def snapshot(sim: SimOffice) -> dict[str, Any]:
         "made": sorted(world.made),
         "received": sorted(world.received),
         "messages_to": dict(world.messages_to),
-        "codes": [dataclasses.asdict(c) for c in sim.codes],
+        "codes": [_held_code_record(c) for c in sim.codes],
         "told": sorted([i or "", p] for i, p in sim.told),
         "robot": {"place": sim.robot.place, "odometer_m": sim.robot.odometer_m},
     }
 
 
-def restore(sim: SimOffice, state: dict[str, Any]) -> None:
-    """Put the simulated world back as it was journaled; re-arm the codes people hold."""
+def code_ref(payload: str) -> str:
+    """Names a payload in the journal without revealing it."""
+    return hashlib.sha256(payload.encode("utf-8")).hexdigest()[:32]
+
+
+def _held_code_record(code: HeldCode) -> dict[str, Any]:
+    record = dataclasses.asdict(code)
+    record["ref"] = code_ref(record.pop("payload"))
+    return record
+
+
+class CodePhones:
+    """The QR payloads simulated people hold, kept out of the journal in an owner-only file."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self._written: dict[str, str] | None = None
+
+    def save(self, codes: list[HeldCode]) -> None:
+        held = {code_ref(c.payload): c.payload for c in codes if c.payload}
+        if held == self._written:
+            return
+        temporary = self.path.with_name(f".{self.path.name}.tmp")
+        fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            json.dump(held, handle)
+        temporary.replace(self.path)
+        self._written = held
+
+    def load(self) -> dict[str, str]:
+        try:
+            data = json.loads(self.path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            return {}
+        except (OSError, ValueError) as exc:
+            logger.warning("simulated people's codes unreadable (%s); they hold none", exc)
+            return {}
+        return {str(k): str(v) for k, v in data.items()} if isinstance(data, dict) else {}
+
+
+def _held_code(record: dict[str, Any], payloads: dict[str, str]) -> HeldCode | None:
+    fields = {k: v for k, v in record.items() if k != "ref"}
+    payload = fields.pop("payload", None) or payloads.get(str(record.get("ref")))
+    if not payload:
+        return None  # the phone lost it: the person holds no code
+    return HeldCode(**{**fields, "payload": payload, "scheduled": False})
+
+
+def restore(sim: SimOffice, state: dict[str, Any], payloads: dict[str, str] | None = None) -> None:
+    """Put the simulated world back as it was journaled; re-arm the codes people hold
+    (``payloads``: from ``CodePhones.load``)."""
     world = sim.world
     world.holder = {str(k): str(v) for k, v in state["holder"].items()}
     world.signed = {(a, b) for a, b in state["signed"]}
@@ -77,7 +135,8 @@ def restore(sim: SimOffice, state: dict[str, Any]) -> None:
     world.received = {(a, b) for a, b in state["received"]}
     world.messages_to = {str(k): int(v) for k, v in state["messages_to"].items()}
     sim.told = {(i or None, p) for i, p in state["told"]}
-    sim.codes = [HeldCode(**{**c, "scheduled": False}) for c in state["codes"]]
+    held = [_held_code(c, payloads or {}) for c in state["codes"]]
+    sim.codes = [c for c in held if c is not None]
     robot = state["robot"]
     sim.robot.restore(robot["place"] or sim.office.robot.home, float(robot["odometer_m"]))
     if isinstance(sim.locker, LocalLocker):  # an in-process lock forgot them; a TCP one did not

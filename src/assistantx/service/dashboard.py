@@ -38,12 +38,14 @@ from assistantx.adapters.messenger.base import OutboundMessage
 from assistantx.errors import InvalidCodeError, MapError
 from assistantx.lock.codes import unseal
 from assistantx.lock.keys import Keyring
+from assistantx.memory.short_term import CodeState, IssuedCode
 from assistantx.office import Office
 from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.occupancy_map import OccupancyMap, load_map
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
 from assistantx.service.runtime import ServiceRuntime
+from assistantx.wording import PURPOSE_TEXT, item_phrase, person_name
 
 logger = logging.getLogger(__name__)
 
@@ -184,7 +186,13 @@ class LockerCode(BaseModel):
     person: str
     item: str
     purpose: str
+    person_name: str = Field(description="the holder's display name")
+    task: str = Field(description="what the holder does at the locker, in words")
     used: bool = Field(description="the instruction saw it used at the locker")
+    state: CodeState = Field(
+        description="issued (still opens the locker), scanned (the door opened), used (the "
+        "door closed after it) or revoked (withdrawn: hand-over timed out, instruction ended)"
+    )
     scannable: bool = Field(description="the dashboard knows the code's payload")
 
 
@@ -251,12 +259,25 @@ def _recent_codes(runtime: ServiceRuntime, book: CodeBook, limit: int = 30) -> l
                 person=c.person,
                 item=c.item,
                 purpose=c.purpose,
+                person_name=person_name(runtime.office, c.person),
+                task=PURPOSE_TEXT.get(c.purpose, "{item}").format(
+                    item=item_phrase(runtime.office, c.item)
+                ),
                 used=c.used,
+                state=_code_state(c, runtime),
                 scannable=book.payload(c.code_id) is not None,
             )
             for c in stm.embodied.codes
         )
     return codes
+
+
+def _code_state(code: IssuedCode, runtime: ServiceRuntime) -> CodeState:
+    """The instruction's view, brought up to date by what the lock reported since (a scan
+    shows at once, not only when the instruction next looks at the locker)."""
+    if code.state != "issued":
+        return code.state
+    return runtime.locker.code_states.get(code.code_id, "issued")
 
 
 # -- the router ------------------------------------------------------------------------------

@@ -13,8 +13,9 @@ router = APIRouter(prefix="/v1", tags=["devices"])
 
 @router.get("/robot", response_model=RobotState)
 async def robot(runtime: Runtime, caller: Caller) -> RobotState:
-    """Pose, place (None while driving), planned path; plus who holds the robot."""
-    return runtime.sim.robot.state().model_copy(update={"goal": runtime.assistant.lease.holder})
+    """Pose, place (None while driving), goal, planned path; plus the instruction holding the
+    robot (``holder``)."""
+    return runtime.sim.robot.state().model_copy(update={"holder": runtime.assistant.lease.holder})
 
 
 @router.get("/locker", response_model=LockStatus)

@@ -1,4 +1,11 @@
-"""/v1/memory and /v1/people: the belief graph as JSON, and the operator's corrections."""
+"""/v1/memory and /v1/people: the belief graph as JSON, and the operator's corrections.
+
+Who reads what: the graph (people, places, availability, ownership) is the office's shared
+directory, readable with any token. The applied updates carry instruction ids and evidence
+that quotes people's direct messages word for word, so a person token sees only the updates
+made by their own instructions; the operator sees all of them. ``/v1/people/{id}`` carries no
+evidence and no instruction ids.
+"""
 
 from __future__ import annotations
 
@@ -18,8 +25,29 @@ router = APIRouter(prefix="/v1", tags=["memory"])
 
 @router.get("/memory")
 async def get_memory(runtime: Runtime, caller: Caller) -> dict[str, Any]:
-    """The long-term memory graph (node-link JSON) and the updates applied to it."""
-    return runtime.assistant.ltm.snapshot()
+    """The long-term memory graph (node-link JSON) and the updates applied to it (a person
+    sees only the updates their own instructions made)."""
+    snapshot = runtime.assistant.ltm.snapshot()
+    if caller.person is not None:
+        snapshot["updates"] = _own_updates(runtime, caller.person, snapshot["updates"])
+    return snapshot
+
+
+def _own_updates(
+    runtime: ServiceRuntime, person: str, updates: list[dict[str, Any]]
+) -> list[dict[str, Any]]:
+    mine: dict[str, bool] = {}
+    kept = []
+    for update in updates:
+        instruction_id = update.get("instruction_id")
+        if not isinstance(instruction_id, str):
+            continue  # the operator's corrections
+        if instruction_id not in mine:
+            record = runtime.journal.instruction(instruction_id)
+            mine[instruction_id] = record is not None and record.requester == person
+        if mine[instruction_id]:
+            kept.append(update)
+    return kept
 
 
 def _person(ltm: LongTermMemory, person_id: str) -> PersonOut:

@@ -1,4 +1,4 @@
-"""/metrics in the Prometheus text format (token required: it reveals activity)."""
+"""/metrics in the Prometheus text format (operator only: it reveals everyone's activity)."""
 
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ router = APIRouter(tags=["metrics"])
 
 @router.get("/metrics", response_class=PlainTextResponse)
 async def metrics(runtime: Runtime, caller: Caller) -> PlainTextResponse:
+    caller.require_operator()
     return PlainTextResponse(
         runtime.metrics.render(), media_type="text/plain; version=0.0.4; charset=utf-8"
     )

@@ -35,7 +35,7 @@ from assistantx.clock import WallClock
 from assistantx.errors import LockError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
-from assistantx.lock.keys import LockKeys
+from assistantx.lock.keys import LockKeys, load_lock_keys
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.office import Office, load_office
@@ -56,6 +56,7 @@ logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
+SIM_CODES_FILE = "sim-codes.json"  # simulated people's QR payloads: credentials, not journaled
 
 
 class ServiceRuntime:
@@ -68,6 +69,7 @@ class ServiceRuntime:
     sim: SimOffice
     locker: Locker
     lock_keys: LockKeys
+    phones: colleagues.CodePhones
     messenger: BuiltinMessenger
     assistant: Assistant
     durability: Durability
@@ -108,6 +110,7 @@ class ServiceRuntime:
         # Timestamps are real time; the speed-up shortens simulated durations only.
         self.clock = WallClock(s.effective_speedup)
         self.lock_keys = _lock_keys(s, data_dir)
+        self.phones = colleagues.CodePhones(data_dir / SIM_CODES_FILE)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
         robot_place = world["robot"]["place"] if world else None
@@ -155,7 +158,7 @@ class ServiceRuntime:
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
-            colleagues.restore(self.sim, world)
+            colleagues.restore(self.sim, world, self.phones.load())
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
             matrix = self.matrix.messenger
@@ -221,6 +224,7 @@ class ServiceRuntime:
         return LocalLocker(controller, clock=self.clock, expiry_s=expiry_s)
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
+        self.phones.save(self.sim.codes)  # before the snapshot that names them
         return {colleagues.SIM_STATE: colleagues.snapshot(self.sim)}
 
     async def _register_with_sim(self, stm: Any) -> None:
@@ -284,14 +288,11 @@ def _data_dir(path: Path) -> Path:
 
 
 def _lock_keys(settings: Settings, data_dir: Path) -> LockKeys:
-    """The lock's keys: the shared secret, else the key file, else one kept in the data dir."""
-    if settings.lock_shared_key is not None:
-        return LockKeys.from_secret(settings.lock_shared_key.get_secret_value())
-    path = settings.lock_key_file or data_dir / LOCK_KEYS_FILE
-    if path.exists():
-        return LockKeys.from_file(path)
-    keys = LockKeys.generate()
-    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
-    with os.fdopen(fd, "w", encoding="utf-8") as f:
-        f.write(keys.to_json())
-    return keys
+    """The lock's keys by the rule of ``load_lock_keys``: key file, shared secret, else one
+    generated once into the data dir."""
+    secret = settings.lock_shared_key
+    return load_lock_keys(
+        key_file=settings.lock_key_file,
+        secret=secret.get_secret_value() if secret is not None else None,
+        fallback_file=data_dir / LOCK_KEYS_FILE,
+    )

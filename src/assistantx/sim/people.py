@@ -19,6 +19,7 @@ from assistantx.sim.understanding import (
 )
 from assistantx.sim.world import LOCKER, World
 from assistantx.task_schema import SEAL_TOOL
+from assistantx.wording import item_phrase
 
 
 @dataclass(frozen=True)
@@ -30,6 +31,13 @@ class Reply:
 
 def _item_name(world: World, type_id: str) -> str:
     return world.office.item_type(type_id).name
+
+
+def _thing(world: World, item: str, speaker: str) -> str:
+    """An item as ``speaker`` names it: "my stapler", "Lee Ming's document"."""
+    if item.partition(":")[2] == speaker:
+        return f"my {_item_name(world, item.partition(':')[0])}"
+    return item_phrase(world.office, item)
 
 
 def can_do(world: World, person: str, request: str) -> bool:
@@ -132,17 +140,19 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     """Why ``person`` cannot do ``purpose`` with ``item`` at the locker now (None: they can)."""
     where = world.holder.get(item)
     item_type = item.split(":", 1)[0]
+    thing = _thing(world, item, person)
+    missing = f"{thing[0].upper()}{thing[1:]} is not in the locker."
     if purpose == "deposit":
         if where == person:
             return None
         if where is not None and where == place and place in world.places_of(person):
             return None  # e.g. a lunch kept in the fridge they sit next to
-        return f"I don't have {item}."
+        return f"I don't have {thing}."
     if purpose == "collect":
-        return None if where == LOCKER else f"{item} is not in the locker."
+        return None if where == LOCKER else missing
     if purpose in ("sign", "seal", "copy", "heat"):
         if where != LOCKER:
-            return f"{item} is not in the locker."
+            return missing
         if purpose == "seal" and not world.owns(person, SEAL_TOOL):
             return "I don't have the seal."
         shape: OperationShape = "transform" if purpose == "copy" else "treat"
@@ -152,16 +162,18 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     if purpose == "produce":
         op = world.office.making(item_type)
         if op is None or not world.can_operate(person, op.id):
-            return f"I can't make {item_type} here."
+            return f"I can't make {_item_name(world, item_type)} here."
         if not any(f.location == place for f in world.office.offering(op.id)):
             return f"The robot is not at a place that offers {op.name}."
         owner = item.split(":", 1)[1]
         if op.input is not None and op.shape(world.office) == "render":
             if (person, f"{op.input}:{owner}") not in world.received:
-                return f"I haven't received the file to {op.name} ({op.input}:{owner})."
+                what = _thing(world, f"{op.input}:{owner}", person)
+                return f"I haven't received the file to {op.name} ({what})."
         if op.input is not None and op.shape(world.office) == "transform":
             if world.holder.get(f"{op.input}:{owner}") != LOCKER:
-                return f"The item to {op.name} ({op.input}:{owner}) is not in the locker."
+                what = _thing(world, f"{op.input}:{owner}", person)
+                return f"The item to {op.name} ({what}) is not in the locker."
         return None
     return f"I don't know how to {purpose}."
 

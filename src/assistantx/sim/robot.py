@@ -39,6 +39,7 @@ class SimRobot(RobotBase):
         self._speed = speed_mps
         self.place: str | None = office.robot.home
         self.moving = False
+        self.goal: str | None = None
         self.odometer_m = 0.0
 
     async def move_to(self, location_id: str) -> MoveResult:
@@ -49,12 +50,12 @@ class SimRobot(RobotBase):
         start = self.place or self._office.robot.home
         distance = self._distance(start, target.id) if start != target.id else 0.0
         duration = distance / self._speed
-        self.moving, self.place = True, None
+        self.moving, self.place, self.goal = True, None, target.id
         try:
             await self._clock.sleep(duration)
         finally:
             # Cancelled mid-way, the kinematic base is simply taken to stand at the target.
-            self.moving, self.place = False, target.id
+            self.moving, self.place, self.goal = False, target.id, None
         self.odometer_m += distance
         return MoveResult(place=target.id, distance_m=distance, duration_s=duration)
 
@@ -67,6 +68,7 @@ class SimRobot(RobotBase):
             place=self.place,
             pose=Pose(x=loc.x, y=loc.y),
             moving=self.moving,
+            goal=self.goal,
             odometer_m=self.odometer_m,
         )
 

@@ -32,8 +32,10 @@ from assistantx.symbolic.planning import (
     PhaseView,
     TaskView,
     describe,
+    role_text,
 )
 from assistantx.symbolic.roles import Role, Roles, RoleState
+from assistantx.wording import item_phrase, person_name, place_name
 
 MAX_ACTIONS = 4
 MAX_CLARIFICATIONS = 3  # questions to the requester in all (one re-ask of each)
@@ -96,7 +98,8 @@ class Decider:
             return self._confirm(task.states[phase.phase.role.key])
         if isinstance(phase.phase, Forward):
             target = phase.person or phase.phase.target_role.fixed or ev.requester
-            return f"forward {phase.phase.file} to {target}", [
+            what = item_phrase(self.office, phase.phase.file)
+            return f"forward {what} to {person_name(self.office, target)}", [
                 ForwardFile(source=phase.phase.source, target=target, file=phase.phase.file)
             ]
         return self._handover(phase, phase.phase, ev)
@@ -105,19 +108,22 @@ class Decider:
         role = state.role
         if state.status == "ask" and state.person is not None:
             who = state.person
-            return f"ask {who} (best candidate to {role.kind})", [
+            doing = role_text(role, self.office)
+            return f"ask {self._name(who)} (best candidate to {doing})", [
                 Inquire(contact=who, question=self.roles.question(role, who)),
                 Wait(reason=f"waiting for {self._name(who)}'s answer", timeout_s=REPLY_TIMEOUT_S),
             ]
         if state.status == "waiting" and state.person is not None:
-            return f"still waiting for {state.person}", [
+            return f"still waiting for {self._name(state.person)}", [
                 Wait(
                     reason=f"waiting for {self._name(state.person)}'s answer",
                     timeout_s=REPLY_TIMEOUT_S,
                 )
             ]
         if state.status == "group" and state.group is not None:
-            return f"nobody known can {role.kind}: ask the {state.group} group", [
+            doing = role_text(role, self.office)
+            group = person_name(self.office, state.group)
+            return f"nobody known can {doing}: ask the {group} group", [
                 Inquire(contact=state.group, question=self.roles.group_question(role)),
                 Wait(reason="waiting for a helper in the group chat", timeout_s=REPLY_TIMEOUT_S),
             ]
@@ -138,7 +144,7 @@ class Decider:
         for item, purpose in view.items:
             if not ev.used(item, purpose) and not ev.holds_code(person, item, purpose):
                 actions.append(SendQR(contact=person, item=item, purpose=purpose))
-        thought = f"hand-over with {person} at {place}"
+        thought = f"hand-over with {self._name(person)} at {place_name(self.office, place)}"
         if any(isinstance(a, Move) for a in actions) and any(q.group for q in ev.questions):
             # Late helpers in a group chat may still write while the robot drives; their
             # message would cut the wait at the locker short, so wait in the next step.

@@ -87,7 +87,10 @@ class Evidence:
 
     def holds_code(self, person: str, item: str, purpose: str) -> bool:
         return any(
-            c.person == person and c.item == item and c.purpose == purpose and not c.used
+            c.person == person
+            and c.item == item
+            and c.purpose == purpose
+            and not (c.used or c.revoked)
             for c in self.codes
         )
 

@@ -25,6 +25,7 @@ from assistantx.symbolic.evidence import Evidence
 from assistantx.symbolic.roles import Role, RoleKind, Roles, RoleState
 from assistantx.task_schema import Task, TaskFrame, operation_of
 from assistantx.trace import Plan, SubGoal
+from assistantx.wording import PURPOSE_TEXT, item_phrase, item_type_name, person_name
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
 
@@ -339,7 +340,7 @@ class Planner:
             return PhaseView(
                 phase,
                 state.bound,
-                f"find who can {phase.role.kind} ({_item_text(phase.role)})",
+                f"find who can {role_text(phase.role, self.office)}",
                 person=state.person,
             )
         if isinstance(phase, Forward):
@@ -366,11 +367,18 @@ class Planner:
         done = len(items) == len(phase.legs) and all(ev.used(i, p) for i, p in items)
         person = state.person if state.bound else None
         place = self.roles.meeting_place(phase.role, person, ltm) if person else None
-        what = ", ".join(f"{p} {i}" for i, p in items) or phase.legs[0].item_type
+        what = ", ".join(
+            PURPOSE_TEXT[p].format(item=item_phrase(self.office, i)) for i, p in items
+        ) or role_text(phase.role, self.office)
+        who = (
+            person_name(self.office, person)
+            if person
+            else f"whoever can {role_text(phase.role, self.office)}"
+        )
         return PhaseView(
             phase,
             done,
-            f"hand-over with {person or phase.role.kind}: {what}",
+            f"hand-over with {who}: {what}",
             person=person,
             place=place,
             items=items,
@@ -385,15 +393,15 @@ class Planner:
 
     def _why(self, state: RoleState) -> str:
         role = state.role
-        what = _item_text(role)
+        what = role_text(role, self.office)
         if not state.excluded and state.group is None:
-            return f"nobody in memory can {role.kind} ({what})"
+            return f"nobody I know of can {what}"
         if role.kind == "receive" and list(state.excluded) == [role.requester]:
             return "you did not come to the robot to collect it"
         parts = [f"{self.office.person(p).name} {why}" for p, why in state.excluded.items()]
         if state.group is not None:
             parts.append(f"nobody in the {self.office.group(state.group).name} group could help")
-        return f"no one could {role.kind} ({what}): " + ", ".join(parts)
+        return f"no one could {what}: " + ", ".join(parts)
 
     # -- the Plan of the trace -----------------------------------------------------------
     def plan_model(self, agenda: Agenda, notes: str = "") -> Plan:
@@ -422,8 +430,28 @@ def _role_key(phase: Phase) -> str | None:
     return phase.target_role.key
 
 
-def _item_text(role: Role) -> str:
-    return role.item_type or "help"
+# What a role's person is asked to do, in words (role kinds are internal tokens).
+_ROLE_VERBS: dict[str, str] = {
+    "lend": "lend {a}",
+    "give": "hand over {the}",
+    "keep": "take {the} out for the robot",
+    "receive": "receive the delivery",
+    "print": "print {the}",
+    "copy": "copy {the}",
+    "sign": "sign {the}",
+    "seal": "stamp {the} with the seal",
+    "produce": "make {a}",
+    "heat": "heat {the}",
+    "send_file": "send {the}",
+}
+
+
+def role_text(role: Role, office: Office) -> str:
+    """What the role's person is asked to do, in words: "lend a stapler"."""
+    thing = item_type_name(office, role.item_type) if role.item_type else "it"
+    article = "" if thing == "it" else "a "
+    the = thing if thing == "it" else f"the {thing}"
+    return _ROLE_VERBS.get(role.kind, "help").format(a=f"{article}{thing}", the=the)
 
 
 def describe(task: Task, office: Office, you: str | None = None) -> str:
@@ -435,6 +463,11 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
             return "you"
         return office.person(person).name if person else "anyone"
 
+    def owner_s(person: str | None) -> str:
+        if person is not None and person == you:
+            return "your"
+        return f"{name(person)}'s"
+
     item = office.item_type(task.item).name if task.item else "item"
     whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
@@ -443,7 +476,7 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         case "transfer":
             return f"bring {whose} to {to}"
         case "print":
-            return f"print {name(task.owner)}'s file for {to}"
+            return f"print {owner_s(task.owner)} file for {to}"
         case "copy":
             return f"copy {whose} for {to}"
         case "sign":
@@ -455,5 +488,5 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         case "heat":
             return f"heat {whose} for {to}"
         case "send_file":
-            return f"pass {name(task.owner)}'s file to {to}"
+            return f"pass {owner_s(task.owner)} file to {to}"
     return task.kind  # pragma: no cover

@@ -57,6 +57,9 @@ class Locker(ABC):
 
     def __init__(self) -> None:
         self._subscribers: list[tuple[asyncio.Queue[LockEvent], asyncio.Event | None]] = []
+        # What the lock reported of each code since we connected: "scanned" once accepted,
+        # "used" once the door it opened closed (for live views; instructions keep their own).
+        self.code_states: dict[str, Literal["scanned", "used"]] = {}
 
     async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
         """Connect; idempotent."""
@@ -99,6 +102,10 @@ class Locker(ABC):
         self._subscribers = [(q, n) for q, n in self._subscribers if q is not queue]
 
     def _publish(self, event: LockEvent) -> None:
+        if event.code_id is not None and event.kind == "code_accepted":
+            self.code_states[event.code_id] = "scanned"
+        elif event.code_id is not None and event.kind == "door_closed":
+            self.code_states[event.code_id] = "used"
         for queue, notify in self._subscribers:
             queue.put_nowait(event)
             if notify is not None:

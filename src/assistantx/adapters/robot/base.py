@@ -30,7 +30,10 @@ class RobotState(BaseModel):
     place: str | None = Field(description="location id the robot stands at, None while driving")
     pose: Pose
     moving: bool = False
-    goal: str | None = None
+    goal: str | None = Field(default=None, description="location id the robot drives to")
+    holder: str | None = Field(
+        default=None, description="the instruction holding the robot (set by the service)"
+    )
     path: list[tuple[float, float]] = Field(default_factory=list, description="planned path, m")
     particles: list[tuple[float, float, float]] | None = Field(
         default=None, description="a sample of the localizer's particle cloud (x, y, yaw)"

@@ -166,9 +166,12 @@ async function refreshLocker() {
 async function refreshRobot() {
   const robot = await api("/v1/robot");
   mapView.setRobot(robot);
-  const place = robot.place ? (state.memory?.places[robot.place] ?? robot.place) : null;
+  // Places by name: ids (desk_03) and instruction ids are not for people to read.
+  const named = (id) => (id ? (state.memory?.places[id] ?? id.replaceAll("_", " ")) : null);
+  const place = named(robot.place);
+  const goal = named(robot.goal);
   $("#robot-status").textContent = robot.moving
-    ? `Robot: driving${robot.goal ? ` (for ${robot.goal})` : ""}`
+    ? `Robot: driving${goal ? ` to ${goal}` : ""}`
     : `Robot: at ${place ?? "an unnamed spot"}, ${robot.odometer_m.toFixed(1)} m driven`;
 }
 

@@ -25,10 +25,10 @@ export class LockerPanel {
       return;
     }
     keepFocus(this.codesList, () => replace(this.codesList, codes.length ? codes.map((code) => h("li", { dataset: { code: code.code_id, key: code.code_id } },
-      h("span", { class: "what" }, `${code.person}: ${code.purpose} ${code.item}`, h("span", { class: "hint" }, ` · ${code.instruction_id}`)),
-      badge(code.used ? "used" : "issued", code.used ? "done" : "queued"),
-      code.scannable && !code.used
-        ? h("button", { type: "button", onclick: (e) => this.scan(code, e.currentTarget), "aria-label": `Scan ${code.person}'s code for ${code.item}` }, "Scan")
+      h("span", { class: "what" }, `${code.person_name}: ${code.task}`),
+      badge(code.state, { used: "done", scanned: "running", revoked: "failed" }[code.state] ?? "queued"),
+      code.scannable && code.state === "issued"
+        ? h("button", { type: "button", onclick: (e) => this.scan(code, e.currentTarget), "aria-label": `Scan ${code.person_name}'s code to ${code.task}` }, "Scan")
         : null))
       : h("li", { class: "hint" }, "No codes issued yet.")));
   }
@@ -38,7 +38,7 @@ export class LockerPanel {
     try {
       const event = await api("/v1/locker/scan", { method: "POST", body: { code_id: code.code_id } });
       this.announce(event.kind === "code_accepted"
-        ? `Locker accepted ${code.person}'s code: the door is open.`
+        ? `Locker accepted ${code.person_name}'s code: the door is open.`
         : `Locker rejected the code (${event.reason ?? "rejected"}).`);
       await this.onChanged();
     } catch (err) {

@@ -1,0 +1,73 @@
+"""QR payloads are credentials: they never reach the journal, not even inside the simulated
+world's snapshot, while simulated colleagues hold them (real uvicorn server, real journal)."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import stat
+from pathlib import Path
+
+import httpx
+
+from assistantx.adapters.messenger.base import OutboundMessage
+from assistantx.ppdr.events import TraceEvent
+from assistantx.service.app import create_app
+from assistantx.service.server import service_server
+from assistantx.settings import Settings
+from service.server import OPERATOR, free_port
+
+
+async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -> None:
+    data_dir = tmp_path / "data"
+    settings = Settings(data_dir=data_dir, operator_token=OPERATOR, speedup=50)
+    app = create_app(settings)
+    port = free_port()
+    server = service_server(app, "127.0.0.1", port, log_level="warning")
+    task = asyncio.create_task(server.serve())
+    while not server.started:
+        if task.done():
+            task.result()
+        await asyncio.sleep(0.02)
+    runtime = app.state.runtime
+    payloads: list[str] = []
+    snapshots: list[str] = []  # the simulated world as journaled while people held codes
+
+    async def note(message: OutboundMessage) -> None:
+        payloads.extend(a.qr_payload for a in message.attachments if a.qr_payload)
+
+    async def look(event: TraceEvent) -> None:
+        if event.kind == "action_result" and runtime.sim.codes:
+            snapshots.append(json.dumps(runtime.journal.state("sim_world")))
+
+    runtime.messenger.relay_to(note)
+    runtime.assistant.subscribe(look)
+    try:
+        async with httpx.AsyncClient(
+            base_url=f"http://127.0.0.1:{port}",
+            headers={"Authorization": f"Bearer {OPERATOR}"},
+            timeout=10,
+        ) as client:
+            created = await client.post(
+                "/v1/instructions", json={"requester": "lee", "text": "bring me a stapler"}
+            )
+            iid = created.json()["id"]
+            for _ in range(1200):
+                body = (await client.get(f"/v1/instructions/{iid}")).json()
+                if body["status"] not in ("queued", "running"):
+                    break
+                await asyncio.sleep(0.05)
+            assert body["status"] == "done", body
+    finally:
+        server.should_exit = True
+        await task
+
+    assert len(payloads) == 2  # the lender's code and the requester's
+    assert snapshots  # people held codes while the world was journaled
+    for snapshot in snapshots:
+        assert not [p for p in payloads if p in snapshot]
+        assert '"ref"' in snapshot  # each held code is named by a digest instead
+    journal_bytes = b"".join(p.read_bytes() for p in data_dir.glob("journal.sqlite3*"))
+    assert not [p for p in payloads if p.encode() in journal_bytes]
+    phones = data_dir / "sim-codes.json"  # where the simulated people keep them instead
+    assert stat.S_IMODE(phones.stat().st_mode) == 0o600

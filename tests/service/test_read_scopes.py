@@ -1,0 +1,93 @@
+"""What a person token may read of others' activity (memory updates, metrics, people), over
+HTTP against a real uvicorn server with simulated colleagues and the embedded reasoner."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+
+import httpx
+
+from service.server import LEE, OPERATOR, ZHANG
+
+OP = {"Authorization": f"Bearer {OPERATOR}"}
+AS_LEE = {"Authorization": f"Bearer {LEE}"}
+AS_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
+
+
+async def _finished(api: httpx.AsyncClient, iid: str) -> dict[str, object]:
+    for _ in range(600):
+        body: dict[str, object] = (await api.get(f"/v1/instructions/{iid}", headers=OP)).json()
+        if body["status"] not in ("queued", "running"):
+            return body
+        await asyncio.sleep(0.05)
+    raise AssertionError(f"{iid} did not finish: {body}")
+
+
+async def _memory_updates(api: httpx.AsyncClient, headers: dict[str, str]) -> list[dict]:  # type: ignore[type-arg]
+    r = await api.get("/v1/memory", headers=headers)
+    assert r.status_code == 200
+    updates: list[dict] = r.json()["updates"]  # type: ignore[type-arg]
+    return updates
+
+
+async def test_a_person_reads_only_their_own_instructions_memory_updates(
+    api: httpx.AsyncClient,
+) -> None:
+    r = await api.post(
+        "/v1/instructions",
+        json={"requester": "zhang", "text": "bring me a stapler"},
+        headers=AS_ZHANG,
+    )
+    zhang_iid = r.json()["id"]
+    await _finished(api, zhang_iid)
+    await api.patch("/v1/people/wang", json={"available": False}, headers=OP)
+
+    everything = await _memory_updates(api, OP)
+    by_zhang = [u for u in everything if u["instruction_id"] == zhang_iid]
+    assert by_zhang, "the instruction should have taught memory something"
+    assert any(u["instruction_id"] is None for u in everything)  # the operator's correction
+
+    assert await _memory_updates(api, AS_LEE) == []  # neither Zhang's nor the operator's
+    assert await _memory_updates(api, AS_ZHANG) == by_zhang
+
+    lee_sees = (await api.get("/v1/memory", headers=AS_LEE)).text
+    assert zhang_iid not in lee_sees
+    for update in by_zhang:
+        evidence = update["update"].get("evidence")
+        if evidence:
+            assert json.dumps(evidence)[1:-1] not in lee_sees
+
+
+async def test_metrics_are_for_the_operator(api: httpx.AsyncClient) -> None:
+    assert (await api.get("/metrics", headers=AS_LEE)).status_code == 403
+    r = await api.get("/metrics", headers=OP)
+    assert r.status_code == 200 and "assistantx_instructions" in r.text
+
+
+async def test_a_person_record_carries_no_instruction_ids_or_excerpts(
+    api: httpx.AsyncClient,
+) -> None:
+    r = await api.post(
+        "/v1/instructions",
+        json={"requester": "zhang", "text": "bring me a stapler"},
+        headers=AS_ZHANG,
+    )
+    zhang_iid = r.json()["id"]
+    await _finished(api, zhang_iid)
+    touched = {
+        u["update"].get("person") for u in await _memory_updates(api, OP) if u["instruction_id"]
+    } - {None}
+    assert touched
+    for person in touched:
+        body = (await api.get(f"/v1/people/{person}", headers=AS_LEE)).json()
+        assert set(body) == {
+            "id",
+            "name",
+            "available",
+            "observed_at",
+            "location",
+            "items",
+            "groups",
+        }
+        assert zhang_iid not in json.dumps(body)
