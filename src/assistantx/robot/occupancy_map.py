@@ -65,6 +65,11 @@ class OccupancyMap:
         return self.width * self.resolution, self.height * self.resolution
 
     @property
+    def obstacles(self) -> npt.NDArray[np.bool_]:
+        """Cells that stop a laser beam: occupied (>= 65 in scale mode); not unknown ones."""
+        return self.data >= 65
+
+    @property
     def occupied(self) -> npt.NDArray[np.bool_]:
         """Cells a robot cannot enter: occupied (>= 65 in scale mode) or unknown."""
         return (self.data >= 65) | (self.data < 0)

@@ -102,7 +102,7 @@ class NavigatorRobot(RobotBase):
         )
         # The planner on the map alone; the navigator may swap in one that holds obstacles it
         # saw, which must not leak into the shared anchor path table.
-        self._map_planner = self._navigator.planner
+        self._map_planner = self._navigator.map_planner
         self._paths = _PATH_TABLES.setdefault(self._map_planner, {})
         self._obstacles: list[tuple[float, float, float]] = []
         self._goal: str | None = None
@@ -272,8 +272,7 @@ class NavigatorRobot(RobotBase):
         """Remove the dropped obstacles from the world and from what the robot remembers."""
         self._obstacles.clear()
         self._navigator.set_world(self._grid)
-        self._navigator.planner = self._map_planner
-        self._navigator.costmap = self._map_planner.costmap
+        self._navigator.reset_obstacles()
 
     def _obstacle_points(self) -> FloatArray:
         points = []
