@@ -88,7 +88,7 @@ class GridPlanner:
         """Recompute the weights of the edges that touch cells of ``window`` from the costs."""
         y0, y1, x0, x1 = window
         # Edges into the window start one cell outside it; diagonals check side cells too.
-        h, w = int(self._node.shape[0]), int(self._node.shape[1])
+        h, w = self.costmap.grid.height, self.costmap.grid.width
         block = self._node[max(0, y0 - 1) : min(h, y1 + 1), max(0, x0 - 1) : min(w, x1 + 1)]
         rows = block[block >= 0]
         if rows.size == 0:
