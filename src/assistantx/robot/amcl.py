@@ -141,8 +141,9 @@ class LikelihoodField:
         bx, by = ranges * np.cos(angles), ranges * np.sin(angles)  # endpoints, robot frame
         ex = poses[:, 0:1] + cos_yaw * bx - sin_yaw * by
         ey = poses[:, 1:2] + sin_yaw * bx + cos_yaw * by
-        ix = np.floor((ex - grid.origin_x) * (1 / grid.resolution)).astype(np.int64)
-        iy = np.floor((ey - grid.origin_y) * (1 / grid.resolution)).astype(np.int64)
+        gx, gy = grid.to_grid_frame(ex, ey)
+        ix = np.floor(gx * (1 / grid.resolution)).astype(np.int64)
+        iy = np.floor(gy * (1 / grid.resolution)).astype(np.int64)
         inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
         flat = np.where(inside, iy * grid.width + ix, 0)
         log_p = np.where(inside, self.log_p[flat], self.log_p_off_map)

@@ -62,8 +62,7 @@ def cast_rays(
     heading = pose[2] + angles
     xs = pose[0] + np.cos(heading)[:, None] * t[None, :]
     ys = pose[1] + np.sin(heading)[:, None] * t[None, :]
-    ix = np.floor((xs - grid.origin_x) / grid.resolution).astype(np.int64)
-    iy = np.floor((ys - grid.origin_y) / grid.resolution).astype(np.int64)
+    ix, iy = grid.world_to_cell(xs, ys)
     inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
     hit = np.zeros(inside.shape, dtype=bool)  # off the map: nothing to hit
     hit[inside] = blocked[iy[inside], ix[inside]]
