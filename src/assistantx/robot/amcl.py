@@ -50,6 +50,9 @@ from assistantx.robot.lidar import LaserScan
 from assistantx.robot.motion_model import OdometryNoise, motion_model
 from assistantx.robot.occupancy_map import FREE, OccupancyMap
 
+LOST_W_RATIO = 0.9  # w_fast / w_slow below this is "lost": measured 1.0 while tracking and
+# 0.8-0.9 a few seconds after a kidnap in a small room (tests/robot/test_amcl.py)
+
 
 @dataclass(frozen=True)
 class AmclParams:
@@ -397,6 +400,14 @@ class ParticleFilter:
         if state.log_w_slow is None or state.log_w_fast is None:
             return 0.0
         return max(0.0, 1.0 - math.exp(min(0.0, state.log_w_fast - state.log_w_slow)))
+
+    @property
+    def localization_lost(self) -> bool:
+        """The localization-lost signal: the short-term average likelihood has fallen below
+        ``LOST_W_RATIO`` of the long-term one (w_fast / w_slow), i.e. the scans have stopped
+        fitting the map where the particles are. Only with recovery on (both
+        recovery_alpha_* > 0, as nav2); a caller can stop, re-localize or ask for help."""
+        return self.random_pose_probability > 1.0 - LOST_W_RATIO
 
     def resample(self) -> None:
         """KLD-sampling with augmented-MCL random poses; weights become uniform."""

@@ -237,7 +237,8 @@ class Navigator:
             return
         distances = self.filter.field.endpoint_distances(self.pose, ranges, angles)
         matched = float(np.mean(distances < 0.3))
-        self._bad_matches = self._bad_matches + 1 if matched < self.params.lost_match_ratio else 0
+        bad = matched < self.params.lost_match_ratio or self.filter.localization_lost
+        self._bad_matches = self._bad_matches + 1 if bad else 0
         if self._bad_matches >= self.params.lost_after_updates:
             raise LocalizationLostError(
                 f"the scan no longer matches the map ({matched:.0%} of beams) near "
