@@ -67,9 +67,9 @@ class GridPlanner:
         self._node[traversable] = np.arange(int(traversable.sum()))
         self._cells = np.argwhere(traversable)  # node -> (iy, ix)
         self._graph = self._build_graph(traversable)
-        # For snapping a start that strayed into the inscribed zone back to the nearest node.
-        _, nearest = distance_transform_edt(~traversable, return_indices=True)
-        self._nearest_free = np.asarray(nearest)
+        # For snapping a start that strayed into the inscribed zone back to the nearest node:
+        # made on first need (an EDT with indices is the costliest part of set-up).
+        self._nearest_free: npt.NDArray[np.intp] | None = None
 
     def layered(self, costmap: Costmap) -> GridPlanner:
         """A planner on ``costmap`` (the map's costs plus obstacles seen, never lower) that
@@ -200,6 +200,9 @@ class GridPlanner:
         node = int(self._node[iy, ix])
         if node >= 0:
             return node
+        if self._nearest_free is None:
+            _, nearest = distance_transform_edt(self._node < 0, return_indices=True)
+            self._nearest_free = np.asarray(nearest)
         ny, nx = (int(v) for v in self._nearest_free[:, iy, ix])
         snap = math.hypot(ny - iy, nx - ix) * self.costmap.grid.resolution
         if snap > self.params.start_snap_m or self._node[ny, nx] < 0:
