@@ -62,3 +62,17 @@ def test_check_names_file_location_and_problem(
     ]
     assert main(["map", "check"]) == 0
     assert "all in free space and reachable" in capsys.readouterr().out
+
+
+def test_serve_refuses_a_bad_anchor_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    anchors = load_anchors(REPO / "maps" / "office.anchors.yaml")
+    anchors["print_room"] = Anchor(-50.0, 3.0, 0.0)
+    bad = tmp_path / "bad.anchors.yaml"
+    save_anchors(anchors, bad)
+    monkeypatch.setenv("ASSISTANTX_DATA_DIR", str(tmp_path / "data"))
+    monkeypatch.setenv("ASSISTANTX_MAP_ANCHORS", str(bad))
+    assert main(["serve", "--port", "1"]) == 2
+    out = capsys.readouterr().out.strip().splitlines()
+    assert out == [f"error: {bad}: anchor 'print_room': (-50.00, 3.00) is off the map"]
