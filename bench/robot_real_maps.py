@@ -33,12 +33,15 @@ import time
 from pathlib import Path
 
 import numpy as np
+from scipy.ndimage import label
 
 from assistantx.errors import RobotError
 from assistantx.robot.amcl import LikelihoodField, ParticleFilter
 from assistantx.robot.anchor_check import check_anchors, place_anchors
 from assistantx.robot.anchors import Anchor, load_anchors
+from assistantx.robot.costmap import Costmap
 from assistantx.robot.diff_drive import PurePursuit, SimulatedBase
+from assistantx.robot.lidar import Lidar
 from assistantx.robot.navigation import NavigationParams, Navigator, shared_planner
 from assistantx.robot.occupancy_map import OccupancyMap, load_map
 
@@ -70,8 +73,6 @@ class RealWorld:
         self.anchors = list(anchors.values())
         self.planner = shared_planner(grid, params.inflation, params.planner)
         self.costmap = self.planner.costmap
-        from assistantx.robot.lidar import Lidar
-
         self.lidar = Lidar(grid, params.lidar)
         labels = _reachable(self.costmap, anchors)
         self.clear = np.argwhere(labels & (self.costmap.costs == 0))
@@ -97,12 +98,8 @@ class RealWorld:
         return PurePursuit(np.vstack(points), None)
 
 
-def _reachable(costmap: object, anchors: dict[str, Anchor]) -> np.ndarray:
-    from scipy.ndimage import label
-
-    from assistantx.robot.costmap import Costmap
-
-    assert isinstance(costmap, Costmap)
+def _reachable(costmap: Costmap, anchors: dict[str, Anchor]) -> np.ndarray:
+    """Cells the robot can reach from the anchors (they are mutually reachable)."""
     labels, _ = label(costmap.traversable)
     a = next(iter(anchors.values()))
     ix, iy = costmap.grid.world_to_cell(a.x, a.y)
