@@ -91,6 +91,7 @@ async def test_blocked_drive_with_the_item_in_the_locker_ends_in_words(office: O
     last = told[-1]
     assert office.location(office.person("lee").location).name in last
     assert "Zhang" in last and "stapler" in last and "locked in its locker" in last
+    assert "something blocks the way" in last and "(2.00" not in last
     zhang_place = office.location(office.person("zhang").location).name
     assert f"at {zhang_place}" in last  # where the robot is, by name
     assert "stapler:zhang" not in last and "lee" not in last.split()  # no internal ids

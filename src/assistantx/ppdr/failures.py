@@ -17,6 +17,13 @@ from assistantx.memory.short_term import ShortTermMemory
 from assistantx.office import Office
 from assistantx.trace import ActionResult
 
+# The robot's errors in words a person reads (their messages carry map coordinates).
+_REASONS = {
+    "BlockedError": "something blocks the way",
+    "LocalizationLostError": "the robot lost track of where it is",
+    "UnreachableError": "there is no way there on the map",
+}
+
 
 class FailureMemory:
     """The error class of each action signature's last failure. Only adapter errors count
@@ -79,7 +86,7 @@ def failure_summary(
         if isinstance(action, Move)
         else f"'{action.type}' kept failing"
     )
-    reason = result.observation.removeprefix("failed: ")
+    reason = _REASONS.get(result.error or "", result.observation.removeprefix("failed: "))
     lines = [f"{what}, twice for the same reason ({reason}), so I stopped trying."]
     where = robot_whereabouts(office, robot)
     contents = stm.embodied.locker_contents
