@@ -28,3 +28,13 @@ def office_anchors() -> dict[str, Anchor]:
 @pytest.fixture(scope="session")
 def office_planner(office_map: OccupancyMap) -> GridPlanner:
     return GridPlanner(Costmap.inflate(office_map))
+
+
+def shared_map(name: str) -> Path:
+    """A real map from ``shared/maps`` (next to the repository in CI; a worktree may sit
+    deeper, so look upwards)."""
+    for parent in REPO.parents:
+        candidate = parent / "shared" / "maps" / f"{name}.yaml"
+        if candidate.is_file():
+            return candidate
+    raise FileNotFoundError(f"shared/maps/{name}.yaml not found above {REPO}")

@@ -203,3 +203,33 @@ def test_beam_product_exponent_tempers_the_weights() -> None:
         pf.sensor_update(scan)
         spreads.append(float(np.ptp(pf.log_weights)))
     assert spreads[1] == pytest.approx(spreads[0] * 0.25)
+
+
+def test_localization_lost_signal_rises_after_a_kidnap_and_clears_on_recovery() -> None:
+    rng = np.random.default_rng(5)
+    world = _small_world()
+    lidar = Lidar(world, LidarParams(beams=120, max_range_m=8.0))
+    base = SimulatedBase(np.array([4.5, 2.0, 0.0]), rng)
+    params = AmclParams(
+        max_particles=3000, min_particles=300, recovery_alpha_slow=0.001, recovery_alpha_fast=0.1
+    )
+    pf = ParticleFilter(world, params, rng)
+    pf.initialize(base.true_pose)
+    lost_while_tracking = []
+    for _ in range(40):
+        _drive(pf, base, lidar, 1, rng)
+        lost_while_tracking.append(pf.localization_lost)
+    assert not any(lost_while_tracking)
+    base.teleport(np.array([4.0, 4.5, math.pi]))
+    lost_after = []
+    for _ in range(60):
+        _drive(pf, base, lidar, 1, rng)
+        lost_after.append(pf.localization_lost)
+    assert any(lost_after[:30])
+    _drive(pf, base, lidar, 240, rng)
+    assert not pf.localization_lost
+    # Without recovery (nav2's defaults, alphas 0) there is no signal to give.
+    quiet = ParticleFilter(world, AmclParams(max_particles=500, min_particles=100), rng)
+    quiet.initialize(np.array([1.0, 1.0, 0.0]))
+    _drive(quiet, base, lidar, 20, rng)
+    assert not quiet.localization_lost

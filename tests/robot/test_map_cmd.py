@@ -9,6 +9,8 @@ import numpy as np
 import pytest
 
 from assistantx.cli import main
+from assistantx.robot.anchors import Anchor, load_anchors, save_anchors
+from robot.conftest import REPO, shared_map
 
 
 def test_render_with_path_and_particles(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -32,3 +34,45 @@ def test_render_errors(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> No
     assert "'attic' is not a place on the map" in capsys.readouterr().out
     assert main(["map", "render", "--out", str(out), "--map", str(tmp_path / "no.yaml")]) == 1
     assert not out.exists()
+
+
+def test_render_a_real_map_without_anchors(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "depot.png"
+    assert main(["map", "render", "--out", str(out), "--map", str(shared_map("depot"))]) == 0
+    assert "(no anchors)" in capsys.readouterr().out
+    assert mpimg.imread(out).shape[1] > 300
+
+
+def test_check_names_file_location_and_problem(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    anchors = load_anchors(REPO / "maps" / "office.anchors.yaml")
+    anchors["kitchenette"] = Anchor(29.0, 24.0, 0.0)  # inside the counter
+    del anchors["desk_05"]
+    bad = tmp_path / "bad.anchors.yaml"
+    save_anchors(anchors, bad)
+    code = main(["map", "check", "--anchors", str(bad)])
+    lines = capsys.readouterr().out.splitlines()
+    assert code == 1
+    assert lines == [
+        f"{bad}: location 'desk_05' has no anchor",
+        f"{bad}: location 'kitchenette': (29.00, 24.00) is inside an obstacle",
+    ]
+    assert main(["map", "check"]) == 0
+    assert "all in free space and reachable" in capsys.readouterr().out
+
+
+def test_serve_refuses_a_bad_anchor_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    anchors = load_anchors(REPO / "maps" / "office.anchors.yaml")
+    anchors["print_room"] = Anchor(-50.0, 3.0, 0.0)
+    bad = tmp_path / "bad.anchors.yaml"
+    save_anchors(anchors, bad)
+    monkeypatch.setenv("ASSISTANTX_DATA_DIR", str(tmp_path / "data"))
+    monkeypatch.setenv("ASSISTANTX_MAP_ANCHORS", str(bad))
+    assert main(["serve", "--port", "1"]) == 2
+    out = capsys.readouterr().out.strip().splitlines()
+    assert out == [f"error: {bad}: anchor 'print_room': (-50.00, 3.00) is off the map"]

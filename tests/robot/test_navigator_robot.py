@@ -100,15 +100,14 @@ async def test_unknown_places_and_missing_anchors(
         NavigatorRobot(office, office_map, partial, SimClock())
 
 
-async def test_anchor_inside_a_wall_is_unreachable(
+async def test_anchor_inside_a_wall_is_refused_at_start_up(
     office: Office, office_map: OccupancyMap, office_anchors: dict[str, Anchor]
 ) -> None:
+    # Issue 18: a bad anchor is found when the robot is built, not when it first goes there.
     moved = dict(office_anchors)
     moved["kitchenette"] = Anchor(29.0, 24.0, 0.0)  # inside the counter
-    robot = _robot(office, office_map, moved, SimClock(), localize=False, start="desk_01")
-    with pytest.raises(UnreachableError, match="inside an obstacle"):
-        await robot.move_to("kitchenette")
-    assert robot.state().place == "desk_01"  # a failed plan does not move the robot
+    with pytest.raises(MapError, match=r"^anchor 'kitchenette': \(29.00, 24.00\) is inside"):
+        _robot(office, office_map, moved, SimClock(), localize=False, start="desk_01")
 
 
 async def test_blocked_door_in_fast_mode(

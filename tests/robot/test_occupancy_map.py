@@ -57,20 +57,23 @@ def test_header_fields_and_flip() -> None:
 
 def test_scale_mode_keeps_grey_levels() -> None:
     grid = load_map(FIXTURES / "scale.yaml")
-    # Grey 128: occupancy (255-128)/255 = 0.498 -> 1 + 98 * (0.498-0.196)/(0.65-0.196) = 66.
-    assert grid.data[1, 2] == 66
+    # Grey 128: occupancy (255-128)/255 = 0.498 -> nav2 map_server's
+    # rint(100 * (0.498-0.196)/(0.65-0.196)) = rint(66.5) = 67.
+    assert grid.data[1, 2] == 67
     assert grid.data[0, 0] == OCCUPIED
     assert grid.data[3, 3] == FREE
 
 
 def test_raw_mode_reads_values(tmp_path: Path) -> None:
-    (tmp_path / "raw.pgm").write_bytes(b"P5\n3 1\n255\n" + bytes([0, 100, 255]))
+    (tmp_path / "raw.pgm").write_bytes(b"P5\n5 1\n255\n" + bytes([0, 100, 205, 254, 42]))
     (tmp_path / "raw.yaml").write_text(
         "image: raw.pgm\nmode: raw\nresolution: 1\norigin: [0, 0, 0]\nnegate: 0\n"
         "occupied_thresh: 0.65\nfree_thresh: 0.196\n"
     )
     grid = load_map(tmp_path / "raw.yaml")
-    assert grid.data.tolist() == [[0, 100, 127]]
+    # nav2: a grey level 0..100 is the value; anything else (the saver's 205 unknown and
+    # 254 free) is unknown, never occupied.
+    assert grid.data.tolist() == [[0, 100, UNKNOWN, UNKNOWN, 42]]
 
 
 def test_sixteen_bit_pgm(tmp_path: Path) -> None:
@@ -110,10 +113,11 @@ def _write_header(tmp_path: Path, **changes: object) -> Path:
         ({"mode": "fancy"}, "mode must be one of"),
         ({"origin": [0, 0]}, "origin must be a list"),
         ({"negate": 2}, "negate must be 0 or 1"),
+        ({"negate": "yes"}, "negate must be 0 or 1"),
         ({"free_thresh": 0.9}, "free_thresh < occupied_thresh"),
         ({"image": "nowhere.pgm"}, "cannot read map image"),
         ({"image": "map.jpg"}, "unsupported map image type"),
-        ({"origin": [0, 0, 0.5]}, "rotated map origins"),
+        ({"origin": [0, 0, "north"]}, "origin must be a finite number"),
     ],
 )
 def test_bad_headers_name_the_file_and_problem(
@@ -205,3 +209,41 @@ def test_generator_reproduces_the_committed_map(tmp_path: Path, office_map: Occu
 def test_grid_validation() -> None:
     with pytest.raises(MapError, match="non-empty 2D"):
         OccupancyMap(np.zeros((0, 3), dtype=np.int8), 0.05)
+
+
+@pytest.mark.parametrize(("negate", "same_as"), [(False, "nav2"), (True, "negated")])
+def test_boolean_negate_is_read_as_map_server_does(
+    tmp_path: Path, negate: bool, same_as: str
+) -> None:
+    header = yaml.safe_load((FIXTURES / f"{same_as}.yaml").read_text())
+    header["image"] = str(FIXTURES / header["image"])
+    header["negate"] = negate
+    path = tmp_path / "m.yaml"
+    path.write_text(yaml.safe_dump(header))
+    np.testing.assert_array_equal(load_map(path).data, load_map(FIXTURES / f"{same_as}.yaml").data)
+
+
+def test_origin_yaw_turns_the_grid_about_its_lower_left_corner(tmp_path: Path) -> None:
+    header = yaml.safe_load((FIXTURES / "willow.yaml").read_text())
+    header["image"] = str(FIXTURES / header["image"])
+    header["origin"] = [1.0, 2.0, math.pi / 2]
+    path = tmp_path / "turned.yaml"
+    path.write_text(yaml.safe_dump(header))
+    grid = load_map(path)
+    assert grid.origin_yaw == pytest.approx(math.pi / 2)
+    # With the grid turned by 90 degrees, its x axis points along world +y: the centre of
+    # cell (ix=3, iy=4) lies at origin + (-(4.5) * 0.1, 3.5 * 0.1).
+    x, y = grid.cell_to_world(3, 4)
+    assert (float(x), float(y)) == pytest.approx((1.0 - 0.45, 2.0 + 0.35))
+    ix, iy = grid.world_to_cell(x, y)
+    assert (int(ix), int(iy)) == (3, 4)
+    assert grid.data[4, 3] == OCCUPIED and not grid.is_free(float(x), float(y))
+    # The LiDAR sees the turned walls: a beam from the cell centre (2, 2) towards the
+    # block at cells x 3-4 along the grid's +x (world +y) ends at its near face.
+    from assistantx.robot.lidar import cast_rays
+
+    sx, sy = grid.cell_to_world(1.5, 4.5)
+    ranges = cast_rays(
+        grid.obstacles, grid, np.array([float(sx), float(sy), math.pi / 2]), np.array([0.0]), 5.0
+    )
+    assert ranges[0] == pytest.approx(0.1, abs=0.03)

@@ -1,5 +1,6 @@
-"""``assistantx map render``: draw the office map with its anchors, a planned path and AMCL's
-particle cloud to a PNG."""
+"""``assistantx map render``: draw a map (with its anchors when it has them), a planned path
+and AMCL's particle cloud to a PNG. ``assistantx map check``: does every office location
+have an anchor in free space the robot fits in, reachable from the others?"""
 
 from __future__ import annotations
 
@@ -13,6 +14,10 @@ from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.clock import SimClock
 from assistantx.errors import AssistantXError
 from assistantx.office import DEFAULT_OFFICE, load_office
+from assistantx.robot.anchor_check import check_anchors
+from assistantx.robot.anchors import Anchor, load_anchors
+from assistantx.robot.costmap import Costmap
+from assistantx.robot.occupancy_map import load_map
 from assistantx.robot.render import render_map
 
 
@@ -28,6 +33,42 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     render.add_argument("--particles", action="store_true", help="show AMCL's particle cloud")
     render.add_argument("--seed", type=int, default=0)
     render.set_defaults(func=run_render)
+    check = map_sub.add_parser("check", help="check an office's anchors against a map")
+    check.add_argument("--map", type=Path, default=DEFAULT_MAP, help="map_server YAML")
+    check.add_argument("--anchors", type=Path, default=None, help="anchors YAML")
+    check.add_argument("--office", type=Path, default=DEFAULT_OFFICE, help="office YAML")
+    check.set_defaults(func=run_check)
+
+
+def _anchors_path(map_yaml: Path, anchors: Path | None) -> Path:
+    return anchors or map_yaml.with_name(map_yaml.stem + ".anchors.yaml")
+
+
+def run_check(args: argparse.Namespace) -> int:
+    """One line per problem: file, location id, problem; exit 1 if there is any."""
+    try:
+        office = load_office(args.office)
+        grid = load_map(args.map)
+        path = _anchors_path(args.map, args.anchors)
+        anchors = load_anchors(path)
+    except AssistantXError as exc:
+        print(f"error: {exc}")
+        return 1
+    lines = [
+        f"{path}: location {loc.id!r} has no anchor"
+        for loc in office.locations
+        if loc.id not in anchors
+    ]
+    used = {k: v for k, v in anchors.items() if k in {loc.id for loc in office.locations}}
+    lines += [
+        f"{path}: location {p.anchor!r}: {p.problem}"
+        for p in check_anchors(Costmap.inflate(grid), used)
+    ]
+    for line in lines:
+        print(line)
+    if not lines:
+        print(f"{path}: {len(used)} anchors, all in free space and reachable from each other")
+    return 1 if lines else 0
 
 
 def run_render(args: argparse.Namespace) -> int:
@@ -38,7 +79,21 @@ def run_render(args: argparse.Namespace) -> int:
         return 1
 
 
+def _render_plain(args: argparse.Namespace) -> int:
+    """The map alone, with its anchors if there is an anchors file: no office needed."""
+    grid = load_map(args.map)
+    path = _anchors_path(args.map, args.anchors)
+    anchors: dict[str, Anchor] | None = None
+    if args.anchors is not None or path.is_file():
+        anchors = load_anchors(path)
+    out = render_map(grid, args.out, anchors=anchors)
+    print(f"wrote {out}" + ("" if anchors else " (no anchors)"))
+    return 0
+
+
 async def _render(args: argparse.Namespace) -> int:
+    if not args.path and not args.particles:
+        return _render_plain(args)
     office = load_office(args.office)
     start, goal = None, None
     if args.path:

@@ -28,6 +28,10 @@ def _serve(args: argparse.Namespace) -> int:
     from assistantx.service.server import service_server
 
     settings = Settings()
+    problem = _robot_files_problem(settings)
+    if problem is not None:
+        print(f"error: {problem}")
+        return 2
     host = args.host or settings.host
     port = args.port if args.port is not None else settings.port
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
@@ -71,3 +75,27 @@ def _bind(host: str, port: int) -> socket.socket:
         raise
     listener.set_inheritable(True)
     return listener
+
+
+def _robot_files_problem(settings: Settings) -> str | None:
+    """Check the office, map and anchors before serving, so a bad anchor is one line naming
+    the file, the location id and the problem, not a start-up traceback (the robot built
+    here is cached per file version, so the service's own costs nothing more)."""
+    if settings.robot != "navigator":
+        return None
+    from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
+    from assistantx.clock import SimClock
+    from assistantx.errors import AssistantXError
+    from assistantx.office import load_office
+
+    try:
+        NavigatorRobot.from_files(
+            load_office(settings.office),
+            SimClock(),
+            map_yaml=settings.map or DEFAULT_MAP,
+            anchors_yaml=settings.map_anchors,
+            localize=False,
+        )
+    except AssistantXError as exc:
+        return str(exc)
+    return None

@@ -9,6 +9,8 @@ until Stop, the step limit or the deadline. Fixes what the research code got wro
   fed back;
 - Reflection's verdict and reason reach the next Planning and Decision, and its memory updates
   are applied to the graph with their evidence;
+- an action that fails again for the same reason ends the instruction (failures.py) instead
+  of a retry loop, and the requester is told where the robot and the locker's contents are;
 - the requester is always told the outcome, also on failure, step limit, deadline or cancel.
 """
 
@@ -40,6 +42,7 @@ from assistantx.memory.updates import (
 )
 from assistantx.ppdr.agents import AgentContext, Reasoner
 from assistantx.ppdr.events import EventKind, EventSink, TraceEvent
+from assistantx.ppdr.failures import FailureMemory, failure_summary
 from assistantx.ppdr.lease import BodyLease
 from assistantx.trace import ActionResult, Observation, TraceStep
 
@@ -77,6 +80,7 @@ class InstructionRunner:
         self._emit_sink = emit
         self._info = 0  # bumped on every new piece of information
         self._last_seen: dict[str, int] = {}  # action signature → info version when executed
+        self._failures = FailureMemory()
 
     def _now(self) -> float:
         return self.executor.ctx.clock.now()
@@ -264,6 +268,11 @@ class InstructionRunner:
             )
             if isinstance(action, Stop):
                 self._close(stm, action.outcome, action.summary)
+                break
+            if not result.ok and not result.refused and self._failures.repeated(result):
+                ctx = self.executor.ctx
+                summary = failure_summary(ctx.office, stm, ctx.robot, result)
+                await self._finish(stm, "failed", summary)
                 break
             if not result.ok:
                 break  # the rest of the decision assumed this one worked

@@ -50,6 +50,9 @@ from assistantx.robot.lidar import LaserScan
 from assistantx.robot.motion_model import OdometryNoise, motion_model
 from assistantx.robot.occupancy_map import FREE, OccupancyMap
 
+LOST_W_RATIO = 0.9  # w_fast / w_slow below this is "lost": measured 1.0 while tracking and
+# 0.8-0.9 a few seconds after a kidnap in a small room (tests/robot/test_amcl.py)
+
 
 @dataclass(frozen=True)
 class AmclParams:
@@ -141,8 +144,9 @@ class LikelihoodField:
         bx, by = ranges * np.cos(angles), ranges * np.sin(angles)  # endpoints, robot frame
         ex = poses[:, 0:1] + cos_yaw * bx - sin_yaw * by
         ey = poses[:, 1:2] + sin_yaw * bx + cos_yaw * by
-        ix = np.floor((ex - grid.origin_x) * (1 / grid.resolution)).astype(np.int64)
-        iy = np.floor((ey - grid.origin_y) * (1 / grid.resolution)).astype(np.int64)
+        gx, gy = grid.to_grid_frame(ex, ey)
+        ix = np.floor(gx * (1 / grid.resolution)).astype(np.int64)
+        iy = np.floor(gy * (1 / grid.resolution)).astype(np.int64)
         inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
         flat = np.where(inside, iy * grid.width + ix, 0)
         log_p = np.where(inside, self.log_p[flat], self.log_p_off_map)
@@ -396,6 +400,14 @@ class ParticleFilter:
         if state.log_w_slow is None or state.log_w_fast is None:
             return 0.0
         return max(0.0, 1.0 - math.exp(min(0.0, state.log_w_fast - state.log_w_slow)))
+
+    @property
+    def localization_lost(self) -> bool:
+        """The localization-lost signal: the short-term average likelihood has fallen below
+        ``LOST_W_RATIO`` of the long-term one (w_fast / w_slow), i.e. the scans have stopped
+        fitting the map where the particles are. Only with recovery on (both
+        recovery_alpha_* > 0, as nav2); a caller can stop, re-localize or ask for help."""
+        return self.random_pose_probability > 1.0 - LOST_W_RATIO
 
     def resample(self) -> None:
         """KLD-sampling with augmented-MCL random poses; weights become uniform."""

@@ -88,3 +88,42 @@ class Costmap:
         inside = (ix >= 0) & (ix < self.grid.width) & (iy >= 0) & (iy < self.grid.height)
         data[iy[inside], ix[inside]] = 100
         return Costmap.inflate(self.grid.with_data(data), self.params)
+
+
+Window = tuple[int, int, int, int]  # iy0, iy1, ix0, ix1 (half-open)
+
+
+def update_obstacles(
+    static: Costmap, layered: Costmap, marked: npt.NDArray[np.int64], changed: npt.NDArray[np.int64]
+) -> Window | None:
+    """Re-inflate, in place in ``layered.costs``, only the bounds around ``changed`` cells.
+
+    ``layered`` starts as a copy of ``static``; ``marked`` are the flat indices of every
+    cell the obstacle layer holds now. The window is the box round the changed cells grown
+    by the inflation radius (every cell whose cost may change); its costs are recomputed
+    from the lethal cells in a box grown by the radius once more, so the result equals a
+    full re-inflation of map + marks (nav2's updateBounds, then updateCosts on the bounds).
+    Returns the window, or None when nothing changed.
+    """
+    if changed.size == 0:
+        return None
+    grid = static.grid
+    reach = math.ceil(static.params.inflation_radius / grid.resolution) + 1
+    cy, cx = np.divmod(changed, grid.width)
+    y0, y1 = max(0, int(cy.min()) - reach), min(grid.height, int(cy.max()) + reach + 1)
+    x0, x1 = max(0, int(cx.min()) - reach), min(grid.width, int(cx.max()) + reach + 1)
+    my0, my1 = max(0, y0 - reach), min(grid.height, y1 + reach)
+    mx0, mx1 = max(0, x0 - reach), min(grid.width, x1 + reach)
+    lethal = static.costs[my0:my1, mx0:mx1] == LETHAL
+    my, mx = np.divmod(marked, grid.width)
+    near = (my >= my0) & (my < my1) & (mx >= mx0) & (mx < mx1)
+    lethal[my[near] - my0, mx[near] - mx0] = True
+    if lethal.any():
+        distance = np.asarray(distance_transform_edt(~lethal), dtype=np.float64) * grid.resolution
+    else:
+        distance = np.full(lethal.shape, math.inf)
+    costs = inflation_cost(distance, static.params)
+    unknown = (static.costs[my0:my1, mx0:mx1] == NO_INFORMATION) & ~lethal
+    costs[unknown] = NO_INFORMATION
+    layered.costs[y0:y1, x0:x1] = costs[y0 - my0 : y1 - my0, x0 - mx0 : x1 - mx0]
+    return (y0, y1, x0, x1)

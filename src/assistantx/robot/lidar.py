@@ -1,10 +1,16 @@
 """A simulated 2D LiDAR: vectorized ray casting on an occupancy grid.
 
-Every beam is marched in steps of half a cell; the first sample that lands in a blocked cell
-(occupied, unknown or off the map) ends the beam, and the range is taken half a step before
+Every beam is marched in steps of half a cell; the first sample that lands in an occupied
+cell (``OccupancyMap.obstacles``) ends the beam, and the range is taken half a step before
 it, so a range is within a quarter of a cell of the true distance. A beam that hits nothing
-within ``max_range_m`` returns ``max_range_m``, as a real scanner reports "no return". Range
-noise is Gaussian with ``range_noise_std_m`` and drawn from the Generator passed in.
+within ``max_range_m`` returns ``max_range_m``, as a real scanner reports "no return".
+
+Unknown cells and the space beyond the map edge hold nothing the scanner can see: a beam
+passes through them and, if it meets no occupied cell, is a max-range reading. This is the
+same world AMCL's likelihood field and the obstacle layer assume (both skip max-range
+readings and measure distances to occupied cells only); treating unknown space as a wall
+here made the sensor report walls the filter's map does not have. Range noise is Gaussian
+with ``range_noise_std_m`` and drawn from the Generator passed in.
 """
 
 from __future__ import annotations
@@ -56,10 +62,9 @@ def cast_rays(
     heading = pose[2] + angles
     xs = pose[0] + np.cos(heading)[:, None] * t[None, :]
     ys = pose[1] + np.sin(heading)[:, None] * t[None, :]
-    ix = np.floor((xs - grid.origin_x) / grid.resolution).astype(np.int64)
-    iy = np.floor((ys - grid.origin_y) / grid.resolution).astype(np.int64)
+    ix, iy = grid.world_to_cell(xs, ys)
     inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
-    hit = ~inside
+    hit = np.zeros(inside.shape, dtype=bool)  # off the map: nothing to hit
     hit[inside] = blocked[iy[inside], ix[inside]]
     first = np.argmax(hit, axis=1)
     any_hit = hit[np.arange(len(angles)), first]
@@ -72,12 +77,12 @@ class Lidar:
         self.grid = grid
         self.params = params or LidarParams()
         self.angles = beam_angles(self.params)
-        self._blocked = grid.occupied
+        self._blocked = grid.obstacles
 
     def set_world(self, grid: OccupancyMap) -> None:
         """Change what the scanner sees (e.g. an obstacle dropped into the world)."""
         self.grid = grid
-        self._blocked = grid.occupied
+        self._blocked = grid.obstacles
 
     def scan(self, pose: FloatArray, rng: np.random.Generator) -> LaserScan:
         p = self.params

@@ -6,7 +6,9 @@ and the particle filter. ``follow`` is a generator that drives one path and yiel
 simulated seconds that passed, so a caller can let a clock run alongside (and an asyncio
 caller can await between chunks). It raises:
 
-- BlockedError when the LiDAR sees an unmapped obstacle on the path ahead and no way round;
+- BlockedError when the obstacle layer holds an obstacle on the path ahead and there is no
+  way round it (the layer marks what the LiDAR sees that the map lacks and clears it again
+  by ray tracing and decay; see obstacle_layer.py);
 - LocalizationLostError when the scan stops matching the map at the estimated pose for
   several updates in a row (fewer than ``lost_match_ratio`` of the beams end near a wall);
 - BlockedError as well when the drive takes far longer than the path length warrants.
@@ -24,11 +26,12 @@ import numpy as np
 
 from assistantx.errors import BlockedError, LocalizationLostError, UnreachableError
 from assistantx.robot.amcl import AmclParams, ParticleFilter
-from assistantx.robot.costmap import Costmap, InflationParams
+from assistantx.robot.costmap import INSCRIBED, Costmap, InflationParams, update_obstacles
 from assistantx.robot.diff_drive import DriveParams, PurePursuit, SimulatedBase
 from assistantx.robot.geometry import FloatArray, angle_diff
 from assistantx.robot.lidar import LaserScan, Lidar, LidarParams
 from assistantx.robot.motion_model import OdometryNoise
+from assistantx.robot.obstacle_layer import ObstacleLayer, ObstacleLayerParams
 from assistantx.robot.occupancy_map import OccupancyMap
 from assistantx.robot.planner import GridPlanner, Path, PlannerParams
 
@@ -42,6 +45,7 @@ class NavigationParams:
     planner: PlannerParams = field(default_factory=PlannerParams)
     drive: DriveParams = field(default_factory=DriveParams)
     lidar: LidarParams = field(default_factory=LidarParams)
+    obstacles: ObstacleLayerParams = field(default_factory=ObstacleLayerParams)
     odometry_noise: OdometryNoise = field(
         default_factory=lambda: OdometryNoise(0.005, 0.005, 0.005, 0.005)
     )
@@ -90,8 +94,14 @@ class Navigator:
         self.grid = grid
         self.rng = rng
         self.localize = localize
-        self.planner = shared_planner(grid, self.params.inflation, self.params.planner)
-        self.costmap = self.planner.costmap
+        # The map's costmap and planner, shared by every robot on this map, and this robot's
+        # own layered copies, made when the obstacle layer first marks a cell.
+        self.map_planner = shared_planner(grid, self.params.inflation, self.params.planner)
+        self.planner = self.map_planner
+        self.costmap = self.map_planner.costmap
+        self.obstacles = ObstacleLayer(
+            grid, self.costmap.obstacle_distance_m, self.params.obstacles
+        )
         self.base = SimulatedBase(
             np.asarray(start_pose, dtype=float), rng, self.params.odometry_noise
         )
@@ -115,8 +125,47 @@ class Navigator:
         return self.filter.pose_from_odometry(self.base.odom_pose)
 
     def plan(self, goal: tuple[float, float]) -> Path:
+        """Plan from the believed pose. Before planning the robot looks round once (a scan
+        clears marks of obstacles that have gone) and old marks expire. A goal or a way that
+        only the seen obstacles block raises BlockedError, which names them, not the map."""
         pose = self.pose
-        return self.planner.plan((float(pose[0]), float(pose[1])), goal)
+        start = (float(pose[0]), float(pose[1]))
+        if self.filter is not None:
+            self._sense_obstacles(self.lidar.scan(self.base.true_pose, self.rng))
+        self._apply_obstacles(self.obstacles.expire(self.base.time_s))
+        try:
+            return self.planner.plan(start, goal)
+        except UnreachableError as exc:
+            if self.planner is self.map_planner:
+                raise
+            self.map_planner.plan(start, goal)  # raises if the map alone is the reason
+            raise BlockedError(
+                f"obstacles the robot sees block the way to ({goal[0]:.2f}, {goal[1]:.2f})"
+            ) from exc
+
+    def reset_obstacles(self) -> None:
+        """Forget every mark (the map planner plans again)."""
+        self.obstacles.clear()
+        self.planner = self.map_planner
+        self.costmap = self.map_planner.costmap
+
+    def _sense_obstacles(self, scan: LaserScan) -> None:
+        self._apply_obstacles(self.obstacles.update(self.pose, scan, self.base.time_s))
+
+    def _apply_obstacles(self, changed: np.ndarray) -> None:
+        if changed.size == 0:
+            return
+        if self.planner is self.map_planner:
+            static = self.map_planner.costmap
+            self.costmap = Costmap(
+                static.grid, static.costs.copy(), static.obstacle_distance_m, static.params
+            )
+            self.planner = self.map_planner.layered(self.costmap)
+        window = update_obstacles(
+            self.map_planner.costmap, self.costmap, self.obstacles.marked, changed
+        )
+        if window is not None:
+            self.planner.update_window(window)
 
     def set_world(self, world: OccupancyMap) -> None:
         """Change the truth the LiDAR sees (obstacles the map does not know)."""
@@ -188,7 +237,8 @@ class Navigator:
             return
         distances = self.filter.field.endpoint_distances(self.pose, ranges, angles)
         matched = float(np.mean(distances < 0.3))
-        self._bad_matches = self._bad_matches + 1 if matched < self.params.lost_match_ratio else 0
+        bad = matched < self.params.lost_match_ratio or self.filter.localization_lost
+        self._bad_matches = self._bad_matches + 1 if bad else 0
         if self._bad_matches >= self.params.lost_after_updates:
             raise LocalizationLostError(
                 f"the scan no longer matches the map ({matched:.0%} of beams) near "
@@ -196,39 +246,23 @@ class Navigator:
             )
 
     def _check_blocked(self, scan: LaserScan, controller: PurePursuit) -> Path | None:
-        """If unmapped obstacles sit on the path ahead, replan around them (or raise)."""
-        assert self.filter is not None
-
-        pose = self.pose
-        hit = scan.ranges < scan.range_max
-        heading = pose[2] + scan.angles[hit]
-        points = np.column_stack(
-            [
-                pose[0] + scan.ranges[hit] * np.cos(heading),
-                pose[1] + scan.ranges[hit] * np.sin(heading),
-            ]
-        )
-        unmapped = (
-            self.filter.field.endpoint_distances(pose, scan.ranges[hit], scan.angles[hit]) > 0.15
-        )
-        points = points[unmapped]
-        if points.size == 0:
+        """Update the obstacle layer from the scan; if a marked obstacle now sits on the path
+        ahead, replan round it (or raise BlockedError)."""
+        self._sense_obstacles(scan)
+        if self.planner is self.map_planner:
             return None
         ahead = controller.remaining
         travelled = np.r_[0.0, np.cumsum(np.hypot(*np.diff(ahead, axis=0).T))]
         ahead = ahead[travelled <= self.params.block_lookahead_m]
-        clearance = self.params.inflation.robot_radius + 0.05
-        gaps = np.hypot(
-            points[:, None, 0] - ahead[None, :, 0], points[:, None, 1] - ahead[None, :, 1]
-        )
-        if not (gaps < clearance).any():
+        grid = self.grid
+        ix, iy = grid.world_to_cell(ahead[:, 0], ahead[:, 1])
+        inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
+        costs = self.costmap.costs[iy[inside], ix[inside]]
+        static = self.map_planner.costmap.costs[iy[inside], ix[inside]]
+        if not ((costs >= INSCRIBED) & (static < INSCRIBED)).any():
             return None
-        logger.info(
-            "path blocked by %d unmapped points; replanning",
-            int((gaps < clearance).any(axis=1).sum()),
-        )
-        self.costmap = self.costmap.with_obstacles(points)
-        self.planner = GridPlanner(self.costmap, self.params.planner)
+        logger.info("path blocked by %d marked cells; replanning", len(self.obstacles))
+        pose = self.pose
         goal = controller.path[-1]
         try:
             return self.planner.plan(

@@ -48,9 +48,8 @@ class OccupancyMap:
             raise MapError(f"map data must be a non-empty 2D grid, got shape {self.data.shape}")
         if not self.resolution > 0:
             raise MapError(f"map resolution must be positive, got {self.resolution}")
-        if self.origin_yaw != 0.0:
-            # map_server itself ignores yaw for lookups; so do we, loudly.
-            raise MapError("rotated map origins (yaw != 0) are not supported")
+        if not math.isfinite(self.origin_yaw):
+            raise MapError(f"map origin yaw must be finite, got {self.origin_yaw}")
 
     @property
     def height(self) -> int:
@@ -65,25 +64,46 @@ class OccupancyMap:
         return self.width * self.resolution, self.height * self.resolution
 
     @property
+    def obstacles(self) -> npt.NDArray[np.bool_]:
+        """Cells that stop a laser beam: occupied (>= 65 in scale mode); not unknown ones."""
+        return self.data >= 65
+
+    @property
     def occupied(self) -> npt.NDArray[np.bool_]:
         """Cells a robot cannot enter: occupied (>= 65 in scale mode) or unknown."""
         return (self.data >= 65) | (self.data < 0)
+
+    def to_grid_frame(
+        self, x: npt.ArrayLike, y: npt.ArrayLike
+    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+        """Metres from the origin along the grid's rows and columns (map_server's origin is
+        the pose of the lower-left pixel, yaw included)."""
+        dx = np.asarray(x, dtype=float) - self.origin_x
+        dy = np.asarray(y, dtype=float) - self.origin_y
+        if self.origin_yaw == 0.0:
+            return dx, dy
+        c, s = math.cos(self.origin_yaw), math.sin(self.origin_yaw)
+        return c * dx + s * dy, -s * dx + c * dy
 
     def world_to_cell(
         self, x: npt.ArrayLike, y: npt.ArrayLike
     ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
         """Cell indices (ix, iy) of world points, unclipped (may fall off the grid)."""
-        ix = np.floor((np.asarray(x, dtype=float) - self.origin_x) / self.resolution)
-        iy = np.floor((np.asarray(y, dtype=float) - self.origin_y) / self.resolution)
+        gx, gy = self.to_grid_frame(x, y)
+        ix = np.floor(gx / self.resolution)
+        iy = np.floor(gy / self.resolution)
         return ix.astype(np.int64), iy.astype(np.int64)
 
     def cell_to_world(
         self, ix: npt.ArrayLike, iy: npt.ArrayLike
     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """World coordinates of cell centres."""
-        x = self.origin_x + (np.asarray(ix, dtype=float) + 0.5) * self.resolution
-        y = self.origin_y + (np.asarray(iy, dtype=float) + 0.5) * self.resolution
-        return x, y
+        gx = (np.asarray(ix, dtype=float) + 0.5) * self.resolution
+        gy = (np.asarray(iy, dtype=float) + 0.5) * self.resolution
+        if self.origin_yaw == 0.0:
+            return self.origin_x + gx, self.origin_y + gy
+        c, s = math.cos(self.origin_yaw), math.sin(self.origin_yaw)
+        return self.origin_x + c * gx - s * gy, self.origin_y + s * gx + c * gy
 
     def contains(self, x: float, y: float) -> bool:
         ix, iy = self.world_to_cell(x, y)
@@ -115,14 +135,12 @@ def load_map(yaml_path: str | Path) -> OccupancyMap:
     if not (isinstance(origin, list) and len(origin) == 3):
         raise MapError(f"{path}: origin must be a list [x, y, yaw]")
     ox, oy, oyaw = (_number(v, "origin", path) for v in origin)
-    negate = int(_number(header.get("negate", 0), "negate", path))
+    negate = _negate(header.get("negate", 0), path)
     occupied_thresh = _number(header.get("occupied_thresh", 0.65), "occupied_thresh", path)
     free_thresh = _number(header.get("free_thresh", 0.196), "free_thresh", path)
     mode = header.get("mode", "trinary")
     if mode not in _MODES:
         raise MapError(f"{path}: mode must be one of {', '.join(_MODES)}, got {mode!r}")
-    if negate not in (0, 1):
-        raise MapError(f"{path}: negate must be 0 or 1, got {negate}")
     if not 0.0 <= free_thresh < occupied_thresh <= 1.0:
         raise MapError(f"{path}: need 0 <= free_thresh < occupied_thresh <= 1")
     image_path = (path.parent / str(image)).resolve()
@@ -130,7 +148,7 @@ def load_map(yaml_path: str | Path) -> OccupancyMap:
     data = pixels_to_occupancy(
         pixels,
         alpha,
-        negate=bool(negate),
+        negate=negate,
         occupied_thresh=occupied_thresh,
         free_thresh=free_thresh,
         mode=mode,
@@ -150,9 +168,13 @@ def pixels_to_occupancy(
     free_thresh: float,
     mode: MapMode,
 ) -> npt.NDArray[np.int8]:
-    """map_server's conversion of grey levels (0..255, image order) to occupancy values."""
+    """nav2 map_server's conversion of grey levels (0..255, image order) to occupancy values:
+    raw keeps a grey level 0..100 as the value and reads anything else as unknown (so the
+    saver's 205 and 254 are unknown, not occupied); scale maps the band between the
+    thresholds to ``rint(100 * (occ - free) / (occupied - free))``."""
     if mode == "raw":
-        return np.clip(np.rint(pixels), -128, 127).astype(np.int8)
+        grey = np.rint(pixels)
+        return np.where((grey >= 0) & (grey <= 100), grey, UNKNOWN).astype(np.int8)
     # Probability of occupancy: dark is occupied unless negate.
     occ = pixels / 255.0 if negate else (255.0 - pixels) / 255.0
     out = np.full(pixels.shape, UNKNOWN, dtype=np.int8)
@@ -160,7 +182,7 @@ def pixels_to_occupancy(
     out[occ < free_thresh] = FREE
     if mode == "scale":
         between = (occ >= free_thresh) & (occ <= occupied_thresh)
-        scaled = 1 + 98 * (occ - free_thresh) / (occupied_thresh - free_thresh)
+        scaled = 100 * (occ - free_thresh) / (occupied_thresh - free_thresh)
         out[between] = np.rint(scaled[between]).astype(np.int8)
         if alpha is not None:
             out[alpha < 255.0] = UNKNOWN
@@ -241,6 +263,15 @@ def _require(header: dict[str, Any], key: str, path: Path) -> Any:
     if key not in header:
         raise MapError(f"{path}: missing required key {key!r}")
     return header[key]
+
+
+def _negate(value: Any, path: Path) -> bool:
+    """nav2 reads ``negate`` as an int and, failing that, as a bool: 0/1 and false/true."""
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, int) and value in (0, 1):
+        return bool(value)
+    raise MapError(f"{path}: negate must be 0 or 1 (or false/true), got {value!r}")
 
 
 def _number(value: Any, key: str, path: Path) -> float:

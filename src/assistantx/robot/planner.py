@@ -9,6 +9,12 @@ Dijkstra runs in compiled code. A room-to-room query bounds the search with ``li
 multiple of the straight-line distance, doubled until the goal is settled), so it touches
 only the neighbourhood; a query across the floor settles most of the graph (~50 ms).
 
+Obstacles seen while driving do not rebuild the graph: ``layered`` makes a planner that
+shares the map planner's nodes and edge structure but owns a copy of the edge weights, and
+``update_window`` recomputes only the weights of edges in the re-inflated window (an edge
+into a cell that the new costs make untraversable gets the weight BLOCKED, which every
+search treats as no edge).
+
 The grid path is then shortened by line-of-sight shortcuts that never pass closer to an
 obstacle than the grid path did over the same stretch, and resampled for the controller.
 """
@@ -29,6 +35,7 @@ from assistantx.errors import UnreachableError
 from assistantx.robot.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
 
 _NEIGHBOURS = ((0, 1), (1, 0), (1, 1), (1, -1))  # (dy, dx); the graph is undirected
+BLOCKED = 1e12  # the weight of an edge that obstacles seen since the map was made cut
 
 
 @dataclass(frozen=True)
@@ -60,9 +67,48 @@ class GridPlanner:
         self._node[traversable] = np.arange(int(traversable.sum()))
         self._cells = np.argwhere(traversable)  # node -> (iy, ix)
         self._graph = self._build_graph(traversable)
-        # For snapping a start that strayed into the inscribed zone back to the nearest node.
-        _, nearest = distance_transform_edt(~traversable, return_indices=True)
-        self._nearest_free = np.asarray(nearest)
+        # For snapping a start that strayed into the inscribed zone back to the nearest node:
+        # made on first need (an EDT with indices is the costliest part of set-up).
+        self._nearest_free: npt.NDArray[np.intp] | None = None
+
+    def layered(self, costmap: Costmap) -> GridPlanner:
+        """A planner on ``costmap`` (the map's costs plus obstacles seen, never lower) that
+        shares this one's nodes and edges and owns only a copy of the edge weights."""
+        other = object.__new__(GridPlanner)
+        other.costmap = costmap
+        other.params = self.params
+        other._node, other._cells, other._nearest_free = self._node, self._cells, self._nearest_free
+        other._graph = csr_matrix(
+            (self._graph.data.copy(), self._graph.indices, self._graph.indptr),
+            shape=self._graph.shape,
+        )
+        return other
+
+    def update_window(self, window: tuple[int, int, int, int]) -> None:
+        """Recompute the weights of the edges that touch cells of ``window`` from the costs."""
+        y0, y1, x0, x1 = window
+        # Edges into the window start one cell outside it; diagonals check side cells too.
+        h, w = self.costmap.grid.height, self.costmap.grid.width
+        block = self._node[max(0, y0 - 1) : min(h, y1 + 1), max(0, x0 - 1) : min(w, x1 + 1)]
+        rows = block[block >= 0]
+        if rows.size == 0:
+            return
+        graph = self._graph
+        starts, ends = graph.indptr[rows], graph.indptr[rows + 1]
+        counts = ends - starts
+        entries = np.repeat(starts - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())
+        u = np.repeat(rows, counts)
+        v = graph.indices[entries]
+        uy, ux = self._cells[u, 0], self._cells[u, 1]
+        vy, vx = self._cells[v, 0], self._cells[v, 1]
+        costs = self.costmap.costs
+        ok = (costs[uy, ux] < INSCRIBED) & (costs[vy, vx] < INSCRIBED)
+        diagonal = (uy != vy) & (ux != vx)
+        ok &= ~diagonal | ((costs[uy, vx] < INSCRIBED) & (costs[vy, ux] < INSCRIBED))
+        length = self.costmap.grid.resolution * np.where(diagonal, math.sqrt(2.0), 1.0)
+        mean_cost = (costs[uy, ux].astype(np.float64) + costs[vy, vx]) / 2
+        weight = length * (1 + self.params.cost_penalty * mean_cost / (INSCRIBED - 1))
+        graph.data[entries] = np.where(ok, weight, BLOCKED)
 
     def _build_graph(self, traversable: npt.NDArray[np.bool_]) -> csr_matrix:
         height, width = traversable.shape
@@ -104,7 +150,7 @@ class GridPlanner:
                 return_predecessors=True,
                 limit=limit if bounded else np.inf,
             )
-            if math.isfinite(dist[goal_node]):
+            if dist[goal_node] < BLOCKED:
                 nodes = _walk_back(pred, goal_node)
                 return self._make_path(nodes, float(dist[goal_node]), start, goal)
             limit *= 2.5
@@ -123,7 +169,7 @@ class GridPlanner:
             except UnreachableError:
                 paths.append(None)
                 continue
-            if not math.isfinite(dist[goal_node]):
+            if not dist[goal_node] < BLOCKED:
                 paths.append(None)
                 continue
             nodes = _walk_back(pred, goal_node) if goal_node != start_node else [start_node]
@@ -154,6 +200,9 @@ class GridPlanner:
         node = int(self._node[iy, ix])
         if node >= 0:
             return node
+        if self._nearest_free is None:
+            _, nearest = distance_transform_edt(self._node < 0, return_indices=True)
+            self._nearest_free = np.asarray(nearest)
         ny, nx = (int(v) for v in self._nearest_free[:, iy, ix])
         snap = math.hypot(ny - iy, nx - ix) * self.costmap.grid.resolution
         if snap > self.params.start_snap_m or self._node[ny, nx] < 0:

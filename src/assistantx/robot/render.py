@@ -28,7 +28,19 @@ def render_map(
     ax = fig.add_subplot()
     shade = np.where(grid.data < 0, 0.8, 1.0 - np.clip(grid.data, 0, 100) / 100.0)
     extent = (grid.origin_x, grid.origin_x + width_m, grid.origin_y, grid.origin_y + height_m)
-    ax.imshow(shade, cmap="gray", vmin=0, vmax=1, origin="lower", extent=extent)
+    image = ax.imshow(shade, cmap="gray", vmin=0, vmax=1, origin="lower", extent=extent)
+    if grid.origin_yaw:  # map_server's origin yaw turns the grid about its lower-left corner
+        from matplotlib.transforms import Affine2D
+
+        turn = Affine2D().rotate_around(grid.origin_x, grid.origin_y, grid.origin_yaw)
+        image.set_transform(turn + ax.transData)
+        corners = np.array(
+            turn.transform(
+                [extent[::2], extent[1::2], (extent[0], extent[3]), (extent[1], extent[2])]
+            )
+        )
+        ax.set_xlim(corners[:, 0].min(), corners[:, 0].max())
+        ax.set_ylim(corners[:, 1].min(), corners[:, 1].max())
     if particles is not None and len(particles):
         ax.quiver(
             particles[:, 0],

@@ -12,6 +12,15 @@ planned once per start anchor (one Dijkstra to every anchor) and cached, which a
 
 Obstacles the map does not know can be dropped into the simulated world with ``block``;
 a path that cannot get round them ends in BlockedError.
+
+With AMCL on, planning and every chunk of driving (control, LiDAR, filter, obstacle layer,
+costmap) run in a worker thread (``asyncio.to_thread``), so the event loop keeps serving
+requests while the robot drives; ``state()`` reads a snapshot the worker publishes after
+each chunk, never arrays the worker is changing.
+
+At construction every office location must have an anchor, and every anchor must stand in
+free space the robot fits in and be reachable from the others; the first problem is raised
+as one MapError line naming the anchors file, the location id and the problem.
 """
 
 from __future__ import annotations
@@ -19,7 +28,7 @@ from __future__ import annotations
 import asyncio
 import logging
 import math
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from functools import lru_cache
 from pathlib import Path as FilePath
 from weakref import WeakKeyDictionary
@@ -36,6 +45,7 @@ from assistantx.errors import (
     UnreachableError,
 )
 from assistantx.office import Office
+from assistantx.robot.anchor_check import AnchorProblem, check_anchors
 from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.geometry import FloatArray
 from assistantx.robot.navigation import NavigationParams, Navigator
@@ -52,6 +62,20 @@ MAX_PARTICLES_SHOWN = 500
 # every robot on the same map, so the evaluation's thousands of moves plan each pair once.
 _PATH_TABLES: WeakKeyDictionary[
     GridPlanner, dict[tuple[tuple[float, float], tuple[float, float]], Path | None]
+] = WeakKeyDictionary()
+
+
+def _checked(planner: GridPlanner, anchors: Mapping[str, Anchor]) -> list[AnchorProblem]:
+    """check_anchors, once per planner (so per map) and set of anchors."""
+    key = tuple(sorted((k, a.x, a.y) for k, a in anchors.items()))
+    per_map = _ANCHOR_CHECKS.setdefault(planner, {})
+    if key not in per_map:
+        per_map[key] = check_anchors(planner.costmap, anchors)
+    return per_map[key]
+
+
+_ANCHOR_CHECKS: WeakKeyDictionary[
+    GridPlanner, dict[tuple[tuple[str, float, float], ...], list[AnchorProblem]]
 ] = WeakKeyDictionary()
 
 
@@ -79,10 +103,12 @@ class NavigatorRobot(RobotBase):
         start: str | None = None,
         params: NavigationParams | None = None,
         arrival_tolerance_m: float = 0.15,
+        anchors_file: str | FilePath | None = None,
     ) -> None:
+        where = f"{anchors_file}: " if anchors_file is not None else ""
         missing = sorted({loc.id for loc in office.locations} - anchors.keys())
         if missing:
-            raise MapError(f"no map anchor for location(s): {', '.join(missing)}")
+            raise MapError(f"{where}no map anchor for location(s): {', '.join(missing)}")
         self.office = office
         self.anchors = dict(anchors)
         self.clock = clock
@@ -102,7 +128,14 @@ class NavigatorRobot(RobotBase):
         )
         # The planner on the map alone; the navigator may swap in one that holds obstacles it
         # saw, which must not leak into the shared anchor path table.
-        self._map_planner = self._navigator.planner
+        self._map_planner = self._navigator.map_planner
+        used = {loc.id for loc in office.locations} | {self._place}
+        problems = _checked(self._map_planner, {k: v for k, v in anchors.items() if k in used})
+        if problems:
+            first = problems[0]
+            more = f" (and {len(problems) - 1} more)" if len(problems) > 1 else ""
+            raise MapError(f"{where}anchor {first.anchor!r}: {first.problem}{more}")
+        self._snapshot: RobotState | None = None
         self._paths = _PATH_TABLES.setdefault(self._map_planner, {})
         self._obstacles: list[tuple[float, float, float]] = []
         self._goal: str | None = None
@@ -132,7 +165,16 @@ class NavigatorRobot(RobotBase):
         except OSError as exc:
             raise MapError(f"cannot read map files: {exc}") from exc
         grid, anchors = _load_cached(map_path, anchors_path, stamp)
-        return cls(office, grid, anchors, clock, seed, localize=localize, start=start)
+        return cls(
+            office,
+            grid,
+            anchors,
+            clock,
+            seed,
+            localize=localize,
+            start=start,
+            anchors_file=anchors_path,
+        )
 
     @property
     def grid(self) -> OccupancyMap:
@@ -157,15 +199,27 @@ class NavigatorRobot(RobotBase):
         nav = self._navigator
         anchor = self.anchors[location_id]
         started_at, odometer_before = nav.base.time_s, nav.base.odometer_m
-        path = self._plan(location_id)
+        if not self.localize:  # kinematic: cached paths, nothing worth a thread
+            path = self._plan(location_id)
+        else:
+            path = await asyncio.to_thread(self._plan, location_id)
         self._goal, self._path, self._place = location_id, path, None
         logger.info("driving to %s (%.1f m)", location_id, path.length_m)
+        chunks = nav.follow(path, anchor.yaw)
         try:
-            for seconds in nav.follow(path, anchor.yaw):
+            while True:
+                if self.localize:
+                    seconds = await asyncio.to_thread(self._drive_chunk, chunks)
+                else:
+                    seconds = next(chunks, None)
+                if seconds is None:
+                    break
                 await self.clock.sleep(seconds)
         except RobotError:
             self._goal = None
             raise
+        finally:
+            self._snapshot = None
         true = nav.base.true_pose
         miss = math.hypot(true[0] - anchor.x, true[1] - anchor.y)
         self._goal, self._path = None, None
@@ -180,7 +234,19 @@ class NavigatorRobot(RobotBase):
             duration_s=round(nav.base.time_s - started_at, 3),
         )
 
+    def _drive_chunk(self, chunks: Iterator[float]) -> float | None:
+        """In the worker thread: drive one chunk, then publish what state() shows."""
+        seconds = next(chunks, None)
+        self._snapshot = self._live_state()
+        return seconds
+
     def state(self) -> RobotState:
+        snapshot = self._snapshot
+        if snapshot is not None:  # a worker is driving: read what it published
+            return snapshot
+        return self._live_state()
+
+    def _live_state(self) -> RobotState:
         nav = self._navigator
         believed = nav.pose
         particles = None
@@ -272,8 +338,7 @@ class NavigatorRobot(RobotBase):
         """Remove the dropped obstacles from the world and from what the robot remembers."""
         self._obstacles.clear()
         self._navigator.set_world(self._grid)
-        self._navigator.planner = self._map_planner
-        self._navigator.costmap = self._map_planner.costmap
+        self._navigator.reset_obstacles()
 
     def _obstacle_points(self) -> FloatArray:
         points = []

@@ -1,0 +1,279 @@
+"""The robot base on real buildings' maps (ROS map_server YAML + image).
+
+Default: the three nav2 maps in ``<repo>/../shared/maps`` (depot, warehouse, tb3_sandbox).
+``--map YAML`` runs one map instead; ``--anchors YAML`` gives its anchors, otherwise
+``--anchor-count`` anchors are placed, seeded, in free space the robot can reach from all
+of them (assistantx.robot.anchor_check.place_anchors). Per map:
+
+- set-up: loading the map, the inflated costmap, the planner graph and AMCL's likelihood
+  field (the work a robot does before its first move), wall seconds;
+- planner: a plan between every ordered pair of anchors (they are mutually reachable, so
+  every pair must succeed), median and max seconds per plan;
+- tour: the robot with default parameters (AMCL on, LiDAR, obstacle layer) drives a seeded
+  tour of ``--legs`` legs between random anchors; legs_failed counts RobotErrors, the
+  position errors compare the AMCL estimate with the truth at every filter update;
+- global localization and kidnapped-robot recovery, 20 seeded trials each, with the same
+  parameters and success rule as bench/robot_amcl_global.py, on random poses of the
+  reachable free space;
+- peak_rss_mb: the process's peak resident memory after the map (it only grows).
+
+Last stdout line: one JSON object, ``{"maps": {name: {...}}, "all_ok": bool}``.
+Run: python bench/robot_real_maps.py [--map YAML --anchors YAML] [--legs N] [--trials N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import resource
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy.ndimage import label
+
+from assistantx.errors import RobotError
+from assistantx.robot.amcl import LikelihoodField, ParticleFilter
+from assistantx.robot.anchor_check import check_anchors, place_anchors
+from assistantx.robot.anchors import Anchor, load_anchors
+from assistantx.robot.costmap import Costmap
+from assistantx.robot.diff_drive import PurePursuit, SimulatedBase
+from assistantx.robot.lidar import Lidar
+from assistantx.robot.navigation import NavigationParams, Navigator, shared_planner
+from assistantx.robot.occupancy_map import OccupancyMap, load_map
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from robot_amcl_global import (
+    GLOBAL_PARAMS,
+    GLOBAL_WITHIN,
+    KIDNAP_PARAMS,
+    KIDNAP_WITHIN,
+    first_lasting,
+    run_filter,
+)
+
+REPO = Path(__file__).resolve().parents[1]
+# CI clones the repository next to shared/; a worktree may sit deeper, so look upwards.
+SHARED_MAPS = next(
+    (d / "shared" / "maps" for d in REPO.parents if (d / "shared" / "maps").is_dir()),
+    REPO.parent / "shared" / "maps",
+)
+DEFAULT_MAPS = ("depot", "warehouse", "tb3_sandbox")
+
+
+class RealWorld:
+    """What run_filter needs: the map, a LiDAR, a planner and random reachable poses."""
+
+    def __init__(self, grid: OccupancyMap, anchors: dict[str, Anchor]) -> None:
+        params = NavigationParams()
+        self.grid = grid
+        self.anchors = list(anchors.values())
+        self.planner = shared_planner(grid, params.inflation, params.planner)
+        self.costmap = self.planner.costmap
+        self.lidar = Lidar(grid, params.lidar)
+        labels = _reachable(self.costmap, anchors)
+        self.clear = np.argwhere(labels & (self.costmap.costs == 0))
+
+    def random_pose(self, rng: np.random.Generator) -> np.ndarray:
+        iy, ix = self.clear[rng.integers(0, len(self.clear))]
+        x, y = self.grid.cell_to_world(ix, iy)
+        return np.array([float(x), float(y), rng.uniform(-math.pi, math.pi)])
+
+    def route(self, start: np.ndarray, rng: np.random.Generator) -> PurePursuit:
+        points = [start[:2]]
+        here = (float(start[0]), float(start[1]))
+        total = 0.0
+        while total < 40.0:
+            goal = self.anchors[int(rng.integers(0, len(self.anchors)))]
+            try:
+                path = self.planner.plan(here, (goal.x, goal.y))
+            except RobotError:
+                continue
+            points.append(path.resampled(0.05))
+            total += path.length_m
+            here = (goal.x, goal.y)
+        return PurePursuit(np.vstack(points), None)
+
+
+def _reachable(costmap: Costmap, anchors: dict[str, Anchor]) -> np.ndarray:
+    """Cells the robot can reach from the anchors (they are mutually reachable)."""
+    labels, _ = label(costmap.traversable)
+    a = next(iter(anchors.values()))
+    ix, iy = costmap.grid.world_to_cell(a.x, a.y)
+    return np.asarray(labels == labels[int(iy), int(ix)])
+
+
+def setup(grid_yaml: Path) -> tuple[OccupancyMap, float]:
+    started = time.perf_counter()
+    grid = load_map(grid_yaml)
+    params = NavigationParams()
+    shared_planner(grid, params.inflation, params.planner)
+    LikelihoodField(grid, params.amcl)
+    return grid, time.perf_counter() - started
+
+
+def planner_pairs(world: RealWorld, anchors: dict[str, Anchor]) -> dict[str, object]:
+    times, failures = [], []
+    for a, sa in anchors.items():
+        for b, sb in anchors.items():
+            if a == b:
+                continue
+            started = time.perf_counter()
+            try:
+                world.planner.plan((sa.x, sa.y), (sb.x, sb.y))
+            except RobotError as exc:
+                failures.append(f"{a}->{b}: {exc}")
+            times.append(time.perf_counter() - started)
+    return {
+        "planner_pairs": len(times),
+        "planner_success": len(times) - len(failures),
+        "planner_failures": failures[:5],
+        "planning_median_s": round(statistics.median(times), 4),
+        "planning_max_s": round(max(times), 4),
+    }
+
+
+def tour(grid: OccupancyMap, anchors: dict[str, Anchor], legs: int, seed: int) -> dict[str, object]:
+    rng = np.random.default_rng(seed)
+    names = list(anchors)
+    here = names[int(rng.integers(len(names)))]
+    first = anchors[here]
+    nav = Navigator(grid, np.array([first.x, first.y, first.yaw]), np.random.default_rng(seed + 1))
+    failed: list[str] = []
+    arrival = []
+    started = time.perf_counter()
+    for _ in range(legs):
+        there = names[int(rng.integers(len(names) - 1))]
+        there = names[-1] if there == here else there
+        goal = anchors[there]
+        try:
+            for _seconds in nav.follow(nav.plan((goal.x, goal.y)), goal.yaw):
+                pass
+            true = nav.base.true_pose
+            arrival.append(math.hypot(true[0] - goal.x, true[1] - goal.y))
+        except RobotError as exc:
+            failed.append(f"{here}->{there}: {exc}")
+        here = there
+    pos = np.array([math.dist(s.true_pose[:2], s.estimate[:2]) for s in nav.tracking])
+    return {
+        "legs": legs,
+        "legs_failed": len(failed),
+        "leg_failures": failed[:5],
+        "distance_m": round(nav.base.odometer_m, 1),
+        "mean_position_error_m": round(float(pos.mean()), 4) if pos.size else None,
+        "p95_position_error_m": round(float(np.percentile(pos, 95)), 4) if pos.size else None,
+        "max_position_error_m": round(float(pos.max()), 4) if pos.size else None,
+        "mean_arrival_error_m": round(float(np.mean(arrival)), 4) if arrival else None,
+        "obstacle_marks_left": len(nav.obstacles),
+        "tour_wall_s": round(time.perf_counter() - started, 1),
+    }
+
+
+def localization(world: RealWorld, trials: int) -> dict[str, object]:
+    global_ok = kidnap_ok = 0
+    for trial in range(trials):
+        rng = np.random.default_rng(1000 + trial)
+        start = world.random_pose(rng)
+        base = SimulatedBase(start, rng)
+        pf = ParticleFilter(world.grid, GLOBAL_PARAMS, rng)
+        pf.global_localization()
+        ok = run_filter(world, pf, base, world.route(start, rng), GLOBAL_WITHIN + 10, rng)  # type: ignore[arg-type]
+        found = first_lasting(ok)
+        global_ok += found is not None and found <= GLOBAL_WITHIN
+    for trial in range(trials):
+        rng = np.random.default_rng(2000 + trial)
+        start = world.random_pose(rng)
+        base = SimulatedBase(start, rng)
+        pf = ParticleFilter(world.grid, KIDNAP_PARAMS, rng)
+        pf.initialize(start)
+        run_filter(world, pf, base, world.route(start, rng), 20, rng)  # type: ignore[arg-type]
+        base.teleport(world.random_pose(rng))
+        ok = run_filter(world, pf, base, world.route(base.true_pose, rng), KIDNAP_WITHIN + 10, rng)  # type: ignore[arg-type]
+        found = first_lasting(ok)
+        kidnap_ok += found is not None and found <= KIDNAP_WITHIN
+    return {"trials": trials, "global_success": global_ok, "kidnap_success": kidnap_ok}
+
+
+def run_map(
+    map_yaml: Path, anchors_yaml: Path | None, args: argparse.Namespace
+) -> dict[str, object]:
+    grid, setup_s = setup(map_yaml)
+    params = NavigationParams()
+    costmap = shared_planner(grid, params.inflation, params.planner).costmap
+    if anchors_yaml is not None:
+        anchors = load_anchors(anchors_yaml)
+        problems = check_anchors(costmap, anchors)
+        if problems:
+            raise SystemExit(f"{anchors_yaml}: {problems[0].anchor}: {problems[0].problem}")
+    else:
+        anchors = place_anchors(costmap, args.anchor_count, np.random.default_rng(args.seed))
+    world = RealWorld(grid, anchors)
+    result: dict[str, object] = {
+        "size_m": [round(v, 1) for v in grid.size_m],
+        "cells": grid.width * grid.height,
+        "anchors": len(anchors),
+        "setup_s": round(setup_s, 3),
+    }
+    result |= planner_pairs(world, anchors)
+    result |= tour(grid, anchors, args.legs, args.seed)
+    if args.trials:
+        result |= localization(world, args.trials)
+    result["peak_rss_mb"] = round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1)
+    return result
+
+
+def passed(r: dict[str, object], trials: int) -> bool:
+    ok = (
+        r["legs_failed"] == 0
+        and r["planner_success"] == r["planner_pairs"]
+        and r["mean_position_error_m"] is not None
+        and float(r["mean_position_error_m"]) <= 0.03  # type: ignore[arg-type]
+        and float(r["p95_position_error_m"]) <= 0.08  # type: ignore[arg-type]
+    )
+    if trials:
+        ok = ok and r["global_success"] == trials and r["kidnap_success"] == trials
+    return bool(ok)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--map", type=Path, help="a map_server YAML (default: the three real maps)")
+    parser.add_argument("--anchors", type=Path, help="its anchors YAML (default: placed)")
+    parser.add_argument("--anchor-count", type=int, default=8)
+    parser.add_argument("--legs", type=int, default=16)
+    parser.add_argument("--trials", type=int, default=20)
+    parser.add_argument("--seed", type=int, default=7)
+    args = parser.parse_args()
+    if args.anchors and not args.map:
+        parser.error("--anchors needs --map")
+    maps = (
+        [(args.map.stem, args.map, args.anchors)]
+        if args.map
+        else [(name, SHARED_MAPS / f"{name}.yaml", None) for name in DEFAULT_MAPS]
+    )
+    results: dict[str, dict[str, object]] = {}
+    for name, yaml_path, anchors_yaml in maps:
+        started = time.perf_counter()
+        r = run_map(yaml_path, anchors_yaml, args)
+        r["wall_s"] = round(time.perf_counter() - started, 1)
+        results[name] = r
+        print(
+            f"{name}: set-up {r['setup_s']} s; planner {r['planner_success']}/"
+            f"{r['planner_pairs']} pairs, median {r['planning_median_s']} s; tour "
+            f"{r['legs'] - r['legs_failed']}/{r['legs']} legs, error mean "
+            f"{r['mean_position_error_m']} m p95 {r['p95_position_error_m']} m; global "
+            f"{r.get('global_success')}/{args.trials}, kidnap {r.get('kidnap_success')}/"
+            f"{args.trials}; peak {r['peak_rss_mb']} MB; {r['wall_s']} s",
+            flush=True,
+        )
+        if r["leg_failures"]:
+            print(f"  failed legs: {r['leg_failures']}", flush=True)
+    all_ok = all(passed(r, args.trials) for r in results.values())
+    print(json.dumps({"maps": results, "all_ok": all_ok}))
+
+
+if __name__ == "__main__":
+    main()
