@@ -29,7 +29,6 @@ from assistantx.adapters.robot.base import RobotBase
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
 from assistantx.clock import WallClock
-from assistantx.errors import LockError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import LockKeys
@@ -89,7 +88,7 @@ class ServiceRuntime:
         s = self.settings
         self.office = load_office(s.office)
         self.resolver = Resolver(self.office)
-        data_dir = _data_dir(s.data_dir)
+        data_dir = ensure_data_dir(s.data_dir)
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
         self.metrics = ServiceMetrics(self.journal)
@@ -102,7 +101,7 @@ class ServiceRuntime:
         # Sped-up time runs ahead of real time; after a restart it continues from the journal.
         journaled = self.journal.state(CLOCK_STATE) or {}
         self.clock = WallClock(s.speedup, start=max(time.time(), journaled.get("now", 0.0)))
-        self.lock_keys = _lock_keys(s, data_dir)
+        self.lock_keys = lock_keys_for(s, data_dir)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
         robot_place = world["robot"]["place"] if world else None
@@ -190,11 +189,8 @@ class ServiceRuntime:
         s = self.settings
         expiry_s = s.lock_code_expiry_min * 60
         if s.lock == "tcp":
-            if s.lock_shared_key is None and s.lock_key_file is None:
-                raise LockError(
-                    "ASSISTANTX_LOCK=tcp needs the lock's keys: set ASSISTANTX_LOCK_SHARED_KEY "
-                    "or ASSISTANTX_LOCK_KEY_FILE to what `assistantx lock-sim` uses"
-                )
+            # Without a configured key both ends use the data folder's key file:
+            # `assistantx lock-sim` on the same ASSISTANTX_DATA_DIR reads the same file.
             # The lock checks a code's times on its own (real) clock, so codes are stamped in
             # real time, not in the sped-up simulated time.
             return TcpLocker(
@@ -267,14 +263,16 @@ class ServiceRuntime:
         return self.assistant.cancel(instruction_id)
 
 
-def _data_dir(path: Path) -> Path:
+def ensure_data_dir(path: Path) -> Path:
+    """The data folder, made owner-only (it holds the journal and the lock's keys)."""
     path.mkdir(parents=True, exist_ok=True)
     os.chmod(path, 0o700)
     return path
 
 
-def _lock_keys(settings: Settings, data_dir: Path) -> LockKeys:
-    """The lock's keys: the shared secret, else the key file, else one kept in the data dir."""
+def lock_keys_for(settings: Settings, data_dir: Path) -> LockKeys:
+    """The lock's keys: the shared secret, else the key file, else one kept in the data dir.
+    ``serve`` and ``lock-sim`` both call this, so on one data folder they agree by default."""
     if settings.lock_shared_key is not None:
         return LockKeys.from_secret(settings.lock_shared_key.get_secret_value())
     path = settings.lock_key_file or data_dir / LOCK_KEYS_FILE
