@@ -1,5 +1,6 @@
 """``assistantx map render``: draw the office map with its anchors, a planned path and AMCL's
-particle cloud to a PNG."""
+particle cloud to a PNG (``--out``, default ``maps/`` inside the data directory, never the
+current working tree)."""
 
 from __future__ import annotations
 
@@ -14,13 +15,16 @@ from assistantx.clock import SimClock
 from assistantx.errors import AssistantXError
 from assistantx.office import DEFAULT_OFFICE, load_office
 from assistantx.robot.render import render_map
+from assistantx.settings import Settings
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = sub.add_parser("map", help="robot map tools")
     map_sub = parser.add_subparsers(dest="map_command", required=True, metavar="ACTION")
     render = map_sub.add_parser("render", help="render the map, anchors, a path, particles")
-    render.add_argument("--out", required=True, type=Path, help="PNG file to write")
+    render.add_argument(
+        "--out", type=Path, default=None, help="PNG file to write (default: DATA/maps/NAME.png)"
+    )
     render.add_argument("--map", type=Path, default=DEFAULT_MAP, help="map_server YAML")
     render.add_argument("--anchors", type=Path, default=None, help="anchors YAML")
     render.add_argument("--office", type=Path, default=DEFAULT_OFFICE, help="office YAML")
@@ -63,7 +67,15 @@ async def _render(args: argparse.Namespace) -> int:
             await robot.move_to(goal)
     state = robot.state()
     particles = np.array(state.particles) if state.particles else None
-    out = render_map(robot.grid, args.out, anchors=robot.anchors, path=path, particles=particles)
+    target: Path = args.out or default_out(Settings().data_dir, args.map, start, goal)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    out = render_map(robot.grid, target, anchors=robot.anchors, path=path, particles=particles)
     length = f", path {robot.path_distance(start, goal):.2f} m" if start and goal else ""
     print(f"wrote {out}{length}")
     return 0
+
+
+def default_out(data_dir: Path, map_yaml: Path, start: str | None, goal: str | None) -> Path:
+    """``DATA/maps/office.png``, or ``DATA/maps/office-desk_03-print_room.png`` with a path."""
+    name = "-".join(p for p in (map_yaml.stem, start, goal) if p)
+    return data_dir / "maps" / f"{name}.png"
