@@ -163,8 +163,10 @@ class NavigatorRobot(RobotBase):
         try:
             for seconds in nav.follow(path, anchor.yaw):
                 await self.clock.sleep(seconds)
-        except RobotError:
-            self._goal = None
+        except (RobotError, asyncio.CancelledError):
+            # Stopped short (blocked, or the instruction was cancelled): no goal, and no
+            # planned path left for the dashboard to draw.
+            self._goal, self._path = None, None
             raise
         true = nav.base.true_pose
         miss = math.hypot(true[0] - anchor.x, true[1] - anchor.y)
