@@ -29,6 +29,7 @@ from assistantx.adapters.robot.base import RobotBase
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.assistant import Assistant, AssistantParts, ReasonerFactory
 from assistantx.clock import WallClock
+from assistantx.errors import LockConnectionError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import LockKeys
@@ -142,7 +143,14 @@ class ServiceRuntime:
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
 
-        await stack.enter_async_context(self.locker)
+        try:
+            await stack.enter_async_context(self.locker)
+        except LockConnectionError as exc:
+            raise LockConnectionError(
+                f"{exc}. Start `assistantx lock-sim` first: with no key configured it shares "
+                f"the key in {self.settings.data_dir}; otherwise give both the same "
+                "ASSISTANTX_LOCK_SHARED_KEY or ASSISTANTX_LOCK_KEY_FILE"
+            ) from exc
         await stack.enter_async_context(self.messenger)
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
