@@ -3,21 +3,38 @@ PY := $(VENV)/bin/python
 PIP := $(VENV)/bin/pip
 HOST ?= 127.0.0.1
 PORT ?= 8000
+# Project-local installs for the tests (gitignored): `make test` puts them here and the tests
+# find them here (the tests' own default too; override by setting the variable).
+SYNAPSE_VENV ?= $(CURDIR)/.cache/synapse-venv
+export SYNAPSE_VENV
 
-.PHONY: run test check fmt clean
+# What `make test` installs before it runs the suite: one target per thing, each idempotent
+# and saying what it installs. Add a new one here and below.
+TEST_INSTALLS := install-synapse install-browser
+
+.PHONY: run test check fmt clean $(TEST_INSTALLS)
 
 $(VENV)/bin/python:
 	python3 -m venv $(VENV)
 	$(PIP) install --quiet --upgrade pip
 
 $(VENV)/.installed: pyproject.toml | $(VENV)/bin/python
+	@echo "make: AssistantX with its test and dev tools into $(VENV)"
 	$(PIP) install --quiet -e '.[test,dev]'
 	touch $@
 
 run: $(VENV)/.installed
 	$(VENV)/bin/assistantx serve --host $(HOST) --port $(PORT)
 
-test: $(VENV)/.installed
+install-synapse:  # the Matrix homeserver of the synapse-marked tests, in its own venv
+	@echo "make test: Synapse (Matrix homeserver for tests/synapse) into $(SYNAPSE_VENV)"
+	@bash .ci/install-synapse >/dev/null
+
+install-browser:  # Debian's Chromium for the browser-marked tests (apt-get, sudo if needed)
+	@echo "make test: Chromium (for tests/browser) at /usr/bin/chromium"
+	@bash .ci/install-browser
+
+test: $(VENV)/.installed $(TEST_INSTALLS)
 	$(PY) -m pytest -q
 
 check: $(VENV)/.installed
@@ -30,4 +47,4 @@ fmt: $(VENV)/.installed
 	$(VENV)/bin/ruff check --fix src tests bench
 
 clean:
-	rm -rf $(VENV) .mypy_cache .ruff_cache .pytest_cache
+	rm -rf $(VENV) .cache .mypy_cache .ruff_cache .pytest_cache

@@ -28,13 +28,12 @@ def test_lock_keys_new_then_rotate(tmp_path: Path, capsys: pytest.CaptureFixture
     assert "current key k3" in capsys.readouterr().out
 
 
-def test_lock_sim_refuses_to_start_without_keys(
+def test_lock_sim_refuses_to_start_with_bad_keys(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    monkeypatch.delenv("ASSISTANTX_LOCK_SHARED_KEY", raising=False)
+    # Without any key it shares the service's (tests/cli/test_names_cli.py); bad keys stop it.
     monkeypatch.delenv("ASSISTANTX_LOCK_KEY_FILE", raising=False)
-    assert main(["lock-sim", "--port", "0"]) == 2
-    assert "ASSISTANTX_LOCK_SHARED_KEY" in capsys.readouterr().out
+    monkeypatch.setenv("ASSISTANTX_DATA_DIR", str(tmp_path / "data"))
     monkeypatch.setenv("ASSISTANTX_LOCK_SHARED_KEY", "short")
     assert main(["lock-sim", "--port", "0"]) == 2
     assert "at least 16 bytes" in capsys.readouterr().out

@@ -88,13 +88,16 @@ async def test_run_with_the_llm_reasoner_prints_the_json_summary(
     assert summary["llm_calls"] == len(scripted_llm.requests) == 15  # 4 agents x 4, no reflect
     assert summary["prompt_tokens"] > 0 and summary["completion_tokens"] > 0
     assert all(r.status == 200 for r in scripted_llm.requests)
-    assert "llm: 15 calls" in out  # the printed trace ends with the usage line
+    # The printed trace ends with the usage line; with --json it goes to stderr, so stdout
+    # holds only the JSON object.
+    assert "llm: 15 calls" in err
+    assert len(out.strip().splitlines()) == 1
 
 
 async def test_run_with_the_llm_reasoner_needs_a_base_url() -> None:
-    code, out, _ = await _run_cli(_env(), "--as", "lee", "--reasoner", "llm", "hello")
+    code, _, err = await _run_cli(_env(), "--as", "lee", "--reasoner", "llm", "hello")
     assert code == 1
-    assert "ASSISTANTX_LLM_BASE_URL" in out
+    assert "ASSISTANTX_LLM_BASE_URL" in err  # errors go to stderr, one line
 
 
 async def test_run_reports_a_server_that_refuses_us(

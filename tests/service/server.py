@@ -78,7 +78,8 @@ def start(args: list[str], env: Mapping[str, str], port: int, timeout_s: float =
             pass
         time.sleep(0.1)
     process.kill()
-    raise RuntimeError("server did not become ready")
+    process.wait(10)  # reaped here, not left for a later test's garbage collection to warn about
+    raise RuntimeError(f"server did not become ready in {timeout_s} s:\n{log.read_text()}")
 
 
 def serve(data_dir: Path, port: int, **extra: str) -> Server:

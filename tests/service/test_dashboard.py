@@ -40,16 +40,16 @@ def _free_port() -> int:
 
 @contextlib.asynccontextmanager
 async def serve(tmp_path: Path, **overrides: object) -> AsyncIterator[httpx.AsyncClient]:
-    settings = Settings(
-        data_dir=tmp_path / "data",
-        results_dir=tmp_path / "results",
-        operator_token=TOKEN,
-        tokens=json.dumps({LEE_TOKEN: "lee"}),
-        people="human",
-        speedup=200,
-        reasoner_builder="service.stapler_reasoner:build_factory",
-        **overrides,
-    )
+    values: dict[str, object] = {
+        "data_dir": tmp_path / "data",
+        "results_dir": tmp_path / "results",
+        "operator_token": TOKEN,
+        "tokens": json.dumps({LEE_TOKEN: "lee"}),
+        "people": "human",
+        "speedup": 200,
+        "reasoner_builder": "service.stapler_reasoner:build_factory",
+    }
+    settings = Settings(**{**values, **overrides})  # type: ignore[arg-type]
     config = uvicorn.Config(
         create_app(settings), host="127.0.0.1", port=_free_port(), log_level="warning", ws="none"
     )

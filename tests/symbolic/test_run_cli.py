@@ -20,12 +20,13 @@ def test_run_defaults_to_symbolic_and_finishes(
     monkeypatch.delenv("ASSISTANTX_LLM_BASE_URL", raising=False)
     monkeypatch.delenv("ASSISTANTX_REASONER", raising=False)
     code = main(["run", "--as", "lee", "--json", "bring me a stapler"])
-    out = capsys.readouterr().out
+    out, err = capsys.readouterr()
     assert code == 0
     summary = _last_json(out)
     assert summary["reasoner"] == "symbolic"
     assert summary["outcome"] == "done"
-    assert "reflection Y" in out and "plan: bring a stapler to Lee Ming" in out
+    # With --json the readable trace goes to stderr: stdout is the JSON object alone.
+    assert "reflection Y" in err and "plan: bring a stapler to Lee Ming" in err
 
 
 def test_run_asks_the_group_when_known_owners_are_away(

@@ -1,5 +1,6 @@
 """A real Synapse homeserver for tests: installed into its own virtualenv by
-``.ci/install-synapse``, configured in a temporary directory, started as a subprocess on a free
+``.ci/install-synapse`` (``$SYNAPSE_VENV``, default ``.cache/synapse-venv`` in the repository,
+where ``make test`` puts it), configured in a temporary directory, started as a subprocess on a free
 127.0.0.1 port, and stopped by its process id.
 
 The configuration is made for tests: SQLite, no federation, no URL previews, no stats, no

@@ -2,8 +2,10 @@
 make and rotate key files.
 
 Keys come from ``--key-file`` (or ``ASSISTANTX_LOCK_KEY_FILE``), else from the shared secret
-in ``ASSISTANTX_LOCK_SHARED_KEY``: the same rule as ``assistantx serve``
-(``assistantx.lock.keys.load_lock_keys``). Rotation without downtime::
+in ``ASSISTANTX_LOCK_SHARED_KEY``, else from the key file kept in ``ASSISTANTX_DATA_DIR`` (made
+there by whichever of ``lock-sim`` and ``serve`` starts first): the one rule of
+``assistantx.lock.keys.load_lock_keys``, so a lock-sim and a service on one data folder agree
+with no key configured. Rotation without downtime::
 
     assistantx lock-keys rotate keys.json   # new current key, previous one kept
     kill -HUP <lock-sim pid>                # the lock now accepts both keys
@@ -24,6 +26,7 @@ from assistantx.lock.controller import LockController
 from assistantx.lock.keys import KeyringError, LockKeys, load_lock_keys, new_key
 from assistantx.lock.link import LinkTimeouts
 from assistantx.lock.server import LockServer
+from assistantx.service.runtime import LOCK_KEYS_FILE, ensure_data_dir
 from assistantx.settings import Settings
 
 
@@ -34,7 +37,9 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     sim.add_argument("--host", default="127.0.0.1", help="address to listen on")
     sim.add_argument("--port", type=int, help="default ASSISTANTX_LOCK_PORT; 0 picks a free one")
     sim.add_argument("--lock-id", help="default ASSISTANTX_LOCK_ID")
-    sim.add_argument("--key-file", type=Path, help="default ASSISTANTX_LOCK_KEY_FILE")
+    sim.add_argument(
+        "--key-file", type=Path, help="default: the keys `assistantx serve` uses on the data folder"
+    )
     sim.add_argument(
         "--handshake-timeout",
         type=float,
@@ -68,10 +73,10 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 
 def _load_keys(key_file: Path | None, settings: Settings) -> LockKeys:
     secret = settings.lock_shared_key
-    if key_file is None and secret is None:
-        raise KeyringError("give --key-file, or set ASSISTANTX_LOCK_SHARED_KEY")
     return load_lock_keys(
-        key_file=key_file, secret=secret.get_secret_value() if secret is not None else None
+        key_file=key_file or settings.lock_key_file,
+        secret=secret.get_secret_value() if secret is not None else None,
+        fallback_file=ensure_data_dir(settings.data_dir) / LOCK_KEYS_FILE,
     )
 
 
@@ -83,14 +88,16 @@ def run_lock_sim(args: argparse.Namespace) -> int:
         settings = Settings()
         args.port = settings.lock_port if args.port is None else args.port
         args.lock_id = args.lock_id or settings.lock_id
-        args.key_file = args.key_file or settings.lock_key_file
         keys = _load_keys(args.key_file, settings)
+        if args.key_file is None and settings.lock_shared_key is None:
+            # SIGHUP reloads the file serve and lock-sim share (the data folder's by default).
+            args.key_file = settings.lock_key_file or settings.data_dir / LOCK_KEYS_FILE
         timeouts = LinkTimeouts(
             handshake_s=args.handshake_timeout,
             frame_s=args.frame_timeout,
             idle_s=args.idle_timeout,
         )
-    except (KeyringError, ValueError) as exc:
+    except (KeyringError, ValueError, OSError) as exc:
         print(f"lock-sim: {exc}")
         return 2
     return asyncio.run(_serve(args, keys, timeouts))

@@ -1,6 +1,7 @@
 """``assistantx map render``: draw a map (with its anchors when it has them), a planned path
-and AMCL's particle cloud to a PNG. ``assistantx map check``: does every office location
-have an anchor in free space the robot fits in, reachable from the others?"""
+and AMCL's particle cloud to a PNG (``--out``, default ``maps/`` inside the data directory, never
+the current working tree). ``assistantx map check``: does every office location have an anchor
+in free space the robot fits in, reachable from the others?"""
 
 from __future__ import annotations
 
@@ -19,13 +20,16 @@ from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.costmap import Costmap
 from assistantx.robot.occupancy_map import load_map
 from assistantx.robot.render import render_map
+from assistantx.settings import Settings
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = sub.add_parser("map", help="robot map tools")
     map_sub = parser.add_subparsers(dest="map_command", required=True, metavar="ACTION")
     render = map_sub.add_parser("render", help="render the map, anchors, a path, particles")
-    render.add_argument("--out", required=True, type=Path, help="PNG file to write")
+    render.add_argument(
+        "--out", type=Path, default=None, help="PNG file to write (default: DATA/maps/NAME.png)"
+    )
     render.add_argument("--map", type=Path, default=DEFAULT_MAP, help="map_server YAML")
     render.add_argument("--anchors", type=Path, default=None, help="anchors YAML")
     render.add_argument("--office", type=Path, default=DEFAULT_OFFICE, help="office YAML")
@@ -118,7 +122,15 @@ async def _render(args: argparse.Namespace) -> int:
             await robot.move_to(goal)
     state = robot.state()
     particles = np.array(state.particles) if state.particles else None
-    out = render_map(robot.grid, args.out, anchors=robot.anchors, path=path, particles=particles)
+    target: Path = args.out or default_out(Settings().data_dir, args.map, start, goal)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    out = render_map(robot.grid, target, anchors=robot.anchors, path=path, particles=particles)
     length = f", path {robot.path_distance(start, goal):.2f} m" if start and goal else ""
     print(f"wrote {out}{length}")
     return 0
+
+
+def default_out(data_dir: Path, map_yaml: Path, start: str | None, goal: str | None) -> Path:
+    """``DATA/maps/office.png``, or ``DATA/maps/office-desk_03-print_room.png`` with a path."""
+    name = "-".join(p for p in (map_yaml.stem, start, goal) if p)
+    return data_dir / "maps" / f"{name}.png"

@@ -1,8 +1,10 @@
 """``assistantx run``: one instruction in the simulated office, its trace printed step by step.
 
-With ``--json`` the last line of stdout is one JSON object with ``outcome``, ``steps``,
-``actions`` (and the goal-free facts: messages sent, distance driven, usage); ``--trace-out``
-writes the full trace JSON to a file.
+With ``--json`` stdout is exactly one JSON object with ``outcome``, ``steps``, ``actions`` (and
+the goal-free facts: messages sent, distance driven, usage), so a script can parse it whole; the
+readable trace then goes to stderr. ``--trace-out`` writes the full trace JSON to a file. Names
+(``--as``, ``--unavailable``) are matched like any name a person types; errors are one line on
+stderr.
 """
 
 from __future__ import annotations
@@ -10,9 +12,11 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
+from assistantx.cli._people import resolve_people
 from assistantx.dataset.simrun import run_in_sim
 from assistantx.errors import AssistantXError, GroundingError, OfficeError
 from assistantx.office import load_office
@@ -26,7 +30,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = sub.add_parser("run", help="run one instruction in the simulated office")
     p.add_argument("instruction", help="the instruction, in plain words")
     p.add_argument("--as", dest="requester", required=True, help="who asks (person id or name)")
-    p.add_argument("--unavailable", default="", help="comma-separated ids of absent people")
+    p.add_argument("--unavailable", default="", help="comma-separated names of absent people")
     p.add_argument(
         "--reasoner",
         choices=["symbolic", "llm"],
@@ -45,20 +49,22 @@ def _run(args: argparse.Namespace) -> int:
     settings = Settings()
     try:
         office = load_office(args.office or settings.office)
-    except OfficeError as exc:
-        print(f"error: {exc}")
+        args.requester, args.unavailable = resolve_people(office, args.requester, args.unavailable)
+    except (OfficeError, GroundingError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
         return 2
     kind = args.reasoner or settings.effective_reasoner
     try:
         summary, trace = asyncio.run(_execute(args, settings, office, kind))
     except GroundingError as exc:
-        print(f"error: {exc}")
+        print(f"error: {exc}", file=sys.stderr)
         return 2
     except AssistantXError as exc:
-        print(f"error: {exc}")
+        print(f"error: {exc}", file=sys.stderr)
         return 1
     if not args.quiet:
-        print_trace(trace)
+        # With --json, stdout holds only the JSON object; the readable trace goes to stderr.
+        print_trace(trace, sys.stderr if args.json else sys.stdout)
     if args.trace_out:
         Path(args.trace_out).write_text(trace.model_dump_json(indent=2))
     if args.json:
@@ -69,7 +75,7 @@ def _run(args: argparse.Namespace) -> int:
 async def _execute(
     args: argparse.Namespace, settings: Settings, office: Any, kind: str
 ) -> tuple[dict[str, Any], Trace]:
-    unavailable = tuple(p for p in args.unavailable.split(",") if p)
+    unavailable: tuple[str, ...] = args.unavailable
     limits = LoopLimits(
         max_steps=args.max_steps or settings.max_steps, deadline_s=settings.instruction_deadline_s
     )
@@ -103,33 +109,34 @@ async def _execute(
     return summary, trace
 
 
-def print_trace(trace: Trace) -> None:
-    print(f"instruction {trace.instruction_id} from {trace.requester}: {trace.text!r}")
+def print_trace(trace: Trace, out: TextIO = sys.stdout) -> None:
+    print(f"instruction {trace.instruction_id} from {trace.requester}: {trace.text!r}", file=out)
     for step in trace.steps:
-        print(f"-- step {step.index}")
+        print(f"-- step {step.index}", file=out)
         if step.percept and step.percept.summary:
-            print(f"   percept: {step.percept.summary}")
+            print(f"   percept: {step.percept.summary}", file=out)
         if step.plan:
             todo = [("[x] " if s.done else "[ ] ") + s.description for s in step.plan.subgoals]
-            print(f"   plan: {step.plan.goal}")
+            print(f"   plan: {step.plan.goal}", file=out)
             for line in todo:
-                print(f"     {line}")
+                print(f"     {line}", file=out)
         for f in step.feedback:
-            print(f"   feedback: {f}")
+            print(f"   feedback: {f}", file=out)
         for r in step.results:
             status = "refused" if r.refused else ("ok" if r.ok else "failed")
-            print(f"   t={r.started_at:6.0f}s {r.action.signature()}")
-            print(f"            -> {status}: {r.observation}")
+            print(f"   t={r.started_at:6.0f}s {r.action.signature()}", file=out)
+            print(f"            -> {status}: {r.observation}", file=out)
         if step.reflection:
-            print(f"   reflection {step.reflection.verdict}: {step.reflection.reason}")
+            print(f"   reflection {step.reflection.verdict}: {step.reflection.reason}", file=out)
             for applied in step.applied:
-                print(f"     memory: {applied.update.model_dump(exclude={'evidence'})}")
+                print(f"     memory: {applied.update.model_dump(exclude={'evidence'})}", file=out)
         if step.queue:
-            print(f"   queued behind: {', '.join(step.queue)}")
-    print(f"outcome: {trace.outcome} — {trace.summary}")
+            print(f"   queued behind: {', '.join(step.queue)}", file=out)
+    print(f"outcome: {trace.outcome} — {trace.summary}", file=out)
     if trace.usage.llm_calls:
         u = trace.usage
         print(
             f"llm: {u.calls} calls, {u.prompt_tokens}+{u.completion_tokens} tokens, "
-            f"{u.latency_s:.1f} s"
+            f"{u.latency_s:.1f} s",
+            file=out,
         )

@@ -3,7 +3,8 @@
 Actions are typed as JSON (``{"type": "inquire", "contact": "zhang", "question": "..."}``) or
 as ``TYPE key=value ...`` (``inquire contact=zhang question="Do you have a stapler?"``).
 ``:goal {"holds": ["lee", "stapler:zhang"]}`` checks a milestone, ``:world`` prints the truth,
-``:quit`` ends. Reads stdin, so a script can be piped in.
+``help`` lists all this, ``:quit`` ends. Reads stdin, so a script can be piped in. ``--as`` and
+``--unavailable`` take names, matched like any name a person types.
 """
 
 from __future__ import annotations
@@ -18,17 +19,42 @@ from typing import Any
 from pydantic import ValidationError
 
 from assistantx.actions import parse_action
+from assistantx.cli._people import resolve_people
 from assistantx.errors import GroundingError, OfficeError
 from assistantx.office import load_office
 from assistantx.sim.session import SimSession
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = sub.add_parser("sim", help="drive the simulated office by hand")
-    parser.add_argument("--as", dest="requester", default="lee", help="the requester")
-    parser.add_argument("--unavailable", default="", help="comma-separated person ids")
+    parser = sub.add_parser(
+        "sim",
+        help="drive the simulated office by hand",
+        description="Drive the simulated office by hand: one action per line on stdin.",
+        epilog=HELP,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--as", dest="requester", default="lee", help="the requester's name")
+    parser.add_argument("--unavailable", default="", help="comma-separated names of absent people")
     parser.add_argument("--office", default=None, help="office YAML")
     parser.set_defaults(func=_run)
+
+
+HELP = """\
+actions (one per line):
+  inform contact=zhang content="The robot is on its way"
+  inquire contact=zhang question="Do you have a stapler?"
+  forward_file source=lee target=zhang
+  send_qr contact=zhang item=stapler:zhang
+  wait timeout_s=60
+  move place=zhang            (a person's desk, a facility or a location)
+  wait_in_place person=zhang
+  stop outcome=done summary="..."
+  or as JSON: {"type": "inquire", "contact": "zhang", "question": "..."}
+commands:
+  :goal {"holds": ["lee", "stapler:zhang"]}   check a milestone
+  :world                                      the simulated truth
+  help                                        this text
+  :quit                                       end"""
 
 
 def parse_line(line: str) -> dict[str, Any]:
@@ -51,22 +77,25 @@ def parse_line(line: str) -> dict[str, Any]:
 def _run(args: argparse.Namespace) -> int:
     try:
         office = load_office(args.office)
-    except OfficeError as exc:
-        print(f"error: {exc}")
+        requester, unavailable = resolve_people(office, args.requester, args.unavailable)
+    except (OfficeError, GroundingError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
         return 2
-    unavailable = tuple(p for p in args.unavailable.split(",") if p)
-    return asyncio.run(_session(office, args.requester, unavailable))
+    return asyncio.run(_session(office, requester, unavailable))
 
 
 async def _session(office: Any, requester: str, unavailable: tuple[str, ...]) -> int:
     async with SimSession(office, requester=requester, unavailable=unavailable) as s:
-        print(f"simulated office; requester {s.stm.requester}; type actions, :quit to end")
+        print(f"simulated office; requester {s.stm.requester}; type actions, help, :quit to end")
         for raw in sys.stdin:
             line = raw.strip()
             if not line or line.startswith("#"):
                 continue
             if line in (":quit", ":q"):
                 break
+            if line in ("help", ":help", "?"):
+                print(HELP)
+                continue
             if line == ":world":
                 w = s.sim.world
                 print(

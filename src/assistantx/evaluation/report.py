@@ -112,23 +112,42 @@ def markdown(summary: dict[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def chart_data(summary: dict[str, Any], name: str) -> dict[str, Any]:
+    """What one metric's chart shows: per level the mean and spread (%), the y range, and a
+    note for a chart that would otherwise look empty (RR is often 0 everywhere)."""
+    groups = list(summary["levels"])
+    means = [100 * (summary["levels"][g][name]["mean"] or 0.0) for g in groups]
+    stds = [100 * (summary["levels"][g][name]["std"] or 0.0) for g in groups]
+    tops = [m + s for m, s in zip(means, stds, strict=True)]
+    if name == "rr":  # a ratio of redundant actions: small, and unbounded above
+        top = max(10.0, *tops) * 1.15
+    else:
+        top = max(100.0, *tops) * 1.05
+    note = None
+    if name == "rr" and not any(tops):
+        note = "0 redundant actions at every level"
+    return {"groups": groups, "means": means, "stds": stds, "ylim": (0.0, top), "note": note}
+
+
 def charts(summary: dict[str, Any], out: Path) -> list[Path]:
-    """One PNG bar chart per metric: a bar per level with the spread over runs."""
+    """One PNG bar chart per metric: a bar per level with the spread over runs, each bar
+    labelled with its value so a zero is visible too."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     written = []
-    groups = list(summary["levels"])
     for name in METRICS:
-        means = [100 * (summary["levels"][g][name]["mean"] or 0.0) for g in groups]
-        stds = [100 * (summary["levels"][g][name]["std"] or 0.0) for g in groups]
+        data = chart_data(summary, name)
         fig, ax = plt.subplots(figsize=(5, 3.2), dpi=100)
-        ax.bar(groups, means, yerr=stds, capsize=4, color="#4C72B0")
+        bars = ax.bar(data["groups"], data["means"], yerr=data["stds"], capsize=4, color="#4C72B0")
+        ax.bar_label(bars, labels=[f"{m:.1f}" for m in data["means"]], padding=3)
         ax.set_ylabel(f"{name.upper()} (%)")
         ax.set_title(f"{name.upper()} by level — {summary['method']}")
-        ax.set_ylim(0, max(100.0, *(m + s for m, s in zip(means, stds, strict=True))) * 1.05)
+        ax.set_ylim(*data["ylim"])
+        if data["note"]:
+            ax.text(0.5, 0.55, data["note"], transform=ax.transAxes, ha="center", fontsize=11)
         fig.tight_layout()
         path = out / f"{name}.png"
         fig.savefig(path)

@@ -16,6 +16,7 @@ import io
 import math
 import statistics
 from collections import Counter, defaultdict
+from collections.abc import Mapping
 from datetime import UTC, date, datetime, time, timedelta
 from pathlib import Path
 from typing import Literal
@@ -23,6 +24,7 @@ from typing import Literal
 from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 from pydantic import BaseModel, Field
 
 from assistantx.feedback.answers import CHOICES, Choice
@@ -78,6 +80,7 @@ class SurveyComment(BaseModel):
     instruction_id: str
     person: str
     text: str
+    name: str = Field(default="", description="the person's display name (the id when unknown)")
 
 
 class SurveySummary(BaseModel):
@@ -98,6 +101,7 @@ class SurveySummary(BaseModel):
 class PersonWalking(BaseModel):
     instructions: int
     saved_m: float
+    name: str = Field(default="", description="the person's display name (the id when unknown)")
 
 
 class WalkingSummary(BaseModel):
@@ -152,20 +156,29 @@ def load_report(
     now: float = 0.0,
     *,
     requester: str | None = None,
+    names: Mapping[str, str] | None = None,
 ) -> UsageReport:
-    """The report of the instructions that ended in [start, end) (of one requester if given)."""
+    """The report of the instructions that ended in [start, end) (of one requester if given);
+    ``names`` (person id → display name) names people in the text and charts."""
     if start is not None and end is not None and end <= start:
         raise ValueError("the end of the period must come after its start")
     records = store.instructions(start, end)
     if requester is not None:
         records = [r for r in records if r.requester == requester]
     surveys = store.surveys([r.instruction_id for r in records])
-    return build_report(records, surveys, Period(start=start, end=end, requester=requester), now)
+    period = Period(start=start, end=end, requester=requester)
+    return build_report(records, surveys, period, now, names=names)
 
 
 def build_report(
-    records: list[InstructionRecord], surveys: list[Survey], period: Period, now: float = 0.0
+    records: list[InstructionRecord],
+    surveys: list[Survey],
+    period: Period,
+    now: float = 0.0,
+    *,
+    names: Mapping[str, str] | None = None,
 ) -> UsageReport:
+    names = names or {}
     return UsageReport(
         period=period,
         generated_at=now,
@@ -174,8 +187,8 @@ def build_report(
             total=sum(r.group_requests for r in records),
             instructions=sum(1 for r in records if r.group_requests),
         ),
-        surveys=_surveys(surveys),
-        walking=_walking(records),
+        surveys=_surveys(surveys, names),
+        walking=_walking(records, names),
     )
 
 
@@ -209,7 +222,7 @@ def _durations(values: list[float]) -> Durations:
     )
 
 
-def _surveys(surveys: list[Survey]) -> SurveySummary:
+def _surveys(surveys: list[Survey], names: Mapping[str, str]) -> SurveySummary:
     questions = []
     for question in QUESTIONS:
         counts = Counter(s.answers[question.id] for s in surveys if question.id in s.answers)
@@ -243,14 +256,19 @@ def _surveys(surveys: list[Survey]) -> SurveySummary:
         response_rate=round(len(responded) / len(surveys), 4) if surveys else None,
         questions=questions,
         comments=[
-            SurveyComment(instruction_id=s.instruction_id, person=s.person, text=s.comment)
+            SurveyComment(
+                instruction_id=s.instruction_id,
+                person=s.person,
+                text=s.comment,
+                name=names.get(s.person, s.person),
+            )
             for s in surveys
             if s.comment
         ],
     )
 
 
-def _walking(records: list[InstructionRecord]) -> WalkingSummary:
+def _walking(records: list[InstructionRecord], names: Mapping[str, str]) -> WalkingSummary:
     per_person: dict[str, list[float]] = defaultdict(list)
     for r in records:
         per_person[r.requester].append(r.walking.saved_m)
@@ -259,7 +277,7 @@ def _walking(records: list[InstructionRecord]) -> WalkingSummary:
         walk_m=round(sum(r.walking.walk_m for r in records), 3),
         robot_m=round(sum(r.walking.robot_m for r in records), 3),
         by_person={
-            p: PersonWalking(instructions=len(v), saved_m=round(sum(v), 3))
+            p: PersonWalking(instructions=len(v), saved_m=round(sum(v), 3), name=names.get(p, p))
             for p, v in sorted(per_person.items())
         },
         method=dict(Counter(r.walking.method for r in records)),
@@ -298,7 +316,7 @@ def render_markdown(report: UsageReport) -> str:
         lines.append(f"| {q.text} | " + " | ".join(cells) + f" | {q.no_answer} |")
     if srv.comments:
         lines += ["", "Comments:", ""]
-        lines += [f"- {c.person} ({c.instruction_id}): {_one_line(c.text)}" for c in srv.comments]
+        lines += [f"- {c.name or c.person}: {_one_line(c.text)}" for c in srv.comments]
     lines += [
         "",
         "## Walking saved",
@@ -308,7 +326,9 @@ def render_markdown(report: UsageReport) -> str:
         "| person | instructions | saved (m) |",
         "|---|---|---|",
     ]
-    lines += [f"| {p} | {w.instructions} | {w.saved_m:.1f} |" for p, w in walk.by_person.items()]
+    lines += [
+        f"| {w.name or p} | {w.instructions} | {w.saved_m:.1f} |" for p, w in walk.by_person.items()
+    ]
     return "\n".join(lines) + "\n"
 
 
@@ -341,9 +361,10 @@ _OUTCOME_COLOURS = {
 }
 
 
-def render_chart(report: UsageReport, name: ChartName) -> bytes:
-    """One chart as PNG bytes."""
+def chart_figure(report: UsageReport, name: ChartName) -> Figure:
+    """One chart as a matplotlib Figure (drawn on the Agg canvas)."""
     figure = Figure(figsize=(6.4, 3.6), dpi=100, layout="constrained")
+    FigureCanvasAgg(figure)  # attaches the Agg canvas to the figure
     axes = figure.add_subplot()
     if name == "outcomes":
         _outcomes_chart(report, axes)
@@ -353,9 +374,13 @@ def render_chart(report: UsageReport, name: ChartName) -> bytes:
         _walking_chart(report, axes)
     else:
         raise ValueError(f"unknown chart {name!r}; charts: {', '.join(CHARTS)}")
+    return figure
+
+
+def render_chart(report: UsageReport, name: ChartName) -> bytes:
+    """One chart as PNG bytes."""
     buffer = io.BytesIO()
-    FigureCanvasAgg(figure)  # attaches the Agg canvas to the figure
-    figure.savefig(buffer, format="png")
+    chart_figure(report, name).savefig(buffer, format="png")
     return buffer.getvalue()
 
 
@@ -367,8 +392,9 @@ def _outcomes_chart(report: UsageReport, axes: Axes) -> None:
         axes.bar(kinds, counts, bottom=bottom, label=outcome, color=_OUTCOME_COLOURS[outcome])
         bottom = [b + c for b, c in zip(bottom, counts, strict=True)]
     axes.set_ylabel("instructions")
+    axes.yaxis.set_major_locator(MaxNLocator(integer=True))  # whole instructions only
     axes.set_title("Instructions by kind and outcome")
-    axes.legend(fontsize="small")
+    _legend_outside(axes)
 
 
 def _survey_chart(report: UsageReport, axes: Axes) -> None:
@@ -382,11 +408,21 @@ def _survey_chart(report: UsageReport, axes: Axes) -> None:
     axes.set_xlim(0, 100)
     axes.set_xlabel("% of answers")
     axes.set_title("Survey answers")
-    axes.legend(fontsize="small", loc="lower right")
+    _legend_outside(axes)
+
+
+def _legend_outside(axes: Axes) -> None:
+    """The legend right of the plot, never over a bar."""
+    axes.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+
+
+def chart_people(report: UsageReport) -> list[str]:
+    """The walking chart's bar labels: people by name, in the report's order."""
+    return [w.name or p for p, w in report.walking.by_person.items()]
 
 
 def _walking_chart(report: UsageReport, axes: Axes) -> None:
-    people = list(report.walking.by_person) or ["(none)"]
+    people = chart_people(report) or ["(none)"]
     saved = [w.saved_m for w in report.walking.by_person.values()] or [0.0]
     axes.bar(people, saved, color="#1565c0")
     axes.set_ylabel("metres")

@@ -52,10 +52,18 @@ class Resolver:
 
     # -- single lookups ------------------------------------------------------------------
     def person(self, name: str) -> str:
-        return self._one("person", name, self.people.lookup(name), self._people_hint())
+        return self._one(
+            "person", name, self.people.lookup(name), self._people_hint(), self.people.keys()
+        )
+
+    def people_list(self, names: str) -> tuple[str, ...]:
+        """Comma-separated names ("Zhang, Mr Wang") → person ids, each matched like one name."""
+        return tuple(dict.fromkeys(self.person(n) for n in names.split(",") if n.strip()))
 
     def group(self, name: str) -> str:
-        return self._one("group chat", name, self.groups.lookup(name), self._groups_hint())
+        return self._one(
+            "group chat", name, self.groups.lookup(name), self._groups_hint(), self.groups.keys()
+        )
 
     def contact(self, name: str) -> tuple[ContactKind, str]:
         """A person or a group chat. A name that matches both is ambiguous."""
@@ -72,7 +80,11 @@ class Resolver:
         if groups:
             return "group", self._one("group chat", name, groups, self._groups_hint())
         return "person", self._one(
-            "contact", name, people, self._people_hint() + " " + self._groups_hint()
+            "contact",
+            name,
+            people,
+            self._people_hint() + " " + self._groups_hint(),
+            self.people.keys() + self.groups.keys(),
         )
 
     def place(self, name: str) -> str:
@@ -92,15 +104,20 @@ class Resolver:
             + ", ".join(f.id for f in self.office.facilities)
             + ") or a location id."
         )
-        return self._one("place", name, sorted(found), hint)
+        universe = self.locations.keys() + self.facilities.keys() + self.people.keys()
+        return self._one("place", name, sorted(found), hint, universe)
 
     def facility(self, name: str) -> str:
         hint = "Facilities: " + ", ".join(f.id for f in self.office.facilities) + "."
-        return self._one("facility", name, self.facilities.lookup(name), hint)
+        return self._one(
+            "facility", name, self.facilities.lookup(name), hint, self.facilities.keys()
+        )
 
     def item_type(self, name: str) -> str:
         hint = "Item types: " + ", ".join(t.id for t in self.office.item_types) + "."
-        return self._one("item type", name, self.item_types.lookup(name), hint)
+        return self._one(
+            "item type", name, self.item_types.lookup(name), hint, self.item_types.keys()
+        )
 
     def item(self, name: str) -> str:
         """An item id ``type:person``: ``stapler:zhang``, "Zhang's stapler", "stapler of Zhang"."""
@@ -150,7 +167,16 @@ class Resolver:
         raise TypeError(f"unknown action {action!r}")  # pragma: no cover
 
     # -- errors --------------------------------------------------------------------------
-    def _one(self, kind: str, name: str, found: list[str], hint: str) -> str:
+    def _one(
+        self,
+        kind: str,
+        name: str,
+        found: list[str],
+        hint: str,
+        universe: list[str] | None = None,
+    ) -> str:
+        """The one id found; else an error whose suggestions are only of the kind asked for
+        (``universe``, the names of that kind), so an unknown person is never offered a room."""
         if len(found) == 1:
             return found[0]
         if found:
@@ -161,13 +187,14 @@ class Resolver:
                 "Use one of these ids.",
                 found,
             )
-        universe = (
-            self.people.keys()
-            + self.groups.keys()
-            + self.facilities.keys()
-            + self.locations.keys()
-            + self.item_types.keys()
-        )
+        if universe is None:
+            universe = (
+                self.people.keys()
+                + self.groups.keys()
+                + self.facilities.keys()
+                + self.locations.keys()
+                + self.item_types.keys()
+            )
         close = difflib.get_close_matches(normalize(name), universe, n=3, cutoff=0.6)
         maybe = f" Did you mean {', '.join(repr(c) for c in close)}?" if close else ""
         raise UnknownNameError(kind, name, f"Unknown {kind} {name!r}.{maybe} {hint}".strip())

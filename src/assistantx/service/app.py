@@ -10,6 +10,7 @@ from contextlib import AsyncExitStack, asynccontextmanager
 from pathlib import Path
 
 from fastapi import FastAPI
+from fastapi.responses import FileResponse
 from fastapi.staticfiles import StaticFiles
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
@@ -129,6 +130,10 @@ def create_app(
         version="0.1.0",
         description="A proactive office assistant: instructions, live traces, memory, chats.",
         lifespan=lifespan,
+        # The stock Swagger UI and ReDoc load their scripts from a CDN and stay blank offline;
+        # /docs is our own page (static/docs.html) reading /openapi.json, served from here.
+        docs_url=None,
+        redoc_url=None,
     )
     app.state.runtime = runtime
     install_error_handlers(app)
@@ -151,6 +156,11 @@ def create_app(
     app.include_router(reports.router)  # also starts surveys (router lifespan)
     if runtime.matrix is not None:
         app.include_router(runtime.matrix.push_router)  # the homeserver's pushes
+
+    @app.get("/docs", include_in_schema=False)
+    async def api_docs() -> FileResponse:
+        return FileResponse(STATIC_DIR / "docs.html", media_type="text/html")
+
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, own_limits=OWN_BODY_LIMITS)

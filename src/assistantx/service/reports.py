@@ -142,8 +142,9 @@ async def _report(
 ) -> UsageReport:
     lo, hi, requester = _period(runtime, caller, start, end, person)
     store = _feedback(request).store
+    names = {p.id: p.name for p in runtime.office.people}
     return await asyncio.to_thread(
-        load_report, store, lo, hi, runtime.clock.now(), requester=requester
+        load_report, store, lo, hi, runtime.clock.now(), requester=requester, names=names
     )
 
 

@@ -32,7 +32,7 @@ from assistantx.assistant import (
     new_instruction_id,
 )
 from assistantx.clock import WallClock
-from assistantx.errors import LockError
+from assistantx.errors import LockConnectionError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import LockKeys, load_lock_keys
@@ -94,7 +94,7 @@ class ServiceRuntime:
         s = self.settings
         self.office = load_office(s.office)
         self.resolver = Resolver(self.office)
-        data_dir = _data_dir(s.data_dir)
+        data_dir = ensure_data_dir(s.data_dir)
         if self.data_lock is None or not self.data_lock.held:
             self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
             stack.callback(self.data_lock.release)
@@ -109,7 +109,7 @@ class ServiceRuntime:
         )
         # Timestamps are real time; the speed-up shortens simulated durations only.
         self.clock = WallClock(s.effective_speedup)
-        self.lock_keys = _lock_keys(s, data_dir)
+        self.lock_keys = lock_keys_for(s, data_dir)
         self.phones = colleagues.CodePhones(data_dir / SIM_CODES_FILE)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
@@ -153,7 +153,14 @@ class ServiceRuntime:
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
 
-        await stack.enter_async_context(self.locker)
+        try:
+            await stack.enter_async_context(self.locker)
+        except LockConnectionError as exc:
+            raise LockConnectionError(
+                f"{exc}. Start `assistantx lock-sim` first: with no key configured it shares "
+                f"the key in {self.settings.data_dir}; otherwise give both the same "
+                "ASSISTANTX_LOCK_SHARED_KEY or ASSISTANTX_LOCK_KEY_FILE"
+            ) from exc
         await stack.enter_async_context(self.messenger)
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
@@ -205,11 +212,8 @@ class ServiceRuntime:
         s = self.settings
         expiry_s = s.lock_code_expiry_min * 60
         if s.lock == "tcp":
-            if s.lock_shared_key is None and s.lock_key_file is None:
-                raise LockError(
-                    "ASSISTANTX_LOCK=tcp needs the lock's keys: set ASSISTANTX_LOCK_SHARED_KEY "
-                    "or ASSISTANTX_LOCK_KEY_FILE to what `assistantx lock-sim` uses"
-                )
+            # Without a configured key both ends use the data folder's key file:
+            # `assistantx lock-sim` on the same ASSISTANTX_DATA_DIR reads the same file.
             # The lock checks a code's times on its own (real) clock, so codes are stamped in
             # real time, not in the sped-up simulated time.
             return TcpLocker(
@@ -281,15 +285,17 @@ class ServiceRuntime:
         return self.assistant.cancel(instruction_id)
 
 
-def _data_dir(path: Path) -> Path:
+def ensure_data_dir(path: Path) -> Path:
+    """The data folder, made owner-only (it holds the journal and the lock's keys)."""
     path.mkdir(parents=True, exist_ok=True)
     os.chmod(path, 0o700)
     return path
 
 
-def _lock_keys(settings: Settings, data_dir: Path) -> LockKeys:
+def lock_keys_for(settings: Settings, data_dir: Path) -> LockKeys:
     """The lock's keys by the rule of ``load_lock_keys``: key file, shared secret, else one
-    generated once into the data dir."""
+    generated once into the data dir.
+    ``serve`` and ``lock-sim`` both call this, so on one data folder they agree by default."""
     secret = settings.lock_shared_key
     return load_lock_keys(
         key_file=settings.lock_key_file,

@@ -1,4 +1,9 @@
-"""The service's metrics: instructions by status, step and LLM latencies, tokens, errors."""
+"""The service's metrics: instructions by status, step and agent latencies, tokens, errors.
+
+Every agent call is timed in ``assistantx_agent_call_latency_seconds`` labelled with its agent
+and ``backend`` (``llm`` or ``embedded``); ``assistantx_llm_call_latency_seconds`` and the
+token counter hold only calls that went to a language model, so the embedded, model-free
+reasoner never shows up as LLM traffic."""
 
 from __future__ import annotations
 
@@ -27,8 +32,17 @@ class ServiceMetrics:
                 STEP_BUCKETS,
             )
         )
+        self.agent_latency = r.register(
+            Histogram(
+                "assistantx_agent_call_latency_seconds",
+                "latency of one agent call, by agent and backend (llm or embedded)",
+            )
+        )
         self.llm_latency = r.register(
-            Histogram("assistantx_llm_call_latency_seconds", "latency of one agent call")
+            Histogram(
+                "assistantx_llm_call_latency_seconds",
+                "latency of one agent call to a language model",
+            )
         )
         self.tokens = r.register(Counter("assistantx_llm_tokens_total", "tokens by kind"))
         self.adapter_errors = r.register(
@@ -53,6 +67,10 @@ class ServiceMetrics:
         if step.ended_at is not None:
             self.steps.observe(max(0.0, step.ended_at - step.started_at))
         for call in step.calls:
+            backend = "llm" if call.llm else "embedded"
+            self.agent_latency.observe(call.latency_s, agent=call.agent, backend=backend)
+            if not call.llm:
+                continue
             self.llm_latency.observe(call.latency_s, agent=call.agent)
             self.tokens.inc(call.prompt_tokens, kind="prompt")
             self.tokens.inc(call.completion_tokens, kind="completion")

@@ -215,8 +215,10 @@ class NavigatorRobot(RobotBase):
                 if seconds is None:
                     break
                 await self.clock.sleep(seconds)
-        except RobotError:
-            self._goal = None
+        except (RobotError, asyncio.CancelledError):
+            # Stopped short (blocked, or the instruction was cancelled): no goal, and no
+            # planned path left for the dashboard to draw.
+            self._goal, self._path = None, None
             raise
         finally:
             self._snapshot = None

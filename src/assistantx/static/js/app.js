@@ -5,7 +5,7 @@
 
 import { api, onUnauthorized, token } from "./api.js";
 import { ChatsPanel } from "./chats.js";
-import { $, badge, clock, h, keepFocus, replace } from "./dom.js";
+import { $, badge, clock, h, instructionState, keepFocus, replace } from "./dom.js";
 import { showEvaluation } from "./evaluation.js";
 import { LockerPanel } from "./locker.js";
 import { MapView } from "./map.js";
@@ -138,8 +138,7 @@ async function refreshInstructions() {
       dataset: { id: ins.id, status: ins.status },
       onclick: () => select(ins.id),
     },
-    h("span", { class: "meta" }, badge(ins.status), ins.outcome && ins.outcome !== ins.status ? badge(ins.outcome) : null,
-      `${nameOf(ins.requester)} · ${clock(ins.created_at)}`),
+    h("span", { class: "meta" }, badge(instructionState(ins)), `${nameOf(ins.requester)} · ${clock(ins.created_at)}`),
     h("span", {}, ins.text))))
     : h("li", { class: "hint" }, "No instructions yet.")));
 }

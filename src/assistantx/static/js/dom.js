@@ -44,6 +44,16 @@ export function badge(text, kind = text) {
   return h("span", { class: `badge ${kind ?? ""}` }, text ?? "—");
 }
 
+/**
+ * The one state an instruction is in, for its badge: while it runs, its status; once it ended,
+ * "cancelled" when it was cancelled (its trace then ends as failed, which is not news), else
+ * its outcome. Never two badges that disagree.
+ */
+export function instructionState(ins) {
+  if (ins.status === "cancelled") return "cancelled";
+  return ins.outcome ?? ins.status;
+}
+
 /** Seconds (Unix time) as a local clock time. */
 export function clock(seconds) {
   if (typeof seconds !== "number") return "";

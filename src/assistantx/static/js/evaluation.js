@@ -33,6 +33,26 @@ export function renderMarkdown(text) {
   return out;
 }
 
+/** What each metric means (DESIGN §5), shown above the table and under each chart. */
+export const METRICS = {
+  SR: ["success rate", "tasks whose outcome is right: every goal milestone holds and the requester was told (for an unachievable task: the assistant said it cannot be done, and why)"],
+  CR: ["completion rate", "goal milestones reached, out of the milestones in the goal"],
+  RR: ["redundancy rate", "redundant actions per action of the shortest successful sequence: repeats with nothing new in between, actions aimed at someone known to be away, or reaching nothing relevant; lower is better, 0 is none"],
+  CTA: ["cyber task accuracy", "messages, questions, file forwards and QR codes that were valid, grounded in memory and not redundant, out of all of them"],
+  RTA: ["real-world task accuracy", "drives and hand-over waits that were valid, grounded and not redundant, out of all of them"],
+};
+
+function glossary() {
+  return h("dl", { class: "metric-glossary", "aria-label": "What the metrics mean" },
+    Object.entries(METRICS).flatMap(([key, [name, text]]) => [h("dt", {}, h("abbr", { title: name }, key)), h("dd", {}, `${name}: ${text}.`)]));
+}
+
+function caption(file) {
+  const key = file.toUpperCase();
+  if (!METRICS[key]) return file.replace(/[_-]+/g, " ");
+  return `${key} — ${METRICS[key][0]} by level (%)`;
+}
+
 async function chart(url) {
   const response = await fetch(url, { headers: authHeaders() });
   if (!response.ok) throw new Error(`HTTP ${response.status}`);
@@ -51,13 +71,14 @@ export async function showEvaluation(container) {
   const figures = await Promise.all(run.charts.map(async (url) => {
     const name = decodeURIComponent(url.split("/").pop()).replace(/\.png$/, "").replace(/[_-]+/g, " ");
     try {
-      return h("figure", {}, h("img", { src: await chart(url), alt: `Chart: ${name}` }), h("figcaption", {}, name));
+      return h("figure", {}, h("img", { src: await chart(url), alt: `Chart: ${name}` }), h("figcaption", {}, caption(name)));
     } catch (err) {
-      return h("figure", {}, h("figcaption", {}, `${name}: ${err.message}`));
+      return h("figure", {}, h("figcaption", {}, `${caption(name)}: ${err.message}`));
     }
   }));
   replace(container,
     h("p", { class: "hint" }, `Run ${run.run}, written ${new Date(run.modified * 1000).toLocaleString()}`),
+    h("h3", {}, "What the metrics mean"), glossary(),
     run.markdown ? renderMarkdown(run.markdown) : h("pre", {}, JSON.stringify(run.summary, null, 2)),
     figures.length ? [h("h3", {}, "Charts"), h("div", { class: "charts" }, figures)] : null);
 }

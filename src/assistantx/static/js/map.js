@@ -93,37 +93,71 @@ export class MapView {
 
   drawAnchors() {
     const { ctx, unit: u } = this;
-    ctx.font = `${11 * u}px system-ui, sans-serif`;
+    // Small canvases (a phone) get a smaller font; labels that would still overlap another
+    // label or a person's disc try the other sides of their anchor, and are left out when no
+    // side is free (the anchor's square stays), so no two labels ever overlap.
+    const cssWidth = this.canvas.width / u;
+    const size = cssWidth < 520 ? 9 : 11;
+    ctx.font = `${size * u}px system-ui, sans-serif`;
     ctx.textBaseline = "middle";
     ctx.textAlign = "center";
+    const taken = this.peopleDiscs();
+    const drawn = [];
     for (const anchor of Object.values(this.info.anchors)) {
       const [px, py] = this.toPixel(anchor.x, anchor.y);
       ctx.fillStyle = COLOURS.anchor;
       ctx.fillRect(px - 2 * u, py - 2 * u, 4 * u, 4 * u);
-      if (this.showLabels) {
+      if (!this.showLabels) continue;
+      const width = ctx.measureText(anchor.name).width + 4 * u;
+      const height = (size + 3) * u;
+      const gap = size * u;
+      const spots = [[0, -gap], [0, gap], [width / 2 + 6 * u, 0], [-width / 2 - 6 * u, 0]];
+      for (const [dx, dy] of spots) {
+        const box = { x: px + dx - width / 2, y: py + dy - height / 2, w: width, h: height };
+        const inside = box.x >= 0 && box.y >= 0 && box.x + box.w <= this.canvas.width && box.y + box.h <= this.canvas.height;
+        if (!inside || [...taken, ...drawn].some((other) => overlaps(box, other))) continue;
         // A white halo keeps the label readable over walls.
         ctx.lineWidth = 3 * u;
         ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
-        ctx.strokeText(anchor.name, px, py - 10 * u);
+        ctx.strokeText(anchor.name, px + dx, py + dy);
         ctx.fillStyle = COLOURS.label;
-        ctx.fillText(anchor.name, px, py - 10 * u);
+        ctx.fillText(anchor.name, px + dx, py + dy);
+        drawn.push(box);
+        break;
       }
     }
     ctx.textAlign = "start";
+    // Where the labels went, in CSS pixels, for tests and for anyone checking the layout.
+    this.canvas.dataset.labels = JSON.stringify(drawn.map((b) => [b.x, b.y, b.w, b.h].map((v) => +(v / u).toFixed(1))));
   }
 
-  drawPeople() {
-    const { ctx, unit: u } = this;
+  /** The boxes the people's discs cover (see drawPeople), so labels keep clear of them. */
+  peopleDiscs() {
+    const u = this.unit;
+    const boxes = [];
+    for (const [px, py] of this.peoplePositions()) boxes.push({ x: px - 9 * u, y: py - 9 * u, w: 18 * u, h: 18 * u });
+    return boxes;
+  }
+
+  /** [x, y, person] canvas positions: several people at one place sit side by side. */
+  peoplePositions() {
+    const u = this.unit;
     const atPlace = new Map();
+    const out = [];
     for (const person of this.people) {
       const anchor = this.info.anchors[person.place];
       if (!anchor) continue;
       const n = atPlace.get(person.place) ?? 0;
       atPlace.set(person.place, n + 1);
-      let [px, py] = this.toPixel(anchor.x, anchor.y);
-      // Several people at one place (a facility's guards) sit side by side.
-      px += (n - 0.5) * 20 * u;
-      py += 14 * u;
+      const [px, py] = this.toPixel(anchor.x, anchor.y);
+      out.push([px + (n - 0.5) * 20 * u, py + 14 * u, person]);
+    }
+    return out;
+  }
+
+  drawPeople() {
+    const { ctx, unit: u } = this;
+    for (const [px, py, person] of this.peoplePositions()) {
       ctx.beginPath();
       ctx.arc(px, py, 9 * u, 0, 2 * Math.PI);
       ctx.fillStyle = person.available === true ? COLOURS.available
@@ -154,6 +188,7 @@ export class MapView {
 
   drawPath() {
     const path = this.robot?.path;
+    this.canvas.dataset.path = String(path?.length ?? 0); // points drawn, for tests
     if (!path?.length) return;
     const { ctx, unit: u } = this;
     ctx.strokeStyle = COLOURS.path;
@@ -192,6 +227,10 @@ export class MapView {
     // Where the marker is, in canvas pixels, for tests and assistive summaries.
     this.canvas.dataset.robot = `${px.toFixed(1)},${py.toFixed(1)}`;
   }
+}
+
+function overlaps(a, b) {
+  return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
 }
 
 function initials(name) {

@@ -2,7 +2,7 @@
 // results, the reflection's verdict and reason, memory updates, and the agents' token use and
 // latency. Renders the Trace model (src/assistantx/trace.py) as the API returns it.
 
-import { badge, clock, duration, h, keepScrolledToEnd, replace } from "./dom.js";
+import { badge, clock, duration, h, instructionState, keepScrolledToEnd, replace } from "./dom.js";
 
 /** "inform(contact=lee, content=…)" from an action object. */
 export function describeAction(action) {
@@ -105,13 +105,22 @@ function stepItem(step) {
     usage(step.calls));
 }
 
+/** One badge: "running"/"queued" while it runs, then "outcome: done" (or failed,
+ * unachievable), or "cancelled" — never cancelled and failed side by side. */
+function stateBadge(instruction) {
+  const state = instructionState(instruction);
+  const ended = instruction.status !== "queued" && instruction.status !== "running";
+  const text = ended && state !== "cancelled" ? `outcome: ${state}` : state;
+  return h("span", { class: `badge ${state}`, id: "trace-state" }, text);
+}
+
 /** Render an instruction (with .trace) into the header and timeline elements. */
 export function renderTrace(headerEl, timelineEl, instruction) {
   const trace = instruction.trace;
   const total = trace?.usage;
   replace(headerEl,
     h("p", {}, h("strong", {}, instruction.requester), ": ", instruction.text),
-    h("p", { class: "row" }, badge(instruction.status), instruction.outcome ? badge(`outcome: ${instruction.outcome}`, instruction.outcome) : null,
+    h("p", { class: "row" }, stateBadge(instruction),
       trace?.reasoner ? h("span", { class: "hint" }, `reasoner ${trace.reasoner}`) : null),
     instruction.summary || trace?.summary ? h("p", { id: "trace-summary" }, instruction.summary || trace.summary) : null,
     total && total.calls ? h("p", { class: "usage" },

@@ -1,0 +1,13 @@
+"""The person names a command line takes (``--as``, ``--unavailable``), matched like any name a
+person types: by the office's tolerant grounding (case, titles, small typos), never by raw id."""
+
+from __future__ import annotations
+
+from assistantx.memory.resolve import Resolver
+from assistantx.office import Office
+
+
+def resolve_people(office: Office, requester: str, unavailable: str) -> tuple[str, tuple[str, ...]]:
+    """The requester's id and the absent people's ids; raises GroundingError on a bad name."""
+    resolver = Resolver(office)
+    return resolver.person(requester), resolver.people_list(unavailable)
