@@ -12,6 +12,7 @@ import asyncio
 import contextlib
 import itertools
 import logging
+from collections import OrderedDict
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 
@@ -33,6 +34,8 @@ from assistantx.replies import ReplyBox
 from assistantx.trace import Trace
 
 logger = logging.getLogger(__name__)
+
+FINISHED_KEPT = 256
 
 ReasonerFactory = Callable[[], Reasoner]
 InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
@@ -83,7 +86,9 @@ class Assistant:
             )
         )
         self.running: dict[str, Running] = {}
-        self.finished: dict[str, ShortTermMemory] = {}
+        # The latest FINISHED_KEPT ended instructions (older ones are in the journal, if any):
+        # a service running for months must not keep every instruction it ever ran.
+        self.finished: OrderedDict[str, ShortTermMemory] = OrderedDict()
         self._sinks: list[EventSink] = []
         self._on_start: list[InstructionHook] = []
         self._on_end: list[InstructionHook] = []
@@ -182,7 +187,10 @@ class Assistant:
             await runner.run(stm)
         finally:
             self.running.pop(stm.instruction_id, None)
+            self.executor.forget(stm.instruction_id)
             self.finished[stm.instruction_id] = stm
+            while len(self.finished) > FINISHED_KEPT:
+                self.finished.popitem(last=False)
             try:
                 await runner.reasoner.stop()
             except Exception:

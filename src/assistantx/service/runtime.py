@@ -33,16 +33,17 @@ from assistantx.errors import LockError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import LockKeys
-from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.office import Office, load_office
 from assistantx.ppdr.loop import LoopLimits
 from assistantx.reasoners import reasoner_factory
 from assistantx.service import colleagues
+from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
-from assistantx.service.durability import LTM_STATE, Durability
+from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError
 from assistantx.service.hub import EventHub
+from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
@@ -73,10 +74,12 @@ class ServiceRuntime:
     durability: Durability
     auth: AuthSetup
     metrics: ServiceMetrics
+    admission: Admission
 
     def __init__(self, settings: Settings) -> None:
         self.settings = settings
         self.hub = EventHub()
+        self.loop_lag = LoopLagMonitor()
         self.ready = False
         self.resumed: list[str] = []
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix (checked at create_app).
@@ -93,6 +96,7 @@ class ServiceRuntime:
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
         self.metrics = ServiceMetrics(self.journal)
+        self.metrics.watch_loop(self.loop_lag)
         self.auth = build_authority(
             s.operator_token.get_secret_value() if s.operator_token else None,
             s.tokens.get_secret_value() if s.tokens else None,
@@ -120,8 +124,7 @@ class ServiceRuntime:
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
         if s.people == "simulated":
             colleagues.connect_colleagues(self.sim, self.messenger)
-        snapshot = self.journal.state(LTM_STATE)
-        ltm = LongTermMemory.restore(self.office, snapshot) if snapshot else None
+        ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
             AssistantParts(
@@ -140,6 +143,7 @@ class ServiceRuntime:
             self.journal, self.assistant, self.hub, self.metrics, self._world_state
         )
         self.durability.attach()
+        self.admission = Admission(self.assistant, self.journal)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
 
@@ -154,7 +158,10 @@ class ServiceRuntime:
             stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
             await self.matrix.messenger.start()
         stack.push_async_callback(self._stop)
+        self.loop_lag.start()
+        stack.push_async_callback(self.loop_lag.stop)
         await self._resume()
+        self.admission.start()
         self.ready = True
 
     def _reasoner(self) -> tuple[ReasonerFactory, str]:
@@ -237,19 +244,29 @@ class ServiceRuntime:
     async def _stop(self) -> None:
         """Shut down without ending running instructions: they resume on the next start."""
         self.ready = False
+        await self.admission.stop()  # what it had not started is journaled as queued
         self.durability.frozen = True
         self.messenger.closed = True
         self.hub.close()
         self.journal.put_state(CLOCK_STATE, {"now": self.clock.now()})
+        # Taken as journaling stops, so it holds what the journal holds; a restart then
+        # replays no updates.
+        await self.durability.snapshot_memory()
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------
     async def submit(self, requester: str, text: str) -> InstructionRecord:
-        """Journal an instruction, then start it (the caller acknowledges after this)."""
+        """Admit an instruction: validate, journal it (one insert), queue it for the starter.
+
+        The caller acknowledges once the insert is committed; starting it (the reasoner, the
+        hooks, its first checkpoint) is the starter's job, so a submission never waits for
+        anyone's step. A restart starts what was admitted and never started."""
         person = self.resolver.person(requester)
         instruction_id = new_instruction_id()
-        record = self.journal.create_instruction(instruction_id, person, text, self.clock.now())
-        await self.assistant.submit(person, text, instruction_id=instruction_id)
+        record = await self.journal.acreate_instruction(
+            instruction_id, person, text, self.clock.now()
+        )
+        self.admission.admit(record)
         return record
 
     def instruction(self, instruction_id: str) -> InstructionRecord:
@@ -261,6 +278,8 @@ class ServiceRuntime:
     def cancel(self, instruction_id: str) -> bool:
         """Ask a running instruction to stop; False when it had already ended."""
         self.journal.request_cancel(instruction_id)
+        if self.admission.withdraw(instruction_id):
+            return True
         if instruction_id not in self.assistant.running:
             return False
         self.durability.cancelled.add(instruction_id)
