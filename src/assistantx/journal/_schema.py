@@ -38,6 +38,7 @@ CREATE TABLE IF NOT EXISTS events (
     data           TEXT NOT NULL
 );
 CREATE INDEX IF NOT EXISTS events_instruction ON events (instruction_id, seq);
+CREATE INDEX IF NOT EXISTS events_time ON events (time);
 CREATE TABLE IF NOT EXISTS messages (
     seq             INTEGER PRIMARY KEY AUTOINCREMENT,
     direction       TEXT NOT NULL CHECK (direction IN ('in', 'out')),

@@ -280,6 +280,17 @@ class Journal:
             for r in rows
         ]
 
+    def last_event_seq(self) -> int:
+        row = self._conn.execute("SELECT COALESCE(MAX(seq), 0) FROM events").fetchone()
+        return int(row[0])
+
+    def event_seq_before(self, time_s: float) -> int:
+        """The sequence number after which the events at or after ``time_s`` begin."""
+        row = self._conn.execute(
+            "SELECT MIN(seq) FROM events WHERE time >= ?", (time_s,)
+        ).fetchone()
+        return self.last_event_seq() if row[0] is None else int(row[0]) - 1
+
     # -- messages ------------------------------------------------------------------------
     def record_outbound(self, message: OutboundMessage, sender: str, now: float) -> MessageRecord:
         """Journal an outbound message before it is sent; an existing key returns its record."""

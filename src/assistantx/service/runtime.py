@@ -211,9 +211,18 @@ class ServiceRuntime:
                 lock_id=s.lock_id,
                 clock=WallClock(),
                 expiry_s=expiry_s,
+                render_png=self._sends_images,
             )
         controller = LockController(s.lock_id, self.lock_keys.codes, self.clock)
-        return LocalLocker(controller, clock=self.clock, expiry_s=expiry_s)
+        return LocalLocker(
+            controller, clock=self.clock, expiry_s=expiry_s, render_png=self._sends_images
+        )
+
+    @property
+    def _sends_images(self) -> bool:
+        """QR codes are rendered only where the messenger delivers images (Matrix); the
+        built-in messenger carries the code's payload, and the web page draws it."""
+        return self.matrix is not None
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
         return {
