@@ -159,7 +159,9 @@ def load_office(path: str | Path | None = None) -> Office:
     file = Path(path) if path is not None else DEFAULT_OFFICE
     where = str(file)
     try:
-        raw = yaml.safe_load(file.read_text(encoding="utf-8"))
+        # libyaml's loader when present: the pure-Python one takes seconds on a large office.
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        raw = yaml.load(file.read_text(encoding="utf-8"), Loader=loader)
     except OSError as exc:
         raise OfficeError(where, "file", f"cannot be read: {exc.strerror or exc}") from exc
     except yaml.YAMLError as exc:
