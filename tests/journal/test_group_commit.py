@@ -4,12 +4,16 @@ from __future__ import annotations
 
 import asyncio
 import sqlite3
+import time
 from pathlib import Path
 
 import pytest
 
+from assistantx.adapters.messenger.base import ChatRef, OutboundMessage
 from assistantx.journal import Journal
+from assistantx.memory.short_term import ShortTermMemory
 from assistantx.ppdr.events import TraceEvent
+from assistantx.trace import Trace
 
 
 def _event(n: int) -> TraceEvent:
@@ -60,3 +64,31 @@ def test_writes_queued_at_close_are_committed(tmp_path: Path) -> None:
     reopened.close()
     with pytest.raises(RuntimeError, match="closed"):
         journal.writer.submit(lambda db: None)
+
+
+def test_compaction_drops_old_traces_and_keeps_outcomes_and_messages(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    for iid in ("ins-old", "ins-new"):
+        trace = Trace(instruction_id=iid, requester="lee", text="t", reasoner="x", started_at=1)
+        stm = ShortTermMemory(instruction_id=iid, requester="lee", text="t", trace=trace)
+        stm.trace.outcome, stm.trace.summary = "done", "brought the stapler"
+        journal.record(TraceEvent(instruction_id=iid, kind="step_started", time=1.0, step=0))
+        journal.checkpoint(stm, "done")
+        message = OutboundMessage(
+            chat=ChatRef(kind="dm", id="lee"),
+            text="done",
+            idempotency_key=f"{iid}:end",
+            instruction_id=iid,
+        )
+        journal.record_outbound(message, "assistant", 1.0)
+    cut = time.time() + 1  # both ended before it ...
+    journal.write(lambda db: db.execute("UPDATE instructions SET updated_at=0 WHERE id='ins-old'"))
+    assert journal.compact(finished_before=10.0) == 1  # ... but only ins-old ended before 10
+    old, new = journal.instruction("ins-old"), journal.instruction("ins-new")
+    assert old is not None and new is not None
+    assert (old.status, old.outcome, old.summary) == ("done", "done", "brought the stapler")
+    assert old.stm is None and journal.events("ins-old") == []
+    assert new.stm is not None and len(journal.events("ins-new")) == 1
+    assert [m.text for m in journal.messages_of("ins-old")] == ["done"]  # the audit stays
+    assert journal.compact(finished_before=cut) == 1 and journal.compact(cut) == 0
+    journal.close()

@@ -291,6 +291,25 @@ class Journal:
         ).fetchone()
         return self.last_event_seq() if row[0] is None else int(row[0]) - 1
 
+    # -- retention -----------------------------------------------------------------------
+    def compact(self, finished_before: float, *, batch: int = 200) -> int:
+        """Drop the traces of instructions that ended before ``finished_before`` (epoch s).
+
+        Their trace events and their short-term memory checkpoint go; the row with status,
+        outcome, summary and step count stays, and so does every message (the audit lines of
+        who was told what) and every memory update. Returns the instructions compacted."""
+        done = 0
+        while n := self.write(_compact(finished_before, batch)):
+            done += n
+        return done
+
+    async def acompact(self, finished_before: float, *, batch: int = 200) -> int:
+        """``compact`` in batches of one group commit each: other writers wait one batch."""
+        done = 0
+        while n := await self.awrite(_compact(finished_before, batch)):
+            done += n
+        return done
+
     # -- messages ------------------------------------------------------------------------
     def record_outbound(self, message: OutboundMessage, sender: str, now: float) -> MessageRecord:
         """Journal an outbound message before it is sent; an existing key returns its record."""
@@ -523,6 +542,25 @@ def _record(
         for name, text in state_rows:
             _put_state(db, name, text)
         return int(cur.lastrowid or 0)
+
+    return write
+
+
+def _compact(finished_before: float, batch: int) -> Callable[[sqlite3.Connection], int]:
+    def write(db: sqlite3.Connection) -> int:
+        ids = [
+            str(r[0])
+            for r in db.execute(
+                "SELECT id FROM instructions WHERE compacted = 0 AND updated_at < ? AND status IN"
+                " ('done', 'failed', 'unachievable', 'cancelled') LIMIT ?",
+                (finished_before, batch),
+            )
+        ]
+        if ids:
+            marks = ",".join("?" * len(ids))
+            db.execute(f"DELETE FROM events WHERE instruction_id IN ({marks})", ids)
+            db.execute(f"UPDATE instructions SET stm=NULL, compacted=1 WHERE id IN ({marks})", ids)
+        return len(ids)
 
     return write
 

@@ -44,6 +44,7 @@ from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
+from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
@@ -160,6 +161,9 @@ class ServiceRuntime:
         stack.push_async_callback(self._stop)
         self.loop_lag.start()
         stack.push_async_callback(self.loop_lag.stop)
+        self.retention = Retention(self.journal, s.journal_retention_days)
+        self.retention.start()
+        stack.push_async_callback(self.retention.stop)
         await self._resume()
         self.admission.start()
         self.ready = True
