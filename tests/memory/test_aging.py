@@ -61,3 +61,20 @@ def test_restore_replays_the_updates_journaled_after_the_snapshot(
     assert restored.ownership("gao", "stapler") is True  # only in the journaled update
     assert restored.applied_total == 2
     journal.close()
+
+
+def test_owner_indexes_follow_updates_and_restores(office: Office) -> None:
+    m = LongTermMemory(office)
+    before = m.owners("stapler")
+    m.apply(OwnershipUpdate(person="gao", item_type="stapler", owns=True, evidence="e"), 1.0)
+    m.apply(OwnershipUpdate(person="wang", item_type="stapler", owns=False, evidence="e"), 2.0)
+    m.apply(OwnershipUpdate(person="lin", item_type="pen", owns=False, evidence="e"), 3.0)
+    assert m.owners("stapler") == sorted({*before, "gao"} - {"wang"})
+    assert m.known_not_owners("stapler") == ["wang"]
+    assert m.known_not_owners("pen") == ["lin"]
+    m.apply(OwnershipUpdate(person="lin", item_type="pen", owns=True, evidence="e"), 4.0)
+    assert m.known_not_owners("pen") == []
+    assert "lin" in m.owners("pen")
+    restored = LongTermMemory.restore(office, json.loads(json.dumps(m.snapshot())))
+    assert restored.owners("stapler") == m.owners("stapler")
+    assert restored.known_not_owners("stapler") == ["wang"]

@@ -81,6 +81,16 @@ class LongTermMemory:
         self.updates: deque[AppliedUpdate] = deque(maxlen=history)  # newest last
         self.latest: dict[str, AppliedUpdate] = {}  # fact key -> the newest update of it
         self.applied_total = 0  # every update applied since the graph was built
+        # Indexes kept beside the graph so a query costs what its answer costs, not a scan
+        # of a 1,024-person office: item type -> known owners / people known to lack one.
+        self._owners: dict[str, set[str]] = {}
+        self._lacking: dict[str, set[str]] = {}
+        for node, data in self.graph.nodes(data=True):
+            if data["kind"] == "item" and data.get("owner"):
+                self._owners.setdefault(data["type"], set()).add(data["owner"])
+            elif data["kind"] == "person":
+                for item_type in data["lacks"]:
+                    self._lacking.setdefault(item_type, set()).add(_bare(node))
 
     # -- queries -------------------------------------------------------------------------
     def availability(self, person_id: str) -> Availability:
@@ -124,14 +134,10 @@ class LongTermMemory:
 
     def owners(self, item_type: str) -> list[str]:
         """People known to own an item of this type."""
-        return sorted(
-            self.graph.nodes[n]["owner"]
-            for n, d in self.graph.nodes(data=True)
-            if d["kind"] == "item" and d["type"] == item_type and d.get("owner")
-        )
+        return sorted(self._owners.get(item_type, ()))
 
     def known_not_owners(self, item_type: str) -> list[str]:
-        return sorted(p for p in self.people() if item_type in self.graph.nodes[pid(p)]["lacks"])
+        return sorted(self._lacking.get(item_type, ()))
 
     def known_not_owners_of(self, person_id: str) -> list[str]:
         return sorted(self.graph.nodes[pid(person_id)]["lacks"])
@@ -206,13 +212,17 @@ class LongTermMemory:
         lacks: set[str] = self.graph.nodes[pid(person_id)]["lacks"]
         if owns:
             lacks.discard(item_type)
+            self._lacking.get(item_type, set()).discard(person_id)
             if self.graph.has_node(node):
                 return False
             self._add_item(person_id, item_type)
             return True
         changed = bool(item_type not in lacks or self.graph.has_node(node))
         lacks.add(item_type)
+        self._lacking.setdefault(item_type, set()).add(person_id)
         if self.graph.has_node(node):
+            if self.graph.nodes[node].get("owner"):
+                self._owners.get(item_type, set()).discard(person_id)
             self.graph.remove_node(node)
         return changed
 
@@ -232,6 +242,7 @@ class LongTermMemory:
         node = iid(f"{item_type}:{person_id}")
         self.graph.add_node(node, kind="item", type=item_type, owner=person_id, holder=person_id)
         self.graph.add_edge(pid(person_id), node, rel="owns")
+        self._owners.setdefault(item_type, set()).add(person_id)
 
     # -- persistence ---------------------------------------------------------------------
     def snapshot(self) -> dict[str, Any]:
