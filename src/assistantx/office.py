@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import math
 from collections import Counter
+from functools import cached_property
 from pathlib import Path
 from typing import Any, Literal, TypeVar
 
 import yaml
-from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.errors import OfficeError
 
@@ -106,7 +107,12 @@ class Office(_Model):
     facilities: tuple[Facility, ...]
     groups: tuple[Group, ...]
     robot: Robot
-    _index: dict[str, dict[str, Any]] = PrivateAttr(default_factory=dict)
+
+    @cached_property
+    def _index(self) -> dict[str, Any]:
+        """Id indexes per kind, filled on first use (a plain dict: pydantic private
+        attributes cost a slow ``__getattr__`` on every lookup)."""
+        return {}
 
     # -- lookups -----------------------------------------------------------------------
     def location(self, location_id: str) -> Location:
@@ -147,15 +153,14 @@ class Office(_Model):
 _T = TypeVar("_T", Location, Person, Facility, Group, ItemType)
 
 
-def _by_id(
-    entries: tuple[_T, ...], index: dict[str, dict[str, Any]], entry_id: str, kind: str
-) -> _T:
+def _by_id(entries: tuple[_T, ...], index: dict[str, Any], entry_id: str, kind: str) -> _T:
     # An id index per kind, built on first use: a 1,024-person office is looked up by id
-    # tens of thousands of times per instruction, and a scan made that quadratic.
-    by_id = index.get(kind)
-    if by_id is None:
-        by_id = index[kind] = {e.id: e for e in entries}
-    found: _T | None = by_id.get(entry_id)
+    # tens of thousands of times per instruction, and a scan made that quadratic. Keyed to
+    # the tuple itself, so a copy with other entries (``model_copy(update=...)``) rebuilds.
+    held = index.get(kind)
+    if held is None or held[0] is not entries:
+        held = index[kind] = (entries, {e.id: e for e in entries})
+    found: _T | None = held[1].get(entry_id)
     if found is None:
         raise KeyError(f"unknown {kind} {entry_id!r}")
     return found

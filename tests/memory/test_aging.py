@@ -78,3 +78,12 @@ def test_owner_indexes_follow_updates_and_restores(office: Office) -> None:
     restored = LongTermMemory.restore(office, json.loads(json.dumps(m.snapshot())))
     assert restored.owners("stapler") == m.owners("stapler")
     assert restored.known_not_owners("stapler") == ["wang"]
+
+
+def test_id_lookups_follow_a_copy_with_other_people(office: Office) -> None:
+    assert office.person("sun").id == "sun"  # fills the index
+    extra = office.person("sun").model_copy(update={"id": "sun_2", "name": "Sun Li 2"})
+    bigger = office.model_copy(update={"people": (*office.people, extra)})
+    assert bigger.person("sun_2").name == "Sun Li 2"
+    with pytest.raises(KeyError, match="sun_2"):
+        office.person("sun_2")
