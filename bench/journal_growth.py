@@ -66,7 +66,7 @@ async def _drive(runtime: ServiceRuntime, n: int, batch: int, every: int) -> lis
             base = bases[submitted % len(bases)]
             ids.append((await runtime.submit(base["requester"], base["text"])).id)
             submitted += 1
-        while runtime.admission.waiting or runtime.assistant.running:
+        while runtime.admission.waiting or runtime.assistant.running:  # noqa: ASYNC110 - polls state it does not own
             await asyncio.sleep(0.02)
         if submitted % every == 0:
             gc.collect()
@@ -116,9 +116,7 @@ async def _run(args: argparse.Namespace, data: Path) -> dict[str, object]:
         "rows": rows,
         "journal_kb_per_instruction": round(1024 * last["journal_mb"] / last["instructions"], 1),
         "rss_growth_after_first_pct": round(100 * (last["rss_mb"] / first["rss_mb"] - 1), 1),
-        "objects_growth_after_first_pct": round(
-            100 * (last["objects"] / first["objects"] - 1), 1
-        ),
+        "objects_growth_after_first_pct": round(100 * (last["objects"] / first["objects"] - 1), 1),
         "events": events,
         "replay_all_s": round(full_s, 2),
         "replay_default_s": round(bounded_s, 3),

@@ -23,14 +23,14 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from _office_gen import write_office  # noqa: E402
+from _office_gen import write_office
 
-from assistantx.dataset.simrun import run_in_sim  # noqa: E402
-from assistantx.memory.graph import LongTermMemory  # noqa: E402
-from assistantx.memory.render import render_long_term  # noqa: E402
-from assistantx.office import load_office  # noqa: E402
-from assistantx.settings import Settings  # noqa: E402
-from assistantx.symbolic import build_factory  # noqa: E402
+from assistantx.dataset.simrun import run_in_sim
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.render import render_long_term
+from assistantx.office import load_office
+from assistantx.settings import Settings
+from assistantx.symbolic import build_factory
 
 # (requester, instruction, unavailable people): L1, L2 and L3 kinds, people of the 16 originals.
 INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [

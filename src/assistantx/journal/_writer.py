@@ -7,10 +7,16 @@ commits once. Only then are the callers' futures resolved: a caller that awaits 
 it is committed, and many instructions writing at the same moment share one commit instead of
 queueing for one each. Functions run in the order they were submitted, so the journal's order
 is the order in which the event loop recorded things.
+
+Writes submitted from the event loop are collected for ``HAND_OVER_S`` and handed to the
+thread as one batch: every hand-over wakes the thread, and a woken thread takes the GIL from the loop for
+up to a switch interval (milliseconds), so one hand-over per write cost the loop more than
+the writes themselves.
 """
 
 from __future__ import annotations
 
+import asyncio
 import logging
 import queue
 import sqlite3
@@ -24,6 +30,7 @@ logger = logging.getLogger(__name__)
 
 T = TypeVar("T")
 MAX_GROUP = 512  # writes committed together at most (bounds one transaction's time)
+HAND_OVER_S = 0.002  # the loop collects writes this long before waking the writer
 
 
 @dataclass
@@ -37,25 +44,46 @@ class JournalWriter:
 
     def __init__(self, conn: sqlite3.Connection) -> None:
         self._conn = conn
-        self._queue: queue.SimpleQueue[_Job | None] = queue.SimpleQueue()
+        self._queue: queue.SimpleQueue[list[_Job] | None] = queue.SimpleQueue()
+        self._pending: list[_Job] = []  # submitted on the loop, handed over at its next turn
         self._closed = False
         self.commits = 0
         self.writes = 0
         self._thread = threading.Thread(target=self._run, name="journal-writer", daemon=True)
         self._thread.start()
 
-    def submit(self, write: Callable[[sqlite3.Connection], T]) -> Future[T]:
-        """Queue ``write``; the future resolves once its group is committed."""
+    def submit(self, write: Callable[[sqlite3.Connection], T], *, now: bool = False) -> Future[T]:
+        """Queue ``write``; the future resolves once its group is committed.
+
+        On the event loop (and unless ``now``) it joins the batch handed over at the loop's
+        next turn; a caller about to block on the future passes ``now``."""
         if self._closed:
             raise RuntimeError("the journal is closed")
         future: Future[T] = Future()
-        self._queue.put(_Job(write, future))
+        job = _Job(write, future)
+        try:
+            loop = None if now else asyncio.get_running_loop()
+        except RuntimeError:
+            loop = None
+        if loop is None:
+            self._flush()  # what the loop queued before goes first
+            self._queue.put([job])
+        else:
+            if not self._pending:
+                loop.call_later(HAND_OVER_S, self._flush)
+            self._pending.append(job)
         return future
+
+    def _flush(self) -> None:
+        if self._pending:
+            batch, self._pending = self._pending, []
+            self._queue.put(batch)
 
     def close(self) -> None:
         if self._closed:
             return
         self._closed = True
+        self._flush()
         self._queue.put(None)
         self._thread.join()
         self._conn.close()
@@ -65,18 +93,19 @@ class JournalWriter:
             first = self._queue.get()
             if first is None:
                 return
-            group = [first]
+            group = list(first)
             stop = False
             while len(group) < MAX_GROUP:
                 try:
-                    job = self._queue.get_nowait()
+                    batch = self._queue.get_nowait()
                 except queue.Empty:
                     break
-                if job is None:
+                if batch is None:
                     stop = True
                     break
-                group.append(job)
-            self._commit(group)
+                group += batch
+            for start in range(0, len(group), MAX_GROUP):
+                self._commit(group[start : start + MAX_GROUP])
             if stop:
                 return
 

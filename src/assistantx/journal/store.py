@@ -128,7 +128,7 @@ class Journal:
 
     def write(self, fn: Callable[[sqlite3.Connection], T]) -> T:
         """Run ``fn`` in the writer's transaction and wait until it is committed."""
-        return self.writer.submit(fn).result()
+        return self.writer.submit(fn, now=True).result()
 
     async def awrite(self, fn: Callable[[sqlite3.Connection], T]) -> T:
         """Like ``write``, but the event loop serves others while the group commits."""
