@@ -1,15 +1,17 @@
 """Load on the running service: N instructions of every kind submitted concurrently over REST.
 
 Starts ``python -m assistantx serve`` on a free port with a fresh data directory (simulated
-travel and replies sped up, everyone available), follows ``GET /v1/events`` (SSE), submits N
-instructions at once — the 30 base instructions of ``dataset/base_instructions.yaml`` in turn,
-each from its own requester — and, while they run, reads an instruction, the list and the
-robot every 50 ms. Reports throughput, p50/p99 of the REST calls and of whole instructions,
-and the outcomes per kind. The robot is one body, so instructions queue for it;
-whole-instruction latency includes that queue.
+travel and replies sped up, everyone available), follows ``GET /v1/events`` (SSE). First,
+idle: a few POSTs and GETs one at a time. Then a burst: N instructions submitted at once —
+the 30 base instructions of ``dataset/base_instructions.yaml`` in turn, each from its own
+requester — and, while they run, an instruction, the list and the robot are read every
+50 ms and one more instruction is POSTed every 250 ms (POST latency with N running). Reports
+p50/p99 idle, in the burst and under load, throughput, whole instructions and the outcomes
+per kind, and the service's own loop-lag gauge; writes ``service_load.png`` (``--out``). The
+robot is one body, so instructions queue for it; whole-instruction latency includes that.
 
     python bench/service_load.py [--n 200] [--speedup 1000] [--robot navigator|sim]
-        [--localize | --no-localize]
+        [--localize | --no-localize] [--out DIR]
 
 Uses the embedded reasoner (``assistantx.symbolic``) when it is installed, else the tests'
 deterministic stapler reasoner (said in the output). Last line: one JSON object.
@@ -29,11 +31,13 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Awaitable, Callable
 from pathlib import Path
 
 import httpx
 
 ROOT = Path(__file__).resolve().parents[1]
+IDLE_CALLS = 30
 TOKEN = "bench-operator-token-000000001"
 BASES = ROOT / "dataset" / "base_instructions.yaml"
 
@@ -88,7 +92,7 @@ def _start(
 
 async def _wait_ready(url: str) -> None:
     async with httpx.AsyncClient() as client:
-        for _ in range(300):
+        for _ in range(1200):  # two minutes: a shared machine starts it slowly
             try:
                 if (await client.get(f"{url}/readyz")).status_code == 200:
                     return
@@ -98,14 +102,13 @@ async def _wait_ready(url: str) -> None:
     raise RuntimeError("server did not become ready")
 
 
-async def _follow(
-    url: str, ended: dict[str, float], outcomes: dict[str, str], n: int, done: asyncio.Event
-) -> None:
+async def _follow(url: str, ended: dict[str, float], outcomes: dict[str, str]) -> None:
     last = 0
     async with httpx.AsyncClient(timeout=None) as client:
         while True:  # a listener that falls behind is dropped: reconnect with Last-Event-ID
             headers = {"Authorization": f"Bearer {TOKEN}", "Last-Event-ID": str(last)}
-            async with client.stream("GET", f"{url}/v1/events", headers=headers) as response:
+            path = f"{url}/v1/events?replay=10000"  # the bench must see every ended event
+            async with client.stream("GET", path, headers=headers) as response:
                 async for line in response.aiter_lines():
                     if line.startswith("id: "):
                         last = int(line[4:])
@@ -115,8 +118,13 @@ async def _follow(
                     if event["kind"] == "instruction_ended":
                         ended[event["instruction_id"]] = time.perf_counter()
                         outcomes[event["instruction_id"]] = str(event["data"].get("outcome"))
-                        if len(ended) >= n:
-                            done.set()
+
+
+GET_PATHS = {
+    "get_instruction": lambda ids: f"/v1/instructions/{random.choice(ids)}",
+    "list_instructions": lambda ids: "/v1/instructions?limit=50",
+    "robot": lambda ids: "/v1/robot",
+}
 
 
 async def _probe(
@@ -127,26 +135,39 @@ async def _probe(
 ) -> None:
     """Reads while the load runs: (time sent, seconds taken) per route."""
     headers = {"Authorization": f"Bearer {TOKEN}"}
-    paths = {
-        "get_instruction": lambda: f"/v1/instructions/{random.choice(list(submitted))}",
-        "list_instructions": lambda: "/v1/instructions?limit=50",
-        "robot": lambda: "/v1/robot",
-    }
     while not stop.is_set():
-        for name, path in paths.items():
+        for name, path in GET_PATHS.items():
             if name == "get_instruction" and not submitted:
                 continue
             t0 = time.perf_counter()
-            (await client.get(path(), headers=headers)).raise_for_status()
+            (await client.get(path(list(submitted)), headers=headers)).raise_for_status()
             samples[name].append((t0, time.perf_counter() - t0))
         await asyncio.sleep(0.05)
+
+
+async def _post_under_load(
+    submit: Callable[[int], Awaitable[float]], during: list[float], stop: asyncio.Event
+) -> None:
+    """One more instruction every 250 ms while the others run."""
+    i = 0
+    while not stop.is_set():
+        during.append(await submit(10_000 + i))
+        i += 1
+        await asyncio.sleep(0.25)
+
+
+async def _loop_lag_s(client: httpx.AsyncClient) -> float | None:
+    text = (await client.get("/metrics", headers={"Authorization": f"Bearer {TOKEN}"})).text
+    for line in text.splitlines():
+        if line.startswith("assistantx_event_loop_lag_max_seconds "):
+            return float(line.split()[1])
+    return None
 
 
 async def _run(url: str, n: int) -> dict[str, object]:
     ended: dict[str, float] = {}
     outcomes: dict[str, str] = {}
-    all_ended = asyncio.Event()
-    follower = asyncio.create_task(_follow(url, ended, outcomes, n, all_ended))
+    follower = asyncio.create_task(_follow(url, ended, outcomes))
     await asyncio.sleep(0.3)
     limits = httpx.Limits(max_connections=n + 4, max_keepalive_connections=n + 4)
     headers = {"Authorization": f"Bearer {TOKEN}"}
@@ -161,26 +182,47 @@ async def _run(url: str, n: int) -> dict[str, object]:
     mix = _instructions()
     async with httpx.AsyncClient(base_url=url, limits=limits, timeout=120) as client:
 
-        async def submit(i: int) -> None:
+        async def submit(i: int) -> float:
             requester, text, kind = mix[i % len(mix)]
             t0 = time.perf_counter()
             r = await client.post(
                 "/v1/instructions", json={"requester": requester, "text": text}, headers=headers
             )
-            posts.append(time.perf_counter() - t0)
+            took = time.perf_counter() - t0
             r.raise_for_status()
             submitted[r.json()["id"]] = t0
             kinds[r.json()["id"]] = kind
+            return took
+
+        async def all_ended() -> None:
+            while not set(submitted) <= set(ended):  # noqa: ASYNC110 - the follower fills it
+                await asyncio.sleep(0.1)
+
+        # Idle: one call at a time, nothing running.
+        idle_posts = [await submit(5_000 + i) for i in range(IDLE_CALLS // 2)]
+        await all_ended()
+        idle_gets: list[float] = []
+        for i in range(IDLE_CALLS):
+            path = list(GET_PATHS.values())[i % len(GET_PATHS)](list(submitted))
+            t0 = time.perf_counter()
+            (await client.get(path, headers=headers)).raise_for_status()
+            idle_gets.append(time.perf_counter() - t0)
+        lag_idle = await _loop_lag_s(client)
 
         stop_probe = asyncio.Event()
         probe = asyncio.create_task(_probe(client, submitted, samples, stop_probe))
         t_start = time.perf_counter()
-        await asyncio.gather(*(submit(i) for i in range(n)))
+        posts += await asyncio.gather(*(submit(i) for i in range(n)))
         t_submitted = time.perf_counter()
-        await all_ended.wait()  # the data dir is fresh: every ended event is one of ours
-        t_done = time.perf_counter()
+        during: list[float] = []
+        poster = asyncio.create_task(_post_under_load(submit, during, stop_probe))
+        while len(ended) < len(idle_posts) + n // 2:  # under load: while half still run  # noqa: ASYNC110 - the follower fills it
+            await asyncio.sleep(0.1)
         stop_probe.set()
-        await probe
+        await asyncio.gather(probe, poster)
+        await all_ended()  # the data dir is fresh: every ended event is one of ours
+        t_done = time.perf_counter()
+        lag_load = await _loop_lag_s(client)
         after: list[float] = []  # every instruction read once the load is over
         largest = 0
         for iid in submitted:
@@ -190,6 +232,7 @@ async def _run(url: str, n: int) -> dict[str, object]:
             largest = max(largest, len(r.content))
     follower.cancel()
     whole = [ended[i] - t0 for i, t0 in submitted.items()]
+    gets_during = [t for timed in samples.values() for _, t in timed]
     per_kind: dict[str, dict[str, int]] = {}
     for iid, kind in kinds.items():
         tally = per_kind.setdefault(kind, {})
@@ -201,6 +244,17 @@ async def _run(url: str, n: int) -> dict[str, object]:
         "submit_throughput_per_s": round(n / (t_submitted - t_start), 1),
         "post_p50_ms": round(1000 * _pct(posts, 0.5), 1),
         "post_p99_ms": round(1000 * _pct(posts, 0.99), 1),
+        "idle_post_p50_ms": round(1000 * _pct(idle_posts, 0.5), 1),
+        "idle_post_p99_ms": round(1000 * _pct(idle_posts, 0.99), 1),
+        "idle_get_p50_ms": round(1000 * _pct(idle_gets, 0.5), 1),
+        "idle_get_p99_ms": round(1000 * _pct(idle_gets, 0.99), 1),
+        "loaded_post_n": len(during),
+        "loaded_post_p50_ms": round(1000 * _pct(during, 0.5), 1),
+        "loaded_post_p99_ms": round(1000 * _pct(during, 0.99), 1),
+        "loaded_get_p50_ms": round(1000 * _pct(gets_during, 0.5), 1),
+        "loaded_get_p99_ms": round(1000 * _pct(gets_during, 0.99), 1),
+        "loop_lag_max_s_idle": lag_idle,
+        "loop_lag_max_s_loaded": lag_load,
     }
     for name, timed in samples.items():
         took = [seconds for _, seconds in timed]
@@ -222,9 +276,39 @@ async def _run(url: str, n: int) -> dict[str, object]:
             for k in sorted({outcomes[i] for i in submitted})
         },
         outcomes_by_kind=per_kind,
+        instructions_total=len(submitted),
         unsubmitted_instructions=len(extra),  # started by a simulated person's unprompted DM
     )
     return figures
+
+
+def _plot(figures: dict[str, object], out: Path) -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    phases = [
+        ("idle", "idle_post", "idle_get"),
+        (f"burst of {figures['n']}", "post", None),
+        (f"{figures['n']} running", "loaded_post", "loaded_get"),
+    ]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 3.8))
+    for ax, q in zip(axes, ("p50", "p99"), strict=True):
+        labels = [p[0] for p in phases]
+        posts = [float(figures[f"{p[1]}_{q}_ms"]) for p in phases]  # type: ignore[arg-type]
+        gets = [float(figures[f"{p[2]}_{q}_ms"]) if p[2] else 0.0 for p in phases]  # type: ignore[arg-type]
+        xs = range(len(phases))
+        ax.bar([x - 0.2 for x in xs], posts, width=0.4, label="POST /v1/instructions")
+        ax.bar([x + 0.2 for x in xs], gets, width=0.4, label="GET (instruction, list, robot)")
+        ax.set_xticks(list(xs), labels)
+        ax.set_ylabel("ms")
+        ax.set_title(f"{q} latency", fontsize=10)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = out / "service_load.png"
+    fig.savefig(path, dpi=100)
+    return path
 
 
 def main() -> None:
@@ -235,7 +319,9 @@ def main() -> None:
     parser.add_argument("--localize", action=argparse.BooleanOptionalAction, default=False)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--deadline-s", type=float, default=30 * 24 * 3600.0, help="simulated")
+    parser.add_argument("--out", type=Path, default=Path("results/bench"))
     args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
     random.seed(args.seed)
     with tempfile.TemporaryDirectory() as tmp:
         port = _free_port()
@@ -249,11 +335,22 @@ def main() -> None:
             process.wait(15)
     robot = f"{args.robot}{' + AMCL' if args.robot == 'navigator' and args.localize else ''}"
     figures.update(reasoner=reasoner, speedup=args.speedup, robot=robot)
+    figures["plot"] = str(_plot(figures, args.out))
     print(f"reasoner: {reasoner}; robot: {robot}; simulated time x{args.speedup:g}")
     print(
         f"submitted {args.n} instructions in {figures['submit_wall_s']} s "
         f"({figures['submit_throughput_per_s']}/s); POST p50 {figures['post_p50_ms']} ms, "
         f"p99 {figures['post_p99_ms']} ms"
+    )
+    print(
+        f"idle: POST p50 {figures['idle_post_p50_ms']} ms, p99 {figures['idle_post_p99_ms']} ms;"
+        f" GET p50 {figures['idle_get_p50_ms']} ms, p99 {figures['idle_get_p99_ms']} ms"
+    )
+    print(
+        f"with {args.n} running: POST p50 {figures['loaded_post_p50_ms']} ms, p99 "
+        f"{figures['loaded_post_p99_ms']} ms ({figures['loaded_post_n']} calls); GET p50 "
+        f"{figures['loaded_get_p50_ms']} ms, p99 {figures['loaded_get_p99_ms']} ms; longest "
+        f"loop stall in the last minute {figures['loop_lag_max_s_loaded']} s"
     )
     for name in ("get_instruction", "list_instructions", "robot"):
         print(

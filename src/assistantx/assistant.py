@@ -12,6 +12,7 @@ import asyncio
 import contextlib
 import logging
 import secrets
+from collections import OrderedDict
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from typing import Protocol
@@ -39,6 +40,8 @@ from assistantx.replies import ReplyBox
 from assistantx.trace import Trace
 
 logger = logging.getLogger(__name__)
+
+FINISHED_KEPT = 256
 
 ReasonerFactory = Callable[[], Reasoner]
 InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
@@ -104,7 +107,9 @@ class Assistant:
             )
         )
         self.running: dict[str, Running] = {}
-        self.finished: dict[str, ShortTermMemory] = {}
+        # The latest FINISHED_KEPT ended instructions (older ones are in the journal, if any):
+        # a service running for months must not keep every instruction it ever ran.
+        self.finished: OrderedDict[str, ShortTermMemory] = OrderedDict()
         self._sinks: list[EventSink] = []
         self._on_start: list[InstructionHook] = []
         self._on_end: list[InstructionHook] = []
@@ -210,7 +215,10 @@ class Assistant:
             ended = True
         finally:
             self.running.pop(stm.instruction_id, None)
+            self.executor.forget(stm.instruction_id)
             self.finished[stm.instruction_id] = stm
+            while len(self.finished) > FINISHED_KEPT:
+                self.finished.popitem(last=False)
             try:
                 await runner.reasoner.stop()
             except Exception:

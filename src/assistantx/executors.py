@@ -62,6 +62,16 @@ class Executor:
         # Results journaled before a restart, by "<instruction>:<key>": a resumed step that
         # decides the same action at the same position gets the result, not a second effect.
         self.replay: dict[str, ActionResult] = {}
+        # Lock events watched from the moment a code goes out, per instruction: the person may
+        # scan it before the instruction reaches its wait_in_place (the loop serves others in
+        # between), and that scan must not be missed.
+        self._watching: dict[str, tuple[asyncio.Queue[LockEvent], asyncio.Event]] = {}
+
+    def forget(self, instruction_id: str) -> None:
+        """The instruction ended: stop watching the lock for it."""
+        watched = self._watching.pop(instruction_id, None)
+        if watched is not None:
+            self.ctx.locker.unsubscribe(watched[0])
 
     async def execute(self, stm: ShortTermMemory, action: Action, key: str) -> ActionResult:
         """Run one grounded action; ``key`` is its stable id (instruction:step:position)."""
@@ -207,6 +217,9 @@ class Executor:
                     ),
                     {},
                 )
+        if stm.instruction_id not in self._watching:
+            notify = asyncio.Event()
+            self._watching[stm.instruction_id] = (self.ctx.locker.subscribe(notify), notify)
         qr = await self.ctx.locker.issue_code(
             instruction_id=stm.instruction_id,
             person=action.contact,
@@ -292,8 +305,12 @@ class Executor:
     async def _wait_in_place(
         self, stm: ShortTermMemory, action: WaitInPlace
     ) -> tuple[bool, str, dict[str, object]]:
-        notify = asyncio.Event()
-        queue = self.ctx.locker.subscribe(notify)
+        watched = self._watching.pop(stm.instruction_id, None)
+        if watched is None:
+            notify = asyncio.Event()
+            queue = self.ctx.locker.subscribe(notify)
+        else:
+            queue, notify = watched
         events: list[LockEvent] = []
         deadline = self.ctx.clock.timer() + action.timeout_s
         try:
@@ -303,7 +320,10 @@ class Executor:
                 mine = [e for e in events if e.person == action.person]
                 if any(e.kind == "door_closed" for e in mine):
                     break
-                if any(e.kind == "code_rejected" for e in mine):
+                opened = any(e.kind == "code_accepted" for e in mine)
+                # A rejected scan ends the wait unless the door is already open for them (a
+                # second scan of the used code while they put the item in changes nothing).
+                if not opened and any(e.kind == "code_rejected" for e in mine):
                     break
                 if self.ctx.replies.event(stm.instruction_id).is_set():
                     arrived = self.take_messages(stm)

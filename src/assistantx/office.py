@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
-from collections.abc import Iterable
+from functools import cached_property
 from pathlib import Path
 from typing import Any, Literal, TypeVar
 
@@ -142,24 +142,30 @@ class Office(_Model):
     robot: Robot
     operations: tuple[Operation, ...] = ()
 
+    @cached_property
+    def _index(self) -> dict[str, Any]:
+        """Id indexes per kind, filled on first use (a plain dict: pydantic private
+        attributes cost a slow ``__getattr__`` on every lookup)."""
+        return {}
+
     # -- lookups -----------------------------------------------------------------------
     def location(self, location_id: str) -> Location:
-        return _by_id(self.locations, location_id, "location")
+        return _by_id(self.locations, self._index, location_id, "location")
 
     def person(self, person_id: str) -> Person:
-        return _by_id(self.people, person_id, "person")
+        return _by_id(self.people, self._index, person_id, "person")
 
     def facility(self, facility_id: str) -> Facility:
-        return _by_id(self.facilities, facility_id, "facility")
+        return _by_id(self.facilities, self._index, facility_id, "facility")
 
     def group(self, group_id: str) -> Group:
-        return _by_id(self.groups, group_id, "group")
+        return _by_id(self.groups, self._index, group_id, "group")
 
     def item_type(self, type_id: str) -> ItemType:
-        return _by_id(self.item_types, type_id, "item type")
+        return _by_id(self.item_types, self._index, type_id, "item type")
 
     def operation(self, operation_id: str) -> Operation:
-        return _by_id(self.operations, operation_id, "operation")
+        return _by_id(self.operations, self._index, operation_id, "operation")
 
     def offering(self, operation_id: str) -> list[Facility]:
         """The facilities that offer an operation (several may, even at one location)."""
@@ -221,11 +227,17 @@ class Office(_Model):
 _T = TypeVar("_T", Location, Person, Facility, Group, ItemType, Operation)
 
 
-def _by_id(entries: Iterable[_T], entry_id: str, kind: str) -> _T:
-    for entry in entries:
-        if entry.id == entry_id:
-            return entry
-    raise KeyError(f"unknown {kind} {entry_id!r}")
+def _by_id(entries: tuple[_T, ...], index: dict[str, Any], entry_id: str, kind: str) -> _T:
+    # An id index per kind, built on first use: a 1,024-person office is looked up by id
+    # tens of thousands of times per instruction, and a scan made that quadratic. Keyed to
+    # the tuple itself, so a copy with other entries (``model_copy(update=...)``) rebuilds.
+    held = index.get(kind)
+    if held is None or held[0] is not entries:
+        held = index[kind] = (entries, {e.id: e for e in entries})
+    found: _T | None = held[1].get(entry_id)
+    if found is None:
+        raise KeyError(f"unknown {kind} {entry_id!r}")
+    return found
 
 
 def load_office(path: str | Path | None = None) -> Office:
@@ -233,7 +245,9 @@ def load_office(path: str | Path | None = None) -> Office:
     file = Path(path) if path is not None else DEFAULT_OFFICE
     where = str(file)
     try:
-        raw = yaml.safe_load(file.read_text(encoding="utf-8"))
+        # libyaml's loader when present: the pure-Python one takes seconds on a large office.
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        raw = yaml.load(file.read_text(encoding="utf-8"), Loader=loader)
     except OSError as exc:
         raise OfficeError(where, "file", f"cannot be read: {exc.strerror or exc}") from exc
     except yaml.YAMLError as exc:

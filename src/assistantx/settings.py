@@ -43,6 +43,12 @@ class Settings(BaseSettings):
 
     # -- the loop -----------------------------------------------------------------------
     max_steps: int = 30
+    journal_retention_days: float = Field(
+        default=90.0,
+        ge=0,
+        description="finished instructions' traces compacted after this many days (0: never);"
+        " outcomes and messages are kept",
+    )
     instruction_deadline_s: float = 3600.0  # real seconds from its start (not sped up)
 
     # -- the service --------------------------------------------------------------------

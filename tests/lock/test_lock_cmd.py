@@ -10,7 +10,7 @@ import pytest
 from assistantx.cli import main
 from assistantx.cli.lock_cmd import _load_keys
 from assistantx.lock import LockKeys
-from assistantx.service.runtime import _lock_keys
+from assistantx.service.runtime import lock_keys_for
 from assistantx.settings import Settings
 
 
@@ -53,7 +53,7 @@ def test_serve_and_lock_sim_pick_the_same_keys_by_one_rule(
     monkeypatch.setenv("ASSISTANTX_LOCK_KEY_FILE", str(key_file))
     monkeypatch.setenv("ASSISTANTX_LOCK_SHARED_KEY", "a long shared secret for the test")
     settings = Settings()
-    service = _lock_keys(settings, tmp_path / "data-unused")
+    service = lock_keys_for(settings, tmp_path / "data-unused")
     lock_sim = _load_keys(settings.lock_key_file, settings)
     from_file = LockKeys.from_file(key_file)
     assert service.link_key == lock_sim.link_key == from_file.link_key
@@ -61,7 +61,7 @@ def test_serve_and_lock_sim_pick_the_same_keys_by_one_rule(
     # Only the secret: both derive the same keys from it.
     monkeypatch.delenv("ASSISTANTX_LOCK_KEY_FILE")
     settings = Settings()
-    service = _lock_keys(settings, tmp_path / "data-unused")
+    service = lock_keys_for(settings, tmp_path / "data-unused")
     lock_sim = _load_keys(settings.lock_key_file, settings)
     assert service.link_key == lock_sim.link_key != from_file.link_key
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import asyncio
 import itertools
+import logging
 import random
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -36,8 +37,14 @@ from assistantx.ppdr.loop import LoopLimits
 TARGET_L1_PER_BASE = 3
 TARGETS: dict[str, int] = {"L2": 73, "L3": 25, "unachievable": 22}
 MAX_CORE_SIZE = 5
+# Related people whose absence is varied (the first ones ``related_people`` returns): the
+# default office has at most 5 per base; a generated office of 1,024 people has hundreds, and
+# every combination of them would be a dry run.
+MAX_RELATED = 8
 
 Category = str  # "L1", "L2", "L3" (achievable) or "unachievable"
+
+logger = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -70,7 +77,7 @@ def classify(base: BaseInstruction, office: Office) -> dict[Category, list[Varia
     """Every set of related people being away, by category (the 'cores' of the variants)."""
     plan = build_plan(base, office)
     ltm = LongTermMemory(office)
-    related = related_people(plan, office, ltm, base.requester)
+    related = related_people(plan, office, ltm, base.requester)[:MAX_RELATED]
     pools: dict[Category, list[Variant]] = {}
     for size in range(min(len(related), MAX_CORE_SIZE) + 1):
         for core in itertools.combinations(related, size):
@@ -155,6 +162,11 @@ def _pick_round_robin(
         pool.sort(key=lambda v: len(v.unavailable))
         if pool:
             queues[base.id] = pool
+    if not queues:
+        # A large office has more alternatives than a core can make unavailable at once, so
+        # no base reaches this category: the dataset goes without it rather than crashing.
+        logger.warning("no base instruction has %s variants in this office", category)
+        return []
     order = [b for b in bases if b.id in queues]
     rng.shuffle(order)
     bystanders = {b.id: _bystanders(b, office) for b in order}

@@ -67,6 +67,9 @@ class FeedbackStore:
         conn = sqlite3.connect(path, isolation_level=None, check_same_thread=False)
         try:
             conn.execute("PRAGMA journal_mode=WAL")
+            # As durable as the journal's own tables (a kill -9 loses nothing committed); FULL
+            # would fsync on every commit, and a reminder tick commits once per survey.
+            conn.execute("PRAGMA synchronous=NORMAL")
             conn.execute("PRAGMA busy_timeout=5000")
             conn.executescript(_SCHEMA)
         except sqlite3.DatabaseError as exc:

@@ -25,7 +25,8 @@ CREATE TABLE IF NOT EXISTS instructions (
     updated_at REAL NOT NULL,
     cancel_requested INTEGER NOT NULL DEFAULT 0,
     stm        TEXT,
-    steps      INTEGER NOT NULL DEFAULT 0
+    steps      INTEGER NOT NULL DEFAULT 0,
+    compacted  INTEGER NOT NULL DEFAULT 0
 );
 CREATE INDEX IF NOT EXISTS instructions_status ON instructions (status, seq);
 CREATE INDEX IF NOT EXISTS instructions_requester ON instructions (requester, seq);
@@ -38,6 +39,7 @@ CREATE TABLE IF NOT EXISTS events (
     data           TEXT NOT NULL
 );
 CREATE INDEX IF NOT EXISTS events_instruction ON events (instruction_id, seq);
+CREATE INDEX IF NOT EXISTS events_time ON events (time);
 CREATE TABLE IF NOT EXISTS messages (
     seq             INTEGER PRIMARY KEY AUTOINCREMENT,
     direction       TEXT NOT NULL CHECK (direction IN ('in', 'out')),
@@ -72,4 +74,5 @@ CREATE TABLE IF NOT EXISTS state (
 # (table, column, definition) added after the first release of schema 1.
 ADDED_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("instructions", "steps", "INTEGER NOT NULL DEFAULT 0"),
+    ("instructions", "compacted", "INTEGER NOT NULL DEFAULT 0"),  # trace dropped (retention)
 )

@@ -14,6 +14,7 @@ for this lock, unexpired, unused and provisioned is the controller's business.
 
 from __future__ import annotations
 
+import asyncio
 import binascii
 import io
 import json
@@ -199,3 +200,9 @@ class CodeIssuer:
 
     def to_qrcode(self, claims: CodeClaims, payload: str) -> QRCode:
         return claims.to_qrcode(payload, render_png(payload) if self.render else None)
+
+    async def ato_qrcode(self, claims: CodeClaims, payload: str) -> QRCode:
+        """``to_qrcode`` with the PNG rendered in a worker thread (tens of ms of CPU that
+        would otherwise hold the event loop)."""
+        png = await asyncio.to_thread(render_png, payload) if self.render else None
+        return claims.to_qrcode(payload, png)

@@ -5,11 +5,18 @@ Node ids are typed: ``person:zhang``, ``location:desk_04``, ``facility:printer``
 location), ``owns`` (person → item), ``member`` (person → group), ``guards`` (person → facility).
 The graph starts from the office's *known* facts; updates come from observations, each
 recorded with its time and evidence.
+
+Evidence is aged so memory stays flat over months of use: the graph itself holds one value per
+fact, ``latest`` keeps the newest applied update per fact (one per person's availability, per
+person and item type, per item's holder — bounded by the office, not by time), and ``updates``
+keeps only the most recent ``history`` applied updates. The full list lives in the journal's
+``memory_updates`` table, where the service writes each update as it happens.
 """
 
 from __future__ import annotations
 
 import json
+from collections import deque
 from typing import Any, Literal
 
 import networkx as nx
@@ -27,6 +34,16 @@ Availability = Literal["available", "unavailable", "unknown"]
 LOCKER = "locker"
 
 _applied_list: TypeAdapter[list[AppliedUpdate]] = TypeAdapter(list[AppliedUpdate])
+HISTORY = 200  # applied updates kept in memory beyond the latest one per fact
+
+
+def fact_key(update: MemoryUpdate) -> str:
+    """The fact an update is about: later updates of the same fact supersede it."""
+    if isinstance(update, AvailabilityUpdate):
+        return f"availability:{update.person}"
+    if isinstance(update, OwnershipUpdate):
+        return f"ownership:{update.person}:{update.item_type}"
+    return f"holder:{update.item}"
 
 
 def pid(person_id: str) -> str:
@@ -56,10 +73,24 @@ def _bare(node: str) -> str:
 class LongTermMemory:
     """Typed queries and updates over the belief graph."""
 
-    def __init__(self, office: Office, graph: nx.Graph | None = None) -> None:
+    def __init__(
+        self, office: Office, graph: nx.Graph | None = None, *, history: int = HISTORY
+    ) -> None:
         self.office = office
         self.graph: nx.Graph = graph if graph is not None else _graph_from_office(office)
-        self.updates: list[AppliedUpdate] = []
+        self.updates: deque[AppliedUpdate] = deque(maxlen=history)  # newest last
+        self.latest: dict[str, AppliedUpdate] = {}  # fact key -> the newest update of it
+        self.applied_total = 0  # every update applied since the graph was built
+        # Indexes kept beside the graph so a query costs what its answer costs, not a scan
+        # of a 1,024-person office: item type -> known owners / people known to lack one.
+        self._owners: dict[str, set[str]] = {}
+        self._lacking: dict[str, set[str]] = {}
+        for node, data in self.graph.nodes(data=True):
+            if data["kind"] == "item" and data.get("owner"):
+                self._owners.setdefault(data["type"], set()).add(data["owner"])
+            elif data["kind"] == "person":
+                for item_type in data["lacks"]:
+                    self._lacking.setdefault(item_type, set()).add(_bare(node))
 
     # -- queries -------------------------------------------------------------------------
     def availability(self, person_id: str) -> Availability:
@@ -103,14 +134,10 @@ class LongTermMemory:
 
     def owners(self, item_type: str) -> list[str]:
         """People known to own an item of this type."""
-        return sorted(
-            self.graph.nodes[n]["owner"]
-            for n, d in self.graph.nodes(data=True)
-            if d["kind"] == "item" and d["type"] == item_type and d.get("owner")
-        )
+        return sorted(self._owners.get(item_type, ()))
 
     def known_not_owners(self, item_type: str) -> list[str]:
-        return sorted(p for p in self.people() if item_type in self.graph.nodes[pid(p)]["lacks"])
+        return sorted(self._lacking.get(item_type, ()))
 
     def known_not_owners_of(self, person_id: str) -> list[str]:
         return sorted(self.graph.nodes[pid(person_id)]["lacks"])
@@ -164,6 +191,8 @@ class LongTermMemory:
             time=time, instruction_id=instruction_id, update=update, changed=changed
         )
         self.updates.append(applied)
+        self.latest[fact_key(update)] = applied
+        self.applied_total += 1
         return applied
 
     def _set_availability(self, person_id: str, available: bool | None, time: float) -> bool:
@@ -183,13 +212,17 @@ class LongTermMemory:
         lacks: set[str] = self.graph.nodes[pid(person_id)]["lacks"]
         if owns:
             lacks.discard(item_type)
+            self._lacking.get(item_type, set()).discard(person_id)
             if self.graph.has_node(node):
                 return False
             self._add_item(person_id, item_type)
             return True
         changed = bool(item_type not in lacks or self.graph.has_node(node))
         lacks.add(item_type)
+        self._lacking.setdefault(item_type, set()).add(person_id)
         if self.graph.has_node(node):
+            if self.graph.nodes[node].get("owner"):
+                self._owners.get(item_type, set()).discard(person_id)
             self.graph.remove_node(node)
         return changed
 
@@ -209,9 +242,11 @@ class LongTermMemory:
         node = iid(f"{item_type}:{person_id}")
         self.graph.add_node(node, kind="item", type=item_type, owner=person_id, holder=person_id)
         self.graph.add_edge(pid(person_id), node, rel="owns")
+        self._owners.setdefault(item_type, set()).add(person_id)
 
     # -- persistence ---------------------------------------------------------------------
     def snapshot(self) -> dict[str, Any]:
+        """The graph, the latest update per fact and the recent history (all bounded)."""
         data = nx.node_link_data(self.graph, edges="edges")
         for node in data["nodes"]:
             if "lacks" in node:
@@ -219,6 +254,8 @@ class LongTermMemory:
         return {
             "graph": data,
             "updates": [u.model_dump(mode="json") for u in self.updates],
+            "latest": [u.model_dump(mode="json") for u in self.latest.values()],
+            "applied_total": self.applied_total,
         }
 
     @classmethod
@@ -229,8 +266,17 @@ class LongTermMemory:
                 node["lacks"] = set(node["lacks"])
         graph = nx.node_link_graph(data, edges="edges")
         memory = cls(office, graph)
-        memory.updates = _applied_list.validate_python(snapshot.get("updates", []))
+        history = _applied_list.validate_python(snapshot.get("updates", []))
+        memory.updates.extend(history)
+        # Snapshots written before ``latest`` existed: their history holds every update.
+        for applied in _applied_list.validate_python(snapshot.get("latest", [])) or history:
+            memory.latest[fact_key(applied.update)] = applied
+        memory.applied_total = int(snapshot.get("applied_total", len(history)))
         return memory
+
+    def replay(self, applied: AppliedUpdate) -> None:
+        """Apply a journaled update again (one written after the snapshot restored from)."""
+        self.apply(applied.update, applied.time, applied.instruction_id)
 
 
 def _graph_from_office(office: Office) -> nx.Graph:

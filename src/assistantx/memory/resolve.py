@@ -33,6 +33,7 @@ class Resolver:
 
     def __init__(self, office: Office) -> None:
         self.office = office
+        self._hints: list[str | None] = [None, None]
         self.people = NameIndex()
         for p in office.people:
             self.people.add(p.id, [p.name, *p.aliases], words=p.name.split())
@@ -200,7 +201,22 @@ class Resolver:
         raise UnknownNameError(kind, name, f"Unknown {kind} {name!r}.{maybe} {hint}".strip())
 
     def _people_hint(self) -> str:
-        return "Known people: " + ", ".join(p.id for p in self.office.people) + "."
+        hint = self._hints[0]
+        if hint is None:  # built once: every lookup passes it along
+            hint = self._hints[0] = "Known people: " + _listing([p.id for p in self.office.people])
+        return hint
 
     def _groups_hint(self) -> str:
-        return "Group chats: " + ", ".join(g.id for g in self.office.groups) + "."
+        hint = self._hints[1]
+        if hint is None:
+            hint = self._hints[1] = "Group chats: " + _listing([g.id for g in self.office.groups])
+        return hint
+
+
+HINT_NAMES = 40  # names listed in an error's hint; a large office lists the first ones
+
+
+def _listing(ids: list[str]) -> str:
+    if len(ids) <= HINT_NAMES:
+        return ", ".join(ids) + "."
+    return ", ".join(ids[:HINT_NAMES]) + f" and {len(ids) - HINT_NAMES} more."

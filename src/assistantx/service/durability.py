@@ -1,7 +1,11 @@
 """What the service journals as instructions run, and how it resumes them after a restart.
 
 Every trace event is journaled; with ``step_started`` and ``action_result`` the instruction's
-short-term memory is checkpointed together with the simulated world, in one transaction. On
+short-term memory is checkpointed together with the simulated world, in one transaction.
+Long-term memory is journaled incrementally: each applied update is one row of
+``memory_updates`` (with the event that applied it), and the graph is snapshotted only every
+``SNAPSHOT_EVERY`` updates and on shutdown, stamped with the last update row it holds; on
+start-up the updates after that stamp are applied again (``restore_memory``). On
 start-up an instruction that was running resumes from its checkpoint: the step that was cut
 short runs again under the same step index, so its actions carry the same idempotency keys;
 actions whose results were journaled are replayed (not executed again), and sends whose key is
@@ -18,7 +22,10 @@ from typing import Any
 from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.assistant import Assistant
 from assistantx.journal import EventRecord, InstructionRecord, Journal, Status
+from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
+from assistantx.memory.updates import AppliedUpdate
+from assistantx.office import Office
 from assistantx.ppdr.events import TraceEvent
 from assistantx.service.hub import EventHub
 from assistantx.service.telemetry import ServiceMetrics
@@ -27,6 +34,7 @@ from assistantx.trace import ActionResult
 logger = logging.getLogger(__name__)
 
 LTM_STATE = "long_term_memory"
+SNAPSHOT_EVERY = 256  # memory updates between two snapshots of the long-term memory graph
 
 _OUTCOME_STATUS: dict[str, Status] = {
     "done": "done",
@@ -51,6 +59,7 @@ class Durability:
         self._world_state = world_state
         self.cancelled: set[str] = set()
         self.frozen = False  # set on shutdown: what happens after is not journaled
+        self._snapshot_at = assistant.ltm.applied_total  # updates held by the last snapshot
 
     def attach(self) -> None:
         self.assistant.subscribe(self.on_event)
@@ -61,11 +70,9 @@ class Durability:
     async def on_start(self, stm: ShortTermMemory) -> None:
         if self.frozen:
             return
-        if self.journal.instruction(stm.instruction_id) is None:
-            # Started from a message: its first row; a taken id raises, never overwrites.
-            self.journal.insert_instruction(stm, "running")
-        else:  # journaled by the REST submit, or resumed
-            self.journal.checkpoint(stm, "running")
+        # Started from a message, its first row; else journaled by the REST submit or resumed.
+        # The checkpoint only updates a row with the same id and requester: a taken id raises.
+        await self.journal.acheckpoint(stm, "running")
 
     async def on_event(self, event: TraceEvent) -> None:
         if self.frozen:
@@ -74,6 +81,7 @@ class Durability:
         status: Status | None = None
         checkpoint: ShortTermMemory | None = None
         states: dict[str, dict[str, Any]] = {}
+        updates: list[dict[str, Any]] = []
         match event.kind:
             case "step_started" | "action_result":
                 checkpoint, status = stm, "running"
@@ -85,22 +93,29 @@ class Durability:
             case "queued":
                 status = "queued"
             case "memory_updated":
-                states = {LTM_STATE: self.assistant.ltm.snapshot()}
-                for update in event.data.get("updates", []):
-                    self.journal.record_memory_update(event.time, event.instruction_id, update)
+                updates = list(event.data.get("updates", []))
             case "instruction_ended":
                 checkpoint, status = stm, self._final_status(event.instruction_id, stm)
-                states = {**self._world_state(), LTM_STATE: self.assistant.ltm.snapshot()}
+                states = self._world_state()
                 if stm is not None and stm.trace.steps:
                     self.metrics.step_completed(stm.trace.steps[-1])
             case _:
                 pass
-        seq = self.journal.record(event, stm=checkpoint, status=status, states=states)
+        seq = await self.journal.arecord(
+            event, stm=checkpoint, status=status, states=states, memory_updates=updates
+        )
         self.hub.publish(EventRecord(seq=seq, event=event))
+        if self.assistant.ltm.applied_total - self._snapshot_at >= SNAPSHOT_EVERY:
+            await self.snapshot_memory()
+
+    async def snapshot_memory(self) -> None:
+        """Snapshot the graph (bounded: one value per fact, a bounded history)."""
+        self._snapshot_at = self.assistant.ltm.applied_total
+        await self.journal.aput_memory_snapshot(LTM_STATE, self.assistant.ltm.snapshot())
 
     async def on_end(self, stm: ShortTermMemory) -> None:
         if not self.frozen:
-            self.journal.checkpoint(stm, self._final_status(stm.instruction_id, stm))
+            await self.journal.acheckpoint(stm, self._final_status(stm.instruction_id, stm))
 
     def _final_status(self, instruction_id: str, stm: ShortTermMemory | None) -> Status:
         if instruction_id in self.cancelled:
@@ -114,6 +129,19 @@ class Durability:
             self.metrics.action_failed(str(error))
 
     # -- resuming ------------------------------------------------------------------------
+    @staticmethod
+    def restore_memory(journal: Journal, office: Office) -> LongTermMemory | None:
+        """The journaled long-term memory: its last snapshot and the updates after it."""
+        snapshot = journal.state(LTM_STATE)
+        later = journal.memory_updates_after(int((snapshot or {}).get("through", 0)))
+        if snapshot is None and not later:
+            return None
+        ltm = LongTermMemory.restore(office, snapshot) if snapshot else LongTermMemory(office)
+        # A snapshot written before it was stamped already holds every update journaled.
+        for body in later if snapshot is None or "through" in snapshot else []:
+            ltm.replay(AppliedUpdate.model_validate(body))
+        return ltm
+
     def prepare_resume(self, record: InstructionRecord) -> ShortTermMemory:
         """The checkpointed memory with the cut-short step removed, its results set to replay."""
         assert record.stm is not None

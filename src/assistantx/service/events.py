@@ -4,6 +4,13 @@ A stream first replays the journaled events after ``Last-Event-ID`` (or ``?after
 follows live ones; the SSE ``id`` is the journal sequence number, so a reconnecting client
 misses nothing and sees nothing twice. One instruction's stream ends after its
 ``instruction_ended`` event.
+
+The all-instructions stream's replay is bounded: at most ``?replay=`` events (default
+``REPLAY_DEFAULT``, at most ``REPLAY_MAX``), the newest ones, after ``Last-Event-ID``,
+``?after=`` or ``?since=`` (a time, epoch seconds); with none of them, just the newest
+``replay`` events. When the bound cuts events off, the stream first says so with a
+``replay_truncated`` event naming the ids skipped (the client can read them per instruction).
+A year of events is never replayed by one request.
 """
 
 from __future__ import annotations
@@ -25,6 +32,8 @@ from assistantx.service.runtime import ServiceRuntime
 router = APIRouter(prefix="/v1", tags=["events"])
 
 KEEPALIVE_S = 15.0
+REPLAY_DEFAULT = 1000
+REPLAY_MAX = 10_000
 FINAL_STATUSES = {"done", "failed", "unachievable", "cancelled"}
 
 
@@ -47,11 +56,24 @@ def _format(record: EventRecord) -> str:
     return f"id: {record.seq}\nevent: {record.event.kind}\ndata: {json.dumps(payload)}\n\n"
 
 
+def _truncated(first: int, last: int) -> str:
+    payload = {"kind": "replay_truncated", "skipped_after": first, "skipped_through": last}
+    return f"event: replay_truncated\ndata: {json.dumps(payload)}\n\n"
+
+
 async def _stream(
-    runtime: ServiceRuntime, caller: Principal, instruction_id: str | None, after: int
+    runtime: ServiceRuntime,
+    caller: Principal,
+    instruction_id: str | None,
+    after: int,
+    floor: int | None = None,
 ) -> AsyncIterator[str]:
+    """``floor``: replay nothing at or below it (the bound of the all-instructions replay)."""
     listener = runtime.hub.subscribe(instruction_id)
     owners: dict[str, str | None] = {}
+    if floor is not None and floor > after:
+        yield _truncated(after, floor)
+        after = floor
 
     def visible(record: EventRecord) -> bool:
         if caller.is_operator:
@@ -126,7 +148,16 @@ async def all_events(
     caller: Caller,
     last_event_id: Annotated[str | None, Header(max_length=20)] = None,
     after: Annotated[int | None, Query(ge=0, le=MAX_SEQ)] = None,
+    since: Annotated[float | None, Query(ge=0)] = None,
+    replay: Annotated[int, Query(ge=0, le=REPLAY_MAX)] = REPLAY_DEFAULT,
 ) -> StreamingResponse:
-    """Every instruction's events (a person's token: only their own instructions)."""
+    """Every instruction's events (a person's token: only their own instructions); the
+    replay is the newest ``replay`` events after the given id or time."""
+    newest = runtime.journal.last_event_seq()
+    if last_event_id is None and after is None:
+        start = runtime.journal.event_seq_before(since) if since is not None else 0
+        # No position given: nothing to report as skipped, the newest events simply start it.
+        start = max(start, newest - replay)
+        return _response(_stream(runtime, caller, None, start))
     start = _start(last_event_id, after)
-    return _response(_stream(runtime, caller, None, start))
+    return _response(_stream(runtime, caller, None, start, floor=newest - replay))

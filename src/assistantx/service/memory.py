@@ -84,7 +84,7 @@ async def patch_person(
         _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
     if location is not None:
         _move(ltm, person_id, location)
-    runtime.journal.put_state(LTM_STATE, ltm.snapshot())
+    runtime.journal.put_memory_snapshot(LTM_STATE, ltm.snapshot())
     return _person(ltm, person_id)
 
 
@@ -111,7 +111,7 @@ def _ownership(
         person=person_id, item_type=type_id, owns=owns, evidence="set by the operator"
     )
     _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
-    runtime.journal.put_state(LTM_STATE, ltm.snapshot())
+    runtime.journal.put_memory_snapshot(LTM_STATE, ltm.snapshot())
     return _person(ltm, person_id)
 
 

@@ -36,17 +36,19 @@ from assistantx.errors import LockConnectionError
 from assistantx.journal import InstructionRecord, Journal
 from assistantx.lock.controller import LockController
 from assistantx.lock.keys import LockKeys, load_lock_keys
-from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.office import Office, load_office
 from assistantx.ppdr.loop import LoopLimits
 from assistantx.reasoners import reasoner_factory
 from assistantx.service import colleagues
+from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
 from assistantx.service.datalock import DataDirLock
-from assistantx.service.durability import LTM_STATE, Durability
+from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError
 from assistantx.service.hub import EventHub
+from assistantx.service.loop_lag import LoopLagMonitor
+from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
@@ -75,6 +77,7 @@ class ServiceRuntime:
     durability: Durability
     auth: AuthSetup
     metrics: ServiceMetrics
+    admission: Admission
 
     def __init__(self, settings: Settings, data_lock: DataDirLock | None = None) -> None:
         """``data_lock``: the data folder's lock when the caller took it already (the CLI takes
@@ -82,6 +85,7 @@ class ServiceRuntime:
         self.settings = settings
         self.data_lock = data_lock
         self.hub = EventHub()
+        self.loop_lag = LoopLagMonitor()
         self.ready = False
         self.resumed: list[str] = []
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix (checked at create_app).
@@ -101,6 +105,7 @@ class ServiceRuntime:
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
         self.metrics = ServiceMetrics(self.journal)
+        self.metrics.watch_loop(self.loop_lag)
         self.auth = build_authority(
             s.operator_token.get_secret_value() if s.operator_token else None,
             s.tokens.get_secret_value() if s.tokens else None,
@@ -128,8 +133,7 @@ class ServiceRuntime:
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
         if s.people == "simulated":
             colleagues.connect_colleagues(self.sim, self.messenger)
-        snapshot = self.journal.state(LTM_STATE)
-        ltm = LongTermMemory.restore(self.office, snapshot) if snapshot else None
+        ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
             AssistantParts(
@@ -150,6 +154,7 @@ class ServiceRuntime:
             self.journal, self.assistant, self.hub, self.metrics, self._world_state
         )
         self.durability.attach()
+        self.admission = Admission(self.assistant, self.journal)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
 
@@ -176,7 +181,13 @@ class ServiceRuntime:
             stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
             await matrix.start()
         stack.push_async_callback(self._stop)
+        self.loop_lag.start()
+        stack.push_async_callback(self.loop_lag.stop)
+        self.retention = Retention(self.journal, s.journal_retention_days)
+        self.retention.start()
+        stack.push_async_callback(self.retention.stop)
         await self._resume()
+        self.admission.start()
         self.ready = True
 
     def _reasoner(self) -> tuple[ReasonerFactory, str]:
@@ -223,9 +234,18 @@ class ServiceRuntime:
                 lock_id=s.lock_id,
                 clock=WallClock(),
                 expiry_s=expiry_s,
+                render_png=self._sends_images,
             )
         controller = LockController(s.lock_id, self.lock_keys.codes, self.clock)
-        return LocalLocker(controller, clock=self.clock, expiry_s=expiry_s)
+        return LocalLocker(
+            controller, clock=self.clock, expiry_s=expiry_s, render_png=self._sends_images
+        )
+
+    @property
+    def _sends_images(self) -> bool:
+        """QR codes are rendered only where the messenger delivers images (Matrix); the
+        built-in messenger carries the code's payload, and the web page draws it."""
+        return self.matrix is not None
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
         self.phones.save(self.sim.codes)  # before the snapshot that names them
@@ -254,20 +274,30 @@ class ServiceRuntime:
     async def _stop(self) -> None:
         """Shut down without ending running instructions: they resume on the next start."""
         self.ready = False
+        await self.admission.stop()  # what it had not started is journaled as queued
         self.durability.frozen = True
         self.messenger.closed = True
         if self.matrix is not None:
             self.matrix.closing()  # cut-short instructions resume; nobody is told "failed"
         self.hub.close()
+        # Taken as journaling stops, so it holds what the journal holds; a restart then
+        # replays no updates.
+        await self.durability.snapshot_memory()
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------
     async def submit(self, requester: str, text: str) -> InstructionRecord:
-        """Journal an instruction, then start it (the caller acknowledges after this)."""
+        """Admit an instruction: validate, journal it (one insert), queue it for the starter.
+
+        The caller acknowledges once the insert is committed; starting it (the reasoner, the
+        hooks, its first checkpoint) is the starter's job, so a submission never waits for
+        anyone's step. A restart starts what was admitted and never started."""
         person = self.resolver.person(requester)
         instruction_id = new_instruction_id()
-        record = self.journal.create_instruction(instruction_id, person, text, self.clock.now())
-        await self.assistant.submit(person, text, instruction_id=instruction_id)
+        record = await self.journal.acreate_instruction(
+            instruction_id, person, text, self.clock.now()
+        )
+        self.admission.admit(record)
         return record
 
     def instruction(self, instruction_id: str) -> InstructionRecord:
@@ -279,6 +309,8 @@ class ServiceRuntime:
     def cancel(self, instruction_id: str) -> bool:
         """Ask a running instruction to stop; False when it had already ended."""
         self.journal.request_cancel(instruction_id)
+        if self.admission.withdraw(instruction_id):
+            return True
         if instruction_id not in self.assistant.running:
             return False
         self.durability.cancelled.add(instruction_id)

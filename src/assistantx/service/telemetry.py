@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from assistantx.journal import Journal
+from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.prometheus import Counter, Gauge, Histogram, Labels, Registry
 from assistantx.trace import TraceStep
 
@@ -60,6 +61,15 @@ class ServiceMetrics:
                 "assistantx_duplicate_sends_skipped",
                 "sends answered from the journal instead of sent again (since start)",
                 lambda: {(): float(self.skipped_sends())},
+            )
+        )
+
+    def watch_loop(self, monitor: LoopLagMonitor) -> None:
+        self.registry.register(
+            Gauge(
+                "assistantx_event_loop_lag_max_seconds",
+                "the longest the event loop was blocked in the last minute",
+                lambda: {(): monitor.max_lag_s()},
             )
         )
 

@@ -16,7 +16,7 @@ import logging
 from collections.abc import Iterable
 from dataclasses import dataclass
 from datetime import UTC, datetime
-from typing import Protocol, runtime_checkable
+from typing import Any, Protocol, runtime_checkable
 
 from assistantx.adapters.lock.base import Locker, LockEvent
 from assistantx.adapters.lock.local import LocalLocker
@@ -42,6 +42,16 @@ from assistantx.sim.world import World
 __all__ = ["HandOverDesk", "HeldCode", "SimMessenger", "SimOffice", "SimRobot"]
 
 logger = logging.getLogger(__name__)
+
+# What a long-running simulation keeps of its history (messages, ended instructions): a
+# service runs it for months; an evaluation episode never comes near the bound.
+KEEP = 2000
+
+
+def _trim(history: list[Any], keep: int = KEEP) -> None:
+    """Drop the oldest entries once there are twice ``keep`` (amortised O(1) per append)."""
+    if len(history) > 2 * keep:
+        del history[:-keep]
 
 
 @runtime_checkable
@@ -81,6 +91,7 @@ class SimMessenger(Messenger):
         if message.idempotency_key and message.idempotency_key in self._seen_keys:
             return self._seen_keys[message.idempotency_key]
         self.sent.append(message)
+        _trim(self.sent)
         sent = SentMessage(
             platform=self.platform,
             message_id=f"sim-{next(self._ids)}",
@@ -89,6 +100,8 @@ class SimMessenger(Messenger):
         )
         if message.idempotency_key:
             self._seen_keys[message.idempotency_key] = sent
+            if len(self._seen_keys) > 2 * KEEP:  # the oldest keys belong to long-ended runs
+                self._seen_keys = dict(list(self._seen_keys.items())[-KEEP:])
         self._sim.on_message(message)
         return sent
 
@@ -113,6 +126,7 @@ class SimMessenger(Messenger):
             in_reply_to=in_reply_to,
         )
         self.received.append(inbound)
+        _trim(self.received)
         if self._inbox is not None:
             self._inbox.put_nowait(inbound)
         return inbound
@@ -163,7 +177,8 @@ class SimOffice:
         self.desk: HandOverDesk = locker
         self.codes: list[HeldCode] = []
         self.told: set[tuple[str | None, str]] = set()  # (instruction id, person)
-        self.ended: set[str] = set()  # instructions whose codes and replies are forgotten
+        # Instructions whose codes and replies are forgotten (insertion-ordered, bounded).
+        self.ended: dict[str, None] = {}
         self.requesters: dict[str, str] = {}  # instruction id → who asked for it
         self._visits: set[asyncio.Task[None]] = set()
 
@@ -178,7 +193,12 @@ class SimOffice:
     def end_instruction(self, instruction_id: str) -> None:
         """The instruction ended: people drop its codes and forget its questions, so nothing
         they would have written about it arrives afterwards (and starts a new instruction)."""
-        self.ended.add(instruction_id)
+        self.ended[instruction_id] = None
+        if len(self.ended) > 2 * KEEP:
+            ended = list(self.ended)
+            self.ended = dict.fromkeys(ended[-KEEP:])
+            for gone in ended[:-KEEP]:
+                self.requesters.pop(gone, None)
         self.codes = [c for c in self.codes if c.instruction_id != instruction_id]
         self.told = {(i, p) for i, p in self.told if i != instruction_id}
 

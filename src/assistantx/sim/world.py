@@ -18,6 +18,9 @@ from assistantx.sim.goals import parse_milestone
 LOCKER = "locker"
 
 
+LOG_KEEP = 5000  # world events kept (an evaluation episode logs a few dozen)
+
+
 @dataclass
 class WorldEvent:
     time: float
@@ -78,6 +81,8 @@ class World:
     # -- changes -------------------------------------------------------------------------
     def note(self, time: float, kind: str, **detail: Any) -> None:
         self.log.append(WorldEvent(time, kind, detail))
+        if len(self.log) > 2 * LOG_KEEP:  # a service's world runs for months: keep the recent
+            del self.log[:-LOG_KEEP]
 
     def record_message(self, time: float, person_id: str) -> None:
         self.messages_to[person_id] = self.messages_to.get(person_id, 0) + 1

@@ -51,7 +51,7 @@ class LocalLocker(Locker):
             instruction_id=instruction_id, person=person, purpose=purpose, item=item
         )
         self.controller.provision(payload)
-        return self.issuer.to_qrcode(claims, payload)
+        return await self.issuer.ato_qrcode(claims, payload)
 
     async def status(self) -> LockStatus:
         return self.controller.status()

@@ -77,7 +77,7 @@ class TcpLocker(Locker):
             instruction_id=instruction_id, person=person, purpose=purpose, item=item
         )
         await self.client.request("provision", payload=payload)
-        return self.issuer.to_qrcode(claims, payload)
+        return await self.issuer.ato_qrcode(claims, payload)
 
     async def status(self) -> LockStatus:
         return LockStatus.model_validate(await self.client.request("status"))

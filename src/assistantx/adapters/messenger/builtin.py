@@ -58,7 +58,7 @@ class BuiltinMessenger(Messenger):
     async def send(self, message: OutboundMessage) -> SentMessage:
         if self.closed:
             raise MessengerError("the service is shutting down; the message was not sent")
-        record = self._journal.record_outbound(message, ASSISTANT, self._clock.now())
+        record = await self._journal.arecord_outbound(message, ASSISTANT, self._clock.now())
         if record.status == "sent":
             self.duplicates_skipped += 1
             logger.info("message %s was sent before; not sent again", message.idempotency_key)
@@ -69,7 +69,7 @@ class BuiltinMessenger(Messenger):
             except Exception as exc:
                 raise MessengerError(f"could not deliver to {message.chat}: {exc}") from exc
         message_id = f"builtin-{record.seq}"
-        self._journal.mark_sent(record.seq, message_id)
+        await self._journal.amark_sent(record.seq, message_id)
         self._notify(record)
         return SentMessage(
             platform=self.platform,

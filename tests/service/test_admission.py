@@ -1,0 +1,67 @@
+"""Admission apart from execution: admitted instructions start in order, one at a time, and
+one cancelled while it waits never starts."""
+
+from __future__ import annotations
+
+import asyncio
+from pathlib import Path
+
+from assistantx.assistant import Assistant, AssistantParts
+from assistantx.journal import Journal
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.office import load_office
+from assistantx.service.admission import Admission
+from assistantx.settings import Settings
+from assistantx.sim.office import SimOffice
+from service.stapler_reasoner import build_factory
+
+
+async def test_admitted_instructions_start_in_order_and_a_withdrawn_one_never(
+    tmp_path: Path,
+) -> None:
+    office = load_office()
+    sim = SimOffice(office)
+    assistant = Assistant(
+        AssistantParts(
+            office=office,
+            messenger=sim.messenger,
+            robot=sim.robot,
+            locker=sim.locker,
+            clock=sim.clock,
+            reasoner_factory=build_factory(office, Settings()),
+        )
+    )
+    started: list[str] = []
+
+    async def on_start(stm: ShortTermMemory) -> None:
+        started.append(stm.instruction_id)
+
+    assistant.on_instruction_start(on_start)
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    admission = Admission(assistant, journal)
+    records = [
+        await journal.acreate_instruction(f"ins-{n}", "lee", "a stapler please", float(n))
+        for n in range(4)
+    ]
+    for record in records:
+        admission.admit(record)  # nothing starts before the starter runs
+    assert started == [] and admission.waiting == 4
+    assert admission.withdraw("ins-2") is True
+    assert admission.withdraw("ins-9") is False
+    await sim.locker.start()
+    await assistant.start()
+    admission.start()
+    try:
+        for _ in range(200):
+            if len(started) == 3:
+                break
+            await asyncio.sleep(0.01)
+        assert started == ["ins-0", "ins-1", "ins-3"]
+        withdrawn = journal.instruction("ins-2")
+        assert withdrawn is not None and withdrawn.status == "cancelled"
+        assert admission.waiting == 0
+    finally:
+        await admission.stop()
+        await assistant.stop()
+        await sim.locker.stop()
+        journal.close()

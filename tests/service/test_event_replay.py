@@ -1,0 +1,84 @@
+"""GET /v1/events replays a bounded number of journaled events, never a year of them."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from collections.abc import AsyncIterator
+from pathlib import Path
+
+import httpx
+import pytest
+
+from assistantx.journal import Journal
+from assistantx.ppdr.events import TraceEvent
+from assistantx.service.app import create_app
+from assistantx.service.server import service_server
+from assistantx.settings import Settings
+from service.server import OPERATOR, free_port
+
+AUTH = {"Authorization": f"Bearer {OPERATOR}"}
+
+
+@pytest.fixture
+async def journaled(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
+    """A service whose journal already holds 40 events (times 100..139) of a finished run."""
+    data = tmp_path / "data"
+    journal = Journal.open(data / "journal.sqlite3")
+    journal.create_instruction("ins-old", "lee", "t", 1.0)
+    journal.set_status("ins-old", "done")
+    for n in range(40):
+        event = TraceEvent(instruction_id="ins-old", kind="observation", time=100.0 + n, step=n)
+        journal.record(event)
+    journal.close()
+    port = free_port()
+    app = create_app(Settings(data_dir=data, operator_token=OPERATOR))
+    server = service_server(app, "127.0.0.1", port, log_level="warning")
+    task = asyncio.create_task(server.serve())
+    for _ in range(500):
+        if server.started:
+            break
+        await asyncio.sleep(0.02)
+    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+        yield client
+    server.should_exit = True
+    await task
+
+
+async def _replayed(client: httpx.AsyncClient, path: str, headers: dict[str, str]) -> list[dict]:
+    """The events the stream replays (it then waits for live ones: stop at the first pause)."""
+    got: list[dict] = []
+
+    async def read() -> None:
+        async with client.stream("GET", path, headers={**AUTH, **headers}) as response:
+            assert response.status_code == 200
+            async for line in response.aiter_lines():
+                if line.startswith("data: "):
+                    got.append(json.loads(line[6:]))
+
+    try:
+        await asyncio.wait_for(read(), 1.5)
+    except TimeoutError:
+        pass
+    return got
+
+
+async def test_replay_is_the_newest_events_by_default(journaled: httpx.AsyncClient) -> None:
+    got = await _replayed(journaled, "/v1/events?replay=5", {})
+    assert [e["step"] for e in got] == [35, 36, 37, 38, 39]
+
+
+async def test_replay_since_a_time(journaled: httpx.AsyncClient) -> None:
+    got = await _replayed(journaled, "/v1/events?since=136", {})
+    assert [e["step"] for e in got] == [36, 37, 38, 39]
+
+
+async def test_a_reconnect_beyond_the_cap_is_told_what_it_missed(
+    journaled: httpx.AsyncClient,
+) -> None:
+    got = await _replayed(journaled, "/v1/events?replay=3", {"Last-Event-ID": "10"})
+    assert got[0]["kind"] == "replay_truncated"
+    assert got[0]["skipped_after"] == 10
+    assert [e["step"] for e in got[1:]] == [37, 38, 39]
+    within = await _replayed(journaled, "/v1/events", {"Last-Event-ID": "37"})
+    assert [e["step"] for e in within] == [37, 38, 39]  # ids start at 1: id 38 is step 37
