@@ -105,9 +105,8 @@ class ObservedRobot(RobotBase):
         return result
 
     def state(self) -> RobotState:
-        return self.base.state().model_copy(
-            update={"odometer_m": self.odometer_m, "moving": self.moving}
-        )
+        # Motion as the base reports it: a base still planning its path has not left its place.
+        return self.base.state().model_copy(update={"odometer_m": self.odometer_m})
 
     def restore(self, place: str, odometer_m: float) -> None:
         """Where a journaled simulation left the robot; a base that cannot be put down there
