@@ -29,7 +29,8 @@ async def get_memory(runtime: Runtime, caller: Caller) -> dict[str, Any]:
     sees only the updates their own instructions made)."""
     snapshot = runtime.assistant.ltm.snapshot()
     if caller.person is not None:
-        snapshot["updates"] = _own_updates(runtime, caller.person, snapshot["updates"])
+        for key in ("updates", "latest"):  # both carry instruction ids and quoted evidence
+            snapshot[key] = _own_updates(runtime, caller.person, snapshot[key])
     return snapshot
 
 
