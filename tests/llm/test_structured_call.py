@@ -8,7 +8,6 @@ import pytest
 from pydantic import BaseModel, Field
 
 from assistantx.errors import LLMError, ModelBehaviorError, UnknownNameError
-from assistantx.llm.schema import grammar_schema
 from assistantx.llm import (
     Attempt,
     ChatRequest,
@@ -17,6 +16,7 @@ from assistantx.llm import (
     RetryPolicy,
     structured_call,
 )
+from assistantx.llm.schema import grammar_schema
 from fakes.scripted_llm import (
     RecordedRequest,
     Reply,

@@ -2,9 +2,9 @@
 
 Models wrap JSON in code fences, put prose before and after it, think aloud in
 ``<think>...</think>`` first, leave a trailing comma, or write a raw line break inside a
-string. This module tries, in order: the whole text, each fenced block, then the first
-top-level balanced ``{...}`` from left to right (never one nested in another), each as written and then with
-trailing commas removed; control characters inside strings are accepted. An object nested in
+string. This module tries, in order: the whole text, each fenced block, then each top-level
+balanced ``{...}`` from left to right (never one nested in another), each as written and then
+with trailing commas removed; control characters inside strings are accepted. An object nested in
 a broken one is never taken for the answer: ``{"actions": [{"type": "wait"}`` is an error,
 not a wait. Failures raise ``ValueError`` with a message meant to be shown to the model.
 """

@@ -26,9 +26,9 @@ Transport failures (429, 5xx, timeouts, dropped connections) are retried with se
 exponential backoff and jitter, honouring ``Retry-After`` up to a cap, except a timeout
 against a server on this machine: it is busy with our own earlier work, and a retry would
 queue behind it. After the last try an ``LLMCallFailed`` carries the cause, the cost
-(prompt tokens estimated, what was streamed so far) and a cause in plain words. The API key goes out as a bearer token and is never
-logged; prompt and completion bodies are logged at DEBUG only, and not at all with
-``log_bodies=False``.
+(prompt tokens estimated, what was streamed so far) and a cause in plain words. The API key
+goes out as a bearer token and is never logged; prompt and completion bodies are logged at
+DEBUG only, and not at all with ``log_bodies=False``.
 """
 
 from __future__ import annotations
