@@ -118,6 +118,12 @@ def cut_off_error(response: ChatResponse) -> str | None:
     )
 
 
+def _reject_cut_off(response: ChatResponse) -> None:
+    cut = cut_off_error(response)
+    if cut is not None:
+        raise ValueError(cut)
+
+
 def parse_output(
     text: str,
     output_type: type[OutputT],
@@ -161,9 +167,7 @@ async def structured_call(
             exc.attempts = tuple(attempts)
             raise
         try:
-            cut = cut_off_error(response)
-            if cut is not None:
-                raise ValueError(cut)
+            _reject_cut_off(response)
             output = parse_output(response.text, output_type, validate)
         except ValidationError as exc:
             error = describe_validation_error(exc)
