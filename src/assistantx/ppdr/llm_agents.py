@@ -26,7 +26,6 @@ without ``start()`` starts itself on its first call (and then holds the model un
 from __future__ import annotations
 
 import asyncio
-import json
 import logging
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -46,10 +45,13 @@ from assistantx.llm import (
     Attempt,
     ChatModel,
     ChatRequest,
+    ChatResponse,
     Message,
     OpenAICompatibleModel,
     structured_call,
 )
+from assistantx.llm.base import LLMCallFailed
+from assistantx.llm.schema import schema_outline
 from assistantx.memory.render import quote, render_memory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
@@ -101,8 +103,11 @@ class AgentPrompts:
 
 
 def schema_text(model: type[BaseModel]) -> str:
-    """A pydantic model's JSON schema as compact text for a prompt."""
-    return json.dumps(model.model_json_schema(), separators=(",", ":"), sort_keys=True)
+    """The shape of a pydantic model's output for a prompt: a compact outline, not the full
+    schema. The schema itself goes with the request; the client pastes it into the prompt only
+    when the server cannot enforce it, so a prompt never carries it twice (it was 4.7k of
+    Decision's 10.2k-character system prompt)."""
+    return schema_outline(model)
 
 
 # -- the shared model ------------------------------------------------------------------------
@@ -341,6 +346,21 @@ class ModelReasoner(Reasoner):
             if attempts:
                 ctx.record(agent_call(agent, attempts))
             raise
+        except LLMCallFailed as exc:
+            # The server read the prompt (and maybe generated) before failing: count it.
+            earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
+            failed = Attempt(
+                response=ChatResponse(
+                    text="",
+                    usage=exc.usage,
+                    latency_s=exc.latency_s,
+                    model=exc.model,
+                    retries=exc.retries,
+                ),
+                error=str(exc),
+            )
+            ctx.record(agent_call(agent, [*earlier, failed]))
+            raise
         ctx.record(agent_call(agent, result.attempts))
         return result.output
 
@@ -447,7 +467,8 @@ def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
         prompt_tokens=sum(a.response.usage.prompt_tokens for a in attempts),
         completion_tokens=sum(a.response.usage.completion_tokens for a in attempts),
         latency_s=sum(a.response.latency_s for a in attempts),
-        attempts=len(attempts),
+        # every request the server saw: repairs and transport retries included
+        attempts=sum(1 + a.response.retries for a in attempts),
         estimated=any(a.response.usage.estimated for a in attempts),
     )
 
