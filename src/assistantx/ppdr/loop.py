@@ -15,7 +15,10 @@ until Stop, the step limit or the deadline. Fixes what the research code got wro
   wall clock: a slow model cannot hold an instruction for longer than that;
 - every agent call's cost reaches the trace, also when the agent then raised;
 - a ``wait`` with nothing new since the last one is refused like any repeated action (a
-  different reason or timeout does not make it new).
+  different reason or timeout does not make it new);
+- a QR code goes to someone other than the requester only after they answered in this
+  instruction's dialogue: nobody is handed a locker code for a hand-over they were never
+  asked about and did not answer (a model once sent an absent colleague a deposit code).
 """
 
 from __future__ import annotations
@@ -24,7 +27,7 @@ import asyncio
 import logging
 from dataclasses import dataclass
 
-from assistantx.actions import Action, Move, Outcome, SendQR, Stop, Wait, WaitInPlace
+from assistantx.actions import Action, Inquire, Move, Outcome, SendQR, Stop, Wait, WaitInPlace
 from assistantx.errors import AssistantXError, GroundingError, LLMError, ModelBehaviorError
 from assistantx.executors import Executor
 from assistantx.memory.graph import LongTermMemory
@@ -258,6 +261,17 @@ class InstructionRunner:
                     result=step.results[-1].model_dump(mode="json"),
                 )
                 break
+            unagreed = self._unagreed_handover(stm, action)
+            if unagreed is not None:
+                feedback.append(f"Action {action.signature()} was refused: {unagreed}")
+                step.results.append(self._refused(action, unagreed))
+                await self._emit(
+                    stm,
+                    "action_result",
+                    step.index,
+                    result=step.results[-1].model_dump(mode="json"),
+                )
+                break
             signature = action.signature()
             # Waits differ only in wording; what matters is that nothing new came in since.
             seen_key = "wait()" if isinstance(action, Wait) else signature
@@ -285,6 +299,8 @@ class InstructionRunner:
             if isinstance(action, Wait):
                 # a wait's own timeout is no reason to wait again: only news from elsewhere is
                 self._last_seen[seen_key] = self._info
+            elif isinstance(action, Inquire) and result.ok:
+                self._last_seen.pop("wait()", None)  # a new question is worth waiting for
             step.results.append(result)
             await self._emit(
                 stm, "action_result", step.index, result=result.model_dump(mode="json")
@@ -295,6 +311,19 @@ class InstructionRunner:
             if not result.ok:
                 break  # the rest of the decision assumed this one worked
         return feedback
+
+    @staticmethod
+    def _unagreed_handover(stm: ShortTermMemory, action: Action) -> str | None:
+        """Why a QR code may not go out yet, or None when it may."""
+        if not isinstance(action, SendQR) or action.contact == stm.requester:
+            return None
+        answered = any(t.direction == "in" and t.person == action.contact for t in stm.dialogue)
+        if answered:
+            return None
+        return (
+            f"{action.contact} has not answered in this conversation, so they have not agreed "
+            "to this hand-over; ask them (inquire, then wait) and send the code after they reply"
+        )
 
     async def _take_body(self, stm: ShortTermMemory, step: TraceStep) -> None:
         if self.lease.holds(stm.instruction_id):
