@@ -385,9 +385,9 @@ class LLMReasoner(ModelReasoner):
             "reflection": schema_text(Reflection),
         }
 
-    # -- the four agents -----------------------------------------------------------------
-    async def perceive(self, ctx: AgentContext) -> Percept:
-        messages = self.prompts.perception.render(
+    # -- the four prompts (public: the prompt-size bench and the real-server tests use them) --
+    def perception_messages(self, ctx: AgentContext) -> list[Message]:
+        return self.prompts.perception.render(
             memory=render_memory(ctx.ltm, ctx.stm),
             step=ctx.step,
             previous_reflection=_reflection_text(ctx.last_reflection),
@@ -395,16 +395,8 @@ class LLMReasoner(ModelReasoner):
             output_schema=self._schemas["perception"],
         )
 
-        def check(percept: Percept) -> None:
-            focus_ids(percept, ctx.resolver, ctx.stm.requester)
-
-        percept = await self._ask(
-            ctx, "perception", messages, Percept, check, schema_name="Percept"
-        )
-        return focus_ids(percept, ctx.resolver, ctx.stm.requester)
-
-    async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
-        messages = self.prompts.planning.render(
+    def planning_messages(self, ctx: AgentContext, percept: Percept) -> list[Message]:
+        return self.prompts.planning.render(
             memory=render_memory(ctx.ltm, ctx.stm, percept),
             percept=_json(percept, "{}"),
             previous_plan=_json(_previous_plan(ctx.stm), "(none: this is the first step)"),
@@ -412,10 +404,9 @@ class LLMReasoner(ModelReasoner):
             feedback=_feedback_text(ctx.feedback),
             output_schema=self._schemas["planning"],
         )
-        return await self._ask(ctx, "planning", messages, Plan, None, schema_name="Plan")
 
-    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
-        messages = self.prompts.decision.render(
+    def decision_messages(self, ctx: AgentContext, percept: Percept, plan: Plan) -> list[Message]:
+        return self.prompts.decision.render(
             memory=render_memory(ctx.ltm, ctx.stm, percept),
             percept=_json(percept, "{}"),
             plan=_json(plan, "{}"),
@@ -424,9 +415,44 @@ class LLMReasoner(ModelReasoner):
             output_schema=self._schemas["decision"],
         )
 
+    def reflection_messages(
+        self,
+        ctx: AgentContext,
+        percept: Percept,
+        plan: Plan,
+        decision: Decision,
+        results: Sequence[ActionResult],
+        observed: Observation,
+    ) -> list[Message]:
+        return self.prompts.reflection.render(
+            memory=render_memory(ctx.ltm, ctx.stm, percept),
+            percept=_json(percept, "{}"),
+            plan=_json(plan, "{}"),
+            actions=_actions_text(decision),
+            results=_results_text(results),
+            observed=_observed_text(observed),
+            output_schema=self._schemas["reflection"],
+        )
+
+    # -- the four agents -----------------------------------------------------------------
+    async def perceive(self, ctx: AgentContext) -> Percept:
+        def check(percept: Percept) -> None:
+            focus_ids(percept, ctx.resolver, ctx.stm.requester)
+
+        percept = await self._ask(
+            ctx, "perception", self.perception_messages(ctx), Percept, check, schema_name="Percept"
+        )
+        return focus_ids(percept, ctx.resolver, ctx.stm.requester)
+
+    async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
+        messages = self.planning_messages(ctx, percept)
+        return await self._ask(ctx, "planning", messages, Plan, None, schema_name="Plan")
+
+    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
         def check(decision: Decision) -> None:
             check_actions(decision.actions, ctx.resolver, ctx.stm)
 
+        messages = self.decision_messages(ctx, percept, plan)
         return await self._ask(ctx, "decision", messages, Decision, check, schema_name="Decision")
 
     async def reflect(
@@ -438,19 +464,10 @@ class LLMReasoner(ModelReasoner):
         results: list[ActionResult],
         observed: Observation,
     ) -> Reflection:
-        messages = self.prompts.reflection.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
-            percept=_json(percept, "{}"),
-            plan=_json(plan, "{}"),
-            actions=_actions_text(decision),
-            results=_results_text(results),
-            observed=_observed_text(observed),
-            output_schema=self._schemas["reflection"],
-        )
-
         def check(reflection: Reflection) -> None:
             ground_updates(reflection.updates, ctx.resolver)
 
+        messages = self.reflection_messages(ctx, percept, plan, decision, results, observed)
         reflection = await self._ask(
             ctx, "reflection", messages, Reflection, check, schema_name="Reflection"
         )
