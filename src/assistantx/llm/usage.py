@@ -2,9 +2,10 @@
 
 A :class:`UsageLedger` records one :class:`CallRecord` per call to the model (every repair
 attempt is its own call, and a call that failed is recorded with what it cost) and sums
-them per agent, per step of an instruction and per instruction. It serializes to plain JSON for the trace and the evaluator's report, and loads
-back. :class:`MeteredModel` wraps any ``ChatModel`` and records every call it forwards, so
-agents need not do the bookkeeping themselves.
+them per agent, per step of an instruction and per instruction. It serializes to plain JSON
+for the trace and the evaluator's report, and loads back. :class:`MeteredModel` wraps any
+``ChatModel`` and records every call it forwards, so agents need not do the bookkeeping
+themselves.
 """
 
 from __future__ import annotations
