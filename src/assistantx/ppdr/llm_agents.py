@@ -52,7 +52,7 @@ from assistantx.llm import (
 )
 from assistantx.llm.base import LLMCallFailed
 from assistantx.llm.schema import schema_outline
-from assistantx.memory.render import quote, render_memory
+from assistantx.memory.render import quote
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import (
@@ -63,6 +63,13 @@ from assistantx.memory.updates import (
 )
 from assistantx.office import Office
 from assistantx.ppdr.agents import AgentContext, Reasoner
+from assistantx.ppdr.focus import (
+    FocusBudget,
+    focus_budget,
+    merge_focus,
+    render_focused,
+    task_focus,
+)
 from assistantx.prompts import PromptTemplate, load_prompts
 from assistantx.settings import Settings
 from assistantx.trace import (
@@ -301,12 +308,25 @@ class ModelReasoner(Reasoner):
     """A reasoner whose agents are structured calls to a shared chat model, accounted in the
     trace. Holds the shared model from ``start`` to ``stop`` (both idempotent)."""
 
-    def __init__(self, shared: SharedModel, *, output_retries: int = 2) -> None:
+    def __init__(
+        self,
+        shared: SharedModel,
+        *,
+        output_retries: int = 2,
+        budget: FocusBudget | None = None,
+    ) -> None:
         if output_retries < 0:
             raise ValueError("output_retries must be >= 0")
         self.shared = shared
         self.output_retries = output_retries
+        self.budget = budget or focus_budget(8192, 1024)
         self._holding = False
+
+    def memory(self, ctx: AgentContext, percept: Percept | None = None) -> str:
+        """The memory an agent sees: the task's focus (merged with the model's percept),
+        capped to fit the context; never the whole office."""
+        focus = merge_focus(percept, task_focus(ctx.ltm, ctx.stm))
+        return render_focused(ctx.ltm, ctx.stm, focus, self.budget)
 
     async def start(self) -> None:
         if not self._holding:
@@ -374,9 +394,14 @@ class LLMReasoner(ModelReasoner):
     name = "llm"
 
     def __init__(
-        self, shared: SharedModel, prompts: AgentPrompts, *, output_retries: int = 2
+        self,
+        shared: SharedModel,
+        prompts: AgentPrompts,
+        *,
+        output_retries: int = 2,
+        budget: FocusBudget | None = None,
     ) -> None:
-        super().__init__(shared, output_retries=output_retries)
+        super().__init__(shared, output_retries=output_retries, budget=budget)
         self.prompts = prompts
         self._schemas = {
             "perception": schema_text(Percept),
@@ -388,7 +413,7 @@ class LLMReasoner(ModelReasoner):
     # -- the four prompts (public: the prompt-size bench and the real-server tests use them) --
     def perception_messages(self, ctx: AgentContext) -> list[Message]:
         return self.prompts.perception.render(
-            memory=render_memory(ctx.ltm, ctx.stm),
+            memory=self.memory(ctx),
             step=ctx.step,
             previous_reflection=_reflection_text(ctx.last_reflection),
             feedback=_feedback_text(ctx.feedback),
@@ -397,7 +422,7 @@ class LLMReasoner(ModelReasoner):
 
     def planning_messages(self, ctx: AgentContext, percept: Percept) -> list[Message]:
         return self.prompts.planning.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
+            memory=self.memory(ctx, percept),
             percept=_json(percept, "{}"),
             previous_plan=_json(_previous_plan(ctx.stm), "(none: this is the first step)"),
             previous_reflection=_reflection_text(ctx.last_reflection),
@@ -407,7 +432,7 @@ class LLMReasoner(ModelReasoner):
 
     def decision_messages(self, ctx: AgentContext, percept: Percept, plan: Plan) -> list[Message]:
         return self.prompts.decision.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
+            memory=self.memory(ctx, percept),
             percept=_json(percept, "{}"),
             plan=_json(plan, "{}"),
             previous_reflection=_reflection_text(ctx.last_reflection),
@@ -425,7 +450,7 @@ class LLMReasoner(ModelReasoner):
         observed: Observation,
     ) -> list[Message]:
         return self.prompts.reflection.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
+            memory=self.memory(ctx, percept),
             percept=_json(percept, "{}"),
             plan=_json(plan, "{}"),
             actions=_actions_text(decision),
@@ -496,17 +521,27 @@ def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
 class LLMReasonerFactory:
     """Makes one :class:`LLMReasoner` per instruction, all sharing one model and one prompt set."""
 
-    def __init__(self, model: ChatModel, prompts: AgentPrompts, *, output_retries: int) -> None:
+    def __init__(
+        self,
+        model: ChatModel,
+        prompts: AgentPrompts,
+        *,
+        output_retries: int,
+        budget: FocusBudget | None = None,
+    ) -> None:
         self.shared = SharedModel(model)
         self.prompts = prompts
         self.output_retries = output_retries
+        self.budget = budget
 
     @property
     def model(self) -> ChatModel:
         return self.shared.model
 
     def __call__(self) -> LLMReasoner:
-        return LLMReasoner(self.shared, self.prompts, output_retries=self.output_retries)
+        return LLMReasoner(
+            self.shared, self.prompts, output_retries=self.output_retries, budget=self.budget
+        )
 
 
 def build_factory(
@@ -535,7 +570,12 @@ def build_factory(
         except ValueError as exc:
             raise ReasonerError(f"cannot use the LLM at {settings.llm_base_url}: {exc}") from exc
     logger.info("LLM reasoner: %r, output retries %d", model, settings.llm_output_retries)
-    return LLMReasonerFactory(model, prompts, output_retries=settings.llm_output_retries)
+    return LLMReasonerFactory(
+        model,
+        prompts,
+        output_retries=settings.llm_output_retries,
+        budget=focus_budget(settings.llm_context_tokens, settings.llm_max_tokens),
+    )
 
 
 __all__ = [
