@@ -86,9 +86,7 @@ async def test_a_name_outside_memory_is_repaired_or_asked_never_guessed(
 ) -> None:
     made_up = _frame({"kind": "transfer", "item": "stapler", "owner": "Zhangg Wie Wu"})
     scripted_llm.script("understanding", *(json_reply(made_up) for _ in range(3)))
-    stm, _ = await _run(
-        office, scripted_llm, "bring me the stapler of Zhangg Wie Wu", max_steps=1
-    )
+    stm, _ = await _run(office, scripted_llm, "bring me the stapler of Zhangg Wie Wu", max_steps=1)
 
     repairs = scripted_llm.requests_for("understanding")
     assert len(repairs) == 3  # the first answer and two repairs
