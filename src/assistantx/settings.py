@@ -39,7 +39,25 @@ class Settings(BaseSettings):
     llm_seed: int | None = 0
     llm_max_retries: int = Field(default=4, description="HTTP retries on 429/5xx/timeouts")
     llm_output_retries: int = Field(default=2, description="retries on invalid model output")
-    reasoner: Literal["auto", "symbolic", "llm"] = "auto"
+    llm_structured_output: Literal[
+        "auto", "json_schema", "json_object_schema", "json_object", "prompt"
+    ] = Field(
+        default="auto",
+        description="how a schema reaches the server: auto tries json_schema, then llama.cpp's "
+        "json_object+schema, then JSON mode, then the prompt alone",
+    )
+    llm_max_tokens: int = Field(default=1024, gt=0, description="completion cap per call")
+    llm_call_budget_s: float = Field(
+        default=120.0, gt=0, description="wall-clock budget of one call, streaming included"
+    )
+    llm_stream: bool = Field(default=True, description="stream, so a timeout stops generation")
+    llm_context_tokens: int = Field(
+        default=8192, gt=0, description="the server's context; prompts are fitted to it"
+    )
+    instruction_wall_s: float = Field(
+        default=900.0, gt=0, description="wall-clock bound of one instruction (not sim time)"
+    )
+    reasoner: Literal["auto", "symbolic", "llm", "hybrid"] = "auto"
 
     # -- the loop -----------------------------------------------------------------------
     max_steps: int = 30
@@ -118,7 +136,7 @@ class Settings(BaseSettings):
         return 1.0 if self.people == "human" else DEFAULT_SIM_SPEEDUP
 
     @property
-    def effective_reasoner(self) -> Literal["symbolic", "llm"]:
+    def effective_reasoner(self) -> Literal["symbolic", "llm", "hybrid"]:
         if self.reasoner == "auto":
             return "llm" if self.llm_enabled else "symbolic"
         return self.reasoner

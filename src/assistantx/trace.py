@@ -119,7 +119,7 @@ class Usage(BaseModel):
 
     def add(self, call: AgentCall) -> None:
         self.calls += 1
-        self.llm_calls += 1 if call.llm else 0
+        self.llm_calls += call.attempts if call.llm else 0  # every request, repairs included
         self.prompt_tokens += call.prompt_tokens
         self.completion_tokens += call.completion_tokens
         self.latency_s += call.latency_s

@@ -216,3 +216,21 @@ def test_correct_unachievable_succeeds() -> None:
     )
     s = score(episode)
     assert (s.sr, s.cr, s.rr) == (1.0, 1.0, 0.0)
+
+
+def test_being_told_of_a_failure_is_no_progress() -> None:
+    # nothing was fetched; the requester heard "failed" (the informed milestone holds in the
+    # world, but it is not progress toward the goal)
+    told = [[(Stop(outcome="failed", summary="I could not do it."), True, {})]]
+    s = score(_episode(told, outcome="failed", milestones=[False, True]))
+    assert (s.sr, s.cr) == (0.0, 0.0)
+
+
+def test_informing_someone_else_counts_whatever_the_outcome() -> None:
+    goal = [{"informed": "wang"}, {"holds": ["lee", "stapler:*"]}]
+    steps = [
+        [(Inform(contact="wang", content="The meeting moved."), True, {})],
+        [(Stop(outcome="failed", summary="No stapler."), True, {})],
+    ]
+    s = score(_episode(steps, outcome="failed", milestones=[True, False], goal=goal))
+    assert s.cr == 0.5

@@ -45,3 +45,21 @@ def test_failures_say_why(text: str, message: str) -> None:
 
 def test_trailing_commas_inside_strings_are_kept() -> None:
     assert remove_trailing_commas('{"a": ",}", "b": [1,]}') == '{"a": ",}", "b": [1]}'
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # cut off at the token limit: the complete inner action is not the answer
+        '{"thought": "go", "actions": [{"type": "wait", "timeout_s": 60}',
+        'Sure: {"plan": {"goal": "x"}, "broken": }',
+    ],
+)
+def test_an_object_nested_in_a_broken_one_is_never_the_answer(text: str) -> None:
+    with pytest.raises(ValueError, match="not valid JSON"):
+        extract_json_object(text)
+
+
+def test_raw_line_breaks_inside_strings_are_read() -> None:
+    text = '{"summary": "line one\nline two\ttabbed"}'
+    assert extract_json_object(text) == {"summary": "line one\nline two\ttabbed"}

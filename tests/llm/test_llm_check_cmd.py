@@ -19,7 +19,7 @@ async def test_reports_mode_tokens_and_latency(scripted_llm: ScriptedLLM) -> Non
     report = await check(Settings(llm_base_url=scripted_llm.base_url, llm_model="tiny"))
     assert report["ok"] is True
     assert report["answer"] == "pong"
-    assert report["structured_mode"] == "json_object"
+    assert report["structured_mode"] == "json_object_schema"
     assert report["model"] == "tiny"
     assert report["attempts"] == 1
     assert report["prompt_tokens"] > 0

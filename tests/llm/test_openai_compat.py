@@ -12,6 +12,7 @@ from pydantic import SecretStr
 
 from assistantx.errors import LLMError
 from assistantx.llm import ChatRequest, Message, OpenAICompatibleModel, RetryPolicy
+from assistantx.llm.base import LLMCallFailed
 from assistantx.settings import Settings
 from fakes.scripted_llm import (
     Reply,
@@ -137,7 +138,8 @@ async def test_server_error_then_success(scripted_llm: ScriptedLLM) -> None:
 
 async def test_timeout_then_success(scripted_llm: ScriptedLLM) -> None:
     scripted_llm.script("planning", slow(5.0, "too late"), "in time")
-    async with make_model(scripted_llm, timeout_s=0.2) as model:
+    # a remote server's timeout is retried; the scripted one is local, so say it is wanted
+    async with make_model(scripted_llm, timeout_s=0.2, retry_local_timeouts=True) as model:
         started = time.perf_counter()
         response = await model.complete(ask())
     assert response.text == "in time"
@@ -200,13 +202,14 @@ async def test_response_format_falls_back_once_and_remembers(scripted_llm: Scrip
         first = await model.complete(ask("decision", json_schema=SCHEMA))
         second = await model.complete(ask("decision", json_schema=SCHEMA))
     assert (first.text, second.text) == ('{"answer": "a"}', '{"answer": "b"}')
-    assert first.structured_mode == second.structured_mode == "json_object"
+    # llama.cpp's form: json_object with the schema in response_format, enforced there
+    assert first.structured_mode == second.structured_mode == "json_object_schema"
     kinds = [(r.status, (r.response_format or {}).get("type")) for r in scripted_llm.requests]
     # The refusal happened once; the second call went straight to json_object.
     assert kinds == [(400, "json_schema"), (200, "json_object"), (200, "json_object")]
-    # JSON mode carries the schema in the system prompt (OpenAI insists on the word JSON).
-    assert '"answer"' in scripted_llm.requests[1].system_text
-    assert "JSON" in scripted_llm.requests[1].system_text
+    assert scripted_llm.requests[1].response_format == {"type": "json_object", "schema": SCHEMA}
+    # The server enforces the schema, so it is not pasted into the prompt as well.
+    assert '"answer"' not in scripted_llm.requests[1].system_text
 
 
 async def test_falls_back_to_plain_prompting(scripted_llm: ScriptedLLM) -> None:
@@ -220,7 +223,8 @@ async def test_falls_back_to_plain_prompting(scripted_llm: ScriptedLLM) -> None:
     last = scripted_llm.requests[-1]
     assert last.response_format is None
     assert last.system_text.startswith("AGENT: decision\n\nAnswer with exactly one JSON object")
-    assert len(scripted_llm.requests) == 3
+    # json_schema, json_object+schema, bare json_object (refused), then the prompt alone
+    assert len(scripted_llm.requests) == 4
 
 
 async def test_scripted_refusal_with_500_mentioning_response_format(
@@ -229,7 +233,7 @@ async def test_scripted_refusal_with_500_mentioning_response_format(
     scripted_llm.script("decision", reject_response_format(500), json_reply({"answer": "a"}))
     async with make_model(scripted_llm) as model:
         response = await model.complete(ask("decision", json_schema=SCHEMA))
-    assert response.structured_mode == "json_object"
+    assert response.structured_mode == "json_object_schema"
     assert response.retries == 0
 
 
@@ -329,3 +333,56 @@ def test_from_settings_takes_the_llm_fields() -> None:
 def test_bad_base_url_is_rejected() -> None:
     with pytest.raises(ValueError, match="http"):
         OpenAICompatibleModel("localhost:11434/v1", "m")
+
+
+async def test_a_timeout_against_a_local_server_is_not_retried(scripted_llm: ScriptedLLM) -> None:
+    # The local server is still generating for the call that gave up; a retry would queue
+    # behind that abandoned generation.
+    scripted_llm.script("planning", slow(5.0, "too late"), "never asked")
+    async with make_model(scripted_llm, timeout_s=0.2) as model:
+        with pytest.raises(LLMCallFailed, match="after 1 attempt") as caught:
+            await model.complete(ask(text="word " * 400))
+    assert len(scripted_llm.requests) == 1
+    error = caught.value
+    assert error.user_text == "my language model server took too long to answer"
+    assert "http" not in error.user_text
+    # what the failed call cost is counted: the prompt was sent and read
+    assert error.usage.prompt_tokens >= 400
+    assert error.usage.estimated
+    assert error.latency_s >= 0.2
+
+
+async def test_call_budget_bounds_a_call_that_keeps_the_connection_busy(
+    scripted_llm: ScriptedLLM,
+) -> None:
+    scripted_llm.script("planning", slow(5.0, "too late"))
+    async with make_model(scripted_llm, timeout_s=30.0, call_budget_s=0.3) as model:
+        started = time.perf_counter()
+        with pytest.raises(LLMCallFailed, match="budget"):
+            await model.complete(ask())
+    assert time.perf_counter() - started < 2.0
+
+
+async def test_a_fixed_structured_mode_never_falls_back(scripted_llm: ScriptedLLM) -> None:
+    scripted_llm.supports_json_schema = False
+    async with make_model(scripted_llm, structured="json_schema") as model:
+        with pytest.raises(LLMCallFailed, match="ASSISTANTX_LLM_STRUCTURED_OUTPUT"):
+            await model.complete(ask("decision", json_schema=SCHEMA))
+    assert len(scripted_llm.requests) == 1
+
+
+async def test_max_tokens_is_sent(scripted_llm: ScriptedLLM) -> None:
+    scripted_llm.script("planning", "ok")
+    async with make_model(scripted_llm, max_tokens=321) as model:
+        await model.complete(ask())
+    assert scripted_llm.requests[0].body["max_tokens"] == 321
+
+
+async def test_a_streamed_request_answered_with_plain_json_is_read(
+    scripted_llm: ScriptedLLM,
+) -> None:
+    scripted_llm.script("planning", Reply(content="plain", finish_reason="length"))
+    async with make_model(scripted_llm, stream=True) as model:
+        response = await model.complete(ask())
+    assert scripted_llm.requests[0].body["stream"] is True
+    assert (response.text, response.finish_reason) == ("plain", "length")

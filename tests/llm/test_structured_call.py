@@ -16,6 +16,7 @@ from assistantx.llm import (
     RetryPolicy,
     structured_call,
 )
+from assistantx.llm.schema import grammar_schema
 from fakes.scripted_llm import (
     RecordedRequest,
     Reply,
@@ -78,7 +79,7 @@ async def test_valid_first_answer(scripted_llm: ScriptedLLM) -> None:
     sent = scripted_llm.requests[0].response_format
     assert sent is not None
     assert sent["json_schema"]["name"] == "PlanOut"
-    assert sent["json_schema"]["schema"] == PlanOut.model_json_schema()
+    assert sent["json_schema"]["schema"] == grammar_schema(PlanOut)
 
 
 async def test_prose_and_fences_around_json_are_tolerated(scripted_llm: ScriptedLLM) -> None:
@@ -99,11 +100,13 @@ async def test_malformed_json_is_repaired_with_the_error_fed_back(
     assert result.repairs == 1
     first_error = result.attempts[0].error
     assert first_error is not None
-    assert first_error.startswith("the answer is not valid JSON")
+    # finish_reason "length": the answer is rejected whole, never parsed as a partial one
+    assert first_error.startswith("the answer was cut off at the length limit")
     second = scripted_llm.requests[1]
-    # The bad answer comes back as the assistant's turn, then the error as the user's.
-    assert second.messages[-2] == {"role": "assistant", "content": malformed_json().content}
+    # The original conversation, then one user turn with the error and a short excerpt.
+    assert len(second.messages) == 3
     assert first_error in second.last_user_text
+    assert (malformed_json().content or "").strip() in second.last_user_text
     assert second.messages[:2] == scripted_llm.requests[0].messages[:2]
 
 
@@ -145,8 +148,8 @@ async def test_gives_up_with_model_behavior_error(scripted_llm: ScriptedLLM) -> 
     ]
     assert all(a.error for a in attempts)
     assert len(scripted_llm.requests) == 3
-    # Each retry carries the whole conversation so far: 2 + 2 + 2 messages.
-    assert [len(r.messages) for r in scripted_llm.requests] == [2, 4, 6]
+    # Each retry is the original conversation plus one repair turn: repairs never pile up.
+    assert [len(r.messages) for r in scripted_llm.requests] == [2, 3, 3]
 
 
 async def test_usage_and_latency_are_summed_over_attempts(scripted_llm: ScriptedLLM) -> None:

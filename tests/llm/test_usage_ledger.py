@@ -147,3 +147,28 @@ async def test_metered_model_records_every_call(scripted_llm: ScriptedLLM) -> No
     )
     assert records[1].estimated
     assert ledger.totals().repairs == 1
+
+
+async def test_a_failed_call_is_recorded_with_its_cost() -> None:
+    from assistantx.llm import ChatModel, ChatRequest, Message, MeteredModel
+    from assistantx.llm.base import LLMCallFailed, Usage
+
+    class _TimesOut(ChatModel):
+        async def _complete(self, request: ChatRequest) -> ChatResponse:
+            raise LLMCallFailed(
+                "timed out",
+                user_text="my language model server took too long to answer",
+                usage=Usage(prompt_tokens=700, completion_tokens=30, estimated=True),
+                latency_s=2.5,
+                model="m",
+            )
+
+    ledger = UsageLedger()
+    request = ChatRequest(messages=(Message(role="user", content="hi"),), agent="decision")
+    async with MeteredModel(_TimesOut(), ledger) as model:
+        with pytest.raises(LLMCallFailed):
+            await model.complete(request)
+    (record,) = ledger.records
+    assert record.failed
+    assert (record.prompt_tokens, record.completion_tokens, record.latency_s) == (700, 30, 2.5)
+    assert ledger.totals().calls == 1

@@ -18,6 +18,7 @@ from assistantx.actions import Inform, SendQR, Stop, Wait
 from assistantx.adapters.messenger.base import ChatRef
 from assistantx.dialogue import DialogueTurn
 from assistantx.errors import ModelBehaviorError, PromptError, ReasonerError
+from assistantx.llm.schema import grammar_schema, schema_outline
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
@@ -106,9 +107,12 @@ async def test_each_agent_sends_its_prompt_with_its_schema_and_the_data_rule(
         schema = json.dumps(
             schemas[agent].model_json_schema(), separators=(",", ":"), sort_keys=True
         )
-        assert schema in system
+        # the server enforces the schema: the prompt carries its outline, not the schema too
+        assert schema not in system
+        assert schema_outline(schemas[agent]) in system
         assert request.response_format is not None
         assert request.response_format["json_schema"]["name"] == schemas[agent].__name__
+        assert request.response_format["json_schema"]["schema"] == grammar_schema(schemas[agent])
         assert 'INSTRUCTION ins-7 from lee: "get me a stapler"' in request.last_user_text
     decision_system = scripted_llm.requests[2].system_text
     for rule in ("never resend the same qr code", "before asking anyone to sign", "`produce`"):
@@ -286,7 +290,12 @@ async def test_a_model_that_never_answers_validly_ends_the_instruction_told(
     run = await run_llm(office, scripted_llm, "get me a stapler", llm_output_retries=1)
 
     assert run.stm.trace.outcome == "failed"
-    assert "no valid Decision after 2 attempt(s)" in (run.stm.trace.summary or "")
+    assert run.stm.trace.summary == (
+        "I could not complete this: my language model kept giving answers I could not use, "
+        "so I stopped."
+    )
+    # the technical cause stays in the trace for the operator
+    assert "no valid Decision after 2 attempt(s)" in run.stm.trace.steps[-1].feedback[0]
     assert run.sim.messenger.sent[-1].chat.id == "lee"
     assert len(scripted_llm.requests_for("decision")) == 2
 

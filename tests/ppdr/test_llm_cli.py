@@ -105,9 +105,13 @@ async def test_run_reports_a_server_that_refuses_us(
 ) -> None:
     scripted_llm.api_key = "the-right-key"
     env = _env(ASSISTANTX_LLM_BASE_URL=scripted_llm.base_url, ASSISTANTX_LLM_API_KEY="wrong")
-    code, out, _ = await _run_cli(env, "--as", "lee", "--reasoner", "llm", "--json", "hello")
+    code, out, err = await _run_cli(env, "--as", "lee", "--reasoner", "llm", "--json", "hello")
     assert code == 1
     summary = json.loads(out.strip().splitlines()[-1])
     assert summary["outcome"] == "failed"
-    assert "HTTP 401" in summary["summary"]
+    # the requester reads words; the operator's log has the status and the address
+    assert summary["summary"] == (
+        "I could not complete this: my language model server refused the request, so I stopped."
+    )
+    assert "HTTP 401" in err
     assert scripted_llm.requests[0].status == 401

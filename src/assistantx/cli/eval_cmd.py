@@ -24,7 +24,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = sub.add_parser("eval", help="evaluate a method on a task file", description=METRICS_HELP)
     p.add_argument("--tasks", required=True, help="task file (JSON lines, DESIGN §5)")
     p.add_argument("--method", choices=METHODS, default="ppdr")
-    p.add_argument("--reasoner", choices=["symbolic", "llm"], default=None)
+    p.add_argument("--reasoner", choices=["symbolic", "llm", "hybrid"], default=None)
     p.add_argument("--runs", type=int, default=1)
     p.add_argument("--levels", default="", help="comma-separated, e.g. L1,L2")
     p.add_argument("--limit", type=int, default=None, help="only the first N tasks")

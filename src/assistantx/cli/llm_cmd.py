@@ -1,4 +1,6 @@
 """``assistantx llm check``: does the configured model server answer, and how?
+``assistantx llm probe``: which structured-output modes it accepts, whether every agent's
+schema comes back valid, its context length and tokens per second.
 
 Sends one small structured request to ``ASSISTANTX_LLM_BASE_URL`` with the configured model
 and key, and reports the answer, the latency, the token usage (reported or estimated) and the
@@ -36,6 +38,44 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     check = llm_sub.add_parser("check", help="send one structured request and report")
     check.add_argument("--json", action="store_true", help="print the report as one JSON line")
     check.set_defaults(func=_check)
+    probe = llm_sub.add_parser(
+        "probe", help="try every structured-output mode and every agent schema; report"
+    )
+    probe.add_argument("--json", action="store_true", help="print the report as one JSON line")
+    probe.set_defaults(func=_probe)
+
+
+def _probe(args: argparse.Namespace) -> int:
+    try:
+        settings = Settings()
+    except ValidationError as exc:
+        print(f"error: bad ASSISTANTX_* settings: {exc}")
+        return 2
+    if not settings.llm_enabled:
+        print("error: ASSISTANTX_LLM_BASE_URL is not set; the LLM reasoner is off")
+        return 2
+    from assistantx.llm.probe import probe_server
+    from assistantx.trace import Decision, Percept, Plan, Reflection
+
+    schemas: dict[str, type[BaseModel]] = {
+        "perception": Percept,
+        "planning": Plan,
+        "decision": Decision,
+        "reflection": Reflection,
+    }
+    report = asyncio.run(probe_server(OpenAICompatibleModel.from_settings(settings), schemas))
+    report["context_setting"] = settings.llm_context_tokens
+    if args.json:
+        print(json.dumps(report))
+    else:
+        for key, value in report.items():
+            if isinstance(value, dict):
+                print(f"{key}:")
+                for inner, text in value.items():
+                    print(f"  {inner}: {text}")
+            else:
+                print(f"{key}: {value}")
+    return 0 if report["ok"] else 1
 
 
 def _check(args: argparse.Namespace) -> int:

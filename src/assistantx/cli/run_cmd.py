@@ -33,7 +33,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p.add_argument("--unavailable", default="", help="comma-separated names of absent people")
     p.add_argument(
         "--reasoner",
-        choices=["symbolic", "llm"],
+        choices=["symbolic", "llm", "hybrid"],
         default=None,
         help="default: llm when ASSISTANTX_LLM_BASE_URL is set, else symbolic",
     )

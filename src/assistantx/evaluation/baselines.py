@@ -1,7 +1,8 @@
 """The paper's baselines as Reasoners, each with its own prompts under ``prompts/baselines/``.
 
-They are LLM-only methods. All of them see the same rendered memory (whole long-term memory,
-the instruction, dialogue and previous steps) and answer with a ``Decision``; they differ in
+They are LLM-only methods. All of them see the same rendered memory (the part of long-term
+memory the task touches, as PPDR's agents do, capped to the context; the instruction,
+dialogue and previous steps) and answer with a ``Decision``; they differ in
 how they think and what they carry between steps:
 
 - ``direct``: the next actions, no reasoning asked for.
@@ -26,8 +27,8 @@ from pydantic import BaseModel, Field
 
 from assistantx.errors import ReasonerError
 from assistantx.llm import ChatModel, OpenAICompatibleModel
-from assistantx.memory.render import render_memory
 from assistantx.ppdr.agents import AgentContext
+from assistantx.ppdr.focus import FocusBudget, focus_budget
 from assistantx.ppdr.llm_agents import ModelReasoner, SharedModel, check_actions, schema_text
 from assistantx.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt
 from assistantx.settings import Settings
@@ -90,8 +91,9 @@ class BaselineReasoner(ModelReasoner):
         prompts: dict[str, PromptTemplate],
         *,
         output_retries: int = 2,
+        budget: FocusBudget | None = None,
     ) -> None:
-        super().__init__(shared, output_retries=output_retries)
+        super().__init__(shared, output_retries=output_retries, budget=budget)
         self.name = name
         self.prompts = prompts
         self.lessons: list[str] = []
@@ -109,7 +111,7 @@ class BaselineReasoner(ModelReasoner):
             ctx,
             "mobile_agent_v2_plan",
             Progress,
-            memory=render_memory(ctx.ltm, ctx.stm),
+            memory=self.memory(ctx),
             last_judgement=self._judgement_text(),
             output_schema=schema_text(Progress),
         )
@@ -121,7 +123,7 @@ class BaselineReasoner(ModelReasoner):
 
     async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
         values: dict[str, str] = {
-            "memory": render_memory(ctx.ltm, ctx.stm),
+            "memory": self.memory(ctx),
             "feedback": "\n".join(f"- {f}" for f in ctx.feedback) or "(none)",
             "action_space": ACTION_SPACE,
             "output_schema": schema_text(Decision),
@@ -157,7 +159,7 @@ class BaselineReasoner(ModelReasoner):
                 ctx,
                 "reflexion_reflect",
                 Lesson,
-                memory=render_memory(ctx.ltm, ctx.stm),
+                memory=self.memory(ctx),
                 step=outcome,
                 output_schema=schema_text(Lesson),
             )
@@ -168,7 +170,7 @@ class BaselineReasoner(ModelReasoner):
                 ctx,
                 "mobile_agent_v2_reflect",
                 StepJudgement,
-                memory=render_memory(ctx.ltm, ctx.stm),
+                memory=self.memory(ctx),
                 focus=self.progress.next_focus if self.progress else ctx.stm.text,
                 step=outcome,
                 output_schema=schema_text(StepJudgement),
@@ -213,15 +215,21 @@ class BaselineFactory:
         *,
         prompts_dir: str | Path | None = None,
         output_retries: int = 2,
+        budget: FocusBudget | None = None,
     ) -> None:
         self.name = name
         self.shared = SharedModel(model)
         self.prompts = load_baseline_prompts(name, prompts_dir)
         self.output_retries = output_retries
+        self.budget = budget
 
     def __call__(self) -> BaselineReasoner:
         return BaselineReasoner(
-            self.name, self.shared, self.prompts, output_retries=self.output_retries
+            self.name,
+            self.shared,
+            self.prompts,
+            output_retries=self.output_retries,
+            budget=self.budget,
         )
 
 
@@ -235,7 +243,12 @@ def build_baseline_factory(
                 "(an OpenAI-compatible /v1 URL) and ASSISTANTX_LLM_MODEL"
             )
         model = OpenAICompatibleModel.from_settings(settings)
-    return BaselineFactory(name, model, output_retries=settings.llm_output_retries)
+    return BaselineFactory(
+        name,
+        model,
+        output_retries=settings.llm_output_retries,
+        budget=focus_budget(settings.llm_context_tokens, settings.llm_max_tokens),
+    )
 
 
 ACTION_SPACE = """\

@@ -87,7 +87,12 @@ def office_path(config: EvalConfig) -> Path | None:
 
 
 async def run_episode(
-    task: Task, run: int, office: Office, builder: MethodBuilder, max_steps: int = 30
+    task: Task,
+    run: int,
+    office: Office,
+    builder: MethodBuilder,
+    max_steps: int = 30,
+    wall_s: float | None = 900.0,
 ) -> Episode:
     """One task, one run, a fresh simulated office; never raises for a method's failure."""
     people = relevant_people(office, task.requester, task.goal)
@@ -101,7 +106,7 @@ async def run_episode(
             task.instruction,
             builder.factory(task),
             unavailable=task.unavailable,
-            limits=LoopLimits(max_steps=max_steps),
+            limits=LoopLimits(max_steps=max_steps, wall_s=wall_s),
             reasoner_name=builder.spec.label,
             seed=run,
         )

@@ -38,7 +38,7 @@ class MethodSpec:
     @property
     def needs_llm(self) -> bool:
         return self.method in BASELINES or (
-            self.reasoner == "llm" and self.method not in ("optimal",)
+            self.reasoner in ("llm", "hybrid") and self.method not in ("optimal",)
         )
 
 

@@ -6,7 +6,9 @@
   message tells the requester why), made no false claim (a ``done`` fails) and handed nothing
   to the wrong person.
 - **CR** (completion): milestones reached / milestones in the goal. The ``informed``
-  milestone of an unachievable task counts only when the requester was told ``unachievable``.
+  milestone of an unachievable task counts only when the requester was told ``unachievable``;
+  that of the requester in an achievable task only when they were told ``done``: being told
+  of a failure is no progress toward the goal.
 - **RR** (redundancy): redundant actions / ``optimal_actions``. An action is redundant when it
   repeats an earlier action with no new information in between, is aimed at a person already
   known to be unavailable, or reaches nobody and nothing relevant to the goal.
@@ -119,9 +121,11 @@ def completion(episode: Episode) -> float:
         return 0.0
     reached = 0
     for milestone, holds in zip(episode.goal, episode.milestones, strict=True):
-        name, _ = parse_milestone(milestone)
+        name, args = parse_milestone(milestone)
         if name == "informed" and not episode.achievable:
             holds = holds and outcome(episode) == "unachievable" and requester_told(episode)
+        elif name == "informed" and episode.requester in args:
+            holds = holds and outcome(episode) == "done"
         reached += bool(holds)
     return reached / len(episode.goal)
 

@@ -1,10 +1,12 @@
 """Find the JSON object in what a language model wrote.
 
 Models wrap JSON in code fences, put prose before and after it, think aloud in
-``<think>...</think>`` first, or leave a trailing comma. This module tries, in order: the
-whole text, each fenced block, then every balanced ``{...}`` from left to right, each as
-written and then with trailing commas removed. The first candidate that decodes to an object
-wins. Failures raise ``ValueError`` with a message meant to be shown to the model.
+``<think>...</think>`` first, leave a trailing comma, or write a raw line break inside a
+string. This module tries, in order: the whole text, each fenced block, then each top-level
+balanced ``{...}`` from left to right (never one nested in another), each as written and then
+with trailing commas removed; control characters inside strings are accepted. An object nested in
+a broken one is never taken for the answer: ``{"actions": [{"type": "wait"}`` is an error,
+not a wait. Failures raise ``ValueError`` with a message meant to be shown to the model.
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ def extract_json_object(text: str) -> dict[str, Any]:
     for candidate in _candidates(cleaned):
         for variant in (candidate, remove_trailing_commas(candidate)):
             try:
-                value = json.loads(variant)
+                value = json.loads(variant, strict=False)
             except json.JSONDecodeError as exc:
                 first_error = first_error or exc
                 continue
@@ -50,14 +52,17 @@ def _candidates(text: str) -> Iterator[str]:
     yield text
     for match in _FENCE.finditer(text):
         yield match.group(1).strip()
+    # Top-level objects only: after a balanced candidate the search resumes past its end, and
+    # an unclosed one swallows the rest, so nothing nested inside a candidate is tried alone.
+    start = text.find("{")
     count = 0
-    for start in (i for i, c in enumerate(text) if c == "{"):
+    while start >= 0 and count < _MAX_CANDIDATES:
         end = _balanced_end(text, start)
-        if end is not None:
-            yield text[start : end + 1]
-            count += 1
-            if count >= _MAX_CANDIDATES:
-                return
+        if end is None:
+            return
+        yield text[start : end + 1]
+        count += 1
+        start = text.find("{", end + 1)
 
 
 def _balanced_end(text: str, start: int) -> int | None:

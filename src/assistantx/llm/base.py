@@ -18,6 +18,8 @@ from typing import Any, Literal, Self
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from assistantx.errors import LLMError
+
 Role = Literal["system", "user", "assistant"]
 
 
@@ -82,7 +84,12 @@ class Usage(BaseModel):
         )
 
 
-StructuredMode = Literal["none", "json_schema", "json_object", "prompt"]
+# How a schema reached the server: ``json_schema`` (OpenAI's response_format, vLLM, Ollama),
+# ``json_object_schema`` (llama.cpp's ``{type: json_object, schema}``), ``json_object`` (JSON
+# mode, schema in the prompt) or ``prompt`` (schema in the prompt only). The first two are
+# enforced by the server; the prompt then carries only an outline of the shape.
+StructuredMode = Literal["none", "json_schema", "json_object_schema", "json_object", "prompt"]
+ENFORCED_MODES: frozenset[StructuredMode] = frozenset({"json_schema", "json_object_schema"})
 
 
 class ChatResponse(BaseModel):
@@ -101,6 +108,34 @@ class ChatResponse(BaseModel):
     finish_reason: str | None = None
     retries: int = Field(default=0, ge=0)
     structured_mode: StructuredMode = "none"
+
+
+class LLMCallFailed(LLMError):
+    """A call that got no usable answer (timeout, dropped connection, server error, output
+    cut at ``max_tokens``), with what it cost anyway: the server read the prompt and may have
+    generated tokens before it failed, and the trace must count them.
+
+    ``user_text`` is the cause in words a requester can read (no URL, no status code).
+    """
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        user_text: str,
+        usage: Usage,
+        latency_s: float,
+        model: str,
+        retries: int = 0,
+    ) -> None:
+        super().__init__(message)
+        self.user_text = user_text
+        self.usage = usage
+        self.latency_s = latency_s
+        self.model = model
+        self.retries = retries
+        # filled by structured_call: the earlier (rejected) attempts of the same agent call
+        self.attempts: tuple[object, ...] = ()
 
 
 class ChatModel(ABC):

@@ -1,13 +1,17 @@
 """Typed output from a chat model: parse, validate, feed the error back, retry.
 
-``structured_call`` asks for JSON matching a pydantic model (the schema goes with the
-request, so servers that enforce schemas do), pulls the JSON object out of whatever the model
-wrote, validates it with pydantic and then with the caller's own check (grounding names
-against memory, say). When any of that fails, the model's answer and a user message with the
-error are appended to the conversation and the model tries again, up to ``max_retries``
-times; then ``ModelBehaviorError`` carries the last error and every attempt.
+``structured_call`` asks for JSON matching a pydantic model (its grammar-safe schema goes
+with the request, so servers that enforce schemas do), pulls the JSON object out of whatever
+the model wrote, validates it with pydantic and then with the caller's own check (grounding
+names against memory, say). An answer cut at ``max_tokens`` (``finish_reason: length``) is
+rejected whole, never parsed as a partial answer. When any of that fails the model tries
+again, up to ``max_retries`` times, on the ORIGINAL conversation plus one user message with
+the error and a short excerpt of the rejected answer: repairs never pile up, and a runaway
+answer is not echoed back into the next prompt. Then ``ModelBehaviorError`` carries the last
+error and every attempt.
 
-Transport failures (``LLMError``) are not output problems and propagate at once.
+Transport failures (``LLMError``) are not output problems and propagate at once; an
+``LLMCallFailed`` gets the attempts made before it attached, so their cost is counted.
 """
 
 from __future__ import annotations
@@ -21,13 +25,22 @@ from pydantic import BaseModel, ValidationError
 
 from assistantx.errors import AssistantXError, LLMError, ModelBehaviorError
 from assistantx.llm._json_extract import extract_json_object
-from assistantx.llm.base import ChatModel, ChatRequest, ChatResponse, Message, Usage
+from assistantx.llm.base import (
+    ChatModel,
+    ChatRequest,
+    ChatResponse,
+    LLMCallFailed,
+    Message,
+    Usage,
+)
+from assistantx.llm.schema import grammar_schema
 
 logger = logging.getLogger(__name__)
 
 OutputT = TypeVar("OutputT", bound=BaseModel)
 
 _MAX_INPUT_REPR = 80
+_MAX_ECHO_CHARS = 240
 
 
 @dataclass(frozen=True)
@@ -80,14 +93,35 @@ def describe_validation_error(error: ValidationError) -> str:
     return "; ".join(lines)
 
 
-def feedback_message(error: str) -> Message:
+def feedback_message(error: str, answer: str = "") -> Message:
+    """The repair request: the error, and at most a short excerpt of the rejected answer."""
+    excerpt = answer.strip().replace("\n", " ")
+    if len(excerpt) > _MAX_ECHO_CHARS:
+        excerpt = excerpt[:_MAX_ECHO_CHARS] + "…"
+    shown = f"Your previous answer began: {excerpt}\n" if excerpt else ""
     return Message(
         role="user",
         content=(
-            f"Your previous answer could not be used: {error}\n"
+            f"{shown}It could not be used: {error}\n"
             "Answer again with only the corrected JSON object, no prose and no code fences."
         ),
     )
+
+
+def cut_off_error(response: ChatResponse) -> str | None:
+    """Why an answer stopped at the token limit cannot be used, or None when it did not."""
+    if response.finish_reason != "length":
+        return None
+    return (
+        f"the answer was cut off at the length limit ({response.usage.completion_tokens} "
+        "tokens); give a much shorter JSON object"
+    )
+
+
+def _reject_cut_off(response: ChatResponse) -> None:
+    cut = cut_off_error(response)
+    if cut is not None:
+        raise ValueError(cut)
 
 
 def parse_output(
@@ -120,14 +154,20 @@ async def structured_call(
     if request.json_schema is None:
         request = request.model_copy(
             update={
-                "json_schema": output_type.model_json_schema(),
+                "json_schema": grammar_schema(output_type),
                 "schema_name": request.schema_name or output_type.__name__,
             }
         )
+    original = request
     attempts: list[Attempt] = []
     for attempt_index in range(max_retries + 1):
-        response = await model.complete(request)
         try:
+            response = await model.complete(request)
+        except LLMCallFailed as exc:
+            exc.attempts = tuple(attempts)
+            raise
+        try:
+            _reject_cut_off(response)
             output = parse_output(response.text, output_type, validate)
         except ValidationError as exc:
             error = describe_validation_error(exc)
@@ -146,9 +186,9 @@ async def structured_call(
             max_retries + 1,
             error,
         )
-        request = request.followed_by(
-            Message(role="assistant", content=response.text), feedback_message(error)
-        ).model_copy(update={"attempt": attempt_index + 1})
+        request = original.followed_by(feedback_message(error, response.text)).model_copy(
+            update={"attempt": attempt_index + 1}
+        )
     raise ModelBehaviorError(
         f"{request.agent}: no valid {output_type.__name__} after {len(attempts)} attempt(s); "
         f"last error: {attempts[-1].error}",

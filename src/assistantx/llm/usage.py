@@ -1,10 +1,11 @@
 """Token and latency accounting for LLM calls.
 
 A :class:`UsageLedger` records one :class:`CallRecord` per call to the model (every repair
-attempt is its own call) and sums them per agent, per step of an instruction and per
-instruction. It serializes to plain JSON for the trace and the evaluator's report, and loads
-back. :class:`MeteredModel` wraps any ``ChatModel`` and records every call it forwards, so
-agents need not do the bookkeeping themselves.
+attempt is its own call, and a call that failed is recorded with what it cost) and sums
+them per agent, per step of an instruction and per instruction. It serializes to plain JSON
+for the trace and the evaluator's report, and loads back. :class:`MeteredModel` wraps any
+``ChatModel`` and records every call it forwards, so agents need not do the bookkeeping
+themselves.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from assistantx.llm.base import ChatModel, ChatRequest, ChatResponse
+from assistantx.llm.base import ChatModel, ChatRequest, ChatResponse, LLMCallFailed
 
 
 class CallRecord(BaseModel):
@@ -33,6 +34,7 @@ class CallRecord(BaseModel):
     retries: int = Field(default=0, ge=0, description="transport retries behind this call")
     attempt: int = Field(default=0, ge=0, description="0, or the n-th repair of bad output")
     estimated: bool = Field(default=False, description="token counts estimated, not reported")
+    failed: bool = Field(default=False, description="no usable answer (timeout, error)")
 
 
 class UsageTotals(BaseModel):
@@ -89,6 +91,24 @@ class UsageLedger:
             retries=response.retries,
             attempt=request.attempt,
             estimated=response.usage.estimated,
+        )
+        self._records.append(entry)
+        return entry
+
+    def record_failure(self, request: ChatRequest, error: LLMCallFailed) -> CallRecord:
+        """Add a call that failed, with what it cost before it did."""
+        entry = CallRecord(
+            agent=request.agent,
+            instruction_id=request.instruction_id,
+            step=request.step,
+            model=error.model,
+            prompt_tokens=error.usage.prompt_tokens,
+            completion_tokens=error.usage.completion_tokens,
+            latency_s=error.latency_s,
+            retries=error.retries,
+            attempt=request.attempt,
+            estimated=error.usage.estimated,
+            failed=True,
         )
         self._records.append(entry)
         return entry
@@ -191,6 +211,10 @@ class MeteredModel(ChatModel):
         await self.inner.stop()
 
     async def _complete(self, request: ChatRequest) -> ChatResponse:
-        response = await self.inner.complete(request)
+        try:
+            response = await self.inner.complete(request)
+        except LLMCallFailed as exc:
+            self.ledger.record_failure(request, exc)
+            raise
         self.ledger.record(request, response)
         return response

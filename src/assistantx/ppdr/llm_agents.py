@@ -26,7 +26,6 @@ without ``start()`` starts itself on its first call (and then holds the model un
 from __future__ import annotations
 
 import asyncio
-import json
 import logging
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -46,11 +45,14 @@ from assistantx.llm import (
     Attempt,
     ChatModel,
     ChatRequest,
+    ChatResponse,
     Message,
     OpenAICompatibleModel,
     structured_call,
 )
-from assistantx.memory.render import quote, render_memory
+from assistantx.llm.base import LLMCallFailed
+from assistantx.llm.schema import schema_outline
+from assistantx.memory.render import quote
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import (
@@ -61,6 +63,13 @@ from assistantx.memory.updates import (
 )
 from assistantx.office import Office
 from assistantx.ppdr.agents import AgentContext, Reasoner
+from assistantx.ppdr.focus import (
+    FocusBudget,
+    focus_budget,
+    merge_focus,
+    render_focused,
+    task_focus,
+)
 from assistantx.prompts import PromptTemplate, load_prompts
 from assistantx.settings import Settings
 from assistantx.trace import (
@@ -101,8 +110,11 @@ class AgentPrompts:
 
 
 def schema_text(model: type[BaseModel]) -> str:
-    """A pydantic model's JSON schema as compact text for a prompt."""
-    return json.dumps(model.model_json_schema(), separators=(",", ":"), sort_keys=True)
+    """The shape of a pydantic model's output for a prompt: a compact outline, not the full
+    schema. The schema itself goes with the request; the client pastes it into the prompt only
+    when the server cannot enforce it, so a prompt never carries it twice (it was 4.7k of
+    Decision's 10.2k-character system prompt)."""
+    return schema_outline(model)
 
 
 # -- the shared model ------------------------------------------------------------------------
@@ -296,12 +308,25 @@ class ModelReasoner(Reasoner):
     """A reasoner whose agents are structured calls to a shared chat model, accounted in the
     trace. Holds the shared model from ``start`` to ``stop`` (both idempotent)."""
 
-    def __init__(self, shared: SharedModel, *, output_retries: int = 2) -> None:
+    def __init__(
+        self,
+        shared: SharedModel,
+        *,
+        output_retries: int = 2,
+        budget: FocusBudget | None = None,
+    ) -> None:
         if output_retries < 0:
             raise ValueError("output_retries must be >= 0")
         self.shared = shared
         self.output_retries = output_retries
+        self.budget = budget or focus_budget(8192, 1024)
         self._holding = False
+
+    def memory(self, ctx: AgentContext, percept: Percept | None = None) -> str:
+        """The memory an agent sees: the task's focus (merged with the model's percept),
+        capped to fit the context; never the whole office."""
+        focus = merge_focus(percept, task_focus(ctx.ltm, ctx.stm))
+        return render_focused(ctx.ltm, ctx.stm, focus, self.budget)
 
     async def start(self) -> None:
         if not self._holding:
@@ -341,6 +366,21 @@ class ModelReasoner(Reasoner):
             if attempts:
                 ctx.record(agent_call(agent, attempts))
             raise
+        except LLMCallFailed as exc:
+            # The server read the prompt (and maybe generated) before failing: count it.
+            earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
+            failed = Attempt(
+                response=ChatResponse(
+                    text="",
+                    usage=exc.usage,
+                    latency_s=exc.latency_s,
+                    model=exc.model,
+                    retries=exc.retries,
+                ),
+                error=str(exc),
+            )
+            ctx.record(agent_call(agent, [*earlier, failed]))
+            raise
         ctx.record(agent_call(agent, result.attempts))
         return result.output
 
@@ -354,9 +394,14 @@ class LLMReasoner(ModelReasoner):
     name = "llm"
 
     def __init__(
-        self, shared: SharedModel, prompts: AgentPrompts, *, output_retries: int = 2
+        self,
+        shared: SharedModel,
+        prompts: AgentPrompts,
+        *,
+        output_retries: int = 2,
+        budget: FocusBudget | None = None,
     ) -> None:
-        super().__init__(shared, output_retries=output_retries)
+        super().__init__(shared, output_retries=output_retries, budget=budget)
         self.prompts = prompts
         self._schemas = {
             "perception": schema_text(Percept),
@@ -365,38 +410,29 @@ class LLMReasoner(ModelReasoner):
             "reflection": schema_text(Reflection),
         }
 
-    # -- the four agents -----------------------------------------------------------------
-    async def perceive(self, ctx: AgentContext) -> Percept:
-        messages = self.prompts.perception.render(
-            memory=render_memory(ctx.ltm, ctx.stm),
+    # -- the four prompts (public: the prompt-size bench and the real-server tests use them) --
+    def perception_messages(self, ctx: AgentContext) -> list[Message]:
+        return self.prompts.perception.render(
+            memory=self.memory(ctx),
             step=ctx.step,
             previous_reflection=_reflection_text(ctx.last_reflection),
             feedback=_feedback_text(ctx.feedback),
             output_schema=self._schemas["perception"],
         )
 
-        def check(percept: Percept) -> None:
-            focus_ids(percept, ctx.resolver, ctx.stm.requester)
-
-        percept = await self._ask(
-            ctx, "perception", messages, Percept, check, schema_name="Percept"
-        )
-        return focus_ids(percept, ctx.resolver, ctx.stm.requester)
-
-    async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
-        messages = self.prompts.planning.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
+    def planning_messages(self, ctx: AgentContext, percept: Percept) -> list[Message]:
+        return self.prompts.planning.render(
+            memory=self.memory(ctx, percept),
             percept=_json(percept, "{}"),
             previous_plan=_json(_previous_plan(ctx.stm), "(none: this is the first step)"),
             previous_reflection=_reflection_text(ctx.last_reflection),
             feedback=_feedback_text(ctx.feedback),
             output_schema=self._schemas["planning"],
         )
-        return await self._ask(ctx, "planning", messages, Plan, None, schema_name="Plan")
 
-    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
-        messages = self.prompts.decision.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
+    def decision_messages(self, ctx: AgentContext, percept: Percept, plan: Plan) -> list[Message]:
+        return self.prompts.decision.render(
+            memory=self.memory(ctx, percept),
             percept=_json(percept, "{}"),
             plan=_json(plan, "{}"),
             previous_reflection=_reflection_text(ctx.last_reflection),
@@ -404,9 +440,44 @@ class LLMReasoner(ModelReasoner):
             output_schema=self._schemas["decision"],
         )
 
+    def reflection_messages(
+        self,
+        ctx: AgentContext,
+        percept: Percept,
+        plan: Plan,
+        decision: Decision,
+        results: Sequence[ActionResult],
+        observed: Observation,
+    ) -> list[Message]:
+        return self.prompts.reflection.render(
+            memory=self.memory(ctx, percept),
+            percept=_json(percept, "{}"),
+            plan=_json(plan, "{}"),
+            actions=_actions_text(decision),
+            results=_results_text(results),
+            observed=_observed_text(observed),
+            output_schema=self._schemas["reflection"],
+        )
+
+    # -- the four agents -----------------------------------------------------------------
+    async def perceive(self, ctx: AgentContext) -> Percept:
+        def check(percept: Percept) -> None:
+            focus_ids(percept, ctx.resolver, ctx.stm.requester)
+
+        percept = await self._ask(
+            ctx, "perception", self.perception_messages(ctx), Percept, check, schema_name="Percept"
+        )
+        return focus_ids(percept, ctx.resolver, ctx.stm.requester)
+
+    async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
+        messages = self.planning_messages(ctx, percept)
+        return await self._ask(ctx, "planning", messages, Plan, None, schema_name="Plan")
+
+    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
         def check(decision: Decision) -> None:
             check_actions(decision.actions, ctx.resolver, ctx.stm)
 
+        messages = self.decision_messages(ctx, percept, plan)
         return await self._ask(ctx, "decision", messages, Decision, check, schema_name="Decision")
 
     async def reflect(
@@ -418,19 +489,10 @@ class LLMReasoner(ModelReasoner):
         results: list[ActionResult],
         observed: Observation,
     ) -> Reflection:
-        messages = self.prompts.reflection.render(
-            memory=render_memory(ctx.ltm, ctx.stm, percept),
-            percept=_json(percept, "{}"),
-            plan=_json(plan, "{}"),
-            actions=_actions_text(decision),
-            results=_results_text(results),
-            observed=_observed_text(observed),
-            output_schema=self._schemas["reflection"],
-        )
-
         def check(reflection: Reflection) -> None:
             ground_updates(reflection.updates, ctx.resolver)
 
+        messages = self.reflection_messages(ctx, percept, plan, decision, results, observed)
         reflection = await self._ask(
             ctx, "reflection", messages, Reflection, check, schema_name="Reflection"
         )
@@ -447,7 +509,8 @@ def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
         prompt_tokens=sum(a.response.usage.prompt_tokens for a in attempts),
         completion_tokens=sum(a.response.usage.completion_tokens for a in attempts),
         latency_s=sum(a.response.latency_s for a in attempts),
-        attempts=len(attempts),
+        # every request the server saw: repairs and transport retries included
+        attempts=sum(1 + a.response.retries for a in attempts),
         estimated=any(a.response.usage.estimated for a in attempts),
     )
 
@@ -458,17 +521,27 @@ def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
 class LLMReasonerFactory:
     """Makes one :class:`LLMReasoner` per instruction, all sharing one model and one prompt set."""
 
-    def __init__(self, model: ChatModel, prompts: AgentPrompts, *, output_retries: int) -> None:
+    def __init__(
+        self,
+        model: ChatModel,
+        prompts: AgentPrompts,
+        *,
+        output_retries: int,
+        budget: FocusBudget | None = None,
+    ) -> None:
         self.shared = SharedModel(model)
         self.prompts = prompts
         self.output_retries = output_retries
+        self.budget = budget
 
     @property
     def model(self) -> ChatModel:
         return self.shared.model
 
     def __call__(self) -> LLMReasoner:
-        return LLMReasoner(self.shared, self.prompts, output_retries=self.output_retries)
+        return LLMReasoner(
+            self.shared, self.prompts, output_retries=self.output_retries, budget=self.budget
+        )
 
 
 def build_factory(
@@ -497,7 +570,12 @@ def build_factory(
         except ValueError as exc:
             raise ReasonerError(f"cannot use the LLM at {settings.llm_base_url}: {exc}") from exc
     logger.info("LLM reasoner: %r, output retries %d", model, settings.llm_output_retries)
-    return LLMReasonerFactory(model, prompts, output_retries=settings.llm_output_retries)
+    return LLMReasonerFactory(
+        model,
+        prompts,
+        output_retries=settings.llm_output_retries,
+        budget=focus_budget(settings.llm_context_tokens, settings.llm_max_tokens),
+    )
 
 
 __all__ = [

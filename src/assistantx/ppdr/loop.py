@@ -11,7 +11,16 @@ until Stop, the step limit or the deadline. Fixes what the research code got wro
   are applied to the graph with their evidence;
 - an action that fails again for the same reason ends the instruction (failures.py) instead
   of a retry loop, and the requester is told where the robot and the locker's contents are;
-- the requester is always told the outcome, also on failure, step limit, deadline or cancel.
+- the requester is always told the outcome, also on failure, step limit, deadline or cancel,
+  in plain words (a model server's failure is described, never its URL or a stack);
+- ``deadline_s`` runs on the office clock (simulated time in the simulator), ``wall_s`` on the
+  wall clock: a slow model cannot hold an instruction for longer than that;
+- every agent call's cost reaches the trace, also when the agent then raised;
+- a ``wait`` with nothing new since the last one is refused like any repeated action (a
+  different reason or timeout does not make it new);
+- a QR code goes to someone other than the requester only after they answered in this
+  instruction's dialogue: nobody is handed a locker code for a hand-over they were never
+  asked about and did not answer (a model once sent an absent colleague a deposit code).
 """
 
 from __future__ import annotations
@@ -20,13 +29,14 @@ import asyncio
 import logging
 from dataclasses import dataclass
 
-from assistantx.actions import Action, Move, Outcome, SendQR, Stop, WaitInPlace
+from assistantx.actions import Action, Inquire, Move, Outcome, SendQR, Stop, Wait, WaitInPlace
 from assistantx.errors import (
     AssistantXError,
     GroundingError,
     LLMError,
     LockError,
     MessengerError,
+    ModelBehaviorError,
     ReasonerError,
     RobotError,
 )
@@ -44,7 +54,7 @@ from assistantx.ppdr.agents import AgentContext, Reasoner
 from assistantx.ppdr.events import EventKind, EventSink, TraceEvent
 from assistantx.ppdr.failures import FailureMemory, failure_summary
 from assistantx.ppdr.lease import BodyLease
-from assistantx.trace import ActionResult, Observation, TraceStep
+from assistantx.trace import ActionResult, AgentCall, Observation, TraceStep
 
 logger = logging.getLogger(__name__)
 
@@ -54,7 +64,21 @@ _BODY_ACTIONS = (Move, WaitInPlace, SendQR)
 @dataclass(frozen=True)
 class LoopLimits:
     max_steps: int = 30
-    deadline_s: float = 3600.0
+    deadline_s: float = 3600.0  # office clock (simulated time in the simulator)
+    wall_s: float | None = 900.0  # wall clock; None: unbounded
+
+
+def plain_failure(exc: AssistantXError) -> str:
+    """What the requester reads when an instruction fails on an error: words, no URL."""
+    if isinstance(exc, LLMError):
+        cause = getattr(exc, "user_text", None) or "my language model server failed"
+        return f"I could not complete this: {cause}, so I stopped."
+    if isinstance(exc, ModelBehaviorError):
+        return (
+            "I could not complete this: my language model kept giving answers I could not "
+            "use, so I stopped."
+        )
+    return f"I could not complete this: {_in_words(exc)}."
 
 
 class InstructionRunner:
@@ -111,14 +135,17 @@ class InstructionRunner:
                 reasoner=trace.reasoner,
             )
         try:
-            await self._steps(stm)
+            async with asyncio.timeout(self.limits.wall_s):
+                await self._steps(stm)
         except asyncio.CancelledError:
             await asyncio.shield(self._end(stm, "failed", "The instruction was cancelled."))
             raise
+        except TimeoutError:
+            logger.warning("instruction %s ran past its wall-clock bound", stm.instruction_id)
+            await self._end(stm, "failed", "I ran out of time for this task.")
         except AssistantXError as exc:
             logger.warning("instruction %s failed: %s", stm.instruction_id, exc)
-            told = f"I could not complete this: {_in_words(exc)}."
-            await self._end(stm, "failed", told, detail=str(exc))
+            await self._end(stm, "failed", plain_failure(exc), detail=str(exc))
         except Exception as exc:
             logger.exception("instruction %s crashed", stm.instruction_id)
             await self._end(stm, "failed", f"I hit an internal error ({type(exc).__name__}).")
@@ -127,10 +154,10 @@ class InstructionRunner:
         return stm
 
     async def _end(
-        self, stm: ShortTermMemory, outcome: Outcome, summary: str, detail: str | None = None
+        self, stm: ShortTermMemory, outcome: Outcome, summary: str, *, detail: str | None = None
     ) -> None:
         try:
-            await self._finish(stm, outcome, summary, detail)
+            await self._finish(stm, outcome, summary, detail=detail)
             await self._emit(
                 stm, "instruction_ended", None, outcome=stm.trace.outcome, summary=stm.trace.summary
             )
@@ -176,17 +203,19 @@ class InstructionRunner:
             last_reflection=last,
         )
 
-        step.percept = await self.reasoner.perceive(ctx)
-        await self._emit(stm, "percept", index, percept=step.percept.model_dump(mode="json"))
-        step.plan = await self.reasoner.plan(ctx, step.percept)
-        await self._emit(stm, "plan", index, plan=step.plan.model_dump(mode="json"))
-        step.decision = await self.reasoner.decide(ctx, step.percept, step.plan)
-        await self._emit(stm, "decision", index, decision=step.decision.model_dump(mode="json"))
+        try:
+            step.percept = await self.reasoner.perceive(ctx)
+            await self._emit(stm, "percept", index, percept=step.percept.model_dump(mode="json"))
+            step.plan = await self.reasoner.plan(ctx, step.percept)
+            await self._emit(stm, "plan", index, plan=step.plan.model_dump(mode="json"))
+            step.decision = await self.reasoner.decide(ctx, step.percept, step.plan)
+            await self._emit(stm, "decision", index, decision=step.decision.model_dump(mode="json"))
+        finally:
+            # the calls of an agent that raised cost as much as the others: count them
+            self._account(stm, step, ctx.calls)
+        accounted = len(ctx.calls)
 
         new_feedback = await self._execute(stm, step, step.decision.actions)
-        for call in ctx.calls:
-            step.calls.append(call)
-            stm.trace.usage.add(call)
 
         step.observed = Observation(
             messages=[t for t in stm.dialogue[dialogue_before:] if t.direction == "in"],
@@ -200,13 +229,12 @@ class InstructionRunner:
         await self._emit(stm, "observation", index, observed=step.observed.model_dump(mode="json"))
 
         if stm.trace.outcome is None:
-            calls_before = len(ctx.calls)
-            step.reflection = await self.reasoner.reflect(
-                ctx, step.percept, step.plan, step.decision, step.results, step.observed
-            )
-            for call in ctx.calls[calls_before:]:
-                step.calls.append(call)
-                stm.trace.usage.add(call)
+            try:
+                step.reflection = await self.reasoner.reflect(
+                    ctx, step.percept, step.plan, step.decision, step.results, step.observed
+                )
+            finally:
+                self._account(stm, step, ctx.calls[accounted:])
             await self._emit(
                 stm, "reflection", index, reflection=step.reflection.model_dump(mode="json")
             )
@@ -222,6 +250,12 @@ class InstructionRunner:
         if new_feedback:
             await self._emit(stm, "feedback", index, feedback=new_feedback)
         return new_feedback
+
+    @staticmethod
+    def _account(stm: ShortTermMemory, step: TraceStep, calls: list[AgentCall]) -> None:
+        for call in calls:
+            step.calls.append(call)
+            stm.trace.usage.add(call)
 
     async def _execute(
         self, stm: ShortTermMemory, step: TraceStep, actions: list[Action]
@@ -240,8 +274,21 @@ class InstructionRunner:
                     result=step.results[-1].model_dump(mode="json"),
                 )
                 break
+            unagreed = self._unagreed_handover(stm, action)
+            if unagreed is not None:
+                feedback.append(f"Action {action.signature()} was refused: {unagreed}")
+                step.results.append(self._refused(action, unagreed))
+                await self._emit(
+                    stm,
+                    "action_result",
+                    step.index,
+                    result=step.results[-1].model_dump(mode="json"),
+                )
+                break
             signature = action.signature()
-            if self._last_seen.get(signature) == self._info and not isinstance(action, Stop):
+            # Waits differ only in wording; what matters is that nothing new came in since.
+            seen_key = "wait()" if isinstance(action, Wait) else signature
+            if self._last_seen.get(seen_key) == self._info and not isinstance(action, Stop):
                 reason = (
                     f"{signature} repeats an earlier action with no new information in "
                     "between; do something else"
@@ -258,10 +305,15 @@ class InstructionRunner:
             if isinstance(action, _BODY_ACTIONS):
                 await self._take_body(stm, step)
             result = await self.executor.execute(stm, action, key=f"s{step.index}a{n}")
-            self._last_seen[signature] = self._info
+            self._last_seen[seen_key] = self._info
             if not result.ok:
                 self._info += 1  # a failure or a timeout is news
                 feedback.append(f"{signature} did not succeed: {result.observation}")
+            if isinstance(action, Wait):
+                # a wait's own timeout is no reason to wait again: only news from elsewhere is
+                self._last_seen[seen_key] = self._info
+            elif isinstance(action, Inquire) and result.ok:
+                self._last_seen.pop("wait()", None)  # a new question is worth waiting for
             step.results.append(result)
             await self._emit(
                 stm, "action_result", step.index, result=result.model_dump(mode="json")
@@ -277,6 +329,19 @@ class InstructionRunner:
             if not result.ok:
                 break  # the rest of the decision assumed this one worked
         return feedback
+
+    @staticmethod
+    def _unagreed_handover(stm: ShortTermMemory, action: Action) -> str | None:
+        """Why a QR code may not go out yet, or None when it may."""
+        if not isinstance(action, SendQR) or action.contact == stm.requester:
+            return None
+        answered = any(t.direction == "in" and t.person == action.contact for t in stm.dialogue)
+        if answered:
+            return None
+        return (
+            f"{action.contact} has not answered in this conversation, so they have not agreed "
+            "to this hand-over; ask them (inquire, then wait) and send the code after they reply"
+        )
 
     async def _take_body(self, stm: ShortTermMemory, step: TraceStep) -> None:
         if self.lease.holds(stm.instruction_id):
@@ -344,10 +409,10 @@ class InstructionRunner:
         trace.ended_at = self._now()
 
     async def _finish(
-        self, stm: ShortTermMemory, outcome: Outcome, summary: str, detail: str | None = None
+        self, stm: ShortTermMemory, outcome: Outcome, summary: str, *, detail: str | None = None
     ) -> None:
-        """End without the reasoner's Stop, telling the requester ``summary`` (never raises);
-        ``detail`` (an error's own words, with ids and addresses) goes to the trace only."""
+        """End without the reasoner's Stop, telling the requester (never raises); ``detail``
+        (the technical cause, for the operator) goes in the final step's feedback."""
         if stm.trace.outcome is None:
             stop = Stop(outcome=outcome, summary=summary)
             try:
@@ -358,6 +423,7 @@ class InstructionRunner:
                         started_at=result.started_at,
                         ended_at=result.ended_at,
                         results=[result],
+                        feedback=[detail] if detail else [],
                     )
                 )
             except Exception:

@@ -1,0 +1,180 @@
+"""The paper's comparison in one command, against any OpenAI-compatible server.
+
+Runs PPDR with the LLM agents, the hybrid reasoner, the three ablations and the five
+baselines on a few tasks of each level (``--per-level``, default 2, so 6 tasks) in the
+simulated office, scores them with the evaluator's metrics and writes the table in the paper's
+layout: SR / CR / RR / CTA / RTA per level, plus LLM calls, tokens and model latency per task.
+
+    python bench/paper_table.py --base-url http://127.0.0.1:8080/v1 --model NAME \\
+        [--tasks dataset/tasks.jsonl] [--per-level 2] [--max-steps 8] [--wall-s 300] \\
+        [--max-tokens 512] [--context 8192] [--methods ppdr,hybrid,...] [--out DIR]
+
+Writes DIR/paper_table.md and DIR/paper_table.json (default DIR: results/paper_table); the
+last stdout line is one JSON object with every method's figures.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import time
+from pathlib import Path
+from typing import Any
+
+from assistantx.dataset.tasks import Task, load_tasks
+from assistantx.evaluation.ablations import ABLATIONS
+from assistantx.evaluation.baselines import BASELINES
+from assistantx.evaluation.episode import Episode
+from assistantx.evaluation.harness import run_episode
+from assistantx.evaluation.methods import MethodBuilder, MethodSpec
+from assistantx.evaluation.report import summarize
+from assistantx.office import load_office
+from assistantx.settings import Settings
+
+REPO = Path(__file__).resolve().parents[1]
+METHODS: dict[str, MethodSpec] = {
+    "ppdr": MethodSpec("ppdr", "llm"),
+    "hybrid": MethodSpec("ppdr", "hybrid"),
+    **{name: MethodSpec(name, "llm") for name in ABLATIONS},
+    **{name: MethodSpec(name) for name in BASELINES},
+}
+LEVELS = ("L1", "L2", "L3")
+
+
+def pick_tasks(tasks: list[Task], per_level: int) -> list[Task]:
+    """The first ``per_level`` tasks of each level, each from a different base instruction."""
+    picked: list[Task] = []
+    for level in LEVELS:
+        bases: set[str] = set()
+        for task in tasks:
+            if task.level == level and task.base not in bases and len(bases) < per_level:
+                bases.add(task.base)
+                picked.append(task)
+    return picked
+
+
+def run_method(
+    name: str, tasks: list[Task], settings: Settings, args: argparse.Namespace
+) -> list[Episode]:
+    office = load_office()
+    builder = MethodBuilder(METHODS[name], office, settings)
+    episodes = []
+    for task in tasks:
+        started = time.perf_counter()
+        episode = asyncio.run(
+            run_episode(task, 0, office, builder, args.max_steps, wall_s=args.wall_s)
+        )
+        usage = episode.trace.usage
+        print(
+            f"{name:>20} {task.id} {task.level}: {episode.trace.outcome}, "
+            f"{usage.llm_calls} calls, {usage.prompt_tokens}+{usage.completion_tokens} tokens, "
+            f"{time.perf_counter() - started:.0f} s",
+            flush=True,
+        )
+        episodes.append(episode.model_copy(update={"method": name}))
+    return episodes
+
+
+def _pct(cell: dict[str, Any] | None) -> str:
+    value = cell.get("mean") if cell else None
+    return "–" if value is None else f"{100 * value:.0f}"
+
+
+def _num(cell: dict[str, Any] | None, digits: int = 0) -> str:
+    value = cell.get("mean") if cell else None
+    return "–" if value is None else f"{value:.{digits}f}"
+
+
+def table(summaries: dict[str, dict[str, Any]], model: str, n_tasks: int) -> str:
+    head = ["method"]
+    for level in LEVELS:
+        head += [f"{level} {m}" for m in ("SR", "CR", "RR", "CTA", "RTA")]
+    head += ["calls/task", "tokens/task", "model s/task"]
+    lines = [
+        f"Model: `{model}`; {n_tasks} tasks (per level: SR, CR, RR, CTA, RTA in %; "
+        "calls, prompt+completion tokens and model latency per task over all levels).",
+        "",
+        "| " + " | ".join(head) + " |",
+        "|" + "---|" * len(head),
+    ]
+    for name, summary in summaries.items():
+        levels = summary["levels"]
+        row = [name]
+        for level in LEVELS:
+            entry = levels.get(level, {})
+            row += [_pct(entry.get(m)) for m in ("sr", "cr", "rr", "cta", "rta")]
+        every = levels.get("all", {})
+        prompt = (every.get("prompt_tokens") or {}).get("mean") or 0.0
+        completion = (every.get("completion_tokens") or {}).get("mean") or 0.0
+        row += [
+            _num(every.get("llm_calls"), 1),
+            f"{prompt + completion:.0f}",
+            _num(every.get("model_s"), 1),
+        ]
+        lines.append("| " + " | ".join(row) + " |")
+    return "\n".join(lines)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--base-url", required=True, help="OpenAI-compatible /v1 URL")
+    parser.add_argument("--model", required=True)
+    parser.add_argument("--api-key", default=None)
+    parser.add_argument("--tasks", type=Path, default=REPO / "dataset" / "tasks.jsonl")
+    parser.add_argument("--per-level", type=int, default=2)
+    parser.add_argument("--methods", default=",".join(METHODS))
+    parser.add_argument("--max-steps", type=int, default=8)
+    parser.add_argument("--wall-s", type=float, default=300.0, help="wall bound per task")
+    parser.add_argument("--max-tokens", type=int, default=512)
+    parser.add_argument("--context", type=int, default=8192)
+    parser.add_argument("--call-budget-s", type=float, default=120.0)
+    parser.add_argument("--out", type=Path, default=REPO / "results" / "paper_table")
+    args = parser.parse_args()
+    unknown = [m for m in args.methods.split(",") if m not in METHODS]
+    if unknown:
+        parser.error(f"unknown method(s) {unknown}; choose from {', '.join(METHODS)}")
+    settings = Settings(
+        llm_base_url=args.base_url,
+        llm_model=args.model,
+        llm_api_key=args.api_key,
+        llm_max_tokens=args.max_tokens,
+        llm_context_tokens=args.context,
+        llm_call_budget_s=args.call_budget_s,
+        llm_timeout_s=args.call_budget_s,
+    )
+    tasks = pick_tasks(load_tasks(args.tasks, load_office()), args.per_level)
+    summaries: dict[str, dict[str, Any]] = {}
+    for name in args.methods.split(","):
+        episodes = run_method(name, tasks, settings, args)
+        summary = summarize(episodes, name)
+        model_s = sum(e.trace.usage.latency_s for e in episodes) / max(1, len(episodes))
+        summary["levels"].setdefault("all", {})["model_s"] = {"mean": model_s}
+        summaries[name] = summary
+    text = table(summaries, args.model, len(tasks))
+    args.out.mkdir(parents=True, exist_ok=True)
+    (args.out / "paper_table.md").write_text(text + "\n", encoding="utf-8")
+    (args.out / "paper_table.json").write_text(json.dumps(summaries, indent=1), encoding="utf-8")
+    print(text)
+    print(
+        json.dumps(
+            {
+                "model": args.model,
+                "tasks": [t.id for t in tasks],
+                "methods": {
+                    name: {
+                        level: {
+                            k: (v.get("mean") if isinstance(v, dict) else v)
+                            for k, v in entry.items()
+                        }
+                        for level, entry in s["levels"].items()
+                    }
+                    for name, s in summaries.items()
+                },
+            }
+        )
+    )
+
+
+if __name__ == "__main__":
+    main()
