@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from assistantx.adapters.lock.base import WORK_PURPOSES
 from assistantx.office import Operation, OperationShape, Ownership
 from assistantx.sim.understanding import (
     is_question,
@@ -150,7 +151,7 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
         return f"I don't have {thing}."
     if purpose == "collect":
         return None if where == LOCKER else missing
-    if purpose in ("sign", "seal", "copy", "heat"):
+    if purpose in WORK_PURPOSES:
         if where != LOCKER:
             return missing
         if purpose == "seal" and not world.owns(person, SEAL_TOOL):

@@ -19,11 +19,12 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.adapters.lock.base import Purpose
+from assistantx.english import wording
 from assistantx.memory.graph import LongTermMemory
 from assistantx.office import Office
 from assistantx.symbolic.evidence import Evidence
 from assistantx.symbolic.roles import Role, RoleKind, Roles, RoleState
-from assistantx.task_schema import Task, TaskFrame, operation_of
+from assistantx.task_schema import Task, TaskFrame, kind_shape, operation_of
 from assistantx.trace import Plan, SubGoal
 from assistantx.wording import PURPOSE_TEXT, item_phrase, item_type_name, person_name
 
@@ -430,28 +431,17 @@ def _role_key(phase: Phase) -> str | None:
     return phase.target_role.key
 
 
-# What a role's person is asked to do, in words (role kinds are internal tokens).
-_ROLE_VERBS: dict[str, str] = {
-    "lend": "lend {a}",
-    "give": "hand over {the}",
-    "keep": "take {the} out for the robot",
-    "receive": "receive the delivery",
-    "print": "print {the}",
-    "copy": "copy {the}",
-    "sign": "sign {the}",
-    "seal": "stamp {the} with the seal",
-    "produce": "make {a}",
-    "heat": "heat {the}",
-    "send_file": "send {the}",
-}
-
-
 def role_text(role: Role, office: Office) -> str:
     """What the role's person is asked to do, in words: "lend a stapler"."""
     thing = item_type_name(office, role.item_type) if role.item_type else "it"
     article = "" if thing == "it" else "a "
     the = thing if thing == "it" else f"the {thing}"
-    return _ROLE_VERBS.get(role.kind, "help").format(a=f"{article}{thing}", the=the)
+    shape = kind_shape(role.kind)
+    if shape is not None and shape != "make":  # the office's own name for its operation
+        op = role.operation or next((o.id for o in office.with_shape(shape)), None)
+        verb = office.operation(op).name if op else role.kind
+        return f"{verb} {the}"
+    return wording("role_wording").get(role.kind, "help").format(a=f"{article}{thing}", the=the)
 
 
 def describe(task: Task, office: Office, you: str | None = None) -> str:
