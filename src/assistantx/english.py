@@ -31,7 +31,7 @@ def entries_of() -> dict[str, tuple[str, ...]]:
     found: dict[str, tuple[str, ...]] = {}
     for key, listed in _raw().items():
         if isinstance(listed, dict):
-            continue  # a wording table (``wording``)
+            continue  # a table (``wording``, ``word_table``)
         if not isinstance(listed, list):
             raise TypeError(f"{WORDS_FILE}: {key}: expected a list")
         for entry in listed:
@@ -66,3 +66,14 @@ def words(key: str) -> frozenset[str]:
 def kind_words(kind: str) -> tuple[str, ...]:
     """The words that ask for a person-to-person task kind of the schema ("sign", "seal")."""
     return entries(f"kind_{kind}")
+
+
+@functools.cache
+def word_table(key: str) -> dict[str, frozenset[str]]:
+    """A table of word lists of the file: token (a cue's task kind) → its words."""
+    table = _raw().get(key)
+    if not isinstance(table, dict) or not all(
+        isinstance(v, list) and all(isinstance(w, str) for w in v) for v in table.values()
+    ):
+        raise KeyError(f"{WORDS_FILE}: no word table {key!r} (a mapping of string lists)")
+    return {str(k): frozenset(w for e in v for w in e.split()) for k, v in table.items()}

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from assistantx import english
 from assistantx.memory.names import normalize
 from assistantx.office import Office, OperationShape
 from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token, inflections
@@ -35,52 +36,16 @@ _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 __all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
 
-_BREAK_WORDS = frozenset({"then", "also", "plus", "afterwards", "additionally"})
-_JOIN_WORDS = frozenset({"and", "but"})
-_SKIP_AFTER_JOIN = frozenset(
-    {
-        "also",
-        "then",
-        "please",
-        "could",
-        "can",
-        "would",
-        "will",
-        "you",
-        "u",
-        "kindly",
-        "maybe",
-        "pls",
-        "plz",
-    }
-)
-_ASK_VERBS = frozenset({"ask", "have", "let", "tell", "get", "make", "need", "want"})
-_DATIVE_VERBS = frozenset(
-    {
-        "bring",
-        "give",
-        "hand",
-        "pass",
-        "lend",
-        "send",
-        "get",
-        "make",
-        "buy",
-        "fetch",
-        "grab",
-        "take",
-        "pour",
-        "brew",
-        "email",
-        "forward",
-        "mail",
-    }
-)
+_BREAK_WORDS = english.words("clause_breaks")
+_JOIN_WORDS = english.words("clause_joins")
+_SKIP_AFTER_JOIN = english.words("skip_after_join")
+_ASK_VERBS = english.words("ask_verbs")
+_DATIVE_VERBS = english.words("dative_verbs")
 # "Wang's desk": a person's place, where the robot meets them.
-_PLACE_WORDS = frozenset({"desk", "office", "place", "seat", "workstation", "cubicle", "table"})
-_OBJECT_PRONOUNS = frozenset({"him", "her", "them"})
+_PLACE_WORDS = english.words("place_words")
+_OBJECT_PRONOUNS = english.words("object_pronouns")
 _FILE_KINDS = frozenset({"print", "send_file"})
-_SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
+_SEND_WORDS = english.words("send_words")
 
 
 NOT_UNDERSTOOD = (

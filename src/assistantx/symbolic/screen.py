@@ -36,6 +36,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.english import entries_of
+from assistantx.english import words as english_words
 from assistantx.memory.names import normalize
 from assistantx.office import Office
 from assistantx.symbolic._lexicon import Lexicon
@@ -44,9 +45,7 @@ from assistantx.task_schema import DeclineOutcome, Evidence, Hint
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
 _SENTENCE_END = re.compile(r"[.!?;\n]+")
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
-_DETERMINERS = frozenset(
-    "a an the my your his her our their this that these those some me it them".split()
-)
+_DETERMINERS = english_words("screen_determiners")
 
 
 @dataclass(frozen=True)
