@@ -24,7 +24,7 @@ from assistantx.task_schema import TaskKind, kind_shape
 
 DistanceFn = Callable[[str, str], float]
 # A role is one of the person-to-person parts of a transfer, or the task kind it fills.
-RoleKind = Literal[Literal["lend", "give", "keep", "receive"], TaskKind]
+RoleKind = Literal["lend", "give", "keep", "receive", TaskKind]
 RoleStatus = Literal["bound", "ask", "waiting", "group", "group_waiting", "exhausted"]
 
 # How long an availability observation stays true (s): people come and go.
