@@ -19,7 +19,7 @@ from assistantx.sim.understanding import (
     mentioned_requests,
 )
 from assistantx.sim.world import LOCKER, World
-from assistantx.task_schema import SEAL_TOOL
+from assistantx.task_schema import SEAL_TOOL, kind_shape
 from assistantx.wording import item_phrase
 
 
@@ -156,9 +156,10 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
             return missing
         if purpose == "seal" and not world.owns(person, SEAL_TOOL):
             return "I don't have the seal."
-        shape: OperationShape = "transform" if purpose == "copy" else "treat"
-        if purpose in ("copy", "heat") and _operation_here(world, person, place, (shape,)) is None:
-            return f"I can't {purpose} things here."
+        shape = kind_shape(purpose)
+        if shape is not None and _operation_here(world, person, place, (shape,)) is None:
+            ops = world.office.with_shape(shape)  # the office's word: "scan", not "copy"
+            return f"I can't {ops[0].name if ops else purpose} things here."
         return None
     if purpose == "produce":
         op = world.office.making(item_type)
