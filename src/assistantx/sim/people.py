@@ -19,7 +19,7 @@ from assistantx.sim.understanding import (
     mentioned_requests,
 )
 from assistantx.sim.world import LOCKER, World
-from assistantx.task_schema import SEAL_TOOL, kind_shape
+from assistantx.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
 from assistantx.wording import item_phrase
 
 
@@ -46,7 +46,7 @@ def can_do(world: World, person: str, request: str) -> bool:
         return True
     if request == "seal":
         return world.owns(person, SEAL_TOOL)
-    if request == "send_file":
+    if request == FILE_KIND:
         return any(
             world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
         )
@@ -80,10 +80,10 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     named = mentioned_item_types(world.office, text)
     types = [t for t in named if t not in electronic]
     requests = mentioned_requests(world.office, text)
-    wants_file = bool(electronic & set(named)) and "send_file" in requests
+    wants_file = bool(electronic & set(named)) and FILE_KIND in requests
     if wants_file:
         return Reply(person, "Sure, here is my file.", (f"file:{person}",))
-    service = [r for r in requests if r not in ("send_file",)]
+    service = [r for r in requests if r != FILE_KIND]
     if service:
         request = service[0]
         if can_do(world, person, request):
@@ -114,7 +114,7 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
         for t in mentioned_item_types(world.office, text)
         if world.office.item_type(t).kind == "belonging"
     ]
-    requests = [r for r in mentioned_requests(world.office, text) if r != "send_file"]
+    requests = [r for r in mentioned_requests(world.office, text) if r != FILE_KIND]
     replies: list[Reply] = []
     for person in members:
         if not world.available(person):
