@@ -14,9 +14,12 @@ from __future__ import annotations
 import ast
 import re
 from pathlib import Path
+from typing import get_args
 
 import pytest
 import yaml
+
+from assistantx.task_schema import PART_KINDS, TaskKind
 
 ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "src" / "assistantx"
@@ -83,3 +86,55 @@ def test_module_names_no_default_office_word(module: str) -> None:
         if match is not None
     ]
     assert not found, found
+
+
+# --- task kinds: listed by the task schema only -----------------------------------------------
+
+TASK_KINDS = set(get_args(TaskKind)) | set(PART_KINDS)
+# Lock purposes share some words with task kinds, but they are the lock's wire protocol (what
+# a code opens the locker for), not a reading of a request.
+KIND_LIST_EXEMPT = {"adapters/lock/base.py", "lock/controller.py"}
+LOCK_ONLY_PURPOSES = {"deposit", "collect"}
+
+
+def _listed_kinds(tree: ast.AST) -> list[tuple[int, list[str]]]:
+    """Literal collections (tuples, lists, sets, dict keys, ``Literal[...]``) that name three
+    or more task kinds: a module listing the kinds itself."""
+    found: list[tuple[int, list[str]]] = []
+    for node in ast.walk(tree):
+        elements: list[ast.expr | None]
+        if isinstance(node, ast.Tuple | ast.List | ast.Set):
+            elements = list(node.elts)
+        elif isinstance(node, ast.Dict):
+            elements = list(node.keys)
+        else:
+            continue
+        kinds = [
+            e.value
+            for e in elements
+            if isinstance(e, ast.Constant) and isinstance(e.value, str) and e.value in TASK_KINDS
+        ]
+        purposes = [
+            e for e in elements if isinstance(e, ast.Constant) and e.value in LOCK_ONLY_PURPOSES
+        ]
+        if len(set(kinds)) >= 3 and not purposes:  # a table of lock purposes is not one
+            found.append((node.lineno, kinds))
+    return found
+
+
+@pytest.mark.parametrize(
+    "module",
+    sorted(
+        str(p.relative_to(SRC))
+        for p in SRC.rglob("*.py")
+        if str(p.relative_to(SRC)) not in {"task_schema.py"} | KIND_LIST_EXEMPT
+    ),
+)
+def test_module_lists_no_task_kinds(module: str) -> None:
+    tree = ast.parse((SRC / module).read_text(encoding="utf-8"))
+    assert not _listed_kinds(tree), _listed_kinds(tree)
+
+
+def test_the_kind_check_sees_a_listing() -> None:
+    tree = ast.parse('KINDS = ("print", "copy", "sign")\nX = Literal["transfer", "seal", "heat"]')
+    assert [line for line, _ in _listed_kinds(tree)] == [1, 2]

@@ -40,7 +40,7 @@ from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.office import Office
 from assistantx.replies import ReplyBox
 from assistantx.trace import ActionResult
-from assistantx.wording import PURPOSE_TEXT, item_phrase, person_name
+from assistantx.wording import item_phrase, person_name, purpose_text
 
 logger = logging.getLogger(__name__)
 
@@ -226,9 +226,7 @@ class Executor:
             purpose=action.purpose,
             item=action.item,
         )
-        todo = PURPOSE_TEXT[action.purpose].format(
-            item=item_phrase(self.ctx.office, action.item, you=action.contact)
-        )
+        todo = purpose_text(self.ctx.office, action.purpose, action.item, you=action.contact)
         text = (
             f"Here is your one-time code for the robot's locker: scan it at the robot to {todo}. "
             f"It works once and expires in {round((qr.expires_at - qr.issued_at) / 60)} minutes."

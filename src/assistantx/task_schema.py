@@ -37,6 +37,24 @@ SHAPE_KIND: dict[OperationShape, TaskKind] = {
     "transform": "copy",
     "treat": "heat",
 }
+# The task kinds that a person does for the requester, with no facility: their words are
+# English (the sign and seal of a document, a file sent), not the office's.
+PERSON_KINDS: tuple[TaskKind, ...] = ("sign", "seal")
+FILE_KIND: TaskKind = "send_file"
+# What a finished task leaves true in the world (sim.goals milestones) → the task kind.
+MILESTONE_KIND: dict[str, TaskKind] = {
+    "holds": "transfer",
+    "printed": "print",
+    "copied": "copy",
+    "heated": "heat",
+    "signed": "sign",
+    "sealed": "seal",
+    "made": "produce",
+    "received": "send_file",
+}
+# The coarse kinds of the usage report: what the robot did for an instruction.
+RecordKind = Literal["delivery", "file", "message"]
+RECORD_KINDS: tuple[RecordKind, ...] = ("delivery", "file", "message")
 HintKind = Literal["availability", "location", "condition"]
 DeclineOutcome = Literal["done", "unachievable"]
 
@@ -53,6 +71,19 @@ class Task(BaseModel):
     actor: str | None = Field(default=None, description="who must do it (signer, named helper)")
     operation: str | None = Field(
         default=None, description="the office's operation (print, copy, heat, produce kinds)"
+    )
+    source: str | None = Field(
+        default=None,
+        description="where the item comes from when the frame fixes it: a person, or a "
+        "facility or cupboard that keeps it",
+    )
+    facility: str | None = Field(
+        default=None, description="the facility the requester named for the operation"
+    )
+    input_item: str | None = Field(
+        default=None,
+        description="the item type the operation works on (the requester's file, document, "
+        "lunch); None when it makes something from nothing",
     )
 
     def item_id(self) -> str | None:
@@ -117,7 +148,128 @@ class TaskFrame(BaseModel):
         return "; ".join(f"{e.words!r} → {e.meaning}" for e in self.evidence)
 
 
-_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+_KIND_SHAPE: dict[str, OperationShape] = {kind: shape for shape, kind in SHAPE_KIND.items()}
+
+
+def kind_shape(kind: str) -> OperationShape | None:
+    """The shape of office operation a task kind uses; None for person-to-person kinds."""
+    return _KIND_SHAPE.get(kind)
+
+
+# The written form of a task in the dataset's base instructions (``parts:`` of
+# dataset/base_instructions.yaml): one part per task, kinds named from the requester's side.
+# Any other part kind must be a product of one of the office's operations ("make one").
+PartKind = Literal[
+    "fetch", "deliver", "print", "copy", "sign", "seal", "make", "heat", "forward_file", "get_file"
+]
+PART_KINDS: tuple[PartKind, ...] = (
+    "fetch",
+    "deliver",
+    "print",
+    "copy",
+    "sign",
+    "seal",
+    "make",
+    "heat",
+    "forward_file",
+    "get_file",
+)
+PART_TASK_KIND: dict[str, TaskKind] = {
+    "fetch": "transfer",
+    "deliver": "transfer",
+    "print": "print",
+    "copy": "copy",
+    "sign": "sign",
+    "seal": "seal",
+    "make": "produce",
+    "heat": "heat",
+    "forward_file": "send_file",
+    "get_file": "send_file",
+}
+
+# The fields each part kind must name (dataset.spec checks them).
+PART_NEEDS: dict[str, tuple[str, ...]] = {
+    "fetch": ("item",),
+    "deliver": ("item", "to"),
+    "forward_file": ("to",),
+    "get_file": ("owner",),
+    "sign": ("signer",),
+}
+
+
+class Part(BaseModel):
+    """One task of a base instruction, as the dataset writes it; ``task`` reads it as a Task."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
+    item: str | None = Field(default=None, description="item type (fetch, deliver)")
+    owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
+    to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
+    signer: str | None = Field(default=None, description="who signs (sign)")
+    operation: str | None = Field(
+        default=None, description="the office operation, when several of the shape exist"
+    )
+
+    def task_kind(self) -> TaskKind:
+        """The schema's kind of this part (a product's name is a ``produce``)."""
+        return PART_TASK_KIND.get(self.kind, "produce")
+
+    def shape(self, office: Office) -> OperationShape | None:
+        """The shape of office operation the part uses; None for person-to-person parts."""
+        if self.kind not in PART_KINDS:
+            return "make" if office.making(self.kind) is not None else None
+        return kind_shape(self.task_kind())
+
+    def task(self, requester: str, office: Office) -> Task:
+        """This part as the task schema's :class:`Task` for ``requester``."""
+        kind = self.task_kind()
+        match self.kind:
+            case "fetch":
+                return Task(kind=kind, item=self.item, owner=self.owner, recipient=requester)
+            case "deliver":
+                return Task(kind=kind, item=self.item, owner=requester, recipient=self.to or "")
+            case "sign":
+                return Task(
+                    kind=kind,
+                    item="document",
+                    owner=requester,
+                    recipient=requester,
+                    actor=self.signer,
+                    input_item="document",
+                )
+            case "seal":
+                return Task(
+                    kind=kind,
+                    item="document",
+                    owner=requester,
+                    recipient=requester,
+                    input_item="document",
+                )
+            case "forward_file":
+                return Task(kind=kind, item="file", owner=requester, recipient=self.to or "")
+            case "get_file":
+                return Task(kind=kind, item="file", owner=self.owner, recipient=requester)
+        op = self.operation
+        if kind == "produce":
+            product = self.item if self.kind == "make" else self.kind
+            made = office.making(product or "")
+            return Task(
+                kind=kind,
+                item=product,
+                recipient=requester,
+                operation=op or (made.id if made else None),
+            )
+        found = office.with_shape(_KIND_SHAPE[kind]) if op is None else [office.operation(op)]
+        operation = found[0] if found else None
+        return Task(
+            kind=kind,
+            item=operation.input if operation else None,
+            owner=requester,
+            recipient=self.to or requester,
+            operation=operation.id if operation else None,
+            input_item=operation.input if operation else None,
+        )
 
 
 def operation_of(office: Office, task: Task) -> str | None:

@@ -8,9 +8,13 @@ id with a colon.
 
 from __future__ import annotations
 
-from assistantx.office import Office
+from assistantx.office import Office, Operation
+from assistantx.task_schema import kind_shape
 
-# What the person does at the locker, per code purpose ({item}: an ``item_phrase``).
+# What the person does at the locker, per code purpose ({item}: an ``item_phrase``). The
+# purposes that run an office operation on the item ("copy", "heat": the task kinds of those
+# shapes) are worded with the office's own operation by ``purpose_text``; these two lines are
+# only the fallback for an office without one.
 PURPOSE_TEXT = {
     "deposit": "put {item} into the locker",
     "collect": "take {item} out of the locker",
@@ -20,6 +24,26 @@ PURPOSE_TEXT = {
     "heat": "take {item} out, heat it and put it back",
     "produce": "make {item} and put it into the locker",
 }
+
+
+def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None = None) -> str:
+    """What the person does at the locker for a code of ``purpose`` on ``item_id``, in the
+    office's words: "take your document out, scan it and put the original and the scan back"
+    where the office's operation of the copy shape is a scan."""
+    thing = item_phrase(office, item_id, you=you)
+    shape = kind_shape(purpose)
+    op = _operation_on(office, shape, item_id.partition(":")[0]) if shape else None
+    if op is None or shape not in ("transform", "treat"):
+        return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
+    if shape == "transform":
+        return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
+    return f"take {thing} out, {op.name} it and put it back"
+
+
+def _operation_on(office: Office, shape: str, item_type: str) -> Operation | None:
+    """The office's operation of ``shape`` that works on ``item_type`` (else the first)."""
+    ops = [op for op in office.operations if op.shape(office) == shape]
+    return next((op for op in ops if op.input == item_type), ops[0] if ops else None)
 
 
 def person_name(office: Office, person_id: str, *, you: str | None = None) -> str:

@@ -1,8 +1,8 @@
 """Base instructions: free text plus a structured spec of what the text means.
 
 ``dataset/base_instructions.yaml`` lists them; each names its requester, the instruction text
-and its ``parts`` (one part per task kind; several parts make a combination). The goal
-milestones, the roles to fill and the optimal plan are all computed from the parts, never typed
+and its ``parts`` (one ``task_schema.Part`` per task; several parts make a combination). The
+goal milestones, the roles to fill and the optimal plan are all computed from the parts, never typed
 by hand. A part's fields:
 
 - ``kind``: ``fetch`` (``item``; ``owner`` for a named owner, else anyone's will do),
@@ -18,50 +18,15 @@ by hand. A part's fields:
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.errors import DatasetError
-from assistantx.office import Office, Operation, OperationShape
-from assistantx.task_schema import SEAL_TOOL
+from assistantx.office import Office, Operation
+from assistantx.task_schema import PART_KINDS, PART_NEEDS, SEAL_TOOL, Part, Task
 
-# The part kinds with a structure of their own; any other kind must be a product of one of
-# the office's operations ("coffee" in the default office: made and brought to the requester).
-PART_KINDS = (
-    "fetch",
-    "deliver",
-    "print",
-    "copy",
-    "sign",
-    "seal",
-    "make",
-    "heat",
-    "forward_file",
-    "get_file",
-)
-
-# The shape of office operation each operating part kind uses (office.Operation.shape).
-_PART_SHAPE: dict[str, OperationShape] = {
-    "print": "render",
-    "copy": "transform",
-    "heat": "treat",
-    "make": "make",
-}
-
-
-class Part(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-    kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
-    item: str | None = Field(default=None, description="item type (fetch, deliver)")
-    owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
-    to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
-    signer: str | None = Field(default=None, description="who signs (sign)")
-    operation: str | None = Field(
-        default=None, description="the office operation, when several of the shape exist"
-    )
+__all__ = ["PART_KINDS", "BaseInstruction", "Part", "load_base_instructions", "part_operation"]
 
 
 class BaseInstruction(BaseModel):
@@ -75,6 +40,10 @@ class BaseInstruction(BaseModel):
     @property
     def kinds(self) -> list[str]:
         return [p.kind for p in self.parts]
+
+    def tasks(self, office: Office) -> list[Task]:
+        """The parts as the task schema reads them: what the instruction's text must mean."""
+        return [p.task(self.requester, office) for p in self.parts]
 
 
 def load_base_instructions(path: str | Path, office: Office) -> list[BaseInstruction]:
@@ -126,7 +95,7 @@ def made_kind(office: Office, kind: str) -> bool:
 
 def part_operation(office: Office, part: Part) -> Operation:
     """The office operation an operating part needs (raises ValueError when there is none)."""
-    shape = _PART_SHAPE.get(part.kind) or ("make" if made_kind(office, part.kind) else None)
+    shape = part.shape(office)
     if shape is None:
         raise ValueError(f"{part.kind} uses no facility")
     if part.operation is not None:
@@ -166,14 +135,7 @@ def check_base(base: BaseInstruction, office: Office) -> None:
                     raise ValueError(f"{part.kind}: the requester cannot be the other party")
         if part.item is not None:
             office.item_type(part.item)
-        need: dict[str, tuple[Any, ...]] = {
-            "fetch": ("item",),
-            "deliver": ("item", "to"),
-            "forward_file": ("to",),
-            "get_file": ("owner",),
-            "sign": ("signer",),
-        }
-        for field in need.get(part.kind, ()):
+        for field in PART_NEEDS.get(part.kind, ()):
             if getattr(part, field) is None:
                 raise ValueError(f"{part.kind} needs {field!r}")
         if part.kind == "fetch":
@@ -202,7 +164,7 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             assert part.owner is not None
             if not _owns(office, part.owner, "file"):
                 raise ValueError(f"{part.owner} has no file")
-        if part.kind in _PART_SHAPE or made_kind(office, part.kind):
+        if part.shape(office) is not None:
             op = part_operation(office, part)
             if op.input is not None and not _owns(office, a, op.input):
                 raise ValueError(f"the requester has no {op.input}")

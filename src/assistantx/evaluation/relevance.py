@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.office import Office, OperationShape
+from assistantx.office import Office
 from assistantx.sim.goals import parse_milestone
-from assistantx.task_schema import SEAL_TOOL
+from assistantx.task_schema import MILESTONE_KIND, SEAL_TOOL, kind_shape
 
 
 def _owner(item: str) -> str:
@@ -27,8 +27,12 @@ def _guards(office: Office, operation: str) -> set[str]:
     return {g for f in office.offering(operation) for g in f.guards}
 
 
-def _shape_guards(office: Office, shape: OperationShape) -> set[str]:
-    """Everyone who runs an operation of this shape (printing, copying, heating ...)."""
+def _kind_guards(office: Office, milestone: str) -> set[str]:
+    """Everyone who runs an operation of the shape the milestone's task kind uses (printing,
+    copying, heating ...)."""
+    shape = kind_shape(MILESTONE_KIND[milestone])
+    if shape is None:
+        return set()
     return {g for op in office.with_shape(shape) for g in _guards(office, op.id)}
 
 
@@ -47,16 +51,13 @@ def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) 
             case "sealed":
                 people.add(_owner(args[0]))
                 people.update(office.owners_of(SEAL_TOOL))
-            case "printed":
+            case "printed" | "copied":
                 people.add(_owner(args[0]))
-                people.update(_shape_guards(office, "render"))
-            case "copied":
-                people.add(_owner(args[0]))
-                people.update(_shape_guards(office, "transform"))
+                people.update(_kind_guards(office, name))
             case "heated":
                 people.add(_owner(args[0]))
                 people.update(_item_people(office, args[0]))
-                people.update(_shape_guards(office, "treat"))
+                people.update(_kind_guards(office, name))
             case "received":
                 people.update((args[0], _owner(args[1])))
             case "made":

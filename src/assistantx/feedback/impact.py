@@ -14,10 +14,12 @@ from pydantic import BaseModel, Field
 from assistantx.actions import ForwardFile, Inquire, Move, SendQR, WaitInPlace
 from assistantx.feedback.walking import DistanceFn, WalkingEstimate, estimate_walking
 from assistantx.office import Office
+from assistantx.task_schema import RECORD_KINDS, RecordKind
 from assistantx.trace import Trace
 
-TaskKind = Literal["delivery", "file", "message"]
-TASK_KINDS: tuple[TaskKind, ...] = ("delivery", "file", "message")
+# The report's kinds are the task schema's coarse record kinds (what the robot did).
+TaskKind = RecordKind
+TASK_KINDS: tuple[RecordKind, ...] = RECORD_KINDS
 RecordOutcome = Literal["done", "failed", "unachievable", "cancelled"]
 OUTCOMES: tuple[RecordOutcome, ...] = ("done", "failed", "unachievable", "cancelled")
 

@@ -11,29 +11,9 @@ import difflib
 import re
 from collections.abc import Iterable
 
-TITLES = frozenset(
-    {
-        "dr",
-        "doctor",
-        "mr",
-        "mrs",
-        "ms",
-        "miss",
-        "prof",
-        "professor",
-        "manager",
-        "boss",
-        "teacher",
-        "sir",
-        "madam",
-        "colleague",
-        "mx",
-        "the",
-        "a",
-        "an",
-        "our",
-    }
-)
+from assistantx import english
+
+TITLES = english.words("titles")
 _NON_WORD = re.compile(r"[^a-z0-9]+")
 
 

@@ -45,7 +45,7 @@ from assistantx.robot.occupancy_map import OccupancyMap, load_map
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
 from assistantx.service.runtime import ServiceRuntime
-from assistantx.wording import PURPOSE_TEXT, item_phrase, person_name
+from assistantx.wording import person_name, purpose_text
 
 logger = logging.getLogger(__name__)
 
@@ -260,9 +260,7 @@ def _recent_codes(runtime: ServiceRuntime, book: CodeBook, limit: int = 30) -> l
                 item=c.item,
                 purpose=c.purpose,
                 person_name=person_name(runtime.office, c.person),
-                task=PURPOSE_TEXT.get(c.purpose, "{item}").format(
-                    item=item_phrase(runtime.office, c.item)
-                ),
+                task=purpose_text(runtime.office, c.purpose, c.item),
                 used=c.used,
                 state=_code_state(c, runtime),
                 scannable=book.payload(c.code_id) is not None,

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from assistantx.adapters.lock.base import WORK_PURPOSES
 from assistantx.office import Operation, OperationShape, Ownership
 from assistantx.sim.understanding import (
     is_question,
@@ -18,7 +19,7 @@ from assistantx.sim.understanding import (
     mentioned_requests,
 )
 from assistantx.sim.world import LOCKER, World
-from assistantx.task_schema import SEAL_TOOL
+from assistantx.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
 from assistantx.wording import item_phrase
 
 
@@ -45,7 +46,7 @@ def can_do(world: World, person: str, request: str) -> bool:
         return True
     if request == "seal":
         return world.owns(person, SEAL_TOOL)
-    if request == "send_file":
+    if request == FILE_KIND:
         return any(
             world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
         )
@@ -79,10 +80,10 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     named = mentioned_item_types(world.office, text)
     types = [t for t in named if t not in electronic]
     requests = mentioned_requests(world.office, text)
-    wants_file = bool(electronic & set(named)) and "send_file" in requests
+    wants_file = bool(electronic & set(named)) and FILE_KIND in requests
     if wants_file:
         return Reply(person, "Sure, here is my file.", (f"file:{person}",))
-    service = [r for r in requests if r not in ("send_file",)]
+    service = [r for r in requests if r != FILE_KIND]
     if service:
         request = service[0]
         if can_do(world, person, request):
@@ -113,7 +114,7 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
         for t in mentioned_item_types(world.office, text)
         if world.office.item_type(t).kind == "belonging"
     ]
-    requests = [r for r in mentioned_requests(world.office, text) if r != "send_file"]
+    requests = [r for r in mentioned_requests(world.office, text) if r != FILE_KIND]
     replies: list[Reply] = []
     for person in members:
         if not world.available(person):
@@ -150,14 +151,15 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
         return f"I don't have {thing}."
     if purpose == "collect":
         return None if where == LOCKER else missing
-    if purpose in ("sign", "seal", "copy", "heat"):
+    if purpose in WORK_PURPOSES:
         if where != LOCKER:
             return missing
         if purpose == "seal" and not world.owns(person, SEAL_TOOL):
             return "I don't have the seal."
-        shape: OperationShape = "transform" if purpose == "copy" else "treat"
-        if purpose in ("copy", "heat") and _operation_here(world, person, place, (shape,)) is None:
-            return f"I can't {purpose} things here."
+        shape = kind_shape(purpose)
+        if shape is not None and _operation_here(world, person, place, (shape,)) is None:
+            ops = world.office.with_shape(shape)  # the office's word: "scan", not "copy"
+            return f"I can't {ops[0].name if ops else purpose} things here."
         return None
     if purpose == "produce":
         op = world.office.making(item_type)

@@ -8,17 +8,18 @@ from __future__ import annotations
 
 import re
 
+from assistantx import english
 from assistantx.memory.names import normalize
 from assistantx.office import Office
+from assistantx.task_schema import FILE_KIND, PERSON_KINDS
 
-# person-to-person request kinds of the task schema → the English words that signal them; the
-# office's own operations are signalled by their verbs and their product's names
-# (``request_words``)
+# The task schema's person-to-person kinds → the English words that signal them (the package's
+# English data file); the office's own operations are signalled by their verbs and their
+# product's names (``request_words``).
 PERSON_REQUEST_WORDS: dict[str, tuple[str, ...]] = {
-    "sign": ("sign", "signature", "signed"),
-    "seal": ("seal", "stamp", "chop"),
+    kind: english.kind_words(kind) for kind in PERSON_KINDS
 }
-SEND_FILE_WORDS = ("send", "share", "forward", "email")
+SEND_FILE_WORDS = english.kind_words(FILE_KIND)
 
 
 def request_words(office: Office) -> dict[str, tuple[str, ...]]:
@@ -32,7 +33,7 @@ def request_words(office: Office) -> dict[str, tuple[str, ...]]:
             product = office.item_type(op.product)
             found += [normalize(n) for n in (product.name, *product.synonyms)]
         words[op.id] = tuple(w for w in dict.fromkeys(found) if w)
-    words["send_file"] = SEND_FILE_WORDS
+    words[FILE_KIND] = SEND_FILE_WORDS
     return words
 
 

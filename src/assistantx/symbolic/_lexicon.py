@@ -1,12 +1,13 @@
 """The office's vocabulary, scanned out of free text: people, item types and facilities.
 
 Every name comes from the office file (names, aliases, synonyms, plurals), so another office
-works unchanged; only the English function words and the task verbs are fixed here. Matching
-is longest-phrase-first, then single name words; a word that names several people is kept as
-an ambiguous mention, never resolved by guessing. Small typos ("stapeler", "cofee") are
-corrected against the same vocabulary, but only for words that are not ordinary English; a
-misspelt name that is as close to another person's name ("Zhnag": Zhang or Zheng) is
-ambiguous, since fetching from the wrong colleague is worse than asking.
+works unchanged; the English function words and generic task verbs are the package's data
+(``data/english.yaml``). Matching is longest-phrase-first, then single name words; a word
+that names several people is kept as an ambiguous mention, never resolved by guessing. Small
+typos ("stapeler", "cofee") are corrected against the same vocabulary, but only for words
+that are not ordinary English; a misspelt name that is as close to another person's name
+("Zhnag": Zhang or Zheng) is ambiguous, since fetching from the wrong colleague is worse
+than asking.
 """
 
 from __future__ import annotations
@@ -16,90 +17,38 @@ import re
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx import english
 from assistantx.memory.names import TITLES, normalize
 from assistantx.office import Office
 from assistantx.task_schema import SHAPE_KIND
 
 MentionKind = Literal["person", "item", "facility", "self", "pronoun", "cue", "word"]
 
-# Task cues: the English verbs (and nouns) that say what to do, keyed by task kind. Not
-# office-specific: the verbs of the office's own operations are added per office
-# (``Lexicon.from_office``), under the task kind of their shape.
-CUES: dict[str, frozenset[str]] = {
-    "sign": frozenset({"sign", "signs", "signed", "signature", "signing", "countersign"}),
-    "seal": frozenset({"stamp", "stamped", "stamping", "seal", "sealed", "sealing", "chop"}),
-    "send": frozenset(
-        {"send", "sent", "forward", "forwarded", "email", "emailed", "mail", "share", "shared"}
-    ),
-    "give": frozenset(
-        {
-            "bring",
-            "get",
-            "fetch",
-            "grab",
-            "borrow",
-            "take",
-            "give",
-            "deliver",
-            "carry",
-            "drop",
-            "pass",
-            "hand",
-            "lend",
-            "return",
-            "need",
-            "needs",
-            "want",
-            "wants",
-            "pick",
-            "find",
-            "collect",
-            "like",
-            "love",
-            "move",
-            "send",
-        }
-    ),
-    "make": frozenset({"make", "brew", "prepare", "buy", "purchase", "pour", "order", "fix"}),
-}
+# Task cues: the English verbs (and nouns) that say what to do, keyed by task kind (the
+# package's English data file). Not office-specific: the verbs of the office's own operations
+# are added per office (``Lexicon.from_office``), under the task kind of their shape.
+CUES: dict[str, frozenset[str]] = english.word_table("cues")
 CUE_WORDS = frozenset(w for words in CUES.values() for w in words)
 
-SELF_WORDS = frozenset({"me", "i", "my", "mine", "myself", "im", "id", "ive", "ill"})
-PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him"})
-OTHER_POSSESSIVES = frozenset({"his", "her", "their", "hers", "theirs"})
+SELF_WORDS = english.words("self_words")
+PRONOUNS = english.words("pronouns")
+OTHER_POSSESSIVES = english.words("other_possessives")
 # Words that connect a person to a role in the sentence.
-PREPOSITIONS = frozenset({"to", "for", "from", "by", "with", "of", "at"})
+PREPOSITIONS = english.words("party_prepositions")
 
 # Ordinary English that must never be "corrected" into a name, and is never a name word
 # unless written with a capital letter.
-COMMON = frozenset(
-    """a about after again all also am an and any anyone anything are as asap ask at away back
-    be because been before being best better bit both bring but by call can cant chance come
-    could couple day desk did do does doing done dont down each else even ever every everyone
-    few find first for from get give go going good got great had has have having he hello help
-    her here hey hi him his hold home how however if in into is it its just keep kind kindly
-    know last later let lets like little look lot lots made make many may maybe me mind mine
-    minute more most much must my myself need new next nice no not now of off office ok okay
-    on once one only or other our out over own perhaps person pick place please possible put
-    quick quickly really right robot round same say see send should so some somebody someone
-    something soon sorry still such sure take tell than thank thanks that the their them then
-    there these they thing things this those time to today too two up urgent us use very want
-    wants was way we well were what when where which while who whom whose why will with
-    without would yes yet you your afternoon morning need needs anybody ones stuff""".split()
-)
+COMMON = english.words("common")
 # Name words that are also English words only count when capitalized in the original.
-_ENGLISH_NAME_WORDS = frozenset(
-    """will may bill mark pat rob sue grace hope joy max page rose min jun art ray dawn
-    drew faith gene guy jack june ken lee""".split()
-) - {"lee"}
+_ENGLISH_NAME_WORDS = english.words("names_that_are_words")
 
 # Words that open a verb's object: the word before one of them is in a verb's place.
-_VERB_OBJECT_STARTS = frozenset("my the a an your our his her their this these those some".split())
+_VERB_OBJECT_STARTS = english.words("object_starts")
 
-_SUBJECT_PRONOUNS = frozenset("you u i we he she they it ya".split())
-_MONTHS = frozenset("may june april august".split())
-_MONTH_PREPOSITIONS = frozenset("in by until till since of early late mid end next last".split())
-_POLITE = frozenset("please pls plz kindly".split())
+_SUBJECT_PRONOUNS = english.words("subject_pronouns")
+_MONTHS = english.words("month_names")
+_MONTH_PREPOSITIONS = english.words("month_prepositions")
+_POLITE = english.words("polite")
 
 # How close a misspelt name must be to a person's name to count as possibly meaning them.
 _NAME_TYPO_CUTOFF = 0.8

@@ -20,43 +20,18 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from assistantx import english
 from assistantx.symbolic._lexicon import Mention, Token
 
 # Prepositions of time: a bare noun after one is a time phrase ("over lunch", "at lunch").
-TIME_PREPOSITIONS = frozenset(
-    {"over", "during", "after", "before", "until", "till", "around", "at", "for", "by", "since"}
-)
+TIME_PREPOSITIONS = english.words("time_prepositions")
 # Prepositions that attach a phrase to the object before them ("a mug for my coffee").
 # Not "of" (the object's own complement: "a copy of my contract"), "on" ("the seal on my
 # form"), "from"/"to"/"by" (people's roles).
-MODIFIER_PREPOSITIONS = frozenset(
-    {"over", "during", "after", "before", "until", "till", "around", "at", "for", "with", "in"}
-)
-DETERMINERS = frozenset(
-    {
-        "a",
-        "an",
-        "the",
-        "my",
-        "your",
-        "his",
-        "her",
-        "our",
-        "their",
-        "its",
-        "some",
-        "this",
-        "that",
-        "these",
-        "those",
-        "any",
-        "me",
-    }
-)
+MODIFIER_PREPOSITIONS = english.words("object_modifier_prepositions")
+DETERMINERS = english.words("determiners")
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
-_BEFORE_VERB = frozenset(
-    {"", "u", "you", "pls", "please", "plz", "robot", "to", "and", "then", "also", "just", "kindly"}
-)
+_BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
 
 
 def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:

@@ -6,13 +6,14 @@ for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lex
 1. the text is split into clauses at sentence ends and at "and"/"then"/commas that start a
    new request ("print my file and take it to Wang" is a print and a hand-on);
 2. each clause's mentions (people, items, facilities, task cues, "me"/"my") get roles from
-   the words around them: "to/for X" → recipient, "from X"/"X's" → owner, "by X"/"get X to"
-   → actor;
+   the words around them by the priority rule table of ``_parties``: "to/for X" →
+   recipient, "from X"/"X's" → owner, "by X"/"get X to" → actor;
 3. only the objects of the request count (``_objects``): not time phrases ("over lunch"),
    purpose clauses ("to read"), modifiers after the object ("a mug for my coffee"), nor
    container words ("a cup of coffee"); every coordinated object ("a stapler and a coffee")
    is a task of its own, with the recipient named next to it;
-4. the clause's kind follows from its cues and item kinds; a clause with no task of its own
+4. the clause's kind follows from its cues and item kinds (``_kinds``: a rule table for the
+   one-task clauses, then a task per object); a clause with no task of its own
    ("and bring it to me", or the answer "Dr. Zhang") fills in the previous task;
 5. anything missing, unknown or ambiguous becomes a question for the requester, never a guess,
    and so does an object no task acts on: part of a request is never dropped silently.
@@ -20,12 +21,18 @@ for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lex
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
+from assistantx import english
 from assistantx.memory.names import normalize
-from assistantx.office import Office, OperationShape
+from assistantx.office import Office
+from assistantx.symbolic._kinds import FILE_KINDS, TaskReader
 from assistantx.symbolic._lexicon import COMMON, PRONOUNS, Lexicon, Mention, Token, inflections
 from assistantx.symbolic._objects import modifiers, verb_uses
+from assistantx.symbolic._parties import (
+    Clause,
+    UnresolvedPronoun,
+    clause_roles,
+    prev_word,
+)
 from assistantx.symbolic.screen import RequestScreen
 from assistantx.task_schema import SEAL_TOOL as SEAL
 from assistantx.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
@@ -35,95 +42,15 @@ _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 __all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
 
-_BREAK_WORDS = frozenset({"then", "also", "plus", "afterwards", "additionally"})
-_JOIN_WORDS = frozenset({"and", "but"})
-_SKIP_AFTER_JOIN = frozenset(
-    {
-        "also",
-        "then",
-        "please",
-        "could",
-        "can",
-        "would",
-        "will",
-        "you",
-        "u",
-        "kindly",
-        "maybe",
-        "pls",
-        "plz",
-    }
-)
-_ASK_VERBS = frozenset({"ask", "have", "let", "tell", "get", "make", "need", "want"})
-_DATIVE_VERBS = frozenset(
-    {
-        "bring",
-        "give",
-        "hand",
-        "pass",
-        "lend",
-        "send",
-        "get",
-        "make",
-        "buy",
-        "fetch",
-        "grab",
-        "take",
-        "pour",
-        "brew",
-        "email",
-        "forward",
-        "mail",
-    }
-)
-# "Wang's desk": a person's place, where the robot meets them.
-_PLACE_WORDS = frozenset({"desk", "office", "place", "seat", "workstation", "cubicle", "table"})
-_OBJECT_PRONOUNS = frozenset({"him", "her", "them"})
-_FILE_KINDS = frozenset({"print", "send_file"})
-_SEND_WORDS = frozenset({"forward", "forwarded", "email", "emailed", "mail", "share", "shared"})
+_BREAK_WORDS = english.words("clause_breaks")
+_JOIN_WORDS = english.words("clause_joins")
+_SKIP_AFTER_JOIN = english.words("skip_after_join")
 
 
 NOT_UNDERSTOOD = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
 )
 """The question for a text in which no request was found (not an unclear request)."""
-
-
-class _UnresolvedPronoun(Exception):
-    """A possessive pronoun with nobody it could refer to ("bring me his stapler")."""
-
-
-@dataclass
-class _Clause:
-    mentions: list[Mention]
-    cues: set[str] = field(default_factory=set)
-    modifiers: set[int] = field(default_factory=set)  # starts of mentions that only modify
-
-    def objects(self) -> list[Mention]:
-        """The item mentions the request acts on, in text order."""
-        return [m for m in self.mentions if m.kind == "item" and m.start not in self.modifiers]
-
-
-@dataclass
-class _Roles:
-    recipient: list[str] = field(default_factory=list)
-    recipient_at: list[int] = field(default_factory=list)  # token start of each recipient
-    returned_to: list[str] = field(default_factory=list)  # "back to X": X owns the item
-    source: list[str] = field(default_factory=list)
-    actor: list[str] = field(default_factory=list)
-    bare: list[str] = field(default_factory=list)
-    owners: dict[int, str] = field(default_factory=dict)  # item mention start → owner id
-
-    def add_recipient(self, who: str, at: int) -> None:
-        self.recipient.append(who)
-        self.recipient_at.append(at)
-
-    def recipient_between(self, start: int, end: int) -> str | None:
-        """The last recipient named in tokens [start, end) ("a coffee *for me* and ...")."""
-        found = [
-            w for w, at in zip(self.recipient, self.recipient_at, strict=True) if start <= at < end
-        ]
-        return found[-1] if found else None
 
 
 class InstructionParser:
@@ -133,11 +60,11 @@ class InstructionParser:
         self.office = office
         self.lex = Lexicon.from_office(office)
         self.screen = RequestScreen(office, self.lex)
-        self._kinds = {t.id: t.kind for t in office.item_types}
-        # the products that name their task: "a printout" is a print, "a copy" a copy
-        self._printout = _product(office, "render")
-        self._copy = _product(office, "transform")
-        self._sourced = frozenset(p for p in (self._printout, self._copy) if p)
+        self.reader = TaskReader(office)
+        self._kinds = self.reader.kinds
+        self._printout = self.reader.printout
+        self._copy = self.reader.copy
+        self._sourced = self.reader.sourced
         self._op_words = {
             op.id: {
                 form
@@ -220,24 +147,24 @@ class InstructionParser:
             if k in answered:
                 continue
             try:
-                roles = self._roles(tokens, clause, requester, last_person)
-            except _UnresolvedPronoun as exc:
+                roles = clause_roles(tokens, clause, requester, last_person)
+            except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
                 if later is None:
                     unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
                     return TaskFrame(requester=requester, question=unclear)
                 # "bring me his stapler. Zhang Wei": the answer names him
                 answered.add(later[0])
-                roles = self._roles(tokens, clause, requester, [*last_person, later[1]])
+                roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
             objects += clause.objects()
-            made = self._tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             previous_cues = bool(clause.cues)
             if made:
                 tasks.extend(made)
             elif tasks:
-                tasks[-1] = self._fill(tasks[-1], clause, roles, requester)
+                tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -255,7 +182,7 @@ class InstructionParser:
         return frame
 
     @staticmethod
-    def _refers_back(clause: _Clause) -> bool:
+    def _refers_back(clause: Clause) -> bool:
         return any(m.kind == "pronoun" and not m.possessive for m in clause.mentions) and not any(
             m.kind == "item" for m in clause.mentions
         )
@@ -271,9 +198,9 @@ class InstructionParser:
         return out
 
     # -- clauses -------------------------------------------------------------------------
-    def _clauses(self, tokens: list[Token], text: str, mentions: list[Mention]) -> list[_Clause]:
+    def _clauses(self, tokens: list[Token], text: str, mentions: list[Mention]) -> list[Clause]:
         gaps = _gaps(text, tokens)
-        clauses: list[_Clause] = [_Clause([])]
+        clauses: list[Clause] = [Clause([])]
         for n, m in enumerate(mentions):
             word = tokens[m.start].word
             hard = any(c in gaps[m.start] for c in ".!?;") and bool(clauses[-1].mentions)
@@ -283,7 +210,7 @@ class InstructionParser:
                 )
             )
             if (hard or soft) and clauses[-1].mentions:
-                clauses.append(_Clause([]))
+                clauses.append(Clause([]))
             if m.kind == "word" and (word in _JOIN_WORDS or word in _BREAK_WORDS):
                 continue
             clauses[-1].mentions.append(m)
@@ -302,260 +229,6 @@ class InstructionParser:
         while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
             n += 1
         return n < len(mentions) and mentions[n].kind == "cue"
-
-    # -- roles ---------------------------------------------------------------------------
-    def _roles(
-        self, tokens: list[Token], clause: _Clause, requester: str, last_person: list[str]
-    ) -> _Roles:
-        roles = _Roles()
-        ms = clause.mentions
-        for n, m in enumerate(ms):
-            if m.kind == "person":
-                who = m.ids[0]
-                last_person.append(who)
-                self._person_role(tokens, ms, n, who, roles)
-            elif m.kind == "self":
-                word = tokens[m.start].word
-                if word in ("my", "mine"):
-                    continue
-                prev = _prev_word(tokens, m.start)
-                if prev in ("to", "for", "with") or prev in _DATIVE_VERBS:
-                    roles.add_recipient(requester, m.start)
-            elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
-                following = ms[n + 1] if n + 1 < len(ms) else None
-                others = [x for x in last_person if x != requester]
-                if following is not None and following.kind == "item":
-                    continue  # "her stapler": a possessive
-                if _prev_word(tokens, m.start) in ("to", "for") and others:
-                    roles.add_recipient(others[-1], m.start)
-            elif m.kind == "item":
-                owner = self._owner_of(tokens, ms, n, requester, last_person)
-                if owner is not None:
-                    roles.owners[m.start] = owner
-        return roles
-
-    def _person_role(
-        self, tokens: list[Token], ms: list[Mention], n: int, who: str, roles: _Roles
-    ) -> None:
-        m = ms[n]
-        prev = _prev_word(tokens, m.start)
-        nxt = tokens[m.end].word if m.end < len(tokens) else ""
-        following = ms[n + 1] if n + 1 < len(ms) else None
-        if (
-            m.possessive
-            and following is not None
-            and following.kind == "word"
-            and (following.ids[0] in _PLACE_WORDS)
-        ):
-            # "at Wang's desk": the person met at their place, not an owner
-            if prev in ("to", "at", "for"):
-                roles.add_recipient(who, m.start)
-            elif prev == "from":
-                roles.source.append(who)
-            else:
-                roles.bare.append(who)
-            return
-        if m.possessive:
-            if following is not None and following.kind == "cue" and "sign" in following.ids:
-                roles.actor.append(who)
-            return  # an owner, attached to the item that follows
-        if prev == "from":
-            roles.source.append(who)
-        elif prev == "by":
-            roles.actor.append(who)
-        elif prev in ("to", "for", "with"):
-            roles.add_recipient(who, m.start)
-            if prev == "to" and m.start >= 2 and tokens[m.start - 2].word == "back":
-                roles.returned_to.append(who)  # "take the stapler back to Zhang": Zhang's
-        elif nxt == "to" or prev in ("ask", "have", "let", "tell"):
-            roles.actor.append(who)
-        elif prev in _DATIVE_VERBS and following is not None and following.kind != "cue":
-            roles.add_recipient(who, m.start)
-        else:
-            roles.bare.append(who)
-
-    def _owner_of(
-        self,
-        tokens: list[Token],
-        ms: list[Mention],
-        n: int,
-        requester: str,
-        last_person: list[str],
-    ) -> str | None:
-        m = ms[n]
-        # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
-        for k in range(n - 1, max(-1, n - 3), -1):
-            p = ms[k]
-            if p.kind == "self" and p.possessive:
-                return requester
-            if p.kind == "person" and p.possessive:
-                return p.ids[0]
-            if p.kind == "pronoun" and p.possessive:
-                others = [x for x in last_person if x != requester]
-                if not others:  # "his stapler" with nobody named before: whose?
-                    raise _UnresolvedPronoun(p.text)
-                return others[-1]
-            if p.kind not in ("word", "item"):  # "Wang's report file": a compound noun
-                break
-        # "the stapler of Zhang" / "a stapler from Zhang"
-        if n + 2 < len(ms) + 1 and n + 1 < len(ms):
-            nxt = tokens[m.end].word if m.end < len(tokens) else ""
-            after = ms[n + 1]
-            if nxt in ("of", "from") and after.kind == "word" and n + 2 < len(ms):
-                after = ms[n + 2]
-            if nxt in ("of", "from") and after.kind == "person":
-                return after.ids[0]
-        return None
-
-    # -- kinds ---------------------------------------------------------------------------
-    def _tasks(
-        self, clause: _Clause, roles: _Roles, requester: str, previous: Task | None
-    ) -> list[Task]:
-        items = clause.objects()
-        cues = set(clause.cues)
-        if (
-            previous is not None
-            and not cues & {"print", "copy"}
-            and any(m.id == self._product_of(previous.kind) for m in items)
-        ):
-            return []  # "print my draft and take the printout to Sue": the same task, on
-        for m in items:  # products of the printer are cues: "a printout", "a copy"
-            if m.id == self._printout:
-                cues.add("print")
-            if m.id == self._copy:
-                cues.add("copy")
-        facilities = [self.office.facility(m.id) for m in clause.mentions if m.kind == "facility"]
-        if any(
-            self.office.operation(op).shape(self.office) == "treat"
-            for f in facilities
-            for op in f.operations
-        ):
-            cues.add("heat")
-        items = [m for m in items if m.id not in (self._printout, self._copy)]
-        files = [m for m in items if self._kinds[m.id] == "electronic"]
-        personal = [m for m in items if self._kinds[m.id] == "personal"]
-        products = [m for m in items if self._kinds[m.id] == "product"]
-        physical = [m for m in items if self._kinds[m.id] in ("belonging", "personal")]
-        # "my report file": a document word naming a file
-        if files and personal and personal[-1].end == files[0].start:
-            dropped = personal.pop()
-            physical = [m for m in physical if m is not dropped]
-
-        recipient = roles.recipient[-1] if roles.recipient else requester
-
-        def owner(m: Mention | None) -> str | None:
-            if m is None:
-                return None
-            return roles.owners.get(m.start) or (roles.source[-1] if roles.source else None)
-
-        doc: Mention | None = personal[0] if personal else None
-        refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
-        if doc is None and refers and previous is not None and previous.item is not None:
-            if self._kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
-                doc = Mention("item", -1, -1, (previous.item,))
-                roles.owners[-1] = previous.owner or requester
-        if "sign" in cues:
-            actor = next(iter(roles.actor + roles.bare + roles.recipient), None)
-            item = doc.id if doc else None
-            return [
-                Task(
-                    kind="sign",
-                    item=item,
-                    owner=owner(doc) or requester,
-                    recipient=requester if actor in roles.recipient else recipient,
-                    actor=actor,
-                )
-            ]
-        seal_items = [m for m in clause.mentions if m.kind == "item" and m.id == SEAL]
-        if ("seal" in cues or seal_items) and doc is not None:
-            sealer = next((roles.owners.get(m.start) for m in seal_items), None)
-            sealer = sealer or next(iter(roles.actor + roles.bare), None)
-            return [
-                Task(
-                    kind="seal",
-                    item=doc.id,
-                    owner=owner(doc) or requester,
-                    recipient=recipient,
-                    actor=sealer,
-                )
-            ]
-        if "heat" in cues and not products:
-            return [
-                Task(
-                    kind="heat",
-                    item=doc.id if doc else None,
-                    owner=owner(doc) or requester,
-                    recipient=recipient,
-                )
-            ]
-        if "print" in cues:
-            source = (files or personal)[0] if files or personal else None
-            return [
-                Task(
-                    kind="print", item="file", owner=owner(source) or requester, recipient=recipient
-                )
-            ]
-        if "copy" in cues and doc is not None and not files:
-            return [
-                Task(kind="copy", item=doc.id, owner=owner(doc) or requester, recipient=recipient)
-            ]
-        sends = any(
-            m.kind == "cue" and m.text.lower() in _SEND_WORDS and m.start not in clause.modifiers
-            for m in clause.mentions
-        )
-        if not items:
-            if refers and sends and previous is not None and previous.kind in _FILE_KINDS:
-                # "print my slides and forward them to Zhou": the same file, passed on
-                file_owner = previous.owner or requester
-                return [Task(kind="send_file", item="file", owner=file_owner, recipient=recipient)]
-            made = [
-                p
-                for f in facilities
-                for p in f.products[:1]
-                if p not in (self._printout, self._copy) and ("give" in cues or "make" in cues)
-            ]
-            if made:
-                return [Task(kind="produce", item=p, recipient=recipient) for p in made]
-            if "seal" in cues:  # "bring me the stamp": the seal as an item
-                items = physical = [
-                    Mention("item", m.start, m.end, (SEAL,), m.possessive, m.text)
-                    for m in clause.mentions
-                    if m.kind == "cue" and "seal" in m.ids
-                ][:1]
-        # every object of the verb is a task of its own: "a stapler and a coffee"
-        objects = [m for m in items if m in files or m in physical or m in products]
-        tasks: list[Task] = []
-        for k, m in enumerate(objects):
-            to = recipient if len(objects) == 1 else _recipient_of(objects, k, roles, recipient)
-            kind = self._kinds[m.id]
-            helper = next(iter(roles.actor + roles.bare + roles.returned_to), None)
-            if kind == "product":
-                tasks.append(Task(kind="produce", item=m.id, recipient=to))
-            elif kind == "electronic" or (kind == "personal" and sends and not roles.source):
-                file_owner = owner(m) or helper or requester
-                tasks.append(Task(kind="send_file", item="file", owner=file_owner, recipient=to))
-            else:
-                tasks.append(
-                    Task(kind="transfer", item=m.id, owner=owner(m) or helper, recipient=to)
-                )
-        return list(dict.fromkeys(tasks))
-
-    def _product_of(self, kind: str) -> str | None:
-        return {"print": self._printout, "copy": self._copy}.get(kind)
-
-    def _fill(self, task: Task, clause: _Clause, roles: _Roles, requester: str) -> Task:
-        """A clause with no task of its own completes the previous one."""
-        update: dict[str, str] = {}
-        if roles.recipient:
-            update["recipient"] = roles.recipient[-1]
-        for who in roles.actor + roles.bare:
-            if task.kind in ("sign", "seal") and task.actor is None and "actor" not in update:
-                update["actor"] = who
-            elif task.kind == "transfer" and task.owner is None and "owner" not in update:
-                update["owner"] = who
-            elif "recipient" not in update and task.recipient == requester:
-                update["recipient"] = who
-        return task.model_copy(update=update) if update else task
 
     def _unsupported_facility(self, facility_id: str) -> bool:
         """A facility whose operations are none the assistant can run (a meeting room)."""
@@ -590,7 +263,7 @@ class InstructionParser:
         following = mentions[n + 1] if n + 1 < len(mentions) else None
         if m.possessive and following is not None and following.kind == "item":
             return True  # "Smith's stapler"
-        prev = _prev_word(tokens, m.start, skip_titles=False)
+        prev = prev_word(tokens, m.start, skip_titles=False)
         capital = m.text[:1].isupper() and m.start > 0
         titled = prev in ("dr", "mr", "mrs", "ms", "prof", "professor", "doctor")
         return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
@@ -611,7 +284,7 @@ class InstructionParser:
         """Whether ``task`` acts on an item of ``type_id`` (as its item, source or product)."""
         if task.item == type_id:
             return True
-        if task.kind in _FILE_KINDS and self._kinds[type_id] in ("electronic", "personal"):
+        if task.kind in FILE_KINDS and self._kinds[type_id] in ("electronic", "personal"):
             return True  # "print my report", "email my contract"
         return (task.kind, type_id) in {
             ("print", self._printout),
@@ -646,10 +319,6 @@ class InstructionParser:
         return self.office.item_type(type_id).name
 
 
-def _product(office: Office, shape: OperationShape) -> str | None:
-    return next((o.product for o in office.with_shape(shape)), None)
-
-
 def _settled_by_later_sentence(mentions: list[Mention], gaps: list[str]) -> list[Mention]:
     """ "Bring me Zhnag's stapler. Zhang Wei": a later sentence that names one of the people
     an ambiguous name may mean settles it (the answer to "who do you mean?"), and is used up."""
@@ -669,7 +338,7 @@ def _settled_by_later_sentence(mentions: list[Mention], gaps: list[str]) -> list
     return [m for k, m in enumerate(out) if k not in used]
 
 
-def _named_later(clauses: list[_Clause], first: int) -> tuple[int, str] | None:
+def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:
     """A clause from ``first`` on that only names one person (an answer like "Zhang Wei" or
     "I mean Wang"): its index and the person."""
     for k in range(first, len(clauses)):
@@ -680,28 +349,6 @@ def _named_later(clauses: list[_Clause], first: int) -> tuple[int, str] | None:
         if len(people) == 1 and len(next(iter(people))) == 1:
             return k, next(iter(people))[0]
     return None
-
-
-def _recipient_of(objects: list[Mention], k: int, roles: _Roles, default: str) -> str:
-    """Whom one of several objects is for: a "for/to X" right after it ("a coffee for me and
-    some water for Wang"), else one named before all objects ("get me X and Y"), else the
-    clause's recipient ("take my book and my pen to Wang")."""
-    m = objects[k]
-    end = objects[k + 1].start if k + 1 < len(objects) else 1 << 30
-    return (
-        roles.recipient_between(m.end, end)
-        or roles.recipient_between(0, objects[0].start)
-        or default
-    )
-
-
-def _prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:
-    from assistantx.memory.names import TITLES
-
-    k = start - 1
-    while k >= 0 and skip_titles and tokens[k].word in TITLES:
-        k -= 1
-    return tokens[k].word if k >= 0 else ""
 
 
 def _gaps(text: str, tokens: list[Token]) -> list[str]:

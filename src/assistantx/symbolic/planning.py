@@ -19,13 +19,14 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.adapters.lock.base import Purpose
+from assistantx.english import wording
 from assistantx.memory.graph import LongTermMemory
 from assistantx.office import Office
 from assistantx.symbolic.evidence import Evidence
 from assistantx.symbolic.roles import Role, RoleKind, Roles, RoleState
-from assistantx.task_schema import Task, TaskFrame, operation_of
+from assistantx.task_schema import Task, TaskFrame, kind_shape, operation_of
 from assistantx.trace import Plan, SubGoal
-from assistantx.wording import PURPOSE_TEXT, item_phrase, item_type_name, person_name
+from assistantx.wording import item_type_name, person_name, purpose_text
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
 
@@ -367,9 +368,9 @@ class Planner:
         done = len(items) == len(phase.legs) and all(ev.used(i, p) for i, p in items)
         person = state.person if state.bound else None
         place = self.roles.meeting_place(phase.role, person, ltm) if person else None
-        what = ", ".join(
-            PURPOSE_TEXT[p].format(item=item_phrase(self.office, i)) for i, p in items
-        ) or role_text(phase.role, self.office)
+        what = ", ".join(purpose_text(self.office, p, i) for i, p in items) or role_text(
+            phase.role, self.office
+        )
         who = (
             person_name(self.office, person)
             if person
@@ -430,28 +431,17 @@ def _role_key(phase: Phase) -> str | None:
     return phase.target_role.key
 
 
-# What a role's person is asked to do, in words (role kinds are internal tokens).
-_ROLE_VERBS: dict[str, str] = {
-    "lend": "lend {a}",
-    "give": "hand over {the}",
-    "keep": "take {the} out for the robot",
-    "receive": "receive the delivery",
-    "print": "print {the}",
-    "copy": "copy {the}",
-    "sign": "sign {the}",
-    "seal": "stamp {the} with the seal",
-    "produce": "make {a}",
-    "heat": "heat {the}",
-    "send_file": "send {the}",
-}
-
-
 def role_text(role: Role, office: Office) -> str:
     """What the role's person is asked to do, in words: "lend a stapler"."""
     thing = item_type_name(office, role.item_type) if role.item_type else "it"
     article = "" if thing == "it" else "a "
     the = thing if thing == "it" else f"the {thing}"
-    return _ROLE_VERBS.get(role.kind, "help").format(a=f"{article}{thing}", the=the)
+    shape = kind_shape(role.kind)
+    if shape is not None and shape != "make":  # the office's own name for its operation
+        op = role.operation or next((o.id for o in office.with_shape(shape)), None)
+        verb = office.operation(op).name if op else role.kind
+        return f"{verb} {the}"
+    return wording("role_wording").get(role.kind, "help").format(a=f"{article}{thing}", the=the)
 
 
 def describe(task: Task, office: Office, you: str | None = None) -> str:
@@ -472,13 +462,15 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
+    op = operation_of(office, task)
+    verb = office.operation(op).name if op else task.kind  # the office's word ("scan")
     match task.kind:
         case "transfer":
             return f"bring {whose} to {to}"
         case "print":
-            return f"print {owner_s(task.owner)} file for {to}"
+            return f"{verb} {owner_s(task.owner)} file for {to}"
         case "copy":
-            return f"copy {whose} for {to}"
+            return f"{verb} {whose} for {to}"
         case "sign":
             return f"get {whose} signed by {name(task.actor)}"
         case "seal":
@@ -486,7 +478,7 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         case "produce":
             return f"get {item} for {to}"
         case "heat":
-            return f"heat {whose} for {to}"
+            return f"{verb} {whose} for {to}"
         case "send_file":
             return f"pass {owner_s(task.owner)} file to {to}"
     return task.kind  # pragma: no cover

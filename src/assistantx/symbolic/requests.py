@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx import english
 from assistantx.office import Office
 from assistantx.symbolic._lexicon import Lexicon
 from assistantx.symbolic.frames import NOT_UNDERSTOOD, InstructionParser
@@ -26,7 +27,7 @@ _REQUEST_WORDING = re.compile(
     r"i'd like|i would like|help me|i'd need)\b",
     re.IGNORECASE,
 )
-_OPENERS = frozenset({"hi", "hey", "hello", "ok", "okay", "so", "and", "also", "now", "then"})
+_OPENERS = english.words("openers")
 
 
 class RequestRecognizer:

@@ -18,30 +18,13 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.memory.graph import LongTermMemory
-from assistantx.office import Office, OperationShape
+from assistantx.office import Office
 from assistantx.symbolic.evidence import Evidence, Question
+from assistantx.task_schema import TaskKind, kind_shape
 
 DistanceFn = Callable[[str, str], float]
-RoleKind = Literal[
-    "lend",
-    "give",
-    "keep",
-    "receive",
-    "print",
-    "copy",
-    "sign",
-    "seal",
-    "produce",
-    "heat",
-    "send_file",
-]
-# The shape of office operation each facility role runs (office.Operation.shape).
-_ROLE_SHAPE: dict[str, OperationShape] = {
-    "print": "render",
-    "copy": "transform",
-    "heat": "treat",
-    "produce": "make",
-}
+# A role is one of the person-to-person parts of a transfer, or the task kind it fills.
+RoleKind = Literal["lend", "give", "keep", "receive", TaskKind]
 RoleStatus = Literal["bound", "ask", "waiting", "group", "group_waiting", "exhausted"]
 
 # How long an availability observation stays true (s): people come and go.
@@ -104,7 +87,7 @@ class Roles:
 
     def _operation_name(self, role: Role) -> str:
         """How the office names the operation the role runs at its facility ("print")."""
-        shape = _ROLE_SHAPE.get(role.kind)
+        shape = kind_shape(role.kind)
         if role.facility is not None:
             for op_id in self.office.facility(role.facility).operations:
                 op = self.office.operation(op_id)

@@ -21,9 +21,10 @@ Then two rewrites make the rest readable by the frame parser: a thing named by i
 ("something to cut this with") becomes the office's item type declared for that purpose, and
 "another one" after a stated condition ("Zhang's stapler is broken") becomes that item.
 
-The English words live in ``english.yaml`` beside this module; the office's words (people,
-items, facilities, purposes) come from the office file. Pieces are removed from the original
-text by their character spans, never re-joined, so what is left parses as the person wrote it.
+The English words live in the package's ``data/english.yaml`` (``assistantx.english``); the
+office's words (people, items, facilities, purposes) come from the office file. Pieces are
+removed from the original text by their character spans, never re-joined, so what is left
+parses as the person wrote it.
 """
 
 from __future__ import annotations
@@ -32,24 +33,19 @@ import functools
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Literal
 
-import yaml
-
+from assistantx.english import entries_of
+from assistantx.english import words as english_words
 from assistantx.memory.names import normalize
 from assistantx.office import Office
 from assistantx.symbolic._lexicon import Lexicon
 from assistantx.task_schema import DeclineOutcome, Evidence, Hint
 
-ENGLISH = Path(__file__).with_name("english.yaml")
-
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
 _SENTENCE_END = re.compile(r"[.!?;\n]+")
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
-_DETERMINERS = frozenset(
-    "a an the my your his her our their this that these those some me it them".split()
-)
+_DETERMINERS = english_words("screen_determiners")
 
 
 @dataclass(frozen=True)
@@ -80,11 +76,7 @@ class English:
 
 @functools.cache
 def english() -> English:
-    raw = yaml.safe_load(ENGLISH.read_text(encoding="utf-8"))
-    for key, entries in raw.items():
-        for entry in entries:
-            if not isinstance(entry, str):  # YAML reads a bare off/on/no as a boolean
-                raise TypeError(f"{ENGLISH}: {key}: {entry!r} is not a string; quote it")
+    raw = entries_of()
 
     def phrases(key: str) -> tuple[tuple[str, ...], ...]:
         # longest first, so "throw away" wins over "throw"

@@ -17,6 +17,8 @@ from pydantic import BaseModel, Field
 # What the person does at the locker: put the item in, take it out, or take it out, work on
 # it (sign, seal, copy, heat) and put it back; "produce" = make it at a facility and put it in.
 Purpose = Literal["deposit", "collect", "sign", "seal", "copy", "heat", "produce"]
+# The purposes for which the person takes the item out, works on it and puts it back.
+WORK_PURPOSES: frozenset[Purpose] = frozenset({"sign", "seal", "copy", "heat"})
 
 LockEventKind = Literal["door_opened", "door_closed", "code_accepted", "code_rejected"]
 

@@ -1,0 +1,75 @@
+"""The frame parser's priority rule tables (issue 16): each rule, and the order between them.
+
+``PERSON_RULES`` gives a named person their part in a clause and ``KIND_RULES`` the one task
+a clause about a document asks for; the first rule that applies wins, so each case below
+names the rule it must reach, through the real parser on the default office.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.office import Office
+from assistantx.symbolic import InstructionParser
+from assistantx.symbolic._kinds import KIND_RULES
+from assistantx.symbolic._lexicon import Mention
+from assistantx.symbolic._parties import PERSON_RULES, PersonSite, person_rule
+
+
+def _site(
+    prev: str = "", nxt: str = "", following: Mention | None = None, **kw: bool
+) -> PersonSite:
+    return PersonSite(prev, nxt, following, kw.get("possessive", False), kw.get("back", False))
+
+
+_DESK = Mention("word", 3, 4, ("desk",))
+_SIGN = Mention("cue", 3, 4, ("sign",))
+_ITEM = Mention("item", 3, 4, ("stapler",))
+
+PERSON_CASES = [
+    (_site("at", following=_DESK, possessive=True), "at Wang's desk: met there"),
+    (_site("from", following=_DESK, possessive=True), "from Wang's desk: the source"),
+    (_site("", following=_DESK, possessive=True), "Wang's desk: named, no role yet"),
+    (_site("get", following=_SIGN, possessive=True), "Wang's signature: Wang signs"),
+    (_site("from", following=_ITEM, possessive=True), "Wang's stapler: an owner of the item"),
+    (_site("from"), "from Wang: the source"),
+    (_site("by"), "by Wang: the doer"),
+    (_site("to", back=True), "back to Wang: the owner, given back"),
+    (_site("to"), "to / for / with Wang: the recipient"),
+    (_site("get", nxt="to"), "Wang to sign, ask Wang: the doer"),
+    (_site("ask"), "Wang to sign, ask Wang: the doer"),
+    (_site("bring", following=_ITEM), "give Wang a stapler: the recipient"),
+    (_site("bring", following=_SIGN), "otherwise: named, no role yet"),
+    (_site("and"), "otherwise: named, no role yet"),
+]
+
+
+@pytest.mark.parametrize(("site", "rule"), PERSON_CASES, ids=[r for _, r in PERSON_CASES])
+def test_the_first_person_rule_that_applies_wins(site: PersonSite, rule: str) -> None:
+    assert person_rule(site).name == rule
+
+
+def test_every_person_rule_is_reached() -> None:
+    assert {r.name for r in PERSON_RULES} == {rule for _, rule in PERSON_CASES}
+
+
+KIND_CASES = [
+    (
+        "Get Zhang Wei to sign my contract and copy it.",
+        "sign",
+        "a signature, whatever else is said",
+    ),
+    ("Please stamp my contract with the seal.", "seal", "a seal on a document"),
+    ("Please heat my lunch.", "heat", "heating, unless a product is asked for"),
+    ("Print my report and photocopy my contract.", "print", "printing the requester's file"),
+    ("Please photocopy my contract.", "copy", "copying a document (not a file)"),
+]
+
+
+@pytest.mark.parametrize(("text", "kind", "rule"), KIND_CASES, ids=[c[2] for c in KIND_CASES])
+def test_a_clause_about_a_document_is_one_task_by_the_first_rule(
+    office: Office, text: str, kind: str, rule: str
+) -> None:
+    frame = InstructionParser(office).parse(text, "lee")
+    assert [t.kind for t in frame.tasks][:1] == [kind], (frame.question, frame.decline)
+    assert any(r.name.startswith(rule) for r in KIND_RULES)
