@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import pytest
 from scripted_reasoner import ScriptedReasoner, Step
 
-from assistantx.actions import Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.actions import Inquire, SendQR, Stop, Wait, WaitInPlace
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.assistant import Assistant, AssistantParts
 from assistantx.clock import WallClock
@@ -55,6 +55,14 @@ async def lock_server() -> AsyncIterator[tuple[LockServer, LockKeys]]:
         yield server, keys
     finally:
         await server.stop()
+
+
+def asked(person: str) -> list[Step]:
+    """The steps that ask ``person`` first: the loop hands a code only to someone who answered."""
+    return [
+        [Inquire(contact=person, question="Could you lend Lee your stapler?")],
+        [Wait(reason=f"{person}'s answer", timeout_s=600)],
+    ]
 
 
 @dataclass
@@ -117,11 +125,12 @@ async def test_a_timed_out_hand_over_code_is_refused_after_the_instruction(
 
     script = Script(
         [
-            [Move(place="wang"), SendQR(contact="wang", item="stapler:wang")],
+            *asked("wang"),
+            # The robot stays in the meeting room: Wang agreed, but does not come there.
+            [SendQR(contact="wang", item="stapler:wang")],
             [WaitInPlace(person="wang", timeout_s=60)],
             after_timeout,
         ],
-        unavailable=("wang",),  # Wang never comes to the robot
     )
     async with _rig(office, lock_server, script) as rig:
         stm = await rig.assistant.submit("lee", "bring me Wang's stapler")
@@ -138,6 +147,7 @@ async def test_an_ended_instructions_unused_code_is_refused(
 ) -> None:
     script = Script(
         [
+            *asked("zhang"),
             [SendQR(contact="zhang", item="stapler:zhang")],
             [Stop(outcome="done", summary="Never mind.")],
         ]
@@ -155,6 +165,7 @@ async def test_a_cancelled_instructions_code_is_refused(
 ) -> None:
     script = Script(
         [
+            *asked("zhang"),
             [SendQR(contact="zhang", item="stapler:zhang")],
             [Wait(reason="a long wait", timeout_s=3600)],
         ]
@@ -177,6 +188,7 @@ async def test_a_shutdown_keeps_the_codes_of_instructions_that_will_resume(
 ) -> None:
     script = Script(
         [
+            *asked("zhang"),
             [SendQR(contact="zhang", item="stapler:zhang")],
             [Wait(reason="a long wait", timeout_s=3600)],
         ]

@@ -220,4 +220,5 @@ async def test_a_broken_reasoner_is_reported_in_words_with_details_in_the_trace(
     assert told == (
         "[failed] I could not complete this: my reasoning model did not give a usable answer."
     )
-    assert "http://10.1.2.3:8000" in (stm.trace.summary or "")  # for the operator
+    assert stm.trace.summary == told.removeprefix("[failed] ")
+    assert "http://10.1.2.3:8000" in stm.trace.steps[-1].feedback[0]  # for the operator

@@ -428,7 +428,7 @@ class InstructionRunner:
                 )
             except Exception:
                 logger.exception("could not tell %s the outcome", stm.requester)
-            self._close(stm, outcome, f"{summary} ({detail})" if detail else summary)
+            self._close(stm, outcome, summary)
 
 
 def _in_words(exc: AssistantXError) -> str:
