@@ -9,6 +9,7 @@
     ├── ActionError                 an action that is invalid in the current state
     ├── AdapterError                an outside part (messenger, robot, lock) failed
     │   ├── MessengerError
+    │   │   └── UnreachableContactError  no account or room for that person or group
     │   ├── RobotError
     │   │   ├── UnreachableError    goal outside the map, inside an obstacle, or cut off
     │   │   ├── BlockedError        the path became blocked while driving
@@ -82,6 +83,11 @@ class AdapterError(AssistantXError):
 
 class MessengerError(AdapterError):
     """The messenger could not deliver or receive."""
+
+
+class UnreachableContactError(MessengerError):
+    """The messenger has no way to reach this person or group at all (no account, no room):
+    trying again cannot help, so the loop records the person as unreachable."""
 
 
 class RobotError(AdapterError):

@@ -77,15 +77,37 @@ def robot_whereabouts(office: Office, robot: RobotBase) -> str:
     return f"near {nearest.name}"
 
 
+def _person_or_group_name(office: Office, contact: str) -> str:
+    for person in office.people:
+        if person.id == contact:
+            return person.name
+    for group in office.groups:
+        if group.id == contact:
+            return group.name
+    return "them"
+
+
+def _failed_action_in_words(office: Office, action: Action) -> str:
+    """ "I could not ask Wang Fang": what failed, with names, never an action's wire name."""
+    if isinstance(action, Move):
+        return f"I could not get to {place_name(office, action.place)}"
+    contact = getattr(action, "contact", None) or getattr(action, "target", None)
+    who = _person_or_group_name(office, contact) if isinstance(contact, str) else "them"
+    doing = {
+        "inquire": f"ask {who}",
+        "inform": f"send {who} a message",
+        "send_qr": f"send {who} a locker code",
+        "forward_file": f"forward the file to {who}",
+        "wait_in_place": f"complete the hand-over with {who}",
+    }.get(action.type, "finish a step")
+    return f"I could not {doing}"
+
+
 def failure_summary(
     office: Office, stm: ShortTermMemory, robot: RobotBase, result: ActionResult
 ) -> str:
     action: Action = result.action
-    what = (
-        f"I could not get to {place_name(office, action.place)}"
-        if isinstance(action, Move)
-        else f"'{action.type}' kept failing"
-    )
+    what = _failed_action_in_words(office, action)
     reason = _REASONS.get(result.error or "", result.observation.removeprefix("failed: "))
     lines = [f"{what}, twice for the same reason ({reason}), so I stopped trying."]
     where = robot_whereabouts(office, robot)

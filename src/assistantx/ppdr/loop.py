@@ -39,6 +39,7 @@ from assistantx.errors import (
     ModelBehaviorError,
     ReasonerError,
     RobotError,
+    UnreachableContactError,
 )
 from assistantx.executors import Executor
 from assistantx.memory.graph import LongTermMemory
@@ -309,6 +310,7 @@ class InstructionRunner:
             if not result.ok:
                 self._info += 1  # a failure or a timeout is news
                 feedback.append(f"{signature} did not succeed: {result.observation}")
+                feedback += self._note_unreachable(stm, step, action, result)
             if isinstance(action, Wait):
                 # a wait's own timeout is no reason to wait again: only news from elsewhere is
                 self._last_seen[seen_key] = self._info
@@ -329,6 +331,25 @@ class InstructionRunner:
             if not result.ok:
                 break  # the rest of the decision assumed this one worked
         return feedback
+
+    def _note_unreachable(
+        self, stm: ShortTermMemory, step: TraceStep, action: Action, result: ActionResult
+    ) -> list[str]:
+        """A person the messenger has no way to reach is, for this office, unavailable: memory
+        learns it, so planning turns to someone else instead of trying them again."""
+        if result.error != UnreachableContactError.__name__:
+            return []
+        contact = getattr(action, "contact", None) or getattr(action, "target", None)
+        if not isinstance(contact, str):
+            return []
+        try:
+            person = self.resolver.person(contact)
+        except GroundingError:
+            return []  # a group: nothing to record about a person
+        update = AvailabilityUpdate(
+            person=person, available=False, evidence="cannot be reached by message"
+        )
+        return self._apply_updates(stm, step, [update])
 
     @staticmethod
     def _unagreed_handover(stm: ShortTermMemory, action: Action) -> str | None:

@@ -62,7 +62,7 @@ from assistantx.adapters.messenger.matrix.normalize import (
 from assistantx.adapters.messenger.matrix.rooms import RoomDirectory
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
-from assistantx.errors import MessengerError
+from assistantx.errors import MessengerError, UnreachableContactError
 
 logger = logging.getLogger(__name__)
 
@@ -368,7 +368,7 @@ class MatrixMessenger(Messenger):
         m.direct and private, or new."""
         user_id = self.config.people.get(person)
         if user_id is None:
-            raise MessengerError(
+            raise UnreachableContactError(
                 f"{person} cannot be reached on Matrix: no Matrix account is configured for "
                 "them; reach them another way or ask someone else"
             )

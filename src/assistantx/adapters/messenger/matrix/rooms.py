@@ -22,7 +22,7 @@ from assistantx.adapters.messenger.matrix.config import MatrixConfig
 from assistantx.adapters.messenger.matrix.ingest import RoomEvent
 from assistantx.adapters.messenger.matrix.normalize import Rooms
 from assistantx.adapters.messenger.matrix.store import EventStore
-from assistantx.errors import MessengerError
+from assistantx.errors import UnreachableContactError
 
 logger = logging.getLogger(__name__)
 
@@ -68,7 +68,9 @@ class RoomDirectory:
                 return room_id
         target = self.config.groups.get(group)
         if target is None:
-            raise MessengerError(f"group {group!r} has no Matrix room in the configuration")
+            raise UnreachableContactError(
+                f"group {group!r} has no Matrix room in the configuration"
+            )
         room_id = await client.resolve_alias(target) if target.startswith("#") else target
         self.rooms.groups[room_id] = group
         return room_id

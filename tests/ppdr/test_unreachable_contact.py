@@ -1,0 +1,103 @@
+"""A person the messenger cannot reach at all (no account on it) is, for this instruction,
+unavailable: memory learns it once and the assistant turns to someone else, instead of asking
+the same person again until the instruction breaks off (seen on Matrix with Wang, who has no
+Matrix account, while Zhang had)."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.adapters.messenger.base import OutboundMessage, SentMessage
+from assistantx.assistant import Assistant, AssistantParts
+from assistantx.errors import UnreachableContactError
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.office import Office, load_office
+from assistantx.ppdr.failures import failure_summary
+from assistantx.reasoners import reasoner_factory
+from assistantx.settings import Settings
+from assistantx.sim.office import SimMessenger, SimOffice
+
+
+@pytest.fixture(scope="module")
+def office() -> Office:
+    return load_office()
+
+
+class NoAccountFor(SimMessenger):
+    """The simulated office's messenger, where some people have no account (a real bridge
+    raises this when a person has no Matrix user configured)."""
+
+    def __init__(self, office_sim: SimOffice, without: set[str]) -> None:
+        super().__init__(office_sim)
+        self.without = without
+        self.refused: list[str] = []
+
+    async def send(self, message: OutboundMessage) -> SentMessage:
+        if message.chat.kind == "dm" and message.chat.id in self.without:
+            self.refused.append(message.chat.id)
+            raise UnreachableContactError(f"{message.chat.id} cannot be reached on this messenger")
+        return await super().send(message)
+
+
+async def _fetch_stapler(office: Office, without: set[str]) -> tuple[ShortTermMemory, list[str]]:
+    sim = SimOffice(office)
+    messenger = NoAccountFor(sim, without)
+    sim.messenger = messenger
+    assistant = Assistant(
+        AssistantParts(
+            office=office,
+            messenger=messenger,
+            robot=sim.robot,
+            locker=sim.locker,
+            clock=sim.clock,
+            reasoner_factory=reasoner_factory("symbolic", office, Settings()),
+            reasoner_name="symbolic",
+        )
+    )
+
+    async def register(stm: ShortTermMemory) -> None:
+        sim.register_instruction(stm.instruction_id, stm.requester)
+
+    assistant.on_instruction_start(register)
+    await sim.locker.start()
+    await assistant.start()
+    try:
+        stm = await assistant.submit("lee", "bring me a stapler")
+        stm = await assistant.wait(stm.instruction_id)
+    finally:
+        await assistant.stop()
+        await sim.locker.stop()
+    return stm, messenger.refused
+
+
+async def test_an_unreachable_owner_is_asked_once_then_someone_else(office: Office) -> None:
+    first_owner = "wang"  # the first known stapler owner the embedded planner asks
+    stm, refused = await _fetch_stapler(office, {first_owner})
+    assert refused == [first_owner]  # tried once, never again
+    assert stm.trace.outcome == "done", stm.trace.summary
+    applied = [a.update for step in stm.trace.steps for a in step.applied]
+    assert any(
+        getattr(u, "person", None) == first_owner and getattr(u, "available", None) is False
+        for u in applied
+    )
+    lenders = {t.person for t in stm.dialogue if t.direction == "in"}
+    assert first_owner not in lenders and lenders  # someone else lent it
+
+
+def test_a_repeated_failure_is_told_with_names_not_action_names(office: Office) -> None:
+    from assistantx.actions import Inquire
+    from assistantx.trace import ActionResult, Trace
+
+    trace = Trace(instruction_id="ins-x", requester="lee", text="t", reasoner="x", started_at=0.0)
+    stm = ShortTermMemory(instruction_id="ins-x", requester="lee", text="t", trace=trace)
+    result = ActionResult(
+        action=Inquire(contact="wang", question="Could you lend your stapler?"),
+        ok=False,
+        observation="failed: the messenger is down",
+        error="MessengerError",
+        started_at=0.0,
+        ended_at=0.0,
+    )
+    told = failure_summary(office, stm, SimOffice(office).robot, result)
+    assert told.startswith(f"I could not ask {office.person('wang').name}, twice")
+    assert "inquire" not in told and "wang," not in told
