@@ -42,11 +42,17 @@ class InflationParams:
 def inflation_cost(distance_m: npt.ArrayLike, params: InflationParams) -> npt.NDArray[np.uint8]:
     """nav2's cost for a cell at ``distance_m`` from the nearest obstacle."""
     d = np.asarray(distance_m, dtype=float)
-    decay = (INSCRIBED - 1) * np.exp(-params.cost_scaling_factor * (d - params.robot_radius))
-    cost = np.where(d <= params.inflation_radius, np.floor(decay), FREE_SPACE)
-    cost = np.where(d <= params.robot_radius, INSCRIBED, cost)
-    cost = np.where(d <= 0.0, LETHAL, cost)
-    return cost.astype(np.uint8)
+    cost = np.zeros(d.shape, dtype=np.uint8)
+    # Only cells within the inflation radius get a cost: on a big building that is a small
+    # part of the map, so the exponential runs over it alone.
+    near = d <= params.inflation_radius
+    dn = d[near]
+    decay = (INSCRIBED - 1) * np.exp(-params.cost_scaling_factor * (dn - params.robot_radius))
+    values = np.floor(decay)
+    values[dn <= params.robot_radius] = INSCRIBED
+    values[dn <= 0.0] = LETHAL
+    cost[near] = values.astype(np.uint8)
+    return cost
 
 
 @dataclass(frozen=True, eq=False)
