@@ -20,6 +20,7 @@ obstacle than the grid path did over the same stretch, and resampled for the con
 from __future__ import annotations
 
 import math
+import uuid
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -57,6 +58,10 @@ class GridPlanner:
     def __init__(self, costmap: Costmap, params: PlannerParams | None = None) -> None:
         self.costmap = costmap
         self.params = params or PlannerParams()
+        # Who this planner is and which costs it plans on, for a worker process that keeps
+        # planners it was sent (plan_process): update_window bumps the version.
+        self.token = uuid.uuid4().hex
+        self.version = 0
         self._labels: npt.NDArray[np.int32] | None = None
         # For snapping a start that strayed into the inscribed zone back to the nearest
         # traversable cell: made on first need (an EDT with indices is costly on big maps).
@@ -68,6 +73,7 @@ class GridPlanner:
         other = GridPlanner.__new__(GridPlanner)
         other.costmap, other.params = costmap, self.params
         other._labels, other._nearest_free = None, None
+        other.token, other.version = uuid.uuid4().hex, 0
         return other
 
     def update_window(self, window: tuple[int, int, int, int]) -> None:
@@ -75,6 +81,7 @@ class GridPlanner:
         del window  # the whole labelling is redone on next need (one pass, ~linear)
         self._labels = None
         self._nearest_free = None
+        self.version += 1
 
     def _component_labels(self) -> npt.NDArray[np.int32]:
         if self._labels is None:
