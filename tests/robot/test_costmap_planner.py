@@ -209,7 +209,8 @@ def test_bounded_search_costs_equal_a_full_graph_dijkstra_on_real_maps(name: str
         goal = grid.cell_to_world(cell[1], cell[0])
         path = planner.plan((float(start[0]), float(start[1])), (float(goal[0]), float(goal[1])))
         assert path.cost == pytest.approx(reference[cell[0], cell[1]], rel=1e-9)
-        straight = math.dist(source, (int(cell[0]), int(cell[1]))) * grid.resolution
-        detours += path.cost > 1.2 * straight + 1.0
+        dy, dx = abs(source[0] - int(cell[0])), abs(source[1] - int(cell[1]))
+        octile = (max(dy, dx) + (math.sqrt(2) - 1) * min(dy, dx)) * grid.resolution
+        detours += path.cost > 1.1 * octile + 1.0  # beyond the first search's bound
     if name == "warehouse":  # its racks make some paths detour: the bound had to widen
         assert detours >= 1

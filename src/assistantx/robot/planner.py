@@ -8,10 +8,11 @@ planner: the path keeps away from walls where there is room.
 No graph is kept between queries, so set-up is the costmap plus a 4-connected labelling
 (which tells an unreachable goal at once: without corner cutting, 8-connected moves join
 exactly the cells that 4-connected ones do) and memory grows with the free area a query
-touches. A query builds the graph only over the cells p with ``|s - p| + |p - g| <= L``
-(an ellipse round start s and goal g) and runs scipy's Dijkstra there. Every edge weighs
-at least its length, so a path of cost <= L never leaves that ellipse: a path found with
-cost <= L is optimal over the whole map. Otherwise L grows (x1.6) and the query repeats.
+touches. A query builds the graph only over the cells p with ``oct(s, p) + oct(p, g) <= L``
+(``oct``: the octile distance, the shortest 8-connected grid distance; an ellipse-like
+region round start s and goal g) and runs scipy's Dijkstra there. Every edge weighs at
+least its grid length, so a path of cost <= L never leaves that region: a path found with
+cost <= L is optimal over the whole map. Otherwise L grows (x1.4) and the query repeats.
 
 The grid path is then shortened by line-of-sight shortcuts that never pass closer to an
 obstacle than the grid path did over the same stretch, and resampled for the controller.
@@ -23,6 +24,7 @@ import math
 import uuid
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -100,12 +102,12 @@ class GridPlanner:
         if labels[start_cell] != labels[goal_cell]:
             raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
         res = self.costmap.grid.resolution
-        straight = math.dist(start_cell, goal_cell) * res
+        straight = float(_octile(start_cell[0] - goal_cell[0], start_cell[1] - goal_cell[1])) * res
         # Path costs run a few percent above the straight line in open space; start just
         # above that and widen. The last bound holds the whole map: the search then succeeds.
         height, width = self.costmap.costs.shape
         whole = 2.0 * math.hypot(height, width) * res + straight
-        limit = 1.2 * straight + 1.0
+        limit = 1.1 * straight + 1.0
         while True:
             found = self._search(start_cell, goal_cell, min(limit, whole))
             if found is not None:
@@ -113,7 +115,7 @@ class GridPlanner:
                 return self._make_path(cells, cost, start, goal)
             if limit >= whole:  # cannot happen within one component; kept as a guard
                 raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
-            limit *= 1.6
+            limit *= 1.4
 
     def plan_many(
         self, start: tuple[float, float], goals: Sequence[tuple[float, float]]
@@ -130,14 +132,14 @@ class GridPlanner:
     def _search(
         self, start: tuple[int, int], goal: tuple[int, int], limit_m: float
     ) -> tuple[npt.NDArray[np.intp], float] | None:
-        """Dijkstra over the traversable cells of the ellipse ``|s-p| + |p-g| <= limit``;
+        """Dijkstra over the traversable cells with ``oct(s,p) + oct(p,g) <= limit``;
         the optimal (cells, cost) if its cost is within the limit, else None."""
         costs = self.costmap.costs
         height, width = costs.shape
         res = self.costmap.grid.resolution
         reach = limit_m / res  # in cells
         (sy, sx), (gy, gx) = start, goal
-        # A cell beyond the foci's box by e along x has |s-p| + |p-g| >= 2e + |dx|.
+        # A cell beyond the foci's box by e along x has oct(s,p) + oct(p,g) >= 2e + |dx|.
         my = max(0.0, (reach - abs(sy - gy)) / 2)
         mx = max(0.0, (reach - abs(sx - gx)) / 2)
         y0, y1 = max(0, int(min(sy, gy) - my)), min(height, int(max(sy, gy) + my) + 1)
@@ -146,7 +148,7 @@ class GridPlanner:
         traversable = block < INSCRIBED
         ys = np.arange(y0, y1, dtype=np.float32)[:, None]
         xs = np.arange(x0, x1, dtype=np.float32)[None, :]
-        inside = np.hypot(ys - sy, xs - sx) + np.hypot(ys - gy, xs - gx) <= reach + 1e-3
+        inside = _octile(ys - sy, xs - sx) + _octile(ys - gy, xs - gx) <= reach + 1e-3
         nodes = traversable & inside
         del inside
         ids = np.full(block.shape, -1, dtype=np.int32)
@@ -244,7 +246,7 @@ def _graph(
     indices = np.empty(nnz, dtype=np.int32)
     data = np.empty(nnz, dtype=np.float64)
     offset = indptr[:-1].copy()
-    node_y, node_x = np.nonzero(nodes)
+    node_y, node_x = (v.astype(np.int32) for v in np.nonzero(nodes))
     node_cost = block[node_y, node_x].astype(np.float64)
     for (dy, dx), ok_nodes in zip(directions, valid, strict=True):
         at = offset[ok_nodes]
@@ -255,6 +257,12 @@ def _graph(
         data[at] = length * (1 + cost_penalty * mean_cost / (INSCRIBED - 1))
         offset[ok_nodes] = at + 1
     return csr_matrix((data, indices, indptr), shape=(count, count))
+
+
+def _octile(dy: Any, dx: Any) -> Any:
+    """The 8-connected grid distance (cells): no path between two cells is shorter."""
+    ay, ax = np.abs(dy), np.abs(dx)
+    return np.maximum(ay, ax) + (math.sqrt(2.0) - 1.0) * np.minimum(ay, ax)
 
 
 def _walk_back(pred: npt.NDArray[np.int32], goal: int) -> list[int]:
