@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy.ndimage import distance_transform_edt
 from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import dijkstra
 
@@ -16,6 +17,7 @@ from assistantx.robot.costmap import (
     NO_INFORMATION,
     Costmap,
     InflationParams,
+    capped_distance,
     inflation_cost,
 )
 from assistantx.robot.occupancy_map import OCCUPIED, UNKNOWN, OccupancyMap, load_map
@@ -49,6 +51,23 @@ def test_inflation_values_around_one_obstacle() -> None:
     assert costmap.cost_at(-1.0, 0.0) == NO_INFORMATION
     # Costs fall monotonically with distance.
     assert np.all(np.diff(row[20:].astype(int)) <= 0)
+
+
+def test_tiled_distance_equals_the_whole_maps_transform_within_its_reach() -> None:
+    """Tiles (512 cells a side) with a halo give the whole map's distances up to the reach,
+    across tile borders, and inf beyond; a tile with no obstacle near is all inf."""
+    rng = np.random.default_rng(4)
+    lethal = np.zeros((1300, 1100), dtype=bool)
+    lethal[:500] = rng.random((500, 1100)) < 0.0005  # sparse speckle: long distances
+    lethal[700:1000, 300:302] = True  # a wall across a tile border (512)
+    full = distance_transform_edt(~lethal) * RES
+    reach = 2.0
+    capped = capped_distance(lethal, RES, reach)
+    near = full <= reach
+    np.testing.assert_array_equal(capped[near], full[near])
+    assert np.isinf(capped[full > reach + RES]).all()
+    assert near.sum() > 100_000 and (~near).sum() > 100_000
+    assert np.isinf(capped[1100:, 800:]).all()
 
 
 def test_inflation_cost_function_and_params() -> None:
