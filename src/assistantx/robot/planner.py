@@ -87,8 +87,9 @@ class GridPlanner:
 
     def _component_labels(self) -> npt.NDArray[np.int32]:
         if self._labels is None:
-            labels, _ = label(self.costmap.traversable)
-            self._labels = np.asarray(labels, dtype=np.int32)
+            labels = np.empty(self.costmap.costs.shape, dtype=np.int32)
+            label(self.costmap.traversable, output=labels)
+            self._labels = labels
         return self._labels
 
     # -- queries ---------------------------------------------------------------------------
