@@ -210,6 +210,25 @@ def _full_graph_costs(costmap: Costmap, source: tuple[int, int], penalty: float)
     return out
 
 
+def test_a_maze_path_far_longer_than_the_map_is_found_and_optimal() -> None:
+    """A serpentine: the only way is many times the map's diagonal, beyond every bounded
+    region; the last search is unbounded and still finds the optimum."""
+    data = _grid(90, 90)
+    for row in range(6, 90, 6):
+        data[row, :] = OCCUPIED
+        if (row // 6) % 2:
+            data[row, 84:] = 0  # gap at the east end
+        else:
+            data[row, :6] = 0  # gap at the west end
+    planner = _planner(data)
+    start, goal = _centre(2, 2), _centre(2, 87)
+    path = planner.plan(start, goal)
+    diagonal = math.hypot(90, 90) * RES
+    assert path.cost > 3 * diagonal
+    reference = _full_graph_costs(planner.costmap, (2, 2), 0.0)
+    assert path.cost == pytest.approx(reference[87, 2], rel=1e-9)
+
+
 @pytest.mark.parametrize("name", ["warehouse", "tb3_sandbox"])
 def test_bounded_search_costs_equal_a_full_graph_dijkstra_on_real_maps(name: str) -> None:
     """The ellipse-bounded search (no graph kept) finds the same optimal costs as one

@@ -105,18 +105,20 @@ class GridPlanner:
         res = self.costmap.grid.resolution
         straight = float(_octile(start_cell[0] - goal_cell[0], start_cell[1] - goal_cell[1])) * res
         # Path costs run a few percent above the straight line in open space; start just
-        # above that and widen. The last bound holds the whole map: the search then succeeds.
+        # above that and widen. Once the region holds the whole map (no cell is farther
+        # than ``whole``), search it without a bound: a maze's path may be far longer.
         height, width = self.costmap.costs.shape
-        whole = 2.0 * math.hypot(height, width) * res + straight
+        whole = 3.0 * math.hypot(height, width) * res
         limit = 1.1 * straight + 1.0
-        while True:
-            found = self._search(start_cell, goal_cell, min(limit, whole))
+        while limit < whole:
+            found = self._search(start_cell, goal_cell, limit, limit)
             if found is not None:
-                cells, cost = found
-                return self._make_path(cells, cost, start, goal)
-            if limit >= whole:  # cannot happen within one component; kept as a guard
-                raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
+                return self._make_path(found[0], found[1], start, goal)
             limit *= 1.4
+        found = self._search(start_cell, goal_cell, whole, math.inf)
+        if found is None:  # cannot happen within one component; kept as a guard
+            raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
+        return self._make_path(found[0], found[1], start, goal)
 
     def plan_many(
         self, start: tuple[float, float], goals: Sequence[tuple[float, float]]
@@ -131,14 +133,14 @@ class GridPlanner:
         return paths
 
     def _search(
-        self, start: tuple[int, int], goal: tuple[int, int], limit_m: float
+        self, start: tuple[int, int], goal: tuple[int, int], region_m: float, limit_m: float
     ) -> tuple[npt.NDArray[np.intp], float] | None:
-        """Dijkstra over the traversable cells with ``oct(s,p) + oct(p,g) <= limit``;
-        the optimal (cells, cost) if its cost is within the limit, else None."""
+        """Dijkstra over the traversable cells with ``oct(s,p) + oct(p,g) <= region_m``;
+        the optimal (cells, cost) if its cost is within ``limit_m``, else None."""
         costs = self.costmap.costs
         height, width = costs.shape
         res = self.costmap.grid.resolution
-        reach = limit_m / res  # in cells
+        reach = region_m / res  # in cells
         (sy, sx), (gy, gx) = start, goal
         # A cell beyond the foci's box by e along x has oct(s,p) + oct(p,g) >= 2e + |dx|.
         my = max(0.0, (reach - abs(sy - gy)) / 2)
@@ -159,7 +161,7 @@ class GridPlanner:
         source, target = int(ids[sy - y0, sx - x0]), int(ids[gy - y0, gx - x0])
         dist, pred = dijkstra(graph, indices=source, return_predecessors=True, limit=limit_m)
         cost = float(dist[target])
-        if not cost <= limit_m:
+        if not (cost <= limit_m and math.isfinite(cost)):
             return None
         path_nodes = _walk_back(pred, target)
         cells = np.argwhere(nodes)[path_nodes] + (y0, x0)
