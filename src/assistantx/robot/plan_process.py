@@ -37,6 +37,14 @@ class _Missing(Exception):
     """The worker lacks this planner version: send its costs."""
 
 
+def _keep_in_worker(key: _Key, payload: _Payload) -> None:
+    if key not in _worker_planners:
+        grid, costs, inflation, params = payload
+        _worker_planners[key] = GridPlanner(
+            Costmap(grid, costs, np.empty((0, 0)), inflation), params
+        )
+
+
 def _plan_in_worker(
     key: _Key, payload: _Payload | None, start: tuple[float, float], goal: tuple[float, float]
 ) -> Path:
@@ -75,6 +83,15 @@ class PlanProcess:
                 path = pool.submit(_plan_in_worker, key, _payload(planner), start, goal).result()
             self._sent.add(key)
             return path
+
+    def warm(self, planner: GridPlanner) -> None:
+        """Start the worker and send it ``planner``'s costs now, so the first plan does not
+        wait for a process to start (seconds on a busy machine)."""
+        key = (planner.token, planner.version)
+        with self._lock:
+            if key not in self._sent:
+                self._ensure_pool().submit(_keep_in_worker, key, _payload(planner)).result()
+                self._sent.add(key)
 
     def close(self) -> None:
         with self._lock:

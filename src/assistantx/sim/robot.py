@@ -105,8 +105,11 @@ class ObservedRobot(RobotBase):
         return result
 
     def state(self) -> RobotState:
-        return self.base.state().model_copy(
-            update={"odometer_m": self.odometer_m, "moving": self.moving}
+        base = self.base.state()
+        # Moving once the base drives: while it still plans (in a worker process on a big
+        # map) it stands at its place with no path yet.
+        return base.model_copy(
+            update={"odometer_m": self.odometer_m, "moving": self.moving and base.moving}
         )
 
     def restore(self, place: str, odometer_m: float) -> None:

@@ -51,6 +51,7 @@ from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.geometry import FloatArray
 from assistantx.robot.navigation import NavigationParams, Navigator
 from assistantx.robot.occupancy_map import OCCUPIED, OccupancyMap, load_map
+from assistantx.robot.plan_process import PLAN_PROCESS
 from assistantx.robot.planner import GridPlanner, Path
 
 logger = logging.getLogger(__name__)
@@ -180,6 +181,11 @@ class NavigatorRobot(RobotBase):
             start=start,
             anchors_file=anchors_path,
         )
+
+    async def start(self) -> None:
+        """Start the planning worker process before the first move (see plan_process)."""
+        if self._navigator.params.plan_in_process:
+            await asyncio.to_thread(PLAN_PROCESS.warm, self._navigator.planner)
 
     @property
     def grid(self) -> OccupancyMap:
