@@ -5,7 +5,7 @@ Default: the three nav2 maps in ``<repo>/../shared/maps`` (depot, warehouse, tb3
 ``--anchor-count`` anchors are placed, seeded, in free space the robot can reach from all
 of them (assistantx.robot.anchor_check.place_anchors). Per map:
 
-- set-up: loading the map, the inflated costmap, the planner graph and AMCL's likelihood
+- set-up: loading the map, the inflated costmap, the planner's labels and AMCL's likelihood
   field (the work a robot does before its first move), wall seconds;
 - planner: a plan between every ordered pair of anchors (they are mutually reachable, so
   every pair must succeed), median and max seconds per plan;
@@ -14,7 +14,9 @@ of them (assistantx.robot.anchor_check.place_anchors). Per map:
   position errors compare the AMCL estimate with the truth at every filter update;
 - global localization and kidnapped-robot recovery, 20 seeded trials each, with the same
   parameters and success rule as bench/robot_amcl_global.py, on random poses of the
-  reachable free space;
+  reachable free space; of the failures, ``*_failed_on_lookalike_pose`` counts those whose
+  final estimate sees the map as the true pose does (median beam difference < 5 cm: a
+  symmetric map that no scan from there disambiguates); they still count as failures;
 - peak_rss_mb: the process's peak resident memory after the map (it only grows).
 
 Last stdout line: one JSON object, ``{"maps": {name: {...}}, "all_ok": bool}``.
@@ -41,7 +43,7 @@ from assistantx.robot.anchor_check import check_anchors, place_anchors
 from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.costmap import Costmap
 from assistantx.robot.diff_drive import PurePursuit, SimulatedBase
-from assistantx.robot.lidar import Lidar
+from assistantx.robot.lidar import Lidar, cast_rays
 from assistantx.robot.navigation import NavigationParams, Navigator, shared_planner
 from assistantx.robot.occupancy_map import OccupancyMap, load_map
 
@@ -172,8 +174,27 @@ def tour(grid: OccupancyMap, anchors: dict[str, Anchor], legs: int, seed: int) -
     }
 
 
+LOOKALIKE_M = 0.05  # median beam difference below the LiDAR's noise: the map looks the same
+
+
+def looks_alike(world: RealWorld, pf: ParticleFilter, true_pose: np.ndarray) -> bool:
+    """Whether the map, seen from the filter's (wrong) estimate, gives the scan it gives from
+    the true pose: noise-free ranges of every beam within LOOKALIKE_M (median), so no
+    scan from here can tell the two poses apart."""
+    est = pf.estimate
+    if est is None:
+        return False
+    blocked, grid, lidar = world.grid.obstacles, world.grid, world.lidar
+    seen = cast_rays(blocked, grid, true_pose, lidar.angles, lidar.params.max_range_m)
+    there = np.array([est.x, est.y, est.yaw])
+    other = cast_rays(blocked, grid, there, lidar.angles, lidar.params.max_range_m)
+    return bool(np.median(np.abs(seen - other)) < LOOKALIKE_M)
+
+
 def localization(world: RealWorld, trials: int) -> dict[str, object]:
-    global_ok = kidnap_ok = 0
+    """Successes, and of the failures those that ended on a look-alike pose (still failures:
+    reported so that a symmetric map's ambiguity is visible, not hidden)."""
+    global_ok = kidnap_ok = global_alike = kidnap_alike = 0
     for trial in range(trials):
         rng = np.random.default_rng(1000 + trial)
         start = world.random_pose(rng)
@@ -182,7 +203,9 @@ def localization(world: RealWorld, trials: int) -> dict[str, object]:
         pf.global_localization()
         ok = run_filter(world, pf, base, world.route(start, rng), GLOBAL_WITHIN + 10, rng)  # type: ignore[arg-type]
         found = first_lasting(ok)
-        global_ok += found is not None and found <= GLOBAL_WITHIN
+        success = found is not None and found <= GLOBAL_WITHIN
+        global_ok += success
+        global_alike += not success and looks_alike(world, pf, base.true_pose)
     for trial in range(trials):
         rng = np.random.default_rng(2000 + trial)
         start = world.random_pose(rng)
@@ -193,8 +216,16 @@ def localization(world: RealWorld, trials: int) -> dict[str, object]:
         base.teleport(world.random_pose(rng))
         ok = run_filter(world, pf, base, world.route(base.true_pose, rng), KIDNAP_WITHIN + 10, rng)  # type: ignore[arg-type]
         found = first_lasting(ok)
-        kidnap_ok += found is not None and found <= KIDNAP_WITHIN
-    return {"trials": trials, "global_success": global_ok, "kidnap_success": kidnap_ok}
+        success = found is not None and found <= KIDNAP_WITHIN
+        kidnap_ok += success
+        kidnap_alike += not success and looks_alike(world, pf, base.true_pose)
+    return {
+        "trials": trials,
+        "global_success": global_ok,
+        "global_failed_on_lookalike_pose": global_alike,
+        "kidnap_success": kidnap_ok,
+        "kidnap_failed_on_lookalike_pose": kidnap_alike,
+    }
 
 
 def run_map(
@@ -265,8 +296,10 @@ def main() -> None:
             f"{r['planner_pairs']} pairs, median {r['planning_median_s']} s; tour "
             f"{r['legs'] - r['legs_failed']}/{r['legs']} legs, error mean "
             f"{r['mean_position_error_m']} m p95 {r['p95_position_error_m']} m; global "
-            f"{r.get('global_success')}/{args.trials}, kidnap {r.get('kidnap_success')}/"
-            f"{args.trials}; peak {r['peak_rss_mb']} MB; {r['wall_s']} s",
+            f"{r.get('global_success')}/{args.trials} ({r.get('global_failed_on_lookalike_pose')}"
+            f" of the failures on a look-alike pose), kidnap {r.get('kidnap_success')}/"
+            f"{args.trials} ({r.get('kidnap_failed_on_lookalike_pose')}); "
+            f"peak {r['peak_rss_mb']} MB; {r['wall_s']} s",
             flush=True,
         )
         if r["leg_failures"]:

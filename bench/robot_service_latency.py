@@ -6,7 +6,8 @@ warehouse map (``<repo>/../shared/maps``, or ``--map``), the office's locations 
 its reachable free space (placed, seeded). A client in its own thread reads ``GET
 /v1/robot`` every ``--interval-s`` seconds: first ``--idle-s`` seconds with the robot idle,
 then while the robot drives a tour of ``--legs`` legs between far-apart places (planning,
-LiDAR, AMCL, obstacle layer and costmap run in a worker thread). Reports p50/p99/max per
+LiDAR, AMCL, obstacle layer and costmap run in a worker thread, the search in a worker
+process). Reports p50/p99/max per
 phase. Last stdout line: one JSON object.
 
 Run: python bench/robot_service_latency.py [--map YAML] [--legs N] [--idle-s S]

@@ -6,6 +6,9 @@ import math
 
 import numpy as np
 import pytest
+from scipy.ndimage import distance_transform_edt
+from scipy.sparse import csr_matrix
+from scipy.sparse.csgraph import dijkstra
 
 from assistantx.errors import UnreachableError
 from assistantx.robot.costmap import (
@@ -14,10 +17,12 @@ from assistantx.robot.costmap import (
     NO_INFORMATION,
     Costmap,
     InflationParams,
+    capped_distance,
     inflation_cost,
 )
-from assistantx.robot.occupancy_map import OCCUPIED, UNKNOWN, OccupancyMap
+from assistantx.robot.occupancy_map import OCCUPIED, UNKNOWN, OccupancyMap, load_map
 from assistantx.robot.planner import GridPlanner, PlannerParams, resample_polyline
+from robot.conftest import shared_map
 
 RES = 0.05
 
@@ -46,6 +51,23 @@ def test_inflation_values_around_one_obstacle() -> None:
     assert costmap.cost_at(-1.0, 0.0) == NO_INFORMATION
     # Costs fall monotonically with distance.
     assert np.all(np.diff(row[20:].astype(int)) <= 0)
+
+
+def test_tiled_distance_equals_the_whole_maps_transform_within_its_reach() -> None:
+    """Tiles (512 cells a side) with a halo give the whole map's distances up to the reach,
+    across tile borders, and inf beyond; a tile with no obstacle near is all inf."""
+    rng = np.random.default_rng(4)
+    lethal = np.zeros((1300, 1100), dtype=bool)
+    lethal[:500] = rng.random((500, 1100)) < 0.0005  # sparse speckle: long distances
+    lethal[700:1000, 300:302] = True  # a wall across a tile border (512)
+    full = distance_transform_edt(~lethal) * RES
+    reach = 2.0
+    capped = capped_distance(lethal, RES, reach)
+    near = full <= reach
+    np.testing.assert_array_equal(capped[near], full[near])
+    assert np.isinf(capped[full > reach + RES]).all()
+    assert near.sum() > 100_000 and (~near).sum() > 100_000
+    assert np.isinf(capped[1100:, 800:]).all()
 
 
 def test_inflation_cost_function_and_params() -> None:
@@ -158,3 +180,75 @@ def test_plan_many_matches_single_queries(office_planner: GridPlanner) -> None:
         single = office_planner.plan(start, goal)
         assert path.cost == pytest.approx(single.cost)
         assert path.length_m == pytest.approx(single.length_m)
+
+
+def _full_graph_costs(costmap: Costmap, source: tuple[int, int], penalty: float) -> np.ndarray:
+    """The previous planner's algorithm, as the reference: one graph over every traversable
+    cell (COO-built, both directions) and an unbounded Dijkstra; the cost to every cell."""
+    traversable = costmap.traversable
+    height, width = traversable.shape
+    node = np.full(traversable.shape, -1, dtype=np.int64)
+    node[traversable] = np.arange(int(traversable.sum()))
+    cost = costmap.costs.astype(np.float64)
+    rows, cols, weights = [], [], []
+    for dy, dx in ((0, 1), (1, 0), (1, 1), (1, -1)):
+        ys, ys2 = slice(0, height - dy), slice(dy, height)
+        xs, xs2 = slice(max(0, -dx), width - max(0, dx)), slice(max(0, dx), width + min(0, dx))
+        ok = traversable[ys, xs] & traversable[ys2, xs2]
+        if dy and dx:
+            ok &= traversable[ys2, xs] & traversable[ys, xs2]
+        mean = (cost[ys, xs] + cost[ys2, xs2])[ok] / 2
+        rows.append(node[ys, xs][ok])
+        cols.append(node[ys2, xs2][ok])
+        weights.append(costmap.grid.resolution * math.hypot(dy, dx) * (1 + penalty * mean / 252))
+    r, c, w = np.concatenate(rows), np.concatenate(cols), np.concatenate(weights)
+    n = int(traversable.sum())
+    graph = csr_matrix((np.r_[w, w], (np.r_[r, c], np.r_[c, r])), shape=(n, n))
+    dist = dijkstra(graph, indices=int(node[source]))
+    out = np.full(traversable.shape, np.inf)
+    out[traversable] = dist
+    return out
+
+
+def test_a_maze_path_far_longer_than_the_map_is_found_and_optimal() -> None:
+    """A serpentine: the only way is many times the map's diagonal, beyond every bounded
+    region; the last search is unbounded and still finds the optimum."""
+    data = _grid(90, 90)
+    for row in range(6, 90, 6):
+        data[row, :] = OCCUPIED
+        if (row // 6) % 2:
+            data[row, 84:] = 0  # gap at the east end
+        else:
+            data[row, :6] = 0  # gap at the west end
+    planner = _planner(data)
+    start, goal = _centre(2, 2), _centre(2, 87)
+    path = planner.plan(start, goal)
+    diagonal = math.hypot(90, 90) * RES
+    assert path.cost > 3 * diagonal
+    reference = _full_graph_costs(planner.costmap, (2, 2), 0.0)
+    assert path.cost == pytest.approx(reference[87, 2], rel=1e-9)
+
+
+@pytest.mark.parametrize("name", ["warehouse", "tb3_sandbox"])
+def test_bounded_search_costs_equal_a_full_graph_dijkstra_on_real_maps(name: str) -> None:
+    """The ellipse-bounded search (no graph kept) finds the same optimal costs as one
+    Dijkstra over the whole free space, including pairs whose path detours far from the
+    straight line (the bound then widens)."""
+    grid = load_map(shared_map(name))
+    costmap = Costmap.inflate(grid)
+    planner = GridPlanner(costmap, PlannerParams(smooth=False))
+    rng = np.random.default_rng(11)
+    free = np.argwhere(costmap.costs == 0)
+    source = tuple(int(v) for v in free[rng.integers(len(free))])
+    reference = _full_graph_costs(costmap, (source[0], source[1]), PlannerParams().cost_penalty)
+    start = grid.cell_to_world(source[1], source[0])
+    detours = 0
+    for cell in free[rng.integers(0, len(free), 12)]:
+        goal = grid.cell_to_world(cell[1], cell[0])
+        path = planner.plan((float(start[0]), float(start[1])), (float(goal[0]), float(goal[1])))
+        assert path.cost == pytest.approx(reference[cell[0], cell[1]], rel=1e-9)
+        dy, dx = abs(source[0] - int(cell[0])), abs(source[1] - int(cell[1]))
+        octile = (max(dy, dx) + (math.sqrt(2) - 1) * min(dy, dx)) * grid.resolution
+        detours += path.cost > 1.1 * octile + 1.0  # beyond the first search's bound
+    if name == "warehouse":  # its racks make some paths detour: the bound had to widen
+        assert detours >= 1

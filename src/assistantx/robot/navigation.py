@@ -33,6 +33,7 @@ from assistantx.robot.lidar import LaserScan, Lidar, LidarParams
 from assistantx.robot.motion_model import OdometryNoise
 from assistantx.robot.obstacle_layer import ObstacleLayer, ObstacleLayerParams
 from assistantx.robot.occupancy_map import OccupancyMap
+from assistantx.robot.plan_process import PLAN_PROCESS
 from assistantx.robot.planner import GridPlanner, Path, PlannerParams
 
 logger = logging.getLogger(__name__)
@@ -54,6 +55,9 @@ class NavigationParams:
     block_lookahead_m: float = 1.5
     timeout_factor: float = 4.0  # give up after this multiple of the nominal driving time
     yield_every_s: float = 1.0
+    # Plan in a worker process (plan_process): a search on a big map then never holds the
+    # GIL of the process that serves requests. The service's robot turns it on.
+    plan_in_process: bool = False
 
 
 @dataclass
@@ -134,14 +138,21 @@ class Navigator:
             self._sense_obstacles(self.lidar.scan(self.base.true_pose, self.rng))
         self._apply_obstacles(self.obstacles.expire(self.base.time_s))
         try:
-            return self.planner.plan(start, goal)
+            return self._plan_on(self.planner, start, goal)
         except UnreachableError as exc:
             if self.planner is self.map_planner:
                 raise
-            self.map_planner.plan(start, goal)  # raises if the map alone is the reason
+            self._plan_on(self.map_planner, start, goal)  # raises if the map alone is the reason
             raise BlockedError(
                 f"obstacles the robot sees block the way to ({goal[0]:.2f}, {goal[1]:.2f})"
             ) from exc
+
+    def _plan_on(
+        self, planner: GridPlanner, start: tuple[float, float], goal: tuple[float, float]
+    ) -> Path:
+        if self.params.plan_in_process:
+            return PLAN_PROCESS.plan(planner, start, goal)
+        return planner.plan(start, goal)
 
     def reset_obstacles(self) -> None:
         """Forget every mark (the map planner plans again)."""
@@ -265,8 +276,8 @@ class Navigator:
         pose = self.pose
         goal = controller.path[-1]
         try:
-            return self.planner.plan(
-                (float(pose[0]), float(pose[1])), (float(goal[0]), float(goal[1]))
+            return self._plan_on(
+                self.planner, (float(pose[0]), float(pose[1])), (float(goal[0]), float(goal[1]))
             )
         except UnreachableError as exc:
             raise BlockedError(

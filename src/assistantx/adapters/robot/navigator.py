@@ -14,7 +14,8 @@ Obstacles the map does not know can be dropped into the simulated world with ``b
 a path that cannot get round them ends in BlockedError.
 
 With AMCL on, planning and every chunk of driving (control, LiDAR, filter, obstacle layer,
-costmap) run in a worker thread (``asyncio.to_thread``), so the event loop keeps serving
+costmap) run in a worker thread (``asyncio.to_thread``), and the search itself in a worker
+process (scipy's Dijkstra holds the GIL), so the event loop keeps serving
 requests while the robot drives; ``state()`` reads a snapshot the worker publishes after
 each chunk, never arrays the worker is changing.
 
@@ -50,6 +51,7 @@ from assistantx.robot.anchors import Anchor, load_anchors
 from assistantx.robot.geometry import FloatArray
 from assistantx.robot.navigation import NavigationParams, Navigator
 from assistantx.robot.occupancy_map import OCCUPIED, OccupancyMap, load_map
+from assistantx.robot.plan_process import PLAN_PROCESS
 from assistantx.robot.planner import GridPlanner, Path
 
 logger = logging.getLogger(__name__)
@@ -119,6 +121,10 @@ class NavigatorRobot(RobotBase):
             raise MapError(f"start place {self._place!r} has no map anchor")
         home = self.anchors[self._place]
         self._grid = grid
+        if localize and params is None:
+            # Driving serves requests meanwhile: plans go to a worker process (see
+            # plan_process), where scipy's search cannot hold this process's GIL.
+            params = NavigationParams(plan_in_process=True)
         self._navigator = Navigator(
             grid,
             np.array([home.x, home.y, home.yaw]),
@@ -175,6 +181,11 @@ class NavigatorRobot(RobotBase):
             start=start,
             anchors_file=anchors_path,
         )
+
+    async def start(self) -> None:
+        """Start the planning worker process before the first move (see plan_process)."""
+        if self._navigator.params.plan_in_process:
+            await asyncio.to_thread(PLAN_PROCESS.warm, self._navigator.planner)
 
     @property
     def grid(self) -> OccupancyMap:
