@@ -36,7 +36,7 @@ def _start_running(client: httpx.Client) -> str:
     iid = str(r.json()["id"])
     for _ in range(200):
         body = client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json()
-        if body["trace"]["steps"]:
+        if body["trace"] and body["trace"]["steps"]:  # no trace while queued for admission
             assert body["status"] == "running"
             return iid
         time.sleep(0.05)
