@@ -25,13 +25,12 @@ from collections.abc import Callable
 
 from pydantic import BaseModel, Field
 
-from assistantx.errors import GroundingError, ModelBehaviorError, ReasonerError
+from assistantx.errors import GroundingError, ModelBehaviorError
 from assistantx.llm import (
     Attempt,
     ChatModel,
     ChatRequest,
     Message,
-    OpenAICompatibleModel,
     structured_call,
 )
 from assistantx.llm.base import LLMCallFailed
@@ -39,7 +38,7 @@ from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.office import Office
 from assistantx.ppdr.agents import AgentContext, Reasoner
-from assistantx.ppdr.llm_agents import SharedModel, agent_call, schema_text
+from assistantx.ppdr.llm_agents import SharedModel, agent_call, model_from_settings, schema_text
 from assistantx.settings import Settings
 from assistantx.symbolic.frames import InstructionParser, Task, TaskFrame
 from assistantx.symbolic.reasoner import SymbolicReasoner
@@ -257,12 +256,5 @@ def build_factory(
 ) -> Callable[[], Reasoner]:
     """The hybrid reasoner for ``assistantx.reasoners``; needs ``ASSISTANTX_LLM_BASE_URL``."""
     if model is None:
-        if not settings.llm_base_url:
-            raise ReasonerError(
-                "the hybrid reasoner needs ASSISTANTX_LLM_BASE_URL (an OpenAI-compatible /v1 URL)"
-            )
-        try:
-            model = OpenAICompatibleModel.from_settings(settings)
-        except ValueError as exc:
-            raise ReasonerError(f"cannot use the LLM at {settings.llm_base_url}: {exc}") from exc
+        model = model_from_settings(settings, "hybrid")
     return HybridFactory(office, model, output_retries=settings.llm_output_retries)

@@ -544,6 +544,19 @@ class LLMReasonerFactory:
         )
 
 
+def model_from_settings(settings: Settings, reasoner: str) -> ChatModel:
+    """The OpenAI-compatible client of the settings; ReasonerError, naming ``reasoner``, when
+    ``ASSISTANTX_LLM_BASE_URL`` is unset or unusable."""
+    if not settings.llm_base_url:
+        raise ReasonerError(
+            f"the {reasoner} reasoner needs ASSISTANTX_LLM_BASE_URL (an OpenAI-compatible /v1 URL)"
+        )
+    try:
+        return OpenAICompatibleModel.from_settings(settings)
+    except ValueError as exc:
+        raise ReasonerError(f"cannot use the LLM at {settings.llm_base_url}: {exc}") from exc
+
+
 def build_factory(
     office: Office,
     settings: Settings,
@@ -561,14 +574,7 @@ def build_factory(
     del office  # the resolver comes with each AgentContext
     prompts = AgentPrompts.load(prompts_dir)
     if model is None:
-        if not settings.llm_base_url:
-            raise ReasonerError(
-                "the llm reasoner needs ASSISTANTX_LLM_BASE_URL (an OpenAI-compatible /v1 URL)"
-            )
-        try:
-            model = OpenAICompatibleModel.from_settings(settings)
-        except ValueError as exc:
-            raise ReasonerError(f"cannot use the LLM at {settings.llm_base_url}: {exc}") from exc
+        model = model_from_settings(settings, "llm")
     logger.info("LLM reasoner: %r, output retries %d", model, settings.llm_output_retries)
     return LLMReasonerFactory(
         model,
