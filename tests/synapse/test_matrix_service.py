@@ -82,6 +82,8 @@ async def test_service_runs_an_instruction_sent_on_matrix(
             done = await lee.expect(sender=bot, room=room)
             assert done.body == "[done] Your note is filed."
             runtime = app.state.runtime
+            for running in list(runtime.assistant.running.values()):
+                await running.task  # the last message is sent just before the run ends
             [(instruction_id, stm)] = runtime.assistant.finished.items()
             assert (stm.requester, stm.text) == ("lee", "Please file my note.")
             assert await runtime.matrix.store.unhandled() == []
