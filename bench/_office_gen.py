@@ -15,7 +15,7 @@ from typing import Any
 
 import yaml
 
-from assistantx.office import DEFAULT_OFFICE
+from assistantx.core.office import DEFAULT_OFFICE
 
 
 def office_dict(people: int, source: Path = DEFAULT_OFFICE) -> dict[str, Any]:

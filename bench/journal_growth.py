@@ -31,10 +31,10 @@ from pathlib import Path
 import httpx
 import yaml
 
-from assistantx.office import DEFAULT_OFFICE
+from assistantx.core.office import DEFAULT_OFFICE
+from assistantx.core.settings import Settings
 from assistantx.service.events import REPLAY_DEFAULT
 from assistantx.service.runtime import JOURNAL_FILE, ServiceRuntime
-from assistantx.settings import Settings
 
 BASES = DEFAULT_OFFICE.parent / "base_instructions.yaml"
 SPEEDUP = 1000.0  # as bench/service_load.py: faster, and replies miss their waits

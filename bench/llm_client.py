@@ -18,7 +18,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from pydantic import BaseModel
 
-from assistantx.llm import (
+from assistantx.adapters.model import (
     ChatRequest,
     Message,
     OpenAICompatibleModel,

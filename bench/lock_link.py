@@ -8,10 +8,16 @@ import json
 import statistics
 import time
 
+from assistantx.adapters.lock.protocol import (
+    CodeIssuer,
+    LockController,
+    LockKeys,
+    render_png,
+    unseal,
+)
+from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
-from assistantx.clock import WallClock
-from assistantx.lock import CodeIssuer, LockController, LockKeys, render_png, unseal
-from assistantx.lock.server import LockServer
+from assistantx.core.clock import WallClock
 
 ROUNDS = 200
 

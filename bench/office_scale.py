@@ -25,12 +25,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from _office_gen import write_office
 
-from assistantx.dataset.simrun import run_in_sim
+from assistantx.agents.symbolic import build_factory
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.render import render_long_term
-from assistantx.office import load_office
-from assistantx.settings import Settings
-from assistantx.symbolic import build_factory
+from assistantx.sim.run import run_in_sim
 
 # (requester, instruction, unavailable people): L1, L2 and L3 kinds, people of the 16 originals.
 INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [

@@ -22,15 +22,15 @@ import time
 from pathlib import Path
 from typing import Any
 
-from assistantx.dataset.tasks import Task, load_tasks
-from assistantx.evaluation.ablations import ABLATIONS
-from assistantx.evaluation.baselines import BASELINES
+from assistantx.agents.ablations import ABLATIONS
+from assistantx.agents.baselines import BASELINES
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
+from assistantx.evaluation.dataset.tasks import Task, load_tasks
 from assistantx.evaluation.episode import Episode
 from assistantx.evaluation.harness import run_episode
 from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from assistantx.evaluation.report import summarize
-from assistantx.office import load_office
-from assistantx.settings import Settings
 
 REPO = Path(__file__).resolve().parents[1]
 METHODS: dict[str, MethodSpec] = {

@@ -23,24 +23,20 @@ from typing import Any
 
 import yaml
 
-from assistantx.actions import Inquire, Wait
-from assistantx.adapters.messenger.base import ChatRef
-from assistantx.dialogue import DialogueTurn
-from assistantx.evaluation.baselines import (
+from assistantx.adapters.model import ChatRequest, Message, OpenAICompatibleModel, estimate_tokens
+from assistantx.agents.base import AgentContext
+from assistantx.agents.baselines import (
     ACTION_SPACE,
     BASELINES,
     BaselineReasoner,
     load_baseline_prompts,
 )
-from assistantx.llm import ChatRequest, Message, OpenAICompatibleModel, estimate_tokens
-from assistantx.memory.graph import LongTermMemory
-from assistantx.memory.resolve import Resolver
-from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import DEFAULT_OFFICE, Office, parse_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.focus import focus_budget
-from assistantx.ppdr.llm_agents import AgentPrompts, LLMReasoner, SharedModel, schema_text
-from assistantx.trace import (
+from assistantx.agents.llm.agents import AgentPrompts, LLMReasoner, SharedModel, schema_text
+from assistantx.core.actions import Inquire, Wait
+from assistantx.core.dialogue import DialogueTurn
+from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.trace import (
     ActionResult,
     Decision,
     Observation,
@@ -50,6 +46,10 @@ from assistantx.trace import (
     Trace,
     TraceStep,
 )
+from assistantx.memory.focus import focus_budget
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.resolve import Resolver
+from assistantx.memory.short_term import ShortTermMemory
 
 INSTRUCTION = "Could you get me a stapler, please?"
 
@@ -188,7 +188,7 @@ def main() -> None:
     parser.add_argument("--base-url")
     parser.add_argument("--model", default="SmolLM2-135M-Instruct")
     args = parser.parse_args()
-    from assistantx.office import load_office
+    from assistantx.core.office import load_office
 
     offices = {"default": load_office(), f"generated {args.people}": large_office(args.people)}
     result: dict[str, Any] = {"context": args.context, "max_tokens": args.max_tokens}

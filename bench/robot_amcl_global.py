@@ -27,15 +27,15 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.errors import UnreachableError
-from assistantx.robot.amcl import AmclParams, ParticleFilter
-from assistantx.robot.anchors import load_anchors
-from assistantx.robot.costmap import Costmap
-from assistantx.robot.diff_drive import PurePursuit, SimulatedBase
-from assistantx.robot.geometry import angle_diff
-from assistantx.robot.lidar import Lidar
-from assistantx.robot.occupancy_map import load_map
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.amcl import AmclParams, ParticleFilter
+from assistantx.adapters.robot.nav.anchors import load_anchors
+from assistantx.adapters.robot.nav.costmap import Costmap
+from assistantx.adapters.robot.nav.diff_drive import PurePursuit, SimulatedBase
+from assistantx.adapters.robot.nav.geometry import angle_diff
+from assistantx.adapters.robot.nav.lidar import Lidar
+from assistantx.adapters.robot.nav.occupancy_map import load_map
+from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.core.errors import UnreachableError
 
 REPO = Path(__file__).resolve().parents[1]
 TRIALS = 20

@@ -16,9 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.robot.amcl import AmclParams, LikelihoodField, ParticleFilter
-from assistantx.robot.lidar import LaserScan, Lidar
-from assistantx.robot.occupancy_map import OccupancyMap, load_map
+from assistantx.adapters.robot.nav.amcl import AmclParams, LikelihoodField, ParticleFilter
+from assistantx.adapters.robot.nav.lidar import LaserScan, Lidar
+from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
 
 REPO = Path(__file__).resolve().parents[1]
 

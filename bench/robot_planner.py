@@ -14,10 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.errors import UnreachableError
-from assistantx.robot.costmap import Costmap
-from assistantx.robot.occupancy_map import load_map
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.costmap import Costmap
+from assistantx.adapters.robot.nav.occupancy_map import load_map
+from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.core.errors import UnreachableError
 
 REPO = Path(__file__).resolve().parents[1]
 PAIRS = 100

@@ -3,7 +3,7 @@
 Default: the three nav2 maps in ``<repo>/../shared/maps`` (depot, warehouse, tb3_sandbox).
 ``--map YAML`` runs one map instead; ``--anchors YAML`` gives its anchors, otherwise
 ``--anchor-count`` anchors are placed, seeded, in free space the robot can reach from all
-of them (assistantx.robot.anchor_check.place_anchors). Per map:
+of them (assistantx.adapters.robot.nav.anchor_check.place_anchors). Per map:
 
 - set-up: loading the map, the inflated costmap, the planner's labels and AMCL's likelihood
   field (the work a robot does before its first move), wall seconds;
@@ -37,15 +37,15 @@ from pathlib import Path
 import numpy as np
 from scipy.ndimage import label
 
-from assistantx.errors import RobotError
-from assistantx.robot.amcl import LikelihoodField, ParticleFilter
-from assistantx.robot.anchor_check import check_anchors, place_anchors
-from assistantx.robot.anchors import Anchor, load_anchors
-from assistantx.robot.costmap import Costmap
-from assistantx.robot.diff_drive import PurePursuit, SimulatedBase
-from assistantx.robot.lidar import Lidar, cast_rays
-from assistantx.robot.navigation import NavigationParams, Navigator, shared_planner
-from assistantx.robot.occupancy_map import OccupancyMap, load_map
+from assistantx.adapters.robot.nav.amcl import LikelihoodField, ParticleFilter
+from assistantx.adapters.robot.nav.anchor_check import check_anchors, place_anchors
+from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
+from assistantx.adapters.robot.nav.costmap import Costmap
+from assistantx.adapters.robot.nav.diff_drive import PurePursuit, SimulatedBase
+from assistantx.adapters.robot.nav.lidar import Lidar, cast_rays
+from assistantx.adapters.robot.nav.navigation import NavigationParams, Navigator, shared_planner
+from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
+from assistantx.core.errors import RobotError
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from robot_amcl_global import (

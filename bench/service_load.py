@@ -13,7 +13,7 @@ robot is one body, so instructions queue for it; whole-instruction latency inclu
     python bench/service_load.py [--n 200] [--speedup 1000] [--robot navigator|sim]
         [--localize | --no-localize] [--out DIR]
 
-Uses the embedded reasoner (``assistantx.symbolic``) when it is installed, else the tests'
+Uses the embedded reasoner (``assistantx.agents.symbolic``) when it is installed, else the tests'
 deterministic stapler reasoner (said in the output). Last line: one JSON object.
 """
 
@@ -77,13 +77,13 @@ def _start(
         ASSISTANTX_INSTRUCTION_DEADLINE_S=str(args.deadline_s),
     )
     reasoner = "symbolic (embedded)"
-    has_symbolic = importlib.util.find_spec("assistantx.symbolic") is not None
+    has_symbolic = importlib.util.find_spec("assistantx.agents.symbolic") is not None
     if not has_symbolic or not hasattr(
-        importlib.import_module("assistantx.symbolic"), "build_factory"
+        importlib.import_module("assistantx.agents.symbolic"), "build_factory"
     ):
         env["ASSISTANTX_REASONER_BUILDER"] = "service.stapler_reasoner:build_factory"
         env["PYTHONPATH"] = str(ROOT / "tests")
-        reasoner = "stapler (tests' stand-in; assistantx.symbolic.build_factory not found)"
+        reasoner = "stapler (tests' stand-in; assistantx.agents.symbolic.build_factory not found)"
     log = (data_dir.parent / "server.log").open("wb")
     cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1", "--port", str(port)]
     process = subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT)

@@ -20,11 +20,11 @@ from pathlib import Path
 
 import yaml
 
-from assistantx.dataset.simrun import run_in_sim
-from assistantx.office import Office, load_office
-from assistantx.settings import Settings
-from assistantx.symbolic import InstructionParser, build_factory
-from assistantx.trace import Trace
+from assistantx.agents.symbolic import InstructionParser, build_factory
+from assistantx.core.office import Office, load_office
+from assistantx.core.settings import Settings
+from assistantx.core.trace import Trace
+from assistantx.sim.run import run_in_sim
 
 # (requester, instruction, unavailable people)
 INSTRUCTIONS: list[tuple[str, str, tuple[str, ...]]] = [

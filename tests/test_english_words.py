@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx import english
+from assistantx.agents.symbolic._lexicon import COMMON, CUES
+from assistantx.core import english
 from assistantx.memory.names import TITLES, normalize
-from assistantx.symbolic._lexicon import COMMON, CUES
 
 
 def test_the_parser_and_name_matcher_read_their_words_from_the_data_file() -> None:

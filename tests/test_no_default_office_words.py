@@ -19,7 +19,7 @@ from typing import get_args
 import pytest
 import yaml
 
-from assistantx.task_schema import PART_KINDS, TaskKind
+from assistantx.core.task_schema import PART_KINDS, TaskKind
 
 ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "src" / "assistantx"

@@ -12,11 +12,11 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.dataset.spec import BaseInstruction, load_base_instructions
-from assistantx.office import Office, load_office
-from assistantx.sim.goals import PREDICATES
-from assistantx.symbolic import InstructionParser
-from assistantx.task_schema import MILESTONE_KIND, Part, Task, kind_shape
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.goals import PREDICATES
+from assistantx.core.office import Office, load_office
+from assistantx.core.task_schema import MILESTONE_KIND, Part, Task, kind_shape
+from assistantx.core.task_spec import BaseInstruction, load_base_instructions
 
 ROOT = Path(__file__).resolve().parents[1] / "dataset"
 OFFICES = {"default": ROOT, "harbour": ROOT / "offices" / "harbour"}

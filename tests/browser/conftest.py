@@ -48,9 +48,9 @@ def free_port() -> int:
 def _reasoner_env() -> dict[str, str]:
     """The embedded default reasoner once it exists; until then the service tests' scripted
     stapler reasoner, which plays the same L2 instruction."""
-    import assistantx.symbolic
+    import assistantx.agents.symbolic
 
-    if hasattr(assistantx.symbolic, "build_factory"):
+    if hasattr(assistantx.agents.symbolic, "build_factory"):
         return {}
     return {
         "ASSISTANTX_REASONER_BUILDER": "stapler_reasoner:build_factory",

@@ -7,7 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.dataset import (
+from assistantx.agents.oracle.plan import candidates
+from assistantx.core.errors import DatasetError
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
+from assistantx.evaluation.dataset import (
     build_plan,
     dump_tasks,
     generate,
@@ -16,10 +19,7 @@ from assistantx.dataset import (
     order_candidates,
     run_optimal,
 )
-from assistantx.dataset.plan import candidates
-from assistantx.errors import DatasetError
 from assistantx.memory.graph import LongTermMemory
-from assistantx.office import DEFAULT_OFFICE, Office, load_office
 
 DATASET = DEFAULT_OFFICE.parent
 FIXTURES = Path(__file__).parent / "fixtures"

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import random
 
-from assistantx.dataset import load_base_instructions
-from assistantx.dataset.generate import _pick_round_robin
-from assistantx.office import DEFAULT_OFFICE, load_office
+from assistantx.core.office import DEFAULT_OFFICE, load_office
+from assistantx.evaluation.dataset import load_base_instructions
+from assistantx.evaluation.dataset.generate import _pick_round_robin
 
 
 def test_a_category_no_base_reaches_gives_no_variants_instead_of_crashing() -> None:

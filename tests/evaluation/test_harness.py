@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from assistantx.cli import main
-from assistantx.office import DEFAULT_OFFICE
+from assistantx.core.office import DEFAULT_OFFICE
 
 TASKS = DEFAULT_OFFICE.parent / "tasks.jsonl"
 FIXTURES = Path(__file__).parents[1] / "dataset" / "fixtures"

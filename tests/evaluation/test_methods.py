@@ -7,19 +7,19 @@ from typing import Any
 
 import pytest
 
-from assistantx.dataset import OptimalReasoner, load_tasks
-from assistantx.dataset.tasks import Task
-from assistantx.evaluation.ablations import NoPerception, NoPlanning, NoReflection
-from assistantx.evaluation.baselines import BASELINES, BaselineFactory
+from assistantx.adapters.model import OpenAICompatibleModel
+from assistantx.agents.ablations import NoPerception, NoPlanning, NoReflection
+from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.agents.baselines import BASELINES, BaselineFactory
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
+from assistantx.core.settings import Settings
+from assistantx.core.trace import Decision, Percept, Plan
+from assistantx.evaluation.dataset import OptimalReasoner, load_tasks
+from assistantx.evaluation.dataset.tasks import Task
 from assistantx.evaluation.episode import Episode
 from assistantx.evaluation.harness import run_episode
 from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from assistantx.evaluation.metrics import score
-from assistantx.llm import OpenAICompatibleModel
-from assistantx.office import DEFAULT_OFFICE, Office, load_office
-from assistantx.ppdr.agents import AgentContext, Reasoner
-from assistantx.settings import Settings
-from assistantx.trace import Decision, Percept, Plan
 from fakes.scripted_llm import ScriptedLLM
 
 
@@ -157,7 +157,7 @@ async def test_ablations_change_only_their_agent(
 
 
 def test_unknown_method_and_missing_reasoner_are_clear(office: Office) -> None:
-    from assistantx.errors import ReasonerError
+    from assistantx.core.errors import ReasonerError
 
     with pytest.raises(ReasonerError, match="unknown method"):
         MethodBuilder(MethodSpec("magic"), office, Settings())

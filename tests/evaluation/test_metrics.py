@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.actions import (
+from assistantx.core.actions import (
     Action,
     ForwardFile,
     Inform,
@@ -15,9 +15,9 @@ from assistantx.actions import (
     Wait,
     WaitInPlace,
 )
+from assistantx.core.trace import ActionResult, Trace, TraceStep
 from assistantx.evaluation.episode import Episode, Handover
 from assistantx.evaluation.metrics import judge_actions, score, success, wrong_handovers
-from assistantx.trace import ActionResult, Trace, TraceStep
 
 STAPLER_GOAL = [{"holds": ["lee", "stapler:*"]}, {"informed": "lee"}]
 PEOPLE = ["lee", "wang", "zhang", "hu", "gao", "office_work", "study_group"]

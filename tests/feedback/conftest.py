@@ -2,7 +2,7 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.office import Office, load_office
+from assistantx.core.office import Office, load_office
 
 
 @pytest.fixture(scope="session")

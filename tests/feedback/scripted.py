@@ -9,19 +9,11 @@ from contextlib import asynccontextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-from assistantx.actions import Action, Wait
-from assistantx.adapters.messenger.base import ChatRef
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.feedback.store import FeedbackStore
-from assistantx.feedback.survey import SurveyPolicy
-from assistantx.feedback.surveyor import Surveyor
-from assistantx.feedback.walking import DistanceFn
-from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office
-from assistantx.ppdr.agents import AgentContext, Reasoner
-from assistantx.ppdr.loop import LoopLimits
-from assistantx.sim.office import SimOffice
-from assistantx.trace import (
+from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.core.actions import Action, Wait
+from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.trace import (
     ActionResult,
     Decision,
     Observation,
@@ -30,6 +22,14 @@ from assistantx.trace import (
     Reflection,
     SubGoal,
 )
+from assistantx.feedback.store import FeedbackStore
+from assistantx.feedback.survey import SurveyPolicy
+from assistantx.feedback.surveyor import Surveyor
+from assistantx.feedback.walking import DistanceFn
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
+from assistantx.sim.office import SimOffice
 
 
 class PlayedReasoner(Reasoner):

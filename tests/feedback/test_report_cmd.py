@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.actions import Move, Stop
 from assistantx.cli import main
-from assistantx.office import Office
+from assistantx.core.actions import Move, Stop
+from assistantx.core.office import Office
 
 from .scripted import harness
 

@@ -11,8 +11,8 @@ import httpx
 import pytest
 import uvicorn
 
+from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.settings import Settings
 from service.server import LEE, OPERATOR, ZHANG, free_port
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from assistantx.adapters.messenger.base import ChatRef
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.feedback.answers import parse_reply
 from assistantx.feedback.survey import Survey, SurveyPolicy, SurveyState
 

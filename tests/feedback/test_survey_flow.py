@@ -6,10 +6,10 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from assistantx.actions import Inform, Inquire, Move, Stop, Wait
+from assistantx.core.actions import Inform, Inquire, Move, Stop, Wait
+from assistantx.core.office import Office
 from assistantx.feedback.report import load_report, render_markdown
 from assistantx.feedback.survey import SurveyState
-from assistantx.office import Office
 
 from .scripted import Harness, harness
 

@@ -8,13 +8,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from assistantx.actions import Move, Stop
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.clock import SimClock
-from assistantx.errors import UnreachableError
+from assistantx.core.actions import Move, Stop
+from assistantx.core.clock import SimClock
+from assistantx.core.errors import UnreachableError
+from assistantx.core.office import Office
+from assistantx.core.trace import ActionResult, Trace
 from assistantx.feedback.walking import PlannedDistance, estimate_walking
-from assistantx.office import Office
-from assistantx.trace import ActionResult, Trace
 
 from .scripted import harness
 
@@ -82,7 +82,7 @@ async def test_walking_saved_matches_hand_computed_paths(
 def _trace(requester: str, outcome: str | None, places: list[str]) -> Trace:
     trace = Trace(instruction_id="i", requester=requester, text="t", reasoner="x", started_at=0)
     trace.outcome = outcome  # type: ignore[assignment]
-    from assistantx.trace import TraceStep
+    from assistantx.core.trace import TraceStep
 
     step = TraceStep(index=0, started_at=0)
     for place in places:

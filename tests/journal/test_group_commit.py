@@ -9,11 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.adapters.messenger.base import ChatRef, OutboundMessage
-from assistantx.journal import Journal
+from assistantx.core.events import TraceEvent
+from assistantx.core.ports.messenger import ChatRef, OutboundMessage
+from assistantx.core.trace import Trace
+from assistantx.memory.journal import Journal
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.ppdr.events import TraceEvent
-from assistantx.trace import Trace
 
 
 def _event(n: int) -> TraceEvent:

@@ -7,12 +7,12 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.adapters.messenger.base import ChatRef, InboundMessage, OutboundMessage
-from assistantx.errors import JournalError
-from assistantx.journal import Journal
+from assistantx.core.errors import JournalError
+from assistantx.core.events import TraceEvent
+from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
+from assistantx.core.trace import Trace
+from assistantx.memory.journal import Journal
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.ppdr.events import TraceEvent
-from assistantx.trace import Trace
 
 
 def _stm(iid: str = "ins-1") -> ShortTermMemory:
@@ -76,7 +76,7 @@ def test_a_file_that_is_not_a_journal_is_a_clear_error(tmp_path: Path) -> None:
 
 
 def test_the_step_count_is_kept_for_lists(tmp_path: Path) -> None:
-    from assistantx.trace import TraceStep
+    from assistantx.core.trace import TraceStep
 
     journal = Journal.open(tmp_path / "j.sqlite3")
     journal.create_instruction("ins-1", "lee", "t", 1.0)
@@ -92,7 +92,7 @@ def test_the_step_count_is_kept_for_lists(tmp_path: Path) -> None:
 def test_a_journal_written_before_the_step_count_opens(tmp_path: Path) -> None:
     import sqlite3
 
-    from assistantx.journal._schema import SCHEMA
+    from assistantx.memory.journal._schema import SCHEMA
 
     path = tmp_path / "old.sqlite3"
     old_schema = SCHEMA.replace(",\n    steps      INTEGER NOT NULL DEFAULT 0", "")

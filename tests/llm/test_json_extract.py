@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.llm import extract_json_object
-from assistantx.llm._json_extract import remove_trailing_commas
+from assistantx.adapters.model import extract_json_object
+from assistantx.adapters.model._json_extract import remove_trailing_commas
 
 
 @pytest.mark.parametrize(

@@ -9,7 +9,7 @@ import pytest
 
 from assistantx.cli import main
 from assistantx.cli.llm_cmd import check
-from assistantx.settings import Settings
+from assistantx.core.settings import Settings
 from fakes.scripted_llm import Reply, ScriptedLLM, json_reply, server_error
 
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.llm import OpenAICompatibleModel
-from assistantx.llm.probe import probe_server
-from assistantx.trace import Decision, Percept, Plan, Reflection
+from assistantx.adapters.model import OpenAICompatibleModel
+from assistantx.adapters.model.probe import probe_server
+from assistantx.core.trace import Decision, Percept, Plan, Reflection
 from fakes.scripted_llm import ScriptedLLM
 
 EXAMPLES: dict[str, dict[str, Any]] = {

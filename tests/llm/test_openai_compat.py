@@ -10,10 +10,10 @@ import httpx
 import pytest
 from pydantic import SecretStr
 
-from assistantx.errors import LLMError
-from assistantx.llm import ChatRequest, Message, OpenAICompatibleModel, RetryPolicy
-from assistantx.llm.base import LLMCallFailed
-from assistantx.settings import Settings
+from assistantx.adapters.model import ChatRequest, Message, OpenAICompatibleModel, RetryPolicy
+from assistantx.adapters.model.base import LLMCallFailed
+from assistantx.core.errors import LLMError
+from assistantx.core.settings import Settings
 from fakes.scripted_llm import (
     Reply,
     ScriptedLLM,

@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.errors import PromptError
-from assistantx.llm import Message
-from assistantx.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt, load_prompts
+from assistantx.adapters.model import Message
+from assistantx.agents.llm.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt, load_prompts
+from assistantx.core.errors import PromptError
 
 HERE = Path(__file__).parent / "prompts"
 

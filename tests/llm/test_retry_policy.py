@@ -6,8 +6,8 @@ from email.utils import formatdate
 
 import pytest
 
-from assistantx.llm import RetryPolicy, parse_retry_after
-from assistantx.llm._retry import is_retryable_status
+from assistantx.adapters.model import RetryPolicy, parse_retry_after
+from assistantx.adapters.model._retry import is_retryable_status
 
 NOW = 1_750_000_000.0
 

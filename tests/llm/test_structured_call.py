@@ -7,8 +7,7 @@ import json
 import pytest
 from pydantic import BaseModel, Field
 
-from assistantx.errors import LLMError, ModelBehaviorError, UnknownNameError
-from assistantx.llm import (
+from assistantx.adapters.model import (
     Attempt,
     ChatRequest,
     Message,
@@ -16,7 +15,8 @@ from assistantx.llm import (
     RetryPolicy,
     structured_call,
 )
-from assistantx.llm.schema import grammar_schema
+from assistantx.adapters.model.schema import grammar_schema
+from assistantx.core.errors import LLMError, ModelBehaviorError, UnknownNameError
 from fakes.scripted_llm import (
     RecordedRequest,
     Reply,

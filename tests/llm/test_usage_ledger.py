@@ -7,7 +7,7 @@ import json
 import pytest
 from pydantic import BaseModel
 
-from assistantx.llm import (
+from assistantx.adapters.model import (
     CallRecord,
     ChatRequest,
     ChatResponse,
@@ -150,8 +150,8 @@ async def test_metered_model_records_every_call(scripted_llm: ScriptedLLM) -> No
 
 
 async def test_a_failed_call_is_recorded_with_its_cost() -> None:
-    from assistantx.llm import ChatModel, ChatRequest, Message, MeteredModel
-    from assistantx.llm.base import LLMCallFailed, Usage
+    from assistantx.adapters.model import ChatModel, ChatRequest, Message, MeteredModel
+    from assistantx.adapters.model.base import LLMCallFailed, Usage
 
     class _TimesOut(ChatModel):
         async def _complete(self, request: ChatRequest) -> ChatResponse:

@@ -13,20 +13,19 @@ import subprocess
 import pytest
 from pydantic import BaseModel
 
-from assistantx.actions import Wait
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.llm import ChatRequest, OpenAICompatibleModel, UsageLedger, structured_call
-from assistantx.llm.schema import grammar_schema
-from assistantx.llm.usage import MeteredModel
-from assistantx.memory.graph import LongTermMemory
-from assistantx.memory.resolve import Resolver
-from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.llm_agents import AgentPrompts, LLMReasonerFactory
-from assistantx.ppdr.loop import LoopLimits
-from assistantx.sim.office import SimOffice
-from assistantx.trace import (
+from assistantx.adapters.model import (
+    ChatRequest,
+    OpenAICompatibleModel,
+    UsageLedger,
+    structured_call,
+)
+from assistantx.adapters.model.schema import grammar_schema
+from assistantx.adapters.model.usage import MeteredModel
+from assistantx.agents.base import AgentContext
+from assistantx.agents.llm.agents import AgentPrompts, LLMReasonerFactory
+from assistantx.core.actions import Wait
+from assistantx.core.office import Office, load_office
+from assistantx.core.trace import (
     Decision,
     Observation,
     Percept,
@@ -36,6 +35,12 @@ from assistantx.trace import (
     Trace,
     TraceStep,
 )
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.resolve import Resolver
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
+from assistantx.sim.office import SimOffice
 from llm_server.llama_server import MODEL_NAME, LlamaServer
 
 pytestmark = pytest.mark.llm_server

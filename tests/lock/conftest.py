@@ -7,12 +7,12 @@ from typing import Any
 
 import pytest
 
+from assistantx.adapters.lock.protocol import CodeIssuer, LockController, LockKeys
+from assistantx.adapters.lock.protocol.client import Backoff
+from assistantx.adapters.lock.protocol.link import LinkTimeouts
+from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
-from assistantx.clock import SimClock
-from assistantx.lock import CodeIssuer, LockController, LockKeys
-from assistantx.lock.client import Backoff
-from assistantx.lock.link import LinkTimeouts
-from assistantx.lock.server import LockServer
+from assistantx.core.clock import SimClock
 
 LOCK_ID = "locker-1"
 

@@ -9,10 +9,17 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from assistantx.clock import SimClock
-from assistantx.errors import InvalidCodeError
-from assistantx.lock import CodeIssuer, Keyring, KeyringError, LockKeys, render_png, unseal
-from assistantx.lock.keys import b64decode, b64encode, new_key
+from assistantx.adapters.lock.protocol import (
+    CodeIssuer,
+    Keyring,
+    KeyringError,
+    LockKeys,
+    render_png,
+    unseal,
+)
+from assistantx.adapters.lock.protocol.keys import b64decode, b64encode, new_key
+from assistantx.core.clock import SimClock
+from assistantx.core.errors import InvalidCodeError
 
 from .conftest import LOCK_ID
 

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.adapters.lock.base import LockEvent
-from assistantx.clock import SimClock
-from assistantx.errors import InvalidCodeError, LockCommandError
-from assistantx.lock import CodeIssuer, Keyring, LockController, LockKeys
-from assistantx.lock.keys import new_key
+from assistantx.adapters.lock.protocol import CodeIssuer, Keyring, LockController, LockKeys
+from assistantx.adapters.lock.protocol.keys import new_key
+from assistantx.core.clock import SimClock
+from assistantx.core.errors import InvalidCodeError, LockCommandError
+from assistantx.core.ports.lock import LockEvent
 
 from .conftest import LOCK_ID
 

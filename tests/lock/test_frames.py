@@ -6,8 +6,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from assistantx.errors import LockProtocolError
-from assistantx.lock.frames import FrameDecoder, decode_message, encode_frame, encode_message
+from assistantx.adapters.lock.protocol.frames import (
+    FrameDecoder,
+    decode_message,
+    encode_frame,
+    encode_message,
+)
+from assistantx.core.errors import LockProtocolError
 
 bounded = settings(max_examples=200, deadline=None, derandomize=True)
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import asyncio
 
 from assistantx.adapters.lock.local import LocalLocker
-from assistantx.clock import SimClock
-from assistantx.lock import LockController
+from assistantx.adapters.lock.protocol import LockController
+from assistantx.core.clock import SimClock
 
 
 async def test_hand_over_through_the_locker_interface(

@@ -7,11 +7,11 @@ from pathlib import Path
 
 import pytest
 
+from assistantx.adapters.lock.protocol import LockKeys
 from assistantx.cli import main
 from assistantx.cli.lock_cmd import _load_keys
-from assistantx.lock import LockKeys
+from assistantx.core.settings import Settings
 from assistantx.service.runtime import lock_keys_for
-from assistantx.settings import Settings
 
 
 def test_lock_keys_new_then_rotate(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

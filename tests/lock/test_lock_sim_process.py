@@ -13,11 +13,11 @@ from pathlib import Path
 
 import pytest
 
+from assistantx.adapters.lock.protocol import LockKeys
+from assistantx.adapters.lock.protocol.keys import new_key
 from assistantx.adapters.lock.tcp import TcpLocker
-from assistantx.clock import WallClock
-from assistantx.errors import InvalidCodeError, LockAuthError
-from assistantx.lock import LockKeys
-from assistantx.lock.keys import new_key
+from assistantx.core.clock import WallClock
+from assistantx.core.errors import InvalidCodeError, LockAuthError
 
 from .conftest import FAST, QUICK_RETRY
 

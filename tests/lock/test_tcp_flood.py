@@ -9,12 +9,12 @@ from collections.abc import AsyncIterator
 
 import pytest
 
+from assistantx.adapters.lock.protocol import LockController, LockKeys
+from assistantx.adapters.lock.protocol.client import Backoff
+from assistantx.adapters.lock.protocol.link import LinkTimeouts, close_writer
+from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
-from assistantx.clock import SimClock
-from assistantx.lock import LockController, LockKeys
-from assistantx.lock.client import Backoff
-from assistantx.lock.link import LinkTimeouts, close_writer
-from assistantx.lock.server import LockServer
+from assistantx.core.clock import SimClock
 
 from .conftest import LOCK_ID, QUICK_RETRY
 

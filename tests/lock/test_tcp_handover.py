@@ -7,14 +7,19 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.adapters.lock.base import LockEvent
-from assistantx.clock import SimClock
-from assistantx.errors import InvalidCodeError, LockAuthError, LockCommandError, LockProtocolError
-from assistantx.lock import CodeIssuer, Keyring, LockController, LockKeys
-from assistantx.lock.frames import encode_frame, encode_message
-from assistantx.lock.keys import b64encode, new_key
-from assistantx.lock.link import client_handshake, close_writer
-from assistantx.lock.server import LockServer
+from assistantx.adapters.lock.protocol import CodeIssuer, Keyring, LockController, LockKeys
+from assistantx.adapters.lock.protocol.frames import encode_frame, encode_message
+from assistantx.adapters.lock.protocol.keys import b64encode, new_key
+from assistantx.adapters.lock.protocol.link import client_handshake, close_writer
+from assistantx.adapters.lock.protocol.server import LockServer
+from assistantx.core.clock import SimClock
+from assistantx.core.errors import (
+    InvalidCodeError,
+    LockAuthError,
+    LockCommandError,
+    LockProtocolError,
+)
+from assistantx.core.ports.lock import LockEvent
 
 from .conftest import FAST, LOCK_ID, tcp_locker
 

@@ -7,12 +7,12 @@ from collections.abc import AsyncIterator, Callable
 
 import pytest
 
-from assistantx.adapters.lock.base import LockEvent
+from assistantx.adapters.lock.protocol import LockController, LockKeys
+from assistantx.adapters.lock.protocol.link import LinkTimeouts
+from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
-from assistantx.clock import SimClock
-from assistantx.lock import LockController, LockKeys
-from assistantx.lock.link import LinkTimeouts
-from assistantx.lock.server import LockServer
+from assistantx.core.clock import SimClock
+from assistantx.core.ports.lock import LockEvent
 
 from .conftest import FAST, LOCK_ID, QUICK_RETRY
 from .proxy import FaultyProxy

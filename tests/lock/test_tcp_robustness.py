@@ -7,11 +7,11 @@ import random
 import struct
 import time
 
-from assistantx.clock import SimClock
-from assistantx.lock import LockController, LockKeys
-from assistantx.lock.frames import encode_frame, encode_message
-from assistantx.lock.link import client_handshake, close_writer
-from assistantx.lock.server import LockServer
+from assistantx.adapters.lock.protocol import LockController, LockKeys
+from assistantx.adapters.lock.protocol.frames import encode_frame, encode_message
+from assistantx.adapters.lock.protocol.link import client_handshake, close_writer
+from assistantx.adapters.lock.protocol.server import LockServer
+from assistantx.core.clock import SimClock
 
 from .conftest import FAST, LOCK_ID, tcp_locker
 

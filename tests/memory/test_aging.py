@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.journal import Journal
+from assistantx.core.office import Office, load_office
 from assistantx.memory.graph import HISTORY, LongTermMemory
+from assistantx.memory.journal import Journal
 from assistantx.memory.updates import AvailabilityUpdate, OwnershipUpdate
-from assistantx.office import Office, load_office
 from assistantx.service.durability import LTM_STATE, Durability
 
 

@@ -6,10 +6,12 @@ import json
 
 import pytest
 
-from assistantx.actions import Move, SendQR, action_json_schema, parse_action
-from assistantx.adapters.messenger.base import ChatRef
-from assistantx.dialogue import DialogueTurn
-from assistantx.errors import AmbiguousNameError, UnknownNameError
+from assistantx.core.actions import Move, SendQR, action_json_schema, parse_action
+from assistantx.core.dialogue import DialogueTurn
+from assistantx.core.errors import AmbiguousNameError, UnknownNameError
+from assistantx.core.office import Office, load_office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.trace import Trace
 from assistantx.memory import (
     AvailabilityUpdate,
     ItemLocationUpdate,
@@ -19,8 +21,6 @@ from assistantx.memory import (
     ShortTermMemory,
     render_memory,
 )
-from assistantx.office import Office, load_office
-from assistantx.trace import Trace
 
 
 @pytest.fixture(scope="module")
@@ -164,8 +164,8 @@ def test_a_typo_close_to_two_people_is_not_guessed(office: Office) -> None:
 
 
 def test_observations_with_chat_text_are_quoted(office: Office) -> None:
-    from assistantx.actions import Wait
-    from assistantx.trace import ActionResult, TraceStep
+    from assistantx.core.actions import Wait
+    from assistantx.core.trace import ActionResult, TraceStep
 
     trace = Trace(instruction_id="i", requester="lee", text="t", reasoner="x", started_at=0)
     trace.steps.append(

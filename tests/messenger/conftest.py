@@ -14,8 +14,8 @@ import pytest_asyncio
 import uvicorn
 from fastapi import APIRouter, FastAPI
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import SqliteEventStore
+from assistantx.core.ports.messenger import InboundMessage
 
 ServeRouters = Callable[..., contextlib.AbstractAsyncContextManager[str]]
 

@@ -10,7 +10,6 @@ import httpx
 import pytest
 from pydantic import SecretStr
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import (
     EventIngestor,
     EventNormalizer,
@@ -18,6 +17,7 @@ from assistantx.adapters.messenger.matrix import (
     SqliteEventStore,
     create_appservice_router,
 )
+from assistantx.core.ports.messenger import InboundMessage
 from messenger.conftest import ServeRouters
 
 HS_TOKEN = "hs-secret-token"

@@ -10,12 +10,12 @@ from pathlib import Path
 import httpx
 import pytest
 
-from assistantx.adapters.messenger.base import ChatRef, InboundMessage
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.errors import MessengerError
-from assistantx.office import load_office
-from assistantx.settings import Settings
+from assistantx.core.errors import MessengerError
+from assistantx.core.office import load_office
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
+from assistantx.core.settings import Settings
+from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.sim.office import SimOffice
 from messenger.conftest import ServeRouters
 from ppdr.scripted_reasoner import ScriptedReasoner

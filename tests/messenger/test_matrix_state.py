@@ -7,7 +7,6 @@ from typing import Any
 
 import yaml
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import EventNormalizer, MatrixConfig, SqliteEventStore
 from assistantx.adapters.messenger.matrix.normalize import (
     EDIT_TEXT,
@@ -16,6 +15,7 @@ from assistantx.adapters.messenger.matrix.normalize import (
     AutoReply,
     strip_reply_fallback,
 )
+from assistantx.core.ports.messenger import InboundMessage
 from messenger.test_matrix_units import CONFIG_YAML
 
 DM, GROUP = "!dm:office.test", "!group:office.test"

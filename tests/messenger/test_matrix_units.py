@@ -10,7 +10,6 @@ from typing import Any
 import pytest
 import yaml
 
-from assistantx.adapters.messenger.base import ChatRef, InboundMessage
 from assistantx.adapters.messenger.matrix import (
     EventNormalizer,
     MatrixConfig,
@@ -20,7 +19,8 @@ from assistantx.adapters.messenger.matrix import (
     write_registration,
 )
 from assistantx.adapters.messenger.matrix.adapter import png_size
-from assistantx.errors import MessengerError
+from assistantx.core.errors import MessengerError
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
 
 CONFIG_YAML = """
 homeserver_url: http://127.0.0.1:8008

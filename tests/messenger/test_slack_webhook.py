@@ -12,7 +12,6 @@ import httpx
 import pytest
 from pydantic import SecretStr
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import SqliteEventStore
 from assistantx.adapters.messenger.webhooks import (
     SlackSignatureError,
@@ -20,6 +19,7 @@ from assistantx.adapters.messenger.webhooks import (
     slack_signature,
     verify_slack_request,
 )
+from assistantx.core.ports.messenger import InboundMessage
 from messenger.conftest import ServeRouters
 
 SECRET = "8f742231b10e8888abcd99yyyzzz85a5"

@@ -10,9 +10,9 @@ import httpx
 import pytest
 from pydantic import SecretStr
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import SqliteEventStore
 from assistantx.adapters.messenger.webhooks import create_telegram_router, verify_telegram_secret
+from assistantx.core.ports.messenger import InboundMessage
 from messenger.conftest import ServeRouters
 
 SECRET = "s3cr3t-Token_for-webhook"

@@ -9,8 +9,8 @@ from typing import Any
 import pytest
 import yaml
 
-from assistantx.errors import OfficeError
-from assistantx.office import DEFAULT_OFFICE, load_office
+from assistantx.core.errors import OfficeError
+from assistantx.core.office import DEFAULT_OFFICE, load_office
 
 PAPER_PEOPLE = {
     "mao",

@@ -10,8 +10,8 @@ from typing import Any
 import pytest
 import yaml
 
-from assistantx.errors import OfficeError
-from assistantx.office import Office, load_office, parse_office
+from assistantx.core.errors import OfficeError
+from assistantx.core.office import Office, load_office, parse_office
 
 ROOT = Path(__file__).resolve().parents[2]
 HARBOUR = ROOT / "dataset" / "offices" / "harbour" / "office.yaml"

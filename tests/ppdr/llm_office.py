@@ -12,13 +12,13 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from assistantx.actions import Action
-from assistantx.assistant import Assistant, AssistantParts
+from assistantx.agents.llm.agents import LLMReasonerFactory, build_factory
+from assistantx.core.actions import Action
+from assistantx.core.office import Office
+from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office
-from assistantx.ppdr.llm_agents import LLMReasonerFactory, build_factory
-from assistantx.ppdr.loop import LoopLimits
-from assistantx.settings import Settings
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from fakes.scripted_llm import RecordedRequest, ScriptedLLM
 

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from assistantx.actions import Action
-from assistantx.memory.updates import MemoryUpdate
-from assistantx.ppdr.agents import AgentContext, Reasoner
-from assistantx.trace import (
+from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.core.actions import Action
+from assistantx.core.trace import (
     ActionResult,
     AgentCall,
     Decision,
@@ -17,6 +16,7 @@ from assistantx.trace import (
     Reflection,
     SubGoal,
 )
+from assistantx.memory.updates import MemoryUpdate
 
 Step = list[Action] | Callable[[AgentContext], list[Action]]
 
@@ -47,7 +47,7 @@ class ScriptedReasoner(Reasoner):
         step = self.steps.pop(0) if self.steps else []
         actions = step(ctx) if callable(step) else step
         if not actions:
-            from assistantx.actions import Wait
+            from assistantx.core.actions import Wait
 
             actions = [Wait(reason="nothing to do", timeout_s=10)]
         return Decision(thought="scripted", actions=actions)

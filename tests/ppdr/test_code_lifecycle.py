@@ -12,16 +12,16 @@ from dataclasses import dataclass, field
 import pytest
 from scripted_reasoner import ScriptedReasoner, Step
 
-from assistantx.actions import Inquire, SendQR, Stop, Wait, WaitInPlace
+from assistantx.adapters.lock.protocol import LockController, LockKeys
+from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.clock import WallClock
-from assistantx.lock import LockController, LockKeys
-from assistantx.lock.server import LockServer
+from assistantx.agents.base import AgentContext
+from assistantx.core.actions import Inquire, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.clock import WallClock
+from assistantx.core.events import TraceEvent
+from assistantx.core.office import Office, load_office
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.events import TraceEvent
+from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.sim.office import SimOffice
 
 

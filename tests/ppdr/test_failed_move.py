@@ -6,13 +6,13 @@ from __future__ import annotations
 import pytest
 from scripted_reasoner import ScriptedReasoner, Step
 
-from assistantx.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
-from assistantx.adapters.robot.base import MoveResult
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.errors import BlockedError
+from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.errors import BlockedError
+from assistantx.core.office import Office, load_office
+from assistantx.core.ports.robot import MoveResult
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.loop import LoopLimits
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from assistantx.sim.robot import SimRobot
 

@@ -8,12 +8,12 @@ from types import ModuleType
 
 import pytest
 
-from assistantx.llm import estimate_tokens
+from assistantx.adapters.model import estimate_tokens
+from assistantx.core.office import Office, load_office
+from assistantx.core.trace import Trace
+from assistantx.memory.focus import focus_budget, render_focused, task_focus
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.focus import focus_budget, render_focused, task_focus
-from assistantx.trace import Trace
 
 BENCH = Path(__file__).resolve().parents[2] / "bench" / "prompt_sizes.py"
 

@@ -7,10 +7,10 @@ from typing import Any
 import pytest
 from llm_office import llm_settings, make_assistant
 
-from assistantx.actions import Inquire, SendQR
+from assistantx.agents.hybrid import UNSURE_QUESTION, HybridFactory, build_factory
+from assistantx.core.actions import Inquire, SendQR
+from assistantx.core.office import Office, load_office
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.hybrid import UNSURE_QUESTION, HybridFactory, build_factory
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM, json_reply

@@ -14,20 +14,17 @@ import pytest
 from llm_office import decision, llm_settings, people_rows, run_llm, script_helpers, section
 from pydantic import BaseModel
 
-from assistantx.actions import Inform, SendQR, Stop, Wait
-from assistantx.adapters.messenger.base import ChatRef
-from assistantx.dialogue import DialogueTurn
-from assistantx.errors import ModelBehaviorError, PromptError, ReasonerError
-from assistantx.llm.schema import grammar_schema, schema_outline
-from assistantx.memory.graph import LongTermMemory
-from assistantx.memory.resolve import Resolver
-from assistantx.memory.short_term import IssuedCode, ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.llm_agents import AGENTS, LLMReasoner, LLMReasonerFactory, build_factory
-from assistantx.prompts import DEFAULT_PROMPTS
-from assistantx.settings import Settings
-from assistantx.trace import (
+from assistantx.adapters.model.schema import grammar_schema, schema_outline
+from assistantx.agents.base import AgentContext
+from assistantx.agents.llm.agents import AGENTS, LLMReasoner, LLMReasonerFactory, build_factory
+from assistantx.agents.llm.prompts import DEFAULT_PROMPTS
+from assistantx.core.actions import Inform, SendQR, Stop, Wait
+from assistantx.core.dialogue import DialogueTurn
+from assistantx.core.errors import ModelBehaviorError, PromptError, ReasonerError
+from assistantx.core.office import Office, load_office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.settings import Settings
+from assistantx.core.trace import (
     Decision,
     Observation,
     Percept,
@@ -37,6 +34,9 @@ from assistantx.trace import (
     Trace,
     TraceStep,
 )
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.resolve import Resolver
+from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import Reply, ScriptedLLM
 

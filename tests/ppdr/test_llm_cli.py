@@ -10,7 +10,7 @@ from typing import Any
 
 from llm_office import decision, script_helpers
 
-from assistantx.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM
 

@@ -19,9 +19,9 @@ from llm_office import (
     section,
 )
 
-from assistantx.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
-from assistantx.office import Office, load_office
-from assistantx.ppdr.llm_agents import build_factory
+from assistantx.agents.llm.agents import build_factory
+from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.office import Office, load_office
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import RecordedRequest, ScriptedLLM, malformed_json, rate_limited

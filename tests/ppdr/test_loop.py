@@ -7,16 +7,16 @@ import asyncio
 import pytest
 from scripted_reasoner import ScriptedReasoner, Step
 
-from assistantx.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.errors import ReasonerError
+from assistantx.agents.base import AgentContext
+from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.errors import ReasonerError
+from assistantx.core.office import Office, load_office
+from assistantx.core.trace import Decision, Percept, Plan
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AvailabilityUpdate
-from assistantx.office import Office, load_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.loop import LoopLimits
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
-from assistantx.trace import Decision, Percept, Plan
 
 
 @pytest.fixture(scope="module")

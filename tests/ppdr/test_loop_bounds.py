@@ -8,15 +8,15 @@ import asyncio
 import pytest
 from scripted_reasoner import ScriptedReasoner, Step
 
-from assistantx.actions import Inquire, Move, SendQR, Stop, Wait
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.errors import ModelBehaviorError
+from assistantx.agents.base import AgentContext
+from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait
+from assistantx.core.errors import ModelBehaviorError
+from assistantx.core.office import Office, load_office
+from assistantx.core.trace import AgentCall, Decision, Percept, Plan
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.loop import LoopLimits
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
-from assistantx.trace import AgentCall, Decision, Percept, Plan
 
 
 @pytest.fixture(scope="module")

@@ -7,14 +7,14 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.adapters.messenger.base import OutboundMessage, SentMessage
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.errors import UnreachableContactError
+from assistantx.agents.registry import reasoner_factory
+from assistantx.core.errors import UnreachableContactError
+from assistantx.core.office import Office, load_office
+from assistantx.core.ports.messenger import OutboundMessage, SentMessage
+from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.failures import failure_summary
-from assistantx.reasoners import reasoner_factory
-from assistantx.settings import Settings
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.failures import failure_summary
 from assistantx.sim.office import SimMessenger, SimOffice
 
 
@@ -85,8 +85,8 @@ async def test_an_unreachable_owner_is_asked_once_then_someone_else(office: Offi
 
 
 def test_a_repeated_failure_is_told_with_names_not_action_names(office: Office) -> None:
-    from assistantx.actions import Inquire
-    from assistantx.trace import ActionResult, Trace
+    from assistantx.core.actions import Inquire
+    from assistantx.core.trace import ActionResult, Trace
 
     trace = Trace(instruction_id="ins-x", requester="lee", text="t", reasoner="x", started_at=0.0)
     stm = ShortTermMemory(instruction_id="ins-x", requester="lee", text="t", trace=trace)

@@ -6,10 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.robot.anchors import Anchor, load_anchors
-from assistantx.robot.costmap import Costmap
-from assistantx.robot.occupancy_map import OccupancyMap, load_map
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
+from assistantx.adapters.robot.nav.costmap import Costmap
+from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
+from assistantx.adapters.robot.nav.planner import GridPlanner
 
 REPO = Path(__file__).resolve().parents[2]
 FIXTURES = Path(__file__).parent / "fixtures"

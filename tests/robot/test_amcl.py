@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from assistantx.robot.amcl import (
+from assistantx.adapters.robot.nav.amcl import (
     AmclParams,
     ParticleFilter,
     cluster_labels,
@@ -18,10 +18,10 @@ from assistantx.robot.amcl import (
     low_variance_resample,
     weighted_pose_stats,
 )
-from assistantx.robot.diff_drive import SimulatedBase
-from assistantx.robot.geometry import angle_diff
-from assistantx.robot.lidar import Lidar, LidarParams
-from assistantx.robot.occupancy_map import OCCUPIED, OccupancyMap
+from assistantx.adapters.robot.nav.diff_drive import SimulatedBase
+from assistantx.adapters.robot.nav.geometry import angle_diff
+from assistantx.adapters.robot.nav.lidar import Lidar, LidarParams
+from assistantx.adapters.robot.nav.occupancy_map import OCCUPIED, OccupancyMap
 
 
 def test_low_variance_resample_counts_are_proportional() -> None:

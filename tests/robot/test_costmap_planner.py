@@ -10,8 +10,7 @@ from scipy.ndimage import distance_transform_edt
 from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import dijkstra
 
-from assistantx.errors import UnreachableError
-from assistantx.robot.costmap import (
+from assistantx.adapters.robot.nav.costmap import (
     INSCRIBED,
     LETHAL,
     NO_INFORMATION,
@@ -20,8 +19,9 @@ from assistantx.robot.costmap import (
     capped_distance,
     inflation_cost,
 )
-from assistantx.robot.occupancy_map import OCCUPIED, UNKNOWN, OccupancyMap, load_map
-from assistantx.robot.planner import GridPlanner, PlannerParams, resample_polyline
+from assistantx.adapters.robot.nav.occupancy_map import OCCUPIED, UNKNOWN, OccupancyMap, load_map
+from assistantx.adapters.robot.nav.planner import GridPlanner, PlannerParams, resample_polyline
+from assistantx.core.errors import UnreachableError
 from robot.conftest import shared_map
 
 RES = 0.05

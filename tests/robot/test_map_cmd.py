@@ -8,8 +8,8 @@ import matplotlib.image as mpimg
 import numpy as np
 import pytest
 
+from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors, save_anchors
 from assistantx.cli import main
-from assistantx.robot.anchors import Anchor, load_anchors, save_anchors
 from robot.conftest import REPO, shared_map
 
 

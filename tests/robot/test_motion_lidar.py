@@ -7,11 +7,16 @@ import math
 import numpy as np
 import pytest
 
-from assistantx.robot.diff_drive import DriveParams, PurePursuit, SimulatedBase, integrate
-from assistantx.robot.geometry import angle_diff, compose, relative, wrap_angle
-from assistantx.robot.lidar import Lidar, LidarParams, beam_angles, cast_rays
-from assistantx.robot.motion_model import OdometryNoise, motion_model, odometry_deltas
-from assistantx.robot.occupancy_map import OCCUPIED, OccupancyMap
+from assistantx.adapters.robot.nav.diff_drive import (
+    DriveParams,
+    PurePursuit,
+    SimulatedBase,
+    integrate,
+)
+from assistantx.adapters.robot.nav.geometry import angle_diff, compose, relative, wrap_angle
+from assistantx.adapters.robot.nav.lidar import Lidar, LidarParams, beam_angles, cast_rays
+from assistantx.adapters.robot.nav.motion_model import OdometryNoise, motion_model, odometry_deltas
+from assistantx.adapters.robot.nav.occupancy_map import OCCUPIED, OccupancyMap
 
 N = 40_000
 

@@ -6,11 +6,11 @@ from __future__ import annotations
 import asyncio
 import contextlib
 
+from assistantx.adapters.robot.nav.anchors import Anchor
+from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.clock import SimClock
-from assistantx.office import DEFAULT_OFFICE, load_office
-from assistantx.robot.anchors import Anchor
-from assistantx.robot.occupancy_map import OccupancyMap
+from assistantx.core.clock import SimClock
+from assistantx.core.office import DEFAULT_OFFICE, load_office
 
 
 async def test_a_cancelled_drive_clears_its_path(

@@ -8,12 +8,12 @@ import math
 import numpy as np
 import pytest
 
+from assistantx.adapters.robot.nav.anchors import Anchor
+from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.clock import SimClock
-from assistantx.errors import BlockedError, LocalizationLostError, MapError, UnreachableError
-from assistantx.office import DEFAULT_OFFICE, Office, load_office
-from assistantx.robot.anchors import Anchor
-from assistantx.robot.occupancy_map import OccupancyMap
+from assistantx.core.clock import SimClock
+from assistantx.core.errors import BlockedError, LocalizationLostError, MapError, UnreachableError
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
 
 
 @pytest.fixture(scope="module")

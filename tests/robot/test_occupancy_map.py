@@ -9,9 +9,8 @@ import numpy as np
 import pytest
 import yaml
 
-from assistantx.errors import MapError
-from assistantx.robot.anchors import Anchor, load_anchors, save_anchors
-from assistantx.robot.occupancy_map import (
+from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors, save_anchors
+from assistantx.adapters.robot.nav.occupancy_map import (
     FREE,
     OCCUPIED,
     UNKNOWN,
@@ -19,7 +18,8 @@ from assistantx.robot.occupancy_map import (
     load_map,
     save_map,
 )
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.core.errors import MapError
 
 from .conftest import FIXTURES, REPO
 
@@ -197,7 +197,7 @@ def test_anchors_match_the_office_and_are_reachable(
 
 
 def test_generator_reproduces_the_committed_map(tmp_path: Path, office_map: OccupancyMap) -> None:
-    from assistantx.robot.office_map_gen import generate
+    from assistantx.adapters.robot.nav.office_map_gen import generate
 
     generate(tmp_path, REPO / "dataset" / "office.yaml")
     np.testing.assert_array_equal(load_map(tmp_path / "office.yaml").data, office_map.data)
@@ -240,7 +240,7 @@ def test_origin_yaw_turns_the_grid_about_its_lower_left_corner(tmp_path: Path) -
     assert grid.data[4, 3] == OCCUPIED and not grid.is_free(float(x), float(y))
     # The LiDAR sees the turned walls: a beam from the cell centre (2, 2) towards the
     # block at cells x 3-4 along the grid's +x (world +y) ends at its near face.
-    from assistantx.robot.lidar import cast_rays
+    from assistantx.adapters.robot.nav.lidar import cast_rays
 
     sx, sy = grid.cell_to_world(1.5, 4.5)
     ranges = cast_rays(

@@ -8,11 +8,11 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
-from assistantx.errors import UnreachableError
-from assistantx.robot.costmap import Costmap, update_obstacles
-from assistantx.robot.occupancy_map import FREE, OCCUPIED, OccupancyMap
-from assistantx.robot.plan_process import PlanProcess
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.costmap import Costmap, update_obstacles
+from assistantx.adapters.robot.nav.occupancy_map import FREE, OCCUPIED, OccupancyMap
+from assistantx.adapters.robot.nav.plan_process import PlanProcess
+from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.core.errors import UnreachableError
 
 RES = 0.05
 

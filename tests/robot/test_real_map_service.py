@@ -14,15 +14,15 @@ import httpx
 import numpy as np
 import pytest
 
+from assistantx.adapters.robot.nav.anchor_check import place_anchors
+from assistantx.adapters.robot.nav.anchors import save_anchors
+from assistantx.adapters.robot.nav.costmap import Costmap
+from assistantx.adapters.robot.nav.occupancy_map import load_map
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.office import load_office
-from assistantx.robot.anchor_check import place_anchors
-from assistantx.robot.anchors import save_anchors
-from assistantx.robot.costmap import Costmap
-from assistantx.robot.occupancy_map import load_map
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
-from assistantx.settings import Settings
 from robot.conftest import shared_map
 from service.server import LEE, OPERATOR, free_port
 

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import yaml
 
-from assistantx.robot.anchors import load_anchors
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.anchors import load_anchors
+from assistantx.adapters.robot.nav.planner import GridPlanner
 
 REPO = Path(__file__).resolve().parents[2]
 HARBOUR = REPO / "dataset" / "offices" / "harbour"

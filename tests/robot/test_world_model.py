@@ -9,14 +9,14 @@ import math
 import numpy as np
 import pytest
 
-from assistantx.errors import BlockedError
-from assistantx.robot.amcl import AmclParams, LikelihoodField
-from assistantx.robot.costmap import Costmap, update_obstacles
-from assistantx.robot.lidar import Lidar, LidarParams
-from assistantx.robot.navigation import Navigator
-from assistantx.robot.obstacle_layer import ObstacleLayer, ObstacleLayerParams
-from assistantx.robot.occupancy_map import FREE, OCCUPIED, UNKNOWN, OccupancyMap
-from assistantx.robot.planner import GridPlanner
+from assistantx.adapters.robot.nav.amcl import AmclParams, LikelihoodField
+from assistantx.adapters.robot.nav.costmap import Costmap, update_obstacles
+from assistantx.adapters.robot.nav.lidar import Lidar, LidarParams
+from assistantx.adapters.robot.nav.navigation import Navigator
+from assistantx.adapters.robot.nav.obstacle_layer import ObstacleLayer, ObstacleLayerParams
+from assistantx.adapters.robot.nav.occupancy_map import FREE, OCCUPIED, UNKNOWN, OccupancyMap
+from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.core.errors import BlockedError
 
 RES = 0.05
 

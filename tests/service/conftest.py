@@ -9,9 +9,9 @@ from pathlib import Path
 import httpx
 import pytest
 
+from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
-from assistantx.settings import Settings
 from service.server import LEE, OPERATOR, ZHANG, free_port
 
 

@@ -12,9 +12,9 @@ from typing import Any
 
 import httpx
 
+from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
-from assistantx.settings import Settings
 from service.server import LEE, OPERATOR, ZHANG, free_port
 
 

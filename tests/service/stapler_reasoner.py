@@ -3,7 +3,7 @@
 It fetches a stapler for the requester: asks the known owners in order (skipping those memory
 believes unavailable), and once one agrees runs the hand-over. Its decisions depend only on
 the instruction's memory, so a resumed instruction decides the same actions again.
-Used until ``assistantx.symbolic.build_factory`` exists; loaded through
+Used until ``assistantx.agents.symbolic.build_factory`` exists; loaded through
 ``ASSISTANTX_REASONER_BUILDER=service.stapler_reasoner:build_factory`` (with tests/ on PYTHONPATH).
 """
 
@@ -12,10 +12,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from assistantx.actions import Action, Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
-from assistantx.memory.updates import AvailabilityUpdate, MemoryUpdate
-from assistantx.ppdr.agents import AgentContext, Reasoner
-from assistantx.trace import (
+from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.core.actions import Action, Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.trace import (
     ActionResult,
     AgentCall,
     Decision,
@@ -25,6 +24,7 @@ from assistantx.trace import (
     Reflection,
     SubGoal,
 )
+from assistantx.memory.updates import AvailabilityUpdate, MemoryUpdate
 
 
 def _done(ctx: AgentContext, kind: str, ok: bool = True, **match: str) -> bool:

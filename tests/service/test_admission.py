@@ -6,12 +6,12 @@ from __future__ import annotations
 import asyncio
 from pathlib import Path
 
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.journal import Journal
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
+from assistantx.memory.journal import Journal
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import load_office
+from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.service.admission import Admission
-from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
 from service.stapler_reasoner import build_factory
 

@@ -19,13 +19,13 @@ import pytest
 import uvicorn
 from matplotlib.image import imread
 
+from assistantx.adapters.robot.nav.anchors import load_anchors
+from assistantx.adapters.robot.nav.occupancy_map import load_map
 from assistantx.adapters.robot.navigator import DEFAULT_MAP
-from assistantx.office import load_office
-from assistantx.robot.anchors import load_anchors
-from assistantx.robot.occupancy_map import load_map
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.dashboard import occupancy_grey
-from assistantx.settings import Settings
 
 TOKEN = "operator-token-for-dashboard-tests"
 LEE_TOKEN = "lee-token-for-dashboard-tests-01"

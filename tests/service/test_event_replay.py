@@ -10,11 +10,11 @@ from pathlib import Path
 import httpx
 import pytest
 
-from assistantx.journal import Journal
-from assistantx.ppdr.events import TraceEvent
+from assistantx.core.events import TraceEvent
+from assistantx.core.settings import Settings
+from assistantx.memory.journal import Journal
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
-from assistantx.settings import Settings
 from service.server import OPERATOR, free_port
 
 AUTH = {"Authorization": f"Bearer {OPERATOR}"}

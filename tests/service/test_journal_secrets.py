@@ -10,11 +10,11 @@ from pathlib import Path
 
 import httpx
 
-from assistantx.adapters.messenger.base import OutboundMessage
-from assistantx.ppdr.events import TraceEvent
+from assistantx.core.events import TraceEvent
+from assistantx.core.ports.messenger import OutboundMessage
+from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
-from assistantx.settings import Settings
 from service.server import OPERATOR, free_port
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import httpx
 
-from assistantx.journal import Journal
+from assistantx.memory.journal import Journal
 from service.server import LEE, base_env, free_port, serve
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}

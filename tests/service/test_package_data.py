@@ -19,9 +19,9 @@ CANONICAL += ["maps/office.anchors.yaml", "prompts/decision.md", "prompts/baseli
 PROBE = """
 import json, assistantx
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
-from assistantx.clock import SimClock
-from assistantx.office import DEFAULT_OFFICE, load_office
-from assistantx.prompts import DEFAULT_PROMPTS
+from assistantx.core.clock import SimClock
+from assistantx.core.office import DEFAULT_OFFICE, load_office
+from assistantx.agents.llm.prompts import DEFAULT_PROMPTS
 office = load_office()
 robot = NavigatorRobot.from_files(office, SimClock(), localize=False)
 print(json.dumps({

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.clock import WallClock
-from assistantx.settings import Settings
+from assistantx.core.clock import WallClock
+from assistantx.core.settings import Settings
 from service.inprocess import running_service
 from service.server import LEE, OPERATOR
 

@@ -7,13 +7,13 @@ from collections.abc import AsyncIterator
 
 import pytest
 
-from assistantx.actions import Inform, Inquire, Move, SendQR, Wait, WaitInPlace
+from assistantx.adapters.lock.protocol import LockController, LockKeys
+from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.clock import SimClock, WallClock
-from assistantx.lock import LockController, LockKeys
-from assistantx.lock.server import LockServer
-from assistantx.office import Office, load_office
+from assistantx.core.actions import Inform, Inquire, Move, SendQR, Wait, WaitInPlace
+from assistantx.core.clock import SimClock, WallClock
+from assistantx.core.office import Office, load_office
 from assistantx.sim.office import SimOffice
 from assistantx.sim.session import SimSession
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
-from assistantx.errors import AmbiguousNameError, UnknownNameError
-from assistantx.office import Office, load_office
+from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.errors import AmbiguousNameError, UnknownNameError
+from assistantx.core.office import Office, load_office
 from assistantx.sim.session import SimSession
 
 STAPLER_TO_LEE = [{"holds": ["lee", "stapler:zhang"]}, {"informed": "lee"}]
@@ -119,7 +119,7 @@ async def test_ambiguous_and_unknown_names_are_errors(office: Office) -> None:
 
 
 async def test_printing_needs_the_file_first(office: Office) -> None:
-    from assistantx.actions import ForwardFile
+    from assistantx.core.actions import ForwardFile
 
     async with SimSession(office, requester="lee") as s:
         await s.do(Inquire(contact="xu", question="Could you print Lee's file for me?"))

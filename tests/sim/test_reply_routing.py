@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from datetime import UTC, datetime
 
-from assistantx.adapters.messenger.base import ChatRef, InboundMessage
-from assistantx.replies import ReplyBox
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
+from assistantx.runtime.replies import ReplyBox
 
 
 def _msg(

@@ -5,13 +5,13 @@ from __future__ import annotations
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
 
-from assistantx.assistant import Assistant, AssistantParts
+from assistantx.agents.symbolic import build_factory
+from assistantx.core.events import TraceEvent
+from assistantx.core.office import Office
+from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office
-from assistantx.ppdr.events import TraceEvent
-from assistantx.settings import Settings
+from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.sim.office import SimOffice
-from assistantx.symbolic import build_factory
 
 EventHook = Callable[[TraceEvent, SimOffice], Awaitable[None]]
 

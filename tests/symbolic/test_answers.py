@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.symbolic.answers import stance
+from assistantx.agents.symbolic.answers import stance
 
 
 @pytest.mark.parametrize(

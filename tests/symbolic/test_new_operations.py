@@ -9,7 +9,7 @@ from typing import Any
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.office import Office, load_office
+from assistantx.core.office import Office, load_office
 
 HARBOUR = Path(__file__).resolve().parents[2] / "dataset" / "offices" / "harbour" / "office.yaml"
 

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from assistantx.office import load_office
-from assistantx.symbolic.planning import describe
-from assistantx.task_schema import Task
-from assistantx.wording import purpose_text
+from assistantx.agents.symbolic.planning import describe
+from assistantx.core.office import load_office
+from assistantx.core.task_schema import Task
+from assistantx.core.wording import purpose_text
 
 ROOT = Path(__file__).resolve().parents[2] / "dataset"
 HARBOUR = load_office(ROOT / "offices" / "harbour" / "office.yaml")

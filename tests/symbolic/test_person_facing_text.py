@@ -14,11 +14,11 @@ import pytest
 from symbolic_run import run_instruction
 from test_tasks_in_sim import CASES, Case
 
-from assistantx.office import Office, load_office
+from assistantx.agents.symbolic.roles import RoleKind
+from assistantx.core.office import Office, load_office
+from assistantx.core.wording import PURPOSE_TEXT
 from assistantx.sim.people import handover_problem
 from assistantx.sim.world import World
-from assistantx.symbolic.roles import RoleKind
-from assistantx.wording import PURPOSE_TEXT
 
 _OFFICE = load_office()
 _ITEM_TYPES = sorted({t.id for t in _OFFICE.item_types}, key=len, reverse=True)

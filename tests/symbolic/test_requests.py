@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.office import Office
-from assistantx.symbolic.requests import RequestRecognizer
+from assistantx.agents.symbolic.requests import RequestRecognizer
+from assistantx.core.office import Office
 
 CASES = [
     # text, a request from anyone, a request from a colleague just contacted

@@ -9,11 +9,11 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.office import Office
-from assistantx.symbolic import InstructionParser
-from assistantx.symbolic._kinds import KIND_RULES
-from assistantx.symbolic._lexicon import Mention
-from assistantx.symbolic._parties import PERSON_RULES, PersonSite, person_rule
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.agents.symbolic._kinds import KIND_RULES
+from assistantx.agents.symbolic._lexicon import Mention
+from assistantx.agents.symbolic._parties import PERSON_RULES, PersonSite, person_rule
+from assistantx.core.office import Office
 
 
 def _site(

@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.office import Office
+from assistantx.core.office import Office
 
 
 @dataclass(frozen=True)

@@ -9,11 +9,11 @@ import pytest
 import yaml
 from symbolic_run import run_instruction
 
-from assistantx.adapters.messenger.base import ChatRef
-from assistantx.office import Office, parse_office
-from assistantx.ppdr.events import TraceEvent
+from assistantx.agents.symbolic import InstructionParser, Task
+from assistantx.core.events import TraceEvent
+from assistantx.core.office import Office, parse_office
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.sim.office import SimOffice
-from assistantx.symbolic import InstructionParser, Task
 
 PARAPHRASES = Path(__file__).with_name("paraphrases.yaml")
 

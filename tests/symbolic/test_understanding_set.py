@@ -13,8 +13,8 @@ from typing import Any
 import pytest
 import yaml
 
-from assistantx.office import load_office
-from assistantx.symbolic import InstructionParser, Task
+from assistantx.agents.symbolic import InstructionParser, Task
+from assistantx.core.office import load_office
 
 ROOT = Path(__file__).resolve().parents[2]
 OFFICES = {

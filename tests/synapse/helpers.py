@@ -8,8 +8,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import MatrixClient, MatrixConfig, SqliteEventStore
+from assistantx.core.ports.messenger import InboundMessage
 
 WAIT_S = 20.0
 

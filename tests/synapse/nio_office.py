@@ -18,13 +18,13 @@ from typing import Any
 import yaml
 from fastapi import FastAPI
 
-from assistantx.actions import Action, Wait
 from assistantx.adapters.messenger.matrix import MatrixConfig
-from assistantx.assistant import ReasonerFactory
-from assistantx.office import Office
-from assistantx.ppdr.agents import AgentContext
+from assistantx.agents.base import AgentContext
+from assistantx.core.actions import Action, Wait
+from assistantx.core.office import Office
+from assistantx.core.settings import Settings
+from assistantx.runtime.assistant import ReasonerFactory
 from assistantx.service.app import create_app
-from assistantx.settings import Settings
 from ppdr.scripted_reasoner import ScriptedReasoner
 from synapse.gateway import AppserviceGateway
 

@@ -8,7 +8,6 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import (
     EventIngestor,
     EventNormalizer,
@@ -18,6 +17,7 @@ from assistantx.adapters.messenger.matrix import (
     SqliteEventStore,
     SyncPoller,
 )
+from assistantx.core.ports.messenger import InboundMessage
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import OfferCountingStore, assert_quiet, derive, next_message, wait_joined
 from synapse.homeserver import Account, SynapseHomeserver

@@ -24,16 +24,16 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
-from assistantx.adapters.messenger.base import ChatRef
 from assistantx.adapters.messenger.matrix import MatrixConfig, MatrixRuntime, matrix_runtime
 from assistantx.adapters.messenger.matrix.config import MatrixMode
-from assistantx.assistant import Assistant, AssistantParts
-from assistantx.clock import WallClock
+from assistantx.agents.base import AgentContext
+from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.clock import WallClock
+from assistantx.core.office import Office, load_office
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office, load_office
-from assistantx.ppdr.agents import AgentContext
-from assistantx.ppdr.loop import LoopLimits
+from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from ppdr.scripted_reasoner import ScriptedReasoner, Step
 from synapse.gateway import AppserviceGateway

@@ -11,13 +11,13 @@ from pathlib import Path
 import pytest
 import segno
 
-from assistantx.adapters.messenger.base import Attachment, ChatRef, InboundMessage, OutboundMessage
 from assistantx.adapters.messenger.matrix import (
     MatrixClient,
     MatrixConfig,
     MatrixMessenger,
     SqliteEventStore,
 )
+from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage, OutboundMessage
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import (
     derive,

@@ -18,14 +18,14 @@ import httpx
 import pytest
 import pytest_asyncio
 
-from assistantx.actions import Action, ForwardFile, Inform, Inquire, SendQR, Stop, Wait
 from assistantx.adapters.messenger.matrix import MatrixConfig
 from assistantx.adapters.messenger.matrix.normalize import (
     EDIT_TEXT,
     ENCRYPTED_TEXT,
     STRANGER_TEXT,
 )
-from assistantx.ppdr.agents import AgentContext
+from assistantx.agents.base import AgentContext
+from assistantx.core.actions import Action, ForwardFile, Inform, Inquire, SendQR, Stop, Wait
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import derive
 from synapse.homeserver import Account

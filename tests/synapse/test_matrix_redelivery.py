@@ -13,14 +13,14 @@ from pathlib import Path
 
 import pytest
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix import (
     MatrixClient,
     MatrixConfig,
     MatrixMessenger,
     SqliteEventStore,
 )
-from assistantx.errors import MessengerError
+from assistantx.core.errors import MessengerError
+from assistantx.core.ports.messenger import InboundMessage
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import assert_quiet, derive, next_message, wait_joined
 from synapse.homeserver import Account

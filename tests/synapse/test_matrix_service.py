@@ -10,12 +10,12 @@ import httpx
 import pytest
 import yaml
 
-from assistantx.actions import Inform, Stop
 from assistantx.adapters.messenger.matrix import MatrixConfig
-from assistantx.assistant import ReasonerFactory
-from assistantx.office import Office
+from assistantx.core.actions import Inform, Stop
+from assistantx.core.office import Office
+from assistantx.core.settings import Settings
+from assistantx.runtime.assistant import ReasonerFactory
 from assistantx.service.app import create_app
-from assistantx.settings import Settings
 from ppdr.scripted_reasoner import ScriptedReasoner
 from synapse.gateway import AppserviceGateway
 from synapse.homeserver import Account

@@ -1,5 +1,6 @@
 """Adapters to the outside world: messenger, robot base and smart lock.
 
-Each sub-package holds an interface (``base.py``) and its implementations; the simulator in
-``assistantx.sim`` implements the same interfaces.
+Each sub-package holds the wire client of one kind of device or service (it knows nothing of
+agents) and the adapter that maps it to a port in ``assistantx.core.ports``; the simulator in
+``assistantx.sim`` implements the same ports.
 """

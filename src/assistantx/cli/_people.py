@@ -3,8 +3,8 @@ person types: by the office's tolerant grounding (case, titles, small typos), ne
 
 from __future__ import annotations
 
+from assistantx.core.office import Office
 from assistantx.memory.resolve import Resolver
-from assistantx.office import Office
 
 
 def resolve_people(office: Office, requester: str, unavailable: str) -> tuple[str, tuple[str, ...]]:

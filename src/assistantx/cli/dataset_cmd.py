@@ -6,8 +6,8 @@ import argparse
 from collections import Counter
 from pathlib import Path
 
-from assistantx.errors import DatasetError, OfficeError
-from assistantx.office import DEFAULT_OFFICE, load_office
+from assistantx.core.errors import DatasetError, OfficeError
+from assistantx.core.office import DEFAULT_OFFICE, load_office
 
 DATASET_DIR = DEFAULT_OFFICE.parent
 
@@ -29,7 +29,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 
 
 def _generate(args: argparse.Namespace) -> int:
-    from assistantx.dataset import dump_tasks, generate, load_base_instructions
+    from assistantx.evaluation.dataset import dump_tasks, generate, load_base_instructions
 
     try:
         office = load_office(args.office)

@@ -12,12 +12,12 @@ import sys
 import time
 from pathlib import Path
 
-from assistantx.errors import AssistantXError
+from assistantx.core.errors import AssistantXError
+from assistantx.core.settings import Settings
 from assistantx.evaluation.episode import Episode
 from assistantx.evaluation.harness import EvalConfig, Progress, evaluate, load_episodes
 from assistantx.evaluation.methods import METHODS, METRICS_HELP
 from assistantx.evaluation.report import write_report
-from assistantx.settings import Settings
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -17,9 +17,9 @@ from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
-from assistantx.errors import LLMError, ModelBehaviorError
-from assistantx.llm import ChatRequest, Message, OpenAICompatibleModel, structured_call
-from assistantx.settings import Settings
+from assistantx.adapters.model import ChatRequest, Message, OpenAICompatibleModel, structured_call
+from assistantx.core.errors import LLMError, ModelBehaviorError
+from assistantx.core.settings import Settings
 
 
 class _Echo(BaseModel):
@@ -54,8 +54,8 @@ def _probe(args: argparse.Namespace) -> int:
     if not settings.llm_enabled:
         print("error: ASSISTANTX_LLM_BASE_URL is not set; the LLM reasoner is off")
         return 2
-    from assistantx.llm.probe import probe_server
-    from assistantx.trace import Decision, Percept, Plan, Reflection
+    from assistantx.adapters.model.probe import probe_server
+    from assistantx.core.trace import Decision, Percept, Plan, Reflection
 
     schemas: dict[str, type[BaseModel]] = {
         "perception": Percept,

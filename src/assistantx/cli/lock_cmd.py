@@ -4,8 +4,8 @@ make and rotate key files.
 Keys come from ``--key-file`` (or ``ASSISTANTX_LOCK_KEY_FILE``), else from the shared secret
 in ``ASSISTANTX_LOCK_SHARED_KEY``, else from the key file kept in ``ASSISTANTX_DATA_DIR`` (made
 there by whichever of ``lock-sim`` and ``serve`` starts first): the one rule of
-``assistantx.lock.keys.load_lock_keys``, so a lock-sim and a service on one data folder agree
-with no key configured. Rotation without downtime::
+``assistantx.adapters.lock.protocol.keys.load_lock_keys``, so a lock-sim and a service on one
+data folder agree with no key configured. Rotation without downtime::
 
     assistantx lock-keys rotate keys.json   # new current key, previous one kept
     kill -HUP <lock-sim pid>                # the lock now accepts both keys
@@ -21,13 +21,13 @@ import os
 import signal
 from pathlib import Path
 
-from assistantx.clock import WallClock
-from assistantx.lock.controller import LockController
-from assistantx.lock.keys import KeyringError, LockKeys, load_lock_keys, new_key
-from assistantx.lock.link import LinkTimeouts
-from assistantx.lock.server import LockServer
+from assistantx.adapters.lock.protocol.controller import LockController
+from assistantx.adapters.lock.protocol.keys import KeyringError, LockKeys, load_lock_keys, new_key
+from assistantx.adapters.lock.protocol.link import LinkTimeouts
+from assistantx.adapters.lock.protocol.server import LockServer
+from assistantx.core.clock import WallClock
+from assistantx.core.settings import Settings
 from assistantx.service.runtime import LOCK_KEYS_FILE, ensure_data_dir
-from assistantx.settings import Settings
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -13,8 +13,8 @@ from pathlib import Path
 
 import yaml
 
-from assistantx.errors import MessengerError
-from assistantx.settings import Settings
+from assistantx.core.errors import MessengerError
+from assistantx.core.settings import Settings
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -5,10 +5,10 @@ from __future__ import annotations
 import argparse
 import json
 
-from assistantx.errors import OfficeError
+from assistantx.core.errors import OfficeError
+from assistantx.core.office import Office, load_office
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.render import render_long_term
-from assistantx.office import Office, load_office
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

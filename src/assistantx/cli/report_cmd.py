@@ -14,11 +14,11 @@ import json
 import time
 from pathlib import Path
 
-from assistantx.errors import JournalError, OfficeError
+from assistantx.core.errors import JournalError, OfficeError
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
 from assistantx.feedback.report import load_report, parse_time, render_markdown, write_report
 from assistantx.feedback.store import FeedbackStore
-from assistantx.office import load_office
-from assistantx.settings import Settings
 
 JOURNAL_FILE = "journal.sqlite3"  # the service's journal (assistantx.service.runtime)
 

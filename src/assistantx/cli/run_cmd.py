@@ -16,14 +16,14 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
+from assistantx.agents.registry import reasoner_factory
 from assistantx.cli._people import resolve_people
-from assistantx.dataset.simrun import run_in_sim
-from assistantx.errors import AssistantXError, GroundingError, OfficeError
-from assistantx.office import load_office
-from assistantx.ppdr.loop import LoopLimits
-from assistantx.reasoners import reasoner_factory
-from assistantx.settings import Settings
-from assistantx.trace import Trace
+from assistantx.core.errors import AssistantXError, GroundingError, OfficeError
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
+from assistantx.core.trace import Trace
+from assistantx.runtime.loop import LoopLimits
+from assistantx.sim.run import run_in_sim
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -11,7 +11,7 @@ import argparse
 import socket
 import sys
 
-from assistantx.settings import Settings
+from assistantx.core.settings import Settings
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -84,9 +84,9 @@ def _robot_files_problem(settings: Settings) -> str | None:
     if settings.robot != "navigator":
         return None
     from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
-    from assistantx.clock import SimClock
-    from assistantx.errors import AssistantXError
-    from assistantx.office import load_office
+    from assistantx.core.clock import SimClock
+    from assistantx.core.errors import AssistantXError
+    from assistantx.core.office import load_office
 
     try:
         NavigatorRobot.from_files(

@@ -18,10 +18,10 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from assistantx.actions import parse_action
 from assistantx.cli._people import resolve_people
-from assistantx.errors import GroundingError, OfficeError
-from assistantx.office import load_office
+from assistantx.core.actions import parse_action
+from assistantx.core.errors import GroundingError, OfficeError
+from assistantx.core.office import load_office
 from assistantx.sim.session import SimSession
 
 

@@ -11,7 +11,7 @@ from typing import Any
 
 from pydantic import BaseModel, Field
 
-from assistantx.trace import Trace
+from assistantx.core.trace import Trace
 
 
 class Handover(BaseModel):

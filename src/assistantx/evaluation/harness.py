@@ -16,16 +16,16 @@ from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wai
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
-from assistantx.dataset.simrun import run_in_sim
-from assistantx.dataset.tasks import Task, load_tasks
-from assistantx.errors import AssistantXError, DatasetError
+from assistantx.core.errors import AssistantXError, DatasetError
+from assistantx.core.office import Office, load_office
+from assistantx.core.settings import Settings
+from assistantx.evaluation.dataset.tasks import Task, load_tasks
 from assistantx.evaluation.episode import Episode, Handover
 from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from assistantx.evaluation.metrics import success
 from assistantx.evaluation.relevance import relevant_people, relevant_places
-from assistantx.office import Office, load_office
-from assistantx.ppdr.loop import LoopLimits
-from assistantx.settings import Settings
+from assistantx.runtime.loop import LoopLimits
+from assistantx.sim.run import run_in_sim
 from assistantx.sim.world import LOCKER
 
 logger = logging.getLogger(__name__)

@@ -9,15 +9,15 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from assistantx.dataset.optimal import OptimalReasoner
-from assistantx.dataset.tasks import Task
-from assistantx.errors import ReasonerError
-from assistantx.evaluation.ablations import ABLATIONS
-from assistantx.evaluation.baselines import BASELINES, build_baseline_factory
-from assistantx.office import Office
-from assistantx.ppdr.agents import Reasoner
-from assistantx.reasoners import reasoner_factory
-from assistantx.settings import Settings
+from assistantx.agents.ablations import ABLATIONS
+from assistantx.agents.base import Reasoner
+from assistantx.agents.baselines import BASELINES, build_baseline_factory
+from assistantx.agents.oracle.optimal import OptimalReasoner
+from assistantx.agents.registry import reasoner_factory
+from assistantx.core.errors import ReasonerError
+from assistantx.core.office import Office
+from assistantx.core.settings import Settings
+from assistantx.evaluation.dataset.tasks import Task
 
 METHODS: tuple[str, ...] = ("optimal", "ppdr", *ABLATIONS, *BASELINES)
 

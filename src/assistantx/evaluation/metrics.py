@@ -28,11 +28,11 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 
-from assistantx.actions import Inquire, Move, Stop
+from assistantx.core.actions import Inquire, Move, Stop
+from assistantx.core.goals import parse_milestone
+from assistantx.core.trace import ActionResult
 from assistantx.evaluation.episode import Episode
 from assistantx.memory.updates import AvailabilityUpdate
-from assistantx.sim.goals import parse_milestone
-from assistantx.trace import ActionResult
 
 CYBER = frozenset({"inform", "inquire", "forward_file", "send_qr", "wait"})
 REAL = frozenset({"move", "wait_in_place"})

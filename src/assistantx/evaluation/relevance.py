@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.office import Office
-from assistantx.sim.goals import parse_milestone
-from assistantx.task_schema import MILESTONE_KIND, SEAL_TOOL, kind_shape
+from assistantx.core.goals import parse_milestone
+from assistantx.core.office import Office
+from assistantx.core.task_schema import MILESTONE_KIND, SEAL_TOOL, kind_shape
 
 
 def _owner(item: str) -> str:

@@ -9,6 +9,6 @@
 - ``report``: the usage report as JSON, Markdown and PNG charts
 """
 
-# ``assistantx.trace`` and ``assistantx.memory`` import each other; entering through the
+# ``assistantx.core.trace`` and ``assistantx.memory`` import each other; entering through the
 # memory package is the order that resolves, so do that before any module here needs a Trace.
 import assistantx.memory as _memory  # noqa: F401

@@ -11,11 +11,11 @@ from typing import Literal
 
 from pydantic import BaseModel, Field
 
-from assistantx.actions import ForwardFile, Inquire, Move, SendQR, WaitInPlace
+from assistantx.core.actions import ForwardFile, Inquire, Move, SendQR, WaitInPlace
+from assistantx.core.office import Office
+from assistantx.core.task_schema import RECORD_KINDS, RecordKind
+from assistantx.core.trace import Trace
 from assistantx.feedback.walking import DistanceFn, WalkingEstimate, estimate_walking
-from assistantx.office import Office
-from assistantx.task_schema import RECORD_KINDS, RecordKind
-from assistantx.trace import Trace
 
 # The report's kinds are the task schema's coarse record kinds (what the robot did).
 TaskKind = RecordKind

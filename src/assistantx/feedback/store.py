@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-from assistantx.errors import JournalError
+from assistantx.core.errors import JournalError
 from assistantx.feedback.impact import InstructionRecord
 from assistantx.feedback.survey import Survey, SurveyState
 

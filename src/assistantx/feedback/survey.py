@@ -24,7 +24,7 @@ from enum import StrEnum
 
 from pydantic import BaseModel, Field
 
-from assistantx.adapters.messenger.base import ChatRef
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.feedback.answers import Choice, ParsedReply, looks_like_request, word_count
 
 

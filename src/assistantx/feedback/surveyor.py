@@ -22,19 +22,19 @@ import contextlib
 import logging
 from typing import TYPE_CHECKING
 
-from assistantx.adapters.messenger.base import ChatRef, InboundMessage, Messenger, OutboundMessage
-from assistantx.clock import Clock
-from assistantx.errors import AdapterError
+from assistantx.core.clock import Clock
+from assistantx.core.errors import AdapterError
+from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef, InboundMessage, Messenger, OutboundMessage
 from assistantx.feedback.answers import ParsedReply, parse_reply
 from assistantx.feedback.impact import summarise
 from assistantx.feedback.store import FeedbackStore
 from assistantx.feedback.survey import Survey, SurveyPolicy, SurveyState
 from assistantx.feedback.walking import DistanceFn
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office
 
 if TYPE_CHECKING:
-    from assistantx.assistant import Assistant
+    from assistantx.runtime.assistant import Assistant
 
 logger = logging.getLogger(__name__)
 

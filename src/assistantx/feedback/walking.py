@@ -21,13 +21,13 @@ from typing import Literal
 
 from pydantic import BaseModel, Field
 
-from assistantx.actions import Move
+from assistantx.adapters.robot.nav.anchors import Anchor
+from assistantx.adapters.robot.nav.planner import GridPlanner
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.errors import RobotError, UnreachableError
-from assistantx.office import Office
-from assistantx.robot.anchors import Anchor
-from assistantx.robot.planner import GridPlanner
-from assistantx.trace import Trace
+from assistantx.core.actions import Move
+from assistantx.core.errors import RobotError, UnreachableError
+from assistantx.core.office import Office
+from assistantx.core.trace import Trace
 
 logger = logging.getLogger(__name__)
 

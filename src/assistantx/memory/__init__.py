@@ -1,6 +1,6 @@
 """The Memory Unit: long-term belief graph, per-instruction short-term memory, one renderer."""
 
-from assistantx.dialogue import DialogueTurn
+from assistantx.core.dialogue import DialogueTurn
 from assistantx.memory.graph import LOCKER, Availability, LongTermMemory
 from assistantx.memory.render import render_long_term, render_memory, render_short_term
 from assistantx.memory.resolve import Resolver

@@ -22,13 +22,13 @@ from typing import Any, Literal
 import networkx as nx
 from pydantic import TypeAdapter
 
+from assistantx.core.office import Office
 from assistantx.memory.updates import (
     AppliedUpdate,
     AvailabilityUpdate,
     MemoryUpdate,
     OwnershipUpdate,
 )
-from assistantx.office import Office
 
 Availability = Literal["available", "unavailable", "unknown"]
 LOCKER = "locker"

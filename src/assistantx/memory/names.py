@@ -11,7 +11,7 @@ import difflib
 import re
 from collections.abc import Iterable
 
-from assistantx import english
+from assistantx.core import english
 
 TITLES = english.words("titles")
 _NON_WORD = re.compile(r"[^a-z0-9]+")

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import json
 
+from assistantx.core.trace import Percept
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.trace import Percept
 
 
 def quote(text: str, limit: int = 400) -> str:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import difflib
 import re
 
-from assistantx.actions import (
+from assistantx.core.actions import (
     Action,
     ForwardFile,
     Inform,
@@ -21,9 +21,9 @@ from assistantx.actions import (
     Wait,
     WaitInPlace,
 )
-from assistantx.errors import AmbiguousNameError, UnknownNameError
+from assistantx.core.errors import AmbiguousNameError, UnknownNameError
+from assistantx.core.office import Office
 from assistantx.memory.names import NameIndex, normalize
-from assistantx.office import Office
 
 ContactKind = str  # "person" | "group"
 

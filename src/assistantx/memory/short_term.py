@@ -6,8 +6,8 @@ from typing import Literal
 
 from pydantic import BaseModel, Field
 
-from assistantx.dialogue import DialogueTurn
-from assistantx.trace import Trace
+from assistantx.core.dialogue import DialogueTurn
+from assistantx.core.trace import Trace
 
 CodeState = Literal["issued", "scanned", "used", "revoked"]
 

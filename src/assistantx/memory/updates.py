@@ -1,6 +1,6 @@
-"""Typed memory updates (defined in ``assistantx.updates``, below the Memory Unit)."""
+"""Typed memory updates (defined in ``assistantx.core.updates``, below the Memory Unit)."""
 
-from assistantx.updates import (
+from assistantx.core.updates import (
     AppliedUpdate,
     AvailabilityUpdate,
     ItemLocationUpdate,

@@ -14,8 +14,8 @@ import asyncio
 import contextlib
 import logging
 
-from assistantx.assistant import Assistant
-from assistantx.journal import InstructionRecord, Journal
+from assistantx.memory.journal import InstructionRecord, Journal
+from assistantx.runtime.assistant import Assistant
 
 logger = logging.getLogger(__name__)
 

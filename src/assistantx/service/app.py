@@ -14,6 +14,7 @@ from fastapi.responses import FileResponse
 from fastapi.staticfiles import StaticFiles
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
+from assistantx.core.settings import Settings
 from assistantx.service import (
     dashboard,
     devices,
@@ -28,7 +29,6 @@ from assistantx.service import (
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.errors import error_body, install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
-from assistantx.settings import Settings
 
 logger = logging.getLogger(__name__)
 

@@ -19,7 +19,7 @@ import secrets
 from dataclasses import dataclass
 from pathlib import Path
 
-from assistantx.errors import GroundingError
+from assistantx.core.errors import GroundingError
 from assistantx.memory.resolve import Resolver
 from assistantx.service.errors import ForbiddenError, UnauthorizedError
 

@@ -24,10 +24,10 @@ from pathlib import Path
 from typing import Any
 
 from assistantx.adapters.lock.local import LocalLocker
-from assistantx.adapters.messenger.base import InboundMessage, OutboundMessage
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
-from assistantx.errors import LockError
-from assistantx.journal import Journal
+from assistantx.core.errors import LockError
+from assistantx.core.ports.messenger import InboundMessage, OutboundMessage
+from assistantx.memory.journal import Journal
 from assistantx.sim.office import HeldCode, SimOffice
 
 logger = logging.getLogger(__name__)

@@ -12,9 +12,9 @@ import fcntl
 import os
 from pathlib import Path
 
-from assistantx.errors import AssistantXError
+from assistantx.core.errors import AssistantXError
 
-LOCK_FILE = "assistantx.lock"
+LOCK_FILE = "assistantx.adapters.lock.protocol"
 
 
 class DataDirBusyError(AssistantXError):

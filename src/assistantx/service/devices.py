@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from assistantx.adapters.lock.base import LockStatus
-from assistantx.adapters.robot.base import RobotState
+from assistantx.core.ports.lock import LockStatus
+from assistantx.core.ports.robot import RobotState
 from assistantx.service.deps import Caller, Runtime
 
 router = APIRouter(prefix="/v1", tags=["devices"])

@@ -19,17 +19,17 @@ import logging
 from collections.abc import Callable
 from typing import Any
 
-from assistantx.adapters.messenger.base import InboundMessage
-from assistantx.assistant import Assistant
-from assistantx.journal import EventRecord, InstructionRecord, Journal, Status
+from assistantx.core.events import TraceEvent
+from assistantx.core.office import Office
+from assistantx.core.ports.messenger import InboundMessage
+from assistantx.core.trace import ActionResult
 from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.journal import EventRecord, InstructionRecord, Journal, Status
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AppliedUpdate
-from assistantx.office import Office
-from assistantx.ppdr.events import TraceEvent
+from assistantx.runtime.assistant import Assistant
 from assistantx.service.hub import EventHub
 from assistantx.service.telemetry import ServiceMetrics
-from assistantx.trace import ActionResult
 
 logger = logging.getLogger(__name__)
 

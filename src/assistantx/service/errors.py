@@ -15,7 +15,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
-from assistantx.errors import (
+from assistantx.core.errors import (
     ActionError,
     AdapterError,
     AmbiguousNameError,

@@ -23,7 +23,7 @@ from typing import Annotated
 from fastapi import APIRouter, Header, Query
 from fastapi.responses import StreamingResponse
 
-from assistantx.journal import MAX_SEQ, EventRecord
+from assistantx.memory.journal import MAX_SEQ, EventRecord
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError

@@ -7,7 +7,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Response
 
-from assistantx.journal import MAX_SEQ, Status
+from assistantx.memory.journal import MAX_SEQ, Status
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.schemas import (

@@ -7,8 +7,8 @@ from typing import Annotated, Literal
 
 from fastapi import APIRouter, Query
 
-from assistantx.adapters.messenger.base import ChatRef
-from assistantx.journal import MAX_SEQ
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.memory.journal import MAX_SEQ
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError

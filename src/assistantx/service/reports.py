@@ -31,7 +31,7 @@ from fastapi.responses import PlainTextResponse, Response
 from pydantic import BaseModel
 
 from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.errors import AssistantXError
+from assistantx.core.errors import AssistantXError
 from assistantx.feedback.report import (
     CHARTS,
     ChartName,

@@ -18,28 +18,30 @@ from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
 
-from assistantx.adapters.lock.base import Locker
 from assistantx.adapters.lock.local import LocalLocker
+from assistantx.adapters.lock.protocol.controller import LockController
+from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
-from assistantx.adapters.robot.base import RobotBase
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
-from assistantx.assistant import (
+from assistantx.agents.registry import reasoner_factory
+from assistantx.agents.symbolic.requests import RequestRecognizer
+from assistantx.core.clock import WallClock
+from assistantx.core.errors import LockConnectionError
+from assistantx.core.office import Office, load_office
+from assistantx.core.ports.lock import Locker
+from assistantx.core.ports.robot import RobotBase
+from assistantx.core.settings import Settings
+from assistantx.memory.journal import InstructionRecord, Journal
+from assistantx.memory.resolve import Resolver
+from assistantx.runtime.assistant import (
     Assistant,
     AssistantParts,
     ReasonerFactory,
     new_instruction_id,
 )
-from assistantx.clock import WallClock
-from assistantx.errors import LockConnectionError
-from assistantx.journal import InstructionRecord, Journal
-from assistantx.lock.controller import LockController
-from assistantx.lock.keys import LockKeys, load_lock_keys
-from assistantx.memory.resolve import Resolver
-from assistantx.office import Office, load_office
-from assistantx.ppdr.loop import LoopLimits
-from assistantx.reasoners import reasoner_factory
+from assistantx.runtime.loop import LoopLimits
 from assistantx.service import colleagues
 from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
@@ -50,9 +52,7 @@ from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
-from assistantx.settings import Settings
 from assistantx.sim.office import SimOffice
-from assistantx.symbolic.requests import RequestRecognizer
 
 logger = logging.getLogger(__name__)
 

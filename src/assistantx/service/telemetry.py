@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from assistantx.journal import Journal
+from assistantx.core.trace import TraceStep
+from assistantx.memory.journal import Journal
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.prometheus import Counter, Gauge, Histogram, Labels, Registry
-from assistantx.trace import TraceStep
 
 STEP_BUCKETS = (0.01, 0.05, 0.1, 0.5, 1.0, 5.0, 10.0, 30.0, 60.0, 300.0, 900.0)
 

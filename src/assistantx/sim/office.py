@@ -18,9 +18,14 @@ from dataclasses import dataclass
 from datetime import UTC, datetime
 from typing import Any, Protocol, runtime_checkable
 
-from assistantx.adapters.lock.base import Locker, LockEvent
 from assistantx.adapters.lock.local import LocalLocker
-from assistantx.adapters.messenger.base import (
+from assistantx.adapters.lock.protocol.controller import LockController
+from assistantx.adapters.lock.protocol.keys import Keyring
+from assistantx.core.clock import Clock, SimClock
+from assistantx.core.errors import LockError
+from assistantx.core.office import Office
+from assistantx.core.ports.lock import Locker, LockEvent
+from assistantx.core.ports.messenger import (
     Attachment,
     ChatRef,
     InboundMessage,
@@ -28,12 +33,7 @@ from assistantx.adapters.messenger.base import (
     OutboundMessage,
     SentMessage,
 )
-from assistantx.adapters.robot.base import RobotBase
-from assistantx.clock import Clock, SimClock
-from assistantx.errors import LockError
-from assistantx.lock.controller import LockController
-from assistantx.lock.keys import Keyring
-from assistantx.office import Office
+from assistantx.core.ports.robot import RobotBase
 from assistantx.sim.people import Reply, direct_reply, group_replies, handover_problem
 from assistantx.sim.people import perform_handover as do_handover
 from assistantx.sim.robot import DistanceFn, ObservedRobot, SimRobot

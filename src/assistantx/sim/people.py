@@ -11,16 +11,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from assistantx.adapters.lock.base import WORK_PURPOSES
-from assistantx.office import Operation, OperationShape, Ownership
+from assistantx.core.office import Operation, OperationShape, Ownership
+from assistantx.core.ports.lock import WORK_PURPOSES
+from assistantx.core.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
+from assistantx.core.wording import item_phrase
 from assistantx.sim.understanding import (
     is_question,
     mentioned_item_types,
     mentioned_requests,
 )
 from assistantx.sim.world import LOCKER, World
-from assistantx.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
-from assistantx.wording import item_phrase
 
 
 @dataclass(frozen=True)

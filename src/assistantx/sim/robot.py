@@ -12,10 +12,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Protocol, runtime_checkable
 
-from assistantx.adapters.robot.base import MoveResult, Pose, RobotBase, RobotState
-from assistantx.clock import Clock
-from assistantx.errors import UnreachableError
-from assistantx.office import Office
+from assistantx.core.clock import Clock
+from assistantx.core.errors import UnreachableError
+from assistantx.core.office import Office
+from assistantx.core.ports.robot import MoveResult, Pose, RobotBase, RobotState
 
 DistanceFn = Callable[[str, str], float]
 

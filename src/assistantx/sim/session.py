@@ -11,20 +11,20 @@ import contextlib
 from types import TracebackType
 from typing import Self
 
-from assistantx.actions import Action
-from assistantx.adapters.lock.base import Locker
-from assistantx.adapters.messenger.base import InboundMessage
-from assistantx.adapters.robot.base import RobotBase
-from assistantx.clock import Clock
-from assistantx.errors import GroundingError
-from assistantx.executors import ExecutionContext, Executor
+from assistantx.core.actions import Action
+from assistantx.core.clock import Clock
+from assistantx.core.errors import GroundingError
+from assistantx.core.office import Office
+from assistantx.core.ports.lock import Locker
+from assistantx.core.ports.messenger import InboundMessage
+from assistantx.core.ports.robot import RobotBase
+from assistantx.core.trace import ActionResult, Trace
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.office import Office
-from assistantx.replies import ReplyBox
+from assistantx.runtime.executors import ExecutionContext, Executor
+from assistantx.runtime.replies import ReplyBox
 from assistantx.sim.office import SimOffice
-from assistantx.trace import ActionResult, Trace
 
 
 class SimSession:

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import re
 
-from assistantx import english
+from assistantx.core import english
+from assistantx.core.office import Office
+from assistantx.core.task_schema import FILE_KIND, PERSON_KINDS
 from assistantx.memory.names import normalize
-from assistantx.office import Office
-from assistantx.task_schema import FILE_KIND, PERSON_KINDS
 
 # The task schema's person-to-person kinds → the English words that signal them (the package's
 # English data file); the office's own operations are signalled by their verbs and their

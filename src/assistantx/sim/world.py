@@ -11,9 +11,9 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from assistantx.errors import ActionError
-from assistantx.office import Office
-from assistantx.sim.goals import parse_milestone
+from assistantx.core.errors import ActionError
+from assistantx.core.goals import parse_milestone
+from assistantx.core.office import Office
 
 LOCKER = "locker"
 

@@ -7,10 +7,10 @@ the same two methods, so a simulator drives either one.
 
 from __future__ import annotations
 
-from assistantx.adapters.lock.base import Locker, LockEvent, LockStatus, Purpose, QRCode
-from assistantx.clock import Clock
-from assistantx.lock.codes import CodeIssuer
-from assistantx.lock.controller import LockController
+from assistantx.adapters.lock.protocol.codes import CodeIssuer
+from assistantx.adapters.lock.protocol.controller import LockController
+from assistantx.core.clock import Clock
+from assistantx.core.ports.lock import Locker, LockEvent, LockStatus, Purpose, QRCode
 
 
 class LocalLocker(Locker):

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.adapters.lock.base import Locker, LockEvent, LockStatus, Purpose, QRCode
-from assistantx.clock import Clock, WallClock
-from assistantx.errors import LockError, LockProtocolError
-from assistantx.lock.client import Backoff, LockClient
-from assistantx.lock.codes import CodeIssuer
-from assistantx.lock.keys import LockKeys
-from assistantx.lock.link import LinkTimeouts
+from assistantx.adapters.lock.protocol.client import Backoff, LockClient
+from assistantx.adapters.lock.protocol.codes import CodeIssuer
+from assistantx.adapters.lock.protocol.keys import LockKeys
+from assistantx.adapters.lock.protocol.link import LinkTimeouts
+from assistantx.core.clock import Clock, WallClock
+from assistantx.core.errors import LockError, LockProtocolError
+from assistantx.core.ports.lock import Locker, LockEvent, LockStatus, Purpose, QRCode
 
 
 class TcpLocker(Locker):

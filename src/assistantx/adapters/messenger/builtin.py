@@ -15,7 +15,9 @@ import uuid
 from collections.abc import Awaitable, Callable, Iterable
 from datetime import UTC, datetime
 
-from assistantx.adapters.messenger.base import (
+from assistantx.core.clock import Clock
+from assistantx.core.errors import MessengerError
+from assistantx.core.ports.messenger import (
     Attachment,
     ChatRef,
     InboundMessage,
@@ -23,9 +25,7 @@ from assistantx.adapters.messenger.base import (
     OutboundMessage,
     SentMessage,
 )
-from assistantx.clock import Clock
-from assistantx.errors import MessengerError
-from assistantx.journal import Journal, MessageRecord
+from assistantx.memory.journal import Journal, MessageRecord
 
 logger = logging.getLogger(__name__)
 

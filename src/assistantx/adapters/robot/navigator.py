@@ -36,23 +36,23 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
-from assistantx.adapters.robot.base import MoveResult, Pose, RobotBase, RobotState
-from assistantx.clock import Clock
-from assistantx.errors import (
+from assistantx.adapters.robot.nav.anchor_check import AnchorProblem, check_anchors
+from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
+from assistantx.adapters.robot.nav.geometry import FloatArray
+from assistantx.adapters.robot.nav.navigation import NavigationParams, Navigator
+from assistantx.adapters.robot.nav.occupancy_map import OCCUPIED, OccupancyMap, load_map
+from assistantx.adapters.robot.nav.plan_process import PLAN_PROCESS
+from assistantx.adapters.robot.nav.planner import GridPlanner, Path
+from assistantx.core.clock import Clock
+from assistantx.core.errors import (
     BlockedError,
     LocalizationLostError,
     MapError,
     RobotError,
     UnreachableError,
 )
-from assistantx.office import Office
-from assistantx.robot.anchor_check import AnchorProblem, check_anchors
-from assistantx.robot.anchors import Anchor, load_anchors
-from assistantx.robot.geometry import FloatArray
-from assistantx.robot.navigation import NavigationParams, Navigator
-from assistantx.robot.occupancy_map import OCCUPIED, OccupancyMap, load_map
-from assistantx.robot.plan_process import PLAN_PROCESS
-from assistantx.robot.planner import GridPlanner, Path
+from assistantx.core.office import Office
+from assistantx.core.ports.robot import MoveResult, Pose, RobotBase, RobotState
 
 logger = logging.getLogger(__name__)
 

@@ -38,14 +38,6 @@ from typing import Any, Protocol
 import httpx
 from fastapi import APIRouter
 
-from assistantx.adapters.messenger.base import (
-    Attachment,
-    ChatRef,
-    InboundMessage,
-    Messenger,
-    OutboundMessage,
-    SentMessage,
-)
 from assistantx.adapters.messenger.matrix.appservice import (
     create_appservice_router,
     create_discarding_router,
@@ -62,7 +54,15 @@ from assistantx.adapters.messenger.matrix.normalize import (
 from assistantx.adapters.messenger.matrix.rooms import RoomDirectory
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
-from assistantx.errors import MessengerError, UnreachableContactError
+from assistantx.core.errors import MessengerError, UnreachableContactError
+from assistantx.core.ports.messenger import (
+    Attachment,
+    ChatRef,
+    InboundMessage,
+    Messenger,
+    OutboundMessage,
+    SentMessage,
+)
 
 logger = logging.getLogger(__name__)
 

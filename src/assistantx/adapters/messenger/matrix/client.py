@@ -22,7 +22,7 @@ from urllib.parse import quote
 
 import httpx
 
-from assistantx.errors import MessengerError
+from assistantx.core.errors import MessengerError
 
 logger = logging.getLogger(__name__)
 

@@ -22,7 +22,7 @@ from typing import Literal, Self
 import yaml
 from pydantic import BaseModel, Field, SecretStr, ValidationError, model_validator
 
-from assistantx.errors import MessengerError
+from assistantx.core.errors import MessengerError
 
 MatrixMode = Literal["push", "pull", "both"]
 

@@ -20,9 +20,9 @@ import logging
 from collections.abc import Awaitable, Callable, Mapping, Sequence
 from typing import Any
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix.normalize import PLATFORM, AutoReply, EventNormalizer
 from assistantx.adapters.messenger.matrix.store import EventStore
+from assistantx.core.ports.messenger import InboundMessage
 
 logger = logging.getLogger(__name__)
 

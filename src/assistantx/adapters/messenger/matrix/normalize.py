@@ -28,8 +28,8 @@ from dataclasses import dataclass
 from datetime import UTC, datetime
 from typing import Any
 
-from assistantx.adapters.messenger.base import Attachment, ChatRef, InboundMessage
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
+from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage
 
 logger = logging.getLogger(__name__)
 

@@ -13,7 +13,7 @@ from typing import Any
 import yaml
 
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
-from assistantx.errors import MessengerError
+from assistantx.core.errors import MessengerError
 
 
 def registration(config: MatrixConfig) -> dict[str, Any]:

@@ -22,7 +22,7 @@ from assistantx.adapters.messenger.matrix.config import MatrixConfig
 from assistantx.adapters.messenger.matrix.ingest import RoomEvent
 from assistantx.adapters.messenger.matrix.normalize import Rooms
 from assistantx.adapters.messenger.matrix.store import EventStore
-from assistantx.errors import UnreachableContactError
+from assistantx.core.errors import UnreachableContactError
 
 logger = logging.getLogger(__name__)
 

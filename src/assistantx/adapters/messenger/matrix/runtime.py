@@ -29,8 +29,8 @@ from fastapi import APIRouter
 from assistantx.adapters.messenger.matrix.adapter import MatrixMessenger, Transcript
 from assistantx.adapters.messenger.matrix.config import MatrixConfig, load_matrix_config
 from assistantx.adapters.messenger.matrix.store import EventStore, SqliteEventStore
-from assistantx.errors import MessengerError
-from assistantx.settings import Settings
+from assistantx.core.errors import MessengerError
+from assistantx.core.settings import Settings
 
 logger = logging.getLogger(__name__)
 

@@ -28,8 +28,8 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Protocol, TypeVar
 
-from assistantx.adapters.messenger.base import InboundMessage
-from assistantx.errors import MessengerError
+from assistantx.core.errors import MessengerError
+from assistantx.core.ports.messenger import InboundMessage
 
 T = TypeVar("T")
 

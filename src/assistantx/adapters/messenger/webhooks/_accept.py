@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import asyncio
 
-from assistantx.adapters.messenger.base import InboundMessage
 from assistantx.adapters.messenger.matrix.store import EventStore
+from assistantx.core.ports.messenger import InboundMessage
 
 
 async def accept_and_enqueue(

@@ -25,7 +25,6 @@ from fastapi import APIRouter, Request
 from fastapi.responses import JSONResponse
 from pydantic import SecretStr
 
-from assistantx.adapters.messenger.base import Attachment, ChatRef, InboundMessage
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.webhooks._accept import accept_and_enqueue
 from assistantx.adapters.messenger.webhooks.body import (
@@ -34,6 +33,7 @@ from assistantx.adapters.messenger.webhooks.body import (
     read_capped_body,
     timestamp_utc,
 )
+from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage
 
 logger = logging.getLogger(__name__)
 

@@ -1,0 +1,1 @@
+"""The LLM agents: perception, planning, decision and reflection as prompts to a chat model."""

@@ -1,0 +1,320 @@
+"""From a base instruction's spec to what a task needs: goal milestones, roles and visits.
+
+A *role* is a person the task needs and whose availability is unknown until asked: a named
+person (Zhang, who must sign) or anyone able among candidates (an owner of a stapler, a guard
+of the printer). A *visit* is one stop of the robot: drive to a place, hand out QR codes to one
+person, wait there for the hand-over. A plan is the roles to resolve, the cyber actions that
+need no visit (forwarding a file), the visits, and the final deliveries, in that order.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.core.goals import Milestone
+from assistantx.core.office import Office
+from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
+from assistantx.memory.graph import LongTermMemory
+
+RoleKind = Literal["named", "owner", "guard"]
+
+
+@dataclass(frozen=True)
+class Role:
+    """A person slot; ``key`` identifies it so that parts needing the same person share it."""
+
+    key: str
+    kind: RoleKind
+    question: str  # what the assistant asks a candidate
+    group_question: str | None = None  # what it asks a group when every candidate is away
+    person: str | None = None  # named roles
+    item_type: str | None = None  # owner roles
+    facility: str | None = None  # guard roles
+    wants_file: bool = False  # the answer carries the person's file
+
+
+@dataclass(frozen=True)
+class Code:
+    role: str  # role key, or "@requester"
+    item: str  # item id; "{role}" is replaced by the role's person when resolved
+    purpose: str
+
+
+@dataclass(frozen=True)
+class Visit:
+    """Drive to ``place`` (a role's person, the requester or a facility id), hand out codes."""
+
+    place: str
+    person: str  # role key or "@requester"
+    codes: tuple[Code, ...]
+
+
+@dataclass(frozen=True)
+class Forward:
+    source: str  # role key or "@requester"
+    target: str  # role key, person id or "@requester"
+
+
+@dataclass
+class TaskPlan:
+    roles: list[Role] = field(default_factory=list)
+    forwards: list[Forward] = field(default_factory=list)
+    visits: list[Visit] = field(default_factory=list)
+    deliveries: list[tuple[str, Code]] = field(default_factory=list)  # recipient → collect code
+    goal: list[Milestone] = field(default_factory=list)
+    must_be_available: set[str] = field(default_factory=set)  # told without being asked
+
+    def role(self, key: str) -> Role:
+        return next(r for r in self.roles if r.key == key)
+
+    def add_role(self, role: Role) -> None:
+        if all(r.key != role.key for r in self.roles):
+            self.roles.append(role)
+
+    def add_goal(self, milestone: Milestone) -> None:
+        if milestone not in self.goal:
+            self.goal.append(milestone)
+
+
+REQUESTER = "@requester"
+
+
+def facility_for(office: Office, operation: str) -> str:
+    return next(f.id for f in office.facilities if operation in f.operations)
+
+
+def candidates(role: Role, ltm: LongTermMemory, requester: str) -> list[str]:
+    """Who memory says could fill the role (unordered; the policy orders them)."""
+    if role.kind == "named":
+        assert role.person is not None
+        return [role.person]
+    if role.kind == "owner":
+        assert role.item_type is not None
+        found = ltm.owners(role.item_type)
+    else:
+        assert role.facility is not None
+        found = ltm.guards(role.facility)
+    return [p for p in found if p != requester]
+
+
+def able(role: Role, office: Office, person: str) -> bool:
+    """Whether ``person`` could fill the role in truth (used to find group helpers)."""
+    if role.kind == "named":
+        return person == role.person
+    if role.kind == "owner":
+        return any(o.type == role.item_type for o in office.person(person).owns)
+    return person in office.facility(role.facility or "").guards
+
+
+def build_plan(base: BaseInstruction, office: Office) -> TaskPlan:
+    plan = TaskPlan()
+    a = base.requester
+    who = office.person(a).name
+    for part in base.parts:
+        _add_part(plan, part, a, who, office)
+    plan.add_goal({"informed": a})
+    return plan
+
+
+def _named(person: str, question: str, *, wants_file: bool = False) -> Role:
+    return Role(
+        key=f"person:{person}",
+        kind="named",
+        question=question,
+        person=person,
+        wants_file=wants_file,
+    )
+
+
+def _guard(office: Office, operation: str, question: str, group_question: str | None) -> Role:
+    facility = facility_for(office, operation)
+    return Role(
+        key=f"guard:{facility}",
+        kind="guard",
+        question=question,
+        group_question=group_question,
+        facility=facility,
+    )
+
+
+def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> None:
+    kind = "make" if made_kind(office, part.kind) else part.kind  # "coffee": make a coffee
+    match kind:
+        case "fetch":
+            item_type = part.item or ""
+            name = office.item_type(item_type).name
+            keeper = office.keeper(part.owner, item_type) if part.owner else None
+            if keeper is not None:  # kept in a cupboard: its guard takes it out
+                role = Role(
+                    key=f"guard:{keeper.id}",
+                    kind="guard",
+                    question=f"Could you take {part.owner}'s {name} out of the {keeper.name}?",
+                    group_question=f"Could anyone take the {name} out of the {keeper.name}?",
+                    facility=keeper.id,
+                )
+                item = f"{item_type}:{part.owner}"
+                plan.add_goal({"holds": [a, item]})
+                plan.add_role(role)
+                plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
+                plan.deliveries.append((REQUESTER, Code(REQUESTER, item, "collect")))
+                return
+            if part.owner is not None:
+                role = _named(part.owner, f"Could you lend {who} your {name}?")
+                item = f"{item_type}:{part.owner}"
+                plan.add_goal({"holds": [a, item]})
+            else:
+                role = Role(
+                    key=f"owner:{item_type}",
+                    kind="owner",
+                    question=f"Could you lend {who} your {name}?",
+                    group_question=f"Does anyone have a {name} {who} could borrow?",
+                    item_type=item_type,
+                )
+                item = f"{item_type}:{{{role.key}}}"
+                plan.add_goal({"holds": [a, f"{item_type}:*"]})
+            plan.add_role(role)
+            plan.visits.append(Visit(role.key, role.key, (Code(role.key, item, "deposit"),)))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, item, "collect")))
+        case "deliver":
+            to = part.to or ""
+            item = f"{part.item}:{a}"
+            role = _named(
+                to, f"Could you be at your desk? The robot brings you something from {who}."
+            )
+            plan.add_role(role)
+            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, item, "deposit"),)))
+            plan.deliveries.append((role.key, Code(role.key, item, "collect")))
+            plan.add_goal({"holds": [to, item]})
+        case "print":
+            op = part_operation(office, part)
+            source, made = op.input or "", op.product or ""
+            place_name = office.facility(facility_for(office, op.id)).name
+            thing = office.item_type(source).name
+            role = _guard(
+                office,
+                op.id,
+                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
+            )
+            plan.add_role(role)
+            product = f"{made}:{a}"
+            plan.forwards.append(Forward(REQUESTER, role.key))
+            place = role.facility or ""
+            plan.visits.append(Visit(place, role.key, (Code(role.key, product, "produce"),)))
+            recipient = REQUESTER
+            if part.to is not None:
+                target = _named(
+                    part.to,
+                    f"Could you be at your desk? The robot brings you something from {who}.",
+                )
+                plan.add_role(target)
+                recipient = target.key
+            plan.deliveries.append((recipient, Code(recipient, product, "collect")))
+            plan.add_goal({"printed": f"{source}:{a}"})
+            plan.add_goal({"holds": [part.to or a, product]})
+        case "copy":
+            op = part_operation(office, part)
+            source, made = op.input or "", op.product or ""
+            place_name = office.facility(facility_for(office, op.id)).name
+            thing = office.item_type(source).name
+            role = _guard(
+                office,
+                op.id,
+                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
+            )
+            plan.add_role(role)
+            doc = f"{source}:{a}"
+            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
+            plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, f"{made}:{a}", "collect")))
+            plan.add_goal({"copied": doc})
+            plan.add_goal({"holds": [a, f"{made}:{a}"]})
+            plan.add_goal({"holds": [a, doc]})
+        case "sign" | "seal":
+            doc = f"document:{a}"
+            if part.kind == "sign":
+                signer = part.signer or ""
+                role = _named(signer, f"Could you sign {who}'s document?")
+                plan.add_goal({"signed": [doc, signer]})
+            else:
+                role = Role(
+                    key="owner:seal",
+                    kind="owner",
+                    question=f"Could you stamp {who}'s document with your seal?",
+                    group_question=f"Could anyone stamp {who}'s document with the company seal?",
+                    item_type="seal",
+                )
+                plan.add_goal({"sealed": doc})
+            plan.add_role(role)
+            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
+            plan.visits.append(Visit(role.key, role.key, (Code(role.key, doc, part.kind),)))
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
+            plan.add_goal({"holds": [a, doc]})
+        case "make":
+            op = part_operation(office, part)
+            made = op.product or ""
+            place_name = office.facility(facility_for(office, op.id)).name
+            thing = office.item_type(made).name
+            role = _guard(
+                office,
+                op.id,
+                f"Could you get {thing} for {who} from the {place_name}?",
+                f"Could anyone get {thing} for {who} from the {place_name}?",
+            )
+            plan.add_role(role)
+            product = f"{made}:{a}"
+            plan.visits.append(
+                Visit(role.facility or "", role.key, (Code(role.key, product, "produce"),))
+            )
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, product, "collect")))
+            plan.add_goal({"holds": [a, product]})
+        case "heat":
+            op = part_operation(office, part)
+            source = op.input or ""
+            kept = f"{source}:{a}"
+            keeper = office.keeper(a, source)
+            thing = office.item_type(source).name
+            place_name = office.facility(facility_for(office, op.id)).name
+            op_role = _guard(
+                office,
+                op.id,
+                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
+            )
+            if keeper is not None:  # kept at a facility (a lunch in the fridge)
+                keeper_role = Role(
+                    key=f"guard:{keeper.id}",
+                    kind="guard",
+                    question=(
+                        f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?"
+                    ),
+                    group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
+                    facility=keeper.id,
+                )
+                plan.add_role(keeper_role)
+                plan.visits.append(
+                    Visit(keeper.id, keeper_role.key, (Code(keeper_role.key, kept, "deposit"),))
+                )
+            else:  # the requester has it
+                plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, kept, "deposit"),)))
+            plan.add_role(op_role)
+            plan.visits.append(
+                Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
+            )
+            plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
+            plan.add_goal({"heated": kept})
+            plan.add_goal({"holds": [a, kept]})
+        case "forward_file":
+            to = part.to or ""
+            plan.forwards.append(Forward(REQUESTER, to))
+            plan.must_be_available.add(to)
+            plan.add_goal({"received": [to, f"file:{a}"]})
+        case "get_file":
+            owner = part.owner or ""
+            role = _named(owner, f"Could you send me your file for {who}?", wants_file=True)
+            plan.add_role(role)
+            plan.forwards.append(Forward(role.key, REQUESTER))
+            plan.add_goal({"received": [a, f"file:{owner}"]})

@@ -1,0 +1,273 @@
+"""What a clause asks for: its tasks, from its cues and the kinds of its objects.
+
+A clause that names one document-like job (sign, seal, heat, print, copy) is one task; the
+first rule of ``KIND_RULES`` that applies decides which, so "print and sign" reads as the
+signature the print is for. Otherwise every object of the verb is a task of its own
+("a stapler and a coffee"), its kind following from the item's kind (a product is made, a
+file is sent, a belonging is brought).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic._lexicon import Mention
+from assistantx.agents.symbolic._parties import Clause, Roles, recipient_of
+from assistantx.core import english
+from assistantx.core.office import Office, OperationShape
+from assistantx.core.task_schema import FILE_KIND, SEAL_TOOL, Task
+
+_SEND_WORDS = english.words("send_words")
+# The task kinds that act on the requester's file.
+FILE_KINDS = frozenset({"print", FILE_KIND})
+
+
+@dataclass
+class Scene:
+    """One clause, sorted: its cues, its objects by item kind, who is who."""
+
+    clause: Clause
+    roles: Roles
+    requester: str
+    previous: Task | None
+    cues: set[str]
+    items: list[Mention]
+    files: list[Mention]
+    personal: list[Mention]
+    products: list[Mention]
+    physical: list[Mention]
+    facilities: list[str]
+    doc: Mention | None  # the document-like item the clause is about
+    refers: bool  # "it", "them": the clause points back
+
+    @property
+    def recipient(self) -> str:
+        return self.roles.recipient[-1] if self.roles.recipient else self.requester
+
+    def owner(self, m: Mention | None) -> str | None:
+        if m is None:
+            return None
+        return self.roles.owners.get(m.start) or (
+            self.roles.source[-1] if self.roles.source else None
+        )
+
+
+@dataclass(frozen=True)
+class KindRule:
+    name: str
+    applies: Callable[[Scene], bool]
+    task: Callable[[Scene], Task]
+
+
+def _sign(s: Scene) -> Task:
+    actor = next(iter(s.roles.actor + s.roles.bare + s.roles.recipient), None)
+    return Task(
+        kind="sign",
+        item=s.doc.id if s.doc else None,
+        owner=s.owner(s.doc) or s.requester,
+        recipient=s.requester if actor in s.roles.recipient else s.recipient,
+        actor=actor,
+    )
+
+
+def _seal_items(s: Scene) -> list[Mention]:
+    return [m for m in s.clause.mentions if m.kind == "item" and m.id == SEAL_TOOL]
+
+
+def _seal(s: Scene) -> Task:
+    assert s.doc is not None
+    sealer = next((s.roles.owners.get(m.start) for m in _seal_items(s)), None)
+    sealer = sealer or next(iter(s.roles.actor + s.roles.bare), None)
+    return Task(
+        kind="seal",
+        item=s.doc.id,
+        owner=s.owner(s.doc) or s.requester,
+        recipient=s.recipient,
+        actor=sealer,
+    )
+
+
+def _heat(s: Scene) -> Task:
+    return Task(
+        kind="heat",
+        item=s.doc.id if s.doc else None,
+        owner=s.owner(s.doc) or s.requester,
+        recipient=s.recipient,
+    )
+
+
+def _print(s: Scene) -> Task:
+    source = (s.files or s.personal)[0] if s.files or s.personal else None
+    return Task(
+        kind="print", item="file", owner=s.owner(source) or s.requester, recipient=s.recipient
+    )
+
+
+def _copy(s: Scene) -> Task:
+    assert s.doc is not None
+    return Task(
+        kind="copy", item=s.doc.id, owner=s.owner(s.doc) or s.requester, recipient=s.recipient
+    )
+
+
+# One task for the whole clause: highest priority first.
+KIND_RULES: tuple[KindRule, ...] = (
+    KindRule("a signature, whatever else is said", lambda s: "sign" in s.cues, _sign),
+    KindRule(
+        "a seal on a document (the seal named or asked for)",
+        lambda s: ("seal" in s.cues or bool(_seal_items(s))) and s.doc is not None,
+        _seal,
+    ),
+    KindRule(
+        "heating, unless a product is asked for",
+        lambda s: "heat" in s.cues and not s.products,
+        _heat,
+    ),
+    KindRule("printing the requester's file", lambda s: "print" in s.cues, _print),
+    KindRule(
+        "copying a document (not a file)",
+        lambda s: "copy" in s.cues and s.doc is not None and not s.files,
+        _copy,
+    ),
+)
+
+
+class TaskReader:
+    """Reads the tasks of a clause against one office."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self.kinds = {t.id: t.kind for t in office.item_types}
+        # the products that name their task: "a printout" is a print, "a copy" a copy
+        self.printout = product_of_shape(office, "render")
+        self.copy = product_of_shape(office, "transform")
+        self.sourced = frozenset(p for p in (self.printout, self.copy) if p)
+
+    def product_of(self, kind: str) -> str | None:
+        return {"print": self.printout, "copy": self.copy}.get(kind)
+
+    def scene(self, clause: Clause, roles: Roles, requester: str, previous: Task | None) -> Scene:
+        items = clause.objects()
+        cues = set(clause.cues)
+        for m in items:  # products of the printer are cues: "a printout", "a copy"
+            if m.id == self.printout:
+                cues.add("print")
+            if m.id == self.copy:
+                cues.add("copy")
+        facilities = [m.id for m in clause.mentions if m.kind == "facility"]
+        if any(
+            self.office.operation(op).shape(self.office) == "treat"
+            for f in facilities
+            for op in self.office.facility(f).operations
+        ):
+            cues.add("heat")
+        items = [m for m in items if m.id not in (self.printout, self.copy)]
+        files = [m for m in items if self.kinds[m.id] == "electronic"]
+        personal = [m for m in items if self.kinds[m.id] == "personal"]
+        products = [m for m in items if self.kinds[m.id] == "product"]
+        physical = [m for m in items if self.kinds[m.id] in ("belonging", "personal")]
+        # "my report file": a document word naming a file
+        if files and personal and personal[-1].end == files[0].start:
+            dropped = personal.pop()
+            physical = [m for m in physical if m is not dropped]
+        doc: Mention | None = personal[0] if personal else None
+        refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
+        if doc is None and refers and previous is not None and previous.item is not None:
+            if self.kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
+                doc = Mention("item", -1, -1, (previous.item,))
+                roles.owners[-1] = previous.owner or requester
+        return Scene(
+            clause,
+            roles,
+            requester,
+            previous,
+            cues,
+            items,
+            files,
+            personal,
+            products,
+            physical,
+            facilities,
+            doc,
+            refers,
+        )
+
+    def tasks(
+        self, clause: Clause, roles: Roles, requester: str, previous: Task | None
+    ) -> list[Task]:
+        cues = set(clause.cues)
+        if (
+            previous is not None
+            and not cues & {"print", "copy"}
+            and any(m.id == self.product_of(previous.kind) for m in clause.objects())
+        ):
+            return []  # "print my draft and take the printout to Sue": the same task, on
+        s = self.scene(clause, roles, requester, previous)
+        rule = next((r for r in KIND_RULES if r.applies(s)), None)
+        if rule is not None:
+            return [rule.task(s)]
+        return self._objects(s)
+
+    def _objects(self, s: Scene) -> list[Task]:
+        """No one-task rule applied: a task per object of the verb."""
+        clause, roles, requester, previous = s.clause, s.roles, s.requester, s.previous
+        items, physical = s.items, s.physical
+        sends = any(
+            m.kind == "cue" and m.text.lower() in _SEND_WORDS and m.start not in clause.modifiers
+            for m in clause.mentions
+        )
+        if not items:
+            if s.refers and sends and previous is not None and previous.kind in FILE_KINDS:
+                # "print my slides and forward them to Zhou": the same file, passed on
+                file_owner = previous.owner or requester
+                return [Task(kind=FILE_KIND, item="file", owner=file_owner, recipient=s.recipient)]
+            made = [
+                p
+                for f in s.facilities
+                for p in self.office.facility(f).products[:1]
+                if p not in (self.printout, self.copy) and ("give" in s.cues or "make" in s.cues)
+            ]
+            if made:
+                return [Task(kind="produce", item=p, recipient=s.recipient) for p in made]
+            if "seal" in s.cues:  # "bring me the stamp": the seal as an item
+                items = physical = [
+                    Mention("item", m.start, m.end, (SEAL_TOOL,), m.possessive, m.text)
+                    for m in clause.mentions
+                    if m.kind == "cue" and "seal" in m.ids
+                ][:1]
+        # every object of the verb is a task of its own: "a stapler and a coffee"
+        objects = [m for m in items if m in s.files or m in physical or m in s.products]
+        tasks: list[Task] = []
+        for k, m in enumerate(objects):
+            to = s.recipient if len(objects) == 1 else recipient_of(objects, k, roles, s.recipient)
+            kind = self.kinds[m.id]
+            helper = next(iter(roles.actor + roles.bare + roles.returned_to), None)
+            if kind == "product":
+                tasks.append(Task(kind="produce", item=m.id, recipient=to))
+            elif kind == "electronic" or (kind == "personal" and sends and not roles.source):
+                file_owner = s.owner(m) or helper or requester
+                tasks.append(Task(kind=FILE_KIND, item="file", owner=file_owner, recipient=to))
+            else:
+                tasks.append(
+                    Task(kind="transfer", item=m.id, owner=s.owner(m) or helper, recipient=to)
+                )
+        return list(dict.fromkeys(tasks))
+
+    def fill(self, task: Task, roles: Roles, requester: str) -> Task:
+        """A clause with no task of its own completes the previous one."""
+        update: dict[str, str] = {}
+        if roles.recipient:
+            update["recipient"] = roles.recipient[-1]
+        for who in roles.actor + roles.bare:
+            if task.kind in ("sign", "seal") and task.actor is None and "actor" not in update:
+                update["actor"] = who
+            elif task.kind == "transfer" and task.owner is None and "owner" not in update:
+                update["owner"] = who
+            elif "recipient" not in update and task.recipient == requester:
+                update["recipient"] = who
+        return task.model_copy(update=update) if update else task
+
+
+def product_of_shape(office: Office, shape: OperationShape) -> str | None:
+    return next((o.product for o in office.with_shape(shape)), None)

@@ -1,0 +1,112 @@
+"""Which item mentions of a clause are the objects of its request, and which only modify it.
+
+The object of a request is the head noun the request verb acts on; other item words in the
+clause say when, what for, or where, and must never become tasks of their own:
+
+- a time phrase, a bare noun after a time preposition: "a book to read *over lunch*",
+  "*after lunch* bring me some paper";
+- a modifier phrase after the object: "a mug *for my coffee*", "a pen *with* ...";
+- a purpose clause after the object: "a book *to read* on the train", "a pen *to sign my
+  contract* with" (a purpose verb with an object of its own is not the request either, so its
+  task word does not count; "take my contract to Zhang *to sign*" keeps it);
+- a container or measure word before "of": "a *cup of* coffee" is coffee.
+
+Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
+wipes") are all objects of the same verb. An item word used as a verb ("book me a taxi",
+"water the plants") is no item at all; ``verb_uses`` finds those before clauses are cut.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic._lexicon import Mention, Token
+from assistantx.core import english
+
+# Prepositions of time: a bare noun after one is a time phrase ("over lunch", "at lunch").
+TIME_PREPOSITIONS = english.words("time_prepositions")
+# Prepositions that attach a phrase to the object before them ("a mug for my coffee").
+# Not "of" (the object's own complement: "a copy of my contract"), "on" ("the seal on my
+# form"), "from"/"to"/"by" (people's roles).
+MODIFIER_PREPOSITIONS = english.words("object_modifier_prepositions")
+DETERMINERS = english.words("determiners")
+# Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
+_BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
+
+
+def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """Mentions with one-word items used as verbs ("book me a taxi") turned into plain words."""
+    out = list(mentions)
+    for n, m in enumerate(out):
+        if m.kind != "item" or m.end - m.start != 1 or m.possessive:
+            continue
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        if before in _BEFORE_VERB and after in DETERMINERS:
+            out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
+    return out
+
+
+def modifiers(
+    tokens: Sequence[Token], mentions: Sequence[Mention], sourced: frozenset[str] = frozenset()
+) -> set[int]:
+    """Start tokens of the clause's item and cue mentions that are not its request."""
+    out: set[int] = set()
+    head_seen = False
+    in_purpose = False
+    for n, m in enumerate(mentions):
+        if in_purpose:
+            if m.kind in ("item", "cue"):
+                out.add(m.start)
+            continue
+        if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(mentions, n):
+            in_purpose = True
+            continue
+        if m.kind != "item":
+            continue
+        if _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
+            out.add(m.start)
+        elif _container(tokens, mentions, n, sourced):
+            out.add(m.start)
+        else:
+            head_seen = True
+    return out
+
+
+def _purpose(mentions: Sequence[Mention], n: int) -> bool:
+    """ "to" + a verb: a purpose clause, unless the verb is a task word without its own object."""
+    nxt = mentions[n + 1] if n + 1 < len(mentions) else None
+    if nxt is None:
+        return False
+    if nxt.kind == "word":
+        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit()
+    if nxt.kind == "cue":
+        return any(m.kind == "item" for m in mentions[n + 2 :])
+    return False
+
+
+def _time_phrase(tokens: Sequence[Token], m: Mention) -> bool:
+    return m.start > 0 and tokens[m.start - 1].word in TIME_PREPOSITIONS
+
+
+def _modifier_phrase(tokens: Sequence[Token], m: Mention) -> bool:
+    k = m.start - 1
+    while k >= 0 and (tokens[k].word in DETERMINERS or tokens[k].possessive):
+        k -= 1
+    return k >= 0 and tokens[k].word in MODIFIER_PREPOSITIONS
+
+
+def _container(
+    tokens: Sequence[Token], mentions: Sequence[Mention], n: int, sourced: frozenset[str]
+) -> bool:
+    """ "a cup of coffee": the item before "of" another item only measures it; not a product
+    made from what follows "of" (``sourced``: "a copy of my form")."""
+    m = mentions[n]
+    if m.id in sourced or m.end >= len(tokens) or tokens[m.end].word != "of":
+        return False
+    for after in mentions[n + 1 :]:
+        if after.kind == "item":
+            return True
+        if after.kind != "word" or after.ids[0] not in DETERMINERS | {"of"}:
+            return False
+    return False

@@ -1,0 +1,238 @@
+"""Who is who in a clause: recipient, source, actor and owners, by a priority rule table.
+
+Each person mention gets one role from the first rule of ``PERSON_RULES`` that matches the
+words around it ("from Wang" → source, "by Wang" → actor, "to Wang" → recipient, "Wang's
+stapler" → an owner of the item that follows). The table is data, read top to bottom: a
+rule's place in it is its priority, and the name says why it wins over the rules below it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.agents.symbolic._lexicon import Mention, Token
+from assistantx.core import english
+from assistantx.memory.names import TITLES
+
+_DATIVE_VERBS = english.words("dative_verbs")
+# "Wang's desk": a person's place, where the robot meets them.
+_PLACE_WORDS = english.words("place_words")
+_OBJECT_PRONOUNS = english.words("object_pronouns")
+# The words before a person that make them the recipient, the source or the doer.
+_TO = frozenset({"to", "for", "with"})
+_MEET_AT = frozenset({"to", "at", "for"})
+_DIRECT = frozenset({"ask", "have", "let", "tell"})
+
+
+class UnresolvedPronoun(Exception):
+    """A possessive pronoun with nobody it could refer to ("bring me his stapler")."""
+
+
+@dataclass
+class Clause:
+    mentions: list[Mention]
+    cues: set[str] = field(default_factory=set)
+    modifiers: set[int] = field(default_factory=set)  # starts of mentions that only modify
+
+    def objects(self) -> list[Mention]:
+        """The item mentions the request acts on, in text order."""
+        return [m for m in self.mentions if m.kind == "item" and m.start not in self.modifiers]
+
+
+@dataclass
+class Roles:
+    recipient: list[str] = field(default_factory=list)
+    recipient_at: list[int] = field(default_factory=list)  # token start of each recipient
+    returned_to: list[str] = field(default_factory=list)  # "back to X": X owns the item
+    source: list[str] = field(default_factory=list)
+    actor: list[str] = field(default_factory=list)
+    bare: list[str] = field(default_factory=list)
+    owners: dict[int, str] = field(default_factory=dict)  # item mention start → owner id
+
+    def add_recipient(self, who: str, at: int) -> None:
+        self.recipient.append(who)
+        self.recipient_at.append(at)
+
+    def recipient_between(self, start: int, end: int) -> str | None:
+        """The last recipient named in tokens [start, end) ("a coffee *for me* and ...")."""
+        found = [
+            w for w, at in zip(self.recipient, self.recipient_at, strict=True) if start <= at < end
+        ]
+        return found[-1] if found else None
+
+
+@dataclass(frozen=True)
+class PersonSite:
+    """The words around one person mention."""
+
+    prev: str  # the word before (titles skipped)
+    nxt: str  # the word after
+    following: Mention | None  # the next mention
+    possessive: bool
+    back: bool  # "back to Wang"
+
+    @property
+    def at_place(self) -> bool:
+        """ "Wang's desk": the person's place, not something they own."""
+        f = self.following
+        return self.possessive and f is not None and f.kind == "word" and f.ids[0] in _PLACE_WORDS
+
+
+Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner"]
+
+
+@dataclass(frozen=True)
+class PersonRule:
+    name: str
+    applies: Callable[[PersonSite], bool]
+    slot: Slot
+
+
+# Highest priority first; the first rule that applies gives the person's role.
+PERSON_RULES: tuple[PersonRule, ...] = (
+    PersonRule(
+        "at Wang's desk: met there", lambda s: s.at_place and s.prev in _MEET_AT, "recipient"
+    ),
+    PersonRule("from Wang's desk: the source", lambda s: s.at_place and s.prev == "from", "source"),
+    PersonRule("Wang's desk: named, no role yet", lambda s: s.at_place, "bare"),
+    PersonRule(
+        "Wang's signature: Wang signs",
+        lambda s: (
+            s.possessive
+            and s.following is not None
+            and s.following.kind == "cue"
+            and "sign" in s.following.ids
+        ),
+        "actor",
+    ),
+    PersonRule("Wang's stapler: an owner of the item", lambda s: s.possessive, "owner"),
+    PersonRule("from Wang: the source", lambda s: s.prev == "from", "source"),
+    PersonRule("by Wang: the doer", lambda s: s.prev == "by", "actor"),
+    PersonRule(
+        "back to Wang: the owner, given back", lambda s: s.prev == "to" and s.back, "returned"
+    ),
+    PersonRule("to / for / with Wang: the recipient", lambda s: s.prev in _TO, "recipient"),
+    PersonRule(
+        "Wang to sign, ask Wang: the doer", lambda s: s.nxt == "to" or s.prev in _DIRECT, "actor"
+    ),
+    PersonRule(
+        "give Wang a stapler: the recipient",
+        lambda s: s.prev in _DATIVE_VERBS and s.following is not None and s.following.kind != "cue",
+        "recipient",
+    ),
+    PersonRule("otherwise: named, no role yet", lambda s: True, "bare"),
+)
+
+
+def person_rule(site: PersonSite) -> PersonRule:
+    """The first rule of ``PERSON_RULES`` that applies (the last one always does)."""
+    return next(r for r in PERSON_RULES if r.applies(site))
+
+
+def person_role(tokens: list[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
+    m = ms[n]
+    site = PersonSite(
+        prev=prev_word(tokens, m.start),
+        nxt=tokens[m.end].word if m.end < len(tokens) else "",
+        following=ms[n + 1] if n + 1 < len(ms) else None,
+        possessive=m.possessive,
+        back=m.start >= 2 and tokens[m.start - 2].word == "back",
+    )
+    match person_rule(site).slot:
+        case "recipient":
+            roles.add_recipient(who, m.start)
+        case "returned":  # "take the stapler back to Zhang": Zhang's, and Zhang gets it
+            roles.add_recipient(who, m.start)
+            roles.returned_to.append(who)
+        case "source":
+            roles.source.append(who)
+        case "actor":
+            roles.actor.append(who)
+        case "bare":
+            roles.bare.append(who)
+        case "owner":
+            pass  # attached to the item that follows (``owner_of``)
+
+
+def clause_roles(
+    tokens: list[Token], clause: Clause, requester: str, last_person: list[str]
+) -> Roles:
+    """The roles of everyone a clause names; ``last_person`` collects who was named so far
+    (for "him", "her")."""
+    roles = Roles()
+    ms = clause.mentions
+    for n, m in enumerate(ms):
+        if m.kind == "person":
+            who = m.ids[0]
+            last_person.append(who)
+            person_role(tokens, ms, n, who, roles)
+        elif m.kind == "self":
+            word = tokens[m.start].word
+            if word in ("my", "mine"):
+                continue
+            prev = prev_word(tokens, m.start)
+            if prev in _TO or prev in _DATIVE_VERBS:
+                roles.add_recipient(requester, m.start)
+        elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
+            following = ms[n + 1] if n + 1 < len(ms) else None
+            others = [x for x in last_person if x != requester]
+            if following is not None and following.kind == "item":
+                continue  # "her stapler": a possessive
+            if prev_word(tokens, m.start) in ("to", "for") and others:
+                roles.add_recipient(others[-1], m.start)
+        elif m.kind == "item":
+            owner = owner_of(tokens, ms, n, requester, last_person)
+            if owner is not None:
+                roles.owners[m.start] = owner
+    return roles
+
+
+def owner_of(
+    tokens: list[Token], ms: list[Mention], n: int, requester: str, last_person: list[str]
+) -> str | None:
+    m = ms[n]
+    # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
+    for k in range(n - 1, max(-1, n - 3), -1):
+        p = ms[k]
+        if p.kind == "self" and p.possessive:
+            return requester
+        if p.kind == "person" and p.possessive:
+            return p.ids[0]
+        if p.kind == "pronoun" and p.possessive:
+            others = [x for x in last_person if x != requester]
+            if not others:  # "his stapler" with nobody named before: whose?
+                raise UnresolvedPronoun(p.text)
+            return others[-1]
+        if p.kind not in ("word", "item"):  # "Wang's report file": a compound noun
+            break
+    # "the stapler of Zhang" / "a stapler from Zhang"
+    if n + 2 < len(ms) + 1 and n + 1 < len(ms):
+        nxt = tokens[m.end].word if m.end < len(tokens) else ""
+        after = ms[n + 1]
+        if nxt in ("of", "from") and after.kind == "word" and n + 2 < len(ms):
+            after = ms[n + 2]
+        if nxt in ("of", "from") and after.kind == "person":
+            return after.ids[0]
+    return None
+
+
+def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> str:
+    """Whom one of several objects is for: a "for/to X" right after it ("a coffee for me and
+    some water for Wang"), else one named before all objects ("get me X and Y"), else the
+    clause's recipient ("take my book and my pen to Wang")."""
+    m = objects[k]
+    end = objects[k + 1].start if k + 1 < len(objects) else 1 << 30
+    return (
+        roles.recipient_between(m.end, end)
+        or roles.recipient_between(0, objects[0].start)
+        or default
+    )
+
+
+def prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:
+    k = start - 1
+    while k >= 0 and skip_titles and tokens[k].word in TITLES:
+        k -= 1
+    return tokens[k].word if k >= 0 else ""

@@ -1,0 +1,377 @@
+"""Instruction understanding: free text → a typed task frame, or a clarifying question.
+
+The frame says what to do (the task kinds of docs/task-semantics.md), with which item, whose,
+for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lexicon``):
+
+1. the text is split into clauses at sentence ends and at "and"/"then"/commas that start a
+   new request ("print my file and take it to Wang" is a print and a hand-on);
+2. each clause's mentions (people, items, facilities, task cues, "me"/"my") get roles from
+   the words around them by the priority rule table of ``_parties``: "to/for X" →
+   recipient, "from X"/"X's" → owner, "by X"/"get X to" → actor;
+3. only the objects of the request count (``_objects``): not time phrases ("over lunch"),
+   purpose clauses ("to read"), modifiers after the object ("a mug for my coffee"), nor
+   container words ("a cup of coffee"); every coordinated object ("a stapler and a coffee")
+   is a task of its own, with the recipient named next to it;
+4. the clause's kind follows from its cues and item kinds (``_kinds``: a rule table for the
+   one-task clauses, then a task per object); a clause with no task of its own
+   ("and bring it to me", or the answer "Dr. Zhang") fills in the previous task;
+5. anything missing, unknown or ambiguous becomes a question for the requester, never a guess,
+   and so does an object no task acts on: part of a request is never dropped silently.
+"""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic._kinds import FILE_KINDS, TaskReader
+from assistantx.agents.symbolic._lexicon import (
+    COMMON,
+    PRONOUNS,
+    Lexicon,
+    Mention,
+    Token,
+    inflections,
+)
+from assistantx.agents.symbolic._objects import modifiers, verb_uses
+from assistantx.agents.symbolic._parties import (
+    Clause,
+    UnresolvedPronoun,
+    clause_roles,
+    prev_word,
+)
+from assistantx.agents.symbolic.screen import RequestScreen
+from assistantx.core import english
+from assistantx.core.office import Office
+from assistantx.core.task_schema import SEAL_TOOL as SEAL
+from assistantx.core.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
+from assistantx.memory.names import normalize
+
+_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+
+__all__ = ["InstructionParser", "Task", "TaskFrame", "TaskKind"]
+
+
+_BREAK_WORDS = english.words("clause_breaks")
+_JOIN_WORDS = english.words("clause_joins")
+_SKIP_AFTER_JOIN = english.words("skip_after_join")
+
+
+NOT_UNDERSTOOD = (
+    "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
+)
+"""The question for a text in which no request was found (not an unclear request)."""
+
+
+class InstructionParser:
+    """Parses instructions against one office."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self.lex = Lexicon.from_office(office)
+        self.screen = RequestScreen(office, self.lex)
+        self.reader = TaskReader(office)
+        self._kinds = self.reader.kinds
+        self._printout = self.reader.printout
+        self._copy = self.reader.copy
+        self._sourced = self.reader.sourced
+        self._op_words = {
+            op.id: {
+                form
+                for phrase in (*op.verbs, op.name)
+                for verb in normalize(phrase).split()[:1]
+                for form in inflections(verb)
+            }
+            for op in office.operations
+        }
+
+    # -- public --------------------------------------------------------------------------
+    def parse(self, text: str, requester: str) -> TaskFrame:
+        """The frame of a request: screened first (withdrawn, negated, destructive, facts,
+        unsupported services; ``screen``), then the tasks read from what is left."""
+        screened = self.screen.screen(text, requester)
+        if screened.decline is not None:
+            return TaskFrame(
+                requester=requester,
+                decline=screened.decline,
+                decline_outcome=screened.outcome,
+                hints=screened.hints,
+                evidence=screened.evidence,
+            )
+        frame = self._parse(screened.text, requester)
+        if frame.understood:
+            frame = self._with_operations(frame, screened.text)
+        said = screened.text.strip()
+        evidence = [*screened.evidence, *(self._evidence(t, said) for t in frame.tasks)]
+        return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+
+    def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
+        """Name the operation where the office has several of a task's shape ("scan" or
+        "copy" a contract); ask which when the words do not say."""
+        words = {t.word for t in self.lex.tokens(text)}
+        tasks: list[Task] = []
+        for t in frame.tasks:
+            shape = _KIND_SHAPE.get(t.kind)
+            ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
+            if len(ops) > 1 and t.operation is None:
+                said = [op for op in ops if self._op_words[op.id] & words]
+                if len(said) != 1:
+                    names = " or ".join(op.name for op in ops)
+                    return TaskFrame(
+                        requester=frame.requester, question=f"Which do you mean: {names}?"
+                    )
+                t = t.model_copy(update={"operation": said[0].id})
+            tasks.append(t)
+        return frame.model_copy(update={"tasks": tasks})
+
+    def _evidence(self, task: Task, said: str) -> Evidence:
+        """A task in words: what it does, with whose item, for whom."""
+        name = self._item_name(task.item) if task.item else "item"
+        whose = (
+            f"{self.office.person(task.owner).name}'s {name}"
+            if task.owner
+            else f"anyone's {name}"
+            if task.kind == "transfer"
+            else name
+        )
+        parts = [f"{task.kind.replace('_', ' ')}: {whose}"]
+        if task.actor:
+            parts.append(f"by {self.office.person(task.actor).name}")
+        parts.append(f"for {self.office.person(task.recipient).name}")
+        return Evidence(words=said[:300], meaning=" ".join(parts))
+
+    def _parse(self, text: str, requester: str) -> TaskFrame:
+        tokens = self.lex.tokens(text)
+        mentions = verb_uses(tokens, self._owned_cue_items(self.lex.scan(tokens), tokens))
+        mentions = _settled_by_later_sentence(mentions, _gaps(text, tokens))
+        problems = self._problems(tokens, mentions)
+        if problems:
+            return TaskFrame(requester=requester, question=problems[0])
+        tasks: list[Task] = []
+        last_person: list[str] = []
+        objects: list[Mention] = []
+        previous_cues = True
+        clauses = self._clauses(tokens, text, mentions)
+        answered: set[int] = set()  # clauses that only named whom a pronoun meant
+        for k, clause in enumerate(clauses):
+            if k in answered:
+                continue
+            try:
+                roles = clause_roles(tokens, clause, requester, last_person)
+            except UnresolvedPronoun as exc:
+                later = _named_later(clauses, k + 1)
+                if later is None:
+                    unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
+                    return TaskFrame(requester=requester, question=unclear)
+                # "bring me his stapler. Zhang Wei": the answer names him
+                answered.add(later[0])
+                roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+            objects += clause.objects()
+            made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            if made and tasks and not previous_cues and self._refers_back(clause):
+                tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
+            previous_cues = bool(clause.cues)
+            if made:
+                tasks.extend(made)
+            elif tasks:
+                tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+        question = self._uncovered(objects, tasks) or self._check(tasks, requester)
+        return TaskFrame(
+            requester=requester, tasks=tasks if question is None else [], question=question
+        )
+
+    def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
+        """Re-parse after clarifying answers: the original with the answers, else the answer."""
+        frame = self.parse(text, requester)
+        for answer in answers:
+            if frame.understood:
+                break
+            combined = self.parse(f"{text}. {answer}", requester)
+            alone = self.parse(answer, requester)
+            frame = combined if combined.understood or not alone.understood else alone
+        return frame
+
+    @staticmethod
+    def _refers_back(clause: Clause) -> bool:
+        return any(m.kind == "pronoun" and not m.possessive for m in clause.mentions) and not any(
+            m.kind == "item" for m in clause.mentions
+        )
+
+    def _owned_cue_items(self, mentions: list[Mention], tokens: list[Token]) -> list[Mention]:
+        """ "Fang's seal", "my stamp": a task word after a possessive names an item."""
+        out = list(mentions)
+        for n in range(1, len(out)):
+            m, before = out[n], out[n - 1]
+            word = tokens[m.start].word
+            if m.kind == "cue" and word in self.lex.items and before.possessive:
+                out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
+        return out
+
+    # -- clauses -------------------------------------------------------------------------
+    def _clauses(self, tokens: list[Token], text: str, mentions: list[Mention]) -> list[Clause]:
+        gaps = _gaps(text, tokens)
+        clauses: list[Clause] = [Clause([])]
+        for n, m in enumerate(mentions):
+            word = tokens[m.start].word
+            hard = any(c in gaps[m.start] for c in ".!?;") and bool(clauses[-1].mentions)
+            soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
+                self._starts_request(
+                    mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
+                )
+            )
+            if (hard or soft) and clauses[-1].mentions:
+                clauses.append(Clause([]))
+            if m.kind == "word" and (word in _JOIN_WORDS or word in _BREAK_WORDS):
+                continue
+            clauses[-1].mentions.append(m)
+        for c in clauses:
+            c.modifiers = modifiers(tokens, c.mentions, self._sourced)
+            c.cues = {
+                k
+                for m in c.mentions
+                if m.kind == "cue" and m.start not in c.modifiers
+                for k in m.ids
+            }
+        return [c for c in clauses if c.mentions]
+
+    @staticmethod
+    def _starts_request(mentions: list[Mention], n: int, tokens: list[Token]) -> bool:
+        while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
+            n += 1
+        return n < len(mentions) and mentions[n].kind == "cue"
+
+    def _unsupported_facility(self, facility_id: str) -> bool:
+        """A facility whose operations are none the assistant can run (a meeting room)."""
+        ops = self.office.facility(facility_id).operations
+        return bool(ops) and not any(self.office.runnable(op) for op in ops)
+
+    # -- checks --------------------------------------------------------------------------
+    def _problems(self, tokens: list[Token], mentions: list[Mention]) -> list[str]:
+        out: list[str] = []
+        for n, m in enumerate(mentions):
+            if m.kind == "person" and len(m.ids) > 1:
+                names = " or ".join(self.office.person(i).name for i in m.ids)
+                said = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
+                out.append(f"Who do you mean by {said!r}: {names}?")
+            if m.kind == "word" and self._unknown_name(tokens, mentions, n):
+                name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
+                out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
+            if m.kind == "facility" and self._unsupported_facility(m.id):
+                f = self.office.facility(m.id)
+                out.append(
+                    f"Sorry, I can't help with the {f.name}. I can fetch and deliver things, "
+                    "pass on files, and run errands at the office machines. What would you "
+                    "like me to do?"
+                )
+        return out
+
+    def _unknown_name(self, tokens: list[Token], mentions: list[Mention], n: int) -> bool:
+        m = mentions[n]
+        word = tokens[m.start].word
+        if word in COMMON or word in PRONOUNS or word.isdigit() or len(word) < 2:
+            return False
+        following = mentions[n + 1] if n + 1 < len(mentions) else None
+        if m.possessive and following is not None and following.kind == "item":
+            return True  # "Smith's stapler"
+        prev = prev_word(tokens, m.start, skip_titles=False)
+        capital = m.text[:1].isupper() and m.start > 0
+        titled = prev in ("dr", "mr", "mrs", "ms", "prof", "professor", "doctor")
+        return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+
+    def _uncovered(self, objects: list[Mention], tasks: list[Task]) -> str | None:
+        """An object of the request that no task acts on: ask, never drop part of a request."""
+        if not tasks:
+            return None  # ``_check`` asks what is needed at all
+        for m in objects:
+            if not any(self._covers(t, m.id) for t in tasks):
+                return (
+                    f"Sorry, I'm not sure what you want me to do with the "
+                    f"{self._item_name(m.id)}. Could you tell me?"
+                )
+        return None
+
+    def _covers(self, task: Task, type_id: str) -> bool:
+        """Whether ``task`` acts on an item of ``type_id`` (as its item, source or product)."""
+        if task.item == type_id:
+            return True
+        if task.kind in FILE_KINDS and self._kinds[type_id] in ("electronic", "personal"):
+            return True  # "print my report", "email my contract"
+        return (task.kind, type_id) in {
+            ("print", self._printout),
+            ("copy", self._copy),
+            ("seal", SEAL),
+        }
+
+    def _check(self, tasks: list[Task], requester: str) -> str | None:
+        if not tasks:
+            return NOT_UNDERSTOOD
+        for t in tasks:
+            name = self._item_name(t.item) if t.item else "item"
+            if t.item is None:
+                return f"Which item do you mean for the {t.kind.replace('_', ' ')} request?"
+            if t.kind in ("sign",) and (t.actor is None or t.actor == requester):
+                return f"Who should do that with your {name}? Please tell me their name."
+            if t.kind == "transfer":
+                if t.owner is None and self._kinds[t.item] == "personal":
+                    return f"Whose {name} do you mean?"
+                if t.owner is not None and t.owner == t.recipient:
+                    who = "you" if t.owner == requester else self.office.person(t.owner).name
+                    return (
+                        f"Who should get {who}r {name}?"
+                        if who == "you"
+                        else (f"{who} already has their {name}; who should get it?")
+                    )
+            if t.kind == "send_file" and t.owner == t.recipient:
+                return "Who should I pass your file on to?"
+        return None
+
+    def _item_name(self, type_id: str) -> str:
+        return self.office.item_type(type_id).name
+
+
+def _settled_by_later_sentence(mentions: list[Mention], gaps: list[str]) -> list[Mention]:
+    """ "Bring me Zhnag's stapler. Zhang Wei": a later sentence that names one of the people
+    an ambiguous name may mean settles it (the answer to "who do you mean?"), and is used up."""
+    out = list(mentions)
+    used: set[int] = set()
+    for n, m in enumerate(out):
+        if m.kind != "person" or len(m.ids) < 2:
+            continue
+        for k in range(n + 1, len(out)):
+            later = out[k]
+            new_sentence = any(c in gap for gap in gaps[m.end : later.start + 1] for c in ".!?;")
+            if later.kind == "person" and len(later.ids) == 1 and later.id in m.ids:
+                if new_sentence:
+                    out[n] = Mention("person", m.start, m.end, later.ids, m.possessive, m.text)
+                    used.add(k)
+                break
+    return [m for k, m in enumerate(out) if k not in used]
+
+
+def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:
+    """A clause from ``first`` on that only names one person (an answer like "Zhang Wei" or
+    "I mean Wang"): its index and the person."""
+    for k in range(first, len(clauses)):
+        clause = clauses[k]
+        people = {m.ids for m in clause.mentions if m.kind == "person"}
+        if clause.cues or any(m.kind in ("item", "facility") for m in clause.mentions):
+            continue
+        if len(people) == 1 and len(next(iter(people))) == 1:
+            return k, next(iter(people))[0]
+    return None
+
+
+def _gaps(text: str, tokens: list[Token]) -> list[str]:
+    """The characters between each token and the one before it (punctuation)."""
+    from assistantx.memory.names import TITLES
+
+    gaps: list[str] = []
+    pos = 0
+    prev_title = False
+    flat = text.replace("’", "'")
+    for t in tokens:
+        at = flat.find(t.text, pos)
+        gap = flat[pos:at] if at >= 0 else ""
+        if gaps and prev_title:  # "Dr. Zhang": the title's full stop ends no sentence
+            gap = gap.replace(".", "", 1)
+        gaps.append(gap)
+        pos = at + len(t.text) if at >= 0 else pos
+        prev_title = t.word in TITLES
+    return gaps

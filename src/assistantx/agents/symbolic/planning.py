@@ -1,0 +1,484 @@
+"""Planning: a task frame split into ordered sub-goals, with the progress read from memory.
+
+Each task compiles to roles (who lends, prints, signs, receives) and phases, following the
+canonical sequences of docs/task-semantics.md:
+
+- ``Confirm(role)``: find someone for the role (ask, wait, next candidate, group chat);
+- ``Forward``: pass an electronic file on;
+- ``Handover(role, legs)``: the robot goes to the person, who uses one-time codes for each leg
+  (deposit, collect, sign, seal, copy, heat, produce).
+
+Progress is recomputed at every step from the evidence (codes used, files forwarded, answers),
+so a deviation (a refusal, a timeout, a person who did not come) re-plans by itself: the role
+loses its person and its Confirm phase is unmet again.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.agents.symbolic.evidence import Evidence
+from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
+from assistantx.core.english import wording
+from assistantx.core.office import Office
+from assistantx.core.ports.lock import Purpose
+from assistantx.core.task_schema import Task, TaskFrame, kind_shape, operation_of
+from assistantx.core.trace import Plan, SubGoal
+from assistantx.core.wording import item_type_name, person_name, purpose_text
+from assistantx.memory.graph import LongTermMemory
+
+TaskStatus = Literal["done", "active", "unachievable", "failed"]
+
+
+@dataclass(frozen=True)
+class Leg:
+    item_type: str
+    owner_fixed: str | None  # the item's owner when the frame fixes it
+    owner_role: str | None  # else: whoever fills this role (any owner's stapler)
+    purpose: Purpose
+
+
+@dataclass(frozen=True)
+class Confirm:
+    role: Role
+
+
+@dataclass(frozen=True)
+class Forward:
+    source: str
+    target_role: Role
+    file: str
+
+
+@dataclass(frozen=True)
+class Handover:
+    role: Role
+    legs: tuple[Leg, ...]
+
+
+Phase = Confirm | Forward | Handover
+
+
+@dataclass
+class CompiledTask:
+    task: Task
+    roles: list[Role]
+    phases: list[Phase]
+
+
+@dataclass
+class PhaseView:
+    phase: Phase
+    done: bool
+    description: str
+    person: str | None = None
+    place: str | None = None
+    items: list[tuple[str, Purpose]] = field(default_factory=list)
+
+
+@dataclass
+class TaskView:
+    compiled: CompiledTask
+    states: dict[str, RoleState]
+    phases: list[PhaseView]
+    status: TaskStatus
+    reason: str = ""
+
+    @property
+    def current(self) -> PhaseView | None:
+        return next((p for p in self.phases if not p.done), None)
+
+
+@dataclass
+class Agenda:
+    frame: TaskFrame
+    tasks: list[TaskView]
+
+    @property
+    def active(self) -> TaskView | None:
+        return next((t for t in self.tasks if t.status == "active"), None)
+
+
+class Planner:
+    def __init__(self, office: Office, roles: Roles) -> None:
+        self.office = office
+        self.roles = roles
+
+    # -- compiling -----------------------------------------------------------------------
+    def compile(self, frame: TaskFrame) -> list[CompiledTask]:
+        return [self._compile(n, t, frame.requester) for n, t in enumerate(frame.tasks)]
+
+    def _facility_for(self, t: Task) -> str:
+        """The facility that offers the task's operation (the first that does)."""
+        op = operation_of(self.office, t)
+        offering = self.office.offering(op) if op else []
+        if not offering:
+            raise LookupError(f"no facility for {t.kind} {t.item}")
+        return offering[0].id
+
+    def _source(self, n: int, t: Task, requester: str) -> Role:
+        """Who puts the item into the locker."""
+        item_type = t.item or ""
+        kept = self.office.keeper(t.owner, item_type) if t.owner else None
+        if kept is not None:
+            return Role(
+                f"{n}.source",
+                "keep",
+                requester,
+                item_type=item_type,
+                item_owner=t.owner,
+                facility=kept.id,
+            )
+        if t.owner is None:
+            return Role(
+                f"{n}.source", "lend", requester, item_type=item_type, beneficiary=t.recipient
+            )
+        kind: RoleKind = "lend" if self.office.item_type(item_type).kind == "belonging" else "give"
+        return Role(
+            f"{n}.source",
+            kind,
+            requester,
+            fixed=t.owner,
+            item_type=item_type,
+            item_owner=t.owner,
+            beneficiary=t.recipient,
+        )
+
+    def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
+        recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
+        phases: list[Phase] = []
+        roles: list[Role] = []
+
+        def leg(
+            item_type: str, purpose: Purpose, owner: str | None = None, role: Role | None = None
+        ) -> Leg:
+            return Leg(item_type, owner, role.key if role else None, purpose)
+
+        owner = t.owner or requester
+        item = t.item or ""
+        op = operation_of(self.office, t)
+        product = (self.office.operation(op).product if op else None) or item
+        source_type = (self.office.operation(op).input if op else None) or item
+        match t.kind:
+            case "transfer":
+                source = self._source(n, t, requester)
+                roles = [source, recipient]
+                it = leg(item, "deposit", t.owner, None if t.owner else source)
+                phases = [
+                    Handover(source, (it,)),
+                    Handover(
+                        recipient, (Leg(it.item_type, it.owner_fixed, it.owner_role, "collect"),)
+                    ),
+                ]
+            case "print":
+                guard = Role(
+                    f"{n}.renderer",
+                    "print",
+                    requester,
+                    item_type=source_type,
+                    item_owner=owner,
+                    facility=self._facility_for(t),
+                    operation=op,
+                )
+                roles = [guard, recipient]
+                if owner != requester:
+                    roles.append(
+                        Role(
+                            f"{n}.file",
+                            "send_file",
+                            requester,
+                            fixed=owner,
+                            item_type=source_type,
+                            beneficiary=requester,
+                        )
+                    )
+                phases = [
+                    Forward(owner, guard, f"{source_type}:{owner}"),
+                    Handover(guard, (leg(product, "produce", owner),)),
+                    Handover(recipient, (leg(product, "collect", owner),)),
+                ]
+            case "copy":
+                source = self._source(n, t, requester)
+                guard = Role(
+                    f"{n}.copier",
+                    "copy",
+                    requester,
+                    item_type=item,
+                    item_owner=owner,
+                    facility=self._facility_for(t),
+                    operation=op,
+                )
+                roles = [guard, source, recipient]
+                back: list[Phase]
+                if t.recipient == owner:
+                    back = [
+                        Handover(
+                            source, (leg(item, "collect", owner), leg(product, "collect", owner))
+                        )
+                    ]
+                else:
+                    back = [
+                        Handover(source, (leg(item, "collect", owner),)),
+                        Handover(recipient, (leg(product, "collect", owner),)),
+                    ]
+                phases = [
+                    Handover(source, (leg(item, "deposit", owner),)),
+                    Handover(guard, (leg(item, "copy", owner),)),
+                    *back,
+                ]
+            case "sign" | "seal":
+                source = self._source(n, t, requester)
+                doer = Role(
+                    f"{n}.{t.kind}er",
+                    t.kind,
+                    requester,
+                    fixed=t.actor,
+                    item_type=item,
+                    item_owner=owner,
+                )
+                roles = [doer, source, recipient]
+                phases = [
+                    Handover(source, (leg(item, "deposit", owner),)),
+                    Handover(doer, (leg(item, t.kind, owner),)),
+                    Handover(recipient, (leg(item, "collect", owner),)),
+                ]
+            case "produce":
+                guard = Role(
+                    f"{n}.maker",
+                    "produce",
+                    requester,
+                    item_type=item,
+                    facility=self._facility_for(t),
+                    operation=op,
+                    beneficiary=t.recipient,
+                )
+                roles = [guard, recipient]
+                phases = [
+                    Handover(guard, (leg(item, "produce", t.recipient),)),
+                    Handover(recipient, (leg(item, "collect", t.recipient),)),
+                ]
+            case "heat":
+                source = self._source(n, t, requester)
+                heater = Role(
+                    f"{n}.heater",
+                    "heat",
+                    requester,
+                    item_type=item,
+                    item_owner=owner,
+                    facility=self._facility_for(t),
+                    operation=op,
+                )
+                roles = [source, heater, recipient]
+                phases = [
+                    Handover(source, (leg(item, "deposit", owner),)),
+                    Handover(heater, (leg(item, "heat", owner),)),
+                    Handover(recipient, (leg(item, "collect", owner),)),
+                ]
+            case "send_file":
+                if owner != requester:
+                    roles = [
+                        Role(
+                            f"{n}.file",
+                            "send_file",
+                            requester,
+                            fixed=owner,
+                            item_type="file",
+                            beneficiary=t.recipient,
+                        )
+                    ]
+                phases = [Forward(owner, recipient, f"file:{owner}")]
+        confirms: list[Phase] = [Confirm(r) for r in roles if r.confirm]
+        return CompiledTask(t, roles, [*confirms, *phases])
+
+    # -- progress ------------------------------------------------------------------------
+    def agenda(self, frame: TaskFrame, ltm: LongTermMemory, ev: Evidence, now: float) -> Agenda:
+        views: list[TaskView] = []
+        for compiled in self.compile(frame):
+            views.append(self._view(compiled, ltm, ev, now))
+        return Agenda(frame, views)
+
+    def _view(
+        self, compiled: CompiledTask, ltm: LongTermMemory, ev: Evidence, now: float
+    ) -> TaskView:
+        states: dict[str, RoleState] = {}
+        for role in compiled.roles:
+            states[role.key] = self.roles.resolve(role, ltm, ev, now)
+        phases: list[PhaseView] = []
+        for phase in compiled.phases:
+            phases.append(self._phase(phase, states, ltm, ev))
+        # a Confirm is also done once every phase using its role is done
+        for k, view in enumerate(phases):
+            if isinstance(view.phase, Confirm) and not view.done:
+                key = view.phase.role.key
+                users = [p for p in phases[k + 1 :] if _uses(p.phase, key)]
+                view.done = bool(users) and all(p.done for p in users)
+        status: TaskStatus = "done" if all(p.done for p in phases) else "active"
+        reason = ""
+        if status == "active":
+            pending_keys = {_role_key(p.phase) for p in phases if not p.done} - {None}
+            pending_keys |= {
+                leg.owner_role
+                for p in phases
+                if not p.done and isinstance(p.phase, Handover)
+                for leg in p.phase.legs
+                if leg.owner_role
+            }
+            out = [
+                states[k] for k in pending_keys if k in states and states[k].status == "exhausted"
+            ]
+            if out:
+                moved = any(p.done and isinstance(p.phase, Handover) for p in phases)
+                status = "failed" if moved else "unachievable"
+                reason = "; ".join(self._why(s) for s in out)
+        return TaskView(compiled, states, phases, status, reason)
+
+    def _phase(
+        self, phase: Phase, states: dict[str, RoleState], ltm: LongTermMemory, ev: Evidence
+    ) -> PhaseView:
+        if isinstance(phase, Confirm):
+            state = states[phase.role.key]
+            return PhaseView(
+                phase,
+                state.bound,
+                f"find who can {role_text(phase.role, self.office)}",
+                person=state.person,
+            )
+        if isinstance(phase, Forward):
+            target = states.get(phase.target_role.key)
+            person = target.person if target and target.bound else phase.target_role.fixed
+            done = any(
+                s == phase.source and f == phase.file and (person is None or t == person)
+                for s, t, f in ev.forwarded
+            )
+            return PhaseView(
+                phase, done, f"forward {phase.file} to {person or 'the helper'}", person=person
+            )
+        state = states[phase.role.key]
+        items: list[tuple[str, Purpose]] = []
+        for leg in phase.legs:
+            owner = leg.owner_fixed
+            if owner is None and leg.owner_role is not None:
+                s = states.get(leg.owner_role)
+                owner = s.person if s is not None and s.bound else None
+            if owner is None:  # whose item is not known until someone lends one
+                owner = self._used_owner(ev, leg)
+            if owner is not None:
+                items.append((f"{leg.item_type}:{owner}", leg.purpose))
+        done = len(items) == len(phase.legs) and all(ev.used(i, p) for i, p in items)
+        person = state.person if state.bound else None
+        place = self.roles.meeting_place(phase.role, person, ltm) if person else None
+        what = ", ".join(purpose_text(self.office, p, i) for i, p in items) or role_text(
+            phase.role, self.office
+        )
+        who = (
+            person_name(self.office, person)
+            if person
+            else f"whoever can {role_text(phase.role, self.office)}"
+        )
+        return PhaseView(
+            phase,
+            done,
+            f"hand-over with {who}: {what}",
+            person=person,
+            place=place,
+            items=items,
+        )
+
+    @staticmethod
+    def _used_owner(ev: Evidence, leg: Leg) -> str | None:
+        for code in ev.codes:
+            if code.used and code.item.split(":", 1)[0] == leg.item_type:
+                return code.item.split(":", 1)[1]
+        return None
+
+    def _why(self, state: RoleState) -> str:
+        role = state.role
+        what = role_text(role, self.office)
+        if not state.excluded and state.group is None:
+            return f"nobody I know of can {what}"
+        if role.kind == "receive" and list(state.excluded) == [role.requester]:
+            return "you did not come to the robot to collect it"
+        parts = [f"{self.office.person(p).name} {why}" for p, why in state.excluded.items()]
+        if state.group is not None:
+            parts.append(f"nobody in the {self.office.group(state.group).name} group could help")
+        return f"no one could {what}: " + ", ".join(parts)
+
+    # -- the Plan of the trace -----------------------------------------------------------
+    def plan_model(self, agenda: Agenda, notes: str = "") -> Plan:
+        subgoals: list[SubGoal] = []
+        for n, view in enumerate(agenda.tasks):
+            for p in view.phases:
+                subgoals.append(SubGoal(description=f"task {n + 1}: {p.description}", done=p.done))
+        subgoals.append(SubGoal(description="tell the requester the outcome", done=False))
+        goal = "; ".join(describe(t.compiled.task, self.office) for t in agenda.tasks)
+        return Plan(
+            goal=goal or "understand the request", subgoals=subgoals[:30], notes=notes[:2000]
+        )
+
+
+def _uses(phase: Phase, key: str) -> bool:
+    if isinstance(phase, Handover):
+        return phase.role.key == key or any(leg.owner_role == key for leg in phase.legs)
+    if isinstance(phase, Forward):
+        return phase.target_role.key == key
+    return False
+
+
+def _role_key(phase: Phase) -> str | None:
+    if isinstance(phase, Confirm | Handover):
+        return phase.role.key
+    return phase.target_role.key
+
+
+def role_text(role: Role, office: Office) -> str:
+    """What the role's person is asked to do, in words: "lend a stapler"."""
+    thing = item_type_name(office, role.item_type) if role.item_type else "it"
+    article = "" if thing == "it" else "a "
+    the = thing if thing == "it" else f"the {thing}"
+    shape = kind_shape(role.kind)
+    if shape is not None and shape != "make":  # the office's own name for its operation
+        op = role.operation or next((o.id for o in office.with_shape(shape)), None)
+        verb = office.operation(op).name if op else role.kind
+        return f"{verb} {the}"
+    return wording("role_wording").get(role.kind, "help").format(a=f"{article}{thing}", the=the)
+
+
+def describe(task: Task, office: Office, you: str | None = None) -> str:
+    """A short English description of a task, for plans and summaries (``you``: the person
+    spoken to, named "you")."""
+
+    def name(person: str | None) -> str:
+        if person is not None and person == you:
+            return "you"
+        return office.person(person).name if person else "anyone"
+
+    def owner_s(person: str | None) -> str:
+        if person is not None and person == you:
+            return "your"
+        return f"{name(person)}'s"
+
+    item = office.item_type(task.item).name if task.item else "item"
+    whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
+    whose = f"your {item}" if task.owner is not None and task.owner == you else whose
+    to = name(task.recipient)
+    op = operation_of(office, task)
+    verb = office.operation(op).name if op else task.kind  # the office's word ("scan")
+    match task.kind:
+        case "transfer":
+            return f"bring {whose} to {to}"
+        case "print":
+            return f"{verb} {owner_s(task.owner)} file for {to}"
+        case "copy":
+            return f"{verb} {whose} for {to}"
+        case "sign":
+            return f"get {whose} signed by {name(task.actor)}"
+        case "seal":
+            return f"get {whose} stamped with the seal"
+        case "produce":
+            return f"get {item} for {to}"
+        case "heat":
+            return f"{verb} {whose} for {to}"
+        case "send_file":
+            return f"pass {owner_s(task.owner)} file to {to}"
+    return task.kind  # pragma: no cover

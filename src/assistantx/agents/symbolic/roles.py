@@ -1,0 +1,307 @@
+"""Roles in a task (who lends, who prints, who signs, who receives) and who fills them.
+
+A role has candidates from memory (known owners, the guards of a facility, or one named
+person), ordered by availability and then travel distance from the robot. Who fills it is
+read from the evidence: the first candidate who said yes, skipping anyone who said no, stayed
+silent past a wait, is known to be away, or failed to come to the robot. When every known
+candidate is out, the role is put to a group chat the requester belongs to; when that finds
+nobody either, the role is exhausted and the task cannot be done.
+
+The question texts are deterministic, so the evidence finds which role a question was for by
+its text, and they name the item or the request so a colleague understands them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Literal
+
+from assistantx.agents.symbolic.evidence import Evidence, Question
+from assistantx.core.office import Office
+from assistantx.core.task_schema import TaskKind, kind_shape
+from assistantx.memory.graph import LongTermMemory
+
+DistanceFn = Callable[[str, str], float]
+# A role is one of the person-to-person parts of a transfer, or the task kind it fills.
+RoleKind = Literal["lend", "give", "keep", "receive", TaskKind]
+RoleStatus = Literal["bound", "ask", "waiting", "group", "group_waiting", "exhausted"]
+
+# How long an availability observation stays true (s): people come and go.
+AVAILABILITY_TTL_S = 1800.0
+
+
+@dataclass(frozen=True)
+class Role:
+    key: str  # unique in the frame, e.g. "0.source"
+    kind: RoleKind
+    requester: str
+    fixed: str | None = None  # the one person who can do it
+    item_type: str | None = None
+    item_owner: str | None = None  # whose item the request is about (for the wording)
+    facility: str | None = None  # where a guard meets the robot
+    beneficiary: str | None = None  # for whom
+    operation: str | None = None  # the office operation a facility role runs
+
+    @property
+    def confirm(self) -> bool:
+        """Whether the person must be asked first (the requester needs no asking)."""
+        return self.fixed != self.requester
+
+    @property
+    def asks_ownership(self) -> bool:
+        return self.kind == "lend"
+
+
+@dataclass
+class RoleState:
+    role: Role
+    status: RoleStatus
+    person: str | None = None  # bound, to ask, or awaited
+    group: str | None = None
+    asked: list[str] = field(default_factory=list)
+    excluded: dict[str, str] = field(default_factory=dict)  # person → why
+
+    @property
+    def bound(self) -> bool:
+        return self.status == "bound"
+
+
+class Roles:
+    """Questions, candidates and resolution over one office and its memory."""
+
+    def __init__(self, office: Office, distance: DistanceFn) -> None:
+        self.office = office
+        self.distance = distance
+
+    # -- wording -------------------------------------------------------------------------
+    def _name(self, person: str) -> str:
+        return self.office.person(person).name
+
+    def _whose(self, role: Role) -> str:
+        owner = role.item_owner or role.requester
+        return f"{self._name(owner)}'s"
+
+    def _thing(self, role: Role) -> str:
+        return self.office.item_type(role.item_type).name if role.item_type else "item"
+
+    def _operation_name(self, role: Role) -> str:
+        """How the office names the operation the role runs at its facility ("print")."""
+        shape = kind_shape(role.kind)
+        if role.facility is not None:
+            for op_id in self.office.facility(role.facility).operations:
+                op = self.office.operation(op_id)
+                if op.shape(self.office) == shape and (
+                    role.operation is None or op.id == role.operation
+                ):
+                    return op.name
+        return role.kind
+
+    def _request(self, role: Role, *, anyone: bool) -> str:
+        """The request, for one person ('your') or for a group ('a')."""
+        thing = self._thing(role)
+        beneficiary = self._name(role.beneficiary or role.requester)
+        place = self.office.facility(role.facility).name if role.facility else ""
+        match role.kind:
+            case "lend":
+                return f"lend {beneficiary} {'a' if anyone else 'your'} {thing}"
+            case "give":
+                return f"hand over your {thing} for {beneficiary}"
+            case "keep":
+                return f"take {self._whose(role)} {thing} out of the {place} for the robot"
+            case "receive":
+                return (
+                    f"be at your desk soon to receive a delivery from {self._name(role.requester)}"
+                )
+            case "print" | "copy":
+                return f"{self._operation_name(role)} {self._whose(role)} {thing} at the {place}"
+            case "sign":
+                return f"sign {self._whose(role)} {thing}"
+            case "seal":
+                return f"stamp {self._whose(role)} {thing} with {'a' if anyone else 'your'} seal"
+            case "produce":
+                return f"get {thing} for {beneficiary} from the {place}"
+            case "heat":
+                return f"{self._operation_name(role)} {self._whose(role)} {thing} in the {place}"
+            case "send_file":
+                return f"send me your {thing} for {beneficiary}"
+        raise ValueError(role.kind)  # pragma: no cover
+
+    def question(self, role: Role, person: str) -> str:
+        first = self.office.person(person).name.split()[0]
+        tail = " The robot will come to you for the hand-over." if role.kind != "send_file" else ""
+        return f"Hi {first}, could you {self._request(role, anyone=False)}?{tail}"
+
+    def group_question(self, role: Role) -> str:
+        tail = " Please reply here if you can; the robot will come to you."
+        return f"Hi all, could anyone {self._request(role, anyone=True)}?{tail}"
+
+    def inform(self, role: Role, person: str) -> str:
+        first = self.office.person(person).name.split()[0]
+        return (
+            f"Hi {first}, the robot is on its way to you: could you "
+            f"{self._request(role, anyone=False)}? I'll send you a locker code."
+        )
+
+    # -- candidates ----------------------------------------------------------------------
+    def meeting_place(self, role: Role, person: str, ltm: LongTermMemory) -> str:
+        """Where the robot meets ``person`` for this role: a facility, else their desk."""
+        if role.facility is not None and person in ltm.guards(role.facility):
+            return ltm.facility_location(role.facility)
+        return ltm.location_of(person)
+
+    def candidates(self, role: Role, ltm: LongTermMemory) -> list[str]:
+        if role.fixed is not None:
+            return [role.fixed]
+        if role.kind == "lend" and role.item_type is not None:
+            found = [p for p in ltm.owners(role.item_type) if p != role.beneficiary]
+        elif role.kind == "seal":
+            found = ltm.owners("seal")
+        elif role.facility is not None:
+            found = ltm.guards(role.facility)
+        else:
+            found = []
+        return [p for p in found if p != role.requester]
+
+    def order(
+        self,
+        role: Role,
+        people: list[str],
+        ltm: LongTermMemory,
+        robot_place: str | None,
+        now: float,
+    ) -> list[str]:
+        here = robot_place or self.office.robot.home
+
+        def key(person: str) -> tuple[int, float, str]:
+            known = _fresh_availability(ltm, person, now)
+            rank = 0 if known == "available" else 1
+            return rank, self.distance(here, self.meeting_place(role, person, ltm)), person
+
+        return sorted(people, key=key)
+
+    # -- resolution ----------------------------------------------------------------------
+    def resolve(self, role: Role, ltm: LongTermMemory, ev: Evidence, now: float) -> RoleState:
+        if not role.confirm:
+            failed = ev.failed_handover(role.requester)
+            if failed is not None:
+                return RoleState(role, "exhausted", excluded={role.requester: "did not come"})
+            return RoleState(role, "bound", person=role.requester)
+        state = RoleState(role, "exhausted")
+        people = self.candidates(role, ltm)
+        group_q = self._group_asked(role, ev)
+        helpers: list[str] = []
+        if group_q is not None:
+            helpers = [
+                t.person
+                for t in ev.answers(group_q)
+                if ev.stance_of(group_q, t.person) == "yes"
+                and t.person not in helpers
+                and t.person != role.requester  # never the helper of their own request
+            ]
+        for person in [*people, *helpers]:
+            why = self._exclusion(role, person, ltm, ev, now)
+            if why is not None:
+                state.excluded[person] = why
+        # who said yes, in the order they said it
+        for person in self._yes_in_order(role, [*people, *helpers], ev):
+            if person not in state.excluded:
+                state.status, state.person = "bound", person
+                return state
+        for person in people:
+            q = ev.asked(person, self.question(role, person))
+            if q is not None:
+                state.asked.append(person)
+                if ev.pending(q) and person not in state.excluded:
+                    state.status, state.person = "waiting", person
+                    return state
+        remaining = [p for p in people if p not in state.excluded and p not in state.asked]
+        if remaining:
+            state.status = "ask"
+            state.person = self.order(role, remaining, ltm, ev.robot_place, now)[0]
+            return state
+        if role.fixed is not None:
+            return state
+        if group_q is not None:
+            state.group = group_q.contact
+            if ev.pending(group_q):
+                state.status = "group_waiting"
+            return state
+        group = self.group_for(role.requester)
+        if group is not None:
+            state.status, state.group = "group", group
+        return state
+
+    def group_for(self, requester: str) -> str | None:
+        """The largest group chat the requester belongs to."""
+        mine = [g for g in self.office.groups if requester in g.members]
+        if not mine:
+            return None
+        return max(mine, key=lambda g: (len(g.members), g.id)).id
+
+    def _group_asked(self, role: Role, ev: Evidence) -> Question | None:
+        text = self.group_question(role)
+        found = [q for q in ev.questions if q.group and q.text == text]
+        return found[-1] if found else None
+
+    def _yes_in_order(self, role: Role, people: list[str], ev: Evidence) -> list[str]:
+        said: list[tuple[float, str]] = []
+        group_q = self._group_asked(role, ev)
+        for person in dict.fromkeys(people):
+            q = ev.asked(person, self.question(role, person))
+            for question in (q, group_q):
+                if question is None:
+                    continue
+                turns = [t for t in ev.answers(question) if t.person == person]
+                if turns and ev.stance_of(question, person) == "yes":
+                    said.append((turns[-1].time, person))
+        if role.kind == "send_file":  # the file itself is the yes
+            said += [(0.0, p) for p in people if f"file:{p}" in ev.files_received.get(p, [])]
+        return [p for _, p in sorted(said)]
+
+    def _exclusion(
+        self, role: Role, person: str, ltm: LongTermMemory, ev: Evidence, now: float
+    ) -> str | None:
+        failed = ev.failed_handover(person)
+        if failed is not None:
+            return (
+                f"could not hand over: {failed.complaint}"
+                if failed.complaint
+                else ("did not come to the robot")
+            )
+        q = ev.asked(person, self.question(role, person))
+        if q is not None:
+            said = ev.stance_of(q, person)
+            if said == "no":
+                return "said no"
+            if said is None and ev.expired(q):
+                return "did not answer"
+            if (
+                role.kind == "send_file"
+                and said == "yes"
+                and ev.expired(q)
+                and (f"file:{person}" not in ev.files_received.get(person, []))
+            ):
+                return "did not send the file"
+            return None
+        if _fresh_availability(ltm, person, now) == "unavailable":
+            return "known to be away"
+        if person in ev.said_away and role.fixed is None:  # a named person is still asked
+            return f"the requester said {ev.said_away[person]!r}"
+        if role.item_type and (person, role.item_type) in ev.said_unusable:
+            return f"their {role.item_type} is {ev.said_unusable[(person, role.item_type)]}"
+        if (
+            role.asks_ownership
+            and role.item_type
+            and ltm.ownership(person, role.item_type) is False
+        ):
+            return f"has no {role.item_type}"
+        return None
+
+
+def _fresh_availability(ltm: LongTermMemory, person: str, now: float) -> str:
+    value = ltm.availability(person)
+    seen = ltm.availability_observed_at(person)
+    if value != "unknown" and seen is not None and now - seen > AVAILABILITY_TTL_S:
+        return "unknown"
+    return value

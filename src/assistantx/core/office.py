@@ -1,0 +1,385 @@
+"""The office: locations, people, items, facilities and group chats, loaded from YAML.
+
+The office file is the ground truth of who works where and who owns what. Each ownership
+fact says whether the assistant *knows* it at start; the Memory Unit is built from the known
+facts only, the simulator from all of them.
+
+Item ids are ``"<type>:<owner>"`` (``"stapler:zhang"``), so an item is named by its type and
+its owner, as people name them ("Zhang's stapler").
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from functools import cached_property
+from pathlib import Path
+from typing import Any, Literal, TypeVar
+
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from assistantx.core.errors import OfficeError
+
+DEFAULT_OFFICE = Path(__file__).resolve().parents[1] / "data" / "dataset" / "office.yaml"
+
+LocationKind = Literal["workstation", "facility", "room"]
+# How an operation works, from what it takes and what it makes (see Operation.shape).
+OperationShape = Literal["make", "render", "transform", "treat", "use"]
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class Location(_Model):
+    id: str
+    kind: LocationKind
+    name: str
+    x: float = Field(description="metres, map frame")
+    y: float = Field(description="metres, map frame")
+
+
+ItemKind = Literal["belonging", "personal", "electronic", "product"]
+
+
+class ItemType(_Model):
+    """A kind of item.
+
+    ``belonging``: shareable, anyone's will do (a stapler); ``personal``: only the owner's
+    will do (a document, a lunch); ``electronic``: a file, forwarded rather than carried;
+    ``product``: made by a facility (a coffee, a printout), owned by nobody at start.
+    """
+
+    id: str
+    name: str
+    synonyms: tuple[str, ...] = ()
+    kind: ItemKind = "belonging"
+    purposes: tuple[str, ...] = Field(
+        default=(), description="verbs it is for: 'cut' (scissors), 'write' (pen)"
+    )
+
+    @property
+    def physical(self) -> bool:
+        return self.kind != "electronic"
+
+
+class Operation(_Model):
+    """Something a facility does, declared by the office (print, boil, scan, mail ...).
+
+    ``verbs`` are the words that ask for it; ``input`` the item type it works on (none: it
+    makes something from nothing the requester gives); ``product`` the item type it makes
+    (none: the input comes back changed, e.g. heated). The facilities that list it offer it,
+    and their guards run it.
+    """
+
+    id: str
+    name: str = Field(description="how a person names it, e.g. 'print'")
+    verbs: tuple[str, ...] = ()
+    input: str | None = None
+    product: str | None = None
+
+    def shape(self, office: Office) -> OperationShape:
+        """``make``: a product from nothing (coffee); ``render``: a product from a file
+        (a printout); ``transform``: a product from a physical item (a copy); ``treat``: the
+        item comes back changed (heated); ``use``: neither (a meeting room)."""
+        if self.input is None:
+            return "make" if self.product else "use"
+        if office.item_type(self.input).kind == "electronic":
+            return "render" if self.product else "use"
+        return "transform" if self.product else "treat"
+
+
+class Ownership(_Model):
+    type: str
+    known: bool = True
+    at: str | None = Field(default=None, description="location where it is kept, if not the desk")
+    facility: str | None = Field(
+        default=None, description="the facility at ``at`` that keeps it, when several stand there"
+    )
+
+
+class Person(_Model):
+    id: str
+    name: str
+    aliases: tuple[str, ...] = ()
+    location: str
+    handle: str
+    owns: tuple[Ownership, ...] = ()
+
+    def item_id(self, type_id: str) -> str:
+        return f"{type_id}:{self.id}"
+
+
+class Facility(_Model):
+    id: str
+    name: str
+    synonyms: tuple[str, ...] = ()
+    location: str
+    operations: tuple[str, ...] = Field(default=(), description="ids of operations it offers")
+    guards: tuple[str, ...] = Field(default=(), description="people who run it or sit next to it")
+    products: tuple[str, ...] = Field(default=(), description="what it makes, e.g. coffee")
+
+
+class Group(_Model):
+    id: str
+    name: str
+    members: tuple[str, ...]
+
+
+class Robot(_Model):
+    home: str
+    speed_mps: float = 0.5
+
+
+class Office(_Model):
+    name: str
+    locations: tuple[Location, ...]
+    item_types: tuple[ItemType, ...]
+    people: tuple[Person, ...]
+    facilities: tuple[Facility, ...]
+    groups: tuple[Group, ...]
+    robot: Robot
+    operations: tuple[Operation, ...] = ()
+
+    @cached_property
+    def _index(self) -> dict[str, Any]:
+        """Id indexes per kind, filled on first use (a plain dict: pydantic private
+        attributes cost a slow ``__getattr__`` on every lookup)."""
+        return {}
+
+    # -- lookups -----------------------------------------------------------------------
+    def location(self, location_id: str) -> Location:
+        return _by_id(self.locations, self._index, location_id, "location")
+
+    def person(self, person_id: str) -> Person:
+        return _by_id(self.people, self._index, person_id, "person")
+
+    def facility(self, facility_id: str) -> Facility:
+        return _by_id(self.facilities, self._index, facility_id, "facility")
+
+    def group(self, group_id: str) -> Group:
+        return _by_id(self.groups, self._index, group_id, "group")
+
+    def item_type(self, type_id: str) -> ItemType:
+        return _by_id(self.item_types, self._index, type_id, "item type")
+
+    def operation(self, operation_id: str) -> Operation:
+        return _by_id(self.operations, self._index, operation_id, "operation")
+
+    def offering(self, operation_id: str) -> list[Facility]:
+        """The facilities that offer an operation (several may, even at one location)."""
+        return [f for f in self.facilities if operation_id in f.operations]
+
+    def making(self, product: str) -> Operation | None:
+        """The operation whose product is ``product`` (a coffee → the coffee operation)."""
+        return next((o for o in self.operations if o.product == product), None)
+
+    def made_from(self, input_type: str) -> str | None:
+        """The product an operation makes from an item of ``input_type`` while keeping the
+        original (a copy of a document): the item that joins the original in the locker."""
+        return next(
+            (
+                o.product
+                for o in self.operations
+                if o.input == input_type and o.product and o.shape(self) == "transform"
+            ),
+            None,
+        )
+
+    def with_shape(self, shape: OperationShape) -> list[Operation]:
+        return [o for o in self.operations if o.shape(self) == shape]
+
+    def runnable(self, operation_id: str) -> bool:
+        """Whether the assistant can run it on someone's behalf (not just a room to use)."""
+        return self.operation(operation_id).shape(self) != "use"
+
+    def keeper(self, owner: str, type_id: str) -> Facility | None:
+        """The facility where ``owner``'s item is kept (a fridge, a cupboard), if not on them."""
+        own = next((o for o in self.person(owner).owns if o.type == type_id), None)
+        if own is None or own.at is None:
+            return None
+        if own.facility is not None:
+            return self.facility(own.facility)
+        here = [f for f in self.facilities if f.location == own.at]
+        return here[0] if len(here) == 1 else None
+
+    def workstations(self) -> list[Location]:
+        return [loc for loc in self.locations if loc.kind == "workstation"]
+
+    def public_places(self) -> list[Location]:
+        return [loc for loc in self.locations if loc.kind != "workstation"]
+
+    def owners_of(self, type_id: str, *, known_only: bool = False) -> list[str]:
+        return [
+            p.id
+            for p in self.people
+            for o in p.owns
+            if o.type == type_id and (o.known or not known_only)
+        ]
+
+    def distance(self, a: str, b: str) -> float:
+        """Straight-line distance in metres between two locations (the map gives paths)."""
+        la, lb = self.location(a), self.location(b)
+        return math.hypot(la.x - lb.x, la.y - lb.y)
+
+
+_T = TypeVar("_T", Location, Person, Facility, Group, ItemType, Operation)
+
+
+def _by_id(entries: tuple[_T, ...], index: dict[str, Any], entry_id: str, kind: str) -> _T:
+    # An id index per kind, built on first use: a 1,024-person office is looked up by id
+    # tens of thousands of times per instruction, and a scan made that quadratic. Keyed to
+    # the tuple itself, so a copy with other entries (``model_copy(update=...)``) rebuilds.
+    held = index.get(kind)
+    if held is None or held[0] is not entries:
+        held = index[kind] = (entries, {e.id: e for e in entries})
+    found: _T | None = held[1].get(entry_id)
+    if found is None:
+        raise KeyError(f"unknown {kind} {entry_id!r}")
+    return found
+
+
+def load_office(path: str | Path | None = None) -> Office:
+    """Load and check an office file; any problem raises OfficeError naming file and entry."""
+    file = Path(path) if path is not None else DEFAULT_OFFICE
+    where = str(file)
+    try:
+        # libyaml's loader when present: the pure-Python one takes seconds on a large office.
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        raw = yaml.load(file.read_text(encoding="utf-8"), Loader=loader)
+    except OSError as exc:
+        raise OfficeError(where, "file", f"cannot be read: {exc.strerror or exc}") from exc
+    except yaml.YAMLError as exc:
+        raise OfficeError(where, "file", f"is not valid YAML: {exc}") from exc
+    return parse_office(raw, where)
+
+
+def parse_office(raw: Any, where: str = "<office>") -> Office:
+    if not isinstance(raw, dict):
+        raise OfficeError(where, "file", "must be a mapping with locations, people, ...")
+    try:
+        office = Office.model_validate(raw)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        raise OfficeError(where, _entry_name(raw, err["loc"]), err["msg"]) from exc
+    _check_references(office, where)
+    return office
+
+
+def _entry_name(raw: dict[str, Any], loc: tuple[int | str, ...]) -> str:
+    """Turn a pydantic error location into 'people[3] (zhang).owns[0].type'."""
+    parts: list[str] = []
+    node: Any = raw
+    for key in loc:
+        if isinstance(key, int):
+            label = f"[{key}]"
+            if isinstance(node, list) and key < len(node):
+                node = node[key]
+                if isinstance(node, dict) and "id" in node:
+                    label += f" ({node['id']})"
+            parts.append(label)
+        else:
+            parts.append(("." if parts else "") + key)
+            node = node.get(key) if isinstance(node, dict) else None
+    return "".join(parts) or "file"
+
+
+def _check_references(office: Office, where: str) -> None:
+    def fail(entry: str, problem: str) -> None:
+        raise OfficeError(where, entry, problem)
+
+    for section, entries in (
+        ("locations", office.locations),
+        ("item_types", office.item_types),
+        ("people", office.people),
+        ("facilities", office.facilities),
+        ("groups", office.groups),
+        ("operations", office.operations),
+    ):
+        counts = Counter(e.id for e in entries)
+        for entry_id, n in counts.items():
+            if n > 1:
+                fail(f"{section} ({entry_id})", f"duplicate id {entry_id!r} ({n} entries)")
+        for e in entries:
+            if not e.id or not e.id.replace("_", "").isalnum() or e.id != e.id.lower():
+                fail(f"{section} ({e.id})", "ids are lower-case letters, digits and '_'")
+
+    location_ids = {loc.id for loc in office.locations}
+    type_ids = {t.id for t in office.item_types}
+    person_ids = {p.id for p in office.people}
+    all_ids = [*location_ids, *person_ids, *(g.id for g in office.groups)]
+    for entry_id, n in Counter(all_ids).items():
+        if n > 1:
+            fail(entry_id, "the same id names two different things (person/place/group)")
+    for f in office.facilities:
+        # A facility may share its id with the location it stands in, nothing else.
+        if f.id in person_ids or f.id in {g.id for g in office.groups}:
+            fail(f"facilities ({f.id})", "the id is already used by a person or group")
+        if f.id in location_ids and f.id != f.location:
+            fail(f"facilities ({f.id})", "the id names a different location")
+
+    for p in office.people:
+        if p.location not in location_ids:
+            fail(f"people ({p.id}).location", f"unknown location {p.location!r}")
+        seen: set[str] = set()
+        for o in p.owns:
+            if o.type not in type_ids:
+                fail(f"people ({p.id}).owns", f"unknown item type {o.type!r}")
+            if o.at is not None and o.at not in location_ids:
+                fail(f"people ({p.id}).owns ({o.type}).at", f"unknown location {o.at!r}")
+            if o.facility is not None:
+                if o.facility not in {f.id for f in office.facilities}:
+                    fail(f"people ({p.id}).owns ({o.type}).facility", f"unknown {o.facility!r}")
+                if office.facility(o.facility).location != o.at:
+                    fail(
+                        f"people ({p.id}).owns ({o.type}).facility",
+                        f"{o.facility!r} is not at {o.at!r}",
+                    )
+            elif o.at is not None:
+                here = [f.id for f in office.facilities if f.location == o.at]
+                if len(here) > 1:
+                    fail(
+                        f"people ({p.id}).owns ({o.type}).at",
+                        f"several facilities at {o.at!r} ({', '.join(here)}): name one "
+                        "under 'facility'",
+                    )
+            if o.type in seen:
+                fail(f"people ({p.id}).owns", f"item type {o.type!r} listed twice")
+            seen.add(o.type)
+    for f in office.facilities:
+        if f.location not in location_ids:
+            fail(f"facilities ({f.id}).location", f"unknown location {f.location!r}")
+        for g in f.guards:
+            if g not in person_ids:
+                fail(f"facilities ({f.id}).guards", f"unknown person {g!r}")
+    operation_ids = {o.id for o in office.operations}
+    for op_ in office.operations:
+        for field_name, type_id in (("input", op_.input), ("product", op_.product)):
+            if type_id is not None and type_id not in type_ids:
+                fail(f"operations ({op_.id}).{field_name}", f"unknown item type {type_id!r}")
+        if op_.product is not None and office.item_type(op_.product).kind != "product":
+            fail(f"operations ({op_.id}).product", f"item type {op_.product!r} is not a product")
+        if not office.offering(op_.id):
+            fail(f"operations ({op_.id})", "no facility offers it")
+    makers = Counter(op_.product for op_ in office.operations if op_.product)
+    for product, n in makers.items():
+        if n > 1:
+            fail(f"operations (product {product})", f"{n} operations make {product!r}")
+    for f in office.facilities:
+        for op in f.operations:
+            if op not in operation_ids:
+                fail(
+                    f"facilities ({f.id}).operations",
+                    f"unknown operation {op!r} (declare it under 'operations')",
+                )
+        made = {office.operation(op).product for op in f.operations} - {None}
+        for product in f.products:
+            if product not in made:
+                fail(f"facilities ({f.id}).products", f"no operation here makes {product!r}")
+    for grp in office.groups:
+        for m in grp.members:
+            if m not in person_ids:
+                fail(f"groups ({grp.id}).members", f"unknown person {m!r}")
+    if office.robot.home not in location_ids:
+        fail("robot.home", f"unknown location {office.robot.home!r}")

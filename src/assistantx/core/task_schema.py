@@ -1,0 +1,288 @@
+"""The task schema: what a request means, the one contract between understanding and planning.
+
+A request is understood into a :class:`TaskFrame`: the tasks to do (each a :class:`Task`), or
+one question for the requester, or a refusal (``decline``) that does nothing and says why.
+Whatever reads a request (the embedded parser, the LLM understanding path) produces a frame;
+whatever acts on one (the planner, the simulator's people, the evaluator) reads only the frame.
+
+Beside the tasks a frame carries what the requester *told* rather than asked (``hints``:
+"Wang is away", "Zhang is in the meeting room", "Zhang's stapler is broken"), which is memory
+for the planner and never makes that person a party, and the ``evidence``: which words gave
+which reading, in words a person can read, for the trace.
+
+This module sits in the domain core (below memory and the agents) and imports nothing of
+them.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from assistantx.core.office import Office, OperationShape
+
+# The shapes of a task. ``transfer``: a physical item moves from its owner (or a keeper) to
+# the recipient; ``produce``: a facility makes a product for the recipient; ``print``/``copy``:
+# a facility turns the requester's file/document into a product; ``sign``/``seal``: a person
+# acts on the requester's document; ``heat``: a facility works on a kept item; ``send_file``:
+# an electronic file is forwarded.
+TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
+# The tool of a ``seal`` task: anyone who owns an item of this type can stamp a document.
+SEAL_TOOL = "seal"
+# The task kind each shape of office operation takes (office.Operation.shape).
+SHAPE_KIND: dict[OperationShape, TaskKind] = {
+    "make": "produce",
+    "render": "print",
+    "transform": "copy",
+    "treat": "heat",
+}
+# The task kinds that a person does for the requester, with no facility: their words are
+# English (the sign and seal of a document, a file sent), not the office's.
+PERSON_KINDS: tuple[TaskKind, ...] = ("sign", "seal")
+FILE_KIND: TaskKind = "send_file"
+# What a finished task leaves true in the world (sim.goals milestones) → the task kind.
+MILESTONE_KIND: dict[str, TaskKind] = {
+    "holds": "transfer",
+    "printed": "print",
+    "copied": "copy",
+    "heated": "heat",
+    "signed": "sign",
+    "sealed": "seal",
+    "made": "produce",
+    "received": "send_file",
+}
+# The coarse kinds of the usage report: what the robot did for an instruction.
+RecordKind = Literal["delivery", "file", "message"]
+RECORD_KINDS: tuple[RecordKind, ...] = ("delivery", "file", "message")
+HintKind = Literal["availability", "location", "condition"]
+DeclineOutcome = Literal["done", "unachievable"]
+
+
+class Task(BaseModel):
+    """One thing to get done."""
+
+    model_config = ConfigDict(frozen=True)
+
+    kind: TaskKind
+    item: str | None = Field(default=None, description="item type id (a product for produce)")
+    owner: str | None = Field(default=None, description="whose item; None = anyone's")
+    recipient: str = Field(description="who ends up with the result")
+    actor: str | None = Field(default=None, description="who must do it (signer, named helper)")
+    operation: str | None = Field(
+        default=None, description="the office's operation (print, copy, heat, produce kinds)"
+    )
+    source: str | None = Field(
+        default=None,
+        description="where the item comes from when the frame fixes it: a person, or a "
+        "facility or cupboard that keeps it",
+    )
+    facility: str | None = Field(
+        default=None, description="the facility the requester named for the operation"
+    )
+    input_item: str | None = Field(
+        default=None,
+        description="the item type the operation works on (the requester's file, document, "
+        "lunch); None when it makes something from nothing",
+    )
+
+    def item_id(self) -> str | None:
+        """The concrete item, when the frame fixes it (``stapler:zhang``, ``coffee:lee``)."""
+        if self.item is None:
+            return None
+        if self.kind == "produce":
+            return f"{self.item}:{self.recipient}"
+        if self.kind == "print":
+            return f"file:{self.owner}"
+        return f"{self.item}:{self.owner}" if self.owner else None
+
+
+class Hint(BaseModel):
+    """A fact the requester stated, for memory: never a request, never a party to one."""
+
+    model_config = ConfigDict(frozen=True)
+
+    kind: HintKind
+    person: str
+    value: str = Field(description="'away'/'here', a location id, or a condition word")
+    item_type: str | None = Field(default=None, description="the item a condition is about")
+    said: str = Field(description="the requester's words")
+
+
+class Evidence(BaseModel):
+    """Which words gave which part of the reading."""
+
+    model_config = ConfigDict(frozen=True)
+
+    words: str
+    meaning: str
+
+
+class TaskFrame(BaseModel):
+    """What the requester wants, or the question to ask them first, or why nothing is done."""
+
+    requester: str
+    tasks: list[Task] = Field(default_factory=list)
+    question: str | None = Field(default=None, description="set when the request is unclear")
+    decline: str | None = Field(
+        default=None, description="set when nothing is to be done: the message that says why"
+    )
+    decline_outcome: DeclineOutcome = "unachievable"
+    hints: list[Hint] = Field(default_factory=list)
+    evidence: list[Evidence] = Field(default_factory=list)
+
+    @property
+    def understood(self) -> bool:
+        return self.question is None and self.decline is None and bool(self.tasks)
+
+    def away(self) -> set[str]:
+        """People the requester said are away."""
+        return {h.person for h in self.hints if h.kind == "availability" and h.value == "away"}
+
+    def unusable(self, item_type: str) -> set[str]:
+        """Owners whose ``item_type`` the requester said is broken, lost or missing."""
+        return {h.person for h in self.hints if h.kind == "condition" and h.item_type == item_type}
+
+    def explain(self) -> str:
+        """The reading in words: what each phrase was taken to mean."""
+        return "; ".join(f"{e.words!r} → {e.meaning}" for e in self.evidence)
+
+
+_KIND_SHAPE: dict[str, OperationShape] = {kind: shape for shape, kind in SHAPE_KIND.items()}
+
+
+def kind_shape(kind: str) -> OperationShape | None:
+    """The shape of office operation a task kind uses; None for person-to-person kinds."""
+    return _KIND_SHAPE.get(kind)
+
+
+# The written form of a task in the dataset's base instructions (``parts:`` of
+# dataset/base_instructions.yaml): one part per task, kinds named from the requester's side.
+# Any other part kind must be a product of one of the office's operations ("make one").
+PartKind = Literal[
+    "fetch", "deliver", "print", "copy", "sign", "seal", "make", "heat", "forward_file", "get_file"
+]
+PART_KINDS: tuple[PartKind, ...] = (
+    "fetch",
+    "deliver",
+    "print",
+    "copy",
+    "sign",
+    "seal",
+    "make",
+    "heat",
+    "forward_file",
+    "get_file",
+)
+PART_TASK_KIND: dict[str, TaskKind] = {
+    "fetch": "transfer",
+    "deliver": "transfer",
+    "print": "print",
+    "copy": "copy",
+    "sign": "sign",
+    "seal": "seal",
+    "make": "produce",
+    "heat": "heat",
+    "forward_file": "send_file",
+    "get_file": "send_file",
+}
+
+# The fields each part kind must name (dataset.spec checks them).
+PART_NEEDS: dict[str, tuple[str, ...]] = {
+    "fetch": ("item",),
+    "deliver": ("item", "to"),
+    "forward_file": ("to",),
+    "get_file": ("owner",),
+    "sign": ("signer",),
+}
+
+
+class Part(BaseModel):
+    """One task of a base instruction, as the dataset writes it; ``task`` reads it as a Task."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
+    item: str | None = Field(default=None, description="item type (fetch, deliver)")
+    owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
+    to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
+    signer: str | None = Field(default=None, description="who signs (sign)")
+    operation: str | None = Field(
+        default=None, description="the office operation, when several of the shape exist"
+    )
+
+    def task_kind(self) -> TaskKind:
+        """The schema's kind of this part (a product's name is a ``produce``)."""
+        return PART_TASK_KIND.get(self.kind, "produce")
+
+    def shape(self, office: Office) -> OperationShape | None:
+        """The shape of office operation the part uses; None for person-to-person parts."""
+        if self.kind not in PART_KINDS:
+            return "make" if office.making(self.kind) is not None else None
+        return kind_shape(self.task_kind())
+
+    def task(self, requester: str, office: Office) -> Task:
+        """This part as the task schema's :class:`Task` for ``requester``."""
+        kind = self.task_kind()
+        match self.kind:
+            case "fetch":
+                return Task(kind=kind, item=self.item, owner=self.owner, recipient=requester)
+            case "deliver":
+                return Task(kind=kind, item=self.item, owner=requester, recipient=self.to or "")
+            case "sign":
+                return Task(
+                    kind=kind,
+                    item="document",
+                    owner=requester,
+                    recipient=requester,
+                    actor=self.signer,
+                    input_item="document",
+                )
+            case "seal":
+                return Task(
+                    kind=kind,
+                    item="document",
+                    owner=requester,
+                    recipient=requester,
+                    input_item="document",
+                )
+            case "forward_file":
+                return Task(kind=kind, item="file", owner=requester, recipient=self.to or "")
+            case "get_file":
+                return Task(kind=kind, item="file", owner=self.owner, recipient=requester)
+        op = self.operation
+        if kind == "produce":
+            product = self.item if self.kind == "make" else self.kind
+            made = office.making(product or "")
+            return Task(
+                kind=kind,
+                item=product,
+                recipient=requester,
+                operation=op or (made.id if made else None),
+            )
+        found = office.with_shape(_KIND_SHAPE[kind]) if op is None else [office.operation(op)]
+        operation = found[0] if found else None
+        return Task(
+            kind=kind,
+            item=operation.input if operation else None,
+            owner=requester,
+            recipient=self.to or requester,
+            operation=operation.id if operation else None,
+            input_item=operation.input if operation else None,
+        )
+
+
+def operation_of(office: Office, task: Task) -> str | None:
+    """The office operation a task needs: the one the frame names, the one that makes its
+    product, or the office's one operation of the task's shape; None for person-to-person
+    tasks (transfer, sign, seal, send_file)."""
+    if task.operation is not None:
+        return task.operation
+    if task.kind == "produce":
+        made = office.making(task.item or "")
+        return made.id if made else None
+    shape = _KIND_SHAPE.get(task.kind)
+    if shape is None:
+        return None
+    found = office.with_shape(shape)
+    return found[0].id if found else None

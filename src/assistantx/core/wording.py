@@ -1,0 +1,92 @@
+"""Names for what people read: items, people and places by name, never by internal id.
+
+Internal ids (``stapler:wang``, ``desk_03``, ``ins-1f…``) are for memory, traces and the API;
+every text a person receives (messages, QR instructions, dashboard status lines) goes through
+these helpers. Unknown ids degrade to readable words (underscores to spaces), never to an
+id with a colon.
+"""
+
+from __future__ import annotations
+
+from assistantx.core.office import Office, Operation
+from assistantx.core.task_schema import kind_shape
+
+# What the person does at the locker, per code purpose ({item}: an ``item_phrase``). The
+# purposes that run an office operation on the item ("copy", "heat": the task kinds of those
+# shapes) are worded with the office's own operation by ``purpose_text``; these two lines are
+# only the fallback for an office without one.
+PURPOSE_TEXT = {
+    "deposit": "put {item} into the locker",
+    "collect": "take {item} out of the locker",
+    "sign": "take {item} out, sign it and put it back",
+    "seal": "take {item} out, stamp it with the seal and put it back",
+    "copy": "take {item} out, copy it and put the original and the copy back",
+    "heat": "take {item} out, heat it and put it back",
+    "produce": "make {item} and put it into the locker",
+}
+
+
+def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None = None) -> str:
+    """What the person does at the locker for a code of ``purpose`` on ``item_id``, in the
+    office's words: "take your document out, scan it and put the original and the scan back"
+    where the office's operation of the copy shape is a scan."""
+    thing = item_phrase(office, item_id, you=you)
+    shape = kind_shape(purpose)
+    op = _operation_on(office, shape, item_id.partition(":")[0]) if shape else None
+    if op is None or shape not in ("transform", "treat"):
+        return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
+    if shape == "transform":
+        return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
+    return f"take {thing} out, {op.name} it and put it back"
+
+
+def _operation_on(office: Office, shape: str, item_type: str) -> Operation | None:
+    """The office's operation of ``shape`` that works on ``item_type`` (else the first)."""
+    ops = [op for op in office.operations if op.shape(office) == shape]
+    return next((op for op in ops if op.input == item_type), ops[0] if ops else None)
+
+
+def person_name(office: Office, person_id: str, *, you: str | None = None) -> str:
+    """A person's (or group's) display name ("you" for the reader ``you``)."""
+    if you is not None and person_id == you:
+        return "you"
+    names = {p.id: p.name for p in office.people} | {g.id: g.name for g in office.groups}
+    if person_id in names:
+        return names[person_id]
+    return _words(person_id)
+
+
+def item_type_name(office: Office, type_id: str) -> str:
+    try:
+        return office.item_type(type_id).name
+    except KeyError:
+        return _words(type_id)
+
+
+def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
+    """``stapler:wang`` → "Wang Fang's stapler" ("your stapler" when ``you`` is Wang)."""
+    type_id, _, owner = item_id.partition(":")
+    thing = item_type_name(office, type_id)
+    if not owner:
+        return f"the {thing}"
+    if you is not None and owner == you:
+        return f"your {thing}"
+    return f"{person_name(office, owner)}'s {thing}"
+
+
+def place_name(office: Office, place_id: str) -> str:
+    """A location, facility or person (their desk) by name."""
+    for location in office.locations:
+        if location.id == place_id:
+            return location.name
+    for facility in office.facilities:
+        if facility.id == place_id:
+            return facility.name
+    try:
+        return f"{office.person(place_id).name}'s desk"
+    except KeyError:
+        return _words(place_id)
+
+
+def _words(identifier: str) -> str:
+    return identifier.replace(":", " ").replace("_", " ")

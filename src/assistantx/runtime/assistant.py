@@ -1,0 +1,350 @@
+"""The Assistant: runs instructions concurrently over one Memory Unit and one set of adapters.
+
+Inbound messages from every messenger land on one queue; one consumer routes each to the
+instruction and question that asked for it, or, for a direct message that answers nothing,
+starts a new instruction for its author. Each instruction is a PPDR loop coroutine; the robot
+and its locker are leased to one instruction at a time.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import logging
+import secrets
+from collections import OrderedDict
+from collections.abc import Awaitable, Callable
+from dataclasses import dataclass, field
+from typing import Protocol
+
+from assistantx.agents.base import Reasoner
+from assistantx.core.clock import Clock
+from assistantx.core.errors import GroundingError
+from assistantx.core.events import EventSink, TraceEvent
+from assistantx.core.office import Office
+from assistantx.core.ports.lock import Locker
+from assistantx.core.ports.messenger import (
+    ChatRef,
+    InboundMessage,
+    Messenger,
+    OutboundMessage,
+)
+from assistantx.core.ports.robot import RobotBase
+from assistantx.core.trace import Trace
+from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.resolve import Resolver
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.executors import ExecutionContext, Executor
+from assistantx.runtime.lease import BodyLease
+from assistantx.runtime.loop import InstructionRunner, LoopLimits
+from assistantx.runtime.replies import ReplyBox
+
+logger = logging.getLogger(__name__)
+
+FINISHED_KEPT = 256
+
+ReasonerFactory = Callable[[], Reasoner]
+InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
+# Claims a direct message that answers no open question (True: handled, e.g. a survey reply)
+# before it would start a new instruction.
+DirectMessageHook = Callable[[InboundMessage], Awaitable[bool]]
+
+
+class RequestCheck(Protocol):
+    """Whether a direct message is a request; ``strict``: only explicit wording counts (the
+    sender was just contacted by an instruction that has ended)."""
+
+    def __call__(self, text: str, sender: str, *, strict: bool) -> bool: ...
+
+
+def new_instruction_id() -> str:
+    """A fresh instruction id, unique for ever: random, not a counter that restarts with the
+    process (a restarted service must not hand out an id its journal holds already)."""
+    return f"ins-{secrets.token_hex(6)}"
+
+
+@dataclass
+class Running:
+    stm: ShortTermMemory
+    task: asyncio.Task[ShortTermMemory]
+    reasoner: Reasoner
+
+
+@dataclass
+class AssistantParts:
+    office: Office
+    messenger: Messenger
+    robot: RobotBase
+    locker: Locker
+    clock: Clock
+    reasoner_factory: ReasonerFactory
+    reasoner_name: str = "symbolic"
+    ltm: LongTermMemory | None = None
+    limits: LoopLimits = field(default_factory=LoopLimits)
+    # None: every direct message that answers nothing starts an instruction.
+    is_request: RequestCheck | None = None
+
+
+class Assistant:
+    def __init__(self, parts: AssistantParts) -> None:
+        self.parts = parts
+        self.office = parts.office
+        self.clock = parts.clock
+        self.ltm = parts.ltm or LongTermMemory(parts.office)
+        self.resolver = Resolver(parts.office)
+        self.replies = ReplyBox(is_member=self._is_member)
+        self.lease = BodyLease()
+        self.inbox: asyncio.Queue[InboundMessage | None] = asyncio.Queue()
+        self.executor = Executor(
+            ExecutionContext(
+                office=parts.office,
+                ltm=self.ltm,
+                messenger=parts.messenger,
+                robot=parts.robot,
+                locker=parts.locker,
+                clock=parts.clock,
+                replies=self.replies,
+            )
+        )
+        self.running: dict[str, Running] = {}
+        # The latest FINISHED_KEPT ended instructions (older ones are in the journal, if any):
+        # a service running for months must not keep every instruction it ever ran.
+        self.finished: OrderedDict[str, ShortTermMemory] = OrderedDict()
+        self._sinks: list[EventSink] = []
+        self._on_start: list[InstructionHook] = []
+        self._on_end: list[InstructionHook] = []
+        self._dm_hooks: list[DirectMessageHook] = []
+        self._dispatcher: asyncio.Task[None] | None = None
+        self._stopping = False
+        self.unmatched: list[InboundMessage] = []
+
+    # -- lifecycle -----------------------------------------------------------------------
+    async def start(self) -> None:
+        if self._dispatcher is not None:
+            return
+        self.parts.messenger.connect_inbox(self.inbox)  # type: ignore[arg-type]
+        self._dispatcher = asyncio.create_task(self._dispatch(), name="assistant-dispatch")
+
+    async def stop(self) -> None:
+        # Instructions cut short by a shutdown resume on the next start: keep their codes.
+        self._stopping = True
+        for running in list(self.running.values()):
+            running.task.cancel()
+        for running in list(self.running.values()):
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await running.task
+        if self._dispatcher is not None:
+            await self.inbox.put(None)  # sentinel
+            with contextlib.suppress(asyncio.CancelledError):
+                await self._dispatcher
+            self._dispatcher = None
+
+    def _is_member(self, person: str, group: str) -> bool:
+        return any(g.id == group and person in g.members for g in self.office.groups)
+
+    def subscribe(self, sink: EventSink) -> None:
+        self._sinks.append(sink)
+
+    def on_instruction_start(self, hook: InstructionHook) -> None:
+        self._on_start.append(hook)
+
+    def on_instruction_end(self, hook: InstructionHook) -> None:
+        self._on_end.append(hook)
+
+    def intercept_direct_messages(self, hook: DirectMessageHook) -> None:
+        self._dm_hooks.append(hook)
+
+    async def _emit(self, event: TraceEvent) -> None:
+        for sink in self._sinks:
+            await sink(event)
+
+    # -- instructions --------------------------------------------------------------------
+    def new_id(self) -> str:
+        return new_instruction_id()
+
+    async def submit(
+        self,
+        requester: str,
+        text: str,
+        *,
+        instruction_id: str | None = None,
+        resume: ShortTermMemory | None = None,
+    ) -> ShortTermMemory:
+        """Start an instruction (or resume one from its journaled memory); returns its memory."""
+        if resume is not None:
+            stm = resume
+        else:
+            requester = self.resolver.person(requester)  # GroundingError for unknown people
+            instruction_id = instruction_id or self.new_id()
+            if instruction_id in self.running or instruction_id in self.finished:
+                raise ValueError(f"instruction {instruction_id} exists already")
+            stm = ShortTermMemory(
+                instruction_id=instruction_id,
+                requester=requester,
+                text=text,
+                trace=Trace(
+                    instruction_id=instruction_id,
+                    requester=requester,
+                    text=text,
+                    reasoner=self.parts.reasoner_name,
+                    started_at=self.clock.now(),
+                ),
+            )
+            stm.embodied.robot_place = self.parts.robot.state().place
+        reasoner = self.parts.reasoner_factory()
+        await reasoner.start()  # its stop() runs when the instruction ends, in _run
+        runner = InstructionRunner(
+            ltm=self.ltm,
+            resolver=self.resolver,
+            executor=self.executor,
+            reasoner=reasoner,
+            lease=self.lease,
+            limits=self.parts.limits,
+            emit=self._emit,
+        )
+        for hook in self._on_start:
+            await hook(stm)
+        task = asyncio.create_task(self._run(runner, stm), name=stm.instruction_id)
+        self.running[stm.instruction_id] = Running(stm, task, reasoner)
+        return stm
+
+    async def _run(self, runner: InstructionRunner, stm: ShortTermMemory) -> ShortTermMemory:
+        ended = False
+        try:
+            await runner.run(stm)
+            ended = True
+        finally:
+            self.running.pop(stm.instruction_id, None)
+            self.executor.forget(stm.instruction_id)
+            self.finished[stm.instruction_id] = stm
+            while len(self.finished) > FINISHED_KEPT:
+                self.finished.popitem(last=False)
+            try:
+                await runner.reasoner.stop()
+            except Exception:
+                logger.exception("could not stop the reasoner of %s", stm.instruction_id)
+            # Ended, or cancelled by a person (not cut short by a shutdown: that resumes).
+            if ended or not self._stopping:
+                await self._revoke_codes(stm)
+                await self._end_hooks(stm)
+        return stm
+
+    async def _end_hooks(self, stm: ShortTermMemory) -> None:
+        for hook in self._on_end:
+            try:
+                await hook(stm)
+            except Exception:
+                logger.exception("instruction end hook failed")
+
+    async def _revoke_codes(self, stm: ShortTermMemory) -> None:
+        """The instruction ended (done, failed, cancelled): none of its codes may open the
+        locker any more."""
+        try:
+            revoked = await self.executor.revoke_codes(stm)
+        except Exception:
+            logger.exception("could not revoke the codes of %s", stm.instruction_id)
+            return
+        if revoked:
+            logger.info("revoked %d unused code(s) of %s", revoked, stm.instruction_id)
+
+    async def wait(self, instruction_id: str) -> ShortTermMemory:
+        if instruction_id in self.running:
+            return await self.running[instruction_id].task
+        return self.finished[instruction_id]
+
+    def cancel(self, instruction_id: str) -> bool:
+        running = self.running.get(instruction_id)
+        if running is None:
+            return False
+        running.task.cancel()
+        return True
+
+    def get(self, instruction_id: str) -> ShortTermMemory | None:
+        running = self.running.get(instruction_id)
+        return running.stm if running else self.finished.get(instruction_id)
+
+    # -- inbound -------------------------------------------------------------------------
+    async def _dispatch(self) -> None:
+        while True:
+            message = await self.inbox.get()
+            if message is None:
+                return
+            try:
+                await self.handle_inbound(message)
+            except Exception:
+                logger.exception("could not handle inbound message %s", message.event_id)
+            try:
+                # Also after a failure: a message that broke the handler would break it again.
+                await self.parts.messenger.acknowledge(message)
+            except Exception:
+                logger.exception("could not acknowledge inbound message %s", message.event_id)
+
+    async def handle_inbound(self, message: InboundMessage) -> str | None:
+        """Route a reply to its instruction, or start an instruction from a direct message
+        that is a request; a late reply to an ended instruction or a message that asks for
+        nothing is acknowledged in words instead."""
+        routed = self.replies.route(message)
+        if routed is not None:
+            return routed
+        if message.chat.kind == "dm" and message.text.strip():
+            try:
+                self.resolver.person(message.sender)
+            except GroundingError:
+                logger.warning("message from unknown sender %s ignored", message.sender)
+                return None
+            for hook in self._dm_hooks:
+                if await hook(message):
+                    return None
+            refusal = self._not_a_new_request(message)
+            if refusal is not None:
+                await self._acknowledge(message, refusal)
+                return None
+            stm = await self.submit(message.sender, message.text)
+            return stm.instruction_id
+        self.unmatched.append(message)
+        return None
+
+    def _not_a_new_request(self, message: InboundMessage) -> str | None:
+        """Why ``message`` starts no instruction, in words for its author; None: it does."""
+        # A reply to one of our questions that no open question took: its instruction ended.
+        if message.in_reply_to is not None and _names_a_question(message.in_reply_to):
+            return (
+                "Thanks. The request I asked you about has already ended, so I did not act "
+                "on your reply."
+            )
+        check = self.parts.is_request
+        if check is None:
+            return None
+        ended = self.replies.ended_instruction(message)
+        ended_stm = self.finished.get(ended) if ended is not None else None
+        contacted = ended_stm is not None and ended_stm.requester != message.sender
+        if check(message.text, message.sender, strict=contacted):
+            return None
+        if contacted:
+            return (
+                "Thanks. The request I contacted you about has already ended, so I did not "
+                "act on this message. If you need something yourself, please tell me what, "
+                "and for whom."
+            )
+        return (
+            "I did not find a request in your message, so I did nothing. Please tell me "
+            "what you need, and for whom."
+        )
+
+    async def _acknowledge(self, message: InboundMessage, text: str) -> None:
+        logger.info("message %s acknowledged, not executed", message.event_id)
+        reply = OutboundMessage(
+            chat=ChatRef(kind="dm", id=message.sender),
+            text=text,
+            idempotency_key=f"ack:{message.platform}:{message.event_id}",
+        )
+        try:
+            await self.parts.messenger.send(reply)
+        except Exception:
+            logger.exception("could not acknowledge message %s in words", message.event_id)
+
+
+def _names_a_question(reference: str) -> bool:
+    """Whether a reply reference is one of our question ids (``<instruction id>:<key>``)."""
+    instruction_id, sep, key = reference.partition(":")
+    return bool(sep and key) and instruction_id.startswith("ins-")

@@ -1,0 +1,124 @@
+"""A failed action is a fact: recognise the same failure again, and say in words what it left.
+
+The loop lets a reasoner retry a failed action once (an obstacle may have gone, a person may
+answer now). When the same action fails again for the same reason (the same error class),
+repeating it is pointless: the loop ends the instruction and the requester gets a summary
+that says what failed, where the robot is, what the locker holds and what happens to it. The
+text uses names, never ids.
+"""
+
+from __future__ import annotations
+
+import math
+
+from assistantx.core.actions import Action, Move
+from assistantx.core.office import Office
+from assistantx.core.ports.robot import RobotBase
+from assistantx.core.trace import ActionResult
+from assistantx.memory.short_term import ShortTermMemory
+
+# The robot's errors in words a person reads (their messages carry map coordinates).
+_REASONS = {
+    "BlockedError": "something blocks the way",
+    "LocalizationLostError": "the robot lost track of where it is",
+    "UnreachableError": "there is no way there on the map",
+}
+
+
+class FailureMemory:
+    """The error class of each action signature's last failure. Only adapter errors count
+    (a drive that was blocked, a lock that did not answer): a wait that timed out is not an
+    error, and waiting again later may well be the right thing to do."""
+
+    def __init__(self) -> None:
+        self._last: dict[str, str] = {}
+
+    def repeated(self, result: ActionResult) -> bool:
+        """Record a failed result; True if the same action already failed the same way."""
+        if result.error is None:
+            return False
+        signature = result.action.signature()
+        reason = result.error
+        again = self._last.get(signature) == reason
+        self._last[signature] = reason
+        return again
+
+
+def place_name(office: Office, place: str) -> str:
+    for location in office.locations:
+        if location.id == place:
+            return location.name
+    for facility in office.facilities:
+        if facility.id == place:
+            return facility.name
+    for person in office.people:
+        if person.id == place:
+            return f"{person.name}'s desk"
+    return "the destination"
+
+
+def item_name(office: Office, item_id: str) -> str:
+    type_id, _, owner_id = item_id.partition(":")
+    kind = next((t.name for t in office.item_types if t.id == type_id), "item")
+    owner = next((p.name for p in office.people if p.id == owner_id), None)
+    return f"{owner}'s {kind}" if owner else f"the {kind}"
+
+
+def robot_whereabouts(office: Office, robot: RobotBase) -> str:
+    """ "at the Mail room", or "near the Mail room" when it stopped between places."""
+    state = robot.state()
+    if state.place is not None:
+        return f"at {place_name(office, state.place)}"
+    if not office.locations:
+        return f"at ({state.pose.x:.1f}, {state.pose.y:.1f})"
+    nearest = min(
+        office.locations, key=lambda loc: math.hypot(loc.x - state.pose.x, loc.y - state.pose.y)
+    )
+    return f"near {nearest.name}"
+
+
+def _person_or_group_name(office: Office, contact: str) -> str:
+    for person in office.people:
+        if person.id == contact:
+            return person.name
+    for group in office.groups:
+        if group.id == contact:
+            return group.name
+    return "them"
+
+
+def _failed_action_in_words(office: Office, action: Action) -> str:
+    """ "I could not ask Wang Fang": what failed, with names, never an action's wire name."""
+    if isinstance(action, Move):
+        return f"I could not get to {place_name(office, action.place)}"
+    contact = getattr(action, "contact", None) or getattr(action, "target", None)
+    who = _person_or_group_name(office, contact) if isinstance(contact, str) else "them"
+    doing = {
+        "inquire": f"ask {who}",
+        "inform": f"send {who} a message",
+        "send_qr": f"send {who} a locker code",
+        "forward_file": f"forward the file to {who}",
+        "wait_in_place": f"complete the hand-over with {who}",
+    }.get(action.type, "finish a step")
+    return f"I could not {doing}"
+
+
+def failure_summary(
+    office: Office, stm: ShortTermMemory, robot: RobotBase, result: ActionResult
+) -> str:
+    action: Action = result.action
+    what = _failed_action_in_words(office, action)
+    reason = _REASONS.get(result.error or "", result.observation.removeprefix("failed: "))
+    lines = [f"{what}, twice for the same reason ({reason}), so I stopped trying."]
+    where = robot_whereabouts(office, robot)
+    contents = stm.embodied.locker_contents
+    if contents:
+        items = ", ".join(item_name(office, i) for i in contents)
+        lines.append(
+            f"The robot is {where}; {items} {'is' if len(contents) == 1 else 'are'} locked in "
+            "its locker. It will wait there with the locker closed until someone clears the "
+            "way or collects the contents with a locker code."
+        )
+    else:
+        lines.append(f"The robot is {where}; its locker is empty.")
+    return " ".join(lines)

@@ -1,0 +1,146 @@
+"""Matching inbound messages to the instruction and question that asked for them.
+
+Every question the assistant sends gets a question id. A reply is matched by, in order:
+the platform's explicit reply reference (``in_reply_to``), the most recent open question in
+the same chat (a DM with that person, or that group), else the most recent open instruction
+that wrote to that chat (a colleague told to meet the robot writes back "I can't come").
+Anything unmatched goes back to the caller (a new instruction, or chatter to ignore).
+Replies are kept per instruction, so two instructions asking the same person never see
+each other's answers. Once an instruction ends, its questions and the chats it wrote to are
+remembered as ended (``ended_instruction``): a late reply there is about that instruction,
+not a new request.
+
+A question is answered only from the chat it was asked in: a DM question by that person in
+that DM, a group question by a member in that group. An ``in_reply_to`` naming a question
+asked elsewhere (Zhang quoting, in his own DM, the question sent to Wang) is not an answer to
+it; the reference is dropped and the message is routed as if it named no question.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections import defaultdict
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import TypeVar
+
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
+
+_K = TypeVar("_K")
+_ENDED_KEPT = 10_000  # ended questions and chats remembered (a bound on memory)
+
+
+@dataclass
+class OpenQuestion:
+    question_id: str
+    instruction_id: str
+    chat: ChatRef
+    asked_at: float
+    answers: list[InboundMessage] = field(default_factory=list)
+
+
+# Whether a person belongs to a group (person id, group id); None: trust the chat alone.
+MembershipCheck = Callable[[str, str], bool]
+
+
+class ReplyBox:
+    def __init__(self, is_member: MembershipCheck | None = None) -> None:
+        self._is_member = is_member
+        self._questions: dict[str, OpenQuestion] = {}
+        self._by_chat: dict[ChatRef, list[str]] = defaultdict(list)
+        self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
+        self._inbox: dict[str, list[InboundMessage]] = defaultdict(list)
+        self._engaged: dict[ChatRef, list[str]] = defaultdict(list)
+        self._ended_questions: dict[str, str] = {}  # question id → its ended instruction
+        self._ended_chats: dict[ChatRef, str] = {}  # chat → the ended instruction last in it
+
+    def ask(self, question_id: str, instruction_id: str, chat: ChatRef, time: float) -> None:
+        self._questions[question_id] = OpenQuestion(question_id, instruction_id, chat, time)
+        self._by_chat[chat].append(question_id)
+        self._ended_chats.pop(chat, None)
+
+    def engage(self, instruction_id: str, chat: ChatRef) -> None:
+        """``instruction_id`` wrote to ``chat``: unprompted messages there may concern it."""
+        self._ended_chats.pop(chat, None)
+        engaged = self._engaged[chat]
+        if instruction_id in engaged:
+            engaged.remove(instruction_id)
+        engaged.append(instruction_id)
+
+    def event(self, instruction_id: str) -> asyncio.Event:
+        """Set whenever a message for ``instruction_id`` arrives."""
+        return self._events[instruction_id]
+
+    def route(self, message: InboundMessage) -> str | None:
+        """File ``message`` under its instruction; return the instruction id (None: unmatched)."""
+        question = self._questions.get(message.in_reply_to or "")
+        if question is not None and not self.may_answer(question, message):
+            message = message.model_copy(update={"in_reply_to": None})
+            question = None
+        if question is None:
+            open_here = self._by_chat.get(message.chat, [])
+            question = self._questions[open_here[-1]] if open_here else None
+            if question is not None and not self.may_answer(question, message):
+                question = None
+        if question is None:
+            engaged = self._engaged.get(message.chat)
+            if not engaged:
+                return None
+            self.deliver(engaged[-1], message)
+            return engaged[-1]
+        if message.in_reply_to is None:
+            message = message.model_copy(update={"in_reply_to": question.question_id})
+        question.answers.append(message)
+        self._inbox[question.instruction_id].append(message)
+        self._events[question.instruction_id].set()
+        return question.instruction_id
+
+    def may_answer(self, question: OpenQuestion, message: InboundMessage) -> bool:
+        """Whether ``message`` comes from the chat ``question`` was asked in."""
+        if message.chat != question.chat:
+            return False
+        if question.chat.kind == "dm":
+            return message.sender == question.chat.id
+        return self._is_member is None or self._is_member(message.sender, question.chat.id)
+
+    def deliver(self, instruction_id: str, message: InboundMessage) -> None:
+        """File a message known to belong to ``instruction_id`` (e.g. a requester's answer)."""
+        self._inbox[instruction_id].append(message)
+        self._events[instruction_id].set()
+
+    def take(self, instruction_id: str) -> list[InboundMessage]:
+        """The messages for ``instruction_id`` not yet taken."""
+        messages = self._inbox.pop(instruction_id, [])
+        self._events[instruction_id].clear()
+        return messages
+
+    def close(self, instruction_id: str) -> None:
+        """Forget an ended instruction's questions; later replies go unmatched, and
+        ``ended_instruction`` names it for them."""
+        for qid in [q for q, o in self._questions.items() if o.instruction_id == instruction_id]:
+            question = self._questions.pop(qid)
+            self._by_chat[question.chat].remove(qid)
+            self._remember(self._ended_questions, qid, instruction_id)
+            if not self._engaged.get(question.chat):
+                self._remember(self._ended_chats, question.chat, instruction_id)
+        for chat, engaged in self._engaged.items():
+            if instruction_id in engaged:
+                engaged.remove(instruction_id)
+                if not engaged and not self._by_chat.get(chat):
+                    self._remember(self._ended_chats, chat, instruction_id)
+        self._inbox.pop(instruction_id, None)
+        self._events.pop(instruction_id, None)
+
+    def ended_instruction(self, message: InboundMessage) -> str | None:
+        """The ended instruction an unmatched ``message`` answers (its ``in_reply_to``) or
+        writes back to (the last instruction in its chat has ended); None: none known."""
+        if message.in_reply_to is not None and message.in_reply_to in self._ended_questions:
+            return self._ended_questions[message.in_reply_to]
+        return self._ended_chats.get(message.chat)
+
+    @staticmethod
+    def _remember(table: dict[_K, str], key: _K, instruction_id: str) -> None:
+        table.pop(key, None)
+        table[key] = instruction_id
+        while len(table) > _ENDED_KEPT:  # oldest first: dicts keep insertion order
+            del table[next(iter(table))]

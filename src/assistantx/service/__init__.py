@@ -1,0 +1,2 @@
+"""The service: REST and live events over FastAPI, the dashboard, auth, durability, telemetry,
+and the runtime that wires the assistant to its adapters."""
