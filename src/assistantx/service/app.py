@@ -145,10 +145,8 @@ def create_app(
         route = request.scope.get("route")
         path = getattr(route, "path", "unmatched")
         if runtime.ready:
-            runtime.metrics.http_requests.inc(
-                method=request.method, route=path, status=str(response.status_code)
-            )
-            runtime.metrics.http_latency.observe(time.perf_counter() - started, route=path)
+            seconds = time.perf_counter() - started
+            runtime.metrics.request_served(request.method, path, response.status_code, seconds)
         return response
 
     for module in (health, instructions, events, memory, messages, devices, metrics, dashboard):

@@ -11,17 +11,22 @@ The all-instructions stream's replay is bounded: at most ``?replay=`` events (de
 ``replay`` events. When the bound cuts events off, the stream first says so with a
 ``replay_truncated`` event naming the ids skipped (the client can read them per instruction).
 A year of events is never replayed by one request.
+
+The framing is FastAPI's: each route is an async generator under ``EventSourceResponse``,
+which writes the ``text/event-stream`` fields, the no-cache and no-proxy-buffering headers,
+and a keep-alive comment whenever nothing was sent for 15 s. The checks that answer 4xx
+(a bad ``Last-Event-ID``, someone else's instruction) run as dependencies, before the stream
+starts, so they still get their status code instead of a 200 that ends at once.
 """
 
 from __future__ import annotations
 
-import asyncio
-import json
 from collections.abc import AsyncIterator
+from dataclasses import dataclass
 from typing import Annotated
 
-from fastapi import APIRouter, Header, Query
-from fastapi.responses import StreamingResponse
+from fastapi import APIRouter, Depends, Header, Query
+from fastapi.sse import EventSourceResponse, ServerSentEvent
 
 from assistantx.memory.journal import MAX_SEQ, EventRecord
 from assistantx.service.auth import Principal
@@ -31,10 +36,22 @@ from assistantx.service.runtime import ServiceRuntime
 
 router = APIRouter(prefix="/v1", tags=["events"])
 
-KEEPALIVE_S = 15.0
 REPLAY_DEFAULT = 1000
 REPLAY_MAX = 10_000
 FINAL_STATUSES = {"done", "failed", "unachievable", "cancelled"}
+
+LastEventId = Annotated[str | None, Header(max_length=20)]
+After = Annotated[int | None, Query(ge=0, le=MAX_SEQ)]
+
+
+@dataclass(frozen=True)
+class Replay:
+    """Where a stream starts: after journal sequence ``after``, never replaying at or below
+    ``floor`` (the bound of the all-instructions replay)."""
+
+    instruction_id: str | None
+    after: int
+    floor: int | None = None
 
 
 def _start(last_event_id: str | None, after: int | None) -> int:
@@ -51,24 +68,19 @@ def _start(last_event_id: str | None, after: int | None) -> int:
     return start
 
 
-def _format(record: EventRecord) -> str:
-    payload = record.event.model_dump(mode="json")
-    return f"id: {record.seq}\nevent: {record.event.kind}\ndata: {json.dumps(payload)}\n\n"
+def _event(record: EventRecord) -> ServerSentEvent:
+    return ServerSentEvent(id=str(record.seq), event=record.event.kind, data=record.event)
 
 
-def _truncated(first: int, last: int) -> str:
+def _truncated(first: int, last: int) -> ServerSentEvent:
     payload = {"kind": "replay_truncated", "skipped_after": first, "skipped_through": last}
-    return f"event: replay_truncated\ndata: {json.dumps(payload)}\n\n"
+    return ServerSentEvent(event="replay_truncated", data=payload)
 
 
 async def _stream(
-    runtime: ServiceRuntime,
-    caller: Principal,
-    instruction_id: str | None,
-    after: int,
-    floor: int | None = None,
-) -> AsyncIterator[str]:
-    """``floor``: replay nothing at or below it (the bound of the all-instructions replay)."""
+    runtime: ServiceRuntime, caller: Principal, replay: Replay
+) -> AsyncIterator[ServerSentEvent]:
+    instruction_id, after, floor = replay.instruction_id, replay.after, replay.floor
     listener = runtime.hub.subscribe(instruction_id)
     owners: dict[str, str | None] = {}
     if floor is not None and floor > after:
@@ -91,7 +103,7 @@ async def _stream(
             for record in page:
                 last = record.seq
                 if visible(record):
-                    yield _format(record)
+                    yield _event(record)
                 if instruction_id and record.event.kind == "instruction_ended":
                     return
             if len(page) < 500:
@@ -100,64 +112,64 @@ async def _stream(
             found = runtime.journal.instruction(instruction_id)
             if found is not None and found.status in FINAL_STATUSES:
                 return
-        while True:
-            try:
-                live = await asyncio.wait_for(listener.queue.get(), KEEPALIVE_S)
-            except TimeoutError:
-                yield ": keepalive\n\n"
-                continue
+        while True:  # live; FastAPI sends the keep-alive comments while this waits
+            live = await listener.queue.get()
             if live is None:
                 return  # dropped (slow) or shutting down: the client reconnects
             if live.seq <= last:
                 continue
             last = live.seq
             if visible(live):
-                yield _format(live)
+                yield _event(live)
             if instruction_id and live.event.kind == "instruction_ended":
                 return
     finally:
         runtime.hub.unsubscribe(listener)
 
 
-def _response(body: AsyncIterator[str]) -> StreamingResponse:
-    return StreamingResponse(
-        body,
-        media_type="text/event-stream",
-        headers={"Cache-Control": "no-cache", "X-Accel-Buffering": "no"},
-    )
-
-
-@router.get("/instructions/{instruction_id}/events")
-async def instruction_events(
+def _one_instruction(
     instruction_id: str,
     runtime: Runtime,
     caller: Caller,
-    last_event_id: Annotated[str | None, Header(max_length=20)] = None,
-    after: Annotated[int | None, Query(ge=0, le=MAX_SEQ)] = None,
-) -> StreamingResponse:
+    last_event_id: LastEventId = None,
+    after: After = None,
+) -> Replay:
     start = _start(last_event_id, after)  # a malformed request is 422 before any lookup
     record = runtime.instruction(instruction_id)
     if not caller.may_act_as(record.requester):
         raise ForbiddenError("this instruction belongs to someone else")
-    return _response(_stream(runtime, caller, instruction_id, start))
+    return Replay(instruction_id, start)
 
 
-@router.get("/events")
-async def all_events(
+def _all_instructions(
     runtime: Runtime,
-    caller: Caller,
-    last_event_id: Annotated[str | None, Header(max_length=20)] = None,
-    after: Annotated[int | None, Query(ge=0, le=MAX_SEQ)] = None,
+    last_event_id: LastEventId = None,
+    after: After = None,
     since: Annotated[float | None, Query(ge=0)] = None,
     replay: Annotated[int, Query(ge=0, le=REPLAY_MAX)] = REPLAY_DEFAULT,
-) -> StreamingResponse:
-    """Every instruction's events (a person's token: only their own instructions); the
-    replay is the newest ``replay`` events after the given id or time."""
+) -> Replay:
     newest = runtime.journal.last_event_seq()
     if last_event_id is None and after is None:
         start = runtime.journal.event_seq_before(since) if since is not None else 0
         # No position given: nothing to report as skipped, the newest events simply start it.
-        start = max(start, newest - replay)
-        return _response(_stream(runtime, caller, None, start))
-    start = _start(last_event_id, after)
-    return _response(_stream(runtime, caller, None, start, floor=newest - replay))
+        return Replay(None, max(start, newest - replay))
+    return Replay(None, _start(last_event_id, after), floor=newest - replay)
+
+
+@router.get("/instructions/{instruction_id}/events", response_class=EventSourceResponse)
+async def instruction_events(
+    runtime: Runtime, caller: Caller, replay: Annotated[Replay, Depends(_one_instruction)]
+) -> AsyncIterator[ServerSentEvent]:
+    """One instruction's events; the stream ends after its ``instruction_ended``."""
+    async for event in _stream(runtime, caller, replay):
+        yield event
+
+
+@router.get("/events", response_class=EventSourceResponse)
+async def all_events(
+    runtime: Runtime, caller: Caller, replay: Annotated[Replay, Depends(_all_instructions)]
+) -> AsyncIterator[ServerSentEvent]:
+    """Every instruction's events (a person's token: only their own instructions); the
+    replay is the newest ``replay`` events after the given id or time."""
+    async for event in _stream(runtime, caller, replay):
+        yield event

@@ -3,16 +3,15 @@
 from __future__ import annotations
 
 from fastapi import APIRouter
-from fastapi.responses import PlainTextResponse
+from fastapi.responses import Response
 
 from assistantx.service.deps import Caller, Runtime
+from assistantx.service.telemetry import CONTENT_TYPE
 
 router = APIRouter(tags=["metrics"])
 
 
-@router.get("/metrics", response_class=PlainTextResponse)
-async def metrics(runtime: Runtime, caller: Caller) -> PlainTextResponse:
+@router.get("/metrics", response_class=Response)
+async def metrics(runtime: Runtime, caller: Caller) -> Response:
     caller.require_operator()
-    return PlainTextResponse(
-        runtime.metrics.render(), media_type="text/plain; version=0.0.4; charset=utf-8"
-    )
+    return Response(runtime.metrics.render(), media_type=CONTENT_TYPE)

@@ -1,0 +1,85 @@
+"""The live event stream as a client reads it: text/event-stream with no caching, keep-alive
+comments while nothing happens, and a person's token sees only their own instructions."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+
+import httpx
+import pytest
+
+from service.server import LEE, OPERATOR, ZHANG
+
+OP = {"Authorization": f"Bearer {OPERATOR}"}
+AS_LEE = {"Authorization": f"Bearer {LEE}"}
+AS_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
+
+
+async def _read(
+    api: httpx.AsyncClient, path: str, headers: dict[str, str], seconds: float
+) -> tuple[httpx.Headers, list[str]]:
+    """The response headers and the lines the stream sent within ``seconds``."""
+    lines: list[str] = []
+    got: list[httpx.Headers] = []
+
+    async def read() -> None:
+        async with api.stream("GET", path, headers=headers) as response:
+            assert response.status_code == 200
+            got.append(response.headers)
+            async for line in response.aiter_lines():
+                lines.append(line)
+
+    try:
+        await asyncio.wait_for(read(), seconds)
+    except TimeoutError:
+        pass
+    assert got, "the stream never answered"
+    return got[0], lines
+
+
+async def test_an_idle_stream_sends_keep_alive_comments(
+    api: httpx.AsyncClient, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # FastAPI's SSE response sends the keep-alives; its interval (15 s) is shortened here so
+    # that a second of silence shows several. Renaming it upstream fails this test loudly.
+    monkeypatch.setattr("fastapi.routing._PING_INTERVAL", 0.2)
+    headers, lines = await _read(api, "/v1/events", OP, 1.2)
+    assert headers["content-type"].startswith("text/event-stream")
+    assert headers["cache-control"] == "no-cache"
+    assert headers["x-accel-buffering"] == "no"  # a proxy must not hold events back
+    comments = [line for line in lines if line.startswith(":")]
+    assert len(comments) >= 3, lines
+    assert all(line.startswith(":") or line == "" for line in lines), lines  # nothing else
+
+
+async def test_a_person_follows_only_their_own_instructions(api: httpx.AsyncClient) -> None:
+    ids = {}
+    for person, auth in (("lee", AS_LEE), ("zhang", AS_ZHANG)):
+        body = {"requester": person, "text": "Bring me a stapler"}
+        created = await api.post("/v1/instructions", json=body, headers=auth)
+        assert created.status_code == 202, created.text
+        ids[person] = created.json()["id"]
+
+    def events(lines: list[str]) -> list[tuple[str, str, dict[str, object]]]:
+        """(id, event, data) per event; every event carries all three fields."""
+        out, fields = [], {}
+        for line in lines:
+            if line == "":
+                if fields:
+                    out.append((fields["id"], fields["event"], json.loads(fields["data"])))
+                fields = {}
+            elif not line.startswith(":"):
+                name, _, value = line.partition(": ")
+                fields[name] = value
+        return out
+
+    _, lines = await _read(api, "/v1/events", AS_LEE, 1.5)
+    seen = events(lines)
+    assert seen and {data["instruction_id"] for _, _, data in seen} == {ids["lee"]}
+    assert all(kind == data["kind"] for _, kind, data in seen)
+    seqs = [int(seq) for seq, _, _ in seen]
+    assert seqs == sorted(set(seqs))  # journal order, no repeats
+
+    _, lines = await _read(api, "/v1/events", OP, 1.5)
+    assert {data["instruction_id"] for _, _, data in events(lines)} == set(ids.values())
