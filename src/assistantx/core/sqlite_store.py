@@ -262,8 +262,7 @@ def migrate(conn: sqlite3.Connection, schema: Schema) -> int:
         found = _stored_version(conn, schema)
         for migration in schema.migrations[found:]:
             if isinstance(migration, str):
-                for statement in _statements(migration):
-                    conn.execute(statement)
+                execute_script(conn, migration)
             else:
                 migration(conn)
         if found != schema.version:
@@ -293,16 +292,15 @@ def _stored_version(conn: sqlite3.Connection, schema: Schema) -> int:
     return found
 
 
-def _statements(script: str) -> list[str]:
-    """Split a script at the ``;`` that end statements (``executescript`` would commit)."""
-    statements: list[str] = []
+def execute_script(conn: sqlite3.Connection, script: str) -> None:
+    """Run the statements of ``script`` inside the current transaction (``executescript``
+    would commit it first), split at the ``;`` that end statements."""
     current = ""
     for piece in script.split(";"):
         current += piece + ";"
         if sqlite3.complete_statement(current):
             if current.strip(" \n\t;"):
-                statements.append(current.strip())
+                conn.execute(current)
             current = ""
     if current.strip(" \n\t;"):
         raise SchemaError(f"an incomplete SQL statement: {current.strip()[:60]!r}")
-    return statements
