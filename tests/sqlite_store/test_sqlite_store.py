@@ -195,3 +195,28 @@ def test_sync_calls_from_threads_are_serialised(tmp_path: Path) -> None:
     for w in "abc":  # each thread's writes in its own order
         assert [t for t in texts if t[0] == w] == [f"{w}{k}" for k in range(50)]
     store.close()
+
+
+async def test_a_caller_cancelled_while_waiting_leaves_the_store_working(tmp_path: Path) -> None:
+    """Its write is still committed, in order, and later calls are served (the journal's old
+    writer thread died setting the result of the cancelled future, and every later call hung)."""
+    store = SqliteStore.open(tmp_path / "s.sqlite3", V1)
+    busy, release = threading.Event(), threading.Event()
+
+    def hold(db: sqlite3.Connection) -> None:
+        busy.set()
+        release.wait(5)
+
+    held = store.submit(hold, now=True)
+    assert await asyncio.to_thread(busy.wait, 5)
+    waiting = asyncio.create_task(store.acall(_insert("cancelled caller")))
+    await asyncio.sleep(0.05)  # handed over to the thread, queued behind ``hold``
+    waiting.cancel()
+    with pytest.raises(asyncio.CancelledError):
+        await waiting
+    release.set()
+    held.result()
+    after = await asyncio.wait_for(store.acall(_insert("later")), 10)  # a guard, not a timing
+    assert after == 2
+    assert store.call(_texts) == ["cancelled caller", "later"]
+    store.close()

@@ -129,6 +129,11 @@ class SqliteStore:
         On an event loop (and unless ``now``) it joins the batch handed over at the loop's
         next turn; a caller about to block on the future passes ``now``."""
         future: Future[T] = Future()
+        # Running from the start, so it cannot be cancelled: a caller that stops waiting
+        # (its task cancelled, which cancels the future it awaits) still has its write
+        # committed in order, and the thread never sets the result of a cancelled future
+        # (that raises, and killed the journal's old writer thread, hanging every later call).
+        future.set_running_or_notify_cancel()
         job = _Job(fn, future)
         try:
             loop = None if now else asyncio.get_running_loop()
