@@ -9,7 +9,8 @@ exception — and commits once. Only then are the futures resolved: a caller tha
 result knows its write is committed, and many writes arriving together share one commit
 (group commit) instead of queueing for one each. Functions run in the order submitted, so a
 store's order is the order in which its callers recorded things. Reads that must see the
-store's writes go through the same queue (they are ordered after them).
+store's writes go through the same queue (they are ordered after them). A call once submitted
+is run and committed even when its caller stops waiting (a cancelled task).
 
 Async callers ``await store.acall(fn)``: the event loop serves others while the thread works.
 Sync callers (the CLI, start-up, a worker thread, tests) use ``store.call(fn)``, which blocks
