@@ -12,7 +12,7 @@ from pathlib import Path
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.core.actions import Action, Wait
 from assistantx.core.office import Office
-from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
 from assistantx.core.trace import (
     ActionResult,
     Decision,
@@ -67,6 +67,7 @@ class Harness:
     surveyor: Surveyor
     store: FeedbackStore
     scripts: list[list[list[Action]]]
+    acknowledged: set[str]  # inbound event ids the assistant is done with
 
     async def run(self, requester: str, text: str, steps: list[list[Action]]) -> ShortTermMemory:
         """Run one instruction to its end (the survey is sent by the end hook)."""
@@ -76,11 +77,13 @@ class Harness:
 
     async def say(self, person: str, text: str) -> None:
         """``person`` writes to the assistant in their direct chat; wait until it is handled."""
-        self.sim.messenger.post(person, ChatRef(kind="dm", id=person), text)
-        for _ in range(200):
-            if self.assistant.inbox.empty():
+        inbound = self.sim.messenger.post(person, ChatRef(kind="dm", id=person), text)
+        # The survey store answers from its own thread, so handling takes real time: wait
+        # for the assistant's acknowledgement (sent once it handled the message).
+        for _ in range(10_000):
+            if inbound.event_id in self.acknowledged:
                 break
-            await asyncio.sleep(0)
+            await asyncio.sleep(0.001)
         for _ in range(20):
             await asyncio.sleep(0)
 
@@ -115,12 +118,18 @@ async def harness(
         sim.register_instruction(stm.instruction_id, stm.requester)
 
     assistant.on_instruction_start(register)
+    acknowledged: set[str] = set()
+
+    async def acknowledge(message: InboundMessage) -> None:
+        acknowledged.add(message.event_id)
+
+    sim.messenger.acknowledge = acknowledge  # type: ignore[method-assign]
     store = FeedbackStore.open(db)
     surveyor = Surveyor(office, store, sim.messenger, sim.clock, distance=distance, policy=policy)
     surveyor.attach(assistant)
     await assistant.start()
     try:
-        yield Harness(sim, assistant, surveyor, store, scripts)
+        yield Harness(sim, assistant, surveyor, store, scripts, acknowledged)
     finally:
         await assistant.stop()
         store.close()

@@ -92,3 +92,18 @@ def test_compaction_drops_old_traces_and_keeps_outcomes_and_messages(tmp_path: P
     assert [m.text for m in journal.messages_of("ins-old")] == ["done"]  # the audit stays
     assert journal.compact(finished_before=cut) == 1 and journal.compact(cut) == 0
     journal.close()
+
+
+async def test_a_writer_cancelled_while_waiting_does_not_stop_the_journal(tmp_path: Path) -> None:
+    """An instruction cancelled (or cut off at its wall-clock bound) while awaiting its write:
+    the write is still committed, and the writer thread keeps serving (the old writer thread
+    died setting the result of the cancelled future, and every later write hung)."""
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    waiting = asyncio.create_task(journal.arecord(_event(1)))
+    await asyncio.sleep(0)  # submitted: it waits for the hand-over to the writer
+    waiting.cancel()
+    with pytest.raises(asyncio.CancelledError):
+        await waiting
+    await asyncio.wait_for(journal.arecord(_event(2)), 10)  # a guard against a hang only
+    assert [r.event.step for r in journal.events()] == [1, 2]
+    journal.close()

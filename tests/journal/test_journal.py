@@ -129,3 +129,27 @@ def test_inserting_a_taken_instruction_id_raises_instead_of_overwriting(tmp_path
     record = journal.instruction("ins-1")
     assert record is not None and record.status == "running" and record.requester == "lee"
     journal.close()
+
+
+def test_a_journal_from_a_newer_version_is_refused(tmp_path: Path) -> None:
+    import sqlite3
+
+    path = tmp_path / "j.sqlite3"
+    Journal.open(path).close()
+    with sqlite3.connect(path) as db:
+        db.execute("UPDATE store_versions SET version=2 WHERE store='journal'")
+    db.close()
+    with pytest.raises(JournalError, match="journal schema 2, this version reads 1"):
+        Journal.open(path)
+    # A file from before the versions table, whose own record says a newer schema.
+    old = tmp_path / "old.sqlite3"
+    with sqlite3.connect(old) as db:
+        db.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+        db.execute("INSERT INTO meta VALUES ('schema', '2')")
+    db.close()
+    with pytest.raises(JournalError, match="journal schema 2, this version reads 1"):
+        Journal.open(old)
+    with sqlite3.connect(old) as db:  # the refused migration left nothing behind
+        tables = {r[0] for r in db.execute("SELECT name FROM sqlite_master WHERE type='table'")}
+    db.close()
+    assert tables == {"meta"}

@@ -60,6 +60,10 @@ class Surveyor:
         self.poll_s = poll_s
         self._task: asyncio.Task[None] | None = None
         self._closed = False
+        # The store is awaited (the loop serves others meanwhile); each read-decide-write of
+        # survey state holds this, so an end, a reply and a reminder never interleave there.
+        # Messages are sent after it is released, as before.
+        self._turn = asyncio.Lock()
 
     def attach(self, assistant: Assistant) -> None:
         assistant.on_instruction_end(self.instruction_ended)
@@ -79,6 +83,8 @@ class Surveyor:
             with contextlib.suppress(asyncio.CancelledError):
                 await self._task
             self._task = None
+        async with self._turn:
+            pass  # an end or a reply taken before is through with the store
 
     async def _remind_forever(self) -> None:
         failing = False
@@ -103,23 +109,24 @@ class Surveyor:
             return  # shutting down: the instruction resumes (and ends) on the next start
         now = self.clock.now()
         record = summarise(self.office, stm.trace, now, self.distance)
-        self.store.put_instruction(record)
         requester = stm.requester
-        if record.outcome == "cancelled":
-            return
-        if self.store.opted_out(requester):
-            logger.info("no survey for %s: %s opted out", stm.instruction_id, requester)
-            return
-        if self.store.survey(stm.instruction_id) is not None:
-            return  # already sent (an end hook that ran again after a restart)
-        survey = Survey(
-            instruction_id=stm.instruction_id,
-            person=requester,
-            chat=ChatRef(kind="dm", id=requester),
-            task_text=stm.text,
-            sent_at=now,
-        )
-        self.store.put_survey(survey)
+        async with self._turn:
+            await self.store.aput_instruction(record)
+            if record.outcome == "cancelled":
+                return
+            if await self.store.aopted_out(requester):
+                logger.info("no survey for %s: %s opted out", stm.instruction_id, requester)
+                return
+            if await self.store.asurvey(stm.instruction_id) is not None:
+                return  # already sent (an end hook that ran again after a restart)
+            survey = Survey(
+                instruction_id=stm.instruction_id,
+                person=requester,
+                chat=ChatRef(kind="dm", id=requester),
+                task_text=stm.text,
+                sent_at=now,
+            )
+            await self.store.aput_survey(survey)
         await self._send(survey, survey.invitation())
 
     # -- replies ---------------------------------------------------------------------------
@@ -129,31 +136,47 @@ class Surveyor:
             return False
         now = self.clock.now()
         parsed = parse_reply(message.text)
-        survey = self._survey_for(message, parsed, now)
+        notice: OutboundMessage | None = None
+        answer: str | None = None
+        async with self._turn:
+            survey = await self._survey_for(message, parsed, now)
+            if survey is None:
+                notice = await self._standing_command(message, parsed, now)
+            elif not survey.claims(message.text, parsed):
+                return False
+            else:
+                answer, replies = await self._take_reply(survey, message, parsed, now)
         if survey is None:
-            return await self._standing_command(message, parsed, now)
-        if not survey.claims(message.text, parsed):
-            return False
+            if notice is None:
+                return False
+            await self._post(notice)
+        elif answer is not None:
+            await self._send(survey, answer, suffix=f"r{replies}")
+        return True
+
+    async def _take_reply(
+        self, survey: Survey, message: InboundMessage, parsed: ParsedReply, now: float
+    ) -> tuple[str | None, int]:
+        """Apply and store a reply to ``survey``; (the answer to send, replies so far)."""
         invalid_before = survey.invalid_replies
         answer = survey.apply(message.text, parsed, now, self.policy)
         invalid = survey.invalid_replies > invalid_before
         if parsed.opt_out:
-            self._opt_out(message.sender, now, survey)
+            await self._opt_out(message.sender, now, survey)
         elif parsed.opt_in:
-            self.store.opt_in(message.sender)
-        self.store.record_reply(survey, now, message.text, _effect(parsed, survey, invalid=invalid))
-        if answer is not None:
-            replies = len(self.store.replies(survey.instruction_id))
-            await self._send(survey, answer, suffix=f"r{replies}")
-        return True
+            await self.store.aopt_in(message.sender)
+        effect = _effect(parsed, survey, invalid=invalid)
+        await self.store.arecord_reply(survey, now, message.text, effect)
+        replies = 0 if answer is None else len(await self.store.areplies(survey.instruction_id))
+        return answer, replies
 
-    def _survey_for(
+    async def _survey_for(
         self, message: InboundMessage, parsed: ParsedReply, now: float
     ) -> Survey | None:
         """The survey a reply is for: the one it references, else the latest in that chat."""
         candidates = [
             s
-            for s in self.store.active_surveys(message.sender)
+            for s in await self.store.aactive_surveys(message.sender)
             if s.chat == message.chat and s.accepts_replies(now, self.policy)
         ]
         for survey in candidates:
@@ -167,38 +190,46 @@ class Surveyor:
 
     async def _standing_command(
         self, message: InboundMessage, parsed: ParsedReply, now: float
-    ) -> bool:
-        """ "stop surveys" / "start surveys" with no survey running: honoured all the same."""
+    ) -> OutboundMessage | None:
+        """ "stop surveys" / "start surveys" with no survey running: honoured all the same.
+
+        Returns the confirmation to send, or None for a message that is no such command."""
         if "survey" not in message.text.lower() or not (parsed.opt_out or parsed.opt_in):
-            return False
+            return None
         chat = ChatRef(kind="dm", id=message.sender)
         if parsed.opt_out:
-            self._opt_out(message.sender, now, None)
+            await self._opt_out(message.sender, now, None)
             text = 'Understood: no more surveys. Write "start surveys" if you change your mind.'
         else:
-            self.store.opt_in(message.sender)
+            await self.store.aopt_in(message.sender)
             text = "Surveys are on. Thank you!"
-        await self._post(OutboundMessage(chat=chat, text=text))
-        return True
+        return OutboundMessage(chat=chat, text=text)
 
-    def _opt_out(self, person: str, now: float, current: Survey | None) -> None:
-        self.store.opt_out(person, now)
-        for other in self.store.active_surveys(person):
+    async def _opt_out(self, person: str, now: float, current: Survey | None) -> None:
+        await self.store.aopt_out(person, now)
+        for other in await self.store.aactive_surveys(person):
             if current is None or other.instruction_id != current.instruction_id:
                 other.state = SurveyState.OPTED_OUT
-                self.store.put_survey(other)
+                await self.store.aput_survey(other)
 
     # -- time ------------------------------------------------------------------------------
     async def tick(self) -> int:
         """Send due reminders and expire stale surveys; returns the reminders sent."""
         now = self.clock.now()
         sent = 0
-        for survey in self.store.active_surveys():
-            if survey.expire_if_due(now, self.policy):
-                self.store.put_survey(survey)
-            elif survey.reminder_due(now, self.policy) and not self.store.opted_out(survey.person):
-                text = survey.remind(now)
-                self.store.put_survey(survey)
+        async with self._turn:
+            surveys = await self.store.aactive_surveys()
+        for survey in surveys:
+            async with self._turn:
+                text = None
+                if survey.expire_if_due(now, self.policy):
+                    await self.store.aput_survey(survey)
+                elif survey.reminder_due(now, self.policy) and not await self.store.aopted_out(
+                    survey.person
+                ):
+                    text = survey.remind(now)
+                    await self.store.aput_survey(survey)
+            if text is not None:
                 await self._send(survey, text, suffix="reminder")
                 sent += 1
         return sent

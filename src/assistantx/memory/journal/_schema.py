@@ -1,12 +1,19 @@
-"""The journal's SQL schema; one version, created on first open.
+"""The journal's SQL schema, versioned by ``core.sqlite_store`` (store ``journal``).
 
-Columns added since are listed in ``ADDED_COLUMNS`` and added to older files on open (their
-default fills existing rows), so a journal written before keeps working.
+Version 1 is the schema below. Journals written before the versions table existed count as
+version 0: migration 1 creates what is missing, adds the columns listed in ``ADDED_COLUMNS``
+(their default fills existing rows) and checks the version those files kept in ``meta``, so
+a journal written before keeps working. A later change of the schema is a new migration.
 """
 
 from __future__ import annotations
 
-SCHEMA_VERSION = 1
+import sqlite3
+
+from assistantx.core.errors import JournalError
+from assistantx.core.sqlite_store import Schema, execute_script
+
+SCHEMA_VERSION = 1  # also kept in meta('schema'), where versions before the helper kept it
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS meta (
@@ -76,3 +83,19 @@ ADDED_COLUMNS: tuple[tuple[str, str, str], ...] = (
     ("instructions", "steps", "INTEGER NOT NULL DEFAULT 0"),
     ("instructions", "compacted", "INTEGER NOT NULL DEFAULT 0"),  # trace dropped (retention)
 )
+
+
+def _version_1(db: sqlite3.Connection) -> None:
+    execute_script(db, SCHEMA)
+    for table, column, definition in ADDED_COLUMNS:
+        present = {r[1] for r in db.execute(f"PRAGMA table_info({table})")}
+        if column not in present:
+            db.execute(f"ALTER TABLE {table} ADD COLUMN {column} {definition}")
+    row = db.execute("SELECT value FROM meta WHERE key='schema'").fetchone()
+    if row is None:
+        db.execute("INSERT INTO meta VALUES ('schema', ?)", (str(SCHEMA_VERSION),))
+    elif str(row[0]) != str(SCHEMA_VERSION):
+        raise JournalError(f"journal schema {row[0]}, this version reads {SCHEMA_VERSION}")
+
+
+JOURNAL_SCHEMA = Schema("journal", (_version_1,))

@@ -7,18 +7,18 @@ memory graph, the simulated world).
 
 Durability: WAL with ``synchronous=NORMAL`` — a committed transaction survives a crash of the
 process (``kill -9``); only an operating-system crash or power loss can lose the last
-transactions. Writes go through one writer thread with its own connection, which commits
-whatever is queued as one group (``_writer.JournalWriter``); they run in the order they were
-submitted, so the journal's order is the order of the events they record. The hot paths await
-their write (``arecord``, ``acheckpoint``, ``acreate_instruction``, ``arecord_outbound``) so the
-event loop serves others meanwhile and a caller continues only once its write is committed;
-the plain methods block until committed (rare operator and start-up writes). Reads use a
-second connection on the caller's thread; WAL lets them run beside the writer.
+transactions. Writes go through the file's one writer thread (``core.sqlite_store``), which
+commits whatever is queued as one group; they run in the order they were submitted, so the
+journal's order is the order of the events they record. Code on the event loop awaits its
+write (``arecord``, ``acheckpoint``, ``acreate_instruction``, ``arecord_outbound``, ``awrite``)
+so the loop serves others meanwhile and the caller continues only once its write is
+committed; the plain methods block their thread until committed (operator, start-up and CLI
+writes). Reads use a second connection on the caller's thread; WAL lets them run beside the
+writer, and they see every write whose call has returned.
 """
 
 from __future__ import annotations
 
-import asyncio
 import json
 import logging
 import sqlite3
@@ -32,8 +32,8 @@ from typing import Any, Literal, TypeVar
 from assistantx.core.errors import JournalError
 from assistantx.core.events import TraceEvent
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
-from assistantx.memory.journal._schema import ADDED_COLUMNS, SCHEMA, SCHEMA_VERSION
-from assistantx.memory.journal._writer import JournalWriter
+from assistantx.core.sqlite_store import SchemaError, SqliteStore, connect
+from assistantx.memory.journal._schema import JOURNAL_SCHEMA
 from assistantx.memory.short_term import ShortTermMemory
 
 logger = logging.getLogger(__name__)
@@ -96,46 +96,39 @@ class ChatSummary:
 class Journal:
     """One SQLite file; open it with ``Journal.open(path)`` and ``close()`` it at the end."""
 
-    def __init__(self, conn: sqlite3.Connection, path: Path) -> None:
-        self._conn = conn  # reads (and the schema); writes go through the writer's own
-        self.path = path
-        self.writer = JournalWriter(_connect(path))
+    def __init__(self, writer: SqliteStore, reader: sqlite3.Connection) -> None:
+        self.writer = writer  # every write, in one thread, committed in groups
+        self._conn = reader  # reads, on the caller's thread
+        self.path = writer.path
 
     @classmethod
     def open(cls, path: Path) -> Journal:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        conn = sqlite3.connect(path, isolation_level=None, check_same_thread=False)
-        conn.row_factory = sqlite3.Row
+        # synchronous=NORMAL: a commit survives kill -9; FULL would fsync every group.
         try:
-            conn.execute("PRAGMA journal_mode=WAL")
-            conn.execute("PRAGMA synchronous=NORMAL")
-            conn.execute("PRAGMA busy_timeout=5000")
-            conn.executescript(SCHEMA)
-            _add_missing_columns(conn)
-            row = conn.execute("SELECT value FROM meta WHERE key='schema'").fetchone()
-            if row is None:
-                conn.execute("INSERT INTO meta VALUES ('schema', ?)", (str(SCHEMA_VERSION),))
+            writer = SqliteStore.open(path, JOURNAL_SCHEMA, synchronous="NORMAL")
+        except (JournalError, SchemaError) as exc:  # written by a newer version
+            raise JournalError(f"{path}: {exc}") from exc
         except sqlite3.DatabaseError as exc:
-            conn.close()
             raise JournalError(f"{path}: not a usable journal ({exc})") from exc
-        if row is not None and int(row["value"]) != SCHEMA_VERSION:
-            conn.close()
-            raise JournalError(
-                f"{path}: journal schema {row['value']}, this version reads {SCHEMA_VERSION}"
-            )
-        return cls(conn, path)
+        try:
+            reader = connect(path, synchronous="NORMAL")
+        except sqlite3.DatabaseError as exc:
+            writer.close()
+            raise JournalError(f"{path}: not a usable journal ({exc})") from exc
+        return cls(writer, reader)
 
     def close(self) -> None:
-        self.writer.close()  # commits what is queued first
+        """Commits what is queued, then closes; a second call does nothing."""
+        self.writer.close()
         self._conn.close()
 
     def write(self, fn: Callable[[sqlite3.Connection], T]) -> T:
         """Run ``fn`` in the writer's transaction and wait until it is committed."""
-        return self.writer.submit(fn, now=True).result()
+        return self.writer.call(fn)
 
     async def awrite(self, fn: Callable[[sqlite3.Connection], T]) -> T:
         """Like ``write``, but the event loop serves others while the group commits."""
-        return await asyncio.wrap_future(self.writer.submit(fn))
+        return await self.writer.acall(fn)
 
     @contextmanager
     def transaction(self) -> Iterator[sqlite3.Connection]:
@@ -455,14 +448,6 @@ def _new_id(instruction_id: str) -> Iterator[None]:
 
 
 # -- writes: each builds its arguments on the caller's thread, then runs in the writer's -----
-def _connect(path: Path) -> sqlite3.Connection:
-    conn = sqlite3.connect(path, isolation_level=None, check_same_thread=False)
-    conn.row_factory = sqlite3.Row
-    conn.execute("PRAGMA synchronous=NORMAL")
-    conn.execute("PRAGMA busy_timeout=5000")
-    return conn
-
-
 def _insert_instruction(
     instruction_id: str, requester: str, text: str, created_at: float
 ) -> Callable[[sqlite3.Connection], int]:
@@ -691,13 +676,6 @@ def _instruction(row: sqlite3.Row) -> InstructionRecord:
         stm=ShortTermMemory.model_validate_json(stm) if stm else None,
         steps=int(row["steps"]),
     )
-
-
-def _add_missing_columns(conn: sqlite3.Connection) -> None:
-    for table, column, definition in ADDED_COLUMNS:
-        present = {r[1] for r in conn.execute(f"PRAGMA table_info({table})")}
-        if column not in present:
-            conn.execute(f"ALTER TABLE {table} ADD COLUMN {column} {definition}")
 
 
 def _message(row: sqlite3.Row) -> MessageRecord:

@@ -18,9 +18,7 @@ is not taken in again by the /sync poller (and vice versa), because ``accept`` k
 
 from __future__ import annotations
 
-import asyncio
 import sqlite3
-import threading
 import uuid
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -30,6 +28,7 @@ from typing import Protocol, TypeVar
 
 from assistantx.core.errors import MessengerError
 from assistantx.core.ports.messenger import InboundMessage
+from assistantx.core.sqlite_store import Schema, SchemaError, SqliteStore, StoreClosedError
 
 T = TypeVar("T")
 
@@ -159,37 +158,28 @@ CREATE TABLE IF NOT EXISTS sync_tokens (
     saved_at TEXT NOT NULL
 );
 """
+EVENT_SCHEMA = Schema("matrix_events", (_SCHEMA,))
 
 
 class SqliteEventStore:
-    """``EventStore`` in one SQLite file. Calls run in a worker thread, one at a time."""
+    """``EventStore`` in one SQLite file. Calls run on the store's own thread, in order, each
+    one transaction (``core.sqlite_store``); the event loop awaits them."""
 
     def __init__(self, path: Path | str) -> None:
         self.path = Path(path)
-        self._lock = threading.Lock()
         try:
-            self.path.parent.mkdir(parents=True, exist_ok=True)
-            self._db = sqlite3.connect(self.path, check_same_thread=False, isolation_level=None)
-            self._db.execute("PRAGMA journal_mode=WAL")
             # FULL: a commit is on disk before accept() returns, so an ack never loses events.
-            self._db.execute("PRAGMA synchronous=FULL")
-            self._db.execute("PRAGMA busy_timeout=5000")
-            self._db.executescript(_SCHEMA)
-        except sqlite3.Error as exc:
+            self._db = SqliteStore.open(self.path, EVENT_SCHEMA, synchronous="FULL")
+        except (sqlite3.Error, SchemaError) as exc:
             raise MessengerError(f"{self.path}: cannot open the event store: {exc}") from exc
-        self._closed = False
 
     async def _run(self, work: Callable[[sqlite3.Connection], T]) -> T:
-        def locked() -> T:
-            with self._lock:
-                if self._closed:
-                    raise MessengerError(f"{self.path}: the event store is closed")
-                try:
-                    return work(self._db)
-                except sqlite3.Error as exc:
-                    raise MessengerError(f"{self.path}: event store failed: {exc}") from exc
-
-        return await asyncio.to_thread(locked)
+        try:
+            return await self._db.acall(work)
+        except StoreClosedError as exc:
+            raise MessengerError(f"{self.path}: the event store is closed") from exc
+        except sqlite3.Error as exc:
+            raise MessengerError(f"{self.path}: event store failed: {exc}") from exc
 
     async def transaction_seen(self, txn_id: str) -> bool:
         def work(db: sqlite3.Connection) -> bool:
@@ -220,33 +210,29 @@ class SqliteEventStore:
             raise ValueError("sync_key and sync_token go together")
         now = datetime.now(UTC).isoformat()
 
+        rows = [(m, m.model_dump_json()) for m in messages]
+
         def work(db: sqlite3.Connection) -> list[InboundMessage]:
             fresh: list[InboundMessage] = []
-            db.execute("BEGIN IMMEDIATE")
-            try:
-                for message in messages:
-                    cursor = db.execute(
-                        "INSERT OR IGNORE INTO inbound_events"
-                        " (platform, event_id, message, accepted_at) VALUES (?, ?, ?, ?)",
-                        (message.platform, message.event_id, message.model_dump_json(), now),
-                    )
-                    if cursor.rowcount == 1:
-                        fresh.append(message)
-                if txn_id is not None:
-                    db.execute(
-                        "INSERT OR IGNORE INTO transactions (txn_id, accepted_at) VALUES (?, ?)",
-                        (txn_id, now),
-                    )
-                if sync_key is not None:
-                    db.execute(
-                        "INSERT OR REPLACE INTO sync_tokens (sync_key, token, saved_at)"
-                        " VALUES (?, ?, ?)",
-                        (sync_key, sync_token, now),
-                    )
-                db.execute("COMMIT")
-            except BaseException:
-                db.execute("ROLLBACK")
-                raise
+            for message, body in rows:
+                cursor = db.execute(
+                    "INSERT OR IGNORE INTO inbound_events"
+                    " (platform, event_id, message, accepted_at) VALUES (?, ?, ?, ?)",
+                    (message.platform, message.event_id, body, now),
+                )
+                if cursor.rowcount == 1:
+                    fresh.append(message)
+            if txn_id is not None:
+                db.execute(
+                    "INSERT OR IGNORE INTO transactions (txn_id, accepted_at) VALUES (?, ?)",
+                    (txn_id, now),
+                )
+            if sync_key is not None:
+                db.execute(
+                    "INSERT OR REPLACE INTO sync_tokens (sync_key, token, saved_at)"
+                    " VALUES (?, ?, ?)",
+                    (sync_key, sync_token, now),
+                )
             return fresh
 
         return await self._run(work)
@@ -283,21 +269,15 @@ class SqliteEventStore:
 
         def work(db: sqlite3.Connection) -> list[str]:
             fresh: list[str] = []
-            db.execute("BEGIN IMMEDIATE")
-            try:
-                for event_id in event_ids:
-                    cursor = db.execute(
-                        "INSERT OR IGNORE INTO inbound_events"
-                        " (platform, event_id, message, accepted_at, handled)"
-                        " VALUES (?, ?, '{}', ?, 1)",
-                        (platform, event_id, now),
-                    )
-                    if cursor.rowcount == 1:
-                        fresh.append(event_id)
-                db.execute("COMMIT")
-            except BaseException:
-                db.execute("ROLLBACK")
-                raise
+            for event_id in event_ids:
+                cursor = db.execute(
+                    "INSERT OR IGNORE INTO inbound_events"
+                    " (platform, event_id, message, accepted_at, handled)"
+                    " VALUES (?, ?, '{}', ?, 1)",
+                    (platform, event_id, now),
+                )
+                if cursor.rowcount == 1:
+                    fresh.append(event_id)
             return fresh
 
         return await self._run(work)
@@ -329,29 +309,22 @@ class SqliteEventStore:
         now = datetime.now(UTC).isoformat()
 
         def work(db: sqlite3.Connection) -> OutboundPart:
-            db.execute("BEGIN IMMEDIATE")
-            try:
-                row = db.execute(
-                    "SELECT digest, room_id, closed, txn_id, event_id FROM outbound_parts"
-                    " WHERE key = ? AND part = ?",
-                    (key, part),
-                ).fetchone()
-                if row is not None and (row[0], row[1], row[2]) == (digest, room_id, 0):
-                    db.execute("COMMIT")
-                    return OutboundPart(txn_id=str(row[3]), event_id=row[4])
-                # New, or the key now names another message (a reused instruction id):
-                # a fresh transaction id, so the homeserver cannot take it for a repeat.
-                txn_id = f"ax{uuid.uuid4().hex}"
-                db.execute(
-                    "INSERT OR REPLACE INTO outbound_parts (key, part, digest, room_id,"
-                    " instruction_id, closed, txn_id, event_id, question_id, saved_at)"
-                    " VALUES (?, ?, ?, ?, ?, 0, ?, NULL, NULL, ?)",
-                    (key, part, digest, room_id, instruction_id, txn_id, now),
-                )
-                db.execute("COMMIT")
-            except BaseException:
-                db.execute("ROLLBACK")
-                raise
+            row = db.execute(
+                "SELECT digest, room_id, closed, txn_id, event_id FROM outbound_parts"
+                " WHERE key = ? AND part = ?",
+                (key, part),
+            ).fetchone()
+            if row is not None and (row[0], row[1], row[2]) == (digest, room_id, 0):
+                return OutboundPart(txn_id=str(row[3]), event_id=row[4])
+            # New, or the key now names another message (a reused instruction id):
+            # a fresh transaction id, so the homeserver cannot take it for a repeat.
+            txn_id = f"ax{uuid.uuid4().hex}"
+            db.execute(
+                "INSERT OR REPLACE INTO outbound_parts (key, part, digest, room_id,"
+                " instruction_id, closed, txn_id, event_id, question_id, saved_at)"
+                " VALUES (?, ?, ?, ?, ?, 0, ?, NULL, NULL, ?)",
+                (key, part, digest, room_id, instruction_id, txn_id, now),
+            )
             return OutboundPart(txn_id=txn_id, event_id=None)
 
         return await self._run(work)
@@ -402,10 +375,5 @@ class SqliteEventStore:
         return await self._run(work)
 
     async def close(self) -> None:
-        def work() -> None:
-            with self._lock:
-                if not self._closed:
-                    self._closed = True
-                    self._db.close()
-
-        await asyncio.to_thread(work)
+        """Commits what is queued, then closes; a second call does nothing."""
+        await self._db.aclose()
