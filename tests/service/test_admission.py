@@ -46,8 +46,8 @@ async def test_admitted_instructions_start_in_order_and_a_withdrawn_one_never(
     for record in records:
         admission.admit(record)  # nothing starts before the starter runs
     assert started == [] and admission.waiting == 4
-    assert admission.withdraw("ins-2") is True
-    assert admission.withdraw("ins-9") is False
+    assert await admission.withdraw("ins-2") is True
+    assert await admission.withdraw("ins-9") is False
     await sim.locker.start()
     await assistant.start()
     admission.start()

@@ -50,12 +50,12 @@ class Admission:
         self._waiting.add(record.id)
         self._queue.put_nowait(record)
 
-    def withdraw(self, instruction_id: str) -> bool:
+    async def withdraw(self, instruction_id: str) -> bool:
         """Cancel an instruction that was admitted and not started yet."""
         if instruction_id not in self._waiting:
             return False
         self._waiting.discard(instruction_id)
-        self._journal.set_status(instruction_id, "cancelled")
+        await self._journal.aset_status(instruction_id, "cancelled")
         return True
 
     async def _start_admitted(self) -> None:
@@ -72,4 +72,4 @@ class Admission:
                 )
             except Exception:
                 logger.exception("could not start instruction %s", record.id)
-                self._journal.set_status(record.id, "failed")
+                await self._journal.aset_status(record.id, "failed")

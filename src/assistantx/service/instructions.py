@@ -72,20 +72,20 @@ async def get_instruction(
 
 @router.post("/{instruction_id}/cancel", response_model=CancelOut)
 async def cancel(instruction_id: str, runtime: Runtime, caller: Caller) -> CancelOut:
-    return _cancel(instruction_id, runtime, caller)
+    return await _cancel(instruction_id, runtime, caller)
 
 
 @router.delete("/{instruction_id}", response_model=CancelOut)
 async def delete(instruction_id: str, runtime: Runtime, caller: Caller) -> CancelOut:
     """Same as POST .../cancel: instructions are never erased from the journal."""
-    return _cancel(instruction_id, runtime, caller)
+    return await _cancel(instruction_id, runtime, caller)
 
 
-def _cancel(instruction_id: str, runtime: Runtime, caller: Caller) -> CancelOut:
+async def _cancel(instruction_id: str, runtime: Runtime, caller: Caller) -> CancelOut:
     record = runtime.instruction(instruction_id)
     if not caller.may_act_as(record.requester):
         raise ForbiddenError("this instruction belongs to someone else")
-    cancelled = runtime.cancel(instruction_id)
+    cancelled = await runtime.cancel(instruction_id)
     return CancelOut(
         id=instruction_id,
         cancelled=cancelled,

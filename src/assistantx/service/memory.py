@@ -82,26 +82,26 @@ async def patch_person(
         update = AvailabilityUpdate(
             person=person_id, available=body.available, evidence=body.evidence
         )
-        _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
+        await _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
     if location is not None:
         _move(ltm, person_id, location)
-    runtime.journal.put_memory_snapshot(LTM_STATE, ltm.snapshot())
+    await runtime.journal.aput_memory_snapshot(LTM_STATE, ltm.snapshot())
     return _person(ltm, person_id)
 
 
 @router.put("/people/{person}/items/{item_type}", response_model=PersonOut)
 async def put_item(person: str, item_type: str, runtime: Runtime, caller: Caller) -> PersonOut:
     """Memory now believes ``person`` owns an item of ``item_type``. Operator only."""
-    return _ownership(person, item_type, True, runtime, caller)
+    return await _ownership(person, item_type, True, runtime, caller)
 
 
 @router.delete("/people/{person}/items/{item_type}", response_model=PersonOut)
 async def delete_item(person: str, item_type: str, runtime: Runtime, caller: Caller) -> PersonOut:
     """Memory now believes ``person`` owns no item of ``item_type``. Operator only."""
-    return _ownership(person, item_type, False, runtime, caller)
+    return await _ownership(person, item_type, False, runtime, caller)
 
 
-def _ownership(
+async def _ownership(
     person: str, item_type: str, owns: bool, runtime: ServiceRuntime, caller: Caller
 ) -> PersonOut:
     caller.require_operator()
@@ -111,13 +111,13 @@ def _ownership(
     update = OwnershipUpdate(
         person=person_id, item_type=type_id, owns=owns, evidence="set by the operator"
     )
-    _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
-    runtime.journal.put_memory_snapshot(LTM_STATE, ltm.snapshot())
+    await _record(runtime, ltm.apply(update, runtime.clock.now()).model_dump(mode="json"))
+    await runtime.journal.aput_memory_snapshot(LTM_STATE, ltm.snapshot())
     return _person(ltm, person_id)
 
 
-def _record(runtime: ServiceRuntime, applied: dict[str, Any]) -> None:
-    runtime.journal.record_memory_update(runtime.clock.now(), None, applied)
+async def _record(runtime: ServiceRuntime, applied: dict[str, Any]) -> None:
+    await runtime.journal.arecord_memory_update(runtime.clock.now(), None, applied)
 
 
 def _move(ltm: LongTermMemory, person_id: str, location_id: str) -> None:

@@ -269,7 +269,7 @@ class ServiceRuntime:
             self.resumed.append(record.id)
             logger.info("resumed instruction %s", record.id)
             if record.cancel_requested:
-                self.cancel(record.id)
+                await self.cancel(record.id)
 
     async def _stop(self) -> None:
         """Shut down without ending running instructions: they resume on the next start."""
@@ -306,10 +306,10 @@ class ServiceRuntime:
             raise NotFoundError(f"no instruction {instruction_id!r}")
         return record
 
-    def cancel(self, instruction_id: str) -> bool:
+    async def cancel(self, instruction_id: str) -> bool:
         """Ask a running instruction to stop; False when it had already ended."""
-        self.journal.request_cancel(instruction_id)
-        if self.admission.withdraw(instruction_id):
+        await self.journal.arequest_cancel(instruction_id)
+        if await self.admission.withdraw(instruction_id):
             return True
         if instruction_id not in self.assistant.running:
             return False

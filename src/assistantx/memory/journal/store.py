@@ -191,22 +191,17 @@ class Journal:
         return await self.awrite(_record(event, stm, status, states, memory_updates))
 
     def set_status(self, instruction_id: str, status: Status) -> None:
-        now = time.time()
-        self.write(
-            lambda db: db.execute(
-                "UPDATE instructions SET status=?, updated_at=? WHERE id=?",
-                (status, now, instruction_id),
-            )
-        )
+        self.write(_set_status(instruction_id, status, time.time()))
+
+    async def aset_status(self, instruction_id: str, status: Status) -> None:
+        """``set_status``, awaited: the event loop runs on while the writer commits."""
+        await self.awrite(_set_status(instruction_id, status, time.time()))
 
     def request_cancel(self, instruction_id: str) -> None:
-        now = time.time()
-        self.write(
-            lambda db: db.execute(
-                "UPDATE instructions SET cancel_requested=1, updated_at=? WHERE id=?",
-                (now, instruction_id),
-            )
-        )
+        self.write(_request_cancel(instruction_id, time.time()))
+
+    async def arequest_cancel(self, instruction_id: str) -> None:
+        await self.awrite(_request_cancel(instruction_id, time.time()))
 
     def instruction(self, instruction_id: str) -> InstructionRecord | None:
         row = self._conn.execute(
@@ -336,31 +331,11 @@ class Journal:
 
     def record_inbound(self, message: InboundMessage) -> MessageRecord | None:
         """Journal an inbound message; None when its event id was seen before (a duplicate)."""
-        event_id = f"{message.platform}:{message.event_id}"
-        args = (
-            message.chat.kind,
-            message.chat.id,
-            message.sender,
-            message.text,
-            message.time.timestamp(),
-            message.in_reply_to,
-            event_id,
-            message.model_dump_json(),
-        )
+        return self.write(_record_inbound(message))
 
-        def insert(db: sqlite3.Connection) -> MessageRecord | None:
-            try:
-                cur = db.execute(
-                    "INSERT INTO messages (direction, chat_kind, chat_id, sender, text, time,"
-                    " in_reply_to, event_id, status, body)"
-                    " VALUES ('in', ?, ?, ?, ?, ?, ?, ?, 'received', ?)",
-                    args,
-                )
-            except sqlite3.IntegrityError:
-                return None
-            return _message_by_seq(db, int(cur.lastrowid or 0))
-
-        return self.write(insert)
+    async def arecord_inbound(self, message: InboundMessage) -> MessageRecord | None:
+        """``record_inbound``, awaited: the event loop runs on while the writer commits."""
+        return await self.awrite(_record_inbound(message))
 
     def messages_of(self, instruction_id: str) -> list[MessageRecord]:
         """The outbound messages of one instruction and the inbound replies to its questions."""
@@ -405,6 +380,12 @@ class Journal:
     ) -> None:
         text = json.dumps(body)
         self.write(lambda db: _insert_memory_update(db, time_s, instruction_id, text))
+
+    async def arecord_memory_update(
+        self, time_s: float, instruction_id: str | None, body: dict[str, Any]
+    ) -> None:
+        text = json.dumps(body)
+        await self.awrite(lambda db: _insert_memory_update(db, time_s, instruction_id, text))
 
     def memory_updates(self, limit: int = 1000) -> list[dict[str, Any]]:
         rows = self._conn.execute(
@@ -692,4 +673,48 @@ def _message(row: sqlite3.Row) -> MessageRecord:
         status=row["status"],
         message_id=row["message_id"],
         body=json.loads(row["body"]),
+    )
+
+
+def _record_inbound(
+    message: InboundMessage,
+) -> Callable[[sqlite3.Connection], MessageRecord | None]:
+    event_id = f"{message.platform}:{message.event_id}"
+    args = (
+        message.chat.kind,
+        message.chat.id,
+        message.sender,
+        message.text,
+        message.time.timestamp(),
+        message.in_reply_to,
+        event_id,
+        message.model_dump_json(),
+    )
+
+    def insert(db: sqlite3.Connection) -> MessageRecord | None:
+        try:
+            cur = db.execute(
+                "INSERT INTO messages (direction, chat_kind, chat_id, sender, text, time,"
+                " in_reply_to, event_id, status, body)"
+                " VALUES ('in', ?, ?, ?, ?, ?, ?, ?, 'received', ?)",
+                args,
+            )
+        except sqlite3.IntegrityError:
+            return None
+        return _message_by_seq(db, int(cur.lastrowid or 0))
+
+    return insert
+
+
+def _set_status(
+    instruction_id: str, status: Status, now: float
+) -> Callable[[sqlite3.Connection], Any]:
+    return lambda db: db.execute(
+        "UPDATE instructions SET status=?, updated_at=? WHERE id=?", (status, now, instruction_id)
+    )
+
+
+def _request_cancel(instruction_id: str, now: float) -> Callable[[sqlite3.Connection], Any]:
+    return lambda db: db.execute(
+        "UPDATE instructions SET cancel_requested=1, updated_at=? WHERE id=?", (now, instruction_id)
     )
