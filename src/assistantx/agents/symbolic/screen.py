@@ -371,7 +371,7 @@ class RequestScreen:
         return None
 
     def _decline_service(self, piece: Piece, word: str, *, product: bool = False) -> Finding:
-        what = f"get you {word}" if product else word
+        what = f"get you any {word}" if product else word  # "any": mass and count nouns alike
         return Finding(
             "unsupported",
             piece,
