@@ -2,26 +2,11 @@
 
 from __future__ import annotations
 
-from datetime import UTC, datetime
-
 from starlette.requests import Request
 
 
 class BodyTooLargeError(Exception):
     """The body is longer than the endpoint accepts (answered with 413)."""
-
-
-class MalformedBodyError(ValueError):
-    """An authenticated body that is not the shape the platform documents (answered with 400,
-    so the sender sees its mistake; a 500 would only make it retry the same body)."""
-
-
-def timestamp_utc(seconds: float) -> datetime:
-    """A platform's POSIX timestamp as a datetime; MalformedBodyError when out of range."""
-    try:
-        return datetime.fromtimestamp(seconds, tz=UTC)
-    except (OverflowError, OSError, ValueError) as exc:
-        raise MalformedBodyError(f"timestamp {seconds!r} is out of range") from exc
 
 
 async def read_capped_body(request: Request, limit_bytes: int) -> bytes:
