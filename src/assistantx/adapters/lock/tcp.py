@@ -49,10 +49,10 @@ class TcpLocker(Locker):
         )
         self._issuer: CodeIssuer | None = None
 
-    async def start(self) -> None:
+    async def _start(self) -> None:
         await self.client.start()
 
-    async def stop(self) -> None:
+    async def _stop(self) -> None:
         await self.client.stop()
 
     @property

@@ -39,6 +39,7 @@ from assistantx.core.errors import (
     LockProtocolError,
     LockTimeoutError,
 )
+from assistantx.core.lifecycle import Component
 from assistantx.core.ports.lock import LockEvent
 
 logger = logging.getLogger(__name__)
@@ -62,7 +63,10 @@ class Backoff:
         return base * (1.0 - self.jitter * rng.random())
 
 
-class LockClient:
+class LockClient(Component):
+    """One supervised connection to the lock; ``start`` waits for the first one (a started
+    client runs its supervisor as a tracked task)."""
+
     def __init__(
         self,
         host: str,
@@ -76,6 +80,7 @@ class LockClient:
         on_event: EventCallback | None = None,
         rng: random.Random | None = None,
     ) -> None:
+        super().__init__()
         self.host = host
         self.port = port
         self.expected_lock_id = lock_id
@@ -89,7 +94,6 @@ class LockClient:
         self._pending: dict[int, tuple[asyncio.Future[dict[str, Any]], _ResultHook | None]] = {}
         self._channel: SecureChannel | None = None
         self._ready = asyncio.Event()
-        self._supervisor: asyncio.Task[None] | None = None
         self._first_outcome: asyncio.Future[None] | None = None
         self._fatal: LockError | None = None
         # What the client knows of the lock and its event stream.
@@ -106,33 +110,22 @@ class LockClient:
 
     # -- lifecycle ----------------------------------------------------------------------
 
-    async def start(self) -> None:
-        """Connect and subscribe; raises if the first connection fails within connect_s."""
-        if self._supervisor is not None:
-            return
+    async def _start(self) -> None:
+        """Connect and subscribe; raises if the first connection fails within connect_s
+        (and the component stops again, its supervisor cancelled)."""
         self._fatal = None
         self._first_outcome = asyncio.get_running_loop().create_future()
-        self._supervisor = asyncio.create_task(self._supervise(), name="lock-client")
+        self.create_task(self._supervise(), name="lock-client")
         try:
             async with asyncio.timeout(self.timeouts.connect_s):
                 await asyncio.shield(self._first_outcome)
         except TimeoutError as exc:
-            await self.stop()
             raise LockConnectionError(
                 f"cannot reach the lock at {self.host}:{self.port} within "
                 f"{self.timeouts.connect_s} s"
             ) from exc
-        except LockError:
-            await self.stop()
-            raise
 
-    async def stop(self) -> None:
-        supervisor, self._supervisor = self._supervisor, None
-        if supervisor is None:
-            return
-        supervisor.cancel()
-        with contextlib.suppress(asyncio.CancelledError):
-            await supervisor
+    async def _stop(self) -> None:
         self._ready.clear()
 
     async def drop_connection(self) -> None:
@@ -147,7 +140,7 @@ class LockClient:
         """Send one command and return its result, or raise the matching ``LockError``."""
         if self._fatal is not None:
             raise self._fatal
-        if self._supervisor is None:
+        if not self.started:
             raise LockConnectionError("the lock client is not started")
         try:
             async with asyncio.timeout(self.timeouts.request_s):
