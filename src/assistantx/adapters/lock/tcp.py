@@ -9,10 +9,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.adapters.lock.protocol.client import Backoff, LockClient
+from assistantx.adapters.lock.protocol.client import LockClient
 from assistantx.adapters.lock.protocol.codes import CodeIssuer
 from assistantx.adapters.lock.protocol.keys import LockKeys
 from assistantx.adapters.lock.protocol.link import LinkTimeouts
+from assistantx.core.backoff import Backoff
 from assistantx.core.clock import Clock, WallClock
 from assistantx.core.errors import LockError, LockProtocolError
 from assistantx.core.ports.lock import Locker, LockEvent, LockStatus, Purpose, QRCode

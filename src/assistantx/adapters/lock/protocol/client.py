@@ -3,9 +3,9 @@
 ``LockClient`` keeps one authenticated connection to the lock. A supervisor task connects,
 subscribes to events from the last sequence it saw, pings every ``keepalive_s`` and, when
 the link drops (or a ping goes unanswered: a half-open connection), reconnects with
-exponential backoff and jitter. Events are delivered once each, in order: the lock replays
-what the client missed, and anything at or below the last seen sequence is dropped as a
-duplicate. A changed ``epoch`` (the lock restarted) starts the count over.
+exponential backoff and full jitter (``core.backoff``). Events are delivered once each, in
+order: the lock replays what the client missed, and anything at or below the last seen
+sequence is dropped as a duplicate. A changed ``epoch`` (the lock restarted) starts the count over.
 
 Requests are not retried across a reconnect: ``scan`` or ``close`` are not idempotent, so a
 request whose connection dies fails with ``LockConnectionError`` and the caller decides.
@@ -20,7 +20,6 @@ import itertools
 import logging
 import random
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 from assistantx.adapters.lock.protocol.frames import DEFAULT_MAX_FRAME
@@ -30,6 +29,7 @@ from assistantx.adapters.lock.protocol.link import (
     client_handshake,
     close_writer,
 )
+from assistantx.core.backoff import Backoff
 from assistantx.core.errors import (
     InvalidCodeError,
     LockAuthError,
@@ -46,21 +46,6 @@ logger = logging.getLogger(__name__)
 
 EventCallback = Callable[[LockEvent], None]
 _ResultHook = Callable[[dict[str, Any]], None]
-
-
-@dataclass(frozen=True)
-class Backoff:
-    """Reconnect delays: ``initial_s * factor**attempt``, capped, times a jitter in
-    [1 - jitter, 1] so many clients do not reconnect in step."""
-
-    initial_s: float = 0.1
-    max_s: float = 10.0
-    factor: float = 2.0
-    jitter: float = 0.5
-
-    def delay(self, attempt: int, rng: random.Random) -> float:
-        base = min(self.max_s, self.initial_s * self.factor ** min(attempt, 64))
-        return base * (1.0 - self.jitter * rng.random())
 
 
 class LockClient(Component):
@@ -188,7 +173,7 @@ class LockClient(Component):
                 if not failing:
                     logger.warning("lock %s:%s unreachable: %s", self.host, self.port, exc)
                     failing = True
-                await asyncio.sleep(self.backoff.delay(attempt, self._rng))
+                await asyncio.sleep(self.backoff.delay_s(attempt, self._rng))
                 attempt += 1
                 continue
             if self._fatal is not None:
@@ -210,7 +195,7 @@ class LockClient(Component):
                 self._channel = None
                 self._fail_pending(LockConnectionError("the connection to the lock was lost"))
                 await channel.close()
-            await asyncio.sleep(self.backoff.delay(0, self._rng))
+            await asyncio.sleep(self.backoff.delay_s(0, self._rng))
 
     async def _connect(self) -> SecureChannel:
         try:

@@ -26,6 +26,7 @@ from typing import Any
 from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
 from assistantx.adapters.messenger.matrix.normalize import PLATFORM
+from assistantx.core.backoff import Backoff
 from assistantx.core.lifecycle import Component
 
 logger = logging.getLogger(__name__)
@@ -64,6 +65,7 @@ class SyncPoller(Component):
         timeline_limit: int = 50,
         backoff_max_s: float = 60.0,
         own_user_id: str | None = None,
+        rng: random.Random | None = None,
     ) -> None:
         super().__init__()
         self._client = client
@@ -72,7 +74,8 @@ class SyncPoller(Component):
         self._timeout_ms = int(timeout_s * 1000)
         self._max_backfill_pages = max_backfill_pages
         self._filter = _sync_filter(timeline_limit)
-        self._backoff_max_s = backoff_max_s
+        self._backoff = Backoff(initial_s=1.0, max_s=backoff_max_s)
+        self._rng = rng or random.Random()
         self._own_user_id = own_user_id
         self.ready = asyncio.Event()
 
@@ -89,9 +92,8 @@ class SyncPoller(Component):
             except Exception as exc:
                 if failures == 0:
                     logger.warning("Matrix /sync failed (%s); retrying with backoff", exc)
+                await asyncio.sleep(self._backoff.delay_s(failures, self._rng))
                 failures += 1
-                ceiling = min(self._backoff_max_s, 0.5 * 2 ** min(failures, 10))
-                await asyncio.sleep(random.uniform(ceiling / 2, ceiling))
                 continue
             if failures:
                 logger.info("Matrix /sync recovered after %d failed attempts", failures)
