@@ -11,8 +11,8 @@ import pytest
 from pydantic import SecretStr
 
 from assistantx.adapters.model import ChatRequest, Message, OpenAICompatibleModel, RetryPolicy
-from assistantx.adapters.model.base import LLMCallFailed
 from assistantx.core.errors import LLMError
+from assistantx.core.ports.model import LLMCallFailed
 from assistantx.core.settings import Settings
 from fakes.scripted_llm import (
     Reply,

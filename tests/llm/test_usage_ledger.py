@@ -151,7 +151,7 @@ async def test_metered_model_records_every_call(scripted_llm: ScriptedLLM) -> No
 
 async def test_a_failed_call_is_recorded_with_its_cost() -> None:
     from assistantx.adapters.model import ChatModel, ChatRequest, Message, MeteredModel
-    from assistantx.adapters.model.base import LLMCallFailed, Usage
+    from assistantx.core.ports.model import LLMCallFailed, Usage
 
     class _TimesOut(ChatModel):
         async def _complete(self, request: ChatRequest) -> ChatResponse:

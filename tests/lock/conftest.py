@@ -8,10 +8,10 @@ from typing import Any
 import pytest
 
 from assistantx.adapters.lock.protocol import CodeIssuer, LockController, LockKeys
-from assistantx.adapters.lock.protocol.client import Backoff
 from assistantx.adapters.lock.protocol.link import LinkTimeouts
 from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
+from assistantx.core.backoff import Backoff
 from assistantx.core.clock import SimClock
 
 LOCK_ID = "locker-1"

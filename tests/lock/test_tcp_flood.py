@@ -10,10 +10,10 @@ from collections.abc import AsyncIterator
 import pytest
 
 from assistantx.adapters.lock.protocol import LockController, LockKeys
-from assistantx.adapters.lock.protocol.client import Backoff
 from assistantx.adapters.lock.protocol.link import LinkTimeouts, close_writer
 from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
+from assistantx.core.backoff import Backoff
 from assistantx.core.clock import SimClock
 
 from .conftest import LOCK_ID, QUICK_RETRY
@@ -91,8 +91,8 @@ async def test_after_a_lock_restart_under_a_flood_the_assistant_gets_back_in() -
     clock = SimClock(start=1_000.0)
     first = LockServer(LockController(LOCK_ID, keys.codes, clock), keys.link_key, timeouts=PATIENT)
     _, port = await first.start()
-    # The client retries after 0.5 s, so the flood is surely there before it comes back.
-    patient_retry = Backoff(initial_s=0.5, max_s=1.0, jitter=0.0)
+    # The client retries after 0.5 s (at least), so the flood is surely there before it comes back.
+    patient_retry = Backoff(initial_s=0.5, max_s=1.0, min_s=0.5)
     async with _locker(first, keys, clock, patient_retry) as locker:
         assert (await locker.status()).door == "closed"
         await first.stop()

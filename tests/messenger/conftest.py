@@ -15,9 +15,14 @@ import uvicorn
 from fastapi import APIRouter, FastAPI
 
 from assistantx.adapters.messenger.matrix import SqliteEventStore
+from assistantx.adapters.messenger.matrix.appservice import PUSH_PATH_PREFIX, push_too_large_error
 from assistantx.core.ports.messenger import InboundMessage
+from assistantx.service.body_limit import BodyLimit, PathLimit
 
 ServeRouters = Callable[..., contextlib.AbstractAsyncContextManager[str]]
+
+PUSH_BODY_LIMIT = PathLimit(PUSH_PATH_PREFIX, 4096, push_too_large_error)
+"""The routers are served behind the service's body limit, with a small push limit for tests."""
 
 
 def _free_port() -> int:
@@ -59,6 +64,7 @@ def serve_routers() -> ServeRouters:
         app = FastAPI()
         for router in routers:
             app.include_router(router)
+        app.add_middleware(BodyLimit, max_bytes=64 * 1024, paths=(PUSH_BODY_LIMIT,))
         async with serve_app(app) as url:
             yield url
 

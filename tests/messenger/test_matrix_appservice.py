@@ -45,9 +45,7 @@ def text_event(event_id: str, body: str, sender: str = "@lee:office.test") -> di
 @pytest.fixture
 def router(store: SqliteEventStore, inbox: asyncio.Queue[InboundMessage]) -> Any:
     ingestor = EventIngestor(store, EventNormalizer(CONFIG, {}), inbox.put)
-    return create_appservice_router(
-        hs_token=SecretStr(HS_TOKEN), ingestor=ingestor, max_body_bytes=4096
-    )
+    return create_appservice_router(hs_token=SecretStr(HS_TOKEN), ingestor=ingestor)
 
 
 async def test_transactions_are_acknowledged_and_deduplicated(
@@ -178,7 +176,8 @@ async def test_matrix_transactions_have_their_own_size_limit_in_the_service(
     limit and a Matrix error body, which the homeserver understands."""
     from fastapi import FastAPI
 
-    from assistantx.service.app import OWN_BODY_LIMITS, BodyLimit
+    from assistantx.service.app import PATH_BODY_LIMITS
+    from assistantx.service.body_limit import BodyLimit
     from messenger.conftest import serve_app
 
     ingestor = EventIngestor(store, EventNormalizer(CONFIG, {}), inbox.put)
@@ -189,7 +188,7 @@ async def test_matrix_transactions_have_their_own_size_limit_in_the_service(
     async def echo() -> dict[str, str]:
         return {}
 
-    app.add_middleware(BodyLimit, max_bytes=64 * 1024, own_limits=OWN_BODY_LIMITS)
+    app.add_middleware(BodyLimit, max_bytes=64 * 1024, paths=PATH_BODY_LIMITS)
     events = [text_event(f"$e{n}", "x" * 1000) for n in range(100)]  # ~120 KiB
     huge = b'{"events": [' + b" " * (17 * 1024 * 1024) + b"]}"
     async with serve_app(app) as url, httpx.AsyncClient(base_url=url, timeout=30) as client:
@@ -202,3 +201,24 @@ async def test_matrix_transactions_have_their_own_size_limit_in_the_service(
     assert inbox.qsize() == 100
     assert (too_big.status_code, too_big.json()["errcode"]) == (413, "M_TOO_LARGE")
     assert other.status_code == 413 and other.json()["error"] == "payload_too_large"
+
+
+async def test_a_streamed_push_over_the_limit_gets_a_matrix_413(
+    serve_routers: ServeRouters,
+    router: Any,
+    inbox: asyncio.Queue[InboundMessage],
+    store: SqliteEventStore,
+) -> None:
+    """Without a Content-Length (chunked) the body limit counts what arrives."""
+
+    async def chunks() -> Any:
+        yield b'{"events": ['
+        for _ in range(10):
+            yield b" " * 1000
+        yield b"]}"
+
+    async with serve_routers(router) as url, httpx.AsyncClient(base_url=url) as client:
+        big = await client.put("/_matrix/app/v1/transactions/8", content=chunks(), headers=AUTH)
+    assert (big.status_code, big.json()["errcode"]) == (413, "M_TOO_LARGE")
+    assert "4096" in big.json()["error"]
+    assert not await store.transaction_seen("8")

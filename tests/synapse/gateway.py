@@ -14,6 +14,9 @@ from fastapi import APIRouter, FastAPI
 from starlette.responses import JSONResponse
 from starlette.types import Receive, Scope, Send
 
+from assistantx.service.app import PATH_BODY_LIMITS
+from assistantx.service.body_limit import BodyLimit
+
 logger = logging.getLogger(__name__)
 
 
@@ -26,6 +29,8 @@ class AppserviceGateway:
     def mount(self, router: APIRouter) -> None:
         app = FastAPI()
         app.include_router(router)
+        # Behind the body limit as the service mounts it (service.app).
+        app.add_middleware(BodyLimit, max_bytes=64 * 1024, paths=PATH_BODY_LIMITS)
         self._app = app
         self._down = False
 

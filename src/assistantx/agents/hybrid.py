@@ -32,13 +32,13 @@ from assistantx.adapters.model import (
     Message,
     structured_call,
 )
-from assistantx.adapters.model.base import LLMCallFailed
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.agents.llm.agents import SharedModel, agent_call, model_from_settings, schema_text
 from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
 from assistantx.core.errors import GroundingError, ModelBehaviorError
 from assistantx.core.office import Office
+from assistantx.core.ports.model import LLMCallFailed
 from assistantx.core.settings import Settings
 from assistantx.core.task_schema import PERSON_KINDS, SHAPE_KIND, TaskKind
 from assistantx.core.trace import Percept

@@ -12,8 +12,12 @@ from pathlib import Path
 from fastapi import FastAPI
 from fastapi.responses import FileResponse
 from fastapi.staticfiles import StaticFiles
-from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
+from assistantx.adapters.messenger.matrix.appservice import (
+    MAX_PUSH_BODY_BYTES,
+    PUSH_PATH_PREFIX,
+    push_too_large_error,
+)
 from assistantx.core.settings import Settings
 from assistantx.service import (
     dashboard,
@@ -26,8 +30,9 @@ from assistantx.service import (
     metrics,
     reports,
 )
+from assistantx.service.body_limit import BodyLimit, PathLimit
 from assistantx.service.datalock import DataDirLock
-from assistantx.service.errors import error_body, install_error_handlers
+from assistantx.service.errors import install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
 
 logger = logging.getLogger(__name__)
@@ -35,74 +40,9 @@ logger = logging.getLogger(__name__)
 STATIC_DIR = Path(__file__).resolve().parents[1] / "static"
 
 
-OWN_BODY_LIMITS = ("/_matrix/app/",)
-"""Routes that cap their bodies themselves, at their protocol's size and in its error format
-(a Matrix transaction may hold 100 events of 64 KiB; a 413 the homeserver cannot read would
-make it retry the transaction for ever)."""
-
-
-class BodyLimit:
-    """Answers 413 when a request body exceeds ``max_bytes`` (declared or streamed), except
-    on the paths under ``own_limits``."""
-
-    def __init__(self, app: ASGIApp, max_bytes: int, own_limits: tuple[str, ...] = ()) -> None:
-        self.app = app
-        self.max_bytes = max_bytes
-        self.own_limits = own_limits
-
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] != "http" or str(scope["path"]).startswith(self.own_limits):
-            await self.app(scope, receive, send)
-            return
-        declared = dict(scope["headers"]).get(b"content-length")
-        if declared is not None and (not declared.isdigit() or int(declared) > self.max_bytes):
-            await _too_large(send, self.max_bytes)
-            return
-        seen = 0
-        started = False
-
-        async def limited_receive() -> Message:
-            nonlocal seen
-            message = await receive()
-            if message["type"] == "http.request":
-                seen += len(message.get("body", b""))
-                if seen > self.max_bytes:
-                    raise _TooLargeError
-            return message
-
-        async def tracking_send(message: Message) -> None:
-            nonlocal started
-            started = started or message["type"] == "http.response.start"
-            await send(message)
-
-        try:
-            await self.app(scope, limited_receive, tracking_send)
-        except _TooLargeError:
-            if not started:
-                await _too_large(send, self.max_bytes)
-
-
-class _TooLargeError(Exception):
-    pass
-
-
-async def _too_large(send: Send, limit: int) -> None:
-    import json
-
-    body = json.dumps(
-        error_body("payload_too_large", f"the request body exceeds {limit} bytes")
-    ).encode()
-    await send(
-        {
-            "type": "http.response.start",
-            "status": 413,
-            "headers": [
-                (b"content-type", b"application/json"),
-                (b"content-length", str(len(body)).encode()),
-            ],
-        }
-    )
-    await send({"type": "http.response.body", "body": body})
+PATH_BODY_LIMITS = (PathLimit(PUSH_PATH_PREFIX, MAX_PUSH_BODY_BYTES, push_too_large_error),)
+"""Routes with their protocol's own body limit and 413 format: a Matrix transaction may hold
+100 events of 64 KiB, and a 413 the homeserver cannot read would make it retry for ever."""
 
 
 def create_app(
@@ -161,5 +101,5 @@ def create_app(
 
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
-    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, own_limits=OWN_BODY_LIMITS)
+    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
     return app

@@ -33,6 +33,7 @@ class SimRobot(RobotBase):
     def __init__(
         self, office: Office, clock: Clock, distance: DistanceFn, speed_mps: float
     ) -> None:
+        super().__init__()
         self._office = office
         self._clock = clock
         self._distance = distance
@@ -80,16 +81,17 @@ class ObservedRobot(RobotBase):
     def __init__(
         self, base: RobotBase, home: str, on_arrived: Callable[[str], None] | None = None
     ) -> None:
+        super().__init__()
         self.base = base
         self.place: str | None = base.state().place or home
         self.moving = False
         self.odometer_m = 0.0  # across restarts (restored), unlike a fresh base's own
         self._on_arrived = on_arrived
 
-    async def start(self) -> None:
+    async def _start(self) -> None:
         await self.base.start()
 
-    async def stop(self) -> None:
+    async def _stop(self) -> None:
         await self.base.stop()
 
     async def move_to(self, location_id: str) -> MoveResult:

@@ -32,17 +32,12 @@ class LocalLocker(Locker):
             expiry_s=expiry_s,
             render=render_png,
         )
-        self._started = False
 
-    async def start(self) -> None:
-        if not self._started:
-            self.controller.add_listener(self._publish)
-            self._started = True
+    async def _start(self) -> None:
+        self.controller.add_listener(self._publish)
 
-    async def stop(self) -> None:
-        if self._started:
-            self.controller.remove_listener(self._publish)
-            self._started = False
+    async def _stop(self) -> None:
+        self.controller.remove_listener(self._publish)
 
     async def issue_code(
         self, *, instruction_id: str, person: str, purpose: Purpose, item: str

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from assistantx.adapters.lock.protocol.client import Backoff, LockClient
+from assistantx.adapters.lock.protocol.client import LockClient
 from assistantx.adapters.lock.protocol.codes import CodeIssuer
 from assistantx.adapters.lock.protocol.keys import LockKeys
 from assistantx.adapters.lock.protocol.link import LinkTimeouts
+from assistantx.core.backoff import Backoff
 from assistantx.core.clock import Clock, WallClock
 from assistantx.core.errors import LockError, LockProtocolError
 from assistantx.core.ports.lock import Locker, LockEvent, LockStatus, Purpose, QRCode
@@ -49,10 +50,10 @@ class TcpLocker(Locker):
         )
         self._issuer: CodeIssuer | None = None
 
-    async def start(self) -> None:
+    async def _start(self) -> None:
         await self.client.start()
 
-    async def stop(self) -> None:
+    async def _stop(self) -> None:
         await self.client.stop()
 
     @property

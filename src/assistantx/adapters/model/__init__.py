@@ -7,15 +7,6 @@ wraps it in a :class:`MeteredModel` so every call lands in a :class:`UsageLedger
 
 from assistantx.adapters.model._json_extract import extract_json_object
 from assistantx.adapters.model._retry import RetryPolicy, parse_retry_after
-from assistantx.adapters.model.base import (
-    ChatModel,
-    ChatRequest,
-    ChatResponse,
-    Message,
-    Role,
-    StructuredMode,
-    Usage,
-)
 from assistantx.adapters.model.openai_compat import OpenAICompatibleModel, estimate_tokens
 from assistantx.adapters.model.structured import (
     Attempt,
@@ -25,6 +16,15 @@ from assistantx.adapters.model.structured import (
     structured_call,
 )
 from assistantx.adapters.model.usage import CallRecord, MeteredModel, UsageLedger, UsageTotals
+from assistantx.core.ports.model import (
+    ChatModel,
+    ChatRequest,
+    ChatResponse,
+    Message,
+    Role,
+    StructuredMode,
+    Usage,
+)
 
 __all__ = [
     "Attempt",

@@ -1,8 +1,8 @@
 """When to try an LLM call again, and how long to wait first.
 
-Exponential backoff with "equal jitter": the n-th retry waits between half and all of
-``min(max_delay_s, base_delay_s * 2**n)``, drawn from a seeded generator so a run is
-reproducible. A server's ``Retry-After`` (seconds, or an HTTP date) replaces the computed
+Exponential backoff with full jitter (``core.backoff``): the n-th retry waits between 0 and
+``min(max_delay_s, base_delay_s * 2**n)``, drawn from a generator seeded by ``seed`` so a
+run is reproducible. A server's ``Retry-After`` (seconds, or an HTTP date) replaces the computed
 delay but is capped at ``retry_after_cap_s``: a server asking for an hour must not stall an
 instruction for an hour; the retry budget then runs out and the caller sees an error.
 """
@@ -13,6 +13,8 @@ import random
 import time
 from dataclasses import dataclass, field
 from email.utils import parsedate_to_datetime
+
+from assistantx.core.backoff import Backoff
 
 RETRYABLE_STATUS = frozenset({408, 409, 425, 429})
 
@@ -71,5 +73,4 @@ class RetryPolicy:
         """The wait before retry number ``retry_index`` (0 for the first retry)."""
         if retry_after_s is not None:
             return min(retry_after_s, self.retry_after_cap_s)
-        ceiling = min(self.max_delay_s, self.base_delay_s * (2.0**retry_index))
-        return ceiling / 2.0 + self._rng.uniform(0.0, ceiling / 2.0)
+        return Backoff(self.base_delay_s, self.max_delay_s).delay_s(retry_index, self._rng)

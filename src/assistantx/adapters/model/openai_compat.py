@@ -44,7 +44,8 @@ import httpx
 from pydantic import SecretStr
 
 from assistantx.adapters.model._retry import RetryPolicy, is_retryable_status, parse_retry_after
-from assistantx.adapters.model.base import (
+from assistantx.core.errors import LLMError
+from assistantx.core.ports.model import (
     ENFORCED_MODES,
     ChatModel,
     ChatRequest,
@@ -53,7 +54,6 @@ from assistantx.adapters.model.base import (
     StructuredMode,
     Usage,
 )
-from assistantx.core.errors import LLMError
 
 if TYPE_CHECKING:
     from assistantx.core.settings import Settings

@@ -15,11 +15,11 @@ from typing import Any
 import httpx
 from pydantic import BaseModel
 
-from assistantx.adapters.model.base import ChatRequest, Message, StructuredMode
 from assistantx.adapters.model.openai_compat import OpenAICompatibleModel
 from assistantx.adapters.model.schema import grammar_schema, schema_outline
 from assistantx.adapters.model.structured import structured_call
 from assistantx.core.errors import LLMError, ModelBehaviorError
+from assistantx.core.ports.model import ChatRequest, Message, StructuredMode
 
 MODES: tuple[StructuredMode, ...] = ("json_schema", "json_object_schema", "json_object", "prompt")
 _PROMPT = (

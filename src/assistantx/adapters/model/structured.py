@@ -24,7 +24,9 @@ from typing import Generic, TypeVar
 from pydantic import BaseModel, ValidationError
 
 from assistantx.adapters.model._json_extract import extract_json_object
-from assistantx.adapters.model.base import (
+from assistantx.adapters.model.schema import grammar_schema
+from assistantx.core.errors import AssistantXError, LLMError, ModelBehaviorError
+from assistantx.core.ports.model import (
     ChatModel,
     ChatRequest,
     ChatResponse,
@@ -32,8 +34,6 @@ from assistantx.adapters.model.base import (
     Message,
     Usage,
 )
-from assistantx.adapters.model.schema import grammar_schema
-from assistantx.core.errors import AssistantXError, LLMError, ModelBehaviorError
 
 logger = logging.getLogger(__name__)
 

@@ -16,7 +16,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from assistantx.adapters.model.base import ChatModel, ChatRequest, ChatResponse, LLMCallFailed
+from assistantx.core.ports.model import ChatModel, ChatRequest, ChatResponse, LLMCallFailed
 
 
 class CallRecord(BaseModel):

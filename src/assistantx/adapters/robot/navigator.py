@@ -107,6 +107,7 @@ class NavigatorRobot(RobotBase):
         arrival_tolerance_m: float = 0.15,
         anchors_file: str | FilePath | None = None,
     ) -> None:
+        super().__init__()
         where = f"{anchors_file}: " if anchors_file is not None else ""
         missing = sorted({loc.id for loc in office.locations} - anchors.keys())
         if missing:
@@ -182,7 +183,7 @@ class NavigatorRobot(RobotBase):
             anchors_file=anchors_path,
         )
 
-    async def start(self) -> None:
+    async def _start(self) -> None:
         """Start the planning worker process before the first move (see plan_process)."""
         if self._navigator.params.plan_in_process:
             await asyncio.to_thread(PLAN_PROCESS.warm, self._navigator.planner)

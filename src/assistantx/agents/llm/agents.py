@@ -43,7 +43,6 @@ from assistantx.adapters.model import (
     OpenAICompatibleModel,
     structured_call,
 )
-from assistantx.adapters.model.base import LLMCallFailed
 from assistantx.adapters.model.schema import schema_outline
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.agents.llm.prompts import PromptTemplate, load_prompts
@@ -55,6 +54,7 @@ from assistantx.core.errors import (
     UnknownNameError,
 )
 from assistantx.core.office import Office
+from assistantx.core.ports.model import LLMCallFailed
 from assistantx.core.settings import Settings
 from assistantx.core.trace import (
     ActionResult,

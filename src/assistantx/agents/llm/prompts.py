@@ -33,8 +33,8 @@ from typing import Any
 
 import yaml
 
-from assistantx.adapters.model.base import Message
 from assistantx.core.errors import PromptError
+from assistantx.core.ports.model import Message
 
 DEFAULT_PROMPTS = Path(__file__).resolve().parents[2] / "data" / "prompts"
 PROMPT_SUFFIX = ".md"

@@ -1,3 +1,4 @@
-"""The interfaces of the outside world the runtime acts on: messenger, robot base and lock, with
-their value types. Adapters implement them; agents and runtime only see these.
+"""The interfaces of the outside world: messenger, robot base and lock (the runtime acts on
+them) and the chat model (the agents reason with it), with their value types. Adapters
+implement them, each as a ``core.lifecycle.Component``; agents and runtime only see these.
 """

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import asyncio
 from abc import ABC, abstractmethod
-from types import TracebackType
-from typing import Literal, Self
+from typing import Literal
 
 from pydantic import BaseModel, Field
+
+from assistantx.core.lifecycle import Component
 
 # What the person does at the locker: put the item in, take it out, or take it out, work on
 # it (sign, seal, copy, heat) and put it back; "produce" = make it at a facility and put it in.
@@ -54,32 +55,16 @@ class LockStatus(BaseModel):
     contents: list[str] = Field(default_factory=list, description="item ids, where known")
 
 
-class Locker(ABC):
-    """A locker with a magnetic lock, a QR scanner and a door sensor."""
+class Locker(Component, ABC):
+    """A locker with a magnetic lock, a QR scanner and a door sensor; started and stopped as a
+    ``Component`` (connect in ``_start``, disconnect in ``_stop``)."""
 
     def __init__(self) -> None:
+        super().__init__()
         self._subscribers: list[tuple[asyncio.Queue[LockEvent], asyncio.Event | None]] = []
         # What the lock reported of each code since we connected: "scanned" once accepted,
         # "used" once the door it opened closed (for live views; instructions keep their own).
         self.code_states: dict[str, Literal["scanned", "used"]] = {}
-
-    async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
-        """Connect; idempotent."""
-
-    async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
-        """Disconnect; idempotent."""
-
-    async def __aenter__(self) -> Self:
-        await self.start()
-        return self
-
-    async def __aexit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        await self.stop()
 
     @abstractmethod
     async def issue_code(
@@ -91,7 +76,7 @@ class Locker(ABC):
     async def status(self) -> LockStatus:
         """Door, lock and code counts."""
 
-    async def revoke(self, code_id: str) -> None:  # noqa: B027 - optional capability
+    async def revoke(self, code_id: str) -> None:
         """Invalidate a code before it is used (default: codes simply expire)."""
 
     def subscribe(self, notify: asyncio.Event | None = None) -> asyncio.Queue[LockEvent]:

@@ -11,10 +11,11 @@ from __future__ import annotations
 import asyncio
 from abc import ABC, abstractmethod
 from datetime import datetime
-from types import TracebackType
-from typing import Literal, Self
+from typing import Literal
 
 from pydantic import BaseModel, Field
+
+from assistantx.core.lifecycle import Component
 
 
 class ChatRef(BaseModel):
@@ -73,12 +74,14 @@ class InboundMessage(BaseModel):
     in_reply_to: str | None = Field(default=None, description="question id, where known")
 
 
-class Messenger(ABC):
-    """Sends to people and groups; delivers what they write to the connected inbox."""
+class Messenger(Component, ABC):
+    """Sends to people and groups; delivers what they write to the connected inbox. Started and
+    stopped as a ``Component`` (connect in ``_start``, disconnect in ``_stop``)."""
 
     platform: str = "abstract"
 
     def __init__(self) -> None:
+        super().__init__()
         self._inbox: asyncio.Queue[InboundMessage] | None = None
 
     def connect_inbox(self, inbox: asyncio.Queue[InboundMessage]) -> None:
@@ -88,26 +91,8 @@ class Messenger(ABC):
         if self._inbox is not None:
             await self._inbox.put(message)
 
-    async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
-        """Connect; idempotent."""
-
-    async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
-        """Disconnect; idempotent."""
-
-    async def acknowledge(self, message: InboundMessage) -> None:  # noqa: B027 - optional hook
+    async def acknowledge(self, message: InboundMessage) -> None:
         """The consumer is done with ``message``; a durable messenger stops replaying it."""
-
-    async def __aenter__(self) -> Self:
-        await self.start()
-        return self
-
-    async def __aexit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        await self.stop()
 
     @abstractmethod
     async def send(self, message: OutboundMessage) -> SentMessage:

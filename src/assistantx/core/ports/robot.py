@@ -8,10 +8,10 @@ raises a RobotError subclass (UnreachableError, BlockedError, LocalizationLostEr
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from types import TracebackType
-from typing import Self
 
 from pydantic import BaseModel, Field
+
+from assistantx.core.lifecycle import Component
 
 
 class Pose(BaseModel):
@@ -41,26 +41,9 @@ class RobotState(BaseModel):
     odometer_m: float = Field(default=0.0, description="distance driven since start")
 
 
-class RobotBase(ABC):
-    """A mobile base that drives to the office's named locations."""
-
-    async def start(self) -> None:  # noqa: B027 - optional hook, default no-op
-        """Connect / initialise; idempotent."""
-
-    async def stop(self) -> None:  # noqa: B027 - optional hook, default no-op
-        """Release resources; idempotent."""
-
-    async def __aenter__(self) -> Self:
-        await self.start()
-        return self
-
-    async def __aexit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        await self.stop()
+class RobotBase(Component, ABC):
+    """A mobile base that drives to the office's named locations; started and stopped as a
+    ``Component`` (initialise in ``_start``, release in ``_stop``)."""
 
     @abstractmethod
     async def move_to(self, location_id: str) -> MoveResult:

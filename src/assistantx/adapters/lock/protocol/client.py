@@ -3,9 +3,9 @@
 ``LockClient`` keeps one authenticated connection to the lock. A supervisor task connects,
 subscribes to events from the last sequence it saw, pings every ``keepalive_s`` and, when
 the link drops (or a ping goes unanswered: a half-open connection), reconnects with
-exponential backoff and jitter. Events are delivered once each, in order: the lock replays
-what the client missed, and anything at or below the last seen sequence is dropped as a
-duplicate. A changed ``epoch`` (the lock restarted) starts the count over.
+exponential backoff and full jitter (``core.backoff``). Events are delivered once each, in
+order: the lock replays what the client missed, and anything at or below the last seen
+sequence is dropped as a duplicate. A changed ``epoch`` (the lock restarted) starts the count over.
 
 Requests are not retried across a reconnect: ``scan`` or ``close`` are not idempotent, so a
 request whose connection dies fails with ``LockConnectionError`` and the caller decides.
@@ -20,7 +20,6 @@ import itertools
 import logging
 import random
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 from assistantx.adapters.lock.protocol.frames import DEFAULT_MAX_FRAME
@@ -30,6 +29,7 @@ from assistantx.adapters.lock.protocol.link import (
     client_handshake,
     close_writer,
 )
+from assistantx.core.backoff import Backoff
 from assistantx.core.errors import (
     InvalidCodeError,
     LockAuthError,
@@ -39,6 +39,7 @@ from assistantx.core.errors import (
     LockProtocolError,
     LockTimeoutError,
 )
+from assistantx.core.lifecycle import Component
 from assistantx.core.ports.lock import LockEvent
 
 logger = logging.getLogger(__name__)
@@ -47,22 +48,10 @@ EventCallback = Callable[[LockEvent], None]
 _ResultHook = Callable[[dict[str, Any]], None]
 
 
-@dataclass(frozen=True)
-class Backoff:
-    """Reconnect delays: ``initial_s * factor**attempt``, capped, times a jitter in
-    [1 - jitter, 1] so many clients do not reconnect in step."""
+class LockClient(Component):
+    """One supervised connection to the lock; ``start`` waits for the first one (a started
+    client runs its supervisor as a tracked task)."""
 
-    initial_s: float = 0.1
-    max_s: float = 10.0
-    factor: float = 2.0
-    jitter: float = 0.5
-
-    def delay(self, attempt: int, rng: random.Random) -> float:
-        base = min(self.max_s, self.initial_s * self.factor ** min(attempt, 64))
-        return base * (1.0 - self.jitter * rng.random())
-
-
-class LockClient:
     def __init__(
         self,
         host: str,
@@ -76,6 +65,7 @@ class LockClient:
         on_event: EventCallback | None = None,
         rng: random.Random | None = None,
     ) -> None:
+        super().__init__()
         self.host = host
         self.port = port
         self.expected_lock_id = lock_id
@@ -89,7 +79,6 @@ class LockClient:
         self._pending: dict[int, tuple[asyncio.Future[dict[str, Any]], _ResultHook | None]] = {}
         self._channel: SecureChannel | None = None
         self._ready = asyncio.Event()
-        self._supervisor: asyncio.Task[None] | None = None
         self._first_outcome: asyncio.Future[None] | None = None
         self._fatal: LockError | None = None
         # What the client knows of the lock and its event stream.
@@ -106,33 +95,22 @@ class LockClient:
 
     # -- lifecycle ----------------------------------------------------------------------
 
-    async def start(self) -> None:
-        """Connect and subscribe; raises if the first connection fails within connect_s."""
-        if self._supervisor is not None:
-            return
+    async def _start(self) -> None:
+        """Connect and subscribe; raises if the first connection fails within connect_s
+        (and the component stops again, its supervisor cancelled)."""
         self._fatal = None
         self._first_outcome = asyncio.get_running_loop().create_future()
-        self._supervisor = asyncio.create_task(self._supervise(), name="lock-client")
+        self.create_task(self._supervise(), name="lock-client")
         try:
             async with asyncio.timeout(self.timeouts.connect_s):
                 await asyncio.shield(self._first_outcome)
         except TimeoutError as exc:
-            await self.stop()
             raise LockConnectionError(
                 f"cannot reach the lock at {self.host}:{self.port} within "
                 f"{self.timeouts.connect_s} s"
             ) from exc
-        except LockError:
-            await self.stop()
-            raise
 
-    async def stop(self) -> None:
-        supervisor, self._supervisor = self._supervisor, None
-        if supervisor is None:
-            return
-        supervisor.cancel()
-        with contextlib.suppress(asyncio.CancelledError):
-            await supervisor
+    async def _stop(self) -> None:
         self._ready.clear()
 
     async def drop_connection(self) -> None:
@@ -147,7 +125,7 @@ class LockClient:
         """Send one command and return its result, or raise the matching ``LockError``."""
         if self._fatal is not None:
             raise self._fatal
-        if self._supervisor is None:
+        if not self.started:
             raise LockConnectionError("the lock client is not started")
         try:
             async with asyncio.timeout(self.timeouts.request_s):
@@ -195,7 +173,7 @@ class LockClient:
                 if not failing:
                     logger.warning("lock %s:%s unreachable: %s", self.host, self.port, exc)
                     failing = True
-                await asyncio.sleep(self.backoff.delay(attempt, self._rng))
+                await asyncio.sleep(self.backoff.delay_s(attempt, self._rng))
                 attempt += 1
                 continue
             if self._fatal is not None:
@@ -217,7 +195,7 @@ class LockClient:
                 self._channel = None
                 self._fail_pending(LockConnectionError("the connection to the lock was lost"))
                 await channel.close()
-            await asyncio.sleep(self.backoff.delay(0, self._rng))
+            await asyncio.sleep(self.backoff.delay_s(0, self._rng))
 
     async def _connect(self) -> SecureChannel:
         try:

@@ -133,15 +133,12 @@ class MatrixMessenger(Messenger):
             prepare=self._prepare,
             on_auto_reply=self._auto_reply,
         )
-        self._started = False
         self.closing = False  # set on shutdown: nothing more goes out
         self._relays: list[Relay] = []
 
     # -- lifecycle ----------------------------------------------------------------------
 
-    async def start(self) -> None:
-        if self._started:
-            return
+    async def _start(self) -> None:
         config = self.config
         retry = RetryPolicy(max_retries=config.max_retries)
         self._http = self._external_http or httpx.AsyncClient(timeout=config.request_timeout_s)
@@ -159,32 +156,24 @@ class MatrixMessenger(Messenger):
                 retry=retry,
                 http=self._http,
             )
-        self._started = True
         self.closing = False
-        try:
-            await self.directory.load()
-            await self._resolve_groups()
-            await self._bring_pull_account_along()
-            for message in await self.store.unhandled():
-                if message.platform == PLATFORM:
-                    await self._deliver_or_fail(message)
-            if self._pull_client is not None:
-                self._poller = SyncPoller(
-                    self._pull_client,
-                    self.ingestor,
-                    sync_key=f"matrix:{config.pull_user_id}",
-                    timeout_s=config.sync_timeout_s,
-                    own_user_id=config.pull_user_id,
-                )
-                await self._poller.start()
-        except BaseException:
-            await self.stop()
-            raise
+        await self.directory.load()
+        await self._resolve_groups()
+        await self._bring_pull_account_along()
+        for message in await self.store.unhandled():
+            if message.platform == PLATFORM:
+                await self._deliver_or_fail(message)
+        if self._pull_client is not None:
+            self._poller = SyncPoller(
+                self._pull_client,
+                self.ingestor,
+                sync_key=f"matrix:{config.pull_user_id}",
+                timeout_s=config.sync_timeout_s,
+                own_user_id=config.pull_user_id,
+            )
+            await self._poller.start()
 
-    async def stop(self) -> None:
-        if not self._started:
-            return
-        self._started = False
+    async def _stop(self) -> None:
         if self._poller is not None:
             await self._poller.stop()
             self._poller = None
@@ -234,7 +223,7 @@ class MatrixMessenger(Messenger):
         await self._deliver(message)
 
     async def _prepare(self, events: Sequence[RoomEvent]) -> None:
-        if self._started:  # not started: nothing to learn rooms from (the push fails later)
+        if self.started:  # not started: nothing to learn rooms from (the push fails later)
             await self.directory.observe(self._sender(), events)
 
     async def _remember_media(self, room_id: str, message: InboundMessage) -> None:
@@ -400,7 +389,7 @@ class MatrixMessenger(Messenger):
     # -- outbound -----------------------------------------------------------------------
 
     async def send(self, message: OutboundMessage) -> SentMessage:
-        if not self._started:
+        if not self.started:
             raise MessengerError("the Matrix messenger is not started")
         if self.closing:
             raise MessengerError("the service is shutting down; the message was not sent")

@@ -14,6 +14,11 @@
 Every endpoint checks the homeserver token, sent as ``Authorization: Bearer`` (or the legacy
 ``?access_token=``), in constant time. As the AS API specifies: no token → ``401
 M_UNAUTHORIZED``; a wrong token → ``403 M_FORBIDDEN``.
+
+The size of a push is capped by the host's one request-size limit (the service's
+``BodyLimit``), configured with ``PUSH_PATH_PREFIX``, ``MAX_PUSH_BODY_BYTES`` and
+``push_too_large_error`` from here: a body over it is refused with ``413 M_TOO_LARGE`` before
+it is read.
 """
 
 from __future__ import annotations
@@ -28,16 +33,23 @@ from fastapi.responses import JSONResponse
 from pydantic import SecretStr
 
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
-from assistantx.adapters.messenger.webhooks.body import BodyTooLargeError, read_capped_body
 
 logger = logging.getLogger(__name__)
 
-DEFAULT_MAX_BODY_BYTES = 16 * 1024 * 1024
+PUSH_PATH_PREFIX = "/_matrix/app/"
+"""Every endpoint the homeserver pushes to is under this path."""
+
+MAX_PUSH_BODY_BYTES = 16 * 1024 * 1024
 """Synapse batches at most 100 events (each at most 64 KiB) plus ephemeral data."""
 
 
 def matrix_error(status: int, errcode: str, error: str) -> JSONResponse:
     return JSONResponse({"errcode": errcode, "error": error}, status_code=status)
+
+
+def push_too_large_error(limit_bytes: int) -> dict[str, str]:
+    """The body of a 413 to the homeserver, in the Matrix error format it reads."""
+    return {"errcode": "M_TOO_LARGE", "error": f"the request body exceeds {limit_bytes} bytes"}
 
 
 def _presented_token(request: Request) -> str | None:
@@ -74,12 +86,7 @@ def _room_events(body: Any) -> list[RoomEvent] | None:
     return pairs
 
 
-def create_appservice_router(
-    *,
-    hs_token: SecretStr,
-    ingestor: EventIngestor,
-    max_body_bytes: int = DEFAULT_MAX_BODY_BYTES,
-) -> APIRouter:
+def create_appservice_router(*, hs_token: SecretStr, ingestor: EventIngestor) -> APIRouter:
     """The AS endpoints; ``ingestor`` holds the store, the normalizer and the inbox."""
     router = APIRouter(tags=["matrix-appservice"])
 
@@ -89,11 +96,7 @@ def create_appservice_router(
         if refused is not None:
             return refused
         try:
-            raw = await read_capped_body(request, max_body_bytes)
-        except BodyTooLargeError as exc:
-            return matrix_error(413, "M_TOO_LARGE", str(exc))
-        try:
-            events = _room_events(json.loads(raw))
+            events = _room_events(json.loads(await request.body()))
         except ValueError:
             events = None
         if events is None:

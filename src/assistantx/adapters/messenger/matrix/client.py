@@ -15,13 +15,14 @@ from __future__ import annotations
 import asyncio
 import logging
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Any, Self
 from urllib.parse import quote
 
 import httpx
 
+from assistantx.core.backoff import Backoff
 from assistantx.core.errors import MessengerError
 
 logger = logging.getLogger(__name__)
@@ -40,14 +41,17 @@ class MatrixError(MessengerError):
 
 @dataclass(frozen=True)
 class RetryPolicy:
+    """How often a request is retried, and the backoff between tries (``core.backoff``: full
+    jitter, drawn from this policy's own ``rng``)."""
+
     max_retries: int = 5
     base_delay_s: float = 0.25
     max_delay_s: float = 30.0
+    rng: random.Random = field(default_factory=random.Random, compare=False, repr=False)
 
     def delay_s(self, attempt: int) -> float:
-        """Full-jitter exponential backoff for retry number ``attempt`` (0-based)."""
-        ceiling = min(self.max_delay_s, self.base_delay_s * 2**attempt)
-        return random.uniform(ceiling / 2, ceiling)
+        """The wait before retry number ``attempt`` (0-based)."""
+        return Backoff(self.base_delay_s, self.max_delay_s).delay_s(attempt, self.rng)
 
 
 def _path_part(value: str) -> str:

@@ -17,7 +17,6 @@ exponentially; the first failure and the recovery are logged, not every attempt.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import json
 import logging
 import random
@@ -27,6 +26,8 @@ from typing import Any
 from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
 from assistantx.adapters.messenger.matrix.normalize import PLATFORM
+from assistantx.core.backoff import Backoff
+from assistantx.core.lifecycle import Component
 
 logger = logging.getLogger(__name__)
 
@@ -50,8 +51,8 @@ def _sync_filter(timeline_limit: int) -> str:
     )
 
 
-class SyncPoller:
-    """Polls one account; ``start``/``stop`` are idempotent; ``ready`` is set after round one."""
+class SyncPoller(Component):
+    """Polls one account in a tracked task while started; ``ready`` is set after round one."""
 
     def __init__(
         self,
@@ -64,28 +65,22 @@ class SyncPoller:
         timeline_limit: int = 50,
         backoff_max_s: float = 60.0,
         own_user_id: str | None = None,
+        rng: random.Random | None = None,
     ) -> None:
+        super().__init__()
         self._client = client
         self._ingestor = ingestor
         self._sync_key = sync_key
         self._timeout_ms = int(timeout_s * 1000)
         self._max_backfill_pages = max_backfill_pages
         self._filter = _sync_filter(timeline_limit)
-        self._backoff_max_s = backoff_max_s
+        self._backoff = Backoff(initial_s=1.0, max_s=backoff_max_s)
+        self._rng = rng or random.Random()
         self._own_user_id = own_user_id
-        self._task: asyncio.Task[None] | None = None
         self.ready = asyncio.Event()
 
-    async def start(self) -> None:
-        if self._task is None or self._task.done():
-            self._task = asyncio.create_task(self._run(), name=f"matrix-sync:{self._sync_key}")
-
-    async def stop(self) -> None:
-        task, self._task = self._task, None
-        if task is not None:
-            task.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await task
+    async def _start(self) -> None:
+        self.create_task(self._run(), name=f"matrix-sync:{self._sync_key}")
 
     async def _run(self) -> None:
         failures = 0
@@ -97,9 +92,8 @@ class SyncPoller:
             except Exception as exc:
                 if failures == 0:
                     logger.warning("Matrix /sync failed (%s); retrying with backoff", exc)
+                await asyncio.sleep(self._backoff.delay_s(failures, self._rng))
                 failures += 1
-                ceiling = min(self._backoff_max_s, 0.5 * 2 ** min(failures, 10))
-                await asyncio.sleep(random.uniform(ceiling / 2, ceiling))
                 continue
             if failures:
                 logger.info("Matrix /sync recovered after %d failed attempts", failures)

@@ -11,14 +11,13 @@ connection pools that nobody closes.
 
 from __future__ import annotations
 
-import asyncio
 from abc import ABC, abstractmethod
-from types import TracebackType
-from typing import Any, Literal, Self
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
 from assistantx.core.errors import LLMError
+from assistantx.core.lifecycle import Component
 
 Role = Literal["system", "user", "assistant"]
 
@@ -138,52 +137,15 @@ class LLMCallFailed(LLMError):
         self.attempts: tuple[object, ...] = ()
 
 
-class ChatModel(ABC):
-    """A chat model behind an async context manager with idempotent start and stop."""
-
-    def __init__(self) -> None:
-        self._started = False
-        self._lifecycle_lock = asyncio.Lock()
-
-    @property
-    def started(self) -> bool:
-        return self._started
-
-    async def start(self) -> None:
-        async with self._lifecycle_lock:
-            if not self._started:
-                await self._start()
-                self._started = True
-
-    async def stop(self) -> None:
-        async with self._lifecycle_lock:
-            if self._started:
-                self._started = False
-                await self._stop()
+class ChatModel(Component, ABC):
+    """A chat model, started and stopped as a ``Component`` (``async with`` it); providers
+    acquire their connection pool or process in ``_start`` and release it in ``_stop``."""
 
     async def complete(self, request: ChatRequest) -> ChatResponse:
         """Answer one request; provider failures surface as ``LLMError``."""
         if not self._started:
             raise RuntimeError(f"{type(self).__name__} is not started; use 'async with'")
         return await self._complete(request)
-
-    async def __aenter__(self) -> Self:
-        await self.start()
-        return self
-
-    async def __aexit__(
-        self,
-        exc_type: type[BaseException] | None,
-        exc: BaseException | None,
-        tb: TracebackType | None,
-    ) -> None:
-        await self.stop()
-
-    async def _start(self) -> None:  # noqa: B027 - optional hook, most fakes need none
-        """Acquire resources (connection pools, processes). Called once per start."""
-
-    async def _stop(self) -> None:  # noqa: B027 - optional hook, most fakes need none
-        """Release what ``_start`` acquired. Called once per stop."""
 
     @abstractmethod
     async def _complete(self, request: ChatRequest) -> ChatResponse:
