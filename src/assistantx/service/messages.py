@@ -36,7 +36,7 @@ async def post_message(body: MessageIn, runtime: Runtime, caller: Caller) -> Mes
     else:
         chat = ChatRef(kind="dm", id=sender)
     files = [runtime.resolver.item(f) for f in body.files]
-    record = runtime.messenger.post(
+    record = await runtime.messenger.apost(
         sender, chat, body.text, in_reply_to=body.in_reply_to, files=files
     )
     assert record is not None  # fresh event id: never a duplicate

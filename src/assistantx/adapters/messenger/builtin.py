@@ -79,8 +79,19 @@ class BuiltinMessenger(Messenger):
         )
 
     def accept(self, message: InboundMessage) -> MessageRecord | None:
-        """Journal an inbound message and hand it to the assistant; None for a duplicate."""
-        record = self._journal.record_inbound(message)
+        """Journal an inbound message and hand it to the assistant; None for a duplicate.
+
+        Blocks until the journal has committed it: for callers that cannot await (the
+        simulated colleagues' inbox); the service's routes use ``aaccept``."""
+        return self._handed_on(message, self._journal.record_inbound(message))
+
+    async def aaccept(self, message: InboundMessage) -> MessageRecord | None:
+        """``accept``, awaited: the event loop runs on while the journal commits."""
+        return self._handed_on(message, await self._journal.arecord_inbound(message))
+
+    def _handed_on(
+        self, message: InboundMessage, record: MessageRecord | None
+    ) -> MessageRecord | None:
         if record is None:
             logger.info("duplicate inbound event %s ignored", message.event_id)
             return None
@@ -89,7 +100,7 @@ class BuiltinMessenger(Messenger):
         self._notify(record)
         return record
 
-    def post(
+    async def apost(
         self,
         sender: str,
         chat: ChatRef,
@@ -99,8 +110,19 @@ class BuiltinMessenger(Messenger):
         files: Iterable[str] = (),
         event_id: str | None = None,
     ) -> MessageRecord | None:
-        """A person writes (over REST or the web page)."""
-        message = InboundMessage(
+        """A person writes over REST or the web page."""
+        return await self.aaccept(self._inbound(sender, chat, text, in_reply_to, files, event_id))
+
+    def _inbound(
+        self,
+        sender: str,
+        chat: ChatRef,
+        text: str,
+        in_reply_to: str | None,
+        files: Iterable[str],
+        event_id: str | None,
+    ) -> InboundMessage:
+        return InboundMessage(
             platform=self.platform,
             event_id=event_id or uuid.uuid4().hex,
             chat=chat,
@@ -110,7 +132,6 @@ class BuiltinMessenger(Messenger):
             time=datetime.fromtimestamp(self._clock.now(), tz=UTC),
             in_reply_to=in_reply_to,
         )
-        return self.accept(message)
 
     def _sent(self, record: MessageRecord) -> SentMessage:
         return SentMessage(
