@@ -18,6 +18,7 @@ from assistantx.adapters.lock.protocol.keys import new_key
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import InvalidCodeError, LockAuthError
+from helpers.eventually import eventually
 
 from .conftest import FAST, QUICK_RETRY
 
@@ -121,15 +122,13 @@ async def test_sighup_reloads_rotated_keys(lock_sim: tuple[LockSim, LockKeys]) -
         _, early = locker.issuer.issue(instruction_id="i", person="lee", purpose="seal", item="x")
         assert (await locker.simulate_scan(early)).reason == "unknown_key"
         sim.process.send_signal(signal.SIGHUP)
-        async with asyncio.timeout(3):
-            while True:
-                try:
-                    new = await locker.issue_code(
-                        instruction_id="i", person="zhang", purpose="seal", item="y"
-                    )
-                    break
-                except InvalidCodeError:
-                    await asyncio.sleep(0.02)  # the signal has not been handled yet
+        # Until the signal is handled, issuing under the new key fails.
+        new = await eventually(
+            lambda: locker.issue_code(instruction_id="i", person="zhang", purpose="seal", item="y"),
+            what="the lock to reload its keys after SIGHUP",
+            timeout_s=3,
+            ignore=(InvalidCodeError,),
+        )
         # ...afterwards codes of both keys open the door, on the same connection.
         assert (await locker.simulate_scan(old.payload)).kind == "code_accepted"
         await locker.simulate_close()
