@@ -12,7 +12,7 @@ from pathlib import Path
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.core.actions import Action, Wait
 from assistantx.core.office import Office
-from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
 from assistantx.core.trace import (
     ActionResult,
     Decision,
@@ -67,6 +67,7 @@ class Harness:
     surveyor: Surveyor
     store: FeedbackStore
     scripts: list[list[list[Action]]]
+    handled: dict[str, asyncio.Event]
 
     async def run(self, requester: str, text: str, steps: list[list[Action]]) -> ShortTermMemory:
         """Run one instruction to its end (the survey is sent by the end hook)."""
@@ -76,13 +77,12 @@ class Harness:
 
     async def say(self, person: str, text: str) -> None:
         """``person`` writes to the assistant in their direct chat; wait until it is handled."""
-        self.sim.messenger.post(person, ChatRef(kind="dm", id=person), text)
-        for _ in range(200):
-            if self.assistant.inbox.empty():
-                break
-            await asyncio.sleep(0)
-        for _ in range(20):
-            await asyncio.sleep(0)
+        message = self.sim.messenger.post(person, ChatRef(kind="dm", id=person), text)
+        handled = self.handled.setdefault(message.event_id, asyncio.Event())
+        try:
+            await asyncio.wait_for(handled.wait(), 10)
+        except TimeoutError:
+            raise AssertionError(f"the assistant did not handle {text!r} from {person}") from None
 
     def texts_to(self, person: str) -> list[str]:
         return [m.text for m in self.sim.messenger.sent if m.chat == ChatRef(kind="dm", id=person)]
@@ -115,12 +115,21 @@ async def harness(
         sim.register_instruction(stm.instruction_id, stm.requester)
 
     assistant.on_instruction_start(register)
+    # The assistant acknowledges each inbound message once it has handled it.
+    handled: dict[str, asyncio.Event] = {}
+    acknowledge = sim.messenger.acknowledge
+
+    async def note_handled(message: InboundMessage) -> None:
+        await acknowledge(message)
+        handled.setdefault(message.event_id, asyncio.Event()).set()
+
+    sim.messenger.acknowledge = note_handled  # type: ignore[method-assign]
     store = FeedbackStore.open(db)
     surveyor = Surveyor(office, store, sim.messenger, sim.clock, distance=distance, policy=policy)
     surveyor.attach(assistant)
     await assistant.start()
     try:
-        yield Harness(sim, assistant, surveyor, store, scripts)
+        yield Harness(sim, assistant, surveyor, store, scripts, handled)
     finally:
         await assistant.stop()
         store.close()

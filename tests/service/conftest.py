@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import asyncio
 from collections.abc import AsyncIterator
 from pathlib import Path
 
@@ -12,6 +11,7 @@ import pytest
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
+from helpers.servers import running
 from service.server import LEE, OPERATOR, ZHANG, free_port
 
 
@@ -28,12 +28,8 @@ async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
     )
     port = free_port()
     server = service_server(create_app(settings), "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    for _ in range(500):  # uvicorn offers no event for "listening"
-        if server.started:
-            break
-        await asyncio.sleep(0.02)
-    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+    async with (
+        running(server),
+        httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client,
+    ):
         yield client
-    server.should_exit = True
-    await task

@@ -3,7 +3,6 @@ world's snapshot, while simulated colleagues hold them (real uvicorn server, rea
 
 from __future__ import annotations
 
-import asyncio
 import json
 import stat
 from pathlib import Path
@@ -15,6 +14,8 @@ from assistantx.core.ports.messenger import OutboundMessage
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
+from helpers.instructions import ended
+from helpers.servers import running
 from service.server import OPERATOR, free_port
 
 
@@ -24,11 +25,6 @@ async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -
     app = create_app(settings)
     port = free_port()
     server = service_server(app, "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    while not server.started:
-        if task.done():
-            task.result()
-        await asyncio.sleep(0.02)
     runtime = app.state.runtime
     payloads: list[str] = []
     snapshots: list[str] = []  # the simulated world as journaled while people held codes
@@ -42,25 +38,19 @@ async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -
 
     runtime.messenger.relay_to(note)
     runtime.assistant.subscribe(look)
-    try:
-        async with httpx.AsyncClient(
+    async with (
+        running(server),
+        httpx.AsyncClient(
             base_url=f"http://127.0.0.1:{port}",
             headers={"Authorization": f"Bearer {OPERATOR}"},
             timeout=10,
-        ) as client:
-            created = await client.post(
-                "/v1/instructions", json={"requester": "lee", "text": "bring me a stapler"}
-            )
-            iid = created.json()["id"]
-            for _ in range(1200):
-                body = (await client.get(f"/v1/instructions/{iid}")).json()
-                if body["status"] not in ("queued", "running"):
-                    break
-                await asyncio.sleep(0.05)
-            assert body["status"] == "done", body
-    finally:
-        server.should_exit = True
-        await task
+        ) as client,
+    ):
+        created = await client.post(
+            "/v1/instructions", json={"requester": "lee", "text": "bring me a stapler"}
+        )
+        body = await ended(client, created.json()["id"])
+        assert body["status"] == "done", body
 
     assert len(payloads) == 2  # the lender's code and the requester's
     assert snapshots  # people held codes while the world was journaled
