@@ -5,7 +5,6 @@ from __future__ import annotations
 import asyncio
 import os
 import signal
-import socket
 import sys
 from collections.abc import AsyncIterator
 from dataclasses import dataclass
@@ -19,6 +18,7 @@ from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import InvalidCodeError, LockAuthError
 from helpers.eventually import eventually
+from helpers.servers import free_port
 
 from .conftest import FAST, QUICK_RETRY
 
@@ -30,18 +30,12 @@ class LockSim:
     key_file: Path
 
 
-def _free_port() -> int:
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        return int(probe.getsockname()[1])
-
-
 @pytest.fixture
 async def lock_sim(tmp_path: Path) -> AsyncIterator[tuple[LockSim, LockKeys]]:
     keys = LockKeys.generate()
     key_file = tmp_path / "keys.json"
     key_file.write_text(keys.to_json())
-    port = _free_port()
+    port = free_port()
     env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
     process = await asyncio.create_subprocess_exec(
         sys.executable,

@@ -29,6 +29,7 @@ from nio import (
 )
 from PIL import Image
 
+from helpers.eventually import eventually
 from synapse.helpers import WAIT_S
 from synapse.homeserver import Account
 
@@ -207,9 +208,13 @@ class NioPerson:
         return {m.user_id for m in response.members}
 
     async def wait_member(self, room_id: str, user_id: str, *, present: bool = True) -> None:
-        async with asyncio.timeout(WAIT_S):
-            while (user_id in await self.members(room_id)) != present:  # noqa: ASYNC110
-                await asyncio.sleep(0.1)
+        async def settled() -> bool:
+            return (user_id in await self.members(room_id)) == present
+
+        state = "in" if present else "out of"
+        await eventually(
+            settled, what=f"{user_id} to be {state} {room_id}", timeout_s=WAIT_S, interval_s=0.1
+        )
 
     async def download(self, mxc: str) -> bytes:
         # nio's download uses the legacy unauthenticated media path, which Synapse has
