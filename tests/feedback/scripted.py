@@ -1,5 +1,5 @@
-"""A reasoner that plays a fixed list of decisions (the fake for the LLM), and an office to
-run instructions in with a Surveyor attached."""
+"""An office to run scripted instructions in (the scripted reasoner is the fake for the LLM),
+with a Surveyor attached."""
 
 from __future__ import annotations
 
@@ -9,55 +9,19 @@ from contextlib import asynccontextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-from assistantx.agents.base import AgentContext, Reasoner
-from assistantx.core.actions import Action, Wait
+from assistantx.core.actions import Action
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef, InboundMessage
-from assistantx.core.trace import (
-    ActionResult,
-    Decision,
-    Observation,
-    Percept,
-    Plan,
-    Reflection,
-    SubGoal,
-)
 from assistantx.feedback.store import FeedbackStore
 from assistantx.feedback.survey import SurveyPolicy
 from assistantx.feedback.surveyor import Surveyor
 from assistantx.feedback.walking import DistanceFn
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
-
-
-class PlayedReasoner(Reasoner):
-    name = "played"
-
-    def __init__(self, steps: list[list[Action]]) -> None:
-        self.steps = list(steps)
-
-    async def perceive(self, ctx: AgentContext) -> Percept:
-        return Percept(summary="played")
-
-    async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
-        return Plan(goal="played", subgoals=[SubGoal(description="play the steps")])
-
-    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
-        actions = self.steps.pop(0) if self.steps else [Wait(timeout_s=10)]
-        return Decision(actions=actions)
-
-    async def reflect(
-        self,
-        ctx: AgentContext,
-        percept: Percept,
-        plan: Plan,
-        decision: Decision,
-        results: list[ActionResult],
-        observed: Observation,
-    ) -> Reflection:
-        return Reflection(verdict="Y" if all(r.ok for r in results) else "N", reason="played")
+from helpers.office import sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner
 
 
 @dataclass
@@ -98,23 +62,12 @@ async def harness(
 ) -> AsyncIterator[Harness]:
     sim = SimOffice(office, distance=distance)
     scripts: list[list[list[Action]]] = []
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=lambda: PlayedReasoner(scripts.pop(0)),
-            reasoner_name="played",
-            limits=LoopLimits(max_steps=10),
-        )
+    assistant = sim_assistant(
+        sim,
+        lambda: ScriptedReasoner(scripts.pop(0)),
+        reasoner_name="played",
+        limits=LoopLimits(max_steps=10),
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
     # The assistant acknowledges each inbound message once it has handled it.
     handled: dict[str, asyncio.Event] = {}
     acknowledge = sim.messenger.acknowledge

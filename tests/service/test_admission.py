@@ -11,9 +11,9 @@ from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
 from assistantx.memory.journal import Journal
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.service.admission import Admission
 from assistantx.sim.office import SimOffice
+from helpers.office import sim_assistant
 from service.stapler_reasoner import build_factory
 
 
@@ -22,16 +22,7 @@ async def test_admitted_instructions_start_in_order_and_a_withdrawn_one_never(
 ) -> None:
     office = load_office()
     sim = SimOffice(office)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=build_factory(office, Settings()),
-        )
-    )
+    assistant = sim_assistant(sim, build_factory(office, Settings()))
     started: list[str] = []
     three_started = asyncio.Event()
 

@@ -10,8 +10,9 @@ from assistantx.core.events import TraceEvent
 from assistantx.core.office import Office
 from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.sim.office import SimOffice
+from helpers.office import run_one, sim_assistant
 
 EventHook = Callable[[TraceEvent, SimOffice], Awaitable[None]]
 
@@ -36,21 +37,7 @@ async def run_instruction(
     on_event: EventHook | None = None,
 ) -> Run:
     sim = SimOffice(office, unavailable=unavailable)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=build_factory(office, Settings()),
-        )
-    )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
+    assistant = sim_assistant(sim, build_factory(office, Settings()))
     if on_event is not None:
         hook = on_event
 
@@ -58,12 +45,5 @@ async def run_instruction(
             await hook(event, sim)
 
         assistant.subscribe(sink)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit(requester, text)
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, requester, text)
     return Run(stm, sim, assistant)

@@ -30,8 +30,9 @@ from helpers.eventually import eventually
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import derive
 from synapse.homeserver import Account
+from synapse.inbox import Seen
 from synapse.nio_office import OPERATOR, MatrixService, Policy, answers_from, asked, waiting
-from synapse.nio_people import NioPerson, Seen
+from synapse.nio_people import NioPerson
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
 
