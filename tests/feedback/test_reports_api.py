@@ -2,20 +2,16 @@
 
 from __future__ import annotations
 
-import json
 from collections.abc import AsyncIterator
 from pathlib import Path
 from typing import Any
 
 import httpx
 import pytest
-import uvicorn
 
-from assistantx.core.settings import Settings
-from assistantx.service.app import create_app
 from helpers.eventually import eventually
-from helpers.servers import running
-from service.server import LEE, OPERATOR, ZHANG, free_port
+from service.inprocess import running_service
+from service.server import LEE, OPERATOR, ZHANG
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
@@ -24,21 +20,9 @@ AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
 
 @pytest.fixture
 async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
-    settings = Settings(
-        data_dir=tmp_path / "data",
-        operator_token=OPERATOR,
-        tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
-        speedup=200,
-        reasoner_builder="service.stapler_reasoner:build_factory",
-    )
-    port = free_port()
-    server = uvicorn.Server(
-        uvicorn.Config(create_app(settings), host="127.0.0.1", port=port, log_level="warning")
-    )
-    async with (
-        running(server),
-        httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client,
-    ):
+    async with running_service(
+        tmp_path / "data", speedup=200, reasoner_builder="service.stapler_reasoner:build_factory"
+    ) as client:
         yield client
 
 

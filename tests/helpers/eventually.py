@@ -23,11 +23,24 @@ T = TypeVar("T")
 _NOTHING_YET = object()
 
 
-def _timed_out(what: str, timeout_s: float, last: object) -> AssertionError:
-    shown = "nothing yet" if last is _NOTHING_YET else repr(last)
-    if len(shown) > 400:
-        shown = shown[:400] + "..."
-    return AssertionError(f"timed out after {timeout_s:g} s waiting for {what} (last: {shown})")
+class _Poll:
+    """One wait's bookkeeping: its deadline, the last value seen, and the failure."""
+
+    def __init__(self, what: str, timeout_s: float) -> None:
+        self.what, self.timeout_s = what, timeout_s
+        self.deadline = time.monotonic() + timeout_s
+        self.last: object = _NOTHING_YET
+
+    def expire(self) -> None:
+        """Raise the timeout, naming what was awaited and the last value seen."""
+        if time.monotonic() < self.deadline:
+            return
+        shown = "nothing yet" if self.last is _NOTHING_YET else repr(self.last)
+        if len(shown) > 400:
+            shown = shown[:400] + "..."
+        raise AssertionError(
+            f"timed out after {self.timeout_s:g} s waiting for {self.what} (last: {shown})"
+        )
 
 
 async def eventually(
@@ -39,22 +52,17 @@ async def eventually(
     ignore: tuple[type[BaseException], ...] = (),
     until: Callable[[T], object] = bool,
 ) -> T:
-    """The first truthy value of ``condition()`` (sync or async) within ``timeout_s``."""
-    deadline = time.monotonic() + timeout_s
-    last: object = _NOTHING_YET
+    """The first value of ``condition()`` (sync or async) that ``until`` accepts."""
+    poll = _Poll(what, timeout_s)
     while True:
         try:
             value = condition()
-            if inspect.isawaitable(value):
-                value = await value
-        except ignore as exc:
-            last = exc
-        else:
+            poll.last = value = await value if inspect.isawaitable(value) else value
             if until(value):  # type: ignore[arg-type]
                 return value  # type: ignore[return-value]
-            last = value
-        if time.monotonic() >= deadline:
-            raise _timed_out(what, timeout_s, last)
+        except ignore as exc:
+            poll.last = exc
+        poll.expire()
         await asyncio.sleep(interval_s)
 
 
@@ -68,19 +76,15 @@ def eventually_sync(
     until: Callable[[T], object] = bool,
 ) -> T:
     """The blocking twin of :func:`eventually`, for tests that drive subprocesses or a browser."""
-    deadline = time.monotonic() + timeout_s
-    last: object = _NOTHING_YET
+    poll = _Poll(what, timeout_s)
     while True:
         try:
-            value = condition()
-        except ignore as exc:
-            last = exc
-        else:
+            poll.last = value = condition()
             if until(value):
                 return value
-            last = value
-        if time.monotonic() >= deadline:
-            raise _timed_out(what, timeout_s, last)
+        except ignore as exc:
+            poll.last = exc
+        poll.expire()
         time.sleep(interval_s)
 
 

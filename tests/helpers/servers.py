@@ -8,8 +8,11 @@ import socket
 from collections.abc import AsyncIterator
 from typing import Any
 
+import httpx
 import uvicorn
+from fastapi import FastAPI
 
+from assistantx.service.server import service_server
 from helpers.eventually import eventually
 
 
@@ -54,3 +57,17 @@ async def serve_asgi(app: Any, port: int | None = None) -> AsyncIterator[str]:
     )
     async with running(uvicorn.Server(config)):
         yield f"http://127.0.0.1:{config.port}"
+
+
+@contextlib.asynccontextmanager
+async def serving_app(app: FastAPI, **client: Any) -> AsyncIterator[httpx.AsyncClient]:
+    """An app made by ``create_app``, served by the service's own uvicorn server on a free
+    port; yields an httpx client of it (``client``: its options; a 10 s timeout by default)."""
+    port = free_port()
+    server = service_server(app, "127.0.0.1", port, log_level="warning")
+    options: dict[str, Any] = {"timeout": 10, **client}
+    async with (
+        running(server),
+        httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", **options) as http,
+    ):
+        yield http

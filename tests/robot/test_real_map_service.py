@@ -21,11 +21,10 @@ from assistantx.adapters.robot.navigator import NavigatorRobot
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.service.server import service_server
 from helpers.instructions import ended
-from helpers.servers import running
+from helpers.servers import serving_app
 from robot.conftest import shared_map
-from service.server import LEE, OPERATOR, free_port
+from service.server import LEE, OPERATOR
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
@@ -53,12 +52,7 @@ async def depot_service(tmp_path: Path) -> AsyncIterator[tuple[httpx.AsyncClient
         map_anchors=_office_anchors_on(map_yaml, tmp_path / "depot.anchors.yaml"),
     )
     app = create_app(settings)
-    port = free_port()
-    server = service_server(app, "127.0.0.1", port, log_level="warning")
-    async with (
-        running(server),
-        httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=30) as client,
-    ):
+    async with serving_app(app, timeout=30) as client:
         yield client, app.state.runtime
 
 

@@ -13,9 +13,8 @@ import httpx
 
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.service.server import service_server
-from helpers.servers import running
-from service.server import LEE, OPERATOR, ZHANG, free_port
+from helpers.servers import serving_app
+from service.server import LEE, OPERATOR, ZHANG
 
 
 @asynccontextmanager
@@ -28,10 +27,5 @@ async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[http
         "speedup": 50,
     }
     app = create_app(Settings(**{**defaults, **settings}))
-    port = free_port()
-    server = service_server(app, "127.0.0.1", port, log_level="warning")
-    async with (
-        running(server),
-        httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client,
-    ):
+    async with serving_app(app) as client:
         yield client

@@ -14,7 +14,6 @@ from pathlib import Path
 import httpx
 import numpy as np
 import pytest
-import uvicorn
 from matplotlib.image import imread
 
 from assistantx.adapters.robot.nav.anchors import load_anchors
@@ -25,7 +24,7 @@ from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.dashboard import occupancy_grey
 from helpers.eventually import eventually
-from helpers.servers import free_port, running
+from helpers.servers import serving_app
 
 TOKEN = "operator-token-for-dashboard-tests"
 LEE_TOKEN = "lee-token-for-dashboard-tests-01"
@@ -43,17 +42,8 @@ async def serve(tmp_path: Path, **overrides: object) -> AsyncIterator[httpx.Asyn
         "reasoner_builder": "service.stapler_reasoner:build_factory",
     }
     settings = Settings(**{**values, **overrides})  # type: ignore[arg-type]
-    config = uvicorn.Config(
-        create_app(settings), host="127.0.0.1", port=free_port(), log_level="warning", ws="none"
-    )
-    async with (
-        running(uvicorn.Server(config)),
-        httpx.AsyncClient(
-            base_url=f"http://127.0.0.1:{config.port}",
-            headers={"Authorization": f"Bearer {TOKEN}"},
-            timeout=10,
-        ) as client,
-    ):
+    headers = {"Authorization": f"Bearer {TOKEN}"}
+    async with serving_app(create_app(settings), headers=headers) as client:
         yield client
 
 
