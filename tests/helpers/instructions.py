@@ -36,9 +36,13 @@ async def _follow_to_end(
     last = ""
     while True:
         resume = {"Last-Event-ID": last} if last else {}
-        async with client.stream(
-            "GET", f"{path}/events", headers={**(headers or {}), **resume}, timeout=None
-        ) as response:
+        # A connection of its own: the stream's does not go back to the client's pool.
+        async with (
+            httpx.AsyncClient(
+                base_url=client.base_url, headers=client.headers, timeout=None
+            ) as own,
+            own.stream("GET", f"{path}/events", headers={**(headers or {}), **resume}) as response,
+        ):
             assert response.status_code == 200, await response.aread()
             async for line in response.aiter_lines():
                 if line.startswith("id: "):
