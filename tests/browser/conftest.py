@@ -87,6 +87,7 @@ class Server:
         try:
             wait_ready(self.process, f"{self.url}/readyz", timeout_s=timeout_s)
         except AssertionError as exc:
+            self.stop()  # reaped now, not warned about by a later test's garbage collection
             raise RuntimeError(f"server did not become ready: {exc}") from None
 
     def stop(self, *, crash: bool = False) -> None:
