@@ -11,10 +11,8 @@ from __future__ import annotations
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import sys
-import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -22,6 +20,9 @@ from pathlib import Path
 import httpx
 import pytest
 from playwright.sync_api import Browser, Playwright, sync_playwright
+
+from helpers.processes import wait_ready
+from helpers.servers import free_port
 
 ROOT = Path(__file__).resolve().parents[2]
 CHROMIUM = Path("/usr/bin/chromium")
@@ -39,12 +40,6 @@ SCREENSHOTS = ROOT / "docs" / "screenshots"
 OPERATOR = "operator-token-for-browser-tests"
 
 
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
 def _reasoner_env() -> dict[str, str]:
     """The embedded default reasoner once it exists; until then the service tests' scripted
     stapler reasoner, which plays the same L2 instruction."""
@@ -54,7 +49,7 @@ def _reasoner_env() -> dict[str, str]:
         return {}
     return {
         "ASSISTANTX_REASONER_BUILDER": "stapler_reasoner:build_factory",
-        "PYTHONPATH": str(ROOT / "tests" / "service"),
+        "PYTHONPATH": os.pathsep.join([str(ROOT / "tests" / "service"), str(ROOT / "tests")]),
     }
 
 
@@ -89,17 +84,11 @@ class Server:
             self.process = subprocess.Popen(
                 [*cmd, "--port", str(self.port)], env=env, stdout=log, stderr=log
             )
-        deadline = time.monotonic() + timeout_s
-        while time.monotonic() < deadline:
-            if self.process.poll() is not None:
-                raise RuntimeError(f"server exited with {self.process.returncode}")
-            try:
-                if httpx.get(f"{self.url}/readyz", timeout=1).status_code == 200:
-                    return
-            except httpx.TransportError:
-                pass
-            time.sleep(0.1)
-        raise RuntimeError("server did not become ready")
+        try:
+            wait_ready(self.process, f"{self.url}/readyz", timeout_s=timeout_s)
+        except AssertionError as exc:
+            self.stop()  # reaped now, not warned about by a later test's garbage collection
+            raise RuntimeError(f"server did not become ready: {exc}") from None
 
     def stop(self, *, crash: bool = False) -> None:
         """Stop gracefully (SIGTERM), or as a crash would (SIGKILL): connections just drop."""

@@ -6,12 +6,12 @@ and the page riding out a server restart."""
 from __future__ import annotations
 
 import re
-import time
 
 import pytest
 from playwright.sync_api import Browser, Page, expect
 
 from browser.conftest import OPERATOR, Server, screenshot_targets, write_sample_evaluation
+from helpers.eventually import eventually_sync
 
 pytestmark = pytest.mark.browser
 
@@ -43,8 +43,10 @@ def play_colleagues_until_done(page: Page, timeout_s: float = 90) -> set[str]:
     the page; Wang, the first owner, never answers. Returns the robot marker's positions."""
     seen: set[str] = set()
     answered = False
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline:
+
+    def play() -> set[str] | None:
+        """One look at the page: the robot's position, then what a colleague would do now."""
+        nonlocal answered
         seen.add(page.get_attribute("#map", "data-robot") or "")
         status = page.locator("#instruction-list button").first.get_attribute("data-status")
         if status in FINAL:
@@ -65,8 +67,11 @@ def play_colleagues_until_done(page: Page, timeout_s: float = 90) -> set[str]:
             expect(close).to_be_visible(timeout=5_000)
             close.click()
             expect(page.locator("#locker-door")).to_have_text("closed", timeout=5_000)
-        time.sleep(0.15)
-    raise AssertionError("the instruction did not end in time")
+        return None
+
+    return eventually_sync(
+        play, what="the instruction to end on the page", timeout_s=timeout_s, interval_s=0.15
+    )
 
 
 def test_an_l2_instruction_from_the_page_to_its_outcome(browser: Browser, server: Server) -> None:

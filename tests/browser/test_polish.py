@@ -5,13 +5,13 @@ says what its metrics mean."""
 from __future__ import annotations
 
 import json
-import time
 
 import pytest
 from playwright.sync_api import Browser, expect
 
 from browser.conftest import Server, write_sample_evaluation
 from browser.test_dashboard import open_dashboard, shoot
+from helpers.eventually import eventually_sync
 
 pytestmark = pytest.mark.browser
 
@@ -25,10 +25,12 @@ def test_a_cancelled_instruction_shows_one_state(browser: Browser, server: Serve
     ins = created.json()["id"]
     button = page.locator(f'#instruction-list button[data-id="{ins}"]')
     expect(button).to_be_visible(timeout=10_000)
-    deadline = time.monotonic() + 20
-    while server.api("GET", f"/v1/instructions/{ins}").json()["status"] == "queued":
-        assert time.monotonic() < deadline
-        time.sleep(0.1)
+    eventually_sync(
+        lambda: server.api("GET", f"/v1/instructions/{ins}").json()["status"] != "queued",
+        what="the instruction to leave the queue",
+        timeout_s=20,
+        interval_s=0.1,
+    )
     assert server.api("POST", f"/v1/instructions/{ins}/cancel").status_code == 200
     expect(button).to_have_attribute("data-status", "cancelled", timeout=10_000)
     record = server.api("GET", f"/v1/instructions/{ins}").json()

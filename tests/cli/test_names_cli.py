@@ -7,15 +7,16 @@ from __future__ import annotations
 
 import json
 import os
-import socket
 import subprocess
 import sys
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import httpx
 import pytest
+
+from helpers.processes import wait_ready
+from helpers.servers import free_port
 
 STAPLER = "bring me a stapler"
 
@@ -105,12 +106,6 @@ def test_sim_has_help() -> None:
     assert "inquire contact=" in _cli("sim", "--help").stdout
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
 @pytest.fixture
 def processes() -> Iterator[list[subprocess.Popen[str]]]:
     started: list[subprocess.Popen[str]] = []
@@ -130,7 +125,7 @@ def test_lock_sim_without_a_key_shares_the_services_key(
     tmp_path: Path, processes: list[subprocess.Popen[str]]
 ) -> None:
     data = tmp_path / "data"
-    lock_port, port = _free_port(), _free_port()
+    lock_port, port = free_port(), free_port()
     env = _env(
         ASSISTANTX_DATA_DIR=str(data),
         ASSISTANTX_LOCK_PORT=str(lock_port),
@@ -159,14 +154,10 @@ def test_lock_sim_without_a_key_shares_the_services_key(
             text=True,
         )
     processes.insert(0, serve)  # stopped before the lock
-    deadline = time.monotonic() + 60
-    ready = False
-    while time.monotonic() < deadline and serve.poll() is None and not ready:
-        try:
-            ready = httpx.get(f"http://127.0.0.1:{port}/readyz", timeout=1).status_code == 200
-        except httpx.TransportError:
-            time.sleep(0.2)
-    assert ready, (tmp_path / "serve.log").read_text()
+    try:
+        wait_ready(serve, f"http://127.0.0.1:{port}/readyz", timeout_s=60, interval_s=0.2)
+    except (AssertionError, RuntimeError) as exc:
+        raise AssertionError((tmp_path / "serve.log").read_text()) from exc
     # The service reached the lock over the authenticated link: it reports the door.
     status = httpx.get(
         f"http://127.0.0.1:{port}/v1/locker",

@@ -45,6 +45,8 @@ import uvicorn
 from fastapi import FastAPI, Request
 from fastapi.responses import JSONResponse, Response
 
+from helpers.eventually import eventually
+
 AGENT_HEADER = "x-assistantx-agent"
 ANY_AGENT = "*"
 
@@ -274,14 +276,17 @@ class ScriptedLLM:
         )
         self._server = _QuietServer(config)
         self._task = asyncio.create_task(self._server.serve(sockets=[sock]))
-        deadline = time.monotonic() + 10.0
-        while not self._server.started:
-            if self._task.done():
-                self._task.result()  # raises what made the server fail
+        server, task = self._server, self._task
+
+        def listening() -> bool:
+            if task.done():
+                task.result()  # raises what made the server fail
                 raise RuntimeError("the scripted LLM server stopped during start-up")
-            if time.monotonic() > deadline:
-                raise RuntimeError("the scripted LLM server did not start within 10 s")
-            await asyncio.sleep(0.005)
+            return bool(server.started)
+
+        await eventually(
+            listening, what="the scripted LLM server to listen", timeout_s=10, interval_s=0.005
+        )
 
     async def stop(self) -> None:
         if self._task is None or self._server is None:

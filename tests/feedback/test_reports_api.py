@@ -2,18 +2,16 @@
 
 from __future__ import annotations
 
-import asyncio
-import json
 from collections.abc import AsyncIterator
 from pathlib import Path
+from typing import Any
 
 import httpx
 import pytest
-import uvicorn
 
-from assistantx.core.settings import Settings
-from assistantx.service.app import create_app
-from service.server import LEE, OPERATOR, ZHANG, free_port
+from helpers.eventually import eventually
+from service.inprocess import running_service
+from service.server import LEE, OPERATOR, ZHANG
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
@@ -22,35 +20,18 @@ AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
 
 @pytest.fixture
 async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
-    settings = Settings(
-        data_dir=tmp_path / "data",
-        operator_token=OPERATOR,
-        tokens=json.dumps({LEE: "lee", ZHANG: "zhang"}),
-        speedup=200,
-        reasoner_builder="service.stapler_reasoner:build_factory",
-    )
-    port = free_port()
-    server = uvicorn.Server(
-        uvicorn.Config(create_app(settings), host="127.0.0.1", port=port, log_level="warning")
-    )
-    task = asyncio.create_task(server.serve())
-    for _ in range(500):
-        if server.started:
-            break
-        await asyncio.sleep(0.02)
-    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+    async with running_service(
+        tmp_path / "data", speedup=200, reasoner_builder="service.stapler_reasoner:build_factory"
+    ) as client:
         yield client
-    server.should_exit = True
-    await task
 
 
 async def _until(client: httpx.AsyncClient, url: str, ok: int = 200) -> httpx.Response:
-    for _ in range(400):
-        r = await client.get(url, headers=AUTH_OP)
-        if r.status_code == ok:
-            return r
-        await asyncio.sleep(0.025)
-    raise AssertionError(f"{url} never answered {ok}: {r.status_code} {r.text}")
+    return await eventually(
+        lambda: client.get(url, headers=AUTH_OP),
+        until=lambda r: r.status_code == ok,
+        what=f"{url} to answer {ok}",
+    )
 
 
 async def test_survey_over_the_builtin_messenger_and_the_report(api: httpx.AsyncClient) -> None:
@@ -69,11 +50,14 @@ async def test_survey_over_the_builtin_messenger_and_the_report(api: httpx.Async
     # Lee answers through the built-in messenger; it is a survey reply, not an instruction.
     r = await api.post("/v1/messages", json={"text": "y/n/?/y, quick and easy"}, headers=AUTH_LEE)
     assert r.status_code == 202
-    for _ in range(200):
-        body = (await api.get(f"/v1/surveys/{iid}", headers=AUTH_LEE)).json()
-        if body["survey"]["state"] == "complete":
-            break
-        await asyncio.sleep(0.025)
+
+    async def survey() -> dict[str, Any]:
+        body: dict[str, Any] = (await api.get(f"/v1/surveys/{iid}", headers=AUTH_LEE)).json()
+        return body
+
+    body = await eventually(
+        survey, until=lambda b: b["survey"]["state"] == "complete", what="the survey's answers"
+    )
     assert body["survey"]["answers"] == {
         "success": "yes",
         "walking": "no",

@@ -9,12 +9,11 @@ from a model hub. The server runs as a child process on 127.0.0.1 with 2 threads
 from __future__ import annotations
 
 import os
-import socket
 import subprocess
-import time
 from pathlib import Path
 
-import httpx
+from helpers.processes import wait_ready
+from helpers.servers import free_port
 
 REPO = Path(__file__).resolve().parents[2]
 INSTALL_SCRIPT = REPO / ".ci" / "install-llm-server"
@@ -23,13 +22,6 @@ MODEL_NAME = "SmolLM2-135M-Instruct"
 
 class LlamaServerUnavailableError(RuntimeError):
     """The server could not be installed or started (tests must fail, never skip)."""
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port: int = s.getsockname()[1]
-        return port
 
 
 def install_llm_server() -> Path:
@@ -100,20 +92,19 @@ class LlamaServer:
         env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
         with self.log_file.open("wb") as log:
             self._process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=env)
-        deadline = time.monotonic() + timeout_s
-        while time.monotonic() < deadline:
-            if self._process.poll() is not None:
-                raise LlamaServerUnavailableError(
-                    f"llama_cpp.server exited with {self._process.returncode}:\n{self.log_tail()}"
-                )
-            try:
-                if httpx.get(f"{self.base_url}/models", timeout=2.0).is_success:
-                    return
-            except httpx.HTTPError:
-                pass
-            time.sleep(0.5)
-        self.stop()
-        raise LlamaServerUnavailableError(f"no answer in {timeout_s:g} s:\n{self.log_tail()}")
+        try:
+            wait_ready(
+                self._process, f"{self.base_url}/models", timeout_s=timeout_s, interval_s=0.5
+            )
+        except RuntimeError:
+            raise LlamaServerUnavailableError(
+                f"llama_cpp.server exited with {self._process.returncode}:\n{self.log_tail()}"
+            ) from None
+        except AssertionError:
+            self.stop()
+            raise LlamaServerUnavailableError(
+                f"no answer in {timeout_s:g} s:\n{self.log_tail()}"
+            ) from None
 
     def stop(self) -> None:
         process, self._process = self._process, None

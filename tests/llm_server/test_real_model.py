@@ -38,9 +38,9 @@ from assistantx.core.trace import (
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
+from helpers.office import run_one, sim_assistant
 from llm_server.llama_server import MODEL_NAME, LlamaServer
 
 pytestmark = pytest.mark.llm_server
@@ -148,31 +148,12 @@ async def test_a_whole_instruction_with_the_real_model_ends_told_and_counted(
     model = MeteredModel(model_for(llama_server, max_tokens=128), ledger)
     factory = LLMReasonerFactory(model, AgentPrompts.load(), output_retries=0)
     sim = SimOffice(office, unavailable=("zhang",))
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=factory,
-            reasoner_name="llm",
-            limits=LoopLimits(max_steps=2, wall_s=900.0),
-        )
+    assistant = sim_assistant(
+        sim, factory, reasoner_name="llm", limits=LoopLimits(max_steps=2, wall_s=900.0)
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    await sim.locker.start()
-    await assistant.start()
     try:
-        stm = await assistant.submit("lee", "Could you get me a stapler, please?")
-        stm = await assistant.wait(stm.instruction_id)
+        stm = await run_one(sim, assistant, "lee", "Could you get me a stapler, please?")
     finally:
-        await assistant.stop()
-        await sim.locker.stop()
         await model.stop()
 
     trace = stm.trace

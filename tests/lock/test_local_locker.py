@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import asyncio
-
 from assistantx.adapters.lock.local import LocalLocker
 from assistantx.adapters.lock.protocol import LockController
 from assistantx.core.clock import SimClock
+from helpers.eventually import assert_quiet
 
 
 async def test_hand_over_through_the_locker_interface(
@@ -47,8 +46,7 @@ async def test_hand_over_through_the_locker_interface(
         assert [e.seq for e in received] == [1, 2, 3, 4]
     # Stopped: no more events reach subscribers.
     controller.open_for_maintenance()
-    await asyncio.sleep(0)
-    assert events.empty()
+    await assert_quiet(events, 0.05, what="event after the locker stopped")
 
 
 async def test_revoke_and_expiry_through_the_locker(

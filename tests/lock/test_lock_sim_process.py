@@ -5,7 +5,6 @@ from __future__ import annotations
 import asyncio
 import os
 import signal
-import socket
 import sys
 from collections.abc import AsyncIterator
 from dataclasses import dataclass
@@ -18,6 +17,8 @@ from assistantx.adapters.lock.protocol.keys import new_key
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import InvalidCodeError, LockAuthError
+from helpers.eventually import eventually
+from helpers.servers import free_port
 
 from .conftest import FAST, QUICK_RETRY
 
@@ -29,18 +30,12 @@ class LockSim:
     key_file: Path
 
 
-def _free_port() -> int:
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        return int(probe.getsockname()[1])
-
-
 @pytest.fixture
 async def lock_sim(tmp_path: Path) -> AsyncIterator[tuple[LockSim, LockKeys]]:
     keys = LockKeys.generate()
     key_file = tmp_path / "keys.json"
     key_file.write_text(keys.to_json())
-    port = _free_port()
+    port = free_port()
     env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
     process = await asyncio.create_subprocess_exec(
         sys.executable,
@@ -121,15 +116,13 @@ async def test_sighup_reloads_rotated_keys(lock_sim: tuple[LockSim, LockKeys]) -
         _, early = locker.issuer.issue(instruction_id="i", person="lee", purpose="seal", item="x")
         assert (await locker.simulate_scan(early)).reason == "unknown_key"
         sim.process.send_signal(signal.SIGHUP)
-        async with asyncio.timeout(3):
-            while True:
-                try:
-                    new = await locker.issue_code(
-                        instruction_id="i", person="zhang", purpose="seal", item="y"
-                    )
-                    break
-                except InvalidCodeError:
-                    await asyncio.sleep(0.02)  # the signal has not been handled yet
+        # Until the signal is handled, issuing under the new key fails.
+        new = await eventually(
+            lambda: locker.issue_code(instruction_id="i", person="zhang", purpose="seal", item="y"),
+            what="the lock to reload its keys after SIGHUP",
+            timeout_s=3,
+            ignore=(InvalidCodeError,),
+        )
         # ...afterwards codes of both keys open the door, on the same connection.
         assert (await locker.simulate_scan(old.payload)).kind == "code_accepted"
         await locker.simulate_close()

@@ -15,6 +15,7 @@ from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.backoff import Backoff
 from assistantx.core.clock import SimClock
+from helpers.eventually import eventually
 
 from .conftest import LOCK_ID, QUICK_RETRY
 
@@ -34,9 +35,11 @@ async def _flood(port: int, n: int = FLOOD) -> list[asyncio.StreamWriter]:
 
 async def _settle(server: LockServer, at_least: int) -> None:
     """Until the lock has taken in the flood (accepted and counted, or evicted)."""
-    async with asyncio.timeout(3):
-        while server.pending_count + server.evicted_pending < at_least:  # noqa: ASYNC110 - polls the server's counters
-            await asyncio.sleep(0.01)
+    await eventually(
+        lambda: server.pending_count + server.evicted_pending >= at_least,
+        what=f"the lock to take in {at_least} silent connections",
+        timeout_s=3,
+    )
 
 
 def _locker(

@@ -20,6 +20,7 @@ from assistantx.core.errors import (
     LockProtocolError,
 )
 from assistantx.core.ports.lock import LockEvent
+from helpers.eventually import assert_quiet
 
 from .conftest import FAST, LOCK_ID, tcp_locker
 
@@ -64,8 +65,7 @@ async def test_full_hand_over_is_attributed_and_reported_once(
         ]
         status = await locker.status()
         assert (status.door, status.locked, status.contents) == ("closed", True, ["document:lee"])
-        await asyncio.sleep(0.05)
-        assert events.empty()
+        await assert_quiet(events, 0.05, what="event after the hand-over")
 
 
 async def test_replayed_expired_forged_and_other_lock_codes_are_rejected(

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import asyncio
-from collections.abc import AsyncIterator, Callable
+from collections.abc import AsyncIterator
 
 import pytest
 
@@ -13,6 +13,7 @@ from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.clock import SimClock
 from assistantx.core.ports.lock import LockEvent
+from helpers.eventually import assert_quiet, eventually
 
 from .conftest import FAST, LOCK_ID, QUICK_RETRY
 from .proxy import FaultyProxy
@@ -48,18 +49,10 @@ async def _hand_over(locker: TcpLocker, person: str) -> None:
     await locker.simulate_close()
 
 
-async def _wait_until(condition: Callable[[], bool], limit_s: float = 3.0) -> None:
-    # Polling: the conditions are counters inside the client, with no event to wait on.
-    async with asyncio.timeout(limit_s):
-        while not condition():  # noqa: ASYNC110
-            await asyncio.sleep(0.01)
-
-
 async def _drain(queue: asyncio.Queue[LockEvent], count: int) -> list[LockEvent]:
     async with asyncio.timeout(3):
         events = [await queue.get() for _ in range(count)]
-    await asyncio.sleep(0.1)  # anything extra (a double count) would have arrived by now
-    assert queue.empty(), "an event was delivered twice"
+    await assert_quiet(queue, 0.1, what="event delivered twice")
     return events
 
 
@@ -72,12 +65,12 @@ async def test_a_client_reconnecting_mid_stream_misses_nothing_and_counts_nothin
 
         proxy.refusing = True
         proxy.cut()
-        await _wait_until(lambda: not locker.client.connected)
+        await eventually(lambda: not locker.client.connected, what="the link to drop", timeout_s=3)
         # Physical acts at the locker while the assistant is cut off: events 4-5.
         server.controller.open_for_maintenance("jammed door")
         server.controller.close()
         proxy.refusing = False
-        await _wait_until(lambda: locker.client.connected)
+        await eventually(lambda: locker.client.connected, what="the link to come back", timeout_s=3)
 
         await _hand_over(locker, "zhang")  # events 6-8
         received = await _drain(events, 8)
@@ -101,12 +94,16 @@ async def test_a_half_open_link_is_detected_and_replaced(
         events = locker.subscribe()
         proxy.swallow()  # the link looks up, but nothing gets through any more
         server.controller.open_for_maintenance()  # event 1, swallowed on the old link
-        await _wait_until(lambda: locker.client.connections == 2)
+        await eventually(
+            lambda: locker.client.connections == 2, what="a second connection", timeout_s=3
+        )
         server.controller.close()  # event 2, on the new link
         received = await _drain(events, 2)
         assert [(e.seq, e.kind) for e in received] == [(1, "door_opened"), (2, "door_closed")]
         # The lock drops the dead session by itself once it has been idle too long.
-        await _wait_until(lambda: server.connection_count == 1)
+        await eventually(
+            lambda: server.connection_count == 1, what="one connection at the lock", timeout_s=3
+        )
 
 
 async def test_a_restarted_lock_starts_a_new_count(keys: LockKeys, clock: SimClock) -> None:
@@ -125,7 +122,11 @@ async def test_a_restarted_lock_starts_a_new_count(keys: LockKeys, clock: SimClo
         )
         await second.start()
         try:
-            await _wait_until(lambda: locker.client.connected and locker.client.epoch != old_epoch)
+            await eventually(
+                lambda: locker.client.connected and locker.client.epoch != old_epoch,
+                what="a connection to the restarted lock",
+                timeout_s=3,
+            )
             await _hand_over(locker, "zhang")
             received = await _drain(events, 6)
         finally:

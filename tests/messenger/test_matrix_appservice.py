@@ -178,7 +178,7 @@ async def test_matrix_transactions_have_their_own_size_limit_in_the_service(
 
     from assistantx.service.app import PATH_BODY_LIMITS
     from assistantx.service.body_limit import BodyLimit
-    from messenger.conftest import serve_app
+    from helpers.servers import serve_asgi
 
     ingestor = EventIngestor(store, EventNormalizer(CONFIG, {}), inbox.put)
     app = FastAPI()
@@ -191,7 +191,7 @@ async def test_matrix_transactions_have_their_own_size_limit_in_the_service(
     app.add_middleware(BodyLimit, max_bytes=64 * 1024, paths=PATH_BODY_LIMITS)
     events = [text_event(f"$e{n}", "x" * 1000) for n in range(100)]  # ~120 KiB
     huge = b'{"events": [' + b" " * (17 * 1024 * 1024) + b"]}"
-    async with serve_app(app) as url, httpx.AsyncClient(base_url=url, timeout=30) as client:
+    async with serve_asgi(app) as url, httpx.AsyncClient(base_url=url, timeout=30) as client:
         big = await client.put(
             "/_matrix/app/v1/transactions/50", json={"events": events}, headers=AUTH
         )

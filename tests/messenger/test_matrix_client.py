@@ -10,7 +10,7 @@ from fastapi.responses import JSONResponse
 
 from assistantx.adapters.messenger.matrix import MatrixClient, MatrixError, RetryPolicy
 from assistantx.adapters.messenger.matrix.client import parse_mxc
-from messenger.conftest import serve_app
+from helpers.servers import serve_asgi
 
 
 def scripted_homeserver(answers: list[tuple[int, dict[str, object]]], seen: list[str]) -> FastAPI:
@@ -33,7 +33,7 @@ async def test_send_retries_429_and_5xx_with_the_same_transaction_id() -> None:
         (502, {"errcode": "M_UNKNOWN"}),
         (200, {"event_id": "$sent"}),
     ]
-    async with serve_app(scripted_homeserver(answers, seen)) as url:
+    async with serve_asgi(scripted_homeserver(answers, seen)) as url:
         async with MatrixClient(url, "tok", retry=RetryPolicy(base_delay_s=0.01)) as client:
             started = time.monotonic()
             event_id = await client.send_event(
@@ -49,7 +49,7 @@ async def test_send_retries_429_and_5xx_with_the_same_transaction_id() -> None:
 async def test_client_errors_are_not_retried_and_keep_the_errcode() -> None:
     seen: list[str] = []
     answers = [(403, {"errcode": "M_FORBIDDEN", "error": "not in room"})]
-    async with serve_app(scripted_homeserver(answers, seen)) as url:
+    async with serve_asgi(scripted_homeserver(answers, seen)) as url:
         async with MatrixClient(url, "tok") as client:
             with pytest.raises(MatrixError, match="not in room") as caught:
                 await client.join("!r:o")
@@ -59,7 +59,7 @@ async def test_client_errors_are_not_retried_and_keep_the_errcode() -> None:
 async def test_retries_are_bounded() -> None:
     seen: list[str] = []
     answers = [(500, {})] * 3
-    async with serve_app(scripted_homeserver(answers, seen)) as url:
+    async with serve_asgi(scripted_homeserver(answers, seen)) as url:
         async with MatrixClient(
             url, "tok", retry=RetryPolicy(max_retries=2, base_delay_s=0.01)
         ) as client:

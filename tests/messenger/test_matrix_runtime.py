@@ -15,10 +15,11 @@ from assistantx.core.errors import MessengerError
 from assistantx.core.office import load_office
 from assistantx.core.ports.messenger import ChatRef, InboundMessage
 from assistantx.core.settings import Settings
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.sim.office import SimOffice
+from helpers.office import sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner
 from messenger.conftest import ServeRouters
-from ppdr.scripted_reasoner import ScriptedReasoner
 
 PUSH_YAML = """
 homeserver_url: http://127.0.0.1:9
@@ -152,16 +153,7 @@ async def test_assistant_acknowledges_replayed_messages_once_handled(tmp_path: P
 
     async def run_once(runtime: MatrixRuntime) -> Assistant:
         sim = SimOffice(office)
-        assistant = Assistant(
-            AssistantParts(
-                office=office,
-                messenger=runtime.messenger,
-                robot=sim.robot,
-                locker=sim.locker,
-                clock=sim.clock,
-                reasoner_factory=lambda: ScriptedReasoner([]),
-            )
-        )
+        assistant = sim_assistant(sim, lambda: ScriptedReasoner([]), messenger=runtime.messenger)
         await assistant.start()
         try:
             await runtime.messenger.start()  # no groups, no pull: no homeserver needed

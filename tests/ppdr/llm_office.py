@@ -17,10 +17,11 @@ from assistantx.core.actions import Action
 from assistantx.core.office import Office
 from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from fakes.scripted_llm import RecordedRequest, ScriptedLLM
+from helpers.office import run_one, sim_assistant
 
 GROUPS = ("office_work", "study_group")
 
@@ -156,24 +157,7 @@ def make_assistant(
     *,
     max_steps: int = 20,
 ) -> Assistant:
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=factory,
-            reasoner_name="llm",
-            limits=LoopLimits(max_steps=max_steps),
-        )
-    )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    return assistant
+    return sim_assistant(sim, factory, reasoner_name="llm", limits=LoopLimits(max_steps=max_steps))
 
 
 async def run_llm(
@@ -190,12 +174,5 @@ async def run_llm(
     sim = SimOffice(office, unavailable=unavailable)
     factory = build_factory(office, llm_settings(llm, **settings))
     assistant = make_assistant(office, sim, factory, max_steps=max_steps)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit(requester, text)
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, requester, text)
     return LLMRun(stm, sim, assistant, factory)

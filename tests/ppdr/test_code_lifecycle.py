@@ -10,7 +10,6 @@ from collections.abc import AsyncIterator
 from dataclasses import dataclass, field
 
 import pytest
-from scripted_reasoner import ScriptedReasoner, Step
 
 from assistantx.adapters.lock.protocol import LockController, LockKeys
 from assistantx.adapters.lock.protocol.server import LockServer
@@ -20,9 +19,10 @@ from assistantx.core.actions import Inquire, SendQR, Stop, Wait, WaitInPlace
 from assistantx.core.clock import WallClock
 from assistantx.core.events import TraceEvent
 from assistantx.core.office import Office, load_office
-from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.sim.office import SimOffice
+from helpers.office import sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner, Step
 
 
 @pytest.fixture(scope="module")
@@ -81,21 +81,7 @@ async def _rig(
     clock = WallClock(speedup=200)  # real time runs while scans travel over TCP
     sim = SimOffice(office, unavailable=script.unavailable, locker=locker, clock=clock)
     reasoner = ScriptedReasoner(script.steps)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=locker,
-            clock=clock,
-            reasoner_factory=lambda: reasoner,
-        )
-    )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
+    assistant = sim_assistant(sim, lambda: reasoner)
     rig = Rig(assistant, sim, locker)
 
     async def watch(event: TraceEvent) -> None:

@@ -4,17 +4,17 @@ retry loop, and the requester learns where the robot and the locker's contents a
 from __future__ import annotations
 
 import pytest
-from scripted_reasoner import ScriptedReasoner, Step
 
 from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from assistantx.core.errors import BlockedError
 from assistantx.core.office import Office, load_office
 from assistantx.core.ports.robot import MoveResult
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from assistantx.sim.robot import SimRobot
+from helpers.office import run_one, sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner, Step
 
 
 class RoadBlockedTo(SimRobot):
@@ -42,31 +42,13 @@ async def _run(office: Office, steps: list[Step]) -> tuple[ShortTermMemory, SimO
     sim = SimOffice(office)
     robot = RoadBlockedTo(office, sim.clock, lee_desk)
     sim = SimOffice(office, clock=sim.clock, robot=robot)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=lambda: ScriptedReasoner(steps),
-            reasoner_name="scripted",
-            limits=LoopLimits(max_steps=30),
-        )
+    assistant = sim_assistant(
+        sim,
+        lambda: ScriptedReasoner(steps),
+        reasoner_name="scripted",
+        limits=LoopLimits(max_steps=30),
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit("lee", "bring me Zhang's stapler")
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, "lee", "bring me Zhang's stapler")
     return stm, sim, robot.attempts
 
 

@@ -5,7 +5,6 @@ from __future__ import annotations
 import asyncio
 
 import pytest
-from scripted_reasoner import ScriptedReasoner, Step
 
 from assistantx.agents.base import AgentContext
 from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
@@ -14,9 +13,10 @@ from assistantx.core.office import Office, load_office
 from assistantx.core.trace import Decision, Percept, Plan
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AvailabilityUpdate
-from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
+from helpers.office import run_one, sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner, Step
 
 
 @pytest.fixture(scope="module")
@@ -34,31 +34,13 @@ async def _run(
 ) -> tuple[ShortTermMemory, SimOffice, ScriptedReasoner]:
     sim = SimOffice(office, unavailable=unavailable)
     scripted = reasoner or ScriptedReasoner(steps)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=lambda: scripted,
-            reasoner_name="scripted",
-            limits=LoopLimits(max_steps=max_steps),
-        )
+    assistant = sim_assistant(
+        sim,
+        lambda: scripted,
+        reasoner_name="scripted",
+        limits=LoopLimits(max_steps=max_steps),
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit("lee", "bring me Zhang's stapler")
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, "lee", "bring me Zhang's stapler")
     return stm, sim, scripted
 
 
@@ -154,16 +136,7 @@ async def test_two_instructions_share_the_robot_without_interleaving(office: Off
         )
 
     reasoners = iter([script("zhang"), script("wang")])
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=lambda: next(reasoners),
-        )
-    )
+    assistant = sim_assistant(sim, lambda: next(reasoners))
     await assistant.start()
     try:
         a = await assistant.submit("lee", "one")
@@ -179,26 +152,19 @@ async def test_two_instructions_share_the_robot_without_interleaving(office: Off
 async def test_cancel_tells_the_requester(office: Office) -> None:
     sim = SimOffice(office)
     gate = asyncio.Event()
+    perceiving = asyncio.Event()
 
     class Slow(ScriptedReasoner):
         async def perceive(self, ctx):  # type: ignore[no-untyped-def]
+            perceiving.set()
             await gate.wait()
             return await super().perceive(ctx)
 
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=lambda: Slow([]),
-        )
-    )
+    assistant = sim_assistant(sim, lambda: Slow([]))
     await assistant.start()
     try:
         stm = await assistant.submit("lee", "anything")
-        await asyncio.sleep(0)
+        await asyncio.wait_for(perceiving.wait(), 10)  # the instruction is under way
         assert assistant.cancel(stm.instruction_id)
         with pytest.raises(asyncio.CancelledError):
             await assistant.wait(stm.instruction_id)

@@ -6,7 +6,6 @@ from __future__ import annotations
 import asyncio
 
 import pytest
-from scripted_reasoner import ScriptedReasoner, Step
 
 from assistantx.agents.base import AgentContext
 from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait
@@ -14,9 +13,10 @@ from assistantx.core.errors import ModelBehaviorError
 from assistantx.core.office import Office, load_office
 from assistantx.core.trace import AgentCall, Decision, Percept, Plan
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
+from helpers.office import run_one, sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner, Step
 
 
 @pytest.fixture(scope="module")
@@ -32,31 +32,13 @@ async def _run(
     limits: LoopLimits | None = None,
 ) -> tuple[ShortTermMemory, SimOffice]:
     sim = SimOffice(office, unavailable=unavailable)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=lambda: reasoner,
-            reasoner_name="scripted",
-            limits=limits or LoopLimits(max_steps=8),
-        )
+    assistant = sim_assistant(
+        sim,
+        lambda: reasoner,
+        reasoner_name="scripted",
+        limits=limits or LoopLimits(max_steps=8),
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit("lee", "bring me Zhang's stapler")
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, "lee", "bring me Zhang's stapler")
     return stm, sim
 
 

@@ -13,9 +13,9 @@ from assistantx.core.office import Office, load_office
 from assistantx.core.ports.messenger import OutboundMessage, SentMessage
 from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.failures import failure_summary
 from assistantx.sim.office import SimMessenger, SimOffice
+from helpers.office import run_one, sim_assistant
 
 
 @pytest.fixture(scope="module")
@@ -43,30 +43,10 @@ async def _fetch_stapler(office: Office, without: set[str]) -> tuple[ShortTermMe
     sim = SimOffice(office)
     messenger = NoAccountFor(sim, without)
     sim.messenger = messenger
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=reasoner_factory("symbolic", office, Settings()),
-            reasoner_name="symbolic",
-        )
+    assistant = sim_assistant(
+        sim, reasoner_factory("symbolic", office, Settings()), reasoner_name="symbolic"
     )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit("lee", "bring me a stapler")
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, "lee", "bring me a stapler")
     return stm, messenger.refused
 
 

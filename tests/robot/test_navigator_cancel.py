@@ -11,6 +11,7 @@ from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap
 from assistantx.adapters.robot.navigator import NavigatorRobot
 from assistantx.core.clock import SimClock
 from assistantx.core.office import DEFAULT_OFFICE, load_office
+from helpers.eventually import eventually
 
 
 async def test_a_cancelled_drive_clears_its_path(
@@ -22,10 +23,8 @@ async def test_a_cancelled_drive_clears_its_path(
     )
     async with robot:
         drive = asyncio.create_task(robot.move_to("desk_10"))
-        for _ in range(1000):
-            await asyncio.sleep(0)
-            if robot.state().path:
-                break
+        # Each loop tick: the simulated drive can end within a few.
+        await eventually(lambda: robot.state().path, what="the drive's path", interval_s=0)
         assert robot.state().moving and robot.state().path
         drive.cancel()
         with contextlib.suppress(asyncio.CancelledError):

@@ -4,7 +4,6 @@ where the robot and the item in its locker are."""
 
 from __future__ import annotations
 
-import asyncio
 import json
 from collections.abc import AsyncIterator
 from pathlib import Path
@@ -22,9 +21,10 @@ from assistantx.adapters.robot.navigator import NavigatorRobot
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.service.server import service_server
+from helpers.instructions import ended
+from helpers.servers import serving_app
 from robot.conftest import shared_map
-from service.server import LEE, OPERATOR, free_port
+from service.server import LEE, OPERATOR
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
@@ -52,28 +52,12 @@ async def depot_service(tmp_path: Path) -> AsyncIterator[tuple[httpx.AsyncClient
         map_anchors=_office_anchors_on(map_yaml, tmp_path / "depot.anchors.yaml"),
     )
     app = create_app(settings)
-    port = free_port()
-    server = service_server(app, "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    for _ in range(1500):
-        if server.started:
-            break
-        await asyncio.sleep(0.02)
-    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=30) as client:
+    async with serving_app(app, timeout=30) as client:
         yield client, app.state.runtime
-    server.should_exit = True
-    await task
 
 
 async def _finished(client: httpx.AsyncClient, iid: str) -> dict[str, Any]:
-    for _ in range(1800):
-        body: dict[str, Any] = (
-            await client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE)
-        ).json()
-        if body["status"] not in ("queued", "running"):
-            return body
-        await asyncio.sleep(0.1)
-    raise AssertionError(f"instruction still {body['status']}")
+    return await ended(client, iid, AUTH_LEE, timeout_s=180)
 
 
 async def _submit(client: httpx.AsyncClient) -> str:

@@ -3,7 +3,6 @@ context manager (for tests that restart it on the same data folder or vary its s
 
 from __future__ import annotations
 
-import asyncio
 import json
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
@@ -14,8 +13,8 @@ import httpx
 
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.service.server import service_server
-from service.server import LEE, OPERATOR, ZHANG, free_port
+from helpers.servers import serving_app
+from service.server import LEE, OPERATOR, ZHANG
 
 
 @asynccontextmanager
@@ -28,18 +27,5 @@ async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[http
         "speedup": 50,
     }
     app = create_app(Settings(**{**defaults, **settings}))
-    port = free_port()
-    server = service_server(app, "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    for _ in range(1500):  # uvicorn offers no event for "listening"
-        if server.started or task.done():
-            break
-        await asyncio.sleep(0.02)
-    if task.done():
-        task.result()
-    try:
-        async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
-            yield client
-    finally:
-        server.should_exit = True
-        await task
+    async with serving_app(app) as client:
+        yield client

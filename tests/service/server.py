@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -15,16 +14,14 @@ from pathlib import Path
 
 import httpx
 
+from helpers.processes import wait_ready
+from helpers.servers import free_port
+
 HERE = Path(__file__).resolve().parent
 OPERATOR = "operator-token-for-tests-0001"
 LEE = "lee-token-for-tests-00000001"
 ZHANG = "zhang-token-for-tests-000001"
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
+__all__ = ["LEE", "OPERATOR", "ZHANG", "Server", "base_env", "free_port", "serve", "sse", "start"]
 
 
 def base_env(data_dir: Path, **extra: str) -> dict[str, str]:
@@ -67,19 +64,15 @@ def start(args: list[str], env: Mapping[str, str], port: int, timeout_s: float =
     with log.open("wb") as out:  # the child keeps its own copy of the descriptor
         process = subprocess.Popen(args, env=dict(env), stdout=out, stderr=subprocess.STDOUT)
     url = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline:
-        if process.poll() is not None:
-            raise RuntimeError(f"server exited with {process.returncode}:\n{log.read_text()}")
-        try:
-            if httpx.get(f"{url}/readyz", timeout=1).status_code == 200:
-                return Server(process, url, log)
-        except httpx.TransportError:
-            pass
-        time.sleep(0.1)
-    process.kill()
-    process.wait(10)  # reaped here, not left for a later test's garbage collection to warn about
-    raise RuntimeError(f"server did not become ready in {timeout_s} s:\n{log.read_text()}")
+    try:
+        wait_ready(process, f"{url}/readyz", timeout_s=timeout_s)
+    except AssertionError as exc:
+        process.kill()
+        process.wait(10)  # reaped here, not left for a later test's garbage collection to warn
+        raise RuntimeError(f"{exc}:\n{log.read_text()}") from None
+    except RuntimeError as exc:
+        raise RuntimeError(f"{exc}:\n{log.read_text()}") from None
+    return Server(process, url, log)
 
 
 def serve(data_dir: Path, port: int, **extra: str) -> Server:

@@ -17,14 +17,12 @@ from assistantx.core.actions import Action, Inform, Inquire, Move, SendQR, Stop,
 from assistantx.core.trace import (
     ActionResult,
     AgentCall,
-    Decision,
-    Observation,
     Percept,
     Plan,
-    Reflection,
     SubGoal,
 )
 from assistantx.memory.updates import AvailabilityUpdate, MemoryUpdate
+from helpers.scripted_reasoner import ScriptedReasoner
 
 
 def _done(ctx: AgentContext, kind: str, ok: bool = True, **match: str) -> bool:
@@ -35,8 +33,24 @@ def _done(ctx: AgentContext, kind: str, ok: bool = True, **match: str) -> bool:
     return False
 
 
-class StaplerReasoner(Reasoner):
+def _unanswered(ctx: AgentContext, results: list[ActionResult]) -> list[MemoryUpdate]:
+    """Whoever was asked in a step whose wait timed out is believed unavailable."""
+    if not any(r.action.type == "wait" and not r.ok for r in results):
+        return []
+    return [
+        AvailabilityUpdate(person=r.action.contact, available=False, evidence="no answer")
+        for r in results
+        if isinstance(r.action, Inquire)
+    ]
+
+
+class StaplerReasoner(ScriptedReasoner):
+    """A policy instead of a script: each decision is derived from the instruction's memory."""
+
     name = "stapler"
+
+    def __init__(self) -> None:
+        super().__init__([], updates=_unanswered)
 
     def _lender(self, ctx: AgentContext) -> str | None:
         for turn in ctx.stm.dialogue:
@@ -51,7 +65,7 @@ class StaplerReasoner(Reasoner):
     async def plan(self, ctx: AgentContext, percept: Percept) -> Plan:
         return Plan(goal="bring a stapler", subgoals=[SubGoal(description="find a lender")])
 
-    async def decide(self, ctx: AgentContext, percept: Percept, plan: Plan) -> Decision:
+    def next_actions(self, ctx: AgentContext) -> list[Action]:
         me = ctx.stm.requester
         lender = self._lender(ctx)
         actions: list[Action]
@@ -89,27 +103,7 @@ class StaplerReasoner(Reasoner):
                 actions = [WaitInPlace(person=me, timeout_s=3600)]
         else:
             actions = [Stop(outcome="done", summary=f"{lender}'s stapler is in your hands.")]
-        return Decision(thought="stapler", actions=actions)
-
-    async def reflect(
-        self,
-        ctx: AgentContext,
-        percept: Percept,
-        plan: Plan,
-        decision: Decision,
-        results: list[ActionResult],
-        observed: Observation,
-    ) -> Reflection:
-        updates: list[MemoryUpdate] = []
-        for r in results:
-            if r.action.type == "wait" and not r.ok:
-                asked = [a for a in decision.actions if isinstance(a, Inquire)]
-                for a in asked:
-                    updates.append(
-                        AvailabilityUpdate(person=a.contact, available=False, evidence="no answer")
-                    )
-        ok = all(r.ok for r in results)
-        return Reflection(verdict="Y" if ok else "N", reason="stapler", updates=updates)
+        return actions
 
 
 def build_factory(office: Any, settings: Any) -> Callable[[], Reasoner]:

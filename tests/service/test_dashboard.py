@@ -4,19 +4,16 @@ results, and the locker codes with the operator's simulated scan."""
 
 from __future__ import annotations
 
-import asyncio
 import contextlib
 import io
 import json
 import os
-import socket
 from collections.abc import AsyncIterator
 from pathlib import Path
 
 import httpx
 import numpy as np
 import pytest
-import uvicorn
 from matplotlib.image import imread
 
 from assistantx.adapters.robot.nav.anchors import load_anchors
@@ -26,16 +23,11 @@ from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.dashboard import occupancy_grey
+from helpers.eventually import eventually
+from helpers.servers import serving_app
 
 TOKEN = "operator-token-for-dashboard-tests"
 LEE_TOKEN = "lee-token-for-dashboard-tests-01"
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port: int = sock.getsockname()[1]
-        return port
 
 
 @contextlib.asynccontextmanager
@@ -50,25 +42,9 @@ async def serve(tmp_path: Path, **overrides: object) -> AsyncIterator[httpx.Asyn
         "reasoner_builder": "service.stapler_reasoner:build_factory",
     }
     settings = Settings(**{**values, **overrides})  # type: ignore[arg-type]
-    config = uvicorn.Config(
-        create_app(settings), host="127.0.0.1", port=_free_port(), log_level="warning", ws="none"
-    )
-    server = uvicorn.Server(config)
-    task = asyncio.create_task(server.serve())
-    while not server.started:
-        if task.done():
-            task.result()
-        await asyncio.sleep(0.01)
-    try:
-        async with httpx.AsyncClient(
-            base_url=f"http://127.0.0.1:{config.port}",
-            headers={"Authorization": f"Bearer {TOKEN}"},
-            timeout=10,
-        ) as client:
-            yield client
-    finally:
-        server.should_exit = True
-        await task
+    headers = {"Authorization": f"Bearer {TOKEN}"}
+    async with serving_app(create_app(settings), headers=headers) as client:
+        yield client
 
 
 @pytest.fixture
@@ -217,14 +193,12 @@ async def test_a_half_written_summary_is_a_clear_503(tmp_path: Path) -> None:
 async def _wait_for(
     client: httpx.AsyncClient, path: str, ready: object, timeout_s: float = 20
 ) -> object:
-    loop = asyncio.get_running_loop()
-    deadline = loop.time() + timeout_s
-    while loop.time() < deadline:
-        body = (await client.get(path)).json()
-        if ready(body):  # type: ignore[operator]
-            return body
-        await asyncio.sleep(0.05)
-    raise AssertionError(f"{path} never became ready: {body}")
+    async def body() -> object:
+        return (await client.get(path)).json()
+
+    return await eventually(
+        body, until=ready, what=f"{path} to be ready", timeout_s=timeout_s, interval_s=0.05
+    )
 
 
 async def test_the_operator_plays_the_people_at_the_locker(tmp_path: Path) -> None:

@@ -3,10 +3,10 @@
 
 from __future__ import annotations
 
-import asyncio
 import re
 from pathlib import Path
 
+from helpers.instructions import ended
 from service.test_dashboard import serve
 
 
@@ -44,12 +44,7 @@ async def test_metrics_report_the_embedded_reasoner_as_agent_calls(tmp_path: Pat
             "/v1/instructions", json={"requester": "lee", "text": "Bring me a stapler"}
         )
         assert created.status_code == 202, created.text
-        url = created.headers["location"]
-        for _ in range(600):
-            record = (await client.get(url)).json()
-            if record["status"] not in ("queued", "running"):
-                break
-            await asyncio.sleep(0.1)
+        record = await ended(client, created.json()["id"])
         assert record["status"] not in ("queued", "running")
         text = (await client.get("/metrics")).text
     agents = _samples(text, "assistantx_agent_call_latency_seconds")

@@ -14,8 +14,8 @@ from assistantx.core.events import TraceEvent
 from assistantx.core.settings import Settings
 from assistantx.memory.journal import Journal
 from assistantx.service.app import create_app
-from assistantx.service.server import service_server
-from service.server import OPERATOR, free_port
+from helpers.servers import serving_app
+from service.server import OPERATOR
 
 AUTH = {"Authorization": f"Bearer {OPERATOR}"}
 
@@ -31,18 +31,8 @@ async def journaled(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
         event = TraceEvent(instruction_id="ins-old", kind="observation", time=100.0 + n, step=n)
         journal.record(event)
     journal.close()
-    port = free_port()
-    app = create_app(Settings(data_dir=data, operator_token=OPERATOR))
-    server = service_server(app, "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    for _ in range(500):
-        if server.started:
-            break
-        await asyncio.sleep(0.02)
-    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", timeout=10) as client:
+    async with serving_app(create_app(Settings(data_dir=data, operator_token=OPERATOR))) as client:
         yield client
-    server.should_exit = True
-    await task
 
 
 async def _replayed(client: httpx.AsyncClient, path: str, headers: dict[str, str]) -> list[dict]:

@@ -3,11 +3,11 @@ out an id its journal holds, so every owner keeps reading and cancelling their o
 
 from __future__ import annotations
 
-import asyncio
 from pathlib import Path
 
 import httpx
 
+from helpers.eventually import eventually
 from service.inprocess import running_service
 from service.server import LEE, ZHANG
 
@@ -23,14 +23,13 @@ async def _dm_instruction(client: httpx.AsyncClient, headers: dict[str, str]) ->
     }
     r = await client.post("/v1/messages", json={"text": REQUEST}, headers=headers)
     assert r.status_code == 202, r.text
-    for _ in range(250):
+
+    async def new() -> list[str]:
         items = (await client.get("/v1/instructions", headers=headers)).json()["items"]
-        new = [i["id"] for i in items if i["id"] not in before]
-        if new:
-            [iid] = new
-            return str(iid)
-        await asyncio.sleep(0.02)
-    raise AssertionError("the direct message started no instruction")
+        return [str(i["id"]) for i in items if i["id"] not in before]
+
+    [iid] = await eventually(new, what="an instruction started by the direct message")
+    return iid
 
 
 async def test_ids_of_dm_instructions_are_not_reused_after_a_restart(tmp_path: Path) -> None:

@@ -3,32 +3,23 @@ world's snapshot, while simulated colleagues hold them (real uvicorn server, rea
 
 from __future__ import annotations
 
-import asyncio
 import json
 import stat
 from pathlib import Path
-
-import httpx
 
 from assistantx.core.events import TraceEvent
 from assistantx.core.ports.messenger import OutboundMessage
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.service.server import service_server
-from service.server import OPERATOR, free_port
+from helpers.instructions import ended
+from helpers.servers import serving_app
+from service.server import OPERATOR
 
 
 async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -> None:
     data_dir = tmp_path / "data"
     settings = Settings(data_dir=data_dir, operator_token=OPERATOR, speedup=50)
     app = create_app(settings)
-    port = free_port()
-    server = service_server(app, "127.0.0.1", port, log_level="warning")
-    task = asyncio.create_task(server.serve())
-    while not server.started:
-        if task.done():
-            task.result()
-        await asyncio.sleep(0.02)
     runtime = app.state.runtime
     payloads: list[str] = []
     snapshots: list[str] = []  # the simulated world as journaled while people held codes
@@ -40,27 +31,14 @@ async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -
         if event.kind == "action_result" and runtime.sim.codes:
             snapshots.append(json.dumps(runtime.journal.state("sim_world")))
 
-    runtime.messenger.relay_to(note)
-    runtime.assistant.subscribe(look)
-    try:
-        async with httpx.AsyncClient(
-            base_url=f"http://127.0.0.1:{port}",
-            headers={"Authorization": f"Bearer {OPERATOR}"},
-            timeout=10,
-        ) as client:
-            created = await client.post(
-                "/v1/instructions", json={"requester": "lee", "text": "bring me a stapler"}
-            )
-            iid = created.json()["id"]
-            for _ in range(1200):
-                body = (await client.get(f"/v1/instructions/{iid}")).json()
-                if body["status"] not in ("queued", "running"):
-                    break
-                await asyncio.sleep(0.05)
-            assert body["status"] == "done", body
-    finally:
-        server.should_exit = True
-        await task
+    async with serving_app(app, headers={"Authorization": f"Bearer {OPERATOR}"}) as client:
+        runtime.messenger.relay_to(note)  # the lifespan made the messenger
+        runtime.assistant.subscribe(look)
+        created = await client.post(
+            "/v1/instructions", json={"requester": "lee", "text": "bring me a stapler"}
+        )
+        body = await ended(client, created.json()["id"])
+        assert body["status"] == "done", body
 
     assert len(payloads) == 2  # the lender's code and the requester's
     assert snapshots  # people held codes while the world was journaled

@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import asyncio
 from pathlib import Path
-from typing import Any
 
 import httpx
 
+from helpers.eventually import eventually
+from helpers.instructions import ended as instruction_ended
 from service.inprocess import running_service
 from service.server import LEE, OPERATOR
 
@@ -22,15 +23,6 @@ async def _ids(api: httpx.AsyncClient) -> list[str]:
     return [str(i["id"]) for i in items]
 
 
-async def _until_ended(api: httpx.AsyncClient, iid: str) -> dict[str, Any]:
-    for _ in range(1500):
-        body: dict[str, Any] = (await api.get(f"/v1/instructions/{iid}", headers=OP)).json()
-        if body["status"] not in ("queued", "running"):
-            return body
-        await asyncio.sleep(0.02)
-    raise AssertionError(f"{iid} did not end")
-
-
 async def _dm(api: httpx.AsyncClient, sender: str, text: str, **extra: str) -> None:
     body = {"text": text, "sender": sender, **extra}
     r = await api.post("/v1/messages", json=body, headers=OP)
@@ -39,13 +31,12 @@ async def _dm(api: httpx.AsyncClient, sender: str, text: str, **extra: str) -> N
 
 async def _last_out(api: httpx.AsyncClient, person: str, after: int) -> list[str]:
     """The assistant's messages in ``person``'s DM after sequence number ``after``."""
-    for _ in range(250):
+
+    async def out() -> list[str]:
         chat = (await api.get(f"/v1/chats/dm/{person}?after={after}", headers=OP)).json()
-        out = [str(m["text"]) for m in chat if m["direction"] == "out"]
-        if out:
-            return out
-        await asyncio.sleep(0.02)
-    return []
+        return [str(m["text"]) for m in chat if m["direction"] == "out"]
+
+    return await eventually(out, what=f"the assistant's answer to {person}", timeout_s=5)
 
 
 async def _seq(api: httpx.AsyncClient, person: str) -> int:
@@ -61,7 +52,7 @@ async def test_late_replies_and_chatter_are_acknowledged_not_executed(tmp_path: 
             headers=AS_LEE,
         )
         iid = r.json()["id"]
-        ended = await _until_ended(api, iid)
+        ended = await instruction_ended(api, iid, OP)
         assert ended["status"] == "done"
         wang = (await api.get("/v1/chats/dm/wang", headers=OP)).json()
         [question] = [m["question_id"] for m in wang if m["question_id"]]
@@ -87,10 +78,9 @@ async def test_late_replies_and_chatter_are_acknowledged_not_executed(tmp_path: 
         # Requests still start instructions, also from the colleague contacted before.
         await _dm(api, "wang", "Please bring me a coffee.")
         await _dm(api, "zhang", "Bring me a stapler")
-        for _ in range(250):
-            if len(await _ids(api)) == 3:
-                break
-            await asyncio.sleep(0.02)
+        await eventually(
+            lambda: _ids(api), until=lambda ids: len(ids) == 3, what="two more instructions"
+        )
         started = (await api.get("/v1/instructions", headers=OP)).json()["items"]
         assert sorted((i["requester"], i["text"]) for i in started[:2]) == [
             ("wang", "Please bring me a coffee."),

@@ -6,13 +6,13 @@ from __future__ import annotations
 import socket
 import subprocess
 import sys
-import time
 from collections import Counter
 from pathlib import Path
 
 import httpx
 
 from assistantx.memory.journal import Journal
+from helpers.eventually import eventually_sync
 from service.server import LEE, base_env, free_port, serve
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
@@ -34,13 +34,13 @@ def _start_running(client: httpx.Client) -> str:
     )
     assert r.status_code == 202, r.text
     iid = str(r.json()["id"])
-    for _ in range(200):
-        body = client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json()
-        if body["trace"] and body["trace"]["steps"]:  # no trace while queued for admission
-            assert body["status"] == "running"
-            return iid
-        time.sleep(0.05)
-    raise AssertionError("the instruction did not start")
+    body = eventually_sync(
+        lambda: client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json(),
+        until=lambda b: b["trace"] and b["trace"]["steps"],  # no trace while queued
+        what="the instruction to start",
+    )
+    assert body["status"] == "running"
+    return iid
 
 
 def _events(data_dir: Path) -> list[tuple[str, str, int | None]]:

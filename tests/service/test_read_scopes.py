@@ -3,25 +3,16 @@ HTTP against a real uvicorn server with simulated colleagues and the embedded re
 
 from __future__ import annotations
 
-import asyncio
 import json
 
 import httpx
 
+from helpers.instructions import ended
 from service.server import LEE, OPERATOR, ZHANG
 
 OP = {"Authorization": f"Bearer {OPERATOR}"}
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
 AS_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
-
-
-async def _finished(api: httpx.AsyncClient, iid: str) -> dict[str, object]:
-    for _ in range(600):
-        body: dict[str, object] = (await api.get(f"/v1/instructions/{iid}", headers=OP)).json()
-        if body["status"] not in ("queued", "running"):
-            return body
-        await asyncio.sleep(0.05)
-    raise AssertionError(f"{iid} did not finish: {body}")
 
 
 async def _memory_updates(api: httpx.AsyncClient, headers: dict[str, str]) -> list[dict]:  # type: ignore[type-arg]
@@ -40,7 +31,7 @@ async def test_a_person_reads_only_their_own_instructions_memory_updates(
         headers=AS_ZHANG,
     )
     zhang_iid = r.json()["id"]
-    await _finished(api, zhang_iid)
+    await ended(api, zhang_iid, OP)
     await api.patch("/v1/people/wang", json={"available": False}, headers=OP)
 
     everything = await _memory_updates(api, OP)
@@ -74,7 +65,7 @@ async def test_a_person_record_carries_no_instruction_ids_or_excerpts(
         headers=AS_ZHANG,
     )
     zhang_iid = r.json()["id"]
-    await _finished(api, zhang_iid)
+    await ended(api, zhang_iid, OP)
     touched = {
         u["update"].get("person") for u in await _memory_updates(api, OP) if u["instruction_id"]
     } - {None}

@@ -4,14 +4,17 @@ from __future__ import annotations
 
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
+from typing import Any
 
-from assistantx.agents.symbolic import build_factory
+from assistantx.agents.symbolic import Task, build_factory
 from assistantx.core.events import TraceEvent
 from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.sim.office import SimOffice
+from helpers.office import run_one, sim_assistant
 
 EventHook = Callable[[TraceEvent, SimOffice], Awaitable[None]]
 
@@ -36,21 +39,7 @@ async def run_instruction(
     on_event: EventHook | None = None,
 ) -> Run:
     sim = SimOffice(office, unavailable=unavailable)
-    assistant = Assistant(
-        AssistantParts(
-            office=office,
-            messenger=sim.messenger,
-            robot=sim.robot,
-            locker=sim.locker,
-            clock=sim.clock,
-            reasoner_factory=build_factory(office, Settings()),
-        )
-    )
-
-    async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
-
-    assistant.on_instruction_start(register)
+    assistant = sim_assistant(sim, build_factory(office, Settings()))
     if on_event is not None:
         hook = on_event
 
@@ -58,12 +47,39 @@ async def run_instruction(
             await hook(event, sim)
 
         assistant.subscribe(sink)
-    await sim.locker.start()
-    await assistant.start()
-    try:
-        stm = await assistant.submit(requester, text)
-        stm = await assistant.wait(stm.instruction_id)
-    finally:
-        await assistant.stop()
-        await sim.locker.stop()
+    stm = await run_one(sim, assistant, requester, text)
     return Run(stm, sim, assistant)
+
+
+def answer_first_question(
+    contact: str, person: str, chat: ChatRef, text: str, asked: list[str]
+) -> EventHook:
+    """An event hook: the first time the assistant asks ``contact`` something, ``person``
+    answers ``text`` in ``chat``; the question is appended to ``asked``."""
+
+    async def answer(event: TraceEvent, sim: SimOffice) -> None:
+        result = event.data.get("result")
+        if event.kind != "action_result" or not isinstance(result, dict):
+            return
+        action = result["action"]
+        if action["type"] == "inquire" and action["contact"] == contact and not asked:
+            asked.append(action["question"])
+            sim.messenger.post(person, chat, text, in_reply_to=result["data"]["question_id"])
+
+    return answer
+
+
+def expected_tasks(case: dict[str, Any], requester: str) -> list[Task]:
+    """The frame a case of a YAML understanding set expects (omitted fields: their defaults,
+    the recipient the requester)."""
+    return [
+        Task(
+            kind=t["kind"],
+            item=t.get("item"),
+            owner=t.get("owner"),
+            recipient=t.get("recipient", requester),
+            actor=t.get("actor"),
+            operation=t.get("operation"),
+        )
+        for t in case["tasks"]
+    ]

@@ -9,13 +9,11 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-from symbolic_run import run_instruction
+from symbolic_run import answer_first_question, run_instruction
 
 from assistantx.agents.symbolic import InstructionParser, Task
-from assistantx.core.events import TraceEvent
 from assistantx.core.office import Office, parse_office
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.sim.office import SimOffice
 
 
 @pytest.fixture(scope="module")
@@ -227,20 +225,13 @@ async def test_requester_answering_the_group_chat_is_not_taken_as_helper(office:
     # every known pen owner is away; the group chat is asked; the requester (who owns a pen)
     # says yes in the group — the assistant must not borrow their own pen back to them
     volunteered: list[str] = []
-
-    async def requester_volunteers(event: TraceEvent, sim: SimOffice) -> None:
-        result = event.data.get("result")
-        if event.kind != "action_result" or not isinstance(result, dict):
-            return
-        action = result["action"]
-        if action["type"] == "inquire" and action["contact"] == "office_work" and not volunteered:
-            volunteered.append(action["question"])
-            sim.messenger.post(
-                "zhang",
-                ChatRef(kind="group", id="office_work"),
-                "Yes, I have one, you can borrow it.",
-                in_reply_to=result["data"]["question_id"],
-            )
+    requester_volunteers = answer_first_question(
+        "office_work",
+        "zhang",
+        ChatRef(kind="group", id="office_work"),
+        "Yes, I have one, you can borrow it.",
+        volunteered,
+    )
 
     run = await run_instruction(
         office,

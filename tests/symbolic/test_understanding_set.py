@@ -12,8 +12,9 @@ from typing import Any
 
 import pytest
 import yaml
+from symbolic_run import expected_tasks
 
-from assistantx.agents.symbolic import InstructionParser, Task
+from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import load_office
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -42,19 +43,8 @@ def test_case(case: dict[str, Any]) -> None:
     requester = case["as"]
     frame = _parser(case["office"]).parse(case["text"], requester)
     if "tasks" in case:
-        expected = [
-            Task(
-                kind=t["kind"],
-                item=t.get("item"),
-                owner=t.get("owner"),
-                recipient=t.get("recipient", requester),
-                actor=t.get("actor"),
-                operation=t.get("operation"),
-            )
-            for t in case["tasks"]
-        ]
         assert frame.understood, frame.question or frame.decline
-        assert frame.tasks == expected
+        assert frame.tasks == expected_tasks(case, requester)
     elif "decline" in case:
         assert frame.tasks == [] and frame.decline, frame.question
         assert frame.decline_outcome == case["decline"]

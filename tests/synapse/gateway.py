@@ -3,19 +3,18 @@ current test mounted (or acknowledging and discarding when none is)."""
 
 from __future__ import annotations
 
-import asyncio
 import contextlib
 import logging
 from collections.abc import AsyncIterator
 from typing import Any
 
-import uvicorn
 from fastapi import APIRouter, FastAPI
 from starlette.responses import JSONResponse
 from starlette.types import Receive, Scope, Send
 
 from assistantx.service.app import PATH_BODY_LIMITS
 from assistantx.service.body_limit import BodyLimit
+from helpers.servers import serve_asgi
 
 logger = logging.getLogger(__name__)
 
@@ -25,6 +24,7 @@ class AppserviceGateway:
         self._app: Any = None
         self._down = False
         self.discarded = 0
+        self.refused = 0  # requests answered 503 while down
 
     def mount(self, router: APIRouter) -> None:
         app = FastAPI()
@@ -55,6 +55,7 @@ class AppserviceGateway:
             await self._app(scope, receive, send)
             return
         if self._down:
+            self.refused += 1
             response = JSONResponse({"errcode": "M_UNKNOWN", "error": "restarting"}, 503)
         else:
             self.discarded += 1
@@ -65,24 +66,5 @@ class AppserviceGateway:
     @contextlib.asynccontextmanager
     async def serve(cls, port: int) -> AsyncIterator[AppserviceGateway]:
         gateway = cls()
-        config = uvicorn.Config(
-            gateway,
-            host="127.0.0.1",
-            port=port,
-            lifespan="off",
-            log_level="warning",
-            ws="none",
-            http="h11",
-        )
-        server = uvicorn.Server(config)
-        task = asyncio.create_task(server.serve())
-        while not server.started:
-            if task.done():
-                task.result()
-                raise RuntimeError("the appservice gateway did not start")
-            await asyncio.sleep(0.02)
-        try:
+        async with serve_asgi(gateway, port):
             yield gateway
-        finally:
-            server.should_exit = True
-            await task

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import asyncio
-import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from assistantx.adapters.messenger.matrix import MatrixClient, MatrixConfig, SqliteEventStore
 from assistantx.core.ports.messenger import InboundMessage
+from helpers.eventually import eventually
 
 WAIT_S = 20.0
 
@@ -20,22 +20,11 @@ async def next_message(
     return await asyncio.wait_for(inbox.get(), timeout_s)
 
 
-async def assert_quiet(inbox: asyncio.Queue[InboundMessage], seconds: float) -> None:
-    """Nothing more arrives within ``seconds`` (no duplicate deliveries)."""
-    try:
-        extra = await asyncio.wait_for(inbox.get(), seconds)
-    except TimeoutError:
-        return
-    raise AssertionError(f"unexpected extra inbound message: {extra!r}")
-
-
 async def wait_joined(client: MatrixClient, room_id: str, user_id: str) -> None:
-    deadline = time.monotonic() + WAIT_S
-    while time.monotonic() < deadline:
-        if user_id in await client.joined_members(room_id):
-            return
-        await asyncio.sleep(0.1)
-    raise AssertionError(f"{user_id} did not join {room_id} in {WAIT_S}s")
+    async def joined() -> bool:
+        return user_id in await client.joined_members(room_id)
+
+    await eventually(joined, what=f"{user_id} to join {room_id}", timeout_s=WAIT_S, interval_s=0.1)
 
 
 async def room_messages(client: MatrixClient, room_id: str) -> list[dict[str, Any]]:
@@ -48,25 +37,27 @@ async def room_messages(client: MatrixClient, room_id: str) -> list[dict[str, An
 async def wait_room_messages(
     client: MatrixClient, room_id: str, count: int
 ) -> list[dict[str, Any]]:
-    deadline = time.monotonic() + WAIT_S
-    while time.monotonic() < deadline:
-        events = await room_messages(client, room_id)
-        if len(events) >= count:
-            return events
-        await asyncio.sleep(0.1)
-    raise AssertionError(f"fewer than {count} messages in {room_id} after {WAIT_S}s")
+    return await eventually(
+        lambda: room_messages(client, room_id),
+        until=lambda events: len(events) >= count,
+        what=f"{count} messages in {room_id}",
+        timeout_s=WAIT_S,
+        interval_s=0.1,
+    )
 
 
 async def join_when_invited(client: MatrixClient, room_id: str) -> None:
-    deadline = time.monotonic() + WAIT_S
-    while True:
-        try:
-            await client.join(room_id)
-            return
-        except Exception:
-            if time.monotonic() > deadline:
-                raise
-            await asyncio.sleep(0.1)
+    async def joined() -> bool:
+        await client.join(room_id)
+        return True
+
+    await eventually(
+        joined,
+        what=f"an invitation to {room_id}",
+        timeout_s=WAIT_S,
+        interval_s=0.1,
+        ignore=(Exception,),
+    )
 
 
 def derive(config: MatrixConfig, **update: Any) -> MatrixConfig:

@@ -15,15 +15,16 @@ import hmac
 import os
 import secrets
 import signal
-import socket
 import subprocess
-import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import httpx
 import yaml
+
+from helpers.processes import wait_ready
+from helpers.servers import free_port
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 INSTALL_SCRIPT = REPO_ROOT / ".ci" / "install-synapse"
@@ -33,13 +34,6 @@ STARTUP_TIMEOUT_S = 90.0
 
 class SynapseUnavailableError(RuntimeError):
     """Synapse could not be installed or started (tests must fail, never skip)."""
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port: int = sock.getsockname()[1]
-        return port
 
 
 def install_synapse() -> Path:
@@ -166,24 +160,21 @@ class SynapseHomeserver:
             command, cwd=self.workdir, stdout=stderr, stderr=subprocess.STDOUT
         )
         stderr.close()
-        deadline = time.monotonic() + STARTUP_TIMEOUT_S
-        while time.monotonic() < deadline:
-            if self._process.poll() is not None:
-                output = (self.workdir / "stderr.log").read_text(errors="replace")
-                raise SynapseUnavailableError(
-                    f"synapse exited with {self._process.returncode}:\n{output[-4000:]}\n"
-                    f"{self.log_tail()}"
-                )
-            try:
-                if httpx.get(f"{self.url}/health", timeout=1.0).status_code == 200:
-                    return
-            except httpx.TransportError:
-                pass
-            time.sleep(0.2)
-        self.stop()
-        raise SynapseUnavailableError(
-            f"synapse did not answer /health in {STARTUP_TIMEOUT_S}s:\n{self.log_tail()}"
-        )
+        try:
+            wait_ready(
+                self._process, f"{self.url}/health", timeout_s=STARTUP_TIMEOUT_S, interval_s=0.2
+            )
+        except RuntimeError:
+            output = (self.workdir / "stderr.log").read_text(errors="replace")
+            raise SynapseUnavailableError(
+                f"synapse exited with {self._process.returncode}:\n{output[-4000:]}\n"
+                f"{self.log_tail()}"
+            ) from None
+        except AssertionError:
+            self.stop()
+            raise SynapseUnavailableError(
+                f"synapse did not answer /health in {STARTUP_TIMEOUT_S}s:\n{self.log_tail()}"
+            ) from None
 
     def stop(self) -> None:
         process, self._process = self._process, None

@@ -25,7 +25,7 @@ from assistantx.core.office import Office
 from assistantx.core.settings import Settings
 from assistantx.runtime.assistant import ReasonerFactory
 from assistantx.service.app import create_app
-from ppdr.scripted_reasoner import ScriptedReasoner
+from helpers.scripted_reasoner import ScriptedReasoner
 from synapse.gateway import AppserviceGateway
 
 OPERATOR = "operator-token-for-the-matrix-tests"
@@ -71,6 +71,7 @@ class MatrixService:
         self.config_path = data_dir.parent / f"{data_dir.name}-matrix.yaml"
         self.app: FastAPI | None = None
         self._lifespan: contextlib.AbstractAsyncContextManager[Any] | None = None
+        self._an_end = asyncio.Condition()  # notified by the assistant's instruction-end hook
         _policy[:] = [policy]
 
     @property
@@ -104,6 +105,7 @@ class MatrixService:
         self.app = create_app(settings)
         self._lifespan = self.app.router.lifespan_context(self.app)
         await self._lifespan.__aenter__()
+        self.runtime.assistant.on_instruction_end(self._note_end)
         self.gateway.mount_app(self.app)
         poller = self.runtime.matrix.messenger.poller
         if poller is not None:
@@ -130,8 +132,17 @@ class MatrixService:
         assistant = self.runtime.assistant
         return {**assistant.finished, **{k: r.stm for k, r in assistant.running.items()}}
 
+    async def _note_end(self, stm: Any) -> None:
+        async with self._an_end:
+            self._an_end.notify_all()
+
     async def wait_ended(self, count: int = 1, timeout_s: float = 30) -> list[Any]:
-        async with asyncio.timeout(timeout_s):
-            while len(self.runtime.assistant.finished) < count:  # noqa: ASYNC110 - no hook
-                await asyncio.sleep(0.05)
-        return list(self.runtime.assistant.finished.values())
+        finished = self.runtime.assistant.finished
+        try:
+            async with asyncio.timeout(timeout_s), self._an_end:
+                await self._an_end.wait_for(lambda: len(finished) >= count)
+        except TimeoutError:
+            raise AssertionError(
+                f"{count} instruction(s) to end: {len(finished)} ended in {timeout_s:g} s"
+            ) from None
+        return list(finished.values())

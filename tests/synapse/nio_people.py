@@ -9,11 +9,9 @@ conversation the way a person does.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import io
 import logging
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 import httpx
@@ -29,34 +27,17 @@ from nio import (
 )
 from PIL import Image
 
+from helpers.eventually import eventually
 from synapse.helpers import WAIT_S
 from synapse.homeserver import Account
+from synapse.inbox import Inbox, Seen
 
 logger = logging.getLogger(__name__)
 
 
-@dataclass(frozen=True)
-class Seen:
-    """One event from someone else, as the person's client received it."""
-
-    room_id: str
-    event_id: str
-    sender: str
-    type: str
-    content: dict[str, Any]
-
-    @property
-    def msgtype(self) -> str:
-        return str(self.content.get("msgtype", ""))
-
-    @property
-    def body(self) -> str:
-        return str(self.content.get("body", ""))
-
-
-class NioPerson:
+class NioPerson(Inbox):
     def __init__(self, name: str, account: Account, homeserver_url: str) -> None:
-        self.name = name
+        super().__init__(name)
         self.user_id = account.user_id
         self.client = AsyncClient(
             homeserver_url,
@@ -65,13 +46,9 @@ class NioPerson:
         )
         self.client.access_token = account.access_token
         self.client.user_id = account.user_id
-        self.seen: list[Seen] = []
         self.auto_join = True
         # Messages a test reads apart (the feedback survey after each instruction).
         self.aside: Callable[[Seen], bool] = lambda m: False
-        self._taken: set[str] = set()
-        self._changed = asyncio.Condition()
-        self._task: asyncio.Task[None] | None = None
 
     async def start(self) -> None:
         first = await self.client.sync(timeout=0)
@@ -79,11 +56,7 @@ class NioPerson:
         self._task = asyncio.create_task(self._run(), name=f"nio-{self.name}")
 
     async def stop(self) -> None:
-        task, self._task = self._task, None
-        if task is not None:
-            task.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await task
+        await self.stop_syncing()
         await self.client.close()
 
     async def _run(self) -> None:
@@ -100,58 +73,25 @@ class NioPerson:
                     room_id,
                     str(event.source["event_id"]),
                     str(event.source["sender"]),
-                    str(event.source.get("type")),
                     dict(event.source.get("content", {})),
+                    str(event.source.get("type")),
                 )
                 for room_id, room in response.rooms.join.items()
                 for event in room.timeline.events
                 if event.source.get("sender") != self.user_id
                 and event.source.get("type") in ("m.room.message", "m.reaction")
             ]
-            if fresh:
-                async with self._changed:
-                    self.seen.extend(fresh)
-                    self._changed.notify_all()
+            await self.add(fresh)
 
     # -- reading ---------------------------------------------------------------------------
-    def messages(self, predicate: Callable[[Seen], bool] = lambda m: True) -> list[Seen]:
-        return [
-            m
-            for m in self.seen
-            if m.type == "m.room.message" and not self.aside(m) and predicate(m)
-        ]
+    def visible(self, message: Seen) -> bool:
+        return super().visible(message) and not self.aside(message)
 
     def set_aside(self) -> list[Seen]:
         return [m for m in self.seen if m.type == "m.room.message" and self.aside(m)]
 
     def from_(self, sender: str) -> list[Seen]:
         return self.messages(lambda m: m.sender == sender)
-
-    async def expect(
-        self,
-        *,
-        sender: str | None = None,
-        room: str | None = None,
-        not_room: str | None = None,
-        msgtype: str | None = None,
-        timeout_s: float = WAIT_S,
-    ) -> Seen:
-        def matches(m: Seen) -> bool:
-            return (
-                m.event_id not in self._taken
-                and m.type == "m.room.message"
-                and not self.aside(m)
-                and (sender is None or m.sender == sender)
-                and (room is None or m.room_id == room)
-                and (not_room is None or m.room_id != not_room)
-                and (msgtype is None or m.msgtype == msgtype)
-            )
-
-        async with asyncio.timeout(timeout_s), self._changed:
-            await self._changed.wait_for(lambda: any(matches(m) for m in self.seen))
-        found = next(m for m in self.seen if matches(m))
-        self._taken.add(found.event_id)
-        return found
 
     # -- acting ----------------------------------------------------------------------------
     async def send(
@@ -207,9 +147,13 @@ class NioPerson:
         return {m.user_id for m in response.members}
 
     async def wait_member(self, room_id: str, user_id: str, *, present: bool = True) -> None:
-        async with asyncio.timeout(WAIT_S):
-            while (user_id in await self.members(room_id)) != present:  # noqa: ASYNC110
-                await asyncio.sleep(0.1)
+        async def settled() -> bool:
+            return (user_id in await self.members(room_id)) == present
+
+        state = "in" if present else "out of"
+        await eventually(
+            settled, what=f"{user_id} to be {state} {room_id}", timeout_s=WAIT_S, interval_s=0.1
+        )
 
     async def download(self, mxc: str) -> bytes:
         # nio's download uses the legacy unauthenticated media path, which Synapse has

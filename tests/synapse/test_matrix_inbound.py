@@ -18,8 +18,9 @@ from assistantx.adapters.messenger.matrix import (
     SyncPoller,
 )
 from assistantx.core.ports.messenger import InboundMessage
+from helpers.eventually import assert_quiet
 from synapse.gateway import AppserviceGateway
-from synapse.helpers import OfferCountingStore, assert_quiet, derive, next_message, wait_joined
+from synapse.helpers import OfferCountingStore, derive, next_message, wait_joined
 from synapse.homeserver import Account, SynapseHomeserver
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
@@ -53,7 +54,7 @@ async def test_push_dm_arrives_normalized_once(
         assert message.sender == "lee"
         assert message.text == "Please fetch my printout"
         assert message.time.tzinfo is not None
-        await assert_quiet(inbox, 1.0)
+        await assert_quiet(inbox, 1.0, what="extra inbound message")
 
 
 async def test_pull_dm_arrives_once_and_position_is_kept(
@@ -90,7 +91,7 @@ async def test_pull_dm_arrives_once_and_position_is_kept(
             "dm:lee",
             "hello by sync",
         )
-        await assert_quiet(inbox, 1.0)
+        await assert_quiet(inbox, 1.0, what="extra inbound message")
     assert await store.sync_token(f"matrix:{bot.user_id}") is not None
 
 
@@ -133,7 +134,7 @@ async def test_both_modes_each_message_handled_once(
         # Wait until BOTH paths have offered every message, then nothing more may arrive.
         async with asyncio.timeout(20):
             await store.wait_offered(sent, times=2)
-        await assert_quiet(inbox, 0.5)
+        await assert_quiet(inbox, 0.5, what="extra inbound message")
 
 
 async def test_pull_fills_a_limited_timeline_gap(

@@ -32,14 +32,16 @@ from assistantx.core.clock import WallClock
 from assistantx.core.office import Office, load_office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.assistant import Assistant, AssistantParts
+from assistantx.runtime.assistant import Assistant
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
-from ppdr.scripted_reasoner import ScriptedReasoner, Step
+from helpers.office import sim_assistant
+from helpers.scripted_reasoner import ScriptedReasoner, Step
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import OfferCountingStore, derive
 from synapse.homeserver import Account
-from synapse.people import MatrixPerson, Received
+from synapse.inbox import Seen
+from synapse.people import MatrixPerson
 from synapse.physical import ObservedLocker, hand_over_at_robot
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
@@ -154,17 +156,12 @@ def office_on_matrix(
             clock = WallClock(SPEEDUP)
             locker = ObservedLocker(clock)
             sim = SimOffice(office, clock=clock, locker=locker)
-            assistant = Assistant(
-                AssistantParts(
-                    office=office,
-                    messenger=runtime.messenger,
-                    robot=sim.robot,
-                    locker=locker,
-                    clock=clock,
-                    reasoner_factory=lambda: ScriptedReasoner(stapler_script()),
-                    reasoner_name="scripted",
-                    limits=LoopLimits(max_steps=12),
-                )
+            assistant = sim_assistant(
+                sim,
+                lambda: ScriptedReasoner(stapler_script()),
+                messenger=runtime.messenger,
+                reasoner_name="scripted",
+                limits=LoopLimits(max_steps=12),
             )
             await locker.start()
             stack.push_async_callback(locker.stop)
@@ -187,7 +184,7 @@ class Transcript:
     inbound: list[str]  # event ids of what people wrote to the assistant
     lee_dm: str
     zhang_dm: str
-    group_question: Received
+    group_question: Seen
 
 
 async def run_stapler_instruction(world: MatrixOffice) -> Transcript:

@@ -26,11 +26,13 @@ from assistantx.adapters.messenger.matrix.normalize import (
 )
 from assistantx.agents.base import AgentContext
 from assistantx.core.actions import Action, ForwardFile, Inform, Inquire, SendQR, Stop, Wait
+from helpers.eventually import eventually
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import derive
 from synapse.homeserver import Account
+from synapse.inbox import Seen
 from synapse.nio_office import OPERATOR, MatrixService, Policy, answers_from, asked, waiting
-from synapse.nio_people import NioPerson, Seen
+from synapse.nio_people import NioPerson
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
 
@@ -414,9 +416,8 @@ async def test_matrix_traffic_is_in_the_journal_and_chats(office: Office) -> Non
         await office.zhang.say(question.room_id, "Yes.")
         await office.lee.expect(sender=bot)
         await service.wait_ended()
-        async with asyncio.timeout(20):
-            while not office.lee.set_aside():  # noqa: ASYNC110 - the survey follows the outcome
-                await asyncio.sleep(0.1)
+        # The survey follows the outcome.
+        await eventually(office.lee.set_aside, what="the survey to Lee", timeout_s=20)
         assert office.config.appservice_url is not None
         auth = {"Authorization": f"Bearer {OPERATOR}"}
         async with httpx.AsyncClient(base_url=office.config.appservice_url) as http:

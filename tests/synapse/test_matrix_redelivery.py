@@ -21,8 +21,9 @@ from assistantx.adapters.messenger.matrix import (
 )
 from assistantx.core.errors import MessengerError
 from assistantx.core.ports.messenger import InboundMessage
+from helpers.eventually import assert_quiet, eventually
 from synapse.gateway import AppserviceGateway
-from synapse.helpers import assert_quiet, derive, next_message, wait_joined
+from synapse.helpers import derive, next_message, wait_joined
 from synapse.homeserver import Account
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
@@ -79,7 +80,7 @@ async def test_a_failed_transaction_is_retried_and_handled_once(
         assert message.event_id == event_id
         # It came from Synapse's retry, after the backoff, not from the first attempt.
         assert time.monotonic() - store.failed_at >= 1.0
-        await assert_quiet(inbox, 1.0)
+        await assert_quiet(inbox, 1.0, what="extra inbound message")
 
 
 async def test_restart_between_transactions_loses_nothing(
@@ -108,8 +109,11 @@ async def test_restart_between_transactions_loses_nothing(
         await first.store.close()
 
         gateway_mounts.go_down()  # the service is restarting: Synapse gets 503 and backs off
+        refused = gateway_mounts.refused
         three = await _say(person, room, "third")
-        await asyncio.sleep(0.5)
+        await eventually(
+            lambda: gateway_mounts.refused > refused, what="Synapse's push of the third message"
+        )
 
         second = MatrixMessenger(config, SqliteEventStore(db))
         fresh_inbox: asyncio.Queue[InboundMessage] = asyncio.Queue()
@@ -120,5 +124,5 @@ async def test_restart_between_transactions_loses_nothing(
             assert replayed.event_id == two
             redelivered = await next_message(fresh_inbox)  # Synapse's retry after the 503
             assert redelivered.event_id == three
-            await assert_quiet(fresh_inbox, 1.0)
+            await assert_quiet(fresh_inbox, 1.0, what="extra inbound message")
         await second.store.close()

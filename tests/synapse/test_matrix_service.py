@@ -16,7 +16,7 @@ from assistantx.core.office import Office
 from assistantx.core.settings import Settings
 from assistantx.runtime.assistant import ReasonerFactory
 from assistantx.service.app import create_app
-from ppdr.scripted_reasoner import ScriptedReasoner
+from helpers.scripted_reasoner import ScriptedReasoner
 from synapse.gateway import AppserviceGateway
 from synapse.homeserver import Account
 from synapse.people import MatrixPerson

@@ -1,0 +1,73 @@
+"""Real uvicorn servers on 127.0.0.1 inside the test's event loop."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import socket
+from collections.abc import AsyncIterator
+from typing import Any
+
+import httpx
+import uvicorn
+from fastapi import FastAPI
+
+from assistantx.service.server import service_server
+from helpers.eventually import eventually
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        port: int = sock.getsockname()[1]
+        return port
+
+
+@contextlib.asynccontextmanager
+async def running(server: uvicorn.Server, *, timeout_s: float = 30.0) -> AsyncIterator[None]:
+    """Serve in this loop; enter once it listens (uvicorn has no event for that, only its
+    ``started`` flag), and stop it on exit. A server that fails to start raises its error."""
+    task = asyncio.create_task(server.serve())
+
+    def listening() -> bool:
+        if task.done():
+            task.result()  # raises what stopped it
+            raise RuntimeError("uvicorn stopped during start-up")
+        return bool(server.started)
+
+    try:
+        await eventually(listening, what="uvicorn to listen", timeout_s=timeout_s)
+        yield
+    finally:
+        server.should_exit = True
+        await task
+
+
+@contextlib.asynccontextmanager
+async def serve_asgi(app: Any, port: int | None = None) -> AsyncIterator[str]:
+    """A bare ASGI app (no lifespan) on ``port`` (a free one by default); yields its URL."""
+    config = uvicorn.Config(
+        app,
+        host="127.0.0.1",
+        port=port or free_port(),
+        lifespan="off",
+        log_level="warning",
+        ws="none",
+        http="h11",
+    )
+    async with running(uvicorn.Server(config)):
+        yield f"http://127.0.0.1:{config.port}"
+
+
+@contextlib.asynccontextmanager
+async def serving_app(app: FastAPI, **client: Any) -> AsyncIterator[httpx.AsyncClient]:
+    """An app made by ``create_app``, served by the service's own uvicorn server on a free
+    port; yields an httpx client of it (``client``: its options; a 10 s timeout by default)."""
+    port = free_port()
+    server = service_server(app, "127.0.0.1", port, log_level="warning")
+    options: dict[str, Any] = {"timeout": 10, **client}
+    async with (
+        running(server),
+        httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", **options) as http,
+    ):
+        yield http
