@@ -27,11 +27,15 @@ def test_the_paraphrase_set_is_large() -> None:
     "case",
     [pytest.param(c, id=f"{c.get('as', 'lee')}:{c['text']}") for c in PARAPHRASE_CASES],
 )
-def test_paraphrase_parses_to_its_frame_or_asks(office: Office, case: dict[str, Any]) -> None:
+def test_paraphrase_parses_to_its_frame_or_asks_or_declines(office: Office, case: dict[str, Any]) -> None:
     frame = InstructionParser(office).parse(case["text"], case.get("as", "lee"))
     if case.get("clarify"):
         assert not frame.understood, f"acted on an unclear request: {frame.tasks}"
         assert frame.question
+    elif case.get("decline"):
+        assert not frame.understood, f"acted on a service the office lacks: {frame.tasks}"
+        assert frame.question is None, f"asked instead of declining: {frame.question}"
+        assert frame.decline is not None and "What I can do here:" in frame.decline
     else:
         assert frame.understood, f"asked instead: {frame.question}"
         assert frame.tasks == expected_tasks(case, case.get("as", "lee"))
