@@ -27,7 +27,7 @@ from pydantic import BaseModel, Field
 
 from assistantx.adapters.model import ChatModel, OpenAICompatibleModel
 from assistantx.agents.base import AgentContext
-from assistantx.agents.llm.agents import ModelReasoner, SharedModel, check_actions, schema_text
+from assistantx.agents.llm import ModelReasoner, SharedModel, check_actions, schema_text
 from assistantx.agents.llm.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt
 from assistantx.core.errors import ReasonerError
 from assistantx.core.settings import Settings

@@ -34,7 +34,7 @@ from assistantx.adapters.model import (
 )
 from assistantx.adapters.model.base import LLMCallFailed
 from assistantx.agents.base import AgentContext, Reasoner
-from assistantx.agents.llm.agents import SharedModel, agent_call, model_from_settings, schema_text
+from assistantx.agents.llm import SharedModel, agent_call, model_from_settings, schema_text
 from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
 from assistantx.core.errors import GroundingError, ModelBehaviorError

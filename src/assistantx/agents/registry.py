@@ -20,7 +20,7 @@ ReasonerFactory = Callable[[], Reasoner]
 # name → "module:factory builder"; a builder takes (office, settings) and returns a factory.
 REASONERS: dict[str, str] = {
     "symbolic": "assistantx.agents.symbolic:build_factory",
-    "llm": "assistantx.agents.llm.agents:build_factory",
+    "llm": "assistantx.agents.llm:build_factory",
     "hybrid": "assistantx.agents.hybrid:build_factory",
 }
 

@@ -1,0 +1,125 @@
+"""Checks of the model's outputs against memory, before anything runs.
+
+- Perception's focus (people, places, groups, items) must resolve; it is returned with ids,
+  and the requester is added to a non-empty focus, because later agents see only the people
+  in focus (an empty focus shows everyone);
+- every action of a Decision must ground (``Resolver.ground``); a ``stop`` must be the last
+  action; a QR code that the person already holds unused may not be sent again;
+- Reflection's memory updates must name known people, item types, items and places.
+
+Each check raises with a message written for the model, which the agent feeds back.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.core.actions import Action, SendQR, Stop
+from assistantx.core.errors import GroundingError, UnknownNameError
+from assistantx.core.trace import Percept
+from assistantx.memory.resolve import Resolver
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.memory.updates import (
+    AvailabilityUpdate,
+    ItemLocationUpdate,
+    MemoryUpdate,
+    OwnershipUpdate,
+)
+
+LOCKER_HOLDER = "locker"
+
+
+def focus_ids(percept: Percept, resolver: Resolver, requester: str) -> Percept:
+    """The percept with every name replaced by its id (and the requester added to a non-empty
+    list of people); GroundingError when a name does not resolve."""
+    people = [resolver.person(p) for p in percept.people]
+    if people and requester not in people:  # no people at all: no filter, everyone is shown
+        people.insert(0, requester)
+    places = [_place_or_facility(resolver, p) for p in percept.places]
+    groups = [resolver.group(g) for g in percept.groups]
+    items = [_item_or_type(resolver, i) for i in percept.items]
+    return percept.model_copy(
+        update={
+            "people": list(dict.fromkeys(people)),
+            "places": list(dict.fromkeys(places)),
+            "groups": list(dict.fromkeys(groups)),
+            "items": list(dict.fromkeys(items)),
+        }
+    )
+
+
+def _place_or_facility(resolver: Resolver, name: str) -> str:
+    """A facility id when the name is a facility (the renderer filters facilities by id)."""
+    try:
+        return resolver.facility(name)
+    except GroundingError:
+        return resolver.place(name)
+
+
+def _item_or_type(resolver: Resolver, name: str) -> str:
+    try:
+        return resolver.item(name)
+    except UnknownNameError:
+        if ":" in name:
+            raise
+        return resolver.item_type(name)
+
+
+def check_actions(actions: Sequence[Action], resolver: Resolver, stm: ShortTermMemory) -> None:
+    """Raise with a message for the model when an action cannot run as proposed."""
+    for index, action in enumerate(actions):
+        where = f"actions[{index}] ({action.type})"
+        try:
+            grounded = resolver.ground(action)
+        except GroundingError as exc:
+            raise type(exc)(exc.kind, exc.name, f"{where}: {exc}", exc.candidates) from exc
+        if isinstance(grounded, Stop) and index != len(actions) - 1:
+            raise ValueError(f"{where}: stop ends the instruction, so it must be the last action")
+        if isinstance(grounded, SendQR):
+            for code in stm.embodied.codes:
+                if not (code.used or code.revoked) and (code.person, code.item, code.purpose) == (
+                    grounded.contact,
+                    grounded.item,
+                    grounded.purpose,
+                ):
+                    raise ValueError(
+                        f"{where}: {grounded.contact} already holds an unused QR code to "
+                        f"{grounded.purpose} {grounded.item}; never resend the same QR code"
+                    )
+
+
+def ground_update(update: MemoryUpdate, resolver: Resolver) -> MemoryUpdate:
+    """The update with ids for every name; GroundingError when something is unknown."""
+    if isinstance(update, AvailabilityUpdate):
+        return update.model_copy(update={"person": resolver.person(update.person)})
+    if isinstance(update, OwnershipUpdate):
+        return update.model_copy(
+            update={
+                "person": resolver.person(update.person),
+                "item_type": resolver.item_type(update.item_type),
+            }
+        )
+    return update.model_copy(
+        update={"item": resolver.item(update.item), "holder": _holder(update, resolver)}
+    )
+
+
+def _holder(update: ItemLocationUpdate, resolver: Resolver) -> str:
+    if update.holder.strip().lower() == LOCKER_HOLDER:
+        return LOCKER_HOLDER
+    try:
+        return resolver.person(update.holder)
+    except GroundingError:
+        return resolver.place(update.holder)
+
+
+def ground_updates(updates: Sequence[MemoryUpdate], resolver: Resolver) -> list[MemoryUpdate]:
+    grounded = []
+    for index, update in enumerate(updates):
+        try:
+            grounded.append(ground_update(update, resolver))
+        except GroundingError as exc:
+            raise type(exc)(
+                exc.kind, exc.name, f"updates[{index}] ({update.kind}): {exc}", exc.candidates
+            ) from exc
+    return grounded
