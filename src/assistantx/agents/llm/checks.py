@@ -7,7 +7,10 @@
   action; a QR code that the person already holds unused may not be sent again;
 - Reflection's memory updates must name known people, item types, items and places.
 
-Each check raises with a message written for the model, which the agent feeds back.
+Each check raises :class:`~assistantx.core.errors.ModelOutputError` with a message written
+for the model, which the structured call feeds back; a name that does not resolve is the
+model's mistake, so the resolver's ``GroundingError`` is turned into one here, by name. Any
+other exception is a bug of ours and propagates.
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.core.actions import Action, SendQR, Stop
-from assistantx.core.errors import GroundingError, UnknownNameError
+from assistantx.core.errors import GroundingError, ModelOutputError, UnknownNameError
 from assistantx.core.trace import Percept
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
@@ -31,13 +34,16 @@ LOCKER_HOLDER = "locker"
 
 def focus_ids(percept: Percept, resolver: Resolver, requester: str) -> Percept:
     """The percept with every name replaced by its id (and the requester added to a non-empty
-    list of people); GroundingError when a name does not resolve."""
-    people = [resolver.person(p) for p in percept.people]
+    list of people); ModelOutputError when a name does not resolve."""
+    try:
+        people = [resolver.person(p) for p in percept.people]
+        places = [_place_or_facility(resolver, p) for p in percept.places]
+        groups = [resolver.group(g) for g in percept.groups]
+        items = [_item_or_type(resolver, i) for i in percept.items]
+    except GroundingError as exc:
+        raise ModelOutputError(str(exc)) from exc
     if people and requester not in people:  # no people at all: no filter, everyone is shown
         people.insert(0, requester)
-    places = [_place_or_facility(resolver, p) for p in percept.places]
-    groups = [resolver.group(g) for g in percept.groups]
-    items = [_item_or_type(resolver, i) for i in percept.items]
     return percept.model_copy(
         update={
             "people": list(dict.fromkeys(people)),
@@ -66,15 +72,17 @@ def _item_or_type(resolver: Resolver, name: str) -> str:
 
 
 def check_actions(actions: Sequence[Action], resolver: Resolver, stm: ShortTermMemory) -> None:
-    """Raise with a message for the model when an action cannot run as proposed."""
+    """ModelOutputError with a message for the model when an action cannot run as proposed."""
     for index, action in enumerate(actions):
         where = f"actions[{index}] ({action.type})"
         try:
             grounded = resolver.ground(action)
         except GroundingError as exc:
-            raise type(exc)(exc.kind, exc.name, f"{where}: {exc}", exc.candidates) from exc
+            raise ModelOutputError(f"{where}: {exc}") from exc
         if isinstance(grounded, Stop) and index != len(actions) - 1:
-            raise ValueError(f"{where}: stop ends the instruction, so it must be the last action")
+            raise ModelOutputError(
+                f"{where}: stop ends the instruction, so it must be the last action"
+            )
         if isinstance(grounded, SendQR):
             for code in stm.embodied.codes:
                 if not (code.used or code.revoked) and (code.person, code.item, code.purpose) == (
@@ -82,7 +90,7 @@ def check_actions(actions: Sequence[Action], resolver: Resolver, stm: ShortTermM
                     grounded.item,
                     grounded.purpose,
                 ):
-                    raise ValueError(
+                    raise ModelOutputError(
                         f"{where}: {grounded.contact} already holds an unused QR code to "
                         f"{grounded.purpose} {grounded.item}; never resend the same QR code"
                     )
@@ -114,12 +122,11 @@ def _holder(update: ItemLocationUpdate, resolver: Resolver) -> str:
 
 
 def ground_updates(updates: Sequence[MemoryUpdate], resolver: Resolver) -> list[MemoryUpdate]:
+    """Every update with ids; ModelOutputError naming the first one that does not ground."""
     grounded = []
     for index, update in enumerate(updates):
         try:
             grounded.append(ground_update(update, resolver))
         except GroundingError as exc:
-            raise type(exc)(
-                exc.kind, exc.name, f"updates[{index}] ({update.kind}): {exc}", exc.candidates
-            ) from exc
+            raise ModelOutputError(f"updates[{index}] ({update.kind}): {exc}") from exc
     return grounded
