@@ -19,7 +19,6 @@ from assistantx.agents import baselines, hybrid
 from assistantx.agents.base import AgentContext
 from assistantx.agents.baselines import BaselineFactory
 from assistantx.agents.llm import build_factory
-from assistantx.agents.llm import checks as llm_checks
 from assistantx.core.actions import Inform, Wait
 from assistantx.core.office import Office, load_office
 from assistantx.core.trace import (
@@ -126,7 +125,7 @@ async def test_a_bug_in_the_reflection_check_surfaces(
     scripted_llm: ScriptedLLM,  # noqa: F811
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    monkeypatch.setattr(llm_checks, "ground_update", raising(KeyError))
+    monkeypatch.setattr(Resolver, "ground_update", raising(KeyError))
     update = {"kind": "availability", "person": "zhang", "available": False, "evidence": "silent"}
     scripted_llm.script("reflection", {"verdict": "N", "reason": "no answer", "updates": [update]})
     reasoner = build_factory(office, llm_settings(scripted_llm))()

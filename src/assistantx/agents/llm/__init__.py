@@ -8,7 +8,7 @@
 - :mod:`.prompts`: the template files.
 """
 
-from assistantx.agents.llm.checks import check_actions, focus_ids, ground_update, ground_updates
+from assistantx.agents.llm.checks import check_actions, focus_ids, ground_updates
 from assistantx.agents.llm.inputs import schema_text
 from assistantx.agents.llm.model_reasoner import ModelReasoner, agent_call
 from assistantx.agents.llm.reasoner import (
@@ -31,7 +31,6 @@ __all__ = [
     "build_factory",
     "check_actions",
     "focus_ids",
-    "ground_update",
     "ground_updates",
     "model_from_settings",
     "schema_text",

@@ -5,7 +5,8 @@
   in focus (an empty focus shows everyone);
 - every action of a Decision must ground (``Resolver.ground``); a ``stop`` must be the last
   action; a QR code that the person already holds unused may not be sent again;
-- Reflection's memory updates must name known people, item types, items and places.
+- Reflection's memory updates must name known people, item types, items and holders, by
+  the resolver's one rule (``Resolver.ground_update``), which the loop applies too.
 
 Each check raises :class:`~assistantx.core.errors.ModelOutputError` with a message written
 for the model, which the structured call feeds back; a name that does not resolve is the
@@ -22,14 +23,7 @@ from assistantx.core.errors import GroundingError, ModelOutputError, UnknownName
 from assistantx.core.trace import Percept
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.memory.updates import (
-    AvailabilityUpdate,
-    ItemLocationUpdate,
-    MemoryUpdate,
-    OwnershipUpdate,
-)
-
-LOCKER_HOLDER = "locker"
+from assistantx.memory.updates import MemoryUpdate
 
 
 def focus_ids(percept: Percept, resolver: Resolver, requester: str) -> Percept:
@@ -96,37 +90,12 @@ def check_actions(actions: Sequence[Action], resolver: Resolver, stm: ShortTermM
                     )
 
 
-def ground_update(update: MemoryUpdate, resolver: Resolver) -> MemoryUpdate:
-    """The update with ids for every name; GroundingError when something is unknown."""
-    if isinstance(update, AvailabilityUpdate):
-        return update.model_copy(update={"person": resolver.person(update.person)})
-    if isinstance(update, OwnershipUpdate):
-        return update.model_copy(
-            update={
-                "person": resolver.person(update.person),
-                "item_type": resolver.item_type(update.item_type),
-            }
-        )
-    return update.model_copy(
-        update={"item": resolver.item(update.item), "holder": _holder(update, resolver)}
-    )
-
-
-def _holder(update: ItemLocationUpdate, resolver: Resolver) -> str:
-    if update.holder.strip().lower() == LOCKER_HOLDER:
-        return LOCKER_HOLDER
-    try:
-        return resolver.person(update.holder)
-    except GroundingError:
-        return resolver.place(update.holder)
-
-
 def ground_updates(updates: Sequence[MemoryUpdate], resolver: Resolver) -> list[MemoryUpdate]:
     """Every update with ids; ModelOutputError naming the first one that does not ground."""
     grounded = []
     for index, update in enumerate(updates):
         try:
-            grounded.append(ground_update(update, resolver))
+            grounded.append(resolver.ground_update(update))
         except GroundingError as exc:
             raise ModelOutputError(f"updates[{index}] ({update.kind}): {exc}") from exc
     return grounded
