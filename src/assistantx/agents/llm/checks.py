@@ -77,17 +77,13 @@ def check_actions(actions: Sequence[Action], resolver: Resolver, stm: ShortTermM
             raise ModelOutputError(
                 f"{where}: stop ends the instruction, so it must be the last action"
             )
-        if isinstance(grounded, SendQR):
-            for code in stm.embodied.codes:
-                if not (code.used or code.revoked) and (code.person, code.item, code.purpose) == (
-                    grounded.contact,
-                    grounded.item,
-                    grounded.purpose,
-                ):
-                    raise ModelOutputError(
-                        f"{where}: {grounded.contact} already holds an unused QR code to "
-                        f"{grounded.purpose} {grounded.item}; never resend the same QR code"
-                    )
+        if isinstance(grounded, SendQR) and stm.embodied.unused_code(
+            grounded.contact, grounded.item, grounded.purpose
+        ):
+            raise ModelOutputError(
+                f"{where}: {grounded.contact} already holds an unused QR code to "
+                f"{grounded.purpose} {grounded.item}; never resend the same QR code"
+            )
 
 
 def ground_updates(updates: Sequence[MemoryUpdate], resolver: Resolver) -> list[MemoryUpdate]:
