@@ -31,7 +31,7 @@ from assistantx.agents.baselines import (
     BaselineReasoner,
     load_baseline_prompts,
 )
-from assistantx.agents.llm.agents import AgentPrompts, LLMReasoner, SharedModel, schema_text
+from assistantx.agents.llm import AgentPrompts, LLMReasoner, SharedModel, schema_text
 from assistantx.core.actions import Inquire, Wait
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office

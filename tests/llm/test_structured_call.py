@@ -16,7 +16,7 @@ from assistantx.adapters.model import (
     structured_call,
 )
 from assistantx.adapters.model.schema import grammar_schema
-from assistantx.core.errors import LLMError, ModelBehaviorError, UnknownNameError
+from assistantx.core.errors import LLMError, ModelBehaviorError, ModelOutputError
 from fakes.scripted_llm import (
     RecordedRequest,
     Reply,
@@ -42,9 +42,7 @@ class PlanOut(BaseModel):
 
 def grounded(plan: PlanOut) -> None:
     if plan.contact not in KNOWN_PEOPLE:
-        raise UnknownNameError(
-            "person", plan.contact, f"no person named {plan.contact!r} in memory; known: lee, zhang"
-        )
+        raise ModelOutputError(f"no person named {plan.contact!r} in memory; known: lee, zhang")
 
 
 GOOD = {"goal": "get the file", "subgoals": [{"description": "ask lee"}], "contact": "lee"}

@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from assistantx.agents.llm.agents import LLMReasonerFactory, build_factory
+from assistantx.agents.llm import LLMReasonerFactory, build_factory
 from assistantx.core.actions import Action
 from assistantx.core.office import Office
 from assistantx.core.settings import Settings

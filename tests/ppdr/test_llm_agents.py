@@ -16,7 +16,7 @@ from pydantic import BaseModel
 
 from assistantx.adapters.model.schema import grammar_schema, schema_outline
 from assistantx.agents.base import AgentContext
-from assistantx.agents.llm.agents import AGENTS, LLMReasoner, LLMReasonerFactory, build_factory
+from assistantx.agents.llm import AGENTS, LLMReasoner, LLMReasonerFactory, build_factory
 from assistantx.agents.llm.prompts import DEFAULT_PROMPTS
 from assistantx.core.actions import Inform, SendQR, Stop, Wait
 from assistantx.core.dialogue import DialogueTurn

@@ -19,7 +19,7 @@ from llm_office import (
     section,
 )
 
-from assistantx.agents.llm.agents import build_factory
+from assistantx.agents.llm import build_factory
 from assistantx.core.actions import Inform, Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from assistantx.core.office import Office, load_office
 from assistantx.sim.office import SimOffice

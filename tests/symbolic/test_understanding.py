@@ -27,7 +27,9 @@ def test_the_paraphrase_set_is_large() -> None:
     "case",
     [pytest.param(c, id=f"{c.get('as', 'lee')}:{c['text']}") for c in PARAPHRASE_CASES],
 )
-def test_paraphrase_parses_to_its_frame_or_asks_or_declines(office: Office, case: dict[str, Any]) -> None:
+def test_paraphrase_parses_to_its_frame_or_asks_or_declines(
+    office: Office, case: dict[str, Any]
+) -> None:
     frame = InstructionParser(office).parse(case["text"], case.get("as", "lee"))
     if case.get("clarify"):
         assert not frame.understood, f"acted on an unclear request: {frame.tasks}"

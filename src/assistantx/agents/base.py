@@ -8,6 +8,7 @@ grounding errors), and returns a pydantic output plus the accounting of its call
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from assistantx.core.trace import (
@@ -70,3 +71,7 @@ class Reasoner(ABC):
         results: list[ActionResult],
         observed: Observation,
     ) -> Reflection: ...
+
+
+ReasonerFactory = Callable[[], Reasoner]
+"""Makes one reasoner per instruction (the registry builds them by name)."""

@@ -27,9 +27,9 @@ from pydantic import BaseModel, Field
 
 from assistantx.adapters.model import ChatModel, OpenAICompatibleModel
 from assistantx.agents.base import AgentContext
-from assistantx.agents.llm.agents import ModelReasoner, SharedModel, check_actions, schema_text
+from assistantx.agents.llm import ModelReasoner, SharedModel, check_actions, schema_text
 from assistantx.agents.llm.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt
-from assistantx.core.errors import ReasonerError
+from assistantx.core.errors import ModelOutputError, ReasonerError
 from assistantx.core.settings import Settings
 from assistantx.core.trace import (
     ActionResult,
@@ -138,7 +138,7 @@ class BaselineReasoner(ModelReasoner):
 
         def valid(decision: Decision) -> None:
             if self.name in ("react", "reflexion") and len(decision.actions) != 1:
-                raise ValueError("give exactly one action per turn")
+                raise ModelOutputError("give exactly one action per turn")
             check_actions(decision.actions, ctx.resolver, ctx.stm)
 
         return await self._call(ctx, prompt, Decision, check=valid, **values)

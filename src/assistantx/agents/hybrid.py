@@ -33,10 +33,10 @@ from assistantx.adapters.model import (
     structured_call,
 )
 from assistantx.agents.base import AgentContext, Reasoner
-from assistantx.agents.llm.agents import SharedModel, agent_call, model_from_settings, schema_text
+from assistantx.agents.llm import SharedModel, agent_call, model_from_settings, schema_text
 from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
-from assistantx.core.errors import GroundingError, ModelBehaviorError
+from assistantx.core.errors import GroundingError, ModelBehaviorError, ModelOutputError
 from assistantx.core.office import Office
 from assistantx.core.ports.model import LLMCallFailed
 from assistantx.core.settings import Settings
@@ -216,7 +216,7 @@ class HybridReasoner(SymbolicReasoner):
         def check(read: ReadFrame) -> None:
             frame = to_task_frame(read, stm.requester, office)
             if frame.question is not None and read.sure:
-                raise ValueError(frame.question)
+                raise ModelOutputError(frame.question)
 
         try:
             result = await structured_call(

@@ -12,6 +12,7 @@ import sys
 import time
 from pathlib import Path
 
+from assistantx.agents.registry import PPDR_REASONERS
 from assistantx.core.errors import AssistantXError
 from assistantx.core.settings import Settings
 from assistantx.evaluation.episode import Episode
@@ -24,7 +25,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = sub.add_parser("eval", help="evaluate a method on a task file", description=METRICS_HELP)
     p.add_argument("--tasks", required=True, help="task file (JSON lines, DESIGN §5)")
     p.add_argument("--method", choices=METHODS, default="ppdr")
-    p.add_argument("--reasoner", choices=["symbolic", "llm", "hybrid"], default=None)
+    p.add_argument("--reasoner", choices=list(PPDR_REASONERS), default=None)
     p.add_argument("--runs", type=int, default=1)
     p.add_argument("--levels", default="", help="comma-separated, e.g. L1,L2")
     p.add_argument("--limit", type=int, default=None, help="only the first N tasks")

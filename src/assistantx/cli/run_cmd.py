@@ -16,7 +16,7 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from assistantx.agents.registry import reasoner_factory
+from assistantx.agents.registry import PPDR_REASONERS, reasoner_factory
 from assistantx.cli._people import resolve_people
 from assistantx.core.errors import AssistantXError, GroundingError, OfficeError
 from assistantx.core.office import load_office
@@ -33,7 +33,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p.add_argument("--unavailable", default="", help="comma-separated names of absent people")
     p.add_argument(
         "--reasoner",
-        choices=["symbolic", "llm", "hybrid"],
+        choices=list(PPDR_REASONERS),
         default=None,
         help="default: llm when ASSISTANTX_LLM_BASE_URL is set, else symbolic",
     )

@@ -22,6 +22,7 @@
     │       ├── LockCommandError    the lock refused a command (door state, unknown code)
     │       └── InvalidCodeError    a QR payload that is malformed, forged or under an unknown key
     ├── ReasonerError               an agent could not produce a valid output
+    │   ├── ModelOutputError (ValueError)  one model answer is unusable; fed back, retried
     │   └── ModelBehaviorError      the model kept producing invalid output after retries
     ├── LLMError                    the model server failed (HTTP, timeout) after retries
     ├── JournalError                the service's journal file is unusable
@@ -144,6 +145,17 @@ class InvalidCodeError(LockError):
 
 class ReasonerError(AssistantXError):
     """An agent could not produce a valid output."""
+
+
+class ModelOutputError(ReasonerError, ValueError):
+    """One answer of the model is unusable: it does not parse, fails the output schema, or
+    names a person, place or action that memory does not know.
+
+    This is the ONLY error a structured call feeds back to the model ("your answer could not
+    be used: ...") and retries; its text is written for the model. Any other exception raised
+    while checking an answer (KeyError, TypeError, a plain ValueError) is a bug in our own
+    checks: it propagates and is never shown to the model as if it were the model's fault.
+    """
 
 
 class ModelBehaviorError(ReasonerError):

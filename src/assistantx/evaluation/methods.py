@@ -1,27 +1,31 @@
 """The methods the harness compares, each turned into a reasoner factory for one task.
 
 ``optimal`` (the upper bound: the dataset's optimal policy, needs the task's ``spec``),
-``ppdr`` (the loop with the chosen reasoner), its ablations, and the LLM baselines.
+``ppdr`` (the loop with the chosen reasoner), its ablations, and the LLM baselines. The
+reasoners themselves come from the one registry (:mod:`assistantx.agents.registry`); what is
+the harness's own is the method names (``ppdr`` is the chosen PPDR reasoner), their labels in
+reports, and giving the optimal policy each task.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 
 from assistantx.agents.ablations import ABLATIONS
-from assistantx.agents.base import Reasoner
-from assistantx.agents.baselines import BASELINES, build_baseline_factory
-from assistantx.agents.oracle.optimal import OptimalReasoner
-from assistantx.agents.registry import reasoner_factory
+from assistantx.agents.base import ReasonerFactory
+from assistantx.agents.baselines import BASELINES
+from assistantx.agents.registry import (
+    ORACLE,
+    OracleTask,
+    needs_llm,
+    reasoner_factory,
+)
 from assistantx.core.errors import ReasonerError
 from assistantx.core.office import Office
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset.tasks import Task
 
-METHODS: tuple[str, ...] = ("optimal", "ppdr", *ABLATIONS, *BASELINES)
-
-ReasonerFactory = Callable[[], Reasoner]
+METHODS: tuple[str, ...] = (ORACLE, "ppdr", *ABLATIONS, *BASELINES)
 
 
 @dataclass(frozen=True)
@@ -36,10 +40,13 @@ class MethodSpec:
         return self.method
 
     @property
+    def registry_name(self) -> str:
+        """The reasoner's name in the registry: ``ppdr`` is the chosen PPDR reasoner."""
+        return self.reasoner if self.method == "ppdr" else self.method
+
+    @property
     def needs_llm(self) -> bool:
-        return self.method in BASELINES or (
-            self.reasoner in ("llm", "hybrid") and self.method not in ("optimal",)
-        )
+        return needs_llm(self.registry_name, inner=self.reasoner)
 
 
 class MethodBuilder:
@@ -50,37 +57,18 @@ class MethodBuilder:
             raise ReasonerError(f"unknown method {spec.method!r}; choose from {', '.join(METHODS)}")
         self.spec = spec
         self.office = office
+        self.settings = settings
         self._shared: ReasonerFactory | None = None
-        if spec.method in BASELINES:
-            self._shared = build_baseline_factory(spec.method, settings)
-        elif spec.method != "optimal":
-            try:
-                self._shared = reasoner_factory(spec.reasoner, office, settings)
-            except (ImportError, AttributeError) as exc:
-                raise ReasonerError(
-                    f"the {spec.reasoner} reasoner is not available: {exc}"
-                ) from exc
+        if spec.method != ORACLE:  # the optimal policy is made per task, knowing the task
+            self._shared = reasoner_factory(
+                spec.registry_name, office, settings, inner=spec.reasoner
+            )
 
     def factory(self, task: Task) -> ReasonerFactory:
-        if self.spec.method == "optimal":
-            office = self.office
-
-            def optimal() -> Reasoner:
-                return OptimalReasoner.for_task(
-                    office, task.id, task.requester, task.instruction, task.spec
-                )
-
-            return optimal
-        shared = self._shared
-        assert shared is not None
-        wrapper = ABLATIONS.get(self.spec.method)
-        if wrapper is None:
-            return shared
-
-        def ablated() -> Reasoner:
-            return wrapper(shared())
-
-        return ablated
+        if self._shared is not None:
+            return self._shared
+        oracle = OracleTask(task.id, task.requester, task.instruction, task.spec)
+        return reasoner_factory(ORACLE, self.office, self.settings, task=oracle)
 
 
 METRICS_HELP = (

@@ -3,6 +3,9 @@
 Names are matched tolerantly (case, spacing, titles, possessives; small typos only when one
 candidate is close). Ambiguity is an error listing the candidates, never a guess. The error
 texts are written to be fed back to a language model as they are.
+
+Actions (:meth:`Resolver.ground`) and memory updates (:meth:`Resolver.ground_update`) are
+grounded here and only here: the loop and every reasoner share one rule for what a name means.
 """
 
 from __future__ import annotations
@@ -21,9 +24,19 @@ from assistantx.core.actions import (
     Wait,
     WaitInPlace,
 )
-from assistantx.core.errors import AmbiguousNameError, UnknownNameError
+from assistantx.core.errors import AmbiguousNameError, GroundingError, UnknownNameError
 from assistantx.core.office import Office
+from assistantx.memory.graph import LOCKER
 from assistantx.memory.names import NameIndex, normalize
+from assistantx.memory.updates import (
+    AvailabilityUpdate,
+    ItemLocationUpdate,
+    MemoryUpdate,
+    OwnershipUpdate,
+)
+
+# What people and models call the robot's own locker, an item holder that is in no office file.
+LOCKER_NAMES = ("the locker", "robot locker", "the robot's locker", "the robot locker")
 
 ContactKind = str  # "person" | "group"
 
@@ -50,6 +63,8 @@ class Resolver:
         for t in office.item_types:
             plural = [f"{n}s" for n in (t.name, *t.synonyms) if not n.endswith("s")]
             self.item_types.add(t.id, [t.name, *t.synonyms, *plural])
+        self.lockers = NameIndex()
+        self.lockers.add(LOCKER, LOCKER_NAMES)
 
     # -- single lookups ------------------------------------------------------------------
     def person(self, name: str) -> str:
@@ -138,7 +153,17 @@ class Resolver:
             )
         return f"{self.item_type(type_part)}:{self.person(owner_part)}"
 
-    # -- whole actions -------------------------------------------------------------------
+    def holder(self, name: str) -> str:
+        """Who or what holds an item: ``locker`` (the robot's), else a person id, else a
+        location id. Only an exact name of the locker is the locker: a typo of it is no guess."""
+        if self.lockers.lookup(name, fuzzy=1.0):
+            return LOCKER
+        try:
+            return self.person(name)
+        except GroundingError:
+            return self.place(name)
+
+    # -- whole actions and updates -------------------------------------------------------
     def ground(self, action: Action) -> Action:
         """The same action with every name replaced by its id; raises GroundingError."""
         match action:
@@ -166,6 +191,23 @@ class Resolver:
             case Wait() | Stop():
                 return action
         raise TypeError(f"unknown action {action!r}")  # pragma: no cover
+
+    def ground_update(self, update: MemoryUpdate) -> MemoryUpdate:
+        """The same memory update with every name replaced by its id; raises GroundingError."""
+        if isinstance(update, AvailabilityUpdate):
+            return update.model_copy(update={"person": self.person(update.person)})
+        if isinstance(update, OwnershipUpdate):
+            return update.model_copy(
+                update={
+                    "person": self.person(update.person),
+                    "item_type": self.item_type(update.item_type),
+                }
+            )
+        if isinstance(update, ItemLocationUpdate):
+            return update.model_copy(
+                update={"item": self.item(update.item), "holder": self.holder(update.holder)}
+            )
+        raise TypeError(f"unknown memory update {update!r}")  # pragma: no cover
 
     # -- errors --------------------------------------------------------------------------
     def _one(

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Literal
 
 from pydantic import BaseModel, Field
@@ -10,6 +11,9 @@ from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.trace import Trace
 
 CodeState = Literal["issued", "scanned", "used", "revoked"]
+# What the lock reported of codes (code id → "scanned"/"used"), possibly ahead of an
+# instruction that has not looked at the locker since: ``Locker.code_states``.
+LockReports = Mapping[str, Literal["scanned", "used"]]
 
 
 class IssuedCode(BaseModel):
@@ -27,16 +31,27 @@ class IssuedCode(BaseModel):
 
     @property
     def state(self) -> CodeState:
+        """The instruction's own view of the code."""
         if self.used:
             return "used"
         if self.scanned:
             return "scanned"
         return "revoked" if self.revoked else "issued"
 
-    @property
-    def live(self) -> bool:
-        """Still opens the locker (sent, neither scanned nor revoked)."""
-        return not (self.used or self.scanned or self.revoked)
+    def current_state(self, reported: LockReports | None = None) -> CodeState:
+        """The instruction's view brought up to date by what the lock reported since (a scan
+        shows at once, not only when the instruction next looks at the locker)."""
+        if self.state != "issued" or reported is None:
+            return self.state
+        return reported.get(self.code_id, "issued")
+
+    def unused(self, reported: LockReports | None = None) -> bool:
+        """The one rule for "this code is still unused": it was sent and still opens the
+        locker, i.e. neither scanned, used nor revoked. A scanned code is spent at the lock
+        (a second scan is refused as a replay), so its holder no longer holds a usable code;
+        an unused one must not be sent again and is what is revoked when it lost its purpose.
+        ``reported``: the lock's reports, for callers that can see the lock."""
+        return self.current_state(reported) == "issued"
 
 
 class EmbodiedState(BaseModel):
@@ -44,6 +59,16 @@ class EmbodiedState(BaseModel):
     locker_contents: list[str] = Field(default_factory=list)
     door: Literal["open", "closed"] = "closed"
     codes: list[IssuedCode] = Field(default_factory=list)
+
+    def unused_code(
+        self, person: str, item: str, purpose: str, reported: LockReports | None = None
+    ) -> IssuedCode | None:
+        """The unused code ``person`` already holds for ``purpose`` on ``item``, if any."""
+        for code in self.codes:
+            if (code.person, code.item, code.purpose) == (person, item, purpose):
+                if code.unused(reported):
+                    return code
+        return None
 
 
 class ShortTermMemory(BaseModel):

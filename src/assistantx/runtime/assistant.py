@@ -17,7 +17,7 @@ from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from assistantx.agents.base import Reasoner
+from assistantx.agents.base import Reasoner, ReasonerFactory
 from assistantx.core.clock import Clock
 from assistantx.core.errors import GroundingError
 from assistantx.core.events import EventSink, TraceEvent
@@ -43,7 +43,6 @@ logger = logging.getLogger(__name__)
 
 FINISHED_KEPT = 256
 
-ReasonerFactory = Callable[[], Reasoner]
 InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
 # Claims a direct message that answers no open question (True: handled, e.g. a survey reply)
 # before it would start a new instruction.

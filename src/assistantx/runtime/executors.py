@@ -202,21 +202,18 @@ class Executor:
     async def _send_qr(
         self, stm: ShortTermMemory, action: SendQR, key: str
     ) -> tuple[bool, str, dict[str, object]]:
-        for code in stm.embodied.codes:
-            same = (code.person, code.item, code.purpose) == (
-                action.contact,
-                action.item,
-                action.purpose,
+        held = stm.embodied.unused_code(
+            action.contact, action.item, action.purpose, self.ctx.locker.code_states
+        )
+        if held is not None:
+            return (
+                False,
+                (
+                    f"{action.contact} already holds an unused QR code for {action.purpose} "
+                    f"{action.item}; never resend the same QR code"
+                ),
+                {},
             )
-            if same and not (code.used or code.revoked):
-                return (
-                    False,
-                    (
-                        f"{action.contact} already holds an unused QR code for {action.purpose} "
-                        f"{action.item}; never resend the same QR code"
-                    ),
-                    {},
-                )
         if stm.instruction_id not in self._watching:
             notify = asyncio.Event()
             self._watching[stm.instruction_id] = (self.ctx.locker.subscribe(notify), notify)
@@ -251,11 +248,12 @@ class Executor:
         return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
 
     async def revoke_codes(self, stm: ShortTermMemory, *, person: str | None = None) -> int:
-        """Withdraw at the lock this instruction's codes that were sent but never scanned
-        (only ``person``'s, if given); returns how many the lock revoked."""
+        """Withdraw at the lock this instruction's unused codes (only ``person``'s, if given);
+        returns how many the lock revoked."""
         revoked = 0
         for code in stm.embodied.codes:
-            if not code.live or (person is not None and code.person != person):
+            unused = code.unused(self.ctx.locker.code_states)
+            if not unused or (person is not None and code.person != person):
                 continue
             try:
                 await self.ctx.locker.revoke(code.code_id)

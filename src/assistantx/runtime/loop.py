@@ -51,7 +51,6 @@ from assistantx.memory.updates import (
     AppliedUpdate,
     AvailabilityUpdate,
     MemoryUpdate,
-    OwnershipUpdate,
 )
 from assistantx.runtime.executors import Executor
 from assistantx.runtime.failures import FailureMemory, failure_summary
@@ -393,7 +392,7 @@ class InstructionRunner:
         feedback: list[str] = []
         for update in updates:
             try:
-                grounded = self._ground_update(update)
+                grounded = self.resolver.ground_update(update)
             except (GroundingError, KeyError) as exc:
                 feedback.append(f"Memory update {update.model_dump()} was rejected: {exc}")
                 continue
@@ -402,25 +401,6 @@ class InstructionRunner:
             if applied.changed:
                 self._info += 1
         return feedback
-
-    def _ground_update(self, update: MemoryUpdate) -> MemoryUpdate:
-        r = self.resolver
-        if isinstance(update, AvailabilityUpdate):
-            return update.model_copy(update={"person": r.person(update.person)})
-        if isinstance(update, OwnershipUpdate):
-            return update.model_copy(
-                update={
-                    "person": r.person(update.person),
-                    "item_type": r.item_type(update.item_type),
-                }
-            )
-        holder = update.holder
-        if holder != "locker":
-            try:
-                holder = r.person(holder)
-            except GroundingError:
-                holder = r.place(holder)
-        return update.model_copy(update={"item": r.item(update.item), "holder": holder})
 
     # -- ending --------------------------------------------------------------------------
     def _close(self, stm: ShortTermMemory, outcome: Outcome, summary: str) -> None:

@@ -42,7 +42,7 @@ from assistantx.core.office import Office
 from assistantx.core.ports.lock import LockEvent
 from assistantx.core.ports.messenger import OutboundMessage
 from assistantx.core.wording import person_name, purpose_text
-from assistantx.memory.short_term import CodeState, IssuedCode
+from assistantx.memory.short_term import CodeState
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
 from assistantx.service.runtime import ServiceRuntime
@@ -262,20 +262,12 @@ def _recent_codes(runtime: ServiceRuntime, book: CodeBook, limit: int = 30) -> l
                 person_name=person_name(runtime.office, c.person),
                 task=purpose_text(runtime.office, c.purpose, c.item),
                 used=c.used,
-                state=_code_state(c, runtime),
+                state=c.current_state(runtime.locker.code_states),
                 scannable=book.payload(c.code_id) is not None,
             )
             for c in stm.embodied.codes
         )
     return codes
-
-
-def _code_state(code: IssuedCode, runtime: ServiceRuntime) -> CodeState:
-    """The instruction's view, brought up to date by what the lock reported since (a scan
-    shows at once, not only when the instruction next looks at the locker)."""
-    if code.state != "issued":
-        return code.state
-    return runtime.locker.code_states.get(code.code_id, "issued")
 
 
 # -- the router ------------------------------------------------------------------------------

@@ -11,7 +11,6 @@ on a sped-up WallClock. ``ASSISTANTX_ROBOT=sim`` swaps in the kinematic base,
 from __future__ import annotations
 
 import asyncio
-import importlib
 import logging
 import os
 from contextlib import AsyncExitStack
@@ -25,7 +24,8 @@ from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
-from assistantx.agents.registry import reasoner_factory
+from assistantx.agents.base import ReasonerFactory
+from assistantx.agents.registry import load_builder, reasoner_factory
 from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
@@ -38,7 +38,6 @@ from assistantx.memory.resolve import Resolver
 from assistantx.runtime.assistant import (
     Assistant,
     AssistantParts,
-    ReasonerFactory,
     new_instruction_id,
 )
 from assistantx.runtime.loop import LoopLimits
@@ -193,10 +192,8 @@ class ServiceRuntime:
     def _reasoner(self) -> tuple[ReasonerFactory, str]:
         s = self.settings
         if s.reasoner_builder:
-            module_name, _, attr = s.reasoner_builder.partition(":")
-            builder = getattr(importlib.import_module(module_name), attr)
-            factory: ReasonerFactory = builder(self.office, s)
-            return factory, attr
+            factory = load_builder(s.reasoner_builder)(self.office, s)
+            return factory, s.reasoner_builder.partition(":")[2]
         kind = s.effective_reasoner
         return reasoner_factory(kind, self.office, s), kind
 

@@ -6,7 +6,8 @@ string. This module tries, in order: the whole text, each fenced block, then eac
 balanced ``{...}`` from left to right (never one nested in another), each as written and then
 with trailing commas removed; control characters inside strings are accepted. An object nested in
 a broken one is never taken for the answer: ``{"actions": [{"type": "wait"}`` is an error,
-not a wait. Failures raise ``ValueError`` with a message meant to be shown to the model.
+not a wait. Failures raise ``ModelOutputError`` (a ``ValueError``) with a message meant to be
+shown to the model.
 """
 
 from __future__ import annotations
@@ -16,6 +17,8 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
+from assistantx.core.errors import ModelOutputError
+
 _FENCE = re.compile(r"```[ \t]*(?:json5?|JSON)?[ \t]*\n?(.*?)```", re.DOTALL)
 _THINK = re.compile(r"<think>.*?</think>", re.DOTALL | re.IGNORECASE)
 # A bound on the work done on a pathological answer (thousands of stray braces).
@@ -23,10 +26,10 @@ _MAX_CANDIDATES = 64
 
 
 def extract_json_object(text: str) -> dict[str, Any]:
-    """The first JSON object in ``text``; ``ValueError`` naming the problem if none."""
+    """The first JSON object in ``text``; ``ModelOutputError`` naming the problem if none."""
     cleaned = _THINK.sub("", text).strip()
     if not cleaned:
-        raise ValueError("the answer was empty; expected one JSON object")
+        raise ModelOutputError("the answer was empty; expected one JSON object")
     first_error: json.JSONDecodeError | None = None
     saw_non_object: str | None = None
     for candidate in _candidates(cleaned):
@@ -41,11 +44,11 @@ def extract_json_object(text: str) -> dict[str, Any]:
             saw_non_object = saw_non_object or type(value).__name__
             break
     if first_error is not None and "{" in cleaned:
-        raise ValueError(f"the answer is not valid JSON: {first_error}")
+        raise ModelOutputError(f"the answer is not valid JSON: {first_error}")
     if saw_non_object is not None:
         kind = {"list": "an array", "str": "a string"}.get(saw_non_object, saw_non_object)
-        raise ValueError(f"expected one JSON object, got {kind}")
-    raise ValueError("no JSON object found in the answer")
+        raise ModelOutputError(f"expected one JSON object, got {kind}")
+    raise ModelOutputError("no JSON object found in the answer")
 
 
 def _candidates(text: str) -> Iterator[str]:

@@ -4,10 +4,14 @@
 with the request, so servers that enforce schemas do), pulls the JSON object out of whatever
 the model wrote, validates it with pydantic and then with the caller's own check (grounding
 names against memory, say). An answer cut at ``max_tokens`` (``finish_reason: length``) is
-rejected whole, never parsed as a partial answer. When any of that fails the model tries
-again, up to ``max_retries`` times, on the ORIGINAL conversation plus one user message with
-the error and a short excerpt of the rejected answer: repairs never pile up, and a runaway
-answer is not echoed back into the next prompt. Then ``ModelBehaviorError`` carries the last
+rejected whole, never parsed as a partial answer. Each of these steps says "the model's answer
+is unusable" by raising :class:`~assistantx.core.errors.ModelOutputError`, and only that error
+is fed back: anything else the caller's check raises (a KeyError, a TypeError, a plain
+ValueError) is a bug of ours and propagates at once, never shown to the model as its fault.
+When an answer is unusable the model tries again, up to ``max_retries`` times, on the
+ORIGINAL conversation plus one user message with the error and a short excerpt of the
+rejected answer: repairs never pile up, and a runaway answer is not echoed back into the next
+prompt. Then ``ModelBehaviorError`` carries the last
 error and every attempt.
 
 Transport failures (``LLMError``) are not output problems and propagate at once; an
@@ -25,7 +29,7 @@ from pydantic import BaseModel, ValidationError
 
 from assistantx.adapters.model._json_extract import extract_json_object
 from assistantx.adapters.model.schema import grammar_schema
-from assistantx.core.errors import AssistantXError, LLMError, ModelBehaviorError
+from assistantx.core.errors import ModelBehaviorError, ModelOutputError
 from assistantx.core.ports.model import (
     ChatModel,
     ChatRequest,
@@ -121,7 +125,7 @@ def cut_off_error(response: ChatResponse) -> str | None:
 def _reject_cut_off(response: ChatResponse) -> None:
     cut = cut_off_error(response)
     if cut is not None:
-        raise ValueError(cut)
+        raise ModelOutputError(cut)
 
 
 def parse_output(
@@ -129,9 +133,15 @@ def parse_output(
     output_type: type[OutputT],
     validate: Callable[[OutputT], None] | None = None,
 ) -> OutputT:
-    """Extract, validate and check one answer; ``ValueError``/domain errors say why not."""
+    """Extract, validate and check one answer; ``ModelOutputError`` says why it is unusable.
+
+    ``validate`` raises ``ModelOutputError`` for a problem of the answer; whatever else it
+    raises is passed on untouched."""
     raw = extract_json_object(text)
-    output = output_type.model_validate(raw)
+    try:
+        output = output_type.model_validate(raw)
+    except ValidationError as exc:
+        raise ModelOutputError(describe_validation_error(exc)) from exc
     if validate is not None:
         validate(output)
     return output
@@ -146,8 +156,8 @@ async def structured_call(
 ) -> StructuredResult[OutputT]:
     """Ask until the answer parses into ``output_type`` and passes ``validate``.
 
-    ``validate`` signals a semantic problem by raising ``ValueError`` or an
-    ``AssistantXError`` (e.g. ``GroundingError``) whose text is fed back to the model.
+    ``validate`` signals a problem of the answer (a name memory does not know, say) by raising
+    ``ModelOutputError``, whose text is fed back to the model; any other exception propagates.
     """
     if max_retries < 0:
         raise ValueError("max_retries must be >= 0")
@@ -169,11 +179,7 @@ async def structured_call(
         try:
             _reject_cut_off(response)
             output = parse_output(response.text, output_type, validate)
-        except ValidationError as exc:
-            error = describe_validation_error(exc)
-        except LLMError:
-            raise
-        except (ValueError, AssistantXError) as exc:
+        except ModelOutputError as exc:
             error = str(exc) or type(exc).__name__
         else:
             attempts.append(Attempt(response=response, error=None))

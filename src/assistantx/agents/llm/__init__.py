@@ -1,1 +1,37 @@
-"""The LLM agents: perception, planning, decision and reflection as prompts to a chat model."""
+"""The LLM agents: perception, planning, decision and reflection as prompts to a chat model.
+
+- :mod:`.reasoner`: the four agents (:class:`LLMReasoner`), their prompt set and factory;
+- :mod:`.model_reasoner`: one structured, accounted call to the model per agent;
+- :mod:`.checks`: the model's outputs checked against memory (names become ids);
+- :mod:`.inputs`: what the prompts carry besides memory;
+- :mod:`.shared`: one chat model shared by every instruction's reasoner;
+- :mod:`.prompts`: the template files.
+"""
+
+from assistantx.agents.llm.checks import check_actions, focus_ids, ground_updates
+from assistantx.agents.llm.inputs import schema_text
+from assistantx.agents.llm.model_reasoner import ModelReasoner, agent_call
+from assistantx.agents.llm.reasoner import (
+    AGENTS,
+    AgentPrompts,
+    LLMReasoner,
+    LLMReasonerFactory,
+    build_factory,
+)
+from assistantx.agents.llm.shared import SharedModel, model_from_settings
+
+__all__ = [
+    "AGENTS",
+    "AgentPrompts",
+    "LLMReasoner",
+    "LLMReasonerFactory",
+    "ModelReasoner",
+    "SharedModel",
+    "agent_call",
+    "build_factory",
+    "check_actions",
+    "focus_ids",
+    "ground_updates",
+    "model_from_settings",
+    "schema_text",
+]

@@ -87,10 +87,7 @@ class Evidence:
 
     def holds_code(self, person: str, item: str, purpose: str) -> bool:
         return any(
-            c.person == person
-            and c.item == item
-            and c.purpose == purpose
-            and not (c.used or c.revoked)
+            (c.person, c.item, c.purpose) == (person, item, purpose) and c.unused()
             for c in self.codes
         )
 

@@ -24,14 +24,13 @@ from assistantx.core.actions import (
     WaitInPlace,
 )
 from assistantx.core.trace import ActionResult, Observation, Reflection
+from assistantx.memory.graph import LOCKER
 from assistantx.memory.updates import (
     AvailabilityUpdate,
     ItemLocationUpdate,
     MemoryUpdate,
     OwnershipUpdate,
 )
-
-_LOCKER = "locker"
 
 
 def expectation(action: Action) -> str:
@@ -169,9 +168,7 @@ class Reflector:
             for code in ev.codes:
                 if code.person != person or not code.used:
                     continue
-                where = {"deposit": _LOCKER, "produce": _LOCKER, "collect": person}.get(
-                    code.purpose
-                )
+                where = {"deposit": LOCKER, "produce": LOCKER, "collect": person}.get(code.purpose)
                 if where is not None:
                     out.append(
                         ItemLocationUpdate(
@@ -186,7 +183,7 @@ class Reflector:
                     out.append(
                         ItemLocationUpdate(
                             item=f"{product}:{owner}",
-                            holder=_LOCKER,
+                            holder=LOCKER,
                             evidence=f"{person} made a copy",
                         )
                     )

@@ -1,0 +1,137 @@
+"""A reasoner whose agents are structured calls to a shared chat model, accounted in the trace.
+
+The base of the LLM reasoner and the paper's baselines. Each agent call is one
+:func:`~assistantx.adapters.model.structured_call`: the output is parsed, validated and
+checked, and a failed check is fed back to the model up to ``output_retries`` times; then
+:class:`~assistantx.core.errors.ModelBehaviorError` ends the instruction (the loop tells the
+requester). One :class:`~assistantx.core.trace.AgentCall` per agent call (its repairs
+included) goes to ``ctx.record``, so tokens and latency land in the trace, also when the call
+gives up.
+
+A reasoner that is used without ``start()`` starts itself on its first call (and then holds
+the shared model until its ``stop()``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import TypeVar
+
+from pydantic import BaseModel
+
+from assistantx.adapters.model import (
+    Attempt,
+    ChatRequest,
+    ChatResponse,
+    Message,
+    structured_call,
+)
+from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.agents.llm.shared import SharedModel
+from assistantx.core.errors import ModelBehaviorError
+from assistantx.core.ports.model import LLMCallFailed
+from assistantx.core.trace import AgentCall, Percept
+from assistantx.memory.focus import (
+    FocusBudget,
+    focus_budget,
+    merge_focus,
+    render_focused,
+    task_focus,
+)
+
+OutputT = TypeVar("OutputT", bound=BaseModel)
+
+
+class ModelReasoner(Reasoner):
+    """A reasoner whose agents are structured calls to a shared chat model, accounted in the
+    trace. Holds the shared model from ``start`` to ``stop`` (both idempotent)."""
+
+    def __init__(
+        self,
+        shared: SharedModel,
+        *,
+        output_retries: int = 2,
+        budget: FocusBudget | None = None,
+    ) -> None:
+        if output_retries < 0:
+            raise ValueError("output_retries must be >= 0")
+        self.shared = shared
+        self.output_retries = output_retries
+        self.budget = budget or focus_budget(8192, 1024)
+        self._holding = False
+
+    def memory(self, ctx: AgentContext, percept: Percept | None = None) -> str:
+        """The memory an agent sees: the task's focus (merged with the model's percept),
+        capped to fit the context; never the whole office."""
+        focus = merge_focus(percept, task_focus(ctx.ltm, ctx.stm))
+        return render_focused(ctx.ltm, ctx.stm, focus, self.budget)
+
+    async def start(self) -> None:
+        if not self._holding:
+            await self.shared.acquire()
+            self._holding = True
+
+    async def stop(self) -> None:
+        if self._holding:
+            self._holding = False
+            await self.shared.release()
+
+    async def _ask(
+        self,
+        ctx: AgentContext,
+        agent: str,
+        messages: list[Message],
+        output_type: type[OutputT],
+        check: Callable[[OutputT], None] | None,
+        *,
+        schema_name: str | None = None,
+    ) -> OutputT:
+        """One structured call, its attempts recorded on ``ctx`` even when it gives up."""
+        await self.start()
+        request = ChatRequest(
+            messages=tuple(messages),
+            agent=agent,
+            schema_name=schema_name,
+            instruction_id=ctx.stm.instruction_id,
+            step=ctx.step,
+        )
+        try:
+            result = await structured_call(
+                self.shared.model, request, output_type, check, max_retries=self.output_retries
+            )
+        except ModelBehaviorError as exc:
+            attempts = [a for a in exc.attempts if isinstance(a, Attempt)]
+            if attempts:
+                ctx.record(agent_call(agent, attempts))
+            raise
+        except LLMCallFailed as exc:
+            # The server read the prompt (and maybe generated) before failing: count it.
+            earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
+            failed = Attempt(
+                response=ChatResponse(
+                    text="",
+                    usage=exc.usage,
+                    latency_s=exc.latency_s,
+                    model=exc.model,
+                    retries=exc.retries,
+                ),
+                error=str(exc),
+            )
+            ctx.record(agent_call(agent, [*earlier, failed]))
+            raise
+        ctx.record(agent_call(agent, result.attempts))
+        return result.output
+
+
+def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
+    """The trace's accounting of one agent call: every attempt's tokens and latency summed."""
+    return AgentCall(
+        agent=agent,
+        model=attempts[-1].response.model if attempts else None,
+        prompt_tokens=sum(a.response.usage.prompt_tokens for a in attempts),
+        completion_tokens=sum(a.response.usage.completion_tokens for a in attempts),
+        latency_s=sum(a.response.latency_s for a in attempts),
+        # every request the server saw: repairs and transport retries included
+        attempts=sum(1 + a.response.retries for a in attempts),
+        estimated=any(a.response.usage.estimated for a in attempts),
+    )
