@@ -8,7 +8,6 @@ from typing import Any
 
 import pytest
 from llm_office import llm_settings
-from scripted_reasoner import ScriptedReasoner
 
 from assistantx.agents.base import AgentContext
 from assistantx.agents.llm import build_factory
@@ -37,6 +36,7 @@ from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM
+from helpers.scripted_reasoner import ScriptedReasoner
 
 # (holder, person) as a model or a person might write them; each must mean (locker, zhang).
 SPELLINGS = [
