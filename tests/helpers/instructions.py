@@ -47,6 +47,8 @@ async def _follow_to_end(
             async for line in response.aiter_lines():
                 if line.startswith("id: "):
                     last = line[4:]
-        body: dict[str, Any] = (await client.get(path, headers=headers)).json()
+            # On this fresh connection too: the client's pooled one has idled through the
+            # whole instruction, past the server's keep-alive, and may be closing under us.
+            body: dict[str, Any] = (await own.get(path, headers=headers)).json()
         if body["status"] not in ACTIVE:
             return body
