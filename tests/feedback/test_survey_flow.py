@@ -4,10 +4,16 @@ report counts exactly what they said (through the real Assistant, messenger and 
 from __future__ import annotations
 
 import math
+import threading
 from pathlib import Path
+from typing import Any
 
+import pytest
+
+import assistantx.feedback.surveyor as surveyor_module
 from assistantx.core.actions import Inform, Inquire, Move, Stop, Wait
 from assistantx.core.office import Office
+from assistantx.feedback.impact import InstructionRecord, summarise
 from assistantx.feedback.report import load_report, render_markdown
 from assistantx.feedback.survey import SurveyState
 
@@ -206,3 +212,27 @@ async def test_opted_out_person_is_never_surveyed_again(office: Office, tmp_path
         assert h.store.survey(stm.instruction_id) is not None
         # The instructions were real instructions, not swallowed as survey replies.
         assert len(h.assistant.finished) == 2
+
+
+async def test_the_walking_estimate_runs_off_the_event_loop(
+    office: Office, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Planning the walk a person was spared takes seconds on a big floor: the end hook runs it
+    in a worker thread, never on the loop that serves everyone else."""
+    threads: list[int] = []
+
+    def recorded(*args: Any, **kwargs: Any) -> InstructionRecord:
+        threads.append(threading.get_ident())
+        return summarise(*args, **kwargs)
+
+    monkeypatch.setattr(surveyor_module, "summarise", recorded)
+    async with harness(office, tmp_path / "journal.sqlite3") as h:
+        loop_thread = threading.get_ident()
+        stm = await h.run(
+            "lee",
+            "bring me Zhang's stapler",
+            [[Move(place="zhang")], [Move(place="lee")], [Stop(outcome="done", summary="here")]],
+        )
+        record = h.store.instruction(stm.instruction_id)
+    assert len(threads) == 1 and threads[0] != loop_thread
+    assert record is not None and record.walking.saved_m > 0

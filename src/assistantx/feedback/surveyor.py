@@ -108,7 +108,9 @@ class Surveyor:
         if self._closed:
             return  # shutting down: the instruction resumes (and ends) on the next start
         now = self.clock.now()
-        record = summarise(self.office, stm.trace, now, self.distance)
+        # The walking estimate plans routes on the floor map (seconds on a big floor): off the
+        # event loop, so an instruction's end never stalls the service.
+        record = await asyncio.to_thread(summarise, self.office, stm.trace, now, self.distance)
         requester = stm.requester
         async with self._turn:
             await self.store.aput_instruction(record)
