@@ -26,6 +26,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from _tours import TourWorld
 
 from assistantx.adapters.robot.nav.amcl import AmclParams, ParticleFilter
 from assistantx.adapters.robot.nav.anchors import load_anchors
@@ -35,7 +36,6 @@ from assistantx.adapters.robot.nav.geometry import angle_diff
 from assistantx.adapters.robot.nav.lidar import Lidar
 from assistantx.adapters.robot.nav.occupancy_map import load_map
 from assistantx.adapters.robot.nav.planner import GridPlanner
-from assistantx.core.errors import UnreachableError
 
 REPO = Path(__file__).resolve().parents[1]
 TRIALS = 20
@@ -52,7 +52,7 @@ KIDNAP_PARAMS = AmclParams(
 )
 
 
-class World:
+class World(TourWorld):
     def __init__(self) -> None:
         self.grid = load_map(REPO / "maps" / "office.yaml")
         self.anchors = list(load_anchors(REPO / "maps" / "office.anchors.yaml").values())
@@ -60,27 +60,6 @@ class World:
         self.planner = GridPlanner(self.costmap)
         self.lidar = Lidar(self.grid)
         self.clear = np.argwhere(self.costmap.costs == 0)
-
-    def random_pose(self, rng: np.random.Generator) -> np.ndarray:
-        iy, ix = self.clear[rng.integers(0, len(self.clear))]
-        x, y = self.grid.cell_to_world(ix, iy)
-        return np.array([float(x), float(y), rng.uniform(-math.pi, math.pi)])
-
-    def route(self, start: np.ndarray, rng: np.random.Generator) -> PurePursuit:
-        """A path from ``start`` through random anchors, long enough for the trial."""
-        points = [start[:2]]
-        here = (float(start[0]), float(start[1]))
-        total = 0.0
-        while total < 40.0:
-            goal = self.anchors[rng.integers(0, len(self.anchors))]
-            try:
-                path = self.planner.plan(here, (goal.x, goal.y))
-            except UnreachableError:
-                continue
-            points.append(path.resampled(0.05))
-            total += path.length_m
-            here = (goal.x, goal.y)
-        return PurePursuit(np.vstack(points), None)
 
 
 def run_filter(

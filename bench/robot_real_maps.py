@@ -35,13 +35,14 @@ import time
 from pathlib import Path
 
 import numpy as np
+from _tours import TourWorld
 from scipy.ndimage import label
 
 from assistantx.adapters.robot.nav.amcl import LikelihoodField, ParticleFilter
 from assistantx.adapters.robot.nav.anchor_check import check_anchors, place_anchors
 from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
 from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.diff_drive import PurePursuit, SimulatedBase
+from assistantx.adapters.robot.nav.diff_drive import SimulatedBase
 from assistantx.adapters.robot.nav.lidar import Lidar, cast_rays
 from assistantx.adapters.robot.nav.navigation import NavigationParams, Navigator, shared_planner
 from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
@@ -66,7 +67,7 @@ SHARED_MAPS = next(
 DEFAULT_MAPS = ("depot", "warehouse", "tb3_sandbox")
 
 
-class RealWorld:
+class RealWorld(TourWorld):
     """What run_filter needs: the map, a LiDAR, a planner and random reachable poses."""
 
     def __init__(self, grid: OccupancyMap, anchors: dict[str, Anchor]) -> None:
@@ -78,26 +79,6 @@ class RealWorld:
         self.lidar = Lidar(grid, params.lidar)
         labels = _reachable(self.costmap, anchors)
         self.clear = np.argwhere(labels & (self.costmap.costs == 0))
-
-    def random_pose(self, rng: np.random.Generator) -> np.ndarray:
-        iy, ix = self.clear[rng.integers(0, len(self.clear))]
-        x, y = self.grid.cell_to_world(ix, iy)
-        return np.array([float(x), float(y), rng.uniform(-math.pi, math.pi)])
-
-    def route(self, start: np.ndarray, rng: np.random.Generator) -> PurePursuit:
-        points = [start[:2]]
-        here = (float(start[0]), float(start[1]))
-        total = 0.0
-        while total < 40.0:
-            goal = self.anchors[int(rng.integers(0, len(self.anchors)))]
-            try:
-                path = self.planner.plan(here, (goal.x, goal.y))
-            except RobotError:
-                continue
-            points.append(path.resampled(0.05))
-            total += path.length_m
-            here = (goal.x, goal.y)
-        return PurePursuit(np.vstack(points), None)
 
 
 def _reachable(costmap: Costmap, anchors: dict[str, Anchor]) -> np.ndarray:
