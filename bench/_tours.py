@@ -7,11 +7,11 @@ import math
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.anchors import Anchor
-from assistantx.adapters.robot.nav.diff_drive import PurePursuit
-from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap
-from assistantx.adapters.robot.nav.planner import GridPlanner
 from assistantx.core.errors import RobotError
+from assistantx.nav.anchors import Anchor
+from assistantx.nav.diff_drive import PurePursuit
+from assistantx.nav.occupancy_map import OccupancyMap
+from assistantx.nav.planner import GridPlanner
 
 TOUR_LENGTH_M = 40.0
 

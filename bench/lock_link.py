@@ -8,16 +8,11 @@ import json
 import statistics
 import time
 
-from assistantx.adapters.lock.protocol import (
-    CodeIssuer,
-    LockController,
-    LockKeys,
-    render_png,
-    unseal,
-)
-from assistantx.adapters.lock.protocol.server import LockServer
+from assistantx.adapters.lock.protocol import CodeIssuer, LockKeys, render_png, unseal
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.clock import WallClock
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.server import LockServer
 
 ROUNDS = 200
 

@@ -28,14 +28,14 @@ from pathlib import Path
 import numpy as np
 from _tours import TourWorld
 
-from assistantx.adapters.robot.nav.amcl import AmclParams, ParticleFilter
-from assistantx.adapters.robot.nav.anchors import load_anchors
-from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.diff_drive import PurePursuit, SimulatedBase
-from assistantx.adapters.robot.nav.geometry import angle_diff
-from assistantx.adapters.robot.nav.lidar import Lidar
-from assistantx.adapters.robot.nav.occupancy_map import load_map
-from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.nav.amcl import AmclParams, ParticleFilter
+from assistantx.nav.anchors import load_anchors
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.diff_drive import PurePursuit, SimulatedBase
+from assistantx.nav.geometry import angle_diff
+from assistantx.nav.lidar import Lidar
+from assistantx.nav.occupancy_map import load_map
+from assistantx.nav.planner import GridPlanner
 
 REPO = Path(__file__).resolve().parents[1]
 TRIALS = 20

@@ -16,9 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.amcl import AmclParams, LikelihoodField, ParticleFilter
-from assistantx.adapters.robot.nav.lidar import LaserScan, Lidar
-from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
+from assistantx.nav.amcl import AmclParams, LikelihoodField, ParticleFilter
+from assistantx.nav.lidar import LaserScan, Lidar
+from assistantx.nav.occupancy_map import OccupancyMap, load_map
 
 REPO = Path(__file__).resolve().parents[1]
 

@@ -14,10 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.anchors import load_anchors
-from assistantx.adapters.robot.nav.geometry import angle_diff
-from assistantx.adapters.robot.nav.navigation import Navigator
-from assistantx.adapters.robot.nav.occupancy_map import load_map
+from assistantx.nav.anchors import load_anchors
+from assistantx.nav.geometry import angle_diff
+from assistantx.nav.navigation import Navigator
+from assistantx.nav.occupancy_map import load_map
 
 REPO = Path(__file__).resolve().parents[1]
 TOUR_M = 200.0

@@ -14,10 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.occupancy_map import load_map
-from assistantx.adapters.robot.nav.planner import GridPlanner
 from assistantx.core.errors import UnreachableError
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import load_map
+from assistantx.nav.planner import GridPlanner
 
 REPO = Path(__file__).resolve().parents[1]
 PAIRS = 100

@@ -23,9 +23,9 @@ import time
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.occupancy_map import FREE, OCCUPIED, UNKNOWN, OccupancyMap
-from assistantx.adapters.robot.nav.planner import GridPlanner
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import FREE, OCCUPIED, UNKNOWN, OccupancyMap
+from assistantx.nav.planner import GridPlanner
 
 RES = 0.05
 ROOM = 200  # cells (10 m)

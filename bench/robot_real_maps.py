@@ -1,9 +1,9 @@
 """The robot base on real buildings' maps (ROS map_server YAML + image).
 
-Default: the three nav2 maps in ``<repo>/../shared/maps`` (depot, warehouse, tb3_sandbox).
+Default: the three nav2 maps in ``<repo>/maps/nav2`` (depot, warehouse, tb3_sandbox).
 ``--map YAML`` runs one map instead; ``--anchors YAML`` gives its anchors, otherwise
 ``--anchor-count`` anchors are placed, seeded, in free space the robot can reach from all
-of them (assistantx.adapters.robot.nav.anchor_check.place_anchors). Per map:
+of them (assistantx.nav.anchor_check.place_anchors). Per map:
 
 - set-up: loading the map, the inflated costmap, the planner's labels and AMCL's likelihood
   field (the work a robot does before its first move), wall seconds;
@@ -38,15 +38,15 @@ import numpy as np
 from _tours import TourWorld
 from scipy.ndimage import label
 
-from assistantx.adapters.robot.nav.amcl import LikelihoodField, ParticleFilter
-from assistantx.adapters.robot.nav.anchor_check import check_anchors, place_anchors
-from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
-from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.diff_drive import SimulatedBase
-from assistantx.adapters.robot.nav.lidar import Lidar, cast_rays
-from assistantx.adapters.robot.nav.navigation import NavigationParams, Navigator, shared_planner
-from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
 from assistantx.core.errors import RobotError
+from assistantx.nav.amcl import LikelihoodField, ParticleFilter
+from assistantx.nav.anchor_check import check_anchors, place_anchors
+from assistantx.nav.anchors import Anchor, load_anchors
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.diff_drive import SimulatedBase
+from assistantx.nav.lidar import Lidar, cast_rays
+from assistantx.nav.navigation import NavigationParams, Navigator, shared_planner
+from assistantx.nav.occupancy_map import OccupancyMap, load_map
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from robot_amcl_global import (
@@ -59,11 +59,8 @@ from robot_amcl_global import (
 )
 
 REPO = Path(__file__).resolve().parents[1]
-# CI clones the repository next to shared/; a worktree may sit deeper, so look upwards.
-SHARED_MAPS = next(
-    (d / "shared" / "maps" for d in REPO.parents if (d / "shared" / "maps").is_dir()),
-    REPO.parent / "shared" / "maps",
-)
+# The three nav2 maps are committed in the repository (maps/nav2, Apache-2.0).
+SHARED_MAPS = REPO / "maps" / "nav2"
 DEFAULT_MAPS = ("depot", "warehouse", "tb3_sandbox")
 
 

@@ -2,7 +2,7 @@
 driving on a real map, in one run.
 
 Serves the app (uvicorn, in this process) with the navigator robot and AMCL on nav2's
-warehouse map (``<repo>/../shared/maps``, or ``--map``), the office's locations anchored in
+warehouse map (``<repo>/maps/nav2``, or ``--map``), the office's locations anchored in
 its reachable free space (placed, seeded). A client in its own thread reads ``GET
 /v1/robot`` every ``--interval-s`` seconds: first ``--idle-s`` seconds with the robot idle,
 then while the robot drives a tour of ``--legs`` legs between far-apart places (planning,
@@ -28,12 +28,12 @@ from pathlib import Path
 import httpx
 import numpy as np
 
-from assistantx.adapters.robot.nav.anchor_check import place_anchors
-from assistantx.adapters.robot.nav.anchors import save_anchors
-from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.occupancy_map import load_map
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
+from assistantx.nav.anchor_check import place_anchors
+from assistantx.nav.anchors import save_anchors
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import load_map
 from assistantx.service.app import create_app
 from assistantx.service.server import service_server
 

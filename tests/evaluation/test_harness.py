@@ -11,7 +11,7 @@ from assistantx.cli import main
 from assistantx.core.office import DEFAULT_OFFICE
 
 TASKS = DEFAULT_OFFICE.parent / "tasks.jsonl"
-FIXTURES = Path(__file__).parents[1] / "dataset" / "fixtures"
+FIXTURES = Path(__file__).parent / "dataset" / "fixtures"
 
 
 def _lines(out: Path) -> list[dict[str, object]]:

@@ -10,9 +10,9 @@ import pytest
 
 from assistantx.core.office import Office, load_office
 from assistantx.memory.graph import HISTORY, LongTermMemory
-from assistantx.memory.journal import Journal
 from assistantx.memory.updates import AvailabilityUpdate, OwnershipUpdate
 from assistantx.service.durability import LTM_STATE, Durability
+from assistantx.store.journal import Journal
 
 
 @pytest.fixture(scope="module")

@@ -9,10 +9,10 @@ from pathlib import Path
 
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
-from assistantx.memory.journal import Journal
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.service.admission import Admission
 from assistantx.sim.office import SimOffice
+from assistantx.store.journal import Journal
 from helpers.office import sim_assistant
 from service.stapler_reasoner import build_factory
 

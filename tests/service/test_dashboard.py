@@ -16,11 +16,11 @@ import numpy as np
 import pytest
 from matplotlib.image import imread
 
-from assistantx.adapters.robot.nav.anchors import load_anchors
-from assistantx.adapters.robot.nav.occupancy_map import load_map
 from assistantx.adapters.robot.navigator import DEFAULT_MAP
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
+from assistantx.nav.anchors import load_anchors
+from assistantx.nav.occupancy_map import load_map
 from assistantx.service.app import create_app
 from assistantx.service.dashboard import occupancy_grey
 from helpers.eventually import eventually

@@ -12,8 +12,8 @@ import pytest
 
 from assistantx.core.events import TraceEvent
 from assistantx.core.settings import Settings
-from assistantx.memory.journal import Journal
 from assistantx.service.app import create_app
+from assistantx.store.journal import Journal
 from helpers.servers import serving_app
 from service.server import OPERATOR
 

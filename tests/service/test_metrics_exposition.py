@@ -15,8 +15,8 @@ from prometheus_client.parser import text_string_to_metric_families
 from prometheus_client.samples import Sample
 
 from assistantx.core.trace import AgentCall, TraceStep
-from assistantx.memory.journal import Journal
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.store.journal import Journal
 from service.test_dashboard import serve
 
 # The name the parser gives each family (a counter's without its ``_total``) and its type.

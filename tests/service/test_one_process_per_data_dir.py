@@ -11,7 +11,7 @@ from pathlib import Path
 
 import httpx
 
-from assistantx.memory.journal import Journal
+from assistantx.store.journal import Journal
 from helpers.eventually import eventually_sync
 from service.server import LEE, base_env, free_port, serve
 

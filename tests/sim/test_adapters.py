@@ -7,13 +7,14 @@ from collections.abc import AsyncIterator
 
 import pytest
 
-from assistantx.adapters.lock.protocol import LockController, LockKeys
-from assistantx.adapters.lock.protocol.server import LockServer
+from assistantx.adapters.lock.protocol import LockKeys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.robot.navigator import NavigatorRobot
 from assistantx.core.actions import Inform, Inquire, Move, SendQR, Wait, WaitInPlace
 from assistantx.core.clock import SimClock, WallClock
 from assistantx.core.office import Office, load_office
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.server import LockServer
 from assistantx.sim.office import SimOffice
 from assistantx.sim.session import SimSession
 

@@ -9,11 +9,11 @@ from __future__ import annotations
 import asyncio
 import hashlib
 
-from assistantx.adapters.lock.local import LocalLocker
-from assistantx.adapters.lock.protocol.controller import LockController
 from assistantx.adapters.lock.protocol.keys import Keyring
 from assistantx.core.clock import Clock
 from assistantx.core.ports.lock import LockEvent
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimRobot
 from synapse.helpers import WAIT_S
 

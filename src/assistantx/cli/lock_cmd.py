@@ -21,13 +21,13 @@ import os
 import signal
 from pathlib import Path
 
-from assistantx.adapters.lock.protocol.controller import LockController
 from assistantx.adapters.lock.protocol.keys import KeyringError, LockKeys, load_lock_keys, new_key
 from assistantx.adapters.lock.protocol.link import LinkTimeouts
-from assistantx.adapters.lock.protocol.server import LockServer
 from assistantx.core.clock import WallClock
 from assistantx.core.settings import Settings
 from assistantx.service.runtime import LOCK_KEYS_FILE, ensure_data_dir
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.server import LockServer
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -11,16 +11,16 @@ from pathlib import Path
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.anchor_check import check_anchors
-from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
-from assistantx.adapters.robot.nav.costmap import Costmap
-from assistantx.adapters.robot.nav.occupancy_map import load_map
-from assistantx.adapters.robot.nav.render import render_map
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.core.clock import SimClock
 from assistantx.core.errors import AssistantXError
 from assistantx.core.office import DEFAULT_OFFICE, load_office
 from assistantx.core.settings import Settings
+from assistantx.nav.anchor_check import check_anchors
+from assistantx.nav.anchors import Anchor, load_anchors
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import load_map
+from assistantx.nav.render import render_map
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

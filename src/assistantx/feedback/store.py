@@ -18,9 +18,9 @@ from pathlib import Path
 from typing import TypeVar
 
 from assistantx.core.errors import JournalError
-from assistantx.core.sqlite_store import Schema, SchemaError, SqliteStore
 from assistantx.feedback.impact import InstructionRecord
 from assistantx.feedback.survey import Survey, SurveyState
+from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore
 
 _SCHEMA = """
 CREATE TABLE IF NOT EXISTS feedback_instruction (

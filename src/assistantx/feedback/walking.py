@@ -21,13 +21,13 @@ from typing import Literal
 
 from pydantic import BaseModel, Field
 
-from assistantx.adapters.robot.nav.anchors import Anchor
-from assistantx.adapters.robot.nav.planner import GridPlanner
 from assistantx.adapters.robot.navigator import NavigatorRobot
 from assistantx.core.actions import Move
 from assistantx.core.errors import RobotError, UnreachableError
 from assistantx.core.office import Office
 from assistantx.core.trace import Trace
+from assistantx.nav.anchors import Anchor
+from assistantx.nav.planner import GridPlanner
 
 logger = logging.getLogger(__name__)
 

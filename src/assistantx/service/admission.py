@@ -14,8 +14,8 @@ import asyncio
 import contextlib
 import logging
 
-from assistantx.memory.journal import InstructionRecord, Journal
 from assistantx.runtime.assistant import Assistant
+from assistantx.store.journal import InstructionRecord, Journal
 
 logger = logging.getLogger(__name__)
 

@@ -23,12 +23,12 @@ import os
 from pathlib import Path
 from typing import Any
 
-from assistantx.adapters.lock.local import LocalLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.core.errors import LockError
 from assistantx.core.ports.messenger import InboundMessage, OutboundMessage
-from assistantx.memory.journal import Journal
+from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import HeldCode, SimOffice
+from assistantx.store.journal import Journal
 
 logger = logging.getLogger(__name__)
 

@@ -35,14 +35,14 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from assistantx.adapters.lock.protocol.codes import unseal
 from assistantx.adapters.lock.protocol.keys import Keyring
-from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
-from assistantx.adapters.robot.nav.occupancy_map import OccupancyMap, load_map
 from assistantx.core.errors import InvalidCodeError, MapError
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import LockEvent
 from assistantx.core.ports.messenger import OutboundMessage
 from assistantx.core.wording import person_name, purpose_text
 from assistantx.memory.short_term import CodeState
+from assistantx.nav.anchors import Anchor, load_anchors
+from assistantx.nav.occupancy_map import OccupancyMap, load_map
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
 from assistantx.service.runtime import ServiceRuntime

@@ -24,12 +24,12 @@ from assistantx.core.office import Office
 from assistantx.core.ports.messenger import InboundMessage
 from assistantx.core.trace import ActionResult
 from assistantx.memory.graph import LongTermMemory
-from assistantx.memory.journal import EventRecord, InstructionRecord, Journal, Status
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AppliedUpdate
 from assistantx.runtime.assistant import Assistant
 from assistantx.service.hub import EventHub
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.store.journal import EventRecord, InstructionRecord, Journal, Status
 
 logger = logging.getLogger(__name__)
 

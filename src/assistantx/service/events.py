@@ -28,11 +28,11 @@ from typing import Annotated
 from fastapi import APIRouter, Depends, Header, Query
 from fastapi.sse import EventSourceResponse, ServerSentEvent
 
-from assistantx.memory.journal import MAX_SEQ, EventRecord
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.runtime import ServiceRuntime
+from assistantx.store.journal import MAX_SEQ, EventRecord
 
 router = APIRouter(prefix="/v1", tags=["events"])
 

@@ -11,7 +11,7 @@ import asyncio
 import logging
 from dataclasses import dataclass
 
-from assistantx.memory.journal import EventRecord
+from assistantx.store.journal import EventRecord
 
 logger = logging.getLogger(__name__)
 

@@ -7,7 +7,6 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Response
 
-from assistantx.memory.journal import MAX_SEQ, Status
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.schemas import (
@@ -17,6 +16,7 @@ from assistantx.service.schemas import (
     InstructionOut,
     InstructionPage,
 )
+from assistantx.store.journal import MAX_SEQ, Status
 
 router = APIRouter(prefix="/v1/instructions", tags=["instructions"])
 

@@ -8,11 +8,11 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, Query
 
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.memory.journal import MAX_SEQ
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.schemas import ChatOut, MessageIn, MessageOut
+from assistantx.store.journal import MAX_SEQ
 
 router = APIRouter(prefix="/v1", tags=["messages"])
 

@@ -13,7 +13,7 @@ import contextlib
 import logging
 import time
 
-from assistantx.memory.journal import Journal
+from assistantx.store.journal import Journal
 
 logger = logging.getLogger(__name__)
 

@@ -17,8 +17,6 @@ from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
 
-from assistantx.adapters.lock.local import LocalLocker
-from assistantx.adapters.lock.protocol.controller import LockController
 from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
@@ -33,7 +31,6 @@ from assistantx.core.office import Office, load_office
 from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.robot import RobotBase
 from assistantx.core.settings import Settings
-from assistantx.memory.journal import InstructionRecord, Journal
 from assistantx.memory.resolve import Resolver
 from assistantx.runtime.assistant import (
     Assistant,
@@ -51,7 +48,10 @@ from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
+from assistantx.store.journal import InstructionRecord, Journal
 
 logger = logging.getLogger(__name__)
 

@@ -7,7 +7,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
-from assistantx.memory.journal import InstructionRecord, MessageRecord, Status
+from assistantx.store.journal import InstructionRecord, MessageRecord, Status
 
 Id = Field(min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_.:\- ]+$")
 

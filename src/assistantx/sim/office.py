@@ -18,8 +18,6 @@ from dataclasses import dataclass
 from datetime import UTC, datetime
 from typing import Any, Protocol, runtime_checkable
 
-from assistantx.adapters.lock.local import LocalLocker
-from assistantx.adapters.lock.protocol.controller import LockController
 from assistantx.adapters.lock.protocol.keys import Keyring
 from assistantx.core.clock import Clock, SimClock
 from assistantx.core.errors import LockError
@@ -34,6 +32,8 @@ from assistantx.core.ports.messenger import (
     SentMessage,
 )
 from assistantx.core.ports.robot import RobotBase
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.people import Reply, direct_reply, group_replies, handover_problem
 from assistantx.sim.people import perform_handover as do_handover
 from assistantx.sim.robot import DistanceFn, ObservedRobot, SimRobot

@@ -25,7 +25,7 @@ from assistantx.core.ports.messenger import (
     OutboundMessage,
     SentMessage,
 )
-from assistantx.memory.journal import Journal, MessageRecord
+from assistantx.store.journal import Journal, MessageRecord
 
 logger = logging.getLogger(__name__)
 

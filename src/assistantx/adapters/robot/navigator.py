@@ -36,13 +36,6 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
-from assistantx.adapters.robot.nav.anchor_check import AnchorProblem, check_anchors
-from assistantx.adapters.robot.nav.anchors import Anchor, load_anchors
-from assistantx.adapters.robot.nav.geometry import FloatArray
-from assistantx.adapters.robot.nav.navigation import NavigationParams, Navigator
-from assistantx.adapters.robot.nav.occupancy_map import OCCUPIED, OccupancyMap, load_map
-from assistantx.adapters.robot.nav.plan_process import PLAN_PROCESS
-from assistantx.adapters.robot.nav.planner import GridPlanner, Path
 from assistantx.core.clock import Clock
 from assistantx.core.errors import (
     BlockedError,
@@ -53,6 +46,13 @@ from assistantx.core.errors import (
 )
 from assistantx.core.office import Office
 from assistantx.core.ports.robot import MoveResult, Pose, RobotBase, RobotState
+from assistantx.nav.anchor_check import AnchorProblem, check_anchors
+from assistantx.nav.anchors import Anchor, load_anchors
+from assistantx.nav.geometry import FloatArray
+from assistantx.nav.navigation import NavigationParams, Navigator
+from assistantx.nav.occupancy_map import OCCUPIED, OccupancyMap, load_map
+from assistantx.nav.plan_process import PLAN_PROCESS
+from assistantx.nav.planner import GridPlanner, Path
 
 logger = logging.getLogger(__name__)
 

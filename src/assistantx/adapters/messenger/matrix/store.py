@@ -28,7 +28,7 @@ from typing import Protocol, TypeVar
 
 from assistantx.core.errors import MessengerError
 from assistantx.core.ports.messenger import InboundMessage
-from assistantx.core.sqlite_store import Schema, SchemaError, SqliteStore, StoreClosedError
+from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore, StoreClosedError
 
 T = TypeVar("T")
 

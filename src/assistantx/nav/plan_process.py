@@ -1,0 +1,117 @@
+"""Planning in a worker process, so a long search never stalls the caller's event loop.
+
+scipy's Dijkstra holds the GIL for the whole search: in a worker *thread* a plan across a
+big building still stops the event loop for its length. ``PlanProcess`` runs the search in
+one worker process (spawned, so no locks are inherited from the caller's threads) while the
+calling thread waits with the GIL released.
+
+A planner's costs cross over once per version: the worker keeps the planners it was sent,
+keyed by the planner's ``token`` and ``version`` (``update_window`` bumps the version when
+seen obstacles change the costs), and the caller sends the costs again only when the worker
+does not have that version yet.
+"""
+
+from __future__ import annotations
+
+import logging
+import multiprocessing
+import threading
+from concurrent.futures import ProcessPoolExecutor
+
+import numpy as np
+import numpy.typing as npt
+
+from assistantx.nav.costmap import Costmap, InflationParams
+from assistantx.nav.occupancy_map import OccupancyMap
+from assistantx.nav.planner import GridPlanner, Path, PlannerParams
+
+logger = logging.getLogger(__name__)
+
+_KEEP = 4  # planners the worker keeps (the map's, and a robot's latest layered versions)
+_Key = tuple[str, int]
+_Payload = tuple[OccupancyMap, npt.NDArray[np.uint8], InflationParams, PlannerParams]
+_worker_planners: dict[_Key, GridPlanner] = {}  # in the worker process only
+
+
+class _Missing(Exception):
+    """The worker lacks this planner version: send its costs."""
+
+
+def _keep_in_worker(key: _Key, payload: _Payload) -> None:
+    if key not in _worker_planners:
+        grid, costs, inflation, params = payload
+        _worker_planners[key] = GridPlanner(
+            Costmap(grid, costs, np.empty((0, 0)), inflation), params
+        )
+
+
+def _plan_in_worker(
+    key: _Key, payload: _Payload | None, start: tuple[float, float], goal: tuple[float, float]
+) -> Path:
+    planner = _worker_planners.get(key)
+    if planner is None:
+        if payload is None:
+            raise _Missing(key)
+        grid, costs, inflation, params = payload
+        costmap = Costmap(grid, costs, np.empty((0, 0)), inflation)
+        planner = GridPlanner(costmap, params)
+        _worker_planners[key] = planner
+        while len(_worker_planners) > _KEEP:
+            del _worker_planners[next(iter(_worker_planners))]
+    return planner.plan(start, goal)
+
+
+class PlanProcess:
+    """One worker process that plans for every caller in this process (one at a time)."""
+
+    def __init__(self) -> None:
+        self._pool: ProcessPoolExecutor | None = None
+        self._lock = threading.Lock()
+        self._sent: set[_Key] = set()
+
+    def plan(
+        self, planner: GridPlanner, start: tuple[float, float], goal: tuple[float, float]
+    ) -> Path:
+        """``planner.plan(start, goal)``, computed in the worker; raises what it raises."""
+        key = (planner.token, planner.version)
+        with self._lock:
+            pool = self._ensure_pool()
+            payload = None if key in self._sent else _payload(planner)
+            try:
+                path = pool.submit(_plan_in_worker, key, payload, start, goal).result()
+            except _Missing:
+                path = pool.submit(_plan_in_worker, key, _payload(planner), start, goal).result()
+            self._sent.add(key)
+            return path
+
+    def warm(self, planner: GridPlanner) -> None:
+        """Start the worker and send it ``planner``'s costs now, so the first plan does not
+        wait for a process to start (seconds on a busy machine)."""
+        key = (planner.token, planner.version)
+        with self._lock:
+            if key not in self._sent:
+                self._ensure_pool().submit(_keep_in_worker, key, _payload(planner)).result()
+                self._sent.add(key)
+
+    def close(self) -> None:
+        with self._lock:
+            if self._pool is not None:
+                self._pool.shutdown(wait=True)
+                self._pool = None
+            self._sent.clear()
+
+    def _ensure_pool(self) -> ProcessPoolExecutor:
+        if self._pool is None:
+            context = multiprocessing.get_context("spawn")
+            self._pool = ProcessPoolExecutor(max_workers=1, mp_context=context)
+            self._sent.clear()
+            logger.info("started the planning worker process")
+        return self._pool
+
+
+def _payload(planner: GridPlanner) -> _Payload:
+    costmap = planner.costmap
+    return costmap.grid, costmap.costs.copy(), costmap.params, planner.params
+
+
+PLAN_PROCESS = PlanProcess()

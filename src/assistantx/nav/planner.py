@@ -1,0 +1,333 @@
+"""A grid planner on an inflated costmap: exact Dijkstra inside an ellipse, then smoothing.
+
+Cells whose cost is below INSCRIBED are nodes, 8-connected (diagonals only where both side
+cells are traversable, so paths never cut a corner). An edge from u to v weighs
+``length_m * (1 + cost_penalty * (c_u + c_v) / 2 / 252)``, the cost term of nav2's Smac
+planner: the path keeps away from walls where there is room.
+
+No graph is kept between queries, so set-up is the costmap plus a 4-connected labelling
+(which tells an unreachable goal at once: without corner cutting, 8-connected moves join
+exactly the cells that 4-connected ones do) and memory grows with the free area a query
+touches. A query builds the graph only over the cells p with ``oct(s, p) + oct(p, g) <= L``
+(``oct``: the octile distance, the shortest 8-connected grid distance; an ellipse-like
+region round start s and goal g) and runs scipy's Dijkstra there. Every edge weighs at
+least its grid length, so a path of cost <= L never leaves that region: a path found with
+cost <= L is optimal over the whole map. Otherwise L grows (x1.4) and the query repeats.
+
+The grid path is then shortened by line-of-sight shortcuts that never pass closer to an
+obstacle than the grid path did over the same stretch, and resampled for the controller.
+"""
+
+from __future__ import annotations
+
+import math
+import uuid
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+from scipy.ndimage import distance_transform_edt, label
+from scipy.sparse import csr_matrix
+from scipy.sparse.csgraph import dijkstra
+
+from assistantx.core.errors import UnreachableError
+from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
+
+
+@dataclass(frozen=True)
+class PlannerParams:
+    cost_penalty: float = 2.0
+    start_snap_m: float = 0.5  # a start inside the inscribed zone snaps to free space this near
+    smooth: bool = True
+
+
+@dataclass(frozen=True)
+class Path:
+    """A planned path: waypoints in metres, its length (m) and its cost (weighted metres)."""
+
+    points: npt.NDArray[np.float64]  # (n, 2)
+    length_m: float
+    cost: float
+    grid_cells: int
+
+    def resampled(self, spacing_m: float = 0.1) -> npt.NDArray[np.float64]:
+        return resample_polyline(self.points, spacing_m)
+
+
+class GridPlanner:
+    def __init__(self, costmap: Costmap, params: PlannerParams | None = None) -> None:
+        self.costmap = costmap
+        self.params = params or PlannerParams()
+        # Who this planner is and which costs it plans on, for a worker process that keeps
+        # planners it was sent (plan_process): update_window bumps the version.
+        self.token = uuid.uuid4().hex
+        self.version = 0
+        self._labels: npt.NDArray[np.int32] | None = None
+        # For snapping a start that strayed into the inscribed zone back to the nearest
+        # traversable cell: made on first need (an EDT with indices is costly on big maps).
+        self._nearest_free: npt.NDArray[np.intp] | None = None
+        self._component_labels()
+
+    def layered(self, costmap: Costmap) -> GridPlanner:
+        """A planner on ``costmap`` (the map's costs plus obstacles seen, never lower)."""
+        other = GridPlanner.__new__(GridPlanner)
+        other.costmap, other.params = costmap, self.params
+        other._labels, other._nearest_free = None, None
+        other.token, other.version = uuid.uuid4().hex, 0
+        return other
+
+    def update_window(self, window: tuple[int, int, int, int]) -> None:
+        """The costs in ``window`` changed (in place): forget what was derived from them."""
+        del window  # the whole labelling is redone on next need (one pass, ~linear)
+        self._labels = None
+        self._nearest_free = None
+        self.version += 1
+
+    def _component_labels(self) -> npt.NDArray[np.int32]:
+        if self._labels is None:
+            labels = np.empty(self.costmap.costs.shape, dtype=np.int32)
+            label(self.costmap.traversable, output=labels)
+            self._labels = labels
+        return self._labels
+
+    # -- queries ---------------------------------------------------------------------------
+    def plan(self, start: tuple[float, float], goal: tuple[float, float]) -> Path:
+        """Plan from start to goal (world metres); raise UnreachableError with the reason."""
+        goal_cell = self._goal_cell(goal)
+        start_cell = self._start_cell(start)
+        if start_cell == goal_cell:
+            return self._make_path(np.asarray([start_cell]), 0.0, start, goal)
+        labels = self._component_labels()
+        if labels[start_cell] != labels[goal_cell]:
+            raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
+        res = self.costmap.grid.resolution
+        straight = float(_octile(start_cell[0] - goal_cell[0], start_cell[1] - goal_cell[1])) * res
+        # Path costs run a few percent above the straight line in open space; start just
+        # above that and widen. Once the region holds the whole map (no cell is farther
+        # than ``whole``), search it without a bound: a maze's path may be far longer.
+        height, width = self.costmap.costs.shape
+        whole = 3.0 * math.hypot(height, width) * res
+        limit = 1.1 * straight + 1.0
+        while limit < whole:
+            found = self._search(start_cell, goal_cell, limit, limit)
+            if found is not None:
+                return self._make_path(found[0], found[1], start, goal)
+            limit *= 1.4
+        found = self._search(start_cell, goal_cell, whole, math.inf)
+        if found is None:  # cannot happen within one component; kept as a guard
+            raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
+        return self._make_path(found[0], found[1], start, goal)
+
+    def plan_many(
+        self, start: tuple[float, float], goals: Sequence[tuple[float, float]]
+    ) -> list[Path | None]:
+        """Paths from one start to many goals (None: unreachable)."""
+        paths: list[Path | None] = []
+        for goal in goals:
+            try:
+                paths.append(self.plan(start, goal))
+            except UnreachableError:
+                paths.append(None)
+        return paths
+
+    def _search(
+        self, start: tuple[int, int], goal: tuple[int, int], region_m: float, limit_m: float
+    ) -> tuple[npt.NDArray[np.intp], float] | None:
+        """Dijkstra over the traversable cells with ``oct(s,p) + oct(p,g) <= region_m``;
+        the optimal (cells, cost) if its cost is within ``limit_m``, else None."""
+        costs = self.costmap.costs
+        height, width = costs.shape
+        res = self.costmap.grid.resolution
+        reach = region_m / res  # in cells
+        (sy, sx), (gy, gx) = start, goal
+        # A cell beyond the foci's box by e along x has oct(s,p) + oct(p,g) >= 2e + |dx|.
+        my = max(0.0, (reach - abs(sy - gy)) / 2)
+        mx = max(0.0, (reach - abs(sx - gx)) / 2)
+        y0, y1 = max(0, int(min(sy, gy) - my)), min(height, int(max(sy, gy) + my) + 1)
+        x0, x1 = max(0, int(min(sx, gx) - mx)), min(width, int(max(sx, gx) + mx) + 1)
+        block = costs[y0:y1, x0:x1]
+        traversable = block < INSCRIBED
+        ys = np.arange(y0, y1, dtype=np.float32)[:, None]
+        xs = np.arange(x0, x1, dtype=np.float32)[None, :]
+        inside = _octile(ys - sy, xs - sx) + _octile(ys - gy, xs - gx) <= reach + 1e-3
+        nodes = traversable & inside
+        del inside
+        ids = np.full(block.shape, -1, dtype=np.int32)
+        count = int(nodes.sum())
+        ids[nodes] = np.arange(count, dtype=np.int32)
+        graph = _graph(ids, nodes, traversable, block, res, self.params.cost_penalty)
+        source, target = int(ids[sy - y0, sx - x0]), int(ids[gy - y0, gx - x0])
+        dist, pred = dijkstra(graph, indices=source, return_predecessors=True, limit=limit_m)
+        cost = float(dist[target])
+        if not (cost <= limit_m and math.isfinite(cost)):
+            return None
+        path_nodes = _walk_back(pred, target)
+        cells = np.argwhere(nodes)[path_nodes] + (y0, x0)
+        return cells, cost
+
+    # -- helpers ---------------------------------------------------------------------------
+    def _cell(self, point: tuple[float, float], role: str) -> tuple[int, int]:
+        grid = self.costmap.grid
+        ix, iy = grid.world_to_cell(point[0], point[1])
+        if not (0 <= ix < grid.width and 0 <= iy < grid.height):
+            raise UnreachableError(f"{role} {_fmt(point)} is off the map")
+        return int(iy), int(ix)
+
+    def _goal_cell(self, goal: tuple[float, float]) -> tuple[int, int]:
+        cell = self._cell(goal, "goal")
+        cost = int(self.costmap.costs[cell])
+        if cost == LETHAL:
+            raise UnreachableError(f"goal {_fmt(goal)} is inside an obstacle")
+        if cost == NO_INFORMATION:
+            raise UnreachableError(f"goal {_fmt(goal)} is in unknown space")
+        if cost == INSCRIBED:
+            raise UnreachableError(f"goal {_fmt(goal)} is too close to an obstacle for the robot")
+        return cell
+
+    def _start_cell(self, start: tuple[float, float]) -> tuple[int, int]:
+        iy, ix = self._cell(start, "start")
+        traversable = self.costmap.costs < INSCRIBED
+        if traversable[iy, ix]:
+            return iy, ix
+        if self._nearest_free is None:
+            _, nearest = distance_transform_edt(~traversable, return_indices=True)
+            self._nearest_free = np.asarray(nearest)
+        ny, nx = (int(v) for v in self._nearest_free[:, iy, ix])
+        snap = math.hypot(ny - iy, nx - ix) * self.costmap.grid.resolution
+        if snap > self.params.start_snap_m or not traversable[ny, nx]:
+            raise UnreachableError(f"start {_fmt(start)} is inside an obstacle")
+        return ny, nx
+
+    def _make_path(
+        self,
+        cells: npt.NDArray[np.intp],
+        cost: float,
+        start: tuple[float, float],
+        goal: tuple[float, float],
+    ) -> Path:
+        xs, ys = self.costmap.grid.cell_to_world(cells[:, 1], cells[:, 0])
+        points = np.column_stack([xs, ys]).astype(np.float64)
+        # Exact endpoints: the robot starts where it is and stops on the anchor.
+        points[0], points[-1] = start, goal
+        if self.params.smooth and len(points) > 2:
+            points = shortcut(points, self.costmap)
+        length = float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
+        return Path(points, length, cost, len(cells))
+
+
+def _graph(
+    ids: npt.NDArray[np.int32],
+    nodes: npt.NDArray[np.bool_],
+    traversable: npt.NDArray[np.bool_],
+    block: npt.NDArray[np.uint8],
+    res: float,
+    cost_penalty: float,
+) -> csr_matrix:
+    """The 8-connected graph of ``nodes`` in CSR form, built row by row without a COO copy
+    (int32 indices, 12 bytes an edge): each node's edges in a fixed direction order."""
+    height, width = nodes.shape
+    count = int(ids.max()) + 1 if ids.size else 0
+    directions = [(dy, dx) for dy in (-1, 0, 1) for dx in (-1, 0, 1) if dy or dx]
+    valid: list[npt.NDArray[np.bool_]] = []
+    for dy, dx in directions:
+        ok = np.zeros((height, width), dtype=bool)
+        ys, ys2 = slice(max(0, -dy), height - max(0, dy)), slice(max(0, dy), height + min(0, dy))
+        xs, xs2 = slice(max(0, -dx), width - max(0, dx)), slice(max(0, dx), width + min(0, dx))
+        edge = nodes[ys, xs] & nodes[ys2, xs2]
+        if dy and dx:  # no corner cutting: both side cells must be traversable
+            edge &= traversable[ys2, xs] & traversable[ys, xs2]
+        ok[ys, xs] = edge
+        valid.append(ok[nodes])
+    degree = np.zeros(count, dtype=np.int32)
+    for ok_nodes in valid:
+        degree += ok_nodes
+    indptr = np.zeros(count + 1, dtype=np.int64 if degree.sum() >= 2**31 else np.int32)
+    np.cumsum(degree, out=indptr[1:])
+    nnz = int(indptr[-1])
+    indices = np.empty(nnz, dtype=np.int32)
+    data = np.empty(nnz, dtype=np.float64)
+    offset = indptr[:-1].copy()
+    node_y, node_x = (v.astype(np.int32) for v in np.nonzero(nodes))
+    node_cost = block[node_y, node_x].astype(np.float64)
+    for (dy, dx), ok_nodes in zip(directions, valid, strict=True):
+        at = offset[ok_nodes]
+        ny, nx = node_y[ok_nodes] + dy, node_x[ok_nodes] + dx
+        indices[at] = ids[ny, nx]
+        mean_cost = (node_cost[ok_nodes] + block[ny, nx]) / 2
+        length = res * math.hypot(dy, dx)
+        data[at] = length * (1 + cost_penalty * mean_cost / (INSCRIBED - 1))
+        offset[ok_nodes] = at + 1
+    return csr_matrix((data, indices, indptr), shape=(count, count))
+
+
+def _octile(dy: Any, dx: Any) -> Any:
+    """The 8-connected grid distance (cells): no path between two cells is shorter."""
+    ay, ax = np.abs(dy), np.abs(dx)
+    return np.maximum(ay, ax) + (math.sqrt(2.0) - 1.0) * np.minimum(ay, ax)
+
+
+def _walk_back(pred: npt.NDArray[np.int32], goal: int) -> list[int]:
+    nodes = [goal]
+    node = int(pred[goal])
+    while node >= 0:
+        nodes.append(node)
+        node = int(pred[node])
+    nodes.reverse()
+    return nodes
+
+
+def _segment_max_cost(
+    costmap: Costmap, a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]
+) -> int:
+    grid = costmap.grid
+    n = max(2, math.ceil(float(np.linalg.norm(b - a)) / (grid.resolution / 2)) + 1)
+    t = np.linspace(0.0, 1.0, n)[:, None]
+    pts = a + t * (b - a)
+    ix, iy = grid.world_to_cell(pts[:, 0], pts[:, 1])
+    ix = np.clip(ix, 0, grid.width - 1)
+    iy = np.clip(iy, 0, grid.height - 1)
+    return int(costmap.costs[iy, ix].max())
+
+
+def shortcut(points: npt.NDArray[np.float64], costmap: Costmap) -> npt.NDArray[np.float64]:
+    """Greedy line-of-sight shortcuts that stay as far from obstacles as the grid path did."""
+    grid = costmap.grid
+    ix, iy = grid.world_to_cell(points[:, 0], points[:, 1])
+    ix = np.clip(ix, 0, grid.width - 1)
+    iy = np.clip(iy, 0, grid.height - 1)
+    along = costmap.costs[iy, ix].astype(np.int64)
+    out = [points[0]]
+    i, n = 0, len(points)
+    while i < n - 1:
+        lo, hi = i + 1, n - 1
+        best = lo
+        # Binary search for the farthest visible waypoint; visibility is near-monotone here.
+        while lo <= hi:
+            mid = (lo + hi) // 2
+            # A little slack (10 of 252) lets corners round off without hugging walls.
+            allowed = min(int(along[i : mid + 1].max()) + 10, INSCRIBED - 1)
+            if _segment_max_cost(costmap, points[i], points[mid]) <= allowed:
+                best, lo = mid, mid + 1
+            else:
+                hi = mid - 1
+        out.append(points[best])
+        i = best
+    return np.asarray(out)
+
+
+def resample_polyline(points: npt.NDArray[np.float64], spacing_m: float) -> npt.NDArray[np.float64]:
+    """Points every ``spacing_m`` along a polyline, keeping both ends."""
+    seg = np.linalg.norm(np.diff(points, axis=0), axis=1)
+    s = np.r_[0.0, np.cumsum(seg)]
+    if s[-1] == 0.0:
+        return points[:1].copy()
+    samples = np.r_[np.arange(0.0, s[-1], spacing_m), s[-1]]
+    return np.column_stack(
+        [np.interp(samples, s, points[:, 0]), np.interp(samples, s, points[:, 1])]
+    )
+
+
+def _fmt(point: tuple[float, float]) -> str:
+    return f"({point[0]:.2f}, {point[1]:.2f})"

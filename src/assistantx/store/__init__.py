@@ -1,0 +1,1 @@
+"""Persistence: the service's journal and the SQLite helper every store shares."""

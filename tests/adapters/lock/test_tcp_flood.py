@@ -1,0 +1,121 @@
+"""A flood of idle unauthenticated sockets cannot keep the assistant out of the lock: not
+when it connects, not when the lock restarts under the flood (real sockets on 127.0.0.1,
+the attacker on the same address as the assistant)."""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import AsyncIterator
+
+import pytest
+
+from assistantx.adapters.lock.protocol import LockKeys
+from assistantx.adapters.lock.protocol.link import LinkTimeouts, close_writer
+from assistantx.adapters.lock.tcp import TcpLocker
+from assistantx.core.backoff import Backoff
+from assistantx.core.clock import SimClock
+from assistantx.sim.lock.controller import LockController
+from assistantx.sim.lock.server import LockServer
+from helpers.eventually import eventually
+
+from .conftest import LOCK_ID, QUICK_RETRY
+
+# Idle sockets would live 5 s (the old default handshake deadline) before the lock hangs up:
+# longer than the assistant may take to connect (3 s) or to get an answer (2 s).
+PATIENT = LinkTimeouts(
+    connect_s=3.0, handshake_s=5.0, frame_s=0.5, idle_s=10.0, keepalive_s=0.2, request_s=2.0
+)
+FLOOD = 40  # more than the old overall cap of 32
+
+
+async def _flood(port: int, n: int = FLOOD) -> list[asyncio.StreamWriter]:
+    """``n`` connections that never say a word."""
+    opened = [await asyncio.open_connection("127.0.0.1", port) for _ in range(n)]
+    return [writer for _, writer in opened]
+
+
+async def _settle(server: LockServer, at_least: int) -> None:
+    """Until the lock has taken in the flood (accepted and counted, or evicted)."""
+    await eventually(
+        lambda: server.pending_count + server.evicted_pending >= at_least,
+        what=f"the lock to take in {at_least} silent connections",
+        timeout_s=3,
+    )
+
+
+def _locker(
+    server: LockServer, keys: LockKeys, clock: SimClock, backoff: Backoff = QUICK_RETRY
+) -> TcpLocker:
+    host, port = server.address
+    return TcpLocker(
+        host, port, keys, clock=clock, timeouts=PATIENT, backoff=backoff, render_png=False
+    )
+
+
+@pytest.fixture
+async def flooded() -> AsyncIterator[tuple[LockServer, list[asyncio.StreamWriter]]]:
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    controller = LockController(LOCK_ID, keys.codes, SimClock(start=1_000.0))
+    server = LockServer(controller, keys.link_key, timeouts=PATIENT)
+    _, port = await server.start()
+    flood = await _flood(port)
+    try:
+        yield server, flood
+    finally:
+        for writer in flood:
+            await close_writer(writer)
+        await server.stop()
+
+
+async def test_the_assistant_gets_in_through_a_flood_of_idle_sockets(
+    flooded: tuple[LockServer, list[asyncio.StreamWriter]],
+) -> None:
+    server, _ = flooded
+    await _settle(server, FLOOD)
+    assert server.pending_count <= server.max_pending_per_peer  # one peer: 127.0.0.1
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    clock = SimClock(start=1_000.0)
+    async with _locker(server, keys, clock) as locker:
+        qr = await locker.issue_code(instruction_id="i", person="lee", purpose="deposit", item="x")
+        assert (await locker.simulate_scan(qr.payload)).kind == "code_accepted"
+        assert (await locker.simulate_close()).person == "lee"
+        # More idle sockets arrive: the authenticated session is not touched.
+        _, port = server.address
+        more = await _flood(port)
+        await _settle(server, 2 * FLOOD)
+        assert (await locker.status()).door == "closed"
+        assert server.session_count == 1
+        assert locker.client.connections == 1
+        for writer in more:
+            await close_writer(writer)
+
+
+async def test_after_a_lock_restart_under_a_flood_the_assistant_gets_back_in() -> None:
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    clock = SimClock(start=1_000.0)
+    first = LockServer(LockController(LOCK_ID, keys.codes, clock), keys.link_key, timeouts=PATIENT)
+    _, port = await first.start()
+    # The client retries after 0.5 s (at least), so the flood is surely there before it comes back.
+    patient_retry = Backoff(initial_s=0.5, max_s=1.0, min_s=0.5)
+    async with _locker(first, keys, clock, patient_retry) as locker:
+        assert (await locker.status()).door == "closed"
+        await first.stop()
+        # The lock comes back on the same port, and the flood is there first.
+        second = LockServer(
+            LockController(LOCK_ID, keys.codes, clock), keys.link_key, port=port, timeouts=PATIENT
+        )
+        await second.start()
+        flood = await _flood(port)
+        try:
+            await _settle(second, FLOOD)
+            status = await locker.status()  # waits at most request_s for the reconnection
+            assert status.lock_id == LOCK_ID
+            qr = await locker.issue_code(
+                instruction_id="i", person="lee", purpose="collect", item="x"
+            )
+            assert (await locker.simulate_scan(qr.payload)).kind == "code_accepted"
+            assert locker.client.connections == 2
+        finally:
+            for writer in flood:
+                await close_writer(writer)
+            await second.stop()

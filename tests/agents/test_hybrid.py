@@ -1,0 +1,99 @@
+"""The hybrid reasoner: the model reads the request (scripted here), the symbolic PPDR acts."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from assistantx.agents.hybrid import UNSURE_QUESTION, HybridFactory, build_factory
+from assistantx.core.actions import Inquire, SendQR
+from assistantx.core.office import Office, load_office
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.sim.office import SimOffice
+from fakes.fixtures import scripted_llm  # noqa: F401
+from fakes.scripted_llm import ScriptedLLM, json_reply
+from helpers.llm_office import llm_settings, make_assistant
+
+
+@pytest.fixture(scope="module")
+def office() -> Office:
+    return load_office()
+
+
+async def _run(
+    office: Office, llm: ScriptedLLM, text: str, *, max_steps: int = 20
+) -> tuple[ShortTermMemory, SimOffice]:
+    sim = SimOffice(office)
+    factory = build_factory(office, llm_settings(llm))
+    assert isinstance(factory, HybridFactory)
+    assistant = make_assistant(office, sim, factory, max_steps=max_steps)  # type: ignore[arg-type]
+    await sim.locker.start()
+    await assistant.start()
+    try:
+        stm = await assistant.submit("lee", text)
+        stm = await assistant.wait(stm.instruction_id)
+    finally:
+        await assistant.stop()
+        await sim.locker.stop()
+        await factory.model.stop()
+    return stm, sim
+
+
+def _frame(*tasks: dict[str, Any], sure: bool = True) -> dict[str, Any]:
+    return {"sure": sure, "tasks": list(tasks)}
+
+
+async def test_the_model_reads_the_request_and_the_symbolic_ppdr_does_it(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    # wording the rule parser does not know; the model reads it
+    scripted_llm.script(
+        "understanding",
+        json_reply(_frame({"kind": "transfer", "item": "stapler", "owner": "Zhang Wei"})),
+    )
+    stm, sim = await _run(office, scripted_llm, "yo, that stapler of Zhang Wei, I want it here")
+
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"holds": ["lee", "stapler:zhang"]})
+    assert len(scripted_llm.requests_for("understanding")) == 1  # read once, not every step
+    sent = scripted_llm.requests_for("understanding")[0]
+    assert sent.response_format is not None  # structured output, enforced by the server
+    calls = [c for s in stm.trace.steps for c in s.calls if c.agent == "understanding"]
+    assert len(calls) == 1 and calls[0].llm and calls[0].prompt_tokens > 0
+    assert stm.trace.usage.llm_calls == 1
+    qr = [r.action for r in stm.trace.actions() if isinstance(r.action, SendQR)]
+    assert [a.contact for a in qr] == ["zhang", "lee"]
+
+
+async def test_an_unsure_reading_becomes_one_question_to_the_requester(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    scripted_llm.script("understanding", json_reply(_frame(sure=False)))
+    stm, _ = await _run(office, scripted_llm, "hmm the thing, you know", max_steps=1)
+
+    asked = [r.action for r in stm.trace.actions() if isinstance(r.action, Inquire)]
+    assert len(asked) == 1
+    assert asked[0].contact == "lee"
+    assert asked[0].question == UNSURE_QUESTION
+
+
+async def test_a_name_outside_memory_is_repaired_or_asked_never_guessed(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    made_up = _frame({"kind": "transfer", "item": "stapler", "owner": "Zhangg Wie Wu"})
+    scripted_llm.script("understanding", *(json_reply(made_up) for _ in range(3)))
+    stm, _ = await _run(office, scripted_llm, "bring me the stapler of Zhangg Wie Wu", max_steps=1)
+
+    repairs = scripted_llm.requests_for("understanding")
+    assert len(repairs) == 3  # the first answer and two repairs
+    assert "Zhangg Wie Wu" in repairs[1].last_user_text
+    # nobody outside memory was contacted: the one question went to the requester
+    assert [r.action.contact for r in stm.trace.actions() if isinstance(r.action, Inquire)] == [
+        "lee"
+    ]
+    calls = [c for s in stm.trace.steps for c in s.calls if c.agent == "understanding"]
+    assert sum(c.attempts for c in calls) == 3

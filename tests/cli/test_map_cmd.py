@@ -1,0 +1,78 @@
+"""``assistantx map render`` writes a PNG of the map, anchors, path and particles."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib.image as mpimg
+import numpy as np
+import pytest
+
+from assistantx.cli import main
+from assistantx.nav.anchors import Anchor, load_anchors, save_anchors
+from helpers.maps import REPO, real_map
+
+
+def test_render_with_path_and_particles(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "office.png"
+    code = main(["map", "render", "--out", str(out), "--path", "desk_01,desk_02", "--particles"])
+    assert code == 0
+    assert "path 4.00 m" in capsys.readouterr().out
+    image = mpimg.imread(out)
+    assert image.shape[0] > 300
+    assert image.shape[1] > 500
+    # Blue path, red particles and green anchors are drawn on the grey map.
+    rgb = image[..., :3]
+    assert np.any((rgb[..., 2] > 0.6) & (rgb[..., 0] < 0.3))
+    assert np.any((rgb[..., 0] > 0.7) & (rgb[..., 1] < 0.4) & (rgb[..., 2] < 0.4))
+
+
+def test_render_errors(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "x.png"
+    assert main(["map", "render", "--out", str(out), "--path", "desk_01"]) == 2
+    assert main(["map", "render", "--out", str(out), "--path", "desk_01,attic"]) == 1
+    assert "'attic' is not a place on the map" in capsys.readouterr().out
+    assert main(["map", "render", "--out", str(out), "--map", str(tmp_path / "no.yaml")]) == 1
+    assert not out.exists()
+
+
+def test_render_a_real_map_without_anchors(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "depot.png"
+    assert main(["map", "render", "--out", str(out), "--map", str(real_map("depot"))]) == 0
+    assert "(no anchors)" in capsys.readouterr().out
+    assert mpimg.imread(out).shape[1] > 300
+
+
+def test_check_names_file_location_and_problem(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    anchors = load_anchors(REPO / "maps" / "office.anchors.yaml")
+    anchors["kitchenette"] = Anchor(29.0, 24.0, 0.0)  # inside the counter
+    del anchors["desk_05"]
+    bad = tmp_path / "bad.anchors.yaml"
+    save_anchors(anchors, bad)
+    code = main(["map", "check", "--anchors", str(bad)])
+    lines = capsys.readouterr().out.splitlines()
+    assert code == 1
+    assert lines == [
+        f"{bad}: location 'desk_05' has no anchor",
+        f"{bad}: location 'kitchenette': (29.00, 24.00) is inside an obstacle",
+    ]
+    assert main(["map", "check"]) == 0
+    assert "all in free space and reachable" in capsys.readouterr().out
+
+
+def test_serve_refuses_a_bad_anchor_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    anchors = load_anchors(REPO / "maps" / "office.anchors.yaml")
+    anchors["print_room"] = Anchor(-50.0, 3.0, 0.0)
+    bad = tmp_path / "bad.anchors.yaml"
+    save_anchors(anchors, bad)
+    monkeypatch.setenv("ASSISTANTX_DATA_DIR", str(tmp_path / "data"))
+    monkeypatch.setenv("ASSISTANTX_MAP_ANCHORS", str(bad))
+    assert main(["serve", "--port", "1"]) == 2
+    out = capsys.readouterr().out.strip().splitlines()
+    assert out == [f"error: {bad}: anchor 'print_room': (-50.00, 3.00) is off the map"]

@@ -1,0 +1,65 @@
+"""Planning in a worker process (issue 18): the same paths as in-process, obstacles seen
+since the last plan reach the worker, and the planner's reasons come back as they are."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+import pytest
+
+from assistantx.core.errors import UnreachableError
+from assistantx.nav.costmap import Costmap, update_obstacles
+from assistantx.nav.occupancy_map import FREE, OCCUPIED, OccupancyMap
+from assistantx.nav.plan_process import PlanProcess
+from assistantx.nav.planner import GridPlanner
+
+RES = 0.05
+
+
+@pytest.fixture(scope="module")
+def worker() -> Iterator[PlanProcess]:
+    process = PlanProcess()
+    yield process
+    process.close()
+
+
+def _hall() -> OccupancyMap:
+    """A 6 x 4 m hall, walled round, with a wall across it that has one 1 m door."""
+    data = np.full((80, 120), FREE, dtype=np.int8)
+    data[[0, -1], :] = OCCUPIED
+    data[:, [0, -1]] = OCCUPIED
+    data[:, 60:62] = OCCUPIED
+    data[30:50, 60:62] = FREE  # the door
+    return OccupancyMap(data, RES)
+
+
+def test_worker_paths_equal_in_process_paths(worker: PlanProcess) -> None:
+    planner = GridPlanner(Costmap.inflate(_hall()))
+    for start, goal in [((0.8, 0.8), (5.2, 3.2)), ((5.0, 0.5), (0.6, 3.4))]:
+        here, there = planner.plan(start, goal), worker.plan(planner, start, goal)
+        assert there.cost == pytest.approx(here.cost, rel=1e-12)
+        np.testing.assert_allclose(there.points, here.points)
+
+
+def test_obstacles_seen_after_the_first_plan_reach_the_worker(worker: PlanProcess) -> None:
+    static = Costmap.inflate(_hall())
+    layered = Costmap(static.grid, static.costs.copy(), static.obstacle_distance_m, static.params)
+    planner = GridPlanner(static).layered(layered)
+    start, goal = (1.0, 2.0), (5.0, 2.0)
+    assert worker.plan(planner, start, goal).length_m < 4.5  # through the door
+    # A box now fills the door: the costs change in place and the version moves on.
+    door = np.array([y * static.grid.width + x for y in range(30, 50) for x in range(58, 64)])
+    window = update_obstacles(static, layered, door, door)
+    assert window is not None
+    planner.update_window(window)
+    with pytest.raises(UnreachableError, match="cut off"):
+        worker.plan(planner, start, goal)
+
+
+def test_the_worker_raises_the_planners_reason(worker: PlanProcess) -> None:
+    planner = GridPlanner(Costmap.inflate(_hall()))
+    with pytest.raises(UnreachableError, match=r"goal \(3\.05, 0\.80\) is inside an obstacle"):
+        worker.plan(planner, (1.0, 2.0), (3.05, 0.8))
+    with pytest.raises(UnreachableError, match="off the map"):
+        worker.plan(planner, (1.0, 2.0), (30.0, 2.0))

@@ -1,0 +1,155 @@
+"""The SQLite journal: instructions, events, messages with idempotency, state, bad files."""
+
+from __future__ import annotations
+
+from datetime import UTC, datetime
+from pathlib import Path
+
+import pytest
+
+from assistantx.core.errors import JournalError
+from assistantx.core.events import TraceEvent
+from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
+from assistantx.core.trace import Trace
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.store.journal import Journal
+
+
+def _stm(iid: str = "ins-1") -> ShortTermMemory:
+    trace = Trace(instruction_id=iid, requester="lee", text="t", reasoner="x", started_at=1.0)
+    return ShortTermMemory(instruction_id=iid, requester="lee", text="t", trace=trace)
+
+
+def test_instruction_lifecycle_survives_reopening(tmp_path: Path) -> None:
+    path = tmp_path / "j.sqlite3"
+    journal = Journal.open(path)
+    journal.create_instruction("ins-1", "lee", "t", 1.0)
+    event = TraceEvent(instruction_id="ins-1", kind="step_started", time=2.0, step=0)
+    seq = journal.record(event, stm=_stm(), status="running", states={"w": {"a": 1}})
+    journal.close()
+    journal = Journal.open(path)
+    record = journal.instruction("ins-1")
+    assert record is not None and record.status == "running" and record.stm is not None
+    assert [r.seq for r in journal.events("ins-1")] == [seq]
+    assert journal.state("w") == {"a": 1}
+    assert [r.id for r in journal.unfinished()] == ["ins-1"]
+    journal.close()
+
+
+def test_listing_filters_and_pages_newest_first(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    for n in range(5):
+        journal.create_instruction(f"ins-{n}", "lee" if n % 2 else "zhang", "t", float(n))
+    first = journal.instructions(limit=2)
+    assert [r.id for r in first] == ["ins-4", "ins-3"]
+    rest = journal.instructions(after_seq=first[-1].seq, limit=10)
+    assert [r.id for r in rest] == ["ins-2", "ins-1", "ins-0"]
+    assert [r.id for r in journal.instructions(requester="lee")] == ["ins-3", "ins-1"]
+    assert journal.count_by_status() == {"queued": 5}
+
+
+def test_outbound_keys_and_inbound_event_ids_deduplicate(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    message = OutboundMessage(chat=ChatRef(kind="dm", id="lee"), text="hi", idempotency_key="k1")
+    first = journal.record_outbound(message, "assistant", 1.0)
+    journal.mark_sent(first.seq, "m-1")
+    again = journal.record_outbound(message, "assistant", 2.0)
+    assert again.seq == first.seq and again.status == "sent"
+    inbound = InboundMessage(
+        platform="p",
+        event_id="e1",
+        chat=ChatRef(kind="dm", id="lee"),
+        sender="lee",
+        text="yo",
+        time=datetime.fromtimestamp(3, tz=UTC),
+    )
+    assert journal.record_inbound(inbound) is not None
+    assert journal.record_inbound(inbound) is None
+    assert [m.direction for m in journal.messages(ChatRef(kind="dm", id="lee"))] == ["out", "in"]
+
+
+def test_a_file_that_is_not_a_journal_is_a_clear_error(tmp_path: Path) -> None:
+    path = tmp_path / "j.sqlite3"
+    path.write_bytes(b"this is not sqlite" * 100)
+    with pytest.raises(JournalError, match="not a usable journal"):
+        Journal.open(path)
+
+
+def test_the_step_count_is_kept_for_lists(tmp_path: Path) -> None:
+    from assistantx.core.trace import TraceStep
+
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    journal.create_instruction("ins-1", "lee", "t", 1.0)
+    stm = _stm()
+    for n in range(3):
+        stm.trace.steps.append(TraceStep(index=n, started_at=2.0 + n))
+        event = TraceEvent(instruction_id="ins-1", kind="step_started", time=2.0 + n, step=n)
+        journal.record(event, stm=stm, status="running")
+    [listed] = journal.instructions()
+    assert listed.stm is None and listed.steps == 3
+
+
+def test_a_journal_written_before_the_step_count_opens(tmp_path: Path) -> None:
+    import sqlite3
+
+    from assistantx.store.journal._schema import SCHEMA
+
+    path = tmp_path / "old.sqlite3"
+    old_schema = SCHEMA.replace(",\n    steps      INTEGER NOT NULL DEFAULT 0", "")
+    assert old_schema != SCHEMA
+    with sqlite3.connect(path) as db:
+        db.executescript(old_schema)
+        db.execute("INSERT INTO meta VALUES ('schema', '1')")
+        db.execute(
+            "INSERT INTO instructions (id, requester, text, status, created_at, updated_at)"
+            " VALUES ('ins-0', 'lee', 't', 'done', 1.0, 1.0)"
+        )
+    db.close()
+    journal = Journal.open(path)
+    [listed] = journal.instructions()
+    assert (listed.id, listed.steps) == ("ins-0", 0)
+    journal.checkpoint(_stm("ins-0"), "done")
+    journal.close()
+
+
+def test_inserting_a_taken_instruction_id_raises_instead_of_overwriting(tmp_path: Path) -> None:
+    journal = Journal.open(tmp_path / "j.sqlite3")
+    journal.create_instruction("ins-1", "lee", "lee's own", 1.0)
+    with pytest.raises(JournalError, match="taken"):
+        journal.create_instruction("ins-1", "zhang", "zhang's", 2.0)
+    zhangs = _stm("ins-1").model_copy(update={"requester": "zhang", "text": "zhang's"})
+    with pytest.raises(JournalError, match="taken"):
+        journal.insert_instruction(zhangs)
+    with pytest.raises(JournalError, match="taken"):  # a checkpoint of another requester's
+        journal.checkpoint(zhangs, "running")
+    record = journal.instruction("ins-1")
+    assert record is not None
+    assert (record.requester, record.text, record.status) == ("lee", "lee's own", "queued")
+    journal.checkpoint(_stm("ins-1"), "running")  # its own row: an update
+    record = journal.instruction("ins-1")
+    assert record is not None and record.status == "running" and record.requester == "lee"
+    journal.close()
+
+
+def test_a_journal_from_a_newer_version_is_refused(tmp_path: Path) -> None:
+    import sqlite3
+
+    path = tmp_path / "j.sqlite3"
+    Journal.open(path).close()
+    with sqlite3.connect(path) as db:
+        db.execute("UPDATE store_versions SET version=2 WHERE store='journal'")
+    db.close()
+    with pytest.raises(JournalError, match="journal schema 2, this version reads 1"):
+        Journal.open(path)
+    # A file from before the versions table, whose own record says a newer schema.
+    old = tmp_path / "old.sqlite3"
+    with sqlite3.connect(old) as db:
+        db.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+        db.execute("INSERT INTO meta VALUES ('schema', '2')")
+    db.close()
+    with pytest.raises(JournalError, match="journal schema 2, this version reads 1"):
+        Journal.open(old)
+    with sqlite3.connect(old) as db:  # the refused migration left nothing behind
+        tables = {r[0] for r in db.execute("SELECT name FROM sqlite_master WHERE type='table'")}
+    db.close()
+    assert tables == {"meta"}
