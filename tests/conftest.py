@@ -6,6 +6,7 @@ import socket
 
 import pytest
 
+from fakes.fixtures import scripted_llm  # noqa: F401  (the scripted model server, for every folder)
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 

@@ -1,1 +1,0 @@
-from fakes.fixtures import scripted_llm  # noqa: F401
