@@ -82,6 +82,8 @@ class AssistantParts:
     limits: LoopLimits = field(default_factory=LoopLimits)
     # None: every direct message that answers nothing starts an instruction.
     is_request: RequestCheck | None = None
+    # Journals codes as revoked before the lock withdraws them (``ExecutionContext``).
+    retire_codes: Callable[[list[str]], Awaitable[None]] | None = None
 
 
 class Assistant:
@@ -103,6 +105,7 @@ class Assistant:
                 locker=parts.locker,
                 clock=parts.clock,
                 replies=self.replies,
+                retire_codes=parts.retire_codes,
             )
         )
         self.running: dict[str, Running] = {}

@@ -41,6 +41,9 @@ from assistantx.runtime.loop import LoopLimits
 from assistantx.service import colleagues
 from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
+from assistantx.service.code_ledger import CodeLedger
+from assistantx.service.code_recovery import settle_codes
+from assistantx.service.codebook import CodeBook
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError
@@ -58,6 +61,7 @@ logger = logging.getLogger(__name__)
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
 SIM_CODES_FILE = "sim-codes.json"  # simulated people's QR payloads: credentials, not journaled
+CODEBOOK_FILE = "locker-codes.json"  # every QR payload sent and not expired, for the dashboard
 
 
 class ServiceRuntime:
@@ -71,6 +75,8 @@ class ServiceRuntime:
     locker: Locker
     lock_keys: LockKeys
     phones: colleagues.CodePhones
+    codebook: CodeBook
+    ledger: CodeLedger
     messenger: BuiltinMessenger
     assistant: Assistant
     durability: Durability
@@ -130,8 +136,17 @@ class ServiceRuntime:
         )
         self.messenger = BuiltinMessenger(self.journal, self.clock)
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
+        # Registered before anything is sent: every code is scannable from the dashboard,
+        # also one sent before the page's first request, and after a restart.
+        self.codebook = CodeBook(self.lock_keys.codes, self.clock, data_dir / CODEBOOK_FILE)
+        self.messenger.relay_to(self.codebook.note)
+        if self.matrix is not None:  # codes sent over Matrix are scannable too
+            self.matrix.messenger.relay_to(self.codebook.note)
         if s.people == "simulated":
             colleagues.connect_colleagues(self.sim, self.messenger)
+        code_lifetime_s = s.lock_code_expiry_min * 60
+        self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s, self._world_state)
+        self.locker.listen(self.ledger.on_lock_event)
         ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
@@ -147,6 +162,7 @@ class ServiceRuntime:
                 limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
                 # A direct message starts an instruction only when it asks for something.
                 is_request=RequestRecognizer(self.office),
+                retire_codes=self.ledger.retire,
             )
         )
         self.durability = Durability(
@@ -165,11 +181,24 @@ class ServiceRuntime:
                 f"the key in {self.settings.data_dir}; otherwise give both the same "
                 "ASSISTANTX_LOCK_SHARED_KEY or ASSISTANTX_LOCK_KEY_FILE"
             ) from exc
+        # Before anything else restarts: no code the journal says is finished opens again.
+        phones = self.phones.load()
+        held = colleagues.held_payloads(world, phones) if world is not None else []
+        settled = await settle_codes(
+            self.journal,
+            self.ledger,
+            self.locker,
+            self.lock_keys.codes,
+            [*self.codebook.payloads(), *held],
+            self.clock.now(),
+            code_lifetime_s,
+        )
+        self.locker.code_states.update(self.ledger.reported())
         await stack.enter_async_context(self.messenger)
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
-            colleagues.restore(self.sim, world, self.phones.load())
+            colleagues.restore(self.sim, world, phones, settled.live)
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
             matrix = self.matrix.messenger
