@@ -5,15 +5,17 @@ the attacker on the same address as the assistant)."""
 from __future__ import annotations
 
 import asyncio
+import sys
 from collections.abc import AsyncIterator
 
 import pytest
 
 from assistantx.adapters.lock.protocol import LockKeys
-from assistantx.adapters.lock.protocol.link import LinkTimeouts, close_writer
+from assistantx.adapters.lock.protocol.link import LinkTimeouts, client_handshake, close_writer
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.backoff import Backoff
 from assistantx.core.clock import SimClock
+from assistantx.core.errors import LockError
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.server import LockServer
 from helpers.eventually import eventually
@@ -119,3 +121,76 @@ async def test_after_a_lock_restart_under_a_flood_the_assistant_gets_back_in() -
             for writer in flood:
                 await close_writer(writer)
             await second.stop()
+
+
+# -- a churning flood: new silent sockets all the time -------------------------------------
+
+ATTEMPTS = 20
+
+
+# An attacker in a process of its own (as a real one is): opens silent connections from the
+# given source addresses as fast as it can, keeping the last few hundred open, until killed.
+_CHURN = """
+import socket, sys
+port, sources = int(sys.argv[1]), sys.argv[2:]
+held = []
+while True:
+    for source in sources:
+        try:
+            held.append(socket.create_connection(("127.0.0.1", port), 1, (source, 0)))
+        except OSError:
+            continue
+        print(flush=True)  # one line per socket opened
+    while len(held) > 300:
+        held.pop(0).close()
+"""
+
+
+async def _count_lines(stream: asyncio.StreamReader, seen: list[int]) -> None:
+    while await stream.readline():
+        seen[0] += 1
+
+
+async def _handshakes(port: int, keys: LockKeys) -> int:
+    """How many of ``ATTEMPTS`` correct-key handshakes get through, one after the other."""
+    ok = 0
+    for _ in range(ATTEMPTS):
+        try:
+            reader, writer = await asyncio.open_connection("127.0.0.1", port)
+        except OSError:
+            continue
+        try:
+            await client_handshake(reader, writer, link_key=keys.link_key, handshake_s=2.0)
+            ok += 1
+        except LockError:
+            pass
+        finally:
+            await close_writer(writer)
+    return ok
+
+
+@pytest.mark.parametrize(
+    "sources",
+    [["127.0.0.1"], [f"127.0.0.{n}" for n in range(2, 10)]],
+    ids=["one-address", "eight-addresses"],
+)
+async def test_a_churning_flood_does_not_starve_correct_handshakes(sources: list[str]) -> None:
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
+    _, port = await server.start()
+    churn = await asyncio.create_subprocess_exec(
+        sys.executable, "-c", _CHURN, str(port), *sources, stdout=asyncio.subprocess.PIPE
+    )
+    assert churn.stdout is not None
+    seen = [0]
+    counting = asyncio.create_task(_count_lines(churn.stdout, seen))
+    try:
+        await _settle(server, 2 * server.max_pending)  # the flood is churning by now
+        got_in = await _handshakes(port, keys)
+    finally:
+        churn.kill()
+        await churn.wait()
+        await counting
+        await server.stop()
+    assert seen[0] > 2 * server.max_pending  # the flood outnumbered the pending bounds
+    assert got_in >= ATTEMPTS - 1, f"{got_in} of {ATTEMPTS} handshakes got through"
