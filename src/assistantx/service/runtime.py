@@ -29,6 +29,7 @@ from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
 from assistantx.core.office import Office, load_office
 from assistantx.core.ports.lock import Locker
+from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.core.ports.robot import RobotBase
 from assistantx.core.settings import Settings
 from assistantx.memory.resolve import Resolver
@@ -46,9 +47,10 @@ from assistantx.service.code_recovery import settle_codes
 from assistantx.service.codebook import CodeBook
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
-from assistantx.service.errors import NotFoundError
+from assistantx.service.errors import NotFoundError, TooManyRequestsError
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
+from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.sim.lock.controller import LockController
@@ -147,6 +149,7 @@ class ServiceRuntime:
         code_lifetime_s = s.lock_code_expiry_min * 60
         self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s, self._world_state)
         self.locker.listen(self.ledger.on_lock_event)
+        self._request_check = RequestRecognizer(self.office)
         ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
@@ -161,7 +164,7 @@ class ServiceRuntime:
                 ltm=ltm,
                 limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
                 # A direct message starts an instruction only when it asks for something.
-                is_request=RequestRecognizer(self.office),
+                is_request=self._request_check,
                 retire_codes=self.ledger.retire,
             )
         )
@@ -170,6 +173,8 @@ class ServiceRuntime:
         )
         self.durability.attach()
         self.admission = Admission(self.assistant, self.journal)
+        self.rate = InstructionRate(s.instructions_per_minute)
+        self.assistant.intercept_direct_messages(self._over_the_rate)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
 
@@ -319,12 +324,36 @@ class ServiceRuntime:
         hooks, its first checkpoint) is the starter's job, so a submission never waits for
         anyone's step. A restart starts what was admitted and never started."""
         person = self.resolver.person(requester)
+        wait_s = self.rate.take(person)
+        if wait_s is not None:
+            name = self.office.person(person).name
+            raise TooManyRequestsError(refusal_text(name, self.rate.per_minute, wait_s))
         instruction_id = new_instruction_id()
         record = await self.journal.acreate_instruction(
             instruction_id, person, text, self.clock.now()
         )
         self.admission.admit(record)
         return record
+
+    async def _over_the_rate(self, message: InboundMessage) -> bool:
+        """A direct message that would start one instruction too many is answered in words
+        (once per window) instead; True: handled, nothing starts."""
+        if not self._request_check(message.text, message.sender, strict=False):
+            return False  # not a request: the assistant answers it as usual
+        wait_s = self.rate.take(message.sender)
+        if wait_s is None:
+            return False
+        logger.info("rate limit: a request from %s not started", message.sender)
+        if self.rate.first_refusal(message.sender):
+            name = self.office.person(message.sender).name
+            await self.assistant.parts.messenger.send(
+                OutboundMessage(
+                    chat=ChatRef(kind="dm", id=message.sender),
+                    text=refusal_text(name, self.rate.per_minute, wait_s),
+                    idempotency_key=f"rate:{message.platform}:{message.event_id}",
+                )
+            )
+        return True
 
     def instruction(self, instruction_id: str) -> InstructionRecord:
         record = self.journal.instruction(instruction_id)
