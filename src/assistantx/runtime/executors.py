@@ -26,7 +26,7 @@ from assistantx.core.actions import (
 )
 from assistantx.core.clock import Clock
 from assistantx.core.dialogue import DialogueTurn
-from assistantx.core.errors import AdapterError
+from assistantx.core.errors import AdapterError, LockCommandError
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Locker, LockEvent
 from assistantx.core.ports.messenger import (
@@ -266,8 +266,14 @@ class Executor:
         for code in doomed:
             try:
                 await self.ctx.locker.revoke(code.code_id)
+            except LockCommandError as exc:
+                # The lock has no such active code (expired, or forgotten by a lock that
+                # restarted): it opens nothing, which is what "revoked" means to the reader.
+                logger.info(
+                    "code %s of %s not active at the lock: %s", code.code_id, code.person, exc
+                )
             except AdapterError as exc:
-                # Expired, or scanned in a moment we did not see: nothing left to withdraw.
+                # The lock unreachable: still open there (the next start withdraws it).
                 logger.info("code %s of %s not revoked: %s", code.code_id, code.person, exc)
                 continue
             code.revoked = True

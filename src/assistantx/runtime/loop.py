@@ -139,6 +139,8 @@ class InstructionRunner:
             async with asyncio.timeout(self.limits.wall_s):
                 await self._steps(stm)
         except asyncio.CancelledError:
+            # (A shutdown cancels too, but then nothing of this end is journaled: it resumes.)
+            stm.trace.cancelled = True
             await asyncio.shield(self._end(stm, "failed", "The instruction was cancelled."))
             raise
         except TimeoutError:
