@@ -198,7 +198,11 @@ class Executor:
         what = item_phrase(office, file, you=you)
         attachment = Attachment(kind="file", name=f"{_file_name(what)}.pdf", item=file)
         source = person_name(office, action.source, you=you)
-        text = f"Forwarding {what} from {source}."
+        owner = file.partition(":")[2]
+        # "Mao Jun's file from Mao Jun" says the name twice: the owner's name is the source.
+        text = (
+            f"Forwarding {what}." if owner == action.source else f"Forwarding {what} from {source}."
+        )
         chat = _chat(office, action.target)
         await self._send(stm, chat, text, key, attachments=[attachment])
         return True, f"forwarded {file} to {action.target}", {"file": file}

@@ -20,6 +20,7 @@ from typing import Literal
 from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskKind, kind_shape
+from assistantx.core.wording import a_thing
 from assistantx.memory.graph import LongTermMemory
 
 DistanceFn = Callable[[str, str], float]
@@ -104,7 +105,7 @@ class Roles:
         place = self.office.facility(role.facility).name if role.facility else ""
         match role.kind:
             case "lend":
-                return f"lend {beneficiary} {'a' if anyone else 'your'} {thing}"
+                return f"lend {beneficiary} {a_thing(thing) if anyone else f'your {thing}'}"
             case "give":
                 return f"hand over your {thing} for {beneficiary}"
             case "keep":
