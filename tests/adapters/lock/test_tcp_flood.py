@@ -39,7 +39,7 @@ async def _flood(port: int, n: int = FLOOD) -> list[asyncio.StreamWriter]:
 async def _settle(server: LockServer, at_least: int) -> None:
     """Until the lock has taken in the flood (accepted and counted, or evicted)."""
     await eventually(
-        lambda: server.pending_count + server.evicted_pending >= at_least,
+        lambda: server.pending_count + server.evicted_pending + server.refused_pending >= at_least,
         what=f"the lock to take in {at_least} silent connections",
         timeout_s=3,
     )
@@ -169,12 +169,10 @@ async def _handshakes(port: int, keys: LockKeys) -> int:
     return ok
 
 
-@pytest.mark.parametrize(
-    "sources",
-    [["127.0.0.1"], [f"127.0.0.{n}" for n in range(2, 10)]],
-    ids=["one-address", "eight-addresses"],
-)
-async def test_a_churning_flood_does_not_starve_correct_handshakes(sources: list[str]) -> None:
+async def test_a_churning_flood_from_other_addresses_does_not_starve_handshakes() -> None:
+    """(From the assistant's own address, a flood faster than ``max_pending_per_peer`` per
+    ``grace_s`` can delay it: the server's docstring says why.)"""
+    sources = [f"127.0.0.{n}" for n in range(2, 10)]
     keys = LockKeys.from_secret("test secret shared by lock and assistant")
     server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
     _, port = await server.start()
@@ -194,3 +192,50 @@ async def test_a_churning_flood_does_not_starve_correct_handshakes(sources: list
         await server.stop()
     assert seen[0] > 2 * server.max_pending  # the flood outnumbered the pending bounds
     assert got_in >= ATTEMPTS - 1, f"{got_in} of {ATTEMPTS} handshakes got through"
+
+
+# -- a burst within the assistant's handshake ----------------------------------------------
+
+
+async def _attempt_under_a_burst(port: int, keys: LockKeys, sources: list[str], n: int) -> bool:
+    """One correct-key handshake, with ``n`` silent sockets from ``sources`` arriving while it
+    runs (a burst that lands in its round trip)."""
+    reader, writer = await asyncio.open_connection("127.0.0.1", port)
+    handshake = asyncio.create_task(
+        client_handshake(reader, writer, link_key=keys.link_key, handshake_s=2.0)
+    )
+    burst = await asyncio.gather(
+        *(
+            asyncio.open_connection("127.0.0.1", port, local_addr=(sources[i % len(sources)], 0))
+            for i in range(n)
+        ),
+        return_exceptions=True,
+    )
+    try:
+        await handshake
+    except LockError:
+        return False
+    finally:
+        await close_writer(writer)
+        for opened in burst:
+            if isinstance(opened, tuple):
+                await close_writer(opened[1])
+    return True
+
+
+@pytest.mark.parametrize(
+    ("sources", "n"),
+    [(["127.0.0.1"], 12), ([f"127.0.0.{k}" for k in range(2, 10)], 80)],
+    ids=["12-from-one-address", "80-from-eight-addresses"],
+)
+async def test_a_burst_in_the_handshake_does_not_evict_the_assistant(
+    sources: list[str], n: int
+) -> None:
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
+    _, port = await server.start()
+    try:
+        got_in = [await _attempt_under_a_burst(port, keys, sources, n) for _ in range(ATTEMPTS)]
+    finally:
+        await server.stop()
+    assert sum(got_in) >= ATTEMPTS - 1, f"{sum(got_in)} of {ATTEMPTS} handshakes got through"
