@@ -50,7 +50,9 @@ class CodeLedger:
         self._journal = journal
         self._clock = clock
         self._lifetime_s = lifetime_s
-        self._world_state = world_state
+        # Set once the simulated world is restored: a lock that replays old events on connect
+        # must not journal the world as it is before that.
+        self.world_state = world_state
         self._ended: dict[str, tuple[Ended, float]] = {}
         for code_id, entry in (journal.state(LEDGER_STATE) or {}).get("codes", {}).items():
             state, until = entry
@@ -80,8 +82,8 @@ class CodeLedger:
         if not self._note([event.code_id], state):
             return
         states = {LEDGER_STATE: self._body()}
-        if self._world_state is not None:
-            states.update(self._world_state())
+        if self.world_state is not None:
+            states.update(self.world_state())
         self._journal.put_states(states)
 
     def _note(self, code_ids: Iterable[str], state: Ended) -> bool:

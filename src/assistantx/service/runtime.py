@@ -147,7 +147,7 @@ class ServiceRuntime:
         if s.people == "simulated":
             colleagues.connect_colleagues(self.sim, self.messenger)
         code_lifetime_s = s.lock_code_expiry_min * 60
-        self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s, self._world_state)
+        self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
         self.locker.listen(self.ledger.on_lock_event)
         self._request_check = RequestRecognizer(self.office)
         ltm = Durability.restore_memory(self.journal, self.office)
@@ -204,6 +204,7 @@ class ServiceRuntime:
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
             colleagues.restore(self.sim, world, phones, settled.live)
+        self.ledger.world_state = self._world_state  # the world as restored, from now on
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
             matrix = self.matrix.messenger
