@@ -75,6 +75,8 @@ def _start(
         # The queue for the one robot counts as simulated time: x1000, the default hour
         # would end queued instructions after 3.6 real seconds.
         ASSISTANTX_INSTRUCTION_DEADLINE_S=str(args.deadline_s),
+        # A load test sends each requester far more than a person's per-minute bound.
+        ASSISTANTX_INSTRUCTIONS_PER_MINUTE="0",
     )
     reasoner = "symbolic (embedded)"
     has_symbolic = importlib.util.find_spec("assistantx.agents.symbolic") is not None

@@ -13,6 +13,7 @@ import httpx
 
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
+from assistantx.service.runtime import ServiceRuntime
 from helpers.servers import serving_app
 from service.server import LEE, OPERATOR, ZHANG
 
@@ -29,3 +30,21 @@ async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[http
     app = create_app(Settings(**{**defaults, **settings}))
     async with serving_app(app) as client:
         yield client
+
+
+@asynccontextmanager
+async def serving_runtime(
+    data_dir: Path, **settings: Any
+) -> AsyncIterator[tuple[httpx.AsyncClient, ServiceRuntime]]:
+    """Like ``running_service`` (the operator's token on every request), also yielding the
+    runtime: for tests that play the physical world (a person holding a code up to the lock)."""
+    defaults: dict[str, Any] = {
+        "data_dir": data_dir,
+        "operator_token": OPERATOR,
+        "tokens": json.dumps({LEE: "lee", ZHANG: "zhang"}),
+        "speedup": 50,
+    }
+    app = create_app(Settings(**{**defaults, **settings}))
+    headers = {"Authorization": f"Bearer {OPERATOR}"}
+    async with serving_app(app, headers=headers) as client:
+        yield client, app.state.runtime

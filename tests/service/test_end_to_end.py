@@ -100,3 +100,37 @@ def test_kill_mid_instruction_then_restart_finishes_once(tmp_path: Path) -> None
             assert ended.count("event: instruction_ended") == 1
     finally:
         server.stop()
+
+
+def test_a_cancelled_code_stays_refused_after_kill_9(tmp_path: Path) -> None:
+    """Cancel after the lender's deposit code went out, kill -9, restart: the code (which the
+    lender may still hold) is refused as revoked, and the lender is not sent another."""
+    port = free_port()
+    slow = {"ASSISTANTX_ROBOT": "sim", "ASSISTANTX_SIM_HANDOVER_DELAY_S": "3600"}
+    server = serve(tmp_path / "data", port, **slow)
+    code_id = ""
+    try:
+        with httpx.Client(base_url=server.url, timeout=10) as client:
+            iid = _submit(client)
+            for _, kind, data in sse(client, f"/v1/instructions/{iid}/events", LEE):
+                result = data["data"].get("result", {})  # type: ignore[union-attr]
+                if kind == "action_result" and result["action"]["type"] == "send_qr":
+                    code_id = result["data"]["code_id"]
+                    break
+            assert client.post(f"/v1/instructions/{iid}/cancel", headers=AUTH_LEE).is_success
+            list(sse(client, f"/v1/instructions/{iid}/events", LEE))  # ends once it ended
+            status = client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json()["status"]
+            assert status == "cancelled"
+    finally:
+        server.kill()
+
+    server = serve(tmp_path / "data", port, **slow)
+    try:
+        with httpx.Client(base_url=server.url, timeout=10) as client:
+            scan = client.post("/v1/locker/scan", json={"code_id": code_id}, headers=AUTH_OP)
+            assert scan.status_code == 200, scan.text
+            assert (scan.json()["kind"], scan.json()["reason"]) == ("code_rejected", "revoked")
+            codes = [m for m in _transcript(client, "wang") if m["attachments"]]
+            assert len(codes) == 1
+    finally:
+        server.stop()

@@ -136,3 +136,42 @@ async def test_printing_needs_the_file_first(office: Office) -> None:
         await s.do(Move(place="printer"))
         assert (await s.do(WaitInPlace(person="xu"))).ok
         assert s.sim.check([{"printed": "file:lee"}]) == [True]
+
+
+def _complaints(s: SimSession, person: str) -> list[str]:
+    return [
+        m.text
+        for m in s.sim.messenger.received
+        if m.sender == person and m.text.startswith("I came to the robot, but")
+    ]
+
+
+async def test_a_person_who_cannot_hand_over_says_so_once(office: Office) -> None:
+    """Zhang is sent a deposit code for Wang's stapler, which she does not have: she comes,
+    says so, and does not walk to the robot to say it again each time it comes back."""
+    async with SimSession(office, requester="lee") as s:
+        await s.do(Inform(contact="zhang", content="Please put Wang's stapler in the locker."))
+        await s.do(Move(place="zhang"))
+        await s.do(SendQR(contact="zhang", item="stapler:wang", purpose="deposit"))
+        r = await s.do(WaitInPlace(person="zhang", timeout_s=120))
+        assert not r.ok
+        assert _complaints(s, "zhang") == [
+            "I came to the robot, but: I don't have Wang Fang's stapler."
+        ]
+        for _ in range(3):
+            await s.do(Move(place="lee"))
+            await s.do(Move(place="zhang"))
+            await s.do(Inform(contact="zhang", content="The robot is back at your desk."))
+            await s.do(WaitInPlace(person="zhang", timeout_s=120))
+        assert len(_complaints(s, "zhang")) == 1
+
+
+async def test_a_new_code_replaces_the_one_a_person_held(office: Office) -> None:
+    async with SimSession(office, requester="lee") as s:
+        await s.do(Inform(contact="zhang", content="Please lend Lee your stapler."))
+        await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))
+        await s.executor.revoke_codes(s.stm, person="zhang")
+        await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))
+        held = [c for c in s.sim.codes if c.person == "zhang"]
+        assert len(held) == 1
+        assert held[0].payload == s.sim.messenger.sent[-1].attachments[0].qr_payload

@@ -78,6 +78,9 @@ class Settings(BaseSettings):
         description='person tokens: JSON {"token": "person"} or CSV "token:person,..."',
     )
     max_body_bytes: int = Field(default=64 * 1024, gt=0, description="larger bodies get 413")
+    instructions_per_minute: int = Field(
+        default=20, ge=0, description="instructions one person may start per minute (0: any)"
+    )
     people: Literal["simulated", "human"] = Field(
         default="simulated", description="who answers: the SimOffice's people or real people"
     )

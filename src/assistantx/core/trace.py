@@ -142,6 +142,9 @@ class Trace(BaseModel):
     steps: list[TraceStep] = Field(default_factory=list)
     outcome: Outcome | None = None
     summary: str | None = None
+    cancelled: bool = Field(
+        default=False, description="a person cancelled it (its outcome then reads failed)"
+    )
     usage: Usage = Field(default_factory=Usage)
 
     def actions(self) -> list[ActionResult]:

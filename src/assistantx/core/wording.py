@@ -8,6 +8,7 @@ id with a colon.
 
 from __future__ import annotations
 
+from assistantx.core.english import words
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import kind_shape
 
@@ -61,6 +62,15 @@ def item_type_name(office: Office, type_id: str) -> str:
         return office.item_type(type_id).name
     except KeyError:
         return _words(type_id)
+
+
+def a_thing(name: str) -> str:
+    """``name`` with its indefinite article: "a stapler", "an umbrella", and "a pair of
+    scissors" for the English nouns that have no singular (``plural_only`` in the package's
+    English words: one never lends "a scissors")."""
+    if name.split()[-1].lower() in words("plural_only"):
+        return f"a pair of {name}"
+    return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
 
 
 def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:

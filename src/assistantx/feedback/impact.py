@@ -73,7 +73,7 @@ def summarise(
         requester=trace.requester,
         text=trace.text,
         kind=task_kind(trace),
-        outcome=trace.outcome or "cancelled",
+        outcome="cancelled" if trace.cancelled else trace.outcome or "cancelled",
         started_at=trace.started_at,
         ended_at=end,
         steps=len(trace.steps),

@@ -105,7 +105,7 @@ def _ranked_owners(ltm: LongTermMemory, requester: str, item_types: Iterable[str
     order = {"available": 0, "unknown": 1, "unavailable": 2}
     ranked: list[str] = []
     for item_type in item_types:
-        owners = [p for p in ltm.owners(item_type) if p != requester]
+        owners = [p for p in ltm.lenders(item_type) if p != requester]
         owners.sort(
             key=lambda p: (
                 order[ltm.availability(p)],

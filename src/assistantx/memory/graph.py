@@ -136,6 +136,20 @@ class LongTermMemory:
         """People known to own an item of this type."""
         return sorted(self._owners.get(item_type, ()))
 
+    def lenders(self, item_type: str) -> list[str]:
+        """Owners of an item of this type that memory does not know to be elsewhere: the
+        people who can hand one over now (an owner whose item someone else holds cannot)."""
+        return [p for p in self.owners(item_type) if self.lent_out(p, item_type) is None]
+
+    def lent_out(self, person_id: str, item_type: str) -> str | None:
+        """The other person who holds ``person_id``'s item of this type, when memory knows
+        one does (from a hand-over); None when it is with its owner, on its way (in the
+        locker) or unknown."""
+        holder = self.item_holder(f"{item_type}:{person_id}")
+        if holder is None or holder == person_id or not self.graph.has_node(pid(holder)):
+            return None
+        return holder
+
     def known_not_owners(self, item_type: str) -> list[str]:
         return sorted(self._lacking.get(item_type, ()))
 
@@ -217,6 +231,10 @@ class LongTermMemory:
                 return False
             self._add_item(person_id, item_type)
             return True
+        if self.lent_out(person_id, item_type) is not None:
+            # "I don't have it" from someone whose item memory knows is elsewhere (lent, in
+            # the locker) is about where the item is, not who owns it: ownership stays.
+            return False
         changed = bool(item_type not in lacks or self.graph.has_node(node))
         lacks.add(item_type)
         self._lacking.setdefault(item_type, set()).add(person_id)

@@ -20,6 +20,13 @@ def quote(text: str, limit: int = 400) -> str:
     return json.dumps(text, ensure_ascii=False)
 
 
+def _owned(ltm: LongTermMemory, person_id: str, item_id: str) -> str:
+    """An owned item's type, and who holds it when memory knows it is not with its owner."""
+    item_type = item_id.split(":")[0]
+    holder = ltm.lent_out(person_id, item_type)
+    return f"{item_type} (held by {holder})" if holder is not None else item_type
+
+
 def render_long_term(ltm: LongTermMemory, percept: Percept | None = None) -> str:
     """People, facilities and groups; only those in focus when a percept is given."""
     office = ltm.office
@@ -27,7 +34,7 @@ def render_long_term(ltm: LongTermMemory, percept: Percept | None = None) -> str
     lines = ["PEOPLE (id | name | desk | availability | known items | known to lack):"]
     for person_id in sorted(set(people)):
         person = office.person(person_id)
-        items = ",".join(i.split(":")[0] for i in ltm.items_of(person_id)) or "-"
+        items = ",".join(_owned(ltm, person_id, i) for i in ltm.items_of(person_id)) or "-"
         lacks = ",".join(ltm.known_not_owners_of(person_id)) or "-"
         lines.append(
             f"- {person_id} | {person.name} | {person.location} | "

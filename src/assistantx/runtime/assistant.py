@@ -38,6 +38,7 @@ from assistantx.runtime.executors import ExecutionContext, Executor
 from assistantx.runtime.lease import BodyLease
 from assistantx.runtime.loop import InstructionRunner, LoopLimits
 from assistantx.runtime.replies import ReplyBox
+from assistantx.runtime.returns import items_to_return, return_items
 
 logger = logging.getLogger(__name__)
 
@@ -82,6 +83,8 @@ class AssistantParts:
     limits: LoopLimits = field(default_factory=LoopLimits)
     # None: every direct message that answers nothing starts an instruction.
     is_request: RequestCheck | None = None
+    # Journals codes as revoked before the lock withdraws them (``ExecutionContext``).
+    retire_codes: Callable[[list[str]], Awaitable[None]] | None = None
 
 
 class Assistant:
@@ -103,6 +106,7 @@ class Assistant:
                 locker=parts.locker,
                 clock=parts.clock,
                 replies=self.replies,
+                retire_codes=parts.retire_codes,
             )
         )
         self.running: dict[str, Running] = {}
@@ -114,6 +118,7 @@ class Assistant:
         self._on_end: list[InstructionHook] = []
         self._dm_hooks: list[DirectMessageHook] = []
         self._dispatcher: asyncio.Task[None] | None = None
+        self._errands: set[asyncio.Task[None]] = set()  # items going back to their owners
         self._stopping = False
         self.unmatched: list[InboundMessage] = []
 
@@ -132,6 +137,10 @@ class Assistant:
         for running in list(self.running.values()):
             with contextlib.suppress(asyncio.CancelledError, Exception):
                 await running.task
+        for errand in list(self._errands):
+            errand.cancel()
+        if self._errands:
+            await asyncio.gather(*self._errands, return_exceptions=True)
         if self._dispatcher is not None:
             await self.inbox.put(None)  # sentinel
             with contextlib.suppress(asyncio.CancelledError):
@@ -226,7 +235,24 @@ class Assistant:
             if ended or not self._stopping:
                 await self._revoke_codes(stm)
                 await self._end_hooks(stm)
+                self._give_back(stm)
         return stm
+
+    def _give_back(self, stm: ShortTermMemory) -> None:
+        """Someone's item is still in the locker: take it back to them (``returns``)."""
+        if self._stopping or not items_to_return(self.office, stm):
+            return
+        errand = asyncio.create_task(self._errand(stm), name=f"{stm.instruction_id}.return")
+        self._errands.add(errand)
+        errand.add_done_callback(self._errands.discard)
+
+    async def _errand(self, stm: ShortTermMemory) -> None:
+        try:
+            await return_items(self.office, self.resolver, self.executor, self.lease, stm)
+        except asyncio.CancelledError:
+            raise
+        except Exception:
+            logger.exception("could not give back what %s left in the locker", stm.instruction_id)
 
     async def _end_hooks(self, stm: ShortTermMemory) -> None:
         for hook in self._on_end:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
+from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
 from typing import Literal
 
@@ -25,7 +26,7 @@ from assistantx.core.actions import (
 )
 from assistantx.core.clock import Clock
 from assistantx.core.dialogue import DialogueTurn
-from assistantx.core.errors import AdapterError
+from assistantx.core.errors import AdapterError, LockCommandError
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Locker, LockEvent
 from assistantx.core.ports.messenger import (
@@ -54,6 +55,9 @@ class ExecutionContext:
     locker: Locker
     clock: Clock
     replies: ReplyBox
+    # Records codes as revoked before the lock is asked to withdraw them (the service's
+    # journal), so a crash in between cannot bring them back; None: nothing to record.
+    retire_codes: Callable[[list[str]], Awaitable[None]] | None = None
 
 
 class Executor:
@@ -194,7 +198,11 @@ class Executor:
         what = item_phrase(office, file, you=you)
         attachment = Attachment(kind="file", name=f"{_file_name(what)}.pdf", item=file)
         source = person_name(office, action.source, you=you)
-        text = f"Forwarding {what} from {source}."
+        owner = file.partition(":")[2]
+        # "Mao Jun's file from Mao Jun" says the name twice: the owner's name is the source.
+        text = (
+            f"Forwarding {what}." if owner == action.source else f"Forwarding {what} from {source}."
+        )
         chat = _chat(office, action.target)
         await self._send(stm, chat, text, key, attachments=[attachment])
         return True, f"forwarded {file} to {action.target}", {"file": file}
@@ -251,14 +259,25 @@ class Executor:
         """Withdraw at the lock this instruction's unused codes (only ``person``'s, if given);
         returns how many the lock revoked."""
         revoked = 0
-        for code in stm.embodied.codes:
-            unused = code.unused(self.ctx.locker.code_states)
-            if not unused or (person is not None and code.person != person):
-                continue
+        doomed = [
+            code
+            for code in stm.embodied.codes
+            if code.unused(self.ctx.locker.code_states)
+            and (person is None or code.person == person)
+        ]
+        if doomed and self.ctx.retire_codes is not None:
+            await self.ctx.retire_codes([code.code_id for code in doomed])
+        for code in doomed:
             try:
                 await self.ctx.locker.revoke(code.code_id)
+            except LockCommandError as exc:
+                # The lock has no such active code (expired, or forgotten by a lock that
+                # restarted): it opens nothing, which is what "revoked" means to the reader.
+                logger.info(
+                    "code %s of %s not active at the lock: %s", code.code_id, code.person, exc
+                )
             except AdapterError as exc:
-                # Expired, or scanned in a moment we did not see: nothing left to withdraw.
+                # The lock unreachable: still open there (the next start withdraws it).
                 logger.info("code %s of %s not revoked: %s", code.code_id, code.person, exc)
                 continue
             code.revoked = True
@@ -302,6 +321,16 @@ class Executor:
         self, stm: ShortTermMemory, action: WaitInPlace
     ) -> tuple[bool, str, dict[str, object]]:
         watched = self._watching.pop(stm.instruction_id, None)
+        done_unseen = self._used_unseen(stm, action.person) if watched is None else []
+        if done_unseen:
+            # The lock reported the hand-over while no one watched (before a restart): it
+            # happened, and waiting for it again would only time out and send a new code.
+            for code in done_unseen:
+                code.scanned = code.used = True
+                _apply_to_locker(self.ctx.office, stm, code)
+            stm.embodied.door = "closed"
+            kinds = ["code_accepted", "door_closed"]
+            return True, f"{action.person} used the locker ({', '.join(kinds)})", {"events": kinds}
         if watched is None:
             notify = asyncio.Event()
             queue = self.ctx.locker.subscribe(notify)
@@ -356,6 +385,17 @@ class Executor:
         if rejected:
             return False, f"{action.person}'s code was rejected: {rejected[0]}", {"events": kinds}
         return False, f"{action.person} did not come to the locker", {"events": kinds}
+
+    def _used_unseen(self, stm: ShortTermMemory, person: str) -> list[IssuedCode]:
+        """``person``'s codes the lock reported used that this instruction never saw used."""
+        reported = self.ctx.locker.code_states
+        return [
+            code
+            for code in stm.embodied.codes
+            if code.person == person
+            and code.state in ("issued", "scanned")
+            and reported.get(code.code_id) == "used"
+        ]
 
 
 class _EitherEvent(asyncio.Event):

@@ -55,6 +55,7 @@ from assistantx.memory.updates import (
 from assistantx.runtime.executors import Executor
 from assistantx.runtime.failures import FailureMemory, failure_summary
 from assistantx.runtime.lease import BodyLease
+from assistantx.runtime.returns import return_note
 
 logger = logging.getLogger(__name__)
 
@@ -138,6 +139,8 @@ class InstructionRunner:
             async with asyncio.timeout(self.limits.wall_s):
                 await self._steps(stm)
         except asyncio.CancelledError:
+            # (A shutdown cancels too, but then nothing of this end is journaled: it resumes.)
+            stm.trace.cancelled = True
             await asyncio.shield(self._end(stm, "failed", "The instruction was cancelled."))
             raise
         except TimeoutError:
@@ -415,6 +418,8 @@ class InstructionRunner:
         """End without the reasoner's Stop, telling the requester (never raises); ``detail``
         (the technical cause, for the operator) goes in the final step's feedback."""
         if stm.trace.outcome is None:
+            if outcome != "done":  # someone's item still aboard goes back (runtime.returns)
+                summary += return_note(self.executor.ctx.office, stm)
             stop = Stop(outcome=outcome, summary=summary)
             try:
                 result = await self.executor.execute(stm, stop, key="final")

@@ -24,9 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
-from assistantx.core.errors import LockError
 from assistantx.core.ports.messenger import InboundMessage, OutboundMessage
-from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import HeldCode, SimOffice
 from assistantx.store.journal import Journal
 
@@ -121,9 +119,23 @@ def _held_code(record: dict[str, Any], payloads: dict[str, str]) -> HeldCode | N
     return HeldCode(**{**fields, "payload": payload, "scheduled": False})
 
 
-def restore(sim: SimOffice, state: dict[str, Any], payloads: dict[str, str] | None = None) -> None:
-    """Put the simulated world back as it was journaled; re-arm the codes people hold
-    (``payloads``: from ``CodePhones.load``)."""
+def held_payloads(state: dict[str, Any], payloads: dict[str, str]) -> list[str]:
+    """The payloads of the codes the journaled world puts in people's hands (``payloads``:
+    from ``CodePhones.load``), for the start-up to settle before ``restore``."""
+    held = [_held_code(c, payloads) for c in state["codes"]]
+    return [c.payload for c in held if c is not None]
+
+
+def restore(
+    sim: SimOffice,
+    state: dict[str, Any],
+    payloads: dict[str, str] | None = None,
+    live: set[str] | None = None,
+) -> None:
+    """Put the simulated world back as it was journaled. People keep only the codes in
+    ``live``: those the start-up found still open for a hand-over to come (the lock was armed
+    with them); a code that was revoked, used or expired is gone from their hands, so nobody
+    comes to the robot with it."""
     world = sim.world
     world.holder = {str(k): str(v) for k, v in state["holder"].items()}
     world.signed = {(a, b) for a, b in state["signed"]}
@@ -136,17 +148,9 @@ def restore(sim: SimOffice, state: dict[str, Any], payloads: dict[str, str] | No
     world.messages_to = {str(k): int(v) for k, v in state["messages_to"].items()}
     sim.told = {(i or None, p) for i, p in state["told"]}
     held = [_held_code(c, payloads or {}) for c in state["codes"]]
-    sim.codes = [c for c in held if c is not None]
+    sim.codes = [c for c in held if c is not None and not c.done and c.payload in (live or set())]
     robot = state["robot"]
     sim.robot.restore(robot["place"] or sim.office.robot.home, float(robot["odometer_m"]))
-    if isinstance(sim.locker, LocalLocker):  # an in-process lock forgot them; a TCP one did not
-        for code in sim.codes:
-            if code.done:
-                continue
-            try:
-                sim.locker.controller.provision(code.payload)
-            except LockError as exc:  # expired meanwhile: the person keeps a dead code
-                logger.info("held code of %s not re-armed: %s", code.person, exc)
     sim.on_robot_arrived()  # people with a code for this place come (again)
 
 

@@ -33,16 +33,14 @@ from fastapi import APIRouter, Request, Response
 from fastapi.responses import FileResponse
 from pydantic import BaseModel, ConfigDict, Field
 
-from assistantx.adapters.lock.protocol.codes import unseal
-from assistantx.adapters.lock.protocol.keys import Keyring
-from assistantx.core.errors import InvalidCodeError, MapError
+from assistantx.core.errors import MapError
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import LockEvent
-from assistantx.core.ports.messenger import OutboundMessage
 from assistantx.core.wording import person_name, purpose_text
 from assistantx.memory.short_term import CodeState
 from assistantx.nav.anchors import Anchor, load_anchors
 from assistantx.nav.occupancy_map import OccupancyMap, load_map
+from assistantx.service.codebook import CodeBook
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
 from assistantx.service.runtime import ServiceRuntime
@@ -201,46 +199,11 @@ class ScanIn(BaseModel):
     code_id: str = Field(min_length=1, max_length=100)
 
 
-class CodeBook:
-    """The payloads of the QR codes the assistant sent, keyed by code id.
-
-    A QR image's payload never reaches the journal (it is a credential), so the dashboard
-    notes each one as the messenger sends it, which is what a person's phone would hold.
-    Simulated colleagues keep theirs in the simulator, which survives restarts; the book is
-    consulted first, then the simulator.
-    """
-
-    def __init__(self, keyring: Keyring) -> None:
-        self._keyring = keyring
-        self._payloads: dict[str, str] = {}
-
-    async def note(self, message: OutboundMessage) -> None:
-        for attachment in message.attachments:
-            if attachment.qr_payload:
-                self.add(attachment.qr_payload)
-
-    def add(self, payload: str) -> None:
-        try:
-            self._payloads[unseal(payload, self._keyring).code_id] = payload
-        except InvalidCodeError:
-            logger.info("a QR payload under an unknown key was not noted")
-
-    def payload(self, code_id: str) -> str | None:
-        return self._payloads.get(code_id)
-
-
-def _codebook(request: Request, runtime: ServiceRuntime) -> CodeBook:
-    book: CodeBook | None = getattr(request.app.state, "dashboard_codebook", None)
-    if book is None:
-        book = CodeBook(runtime.lock_keys.codes)
-        runtime.messenger.relay_to(book.note)
-        if runtime.matrix is not None:  # codes sent over Matrix are scannable too
-            runtime.matrix.messenger.relay_to(book.note)
-        request.app.state.dashboard_codebook = book
+def _codebook(runtime: ServiceRuntime) -> CodeBook:
     for held in runtime.sim.codes:  # simulated people's codes (restored after a restart)
         if held.payload:
-            book.add(held.payload)
-    return book
+            runtime.codebook.add(held.payload)
+    return runtime.codebook
 
 
 def _recent_codes(runtime: ServiceRuntime, book: CodeBook, limit: int = 30) -> list[LockerCode]:
@@ -340,7 +303,7 @@ async def evaluation_file(run: str, name: str, runtime: Runtime, caller: Caller)
 )
 async def locker_codes(request: Request, runtime: Runtime, caller: Caller) -> list[LockerCode]:
     caller.require_operator()
-    return _recent_codes(runtime, _codebook(request, runtime))
+    return _recent_codes(runtime, _codebook(runtime))
 
 
 @router.post(
@@ -354,7 +317,7 @@ async def locker_scan(
     """Holds the code's QR payload up to the scanner: answers ``code_accepted`` (the door
     opens) or ``code_rejected`` with the lock's reason (used, expired, door open, ...)."""
     caller.require_operator()
-    payload = _codebook(request, runtime).payload(body.code_id)
+    payload = _codebook(runtime).payload(body.code_id)
     if payload is None:
         raise NotFoundError(
             f"no QR code {body.code_id!r} is known to the dashboard (it notes codes sent "

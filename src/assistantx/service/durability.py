@@ -95,6 +95,11 @@ class Durability:
             case "memory_updated":
                 updates = list(event.data.get("updates", []))
             case "instruction_ended":
+                if stm is not None:
+                    # Before the end is journaled: a finished instruction's codes are revoked
+                    # in the journal that says it finished, never after it (a crash between
+                    # the two would leave them open after a restart).
+                    await self._revoke_codes(stm)
                 checkpoint, status = stm, self._final_status(event.instruction_id, stm)
                 states = self._world_state()
                 if stm is not None and stm.trace.steps:
@@ -107,6 +112,12 @@ class Durability:
         self.hub.publish(EventRecord(seq=seq, event=event))
         if self.assistant.ltm.applied_total - self._snapshot_at >= SNAPSHOT_EVERY:
             await self.snapshot_memory()
+
+    async def _revoke_codes(self, stm: ShortTermMemory) -> None:
+        try:
+            await self.assistant.executor.revoke_codes(stm)
+        except Exception:  # the lock unreachable: the next start withdraws them (code_recovery)
+            logger.exception("could not revoke the codes of %s", stm.instruction_id)
 
     async def snapshot_memory(self) -> None:
         """Snapshot the graph (bounded: one value per fact, a bounded history)."""

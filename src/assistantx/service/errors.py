@@ -67,6 +67,11 @@ class UnprocessableError(ApiError):
     kind = "unprocessable"
 
 
+class TooManyRequestsError(ApiError):
+    status = 429
+    kind = "too_many_requests"
+
+
 class UnavailableError(ApiError):
     status = 503
     kind = "unavailable"

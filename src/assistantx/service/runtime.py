@@ -29,6 +29,7 @@ from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
 from assistantx.core.office import Office, load_office
 from assistantx.core.ports.lock import Locker
+from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.core.ports.robot import RobotBase
 from assistantx.core.settings import Settings
 from assistantx.memory.resolve import Resolver
@@ -41,11 +42,15 @@ from assistantx.runtime.loop import LoopLimits
 from assistantx.service import colleagues
 from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
+from assistantx.service.code_ledger import CodeLedger
+from assistantx.service.code_recovery import settle_codes
+from assistantx.service.codebook import CodeBook
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
-from assistantx.service.errors import NotFoundError
+from assistantx.service.errors import NotFoundError, TooManyRequestsError
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
+from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.sim.lock.controller import LockController
@@ -58,6 +63,7 @@ logger = logging.getLogger(__name__)
 JOURNAL_FILE = "journal.sqlite3"
 LOCK_KEYS_FILE = "lock-keys.json"
 SIM_CODES_FILE = "sim-codes.json"  # simulated people's QR payloads: credentials, not journaled
+CODEBOOK_FILE = "locker-codes.json"  # every QR payload sent and not expired, for the dashboard
 
 
 class ServiceRuntime:
@@ -71,6 +77,8 @@ class ServiceRuntime:
     locker: Locker
     lock_keys: LockKeys
     phones: colleagues.CodePhones
+    codebook: CodeBook
+    ledger: CodeLedger
     messenger: BuiltinMessenger
     assistant: Assistant
     durability: Durability
@@ -130,8 +138,18 @@ class ServiceRuntime:
         )
         self.messenger = BuiltinMessenger(self.journal, self.clock)
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
+        # Registered before anything is sent: every code is scannable from the dashboard,
+        # also one sent before the page's first request, and after a restart.
+        self.codebook = CodeBook(self.lock_keys.codes, self.clock, data_dir / CODEBOOK_FILE)
+        self.messenger.relay_to(self.codebook.note)
+        if self.matrix is not None:  # codes sent over Matrix are scannable too
+            self.matrix.messenger.relay_to(self.codebook.note)
         if s.people == "simulated":
             colleagues.connect_colleagues(self.sim, self.messenger)
+        code_lifetime_s = s.lock_code_expiry_min * 60
+        self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
+        self.locker.listen(self.ledger.on_lock_event)
+        self._request_check = RequestRecognizer(self.office)
         ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
@@ -146,7 +164,8 @@ class ServiceRuntime:
                 ltm=ltm,
                 limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
                 # A direct message starts an instruction only when it asks for something.
-                is_request=RequestRecognizer(self.office),
+                is_request=self._request_check,
+                retire_codes=self.ledger.retire,
             )
         )
         self.durability = Durability(
@@ -154,6 +173,8 @@ class ServiceRuntime:
         )
         self.durability.attach()
         self.admission = Admission(self.assistant, self.journal)
+        self.rate = InstructionRate(s.instructions_per_minute)
+        self.assistant.intercept_direct_messages(self._over_the_rate)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
 
@@ -165,11 +186,25 @@ class ServiceRuntime:
                 f"the key in {self.settings.data_dir}; otherwise give both the same "
                 "ASSISTANTX_LOCK_SHARED_KEY or ASSISTANTX_LOCK_KEY_FILE"
             ) from exc
+        # Before anything else restarts: no code the journal says is finished opens again.
+        phones = self.phones.load()
+        held = colleagues.held_payloads(world, phones) if world is not None else []
+        settled = await settle_codes(
+            self.journal,
+            self.ledger,
+            self.locker,
+            self.lock_keys.codes,
+            [*self.codebook.payloads(), *held],
+            self.clock.now(),
+            code_lifetime_s,
+        )
+        self.locker.code_states.update(self.ledger.reported())
         await stack.enter_async_context(self.messenger)
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
-            colleagues.restore(self.sim, world, self.phones.load())
+            colleagues.restore(self.sim, world, phones, settled.live)
+        self.ledger.world_state = self._world_state  # the world as restored, from now on
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
             matrix = self.matrix.messenger
@@ -290,12 +325,36 @@ class ServiceRuntime:
         hooks, its first checkpoint) is the starter's job, so a submission never waits for
         anyone's step. A restart starts what was admitted and never started."""
         person = self.resolver.person(requester)
+        wait_s = self.rate.take(person)
+        if wait_s is not None:
+            name = self.office.person(person).name
+            raise TooManyRequestsError(refusal_text(name, self.rate.per_minute, wait_s))
         instruction_id = new_instruction_id()
         record = await self.journal.acreate_instruction(
             instruction_id, person, text, self.clock.now()
         )
         self.admission.admit(record)
         return record
+
+    async def _over_the_rate(self, message: InboundMessage) -> bool:
+        """A direct message that would start one instruction too many is answered in words
+        (once per window) instead; True: handled, nothing starts."""
+        if not self._request_check(message.text, message.sender, strict=False):
+            return False  # not a request: the assistant answers it as usual
+        wait_s = self.rate.take(message.sender)
+        if wait_s is None:
+            return False
+        logger.info("rate limit: a request from %s not started", message.sender)
+        if self.rate.first_refusal(message.sender):
+            name = self.office.person(message.sender).name
+            await self.assistant.parts.messenger.send(
+                OutboundMessage(
+                    chat=ChatRef(kind="dm", id=message.sender),
+                    text=refusal_text(name, self.rate.per_minute, wait_s),
+                    idempotency_key=f"rate:{message.platform}:{message.event_id}",
+                )
+            )
+        return True
 
     def instruction(self, instruction_id: str) -> InstructionRecord:
         record = self.journal.instruction(instruction_id)

@@ -74,6 +74,9 @@ class HeldCode:
     item: str
     scheduled: bool = False
     done: bool = False
+    # They came with it and could not do the hand-over, and said so: they come again only
+    # once they can (a person does not walk to the robot to say the same thing twice).
+    complained: bool = False
 
 
 class SimMessenger(Messenger):
@@ -242,15 +245,17 @@ class SimOffice:
         if not qr:
             self.told.add((message.instruction_id, person))
         for a in qr:
-            self.codes.append(
-                HeldCode(
-                    message.instruction_id or "",
-                    person,
-                    a.qr_payload or "",
-                    a.qr_purpose or "deposit",
-                    a.item or "",
-                )
+            code = HeldCode(
+                message.instruction_id or "",
+                person,
+                a.qr_payload or "",
+                a.qr_purpose or "deposit",
+                a.item or "",
             )
+            # A new code for the same hand-over replaces the one they held (a phone shows the
+            # latest code; the older one was revoked or is about to be).
+            self.codes = [c for c in self.codes if not _same_handover(c, code)]
+            self.codes.append(code)
         for a in message.attachments:
             if a.kind == "file" and a.item and self.world.available(person):
                 self.world.receive_file(now, person, a.item)
@@ -290,6 +295,10 @@ class SimOffice:
                 continue
             if (code.instruction_id, code.person) not in self.told:
                 continue
+            if code.complained and handover_problem(
+                self.world, code.person, code.purpose, code.item, place
+            ):
+                continue  # nothing changed since they said why they cannot
             code.scheduled = True
             self.clock.call_later(
                 self.handover_delay_s, functools.partial(self._handover, code, place)
@@ -313,12 +322,14 @@ class SimOffice:
         now = self.clock.now()
         problem = handover_problem(self.world, code.person, code.purpose, code.item, place)
         if problem is not None:
-            # They keep the code and come again the next time the robot is here.
-            self.messenger.post(
-                code.person,
-                ChatRef(kind="dm", id=code.person),
-                f"I came to the robot, but: {problem}",
-            )
+            # They keep the code and come again once the hand-over has become possible.
+            if not code.complained:
+                code.complained = True
+                self.messenger.post(
+                    code.person,
+                    ChatRef(kind="dm", id=code.person),
+                    f"I came to the robot, but: {problem}",
+                )
             return
         code.done = True
         if isinstance(self.locker, LocalLocker):
@@ -360,3 +371,12 @@ class SimOffice:
 
     def check(self, milestones: Iterable[dict[str, object]]) -> list[bool]:
         return [self.world.check(dict(m)) for m in milestones]
+
+
+def _same_handover(a: HeldCode, b: HeldCode) -> bool:
+    return (a.instruction_id, a.person, a.purpose, a.item) == (
+        b.instruction_id,
+        b.person,
+        b.purpose,
+        b.item,
+    )

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from assistantx.core.office import Operation, OperationShape, Ownership
 from assistantx.core.ports.lock import WORK_PURPOSES
 from assistantx.core.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
-from assistantx.core.wording import item_phrase
+from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
     is_question,
     mentioned_item_types,
@@ -100,8 +100,8 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
         if kept and not world.owns(person, t):  # kept in a cupboard they run
             return Reply(person, f"Yes, I can take the {_item_name(world, t)} out for the robot.")
         if world.owns(person, t):
-            return Reply(person, f"Yes, I have a {_item_name(world, t)}. Happy to lend it.")
-        return Reply(person, f"No, I don't have a {_item_name(world, t)}.")
+            return Reply(person, f"Yes, I have {a_thing(_item_name(world, t))}. Happy to lend it.")
+        return Reply(person, f"No, I don't have {a_thing(_item_name(world, t))}.")
     if is_question(text):
         return Reply(person, "Yes, I'm here. What do you need?")
     return Reply(person, "OK, thanks!") if "robot" in text.lower() else None
@@ -123,7 +123,7 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
             replies.append(Reply(person, f"I can help with that ({requests[0]})."))
         elif not requests and types and _can_bring(world, person, types[0]):
             replies.append(
-                Reply(person, f"I have a {_item_name(world, types[0])}, you can borrow it.")
+                Reply(person, f"I have {a_thing(_item_name(world, types[0]))}, you can borrow it.")
             )
     return replies
 

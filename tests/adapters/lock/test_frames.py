@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import asyncio
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -11,8 +13,9 @@ from assistantx.adapters.lock.protocol.frames import (
     decode_message,
     encode_frame,
     encode_message,
+    read_frame,
 )
-from assistantx.core.errors import LockProtocolError
+from assistantx.core.errors import LockError, LockProtocolError
 
 bounded = settings(max_examples=200, deadline=None, derandomize=True)
 
@@ -79,3 +82,65 @@ def test_only_json_objects_are_messages(body: bytes) -> None:
 def test_messages_round_trip() -> None:
     message = {"id": 1, "op": "scan", "payload": "abc", "nested": {"é": [1.5, None]}}
     assert decode_message(encode_message(message)) == message
+
+
+# JSON values as the link carries them (finite numbers: JSON has no NaN or infinity).
+_json = st.recursive(
+    st.none()
+    | st.booleans()
+    | st.integers(min_value=-(2**53), max_value=2**53)
+    | st.floats(allow_nan=False, allow_infinity=False)
+    | st.text(max_size=40),
+    lambda inner: (
+        st.lists(inner, max_size=5) | st.dictionaries(st.text(max_size=10), inner, max_size=5)
+    ),
+    max_leaves=8,
+)
+_messages = st.dictionaries(st.text(max_size=12), _json, max_size=6)
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(st.lists(_messages, max_size=3), st.integers(min_value=1, max_value=50))
+def test_any_messages_round_trip_through_frames(
+    messages: list[dict[str, object]], chunk: int
+) -> None:
+    stream = b"".join(encode_frame(encode_message(m)) for m in messages)
+    decoder = FrameDecoder()
+    bodies: list[bytes] = []
+    for start in range(0, len(stream), chunk):
+        bodies += decoder.feed(stream[start : start + chunk])
+    assert [decode_message(b) for b in bodies] == messages
+
+
+@bounded
+@given(st.binary(max_size=500))
+def test_any_body_is_a_message_or_a_protocol_error(body: bytes) -> None:
+    try:
+        message = decode_message(body)
+    except LockProtocolError:
+        return
+    assert isinstance(message, dict)
+
+
+@bounded
+@given(st.binary(max_size=600))
+def test_the_stream_reader_yields_frames_or_a_lock_error(data: bytes) -> None:
+    """``read_frame`` over arbitrary bytes then end of stream: bodies within the limit, then
+    a ``LockError`` (closed mid-frame, oversized); never another exception."""
+
+    async def read_all() -> list[bytes]:
+        reader = asyncio.StreamReader()
+        reader.feed_data(data)
+        reader.feed_eof()
+        bodies: list[bytes] = []
+        while True:
+            try:
+                bodies.append(
+                    await read_frame(reader, max_size=256, idle_timeout=1.0, frame_timeout=1.0)
+                )
+            except LockError:
+                return bodies
+
+    bodies = asyncio.run(read_all())
+    assert all(len(b) <= 256 for b in bodies)
+    assert b"".join(encode_frame(b, 256) for b in bodies) == data[: sum(4 + len(b) for b in bodies)]

@@ -5,15 +5,17 @@ the attacker on the same address as the assistant)."""
 from __future__ import annotations
 
 import asyncio
+import sys
 from collections.abc import AsyncIterator
 
 import pytest
 
 from assistantx.adapters.lock.protocol import LockKeys
-from assistantx.adapters.lock.protocol.link import LinkTimeouts, close_writer
+from assistantx.adapters.lock.protocol.link import LinkTimeouts, client_handshake, close_writer
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.backoff import Backoff
 from assistantx.core.clock import SimClock
+from assistantx.core.errors import LockError
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.server import LockServer
 from helpers.eventually import eventually
@@ -37,7 +39,7 @@ async def _flood(port: int, n: int = FLOOD) -> list[asyncio.StreamWriter]:
 async def _settle(server: LockServer, at_least: int) -> None:
     """Until the lock has taken in the flood (accepted and counted, or evicted)."""
     await eventually(
-        lambda: server.pending_count + server.evicted_pending >= at_least,
+        lambda: server.pending_count + server.evicted_pending + server.refused_pending >= at_least,
         what=f"the lock to take in {at_least} silent connections",
         timeout_s=3,
     )
@@ -119,3 +121,121 @@ async def test_after_a_lock_restart_under_a_flood_the_assistant_gets_back_in() -
             for writer in flood:
                 await close_writer(writer)
             await second.stop()
+
+
+# -- a churning flood: new silent sockets all the time -------------------------------------
+
+ATTEMPTS = 20
+
+
+# An attacker in a process of its own (as a real one is): opens silent connections from the
+# given source addresses as fast as it can, keeping the last few hundred open, until killed.
+_CHURN = """
+import socket, sys
+port, sources = int(sys.argv[1]), sys.argv[2:]
+held = []
+while True:
+    for source in sources:
+        try:
+            held.append(socket.create_connection(("127.0.0.1", port), 1, (source, 0)))
+        except OSError:
+            continue
+        print(flush=True)  # one line per socket opened
+    while len(held) > 300:
+        held.pop(0).close()
+"""
+
+
+async def _count_lines(stream: asyncio.StreamReader, seen: list[int]) -> None:
+    while await stream.readline():
+        seen[0] += 1
+
+
+async def _handshakes(port: int, keys: LockKeys) -> int:
+    """How many of ``ATTEMPTS`` correct-key handshakes get through, one after the other."""
+    ok = 0
+    for _ in range(ATTEMPTS):
+        try:
+            reader, writer = await asyncio.open_connection("127.0.0.1", port)
+        except OSError:
+            continue
+        try:
+            await client_handshake(reader, writer, link_key=keys.link_key, handshake_s=2.0)
+            ok += 1
+        except LockError:
+            pass
+        finally:
+            await close_writer(writer)
+    return ok
+
+
+async def test_a_churning_flood_from_other_addresses_does_not_starve_handshakes() -> None:
+    """(From the assistant's own address, a flood faster than ``max_pending_per_peer`` per
+    ``grace_s`` can delay it: the server's docstring says why.)"""
+    sources = [f"127.0.0.{n}" for n in range(2, 10)]
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
+    _, port = await server.start()
+    churn = await asyncio.create_subprocess_exec(
+        sys.executable, "-c", _CHURN, str(port), *sources, stdout=asyncio.subprocess.PIPE
+    )
+    assert churn.stdout is not None
+    seen = [0]
+    counting = asyncio.create_task(_count_lines(churn.stdout, seen))
+    try:
+        await _settle(server, 2 * server.max_pending)  # the flood is churning by now
+        got_in = await _handshakes(port, keys)
+    finally:
+        churn.kill()
+        await churn.wait()
+        await counting
+        await server.stop()
+    assert seen[0] > 2 * server.max_pending  # the flood outnumbered the pending bounds
+    assert got_in >= ATTEMPTS - 1, f"{got_in} of {ATTEMPTS} handshakes got through"
+
+
+# -- a burst within the assistant's handshake ----------------------------------------------
+
+
+async def _attempt_under_a_burst(port: int, keys: LockKeys, sources: list[str], n: int) -> bool:
+    """One correct-key handshake, with ``n`` silent sockets from ``sources`` arriving while it
+    runs (a burst that lands in its round trip)."""
+    reader, writer = await asyncio.open_connection("127.0.0.1", port)
+    handshake = asyncio.create_task(
+        client_handshake(reader, writer, link_key=keys.link_key, handshake_s=2.0)
+    )
+    burst = await asyncio.gather(
+        *(
+            asyncio.open_connection("127.0.0.1", port, local_addr=(sources[i % len(sources)], 0))
+            for i in range(n)
+        ),
+        return_exceptions=True,
+    )
+    try:
+        await handshake
+    except LockError:
+        return False
+    finally:
+        await close_writer(writer)
+        for opened in burst:
+            if isinstance(opened, tuple):
+                await close_writer(opened[1])
+    return True
+
+
+@pytest.mark.parametrize(
+    ("sources", "n"),
+    [(["127.0.0.1"], 12), ([f"127.0.0.{k}" for k in range(2, 10)], 80)],
+    ids=["12-from-one-address", "80-from-eight-addresses"],
+)
+async def test_a_burst_in_the_handshake_does_not_evict_the_assistant(
+    sources: list[str], n: int
+) -> None:
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
+    _, port = await server.start()
+    try:
+        got_in = [await _attempt_under_a_burst(port, keys, sources, n) for _ in range(ATTEMPTS)]
+    finally:
+        await server.stop()
+    assert sum(got_in) >= ATTEMPTS - 1, f"{sum(got_in)} of {ATTEMPTS} handshakes got through"

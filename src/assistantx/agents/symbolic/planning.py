@@ -25,7 +25,7 @@ from assistantx.core.office import Office
 from assistantx.core.ports.lock import Purpose
 from assistantx.core.task_schema import Task, TaskFrame, kind_shape, operation_of
 from assistantx.core.trace import Plan, SubGoal
-from assistantx.core.wording import item_type_name, person_name, purpose_text
+from assistantx.core.wording import a_thing, item_type_name, person_name, purpose_text
 from assistantx.memory.graph import LongTermMemory
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
@@ -459,7 +459,7 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         return f"{name(person)}'s"
 
     item = office.item_type(task.item).name if task.item else "item"
-    whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
+    whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item)
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     op = operation_of(office, task)

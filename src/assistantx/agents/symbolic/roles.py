@@ -20,6 +20,7 @@ from typing import Literal
 from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskKind, kind_shape
+from assistantx.core.wording import a_thing
 from assistantx.memory.graph import LongTermMemory
 
 DistanceFn = Callable[[str, str], float]
@@ -104,7 +105,7 @@ class Roles:
         place = self.office.facility(role.facility).name if role.facility else ""
         match role.kind:
             case "lend":
-                return f"lend {beneficiary} {'a' if anyone else 'your'} {thing}"
+                return f"lend {beneficiary} {a_thing(thing) if anyone else f'your {thing}'}"
             case "give":
                 return f"hand over your {thing} for {beneficiary}"
             case "keep":
@@ -188,7 +189,11 @@ class Roles:
                 return RoleState(role, "exhausted", excluded={role.requester: "did not come"})
             return RoleState(role, "bound", person=role.requester)
         state = RoleState(role, "exhausted")
-        people = self.candidates(role, ltm)
+        people = [
+            p
+            for p in self.candidates(role, ltm)
+            if not self._lent_out(role, p, ltm) or ev.asked(p, self.question(role, p))
+        ]
         group_q = self._group_asked(role, ev)
         helpers: list[str] = []
         if group_q is not None:
@@ -231,6 +236,17 @@ class Roles:
         if group is not None:
             state.status, state.group = "group", group
         return state
+
+    @staticmethod
+    def _lent_out(role: Role, person: str, ltm: LongTermMemory) -> bool:
+        """Memory knows (from a hand-over) that someone else holds ``person``'s item: they
+        still own it, but cannot lend it now, so they are not asked (unless this very
+        instruction asked them: then it is this hand-over that moved it)."""
+        return (
+            role.kind == "lend"
+            and role.item_type is not None
+            and ltm.lent_out(person, role.item_type) is not None
+        )
 
     def group_for(self, requester: str) -> str | None:
         """The largest group chat the requester belongs to."""

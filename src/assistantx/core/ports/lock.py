@@ -8,12 +8,16 @@ open/close, each attributed to the person the accepted code was issued to.
 from __future__ import annotations
 
 import asyncio
+import logging
 from abc import ABC, abstractmethod
+from collections.abc import Callable
 from typing import Literal
 
 from pydantic import BaseModel, Field
 
 from assistantx.core.lifecycle import Component
+
+logger = logging.getLogger(__name__)
 
 # What the person does at the locker: put the item in, take it out, or take it out, work on
 # it (sign, seal, copy, heat) and put it back; "produce" = make it at a facility and put it in.
@@ -65,6 +69,7 @@ class Locker(Component, ABC):
         # What the lock reported of each code since we connected: "scanned" once accepted,
         # "used" once the door it opened closed (for live views; instructions keep their own).
         self.code_states: dict[str, Literal["scanned", "used"]] = {}
+        self._listeners: list[Callable[[LockEvent], None]] = []
 
     @abstractmethod
     async def issue_code(
@@ -88,11 +93,22 @@ class Locker(Component, ABC):
     def unsubscribe(self, queue: asyncio.Queue[LockEvent]) -> None:
         self._subscribers = [(q, n) for q, n in self._subscribers if q is not queue]
 
+    def listen(self, listener: Callable[[LockEvent], None]) -> None:
+        """Call ``listener`` with every event as it is published, before any subscriber's
+        queue gets it (for whoever must record an event before anyone acts on it)."""
+        self._listeners.append(listener)
+
     def _publish(self, event: LockEvent) -> None:
         if event.code_id is not None and event.kind == "code_accepted":
             self.code_states[event.code_id] = "scanned"
         elif event.code_id is not None and event.kind == "door_closed":
             self.code_states[event.code_id] = "used"
+        for listener in list(self._listeners):
+            try:
+                listener(event)
+            except Exception:
+                # A broken recorder must not keep the event from the instructions waiting on it.
+                logger.exception("lock event listener failed on event %s", event.seq)
         for queue, notify in self._subscribers:
             queue.put_nowait(event)
             if notify is not None:

@@ -172,6 +172,13 @@ class LockController:
         self._revoked[code_id] = claims.expires_at
         logger.info("lock %s: revoked code %s", self.lock_id, code_id)
 
+    def retire(self, code_id: str, until: float) -> None:
+        """Refuse ``code_id`` as revoked until ``until`` (its expiry), whether or not it is
+        provisioned here: a lock that restarted learns what was withdrawn before."""
+        self._provisioned.pop(code_id, None)
+        if code_id not in self._used:
+            self._revoked[code_id] = max(until, self._revoked.get(code_id, until))
+
     def open_for_maintenance(self, reason: str = "") -> LockEvent:
         if self.door_open:
             raise LockCommandError("door_open", "the door is already open")

@@ -404,6 +404,15 @@ class Journal:
         text = json.dumps(body)
         self.write(lambda db: _put_state(db, name, text))
 
+    def put_states(self, states: dict[str, dict[str, Any]]) -> None:
+        """Several state rows in one transaction (all of them or none survive a crash)."""
+        rows = [(name, json.dumps(body)) for name, body in states.items()]
+        self.write(_put_states(rows))
+
+    async def aput_states(self, states: dict[str, dict[str, Any]]) -> None:
+        rows = [(name, json.dumps(body)) for name, body in states.items()]
+        await self.awrite(_put_states(rows))
+
     def put_memory_snapshot(self, name: str, body: dict[str, Any]) -> None:
         """A snapshot stamped with the last memory update journaled before it (``through``)."""
         self.write(_put_memory_snapshot(name, body))
@@ -583,6 +592,14 @@ def _put_memory_snapshot(name: str, body: dict[str, Any]) -> Callable[[sqlite3.C
         # Writes are ordered, so every update applied before the snapshot is journaled by now.
         through = db.execute("SELECT COALESCE(MAX(seq), 0) FROM memory_updates").fetchone()[0]
         _put_state(db, name, json.dumps({**body, "through": int(through)}))
+
+    return write
+
+
+def _put_states(rows: list[tuple[str, str]]) -> Callable[[sqlite3.Connection], None]:
+    def write(db: sqlite3.Connection) -> None:
+        for name, text in rows:
+            _put_state(db, name, text)
 
     return write
 

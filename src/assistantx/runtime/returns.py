@@ -1,0 +1,130 @@
+"""Nobody is left without their things: an instruction that ends without success while
+someone's item is in the robot's locker (cancelled, failed, past its deadline) gives it back.
+
+The errand runs after the instruction ended, as a task of its own under the errand's id
+(``<instruction>.return``): it takes the robot's body lease, drives to the owner, tells them in
+words why their item comes back, sends them a one-time code to take it out and waits for
+them. The requester's final message already says the item goes back (``return_note``). A
+shutdown cancels the errand like any running work.
+"""
+
+from __future__ import annotations
+
+import logging
+
+from assistantx.core.actions import Action, Inform, Move, SendQR, WaitInPlace
+from assistantx.core.office import Office
+from assistantx.core.trace import Trace
+from assistantx.core.wording import item_phrase, person_name
+from assistantx.memory.resolve import Resolver
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.executors import Executor
+from assistantx.runtime.lease import BodyLease
+
+logger = logging.getLogger(__name__)
+
+RETURN_WAIT_S = 600.0  # how long the robot waits at the owner's place (office clock)
+
+
+def items_to_return(office: Office, stm: ShortTermMemory) -> list[tuple[str, str]]:
+    """(item, owner) for each item in the locker, by this instruction's account, that it
+    ends holding without having delivered it; empty when the instruction succeeded."""
+    if stm.trace.outcome == "done":
+        return []
+    people = {p.id for p in office.people}
+    aboard: list[tuple[str, str]] = []
+    for item in stm.embodied.locker_contents:
+        owner = item.partition(":")[2]
+        if owner in people:
+            aboard.append((item, owner))
+    return aboard
+
+
+def return_note(office: Office, stm: ShortTermMemory) -> str:
+    """For the requester's final message: what goes back to whom, in words ("" if nothing)."""
+    aboard = items_to_return(office, stm)
+    if not aboard:
+        return ""
+    you = stm.requester
+    parts = [
+        f"{item_phrase(office, item, you=you)} back to {person_name(office, owner, you=you)}"
+        for item, owner in aboard
+    ]
+    return f" The robot is bringing {_and(parts)}."
+
+
+async def return_items(
+    office: Office,
+    resolver: Resolver,
+    executor: Executor,
+    lease: BodyLease,
+    ended: ShortTermMemory,
+) -> None:
+    """Bring each item back to its owner (see the module's docstring)."""
+    aboard = items_to_return(office, ended)
+    if not aboard:
+        return
+    errand_id = f"{ended.instruction_id}.return"
+    stm = ShortTermMemory(
+        instruction_id=errand_id,
+        requester=ended.requester,
+        text=f"give back what {ended.instruction_id} left in the locker",
+        trace=Trace(
+            instruction_id=errand_id,
+            requester=ended.requester,
+            text="return items",
+            reasoner="return",
+            started_at=executor.ctx.clock.now(),
+        ),
+    )
+    stm.embodied.locker_contents = [item for item, _ in aboard]
+    why = _why(ended)
+    await lease.acquire(errand_id)
+    try:
+        for n, (item, owner) in enumerate(aboard):
+            thing = item_phrase(office, item, you=owner)
+            requester = person_name(office, ended.requester, you=owner)
+            steps: list[Action] = [
+                Move(place=owner),
+                Inform(
+                    contact=owner,
+                    content=(
+                        f"{thing[0].upper()}{thing[1:]} is in the robot's locker, and "
+                        f"{requester}'s request it was for {why}. The robot is at your desk "
+                        "to give it back: scan the code I am sending you to take it out."
+                    ),
+                ),
+                SendQR(contact=owner, item=item, purpose="collect"),
+                WaitInPlace(person=owner, timeout_s=RETURN_WAIT_S),
+            ]
+            for m, action in enumerate(steps):
+                grounded = resolver.ground(action)  # the owner's name → their desk
+                result = await executor.execute(stm, grounded, key=f"r{n}a{m}")
+                if not result.ok:
+                    logger.warning(
+                        "returning %s to %s: %s failed: %s",
+                        item,
+                        owner,
+                        action.type,
+                        result.observation,
+                    )
+                    break
+    finally:
+        await executor.revoke_codes(stm)
+        executor.forget(errand_id)
+        lease.release(errand_id)
+
+
+def _why(stm: ShortTermMemory) -> str:
+    summary = (stm.trace.summary or "").lower()
+    if "cancel" in summary:
+        return "was cancelled"
+    if "out of time" in summary:
+        return "ran out of time"
+    return "could not be completed"
+
+
+def _and(parts: list[str]) -> str:
+    if len(parts) == 1:
+        return parts[0]
+    return ", ".join(parts[:-1]) + f" and {parts[-1]}"

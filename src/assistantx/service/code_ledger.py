@@ -1,0 +1,103 @@
+"""What the journal knows of how each locker code ended, so that no finished code comes back.
+
+A one-time code ends in one of three ways: it is revoked (its hand-over timed out, or its
+instruction ended first), used (the lock accepted it and the door closed after it), or it
+expires. The first two are journaled here the moment they happen:
+
+- a revocation *before* the lock is asked to withdraw the code, so a crash between the two
+  leaves the journal saying "revoked" and the next start withdraws it again;
+- a scan the moment the lock reports it, in one transaction with the simulated world it
+  changed (``world_state``), so after a crash the world, the lock and the instruction agree
+  that the hand-over happened and the resumed instruction does not ask for it again.
+
+Expiry needs no record: a code carries its own expiry. An entry is kept for one code
+lifetime after it was written, by when any code it could name has expired anyway.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Iterable
+from typing import Any, Literal, cast
+
+from assistantx.core.clock import Clock
+from assistantx.core.ports.lock import LockEvent
+from assistantx.store.journal import Journal
+
+logger = logging.getLogger(__name__)
+
+LEDGER_STATE = "lock_codes"
+
+Ended = Literal["revoked", "scanned", "used"]
+Reported = Literal["scanned", "used"]
+# A later fact wins over an earlier one, never the other way round: a code revoked after the
+# lock accepted it (a late revocation that found nothing to withdraw) stays "used".
+_RANK: dict[str, int] = {"revoked": 0, "scanned": 1, "used": 2}
+
+WorldState = Callable[[], dict[str, dict[str, Any]]]
+
+
+class CodeLedger:
+    """The journaled end of each recent code (one state row, bounded by the code lifetime)."""
+
+    def __init__(
+        self,
+        journal: Journal,
+        clock: Clock,
+        lifetime_s: float,
+        world_state: WorldState | None = None,
+    ) -> None:
+        self._journal = journal
+        self._clock = clock
+        self._lifetime_s = lifetime_s
+        # Set once the simulated world is restored: a lock that replays old events on connect
+        # must not journal the world as it is before that.
+        self.world_state = world_state
+        self._ended: dict[str, tuple[Ended, float]] = {}
+        for code_id, entry in (journal.state(LEDGER_STATE) or {}).get("codes", {}).items():
+            state, until = entry
+            if state in _RANK:
+                self._ended[str(code_id)] = (cast(Ended, state), float(until))
+
+    def ended(self, code_id: str) -> Ended | None:
+        entry = self._ended.get(code_id)
+        return entry[0] if entry is not None else None
+
+    def reported(self) -> dict[str, Reported]:
+        """What the lock reported of codes before this process started (for
+        ``Locker.code_states``, which otherwise knows only what it saw since)."""
+        return {c: s for c, (s, _) in self._ended.items() if s != "revoked"}
+
+    async def retire(self, code_ids: Iterable[str]) -> None:
+        """Journal that these codes are revoked; call it before asking the lock to revoke."""
+        if self._note(code_ids, "revoked"):
+            await self._journal.aput_states({LEDGER_STATE: self._body()})
+
+    def on_lock_event(self, event: LockEvent) -> None:
+        """A ``Locker.listen`` listener: journal a scan or a closed door before anyone acts on
+        it (synchronously: the event reaches the instructions after this returns)."""
+        if event.code_id is None or event.kind not in ("code_accepted", "door_closed"):
+            return
+        state: Ended = "scanned" if event.kind == "code_accepted" else "used"
+        if not self._note([event.code_id], state):
+            return
+        states = {LEDGER_STATE: self._body()}
+        if self.world_state is not None:
+            states.update(self.world_state())
+        self._journal.put_states(states)
+
+    def _note(self, code_ids: Iterable[str], state: Ended) -> bool:
+        until = self._clock.now() + self._lifetime_s
+        changed = False
+        for code_id in code_ids:
+            known = self._ended.get(code_id)
+            if known is not None and _RANK[known[0]] >= _RANK[state]:
+                continue
+            self._ended[code_id] = (state, until)
+            changed = True
+        return changed
+
+    def _body(self) -> dict[str, Any]:
+        now = self._clock.now()
+        self._ended = {c: e for c, e in self._ended.items() if e[1] > now}
+        return {"codes": {c: [s, until] for c, (s, until) in self._ended.items()}}
