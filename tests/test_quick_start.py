@@ -42,7 +42,7 @@ def test_the_quick_start_is_at_the_top_of_the_readme() -> None:
 @pytest.mark.slow
 def test_the_quick_start_lines_run_as_pasted(tmp_path: Path) -> None:
     lines = quick_start_lines()
-    assert "${PORT:-8000}" in lines  # the one thing the test chooses, through the lines' own variable
+    assert "${PORT:-8000}" in lines  # what the test chooses, through the lines' own variable
     venv = Path(sys.executable).parent.parent
     (tmp_path / ".venv").symlink_to(venv)
     port = free_port()
