@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import httpx
 
-from service.server import LEE
+from service.server import LEE, OPERATOR
 
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
 EXAMPLE = '{"requester": "lee", "text": "Bring me a stapler"}'
@@ -64,3 +64,11 @@ async def test_a_missing_field_names_it_and_shows_a_body_to_send(api: httpx.Asyn
     r = await api.post("/v1/instructions", json={"text": "Bring me a stapler"}, headers=AS_LEE)
     assert r.status_code == 422, r.text
     assert r.json()["message"] == f"requester is missing: send a JSON object such as {EXAMPLE}"
+
+
+async def test_me_names_the_tokens_person_or_the_operator(api: httpx.AsyncClient) -> None:
+    me = await api.get("/v1/me", headers=AS_LEE)
+    assert me.json() == {"person": "lee", "name": "Lee Ming", "operator": False}
+    operator = await api.get("/v1/me", headers={"Authorization": f"Bearer {OPERATOR}"})
+    assert operator.json() == {"person": None, "name": None, "operator": True}
+    assert (await api.get("/v1/me", headers={"Authorization": "Bearer nope"})).status_code == 401
