@@ -47,7 +47,7 @@ class InstructionIn(_Request):
     requester: Name = Field(
         min_length=1,
         max_length=100,
-        description="who asks: a person's id or name as people write it (`lee`, `Lee`)",
+        description="who asks: a person's id or name as people write it, e.g. lee or Lee Ming",
         examples=["lee"],
     )
     text: Text = Field(

@@ -22,8 +22,9 @@ function bodyDetails(schema, spec) {
     h("li", {}, h("code", {}, field), ` (${schemaName(s)}${required.has(field) ? ", required" : ""})`,
       s.description ? ` — ${s.description}` : ""));
   const example = model.examples?.[0];
-  return [h("ul", { class: "fields" }, fields),
-    example ? [h("p", {}, "Example:"), h("pre", { class: "example" }, JSON.stringify(example, null, 2))] : null];
+  const shown = [h("ul", { class: "fields" }, fields)];
+  if (example) shown.push(h("p", {}, "Example:"), h("pre", { class: "example" }, JSON.stringify(example, null, 2)));
+  return shown;
 }
 
 function operation(path, method, op, spec) {
@@ -36,7 +37,7 @@ function operation(path, method, op, spec) {
     op.summary ? h("p", {}, h("strong", {}, op.summary)) : null,
     op.description ? h("p", { class: "description" }, op.description) : null,
     params.length ? [h("h4", {}, "Parameters"), h("ul", {}, params)] : null,
-    body ? [h("h4", {}, "Body (JSON, Content-Type: application/json)"), h("p", {}, h("code", {}, schemaName(body))), bodyDetails(body, spec)] : null,
+    body ? [h("h4", {}, "Body (JSON, Content-Type: application/json)"), h("p", {}, h("code", {}, schemaName(body))), ...(bodyDetails(body, spec) ?? [])] : null,
     responses.length ? [h("h4", {}, "Responses"), h("ul", {}, responses)] : null);
 }
 
