@@ -12,7 +12,7 @@ export SYNAPSE_VENV
 # and saying what it installs. Add a new one here and below.
 TEST_INSTALLS := install-synapse install-browser install-llm-server
 
-.PHONY: run test check fmt clean $(TEST_INSTALLS)
+.PHONY: install run test check fmt clean $(TEST_INSTALLS)
 
 $(VENV)/bin/python:
 	python3 -m venv $(VENV)
@@ -23,7 +23,13 @@ $(VENV)/.installed: pyproject.toml | $(VENV)/bin/python
 	$(PIP) install --quiet -e '.[test,dev]'
 	touch $@
 
+# The app and its `assistantx` command into $(VENV): `. $(VENV)/bin/activate` puts it on PATH,
+# or call it as bin/assistantx from the repository.
+install: $(VENV)/.installed
+	@echo "make: installed; run '. $(VENV)/bin/activate' for the assistantx command, or use bin/assistantx"
+
 run: $(VENV)/.installed
+	@echo "make run: the assistantx command is in $(VENV)/bin: '. $(VENV)/bin/activate' in another shell, or bin/assistantx"
 	$(VENV)/bin/assistantx serve --host $(HOST) --port $(PORT)
 
 install-synapse:  # the Matrix homeserver of the synapse-marked tests, in its own venv

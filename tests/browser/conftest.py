@@ -8,6 +8,7 @@ images in ``docs/screenshots/`` are rewritten too.
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import signal
@@ -38,6 +39,7 @@ CHROMIUM_ARGS = [
 ARTIFACTS = ROOT / "test-artifacts" / "browser"
 SCREENSHOTS = ROOT / "docs" / "screenshots"
 OPERATOR = "operator-token-for-browser-tests"
+LEE = "lee-token-for-browser-tests-01"  # a person's token: Lee's own
 
 
 def _reasoner_env() -> dict[str, str]:
@@ -66,13 +68,14 @@ class Server:
     def url(self) -> str:
         return f"http://127.0.0.1:{self.port}"
 
-    def start(self, timeout_s: float = 30.0) -> None:
+    def start(self, timeout_s: float = 90.0) -> None:  # start-up took 19-23 s on a loaded machine
         env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
         env.update(
             {
                 "ASSISTANTX_DATA_DIR": str(self.data_dir),
                 "ASSISTANTX_RESULTS_DIR": str(self.results_dir),
                 "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
+                "ASSISTANTX_TOKENS": json.dumps({LEE: "lee"}),
                 "ASSISTANTX_PEOPLE": "human",  # the test plays the colleagues
                 "ASSISTANTX_SPEEDUP": "50",
                 **_reasoner_env(),

@@ -4,7 +4,12 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.feedback.answers import looks_like_request, parse_reply
+from assistantx.feedback.answers import (
+    is_keyboard_mash,
+    looks_like_request,
+    parse_reply,
+    says_something,
+)
 
 
 @pytest.mark.parametrize(
@@ -109,3 +114,13 @@ def test_opt_in_and_skip() -> None:
 )
 def test_requests_are_told_apart(text: str, is_request: bool) -> None:
     assert looks_like_request(text) is is_request
+
+
+def test_keyboard_mash_and_words() -> None:
+    for mash in ("asdf", "qwerty", "lkj", "asdfasdf", "sdfsdf", "aaaa", "MNBV"):
+        assert is_keyboard_mash(mash), mash
+    for word in ("quite", "type", "ok", "slow", "flask", "robot", "were"):
+        assert not is_keyboard_mash(word), word
+    assert not says_something("asdf qwerty")
+    assert not says_something("👍 !!")
+    assert says_something("too slow") and says_something("asdf, too slow")

@@ -13,6 +13,7 @@ from pathlib import Path
 from matplotlib.figure import Figure
 
 from assistantx.evaluation.report import chart_data
+from assistantx.evaluation.report import chart_figure as chart_figure_of_evaluation
 from assistantx.feedback.impact import InstructionRecord
 from assistantx.feedback.report import Period, build_report, chart_figure, render_markdown
 from assistantx.feedback.walking import WalkingEstimate
@@ -131,3 +132,18 @@ def test_report_writes_under_the_data_folder_by_default(tmp_path: Path) -> None:
     assert json.loads(out.stdout.strip().splitlines()[-1])["instructions"]["total"] == 0
     assert (work / "data" / "report" / "usage.md").is_file()
     assert sorted(p.name for p in work.iterdir()) == ["data"]
+
+
+def test_evaluation_value_labels_stay_below_the_chart_title() -> None:
+    summary = {"method": "ppdr (symbolic)", "levels": {g: _level(1.0) for g in ("L1", "L2", "all")}}
+    for name in ("sr", "cr", "cta", "rta"):
+        figure = chart_figure_of_evaluation(summary, name)
+        _draw(figure)
+        renderer = figure.canvas.get_renderer()  # type: ignore[attr-defined]
+        axes = figure.axes[0]
+        title = axes.title.get_window_extent(renderer)
+        labels = [t for t in axes.texts if t.get_text() == "100.0"]
+        assert len(labels) == 3, [t.get_text() for t in axes.texts]
+        for label in labels:
+            box = label.get_window_extent(renderer)
+            assert box.y1 <= title.y0, (name, box, title)  # under the title, not across it

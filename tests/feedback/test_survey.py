@@ -109,3 +109,16 @@ def test_invitation_lists_every_question_and_how_to_answer() -> None:
         "bring me Zhang's stapler",
     ):
         assert line in text
+
+
+def test_keyboard_mash_is_never_a_comment() -> None:
+    survey = _survey()
+    first = _reply(survey, "asdf qwerty zxcv")  # three "words", none a word
+    assert first is not None and first.startswith("Sorry, I could not read that as survey")
+    assert survey.comment is None and survey.invalid_replies == 1
+    _reply(survey, "yes yes no yes asdfasdf")  # answers, then mash: the answers only
+    assert survey.state is SurveyState.COMPLETE and survey.comment is None
+    assert _reply(survey, "jkl") is None  # already re-asked once: silence
+    assert survey.comment is None and survey.invalid_replies == 2
+    _reply(survey, "Zu langsam")  # a comment in any language written in letters
+    assert survey.comment == "Zu langsam"

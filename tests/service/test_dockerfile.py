@@ -1,4 +1,6 @@
-"""The image's exact entry command, parsed from the Dockerfile, serves outside Docker."""
+"""The image's exact entry command, parsed from the Dockerfile, serves outside Docker; and the
+Dockerfile's shape, read statically (no Docker daemon on the test machines): a final stage
+with nothing but the built virtualenv on a slim Python, and the HEALTHCHECK's format caveat."""
 
 from __future__ import annotations
 
@@ -15,7 +17,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _dockerfile() -> tuple[list[str], dict[str, str], list[str]]:
-    lines = (ROOT / "Dockerfile").read_text().replace("\\\n", " ").splitlines()
+    lines = _instructions((ROOT / "Dockerfile").read_text())
     cmd: list[str] = []
     env: dict[str, str] = {}
     exposed: list[str] = []
@@ -30,6 +32,53 @@ def _dockerfile() -> tuple[list[str], dict[str, str], list[str]]:
         elif word == "EXPOSE":
             exposed = rest.split()
     return cmd, env, exposed
+
+
+def _instructions(text: str) -> list[str]:
+    """One line per instruction: comment lines dropped, continuations joined."""
+    kept = [line for line in text.splitlines() if not line.lstrip().startswith("#")]
+    return "\n".join(kept).replace("\\\n", " ").splitlines()
+
+
+def _stages() -> list[list[str]]:
+    stages: list[list[str]] = []
+    for line in _instructions((ROOT / "Dockerfile").read_text()):
+        if line.startswith("FROM "):
+            stages.append([])
+        if stages and line.strip():
+            stages[-1].append(line.strip())
+    return stages
+
+
+def test_the_final_stage_holds_only_the_built_virtualenv() -> None:
+    stages = _stages()
+    assert len(stages) == 2
+    build, final = stages
+    assert build[0].endswith(" AS build")
+    assert final[0] == "FROM python:3.11-slim"  # a fresh slim base, not the build stage
+    text = "\n".join(final)
+    copies = [line for line in final if line.startswith("COPY")]
+    assert copies == ["COPY --from=build /opt/venv /opt/venv"]  # no source, no wheels
+    for tool in ("apt-get", "gcc", "build-essential", "pip ", "wheel"):
+        assert tool not in text, tool
+    env = dict(
+        pair.partition("=")[::2]
+        for line in final
+        if line.startswith("ENV ")
+        for pair in line.split()[1:]
+    )
+    assert env["PATH"].startswith("/opt/venv/bin:")
+    # the build stage installs binary wheels only: no compiler is needed anywhere
+    assert any("--only-binary=:all:" in line for line in build)
+
+
+def test_the_healthcheck_format_caveat_is_stated() -> None:
+    dockerfile = (ROOT / "Dockerfile").read_text()
+    readme = (ROOT / "README.md").read_text()
+    assert "HEALTHCHECK" in dockerfile
+    for text in (dockerfile, readme):
+        assert "podman build --format docker" in text
+        assert "OCI" in text
 
 
 def test_dockerfile_shape() -> None:
@@ -52,7 +101,8 @@ def test_the_entry_command_serves(tmp_path: Path) -> None:
     executable = shutil.which(cmd[0], path=str(Path(sys.executable).parent))
     assert executable is not None
     env = base_env(tmp_path / "data")
-    env.update({k: v for k, v in image_env.items() if k != "ASSISTANTX_DATA_DIR"})
+    # The image's PATH names its own /opt/venv; here the test's virtualenv plays it.
+    env.update({k: v for k, v in image_env.items() if k not in ("ASSISTANTX_DATA_DIR", "PATH")})
     server = start([executable, *cmd[1:]], env, port)
     try:
         assert httpx.get(f"{server.url}/healthz").json() == {"status": "ok"}

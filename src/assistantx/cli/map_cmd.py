@@ -16,6 +16,7 @@ from assistantx.core.clock import SimClock
 from assistantx.core.errors import AssistantXError
 from assistantx.core.office import DEFAULT_OFFICE, load_office
 from assistantx.core.settings import Settings
+from assistantx.memory.resolve import Resolver
 from assistantx.nav.anchor_check import check_anchors
 from assistantx.nav.anchors import Anchor, load_anchors
 from assistantx.nav.costmap import Costmap
@@ -33,7 +34,12 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     render.add_argument("--map", type=Path, default=DEFAULT_MAP, help="map_server YAML")
     render.add_argument("--anchors", type=Path, default=None, help="anchors YAML")
     render.add_argument("--office", type=Path, default=DEFAULT_OFFICE, help="office YAML")
-    render.add_argument("--path", default=None, metavar="A,B", help="plan (and drive) A to B")
+    render.add_argument(
+        "--path",
+        default=None,
+        metavar="A,B",
+        help="plan (and drive) from A to B: people (their desks), facilities or locations",
+    )
     render.add_argument("--particles", action="store_true", help="show AMCL's particle cloud")
     render.add_argument("--seed", type=int, default=0)
     render.set_defaults(func=run_render)
@@ -103,9 +109,12 @@ async def _render(args: argparse.Namespace) -> int:
     if args.path:
         parts = [p.strip() for p in args.path.split(",")]
         if len(parts) != 2 or not all(parts):
-            print("error: --path takes two location ids, e.g. --path desk_01,print_room")
+            print("error: --path takes two places, e.g. --path Lee,'print room' or desk_01,desk_02")
             return 2
-        start, goal = parts
+        # Places are named as everywhere else (a person's desk, a facility, a location, in any
+        # case): the one resolver turns them into the location ids the anchors are keyed by.
+        resolver = Resolver(office)
+        start, goal = resolver.place(parts[0]), resolver.place(parts[1])
     robot = NavigatorRobot.from_files(
         office,
         SimClock(),

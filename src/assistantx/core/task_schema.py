@@ -52,9 +52,10 @@ MILESTONE_KIND: dict[str, TaskKind] = {
     "made": "produce",
     "received": "send_file",
 }
-# The coarse kinds of the usage report: what the robot did for an instruction.
-RecordKind = Literal["delivery", "file", "message"]
-RECORD_KINDS: tuple[RecordKind, ...] = ("delivery", "file", "message")
+# The coarse kinds of the usage report: what the robot did for an instruction. "none": it
+# reached nobody but its requester (text not understood, a decline, a question back).
+RecordKind = Literal["delivery", "file", "message", "none"]
+RECORD_KINDS: tuple[RecordKind, ...] = ("delivery", "file", "message", "none")
 HintKind = Literal["availability", "location", "condition"]
 DeclineOutcome = Literal["done", "unachievable"]
 

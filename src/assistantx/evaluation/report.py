@@ -15,6 +15,9 @@ from collections import defaultdict
 from pathlib import Path
 from typing import Any
 
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
 from assistantx.evaluation.episode import Episode
 from assistantx.evaluation.metrics import Scores, score
 
@@ -119,39 +122,40 @@ def chart_data(summary: dict[str, Any], name: str) -> dict[str, Any]:
     means = [100 * (summary["levels"][g][name]["mean"] or 0.0) for g in groups]
     stds = [100 * (summary["levels"][g][name]["std"] or 0.0) for g in groups]
     tops = [m + s for m, s in zip(means, stds, strict=True)]
+    # Headroom above the highest bar for its value label, below the chart's title.
     if name == "rr":  # a ratio of redundant actions: small, and unbounded above
-        top = max(10.0, *tops) * 1.15
+        top = max(10.0, *tops) * 1.18
     else:
-        top = max(100.0, *tops) * 1.05
+        top = max(100.0, *tops) * 1.18
     note = None
     if name == "rr" and not any(tops):
         note = "0 redundant actions at every level"
     return {"groups": groups, "means": means, "stds": stds, "ylim": (0.0, top), "note": note}
 
 
+def chart_figure(summary: dict[str, Any], name: str) -> Figure:
+    """One metric's bar chart: a bar per level with the spread over runs, each bar labelled
+    with its value (so a zero is visible too) below the title, never over it."""
+    data = chart_data(summary, name)
+    figure = Figure(figsize=(5, 3.2), dpi=100, layout="tight")
+    FigureCanvasAgg(figure)  # attaches the Agg canvas: no pyplot state
+    ax = figure.add_subplot()
+    bars = ax.bar(data["groups"], data["means"], yerr=data["stds"], capsize=4, color="#4C72B0")
+    ax.bar_label(bars, labels=[f"{m:.1f}" for m in data["means"]], padding=3)
+    ax.set_ylabel(f"{name.upper()} (%)")
+    ax.set_title(f"{name.upper()} by level — {summary['method']}", pad=8)
+    ax.set_ylim(*data["ylim"])
+    if data["note"]:
+        ax.text(0.5, 0.55, data["note"], transform=ax.transAxes, ha="center", fontsize=11)
+    return figure
+
+
 def charts(summary: dict[str, Any], out: Path) -> list[Path]:
-    """One PNG bar chart per metric: a bar per level with the spread over runs, each bar
-    labelled with its value so a zero is visible too."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    """One PNG per metric (``chart_figure``) in ``out``."""
     written = []
     for name in METRICS:
-        data = chart_data(summary, name)
-        fig, ax = plt.subplots(figsize=(5, 3.2), dpi=100)
-        bars = ax.bar(data["groups"], data["means"], yerr=data["stds"], capsize=4, color="#4C72B0")
-        ax.bar_label(bars, labels=[f"{m:.1f}" for m in data["means"]], padding=3)
-        ax.set_ylabel(f"{name.upper()} (%)")
-        ax.set_title(f"{name.upper()} by level — {summary['method']}")
-        ax.set_ylim(*data["ylim"])
-        if data["note"]:
-            ax.text(0.5, 0.55, data["note"], transform=ax.transAxes, ha="center", fontsize=11)
-        fig.tight_layout()
         path = out / f"{name}.png"
-        fig.savefig(path)
-        plt.close(fig)
+        chart_figure(summary, name).savefig(path)
         written.append(path)
     return written
 

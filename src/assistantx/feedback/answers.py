@@ -11,6 +11,12 @@ answer in many shapes, and all of these read the same::
     yes yes no yes - it was quick    answers, then a comment
     comment: the robot was slow      an explicit comment
 
+What counts as a comment: text with at least one word of two or more letters that is not
+keyboard mash (``says_something``). Mash is a word made only of runs of three or more keys
+side by side on one keyboard row, either way ("asdf", "qwerty", "lkj", "asdfasdf"), or one
+letter repeated ("aaaa"); so "asdf qwerty" is an unreadable reply, never a comment, while
+"too slow" or "gut" is one, in any language written in letters.
+
 ``parse_reply`` only reads; what a reply means for a survey (which question a lone "no"
 answers, whether unreadable text is a comment, nonsense or a new request) is decided by the
 survey state machine in ``survey.py``. Words that are neither answers nor fillers are kept in
@@ -134,6 +140,41 @@ def looks_like_request(text: str) -> bool:
 
 def word_count(text: str) -> int:
     return len(re.findall(r"[^\W\d_]{2,}", text))
+
+
+_KEY_ROWS = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
+_KEY_RUNS = frozenset(
+    run
+    for row in _KEY_ROWS
+    for line in (row, row[::-1])
+    for length in range(3, len(line) + 1)
+    for start in range(len(line) - length + 1)
+    for run in (line[start : start + length],)
+)
+
+
+def is_keyboard_mash(word: str) -> bool:
+    """A word typed by sliding along the keyboard ("asdf", "qwerty", "asdfasdf") or holding
+    one key ("aaaa"): each part a run of 3+ neighbouring keys of one row, either way."""
+    letters = word.lower()
+    if len(letters) >= 3 and len(set(letters)) == 1:
+        return True
+
+    @functools.cache
+    def splits(start: int) -> bool:  # letters[start:] is a sequence of runs
+        if start == len(letters):
+            return True
+        return any(
+            letters[start:end] in _KEY_RUNS and splits(end)
+            for end in range(start + 3, len(letters) + 1)
+        )
+
+    return len(letters) >= 3 and splits(0)
+
+
+def says_something(text: str) -> bool:
+    """Whether ``text`` holds a word a person wrote to say something (not keyboard mash)."""
+    return any(not is_keyboard_mash(w) for w in re.findall(r"[^\W\d_]{2,}", text))
 
 
 def parse_reply(text: str) -> ParsedReply:

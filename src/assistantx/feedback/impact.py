@@ -11,7 +11,7 @@ from typing import Literal
 
 from pydantic import BaseModel, Field
 
-from assistantx.core.actions import ForwardFile, Inquire, Move, SendQR, WaitInPlace
+from assistantx.core.actions import ForwardFile, Inform, Inquire, Move, SendQR, WaitInPlace
 from assistantx.core.office import Office
 from assistantx.core.task_schema import RECORD_KINDS, RecordKind
 from assistantx.core.trace import Trace
@@ -30,7 +30,8 @@ class InstructionRecord(BaseModel):
     text: str
     kind: TaskKind = Field(
         description="delivery: the robot drove or handed something over; file: a file was "
-        "forwarded; message: only messages"
+        "forwarded; message: only messages, at least one to someone besides the requester; "
+        "none: it reached nobody but the requester (e.g. 'asdf qwerty', a decline)"
     )
     outcome: RecordOutcome
     started_at: float
@@ -51,7 +52,11 @@ def task_kind(trace: Trace) -> TaskKind:
         return "delivery"
     if any(isinstance(a, ForwardFile) for a in tried):
         return "file"
-    return "message"
+    # A message task told or asked someone; answering only the requester (what happens to
+    # "asdf qwerty" or a declined request) did nothing for anyone else.
+    if any(isinstance(a, Inform | Inquire) and a.contact != trace.requester for a in tried):
+        return "message"
+    return "none"
 
 
 def group_requests(office: Office, trace: Trace) -> int:

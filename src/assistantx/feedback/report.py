@@ -34,6 +34,7 @@ from assistantx.feedback.survey import QUESTIONS, Survey, SurveyState
 
 ChartName = Literal["outcomes", "survey", "walking"]
 CHARTS: tuple[ChartName, ...] = ("outcomes", "survey", "walking")
+NO_ANSWERS = "no answers yet"
 
 
 class Period(BaseModel):
@@ -56,6 +57,8 @@ class InstructionSummary(BaseModel):
     by_kind: dict[str, dict[str, int]] = Field(description="kind → outcome → count")
     time_to_completion: Durations = Field(description="of the instructions that ended done")
     time_to_end: Durations = Field(description="of every instruction, whatever the outcome")
+    first_ended_at: float | None = Field(default=None, description="the earliest end counted")
+    last_ended_at: float | None = Field(default=None, description="the latest end counted")
 
 
 class GroupRequests(BaseModel):
@@ -205,6 +208,8 @@ def _instructions(records: list[InstructionRecord]) -> InstructionSummary:
         by_kind=by_kind,
         time_to_completion=_durations([r.duration_s for r in records if r.outcome == "done"]),
         time_to_end=_durations([r.duration_s for r in records]),
+        first_ended_at=min((r.ended_at for r in records), default=None),
+        last_ended_at=max((r.ended_at for r in records), default=None),
     )
 
 
@@ -287,8 +292,8 @@ def _walking(records: list[InstructionRecord], names: Mapping[str, str]) -> Walk
 # -- Markdown ----------------------------------------------------------------------------------
 def render_markdown(report: UsageReport) -> str:
     ins, srv, walk = report.instructions, report.surveys, report.walking
-    lines = [f"# Usage report ({_period_text(report.period)})", ""]
-    lines += ["## Instructions", "", f"{ins.total} instructions ended.", ""]
+    lines = [f"# Usage report ({_period_text(report)})", ""]
+    lines += ["## Instructions", "", f"{_count(ins.total, 'instruction')} ended.", ""]
     lines += ["| kind | " + " | ".join(OUTCOMES) + " |", "|---" * (len(OUTCOMES) + 1) + "|"]
     for kind, counts in ins.by_kind.items():
         lines.append(f"| {kind} | " + " | ".join(str(counts.get(o, 0)) for o in OUTCOMES) + " |")
@@ -298,8 +303,7 @@ def render_markdown(report: UsageReport) -> str:
         "",
         f"Time to completion (done, n={done.count}): median {_seconds(done.median_s)}, "
         f"p90 {_seconds(done.p90_s)}, mean {_seconds(done.mean_s)}.",
-        f"Help requests to group chats: {report.group_requests.total} "
-        f"(in {report.group_requests.instructions} instructions).",
+        _group_requests_text(report.group_requests),
         "",
         "## Survey",
         "",
@@ -332,11 +336,48 @@ def render_markdown(report: UsageReport) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _period_text(period: Period) -> str:
-    def day(t: float | None) -> str:
-        return "…" if t is None else datetime.fromtimestamp(t, UTC).isoformat(timespec="minutes")
+def _period_text(report: UsageReport) -> str:
+    """The period as dates: the bounds asked for, else the days of the first and last end
+    counted. A bound at midnight is a whole day (an exclusive end shows as the day before);
+    a bound at another time shows to the minute."""
+    period, ins = report.period, report.instructions
+    if period.start is not None:
+        first = _bound(period.start, exclusive=False)
+    elif ins.first_ended_at is not None:
+        first = _day(ins.first_ended_at)
+    else:
+        first = "the beginning"
+    if period.end is not None:
+        last = _bound(period.end, exclusive=True)
+    elif ins.last_ended_at is not None:
+        last = _day(ins.last_ended_at)
+    else:
+        last = "now"
+    if period.start is None and period.end is None and ins.first_ended_at is None:
+        return "no instructions yet"
+    return first if first == last else f"{first} to {last}"
 
-    return f"{day(period.start)} to {day(period.end)}"
+
+def _day(t: float) -> str:
+    return datetime.fromtimestamp(t, UTC).date().isoformat()
+
+
+def _bound(t: float, *, exclusive: bool) -> str:
+    moment = datetime.fromtimestamp(t, UTC)
+    if moment.time() != time():
+        return moment.strftime("%Y-%m-%d %H:%M UTC")
+    return _day(t - 1) if exclusive else _day(t)
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def _group_requests_text(requests: GroupRequests) -> str:
+    asked = f"{_count(requests.total, 'help request')} to group chats"
+    if not requests.total:
+        return f"{asked}."
+    return f"{asked}, in {_count(requests.instructions, 'instruction')}."
 
 
 def _percent(share: float | None) -> str:
@@ -408,6 +449,9 @@ def _survey_chart(report: UsageReport, axes: Axes) -> None:
     axes.set_xlim(0, 100)
     axes.set_xlabel("% of answers")
     axes.set_title("Survey answers")
+    if not any(q.answered for q in questions):  # an empty frame would read as a broken chart
+        axes.text(0.5, 0.5, NO_ANSWERS, transform=axes.transAxes, ha="center", va="center")
+        return
     _legend_outside(axes)
 
 

@@ -25,7 +25,13 @@ from enum import StrEnum
 from pydantic import BaseModel, Field
 
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.feedback.answers import Choice, ParsedReply, looks_like_request, word_count
+from assistantx.feedback.answers import (
+    Choice,
+    ParsedReply,
+    looks_like_request,
+    says_something,
+    word_count,
+)
 
 
 @dataclass(frozen=True)
@@ -124,21 +130,27 @@ class Survey(BaseModel):
                 self.state = SurveyState.DECLINED
             return "No problem, I will not ask about this one again."
         if self.state is SurveyState.COMPLETE:
-            self.comment = (parsed.comment or text).strip()
+            written = (parsed.comment or text).strip()
+            if not says_something(written):  # "asdf qwerty" is no comment (answers.py)
+                return self._unreadable("Sorry, I could not read that as a comment.")
+            self.comment = written
             return "Thank you, I have noted your comment."
 
         taken = self._take_answers(parsed)
-        comment = parsed.comment
-        if not taken and comment is None and word_count(text) >= policy.min_comment_words:
+        comment = parsed.comment if parsed.comment and says_something(parsed.comment) else None
+        if (
+            not taken
+            and comment is None
+            and word_count(text) >= policy.min_comment_words
+            and says_something(text)
+        ):
             comment = text.strip()  # free text instead of answers: keep it as the comment
         if comment:
             self.comment = f"{self.comment}\n{comment}" if self.comment else comment
         if not taken and not comment:
-            self.invalid_replies += 1
-            if self.reasked:
-                return None
-            self.reasked = True
-            return "Sorry, I could not read that as survey answers. " + self._ask_pending()
+            return self._unreadable(
+                "Sorry, I could not read that as survey answers. " + self._ask_pending()
+            )
         if not self.pending:
             self.state, self.completed_at = SurveyState.COMPLETE, now
             if self.comment is None:
@@ -147,6 +159,15 @@ class Survey(BaseModel):
         got = ", ".join(f"{n}: {taken[q]}" for n, q in enumerate(QUESTION_IDS, 1) if q in taken)
         prefix = f"Got it ({got}). " if got else "Thank you for the comment. "
         return prefix + self._ask_pending()
+
+    def _unreadable(self, answer: str) -> str | None:
+        """Count an unusable reply; say ``answer`` the first time only (no loop with an
+        auto-responder)."""
+        self.invalid_replies += 1
+        if self.reasked:
+            return None
+        self.reasked = True
+        return answer
 
     def _take_answers(self, parsed: ParsedReply) -> dict[str, Choice]:
         """Fill questions from the reply: numbered first, then the rest in order."""

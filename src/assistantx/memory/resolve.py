@@ -25,6 +25,7 @@ from assistantx.core.actions import (
     WaitInPlace,
 )
 from assistantx.core.errors import AmbiguousNameError, GroundingError, UnknownNameError
+from assistantx.core.goals import Milestone, parse_milestone
 from assistantx.core.office import Office
 from assistantx.memory.graph import LOCKER
 from assistantx.memory.names import NameIndex, normalize
@@ -208,6 +209,22 @@ class Resolver:
                 update={"item": self.item(update.item), "holder": self.holder(update.holder)}
             )
         raise TypeError(f"unknown memory update {update!r}")  # pragma: no cover
+
+    def ground_milestone(self, milestone: Milestone) -> Milestone:
+        """A goal milestone (``{"holds": ["Lee", "Zhang's stapler"]}``) with every name replaced
+        by its id, as the simulator's truth is keyed; raises GroundingError or ValueError."""
+        name, args = parse_milestone(milestone)
+        grounded = [self._milestone_arg(arg) for arg in args]
+        return {name: grounded if len(grounded) > 1 else grounded[0]}
+
+    def _milestone_arg(self, arg: str) -> str:
+        """A person, or an item (``type:owner``, ``type:*`` any of that type, or in words)."""
+        type_part, colon, owner = arg.partition(":")
+        if colon and owner.strip() == "*":
+            return f"{self.item_type(type_part)}:*"
+        if colon or re.search(r"'s\s|’s\s|s'\s|\s(?:of|from|for)\s", arg):
+            return self.item(arg)
+        return self.person(arg)
 
     # -- errors --------------------------------------------------------------------------
     def _one(

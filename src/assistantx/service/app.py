@@ -29,6 +29,7 @@ from assistantx.service import (
     messages,
     metrics,
     reports,
+    whoami,
 )
 from assistantx.service.body_limit import BodyLimit, PathLimit
 from assistantx.service.datalock import DataDirLock
@@ -89,7 +90,17 @@ def create_app(
             runtime.metrics.request_served(request.method, path, response.status_code, seconds)
         return response
 
-    for module in (health, instructions, events, memory, messages, devices, metrics, dashboard):
+    for module in (
+        health,
+        whoami,
+        instructions,
+        events,
+        memory,
+        messages,
+        devices,
+        metrics,
+        dashboard,
+    ):
         app.include_router(module.router)
     app.include_router(reports.router)  # also starts surveys (router lifespan)
     if runtime.matrix is not None:

@@ -7,8 +7,9 @@ below; ``install_error_handlers`` maps each to a status and a JSON body
 
 from __future__ import annotations
 
+import json
 import logging
-from typing import ClassVar
+from typing import Any, ClassVar
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
@@ -93,12 +94,46 @@ def _status_of(exc: AssistantXError) -> tuple[int, str]:
     return 500, "internal_error"
 
 
-def _describe(errors: list[dict[str, object]]) -> str:
-    parts = []
-    for e in errors[:5]:
-        loc = ".".join(str(x) for x in e.get("loc", ()) if x != "body")  # type: ignore[attr-defined]
-        parts.append(f"{loc or 'body'}: {e.get('msg')}")
-    return "; ".join(parts)
+def _body_example(request: Request) -> str | None:
+    """The example body of the route that was called, as one line of JSON (from the body
+    model's ``json_schema_extra`` examples), so an error can show what to send."""
+    route = request.scope.get("route")
+    field = getattr(route, "body_field", None)
+    model = getattr(getattr(field, "field_info", None), "annotation", None)
+    config = getattr(model, "model_config", None) or {}
+    extra = config.get("json_schema_extra")
+    examples = extra.get("examples") if isinstance(extra, dict) else None
+    if not isinstance(examples, list) or not examples:
+        return None
+    return json.dumps(examples[0])
+
+
+def _describe_one(error: dict[str, Any], example: str | None) -> str:
+    """One validation error in words that say what to send instead."""
+    loc = [str(x) for x in error.get("loc", ()) if x != "body"]
+    kind = error.get("type")
+    send = f"send a JSON object such as {example}" if example else "send a JSON object"
+    if kind == "json_invalid":
+        # FastAPI reports where the decoder stopped ("26: JSON decode error" by default)
+        at = error.get("loc", ("body", "?"))[-1]
+        return f"the body is not valid JSON (it stops making sense at character {at}): {send}"
+    if not loc and kind in ("model_attributes_type", "dict_type", "missing"):
+        return (
+            "the body must be a JSON object with the header Content-Type: application/json: " + send
+        )
+    name = ".".join(loc) or "body"
+    context = error.get("ctx") or {}
+    if kind == "string_too_short" and context.get("min_length") == 1:
+        return f"{name} must not be blank"
+    if kind == "missing":
+        return f"{name} is missing: {send}"
+    if kind == "extra_forbidden":
+        return f"{name} is not a field of this request: {send}"
+    return f"{name}: {error.get('msg')}"
+
+
+def _describe(errors: list[dict[str, Any]], example: str | None = None) -> str:
+    return "; ".join(_describe_one(e, example) for e in errors[:5])
 
 
 def install_error_handlers(app: FastAPI) -> None:
@@ -125,9 +160,8 @@ def install_error_handlers(app: FastAPI) -> None:
             {"loc": list(e.get("loc", ())), "msg": e.get("msg"), "type": e.get("type")}
             for e in errors
         ]
-        return JSONResponse(
-            error_body("invalid_request", _describe(errors), detail=detail), status_code=422
-        )
+        message = _describe(errors, _body_example(request))
+        return JSONResponse(error_body("invalid_request", message, detail=detail), status_code=422)
 
     async def http_error(request: Request, exc: Exception) -> JSONResponse:
         assert isinstance(exc, StarletteHTTPException)

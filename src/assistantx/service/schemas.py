@@ -38,8 +38,24 @@ class _Request(BaseModel):
 
 
 class InstructionIn(_Request):
-    requester: Name = Field(min_length=1, max_length=100, description="person id or name")
-    text: Text = Field(min_length=1, max_length=4000, description="the instruction in words")
+    """An instruction from a person, in their own words, as a JSON object."""
+
+    model_config = ConfigDict(
+        json_schema_extra={"examples": [{"requester": "lee", "text": "Bring me a stapler"}]}
+    )
+
+    requester: Name = Field(
+        min_length=1,
+        max_length=100,
+        description="who asks: a person's id or name as people write it, e.g. lee or Lee Ming",
+        examples=["lee"],
+    )
+    text: Text = Field(
+        min_length=1,
+        max_length=4000,
+        description="the instruction in words, at most 4000 characters",
+        examples=["Bring me a stapler"],
+    )
 
 
 class InstructionOut(BaseModel):
@@ -96,6 +112,12 @@ class CancelOut(BaseModel):
 
 
 class MessageIn(_Request):
+    """A chat message to the assistant (a DM, or a group chat with ``group``)."""
+
+    model_config = ConfigDict(
+        json_schema_extra={"examples": [{"text": "Yes, I have one", "in_reply_to": "q-1"}]}
+    )
+
     text: Text = Field(min_length=1, max_length=4000)
     group: Name | None = Field(default=None, max_length=100, description="group chat id; else DM")
     in_reply_to: Name | None = Field(default=None, max_length=200, description="question id")

@@ -20,7 +20,7 @@ const SLOW_POLL_MS = 4000;
 const REFRESH_DEBOUNCE_MS = 200;
 const FINAL = new Set(["done", "failed", "unachievable", "cancelled"]);
 
-const state = { memory: null, instructions: [], selected: null, stream: null, started: false, busy: false };
+const state = { memory: null, me: null, instructions: [], selected: null, stream: null, started: false, busy: false };
 
 // -- messages to the user ------------------------------------------------------------------
 const banner = $("#banner");
@@ -119,11 +119,18 @@ async function refreshMemory() {
   fillRequesters();
 }
 
+// Who submits: a person's token submits as that person (the only one it may act as); the
+// operator is asked to choose, never given the first name of the list, which made it easy to
+// submit as someone else by mistake.
 function fillRequesters() {
   const select = $("#submit-requester");
   const keep = select.value;
-  replace(select, state.memory.people.map((p) => h("option", { value: p.id }, p.name)));
-  if (keep) select.value = keep;
+  const me = state.me?.person;
+  const people = me ? state.memory.people.filter((p) => p.id === me) : state.memory.people;
+  const choose = me ? [] : [h("option", { value: "", disabled: true }, "Choose who asks…")];
+  replace(select, choose, people.map((p) => h("option", { value: p.id }, p.name)));
+  select.value = me ?? keep ?? "";
+  if (!select.value) select.value = "";
 }
 
 async function refreshInstructions() {
@@ -292,6 +299,7 @@ async function start() {
     return;
   }
   try {
+    state.me = await api("/v1/me");
     await refreshMemory();
     await mapView.load().catch((err) => reportError(`Map unavailable: ${err.message}`));
     await refreshAll();

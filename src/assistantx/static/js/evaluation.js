@@ -23,6 +23,7 @@ export function renderMarkdown(text) {
       i += 2;
       while (i < lines.length && lines[i].trim().startsWith("|")) body.push(cells(lines[i++]));
       i -= 1;
+      out.push(h("p", { class: "scroll-hint", hidden: true }, "The table is wider than the screen: scroll it sideways →"));
       out.push(h("div", { class: "table-wrap" }, h("table", {},
         h("thead", {}, h("tr", {}, head.map((c) => h("th", { scope: "col" }, c)))),
         h("tbody", {}, body.map((row) => h("tr", {}, row.map((c, n) => (n === 0 ? h("th", { scope: "row" }, c) : h("td", {}, c)))))))));
@@ -59,6 +60,16 @@ async function chart(url) {
   return URL.createObjectURL(await response.blob());
 }
 
+/** Show each table's scroll hint only while the table is wider than its box (a phone). */
+function markOverflow(container) {
+  for (const wrap of container.querySelectorAll(".table-wrap")) {
+    const hint = wrap.previousElementSibling;
+    if (hint?.classList.contains("scroll-hint")) hint.hidden = wrap.scrollWidth <= wrap.clientWidth + 1;
+  }
+}
+
+let watching = null;
+
 export async function showEvaluation(container) {
   replace(container, h("p", { class: "hint" }, "Loading…"));
   let run;
@@ -81,4 +92,8 @@ export async function showEvaluation(container) {
     h("h3", {}, "What the metrics mean"), glossary(),
     run.markdown ? renderMarkdown(run.markdown) : h("pre", {}, JSON.stringify(run.summary, null, 2)),
     figures.length ? [h("h3", {}, "Charts"), h("div", { class: "charts" }, figures)] : null);
+  markOverflow(container);
+  watching?.disconnect();
+  watching = new ResizeObserver(() => markOverflow(container));
+  watching.observe(container);
 }

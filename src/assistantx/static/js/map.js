@@ -101,8 +101,11 @@ export class MapView {
     ctx.font = `${size * u}px system-ui, sans-serif`;
     ctx.textBaseline = "middle";
     ctx.textAlign = "center";
-    const taken = this.peopleDiscs();
+    // Clear of the people's discs and the robot's marker (drawn over the labels), and a
+    // little apart from each other, so two names never read as one ("Print roomCoffee corner").
+    const taken = [...this.peopleDiscs(), ...this.robotDisc()];
     const drawn = [];
+    const apart = 3 * u;
     for (const anchor of Object.values(this.info.anchors)) {
       const [px, py] = this.toPixel(anchor.x, anchor.y);
       ctx.fillStyle = COLOURS.anchor;
@@ -115,7 +118,8 @@ export class MapView {
       for (const [dx, dy] of spots) {
         const box = { x: px + dx - width / 2, y: py + dy - height / 2, w: width, h: height };
         const inside = box.x >= 0 && box.y >= 0 && box.x + box.w <= this.canvas.width && box.y + box.h <= this.canvas.height;
-        if (!inside || [...taken, ...drawn].some((other) => overlaps(box, other))) continue;
+        const spaced = { x: box.x - apart, y: box.y, w: box.w + 2 * apart, h: box.h };
+        if (!inside || taken.some((other) => overlaps(box, other)) || drawn.some((other) => overlaps(spaced, other))) continue;
         // A white halo keeps the label readable over walls.
         ctx.lineWidth = 3 * u;
         ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
@@ -129,6 +133,16 @@ export class MapView {
     ctx.textAlign = "start";
     // Where the labels went, in CSS pixels, for tests and for anyone checking the layout.
     this.canvas.dataset.labels = JSON.stringify(drawn.map((b) => [b.x, b.y, b.w, b.h].map((v) => +(v / u).toFixed(1))));
+    this.canvas.dataset.marks = JSON.stringify(taken.map((b) => [b.x, b.y, b.w, b.h].map((v) => +(v / u).toFixed(1))));
+  }
+
+  /** The box the robot's marker covers (see drawRobot), nose included; none without a pose. */
+  robotDisc() {
+    const pose = this.robot?.pose;
+    if (!pose) return [];
+    const u = this.unit;
+    const [px, py] = this.toPixel(pose.x, pose.y);
+    return [{ x: px - 16 * u, y: py - 16 * u, w: 32 * u, h: 32 * u }];
   }
 
   /** The boxes the people's discs cover (see drawPeople), so labels keep clear of them. */
