@@ -153,6 +153,10 @@ class ServiceRuntime:
             self.journal, self.assistant, self.hub, self.metrics, self._world_state
         )
         self.durability.attach()
+        skipped = [self.assistant.skipped]
+        if self.matrix is not None:
+            skipped.append(self.matrix.messenger.skipped_events)
+        self.metrics.count_skipped(*skipped)
         self.admission = Admission(self.assistant, self.journal)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)

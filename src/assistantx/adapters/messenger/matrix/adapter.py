@@ -31,7 +31,7 @@ import json
 import logging
 import struct
 import uuid
-from collections.abc import Awaitable, Callable, Mapping, Sequence
+from collections.abc import Awaitable, Callable, Mapping
 from datetime import UTC, datetime
 from typing import Any, Protocol
 
@@ -44,7 +44,7 @@ from assistantx.adapters.messenger.matrix.appservice import (
 )
 from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError, RetryPolicy
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
-from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
+from assistantx.adapters.messenger.matrix.ingest import EventIngestor
 from assistantx.adapters.messenger.matrix.normalize import (
     PLATFORM,
     STRANGER_TEXT,
@@ -55,6 +55,7 @@ from assistantx.adapters.messenger.matrix.rooms import RoomDirectory
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
 from assistantx.core.errors import MessengerError, UnreachableContactError
+from assistantx.core.isolation import SkippedEvents
 from assistantx.core.ports.messenger import (
     Attachment,
     ChatRef,
@@ -124,6 +125,9 @@ class MatrixMessenger(Messenger):
         self.normalizer = EventNormalizer(config, {})
         self.normalizer.rooms.strict = True  # only recorded DMs and configured groups count
         self.directory = RoomDirectory(config, store, self.normalizer.rooms)
+        # Inbound events that raised, by path (on /metrics).
+        paths = ["matrix_push"] * config.push_enabled + ["matrix_sync"] * config.pull_enabled
+        self.skipped_events = SkippedEvents(*paths)
         self.ingestor = EventIngestor(
             store,
             self.normalizer,
@@ -131,7 +135,9 @@ class MatrixMessenger(Messenger):
             on_invite=self._on_invite,
             on_accepted=self._remember_media,
             prepare=self._prepare,
+            after_prepare=self.directory.flush,
             on_auto_reply=self._auto_reply,
+            skipped=self.skipped_events,
         )
         self.closing = False  # set on shutdown: nothing more goes out
         self._relays: list[Relay] = []
@@ -222,9 +228,9 @@ class MatrixMessenger(Messenger):
             self.transcript.record_inbound(message)
         await self._deliver(message)
 
-    async def _prepare(self, events: Sequence[RoomEvent]) -> None:
+    async def _prepare(self, room_id: str, event: Mapping[str, Any]) -> None:
         if self.started:  # not started: nothing to learn rooms from (the push fails later)
-            await self.directory.observe(self._sender(), events)
+            await self.directory.observe(self._sender(), room_id, event)
 
     async def _remember_media(self, room_id: str, message: InboundMessage) -> None:
         for attachment in message.attachments:
