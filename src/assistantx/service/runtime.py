@@ -181,6 +181,10 @@ class ServiceRuntime:
             self.assistant.on_instruction_end(
                 lambda stm: matrix.instruction_ended(stm.instruction_id)
             )
+            # "On it: ...": a Matrix requester sees at once that the work started.
+            self.assistant.on_instruction_start(
+                lambda stm: matrix.instruction_started(stm.instruction_id, stm.requester, stm.text)
+            )
             stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
             await matrix.start()
         stack.push_async_callback(self._stop)
@@ -304,8 +308,12 @@ class ServiceRuntime:
     def instruction(self, instruction_id: str) -> InstructionRecord:
         record = self.journal.instruction(instruction_id)
         if record is None:
-            raise NotFoundError(f"no instruction {instruction_id!r}")
+            raise self.unknown_instruction(instruction_id)
         return record
+
+    @staticmethod
+    def unknown_instruction(instruction_id: str) -> NotFoundError:
+        return NotFoundError(f"no instruction {instruction_id!r}")
 
     async def cancel(self, instruction_id: str) -> bool:
         """Ask a running instruction to stop; False when it had already ended."""
