@@ -425,12 +425,13 @@ async def test_matrix_traffic_is_in_the_journal_and_chats(office: Office) -> Non
             lee = (await http.get("/v1/chats/dm/lee", headers=auth)).json()
             zhang = (await http.get("/v1/chats/dm/zhang", headers=auth)).json()
     assert {(c["kind"], c["id"]) for c in chats} >= {("dm", "lee"), ("dm", "zhang")}
-    assert [(m["direction"], m["text"]) for m in lee][:2] == [
+    assert [(m["direction"], m["text"]) for m in lee][:3] == [
         ("in", "Please ask Zhang if I can borrow her stapler."),
+        ("out", "On it: Please ask Zhang if I can borrow her stapler."),
         ("out", "[done] Zhang answered: Yes."),
     ]
     # The survey reaches Lee where he talks to the assistant, and is journaled like the rest.
     [survey] = office.lee.set_aside()
     assert survey.room_id == lee_dm
-    assert [(m["direction"], m["text"]) for m in lee][2:] == [("out", survey.body)]
+    assert [(m["direction"], m["text"]) for m in lee][3:] == [("out", survey.body)]
     assert [(m["direction"], m["text"]) for m in zhang] == [("out", QUESTION), ("in", "Yes.")]

@@ -46,6 +46,7 @@ from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, Matr
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor
 from assistantx.adapters.messenger.matrix.normalize import (
+    ENCRYPTED_ROOM_TEXT,
     PLATFORM,
     STRANGER_TEXT,
     AutoReply,
@@ -68,6 +69,12 @@ from assistantx.core.ports.messenger import (
 logger = logging.getLogger(__name__)
 
 _PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+ACK_TEXT = "On it: {request}"
+"""Sent to the requester as soon as an instruction starts."""
+ACK_REQUEST_CHARS = 120
+TYPING_MS = 20_000
+"""How long the bot shows itself typing after a person's DM, unless it answers sooner."""
 
 
 def transaction_id(idempotency_key: str, part: int) -> str:
@@ -136,10 +143,13 @@ class MatrixMessenger(Messenger):
             on_accepted=self._remember_media,
             prepare=self._prepare,
             after_prepare=self.directory.flush,
+            on_delivered=self._seen_by_bot,
             on_auto_reply=self._auto_reply,
             skipped=self.skipped_events,
         )
         self.closing = False  # set on shutdown: nothing more goes out
+        self._in_group_rooms: set[str] = set()  # checked: the bot (and pull account) are in
+        self._typing: set[str] = set()  # rooms where the bot shows itself typing
         self._relays: list[Relay] = []
 
     # -- lifecycle ----------------------------------------------------------------------
@@ -163,6 +173,7 @@ class MatrixMessenger(Messenger):
                 http=self._http,
             )
         self.closing = False
+        self._in_group_rooms.clear()
         await self.directory.load()
         await self._resolve_groups()
         await self._bring_pull_account_along()
@@ -239,6 +250,46 @@ class MatrixMessenger(Messenger):
                     attachment.item, attachment.ref, attachment.name, attachment.mime
                 )
 
+    async def _seen_by_bot(self, room_id: str, message: InboundMessage) -> None:
+        """What a person sees at once: their message read, and in a DM the bot typing until
+        it answers (or for ``TYPING_MS``)."""
+        if self.closing or not self.started:
+            return
+        client = self._sender()
+        await client.read_receipt(room_id, message.event_id)
+        if message.chat.kind == "dm" and message.text.strip():
+            await client.typing(self._sender_id(), room_id, typing=True, timeout_ms=TYPING_MS)
+            self._typing.add(room_id)
+
+    async def _stop_typing(self, client: MatrixClient, room_id: str) -> None:
+        if room_id not in self._typing:
+            return
+        self._typing.discard(room_id)
+        try:
+            await client.typing(self._sender_id(), room_id, typing=False, timeout_ms=0)
+        except MatrixError as exc:
+            logger.debug("could not stop typing in %s: %s", room_id, exc)
+
+    async def instruction_started(self, instruction_id: str, requester: str, text: str) -> None:
+        """Tell the requester at once that their request is being worked on: on Matrix they
+        otherwise see nothing until the instruction's first message, which can take a while.
+        Sent once per instruction (a resumed one is answered from the store)."""
+        if self.closing or requester not in self.config.people:
+            return
+        request = " ".join(text.split())
+        if len(request) > ACK_REQUEST_CHARS:
+            request = request[: ACK_REQUEST_CHARS - 1].rstrip() + "…"
+        message = OutboundMessage(
+            chat=ChatRef(kind="dm", id=requester),
+            text=ACK_TEXT.format(request=request),
+            instruction_id=instruction_id,
+            idempotency_key=f"on-it:{instruction_id}",
+        )
+        try:
+            await self.send(message)
+        except MessengerError as exc:
+            logger.warning("could not acknowledge %s to its requester: %s", instruction_id, exc)
+
     async def _auto_reply(self, reply: AutoReply) -> None:
         if self.closing:
             return
@@ -284,9 +335,29 @@ class MatrixMessenger(Messenger):
             raise
         logger.info("joined %s as %s", room_id, user_id)
         if person is not None and group is None and is_direct:
+            if await self.directory.is_encrypted(client, room_id):
+                await self._stay_out_of_encrypted(client, room_id, person)
+                return
             await self.directory.set_dm(person, room_id)
         if user_id == self.config.bot_user_id:
             await self._invite_pull_account(room_id)
+
+    async def _stay_out_of_encrypted(self, client: MatrixClient, room_id: str, person: str) -> None:
+        """A person opened an encrypted DM: the bot cannot read or write it, so it leaves and
+        says so in their unencrypted DM (found or created by ``dm_room``)."""
+        logger.warning(
+            "%s invited the bot to an end-to-end encrypted DM (%s); it left and asks for an "
+            "unencrypted one",
+            person,
+            room_id,
+        )
+        await client.leave(room_id)
+        if self.closing:
+            return
+        dm = await self.dm_room(person)
+        content = {"msgtype": "m.notice", "body": ENCRYPTED_ROOM_TEXT}
+        txn = transaction_id(f"encrypted:{room_id}", 0)
+        await self._sender().send_event(dm, "m.room.message", content, txn_id=txn)
 
     async def _turn_away(
         self, client: MatrixClient, room_id: str, user_id: str, inviter: object
@@ -351,12 +422,30 @@ class MatrixMessenger(Messenger):
     async def _group_room(self, group: str) -> str:
         client = self._sender()
         room_id = await self.directory.resolve_group(client, group)
+        if room_id in self._in_group_rooms:
+            return room_id
         joined = set(await client.joined_rooms())
         if room_id not in joined:
             await client.join(room_id)
-            if self.config.mode == "both" and self._pull_client is not None:
-                await self._pull_client.join(room_id)
+        await self._pull_account_into_group(room_id)
+        self._in_group_rooms.add(room_id)
         return room_id
+
+    async def _pull_account_into_group(self, room_id: str) -> None:
+        """``both`` mode: the pull account is in every group room the bot is in (else an
+        answer there is lost while pushes fail). It joins a public room itself; into another
+        the bot invites it, and its poller joins on the invite."""
+        if self.config.mode != "both" or self._pull_client is None:
+            return
+        if room_id in set(await self._pull_client.joined_rooms()):
+            return
+        try:
+            await self._pull_client.join(room_id)
+        except MatrixError as exc:
+            if exc.status is None or exc.status >= 500:
+                raise
+            logger.info("pull account cannot join %s by itself (%s); inviting it", room_id, exc)
+            await self._invite_pull_account(room_id)
 
     async def dm_room(self, person: str) -> str:
         """The room to write to ``person`` in: recorded and still private, recorded in
@@ -431,6 +520,7 @@ class MatrixMessenger(Messenger):
             if message.question_id:
                 self.normalizer.rooms.questions[event_id] = message.question_id
             event_ids.append(event_id)
+        await self._stop_typing(client, room_id)
         if self.transcript is not None:
             self.transcript.record_outbound(message, "assistant", datetime.now(UTC).timestamp())
         for relay in self._relays:

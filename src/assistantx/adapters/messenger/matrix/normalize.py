@@ -53,6 +53,10 @@ ENCRYPTED_TEXT = (
     "I can't read encrypted messages here — please message me in an unencrypted DM "
     "(turn encryption off when you start the chat)."
 )
+ENCRYPTED_ROOM_TEXT = (
+    "I can't take part in encrypted chats, so I left the one you invited me to. Please write "
+    "to me here instead."
+)
 STRANGER_TEXT = (
     "Hello! I'm the assistant of this office and I only serve its people, so I can't help "
     "you here. Please ask someone from the office."

@@ -8,7 +8,9 @@ rules for invites.
   bot into a direct chat, when they write in a room where only they and the bot are, or when
   the bot creates one. It is forgotten when they leave it.
 - Private content only ever goes to a room where the person is joined or invited and nobody
-  but the bot's own accounts is joined besides them; otherwise a new DM is created.
+  but the bot's own accounts is joined besides them, and that is not end-to-end encrypted
+  (the bot cannot encrypt, and plain text in a room its people believe encrypted would
+  mislead them); otherwise a new DM is created. An encrypted room is never adopted as a DM.
 """
 
 from __future__ import annotations
@@ -38,6 +40,7 @@ class RoomDirectory:
         self._own = config.own_user_ids()
         self._not_dm: set[str] = set()  # rooms checked and found shared (not asked again)
         self._forgotten: list[str] = []  # people who left their DM, to persist
+        self._encrypted: set[str] = set()  # encryption, once on, cannot be turned off
 
     # -- loading -----------------------------------------------------------------------------
     async def load(self) -> None:
@@ -163,4 +166,16 @@ class RoomDirectory:
                 return False  # not in the room any more, or never was
             raise
         allowed = {"join"} if joined_only else {"join", "invite"}
-        return membership in allowed and not (joined - self._own - {user_id})
+        if membership not in allowed or joined - self._own - {user_id}:
+            return False
+        return not await self.is_encrypted(client, room_id)
+
+    async def is_encrypted(self, client: MatrixClient, room_id: str) -> bool:
+        """Whether ``room_id`` has end-to-end encryption on (its ``m.room.encryption`` state)."""
+        if room_id in self._encrypted:
+            return True
+        if await client.state_event(room_id, "m.room.encryption") is None:
+            return False
+        logger.info("room %s is end-to-end encrypted: no private content goes there", room_id)
+        self._encrypted.add(room_id)
+        return True
