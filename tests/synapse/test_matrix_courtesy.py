@@ -15,11 +15,9 @@ from assistantx.agents.base import AgentContext
 from assistantx.core.actions import Action, Inquire, Stop, Wait
 from helpers.eventually import eventually
 from synapse.homeserver import Account
-from synapse.nio_office import answers_from, asked, waiting
-from synapse.test_matrix_people import QUESTION, Office, borrow, office, running
+from synapse.nio_office import QUESTION, Office, answers_from, asked, borrow, running, waiting
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
-__all__ = ["office"]  # the fixture, shared with test_matrix_people
 
 REQUEST = "Please ask Zhang if I can borrow her stapler."
 
@@ -95,12 +93,7 @@ async def test_both_mode_the_pull_account_is_in_the_group_rooms(
     room = str(getattr(response, "room_id"))  # noqa: B009 - nio's union type
     async with running(service):  # push: the bot joins its configured group
         await office.hu.wait_member(room, bot)
-    service.write_config(
-        mode="both",
-        pull_user_id=syncbot.user_id,
-        pull_access_token=syncbot.access_token,
-        sync_timeout_s=1.0,
-    )
+    service.use_pull_account(syncbot, "both")
     async with running(service):
         await office.hu.wait_member(room, syncbot.user_id)
         lee_dm = await office.lee.open_dm(bot, also=(syncbot.user_id,))

@@ -11,11 +11,9 @@ import pytest
 
 from assistantx.adapters.messenger.matrix.normalize import STRANGER_TEXT
 from synapse.homeserver import Account
-from synapse.nio_office import OPERATOR
-from synapse.test_matrix_people import QUESTION, Office, borrow, office, running
+from synapse.nio_office import OPERATOR, QUESTION, Office, borrow, running
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
-__all__ = ["office"]  # the fixture, shared with test_matrix_people
 
 REQUEST = "Please ask Zhang if I can borrow her stapler."
 
@@ -91,12 +89,7 @@ async def test_pull_strangers_coming_and_going_block_nothing(
     fail, so nothing was received again."""
     syncbot = new_account("syncbot")
     service = office.service_for(borrow)
-    service.write_config(
-        mode="pull",
-        pull_user_id=syncbot.user_id,
-        pull_access_token=syncbot.access_token,
-        sync_timeout_s=1.0,
-    )
+    service.use_pull_account(syncbot, "pull")
     async with running(service):
         room = await office.stranger.create_room([syncbot.user_id], is_direct=True)
         notice = await office.stranger.expect(sender=syncbot.user_id, room=room)
