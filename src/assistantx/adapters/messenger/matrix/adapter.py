@@ -20,6 +20,11 @@ In ``both`` mode the pull account is kept in every room the bot talks in (it is 
 the DM rooms the bot creates or joins, and joins the group rooms), so either path alone
 receives everything: the poller is a real fallback while pushes fail, not a half view.
 
+A person sees at once that the bot took their message: a read receipt, the bot typing in
+their DM until it sends there, and ``instruction_started`` writes "On it: ..." to the requester.
+The bot stays out of end-to-end encrypted rooms (it cannot encrypt): it leaves an encrypted
+DM it is invited to and says so in the person's unencrypted DM (see ``rooms``).
+
 Consumers call ``acknowledge(message)`` when done with an inbound message; messages accepted
 but never acknowledged are put on the inbox again by the next ``start()``.
 """
@@ -148,7 +153,6 @@ class MatrixMessenger(Messenger):
             skipped=self.skipped_events,
         )
         self.closing = False  # set on shutdown: nothing more goes out
-        self._in_group_rooms: set[str] = set()  # checked: the bot (and pull account) are in
         self._typing: set[str] = set()  # rooms where the bot shows itself typing
         self._relays: list[Relay] = []
 
@@ -173,7 +177,6 @@ class MatrixMessenger(Messenger):
                 http=self._http,
             )
         self.closing = False
-        self._in_group_rooms.clear()
         await self.directory.load()
         await self._resolve_groups()
         await self._bring_pull_account_along()
@@ -422,13 +425,10 @@ class MatrixMessenger(Messenger):
     async def _group_room(self, group: str) -> str:
         client = self._sender()
         room_id = await self.directory.resolve_group(client, group)
-        if room_id in self._in_group_rooms:
-            return room_id
         joined = set(await client.joined_rooms())
         if room_id not in joined:
             await client.join(room_id)
         await self._pull_account_into_group(room_id)
-        self._in_group_rooms.add(room_id)
         return room_id
 
     async def _pull_account_into_group(self, room_id: str) -> None:
