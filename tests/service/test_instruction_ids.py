@@ -42,10 +42,10 @@ async def test_ids_of_dm_instructions_are_not_reused_after_a_restart(tmp_path: P
         mine = await api.get(f"/v1/instructions/{lees}", headers=AS_LEE)
         assert mine.status_code == 200 and mine.json()["requester"] == "lee"
         assert mine.json()["text"] == REQUEST
-        assert (await api.get(f"/v1/instructions/{lees}", headers=AS_ZHANG)).status_code == 403
+        assert (await api.get(f"/v1/instructions/{lees}", headers=AS_ZHANG)).status_code == 404
         his = await api.get(f"/v1/instructions/{zhangs}", headers=AS_ZHANG)
         assert his.status_code == 200 and his.json()["requester"] == "zhang"
-        assert (await api.get(f"/v1/instructions/{zhangs}", headers=AS_LEE)).status_code == 403
+        assert (await api.get(f"/v1/instructions/{zhangs}", headers=AS_LEE)).status_code == 404
         assert (
             await api.post(f"/v1/instructions/{lees}/cancel", headers=AS_LEE)
         ).status_code == 200
@@ -54,4 +54,4 @@ async def test_ids_of_dm_instructions_are_not_reused_after_a_restart(tmp_path: P
         ).status_code == 200
         assert (
             await api.post(f"/v1/instructions/{lees}/cancel", headers=AS_ZHANG)
-        ).status_code == 403
+        ).status_code == 404

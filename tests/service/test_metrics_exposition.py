@@ -31,6 +31,7 @@ TYPES = {
     "assistantx_http_request_duration_seconds": "histogram",
     "assistantx_duplicate_sends_skipped": "gauge",
     "assistantx_event_loop_lag_max_seconds": "gauge",
+    "assistantx_inbound_events_skipped": "counter",
 }
 
 Key = tuple[tuple[str, str], ...]
@@ -131,6 +132,10 @@ async def test_each_family_has_its_type_and_the_values_of_a_real_run(tmp_path: P
         (("route", "/v1/instructions/{instruction_id}"),): polls,
     }
 
+    inbound = families["assistantx_inbound_events_skipped"]
+    assert _values(inbound, "assistantx_inbound_events_skipped_total") == {
+        (("path", "dispatch"),): 0.0
+    }
     skipped = families["assistantx_duplicate_sends_skipped"]
     assert _values(skipped, "assistantx_duplicate_sends_skipped") == {(): 0.0}
     lag = _values(

@@ -1,4 +1,5 @@
-"""Session fixtures: one Synapse for the whole run, and one application-service gateway.
+"""Session fixtures: one Synapse for the whole run, and one application-service gateway; and
+the office of the matrix-nio tests (`office`: Lee, Zhang, Mao, Hu and a stranger at nio clients).
 
 The gateway is a real uvicorn server on the port written into the appservice registration. It
 lives for the whole session (so Synapse never sees the assistant "down" between tests and
@@ -9,9 +10,10 @@ and discards, because leftover events of an earlier test concern nobody.
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import secrets
 import uuid
-from collections.abc import AsyncIterator, Iterator
+from collections.abc import AsyncIterator, Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -22,6 +24,7 @@ from pydantic import SecretStr
 from assistantx.adapters.messenger.matrix import MatrixConfig
 from assistantx.cli import build_parser
 from synapse.gateway import AppserviceGateway
+from synapse.helpers import derive
 from synapse.homeserver import (
     Account,
     SynapseHomeserver,
@@ -29,6 +32,8 @@ from synapse.homeserver import (
     free_port,
     install_synapse,
 )
+from synapse.nio_office import PEOPLE, MatrixService, Office, Policy, is_survey
+from synapse.nio_people import NioPerson
 
 
 @pytest.fixture(scope="session")
@@ -106,3 +111,31 @@ def new_account(homeserver: SynapseHomeserver) -> object:
 @pytest.fixture
 def inbox() -> asyncio.Queue[object]:
     return asyncio.Queue()
+
+
+@pytest_asyncio.fixture(loop_scope="session")
+async def office(
+    base_config: MatrixConfig,
+    gateway_mounts: AppserviceGateway,
+    new_account: Callable[[str], Account],
+    tmp_path: Path,
+) -> AsyncIterator[Office]:
+    accounts = {name: new_account(name) for name in (*PEOPLE, "stranger")}
+    people = {n: NioPerson(n, a, base_config.homeserver_url) for n, a in accounts.items()}
+    config = derive(base_config, people={n: accounts[n].user_id for n in PEOPLE})
+    services: list[MatrixService] = []
+
+    def service_for(policy: Policy) -> MatrixService:
+        service = MatrixService(config, gateway_mounts, tmp_path / "data", policy)
+        services.append(service)
+        return service
+
+    async with contextlib.AsyncExitStack() as stack:
+        for person in people.values():
+            person.aside = is_survey
+            await person.start()
+            stack.push_async_callback(person.stop)
+        stranger = people.pop("stranger")
+        yield Office(config, people, stranger, service_for)
+        for service in services:
+            await service.stop()

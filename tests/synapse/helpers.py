@@ -7,9 +7,17 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from assistantx.adapters.messenger.matrix import MatrixClient, MatrixConfig, SqliteEventStore
+from assistantx.adapters.messenger.matrix import (
+    EventStore,
+    MatrixClient,
+    MatrixConfig,
+    MatrixMessenger,
+    SqliteEventStore,
+)
 from assistantx.core.ports.messenger import InboundMessage
 from helpers.eventually import eventually
+from synapse.gateway import AppserviceGateway
+from synapse.homeserver import Account
 
 WAIT_S = 20.0
 
@@ -63,6 +71,49 @@ async def join_when_invited(client: MatrixClient, room_id: str) -> None:
 def derive(config: MatrixConfig, **update: Any) -> MatrixConfig:
     """A validated copy with ``update`` applied (``model_copy`` would skip validation)."""
     return MatrixConfig.model_validate({**config.model_dump(), **update})
+
+
+def pull_config(
+    config: MatrixConfig, account: Account, mode: str, sync_timeout_s: float = 1.0, **update: Any
+) -> MatrixConfig:
+    """``config`` in mode ``pull`` or ``both``, polling as ``account``."""
+    return derive(
+        config,
+        mode=mode,
+        pull_user_id=account.user_id,
+        pull_access_token=account.access_token,
+        sync_timeout_s=sync_timeout_s,
+        **update,
+    )
+
+
+def bridge(
+    config: MatrixConfig,
+    store: EventStore,
+    inbox: asyncio.Queue[InboundMessage],
+    gateway: AppserviceGateway | None = None,
+) -> MatrixMessenger:
+    """A messenger (not started) on ``store`` delivering to ``inbox``; with ``gateway``, the
+    homeserver's pushes go to it."""
+    messenger = MatrixMessenger(config, store)
+    messenger.connect_inbox(inbox)
+    if gateway is not None:
+        gateway.mount(messenger.appservice_router())
+    return messenger
+
+
+async def dm_with(person: MatrixClient, user_id: str) -> str:
+    """A direct chat ``person`` opens with ``user_id``; returns once they joined."""
+    room = await person.create_room(invite=[user_id], is_direct=True)
+    await wait_joined(person, room, user_id)
+    return room
+
+
+async def say(person: MatrixClient, room: str, text: str) -> str:
+    """``person`` writes ``text`` (also its transaction id: one text, one message)."""
+    return await person.send_event(
+        room, "m.room.message", {"msgtype": "m.text", "body": text}, txn_id=text
+    )
 
 
 class OfferCountingStore(SqliteEventStore):

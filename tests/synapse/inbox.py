@@ -13,6 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from assistantx.adapters.messenger.matrix.adapter import ACK_TEXT
 from synapse.helpers import WAIT_S
 
 
@@ -35,6 +36,10 @@ class Seen:
         return str(self.content.get("body", ""))
 
 
+def is_acknowledgement(message: Seen) -> bool:
+    return message.body.startswith(ACK_TEXT.format(request=""))
+
+
 class Inbox:
     def __init__(self, name: str) -> None:
         self.name = name
@@ -51,8 +56,12 @@ class Inbox:
                 await task
 
     def visible(self, message: Seen) -> bool:
-        """Whether ``messages`` and ``expect`` show it (a subclass may set some aside)."""
-        return message.type == "m.room.message"
+        """Whether ``messages`` and ``expect`` show it (a subclass may set some aside). The
+        bot's "On it: ..." as an instruction starts is read apart (``acknowledgements``)."""
+        return message.type == "m.room.message" and not is_acknowledgement(message)
+
+    def acknowledgements(self) -> list[Seen]:
+        return [m for m in self.seen if m.type == "m.room.message" and is_acknowledgement(m)]
 
     async def add(self, fresh: list[Seen]) -> None:
         if fresh:

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-from collections.abc import Callable
+from collections.abc import AsyncIterator, Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -20,13 +21,16 @@ from fastapi import FastAPI
 
 from assistantx.adapters.messenger.matrix import MatrixConfig
 from assistantx.agents.base import AgentContext
-from assistantx.core.actions import Action, Wait
-from assistantx.core.office import Office
+from assistantx.core.actions import Action, Inquire, Stop, Wait
+from assistantx.core.office import Office as OfficeData
 from assistantx.core.settings import Settings
 from assistantx.runtime.assistant import ReasonerFactory
 from assistantx.service.app import create_app
 from helpers.scripted_reasoner import ScriptedReasoner
 from synapse.gateway import AppserviceGateway
+from synapse.homeserver import Account
+from synapse.inbox import Seen
+from synapse.nio_people import NioPerson
 
 OPERATOR = "operator-token-for-the-matrix-tests"
 Policy = Callable[[AgentContext], list[Action]]
@@ -34,7 +38,7 @@ Policy = Callable[[AgentContext], list[Action]]
 _policy: list[Policy] = []
 
 
-def scripted(office: Office, settings: object) -> ReasonerFactory:
+def scripted(office: OfficeData, settings: object) -> ReasonerFactory:
     """``ASSISTANTX_REASONER_BUILDER`` target: the policy the current test set, every step.
 
     A policy decides from the instruction's memory (not from a step counter), so an
@@ -91,6 +95,15 @@ class MatrixService:
         self.config = MatrixConfig.model_validate(raw)
         self.config_path.write_text(yaml.safe_dump(raw), encoding="utf-8")
 
+    def use_pull_account(self, account: Account, mode: str) -> None:
+        """Mode ``pull`` or ``both`` on ``account``, polling with a short timeout."""
+        self.write_config(
+            mode=mode,
+            pull_user_id=account.user_id,
+            pull_access_token=account.access_token,
+            sync_timeout_s=1.0,
+        )
+
     async def start(self) -> None:
         self.write_config()
         settings = Settings(
@@ -146,3 +159,44 @@ class MatrixService:
                 f"{count} instruction(s) to end: {len(finished)} ended in {timeout_s:g} s"
             ) from None
         return list(finished.values())
+
+
+# -- the office of the matrix-nio tests (the `office` fixture is in conftest.py) --------------
+
+PEOPLE = ("lee", "zhang", "mao", "hu")
+QUESTION = "May Lee borrow your stapler today?"
+
+
+@dataclass
+class Office:
+    config: MatrixConfig
+    people: dict[str, NioPerson]
+    stranger: NioPerson
+    service_for: Callable[[Policy], MatrixService]
+
+    def __getattr__(self, name: str) -> NioPerson:
+        return self.people[name]
+
+
+@contextlib.asynccontextmanager
+async def running(service: MatrixService) -> AsyncIterator[MatrixService]:
+    await service.start()
+    try:
+        yield service
+    finally:
+        await service.stop()
+
+
+def is_survey(message: Seen) -> bool:
+    """The feedback survey each requester gets after an instruction (read apart)."""
+    return message.body.startswith("A short survey")
+
+
+def borrow(ctx: AgentContext) -> list[Action]:
+    """Ask Zhang, wait for her answer, tell Lee what she said."""
+    if QUESTION not in asked(ctx):
+        return [Inquire(contact="zhang", question=QUESTION), Wait(timeout_s=3000)]
+    answers = answers_from(ctx, "zhang")
+    if not answers:
+        return waiting(ctx, "Zhang's answer")
+    return [Stop(outcome="done", summary=f"Zhang answered: {answers[0]}")]

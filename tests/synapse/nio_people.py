@@ -20,9 +20,11 @@ from nio import (
     AsyncClient,
     AsyncClientConfig,
     JoinedMembersResponse,
+    ReceiptEvent,
     RoomCreateResponse,
     RoomSendResponse,
     SyncResponse,
+    TypingNoticeEvent,
     UploadResponse,
 )
 from PIL import Image
@@ -33,6 +35,8 @@ from synapse.homeserver import Account
 from synapse.inbox import Inbox, Seen
 
 logger = logging.getLogger(__name__)
+
+ENCRYPTION = {"algorithm": "m.megolm.v1.aes-sha2"}
 
 
 class NioPerson(Inbox):
@@ -49,6 +53,9 @@ class NioPerson(Inbox):
         self.auto_join = True
         # Messages a test reads apart (the feedback survey after each instruction).
         self.aside: Callable[[Seen], bool] = lambda m: False
+        # What others showed in the rooms: ("typing", room, user) and ("read", room, user,
+        # event id), in arrival order.
+        self.signals: list[tuple[str, ...]] = []
 
     async def start(self) -> None:
         first = await self.client.sync(timeout=0)
@@ -68,6 +75,14 @@ class NioPerson(Inbox):
             if self.auto_join:
                 for room_id in response.rooms.invite:
                     await self.client.join(room_id)
+            for room_id, room in response.rooms.join.items():
+                for signal in room.ephemeral:
+                    if isinstance(signal, TypingNoticeEvent):
+                        self.signals += [("typing", room_id, user) for user in signal.users]
+                    elif isinstance(signal, ReceiptEvent):
+                        self.signals += [
+                            ("read", room_id, r.user_id, r.event_id) for r in signal.receipts
+                        ]
             fresh = [
                 Seen(
                     room_id,
@@ -125,10 +140,22 @@ class NioPerson(Inbox):
         return str(response.content_uri)
 
     async def create_room(
-        self, invite: list[str], *, is_direct: bool = False, alias: str | None = None
+        self,
+        invite: list[str],
+        *,
+        is_direct: bool = False,
+        alias: str | None = None,
+        encrypted: bool = False,
     ) -> str:
+        """A room; ``encrypted``: with end-to-end encryption on from the start (as Element
+        creates DMs by default)."""
+        state = [{"type": "m.room.encryption", "state_key": "", "content": ENCRYPTION}]
         response = await self.client.room_create(
-            invite=invite, is_direct=is_direct, alias=alias, name=None
+            invite=invite,
+            is_direct=is_direct,
+            alias=alias,
+            name=None,
+            initial_state=state if encrypted else (),
         )
         assert isinstance(response, RoomCreateResponse), response
         return str(response.room_id)

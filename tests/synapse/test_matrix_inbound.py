@@ -20,7 +20,16 @@ from assistantx.adapters.messenger.matrix import (
 from assistantx.core.ports.messenger import InboundMessage
 from helpers.eventually import assert_quiet
 from synapse.gateway import AppserviceGateway
-from synapse.helpers import OfferCountingStore, derive, next_message, wait_joined
+from synapse.helpers import (
+    OfferCountingStore,
+    bridge,
+    derive,
+    dm_with,
+    next_message,
+    pull_config,
+    say,
+    wait_joined,
+)
 from synapse.homeserver import Account, SynapseHomeserver
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
@@ -34,19 +43,11 @@ async def test_push_dm_arrives_normalized_once(
     tmp_path: Path,
 ) -> None:
     lee = new_account("lee")
-    config = derive(base_config, **{"people": {"lee": lee.user_id}})
-    messenger = MatrixMessenger(config, SqliteEventStore(tmp_path / "events.db"))
-    messenger.connect_inbox(inbox)
-    gateway_mounts.mount(messenger.appservice_router())
+    config = derive(base_config, people={"lee": lee.user_id})
+    messenger = bridge(config, SqliteEventStore(tmp_path / "events.db"), inbox, gateway_mounts)
     async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
-        room = await person.create_room(invite=[config.bot_user_id], is_direct=True)
-        await wait_joined(person, room, config.bot_user_id)  # auto-joined on the pushed invite
-        event_id = await person.send_event(
-            room,
-            "m.room.message",
-            {"msgtype": "m.text", "body": "Please fetch my printout"},
-            txn_id="t1",
-        )
+        room = await dm_with(person, config.bot_user_id)  # auto-joined on the pushed invite
+        event_id = await say(person, room, "Please fetch my printout")
         message = await next_message(inbox)
         assert message.platform == "matrix"
         assert message.event_id == event_id
@@ -64,27 +65,14 @@ async def test_pull_dm_arrives_once_and_position_is_kept(
     tmp_path: Path,
 ) -> None:
     lee, bot = new_account("lee"), new_account("syncbot")
-    config = derive(
-        base_config,
-        **{
-            "mode": "pull",
-            "pull_user_id": bot.user_id,
-            "pull_access_token": bot.access_token,
-            "people": {"lee": lee.user_id},
-            "sync_timeout_s": 2.0,
-        },
-    )
+    config = pull_config(base_config, bot, "pull", 2.0, people={"lee": lee.user_id})
     store = SqliteEventStore(tmp_path / "events.db")
-    messenger = MatrixMessenger(config, store)
-    messenger.connect_inbox(inbox)
+    messenger = bridge(config, store, inbox)
     async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
         assert messenger.poller is not None
         await asyncio.wait_for(messenger.poller.ready.wait(), 20)
-        room = await person.create_room(invite=[bot.user_id], is_direct=True)
-        await wait_joined(person, room, bot.user_id)  # the poller joined on the invite
-        event_id = await person.send_event(
-            room, "m.room.message", {"msgtype": "m.text", "body": "hello by sync"}, txn_id="t1"
-        )
+        room = await dm_with(person, bot.user_id)  # the poller joined on the invite
+        event_id = await say(person, room, "hello by sync")
         message = await next_message(inbox)
         assert (message.event_id, str(message.chat), message.text) == (
             event_id,
@@ -103,32 +91,16 @@ async def test_both_modes_each_message_handled_once(
     tmp_path: Path,
 ) -> None:
     lee, bot = new_account("lee"), new_account("syncbot")
-    config = derive(
-        base_config,
-        **{
-            "mode": "both",
-            "pull_user_id": bot.user_id,
-            "pull_access_token": bot.access_token,
-            "people": {"lee": lee.user_id},
-            "sync_timeout_s": 1.0,
-        },
-    )
+    config = pull_config(base_config, bot, "both", people={"lee": lee.user_id})
     store = OfferCountingStore(tmp_path / "events.db")
-    messenger = MatrixMessenger(config, store)
-    messenger.connect_inbox(inbox)
-    gateway_mounts.mount(messenger.appservice_router())
+    messenger = bridge(config, store, inbox, gateway_mounts)
     async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
         assert messenger.poller is not None
         await asyncio.wait_for(messenger.poller.ready.wait(), 20)
         room = await person.create_room(invite=[config.bot_user_id, bot.user_id])
         await wait_joined(person, room, config.bot_user_id)
         await wait_joined(person, room, bot.user_id)
-        sent = [
-            await person.send_event(
-                room, "m.room.message", {"msgtype": "m.text", "body": f"m{i}"}, txn_id=f"t{i}"
-            )
-            for i in range(3)
-        ]
+        sent = [await say(person, room, f"m{i}") for i in range(3)]
         received = [await next_message(inbox) for _ in sent]
         assert sorted(m.event_id for m in received) == sorted(sent)
         # Wait until BOTH paths have offered every message, then nothing more may arrive.
@@ -145,7 +117,7 @@ async def test_pull_fills_a_limited_timeline_gap(
     tmp_path: Path,
 ) -> None:
     lee, bot = new_account("lee"), new_account("syncbot")
-    config = derive(base_config, **{"people": {"lee": lee.user_id}})
+    config = derive(base_config, people={"lee": lee.user_id})
     store = SqliteEventStore(tmp_path / "events.db")
     ingestor = EventIngestor(store, EventNormalizer(config, {}), inbox.put)
     async with (
@@ -157,10 +129,8 @@ async def test_pull_fills_a_limited_timeline_gap(
         poller = SyncPoller(bot_client, ingestor, sync_key="gap", timeout_s=0.5, timeline_limit=2)
         await poller.sync_once()  # first run: takes the position, replays nothing
         bodies = [f"while away {i}" for i in range(7)]
-        for i, body in enumerate(bodies):
-            await person.send_event(
-                room, "m.room.message", {"msgtype": "m.text", "body": body}, txn_id=f"g{i}"
-            )
+        for body in bodies:
+            await say(person, room, body)
         await poller.sync_once()  # a timeline of 2, limited: the other 5 come from /messages
         got = [inbox.get_nowait().text for _ in range(inbox.qsize())]
         assert got == bodies

@@ -20,11 +20,12 @@ from assistantx.adapters.messenger.matrix import (
 from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage, OutboundMessage
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import (
+    bridge,
     derive,
+    dm_with,
     join_when_invited,
     next_message,
     room_messages,
-    wait_joined,
     wait_room_messages,
 )
 from synapse.homeserver import Account
@@ -147,17 +148,14 @@ async def test_a_received_file_is_forwarded_by_its_uri(
 ) -> None:
     lee, zhang = new_account("lee"), new_account("zhang")
     config = derive(base_config, people={"lee": lee.user_id, "zhang": zhang.user_id})
-    messenger = MatrixMessenger(config, SqliteEventStore(tmp_path / "e.db"))
-    messenger.connect_inbox(inbox)
-    gateway_mounts.mount(messenger.appservice_router())
+    messenger = bridge(config, SqliteEventStore(tmp_path / "e.db"), inbox, gateway_mounts)
     report = b"%PDF-1.4 quarterly report\n" * 40
     async with (
         messenger,
         MatrixClient(config.homeserver_url, lee.access_token) as lee_client,
         MatrixClient(config.homeserver_url, zhang.access_token) as zhang_client,
     ):
-        room = await lee_client.create_room(invite=[config.bot_user_id], is_direct=True)
-        await wait_joined(lee_client, room, config.bot_user_id)
+        room = await dm_with(lee_client, config.bot_user_id)
         url = await lee_client.upload(report, content_type="application/pdf", filename="report.pdf")
         await lee_client.send_event(
             room,

@@ -8,99 +8,24 @@ Wang is in the office but has no Matrix account in the configuration.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import uuid
-from collections.abc import AsyncIterator, Callable
-from dataclasses import dataclass
-from pathlib import Path
+from collections.abc import Callable
 
 import httpx
 import pytest
-import pytest_asyncio
 
-from assistantx.adapters.messenger.matrix import MatrixConfig
 from assistantx.adapters.messenger.matrix.normalize import (
     EDIT_TEXT,
     ENCRYPTED_TEXT,
     STRANGER_TEXT,
 )
 from assistantx.agents.base import AgentContext
-from assistantx.core.actions import Action, ForwardFile, Inform, Inquire, SendQR, Stop, Wait
+from assistantx.core.actions import Action, ForwardFile, Inform, SendQR, Stop, Wait
 from helpers.eventually import eventually
-from synapse.gateway import AppserviceGateway
-from synapse.helpers import derive
 from synapse.homeserver import Account
-from synapse.inbox import Seen
-from synapse.nio_office import OPERATOR, MatrixService, Policy, answers_from, asked, waiting
-from synapse.nio_people import NioPerson
+from synapse.nio_office import OPERATOR, QUESTION, Office, borrow, running
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
-
-PEOPLE = ("lee", "zhang", "mao", "hu")
-QUESTION = "May Lee borrow your stapler today?"
-
-
-@dataclass
-class Office:
-    config: MatrixConfig
-    people: dict[str, NioPerson]
-    stranger: NioPerson
-    service_for: Callable[[Policy], MatrixService]
-
-    def __getattr__(self, name: str) -> NioPerson:
-        return self.people[name]
-
-
-@pytest_asyncio.fixture(loop_scope="session")
-async def office(
-    base_config: MatrixConfig,
-    gateway_mounts: AppserviceGateway,
-    new_account: Callable[[str], Account],
-    tmp_path: Path,
-) -> AsyncIterator[Office]:
-    accounts = {name: new_account(name) for name in (*PEOPLE, "stranger")}
-    people = {n: NioPerson(n, a, base_config.homeserver_url) for n, a in accounts.items()}
-    config = derive(base_config, people={n: accounts[n].user_id for n in PEOPLE})
-    services: list[MatrixService] = []
-
-    def service_for(policy: Policy) -> MatrixService:
-        service = MatrixService(config, gateway_mounts, tmp_path / "data", policy)
-        services.append(service)
-        return service
-
-    async with contextlib.AsyncExitStack() as stack:
-        for person in people.values():
-            person.aside = is_survey
-            await person.start()
-            stack.push_async_callback(person.stop)
-        stranger = people.pop("stranger")
-        yield Office(config, people, stranger, service_for)
-        for service in services:
-            await service.stop()
-
-
-@contextlib.asynccontextmanager
-async def running(service: MatrixService) -> AsyncIterator[MatrixService]:
-    await service.start()
-    try:
-        yield service
-    finally:
-        await service.stop()
-
-
-def is_survey(message: Seen) -> bool:
-    """The feedback survey each requester gets after an instruction (read apart)."""
-    return message.body.startswith("A short survey")
-
-
-def borrow(ctx: AgentContext) -> list[Action]:
-    """Ask Zhang, wait for her answer, tell Lee what she said."""
-    if QUESTION not in asked(ctx):
-        return [Inquire(contact="zhang", question=QUESTION), Wait(timeout_s=3000)]
-    answers = answers_from(ctx, "zhang")
-    if not answers:
-        return waiting(ctx, "Zhang's answer")
-    return [Stop(outcome="done", summary=f"Zhang answered: {answers[0]}")]
 
 
 async def locker_codes(office: Office) -> list[dict[str, object]]:
@@ -265,12 +190,7 @@ async def test_pull_mode_takes_no_history_as_new(
 ) -> None:
     syncbot = new_account("syncbot")
     service = office.service_for(borrow)
-    service.write_config(
-        mode="pull",
-        pull_user_id=syncbot.user_id,
-        pull_access_token=syncbot.access_token,
-        sync_timeout_s=1.0,
-    )
+    service.use_pull_account(syncbot, "pull")
     async with running(service):
         room = await office.lee.create_room([], is_direct=True)
         await office.lee.say(room, "Old news: bring me a cup.")
@@ -382,12 +302,7 @@ async def test_switching_modes(office: Office, new_account: Callable[[str], Acco
     async with running(service):  # push
         lee_dm = await office.lee.open_dm(bot)
     # both: the DM made in push mode gets the pull account too
-    service.write_config(
-        mode="both",
-        pull_user_id=syncbot.user_id,
-        pull_access_token=syncbot.access_token,
-        sync_timeout_s=1.0,
-    )
+    service.use_pull_account(syncbot, "both")
     async with running(service):
         await office.lee.wait_member(lee_dm, syncbot.user_id)
     # pull: a registration left in place still gets an answer, not 405
@@ -425,12 +340,13 @@ async def test_matrix_traffic_is_in_the_journal_and_chats(office: Office) -> Non
             lee = (await http.get("/v1/chats/dm/lee", headers=auth)).json()
             zhang = (await http.get("/v1/chats/dm/zhang", headers=auth)).json()
     assert {(c["kind"], c["id"]) for c in chats} >= {("dm", "lee"), ("dm", "zhang")}
-    assert [(m["direction"], m["text"]) for m in lee][:2] == [
+    assert [(m["direction"], m["text"]) for m in lee][:3] == [
         ("in", "Please ask Zhang if I can borrow her stapler."),
+        ("out", "On it: Please ask Zhang if I can borrow her stapler."),
         ("out", "[done] Zhang answered: Yes."),
     ]
     # The survey reaches Lee where he talks to the assistant, and is journaled like the rest.
     [survey] = office.lee.set_aside()
     assert survey.room_id == lee_dm
-    assert [(m["direction"], m["text"]) for m in lee][2:] == [("out", survey.body)]
+    assert [(m["direction"], m["text"]) for m in lee][3:] == [("out", survey.body)]
     assert [(m["direction"], m["text"]) for m in zhang] == [("out", QUESTION), ("in", "Yes.")]

@@ -23,7 +23,7 @@ from assistantx.core.errors import MessengerError
 from assistantx.core.ports.messenger import InboundMessage
 from helpers.eventually import assert_quiet, eventually
 from synapse.gateway import AppserviceGateway
-from synapse.helpers import derive, next_message, wait_joined
+from synapse.helpers import bridge, derive, dm_with, next_message, say
 from synapse.homeserver import Account
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
@@ -47,18 +47,6 @@ class FailsOnceStore(SqliteEventStore):
         return await super().accept(messages, **kwargs)  # type: ignore[arg-type]
 
 
-async def _dm_room(person: MatrixClient, bot_user: str) -> str:
-    room = await person.create_room(invite=[bot_user], is_direct=True)
-    await wait_joined(person, room, bot_user)
-    return room
-
-
-async def _say(person: MatrixClient, room: str, text: str) -> str:
-    return await person.send_event(
-        room, "m.room.message", {"msgtype": "m.text", "body": text}, txn_id=text
-    )
-
-
 async def test_a_failed_transaction_is_retried_and_handled_once(
     base_config: MatrixConfig,
     gateway_mounts: AppserviceGateway,
@@ -69,12 +57,10 @@ async def test_a_failed_transaction_is_retried_and_handled_once(
     lee = new_account("lee")
     config = derive(base_config, people={"lee": lee.user_id})
     store = FailsOnceStore(tmp_path / "e.db")
-    messenger = MatrixMessenger(config, store)
-    messenger.connect_inbox(inbox)
-    gateway_mounts.mount(messenger.appservice_router())
+    messenger = bridge(config, store, inbox, gateway_mounts)
     async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
-        room = await _dm_room(person, config.bot_user_id)
-        event_id = await _say(person, room, "bring the signed form")
+        room = await dm_with(person, config.bot_user_id)
+        event_id = await say(person, room, "bring the signed form")
         message = await next_message(inbox)
         assert store.failures_left == 0 and store.failed_at is not None
         assert message.event_id == event_id
@@ -94,23 +80,21 @@ async def test_restart_between_transactions_loses_nothing(
     config = derive(base_config, people={"lee": lee.user_id})
     db = tmp_path / "events.db"
     async with MatrixClient(config.homeserver_url, lee.access_token) as person:
-        first = MatrixMessenger(config, SqliteEventStore(db))
-        first.connect_inbox(inbox)
-        gateway_mounts.mount(first.appservice_router())
+        first = bridge(config, SqliteEventStore(db), inbox, gateway_mounts)
         async with first:
-            room = await _dm_room(person, config.bot_user_id)
-            one = await _say(person, room, "first")
+            room = await dm_with(person, config.bot_user_id)
+            one = await say(person, room, "first")
             got_one = await next_message(inbox)
             assert got_one.event_id == one
             await first.acknowledge(got_one)
             # A second message is accepted (stored, queued) but the app dies before handling it.
-            two = await _say(person, room, "second")
+            two = await say(person, room, "second")
             assert (await next_message(inbox)).event_id == two
         await first.store.close()
 
         gateway_mounts.go_down()  # the service is restarting: Synapse gets 503 and backs off
         refused = gateway_mounts.refused
-        three = await _say(person, room, "third")
+        three = await say(person, room, "third")
         await eventually(
             lambda: gateway_mounts.refused > refused, what="Synapse's push of the third message"
         )

@@ -125,6 +125,9 @@ class UsageReport(BaseModel):
 
 
 # -- periods -----------------------------------------------------------------------------------
+LAST_EPOCH_S = datetime(9999, 12, 31, 23, 59, 59, tzinfo=UTC).timestamp()
+
+
 def parse_time(text: str, *, end: bool = False) -> float:
     """An ISO date or date-time (UTC when no zone is given), or seconds since the epoch.
 
@@ -133,9 +136,17 @@ def parse_time(text: str, *, end: bool = False) -> float:
     """
     value = text.strip()
     try:
-        return float(value)
+        seconds = float(value)
     except ValueError:
         pass
+    else:
+        # float() also takes "nan", "inf" and 1e20: none is a moment a report can cover.
+        if not (math.isfinite(seconds) and 0 <= seconds <= LAST_EPOCH_S):
+            raise ValueError(
+                f"{text!r} is not a time: epoch seconds must lie between 0 and "
+                f"{LAST_EPOCH_S:.0f} (the end of year 9999)"
+            )
+        return seconds
     try:
         if len(value) == 10:
             day = date.fromisoformat(value)

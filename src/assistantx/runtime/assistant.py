@@ -21,6 +21,7 @@ from assistantx.agents.base import Reasoner, ReasonerFactory
 from assistantx.core.clock import Clock
 from assistantx.core.errors import GroundingError
 from assistantx.core.events import EventSink, TraceEvent
+from assistantx.core.isolation import SkippedEvents
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.messenger import (
@@ -121,6 +122,7 @@ class Assistant:
         self._errands: set[asyncio.Task[None]] = set()  # items going back to their owners
         self._stopping = False
         self.unmatched: list[InboundMessage] = []
+        self.skipped = SkippedEvents("dispatch")  # inbound messages whose handling raised
 
     # -- lifecycle -----------------------------------------------------------------------
     async def start(self) -> None:
@@ -296,8 +298,8 @@ class Assistant:
                 return
             try:
                 await self.handle_inbound(message)
-            except Exception:
-                logger.exception("could not handle inbound message %s", message.event_id)
+            except Exception as exc:
+                self.skipped.skip("dispatch", message.event_id, "handling", exc)
             try:
                 # Also after a failure: a message that broke the handler would break it again.
                 await self.parts.messenger.acknowledge(message)

@@ -32,9 +32,11 @@ from assistantx.service import (
     whoami,
 )
 from assistantx.service.body_limit import BodyLimit, PathLimit
+from assistantx.service.client_gone import ClientGone
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.errors import install_error_handlers
 from assistantx.service.runtime import ServiceRuntime
+from assistantx.service.security_headers import SecurityHeaders
 
 logger = logging.getLogger(__name__)
 
@@ -112,5 +114,7 @@ def create_app(
 
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
+    app.add_middleware(ClientGone)  # a client leaving a stream is no traceback
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
+    app.add_middleware(SecurityHeaders)  # outermost: also on the body limit's 413
     return app

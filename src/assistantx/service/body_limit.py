@@ -63,27 +63,38 @@ class BodyLimit:
             await _too_large(send, limit)
             return
         seen = 0
-        started = False
+        exceeded = False
+        started = False  # the app's answer began before the limit was exceeded
+        answered = False  # the 413 went out in place of whatever the app answers
 
         async def limited_receive() -> Message:
-            nonlocal seen
+            nonlocal seen, exceeded
             message = await receive()
             if message["type"] == "http.request":
                 seen += len(message.get("body", b""))
                 if seen > limit.max_bytes:
+                    exceeded = True
                     raise _TooLargeError
             return message
 
-        async def tracking_send(message: Message) -> None:
-            nonlocal started
-            started = started or message["type"] == "http.response.start"
-            await send(message)
+        async def guarded_send(message: Message) -> None:
+            # A framework may catch the receive error and answer on its own (FastAPI turns
+            # any failure to read a body into "400 There was an error parsing the body"):
+            # once the limit is exceeded, the answer is our 413 whatever the app sends.
+            nonlocal answered, started
+            if not exceeded or started:
+                started = started or message["type"] == "http.response.start"
+                await send(message)
+            elif not answered and message["type"] == "http.response.start":
+                answered = True
+                await _too_large(send, limit)
 
         try:
-            await self.app(scope, limited_receive, tracking_send)
+            await self.app(scope, limited_receive, guarded_send)
         except _TooLargeError:
-            if not started:
-                await _too_large(send, limit)
+            pass
+        if exceeded and not answered and not started:
+            await _too_large(send, limit)
 
 
 class _TooLargeError(Exception):

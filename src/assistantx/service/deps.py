@@ -9,6 +9,7 @@ from fastapi import Depends, Request
 from assistantx.service.auth import Principal
 from assistantx.service.errors import UnavailableError
 from assistantx.service.runtime import ServiceRuntime
+from assistantx.store.journal import InstructionRecord
 
 
 def get_runtime(request: Request) -> ServiceRuntime:
@@ -26,3 +27,14 @@ def get_principal(request: Request, runtime: Runtime) -> Principal:
 
 
 Caller = Annotated[Principal, Depends(get_principal)]
+
+
+def visible_instruction(
+    runtime: ServiceRuntime, caller: Principal, instruction_id: str
+) -> InstructionRecord:
+    """The instruction, if ``caller`` may see it (the operator sees all; a person their own).
+    Someone else's id gets the very answer an unknown id gets (404), so ids cannot be probed."""
+    record = runtime.instruction(instruction_id)  # NotFoundError for an unknown id
+    if not caller.may_act_as(record.requester):
+        raise runtime.unknown_instruction(instruction_id)
+    return record

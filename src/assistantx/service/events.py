@@ -29,8 +29,8 @@ from fastapi import APIRouter, Depends, Header, Query
 from fastapi.sse import EventSourceResponse, ServerSentEvent
 
 from assistantx.service.auth import Principal
-from assistantx.service.deps import Caller, Runtime
-from assistantx.service.errors import ForbiddenError, UnprocessableError
+from assistantx.service.deps import Caller, Runtime, visible_instruction
+from assistantx.service.errors import UnprocessableError
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.store.journal import MAX_SEQ, EventRecord
 
@@ -135,9 +135,7 @@ def _one_instruction(
     after: After = None,
 ) -> Replay:
     start = _start(last_event_id, after)  # a malformed request is 422 before any lookup
-    record = runtime.instruction(instruction_id)
-    if not caller.may_act_as(record.requester):
-        raise ForbiddenError("this instruction belongs to someone else")
+    visible_instruction(runtime, caller, instruction_id)
     return Replay(instruction_id, start)
 
 

@@ -7,7 +7,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Response
 
-from assistantx.service.deps import Caller, Runtime
+from assistantx.service.deps import Caller, Runtime, visible_instruction
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.schemas import (
     CancelOut,
@@ -64,10 +64,7 @@ async def get_instruction(
     instruction_id: str, runtime: Runtime, caller: Caller
 ) -> InstructionDetail:
     """Status, outcome, the full trace and the dialogue."""
-    record = runtime.instruction(instruction_id)
-    if not caller.may_act_as(record.requester):
-        raise ForbiddenError("this instruction belongs to someone else")
-    return InstructionDetail.full(record)
+    return InstructionDetail.full(visible_instruction(runtime, caller, instruction_id))
 
 
 @router.post("/{instruction_id}/cancel", response_model=CancelOut)
@@ -82,9 +79,7 @@ async def delete(instruction_id: str, runtime: Runtime, caller: Caller) -> Cance
 
 
 async def _cancel(instruction_id: str, runtime: Runtime, caller: Caller) -> CancelOut:
-    record = runtime.instruction(instruction_id)
-    if not caller.may_act_as(record.requester):
-        raise ForbiddenError("this instruction belongs to someone else")
+    record = visible_instruction(runtime, caller, instruction_id)
     cancelled = await runtime.cancel(instruction_id)
     return CancelOut(
         id=instruction_id,

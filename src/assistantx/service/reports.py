@@ -207,9 +207,9 @@ async def survey(
 ) -> SurveyOut:
     store = _feedback(request).store
     found = store.survey(instruction_id)
-    if found is None:
+    if found is None or not caller.may_act_as(found.person):
+        # Someone else's survey is answered like a missing one: ids cannot be probed.
         raise NotFoundError(f"no survey for instruction {instruction_id!r}")
-    caller.require_person(found.person)
     replies = [
         {"time": t, "text": text, "effect": effect}
         for t, text, effect in store.replies(instruction_id)

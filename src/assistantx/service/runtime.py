@@ -172,6 +172,10 @@ class ServiceRuntime:
             self.journal, self.assistant, self.hub, self.metrics, self._world_state
         )
         self.durability.attach()
+        skipped = [self.assistant.skipped]
+        if self.matrix is not None:
+            skipped.append(self.matrix.messenger.skipped_events)
+        self.metrics.count_skipped(*skipped)
         self.admission = Admission(self.assistant, self.journal)
         self.rate = InstructionRate(s.instructions_per_minute)
         self.assistant.intercept_direct_messages(self._over_the_rate)
@@ -211,6 +215,10 @@ class ServiceRuntime:
             matrix.transcript = self.journal  # Matrix traffic in the journal, like the built-in
             self.assistant.on_instruction_end(
                 lambda stm: matrix.instruction_ended(stm.instruction_id)
+            )
+            # "On it: ...": a Matrix requester sees at once that the work started.
+            self.assistant.on_instruction_start(
+                lambda stm: matrix.instruction_started(stm.instruction_id, stm.requester, stm.text)
             )
             stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
             await matrix.start()
@@ -359,8 +367,12 @@ class ServiceRuntime:
     def instruction(self, instruction_id: str) -> InstructionRecord:
         record = self.journal.instruction(instruction_id)
         if record is None:
-            raise NotFoundError(f"no instruction {instruction_id!r}")
+            raise self.unknown_instruction(instruction_id)
         return record
+
+    @staticmethod
+    def unknown_instruction(instruction_id: str) -> NotFoundError:
+        return NotFoundError(f"no instruction {instruction_id!r}")
 
     async def cancel(self, instruction_id: str) -> bool:
         """Ask a running instruction to stop; False when it had already ended."""

@@ -12,12 +12,14 @@ only their own traffic, and registering the same names twice cannot collide.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
+from collections import Counter as Tally
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from prometheus_client import CollectorRegistry, Counter, Gauge, Histogram
 from prometheus_client.exposition import CONTENT_TYPE_PLAIN_0_0_4, generate_latest
-from prometheus_client.metrics_core import GaugeMetricFamily, Metric
+from prometheus_client.metrics_core import CounterMetricFamily, GaugeMetricFamily, Metric
 
+from assistantx.core.isolation import SkippedEvents
 from assistantx.core.trace import TraceStep
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.store.journal import Journal
@@ -42,6 +44,28 @@ class _InstructionsByStatus:
         family = GaugeMetricFamily(self.NAME, "instructions by status", labels=["status"])
         for status, n in self._journal.count_by_status().items():
             family.add_metric([status], float(n))
+        return [family]
+
+
+class _SkippedInbound:
+    """A counter family read at scrape time from the inbound paths' ``SkippedEvents``."""
+
+    NAME = "assistantx_inbound_events_skipped"
+    HELP = "inbound events skipped because handling them raised, by path"
+
+    def __init__(self, sources: Sequence[SkippedEvents]) -> None:
+        self._sources = sources
+
+    def describe(self) -> Iterable[Metric]:
+        return [CounterMetricFamily(self.NAME, self.HELP, labels=["path"])]
+
+    def collect(self) -> Iterable[Metric]:
+        family = CounterMetricFamily(self.NAME, self.HELP, labels=["path"])
+        totals: Tally[str] = Tally()
+        for source in self._sources:
+            totals.update(source.by_path)
+        for path in sorted(totals):
+            family.add_metric([path], float(totals[path]))
         return [family]
 
 
@@ -111,6 +135,8 @@ class ServiceMetrics:
             "sends answered from the journal instead of sent again (since start)",
             registry=r,
         ).set_function(lambda: float(self.skipped_sends()))
+        self._skipped_sources: list[SkippedEvents] = []
+        r.register(_SkippedInbound(self._skipped_sources))
         self._exposed = _WithoutCreated(r)
 
     def watch_loop(self, monitor: LoopLagMonitor) -> None:
@@ -119,6 +145,10 @@ class ServiceMetrics:
             "the longest the event loop was blocked in the last minute",
             registry=self.registry,
         ).set_function(monitor.max_lag_s)
+
+    def count_skipped(self, *sources: SkippedEvents) -> None:
+        """Expose the inbound events ``sources`` skipped (``core.isolation``)."""
+        self._skipped_sources.extend(sources)
 
     def step_completed(self, step: TraceStep) -> None:
         if step.ended_at is not None:

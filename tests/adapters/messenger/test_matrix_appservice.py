@@ -222,3 +222,27 @@ async def test_a_streamed_push_over_the_limit_gets_a_matrix_413(
     assert (big.status_code, big.json()["errcode"]) == (413, "M_TOO_LARGE")
     assert "4096" in big.json()["error"]
     assert not await store.transaction_seen("8")
+
+
+async def test_a_push_nested_too_deep_is_acknowledged_and_blocks_nothing(
+    serve_routers: ServeRouters,
+    store: SqliteEventStore,
+    inbox: asyncio.Queue[InboundMessage],
+) -> None:
+    """1500 levels of nesting (a RecursionError in the parser) once answered a plain-text 500
+    that the homeserver retried for ever; it is acknowledged in JSON and counted, and the next
+    transaction is taken in."""
+    ingestor = EventIngestor(store, EventNormalizer(CONFIG, {}), inbox.put)
+    router = create_appservice_router(hs_token=SecretStr(HS_TOKEN), ingestor=ingestor)
+    deep = b'{"events": [' + b"[" * 1500 + b"]" * 1500 + b"]}"
+    async with serve_routers(router) as url, httpx.AsyncClient(base_url=url) as client:
+        pushed = await client.put("/_matrix/app/v1/transactions/deep", content=deep, headers=AUTH)
+        after = await client.put(
+            "/_matrix/app/v1/transactions/next",
+            json={"events": [text_event("$next", "still here")]},
+            headers=AUTH,
+        )
+    assert (pushed.status_code, pushed.json()) == (200, {})
+    assert (after.status_code, after.json()) == (200, {})
+    assert inbox.get_nowait().event_id == "$next"
+    assert ingestor.skipped.by_path == {"matrix_push": 1}

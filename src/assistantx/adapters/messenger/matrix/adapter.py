@@ -20,6 +20,11 @@ In ``both`` mode the pull account is kept in every room the bot talks in (it is 
 the DM rooms the bot creates or joins, and joins the group rooms), so either path alone
 receives everything: the poller is a real fallback while pushes fail, not a half view.
 
+A person sees at once that the bot took their message: a read receipt, the bot typing in
+their DM until it sends there, and ``instruction_started`` writes "On it: ..." to the requester.
+The bot stays out of end-to-end encrypted rooms (it cannot encrypt): it leaves an encrypted
+DM it is invited to and says so in the person's unencrypted DM (see ``rooms``).
+
 Consumers call ``acknowledge(message)`` when done with an inbound message; messages accepted
 but never acknowledged are put on the inbox again by the next ``start()``.
 """
@@ -31,7 +36,7 @@ import json
 import logging
 import struct
 import uuid
-from collections.abc import Awaitable, Callable, Mapping, Sequence
+from collections.abc import Awaitable, Callable, Mapping
 from datetime import UTC, datetime
 from typing import Any, Protocol
 
@@ -44,8 +49,9 @@ from assistantx.adapters.messenger.matrix.appservice import (
 )
 from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError, RetryPolicy
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
-from assistantx.adapters.messenger.matrix.ingest import EventIngestor, RoomEvent
+from assistantx.adapters.messenger.matrix.ingest import EventIngestor
 from assistantx.adapters.messenger.matrix.normalize import (
+    ENCRYPTED_ROOM_TEXT,
     PLATFORM,
     STRANGER_TEXT,
     AutoReply,
@@ -55,6 +61,7 @@ from assistantx.adapters.messenger.matrix.rooms import RoomDirectory
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
 from assistantx.core.errors import MessengerError, UnreachableContactError
+from assistantx.core.isolation import SkippedEvents
 from assistantx.core.ports.messenger import (
     Attachment,
     ChatRef,
@@ -67,6 +74,12 @@ from assistantx.core.ports.messenger import (
 logger = logging.getLogger(__name__)
 
 _PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+ACK_TEXT = "On it: {request}"
+"""Sent to the requester as soon as an instruction starts."""
+ACK_REQUEST_CHARS = 120
+TYPING_MS = 20_000
+"""How long the bot shows itself typing after a person's DM, unless it answers sooner."""
 
 
 def transaction_id(idempotency_key: str, part: int) -> str:
@@ -124,6 +137,9 @@ class MatrixMessenger(Messenger):
         self.normalizer = EventNormalizer(config, {})
         self.normalizer.rooms.strict = True  # only recorded DMs and configured groups count
         self.directory = RoomDirectory(config, store, self.normalizer.rooms)
+        # Inbound events that raised, by path (on /metrics).
+        paths = ["matrix_push"] * config.push_enabled + ["matrix_sync"] * config.pull_enabled
+        self.skipped_events = SkippedEvents(*paths)
         self.ingestor = EventIngestor(
             store,
             self.normalizer,
@@ -131,9 +147,13 @@ class MatrixMessenger(Messenger):
             on_invite=self._on_invite,
             on_accepted=self._remember_media,
             prepare=self._prepare,
+            after_prepare=self.directory.flush,
+            on_delivered=self._seen_by_bot,
             on_auto_reply=self._auto_reply,
+            skipped=self.skipped_events,
         )
         self.closing = False  # set on shutdown: nothing more goes out
+        self._typing: set[str] = set()  # rooms where the bot shows itself typing
         self._relays: list[Relay] = []
 
     # -- lifecycle ----------------------------------------------------------------------
@@ -222,9 +242,9 @@ class MatrixMessenger(Messenger):
             self.transcript.record_inbound(message)
         await self._deliver(message)
 
-    async def _prepare(self, events: Sequence[RoomEvent]) -> None:
+    async def _prepare(self, room_id: str, event: Mapping[str, Any]) -> None:
         if self.started:  # not started: nothing to learn rooms from (the push fails later)
-            await self.directory.observe(self._sender(), events)
+            await self.directory.observe(self._sender(), room_id, event)
 
     async def _remember_media(self, room_id: str, message: InboundMessage) -> None:
         for attachment in message.attachments:
@@ -232,6 +252,46 @@ class MatrixMessenger(Messenger):
                 await self.store.remember_media(
                     attachment.item, attachment.ref, attachment.name, attachment.mime
                 )
+
+    async def _seen_by_bot(self, room_id: str, message: InboundMessage) -> None:
+        """What a person sees at once: their message read, and in a DM the bot typing until
+        it answers (or for ``TYPING_MS``)."""
+        if self.closing or not self.started:
+            return
+        client = self._sender()
+        await client.read_receipt(room_id, message.event_id)
+        if message.chat.kind == "dm" and message.text.strip():
+            await client.typing(self._sender_id(), room_id, typing=True, timeout_ms=TYPING_MS)
+            self._typing.add(room_id)
+
+    async def _stop_typing(self, client: MatrixClient, room_id: str) -> None:
+        if room_id not in self._typing:
+            return
+        self._typing.discard(room_id)
+        try:
+            await client.typing(self._sender_id(), room_id, typing=False, timeout_ms=0)
+        except MatrixError as exc:
+            logger.debug("could not stop typing in %s: %s", room_id, exc)
+
+    async def instruction_started(self, instruction_id: str, requester: str, text: str) -> None:
+        """Tell the requester at once that their request is being worked on: on Matrix they
+        otherwise see nothing until the instruction's first message, which can take a while.
+        Sent once per instruction (a resumed one is answered from the store)."""
+        if self.closing or requester not in self.config.people:
+            return
+        request = " ".join(text.split())
+        if len(request) > ACK_REQUEST_CHARS:
+            request = request[: ACK_REQUEST_CHARS - 1].rstrip() + "…"
+        message = OutboundMessage(
+            chat=ChatRef(kind="dm", id=requester),
+            text=ACK_TEXT.format(request=request),
+            instruction_id=instruction_id,
+            idempotency_key=f"on-it:{instruction_id}",
+        )
+        try:
+            await self.send(message)
+        except MessengerError as exc:
+            logger.warning("could not acknowledge %s to its requester: %s", instruction_id, exc)
 
     async def _auto_reply(self, reply: AutoReply) -> None:
         if self.closing:
@@ -278,9 +338,29 @@ class MatrixMessenger(Messenger):
             raise
         logger.info("joined %s as %s", room_id, user_id)
         if person is not None and group is None and is_direct:
+            if await self.directory.is_encrypted(client, room_id):
+                await self._stay_out_of_encrypted(client, room_id, person)
+                return
             await self.directory.set_dm(person, room_id)
         if user_id == self.config.bot_user_id:
             await self._invite_pull_account(room_id)
+
+    async def _stay_out_of_encrypted(self, client: MatrixClient, room_id: str, person: str) -> None:
+        """A person opened an encrypted DM: the bot cannot read or write it, so it leaves and
+        says so in their unencrypted DM (found or created by ``dm_room``)."""
+        logger.warning(
+            "%s invited the bot to an end-to-end encrypted DM (%s); it left and asks for an "
+            "unencrypted one",
+            person,
+            room_id,
+        )
+        await client.leave(room_id)
+        if self.closing:
+            return
+        dm = await self.dm_room(person)
+        content = {"msgtype": "m.notice", "body": ENCRYPTED_ROOM_TEXT}
+        txn = transaction_id(f"encrypted:{room_id}", 0)
+        await self._sender().send_event(dm, "m.room.message", content, txn_id=txn)
 
     async def _turn_away(
         self, client: MatrixClient, room_id: str, user_id: str, inviter: object
@@ -348,9 +428,24 @@ class MatrixMessenger(Messenger):
         joined = set(await client.joined_rooms())
         if room_id not in joined:
             await client.join(room_id)
-            if self.config.mode == "both" and self._pull_client is not None:
-                await self._pull_client.join(room_id)
+        await self._pull_account_into_group(room_id)
         return room_id
+
+    async def _pull_account_into_group(self, room_id: str) -> None:
+        """``both`` mode: the pull account is in every group room the bot is in (else an
+        answer there is lost while pushes fail). It joins a public room itself; into another
+        the bot invites it, and its poller joins on the invite."""
+        if self.config.mode != "both" or self._pull_client is None:
+            return
+        if room_id in set(await self._pull_client.joined_rooms()):
+            return
+        try:
+            await self._pull_client.join(room_id)
+        except MatrixError as exc:
+            if exc.status is None or exc.status >= 500:
+                raise
+            logger.info("pull account cannot join %s by itself (%s); inviting it", room_id, exc)
+            await self._invite_pull_account(room_id)
 
     async def dm_room(self, person: str) -> str:
         """The room to write to ``person`` in: recorded and still private, recorded in
@@ -425,6 +520,7 @@ class MatrixMessenger(Messenger):
             if message.question_id:
                 self.normalizer.rooms.questions[event_id] = message.question_id
             event_ids.append(event_id)
+        await self._stop_typing(client, room_id)
         if self.transcript is not None:
             self.transcript.record_outbound(message, "assistant", datetime.now(UTC).timestamp())
         for relay in self._relays:

@@ -6,7 +6,9 @@
   accepted is acknowledged without effect; otherwise its events go through the ingestor
   (durably stored, then queued) and only then is it acknowledged with ``200 {}``. Any failure
   answers 500, so the homeserver retries the same transaction later. Transactions are taken
-  in one at a time, in arrival order.
+  in one at a time, in arrival order. An event that raises is skipped alone and counted (see
+  ``ingest``); a body nested too deep to parse is acknowledged, logged and counted, never
+  answered with an error the homeserver would retry for ever.
 - ``POST /_matrix/app/v1/ping``: answers ``{}`` (the homeserver's connectivity check).
 - ``GET /_matrix/app/v1/users/{userId}`` and ``/rooms/{alias}``: we create no users or rooms
   on demand, so ``404 M_NOT_FOUND``.
@@ -95,10 +97,17 @@ def create_appservice_router(*, hs_token: SecretStr, ingestor: EventIngestor) ->
         refused = _authenticate(request, hs_token)
         if refused is not None:
             return refused
+        body = await request.body()
         try:
-            events = _room_events(json.loads(await request.body()))
+            events = _room_events(json.loads(body))
         except ValueError:
             events = None
+        except RecursionError as exc:
+            # Nested deeper than Python's parser goes. A homeserver never sends this (it
+            # parses events the same way); answering anything but 200 would make it retry
+            # the transaction for ever and queue every later one behind it.
+            ingestor.skipped.skip("matrix_push", f"transaction {txn_id}", "parsing", exc)
+            return JSONResponse({})
         if events is None:
             return matrix_error(400, "M_NOT_JSON", "a transaction is a JSON object with events")
         try:

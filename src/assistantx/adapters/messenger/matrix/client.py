@@ -286,6 +286,34 @@ class MatrixClient:
         body = await self._json("PUT", path, json=content)
         return str(body["event_id"])
 
+    async def state_event(self, room_id: str, event_type: str, state_key: str = "") -> JSON | None:
+        """The content of one state event of ``room_id``, None when the room has none."""
+        path = (
+            f"/_matrix/client/v3/rooms/{_path_part(room_id)}/state/{_path_part(event_type)}/"
+            f"{_path_part(state_key)}"
+        )
+        try:
+            return await self._json("GET", path)
+        except MatrixError as exc:
+            if exc.errcode == "M_NOT_FOUND":
+                return None
+            raise
+
+    async def read_receipt(self, room_id: str, event_id: str) -> None:
+        """Mark ``event_id`` (and everything before it) read."""
+        path = (
+            f"/_matrix/client/v3/rooms/{_path_part(room_id)}/receipt/m.read/{_path_part(event_id)}"
+        )
+        await self._json("POST", path, json={})
+
+    async def typing(self, user_id: str, room_id: str, *, typing: bool, timeout_ms: int) -> None:
+        """Show (or stop showing) ``user_id`` typing in ``room_id``, for at most ``timeout_ms``."""
+        path = f"/_matrix/client/v3/rooms/{_path_part(room_id)}/typing/{_path_part(user_id)}"
+        body: JSON = {"typing": typing}
+        if typing:
+            body["timeout"] = timeout_ms
+        await self._json("PUT", path, json=body)
+
     async def upload(self, data: bytes, *, content_type: str, filename: str) -> str:
         """Store ``data`` in the media repository; returns its ``mxc://`` URI."""
         body = await self._json(

@@ -11,6 +11,8 @@ For a batch of events (one pushed transaction, or one /sync response) it
 
 Because step 2 happens before step 3 and before the caller acknowledges, a crash loses
 nothing (the store replays what was never handled), and a redelivered batch adds nothing.
+
+Steps 1 and 2 are per event: one event that raises is skipped alone (``core.isolation``).
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from typing import Any
 
 from assistantx.adapters.messenger.matrix.normalize import PLATFORM, AutoReply, EventNormalizer
 from assistantx.adapters.messenger.matrix.store import EventStore
+from assistantx.core.isolation import SkippedEvents
 from assistantx.core.ports.messenger import InboundMessage
 
 logger = logging.getLogger(__name__)
@@ -33,8 +36,11 @@ Deliver = Callable[[InboundMessage], Awaitable[None]]
 InviteHandler = Callable[[str, str, Mapping[str, Any]], Awaitable[None]]
 """(room id, invited user id, the invite event) → join or decline; only for the bot's users."""
 AcceptedHook = Callable[[str, InboundMessage], Awaitable[None]]
-PrepareHook = Callable[[Sequence[RoomEvent]], Awaitable[None]]
+PrepareHook = Callable[[str, Mapping[str, Any]], Awaitable[None]]
+"""What the messenger learns from one event about its rooms before the batch is normalized."""
 ReplyHook = Callable[[AutoReply], Awaitable[None]]
+DeliveredHook = Callable[[str, InboundMessage], Awaitable[None]]
+"""(room id, message) once a new message is in the inbox: read receipt and the like."""
 
 
 def invited_user(event: Mapping[str, Any]) -> str | None:
@@ -49,7 +55,12 @@ def invited_user(event: Mapping[str, Any]) -> str | None:
 
 
 class EventIngestor:
-    """Normalizes, deduplicates durably, then delivers. Batches are taken in one at a time."""
+    """Normalizes, deduplicates durably, then delivers. Batches are taken in one at a time.
+
+    Each event is handled on its own: an event whose invite handling, room bookkeeping or
+    normalization raises is logged with its id, counted in ``skipped`` and left out, and the
+    batch goes on (its transaction is acknowledged, the poller advances). Only what is no
+    event's fault fails the whole batch: the store's write and the hand-over to the inbox."""
 
     def __init__(
         self,
@@ -60,7 +71,10 @@ class EventIngestor:
         on_invite: InviteHandler | None = None,
         on_accepted: AcceptedHook | None = None,
         prepare: PrepareHook | None = None,
+        after_prepare: Callable[[], Awaitable[None]] | None = None,
         on_auto_reply: ReplyHook | None = None,
+        on_delivered: DeliveredHook | None = None,
+        skipped: SkippedEvents | None = None,
     ) -> None:
         self.store = store
         self._normalizer = normalizer
@@ -68,7 +82,10 @@ class EventIngestor:
         self._on_invite = on_invite
         self._on_accepted = on_accepted
         self._prepare = prepare
+        self._after_prepare = after_prepare
         self._on_auto_reply = on_auto_reply
+        self._on_delivered = on_delivered
+        self.skipped = skipped or SkippedEvents()
         # One batch at a time keeps the inbox in homeserver order across push and pull.
         self._lock = asyncio.Lock()
 
@@ -81,18 +98,30 @@ class EventIngestor:
         sync_token: str | None = None,
     ) -> list[InboundMessage]:
         """Take in one batch; returns the messages that were new and are now in the inbox."""
+        path = "matrix_push" if txn_id is not None else "matrix_sync"
         async with self._lock:
+            healthy: list[RoomEvent] = []
             for room_id, event in events:
-                user = invited_user(event)
-                if user is not None and self._normalizer.is_own(user) and self._on_invite:
-                    await self._on_invite(room_id, user, event)
-            if self._prepare is not None:
-                await self._prepare(events)
+                try:
+                    await self._take_invite(room_id, event)
+                    if self._prepare is not None:
+                        await self._prepare(room_id, event)
+                except Exception as exc:
+                    self.skipped.skip(path, _event_id(event), "room bookkeeping", exc)
+                    continue
+                healthy.append((room_id, event))
+            if self._after_prepare is not None:
+                await self._after_prepare()
             messages: list[InboundMessage] = []
             replies: list[AutoReply] = []
             rooms: dict[str, str] = {}
-            for room_id, event in events:
-                for item in self._normalizer.interpret(room_id, event):
+            for room_id, event in healthy:
+                try:
+                    items = self._normalizer.interpret(room_id, event)
+                except Exception as exc:
+                    self.skipped.skip(path, _event_id(event), "normalizing", exc)
+                    continue
+                for item in items:
                     if isinstance(item, AutoReply):
                         replies.append(item)
                     else:
@@ -118,9 +147,16 @@ class EventIngestor:
                     "inbound %s in %s from %s", message.event_id, message.chat, message.sender
                 )
                 await self._deliver(message)
+                if self._on_delivered is not None:
+                    await self._courtesy(self._on_delivered(rooms[message.event_id], message))
             if len(messages) > len(fresh):
                 logger.debug("skipped %d already seen events", len(messages) - len(fresh))
             return fresh
+
+    async def _take_invite(self, room_id: str, event: Mapping[str, Any]) -> None:
+        user = invited_user(event)
+        if user is not None and self._normalizer.is_own(user) and self._on_invite:
+            await self._on_invite(room_id, user, event)
 
     async def _send_reply(self, reply: AutoReply) -> None:
         assert self._on_auto_reply is not None
@@ -129,3 +165,13 @@ class EventIngestor:
         except Exception:
             # A courtesy answer: losing it must not make the homeserver redeliver the batch.
             logger.exception("could not answer %s in %s", reply.event_id, reply.room_id)
+
+    async def _courtesy(self, work: Awaitable[None]) -> None:
+        try:
+            await work
+        except Exception:
+            logger.exception("a courtesy to the sender of an inbound message failed")
+
+
+def _event_id(event: object) -> object:
+    return event.get("event_id") if isinstance(event, Mapping) else None

@@ -17,6 +17,11 @@ What people expect of a Matrix bot (as maubot and the mautrix bridges do it):
 - an encrypted message, a stranger's direct message and an over-long text each get a short
   answer in plain words instead of silence;
 - a file is delivered with the item name the office uses for a person's file (``file:lee``).
+
+``interpret`` takes any JSON value as an event. What is not a message for the bot (wrong
+types, missing fields, unknown kinds) gives no item; the one error it raises is
+``MalformedEventError``, for an event whose text cannot be stored or sent on (a lone UTF-16
+surrogate, which JSON allows and UTF-8 does not). The ingestor skips such an event alone.
 """
 
 from __future__ import annotations
@@ -29,6 +34,7 @@ from datetime import UTC, datetime
 from typing import Any
 
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
+from assistantx.core.errors import MessengerError
 from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage
 
 logger = logging.getLogger(__name__)
@@ -47,6 +53,10 @@ ENCRYPTED_TEXT = (
     "I can't read encrypted messages here — please message me in an unencrypted DM "
     "(turn encryption off when you start the chat)."
 )
+ENCRYPTED_ROOM_TEXT = (
+    "I can't take part in encrypted chats, so I left the one you invited me to. Please write "
+    "to me here instead."
+)
 STRANGER_TEXT = (
     "Hello! I'm the assistant of this office and I only serve its people, so I can't help "
     "you here. Please ask someone from the office."
@@ -61,6 +71,10 @@ TOO_LONG_TEXT = (
 )
 REACTION_TEXT = "Thanks for the {key}! If it answers my question, please reply in words."
 FILE_TEXT = "I have your file {name}. If it goes with a request, tell me what to do with it."
+
+
+class MalformedEventError(MessengerError):
+    """An event whose text is not valid Unicode: it can be neither stored nor answered."""
 
 
 @dataclass(frozen=True)
@@ -120,6 +134,16 @@ class EventNormalizer:
         return None
 
     def interpret(self, room_id: str, event: Mapping[str, Any]) -> list[Normalized]:
+        """The messages and answers ``event`` gives; ``MalformedEventError`` when its text
+        cannot be represented (see the module's docstring)."""
+        if not isinstance(event, Mapping):
+            return []
+        items = self._interpret(room_id, event)
+        for item in items:
+            _check_unicode(item)
+        return items
+
+    def _interpret(self, room_id: str, event: Mapping[str, Any]) -> list[Normalized]:
         event_id = event.get("event_id")
         sender = event.get("sender")
         content = event.get("content")
@@ -224,6 +248,23 @@ class EventNormalizer:
                 in_reply_to=question,
             )
         ]
+
+
+def _check_unicode(item: Normalized) -> None:
+    if isinstance(item, AutoReply):
+        texts = [item.room_id, item.event_id, item.text]
+    else:
+        texts = [item.event_id, item.sender, item.chat.id, item.text, item.in_reply_to or ""]
+        for attachment in item.attachments:
+            texts += [attachment.name, attachment.mime, attachment.ref or "", attachment.item or ""]
+    for text in texts:
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError as exc:
+            raise MalformedEventError(
+                f"event {item.event_id.encode('utf-8', 'backslashreplace').decode()} holds "
+                "text that is not valid Unicode"
+            ) from exc
 
 
 def strip_reply_fallback(body: str) -> str:

@@ -8,18 +8,19 @@ rules for invites.
   bot into a direct chat, when they write in a room where only they and the bot are, or when
   the bot creates one. It is forgotten when they leave it.
 - Private content only ever goes to a room where the person is joined or invited and nobody
-  but the bot's own accounts is joined besides them; otherwise a new DM is created.
+  but the bot's own accounts is joined besides them, and that is not end-to-end encrypted
+  (the bot cannot encrypt, and plain text in a room its people believe encrypted would
+  mislead them); otherwise a new DM is created. An encrypted room is never adopted as a DM.
 """
 
 from __future__ import annotations
 
 import logging
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from typing import Any
 
 from assistantx.adapters.messenger.matrix.client import MatrixClient, MatrixError
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
-from assistantx.adapters.messenger.matrix.ingest import RoomEvent
 from assistantx.adapters.messenger.matrix.normalize import Rooms
 from assistantx.adapters.messenger.matrix.store import EventStore
 from assistantx.core.errors import UnreachableContactError
@@ -39,6 +40,7 @@ class RoomDirectory:
         self._own = config.own_user_ids()
         self._not_dm: set[str] = set()  # rooms checked and found shared (not asked again)
         self._forgotten: list[str] = []  # people who left their DM, to persist
+        self._encrypted: set[str] = set()  # encryption, once on, cannot be turned off
 
     # -- loading -----------------------------------------------------------------------------
     async def load(self) -> None:
@@ -90,30 +92,29 @@ class RoomDirectory:
         return None
 
     # -- what arrives ------------------------------------------------------------------------
-    async def observe(self, client: MatrixClient, events: Sequence[RoomEvent]) -> None:
-        """Learn from a batch before it is normalized: people leaving their DM, the DM rooms
-        people write in, groups joined later, and which sent events asked questions."""
-        for room_id, event in events:
-            kind = event.get("type")
-            sender = event.get("sender")
-            if kind == "m.room.member":
-                self._member_change(room_id, event)
-                continue
-            if not isinstance(sender, str) or sender in self._own:
-                continue
-            await self._learn_targets(event)
-            person = self.config.person_of(sender)
-            known = room_id in self.rooms.groups or room_id in self.rooms.dms
-            if person is None or known or room_id in self._not_dm or kind != "m.room.message":
-                continue
-            if await self.group_of(client, room_id) is not None:
-                continue
-            if await self.is_private(client, room_id, sender, joined_only=True):
-                logger.info("room %s is %s's DM", room_id, person)
-                await self.set_dm(person, room_id)
-            else:
-                self._not_dm.add(room_id)
-        await self._flush()
+    async def observe(self, client: MatrixClient, room_id: str, event: Mapping[str, Any]) -> None:
+        """Learn from one event before its batch is normalized: people leaving their DM, the
+        DM rooms people write in, groups joined later, and which sent events asked questions.
+        Call ``flush`` after the batch."""
+        kind = event.get("type")
+        sender = event.get("sender")
+        if kind == "m.room.member":
+            self._member_change(room_id, event)
+            return
+        if not isinstance(sender, str) or sender in self._own:
+            return
+        await self._learn_targets(event)
+        person = self.config.person_of(sender)
+        known = room_id in self.rooms.groups or room_id in self.rooms.dms
+        if person is None or known or room_id in self._not_dm or kind != "m.room.message":
+            return
+        if await self.group_of(client, room_id) is not None:
+            return
+        if await self.is_private(client, room_id, sender, joined_only=True):
+            logger.info("room %s is %s's DM", room_id, person)
+            await self.set_dm(person, room_id)
+        else:
+            self._not_dm.add(room_id)
 
     def _member_change(self, room_id: str, event: Mapping[str, Any]) -> None:
         content = event.get("content")
@@ -121,15 +122,18 @@ class RoomDirectory:
         if not isinstance(content, dict) or not isinstance(user, str):
             return
         person = self.config.person_of(user)
+        if person is None:
+            return  # the bot, a stranger: nobody's DM ends with them leaving
         if content.get("membership") in _GONE and self.rooms.dms.get(room_id) == person:
             logger.info("%s left their DM room %s", person, room_id)
             del self.rooms.dms[room_id]
-            self._forgotten.append(person or "")
+            self._forgotten.append(person)
 
-    async def _flush(self) -> None:
+    async def flush(self) -> None:
+        """Write what the batch's events made forgotten (people who left their DM)."""
         forgotten, self._forgotten = self._forgotten, []
         for person in forgotten:
-            if person and self.dm_of(person) is None:
+            if self.dm_of(person) is None:
                 await self.store.set_dm_room(person, None)
 
     async def _learn_targets(self, event: Mapping[str, Any]) -> None:
@@ -162,4 +166,16 @@ class RoomDirectory:
                 return False  # not in the room any more, or never was
             raise
         allowed = {"join"} if joined_only else {"join", "invite"}
-        return membership in allowed and not (joined - self._own - {user_id})
+        if membership not in allowed or joined - self._own - {user_id}:
+            return False
+        return not await self.is_encrypted(client, room_id)
+
+    async def is_encrypted(self, client: MatrixClient, room_id: str) -> bool:
+        """Whether ``room_id`` has end-to-end encryption on (its ``m.room.encryption`` state)."""
+        if room_id in self._encrypted:
+            return True
+        if await client.state_event(room_id, "m.room.encryption") is None:
+            return False
+        logger.info("room %s is end-to-end encrypted: no private content goes there", room_id)
+        self._encrypted.add(room_id)
+        return True

@@ -12,6 +12,9 @@ account's history as new messages, but still joins pending invites. Likewise a r
 just joined shows its earlier history: everything before the account's own join is old news
 and is dropped, never taken for a new request. Errors back off
 exponentially; the first failure and the recovery are logged, not every attempt.
+
+One room whose data breaks the round (anything but the homeserver failing) is logged, counted
+and skipped, and each event in the ingestor on its own, so no event stops the poller.
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ import asyncio
 import json
 import logging
 import random
-from collections.abc import Mapping
+from collections.abc import Coroutine, Mapping
 from typing import Any
 
 from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError
@@ -112,21 +115,36 @@ class SyncPoller(Component):
         next_batch = response.get("next_batch")
         if not isinstance(next_batch, str):
             raise MatrixError("/sync answer has no next_batch")
-        rooms = response.get("rooms", {})
-        events = await self._invites(rooms.get("invite", {}))
+        rooms = response.get("rooms")
+        rooms = rooms if isinstance(rooms, dict) else {}
+        events: list[RoomEvent] = []
+        for room_id, room in _entries(rooms.get("invite")):
+            events.extend(await self._isolated(room_id, self._invites(room_id, room)))
         if not first_run:
-            for room_id, room in rooms.get("join", {}).items():
-                events.extend(await self._timeline(room_id, room))
+            for room_id, room in _entries(rooms.get("join")):
+                events.extend(await self._isolated(room_id, self._timeline(room_id, room)))
         await self._ingestor.ingest(events, sync_key=self._sync_key, sync_token=next_batch)
 
-    async def _invites(self, invited: Mapping[str, Any]) -> list[RoomEvent]:
-        """Synthesize invite events so the ingestor's invite handling joins the rooms."""
-        events: list[RoomEvent] = []
-        for room_id, room in invited.items():
-            for event in room.get("invite_state", {}).get("events", []):
-                if isinstance(event, dict) and event.get("type") == "m.room.member":
-                    events.append((room_id, event))
-        return events
+    async def _isolated(
+        self, room_id: str, work: Coroutine[Any, Any, list[RoomEvent]]
+    ) -> list[RoomEvent]:
+        """One room's events; a room whose data breaks the poller is skipped, not retried
+        for ever. The homeserver failing (``MatrixError``) fails the round: it is retried."""
+        try:
+            return await work
+        except MatrixError:
+            raise
+        except Exception as exc:
+            self._ingestor.skipped.skip("matrix_sync", f"room {room_id}", "reading /sync", exc)
+            return []
+
+    async def _invites(self, room_id: str, room: Mapping[str, Any]) -> list[RoomEvent]:
+        """The invite's state events, so the ingestor's invite handling joins the room."""
+        return [
+            (room_id, event)
+            for event in room.get("invite_state", {}).get("events", [])
+            if isinstance(event, dict) and event.get("type") == "m.room.member"
+        ]
 
     async def _timeline(self, room_id: str, room: Mapping[str, Any]) -> list[RoomEvent]:
         timeline = room.get("timeline", {})
@@ -188,6 +206,13 @@ class SyncPoller(Component):
         gathered.reverse()
         logger.debug("back-filled %d events in %s", len(gathered), room_id)
         return gathered
+
+
+def _entries(rooms: object) -> list[tuple[str, Any]]:
+    """The (room id, room) pairs of one section of a /sync answer (nothing if malformed)."""
+    if not isinstance(rooms, dict):
+        return []
+    return [(str(room_id), room) for room_id, room in rooms.items()]
 
 
 def _previous_membership(event: JSON) -> str | None:
