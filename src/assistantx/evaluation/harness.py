@@ -253,7 +253,8 @@ def _run_parallel(
     todo: list[tuple[Task, int]],
     record: Callable[[str], None],
 ) -> None:
-    job = json.dumps({**asdict(config), "tasks": str(config.tasks), "out": str(config.out)})
+    # Paths (tasks, out, office) travel as text: a worker reads them back from JSON.
+    job = json.dumps({k: str(v) if isinstance(v, Path) else v for k, v in asdict(config).items()})
     with ProcessPoolExecutor(max_workers=config.jobs) as pool:
         waiting: set[Future[str]] = set()
         queue = list(todo)
