@@ -224,7 +224,9 @@ class SimOffice:
                 # the requester does not volunteer to help with their own request
                 asker = self.requesters.get(message.instruction_id or "")
                 helpers = [p for p in members if p != asker]
-                replies = group_replies(self.world, helpers, message.text)
+                # The first who can help offers; the others see the offer and stay quiet, as
+                # people do in a group chat (the assistant then asks that person directly).
+                replies = group_replies(self.world, helpers, message.text)[:1]
                 for n, reply in enumerate(replies):
                     self._schedule_reply(reply, message, n)
             return
