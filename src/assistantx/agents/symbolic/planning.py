@@ -148,9 +148,9 @@ class Planner:
     def _consent(self, n: int, t: Task, requester: str) -> list[Role]:
         """The owner's own yes for their item that a keeper takes out (Joy's yoghurt from the
         fridge): the keeper cannot give it away for them (runtime/consent.py)."""
-        if t.owner is None or t.owner == requester or t.kind in ("print", "send_file", "produce"):
+        if t.owner is None or t.owner == requester or t.item is None:
             return []
-        kept = self.office.keeper(t.owner, t.item or "")
+        kept = self.office.keeper(t.owner, t.item)
         if kept is None:
             return []
         return [
