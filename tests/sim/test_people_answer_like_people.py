@@ -51,6 +51,8 @@ def test_an_offer_is_accepted_only_when_it_is_what_they_want(office: Office) -> 
     assert answer(office, zhangs, "Shall I bring you Wang Fang's stapler?") == "No, thanks."
     assert answer(office, zhangs, "Shall I bring you Zhang Wei's stapler?") == "Yes, please."
     assert answer(office, stapler, "Shall I bring you some scissors?") == "No, thanks."
+    assert answer(office, stapler, "Shall I go ahead?") == "Yes, please."
+    assert answer(office, nothing, "Shall I go ahead?") == "No, thanks."
 
 
 def test_missing_recipient_owner_signer_and_item_are_told(office: Office) -> None:
@@ -62,6 +64,8 @@ def test_missing_recipient_owner_signer_and_item_are_told(office: Office) -> Non
     signed = _wish(office, "lee", {"signed": ["document:lee", "wang"]})
     who = "Who should do that with your document? Please tell me their name."
     assert answer(office, signed, who) == f"{office.person('wang').name}."
+    two = f"Which do you mean: {zhang}, {office.person('wang').name}?"
+    assert answer(office, _wish(office, "lee", {"holds": ["lee", "book:zhang"]}), two) == zhang
     assert answer(office, wish, "Sorry?") == f"I mean {zhang}'s book, for {zhou}."
 
 

@@ -113,7 +113,11 @@ def answer(office: Office, wish: Wish, question: str) -> str:
 
 def _options(question: str) -> list[str]:
     """The options a question names: "Do you mean A, or B?" → ["A", "B"]."""
-    sentences = [s for s in re.split(r"(?<=[.!?])\s+", question) if " or " in s]
+    sentences = [
+        s
+        for s in re.split(r"(?<=[.!?])\s+", question)
+        if " or " in s or (":" in s and "," in s.partition(":")[2])
+    ]
     if not sentences:
         return []
     body = sentences[-1].strip().rstrip("?.! ")
@@ -147,9 +151,9 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
         return False
     people = _people_in(office, offer) - {wish.requester}
     items = set(mentioned_item_types(office, offer))
-    if people - wish.people or items - set(wish.items):
-        return False
-    return bool(items & set(wish.items) or people & wish.people)
+    # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
+    # did not ask for: no
+    return not (people - wish.people or items - set(wish.items))
 
 
 def _people_in(office: Office, text: str) -> set[str]:
