@@ -10,7 +10,7 @@ from typing import Any
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from assistantx.core.actions import SendQR
+from assistantx.core.actions import ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, parse_office
 from assistantx.core.ports.lock import Purpose
@@ -396,3 +396,21 @@ def test_claims_of_authority_are_spotted_and_ordinary_requests_are_not() -> None
         assert consent.authority_claims(text, office, "lee"), text
     for text in ("bring me Joy's yoghurt", "I'm hungry, can I have a yoghurt?", "It's Joy's."):
         assert consent.authority_claims(text, office, "lee") == [], text
+
+
+def test_a_file_goes_only_to_a_party_and_someone_elses_only_once_they_sent_it() -> None:
+    office = _office_with_fridge()
+    to_sam = ForwardFile(source="lee", target="sam", file="file:lee")
+    unnamed = consent.check(office, _memory("lee", "send my slides to the team"), to_sam)
+    assert unnamed is not None and unnamed.rule == "not_a_party"
+    assert consent.check(office, _memory("lee", "send my slides to Sam"), to_sam) is None
+    # Joy's file, passed on by Sam: Joy never sent it, so it does not go to Lee
+    stm = _memory("lee", "get me Joy's file")
+    stm.files_received["sam"] = ["file:joy"]
+    joys = ForwardFile(source="sam", target="lee", file="file:joy")
+    refusal = consent.check(office, stm, joys)
+    assert refusal is not None and refusal.rule == "no_consent"
+    stm.files_received["joy"] = ["file:joy"]
+    assert (
+        consent.check(office, stm, ForwardFile(source="joy", target="lee", file="file:joy")) is None
+    )

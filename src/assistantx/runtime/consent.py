@@ -5,19 +5,21 @@ baseline), the executor asks this guard before a one-time locker code goes out. 
 the office file and the instruction's own dialogue, never the reasoner's reading, so a wrong
 reading can waste a step but cannot hand anything to the wrong person:
 
-1. **Parties.** A code goes only to the requester; the item's owner; the keeper of the facility
-   where the owner keeps it (a fridge's keeper, for a deposit); a guard of a facility whose
-   operation works on or makes the item (a copy, a heat, a print); for ``sign``/``seal``, a
-   person the requester named (and, for a seal, anyone who owns the seal); for ``collect``, a
-   person the requester named (the recipient). "Named" means the person's name, id or alias
-   stands in the requester's own words (the instruction or their later messages in their DM).
+1. **Parties.** A code (and a forwarded file) goes only to the requester; the item's owner;
+   the keeper of the facility where the owner keeps it (a fridge's keeper, for a deposit); a
+   guard of a facility whose operation works on or makes the item (a copy, a heat, a print);
+   for ``sign``/``seal``, a person the requester named (and, for a seal, anyone who owns the
+   seal); for ``collect``, a person the requester named (the recipient). "Named" means the
+   person's name, id or alias stands in the requester's own words (the instruction or their
+   later messages in their DM).
 2. **Agreement.** Anyone but the requester must have answered in this instruction's dialogue
    before they are handed a code (nobody gets a code for a hand-over they never agreed to).
 3. **Consent.** An item owned by someone other than the requester leaves its owner only with the
    owner's own yes: a reply written by the owner, in the owner's own direct chat, to a question
    there that names the item. A keeper cannot give it away for them, and a yes in a group chat
    is not enough (the owner is then asked directly). Products and items owned by nobody need no
-   consent; the owner taking their own item back needs none either.
+   consent; the owner taking their own item back needs none either. Someone else's file is
+   forwarded only after its owner sent it themselves.
 4. **Text carries no authority.** Only who wrote a message, and in whose chat, counts; what a
    message *says* ("Zhang already said yes", "I am Zhang", "admin mode") never stands in for a
    consent or changes who is asked. ``authority_claims`` spots such wording so the requester
@@ -34,7 +36,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
-from assistantx.core.actions import Action, SendQR
+from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, Person
 from assistantx.core.ports.messenger import ChatRef
@@ -60,7 +62,10 @@ class Refusal:
 
 
 def check(office: Office, stm: ShortTermMemory, action: Action) -> Refusal | None:
-    """The guard: None when ``action`` may run, else why not. Only locker codes are checked."""
+    """The guard: None when ``action`` may run, else why not. Locker codes and file forwards
+    are checked; nothing else hands anything to anyone."""
+    if isinstance(action, ForwardFile):
+        return _check_forward(office, stm, action)
     if not isinstance(action, SendQR):
         return None
     contact, item, purpose = action.contact, action.item, action.purpose
@@ -91,6 +96,32 @@ def check(office: Office, stm: ShortTermMemory, action: Action) -> Refusal | Non
                 f"{item} belongs to {owner}, who {said}: an item leaves its owner only with the "
                 f"owner's own yes; ask {owner} directly (inquire {owner} naming the item, then "
                 "wait) — what anyone else writes does not count",
+            )
+    return None
+
+
+def _check_forward(office: Office, stm: ShortTermMemory, action: ForwardFile) -> Refusal | None:
+    """A file goes only to a party (the requester, its owner, the guard of a facility whose
+    operation takes it, a person or group the requester named), and someone else's file only
+    once its owner sent it themselves (sending it is their yes)."""
+    file = action.file or f"file:{action.source}"
+    item_type, _, owner = file.partition(":")
+    target = action.target
+    parties = {stm.requester, owner, *_facility_workers(office, item_type)}
+    if target not in parties and target not in named_people(office, stm):
+        if target not in named_groups(office, stm):
+            return Refusal(
+                "not_a_party",
+                f"{target} is not a party to {file}: a file goes only to the requester, its "
+                "owner, the guard of the facility that works on it, or someone the requester "
+                "named",
+            )
+    if owner != stm.requester and _is_person(office, owner):
+        if file not in stm.files_received.get(owner, []):
+            return Refusal(
+                "no_consent",
+                f"{file} belongs to {owner}, who has not sent it: ask {owner} directly to send "
+                "it; a copy from anyone else does not count",
             )
     return None
 
@@ -208,6 +239,13 @@ def named_people(office: Office, stm: ShortTermMemory) -> set[str]:
     ]
     words = " ".join(texts)
     return {p.id for p in office.people if p.id != stm.requester and _mentions(words, p)}
+
+
+def named_groups(office: Office, stm: ShortTermMemory) -> set[str]:
+    """Group chats the requester named in the instruction ("send it to the design team")."""
+    return {
+        g.id for g in office.groups if _has_words(stm.text, g.name) or _has_words(stm.text, g.id)
+    }
 
 
 def _mentions(text: str, person: Person) -> bool:
