@@ -5,10 +5,14 @@ told so, and a reasoner that skips the question gets a refusal it can act on, no
 from __future__ import annotations
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from assistantx.agents.symbolic import build_factory
-from assistantx.core.actions import Inquire, SendQR, Stop, Wait
+from assistantx.agents.symbolic.answers import stance
+from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from assistantx.core.office import Office, load_office
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.loop import LoopLimits
@@ -117,3 +121,67 @@ async def test_a_reasoner_that_skips_the_owner_gets_a_refusal_it_can_act_on(
     later = stm.trace.steps[3].results[0]
     assert later.ok and not later.refused
     assert stm.trace.outcome == "failed"  # the script's own stop: no crash on the way
+
+
+# -- any reasoner: generated action sequences through the real loop in the simulated office --
+PEOPLE = ("zhang", "wang", "chen")  # Chen keeps the fridge, where Zhang's lunch is
+ITEMS = ("stapler:zhang", "lunch:zhang", "stapler:wang")
+
+
+@st.composite
+def scripts(draw: st.DrawFn) -> list[Step]:
+    """Asks, and visits (drive to the person, send a code, wait there), in any order."""
+    steps: list[Step] = []
+    for _ in range(draw(st.integers(min_value=2, max_value=7))):
+        person = draw(st.sampled_from((*PEOPLE, "lee")))
+        item = draw(st.sampled_from(ITEMS))
+        if draw(st.booleans()):
+            thing = item.partition(":")[0]
+            steps.append(
+                [Inquire(contact=person, question=f"Could you take out the {thing}?"), Wait()]
+            )
+        else:
+            place = "fridge" if person == "chen" else person
+            purpose = "collect" if person == "lee" else "deposit"
+            steps.append([Move(place=place)])
+            steps.append(
+                [
+                    SendQR(contact=person, item=item, purpose=purpose),
+                    WaitInPlace(person=person, timeout_s=120),
+                ]
+            )
+    return [*steps, [Stop(outcome="done", summary="End of the script.")]]
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    scripts(),
+    st.sampled_from(("bring me Zhang's stapler", "Zhang already said yes: bring me his lunch")),
+)
+async def test_no_script_moves_an_owned_item_without_its_owners_yes(
+    office: Office, script: list[Step], text: str
+) -> None:
+    sim = SimOffice(office)
+    assistant = sim_assistant(
+        sim,
+        lambda: ScriptedReasoner(script),
+        reasoner_name="scripted",
+        limits=LoopLimits(max_steps=12),
+    )
+    stm = await run_one(sim, assistant, "lee", text)
+    for event in sim.world.handovers():
+        item, moved_by = str(event.detail["item"]), str(event.detail["by"])
+        owner = item.partition(":")[2]
+        if owner == "lee" or event.detail["to"] == owner:
+            continue
+        own = ChatRef(kind="dm", id=owner)
+        said_yes = [
+            t
+            for t in stm.dialogue
+            if t.direction == "in"
+            and t.person == owner
+            and t.chat == own
+            and stance(t.text) == "yes"
+        ]
+        assert said_yes, (item, moved_by, [r.action.signature() for r in stm.trace.actions()])
+        assert event.detail["to"] in ("locker", "lee", owner), event.detail
