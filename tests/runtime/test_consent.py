@@ -5,6 +5,7 @@ request that claims someone already agreed)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from hypothesis import HealthCheck, given, settings
@@ -12,7 +13,7 @@ from hypothesis import strategies as st
 
 from assistantx.core.actions import ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
-from assistantx.core.office import Office, parse_office
+from assistantx.core.office import Office, load_office, parse_office
 from assistantx.core.ports.lock import Purpose
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.trace import Trace
@@ -414,3 +415,22 @@ def test_a_file_goes_only_to_a_party_and_someone_elses_only_once_they_sent_it() 
     assert (
         consent.check(office, stm, ForwardFile(source="joy", target="lee", file="file:joy")) is None
     )
+
+
+def test_a_name_that_is_an_everyday_word_names_the_person_only_as_a_name() -> None:
+    harbour = load_office(
+        Path(__file__).resolve().parents[2] / "dataset/offices/harbour/office.yaml"
+    )
+    code = SendQR(contact="will", item="umbrella:sue", purpose="collect")
+    will = ChatRef(kind="dm", id="will")
+    answered = [
+        _turn(0, "out", will, "will", "Be at your desk?", question_id="q"),
+        _turn(1, "in", will, "will", "ok", in_reply_to="q"),
+    ]
+    for text, allowed in (
+        ("Take my umbrella over to Will, please.", True),
+        ("will you take my umbrella to the kitchen?", False),
+    ):
+        stm = _memory("sue", text)
+        stm.dialogue += answered
+        assert (consent.check(harbour, stm, code) is None) is allowed, text

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
+from assistantx.core import english
 from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, Person
@@ -43,6 +44,7 @@ from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.task_schema import SEAL_TOOL
 from assistantx.memory.short_term import ShortTermMemory
 
+_COMMON = english.words("common")
 RefusalRule = Literal["not_a_party", "no_answer", "no_consent"]
 ConsentState = Literal["yes", "no", "pending", "not_asked"]
 
@@ -251,7 +253,16 @@ def named_groups(office: Office, stm: ShortTermMemory) -> set[str]:
 def _mentions(text: str, person: Person) -> bool:
     names = {person.id, person.id.replace("_", " "), person.name, *person.aliases}
     names.update(w for w in person.name.split() if len(w) > 1)
-    return any(_has_words(text, n) for n in names if n)
+    return any(_has_words(text, n) and not _only_as_a_word(text, n) for n in names if n)
+
+
+def _only_as_a_word(text: str, name: str) -> bool:
+    """Whether a name that is also an everyday English word ("Will", "May") stands in the
+    text only in lower case, i.e. as the word ("will you bring ..."), never as the name."""
+    if name.casefold() not in _COMMON:
+        return False
+    pattern = rf"(?<!\w){re.escape(name.casefold())}(?:'s|’s|s)?(?!\w)"
+    return all(m.group(0).islower() for m in re.finditer(pattern, text, re.IGNORECASE))
 
 
 def _has_words(text: str, phrase: str) -> bool:
