@@ -105,3 +105,12 @@ def test_llm_baseline_without_a_model_says_so(
                  "--out", str(tmp_path / "r")])  # fmt: skip
     assert code == 2
     assert "ASSISTANTX_LLM_BASE_URL" in capsys.readouterr().out
+
+
+def test_parallel_jobs_with_an_office_file(tmp_path: Path) -> None:
+    """``--office`` with ``--jobs 2`` once crashed: the office path is not JSON."""
+    out = tmp_path / "office-jobs"
+    office = DEFAULT_OFFICE
+    args = ["eval", "--tasks", str(TASKS), "--office", str(office), "--method", "optimal"]
+    assert main([*args, "--quiet", "--limit", "2", "--jobs", "2", "--out", str(out)]) == 0
+    assert sorted(e["task_id"] for e in _lines(out)) == ["t001", "t002"]

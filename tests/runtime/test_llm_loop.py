@@ -154,6 +154,8 @@ async def test_l3_group_chat_finds_an_unknown_owner(office: Office, llm: Scripte
             Inquire(contact="Office Work", question="Does anyone have scissors to lend Lee?"),
             Wait(timeout_s=120),
         ),
+        # a yes in the group is not the owner's own yes: the consent guard wants it in her DM
+        ask("lin", "Could you lend Lee your scissors?"),
         use_the_helper,
         *fetch_from("lin", "scissors:lin")[1:],
     )

@@ -28,7 +28,9 @@ def office() -> Office:
 
 async def _fetch_stapler(s: SimSession) -> None:
     """Zhang's stapler to Lee: two hand-overs at the robot's locker."""
-    await s.do(Inform(contact="zhang", content="The robot is coming for your stapler."))
+    # Zhang's own yes in his own chat: the consent guard lets his stapler's codes out then
+    await s.do(Inquire(contact="zhang", question="Could you lend Lee your stapler?"))
+    assert (await s.do(Wait(timeout_s=60))).ok
     await s.do(Move(place="zhang"))
     await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))
     r = await s.do(WaitInPlace(person="zhang"))

@@ -96,6 +96,8 @@ async def test_replies_are_matched_to_the_question(office: Office) -> None:
 
 async def test_same_qr_code_is_never_sent_twice(office: Office) -> None:
     async with SimSession(office, requester="lee") as s:
+        await s.do(Inquire(contact="zhang", question="Could you lend Lee your stapler?"))
+        assert (await s.do(Wait(timeout_s=60))).ok
         assert (await s.do(SendQR(contact="zhang", item="stapler:zhang"))).ok
         again = await s.do(SendQR(contact="zhang", item="stapler:zhang"))
         assert not again.ok and "never resend" in again.observation

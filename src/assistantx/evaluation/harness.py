@@ -25,6 +25,7 @@ from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from assistantx.evaluation.metrics import success
 from assistantx.evaluation.relevance import relevant_people, relevant_places
 from assistantx.runtime.loop import LoopLimits
+from assistantx.sim.requester import Wish
 from assistantx.sim.run import run_in_sim
 from assistantx.sim.world import LOCKER
 
@@ -109,6 +110,7 @@ async def run_episode(
             limits=LoopLimits(max_steps=max_steps, wall_s=wall_s),
             reasoner_name=builder.spec.label,
             seed=run,
+            wish=Wish.from_goal(office, task.requester, task.goal),
         )
     except AssistantXError as exc:
         raise DatasetError(f"task {task.id} could not start: {exc}") from exc
@@ -253,7 +255,8 @@ def _run_parallel(
     todo: list[tuple[Task, int]],
     record: Callable[[str], None],
 ) -> None:
-    job = json.dumps({**asdict(config), "tasks": str(config.tasks), "out": str(config.out)})
+    # Paths (tasks, out, office) travel as text: a worker reads them back from JSON.
+    job = json.dumps({k: str(v) if isinstance(v, Path) else v for k, v in asdict(config).items()})
     with ProcessPoolExecutor(max_workers=config.jobs) as pool:
         waiting: set[Future[str]] = set()
         queue = list(todo)

@@ -41,6 +41,7 @@ from assistantx.core.trace import ActionResult
 from assistantx.core.wording import item_phrase, person_name, purpose_text
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
+from assistantx.runtime import consent
 from assistantx.runtime.replies import ReplyBox
 
 logger = logging.getLogger(__name__)
@@ -83,6 +84,19 @@ class Executor:
         if recorded is not None and recorded.action.signature() == action.signature():
             return recorded
         started = self.ctx.clock.now()
+        refusal = consent.check(self.ctx.office, stm, action)
+        if refusal is not None:
+            # Refused, whichever reasoner chose it: the agent reads why and what to do instead.
+            logger.info("action %s refused (%s): %s", action.type, refusal.rule, refusal.reason)
+            return ActionResult(
+                action=action,
+                ok=False,
+                observation=f"refused: {refusal.reason}",
+                refused=True,
+                error=refusal.rule,
+                started_at=started,
+                ended_at=started,
+            )
         try:
             ok, observation, data = await self._run(stm, action, key)
             error = None
@@ -140,6 +154,11 @@ class Executor:
                 await self._send(stm, ChatRef(kind="dm", id=stm.requester), text, key)
                 return True, f"stopped with {action.outcome}; {stm.requester} was told", {}
         raise TypeError(f"unknown action {action!r}")  # pragma: no cover
+
+    async def tell_requester(self, stm: ShortTermMemory, text: str, key: str) -> None:
+        """A note to the requester outside any action (e.g. that a claimed authority does not
+        count); it goes into the dialogue like every message."""
+        await self._send(stm, ChatRef(kind="dm", id=stm.requester), text, key)
 
     # -- messaging -----------------------------------------------------------------------
     async def _send(

@@ -18,9 +18,11 @@ until Stop, the step limit or the deadline. Fixes what the research code got wro
 - every agent call's cost reaches the trace, also when the agent then raised;
 - a ``wait`` with nothing new since the last one is refused like any repeated action (a
   different reason or timeout does not make it new);
-- a QR code goes to someone other than the requester only after they answered in this
-  instruction's dialogue: nobody is handed a locker code for a hand-over they were never
-  asked about and did not answer (a model once sent an absent colleague a deposit code).
+- locker codes pass the consent guard (``consent.py``, called by the executors): only to a
+  party of the item, only to someone who answered, and an owned item leaves its owner only
+  with the owner's own yes in their own chat (a model once sent an absent colleague a deposit
+  code); a request that claims an authority (someone's agreement, a mode, an identity) is
+  told at the start that a message cannot grant it.
 """
 
 from __future__ import annotations
@@ -52,6 +54,7 @@ from assistantx.memory.updates import (
     AvailabilityUpdate,
     MemoryUpdate,
 )
+from assistantx.runtime import consent
 from assistantx.runtime.executors import Executor
 from assistantx.runtime.failures import FailureMemory, failure_summary
 from assistantx.runtime.lease import BodyLease
@@ -135,6 +138,7 @@ class InstructionRunner:
                 text=stm.text,
                 reasoner=trace.reasoner,
             )
+            await self._notice_claims(stm)
         try:
             async with asyncio.timeout(self.limits.wall_s):
                 await self._steps(stm)
@@ -155,6 +159,18 @@ class InstructionRunner:
         else:
             await self._end(stm, "failed", "The instruction ended without an outcome.")
         return stm
+
+    async def _notice_claims(self, stm: ShortTermMemory) -> None:
+        """Tell the requester, once, that what their message claims grants nothing."""
+        claims = consent.authority_claims(stm.text, self.executor.ctx.office, stm.requester)
+        if not claims:
+            return
+        try:
+            await self.executor.tell_requester(
+                stm, consent.no_authority_notice(claims), key="authority"
+            )
+        except AssistantXError as exc:
+            logger.warning("could not tell %s about a claimed authority: %s", stm.requester, exc)
 
     async def _end(
         self, stm: ShortTermMemory, outcome: Outcome, summary: str, *, detail: str | None = None
@@ -277,17 +293,6 @@ class InstructionRunner:
                     result=step.results[-1].model_dump(mode="json"),
                 )
                 break
-            unagreed = self._unagreed_handover(stm, action)
-            if unagreed is not None:
-                feedback.append(f"Action {action.signature()} was refused: {unagreed}")
-                step.results.append(self._refused(action, unagreed))
-                await self._emit(
-                    stm,
-                    "action_result",
-                    step.index,
-                    result=step.results[-1].model_dump(mode="json"),
-                )
-                break
             signature = action.signature()
             # Waits differ only in wording; what matters is that nothing new came in since.
             seen_key = "wait()" if isinstance(action, Wait) else signature
@@ -352,19 +357,6 @@ class InstructionRunner:
             person=person, available=False, evidence="cannot be reached by message"
         )
         return self._apply_updates(stm, step, [update])
-
-    @staticmethod
-    def _unagreed_handover(stm: ShortTermMemory, action: Action) -> str | None:
-        """Why a QR code may not go out yet, or None when it may."""
-        if not isinstance(action, SendQR) or action.contact == stm.requester:
-            return None
-        answered = any(t.direction == "in" and t.person == action.contact for t in stm.dialogue)
-        if answered:
-            return None
-        return (
-            f"{action.contact} has not answered in this conversation, so they have not agreed "
-            "to this hand-over; ask them (inquire, then wait) and send the code after they reply"
-        )
 
     async def _take_body(self, stm: ShortTermMemory, step: TraceStep) -> None:
         if self.lease.holds(stm.instruction_id):

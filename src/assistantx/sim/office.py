@@ -36,6 +36,8 @@ from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.people import Reply, direct_reply, group_replies, handover_problem
 from assistantx.sim.people import perform_handover as do_handover
+from assistantx.sim.requester import Wish
+from assistantx.sim.requester import answer as requester_answer
 from assistantx.sim.robot import DistanceFn, ObservedRobot, SimRobot
 from assistantx.sim.world import World
 
@@ -183,15 +185,23 @@ class SimOffice:
         # Instructions whose codes and replies are forgotten (insertion-ordered, bounded).
         self.ended: dict[str, None] = {}
         self.requesters: dict[str, str] = {}  # instruction id → who asked for it
+        # instruction id → what its requester really wants (evaluation tasks know it): they
+        # answer the assistant's questions from it instead of with a generic line
+        self.wishes: dict[str, Wish] = {}
         self._visits: set[asyncio.Task[None]] = set()
 
     def timestamp(self) -> datetime:
         return datetime.fromtimestamp(self.clock.now(), tz=UTC)
 
-    def register_instruction(self, instruction_id: str, requester: str) -> None:
-        """The requester asked for it, so they know what the robot comes for."""
+    def register_instruction(
+        self, instruction_id: str, requester: str, wish: Wish | None = None
+    ) -> None:
+        """The requester asked for it, so they know what the robot comes for; ``wish``: what
+        they really want, which their answers to the assistant's questions follow."""
         self.told.add((instruction_id, requester))
         self.requesters[instruction_id] = requester
+        if wish is not None:
+            self.wishes[instruction_id] = wish
 
     def end_instruction(self, instruction_id: str) -> None:
         """The instruction ended: people drop its codes and forget its questions, so nothing
@@ -202,6 +212,7 @@ class SimOffice:
             self.ended = dict.fromkeys(ended[-KEEP:])
             for gone in ended[:-KEEP]:
                 self.requesters.pop(gone, None)
+                self.wishes.pop(gone, None)
         self.codes = [c for c in self.codes if c.instruction_id != instruction_id]
         self.told = {(i, p) for i, p in self.told if i != instruction_id}
 
@@ -227,17 +238,31 @@ class SimOffice:
                 # the requester does not volunteer to help with their own request
                 asker = self.requesters.get(message.instruction_id or "")
                 helpers = [p for p in members if p != asker]
-                replies = group_replies(self.world, helpers, message.text)
+                # The first who can help offers; the others see the offer and stay quiet, as
+                # people do in a group chat (the assistant then asks that person directly).
+                replies = group_replies(self.world, helpers, message.text)[:1]
                 for n, reply in enumerate(replies):
                     self._schedule_reply(reply, message, n)
             return
         person = message.chat.id
         self._receive(now, person, message)
         if message.question_id:
-            answer = direct_reply(self.world, person, message.text)
+            answer = self._requester_reply(message, person) or direct_reply(
+                self.world, person, message.text
+            )
             if answer is not None:
                 self._schedule_reply(answer, message, 0)
         self._schedule_handovers()
+
+    def _requester_reply(self, message: OutboundMessage, person: str) -> Reply | None:
+        """The requester answering a question about their own request, from what they want."""
+        instruction = message.instruction_id or ""
+        wish = self.wishes.get(instruction)
+        if wish is None or self.requesters.get(instruction) != person:
+            return None
+        if not self.world.available(person):
+            return None
+        return Reply(person, requester_answer(self.office, wish, message.text))
 
     def _receive(self, now: float, person: str, message: OutboundMessage) -> None:
         self.world.record_message(now, person)

@@ -19,6 +19,7 @@ from assistantx.sim.understanding import (
     is_question,
     mentioned_item_types,
     mentioned_requests,
+    possessor,
 )
 from assistantx.sim.world import LOCKER, World
 
@@ -89,22 +90,38 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
         if can_do(world, person, request):
             return Reply(person, f"Yes, I can do that ({request}). I'll be at the robot's locker.")
         return Reply(person, f"Sorry, I can't help with that ({request}).")
-    belongings = [t for t in types if world.office.item_type(t).kind == "belonging"]
-    if belongings:
-        t = belongings[0]
-        kept = [
-            i
-            for i, where in world.holder.items()
-            if i.startswith(f"{t}:") and where in world.places_of(person) and where != person
-        ]
-        if kept and not world.owns(person, t):  # kept in a cupboard they run
-            return Reply(person, f"Yes, I can take the {_item_name(world, t)} out for the robot.")
-        if world.owns(person, t):
-            return Reply(person, f"Yes, I have {a_thing(_item_name(world, t))}. Happy to lend it.")
-        return Reply(person, f"No, I don't have {a_thing(_item_name(world, t))}.")
+    if types:
+        return Reply(person, _about_item(world, person, types[0], text))
     if is_question(text):
         return Reply(person, "Yes, I'm here. What do you need?")
     return Reply(person, "OK, thanks!") if "robot" in text.lower() else None
+
+
+def _about_item(world: World, person: str, type_id: str, text: str) -> str:
+    """The answer to a question about an item: someone else's item they keep (a lunch in the
+    fridge they look after), their own, or one they keep for the office."""
+    name = _item_name(world, type_id)
+    whose = possessor(world.office, text, reader=person)
+    if whose is not None:  # "take Zhang's lunch out of the fridge": a keeper's job
+        where = world.holder.get(f"{type_id}:{whose}")
+        if where is not None and where != whose and where in world.places_of(person):
+            return (
+                f"Yes, I can take {_thing(world, f'{type_id}:{whose}', person)} out for the robot."
+            )
+        if not world.owns(person, type_id):
+            return f"Sorry, I don't have {_thing(world, f'{type_id}:{whose}', person)}."
+    if world.owns(person, type_id):
+        if world.office.item_type(type_id).kind == "belonging":
+            return f"Yes, I have {a_thing(name)}. Happy to lend it."
+        return f"Yes, you can have my {name}."
+    kept = [
+        i
+        for i, where in world.holder.items()
+        if i.startswith(f"{type_id}:") and where in world.places_of(person) and where != person
+    ]
+    if kept:  # kept in a cupboard they run
+        return f"Yes, I can take the {name} out for the robot."
+    return f"No, I don't have {a_thing(name)}."
 
 
 def group_replies(world: World, members: list[str], text: str) -> list[Reply]:

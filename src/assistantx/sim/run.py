@@ -15,6 +15,7 @@ from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
+from assistantx.sim.requester import Wish
 
 INSTRUCTION_ID = "ins-1"
 
@@ -35,7 +36,10 @@ async def run_in_sim(
     limits: LoopLimits | None = None,
     reasoner_name: str = "reasoner",
     seed: int = 0,
+    wish: Wish | None = None,
 ) -> SimRun:
+    """``wish``: what the requester really wants (a task's goal), so they answer the
+    assistant's questions as a person would; without it they answer generically."""
     sim = SimOffice(office, unavailable=tuple(unavailable), seed=seed)
     assistant = Assistant(
         AssistantParts(
@@ -51,7 +55,7 @@ async def run_in_sim(
     )
 
     async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
+        sim.register_instruction(stm.instruction_id, stm.requester, wish)
 
     assistant.on_instruction_start(register)
 

@@ -1,7 +1,11 @@
-"""How a simulated person reads a message: which item types and which requests it mentions.
+"""How a simulated person reads a message: which item types, which requests and whose item.
 
-This is the simulator's stand-in for a human reader, so keyword spotting is enough: it
-decides what a rule-based person understood, not what the assistant meant.
+This is the simulator's stand-in for a human reader. It reads the office's own tables, as a
+colleague who works there would: item types and facilities by their names (longest first, so
+"label printer" is a thing, not a request to print), then the office's operations by their
+verbs and names as whole words with their ordinary endings ("print", "prints", "printed",
+"printing" — never "printer"), then the English words of the person-to-person kinds (sign,
+seal) and of sending a file.
 """
 
 from __future__ import annotations
@@ -14,8 +18,8 @@ from assistantx.core.task_schema import FILE_KIND, PERSON_KINDS
 from assistantx.memory.names import normalize
 
 # The task schema's person-to-person kinds → the English words that signal them (the package's
-# English data file); the office's own operations are signalled by their verbs and their
-# product's names (``request_words``).
+# English data file); the office's own operations are signalled by their verbs, their names
+# and their product's names (``request_words``).
 PERSON_REQUEST_WORDS: dict[str, tuple[str, ...]] = {
     kind: english.kind_words(kind) for kind in PERSON_KINDS
 }
@@ -23,12 +27,12 @@ SEND_FILE_WORDS = english.kind_words(FILE_KIND)
 
 
 def request_words(office: Office) -> dict[str, tuple[str, ...]]:
-    """Request kind (or operation id) → the words that signal it, in the office's order."""
+    """Request kind (or operation id) → the words that signal it, from the operation table."""
     words = dict(PERSON_REQUEST_WORDS)
     for op in office.operations:
         if not office.runnable(op.id):
             continue
-        found = [normalize(v) for v in op.verbs]
+        found = [normalize(v) for v in (*op.verbs, op.name)]
         if op.product is not None:
             product = office.item_type(op.product)
             found += [normalize(n) for n in (product.name, *product.synonyms)]
@@ -37,43 +41,92 @@ def request_words(office: Office) -> dict[str, tuple[str, ...]]:
     return words
 
 
+def word_forms(word: str) -> tuple[str, ...]:
+    """A word with its ordinary English endings: print → prints, printed, printing; bake →
+    bakes, baked, baking; stop → stopped. Only the last word of a phrase is inflected."""
+    head, _, last = word.rpartition(" ")
+    lead = f"{head} " if head else ""
+    stems = {last}
+    if last.endswith("e"):
+        stems.add(last[:-1])
+    forms = {last, f"{last}s", f"{last}es", f"{last}d"}
+    for stem in stems:
+        forms.update({f"{stem}ed", f"{stem}ing"})
+    if len(last) > 2 and last[-1] not in "aeiouwxy" and last[-2] in "aeiou":
+        forms.update({f"{last}{last[-1]}ed", f"{last}{last[-1]}ing"})
+    if last.endswith("y"):
+        forms.update({f"{last[:-1]}ies", f"{last[:-1]}ied"})
+    return tuple(f"{lead}{f}" for f in sorted(forms, key=len, reverse=True))
+
+
 def _words(text: str) -> str:
     return f" {normalize(text)} "
+
+
+def _names(office: Office, *, only_products: bool = False) -> list[tuple[str, str]]:
+    """(name, item type id) for the item types' names (only the products'), longest first."""
+    pairs = [
+        (normalize(n), t.id)
+        for t in office.item_types
+        if t.kind == "product" or not only_products
+        for n in (t.id.replace("_", " "), t.name, *t.synonyms)
+    ]
+    return sorted((p for p in pairs if p[0]), key=lambda pair: -len(pair[0]))
 
 
 def mentioned_item_types(office: Office, text: str) -> list[str]:
     """Item types named in ``text`` (longest names first, so 'data cable' beats 'cable')."""
     haystack = _words(text)
     found: list[str] = []
-    names = sorted(
-        ((normalize(n), t.id) for t in office.item_types for n in (t.id, t.name, *t.synonyms)),
-        key=lambda pair: -len(pair[0]),
-    )
-    for name, type_id in names:
-        if not name:
-            continue
+    for name, type_id in _names(office):
         for variant in (name, name + "s", name + "es"):
-            if f" {variant} " in haystack and type_id not in found:
-                found.append(type_id)
+            if f" {variant} " in haystack:
+                if type_id not in found:
+                    found.append(type_id)
                 haystack = haystack.replace(f" {variant} ", " ")
     return found
 
 
 def mentioned_requests(office: Office, text: str) -> list[str]:
-    """Request kinds the text mentions. The office's own words are read first and used up, so
-    an English word inside one ("stamp" in "stamped envelope") does not count again."""
-    haystack = _words(text)
-    found: set[str] = set()
+    """Request kinds the text mentions, in the order it mentions them. Things (item types
+    other than products, facilities) are read first and taken out, so a word inside a thing's
+    name ("printer" in "label printer", "stamp" in "stamped envelope") is not a request."""
+    original = _words(text)
+    things = [n for n, _ in _names(office)]
+    products = {n for n, _ in _names(office, only_products=True)}
+    things += [normalize(n) for f in office.facilities for n in (f.name, *f.synonyms)]
+    haystack = original
+    for name in sorted((n for n in things if n and n not in products), key=len, reverse=True):
+        for variant in (name, name + "s", name + "es"):
+            haystack = haystack.replace(f" {variant} ", " | ")
+    at: dict[str, int] = {}
     words = request_words(office)
-    for kind in (k for k in words if k not in PERSON_REQUEST_WORDS):
-        for w in words[kind]:
-            if re.search(rf" {re.escape(w)}\w* ", haystack):
-                found.add(kind)
-                haystack = re.sub(rf" {re.escape(w)}\w* ", " ", haystack)
-    for kind, kind_words in PERSON_REQUEST_WORDS.items():
-        if any(re.search(rf" {w}\w* ", haystack) for w in kind_words):
-            found.add(kind)
-    return [k for k in words if k in found]
+    rest = original  # the office's words are used up as they are read
+    for kind in (k for k in words if k not in PERSON_REQUEST_WORDS and k != FILE_KIND):
+        for form in (f for w in words[kind] for f in word_forms(w)):
+            if f" {form} " in haystack:
+                at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
+                haystack = haystack.replace(f" {form} ", " | ")
+                rest = rest.replace(f" {form} ", " | ")
+    # the English words of signing, sealing and sending, in what the office's words left
+    for kind in (*PERSON_REQUEST_WORDS, FILE_KIND):
+        for form in (f for w in words[kind] for f in word_forms(w)):
+            if f" {form} " in rest:
+                at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
+    return sorted(at, key=lambda k: at[k])
+
+
+def possessor(office: Office, text: str, *, reader: str) -> str | None:
+    """The person (not the reader) whose item the text names: "Zhang Wei's lunch" → zhang."""
+    lowered = text.casefold().replace("’", "'")
+    for person in office.people:
+        if person.id == reader:
+            continue
+        names = {person.id, person.name, *person.aliases, person.name.split()[0]}
+        for name in sorted(names, key=len, reverse=True):
+            if re.search(rf"(?<!\w){re.escape(name.casefold())}'s\b", lowered):
+                return person.id
+    return None
 
 
 def is_question(text: str) -> bool:

@@ -32,6 +32,9 @@ class Role:
     item_type: str | None = None  # owner roles
     facility: str | None = None  # guard roles
     wants_file: bool = False  # the answer carries the person's file
+    # the person's own item leaves them: a helper found in a group chat is then asked in
+    # their own chat, where the consent guard (runtime/consent.py) looks for the yes
+    own_item_leaves: bool = False
 
 
 @dataclass(frozen=True)
@@ -146,6 +149,13 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             name = office.item_type(item_type).name
             keeper = office.keeper(part.owner, item_type) if part.owner else None
             if keeper is not None:  # kept in a cupboard: its guard takes it out
+                if part.owner != a:  # with the owner's own yes: the keeper can't give it away
+                    plan.add_role(
+                        _named(
+                            part.owner or "",
+                            f"Could you let {who} have your {name} from the {keeper.name}?",
+                        )
+                    )
                 role = Role(
                     key=f"guard:{keeper.id}",
                     kind="guard",
@@ -170,6 +180,7 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
                     question=f"Could you lend {who} your {name}?",
                     group_question=f"Does anyone have a {name} {who} could borrow?",
                     item_type=item_type,
+                    own_item_leaves=True,
                 )
                 item = f"{item_type}:{{{role.key}}}"
                 plan.add_goal({"holds": [a, f"{item_type}:*"]})

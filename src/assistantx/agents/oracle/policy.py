@@ -15,7 +15,9 @@ count under independent, equal absence and the worst case are the same for every
 in effect the search puts the nearest candidate first, as docs/task-semantics.md says; the
 search keeps the rule explicit and holds for any other cost model one plugs in.
 When every candidate in memory is away the agent asks the largest group chat the requester
-belongs to and takes the first helper who answers; nobody answering means unachievable.
+belongs to and takes the first helper who answers (asking them again in their own chat when
+their own item would leave them: that is where consent is given); nobody answering means
+unachievable.
 
 The policy is a generator: it yields a batch of actions and is sent back what it needs to
 decide the next batch (who replied, whether the batch succeeded). The same generator runs in
@@ -148,9 +150,18 @@ def optimal_script(
                 Wait(reason=f"waiting for an answer in {group}", timeout_s=ASK_TIMEOUT_S),
             ]
             helpers = [p for p in feedback.repliers if p != a and p not in tried]
-            if helpers:
-                log.assigned[role.key] = helpers[0]
+            for helper in helpers[: 1 if not role.own_item_leaves else None]:
+                if role.own_item_leaves:  # a yes in the group: the owner's own yes in their chat
+                    feedback = yield [
+                        Inquire(contact=helper, question=role.question),
+                        Wait(reason=f"waiting for {helper}'s answer", timeout_s=ASK_TIMEOUT_S),
+                    ]
+                    if helper not in feedback.repliers:
+                        continue
+                log.assigned[role.key] = helper
                 log.resolutions[role.key] = "group"
+                break
+            if role.key in log.assigned:
                 continue
         log.resolutions[role.key] = "failed"
         asked = ", ".join(names[p] for p in tried) or "nobody in memory"
@@ -254,7 +265,7 @@ def dry_run(
     """Play the policy against the truth without the simulator (for classifying variants).
 
     Asked people reply when available; in a group, the available members able to fill the
-    role reply in member order, as the simulated people do.
+    role: the first of them in member order answers, as the simulated people do.
     """
     ltm = ltm or LongTermMemory(office)
     log = PolicyLog()
@@ -263,7 +274,7 @@ def dry_run(
     batch = next(script)
     while True:
         actions.extend(batch)
-        feedback = _oracle(batch, plan, log, office, unavailable)
+        feedback = _oracle(batch, plan, office, unavailable, base.requester)
         try:
             batch = script.send(feedback)
         except StopIteration:
@@ -272,8 +283,10 @@ def dry_run(
 
 
 def _oracle(
-    batch: list[Action], plan: TaskPlan, log: PolicyLog, office: Office, unavailable: set[str]
+    batch: list[Action], plan: TaskPlan, office: Office, unavailable: set[str], requester: str
 ) -> Feedback:
+    """Who answers: the asked person when available; in a group, the first available member
+    able to fill the role (the others see the offer and stay quiet, as in the simulator)."""
     asks = [x for x in batch if isinstance(x, Inquire)]
     if not asks:
         return Feedback()
@@ -281,9 +294,10 @@ def _oracle(
     if any(g.id == contact for g in office.groups):
         role = next(r for r in plan.roles if r.group_question == asks[0].question)
         members = office.group(contact).members
-        return Feedback(
-            tuple(p for p in members if p not in unavailable and able(role, office, p)), ok=True
-        )
+        helpers = [
+            p for p in members if p not in unavailable and p != requester and able(role, office, p)
+        ]
+        return Feedback(tuple(helpers[:1]), ok=True)
     if contact in unavailable:
         return Feedback((), ok=False)
     return Feedback((contact,))

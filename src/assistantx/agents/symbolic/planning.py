@@ -145,6 +145,27 @@ class Planner:
             beneficiary=t.recipient,
         )
 
+    def _consent(self, n: int, t: Task, requester: str) -> list[Role]:
+        """The owner's own yes for their item that a keeper takes out (Joy's yoghurt from the
+        fridge): the keeper cannot give it away for them (runtime/consent.py)."""
+        if t.owner is None or t.owner == requester or t.item is None:
+            return []
+        kept = self.office.keeper(t.owner, t.item)
+        if kept is None:
+            return []
+        return [
+            Role(
+                f"{n}.owner",
+                "allow",
+                requester,
+                fixed=t.owner,
+                item_type=t.item,
+                item_owner=t.owner,
+                facility=kept.id,
+                beneficiary=t.recipient,
+            )
+        ]
+
     def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
         phases: list[Phase] = []
@@ -288,6 +309,7 @@ class Planner:
                         )
                     ]
                 phases = [Forward(owner, recipient, f"file:{owner}")]
+        roles = [*self._consent(n, t, requester), *roles]
         confirms: list[Phase] = [Confirm(r) for r in roles if r.confirm]
         return CompiledTask(t, roles, [*confirms, *phases])
 

@@ -25,7 +25,8 @@ from assistantx.memory.graph import LongTermMemory
 
 DistanceFn = Callable[[str, str], float]
 # A role is one of the person-to-person parts of a transfer, or the task kind it fills.
-RoleKind = Literal["lend", "give", "keep", "receive", TaskKind]
+# ``allow``: the owner's own yes for their item that a keeper hands over (no hand-over of theirs).
+RoleKind = Literal["lend", "give", "keep", "allow", "receive", TaskKind]
 RoleStatus = Literal["bound", "ask", "waiting", "group", "group_waiting", "exhausted"]
 
 # How long an availability observation stays true (s): people come and go.
@@ -52,6 +53,12 @@ class Role:
     @property
     def asks_ownership(self) -> bool:
         return self.kind == "lend"
+
+    @property
+    def own_item_leaves(self) -> bool:
+        """Whether the person's own item leaves them: their yes must be in their own chat
+        (runtime/consent.py), so a yes in a group chat is followed by a direct question."""
+        return self.kind in ("lend", "give")
 
 
 @dataclass
@@ -110,6 +117,8 @@ class Roles:
                 return f"hand over your {thing} for {beneficiary}"
             case "keep":
                 return f"take {self._whose(role)} {thing} out of the {place} for the robot"
+            case "allow":
+                return f"let {beneficiary} have your {thing} from the {place}"
             case "receive":
                 return (
                     f"be at your desk soon to receive a delivery from {self._name(role.requester)}"
@@ -130,7 +139,8 @@ class Roles:
 
     def question(self, role: Role, person: str) -> str:
         first = self.office.person(person).name.split()[0]
-        tail = " The robot will come to you for the hand-over." if role.kind != "send_file" else ""
+        comes = role.kind not in ("send_file", "allow")
+        tail = " The robot will come to you for the hand-over." if comes else ""
         return f"Hi {first}, could you {self._request(role, anyone=False)}?{tail}"
 
     def group_question(self, role: Role) -> str:
@@ -227,6 +237,18 @@ class Roles:
             return state
         if role.fixed is not None:
             return state
+        for person in helpers if role.own_item_leaves else []:
+            # said yes in the group: now asked in their own chat, where consent is given
+            if person in state.excluded:
+                continue
+            q = ev.asked(person, self.question(role, person))
+            if q is None:
+                state.status, state.person = "ask", person
+                return state
+            state.asked.append(person)
+            if ev.pending(q):
+                state.status, state.person = "waiting", person
+                return state
         if group_q is not None:
             state.group = group_q.contact
             if ev.pending(group_q):
@@ -265,7 +287,8 @@ class Roles:
         group_q = self._group_asked(role, ev)
         for person in dict.fromkeys(people):
             q = ev.asked(person, self.question(role, person))
-            for question in (q, group_q):
+            # a yes in the group binds only where nothing of the person's own leaves them
+            for question in (q,) if role.own_item_leaves else (q, group_q):
                 if question is None:
                     continue
                 turns = [t for t in ev.answers(question) if t.person == person]

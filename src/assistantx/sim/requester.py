@@ -1,0 +1,190 @@
+"""The simulated requester: answers the assistant's questions from what they really want.
+
+A person who asked for something knows what they meant. When the assistant asks them back,
+they answer the question that was asked, from the task's truth (its goal milestones):
+
+- a question that names options ("Do you mean Grace Obi, or the grace period talk?") gets the
+  option that fits what they want ("the grace period talk");
+- "Shall I ...?" gets "Yes, please." when the offer fits what they want, else "No, thanks.";
+- "Who should get ...?" / "Whose ...?" / "Who should sign ...?" get the person's name, "Which
+  item ...?" / "What ...?" the item;
+- anything else gets what they want, said plainly ("the stapler, for Min").
+
+A task that asks for nothing (its goal is only that the requester is told) answers every
+offer with "No, thanks." The rules read only the question and the truth, never the
+assistant's reading, so a wrong reading is corrected rather than confirmed.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from assistantx.core.goals import Milestone, parse_milestone
+from assistantx.core.office import Office, Person
+from assistantx.sim.understanding import mentioned_item_types
+
+_OFFER = re.compile(
+    r"^\s*(?:ok(?:ay)?[,.]?\s+)?(shall|should|do you want me to|would you like me to|may|can|"
+    r"want me to)\b",
+    re.IGNORECASE,
+)
+_LEADS = re.compile(
+    r"^(?:sorry[,.]?\s*)?(?:i still don'?t understand\.?\s*)?(?:do|did)\s+you\s+mean\s+|"
+    r"^(?:which|who|what)\b[^:]*:\s*|^is\s+it\s+|^(?:either\s+)",
+    re.IGNORECASE,
+)
+
+
+@dataclass(frozen=True)
+class Wish:
+    """What the requester wants, read from the task's goal."""
+
+    requester: str
+    recipients: tuple[str, ...] = ()
+    owners: tuple[str, ...] = ()
+    doers: tuple[str, ...] = ()  # signers, sealers
+    items: tuple[str, ...] = ()  # item type ids, products and their inputs alike
+    wants_something: bool = True
+    people: frozenset[str] = field(default_factory=frozenset)
+
+    @classmethod
+    def from_goal(cls, office: Office, requester: str, goal: list[Milestone]) -> Wish:
+        recipients: list[str] = []
+        owners: list[str] = []
+        doers: list[str] = []
+        items: list[str] = []
+
+        def item(item_id: str) -> None:
+            type_id, _, owner = item_id.partition(":")
+            items.append(type_id)
+            op = office.making(type_id)
+            if op is not None and op.input is not None:
+                items.append(op.input)  # a printout is of a file
+            if owner not in ("", "*") and owner != requester:
+                owners.append(owner)
+
+        for milestone in goal:
+            name, args = parse_milestone(milestone)
+            match name:
+                case "holds" | "received":
+                    recipients.append(args[0])
+                    item(args[1])
+                case "signed":
+                    item(args[0])
+                    doers.append(args[1])
+                case "sealed" | "printed" | "copied" | "heated" | "made":
+                    item(args[0])
+        people = {*recipients, *owners, *doers} - {requester}
+        return cls(
+            requester=requester,
+            recipients=tuple(dict.fromkeys(recipients)),
+            owners=tuple(dict.fromkeys(owners)),
+            doers=tuple(dict.fromkeys(doers)),
+            items=tuple(dict.fromkeys(items)),
+            wants_something=bool(items or recipients),
+            people=frozenset(people),
+        )
+
+
+def answer(office: Office, wish: Wish, question: str) -> str:
+    """What the requester says to ``question``."""
+    options = _options(question)
+    if len(options) >= 2:
+        chosen = _choose(office, wish, options)
+        if chosen is not None:
+            return chosen
+    if _OFFER.search(question) or question.strip().lower().startswith(("is that", "is it ok")):
+        return "Yes, please." if _fits(office, wish, question) else "No, thanks."
+    if not wish.wants_something:
+        return "Nothing, thanks."
+    lowered = question.lower()
+    if re.search(r"\bwho(m|se)?\b", lowered):
+        if "whose" in lowered and wish.owners:
+            return _name(office, wish.owners[0]) + "'s."
+        if re.search(r"\b(sign|stamp|seal|do that)", lowered) and wish.doers:
+            return _name(office, wish.doers[0]) + "."
+        others = [p for p in wish.recipients if p != wish.requester]
+        return (_name(office, others[0]) if others else "Me") + "."
+    if re.search(r"\b(which|what)\b", lowered) and wish.items:
+        return f"The {_item_name(office, wish.items[0])}."
+    return _plainly(office, wish)
+
+
+def _options(question: str) -> list[str]:
+    """The options a question names: "Do you mean A, or B?" → ["A", "B"]."""
+    sentences = [
+        s
+        for s in re.split(r"(?<=[.!?])\s+", question)
+        if " or " in s or (":" in s and "," in s.partition(":")[2])
+    ]
+    if not sentences:
+        return []
+    body = sentences[-1].strip().rstrip("?.! ")
+    body = _LEADS.sub("", body, count=1)
+    parts = [p.strip(" ,;:'\"") for p in re.split(r",?\s+or\s+|,\s*", body)]
+    return [p for p in parts if p]
+
+
+def _choose(office: Office, wish: Wish, options: list[str]) -> str | None:
+    """The option that fits the wish best; None when none fits better than the others."""
+
+    def score(option: str) -> int:
+        people = _people_in(office, option) - {wish.requester}
+        items = set(mentioned_item_types(office, option))
+        return (
+            2 * len(people & wish.people)
+            - 2 * len(people - wish.people)
+            + 2 * len(items & set(wish.items))
+            - len(items - set(wish.items))
+        )
+
+    scored = sorted(((score(o), n, o) for n, o in enumerate(options)), key=lambda x: (-x[0], x[1]))
+    if len(scored) > 1 and scored[0][0] == scored[1][0]:
+        return None
+    return scored[0][2] if scored[0][0] >= 0 else None
+
+
+def _fits(office: Office, wish: Wish, offer: str) -> bool:
+    """Whether an offer ("Shall I bring you Zhang's stapler?") is what the requester wants."""
+    if not wish.wants_something:
+        return False
+    people = _people_in(office, offer) - {wish.requester}
+    items = set(mentioned_item_types(office, offer))
+    # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
+    # did not ask for: no
+    return not (people - wish.people or items - set(wish.items))
+
+
+def _people_in(office: Office, text: str) -> set[str]:
+    return {p.id for p in office.people if _mentions(text, p)}
+
+
+def _mentions(text: str, person: Person) -> bool:
+    lowered = text.casefold()
+    names = {person.name, *person.aliases, *person.name.split()}
+    for name in (n for n in names if len(n) > 1):
+        if re.search(rf"(?<!\w){re.escape(name.casefold())}(?!\w)", lowered):
+            # a name that is also a word counts only when written as a name
+            if name[:1].isupper() and not re.search(rf"(?<!\w){re.escape(name)}(?!\w)", text):
+                continue
+            return True
+    return False
+
+
+def _name(office: Office, person: str) -> str:
+    return office.person(person).name
+
+
+def _item_name(office: Office, type_id: str) -> str:
+    return office.item_type(type_id).name
+
+
+def _plainly(office: Office, wish: Wish) -> str:
+    """What they want, in a few words: "Zhang Wei's stapler, for Min Ho"."""
+    thing = _item_name(office, wish.items[0]) if wish.items else "it"
+    whose = f"{_name(office, wish.owners[0])}'s {thing}" if wish.owners else f"the {thing}"
+    others = [p for p in wish.recipients if p != wish.requester]
+    to = f", for {_name(office, others[0])}" if others else ", for me"
+    by = f", signed by {_name(office, wish.doers[0])}" if wish.doers else ""
+    return f"I mean {whose}{to}{by}."
