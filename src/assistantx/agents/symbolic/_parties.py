@@ -20,6 +20,7 @@ _DATIVE_VERBS = english.words("dative_verbs")
 # "Wang's desk": a person's place, where the robot meets them.
 _PLACE_WORDS = english.words("place_words")
 _OBJECT_PRONOUNS = english.words("object_pronouns")
+OTHER_POSSESSIVES = english.words("other_possessives")
 _OBJECT_STARTS = english.words("object_starts") | {"one", "some", "another"}
 # The words before a person that make them the recipient, the source or the doer.
 _TO = frozenset({"to", "for", "with"})
@@ -184,7 +185,8 @@ def clause_roles(
         elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
             following = ms[n + 1] if n + 1 < len(ms) else None
             others = [x for x in last_person if x != requester]
-            if following is not None and following.kind == "item":
+            possessive_form = tokens[m.start].word in OTHER_POSSESSIVES
+            if following is not None and following.kind == "item" and possessive_form:
                 continue  # "her stapler": a possessive
             prev = prev_word(tokens, m.start)
             # "take her my ice pack", "bring her some": she receives (not "forward them to")

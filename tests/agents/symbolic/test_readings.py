@@ -1,0 +1,118 @@
+"""Competing readings are kept and, when they lead to different actions, asked about (issue 23):
+a name that is also an ordinary word, a pronoun's referent, a third-party delivery."""
+
+from __future__ import annotations
+
+import pytest
+from _offices import parser, tasks_of
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("harbour", "may", "print the flyer for the grace period talk"),
+        ("harbour", "ken", "to be frank I need a ruler"),  # frank: an operation's verb here
+        ("harbour", "may", "print the poster about the rose garden"),
+        ("harbour", "ken", "print my notes for the art workshop"),
+        ("default", "lee", "print the flyer for the sun deck party"),
+    ],
+)
+def test_a_lowercase_word_that_is_also_a_name_stays_a_word(
+    office: str, who: str, text: str
+) -> None:
+    for kind, _item, _owner, recipient in tasks_of(office, text, who):
+        assert recipient == who, (kind, recipient)
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "recipient"),
+    [
+        ("harbour", "may", "print my slides for Grace", "grace"),
+        ("harbour", "ken", "take this ruler to mark", "mark"),  # after "to": a person
+        ("harbour", "may", "give rose a calculator", "rose"),
+        ("default", "lee", "bring Sun Li a stapler", "sun"),
+    ],
+)
+def test_syntax_makes_a_word_name_a_person(
+    office: str, who: str, text: str, recipient: str
+) -> None:
+    assert [t[3] for t in tasks_of(office, text, who)] == [recipient]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "person", "word"),
+    [
+        ("harbour", "may", "print the flyer for the Grace period talk", "Grace Huang", "grace"),
+        ("harbour", "ken", "print the invites for the Joy Division night", "Joy Achebe", "joy"),
+    ],
+)
+def test_disagreeing_evidence_asks_one_question_naming_both(
+    office: str, who: str, text: str, person: str, word: str
+) -> None:
+    p = parser(office)
+    frame = p.parse(text, who)
+    assert frame.tasks == [] and frame.question
+    assert person in frame.question and f"the {word}" in frame.question.lower()
+    as_word = p.parse_with_answers(text, who, [f"the {word} one, not a person"])
+    assert [t.recipient for t in as_word.tasks] == [who]
+    as_person = p.parse_with_answers(text, who, [person])
+    assert [t.recipient for t in as_person.tasks] == [person.split()[0].lower()]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "item", "owner", "recipient"),
+    [
+        ("default", "lee", "Gao hurt her wrist, please take her my cup", "cup", "lee", "gao"),
+        ("default", "wang", "Min needs a pen, bring her one", "pen", None, "gao"),
+        ("default", "lee", "Zhou Yan has a cold. Bring him some wipes", "wipes", None, "zhou"),
+        (
+            "harbour",
+            "may",
+            "Pat hurt her hand, please take her my umbrella",
+            "umbrella",
+            "may",
+            "pat",
+        ),
+        (
+            "harbour",
+            "ken",
+            "Rose needs a highlighter, can you bring her one?",
+            "highlighter",
+            None,
+            "rose",
+        ),
+    ],
+)
+def test_a_pronoun_recipient_is_the_person_it_refers_to(
+    office: str, who: str, text: str, item: str, owner: str | None, recipient: str
+) -> None:
+    assert tasks_of(office, text, who) == [("transfer", item, owner, recipient)]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("default", "lee", "please take her my cup"),
+        ("harbour", "may", "bring him a ruler"),
+    ],
+)
+def test_a_pronoun_with_no_referent_is_asked_never_the_requester(
+    office: str, who: str, text: str
+) -> None:
+    frame = parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.question
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "kind", "recipient"),
+    [
+        ("harbour", "may", "print the minutes and leave them on Mark's desk", "print", "mark"),
+        ("harbour", "ken", "drop a calculator by Hope's desk", "transfer", "hope"),
+        ("default", "lee", "print my report and put it on Zhang's desk", "print", "zhang"),
+        ("default", "wang", "leave some paper at Chen's desk", "transfer", "chen"),
+    ],
+)
+def test_a_third_party_delivery_goes_to_the_person_named(
+    office: str, who: str, text: str, kind: str, recipient: str
+) -> None:
+    assert [(t[0], t[3]) for t in tasks_of(office, text, who)] == [(kind, recipient)]
