@@ -116,3 +116,28 @@ def test_a_third_party_delivery_goes_to_the_person_named(
     office: str, who: str, text: str, kind: str, recipient: str
 ) -> None:
     assert [(t[0], t[3]) for t in tasks_of(office, text, who)] == [(kind, recipient)]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "item", "recipient"),
+    [
+        (
+            "default",
+            "lee",
+            "Hu's scissors are broken. could you bring her another pair?",
+            "scissors",
+            "hu",
+        ),
+        (
+            "harbour",
+            "may",
+            "Dawn's calculator is broken. could you bring her another one?",
+            "calculator",
+            "dawn",
+        ),
+    ],
+)
+def test_a_pronoun_after_a_stated_fact_is_the_person_it_named(
+    office: str, who: str, text: str, item: str, recipient: str
+) -> None:
+    assert tasks_of(office, text, who) == [("transfer", item, None, recipient)]

@@ -163,3 +163,58 @@ def test_a_third_persons_need_is_restated_and_asked(
     assert [(t.kind, t.item, t.owner, t.recipient) for t in yes.tasks] == [
         ("transfer", item, None, recipient)
     ]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "kind", "recipient"),
+    [
+        ("default", "lee", "I was wondering if you could print my report", "print", "lee"),
+        (
+            "default",
+            "wang",
+            "Chen is looking for a pen, could you help him out?",
+            "transfer",
+            "chen",
+        ),
+        (
+            "harbour",
+            "may",
+            "Ray could do with a highlighter, can you take him one?",
+            "transfer",
+            "ray",
+        ),
+        ("harbour", "ken", "the ruler is for Hope, please bring it to her", "transfer", "hope"),
+    ],
+)
+def test_requests_wrapped_in_statements(
+    office: str, who: str, text: str, kind: str, recipient: str
+) -> None:
+    assert [(t[0], t[3]) for t in tasks_of(office, text, who)] == [(kind, recipient)]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("default", "lee", "hold off on the coffee, I'll get it myself"),
+        ("harbour", "may", "Yes, I have a ruler. Happy to lend it."),
+        ("harbour", "ken", "I'll fetch the calculator myself"),
+    ],
+)
+def test_the_speakers_own_plans_and_offers_move_nothing(office: str, who: str, text: str) -> None:
+    frame = parser(office).parse(text, who)
+    assert frame.tasks == [], frame
+
+
+def test_a_question_about_one_person_is_answered_about_them() -> None:
+    p = parser("harbour")
+    has = p.parse("does Faith have a calculator?", "may")
+    assert has.question and "Faith Oduya has a calculator" in has.question
+    yes = p.parse_with_answers("does Faith have a calculator?", "may", ["yes"])
+    assert [(t.item, t.owner, t.recipient) for t in yes.tasks] == [("calculator", "faith", "may")]
+    has_not = p.parse("does Hope have a calculator?", "may").question or ""
+    assert "Hope Mensah has no calculator" in has_not
+
+
+def test_a_question_about_a_product_names_the_machine_that_makes_it() -> None:
+    frame = parser("harbour").parse("where can I get a stamped envelope?", "may")
+    assert frame.question and "franking machine" in frame.question

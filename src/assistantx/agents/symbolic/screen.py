@@ -47,7 +47,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic._lexicon import Lexicon
-from assistantx.agents.symbolic.speech import SpeechActs
+from assistantx.agents.symbolic.speech import NEED_PHRASES, SpeechActs
 from assistantx.core import language
 from assistantx.core.english import entries_of
 from assistantx.core.english import words as english_words
@@ -349,8 +349,20 @@ class RequestScreen:
     def _item_question(self, piece: Piece, item: str, requester: str) -> Finding:
         t = self.office.item_type(item)
         owners = [o for o in self.office.owners_of(item, known_only=True) if o != requester]
+        asked = [p for p in self._named(piece.text, "person") if p != requester]
         names = [self.office.person(o).name for o in owners[:4]]
-        if names:
+        makers = [f for f in self.office.facilities if item in f.products]
+        whose = ""
+        if len(asked) == 1:  # "does Hope have a calculator?"
+            who = self.office.person(asked[0]).name
+            if asked[0] in owners:
+                answer, whose = f"As far as I know, {who} has a {t.name}.", f"{who}'s"
+            else:
+                answer = f"As far as I know, {who} has no {t.name}."
+        elif makers:
+            where = self.office.location(makers[0].location).name
+            answer = f"The {makers[0].name} at the {where} makes them."
+        elif names:
             has = "has" if len(names) == 1 else "have"
             answer = f"As far as I know, {_listed(names)} {has} a {t.name}."
         else:
@@ -363,7 +375,7 @@ class RequestScreen:
             piece,
             "a question that may be a request: answered, then asked",
             message=answer,
-            offer=f"{verb} me a {t.name}",
+            offer=f"{verb} me {whose or 'a'} {t.name}",
             shall=f"Shall I {verb} you one?",
         )
 
@@ -530,13 +542,19 @@ class RequestScreen:
         evidence: list[Evidence] = []
         text, found = self._purposes(text)
         evidence += found
+        for phrase in NEED_PHRASES:  # "Chen is looking for a pen": Chen needs a pen
+            spaced = r"[\s']*".join(re.escape(w) for w in phrase)
+            text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
         subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
         text = self._name_pronouns(text, hints, subjects)
         said = [h.item_type for h in hints if h.kind == "condition" and h.item_type]
-        said += [c for c in context if not c.startswith("person:")]
+        stated = [c for c in context if not c.startswith("person:")]
+        said += stated
         if said and not self._names_an_item(text):
             thing = self.office.item_type(said[-1] or "").name
-            for phrase in (*self.en.another_one, "some"):
+            # "the stapler is for Wang, bring it to him": "it" is the stated item
+            back = ("it", "them") if stated and said[-1] == stated[-1] else ()
+            for phrase in (*self.en.another_one, "some", *back):
                 pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
                 match = pattern.search(text)
                 if match:
@@ -549,7 +567,7 @@ class RequestScreen:
         """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
         pack": with the fact taken out, a pronoun that can only mean the one person it named
         gets the name back."""
-        people = {h.person for h in hints if h.kind in ("availability", "location")}
+        people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
         people |= subjects
         if len(people) != 1:
             return text
@@ -685,15 +703,11 @@ _DROPPED = frozenset({"negated", "fact", "withdrawn", "wish", "thanks", "questio
 
 
 def _stem(word: str) -> str:
-    """'cutting' → 'cut', 'writes' → 'write', 'stapling' → 'staple' (enough for purposes)."""
+    """'cutting' → 'cut', 'writes' → 'write', 'stapling' → 'staple' (the verb's lemma, from
+    the morphology library; a word it does not know as a verb stays as it is)."""
     w = word.lower()
-    if w.endswith("ing") and len(w) > 5:
-        w = w[:-3]
-        if len(w) > 2 and w[-1] == w[-2]:
-            w = w[:-1]
-    elif w.endswith("s") and not w.endswith("ss") and len(w) > 3:
-        w = w[:-1]
-    return w.removesuffix("e")
+    found = language.verb_lemmas(w)
+    return min(found, key=len) if found else w
 
 
 def _purpose(phrase: str) -> str:
@@ -716,7 +730,7 @@ def _pieces(text: str) -> list[Piece]:
             piece_text = chunk.strip()
             if piece_text:
                 start = sentence_start + sub + lead
-                asks = m is not None and "?" in m.group(0)
+                asks = b is None and m is not None and "?" in m.group(0)  # its last part
                 out.append(
                     Piece(piece_text, start, start + len(piece_text), _words(piece_text), asks)
                 )

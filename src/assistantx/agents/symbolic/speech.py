@@ -28,6 +28,7 @@ verbs ("spilled", "hurt") come from the morphology library (``core.language``).
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from typing import Literal
 
@@ -54,6 +55,10 @@ _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
 _BORROW = english.words("borrow_words")
+NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
+_YOU = frozenset({"you", "u", "ya"})
+_SELF_PLANS = frozenset({"ill"})
+_SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
 
 
 @dataclass(frozen=True)
@@ -70,6 +75,10 @@ def _content(words: list[str]) -> list[str]:
     while k < len(words) and words[k] in _OPENERS:
         k += 1
     return words[k:]
+
+
+def _has_need_phrase(w: list[str]) -> bool:
+    return any(_starts(w[n:], p) for n in range(len(w)) for p in NEED_PHRASES)
 
 
 def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
@@ -144,6 +153,17 @@ class SpeechActs:
         w = _content(words)
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
+        if _has_need_phrase(w):
+            return False  # "Chen is looking for a pen": a need
+        pairs = itertools.pairwise(w)
+        if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
+            return False  # "I was wondering if you could print ..."
+        if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
+            return True  # "happy to lend it": the speaker offers, nobody asks
+        if w[0] in _SELF_PLANS or w[:2] == ["i", "will"]:
+            return not (
+                len(w) > 1 and w[-1] != "myself" and set(w[1:3]) & _NEED
+            )  # "I'll get it myself"
         if w[0] in _SUBJECT_VERB:
             return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."
         if (
@@ -170,6 +190,8 @@ class SpeechActs:
     def need(self, words: list[str], requester_words: frozenset[str]) -> bool:
         """ "Min needs scissors": someone else's need, said as a fact."""
         w = _content(words)
+        if _has_need_phrase(w) and self._named(w[0]):
+            return True
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
