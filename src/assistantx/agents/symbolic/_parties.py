@@ -26,7 +26,7 @@ _OBJECT_STARTS = english.words("object_starts") | {"one", "some", "another"}
 _TO = frozenset({"to", "for", "with"})
 _MEET_AT = frozenset({"to", "at", "for", "on", "by"})
 # "Min needs scissors": the one who needs the item gets it.
-_NEEDS = english.words("need_verbs")
+_NEEDS = english.words("need_verbs") | english.words("receive_verbs")
 _DIRECT = frozenset({"ask", "have", "let", "tell"})
 
 
@@ -113,7 +113,9 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     ),
     PersonRule("Wang's stapler: an owner of the item", lambda s: s.possessive, "owner"),
     PersonRule(
-        "Min needs scissors: the one in need receives", lambda s: s.nxt in _NEEDS, "recipient"
+        "Min needs / gets scissors: the one in need receives",
+        lambda s: s.nxt in _NEEDS,
+        "recipient",
     ),
     PersonRule("from Wang: the source", lambda s: s.prev == "from", "source"),
     PersonRule("by Wang: the doer", lambda s: s.prev == "by", "actor"),

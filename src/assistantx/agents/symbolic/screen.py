@@ -313,7 +313,7 @@ class RequestScreen:
             people = self._named(piece.text, "person")
             who = self.office.person(people[0]).name if len(people) == 1 else "them"
             message = (
-                f"I only pass on messages as part of an errand, so please thank {who} yourself."
+                f"I only pass on messages as part of an errand, so please tell {who} yourself."
             )
             return Finding("thanks", piece, "thanks to pass on, not a request", message=message)
         return Finding("thanks", piece, "thanks, not a request", message="You're welcome!")
@@ -367,7 +367,8 @@ class RequestScreen:
             answer = f"As far as I know, {_listed(names)} {has} a {t.name}."
         else:
             answer = f"I don't know of anyone here with a {t.name}."
-        if t.kind not in ("belonging", "product"):
+        if t.kind not in ("belonging", "product"):  # a document, a file: not for me to tell
+            answer = f"I can't tell that about the {t.name} from what I know."
             return Finding("question", piece, "a question, answered in words", message=answer)
         verb = "get" if t.kind == "product" else "bring"
         return Finding(

@@ -58,6 +58,7 @@ _BORROW = english.words("borrow_words")
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
 _SELF_PLANS = frozenset({"ill"})
+_NEGATIONS = english.words("statement_negations")
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
 
 
@@ -135,6 +136,8 @@ class SpeechActs:
                 return "polite"
             return "info"
         asked = second in _ASKEES or self._person_at(w, 1)
+        if first in _MODALS and asked and "be" in w[2:4]:
+            return "info"  # "will Ray be in tomorrow?"
         if first in _MODALS and (asked or second in ("you", "u", "ya", "i", "we")):
             return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
         if first in _MODALS and second in ("not", "nt"):
@@ -179,6 +182,8 @@ class SpeechActs:
             return False
         for n in range(1, min(len(w), 7)):
             x = w[n]
+            if x in _NEGATIONS:
+                return True  # "Wang doesn't need the stapler any more": nobody asks
             if x in _NEED or x in _WILLING or x in ("mean", "meant"):
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
             if x in _STATE_VERBS or (x not in self.lex.cue_words and language.is_finite_verb(x)):
