@@ -141,3 +141,53 @@ def test_a_pronoun_after_a_stated_fact_is_the_person_it_named(
     office: str, who: str, text: str, item: str, recipient: str
 ) -> None:
     assert tasks_of(office, text, who) == [("transfer", item, None, recipient)]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "excluded", "item"),
+    [
+        ("default", "lee", "bring me a stapler, not from Wang though", "wang", "stapler"),
+        ("default", "wang", "Bring me scissors. Not Chen's, they're blunt", "chen", "scissors"),
+        ("harbour", "may", "get me a calculator, but not Will's", "will", "calculator"),
+    ],
+)
+def test_an_excluded_person_is_kept_out_never_made_the_owner(
+    office: str, who: str, text: str, excluded: str, item: str
+) -> None:
+    frame = parser(office).parse(text, who)
+    assert [(t.kind, t.item, t.owner) for t in frame.tasks] == [("transfer", item, None)]
+    assert excluded in frame.unusable(item)
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "owner", "recipient"),
+    [
+        ("default", "lee", "Gao asked for my scissors, please bring them to her", "lee", "gao"),
+        (
+            "harbour",
+            "may",
+            "Ken wants to borrow my umbrella, can you take it to him?",
+            "may",
+            "ken",
+        ),
+    ],
+)
+def test_a_stated_item_keeps_its_owner_when_referred_back_to(
+    office: str, who: str, text: str, owner: str, recipient: str
+) -> None:
+    assert [(t[2], t[3]) for t in tasks_of(office, text, who)] == [(owner, recipient)]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("default", "lee", "Chen borrowed my stapler. Can you get it back for me?"),
+        ("default", "wang", "get me a pen. no wait, a pencil"),
+        ("harbour", "may", "the ruler on my desk belongs to Ray, please return it to him"),
+    ],
+)
+def test_an_unclear_owner_or_correction_is_asked_not_guessed(
+    office: str, who: str, text: str
+) -> None:
+    frame = parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.question, frame

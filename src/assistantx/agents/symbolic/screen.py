@@ -85,6 +85,7 @@ class English:
     modifier_prepositions: frozenset[str]
     courtesy: frozenset[str]
     own_item_lost: tuple[tuple[str, ...], ...]
+    exclusion_openers: frozenset[str]
 
 
 @functools.cache
@@ -120,6 +121,7 @@ def english() -> English:
         modifier_prepositions=words("modifier_prepositions"),
         courtesy=words("courtesy"),
         own_item_lost=phrases("own_item_lost"),
+        exclusion_openers=words("exclusion_openers"),
     )
 
 
@@ -156,6 +158,7 @@ class Piece:
 
 Verdict = Literal[
     "withdrawn",
+    "exclusion",
     "wish",
     "thanks",
     "negated",
@@ -221,6 +224,7 @@ class RequestScreen:
     RULES: tuple[tuple[Verdict, Rule], ...] = ()  # filled in below the class
 
     def screen(self, text: str, requester: str) -> Screened:
+        self._text = text
         pieces = _pieces(text)
         findings: list[Finding] = []
         for piece in pieces:
@@ -289,6 +293,27 @@ class RequestScreen:
         if tuple(words) in self.en.withdraw or self.acts.withdrawal(words):
             return Finding("withdrawn", piece, "withdraws the request")
         return None
+
+    def _exclusion(self, piece: Piece, requester: str) -> Finding | None:
+        """ "not from Wang though", "Not Chen's, they're blunt": that person's item is not
+        wanted; a hint that keeps them out, never a party."""
+        words = [w for w in piece.words if w not in ("but", "though", "just", "please")]
+        if not words or words[0] not in self.en.exclusion_openers:
+            return None
+        people = self._named(piece.text, "person")
+        items = self._named(piece.text, "item") or self._named(self._text, "item")
+        if len(people) != 1 or not items:
+            return None
+        who = self.office.person(people[0]).name
+        thing = self.office.item_type(items[0]).name
+        hint = Hint(
+            kind="condition",
+            person=people[0],
+            value="not wanted",
+            item_type=items[0],
+            said=piece.text,
+        )
+        return Finding("exclusion", piece, f"not {who}'s {thing}", hint)
 
     def _wish(self, piece: Piece, requester: str) -> Finding | None:
         if not self.acts.wish(piece.words):
@@ -383,10 +408,35 @@ class RequestScreen:
     def _statement(self, piece: Piece, requester: str) -> Finding | None:
         if piece.asks or not self.acts.statement(piece.words):
             return None
-        named = tuple(self._named(piece.text, "item")) + tuple(
+        named = tuple(self._stated_items(piece, requester)) + tuple(
             f"person:{p}" for p in self._named(piece.text, "person")[:1]
         )
         return Finding("statement", piece, "a statement, context only", context=named)
+
+    def _stated_items(self, piece: Piece, requester: str) -> list[str]:
+        """The items a statement names, as "item|whose": "my stapler" → stapler|my,
+        "the book ... belongs to Yang" → book|Yang Lei's (a later "it" keeps its owner)."""
+        tokens = self.lex.tokens(piece.text)
+        mentions = self.lex.scan(tokens)
+        words = [t.word for t in tokens]
+        out: list[str] = []
+        for n, m in enumerate(mentions):
+            if m.kind != "item" or len(m.ids) != 1:
+                continue
+            before = mentions[n - 1] if n else None
+            whose = ""
+            if before is not None and before.kind == "self" and before.possessive:
+                whose = "my"
+            elif before is not None and before.kind == "person" and before.possessive:
+                whose = f"{self.office.person(before.ids[0]).name}'s"
+            else:
+                for k in range(len(words) - 1):
+                    if words[k : k + 2] == ["belongs", "to"]:
+                        owner = [x for x in mentions if x.kind == "person" and x.start > k]
+                        if owner and len(owner[0].ids) == 1:
+                            whose = f"{self.office.person(owner[0].ids[0]).name}'s"
+            out.append(f"{m.ids[0]}|{whose}")
+        return out
 
     def _negated(self, piece: Piece, requester: str) -> Finding | None:
         words = piece.words
@@ -548,19 +598,28 @@ class RequestScreen:
             text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
         subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
         text = self._name_pronouns(text, hints, subjects)
-        said = [h.item_type for h in hints if h.kind == "condition" and h.item_type]
+        said = [
+            f"{h.item_type}|"
+            for h in hints
+            if h.kind == "condition" and h.item_type and h.value != "not wanted"
+        ]
         stated = [c for c in context if not c.startswith("person:")]
         said += stated
         if said and not self._names_an_item(text):
-            thing = self.office.item_type(said[-1] or "").name
-            # "the stapler is for Wang, bring it to him": "it" is the stated item
+            item, _, whose = said[-1].partition("|")
+            thing = self.office.item_type(item).name
+            # "the stapler is for Wang, bring it to him": "it" is the stated item, and
+            # "Gao asked for my scissors, bring them to her": mine
             back = ("it", "them") if stated and said[-1] == stated[-1] else ()
             for phrase in (*self.en.another_one, "some", *back):
                 pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
                 match = pattern.search(text)
                 if match:
-                    evidence.append(Evidence(words=match.group(0), meaning=f"another {thing}"))
-                    text = text[: match.start()] + f"a {thing}" + text[match.end() :]
+                    kept = phrase in back and whose
+                    said_as = f"{whose} {thing}" if kept else f"a {thing}"
+                    meaning = said_as if kept else f"another {thing}"
+                    evidence.append(Evidence(words=match.group(0), meaning=meaning))
+                    text = text[: match.start()] + said_as + text[match.end() :]
                     break
         return text, evidence
 
@@ -690,6 +749,7 @@ def _listed(words: list[str]) -> str:
 
 RequestScreen.RULES = (
     ("withdrawn", RequestScreen._withdrawn),
+    ("exclusion", RequestScreen._exclusion),
     ("wish", RequestScreen._wish),
     ("thanks", RequestScreen._thanks),
     ("negated", RequestScreen._negated),
@@ -700,7 +760,9 @@ RequestScreen.RULES = (
     ("unsupported", RequestScreen._unsupported),
 )
 UNANSWERED = "a question I cannot answer"
-_DROPPED = frozenset({"negated", "fact", "withdrawn", "wish", "thanks", "question", "statement"})
+_DROPPED = frozenset(
+    {"negated", "fact", "withdrawn", "exclusion", "wish", "thanks", "question", "statement"}
+)
 
 
 def _stem(word: str) -> str:
