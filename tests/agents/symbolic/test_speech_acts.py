@@ -218,3 +218,32 @@ def test_a_question_about_one_person_is_answered_about_them() -> None:
 def test_a_question_about_a_product_names_the_machine_that_makes_it() -> None:
     frame = parser("harbour").parse("where can I get a stamped envelope?", "may")
     assert frame.question and "franking machine" in frame.question
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "item"),
+    [
+        ("harbour", "may", "I'm hoping to borrow a ruler from someone", "ruler"),
+        ("default", "lee", "we're trying to get hold of a stapler", "stapler"),
+    ],
+)
+def test_the_speakers_own_want_is_a_request(office: str, who: str, text: str, item: str) -> None:
+    assert tasks_of(office, text, who) == [("transfer", item, None, who)]
+
+
+def test_a_name_that_is_also_a_verb_form_stays_a_name_as_a_subject() -> None:
+    frame = parser("harbour").parse("rose needs a tape dispenser", "may")
+    assert frame.question and "Rose Adeyemi" in frame.question
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("harbour", "may", "Did anyone find my umbrella?"),
+        ("default", "lee", "has anybody seen my book?"),
+    ],
+)
+def test_a_question_about_ones_own_item_fetches_nothing(office: str, who: str, text: str) -> None:
+    frame = parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.decline_outcome == "done" and frame.decline
+    assert "your" in frame.decline

@@ -378,10 +378,14 @@ class RequestScreen:
         names = [self.office.person(o).name for o in owners[:4]]
         makers = [f for f in self.office.facilities if item in f.products]
         whose = ""
+        a_thing = f"{_article(t.name)} {t.name}"
+        if self._says_mine(piece.text, item):  # "did anyone find my umbrella?"
+            answer = f"I don't know where your {t.name} is; I can't see it from here."
+            return Finding("question", piece, "a question, answered in words", message=answer)
         if len(asked) == 1:  # "does Hope have a calculator?"
             who = self.office.person(asked[0]).name
             if asked[0] in owners:
-                answer, whose = f"As far as I know, {who} has a {t.name}.", f"{who}'s"
+                answer, whose = f"As far as I know, {who} has {a_thing}.", f"{who}'s"
             else:
                 answer = f"As far as I know, {who} has no {t.name}."
         elif makers:
@@ -389,9 +393,9 @@ class RequestScreen:
             answer = f"The {makers[0].name} at the {where} makes them."
         elif names:
             has = "has" if len(names) == 1 else "have"
-            answer = f"As far as I know, {_listed(names)} {has} a {t.name}."
+            answer = f"As far as I know, {_listed(names)} {has} {a_thing}."
         else:
-            answer = f"I don't know of anyone here with a {t.name}."
+            answer = f"I don't know of anyone here with {a_thing}."
         if t.kind not in ("belonging", "product"):  # a document, a file: not for me to tell
             answer = f"I can't tell that about the {t.name} from what I know."
             return Finding("question", piece, "a question, answered in words", message=answer)
@@ -401,7 +405,7 @@ class RequestScreen:
             piece,
             "a question that may be a request: answered, then asked",
             message=answer,
-            offer=f"{verb} me {whose or 'a'} {t.name}",
+            offer=f"{verb} me {whose or _article(t.name)} {t.name}",
             shall=f"Shall I {verb} you one?",
         )
 
@@ -412,6 +416,13 @@ class RequestScreen:
             f"person:{p}" for p in self._named(piece.text, "person")[:1]
         )
         return Finding("statement", piece, "a statement, context only", context=named)
+
+    def _says_mine(self, text: str, item: str) -> bool:
+        mentions = self.lex.scan(self.lex.tokens(text))
+        return any(
+            m.kind == "item" and m.ids == (item,) and n and mentions[n - 1].kind == "self"
+            for n, m in enumerate(mentions)
+        )
 
     def _stated_items(self, piece: Piece, requester: str) -> list[str]:
         """The items a statement names, as "item|whose": "my stapler" → stapler|my,
@@ -741,6 +752,10 @@ class RequestScreen:
         if machines:
             parts.append(f"run errands at the {_listed(machines)}")
         return f"What I can do here: {_listed(parts)}."
+
+
+def _article(noun: str) -> str:
+    return "an" if noun[:1].lower() in "aeiou" else "a"
 
 
 def _listed(words: list[str]) -> str:

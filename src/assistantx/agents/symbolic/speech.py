@@ -142,6 +142,8 @@ class SpeechActs:
             return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
         if first in _MODALS and second in ("not", "nt"):
             return "polite"
+        if first in _AUX and first in _SUBJECT_VERB and not asks:
+            return None  # "we're trying to ...": a contraction, not "were ...?"
         if first in _AUX:
             if self._for_me(w):
                 return "polite"  # "does anyone have a stapler I could borrow?"
@@ -163,6 +165,9 @@ class SpeechActs:
             return False  # "I was wondering if you could print ..."
         if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
             return True  # "happy to lend it": the speaker offers, nobody asks
+        wants = any(a == "to" and b in self.lex.cue_words for a, b in itertools.pairwise(w))
+        if wants and w[-1] != "myself" and (w[0] in _SUBJECT_VERB or w[0] in ("i", "we", "id")):
+            return False  # "I'm hoping to borrow a ruler": the speaker's own want
         if w[0] in _SELF_PLANS or w[:2] == ["i", "will"]:
             return not (
                 len(w) > 1 and w[-1] != "myself" and set(w[1:3]) & _NEED
@@ -171,6 +176,7 @@ class SpeechActs:
             return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."
         if (
             w[0] not in self.lex.cue_words
+            and not self._named(w[0])  # "rose needs ...": a name, not the verb "rise"
             and w[0] not in _MODALS | _AUX | _WILLING
             and "AUX" not in language.lemmas(w[0])
             and language.is_finite_verb(w[0])
