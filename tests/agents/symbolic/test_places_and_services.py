@@ -104,3 +104,23 @@ def test_no_office_names_in_the_english_data() -> None:
         for p in office(name).people:
             for word in p.name.lower().split():
                 assert word not in listed or word in months | modal, word
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "owner"),
+    [
+        ("grab Art's lunch from the fridge and bring it to him", "lunch", "art"),
+        (
+            "please take May's label maker out of the cupboard and bring it to her",
+            "label_maker",
+            "may",
+        ),
+    ],
+)
+def test_an_item_kept_at_a_facility_may_go_to_its_owner(text: str, item: str, owner: str) -> None:
+    assert tasks_of("harbour", text, "ken") == [("transfer", item, owner, owner)]
+
+
+def test_an_item_at_its_owners_desk_is_not_brought_to_them() -> None:
+    frame = parser("harbour").parse("take Hope's lunch and bring it to her", "ken")
+    assert frame.tasks == [] and frame.question

@@ -397,7 +397,8 @@ class InstructionParser:
             if t.kind == "transfer":
                 if t.owner is None and self._kinds[t.item] == "personal":
                     return f"Whose {name} do you mean?"
-                if t.owner is not None and t.owner == t.recipient:
+                kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
+                if t.owner is not None and t.owner == t.recipient and not kept:
                     who = "you" if t.owner == requester else self.office.person(t.owner).name
                     return (
                         f"Who should get {who}r {name}?"
