@@ -20,6 +20,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.evidence import Evidence
 from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
+from assistantx.core import language
 from assistantx.core.english import wording
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Purpose
@@ -459,7 +460,8 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         return f"{name(person)}'s"
 
     item = office.item_type(task.item).name if task.item else "item"
-    whose = f"{name(task.owner)}'s {item}" if task.owner else f"a {item}"
+    some = "some" if language.plural(item) == item else "an" if item[:1] in "aeiou" else "a"
+    whose = f"{name(task.owner)}'s {item}" if task.owner else f"{some} {item}"
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     op = operation_of(office, task)
