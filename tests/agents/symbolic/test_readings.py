@@ -191,3 +191,16 @@ def test_an_unclear_owner_or_correction_is_asked_not_guessed(
 ) -> None:
     frame = parser(office).parse(text, who)
     assert frame.tasks == [] and frame.question, frame
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("default", "lee", "I need a pen for the sun li meeting"),
+        ("default", "wang", "print my notes for the Zhang Wei review"),
+        ("harbour", "may", "print the agenda for the Okafor project"),
+    ],
+)
+def test_a_name_that_modifies_a_noun_is_no_party(office: str, who: str, text: str) -> None:
+    tasks = tasks_of(office, text, who)
+    assert tasks and all(t[3] == who and t[2] in (None, who) for t in tasks), tasks

@@ -247,3 +247,20 @@ def test_a_question_about_ones_own_item_fetches_nothing(office: str, who: str, t
     frame = parser(office).parse(text, who)
     assert frame.tasks == [] and frame.decline_outcome == "done" and frame.decline
     assert "your" in frame.decline
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("default", "lee", "scrap the scissors request, Wu lent me a pair"),
+        ("default", "wang", "You can forget the coffee, I'm leaving now"),
+        ("default", "lee", "Please leave Mao's seal where it is"),
+        ("default", "lee", "Hands off my stapler please"),
+        ("default", "lee", "please pass my thanks to Hu for the scissors"),
+        ("default", "wang", "big thanks to Zhang for lending me his stapler!"),
+        ("harbour", "may", "leave Joy's lunch alone, she'll get it herself"),
+    ],
+)
+def test_more_withdrawals_wishes_and_thanks_move_nothing(office: str, who: str, text: str) -> None:
+    frame = parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.decline_outcome == "done", frame

@@ -59,6 +59,7 @@ _DATIVE_VERBS = english.words("dative_verbs")
 # The syntax around a name word that makes it a person, or the ordinary word.
 _PERSON_BEFORE = english.words("person_before")
 _WORD_BEFORE = english.words("word_before")
+_MODIFIER_DETERMINERS = english.words("modifier_determiners")
 
 _TOKEN = language.WORD
 _SENTENCE_END = re.compile(r"[.!?;\n]")
@@ -244,6 +245,10 @@ class Lexicon:
             text = " ".join(tokens[i].text for i in idx)
             if phrase in self.people:
                 reading = self.name_reading(tokens, idx[0]) if n == 1 else "person"
+                chosen = n == 1 and tokens[start].word in self.chosen
+                modifier = reading == "person" and not chosen and self._modifier(tokens, start, end)
+                if modifier:  # "the Zhang Wei meeting": not a party
+                    return Mention("word", start, end, (phrase,), poss, text), n
                 if reading != "word":
                     ids = self._person_ids(tokens, idx, self.people[phrase])
                     alt = self.word_phrase(tokens, idx[0]) if reading == "ask" else ""
@@ -264,11 +269,29 @@ class Lexicon:
         opens = tokens[i].opens or prev in _POLITE or prev in ("to", "and", "then", "pls")
         return opens and (nxt in _VERB_OBJECT_STARTS or nxt == "")
 
+    def _modifier(self, tokens: list[Token], start: int, end: int) -> bool:
+        """A name between a determiner and a noun modifies the noun: "for the Zhang meeting",
+        "my Sun Li notes"."""
+        if start == 0 or end >= len(tokens) or tokens[end - 1].possessive:
+            return False
+        nxt = tokens[end]
+        return (
+            tokens[start - 1].word in _MODIFIER_DETERMINERS
+            and not nxt.opens
+            and nxt.word not in COMMON
+            and nxt.word not in self.name_words
+            and nxt.word not in self.items
+            and language.is_noun(nxt.word)
+        )
+
     def _single(self, tokens: list[Token], i: int) -> Mention:
         t = tokens[i]
         w = t.word
         if w in self.name_words:
             reading = self.name_reading(tokens, i)
+            chosen = w in self.chosen  # the requester said whom they meant
+            if reading == "person" and not chosen and self._modifier(tokens, i, i + 1):
+                reading = "word"  # "for the Zhang review": not a party
             if reading != "word":
                 ids = self._person_ids(tokens, [i], self.name_words[w])
                 alt = self.word_phrase(tokens, i) if reading == "ask" else ""

@@ -379,6 +379,8 @@ class RequestScreen:
         makers = [f for f in self.office.facilities if item in f.products]
         whose = ""
         a_thing = f"{_article(t.name)} {t.name}"
+        if language.plural(t.name) == t.name:
+            a_thing = f"some {t.name}"  # "scissors"
         if self._says_mine(piece.text, item):  # "did anyone find my umbrella?"
             answer = f"I don't know where your {t.name} is; I can't see it from here."
             return Finding("question", piece, "a question, answered in words", message=answer)

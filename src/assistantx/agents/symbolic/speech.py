@@ -58,6 +58,7 @@ _BORROW = english.words("borrow_words")
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
 _SELF_PLANS = frozenset({"ill"})
+_REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
 _NEGATIONS = english.words("statement_negations")
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
 
@@ -116,9 +117,9 @@ class SpeechActs:
         return w[:2] == ["do", "not"] and w[2:3] == ["let"] and bool(set(w[3:5]) & _EVERYONE)
 
     def thanks(self, words: list[str]) -> Act | None:
-        w = _content(words)
-        if w[:1] and w[0] in _THANKS:
-            return Act("thanks")
+        w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        if set(w[:3]) & _THANKS and not (set(w[:3]) & _RELAY):
+            return Act("thanks")  # "thanks ...", "big thanks to ...", "many thanks"
         if w[:1] and w[0] in _RELAY and set(w[1:4]) & _THANKS:
             return Act("thanks", relay=True)  # "say thanks to Wang", "tell Wang thank you"
         if w[:1] == ["thank"]:
@@ -165,6 +166,8 @@ class SpeechActs:
             return False  # "I was wondering if you could print ..."
         if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
             return True  # "happy to lend it": the speaker offers, nobody asks
+        if w[-1] in _REFLEXIVES and w[0] not in _MODALS:
+            return True  # "she'll get it herself": someone else's own plan
         wants = any(a == "to" and b in self.lex.cue_words for a, b in itertools.pairwise(w))
         if wants and w[-1] != "myself" and (w[0] in _SUBJECT_VERB or w[0] in ("i", "we", "id")):
             return False  # "I'm hoping to borrow a ruler": the speaker's own want
@@ -176,6 +179,7 @@ class SpeechActs:
             return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."
         if (
             w[0] not in self.lex.cue_words
+            and w[0] not in language.verb_lemmas(w[0])  # "put it on ...": an imperative
             and not self._named(w[0])  # "rose needs ...": a name, not the verb "rise"
             and w[0] not in _MODALS | _AUX | _WILLING
             and "AUX" not in language.lemmas(w[0])
