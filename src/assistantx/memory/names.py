@@ -12,14 +12,16 @@ import re
 from collections.abc import Iterable
 
 from assistantx.core import english
+from assistantx.core.language import fold
 
 TITLES = english.words("titles")
-_NON_WORD = re.compile(r"[^a-z0-9]+")
+_NON_WORD = re.compile(r"[\W_]+")
 
 
 def normalize(text: str) -> str:
-    """Lower-case, drop punctuation, possessive 's, and titles; collapse spaces."""
-    text = text.lower().replace("’", "'")
+    """Fold (case, diacritics: "José Müller" is "jose muller"), drop punctuation, possessive
+    's, and titles; collapse spaces."""
+    text = fold(text)
     text = re.sub(r"'s\b", "", text)
     words = [w for w in _NON_WORD.split(text) if w and w not in TITLES]
     return " ".join(words)

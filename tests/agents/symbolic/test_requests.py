@@ -17,8 +17,9 @@ CASES = [
     ("I need a coffee", True, True),
     ("bring me his stapler", True, True),  # unclear, but a request: it asks who
     ("a stapler", True, False),
-    ("Yes, I have a stapler. Happy to lend it.", True, False),
-    ("I came to the robot, but: I don't have a stapler", True, False),
+    # statements, not requests (issue 23: only a request moves the robot)
+    ("Yes, I have a stapler. Happy to lend it.", False, False),
+    ("I came to the robot, but: I don't have a stapler", False, False),
     ("I came to the robot, but: the locker is empty", False, False),
     ("ok thanks", False, False),
     ("Sure, I'll bring it", False, False),

@@ -32,6 +32,7 @@ PERSON_CASES = [
     (_site("", following=_DESK, possessive=True), "Wang's desk: named, no role yet"),
     (_site("get", following=_SIGN, possessive=True), "Wang's signature: Wang signs"),
     (_site("from", following=_ITEM, possessive=True), "Wang's stapler: an owner of the item"),
+    (_site("", nxt="needs"), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),
     (_site("by"), "by Wang: the doer"),
     (_site("to", back=True), "back to Wang: the owner, given back"),

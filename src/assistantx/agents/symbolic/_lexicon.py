@@ -1,28 +1,36 @@
-"""The office's vocabulary, scanned out of free text: people, item types and facilities.
+"""The office's vocabulary, scanned out of free text: people, item types, facilities, places.
 
-Every name comes from the office file (names, aliases, synonyms, plurals), so another office
-works unchanged; the English function words and generic task verbs are the package's data
-(``data/english.yaml``). Matching is longest-phrase-first, then single name words; a word
-that names several people is kept as an ambiguous mention, never resolved by guessing. Small
-typos ("stapeler", "cofee") are corrected against the same vocabulary, but only for words
-that are not ordinary English; a misspelt name that is as close to another person's name
-("Zhnag": Zhang or Zheng) is ambiguous, since fetching from the wrong colleague is worse
-than asking.
+Every name comes from the office file (names, aliases, synonyms, plurals, the names of its
+locations), so another office works unchanged; the English function words and generic task
+verbs are the package's data (``data/english.yaml``), and morphology, word frequency and typo
+distance come from libraries (``assistantx.core.language``). Matching is longest-phrase-first,
+then single name words, on diacritics-blind keys ("Jose Muller" is José Müller); a word that
+names several people is kept as an ambiguous mention, never resolved by guessing.
+
+Small typos ("stapeler", "pirnt", "cpoy") are corrected against the same vocabulary, within a
+limit that grows with the word's length, but never a word that is itself ordinary English; a
+misspelt name that is nearly as close to another person's name ("Zhnag": Zhang or Zheng) is
+ambiguous, since fetching from the wrong colleague is worse than asking.
+
+A person's name that is also an ordinary English word ("grace", "mark", "sun") is read by its
+syntax (``name_reading``): "to Mark", "Mark's desk", "Pat hurt her hand" make a person; "the
+grace period", "Mark my form", "Will you", "in May" make the word; when the two disagree the
+mention carries both readings and the parser asks which was meant.
 """
 
 from __future__ import annotations
 
-import difflib
 import re
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.core import english
+from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
 from assistantx.memory.names import TITLES, normalize
 
-MentionKind = Literal["person", "item", "facility", "self", "pronoun", "cue", "word"]
+MentionKind = Literal["person", "item", "facility", "place", "self", "pronoun", "cue", "word"]
+Reading = Literal["person", "word", "ask"]
 
 # Task cues: the English verbs (and nouns) that say what to do, keyed by task kind (the
 # package's English data file). Not office-specific: the verbs of the office's own operations
@@ -36,11 +44,9 @@ OTHER_POSSESSIVES = english.words("other_possessives")
 # Words that connect a person to a role in the sentence.
 PREPOSITIONS = english.words("party_prepositions")
 
-# Ordinary English that must never be "corrected" into a name, and is never a name word
-# unless written with a capital letter.
+# Ordinary English function words: never "corrected" into a name, and a name word that is one
+# of them is read by its syntax like any other English word.
 COMMON = english.words("common")
-# Name words that are also English words only count when capitalized in the original.
-_ENGLISH_NAME_WORDS = english.words("names_that_are_words")
 
 # Words that open a verb's object: the word before one of them is in a verb's place.
 _VERB_OBJECT_STARTS = english.words("object_starts")
@@ -49,19 +55,23 @@ _SUBJECT_PRONOUNS = english.words("subject_pronouns")
 _MONTHS = english.words("month_names")
 _MONTH_PREPOSITIONS = english.words("month_prepositions")
 _POLITE = english.words("polite")
+_DATIVE_VERBS = english.words("dative_verbs")
+# The syntax around a name word that makes it a person, or the ordinary word.
+_PERSON_BEFORE = english.words("person_before")
+_WORD_BEFORE = english.words("word_before")
+_MODIFIER_DETERMINERS = english.words("modifier_determiners")
 
-# How close a misspelt name must be to a person's name to count as possibly meaning them.
-_NAME_TYPO_CUTOFF = 0.8
-
-_TOKEN = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
+_TOKEN = language.WORD
+_SENTENCE_END = re.compile(r"[.!?;\n]")
 
 
 @dataclass(frozen=True)
 class Token:
     text: str  # original spelling
-    word: str  # lower-case, possessive removed, typo-corrected
+    word: str  # folded (lower-case, no diacritics), possessive removed, typo-corrected
     possessive: bool
     typed: str = ""  # ``word`` before the typo correction
+    opens: bool = False  # the first word of a sentence
 
     @property
     def corrected(self) -> bool:
@@ -76,6 +86,9 @@ class Mention:
     ids: tuple[str, ...] = ()  # person/item-type/facility ids (several = ambiguous)
     possessive: bool = False
     text: str = ""
+    # a person's name that may also be meant as the ordinary word: the words it would then
+    # be read as ("the grace period talk"); the parser asks which was meant
+    alternative: str = ""
 
     @property
     def id(self) -> str:
@@ -91,84 +104,103 @@ class Lexicon:
     name_words: dict[str, set[str]] = field(default_factory=dict)  # word → ids (tier 1)
     items: dict[str, str] = field(default_factory=dict)  # phrase → item type id
     facilities: dict[str, str] = field(default_factory=dict)  # phrase → facility id
+    places: dict[str, str] = field(default_factory=dict)  # phrase → location id
     max_words: int = 1
     cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
     cue_words: frozenset[str] = frozenset()
+    operation_words: frozenset[str] = frozenset()  # every form of the office's own verbs
     vocabulary: list[str] = field(default_factory=list)
     _vocabulary_set: frozenset[str] = frozenset()
+    # the reading the requester chose for a name word they were asked about (word → reading)
+    chosen: dict[str, Reading] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
         lex = cls(office)
         cues = {k: set(v) for k, v in CUES.items()}
+        ops: set[str] = set()
         for op in office.operations:
+            forms = {form for verb in op.verbs for form in inflections(key_of(verb))}
+            ops |= forms
             kind = SHAPE_KIND.get(op.shape(office))
             if kind is not None:
-                cues.setdefault(kind, set()).update(
-                    form for verb in op.verbs for form in inflections(normalize(verb))
-                )
+                cues.setdefault(kind, set()).update(forms)
         lex.cues = {k: frozenset(v) for k, v in cues.items()}
         lex.cue_words = frozenset(w for v in cues.values() for w in v)
+        lex.operation_words = frozenset(w for form in ops for w in form.split()[:1])
         for p in office.people:
             for name in (p.id, p.name, *p.aliases):
-                key = normalize(name)
+                key = key_of(name)
                 if key:
                     lex.people.setdefault(key, set()).add(p.id)
             for word in p.name.split():
-                lex.name_words.setdefault(normalize(word), set()).add(p.id)
+                lex.name_words.setdefault(key_of(word), set()).add(p.id)
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
-                key = normalize(name)
+                key = key_of(name)
                 if not key:
                     continue
                 for variant in (key, _plural(key)):
                     lex.items.setdefault(variant, t.id)
         for f in office.facilities:
             for name in (f.name, *f.synonyms, f.id.replace("_", " ")):
-                key = normalize(name)
+                key = key_of(name)
                 if key:
                     lex.facilities.setdefault(key, f.id)
-        phrases = [*lex.people, *lex.items, *lex.facilities]
+        for loc in office.locations:  # "the mail room", "the post desk": places, not verbs
+            for name in (loc.name, loc.id.replace("_", " ")):
+                key = key_of(name)
+                if key and (len(key.split()) > 1 or key not in lex.cue_words):
+                    lex.places.setdefault(key, loc.id)
+        phrases = [*lex.people, *lex.items, *lex.facilities, *lex.places]
         lex.max_words = max(len(p.split()) for p in phrases)
         words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
-        lex.vocabulary = sorted(w for w in words if len(w) >= 4)
+        lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
         return lex
 
     # -- tokens --------------------------------------------------------------------------
     def tokens(self, text: str) -> list[Token]:
         out: list[Token] = []
-        raws = [m.group(0) for m in _TOKEN.finditer(text.replace("’", "'"))]
+        flat = text.replace("’", "'")
+        found = list(_TOKEN.finditer(flat))
+        raws = [m.group(0) for m in found]
         for n, raw in enumerate(raws):
-            lower = raw.lower()
+            lower = language.fold(raw)
             possessive = lower.endswith("'s") or lower.endswith("s'")
             word = re.sub(r"'s$|'$", "", lower).replace("'", "")
             if not possessive and word.endswith("s'"):
                 word = word[:-1]
+            gap = flat[found[n - 1].end() : found[n].start()] if n else ""
+            opens = n == 0 or bool(_SENTENCE_END.search(gap))
             # a word right before a determiner is a verb: "printe my file" is print, not printer
             verb_slot = n + 1 < len(raws) and raws[n + 1].lower() in _VERB_OBJECT_STARTS
-            out.append(Token(raw, self._correct(word, verb_slot=verb_slot), possessive, word))
+            corrected = self._correct(word, verb_slot=verb_slot)
+            out.append(Token(raw, corrected, possessive, word, opens))
         return out
 
     def _correct(self, word: str, *, verb_slot: bool = False) -> str:
         """Fix a small typo in an office word or a cue; leave English and numbers alone.
 
         In a verb's place the task verbs are tried first, so a misspelt verb is never turned
-        into a noun that is closer by letters (a typo keeps its part of speech)."""
-        if len(word) < 4 or word.isdigit() or word in COMMON or self._known(word):
+        into a noun that is closer by letters (a typo keeps its part of speech). A typo as
+        near to two words is left alone, unless both are names (the parser then asks whom)."""
+        if (
+            language.typo_limit(word) == 0
+            or not word.isalpha()
+            or word in COMMON
+            or self._known(word)
+            or language.zipf(word) >= language.COMMON_ZIPF
+        ):
             return word
         if verb_slot:
-            verbs = difflib.get_close_matches(word, sorted(self.cue_words), n=1, cutoff=0.8)
-            if verbs:
-                return verbs[0]
-        for n in range(len(word) - 1):  # one swapped pair of letters: "zhnag", "pirnt"
-            swapped = word[:n] + word[n + 1] + word[n] + word[n + 2 :]
-            if swapped in self._vocabulary_set:
-                return swapped
-        if len(word) < 5:
-            return word
-        close = difflib.get_close_matches(word, self.vocabulary, n=1, cutoff=0.85)
-        return close[0] if close else word
+            verbs = language.closest(word, self.cue_words)
+            if len(verbs) == 1 or (verbs and _one_verb(verbs)):  # "print" or "printed"
+                return min(verbs, key=len)
+        close = language.closest(word, self.vocabulary)
+        if len(close) == 1 or (close and all(c in self.name_words for c in close)):
+            return close[0]
+        return word
 
     def _known(self, word: str) -> bool:
         return (
@@ -177,6 +209,7 @@ class Lexicon:
             or word in self.people
             or word in self.items
             or word in self.facilities
+            or word in self.places
             or word in TITLES
         )
 
@@ -210,21 +243,59 @@ class Lexicon:
             start, end = idx[0], idx[-1] + 1
             poss = tokens[idx[-1]].possessive
             text = " ".join(tokens[i].text for i in idx)
-            if phrase in self.people and self._name_ok(tokens, idx):
-                ids = self._person_ids(tokens, idx, self.people[phrase])
-                return Mention("person", start, end, ids, poss, text), n
-            if phrase in self.facilities:
+            if phrase in self.people:
+                reading = self.name_reading(tokens, idx[0]) if n == 1 else "person"
+                chosen = n == 1 and tokens[start].word in self.chosen
+                modifier = reading == "person" and not chosen and self._modifier(tokens, start, end)
+                if modifier:  # "the Zhang Wei meeting": not a party
+                    return Mention("word", start, end, (phrase,), poss, text), n
+                if reading != "word":
+                    ids = self._person_ids(tokens, idx, self.people[phrase])
+                    alt = self.word_phrase(tokens, idx[0]) if reading == "ask" else ""
+                    return Mention("person", start, end, ids, poss, text, alt), n
+            in_verb_slot = n == 1 and phrase in self.cue_words and self._verb_slot(tokens, start)
+            if phrase in self.facilities and not in_verb_slot:  # "fax my letter": the verb
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
+            if phrase in self.places and not in_verb_slot:
+                return Mention("place", start, end, (self.places[phrase],), poss, text), n
             if phrase in self.items and not (n == 1 and phrase in self.cue_words):
                 return Mention("item", start, end, (self.items[phrase],), poss, text), n
         return None
 
+    @staticmethod
+    def _verb_slot(tokens: list[Token], i: int) -> bool:
+        prev = tokens[i - 1].word if i > 0 else ""
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+        opens = tokens[i].opens or prev in _POLITE or prev in ("to", "and", "then", "pls")
+        return opens and (nxt in _VERB_OBJECT_STARTS or nxt == "")
+
+    def _modifier(self, tokens: list[Token], start: int, end: int) -> bool:
+        """A name between a determiner and a noun modifies the noun: "for the Zhang meeting",
+        "my Sun Li notes"."""
+        if start == 0 or end >= len(tokens) or tokens[end - 1].possessive:
+            return False
+        nxt = tokens[end]
+        return (
+            tokens[start - 1].word in _MODIFIER_DETERMINERS
+            and not nxt.opens
+            and nxt.word not in COMMON
+            and nxt.word not in self.name_words
+            and nxt.word not in self.items
+            and language.is_noun(nxt.word)
+        )
+
     def _single(self, tokens: list[Token], i: int) -> Mention:
         t = tokens[i]
         w = t.word
-        if w in self.name_words and self._name_ok(tokens, [i]):
-            ids = self._person_ids(tokens, [i], self.name_words[w])
-            return Mention("person", i, i + 1, ids, t.possessive, t.text)
+        if w in self.name_words:
+            reading = self.name_reading(tokens, i)
+            chosen = w in self.chosen  # the requester said whom they meant
+            if reading == "person" and not chosen and self._modifier(tokens, i, i + 1):
+                reading = "word"  # "for the Zhang review": not a party
+            if reading != "word":
+                ids = self._person_ids(tokens, [i], self.name_words[w])
+                alt = self.word_phrase(tokens, i) if reading == "ask" else ""
+                return Mention("person", i, i + 1, ids, t.possessive, t.text, alt)
         if w in SELF_WORDS:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
@@ -237,69 +308,106 @@ class Lexicon:
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
 
     def _person_ids(self, tokens: list[Token], idx: list[int], ids: set[str]) -> tuple[str, ...]:
-        """The people a name may mean; a corrected one-word name adds everyone as close."""
+        """The people a name may mean; a corrected one-word name adds everyone nearly as
+        close (one edit more than the typo limit)."""
         found = set(ids)
         if len(idx) == 1 and tokens[idx[0]].corrected:
             typed = tokens[idx[0]].typed
             keys = [k for k in (*self.people, *self.name_words) if " " not in k]
-            for key in difflib.get_close_matches(typed, keys, n=8, cutoff=_NAME_TYPO_CUTOFF):
+            for key in language.within(typed, keys, language.typo_limit(typed) + 1):
                 found |= self.people.get(key, set()) | self.name_words.get(key, set())
         return tuple(sorted(found))
 
-    def _name_ok(self, tokens: list[Token], idx: list[int]) -> bool:
-        """An English-looking single name word counts only when capitalized."""
-        if len(idx) != 1:
-            return True
-        i = idx[0]
+    def name_reading(self, tokens: list[Token], i: int) -> Reading:
+        """Whether a one-word name means the person, the ordinary English word, or either.
+
+        Only a name that is also an ordinary English word (the dictionary and word frequency
+        say so, ``language.is_english_word``) has a word reading. Syntax decides: "to Mark",
+        "Mark's", "give mark a pen", "Pat hurt her hand" make a person; "the grace period",
+        "to be honest", "Will you", "in May", "Mark my form" make the word. When both
+        agree nothing, a capital letter makes the person; when they disagree, or a
+        capitalized word sits where only the word fits, the reading is asked."""
         t = tokens[i]
-        if t.word in _ENGLISH_NAME_WORDS or t.word in COMMON:
-            if t.possessive:
-                return True  # "May's stapler"
-            nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
-            prev = tokens[i - 1].word if i > 0 else ""
-            if nxt in _SUBJECT_PRONOUNS:
-                return False  # "Will you ...", "May I ...": a modal verb
-            if prev in _MONTH_PREPOSITIONS and t.word in _MONTHS:
-                return False  # "in May"
-            if (i == 0 or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS:
-                return False  # "Mark my form as urgent": a verb in the verb's place
-            return t.text[:1].isupper()
-        return True
+        w = t.word
+        if not (language.is_english_word(w) or w in COMMON) or t.corrected:
+            return "person"
+        if w in self.chosen:
+            return self.chosen[w]
+        prev = tokens[i - 1].word if i > 0 and not t.opens else ""
+        nxt_token = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
+        nxt = nxt_token.word if nxt_token is not None else ""
+        capital = t.text[:1].isupper()
+        modal = nxt in _SUBJECT_PRONOUNS and (t.opens or not prev)  # "Will you", "May I"
+        person = not modal and (
+            t.possessive
+            or prev in _PERSON_BEFORE
+            or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or nxt in self.items))
+            or ((t.opens or not prev) and (nxt in ("is", "was", "has") or _finite(nxt)))
+        )
+        if prev in _MONTH_PREPOSITIONS and w in _MONTHS:
+            return "word"  # "by May", "in June": a date
+        word = (
+            modal
+            or prev in _WORD_BEFORE
+            or ((t.opens or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS)
+        )
+        # "grace period": a noun right after it makes a compound
+        compound = (
+            nxt_token is not None
+            and not nxt_token.possessive
+            and nxt not in COMMON
+            and nxt not in self.name_words
+            and language.is_noun(nxt)
+            and not _finite(nxt)
+        )
+        if person and word:
+            return "ask"
+        if person:
+            return "person"
+        if word or compound:
+            return "ask" if capital and not t.opens else "word"
+        return "person" if capital else "word"
+
+    def word_phrase(self, tokens: list[Token], i: int) -> str:
+        """The words a name word would be part of if meant as the ordinary word: "the grace
+        period talk" (a determiner before it, the nouns after it)."""
+        start = i - 1 if i > 0 and tokens[i - 1].word in _WORD_BEFORE else i
+        end = i + 1
+        while (
+            end < len(tokens)
+            and end - i <= 3
+            and not tokens[end].opens
+            and tokens[end].word not in COMMON
+            and not tokens[end - 1].possessive
+            and language.is_noun(tokens[end].word)
+        ):
+            end += 1
+        said = [tokens[k].text for k in range(start, end)]
+        said[i - start] = said[i - start].lower()
+        return " ".join(said)
+
+
+def _one_verb(forms: list[str]) -> bool:
+    """Whether words are all forms of one verb ("print", "printed")."""
+    shared = set.intersection(*(set(language.verb_lemmas(f)) for f in forms))
+    return bool(shared)
+
+
+def _finite(word: str) -> bool:
+    return bool(word) and language.is_finite_verb(word)
+
+
+def key_of(name: str) -> str:
+    """The lookup key of a name or phrase: folded, titles and punctuation dropped."""
+    return normalize(language.fold(name))
 
 
 def inflections(verb: str) -> set[str]:
-    """'print' → print, prints, printed, printing; 'copy' → copies, copied; 'heat' → heated."""
-    if not verb or " " in verb:
-        return {verb} if verb else set()
-    forms = {verb, _plural(verb)}
-    if verb.endswith("e"):
-        forms |= {verb + "d", verb[:-1] + "ing"}
-    elif verb.endswith("y") and not verb.endswith(("ay", "ey", "oy")):
-        forms |= {verb[:-1] + "ied", verb + "ing"}
-    elif _doubles(verb):  # "scan" → scanned, scanning
-        forms |= {verb + verb[-1] + "ed", verb + verb[-1] + "ing"}
-    else:
-        forms |= {verb + "ed", verb + "ing"}
-    return forms
-
-
-def _doubles(verb: str) -> bool:
-    """Short consonant-vowel-consonant verbs double their last letter (scan, ship, stop)."""
-    vowels = "aeiou"
-    return (
-        len(verb) >= 3
-        and verb[-1] not in vowels + "wxy"
-        and verb[-2] in vowels
-        and verb[-3] not in vowels
-        and sum(c in vowels for c in verb) == 1
-    )
+    """Every form of a verb ('bind' → bind, binds, binding, bound), from ``lemminflect``."""
+    if not verb:
+        return set()
+    return set(language.verb_forms(verb))
 
 
 def _plural(phrase: str) -> str:
-    if phrase.endswith("s"):
-        return phrase
-    if phrase.endswith(("ch", "sh", "x")):
-        return phrase + "es"
-    if phrase.endswith("y") and not phrase.endswith(("ay", "ey", "oy")):
-        return phrase[:-1] + "ies"
-    return phrase + "s"
+    return language.plural(phrase)

@@ -20,9 +20,13 @@ _DATIVE_VERBS = english.words("dative_verbs")
 # "Wang's desk": a person's place, where the robot meets them.
 _PLACE_WORDS = english.words("place_words")
 _OBJECT_PRONOUNS = english.words("object_pronouns")
+OTHER_POSSESSIVES = english.words("other_possessives")
+_OBJECT_STARTS = english.words("object_starts") | {"one", "some", "another"}
 # The words before a person that make them the recipient, the source or the doer.
 _TO = frozenset({"to", "for", "with"})
-_MEET_AT = frozenset({"to", "at", "for"})
+_MEET_AT = frozenset({"to", "at", "for", "on", "by"})
+# "Min needs scissors": the one who needs the item gets it.
+_NEEDS = english.words("need_verbs") | english.words("receive_verbs")
 _DIRECT = frozenset({"ask", "have", "let", "tell"})
 
 
@@ -108,6 +112,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "actor",
     ),
     PersonRule("Wang's stapler: an owner of the item", lambda s: s.possessive, "owner"),
+    PersonRule(
+        "Min needs / gets scissors: the one in need receives",
+        lambda s: s.nxt in _NEEDS,
+        "recipient",
+    ),
     PersonRule("from Wang: the source", lambda s: s.prev == "from", "source"),
     PersonRule("by Wang: the doer", lambda s: s.prev == "by", "actor"),
     PersonRule(
@@ -178,9 +187,17 @@ def clause_roles(
         elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
             following = ms[n + 1] if n + 1 < len(ms) else None
             others = [x for x in last_person if x != requester]
-            if following is not None and following.kind == "item":
+            possessive_form = tokens[m.start].word in OTHER_POSSESSIVES
+            if following is not None and following.kind == "item" and possessive_form:
                 continue  # "her stapler": a possessive
-            if prev_word(tokens, m.start) in ("to", "for") and others:
+            prev = prev_word(tokens, m.start)
+            # "take her my ice pack", "bring her some": she receives (not "forward them to")
+            dative = (
+                prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
+            )
+            if (prev in ("to", "for") or dative) and not others:
+                raise UnresolvedPronoun(m.text)  # never the requester by default
+            if prev in ("to", "for") or dative:
                 roles.add_recipient(others[-1], m.start)
         elif m.kind == "item":
             owner = owner_of(tokens, ms, n, requester, last_person)
@@ -229,6 +246,11 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
         or roles.recipient_between(0, objects[0].start)
         or default
     )
+
+
+def _object_start(tokens: list[Token], m: Mention) -> bool:
+    """Whether a mention opens a verb's object ("my", "some", "a", "the stapler")."""
+    return m.kind in ("self", "item") or tokens[m.start].word in _OBJECT_STARTS
 
 
 def prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:

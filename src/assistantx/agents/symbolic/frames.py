@@ -17,6 +17,13 @@ for whom and by whom. Parsing is rule-based over the office's vocabulary (``_lex
    ("and bring it to me", or the answer "Dr. Zhang") fills in the previous task;
 5. anything missing, unknown or ambiguous becomes a question for the requester, never a guess,
    and so does an object no task acts on: part of a request is never dropped silently.
+
+Competing readings are kept with their evidence and asked about when they lead to different
+physical actions (the idea of KnowNo, "Robots That Ask For Help"): a name that is also an
+ordinary word ("Grace Huang, or the grace period talk?"), a request that may be only a
+question ("... Shall I bring you one?"), a third person's need said as a fact ("Shall I bring
+Gao Min scissors?"). The answer settles the reading (``parse_with_answers``). A thing the
+office does not have ("bring me a tape measure") ends unachievable, with a sentence that says so.
 """
 
 from __future__ import annotations
@@ -27,6 +34,7 @@ from assistantx.agents.symbolic._lexicon import (
     PRONOUNS,
     Lexicon,
     Mention,
+    Reading,
     Token,
     inflections,
 )
@@ -37,8 +45,10 @@ from assistantx.agents.symbolic._parties import (
     clause_roles,
     prev_word,
 )
+from assistantx.agents.symbolic.answers import stance
+from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.screen import RequestScreen
-from assistantx.core import english
+from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SEAL_TOOL as SEAL
 from assistantx.core.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
@@ -83,9 +93,10 @@ class InstructionParser:
         }
 
     # -- public --------------------------------------------------------------------------
-    def parse(self, text: str, requester: str) -> TaskFrame:
-        """The frame of a request: screened first (withdrawn, negated, destructive, facts,
-        unsupported services; ``screen``), then the tasks read from what is left."""
+    def parse(self, text: str, requester: str, *, confirmed: bool = False) -> TaskFrame:
+        """The frame of a request: screened first (speech acts, withdrawn, negated,
+        destructive, facts, unsupported services; ``screen``), then the tasks read from what
+        is left. ``confirmed``: the requester already said yes to the restated reading."""
         screened = self.screen.screen(text, requester)
         if screened.decline is not None:
             return TaskFrame(
@@ -95,12 +106,42 @@ class InstructionParser:
                 hints=screened.hints,
                 evidence=screened.evidence,
             )
+        if screened.question is not None:
+            return TaskFrame(
+                requester=requester,
+                question=screened.question,
+                hints=screened.hints,
+                evidence=screened.evidence,
+            )
         frame = self._parse(screened.text, requester)
         if frame.understood:
             frame = self._with_operations(frame, screened.text)
+        if frame.question == NOT_UNDERSTOOD:
+            unknown = self._unknown_item(screened.text)
+            if unknown is not None:
+                frame = TaskFrame(requester=requester, decline=unknown)
         said = screened.text.strip()
         evidence = [*screened.evidence, *(self._evidence(t, said) for t in frame.tasks)]
+        if frame.understood and screened.confirm and not confirmed:
+            what = " and ".join(describe(t, self.office, requester) for t in frame.tasks)
+            frame = TaskFrame(requester=requester, question=f"Shall I {what}?")
         return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+
+    def _unknown_item(self, text: str) -> str | None:
+        """ "bring me a tape measure": a fetch of a thing no one here has, said in words."""
+        tokens = self.lex.tokens(text)
+        mentions = self.lex.scan(tokens)
+        cue = next((m for m in mentions if m.kind == "cue" and set(m.ids) & {"give", "make"}), None)
+        if cue is None or any(m.kind in ("item", "facility") for m in mentions):
+            return None
+        words = [t.word for t in tokens[cue.end :]]
+        thing = self.screen._unknown_thing(words)
+        if not thing or not all(language.lemmas(w) or language.zipf(w) > 0 for w in thing.split()):
+            return None
+        return (
+            f"Sorry, there is no {thing} in this office that I know of, so I can't get you "
+            f"one. {self.screen.capabilities()}"
+        )
 
     def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
@@ -178,15 +219,57 @@ class InstructionParser:
         )
 
     def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
-        """Re-parse after clarifying answers: the original with the answers, else the answer."""
+        """Re-parse after clarifying answers: a yes or no to "Shall I ...?", the reading the
+        answer chose, else the original with the answers, else the answer."""
         frame = self.parse(text, requester)
         for answer in answers:
-            if frame.understood:
+            if frame.understood or frame.decline is not None:
                 break
+            if frame.question is not None and "Shall I" in frame.question:
+                yes_no = stance(answer)
+                if yes_no == "yes":
+                    offer = self.screen.screen(text, requester).offer
+                    frame = self.parse(offer or text, requester, confirmed=True)
+                    continue
+                if yes_no == "no":
+                    return TaskFrame(
+                        requester=requester,
+                        decline="OK, I won't do anything, then.",
+                        decline_outcome="done",
+                    )
+            chosen = self._chosen_reading(text, answer)
+            if chosen:
+                self.lex.chosen = chosen
+                try:
+                    frame = self.parse(text, requester)
+                finally:
+                    self.lex.chosen = {}
+                continue
             combined = self.parse(f"{text}. {answer}", requester)
             alone = self.parse(answer, requester)
             frame = combined if combined.understood or not alone.understood else alone
         return frame
+
+    def _chosen_reading(self, text: str, answer: str) -> dict[str, Reading]:
+        """Which reading an answer chose for a name that may be a word: it names the person,
+        or it repeats the word's phrase ("the talk", "the grace period one")."""
+        tokens = self.lex.tokens(text)
+        said = self.lex.tokens(answer)
+        named = {i for m in self.lex.scan(said) if m.kind == "person" for i in m.ids}
+        answer_words = {t.word for t in said} - COMMON
+        chosen: dict[str, Reading] = {}
+        for m in self.lex.scan(tokens):
+            if m.kind != "person" or not m.alternative:
+                continue
+            word = tokens[m.start].word
+            full = {language.fold(w) for i in m.ids for w in self.office.person(i).name.split()}
+            if set(m.ids) & named and (answer_words & full) - {word}:
+                chosen[word] = "person"  # "Grace Huang"
+            elif answer_words & {language.fold(w) for w in m.alternative.split()}:
+                chosen[word] = "word"  # "the grace period talk", "the talk"
+            elif set(m.ids) & named:
+                chosen[word] = "person"
+        return chosen
 
     @staticmethod
     def _refers_back(clause: Clause) -> bool:
@@ -246,6 +329,9 @@ class InstructionParser:
     def _problems(self, tokens: list[Token], mentions: list[Mention]) -> list[str]:
         out: list[str] = []
         for n, m in enumerate(mentions):
+            if m.kind == "person" and m.alternative and len(m.ids) == 1:
+                name = self.office.person(m.id).name
+                out.append(f"Do you mean {name}, or {m.alternative}?")
             if m.kind == "person" and len(m.ids) > 1:
                 names = " or ".join(self.office.person(i).name for i in m.ids)
                 said = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
@@ -311,7 +397,8 @@ class InstructionParser:
             if t.kind == "transfer":
                 if t.owner is None and self._kinds[t.item] == "personal":
                     return f"Whose {name} do you mean?"
-                if t.owner is not None and t.owner == t.recipient:
+                kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
+                if t.owner is not None and t.owner == t.recipient and not kept:
                     who = "you" if t.owner == requester else self.office.person(t.owner).name
                     return (
                         f"Who should get {who}r {name}?"

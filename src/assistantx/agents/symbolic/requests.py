@@ -19,6 +19,7 @@ import re
 
 from assistantx.agents.symbolic._lexicon import Lexicon
 from assistantx.agents.symbolic.frames import NOT_UNDERSTOOD, InstructionParser
+from assistantx.agents.symbolic.screen import UNANSWERED
 from assistantx.core import english
 from assistantx.core.office import Office
 
@@ -28,6 +29,8 @@ _REQUEST_WORDING = re.compile(
     re.IGNORECASE,
 )
 _OPENERS = english.words("openers")
+# What the screen calls a piece that neither asks for nor about anything (``screen``).
+_SAID_ONLY = frozenset({"thanks, not a request", "a statement, context only", UNANSWERED})
 
 
 class RequestRecognizer:
@@ -43,6 +46,8 @@ class RequestRecognizer:
         if strict:
             return False
         frame = self._parser.parse(text, sender)
+        if frame.decline is not None and all(e.meaning in _SAID_ONLY for e in frame.evidence):
+            return False  # thanks or a statement: nothing to act on, nothing to answer
         if frame.understood or frame.decline is not None:
             return True  # a declined request is still answered with its reason
         return frame.question is not None and frame.question != NOT_UNDERSTOOD

@@ -7,15 +7,26 @@ decides it:
 ==============  ==================================================================  ==========
 rule            matches                                                             effect
 ==============  ==================================================================  ==========
-withdrawn       "never mind", "forget it", "cancel that"                            drops all
+withdrawn       "never mind", "forget it", "forget about the scissors"              drops all
                                                                                     said before
+wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
+thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
 negated         "don't bring me ...", "no need to print ..."                        drops piece
 destructive     "throw away Wang's stapler", "hide ...", "get rid of ..."           declines
 fact            "Wang is away", "Zhang is in the meeting room",                     a hint;
                 "Zhang's stapler is broken"                                         drops piece
+question        "who has a tape measure?", "is the printer working?" (not "could    answered;
+                you bring me ...?", a request)                                      "Shall I?"
+statement       "my laptop cable is too short", "I spilled my tea"                  context
 unsupported     a service the office does not offer ("scan my contract",            declines
                 "make me a cup of tea")
 ==============  ==================================================================  ==========
+
+The speech acts (wish, thanks, question, statement) are ``speech``'s: only a request moves the
+robot, the others are answered in words. A message with no request left is answered with the
+replies of its pieces; an information question that may be a request in disguise ("does anyone
+have a stapler?") is answered and met with "Shall I bring you one?"; a third person's need
+with no request wording ("Min needs scissors") is restated and asked before anything moves.
 
 Then two rewrites make the rest readable by the frame parser: a thing named by its purpose
 ("something to cut this with") becomes the office's item type declared for that purpose, and
@@ -36,6 +47,8 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic._lexicon import Lexicon
+from assistantx.agents.symbolic.speech import NEED_PHRASES, SpeechActs
+from assistantx.core import language
 from assistantx.core.english import entries_of
 from assistantx.core.english import words as english_words
 from assistantx.core.office import Office
@@ -72,6 +85,7 @@ class English:
     modifier_prepositions: frozenset[str]
     courtesy: frozenset[str]
     own_item_lost: tuple[tuple[str, ...], ...]
+    exclusion_openers: frozenset[str]
 
 
 @functools.cache
@@ -107,11 +121,12 @@ def english() -> English:
         modifier_prepositions=words("modifier_prepositions"),
         courtesy=words("courtesy"),
         own_item_lost=phrases("own_item_lost"),
+        exclusion_openers=words("exclusion_openers"),
     )
 
 
 def _words(text: str) -> list[str]:
-    return [w.lower().replace("'", "").replace("’", "") for w in _WORD.findall(text)]
+    return language.words(text)
 
 
 def _starts_with(words: list[str], at: int, phrase: tuple[str, ...]) -> bool:
@@ -134,13 +149,25 @@ class Piece:
     start: int
     end: int
     words: list[str]
+    asks: bool = False  # the sentence ends with a question mark
 
     def verb_at(self, lead_in: frozenset[str]) -> int:
         """Index of the request's verb: the first word that is no lead-in ("could you ...")."""
         return next((n for n, w in enumerate(self.words) if w not in lead_in), len(self.words))
 
 
-Verdict = Literal["withdrawn", "negated", "destructive", "fact", "unsupported"]
+Verdict = Literal[
+    "withdrawn",
+    "exclusion",
+    "wish",
+    "thanks",
+    "negated",
+    "destructive",
+    "fact",
+    "question",
+    "statement",
+    "unsupported",
+]
 
 
 @dataclass(frozen=True)
@@ -149,7 +176,10 @@ class Finding:
     piece: Piece
     meaning: str  # in words, for the evidence
     hint: Hint | None = None
-    message: str = ""  # for a decline
+    message: str = ""  # for a decline, or the reply to a non-request
+    offer: str = ""  # the request a "Shall I ...?" would carry out on a yes
+    shall: str = ""  # the "Shall I ...?" question itself
+    context: tuple[str, ...] = ()  # item types and people a statement named
 
 
 @dataclass
@@ -161,6 +191,9 @@ class Screened:
     outcome: DeclineOutcome = "unachievable"
     hints: list[Hint] = field(default_factory=list)
     evidence: list[Evidence] = field(default_factory=list)
+    question: str | None = None  # "... Shall I bring you one?": asked before anything moves
+    offer: str | None = None  # the request carried out when the answer is yes
+    confirm: bool = False  # a third person's need only: restate the reading and ask
 
 
 Rule = Callable[["RequestScreen", Piece, str], "Finding | None"]
@@ -173,6 +206,7 @@ class RequestScreen:
         self.office = office
         self.lex = lex
         self.en = english()
+        self.acts = SpeechActs(lex)
         self._office_words = frozenset(
             w
             for phrase in (
@@ -190,6 +224,7 @@ class RequestScreen:
     RULES: tuple[tuple[Verdict, Rule], ...] = ()  # filled in below the class
 
     def screen(self, text: str, requester: str) -> Screened:
+        self._text = text
         pieces = _pieces(text)
         findings: list[Finding] = []
         for piece in pieces:
@@ -208,14 +243,10 @@ class RequestScreen:
         if declines:
             out.decline, out.outcome = declines[0].message, "unachievable"
             return out
-        dropped = [f.piece for f in findings if f.verdict in ("negated", "fact", "withdrawn")]
+        dropped = [f.piece for f in findings if f.verdict in _DROPPED]
         left = _without(text, cut, dropped)
         if not set(_words(left)) - self.en.courtesy:
             negated = [f for f in live if f.verdict == "negated"]
-            if withdrawn and not negated:
-                out.decline = "OK, I've dropped that request. I did nothing."
-                out.outcome = "done"
-                return out
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)
                 out.decline = (
@@ -224,17 +255,201 @@ class RequestScreen:
                 )
                 out.outcome = "done"
                 return out
-        left, rewrites = self._rewrite(left, out.hints)
+            if live or withdrawn:
+                return self._answered(out, live, withdrawn=bool(withdrawn))
+        kept = [p for p in pieces if p.start >= cut and not any(p is d for d in dropped)]
+        if any(self.acts.need(p.words, self._self_words) for p in kept) and not any(
+            self.acts.request(p.words) for p in kept
+        ):
+            out.confirm = True  # "Min needs scissors.": restate and ask before moving
+        context = [c for f in live if f.verdict == "statement" for c in f.context]
+        left, rewrites = self._rewrite(left, out.hints, context)
         out.evidence += rewrites
         out.text = left
+        return out
+
+    def _answered(self, out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened:
+        """No request left: the replies to what was said, or one "Shall I ...?"."""
+        out.outcome = "done"
+        offers = [f for f in live if f.offer]
+        if len(offers) == 1 and not any(f.verdict in ("wish", "thanks") for f in live):
+            out.question = f"{offers[0].message} {offers[0].shall}"
+            out.offer = offers[0].offer
+            return out
+        replies = [f.message for f in live if f.message]
+        if withdrawn:
+            replies.insert(0, "OK, I've dropped that request.")
+        facts = [f.meaning.removeprefix("a fact: ") for f in live if f.verdict == "fact"]
+        if facts:
+            replies.append(f"Thanks, noted: {'; '.join(facts)}.")
+        if not replies:
+            replies = ["Noted."]
+        out.decline = " ".join(dict.fromkeys(replies)) + " I did nothing."
         return out
 
     # -- rules ---------------------------------------------------------------------------
     def _withdrawn(self, piece: Piece, requester: str) -> Finding | None:
         words = [w for w in piece.words if w not in ("actually", "oh", "ok", "okay", "please")]
-        if tuple(words) in self.en.withdraw:
+        if tuple(words) in self.en.withdraw or self.acts.withdrawal(words):
             return Finding("withdrawn", piece, "withdraws the request")
         return None
+
+    def _exclusion(self, piece: Piece, requester: str) -> Finding | None:
+        """ "not from Wang though", "Not Chen's, they're blunt": that person's item is not
+        wanted; a hint that keeps them out, never a party."""
+        words = [w for w in piece.words if w not in ("but", "though", "just", "please")]
+        if not words or words[0] not in self.en.exclusion_openers:
+            return None
+        people = self._named(piece.text, "person")
+        items = self._named(piece.text, "item") or self._named(self._text, "item")
+        if len(people) != 1 or not items:
+            return None
+        who = self.office.person(people[0]).name
+        thing = self.office.item_type(items[0]).name
+        hint = Hint(
+            kind="condition",
+            person=people[0],
+            value="not wanted",
+            item_type=items[0],
+            said=piece.text,
+        )
+        return Finding("exclusion", piece, f"not {who}'s {thing}", hint)
+
+    def _wish(self, piece: Piece, requester: str) -> Finding | None:
+        if not self.acts.wish(piece.words):
+            return None
+        things = self._named(piece.text, "item")
+        what = f"the {self.office.item_type(things[0]).name}" if len(things) == 1 else "anything"
+        return Finding(
+            "wish",
+            piece,
+            "a wish about other people, not a request",
+            message=(
+                f"Understood: I won't move or hand out {what} unless its owner asks me to. "
+                "I can't keep people away from things, though."
+            ),
+        )
+
+    def _thanks(self, piece: Piece, requester: str) -> Finding | None:
+        act = self.acts.thanks(piece.words)
+        if act is None:
+            return None
+        if act.relay:
+            people = self._named(piece.text, "person")
+            who = self.office.person(people[0]).name if len(people) == 1 else "them"
+            message = (
+                f"I only pass on messages as part of an errand, so please tell {who} yourself."
+            )
+            return Finding("thanks", piece, "thanks to pass on, not a request", message=message)
+        return Finding("thanks", piece, "thanks, not a request", message="You're welcome!")
+
+    def _question(self, piece: Piece, requester: str) -> Finding | None:
+        kind = self.acts.question(piece.words, piece.asks)
+        if kind != "info":
+            return None
+        items = self._named(piece.text, "item")
+        facilities = self._named(piece.text, "facility")
+        people = self._named(piece.text, "person")
+        if len(items) == 1 and not facilities:
+            return self._item_question(piece, items[0], requester)
+        if facilities:
+            f = self.office.facility(facilities[0])
+            where = self.office.location(f.location).name
+            message = (
+                f"As far as I know the {f.name} at the {where} is in service, but I can't "
+                "check it from here."
+            )
+        elif len(people) == 1:
+            p = self.office.person(people[0])
+            where = self.office.location(p.location).name
+            message = f"{p.name} works at {where}; I can't see whether they are there right now."
+        else:
+            thing = self._unknown_thing(piece.words)
+            if not thing:
+                message = f"I can't answer that from what I know. {self.capabilities()}"
+                return Finding("question", piece, UNANSWERED, message=message)
+            message = f"I don't know of any {thing} in this office."
+        return Finding("question", piece, "a question, answered in words", message=message)
+
+    def _item_question(self, piece: Piece, item: str, requester: str) -> Finding:
+        t = self.office.item_type(item)
+        owners = [o for o in self.office.owners_of(item, known_only=True) if o != requester]
+        asked = [p for p in self._named(piece.text, "person") if p != requester]
+        names = [self.office.person(o).name for o in owners[:4]]
+        makers = [f for f in self.office.facilities if item in f.products]
+        whose = ""
+        a_thing = f"{_article(t.name)} {t.name}"
+        if language.plural(t.name) == t.name:
+            a_thing = f"some {t.name}"  # "scissors"
+        if self._says_mine(piece.text, item):  # "did anyone find my umbrella?"
+            answer = f"I don't know where your {t.name} is; I can't see it from here."
+            return Finding("question", piece, "a question, answered in words", message=answer)
+        if len(asked) == 1:  # "does Hope have a calculator?"
+            who = self.office.person(asked[0]).name
+            if asked[0] in owners:
+                answer, whose = f"As far as I know, {who} has {a_thing}.", f"{who}'s"
+            else:
+                answer = f"As far as I know, {who} has no {t.name}."
+        elif makers:
+            where = self.office.location(makers[0].location).name
+            answer = f"The {makers[0].name} at the {where} makes them."
+        elif names:
+            has = "has" if len(names) == 1 else "have"
+            answer = f"As far as I know, {_listed(names)} {has} {a_thing}."
+        else:
+            answer = f"I don't know of anyone here with {a_thing}."
+        if t.kind not in ("belonging", "product"):  # a document, a file: not for me to tell
+            answer = f"I can't tell that about the {t.name} from what I know."
+            return Finding("question", piece, "a question, answered in words", message=answer)
+        verb = "get" if t.kind == "product" else "bring"
+        return Finding(
+            "question",
+            piece,
+            "a question that may be a request: answered, then asked",
+            message=answer,
+            offer=f"{verb} me {whose or _article(t.name)} {t.name}",
+            shall=f"Shall I {verb} you one?",
+        )
+
+    def _statement(self, piece: Piece, requester: str) -> Finding | None:
+        if piece.asks or not self.acts.statement(piece.words):
+            return None
+        named = tuple(self._stated_items(piece, requester)) + tuple(
+            f"person:{p}" for p in self._named(piece.text, "person")[:1]
+        )
+        return Finding("statement", piece, "a statement, context only", context=named)
+
+    def _says_mine(self, text: str, item: str) -> bool:
+        mentions = self.lex.scan(self.lex.tokens(text))
+        return any(
+            m.kind == "item" and m.ids == (item,) and n and mentions[n - 1].kind == "self"
+            for n, m in enumerate(mentions)
+        )
+
+    def _stated_items(self, piece: Piece, requester: str) -> list[str]:
+        """The items a statement names, as "item|whose": "my stapler" → stapler|my,
+        "the book ... belongs to Yang" → book|Yang Lei's (a later "it" keeps its owner)."""
+        tokens = self.lex.tokens(piece.text)
+        mentions = self.lex.scan(tokens)
+        words = [t.word for t in tokens]
+        out: list[str] = []
+        for n, m in enumerate(mentions):
+            if m.kind != "item" or len(m.ids) != 1:
+                continue
+            before = mentions[n - 1] if n else None
+            whose = ""
+            if before is not None and before.kind == "self" and before.possessive:
+                whose = "my"
+            elif before is not None and before.kind == "person" and before.possessive:
+                whose = f"{self.office.person(before.ids[0]).name}'s"
+            else:
+                for k in range(len(words) - 1):
+                    if words[k : k + 2] == ["belongs", "to"]:
+                        owner = [x for x in mentions if x.kind == "person" and x.start > k]
+                        if owner and len(owner[0].ids) == 1:
+                            whose = f"{self.office.person(owner[0].ids[0]).name}'s"
+            out.append(f"{m.ids[0]}|{whose}")
+        return out
 
     def _negated(self, piece: Piece, requester: str) -> Finding | None:
         words = piece.words
@@ -261,6 +476,8 @@ class RequestScreen:
         for sub in _sub_pieces(piece):
             at = sub.verb_at(self.en.lead_in)
             for verb in self.en.destructive:
+                if verb[0] in self.lex.operation_words:
+                    continue  # "shred my drafts" where a shredder is offered: a service
                 if _starts_with(sub.words, at, verb):
                     said = " ".join(verb)
                     return Finding(
@@ -383,27 +600,48 @@ class RequestScreen:
         )
 
     # -- rewrites ------------------------------------------------------------------------
-    def _rewrite(self, text: str, hints: list[Hint]) -> tuple[str, list[Evidence]]:
+    def _rewrite(
+        self, text: str, hints: list[Hint], context: list[str]
+    ) -> tuple[str, list[Evidence]]:
         evidence: list[Evidence] = []
         text, found = self._purposes(text)
         evidence += found
-        text = self._name_pronouns(text, hints)
-        broken = [h for h in hints if h.kind == "condition" and h.item_type]
-        if broken and not self._names_an_item(text):
-            thing = self.office.item_type(broken[-1].item_type or "").name
-            for phrase in (*self.en.another_one, "some"):
+        for phrase in NEED_PHRASES:  # "Chen is looking for a pen": Chen needs a pen
+            spaced = r"[\s']*".join(re.escape(w) for w in phrase)
+            text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
+        subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
+        text = self._name_pronouns(text, hints, subjects)
+        said = [
+            f"{h.item_type}|"
+            for h in hints
+            if h.kind == "condition" and h.item_type and h.value != "not wanted"
+        ]
+        stated = [c for c in context if not c.startswith("person:")]
+        said += stated
+        if said and not self._names_an_item(text):
+            item, _, whose = said[-1].partition("|")
+            thing = self.office.item_type(item).name
+            # "the stapler is for Wang, bring it to him": "it" is the stated item, and
+            # "Gao asked for my scissors, bring them to her": mine
+            back = ("it", "them") if stated and said[-1] == stated[-1] else ()
+            for phrase in (*self.en.another_one, "some", *back):
                 pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
                 match = pattern.search(text)
                 if match:
-                    evidence.append(Evidence(words=match.group(0), meaning=f"another {thing}"))
-                    text = text[: match.start()] + f"a {thing}" + text[match.end() :]
+                    kept = phrase in back and whose
+                    said_as = f"{whose} {thing}" if kept else f"a {thing}"
+                    meaning = said_as if kept else f"another {thing}"
+                    evidence.append(Evidence(words=match.group(0), meaning=meaning))
+                    text = text[: match.start()] + said_as + text[match.end() :]
                     break
         return text, evidence
 
-    def _name_pronouns(self, text: str, hints: list[Hint]) -> str:
-        """ "Zhang is at his desk. Get him to sign ...": with the fact taken out, a pronoun
-        that can only mean the one person it named gets the name back."""
-        people = {h.person for h in hints if h.kind in ("availability", "location")}
+    def _name_pronouns(self, text: str, hints: list[Hint], subjects: set[str]) -> str:
+        """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
+        pack": with the fact taken out, a pronoun that can only mean the one person it named
+        gets the name back."""
+        people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
+        people |= subjects
         if len(people) != 1:
             return text
         name = self.office.person(next(iter(people))).name
@@ -458,6 +696,37 @@ class RequestScreen:
     def _names_an_item(self, text: str) -> bool:
         return any(m.kind == "item" for m in self.lex.scan(self.lex.tokens(text)))
 
+    def _named(self, text: str, kind: str) -> list[str]:
+        """The ids of the people, items or facilities a text names, in order."""
+        tokens = self.lex.tokens(text)
+        mentions = self.lex.scan(tokens)
+        found: list[str] = []
+        for n, m in enumerate(mentions):
+            word = tokens[m.start].word
+            if m.kind == kind and len(m.ids) == 1:
+                found.append(m.ids[0])
+            elif kind == "item" and m.kind == "cue" and word in self.lex.items:
+                if n and mentions[n - 1].possessive:  # "Mao's seal": the item, not the verb
+                    found.append(self.lex.items[word])
+        return list(dict.fromkeys(found))
+
+    @property
+    def _self_words(self) -> frozenset[str]:
+        return frozenset({"i", "me", "my", "we", "us", "our", "im", "id", "ive"})
+
+    def _unknown_thing(self, words: list[str]) -> str:
+        """ "a tape measure" in "who has a tape measure": the words after an article that
+        name no item of this office."""
+        for n, w in enumerate(words):
+            if w in ("a", "an", "any", "some"):
+                rest = []
+                for x in words[n + 1 :]:
+                    if x in _DETERMINERS or x in self.en.modifier_prepositions or x in ("i", "me"):
+                        break
+                    rest.append(x)
+                return " ".join(rest[:3])
+        return ""
+
     def _place(self, text: str) -> str | None:
         """The location a fact names: a facility's, or a location by its name."""
         mentions = self.lex.scan(self.lex.tokens(text))
@@ -487,29 +756,38 @@ class RequestScreen:
         return f"What I can do here: {_listed(parts)}."
 
 
+def _article(noun: str) -> str:
+    return "an" if noun[:1].lower() in "aeiou" else "a"
+
+
 def _listed(words: list[str]) -> str:
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
 
 
 RequestScreen.RULES = (
     ("withdrawn", RequestScreen._withdrawn),
+    ("exclusion", RequestScreen._exclusion),
+    ("wish", RequestScreen._wish),
+    ("thanks", RequestScreen._thanks),
     ("negated", RequestScreen._negated),
     ("destructive", RequestScreen._destructive),
     ("fact", RequestScreen._fact),
+    ("question", RequestScreen._question),
+    ("statement", RequestScreen._statement),
     ("unsupported", RequestScreen._unsupported),
+)
+UNANSWERED = "a question I cannot answer"
+_DROPPED = frozenset(
+    {"negated", "fact", "withdrawn", "exclusion", "wish", "thanks", "question", "statement"}
 )
 
 
 def _stem(word: str) -> str:
-    """'cutting' → 'cut', 'writes' → 'write', 'stapling' → 'staple' (enough for purposes)."""
+    """'cutting' → 'cut', 'writes' → 'write', 'stapling' → 'staple' (the verb's lemma, from
+    the morphology library; a word it does not know as a verb stays as it is)."""
     w = word.lower()
-    if w.endswith("ing") and len(w) > 5:
-        w = w[:-3]
-        if len(w) > 2 and w[-1] == w[-2]:
-            w = w[:-1]
-    elif w.endswith("s") and not w.endswith("ss") and len(w) > 3:
-        w = w[:-1]
-    return w.removesuffix("e")
+    found = language.verb_lemmas(w)
+    return min(found, key=len) if found else w
 
 
 def _purpose(phrase: str) -> str:
@@ -532,7 +810,10 @@ def _pieces(text: str) -> list[Piece]:
             piece_text = chunk.strip()
             if piece_text:
                 start = sentence_start + sub + lead
-                out.append(Piece(piece_text, start, start + len(piece_text), _words(piece_text)))
+                asks = b is None and m is not None and "?" in m.group(0)  # its last part
+                out.append(
+                    Piece(piece_text, start, start + len(piece_text), _words(piece_text), asks)
+                )
             if b is not None:
                 sub = b.end()
         pos = m.end() if m is not None else len(text)

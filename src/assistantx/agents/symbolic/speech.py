@@ -1,0 +1,246 @@
+"""Speech acts: what each sentence of a message *does*, before any task is read from it.
+
+Only a request moves the robot. Every piece of a message (a sentence, or a comma part of
+one) is one of:
+
+===========  ==========================================================  =====================
+act          examples                                                    answered with
+===========  ==========================================================  =====================
+request      "bring me a stapler", "can you get me a pen?", "I need ..." the errand
+question     "who has a tape measure?", "is the printer working?",       words from memory;
+             "where is Zhang?", "does anyone have a stapler?"            "Shall I ...?" when
+                                                                         it may be a request
+thanks       "thanks for the stapler!", "say thanks to Wang for ..."     words
+wish         "please keep everyone away from Mao's seal today",          words: nothing is
+             "nobody take my mug", "don't let anyone use my pen"         moved
+withdrawal   "never mind", "forget about the scissors", "cancel that"    drops what came before
+statement    "my laptop cable is too short", "I spilled my tea",         context only
+             "Pat hurt her hand", "I've got some"
+need         "Min needs scissors" (a third person's need)                a request only with
+                                                                         one ("bring her
+                                                                         some"), else asked
+===========  ==========================================================  =====================
+
+A polite request phrased as a question ("could someone lend me a pen?", "can I have ...")
+stays a request. The words are the package's English data (``data/english.yaml``); finite
+verbs ("spilled", "hurt") come from the morphology library (``core.language``).
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from typing import Literal
+
+from assistantx.agents.symbolic._lexicon import Lexicon
+from assistantx.core import english, language
+
+QuestionKind = Literal["polite", "info"]
+
+_WH = english.words("wh_words")
+_AUX = english.words("question_auxiliaries")
+_MODALS = english.words("request_modals")
+_ASKEES = english.words("request_askees")
+_OPENERS = english.words("speech_openers")
+_THANKS = english.words("thanks_words")
+_RELAY = english.words("relay_verbs")
+_NOBODY = tuple(tuple(p.split()) for p in english.entries("prohibition_subjects"))
+_EVERYONE = english.words("everyone_words")
+_GUARD_VERBS = english.words("guard_verbs")
+_AWAY = english.words("guard_away")
+_NEED = english.words("need_verbs")
+_SUBJECTS = english.words("statement_subjects")
+_SUBJECT_VERB = english.words("subject_contractions")
+_STATE_VERBS = english.words("state_verbs")
+_WILLING = english.words("request_markers")
+_WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
+_BORROW = english.words("borrow_words")
+NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
+_YOU = frozenset({"you", "u", "ya"})
+_SELF_PLANS = frozenset({"ill"})
+_REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
+_NEGATIONS = english.words("statement_negations")
+_SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
+
+
+@dataclass(frozen=True)
+class Act:
+    """The act of one piece, with what it is about."""
+
+    kind: Literal["question", "thanks", "wish", "withdrawal", "statement", "need"]
+    question: QuestionKind | None = None
+    relay: bool = False  # thanks to be passed on to someone else
+
+
+def _content(words: list[str]) -> list[str]:
+    k = 0
+    while k < len(words) and words[k] in _OPENERS:
+        k += 1
+    return words[k:]
+
+
+def _has_need_phrase(w: list[str]) -> bool:
+    return any(_starts(w[n:], p) for n in range(len(w)) for p in NEED_PHRASES)
+
+
+def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
+    return tuple(words[: len(phrase)]) == phrase
+
+
+class SpeechActs:
+    """Classifies the pieces of a message against one office's vocabulary."""
+
+    def __init__(self, lex: Lexicon) -> None:
+        self.lex = lex
+
+    def withdrawal(self, words: list[str]) -> bool:
+        """ "forget about the scissors", "never mind the stapler", "cancel my request"."""
+        w = _content(words)
+        for head in _WITHDRAW_HEADS:
+            if _starts(w, head):
+                rest = w[len(head) :]
+                return not rest or not self._imperative(rest)
+        return False
+
+    def wish(self, words: list[str]) -> bool:
+        """A wish or prohibition about other people's conduct: nothing to fetch."""
+        w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        for n in range(len(w)):
+            if any(_starts(w[n:], p) for p in _NOBODY):
+                return True  # "nobody take my mug", "make sure no one uses ..."
+        if w[:1] and w[0] in _GUARD_VERBS:
+            rest = set(w[1:])
+            if rest & _EVERYONE or rest & _AWAY:  # "keep everyone away from", "leave it alone"
+                return True
+        if w[:2] in (["dont", "let"], ["do", "not"]) and set(w[2:4]) & _EVERYONE:
+            return True  # "don't let anyone touch ..."
+        return w[:2] == ["do", "not"] and w[2:3] == ["let"] and bool(set(w[3:5]) & _EVERYONE)
+
+    def thanks(self, words: list[str]) -> Act | None:
+        w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        if set(w[:3]) & _THANKS and not (set(w[:3]) & _RELAY):
+            return Act("thanks")  # "thanks ...", "big thanks to ...", "many thanks"
+        if w[:1] and w[0] in _RELAY and set(w[1:4]) & _THANKS:
+            return Act("thanks", relay=True)  # "say thanks to Wang", "tell Wang thank you"
+        if w[:1] == ["thank"]:
+            return Act("thanks")
+        return None
+
+    def question(self, words: list[str], asks: bool) -> QuestionKind | None:
+        """Whether a piece is a question, and a polite request or a question for information."""
+        w = _content(words)
+        if not w:
+            return None
+        first, second = w[0], (w[1] if len(w) > 1 else "")
+        if first in _WH:
+            if second == "about":  # "how about a coffee?"
+                return "polite"
+            return "info"
+        asked = second in _ASKEES or self._person_at(w, 1)
+        if first in _MODALS and asked and "be" in w[2:4]:
+            return "info"  # "will Ray be in tomorrow?"
+        if first in _MODALS and (asked or second in ("you", "u", "ya", "i", "we")):
+            return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
+        if first in _MODALS and second in ("not", "nt"):
+            return "polite"
+        if first in _AUX and first in _SUBJECT_VERB and not asks:
+            return None  # "we're trying to ...": a contraction, not "were ...?"
+        if first in _AUX:
+            if self._for_me(w):
+                return "polite"  # "does anyone have a stapler I could borrow?"
+            return "info"
+        if asks and not self._imperative(w) and not (set(w) & _WILLING):
+            return "info" if first in _AUX | _WH else None
+        return None
+
+    def statement(self, words: list[str]) -> bool:
+        """A statement of fact, not a request: a subject, then a state or past verb, before
+        any request wording ("my laptop cable is too short", "I spilled my tea")."""
+        w = _content(words)
+        if not w or self._imperative(w) or self.question(words, asks=False) is not None:
+            return False
+        if _has_need_phrase(w):
+            return False  # "Chen is looking for a pen": a need
+        pairs = itertools.pairwise(w)
+        if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
+            return False  # "I was wondering if you could print ..."
+        if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
+            return True  # "happy to lend it": the speaker offers, nobody asks
+        if w[-1] in _REFLEXIVES and w[0] not in _MODALS:
+            return True  # "she'll get it herself": someone else's own plan
+        wants = any(a == "to" and b in self.lex.cue_words for a, b in itertools.pairwise(w))
+        if wants and w[-1] != "myself" and (w[0] in _SUBJECT_VERB or w[0] in ("i", "we", "id")):
+            return False  # "I'm hoping to borrow a ruler": the speaker's own want
+        if w[0] in _SELF_PLANS or w[:2] == ["i", "will"]:
+            return not (
+                len(w) > 1 and w[-1] != "myself" and set(w[1:3]) & _NEED
+            )  # "I'll get it myself"
+        if w[0] in _SUBJECT_VERB:
+            return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."
+        if (
+            w[0] not in self.lex.cue_words
+            and w[0] not in language.verb_lemmas(w[0])  # "put it on ...": an imperative
+            and not self._named(w[0])  # "rose needs ...": a name, not the verb "rise"
+            and w[0] not in _MODALS | _AUX | _WILLING
+            and "AUX" not in language.lemmas(w[0])
+            and language.is_finite_verb(w[0])
+        ):
+            return True  # "found one", "broke it"
+        if w[0] in ("got", "found") and w[1:2] and w[1] in ("one", "some", "it", "them"):
+            return True  # "got one already"
+        if w[0] not in _SUBJECTS and not self._named(w[0]):
+            return False
+        for n in range(1, min(len(w), 7)):
+            x = w[n]
+            if x in _NEGATIONS:
+                return True  # "Wang doesn't need the stapler any more": nobody asks
+            if x in _NEED or x in _WILLING or x in ("mean", "meant"):
+                return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
+            if x in _STATE_VERBS or (x not in self.lex.cue_words and language.is_finite_verb(x)):
+                return True
+            if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
+                return True  # "I've got some", "I have one"
+        return False
+
+    def need(self, words: list[str], requester_words: frozenset[str]) -> bool:
+        """ "Min needs scissors": someone else's need, said as a fact."""
+        w = _content(words)
+        if _has_need_phrase(w) and self._named(w[0]):
+            return True
+        for n in range(1, min(len(w), 5)):
+            if w[n] in _NEED and w[n].endswith("s"):
+                subject = w[:n]
+                return not set(subject) & requester_words and self._person_at(w, 0)
+        return False
+
+    def request(self, words: list[str]) -> bool:
+        """Request wording: an imperative, a polite question, or the requester's own need."""
+        w = _content(words)
+        if not w:
+            return False
+        if self._imperative(w) or set(w) & _WILLING:
+            return True
+        return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
+
+    # -- helpers -------------------------------------------------------------------------
+    def _imperative(self, w: list[str]) -> bool:
+        k = 0
+        while k < len(w) and w[k] in ("please", "pls", "plz", "kindly", "just", "also", "then"):
+            k += 1
+        return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
+
+    def _for_me(self, w: list[str]) -> bool:
+        """ "... I could borrow", "... lend me one", "... for me": the asker wants it."""
+        joined = " ".join(w)
+        return bool(set(w) & _BORROW) or " for me" in f" {joined}" or " me " in f" {joined} "
+
+    def _named(self, word: str) -> bool:
+        return word in self.lex.name_words or word in self.lex.people
+
+    def _person_at(self, w: list[str], n: int) -> bool:
+        k = n
+        while k < len(w) and k < n + 3:
+            if w[k] in self.lex.name_words or w[k] in self.lex.people:
+                return True
+            k += 1
+        return False

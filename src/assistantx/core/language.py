@@ -1,0 +1,159 @@
+"""English morphology, word knowledge, typo matching and Unicode text, from maintained libraries.
+
+The reader never keeps its own tables of irregular verbs, plurals or "names that are also
+words"; it asks libraries whose data ships inside their wheels (nothing is downloaded at run
+time):
+
+- ``lemminflect``: lemmas and inflections from a dictionary with the irregular forms
+  ("bound" → bind, "brought" → bring, "got" → get), rules for words it does not know;
+- ``wordfreq``: how common a word is in written English (Zipf scale: 6 ≈ "will", 3 ≈ once per
+  million words), which with lemminflect's dictionary says whether a name is also an ordinary
+  English word ("grace", "mark", "sun");
+- ``rapidfuzz``: edit distances (optimal string alignment: one swap of neighbours is one edit)
+  for typos, with a length-aware limit;
+- ``unicodedata`` (the standard library): NFKC normalization, case folding and diacritics-blind
+  keys ("José Müller" and "Jose Muller" are the same name).
+
+Everything here is pure and cached; the first call loads the word lists (about two seconds).
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import unicodedata
+from collections.abc import Iterable
+
+from lemminflect import getAllInflections, getAllInflectionsOOV, getAllLemmas
+from rapidfuzz.distance import OSA, Indel
+from wordfreq import zipf_frequency
+
+WORD = re.compile(r"[^\W_]+(?:['’][^\W_]+)*", re.UNICODE)
+"""A word of any script, with inner apostrophes ("José", "Müller's", "don't")."""
+
+# A word this common in written English (Zipf scale) is an ordinary word a person may type in
+# lower case; rarer dictionary words ("ken", "fang") are still words, but rarely meant.
+COMMON_ZIPF = 3.0
+
+# How far a typo may be from the word it means, by the typed word's length: 4–7 letters one
+# edit (a swap of neighbours is one), 8 and more two. Shorter words are never corrected.
+_MIN_TYPO_LENGTH = 4
+_LONG_WORD = 8
+
+_OPEN_CLASSES = ("NOUN", "VERB", "ADJ", "ADV", "AUX")
+
+
+def fold(text: str) -> str:
+    """NFKC, case-folded, without diacritics: the key two spellings of a word share."""
+    text = unicodedata.normalize("NFKC", text).replace("’", "'").casefold()
+    decomposed = unicodedata.normalize("NFD", text)
+    return unicodedata.normalize(
+        "NFC", "".join(c for c in decomposed if not unicodedata.combining(c))
+    )
+
+
+def words(text: str) -> list[str]:
+    """The folded words of a text, apostrophes dropped ("Müller's" → "mullers")."""
+    return [w.replace("'", "") for w in WORD.findall(fold(text))]
+
+
+@functools.cache
+def lemmas(word: str) -> dict[str, tuple[str, ...]]:
+    """The dictionary's lemmas of a word by part of speech ({} for a word it does not know)."""
+    return dict(getAllLemmas(word.lower()))
+
+
+def verb_lemmas(word: str) -> frozenset[str]:
+    """The verbs a word is a form of: "bound" → {bind, bound}, "got" → {get}."""
+    return frozenset(lemmas(word).get("VERB", ()))
+
+
+@functools.cache
+def verb_forms(verb: str) -> frozenset[str]:
+    """Every form of a verb: 'bind' → bind, binds, binding, bound; 'scan' → scanned.
+
+    A phrase ("seal in plastic") inflects its first word."""
+    head, _, rest = verb.lower().strip().partition(" ")
+    if not head:
+        return frozenset()
+    found = getAllInflections(head, upos="VERB") or getAllInflectionsOOV(head, upos="VERB")
+    forms = {head, *(f for group in found.values() for f in group)}
+    return frozenset(f"{f} {rest}".strip() for f in forms)
+
+
+@functools.cache
+def plural(noun: str) -> str:
+    """The plural of a noun or of a phrase's last word ("tape dispenser" → tape dispensers)."""
+    *head, last = noun.split(" ")
+    if last.endswith("s"):
+        return noun
+    found = getAllInflections(last, upos="NOUN") or getAllInflectionsOOV(last, upos="NOUN")
+    forms = found.get("NNS", ())
+    return " ".join([*head, forms[0] if forms else last + "s"])
+
+
+@functools.cache
+def is_english_word(word: str) -> bool:
+    """Whether a (folded) word is an ordinary English word: in the dictionary as an open-class
+    word and common enough in writing. "grace", "mark", "sun", "honest" are; "zhang",
+    "okafor" are not."""
+    w = word.lower()
+    if not w.isalpha():
+        return False
+    return any(pos in lemmas(w) for pos in _OPEN_CLASSES) and zipf_frequency(w, "en") >= COMMON_ZIPF
+
+
+@functools.cache
+def zipf(word: str) -> float:
+    """How common a word is in written English (Zipf scale; 0 for unknown words)."""
+    return float(zipf_frequency(word.lower(), "en"))
+
+
+def typo_limit(word: str) -> int:
+    """The most edits a typed word may be from the word it is taken to mean (0: none)."""
+    if len(word) < _MIN_TYPO_LENGTH:
+        return 0
+    return 2 if len(word) >= _LONG_WORD else 1
+
+
+def closest(word: str, vocabulary: Iterable[str]) -> list[str]:
+    """The vocabulary words nearest to a typed word within its typo limit, all equally near
+    (several: the typo is ambiguous). Nearest by edits (a swap of neighbours is one), ties
+    broken by insertions and deletions only ("staplr" is nearer stapler than staple). The
+    typed word itself never counts."""
+    limit = typo_limit(word)
+    if limit == 0:
+        return []
+    scored: list[tuple[int, int, str]] = []
+    for candidate in vocabulary:
+        if candidate == word or abs(len(candidate) - len(word)) > limit:
+            continue
+        d = OSA.distance(word, candidate, score_cutoff=limit)
+        if d > limit or typo_limit(candidate) == 0:
+            continue
+        scored.append((d, Indel.distance(word, candidate), candidate))
+    if not scored:
+        return []
+    best = min(s[:2] for s in scored)
+    return sorted(c for d, i, c in scored if (d, i) == best)
+
+
+def within(word: str, vocabulary: Iterable[str], limit: int) -> list[str]:
+    """The vocabulary words at most ``limit`` edits from ``word``."""
+    return sorted(v for v in vocabulary if OSA.distance(word, v, score_cutoff=limit) <= limit)
+
+
+@functools.cache
+def is_finite_verb(word: str) -> bool:
+    """A past or third-person form of a verb ("hurt", "needs", "broke"): after a name, the
+    name is the subject ("Pat hurt her hand"), not a modifier."""
+    for lemma in verb_lemmas(word):
+        forms = getAllInflections(lemma, upos="VERB")
+        if word in forms.get("VBD", ()) or word in forms.get("VBZ", ()):
+            return True
+    return False
+
+
+def is_noun(word: str) -> bool:
+    """Whether the dictionary knows the word as a noun."""
+    return "NOUN" in lemmas(word)

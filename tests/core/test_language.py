@@ -1,0 +1,102 @@
+"""The reader's language libraries: morphology, word knowledge, typo distance, Unicode keys."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.core import language
+
+
+@pytest.mark.parametrize(
+    ("verb", "form"),
+    [
+        ("bind", "bound"),
+        ("bring", "brought"),
+        ("get", "got"),
+        ("scan", "scanned"),
+        ("copy", "copied"),
+        ("shred", "shredded"),
+        ("fax", "faxed"),
+        ("print", "printing"),
+    ],
+)
+def test_verb_forms_include_the_irregular_ones(verb: str, form: str) -> None:
+    assert form in language.verb_forms(verb)
+
+
+def test_a_phrase_inflects_its_first_word() -> None:
+    assert "sealed in plastic" in language.verb_forms("seal in plastic")
+
+
+@pytest.mark.parametrize(
+    ("noun", "plural"),
+    [
+        ("scissors", "scissors"),
+        ("box", "boxes"),
+        ("battery", "batteries"),
+        ("tape dispenser", "tape dispensers"),
+        ("knife", "knives"),
+    ],
+)
+def test_plurals(noun: str, plural: str) -> None:
+    assert language.plural(noun) == plural
+
+
+@pytest.mark.parametrize(
+    "word",
+    [
+        "grace",
+        "mark",
+        "will",
+        "sun",
+        "summer",
+        "frank",
+        "sandy",
+        "penny",
+        "chase",
+        "skip",
+        "honest",
+        "joy",
+        "hope",
+    ],
+)
+def test_names_that_are_also_english_words(word: str) -> None:
+    assert language.is_english_word(word)
+
+
+@pytest.mark.parametrize("word", ["zhang", "okafor", "obi", "mueller", "jie", "lindqvist"])
+def test_names_that_are_no_english_words(word: str) -> None:
+    assert not language.is_english_word(word)
+
+
+@pytest.mark.parametrize(
+    ("typed", "vocabulary", "meant"),
+    [
+        ("pnes", ["pens", "pen", "paper"], ["pens"]),  # four letters, one swap
+        ("cpoy", ["copy", "cup"], ["copy"]),
+        ("staplr", ["stapler", "staple"], ["stapler"]),  # tie broken by indels
+        ("calcualtor", ["calculator"], ["calculator"]),
+        ("highlgihter", ["highlighter"], ["highlighter"]),  # two edits in a long word
+    ],
+)
+def test_typos_within_a_length_aware_limit(
+    typed: str, vocabulary: list[str], meant: list[str]
+) -> None:
+    assert language.closest(typed, vocabulary) == meant
+
+
+@pytest.mark.parametrize(
+    ("typed", "vocabulary"), [("pen", ["pan"]), ("mugs", ["rugby"]), ("stpl", ["stapler"])]
+)
+def test_short_or_distant_words_are_not_corrected(typed: str, vocabulary: list[str]) -> None:
+    assert language.closest(typed, vocabulary) == []
+
+
+def test_folding_is_case_and_diacritics_blind() -> None:
+    assert language.fold("José Müller") == language.fold("JOSE MULLER") == "jose muller"
+    assert language.words("José Müller's ﬁle") == ["jose", "mullers", "file"]
+
+
+def test_finite_verbs() -> None:
+    assert language.is_finite_verb("hurt") and language.is_finite_verb("needs")
+    assert not language.is_finite_verb("deck") and not language.is_finite_verb("period")
