@@ -13,7 +13,7 @@ from assistantx.memory.short_term import ShortTermMemory
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM, json_reply
-from helpers.llm_office import llm_settings, make_assistant
+from helpers.llm_office import llm_model, llm_settings, make_assistant
 
 
 @pytest.fixture(scope="module")
@@ -25,7 +25,7 @@ async def _run(
     office: Office, llm: ScriptedLLM, text: str, *, max_steps: int = 20
 ) -> tuple[ShortTermMemory, SimOffice]:
     sim = SimOffice(office)
-    factory = build_factory(office, llm_settings(llm))
+    factory = build_factory(office, llm_settings(llm), model=llm_model(llm))
     assert isinstance(factory, HybridFactory)
     assistant = make_assistant(office, sim, factory, max_steps=max_steps)  # type: ignore[arg-type]
     await sim.locker.start()

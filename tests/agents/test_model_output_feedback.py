@@ -34,7 +34,7 @@ from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM
-from helpers.llm_office import decision, llm_settings
+from helpers.llm_office import decision, llm_model, llm_settings
 
 PLAN = Plan(goal="get Lee a stapler", subgoals=[SubGoal(description="ask an owner")])
 BUG = "our own check broke here"
@@ -77,7 +77,7 @@ async def test_a_decision_naming_an_unknown_person_is_retried_with_the_reason(
         decision(Inform(contact="Mr Nobody", content="hello")),
         decision(Inform(contact="zhang", content="hello")),
     )
-    factory = build_factory(office, llm_settings(scripted_llm))
+    factory = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))
     reasoner = factory()
     made = await reasoner.decide(context(office), Percept(), PLAN)
     await reasoner.stop()
@@ -96,7 +96,7 @@ async def test_a_bug_in_the_decision_check_surfaces_and_is_never_fed_back(
 ) -> None:
     monkeypatch.setattr(Resolver, "ground", raising(error))
     scripted_llm.script("decision", decision(Inform(contact="zhang", content="hello")))
-    factory = build_factory(office, llm_settings(scripted_llm))
+    factory = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))
     reasoner = factory()
     with pytest.raises(error, match=BUG):
         await reasoner.decide(context(office), Percept(), PLAN)
@@ -113,7 +113,7 @@ async def test_a_bug_in_the_perception_check_surfaces(
 ) -> None:
     monkeypatch.setattr(Resolver, "person", raising(ValueError))
     scripted_llm.script("perception", {"people": ["zhang"], "summary": "x"})
-    reasoner = build_factory(office, llm_settings(scripted_llm))()
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
     with pytest.raises(ValueError, match=BUG):
         await reasoner.perceive(context(office))
     await reasoner.stop()
@@ -128,7 +128,7 @@ async def test_a_bug_in_the_reflection_check_surfaces(
     monkeypatch.setattr(Resolver, "ground_update", raising(KeyError))
     update = {"kind": "availability", "person": "zhang", "available": False, "evidence": "silent"}
     scripted_llm.script("reflection", {"verdict": "N", "reason": "no answer", "updates": [update]})
-    reasoner = build_factory(office, llm_settings(scripted_llm))()
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
     ctx = context(office)
     with pytest.raises(KeyError, match=BUG):
         await reasoner.reflect(
@@ -142,7 +142,7 @@ async def test_a_bug_in_the_reflection_check_surfaces(
 
 
 def _hybrid(office: Office, llm: ScriptedLLM) -> hybrid.HybridReasoner:
-    factory = hybrid.build_factory(office, llm_settings(llm))
+    factory = hybrid.build_factory(office, llm_settings(llm), model=llm_model(llm))
     reasoner = factory()
     assert isinstance(reasoner, hybrid.HybridReasoner)
     return reasoner

@@ -19,12 +19,12 @@ from assistantx.adapters.model import (
     UsageLedger,
     structured_call,
 )
-from assistantx.adapters.model.schema import grammar_schema
 from assistantx.adapters.model.usage import MeteredModel
 from assistantx.agents.base import AgentContext
 from assistantx.agents.llm import AgentPrompts, LLMReasonerFactory
 from assistantx.core.actions import Wait
 from assistantx.core.office import Office, load_office
+from assistantx.core.structured.schema import grammar_schema
 from assistantx.core.trace import (
     Decision,
     Observation,

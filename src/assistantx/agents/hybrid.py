@@ -25,21 +25,15 @@ from collections.abc import Callable
 
 from pydantic import BaseModel, Field
 
-from assistantx.adapters.model import (
-    Attempt,
-    ChatModel,
-    ChatRequest,
-    Message,
-    structured_call,
-)
 from assistantx.agents.base import AgentContext, Reasoner
-from assistantx.agents.llm import SharedModel, agent_call, model_from_settings, schema_text
+from assistantx.agents.llm import SharedModel, agent_call, require_model, schema_text
 from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
 from assistantx.core.errors import GroundingError, ModelBehaviorError, ModelOutputError
 from assistantx.core.office import Office
-from assistantx.core.ports.model import LLMCallFailed
+from assistantx.core.ports.model import ChatModel, ChatRequest, LLMCallFailed, Message
 from assistantx.core.settings import Settings
+from assistantx.core.structured import Attempt, structured_call
 from assistantx.core.task_schema import PERSON_KINDS, SHAPE_KIND, TaskKind
 from assistantx.core.trace import Percept
 from assistantx.memory.resolve import Resolver
@@ -254,7 +248,7 @@ class HybridFactory:
 def build_factory(
     office: Office, settings: Settings, *, model: ChatModel | None = None
 ) -> Callable[[], Reasoner]:
-    """The hybrid reasoner for ``assistantx.agents.registry``; needs ``ASSISTANTX_LLM_BASE_URL``."""
-    if model is None:
-        model = model_from_settings(settings, "hybrid")
+    """The hybrid reasoner for ``assistantx.agents.registry``; ``model`` is injected by the
+    composition root (ReasonerError without one)."""
+    model = require_model(model, "hybrid")
     return HybridFactory(office, model, output_retries=settings.llm_output_retries)

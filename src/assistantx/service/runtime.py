@@ -21,9 +21,10 @@ from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
+from assistantx.adapters.model import model_from_settings
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
-from assistantx.agents.registry import load_builder, reasoner_factory
+from assistantx.agents.registry import load_builder, needs_llm, reasoner_factory
 from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
@@ -195,7 +196,8 @@ class ServiceRuntime:
             factory = load_builder(s.reasoner_builder)(self.office, s)
             return factory, s.reasoner_builder.partition(":")[2]
         kind = s.effective_reasoner
-        return reasoner_factory(kind, self.office, s), kind
+        model = model_from_settings(s) if needs_llm(kind) else None
+        return reasoner_factory(kind, self.office, s, model=model), kind
 
     @property
     def map_yaml(self) -> Path:

@@ -16,10 +16,10 @@ import httpx
 from pydantic import BaseModel
 
 from assistantx.adapters.model.openai_compat import OpenAICompatibleModel
-from assistantx.adapters.model.schema import grammar_schema, schema_outline
-from assistantx.adapters.model.structured import structured_call
 from assistantx.core.errors import LLMError, ModelBehaviorError
 from assistantx.core.ports.model import ChatRequest, Message, StructuredMode
+from assistantx.core.structured.call import structured_call
+from assistantx.core.structured.schema import grammar_schema, schema_outline
 
 MODES: tuple[StructuredMode, ...] = ("json_schema", "json_object_schema", "json_object", "prompt")
 _PROMPT = (

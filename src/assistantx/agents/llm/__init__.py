@@ -18,7 +18,7 @@ from assistantx.agents.llm.reasoner import (
     LLMReasonerFactory,
     build_factory,
 )
-from assistantx.agents.llm.shared import SharedModel, model_from_settings
+from assistantx.agents.llm.shared import SharedModel, require_model
 
 __all__ = [
     "AGENTS",
@@ -32,6 +32,6 @@ __all__ = [
     "check_actions",
     "focus_ids",
     "ground_updates",
-    "model_from_settings",
+    "require_model",
     "schema_text",
 ]

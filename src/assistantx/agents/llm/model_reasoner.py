@@ -1,7 +1,7 @@
 """A reasoner whose agents are structured calls to a shared chat model, accounted in the trace.
 
 The base of the LLM reasoner and the paper's baselines. Each agent call is one
-:func:`~assistantx.adapters.model.structured_call`: the output is parsed, validated and
+:func:`~assistantx.core.structured.structured_call`: the output is parsed, validated and
 checked, and a failed check is fed back to the model up to ``output_retries`` times; then
 :class:`~assistantx.core.errors.ModelBehaviorError` ends the instruction (the loop tells the
 requester). One :class:`~assistantx.core.trace.AgentCall` per agent call (its repairs
@@ -19,17 +19,11 @@ from typing import TypeVar
 
 from pydantic import BaseModel
 
-from assistantx.adapters.model import (
-    Attempt,
-    ChatRequest,
-    ChatResponse,
-    Message,
-    structured_call,
-)
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.agents.llm.shared import SharedModel
 from assistantx.core.errors import ModelBehaviorError
-from assistantx.core.ports.model import LLMCallFailed
+from assistantx.core.ports.model import ChatRequest, ChatResponse, LLMCallFailed, Message
+from assistantx.core.structured import Attempt, structured_call
 from assistantx.core.trace import AgentCall, Percept
 from assistantx.memory.focus import (
     FocusBudget,
