@@ -22,6 +22,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from assistantx.adapters.model import model_from_settings
 from assistantx.agents.ablations import ABLATIONS
 from assistantx.agents.baselines import BASELINES
 from assistantx.core.office import load_office
@@ -58,7 +59,7 @@ def run_method(
     name: str, tasks: list[Task], settings: Settings, args: argparse.Namespace
 ) -> list[Episode]:
     office = load_office()
-    builder = MethodBuilder(METHODS[name], office, settings)
+    builder = MethodBuilder(METHODS[name], office, settings, build_model=model_from_settings)
     episodes = []
     for task in tasks:
         started = time.perf_counter()

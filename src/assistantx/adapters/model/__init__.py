@@ -7,10 +7,10 @@ composition root (service, CLI, bench) picks a provider (``model_from_settings``
 :class:`MeteredModel`, every call lands in a :class:`UsageLedger`.
 """
 
-from assistantx.adapters.model._retry import RetryPolicy, parse_retry_after
 from assistantx.adapters.model.configured import model_from_settings
 from assistantx.adapters.model.openai_compat import OpenAICompatibleModel, estimate_tokens
 from assistantx.adapters.model.usage import CallRecord, MeteredModel, UsageLedger, UsageTotals
+from assistantx.core.http_retry import RetryPolicy, parse_retry_after
 from assistantx.core.ports.model import (
     ChatModel,
     ChatRequest,
