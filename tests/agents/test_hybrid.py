@@ -97,3 +97,38 @@ async def test_a_name_outside_memory_is_repaired_or_asked_never_guessed(
     ]
     calls = [c for s in stm.trace.steps for c in s.calls if c.agent == "understanding"]
     assert sum(c.attempts for c in calls) == 3
+
+
+async def test_a_reading_of_a_task_never_asked_for_is_never_acted_on(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    # a small model copying its prompt's example: well formed, and about something else
+    invented = _frame({"kind": "transfer", "item": "stapler", "owner": "Wang Fang"})
+    scripted_llm.script("understanding", *(json_reply(invented) for _ in range(3)))
+    stm, sim = await _run(office, scripted_llm, "print my report and bring it to me", max_steps=1)
+
+    repairs = scripted_llm.requests_for("understanding")
+    assert len(repairs) == 3  # fed back twice, then given up
+    assert "the request never mentions 'Wang Fang'" in repairs[1].last_user_text
+    actions = [r.action for r in stm.trace.actions()]
+    assert not [a for a in actions if isinstance(a, SendQR)]  # nothing fetched from Wang
+    asked = [a for a in actions if isinstance(a, Inquire)]  # the requester is asked instead
+    assert [(a.contact, a.question) for a in asked] == [("lee", UNSURE_QUESTION)]
+    assert not sim.world.check({"holds": ["lee", "stapler:wang"]})
+    calls = [c for s in stm.trace.steps for c in s.calls if c.agent == "understanding"]
+    assert sum(c.attempts for c in calls) == 3
+
+
+async def test_a_reading_in_the_requesters_own_words_is_acted_on(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    # accents, capitals, a plural and a possessive: still the stapler of Zhang Wei
+    reading = _frame({"kind": "transfer", "item": "stapler", "owner": "Zhang Wei"})
+    scripted_llm.script("understanding", json_reply(reading))
+    stm, sim = await _run(office, scripted_llm, "ZHĀNG WEI's STAPLERS, the one, to me pls")
+
+    assert len(scripted_llm.requests_for("understanding")) == 1
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"holds": ["lee", "stapler:zhang"]})

@@ -156,7 +156,7 @@ async def test_the_hybrid_reader_retries_a_name_outside_memory_with_the_reason(
     good = {"sure": True, "tasks": [{"kind": "transfer", "item": "stapler", "owner": "Zhang"}]}
     scripted_llm.script("understanding", made_up, good)
     reasoner = _hybrid(office, scripted_llm)
-    frame = await reasoner.read(context(office), [])
+    frame = await reasoner.read(context(office, "get me the stapler of Zhang"), [])
     await reasoner.stop()
 
     assert frame.question is None and frame.tasks[0].owner == "zhang"

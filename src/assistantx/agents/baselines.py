@@ -253,7 +253,7 @@ def build_baseline_factory(
 ACTION_SPACE = """\
 - inform {contact, content}: message a person or a group chat.
 - inquire {contact, question}: ask a person or a group chat; follow it with wait. Name the
-  item or the request in the question ("Could you lend Lee your stapler?").
+  item or the request in the question ("Could you lend <requester> your <item>?").
 - forward_file {source, target}: forward the file received from source (the requester's own
   file counts as received; anyone else's must first be sent to you after you asked for it).
 - send_qr {contact, item, purpose}: a one-time locker code. item is "type:owner", an item

@@ -10,7 +10,7 @@
 
 from assistantx.agents.llm.checks import check_actions, focus_ids, ground_updates
 from assistantx.agents.llm.inputs import schema_text
-from assistantx.agents.llm.model_reasoner import ModelReasoner, agent_call
+from assistantx.agents.llm.model_reasoner import ModelReasoner, agent_call, failed_call
 from assistantx.agents.llm.reasoner import (
     AGENTS,
     AgentPrompts,
@@ -30,6 +30,7 @@ __all__ = [
     "agent_call",
     "build_factory",
     "check_actions",
+    "failed_call",
     "focus_ids",
     "ground_updates",
     "require_model",

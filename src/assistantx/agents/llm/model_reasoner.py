@@ -99,22 +99,27 @@ class ModelReasoner(Reasoner):
                 ctx.record(agent_call(agent, attempts))
             raise
         except LLMCallFailed as exc:
-            # The server read the prompt (and maybe generated) before failing: count it.
-            earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
-            failed = Attempt(
-                response=ChatResponse(
-                    text="",
-                    usage=exc.usage,
-                    latency_s=exc.latency_s,
-                    model=exc.model,
-                    retries=exc.retries,
-                ),
-                error=str(exc),
-            )
-            ctx.record(agent_call(agent, [*earlier, failed]))
+            ctx.record(failed_call(agent, exc))
             raise
         ctx.record(agent_call(agent, result.attempts))
         return result.output
+
+
+def failed_call(agent: str, exc: LLMCallFailed) -> AgentCall:
+    """The accounting of a call that got no usable answer: its earlier (rejected) attempts,
+    and the failed one with every request it sent and what they cost (estimated)."""
+    earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
+    failed = Attempt(
+        response=ChatResponse(
+            text="",
+            usage=exc.usage,
+            latency_s=exc.latency_s,
+            model=exc.model,
+            retries=exc.retries,
+        ),
+        error=str(exc),
+    )
+    return agent_call(agent, [*earlier, failed])
 
 
 def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:
