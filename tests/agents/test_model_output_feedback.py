@@ -8,6 +8,7 @@ must reach the caller after one request, its text never sent to the model.
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Callable
 from typing import Any, NoReturn
 
@@ -33,7 +34,8 @@ from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from fakes.fixtures import scripted_llm  # noqa: F401
-from fakes.scripted_llm import ScriptedLLM
+from fakes.scripted_llm import Reply, ScriptedLLM
+from helpers.eventually import eventually
 from helpers.llm_office import decision, llm_model, llm_settings
 
 PLAN = Plan(goal="get Lee a stapler", subgoals=[SubGoal(description="ask an owner")])
@@ -211,3 +213,19 @@ async def test_a_bug_in_a_baseline_check_surfaces_and_is_never_fed_back(
     await reasoner.stop()
     assert len(scripted_llm.requests) == 1
     assert BUG not in sent_to_model(scripted_llm)
+
+
+async def test_a_call_cut_off_by_the_instructions_time_limit_is_still_counted(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    scripted_llm.script("perception", Reply(content="{}", delay_s=30))
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
+    ctx = context(office)
+    call = asyncio.create_task(reasoner.perceive(ctx))
+    await eventually(lambda: scripted_llm.requests, what="the request reached the server")
+    call.cancel()
+    with pytest.raises(asyncio.CancelledError):
+        await call
+    await reasoner.stop()
+    assert [(c.agent, c.attempts, c.estimated) for c in ctx.calls] == [("perception", 1, True)]

@@ -20,6 +20,7 @@ and only :func:`to_task_frame` would follow them.
 
 from __future__ import annotations
 
+import asyncio
 import logging
 from collections.abc import Callable
 
@@ -30,6 +31,7 @@ from assistantx.agents.llm import (
     SharedModel,
     agent_call,
     failed_call,
+    interrupted_call,
     require_model,
     schema_text,
 )
@@ -243,6 +245,9 @@ class HybridReasoner(SymbolicReasoner):
         except LLMCallFailed as exc:
             ctx.record(failed_call("understanding", exc))  # every request it sent counts
             raise  # the loop ends the instruction in words
+        except asyncio.CancelledError:
+            ctx.record(interrupted_call("understanding"))
+            raise
         ctx.record(agent_call("understanding", result.attempts))
         return to_task_frame(result.output, stm.requester, office)
 

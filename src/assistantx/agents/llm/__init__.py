@@ -10,7 +10,12 @@
 
 from assistantx.agents.llm.checks import check_actions, focus_ids, ground_updates
 from assistantx.agents.llm.inputs import schema_text
-from assistantx.agents.llm.model_reasoner import ModelReasoner, agent_call, failed_call
+from assistantx.agents.llm.model_reasoner import (
+    ModelReasoner,
+    agent_call,
+    failed_call,
+    interrupted_call,
+)
 from assistantx.agents.llm.reasoner import (
     AGENTS,
     AgentPrompts,
@@ -33,6 +38,7 @@ __all__ = [
     "failed_call",
     "focus_ids",
     "ground_updates",
+    "interrupted_call",
     "require_model",
     "schema_text",
 ]

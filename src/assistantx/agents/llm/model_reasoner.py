@@ -14,6 +14,7 @@ the shared model until its ``stop()``).
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Callable, Sequence
 from typing import TypeVar
 
@@ -101,8 +102,17 @@ class ModelReasoner(Reasoner):
         except LLMCallFailed as exc:
             ctx.record(failed_call(agent, exc))
             raise
+        except asyncio.CancelledError:
+            ctx.record(interrupted_call(agent))
+            raise
         ctx.record(agent_call(agent, result.attempts))
         return result.output
+
+
+def interrupted_call(agent: str) -> AgentCall:
+    """A call cut off by the instruction's own time limit: a request was in flight, what it
+    cost is unknown (0 tokens, marked as an estimate)."""
+    return AgentCall(agent=agent, attempts=1, estimated=True)
 
 
 def failed_call(agent: str, exc: LLMCallFailed) -> AgentCall:
