@@ -59,6 +59,7 @@ from assistantx.core.ports.model import (
     ChatModel,
     ChatRequest,
     ChatResponse,
+    FailureKind,
     LLMCallFailed,
     StructuredMode,
     Usage,
@@ -219,6 +220,7 @@ class OpenAICompatibleModel(ChatModel):
                     latency_s=time.perf_counter() - started,
                     model=self.model,
                     retries=tries + len(exc.tries) - 1,
+                    kind=exc.kind,
                 ) from exc.__cause__
             tries += sent
             break
@@ -235,6 +237,7 @@ class OpenAICompatibleModel(ChatModel):
                 f"{self.endpoint} refused response_format {refused} ({exc}); "
                 "set ASSISTANTX_LLM_STRUCTURED_OUTPUT to a mode it supports",
                 user_text="my language model server does not accept the answer format I need",
+                kind="unsupported",
                 usage=Usage(),
                 latency_s=0.0,
                 model=self.model,
@@ -317,6 +320,7 @@ class OpenAICompatibleModel(ChatModel):
         raise LLMCallFailed(
             f"{self.endpoint} answered HTTP {response.status_code}: {text}",
             user_text="my language model server refused the request",
+            kind="rejected",
             usage=Usage(),
             latency_s=0.0,
             model=self.model,
@@ -337,6 +341,13 @@ class OpenAICompatibleModel(ChatModel):
             tries=tries,
             partial_text=partial.text,
         )
+        last = tries[-1] if tries else None
+        if last is None or last.outcome == "failed":
+            error.kind = "broken"
+        elif last.outcome == "answered":
+            error.kind = "server_error"
+        else:
+            error.kind = last.outcome
         error.__cause__ = cause
         return error
 
@@ -428,6 +439,7 @@ class _Failed(Exception):
         self.user_text = user_text
         self.tries = tries
         self.partial_text = partial_text
+        self.kind: FailureKind = "broken"
 
     def cost(self, prompt_tokens: int) -> Usage:
         """An estimate of what the failed tries cost: the prompt for each try the server was
