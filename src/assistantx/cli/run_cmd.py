@@ -78,7 +78,9 @@ async def _execute(
 ) -> tuple[dict[str, Any], Trace]:
     unavailable: tuple[str, ...] = args.unavailable
     limits = LoopLimits(
-        max_steps=args.max_steps or settings.max_steps, deadline_s=settings.instruction_deadline_s
+        max_steps=args.max_steps or settings.max_steps,
+        deadline_s=settings.instruction_deadline_s,
+        wall_s=settings.instruction_wall_s,
     )
     run = await run_in_sim(
         office,

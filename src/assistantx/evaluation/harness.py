@@ -243,7 +243,16 @@ def evaluate(
         if config.jobs <= 1:
             builder = MethodBuilder(config.spec, office, settings, build_model=build_model)
             for task, run in todo:
-                episode = asyncio.run(run_episode(task, run, office, builder, config.max_steps))
+                episode = asyncio.run(
+                    run_episode(
+                        task,
+                        run,
+                        office,
+                        builder,
+                        config.max_steps,
+                        wall_s=settings.instruction_wall_s,
+                    )
+                )
                 record(episode.model_dump_json())
         else:
             _run_parallel(config, path, todo, record, build_model)
@@ -298,5 +307,8 @@ def _episode_job(
         )
     builder = _WORKER[key]
     task = Task.model_validate_json(task_json)
-    episode = asyncio.run(run_episode(task, run, builder.office, builder, config["max_steps"]))
+    wall_s = builder.settings.instruction_wall_s
+    episode = asyncio.run(
+        run_episode(task, run, builder.office, builder, config["max_steps"], wall_s=wall_s)
+    )
     return episode.model_dump_json()

@@ -145,7 +145,11 @@ class ServiceRuntime:
                 reasoner_factory=factory,
                 reasoner_name=name,
                 ltm=ltm,
-                limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
+                limits=LoopLimits(
+                    max_steps=s.max_steps,
+                    deadline_s=s.instruction_deadline_s,
+                    wall_s=s.instruction_wall_s,
+                ),
                 # A direct message starts an instruction only when it asks for something.
                 is_request=RequestRecognizer(self.office),
             )
