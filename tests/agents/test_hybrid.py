@@ -6,7 +6,12 @@ from typing import Any
 
 import pytest
 
-from assistantx.agents.hybrid import UNSURE_QUESTION, HybridFactory, build_factory
+from assistantx.agents.hybrid import (
+    UNSURE_QUESTION,
+    HybridFactory,
+    build_cascade_factory,
+    build_factory,
+)
 from assistantx.core.actions import Inquire, SendQR
 from assistantx.core.office import Office, load_office
 from assistantx.memory.short_term import ShortTermMemory
@@ -22,10 +27,11 @@ def office() -> Office:
 
 
 async def _run(
-    office: Office, llm: ScriptedLLM, text: str, *, max_steps: int = 20
+    office: Office, llm: ScriptedLLM, text: str, *, max_steps: int = 20, cascade: bool = False
 ) -> tuple[ShortTermMemory, SimOffice]:
     sim = SimOffice(office)
-    factory = build_factory(office, llm_settings(llm), model=llm_model(llm))
+    build = build_cascade_factory if cascade else build_factory
+    factory = build(office, llm_settings(llm), model=llm_model(llm))
     assert isinstance(factory, HybridFactory)
     assistant = make_assistant(office, sim, factory, max_steps=max_steps)  # type: ignore[arg-type]
     await sim.locker.start()
@@ -132,3 +138,28 @@ async def test_a_reading_in_the_requesters_own_words_is_acted_on(
     assert len(scripted_llm.requests_for("understanding")) == 1
     assert stm.trace.outcome == "done", stm.trace.summary
     assert sim.world.check({"holds": ["lee", "stapler:zhang"]})
+
+
+async def test_the_cascade_costs_no_call_when_the_embedded_reader_is_sure(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    stm, sim = await _run(office, scripted_llm, "bring me Zhang Wei's stapler", cascade=True)
+
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"holds": ["lee", "stapler:zhang"]})
+    assert scripted_llm.requests == []
+    assert stm.trace.usage.llm_calls == 0
+
+
+async def test_the_cascade_asks_the_model_when_the_embedded_reader_is_unsure(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    scripted_llm.script("understanding", json_reply(_frame(sure=False)))
+    stm, _ = await _run(office, scripted_llm, "hmm the thing, you know", max_steps=1, cascade=True)
+
+    assert len(scripted_llm.requests_for("understanding")) == 1
+    asked = [r.action for r in stm.trace.actions() if isinstance(r.action, Inquire)]
+    assert [(a.contact, a.question) for a in asked] == [("lee", UNSURE_QUESTION)]
+    assert stm.trace.usage.llm_calls == 1

@@ -45,6 +45,7 @@ EXPECTED = {
     "symbolic": SymbolicReasoner,
     "llm": LLMReasoner,
     "hybrid": HybridReasoner,
+    "cascade": HybridReasoner,
     **dict.fromkeys(ABLATIONS, object),  # checked in their own test below
     **dict.fromkeys(BASELINES, BaselineReasoner),
     "optimal": OptimalReasoner,
@@ -53,7 +54,7 @@ EXPECTED = {
 
 def test_the_registry_lists_every_reasoner_the_commands_offer() -> None:
     assert set(REASONERS) == set(EXPECTED)
-    assert list(PPDR_REASONERS) == ["symbolic", "llm", "hybrid"]  # run/eval --reasoner
+    assert list(PPDR_REASONERS) == ["symbolic", "llm", "hybrid", "cascade"]  # --reasoner
 
 
 @pytest.mark.parametrize("name", REASONERS)
@@ -103,4 +104,4 @@ def test_unknown_names_and_missing_parts_are_one_clear_error(office: Office) -> 
 
 
 def test_which_reasoners_ask_a_model() -> None:
-    assert {n for n in REASONERS if needs_llm(n)} == {"llm", "hybrid", *BASELINES}
+    assert {n for n in REASONERS if needs_llm(n)} == {"llm", "hybrid", "cascade", *BASELINES}

@@ -170,11 +170,15 @@ class HybridReasoner(SymbolicReasoner):
         *,
         output_retries: int = 2,
         parser: InstructionParser | None = None,
+        cascade: bool = False,
     ) -> None:
         super().__init__(office, parser=parser)
         self.shared = shared
         self.output_retries = output_retries
+        self.cascade = cascade
         self._holding = False
+        if cascade:
+            self.name = "cascade"
 
     async def start(self) -> None:
         if not self._holding:
@@ -190,8 +194,17 @@ class HybridReasoner(SymbolicReasoner):
         answers = requester_answers(ctx.stm)
         key = (ctx.stm.text, *answers)
         if key not in self._frames:
-            self._frames[key] = await self.read(ctx, answers)
+            self._frames[key] = await self._understand(ctx, answers)
         return await super().perceive(ctx)
+
+    async def _understand(self, ctx: AgentContext, answers: list[str]) -> TaskFrame:
+        if self.cascade:
+            # A reading the embedded reader is sure of (it asks nothing) costs no call; the
+            # model reads only what the rules would have asked the requester about.
+            own = self.parser.parse_with_answers(ctx.stm.text, ctx.stm.requester, answers)
+            if own.question is None:
+                return own
+        return await self.read(ctx, answers)
 
     async def read(self, ctx: AgentContext, answers: list[str]) -> TaskFrame:
         """One understanding call; an unusable answer becomes a question, never a guess."""
@@ -253,10 +266,13 @@ class HybridReasoner(SymbolicReasoner):
 
 
 class HybridFactory:
-    def __init__(self, office: Office, model: ChatModel, *, output_retries: int) -> None:
+    def __init__(
+        self, office: Office, model: ChatModel, *, output_retries: int, cascade: bool = False
+    ) -> None:
         self.office = office
         self.shared = SharedModel(model)
         self.output_retries = output_retries
+        self.cascade = cascade
         self.parser = InstructionParser(office)
 
     @property
@@ -265,7 +281,11 @@ class HybridFactory:
 
     def __call__(self) -> Reasoner:
         return HybridReasoner(
-            self.office, self.shared, output_retries=self.output_retries, parser=self.parser
+            self.office,
+            self.shared,
+            output_retries=self.output_retries,
+            parser=self.parser,
+            cascade=self.cascade,
         )
 
 
@@ -276,3 +296,12 @@ def build_factory(
     composition root (ReasonerError without one)."""
     model = require_model(model, "hybrid")
     return HybridFactory(office, model, output_retries=settings.llm_output_retries)
+
+
+def build_cascade_factory(
+    office: Office, settings: Settings, *, model: ChatModel | None = None
+) -> Callable[[], Reasoner]:
+    """The cascade for ``assistantx.agents.registry``: the hybrid that calls the model only
+    for a request the embedded reader would ask about (its frame carries a question)."""
+    model = require_model(model, "cascade")
+    return HybridFactory(office, model, output_retries=settings.llm_output_retries, cascade=True)

@@ -3,7 +3,8 @@
 ``serve``, ``run``, ``eval`` and the tests all build reasoners here:
 
 - the PPDR reasoners ``symbolic`` (embedded, the default without an LLM), ``llm`` (the four
-  LLM agents) and ``hybrid`` (the model reads the request, the symbolic PPDR carries it out);
+  LLM agents), ``hybrid`` (the model reads the request, the symbolic PPDR carries it out)
+  and ``cascade`` (the hybrid that asks the model only when the embedded reader is unsure);
 - the ablations ``ppdr-no-perception``, ``ppdr-no-planning``, ``ppdr-no-reflection``, each
   wrapping a PPDR reasoner (``inner``, symbolic unless told);
 - the paper's LLM baselines ``direct``, ``cot``, ``react``, ``reflexion``,
@@ -36,7 +37,7 @@ from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
 from assistantx.core.task_spec import Part
 
-ReasonerKind = Literal["symbolic", "llm", "hybrid"]
+ReasonerKind = Literal["symbolic", "llm", "hybrid", "cascade"]
 ReasonerBuilder = Callable[[Office, Settings], ReasonerFactory]
 
 # The PPDR reasoners: name → "module:builder"; a builder takes (office, settings).
@@ -44,10 +45,11 @@ PPDR_REASONERS: dict[str, str] = {
     "symbolic": "assistantx.agents.symbolic:build_factory",
     "llm": "assistantx.agents.llm:build_factory",
     "hybrid": "assistantx.agents.hybrid:build_factory",
+    "cascade": "assistantx.agents.hybrid:build_cascade_factory",
 }
 ORACLE = "optimal"
 REASONERS: tuple[str, ...] = (*PPDR_REASONERS, *ABLATIONS, *BASELINES, ORACLE)
-LLM_REASONERS = frozenset({"llm", "hybrid", *BASELINES})
+LLM_REASONERS = frozenset({"llm", "hybrid", "cascade", *BASELINES})
 
 
 @dataclass(frozen=True)
