@@ -6,14 +6,19 @@ from typing import Any
 
 import pytest
 
-from assistantx.agents.hybrid import UNSURE_QUESTION, HybridFactory, build_factory
+from assistantx.agents.hybrid import (
+    UNSURE_QUESTION,
+    HybridFactory,
+    build_cascade_factory,
+    build_factory,
+)
 from assistantx.core.actions import Inquire, SendQR
 from assistantx.core.office import Office, load_office
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM, json_reply
-from helpers.llm_office import llm_settings, make_assistant
+from helpers.llm_office import llm_model, llm_settings, make_assistant
 
 
 @pytest.fixture(scope="module")
@@ -22,10 +27,11 @@ def office() -> Office:
 
 
 async def _run(
-    office: Office, llm: ScriptedLLM, text: str, *, max_steps: int = 20
+    office: Office, llm: ScriptedLLM, text: str, *, max_steps: int = 20, cascade: bool = False
 ) -> tuple[ShortTermMemory, SimOffice]:
     sim = SimOffice(office)
-    factory = build_factory(office, llm_settings(llm))
+    build = build_cascade_factory if cascade else build_factory
+    factory = build(office, llm_settings(llm), model=llm_model(llm))
     assert isinstance(factory, HybridFactory)
     assistant = make_assistant(office, sim, factory, max_steps=max_steps)  # type: ignore[arg-type]
     await sim.locker.start()
@@ -97,3 +103,63 @@ async def test_a_name_outside_memory_is_repaired_or_asked_never_guessed(
     ]
     calls = [c for s in stm.trace.steps for c in s.calls if c.agent == "understanding"]
     assert sum(c.attempts for c in calls) == 3
+
+
+async def test_a_reading_of_a_task_never_asked_for_is_never_acted_on(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    # a small model copying its prompt's example: well formed, and about something else
+    invented = _frame({"kind": "transfer", "item": "stapler", "owner": "Wang Fang"})
+    scripted_llm.script("understanding", *(json_reply(invented) for _ in range(3)))
+    stm, sim = await _run(office, scripted_llm, "print my report and bring it to me", max_steps=1)
+
+    repairs = scripted_llm.requests_for("understanding")
+    assert len(repairs) == 3  # fed back twice, then given up
+    assert "the request never mentions 'Wang Fang'" in repairs[1].last_user_text
+    actions = [r.action for r in stm.trace.actions()]
+    assert not [a for a in actions if isinstance(a, SendQR)]  # nothing fetched from Wang
+    asked = [a for a in actions if isinstance(a, Inquire)]  # the requester is asked instead
+    assert [(a.contact, a.question) for a in asked] == [("lee", UNSURE_QUESTION)]
+    assert not sim.world.check({"holds": ["lee", "stapler:wang"]})
+    calls = [c for s in stm.trace.steps for c in s.calls if c.agent == "understanding"]
+    assert sum(c.attempts for c in calls) == 3
+
+
+async def test_a_reading_in_the_requesters_own_words_is_acted_on(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    # accents, capitals, a plural and a possessive: still the stapler of Zhang Wei
+    reading = _frame({"kind": "transfer", "item": "stapler", "owner": "Zhang Wei"})
+    scripted_llm.script("understanding", json_reply(reading))
+    stm, sim = await _run(office, scripted_llm, "ZHĀNG WEI's STAPLERS, the one, to me pls")
+
+    assert len(scripted_llm.requests_for("understanding")) == 1
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"holds": ["lee", "stapler:zhang"]})
+
+
+async def test_the_cascade_costs_no_call_when_the_embedded_reader_is_sure(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    stm, sim = await _run(office, scripted_llm, "bring me Zhang Wei's stapler", cascade=True)
+
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"holds": ["lee", "stapler:zhang"]})
+    assert scripted_llm.requests == []
+    assert stm.trace.usage.llm_calls == 0
+
+
+async def test_the_cascade_asks_the_model_when_the_embedded_reader_is_unsure(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    scripted_llm.script("understanding", json_reply(_frame(sure=False)))
+    stm, _ = await _run(office, scripted_llm, "hmm the thing, you know", max_steps=1, cascade=True)
+
+    assert len(scripted_llm.requests_for("understanding")) == 1
+    asked = [r.action for r in stm.trace.actions() if isinstance(r.action, Inquire)]
+    assert [(a.contact, a.question) for a in asked] == [("lee", UNSURE_QUESTION)]
+    assert stm.trace.usage.llm_calls == 1

@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 from pydantic import BaseModel
 
-from assistantx.adapters.model.schema import grammar_schema, schema_outline
+from assistantx.adapters.model import model_from_settings
 from assistantx.agents.base import AgentContext
 from assistantx.agents.llm import AGENTS, LLMReasoner, LLMReasonerFactory, build_factory
 from assistantx.agents.llm.prompts import DEFAULT_PROMPTS
@@ -23,6 +23,7 @@ from assistantx.core.errors import ModelBehaviorError, PromptError, ReasonerErro
 from assistantx.core.office import Office, load_office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.settings import Settings
+from assistantx.core.structured.schema import grammar_schema, schema_outline
 from assistantx.core.trace import (
     Decision,
     Observation,
@@ -38,7 +39,15 @@ from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import Reply, ScriptedLLM
-from helpers.llm_office import decision, llm_settings, people_rows, run_llm, script_helpers, section
+from helpers.llm_office import (
+    decision,
+    llm_model,
+    llm_settings,
+    people_rows,
+    run_llm,
+    script_helpers,
+    section,
+)
 
 PLAN = Plan(goal="get Lee a stapler", subgoals=[SubGoal(description="ask an owner")])
 
@@ -53,7 +62,7 @@ async def factory(
     office: Office,
     scripted_llm: ScriptedLLM,  # noqa: F811
 ) -> AsyncIterator[LLMReasonerFactory]:
-    made = build_factory(office, llm_settings(scripted_llm))
+    made = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))
     yield made
     await made.model.stop()
 
@@ -127,12 +136,12 @@ def test_a_broken_prompt_fails_when_the_factory_is_built(office: Office, tmp_pat
     broken.write_text(broken.read_text().replace("$plan", "$plann"))
     settings = Settings(llm_base_url="http://127.0.0.1:9/v1")
     with pytest.raises(PromptError, match="plann"):
-        build_factory(office, settings, prompts_dir=tmp_path)
+        build_factory(office, settings, prompts_dir=tmp_path, model=model_from_settings(settings))
 
 
-def test_the_llm_reasoner_needs_a_base_url(office: Office) -> None:
-    with pytest.raises(ReasonerError, match="ASSISTANTX_LLM_BASE_URL"):
-        build_factory(office, Settings(llm_base_url=None))
+def test_the_llm_reasoner_needs_a_model(office: Office) -> None:
+    with pytest.raises(ReasonerError, match="needs a language model: set ASSISTANTX_LLM_BASE"):
+        build_factory(office, Settings(llm_base_url="http://127.0.0.1:9/v1"))
 
 
 async def test_chat_text_reaches_the_model_quoted_never_as_instructions(

@@ -8,6 +8,7 @@ must reach the caller after one request, its text never sent to the model.
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Callable
 from typing import Any, NoReturn
 
@@ -33,8 +34,9 @@ from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from fakes.fixtures import scripted_llm  # noqa: F401
-from fakes.scripted_llm import ScriptedLLM
-from helpers.llm_office import decision, llm_settings
+from fakes.scripted_llm import Reply, ScriptedLLM
+from helpers.eventually import eventually
+from helpers.llm_office import decision, llm_model, llm_settings
 
 PLAN = Plan(goal="get Lee a stapler", subgoals=[SubGoal(description="ask an owner")])
 BUG = "our own check broke here"
@@ -77,7 +79,7 @@ async def test_a_decision_naming_an_unknown_person_is_retried_with_the_reason(
         decision(Inform(contact="Mr Nobody", content="hello")),
         decision(Inform(contact="zhang", content="hello")),
     )
-    factory = build_factory(office, llm_settings(scripted_llm))
+    factory = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))
     reasoner = factory()
     made = await reasoner.decide(context(office), Percept(), PLAN)
     await reasoner.stop()
@@ -96,7 +98,7 @@ async def test_a_bug_in_the_decision_check_surfaces_and_is_never_fed_back(
 ) -> None:
     monkeypatch.setattr(Resolver, "ground", raising(error))
     scripted_llm.script("decision", decision(Inform(contact="zhang", content="hello")))
-    factory = build_factory(office, llm_settings(scripted_llm))
+    factory = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))
     reasoner = factory()
     with pytest.raises(error, match=BUG):
         await reasoner.decide(context(office), Percept(), PLAN)
@@ -113,7 +115,7 @@ async def test_a_bug_in_the_perception_check_surfaces(
 ) -> None:
     monkeypatch.setattr(Resolver, "person", raising(ValueError))
     scripted_llm.script("perception", {"people": ["zhang"], "summary": "x"})
-    reasoner = build_factory(office, llm_settings(scripted_llm))()
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
     with pytest.raises(ValueError, match=BUG):
         await reasoner.perceive(context(office))
     await reasoner.stop()
@@ -128,7 +130,7 @@ async def test_a_bug_in_the_reflection_check_surfaces(
     monkeypatch.setattr(Resolver, "ground_update", raising(KeyError))
     update = {"kind": "availability", "person": "zhang", "available": False, "evidence": "silent"}
     scripted_llm.script("reflection", {"verdict": "N", "reason": "no answer", "updates": [update]})
-    reasoner = build_factory(office, llm_settings(scripted_llm))()
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
     ctx = context(office)
     with pytest.raises(KeyError, match=BUG):
         await reasoner.reflect(
@@ -142,7 +144,7 @@ async def test_a_bug_in_the_reflection_check_surfaces(
 
 
 def _hybrid(office: Office, llm: ScriptedLLM) -> hybrid.HybridReasoner:
-    factory = hybrid.build_factory(office, llm_settings(llm))
+    factory = hybrid.build_factory(office, llm_settings(llm), model=llm_model(llm))
     reasoner = factory()
     assert isinstance(reasoner, hybrid.HybridReasoner)
     return reasoner
@@ -156,7 +158,7 @@ async def test_the_hybrid_reader_retries_a_name_outside_memory_with_the_reason(
     good = {"sure": True, "tasks": [{"kind": "transfer", "item": "stapler", "owner": "Zhang"}]}
     scripted_llm.script("understanding", made_up, good)
     reasoner = _hybrid(office, scripted_llm)
-    frame = await reasoner.read(context(office), [])
+    frame = await reasoner.read(context(office, "get me the stapler of Zhang"), [])
     await reasoner.stop()
 
     assert frame.question is None and frame.tasks[0].owner == "zhang"
@@ -211,3 +213,19 @@ async def test_a_bug_in_a_baseline_check_surfaces_and_is_never_fed_back(
     await reasoner.stop()
     assert len(scripted_llm.requests) == 1
     assert BUG not in sent_to_model(scripted_llm)
+
+
+async def test_a_call_cut_off_by_the_instructions_time_limit_is_still_counted(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    scripted_llm.script("perception", Reply(content="{}", delay_s=30))
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
+    ctx = context(office)
+    call = asyncio.create_task(reasoner.perceive(ctx))
+    await eventually(lambda: scripted_llm.requests, what="the request reached the server")
+    call.cancel()
+    with pytest.raises(asyncio.CancelledError):
+        await call
+    await reasoner.stop()
+    assert [(c.agent, c.attempts, c.estimated) for c in ctx.calls] == [("perception", 1, True)]

@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
+import asyncio
 import json
 from pathlib import Path
 
 import pytest
 
+from assistantx.adapters.model import model_from_settings
 from assistantx.cli import main
 from assistantx.core.office import DEFAULT_OFFICE
+from assistantx.core.settings import Settings
+from assistantx.evaluation.harness import EvalConfig, evaluate, load_episodes
+from fakes.scripted_llm import Reply, ScriptedLLM
 
 TASKS = DEFAULT_OFFICE.parent / "tasks.jsonl"
 FIXTURES = Path(__file__).parent / "dataset" / "fixtures"
@@ -114,3 +119,22 @@ def test_parallel_jobs_with_an_office_file(tmp_path: Path) -> None:
     args = ["eval", "--tasks", str(TASKS), "--office", str(office), "--method", "optimal"]
     assert main([*args, "--quiet", "--limit", "2", "--jobs", "2", "--out", str(out)]) == 0
     assert sorted(e["task_id"] for e in _lines(out)) == ["t001", "t002"]
+
+
+async def test_the_settings_wall_bound_ends_an_episode(
+    tmp_path: Path, scripted_llm: ScriptedLLM
+) -> None:
+    scripted_llm.respond_with(lambda _r: Reply(content="{}", delay_s=30))  # a stuck server
+    settings = Settings(
+        llm_base_url=scripted_llm.base_url,
+        llm_model="slow",
+        instruction_wall_s=1.0,
+        llm_call_budget_s=60,
+        llm_timeout_s=60,
+    )
+    config = EvalConfig(tasks=TASKS, out=tmp_path / "r", method="direct", limit=1)
+    # the harness runs its own event loop; the scripted server keeps running on this one
+    await asyncio.to_thread(evaluate, config, settings, build_model=model_from_settings)
+    [episode] = load_episodes(tmp_path / "r")
+    assert episode.trace.summary == "I ran out of time for this task."
+    assert episode.trace.usage.llm_calls == 1  # the call cut off is counted

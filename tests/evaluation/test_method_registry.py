@@ -5,11 +5,14 @@ from __future__ import annotations
 
 import pytest
 
+from assistantx.adapters.model import model_from_settings
 from assistantx.agents.ablations import NoPlanning
+from assistantx.agents.baselines import BaselineFactory
 from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.agents.symbolic import SymbolicReasoner
 from assistantx.core.errors import ReasonerError
 from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
+from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset import load_tasks
 from assistantx.evaluation.dataset.tasks import Task
@@ -49,5 +52,28 @@ def test_methods_are_the_registry_names_plus_ppdr() -> None:
 
 
 def test_a_missing_llm_is_a_reasoner_error(office: Office) -> None:
-    with pytest.raises(ReasonerError, match="ASSISTANTX_LLM_BASE_URL"):
+    with pytest.raises(ReasonerError, match="needs a language model: set ASSISTANTX_LLM_BASE_URL"):
         MethodBuilder(MethodSpec("ppdr", "llm"), office, Settings(llm_base_url=None))
+    with pytest.raises(ReasonerError, match="needs a language model"):
+        MethodBuilder(
+            MethodSpec("ppdr", "llm"),
+            office,
+            Settings(llm_base_url=None),
+            build_model=model_from_settings,
+        )
+
+
+def test_the_llm_methods_get_the_model_the_caller_builds(office: Office) -> None:
+    settings = Settings(llm_base_url="http://127.0.0.1:9/v1", llm_model="none")
+    built: list[Settings] = []
+
+    def build(given: Settings) -> ChatModel | None:
+        built.append(given)
+        return model_from_settings(given)
+
+    MethodBuilder(MethodSpec("ppdr"), office, settings, build_model=build)
+    assert built == []  # the symbolic PPDR needs no model: none is built
+    builder = MethodBuilder(MethodSpec("react"), office, settings, build_model=build)
+    assert built == [settings]
+    assert isinstance(builder._shared, BaselineFactory)
+    assert builder._shared.shared.model.base_url == "http://127.0.0.1:9/v1"  # type: ignore[attr-defined]

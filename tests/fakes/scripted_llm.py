@@ -218,6 +218,9 @@ class ScriptedLLM:
         self.unscripted = 0
         self.supports_json_schema = True
         self.supports_json_object = True
+        # answer ``stream: true`` requests as server-sent events (chunks of the content, then
+        # the usage chunk when ``stream_options.include_usage`` asks for it)
+        self.streams = False
         self.api_key: str | None = None
         self._queues: dict[str, deque[ScriptItem]] = {}
         self._handlers: dict[str, Handler] = {}
@@ -398,6 +401,8 @@ class ScriptedLLM:
             )
         if reply.status >= 400:
             return _error(reply.status, reply.error or "scripted error", headers=reply.headers)
+        if self.streams and body.get("stream") is True:
+            return self._stream(reply, body)
         payload: dict[str, Any] = {
             "id": f"chatcmpl-scripted-{len(self.requests) - 1}",
             "object": "chat.completion",
@@ -416,6 +421,24 @@ class ScriptedLLM:
         elif reply.usage is not None:
             payload["usage"] = reply.usage
         return JSONResponse(payload, status_code=reply.status, headers=reply.headers)
+
+    def _stream(self, reply: Reply, body: dict[str, Any]) -> Response:
+        model = str(body.get("model") or self.model)
+        content = reply.content or ""
+        pieces = [content[i : i + 8] for i in range(0, len(content), 8)]
+        chunks: list[dict[str, Any]] = [
+            {"model": model, "choices": [{"index": 0, "delta": {"content": piece}}]}
+            for piece in pieces
+        ]
+        chunks.append(
+            {"model": model, "choices": [{"index": 0, "delta": {}, "finish_reason": "stop"}]}
+        )
+        options = body.get("stream_options")
+        if isinstance(options, dict) and options.get("include_usage") and reply.usage is not None:
+            usage = _usage_for(body, reply.content) if reply.usage == "auto" else reply.usage
+            chunks.append({"model": model, "choices": [], "usage": usage})
+        text = "".join(f"data: {json.dumps(c)}\n\n" for c in chunks) + "data: [DONE]\n\n"
+        return Response(text, media_type="text/event-stream", headers=reply.headers)
 
 
 def _as_reply(value: Reply | str | dict[str, Any]) -> Reply:

@@ -14,7 +14,8 @@ from assistantx.core.clock import SimClock
 from assistantx.core.errors import UnreachableError
 from assistantx.core.office import Office
 from assistantx.core.trace import ActionResult, Trace
-from assistantx.feedback.walking import PlannedDistance, estimate_walking
+from assistantx.feedback.walking import estimate_walking, over_map
+from assistantx.sim.robot import ObservedRobot, SimRobot
 
 from .scripted import harness
 
@@ -38,9 +39,7 @@ def _route_length(robot: NavigatorRobot, route: list[str]) -> float:
 async def test_walking_saved_matches_hand_computed_paths(
     office: Office, robot: NavigatorRobot, tmp_path: Path
 ) -> None:
-    async with harness(
-        office, tmp_path / "j.sqlite3", distance=PlannedDistance.of_robot(robot)
-    ) as h:
+    async with harness(office, tmp_path / "j.sqlite3", distance=over_map(robot)) as h:
         printout = await h.run(
             "lee",
             "fetch my printout",
@@ -121,3 +120,21 @@ def test_unreachable_leg_falls_back_to_straight_lines(office: Office) -> None:
     estimate = estimate_walking(office, _trace("lee", "done", ["desk_04"]), cut_off)
     assert estimate.method == "straight-line"
     assert estimate.saved_m == pytest.approx(2 * office.distance("desk_03", "desk_04"), abs=1e-3)
+
+
+def test_a_base_without_a_map_is_measured_in_straight_lines(office: Office) -> None:
+    kinematic = SimRobot(office, SimClock(), office.distance, speed_mps=1.0)
+    estimate = estimate_walking(office, _trace("lee", "done", ["desk_04"]), over_map(kinematic))
+    assert estimate.method == "straight-line"
+    assert estimate.walk_m == pytest.approx(2 * office.distance("desk_03", "desk_04"), abs=1e-3)
+
+
+def test_the_simulated_office_measures_over_the_base_it_observes(
+    office: Office, robot: NavigatorRobot
+) -> None:
+    observed = ObservedRobot(robot, office.robot.home)
+    estimate = estimate_walking(office, _trace("lee", "done", ["print_room"]), over_map(observed))
+    assert estimate.method == "map"
+    assert estimate.walk_m == pytest.approx(
+        _route_length(robot, ["desk_03", "print_room", "desk_03"]), abs=1e-3
+    )

@@ -12,9 +12,11 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+from assistantx.adapters.model import model_from_settings
 from assistantx.agents.llm import LLMReasonerFactory, build_factory
 from assistantx.core.actions import Action
 from assistantx.core.office import Office
+from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.assistant import Assistant
@@ -139,6 +141,13 @@ def llm_settings(llm: ScriptedLLM, **overrides: Any) -> Settings:
     return Settings(**values)
 
 
+def llm_model(llm: ScriptedLLM, **overrides: Any) -> ChatModel:
+    """The client of ``llm`` as the composition root builds it from the settings."""
+    model = model_from_settings(llm_settings(llm, **overrides))
+    assert model is not None
+    return model
+
+
 @dataclass
 class LLMRun:
     stm: ShortTermMemory
@@ -172,7 +181,7 @@ async def run_llm(
 ) -> LLMRun:
     """One instruction, start to end, with the LLM reasoner talking to ``llm``."""
     sim = SimOffice(office, unavailable=unavailable)
-    factory = build_factory(office, llm_settings(llm, **settings))
+    factory = build_factory(office, llm_settings(llm, **settings), model=llm_model(llm, **settings))
     assistant = make_assistant(office, sim, factory, max_steps=max_steps)
     stm = await run_one(sim, assistant, requester, text)
     return LLMRun(stm, sim, assistant, factory)

@@ -18,6 +18,7 @@ from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import RecordedRequest, ScriptedLLM, malformed_json, rate_limited
 from helpers.llm_office import (
     decision,
+    llm_model,
     llm_settings,
     make_assistant,
     people_rows,
@@ -317,7 +318,7 @@ async def test_two_instructions_share_the_robot_without_interleaving(
 
     llm.respond_with(by_instruction, "decision")
     sim = SimOffice(office)
-    factory = build_factory(office, llm_settings(llm))
+    factory = build_factory(office, llm_settings(llm), model=llm_model(llm))
     assistant = make_assistant(office, sim, factory)
     await assistant.start()
     try:

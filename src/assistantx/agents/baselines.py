@@ -25,11 +25,17 @@ from typing import Literal, TypeVar
 
 from pydantic import BaseModel, Field
 
-from assistantx.adapters.model import ChatModel, OpenAICompatibleModel
 from assistantx.agents.base import AgentContext
-from assistantx.agents.llm import ModelReasoner, SharedModel, check_actions, schema_text
+from assistantx.agents.llm import (
+    ModelReasoner,
+    SharedModel,
+    check_actions,
+    require_model,
+    schema_text,
+)
 from assistantx.agents.llm.prompts import DEFAULT_PROMPTS, PromptTemplate, load_prompt
-from assistantx.core.errors import ModelOutputError, ReasonerError
+from assistantx.core.errors import ModelOutputError
+from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
 from assistantx.core.trace import (
     ActionResult,
@@ -236,16 +242,9 @@ class BaselineFactory:
 def build_baseline_factory(
     name: BaselineName, settings: Settings, *, model: ChatModel | None = None
 ) -> BaselineFactory:
-    if model is None:
-        if not settings.llm_base_url:
-            raise ReasonerError(
-                f"the {name} baseline is an LLM method: set ASSISTANTX_LLM_BASE_URL "
-                "(an OpenAI-compatible /v1 URL) and ASSISTANTX_LLM_MODEL"
-            )
-        model = OpenAICompatibleModel.from_settings(settings)
     return BaselineFactory(
         name,
-        model,
+        require_model(model, name),
         output_retries=settings.llm_output_retries,
         budget=focus_budget(settings.llm_context_tokens, settings.llm_max_tokens),
     )
@@ -254,7 +253,7 @@ def build_baseline_factory(
 ACTION_SPACE = """\
 - inform {contact, content}: message a person or a group chat.
 - inquire {contact, question}: ask a person or a group chat; follow it with wait. Name the
-  item or the request in the question ("Could you lend Lee your stapler?").
+  item or the request in the question ("Could you lend <requester> your <item>?").
 - forward_file {source, target}: forward the file received from source (the requester's own
   file counts as received; anyone else's must first be sent to you after you asked for it).
 - send_qr {contact, item, purpose}: a one-time locker code. item is "type:owner", an item

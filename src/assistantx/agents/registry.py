@@ -3,7 +3,8 @@
 ``serve``, ``run``, ``eval`` and the tests all build reasoners here:
 
 - the PPDR reasoners ``symbolic`` (embedded, the default without an LLM), ``llm`` (the four
-  LLM agents) and ``hybrid`` (the model reads the request, the symbolic PPDR carries it out);
+  LLM agents), ``hybrid`` (the model reads the request, the symbolic PPDR carries it out)
+  and ``cascade`` (the hybrid that asks the model only when the embedded reader is unsure);
 - the ablations ``ppdr-no-perception``, ``ppdr-no-planning``, ``ppdr-no-reflection``, each
   wrapping a PPDR reasoner (``inner``, symbolic unless told);
 - the paper's LLM baselines ``direct``, ``cot``, ``react``, ``reflexion``,
@@ -11,8 +12,10 @@
 - ``optimal``, the dataset's optimal policy, which must be told the task (``task``);
 - and a plugin, ``"module:builder"`` (:func:`load_builder`), for ``ASSISTANTX_REASONER_BUILDER``.
 
-A factory makes one reasoner per instruction; what is expensive (a model client, loaded
-prompts, the instruction parser) is built once, when the factory is. The PPDR reasoners are
+A factory makes one reasoner per instruction; what is expensive (loaded prompts, the
+instruction parser) is built once, when the factory is. The chat model of the LLM reasoners is
+injected (``model``): the composition root (service, CLI, bench) builds the provider, the
+agents never import one. The PPDR reasoners are
 imported lazily, so that the CLI starts fast and a missing optional part names itself.
 """
 
@@ -21,18 +24,20 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 from assistantx.agents.ablations import ABLATIONS
 from assistantx.agents.base import Reasoner, ReasonerFactory
 from assistantx.agents.baselines import BASELINES, build_baseline_factory
+from assistantx.agents.llm.shared import require_model
 from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.core.errors import ReasonerError
 from assistantx.core.office import Office
+from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
 from assistantx.core.task_spec import Part
 
-ReasonerKind = Literal["symbolic", "llm", "hybrid"]
+ReasonerKind = Literal["symbolic", "llm", "hybrid", "cascade"]
 ReasonerBuilder = Callable[[Office, Settings], ReasonerFactory]
 
 # The PPDR reasoners: name → "module:builder"; a builder takes (office, settings).
@@ -40,10 +45,11 @@ PPDR_REASONERS: dict[str, str] = {
     "symbolic": "assistantx.agents.symbolic:build_factory",
     "llm": "assistantx.agents.llm:build_factory",
     "hybrid": "assistantx.agents.hybrid:build_factory",
+    "cascade": "assistantx.agents.hybrid:build_cascade_factory",
 }
 ORACLE = "optimal"
 REASONERS: tuple[str, ...] = (*PPDR_REASONERS, *ABLATIONS, *BASELINES, ORACLE)
-LLM_REASONERS = frozenset({"llm", "hybrid", *BASELINES})
+LLM_REASONERS = frozenset({"llm", "hybrid", "cascade", *BASELINES})
 
 
 @dataclass(frozen=True)
@@ -70,26 +76,33 @@ def reasoner_factory(
     *,
     inner: str = "symbolic",
     task: OracleTask | None = None,
+    model: ChatModel | None = None,
 ) -> ReasonerFactory:
     """The factory of the reasoner ``name`` (see the module's list); ReasonerError when the
-    name is unknown, its part is missing, or it needs what it was not given (an LLM URL,
-    the task of ``optimal``)."""
+    name is unknown, its part is missing, or it needs what it was not given (a ``model`` for
+    the LLM reasoners, the task of ``optimal``)."""
     if name in PPDR_REASONERS:
-        return load_builder(PPDR_REASONERS[name], name=name)(office, settings)
+        builder = _import(PPDR_REASONERS[name], name=name)
+        factory: ReasonerFactory
+        if name in LLM_REASONERS:
+            factory = builder(office, settings, model=require_model(model, name))
+        else:
+            factory = builder(office, settings)
+        return factory
     wrapper = ABLATIONS.get(name)
     if wrapper is not None:
         if inner not in PPDR_REASONERS:
             raise ReasonerError(
                 f"{name} ablates a PPDR reasoner ({', '.join(PPDR_REASONERS)}), not {inner!r}"
             )
-        base = reasoner_factory(inner, office, settings)
+        base = reasoner_factory(inner, office, settings, model=model)
 
         def ablated() -> Reasoner:
             return wrapper(base())
 
         return ablated
     if name in BASELINES:
-        return build_baseline_factory(name, settings)
+        return build_baseline_factory(name, settings, model=model)
     if name == ORACLE:
         return _oracle(office, task)
     raise ReasonerError(f"unknown reasoner {name!r}; choose from {', '.join(REASONERS)}")
@@ -98,12 +111,17 @@ def reasoner_factory(
 def load_builder(target: str, *, name: str | None = None) -> ReasonerBuilder:
     """The builder named ``"module:attr"``; ReasonerError, naming ``name`` (or the target),
     when it cannot be imported."""
+    builder: ReasonerBuilder = _import(target, name=name)
+    return builder
+
+
+def _import(target: str, *, name: str | None) -> Callable[..., Any]:
     module_name, _, attr = target.partition(":")
     try:
-        builder: ReasonerBuilder = getattr(importlib.import_module(module_name), attr)
+        found: Callable[..., Any] = getattr(importlib.import_module(module_name), attr)
     except (ImportError, AttributeError) as exc:
         raise ReasonerError(f"the {name or target} reasoner is not available: {exc}") from exc
-    return builder
+    return found
 
 
 def _oracle(office: Office, task: OracleTask | None) -> ReasonerFactory:

@@ -12,6 +12,7 @@ import sys
 import time
 from pathlib import Path
 
+from assistantx.adapters.model import model_from_settings
 from assistantx.agents.registry import PPDR_REASONERS
 from assistantx.core.errors import AssistantXError
 from assistantx.core.settings import Settings
@@ -70,7 +71,12 @@ def _eval(args: argparse.Namespace) -> int:
         max_steps=args.max_steps or settings.max_steps,
     )
     try:
-        tasks = evaluate(config, settings, None if args.quiet else _progress_line)
+        tasks = evaluate(
+            config,
+            settings,
+            None if args.quiet else _progress_line,
+            build_model=model_from_settings,
+        )
     except AssistantXError as exc:
         print(f"error: {exc}")
         return 2

@@ -42,6 +42,12 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         "probe", help="try every structured-output mode and every agent schema; report"
     )
     probe.add_argument("--json", action="store_true", help="print the report as one JSON line")
+    probe.add_argument(
+        "--budget-s",
+        type=float,
+        default=300.0,
+        help="wall time for the whole probe (each call also keeps to ASSISTANTX_LLM_CALL_BUDGET_S)",
+    )
     probe.set_defaults(func=_probe)
 
 
@@ -63,7 +69,8 @@ def _probe(args: argparse.Namespace) -> int:
         "decision": Decision,
         "reflection": Reflection,
     }
-    report = asyncio.run(probe_server(OpenAICompatibleModel.from_settings(settings), schemas))
+    base = OpenAICompatibleModel.from_settings(settings)
+    report = asyncio.run(probe_server(base, schemas, budget_s=args.budget_s))
     report["context_setting"] = settings.llm_context_tokens
     if args.json:
         print(json.dumps(report))

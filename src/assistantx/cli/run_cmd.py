@@ -16,7 +16,8 @@ import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from assistantx.agents.registry import PPDR_REASONERS, reasoner_factory
+from assistantx.adapters.model import model_from_settings
+from assistantx.agents.registry import PPDR_REASONERS, needs_llm, reasoner_factory
 from assistantx.cli._people import resolve_people
 from assistantx.core.errors import AssistantXError, GroundingError, OfficeError
 from assistantx.core.office import load_office
@@ -77,13 +78,20 @@ async def _execute(
 ) -> tuple[dict[str, Any], Trace]:
     unavailable: tuple[str, ...] = args.unavailable
     limits = LoopLimits(
-        max_steps=args.max_steps or settings.max_steps, deadline_s=settings.instruction_deadline_s
+        max_steps=args.max_steps or settings.max_steps,
+        deadline_s=settings.instruction_deadline_s,
+        wall_s=settings.instruction_wall_s,
     )
     run = await run_in_sim(
         office,
         args.requester,
         args.instruction,
-        reasoner_factory(kind, office, settings),
+        reasoner_factory(
+            kind,
+            office,
+            settings,
+            model=model_from_settings(settings) if needs_llm(kind) else None,
+        ),
         unavailable=unavailable,
         limits=limits,
         reasoner_name=kind,

@@ -57,7 +57,7 @@ class Settings(BaseSettings):
     instruction_wall_s: float = Field(
         default=900.0, gt=0, description="wall-clock bound of one instruction (not sim time)"
     )
-    reasoner: Literal["auto", "symbolic", "llm", "hybrid"] = "auto"
+    reasoner: Literal["auto", "symbolic", "llm", "hybrid", "cascade"] = "auto"
 
     # -- the loop -----------------------------------------------------------------------
     max_steps: int = 30
@@ -139,7 +139,7 @@ class Settings(BaseSettings):
         return 1.0 if self.people == "human" else DEFAULT_SIM_SPEEDUP
 
     @property
-    def effective_reasoner(self) -> Literal["symbolic", "llm", "hybrid"]:
+    def effective_reasoner(self) -> Literal["symbolic", "llm", "hybrid", "cascade"]:
         if self.reasoner == "auto":
             return "llm" if self.llm_enabled else "symbolic"
         return self.reasoner

@@ -115,6 +115,9 @@ class Usage(BaseModel):
     prompt_tokens: int = 0
     completion_tokens: int = 0
     latency_s: float = 0.0
+    estimated: bool = Field(
+        default=False, description="some token counts are estimates: the server sent none"
+    )
     by_agent: dict[str, dict[str, float]] = Field(default_factory=dict)
 
     def add(self, call: AgentCall) -> None:
@@ -123,6 +126,7 @@ class Usage(BaseModel):
         self.prompt_tokens += call.prompt_tokens
         self.completion_tokens += call.completion_tokens
         self.latency_s += call.latency_s
+        self.estimated = self.estimated or call.estimated
         agent = self.by_agent.setdefault(
             call.agent, {"calls": 0, "prompt_tokens": 0, "completion_tokens": 0, "latency_s": 0}
         )

@@ -21,7 +21,7 @@ from assistantx.core.office import Office, load_office
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset.tasks import Task, load_tasks
 from assistantx.evaluation.episode import Episode, Handover
-from assistantx.evaluation.methods import MethodBuilder, MethodSpec
+from assistantx.evaluation.methods import MethodBuilder, MethodSpec, ModelBuilder
 from assistantx.evaluation.metrics import success
 from assistantx.evaluation.relevance import relevant_people, relevant_places
 from assistantx.runtime.loop import LoopLimits
@@ -217,8 +217,11 @@ def evaluate(
     config: EvalConfig,
     settings: Settings,
     on_episode: Callable[[Episode, Progress], None] | None = None,
+    *,
+    build_model: ModelBuilder | None = None,
 ) -> list[Task]:
-    """Run every pending (task, run) pair, appending each episode; returns the tasks."""
+    """Run every pending (task, run) pair, appending each episode; returns the tasks.
+    ``build_model`` gives the LLM methods their chat model (in each worker process)."""
     path = office_path(config)
     office = load_office(path)
     tasks = select_tasks(config, office)
@@ -240,12 +243,21 @@ def evaluate(
                 on_episode(episode, progress)
 
         if config.jobs <= 1:
-            builder = MethodBuilder(config.spec, office, settings)
+            builder = MethodBuilder(config.spec, office, settings, build_model=build_model)
             for task, run in todo:
-                episode = asyncio.run(run_episode(task, run, office, builder, config.max_steps))
+                episode = asyncio.run(
+                    run_episode(
+                        task,
+                        run,
+                        office,
+                        builder,
+                        config.max_steps,
+                        wall_s=settings.instruction_wall_s,
+                    )
+                )
                 record(episode.model_dump_json())
         else:
-            _run_parallel(config, path, todo, record)
+            _run_parallel(config, path, todo, record, build_model)
     return tasks
 
 
@@ -254,6 +266,7 @@ def _run_parallel(
     path: Path | None,
     todo: list[tuple[Task, int]],
     record: Callable[[str], None],
+    build_model: ModelBuilder | None,
 ) -> None:
     # Paths (tasks, out, office) travel as text: a worker reads them back from JSON.
     job = json.dumps({k: str(v) if isinstance(v, Path) else v for k, v in asdict(config).items()})
@@ -265,7 +278,12 @@ def _run_parallel(
                 task, run = queue.pop(0)
                 waiting.add(
                     pool.submit(
-                        _episode_job, job, str(path) if path else None, task.model_dump_json(), run
+                        _episode_job,
+                        job,
+                        str(path) if path else None,
+                        task.model_dump_json(),
+                        run,
+                        build_model,
                     )
                 )
             finished, waiting = wait(waiting, return_when=FIRST_COMPLETED)
@@ -276,16 +294,24 @@ def _run_parallel(
 _WORKER: dict[str, MethodBuilder] = {}
 
 
-def _episode_job(job: str, path: str | None, task_json: str, run: int) -> str:
+def _episode_job(
+    job: str, path: str | None, task_json: str, run: int, build_model: ModelBuilder | None
+) -> str:
     """Runs in a worker process: one episode, returned as its JSON line."""
     config = json.loads(job)
     office = load_office(path)
     key = f"{config['method']}|{config['reasoner']}|{path}"
     if key not in _WORKER:
         _WORKER[key] = MethodBuilder(
-            MethodSpec(config["method"], config["reasoner"]), office, Settings()
+            MethodSpec(config["method"], config["reasoner"]),
+            office,
+            Settings(),
+            build_model=build_model,
         )
     builder = _WORKER[key]
     task = Task.model_validate_json(task_json)
-    episode = asyncio.run(run_episode(task, run, builder.office, builder, config["max_steps"]))
+    wall_s = builder.settings.instruction_wall_s
+    episode = asyncio.run(
+        run_episode(task, run, builder.office, builder, config["max_steps"], wall_s=wall_s)
+    )
     return episode.model_dump_json()

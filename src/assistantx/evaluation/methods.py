@@ -9,6 +9,7 @@ reports, and giving the optimal policy each task.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from assistantx.agents.ablations import ABLATIONS
@@ -22,10 +23,16 @@ from assistantx.agents.registry import (
 )
 from assistantx.core.errors import ReasonerError
 from assistantx.core.office import Office
+from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset.tasks import Task
 
 METHODS: tuple[str, ...] = (ORACLE, "ppdr", *ABLATIONS, *BASELINES)
+
+# The chat model the settings name (None: no model configured); given by the composition root
+# (the CLI passes ``assistantx.adapters.model.model_from_settings``), so that the harness's
+# worker processes build their own client.
+ModelBuilder = Callable[[Settings], ChatModel | None]
 
 
 @dataclass(frozen=True)
@@ -50,18 +57,27 @@ class MethodSpec:
 
 
 class MethodBuilder:
-    """Builds reasoner factories for one method; expensive parts (models, prompts) once."""
+    """Builds reasoner factories for one method; expensive parts (prompts, the parser) once.
+    The LLM methods get their ``model`` from the caller (the CLI or a bench script builds it)."""
 
-    def __init__(self, spec: MethodSpec, office: Office, settings: Settings) -> None:
+    def __init__(
+        self,
+        spec: MethodSpec,
+        office: Office,
+        settings: Settings,
+        *,
+        build_model: ModelBuilder | None = None,
+    ) -> None:
         if spec.method not in METHODS:
             raise ReasonerError(f"unknown method {spec.method!r}; choose from {', '.join(METHODS)}")
         self.spec = spec
         self.office = office
         self.settings = settings
         self._shared: ReasonerFactory | None = None
+        model = build_model(settings) if build_model is not None and spec.needs_llm else None
         if spec.method != ORACLE:  # the optimal policy is made per task, knowing the task
             self._shared = reasoner_factory(
-                spec.registry_name, office, settings, inner=spec.reasoner
+                spec.registry_name, office, settings, inner=spec.reasoner, model=model
             )
 
     def factory(self, task: Task) -> ReasonerFactory:

@@ -3,10 +3,10 @@
 Computed, not asked. The requester's errand is the robot's errand seen from their desk: from
 their desk to every place the robot went to for the instruction (people's desks and
 facilities, in the order the robot first reached them), and back to their desk. Each leg is
-measured with ``distance(a, b)``: over the map's planner (``PlannedDistance``) where the
-map is known, else the office's straight-line ``Office.distance`` (and the figure
-says which it used). The robot's distance is what it actually drove for the instruction,
-summed from its move results.
+measured with ``distance(a, b)``: along the robot base's floor map (``over_map``: the robot
+port's ``path_length``) where the base has one, else the office's straight-line
+``Office.distance`` (and the figure says which it used). The robot's distance is what it
+actually drove for the instruction, summed from its move results.
 
 Only an instruction that ended ``done`` saved walking: a failed or unachievable one saved the
 requester nothing they could count on, so its ``saved_m`` is 0 (its walk is still recorded).
@@ -16,18 +16,16 @@ from __future__ import annotations
 
 import itertools
 import logging
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from typing import Literal
 
 from pydantic import BaseModel, Field
 
-from assistantx.adapters.robot.navigator import NavigatorRobot
 from assistantx.core.actions import Move
 from assistantx.core.errors import RobotError, UnreachableError
 from assistantx.core.office import Office
+from assistantx.core.ports.robot import RobotBase
 from assistantx.core.trace import Trace
-from assistantx.nav.anchors import Anchor
-from assistantx.nav.planner import GridPlanner
 
 logger = logging.getLogger(__name__)
 
@@ -35,40 +33,18 @@ DistanceFn = Callable[[str, str], float]
 DistanceMethod = Literal["map", "straight-line"]
 
 
-class PlannedDistance:
-    """``distance(a, b)``: metres along the map planner's path from a's anchor to b's.
+def over_map(robot: RobotBase) -> DistanceFn:
+    """``distance(a, b)`` along the robot base's floor map (its ``path_length``); a base
+    without a map raises UnreachableError, so ``estimate_walking`` measures straight lines
+    and says so."""
 
-    Each leg is planned from its own start (one Dijkstra per start, cached): smoothed grid
-    paths are not symmetric, and a cache filled in whatever order the robot happened to drive
-    would make the same walk measure differently from one day to the next.
-    """
-
-    def __init__(self, planner: GridPlanner, anchors: Mapping[str, Anchor]) -> None:
-        self._planner = planner
-        self._anchors = dict(anchors)
-        self._from: dict[str, dict[str, float | None]] = {}
-
-    @classmethod
-    def of_robot(cls, robot: NavigatorRobot) -> PlannedDistance:
-        return cls(robot.navigator.planner, robot.anchors)
-
-    def __call__(self, a: str, b: str) -> float:
-        for place in (a, b):
-            if place not in self._anchors:
-                raise UnreachableError(f"{place!r} is not a place on the map")
-        if a not in self._from:
-            start = self._anchors[a]
-            names = list(self._anchors)
-            paths = self._planner.plan_many(
-                (start.x, start.y), [(self._anchors[n].x, self._anchors[n].y) for n in names]
-            )
-            self._from[a] = {
-                n: None if p is None else p.length_m for n, p in zip(names, paths, strict=True)
-            }
-        length = self._from[a][b]
+    def distance(a: str, b: str) -> float:
+        length = robot.path_length(a, b)
         if length is None:
-            raise UnreachableError(f"no path from {a} to {b}")
+            raise UnreachableError("the robot base has no floor map")
         return length
+
+    return distance
 
 
 class WalkingEstimate(BaseModel):

@@ -44,7 +44,7 @@ from assistantx.feedback.report import (
 from assistantx.feedback.store import FeedbackStore
 from assistantx.feedback.survey import Survey
 from assistantx.feedback.surveyor import Surveyor
-from assistantx.feedback.walking import DistanceFn, PlannedDistance
+from assistantx.feedback.walking import DistanceFn, over_map
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import NotFoundError, UnprocessableError
@@ -74,7 +74,7 @@ def map_distance(runtime: ServiceRuntime) -> DistanceFn | None:
     except (AssistantXError, OSError) as exc:
         logger.warning("walking saved in straight lines: the office map is unusable (%s)", exc)
         return None
-    return PlannedDistance.of_robot(robot)
+    return over_map(robot)
 
 
 @asynccontextmanager

@@ -21,9 +21,10 @@ from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
+from assistantx.adapters.model import model_from_settings
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
-from assistantx.agents.registry import load_builder, reasoner_factory
+from assistantx.agents.registry import load_builder, needs_llm, reasoner_factory
 from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
@@ -162,7 +163,11 @@ class ServiceRuntime:
                 reasoner_factory=factory,
                 reasoner_name=name,
                 ltm=ltm,
-                limits=LoopLimits(max_steps=s.max_steps, deadline_s=s.instruction_deadline_s),
+                limits=LoopLimits(
+                    max_steps=s.max_steps,
+                    deadline_s=s.instruction_deadline_s,
+                    wall_s=s.instruction_wall_s,
+                ),
                 # A direct message starts an instruction only when it asks for something.
                 is_request=self._request_check,
                 retire_codes=self.ledger.retire,
@@ -238,7 +243,8 @@ class ServiceRuntime:
             factory = load_builder(s.reasoner_builder)(self.office, s)
             return factory, s.reasoner_builder.partition(":")[2]
         kind = s.effective_reasoner
-        return reasoner_factory(kind, self.office, s), kind
+        model = model_from_settings(s) if needs_llm(kind) else None
+        return reasoner_factory(kind, self.office, s, model=model), kind
 
     @property
     def map_yaml(self) -> Path:

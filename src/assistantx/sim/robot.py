@@ -28,7 +28,8 @@ class Relocatable(Protocol):
 
 
 class SimRobot(RobotBase):
-    """A kinematic base: drives at constant speed along ``distance(a, b)`` metres."""
+    """A kinematic base: drives at constant speed along ``distance(a, b)`` metres. It has no
+    floor map, so ``path_length`` is None (the caller's straight line is its own measure)."""
 
     def __init__(
         self, office: Office, clock: Clock, distance: DistanceFn, speed_mps: float
@@ -105,6 +106,9 @@ class ObservedRobot(RobotBase):
         if self._on_arrived is not None:
             self._on_arrived(result.place)
         return result
+
+    def path_length(self, a: str, b: str) -> float | None:
+        return self.base.path_length(a, b)
 
     def state(self) -> RobotState:
         # Motion as the base reports it: a base still planning its path has not left its place.

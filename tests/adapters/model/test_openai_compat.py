@@ -234,7 +234,9 @@ async def test_scripted_refusal_with_500_mentioning_response_format(
     async with make_model(scripted_llm) as model:
         response = await model.complete(ask("decision", json_schema=SCHEMA))
     assert response.structured_mode == "json_object_schema"
-    assert response.retries == 0
+    # not retried as a 500: refused once, then the fallback; both requests count
+    assert len(scripted_llm.requests) == 2
+    assert response.retries == 1
 
 
 async def test_a_400_about_something_else_does_not_fall_back(scripted_llm: ScriptedLLM) -> None:

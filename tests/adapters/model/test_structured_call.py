@@ -15,8 +15,8 @@ from assistantx.adapters.model import (
     RetryPolicy,
     structured_call,
 )
-from assistantx.adapters.model.schema import grammar_schema
 from assistantx.core.errors import LLMError, ModelBehaviorError, ModelOutputError
+from assistantx.core.structured.schema import grammar_schema
 from fakes.scripted_llm import (
     RecordedRequest,
     Reply,

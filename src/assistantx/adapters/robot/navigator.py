@@ -144,6 +144,7 @@ class NavigatorRobot(RobotBase):
             raise MapError(f"{where}anchor {first.anchor!r}: {first.problem}{more}")
         self._snapshot: RobotState | None = None
         self._paths = _PATH_TABLES.setdefault(self._map_planner, {})
+        self._walks: dict[str, dict[str, float | None]] = {}
         self._obstacles: list[tuple[float, float, float]] = []
         self._goal: str | None = None
         self._path: Path | None = None
@@ -289,6 +290,28 @@ class NavigatorRobot(RobotBase):
             self._explain_unreachable(a, b)
         assert path is not None
         return path.length_m
+
+    def path_length(self, a: str, b: str) -> float:
+        """Metres along the map planner's path from a's anchor to b's, for the walking
+        estimate. Each start is planned on its own (one Dijkstra per start, cached): smoothed
+        grid paths are not symmetric, and reusing reversed paths in whatever order the robot
+        happened to drive would make the same walk measure differently from one day to the
+        next."""
+        for place in (a, b):
+            if place not in self.anchors:
+                raise UnreachableError(f"{place!r} is not a place on the map")
+        if a not in self._walks:
+            names = list(self.anchors)
+            paths = self._map_planner.plan_many(
+                _xy(self.anchors[a]), [_xy(self.anchors[n]) for n in names]
+            )
+            self._walks[a] = {
+                n: None if p is None else p.length_m for n, p in zip(names, paths, strict=True)
+            }
+        length = self._walks[a][b]
+        if length is None:
+            raise UnreachableError(f"no path from {a} to {b}")
+        return length
 
     def _explain_unreachable(self, a: str, b: str) -> None:
         """Re-plan the one pair to raise UnreachableError with the planner's reason."""

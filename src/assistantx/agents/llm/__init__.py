@@ -10,7 +10,12 @@
 
 from assistantx.agents.llm.checks import check_actions, focus_ids, ground_updates
 from assistantx.agents.llm.inputs import schema_text
-from assistantx.agents.llm.model_reasoner import ModelReasoner, agent_call
+from assistantx.agents.llm.model_reasoner import (
+    ModelReasoner,
+    agent_call,
+    failed_call,
+    interrupted_call,
+)
 from assistantx.agents.llm.reasoner import (
     AGENTS,
     AgentPrompts,
@@ -18,7 +23,7 @@ from assistantx.agents.llm.reasoner import (
     LLMReasonerFactory,
     build_factory,
 )
-from assistantx.agents.llm.shared import SharedModel, model_from_settings
+from assistantx.agents.llm.shared import SharedModel, require_model
 
 __all__ = [
     "AGENTS",
@@ -30,8 +35,10 @@ __all__ = [
     "agent_call",
     "build_factory",
     "check_actions",
+    "failed_call",
     "focus_ids",
     "ground_updates",
-    "model_from_settings",
+    "interrupted_call",
+    "require_model",
     "schema_text",
 ]

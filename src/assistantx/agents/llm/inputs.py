@@ -11,7 +11,7 @@ from collections.abc import Sequence
 
 from pydantic import BaseModel
 
-from assistantx.adapters.model.schema import schema_outline
+from assistantx.core.structured import schema_outline
 from assistantx.core.trace import ActionResult, Decision, Observation, Plan, Reflection
 from assistantx.memory.render import quote
 from assistantx.memory.short_term import ShortTermMemory

@@ -1,7 +1,7 @@
 """A reasoner whose agents are structured calls to a shared chat model, accounted in the trace.
 
 The base of the LLM reasoner and the paper's baselines. Each agent call is one
-:func:`~assistantx.adapters.model.structured_call`: the output is parsed, validated and
+:func:`~assistantx.core.structured.structured_call`: the output is parsed, validated and
 checked, and a failed check is fed back to the model up to ``output_retries`` times; then
 :class:`~assistantx.core.errors.ModelBehaviorError` ends the instruction (the loop tells the
 requester). One :class:`~assistantx.core.trace.AgentCall` per agent call (its repairs
@@ -14,22 +14,17 @@ the shared model until its ``stop()``).
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Callable, Sequence
 from typing import TypeVar
 
 from pydantic import BaseModel
 
-from assistantx.adapters.model import (
-    Attempt,
-    ChatRequest,
-    ChatResponse,
-    Message,
-    structured_call,
-)
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.agents.llm.shared import SharedModel
 from assistantx.core.errors import ModelBehaviorError
-from assistantx.core.ports.model import LLMCallFailed
+from assistantx.core.ports.model import ChatRequest, ChatResponse, LLMCallFailed, Message
+from assistantx.core.structured import Attempt, structured_call
 from assistantx.core.trace import AgentCall, Percept
 from assistantx.memory.focus import (
     FocusBudget,
@@ -105,22 +100,36 @@ class ModelReasoner(Reasoner):
                 ctx.record(agent_call(agent, attempts))
             raise
         except LLMCallFailed as exc:
-            # The server read the prompt (and maybe generated) before failing: count it.
-            earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
-            failed = Attempt(
-                response=ChatResponse(
-                    text="",
-                    usage=exc.usage,
-                    latency_s=exc.latency_s,
-                    model=exc.model,
-                    retries=exc.retries,
-                ),
-                error=str(exc),
-            )
-            ctx.record(agent_call(agent, [*earlier, failed]))
+            ctx.record(failed_call(agent, exc))
+            raise
+        except asyncio.CancelledError:
+            ctx.record(interrupted_call(agent))
             raise
         ctx.record(agent_call(agent, result.attempts))
         return result.output
+
+
+def interrupted_call(agent: str) -> AgentCall:
+    """A call cut off by the instruction's own time limit: a request was in flight, what it
+    cost is unknown (0 tokens, marked as an estimate)."""
+    return AgentCall(agent=agent, attempts=1, estimated=True)
+
+
+def failed_call(agent: str, exc: LLMCallFailed) -> AgentCall:
+    """The accounting of a call that got no usable answer: its earlier (rejected) attempts,
+    and the failed one with every request it sent and what they cost (estimated)."""
+    earlier = [a for a in exc.attempts if isinstance(a, Attempt)]
+    failed = Attempt(
+        response=ChatResponse(
+            text="",
+            usage=exc.usage,
+            latency_s=exc.latency_s,
+            model=exc.model,
+            retries=exc.retries,
+        ),
+        error=str(exc),
+    )
+    return agent_call(agent, [*earlier, failed])
 
 
 def agent_call(agent: str, attempts: Sequence[Attempt]) -> AgentCall:

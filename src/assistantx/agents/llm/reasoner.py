@@ -17,7 +17,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from assistantx.adapters.model import ChatModel, Message
 from assistantx.agents.base import AgentContext
 from assistantx.agents.llm.checks import check_actions, focus_ids, ground_updates
 from assistantx.agents.llm.inputs import (
@@ -32,8 +31,9 @@ from assistantx.agents.llm.inputs import (
 )
 from assistantx.agents.llm.model_reasoner import ModelReasoner
 from assistantx.agents.llm.prompts import PromptTemplate, load_prompts
-from assistantx.agents.llm.shared import SharedModel, model_from_settings
+from assistantx.agents.llm.shared import SharedModel, require_model
 from assistantx.core.office import Office
+from assistantx.core.ports.model import ChatModel, Message
 from assistantx.core.settings import Settings
 from assistantx.core.trace import (
     ActionResult,
@@ -215,14 +215,12 @@ def build_factory(
     """The LLM reasoner for ``assistantx.agents.registry`` (``office`` is unused: names resolve
     against each instruction's memory).
 
-    The prompts are loaded and checked now, so a broken template fails at start-up. Without
-    ``model`` the OpenAI-compatible client is built from the settings; ReasonerError when
-    ``ASSISTANTX_LLM_BASE_URL`` is unset.
+    The prompts are loaded and checked now, so a broken template fails at start-up.
+    ``model`` is injected by the composition root; ReasonerError without one.
     """
     del office  # the resolver comes with each AgentContext
     prompts = AgentPrompts.load(prompts_dir)
-    if model is None:
-        model = model_from_settings(settings, "llm")
+    model = require_model(model, "llm")
     logger.info("LLM reasoner: %r, output retries %d", model, settings.llm_output_retries)
     return LLMReasonerFactory(
         model,

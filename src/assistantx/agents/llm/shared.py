@@ -1,4 +1,4 @@
-"""One chat model shared by every instruction's reasoner, and the model the settings name.
+"""One chat model shared by every instruction's reasoner.
 
 A reasoner factory makes one reasoner per instruction; they all talk to the same model, so
 the model's connection is opened by the first reasoner to start and closed by the last to stop.
@@ -8,9 +8,8 @@ from __future__ import annotations
 
 import asyncio
 
-from assistantx.adapters.model import ChatModel, OpenAICompatibleModel
 from assistantx.core.errors import ReasonerError
-from assistantx.core.settings import Settings
+from assistantx.core.ports.model import ChatModel
 
 
 class SharedModel:
@@ -40,14 +39,12 @@ class SharedModel:
                 await self.model.stop()
 
 
-def model_from_settings(settings: Settings, reasoner: str) -> ChatModel:
-    """The OpenAI-compatible client of the settings; ReasonerError, naming ``reasoner``, when
-    ``ASSISTANTX_LLM_BASE_URL`` is unset or unusable."""
-    if not settings.llm_base_url:
+def require_model(model: ChatModel | None, reasoner: str) -> ChatModel:
+    """``model``, injected by the composition root; ReasonerError, naming ``reasoner``, when
+    none was (``ASSISTANTX_LLM_BASE_URL`` unset)."""
+    if model is None:
         raise ReasonerError(
-            f"the {reasoner} reasoner needs ASSISTANTX_LLM_BASE_URL (an OpenAI-compatible /v1 URL)"
+            f"the {reasoner} reasoner needs a language model: set ASSISTANTX_LLM_BASE_URL "
+            "(an OpenAI-compatible /v1 URL) and ASSISTANTX_LLM_MODEL"
         )
-    try:
-        return OpenAICompatibleModel.from_settings(settings)
-    except ValueError as exc:
-        raise ReasonerError(f"cannot use the LLM at {settings.llm_base_url}: {exc}") from exc
+    return model

@@ -90,6 +90,12 @@ class Usage(BaseModel):
 StructuredMode = Literal["none", "json_schema", "json_object_schema", "json_object", "prompt"]
 ENFORCED_MODES: frozenset[StructuredMode] = frozenset({"json_schema", "json_object_schema"})
 
+# Why a call got no answer: no connection at all (``refused``), no answer in time
+# (``timed_out``), the server does not accept the answer format asked for (``unsupported``),
+# it refused the request (``rejected``, a 4xx), kept failing (``server_error``, 5xx or 429),
+# or the connection broke off (``broken``).
+FailureKind = Literal["refused", "timed_out", "unsupported", "rejected", "server_error", "broken"]
+
 
 class ChatResponse(BaseModel):
     """What the model answered, and what it cost.
@@ -126,8 +132,10 @@ class LLMCallFailed(LLMError):
         latency_s: float,
         model: str,
         retries: int = 0,
+        kind: FailureKind = "broken",
     ) -> None:
         super().__init__(message)
+        self.kind = kind
         self.user_text = user_text
         self.usage = usage
         self.latency_s = latency_s

@@ -52,3 +52,11 @@ class RobotBase(Component, ABC):
     @abstractmethod
     def state(self) -> RobotState:
         """The current pose, place, path and (if localizing) particle sample."""
+
+    def path_length(self, a: str, b: str) -> float | None:
+        """Metres along the path a person would take from location ``a`` to ``b`` on this
+        base's floor map; None when the base has no map (callers then measure straight
+        lines). Raises UnreachableError when the map has no path. May take seconds on a big
+        floor: call it off the event loop."""
+        del a, b
+        return None

@@ -2,7 +2,7 @@
 
 from assistantx.adapters.messenger.matrix.adapter import MatrixMessenger, transaction_id
 from assistantx.adapters.messenger.matrix.appservice import create_appservice_router
-from assistantx.adapters.messenger.matrix.client import MatrixClient, MatrixError, RetryPolicy
+from assistantx.adapters.messenger.matrix.client import MatrixClient, MatrixError
 from assistantx.adapters.messenger.matrix.config import MatrixConfig, load_matrix_config
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor
 from assistantx.adapters.messenger.matrix.normalize import EventNormalizer
@@ -14,6 +14,7 @@ from assistantx.adapters.messenger.matrix.runtime import (
 )
 from assistantx.adapters.messenger.matrix.store import EventStore, SqliteEventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
+from assistantx.core.http_retry import RetryPolicy
 
 __all__ = [
     "EventIngestor",

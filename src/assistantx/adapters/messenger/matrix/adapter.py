@@ -47,7 +47,13 @@ from assistantx.adapters.messenger.matrix.appservice import (
     create_appservice_router,
     create_discarding_router,
 )
-from assistantx.adapters.messenger.matrix.client import JSON, MatrixClient, MatrixError, RetryPolicy
+from assistantx.adapters.messenger.matrix.client import (
+    JSON,
+    MatrixClient,
+    MatrixError,
+    matrix_policy,
+    retrying_http,
+)
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
 from assistantx.adapters.messenger.matrix.ingest import EventIngestor
 from assistantx.adapters.messenger.matrix.normalize import (
@@ -160,8 +166,8 @@ class MatrixMessenger(Messenger):
 
     async def _start(self) -> None:
         config = self.config
-        retry = RetryPolicy(max_retries=config.max_retries)
-        self._http = self._external_http or httpx.AsyncClient(timeout=config.request_timeout_s)
+        retry = matrix_policy(max_retries=config.max_retries)
+        self._http = self._external_http or retrying_http(retry, config.request_timeout_s)
         self._as_client = MatrixClient(
             config.homeserver_url,
             config.as_token.get_secret_value(),

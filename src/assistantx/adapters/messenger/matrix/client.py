@@ -2,9 +2,11 @@
 
 It speaks the wire protocol and knows nothing of people, groups or agents. Requests that the
 homeserver throttles (429, honouring ``retry_after_ms``), fails with a 5xx, or that time out
-are retried with exponential backoff; every other failure raises ``MatrixError`` with the
-homeserver's ``errcode``. Retrying a send is safe because the caller passes a stable
-transaction id (the homeserver answers a repeated ``txnId`` with the first event id).
+are retried with exponential backoff by the shared retrying transport
+(:mod:`assistantx.core.http_retry`, see :func:`retrying_http`); every other failure raises
+``MatrixError`` with the homeserver's ``errcode``. Retrying a send is safe because the
+caller passes a stable transaction id (the homeserver answers a repeated ``txnId`` with the
+first event id).
 
 An application service acts as one of its users by adding ``user_id`` to each request
 (identity assertion); ``as_user`` returns such a view sharing the connection pool.
@@ -12,18 +14,15 @@ An application service acts as one of its users by adding ``user_id`` to each re
 
 from __future__ import annotations
 
-import asyncio
 import logging
-import random
-from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Any, Self
 from urllib.parse import quote
 
 import httpx
 
-from assistantx.core.backoff import Backoff
 from assistantx.core.errors import MessengerError
+from assistantx.core.http_retry import RetryingTransport, RetryPolicy, header_retry_after
 
 logger = logging.getLogger(__name__)
 
@@ -39,19 +38,33 @@ class MatrixError(MessengerError):
         super().__init__(message)
 
 
-@dataclass(frozen=True)
-class RetryPolicy:
-    """How often a request is retried, and the backoff between tries (``core.backoff``: full
-    jitter, drawn from this policy's own ``rng``)."""
+def matrix_policy(max_retries: int = 5, base_delay_s: float = 0.25) -> RetryPolicy:
+    """The homeserver's retries: up to 30 s between tries, timeouts retried, unseeded."""
+    return RetryPolicy(
+        max_retries=max_retries,
+        base_delay_s=base_delay_s,
+        max_delay_s=30.0,
+        retry_after_cap_s=30.0,
+        seed=None,
+    )
 
-    max_retries: int = 5
-    base_delay_s: float = 0.25
-    max_delay_s: float = 30.0
-    rng: random.Random = field(default_factory=random.Random, compare=False, repr=False)
 
-    def delay_s(self, attempt: int) -> float:
-        """The wait before retry number ``attempt`` (0-based)."""
-        return Backoff(self.base_delay_s, self.max_delay_s).delay_s(attempt, self.rng)
+def matrix_retry_after(response: httpx.Response) -> float | None:
+    """A throttled request's wait: the body's ``retry_after_ms``, else ``Retry-After``."""
+    try:
+        body = response.json()
+        retry_after_ms = float(body.get("retry_after_ms", 0)) if isinstance(body, dict) else 0.0
+    except ValueError:
+        retry_after_ms = 0.0
+    if retry_after_ms > 0:
+        return retry_after_ms / 1000
+    return header_retry_after(response)
+
+
+def retrying_http(retry: RetryPolicy | None = None, timeout_s: float = 30.0) -> httpx.AsyncClient:
+    """An httpx client whose transport retries as a homeserver needs."""
+    transport = RetryingTransport(retry or matrix_policy(), retry_after=matrix_retry_after)
+    return httpx.AsyncClient(timeout=timeout_s, transport=transport)
 
 
 def _path_part(value: str) -> str:
@@ -74,9 +87,10 @@ class MatrixClient:
         self._base = homeserver_url.rstrip("/")
         self._token = access_token
         self._user_id = user_id
-        self._retry = retry or RetryPolicy()
+        self._retry = retry or matrix_policy()
         self._owns_http = http is None
-        self._http = http or httpx.AsyncClient(timeout=timeout_s)
+        # a client passed in retries as it was built (``retrying_http``); ours does
+        self._http = http or retrying_http(self._retry, timeout_s)
 
     def as_user(self, user_id: str) -> MatrixClient:
         """A view that asserts ``user_id`` (application services only); shares the pool."""
@@ -112,56 +126,28 @@ class MatrixClient:
         headers: dict[str, str] | None = None,
         timeout_s: float | None = None,
     ) -> httpx.Response:
-        """Send with retries; returns a 2xx response or raises ``MatrixError``."""
+        """Send (the transport retries); returns a 2xx response or raises ``MatrixError``."""
         query: dict[str, str | int] = dict(params or {})
         if self._user_id is not None:
             query["user_id"] = self._user_id
         all_headers = {"Authorization": f"Bearer {self._token}", **(headers or {})}
         timeout = httpx.USE_CLIENT_DEFAULT if timeout_s is None else httpx.Timeout(timeout_s)
         url = self._base + path
-        attempt = 0
-        while True:
-            try:
-                response = await self._http.request(
-                    method,
-                    url,
-                    params=query,
-                    json=json,
-                    content=content,
-                    headers=all_headers,
-                    timeout=timeout,
-                )
-            except httpx.TransportError as exc:
-                if attempt >= self._retry.max_retries:
-                    raise MatrixError(f"{method} {path}: {exc!r}") from exc
-                delay = self._retry.delay_s(attempt)
-                logger.debug("%s %s failed (%r); retrying in %.2fs", method, path, exc, delay)
-            else:
-                if response.is_success:
-                    return response
-                retryable = response.status_code == 429 or response.status_code >= 500
-                if not retryable or attempt >= self._retry.max_retries:
-                    raise _error_from(method, path, response)
-                delay = self._retry_delay(response, attempt)
-                logger.debug(
-                    "%s %s answered %s; retrying in %.2fs",
-                    method,
-                    path,
-                    response.status_code,
-                    delay,
-                )
-            attempt += 1
-            await asyncio.sleep(delay)
-
-    def _retry_delay(self, response: httpx.Response, attempt: int) -> float:
-        if response.status_code == 429:
-            try:
-                retry_after_ms = float(response.json().get("retry_after_ms", 0))
-            except ValueError:
-                retry_after_ms = 0.0
-            if retry_after_ms > 0:
-                return min(retry_after_ms / 1000, self._retry.max_delay_s)
-        return self._retry.delay_s(attempt)
+        try:
+            response = await self._http.request(
+                method,
+                url,
+                params=query,
+                json=json,
+                content=content,
+                headers=all_headers,
+                timeout=timeout,
+            )
+        except httpx.TransportError as exc:  # after the transport's retries
+            raise MatrixError(f"{method} {path}: {exc!r}") from exc
+        if not response.is_success:
+            raise _error_from(method, path, response)
+        return response
 
     async def _json(self, method: str, path: str, **kwargs: Any) -> JSON:
         response = await self.request(method, path, **kwargs)

@@ -27,8 +27,6 @@ from typing import Generic, TypeVar
 
 from pydantic import BaseModel, ValidationError
 
-from assistantx.adapters.model._json_extract import extract_json_object
-from assistantx.adapters.model.schema import grammar_schema
 from assistantx.core.errors import ModelBehaviorError, ModelOutputError
 from assistantx.core.ports.model import (
     ChatModel,
@@ -38,6 +36,8 @@ from assistantx.core.ports.model import (
     Message,
     Usage,
 )
+from assistantx.core.structured._json_extract import extract_json_object
+from assistantx.core.structured.schema import grammar_schema
 
 logger = logging.getLogger(__name__)
 

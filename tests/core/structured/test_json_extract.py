@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.adapters.model import extract_json_object
-from assistantx.adapters.model._json_extract import remove_trailing_commas
+from assistantx.core.structured import extract_json_object
+from assistantx.core.structured._json_extract import remove_trailing_commas
 
 
 @pytest.mark.parametrize(

@@ -1,0 +1,1 @@
+from fakes.fixtures import scripted_llm  # noqa: F401
