@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import asyncio
 import logging
-import os
 from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
@@ -41,6 +40,7 @@ from assistantx.runtime.loop import LoopLimits
 from assistantx.service import colleagues
 from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
+from assistantx.service.data_dir import LOCK_KEYS_FILE, ensure_data_dir
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError
@@ -56,7 +56,6 @@ from assistantx.store.journal import InstructionRecord, Journal
 logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
-LOCK_KEYS_FILE = "lock-keys.json"
 SIM_CODES_FILE = "sim-codes.json"  # simulated people's QR payloads: credentials, not journaled
 
 
@@ -312,13 +311,6 @@ class ServiceRuntime:
             return False
         self.durability.cancelled.add(instruction_id)
         return self.assistant.cancel(instruction_id)
-
-
-def ensure_data_dir(path: Path) -> Path:
-    """The data folder, made owner-only (it holds the journal and the lock's keys)."""
-    path.mkdir(parents=True, exist_ok=True)
-    os.chmod(path, 0o700)
-    return path
 
 
 def lock_keys_for(settings: Settings, data_dir: Path) -> LockKeys:
