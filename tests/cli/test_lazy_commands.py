@@ -10,6 +10,9 @@ import sys
 
 import pytest
 
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
 HEAVY = ("fastapi", "uvicorn", "scipy", "matplotlib")
 
 # Runs the CLI's own entry point in a fresh interpreter, then prints which heavy packages it

@@ -7,8 +7,12 @@ import time
 from pathlib import Path
 
 import httpx
+import pytest
 
 from service.server import OPERATOR, free_port, serve
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 
 def _follow(url: str, lines: list[str], opened: threading.Event) -> None:
