@@ -129,8 +129,11 @@ class ServiceRuntime:
         )
         self.messenger = BuiltinMessenger(self.journal, self.clock)
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
-        if s.people == "simulated":
+        inbox = (
             colleagues.connect_colleagues(self.sim, self.messenger)
+            if s.people == "simulated"
+            else None
+        )
         ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
@@ -165,6 +168,8 @@ class ServiceRuntime:
                 "ASSISTANTX_LOCK_SHARED_KEY or ASSISTANTX_LOCK_KEY_FILE"
             ) from exc
         await stack.enter_async_context(self.messenger)
+        if inbox is not None:  # stops after the simulator: what they wrote is journaled
+            await stack.enter_async_context(inbox)
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
