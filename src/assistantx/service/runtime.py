@@ -31,6 +31,7 @@ from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.robot import RobotBase
 from assistantx.core.settings import Settings
 from assistantx.memory.resolve import Resolver
+from assistantx.nav import disk_cache
 from assistantx.runtime.assistant import (
     Assistant,
     AssistantParts,
@@ -56,6 +57,7 @@ from assistantx.store.journal import InstructionRecord, Journal
 logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
+MAP_CACHE_DIR = "map-cache"  # arrays derived from the map (nav.disk_cache)
 SIM_CODES_FILE = "sim-codes.json"  # simulated people's QR payloads: credentials, not journaled
 
 
@@ -102,6 +104,9 @@ class ServiceRuntime:
             stack.callback(self.data_lock.release)
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
+        # The map's distance transforms, kept by content hash: a second start reads them.
+        disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
+        stack.callback(disk_cache.use_directory, None)
         self.metrics = ServiceMetrics(self.journal)
         self.metrics.watch_loop(self.loop_lag)
         self.auth = build_authority(

@@ -188,6 +188,11 @@ class NavigatorRobot(RobotBase):
         if self._navigator.params.plan_in_process:
             await asyncio.to_thread(PLAN_PROCESS.warm, self._navigator.planner)
 
+    async def _stop(self) -> None:
+        """Stop the planning worker with the robot: a stopped service leaves no process."""
+        if self._navigator.params.plan_in_process:
+            await asyncio.to_thread(PLAN_PROCESS.close)
+
     @property
     def grid(self) -> OccupancyMap:
         """The map the robot believes (without obstacles dropped into the world)."""
