@@ -90,7 +90,7 @@ def _start(
         env["ASSISTANTX_REASONER_BUILDER"] = "service.stapler_reasoner:build_factory"
         env["PYTHONPATH"] = str(ROOT / "tests")
         reasoner = "stapler (tests' stand-in; assistantx.agents.symbolic.build_factory not found)"
-    log = (data_dir.parent / "server.log").open("wb")
+    log = (args.out / "service_load-server.log").open("wb")  # kept: read it when a run fails
     cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1", "--port", str(port)]
     process = subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT)
     return process, reasoner
