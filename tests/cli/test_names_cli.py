@@ -18,6 +18,9 @@ import pytest
 from helpers.processes import wait_ready
 from helpers.servers import free_port
 
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
 STAPLER = "bring me a stapler"
 
 

@@ -10,6 +10,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 from matplotlib.figure import Figure
 
 from assistantx.evaluation.report import chart_data
@@ -17,6 +18,9 @@ from assistantx.evaluation.report import chart_figure as chart_figure_of_evaluat
 from assistantx.feedback.impact import InstructionRecord
 from assistantx.feedback.report import Period, build_report, chart_figure, render_markdown
 from assistantx.feedback.walking import WalkingEstimate
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parents[2]
 NAMES = {"lee": "Dr. Lee", "hu": "Ms. Hu"}

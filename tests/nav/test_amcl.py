@@ -23,6 +23,9 @@ from assistantx.nav.geometry import angle_diff
 from assistantx.nav.lidar import Lidar, LidarParams
 from assistantx.nav.occupancy_map import OCCUPIED, OccupancyMap
 
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
 
 def test_low_variance_resample_counts_are_proportional() -> None:
     rng = np.random.default_rng(0)

@@ -20,12 +20,15 @@ from service.server import LEE, OPERATOR, ZHANG
 
 @asynccontextmanager
 async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[httpx.AsyncClient]:
-    """A client of a fresh server; ``settings`` override the tests' defaults (speed-up 50)."""
+    """A client of a fresh server; ``settings`` override the tests' defaults (speed-up 50; the
+    navigator without AMCL, i.e. kinematic paths on the map: a test of localization passes
+    ``robot_localize=True``)."""
     defaults: dict[str, Any] = {
         "data_dir": data_dir,
         "operator_token": OPERATOR,
         "tokens": json.dumps({LEE: "lee", ZHANG: "zhang"}),
         "speedup": 50,
+        "robot_localize": False,
     }
     app = create_app(Settings(**{**defaults, **settings}))
     async with serving_app(app) as client:

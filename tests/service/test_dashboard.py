@@ -40,6 +40,7 @@ async def serve(tmp_path: Path, **overrides: object) -> AsyncIterator[httpx.Asyn
         "people": "human",
         "speedup": 200,
         "reasoner_builder": "service.stapler_reasoner:build_factory",
+        "robot_localize": False,  # kinematic paths: these tests are about the page
     }
     settings = Settings(**{**values, **overrides})  # type: ignore[arg-type]
     headers = {"Authorization": f"Bearer {TOKEN}"}

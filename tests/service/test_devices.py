@@ -10,8 +10,12 @@ import time
 from pathlib import Path
 
 import httpx
+import pytest
 
 from service.server import LEE, OPERATOR, base_env, free_port, serve, sse
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}

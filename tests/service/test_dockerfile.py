@@ -10,8 +10,12 @@ import sys
 from pathlib import Path
 
 import httpx
+import pytest
 
 from service.server import OPERATOR, base_env, free_port, start
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -31,7 +31,9 @@ async def journaled(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
         event = TraceEvent(instruction_id="ins-old", kind="observation", time=100.0 + n, step=n)
         journal.record(event)
     journal.close()
-    async with serving_app(create_app(Settings(data_dir=data, operator_token=OPERATOR))) as client:
+    async with serving_app(
+        create_app(Settings(data_dir=data, operator_token=OPERATOR, robot_localize=False))
+    ) as client:
         yield client
 
 

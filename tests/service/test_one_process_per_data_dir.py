@@ -10,10 +10,14 @@ from collections import Counter
 from pathlib import Path
 
 import httpx
+import pytest
 
 from assistantx.store.journal import Journal
 from helpers.eventually import eventually_sync
 from service.server import LEE, base_env, free_port, serve
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 SLOW = {"ASSISTANTX_SPEEDUP": "1", "ASSISTANTX_SIM_UNAVAILABLE": "wang"}  # runs for minutes

@@ -12,6 +12,9 @@ from pathlib import Path
 
 import pytest
 
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[2]
 CANONICAL = ["dataset/office.yaml", "maps/office.yaml", "maps/office.pgm"]
 CANONICAL += ["maps/office.anchors.yaml", "prompts/decision.md", "prompts/baselines/react.md"]

@@ -2,13 +2,20 @@
 
 from __future__ import annotations
 
+import signal
 import threading
 import time
 from pathlib import Path
 
 import httpx
+import pytest
 
+from helpers.children import descendants
+from helpers.eventually import eventually_sync
 from service.server import OPERATOR, free_port, serve
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 
 def _follow(url: str, lines: list[str], opened: threading.Event) -> None:
@@ -48,3 +55,40 @@ def test_sigterm_with_open_sse_streams_stops_quickly(tmp_path: Path) -> None:
     log = server.log.read_text()
     assert "Application shutdown complete" in log  # the lifespan ran: journal closed
     assert "timeout graceful shutdown exceeded" not in log  # ended, not cancelled
+
+
+def _running(pids: list[int]) -> list[int]:
+    """Those of ``pids`` still running (a zombie has ended)."""
+    alive = []
+    for pid in pids:
+        try:
+            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if state != "Z":
+            alive.append(pid)
+    return alive
+
+
+def test_sigint_stops_the_service_and_its_planning_worker(tmp_path: Path) -> None:
+    server = serve(tmp_path / "data", free_port())  # navigator with AMCL: plans in a worker
+    try:
+        children = [c.pid for c in descendants(server.process.pid)]
+        assert any("spawn_main" in c.command for c in descendants(server.process.pid))
+        server.process.send_signal(signal.SIGINT)
+        code = server.process.wait(10)
+    finally:
+        server.stop()
+    assert code in (0, -2)
+    # Stopped with the robot, before the process ended: nothing is left behind.
+    assert _running(children) == []
+
+
+def test_a_killed_service_leaves_no_planning_worker(tmp_path: Path) -> None:
+    server = serve(tmp_path / "data", free_port())
+    children = [c.pid for c in descendants(server.process.pid)]
+    assert children  # the planning worker (and multiprocessing's resource tracker)
+    server.kill()  # SIGKILL: no shutdown runs in the server
+    # The worker notices its parent is gone and exits; the tracker follows once no process
+    # holds its pipe.
+    eventually_sync(lambda: _running(children) == [], what="the orphans to exit", timeout_s=30)

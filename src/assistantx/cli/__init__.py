@@ -2,7 +2,12 @@
 
 Each sub-command lives in its own module that exposes ``register(subparsers)``; the module
 adds its parser and sets ``func`` (a callable taking the parsed namespace and returning the
-exit code). Listing a module in ``COMMAND_MODULES`` is all it takes to add a command.
+exit code). Listing the command's name and module in ``COMMANDS`` is all it takes to add one.
+
+Commands are lazy: when the command line names a command, only that command's module is
+imported, so ``assistantx office show`` never pays for FastAPI, SciPy or Matplotlib, which
+``serve`` and ``map`` need. The full parser (every module) is built only for ``--help``, for
+a mistyped command, or when no command is given, so those still list every command.
 """
 
 from __future__ import annotations
@@ -13,35 +18,52 @@ import logging
 import sys
 from collections.abc import Sequence
 
-COMMAND_MODULES = [
-    "assistantx.cli.office_cmd",
-    "assistantx.cli.sim_cmd",
-    "assistantx.cli.run_cmd",
-    "assistantx.cli.lock_cmd",
-    "assistantx.cli.map_cmd",
-    "assistantx.cli.llm_cmd",
-    "assistantx.cli.serve_cmd",
-    "assistantx.cli.dataset_cmd",
-    "assistantx.cli.eval_cmd",
-    "assistantx.cli.report_cmd",
-    "assistantx.cli.matrix_cmd",
-]
+# Command name on the command line -> the module that registers it (a module may register
+# several commands, as lock_cmd does). Listed in the order ``--help`` shows them.
+COMMANDS: dict[str, str] = {
+    "office": "assistantx.cli.office_cmd",
+    "sim": "assistantx.cli.sim_cmd",
+    "run": "assistantx.cli.run_cmd",
+    "lock-sim": "assistantx.cli.lock_cmd",
+    "lock-keys": "assistantx.cli.lock_cmd",
+    "map": "assistantx.cli.map_cmd",
+    "llm": "assistantx.cli.llm_cmd",
+    "serve": "assistantx.cli.serve_cmd",
+    "dataset": "assistantx.cli.dataset_cmd",
+    "eval": "assistantx.cli.eval_cmd",
+    "report": "assistantx.cli.report_cmd",
+    "matrix": "assistantx.cli.matrix_cmd",
+}
 
 
-def build_parser() -> argparse.ArgumentParser:
+def _named_command(argv: Sequence[str]) -> str | None:
+    """The command ``argv`` names (its first word that is not an option), if it is known.
+    The top-level parser's only option (``-v``) takes no value, so the first non-option word
+    is the command."""
+    for word in argv:
+        if not word.startswith("-"):
+            return word if word in COMMANDS else None
+    return None
+
+
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The parser for ``argv``: only the named command's module when it names one, else all."""
     parser = argparse.ArgumentParser(
         prog="assistantx", description="AssistantX, a proactive office assistant."
     )
     parser.add_argument("-v", "--verbose", action="count", default=0, help="more logging")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for name in COMMAND_MODULES:
+    named = _named_command(argv) if argv is not None else None
+    modules = [COMMANDS[named]] if named is not None else list(dict.fromkeys(COMMANDS.values()))
+    for name in modules:
         importlib.import_module(name).register(sub)
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    words = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser(words)
+    args = parser.parse_args(words)
     level = logging.WARNING - 10 * min(args.verbose, 2)
     logging.basicConfig(level=level, format="%(asctime)s %(levelname)s %(name)s: %(message)s")
     try:

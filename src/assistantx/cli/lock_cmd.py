@@ -25,7 +25,7 @@ from assistantx.adapters.lock.protocol.keys import KeyringError, LockKeys, load_
 from assistantx.adapters.lock.protocol.link import LinkTimeouts
 from assistantx.core.clock import WallClock
 from assistantx.core.settings import Settings
-from assistantx.service.runtime import LOCK_KEYS_FILE, ensure_data_dir
+from assistantx.service.data_dir import LOCK_KEYS_FILE, ensure_data_dir
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.server import LockServer
 

@@ -19,7 +19,10 @@ WORDS_FILE = Path(__file__).resolve().parents[1] / "data" / "english.yaml"
 
 @functools.cache
 def _raw() -> dict[str, object]:
-    raw = yaml.safe_load(WORDS_FILE.read_text(encoding="utf-8"))
+    # libyaml's loader when present: the pure-Python one spent most of a CLI command's start
+    # on this one file.
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    raw = yaml.load(WORDS_FILE.read_text(encoding="utf-8"), Loader=loader)
     if not isinstance(raw, dict):
         raise TypeError(f"{WORDS_FILE}: expected a mapping of word lists")
     return {str(k): v for k, v in raw.items()}

@@ -45,6 +45,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.special import logsumexp
 
+from assistantx.nav import disk_cache
 from assistantx.nav.geometry import FloatArray, compose, relative, wrap_angle
 from assistantx.nav.lidar import LaserScan
 from assistantx.nav.motion_model import OdometryNoise, motion_model
@@ -120,7 +121,11 @@ class LikelihoodField:
     def __init__(self, grid: OccupancyMap, params: AmclParams) -> None:
         self.grid = grid
         occupied = grid.data >= 65
-        distance = np.asarray(distance_transform_edt(~occupied), dtype=np.float64)
+        distance = disk_cache.cached_array(
+            "occupied-distance",
+            (occupied.shape, occupied.tobytes()),
+            lambda: np.asarray(distance_transform_edt(~occupied), dtype=np.float64),
+        )
         distance = np.minimum(distance * grid.resolution, params.laser_likelihood_max_dist)
         self.distance_m = distance.ravel()
         self.log_p = self._log_likelihood(distance, params).ravel()

@@ -29,7 +29,9 @@ def load_anchors(path: str | Path) -> dict[str, Anchor]:
     """Read an anchors file; raise MapError naming the file and the bad entry."""
     file = Path(path)
     try:
-        doc = yaml.safe_load(file.read_text(encoding="utf-8"))
+        # libyaml's loader when present: the pure-Python one was most of a robot's set-up.
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        doc = yaml.load(file.read_text(encoding="utf-8"), Loader=loader)
     except (OSError, yaml.YAMLError, UnicodeDecodeError) as exc:
         raise MapError(f"{file}: cannot read anchors: {exc}") from exc
     if not isinstance(doc, dict) or not isinstance(doc.get("anchors"), dict):

@@ -18,6 +18,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy.ndimage import distance_transform_edt
 
+from assistantx.nav import disk_cache
 from assistantx.nav.occupancy_map import UNKNOWN, OccupancyMap
 
 FREE_SPACE = 0
@@ -102,7 +103,11 @@ class Costmap:
         unknown = grid.data == UNKNOWN
         # Distance (m) from each cell centre to the nearest lethal cell centre.
         reach_m = max(EXACT_DISTANCE_M, params.inflation_radius)
-        distance = capped_distance(lethal, grid.resolution, reach_m)
+        distance = disk_cache.cached_array(
+            "obstacle-distance",
+            (lethal.shape, lethal.tobytes(), grid.resolution, reach_m),
+            lambda: capped_distance(lethal, grid.resolution, reach_m),
+        )
         costs = inflation_cost(distance, params)
         costs[unknown] = NO_INFORMATION
         return cls(grid, costs, distance, params)

@@ -124,7 +124,9 @@ def load_map(yaml_path: str | Path) -> OccupancyMap:
     """Load a map_server map (YAML + image); raise MapError naming the file and the problem."""
     path = Path(yaml_path)
     try:
-        header = yaml.safe_load(path.read_text(encoding="utf-8"))
+        # libyaml's loader when present: the pure-Python one was most of a robot's set-up.
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        header = yaml.load(path.read_text(encoding="utf-8"), Loader=loader)
     except (OSError, yaml.YAMLError, UnicodeDecodeError) as exc:
         raise MapError(f"{path}: cannot read map header: {exc}") from exc
     if not isinstance(header, dict):

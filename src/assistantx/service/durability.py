@@ -60,6 +60,7 @@ class Durability:
         self.cancelled: set[str] = set()
         self.frozen = False  # set on shutdown: what happens after is not journaled
         self._snapshot_at = assistant.ltm.applied_total  # updates held by the last snapshot
+        self._world_sent: dict[str, dict[str, Any]] | None = None  # the last world journaled
 
     def attach(self) -> None:
         self.assistant.subscribe(self.on_event)
@@ -85,7 +86,7 @@ class Durability:
         match event.kind:
             case "step_started" | "action_result":
                 checkpoint, status = stm, "running"
-                states = self._world_state()
+                states = self._world_if_changed()
                 if event.kind == "step_started" and stm is not None and len(stm.trace.steps) > 1:
                     self.metrics.step_completed(stm.trace.steps[-2])
                 if event.kind == "action_result":
@@ -101,14 +102,19 @@ class Durability:
                     # the two would leave them open after a restart).
                     await self._revoke_codes(stm)
                 checkpoint, status = stm, self._final_status(event.instruction_id, stm)
-                states = self._world_state()
+                states = self._world_if_changed()
                 if stm is not None and stm.trace.steps:
                     self.metrics.step_completed(stm.trace.steps[-1])
             case _:
                 pass
-        seq = await self.journal.arecord(
-            event, stm=checkpoint, status=status, states=states, memory_updates=updates
-        )
+        try:
+            seq = await self.journal.arecord(
+                event, stm=checkpoint, status=status, states=states, memory_updates=updates
+            )
+        except BaseException:
+            if states:  # not written: the next checkpoint writes the world again
+                self._world_sent = None
+            raise
         self.hub.publish(EventRecord(seq=seq, event=event))
         if self.assistant.ltm.applied_total - self._snapshot_at >= SNAPSHOT_EVERY:
             await self.snapshot_memory()
@@ -118,6 +124,18 @@ class Durability:
             await self.assistant.executor.revoke_codes(stm)
         except Exception:  # the lock unreachable: the next start withdraws them (code_recovery)
             logger.exception("could not revoke the codes of %s", stm.instruction_id)
+
+    def _world_if_changed(self) -> dict[str, dict[str, Any]]:
+        """The simulated world for this checkpoint, or nothing when it is the one journaled
+        last: most checkpoints (a step of an instruction waiting for the robot or a reply)
+        change nothing, and encoding and writing the whole world at each of them was a fifth
+        of the loop's time with 200 instructions running. The journal keeps the latest state
+        per name, so an unchanged world is already there, committed in order before this."""
+        world = self._world_state()
+        if world == self._world_sent:
+            return {}
+        self._world_sent = world
+        return world
 
     async def snapshot_memory(self) -> None:
         """Snapshot the graph (bounded: one value per fact, a bounded history)."""

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import asyncio
 import logging
-import os
 from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
@@ -34,6 +33,7 @@ from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMes
 from assistantx.core.ports.robot import RobotBase
 from assistantx.core.settings import Settings
 from assistantx.memory.resolve import Resolver
+from assistantx.nav import disk_cache
 from assistantx.runtime.assistant import (
     Assistant,
     AssistantParts,
@@ -46,6 +46,7 @@ from assistantx.service.auth import AuthSetup, build_authority
 from assistantx.service.code_ledger import CodeLedger
 from assistantx.service.code_recovery import settle_codes
 from assistantx.service.codebook import CodeBook
+from assistantx.service.data_dir import LOCK_KEYS_FILE, ensure_data_dir
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError, TooManyRequestsError
@@ -62,7 +63,7 @@ from assistantx.store.journal import InstructionRecord, Journal
 logger = logging.getLogger(__name__)
 
 JOURNAL_FILE = "journal.sqlite3"
-LOCK_KEYS_FILE = "lock-keys.json"
+MAP_CACHE_DIR = "map-cache"  # arrays derived from the map (nav.disk_cache)
 SIM_CODES_FILE = "sim-codes.json"  # simulated people's QR payloads: credentials, not journaled
 CODEBOOK_FILE = "locker-codes.json"  # every QR payload sent and not expired, for the dashboard
 
@@ -112,6 +113,9 @@ class ServiceRuntime:
             stack.callback(self.data_lock.release)
         self.journal = Journal.open(data_dir / JOURNAL_FILE)
         stack.callback(self.journal.close)
+        # The map's distance transforms, kept by content hash: a second start reads them.
+        disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
+        stack.callback(disk_cache.use_directory, None)
         self.metrics = ServiceMetrics(self.journal)
         self.metrics.watch_loop(self.loop_lag)
         self.auth = build_authority(
@@ -145,8 +149,11 @@ class ServiceRuntime:
         self.messenger.relay_to(self.codebook.note)
         if self.matrix is not None:  # codes sent over Matrix are scannable too
             self.matrix.messenger.relay_to(self.codebook.note)
-        if s.people == "simulated":
+        inbox = (
             colleagues.connect_colleagues(self.sim, self.messenger)
+            if s.people == "simulated"
+            else None
+        )
         code_lifetime_s = s.lock_code_expiry_min * 60
         self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
         self.locker.listen(self.ledger.on_lock_event)
@@ -209,6 +216,8 @@ class ServiceRuntime:
         )
         self.locker.code_states.update(self.ledger.reported())
         await stack.enter_async_context(self.messenger)
+        if inbox is not None:  # stops after the simulator: what they wrote is journaled
+            await stack.enter_async_context(inbox)
         await stack.enter_async_context(self.sim.robot)
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
@@ -389,13 +398,6 @@ class ServiceRuntime:
             return False
         self.durability.cancelled.add(instruction_id)
         return self.assistant.cancel(instruction_id)
-
-
-def ensure_data_dir(path: Path) -> Path:
-    """The data folder, made owner-only (it holds the journal and the lock's keys)."""
-    path.mkdir(parents=True, exist_ok=True)
-    os.chmod(path, 0o700)
-    return path
 
 
 def lock_keys_for(settings: Settings, data_dir: Path) -> LockKeys:

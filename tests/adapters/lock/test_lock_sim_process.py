@@ -22,6 +22,9 @@ from helpers.servers import free_port
 
 from .conftest import FAST, QUICK_RETRY
 
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
 
 @dataclass
 class LockSim:

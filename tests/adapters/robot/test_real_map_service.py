@@ -26,6 +26,9 @@ from helpers.maps import real_map
 from helpers.servers import serving_app
 from service.server import LEE, OPERATOR
 
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
 

@@ -209,13 +209,17 @@ async def test_a_caller_cancelled_while_waiting_leaves_the_store_working(tmp_pat
 
     held = store.submit(hold, now=True)
     assert await asyncio.to_thread(busy.wait, 5)
-    waiting = asyncio.create_task(store.acall(_insert("cancelled caller")))
-    await asyncio.sleep(0.05)  # handed over to the thread, queued behind ``hold``
+    # What ``acall`` does, in steps the test can order: the write joins this loop's batch,
+    # a blocking submit hands that batch to the thread (queued behind ``hold``), and the
+    # caller stops waiting.
+    waiting = asyncio.wrap_future(store.submit(_insert("cancelled caller")))
+    handed_over = store.submit(_texts, now=True)
     waiting.cancel()
     with pytest.raises(asyncio.CancelledError):
         await waiting
     release.set()
     held.result()
+    assert handed_over.result() == ["cancelled caller"]
     after = await asyncio.wait_for(store.acall(_insert("later")), 10)  # a guard, not a timing
     assert after == 2
     assert store.call(_texts) == ["cancelled caller", "later"]

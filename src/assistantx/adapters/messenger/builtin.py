@@ -10,6 +10,7 @@ that way).
 
 from __future__ import annotations
 
+import asyncio
 import logging
 import uuid
 from collections.abc import Awaitable, Callable, Iterable
@@ -88,6 +89,12 @@ class BuiltinMessenger(Messenger):
     async def aaccept(self, message: InboundMessage) -> MessageRecord | None:
         """``accept``, awaited: the event loop runs on while the journal commits."""
         return self._handed_on(message, await self._journal.arecord_inbound(message))
+
+    async def aaccept_many(self, messages: list[InboundMessage]) -> list[MessageRecord | None]:
+        """``aaccept`` for several, in order: journaled together (one commit for the lot,
+        not one round trip each), then handed on in the order given."""
+        records = await asyncio.gather(*(self._journal.arecord_inbound(m) for m in messages))
+        return [self._handed_on(m, r) for m, r in zip(messages, records, strict=True)]
 
     def _handed_on(
         self, message: InboundMessage, record: MessageRecord | None

@@ -189,6 +189,11 @@ class NavigatorRobot(RobotBase):
         if self._navigator.params.plan_in_process:
             await asyncio.to_thread(PLAN_PROCESS.warm, self._navigator.planner)
 
+    async def _stop(self) -> None:
+        """Stop the planning worker with the robot: a stopped service leaves no process."""
+        if self._navigator.params.plan_in_process:
+            await asyncio.to_thread(PLAN_PROCESS.close)
+
     @property
     def grid(self) -> OccupancyMap:
         """The map the robot believes (without obstacles dropped into the world)."""
@@ -212,9 +217,9 @@ class NavigatorRobot(RobotBase):
         nav = self._navigator
         anchor = self.anchors[location_id]
         started_at, odometer_before = nav.base.time_s, nav.base.odometer_m
-        if not self.localize:  # kinematic: cached paths, nothing worth a thread
+        if not self.localize and self._has_path_to(location_id):  # kinematic, path at hand
             path = self._plan(location_id)
-        else:
+        else:  # a search (a whole table of paths from here, the first time): not on the loop
             path = await asyncio.to_thread(self._plan, location_id)
         self._goal, self._path, self._place = location_id, path, None
         logger.info("driving to %s (%.1f m)", location_id, path.length_m)
@@ -332,6 +337,12 @@ class NavigatorRobot(RobotBase):
                     )
                     self._paths[(end, start)] = reverse
         return self._paths[(start, goal)]
+
+    def _has_path_to(self, location_id: str) -> bool:
+        """Whether the kinematic base's path there is in the table already (no search)."""
+        if self._place is None or self._obstacles:
+            return False
+        return (_xy(self.anchors[self._place]), _xy(self.anchors[location_id])) in self._paths
 
     def plan_to(self, location_id: str) -> Path:
         """The path the robot would take from where it is to ``location_id``."""

@@ -1,0 +1,162 @@
+"""``assistantx serve``: CPU-seconds to ready, a second start on the same data folder (the
+map's distance transforms read back from its cache), and the stop after SIGINT.
+
+For each map: a fresh data folder; ``python -m assistantx serve`` started twice on it. Ready
+is the first 200 from ``/readyz``; its cost is the server's own user + system CPU time at
+that moment (from ``/proc/PID/stat``: wall time on a shared machine mostly measures the
+neighbours). Then SIGINT: the seconds until the process exited, and whether any process it
+had started (the planning worker, multiprocessing's resource tracker) was still running.
+The office map is the repository's; "warehouse" is nav2's (maps/nav2, 30 x 50 m at 3 cm,
+the largest there), with anchors for the office's places spread over its free space.
+
+    python bench/serve_start.py [--maps office,warehouse] [--localize | --no-localize]
+
+Last line: one JSON object.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import httpx
+import numpy as np
+
+from assistantx.core.office import load_office
+from assistantx.nav.anchor_check import place_anchors
+from assistantx.nav.anchors import save_anchors
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import load_map
+
+ROOT = Path(__file__).resolve().parents[1]
+MAPS = {"office": ROOT / "maps" / "office.yaml", "warehouse": ROOT / "maps/nav2/warehouse.yaml"}
+TICKS = os.sysconf("SC_CLK_TCK")
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def _cpu_s(pid: int) -> float:
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / TICKS  # utime + stime
+
+
+def _children(pid: int) -> list[int]:
+    found = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            parts = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(parts[1]) == pid:
+            found.append(int(stat.parent.name))
+    return found
+
+
+def _running(pids: list[int]) -> list[int]:
+    alive = []
+    for pid in pids:
+        try:
+            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if state != "Z":
+            alive.append(pid)
+    return alive
+
+
+def _anchors_for(map_yaml: Path, out: Path) -> Path:
+    office = load_office()
+    placed = place_anchors(
+        Costmap.inflate(load_map(map_yaml)), len(office.locations), np.random.default_rng(11)
+    )
+    ids = (loc.id for loc in office.locations)
+    save_anchors(dict(zip(ids, placed.values(), strict=True)), out)
+    return out
+
+
+def start_once(env: dict[str, str], log: Path) -> dict[str, object]:
+    port = _free_port()
+    cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1", "--port", str(port)]
+    began = time.perf_counter()
+    with log.open("ab") as out:
+        process = subprocess.Popen(cmd, env=env, stdout=out, stderr=subprocess.STDOUT)
+    url = f"http://127.0.0.1:{port}/readyz"
+    while True:
+        if process.poll() is not None:
+            raise RuntimeError(f"serve exited with {process.returncode}; see {log}")
+        try:
+            if httpx.get(url, timeout=5).status_code == 200:
+                break
+        except httpx.TransportError:
+            pass
+        time.sleep(0.05)
+    ready_cpu = _cpu_s(process.pid)
+    ready_wall = time.perf_counter() - began
+    children = _children(process.pid)
+    process.send_signal(signal.SIGINT)
+    stopping = time.perf_counter()
+    try:
+        process.wait(60)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait(10)
+    stop_s = time.perf_counter() - stopping
+    time.sleep(0.5)  # an orphan would still be running by now; a worker ending is quicker
+    left = _running(children)
+    for pid in left:  # ours: do not leave them to the machine
+        os.kill(pid, signal.SIGKILL)
+    return {
+        "ready_cpu_s": round(ready_cpu, 2),
+        "ready_wall_s": round(ready_wall, 2),
+        "stop_s": round(stop_s, 2),
+        "children_at_ready": len(children),
+        "children_left": len(left),
+    }
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--maps", default="office,warehouse")
+    parser.add_argument("--localize", action=argparse.BooleanOptionalAction, default=True)
+    args = parser.parse_args()
+    results: dict[str, dict[str, object]] = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in args.maps.split(","):
+            data_dir = Path(tmp) / name / "data"
+            data_dir.mkdir(parents=True)
+            env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
+            env.update(
+                ASSISTANTX_DATA_DIR=str(data_dir),
+                ASSISTANTX_OPERATOR_TOKEN="bench-operator-token-000000001",
+                ASSISTANTX_ROBOT_LOCALIZE=str(args.localize).lower(),
+                ASSISTANTX_MAP=str(MAPS[name]),
+            )
+            if name != "office":
+                anchors = _anchors_for(MAPS[name], Path(tmp) / name / "anchors.yaml")
+                env["ASSISTANTX_MAP_ANCHORS"] = str(anchors)
+            log = Path(tmp) / name / "server.log"
+            first, second = start_once(env, log), start_once(env, log)
+            results[name] = {"first": first, "second": second}
+            print(
+                f"{name}: ready {first['ready_cpu_s']} CPU-s (wall {first['ready_wall_s']} s), "
+                f"second start {second['ready_cpu_s']} CPU-s; stop {first['stop_s']} / "
+                f"{second['stop_s']} s; processes left {first['children_left']} / "
+                f"{second['children_left']}"
+            )
+    print(json.dumps({"maps": results, "load_avg_1min": round(os.getloadavg()[0], 1)}))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,76 @@
+"""Arrays derived from a map, kept on disk by the hash of what they are computed from.
+
+The obstacle distances behind a costmap and AMCL's likelihood field are exact Euclidean
+distance transforms of the whole map: most of a robot's set-up on a big floor. They depend
+only on the map's cells and a few parameters, so they are stored as ``.npy`` files named by
+the SHA-256 of those inputs, and a second start on the same map reads them (an edited map
+or other parameters hash differently and are computed afresh; nothing goes stale).
+
+Off until ``use_directory`` names a folder: the service puts it under its data folder; the
+library, the tests and the benchmarks compute as before unless they ask for it.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import os
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import TypeVar
+
+import numpy as np
+import numpy.typing as npt
+
+logger = logging.getLogger(__name__)
+
+T = TypeVar("T", bound=np.generic)
+
+FORMAT = "1"  # bump when what a kind of array holds changes: older files are then not read
+_directory: Path | None = None
+
+
+def use_directory(directory: Path | None) -> None:
+    """Keep derived arrays in ``directory`` (made if missing); None: keep nothing."""
+    global _directory
+    if directory is not None:
+        directory.mkdir(parents=True, exist_ok=True)
+    _directory = directory
+
+
+def content_key(kind: str, inputs: Iterable[bytes | str | float | int | tuple[int, ...]]) -> str:
+    """The hash naming ``kind`` computed from ``inputs`` (arrays passed as their bytes)."""
+    digest = hashlib.sha256(f"{kind}\0{FORMAT}".encode())
+    for part in inputs:
+        digest.update(b"\0")
+        digest.update(part if isinstance(part, bytes) else repr(part).encode())
+    return digest.hexdigest()[:40]
+
+
+def cached_array(
+    kind: str,
+    inputs: Iterable[bytes | str | float | int | tuple[int, ...]],
+    compute: Callable[[], npt.NDArray[T]],
+) -> npt.NDArray[T]:
+    """``compute()``, or the array stored for the same ``kind`` and ``inputs``."""
+    if _directory is None:
+        return compute()
+    file = _directory / f"{kind}-{content_key(kind, inputs)}.npy"
+    try:
+        found: npt.NDArray[T] = np.load(file, allow_pickle=False)
+    except FileNotFoundError:
+        pass
+    except (OSError, ValueError) as exc:  # a torn or foreign file: computed again, replaced
+        logger.warning("%s: unreadable cached array (%s); computing it again", file, exc)
+    else:
+        return found
+    value = compute()
+    temporary = file.with_name(f".{file.name}.{os.getpid()}.tmp")
+    try:
+        with temporary.open("wb") as out:
+            np.save(out, value, allow_pickle=False)
+        os.replace(temporary, file)  # whole or absent: a reader never sees half a file
+    except OSError as exc:  # a full or read-only disk costs the next start time, no more
+        logger.warning("%s: could not keep the computed array: %s", file, exc)
+        temporary.unlink(missing_ok=True)
+    return value

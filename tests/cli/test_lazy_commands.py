@@ -1,0 +1,68 @@
+"""Each command imports what it uses: a command named on the command line imports its own
+module, not every command's (``office show`` used to load FastAPI, SciPy and Matplotlib
+through ``lock_cmd``). Checked in a fresh interpreter, by what ``sys.modules`` holds."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
+pytestmark = pytest.mark.slow
+
+HEAVY = ("fastapi", "uvicorn", "scipy", "matplotlib")
+
+# Runs the CLI's own entry point in a fresh interpreter, then prints which heavy packages it
+# imported (to stderr, after the command's output, so the two do not mix).
+_PROBE = """
+import json, sys
+from assistantx.cli import main
+try:
+    code = main(sys.argv[1:])
+except SystemExit as exc:
+    code = exc.code
+heavy = sorted(m for m in {heavy!r} if m in sys.modules)
+print(json.dumps({{"code": code, "heavy": heavy}}), file=sys.stderr)
+"""
+
+
+def _heavy_imports(*argv: str) -> tuple[object, list[str], str]:
+    out = subprocess.run(
+        [sys.executable, "-c", _PROBE.format(heavy=HEAVY), *argv],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    report = json.loads(out.stderr.strip().splitlines()[-1])
+    return report["code"], report["heavy"], out.stdout
+
+
+def test_office_show_imports_no_web_or_plotting_library() -> None:
+    code, heavy, stdout = _heavy_imports("office", "show")
+    assert code == 0
+    assert "What the assistant knows at start:" in stdout
+    assert heavy == []
+
+
+@pytest.mark.parametrize("command", ["run", "lock-keys"])
+def test_commands_that_serve_nothing_import_no_web_framework(command: str) -> None:
+    code, heavy, _ = _heavy_imports(command, "--help")
+    assert code == 0
+    assert "fastapi" not in heavy and "uvicorn" not in heavy
+
+
+def test_a_mistyped_command_still_lists_every_command() -> None:
+    out = subprocess.run(
+        [sys.executable, "-m", "assistantx", "ofice", "show"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert out.returncode == 2
+    for command in ("office", "run", "serve", "lock-keys", "report", "matrix"):
+        assert command in out.stderr

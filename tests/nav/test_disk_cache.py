@@ -1,0 +1,71 @@
+"""The map's distance transforms are kept on disk by content hash: the same map reads them
+back, another map or other parameters compute their own, a torn file is computed again."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from assistantx.nav import disk_cache
+from assistantx.nav.amcl import AmclParams, LikelihoodField
+from assistantx.nav.costmap import Costmap, InflationParams
+from assistantx.nav.occupancy_map import OccupancyMap
+
+
+def _room(wall_at: int = 5) -> OccupancyMap:
+    data = np.zeros((40, 60), dtype=np.int8)
+    data[0, :] = data[-1, :] = data[:, 0] = data[:, -1] = 100
+    data[wall_at, 10:50] = 100
+    return OccupancyMap(data, 0.05, 0.0, 0.0, 0.0)
+
+
+@pytest.fixture
+def cache_dir(tmp_path: Path) -> Iterator[Path]:
+    disk_cache.use_directory(tmp_path / "cache")
+    try:
+        yield tmp_path / "cache"
+    finally:
+        disk_cache.use_directory(None)
+
+
+def test_a_second_costmap_on_the_same_map_reads_the_stored_distances(cache_dir: Path) -> None:
+    first = Costmap.inflate(_room())
+    [stored] = list(cache_dir.glob("obstacle-distance-*.npy"))
+    stamp = stored.stat().st_mtime_ns
+    second = Costmap.inflate(_room())
+    assert stored.stat().st_mtime_ns == stamp  # read, not written again
+    assert np.array_equal(second.obstacle_distance_m, first.obstacle_distance_m)
+    assert np.array_equal(second.costs, first.costs)
+
+
+def test_stored_distances_equal_computed_ones(cache_dir: Path) -> None:
+    Costmap.inflate(_room())
+    from_disk = Costmap.inflate(_room())
+    disk_cache.use_directory(None)
+    computed = Costmap.inflate(_room())
+    assert np.array_equal(from_disk.costs, computed.costs)
+    field_disk = (LikelihoodField(_room(), AmclParams()), LikelihoodField(_room(), AmclParams()))
+    assert np.array_equal(field_disk[1].log_p, field_disk[0].log_p)
+
+
+def test_another_map_or_radius_gets_its_own_file(cache_dir: Path) -> None:
+    Costmap.inflate(_room(wall_at=5))
+    Costmap.inflate(_room(wall_at=20))
+    Costmap.inflate(_room(wall_at=5), InflationParams(inflation_radius=2.5))
+    assert len(list(cache_dir.glob("obstacle-distance-*.npy"))) == 3
+
+
+def test_a_torn_file_is_computed_again_and_replaced(cache_dir: Path) -> None:
+    expected = Costmap.inflate(_room()).costs
+    [stored] = list(cache_dir.glob("obstacle-distance-*.npy"))
+    stored.write_bytes(stored.read_bytes()[:100])  # a crash mid-write by another tool
+    assert np.array_equal(Costmap.inflate(_room()).costs, expected)
+    assert np.array_equal(Costmap.inflate(_room()).costs, expected)  # and the file is whole
+
+
+def test_without_a_directory_nothing_is_written(tmp_path: Path) -> None:
+    Costmap.inflate(_room())
+    assert list(tmp_path.iterdir()) == []
