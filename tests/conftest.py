@@ -10,7 +10,6 @@ from collections.abc import Iterator
 import pytest
 
 from fakes.fixtures import scripted_llm  # noqa: F401  (the scripted model server, for every folder)
-
 from helpers.children import descendants
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 

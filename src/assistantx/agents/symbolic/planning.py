@@ -20,7 +20,6 @@ from typing import Literal
 
 from assistantx.agents.symbolic.evidence import Evidence
 from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
-from assistantx.core import language
 from assistantx.core.english import wording
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Purpose
