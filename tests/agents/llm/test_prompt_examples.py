@@ -16,6 +16,7 @@ import pytest
 
 from assistantx.agents import baselines, hybrid
 from assistantx.agents.llm.prompts import DEFAULT_PROMPTS
+from assistantx.core import language
 from assistantx.core.english import words as english_words
 from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
 from assistantx.core.task_schema import SHAPE_KIND
@@ -29,9 +30,16 @@ def _office_names() -> set[str]:
         names |= _names(load_office(path))
     # the task schema's own kinds are words of every office; an id that is an English word
     # ("will", "may") is only a name when written as one ("Will"), which the names check
-    english = english_words("common") | english_words("names_that_are_words")
+    english = english_words("common")
     kinds = set(SHAPE_KIND.values())
-    return {n for n in names if n and n.lower() not in kinds and n not in english}
+    return {
+        n
+        for n in names
+        if n
+        and n.lower() not in kinds
+        and n not in english
+        and not (n.islower() and language.is_english_word(n))
+    }
 
 
 def _names(office: Office) -> set[str]:
