@@ -51,3 +51,6 @@ async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -
     assert not [p for p in payloads if p.encode() in journal_bytes]
     phones = data_dir / "sim-codes.json"  # where the simulated people keep them instead
     assert stat.S_IMODE(phones.stat().st_mode) == 0o600
+    book = data_dir / "locker-codes.json"  # the dashboard's code book, kept across restarts
+    assert stat.S_IMODE(book.stat().st_mode) == 0o600
+    assert sorted(json.loads(book.read_text())) == sorted(payloads)

@@ -116,10 +116,9 @@ async def return_items(
 
 
 def _why(stm: ShortTermMemory) -> str:
-    summary = (stm.trace.summary or "").lower()
-    if "cancel" in summary:
+    if stm.trace.cancelled:
         return "was cancelled"
-    if "out of time" in summary:
+    if "out of time" in (stm.trace.summary or ""):  # the loop's words for a deadline
         return "ran out of time"
     return "could not be completed"
 
