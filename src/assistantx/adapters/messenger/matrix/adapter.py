@@ -261,14 +261,22 @@ class MatrixMessenger(Messenger):
 
     async def _seen_by_bot(self, room_id: str, message: InboundMessage) -> None:
         """What a person sees at once: their message read, and in a DM the bot typing until
-        it answers (or for ``TYPING_MS``)."""
+        it answers (or for ``TYPING_MS``). Sent by a task of the messenger's own, so the push
+        is acknowledged without waiting for it, and ``stop`` ends it before the HTTP client
+        closes."""
         if self.closing or not self.started:
             return
+        self.create_task(self._signal_seen(room_id, message), name=f"seen:{message.event_id}")
+
+    async def _signal_seen(self, room_id: str, message: InboundMessage) -> None:
         client = self._sender()
-        await client.read_receipt(room_id, message.event_id)
-        if message.chat.kind == "dm" and message.text.strip():
-            await client.typing(self._sender_id(), room_id, typing=True, timeout_ms=TYPING_MS)
-            self._typing.add(room_id)
+        try:
+            await client.read_receipt(room_id, message.event_id)
+            if message.chat.kind == "dm" and message.text.strip():
+                self._typing.add(room_id)
+                await client.typing(self._sender_id(), room_id, typing=True, timeout_ms=TYPING_MS)
+        except MatrixError as exc:
+            logger.info("could not show %s as read: %s", message.event_id, exc)
 
     async def _stop_typing(self, client: MatrixClient, room_id: str) -> None:
         if room_id not in self._typing:

@@ -159,6 +159,15 @@ class MatrixClient:
             raise MatrixError(f"{method} {path}: answer is not a JSON object")
         return body
 
+    async def _found(self, method: str, path: str) -> JSON | None:
+        """``_json``, or None where the homeserver answers ``M_NOT_FOUND``."""
+        try:
+            return await self._json(method, path)
+        except MatrixError as exc:
+            if exc.errcode == "M_NOT_FOUND":
+                return None
+            raise
+
     # -- the API ------------------------------------------------------------------------
 
     async def whoami(self) -> str:
@@ -210,12 +219,9 @@ class MatrixClient:
             f"/_matrix/client/v3/rooms/{_path_part(room_id)}/state/m.room.member/"
             f"{_path_part(user_id)}"
         )
-        try:
-            body = await self._json("GET", path)
-        except MatrixError as exc:
-            if exc.errcode == "M_NOT_FOUND":
-                return None
-            raise
+        body = await self._found("GET", path)
+        if body is None:
+            return None
         value = body.get("membership")
         return value if isinstance(value, str) else None
 
@@ -252,12 +258,7 @@ class MatrixClient:
 
     async def get_account_data(self, user_id: str, data_type: str) -> JSON | None:
         path = f"/_matrix/client/v3/user/{_path_part(user_id)}/account_data/{_path_part(data_type)}"
-        try:
-            return await self._json("GET", path)
-        except MatrixError as exc:
-            if exc.errcode == "M_NOT_FOUND":
-                return None
-            raise
+        return await self._found("GET", path)
 
     async def set_account_data(self, user_id: str, data_type: str, content: JSON) -> None:
         path = f"/_matrix/client/v3/user/{_path_part(user_id)}/account_data/{_path_part(data_type)}"
@@ -278,12 +279,7 @@ class MatrixClient:
             f"/_matrix/client/v3/rooms/{_path_part(room_id)}/state/{_path_part(event_type)}/"
             f"{_path_part(state_key)}"
         )
-        try:
-            return await self._json("GET", path)
-        except MatrixError as exc:
-            if exc.errcode == "M_NOT_FOUND":
-                return None
-            raise
+        return await self._found("GET", path)
 
     async def read_receipt(self, room_id: str, event_id: str) -> None:
         """Mark ``event_id`` (and everything before it) read."""
