@@ -7,9 +7,13 @@ reach the trace through the reasoners' accounting (``failed_call`` / ``agent_cal
 
 from __future__ import annotations
 
+import asyncio
 import json
+from collections.abc import AsyncIterator
 
 import pytest
+from fastapi import FastAPI
+from fastapi.responses import StreamingResponse
 from pydantic import BaseModel
 
 from assistantx.adapters.model import ChatRequest, Message, OpenAICompatibleModel, RetryPolicy
@@ -18,7 +22,7 @@ from assistantx.agents.llm import agent_call, failed_call
 from assistantx.core.ports.model import LLMCallFailed
 from assistantx.core.structured import structured_call
 from fakes.scripted_llm import Reply, ScriptedLLM, json_reply
-from helpers.servers import free_port
+from helpers.servers import free_port, serve_asgi
 
 PROMPT = "Which of the two is closer to the printer?"
 
@@ -124,3 +128,28 @@ async def test_repairs_and_server_retries_all_count(scripted_llm: ScriptedLLM) -
         result = await structured_call(model, ask(), Answer, max_retries=2)
     call = agent_call("planning", result.attempts)
     assert call.attempts == 3 == len(scripted_llm.requests)
+
+
+async def test_a_streamed_answer_cut_off_midway_is_one_request() -> None:
+    release = asyncio.Event()
+    app = FastAPI()
+
+    @app.post("/v1/chat/completions")
+    async def stalls() -> StreamingResponse:
+        async def body() -> AsyncIterator[str]:
+            yield 'data: {"choices": [{"index": 0, "delta": {"content": "{\\"answer"}}]}\n\n'
+            await release.wait()  # the rest never comes while the client waits
+
+        return StreamingResponse(body(), media_type="text/event-stream")
+
+    async with serve_asgi(app) as url:
+        async with OpenAICompatibleModel(
+            f"{url}/v1", "m", stream=True, call_budget_s=0.5, retry=quick(2)
+        ) as model:
+            with pytest.raises(LLMCallFailed) as caught:
+                await model.complete(ask())
+        release.set()
+    failed = caught.value
+    assert (failed.kind, failed.retries) == ("timed_out", 0)  # one request, not two
+    assert failed.usage.prompt_tokens == estimated_prompt()
+    assert failed.usage.completion_tokens == estimate_tokens('{"answer')

@@ -5,8 +5,10 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.llm.grounding import RequestWords, fold, singular, ungrounded
-from assistantx.core.office import Office, load_office
+from assistantx.agents.symbolic.frames import InstructionParser
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
 from assistantx.core.task_schema import TaskKind
+from assistantx.evaluation.dataset.tasks import load_tasks
 
 
 @pytest.fixture(scope="module")
@@ -72,3 +74,24 @@ def test_folding_and_plurals() -> None:
         "glass",
         "bus",
     ]
+
+
+@pytest.mark.parametrize("office_file", [None, "offices/harbour/office.yaml"])
+def test_every_reading_the_embedded_reader_makes_of_the_dataset_is_grounded(
+    office_file: str | None,
+) -> None:
+    """The check never refuses a right reading: the embedded reader's readings of both
+    offices' 210 instructions (each item, person and service found in the words)."""
+    path = None if office_file is None else DEFAULT_OFFICE.parent / office_file
+    office = load_office(path)
+    parser = InstructionParser(office)
+    tasks = load_tasks((path or DEFAULT_OFFICE).parent / "tasks.jsonl", office)
+    refused = []
+    for task in tasks:
+        words = RequestWords(office, [task.instruction])
+        for read in parser.parse(task.instruction, task.requester).tasks:
+            parties = (read.owner, read.recipient, read.actor)
+            missing = ungrounded(words, task.requester, read.kind, read.item, parties)
+            if missing is not None:
+                refused.append((task.instruction, missing))
+    assert len(tasks) == 210 and refused == []

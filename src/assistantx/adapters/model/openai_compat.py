@@ -269,7 +269,7 @@ class OpenAICompatibleModel(ChatModel):
         except httpx.UnsupportedProtocol as exc:
             raise LLMError(f"{self.endpoint}: {exc}") from exc
         except TimeoutError as exc:  # the call's budget, mid-request
-            tries.append(Try("timed_out", error="call budget"))
+            _cut_off(tries, Try("timed_out", error="call budget"))
             raise self._failed(
                 f"the call took longer than its {self.call_budget_s:g} s budget",
                 "my language model server took too long to answer",
@@ -279,7 +279,7 @@ class OpenAICompatibleModel(ChatModel):
             ) from exc
         except httpx.TimeoutException as exc:
             if not tries or tries[-1].outcome != "timed_out":  # timed out reading the body
-                tries.append(Try("timed_out", error=type(exc).__name__))
+                _cut_off(tries, Try("timed_out", error=type(exc).__name__))
             raise self._failed(
                 f"no answer within {self.timeout_s:g} s ({type(exc).__name__})",
                 "my language model server took too long to answer",
@@ -289,7 +289,7 @@ class OpenAICompatibleModel(ChatModel):
             ) from exc
         except httpx.TransportError as exc:
             if not tries or tries[-1].outcome == "answered":  # broke off reading the body
-                tries.append(Try("failed", error=type(exc).__name__))
+                _cut_off(tries, Try("failed", error=type(exc).__name__))
             refused = tries[-1].outcome == "refused"
             raise self._failed(
                 f"connection failed ({type(exc).__name__}: {exc})",
@@ -421,6 +421,16 @@ class OpenAICompatibleModel(ChatModel):
             retries,
         )
         return response
+
+
+def _cut_off(tries: list[Try], outcome: Try) -> None:
+    """Record how the request in flight ended: a streamed answer whose headers came (a try
+    already recorded as answered) and whose body never finished is the same request, not
+    another one; a request cut off before any answer is a try of its own."""
+    if tries and tries[-1].outcome == "answered" and (tries[-1].status or 0) < 300:
+        tries[-1] = outcome
+    else:
+        tries.append(outcome)
 
 
 def _refused_format(request: httpx.Request, response: httpx.Response) -> bool:
