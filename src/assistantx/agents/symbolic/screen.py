@@ -442,6 +442,10 @@ class RequestScreen:
                 whose = "my"
             elif before is not None and before.kind == "person" and before.possessive:
                 whose = f"{self.office.person(before.ids[0]).name}'s"
+            elif before is not None and before.kind == "pronoun" and before.possessive:
+                people = {p.ids for p in mentions[:n] if p.kind == "person" and len(p.ids) == 1}
+                if len(people) == 1:  # "Yang said I could borrow his book"
+                    whose = f"{self.office.person(next(iter(people))[0]).name}'s"
             else:
                 for k in range(len(words) - 1):
                     if words[k : k + 2] == ["belongs", "to"]:
