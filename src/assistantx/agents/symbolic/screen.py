@@ -9,6 +9,8 @@ rule            matches                                                         
 ==============  ==================================================================  ==========
 withdrawn       "never mind", "forget it", "forget about the scissors"              drops all
                                                                                     said before
+exclusion       "not from Wang though", "not Chen's"                                a hint that
+                                                                                    keeps them out
 wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
 thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
 negated         "don't bring me ...", "no need to print ..."                        drops piece
