@@ -264,3 +264,20 @@ def test_a_question_about_ones_own_item_fetches_nothing(office: str, who: str, t
 def test_more_withdrawals_wishes_and_thanks_move_nothing(office: str, who: str, text: str) -> None:
     frame = parser(office).parse(text, who)
     assert frame.tasks == [] and frame.decline_outcome == "done", frame
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("default", "lee", "I wonder if anyone has a stapler"),
+        ("harbour", "may", "do you happen to know who has a calculator?"),
+    ],
+)
+def test_an_embedded_question_is_answered_then_offered(office: str, who: str, text: str) -> None:
+    frame = parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.question and "Shall I" in frame.question
+
+
+def test_a_possessive_pronoun_in_a_statement_keeps_the_owner() -> None:
+    text = "Yang said I could borrow his book, can you fetch it?"
+    assert tasks_of("default", text, "lee") == [("transfer", "book", "yang", "lee")]

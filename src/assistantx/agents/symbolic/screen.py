@@ -9,6 +9,8 @@ rule            matches                                                         
 ==============  ==================================================================  ==========
 withdrawn       "never mind", "forget it", "forget about the scissors"              drops all
                                                                                     said before
+exclusion       "not from Wang though", "not Chen's"                                a hint that
+                                                                                    keeps them out
 wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
 thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
 negated         "don't bring me ...", "no need to print ..."                        drops piece
@@ -442,6 +444,10 @@ class RequestScreen:
                 whose = "my"
             elif before is not None and before.kind == "person" and before.possessive:
                 whose = f"{self.office.person(before.ids[0]).name}'s"
+            elif before is not None and before.kind == "pronoun" and before.possessive:
+                people = {p.ids for p in mentions[:n] if p.kind == "person" and len(p.ids) == 1}
+                if len(people) == 1:  # "Yang said I could borrow his book"
+                    whose = f"{self.office.person(next(iter(people))[0]).name}'s"
             else:
                 for k in range(len(words) - 1):
                     if words[k : k + 2] == ["belongs", "to"]:

@@ -58,6 +58,7 @@ _BORROW = english.words("borrow_words")
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
 _SELF_PLANS = frozenset({"ill"})
+_EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
 _NEGATIONS = english.words("statement_negations")
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
@@ -131,6 +132,15 @@ class SpeechActs:
         w = _content(words)
         if not w:
             return None
+        for lead in _EMBEDDED_QUESTIONS:  # "I wonder if anyone has ...", "any idea who ..."
+            if _starts(w, lead) and len(w) > len(lead):
+                rest = w[len(lead) :]
+                if rest[0] in ("if", "whether"):
+                    inner = rest[1:]
+                    if inner[1:2] and inner[0] in _ASKEES and inner[1] in _MODALS:
+                        return "polite"  # "I was wondering if you could print ..."
+                    rest = ["is", *inner]  # "if anyone has ...": a yes/no question
+                return self.question(rest, asks=True) or "info"
         first, second = w[0], (w[1] if len(w) > 1 else "")
         if first in _WH:
             if second == "about":  # "how about a coffee?"
