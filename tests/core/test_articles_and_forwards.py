@@ -37,7 +37,8 @@ def test_a_group_is_asked_for_a_pair_of_scissors() -> None:
 
 async def test_a_file_forwarded_from_its_owner_names_them_once() -> None:
     office = load_office()
-    async with SimSession(office, requester="lee") as s:
+    text = "get Mao's report and send it to Zhang"  # Zhang is named: a party to the file
+    async with SimSession(office, requester="lee", text=text) as s:
         s.stm.files_received["mao"] = ["file:mao"]
         r = await s.do(ForwardFile(source="mao", target="zhang", file="file:mao"))
         assert r.ok, r.observation

@@ -35,7 +35,7 @@ from assistantx.runtime.loop import LoopLimits
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM
-from helpers.llm_office import llm_settings
+from helpers.llm_office import llm_model, llm_settings
 from helpers.scripted_reasoner import ScriptedReasoner
 
 # (holder, person) as a model or a person might write them; each must mean (locker, zhang).
@@ -145,7 +145,7 @@ async def test_the_llm_reflection_grounds_updates_the_same_way(
 ) -> None:
     said = [u.model_dump(mode="json") for u in updates(holder, person)]
     scripted_llm.script("reflection", {"verdict": "Y", "reason": "done", "updates": said})
-    reasoner = build_factory(office, llm_settings(scripted_llm))()
+    reasoner = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))()
     plan = Plan(goal="g", subgoals=[SubGoal(description="s")])
     decision = Decision(actions=[Wait(reason="reply")])
     ctx = context(office)

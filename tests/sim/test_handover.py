@@ -149,16 +149,19 @@ def _complaints(s: SimSession, person: str) -> list[str]:
 
 
 async def test_a_person_who_cannot_hand_over_says_so_once(office: Office) -> None:
-    """Zhang is sent a deposit code for Wang's stapler, which she does not have: she comes,
-    says so, and does not walk to the robot to say it again each time it comes back."""
+    """Zhang agrees to lend her stapler, but it is gone from her desk by the time the robot
+    comes (Wang took it): she comes, says so, and does not walk to the robot to say it again
+    each time it comes back."""
     async with SimSession(office, requester="lee") as s:
-        await s.do(Inform(contact="zhang", content="Please put Wang's stapler in the locker."))
+        await s.do(Inquire(contact="zhang", question="Could you lend Lee your stapler?"))
+        assert (await s.do(Wait(timeout_s=60))).ok
+        s.sim.world.holder["stapler:zhang"] = "wang"
         await s.do(Move(place="zhang"))
-        await s.do(SendQR(contact="zhang", item="stapler:wang", purpose="deposit"))
+        assert (await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))).ok
         r = await s.do(WaitInPlace(person="zhang", timeout_s=120))
         assert not r.ok
         assert _complaints(s, "zhang") == [
-            "I came to the robot, but: I don't have Wang Fang's stapler."
+            "I came to the robot, but: I don't have my stapler."
         ]
         for _ in range(3):
             await s.do(Move(place="lee"))
@@ -170,8 +173,9 @@ async def test_a_person_who_cannot_hand_over_says_so_once(office: Office) -> Non
 
 async def test_a_new_code_replaces_the_one_a_person_held(office: Office) -> None:
     async with SimSession(office, requester="lee") as s:
-        await s.do(Inform(contact="zhang", content="Please lend Lee your stapler."))
-        await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))
+        await s.do(Inquire(contact="zhang", question="Could you lend Lee your stapler?"))
+        assert (await s.do(Wait(timeout_s=60))).ok
+        assert (await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))).ok
         await s.executor.revoke_codes(s.stm, person="zhang")
         await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))
         held = [c for c in s.sim.codes if c.person == "zhang"]

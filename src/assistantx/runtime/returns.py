@@ -65,23 +65,33 @@ async def return_items(
     if not aboard:
         return
     errand_id = f"{ended.instruction_id}.return"
-    stm = ShortTermMemory(
-        instruction_id=errand_id,
-        requester=ended.requester,
-        text=f"give back what {ended.instruction_id} left in the locker",
-        trace=Trace(
+
+    def errand_for(owner: str, item: str) -> ShortTermMemory:
+        # The errand acts for the owner: they are given back their own item, which needs no
+        # one's consent (runtime/consent.py lets a code go to the requester), and nobody else
+        # can be handed anything by it.
+        stm = ShortTermMemory(
             instruction_id=errand_id,
-            requester=ended.requester,
-            text="return items",
-            reasoner="return",
-            started_at=executor.ctx.clock.now(),
-        ),
-    )
-    stm.embodied.locker_contents = [item for item, _ in aboard]
+            requester=owner,
+            text=f"give back what {ended.instruction_id} left in the locker",
+            trace=Trace(
+                instruction_id=errand_id,
+                requester=owner,
+                text="return items",
+                reasoner="return",
+                started_at=executor.ctx.clock.now(),
+            ),
+        )
+        stm.embodied.locker_contents = [item]
+        return stm
+
+    errands: list[ShortTermMemory] = []
     why = _why(ended)
     await lease.acquire(errand_id)
     try:
         for n, (item, owner) in enumerate(aboard):
+            stm = errand_for(owner, item)
+            errands.append(stm)
             thing = item_phrase(office, item, you=owner)
             requester = person_name(office, ended.requester, you=owner)
             steps: list[Action] = [
@@ -110,7 +120,8 @@ async def return_items(
                     )
                     break
     finally:
-        await executor.revoke_codes(stm)
+        for stm in errands:
+            await executor.revoke_codes(stm)
         executor.forget(errand_id)
         lease.release(errand_id)
 
