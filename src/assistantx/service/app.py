@@ -104,7 +104,7 @@ def create_app(
         dashboard,
     ):
         app.include_router(module.router)
-    app.include_router(reports.router)  # also starts surveys (router lifespan)
+    app.include_router(reports.router)
     if runtime.matrix is not None:
         app.include_router(runtime.matrix.push_router)  # the homeserver's pushes
 

@@ -1,10 +1,7 @@
 """/v1/reports/usage and /v1/surveys: the usage report and the surveys behind it.
 
-Mounting this router (``app.include_router(reports.router)``) also starts the feedback part
-through the router's lifespan, which runs once the app's own lifespan has built the runtime:
-the Surveyor is attached to the Assistant (surveys after each instruction, replies taken
-before a direct message becomes an instruction, reminders every minute) and the feedback
-tables are opened in the journal's SQLite file.
+The feedback part they read (the survey store and the Surveyor) is built by the runtime's
+start, like every other component (``service/feedback_wiring.py``).
 
 Endpoints (a person sees their own figures; the operator everyone's, or one person's with
 ``?person=``):
@@ -22,16 +19,12 @@ from __future__ import annotations
 
 import asyncio
 import logging
-from collections.abc import AsyncIterator
-from contextlib import asynccontextmanager
 from typing import Annotated, Any
 
-from fastapi import APIRouter, FastAPI, Query, Request
+from fastapi import APIRouter, Query, Request
 from fastapi.responses import PlainTextResponse, Response
 from pydantic import BaseModel
 
-from assistantx.adapters.robot.navigator import NavigatorRobot
-from assistantx.core.errors import AssistantXError
 from assistantx.feedback.report import (
     CHARTS,
     ChartName,
@@ -41,68 +34,15 @@ from assistantx.feedback.report import (
     render_chart,
     render_markdown,
 )
-from assistantx.feedback.store import FeedbackStore
 from assistantx.feedback.survey import Survey
-from assistantx.feedback.surveyor import Surveyor
-from assistantx.feedback.walking import DistanceFn, over_map
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import NotFoundError, UnprocessableError
-from assistantx.service.runtime import JOURNAL_FILE, ServiceRuntime
+from assistantx.service.runtime import ServiceRuntime
 
 logger = logging.getLogger(__name__)
 
-FEEDBACK_STATE = "feedback"  # app.state attribute holding the FeedbackParts
-
-
-class FeedbackParts:
-    def __init__(self, store: FeedbackStore, surveyor: Surveyor) -> None:
-        self.store = store
-        self.surveyor = surveyor
-
-
-def map_distance(runtime: ServiceRuntime) -> DistanceFn | None:
-    """Walks over the office map's planner; straight lines when the map cannot be loaded."""
-    try:
-        robot = NavigatorRobot.from_files(
-            runtime.office,
-            runtime.clock,
-            map_yaml=runtime.map_yaml,
-            anchors_yaml=runtime.settings.map_anchors,
-            localize=False,
-        )
-    except (AssistantXError, OSError) as exc:
-        logger.warning("walking saved in straight lines: the office map is unusable (%s)", exc)
-        return None
-    return over_map(robot)
-
-
-@asynccontextmanager
-async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-    runtime: ServiceRuntime = app.state.runtime
-    store = FeedbackStore.open(runtime.settings.data_dir / JOURNAL_FILE)
-    distance = await asyncio.to_thread(map_distance, runtime)
-    # Surveys go where the assistant talks to people (Matrix when configured).
-    messenger = runtime.assistant.parts.messenger
-    surveyor = Surveyor(runtime.office, store, messenger, runtime.clock, distance=distance)
-    surveyor.attach(runtime.assistant)
-    await surveyor.start()
-    setattr(app.state, FEEDBACK_STATE, FeedbackParts(store, surveyor))
-    try:
-        yield
-    finally:
-        await surveyor.stop()
-        store.close()
-
-
-router = APIRouter(tags=["reports"], lifespan=lifespan)
-
-
-def _feedback(request: Request) -> FeedbackParts:
-    parts: FeedbackParts | None = getattr(request.app.state, FEEDBACK_STATE, None)
-    if parts is None:
-        raise NotFoundError("reports are not enabled on this server")
-    return parts
+router = APIRouter(tags=["reports"])
 
 
 def _period(
@@ -141,7 +81,7 @@ async def _report(
     person: str | None,
 ) -> UsageReport:
     lo, hi, requester = _period(runtime, caller, start, end, person)
-    store = _feedback(request).store
+    store = runtime.feedback.store
     names = {p.id: p.name for p in runtime.office.people}
     return await asyncio.to_thread(
         load_report, store, lo, hi, runtime.clock.now(), requester=requester, names=names
@@ -205,7 +145,7 @@ class SurveyOut(BaseModel):
 async def survey(
     request: Request, instruction_id: str, runtime: Runtime, caller: Caller
 ) -> SurveyOut:
-    store = _feedback(request).store
+    store = runtime.feedback.store
     found = store.survey(instruction_id)
     if found is None or not caller.may_act_as(found.person):
         # Someone else's survey is answered like a missing one: ids cannot be probed.

@@ -50,6 +50,7 @@ from assistantx.service.data_dir import LOCK_KEYS_FILE, ensure_data_dir
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
 from assistantx.service.errors import NotFoundError, TooManyRequestsError
+from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.rate_limit import InstructionRate, refusal_text
@@ -242,6 +243,14 @@ class ServiceRuntime:
         self.retention = Retention(self.journal, s.journal_retention_days)
         self.retention.start()
         stack.push_async_callback(self.retention.stop)
+        # Before anything resumes: a resumed instruction is surveyed like a new one.
+        self.feedback = await start_feedback(
+            stack,
+            assistant=self.assistant,
+            journal_file=data_dir / JOURNAL_FILE,
+            map_yaml=self.map_yaml,
+            anchors_yaml=s.map_anchors,
+        )
         await self._resume()
         self.admission.start()
         self.ready = True
