@@ -79,7 +79,7 @@ def test_sigint_stops_the_service_and_its_planning_worker(tmp_path: Path) -> Non
         code = server.process.wait(10)
     finally:
         server.stop()
-    assert code in (0, -2)
+    assert code in (0, 130, -2)  # uvicorn re-raises the SIGINT it handled; the CLI says 130
     # Stopped with the robot, before the process ended: nothing is left behind.
     assert _running(children) == []
 
