@@ -79,9 +79,9 @@ def test_sigint_stops_the_service_and_its_planning_worker(tmp_path: Path) -> Non
         code = server.process.wait(10)
     finally:
         server.stop()
-    assert code in (0, -2)
-    # Stopped with the robot, before the process ended: nothing is left behind.
-    assert _running(children) == []
+    assert code in (0, 130, -2)  # uvicorn re-raises the SIGINT it handled; the CLI says 130
+    # The worker is stopped with the robot; the resource tracker ends once its pipe closes.
+    eventually_sync(lambda: _running(children) == [], what="its processes to end", timeout_s=10)
 
 
 def test_a_killed_service_leaves_no_planning_worker(tmp_path: Path) -> None:

@@ -217,9 +217,9 @@ class NavigatorRobot(RobotBase):
         nav = self._navigator
         anchor = self.anchors[location_id]
         started_at, odometer_before = nav.base.time_s, nav.base.odometer_m
-        if not self.localize and self._has_path_to(location_id):  # kinematic, path at hand
+        if not self.localize:  # kinematic: cached paths, nothing worth a thread
             path = self._plan(location_id)
-        else:  # a search (a whole table of paths from here, the first time): not on the loop
+        else:
             path = await asyncio.to_thread(self._plan, location_id)
         self._goal, self._path, self._place = location_id, path, None
         logger.info("driving to %s (%.1f m)", location_id, path.length_m)
@@ -337,12 +337,6 @@ class NavigatorRobot(RobotBase):
                     )
                     self._paths[(end, start)] = reverse
         return self._paths[(start, goal)]
-
-    def _has_path_to(self, location_id: str) -> bool:
-        """Whether the kinematic base's path there is in the table already (no search)."""
-        if self._place is None or self._obstacles:
-            return False
-        return (_xy(self.anchors[self._place]), _xy(self.anchors[location_id])) in self._paths
 
     def plan_to(self, location_id: str) -> Path:
         """The path the robot would take from where it is to ``location_id``."""
