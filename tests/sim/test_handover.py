@@ -160,9 +160,7 @@ async def test_a_person_who_cannot_hand_over_says_so_once(office: Office) -> Non
         assert (await s.do(SendQR(contact="zhang", item="stapler:zhang", purpose="deposit"))).ok
         r = await s.do(WaitInPlace(person="zhang", timeout_s=120))
         assert not r.ok
-        assert _complaints(s, "zhang") == [
-            "I came to the robot, but: I don't have my stapler."
-        ]
+        assert _complaints(s, "zhang") == ["I came to the robot, but: I don't have my stapler."]
         for _ in range(3):
             await s.do(Move(place="lee"))
             await s.do(Move(place="zhang"))

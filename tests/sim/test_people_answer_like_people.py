@@ -155,3 +155,28 @@ def test_a_keeper_is_asked_about_someone_elses_kept_item(office: Office) -> None
     assert reply.text == "Yes, I can take Zhang Wei's lunch out for the robot."
     owner = direct_reply(world, "zhang", "Hi Zhang, could you let Lee have your lunch?")
     assert owner is not None and owner.text == "Yes, you can have my lunch."
+
+
+def test_asked_to_receive_a_delivery_they_say_whether_they_are_there() -> None:
+    """In an office whose item is called a "delivery" (a parcel), the robot's question "could
+    you be at your desk to receive a delivery?" is about being there, not about lending one."""
+    parcels = parse_office(
+        {
+            "name": "parcels",
+            "locations": [
+                {"id": "desk_a", "kind": "workstation", "name": "a", "x": 0, "y": 0},
+                {"id": "desk_b", "kind": "workstation", "name": "b", "x": 1, "y": 0},
+            ],
+            "item_types": [{"id": "parcel", "name": "parcel", "synonyms": ["delivery"]}],
+            "people": [
+                {"id": "ann", "name": "Ann Lee", "location": "desk_a", "handle": "@ann"},
+                {"id": "bo", "name": "Bo Kim", "location": "desk_b", "handle": "@bo"},
+            ],
+            "facilities": [],
+            "groups": [{"id": "all", "name": "All", "members": ["ann", "bo"]}],
+            "robot": {"home": "desk_a"},
+        }
+    )
+    ask = "Hi Bo, could you be at your desk soon to receive a delivery from Ann Lee?"
+    reply = direct_reply(World.from_office(parcels), "bo", ask)
+    assert reply is not None and reply.text.startswith("Yes, I'm here")

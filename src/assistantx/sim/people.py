@@ -16,6 +16,7 @@ from assistantx.core.ports.lock import WORK_PURPOSES
 from assistantx.core.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
+    asks_to_receive,
     is_question,
     mentioned_item_types,
     mentioned_requests,
@@ -77,6 +78,8 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     """What ``person`` answers to a direct message (None: no answer)."""
     if not world.available(person):
         return None
+    if asks_to_receive(text):  # "could you be at your desk to receive a delivery from Lee?"
+        return Reply(person, "Yes, I'm here. I'll be at my desk.")
     electronic = {t.id for t in world.office.item_types if t.kind == "electronic"}
     named = mentioned_item_types(world.office, text)
     types = [t for t in named if t not in electronic]

@@ -132,3 +132,11 @@ def possessor(office: Office, text: str, *, reader: str) -> str | None:
 def is_question(text: str) -> bool:
     t = normalize(text)
     return "?" in text or t.startswith(("can ", "could ", "would ", "do ", "does ", "are ", "is "))
+
+
+def asks_to_receive(text: str) -> bool:
+    """Whether a message asks its reader to be there to receive something: a person answers
+    that about themselves (whether they will be at their desk), whatever thing is named; an
+    office whose item is called "delivery" or "parcel" must not turn it into a loan."""
+    words = _words(text)
+    return any(f" {form} " in words for form in word_forms("receive"))
