@@ -47,3 +47,16 @@ def descendants(pid: int) -> list[Child]:
         found.append(Child(child, _command(child)))
         todo += parents.get(child, [])
     return found
+
+
+def still_running(pids: list[int]) -> list[int]:
+    """Those of ``pids`` still running (a zombie has ended)."""
+    alive = []
+    for pid in pids:
+        try:
+            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if state != "Z":
+            alive.append(pid)
+    return alive

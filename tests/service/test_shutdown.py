@@ -10,7 +10,7 @@ from pathlib import Path
 import httpx
 import pytest
 
-from helpers.children import descendants
+from helpers.children import descendants, still_running
 from helpers.eventually import eventually_sync
 from service.server import OPERATOR, free_port, serve
 
@@ -57,19 +57,6 @@ def test_sigterm_with_open_sse_streams_stops_quickly(tmp_path: Path) -> None:
     assert "timeout graceful shutdown exceeded" not in log  # ended, not cancelled
 
 
-def _running(pids: list[int]) -> list[int]:
-    """Those of ``pids`` still running (a zombie has ended)."""
-    alive = []
-    for pid in pids:
-        try:
-            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-        except OSError:
-            continue
-        if state != "Z":
-            alive.append(pid)
-    return alive
-
-
 def test_sigint_stops_the_service_and_its_planning_worker(tmp_path: Path) -> None:
     server = serve(tmp_path / "data", free_port())  # navigator with AMCL: plans in a worker
     try:
@@ -81,7 +68,9 @@ def test_sigint_stops_the_service_and_its_planning_worker(tmp_path: Path) -> Non
         server.stop()
     assert code in (0, 130, -2)  # uvicorn re-raises the SIGINT it handled; the CLI says 130
     # The worker is stopped with the robot; the resource tracker ends once its pipe closes.
-    eventually_sync(lambda: _running(children) == [], what="its processes to end", timeout_s=10)
+    eventually_sync(
+        lambda: still_running(children) == [], what="its processes to end", timeout_s=10
+    )
 
 
 def test_a_killed_service_leaves_no_planning_worker(tmp_path: Path) -> None:
@@ -91,4 +80,4 @@ def test_a_killed_service_leaves_no_planning_worker(tmp_path: Path) -> None:
     server.kill()  # SIGKILL: no shutdown runs in the server
     # The worker notices its parent is gone and exits; the tracker follows once no process
     # holds its pipe.
-    eventually_sync(lambda: _running(children) == [], what="the orphans to exit", timeout_s=30)
+    eventually_sync(lambda: still_running(children) == [], what="the orphans to exit", timeout_s=30)
