@@ -122,7 +122,8 @@ async def test_a_collect_code_never_leaves_the_dm(office: Office) -> None:
         if ctx.step == 0:
             return [Wait(reason="let Lee chat", timeout_s=150)]
         if ctx.step == 1:
-            return [SendQR(contact="lee", item="stapler:zhang", purpose="collect")]
+            # Lee's own stapler (no owner's yes to wait for: runtime/consent.py)
+            return [SendQR(contact="lee", item="stapler:lee", purpose="collect")]
         return [Stop(outcome="done", summary="Your code is in this chat.")]
 
     service = office.service_for(collect)
@@ -132,7 +133,7 @@ async def test_a_collect_code_never_leaves_the_dm(office: Office) -> None:
             await office.lee.wait_member(lunch, member)
         lee_dm = await office.lee.open_dm(bot)
         assert await locker_codes(office) == []  # the operator's locker panel is open
-        await office.lee.say(lee_dm, "Please get Zhang's stapler for me.")
+        await office.lee.say(lee_dm, "Please bring me my stapler.")
         await office.lee.say(lunch, "Anyone up for lunch?")
         code = await office.lee.expect(sender=bot, msgtype="m.image")
         assert code.room_id == lee_dm
