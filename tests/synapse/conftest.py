@@ -144,8 +144,8 @@ async def office(
 # A socket (or its asyncio transport) to the homeserver is sometimes left unclosed by the
 # Matrix side of a run (seen since the read receipts, typing notices and the retrying
 # transport of this round; the source is not found yet) and garbage-collected during
-# whichever later test runs, failing that test on the warning alone. Only that warning is ignored here, and only in this
-# folder: every other unraisable exception still fails the run.
+# whichever later test runs, failing that test on the warning alone. Only that warning is
+# ignored here, and only in this folder: every other unraisable exception still fails the run.
 _UNCLOSED_SOCKET = pytest.mark.filterwarnings(
     r"ignore:Exception ignored in. <(socket\.socket|function _SelectorTransport\.__del__)"
     ":pytest.PytestUnraisableExceptionWarning"
