@@ -10,6 +10,7 @@ the service's data goes there. Nothing else in the lines is changed.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import re
@@ -21,6 +22,7 @@ from pathlib import Path
 import httpx
 import pytest
 
+from helpers.eventually import eventually_sync
 from helpers.servers import free_port
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -52,24 +54,25 @@ def test_the_quick_start_lines_run_as_pasted(tmp_path: Path) -> None:
         ASSISTANTX_SPEEDUP="50",
         PYTHONPATH=str(ROOT / "src"),
     )
-    # The pasted lines leave the service running (the README stops it with `kill %1`); the
-    # script ends by printing its pid so the test can stop it.
+    # The pasted lines leave the service running (the README stops it with `kill %1`).
     # Output goes to files: the service keeps the shell's stdout open after the lines end.
-    script = lines + 'echo "server-pid $!"\n'
+    script = lines
     stdout, stderr = tmp_path / "stdout.txt", tmp_path / "stderr.txt"
+    # In a session of its own: the service started with `&` shares the shell's process group,
+    # so the whole group is stopped at the end, also when the lines time out or fail (killing
+    # only the printed pid, which a failed or timed-out run never printed, left it running).
     with stdout.open("w") as out_file, stderr.open("w") as err_file:
-        process = subprocess.run(
+        process = subprocess.Popen(
             ["bash", "-e", "-o", "pipefail", "-c", script],
             cwd=tmp_path,
             env=env,
             stdout=out_file,
             stderr=err_file,
-            timeout=240,
-            check=False,
+            start_new_session=True,
         )
-    out = stdout.read_text()
-    pid = re.search(r"^server-pid (\d+)$", out, re.M)
     try:
+        process.wait(timeout=240)
+        out = stdout.read_text()
         assert process.returncode == 0, (out[-3000:], stderr.read_text()[-3000:])
         events = re.findall(r"^event: (\S+)$", out, re.M)
         assert events[0] == "instruction_started" or "instruction_started" in events, events
@@ -83,5 +86,15 @@ def test_the_quick_start_lines_run_as_pasted(tmp_path: Path) -> None:
         assert page.status_code == 200 and "<html" in page.text.lower()
         assert (tmp_path / "data" / "journal.sqlite3").is_file()  # its data went where it ran
     finally:
-        if pid:
-            os.kill(int(pid.group(1)), signal.SIGTERM)
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(process.pid, signal.SIGTERM)
+        process.wait(timeout=30)
+        eventually_sync(lambda: not _group_alive(process.pid), what="the service to stop")
+
+
+def _group_alive(pgid: int) -> bool:
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return False
+    return True
