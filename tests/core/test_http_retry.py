@@ -173,3 +173,38 @@ async def test_timeouts_are_retried_only_when_the_policy_says_so() -> None:
                     await client.post(f"{url}/call", extensions={TRIES: tries})
             assert [t.outcome for t in tries] == ["timed_out"] * expected
         release.set()
+
+
+async def test_closing_lets_a_request_in_flight_finish_before_the_pool_closes() -> None:
+    """Shutdown closed the pool under a request another task had just started: the request
+    failed and its socket was left to the garbage collector (an unclosed-socket warning in
+    whichever test ran next)."""
+    arrived = asyncio.Event()
+    release = asyncio.Event()
+    app = FastAPI()
+
+    @app.post("/call")
+    async def held() -> JSONResponse:
+        arrived.set()
+        await release.wait()
+        return JSONResponse({"done": True})
+
+    transport = RetryingTransport(fast())
+    async with serve_asgi(app) as url:
+        client = httpx.AsyncClient(transport=transport)
+        tries: list[Try] = []
+        request = asyncio.create_task(client.post(f"{url}/call", extensions={TRIES: tries}))
+        try:
+            await arrived.wait()
+            closing = asyncio.create_task(client.aclose())
+            await asyncio.sleep(0)  # let the close begin while the request is held
+        finally:
+            release.set()
+        response = await request
+        await closing
+    assert response.status_code == 200 and response.json() == {"done": True}
+    # one try: the close did not break it (it was retried on a connection nobody closed)
+    assert [t.outcome for t in tries] == ["answered"]
+    assert transport.in_flight == 0
+    with pytest.raises(RuntimeError, match="closed"):
+        await client.post(f"{url}/call")

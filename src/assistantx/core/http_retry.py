@@ -12,6 +12,10 @@ Every try is appended to the list a caller passes in the request's extensions un
 :data:`TRIES` (``client.post(..., extensions={TRIES: tries})``), so a caller that pays per
 request (the model's token accounting) sees each one: answered, refused, timed out or failed.
 The request body must be replayable (``json=`` and ``content=`` bytes are).
+
+Closing waits (up to :data:`CLOSE_GRACE_S`) for the requests still in flight before it closes
+the pool: a request another task started just before shutdown may be opening a connection,
+and closing the pool under it leaves that socket to the garbage collector, unclosed.
 """
 
 from __future__ import annotations
@@ -33,6 +37,8 @@ logger = logging.getLogger(__name__)
 
 TRIES = "assistantx.tries"  # request extension: a list[Try] the transport appends to
 RETRYABLE_STATUS = frozenset({408, 409, 425, 429})
+CLOSE_GRACE_S = 2.0
+"""How long closing waits for requests in flight before it closes their connections."""
 
 TryOutcome = Literal["answered", "refused", "timed_out", "failed"]
 
@@ -130,12 +136,31 @@ class RetryingTransport(httpx.AsyncBaseTransport):
         self._retry_after = retry_after
         # an answer with a retryable status that the client knows is final (its body read)
         self._final = final
+        self._in_flight = 0
+        self._closing = False  # once closing, nothing is retried (a retry opens a connection)
+        self._idle = asyncio.Event()
+        self._idle.set()
+
+    @property
+    def in_flight(self) -> int:
+        """Requests being sent (their tries and waits included) right now."""
+        return self._in_flight
 
     async def handle_async_request(self, request: httpx.Request) -> httpx.Response:
+        self._in_flight += 1
+        self._idle.clear()
+        try:
+            return await self._send_with_retries(request)
+        finally:
+            self._in_flight -= 1
+            if self._in_flight == 0:
+                self._idle.set()
+
+    async def _send_with_retries(self, request: httpx.Request) -> httpx.Response:
         tries: list[Try] = request.extensions.get(TRIES, [])
         retries = self.policy.max_retries
         for attempt in range(retries + 1):
-            last = attempt == retries
+            last = attempt == retries or self._closing
             try:
                 response = await self._inner.handle_async_request(request)
             except httpx.TimeoutException as exc:
@@ -177,4 +202,14 @@ class RetryingTransport(httpx.AsyncBaseTransport):
         raise AssertionError("unreachable: the last try returns or raises")
 
     async def aclose(self) -> None:
+        self._closing = True
+        if self._in_flight:
+            try:
+                await asyncio.wait_for(self._idle.wait(), CLOSE_GRACE_S)
+            except TimeoutError:
+                logger.warning(
+                    "closing with %d request(s) still in flight after %.1f s",
+                    self._in_flight,
+                    CLOSE_GRACE_S,
+                )
         await self._inner.aclose()
