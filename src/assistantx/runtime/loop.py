@@ -310,6 +310,12 @@ class InstructionRunner:
                     result=step.results[-1].model_dump(mode="json"),
                 )
                 break
+            if isinstance(action, Stop) and action.outcome != "done":
+                # Someone's item still aboard goes back (runtime.returns): the requester is
+                # told so in the same words as on a cancel or a deadline.
+                note = return_note(self.executor.ctx.office, stm)
+                if note:
+                    action = action.model_copy(update={"summary": action.summary + note})
             if isinstance(action, _BODY_ACTIONS):
                 await self._take_body(stm, step)
             result = await self.executor.execute(stm, action, key=f"s{step.index}a{n}")
