@@ -53,13 +53,13 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     sim.add_argument(
         "--max-pending",
         type=int,
-        default=64,
+        default=256,
         help="connections still authenticating, in all (the oldest is evicted beyond it)",
     )
     sim.add_argument(
         "--max-pending-per-peer",
         type=int,
-        default=8,
+        default=64,
         help="connections still authenticating from one address (the oldest is evicted)",
     )
     sim.add_argument("--event-log", type=int, default=1024, help="events kept for resuming")

@@ -46,6 +46,9 @@ logger = logging.getLogger(__name__)
 FINISHED_KEPT = 256
 
 InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
+# Called with the ended instruction's id when its give-back errand is over (not when a
+# shutdown cut it short: it starts again on the next start).
+GiveBackHook = Callable[[str], Awaitable[None]]
 # Claims a direct message that answers no open question (True: handled, e.g. a survey reply)
 # before it would start a new instruction.
 DirectMessageHook = Callable[[InboundMessage], Awaitable[bool]]
@@ -118,6 +121,7 @@ class Assistant:
         self._on_start: list[InstructionHook] = []
         self._on_end: list[InstructionHook] = []
         self._dm_hooks: list[DirectMessageHook] = []
+        self._on_given_back: list[GiveBackHook] = []
         self._dispatcher: asyncio.Task[None] | None = None
         self._errands: set[asyncio.Task[None]] = set()  # items going back to their owners
         self._stopping = False
@@ -160,6 +164,9 @@ class Assistant:
 
     def on_instruction_end(self, hook: InstructionHook) -> None:
         self._on_end.append(hook)
+
+    def on_give_back_end(self, hook: GiveBackHook) -> None:
+        self._on_given_back.append(hook)
 
     def intercept_direct_messages(self, hook: DirectMessageHook) -> None:
         self._dm_hooks.append(hook)
@@ -242,19 +249,34 @@ class Assistant:
 
     def _give_back(self, stm: ShortTermMemory) -> None:
         """Someone's item is still in the locker: take it back to them (``returns``)."""
-        if self._stopping or not items_to_return(self.office, stm):
-            return
-        errand = asyncio.create_task(self._errand(stm), name=f"{stm.instruction_id}.return")
+        self.give_back(stm)
+
+    def give_back(self, ended: ShortTermMemory, *, attempt: int = 0) -> bool:
+        """Start the errand that returns what ``ended`` left in the locker (also one cut short
+        by a restart: ``attempt`` > 0); False when there is nothing to return."""
+        if self._stopping or not items_to_return(self.office, ended):
+            return False
+        errand = asyncio.create_task(
+            self._errand(ended, attempt), name=f"{ended.instruction_id}.return"
+        )
         self._errands.add(errand)
         errand.add_done_callback(self._errands.discard)
+        return True
 
-    async def _errand(self, stm: ShortTermMemory) -> None:
+    async def _errand(self, stm: ShortTermMemory, attempt: int) -> None:
         try:
-            await return_items(self.office, self.resolver, self.executor, self.lease, stm)
+            await return_items(
+                self.office, self.resolver, self.executor, self.lease, stm, attempt=attempt
+            )
         except asyncio.CancelledError:
-            raise
+            raise  # a shutdown: the errand is not over, it starts again on the next start
         except Exception:
             logger.exception("could not give back what %s left in the locker", stm.instruction_id)
+        for hook in self._on_given_back:
+            try:
+                await hook(stm.instruction_id)
+            except Exception:
+                logger.exception("give-back end hook failed")
 
     async def _end_hooks(self, stm: ShortTermMemory) -> None:
         for hook in self._on_end:

@@ -63,6 +63,7 @@ from assistantx.runtime.returns import return_note
 logger = logging.getLogger(__name__)
 
 _BODY_ACTIONS = (Move, WaitInPlace, SendQR)
+END_GRACE_S = 10.0  # wall-clock seconds a cancelled instruction's end may take once cut short
 
 
 @dataclass(frozen=True)
@@ -145,7 +146,15 @@ class InstructionRunner:
         except asyncio.CancelledError:
             # (A shutdown cancels too, but then nothing of this end is journaled: it resumes.)
             stm.trace.cancelled = True
-            await asyncio.shield(self._end(stm, "failed", "The instruction was cancelled."))
+            end = asyncio.ensure_future(self._end(stm, "failed", "The instruction was cancelled."))
+            try:
+                await asyncio.shield(end)
+            except asyncio.CancelledError:
+                # Cancelled again while ending (a second cancel, a shutdown): the end still
+                # comes first, so nothing records this instruction as ended before its
+                # ``instruction_ended`` (an event stream opened in between ended without it);
+                # bounded, so a messenger that hangs cannot hold a shutdown.
+                await asyncio.wait({end}, timeout=END_GRACE_S)
             raise
         except TimeoutError:
             logger.warning("instruction %s ran past its wall-clock bound", stm.instruction_id)
@@ -310,6 +319,12 @@ class InstructionRunner:
                     result=step.results[-1].model_dump(mode="json"),
                 )
                 break
+            if isinstance(action, Stop) and action.outcome != "done":
+                # Someone's item still aboard goes back (runtime.returns): the requester is
+                # told so in the same words as on a cancel or a deadline.
+                note = return_note(self.executor.ctx.office, stm)
+                if note:
+                    action = action.model_copy(update={"summary": action.summary + note})
             if isinstance(action, _BODY_ACTIONS):
                 await self._take_body(stm, step)
             result = await self.executor.execute(stm, action, key=f"s{step.index}a{n}")

@@ -5,7 +5,10 @@ The errand runs after the instruction ended, as a task of its own under the erra
 (``<instruction>.return``): it takes the robot's body lease, drives to the owner, tells them in
 words why their item comes back, sends them a one-time code to take it out and waits for
 them. The requester's final message already says the item goes back (``return_note``). A
-shutdown cancels the errand like any running work.
+shutdown cancels the errand like any running work; the service journals the errands still to
+do and starts them again on its next start (``attempt`` counts those starts): each attempt
+tells the owner again and sends a code of its own (the start-up withdrew the code of the
+attempt that was cut short); a step journaled as sent within one attempt is not sent twice.
 """
 
 from __future__ import annotations
@@ -59,6 +62,8 @@ async def return_items(
     executor: Executor,
     lease: BodyLease,
     ended: ShortTermMemory,
+    *,
+    attempt: int = 0,
 ) -> None:
     """Bring each item back to its owner (see the module's docstring)."""
     aboard = items_to_return(office, ended)
@@ -109,7 +114,12 @@ async def return_items(
             ]
             for m, action in enumerate(steps):
                 grounded = resolver.ground(action)  # the owner's name → their desk
-                result = await executor.execute(stm, grounded, key=f"r{n}a{m}")
+                key = f"r{n}a{m}"
+                if attempt and isinstance(action, Inform | SendQR):
+                    # A fresh code (the last attempt's was withdrawn), and the words that
+                    # say what it is for.
+                    key += f".{attempt}"
+                result = await executor.execute(stm, grounded, key=key)
                 if not result.ok:
                     logger.warning(
                         "returning %s to %s: %s failed: %s",

@@ -27,6 +27,7 @@ from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AppliedUpdate
 from assistantx.runtime.assistant import Assistant
+from assistantx.service.give_back import GiveBacks
 from assistantx.service.hub import EventHub
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.store.journal import EventRecord, InstructionRecord, Journal, Status
@@ -58,6 +59,7 @@ class Durability:
         self.metrics = metrics
         self._world_state = world_state
         self.cancelled: set[str] = set()
+        self.give_backs = GiveBacks(journal, assistant.office)
         self.frozen = False  # set on shutdown: what happens after is not journaled
         self._snapshot_at = assistant.ltm.applied_total  # updates held by the last snapshot
         self._world_sent: dict[str, dict[str, Any]] | None = None  # the last world journaled
@@ -66,6 +68,7 @@ class Durability:
         self.assistant.subscribe(self.on_event)
         self.assistant.on_instruction_start(self.on_start)
         self.assistant.on_instruction_end(self.on_end)
+        self.assistant.on_give_back_end(self.on_given_back)
 
     # -- recording -----------------------------------------------------------------------
     async def on_start(self, stm: ShortTermMemory) -> None:
@@ -103,6 +106,8 @@ class Durability:
                     await self._revoke_codes(stm)
                 checkpoint, status = stm, self._final_status(event.instruction_id, stm)
                 states = self._world_if_changed()
+                if stm is not None:  # owing a give-back is journaled with the end
+                    states |= self.give_backs.on_end(stm)
                 if stm is not None and stm.trace.steps:
                     self.metrics.step_completed(stm.trace.steps[-1])
             case _:
@@ -141,6 +146,22 @@ class Durability:
         """Snapshot the graph (bounded: one value per fact, a bounded history)."""
         self._snapshot_at = self.assistant.ltm.applied_total
         await self.journal.aput_memory_snapshot(LTM_STATE, self.assistant.ltm.snapshot())
+
+    async def on_given_back(self, instruction_id: str) -> None:
+        """The give-back errand of ``instruction_id`` is over: settled, with the world it left."""
+        if not self.frozen:
+            await self.journal.aput_states(
+                self.give_backs.settle(instruction_id) | self._world_if_changed()
+            )
+
+    async def resume_give_backs(self, in_locker: set[str]) -> list[str]:
+        """Start again the give-back errands a restart cut short; their ids."""
+        resumed = self.give_backs.to_resume(in_locker)
+        await self.journal.aput_states(self.give_backs.state())  # the attempts, before acting
+        for stm, attempt in resumed:
+            self.assistant.give_back(stm, attempt=attempt)
+            logger.info("resumed giving back what %s left in the locker", stm.instruction_id)
+        return [stm.instruction_id for stm, _ in resumed]
 
     async def on_end(self, stm: ShortTermMemory) -> None:
         if not self.frozen:

@@ -2,8 +2,9 @@
 
 A stream first replays the journaled events after ``Last-Event-ID`` (or ``?after=``), then
 follows live ones; the SSE ``id`` is the journal sequence number, so a reconnecting client
-misses nothing and sees nothing twice. One instruction's stream ends after its
-``instruction_ended`` event.
+misses nothing and sees nothing twice. One instruction's stream always ends with its
+``instruction_ended`` event: one that ended with no such event in the journal (cancelled while
+it waited to start) gets one made from its record, without an ``id``.
 
 The all-instructions stream's replay is bounded: at most ``?replay=`` events (default
 ``REPLAY_DEFAULT``, at most ``REPLAY_MAX``), the newest ones, after ``Last-Event-ID``,
@@ -21,24 +22,30 @@ starts, so they still get their status code instead of a 200 that ends at once.
 
 from __future__ import annotations
 
-from collections.abc import AsyncIterator
+from collections.abc import AsyncIterator, Iterator
 from dataclasses import dataclass
 from typing import Annotated
 
 from fastapi import APIRouter, Depends, Header, Query
 from fastapi.sse import EventSourceResponse, ServerSentEvent
 
+from assistantx.core.events import TraceEvent
 from assistantx.service.auth import Principal
 from assistantx.service.deps import Caller, Runtime, visible_instruction
 from assistantx.service.errors import UnprocessableError
 from assistantx.service.runtime import ServiceRuntime
-from assistantx.store.journal import MAX_SEQ, EventRecord
+from assistantx.store.journal import MAX_SEQ, EventRecord, InstructionRecord
 
 router = APIRouter(prefix="/v1", tags=["events"])
 
 REPLAY_DEFAULT = 1000
 REPLAY_MAX = 10_000
 FINAL_STATUSES = {"done", "failed", "unachievable", "cancelled"}
+# The words of an end with no journaled event (the loop's own for a cancel).
+_ENDED_WITHOUT_EVENT = {
+    "cancelled": "The instruction was cancelled.",
+    "failed": "The instruction could not be started.",
+}
 
 LastEventId = Annotated[str | None, Header(max_length=20)]
 After = Annotated[int | None, Query(ge=0, le=MAX_SEQ)]
@@ -72,6 +79,23 @@ def _event(record: EventRecord) -> ServerSentEvent:
     return ServerSentEvent(id=str(record.seq), event=record.event.kind, data=record.event)
 
 
+def _ended_from(record: InstructionRecord) -> ServerSentEvent:
+    """An ``instruction_ended`` for an instruction whose end the journal holds no event of
+    (no ``id``: it has no place in the journal's sequence)."""
+    summary = record.summary or _ENDED_WITHOUT_EVENT.get(record.status, "")
+    event = TraceEvent(
+        instruction_id=record.id,
+        kind="instruction_ended",
+        time=record.updated_at,
+        data={
+            "outcome": record.outcome
+            or ("failed" if record.status == "cancelled" else record.status),
+            "summary": summary,
+        },
+    )
+    return ServerSentEvent(event="instruction_ended", data=event)
+
+
 def _truncated(first: int, last: int) -> ServerSentEvent:
     payload = {"kind": "replay_truncated", "skipped_after": first, "skipped_through": last}
     return ServerSentEvent(event="replay_truncated", data=payload)
@@ -96,21 +120,38 @@ async def _stream(
             owners[iid] = found.requester if found else None
         return owners[iid] == caller.person
 
-    try:
-        last = after
-        while True:  # replay from the journal in pages
+    last = after
+
+    def replayed() -> Iterator[EventRecord]:
+        """The journal's events after ``last`` (read in pages), advancing ``last``."""
+        nonlocal last
+        while True:
             page = runtime.journal.events(instruction_id, after_seq=last, limit=500)
             for record in page:
                 last = record.seq
-                if visible(record):
-                    yield _event(record)
-                if instruction_id and record.event.kind == "instruction_ended":
-                    return
+                yield record
             if len(page) < 500:
-                break
+                return
+
+    try:
+        for record in replayed():
+            if visible(record):
+                yield _event(record)
+            if instruction_id and record.event.kind == "instruction_ended":
+                return
         if instruction_id:
             found = runtime.journal.instruction(instruction_id)
             if found is not None and found.status in FINAL_STATUSES:
+                # Its end may have been committed between the replay and this look (the
+                # journal writes on a thread of its own): read on, then end with it.
+                for record in replayed():
+                    if visible(record):
+                        yield _event(record)
+                    if record.event.kind == "instruction_ended":
+                        return
+                # Ended without a journaled end (cancelled before it started, or its end was
+                # cut short): the stream still ends with one, from the instruction's record.
+                yield _ended_from(found)
                 return
         while True:  # live; FastAPI sends the keep-alive comments while this waits
             live = await listener.queue.get()

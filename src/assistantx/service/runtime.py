@@ -252,6 +252,7 @@ class ServiceRuntime:
             anchors_yaml=s.map_anchors,
         )
         await self._resume()
+        await self.durability.resume_give_backs(set(self.sim.world.locker_contents()))
         self.admission.start()
         self.ready = True
 

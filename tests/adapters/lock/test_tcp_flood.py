@@ -27,7 +27,7 @@ from .conftest import LOCK_ID, QUICK_RETRY
 PATIENT = LinkTimeouts(
     connect_s=3.0, handshake_s=5.0, frame_s=0.5, idle_s=10.0, keepalive_s=0.2, request_s=2.0
 )
-FLOOD = 40  # more than the old overall cap of 32
+FLOOD = 80  # more than the per-address budget of pending connections (64)
 
 
 async def _flood(port: int, n: int = FLOOD) -> list[asyncio.StreamWriter]:
@@ -39,7 +39,7 @@ async def _flood(port: int, n: int = FLOOD) -> list[asyncio.StreamWriter]:
 async def _settle(server: LockServer, at_least: int) -> None:
     """Until the lock has taken in the flood (accepted and counted, or evicted)."""
     await eventually(
-        lambda: server.pending_count + server.evicted_pending + server.refused_pending >= at_least,
+        lambda: server.pending_count + server.evicted_pending >= at_least,
         what=f"the lock to take in {at_least} silent connections",
         timeout_s=3,
     )
@@ -169,10 +169,12 @@ async def _handshakes(port: int, keys: LockKeys) -> int:
     return ok
 
 
-async def test_a_churning_flood_from_other_addresses_does_not_starve_handshakes() -> None:
-    """(From the assistant's own address, a flood faster than ``max_pending_per_peer`` per
-    ``grace_s`` can delay it: the server's docstring says why.)"""
-    sources = [f"127.0.0.{n}" for n in range(2, 10)]
+@pytest.mark.parametrize(
+    "sources",
+    [["127.0.0.1"], [f"127.0.0.{n}" for n in range(2, 10)]],
+    ids=["from-the-assistants-address", "from-eight-other-addresses"],
+)
+async def test_a_churning_flood_does_not_starve_handshakes(sources: list[str]) -> None:
     keys = LockKeys.from_secret("test secret shared by lock and assistant")
     server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
     _, port = await server.start()
@@ -191,7 +193,40 @@ async def test_a_churning_flood_from_other_addresses_does_not_starve_handshakes(
         await counting
         await server.stop()
     assert seen[0] > 2 * server.max_pending  # the flood outnumbered the pending bounds
-    assert got_in >= ATTEMPTS - 1, f"{got_in} of {ATTEMPTS} handshakes got through"
+    assert got_in == ATTEMPTS, f"{got_in} of {ATTEMPTS} handshakes got through"
+
+
+# -- the assistant's address full of young silent sockets ----------------------------------
+
+
+async def test_a_full_pool_of_fresh_silent_sockets_from_its_address_does_not_refuse_it() -> None:
+    """Each round the attacker, on the assistant's own address, has just opened as many silent
+    sockets as the lock keeps pending per address (and closes them after the round): the
+    assistant's handshake still gets through, 20 rounds of 20 (refusing newcomers while every
+    pending socket was young kept it out every round)."""
+    keys = LockKeys.from_secret("test secret shared by lock and assistant")
+    server = LockServer(LockController(LOCK_ID, keys.codes, SimClock()), keys.link_key)
+    _, port = await server.start()
+    got_in = 0
+    try:
+        for _ in range(ATTEMPTS):
+            before = server.pending_count + server.evicted_pending
+            silent = await _flood(port, server.max_pending_per_peer)
+            await _settle(server, before + len(silent))
+            reader, writer = await asyncio.open_connection("127.0.0.1", port)
+            try:
+                await client_handshake(reader, writer, link_key=keys.link_key, handshake_s=2.0)
+                got_in += 1
+            except LockError:
+                pass
+            finally:
+                await close_writer(writer)
+                for socket in silent:
+                    await close_writer(socket)
+            await eventually(lambda: server.pending_count == 0, what="the round's sockets gone")
+    finally:
+        await server.stop()
+    assert got_in == ATTEMPTS, f"{got_in} of {ATTEMPTS} handshakes got through"
 
 
 # -- a burst within the assistant's handshake ----------------------------------------------

@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 import yaml
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from adapters.messenger.test_matrix_units import CONFIG_YAML
@@ -87,6 +87,17 @@ def normalizer(*, strict: bool) -> EventNormalizer:
     event=events | json_values,
     room=st.sampled_from([DM, GROUP, OTHER]),
     strict=st.booleans(),
+)
+# Found by this test: a msgtype that is a list (unhashable) raised TypeError.
+@example(
+    event={
+        "type": "m.room.message",
+        "event_id": "$e",
+        "sender": "@lee:office.test",
+        "content": {"msgtype": [], "body": "hi"},
+    },
+    room=DM,
+    strict=False,
 )
 def test_any_event_gives_items_or_the_documented_error(event: Any, room: str, strict: bool) -> None:
     try:

@@ -18,16 +18,16 @@ resumes from its last sequence when it reconnects).
 Connections are counted in two pools. *Pending* ones have not authenticated yet: they get a
 short handshake deadline, and at most ``max_pending_per_peer`` per peer address and
 ``max_pending`` in all. A new connection beyond the per-address bound evicts that address's
-oldest pending one that has had ``grace_s`` to answer the hello; a handshake younger than
-that is in its round trip and is not evicted: when only such are left, the newcomer is
-refused instead (a burst of sockets landing between the assistant's connect and its answer
-used to evict the assistant). Beyond the overall bound the oldest pending connection of the
-address holding the most goes, so a flood spread over many addresses is paid for by those
-addresses, never by the assistant's one socket. Idle or slow unauthenticated sockets never
-keep the rightful client out. Limitation: an attacker on the assistant's own address opening
-more than ``max_pending_per_peer`` sockets every ``grace_s`` delays it (its retries go on);
-nothing tells the two apart before the key. Only *sessions*, which proved the shared key,
-count against ``max_connections``.
+oldest pending one; beyond the overall bound, the oldest pending connection of the address
+holding the most goes, so a flood spread over many addresses is paid for by those addresses,
+never by the assistant's one socket. A newcomer is never refused: nothing tells the
+assistant's fresh socket from an attacker's before the key, and refusing newcomers while the
+pool is full of young silent sockets let a churning flood from the assistant's own address
+keep it out for as long as the flood lasted. Evicting the oldest instead, the assistant's
+handshake only has to finish before ``max_pending_per_peer`` more connections from its address
+arrive (one round trip; the per-address budget is generous for that reason), and a silent
+socket holds its place no longer than that many newcomers. Only *sessions*, which proved the
+shared key, count against ``max_connections``.
 """
 
 from __future__ import annotations
@@ -77,14 +77,12 @@ class LockServer:
         timeouts: LinkTimeouts | None = None,
         max_frame: int = DEFAULT_MAX_FRAME,
         max_connections: int = 32,
-        max_pending: int = 64,
-        max_pending_per_peer: int = 8,
-        grace_s: float = 0.5,
+        max_pending: int = 256,
+        max_pending_per_peer: int = 64,
         reload_keys: Callable[[], Keyring] | None = None,
     ) -> None:
         """``max_connections``: authenticated sessions; ``max_pending`` and
-        ``max_pending_per_peer``: connections still in the handshake (oldest evicted, once
-        they had ``grace_s`` seconds, a generous round trip, to answer)."""
+        ``max_pending_per_peer``: connections still in the handshake (the oldest evicted)."""
         if min(max_connections, max_pending, max_pending_per_peer) < 1:
             raise ValueError("connection limits must be at least 1")
         self.controller = controller
@@ -99,14 +97,11 @@ class LockServer:
         self.max_pending = max_pending
         self.max_pending_per_peer = max_pending_per_peer
         self._connections: set[asyncio.Task[None]] = set()
-        self.grace_s = grace_s
         # Connections still in the handshake, oldest first, with their peer address.
         self._pending: dict[asyncio.Task[None], str] = {}
-        self._born: dict[asyncio.Task[None], float] = {}  # loop time of each accept
         self._sessions: set[asyncio.Task[None]] = set()
         self.refused_handshakes = 0
         self.evicted_pending = 0
-        self.refused_pending = 0  # newcomers refused: every pending handshake was in its grace
 
     @property
     def address(self) -> tuple[str, int]:
@@ -168,34 +163,19 @@ class LockServer:
         except Exception:
             logger.exception("lock %s: key reload failed; old keys kept", self.controller.lock_id)
 
-    def _make_room_for(self, peer: str) -> bool:
-        """Evict the oldest pending connections past their grace so that one more from
-        ``peer`` fits; False when only handshakes in their round trip are left."""
-        ripe_before = asyncio.get_running_loop().time() - self.grace_s
-
-        def oldest_ripe(among: list[asyncio.Task[None]]) -> asyncio.Task[None] | None:
-            return next((t for t in among if self._born.get(t, 0.0) <= ripe_before), None)
-
+    def _make_room_for(self, peer: str) -> None:
+        """Evict the oldest pending connections so that one more from ``peer`` fits."""
         from_peer = [t for t, p in self._pending.items() if p == peer]
         while len(from_peer) >= self.max_pending_per_peer:
-            victim = oldest_ripe(from_peer)
-            if victim is None:
-                return False
-            from_peer.remove(victim)
-            self._evict(victim)
+            self._evict(from_peer.pop(0))
         while len(self._pending) >= self.max_pending:
             # From the peer holding the most pending connections: a flood spread over many
             # addresses is paid for by its own addresses, not by the assistant's one socket.
-            # Its oldest past the grace, else its oldest: a peer with more pending sockets than
-            # any other is flooding, and the assistant's one socket is never that peer's.
             busiest = Counter(self._pending.values()).most_common(1)[0][0]
-            theirs = [t for t, p in self._pending.items() if p == busiest]
-            self._evict(oldest_ripe(theirs) or theirs[0])
-        return True
+            self._evict(next(t for t, p in self._pending.items() if p == busiest))
 
     def _evict(self, task: asyncio.Task[None]) -> None:
         peer = self._pending.pop(task, "?")
-        self._born.pop(task, None)
         self.evicted_pending += 1
         if self.evicted_pending == 1 or self.evicted_pending % 100 == 0:
             logger.warning(
@@ -208,22 +188,12 @@ class LockServer:
     async def _accept(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
         peername = writer.get_extra_info("peername")
         peer = str(peername[0]) if isinstance(peername, tuple) and peername else "?"
-        if not self._make_room_for(peer):
-            self.refused_pending += 1
-            if self.refused_pending == 1 or self.refused_pending % 100 == 0:
-                logger.warning(
-                    "lock: a burst of unauthenticated connections (from %s); refused %d so far",
-                    peer,
-                    self.refused_pending,
-                )
-            await close_writer(writer)
-            return
+        self._make_room_for(peer)
         # The connection runs in a task of its own, so stop() cancels it without cancelling
         # the stream callback's task (which asyncio reports as an unhandled error).
         task = asyncio.create_task(self._serve_connection(reader, writer))
         self._connections.add(task)
         self._pending[task] = peer
-        self._born[task] = asyncio.get_running_loop().time()
         try:
             await task
         except asyncio.CancelledError:
@@ -235,7 +205,6 @@ class LockServer:
         finally:
             self._connections.discard(task)
             self._pending.pop(task, None)
-            self._born.pop(task, None)
             self._sessions.discard(task)
             await close_writer(writer)
 
@@ -260,7 +229,6 @@ class LockServer:
         task = asyncio.current_task()
         assert task is not None
         self._pending.pop(task, None)
-        self._born.pop(task, None)
         if len(self._sessions) >= self.max_connections:
             logger.warning(
                 "lock: session limit %s reached; refusing %s", self.max_connections, peer

@@ -282,6 +282,8 @@ def _text_and_attachments(
     event_id: str, person: str, content: Mapping[str, Any]
 ) -> tuple[str, list[Attachment]] | None:
     msgtype = content.get("msgtype")
+    if not isinstance(msgtype, str):  # a list or an object is not hashable: no type at all
+        msgtype = None
     body = content.get("body")
     body = body if isinstance(body, str) else ""
     if msgtype in _TEXT_TYPES:
