@@ -45,7 +45,7 @@ from assistantx.agents.symbolic._parties import (
     clause_roles,
     prev_word,
 )
-from assistantx.agents.symbolic.answers import stance
+from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.screen import RequestScreen
 from assistantx.core import english, language
@@ -220,13 +220,16 @@ class InstructionParser:
 
     def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
         """Re-parse after clarifying answers: a yes or no to "Shall I ...?", the reading the
-        answer chose, else the original with the answers, else the answer."""
+        answer chose, else the original with the answers; the answer alone only when the
+        question asked for the whole request. A reply answers the question asked: it never
+        starts a request of its own ("Yes, I have a stapler" to "Shall I bring you one?" is
+        a no, not a yes nor a new request for a stapler)."""
         frame = self.parse(text, requester)
         for answer in answers:
             if frame.understood or frame.decline is not None:
                 break
             if frame.question is not None and "Shall I" in frame.question:
-                yes_no = stance(answer)
+                yes_no = offer_stance(answer)
                 if yes_no == "yes":
                     offer = self.screen.screen(text, requester).offer
                     frame = self.parse(offer or text, requester, confirmed=True)
@@ -245,9 +248,13 @@ class InstructionParser:
                 finally:
                     self.lex.chosen = {}
                 continue
+            asked_everything = frame.question == NOT_UNDERSTOOD
             combined = self.parse(f"{text}. {answer}", requester)
+            if combined.understood or not asked_everything:
+                frame = combined
+                continue
             alone = self.parse(answer, requester)
-            frame = combined if combined.understood or not alone.understood else alone
+            frame = alone if alone.understood else combined
         return frame
 
     def _chosen_reading(self, text: str, answer: str) -> dict[str, Reading]:
