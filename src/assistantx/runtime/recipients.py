@@ -1,0 +1,182 @@
+"""Who the requester named as a recipient or a doer: the people a hand-over may go to.
+
+The consent guard lets a code (or a file) go to a person other than the requester, an owner
+or a keeper only when the requester named that person *in a receiving role*. A name that
+merely stands somewhere in their words does not count: "... because Rich asked for it",
+"Rich wants it up on the board" and "Rich's form" name Rich as the reason, a wisher or an
+owner, never as the one who gets the item. The roles are read from the requester's own
+words alone (never from a reasoner's reading), by the position of the name:
+
+- after a preposition of receiving: "to Hal", "for Hal", "with Hal" ("leave it with Hal"),
+  and a place of theirs: "on Hal's desk";
+- right after a giving verb, in any of its forms: "bring Hal a thermometer", "lent Hal ...";
+- as a doer: "by Hal", "get Hal to sign", "Hal to sign it";
+- a pronoun in one of those places ("take her my ice pack") when exactly one person the
+  requester named is neither an owner ("May's ice pack") nor the requester;
+- a reply in their own chat that is just a name ("Hal Brooks.", "to Hal, please"): the
+  answer to "Who should get it?";
+- a "Shall I ...?" of the assistant in the requester's chat, answered yes by the requester,
+  in which the name stands in one of those places ("Shall I bring Hal a thermometer?").
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.answers import stance
+from assistantx.core import english, language
+from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.memory.short_term import ShortTermMemory
+
+_TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
+_AT_PLACE = frozenset({"on", "at", "to", "onto", "in", "into"})
+_BY = frozenset({"by"})
+_DOER_VERBS = frozenset({"get", "ask", "have", "let", "make"})
+_DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "countersign"})
+_GIVE = english.words("dative_verbs") | frozenset(
+    {"deliver", "show", "drop", "return", "pass", "print", "copy", "send"}
+)
+_TITLES = english.words("titles") - {"a", "an", "the", "our"}
+_PLACES = english.words("place_words") | frozenset({"tray", "pigeonhole", "inbox", "chair"})
+_PRONOUNS = english.words("object_pronouns")
+_COMMON = english.words("common")
+_FILLERS = english.words("courtesy") | frozenset(
+    {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
+)
+_WORD = re.compile(r"[\w]+(?:['’]s)?")
+
+
+@dataclass(frozen=True)
+class _Word:
+    text: str  # as written, without a possessive 's
+    folded: str
+    possessive: bool
+
+
+def _tokens(text: str) -> list[_Word]:
+    out = []
+    for m in _WORD.finditer(text):
+        raw = m.group(0)
+        possessive = raw.lower().endswith(("'s", "’s"))
+        bare = raw[:-2] if possessive else raw
+        out.append(_Word(bare, language.fold(bare), possessive))
+    return out
+
+
+@dataclass(frozen=True)
+class _Mention:
+    person: str
+    start: int
+    end: int  # exclusive
+    possessive: bool
+
+
+def _names(office: Office) -> list[tuple[tuple[str, ...], str]]:
+    """Every way a person is written (full name, aliases, each part of the name, the id),
+    as folded word tuples, longest first."""
+    found: dict[tuple[str, ...], set[str]] = {}
+    for p in office.people:
+        spellings = {p.name, *p.aliases, p.id, p.id.replace("_", " ")}
+        spellings.update(w for w in p.name.split() if len(w) > 1)
+        for s in spellings:
+            key = tuple(language.fold(w) for w in re.findall(r"\w+", s))
+            if key:
+                found.setdefault(key, set()).add(p.id)
+    return sorted(((k, i) for k, ids in found.items() for i in ids), key=lambda x: -len(x[0]))
+
+
+def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
+    names = _names(office)
+    out: list[_Mention] = []
+    n = 0
+    while n < len(words):
+        hit = None
+        for key, person in names:
+            span = tuple(w.folded for w in words[n : n + len(key)])
+            if span != key:
+                continue
+            first = words[n].text
+            # a name that is also a word counts only when written as a name ("May", not "may")
+            if len(key) == 1 and key[0] in _COMMON | {"may", "will"} and not first[:1].isupper():
+                if key[0] != language.fold(person):
+                    continue
+            hit = _Mention(person, n, n + len(key), words[n + len(key) - 1].possessive)
+            break
+        if hit is None:
+            n += 1
+            continue
+        out.append(hit)
+        n = hit.end
+    return out
+
+
+def _before(words: list[_Word], at: int) -> str:
+    """The word before position ``at``, skipping titles ("to Dr. Hal")."""
+    k = at - 1
+    while k >= 0 and words[k].folded in _TITLES:
+        k -= 1
+    return words[k].folded if k >= 0 else ""
+
+
+def _is_give(word: str) -> bool:
+    return word in _GIVE or bool(language.verb_lemmas(word) & _GIVE)
+
+
+def _receiving(words: list[_Word], start: int, end: int, possessive: bool) -> bool:
+    """Whether the words at [start, end) (a name or a pronoun) stand in a receiving or doing
+    role."""
+    before = _before(words, start)
+    after = words[end].folded if end < len(words) else ""
+    if possessive:  # "on Hal's desk": their place; "Hal's form": an owner
+        return before in _AT_PLACE and after in _PLACES
+    if before in _TO or before in _BY or _is_give(before):
+        return True
+    if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
+        return True
+    nxt = words[end + 1].folded if end + 1 < len(words) else ""
+    return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
+
+
+def _in_roles(office: Office, text: str, requester: str) -> set[str]:
+    words = _tokens(text)
+    mentions = _mentions(office, words)
+    named = {m.person for m in mentions if _receiving(words, m.start, m.end, m.possessive)}
+    owners = {m.person for m in mentions if m.possessive or _before(words, m.start) == "from"}
+    candidates = {m.person for m in mentions} - owners - {requester}
+    if len(candidates) == 1:
+        for n, w in enumerate(words):
+            if w.folded in _PRONOUNS and _receiving(words, n, n + 1, False):
+                named |= candidates  # "Hal twisted his ankle, take him May's ice pack"
+    return named - {requester}
+
+
+def _just_a_name(office: Office, text: str) -> set[str]:
+    """The people a reply names when it says nothing but names ("Hal Brooks.", "to Hal")."""
+    words = _tokens(text)
+    mentions = _mentions(office, words)
+    covered = {n for m in mentions for n in range(m.start, m.end)}
+    rest = [w for n, w in enumerate(words) if n not in covered and w.folded not in _FILLERS]
+    return {m.person for m in mentions} if mentions and not rest else set()
+
+
+def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
+    """The people the requester named as a recipient or a doer, in the instruction, in their
+    later messages in their own chat, or by a yes to the assistant's offer there."""
+    own = ChatRef(kind="dm", id=stm.requester)
+    found = _in_roles(office, stm.text, stm.requester)
+    last_offer: str | None = None
+    for turn in stm.dialogue:
+        if turn.chat != own:
+            continue
+        if turn.direction == "out" and turn.question_id:
+            last_offer = turn.text
+            continue
+        if turn.direction != "in" or turn.person != stm.requester:
+            continue
+        found |= _in_roles(office, turn.text, stm.requester)
+        found |= _just_a_name(office, turn.text) - {stm.requester}
+        if last_offer is not None and stance(turn.text) == "yes":
+            found |= _in_roles(office, last_offer, stm.requester)
+    return found
