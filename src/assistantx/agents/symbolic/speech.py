@@ -49,6 +49,7 @@ _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
 _AWAY = english.words("guard_away")
 _NEED = english.words("need_verbs")
+_RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
 _SUBJECTS = english.words("statement_subjects")
 _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
@@ -206,8 +207,8 @@ class SpeechActs:
                 return True  # "Wang doesn't need the stapler any more": nobody asks
             if x in _NEED or x in _WILLING or x in ("mean", "meant"):
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
-            if x in _STATE_VERBS or (x not in self.lex.cue_words and language.is_finite_verb(x)):
-                return True
+            if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
+                return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
         return False
