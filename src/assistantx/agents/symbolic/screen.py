@@ -247,7 +247,7 @@ class RequestScreen:
             return out
         dropped = [f.piece for f in findings if f.verdict in _DROPPED]
         left = _without(text, cut, dropped)
-        if not set(_words(left)) - self.en.courtesy:
+        if not set(_words(left)) - self.en.courtesy or self._aside(left, live):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)
@@ -269,6 +269,14 @@ class RequestScreen:
         out.evidence += rewrites
         out.text = left
         return out
+
+    def _aside(self, left: str, live: list[Finding]) -> bool:
+        """What is left beside a thanks, wish or withdrawal names nothing of this office and
+        asks for nothing ("..., lifesaver", "..., you're the best"): an aside, not a request."""
+        if not any(f.verdict in ("thanks", "wish", "withdrawn") for f in live):
+            return False
+        words = _words(left)
+        return not set(words) & self._office_words and not self.acts.request(words)
 
     def _answered(self, out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened:
         """No request left: the replies to what was said, or one "Shall I ...?"."""
