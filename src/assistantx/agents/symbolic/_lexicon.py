@@ -52,7 +52,6 @@ COMMON = english.words("common")
 _VERB_OBJECT_STARTS = english.words("object_starts")
 
 _SUBJECT_PRONOUNS = english.words("subject_pronouns")
-_MONTHS = english.words("month_names")
 _MONTH_PREPOSITIONS = english.words("month_prepositions")
 _POLITE = english.words("polite")
 _DATIVE_VERBS = english.words("dative_verbs")
@@ -344,8 +343,12 @@ class Lexicon:
             or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or nxt in self.items))
             or ((t.opens or not prev) and (nxt in ("is", "was", "has") or _finite(nxt)))
         )
-        if prev in _MONTH_PREPOSITIONS and w in _MONTHS:
-            return "word"  # "by May", "in June": a date
+        if language.is_month(w) and not t.possessive:
+            day = language.is_day_number(prev) or language.is_day_number(nxt)
+            if prev in _MONTH_PREPOSITIONS or day or prev == "of":
+                return "word"  # "by May", "in June", "May 3rd", "the 3rd of May": a date
+            if prev == "for":
+                return "ask"  # "print the rota for May": for her, or the month's rota?
         word = (
             modal
             or prev in _WORD_BEFORE
@@ -371,6 +374,8 @@ class Lexicon:
     def word_phrase(self, tokens: list[Token], i: int) -> str:
         """The words a name word would be part of if meant as the ordinary word: "the grace
         period talk" (a determiner before it, the nouns after it)."""
+        if language.is_month(tokens[i].word):
+            return f"the month of {tokens[i].text.capitalize()}"
         start = i - 1 if i > 0 and tokens[i - 1].word in _WORD_BEFORE else i
         end = i + 1
         while (

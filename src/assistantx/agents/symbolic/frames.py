@@ -360,6 +360,8 @@ class InstructionParser:
         word = tokens[m.start].word
         if word in COMMON or word in PRONOUNS or word.isdigit() or len(word) < 2:
             return False
+        if language.is_month(word) or language.is_weekday(word):
+            return False  # "from March", "by Friday": a date
         following = mentions[n + 1] if n + 1 < len(mentions) else None
         if m.possessive and following is not None and following.kind == "item":
             return True  # "Smith's stapler"
