@@ -275,8 +275,12 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
 
 
 def _object_start(tokens: list[Token], m: Mention) -> bool:
-    """Whether a mention opens a verb's object ("my", "some", "a", "the stapler")."""
-    return m.kind in ("self", "item") or tokens[m.start].word in _OBJECT_STARTS
+    """Whether a mention opens a verb's object ("my", "some", "a", "the stapler", "Rich's")."""
+    return (
+        m.kind in ("self", "item")
+        or (m.kind == "person" and m.possessive)
+        or tokens[m.start].word in _OBJECT_STARTS
+    )
 
 
 def prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:

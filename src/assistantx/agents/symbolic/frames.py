@@ -210,7 +210,7 @@ class InstructionParser:
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             previous_cues = bool(clause.cues)
             if made:
-                tasks.extend(made)
+                tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
@@ -471,3 +471,15 @@ def _gaps(text: str, tokens: list[Token]) -> list[str]:
         pos = at + len(t.text) if at >= 0 else pos
         prev_title = t.word in TITLES
     return gaps
+
+
+def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:
+    """ "Tomás needs a clipboard, give him Rich's": the need and the later request are one
+    errand; an earlier clause's fetch of anyone's item is dropped when a later clause fetches
+    the same kind of item for the same person and says whose."""
+    specific = {(t.item, t.recipient) for t in made if t.kind == "transfer" and t.owner}
+    return [
+        t
+        for t in earlier
+        if not (t.kind == "transfer" and t.owner is None and (t.item, t.recipient) in specific)
+    ]

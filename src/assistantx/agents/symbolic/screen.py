@@ -625,6 +625,8 @@ class RequestScreen:
             text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
         subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
         text = self._name_pronouns(text, hints, subjects)
+        text, found = self._dangling_possessives(text)
+        evidence += found
         said = [
             f"{h.item_type}|"
             for h in hints
@@ -649,6 +651,41 @@ class RequestScreen:
                     text = text[: match.start()] + said_as + text[match.end() :]
                     break
         return text, evidence
+
+    def _dangling_possessives(self, text: str) -> tuple[str, list[Evidence]]:
+        """ "lend him mine", "give him Rich's": a possessive with no item after it means the
+        item named last before it (in what is left, else in the whole message)."""
+        evidence: list[Evidence] = []
+
+        def last_item(before: str) -> str | None:
+            for said in (before, self._text):
+                items = [m for m in self.lex.scan(self.lex.tokens(said)) if m.kind == "item"]
+                if items:
+                    return self.office.item_type(items[-1].ids[0]).name
+            return None
+
+        def whole(match: re.Match[str]) -> str:
+            word = match.group(1)
+            owner = re.sub(r"['’]s$", "", word)
+            if word.lower() != "mine" and not self._is_person_word(owner):
+                return word
+            thing = last_item(text[: match.start()])
+            if thing is None:
+                return word
+            said = f"my {thing}" if word.lower() == "mine" else f"{word} {thing}"
+            evidence.append(Evidence(words=word, meaning=said))
+            return said
+
+        pattern = re.compile(
+            r"\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
+            r"for now|for a bit|for today)\b))",
+            re.IGNORECASE,
+        )
+        return pattern.sub(whole, text), evidence
+
+    def _is_person_word(self, word: str) -> bool:
+        tokens = self.lex.tokens(word)
+        return any(m.kind == "person" for m in self.lex.scan(tokens))
 
     def _name_pronouns(self, text: str, hints: list[Hint], subjects: set[str]) -> str:
         """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
