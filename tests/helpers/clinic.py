@@ -1,6 +1,7 @@
 """A small veterinary clinic the reader's tests of this round run on: no sentence of the
 default office fits it. Several people are named with ordinary words or a month (Dawn, Rich,
-May, Hal), a fridge keeps an ice pack, a printer makes printouts."""
+May, Hal, Chip, whose name is also in an item's), a fridge keeps an ice pack, a printer
+makes printouts."""
 
 from __future__ import annotations
 
@@ -9,7 +10,15 @@ from typing import Any
 
 from assistantx.core.office import Office, parse_office
 
-_DESKS = ((5.0, 6.0), (9.0, 6.0), (13.0, 6.0), (17.0, 6.0), (21.0, 6.0), (25.0, 6.0))
+_DESKS = (
+    (5.0, 6.0),
+    (9.0, 6.0),
+    (13.0, 6.0),
+    (17.0, 6.0),
+    (21.0, 6.0),
+    (25.0, 6.0),
+    (29.0, 6.0),
+)
 _PEOPLE = (
     ("dawn", "Dawn Ellis", [{"type": "thermometer"}, {"type": "document"}]),
     ("rich", "Rich Adeyemi", [{"type": "clipboard"}, {"type": "document"}]),
@@ -17,6 +26,7 @@ _PEOPLE = (
     ("hal", "Hal Brooks", [{"type": "thermometer"}, {"type": "document"}]),
     ("ines", "Inés Vidal", [{"type": "clipboard"}, {"type": "document"}]),
     ("tomas", "Tomás Reyes", [{"type": "document"}]),
+    ("chip", "Chip Moreno", [{"type": "chip_scanner"}, {"type": "document"}]),
 )
 
 
@@ -34,6 +44,7 @@ def _raw() -> dict[str, Any]:
         "item_types": [
             {"id": "thermometer", "name": "thermometer"},
             {"id": "clipboard", "name": "clipboard"},
+            {"id": "chip_scanner", "name": "microchip scanner", "synonyms": ["chip reader"]},
             {"id": "ice_pack", "name": "ice pack", "kind": "personal"},
             {"id": "document", "name": "document", "kind": "personal", "synonyms": ["form"]},
             {"id": "file", "name": "file", "kind": "electronic", "synonyms": ["rota"]},

@@ -45,6 +45,7 @@ _COMMON = english.words("common")
 _FILLERS = english.words("courtesy") | frozenset(
     {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
 )
+_AND = frozenset({"and", "or", "plus"})
 _WORD = re.compile(r"[\w]+(?:['’]s)?")
 
 
@@ -142,7 +143,14 @@ def _receiving(words: list[_Word], start: int, end: int, possessive: bool) -> bo
 def _in_roles(office: Office, text: str, requester: str) -> set[str]:
     words = _tokens(text)
     mentions = _mentions(office, words)
-    named = {m.person for m in mentions if _receiving(words, m.start, m.end, m.possessive)}
+    named: set[str] = set()
+    receiving_end = -1  # where the last receiving name ended: "to Hal and Dawn" names both
+    for m in mentions:
+        joined = receiving_end >= 0 and m.start == receiving_end + 1
+        joined = joined and words[receiving_end].folded in _AND
+        if _receiving(words, m.start, m.end, m.possessive) or (joined and not m.possessive):
+            named.add(m.person)
+            receiving_end = m.end
     owners = {m.person for m in mentions if m.possessive or _before(words, m.start) == "from"}
     candidates = {m.person for m in mentions} - owners - {requester}
     if len(candidates) == 1:

@@ -41,6 +41,7 @@ from assistantx.agents.symbolic._lexicon import (
 from assistantx.agents.symbolic._objects import modifiers, verb_uses
 from assistantx.agents.symbolic._parties import (
     Clause,
+    Roles,
     UnresolvedPronoun,
     clause_roles,
     prev_word,
@@ -206,6 +207,7 @@ class InstructionParser:
                 roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            made = _to_each(made, roles)
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             previous_cues = bool(clause.cues)
@@ -300,7 +302,9 @@ class InstructionParser:
         clauses: list[Clause] = [Clause([])]
         for n, m in enumerate(mentions):
             word = tokens[m.start].word
-            hard = any(c in gaps[m.start] for c in ".!?;") and bool(clauses[-1].mentions)
+            gap = gaps[m.start]
+            spaced_dash = gap.strip() in ("-", "–", "—", "--") and gap != gap.strip()
+            hard = (any(c in gap for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
             soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
                 self._starts_request(
                     mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
@@ -483,3 +487,14 @@ def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:
         for t in earlier
         if not (t.kind == "transfer" and t.owner is None and (t.item, t.recipient) in specific)
     ]
+
+
+def _to_each(made: list[Task], roles: Roles) -> list[Task]:
+    """ "send my rota to Hal and to Dawn", "... to Hal and Dawn": a file goes to each person
+    named as a recipient (a copy costs nothing; one physical item could not)."""
+    if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
+        return made
+    people = list(dict.fromkeys([*roles.recipient, *roles.bare]))
+    if len(people) < 2:
+        return made
+    return [made[0].model_copy(update={"recipient": who}) for who in people]

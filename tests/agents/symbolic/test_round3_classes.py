@@ -1,0 +1,73 @@
+"""Classes found by the third blind round, as mechanisms, on the clinic office (own
+sentences): a spaced dash joins sentences; a correction right after a name or item replaces
+it; a colleague's possessive is not the product word it folds to ("Chip's" is not "chips");
+a container noun after a statement about an item is that item; a file goes to every person
+named as a recipient."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.trace import Trace
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.recipients import named_recipients
+from helpers.clinic import clinic
+
+
+@pytest.fixture(scope="module")
+def parser() -> InstructionParser:
+    return InstructionParser(clinic())
+
+
+def _tasks(parser: InstructionParser, text: str) -> list[tuple[str, str | None, str | None, str]]:
+    return [(t.kind, t.item, t.owner, t.recipient) for t in parser.parse(text, "ines").tasks]
+
+
+def test_a_spaced_dash_ends_a_statement(parser: InstructionParser) -> None:
+    assert _tasks(parser, "I'm on the ward all day - please print my rota") == [
+        ("print", "file", "ines", "ines")
+    ]
+    assert _tasks(parser, "my clipboard snapped - could you bring me Rich's?") == [
+        ("transfer", "clipboard", "rich", "ines")
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "task"),
+    [
+        ("bring me Rich's clipboard - sorry, I meant Dawn's", ("clipboard", "dawn", "ines")),
+        ("bring me Rich's clipboard, no wait, Dawn's", ("clipboard", "dawn", "ines")),
+        ("bring Hal my form. Sorry, I meant Dawn", ("document", "ines", "dawn")),
+        ("bring me a clipboard, sorry I mean a thermometer", ("thermometer", None, "ines")),
+    ],
+)
+def test_a_correction_replaces_what_it_corrects(
+    parser: InstructionParser, text: str, task: tuple[str, str | None, str]
+) -> None:
+    assert [(i, o, r) for _, i, o, r in _tasks(parser, text)] == [task], text
+
+
+def test_a_colleagues_possessive_is_not_a_product_word(parser: InstructionParser) -> None:
+    assert _tasks(parser, "could you bring me Chip's clipboard") == [
+        ("transfer", "clipboard", "chip", "ines")
+    ]
+    assert "can't get you any chips" in (parser.parse("bring me some chips", "ines").decline or "")
+
+
+def test_a_container_after_a_statement_is_the_stated_item(parser: InstructionParser) -> None:
+    assert _tasks(parser, "I ran out of thermometers. Could you bring me a box?") == [
+        ("transfer", "thermometer", None, "ines")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text", ["send my rota to Hal and to Dawn", "send my rota to Hal and Dawn"]
+)
+def test_a_file_goes_to_each_recipient_and_the_guard_agrees(
+    parser: InstructionParser, text: str
+) -> None:
+    assert [t[3] for t in _tasks(parser, text)] == ["hal", "dawn"]
+    trace = Trace(instruction_id="i", requester="ines", text=text, reasoner="t", started_at=0)
+    stm = ShortTermMemory(instruction_id="i", requester="ines", text=text, trace=trace)
+    assert named_recipients(clinic(), stm) == {"hal", "dawn"}
