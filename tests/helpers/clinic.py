@@ -30,7 +30,7 @@ _PEOPLE = (
 )
 
 
-def _raw() -> dict[str, Any]:
+def raw_clinic() -> dict[str, Any]:
     return {
         "name": "clinic",
         "locations": [
@@ -86,4 +86,4 @@ def _raw() -> dict[str, Any]:
 
 @functools.cache
 def clinic() -> Office:
-    return parse_office(_raw(), "clinic")
+    return parse_office(raw_clinic(), "clinic")

@@ -151,12 +151,19 @@ def _in_roles(office: Office, text: str, requester: str) -> set[str]:
         if _receiving(words, m.start, m.end, m.possessive) or (joined and not m.possessive):
             named.add(m.person)
             receiving_end = m.end
-    owners = {m.person for m in mentions if m.possessive or _before(words, m.start) == "from"}
-    candidates = {m.person for m in mentions} - owners - {requester}
-    if len(candidates) == 1:
-        for n, w in enumerate(words):
-            if w.folded in _PRONOUNS and _receiving(words, n, n + 1, False):
-                named |= candidates  # "Hal twisted his ankle, take him May's ice pack"
+    for n, w in enumerate(words):
+        if w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False):
+            continue
+        # the one person named who is not the owner of what is handed over (named after
+        # the pronoun: "take him May's ice pack") nor a source ("from May"); "Hal's clipboard
+        # snapped, lend him mine" is about Hal
+        candidates = {
+            m.person
+            for m in mentions
+            if not (m.possessive and m.start > n) and _before(words, m.start) != "from"
+        } - {requester}
+        if len(candidates) == 1:
+            named |= candidates
     return named - {requester}
 
 

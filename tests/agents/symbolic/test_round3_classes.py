@@ -8,10 +8,12 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.agents.symbolic import InstructionParser
+from assistantx.agents.symbolic import InstructionParser, build_factory
+from assistantx.core.settings import Settings
 from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.recipients import named_recipients
+from assistantx.sim.run import run_in_sim
 from helpers.clinic import clinic
 
 
@@ -71,3 +73,12 @@ def test_a_file_goes_to_each_recipient_and_the_guard_agrees(
     trace = Trace(instruction_id="i", requester="ines", text=text, reasoner="t", started_at=0)
     stm = ShortTermMemory(instruction_id="i", requester="ines", text=text, trace=trace)
     assert named_recipients(clinic(), stm) == {"hal", "dawn"}
+
+
+async def test_a_pronoun_recipient_whose_own_item_broke_gets_the_requesters() -> None:
+    # the reader names Hal, and the guard agrees: "Hal's" is the broken one, not the one moved
+    office = clinic()
+    text = "Hal's clipboard snapped, lend him mine"
+    run = await run_in_sim(office, "ines", text, build_factory(office, Settings()))
+    assert run.trace.outcome == "done", run.trace.summary
+    assert run.sim.world.check({"holds": ["hal", "clipboard:ines"]})
