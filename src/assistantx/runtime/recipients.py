@@ -35,9 +35,7 @@ _AT_PLACE = frozenset({"on", "at", "to", "onto", "in", "into"})
 _BY = frozenset({"by"})
 _DOER_VERBS = frozenset({"get", "ask", "have", "let", "make"})
 _DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "countersign"})
-_GIVE = english.words("dative_verbs") | frozenset(
-    {"deliver", "show", "drop", "return", "pass", "print", "copy", "send"}
-)
+_GIVE = english.words("dative_verbs") | english.words("handing_verbs")
 _TITLES = english.words("titles") - {"a", "an", "the", "our"}
 _PLACES = english.words("place_words") | frozenset({"tray", "pigeonhole", "inbox", "chair"})
 _PRONOUNS = english.words("object_pronouns")
@@ -121,18 +119,28 @@ def _before(words: list[_Word], at: int) -> str:
     return words[k].folded if k >= 0 else ""
 
 
-def _is_give(word: str) -> bool:
-    return word in _GIVE or bool(language.verb_lemmas(word) & _GIVE)
+def _is_give(word: str, operations: frozenset[str]) -> bool:
+    """ "bring Hal ...", "printed Hal ...": a giving verb or the office's own operation verb."""
+    verbs = _GIVE | operations
+    return word in verbs or bool(language.verb_lemmas(word) & verbs)
 
 
-def _receiving(words: list[_Word], start: int, end: int, possessive: bool) -> bool:
+def _operation_verbs(office: Office) -> frozenset[str]:
+    return frozenset(
+        language.fold(v.split()[0]) for op in office.operations for v in (*op.verbs, op.name) if v
+    )
+
+
+def _receiving(
+    words: list[_Word], start: int, end: int, possessive: bool, operations: frozenset[str]
+) -> bool:
     """Whether the words at [start, end) (a name or a pronoun) stand in a receiving or doing
     role."""
     before = _before(words, start)
     after = words[end].folded if end < len(words) else ""
     if possessive:  # "on Hal's desk": their place; "Hal's form": an owner
         return before in _AT_PLACE and after in _PLACES
-    if before in _TO or before in _BY or _is_give(before):
+    if before in _TO or before in _BY or _is_give(before, operations):
         return True
     if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
         return True
@@ -143,16 +151,18 @@ def _receiving(words: list[_Word], start: int, end: int, possessive: bool) -> bo
 def _in_roles(office: Office, text: str, requester: str) -> set[str]:
     words = _tokens(text)
     mentions = _mentions(office, words)
+    operations = _operation_verbs(office)
     named: set[str] = set()
     receiving_end = -1  # where the last receiving name ended: "to Hal and Dawn" names both
     for m in mentions:
         joined = receiving_end >= 0 and m.start == receiving_end + 1
         joined = joined and words[receiving_end].folded in _AND
-        if _receiving(words, m.start, m.end, m.possessive) or (joined and not m.possessive):
+        receiving = _receiving(words, m.start, m.end, m.possessive, operations)
+        if receiving or (joined and not m.possessive):
             named.add(m.person)
             receiving_end = m.end
     for n, w in enumerate(words):
-        if w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False):
+        if w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations):
             continue
         # the one person named who is not the owner of what is handed over (named after
         # the pronoun: "take him May's ice pack") nor a source ("from May"); "Hal's clipboard
