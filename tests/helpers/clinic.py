@@ -66,6 +66,7 @@ def raw_clinic() -> dict[str, Any]:
                 "location": f"desk_{n}",
                 "handle": f"@{pid}",
                 "owns": [*owns, {"type": "file"}],
+                "aliases": ["Manager Rich"] if pid == "rich" else [],
             }
             for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
         ],

@@ -37,6 +37,8 @@ _DOER_VERBS = frozenset({"get", "ask", "have", "let", "make"})
 _DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "countersign"})
 _GIVE = english.words("dative_verbs") | english.words("handing_verbs")
 _TITLES = english.words("titles") - {"a", "an", "the", "our"}
+# titles that name a role ("the manager"), not titles of address ("Dr.", "Ms")
+_ROLE_TITLES = _TITLES - {"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
 _PLACES = english.words("place_words") | frozenset({"tray", "pigeonhole", "inbox", "chair"})
 _PRONOUNS = english.words("object_pronouns")
 _COMMON = english.words("common")
@@ -44,6 +46,7 @@ _FILLERS = english.words("courtesy") | frozenset(
     {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
 )
 _AND = frozenset({"and", "or", "plus"})
+_ARTICLES = frozenset({"the", "our", "a", "an"})
 _WORD = re.compile(r"[\w]+(?:['’]s)?")
 
 
@@ -83,6 +86,10 @@ def _names(office: Office) -> list[tuple[tuple[str, ...], str]]:
             key = tuple(language.fold(w) for w in re.findall(r"\w+", s))
             if key:
                 found.setdefault(key, set()).add(p.id)
+        for alias in p.aliases:  # "Manager Mao": "the manager" names them too
+            for w in re.findall(r"\w+", language.fold(alias)):
+                if w in _ROLE_TITLES:
+                    found.setdefault((w,), set()).add(p.id)
     return sorted(((k, i) for k, ids in found.items() for i in ids), key=lambda x: -len(x[0]))
 
 
@@ -98,8 +105,9 @@ def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
                 continue
             first = words[n].text
             # a name that is also a word counts only when written as a name ("May", not "may")
-            if len(key) == 1 and key[0] in _COMMON | {"may", "will"} and not first[:1].isupper():
-                if key[0] != language.fold(person):
+            word = key[0]
+            if len(key) == 1 and not first[:1].isupper() and word not in _ROLE_TITLES:
+                if word in _COMMON | {"may", "will"} or language.is_english_word(word):
                     continue
             hit = _Mention(person, n, n + len(key), words[n + len(key) - 1].possessive)
             break
@@ -112,9 +120,10 @@ def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
 
 
 def _before(words: list[_Word], at: int) -> str:
-    """The word before position ``at``, skipping titles ("to Dr. Hal")."""
+    """The word before position ``at``, skipping titles and articles ("to Dr. Hal", "by the
+    manager")."""
     k = at - 1
-    while k >= 0 and words[k].folded in _TITLES:
+    while k >= 0 and (words[k].folded in _TITLES or words[k].folded in _ARTICLES):
         k -= 1
     return words[k].folded if k >= 0 else ""
 

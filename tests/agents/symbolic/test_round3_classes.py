@@ -82,3 +82,15 @@ async def test_a_pronoun_recipient_whose_own_item_broke_gets_the_requesters() ->
     run = await run_in_sim(office, "ines", text, build_factory(office, Settings()))
     assert run.trace.outcome == "done", run.trace.summary
     assert run.sim.world.check({"holds": ["hal", "clipboard:ines"]})
+
+
+def test_a_role_title_in_an_alias_names_its_holder(parser: InstructionParser) -> None:
+    # Rich's alias is "Manager Rich": "by the manager" is Rich, and the guard agrees
+    text = "could you get my form signed by the manager"
+    assert [(t.kind, t.actor) for t in parser.parse(text, "ines").tasks] == [("sign", "rich")]
+    trace = Trace(instruction_id="i", requester="ines", text=text, reasoner="t", started_at=0)
+    stm = ShortTermMemory(instruction_id="i", requester="ines", text=text, trace=trace)
+    assert named_recipients(clinic(), stm) == {"rich"}
+    # followed by a name, the title is a title: "Manager Rich", not two people
+    frame = parser.parse("take my form to Manager Rich", "ines")
+    assert [t.recipient for t in frame.tasks] == ["rich"]
