@@ -40,7 +40,7 @@ def sim_assistant(
     )
 
     async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester)
+        sim.register_instruction(stm.instruction_id, stm.requester, text=stm.text)
 
     assistant.on_instruction_start(register)
     return assistant

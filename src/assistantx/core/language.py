@@ -12,13 +12,16 @@ time):
 - ``rapidfuzz``: edit distances (optimal string alignment: one swap of neighbours is one edit)
   for typos, with a length-aware limit;
 - ``unicodedata`` (the standard library): NFKC normalization, case folding and diacritics-blind
-  keys ("José Müller" and "Jose Muller" are the same name).
+  keys ("José Müller" and "Jose Muller" are the same name);
+- ``calendar`` (the standard library): the names of the months and weekdays, so a date ("from
+  March", "May 3rd", "by Friday") is never read as a person.
 
 Everything here is pure and cached; the first call loads the word lists (about two seconds).
 """
 
 from __future__ import annotations
 
+import calendar
 import functools
 import re
 import unicodedata
@@ -41,6 +44,11 @@ _MIN_TYPO_LENGTH = 4
 _LONG_WORD = 8
 
 _OPEN_CLASSES = ("NOUN", "VERB", "ADJ", "ADV", "AUX")
+
+# Full names only: the abbreviations are words or names of their own ("sun", "jan", "mar").
+_MONTHS = frozenset(m.lower() for m in calendar.month_name if m)
+_WEEKDAYS = frozenset(d.lower() for d in calendar.day_name if d)
+_DAY_NUMBER = re.compile(r"^(?:[12]?\d|3[01])(?:st|nd|rd|th)?$")
 
 
 def fold(text: str) -> str:
@@ -157,3 +165,18 @@ def is_finite_verb(word: str) -> bool:
 def is_noun(word: str) -> bool:
     """Whether the dictionary knows the word as a noun."""
     return "NOUN" in lemmas(word)
+
+
+def is_month(word: str) -> bool:
+    """ "march", "May": the name of a month."""
+    return word.lower() in _MONTHS
+
+
+def is_weekday(word: str) -> bool:
+    """ "friday": the name of a day of the week."""
+    return word.lower() in _WEEKDAYS
+
+
+def is_day_number(word: str) -> bool:
+    """ "3", "3rd", "21st": a day of a month."""
+    return bool(_DAY_NUMBER.match(word.lower()))

@@ -8,10 +8,12 @@ reading can waste a step but cannot hand anything to the wrong person:
 1. **Parties.** A code (and a forwarded file) goes only to the requester; the item's owner;
    the keeper of the facility where the owner keeps it (a fridge's keeper, for a deposit); a
    guard of a facility whose operation works on or makes the item (a copy, a heat, a print);
-   for ``sign``/``seal``, a person the requester named (and, for a seal, anyone who owns the
-   seal); for ``collect``, a person the requester named (the recipient). "Named" means the
-   person's name, id or alias stands in the requester's own words (the instruction or their
-   later messages in their DM).
+   for ``sign``/``seal``, a person the requester named as the one to do it (and, for a seal,
+   anyone who owns the seal); for ``collect``, a person the requester named as the recipient.
+   "Named as" means in that role, in the requester's own words (``recipients``): "take it to
+   Hal", "bring Hal one", "get Hal to sign", a reply that is just the name, a yes to "Shall I
+   bring Hal one?". A name standing elsewhere ("... because Rich asked for it", "Rich wants
+   it on the board", "Rich's form") makes no one a party.
 2. **Agreement.** Anyone but the requester must have answered in this instruction's dialogue
    before they are handed a code (nobody gets a code for a hand-over they never agreed to).
 3. **Consent.** An item owned by someone other than the requester leaves its owner only with the
@@ -43,6 +45,7 @@ from assistantx.core.office import Office, Person
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.task_schema import SEAL_TOOL
 from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.recipients import named_recipients
 
 _COMMON = english.words("common")
 RefusalRule = Literal["not_a_party", "no_answer", "no_consent"]
@@ -76,7 +79,7 @@ def check(office: Office, stm: ShortTermMemory, action: Action) -> Refusal | Non
             "not_a_party",
             f"{contact} is not a party to {item}: a locker code goes only to the requester, the "
             "item's owner, the keeper of where it is kept, the guard of the facility doing the "
-            "work, or a person the requester named",
+            "work, or a person the requester named as the recipient",
         )
     if contact != stm.requester and not _answered(stm, contact):
         return Refusal(
@@ -110,13 +113,13 @@ def _check_forward(office: Office, stm: ShortTermMemory, action: ForwardFile) ->
     item_type, _, owner = file.partition(":")
     target = action.target
     parties = {stm.requester, owner, *_facility_workers(office, item_type)}
-    if target not in parties and target not in named_people(office, stm):
+    if target not in parties and target not in named_recipients(office, stm):
         if target not in named_groups(office, stm):
             return Refusal(
                 "not_a_party",
                 f"{target} is not a party to {file}: a file goes only to the requester, its "
                 "owner, the guard of the facility that works on it, or someone the requester "
-                "named",
+                "named as the recipient",
             )
     if owner != stm.requester and _is_person(office, owner):
         if file not in stm.files_received.get(owner, []):
@@ -203,11 +206,11 @@ def _is_party(office: Office, stm: ShortTermMemory, contact: str, item: str, pur
         keeper = _keeper(office, owner, item_type)
         return keeper is not None and contact in keeper
     if purpose == _COLLECT:
-        return contact in named_people(office, stm)
+        return contact in named_recipients(office, stm)
     if purpose in _BY_HAND:
         if purpose == "seal" and _owns(office, contact, SEAL_TOOL):
             return True
-        return contact in named_people(office, stm)
+        return contact in named_recipients(office, stm)
     # work at a facility (copy, heat, produce, ...): its guards run it
     return contact in _facility_workers(office, item_type)
 
@@ -228,19 +231,6 @@ def _facility_workers(office: Office, item_type: str) -> set[str]:
     """Guards of the facilities whose operations take or make ``item_type``."""
     ops = {o.id for o in office.operations if item_type in (o.input, o.product)}
     return {g for f in office.facilities if ops & set(f.operations) for g in f.guards}
-
-
-def named_people(office: Office, stm: ShortTermMemory) -> set[str]:
-    """People the requester named in their own words (the instruction, their later messages
-    in their own chat)."""
-    own = ChatRef(kind="dm", id=stm.requester)
-    texts = [stm.text] + [
-        t.text
-        for t in stm.dialogue
-        if t.direction == "in" and t.person == stm.requester and t.chat == own
-    ]
-    words = " ".join(texts)
-    return {p.id for p in office.people if p.id != stm.requester and _mentions(words, p)}
 
 
 def named_groups(office: Office, stm: ShortTermMemory) -> set[str]:

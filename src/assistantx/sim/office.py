@@ -194,12 +194,21 @@ class SimOffice:
         return datetime.fromtimestamp(self.clock.now(), tz=UTC)
 
     def register_instruction(
-        self, instruction_id: str, requester: str, wish: Wish | None = None
+        self,
+        instruction_id: str,
+        requester: str,
+        wish: Wish | None = None,
+        *,
+        text: str | None = None,
     ) -> None:
         """The requester asked for it, so they know what the robot comes for; ``wish``: what
-        they really want, which their answers to the assistant's questions follow."""
+        they really want, which their answers to the assistant's questions follow; without
+        it, ``text`` (what they wrote): they answer from their own words, as the requester,
+        never as a colleague who was asked for something."""
         self.told.add((instruction_id, requester))
         self.requesters[instruction_id] = requester
+        if wish is None and text is not None:
+            wish = Wish.from_words(self.office, requester, text)
         if wish is not None:
             self.wishes[instruction_id] = wish
 

@@ -13,6 +13,12 @@ they answer the question that was asked, from the task's truth (its goal milesto
 A task that asks for nothing (its goal is only that the requester is told) answers every
 offer with "No, thanks." The rules read only the question and the truth, never the
 assistant's reading, so a wrong reading is corrected rather than confirmed.
+
+Without a task (``assistantx run``: only the words they wrote are known, ``Wish.from_words``),
+the requester still answers the question asked and nothing else: of two options, the one
+whose words they wrote; to an offer, "No, thanks." (they asked for what they wrote, and a
+yes would be a guess at a wish nobody knows); to anything else, that they have nothing to add.
+They never answer as a colleague would ("Yes, I have a stapler"), which read as a yes.
 """
 
 from __future__ import annotations
@@ -47,6 +53,20 @@ class Wish:
     items: tuple[str, ...] = ()  # item type ids, products and their inputs alike
     wants_something: bool = True
     people: frozenset[str] = field(default_factory=frozenset)
+    # the words they wrote, when no task says what they want (``from_words``)
+    words: str | None = None
+
+    @classmethod
+    def from_words(cls, office: Office, requester: str, text: str) -> Wish:
+        """What is known of the wish when only the request's words are: the people and items
+        it names (for choosing between options), nothing about whether they want an offer."""
+        people = _people_in(office, text) - {requester}
+        return cls(
+            requester=requester,
+            items=tuple(mentioned_item_types(office, text)),
+            people=frozenset(people),
+            words=text,
+        )
 
     @classmethod
     def from_goal(cls, office: Office, requester: str, goal: list[Milestone]) -> Wish:
@@ -90,11 +110,13 @@ class Wish:
 def answer(office: Office, wish: Wish, question: str) -> str:
     """What the requester says to ``question``."""
     options = _options(question)
+    if wish.words is not None:
+        return _from_words(wish.words, question, options)
     if len(options) >= 2:
         chosen = _choose(office, wish, options)
         if chosen is not None:
             return chosen
-    if _OFFER.search(question) or question.strip().lower().startswith(("is that", "is it ok")):
+    if _is_offer(question):
         return "Yes, please." if _fits(office, wish, question) else "No, thanks."
     if not wish.wants_something:
         return "Nothing, thanks."
@@ -109,6 +131,49 @@ def answer(office: Office, wish: Wish, question: str) -> str:
     if re.search(r"\b(which|what)\b", lowered) and wish.items:
         return f"The {_item_name(office, wish.items[0])}."
     return _plainly(office, wish)
+
+
+def _is_offer(question: str) -> bool:
+    """Whether the question, in its last sentence, offers to do something ("As far as I know,
+    Rich has one. Shall I bring you one?")."""
+    last = re.split(r"(?<=[.!?])\s+", question.strip())[-1]
+    return bool(_OFFER.search(last)) or last.lower().startswith(("is that", "is it ok"))
+
+
+NOTHING_TO_ADD = "Sorry, I don't know more than I wrote."
+
+
+def _from_words(words: str, question: str, options: list[str]) -> str:
+    """The answer of a requester of whom only the request's words are known."""
+    if len(options) >= 2:
+        chosen = _option_written(words, options)
+        if chosen is not None:
+            return chosen
+    if _is_offer(question):
+        return "No, thanks."
+    return NOTHING_TO_ADD
+
+
+def _option_written(words: str, options: list[str]) -> str | None:
+    """The option whose words the request has most of ("the grace period talk" for "print
+    the flyer for the grace period talk"); None when no option stands out."""
+    said = set(_plain_words(words))
+
+    def share(option: str) -> float:
+        mine = [w for w in _plain_words(option) if w not in _ARTICLES]
+        return sum(w in said for w in mine) / len(mine) if mine else 0.0
+
+    scored = sorted((share(o) for o in options), reverse=True)
+    if scored[0] == 0 or scored[0] == scored[1]:
+        return None
+    return next(o for o in options if share(o) == scored[0])
+
+
+_ARTICLES = frozenset({"the", "a", "an", "my", "your", "one"})
+
+
+def _plain_words(text: str) -> list[str]:
+    return re.findall(r"\w+", text.casefold())
 
 
 def _options(question: str) -> list[str]:

@@ -55,7 +55,7 @@ async def run_in_sim(
     )
 
     async def register(stm: ShortTermMemory) -> None:
-        sim.register_instruction(stm.instruction_id, stm.requester, wish)
+        sim.register_instruction(stm.instruction_id, stm.requester, wish, text=stm.text)
 
     assistant.on_instruction_start(register)
 

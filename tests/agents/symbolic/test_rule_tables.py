@@ -17,9 +17,17 @@ from assistantx.core.office import Office
 
 
 def _site(
-    prev: str = "", nxt: str = "", following: Mention | None = None, **kw: bool
+    prev: str = "", nxt: str = "", following: Mention | None = None, then: str = "", **kw: bool
 ) -> PersonSite:
-    return PersonSite(prev, nxt, following, kw.get("possessive", False), kw.get("back", False))
+    return PersonSite(
+        prev,
+        nxt,
+        following,
+        kw.get("possessive", False),
+        kw.get("back", False),
+        kw.get("subject", False),
+        then,
+    )
 
 
 _DESK = Mention("word", 3, 4, ("desk",))
@@ -32,7 +40,12 @@ PERSON_CASES = [
     (_site("", following=_DESK, possessive=True), "Wang's desk: named, no role yet"),
     (_site("get", following=_SIGN, possessive=True), "Wang's signature: Wang signs"),
     (_site("from", following=_ITEM, possessive=True), "Wang's stapler: an owner of the item"),
-    (_site("", nxt="needs"), "Min needs / gets scissors: the one in need receives"),
+    (_site("because", nxt="needs"), "because Rich ...: the reason, not a party"),
+    (
+        _site("", nxt="wants", then="it", subject=True),
+        "Rich wants it (on the board): a wish about what was asked, not a recipient",
+    ),
+    (_site("", nxt="needs", subject=True), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),
     (_site("by"), "by Wang: the doer"),
     (_site("to", back=True), "back to Wang: the owner, given back"),
@@ -41,6 +54,10 @@ PERSON_CASES = [
     (_site("ask"), "Wang to sign, ask Wang: the doer"),
     (_site("bring", following=_ITEM), "give Wang a stapler: the recipient"),
     (_site("bring", following=_SIGN), "otherwise: named, no role yet"),
+    (
+        _site("and", nxt="asked", subject=True),
+        "Rich asked for it, Hal said so: the subject of a statement, not a party",
+    ),
     (_site("and"), "otherwise: named, no role yet"),
 ]
 

@@ -12,6 +12,7 @@ from symbolic_run import answer_first_question, expected_tasks, run_instruction
 from assistantx.agents.symbolic import InstructionParser, Task
 from assistantx.core.office import Office, parse_office
 from assistantx.core.ports.messenger import ChatRef
+from assistantx.sim.requester import NOTHING_TO_ADD
 
 PARAPHRASES = Path(__file__).with_name("paraphrases.yaml")
 
@@ -138,7 +139,9 @@ async def test_unanswered_question_ends_without_acting(office: Office) -> None:
 async def test_answer_that_says_nothing_gets_one_reask_then_a_failed_stop(
     office: Office, text: str, unclear: str
 ) -> None:
-    # the rule-based requester answers every question with "Yes, I'm here. What do you need?"
+    # without a task's goal the simulated requester knows only what they wrote: they answer
+    # that they have nothing to add (before, they answered as a colleague, "Yes, I'm here.
+    # What do you need?", which no requester would say to "which item?")
     run = await run_instruction(office, "lee", text)
     trace = run.stm.trace
     asked = [r.action for r in trace.actions() if r.action.type == "inquire"]
@@ -148,7 +151,7 @@ async def test_answer_that_says_nothing_gets_one_reask_then_a_failed_stop(
     last = run.sim.messenger.sent[-1]
     assert last.chat.id == "lee" and last.text.startswith("[failed]")
     assert repr(text) in last.text and unclear in last.text
-    assert "Yes, I'm here" in last.text  # the answer that did not help is quoted
+    assert NOTHING_TO_ADD in last.text  # the answer that did not help is quoted
     assert not run.sim.world.handovers()
 
 

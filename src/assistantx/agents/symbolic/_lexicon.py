@@ -52,8 +52,11 @@ COMMON = english.words("common")
 _VERB_OBJECT_STARTS = english.words("object_starts")
 
 _SUBJECT_PRONOUNS = english.words("subject_pronouns")
-_MONTHS = english.words("month_names")
 _MONTH_PREPOSITIONS = english.words("month_prepositions")
+# Titles of address, not roles: "Dr. Zhang" does not make "the doctor" Zhang.
+_COURTESY_TITLES = frozenset(
+    {"a", "an", "the", "our", "mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
+)
 _POLITE = english.words("polite")
 _DATIVE_VERBS = english.words("dative_verbs")
 # The syntax around a name word that makes it a person, or the ordinary word.
@@ -111,6 +114,8 @@ class Lexicon:
     operation_words: frozenset[str] = frozenset()  # every form of the office's own verbs
     vocabulary: list[str] = field(default_factory=list)
     _vocabulary_set: frozenset[str] = frozenset()
+    # "the manager": a title that stands in someone's alias ("Manager Mao") names them
+    roles: dict[str, set[str]] = field(default_factory=dict)
     # the reading the requester chose for a name word they were asked about (word → reading)
     chosen: dict[str, Reading] = field(default_factory=dict)
 
@@ -135,6 +140,10 @@ class Lexicon:
                     lex.people.setdefault(key, set()).add(p.id)
             for word in p.name.split():
                 lex.name_words.setdefault(key_of(word), set()).add(p.id)
+            for alias in p.aliases:
+                for word in language.fold(alias).replace(".", " ").split():
+                    if word in TITLES and word not in _COURTESY_TITLES:
+                        lex.roles.setdefault(word, set()).add(p.id)
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
                 key = key_of(name)
@@ -216,7 +225,9 @@ class Lexicon:
     # -- mentions ------------------------------------------------------------------------
     def scan(self, tokens: list[Token]) -> list[Mention]:
         """Mentions in text order; titles and articles are skipped inside phrases."""
-        content = [i for i, t in enumerate(tokens) if t.word not in TITLES]
+        content = [
+            i for i, t in enumerate(tokens) if t.word not in TITLES or self._role_at(tokens, i)
+        ]
         mentions: list[Mention] = []
         k = 0
         while k < len(content):
@@ -230,6 +241,13 @@ class Lexicon:
             mentions.append(mention)
             k += used
         return mentions
+
+    def _role_at(self, tokens: list[Token], i: int) -> bool:
+        """ "by the manager": a role title with no name after it names the one it stands for."""
+        if tokens[i].word not in self.roles:
+            return False
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+        return nxt not in self.people and nxt not in self.name_words
 
     def _match_at(
         self, tokens: list[Token], content: list[int], k: int
@@ -287,6 +305,8 @@ class Lexicon:
     def _single(self, tokens: list[Token], i: int) -> Mention:
         t = tokens[i]
         w = t.word
+        if w in self.roles and self._role_at(tokens, i):
+            return Mention("person", i, i + 1, tuple(sorted(self.roles[w])), t.possessive, t.text)
         if w in self.name_words:
             reading = self.name_reading(tokens, i)
             chosen = w in self.chosen  # the requester said whom they meant
@@ -344,8 +364,12 @@ class Lexicon:
             or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or nxt in self.items))
             or ((t.opens or not prev) and (nxt in ("is", "was", "has") or _finite(nxt)))
         )
-        if prev in _MONTH_PREPOSITIONS and w in _MONTHS:
-            return "word"  # "by May", "in June": a date
+        if language.is_month(w) and not t.possessive:
+            day = language.is_day_number(prev) or language.is_day_number(nxt)
+            if prev in _MONTH_PREPOSITIONS or day or prev == "of":
+                return "word"  # "by May", "in June", "May 3rd", "the 3rd of May": a date
+            if prev == "for":
+                return "ask"  # "print the rota for May": for her, or the month's rota?
         word = (
             modal
             or prev in _WORD_BEFORE
@@ -371,6 +395,8 @@ class Lexicon:
     def word_phrase(self, tokens: list[Token], i: int) -> str:
         """The words a name word would be part of if meant as the ordinary word: "the grace
         period talk" (a determiner before it, the nouns after it)."""
+        if language.is_month(tokens[i].word):
+            return f"the month of {tokens[i].text.capitalize()}"
         start = i - 1 if i > 0 and tokens[i - 1].word in _WORD_BEFORE else i
         end = i + 1
         while (

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic._lexicon import Mention, Token
-from assistantx.core import english
+from assistantx.core import english, language
 from assistantx.memory.names import TITLES
 
 _DATIVE_VERBS = english.words("dative_verbs")
@@ -28,6 +28,11 @@ _MEET_AT = frozenset({"to", "at", "for", "on", "by"})
 # "Min needs scissors": the one who needs the item gets it.
 _NEEDS = english.words("need_verbs") | english.words("receive_verbs")
 _DIRECT = frozenset({"ask", "have", "let", "tell"})
+# "because Rich asked for it", "since Hal is out": a clause that gives a reason; a person in
+# it is why, not who gets or does anything.
+_REASON = frozenset({"because", "since", "cos", "coz", "cause", "as"})
+# "Rich wants it": the thing already asked for, not a new one ("Min needs one" is new)
+_BACK_REFERENCES = frozenset({"it", "them", "this", "that", "these", "those"})
 
 
 class UnresolvedPronoun(Exception):
@@ -76,6 +81,8 @@ class PersonSite:
     following: Mention | None  # the next mention
     possessive: bool
     back: bool  # "back to Wang"
+    subject: bool = False  # a finite verb follows: "Rich asked", "Hal said"
+    then: str = ""  # the word after the next one ("it" in "Rich wants it")
 
     @property
     def at_place(self) -> bool:
@@ -84,7 +91,7 @@ class PersonSite:
         return self.possessive and f is not None and f.kind == "word" and f.ids[0] in _PLACE_WORDS
 
 
-Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner"]
+Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner", "context"]
 
 
 @dataclass(frozen=True)
@@ -113,6 +120,16 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     ),
     PersonRule("Wang's stapler: an owner of the item", lambda s: s.possessive, "owner"),
     PersonRule(
+        "because Rich ...: the reason, not a party",
+        lambda s: s.prev in _REASON,
+        "context",
+    ),
+    PersonRule(
+        "Rich wants it (on the board): a wish about what was asked, not a recipient",
+        lambda s: s.nxt in _NEEDS and s.then in _BACK_REFERENCES,
+        "context",
+    ),
+    PersonRule(
         "Min needs / gets scissors: the one in need receives",
         lambda s: s.nxt in _NEEDS,
         "recipient",
@@ -131,6 +148,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         lambda s: s.prev in _DATIVE_VERBS and s.following is not None and s.following.kind != "cue",
         "recipient",
     ),
+    PersonRule(
+        "Rich asked for it, Hal said so: the subject of a statement, not a party",
+        lambda s: s.subject,
+        "context",
+    ),
     PersonRule("otherwise: named, no role yet", lambda s: True, "bare"),
 )
 
@@ -148,6 +170,8 @@ def person_role(tokens: list[Token], ms: list[Mention], n: int, who: str, roles:
         following=ms[n + 1] if n + 1 < len(ms) else None,
         possessive=m.possessive,
         back=m.start >= 2 and tokens[m.start - 2].word == "back",
+        subject=m.end < len(tokens) and language.is_finite_verb(tokens[m.end].word),
+        then=tokens[m.end + 1].word if m.end + 1 < len(tokens) else "",
     )
     match person_rule(site).slot:
         case "recipient":
@@ -163,6 +187,8 @@ def person_role(tokens: list[Token], ms: list[Mention], n: int, who: str, roles:
             roles.bare.append(who)
         case "owner":
             pass  # attached to the item that follows (``owner_of``)
+        case "context":
+            pass  # why the request was made ("because Rich asked"): no role in it
 
 
 def clause_roles(
@@ -249,8 +275,12 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
 
 
 def _object_start(tokens: list[Token], m: Mention) -> bool:
-    """Whether a mention opens a verb's object ("my", "some", "a", "the stapler")."""
-    return m.kind in ("self", "item") or tokens[m.start].word in _OBJECT_STARTS
+    """Whether a mention opens a verb's object ("my", "some", "a", "the stapler", "Rich's")."""
+    return (
+        m.kind in ("self", "item")
+        or (m.kind == "person" and m.possessive)
+        or tokens[m.start].word in _OBJECT_STARTS
+    )
 
 
 def prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:

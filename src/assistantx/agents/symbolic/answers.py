@@ -51,3 +51,20 @@ def stance(text: str) -> Stance:
     if positive:
         return "yes"
     return "unclear"
+
+
+# "I have one", "I've got a stapler", "I found mine": to an offer of a thing, saying that one
+# has it is a no, however it starts ("Yes, I have a stapler" answers "Shall I bring you one?"
+# as a colleague would, and means they need none).
+_HAVE_ONE = re.compile(
+    r"\b(i have|ive got|i got|i found|i already|got one|got mine|happy to lend|you can borrow|"
+    r"you can have)\b"
+)
+
+
+def offer_stance(text: str) -> Stance:
+    """Whether a reply to an offer ("Shall I bring you one?") accepts it."""
+    t = _clean(text)
+    if _HAVE_ONE.search(t) and not re.search(r"\b(please|need|want)\b", t):
+        return "no"
+    return stance(text)

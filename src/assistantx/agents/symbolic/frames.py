@@ -41,11 +41,12 @@ from assistantx.agents.symbolic._lexicon import (
 from assistantx.agents.symbolic._objects import modifiers, verb_uses
 from assistantx.agents.symbolic._parties import (
     Clause,
+    Roles,
     UnresolvedPronoun,
     clause_roles,
     prev_word,
 )
-from assistantx.agents.symbolic.answers import stance
+from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.screen import RequestScreen
 from assistantx.core import english, language
@@ -206,11 +207,12 @@ class InstructionParser:
                 roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            made = _to_each(made, roles)
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             previous_cues = bool(clause.cues)
             if made:
-                tasks.extend(made)
+                tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
@@ -220,13 +222,16 @@ class InstructionParser:
 
     def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
         """Re-parse after clarifying answers: a yes or no to "Shall I ...?", the reading the
-        answer chose, else the original with the answers, else the answer."""
+        answer chose, else the original with the answers; the answer alone only when the
+        question asked for the whole request. A reply answers the question asked: it never
+        starts a request of its own ("Yes, I have a stapler" to "Shall I bring you one?" is
+        a no, not a yes nor a new request for a stapler)."""
         frame = self.parse(text, requester)
         for answer in answers:
             if frame.understood or frame.decline is not None:
                 break
             if frame.question is not None and "Shall I" in frame.question:
-                yes_no = stance(answer)
+                yes_no = offer_stance(answer)
                 if yes_no == "yes":
                     offer = self.screen.screen(text, requester).offer
                     frame = self.parse(offer or text, requester, confirmed=True)
@@ -245,9 +250,13 @@ class InstructionParser:
                 finally:
                     self.lex.chosen = {}
                 continue
+            asked_everything = frame.question == NOT_UNDERSTOOD
             combined = self.parse(f"{text}. {answer}", requester)
+            if combined.understood or not asked_everything:
+                frame = combined
+                continue
             alone = self.parse(answer, requester)
-            frame = combined if combined.understood or not alone.understood else alone
+            frame = alone if alone.understood else combined
         return frame
 
     def _chosen_reading(self, text: str, answer: str) -> dict[str, Reading]:
@@ -293,7 +302,9 @@ class InstructionParser:
         clauses: list[Clause] = [Clause([])]
         for n, m in enumerate(mentions):
             word = tokens[m.start].word
-            hard = any(c in gaps[m.start] for c in ".!?;") and bool(clauses[-1].mentions)
+            gap = gaps[m.start]
+            spaced_dash = gap.strip() in ("-", "–", "—", "--") and gap != gap.strip()
+            hard = (any(c in gap for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
             soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
                 self._starts_request(
                     mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
@@ -353,6 +364,8 @@ class InstructionParser:
         word = tokens[m.start].word
         if word in COMMON or word in PRONOUNS or word.isdigit() or len(word) < 2:
             return False
+        if language.is_month(word) or language.is_weekday(word):
+            return False  # "from March", "by Friday": a date
         following = mentions[n + 1] if n + 1 < len(mentions) else None
         if m.possessive and following is not None and following.kind == "item":
             return True  # "Smith's stapler"
@@ -462,3 +475,26 @@ def _gaps(text: str, tokens: list[Token]) -> list[str]:
         pos = at + len(t.text) if at >= 0 else pos
         prev_title = t.word in TITLES
     return gaps
+
+
+def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:
+    """ "Tomás needs a clipboard, give him Rich's": the need and the later request are one
+    errand; an earlier clause's fetch of anyone's item is dropped when a later clause fetches
+    the same kind of item for the same person and says whose."""
+    specific = {(t.item, t.recipient) for t in made if t.kind == "transfer" and t.owner}
+    return [
+        t
+        for t in earlier
+        if not (t.kind == "transfer" and t.owner is None and (t.item, t.recipient) in specific)
+    ]
+
+
+def _to_each(made: list[Task], roles: Roles) -> list[Task]:
+    """ "send my rota to Hal and to Dawn", "... to Hal and Dawn": a file goes to each person
+    named as a recipient (a copy costs nothing; one physical item could not)."""
+    if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
+        return made
+    people = list(dict.fromkeys([*roles.recipient, *roles.bare]))
+    if len(people) < 2:
+        return made
+    return [made[0].model_copy(update={"recipient": who}) for who in people]

@@ -58,7 +58,14 @@ from assistantx.core.task_schema import DeclineOutcome, Evidence, Hint
 from assistantx.memory.names import normalize
 
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
-_SENTENCE_END = re.compile(r"[.!?;\n]+")
+# A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
+_SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
+# "sorry, I meant ...", "no wait, ...", "I mean ...": the words after it correct what was just said
+_CORRECTION = re.compile(
+    r"(?:[,;.!?]|\s[-–—]+)\s*(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no)\b"
+    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b)[,:]?\s*",
+    re.IGNORECASE,
+)
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
 _DETERMINERS = english_words("screen_determiners")
 
@@ -226,6 +233,7 @@ class RequestScreen:
     RULES: tuple[tuple[Verdict, Rule], ...] = ()  # filled in below the class
 
     def screen(self, text: str, requester: str) -> Screened:
+        text, corrected = self._corrected(text)
         self._text = text
         pieces = _pieces(text)
         findings: list[Finding] = []
@@ -236,7 +244,10 @@ class RequestScreen:
                     findings.append(found)
                     break
         out = Screened(text=text)
-        out.evidence = [Evidence(words=f.piece.text, meaning=f.meaning) for f in findings]
+        out.evidence = [
+            *corrected,
+            *(Evidence(words=f.piece.text, meaning=f.meaning) for f in findings),
+        ]
         out.hints = [f.hint for f in findings if f.hint is not None]
         withdrawn = [f for f in findings if f.verdict == "withdrawn"]
         cut = withdrawn[-1].piece.end if withdrawn else 0
@@ -247,7 +258,7 @@ class RequestScreen:
             return out
         dropped = [f.piece for f in findings if f.verdict in _DROPPED]
         left = _without(text, cut, dropped)
-        if not set(_words(left)) - self.en.courtesy:
+        if not set(_words(left)) - self.en.courtesy or self._aside(left, live):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)
@@ -269,6 +280,59 @@ class RequestScreen:
         out.evidence += rewrites
         out.text = left
         return out
+
+    def _corrected(self, text: str) -> tuple[str, list[Evidence]]:
+        """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
+        correction of one person or item right after it is said replaces it; the retracted
+        one is never acted on (nor is the whole message dropped as withdrawn)."""
+        match = _CORRECTION.search(text)
+        if match is None:
+            return text, []
+        before, after = text[: match.start()], text[match.end() :]
+        fix = re.split(r"[.!?;\n]", after, maxsplit=1)[0]
+        rest = after[len(fix) :]
+        tokens = self.lex.tokens(fix)
+        if not tokens or len(tokens) > 5:
+            return text, []
+        mentions = [m for m in self.lex.scan(tokens) if m.kind in ("person", "item")]
+        if len(mentions) != 1 or len(mentions[0].ids) != 1:
+            return text, []
+        new = mentions[0]
+        names = self._spellings(new.kind, before)
+        if not names:
+            return text, []
+        pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
+        spots = list(re.finditer(rf"\b(?:{pattern})\b", before, re.IGNORECASE))
+        if not spots:
+            return text, []
+        old = spots[-1]
+        said = new.text.replace("’", "'").removesuffix("'s")
+        if new.kind == "item":
+            said = self.office.item_type(new.ids[0]).name
+        fixed = before[: old.start()] + said + before[old.end() :] + rest
+        return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+    def _spellings(self, kind: str, text: str) -> set[str]:
+        """How the people (or items) ``text`` names are written there."""
+        tokens = self.lex.tokens(text)
+        ids = {i for m in self.lex.scan(tokens) if m.kind == kind for i in m.ids}
+        if kind == "person":
+            people = [self.office.person(i) for i in ids]
+            return {n for p in people for n in (p.name, *p.aliases, *p.name.split()) if n}
+        return {
+            n
+            for i in ids
+            for t in [self.office.item_type(i)]
+            for n in (t.name, *t.synonyms, language.plural(t.name))
+        }
+
+    def _aside(self, left: str, live: list[Finding]) -> bool:
+        """What is left beside a thanks, wish or withdrawal names nothing of this office and
+        asks for nothing ("..., lifesaver", "..., you're the best"): an aside, not a request."""
+        if not any(f.verdict in ("thanks", "wish", "withdrawn") for f in live):
+            return False
+        words = _words(left)
+        return not set(words) & self._office_words and not self.acts.request(words)
 
     def _answered(self, out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened:
         """No request left: the replies to what was said, or one "Shall I ...?"."""
@@ -590,6 +654,8 @@ class RequestScreen:
                 if w in self.en.modifier_prepositions or words[n - 1] in ("my", "our"):
                     break
                 if w in self.en.service_products and w not in self._office_words:
+                    if _possessive_of_name(piece.text, w, self._office_words):
+                        continue  # "Chip's scanner": a colleague's, not "chips"
                     return self._decline_service(piece, w, product=True)
         return None
 
@@ -617,6 +683,8 @@ class RequestScreen:
             text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
         subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
         text = self._name_pronouns(text, hints, subjects)
+        text, found = self._dangling_possessives(text)
+        evidence += found
         said = [
             f"{h.item_type}|"
             for h in hints
@@ -640,7 +708,59 @@ class RequestScreen:
                     evidence.append(Evidence(words=match.group(0), meaning=meaning))
                     text = text[: match.start()] + said_as + text[match.end() :]
                     break
+            else:
+                text, found = self._container_of(text, thing)
+                evidence += found
         return text, evidence
+
+    def _container_of(self, text: str, thing: str) -> tuple[str, list[Evidence]]:
+        """ "I ran out of forms. Could you bring me a box?": a noun this office does not know,
+        asked for right after a statement that named an item, is a quantity of that item."""
+        pattern = re.compile(r"\b(?:a|an|one|another)\s+([a-z]+)\b", re.IGNORECASE)
+        for match in pattern.finditer(text):
+            noun = match.group(1).lower()
+            if noun in self._office_words or not language.is_noun(noun):
+                continue
+            if language.zipf(noun) < 3 or noun in ("one", "bit", "lot"):
+                continue
+            evidence = [Evidence(words=match.group(0), meaning=f"a {noun} of {thing}")]
+            return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
+        return text, []
+
+    def _dangling_possessives(self, text: str) -> tuple[str, list[Evidence]]:
+        """ "lend him mine", "give him Rich's": a possessive with no item after it means the
+        item named last before it (in what is left, else in the whole message)."""
+        evidence: list[Evidence] = []
+
+        def last_item(before: str) -> str | None:
+            for said in (before, self._text):
+                items = [m for m in self.lex.scan(self.lex.tokens(said)) if m.kind == "item"]
+                if items:
+                    return self.office.item_type(items[-1].ids[0]).name
+            return None
+
+        def whole(match: re.Match[str]) -> str:
+            word = match.group(1)
+            owner = re.sub(r"['’]s$", "", word)
+            if word.lower() != "mine" and not self._is_person_word(owner):
+                return word
+            thing = last_item(text[: match.start()])
+            if thing is None:
+                return word
+            said = f"my {thing}" if word.lower() == "mine" else f"{word} {thing}"
+            evidence.append(Evidence(words=word, meaning=said))
+            return said
+
+        pattern = re.compile(
+            r"\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
+            r"for now|for a bit|for today)\b))",
+            re.IGNORECASE,
+        )
+        return pattern.sub(whole, text), evidence
+
+    def _is_person_word(self, word: str) -> bool:
+        tokens = self.lex.tokens(word)
+        return any(m.kind == "person" for m in self.lex.scan(tokens))
 
     def _name_pronouns(self, text: str, hints: list[Hint], subjects: set[str]) -> str:
         """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
@@ -852,6 +972,13 @@ def _without(text: str, cut: int, dropped: list[Piece]) -> str:
     left = re.sub(r"(^|[.!?;])[\s,]*,", r"\1", left)
     left = re.sub(r",\s*(?=[.!?;]|$)", "", left)
     return re.sub(r"\s+", " ", left).strip(" ,")
+
+
+def _possessive_of_name(text: str, word: str, office_words: frozenset[str]) -> bool:
+    """Whether ``word`` ("chips") is how a name's possessive ("Chip's") was folded."""
+    if not word.endswith("s") or word[:-1] not in office_words:
+        return False
+    return re.search(rf"\b{re.escape(word[:-1])}['’]s\b", text, re.IGNORECASE) is not None
 
 
 def _has_words(text: str) -> bool:

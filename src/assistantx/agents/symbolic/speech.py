@@ -49,6 +49,8 @@ _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
 _AWAY = english.words("guard_away")
 _NEED = english.words("need_verbs")
+_IN_PLACE = frozenset({"in", "at", "inside"})
+_RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
 _SUBJECTS = english.words("statement_subjects")
 _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
@@ -113,19 +115,50 @@ class SpeechActs:
             rest = set(w[1:])
             if rest & _EVERYONE or rest & _AWAY:  # "keep everyone away from", "leave it alone"
                 return True
+            if self._kept_in_place(w[1:]):  # "leave May's ice pack in the fridge"
+                return True
         if w[:2] in (["dont", "let"], ["do", "not"]) and set(w[2:4]) & _EVERYONE:
             return True  # "don't let anyone touch ..."
         return w[:2] == ["do", "not"] and w[2:3] == ["let"] and bool(set(w[3:5]) & _EVERYONE)
 
     def thanks(self, words: list[str]) -> Act | None:
         w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
-        if set(w[:3]) & _THANKS and not (set(w[:3]) & _RELAY):
-            return Act("thanks")  # "thanks ...", "big thanks to ...", "many thanks"
-        if w[:1] and w[0] in _RELAY and set(w[1:4]) & _THANKS:
+        if self._asks_you(w):
+            w = w[next(n for n, x in enumerate(w) if x in _YOU) + 1 :]  # "could you thank ..."
+            asked = True
+        else:
+            asked = False
+        if w[:1] and w[0] in _RELAY - _THANKS and set(w[1:4]) & _THANKS:
             return Act("thanks", relay=True)  # "say thanks to Wang", "tell Wang thank you"
-        if w[:1] == ["thank"]:
-            return Act("thanks")
+        if w[:1] == ["thank"] and w[1:2] and w[1] not in _YOU:
+            return Act("thanks", relay=True)  # "thank Rich for the clipboard"
+        if asked:
+            return None  # "could you bring ...", "I'd appreciate it if you could ..."
+        if set(w[:3]) & _THANKS:
+            return Act("thanks")  # "thanks ...", "big thank you for ...", "much appreciated"
+        if self._done_for_me(w):
+            return Act("thanks")  # "you're a star for fetching the clipboard"
         return None
+
+    def _done_for_me(self, w: list[str]) -> bool:
+        """ "... for fetching the clipboard": a task word as a gerund after "for", with no
+        request wording: an act someone did, praised, not one asked for."""
+        if self._imperative(w) or set(w) & _WILLING or (w[:1] and w[0] in _MODALS):
+            return False
+        return any(
+            a == "for"
+            and b.endswith("ing")
+            and bool({b, *language.verb_lemmas(b)} & self.lex.cue_words)
+            for a, b in itertools.pairwise(w)
+        )
+
+    @staticmethod
+    def _asks_you(w: list[str]) -> bool:
+        """ "could you ...", "if you could ...": someone is asked to do something."""
+        return any(
+            (a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS)
+            for a, b in itertools.pairwise(w)
+        )
 
     def question(self, words: list[str], asks: bool) -> QuestionKind | None:
         """Whether a piece is a question, and a polite request or a question for information."""
@@ -198,7 +231,8 @@ class SpeechActs:
             return True  # "found one", "broke it"
         if w[0] in ("got", "found") and w[1:2] and w[1] in ("one", "some", "it", "them"):
             return True  # "got one already"
-        if w[0] not in _SUBJECTS and not self._named(w[0]):
+        possessive = w[0].endswith("s") and self._named(w[0][:-1])  # "Hal's clipboard snapped"
+        if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
             return False
         for n in range(1, min(len(w), 7)):
             x = w[n]
@@ -206,8 +240,8 @@ class SpeechActs:
                 return True  # "Wang doesn't need the stapler any more": nobody asks
             if x in _NEED or x in _WILLING or x in ("mean", "meant"):
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
-            if x in _STATE_VERBS or (x not in self.lex.cue_words and language.is_finite_verb(x)):
-                return True
+            if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
+                return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
         return False
@@ -233,6 +267,18 @@ class SpeechActs:
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
 
     # -- helpers -------------------------------------------------------------------------
+    def _kept_in_place(self, w: list[str]) -> bool:
+        """ "... in the fridge", "... at the print corner": left where a facility keeps it, not
+        taken to anyone ("leave my form on Hal's desk" names a person: a delivery)."""
+        if any(self._named(x) for x in w):
+            return False
+        for n, x in enumerate(w):
+            if x in _IN_PLACE:
+                after = " ".join(y for y in w[n + 1 : n + 5] if y not in ("the", "a", "our"))
+                if any(after.startswith(f) for f in self.lex.facilities):
+                    return True
+        return False
+
     def _imperative(self, w: list[str]) -> bool:
         k = 0
         while k < len(w) and w[k] in ("please", "pls", "plz", "kindly", "just", "also", "then"):

@@ -1,0 +1,216 @@
+"""Who the requester named as a recipient or a doer: the people a hand-over may go to.
+
+The consent guard lets a code (or a file) go to a person other than the requester, an owner
+or a keeper only when the requester named that person *in a receiving role*. A name that
+merely stands somewhere in their words does not count: "... because Rich asked for it",
+"Rich wants it up on the board" and "Rich's form" name Rich as the reason, a wisher or an
+owner, never as the one who gets the item. The roles are read from the requester's own
+words alone (never from a reasoner's reading), by the position of the name:
+
+- after a preposition of receiving: "to Hal", "for Hal", "with Hal" ("leave it with Hal"),
+  and a place of theirs: "on Hal's desk";
+- right after a giving verb, in any of its forms: "bring Hal a thermometer", "lent Hal ...";
+- as a doer: "by Hal", "get Hal to sign", "Hal to sign it";
+- a pronoun in one of those places ("take her my ice pack") when exactly one person the
+  requester named is neither an owner ("May's ice pack") nor the requester;
+- a reply in their own chat that is just a name ("Hal Brooks.", "to Hal, please"): the
+  answer to "Who should get it?";
+- a "Shall I ...?" of the assistant in the requester's chat, answered yes by the requester,
+  in which the name stands in one of those places ("Shall I bring Hal a thermometer?").
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.answers import stance
+from assistantx.core import english, language
+from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.memory.short_term import ShortTermMemory
+
+_TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
+_AT_PLACE = frozenset({"on", "at", "to", "onto", "in", "into"})
+_BY = frozenset({"by"})
+_DOER_VERBS = frozenset({"get", "ask", "have", "let", "make"})
+_DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "countersign"})
+_GIVE = english.words("dative_verbs") | english.words("handing_verbs")
+_TITLES = english.words("titles") - {"a", "an", "the", "our"}
+# titles that name a role ("the manager"), not titles of address ("Dr.", "Ms")
+_ROLE_TITLES = _TITLES - {"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
+_PLACES = english.words("place_words") | frozenset({"tray", "pigeonhole", "inbox", "chair"})
+_PRONOUNS = english.words("object_pronouns")
+_COMMON = english.words("common")
+_FILLERS = english.words("courtesy") | frozenset(
+    {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
+)
+_AND = frozenset({"and", "or", "plus"})
+_ARTICLES = frozenset({"the", "our", "a", "an"})
+_WORD = re.compile(r"[\w]+(?:['’]s)?")
+
+
+@dataclass(frozen=True)
+class _Word:
+    text: str  # as written, without a possessive 's
+    folded: str
+    possessive: bool
+
+
+def _tokens(text: str) -> list[_Word]:
+    out = []
+    for m in _WORD.finditer(text):
+        raw = m.group(0)
+        possessive = raw.lower().endswith(("'s", "’s"))
+        bare = raw[:-2] if possessive else raw
+        out.append(_Word(bare, language.fold(bare), possessive))
+    return out
+
+
+@dataclass(frozen=True)
+class _Mention:
+    person: str
+    start: int
+    end: int  # exclusive
+    possessive: bool
+
+
+def _names(office: Office) -> list[tuple[tuple[str, ...], str]]:
+    """Every way a person is written (full name, aliases, each part of the name, the id),
+    as folded word tuples, longest first."""
+    found: dict[tuple[str, ...], set[str]] = {}
+    for p in office.people:
+        spellings = {p.name, *p.aliases, p.id, p.id.replace("_", " ")}
+        spellings.update(w for w in p.name.split() if len(w) > 1)
+        for s in spellings:
+            key = tuple(language.fold(w) for w in re.findall(r"\w+", s))
+            if key:
+                found.setdefault(key, set()).add(p.id)
+        for alias in p.aliases:  # "Manager Mao": "the manager" names them too
+            for w in re.findall(r"\w+", language.fold(alias)):
+                if w in _ROLE_TITLES:
+                    found.setdefault((w,), set()).add(p.id)
+    return sorted(((k, i) for k, ids in found.items() for i in ids), key=lambda x: -len(x[0]))
+
+
+def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
+    names = _names(office)
+    out: list[_Mention] = []
+    n = 0
+    while n < len(words):
+        hit = None
+        for key, person in names:
+            span = tuple(w.folded for w in words[n : n + len(key)])
+            if span != key:
+                continue
+            first = words[n].text
+            # a name that is also a word counts only when written as a name ("May", not "may")
+            word = key[0]
+            if len(key) == 1 and not first[:1].isupper() and word not in _ROLE_TITLES:
+                if word in _COMMON | {"may", "will"} or language.is_english_word(word):
+                    continue
+            hit = _Mention(person, n, n + len(key), words[n + len(key) - 1].possessive)
+            break
+        if hit is None:
+            n += 1
+            continue
+        out.append(hit)
+        n = hit.end
+    return out
+
+
+def _before(words: list[_Word], at: int) -> str:
+    """The word before position ``at``, skipping titles and articles ("to Dr. Hal", "by the
+    manager")."""
+    k = at - 1
+    while k >= 0 and (words[k].folded in _TITLES or words[k].folded in _ARTICLES):
+        k -= 1
+    return words[k].folded if k >= 0 else ""
+
+
+def _is_give(word: str, operations: frozenset[str]) -> bool:
+    """ "bring Hal ...", "printed Hal ...": a giving verb or the office's own operation verb."""
+    verbs = _GIVE | operations
+    return word in verbs or bool(language.verb_lemmas(word) & verbs)
+
+
+def _operation_verbs(office: Office) -> frozenset[str]:
+    return frozenset(
+        language.fold(v.split()[0]) for op in office.operations for v in (*op.verbs, op.name) if v
+    )
+
+
+def _receiving(
+    words: list[_Word], start: int, end: int, possessive: bool, operations: frozenset[str]
+) -> bool:
+    """Whether the words at [start, end) (a name or a pronoun) stand in a receiving or doing
+    role."""
+    before = _before(words, start)
+    after = words[end].folded if end < len(words) else ""
+    if possessive:  # "on Hal's desk": their place; "Hal's form": an owner
+        return before in _AT_PLACE and after in _PLACES
+    if before in _TO or before in _BY or _is_give(before, operations):
+        return True
+    if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
+        return True
+    nxt = words[end + 1].folded if end + 1 < len(words) else ""
+    return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
+
+
+def _in_roles(office: Office, text: str, requester: str) -> set[str]:
+    words = _tokens(text)
+    mentions = _mentions(office, words)
+    operations = _operation_verbs(office)
+    named: set[str] = set()
+    receiving_end = -1  # where the last receiving name ended: "to Hal and Dawn" names both
+    for m in mentions:
+        joined = receiving_end >= 0 and m.start == receiving_end + 1
+        joined = joined and words[receiving_end].folded in _AND
+        receiving = _receiving(words, m.start, m.end, m.possessive, operations)
+        if receiving or (joined and not m.possessive):
+            named.add(m.person)
+            receiving_end = m.end
+    for n, w in enumerate(words):
+        if w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations):
+            continue
+        # the one person named who is not the owner of what is handed over (named after
+        # the pronoun: "take him May's ice pack") nor a source ("from May"); "Hal's clipboard
+        # snapped, lend him mine" is about Hal
+        candidates = {
+            m.person
+            for m in mentions
+            if not (m.possessive and m.start > n) and _before(words, m.start) != "from"
+        } - {requester}
+        if len(candidates) == 1:
+            named |= candidates
+    return named - {requester}
+
+
+def _just_a_name(office: Office, text: str) -> set[str]:
+    """The people a reply names when it says nothing but names ("Hal Brooks.", "to Hal")."""
+    words = _tokens(text)
+    mentions = _mentions(office, words)
+    covered = {n for m in mentions for n in range(m.start, m.end)}
+    rest = [w for n, w in enumerate(words) if n not in covered and w.folded not in _FILLERS]
+    return {m.person for m in mentions} if mentions and not rest else set()
+
+
+def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
+    """The people the requester named as a recipient or a doer, in the instruction, in their
+    later messages in their own chat, or by a yes to the assistant's offer there."""
+    own = ChatRef(kind="dm", id=stm.requester)
+    found = _in_roles(office, stm.text, stm.requester)
+    last_offer: str | None = None
+    for turn in stm.dialogue:
+        if turn.chat != own:
+            continue
+        if turn.direction == "out" and turn.question_id:
+            last_offer = turn.text
+            continue
+        if turn.direction != "in" or turn.person != stm.requester:
+            continue
+        found |= _in_roles(office, turn.text, stm.requester)
+        found |= _just_a_name(office, turn.text) - {stm.requester}
+        if last_offer is not None and stance(turn.text) == "yes":
+            found |= _in_roles(office, last_offer, stm.requester)
+    return found

@@ -1,0 +1,167 @@
+"""A hand-over code goes to a person other than the requester, owner or keeper only when the
+requester named them AS the recipient (or the doer): a name in an explanatory clause ("...
+because Rich asked for it"), a wisher ("Rich wants it on the board") or an owner ("Rich's
+form") makes nobody a party. Properties over generated requests on a small clinic."""
+
+from __future__ import annotations
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from assistantx.core.actions import SendQR
+from assistantx.core.dialogue import DialogueTurn
+from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.trace import Trace
+from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime import consent
+from assistantx.runtime.recipients import named_recipients
+from helpers.clinic import clinic
+
+RECIPIENT = (
+    "take my {item} to {x}",
+    "could you bring {x} my {item}",
+    "please leave my {item} on {x}'s desk",
+    "hand {x} my {item} please",
+    "my {item} is for {x}, can you drop it off",
+    "lend {x} my {item}",
+)
+EXPLANATION = (
+    "because {b} asked for it",
+    "{b} wants it up on the board",
+    "{b} said it was urgent",
+    "as {b} mentioned this morning",
+    "{b}'s one is broken",
+    "I told {b} I would",
+)
+PRONOUN = (
+    "{x} hurt {pos} hand, take {obj} my {item}",
+    "{x} needs a {item}, please bring {obj} mine",
+)
+
+
+def _memory(requester: str, text: str) -> ShortTermMemory:
+    trace = Trace(instruction_id="i-1", requester=requester, text=text, reasoner="t", started_at=0)
+    return ShortTermMemory(instruction_id="i-1", requester=requester, text=text, trace=trace)
+
+
+def _written(office: Office, person: str, full: bool) -> str:
+    name = office.person(person).name
+    return name if full else name.split()[0]
+
+
+@st.composite
+def requests(draw: st.DrawFn) -> tuple[str, str, str, str]:
+    """(requester, recipient, bystander, text): the recipient named as such, the bystander
+    only in an explanation, in either order, joined by a comma, "and" or a full stop."""
+    office = clinic()
+    people = [p.id for p in office.people]
+    requester, x, b = draw(st.permutations(people))[:3]
+    item = draw(st.sampled_from(["clipboard", "thermometer", "form"]))
+    ask = draw(st.sampled_from(RECIPIENT)).format(
+        item=item, x=_written(office, x, draw(st.booleans()))
+    )
+    why = draw(st.sampled_from(EXPLANATION)).format(b=_written(office, b, draw(st.booleans())))
+    joint = draw(st.sampled_from([", ", ". ", " - "]))
+    text = f"{ask}{joint}{why}" if draw(st.booleans()) else f"{why.capitalize()}{joint}{ask}"
+    return requester, x, b, text
+
+
+def _answered(stm: ShortTermMemory, *people: str) -> None:
+    for n, person in enumerate(people):
+        dm = ChatRef(kind="dm", id=person)
+        stm.dialogue += [
+            DialogueTurn(
+                time=2 * n,
+                direction="out",
+                chat=dm,
+                person=person,
+                text="Be there?",
+                question_id=f"q{n}",
+            ),
+            DialogueTurn(
+                time=2 * n + 1,
+                direction="in",
+                chat=dm,
+                person=person,
+                text="sure",
+                in_reply_to=f"q{n}",
+            ),
+        ]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(requests())
+def test_only_the_person_named_as_recipient_may_collect(
+    request: tuple[str, str, str, str],
+) -> None:
+    office = clinic()
+    requester, x, b, text = request
+    stm = _memory(requester, text)
+    _answered(stm, x, b)
+    assert named_recipients(office, stm) == {x}, text
+    mine = f"clipboard:{requester}"
+    assert consent.check(office, stm, SendQR(contact=x, item=mine, purpose="collect")) is None
+    refused = consent.check(office, stm, SendQR(contact=b, item=mine, purpose="collect"))
+    assert refused is not None and refused.rule == "not_a_party", text
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(PRONOUN), st.data())
+def test_a_pronoun_recipient_is_the_one_person_named_who_is_not_an_owner(
+    template: str, data: st.DataObject
+) -> None:
+    office = clinic()
+    requester, x, owner = data.draw(st.permutations([p.id for p in office.people]))[:3]
+    text = template.format(
+        x=_written(office, x, data.draw(st.booleans())),
+        pos=data.draw(st.sampled_from(["her", "his", "their"])),
+        obj=data.draw(st.sampled_from(["her", "him", "them"])),
+        item="clipboard",
+    )
+    # an owner named beside them does not make the pronoun ambiguous
+    text += f", or {_written(office, owner, True)}'s if mine is gone"
+    assert named_recipients(office, _memory(requester, text)) == {x}, text
+
+
+def test_a_name_as_the_answer_or_in_an_accepted_offer_names_the_recipient() -> None:
+    office = clinic()
+    stm = _memory("ines", "print my rota, Rich said so")
+    own = ChatRef(kind="dm", id="ines")
+    assert named_recipients(office, stm) == set()
+    stm.dialogue += [
+        DialogueTurn(
+            time=0,
+            direction="out",
+            chat=own,
+            person="ines",
+            text="Who should get the printout?",
+            question_id="q1",
+        ),
+        DialogueTurn(
+            time=1,
+            direction="in",
+            chat=own,
+            person="ines",
+            text="Hal Brooks, please",
+            in_reply_to="q1",
+        ),
+    ]
+    assert named_recipients(office, stm) == {"hal"}
+    offer = _memory("ines", "Dawn needs a thermometer.")
+    offer.dialogue += [
+        DialogueTurn(
+            time=0,
+            direction="out",
+            chat=own,
+            person="ines",
+            text="Shall I bring Dawn Ellis a thermometer?",
+            question_id="q1",
+        ),
+        DialogueTurn(
+            time=1, direction="in", chat=own, person="ines", text="yes please", in_reply_to="q1"
+        ),
+    ]
+    assert named_recipients(office, offer) == {"dawn"}
+    # a name as a word, in lower case, names nobody
+    assert named_recipients(office, _memory("ines", "take my form to the may fair stall")) == set()
