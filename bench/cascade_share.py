@@ -8,7 +8,8 @@ person whose consent is needed was asked, and nothing physical happened for ``no
 ``decline``. Run::
 
     python bench/cascade_share.py --phrasings bench/cascade_phrasings.yaml \\
-        --model-url http://127.0.0.1:8080/v1 [--model NAME] [--office O] [--anchors A]
+        --model-url http://127.0.0.1:8080/v1 [--model NAME] [--office O] [--anchors A] \\
+        [--traces DIR]
 
 The phrasings file (YAML)::
 
@@ -187,6 +188,9 @@ def run_case(
             error = (done.stderr.strip().splitlines() or ["no trace"])[-1]
             return Run(False, f"run failed: {error}", 0)
         trace = json.loads(trace_file.read_text())
+        if args.traces:
+            args.traces.mkdir(parents=True, exist_ok=True)
+            (args.traces / f"{case.id}-{reasoner}.json").write_text(trace_file.read_text())
     right, why = judge(case, trace, office)
     return Run(right, why, int(trace.get("usage", {}).get("llm_calls", 0)))
 
@@ -217,6 +221,7 @@ def main() -> None:
     parser.add_argument("--model-url", required=True, help="OpenAI-compatible /v1 URL")
     parser.add_argument("--model", default="local", help="model name sent to the server")
     parser.add_argument("--max-steps", type=int, default=20)
+    parser.add_argument("--traces", type=Path, default=None, help="keep each run's trace here")
     parser.add_argument("--case-wall-s", type=float, default=600.0, help="wall bound per run")
     args = parser.parse_args()
     phrasings = load_phrasings(args.phrasings)
