@@ -147,7 +147,10 @@ class BaselineReasoner(ModelReasoner):
                 raise ModelOutputError("give exactly one action per turn")
             check_actions(decision.actions, ctx.resolver, ctx.stm)
 
-        return await self._call(ctx, prompt, Decision, check=valid, **values)
+        async def ask(grounded: Callable[[Decision], None]) -> Decision:
+            return await self._call(ctx, prompt, Decision, check=grounded, **values)
+
+        return await self._grounded_decision(ctx, ask, valid)
 
     async def reflect(
         self,

@@ -35,7 +35,12 @@ from assistantx.agents.llm import (
     require_model,
     schema_text,
 )
-from assistantx.agents.llm.grounding import RequestWords, ungrounded
+from assistantx.agents.llm.grounding import (
+    UNSURE_QUESTION,
+    RequestWords,
+    requester_answers,
+    ungrounded,
+)
 from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
 from assistantx.core.errors import GroundingError, ModelBehaviorError, ModelOutputError
@@ -46,13 +51,8 @@ from assistantx.core.structured import Attempt, structured_call
 from assistantx.core.task_schema import PERSON_KINDS, SHAPE_KIND, TaskKind
 from assistantx.core.trace import Percept
 from assistantx.memory.resolve import Resolver
-from assistantx.memory.short_term import ShortTermMemory
 
 logger = logging.getLogger(__name__)
-
-UNSURE_QUESTION = (
-    "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
-)
 
 
 class ReadTask(BaseModel):
@@ -143,19 +143,6 @@ def _person(resolver: Resolver, name: str | None, requester: str) -> str | None:
     if name.strip().lower() in ("me", "i", "myself", "requester", requester):
         return requester
     return resolver.person(name)
-
-
-def requester_answers(stm: ShortTermMemory) -> list[str]:
-    """The requester's first answer to each clarifying question, in order."""
-    answers: list[str] = []
-    for turn in stm.dialogue:
-        if turn.direction == "out" and turn.question_id and turn.person == stm.requester:
-            replies = [
-                t.text for t in stm.replies_to(turn.question_id) if t.person == stm.requester
-            ]
-            if replies:
-                answers.append(replies[0])
-    return answers
 
 
 class HybridReasoner(SymbolicReasoner):

@@ -17,9 +17,11 @@ import difflib
 import unicodedata
 from collections.abc import Iterable, Sequence
 
+from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, TaskKind
 from assistantx.memory.names import normalize
+from assistantx.memory.short_term import ShortTermMemory
 
 # a typo in a word of at least this many letters still matches (the embedded reader's cut-off)
 _TYPO_MIN_LETTERS = 5
@@ -135,3 +137,78 @@ def ungrounded(
     if not item_said:
         return f"the request never mentions {words.office.item_type(item_type).name!r}"
     return None
+
+
+# -- the actions a model proposes (the LLM reasoner and the baselines) -------------------
+UNSURE_QUESTION = (
+    "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
+)
+# what a locker code does to the item it concerns, as a task kind (deposit/collect: a transfer)
+_PURPOSE_KIND: dict[str, TaskKind] = {
+    "sign": "sign",
+    "seal": "seal",
+    "copy": "copy",
+    "heat": "heat",
+}
+# a person-to-person task is said by its verb ("sign", "signed", "signature")
+_PERSON_VERBS: dict[TaskKind, tuple[str, ...]] = {
+    "sign": ("sign", "signed", "signing", "signature", "countersign"),
+    "seal": ("seal", "sealed", "sealing", "stamp", "stamped", "stamping"),
+}
+
+
+def requester_answers(stm: ShortTermMemory) -> list[str]:
+    """The requester's first answer to each clarifying question, in order."""
+    answers: list[str] = []
+    for turn in stm.dialogue:
+        if turn.direction == "out" and turn.question_id and turn.person == stm.requester:
+            replies = [
+                t.text for t in stm.replies_to(turn.question_id) if t.person == stm.requester
+            ]
+            if replies:
+                answers.append(replies[0])
+    return answers
+
+
+def request_words(office: Office, stm: ShortTermMemory) -> RequestWords:
+    """The instruction and the requester's answers so far."""
+    return RequestWords(office, [stm.text, *requester_answers(stm)])
+
+
+def ungrounded_action(words: RequestWords, requester: str, action: Action) -> str | None:
+    """What of one grounded action (names already ids) the requester never asked for; None:
+    grounded, or an action that hands nothing over (talk, moves, waits, stop).
+
+    A locker code hands an item over or has work done on it: its item must be said (or be
+    what a requested service takes or makes), its work asked for, and whoever collects it
+    must be the requester or a person they named. Who gives an item need not be named: the
+    robot finds the owner of "a stapler" in memory."""
+    match action:
+        case SendQR(contact=contact, item=item, purpose=purpose):
+            type_id = item.partition(":")[0]
+            kind = _PURPOSE_KIND.get(purpose)
+            if kind in _PERSON_VERBS:
+                if not words.says_any(_PERSON_VERBS[kind]):
+                    return f"the request never asks to {kind} anything"
+                return None
+            if kind is not None:
+                return ungrounded(words, requester, kind, type_id, ())
+            if purpose == "collect" and contact != requester and not words.names_person(contact):
+                return f"the request never mentions {words.office.person(contact).name!r}"
+            if purpose == "produce" or not words.names_item_type(type_id):
+                return _unserved(words, type_id)
+            return None
+        case ForwardFile(target=target):
+            person = any(p.id == target for p in words.office.people)
+            if person and target != requester and not words.names_person(target):
+                return f"the request never mentions {words.office.person(target).name!r}"
+            return None
+    return None
+
+
+def _unserved(words: RequestWords, type_id: str) -> str | None:
+    """None when a service the requester asked for takes or makes ``type_id``."""
+    for kind in sorted(_SERVICE_KINDS):
+        if any(type_id in (op.input, op.product) for op in words.services_said(kind)):
+            return None
+    return f"the request never mentions {words.office.item_type(type_id).name!r}"

@@ -15,17 +15,20 @@ the shared model until its ``stop()``).
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Sequence
+import logging
+from collections.abc import Awaitable, Callable, Sequence
 from typing import TypeVar
 
 from pydantic import BaseModel
 
 from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.agents.llm.grounding import UNSURE_QUESTION, request_words, ungrounded_action
 from assistantx.agents.llm.shared import SharedModel
-from assistantx.core.errors import ModelBehaviorError
+from assistantx.core.actions import Inquire, Wait
+from assistantx.core.errors import ModelBehaviorError, ModelOutputError
 from assistantx.core.ports.model import ChatRequest, ChatResponse, LLMCallFailed, Message
 from assistantx.core.structured import Attempt, structured_call
-from assistantx.core.trace import AgentCall, Percept
+from assistantx.core.trace import AgentCall, Decision, Percept
 from assistantx.memory.focus import (
     FocusBudget,
     focus_budget,
@@ -35,6 +38,7 @@ from assistantx.memory.focus import (
 )
 
 OutputT = TypeVar("OutputT", bound=BaseModel)
+logger = logging.getLogger(__name__)
 
 
 class ModelReasoner(Reasoner):
@@ -70,6 +74,47 @@ class ModelReasoner(Reasoner):
         if self._holding:
             self._holding = False
             await self.shared.release()
+
+    async def _grounded_decision(
+        self,
+        ctx: AgentContext,
+        ask: Callable[[Callable[[Decision], None]], Awaitable[Decision]],
+        check: Callable[[Decision], None],
+    ) -> Decision:
+        """A decision whose every action hands over only what the requester asked for.
+
+        ``ask`` makes the structured call with the check it is given: ``check`` (the action
+        checks) and then the grounding in the requester's words, fed back to the model like
+        any check. When the model keeps proposing what was never asked for, its reading is
+        not acted on: the requester is asked instead."""
+        words = request_words(ctx.resolver.office, ctx.stm)
+        refused: list[str] = []
+
+        def grounded(decision: Decision) -> None:
+            refused.clear()
+            check(decision)
+            for action in decision.actions:
+                missing = ungrounded_action(words, ctx.stm.requester, ctx.resolver.ground(action))
+                if missing is not None:
+                    refused.append(missing)
+                    raise ModelOutputError(
+                        f"{action.type}: {missing}. Do only what the request says; when it "
+                        "is unclear, inquire of the requester."
+                    )
+
+        try:
+            return await ask(grounded)
+        except ModelBehaviorError:
+            if not refused:
+                raise
+            logger.info("decision not grounded in the request (%s): asking", refused[-1])
+            return Decision(
+                thought="the proposed actions are not what the requester asked for",
+                actions=[
+                    Inquire(contact=ctx.stm.requester, question=UNSURE_QUESTION),
+                    Wait(reason="waiting for the requester to clarify"),
+                ],
+            )
 
     async def _ask(
         self,

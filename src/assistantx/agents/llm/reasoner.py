@@ -13,7 +13,7 @@ The chat model is made once per factory and shared by every instruction's reason
 from __future__ import annotations
 
 import logging
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -156,7 +156,13 @@ class LLMReasoner(ModelReasoner):
             check_actions(decision.actions, ctx.resolver, ctx.stm)
 
         messages = self.decision_messages(ctx, percept, plan)
-        return await self._ask(ctx, "decision", messages, Decision, check, schema_name="Decision")
+
+        async def ask(grounded: Callable[[Decision], None]) -> Decision:
+            return await self._ask(
+                ctx, "decision", messages, Decision, grounded, schema_name="Decision"
+            )
+
+        return await self._grounded_decision(ctx, ask, check)
 
     async def reflect(
         self,

@@ -1,0 +1,93 @@
+"""Every request a reasoner sends is counted in its trace, in every reasoner that calls a
+model: the scripted server counts what it received and the trace must say the same, when
+the answers are unusable (repairs), when a request times out after a repair, and when the
+server refuses the connection (tries that never reached it: counted, at no tokens)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from assistantx.agents.registry import LLM_REASONERS, reasoner_factory
+from assistantx.core.office import Office, load_office
+from assistantx.core.trace import Trace
+from assistantx.sim.office import SimOffice
+from fakes.fixtures import scripted_llm  # noqa: F401
+from fakes.scripted_llm import RecordedRequest, Reply, ScriptedLLM, malformed_json, slow
+from helpers.llm_office import llm_model, llm_settings, make_assistant
+from helpers.office import run_one
+from helpers.servers import free_port
+
+# unsure for the embedded reader, so the cascade calls the model too
+TEXT = "bring me the thing"
+REASONERS = sorted(LLM_REASONERS)
+SETTINGS: dict[str, Any] = {"llm_timeout_s": 0.5, "llm_max_retries": 2, "llm_output_retries": 1}
+
+
+@pytest.fixture(scope="module")
+def office() -> Office:
+    return load_office()
+
+
+async def _trace(office: Office, llm: ScriptedLLM, name: str, **overrides: Any) -> Trace:
+    values = {**SETTINGS, **overrides}
+    model = llm_model(llm, **values)
+    factory = reasoner_factory(name, office, llm_settings(llm, **values), model=model)
+    sim = SimOffice(office)
+    assistant = make_assistant(office, sim, factory, max_steps=2)  # type: ignore[arg-type]
+    try:
+        stm = await run_one(sim, assistant, "lee", TEXT)
+    finally:
+        await model.stop()  # type: ignore[attr-defined]
+    return stm.trace
+
+
+def test_every_reasoner_that_calls_a_model_is_covered() -> None:
+    assert {"llm", "hybrid", "cascade", "direct", "react", "mobile_agent_v2"} <= set(REASONERS)
+
+
+@pytest.mark.parametrize("name", REASONERS)
+async def test_unusable_answers_and_their_repairs_are_all_counted(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+    name: str,
+) -> None:
+    scripted_llm.respond_with(lambda _r: malformed_json())
+    trace = await _trace(office, scripted_llm, name)
+
+    assert scripted_llm.requests  # the model was asked
+    assert trace.usage.llm_calls == len(scripted_llm.requests)
+
+
+@pytest.mark.parametrize("name", REASONERS)
+async def test_a_request_that_timed_out_after_a_repair_is_counted(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+    name: str,
+) -> None:
+    def answer(_request: RecordedRequest) -> Reply:
+        # the first answer is unusable, the repair never comes back in time
+        return malformed_json() if len(scripted_llm.requests) == 1 else slow(30)
+
+    scripted_llm.respond_with(answer)
+    trace = await _trace(office, scripted_llm, name)
+
+    assert len(scripted_llm.requests) >= 2
+    assert trace.usage.llm_calls == len(scripted_llm.requests)
+    assert trace.usage.estimated  # what the timed-out request cost is an estimate
+
+
+@pytest.mark.parametrize("name", REASONERS)
+async def test_refused_connections_are_counted_as_tries_at_no_tokens(
+    office: Office,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+    name: str,
+) -> None:
+    nowhere = f"http://127.0.0.1:{free_port()}/v1"  # nothing listens here
+    trace = await _trace(office, scripted_llm, name, llm_base_url=nowhere)
+
+    assert scripted_llm.requests == []
+    # one request and its two retries, none of which reached a server
+    assert trace.usage.llm_calls == 1 + SETTINGS["llm_max_retries"]
+    assert (trace.usage.prompt_tokens, trace.usage.completion_tokens) == (0, 0)
