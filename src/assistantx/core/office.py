@@ -78,6 +78,11 @@ class Operation(_Model):
     verbs: tuple[str, ...] = ()
     input: str | None = None
     product: str | None = None
+    done: str | None = Field(
+        default=None,
+        description="what it did to an item, as told to people ('scanned to PDF'); default: "
+        "the past participle of its name's verb ('shredded', 'faxed')",
+    )
 
     def shape(self, office: Office) -> OperationShape:
         """``make``: a product from nothing (coffee); ``render``: a product from a file

@@ -8,22 +8,21 @@ id with a colon.
 
 from __future__ import annotations
 
+import lemminflect
+
+from assistantx.core import task_kinds
 from assistantx.core.english import words
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import kind_shape
 
-# What the person does at the locker, per code purpose ({item}: an ``item_phrase``). The
-# purposes that run an office operation on the item ("copy", "heat": the task kinds of those
-# shapes) are worded with the office's own operation by ``purpose_text``; these two lines are
-# only the fallback for an office without one.
+# What the person does at the locker, per code purpose ({item}: an ``item_phrase``): moving
+# the item in and out, and each task kind's work step from the table of kinds. The purposes
+# that run an office operation on the item are worded with the office's own operation by
+# ``purpose_text``; the table's line is only the fallback for an office without one.
 PURPOSE_TEXT = {
     "deposit": "put {item} into the locker",
     "collect": "take {item} out of the locker",
-    "sign": "take {item} out, sign it and put it back",
-    "seal": "take {item} out, stamp it with the seal and put it back",
-    "copy": "take {item} out, copy it and put the original and the copy back",
-    "heat": "take {item} out, heat it and put it back",
-    "produce": "make {item} and put it into the locker",
+    **{k.purpose: k.locker for k in task_kinds.KINDS if k.purpose and k.locker},
 }
 
 
@@ -39,6 +38,17 @@ def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None 
     if shape == "transform":
         return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
     return f"take {thing} out, {op.name} it and put it back"
+
+
+def done_words(op: Operation) -> str:
+    """What an operation did to an item, in its own words for the outcome: the office's
+    ``done`` ("scanned to PDF"), else its verb's past participle ("shredded", "faxed")."""
+    if op.done:
+        return op.done
+    verb, _, rest = op.name.partition(" ")
+    forms = lemminflect.getInflection(verb, "VBN")
+    past = forms[0] if forms else f"{verb.removesuffix('e')}ed"
+    return f"{past} {rest}".strip()
 
 
 def _operation_on(office: Office, shape: str, item_type: str) -> Operation | None:
