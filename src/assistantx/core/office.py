@@ -10,6 +10,7 @@ its owner, as people name them ("Zhang's stapler").
 
 from __future__ import annotations
 
+import logging
 import math
 from collections import Counter
 from functools import cached_property
@@ -19,7 +20,10 @@ from typing import Any, Literal, TypeVar
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from assistantx.core import office_upgrade
 from assistantx.core.errors import OfficeError
+
+logger = logging.getLogger(__name__)
 
 DEFAULT_OFFICE = Path(__file__).resolve().parents[1] / "data" / "dataset" / "office.yaml"
 
@@ -58,10 +62,23 @@ class ItemType(_Model):
     purposes: tuple[str, ...] = Field(
         default=(), description="verbs it is for: 'cut' (scissors), 'write' (pen)"
     )
+    signable: bool = Field(
+        default=False, description="a paper a person signs or stamps (a document, a form)"
+    )
+    seals: bool = Field(
+        default=False, description="the tool that stamps a signable paper (a company seal)"
+    )
+    consumable: bool = Field(
+        default=False, description="used up when used (paper, wipes): one is given, not lent"
+    )
 
     @property
     def physical(self) -> bool:
         return self.kind != "electronic"
+
+    @property
+    def electronic(self) -> bool:
+        return self.kind == "electronic"
 
 
 class Operation(_Model):
@@ -209,6 +226,19 @@ class Office(_Model):
         here = [f for f in self.facilities if f.location == own.at]
         return here[0] if len(here) == 1 else None
 
+    # -- item types by property ---------------------------------------------------------
+    def signable_type(self) -> str | None:
+        """The item type a person signs or stamps (the office's ``signable`` paper)."""
+        return next((t.id for t in self.item_types if t.signable), None)
+
+    def seal_tool(self) -> str | None:
+        """The item type that stamps a signable paper (the office's ``seals`` tool)."""
+        return next((t.id for t in self.item_types if t.seals), None)
+
+    def file_type(self) -> str | None:
+        """The office's electronic file type (what is forwarded and printed)."""
+        return next((t.id for t in self.item_types if t.electronic), None)
+
     def workstations(self) -> list[Location]:
         return [loc for loc in self.locations if loc.kind == "workstation"]
 
@@ -263,6 +293,9 @@ def load_office(path: str | Path | None = None) -> Office:
 def parse_office(raw: Any, where: str = "<office>") -> Office:
     if not isinstance(raw, dict):
         raise OfficeError(where, "file", "must be a mapping with locations, people, ...")
+    raw, notes = office_upgrade.upgrade(raw)
+    for note in notes:  # a file of the previous format: `assistantx office migrate` updates it
+        logger.warning("%s: previous office format: %s", where, note)
     try:
         office = Office.model_validate(raw)
     except ValidationError as exc:

@@ -29,8 +29,8 @@ from assistantx.core.office import Office, OperationShape
 TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
 if set(get_args(TaskKind)) != {k.id for k in task_kinds.KINDS}:  # pragma: no cover
     raise RuntimeError("task_schema.TaskKind and the task_kinds table disagree")
-# The tool of a ``seal`` task when the office marks none (``ItemType.seals``): the item type
-# with this id.
+# The tool of a ``seal`` task in an office file of the previous format, which marked none
+# (``ItemType.seals``); the loader marks it (office.upgrade) and code asks office.seal_tool().
 SEAL_TOOL = "seal"
 # The task kind each shape of office operation takes (office.Operation.shape).
 SHAPE_KIND: dict[OperationShape, TaskKind] = {
@@ -84,7 +84,7 @@ class Task(BaseModel):
         if self.kind == "produce":
             return f"{self.item}:{self.recipient}"
         if self.kind == "print":
-            return f"file:{self.owner}"
+            return f"{self.input_item or self.item}:{self.owner}"
         return f"{self.item}:{self.owner}" if self.owner else None
 
 
@@ -199,6 +199,8 @@ class Part(BaseModel):
     def task(self, requester: str, office: Office) -> Task:
         """This part as the task schema's :class:`Task` for ``requester``."""
         kind = self.task_kind()
+        paper = office.signable_type()  # what is signed or stamped
+        file = office.file_type()  # what is forwarded
         match self.kind:
             case "fetch":
                 return Task(kind=kind, item=self.item, owner=self.owner, recipient=requester)
@@ -207,24 +209,24 @@ class Part(BaseModel):
             case "sign":
                 return Task(
                     kind=kind,
-                    item="document",
+                    item=paper,
                     owner=requester,
                     recipient=requester,
                     actor=self.signer,
-                    input_item="document",
+                    input_item=paper,
                 )
             case "seal":
                 return Task(
                     kind=kind,
-                    item="document",
+                    item=paper,
                     owner=requester,
                     recipient=requester,
-                    input_item="document",
+                    input_item=paper,
                 )
             case "forward_file":
-                return Task(kind=kind, item="file", owner=requester, recipient=self.to or "")
+                return Task(kind=kind, item=file, owner=requester, recipient=self.to or "")
             case "get_file":
-                return Task(kind=kind, item="file", owner=self.owner, recipient=requester)
+                return Task(kind=kind, item=file, owner=self.owner, recipient=requester)
         op = self.operation
         if kind == "produce":
             product = self.item if self.kind == "make" else self.kind

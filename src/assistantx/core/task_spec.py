@@ -24,7 +24,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.core.errors import DatasetError
 from assistantx.core.office import Office, Operation
-from assistantx.core.task_schema import PART_KINDS, PART_NEEDS, SEAL_TOOL, Part, Task
+from assistantx.core.task_schema import PART_KINDS, PART_NEEDS, PERSON_KINDS, Part, Task
 
 __all__ = ["PART_KINDS", "BaseInstruction", "Part", "load_base_instructions", "part_operation"]
 
@@ -154,15 +154,16 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             assert part.item is not None
             if not _owns(office, a, part.item):
                 raise ValueError(f"the requester owns no {part.item}")
-        if part.kind in ("sign", "seal") and not _owns(office, a, "document"):
-            raise ValueError("the requester has no document")
-        if part.kind == "forward_file" and not _owns(office, a, "file"):
+        paper, file, tool = office.signable_type(), office.file_type(), office.seal_tool()
+        if part.kind in PERSON_KINDS and (paper is None or not _owns(office, a, paper)):
+            raise ValueError("the requester has no paper to sign or stamp")
+        if part.kind == "forward_file" and (file is None or not _owns(office, a, file)):
             raise ValueError("the requester has no file")
-        if part.kind == "seal" and _owns(office, a, SEAL_TOOL):
-            raise ValueError("the requester owns a seal already")
+        if part.kind == "seal" and (tool is None or _owns(office, a, tool)):
+            raise ValueError("the requester owns a seal already, or the office has none")
         if part.kind == "get_file":
             assert part.owner is not None
-            if not _owns(office, part.owner, "file"):
+            if file is None or not _owns(office, part.owner, file):
                 raise ValueError(f"{part.owner} has no file")
         if part.shape(office) is not None:
             op = part_operation(office, part)

@@ -32,7 +32,7 @@ def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None 
     where the office's operation of the copy shape is a scan."""
     thing = item_phrase(office, item_id, you=you)
     shape = kind_shape(purpose)
-    op = _operation_on(office, shape, item_id.partition(":")[0]) if shape else None
+    op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
     if op is None or shape not in ("transform", "treat"):
         return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
     if shape == "transform":
@@ -51,10 +51,15 @@ def done_words(op: Operation) -> str:
     return f"{past} {rest}".strip()
 
 
-def _operation_on(office: Office, shape: str, item_type: str) -> Operation | None:
-    """The office's operation of ``shape`` that works on ``item_type`` (else the first)."""
+def _operation_on(
+    office: Office, shape: str, item_type: str, by: str | None = None
+) -> Operation | None:
+    """The office's operation of ``shape`` that works on ``item_type`` (else the first); of
+    several (a fax and a binder both take a document), the one ``by`` runs."""
     ops = [op for op in office.operations if op.shape(office) == shape]
-    return next((op for op in ops if op.input == item_type), ops[0] if ops else None)
+    on = [op for op in ops if op.input == item_type]
+    runs = [op for op in on if any(by in f.guards for f in office.offering(op.id))]
+    return next(iter(runs or on or ops), None)
 
 
 def person_name(office: Office, person_id: str, *, you: str | None = None) -> str:

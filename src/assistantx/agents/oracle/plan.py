@@ -245,18 +245,20 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.add_goal({"holds": [a, f"{made}:{a}"]})
             plan.add_goal({"holds": [a, doc]})
         case "sign" | "seal":
-            doc = f"document:{a}"
+            paper = office.signable_type() or ""
+            doc = f"{paper}:{a}"
+            paper_name = office.item_type(paper).name
             if part.kind == "sign":
                 signer = part.signer or ""
-                role = _named(signer, f"Could you sign {who}'s document?")
+                role = _named(signer, f"Could you sign {who}'s {paper_name}?")
                 plan.add_goal({"signed": [doc, signer]})
             else:
                 role = Role(
                     key="owner:seal",
                     kind="owner",
-                    question=f"Could you stamp {who}'s document with your seal?",
-                    group_question=f"Could anyone stamp {who}'s document with the company seal?",
-                    item_type="seal",
+                    question=f"Could you stamp {who}'s {paper_name} with your seal?",
+                    group_question=f"Could anyone stamp {who}'s {paper_name} with the seal?",
+                    item_type=office.seal_tool(),
                 )
                 plan.add_goal({"sealed": doc})
             plan.add_role(role)
@@ -322,10 +324,10 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))
             plan.must_be_available.add(to)
-            plan.add_goal({"received": [to, f"file:{a}"]})
+            plan.add_goal({"received": [to, f"{office.file_type()}:{a}"]})
         case "get_file":
             owner = part.owner or ""
             role = _named(owner, f"Could you send me your file for {who}?", wants_file=True)
             plan.add_role(role)
             plan.forwards.append(Forward(role.key, REQUESTER))
-            plan.add_goal({"received": [a, f"file:{owner}"]})
+            plan.add_goal({"received": [a, f"{office.file_type()}:{owner}"]})

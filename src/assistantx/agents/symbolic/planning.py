@@ -295,7 +295,7 @@ class Planner:
                             "send_file",
                             requester,
                             fixed=owner,
-                            item_type="file",
+                            item_type=item,
                             beneficiary=t.recipient,
                         )
                     ]

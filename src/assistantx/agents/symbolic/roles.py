@@ -167,7 +167,8 @@ class Roles:
         if role.kind == "lend" and role.item_type is not None:
             found = [p for p in ltm.owners(role.item_type) if p != role.beneficiary]
         elif role.kind == "seal":
-            found = ltm.owners("seal")
+            tool = self.office.seal_tool()
+            found = ltm.owners(tool) if tool else []
         elif role.facility is not None:
             found = ltm.guards(role.facility)
         else:
