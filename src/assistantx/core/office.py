@@ -239,6 +239,36 @@ class Office(_Model):
         """The office's electronic file type (what is forwarded and printed)."""
         return next((t.id for t in self.item_types if t.electronic), None)
 
+    def kept_owner(self, type_id: str, *, besides: str | None = None) -> str | None:
+        """Whose belonging of ``type_id`` is kept at a facility (a label maker in the
+        stationery cupboard): the one to use when nobody's is named, fetched by the keeper
+        with its owner's yes. None for personal items (nobody asks for "a lunch")."""
+        if self.item_type(type_id).kind != "belonging":
+            return None
+        return next(
+            (
+                p.id
+                for p in self.people
+                if p.id != besides
+                and any(o.type == type_id for o in p.owns)
+                and self.keeper(p.id, type_id) is not None
+            ),
+            None,
+        )
+
+    def place_names(self) -> dict[str, str]:
+        """Every name of a place, lower case → its location id: the locations by name and id
+        words, and each facility's names at its location ("the stationery cupboard", "the
+        supply room"), for the reader's lexicon."""
+        names: dict[str, str] = {}
+        for loc in self.locations:
+            for name in (loc.name, loc.id.replace("_", " ")):
+                names.setdefault(name.lower(), loc.id)
+        for f in self.facilities:
+            for name in (f.name, *f.synonyms):
+                names.setdefault(name.lower(), f.location)
+        return names
+
     def workstations(self) -> list[Location]:
         return [loc for loc in self.locations if loc.kind == "workstation"]
 

@@ -147,23 +147,25 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
-            keeper = office.keeper(part.owner, item_type) if part.owner else None
+            # no owner named: the one kept at a facility (the cupboard's label maker) first
+            owner = part.owner or office.kept_owner(item_type, besides=a)
+            keeper = office.keeper(owner, item_type) if owner else None
             if keeper is not None:  # kept in a cupboard: its guard takes it out
-                if part.owner != a:  # with the owner's own yes: the keeper can't give it away
+                if owner != a:  # with the owner's own yes: the keeper can't give it away
                     plan.add_role(
                         _named(
-                            part.owner or "",
+                            owner or "",
                             f"Could you let {who} have your {name} from the {keeper.name}?",
                         )
                     )
                 role = Role(
                     key=f"guard:{keeper.id}",
                     kind="guard",
-                    question=f"Could you take {part.owner}'s {name} out of the {keeper.name}?",
+                    question=f"Could you take {owner}'s {name} out of the {keeper.name}?",
                     group_question=f"Could anyone take the {name} out of the {keeper.name}?",
                     facility=keeper.id,
                 )
-                item = f"{item_type}:{part.owner}"
+                item = f"{item_type}:{owner}"
                 plan.add_goal({"holds": [a, item]})
                 plan.add_role(role)
                 plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))

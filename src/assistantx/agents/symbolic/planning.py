@@ -168,6 +168,11 @@ class Planner:
         ]
 
     def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
+        if t.kind == "transfer" and t.owner is None and t.item:
+            # nobody's named: the one kept at a facility (the cupboard's label maker) first,
+            # as the oracle does (agents/oracle/plan.py)
+            kept = self.office.kept_owner(t.item, besides=requester)
+            t = t.model_copy(update={"owner": kept}) if kept else t
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
         phases: list[Phase] = []
         roles: list[Role] = []
