@@ -54,3 +54,13 @@ def test_place_names_name_locations_and_the_facilities_in_them(harbour: Office) 
     names = harbour.place_names()
     assert names["supply room"] == "supply_room"
     assert names[harbour.facility("cupboard").name.lower()] == "supply_room"
+
+
+async def test_a_consumable_is_asked_to_be_spared_not_lent() -> None:
+    office = load_office()
+    assert office.item_type("paper").consumable
+    run = await run_instruction(office, "chen", "Please get me some paper.")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    asked = run.sim.messenger.sent[0].text
+    assert "spare Chen Jie some of your paper" in asked
+    assert "lend" not in asked
