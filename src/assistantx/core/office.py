@@ -95,6 +95,11 @@ class Operation(_Model):
     verbs: tuple[str, ...] = ()
     input: str | None = None
     product: str | None = None
+    consumes: bool = Field(
+        default=False,
+        description="the item it works on does not come back (a shredder): the requester is "
+        "told it was done, nothing is handed back",
+    )
     done: str | None = Field(
         default=None,
         description="what it did to an item, as told to people ('scanned to PDF'); default: "

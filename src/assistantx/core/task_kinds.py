@@ -63,6 +63,7 @@ class KindSpec:
     steps: tuple[Step, ...] = ()
     locker: str | None = None
     returns: bool = True
+    done_consumed: str | None = None  # the outcome when the operation consumes the item
 
     @property
     def works_at_locker(self) -> bool:
@@ -156,6 +157,7 @@ KINDS: tuple[KindSpec, ...] = (
         locker="take {item} out, heat it and put it back",
         todo="{verb} {whose} for {to}",
         done="{whose} was {done} and handed to {to}",
+        done_consumed="{whose} was {done}",
     ),
     KindSpec(
         id="send_file",

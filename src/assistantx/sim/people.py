@@ -224,6 +224,9 @@ def perform_handover(
     elif purpose == "heat":
         world.heated.add(item)
         world.note(time, "heated", item=item, by=person)
+        op = _operation_here(world, person, place, ("treat",))
+        if op is not None and op.consumes:  # shredded: it stays where the machine is
+            world.move_item(time, item, place, by=person)
     elif purpose == "produce":
         item_type, _, owner = item.partition(":")
         op = world.office.making(item_type)

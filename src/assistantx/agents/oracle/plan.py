@@ -319,9 +319,10 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(
                 Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
             )
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
             plan.add_goal({"heated": kept})
-            plan.add_goal({"holds": [a, kept]})
+            if not op.consumes:  # a shredded document does not come back
+                plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
+                plan.add_goal({"holds": [a, kept]})
         case "forward_file":
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))

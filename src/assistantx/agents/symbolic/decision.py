@@ -241,7 +241,9 @@ class Decider:
         made = made if made and made != task.item else ""
         op_id = operation_of(self.office, task)
         op = self.office.operation(op_id) if op_id else None
-        text = task_kinds.kind(task.kind).done.format(
+        spec = task_kinds.kind(task.kind)
+        template = spec.done_consumed if op and op.consumes and spec.done_consumed else spec.done
+        text = template.format(
             to=who(task.recipient),
             have="have" if task.recipient == requester else "has",
             whose=f"{whose(owner)} {item}",

@@ -285,12 +285,18 @@ class Planner:
                     operation=None if spec.by_person else op,
                 )
                 party = {"source": source, "doer": doer, "recipient": recipient}
+                steps = spec.steps
+                if op is not None and self.office.operation(op).consumes:
+                    # a shredded document does not come back: nobody collects it
+                    steps = tuple(s for s in steps if s.party != "recipient")
                 # A person who does the work is sought first (a signer may be away); a
                 # facility's guard is found where the facility is.
                 roles = [doer, source, recipient] if spec.by_person else [source, doer, recipient]
+                if len(steps) < len(spec.steps):
+                    roles.remove(recipient)
                 phases = [
                     Handover(party[step.party], (leg(item, cast(Purpose, step.purpose), owner),))
-                    for step in spec.steps
+                    for step in steps
                 ]
             case "send_file":
                 if owner != requester:
