@@ -180,7 +180,9 @@ class Part(BaseModel):
     kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
     item: str | None = Field(default=None, description="item type (fetch, deliver)")
     owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
-    to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
+    to: str | None = Field(
+        default=None, description="recipient (deliver, forward_file; print, copy, make)"
+    )
     signer: str | None = Field(default=None, description="who signs (sign)")
     operation: str | None = Field(
         default=None, description="the office operation, when several of the shape exist"
@@ -234,7 +236,7 @@ class Part(BaseModel):
             return Task(
                 kind=kind,
                 item=product,
-                recipient=requester,
+                recipient=self.to or requester,
                 operation=op or (made.id if made else None),
             )
         found = office.with_shape(_KIND_SHAPE[kind]) if op is None else [office.operation(op)]

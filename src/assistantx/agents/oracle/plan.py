@@ -130,6 +130,18 @@ def _named(person: str, question: str, *, wants_file: bool = False) -> Role:
     )
 
 
+def _recipient(plan: TaskPlan, part: Part, who: str) -> str:
+    """Who a made thing (a printout, a copy, a tea) is brought to: the part's ``to``, asked to
+    be at their desk, else the requester."""
+    if part.to is None:
+        return REQUESTER
+    target = _named(
+        part.to, f"Could you be at your desk? The robot brings you something from {who}."
+    )
+    plan.add_role(target)
+    return target.key
+
+
 def _guard(office: Office, operation: str, question: str, group_question: str | None) -> Role:
     facility = facility_for(office, operation)
     return Role(
@@ -215,14 +227,7 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.forwards.append(Forward(REQUESTER, role.key))
             place = role.facility or ""
             plan.visits.append(Visit(place, role.key, (Code(role.key, product, "produce"),)))
-            recipient = REQUESTER
-            if part.to is not None:
-                target = _named(
-                    part.to,
-                    f"Could you be at your desk? The robot brings you something from {who}.",
-                )
-                plan.add_role(target)
-                recipient = target.key
+            recipient = _recipient(plan, part, who)
             plan.deliveries.append((recipient, Code(recipient, product, "collect")))
             plan.add_goal({"printed": f"{source}:{a}"})
             plan.add_goal({"holds": [part.to or a, product]})
@@ -242,9 +247,11 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
             plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, f"{made}:{a}", "collect")))
+            # the copy goes to the named recipient; the original comes back to its owner
+            recipient = _recipient(plan, part, who)
+            plan.deliveries.append((recipient, Code(recipient, f"{made}:{a}", "collect")))
             plan.add_goal({"copied": doc})
-            plan.add_goal({"holds": [a, f"{made}:{a}"]})
+            plan.add_goal({"holds": [part.to or a, f"{made}:{a}"]})
             plan.add_goal({"holds": [a, doc]})
         case "sign" | "seal":
             paper = office.signable_type() or ""
@@ -284,8 +291,9 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(
                 Visit(role.facility or "", role.key, (Code(role.key, product, "produce"),))
             )
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, product, "collect")))
-            plan.add_goal({"holds": [a, product]})
+            recipient = _recipient(plan, part, who)
+            plan.deliveries.append((recipient, Code(recipient, product, "collect")))
+            plan.add_goal({"holds": [part.to or a, product]})
         case "heat":
             op = part_operation(office, part)
             source = op.input or ""
