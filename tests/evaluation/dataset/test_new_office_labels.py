@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from assistantx.agents.oracle.plan import build_plan
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office, Ownership, load_office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
 from assistantx.evaluation.dataset.generate import _task as task_of
 from assistantx.evaluation.dataset.generate import classify, verify_tasks
@@ -109,3 +109,25 @@ async def test_a_cupboard_item_asked_for_without_an_owner_is_achieved(harbour: O
     )
     check_base(base, harbour)
     await _verify_every_variant(harbour, base)
+
+
+async def test_a_cupboard_item_with_another_at_a_desk_is_labelled_as_the_policy_plays(
+    harbour: Office,
+) -> None:
+    # Mark keeps a label maker at his desk too: with both cupboard guards away, his offer of
+    # his own in the group is no yes to "could anyone take it out of the cupboard?"
+    people = tuple(
+        p.model_copy(update={"owns": (*p.owns, Ownership(type="label_maker"))})
+        if p.id == "mark"
+        else p
+        for p in harbour.people
+    )
+    office = harbour.model_copy(update={"people": people})
+    base = BaseInstruction(
+        id="k2",
+        requester="hope",
+        text="Could you get me a label maker?",
+        parts=(Part(kind="fetch", item="label_maker"),),
+    )
+    check_base(base, office)
+    await _verify_every_variant(office, base)
