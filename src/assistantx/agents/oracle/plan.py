@@ -287,7 +287,8 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
                 f"Could anyone get {thing} for {who} from the {place_name}?",
             )
             plan.add_role(role)
-            product = f"{made}:{a}"
+            # made for whoever it is for (Mark's tea), as the embedded planner names it
+            product = f"{made}:{part.to or a}"
             plan.visits.append(
                 Visit(role.facility or "", role.key, (Code(role.key, product, "produce"),))
             )
