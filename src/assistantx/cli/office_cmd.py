@@ -1,12 +1,15 @@
-"""``assistantx office show``: the office, and what the assistant knows of it at start."""
+"""``assistantx office show``: the office, and what the assistant knows of it at start;
+``assistantx office migrate FILE``: an office file of the previous format, rewritten."""
 
 from __future__ import annotations
 
 import argparse
 import json
+from pathlib import Path
 
 from assistantx.core.errors import OfficeError
 from assistantx.core.office import Office, load_office
+from assistantx.core.office_upgrade import migrate_file
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.render import render_long_term
 
@@ -18,6 +21,30 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     show.add_argument("--office", default=None, help="office YAML (default: the default office)")
     show.add_argument("--json", action="store_true", help="print the office as JSON")
     show.set_defaults(func=_show)
+    migrate = office_sub.add_parser(
+        "migrate", help="rewrite an office file of the previous format in the current one"
+    )
+    migrate.add_argument("file", type=Path, help="the office YAML to update (in place)")
+    migrate.add_argument("--out", type=Path, default=None, help="write here instead")
+    migrate.set_defaults(func=_migrate)
+
+
+def _migrate(args: argparse.Namespace) -> int:
+    """Fill in what the previous format left out, say what changed, and check the result."""
+    try:
+        notes = migrate_file(args.file, args.out)
+        load_office(args.out or args.file)
+    except OfficeError as exc:
+        print(f"error: {exc}")
+        return 2
+    except OSError as exc:
+        print(f"error: {args.file}: {exc.strerror or exc}")
+        return 2
+    for note in notes:
+        print(f"  {note}")
+    where = args.out or args.file
+    print(f"{where}: {'updated' if notes else 'already in the current format'}")
+    return 0
 
 
 def _show(args: argparse.Namespace) -> int:

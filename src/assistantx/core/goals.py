@@ -4,7 +4,8 @@ A milestone is a one-key mapping, as in the task files:
 ``{"holds": [person, item]}``, ``{"signed": [document, person]}``, ``{"sealed": document}``,
 ``{"printed": file}``, ``{"copied": document}``, ``{"heated": item}``,
 ``{"received": [person, file]}``, ``{"made": product}``, ``{"informed": person}``.
-In ``holds``, an item ``type:*`` means any item of that type ("bring me a stapler").
+In ``holds``, an item ``type:*`` means any item of that type but the holder's own ("bring me
+a stapler", also from someone whose own stapler is broken).
 """
 
 from __future__ import annotations

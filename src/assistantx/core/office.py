@@ -10,6 +10,7 @@ its owner, as people name them ("Zhang's stapler").
 
 from __future__ import annotations
 
+import logging
 import math
 from collections import Counter
 from functools import cached_property
@@ -19,7 +20,10 @@ from typing import Any, Literal, TypeVar
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from assistantx.core import office_upgrade
 from assistantx.core.errors import OfficeError
+
+logger = logging.getLogger(__name__)
 
 DEFAULT_OFFICE = Path(__file__).resolve().parents[1] / "data" / "dataset" / "office.yaml"
 
@@ -58,10 +62,23 @@ class ItemType(_Model):
     purposes: tuple[str, ...] = Field(
         default=(), description="verbs it is for: 'cut' (scissors), 'write' (pen)"
     )
+    signable: bool = Field(
+        default=False, description="a paper a person signs or stamps (a document, a form)"
+    )
+    seals: bool = Field(
+        default=False, description="the tool that stamps a signable paper (a company seal)"
+    )
+    consumable: bool = Field(
+        default=False, description="used up when used (paper, wipes): one is given, not lent"
+    )
 
     @property
     def physical(self) -> bool:
         return self.kind != "electronic"
+
+    @property
+    def electronic(self) -> bool:
+        return self.kind == "electronic"
 
 
 class Operation(_Model):
@@ -78,6 +95,16 @@ class Operation(_Model):
     verbs: tuple[str, ...] = ()
     input: str | None = None
     product: str | None = None
+    consumes: bool = Field(
+        default=False,
+        description="the item it works on does not come back (a shredder): the requester is "
+        "told it was done, nothing is handed back",
+    )
+    done: str | None = Field(
+        default=None,
+        description="what it did to an item, as told to people ('scanned to PDF'); default: "
+        "the past participle of its name's verb ('shredded', 'faxed')",
+    )
 
     def shape(self, office: Office) -> OperationShape:
         """``make``: a product from nothing (coffee); ``render``: a product from a file
@@ -204,6 +231,49 @@ class Office(_Model):
         here = [f for f in self.facilities if f.location == own.at]
         return here[0] if len(here) == 1 else None
 
+    # -- item types by property ---------------------------------------------------------
+    def signable_type(self) -> str | None:
+        """The item type a person signs or stamps (the office's ``signable`` paper)."""
+        return next((t.id for t in self.item_types if t.signable), None)
+
+    def seal_tool(self) -> str | None:
+        """The item type that stamps a signable paper (the office's ``seals`` tool)."""
+        return next((t.id for t in self.item_types if t.seals), None)
+
+    def file_type(self) -> str | None:
+        """The office's electronic file type (what is forwarded and printed)."""
+        return next((t.id for t in self.item_types if t.electronic), None)
+
+    def kept_owner(self, type_id: str, *, besides: str | None = None) -> str | None:
+        """Whose belonging of ``type_id`` is kept at a facility (a label maker in the
+        stationery cupboard): the one to use when nobody's is named, fetched by the keeper
+        with its owner's yes. None for personal items (nobody asks for "a lunch")."""
+        if self.item_type(type_id).kind != "belonging":
+            return None
+        return next(
+            (
+                p.id
+                for p in self.people
+                if p.id != besides
+                and any(o.type == type_id for o in p.owns)
+                and self.keeper(p.id, type_id) is not None
+            ),
+            None,
+        )
+
+    def place_names(self) -> dict[str, str]:
+        """Every name of a place, lower case → its location id: the locations by name and id
+        words, and each facility's names at its location ("the stationery cupboard", "the
+        supply room"), for the reader's lexicon."""
+        names: dict[str, str] = {}
+        for loc in self.locations:
+            for name in (loc.name, loc.id.replace("_", " ")):
+                names.setdefault(name.lower(), loc.id)
+        for f in self.facilities:
+            for name in (f.name, *f.synonyms):
+                names.setdefault(name.lower(), f.location)
+        return names
+
     def workstations(self) -> list[Location]:
         return [loc for loc in self.locations if loc.kind == "workstation"]
 
@@ -258,6 +328,9 @@ def load_office(path: str | Path | None = None) -> Office:
 def parse_office(raw: Any, where: str = "<office>") -> Office:
     if not isinstance(raw, dict):
         raise OfficeError(where, "file", "must be a mapping with locations, people, ...")
+    raw, notes = office_upgrade.upgrade(raw)
+    for note in notes:  # a file of the previous format: `assistantx office migrate` updates it
+        logger.warning("%s: previous office format: %s", where, note)
     try:
         office = Office.model_validate(raw)
     except ValidationError as exc:

@@ -16,42 +16,32 @@ them.
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Literal, cast, get_args
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from assistantx.core import task_kinds
 from assistantx.core.office import Office, OperationShape
 
-# The shapes of a task. ``transfer``: a physical item moves from its owner (or a keeper) to
-# the recipient; ``produce``: a facility makes a product for the recipient; ``print``/``copy``:
-# a facility turns the requester's file/document into a product; ``sign``/``seal``: a person
-# acts on the requester's document; ``heat``: a facility works on a kept item; ``send_file``:
-# an electronic file is forwarded.
+# The kinds of a task: one entry each in the table of ``task_kinds`` (its shape, milestone,
+# hand-over steps and words); this Literal names them for the type checker and is checked
+# against the table below.
 TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
-# The tool of a ``seal`` task: anyone who owns an item of this type can stamp a document.
+if set(get_args(TaskKind)) != {k.id for k in task_kinds.KINDS}:  # pragma: no cover
+    raise RuntimeError("task_schema.TaskKind and the task_kinds table disagree")
+# The tool of a ``seal`` task in an office file of the previous format, which marked none
+# (``ItemType.seals``); the loader marks it (office.upgrade) and code asks office.seal_tool().
 SEAL_TOOL = "seal"
 # The task kind each shape of office operation takes (office.Operation.shape).
 SHAPE_KIND: dict[OperationShape, TaskKind] = {
-    "make": "produce",
-    "render": "print",
-    "transform": "copy",
-    "treat": "heat",
+    k.shape: cast(TaskKind, k.id) for k in task_kinds.KINDS if k.shape is not None
 }
 # The task kinds that a person does for the requester, with no facility: their words are
 # English (the sign and seal of a document, a file sent), not the office's.
-PERSON_KINDS: tuple[TaskKind, ...] = ("sign", "seal")
+PERSON_KINDS: tuple[TaskKind, ...] = tuple(cast(TaskKind, k) for k in task_kinds.person_kinds())
 FILE_KIND: TaskKind = "send_file"
 # What a finished task leaves true in the world (sim.goals milestones) → the task kind.
-MILESTONE_KIND: dict[str, TaskKind] = {
-    "holds": "transfer",
-    "printed": "print",
-    "copied": "copy",
-    "heated": "heat",
-    "signed": "sign",
-    "sealed": "seal",
-    "made": "produce",
-    "received": "send_file",
-}
+MILESTONE_KIND: dict[str, TaskKind] = {k.milestone: cast(TaskKind, k.id) for k in task_kinds.KINDS}
 # The coarse kinds of the usage report: what the robot did for an instruction. "none": it
 # reached nobody but its requester (text not understood, a decline, a question back).
 RecordKind = Literal["delivery", "file", "message", "none"]
@@ -94,7 +84,7 @@ class Task(BaseModel):
         if self.kind == "produce":
             return f"{self.item}:{self.recipient}"
         if self.kind == "print":
-            return f"file:{self.owner}"
+            return f"{self.input_item or self.item}:{self.owner}"
         return f"{self.item}:{self.owner}" if self.owner else None
 
 
@@ -163,29 +153,13 @@ def kind_shape(kind: str) -> OperationShape | None:
 PartKind = Literal[
     "fetch", "deliver", "print", "copy", "sign", "seal", "make", "heat", "forward_file", "get_file"
 ]
-PART_KINDS: tuple[PartKind, ...] = (
-    "fetch",
-    "deliver",
-    "print",
-    "copy",
-    "sign",
-    "seal",
-    "make",
-    "heat",
-    "forward_file",
-    "get_file",
+PART_KINDS: tuple[PartKind, ...] = tuple(
+    cast(PartKind, part) for k in task_kinds.KINDS for part in k.parts
 )
+if set(PART_KINDS) != set(get_args(PartKind)):  # pragma: no cover
+    raise RuntimeError("task_schema.PartKind and the task_kinds table disagree")
 PART_TASK_KIND: dict[str, TaskKind] = {
-    "fetch": "transfer",
-    "deliver": "transfer",
-    "print": "print",
-    "copy": "copy",
-    "sign": "sign",
-    "seal": "seal",
-    "make": "produce",
-    "heat": "heat",
-    "forward_file": "send_file",
-    "get_file": "send_file",
+    part: cast(TaskKind, k.id) for k in task_kinds.KINDS for part in k.parts
 }
 
 # The fields each part kind must name (dataset.spec checks them).
@@ -206,7 +180,9 @@ class Part(BaseModel):
     kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
     item: str | None = Field(default=None, description="item type (fetch, deliver)")
     owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
-    to: str | None = Field(default=None, description="recipient (deliver, print, forward_file)")
+    to: str | None = Field(
+        default=None, description="recipient (deliver, forward_file; print, copy, make)"
+    )
     signer: str | None = Field(default=None, description="who signs (sign)")
     operation: str | None = Field(
         default=None, description="the office operation, when several of the shape exist"
@@ -225,6 +201,8 @@ class Part(BaseModel):
     def task(self, requester: str, office: Office) -> Task:
         """This part as the task schema's :class:`Task` for ``requester``."""
         kind = self.task_kind()
+        paper = office.signable_type()  # what is signed or stamped
+        file = office.file_type()  # what is forwarded
         match self.kind:
             case "fetch":
                 return Task(kind=kind, item=self.item, owner=self.owner, recipient=requester)
@@ -233,24 +211,24 @@ class Part(BaseModel):
             case "sign":
                 return Task(
                     kind=kind,
-                    item="document",
+                    item=paper,
                     owner=requester,
                     recipient=requester,
                     actor=self.signer,
-                    input_item="document",
+                    input_item=paper,
                 )
             case "seal":
                 return Task(
                     kind=kind,
-                    item="document",
+                    item=paper,
                     owner=requester,
                     recipient=requester,
-                    input_item="document",
+                    input_item=paper,
                 )
             case "forward_file":
-                return Task(kind=kind, item="file", owner=requester, recipient=self.to or "")
+                return Task(kind=kind, item=file, owner=requester, recipient=self.to or "")
             case "get_file":
-                return Task(kind=kind, item="file", owner=self.owner, recipient=requester)
+                return Task(kind=kind, item=file, owner=self.owner, recipient=requester)
         op = self.operation
         if kind == "produce":
             product = self.item if self.kind == "make" else self.kind
@@ -258,7 +236,7 @@ class Part(BaseModel):
             return Task(
                 kind=kind,
                 item=product,
-                recipient=requester,
+                recipient=self.to or requester,
                 operation=op or (made.id if made else None),
             )
         found = office.with_shape(_KIND_SHAPE[kind]) if op is None else [office.operation(op)]

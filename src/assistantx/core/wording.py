@@ -8,22 +8,21 @@ id with a colon.
 
 from __future__ import annotations
 
+import lemminflect
+
+from assistantx.core import task_kinds
 from assistantx.core.english import words
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import kind_shape
 
-# What the person does at the locker, per code purpose ({item}: an ``item_phrase``). The
-# purposes that run an office operation on the item ("copy", "heat": the task kinds of those
-# shapes) are worded with the office's own operation by ``purpose_text``; these two lines are
-# only the fallback for an office without one.
+# What the person does at the locker, per code purpose ({item}: an ``item_phrase``): moving
+# the item in and out, and each task kind's work step from the table of kinds. The purposes
+# that run an office operation on the item are worded with the office's own operation by
+# ``purpose_text``; the table's line is only the fallback for an office without one.
 PURPOSE_TEXT = {
     "deposit": "put {item} into the locker",
     "collect": "take {item} out of the locker",
-    "sign": "take {item} out, sign it and put it back",
-    "seal": "take {item} out, stamp it with the seal and put it back",
-    "copy": "take {item} out, copy it and put the original and the copy back",
-    "heat": "take {item} out, heat it and put it back",
-    "produce": "make {item} and put it into the locker",
+    **{k.purpose: k.locker for k in task_kinds.KINDS if k.purpose and k.locker},
 }
 
 
@@ -33,7 +32,7 @@ def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None 
     where the office's operation of the copy shape is a scan."""
     thing = item_phrase(office, item_id, you=you)
     shape = kind_shape(purpose)
-    op = _operation_on(office, shape, item_id.partition(":")[0]) if shape else None
+    op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
     if op is None or shape not in ("transform", "treat"):
         return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
     if shape == "transform":
@@ -41,10 +40,26 @@ def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None 
     return f"take {thing} out, {op.name} it and put it back"
 
 
-def _operation_on(office: Office, shape: str, item_type: str) -> Operation | None:
-    """The office's operation of ``shape`` that works on ``item_type`` (else the first)."""
+def done_words(op: Operation) -> str:
+    """What an operation did to an item, in its own words for the outcome: the office's
+    ``done`` ("scanned to PDF"), else its verb's past participle ("shredded", "faxed")."""
+    if op.done:
+        return op.done
+    verb, _, rest = op.name.partition(" ")
+    forms = lemminflect.getInflection(verb, "VBN")
+    past = forms[0] if forms else f"{verb.removesuffix('e')}ed"
+    return f"{past} {rest}".strip()
+
+
+def _operation_on(
+    office: Office, shape: str, item_type: str, by: str | None = None
+) -> Operation | None:
+    """The office's operation of ``shape`` that works on ``item_type`` (else the first); of
+    several (a fax and a binder both take a document), the one ``by`` runs."""
     ops = [op for op in office.operations if op.shape(office) == shape]
-    return next((op for op in ops if op.input == item_type), ops[0] if ops else None)
+    on = [op for op in ops if op.input == item_type]
+    runs = [op for op in on if any(by in f.guards for f in office.offering(op.id))]
+    return next(iter(runs or on or ops), None)
 
 
 def person_name(office: Office, person_id: str, *, you: str | None = None) -> str:

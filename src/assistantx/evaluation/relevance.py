@@ -12,7 +12,7 @@ from typing import Any
 
 from assistantx.core.goals import parse_milestone
 from assistantx.core.office import Office
-from assistantx.core.task_schema import MILESTONE_KIND, SEAL_TOOL, kind_shape
+from assistantx.core.task_schema import MILESTONE_KIND, kind_shape
 
 
 def _owner(item: str) -> str:
@@ -50,7 +50,8 @@ def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) 
                 people.update((_owner(args[0]), args[1]))
             case "sealed":
                 people.add(_owner(args[0]))
-                people.update(office.owners_of(SEAL_TOOL))
+                tool = office.seal_tool()
+                people.update(office.owners_of(tool) if tool else ())
             case "printed" | "copied":
                 people.add(_owner(args[0]))
                 people.update(_kind_guards(office, name))

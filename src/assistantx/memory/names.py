@@ -31,9 +31,11 @@ class NameIndex:
     """Maps names to ids in tiers: 0 = ids, full names and declared aliases; 1 = name words."""
 
     def __init__(self) -> None:
+        self._ids: set[str] = set()
         self._tiers: list[dict[str, set[str]]] = [{}, {}]
 
     def add(self, entity_id: str, names: Iterable[str], words: Iterable[str] = ()) -> None:
+        self._ids.add(entity_id)
         for name in (entity_id, entity_id.replace("_", " "), *names):
             key = normalize(name)
             if key:
@@ -44,7 +46,12 @@ class NameIndex:
                 self._tiers[1].setdefault(key, set()).add(entity_id)
 
     def lookup(self, name: str, *, fuzzy: float = 0.86) -> list[str]:
-        """Ids that match ``name`` in the best tier (several = ambiguous; none = unknown)."""
+        """Ids that match ``name`` in the best tier (several = ambiguous; none = unknown).
+
+        An exact id is that id before any name matching: ``robin_a`` normalizes to "robin" (the
+        'a' reads as an article), which a colleague also called Robin would match as well."""
+        if name.strip() in self._ids:
+            return [name.strip()]
         key = normalize(name)
         if not key:
             return []

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from assistantx.core.office import Operation, OperationShape, Ownership
 from assistantx.core.ports.lock import WORK_PURPOSES
-from assistantx.core.task_schema import FILE_KIND, SEAL_TOOL, kind_shape
+from assistantx.core.task_schema import FILE_KIND, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
     asks_to_receive,
@@ -47,7 +47,8 @@ def can_do(world: World, person: str, request: str) -> bool:
     if request == "sign":
         return True
     if request == "seal":
-        return world.owns(person, SEAL_TOOL)
+        tool = world.office.seal_tool()
+        return tool is not None and world.owns(person, tool)
     if request == FILE_KIND:
         return any(
             world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
@@ -174,7 +175,8 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     if purpose in WORK_PURPOSES:
         if where != LOCKER:
             return missing
-        if purpose == "seal" and not world.owns(person, SEAL_TOOL):
+        tool = world.office.seal_tool()
+        if purpose == "seal" and (tool is None or not world.owns(person, tool)):
             return "I don't have the seal."
         shape = kind_shape(purpose)
         if shape is not None and _operation_here(world, person, place, (shape,)) is None:
@@ -222,6 +224,9 @@ def perform_handover(
     elif purpose == "heat":
         world.heated.add(item)
         world.note(time, "heated", item=item, by=person)
+        op = _operation_here(world, person, place, ("treat",))
+        if op is not None and op.consumes:  # shredded: it stays where the machine is
+            world.move_item(time, item, place, by=person)
     elif purpose == "produce":
         item_type, _, owner = item.partition(":")
         op = world.office.making(item_type)

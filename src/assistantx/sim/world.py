@@ -112,8 +112,13 @@ class World:
     def check(self, milestone: dict[str, Any]) -> bool:
         name, args = parse_milestone(milestone)
         match name:
-            case "holds":
-                return any(self.holder.get(i) == args[0] for i in self.matching(args[1]))
+            case "holds":  # ``type:*``: any item of the type but the holder's own
+                person, wanted = args
+                return any(
+                    self.holder.get(i) == person
+                    for i in self.matching(wanted)
+                    if not (wanted.endswith(":*") and i.partition(":")[2] == person)
+                )
             case "signed":
                 return (args[0], args[1]) in self.signed
             case "sealed":

@@ -101,10 +101,10 @@ def test_candidate_order_is_nearest_first(office: Office) -> None:
 def test_bad_base_instruction_is_a_clear_error(office: Office, tmp_path: Path) -> None:
     bad = tmp_path / "base.yaml"
     bad.write_text(
-        "instructions:\n- id: x\n  requester: zhang\n  text: get me a stapler\n"
-        "  parts: [{kind: fetch, item: stapler}]\n"
+        "instructions:\n- id: x\n  requester: zhang\n  text: take my book to Lee\n"
+        "  parts: [{kind: deliver, item: book, to: lee}]\n"
     )
-    with pytest.raises(DatasetError, match="owns a stapler already"):
+    with pytest.raises(DatasetError, match="the requester owns no book"):
         load_base_instructions(bad, office)
     bad.write_text("instructions:\n- id: x\n  requester: lee\n  text: t\n  parts: [{kind: fly}]\n")
     with pytest.raises(DatasetError, match=r"instructions\[0\]\.parts"):

@@ -130,6 +130,18 @@ def _named(person: str, question: str, *, wants_file: bool = False) -> Role:
     )
 
 
+def _recipient(plan: TaskPlan, part: Part, who: str) -> str:
+    """Who a made thing (a printout, a copy, a tea) is brought to: the part's ``to``, asked to
+    be at their desk, else the requester."""
+    if part.to is None:
+        return REQUESTER
+    target = _named(
+        part.to, f"Could you be at your desk? The robot brings you something from {who}."
+    )
+    plan.add_role(target)
+    return target.key
+
+
 def _guard(office: Office, operation: str, question: str, group_question: str | None) -> Role:
     facility = facility_for(office, operation)
     return Role(
@@ -147,23 +159,25 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
-            keeper = office.keeper(part.owner, item_type) if part.owner else None
+            # no owner named: the one kept at a facility (the cupboard's label maker) first
+            owner = part.owner or office.kept_owner(item_type, besides=a)
+            keeper = office.keeper(owner, item_type) if owner else None
             if keeper is not None:  # kept in a cupboard: its guard takes it out
-                if part.owner != a:  # with the owner's own yes: the keeper can't give it away
+                if owner != a:  # with the owner's own yes: the keeper can't give it away
                     plan.add_role(
                         _named(
-                            part.owner or "",
+                            owner or "",
                             f"Could you let {who} have your {name} from the {keeper.name}?",
                         )
                     )
                 role = Role(
                     key=f"guard:{keeper.id}",
                     kind="guard",
-                    question=f"Could you take {part.owner}'s {name} out of the {keeper.name}?",
+                    question=f"Could you take {owner}'s {name} out of the {keeper.name}?",
                     group_question=f"Could anyone take the {name} out of the {keeper.name}?",
                     facility=keeper.id,
                 )
-                item = f"{item_type}:{part.owner}"
+                item = f"{item_type}:{owner}"
                 plan.add_goal({"holds": [a, item]})
                 plan.add_role(role)
                 plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
@@ -213,14 +227,7 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.forwards.append(Forward(REQUESTER, role.key))
             place = role.facility or ""
             plan.visits.append(Visit(place, role.key, (Code(role.key, product, "produce"),)))
-            recipient = REQUESTER
-            if part.to is not None:
-                target = _named(
-                    part.to,
-                    f"Could you be at your desk? The robot brings you something from {who}.",
-                )
-                plan.add_role(target)
-                recipient = target.key
+            recipient = _recipient(plan, part, who)
             plan.deliveries.append((recipient, Code(recipient, product, "collect")))
             plan.add_goal({"printed": f"{source}:{a}"})
             plan.add_goal({"holds": [part.to or a, product]})
@@ -240,23 +247,27 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
             plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, f"{made}:{a}", "collect")))
+            # the copy goes to the named recipient; the original comes back to its owner
+            recipient = _recipient(plan, part, who)
+            plan.deliveries.append((recipient, Code(recipient, f"{made}:{a}", "collect")))
             plan.add_goal({"copied": doc})
-            plan.add_goal({"holds": [a, f"{made}:{a}"]})
+            plan.add_goal({"holds": [part.to or a, f"{made}:{a}"]})
             plan.add_goal({"holds": [a, doc]})
         case "sign" | "seal":
-            doc = f"document:{a}"
+            paper = office.signable_type() or ""
+            doc = f"{paper}:{a}"
+            paper_name = office.item_type(paper).name
             if part.kind == "sign":
                 signer = part.signer or ""
-                role = _named(signer, f"Could you sign {who}'s document?")
+                role = _named(signer, f"Could you sign {who}'s {paper_name}?")
                 plan.add_goal({"signed": [doc, signer]})
             else:
                 role = Role(
                     key="owner:seal",
                     kind="owner",
-                    question=f"Could you stamp {who}'s document with your seal?",
-                    group_question=f"Could anyone stamp {who}'s document with the company seal?",
-                    item_type="seal",
+                    question=f"Could you stamp {who}'s {paper_name} with your seal?",
+                    group_question=f"Could anyone stamp {who}'s {paper_name} with the seal?",
+                    item_type=office.seal_tool(),
                 )
                 plan.add_goal({"sealed": doc})
             plan.add_role(role)
@@ -276,12 +287,14 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
                 f"Could anyone get {thing} for {who} from the {place_name}?",
             )
             plan.add_role(role)
-            product = f"{made}:{a}"
+            # made for whoever it is for (Mark's tea), as the embedded planner names it
+            product = f"{made}:{part.to or a}"
             plan.visits.append(
                 Visit(role.facility or "", role.key, (Code(role.key, product, "produce"),))
             )
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, product, "collect")))
-            plan.add_goal({"holds": [a, product]})
+            recipient = _recipient(plan, part, who)
+            plan.deliveries.append((recipient, Code(recipient, product, "collect")))
+            plan.add_goal({"holds": [part.to or a, product]})
         case "heat":
             op = part_operation(office, part)
             source = op.input or ""
@@ -315,17 +328,18 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.visits.append(
                 Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
             )
-            plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
             plan.add_goal({"heated": kept})
-            plan.add_goal({"holds": [a, kept]})
+            if not op.consumes:  # a shredded document does not come back
+                plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
+                plan.add_goal({"holds": [a, kept]})
         case "forward_file":
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))
             plan.must_be_available.add(to)
-            plan.add_goal({"received": [to, f"file:{a}"]})
+            plan.add_goal({"received": [to, f"{office.file_type()}:{a}"]})
         case "get_file":
             owner = part.owner or ""
             role = _named(owner, f"Could you send me your file for {who}?", wants_file=True)
             plan.add_role(role)
             plan.forwards.append(Forward(role.key, REQUESTER))
-            plan.add_goal({"received": [a, f"file:{owner}"]})
+            plan.add_goal({"received": [a, f"{office.file_type()}:{owner}"]})

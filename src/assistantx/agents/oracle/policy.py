@@ -149,7 +149,13 @@ def optimal_script(
                 Inquire(contact=group, question=role.group_question),
                 Wait(reason=f"waiting for an answer in {group}", timeout_s=ASK_TIMEOUT_S),
             ]
-            helpers = [p for p in feedback.repliers if p != a and p not in tried]
+            # a guard's job is done by a guard: someone offering their own item instead ("I
+            # have a label maker" to "could anyone take it out of the cupboard?") is no yes
+            helpers = [
+                p
+                for p in feedback.repliers
+                if p != a and p not in tried and (role.kind != "guard" or able(role, office, p))
+            ]
             for helper in helpers[: 1 if not role.own_item_leaves else None]:
                 if role.own_item_leaves:  # a yes in the group: the owner's own yes in their chat
                     feedback = yield [

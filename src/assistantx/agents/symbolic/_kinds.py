@@ -16,7 +16,7 @@ from assistantx.agents.symbolic._lexicon import Mention
 from assistantx.agents.symbolic._parties import Clause, Roles, recipient_of
 from assistantx.core import english
 from assistantx.core.office import Office, OperationShape
-from assistantx.core.task_schema import FILE_KIND, SEAL_TOOL, Task
+from assistantx.core.task_schema import FILE_KIND, Task
 
 _SEND_WORDS = english.words("send_words")
 # The task kinds that act on the requester's file.
@@ -40,6 +40,8 @@ class Scene:
     facilities: list[str]
     doc: Mention | None  # the document-like item the clause is about
     refers: bool  # "it", "them": the clause points back
+    seal_tool: str | None = None  # the office's item type that stamps (ItemType.seals)
+    file_type: str | None = None  # the office's electronic file type
 
     @property
     def recipient(self) -> str:
@@ -72,7 +74,7 @@ def _sign(s: Scene) -> Task:
 
 
 def _seal_items(s: Scene) -> list[Mention]:
-    return [m for m in s.clause.mentions if m.kind == "item" and m.id == SEAL_TOOL]
+    return [m for m in s.clause.mentions if m.kind == "item" and m.id == s.seal_tool]
 
 
 def _seal(s: Scene) -> Task:
@@ -100,7 +102,10 @@ def _heat(s: Scene) -> Task:
 def _print(s: Scene) -> Task:
     source = (s.files or s.personal)[0] if s.files or s.personal else None
     return Task(
-        kind="print", item="file", owner=s.owner(source) or s.requester, recipient=s.recipient
+        kind="print",
+        item=s.file_type,
+        owner=s.owner(source) or s.requester,
+        recipient=s.recipient,
     )
 
 
@@ -143,6 +148,7 @@ class TaskReader:
         self.printout = product_of_shape(office, "render")
         self.copy = product_of_shape(office, "transform")
         self.sourced = frozenset(p for p in (self.printout, self.copy) if p)
+        self.file = office.file_type() or ""  # what is forwarded
 
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
@@ -191,6 +197,8 @@ class TaskReader:
             facilities,
             doc,
             refers,
+            self.office.seal_tool(),
+            self.office.file_type(),
         )
 
     def tasks(
@@ -221,7 +229,9 @@ class TaskReader:
             if s.refers and sends and previous is not None and previous.kind in FILE_KINDS:
                 # "print my slides and forward them to Zhou": the same file, passed on
                 file_owner = previous.owner or requester
-                return [Task(kind=FILE_KIND, item="file", owner=file_owner, recipient=s.recipient)]
+                return [
+                    Task(kind=FILE_KIND, item=self.file, owner=file_owner, recipient=s.recipient)
+                ]
             made = [
                 p
                 for f in s.facilities
@@ -230,9 +240,9 @@ class TaskReader:
             ]
             if made:
                 return [Task(kind="produce", item=p, recipient=s.recipient) for p in made]
-            if "seal" in s.cues:  # "bring me the stamp": the seal as an item
+            if "seal" in s.cues and s.seal_tool:  # "bring me the stamp": the seal as an item
                 items = physical = [
-                    Mention("item", m.start, m.end, (SEAL_TOOL,), m.possessive, m.text)
+                    Mention("item", m.start, m.end, (s.seal_tool,), m.possessive, m.text)
                     for m in clause.mentions
                     if m.kind == "cue" and "seal" in m.ids
                 ][:1]
@@ -247,7 +257,7 @@ class TaskReader:
                 tasks.append(Task(kind="produce", item=m.id, recipient=to))
             elif kind == "electronic" or (kind == "personal" and sends and not roles.source):
                 file_owner = s.owner(m) or helper or requester
-                tasks.append(Task(kind=FILE_KIND, item="file", owner=file_owner, recipient=to))
+                tasks.append(Task(kind=FILE_KIND, item=self.file, owner=file_owner, recipient=to))
             else:
                 tasks.append(
                     Task(kind="transfer", item=m.id, owner=s.owner(m) or helper, recipient=to)

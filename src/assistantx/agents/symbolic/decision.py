@@ -23,6 +23,7 @@ from assistantx.agents.symbolic.planning import (
     role_text,
 )
 from assistantx.agents.symbolic.roles import Role, Roles, RoleState
+from assistantx.core import task_kinds
 from assistantx.core.actions import (
     Action,
     ForwardFile,
@@ -35,7 +36,8 @@ from assistantx.core.actions import (
     WaitInPlace,
 )
 from assistantx.core.office import Office
-from assistantx.core.wording import item_phrase, person_name, place_name
+from assistantx.core.task_schema import operation_of
+from assistantx.core.wording import done_words, item_phrase, person_name, place_name
 
 MAX_ACTIONS = 4
 MAX_CLARIFICATIONS = 3  # questions to the requester in all (one re-ask of each)
@@ -233,36 +235,24 @@ class Decider:
         )
         collected = [i for p in view.phases for i, purpose in p.items if purpose == "collect"]
         owner = collected[0].split(":", 1)[1] if collected else task.owner
-        match task.kind:
-            case "transfer":
-                verb = "have" if task.recipient == requester else "has"
-                text = f"{who(task.recipient)} now {verb} {whose(owner)} {item}"
-            case "print":
-                made = collected[0].partition(":")[0] if collected else ""
-                product = self.office.item_type(made).name if made else "result"
-                text = (
-                    f"the {product} of {whose(task.owner)} file was handed to {who(task.recipient)}"
-                )
-            case "copy":
-                text = (
-                    f"{whose(task.owner)} {item} and its copy were handed to {who(task.recipient)}"
-                )
-            case "sign":
-                text = (
-                    f"{whose(task.owner)} {item} was signed by {who(task.actor)} "
-                    f"and handed to {who(task.recipient)}"
-                )
-            case "seal":
-                text = (
-                    f"{whose(task.owner)} {item} was stamped with the seal "
-                    f"and handed to {who(task.recipient)}"
-                )
-            case "produce":
-                text = f"{item} was handed to {who(task.recipient)}"
-            case "heat":
-                text = f"{whose(task.owner)} {item} was heated and handed to {who(task.recipient)}"
-            case _:
-                text = f"{whose(task.owner)} file was passed to {who(task.recipient)}"
+        if task.kind != "transfer":
+            owner = task.owner
+        made = next((i.partition(":")[0] for i in collected if i.partition(":")[2]), "")
+        made = made if made and made != task.item else ""
+        op_id = operation_of(self.office, task)
+        op = self.office.operation(op_id) if op_id else None
+        spec = task_kinds.kind(task.kind)
+        template = spec.done_consumed if op and op.consumes and spec.done_consumed else spec.done
+        text = template.format(
+            to=who(task.recipient),
+            have="have" if task.recipient == requester else "has",
+            whose=f"{whose(owner)} {item}",
+            owner_s=whose(task.owner),
+            item=item,
+            product=self.office.item_type(made).name if made else "result",
+            by=who(task.actor),
+            done=done_words(op) if op else task.kind,
+        )
         return text + by
 
 

@@ -16,10 +16,11 @@ loses its person and its Confirm phase is unmet again.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Literal, cast
 
 from assistantx.agents.symbolic.evidence import Evidence
 from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
+from assistantx.core import task_kinds
 from assistantx.core.english import wording
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Purpose
@@ -167,6 +168,11 @@ class Planner:
         ]
 
     def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
+        if t.kind == "transfer" and t.owner is None and t.item:
+            # nobody's named: the one kept at a facility (the cupboard's label maker) first,
+            # as the oracle does (agents/oracle/plan.py)
+            kept = self.office.kept_owner(t.item, besides=requester)
+            t = t.model_copy(update={"owner": kept}) if kept else t
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
         phases: list[Phase] = []
         roles: list[Role] = []
@@ -248,22 +254,6 @@ class Planner:
                     Handover(guard, (leg(item, "copy", owner),)),
                     *back,
                 ]
-            case "sign" | "seal":
-                source = self._source(n, t, requester)
-                doer = Role(
-                    f"{n}.{t.kind}er",
-                    t.kind,
-                    requester,
-                    fixed=t.actor,
-                    item_type=item,
-                    item_owner=owner,
-                )
-                roles = [doer, source, recipient]
-                phases = [
-                    Handover(source, (leg(item, "deposit", owner),)),
-                    Handover(doer, (leg(item, t.kind, owner),)),
-                    Handover(recipient, (leg(item, "collect", owner),)),
-                ]
             case "produce":
                 guard = Role(
                     f"{n}.maker",
@@ -279,22 +269,34 @@ class Planner:
                     Handover(guard, (leg(item, "produce", t.recipient),)),
                     Handover(recipient, (leg(item, "collect", t.recipient),)),
                 ]
-            case "heat":
+            case kind if task_kinds.works_on_item(kind):
+                # The work-on-the-item kinds of the table (sign, seal, heat ...): the item
+                # goes in, the doer works on it, the recipient takes it out.
+                spec = task_kinds.kind(kind)
                 source = self._source(n, t, requester)
-                heater = Role(
-                    f"{n}.heater",
-                    "heat",
+                doer = Role(
+                    f"{n}.{spec.doer}",
+                    kind,
                     requester,
+                    fixed=t.actor if spec.by_person else None,
                     item_type=item,
                     item_owner=owner,
-                    facility=self._facility_for(t),
-                    operation=op,
+                    facility=None if spec.by_person else self._facility_for(t),
+                    operation=None if spec.by_person else op,
                 )
-                roles = [source, heater, recipient]
+                party = {"source": source, "doer": doer, "recipient": recipient}
+                steps = spec.steps
+                if op is not None and self.office.operation(op).consumes:
+                    # a shredded document does not come back: nobody collects it
+                    steps = tuple(s for s in steps if s.party != "recipient")
+                # A person who does the work is sought first (a signer may be away); a
+                # facility's guard is found where the facility is.
+                roles = [doer, source, recipient] if spec.by_person else [source, doer, recipient]
+                if len(steps) < len(spec.steps):
+                    roles.remove(recipient)
                 phases = [
-                    Handover(source, (leg(item, "deposit", owner),)),
-                    Handover(heater, (leg(item, "heat", owner),)),
-                    Handover(recipient, (leg(item, "collect", owner),)),
+                    Handover(party[step.party], (leg(item, cast(Purpose, step.purpose), owner),))
+                    for step in steps
                 ]
             case "send_file":
                 if owner != requester:
@@ -304,7 +306,7 @@ class Planner:
                             "send_file",
                             requester,
                             fixed=owner,
-                            item_type="file",
+                            item_type=item,
                             beneficiary=t.recipient,
                         )
                     ]
@@ -486,21 +488,11 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     to = name(task.recipient)
     op = operation_of(office, task)
     verb = office.operation(op).name if op else task.kind  # the office's word ("scan")
-    match task.kind:
-        case "transfer":
-            return f"bring {whose} to {to}"
-        case "print":
-            return f"{verb} {owner_s(task.owner)} file for {to}"
-        case "copy":
-            return f"{verb} {whose} for {to}"
-        case "sign":
-            return f"get {whose} signed by {name(task.actor)}"
-        case "seal":
-            return f"get {whose} stamped with the seal"
-        case "produce":
-            return f"get {item} for {to}"
-        case "heat":
-            return f"{verb} {whose} for {to}"
-        case "send_file":
-            return f"pass {owner_s(task.owner)} file to {to}"
-    return task.kind  # pragma: no cover
+    return task_kinds.kind(task.kind).todo.format(
+        verb=verb,
+        whose=whose,
+        owner_s=owner_s(task.owner),
+        to=to,
+        by=name(task.actor),
+        item=item,
+    )

@@ -133,8 +133,8 @@ class Reflector:
             if role is None:
                 continue
             owned = role.item_type if role.asks_ownership else None
-            if role.kind == "seal":
-                owned = "seal"
+            if role.kind == "seal":  # a yes means they own the office's seal
+                owned = self.roles.office.seal_tool()
             if owned is None:
                 continue
             if not q.group:

@@ -105,12 +105,17 @@ class Roles:
                     return op.name
         return role.kind
 
+    def _used_up(self, role: Role) -> bool:
+        return role.item_type is not None and self.office.item_type(role.item_type).consumable
+
     def _request(self, role: Role, *, anyone: bool) -> str:
         """The request, for one person ('your') or for a group ('a')."""
         thing = self._thing(role)
         beneficiary = self._name(role.beneficiary or role.requester)
         place = self.office.facility(role.facility).name if role.facility else ""
         match role.kind:
+            case "lend" if self._used_up(role):  # paper is given, not lent
+                return f"spare {beneficiary} some {'' if anyone else 'of your '}{thing}"
             case "lend":
                 return f"lend {beneficiary} {a_thing(thing) if anyone else f'your {thing}'}"
             case "give":
@@ -167,7 +172,8 @@ class Roles:
         if role.kind == "lend" and role.item_type is not None:
             found = [p for p in ltm.owners(role.item_type) if p != role.beneficiary]
         elif role.kind == "seal":
-            found = ltm.owners("seal")
+            tool = self.office.seal_tool()
+            found = ltm.owners(tool) if tool else []
         elif role.facility is not None:
             found = ltm.guards(role.facility)
         else:

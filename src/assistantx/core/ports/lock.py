@@ -11,10 +11,11 @@ import asyncio
 import logging
 from abc import ABC, abstractmethod
 from collections.abc import Callable
-from typing import Literal
+from typing import Literal, get_args
 
 from pydantic import BaseModel, Field
 
+from assistantx.core import task_kinds
 from assistantx.core.lifecycle import Component
 
 logger = logging.getLogger(__name__)
@@ -22,8 +23,11 @@ logger = logging.getLogger(__name__)
 # What the person does at the locker: put the item in, take it out, or take it out, work on
 # it (sign, seal, copy, heat) and put it back; "produce" = make it at a facility and put it in.
 Purpose = Literal["deposit", "collect", "sign", "seal", "copy", "heat", "produce"]
-# The purposes for which the person takes the item out, works on it and puts it back.
-WORK_PURPOSES: frozenset[Purpose] = frozenset({"sign", "seal", "copy", "heat"})
+# The purposes for which the person takes the item out, works on it and puts it back: the
+# work steps of the table of task kinds.
+WORK_PURPOSES: frozenset[str] = task_kinds.work_purposes()
+if not WORK_PURPOSES <= set(get_args(Purpose)):  # pragma: no cover
+    raise RuntimeError("a work step of the task_kinds table is not a lock Purpose")
 
 LockEventKind = Literal["door_opened", "door_closed", "code_accepted", "code_rejected"]
 

@@ -1,0 +1,214 @@
+"""The one table of task kinds: what each kind of task is, who does it and how it is said.
+
+Every part of the assistant that treats task kinds differently reads this table instead of a
+``match`` of its own: the task schema (milestones, the dataset's part kinds, the operation
+shape a kind runs), the lock (the purpose of a work code and whether the item comes back),
+the planner (the hand-over steps and the doer's role), the simulated people (what a work code
+leaves true in the world) and the words told to people (the step at the locker, the task in a
+plan, the outcome).
+
+A kind is one :class:`KindSpec`. The office-facing kinds (``shape`` set) take their *verbs*
+from the office's own operation ("scan", "shred", "fax"), so a new service of an existing
+shape is an office-file entry alone; the text templates here only fill in the operation's own
+words. The fields:
+
+- ``shape``: the shape of office operation the kind runs (``office.Operation.shape``), None
+  for a person-to-person kind (a signature) or a plain move of an item;
+- ``parts``: the part kinds of the dataset's base instructions that ask for it;
+- ``milestone``: the world-state predicate a finished task of this kind makes true;
+- ``purpose``: the lock code's purpose of its work step (None: no work step at the locker);
+- ``doer``: the role that does the work ("signer", "heater"), for the plan's role keys;
+- ``steps``: the hand-over steps of the plain case, in order: who meets the robot
+  (``source``, ``doer``, ``recipient``) and the code's purpose there;
+- ``locker``: what the doer does at the locker when the office has no operation to name it
+  ({item}: the item's phrase);
+- ``todo``: the task in a plan's words ({verb} the operation's name, {whose} the item's
+  phrase, {to} the recipient, {by} the actor);
+- ``done``: the outcome told to the requester ({done}: the operation's past participle).
+
+This module sits in the domain core with the office and imports nothing above it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from assistantx.core.office import OperationShape
+
+Party = Literal["source", "doer", "recipient"]
+
+
+@dataclass(frozen=True)
+class Step:
+    """One hand-over at the locker: who meets the robot and what their code is for."""
+
+    party: Party
+    purpose: str
+
+
+@dataclass(frozen=True)
+class KindSpec:
+    """One kind of task (see the module docstring for each field)."""
+
+    id: str
+    parts: tuple[str, ...]
+    milestone: str
+    todo: str
+    done: str
+    shape: OperationShape | None = None
+    by_person: bool = False
+    purpose: str | None = None
+    doer: str | None = None
+    steps: tuple[Step, ...] = ()
+    locker: str | None = None
+    returns: bool = True
+    done_consumed: str | None = None  # the outcome when the operation consumes the item
+
+    @property
+    def works_at_locker(self) -> bool:
+        """Whether a person takes the item out of the locker, works on it and puts it back
+        (or, for a kind that does not return it, keeps it)."""
+        return self.purpose is not None and self.purpose != "produce"
+
+
+# The work-on-the-item pattern: the item goes in, the doer works on it, the recipient collects.
+_WORK = (Step("source", "deposit"), Step("doer", "{purpose}"), Step("recipient", "collect"))
+
+
+def _work(purpose: str) -> tuple[Step, ...]:
+    return tuple(Step(s.party, s.purpose.format(purpose=purpose)) for s in _WORK)
+
+
+KINDS: tuple[KindSpec, ...] = (
+    KindSpec(
+        id="transfer",
+        parts=("fetch", "deliver"),
+        milestone="holds",
+        steps=(Step("source", "deposit"), Step("recipient", "collect")),
+        todo="bring {whose} to {to}",
+        done="{to} now {have} {whose}",
+    ),
+    KindSpec(
+        id="print",
+        parts=("print",),
+        milestone="printed",
+        shape="render",
+        purpose="produce",
+        doer="renderer",
+        todo="{verb} {owner_s} file for {to}",
+        done="the {product} of {owner_s} file was handed to {to}",
+    ),
+    KindSpec(
+        id="copy",
+        parts=("copy",),
+        milestone="copied",
+        shape="transform",
+        purpose="copy",
+        doer="copier",
+        locker="take {item} out, copy it and put the original and the copy back",
+        todo="{verb} {whose} for {to}",
+        done="{whose} and its {product} were handed to {to}",
+    ),
+    KindSpec(
+        id="sign",
+        parts=("sign",),
+        milestone="signed",
+        by_person=True,
+        purpose="sign",
+        doer="signer",
+        steps=_work("sign"),
+        locker="take {item} out, sign it and put it back",
+        todo="get {whose} signed by {by}",
+        done="{whose} was signed by {by} and handed to {to}",
+    ),
+    KindSpec(
+        id="seal",
+        parts=("seal",),
+        milestone="sealed",
+        by_person=True,
+        purpose="seal",
+        doer="sealer",
+        steps=_work("seal"),
+        locker="take {item} out, stamp it with the seal and put it back",
+        todo="get {whose} stamped with the seal",
+        done="{whose} was stamped with the seal and handed to {to}",
+    ),
+    KindSpec(
+        id="produce",
+        parts=("make",),
+        milestone="made",
+        shape="make",
+        purpose="produce",
+        doer="maker",
+        steps=(Step("doer", "produce"), Step("recipient", "collect")),
+        locker="make {item} and put it into the locker",
+        todo="get {item} for {to}",
+        done="{item} was handed to {to}",
+    ),
+    KindSpec(
+        id="heat",
+        parts=("heat",),
+        milestone="heated",
+        shape="treat",
+        purpose="heat",
+        doer="heater",
+        steps=_work("heat"),
+        locker="take {item} out, heat it and put it back",
+        todo="{verb} {whose} for {to}",
+        done="{whose} was {done} and handed to {to}",
+        done_consumed="{whose} was {done}",
+    ),
+    KindSpec(
+        id="send_file",
+        parts=("forward_file", "get_file"),
+        milestone="received",
+        todo="pass {owner_s} file to {to}",
+        done="{owner_s} file was passed to {to}",
+    ),
+)
+
+_BY_ID: dict[str, KindSpec] = {k.id: k for k in KINDS}
+
+
+def kind(kind_id: str) -> KindSpec:
+    """The table's entry for a task kind; KeyError names the known kinds."""
+    try:
+        return _BY_ID[kind_id]
+    except KeyError:
+        raise KeyError(f"unknown task kind {kind_id!r}; known: {', '.join(_BY_ID)}") from None
+
+
+def of_shape(shape: OperationShape) -> KindSpec | None:
+    """The kind that runs an office operation of ``shape`` (None: a room to use)."""
+    return next((k for k in KINDS if k.shape == shape), None)
+
+
+def of_milestone(milestone: str) -> KindSpec | None:
+    return next((k for k in KINDS if k.milestone == milestone), None)
+
+
+def of_part(part: str) -> KindSpec | None:
+    return next((k for k in KINDS if part in k.parts), None)
+
+
+def of_purpose(purpose: str) -> KindSpec | None:
+    """The kind whose work step a lock code of ``purpose`` is (None: deposit, collect)."""
+    return next((k for k in KINDS if k.purpose == purpose and k.works_at_locker), None)
+
+
+def works_on_item(kind_id: str) -> bool:
+    """Whether a kind is the plain work-on-the-item pattern: the item goes into the locker,
+    its doer works on it, its recipient takes it out (sign, seal, heat)."""
+    spec = kind(kind_id)
+    return spec.purpose is not None and spec.steps == _work(spec.purpose)
+
+
+def work_purposes() -> frozenset[str]:
+    """The code purposes for which a person takes the item out of the locker and works on it."""
+    return frozenset(k.purpose for k in KINDS if k.purpose and k.works_at_locker)
+
+
+def person_kinds() -> tuple[str, ...]:
+    """The kinds a person does for the requester with no facility (their words are English)."""
+    return tuple(k.id for k in KINDS if k.by_person)
