@@ -16,8 +16,8 @@ One filter update, run when the odometry has moved ``update_min_d`` metres or tu
    ``beam_skip_distance`` of a mapped obstacle for less than ``beam_skip_threshold`` of the
    (weighted) particles is left out for all of them: in a converged cloud that is a return
    from something the map lacks (a person, a moved box), which would otherwise pull the
-   estimate towards a pose that explains it. If more than ``beam_skip_error_threshold`` of the beams would be skipped, the
-   cloud does not agree on anything and every beam is used.
+   estimate towards a pose that explains it. If more than ``beam_skip_error_threshold`` of
+   the beams would be skipped, the cloud does not agree on anything and every beam is used.
 3. Every ``resample_interval`` updates, KLD-sampling with augmented-MCL recovery: a
    low-variance (systematic) resample draws ``max_particles`` candidates in O(N log N); with
    probability ``max(0, 1 - w_fast / w_slow)`` a candidate is replaced by a uniform random pose
@@ -90,6 +90,9 @@ class AmclParams:
     # hypotheses alive while the cloud is spread (global localization, recovery).
     beam_product_exponent: float = 1.0
     do_beamskip: bool = False
+    # Not in nav2: measure distances to the unknown rim of the known floor too (the grey edge
+    # of a SLAM map is a wall seen edge-on, and the world's beams end there).
+    unknown_rim_is_wall: bool = False
     beam_skip_distance: float = 0.5
     beam_skip_threshold: float = 0.3
     beam_skip_error_threshold: float = 0.9
@@ -131,6 +134,8 @@ class LikelihoodField:
     def __init__(self, grid: OccupancyMap, params: AmclParams) -> None:
         self.grid = grid
         occupied = grid.data >= 65
+        if params.unknown_rim_is_wall:
+            occupied = occupied | grid.unknown_rim
         distance = disk_cache.cached_array(
             "occupied-distance",
             (occupied.shape, occupied.tobytes()),

@@ -26,10 +26,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import numpy.typing as npt
-from scipy.ndimage import binary_dilation, distance_transform_edt
+from scipy.ndimage import distance_transform_edt
 
 from assistantx.nav.geometry import FloatArray
-from assistantx.nav.occupancy_map import FREE, UNKNOWN, OccupancyMap
+from assistantx.nav.occupancy_map import OccupancyMap
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -112,13 +112,6 @@ class Walker:
         return s, self.direction
 
 
-def unknown_rim(grid: OccupancyMap) -> BoolArray:
-    """Unknown cells with a free cell among their 8 neighbours."""
-    free = grid.data == FREE
-    near_free = binary_dilation(free, structure=np.ones((3, 3), dtype=bool))
-    return np.asarray((grid.data == UNKNOWN) & near_free)
-
-
 class GroundTruth:
     def __init__(
         self,
@@ -131,13 +124,19 @@ class GroundTruth:
         robot_radius_m: float = 0.25,
         yield_gap_m: float = 0.2,
         turn_back_s: float = 3.0,
+        trail_every_s: float | None = None,
     ) -> None:
         self.grid = grid
         self.boxes, self.doors = tuple(boxes), tuple(doors)
         self.robot_radius_m = robot_radius_m
         self.yield_gap_m = yield_gap_m
         self.turn_back_s = turn_back_s
-        static = grid.obstacles | unknown_rim(grid)
+        # Where each person was, every ``trail_every_s`` (for a picture of the run).
+        self.trail_every_s = trail_every_s
+        self.trails: list[list[tuple[float, float]]] = [[] for _ in walkers]
+        self.time_s = 0.0
+        self._next_trail_s = 0.0
+        static = grid.obstacles | grid.unknown_rim
         cx, cy = grid.cell_to_world(*np.meshgrid(np.arange(grid.width), np.arange(grid.height)))
         for box in self.boxes:
             static |= (np.abs(cx - box.x) <= box.width_m / 2) & (
@@ -169,8 +168,13 @@ class GroundTruth:
 
     def advance(self, dt_s: float, robot_xy: FloatArray | None = None) -> None:
         """Move every person ``dt_s`` seconds along their path, yielding to the robot."""
+        self.time_s += dt_s
         if not self.walkers:
             return
+        if self.trail_every_s is not None and self.time_s >= self._next_trail_s:
+            self._next_trail_s = self.time_s + self.trail_every_s
+            for trail, walker in zip(self.trails, self.walkers, strict=True):
+                trail.append((float(walker.position[0]), float(walker.position[1])))
         for walker in self.walkers:
             s, direction = walker.next_s(dt_s)
             if robot_xy is not None:
@@ -205,7 +209,7 @@ class GroundTruth:
         flat[self._stamped] = True
 
     # -- the robot's safety ----------------------------------------------------------------
-    def clearance_m(self, xy: FloatArray) -> float:
+    def clearance_m(self, xy: FloatArray, *, people: bool = True) -> float:
         """Gap (m) between a round robot at ``xy`` and the nearest solid cell or person;
         <= 0 is a collision. Off the map counts as a collision."""
         grid = self.grid
@@ -213,13 +217,14 @@ class GroundTruth:
         if not (0 <= ix < grid.width and 0 <= iy < grid.height):
             return -self.robot_radius_m
         gap = float(self._static_distance_m[int(iy), int(ix)]) - self.robot_radius_m
-        for walker in self.walkers:
+        for walker in self.walkers if people else ():
             d = math.dist(walker.position, (float(xy[0]), float(xy[1])))
             gap = min(gap, d - walker.spec.radius_m - self.robot_radius_m)
         return gap
 
     def is_free_for_robot(self, xy: tuple[float, float], margin_m: float = 0.05) -> bool:
-        return self.clearance_m(np.asarray(xy, dtype=float)) > margin_m
+        """Nothing static (walls, boxes, doors) within ``margin_m`` of the robot there."""
+        return self.clearance_m(np.asarray(xy, dtype=float), people=False) > margin_m
 
 
 def _segment_distance(

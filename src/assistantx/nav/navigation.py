@@ -65,8 +65,11 @@ logger = logging.getLogger(__name__)
 
 @dataclass(frozen=True)
 class NavigationParams:
-    # Beam skipping on: the robot drives among people and things its map lacks.
-    amcl: AmclParams = field(default_factory=lambda: AmclParams(do_beamskip=True))
+    # Beam skipping on: the robot drives among people and things its map lacks; and the grey
+    # rim of the known floor counts as a wall, as it is one in the world.
+    amcl: AmclParams = field(
+        default_factory=lambda: AmclParams(do_beamskip=True, unknown_rim_is_wall=True)
+    )
     inflation: InflationParams = field(default_factory=InflationParams)
     planner: PlannerParams = field(default_factory=PlannerParams)
     drive: DriveParams = field(default_factory=DriveParams)
@@ -156,7 +159,7 @@ class Navigator:
             np.asarray(start_pose, dtype=float), rng, self.params.odometry_noise
         )
         self.lidar = Lidar(grid, self.params.lidar)
-        self._map_blocked = grid.obstacles
+        self._map_blocked = grid.obstacles | grid.unknown_rim  # what the map holds
         if world is not None:
             self.lidar.see(world.blocked)
         self.filter: ParticleFilter | None = None
@@ -392,15 +395,15 @@ class Navigator:
         doorway = self._closed_doorway(goal)
         if doorway is not None:
             return DoorClosedError(
-                f"the doorway at ({doorway[0]:.1f}, {doorway[1]:.1f}) on the way to "
-                f"({goal[0]:.2f}, {goal[1]:.2f}) is shut, and no other way leads there "
+                f"the way is blocked: the doorway at ({doorway[0]:.1f}, {doorway[1]:.1f}) on "
+                f"the way to ({goal[0]:.2f}, {goal[1]:.2f}) is shut, and no other way leads there "
                 f"(tried: {tried})"
             )
         return BlockedError(f"{last}; gave up after: {tried}")
 
     def _closed_doorway(self, goal: tuple[float, float]) -> tuple[float, float] | None:
         """Where the map's own way to ``goal`` crosses a doorway the seen obstacles shut."""
-        if self.planner is self.map_planner:
+        if self.planner is self.map_planner or self.filter is None:
             return None
         pose = self.pose
         try:
@@ -412,15 +415,14 @@ class Navigator:
         ix, iy = grid.world_to_cell(points[:, 0], points[:, 1])
         static = self.map_planner.costmap
         shut = (self.costmap.costs[iy, ix] >= INSCRIBED) & (static.costs[iy, ix] < INSCRIBED)
-        clearance = static.obstacle_distance_m[iy, ix]
         depth = max(1, round(self.params.doorway_depth_m / grid.resolution))
-        tried: set[int] = set()
+        tried = np.zeros(len(points), dtype=bool)
         for i in np.nonzero(shut)[0].tolist():
-            lo, hi = max(0, i - depth), min(len(points), i + depth + 1)
-            j = lo + int(np.argmin(clearance[lo:hi]))  # the narrowest point near the block
-            if j not in tried and self._is_doorway(points[j]):
-                return float(points[j, 0]), float(points[j, 1])
-            tried.add(j)
+            # The way may cross the gap at a slant: try every 10 cm within reach of the block.
+            for j in range(max(0, i - depth), min(len(points), i + depth + 1), 2):
+                if not tried[j] and self._is_doorway(points[j]):
+                    return float(points[j, 0]), float(points[j, 1])
+                tried[j] = True
         return None
 
     def _is_doorway(self, centre: FloatArray) -> bool:

@@ -24,7 +24,7 @@ from assistantx.nav.geometry import FloatArray
 
 @dataclass(frozen=True)
 class MonitorParams:
-    stop_gap_m: float = 0.12  # keep this far from anything ahead
+    stop_gap_m: float = 0.05  # keep this far from anything ahead (plus one tick of travel)
     side_margin_m: float = 0.05  # the polygon's half-width is robot radius + this
     range_m: float = 1.2  # the short-range scan the monitor reads
     near_miss_m: float = 0.10
