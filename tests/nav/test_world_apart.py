@@ -192,6 +192,7 @@ def test_a_blocked_corridor_is_blocked_not_a_closed_door() -> None:
     assert nav.safety.collisions == 0
 
 
+@pytest.mark.slow
 def test_boxes_in_a_doorway_are_driven_round_through_another() -> None:
     """The middle doorway to the north rooms is stacked with boxes the map lacks: the robot
     sees them, replans, and arrives through another doorway, touching nothing."""

@@ -15,6 +15,7 @@ from assistantx.nav.ground_truth import Door, GroundTruth
 from assistantx.nav.occupancy_map import OccupancyMap
 
 
+@pytest.mark.slow
 async def test_a_shut_door_fails_the_move_as_a_closed_door(
     office_map: OccupancyMap, office_anchors: dict[str, Anchor]
 ) -> None:
