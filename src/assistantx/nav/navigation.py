@@ -65,10 +65,14 @@ logger = logging.getLogger(__name__)
 
 @dataclass(frozen=True)
 class NavigationParams:
-    # Beam skipping on: the robot drives among people and things its map lacks; and the grey
-    # rim of the known floor counts as a wall, as it is one in the world.
+    # Beam skipping on: the robot drives among people and things its map lacks; the grey rim
+    # of the known floor counts as a wall, as it is one in the world; and sigma_hit 0.1 m
+    # (nav2's default is 0.2) for a LiDAR with 1 cm noise on a 5 cm map: on the scenarios'
+    # routes it took the p95 error from 7-15 cm to 5-10 cm (warehouse, office, depot).
     amcl: AmclParams = field(
-        default_factory=lambda: AmclParams(do_beamskip=True, unknown_rim_is_wall=True)
+        default_factory=lambda: AmclParams(
+            do_beamskip=True, unknown_rim_is_wall=True, sigma_hit=0.1
+        )
     )
     inflation: InflationParams = field(default_factory=InflationParams)
     planner: PlannerParams = field(default_factory=PlannerParams)
