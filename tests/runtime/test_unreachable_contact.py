@@ -81,3 +81,25 @@ def test_a_repeated_failure_is_told_with_names_not_action_names(office: Office) 
     told = failure_summary(office, stm, SimOffice(office).robot, result)
     assert told.startswith(f"I could not ask {office.person('wang').name}, twice")
     assert "inquire" not in told and "wang," not in told
+
+
+def test_a_closed_door_is_told_in_words_with_what_happens_next(office: Office) -> None:
+    from assistantx.core.actions import Move
+    from assistantx.core.trace import ActionResult, Trace
+
+    trace = Trace(instruction_id="ins-d", requester="lee", text="t", reasoner="x", started_at=0.0)
+    stm = ShortTermMemory(instruction_id="ins-d", requester="lee", text="t", trace=trace)
+    result = ActionResult(
+        action=Move(place="meeting_room"),
+        ok=False,
+        observation="failed: the way is blocked: the doorway at (35.4, 9.5) ... is shut",
+        error="DoorClosedError",
+        started_at=0.0,
+        ended_at=0.0,
+    )
+    told = failure_summary(office, stm, SimOffice(office).robot, result)
+    room = next(loc.name for loc in office.locations if loc.id == "meeting_room")
+    assert told.startswith(f"I could not get to {room}, twice for the same reason (a door on")
+    assert f"The door on the way to {room} is closed" in told
+    assert "once the door is open, send me the request again" in told
+    assert "35.4" not in told and "meeting_room" not in told

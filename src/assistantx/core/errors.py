@@ -13,6 +13,7 @@
     │   ├── RobotError
     │   │   ├── UnreachableError    goal outside the map, inside an obstacle, or cut off
     │   │   ├── BlockedError        the path became blocked while driving
+    │   │   │   └── DoorClosedError the only way runs through a doorway that is shut
     │   │   └── LocalizationLostError
     │   └── LockError
     │       ├── LockConnectionError the lock cannot be reached, or the link dropped
@@ -101,6 +102,11 @@ class UnreachableError(RobotError):
 
 class BlockedError(RobotError):
     """The path became blocked while driving."""
+
+
+class DoorClosedError(BlockedError):
+    """Every way to the goal runs through a doorway (a gap in the map's walls) that something
+    now shuts: most likely a closed door."""
 
 
 class LocalizationLostError(RobotError):

@@ -11,7 +11,13 @@ One filter update, run when the odometry has moved ``update_min_d`` metres or tu
    one table lookup per particle. Beams are combined as a product (a sum of logs), the
    textbook model (Probabilistic Robotics table 6.3); up to ``max_beams`` evenly spaced beams are
    used and max-range readings are skipped, as in nav2. ``beam_product_exponent`` (not a nav2
-   name; default 1) tempers the product for global localization and recovery.
+   name; default 1) tempers the product for global localization and recovery. With
+   ``do_beamskip`` (nav2's beam skipping), a beam whose endpoint lies within
+   ``beam_skip_distance`` of a mapped obstacle for less than ``beam_skip_threshold`` of the
+   (weighted) particles is left out for all of them: in a converged cloud that is a return
+   from something the map lacks (a person, a moved box), which would otherwise pull the
+   estimate towards a pose that explains it. If more than ``beam_skip_error_threshold`` of
+   the beams would be skipped, the cloud does not agree on anything and every beam is used.
 3. Every ``resample_interval`` updates, KLD-sampling with augmented-MCL recovery: a
    low-variance (systematic) resample draws ``max_particles`` candidates in O(N log N); with
    probability ``max(0, 1 - w_fast / w_slow)`` a candidate is replaced by a uniform random pose
@@ -83,6 +89,13 @@ class AmclParams:
     # scan are not independent, so the product is overconfident; a smaller value keeps more
     # hypotheses alive while the cloud is spread (global localization, recovery).
     beam_product_exponent: float = 1.0
+    do_beamskip: bool = False
+    # Not in nav2: measure distances to the unknown rim of the known floor too (the grey edge
+    # of a SLAM map is a wall seen edge-on, and the world's beams end there).
+    unknown_rim_is_wall: bool = False
+    beam_skip_distance: float = 0.5
+    beam_skip_threshold: float = 0.3
+    beam_skip_error_threshold: float = 0.9
     # amcl's KLD histogram (pf_kdtree) bin sizes.
     bin_size_xy: float = 0.5
     bin_size_yaw: float = math.radians(10.0)
@@ -121,6 +134,8 @@ class LikelihoodField:
     def __init__(self, grid: OccupancyMap, params: AmclParams) -> None:
         self.grid = grid
         occupied = grid.data >= 65
+        if params.unknown_rim_is_wall:
+            occupied = occupied | grid.unknown_rim
         distance = disk_cache.cached_array(
             "occupied-distance",
             (occupied.shape, occupied.tobytes()),
@@ -144,6 +159,13 @@ class LikelihoodField:
         self, poses: FloatArray, ranges: FloatArray, angles: FloatArray
     ) -> FloatArray:
         """log p(scan | pose) for each pose (n,), beams combined as a product."""
+        return np.asarray(self.per_beam(poses, ranges, angles)[0].sum(axis=1))
+
+    def per_beam(
+        self, poses: FloatArray, ranges: FloatArray, angles: FloatArray
+    ) -> tuple[FloatArray, FloatArray]:
+        """Per pose and beam (n, beams): log p(beam | pose), and the endpoint's distance
+        (m, clamped) to the nearest mapped obstacle."""
         grid = self.grid
         cos_yaw, sin_yaw = np.cos(poses[:, 2:3]), np.sin(poses[:, 2:3])
         bx, by = ranges * np.cos(angles), ranges * np.sin(angles)  # endpoints, robot frame
@@ -155,7 +177,8 @@ class LikelihoodField:
         inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
         flat = np.where(inside, iy * grid.width + ix, 0)
         log_p = np.where(inside, self.log_p[flat], self.log_p_off_map)
-        return np.asarray(log_p.sum(axis=1))
+        distance = np.where(inside, self.distance_m[flat], self.distance_m.max(initial=0.0))
+        return np.asarray(log_p), np.asarray(distance)
 
     def endpoint_distances(
         self, pose: FloatArray, ranges: FloatArray, angles: FloatArray
@@ -373,13 +396,27 @@ class ParticleFilter:
         ranges, angles = self.usable_beams(scan)
         if ranges.size == 0:
             return
-        log_likelihood = self.field.beam_log_likelihood(self.particles, ranges, angles)
         prior = self.log_weights - logsumexp(self.log_weights)
+        per_beam, distance = self.field.per_beam(self.particles, ranges, angles)
+        if self.params.do_beamskip:
+            keep = self._beams_agreed_on(distance, np.exp(prior))
+            per_beam, ranges = per_beam[:, keep], ranges[keep]
+        log_likelihood = np.asarray(per_beam.sum(axis=1))
         # Recovery statistic: weighted mean of the per-beam geometric-mean likelihood.
         log_w_avg = float(logsumexp(prior + log_likelihood / ranges.size))
         self._track_recovery(log_w_avg)
         posterior = prior + self.params.beam_product_exponent * log_likelihood
         self.log_weights = posterior - logsumexp(posterior)
+
+    def _beams_agreed_on(self, distance: FloatArray, weights: FloatArray) -> npt.NDArray[np.bool_]:
+        """nav2's beam skip: the beams that end near a mapped obstacle for enough of the
+        weight (all of them if too few would be left)."""
+        p = self.params
+        agree = weights @ (distance < p.beam_skip_distance)
+        keep = np.asarray(agree >= p.beam_skip_threshold)
+        if 1.0 - keep.mean() > p.beam_skip_error_threshold:
+            return np.ones_like(keep)
+        return keep
 
     def usable_beams(self, scan: LaserScan) -> tuple[FloatArray, FloatArray]:
         p = self.params

@@ -84,6 +84,17 @@ class Lidar:
         self.grid = grid
         self._blocked = grid.obstacles
 
+    def see(self, blocked: npt.NDArray[np.bool_]) -> None:
+        """Read what stops a beam from ``blocked`` (same shape as the grid), kept by
+        reference: a simulated world that moves people updates it in place."""
+        if blocked.shape != self._blocked.shape:
+            raise ValueError(f"world shape {blocked.shape} differs from the map's")
+        self._blocked = blocked
+
+    @property
+    def blocked(self) -> npt.NDArray[np.bool_]:
+        return self._blocked
+
     def scan(self, pose: FloatArray, rng: np.random.Generator) -> LaserScan:
         p = self.params
         true_ranges = cast_rays(self._blocked, self.grid, pose, self.angles, p.max_range_m)

@@ -118,6 +118,18 @@ class OccupancyMap:
     def with_data(self, data: npt.NDArray[np.int8]) -> OccupancyMap:
         return OccupancyMap(data, self.resolution, self.origin_x, self.origin_y, self.origin_yaw)
 
+    @property
+    def unknown_rim(self) -> npt.NDArray[np.bool_]:
+        """Unknown cells with a free cell among their 8 neighbours: on a SLAM map, the grey
+        edge of the known floor is where the mapping laser stopped, a wall seen edge-on."""
+        free = self.data == FREE
+        near_free = free.copy()
+        near_free[1:, :] |= free[:-1, :]
+        near_free[:-1, :] |= free[1:, :]
+        near_free[:, 1:] |= near_free[:, :-1].copy()
+        near_free[:, :-1] |= near_free[:, 1:].copy()
+        return np.asarray((self.data == UNKNOWN) & near_free)
+
 
 # -- reading -------------------------------------------------------------------------------
 def load_map(yaml_path: str | Path) -> OccupancyMap:

@@ -20,8 +20,22 @@ from assistantx.memory.short_term import ShortTermMemory
 # The robot's errors in words a person reads (their messages carry map coordinates).
 _REASONS = {
     "BlockedError": "something blocks the way",
+    "DoorClosedError": "a door on the way is closed",
     "LocalizationLostError": "the robot lost track of where it is",
     "UnreachableError": "there is no way there on the map",
+}
+
+
+# What happens next when the way to a place is shut (the robot tried its recoveries first).
+_WAY_CLOSED = {
+    "DoorClosedError": (
+        "The door on the way to {place} is closed and there is no other way in. I will not "
+        "try again by myself: once the door is open, send me the request again and I'll go."
+    ),
+    "BlockedError": (
+        "Something stands in every way to {place}; I tried going round, turning, backing up "
+        "and waiting. Once the way is clear, send me the request again and I'll go."
+    ),
 }
 
 
@@ -110,6 +124,8 @@ def failure_summary(
     what = _failed_action_in_words(office, action)
     reason = _REASONS.get(result.error or "", result.observation.removeprefix("failed: "))
     lines = [f"{what}, twice for the same reason ({reason}), so I stopped trying."]
+    if isinstance(action, Move) and result.error in _WAY_CLOSED:
+        lines.append(_WAY_CLOSED[result.error].format(place=place_name(office, action.place)))
     where = robot_whereabouts(office, robot)
     contents = stm.embodied.locker_contents
     if contents:

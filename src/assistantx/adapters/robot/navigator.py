@@ -10,8 +10,11 @@ kinematically (no LiDAR, no AMCL), taking path length / speed. Paths between anc
 planned once per start anchor (one Dijkstra to every anchor) and cached, which also serves
 ``path_distance``.
 
-Obstacles the map does not know can be dropped into the simulated world with ``block``;
-a path that cannot get round them ends in BlockedError.
+Obstacles the map does not know can be dropped into the simulated world with ``block``, or a
+whole simulated world (nav.ground_truth: moved furniture, closed doors, people walking) given
+as ``world``. With AMCL on, a blocked way goes through nav2's recovery sequence (clear the
+costmap, rotate, back up, wait) before the move fails with BlockedError, or DoorClosedError
+when the only way runs through a shut doorway.
 
 With AMCL on, planning and every chunk of driving (control, LiDAR, filter, obstacle layer,
 costmap) run in a worker thread (``asyncio.to_thread``), and the search itself in a worker
@@ -49,6 +52,7 @@ from assistantx.core.ports.robot import MoveResult, Pose, RobotBase, RobotState
 from assistantx.nav.anchor_check import AnchorProblem, check_anchors
 from assistantx.nav.anchors import Anchor, load_anchors
 from assistantx.nav.geometry import FloatArray
+from assistantx.nav.ground_truth import GroundTruth
 from assistantx.nav.navigation import NavigationParams, Navigator
 from assistantx.nav.occupancy_map import OCCUPIED, OccupancyMap, load_map
 from assistantx.nav.plan_process import PLAN_PROCESS
@@ -106,6 +110,7 @@ class NavigatorRobot(RobotBase):
         params: NavigationParams | None = None,
         arrival_tolerance_m: float = 0.15,
         anchors_file: str | FilePath | None = None,
+        world: GroundTruth | None = None,
     ) -> None:
         super().__init__()
         where = f"{anchors_file}: " if anchors_file is not None else ""
@@ -132,6 +137,7 @@ class NavigatorRobot(RobotBase):
             np.random.default_rng(seed),
             params,
             localize=localize,
+            world=world,
         )
         # The planner on the map alone; the navigator may swap in one that holds obstacles it
         # saw, which must not leak into the shared anchor path table.
@@ -223,7 +229,11 @@ class NavigatorRobot(RobotBase):
             path = await asyncio.to_thread(self._plan, location_id)
         self._goal, self._path, self._place = location_id, path, None
         logger.info("driving to %s (%.1f m)", location_id, path.length_m)
-        chunks = nav.follow(path, anchor.yaw)
+        chunks = (
+            nav.navigate((anchor.x, anchor.y), anchor.yaw, path)
+            if self.localize
+            else nav.follow(path, anchor.yaw)
+        )
         try:
             while True:
                 if self.localize:
