@@ -27,7 +27,7 @@ from assistantx.agents.registry import load_builder, needs_llm, reasoner_factory
 from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office, PersonId, load_office
 from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.core.ports.robot import RobotBase
@@ -323,11 +323,12 @@ class ServiceRuntime:
 
     async def _resume(self) -> None:
         for record in self.journal.unfinished():
+            requester = PersonId(record.requester)  # journaled as resolved at admission
             if record.stm is None:  # journaled, acknowledged, never started
-                await self.assistant.submit(record.requester, record.text, instruction_id=record.id)
+                await self.assistant.submit(requester, record.text, instruction_id=record.id)
             else:
                 stm = self.durability.prepare_resume(record)
-                await self.assistant.submit(record.requester, record.text, resume=stm)
+                await self.assistant.submit(requester, record.text, resume=stm)
                 if self.settings.people == "simulated":
                     colleagues.reask_unanswered(self.sim, self.journal, record.id)
             self.resumed.append(record.id)
@@ -350,13 +351,13 @@ class ServiceRuntime:
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------
-    async def submit(self, requester: str, text: str) -> InstructionRecord:
-        """Admit an instruction: validate, journal it (one insert), queue it for the starter.
+    async def submit(self, person: PersonId, text: str) -> InstructionRecord:
+        """Admit an instruction of ``person`` (resolved from a name by the route): rate-check,
+        journal it (one insert), queue it for the starter.
 
         The caller acknowledges once the insert is committed; starting it (the reasoner, the
         hooks, its first checkpoint) is the starter's job, so a submission never waits for
         anyone's step. A restart starts what was admitted and never started."""
-        person = self.resolver.person(requester)
         wait_s = self.rate.take(person)
         if wait_s is not None:
             name = self.office.person(person).name
