@@ -14,21 +14,13 @@ from typing import Any
 
 import pytest
 
+from adapters.messenger.conftest import PUSH_YAML
 from assistantx.core.errors import LockConnectionError, MessengerError
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from helpers.servers import free_port, serving_app
 from service.server import LEE, OPERATOR
 
-PUSH_YAML = """
-homeserver_url: http://127.0.0.1:9
-server_name: office.test
-as_token: as-token
-hs_token: hs-token
-mode: push
-people: {lee: "@lee:office.test"}
-max_retries: 0
-"""
 HS = {"Authorization": "Bearer hs-token"}
 PUSH = "/_matrix/app/v1/transactions/t1"
 
