@@ -101,6 +101,14 @@ def test_sim_takes_names_for_the_unavailable() -> None:
     assert line.startswith("error: Unknown person 'nobody'.")
 
 
+def test_sim_resolves_the_requester_once_with_one_line_for_a_stranger() -> None:
+    line = _one_line_error(_cli("sim", "--as", "nobody"))
+    assert line.startswith("error: Unknown person 'nobody'.")
+    out = _cli("sim", "--as", "Mr Lee", stdin=":quit\n")
+    assert out.returncode == 0, out.stderr
+    assert "requester Lee" in out.stdout
+
+
 def test_sim_has_help() -> None:
     out = _cli("sim", stdin="help\n")
     assert out.returncode == 0, out.stderr

@@ -1,5 +1,8 @@
 """Session fixtures: one Synapse for the whole run, and one application-service gateway; and
 the office of the matrix-nio tests (`office`: Lee, Zhang, Mao, Hu and a stranger at nio clients).
+Per test, the set-up most tests share: `lee` (an account and Lee's own client), `lee_config`
+(the assistant's config with Lee in it), `event_store` and `pushed` (the assistant's messenger
+in push mode over that store, delivering to `inbox`), each closed after the test.
 
 The gateway is a real uvicorn server on the port written into the appservice registration. It
 lives for the whole session (so Synapse never sees the assistant "down" between tests and
@@ -22,10 +25,16 @@ import pytest_asyncio
 import yaml
 from pydantic import SecretStr
 
-from assistantx.adapters.messenger.matrix import MatrixConfig
+from assistantx.adapters.messenger.matrix import (
+    MatrixClient,
+    MatrixConfig,
+    MatrixMessenger,
+    SqliteEventStore,
+)
 from assistantx.cli import build_parser
+from assistantx.core.ports.messenger import InboundMessage
 from synapse.gateway import AppserviceGateway
-from synapse.helpers import derive
+from synapse.helpers import Colleague, bridge, derive
 from synapse.homeserver import (
     Account,
     SynapseHomeserver,
@@ -110,7 +119,7 @@ def new_account(homeserver: SynapseHomeserver) -> object:
 
 
 @pytest.fixture
-def inbox() -> asyncio.Queue[object]:
+def inbox() -> asyncio.Queue[InboundMessage]:
     return asyncio.Queue()
 
 
@@ -140,6 +149,40 @@ async def office(
         yield Office(config, people, stranger, service_for)
         for service in services:
             await service.stop()
+
+
+@pytest_asyncio.fixture(loop_scope="session")
+async def lee(
+    homeserver: SynapseHomeserver, new_account: Callable[[str], Account]
+) -> AsyncIterator[Colleague]:
+    account = new_account("lee")
+    async with MatrixClient(homeserver.url, account.access_token) as client:
+        yield Colleague(account, client)
+
+
+@pytest.fixture
+def lee_config(base_config: MatrixConfig, lee: Colleague) -> MatrixConfig:
+    """The assistant's config with Lee as the one person of the office."""
+    return derive(base_config, people={"lee": lee.account.user_id})
+
+
+@pytest_asyncio.fixture(loop_scope="session")
+async def event_store(tmp_path: Path) -> AsyncIterator[SqliteEventStore]:
+    """The messenger's inbound event store, closed after the test."""
+    store = SqliteEventStore(tmp_path / "events.db")
+    yield store
+    await store.close()
+
+
+@pytest.fixture
+def pushed(
+    lee_config: MatrixConfig,
+    event_store: SqliteEventStore,
+    inbox: asyncio.Queue[InboundMessage],
+    gateway_mounts: AppserviceGateway,
+) -> MatrixMessenger:
+    """The assistant's messenger (not started) in push mode, delivering to ``inbox``."""
+    return bridge(lee_config, event_store, inbox, gateway_mounts)
 
 
 @pytest.fixture(autouse=True)

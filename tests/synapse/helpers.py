@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import asyncio
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +21,15 @@ from synapse.gateway import AppserviceGateway
 from synapse.homeserver import Account
 
 WAIT_S = 20.0
+
+
+@dataclass(frozen=True)
+class Colleague:
+    """A person of the office on Matrix: their account and their own client (closed after the
+    test)."""
+
+    account: Account
+    client: MatrixClient
 
 
 async def next_message(

@@ -192,11 +192,29 @@ def is_survey(message: Seen) -> bool:
     return message.body.startswith("A short survey")
 
 
-def borrow(ctx: AgentContext) -> list[Action]:
-    """Ask Zhang, wait for her answer, tell Lee what she said."""
-    if QUESTION not in asked(ctx):
-        return [Inquire(contact="zhang", question=QUESTION), Wait(timeout_s=3000)]
-    answers = answers_from(ctx, "zhang")
-    if not answers:
-        return waiting(ctx, "Zhang's answer")
-    return [Stop(outcome="done", summary=f"Zhang answered: {answers[0]}")]
+def ask_zhang_through(contact: str, question: str, awaited: str) -> Policy:
+    """Ask ``question`` of ``contact`` (Zhang, or a group she is in), wait for her answer, tell
+    Lee what she said."""
+
+    def policy(ctx: AgentContext) -> list[Action]:
+        if question not in asked(ctx):
+            return [Inquire(contact=contact, question=question), Wait(timeout_s=3000)]
+        answers = answers_from(ctx, "zhang")
+        if not answers:
+            return waiting(ctx, awaited)
+        return [Stop(outcome="done", summary=f"Zhang answered: {answers[0]}")]
+
+    return policy
+
+
+borrow = ask_zhang_through("zhang", QUESTION, "Zhang's answer")
+BORROW_REQUEST = "Please ask Zhang if I can borrow her stapler."
+
+
+async def lee_asks_to_borrow(office: Office) -> tuple[str, Seen]:
+    """Lee opens a DM with the assistant and asks it to ask Zhang (the ``borrow`` policy);
+    returns the DM and the question as Zhang got it."""
+    bot = office.config.bot_user_id
+    lee_dm = await office.lee.open_dm(bot)
+    await office.lee.say(lee_dm, BORROW_REQUEST)
+    return lee_dm, await office.zhang.expect(sender=bot)

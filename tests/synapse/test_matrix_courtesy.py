@@ -11,11 +11,9 @@ from collections.abc import Callable
 import pytest
 
 from assistantx.adapters.messenger.matrix.normalize import ENCRYPTED_ROOM_TEXT
-from assistantx.agents.base import AgentContext
-from assistantx.core.actions import Action, Inquire, Stop, Wait
 from helpers.eventually import eventually
 from synapse.homeserver import Account
-from synapse.nio_office import QUESTION, Office, answers_from, asked, borrow, running, waiting
+from synapse.nio_office import QUESTION, Office, ask_zhang_through, borrow, running
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
 
@@ -77,14 +75,7 @@ async def test_both_mode_the_pull_account_is_in_the_group_rooms(
     alias = f"work-{uuid.uuid4().hex[:8]}"
     group_question = "Who can lend Lee a stapler?"
 
-    def ask_group(ctx: AgentContext) -> list[Action]:
-        if group_question not in asked(ctx):
-            return [Inquire(contact="office_work", question=group_question), Wait(timeout_s=3000)]
-        answers = answers_from(ctx, "zhang")
-        if not answers:
-            return waiting(ctx, "an answer in the group")
-        return [Stop(outcome="done", summary=f"Zhang answered: {answers[0]}")]
-
+    ask_group = ask_zhang_through("office_work", group_question, "an answer in the group")
     service = office.service_for(ask_group)
     service.write_config(groups={"office_work": f"#{alias}:{office.config.server_name}"})
     response = await office.hu.client.room_create(

@@ -21,9 +21,9 @@ from assistantx.core.ports.messenger import InboundMessage
 from helpers.eventually import assert_quiet
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import (
+    Colleague,
     OfferCountingStore,
     bridge,
-    derive,
     dm_with,
     next_message,
     pull_config,
@@ -36,18 +36,14 @@ pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
 
 
 async def test_push_dm_arrives_normalized_once(
-    base_config: MatrixConfig,
-    gateway_mounts: AppserviceGateway,
-    new_account: Callable[[str], Account],
+    lee: Colleague,
+    lee_config: MatrixConfig,
+    pushed: MatrixMessenger,
     inbox: asyncio.Queue[InboundMessage],
-    tmp_path: Path,
 ) -> None:
-    lee = new_account("lee")
-    config = derive(base_config, people={"lee": lee.user_id})
-    messenger = bridge(config, SqliteEventStore(tmp_path / "events.db"), inbox, gateway_mounts)
-    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
-        room = await dm_with(person, config.bot_user_id)  # auto-joined on the pushed invite
-        event_id = await say(person, room, "Please fetch my printout")
+    async with pushed:
+        room = await dm_with(lee.client, lee_config.bot_user_id)  # joined on the pushed invite
+        event_id = await say(lee.client, room, "Please fetch my printout")
         message = await next_message(inbox)
         assert message.platform == "matrix"
         assert message.event_id == event_id
@@ -59,20 +55,19 @@ async def test_push_dm_arrives_normalized_once(
 
 
 async def test_pull_dm_arrives_once_and_position_is_kept(
-    base_config: MatrixConfig,
+    lee: Colleague,
+    lee_config: MatrixConfig,
     new_account: Callable[[str], Account],
+    event_store: SqliteEventStore,
     inbox: asyncio.Queue[InboundMessage],
-    tmp_path: Path,
 ) -> None:
-    lee, bot = new_account("lee"), new_account("syncbot")
-    config = pull_config(base_config, bot, "pull", 2.0, people={"lee": lee.user_id})
-    store = SqliteEventStore(tmp_path / "events.db")
-    messenger = bridge(config, store, inbox)
-    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
+    bot = new_account("syncbot")
+    messenger = bridge(pull_config(lee_config, bot, "pull", 2.0), event_store, inbox)
+    async with messenger:
         assert messenger.poller is not None
         await asyncio.wait_for(messenger.poller.ready.wait(), 20)
-        room = await dm_with(person, bot.user_id)  # the poller joined on the invite
-        event_id = await say(person, room, "hello by sync")
+        room = await dm_with(lee.client, bot.user_id)  # the poller joined on the invite
+        event_id = await say(lee.client, room, "hello by sync")
         message = await next_message(inbox)
         assert (message.event_id, str(message.chat), message.text) == (
             event_id,
@@ -80,21 +75,23 @@ async def test_pull_dm_arrives_once_and_position_is_kept(
             "hello by sync",
         )
         await assert_quiet(inbox, 1.0, what="extra inbound message")
-    assert await store.sync_token(f"matrix:{bot.user_id}") is not None
+    assert await event_store.sync_token(f"matrix:{bot.user_id}") is not None
 
 
 async def test_both_modes_each_message_handled_once(
-    base_config: MatrixConfig,
+    lee: Colleague,
+    lee_config: MatrixConfig,
     gateway_mounts: AppserviceGateway,
     new_account: Callable[[str], Account],
     inbox: asyncio.Queue[InboundMessage],
     tmp_path: Path,
 ) -> None:
-    lee, bot = new_account("lee"), new_account("syncbot")
-    config = pull_config(base_config, bot, "both", people={"lee": lee.user_id})
+    bot = new_account("syncbot")
+    config = pull_config(lee_config, bot, "both")
     store = OfferCountingStore(tmp_path / "events.db")
     messenger = bridge(config, store, inbox, gateway_mounts)
-    async with messenger, MatrixClient(config.homeserver_url, lee.access_token) as person:
+    person = lee.client
+    async with messenger:
         assert messenger.poller is not None
         await asyncio.wait_for(messenger.poller.ready.wait(), 20)
         room = await person.create_room(invite=[config.bot_user_id, bot.user_id])
@@ -107,23 +104,21 @@ async def test_both_modes_each_message_handled_once(
         async with asyncio.timeout(20):
             await store.wait_offered(sent, times=2)
         await assert_quiet(inbox, 0.5, what="extra inbound message")
+    await store.close()
 
 
 async def test_pull_fills_a_limited_timeline_gap(
     homeserver: SynapseHomeserver,
-    base_config: MatrixConfig,
+    lee: Colleague,
+    lee_config: MatrixConfig,
     new_account: Callable[[str], Account],
+    event_store: SqliteEventStore,
     inbox: asyncio.Queue[InboundMessage],
-    tmp_path: Path,
 ) -> None:
-    lee, bot = new_account("lee"), new_account("syncbot")
-    config = derive(base_config, people={"lee": lee.user_id})
-    store = SqliteEventStore(tmp_path / "events.db")
-    ingestor = EventIngestor(store, EventNormalizer(config, {}), inbox.put)
-    async with (
-        MatrixClient(homeserver.url, bot.access_token) as bot_client,
-        MatrixClient(homeserver.url, lee.access_token) as person,
-    ):
+    bot = new_account("syncbot")
+    ingestor = EventIngestor(event_store, EventNormalizer(lee_config, {}), inbox.put)
+    person = lee.client
+    async with MatrixClient(homeserver.url, bot.access_token) as bot_client:
         room = await person.create_room(invite=[bot.user_id])
         await bot_client.join(room)
         poller = SyncPoller(bot_client, ingestor, sync_key="gap", timeout_s=0.5, timeline_limit=2)
@@ -140,10 +135,9 @@ async def test_homeserver_ping_reaches_the_router(
     homeserver: SynapseHomeserver,
     base_config: MatrixConfig,
     gateway_mounts: AppserviceGateway,
-    inbox: asyncio.Queue[InboundMessage],
-    tmp_path: Path,
+    event_store: SqliteEventStore,
 ) -> None:
-    messenger = MatrixMessenger(base_config, SqliteEventStore(tmp_path / "events.db"))
+    messenger = MatrixMessenger(base_config, event_store)
     gateway_mounts.mount(messenger.appservice_router())
     async with MatrixClient(homeserver.url, base_config.as_token.get_secret_value()) as client:
         response = await client.request(

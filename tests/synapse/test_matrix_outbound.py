@@ -20,6 +20,7 @@ from assistantx.adapters.messenger.matrix import (
 from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage, OutboundMessage
 from synapse.gateway import AppserviceGateway
 from synapse.helpers import (
+    Colleague,
     bridge,
     derive,
     dm_with,
@@ -103,17 +104,16 @@ async def test_text_to_a_dm_and_to_a_group_room(
 
 
 async def test_qr_code_arrives_as_an_image_in_the_right_room(
-    base_config: MatrixConfig,
+    lee: Colleague,
+    lee_config: MatrixConfig,
     new_account: Callable[[str], Account],
-    tmp_path: Path,
+    event_store: SqliteEventStore,
 ) -> None:
-    lee, wang = new_account("lee"), new_account("wang")
-    config = derive(base_config, people={"lee": lee.user_id, "wang": wang.user_id})
+    wang = new_account("wang")
+    config = derive(lee_config, people={**lee_config.people, "wang": wang.user_id})
     png = qr_png("locker-7:open:task-42")
-    async with (
-        MatrixMessenger(config, SqliteEventStore(tmp_path / "e.db")) as messenger,
-        MatrixClient(config.homeserver_url, lee.access_token) as lee_client,
-    ):
+    lee_client = lee.client
+    async with MatrixMessenger(config, event_store) as messenger:
         await messenger.send(
             OutboundMessage(chat=ChatRef(kind="dm", id="wang"), text="not for lee")
         )
@@ -140,19 +140,20 @@ async def test_qr_code_arrives_as_an_image_in_the_right_room(
 
 
 async def test_a_received_file_is_forwarded_by_its_uri(
-    base_config: MatrixConfig,
+    lee: Colleague,
+    lee_config: MatrixConfig,
     gateway_mounts: AppserviceGateway,
     new_account: Callable[[str], Account],
+    event_store: SqliteEventStore,
     inbox: asyncio.Queue[InboundMessage],
-    tmp_path: Path,
 ) -> None:
-    lee, zhang = new_account("lee"), new_account("zhang")
-    config = derive(base_config, people={"lee": lee.user_id, "zhang": zhang.user_id})
-    messenger = bridge(config, SqliteEventStore(tmp_path / "e.db"), inbox, gateway_mounts)
+    zhang = new_account("zhang")
+    config = derive(lee_config, people={**lee_config.people, "zhang": zhang.user_id})
+    messenger = bridge(config, event_store, inbox, gateway_mounts)
     report = b"%PDF-1.4 quarterly report\n" * 40
+    lee_client = lee.client
     async with (
         messenger,
-        MatrixClient(config.homeserver_url, lee.access_token) as lee_client,
         MatrixClient(config.homeserver_url, zhang.access_token) as zhang_client,
     ):
         room = await dm_with(lee_client, config.bot_user_id)

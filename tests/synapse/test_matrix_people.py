@@ -23,7 +23,7 @@ from assistantx.agents.base import AgentContext
 from assistantx.core.actions import Action, ForwardFile, Inform, SendQR, Stop, Wait
 from helpers.eventually import eventually
 from synapse.homeserver import Account
-from synapse.nio_office import OPERATOR, QUESTION, Office, borrow, running
+from synapse.nio_office import OPERATOR, QUESTION, Office, borrow, lee_asks_to_borrow, running
 
 pytestmark = [pytest.mark.synapse, pytest.mark.asyncio(loop_scope="session")]
 
@@ -54,9 +54,7 @@ async def test_restart_mid_instruction_loses_and_repeats_nothing(office: Office)
     service = office.service_for(borrow)
     bot = office.config.bot_user_id
     await service.start()
-    lee_dm = await office.lee.open_dm(bot)
-    await office.lee.say(lee_dm, "Please ask Zhang if I can borrow her stapler.")
-    question = await office.zhang.expect(sender=bot)
+    lee_dm, question = await lee_asks_to_borrow(office)
     assert question.body == QUESTION
 
     await service.stop(down=True)  # SIGTERM: pushes fail until the restart
@@ -79,9 +77,7 @@ async def test_an_instruction_after_a_restart_gets_its_own_messages(office: Offi
     service = office.service_for(borrow)
     bot = office.config.bot_user_id
     async with running(service):
-        lee_dm = await office.lee.open_dm(bot)
-        await office.lee.say(lee_dm, "Please ask Zhang if I can borrow her stapler.")
-        first = await office.zhang.expect(sender=bot)
+        lee_dm, first = await lee_asks_to_borrow(office)
         await office.zhang.say(first.room_id, "Yes.")
         assert (await office.lee.expect(sender=bot)).body == "[done] Zhang answered: Yes."
         await service.wait_ended()
@@ -99,9 +95,7 @@ async def test_a_person_who_left_the_dm_gets_a_new_one(office: Office) -> None:
     service = office.service_for(borrow)
     bot = office.config.bot_user_id
     async with running(service):
-        lee_dm = await office.lee.open_dm(bot)
-        await office.lee.say(lee_dm, "Please ask Zhang if I can borrow her stapler.")
-        question = await office.zhang.expect(sender=bot)
+        lee_dm, question = await lee_asks_to_borrow(office)
         await office.lee.client.room_leave(lee_dm)
         await office.zhang.say(question.room_id, "Yes.")
         outcome = await office.lee.expect(sender=bot)  # Lee accepts the new DM's invite
@@ -326,9 +320,7 @@ async def test_matrix_traffic_is_in_the_journal_and_chats(office: Office) -> Non
     bot = office.config.bot_user_id
     service = office.service_for(borrow)
     async with running(service):
-        lee_dm = await office.lee.open_dm(bot)
-        await office.lee.say(lee_dm, "Please ask Zhang if I can borrow her stapler.")
-        question = await office.zhang.expect(sender=bot)
+        lee_dm, question = await lee_asks_to_borrow(office)
         await office.zhang.say(question.room_id, "Yes.")
         await office.lee.expect(sender=bot)
         await service.wait_ended()

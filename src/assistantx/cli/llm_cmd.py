@@ -51,14 +51,22 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     probe.set_defaults(func=_probe)
 
 
-def _probe(args: argparse.Namespace) -> int:
+def _llm_settings() -> Settings | None:
+    """The settings, when they are valid and name an LLM server; else None, said in one line."""
     try:
         settings = Settings()
     except ValidationError as exc:
         print(f"error: bad ASSISTANTX_* settings: {exc}")
-        return 2
+        return None
     if not settings.llm_enabled:
         print("error: ASSISTANTX_LLM_BASE_URL is not set; the LLM reasoner is off")
+        return None
+    return settings
+
+
+def _probe(args: argparse.Namespace) -> int:
+    settings = _llm_settings()
+    if settings is None:
         return 2
     from assistantx.adapters.model.probe import probe_server
     from assistantx.core.trace import Decision, Percept, Plan, Reflection
@@ -86,13 +94,8 @@ def _probe(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
-    try:
-        settings = Settings()
-    except ValidationError as exc:
-        print(f"error: bad ASSISTANTX_* settings: {exc}")
-        return 2
-    if not settings.llm_enabled:
-        print("error: ASSISTANTX_LLM_BASE_URL is not set; the LLM reasoner is off")
+    settings = _llm_settings()
+    if settings is None:
         return 2
     report = asyncio.run(check(settings))
     if args.json:

@@ -27,7 +27,7 @@ from assistantx.cli._people import resolve_people
 from assistantx.cli.run_cmd import print_trace
 from assistantx.core.actions import ACTION_TYPES, parse_action
 from assistantx.core.errors import AssistantXError, GroundingError, OfficeError
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office, PersonId, load_office
 from assistantx.core.ports.lock import Purpose
 from assistantx.core.settings import Settings
 from assistantx.memory.graph import LOCKER
@@ -129,7 +129,7 @@ def _lines() -> Iterator[str]:
             return
 
 
-async def _session(office: Office, requester: str, unavailable: tuple[str, ...]) -> int:
+async def _session(office: Office, requester: PersonId, unavailable: tuple[str, ...]) -> int:
     async with SimSession(office, requester=requester, unavailable=unavailable) as s:
         who = office.person(requester).name
         print(f"simulated office; requester {who}; type actions, help, :quit to end")
@@ -215,7 +215,7 @@ def _world(s: SimSession) -> str:
 
 
 async def _instruction(
-    office: Office, requester: str, unavailable: tuple[str, ...], text: str
+    office: Office, requester: PersonId, unavailable: tuple[str, ...], text: str
 ) -> None:
     """Run ``text`` as a whole instruction, as ``assistantx run`` does, and print its trace."""
     settings = Settings()

@@ -15,7 +15,7 @@ import math
 from collections import Counter
 from functools import cached_property
 from pathlib import Path
-from typing import Any, Literal, TypeVar
+from typing import Any, Literal, NewType, TypeVar
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
@@ -26,6 +26,10 @@ from assistantx.core.errors import OfficeError
 logger = logging.getLogger(__name__)
 
 DEFAULT_OFFICE = Path(__file__).resolve().parents[1] / "data" / "dataset" / "office.yaml"
+
+PersonId = NewType("PersonId", str)
+"""The id of a person of the office, resolved once from a name at the edge (the API route, the
+command line, an inbound message, the dataset); below the edge nobody resolves it again."""
 
 LocationKind = Literal["workstation", "facility", "room"]
 # How an operation works, from what it takes and what it makes (see Operation.shape).

@@ -17,7 +17,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from assistantx.core.errors import AssistantXError, DatasetError
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office, PersonId, load_office
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset.tasks import Task, load_tasks
 from assistantx.evaluation.episode import Episode, Handover
@@ -103,7 +103,7 @@ async def run_episode(
     try:
         sim_run = await run_in_sim(
             office,
-            task.requester,
+            PersonId(task.requester),  # the dataset's edge: checked when the tasks loaded
             task.instruction,
             builder.factory(task),
             unavailable=task.unavailable,

@@ -26,7 +26,7 @@ from assistantx.core.actions import (
 )
 from assistantx.core.errors import AmbiguousNameError, GroundingError, UnknownNameError
 from assistantx.core.goals import Milestone, parse_milestone
-from assistantx.core.office import Office
+from assistantx.core.office import Office, PersonId
 from assistantx.memory.graph import LOCKER
 from assistantx.memory.names import NameIndex, normalize
 from assistantx.memory.updates import (
@@ -68,12 +68,14 @@ class Resolver:
         self.lockers.add(LOCKER, LOCKER_NAMES)
 
     # -- single lookups ------------------------------------------------------------------
-    def person(self, name: str) -> str:
-        return self._one(
-            "person", name, self.people.lookup(name), self._people_hint(), self.people.keys()
+    def person(self, name: str) -> PersonId:
+        return PersonId(
+            self._one(
+                "person", name, self.people.lookup(name), self._people_hint(), self.people.keys()
+            )
         )
 
-    def people_list(self, names: str) -> tuple[str, ...]:
+    def people_list(self, names: str) -> tuple[PersonId, ...]:
         """Comma-separated names ("Zhang, Mr Wang") → person ids, each matched like one name."""
         return tuple(dict.fromkeys(self.person(n) for n in names.split(",") if n.strip()))
 

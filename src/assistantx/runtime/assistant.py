@@ -22,7 +22,7 @@ from assistantx.core.clock import Clock
 from assistantx.core.errors import GroundingError
 from assistantx.core.events import EventSink, TraceEvent
 from assistantx.core.isolation import SkippedEvents
-from assistantx.core.office import Office
+from assistantx.core.office import Office, PersonId
 from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.messenger import (
     ChatRef,
@@ -181,17 +181,19 @@ class Assistant:
 
     async def submit(
         self,
-        requester: str,
+        requester: PersonId,
         text: str,
         *,
         instruction_id: str | None = None,
         resume: ShortTermMemory | None = None,
     ) -> ShortTermMemory:
-        """Start an instruction (or resume one from its journaled memory); returns its memory."""
+        """Start an instruction (or resume one from its journaled memory); returns its memory.
+
+        ``requester`` was resolved from a name at the edge (the API, the command line, the
+        inbound message in ``handle_inbound``, the dataset): it is not resolved again here."""
         if resume is not None:
             stm = resume
         else:
-            requester = self.resolver.person(requester)  # GroundingError for unknown people
             instruction_id = instruction_id or self.new_id()
             if instruction_id in self.running or instruction_id in self.finished:
                 raise ValueError(f"instruction {instruction_id} exists already")
@@ -337,7 +339,7 @@ class Assistant:
             return routed
         if message.chat.kind == "dm" and message.text.strip():
             try:
-                self.resolver.person(message.sender)
+                sender = self.resolver.person(message.sender)  # the messenger's edge
             except GroundingError:
                 logger.warning("message from unknown sender %s ignored", message.sender)
                 return None
@@ -348,7 +350,7 @@ class Assistant:
             if refusal is not None:
                 await self._acknowledge(message, refusal)
                 return None
-            stm = await self.submit(message.sender, message.text)
+            stm = await self.submit(sender, message.text)
             return stm.instruction_id
         self.unmatched.append(message)
         return None

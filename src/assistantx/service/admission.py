@@ -14,6 +14,7 @@ import asyncio
 import contextlib
 import logging
 
+from assistantx.core.office import PersonId
 from assistantx.runtime.assistant import Assistant
 from assistantx.store.journal import InstructionRecord, Journal
 
@@ -67,8 +68,8 @@ class Admission:
                 continue  # withdrawn
             self._waiting.discard(record.id)  # from here on, cancelling it cancels the run
             try:
-                await self._assistant.submit(
-                    record.requester, record.text, instruction_id=record.id
+                await self._assistant.submit(  # journaled as resolved by the route
+                    PersonId(record.requester), record.text, instruction_id=record.id
                 )
             except Exception:
                 logger.exception("could not start instruction %s", record.id)

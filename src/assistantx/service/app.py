@@ -9,9 +9,10 @@ from collections.abc import AsyncIterator, Callable
 from contextlib import AsyncExitStack, asynccontextmanager
 from pathlib import Path
 
-from fastapi import FastAPI
+from fastapi import APIRouter, FastAPI
 from fastapi.responses import FileResponse
 from fastapi.staticfiles import StaticFiles
+from starlette.routing import BaseRoute
 
 from assistantx.adapters.messenger.matrix.appservice import (
     MAX_PUSH_BODY_BYTES,
@@ -58,11 +59,17 @@ def create_app(
     ``data_lock``: the data folder's lock, when the caller holds it already."""
     settings = settings or Settings()
     runtime = ServiceRuntime(settings, data_lock)
+    pushes: list[BaseRoute] = []
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         async with AsyncExitStack() as stack:
+            # Unmounted once everything stopped: a push during shutdown still gets the
+            # stopped messenger's 500 and is retried by the homeserver.
+            stack.callback(_unmount, app, pushes)
             await runtime.start(stack)
+            if runtime.matrix is not None:  # built by start: the homeserver's pushes
+                pushes.extend(_mount_first(app, runtime.matrix.push_router))
             logger.info("assistant ready (%s reasoner)", runtime.assistant.parts.reasoner_name)
             if on_ready is not None:
                 on_ready(runtime)
@@ -105,8 +112,6 @@ def create_app(
     ):
         app.include_router(module.router)
     app.include_router(reports.router)
-    if runtime.matrix is not None:
-        app.include_router(runtime.matrix.push_router)  # the homeserver's pushes
 
     @app.get("/docs", include_in_schema=False)
     async def api_docs() -> FileResponse:
@@ -118,3 +123,18 @@ def create_app(
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
     app.add_middleware(SecurityHeaders)  # outermost: also on the body limit's 413
     return app
+
+
+def _mount_first(app: FastAPI, router: APIRouter) -> list[BaseRoute]:
+    """Mount ``router``'s routes ahead of the others (the static files at "/" take every path
+    they reach); returns them, for ``_unmount``."""
+    before = list(app.router.routes)
+    app.include_router(router)
+    added = [route for route in app.router.routes if route not in before]
+    app.router.routes[:] = [*added, *before]
+    return added
+
+
+def _unmount(app: FastAPI, routes: list[BaseRoute]) -> None:
+    app.router.routes[:] = [route for route in app.router.routes if route not in routes]
+    routes.clear()

@@ -21,6 +21,7 @@ router = APIRouter(prefix="/v1", tags=["messages"])
 async def post_message(body: MessageIn, runtime: Runtime, caller: Caller) -> MessageOut:
     """A person's message: a DM to the assistant (which may start an instruction or answer a
     question) or a message in a group chat they belong to."""
+    sender: str
     if body.sender is not None:
         sender = runtime.resolver.person(body.sender)
         caller.require_person(sender)

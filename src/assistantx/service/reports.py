@@ -59,7 +59,7 @@ def _period(
         raise UnprocessableError(str(exc)) from exc
     if lo is not None and hi is not None and hi <= lo:
         raise UnprocessableError("'to' must come after 'from'")
-    requester = runtime.resolver.person(person) if person else None  # 422 naming it
+    requester: str | None = runtime.resolver.person(person) if person else None  # 422 naming it
     if not caller.is_operator:
         if requester is not None:
             caller.require_person(requester)

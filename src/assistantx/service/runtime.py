@@ -19,7 +19,7 @@ from typing import Any
 from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
-from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
+from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup, matrix_setup
 from assistantx.adapters.model import model_from_settings
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
@@ -27,7 +27,7 @@ from assistantx.agents.registry import load_builder, needs_llm, reasoner_factory
 from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office, PersonId, load_office
 from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.core.ports.robot import RobotBase
@@ -53,6 +53,7 @@ from assistantx.service.errors import NotFoundError, TooManyRequestsError
 from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
+from assistantx.service.matrix_wiring import build_matrix, start_matrix
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
@@ -98,10 +99,12 @@ class ServiceRuntime:
         self.loop_lag = LoopLagMonitor()
         self.ready = False
         self.resumed: list[str] = []
-        # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix (checked at create_app).
-        self.matrix: MatrixRuntime | None = (
-            build_matrix_runtime(settings) if settings.messenger == "matrix" else None
+        # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
+        # here (create_app fails fast on a bad one); it is built in start, with the rest.
+        self.matrix_setup: MatrixSetup | None = (
+            matrix_setup(settings) if settings.messenger == "matrix" else None
         )
+        self.matrix: MatrixRuntime | None = None
 
     # -- start-up ------------------------------------------------------------------------
     async def start(self, stack: AsyncExitStack) -> None:
@@ -148,8 +151,10 @@ class ServiceRuntime:
         # also one sent before the page's first request, and after a restart.
         self.codebook = CodeBook(self.lock_keys.codes, self.clock, data_dir / CODEBOOK_FILE)
         self.messenger.relay_to(self.codebook.note)
-        if self.matrix is not None:  # codes sent over Matrix are scannable too
-            self.matrix.messenger.relay_to(self.codebook.note)
+        if self.matrix_setup is not None:  # Matrix traffic journaled; its codes scannable too
+            self.matrix = build_matrix(
+                stack, self.matrix_setup, transcript=self.journal, relay=self.codebook.note
+            )
         inbox = (
             colleagues.connect_colleagues(self.sim, self.messenger)
             if s.people == "simulated"
@@ -226,17 +231,7 @@ class ServiceRuntime:
         self.ledger.world_state = self._world_state  # the world as restored, from now on
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
-            matrix = self.matrix.messenger
-            matrix.transcript = self.journal  # Matrix traffic in the journal, like the built-in
-            self.assistant.on_instruction_end(
-                lambda stm: matrix.instruction_ended(stm.instruction_id)
-            )
-            # "On it: ...": a Matrix requester sees at once that the work started.
-            self.assistant.on_instruction_start(
-                lambda stm: matrix.instruction_started(stm.instruction_id, stm.requester, stm.text)
-            )
-            stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
-            await matrix.start()
+            await start_matrix(stack, self.matrix, self.assistant)
         stack.push_async_callback(self._stop)
         self.loop_lag.start()
         stack.push_async_callback(self.loop_lag.stop)
@@ -310,7 +305,7 @@ class ServiceRuntime:
     def _sends_images(self) -> bool:
         """QR codes are rendered only where the messenger delivers images (Matrix); the
         built-in messenger carries the code's payload, and the web page draws it."""
-        return self.matrix is not None
+        return self.matrix_setup is not None
 
     def _world_state(self) -> dict[str, dict[str, Any]]:
         self.phones.save(self.sim.codes)  # before the snapshot that names them
@@ -324,11 +319,12 @@ class ServiceRuntime:
 
     async def _resume(self) -> None:
         for record in self.journal.unfinished():
+            requester = PersonId(record.requester)  # journaled as resolved at admission
             if record.stm is None:  # journaled, acknowledged, never started
-                await self.assistant.submit(record.requester, record.text, instruction_id=record.id)
+                await self.assistant.submit(requester, record.text, instruction_id=record.id)
             else:
                 stm = self.durability.prepare_resume(record)
-                await self.assistant.submit(record.requester, record.text, resume=stm)
+                await self.assistant.submit(requester, record.text, resume=stm)
                 if self.settings.people == "simulated":
                     colleagues.reask_unanswered(self.sim, self.journal, record.id)
             self.resumed.append(record.id)
@@ -351,13 +347,13 @@ class ServiceRuntime:
         await self.assistant.stop()
 
     # -- operations ----------------------------------------------------------------------
-    async def submit(self, requester: str, text: str) -> InstructionRecord:
-        """Admit an instruction: validate, journal it (one insert), queue it for the starter.
+    async def submit(self, person: PersonId, text: str) -> InstructionRecord:
+        """Admit an instruction of ``person`` (resolved from a name by the route): rate-check,
+        journal it (one insert), queue it for the starter.
 
         The caller acknowledges once the insert is committed; starting it (the reasoner, the
         hooks, its first checkpoint) is the starter's job, so a submission never waits for
         anyone's step. A restart starts what was admitted and never started."""
-        person = self.resolver.person(requester)
         wait_s = self.rate.take(person)
         if wait_s is not None:
             name = self.office.person(person).name

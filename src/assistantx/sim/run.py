@@ -9,7 +9,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from assistantx.agents.base import Reasoner
-from assistantx.core.office import Office
+from assistantx.core.office import Office, PersonId
 from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.assistant import Assistant, AssistantParts
@@ -28,7 +28,7 @@ class SimRun:
 
 async def run_in_sim(
     office: Office,
-    requester: str,
+    requester: PersonId,
     text: str,
     reasoner_factory: Callable[[], Reasoner],
     *,

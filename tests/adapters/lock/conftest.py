@@ -1,4 +1,5 @@
-"""Fixtures of the lock tests: shared keys, a simulated clock, a controller."""
+"""Fixtures of the lock protocol's tests: a lock server on 127.0.0.1 and a TCP locker for it;
+the keys, clock and controller come from ``helpers.lock`` (shared with ``tests/sim/lock``)."""
 
 from __future__ import annotations
 
@@ -7,36 +8,20 @@ from typing import Any
 
 import pytest
 
-from assistantx.adapters.lock.protocol import CodeIssuer, LockKeys
+from assistantx.adapters.lock.protocol import LockKeys
 from assistantx.adapters.lock.protocol.link import LinkTimeouts
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.core.backoff import Backoff
 from assistantx.core.clock import SimClock
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.server import LockServer
-
-LOCK_ID = "locker-1"
-
-
-@pytest.fixture
-def keys() -> LockKeys:
-    return LockKeys.from_secret("test secret shared by lock and assistant")
-
-
-@pytest.fixture
-def clock() -> SimClock:
-    return SimClock(start=1_000.0)
-
-
-@pytest.fixture
-def controller(keys: LockKeys, clock: SimClock) -> LockController:
-    return LockController(LOCK_ID, keys.codes, clock)
-
-
-@pytest.fixture
-def issuer(keys: LockKeys, clock: SimClock) -> CodeIssuer:
-    return CodeIssuer(LOCK_ID, keys.codes, clock, expiry_s=600, render=False)
-
+from helpers.lock import (  # noqa: F401 (fixtures)
+    LOCK_ID,
+    clock_fixture,
+    controller_fixture,
+    issuer_fixture,
+    keys_fixture,
+)
 
 # Short enough that timeout paths run in well under a second, long enough for a busy CI box.
 FAST = LinkTimeouts(

@@ -19,6 +19,17 @@ from helpers.servers import serve_asgi
 
 ServeRouters = Callable[..., contextlib.AbstractAsyncContextManager[str]]
 
+# A push-mode config whose homeserver is a closed port: for tests that send nothing out.
+PUSH_YAML = """
+homeserver_url: http://127.0.0.1:9
+server_name: office.test
+as_token: as-token
+hs_token: hs-token
+mode: push
+people: {lee: "@lee:office.test"}
+max_retries: 0
+"""
+
 PUSH_BODY_LIMIT = PathLimit(PUSH_PATH_PREFIX, 4096, push_too_large_error)
 """The routers are served behind the service's body limit, with a small push limit for tests."""
 

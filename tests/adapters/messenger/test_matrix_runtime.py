@@ -10,7 +10,7 @@ from pathlib import Path
 import httpx
 import pytest
 
-from adapters.messenger.conftest import ServeRouters
+from adapters.messenger.conftest import PUSH_YAML, ServeRouters
 from assistantx.adapters.messenger.matrix import MatrixRuntime, build_matrix_runtime
 from assistantx.core.errors import MessengerError
 from assistantx.core.office import load_office
@@ -21,15 +21,6 @@ from assistantx.sim.office import SimOffice
 from helpers.office import sim_assistant
 from helpers.scripted_reasoner import ScriptedReasoner
 
-PUSH_YAML = """
-homeserver_url: http://127.0.0.1:9
-server_name: office.test
-as_token: as-token
-hs_token: hs-token
-mode: push
-people: {lee: "@lee:office.test"}
-max_retries: 0
-"""
 PULL_YAML = PUSH_YAML.replace("mode: push", "mode: pull") + (
     'pull_user_id: "@sync:office.test"\npull_access_token: pull-token\n'
 )

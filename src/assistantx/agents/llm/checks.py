@@ -30,7 +30,7 @@ def focus_ids(percept: Percept, resolver: Resolver, requester: str) -> Percept:
     """The percept with every name replaced by its id (and the requester added to a non-empty
     list of people); ModelOutputError when a name does not resolve."""
     try:
-        people = [resolver.person(p) for p in percept.people]
+        people: list[str] = [resolver.person(p) for p in percept.people]
         places = [_place_or_facility(resolver, p) for p in percept.places]
         groups = [resolver.group(g) for g in percept.groups]
         items = [_item_or_type(resolver, i) for i in percept.items]

@@ -26,7 +26,7 @@ from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.agents.oracle.plan import TaskPlan, able, build_plan, candidates
 from assistantx.agents.oracle.policy import DryRun, dry_run
 from assistantx.core.errors import DatasetError
-from assistantx.core.office import Office
+from assistantx.core.office import Office, PersonId
 from assistantx.core.task_spec import BaseInstruction
 from assistantx.evaluation.dataset.tasks import Level, Task
 from assistantx.memory.graph import LongTermMemory
@@ -225,7 +225,7 @@ async def run_optimal(office: Office, task: Task) -> tuple[int, list[bool], str 
     )
     run = await run_in_sim(
         office,
-        task.requester,
+        PersonId(task.requester),  # an id of the office: the task was built from it
         task.instruction,
         lambda: reasoner,
         unavailable=task.unavailable,

@@ -9,8 +9,10 @@ from assistantx.adapters.messenger.matrix.normalize import EventNormalizer
 from assistantx.adapters.messenger.matrix.registration import registration, write_registration
 from assistantx.adapters.messenger.matrix.runtime import (
     MatrixRuntime,
+    MatrixSetup,
     build_matrix_runtime,
     matrix_runtime,
+    matrix_setup,
 )
 from assistantx.adapters.messenger.matrix.store import EventStore, SqliteEventStore
 from assistantx.adapters.messenger.matrix.sync import SyncPoller
@@ -25,6 +27,7 @@ __all__ = [
     "MatrixError",
     "MatrixMessenger",
     "MatrixRuntime",
+    "MatrixSetup",
     "RetryPolicy",
     "SqliteEventStore",
     "SyncPoller",
@@ -32,6 +35,7 @@ __all__ = [
     "create_appservice_router",
     "load_matrix_config",
     "matrix_runtime",
+    "matrix_setup",
     "registration",
     "transaction_id",
     "write_registration",

@@ -200,13 +200,15 @@ class MatrixMessenger(Messenger):
             await self._poller.start()
 
     async def _stop(self) -> None:
-        if self._poller is not None:
-            await self._poller.stop()
-            self._poller = None
-        if self._http is not None and self._external_http is None:
-            await self._http.aclose()
-        self._http = None
-        self._as_client = self._pull_client = None
+        try:
+            if self._poller is not None:
+                poller, self._poller = self._poller, None
+                await poller.stop()
+        finally:  # the client's connections to the homeserver close whatever the poller did
+            if self._http is not None and self._external_http is None:
+                await self._http.aclose()
+            self._http = None
+            self._as_client = self._pull_client = None
 
     @property
     def poller(self) -> SyncPoller | None:

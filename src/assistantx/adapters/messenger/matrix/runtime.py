@@ -2,17 +2,20 @@
 
 ``ASSISTANTX_MESSENGER=matrix`` selects it and ``ASSISTANTX_MATRIX_CONFIG`` names its YAML file
 (see ``config.py``); the inbound event store is ``ASSISTANTX_MATRIX_STORE`` or
-``DATA_DIR/matrix.sqlite3``. The service (``assistantx.service.runtime``) wires it like this::
+``DATA_DIR/matrix.sqlite3``. The service (``assistantx.service.matrix_wiring``) builds it in
+its composition root, in this order::
 
-    runtime = build_matrix_runtime(settings)       # fails fast on a bad or missing config
-    if runtime.router is not None:
-        app.include_router(runtime.router)         # push endpoints: /_matrix/app/v1/...
+    setup = matrix_setup(settings)                 # at create_app: fails fast on a bad config
+    ...                                            # the runtime's start: the journal is open
+    runtime = setup.build(transcript=journal)      # nothing connects yet
     assistant = Assistant(AssistantParts(messenger=runtime.messenger, ...))
     await assistant.start()                        # connects its inbox to the messenger
     await runtime.messenger.start()                # replays unhandled messages, starts /sync
+    app.include_router(runtime.push_router)        # push endpoints: /_matrix/app/v1/...
     ...
     await assistant.stop()
-    await runtime.aclose()                         # stops the messenger, closes the store
+    await runtime.aclose()                         # stops the messenger (its HTTP client),
+                                                   # closes the store; also after a failure
 
 The messenger is started after the consumer's inbox is connected: it replays what a previous
 run accepted but never acknowledged, and a push that arrives before then is answered 500, so
@@ -23,6 +26,7 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass
+from pathlib import Path
 
 from fastapi import APIRouter
 
@@ -63,9 +67,23 @@ class MatrixRuntime:
         return self.messenger.config
 
     async def aclose(self) -> None:
-        """Stop the messenger, then close its store; idempotent."""
-        await self.messenger.stop()
-        await self.store.close()
+        """Stop the messenger (it closes its HTTP client), then close its store, also when
+        stopping fails; idempotent."""
+        try:
+            await self.messenger.stop()
+        finally:
+            await self.store.close()
+
+
+@dataclass(frozen=True)
+class MatrixSetup:
+    """What the settings say of the Matrix messenger, checked; ``build`` makes it."""
+
+    config: MatrixConfig
+    store_path: Path
+
+    def build(self, *, transcript: Transcript | None = None) -> MatrixRuntime:
+        return matrix_runtime(self.config, SqliteEventStore(self.store_path), transcript=transcript)
 
 
 def matrix_runtime(
@@ -90,6 +108,12 @@ def build_matrix_runtime(
     settings: Settings, *, transcript: Transcript | None = None
 ) -> MatrixRuntime:
     """The Matrix messenger the settings describe; ``MessengerError`` when they do not."""
+    return matrix_setup(settings).build(transcript=transcript)
+
+
+def matrix_setup(settings: Settings) -> MatrixSetup:
+    """The Matrix config the settings name, loaded and checked (nothing is opened yet);
+    ``MessengerError`` when they name none or a bad one."""
     if settings.messenger != "matrix":
         raise MessengerError(
             f"ASSISTANTX_MESSENGER is {settings.messenger!r}; the Matrix messenger needs 'matrix'"
@@ -97,5 +121,4 @@ def build_matrix_runtime(
     if settings.matrix_config is None:
         raise MessengerError("ASSISTANTX_MESSENGER=matrix needs ASSISTANTX_MATRIX_CONFIG (a YAML)")
     config = load_matrix_config(settings.matrix_config)
-    store_path = settings.matrix_store or settings.data_dir / DEFAULT_STORE_NAME
-    return matrix_runtime(config, SqliteEventStore(store_path), transcript=transcript)
+    return MatrixSetup(config, settings.matrix_store or settings.data_dir / DEFAULT_STORE_NAME)

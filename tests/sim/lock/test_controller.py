@@ -10,8 +10,7 @@ from assistantx.core.clock import SimClock
 from assistantx.core.errors import InvalidCodeError, LockCommandError
 from assistantx.core.ports.lock import LockEvent
 from assistantx.sim.lock.controller import LockController
-
-from .conftest import LOCK_ID
+from helpers.lock import LOCK_ID
 
 
 def _provisioned(issuer: CodeIssuer, controller: LockController, **overrides: str) -> str:
