@@ -98,21 +98,26 @@ static double octile(int32_t dy, int32_t dx) {
 }
 
 /* Search from `start` to `goal` (flat cell indices). `g` (doubles), `parent` and `where`
- * (int32) hold one entry per cell and are filled here. Returns the path's cost, -1.0 when the goal cannot
+ * (int32) hold one entry per cell; they are valid for a cell only where `stamp` equals
+ * `generation` (a new number per search), so a search touches only the cells it reaches
+ * instead of clearing the whole grid first: on a big map with a small free area the
+ * clearing was most of the search. Returns the path's cost, -1.0 when the goal cannot
  * be reached, -2.0 when memory ran out. */
 double grid_astar(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
                   double resolution, double penalty, int32_t start, int32_t goal, double *g,
-                  int32_t *parent, int32_t *where) {
+                  int32_t *parent, int32_t *where, uint32_t *stamp, uint32_t generation) {
     static const int32_t DY[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
     static const int32_t DX[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
-    const size_t cells = (size_t)height * (size_t)width;
     const int32_t gy = goal / width, gx = goal % width;
     double lengths[8];
     for (int k = 0; k < 8; k++) lengths[k] = resolution * ((DY[k] && DX[k]) ? M_SQRT2 : 1.0);
-    for (size_t i = 0; i < cells; i++) {
-        g[i] = INFINITY;
-        where[i] = -1;
+#define TOUCH(v)                  \
+    if (stamp[v] != generation) { \
+        stamp[v] = generation;    \
+        g[v] = INFINITY;          \
+        where[v] = -1;            \
     }
+    TOUCH(start);
 
     heap open = {NULL, where, 0, 0};
     g[start] = 0.0;
@@ -139,6 +144,7 @@ double grid_astar(const uint8_t *costs, int32_t height, int32_t width, int32_t i
             const double mean = (c_u + (double)costs[v]) / 2.0;
             const double weight = lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
             const double candidate = e.g + weight;
+            TOUCH(v);
             if (candidate < g[v]) {
                 g[v] = candidate;
                 parent[v] = e.node;
@@ -152,6 +158,7 @@ double grid_astar(const uint8_t *costs, int32_t height, int32_t width, int32_t i
     }
     free(open.items);
     return found;
+#undef TOUCH
 }
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_grid_astar", NULL, -1, NULL};

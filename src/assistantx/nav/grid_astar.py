@@ -48,6 +48,8 @@ def _library() -> ctypes.CDLL | None:
         _DOUBLE_P,
         _INT32_P,
         _INT32_P,
+        np.ctypeslib.ndpointer(np.uint32, flags="C_CONTIGUOUS"),
+        ctypes.c_uint32,
     ]
     return library
 
@@ -57,19 +59,22 @@ class _Workspace(threading.local):
     them afresh cost more than the search itself on a small floor (fresh pages fault in)."""
 
     size = -1
+    generation = 0  # the search's number: a cell's entries count where its stamp equals it
     g: npt.NDArray[np.float64]
     parent: npt.NDArray[np.int32]
     where: npt.NDArray[np.int32]
+    stamp: npt.NDArray[np.uint32]
 
-    def arrays(
-        self, size: int
-    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32], npt.NDArray[np.int32]]:
-        if size != self.size:
+    def next_search(self, size: int) -> int:
+        """Ready the arrays for a search on ``size`` cells; the search's generation."""
+        if size != self.size or self.generation == 2**32 - 1:
             self.g = np.empty(size, dtype=np.float64)
             self.parent = np.empty(size, dtype=np.int32)
             self.where = np.empty(size, dtype=np.int32)
-            self.size = size
-        return self.g, self.parent, self.where
+            self.stamp = np.zeros(size, dtype=np.uint32)
+            self.size, self.generation = size, 0
+        self.generation += 1
+        return self.generation
 
 
 _workspace = _Workspace()
@@ -96,10 +101,23 @@ def search(
     height, width = grid.shape
     if height * width >= 2**31:
         raise ValueError("a grid of 2**31 cells or more is beyond the compiled search")
-    g, parent, where = _workspace.arrays(height * width)
+    work = _workspace
+    generation = work.next_search(height * width)
     source, target = start[0] * width + start[1], goal[0] * width + goal[1]
     cost = library.grid_astar(
-        grid, height, width, INSCRIBED, resolution, cost_penalty, source, target, g, parent, where
+        grid,
+        height,
+        width,
+        INSCRIBED,
+        resolution,
+        cost_penalty,
+        source,
+        target,
+        work.g,
+        work.parent,
+        work.where,
+        work.stamp,
+        generation,
     )
     if cost == -2.0:
         raise MemoryError("the A* search ran out of memory")
@@ -107,7 +125,7 @@ def search(
         return None
     nodes = [target]
     while nodes[-1] != source:
-        nodes.append(int(parent[nodes[-1]]))
+        nodes.append(int(work.parent[nodes[-1]]))
     nodes.reverse()
     flat = np.asarray(nodes, dtype=np.intp)
     return np.column_stack(np.divmod(flat, width)), cost
