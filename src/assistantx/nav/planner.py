@@ -26,17 +26,18 @@ import math
 import uuid
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 from scipy.ndimage import distance_transform_edt, label
-from scipy.sparse import csr_matrix
-from scipy.sparse.csgraph import dijkstra
 
 from assistantx.core.errors import UnreachableError
 from assistantx.nav import grid_astar
 from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
+
+if TYPE_CHECKING:  # scipy.sparse is imported by the fallback search and the full graph only
+    from scipy.sparse import csr_matrix
 
 
 @dataclass(frozen=True)
@@ -171,6 +172,8 @@ class GridPlanner:
         ids[nodes] = np.arange(count, dtype=np.int32)
         graph = _graph(ids, nodes, traversable, block, res, self.params.cost_penalty)
         source, target = int(ids[sy - y0, sx - x0]), int(ids[gy - y0, gx - x0])
+        from scipy.sparse.csgraph import dijkstra
+
         dist, pred = dijkstra(graph, indices=source, return_predecessors=True, limit=limit_m)
         cost = float(dist[target])
         if not (cost <= limit_m and math.isfinite(cost)):
@@ -283,6 +286,8 @@ def _graph(
         length = res * math.hypot(dy, dx)
         data[at] = length * (1 + cost_penalty * mean_cost / (INSCRIBED - 1))
         offset[ok_nodes] = at + 1
+    from scipy.sparse import csr_matrix
+
     return csr_matrix((data, indices, indptr), shape=(count, count))
 
 
