@@ -238,13 +238,9 @@ class ServiceRuntime:
             )
             stack.push_async_callback(self.matrix.aclose)  # after _stop: acks are written
             await matrix.start()
-        stack.push_async_callback(self._stop)
-        self.loop_lag.start()
-        stack.push_async_callback(self.loop_lag.stop)
-        self.retention = Retention(self.journal, s.journal_retention_days)
-        self.retention.start()
-        stack.push_async_callback(self.retention.stop)
-        # Before anything resumes: a resumed instruction is surveyed like a new one.
+        # Before anything resumes: a resumed instruction is surveyed like a new one. Opened
+        # before _stop is pushed, so it closes after the assistant stopped: an instruction
+        # that ends during the stop still records its survey (it hit a closed store).
         self.feedback = await start_feedback(
             stack,
             assistant=self.assistant,
@@ -252,6 +248,12 @@ class ServiceRuntime:
             map_yaml=self.map_yaml,
             anchors_yaml=s.map_anchors,
         )
+        stack.push_async_callback(self._stop)
+        self.loop_lag.start()
+        stack.push_async_callback(self.loop_lag.stop)
+        self.retention = Retention(self.journal, s.journal_retention_days)
+        self.retention.start()
+        stack.push_async_callback(self.retention.stop)
         await self._resume()
         self.admission.start()
         self.ready = True
