@@ -10,6 +10,9 @@ import pytest
 
 from assistantx.cli import main
 from assistantx.nav.anchors import Anchor, load_anchors, save_anchors
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import load_map
+from assistantx.nav.planner import GridPlanner
 from helpers.maps import REPO, real_map
 
 
@@ -89,6 +92,11 @@ def test_render_takes_places_as_every_command_names_them(
     tmp_path: Path, capsys: pytest.CaptureFixture[str], path: str
 ) -> None:
     # Lee's desk is desk_03: a person, a location's name in any case or its id are one place.
+    # The length is the smoothed path's from desk_03's anchor to the print room's.
+    anchors = load_anchors(REPO / "maps" / "office.anchors.yaml")
+    start, goal = anchors["desk_03"], anchors["print_room"]
+    planner = GridPlanner(Costmap.inflate(load_map(REPO / "maps" / "office.yaml")))
+    metres = planner.plan((start.x, start.y), (goal.x, goal.y)).length_m
     out = tmp_path / "path.png"
     assert main(["map", "render", "--out", str(out), "--path", path]) == 0
-    assert capsys.readouterr().out == f"wrote {out}, path 18.14 m\n"
+    assert capsys.readouterr().out == f"wrote {out}, path {metres:.2f} m\n"

@@ -31,6 +31,7 @@ TYPES = {
     "assistantx_http_request_duration_seconds": "histogram",
     "assistantx_duplicate_sends_skipped": "gauge",
     "assistantx_event_loop_lag_max_seconds": "gauge",
+    "assistantx_event_streams": "gauge",
     "assistantx_inbound_events_skipped": "counter",
 }
 
@@ -142,6 +143,8 @@ async def test_each_family_has_its_type_and_the_values_of_a_real_run(tmp_path: P
         families["assistantx_event_loop_lag_max_seconds"], "assistantx_event_loop_lag_max_seconds"
     )
     assert list(lag) == [()] and lag[()] >= 0.0
+    streams = families["assistantx_event_streams"]
+    assert _values(streams, "assistantx_event_streams") == {(): 0.0}  # none is open here
 
 
 def _llm_step(prompt_tokens: int, completion_tokens: int) -> TraceStep:
@@ -158,7 +161,9 @@ def test_two_apps_in_one_process_keep_their_own_counts(tmp_path: Path) -> None:
     def read(metrics: ServiceMetrics) -> dict[str, list[Sample]]:
         text = metrics.render().decode()
         types = {f.name: f.type for f in text_string_to_metric_families(text)}
-        assert types == {k: v for k, v in TYPES.items() if "loop_lag" not in k}
+        # The loop-lag and event-stream gauges are the runtime's: a bare ServiceMetrics has none.
+        runtimes = ("loop_lag", "event_streams")
+        assert types == {k: v for k, v in TYPES.items() if not any(r in k for r in runtimes)}
         return {f.name: f.samples for f in text_string_to_metric_families(text)}
 
     with (

@@ -29,6 +29,13 @@ def _follow(url: str, lines: list[str], opened: threading.Event) -> None:
             lines.append(line)
 
 
+def _open_streams(url: str) -> int:
+    headers = {"Authorization": f"Bearer {OPERATOR}"}
+    text = httpx.get(f"{url}/metrics", headers=headers, timeout=10).text
+    [line] = [x for x in text.splitlines() if x.startswith("assistantx_event_streams ")]
+    return int(float(line.split()[1]))
+
+
 def test_sigterm_with_open_sse_streams_stops_quickly(tmp_path: Path) -> None:
     server = serve(tmp_path / "data", free_port())
     lines: list[str] = []
@@ -40,7 +47,10 @@ def test_sigterm_with_open_sse_streams_stops_quickly(tmp_path: Path) -> None:
             follower.start()
             assert opened.wait(10)
             followers.append(follower)
-        time.sleep(0.2)  # both streams are in their live phase
+        # Both streams subscribed to the live events (then a shutdown must end them).
+        eventually_sync(
+            lambda: _open_streams(server.url) == 2, what="two open event streams", timeout_s=10
+        )
         started = time.monotonic()
         server.process.terminate()
         code = server.process.wait(10)

@@ -29,7 +29,6 @@ from collections.abc import Iterable
 
 from lemminflect import getAllInflections, getAllInflectionsOOV, getAllLemmas
 from rapidfuzz.distance import OSA, Indel
-from wordfreq import zipf_frequency
 
 WORD = re.compile(r"[^\W_]+(?:['’][^\W_]+)*", re.UNICODE)
 """A word of any script, with inner apostrophes ("José", "Müller's", "don't")."""
@@ -100,6 +99,14 @@ def plural(noun: str) -> str:
     return " ".join([*head, forms[0] if forms else last + "s"])
 
 
+def _zipf_english(word: str) -> float:
+    # wordfreq is imported on first use: its import finds its data through a stack walk that
+    # costs a quarter CPU-second, and most commands and a service's start never ask.
+    from wordfreq import zipf_frequency
+
+    return float(zipf_frequency(word, "en"))
+
+
 @functools.cache
 def is_english_word(word: str) -> bool:
     """Whether a (folded) word is an ordinary English word: in the dictionary as an open-class
@@ -108,13 +115,13 @@ def is_english_word(word: str) -> bool:
     w = word.lower()
     if not w.isalpha():
         return False
-    return any(pos in lemmas(w) for pos in _OPEN_CLASSES) and zipf_frequency(w, "en") >= COMMON_ZIPF
+    return any(pos in lemmas(w) for pos in _OPEN_CLASSES) and _zipf_english(w) >= COMMON_ZIPF
 
 
 @functools.cache
 def zipf(word: str) -> float:
     """How common a word is in written English (Zipf scale; 0 for unknown words)."""
-    return float(zipf_frequency(word.lower(), "en"))
+    return _zipf_english(word.lower())
 
 
 def typo_limit(word: str) -> int:

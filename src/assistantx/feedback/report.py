@@ -19,18 +19,18 @@ from collections import Counter, defaultdict
 from collections.abc import Mapping
 from datetime import UTC, date, datetime, time, timedelta
 from pathlib import Path
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
-from matplotlib.axes import Axes
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
-from matplotlib.ticker import MaxNLocator
 from pydantic import BaseModel, Field
 
 from assistantx.feedback.answers import CHOICES, Choice
 from assistantx.feedback.impact import OUTCOMES, TASK_KINDS, InstructionRecord
 from assistantx.feedback.store import FeedbackStore
 from assistantx.feedback.survey import QUESTIONS, Survey, SurveyState
+
+if TYPE_CHECKING:  # matplotlib is imported when a chart is drawn: half a CPU-second at start
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
 ChartName = Literal["outcomes", "survey", "walking"]
 CHARTS: tuple[ChartName, ...] = ("outcomes", "survey", "walking")
@@ -415,6 +415,9 @@ _OUTCOME_COLOURS = {
 
 def chart_figure(report: UsageReport, name: ChartName) -> Figure:
     """One chart as a matplotlib Figure (drawn on the Agg canvas)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
     figure = Figure(figsize=(6.4, 3.6), dpi=100, layout="constrained")
     FigureCanvasAgg(figure)  # attaches the Agg canvas to the figure
     axes = figure.add_subplot()
@@ -444,6 +447,8 @@ def _outcomes_chart(report: UsageReport, axes: Axes) -> None:
         axes.bar(kinds, counts, bottom=bottom, label=outcome, color=_OUTCOME_COLOURS[outcome])
         bottom = [b + c for b, c in zip(bottom, counts, strict=True)]
     axes.set_ylabel("instructions")
+    from matplotlib.ticker import MaxNLocator
+
     axes.yaxis.set_major_locator(MaxNLocator(integer=True))  # whole instructions only
     axes.set_title("Instructions by kind and outcome")
     _legend_outside(axes)

@@ -1,4 +1,5 @@
-"""Long-term memory: the assistant's belief about the office as an undirected networkx graph.
+"""Long-term memory: the assistant's belief about the office as an undirected graph
+(``memory/belief_graph.py``).
 
 Node ids are typed: ``person:zhang``, ``location:desk_04``, ``facility:printer``,
 ``item:stapler:zhang``, ``group:office_work``. Edges carry a ``rel``: ``at`` (person/facility →
@@ -19,10 +20,10 @@ import json
 from collections import deque
 from typing import Any, Literal
 
-import networkx as nx
 from pydantic import TypeAdapter
 
 from assistantx.core.office import Office
+from assistantx.memory.belief_graph import BeliefGraph
 from assistantx.memory.updates import (
     AppliedUpdate,
     AvailabilityUpdate,
@@ -74,10 +75,10 @@ class LongTermMemory:
     """Typed queries and updates over the belief graph."""
 
     def __init__(
-        self, office: Office, graph: nx.Graph | None = None, *, history: int = HISTORY
+        self, office: Office, graph: BeliefGraph | None = None, *, history: int = HISTORY
     ) -> None:
         self.office = office
-        self.graph: nx.Graph = graph if graph is not None else _graph_from_office(office)
+        self.graph: BeliefGraph = graph if graph is not None else _graph_from_office(office)
         self.updates: deque[AppliedUpdate] = deque(maxlen=history)  # newest last
         self.latest: dict[str, AppliedUpdate] = {}  # fact key -> the newest update of it
         self.applied_total = 0  # every update applied since the graph was built
@@ -265,7 +266,7 @@ class LongTermMemory:
     # -- persistence ---------------------------------------------------------------------
     def snapshot(self) -> dict[str, Any]:
         """The graph, the latest update per fact and the recent history (all bounded)."""
-        data = nx.node_link_data(self.graph, edges="edges")
+        data = self.graph.node_link_data()
         for node in data["nodes"]:
             if "lacks" in node:
                 node["lacks"] = sorted(node["lacks"])
@@ -282,7 +283,7 @@ class LongTermMemory:
         for node in data["nodes"]:
             if "lacks" in node:
                 node["lacks"] = set(node["lacks"])
-        graph = nx.node_link_graph(data, edges="edges")
+        graph = BeliefGraph.from_node_link_data(data)
         memory = cls(office, graph)
         history = _applied_list.validate_python(snapshot.get("updates", []))
         memory.updates.extend(history)
@@ -297,8 +298,8 @@ class LongTermMemory:
         self.apply(applied.update, applied.time, applied.instruction_id)
 
 
-def _graph_from_office(office: Office) -> nx.Graph:
-    g = nx.Graph()
+def _graph_from_office(office: Office) -> BeliefGraph:
+    g = BeliefGraph()
     for loc in office.locations:
         g.add_node(lid(loc.id), kind="location", name=loc.name, type=loc.kind)
     for f in office.facilities:

@@ -7,10 +7,12 @@ data line, never as free prose an agent could mistake for instructions.
 from __future__ import annotations
 
 import json
+from typing import TYPE_CHECKING
 
-from assistantx.core.trace import Percept
-from assistantx.memory.graph import LongTermMemory
-from assistantx.memory.short_term import ShortTermMemory
+if TYPE_CHECKING:  # annotations only: `office show` renders without loading the trace types
+    from assistantx.core.trace import Percept
+    from assistantx.memory.graph import LongTermMemory
+    from assistantx.memory.short_term import ShortTermMemory
 
 
 def quote(text: str, limit: int = 400) -> str:

@@ -46,10 +46,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import numpy.typing as npt
-from scipy.ndimage import distance_transform_edt
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from scipy.special import logsumexp
 
 from assistantx.nav import disk_cache
 from assistantx.nav.geometry import FloatArray, compose, relative, wrap_angle
@@ -139,7 +135,7 @@ class LikelihoodField:
         distance = disk_cache.cached_array(
             "occupied-distance",
             (occupied.shape, occupied.tobytes()),
-            lambda: np.asarray(distance_transform_edt(~occupied), dtype=np.float64),
+            lambda: _distance_to(occupied),
         )
         distance = np.minimum(distance * grid.resolution, params.laser_likelihood_max_dist)
         self.distance_m = distance.ravel()
@@ -270,6 +266,10 @@ def cluster_labels(keys: npt.NDArray[np.int64], params: AmclParams) -> npt.NDArr
                 hit = unique[pos] == nkey
                 rows.append(np.nonzero(hit)[0])
                 cols.append(pos[hit])
+    # scipy.sparse is imported here, on the first clustering, not when the service starts.
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
     r, c = np.concatenate(rows), np.concatenate(cols)
     graph = coo_matrix((np.ones(r.size), (r, c)), shape=(k, k))
     _, labels = connected_components(graph, directed=False)
@@ -486,3 +486,20 @@ class ParticleFilter:
 def _smooth_log(previous: float, value: float, alpha: float) -> float:
     """log((1 - alpha) * exp(previous) + alpha * exp(value))."""
     return float(np.logaddexp(math.log1p(-alpha) + previous, math.log(alpha) + value))
+
+
+def _distance_to(occupied: npt.NDArray[np.bool_]) -> npt.NDArray[np.float64]:
+    """Each cell's distance (cells) to the nearest occupied one. scipy.ndimage is imported
+    only when the distances are not in the map cache."""
+    from scipy.ndimage import distance_transform_edt
+
+    return np.asarray(distance_transform_edt(~occupied), dtype=np.float64)
+
+
+def logsumexp(values: npt.NDArray[np.float64]) -> float:
+    """log(sum(exp(values))) without overflow (scipy.special's, for one flat array: importing
+    scipy.special cost the service's start a few tenths of a CPU-second)."""
+    top = float(np.max(values))
+    if not math.isfinite(top):
+        return top
+    return top + math.log(float(np.sum(np.exp(values - top))))

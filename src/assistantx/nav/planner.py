@@ -5,14 +5,16 @@ cells are traversable, so paths never cut a corner). An edge from u to v weighs
 ``length_m * (1 + cost_penalty * (c_u + c_v) / 2 / 252)``, the cost term of nav2's Smac
 planner: the path keeps away from walls where there is room.
 
-No graph is kept between queries, so set-up is the costmap plus a 4-connected labelling
-(which tells an unreachable goal at once: without corner cutting, 8-connected moves join
-exactly the cells that 4-connected ones do) and memory grows with the free area a query
-touches. A query builds the graph only over the cells p with ``oct(s, p) + oct(p, g) <= L``
-(``oct``: the octile distance, the shortest 8-connected grid distance; an ellipse-like
-region round start s and goal g) and runs scipy's Dijkstra there. Every edge weighs at
-least its grid length, so a path of cost <= L never leaves that region: a path found with
-cost <= L is optimal over the whole map. Otherwise L grows (x1.4) and the query repeats.
+A query runs A* over the whole grid in C (``grid_astar``, the octile distance as heuristic:
+it never overestimates, since every edge weighs at least its grid length, so the path is
+optimal) and keeps nothing between queries. Set-up is the costmap plus a 4-connected
+labelling, which tells an unreachable goal at once (without corner cutting, 8-connected
+moves join exactly the cells that 4-connected ones do).
+
+Where the compiled search was not built (no C compiler at install), a query builds the graph
+only over the cells p with ``oct(s, p) + oct(p, g) <= L`` (an ellipse-like region round
+start s and goal g) and runs scipy's Dijkstra there: a path found with cost <= L never left
+that region, so it is optimal over the whole map; otherwise L grows (x1.4) and it repeats.
 
 The grid path is then shortened by line-of-sight shortcuts that never pass closer to an
 obstacle than the grid path did over the same stretch, and resampled for the controller.
@@ -24,16 +26,18 @@ import math
 import uuid
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 from scipy.ndimage import distance_transform_edt, label
-from scipy.sparse import csr_matrix
-from scipy.sparse.csgraph import dijkstra
 
 from assistantx.core.errors import UnreachableError
+from assistantx.nav import grid_astar
 from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
+
+if TYPE_CHECKING:  # scipy.sparse is imported by the fallback search and the full graph only
+    from scipy.sparse import csr_matrix
 
 
 @dataclass(frozen=True)
@@ -41,6 +45,8 @@ class PlannerParams:
     cost_penalty: float = 2.0
     start_snap_m: float = 0.5  # a start inside the inscribed zone snaps to free space this near
     smooth: bool = True
+    # A* in C where it was built; False: scipy's bounded Dijkstra (the fallback), same costs
+    compiled_search: bool = True
 
 
 @dataclass(frozen=True)
@@ -103,6 +109,13 @@ class GridPlanner:
         if labels[start_cell] != labels[goal_cell]:
             raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
         res = self.costmap.grid.resolution
+        if self.params.compiled_search and grid_astar.available():
+            found = grid_astar.search(
+                self.costmap.costs, res, self.params.cost_penalty, start_cell, goal_cell
+            )
+            if found is None:  # cannot happen within one component; kept as a guard
+                raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
+            return self._make_path(found[0], found[1], start, goal)
         straight = float(_octile(start_cell[0] - goal_cell[0], start_cell[1] - goal_cell[1])) * res
         # Path costs run a few percent above the straight line in open space; start just
         # above that and widen. Once the region holds the whole map (no cell is farther
@@ -159,6 +172,8 @@ class GridPlanner:
         ids[nodes] = np.arange(count, dtype=np.int32)
         graph = _graph(ids, nodes, traversable, block, res, self.params.cost_penalty)
         source, target = int(ids[sy - y0, sx - x0]), int(ids[gy - y0, gx - x0])
+        from scipy.sparse.csgraph import dijkstra
+
         dist, pred = dijkstra(graph, indices=source, return_predecessors=True, limit=limit_m)
         cost = float(dist[target])
         if not (cost <= limit_m and math.isfinite(cost)):
@@ -188,9 +203,9 @@ class GridPlanner:
 
     def _start_cell(self, start: tuple[float, float]) -> tuple[int, int]:
         iy, ix = self._cell(start, "start")
-        traversable = self.costmap.costs < INSCRIBED
-        if traversable[iy, ix]:
+        if self.costmap.costs[iy, ix] < INSCRIBED:
             return iy, ix
+        traversable = self.costmap.costs < INSCRIBED
         if self._nearest_free is None:
             _, nearest = distance_transform_edt(~traversable, return_indices=True)
             self._nearest_free = np.asarray(nearest)
@@ -215,6 +230,18 @@ class GridPlanner:
             points = shortcut(points, self.costmap)
         length = float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
         return Path(points, length, cost, len(cells))
+
+
+def costmap_graph(
+    costmap: Costmap, cost_penalty: float
+) -> tuple[csr_matrix, npt.NDArray[np.int32]]:
+    """The graph every search here runs on, over the whole map: (CSR matrix, node id of each
+    cell, -1 where not traversable). For comparing against a full Dijkstra (bench, tests)."""
+    traversable = costmap.traversable
+    ids = np.full(traversable.shape, -1, dtype=np.int32)
+    ids[traversable] = np.arange(int(traversable.sum()), dtype=np.int32)
+    res = costmap.grid.resolution
+    return _graph(ids, traversable, traversable, costmap.costs, res, cost_penalty), ids
 
 
 def _graph(
@@ -259,6 +286,8 @@ def _graph(
         length = res * math.hypot(dy, dx)
         data[at] = length * (1 + cost_penalty * mean_cost / (INSCRIBED - 1))
         offset[ok_nodes] = at + 1
+    from scipy.sparse import csr_matrix
+
     return csr_matrix((data, indices, indptr), shape=(count, count))
 
 
@@ -279,24 +308,26 @@ def _walk_back(pred: npt.NDArray[np.int32], goal: int) -> list[int]:
 
 
 def _segment_max_cost(
-    costmap: Costmap, a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]
+    costs: npt.NDArray[np.uint8], a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]
 ) -> int:
-    grid = costmap.grid
-    n = max(2, math.ceil(float(np.linalg.norm(b - a)) / (grid.resolution / 2)) + 1)
-    t = np.linspace(0.0, 1.0, n)[:, None]
-    pts = a + t * (b - a)
-    ix, iy = grid.world_to_cell(pts[:, 0], pts[:, 1])
-    ix = np.clip(ix, 0, grid.width - 1)
-    iy = np.clip(iy, 0, grid.height - 1)
-    return int(costmap.costs[iy, ix].max())
+    """The highest cost on the segment a-b (grid-frame points in cells), sampled every half
+    cell. Called some ten times a waypoint: plain array arithmetic, no clip or linspace
+    (their per-call overhead was most of a plan's smoothing)."""
+    n = max(2, math.ceil(math.hypot(b[0] - a[0], b[1] - a[1]) * 2.0) + 1)
+    t = np.arange(n) / (n - 1)
+    height, width = costs.shape
+    ix = np.minimum(np.maximum(np.floor(a[0] + t * (b[0] - a[0])), 0), width - 1).astype(np.intp)
+    iy = np.minimum(np.maximum(np.floor(a[1] + t * (b[1] - a[1])), 0), height - 1).astype(np.intp)
+    return int(costs[iy, ix].max())
 
 
 def shortcut(points: npt.NDArray[np.float64], costmap: Costmap) -> npt.NDArray[np.float64]:
     """Greedy line-of-sight shortcuts that stay as far from obstacles as the grid path did."""
     grid = costmap.grid
-    ix, iy = grid.world_to_cell(points[:, 0], points[:, 1])
-    ix = np.clip(ix, 0, grid.width - 1)
-    iy = np.clip(iy, 0, grid.height - 1)
+    gx, gy = grid.to_grid_frame(points[:, 0], points[:, 1])
+    in_cells = np.column_stack([gx, gy]) / grid.resolution  # the grid's frame, cell units
+    ix = np.clip(np.floor(in_cells[:, 0]), 0, grid.width - 1).astype(np.intp)
+    iy = np.clip(np.floor(in_cells[:, 1]), 0, grid.height - 1).astype(np.intp)
     along = costmap.costs[iy, ix].astype(np.int64)
     out = [points[0]]
     i, n = 0, len(points)
@@ -308,7 +339,7 @@ def shortcut(points: npt.NDArray[np.float64], costmap: Costmap) -> npt.NDArray[n
             mid = (lo + hi) // 2
             # A little slack (10 of 252) lets corners round off without hugging walls.
             allowed = min(int(along[i : mid + 1].max()) + 10, INSCRIBED - 1)
-            if _segment_max_cost(costmap, points[i], points[mid]) <= allowed:
+            if _segment_max_cost(costmap.costs, in_cells[i], in_cells[mid]) <= allowed:
                 best, lo = mid, mid + 1
             else:
                 hi = mid - 1

@@ -124,6 +124,9 @@ class Assistant:
         self._on_given_back: list[GiveBackHook] = []
         self._dispatcher: asyncio.Task[None] | None = None
         self._errands: set[asyncio.Task[None]] = set()  # items going back to their owners
+        # Every instruction's task until it is done: one that has left ``running`` may still
+        # be in its end hooks (they write to the journal), which a stop must wait for.
+        self._instruction_tasks: set[asyncio.Task[ShortTermMemory]] = set()
         self._stopping = False
         self.unmatched: list[InboundMessage] = []
         self.skipped = SkippedEvents("dispatch")  # inbound messages whose handling raised
@@ -143,6 +146,8 @@ class Assistant:
         for running in list(self.running.values()):
             with contextlib.suppress(asyncio.CancelledError, Exception):
                 await running.task
+        if self._instruction_tasks:  # ended just before the stop: their end hooks finish
+            await asyncio.gather(*self._instruction_tasks, return_exceptions=True)
         for errand in list(self._errands):
             errand.cancel()
         if self._errands:
@@ -224,6 +229,8 @@ class Assistant:
         for hook in self._on_start:
             await hook(stm)
         task = asyncio.create_task(self._run(runner, stm), name=stm.instruction_id)
+        self._instruction_tasks.add(task)
+        task.add_done_callback(self._instruction_tasks.discard)
         self.running[stm.instruction_id] = Running(stm, task, reasoner)
         return stm
 

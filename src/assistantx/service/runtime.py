@@ -122,6 +122,7 @@ class ServiceRuntime:
         stack.callback(disk_cache.use_directory, None)
         self.metrics = ServiceMetrics(self.journal)
         self.metrics.watch_loop(self.loop_lag)
+        self.metrics.watch_streams(lambda: len(self.hub))
         self.auth = build_authority(
             s.operator_token.get_secret_value() if s.operator_token else None,
             s.tokens.get_secret_value() if s.tokens else None,
@@ -232,13 +233,9 @@ class ServiceRuntime:
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
             await start_matrix(stack, self.matrix, self.assistant)
-        stack.push_async_callback(self._stop)
-        self.loop_lag.start()
-        stack.push_async_callback(self.loop_lag.stop)
-        self.retention = Retention(self.journal, s.journal_retention_days)
-        self.retention.start()
-        stack.push_async_callback(self.retention.stop)
-        # Before anything resumes: a resumed instruction is surveyed like a new one.
+        # Before anything resumes: a resumed instruction is surveyed like a new one. Opened
+        # before _stop is pushed, so it closes after the assistant stopped: an instruction
+        # that ends during the stop still records its survey (it hit a closed store).
         self.feedback = await start_feedback(
             stack,
             assistant=self.assistant,
@@ -246,6 +243,12 @@ class ServiceRuntime:
             map_yaml=self.map_yaml,
             anchors_yaml=s.map_anchors,
         )
+        stack.push_async_callback(self._stop)
+        self.loop_lag.start()
+        stack.push_async_callback(self.loop_lag.stop)
+        self.retention = Retention(self.journal, s.journal_retention_days)
+        self.retention.start()
+        stack.push_async_callback(self.retention.stop)
         await self._resume()
         await self.durability.resume_give_backs(set(self.sim.world.locker_contents()))
         self.admission.start()

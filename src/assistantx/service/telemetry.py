@@ -146,6 +146,13 @@ class ServiceMetrics:
             registry=self.registry,
         ).set_function(monitor.max_lag_s)
 
+    def watch_streams(self, open_streams: Callable[[], int]) -> None:
+        Gauge(
+            "assistantx_event_streams",
+            "live event streams (SSE) subscribed to the journal's events",
+            registry=self.registry,
+        ).set_function(lambda: float(open_streams()))
+
     def count_skipped(self, *sources: SkippedEvents) -> None:
         """Expose the inbound events ``sources`` skipped (``core.isolation``)."""
         self._skipped_sources.extend(sources)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import asyncio
 from pathlib import Path
 
+import pytest
 from pydantic import SecretStr
 
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
@@ -12,6 +13,7 @@ from assistantx.adapters.messenger.matrix import MatrixConfig, MatrixMessenger, 
 from assistantx.core.clock import SimClock
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.store.journal import Journal
+from helpers.eventually import eventually
 
 
 async def test_builtin_messenger_starts_and_stops_twice(tmp_path: Path) -> None:
@@ -32,7 +34,9 @@ async def test_builtin_messenger_starts_and_stops_twice(tmp_path: Path) -> None:
         journal.close()
 
 
-async def test_matrix_messenger_tracks_its_poller_and_stops_twice(tmp_path: Path) -> None:
+async def test_matrix_messenger_tracks_its_poller_and_stops_twice(
+    tmp_path: Path, caplog: pytest.LogCaptureFixture
+) -> None:
     """Pull mode against a homeserver that is not there: the poller keeps retrying in its
     task until the messenger stops, which ends it."""
     config = MatrixConfig(
@@ -50,14 +54,19 @@ async def test_matrix_messenger_tracks_its_poller_and_stops_twice(tmp_path: Path
     messenger = MatrixMessenger(config, store)
     messenger.connect_inbox(asyncio.Queue[InboundMessage]())
     try:
-        for _ in range(2):
+        for round_ in range(2):
             await messenger.start()
             await messenger.start()
             poller = messenger.poller
             assert poller is not None and poller.started
             polling = poller.tasks
             assert len(polling) == 1
-            await asyncio.sleep(0.05)  # the first /sync fails: it backs off, still running
+            # The first /sync fails (nothing listens there): it backs off, still running.
+            await eventually(
+                lambda: [r for r in caplog.records if "/sync failed" in r.getMessage()],
+                until=lambda failed, seen=round_: len(failed) > seen,
+                what="the poller's first failed /sync",
+            )
             assert not any(task.done() for task in polling)
             await messenger.stop()
             await messenger.stop()

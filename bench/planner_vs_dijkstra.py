@@ -1,0 +1,115 @@
+"""The planner against scipy's full single-source Dijkstra on the same graph, side by side in
+one process: for each map, seeded start/goal pairs in the largest free component, the CPU
+time of ``GridPlanner.plan`` (A* in C where built, smoothing included), of the A* search
+alone, and of
+``scipy.sparse.csgraph.dijkstra`` from the same start over the whole map's graph (built once
+beforehand, not timed), and whether both found the same cost.
+
+Target (issue 26): the planner's median at most 0.3x the full Dijkstra's on every map.
+
+Run: python bench/planner_vs_dijkstra.py [--pairs 15] [--maps office depot warehouse tb3_sandbox]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy.ndimage import label
+from scipy.sparse.csgraph import dijkstra
+
+from assistantx.nav import grid_astar
+from assistantx.nav.costmap import Costmap
+from assistantx.nav.occupancy_map import load_map
+from assistantx.nav.planner import GridPlanner, PlannerParams, costmap_graph
+
+REPO = Path(__file__).resolve().parents[1]
+TARGET_RATIO = 0.3
+
+
+def map_path(name: str) -> Path:
+    return (
+        REPO / "maps" / "office.yaml" if name == "office" else REPO / "maps/nav2" / f"{name}.yaml"
+    )
+
+
+def compare(name: str, pairs: int, seed: int) -> dict[str, object]:
+    grid = load_map(map_path(name))
+    costmap = Costmap.inflate(grid)
+    params = PlannerParams()
+    planner = GridPlanner(costmap, params)
+    graph, ids = costmap_graph(costmap, params.cost_penalty)
+    labels, _ = label(costmap.traversable)
+    largest = int(np.argmax(np.bincount(labels.ravel())[1:])) + 1
+    clear = np.argwhere((labels == largest) & (costmap.costs == 0))
+    rng = np.random.default_rng(seed)
+    plan_s: list[float] = []
+    search_s: list[float] = []
+    full_s: list[float] = []
+    worst_rel = 0.0
+    for _ in range(pairs):
+        a, b = clear[rng.integers(0, len(clear), 2)]
+        start = tuple(float(v) for v in grid.cell_to_world(a[1], a[0]))
+        goal = tuple(float(v) for v in grid.cell_to_world(b[1], b[0]))
+        t0 = time.process_time()
+        path = planner.plan((start[0], start[1]), (goal[0], goal[1]))
+        plan_s.append(time.process_time() - t0)
+        if grid_astar.available():  # the search alone: no start/goal checks, no smoothing
+            t0 = time.process_time()
+            grid_astar.search(
+                costmap.costs, grid.resolution, params.cost_penalty, (a[0], a[1]), (b[0], b[1])
+            )
+            search_s.append(time.process_time() - t0)
+        t0 = time.process_time()
+        dist = dijkstra(graph, indices=int(ids[a[0], a[1]]))
+        full_s.append(time.process_time() - t0)
+        reference = float(dist[ids[b[0], b[1]]])
+        worst_rel = max(worst_rel, abs(path.cost - reference) / max(reference, 1e-12))
+    plan_ms, full_ms = statistics.median(plan_s) * 1e3, statistics.median(full_s) * 1e3
+    return {
+        "map": name,
+        "cells": int(costmap.costs.size),
+        "pairs": pairs,
+        "plan_median_ms": round(plan_ms, 1),
+        "plan_max_ms": round(max(plan_s) * 1e3, 1),
+        "dijkstra_median_ms": round(full_ms, 1),
+        "ratio": round(plan_ms / full_ms, 3),
+        "search_only_ratio": round(statistics.median(search_s) * 1e3 / full_ms, 3)
+        if search_s
+        else None,
+        "max_cost_rel_diff": worst_rel,
+    }
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--pairs", type=int, default=15)
+    parser.add_argument("--seed", type=int, default=7)
+    parser.add_argument(
+        "--maps", nargs="+", default=["office", "depot", "warehouse", "tb3_sandbox"]
+    )
+    args = parser.parse_args()
+    rows = []
+    for name in args.maps:
+        row = compare(name, args.pairs, args.seed)
+        rows.append(row)
+        print(
+            f"{name:12} plan median {row['plan_median_ms']:7.1f} ms (max {row['plan_max_ms']})"
+            f"  full Dijkstra {row['dijkstra_median_ms']:7.1f} ms  ratio {row['ratio']}"
+            f" (search alone {row['search_only_ratio']})"
+            f"  cost diff {row['max_cost_rel_diff']:.1e}"
+        )
+    ok = all(
+        float(str(r["ratio"])) <= TARGET_RATIO and float(str(r["max_cost_rel_diff"])) <= 1e-9
+        for r in rows
+    )
+    summary = {"compiled_search": grid_astar.available(), "maps": rows, "all_ok": ok}
+    print(json.dumps(summary))
+
+
+if __name__ == "__main__":
+    main()
