@@ -9,24 +9,7 @@ import pytest
 
 from assistantx.store.journal import Journal
 
-BACKENDS = ["sqlite", pytest.param("postgres", marks=pytest.mark.postgres)]
-
 OpenJournal = Callable[[], Journal]
-
-
-@pytest.fixture(params=BACKENDS)
-def backend(request: pytest.FixtureRequest) -> str:
-    name: str = request.param
-    return name
-
-
-@pytest.fixture
-def database_url(backend: str, request: pytest.FixtureRequest) -> str | None:
-    """None for SQLite; a fresh PostgreSQL database's URL otherwise."""
-    if backend == "sqlite":
-        return None
-    url: str = request.getfixturevalue("postgres_url")
-    return url
 
 
 @pytest.fixture

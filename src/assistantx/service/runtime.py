@@ -112,7 +112,7 @@ class ServiceRuntime:
         if self.data_lock is None or not self.data_lock.held:
             self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
             stack.callback(self.data_lock.release)
-        self.journal = Journal.open(data_dir / JOURNAL_FILE)
+        self.journal = Journal.open(data_dir / JOURNAL_FILE, database_url=s.database)
         stack.callback(self.journal.close)
         # The map's distance transforms, kept by content hash: a second start reads them.
         disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
@@ -248,6 +248,7 @@ class ServiceRuntime:
             stack,
             assistant=self.assistant,
             journal_file=data_dir / JOURNAL_FILE,
+            database_url=s.database,
             map_yaml=self.map_yaml,
             anchors_yaml=s.map_anchors,
         )
