@@ -45,6 +45,7 @@ from assistantx.store.connection import (
     is_postgres_url,
 )
 from assistantx.store.journal._schema import JOURNAL_SCHEMA
+from assistantx.store.leases import Lease, fence
 from assistantx.store.postgres_store import PostgresStore, connect_postgres, redact
 from assistantx.store.sqlite_store import SchemaError, SqliteStore, connect
 
@@ -114,6 +115,7 @@ class Journal:
         self._conn: Any = reader  # reads, on the caller's thread
         self.path = writer.path
         self.where = writer.where  # the file, or the database's URL without its password
+        self._fence: Callable[[Connection], None] | None = None
 
     @classmethod
     def open(cls, path: Path, *, database_url: str | None = None) -> Journal:
@@ -158,13 +160,33 @@ class Journal:
         self.writer.close()
         self._conn.close()
 
+    def hold(self, lease: Lease | None) -> None:
+        """Every write from now on runs under ``lease``: refused with LeaseLostError (and
+        nothing of it written) once another holder took the office (``store.leases``);
+        None writes without a lease again."""
+        if lease is None:
+            self._fence = None
+        else:
+            self._fence = fence(lease, postgres=isinstance(self.writer, PostgresStore))
+
+    def _fenced(self, fn: Callable[[Connection], T]) -> Callable[[Connection], T]:
+        check = self._fence
+        if check is None:
+            return fn
+
+        def write(db: Connection) -> T:
+            check(db)
+            return fn(db)
+
+        return write
+
     def write(self, fn: Callable[[Connection], T]) -> T:
         """Run ``fn`` in the writer's transaction and wait until it is committed."""
-        return self.writer.call(fn)
+        return self.writer.call(self._fenced(fn))
 
     async def awrite(self, fn: Callable[[Connection], T]) -> T:
         """Like ``write``, but the event loop serves others while the group commits."""
-        return await self.writer.acall(fn)
+        return await self.writer.acall(self._fenced(fn))
 
     @contextmanager
     def transaction(self) -> Iterator[Connection]:
