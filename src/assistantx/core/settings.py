@@ -30,8 +30,8 @@ class Settings(BaseSettings):
     data_dir: Path = Field(default=Path("data"), description="journal, snapshots, keys")
     database_url: SecretStr | None = Field(
         default=None,
-        description="postgresql://user:password@host:port/db: the journal (and surveys) on"
-        " PostgreSQL; unset: SQLite in the data folder",
+        description="postgresql://user:password@host:port/db: the journal, surveys and Matrix"
+        " state on PostgreSQL; unset: SQLite in the data folder",
     )
     results_dir: Path = Field(default=Path("results"), description="evaluation run folders")
 

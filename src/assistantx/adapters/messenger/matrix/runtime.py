@@ -98,4 +98,6 @@ def build_matrix_runtime(
         raise MessengerError("ASSISTANTX_MESSENGER=matrix needs ASSISTANTX_MATRIX_CONFIG (a YAML)")
     config = load_matrix_config(settings.matrix_config)
     store_path = settings.matrix_store or settings.data_dir / DEFAULT_STORE_NAME
-    return matrix_runtime(config, SqliteEventStore(store_path), transcript=transcript)
+    # With ASSISTANTX_DATABASE_URL the bot's state goes to the journal's PostgreSQL.
+    store = SqliteEventStore(store_path, database_url=settings.database)
+    return matrix_runtime(config, store, transcript=transcript)
