@@ -178,3 +178,38 @@ def test_a_database_that_cannot_be_reached_is_a_clear_error_without_its_password
         Journal.open(tmp_path / "unused", database_url=url)
     assert "secret" not in str(raised.value)
     assert str(raised.value).startswith("postgresql://lee@127.0.0.1:")
+
+
+def test_memory_updates_snapshots_chats_and_cancels(open_journal: OpenJournal) -> None:
+    journal = open_journal()
+    journal.record_memory_update(1.0, "ins-1", {"op": "available", "person": "lee"})
+    journal.put_memory_snapshot("memory", {"graph": 1})
+    journal.record_memory_update(2.0, None, {"op": "owns", "person": "zhang"})
+    snapshot = journal.state("memory")
+    assert snapshot is not None and snapshot["graph"] == 1
+    assert journal.memory_updates_after(snapshot["through"]) == [{"op": "owns", "person": "zhang"}]
+    assert len(journal.memory_updates()) == 2
+    journal.put_states({"world": {"robot": "dock"}, "sim": {"t": 1.5}})
+    assert journal.state("sim") == {"t": 1.5} and journal.state("none") is None
+
+    journal.create_instruction("ins-1", "lee", "t", 1.0)
+    journal.request_cancel("ins-1")
+    record = journal.instruction("ins-1")
+    assert record is not None and record.cancel_requested
+    journal.set_status("ins-1", "cancelled")
+    assert journal.count_by_status() == {"cancelled": 1}
+    for n, chat in enumerate(("lee", "zhang", "lee")):
+        message = OutboundMessage(chat=ChatRef(kind="dm", id=chat), text=f"m{n}",
+                                  instruction_id="ins-1")  # fmt: skip
+        journal.record_outbound(message, "assistant", 10.0 + n)
+    assert [(c.chat.id, c.messages, c.last_time) for c in journal.chats()] == [
+        ("lee", 2, 12.0),
+        ("zhang", 1, 11.0),
+    ]
+    assert [m.text for m in journal.messages_of("ins-1")] == ["m0", "m1", "m2"]
+    for step in range(3):
+        journal.append_event(
+            TraceEvent(instruction_id="ins-1", kind="observation", time=5.0 + step)
+        )
+    first = journal.events("ins-1")[0].seq
+    assert journal.event_seq_before(6.0) == first and journal.last_event_seq() == first + 2
