@@ -33,6 +33,15 @@ class Settings(BaseSettings):
         description="postgresql://user:password@host:port/db: the journal, surveys and Matrix"
         " state on PostgreSQL; unset: SQLite in the data folder",
     )
+    lease_ttl_s: float = Field(
+        default=9.0,
+        gt=0,
+        description="with a database URL: how long the office's lease lasts unrenewed (a"
+        " standby replica takes over a killed one after at most this long)",
+    )
+    replica_id: str | None = Field(
+        default=None, description="this replica's name in the leases (default: host-pid-random)"
+    )
     results_dir: Path = Field(default=Path("results"), description="evaluation run folders")
 
     # -- the reasoner ---------------------------------------------------------------------
