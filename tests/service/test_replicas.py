@@ -4,13 +4,19 @@ and takes the office over (resuming its unfinished instruction) when the first o
 from __future__ import annotations
 
 import asyncio
+import subprocess
+import sys
+import time
 from pathlib import Path
 from typing import Any
 
+import httpx
 import pytest
 
-from helpers.eventually import eventually
+from helpers.eventually import eventually, eventually_sync
+from helpers.processes import wait_ready
 from service.inprocess import serving_runtime
+from service.server import OPERATOR, base_env, free_port, serve
 from service.test_codes_after_restart import SLOW_LENDER, submit
 
 pytestmark = pytest.mark.postgres
@@ -58,3 +64,53 @@ async def test_a_standby_takes_the_office_over_at_a_clean_shutdown_and_resumes(
     await b
     assert iid in seen["resumed"] and seen["status"] in ("queued", "running")
     assert seen["token"] == first.token + 1
+
+
+@pytest.mark.slow
+def test_a_killed_replica_is_replaced_by_the_standby_within_the_lease(
+    tmp_path: Path, postgres_url: str
+) -> None:
+    """Two real ``assistantx serve`` processes: kill -9 the one that runs the office while
+    an instruction waits for a colleague; the standby is ready within the lease's time (plus
+    its own start) and runs the instruction on."""
+    env = {
+        "ASSISTANTX_DATABASE_URL": postgres_url,
+        "ASSISTANTX_LEASE_TTL_S": "2",
+        "ASSISTANTX_ROBOT": "sim",
+        "ASSISTANTX_SIM_HANDOVER_DELAY_S": "3600",
+    }
+    a = serve(tmp_path / "a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
+    b_port = free_port()
+    b_log = tmp_path / "b.log"
+    b_command = [sys.executable, "-m", "assistantx", "serve", "--port", str(b_port)]
+    b_env = base_env(tmp_path / "b", ASSISTANTX_REPLICA_ID="replica-b", **env)
+    with b_log.open("wb") as out:
+        b = subprocess.Popen(b_command, env=b_env, stdout=out, stderr=subprocess.STDOUT)
+    try:
+        headers = {"Authorization": f"Bearer {OPERATOR}"}
+        with httpx.Client(base_url=a.url, headers=headers, timeout=10) as api:
+            r = api.post(
+                "/v1/instructions", json={"requester": "lee", "text": "Please bring me a stapler."}
+            )
+            assert r.status_code == 202, r.text
+            iid = r.json()["id"]
+        eventually_sync(
+            b_log.read_text,
+            until=lambda log: "waiting as a standby" in log,
+            what="replica B to wait as a standby",
+        )
+        assert b.poll() is None
+        a.kill()  # SIGKILL: no shutdown, no release; the lease expires
+        killed = time.monotonic()
+        wait_ready(b, f"http://127.0.0.1:{b_port}/readyz", timeout_s=60)
+        took = time.monotonic() - killed
+        with httpx.Client(base_url=f"http://127.0.0.1:{b_port}", headers=headers) as api:
+            record = api.get(f"/v1/instructions/{iid}").json()
+        assert record["status"] in ("queued", "running"), record
+        assert "taken over by this replica" in b_log.read_text()
+        assert took < 30, f"the standby took {took:.1f} s"
+    finally:
+        a.stop()
+        if b.poll() is None:
+            b.terminate()
+            b.wait(20)

@@ -54,11 +54,11 @@ class OfficeLease:
             )
             if lease is not None:
                 if waiting:
-                    logger.info("office %s taken over by this replica", self.office)
+                    logger.warning("office %s taken over by this replica", self.office)
                 self.lease = lease
                 return lease
             if not waiting:
-                logger.info(
+                logger.warning(
                     "office %s is run by another replica; waiting as a standby", self.office
                 )
                 waiting = True
