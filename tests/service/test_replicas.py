@@ -46,6 +46,8 @@ async def test_a_standby_takes_the_office_over_at_a_clean_shutdown_and_resumes(
     async with serving_runtime(tmp_path / "a", **shared, replica_id="replica-a") as (api, a):
         assert a.office_lease is not None and a.office_lease.lease is not None
         first = a.office_lease.lease
+        replica = (await api.get("/readyz")).json()["replica"]
+        assert (replica["id"], replica["fencing_token"]) == ("replica-a", first.token)
         iid = await submit(api)
         b = asyncio.create_task(replica_b(iid))
         # B tries while A renews: A's lease is extended twice and B has not started.

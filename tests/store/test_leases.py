@@ -68,6 +68,9 @@ def test_a_held_office_is_not_given_to_another_until_its_lease_expires(
     clock.now += TTL_S * 0.9  # past the first expiry, not the renewed one
     assert b.acquire("floor-3", "replica-b", TTL_S) is None
     assert b.acquire("floor-2", "replica-b", TTL_S) is not None  # other offices are free
+    clock.now += TTL_S  # A renews late, but nobody took the office meanwhile: still A's
+    late = a.renew(renewed, TTL_S)
+    assert late.token == 1 and late.expires_at == clock.now + TTL_S
 
 
 def test_a_paused_replica_cannot_write_after_another_took_its_office(

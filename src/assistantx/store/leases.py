@@ -1,16 +1,19 @@
 """Leases with fencing tokens: which replica runs which office, and writes only it may make.
 
-A row per office: its holder, its fencing token and when the lease expires. ``acquire`` takes
-a free or expired lease (the token goes up by one) or extends the caller's own; ``renew``
-extends it while it is still the caller's; ``release`` frees it and keeps the row, so the
-token never goes back (a deleted row would restart at 1, and the holder of an old token 1
-could write again). The token is what protects the data, not the expiry: a replica paused
-past its expiry (a long GC, a stopped VM, a network cut) does not know it lost the office, so
-every write it makes under the lease carries the token, and ``fence`` refuses one whose token
-is no longer the office's (Kleppmann's fencing tokens). ``Journal.hold(lease)`` adds that
-check to every journal write, in the write's own transaction; on PostgreSQL the check reads
-the row ``FOR SHARE``, so a take-over waits for a write already checked to commit and the
-new holder reads everything the old one wrote.
+A row per office: its holder, its fencing token and when the lease expires. ``acquire``
+takes a free or expired lease (the token goes up by one) or extends the caller's own;
+``renew`` extends it while it is still the caller's (also just past its expiry when nobody
+took it meanwhile: the token unchanged says nobody else held the office, so nothing was
+lost); ``release`` frees it and keeps the row, so the token never goes back (a deleted row
+would restart at 1, and the holder of an old token 1 could write again).
+
+The token is what protects the data, not the expiry: a replica paused past its expiry (a long
+GC, a stopped VM, a network cut) does not know it lost the office, so every write it makes
+under the lease carries the token, and ``fence`` refuses one whose token is no longer the
+office's (Kleppmann's fencing tokens). ``Journal.hold(lease)`` adds that check to every
+journal write, in the write's own transaction; on PostgreSQL the check reads the row ``FOR
+SHARE``, so a take-over waits for a write already checked to commit and the new holder reads
+everything the old one wrote.
 
 Time is the caller's clock (``clock``, epoch seconds): replicas of one deployment are
 expected to keep their clocks in step (NTP); a lease of tens of seconds tolerates the
@@ -92,10 +95,10 @@ class Leases:
         return self._db.call(_acquire(office, holder, now, now + ttl_s))
 
     def renew(self, lease: Lease, ttl_s: float) -> Lease:
-        """``lease`` extended by ``ttl_s`` from now; LeaseLostError once it expired or was
-        taken (a holder that lost its lease must acquire it again, with a new token)."""
-        now = self._clock()
-        return self._db.call(_renew(lease, now, now + ttl_s))
+        """``lease`` extended by ``ttl_s`` from now; LeaseLostError once another took it or
+        it was released (a holder that lost its lease must acquire it again, with a new
+        token)."""
+        return self._db.call(_renew(lease, self._clock() + ttl_s))
 
     def release(self, lease: Lease) -> None:
         """Frees the office at once (a clean shutdown); nothing when it is no longer ours."""
@@ -139,12 +142,12 @@ def _acquire(
     return write
 
 
-def _renew(lease: Lease, now: float, expires_at: float) -> Callable[[Connection], Lease]:
+def _renew(lease: Lease, expires_at: float) -> Callable[[Connection], Lease]:
     def write(db: Connection) -> Lease:
         row = db.execute(
             "UPDATE leases SET expires_at=? WHERE office=? AND holder=? AND token=?"
-            " AND expires_at > ? RETURNING office, holder, token, expires_at",
-            (expires_at, lease.office, lease.holder, lease.token, now),
+            " RETURNING office, holder, token, expires_at",
+            (expires_at, lease.office, lease.holder, lease.token),
         ).fetchone()
         if row is None:
             raise LeaseLostError(f"the lease on office {lease.office!r} was lost")
