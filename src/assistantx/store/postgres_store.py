@@ -68,21 +68,35 @@ def _to_pyformat(sql: str) -> str:
 
 class PgConnection:
     """A psycopg connection in autocommit mode: a statement outside ``BEGIN`` commits alone;
-    ``BEGIN``/``COMMIT`` sent as statements group them, as on the SQLite connection."""
+    ``BEGIN``/``COMMIT`` sent as statements group them, as on the SQLite connection.
 
-    def __init__(self, conn: psycopg.Connection[Row]) -> None:
+    A connection the server dropped (a restart, a fail-over, an idle timeout) fails the
+    statement that finds it broken; the next statement outside a transaction connects again."""
+
+    def __init__(self, conn: psycopg.Connection[Row], url: str) -> None:
         self.raw = conn
+        self._url = url
+        self._closed = False
 
     def execute(self, sql: str, parameters: Sequence[Any] = (), /) -> psycopg.Cursor[Row]:
+        if self.raw.broken and not self._closed:
+            logger.warning("%s: the connection was lost; connecting again", redact(self._url))
+            self.raw = _connect_raw(self._url)
         if parameters:
             return self.raw.execute(_to_pyformat(sql), tuple(parameters))
         return self.raw.execute(sql)
 
     @property
     def in_transaction(self) -> bool:
-        return self.raw.info.transaction_status != pq.TransactionStatus.IDLE
+        # UNKNOWN (a broken connection) is no transaction: there is nothing to roll back.
+        return self.raw.info.transaction_status in (
+            pq.TransactionStatus.INTRANS,
+            pq.TransactionStatus.INERROR,
+            pq.TransactionStatus.ACTIVE,
+        )
 
     def close(self) -> None:
+        self._closed = True
         self.raw.close()
 
 
@@ -98,13 +112,14 @@ def redact(url: str) -> str:
     return f"postgresql://{user}{host}{':' + str(port) if port else ''}/{name}"
 
 
+def _connect_raw(url: str) -> psycopg.Connection[Row]:
+    conninfo = make_conninfo(url, connect_timeout=CONNECT_TIMEOUT_S, application_name="assistantx")
+    return psycopg.connect(conninfo, autocommit=True, row_factory=_row_factory)
+
+
 def connect_postgres(url: str) -> PgConnection:
     """A connection to ``url`` (``postgresql://user:password@host:port/db``), autocommit."""
-    conninfo = make_conninfo(url, connect_timeout=CONNECT_TIMEOUT_S, application_name="assistantx")
-    conn: psycopg.Connection[Row] = psycopg.connect(
-        conninfo, autocommit=True, row_factory=_row_factory
-    )
-    return PgConnection(conn)
+    return PgConnection(_connect_raw(url), url)
 
 
 class PostgresStore(SqliteStore):

@@ -213,3 +213,27 @@ def test_memory_updates_snapshots_chats_and_cancels(open_journal: OpenJournal) -
         )
     first = journal.events("ins-1")[0].seq
     assert journal.event_seq_before(6.0) == first and journal.last_event_seq() == first + 2
+
+
+@pytest.mark.postgres
+def test_a_journal_connects_again_after_the_server_dropped_its_connections(
+    postgres_url: str, tmp_path: Path
+) -> None:
+    """A database restart or fail-over drops every connection: the write and the read that
+    find theirs broken fail, the next ones connect again (the writer thread lives on)."""
+    import psycopg
+
+    journal = Journal.open(tmp_path / "unused", database_url=postgres_url)
+    journal.create_instruction("ins-1", "lee", "t", 1.0)
+    with psycopg.connect(postgres_url, autocommit=True) as admin:
+        admin.execute(
+            "SELECT pg_terminate_backend(pid) FROM pg_stat_activity"
+            " WHERE datname = current_database() AND pid <> pg_backend_pid()"
+        )
+    with pytest.raises(psycopg.OperationalError):
+        journal.create_instruction("ins-2", "lee", "t", 2.0)
+    with pytest.raises(psycopg.OperationalError):
+        journal.instruction("ins-1")
+    journal.create_instruction("ins-3", "lee", "t", 3.0)
+    assert [r.id for r in journal.instructions()] == ["ins-3", "ins-1"]
+    journal.close()
