@@ -9,6 +9,7 @@ PostgreSQL refuses to run as root: as root, the cluster belongs to and runs as `
 
 from __future__ import annotations
 
+import ctypes
 import itertools
 import os
 import pwd
@@ -80,6 +81,15 @@ class Cluster:
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
+PR_SET_PDEATHSIG = 1
+
+
+def _stop_with_parent() -> None:
+    """In the child, before exec (after the switch of user): Linux sends the server SIGINT (a
+    fast shutdown) when the test process dies, also by kill -9, so no cluster outlives it."""
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGINT)
+
+
 def start_cluster() -> Cluster:
     binaries = bin_dir()
     if binaries is None:
@@ -104,7 +114,8 @@ def start_cluster() -> Cluster:
     log = (folder / "postgres.log").open("wb")
     process = subprocess.Popen(  # type: ignore[call-overload]
         [binaries / "postgres", "-D", data, "-p", str(port), "-k", folder, *options],
-        stdout=log, stderr=subprocess.STDOUT, cwd=folder, **as_user,
+        stdout=log, stderr=subprocess.STDOUT, cwd=folder, preexec_fn=_stop_with_parent,
+        **as_user,
     )  # fmt: skip
     log.close()
     cluster = Cluster(process, port, folder)
