@@ -40,6 +40,7 @@ async def test_a_standby_takes_the_office_over_at_a_clean_shutdown_and_resumes(
             seen["status"] = (await api.get(f"/v1/instructions/{iid}")).json()["status"]
             assert runtime.office_lease is not None and runtime.office_lease.lease is not None
             seen["token"] = runtime.office_lease.lease.token
+            seen["metrics"] = await lease_series(api)
             b_started.set()
             await b_may_stop.wait()
 
@@ -48,6 +49,11 @@ async def test_a_standby_takes_the_office_over_at_a_clean_shutdown_and_resumes(
         first = a.office_lease.lease
         replica = (await api.get("/readyz")).json()["replica"]
         assert (replica["id"], replica["fencing_token"]) == ("replica-a", first.token)
+        office = a.office.name
+        assert await lease_series(api) == {
+            f'assistantx_office_lease_token{{office="{office}",replica="replica-a"}}': first.token,
+            'assistantx_replica_ready{replica="replica-a"}': 1.0,
+        }
         iid = await submit(api)
         b = asyncio.create_task(replica_b(iid))
         # B tries while A renews: A's lease is extended twice and B has not started.
@@ -66,6 +72,25 @@ async def test_a_standby_takes_the_office_over_at_a_clean_shutdown_and_resumes(
     await b
     assert iid in seen["resumed"] and seen["status"] in ("queued", "running")
     assert seen["token"] == first.token + 1
+    # /metrics on the new holder names it, with the next token: a failover shows as a change.
+    assert seen["metrics"] == {
+        f'assistantx_office_lease_token{{office="{office}",replica="replica-b"}}': first.token + 1,
+        'assistantx_replica_ready{replica="replica-b"}': 1.0,
+    }
+
+
+async def lease_series(api: httpx.AsyncClient) -> dict[str, float]:
+    """The lease token and readiness series of ``/metrics`` (the expiry moves; it is only
+    checked to be there and in the future)."""
+    text = (await api.get("/metrics", headers={"Authorization": f"Bearer {OPERATOR}"})).text
+    series: dict[str, float] = {}
+    for line in text.splitlines():
+        name, _, value = line.rpartition(" ")
+        if name.startswith("assistantx_office_lease_expires_in_seconds{"):
+            assert 0 < float(value) <= TTL_S, line
+        elif name.startswith(("assistantx_office_lease_token{", "assistantx_replica_ready{")):
+            series[name] = float(value)
+    return series
 
 
 @pytest.mark.slow

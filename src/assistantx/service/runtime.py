@@ -131,6 +131,9 @@ class ServiceRuntime:
         stack.callback(disk_cache.use_directory, None)
         self.metrics = ServiceMetrics(self.journal)
         self.metrics.watch_loop(self.loop_lag)
+        if self.office_lease is not None:
+            office_lease = self.office_lease
+            self.metrics.watch_lease(lambda: office_lease.lease, lambda: self.ready)
         self.auth = build_authority(
             s.operator_token.get_secret_value() if s.operator_token else None,
             s.tokens.get_secret_value() if s.tokens else None,
