@@ -4,6 +4,7 @@ and takes the office over (resuming its unfinished instruction) when the first o
 from __future__ import annotations
 
 import asyncio
+import json
 import subprocess
 import sys
 import time
@@ -11,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 import httpx
+import psycopg
 import pytest
 
 from helpers.eventually import eventually, eventually_sync
@@ -136,6 +138,91 @@ def test_a_killed_replica_is_replaced_by_the_standby_within_the_lease(
         assert record["status"] in ("queued", "running"), record
         assert "taken over by this replica" in b_log.read_text()
         assert took < 30, f"the standby took {took:.1f} s"
+    finally:
+        a.stop()
+        if b.poll() is None:
+            b.terminate()
+            b.wait(20)
+
+
+def journal_rows(url: str, sql: str) -> list[tuple[Any, ...]]:
+    with psycopg.connect(url, autocommit=True) as db:
+        return list(db.execute(sql).fetchall())
+
+
+@pytest.mark.slow
+def test_no_message_or_code_goes_out_twice_across_a_failover(
+    tmp_path: Path, postgres_url: str
+) -> None:
+    """kill -9 the holder while a simulated colleague is being asked: the standby takes the
+    instruction over and ends it, and every message and code of it went out exactly once
+    (the shared journal is the count: a resend would be a second row or a second result)."""
+    env = {
+        "ASSISTANTX_DATABASE_URL": postgres_url,
+        "ASSISTANTX_LEASE_TTL_S": "2",
+        "ASSISTANTX_ROBOT": "sim",
+        "ASSISTANTX_SIM_REPLY_DELAY_S": "60",  # 6 s at the default speedup: the kill comes first
+        "ASSISTANTX_SIM_HANDOVER_DELAY_S": "10",
+    }
+    a = serve(tmp_path / "a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
+    b_port = free_port()
+    b_log = tmp_path / "b.log"
+    b_command = [sys.executable, "-m", "assistantx", "serve", "--port", str(b_port)]
+    b_env = base_env(tmp_path / "b", ASSISTANTX_REPLICA_ID="replica-b", **env)
+    with b_log.open("wb") as out:
+        b = subprocess.Popen(b_command, env=b_env, stdout=out, stderr=subprocess.STDOUT)
+    headers = {"Authorization": f"Bearer {OPERATOR}"}
+    try:
+        eventually_sync(
+            b_log.read_text,
+            until=lambda log: "waiting as a standby" in log,
+            what="replica B to wait as a standby",
+            timeout_s=60,
+        )
+        with httpx.Client(base_url=a.url, headers=headers, timeout=10) as api:
+            r = api.post(
+                "/v1/instructions", json={"requester": "lee", "text": "Please bring me a stapler."}
+            )
+            assert r.status_code == 202, r.text
+            iid = r.json()["id"]
+        eventually_sync(
+            lambda: journal_rows(
+                postgres_url,
+                "SELECT count(*) FROM messages WHERE direction='out' AND question_id IS NOT NULL",
+            )[0][0],
+            until=lambda asked: asked > 0,
+            what="replica A to ask a colleague",
+            timeout_s=60,
+        )
+        a.kill()  # SIGKILL while the colleague's answer is pending
+        answers = "SELECT count(*) FROM messages WHERE direction='in'"
+        assert journal_rows(postgres_url, answers) == [(0,)]  # the kill came before the answer
+        wait_ready(b, f"http://127.0.0.1:{b_port}/readyz", timeout_s=60)
+        record = eventually_sync(
+            lambda: httpx.get(
+                f"http://127.0.0.1:{b_port}/v1/instructions/{iid}", headers=headers
+            ).json(),
+            until=lambda r: r["status"] not in ("queued", "running"),
+            what="the instruction to end on replica B",
+            timeout_s=120,
+        )
+        assert record["status"] == "done", record
+        repeated = journal_rows(
+            postgres_url,
+            "SELECT chat_id, text, count(*) FROM messages WHERE direction='out'"
+            " GROUP BY chat_id, text HAVING count(*) > 1",
+        )
+        assert repeated == []
+        assert journal_rows(postgres_url, answers)[0][0] > 0  # B heard the colleague's answer
+        asked = "SELECT chat_id FROM messages WHERE direction='out' AND question_id IS NOT NULL"
+        assert journal_rows(postgres_url, asked) == [("wang",)]  # asked by A, not again by B
+        codes = journal_rows(
+            postgres_url,
+            "SELECT data FROM events WHERE kind='action_result' AND data LIKE '%send_qr%'",
+        )
+        sent = [json.loads(d)["result"] for (d,) in codes]
+        to = [s["action"]["contact"] for s in sent if s["ok"]]
+        assert to and len(to) == len(set(to)), sent  # one code to each person, never a second
     finally:
         a.stop()
         if b.poll() is None:
