@@ -170,7 +170,7 @@ def main() -> None:
             "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
             "ASSISTANTX_ROBOT": "sim",
             "ASSISTANTX_SPEEDUP": "50",
-            "ASSISTANTX_SIM_REPLY_DELAY_S": "300",  # 6 s: kills land while colleagues are asked
+            "ASSISTANTX_SIM_REPLY_DELAY_S": "60",  # 300 makes the questions time out (unachievable)
             "ASSISTANTX_SIM_HANDOVER_DELAY_S": "300",
             "ASSISTANTX_INSTRUCTIONS_PER_MINUTE": "0",
             "PYTHONPATH": str(ROOT / "src"),
