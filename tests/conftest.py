@@ -11,6 +11,12 @@ import pytest
 
 from fakes.fixtures import scripted_llm  # noqa: F401  (the scripted model server, for every folder)
 from helpers.children import descendants
+from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both store backends)
+    backend,
+    database_url,
+    postgres_cluster,
+    postgres_url,
+)
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 

@@ -40,6 +40,7 @@ def test_make_test_installs_synapse_and_chromium_before_the_suite() -> None:
     suite = _index(lines, "-m pytest")
     assert _index(lines, ".ci/install-synapse") < suite
     assert _index(lines, ".ci/install-browser") < suite
+    assert _index(lines, ".ci/install-postgres") < suite
     # It says what it installs, and where: Synapse inside the project.
     announce = lines[_index(lines, "echo") : suite]
     assert any(f"{ROOT}/.cache/synapse-venv" in line for line in announce), announce

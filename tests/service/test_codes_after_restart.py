@@ -50,9 +50,13 @@ async def submit(api: httpx.AsyncClient, text: str = "Please bring me a stapler.
     return str(r.json()["id"])
 
 
-async def test_a_cancelled_deposit_code_is_refused_after_a_restart(tmp_path: Path) -> None:
+async def test_a_cancelled_deposit_code_is_refused_after_a_restart(
+    tmp_path: Path, database_url: str | None
+) -> None:
+    """On both backends: with ASSISTANTX_DATABASE_URL the journal lives in PostgreSQL."""
     data = tmp_path / "data"
-    async with serving_runtime(data, **SLOW_LENDER) as (api, runtime):
+    lender = {**SLOW_LENDER, "database_url": database_url}
+    async with serving_runtime(data, **lender) as (api, runtime):
         sent = code_sent_to(runtime, "wang")
         iid = await submit(api)
         code_id = await asyncio.wait_for(sent, 30)
@@ -60,8 +64,9 @@ async def test_a_cancelled_deposit_code_is_refused_after_a_restart(tmp_path: Pat
         [payload] = [c.payload for c in runtime.sim.codes if c.person == "wang"]
         assert (await api.post(f"/v1/instructions/{iid}/cancel")).status_code == 200
         assert (await ended(api, iid))["status"] == "cancelled"
+    assert (data / "journal.sqlite3").exists() == (database_url is None)
 
-    async with serving_runtime(data, **SLOW_LENDER) as (api, runtime):
+    async with serving_runtime(data, **lender) as (api, runtime):
         scan = await api.post("/v1/locker/scan", json={"code_id": code_id})
         assert scan.status_code == 200, scan.text
         assert (scan.json()["kind"], scan.json()["reason"]) == ("code_rejected", "revoked")

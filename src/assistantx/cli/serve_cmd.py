@@ -8,6 +8,7 @@ first, then the port, and only then the journal (resuming the running instructio
 from __future__ import annotations
 
 import argparse
+import signal
 import socket
 import sys
 
@@ -57,7 +58,14 @@ def _serve(args: argparse.Namespace) -> int:
         lock.release()
         print(f"assistantx serve: cannot listen on {host}:{port}: {exc.strerror}", file=sys.stderr)
         return 1
-    app = create_app(settings, on_ready=announce, data_lock=lock)
+    # A replica that lost its office's lease stops (its writes are refused anyway); the
+    # supervisor that restarts it makes it a standby.
+    app = create_app(
+        settings,
+        on_ready=announce,
+        data_lock=lock,
+        on_lease_lost=lambda: signal.raise_signal(signal.SIGTERM),
+    )
     service_server(app, host, port).run(sockets=[listener])
     return 0
 

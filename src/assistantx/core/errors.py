@@ -27,6 +27,7 @@
     │   └── ModelBehaviorError      the model kept producing invalid output after retries
     ├── LLMError                    the model server failed (HTTP, timeout) after retries
     ├── JournalError                the service's journal file is unusable
+    │   └── LeaseLostError          a write or renewal under a lease another holder took over
     ├── PromptError (ValueError)    a prompt template file that is malformed, or a bad render
     └── DatasetError                a bad base-instruction or task file (names file and entry)
 
@@ -185,6 +186,11 @@ class LLMError(AssistantXError):
 
 class JournalError(AssistantXError):
     """The journal database is unusable (another schema version, a corrupt file)."""
+
+
+class LeaseLostError(JournalError):
+    """A write carried a fencing token that is no longer the office's (another replica took
+    the office over), or a renewal came after the lease was taken or released."""
 
 
 class PromptError(AssistantXError, ValueError):

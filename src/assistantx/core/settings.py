@@ -14,7 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Literal
 
-from pydantic import Field, SecretStr
+from pydantic import Field, SecretStr, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 from assistantx.core.office import DEFAULT_OFFICE
@@ -28,6 +28,20 @@ class Settings(BaseSettings):
     # -- the office and the data directory ---------------------------------------------
     office: Path = Field(default=DEFAULT_OFFICE, description="office YAML file")
     data_dir: Path = Field(default=Path("data"), description="journal, snapshots, keys")
+    database_url: SecretStr | None = Field(
+        default=None,
+        description="postgresql://user:password@host:port/db: the journal, surveys and Matrix"
+        " state on PostgreSQL; unset: SQLite in the data folder",
+    )
+    lease_ttl_s: float = Field(
+        default=9.0,
+        gt=0,
+        description="with a database URL: how long the office's lease lasts unrenewed (a"
+        " standby replica takes over a killed one after at most this long)",
+    )
+    replica_id: str | None = Field(
+        default=None, description="this replica's name in the leases (default: host-pid-random)"
+    )
     results_dir: Path = Field(default=Path("results"), description="evaluation run folders")
 
     # -- the reasoner ---------------------------------------------------------------------
@@ -126,6 +140,20 @@ class Settings(BaseSettings):
     matrix_store: Path | None = Field(
         default=None, description="Matrix inbound event store (default: DATA_DIR/matrix.sqlite3)"
     )
+
+    @field_validator("database_url")
+    @classmethod
+    def _a_postgres_url(cls, value: SecretStr | None) -> SecretStr | None:
+        if value is None or not value.get_secret_value().strip():
+            return None
+        if not value.get_secret_value().startswith(("postgresql://", "postgres://")):
+            raise ValueError("ASSISTANTX_DATABASE_URL must start with postgresql://")
+        return value
+
+    @property
+    def database(self) -> str | None:
+        """The PostgreSQL URL of the journal, or None for SQLite in the data folder."""
+        return self.database_url.get_secret_value() if self.database_url else None
 
     @property
     def llm_enabled(self) -> bool:

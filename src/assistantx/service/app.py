@@ -54,12 +54,14 @@ def create_app(
     *,
     on_ready: Callable[[ServiceRuntime], None] | None = None,
     data_lock: DataDirLock | None = None,
+    on_lease_lost: Callable[[], None] | None = None,
 ) -> FastAPI:
     """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go);
     ``data_lock``: the data folder's lock, when the caller holds it already."""
     settings = settings or Settings()
     runtime = ServiceRuntime(settings, data_lock)
     pushes: list[BaseRoute] = []
+    runtime.on_lease_lost = on_lease_lost  # replicas: another took the office over
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:

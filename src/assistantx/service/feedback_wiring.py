@@ -48,13 +48,14 @@ async def start_feedback(
     *,
     assistant: Assistant,
     journal_file: Path,
+    database_url: str | None = None,
     map_yaml: Path,
     anchors_yaml: Path | None,
 ) -> FeedbackParts:
     """Open the survey store and start the Surveyor on ``assistant``; both stop with
     ``stack`` (the Surveyor first)."""
     office, clock = assistant.parts.office, assistant.clock
-    store = FeedbackStore.open(journal_file)
+    store = FeedbackStore.open(journal_file, database_url=database_url)
     stack.callback(store.close)
     distance = await asyncio.to_thread(map_distance, office, clock, map_yaml, anchors_yaml)
     # Surveys go where the assistant talks to people (Matrix when configured).

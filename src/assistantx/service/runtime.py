@@ -12,9 +12,13 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import os
+import socket
+from collections.abc import Callable
 from contextlib import AsyncExitStack
 from pathlib import Path
 from typing import Any
+from uuid import uuid4
 
 from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
@@ -54,6 +58,7 @@ from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.matrix_wiring import build_matrix, start_matrix
+from assistantx.service.office_lease import OfficeLease
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
@@ -61,6 +66,7 @@ from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
+from assistantx.store.leases import Leases
 
 logger = logging.getLogger(__name__)
 
@@ -99,6 +105,8 @@ class ServiceRuntime:
         self.loop_lag = LoopLagMonitor()
         self.ready = False
         self.resumed: list[str] = []
+        self.office_lease: OfficeLease | None = None  # with a database URL: the office's lease
+        self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
         # here (create_app fails fast on a bad one); it is built in start, with the rest.
         self.matrix_setup: MatrixSetup | None = (
@@ -115,14 +123,21 @@ class ServiceRuntime:
         if self.data_lock is None or not self.data_lock.held:
             self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
             stack.callback(self.data_lock.release)
-        self.journal = Journal.open(data_dir / JOURNAL_FILE)
-        stack.callback(self.journal.close)
+        if s.database is not None:  # replicas share the database: run only under the lease
+            await self._hold_office(stack, data_dir, s.database)
+        self.journal = Journal.open(data_dir / JOURNAL_FILE, database_url=s.database)
+        stack.callback(self.journal.close)  # before the lease's release: its last writes land
+        if self.office_lease is not None:
+            self.office_lease.hold(self.journal)
         # The map's distance transforms, kept by content hash: a second start reads them.
         disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
         stack.callback(disk_cache.use_directory, None)
         self.metrics = ServiceMetrics(self.journal)
         self.metrics.watch_loop(self.loop_lag)
         self.metrics.watch_streams(lambda: len(self.hub))
+        if self.office_lease is not None:
+            office_lease = self.office_lease
+            self.metrics.watch_lease(lambda: office_lease.lease, lambda: self.ready)
         self.auth = build_authority(
             s.operator_token.get_secret_value() if s.operator_token else None,
             s.tokens.get_secret_value() if s.tokens else None,
@@ -240,6 +255,7 @@ class ServiceRuntime:
             stack,
             assistant=self.assistant,
             journal_file=data_dir / JOURNAL_FILE,
+            database_url=s.database,
             map_yaml=self.map_yaml,
             anchors_yaml=s.map_anchors,
         )
@@ -253,6 +269,24 @@ class ServiceRuntime:
         await self.durability.resume_give_backs(set(self.sim.world.locker_contents()))
         self.admission.start()
         self.ready = True
+
+    async def _hold_office(self, stack: AsyncExitStack, data_dir: Path, url: str) -> None:
+        leases = Leases.open(data_dir / JOURNAL_FILE, database_url=url)
+        stack.callback(leases.close)
+        holder = (
+            self.settings.replica_id or f"{socket.gethostname()}-{os.getpid()}-{uuid4().hex[:6]}"
+        )
+        self.office_lease = OfficeLease(
+            leases, self.office.name, holder, self.settings.lease_ttl_s, self._lease_lost
+        )
+        await self.office_lease.acquire()
+        stack.push_async_callback(self.office_lease.stop)  # hands the office over
+        self.office_lease.start()
+
+    def _lease_lost(self) -> None:
+        self.ready = False
+        if self.on_lease_lost is not None:
+            self.on_lease_lost()
 
     def _reasoner(self) -> tuple[ReasonerFactory, str]:
         s = self.settings

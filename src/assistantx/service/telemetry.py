@@ -12,6 +12,7 @@ only their own traffic, and registering the same names twice cannot collide.
 
 from __future__ import annotations
 
+import time
 from collections import Counter as Tally
 from collections.abc import Callable, Iterable, Iterator, Sequence
 
@@ -23,6 +24,7 @@ from assistantx.core.isolation import SkippedEvents
 from assistantx.core.trace import TraceStep
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.store.journal import Journal
+from assistantx.store.leases import Lease
 
 CONTENT_TYPE = CONTENT_TYPE_PLAIN_0_0_4  # the text format every Prometheus server reads
 LATENCY_BUCKETS = (0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0, 30.0, 60.0)
@@ -67,6 +69,59 @@ class _SkippedInbound:
         for path in sorted(totals):
             family.add_metric([path], float(totals[path]))
         return [family]
+
+
+class _OfficeLease:
+    """Which replica runs which office, read at scrape time from the lease this replica holds.
+
+    ``assistantx_office_lease_token{office, replica}`` is the fencing token (it only grows, so a
+    change tells a failover happened), ``assistantx_office_lease_expires_in_seconds`` how long
+    the lease lasts without a renewal (near zero or negative: the renewals stall) and
+    ``assistantx_replica_ready{replica}`` whether the assistant runs. A standby serves no HTTP,
+    so only the holder is scraped; without a database URL there is no lease and no series."""
+
+    def __init__(
+        self,
+        lease: Callable[[], Lease | None],
+        ready: Callable[[], bool],
+        clock: Callable[[], float],
+    ) -> None:
+        self._lease = lease
+        self._ready = ready
+        self._clock = clock
+
+    def describe(self) -> Iterable[Metric]:
+        return self._families()
+
+    def collect(self) -> Iterable[Metric]:
+        token, expires, ready = self._families()
+        lease = self._lease()
+        if lease is not None:
+            labels = [lease.office, lease.holder]
+            token.add_metric(labels, float(lease.token))
+            expires.add_metric(labels, lease.expires_at - self._clock())
+            ready.add_metric([lease.holder], 1.0 if self._ready() else 0.0)
+        return [token, expires, ready]
+
+    @staticmethod
+    def _families() -> list[GaugeMetricFamily]:
+        return [
+            GaugeMetricFamily(
+                "assistantx_office_lease_token",
+                "fencing token of the office lease this replica holds",
+                labels=["office", "replica"],
+            ),
+            GaugeMetricFamily(
+                "assistantx_office_lease_expires_in_seconds",
+                "seconds until the office lease expires unless renewed",
+                labels=["office", "replica"],
+            ),
+            GaugeMetricFamily(
+                "assistantx_replica_ready",
+                "1 while this replica runs the assistant",
+                labels=["replica"],
+            ),
+        ]
 
 
 class _WithoutCreated:
@@ -152,6 +207,15 @@ class ServiceMetrics:
             "live event streams (SSE) subscribed to the journal's events",
             registry=self.registry,
         ).set_function(lambda: float(open_streams()))
+
+    def watch_lease(
+        self,
+        lease: Callable[[], Lease | None],
+        ready: Callable[[], bool],
+        clock: Callable[[], float] = time.time,
+    ) -> None:
+        """Expose the office lease ``lease()`` returns (replicas on PostgreSQL)."""
+        self.registry.register(_OfficeLease(lease, ready, clock))
 
     def count_skipped(self, *sources: SkippedEvents) -> None:
         """Expose the inbound events ``sources`` skipped (``core.isolation``)."""

@@ -43,6 +43,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal, TypeVar
 
+from assistantx.store.connection import Connection
+
 logger = logging.getLogger(__name__)
 
 T = TypeVar("T")
@@ -52,6 +54,8 @@ BUSY_TIMEOUT_MS = 5000  # another connection on the file (a second store, an ope
 
 Migration = str | Callable[[sqlite3.Connection], None]
 """SQL statements (separated by ``;``), or a function run on the connection."""
+PgMigration = str | Callable[[Connection], None]
+"""The same for PostgreSQL (``postgres_store``): statements, or a function on the connection."""
 Synchronous = Literal["OFF", "NORMAL", "FULL", "EXTRA"]
 
 
@@ -65,10 +69,15 @@ class StoreClosedError(RuntimeError):
 
 @dataclass(frozen=True)
 class Schema:
-    """``name``: the store's row in ``store_versions``; ``migrations[i]``: version i → i+1."""
+    """``name``: the store's row in ``store_versions``; ``migrations[i]``: version i → i+1.
+
+    ``postgres[i]`` is migration ``i`` for PostgreSQL: the same tables in its types (a store
+    without them runs on SQLite only). Both lists grow together, so a version number means
+    the same schema on both backends."""
 
     name: str
     migrations: tuple[Migration, ...]
+    postgres: tuple[PgMigration, ...] = ()
 
     @property
     def version(self) -> int:
@@ -77,16 +86,21 @@ class Schema:
 
 @dataclass
 class _Job:
-    fn: Callable[[sqlite3.Connection], Any]
+    fn: Callable[[Any], Any]
     future: Future[Any]
 
 
 class SqliteStore:
-    """Open with ``SqliteStore.open(path, schema)``; ``close()`` commits what is queued."""
+    """Open with ``SqliteStore.open(path, schema)``; ``close()`` commits what is queued.
 
-    def __init__(self, conn: sqlite3.Connection, path: Path, name: str) -> None:
+    ``postgres_store.PostgresStore`` is the same machine on a PostgreSQL connection."""
+
+    BEGIN = "BEGIN IMMEDIATE"  # takes the file's write lock now, not at the first write
+
+    def __init__(self, conn: Any, path: Path, name: str) -> None:
         self._conn = conn
         self.path = path
+        self.where = str(path)  # for messages: the file, or the database's redacted URL
         self._queue: queue.SimpleQueue[list[_Job] | None] = queue.SimpleQueue()
         # Submitted on an event loop, handed over at its next turn. The lock orders a sync
         # submit (any thread) after what the loop queued, and nothing after ``close``.
@@ -124,7 +138,7 @@ class SqliteStore:
         return cls(conn, path, schema.name)
 
     # -- calls -----------------------------------------------------------------------------
-    def submit(self, fn: Callable[[sqlite3.Connection], T], *, now: bool = False) -> Future[T]:
+    def submit(self, fn: Callable[[Any], T], *, now: bool = False) -> Future[T]:
         """Queue ``fn``; the future resolves once its group is committed.
 
         On an event loop (and unless ``now``) it joins the batch handed over at the loop's
@@ -142,7 +156,7 @@ class SqliteStore:
             loop = None
         with self._lock:
             if self._closed:
-                raise StoreClosedError(f"{self.path}: the store is closed")
+                raise StoreClosedError(f"{self.where}: the store is closed")
             if loop is not None and self._pending_loop in (None, loop):
                 if not self._pending:
                     self._pending_loop = loop
@@ -153,11 +167,11 @@ class SqliteStore:
                 self._queue.put([job])
         return future
 
-    def call(self, fn: Callable[[sqlite3.Connection], T]) -> T:
+    def call(self, fn: Callable[[Any], T]) -> T:
         """Run ``fn`` on the store's thread and wait until it is committed (blocks)."""
         return self.submit(fn, now=True).result()
 
-    async def acall(self, fn: Callable[[sqlite3.Connection], T]) -> T:
+    async def acall(self, fn: Callable[[Any], T]) -> T:
         """Like ``call``, but the event loop serves others meanwhile."""
         return await asyncio.wrap_future(self.submit(fn))
 
@@ -210,7 +224,7 @@ class SqliteStore:
     def _commit(self, group: list[_Job]) -> None:
         results: list[tuple[_Job, Any, BaseException | None]] = []
         try:
-            self._conn.execute("BEGIN IMMEDIATE")
+            self._conn.execute(self.BEGIN)
             for job in group:
                 self._conn.execute("SAVEPOINT job")
                 try:
@@ -224,7 +238,7 @@ class SqliteStore:
                     results.append((job, value, None))
             self._conn.execute("COMMIT")
         except Exception as exc:  # the commit itself failed: nothing of the group is written
-            logger.exception("%s: commit of %d calls failed", self.path.name, len(group))
+            logger.exception("%s: commit of %d calls failed", self.where, len(group))
             if self._conn.in_transaction:
                 self._conn.execute("ROLLBACK")
             for job in group:

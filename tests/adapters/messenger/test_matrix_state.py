@@ -132,8 +132,10 @@ def test_files_carry_the_office_item_and_a_captionless_one_is_acknowledged() -> 
     assert isinstance(only, InboundMessage) and only.text == "print this"
 
 
-async def test_transaction_ids_are_reused_for_a_retry_only(tmp_path: Path) -> None:
-    store = SqliteEventStore(tmp_path / "m.db")
+async def test_transaction_ids_are_reused_for_a_retry_only(
+    tmp_path: Path, database_url: str | None
+) -> None:
+    store = SqliteEventStore(tmp_path / "m.db", database_url=database_url)
     first = await store.outbound_part("ins-1:s0a0", 0, "d1", room_id="!r", instruction_id="ins-1")
     retry = await store.outbound_part("ins-1:s0a0", 0, "d1", room_id="!r", instruction_id="ins-1")
     assert retry == first and first.event_id is None
@@ -152,8 +154,10 @@ async def test_transaction_ids_are_reused_for_a_retry_only(tmp_path: Path) -> No
     await store.close()
 
 
-async def test_rooms_media_and_claims_survive_reopening(tmp_path: Path) -> None:
-    store = SqliteEventStore(tmp_path / "m.db")
+async def test_rooms_media_and_claims_survive_reopening(
+    tmp_path: Path, database_url: str | None
+) -> None:
+    store = SqliteEventStore(tmp_path / "m.db", database_url=database_url)
     await store.set_dm_room("lee", "!a")
     await store.set_dm_room("lee", "!b")
     await store.set_dm_room("zhang", "!z")
@@ -161,7 +165,7 @@ async def test_rooms_media_and_claims_survive_reopening(tmp_path: Path) -> None:
     await store.remember_media("file:lee", "mxc://o/1", "report.pdf", "application/pdf")
     assert await store.claim("matrix", ["$x", "$y"]) == ["$x", "$y"]
     await store.close()
-    reopened = SqliteEventStore(tmp_path / "m.db")
+    reopened = SqliteEventStore(tmp_path / "m.db", database_url=database_url)
     assert await reopened.dm_rooms() == {"lee": "!b"}
     assert await reopened.media("file:lee") == ("mxc://o/1", "report.pdf", "application/pdf")
     assert await reopened.claim("matrix", ["$x", "$z"]) == ["$z"]

@@ -104,9 +104,11 @@ def test_registration_claims_only_the_bot_exclusively(tmp_path: Path) -> None:
         write_registration(config(appservice_url=None), tmp_path / "none.yaml")
 
 
-async def test_store_dedups_durably_and_replays_unhandled(tmp_path: Path) -> None:
+async def test_store_dedups_durably_and_replays_unhandled(
+    tmp_path: Path, database_url: str | None
+) -> None:
     path = tmp_path / "events.db"
-    store = SqliteEventStore(path)
+    store = SqliteEventStore(path, database_url=database_url)
     assert await store.accept([message("$1"), message("$2")], txn_id="t1") == [
         message("$1"),
         message("$2"),
@@ -119,7 +121,7 @@ async def test_store_dedups_durably_and_replays_unhandled(tmp_path: Path) -> Non
     with pytest.raises(MessengerError, match="closed"):
         await store.sync_token("s")
 
-    reopened = SqliteEventStore(path)
+    reopened = SqliteEventStore(path, database_url=database_url)
     assert await reopened.transaction_seen("t1") and not await reopened.transaction_seen("t2")
     assert await reopened.sync_token("s") == "n1"
     assert [m.event_id for m in await reopened.unhandled()] == ["$2", "$3"]
@@ -127,12 +129,13 @@ async def test_store_dedups_durably_and_replays_unhandled(tmp_path: Path) -> Non
         "slack", "$3"
     )
     await reopened.close()
-    with sqlite3.connect(path) as db:
-        assert db.execute("PRAGMA journal_mode").fetchone()[0] == "wal"
+    if database_url is None:
+        with sqlite3.connect(path) as db:
+            assert db.execute("PRAGMA journal_mode").fetchone()[0] == "wal"
 
 
-async def test_store_write_is_atomic(tmp_path: Path) -> None:
-    store = SqliteEventStore(tmp_path / "events.db")
+async def test_store_write_is_atomic(tmp_path: Path, database_url: str | None) -> None:
+    store = SqliteEventStore(tmp_path / "events.db", database_url=database_url)
     with pytest.raises(ValueError, match="together"):
         await store.accept([message("$1")], sync_key="s")
     assert not await store.event_seen("matrix", "$1")

@@ -3,9 +3,7 @@
 from __future__ import annotations
 
 import asyncio
-import sqlite3
 import time
-from pathlib import Path
 
 import pytest
 
@@ -13,15 +11,18 @@ from assistantx.core.events import TraceEvent
 from assistantx.core.ports.messenger import ChatRef, OutboundMessage
 from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.store.journal import Journal
+from assistantx.store.connection import DATABASE_ERRORS, Connection
+from store.conftest import OpenJournal
 
 
 def _event(n: int) -> TraceEvent:
     return TraceEvent(instruction_id=f"ins-{n % 7}", kind="observation", time=float(n), step=n)
 
 
-async def test_concurrent_writes_share_commits_and_keep_their_order(tmp_path: Path) -> None:
-    journal = Journal.open(tmp_path / "j.sqlite3")
+async def test_concurrent_writes_share_commits_and_keep_their_order(
+    open_journal: OpenJournal,
+) -> None:
+    journal = open_journal()
     seqs = await asyncio.gather(*(journal.arecord(_event(n)) for n in range(300)))
     assert seqs == sorted(seqs) and len(set(seqs)) == 300  # committed in submission order
     assert [r.event.step for r in journal.events(limit=1000)] == list(range(300))
@@ -31,24 +32,23 @@ async def test_concurrent_writes_share_commits_and_keep_their_order(tmp_path: Pa
     journal.close()
 
 
-async def test_a_failing_write_fails_alone(tmp_path: Path) -> None:
-    journal = Journal.open(tmp_path / "j.sqlite3")
+async def test_a_failing_write_fails_alone(open_journal: OpenJournal) -> None:
+    journal = open_journal()
 
-    def broken(db: sqlite3.Connection) -> None:
+    def broken(db: Connection) -> None:
         db.execute("INSERT INTO no_such_table VALUES (1)")
 
     before = journal.arecord(_event(1))
     failing = journal.awrite(broken)
     after = journal.arecord(_event(2))
     results = await asyncio.gather(before, failing, after, return_exceptions=True)
-    assert isinstance(results[1], sqlite3.OperationalError)
+    assert isinstance(results[1], DATABASE_ERRORS)
     assert [r.event.step for r in journal.events()] == [1, 2]
     journal.close()
 
 
-def test_writes_queued_at_close_are_committed(tmp_path: Path) -> None:
-    path = tmp_path / "j.sqlite3"
-    journal = Journal.open(path)
+def test_writes_queued_at_close_are_committed(open_journal: OpenJournal) -> None:
+    journal = open_journal()
     futures = [
         journal.writer.submit(
             lambda db, n=n: db.execute("INSERT INTO meta VALUES (?, 'x')", (f"k{n}",))
@@ -57,17 +57,18 @@ def test_writes_queued_at_close_are_committed(tmp_path: Path) -> None:
     ]
     journal.close()
     assert all(f.done() and f.exception() is None for f in futures)
-    reopened = Journal.open(path)
+    reopened = open_journal()
     assert (
         reopened._conn.execute("SELECT COUNT(*) FROM meta WHERE key LIKE 'k%'").fetchone()[0] == 50
     )
-    reopened.close()
     with pytest.raises(RuntimeError, match="closed"):
         journal.writer.submit(lambda db: None)
 
 
-def test_compaction_drops_old_traces_and_keeps_outcomes_and_messages(tmp_path: Path) -> None:
-    journal = Journal.open(tmp_path / "j.sqlite3")
+def test_compaction_drops_old_traces_and_keeps_outcomes_and_messages(
+    open_journal: OpenJournal,
+) -> None:
+    journal = open_journal()
     for iid in ("ins-old", "ins-new"):
         trace = Trace(instruction_id=iid, requester="lee", text="t", reasoner="x", started_at=1)
         stm = ShortTermMemory(instruction_id=iid, requester="lee", text="t", trace=trace)
@@ -94,11 +95,13 @@ def test_compaction_drops_old_traces_and_keeps_outcomes_and_messages(tmp_path: P
     journal.close()
 
 
-async def test_a_writer_cancelled_while_waiting_does_not_stop_the_journal(tmp_path: Path) -> None:
+async def test_a_writer_cancelled_while_waiting_does_not_stop_the_journal(
+    open_journal: OpenJournal,
+) -> None:
     """An instruction cancelled (or cut off at its wall-clock bound) while awaiting its write:
     the write is still committed, and the writer thread keeps serving (the old writer thread
     died setting the result of the cancelled future, and every later write hung)."""
-    journal = Journal.open(tmp_path / "j.sqlite3")
+    journal = open_journal()
     waiting = asyncio.create_task(journal.arecord(_event(1)))
     await asyncio.sleep(0)  # submitted: it waits for the hand-over to the writer
     waiting.cancel()

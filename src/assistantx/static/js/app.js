@@ -287,8 +287,19 @@ async function showSpeedup() {
     const speedup = Number(ready.speedup);
     label.hidden = !(speedup > 0 && speedup !== 1);
     label.textContent = `Simulated time runs ${speedup}× faster (robot travel, simulated replies, waits); clock times are real.`;
+    showReplica(ready.replica);
   } catch {
     label.hidden = true;
+  }
+}
+
+// Replicas on one database: which one runs this office now. The lease's term grows at every
+// takeover, so a watcher sees a failover happened even when the same page stays open.
+function showReplica(replica) {
+  const label = $("#replica");
+  label.hidden = !replica;
+  if (replica) {
+    label.textContent = `Office ${replica.office} is run by replica ${replica.id} (lease term ${replica.fencing_token}).`;
   }
 }
 

@@ -15,6 +15,11 @@ so the loop serves others meanwhile and the caller continues only once its write
 committed; the plain methods block their thread until committed (operator, start-up and CLI
 writes). Reads use a second connection on the caller's thread; WAL lets them run beside the
 writer, and they see every write whose call has returned.
+
+On PostgreSQL the same holds: the writer is a ``PostgresStore`` (the same thread and group
+commit on a psycopg connection), reads a second connection in autocommit mode, and a commit is
+as durable as the server's settings make it. The statements are written once for both
+(``store.connection``).
 """
 
 from __future__ import annotations
@@ -33,7 +38,15 @@ from assistantx.core.errors import JournalError
 from assistantx.core.events import TraceEvent
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.memory.short_term import ShortTermMemory
+from assistantx.store.connection import (
+    DATABASE_ERRORS,
+    INTEGRITY_ERRORS,
+    Connection,
+    is_postgres_url,
+)
 from assistantx.store.journal._schema import JOURNAL_SCHEMA
+from assistantx.store.leases import Lease, fence
+from assistantx.store.postgres_store import PostgresStore, connect_postgres, redact
 from assistantx.store.sqlite_store import SchemaError, SqliteStore, connect
 
 logger = logging.getLogger(__name__)
@@ -94,15 +107,22 @@ class ChatSummary:
 
 
 class Journal:
-    """One SQLite file; open it with ``Journal.open(path)`` and ``close()`` it at the end."""
+    """One SQLite file or PostgreSQL database; open it with ``Journal.open(path)`` (or
+    ``Journal.open(path, database_url=URL)``) and ``close()`` it at the end."""
 
-    def __init__(self, writer: SqliteStore, reader: sqlite3.Connection) -> None:
+    def __init__(self, writer: SqliteStore, reader: Connection) -> None:
         self.writer = writer  # every write, in one thread, committed in groups
-        self._conn = reader  # reads, on the caller's thread
+        self._conn: Any = reader  # reads, on the caller's thread
         self.path = writer.path
+        self.where = writer.where  # the file, or the database's URL without its password
+        self._fence: Callable[[Connection], None] | None = None
 
     @classmethod
-    def open(cls, path: Path) -> Journal:
+    def open(cls, path: Path, *, database_url: str | None = None) -> Journal:
+        """The SQLite file at ``path``, or the PostgreSQL database at ``database_url``
+        (``postgresql://...``) when one is given (``path`` is then unused)."""
+        if database_url is not None:
+            return cls._open_postgres(database_url)
         # synchronous=NORMAL: a commit survives kill -9; FULL would fsync every group.
         try:
             writer = SqliteStore.open(path, JOURNAL_SCHEMA, synchronous="NORMAL")
@@ -117,21 +137,59 @@ class Journal:
             raise JournalError(f"{path}: not a usable journal ({exc})") from exc
         return cls(writer, reader)
 
+    @classmethod
+    def _open_postgres(cls, url: str) -> Journal:
+        where = redact(url)
+        if not is_postgres_url(url):
+            raise JournalError(f"{where}: a database URL starts with postgresql://")
+        try:
+            writer = PostgresStore.open_url(url, JOURNAL_SCHEMA)
+        except SchemaError as exc:
+            raise JournalError(f"{where}: {exc}") from exc
+        except DATABASE_ERRORS as exc:
+            raise JournalError(f"{where}: not a usable journal ({exc})") from exc
+        try:
+            reader = connect_postgres(url)
+        except DATABASE_ERRORS as exc:
+            writer.close()
+            raise JournalError(f"{where}: not a usable journal ({exc})") from exc
+        return cls(writer, reader)
+
     def close(self) -> None:
         """Commits what is queued, then closes; a second call does nothing."""
         self.writer.close()
         self._conn.close()
 
-    def write(self, fn: Callable[[sqlite3.Connection], T]) -> T:
-        """Run ``fn`` in the writer's transaction and wait until it is committed."""
-        return self.writer.call(fn)
+    def hold(self, lease: Lease | None) -> None:
+        """Every write from now on runs under ``lease``: refused with LeaseLostError (and
+        nothing of it written) once another holder took the office (``store.leases``);
+        None writes without a lease again."""
+        if lease is None:
+            self._fence = None
+        else:
+            self._fence = fence(lease, postgres=isinstance(self.writer, PostgresStore))
 
-    async def awrite(self, fn: Callable[[sqlite3.Connection], T]) -> T:
+    def _fenced(self, fn: Callable[[Connection], T]) -> Callable[[Connection], T]:
+        check = self._fence
+        if check is None:
+            return fn
+
+        def write(db: Connection) -> T:
+            check(db)
+            return fn(db)
+
+        return write
+
+    def write(self, fn: Callable[[Connection], T]) -> T:
+        """Run ``fn`` in the writer's transaction and wait until it is committed."""
+        return self.writer.call(self._fenced(fn))
+
+    async def awrite(self, fn: Callable[[Connection], T]) -> T:
         """Like ``write``, but the event loop serves others while the group commits."""
-        return await self.writer.acall(fn)
+        return await self.writer.acall(self._fenced(fn))
 
     @contextmanager
-    def transaction(self) -> Iterator[sqlite3.Connection]:
+    def transaction(self) -> Iterator[Connection]:
         """Group reads of a consistent view (writes go through ``write``)."""
         self._conn.execute("BEGIN")
         try:
@@ -433,22 +491,22 @@ def _new_id(instruction_id: str) -> Iterator[None]:
     """Turns the primary key's refusal of a taken id into a clear error."""
     try:
         yield
-    except sqlite3.IntegrityError as exc:
+    except INTEGRITY_ERRORS as exc:
         raise JournalError(f"instruction id {instruction_id!r} is taken") from exc
 
 
 # -- writes: each builds its arguments on the caller's thread, then runs in the writer's -----
 def _insert_instruction(
     instruction_id: str, requester: str, text: str, created_at: float
-) -> Callable[[sqlite3.Connection], int]:
-    def insert(db: sqlite3.Connection) -> int:
+) -> Callable[[Connection], int]:
+    def insert(db: Connection) -> int:
         with _new_id(instruction_id):
             cur = db.execute(
                 "INSERT INTO instructions (id, requester, text, status, created_at, updated_at)"
-                " VALUES (?, ?, ?, 'queued', ?, ?)",
+                " VALUES (?, ?, ?, 'queued', ?, ?) RETURNING seq",
                 (instruction_id, requester, text, created_at, created_at),
             )
-        return int(cur.lastrowid or 0)
+            return int(cur.fetchone()[0])
 
     return insert
 
@@ -473,7 +531,7 @@ def _queued(
 
 def _checkpoint(
     stm: ShortTermMemory, status: Status, *, insert_only: bool = False
-) -> Callable[[sqlite3.Connection], None]:
+) -> Callable[[Connection], None]:
     """Update the instruction's own row (same id and requester), else insert it; an id taken
     by another instruction raises JournalError, never overwrites (``insert_only``: always a
     new row)."""
@@ -504,7 +562,7 @@ def _checkpoint(
         len(trace.steps),
     )
 
-    def write(db: sqlite3.Connection) -> None:
+    def write(db: Connection) -> None:
         if not insert_only:
             cur = db.execute(
                 "UPDATE instructions SET status=?, outcome=?, summary=?, updated_at=?, stm=?,"
@@ -529,17 +587,20 @@ def _record(
     status: Status | None,
     states: dict[str, dict[str, Any]] | None,
     memory_updates: list[dict[str, Any]] | None,
-) -> Callable[[sqlite3.Connection], int]:
+) -> Callable[[Connection], int]:
     row = (event.instruction_id, event.kind, event.time, event.step, json.dumps(event.data))
     checkpoint = _checkpoint(stm, status or "running") if stm is not None else None
     now = time.time()
     state_rows = [(name, json.dumps(body)) for name, body in (states or {}).items()]
     updates = [json.dumps(u) for u in memory_updates or ()]
 
-    def write(db: sqlite3.Connection) -> int:
-        cur = db.execute(
-            "INSERT INTO events (instruction_id, kind, time, step, data) VALUES (?, ?, ?, ?, ?)",
-            row,
+    def write(db: Connection) -> int:
+        seq = int(
+            db.execute(
+                "INSERT INTO events (instruction_id, kind, time, step, data)"
+                " VALUES (?, ?, ?, ?, ?) RETURNING seq",
+                row,
+            ).fetchone()[0]
         )
         if checkpoint is not None:
             checkpoint(db)
@@ -552,13 +613,13 @@ def _record(
             _insert_memory_update(db, event.time, event.instruction_id, body)
         for name, text in state_rows:
             _put_state(db, name, text)
-        return int(cur.lastrowid or 0)
+        return seq
 
     return write
 
 
-def _compact(finished_before: float, batch: int) -> Callable[[sqlite3.Connection], int]:
-    def write(db: sqlite3.Connection) -> int:
+def _compact(finished_before: float, batch: int) -> Callable[[Connection], int]:
+    def write(db: Connection) -> int:
         ids = [
             str(r[0])
             for r in db.execute(
@@ -577,7 +638,7 @@ def _compact(finished_before: float, batch: int) -> Callable[[sqlite3.Connection
 
 
 def _insert_memory_update(
-    db: sqlite3.Connection, time_s: float, instruction_id: str | None, body: str
+    db: Connection, time_s: float, instruction_id: str | None, body: str
 ) -> None:
     db.execute(
         "INSERT INTO memory_updates (time, instruction_id, body) VALUES (?, ?, ?)",
@@ -585,10 +646,10 @@ def _insert_memory_update(
     )
 
 
-def _put_memory_snapshot(name: str, body: dict[str, Any]) -> Callable[[sqlite3.Connection], None]:
+def _put_memory_snapshot(name: str, body: dict[str, Any]) -> Callable[[Connection], None]:
     """``body`` must be a fresh structure nobody changes: it is encoded on the writer thread."""
 
-    def write(db: sqlite3.Connection) -> None:
+    def write(db: Connection) -> None:
         # Writes are ordered, so every update applied before the snapshot is journaled by now.
         through = db.execute("SELECT COALESCE(MAX(seq), 0) FROM memory_updates").fetchone()[0]
         _put_state(db, name, json.dumps({**body, "through": int(through)}))
@@ -596,15 +657,15 @@ def _put_memory_snapshot(name: str, body: dict[str, Any]) -> Callable[[sqlite3.C
     return write
 
 
-def _put_states(rows: list[tuple[str, str]]) -> Callable[[sqlite3.Connection], None]:
-    def write(db: sqlite3.Connection) -> None:
+def _put_states(rows: list[tuple[str, str]]) -> Callable[[Connection], None]:
+    def write(db: Connection) -> None:
         for name, text in rows:
             _put_state(db, name, text)
 
     return write
 
 
-def _put_state(db: sqlite3.Connection, name: str, text: str) -> None:
+def _put_state(db: Connection, name: str, text: str) -> None:
     db.execute(
         "INSERT INTO state (name, updated_at, body) VALUES (?, ?, ?)"
         " ON CONFLICT(name) DO UPDATE SET updated_at=excluded.updated_at, body=excluded.body",
@@ -614,7 +675,7 @@ def _put_state(db: sqlite3.Connection, name: str, text: str) -> None:
 
 def _insert_outbound(
     message: OutboundMessage, sender: str, now: float
-) -> Callable[[sqlite3.Connection], MessageRecord]:
+) -> Callable[[Connection], MessageRecord]:
     key = message.idempotency_key
     args = (
         message.chat.kind,
@@ -628,7 +689,7 @@ def _insert_outbound(
         json.dumps(message.model_dump(mode="json")),
     )
 
-    def insert(db: sqlite3.Connection) -> MessageRecord:
+    def insert(db: Connection) -> MessageRecord:
         if key is not None:
             row = db.execute("SELECT * FROM messages WHERE idempotency_key=?", (key,)).fetchone()
             if row is not None:
@@ -636,29 +697,29 @@ def _insert_outbound(
         cur = db.execute(
             "INSERT INTO messages (direction, chat_kind, chat_id, sender, text, time,"
             " instruction_id, question_id, idempotency_key, status, body)"
-            " VALUES ('out', ?, ?, ?, ?, ?, ?, ?, ?, 'pending', ?)",
+            " VALUES ('out', ?, ?, ?, ?, ?, ?, ?, ?, 'pending', ?) RETURNING seq",
             args,
         )
-        record = _message_by_seq(db, int(cur.lastrowid or 0))
+        record = _message_by_seq(db, int(cur.fetchone()[0]))
         assert record is not None
         return record
 
     return insert
 
 
-def _mark_sent(seq: int, message_id: str) -> Callable[[sqlite3.Connection], None]:
-    def write(db: sqlite3.Connection) -> None:
+def _mark_sent(seq: int, message_id: str) -> Callable[[Connection], None]:
+    def write(db: Connection) -> None:
         db.execute("UPDATE messages SET status='sent', message_id=? WHERE seq=?", (message_id, seq))
 
     return write
 
 
-def _message_by_seq(db: sqlite3.Connection, seq: int) -> MessageRecord | None:
+def _message_by_seq(db: Connection, seq: int) -> MessageRecord | None:
     row = db.execute("SELECT * FROM messages WHERE seq=?", (seq,)).fetchone()
     return _message(row) if row else None
 
 
-def _instruction(row: sqlite3.Row) -> InstructionRecord:
+def _instruction(row: Any) -> InstructionRecord:
     stm = row["stm"]
     return InstructionRecord(
         seq=int(row["seq"]),
@@ -676,7 +737,7 @@ def _instruction(row: sqlite3.Row) -> InstructionRecord:
     )
 
 
-def _message(row: sqlite3.Row) -> MessageRecord:
+def _message(row: Any) -> MessageRecord:
     return MessageRecord(
         seq=int(row["seq"]),
         direction=row["direction"],
@@ -695,7 +756,7 @@ def _message(row: sqlite3.Row) -> MessageRecord:
 
 def _record_inbound(
     message: InboundMessage,
-) -> Callable[[sqlite3.Connection], MessageRecord | None]:
+) -> Callable[[Connection], MessageRecord | None]:
     event_id = f"{message.platform}:{message.event_id}"
     args = (
         message.chat.kind,
@@ -708,30 +769,28 @@ def _record_inbound(
         message.model_dump_json(),
     )
 
-    def insert(db: sqlite3.Connection) -> MessageRecord | None:
-        try:
-            cur = db.execute(
-                "INSERT INTO messages (direction, chat_kind, chat_id, sender, text, time,"
-                " in_reply_to, event_id, status, body)"
-                " VALUES ('in', ?, ?, ?, ?, ?, ?, ?, 'received', ?)",
-                args,
-            )
-        except sqlite3.IntegrityError:
-            return None
-        return _message_by_seq(db, int(cur.lastrowid or 0))
+    def insert(db: Connection) -> MessageRecord | None:
+        # ON CONFLICT, not a caught IntegrityError: on PostgreSQL a failed statement aborts
+        # the whole transaction (the group's other writes with it).
+        row = db.execute(
+            "INSERT INTO messages (direction, chat_kind, chat_id, sender, text, time,"
+            " in_reply_to, event_id, status, body)"
+            " VALUES ('in', ?, ?, ?, ?, ?, ?, ?, 'received', ?)"
+            " ON CONFLICT (event_id) DO NOTHING RETURNING seq",
+            args,
+        ).fetchone()
+        return None if row is None else _message_by_seq(db, int(row[0]))
 
     return insert
 
 
-def _set_status(
-    instruction_id: str, status: Status, now: float
-) -> Callable[[sqlite3.Connection], Any]:
+def _set_status(instruction_id: str, status: Status, now: float) -> Callable[[Connection], Any]:
     return lambda db: db.execute(
         "UPDATE instructions SET status=?, updated_at=? WHERE id=?", (status, now, instruction_id)
     )
 
 
-def _request_cancel(instruction_id: str, now: float) -> Callable[[sqlite3.Connection], Any]:
+def _request_cancel(instruction_id: str, now: float) -> Callable[[Connection], Any]:
     return lambda db: db.execute(
         "UPDATE instructions SET cancel_requested=1, updated_at=? WHERE id=?", (now, instruction_id)
     )

@@ -25,7 +25,7 @@ the homeserver retries it later instead of losing it.
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from fastapi import APIRouter
@@ -81,9 +81,11 @@ class MatrixSetup:
 
     config: MatrixConfig
     store_path: Path
+    database_url: str | None = field(default=None, repr=False)  # holds a password
 
     def build(self, *, transcript: Transcript | None = None) -> MatrixRuntime:
-        return matrix_runtime(self.config, SqliteEventStore(self.store_path), transcript=transcript)
+        store = SqliteEventStore(self.store_path, database_url=self.database_url)
+        return matrix_runtime(self.config, store, transcript=transcript)
 
 
 def matrix_runtime(
@@ -121,4 +123,9 @@ def matrix_setup(settings: Settings) -> MatrixSetup:
     if settings.matrix_config is None:
         raise MessengerError("ASSISTANTX_MESSENGER=matrix needs ASSISTANTX_MATRIX_CONFIG (a YAML)")
     config = load_matrix_config(settings.matrix_config)
-    return MatrixSetup(config, settings.matrix_store or settings.data_dir / DEFAULT_STORE_NAME)
+    # With ASSISTANTX_DATABASE_URL the bot's state goes to the journal's PostgreSQL.
+    return MatrixSetup(
+        config,
+        settings.matrix_store or settings.data_dir / DEFAULT_STORE_NAME,
+        database_url=settings.database,
+    )

@@ -1,0 +1,50 @@
+"""What a store's SQL sees of its database, whichever backend holds it.
+
+Every store writes its statements once, in the dialect both engines share: ``?`` parameters,
+``INSERT ... ON CONFLICT``, ``RETURNING seq`` for a new row's number (SQLite since 3.35), rows
+read by column name or position. ``sqlite3.Connection`` is a ``Connection`` as it is;
+``postgres_store.PgConnection`` adapts psycopg's to it. What the engines do not share (column
+types, the autoincrement key, the store's migrations) is spelled once per backend in its
+``Schema``.
+"""
+
+from __future__ import annotations
+
+import sqlite3
+from collections.abc import Iterator, Sequence
+from pathlib import Path
+from typing import Any, Protocol
+
+import psycopg
+
+
+class Cursor(Protocol):
+    """The part of a DB-API cursor the stores use (no ``lastrowid``: use ``RETURNING``)."""
+
+    @property
+    def rowcount(self) -> int: ...
+
+    def fetchone(self) -> Any: ...
+
+    def fetchall(self) -> list[Any]: ...
+
+    def __iter__(self) -> Iterator[Any]: ...
+
+
+class Connection(Protocol):
+    """One database connection; a row supports ``row["column"]`` and ``row[0]``."""
+
+    def execute(self, sql: str, parameters: Sequence[Any] = ..., /) -> Cursor: ...
+
+
+INTEGRITY_ERRORS: tuple[type[Exception], ...] = (sqlite3.IntegrityError, psycopg.IntegrityError)
+"""A constraint refused a write (a taken key), from either backend."""
+
+DATABASE_ERRORS: tuple[type[Exception], ...] = (sqlite3.Error, psycopg.Error)
+
+POSTGRES_SCHEMES = ("postgresql://", "postgres://")
+
+
+def is_postgres_url(location: str | Path | None) -> bool:
+    """Whether ``location`` names a PostgreSQL database rather than a SQLite file."""
+    return isinstance(location, str) and location.startswith(POSTGRES_SCHEMES)

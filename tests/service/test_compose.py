@@ -1,0 +1,33 @@
+"""compose.yaml, read statically (no Docker on the test machines): two replicas of the image
+on one PostgreSQL, each with its own name and data folder, the same database and secrets."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_two_replicas_share_one_database_each_with_its_own_name_and_data() -> None:
+    compose: dict[str, Any] = yaml.safe_load((ROOT / "compose.yaml").read_text())
+    services = compose["services"]
+    replicas = [s for name, s in services.items() if name.startswith("replica-")]
+    assert len(replicas) == 2
+    envs = [r["environment"] for r in replicas]
+    assert {e["ASSISTANTX_REPLICA_ID"] for e in envs} == {"replica-1", "replica-2"}
+    for key in (
+        "ASSISTANTX_DATABASE_URL",
+        "ASSISTANTX_LOCK_SHARED_KEY",
+        "ASSISTANTX_OPERATOR_TOKEN",
+    ):
+        assert envs[0][key] == envs[1][key], key
+    assert envs[0]["ASSISTANTX_DATABASE_URL"].startswith("postgresql://")
+    assert "@postgres:5432/" in envs[0]["ASSISTANTX_DATABASE_URL"]
+    data = [next(v for v in r["volumes"] if v.endswith(":/data")) for r in replicas]
+    assert data[0] != data[1]
+    assert all(r["build"] == "." and r["restart"] == "unless-stopped" for r in replicas)
+    assert all(r["depends_on"]["postgres"]["condition"] == "service_healthy" for r in replicas)
+    assert services["postgres"]["image"].startswith("postgres:")
