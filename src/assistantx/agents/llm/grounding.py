@@ -16,7 +16,9 @@ from __future__ import annotations
 import difflib
 import unicodedata
 from collections.abc import Iterable, Sequence
+from typing import cast
 
+from assistantx.core import task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, TaskKind
@@ -143,13 +145,6 @@ def ungrounded(
 UNSURE_QUESTION = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
 )
-# what a locker code does to the item it concerns, as a task kind (deposit/collect: a transfer)
-_PURPOSE_KIND: dict[str, TaskKind] = {
-    "sign": "sign",
-    "seal": "seal",
-    "copy": "copy",
-    "heat": "heat",
-}
 # a person-to-person task is said by its verb ("sign", "signed", "signature")
 _PERSON_VERBS: dict[TaskKind, tuple[str, ...]] = {
     "sign": ("sign", "signed", "signing", "signature", "countersign"),
@@ -186,7 +181,9 @@ def ungrounded_action(words: RequestWords, requester: str, action: Action) -> st
     match action:
         case SendQR(contact=contact, item=item, purpose=purpose):
             type_id = item.partition(":")[0]
-            kind = _PURPOSE_KIND.get(purpose)
+            # what the code does to its item, as a task kind (deposit/collect: a transfer)
+            spec = task_kinds.of_purpose(purpose)
+            kind = cast("TaskKind", spec.id) if spec is not None else None
             if kind in _PERSON_VERBS:
                 if not words.says_any(_PERSON_VERBS[kind]):
                     return f"the request never asks to {kind} anything"
