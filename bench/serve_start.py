@@ -30,11 +30,14 @@ from pathlib import Path
 import httpx
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
 from assistantx.core.office import load_office
 from assistantx.nav.anchor_check import place_anchors
 from assistantx.nav.anchors import save_anchors
 from assistantx.nav.costmap import Costmap
 from assistantx.nav.occupancy_map import load_map
+from helpers.children import descendants, still_running
 
 ROOT = Path(__file__).resolve().parents[1]
 MAPS = {"office": ROOT / "maps" / "office.yaml", "warehouse": ROOT / "maps/nav2/warehouse.yaml"}
@@ -50,30 +53,6 @@ def _free_port() -> int:
 def _cpu_s(pid: int) -> float:
     fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
     return (int(fields[11]) + int(fields[12])) / TICKS  # utime + stime
-
-
-def _children(pid: int) -> list[int]:
-    found = []
-    for stat in Path("/proc").glob("[0-9]*/stat"):
-        try:
-            parts = stat.read_text().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(parts[1]) == pid:
-            found.append(int(stat.parent.name))
-    return found
-
-
-def _running(pids: list[int]) -> list[int]:
-    alive = []
-    for pid in pids:
-        try:
-            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-        except OSError:
-            continue
-        if state != "Z":
-            alive.append(pid)
-    return alive
 
 
 def _anchors_for(map_yaml: Path, out: Path) -> Path:
@@ -104,7 +83,7 @@ def start_once(env: dict[str, str], log: Path) -> dict[str, object]:
         time.sleep(0.05)
     ready_cpu = _cpu_s(process.pid)
     ready_wall = time.perf_counter() - began
-    children = _children(process.pid)
+    children = [child.pid for child in descendants(process.pid)]
     process.send_signal(signal.SIGINT)
     stopping = time.perf_counter()
     try:
@@ -114,7 +93,7 @@ def start_once(env: dict[str, str], log: Path) -> dict[str, object]:
         process.wait(10)
     stop_s = time.perf_counter() - stopping
     time.sleep(0.5)  # an orphan would still be running by now; a worker ending is quicker
-    left = _running(children)
+    left = still_running(children)
     for pid in left:  # ours: do not leave them to the machine
         os.kill(pid, signal.SIGKILL)
     return {
