@@ -38,7 +38,6 @@ from assistantx.agents.llm import (
 from assistantx.agents.llm.grounding import (
     UNSURE_QUESTION,
     RequestWords,
-    requester_answers,
     ungrounded,
 )
 from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
@@ -178,7 +177,7 @@ class HybridReasoner(SymbolicReasoner):
             await self.shared.release()
 
     async def perceive(self, ctx: AgentContext) -> Percept:
-        answers = requester_answers(ctx.stm)
+        answers = ctx.stm.requester_answers()
         key = (ctx.stm.text, *answers)
         if key not in self._frames:
             self._frames[key] = await self._understand(ctx, answers)

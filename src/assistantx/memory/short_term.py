@@ -84,3 +84,15 @@ class ShortTermMemory(BaseModel):
 
     def replies_to(self, question_id: str) -> list[DialogueTurn]:
         return [t for t in self.dialogue if t.direction == "in" and t.in_reply_to == question_id]
+
+    def requester_answers(self) -> list[str]:
+        """The requester's first answer to each clarifying question asked of them, in order."""
+        answers: list[str] = []
+        for turn in self.dialogue:
+            if turn.direction == "out" and turn.question_id and turn.person == self.requester:
+                replies = [
+                    t.text for t in self.replies_to(turn.question_id) if t.person == self.requester
+                ]
+                if replies:
+                    answers.append(replies[0])
+        return answers

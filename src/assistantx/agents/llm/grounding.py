@@ -152,22 +152,9 @@ _PERSON_VERBS: dict[TaskKind, tuple[str, ...]] = {
 }
 
 
-def requester_answers(stm: ShortTermMemory) -> list[str]:
-    """The requester's first answer to each clarifying question, in order."""
-    answers: list[str] = []
-    for turn in stm.dialogue:
-        if turn.direction == "out" and turn.question_id and turn.person == stm.requester:
-            replies = [
-                t.text for t in stm.replies_to(turn.question_id) if t.person == stm.requester
-            ]
-            if replies:
-                answers.append(replies[0])
-    return answers
-
-
 def request_words(office: Office, stm: ShortTermMemory) -> RequestWords:
     """The instruction and the requester's answers so far."""
-    return RequestWords(office, [stm.text, *requester_answers(stm)])
+    return RequestWords(office, [stm.text, *stm.requester_answers()])
 
 
 def ungrounded_action(words: RequestWords, requester: str, action: Action) -> str | None:

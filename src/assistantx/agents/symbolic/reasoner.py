@@ -72,14 +72,7 @@ class SymbolicReasoner(Reasoner):
     # -- understanding -------------------------------------------------------------------
     def frame(self, stm: ShortTermMemory) -> TaskFrame:
         """The frame from the instruction and the first answer to each clarifying question."""
-        answers: list[str] = []
-        for turn in stm.dialogue:
-            if turn.direction == "out" and turn.question_id and turn.person == stm.requester:
-                replies = [
-                    t.text for t in stm.replies_to(turn.question_id) if t.person == stm.requester
-                ]
-                if replies:
-                    answers.append(replies[0])
+        answers = stm.requester_answers()
         key = (stm.text, *answers)
         if key not in self._frames:
             self._frames[key] = self.parser.parse_with_answers(stm.text, stm.requester, answers)
