@@ -18,7 +18,7 @@ import unicodedata
 from collections.abc import Iterable, Sequence
 from typing import cast
 
-from assistantx.core import task_kinds
+from assistantx.core import english, task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, TaskKind
@@ -145,10 +145,9 @@ def ungrounded(
 UNSURE_QUESTION = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
 )
-# a person-to-person task is said by its verb ("sign", "signed", "signature")
-_PERSON_VERBS: dict[TaskKind, tuple[str, ...]] = {
-    "sign": ("sign", "signed", "signing", "signature", "countersign"),
-    "seal": ("seal", "sealed", "sealing", "stamp", "stamped", "stamping"),
+# a person-to-person task is said by one of the reader's cue words for it ("signed", "stamp")
+_PERSON_VERBS: dict[str, frozenset[str]] = {
+    kind: english.word_table("cues")[kind] for kind in task_kinds.person_kinds()
 }
 
 
