@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.agents.symbolic._lexicon import COMMON, CUES
+from assistantx.agents.symbolic.reading.lexicon import COMMON, CUES
 from assistantx.core import english
 from assistantx.memory.names import TITLES, normalize
 

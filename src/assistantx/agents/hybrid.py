@@ -40,7 +40,7 @@ from assistantx.agents.llm.grounding import (
     RequestWords,
     ungrounded,
 )
-from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
+from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
 from assistantx.core.errors import GroundingError, ModelBehaviorError, ModelOutputError
 from assistantx.core.office import Office

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.llm.grounding import RequestWords, fold, singular, ungrounded
-from assistantx.agents.symbolic.frames import InstructionParser
+from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
 from assistantx.core.task_schema import TaskKind
 from assistantx.evaluation.dataset.tasks import load_tasks

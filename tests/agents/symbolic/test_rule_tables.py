@@ -10,9 +10,9 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic import InstructionParser
-from assistantx.agents.symbolic._kinds import KIND_RULES
-from assistantx.agents.symbolic._lexicon import Mention
-from assistantx.agents.symbolic._parties import PERSON_RULES, PersonSite, person_rule
+from assistantx.agents.symbolic.reading._kinds import KIND_RULES
+from assistantx.agents.symbolic.reading._parties import PERSON_RULES, PersonSite, person_rule
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.core.office import Office
 
 

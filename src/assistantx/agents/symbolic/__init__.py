@@ -6,7 +6,7 @@ network. ``build_factory(office, settings)`` is what ``assistantx.agents.registr
 ``--reasoner symbolic``.
 """
 
-from assistantx.agents.symbolic.frames import InstructionParser, Task, TaskFrame
+from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner, build_factory
 
 __all__ = ["InstructionParser", "SymbolicReasoner", "Task", "TaskFrame", "build_factory"]

@@ -8,8 +8,8 @@ move, where the robot must go, and the group chats asked. The summary says it in
 from __future__ import annotations
 
 from assistantx.agents.symbolic.evidence import Evidence
-from assistantx.agents.symbolic.frames import TaskFrame
 from assistantx.agents.symbolic.planning import Agenda
+from assistantx.agents.symbolic.reading.parser import TaskFrame
 from assistantx.agents.symbolic.roles import Roles
 from assistantx.core.trace import Percept
 from assistantx.memory.graph import LongTermMemory

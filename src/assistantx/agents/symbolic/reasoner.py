@@ -17,9 +17,9 @@ from dataclasses import dataclass
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.agents.symbolic.decision import Decider
 from assistantx.agents.symbolic.evidence import Evidence, gather
-from assistantx.agents.symbolic.frames import InstructionParser, TaskFrame
 from assistantx.agents.symbolic.perception import perceive
 from assistantx.agents.symbolic.planning import Agenda, Planner
+from assistantx.agents.symbolic.reading.parser import InstructionParser, TaskFrame
 from assistantx.agents.symbolic.reflection import Reflector
 from assistantx.agents.symbolic.roles import Roles
 from assistantx.core.actions import Action, Stop

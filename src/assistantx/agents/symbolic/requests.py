@@ -17,9 +17,9 @@ from __future__ import annotations
 
 import re
 
-from assistantx.agents.symbolic._lexicon import Lexicon
-from assistantx.agents.symbolic.frames import NOT_UNDERSTOOD, InstructionParser
-from assistantx.agents.symbolic.screen import UNANSWERED
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.parser import NOT_UNDERSTOOD, InstructionParser
+from assistantx.agents.symbolic.reading.screen import UNANSWERED
 from assistantx.core import english
 from assistantx.core.office import Office
 

@@ -48,8 +48,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.agents.symbolic._lexicon import Lexicon
-from assistantx.agents.symbolic.speech import NEED_PHRASES, SpeechActs
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs
 from assistantx.core import language
 from assistantx.core.english import entries_of
 from assistantx.core.english import words as english_words
@@ -430,7 +430,7 @@ class RequestScreen:
             where = self.office.location(p.location).name
             message = f"{p.name} works at {where}; I can't see whether they are there right now."
         else:
-            thing = self._unknown_thing(piece.words)
+            thing = self.unknown_thing(piece.words)
             if not thing:
                 message = f"I can't answer that from what I know. {self.capabilities()}"
                 return Finding("question", piece, UNANSWERED, message=message)
@@ -840,7 +840,7 @@ class RequestScreen:
     def _self_words(self) -> frozenset[str]:
         return frozenset({"i", "me", "my", "we", "us", "our", "im", "id", "ive"})
 
-    def _unknown_thing(self, words: list[str]) -> str:
+    def unknown_thing(self, words: list[str]) -> str:
         """ "a tape measure" in "who has a tape measure": the words after an article that
         name no item of this office."""
         for n, w in enumerate(words):

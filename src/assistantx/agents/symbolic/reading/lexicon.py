@@ -1,4 +1,4 @@
-"""The office's vocabulary, scanned out of free text: people, item types, facilities, places.
+"""Stage 2 of the reader: tokens → the office's words (people, items, facilities, places).
 
 Every name comes from the office file (names, aliases, synonyms, plurals, the names of its
 locations), so another office works unchanged; the English function words and generic task
@@ -20,10 +20,11 @@ mention carries both readings and the parser asks which was meant.
 
 from __future__ import annotations
 
-import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
@@ -64,25 +65,11 @@ _PERSON_BEFORE = english.words("person_before")
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 
-_TOKEN = language.WORD
-_SENTENCE_END = re.compile(r"[.!?;\n]")
-
-
-@dataclass(frozen=True)
-class Token:
-    text: str  # original spelling
-    word: str  # folded (lower-case, no diacritics), possessive removed, typo-corrected
-    possessive: bool
-    typed: str = ""  # ``word`` before the typo correction
-    opens: bool = False  # the first word of a sentence
-
-    @property
-    def corrected(self) -> bool:
-        return bool(self.typed) and self.typed != self.word
-
 
 @dataclass(frozen=True)
 class Mention:
+    """A run of tokens that names something of the office (or a task word, a pronoun, "me")."""
+
     kind: MentionKind
     start: int  # token index
     end: int  # exclusive
@@ -96,6 +83,15 @@ class Mention:
     @property
     def id(self) -> str:
         return self.ids[0]
+
+
+@dataclass(frozen=True)
+class Lexed:
+    """What the lexicon stage hands on: the text, its corrected tokens and its mentions."""
+
+    text: str
+    tokens: tuple[Token, ...]
+    mentions: tuple[Mention, ...]
 
 
 @dataclass
@@ -168,24 +164,21 @@ class Lexicon:
         lex._vocabulary_set = frozenset(lex.vocabulary)
         return lex
 
-    # -- tokens --------------------------------------------------------------------------
+    # -- stage 2: tokens → the office's words ----------------------------------------------
+    def read(self, text: str) -> Lexed:
+        """The lexicon's reading of a text: its tokens with typos corrected, and the mentions
+        of this office's people, items, facilities and places in them."""
+        tokens = tuple(self.tokens(text))
+        return Lexed(text, tokens, tuple(self.scan(tokens)))
+
     def tokens(self, text: str) -> list[Token]:
+        """The tokens of ``text`` (stage 1), each corrected against this office's words."""
+        raw = tokenize(text)
         out: list[Token] = []
-        flat = text.replace("’", "'")
-        found = list(_TOKEN.finditer(flat))
-        raws = [m.group(0) for m in found]
-        for n, raw in enumerate(raws):
-            lower = language.fold(raw)
-            possessive = lower.endswith("'s") or lower.endswith("s'")
-            word = re.sub(r"'s$|'$", "", lower).replace("'", "")
-            if not possessive and word.endswith("s'"):
-                word = word[:-1]
-            gap = flat[found[n - 1].end() : found[n].start()] if n else ""
-            opens = n == 0 or bool(_SENTENCE_END.search(gap))
+        for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
-            verb_slot = n + 1 < len(raws) and raws[n + 1].lower() in _VERB_OBJECT_STARTS
-            corrected = self._correct(word, verb_slot=verb_slot)
-            out.append(Token(raw, corrected, possessive, word, opens))
+            verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
+            out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
         return out
 
     def _correct(self, word: str, *, verb_slot: bool = False) -> str:
@@ -223,7 +216,7 @@ class Lexicon:
         )
 
     # -- mentions ------------------------------------------------------------------------
-    def scan(self, tokens: list[Token]) -> list[Mention]:
+    def scan(self, tokens: Sequence[Token]) -> list[Mention]:
         """Mentions in text order; titles and articles are skipped inside phrases."""
         content = [
             i for i, t in enumerate(tokens) if t.word not in TITLES or self._role_at(tokens, i)
@@ -242,7 +235,7 @@ class Lexicon:
             k += used
         return mentions
 
-    def _role_at(self, tokens: list[Token], i: int) -> bool:
+    def _role_at(self, tokens: Sequence[Token], i: int) -> bool:
         """ "by the manager": a role title with no name after it names the one it stands for."""
         if tokens[i].word not in self.roles:
             return False
@@ -250,7 +243,7 @@ class Lexicon:
         return nxt not in self.people and nxt not in self.name_words
 
     def _match_at(
-        self, tokens: list[Token], content: list[int], k: int
+        self, tokens: Sequence[Token], content: list[int], k: int
     ) -> tuple[Mention, int] | None:
         for n in range(min(self.max_words, len(content) - k), 0, -1):
             idx = content[k : k + n]
@@ -281,13 +274,13 @@ class Lexicon:
         return None
 
     @staticmethod
-    def _verb_slot(tokens: list[Token], i: int) -> bool:
+    def _verb_slot(tokens: Sequence[Token], i: int) -> bool:
         prev = tokens[i - 1].word if i > 0 else ""
         nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
         opens = tokens[i].opens or prev in _POLITE or prev in ("to", "and", "then", "pls")
         return opens and (nxt in _VERB_OBJECT_STARTS or nxt == "")
 
-    def _modifier(self, tokens: list[Token], start: int, end: int) -> bool:
+    def _modifier(self, tokens: Sequence[Token], start: int, end: int) -> bool:
         """A name between a determiner and a noun modifies the noun: "for the Zhang meeting",
         "my Sun Li notes"."""
         if start == 0 or end >= len(tokens) or tokens[end - 1].possessive:
@@ -302,7 +295,7 @@ class Lexicon:
             and language.is_noun(nxt.word)
         )
 
-    def _single(self, tokens: list[Token], i: int) -> Mention:
+    def _single(self, tokens: Sequence[Token], i: int) -> Mention:
         t = tokens[i]
         w = t.word
         if w in self.roles and self._role_at(tokens, i):
@@ -327,7 +320,9 @@ class Lexicon:
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
 
-    def _person_ids(self, tokens: list[Token], idx: list[int], ids: set[str]) -> tuple[str, ...]:
+    def _person_ids(
+        self, tokens: Sequence[Token], idx: list[int], ids: set[str]
+    ) -> tuple[str, ...]:
         """The people a name may mean; a corrected one-word name adds everyone nearly as
         close (one edit more than the typo limit)."""
         found = set(ids)
@@ -338,7 +333,7 @@ class Lexicon:
                 found |= self.people.get(key, set()) | self.name_words.get(key, set())
         return tuple(sorted(found))
 
-    def name_reading(self, tokens: list[Token], i: int) -> Reading:
+    def name_reading(self, tokens: Sequence[Token], i: int) -> Reading:
         """Whether a one-word name means the person, the ordinary English word, or either.
 
         Only a name that is also an ordinary English word (the dictionary and word frequency
@@ -392,7 +387,7 @@ class Lexicon:
             return "ask" if capital and not t.opens else "word"
         return "person" if capital else "word"
 
-    def word_phrase(self, tokens: list[Token], i: int) -> str:
+    def word_phrase(self, tokens: Sequence[Token], i: int) -> str:
         """The words a name word would be part of if meant as the ordinary word: "the grace
         period talk" (a determiner before it, the nouns after it)."""
         if language.is_month(tokens[i].word):

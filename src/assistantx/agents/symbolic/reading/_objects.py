@@ -12,15 +12,16 @@ clause say when, what for, or where, and must never become tasks of their own:
 - a container or measure word before "of": "a *cup of* coffee" is coffee.
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
-wipes") are all objects of the same verb. An item word used as a verb ("book me a taxi",
-"water the plants") is no item at all; ``verb_uses`` finds those before clauses are cut.
+wipes") are all objects of the same verb. (An item word used as a verb, "book me a taxi", was
+already read as a plain word by the readings stage.)
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-from assistantx.agents.symbolic._lexicon import Mention, Token
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english
 
 # Prepositions of time: a bare noun after one is a time phrase ("over lunch", "at lunch").
@@ -30,21 +31,6 @@ TIME_PREPOSITIONS = english.words("time_prepositions")
 # form"), "from"/"to"/"by" (people's roles).
 MODIFIER_PREPOSITIONS = english.words("object_modifier_prepositions")
 DETERMINERS = english.words("determiners")
-# Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
-_BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
-
-
-def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
-    """Mentions with one-word items used as verbs ("book me a taxi") turned into plain words."""
-    out = list(mentions)
-    for n, m in enumerate(out):
-        if m.kind != "item" or m.end - m.start != 1 or m.possessive:
-            continue
-        before = tokens[m.start - 1].word if m.start > 0 else ""
-        after = tokens[m.end].word if m.end < len(tokens) else ""
-        if before in _BEFORE_VERB and after in DETERMINERS:
-            out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
-    return out
 
 
 def modifiers(

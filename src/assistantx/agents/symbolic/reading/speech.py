@@ -32,7 +32,7 @@ import itertools
 from dataclasses import dataclass
 from typing import Literal
 
-from assistantx.agents.symbolic._lexicon import Lexicon
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.core import english, language
 
 QuestionKind = Literal["polite", "info"]

@@ -8,13 +8,13 @@ rule's place in it is its priority, and the name says why it wins over the rules
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.agents.symbolic._lexicon import Mention, Token
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language
-from assistantx.memory.names import TITLES
 
 _DATIVE_VERBS = english.words("dative_verbs")
 # "Wang's desk": a person's place, where the robot meets them.
@@ -162,7 +162,7 @@ def person_rule(site: PersonSite) -> PersonRule:
     return next(r for r in PERSON_RULES if r.applies(site))
 
 
-def person_role(tokens: list[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
+def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
     m = ms[n]
     site = PersonSite(
         prev=prev_word(tokens, m.start),
@@ -192,7 +192,7 @@ def person_role(tokens: list[Token], ms: list[Mention], n: int, who: str, roles:
 
 
 def clause_roles(
-    tokens: list[Token], clause: Clause, requester: str, last_person: list[str]
+    tokens: Sequence[Token], clause: Clause, requester: str, last_person: list[str]
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her")."""
@@ -233,7 +233,7 @@ def clause_roles(
 
 
 def owner_of(
-    tokens: list[Token], ms: list[Mention], n: int, requester: str, last_person: list[str]
+    tokens: Sequence[Token], ms: list[Mention], n: int, requester: str, last_person: list[str]
 ) -> str | None:
     m = ms[n]
     # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
@@ -274,17 +274,10 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
     )
 
 
-def _object_start(tokens: list[Token], m: Mention) -> bool:
+def _object_start(tokens: Sequence[Token], m: Mention) -> bool:
     """Whether a mention opens a verb's object ("my", "some", "a", "the stapler", "Rich's")."""
     return (
         m.kind in ("self", "item")
         or (m.kind == "person" and m.possessive)
         or tokens[m.start].word in _OBJECT_STARTS
     )
-
-
-def prev_word(tokens: list[Token], start: int, *, skip_titles: bool = True) -> str:
-    k = start - 1
-    while k >= 0 and skip_titles and tokens[k].word in TITLES:
-        k -= 1
-    return tokens[k].word if k >= 0 else ""

@@ -12,8 +12,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from assistantx.agents.symbolic._lexicon import Mention
-from assistantx.agents.symbolic._parties import Clause, Roles, recipient_of
+from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.core import english
 from assistantx.core.office import Office, OperationShape
 from assistantx.core.task_schema import FILE_KIND, Task

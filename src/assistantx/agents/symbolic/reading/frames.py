@@ -1,0 +1,223 @@
+"""Stage 4 of the reader: readings → a task frame (what to do, with which item, for whom).
+
+1. the text is split into clauses at sentence ends and at "and"/"then"/commas that start a
+   new request ("print my file and take it to Wang" is a print and a hand-on);
+2. each clause's mentions (people, items, facilities, task cues, "me"/"my") get roles from
+   the words around them by the priority rule table of ``_parties``: "to/for X" →
+   recipient, "from X"/"X's" → owner, "by X"/"get X to" → actor;
+3. only the objects of the request count (``_objects``): not time phrases ("over lunch"),
+   purpose clauses ("to read"), modifiers after the object ("a mug for my coffee"), nor
+   container words ("a cup of coffee"); every coordinated object ("a stapler and a coffee")
+   is a task of its own, with the recipient named next to it;
+4. the clause's kind follows from its cues and item kinds (``_kinds``: a rule table for the
+   one-task clauses, then a task per object); a clause with no task of its own
+   ("and bring it to me", or the answer "Dr. Zhang") fills in the previous task;
+5. anything missing, unknown or ambiguous becomes a question for the requester, never a guess,
+   and so does an object no task acts on: part of a request is never dropped silently.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
+from assistantx.agents.symbolic.reading._objects import modifiers
+from assistantx.agents.symbolic.reading._parties import (
+    Clause,
+    Roles,
+    UnresolvedPronoun,
+    clause_roles,
+)
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.readings import Readings
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english
+from assistantx.core.office import Office
+from assistantx.core.task_schema import SEAL_TOOL as SEAL
+from assistantx.core.task_schema import Task, TaskFrame
+
+_BREAK_WORDS = english.words("clause_breaks")
+_JOIN_WORDS = english.words("clause_joins")
+_SKIP_AFTER_JOIN = english.words("skip_after_join")
+
+
+NOT_UNDERSTOOD = (
+    "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
+)
+"""The question for a text in which no request was found (not an unclear request)."""
+
+
+class FrameReader:
+    """Reads the task frame of one office's readings."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self.reader = TaskReader(office)
+
+    def frame(self, readings: Readings, requester: str) -> TaskFrame:
+        """The tasks the readings ask for, or the question that is still open."""
+        if readings.doubt is not None:
+            return TaskFrame(requester=requester, question=readings.doubt)
+        tokens = readings.tokens
+        tasks: list[Task] = []
+        last_person: list[str] = []
+        objects: list[Mention] = []
+        previous_cues = True
+        clauses = self._clauses(readings)
+        answered: set[int] = set()  # clauses that only named whom a pronoun meant
+        for k, clause in enumerate(clauses):
+            if k in answered:
+                continue
+            try:
+                roles = clause_roles(tokens, clause, requester, last_person)
+            except UnresolvedPronoun as exc:
+                later = _named_later(clauses, k + 1)
+                if later is None:
+                    unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
+                    return TaskFrame(requester=requester, question=unclear)
+                # "bring me his stapler. Zhang Wei": the answer names him
+                answered.add(later[0])
+                roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+            objects += clause.objects()
+            made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            made = _to_each(made, roles)
+            if made and tasks and not previous_cues and self._refers_back(clause):
+                tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
+            previous_cues = bool(clause.cues)
+            if made:
+                tasks = [*_without_subsumed(tasks, made), *made]
+            elif tasks:
+                tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+        question = self._uncovered(objects, tasks) or self._check(tasks, requester)
+        return TaskFrame(
+            requester=requester, tasks=tasks if question is None else [], question=question
+        )
+
+    @staticmethod
+    def _refers_back(clause: Clause) -> bool:
+        return any(m.kind == "pronoun" and not m.possessive for m in clause.mentions) and not any(
+            m.kind == "item" for m in clause.mentions
+        )
+
+    # -- clauses -------------------------------------------------------------------------
+    def _clauses(self, readings: Readings) -> list[Clause]:
+        tokens, mentions, gaps = readings.tokens, readings.mentions, readings.gaps
+        clauses: list[Clause] = [Clause([])]
+        for n, m in enumerate(mentions):
+            word = tokens[m.start].word
+            gap = gaps[m.start]
+            spaced_dash = gap.strip() in ("-", "–", "—", "--") and gap != gap.strip()
+            hard = (any(c in gap for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
+            soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
+                self._starts_request(
+                    mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
+                )
+            )
+            if (hard or soft) and clauses[-1].mentions:
+                clauses.append(Clause([]))
+            if m.kind == "word" and (word in _JOIN_WORDS or word in _BREAK_WORDS):
+                continue
+            clauses[-1].mentions.append(m)
+        for c in clauses:
+            c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced)
+            c.cues = {
+                k
+                for m in c.mentions
+                if m.kind == "cue" and m.start not in c.modifiers
+                for k in m.ids
+            }
+        return [c for c in clauses if c.mentions]
+
+    @staticmethod
+    def _starts_request(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -> bool:
+        while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
+            n += 1
+        return n < len(mentions) and mentions[n].kind == "cue"
+
+    # -- checks ----------------------------------------------------------------------------
+    def _uncovered(self, objects: list[Mention], tasks: list[Task]) -> str | None:
+        """An object of the request that no task acts on: ask, never drop part of a request."""
+        if not tasks:
+            return None  # ``_check`` asks what is needed at all
+        for m in objects:
+            if not any(self._covers(t, m.id) for t in tasks):
+                return (
+                    f"Sorry, I'm not sure what you want me to do with the "
+                    f"{self._item_name(m.id)}. Could you tell me?"
+                )
+        return None
+
+    def _covers(self, task: Task, type_id: str) -> bool:
+        """Whether ``task`` acts on an item of ``type_id`` (as its item, source or product)."""
+        if task.item == type_id:
+            return True
+        if task.kind in FILE_KINDS and self.reader.kinds[type_id] in ("electronic", "personal"):
+            return True  # "print my report", "email my contract"
+        return (task.kind, type_id) in {
+            ("print", self.reader.printout),
+            ("copy", self.reader.copy),
+            ("seal", SEAL),
+        }
+
+    def _check(self, tasks: list[Task], requester: str) -> str | None:
+        if not tasks:
+            return NOT_UNDERSTOOD
+        for t in tasks:
+            name = self._item_name(t.item) if t.item else "item"
+            if t.item is None:
+                return f"Which item do you mean for the {t.kind.replace('_', ' ')} request?"
+            if t.kind in ("sign",) and (t.actor is None or t.actor == requester):
+                return f"Who should do that with your {name}? Please tell me their name."
+            if t.kind == "transfer":
+                if t.owner is None and self.reader.kinds[t.item] == "personal":
+                    return f"Whose {name} do you mean?"
+                kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
+                if t.owner is not None and t.owner == t.recipient and not kept:
+                    who = "you" if t.owner == requester else self.office.person(t.owner).name
+                    return (
+                        f"Who should get {who}r {name}?"
+                        if who == "you"
+                        else (f"{who} already has their {name}; who should get it?")
+                    )
+            if t.kind == "send_file" and t.owner == t.recipient:
+                return "Who should I pass your file on to?"
+        return None
+
+    def _item_name(self, type_id: str) -> str:
+        return self.office.item_type(type_id).name
+
+
+def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:
+    """A clause from ``first`` on that only names one person (an answer like "Zhang Wei" or
+    "I mean Wang"): its index and the person."""
+    for k in range(first, len(clauses)):
+        clause = clauses[k]
+        people = {m.ids for m in clause.mentions if m.kind == "person"}
+        if clause.cues or any(m.kind in ("item", "facility") for m in clause.mentions):
+            continue
+        if len(people) == 1 and len(next(iter(people))) == 1:
+            return k, next(iter(people))[0]
+    return None
+
+
+def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:
+    """ "Tomás needs a clipboard, give him Rich's": the need and the later request are one
+    errand; an earlier clause's fetch of anyone's item is dropped when a later clause fetches
+    the same kind of item for the same person and says whose."""
+    specific = {(t.item, t.recipient) for t in made if t.kind == "transfer" and t.owner}
+    return [
+        t
+        for t in earlier
+        if not (t.kind == "transfer" and t.owner is None and (t.item, t.recipient) in specific)
+    ]
+
+
+def _to_each(made: list[Task], roles: Roles) -> list[Task]:
+    """ "send my rota to Hal and to Dawn", "... to Hal and Dawn": a file goes to each person
+    named as a recipient (a copy costs nothing; one physical item could not)."""
+    if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
+        return made
+    people = list(dict.fromkeys([*roles.recipient, *roles.bare]))
+    if len(people) < 2:
+        return made
+    return [made[0].model_copy(update={"recipient": who}) for who in people]

@@ -1,0 +1,217 @@
+"""The reader: free text → a typed task frame, or a clarifying question, by stages that pass
+forward.
+
+The frame says what to do (the task kinds of docs/task-semantics.md), with which item, whose,
+for whom and by whom. Each stage takes the previous stage's immutable output and returns its
+own; none reaches back into an earlier one:
+
+0. ``screen``: the speech acts and sanity checks of the raw text, piece by piece (a
+   withdrawal, a thanks, a wish, a question, a fact, something destructive or not offered is
+   answered or declined here, before any task is read); what is left is the request;
+1. ``tokens``: the request's words (Unicode), with their punctuation;
+2. ``lexicon``: typos corrected against the office's words, and the mentions of its people,
+   items, facilities, places and task words (``Lexed``);
+3. ``readings``: the mentions read in their sentences, and the first doubt left (a name that
+   may be a word, a name several people share) (``Readings``);
+4. ``frames``: clauses, roles and task kinds → the tasks, or the question still open;
+5. here: the office's operation named where several share a shape, an unknown item said as
+   such, a third person's need restated and asked ("Shall I ...?").
+
+Competing readings are kept with their evidence and asked about when they lead to different
+physical actions (the idea of KnowNo, "Robots That Ask For Help"): a name that is also an
+ordinary word ("Grace Huang, or the grace period talk?"), a request that may be only a
+question ("... Shall I bring you one?"), a third person's need said as a fact ("Shall I bring
+Gao Min scissors?"). The answer settles the reading (``parse_with_answers``). A thing the
+office does not have ("bring me a tape measure") ends unachievable, with a sentence that says so.
+"""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.answers import offer_stance
+from assistantx.agents.symbolic.planning import describe
+from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexicon, Reading, inflections
+from assistantx.agents.symbolic.reading.readings import MentionReader
+from assistantx.agents.symbolic.reading.screen import RequestScreen
+from assistantx.core import language
+from assistantx.core.office import Office
+from assistantx.core.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
+from assistantx.memory.names import normalize
+
+_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+
+__all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
+
+
+class InstructionParser:
+    """Parses instructions against one office."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self.lex = Lexicon.from_office(office)
+        self.screen = RequestScreen(office, self.lex)
+        self.readings = MentionReader(office, self.lex)
+        self.frames = FrameReader(office)
+        self._op_words = {
+            op.id: {
+                form
+                for phrase in (*op.verbs, op.name)
+                for verb in normalize(phrase).split()[:1]
+                for form in inflections(verb)
+            }
+            for op in office.operations
+        }
+
+    # -- public --------------------------------------------------------------------------
+    def parse(self, text: str, requester: str, *, confirmed: bool = False) -> TaskFrame:
+        """The frame of a request: screened first (speech acts, withdrawn, negated,
+        destructive, facts, unsupported services; ``screen``), then the tasks read from what
+        is left. ``confirmed``: the requester already said yes to the restated reading."""
+        screened = self.screen.screen(text, requester)
+        if screened.decline is not None:
+            return TaskFrame(
+                requester=requester,
+                decline=screened.decline,
+                decline_outcome=screened.outcome,
+                hints=screened.hints,
+                evidence=screened.evidence,
+            )
+        if screened.question is not None:
+            return TaskFrame(
+                requester=requester,
+                question=screened.question,
+                hints=screened.hints,
+                evidence=screened.evidence,
+            )
+        frame = self._parse(screened.text, requester)
+        if frame.understood:
+            frame = self._with_operations(frame, screened.text)
+        if frame.question == NOT_UNDERSTOOD:
+            unknown = self._unknown_item(screened.text)
+            if unknown is not None:
+                frame = TaskFrame(requester=requester, decline=unknown)
+        said = screened.text.strip()
+        evidence = [*screened.evidence, *(self._evidence(t, said) for t in frame.tasks)]
+        if frame.understood and screened.confirm and not confirmed:
+            what = " and ".join(describe(t, self.office, requester) for t in frame.tasks)
+            frame = TaskFrame(requester=requester, question=f"Shall I {what}?")
+        return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+
+    def _unknown_item(self, text: str) -> str | None:
+        """ "bring me a tape measure": a fetch of a thing no one here has, said in words."""
+        tokens = self.lex.tokens(text)
+        mentions = self.lex.scan(tokens)
+        cue = next((m for m in mentions if m.kind == "cue" and set(m.ids) & {"give", "make"}), None)
+        if cue is None or any(m.kind in ("item", "facility") for m in mentions):
+            return None
+        words = [t.word for t in tokens[cue.end :]]
+        thing = self.screen.unknown_thing(words)
+        if not thing or not all(language.lemmas(w) or language.zipf(w) > 0 for w in thing.split()):
+            return None
+        return (
+            f"Sorry, there is no {thing} in this office that I know of, so I can't get you "
+            f"one. {self.screen.capabilities()}"
+        )
+
+    def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
+        """Name the operation where the office has several of a task's shape ("scan" or
+        "copy" a contract); ask which when the words do not say."""
+        words = {t.word for t in self.lex.tokens(text)}
+        tasks: list[Task] = []
+        for t in frame.tasks:
+            shape = _KIND_SHAPE.get(t.kind)
+            ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
+            if len(ops) > 1 and t.operation is None:
+                said = [op for op in ops if self._op_words[op.id] & words]
+                if len(said) != 1:
+                    names = " or ".join(op.name for op in ops)
+                    return TaskFrame(
+                        requester=frame.requester, question=f"Which do you mean: {names}?"
+                    )
+                t = t.model_copy(update={"operation": said[0].id})
+            tasks.append(t)
+        return frame.model_copy(update={"tasks": tasks})
+
+    def _parse(self, text: str, requester: str) -> TaskFrame:
+        """Stages 1–4 on what the screen left: tokens and the office's words, their readings,
+        the frame."""
+        return self.frames.frame(self.readings.read(self.lex.read(text)), requester)
+
+    def _evidence(self, task: Task, said: str) -> Evidence:
+        """A task in words: what it does, with whose item, for whom."""
+        name = self._item_name(task.item) if task.item else "item"
+        whose = (
+            f"{self.office.person(task.owner).name}'s {name}"
+            if task.owner
+            else f"anyone's {name}"
+            if task.kind == "transfer"
+            else name
+        )
+        parts = [f"{task.kind.replace('_', ' ')}: {whose}"]
+        if task.actor:
+            parts.append(f"by {self.office.person(task.actor).name}")
+        parts.append(f"for {self.office.person(task.recipient).name}")
+        return Evidence(words=said[:300], meaning=" ".join(parts))
+
+    def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
+        """Re-parse after clarifying answers: a yes or no to "Shall I ...?", the reading the
+        answer chose, else the original with the answers; the answer alone only when the
+        question asked for the whole request. A reply answers the question asked: it never
+        starts a request of its own ("Yes, I have a stapler" to "Shall I bring you one?" is
+        a no, not a yes nor a new request for a stapler)."""
+        frame = self.parse(text, requester)
+        for answer in answers:
+            if frame.understood or frame.decline is not None:
+                break
+            if frame.question is not None and "Shall I" in frame.question:
+                yes_no = offer_stance(answer)
+                if yes_no == "yes":
+                    offer = self.screen.screen(text, requester).offer
+                    frame = self.parse(offer or text, requester, confirmed=True)
+                    continue
+                if yes_no == "no":
+                    return TaskFrame(
+                        requester=requester,
+                        decline="OK, I won't do anything, then.",
+                        decline_outcome="done",
+                    )
+            chosen = self._chosen_reading(text, answer)
+            if chosen:
+                self.lex.chosen = chosen
+                try:
+                    frame = self.parse(text, requester)
+                finally:
+                    self.lex.chosen = {}
+                continue
+            asked_everything = frame.question == NOT_UNDERSTOOD
+            combined = self.parse(f"{text}. {answer}", requester)
+            if combined.understood or not asked_everything:
+                frame = combined
+                continue
+            alone = self.parse(answer, requester)
+            frame = alone if alone.understood else combined
+        return frame
+
+    def _chosen_reading(self, text: str, answer: str) -> dict[str, Reading]:
+        """Which reading an answer chose for a name that may be a word: it names the person,
+        or it repeats the word's phrase ("the talk", "the grace period one")."""
+        tokens = self.lex.tokens(text)
+        said = self.lex.tokens(answer)
+        named = {i for m in self.lex.scan(said) if m.kind == "person" for i in m.ids}
+        answer_words = {t.word for t in said} - COMMON
+        chosen: dict[str, Reading] = {}
+        for m in self.lex.scan(tokens):
+            if m.kind != "person" or not m.alternative:
+                continue
+            word = tokens[m.start].word
+            full = {language.fold(w) for i in m.ids for w in self.office.person(i).name.split()}
+            if set(m.ids) & named and (answer_words & full) - {word}:
+                chosen[word] = "person"  # "Grace Huang"
+            elif answer_words & {language.fold(w) for w in m.alternative.split()}:
+                chosen[word] = "word"  # "the grace period talk", "the talk"
+            elif set(m.ids) & named:
+                chosen[word] = "person"
+        return chosen
+
+    def _item_name(self, type_id: str) -> str:
+        return self.office.item_type(type_id).name

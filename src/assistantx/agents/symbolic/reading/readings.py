@@ -1,0 +1,140 @@
+"""Stage 3 of the reader: the office's words → readings, with what is still in doubt.
+
+The lexicon's mentions are read in their sentence: an item word used as a verb ("book me a
+taxi") is a plain word, a task word after a possessive ("Fang's seal") is the item, and a
+later sentence that names one of the people an ambiguous name may mean ("... Zhnag's stapler.
+Zhang Wei") settles it. What is still in doubt after that is kept as the question to ask
+before anything is read as a task: a name that may be an ordinary word ("Do you mean Grace
+Huang, or the grace period talk?"), a name several people share, a capitalized name nobody
+here has, a facility whose services the assistant cannot run.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.lexicon import COMMON, PRONOUNS, Lexed, Lexicon, Mention
+from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
+from assistantx.core import english, language
+from assistantx.core.office import Office
+
+# Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
+_BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
+_DETERMINERS = english.words("determiners")
+_TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
+
+
+@dataclass(frozen=True)
+class Readings:
+    """What the readings stage hands on: the mentions as read in their sentences, the
+    punctuation before each token, and the first doubt to ask about (or None)."""
+
+    text: str
+    tokens: tuple[Token, ...]
+    mentions: tuple[Mention, ...]
+    gaps: tuple[str, ...]
+    doubt: str | None
+
+
+class MentionReader:
+    """Reads the lexicon's mentions of one office in their sentences."""
+
+    def __init__(self, office: Office, lex: Lexicon) -> None:
+        self.office = office
+        self.lex = lex
+
+    def read(self, lexed: Lexed) -> Readings:
+        tokens = lexed.tokens
+        mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
+        spaces = gaps(lexed.text, tokens)
+        settled = _settled_by_later_sentence(mentions, spaces)
+        doubts = self._doubts(tokens, settled)
+        return Readings(lexed.text, tokens, tuple(settled), spaces, doubts[0] if doubts else None)
+
+    def _owned_cue_items(
+        self, mentions: Sequence[Mention], tokens: Sequence[Token]
+    ) -> list[Mention]:
+        """ "Fang's seal", "my stamp": a task word after a possessive names an item."""
+        out = list(mentions)
+        for n in range(1, len(out)):
+            m, before = out[n], out[n - 1]
+            word = tokens[m.start].word
+            if m.kind == "cue" and word in self.lex.items and before.possessive:
+                out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
+        return out
+
+    def _doubts(self, tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[str]:
+        out: list[str] = []
+        for n, m in enumerate(mentions):
+            if m.kind == "person" and m.alternative and len(m.ids) == 1:
+                name = self.office.person(m.id).name
+                out.append(f"Do you mean {name}, or {m.alternative}?")
+            if m.kind == "person" and len(m.ids) > 1:
+                names = " or ".join(self.office.person(i).name for i in m.ids)
+                said = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
+                out.append(f"Who do you mean by {said!r}: {names}?")
+            if m.kind == "word" and _unknown_name(tokens, mentions, n):
+                name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
+                out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
+            if m.kind == "facility" and self._unsupported_facility(m.id):
+                f = self.office.facility(m.id)
+                out.append(
+                    f"Sorry, I can't help with the {f.name}. I can fetch and deliver things, "
+                    "pass on files, and run errands at the office machines. What would you "
+                    "like me to do?"
+                )
+        return out
+
+    def _unsupported_facility(self, facility_id: str) -> bool:
+        """A facility whose operations are none the assistant can run (a meeting room)."""
+        ops = self.office.facility(facility_id).operations
+        return bool(ops) and not any(self.office.runnable(op) for op in ops)
+
+
+def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    m = mentions[n]
+    word = tokens[m.start].word
+    if word in COMMON or word in PRONOUNS or word.isdigit() or len(word) < 2:
+        return False
+    if language.is_month(word) or language.is_weekday(word):
+        return False  # "from March", "by Friday": a date
+    following = mentions[n + 1] if n + 1 < len(mentions) else None
+    if m.possessive and following is not None and following.kind == "item":
+        return True  # "Smith's stapler"
+    prev = prev_word(tokens, m.start, skip_titles=False)
+    capital = m.text[:1].isupper() and m.start > 0
+    titled = prev in _TITLE_WORDS
+    return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+
+
+def _settled_by_later_sentence(mentions: Sequence[Mention], spaces: Sequence[str]) -> list[Mention]:
+    """ "Bring me Zhnag's stapler. Zhang Wei": a later sentence that names one of the people
+    an ambiguous name may mean settles it (the answer to "who do you mean?"), and is used up."""
+    out = list(mentions)
+    used: set[int] = set()
+    for n, m in enumerate(out):
+        if m.kind != "person" or len(m.ids) < 2:
+            continue
+        for k in range(n + 1, len(out)):
+            later = out[k]
+            new_sentence = any(c in gap for gap in spaces[m.end : later.start + 1] for c in ".!?;")
+            if later.kind == "person" and len(later.ids) == 1 and later.id in m.ids:
+                if new_sentence:
+                    out[n] = Mention("person", m.start, m.end, later.ids, m.possessive, m.text)
+                    used.add(k)
+                break
+    return [m for k, m in enumerate(out) if k not in used]
+
+
+def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """Mentions with one-word items used as verbs ("book me a taxi") turned into plain words."""
+    out = list(mentions)
+    for n, m in enumerate(out):
+        if m.kind != "item" or m.end - m.start != 1 or m.possessive:
+            continue
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        if before in _BEFORE_VERB and after in _DETERMINERS:
+            out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
+    return out

@@ -1,0 +1,53 @@
+"""Stage 0, screen: the speech acts and sanity checks of the raw text, before any task."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.screen import RequestScreen
+from assistantx.core.office import Office
+
+
+@pytest.fixture(scope="module")
+def screen(office: Office) -> RequestScreen:
+    return RequestScreen(office, Lexicon.from_office(office))
+
+
+def test_a_request_passes_on_unchanged(screen: RequestScreen) -> None:
+    out = screen.screen("bring me a stapler", "lee")
+    assert (out.text, out.decline, out.question) == ("bring me a stapler", None, None)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "forget about the stapler",  # a withdrawal
+        "thanks for the pen!",  # thanks
+        "please keep everyone away from Mao's seal today",  # a wish
+    ],
+)
+def test_what_is_no_request_is_answered_in_words_and_nothing_is_left_to_read(
+    screen: RequestScreen, text: str
+) -> None:
+    out = screen.screen(text, "lee")
+    assert out.decline is not None and out.outcome == "done"
+
+
+def test_a_question_that_may_be_a_request_is_answered_then_offered(
+    screen: RequestScreen,
+) -> None:
+    out = screen.screen("does anyone have a stapler?", "lee")
+    assert out.question is not None and out.question.endswith("Shall I bring you one?")
+    assert out.offer == "bring me a stapler"
+
+
+def test_a_destructive_request_is_declined(screen: RequestScreen) -> None:
+    out = screen.screen("throw away Wang's stapler", "lee")
+    assert out.decline is not None and out.outcome == "unachievable"
+
+
+def test_a_fact_becomes_a_hint_and_the_rest_is_the_request(screen: RequestScreen) -> None:
+    out = screen.screen("Wang is away. Bring me a stapler", "lee")
+    assert [h.kind for h in out.hints] == ["availability"]
+    assert "Wang" not in out.text and "stapler" in out.text
