@@ -30,7 +30,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
-from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexicon, Reading, inflections
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.core import language
@@ -83,11 +83,12 @@ class InstructionParser:
                 hints=screened.hints,
                 evidence=screened.evidence,
             )
-        frame = self._parse(screened.text, requester)
+        lexed = self.lex.read(screened.text)  # stages 1 and 2, once; later ones get it
+        frame = self.frames.frame(self.readings.read(lexed), requester)
         if frame.understood:
-            frame = self._with_operations(frame, screened.text)
+            frame = self._with_operations(frame, lexed)
         if frame.question == NOT_UNDERSTOOD:
-            unknown = self._unknown_item(screened.text)
+            unknown = self._unknown_item(lexed)
             if unknown is not None:
                 frame = TaskFrame(requester=requester, decline=unknown)
         said = screened.text.strip()
@@ -97,10 +98,9 @@ class InstructionParser:
             frame = TaskFrame(requester=requester, question=f"Shall I {what}?")
         return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
 
-    def _unknown_item(self, text: str) -> str | None:
+    def _unknown_item(self, lexed: Lexed) -> str | None:
         """ "bring me a tape measure": a fetch of a thing no one here has, said in words."""
-        tokens = self.lex.tokens(text)
-        mentions = self.lex.scan(tokens)
+        tokens, mentions = lexed.tokens, lexed.mentions
         cue = next((m for m in mentions if m.kind == "cue" and set(m.ids) & {"give", "make"}), None)
         if cue is None or any(m.kind in ("item", "facility") for m in mentions):
             return None
@@ -113,10 +113,10 @@ class InstructionParser:
             f"one. {self.screen.capabilities()}"
         )
 
-    def _with_operations(self, frame: TaskFrame, text: str) -> TaskFrame:
+    def _with_operations(self, frame: TaskFrame, lexed: Lexed) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say."""
-        words = {t.word for t in self.lex.tokens(text)}
+        words = {t.word for t in lexed.tokens}
         tasks: list[Task] = []
         for t in frame.tasks:
             shape = _KIND_SHAPE.get(t.kind)
@@ -131,11 +131,6 @@ class InstructionParser:
                 t = t.model_copy(update={"operation": said[0].id})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
-
-    def _parse(self, text: str, requester: str) -> TaskFrame:
-        """Stages 1–4 on what the screen left: tokens and the office's words, their readings,
-        the frame."""
-        return self.frames.frame(self.readings.read(self.lex.read(text)), requester)
 
     def _evidence(self, task: Task, said: str) -> Evidence:
         """A task in words: what it does, with whose item, for whom."""
