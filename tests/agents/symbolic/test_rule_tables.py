@@ -52,6 +52,14 @@ PERSON_CASES = [
     (_site("to"), "to / for / with Wang: the recipient"),
     (_site("get", nxt="to"), "Wang to sign, ask Wang: the doer"),
     (_site("ask"), "Wang to sign, ask Wang: the doer"),
+    (
+        _site("if", nxt="could", then="sign", subject=True),
+        "if Wang could sign it, Wang would sign it: the doer of a person's work",
+    ),
+    (
+        _site("if", nxt="signed", subject=True),
+        "if Wang could sign it, Wang would sign it: the doer of a person's work",
+    ),
     (_site("bring", following=_ITEM), "give Wang a stapler: the recipient"),
     (_site("bring", following=_SIGN), "otherwise: named, no role yet"),
     (

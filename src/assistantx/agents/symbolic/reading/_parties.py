@@ -14,7 +14,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
-from assistantx.core import english, language
+from assistantx.core import english, language, task_kinds
 
 _DATIVE_VERBS = english.words("dative_verbs")
 # "Wang's desk": a person's place, where the robot meets them.
@@ -28,6 +28,12 @@ _MEET_AT = frozenset({"to", "at", "for", "on", "by"})
 # "Min needs scissors": the one who needs the item gets it.
 _NEEDS = english.words("need_verbs") | english.words("receive_verbs")
 _DIRECT = frozenset({"ask", "have", "let", "tell"})
+# The words of the work only a person does (sign, seal): "if Zhang could sign it" makes Zhang
+# the doer, a wish about a person that is a request, where "Rich asked for it" is context.
+_PERSON_WORK = frozenset(
+    w for k in task_kinds.person_kinds() for w in english.word_table("cues")[k]
+)
+_MODALS = english.words("request_modals")
 # "because Rich asked for it", "since Hal is out": a clause that gives a reason; a person in
 # it is why, not who gets or does anything.
 _REASON = frozenset({"because", "since", "cos", "coz", "cause", "as"})
@@ -142,6 +148,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule("to / for / with Wang: the recipient", lambda s: s.prev in _TO, "recipient"),
     PersonRule(
         "Wang to sign, ask Wang: the doer", lambda s: s.nxt == "to" or s.prev in _DIRECT, "actor"
+    ),
+    PersonRule(
+        "if Wang could sign it, Wang would sign it: the doer of a person's work",
+        lambda s: s.nxt in _PERSON_WORK or (s.nxt in _MODALS and s.then in _PERSON_WORK),
+        "actor",
     ),
     PersonRule(
         "give Wang a stapler: the recipient",

@@ -64,6 +64,7 @@ _DATIVE_VERBS = english.words("dative_verbs")
 _PERSON_BEFORE = english.words("person_before")
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
+_MODALS = english.words("request_modals")
 
 
 @dataclass(frozen=True)
@@ -112,6 +113,10 @@ class Lexicon:
     _vocabulary_set: frozenset[str] = frozenset()
     # "the manager": a title that stands in someone's alias ("Manager Mao") names them
     roles: dict[str, set[str]] = field(default_factory=dict)
+    # how the office file says a one-word name is used: "Kim" as a bare alias of one person,
+    # "Dr. Kim" of another (word → the people it is declared for, bare or after a title)
+    bare: dict[str, set[str]] = field(default_factory=dict)
+    titled: dict[str, set[str]] = field(default_factory=dict)
     # the reading the requester chose for a name word they were asked about (word → reading)
     chosen: dict[str, Reading] = field(default_factory=dict)
 
@@ -137,9 +142,12 @@ class Lexicon:
             for word in p.name.split():
                 lex.name_words.setdefault(key_of(word), set()).add(p.id)
             for alias in p.aliases:
-                for word in language.fold(alias).replace(".", " ").split():
+                words = language.fold(alias).replace(".", " ").split()
+                for word in words:
                     if word in TITLES and word not in _COURTESY_TITLES:
                         lex.roles.setdefault(word, set()).add(p.id)
+                lex._declare(p.id, words)
+            lex._declare(p.id, language.fold(p.name).replace(".", " ").split())
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
                 key = key_of(name)
@@ -163,6 +171,31 @@ class Lexicon:
         lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
         return lex
+
+    def _declare(self, person: str, words: list[str]) -> None:
+        """Record how a name or alias of ``person`` is written: a bare word ("Kim"), a title
+        and a word ("Dr. Kim"), or a role with its qualifier ("the lab manager")."""
+        names = [w for w in words if w not in TITLES]
+        roles = [w for w in words if w in TITLES and w not in _COURTESY_TITLES]
+        if len(names) == 1 and not roles and len(words) == len(names):
+            self.bare.setdefault(key_of(names[0]), set()).add(person)
+        elif len(names) == 1 and words[-1] == names[0]:
+            self.titled.setdefault(key_of(names[0]), set()).add(person)
+        if roles and names:  # "the lab manager": the whole role phrase names them
+            phrase = " ".join(w for w in words if w not in _COURTESY_TITLES or w in roles)
+            self.people.setdefault(phrase, set()).add(person)
+
+    def _word_people(self, tokens: Sequence[Token], i: int, word: str) -> set[str]:
+        """Who a one-word name means: after a title, those the office calls so with a title
+        ("Dr Kim"); else those it calls so bare ("Kim"); else everyone with that name word
+        ("Yang": Yang Lei, and Liu Yang's given name), to be settled by the words around it
+        or asked."""
+        prev = tokens[i - 1].word if i > 0 else ""
+        if prev in TITLES and prev not in ("a", "an", "the", "our") and word in self.titled:
+            return self.titled[word]
+        if word in self.bare:
+            return self.bare[word]
+        return self.people.get(word, set()) | self.name_words.get(word, set())
 
     # -- stage 2: tokens → the office's words ----------------------------------------------
     def read(self, text: str) -> Lexed:
@@ -233,7 +266,40 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
-        return mentions
+        return self._settled_by_owner(tokens, mentions)
+
+    def _settled_by_owner(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "Yang's book", "Yang said I could borrow his book": a name several people share
+        means the one of them who owns the item it is said to own, when only one does (a typo
+        stays in doubt: the name itself is uncertain)."""
+        out = list(mentions)
+        for n, m in enumerate(out):
+            if m.kind != "person" or len(m.ids) < 2 or tokens[m.start].corrected:
+                continue
+            item = self._owned_item(out, n)
+            if item is None:
+                continue
+            owners = set(self.office.owners_of(item))
+            candidates = tuple(i for i in m.ids if i in owners)
+            if len(candidates) == 1:
+                out[n] = Mention("person", m.start, m.end, candidates, m.possessive, m.text)
+        return out
+
+    @staticmethod
+    def _owned_item(mentions: Sequence[Mention], n: int) -> str | None:
+        """The item type the person at ``n`` is said to own: "X's stapler", or "his stapler"
+        later with nobody else named in between."""
+        m = mentions[n]
+        following = mentions[n + 1 :]
+        if m.possessive:
+            return following[0].id if following and following[0].kind == "item" else None
+        for k, later in enumerate(following):
+            if later.kind == "person":
+                return None
+            after = following[k + 1] if k + 1 < len(following) else None
+            if later.kind == "pronoun" and later.possessive and after and after.kind == "item":
+                return after.id
+        return None
 
     def _role_at(self, tokens: Sequence[Token], i: int) -> bool:
         """ "by the manager": a role title with no name after it names the one it stands for."""
@@ -261,7 +327,8 @@ class Lexicon:
                 if modifier:  # "the Zhang Wei meeting": not a party
                     return Mention("word", start, end, (phrase,), poss, text), n
                 if reading != "word":
-                    ids = self._person_ids(tokens, idx, self.people[phrase])
+                    named = self._word_people(tokens, start, phrase) if n == 1 else set()
+                    ids = self._person_ids(tokens, idx, named or self.people[phrase])
                     alt = self.word_phrase(tokens, idx[0]) if reading == "ask" else ""
                     return Mention("person", start, end, ids, poss, text, alt), n
             in_verb_slot = n == 1 and phrase in self.cue_words and self._verb_slot(tokens, start)
@@ -285,6 +352,8 @@ class Lexicon:
         "my Sun Li notes"."""
         if start == 0 or end >= len(tokens) or tokens[end - 1].possessive:
             return False
+        if start >= 2 and tokens[start - 2].word in _MODALS:
+            return False  # "could the office manager sign ...": the subject, not a modifier
         nxt = tokens[end]
         return (
             tokens[start - 1].word in _MODIFIER_DETERMINERS
@@ -306,7 +375,7 @@ class Lexicon:
             if reading == "person" and not chosen and self._modifier(tokens, i, i + 1):
                 reading = "word"  # "for the Zhang review": not a party
             if reading != "word":
-                ids = self._person_ids(tokens, [i], self.name_words[w])
+                ids = self._person_ids(tokens, [i], self._word_people(tokens, i, w))
                 alt = self.word_phrase(tokens, i) if reading == "ask" else ""
                 return Mention("person", i, i + 1, ids, t.possessive, t.text, alt)
         if w in SELF_WORDS:

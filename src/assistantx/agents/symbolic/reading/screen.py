@@ -719,13 +719,19 @@ class RequestScreen:
         pattern = re.compile(r"\b(?:a|an|one|another)\s+([a-z]+)\b", re.IGNORECASE)
         for match in pattern.finditer(text):
             noun = match.group(1).lower()
-            if noun in self._office_words or not language.is_noun(noun):
+            if self._names_at(text[match.start(1) :]) or not language.is_noun(noun):
                 continue
             if language.zipf(noun) < 3 or noun in ("one", "bit", "lot"):
                 continue
             evidence = [Evidence(words=match.group(0), meaning=f"a {noun} of {thing}")]
             return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
         return text, []
+
+    def _names_at(self, text: str) -> bool:
+        """Whether ``text`` opens with a name of this office ("lunch box", "Sun Li"); a word
+        that is only part of one ("box" of "lunch box") is not."""
+        mentions = self.lex.scan(self.lex.tokens(text))
+        return bool(mentions) and mentions[0].start == 0 and mentions[0].kind != "word"
 
     def _dangling_possessives(self, text: str) -> tuple[str, list[Evidence]]:
         """ "lend him mine", "give him Rich's": a possessive with no item after it means the
