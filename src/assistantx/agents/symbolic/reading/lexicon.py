@@ -142,11 +142,11 @@ class Lexicon:
             for word in p.name.split():
                 lex.name_words.setdefault(key_of(word), set()).add(p.id)
             for alias in p.aliases:
-                words = language.fold(alias).replace(".", " ").split()
-                for word in words:
+                said = language.fold(alias).replace(".", " ").split()
+                for word in said:
                     if word in TITLES and word not in _COURTESY_TITLES:
                         lex.roles.setdefault(word, set()).add(p.id)
-                lex._declare(p.id, words)
+                lex._declare(p.id, said)
             lex._declare(p.id, language.fold(p.name).replace(".", " ").split())
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
