@@ -31,7 +31,7 @@ from assistantx.agents.symbolic.reading._parties import (
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english
+from assistantx.core import english, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SEAL_TOOL as SEAL
 from assistantx.core.task_schema import Task, TaskFrame
@@ -83,6 +83,8 @@ class FrameReader:
             made = _to_each(made, roles)
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
+            elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
+                tasks.pop()  # "get my lunch out of the fridge and heat it": one errand
             previous_cues = bool(clause.cues)
             if made:
                 tasks = [*_without_subsumed(tasks, made), *made]
@@ -221,3 +223,15 @@ def _to_each(made: list[Task], roles: Roles) -> list[Task]:
     if len(people) < 2:
         return made
     return [made[0].model_copy(update={"recipient": who}) for who in people]
+
+
+def _first_leg(earlier: Task, made: list[Task]) -> bool:
+    """Whether ``earlier`` (a fetch of an item to someone) is only the way to the work a
+    later clause does on that same item for the same person ("... and heat it")."""
+    return (
+        len(made) == 1
+        and task_kinds.works_on_item(made[0].kind)
+        and earlier.kind == "transfer"
+        and earlier.item == made[0].item
+        and earlier.recipient == made[0].recipient
+    )

@@ -48,6 +48,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs
 from assistantx.core import language
@@ -60,9 +61,11 @@ from assistantx.memory.names import normalize
 _WORD = re.compile(r"[A-Za-z0-9]+(?:['’][A-Za-z]+)?")
 # A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
 _SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
-# "sorry, I meant ...", "no wait, ...", "I mean ...": the words after it correct what was just said
+# "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...": the words after it correct
+# what was just said (only when they name one person or item, ``_corrected``)
 _CORRECTION = re.compile(
-    r"(?:[,;.!?]|\s[-–—]+)\s*(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no)\b"
+    r"(?:[,;.!?]|\s[-–—]+)\s*"
+    r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b)[,:]?\s*",
     re.IGNORECASE,
 )
@@ -95,6 +98,7 @@ class English:
     courtesy: frozenset[str]
     own_item_lost: tuple[tuple[str, ...], ...]
     exclusion_openers: frozenset[str]
+    elliptical_withdrawals: tuple[tuple[str, ...], ...]
 
 
 @functools.cache
@@ -131,6 +135,7 @@ def english() -> English:
         courtesy=words("courtesy"),
         own_item_lost=phrases("own_item_lost"),
         exclusion_openers=words("exclusion_openers"),
+        elliptical_withdrawals=phrases("elliptical_withdrawals"),
     )
 
 
@@ -358,6 +363,9 @@ class RequestScreen:
         words = [w for w in piece.words if w not in ("actually", "oh", "ok", "okay", "please")]
         if tuple(words) in self.en.withdraw or self.acts.withdrawal(words):
             return Finding("withdrawn", piece, "withdraws the request")
+        said = tuple(w for w in piece.words if w not in ("oh", "ok", "okay", "wait", "hmm"))
+        if piece.start > 0 and said in self.en.elliptical_withdrawals:
+            return Finding("withdrawn", piece, "withdraws what was asked before")
         return None
 
     def _exclusion(self, piece: Piece, requester: str) -> Finding | None:
@@ -382,6 +390,13 @@ class RequestScreen:
         return Finding("exclusion", piece, f"not {who}'s {thing}", hint)
 
     def _wish(self, piece: Piece, requester: str) -> Finding | None:
+        if self.acts.world_wish(piece.words):
+            return Finding(
+                "wish",
+                piece,
+                "a wish about the place, not a request",
+                message="Noted; that is not something I can change.",
+            )
         if not self.acts.wish(piece.words):
             return None
         things = self._named(piece.text, "item")
@@ -494,13 +509,16 @@ class RequestScreen:
 
     def _stated_items(self, piece: Piece, requester: str) -> list[str]:
         """The items a statement names, as "item|whose": "my stapler" → stapler|my,
-        "the book ... belongs to Yang" → book|Yang Lei's (a later "it" keeps its owner)."""
+        "the book ... belongs to Yang" → book|Yang Lei's (a later "it" keeps its owner). An
+        item that only modifies another ("wipes *for the cups*") is not what the statement is
+        about, so a later "some" never means it."""
         tokens = self.lex.tokens(piece.text)
         mentions = self.lex.scan(tokens)
         words = [t.word for t in tokens]
+        modifying = modifiers(tokens, mentions)
         out: list[str] = []
         for n, m in enumerate(mentions):
-            if m.kind != "item" or len(m.ids) != 1:
+            if m.kind != "item" or len(m.ids) != 1 or m.start in modifying:
                 continue
             before = mentions[n - 1] if n else None
             whose = ""

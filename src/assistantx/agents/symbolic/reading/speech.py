@@ -63,6 +63,10 @@ _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
 _NEGATIONS = english.words("statement_negations")
+# Words that open how a task would be done, not on what: "print *in* colour", "copy *double*-sided"
+_MANNER = english.words("manner_openers")
+_WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
+_FOR_SPEAKER = frozenset({"i", "me", "my", "mine", "id", "im", "ive"})
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
 
 
@@ -120,6 +124,20 @@ class SpeechActs:
         if w[:2] in (["dont", "let"], ["do", "not"]) and set(w[2:4]) & _EVERYONE:
             return True  # "don't let anyone touch ..."
         return w[:2] == ["do", "not"] and w[2:3] == ["let"] and bool(set(w[3:5]) & _EVERYONE)
+
+    def world_wish(self, words: list[str]) -> bool:
+        """ "I wish the staff room had a kettle", "if only this place had ...": a wish about
+        the place, asking nobody for anything (no person named, nothing for the speaker,
+        nobody addressed); "if Hal could sign my form" is a request, read as one."""
+        w = _content(words)
+        opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None)
+        if opener is None:
+            return False
+        rest = w[len(opener) :]
+        if not rest or set(rest) & (_YOU | _FOR_SPEAKER):
+            return False
+        mentions = self.lex.scan(self.lex.tokens(" ".join(rest)))
+        return not any(m.kind in ("person", "self", "cue") for m in mentions)
 
     def thanks(self, words: list[str]) -> Act | None:
         w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
@@ -182,6 +200,8 @@ class SpeechActs:
         asked = second in _ASKEES or self._person_at(w, 1)
         if first in _MODALS and asked and "be" in w[2:4]:
             return "info"  # "will Ray be in tomorrow?"
+        if first in _MODALS and second in _YOU and self._ability_only(w[2:]):
+            return "info"  # "can you print in colour?": what it can do, nothing to act on
         if first in _MODALS and (asked or second in ("you", "u", "ya", "i", "we")):
             return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
         if first in _MODALS and second in ("not", "nt"):
@@ -267,6 +287,16 @@ class SpeechActs:
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
 
     # -- helpers -------------------------------------------------------------------------
+    def _ability_only(self, w: list[str]) -> bool:
+        """ "print in colour", "copy double-sided", "scan": a task verb with no object, only
+        a manner or nothing after it, so nothing of the office to act on."""
+        if not w or w[0] not in self.lex.cue_words:
+            return False
+        rest = w[1:]
+        if rest and rest[0] not in _MANNER:
+            return False
+        return not any(x in self.lex.items or self._named(x) for x in rest)
+
     def _kept_in_place(self, w: list[str]) -> bool:
         """ "... in the fridge", "... at the print corner": left where a facility keeps it, not
         taken to anyone ("leave my form on Hal's desk" names a person: a delivery)."""
