@@ -27,6 +27,9 @@ office does not have ("bring me a tape measure") ends unachievable, with a sente
 
 from __future__ import annotations
 
+import copy
+import dataclasses
+
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
@@ -172,11 +175,7 @@ class InstructionParser:
                     )
             chosen = self._chosen_reading(text, answer)
             if chosen:
-                self.lex.chosen = chosen
-                try:
-                    frame = self.parse(text, requester)
-                finally:
-                    self.lex.chosen = {}
+                frame = self._choosing(chosen).parse(text, requester)
                 continue
             asked_everything = frame.question == NOT_UNDERSTOOD
             combined = self.parse(f"{text}. {answer}", requester)
@@ -186,6 +185,15 @@ class InstructionParser:
             alone = self.parse(answer, requester)
             frame = alone if alone.understood else combined
         return frame
+
+    def _choosing(self, chosen: dict[str, Reading]) -> InstructionParser:
+        """The same stages, with a lexicon that reads the name words the requester was asked
+        about as they answered (nothing of this parser changes)."""
+        other = copy.copy(self)
+        other.lex = dataclasses.replace(self.lex, chosen=chosen)
+        other.screen = RequestScreen(self.office, other.lex)
+        other.readings = MentionReader(self.office, other.lex)
+        return other
 
     def _chosen_reading(self, text: str, answer: str) -> dict[str, Reading]:
         """Which reading an answer chose for a name that may be a word: it names the person,
