@@ -119,3 +119,19 @@ def test_a_wish_that_names_someone_to_act_is_still_read_as_a_request() -> None:
     assert _clinic("if only Rich would lend me his clipboard") == [
         ("transfer", "clipboard", "rich", "dawn")
     ]
+
+
+@pytest.mark.parametrize(
+    "text", ["Hu Jing's scissors please, to my desk", "scissors please", "Gao Min's pen pls"]
+)
+def test_a_verbless_request_for_an_item_is_a_fetch(text: str) -> None:
+    """An item's name that is also a verb form ("scissors") never makes the fragment a
+    statement (A11)."""
+    assert [(t[0], t[1], t[3]) for t in tasks_of("default", text, "lee")] == [
+        ("transfer", "scissors" if "scissors" in text else "pen", "lee")
+    ]
+
+
+def test_an_item_with_a_verb_after_it_is_still_a_statement() -> None:
+    frame = clinic_with_supplies().parse("Rich's clipboard snapped yesterday", "dawn")
+    assert frame.tasks == [] and frame.decline is not None

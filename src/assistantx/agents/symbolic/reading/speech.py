@@ -242,6 +242,7 @@ class SpeechActs:
             return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."
         if (
             w[0] not in self.lex.cue_words
+            and w[0] not in self.lex.items  # "scissors please": the thing asked for
             and w[0] not in language.verb_lemmas(w[0])  # "put it on ...": an imperative
             and not self._named(w[0])  # "rose needs ...": a name, not the verb "rise"
             and w[0] not in _MODALS | _AUX | _WILLING
@@ -260,6 +261,8 @@ class SpeechActs:
                 return True  # "Wang doesn't need the stapler any more": nobody asks
             if x in _NEED or x in _WILLING or x in ("mean", "meant"):
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
+            if x in self.lex.items:
+                continue  # "Hu's scissors": an item of the office, never the verb
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
                 return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
