@@ -153,7 +153,8 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             # "mine is leaking": asking for one of a kind you own is asking for someone else's
             if part.owner is not None and not _owns(office, part.owner, part.item):
                 raise ValueError(f"{part.owner} owns no {part.item}")
-            if part.owner is None and not set(office.owners_of(part.item)) - {a}:
+            supplied = office.supplier(part.item) is not None  # a shared one, nobody's
+            if part.owner is None and not supplied and not set(office.owners_of(part.item)) - {a}:
                 raise ValueError(f"nobody but the requester owns a {part.item}")
         if part.kind == "deliver":
             assert part.item is not None

@@ -96,6 +96,8 @@ def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
         return f"the {thing}"
     if you is not None and owner == you:
         return f"your {thing}"
+    if office.is_supply(item_id):  # owned by nobody: where it is kept names it
+        return f"{a_thing(thing)} from the {office.facility(owner).name}"
     return f"{person_name(office, owner)}'s {thing}"
 
 

@@ -78,6 +78,8 @@ def _item_people(office: Office, item: str) -> set[str]:
         if made.shape(office) == "transform":  # the copy comes back with the original
             found.add(owner)
         return found
+    if office.is_supply(item):  # owned by nobody: its keepers hand it out
+        return set(office.facility(owner).guards)
     found.update(office.owners_of(item_type) if owner == "*" else [owner])
     for person in list(found):
         if person == "*" or not any(p.id == person for p in office.people):

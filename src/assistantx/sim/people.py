@@ -168,6 +168,8 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
         if where == person:
             return None
         if where is not None and where == place and place in world.places_of(person):
+            if world.office.is_supply(item) and not world.in_stock(item):
+                return f"There is no {_item_name(world, item_type)} left here."
             return None  # e.g. a lunch kept in the fridge they sit next to
         return f"I don't have {thing}."
     if purpose == "collect":

@@ -163,21 +163,23 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             owner = part.owner or office.kept_owner(item_type, besides=a)
             keeper = office.keeper(owner, item_type) if owner else None
             if keeper is not None:  # kept in a cupboard: its guard takes it out
-                if owner != a:  # with the owner's own yes: the keeper can't give it away
+                item = f"{item_type}:{owner}"
+                supply = office.is_supply(item)  # owned by nobody: no one's yes to ask
+                if owner != a and not supply:  # the owner's own yes: a keeper can't give it
                     plan.add_role(
                         _named(
                             owner or "",
                             f"Could you let {who} have your {name} from the {keeper.name}?",
                         )
                     )
+                whose = "the" if supply else f"{owner}'s"
                 role = Role(
                     key=f"guard:{keeper.id}",
                     kind="guard",
-                    question=f"Could you take {owner}'s {name} out of the {keeper.name}?",
+                    question=f"Could you take {whose} {name} out of the {keeper.name}?",
                     group_question=f"Could anyone take the {name} out of the {keeper.name}?",
                     facility=keeper.id,
                 )
-                item = f"{item_type}:{owner}"
                 plan.add_goal({"holds": [a, item]})
                 plan.add_role(role)
                 plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))

@@ -207,6 +207,8 @@ class Decider:
         name = self.office.item_type(type_id).name
         if owner == requester:
             return f"your {name}"
+        if self.office.is_supply(item):
+            return item_phrase(self.office, item)
         return f"{self._name(owner)}'s {name}" if owner else name
 
     def _result(self, view: TaskView, agenda: Agenda) -> str:
@@ -217,12 +219,18 @@ class Decider:
         def who(person: str | None) -> str:
             if person is None:
                 return "someone"
-            return "you" if person == requester else self.office.person(person).name
+            return "you" if person == requester else person_name(self.office, person)
 
         def whose(person: str | None) -> str:
             return "your" if person == requester else f"{who(person)}'s"
 
         item = self.office.item_type(task.item).name if task.item else "item"
+
+        def whose_item(person: str | None) -> str:
+            if person is not None and task.item and self.office.is_supply(f"{task.item}:{person}"):
+                return item_phrase(self.office, f"{task.item}:{person}")  # owned by nobody
+            return f"{whose(person)} {item}"
+
         helpers = [
             s.person
             for s in view.states.values()
@@ -246,7 +254,7 @@ class Decider:
         text = template.format(
             to=who(task.recipient),
             have="have" if task.recipient == requester else "has",
-            whose=f"{whose(owner)} {item}",
+            whose=whose_item(owner),
             owner_s=whose(task.owner),
             item=item,
             product=self.office.item_type(made).name if made else "result",

@@ -26,7 +26,13 @@ from assistantx.core.office import Office
 from assistantx.core.ports.lock import Purpose
 from assistantx.core.task_schema import Task, TaskFrame, kind_shape, operation_of
 from assistantx.core.trace import Plan, SubGoal
-from assistantx.core.wording import a_thing, item_type_name, person_name, purpose_text
+from assistantx.core.wording import (
+    a_thing,
+    item_phrase,
+    item_type_name,
+    person_name,
+    purpose_text,
+)
 from assistantx.memory.graph import LongTermMemory
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
@@ -151,6 +157,8 @@ class Planner:
         fridge): the keeper cannot give it away for them (runtime/consent.py)."""
         if t.owner is None or t.owner == requester or t.item is None:
             return []
+        if self.office.is_supply(f"{t.item}:{t.owner}"):
+            return []  # owned by nobody (the stationery cupboard's pens): no one's yes
         kept = self.office.keeper(t.owner, t.item)
         if kept is None:
             return []
@@ -475,15 +483,20 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     def name(person: str | None) -> str:
         if person is not None and person == you:
             return "you"
-        return office.person(person).name if person else "anyone"
+        return person_name(office, person) if person else "anyone"
 
     def owner_s(person: str | None) -> str:
         if person is not None and person == you:
             return "your"
+        if person is not None and not office.is_person(person):
+            return "the"  # owned by nobody (a facility's supply)
         return f"{name(person)}'s"
 
     item = office.item_type(task.item).name if task.item else "item"
-    whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item)
+    if task.owner is not None and task.item and office.is_supply(f"{task.item}:{task.owner}"):
+        whose = item_phrase(office, f"{task.item}:{task.owner}")  # owned by nobody
+    else:
+        whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item)
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     op = operation_of(office, task)

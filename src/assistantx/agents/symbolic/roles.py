@@ -88,6 +88,8 @@ class Roles:
 
     def _whose(self, role: Role) -> str:
         owner = role.item_owner or role.requester
+        if not self.office.is_person(owner):
+            return "the"  # a supply owned by nobody: "take the pen out of the cupboard"
         return f"{self._name(owner)}'s"
 
     def _thing(self, role: Role) -> str:
