@@ -126,3 +126,39 @@ async def test_the_generator_verifies_tasks_on_an_office_with_shared_supplies(
     tasks = [_task(v, office, n) for n, v in enumerate((*pools["L1"], *pools["unachievable"]))]
     assert {"holds": ["lee", "tape:cupboard"]} in tasks[0].goal
     await verify_tasks(office, tasks)  # raises DatasetError naming the task otherwise
+
+
+async def test_a_pen_comes_from_the_cupboard_first(office: Office) -> None:
+    run = await run_instruction(office, "zhang", "Could you get me a pen?")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["zhang", "pen:cupboard"]})
+
+
+async def test_with_the_keeper_away_a_colleague_lends_one_with_their_own_yes(
+    office: Office,
+) -> None:
+    """Issue 23 (kept-item fallback): the cupboard's keeper is away, so a colleague who has
+    a pen at hand lends theirs, asked in their own chat; not "nobody could help"."""
+    run = await run_instruction(office, "zhang", "Could you get me a pen?", unavailable=("xu",))
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["zhang", "pen:*"]})
+    lender = next(i for i, h in run.sim.world.holder.items() if h == "zhang" and "pen:" in i)
+    owner = lender.partition(":")[2]
+    assert run.sim.world.office.is_person(owner)
+    assert any(m.chat.id == owner and "pen" in m.text for m in run.sim.messenger.sent)
+
+
+async def test_the_oracle_falls_back_alike(office: Office) -> None:
+    base = BaseInstruction(
+        id="s3",
+        requester="zhang",
+        text="Could you get me a pen?",
+        parts=(Part(kind="fetch", item="pen"),),
+    )
+    pools = classify(base, office)
+    assert "L2" in pools
+    fell_back = [v for v in pools["L2"] if v.unavailable == frozenset({"xu"})]
+    assert fell_back, pools
+    task = _task(fell_back[0], office, 1)
+    assert {"holds": ["zhang", "pen:*"]} in task.goal
+    await verify_tasks(office, [task])  # the oracle in the sim: done, in the planned steps

@@ -67,6 +67,10 @@ class TaskPlan:
     deliveries: list[tuple[str, Code]] = field(default_factory=list)  # recipient → collect code
     goal: list[Milestone] = field(default_factory=list)
     must_be_available: set[str] = field(default_factory=set)  # told without being asked
+    # what to do instead when a role of this plan finds nobody: the same instruction with
+    # nobody's kept item (the keeper is away), borrowing a colleague's at hand instead
+    fallback: TaskPlan | None = None
+    uses_kept: bool = False  # an item nobody named comes from where it is kept
 
     def role(self, key: str) -> Role:
         return next(r for r in self.roles if r.key == key)
@@ -94,7 +98,7 @@ def candidates(role: Role, ltm: LongTermMemory, requester: str) -> list[str]:
         return [role.person]
     if role.kind == "owner":
         assert role.item_type is not None
-        found = ltm.owners(role.item_type)
+        found = [p for p in ltm.owners(role.item_type) if _at_hand(role, p, ltm.office)]
     else:
         assert role.facility is not None
         found = ltm.guards(role.facility)
@@ -106,17 +110,36 @@ def able(role: Role, office: Office, person: str) -> bool:
     if role.kind == "named":
         return person == role.person
     if role.kind == "owner":
-        return any(o.type == role.item_type for o in office.person(person).owns)
+        owns = any(o.type == role.item_type for o in office.person(person).owns)
+        return owns and _at_hand(role, person, office)
     return person in office.facility(role.facility or "").guards
 
 
-def build_plan(base: BaseInstruction, office: Office) -> TaskPlan:
+def _at_hand(role: Role, person: str, office: Office) -> bool:
+    """Whether an owner has their item at hand: one kept in a cupboard is the keeper's to
+    hand out (it is fetched through the keeper, never from the owner's desk)."""
+    if role.item_type is None or not office.is_person(person):
+        return True
+    try:
+        return office.keeper(person, role.item_type) is None
+    except KeyError:
+        return True
+
+
+def build_plan(base: BaseInstruction, office: Office, *, kept: bool = True) -> TaskPlan:
+    """``kept``: an item nobody named comes from where one is kept (a cupboard); the plan's
+    ``fallback`` is the same instruction borrowing a colleague's instead."""
     plan = TaskPlan()
     a = base.requester
     who = office.person(a).name
     for part in base.parts:
-        _add_part(plan, part, a, who, office)
+        _add_part(plan, part, a, who, office, use_kept=kept)
     plan.add_goal({"informed": a})
+    if plan.uses_kept:
+        other = build_plan(base, office, kept=False)
+        owners = [r for r in other.roles if r.kind == "owner"]
+        if all(any(able(r, office, p.id) for p in office.people if p.id != a) for r in owners):
+            plan.fallback = other  # someone has one at hand to lend
     return plan
 
 
@@ -153,15 +176,18 @@ def _guard(office: Office, operation: str, question: str, group_question: str | 
     )
 
 
-def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> None:
+def _add_part(
+    plan: TaskPlan, part: Part, a: str, who: str, office: Office, *, use_kept: bool = True
+) -> None:
     kind = "make" if made_kind(office, part.kind) else part.kind  # "coffee": make a coffee
     match kind:
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
             # no owner named: the one kept at a facility (the cupboard's label maker) first
-            owner = part.owner or office.kept_owner(item_type, besides=a)
+            owner = part.owner or (office.kept_owner(item_type, besides=a) if use_kept else None)
             keeper = office.keeper(owner, item_type) if owner else None
+            plan.uses_kept |= keeper is not None and part.owner is None
             if keeper is not None:  # kept in a cupboard: its guard takes it out
                 item = f"{item_type}:{owner}"
                 supply = office.is_supply(item)  # owned by nobody: no one's yes to ask

@@ -175,12 +175,14 @@ class Planner:
             )
         ]
 
-    def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
-        if t.kind == "transfer" and t.owner is None and t.item:
-            # nobody's named: the one kept at a facility (the cupboard's label maker) first,
-            # as the oracle does (agents/oracle/plan.py)
-            kept = self.office.kept_owner(t.item, besides=requester)
-            t = t.model_copy(update={"owner": kept}) if kept else t
+    def _compile(self, n: int, t: Task, requester: str, *, kept: bool = True) -> CompiledTask:
+        """``kept``: whether a transfer that names nobody's item uses the one kept at a
+        facility; without it (the keeper is away), any colleague's at hand is borrowed."""
+        if t.kind == "transfer" and t.owner is None and t.item and kept:
+            # nobody's named: the one kept at a facility (the cupboard's label maker, its
+            # supply of tape) first, as the oracle does (agents/oracle/plan.py)
+            keeper = self.office.kept_owner(t.item, besides=requester)
+            t = t.model_copy(update={"owner": keeper}) if keeper else t
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
         phases: list[Phase] = []
         roles: list[Role] = []
@@ -326,8 +328,16 @@ class Planner:
     # -- progress ------------------------------------------------------------------------
     def agenda(self, frame: TaskFrame, ltm: LongTermMemory, ev: Evidence, now: float) -> Agenda:
         views: list[TaskView] = []
-        for compiled in self.compile(frame):
-            views.append(self._view(compiled, ltm, ev, now))
+        for n, (task, compiled) in enumerate(zip(frame.tasks, self.compile(frame), strict=True)):
+            view = self._view(compiled, ltm, ev, now)
+            if view.status == "unachievable" and task.owner is None and compiled.task.owner:
+                # the kept one cannot be had (its keeper is away, none is left): borrow one
+                # from a colleague instead, with their own yes, as the oracle does
+                other = self._view(
+                    self._compile(n, task, frame.requester, kept=False), ltm, ev, now
+                )
+                view = other if other.status != "unachievable" else view
+            views.append(view)
         return Agenda(frame, views)
 
     def _view(

@@ -172,7 +172,12 @@ class Roles:
         if role.fixed is not None:
             return [role.fixed]
         if role.kind == "lend" and role.item_type is not None:
-            found = [p for p in ltm.owners(role.item_type) if p != role.beneficiary]
+            # an owner whose one is kept at a facility (in a cupboard) does not have it at hand
+            found = [
+                p
+                for p in ltm.owners(role.item_type)
+                if p != role.beneficiary and self.office.keeper(p, role.item_type) is None
+            ]
         elif role.kind == "seal":
             tool = self.office.seal_tool()
             found = ltm.owners(tool) if tool else []
@@ -221,6 +226,9 @@ class Roles:
                 if ev.stance_of(group_q, t.person) == "yes"
                 and t.person not in helpers
                 and t.person != role.requester  # never the helper of their own request
+                # a keeper's job is done by a keeper: "I have one, you can borrow it" to
+                # "could anyone take it out of the cupboard?" is no yes (the oracle's rule)
+                and (role.kind != "keep" or t.person in ltm.guards(role.facility or ""))
             ]
         for person in [*people, *helpers]:
             why = self._exclusion(role, person, ltm, ev, now)

@@ -60,7 +60,7 @@ def related_people(
 ) -> list[str]:
     """Everyone whose absence can change what the optimal agent does."""
     found: set[str] = set(plan.must_be_available)
-    for role in plan.roles:
+    for role in [*plan.roles, *(plan.fallback.roles if plan.fallback else ())]:
         found.update(candidates(role, ltm, requester))
         found.update(p.id for p in office.people if able(role, office, p.id))
     found.discard(requester)
@@ -197,6 +197,8 @@ def _task(variant: Variant, office: Office, number: int) -> Task:
     plan = build_plan(base, office)
     achievable = variant.category != "unachievable"
     level: Level = "L3" if not achievable else variant.run.log.level
+    if variant.run.log.fell_back and plan.fallback is not None:
+        plan = plan.fallback  # a colleague's was borrowed: any of the type will do
     goal = plan.goal if achievable else [{"informed": base.requester}]
     extra = {} if achievable else {"requested_goal": plan.goal}
     return Task(
