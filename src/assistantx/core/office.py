@@ -49,6 +49,9 @@ class Location(_Model):
 
 
 ItemKind = Literal["belonging", "personal", "electronic", "product"]
+# The properties of an item type that kinds of task ask for (task_kinds: what a kind works
+# on, the tool its doer needs), instead of type ids: a paper one signs, a seal, a file.
+ItemProperty = Literal["signable", "seals", "electronic"]
 
 
 class ItemType(_Model):
@@ -104,11 +107,22 @@ class Operation(_Model):
         description="the item it works on does not come back (a shredder): the requester is "
         "told it was done, nothing is handed back",
     )
+    sends_out: bool = Field(
+        default=False,
+        description="it sends the item to someone outside the office (a fax to a tax office): "
+        "nothing comes back; the requester is told where it went",
+    )
     done: str | None = Field(
         default=None,
         description="what it did to an item, as told to people ('scanned to PDF'); default: "
         "the past participle of its name's verb ('shredded', 'faxed')",
     )
+
+    @property
+    def returns_item(self) -> bool:
+        """Whether the item it works on comes back to be collected (not shredded, not sent
+        outside)."""
+        return not (self.consumes or self.sends_out)
 
     def shape(self, office: Office) -> OperationShape:
         """``make``: a product from nothing (coffee); ``render``: a product from a file
@@ -259,6 +273,10 @@ class Office(_Model):
         return here[0] if len(here) == 1 else None
 
     # -- item types by property ---------------------------------------------------------
+    def type_with(self, prop: ItemProperty) -> str | None:
+        """The office's item type that has ``prop`` (its signable paper, its seal, its file)."""
+        return next((t.id for t in self.item_types if getattr(t, prop)), None)
+
     def signable_type(self) -> str | None:
         """The item type a person signs or stamps (the office's ``signable`` paper)."""
         return next((t.id for t in self.item_types if t.signable), None)
@@ -499,7 +517,10 @@ def _check_references(office: Office, where: str) -> None:
         for field_name, type_id in (("input", op_.input), ("product", op_.product)):
             if type_id is not None and type_id not in type_ids:
                 fail(f"operations ({op_.id}).{field_name}", f"unknown item type {type_id!r}")
-        if op_.product is not None and office.item_type(op_.product).kind != "product":
+        if op_.product is not None and office.item_type(op_.product).kind not in (
+            "product",
+            "electronic",  # a file made from a paper (scan to PDF), sent by message
+        ):
             fail(f"operations ({op_.id}).product", f"item type {op_.product!r} is not a product")
         if not office.offering(op_.id):
             fail(f"operations ({op_.id})", "no facility offers it")

@@ -35,8 +35,13 @@ def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None 
     op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
     if op is None or shape not in ("transform", "treat"):
         return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
+    if shape == "transform" and op.product and office.item_type(op.product).electronic:
+        made = office.item_type(op.product).name  # a PDF goes by message, not into the locker
+        return f"take {thing} out, {op.name} it, send the {made} to its owner and put it back"
     if shape == "transform":
         return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
+    if not op.returns_item:  # shredded, faxed out: nothing goes back into the locker
+        return f"take {thing} out and {op.name} it"
     return f"take {thing} out, {op.name} it and put it back"
 
 

@@ -39,12 +39,11 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
-from assistantx.core import english
+from assistantx.core import english, task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, Person
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.core.task_schema import SEAL_TOOL
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.recipients import named_recipients
 
@@ -55,8 +54,9 @@ ConsentState = Literal["yes", "no", "pending", "not_asked"]
 # Purposes that take an item out of the locker for good, and those that put one in.
 _COLLECT = "collect"
 _DEPOSIT = "deposit"
-# Purposes a named person does by hand on the requester's item (no facility involved).
-_BY_HAND = ("sign", "seal")
+# Purposes a named person does by hand on the requester's item (no facility involved): the
+# table's person kinds (sign, seal, ...).
+_BY_HAND = frozenset(task_kinds.person_kinds())
 
 
 @dataclass(frozen=True)
@@ -210,7 +210,8 @@ def _is_party(office: Office, stm: ShortTermMemory, contact: str, item: str, pur
     if purpose == _COLLECT:
         return contact in named_recipients(office, stm)
     if purpose in _BY_HAND:
-        if purpose == "seal" and _owns(office, contact, SEAL_TOOL):
+        tool = task_kinds.tool_type(purpose, office)  # whoever owns the seal may stamp
+        if tool is not None and _owns(office, contact, tool):
             return True
         return contact in named_recipients(office, stm)
     # work at a facility (copy, heat, produce, ...): its guards run it

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from assistantx.core import task_kinds
 from assistantx.core.office import Operation, OperationShape, Ownership
 from assistantx.core.ports.lock import WORK_PURPOSES
-from assistantx.core.task_schema import FILE_KIND, kind_shape
+from assistantx.core.task_schema import FILE_KIND, PERSON_KINDS, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
     asks_to_receive,
@@ -44,11 +45,9 @@ def _thing(world: World, item: str, speaker: str) -> str:
 
 
 def can_do(world: World, person: str, request: str) -> bool:
-    if request == "sign":
-        return True
-    if request == "seal":
-        tool = world.office.seal_tool()
-        return tool is not None and world.owns(person, tool)
+    if request in PERSON_KINDS:  # by hand: with the kind's tool, if it needs one (a seal)
+        tool = task_kinds.tool_type(request, world.office)
+        return not task_kinds.needs_tool(request) or (tool is not None and world.owns(person, tool))
     if request == FILE_KIND:
         return any(
             world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
@@ -177,9 +176,9 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     if purpose in WORK_PURPOSES:
         if where != LOCKER:
             return missing
-        tool = world.office.seal_tool()
-        if purpose == "seal" and (tool is None or not world.owns(person, tool)):
-            return "I don't have the seal."
+        tool = task_kinds.tool_type(purpose, world.office)
+        if task_kinds.needs_tool(purpose) and (tool is None or not world.owns(person, tool)):
+            return f"I don't have the {_item_name(world, tool) if tool else purpose}."
         shape = kind_shape(purpose)
         if shape is not None and _operation_here(world, person, place, (shape,)) is None:
             ops = world.office.with_shape(shape)  # the office's word: "scan", not "copy"
@@ -221,13 +220,17 @@ def perform_handover(
     elif purpose == "copy":
         world.copied.add(item)
         op = _operation_here(world, person, place, ("transform",))
-        product = op.product if op is not None else item.split(":", 1)[0]
-        world.produce(time, f"{product}:{item.split(':', 1)[1]}", by=person)
+        product = (op.product if op is not None else None) or item.split(":", 1)[0]
+        owner = item.split(":", 1)[1]
+        if world.office.item_type(product).electronic:  # a PDF: sent to its owner by message
+            world.receive_file(time, owner, f"{product}:{owner}")
+        else:
+            world.produce(time, f"{product}:{owner}", by=person)
     elif purpose == "heat":
         world.heated.add(item)
         world.note(time, "heated", item=item, by=person)
         op = _operation_here(world, person, place, ("treat",))
-        if op is not None and op.consumes:  # shredded: it stays where the machine is
+        if op is not None and not op.returns_item:  # shredded, faxed out: it stays there
             world.move_item(time, item, place, by=person)
     elif purpose == "produce":
         item_type, _, owner = item.partition(":")

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
@@ -275,32 +276,43 @@ def _add_part(
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
             plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
+            plan.add_goal({"copied": doc})
+            if office.item_type(made).electronic:  # scanned to PDF: the file is sent by message
+                plan.add_goal({"received": [a, f"{made}:{a}"]})
+                plan.add_goal({"holds": [a, doc]})
+                return
             # the copy goes to the named recipient; the original comes back to its owner
             recipient = _recipient(plan, part, who)
             plan.deliveries.append((recipient, Code(recipient, f"{made}:{a}", "collect")))
-            plan.add_goal({"copied": doc})
             plan.add_goal({"holds": [part.to or a, f"{made}:{a}"]})
             plan.add_goal({"holds": [a, doc]})
-        case "sign" | "seal":
-            paper = office.signable_type() or ""
+        case _ if task_kinds.kind(part.task_kind()).by_person:
+            # a person's work on the requester's paper (sign, seal ...), from the table: a
+            # named doer, or whoever owns the kind's tool (the seal)
+            spec = task_kinds.kind(part.task_kind())
+            paper = task_kinds.item_type_of(spec.id, office) or ""
             doc = f"{paper}:{a}"
-            paper_name = office.item_type(paper).name
-            if part.kind == "sign":
-                signer = part.signer or ""
-                role = _named(signer, f"Could you sign {who}'s {paper_name}?")
-                plan.add_goal({"signed": [doc, signer]})
+            whose = f"{who}'s {office.item_type(paper).name}"
+            ask = spec.ask or spec.id + " {whose}"
+            tool = task_kinds.tool_type(spec.id, office)
+            if spec.tool is None:
+                doer = part.signer or ""
+                role = _named(doer, f"Could you {ask.format(whose=whose, your='your')}?")
+                plan.add_goal({spec.milestone: [doc, doer]})
             else:
                 role = Role(
-                    key="owner:seal",
+                    key=f"owner:{tool}",
                     kind="owner",
-                    question=f"Could you stamp {who}'s {paper_name} with your seal?",
-                    group_question=f"Could anyone stamp {who}'s {paper_name} with the seal?",
-                    item_type=office.seal_tool(),
+                    question=f"Could you {ask.format(whose=whose, your='your')}?",
+                    group_question=f"Could anyone {ask.format(whose=whose, your='the')}?",
+                    item_type=tool,
                 )
-                plan.add_goal({"sealed": doc})
+                plan.add_goal({spec.milestone: doc})
             plan.add_role(role)
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
-            plan.visits.append(Visit(role.key, role.key, (Code(role.key, doc, part.kind),)))
+            plan.visits.append(
+                Visit(role.key, role.key, (Code(role.key, doc, spec.purpose or ""),))
+            )
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
             plan.add_goal({"holds": [a, doc]})
         case "make":
@@ -357,7 +369,7 @@ def _add_part(
                 Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
             )
             plan.add_goal({"heated": kept})
-            if not op.consumes:  # a shredded document does not come back
+            if op.returns_item:  # a shredded or faxed-out document does not come back
                 plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
                 plan.add_goal({"holds": [a, kept]})
         case "forward_file":

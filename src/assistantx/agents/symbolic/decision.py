@@ -250,7 +250,14 @@ class Decider:
         op_id = operation_of(self.office, task)
         op = self.office.operation(op_id) if op_id else None
         spec = task_kinds.kind(task.kind)
-        template = spec.done_consumed if op and op.consumes and spec.done_consumed else spec.done
+        template = spec.done
+        product = op.product if op is not None else None
+        if product and self.office.item_type(product).electronic and spec.done_file:
+            template, made = spec.done_file, product  # scanned to PDF: the file was sent
+        if op is not None and not op.returns_item and spec.done_consumed:
+            template = spec.done_consumed  # nothing was handed back
+            if op.sends_out and task.destination and spec.done_sent:
+                template = spec.done_sent  # "your form was faxed to the tax office"
         text = template.format(
             to=who(task.recipient),
             have="have" if task.recipient == requester else "has",
@@ -260,6 +267,7 @@ class Decider:
             product=self.office.item_type(made).name if made else "result",
             by=who(task.actor),
             done=done_words(op) if op else task.kind,
+            dest=task.destination or "",
         )
         return text + by
 

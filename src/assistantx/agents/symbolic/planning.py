@@ -248,7 +248,11 @@ class Planner:
                 )
                 roles = [guard, source, recipient]
                 back: list[Phase]
-                if t.recipient == owner:
+                if self.office.item_type(product).electronic:
+                    # scanned to PDF: the file is sent by message, only the original comes back
+                    roles = [guard, source]
+                    back = [Handover(source, (leg(item, "collect", owner),))]
+                elif t.recipient == owner:
                     back = [
                         Handover(
                             source, (leg(item, "collect", owner), leg(product, "collect", owner))
@@ -296,8 +300,8 @@ class Planner:
                 )
                 party = {"source": source, "doer": doer, "recipient": recipient}
                 steps = spec.steps
-                if op is not None and self.office.operation(op).consumes:
-                    # a shredded document does not come back: nobody collects it
+                if op is not None and not self.office.operation(op).returns_item:
+                    # a shredded or faxed-out document does not come back: nobody collects it
                     steps = tuple(s for s in steps if s.party != "recipient")
                 # A person who does the work is sought first (a signer may be away); a
                 # facility's guard is found where the facility is.

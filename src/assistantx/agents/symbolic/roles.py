@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.evidence import Evidence, Question
+from assistantx.core import task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing
@@ -132,10 +133,11 @@ class Roles:
                 )
             case "print" | "copy":
                 return f"{self._operation_name(role)} {self._whose(role)} {thing} at the {place}"
-            case "sign":
-                return f"sign {self._whose(role)} {thing}"
-            case "seal":
-                return f"stamp {self._whose(role)} {thing} with {'a' if anyone else 'your'} seal"
+            case kind if task_kinds.kind_of(kind) and task_kinds.kind(kind).ask:
+                # a person's work from the table ("sign X's document", "stamp ... with a seal")
+                ask = task_kinds.kind(kind).ask or ""
+                whose = f"{self._whose(role)} {thing}"
+                return ask.format(whose=whose, your="a" if anyone else "your")
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
             case "heat":
@@ -178,8 +180,8 @@ class Roles:
                 for p in ltm.owners(role.item_type)
                 if p != role.beneficiary and self.office.keeper(p, role.item_type) is None
             ]
-        elif role.kind == "seal":
-            tool = self.office.seal_tool()
+        elif task_kinds.needs_tool(role.kind):  # whoever owns the tool (the seal)
+            tool = task_kinds.tool_type(role.kind, self.office)
             found = ltm.owners(tool) if tool else []
         elif role.facility is not None:
             found = ltm.guards(role.facility)
