@@ -308,8 +308,14 @@ class Office(_Model):
         return facility.supply(type_id) is not None
 
     def supplier(self, type_id: str) -> Facility | None:
-        """The facility that keeps ``type_id`` for anyone (the stationery cupboard's pens)."""
-        return next((f for f in self.facilities if f.supply(type_id) is not None), None)
+        """The facility that keeps ``type_id`` for anyone (the stationery cupboard's pens);
+        one whose count is 0 has none to give."""
+
+        def has(f: Facility) -> bool:
+            supply = f.supply(type_id)
+            return supply is not None and supply.count != 0
+
+        return next((f for f in self.facilities if has(f)), None)
 
     def owner_name(self, owner: str) -> str | None:
         """A person's name, None for an item owned by nobody (its owner part a facility)."""

@@ -120,7 +120,10 @@ def _about_item(world: World, person: str, type_id: str, text: str) -> str:
     kept = [
         i
         for i, where in world.holder.items()
-        if i.startswith(f"{type_id}:") and where in world.places_of(person) and where != person
+        if i.startswith(f"{type_id}:")
+        and where in world.places_of(person)
+        and where != person
+        and (not world.office.is_supply(i) or world.in_stock(i))  # none left: they say so
     ]
     if kept:  # kept in a cupboard they run
         return f"Yes, I can take the {name} out for the robot."

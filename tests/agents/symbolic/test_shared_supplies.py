@@ -162,3 +162,19 @@ async def test_the_oracle_falls_back_alike(office: Office) -> None:
     task = _task(fell_back[0], office, 1)
     assert {"holds": ["zhang", "pen:*"]} in task.goal
     await verify_tasks(office, [task])  # the oracle in the sim: done, in the planned steps
+
+
+async def test_an_empty_counted_supply_sends_the_robot_to_a_colleague() -> None:
+    office = parse_office(_raw(supplies=[{"type": "pen", "count": 0}]))
+    run = await run_instruction(office, "zhang", "Could you get me a pen?")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert not run.sim.world.check({"holds": ["zhang", "pen:cupboard"]})
+    assert run.sim.world.check({"holds": ["zhang", "pen:*"]})
+
+
+def test_the_oracle_skips_a_supply_the_office_says_is_empty() -> None:
+    office = parse_office(_raw(supplies=[{"type": "pen", "count": 0}]))
+    base = BaseInstruction(
+        id="s4", requester="zhang", text="get me a pen", parts=(Part(kind="fetch", item="pen"),)
+    )
+    assert [r.key for r in build_plan(base, office).roles] == ["owner:pen"]
