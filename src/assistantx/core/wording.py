@@ -26,13 +26,22 @@ PURPOSE_TEXT = {
 }
 
 
-def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None = None) -> str:
+def purpose_text(
+    office: Office,
+    purpose: str,
+    item_id: str,
+    *,
+    you: str | None = None,
+    operation: str | None = None,
+) -> str:
     """What the person does at the locker for a code of ``purpose`` on ``item_id``, in the
     office's words: "take your document out, scan it and put the original and the scan back"
     where the office's operation of the copy shape is a scan."""
     thing = item_phrase(office, item_id, you=you)
     shape = kind_shape(purpose)
     op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
+    if operation is not None and shape is not None:  # the one the code is for (scan, not copy)
+        op = office.operation(operation)
     if op is None or shape not in ("transform", "treat"):
         return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
     if shape == "transform" and op.product and office.item_type(op.product).electronic:

@@ -9,6 +9,7 @@ answer; the others stay silent.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from assistantx.core import task_kinds
@@ -60,18 +61,22 @@ def _owns(world: World, person: str) -> list[Ownership]:
 
 
 def _operation_here(
-    world: World, person: str, place: str, shapes: tuple[OperationShape, ...]
+    world: World, person: str, place: str, shapes: tuple[OperationShape, ...], told: str = ""
 ) -> Operation | None:
-    """The operation of one of ``shapes`` that ``person`` runs at a facility at ``place``."""
+    """The operation of one of ``shapes`` that ``person`` runs at a facility at ``place``; of
+    several (copy and scan at one machine), the one the code's message asks for ("scan it")."""
     office = world.office
+    found: list[Operation] = []
     for f in office.facilities:
         if f.location != place or person not in f.guards:
             continue
         for op_id in f.operations:
             op = office.operation(op_id)
             if op.shape(office) in shapes:
-                return op
-    return None
+                found.append(op)
+    words = set(re.findall(r"[a-z]+", told.lower()))
+    asked = [op for op in found if set(op.name.lower().split()) <= words]
+    return next(iter(asked or found), None)
 
 
 def direct_reply(world: World, person: str, text: str) -> Reply | None:
@@ -207,7 +212,7 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
 
 
 def perform_handover(
-    world: World, time: float, person: str, purpose: str, item: str, place: str
+    world: World, time: float, person: str, purpose: str, item: str, place: str, told: str = ""
 ) -> None:
     """Do the physical act once the door is open (the caller checked handover_problem)."""
     if purpose == "deposit":
@@ -222,7 +227,7 @@ def perform_handover(
         world.note(time, "sealed", item=item, by=person)
     elif purpose == "copy":
         world.copied.add(item)
-        op = _operation_here(world, person, place, ("transform",))
+        op = _operation_here(world, person, place, ("transform",), told)
         product = (op.product if op is not None else None) or item.split(":", 1)[0]
         owner = item.split(":", 1)[1]
         if world.office.item_type(product).electronic:  # a PDF: sent to its owner by message
@@ -232,7 +237,7 @@ def perform_handover(
     elif purpose == "heat":
         world.heated.add(item)
         world.note(time, "heated", item=item, by=person)
-        op = _operation_here(world, person, place, ("treat",))
+        op = _operation_here(world, person, place, ("treat",), told)
         if op is not None and not op.returns_item:  # shredded, faxed out: it stays there
             world.move_item(time, item, place, by=person)
     elif purpose == "produce":

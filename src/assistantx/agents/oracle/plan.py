@@ -43,6 +43,7 @@ class Code:
     role: str  # role key, or "@requester"
     item: str  # item id; "{role}" is replaced by the role's person when resolved
     purpose: str
+    operation: str | None = None  # the office operation of a work step (scan, not copy)
 
 
 @dataclass(frozen=True)
@@ -274,7 +275,9 @@ def _add_part(
             plan.add_role(role)
             doc = f"{source}:{a}"
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
-            plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
+            plan.visits.append(
+                Visit(role.facility or "", role.key, (Code(role.key, doc, "copy", op.id),))
+            )
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
             plan.add_goal({"copied": doc})
             if office.item_type(made).electronic:  # scanned to PDF: the file is sent by message
@@ -366,7 +369,11 @@ def _add_part(
                 plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, kept, "deposit"),)))
             plan.add_role(op_role)
             plan.visits.append(
-                Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
+                Visit(
+                    op_role.facility or "",
+                    op_role.key,
+                    (Code(op_role.key, kept, "heat", op.id),),
+                )
             )
             plan.add_goal({"heated": kept})
             if op.returns_item:  # a shredded or faxed-out document does not come back

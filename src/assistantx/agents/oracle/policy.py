@@ -250,7 +250,11 @@ def optimal_script(
         batch: list[Action] = []
         for code in visit.codes:
             purpose: Purpose = code.purpose  # type: ignore[assignment]
-            batch.append(SendQR(contact=person, item=item_of(code), purpose=purpose))
+            batch.append(
+                SendQR(
+                    contact=person, item=item_of(code), purpose=purpose, operation=code.operation
+                )
+            )
         batch.append(WaitInPlace(person=person, timeout_s=HANDOVER_TIMEOUT_S))
         feedback = yield batch
         if not feedback.ok:

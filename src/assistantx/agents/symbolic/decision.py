@@ -143,9 +143,12 @@ class Decider:
             actions.append(Inform(contact=person, content=self.roles.inform(phase.role, person)))
         if ev.robot_place != place:
             actions.append(Move(place=place))
+        # a work step names its operation: a facility may offer several (copy and scan)
+        op = phase.role.operation if phase.role.operation and phase.role.facility else None
         for item, purpose in view.items:
             if not ev.used(item, purpose) and not ev.holds_code(person, item, purpose):
-                actions.append(SendQR(contact=person, item=item, purpose=purpose))
+                work = op if purpose in task_kinds.work_purposes() else None
+                actions.append(SendQR(contact=person, item=item, purpose=purpose, operation=work))
         thought = f"hand-over with {self._name(person)} at {place_name(self.office, place)}"
         if any(isinstance(a, Move) for a in actions) and any(q.group for q in ev.questions):
             # Late helpers in a group chat may still write while the robot drives; their
