@@ -15,7 +15,7 @@ from assistantx.agents.oracle.plan import build_plan
 from assistantx.core.errors import OfficeError
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
-from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
+from assistantx.evaluation.dataset.generate import _task, classify, generate, verify_tasks
 from assistantx.runtime.consent import consent_owner
 from assistantx.sim.people import handover_problem
 from assistantx.sim.world import World
@@ -178,3 +178,19 @@ def test_the_oracle_skips_a_supply_the_office_says_is_empty() -> None:
         id="s4", requester="zhang", text="get me a pen", parts=(Part(kind="fetch", item="pen"),)
     )
     assert [r.key for r in build_plan(base, office).roles] == ["owner:pen"]
+
+
+def test_a_small_office_gets_the_variants_it_has_not_a_refusal(
+    office: Office, caplog: pytest.LogCaptureFixture
+) -> None:
+    """Round 4 (b4): one base cannot give the 22 distinct unachievable variants the default
+    dataset aims for; ``dataset generate`` (verified by the oracle) takes what there is."""
+    base = BaseInstruction(
+        id="s5",
+        requester="lee",
+        text="Could you get me some tape?",
+        parts=(Part(kind="fetch", item="tape"),),
+    )
+    tasks = generate(office, [base], verify=True)
+    assert {t.level for t in tasks} == {"L1", "L3"} and not all(t.achievable for t in tasks)
+    assert "distinct unachievable variants" in caplog.text
