@@ -12,6 +12,7 @@ import yaml
 from symbolic_run import run_instruction
 
 from assistantx.agents.oracle.plan import build_plan
+from assistantx.cli.office_cmd import describe
 from assistantx.core.errors import OfficeError
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
@@ -194,3 +195,8 @@ def test_a_small_office_gets_the_variants_it_has_not_a_refusal(
     tasks = generate(office, [base], verify=True)
     assert {t.level for t in tasks} == {"L1", "L3"} and not all(t.achievable for t in tasks)
     assert "distinct unachievable variants" in caplog.text
+
+
+def test_office_show_lists_the_supplies() -> None:
+    shown = describe(parse_office(_raw(supplies=[{"type": "tape"}, {"type": "pen", "count": 3}])))
+    assert "stationery cupboard @ print_room: tape, pen (3)" in shown
