@@ -12,7 +12,7 @@ from consent_memory import answered, memory
 from symbolic_run import run_instruction
 
 from assistantx.core.actions import SendQR
-from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part
 from assistantx.core.wording import purpose_text
 from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
@@ -86,3 +86,13 @@ def test_a_consuming_service_is_not_put_back() -> None:
     office = parse_office(raw)
     text = purpose_text(office, "heat", "document:lee", operation="shred")
     assert text == "take Lee Ming's document out and shred it"
+
+
+async def test_a_treatment_after_a_fetch_of_the_same_item_starts_from_the_requester() -> None:
+    """Round 4 (b6): a request read as two tasks on one item (bring my lunch from the fridge,
+    then heat it): the second starts from the requester, who has it now, and counts only the
+    hand-overs after the first task's, so the lunch is deposited again, heated and returned."""
+    run = await run_instruction(load_office(), "lee", "Take my lunch out of the fridge and heat it")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"heated": "lunch:lee"})
+    assert run.sim.world.check({"holds": ["lee", "lunch:lee"]})

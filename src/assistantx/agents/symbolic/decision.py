@@ -145,8 +145,8 @@ class Decider:
             actions.append(Move(place=place))
         # a work step names its operation: a facility may offer several (copy and scan)
         op = phase.role.operation if phase.role.operation and phase.role.facility else None
-        for item, purpose in view.items:
-            if not ev.used(item, purpose) and not ev.holds_code(person, item, purpose):
+        for item, purpose in view.pending:
+            if not ev.holds_code(person, item, purpose):
                 work = op if purpose in task_kinds.work_purposes() else None
                 actions.append(SendQR(contact=person, item=item, purpose=purpose, operation=work))
         thought = f"hand-over with {self._name(person)} at {place_name(self.office, place)}"
