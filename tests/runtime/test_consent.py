@@ -41,6 +41,7 @@ def offices(draw: st.DrawFn) -> Office:
     types = ["stapler", "lunch", "document", "seal"]
     guards_printer = draw(st.lists(st.sampled_from(people), min_size=1, max_size=2, unique=True))
     guards_fridge = draw(st.lists(st.sampled_from(people), min_size=1, max_size=2, unique=True))
+    guards_cupboard = draw(st.lists(st.sampled_from(people), min_size=1, max_size=2, unique=True))
     owned: list[dict[str, Any]] = []
     for p in people:
         owns = []
@@ -76,6 +77,7 @@ def offices(draw: st.DrawFn) -> Office:
             {"id": "seal", "name": "seal"},
             {"id": "file", "name": "file", "kind": "electronic"},
             {"id": "copy", "name": "copy", "kind": "product"},
+            {"id": "tape", "name": "tape", "consumable": True},
         ],
         "operations": [
             {
@@ -96,6 +98,13 @@ def offices(draw: st.DrawFn) -> Office:
                 "guards": guards_printer,
             },
             {"id": "fridge", "name": "fridge", "location": "kitchen", "guards": guards_fridge},
+            {  # supplies owned by nobody, kept for anyone
+                "id": "cupboard",
+                "name": "stationery cupboard",
+                "location": "print_room",
+                "guards": guards_cupboard,
+                "supplies": [{"type": "tape"}, {"type": "stapler"}],
+            },
         ],
         "groups": [{"id": "all", "name": "Everyone", "members": people}],
         "robot": {"home": "print_room"},
@@ -134,6 +143,7 @@ def episodes(draw: st.DrawFn) -> tuple[Office, str, str, list[Say]]:
         )
     )
     items = [f"{t.id}:{p}" for t in office.item_types for p in people] + ["copy:" + requester]
+    items += ["tape:cupboard", "stapler:cupboard"]  # owned by nobody
     events: list[Say] = []
     for _ in range(draw(st.integers(min_value=1, max_value=14))):
         kind = draw(st.sampled_from(["ask", "reply", "reply", "claim", "code", "code"]))
@@ -250,7 +260,8 @@ def test_codes_go_only_to_parties_who_answered(
             continue
         assert any(t.direction == "in" and t.person == code.contact for t in stm.dialogue)
         item_type, _, owner = code.item.partition(":")
-        keeper = office.keeper(owner, item_type) if owner in {p.id for p in office.people} else None
+        kept = owner in {p.id for p in office.people} or office.is_supply(code.item)
+        keeper = office.keeper(owner, item_type) if kept else None
         workers = (
             {g for f in office.facilities if f.operations for g in f.guards}
             if item_type in ("document", "copy")
@@ -262,6 +273,84 @@ def test_codes_go_only_to_parties_who_answered(
         named = {p.id for p in office.people if any(p.id in words for words in said)}
         parties = {owner, *(keeper.guards if keeper else ()), *workers, *seal_owners, *named}
         assert code.contact in parties, (code, text)
+
+
+def _asked_and_answered(
+    stm: ShortTermMemory, person: str, question: str, answer: str, n: int
+) -> None:
+    dm = ChatRef(kind="dm", id=person)
+    stm.dialogue += [
+        DialogueTurn(
+            time=2 * n, direction="out", chat=dm, person=person, text=question, question_id=f"k{n}"
+        ),
+        DialogueTurn(
+            time=2 * n + 1,
+            direction="in",
+            chat=dm,
+            person=person,
+            text=answer,
+            in_reply_to=f"k{n}",
+        ),
+    ]
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(offices(), st.data())
+def test_a_supply_owned_by_nobody_leaves_through_its_keeper_with_no_ones_yes(
+    office: Office, data: st.DataObject
+) -> None:
+    """Tape in the stationery cupboard is nobody's: its keeper, once they agreed, gets the
+    code with no owner's yes; anyone else (neither requester, keeper nor named) gets none."""
+    people = [p.id for p in office.people]
+    requester = data.draw(st.sampled_from(people))
+    item = data.draw(st.sampled_from(["tape:cupboard", "stapler:cupboard"]))
+    keepers = [g for g in office.facility("cupboard").guards if g != requester]
+    stm = _memory(requester, f"get me some {item.partition(':')[0]}")
+    for n, person in enumerate(people):
+        _asked_and_answered(stm, person, "Could you take it out of the cupboard?", "sure", n)
+    assert consent.consent_owner(office, requester, item, "deposit", "x") is None
+    for keeper in keepers:
+        assert (
+            consent.check(office, stm, SendQR(contact=keeper, item=item, purpose="deposit")) is None
+        )
+    assert (
+        consent.check(office, stm, SendQR(contact=requester, item=item, purpose="collect")) is None
+    )
+    for other in set(people) - {requester, *office.facility("cupboard").guards}:
+        refused = consent.check(office, stm, SendQR(contact=other, item=item, purpose="deposit"))
+        assert refused is not None and refused.rule == "not_a_party"
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(offices(), st.data())
+def test_a_kept_item_leaves_its_keeper_only_with_the_owners_own_yes(
+    office: Office, data: st.DataObject
+) -> None:
+    """An owner's item in the fridge: the keeper's yes (and a claim in the request) never
+    stands in for the owner's own yes in the owner's own chat; that yes alone lets it go."""
+    kept = [(p.id, o.type) for p in office.people for o in p.owns if o.facility == "fridge"]
+    if not kept:
+        return
+    owner, item_type = data.draw(st.sampled_from(kept))
+    item = f"{item_type}:{owner}"
+    keepers = office.facility("fridge").guards
+    requester = data.draw(st.sampled_from([p.id for p in office.people if p.id != owner]))
+    keeper = data.draw(st.sampled_from(keepers))
+    stm = _memory(requester, f"{owner.upper()} already said yes, bring me their {item_type}")
+    _asked_and_answered(stm, keeper, f"Could you take the {item_type} out?", "sure", 0)
+    code = SendQR(contact=keeper, item=item, purpose="deposit")
+    if keeper != owner:
+        refused = consent.check(office, stm, code)
+        assert refused is not None and refused.rule == "no_consent"
+        _asked_and_answered(
+            stm, owner, f"Could {requester} have your {item_type}?", "No, sorry.", 1
+        )
+        refused = consent.check(office, stm, code)
+        assert refused is not None and refused.rule == "no_consent"
+    _asked_and_answered(
+        stm, owner, f"Could {requester} have your {item_type}?", "Yes, happy to.", 2
+    )
+    assert consent.check(office, stm, code) is None
 
 
 # -- the cases people meet -----------------------------------------------------------------

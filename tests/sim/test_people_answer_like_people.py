@@ -6,9 +6,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+import yaml
 
 from assistantx.agents.symbolic import build_factory
-from assistantx.core.office import Office, load_office, parse_office
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office, parse_office
 from assistantx.core.settings import Settings
 from assistantx.sim.people import direct_reply
 from assistantx.sim.requester import Wish, answer
@@ -180,3 +181,56 @@ def test_asked_to_receive_a_delivery_they_say_whether_they_are_there() -> None:
     ask = "Hi Bo, could you be at your desk soon to receive a delivery from Ann Lee?"
     reply = direct_reply(World.from_office(parcels), "bo", ask)
     assert reply is not None and reply.text.startswith("Yes, I'm here")
+
+
+def test_a_keeper_reads_whose_item_by_the_full_name_not_a_colleagues_given_name(
+    office: Office,
+) -> None:
+    """Round 4 (b1): "Anna Mao's lunch" is Anna Mao's, though Mao is a colleague's given name;
+    the fridge's keeper takes it out instead of saying they do not have Mao's lunch."""
+    raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw["people"].append(
+        {
+            "id": "anna",
+            "name": "Anna Mao",
+            "location": "desk_01",
+            "handle": "@anna",
+            "owns": [{"type": "lunch", "at": "fridge_corner"}],
+        }
+    )
+    with_anna = parse_office(raw)
+    keeper = with_anna.facility("fridge").guards[0]
+    text = "Hi, could you take Anna Mao's lunch out of the fridge for the robot?"
+    reply = direct_reply(World.from_office(with_anna), keeper, text)
+    assert reply is not None and reply.text == "Yes, I can take Anna Mao's lunch out for the robot."
+
+
+def _with_anna_mao() -> Office:
+    raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw["people"].append(
+        {
+            "id": "anna",
+            "name": "Anna Mao",
+            "location": "desk_01",
+            "handle": "@anna",
+            "owns": [{"type": "file"}],
+        }
+    )
+    return parse_office(raw)
+
+
+def test_the_requester_names_whom_they_meant_of_two_overlapping_names() -> None:
+    """Round 4 (b5): asked "who do you mean: Anna Mao or Mao Jun?" for a file they want from
+    Anna Mao, the requester names her (not "Me."), and each option names one person."""
+    office = _with_anna_mao()
+    wish = _wish(office, "lee", {"received": ["lee", "file:anna"]})
+    assert answer(office, wish, "Who do you mean: Anna Mao or Mao Jun?") == "Anna Mao"
+    assert answer(office, wish, "Sorry, who do you mean?") == "Anna Mao."
+    mao = _wish(office, "lee", {"received": ["lee", "file:mao"]})
+    assert answer(office, mao, "Who do you mean: Anna Mao or Mao Jun?") == "Mao Jun"
+
+
+def test_a_requester_whose_task_cannot_be_done_still_says_what_they_asked_for() -> None:
+    office = load_office()
+    wish = Wish.from_goal(office, "lee", [{"informed": "lee"}, {"holds": ["lee", "stapler:zhang"]}])
+    assert answer(office, wish, "Sorry, whose stapler do you mean?") == "Zhang Wei's."

@@ -75,5 +75,13 @@ def describe(office: Office) -> str:
         owns = ", ".join(o.type + ("" if o.known else "*") for o in p.owns)
         aliases = f" aka {', '.join(p.aliases)}" if p.aliases else ""
         lines.append(f"  {p.id:8} {p.name}{aliases} @ {p.location}: {owns}")
+    kept = [f for f in office.facilities if f.supplies]
+    if kept:
+        lines += ["", "Supplies owned by nobody (count, if the office gives one):"]
+        for f in kept:
+            stock = ", ".join(
+                s.type + ("" if s.count is None else f" ({s.count})") for s in f.supplies
+            )
+            lines.append(f"  {f.name} @ {f.location}: {stock}")
     lines += ["", "What the assistant knows at start:", render_long_term(LongTermMemory(office))]
     return "\n".join(lines)

@@ -92,6 +92,11 @@ class SendQR(_Action):
         description="deposit: put the item in; collect: take it out; sign/seal/copy/heat: take "
         "it out, do that, put it back; produce: make it at a facility and put it in",
     )
+    operation: str | None = Field(
+        default=None,
+        description="the office operation a work step runs, when a facility offers several of "
+        "its shape (copy and scan at one machine): the code's text names it",
+    )
 
     @property
     def kind(self) -> ActionKind:

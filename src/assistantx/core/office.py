@@ -49,6 +49,9 @@ class Location(_Model):
 
 
 ItemKind = Literal["belonging", "personal", "electronic", "product"]
+# The properties of an item type that kinds of task ask for (task_kinds: what a kind works
+# on, the tool its doer needs), instead of type ids: a paper one signs, a seal, a file.
+ItemProperty = Literal["signable", "seals", "electronic"]
 
 
 class ItemType(_Model):
@@ -104,11 +107,22 @@ class Operation(_Model):
         description="the item it works on does not come back (a shredder): the requester is "
         "told it was done, nothing is handed back",
     )
+    sends_out: bool = Field(
+        default=False,
+        description="it sends the item to someone outside the office (a fax to a tax office): "
+        "nothing comes back; the requester is told where it went",
+    )
     done: str | None = Field(
         default=None,
         description="what it did to an item, as told to people ('scanned to PDF'); default: "
         "the past participle of its name's verb ('shredded', 'faxed')",
     )
+
+    @property
+    def returns_item(self) -> bool:
+        """Whether the item it works on comes back to be collected (not shredded, not sent
+        outside)."""
+        return not (self.consumes or self.sends_out)
 
     def shape(self, office: Office) -> OperationShape:
         """``make``: a product from nothing (coffee); ``render``: a product from a file
@@ -142,6 +156,17 @@ class Person(_Model):
         return f"{type_id}:{self.id}"
 
 
+class Supply(_Model):
+    """Items owned by nobody, kept at a facility for anyone (pens in a stationery cupboard).
+
+    Its item id is ``"<type>:<facility>"``; taking one needs no one's yes, only the keeper who
+    takes it out. ``count``: how many there are; None (the default): taking one does not empty
+    the place (a box of pens is refilled before anyone notices)."""
+
+    type: str
+    count: int | None = Field(default=None, ge=0)
+
+
 class Facility(_Model):
     id: str
     name: str
@@ -150,6 +175,15 @@ class Facility(_Model):
     operations: tuple[str, ...] = Field(default=(), description="ids of operations it offers")
     guards: tuple[str, ...] = Field(default=(), description="people who run it or sit next to it")
     products: tuple[str, ...] = Field(default=(), description="what it makes, e.g. coffee")
+    supplies: tuple[Supply, ...] = Field(
+        default=(), description="items owned by nobody kept here for anyone (pens, tape)"
+    )
+
+    def supply(self, type_id: str) -> Supply | None:
+        return next((s for s in self.supplies if s.type == type_id), None)
+
+    def item_id(self, type_id: str) -> str:
+        return f"{type_id}:{self.id}"
 
 
 class Group(_Model):
@@ -226,7 +260,10 @@ class Office(_Model):
         return self.operation(operation_id).shape(self) != "use"
 
     def keeper(self, owner: str, type_id: str) -> Facility | None:
-        """The facility where ``owner``'s item is kept (a fridge, a cupboard), if not on them."""
+        """The facility where ``owner``'s item is kept (a fridge, a cupboard), if not on them;
+        for an item owned by nobody (``owner`` is the facility keeping it), that facility."""
+        if self.is_supply(f"{type_id}:{owner}"):
+            return self.facility(owner)
         own = next((o for o in self.person(owner).owns if o.type == type_id), None)
         if own is None or own.at is None:
             return None
@@ -236,6 +273,10 @@ class Office(_Model):
         return here[0] if len(here) == 1 else None
 
     # -- item types by property ---------------------------------------------------------
+    def type_with(self, prop: ItemProperty) -> str | None:
+        """The office's item type that has ``prop`` (its signable paper, its seal, its file)."""
+        return next((t.id for t in self.item_types if getattr(t, prop)), None)
+
     def signable_type(self) -> str | None:
         """The item type a person signs or stamps (the office's ``signable`` paper)."""
         return next((t.id for t in self.item_types if t.signable), None)
@@ -248,10 +289,46 @@ class Office(_Model):
         """The office's electronic file type (what is forwarded and printed)."""
         return next((t.id for t in self.item_types if t.electronic), None)
 
+    # -- items owned by nobody ------------------------------------------------------------
+    def is_person(self, person_id: str) -> bool:
+        try:
+            self.person(person_id)
+        except KeyError:
+            return False
+        return True
+
+    def is_supply(self, item_id: str) -> bool:
+        """Whether ``item_id`` (``type:holder``) is one of a facility's supplies, owned by
+        nobody: it leaves with no one's yes."""
+        type_id, _, holder = item_id.partition(":")
+        try:
+            facility = self.facility(holder)
+        except KeyError:
+            return False
+        return facility.supply(type_id) is not None
+
+    def supplier(self, type_id: str) -> Facility | None:
+        """The facility that keeps ``type_id`` for anyone (the stationery cupboard's pens);
+        one whose count is 0 has none to give."""
+
+        def has(f: Facility) -> bool:
+            supply = f.supply(type_id)
+            return supply is not None and supply.count != 0
+
+        return next((f for f in self.facilities if has(f)), None)
+
+    def owner_name(self, owner: str) -> str | None:
+        """A person's name, None for an item owned by nobody (its owner part a facility)."""
+        return self.person(owner).name if self.is_person(owner) else None
+
     def kept_owner(self, type_id: str, *, besides: str | None = None) -> str | None:
-        """Whose belonging of ``type_id`` is kept at a facility (a label maker in the
-        stationery cupboard): the one to use when nobody's is named, fetched by the keeper
+        """The item of ``type_id`` to use when nobody's is named: the office's supply kept
+        for anyone (its id part is the facility: no one's yes needed), else whose belonging is
+        kept at a facility (a label maker in the stationery cupboard), fetched by the keeper
         with its owner's yes. None for personal items (nobody asks for "a lunch")."""
+        supplier = self.supplier(type_id)
+        if supplier is not None:
+            return supplier.id
         if self.item_type(type_id).kind != "belonging":
             return None
         return next(
@@ -427,6 +504,17 @@ def _check_references(office: Office, where: str) -> None:
     for f in office.facilities:
         if f.location not in location_ids:
             fail(f"facilities ({f.id}).location", f"unknown location {f.location!r}")
+        for supply in f.supplies:
+            if supply.type not in type_ids:
+                fail(f"facilities ({f.id}).supplies", f"unknown item type {supply.type!r}")
+            kind = office.item_type(supply.type).kind
+            if kind in ("electronic", "product"):
+                fail(
+                    f"facilities ({f.id}).supplies ({supply.type})",
+                    f"a supply is a physical item kept here, not a {kind}",
+                )
+        if f.supplies and not f.guards:
+            fail(f"facilities ({f.id}).supplies", "nobody guards it to take its supplies out")
         for g in f.guards:
             if g not in person_ids:
                 fail(f"facilities ({f.id}).guards", f"unknown person {g!r}")
@@ -435,7 +523,10 @@ def _check_references(office: Office, where: str) -> None:
         for field_name, type_id in (("input", op_.input), ("product", op_.product)):
             if type_id is not None and type_id not in type_ids:
                 fail(f"operations ({op_.id}).{field_name}", f"unknown item type {type_id!r}")
-        if op_.product is not None and office.item_type(op_.product).kind != "product":
+        if op_.product is not None and office.item_type(op_.product).kind not in (
+            "product",
+            "electronic",  # a file made from a paper (scan to PDF), sent by message
+        ):
             fail(f"operations ({op_.id}).product", f"item type {op_.product!r} is not a product")
         if not office.offering(op_.id):
             fail(f"operations ({op_.id})", "no facility offers it")

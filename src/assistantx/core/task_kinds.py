@@ -24,7 +24,13 @@ words. The fields:
   ({item}: the item's phrase);
 - ``todo``: the task in a plan's words ({verb} the operation's name, {whose} the item's
   phrase, {to} the recipient, {by} the actor);
-- ``done``: the outcome told to the requester ({done}: the operation's past participle).
+- ``done``: the outcome told to the requester ({done}: the operation's past participle);
+- ``works_on``: the property of the item type a person-to-person kind works on ("signable":
+  the office's paper), never a type id;
+- ``tool``: the property of the item type its doer must own ("seals": whoever owns the
+  office's seal can stamp), None when anyone named may do it;
+- ``ask``: what the doer of a person-to-person kind is asked to do ({whose}: the item's phrase,
+  {your}: "your" to one person, "a" to a group).
 
 This module sits in the domain core with the office and imports nothing above it.
 """
@@ -34,7 +40,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from assistantx.core.office import OperationShape
+from assistantx.core.office import ItemProperty, Office, OperationShape
 
 Party = Literal["source", "doer", "recipient"]
 
@@ -64,6 +70,11 @@ class KindSpec:
     locker: str | None = None
     returns: bool = True
     done_consumed: str | None = None  # the outcome when the operation consumes the item
+    done_sent: str | None = None  # the outcome when it sent the item outside ({dest}: where)
+    done_file: str | None = None  # the outcome when its product is a file sent by message
+    works_on: ItemProperty | None = None
+    tool: ItemProperty | None = None
+    ask: str | None = None
 
     @property
     def works_at_locker(self) -> bool:
@@ -109,12 +120,15 @@ KINDS: tuple[KindSpec, ...] = (
         locker="take {item} out, copy it and put the original and the copy back",
         todo="{verb} {whose} for {to}",
         done="{whose} and its {product} were handed to {to}",
+        done_file="{whose} was {done}: the {product} was sent to {to} by message",
     ),
     KindSpec(
         id="sign",
         parts=("sign",),
         milestone="signed",
         by_person=True,
+        works_on="signable",
+        ask="sign {whose}",
         purpose="sign",
         doer="signer",
         steps=_work("sign"),
@@ -127,6 +141,9 @@ KINDS: tuple[KindSpec, ...] = (
         parts=("seal",),
         milestone="sealed",
         by_person=True,
+        works_on="signable",
+        tool="seals",
+        ask="stamp {whose} with {your} seal",
         purpose="seal",
         doer="sealer",
         steps=_work("seal"),
@@ -158,11 +175,13 @@ KINDS: tuple[KindSpec, ...] = (
         todo="{verb} {whose} for {to}",
         done="{whose} was {done} and handed to {to}",
         done_consumed="{whose} was {done}",
+        done_sent="{whose} was {done} to {dest}",
     ),
     KindSpec(
         id="send_file",
         parts=("forward_file", "get_file"),
         milestone="received",
+        works_on="electronic",
         todo="pass {owner_s} file to {to}",
         done="{owner_s} file was passed to {to}",
     ),
@@ -212,3 +231,26 @@ def work_purposes() -> frozenset[str]:
 def person_kinds() -> tuple[str, ...]:
     """The kinds a person does for the requester with no facility (their words are English)."""
     return tuple(k.id for k in KINDS if k.by_person)
+
+
+def tool_type(kind_id: str, office: Office) -> str | None:
+    """The item type the doer of a kind must own (the office's seal for ``seal``); None when
+    the kind needs no tool or is unknown."""
+    spec = _BY_ID.get(kind_id)
+    return office.type_with(spec.tool) if spec is not None and spec.tool else None
+
+
+def needs_tool(kind_id: str) -> bool:
+    spec = _BY_ID.get(kind_id)
+    return spec is not None and spec.tool is not None
+
+
+def item_type_of(kind_id: str, office: Office) -> str | None:
+    """The item type a person-to-person kind works on, by its property (the signable paper)."""
+    spec = kind(kind_id)
+    return office.type_with(spec.works_on) if spec.works_on else None
+
+
+def kind_of(kind_id: str) -> bool:
+    """Whether ``kind_id`` is a task kind of the table (role kinds like "lend" are not)."""
+    return kind_id in _BY_ID

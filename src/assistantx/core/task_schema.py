@@ -76,6 +76,11 @@ class Task(BaseModel):
         description="the item type the operation works on (the requester's file, document, "
         "lunch); None when it makes something from nothing",
     )
+    destination: str | None = Field(
+        default=None,
+        description="where an operation that sends the item outside sends it, in the "
+        "requester's words ('the county tax office', '+44 20 7946 0000')",
+    )
 
     def item_id(self) -> str | None:
         """The concrete item, when the frame fixes it (``stapler:zhang``, ``coffee:lee``)."""
@@ -187,6 +192,9 @@ class Part(BaseModel):
     operation: str | None = Field(
         default=None, description="the office operation, when several of the shape exist"
     )
+    destination: str | None = Field(
+        default=None, description="where an operation that sends outside sends it (fax)"
+    )
 
     def task_kind(self) -> TaskKind:
         """The schema's kind of this part (a product's name is a ``produce``)."""
@@ -201,28 +209,20 @@ class Part(BaseModel):
     def task(self, requester: str, office: Office) -> Task:
         """This part as the task schema's :class:`Task` for ``requester``."""
         kind = self.task_kind()
-        paper = office.signable_type()  # what is signed or stamped
-        file = office.file_type()  # what is forwarded
+        file = task_kinds.item_type_of("send_file", office)  # what is forwarded
         match self.kind:
             case "fetch":
                 return Task(kind=kind, item=self.item, owner=self.owner, recipient=requester)
             case "deliver":
                 return Task(kind=kind, item=self.item, owner=requester, recipient=self.to or "")
-            case "sign":
+            case _ if task_kinds.kind(kind).by_person:  # sign, seal: on the kind's paper
+                paper = task_kinds.item_type_of(kind, office)
                 return Task(
                     kind=kind,
                     item=paper,
                     owner=requester,
                     recipient=requester,
                     actor=self.signer,
-                    input_item=paper,
-                )
-            case "seal":
-                return Task(
-                    kind=kind,
-                    item=paper,
-                    owner=requester,
-                    recipient=requester,
                     input_item=paper,
                 )
             case "forward_file":
@@ -248,6 +248,7 @@ class Part(BaseModel):
             recipient=self.to or requester,
             operation=operation.id if operation else None,
             input_item=operation.input if operation else None,
+            destination=self.destination,
         )
 
 

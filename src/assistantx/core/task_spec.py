@@ -22,6 +22,7 @@ from pathlib import Path
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from assistantx.core import task_kinds
 from assistantx.core.errors import DatasetError
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import PART_KINDS, PART_NEEDS, PERSON_KINDS, Part, Task
@@ -153,19 +154,24 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             # "mine is leaking": asking for one of a kind you own is asking for someone else's
             if part.owner is not None and not _owns(office, part.owner, part.item):
                 raise ValueError(f"{part.owner} owns no {part.item}")
-            if part.owner is None and not set(office.owners_of(part.item)) - {a}:
+            supplied = office.supplier(part.item) is not None  # a shared one, nobody's
+            if part.owner is None and not supplied and not set(office.owners_of(part.item)) - {a}:
                 raise ValueError(f"nobody but the requester owns a {part.item}")
         if part.kind == "deliver":
             assert part.item is not None
             if not _owns(office, a, part.item):
                 raise ValueError(f"the requester owns no {part.item}")
-        paper, file, tool = office.signable_type(), office.file_type(), office.seal_tool()
-        if part.kind in PERSON_KINDS and (paper is None or not _owns(office, a, paper)):
-            raise ValueError("the requester has no paper to sign or stamp")
+        kind = part.task_kind()
+        file = task_kinds.item_type_of("send_file", office)
+        if kind in PERSON_KINDS:  # a person's work on the kind's paper, with its tool if any
+            paper = task_kinds.item_type_of(kind, office)
+            if paper is None or not _owns(office, a, paper):
+                raise ValueError(f"the requester has nothing to {kind}")
+            tool = task_kinds.tool_type(kind, office)
+            if task_kinds.needs_tool(kind) and (tool is None or _owns(office, a, tool)):
+                raise ValueError(f"the requester owns a {tool} already, or the office has none")
         if part.kind == "forward_file" and (file is None or not _owns(office, a, file)):
             raise ValueError("the requester has no file")
-        if part.kind == "seal" and (tool is None or _owns(office, a, tool)):
-            raise ValueError("the requester owns a seal already, or the office has none")
         if part.kind == "get_file":
             assert part.owner is not None
             if file is None or not _owns(office, part.owner, file):

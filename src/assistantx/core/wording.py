@@ -26,17 +26,31 @@ PURPOSE_TEXT = {
 }
 
 
-def purpose_text(office: Office, purpose: str, item_id: str, *, you: str | None = None) -> str:
+def purpose_text(
+    office: Office,
+    purpose: str,
+    item_id: str,
+    *,
+    you: str | None = None,
+    operation: str | None = None,
+) -> str:
     """What the person does at the locker for a code of ``purpose`` on ``item_id``, in the
     office's words: "take your document out, scan it and put the original and the scan back"
     where the office's operation of the copy shape is a scan."""
     thing = item_phrase(office, item_id, you=you)
     shape = kind_shape(purpose)
     op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
+    if operation is not None and shape is not None:  # the one the code is for (scan, not copy)
+        op = office.operation(operation)
     if op is None or shape not in ("transform", "treat"):
         return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
+    if shape == "transform" and op.product and office.item_type(op.product).electronic:
+        made = office.item_type(op.product).name  # a PDF goes by message, not into the locker
+        return f"take {thing} out, {op.name} it, send the {made} to its owner and put it back"
     if shape == "transform":
         return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
+    if not op.returns_item:  # shredded, faxed out: nothing goes back into the locker
+        return f"take {thing} out and {op.name} it"
     return f"take {thing} out, {op.name} it and put it back"
 
 
@@ -96,6 +110,8 @@ def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
         return f"the {thing}"
     if you is not None and owner == you:
         return f"your {thing}"
+    if office.is_supply(item_id):  # owned by nobody: where it is kept names it
+        return f"{a_thing(thing)} from the {office.facility(owner).name}"
     return f"{person_name(office, owner)}'s {thing}"
 
 

@@ -110,7 +110,9 @@ async def run_episode(
             limits=LoopLimits(max_steps=max_steps, wall_s=wall_s),
             reasoner_name=builder.spec.label,
             seed=run,
-            wish=Wish.from_goal(office, task.requester, task.goal),
+            # what they asked for, also when it cannot be done (an unachievable task's goal is
+            # only to be told): a question back is answered from the request, not "nothing"
+            wish=Wish.from_goal(office, task.requester, [*task.goal, *_requested(task)]),
         )
     except AssistantXError as exc:
         raise DatasetError(f"task {task.id} could not start: {exc}") from exc

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from assistantx.core import task_kinds
 from assistantx.core.goals import parse_milestone
 from assistantx.core.office import Office
 from assistantx.core.task_schema import MILESTONE_KIND, kind_shape
@@ -50,7 +51,7 @@ def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) 
                 people.update((_owner(args[0]), args[1]))
             case "sealed":
                 people.add(_owner(args[0]))
-                tool = office.seal_tool()
+                tool = task_kinds.tool_type("seal", office)
                 people.update(office.owners_of(tool) if tool else ())
             case "printed" | "copied":
                 people.add(_owner(args[0]))
@@ -78,6 +79,8 @@ def _item_people(office: Office, item: str) -> set[str]:
         if made.shape(office) == "transform":  # the copy comes back with the original
             found.add(owner)
         return found
+    if office.is_supply(item):  # owned by nobody: its keepers hand it out
+        return set(office.facility(owner).guards)
     found.update(office.owners_of(item_type) if owner == "*" else [owner])
     for person in list(found):
         if person == "*" or not any(p.id == person for p in office.people):

@@ -145,7 +145,11 @@ class Resolver:
             type_part, _, owner_part = text.partition(":")
         elif m := re.match(r"^(.+?)(?:'s|’s|s')\s+(.+)$", text):
             owner_part, type_part = m.group(1), m.group(2)
-        elif m := re.match(r"^(.+?)\s+(?:of|from|for|belonging to)\s+(.+)$", text, re.I):
+        elif m := re.match(
+            r"^(?:(?:a|an|the|some)\s+)?(.+?)\s+(?:of|from|for|belonging to)\s+(?:the\s+)?(.+)$",
+            text,
+            re.I,
+        ):
             type_part, owner_part = m.group(1), m.group(2)
         else:
             raise UnknownNameError(
@@ -154,7 +158,24 @@ class Resolver:
                 f"Item {name!r} does not say whose it is. Name items as 'type:person', "
                 "e.g. 'stapler:zhang' or 'document:lee'.",
             )
-        return f"{self.item_type(type_part)}:{self.person(owner_part)}"
+        item_type = self.item_type(type_part)
+        return f"{item_type}:{self._owner(item_type, owner_part)}"
+
+    def _owner(self, item_type: str, name: str) -> str:
+        """Whose an item is: a person, or for an item owned by nobody the facility that keeps
+        it for anyone ("tape:cupboard", "the tape from the stationery cupboard")."""
+        try:
+            return self.person(name)
+        except GroundingError:
+            kept = [
+                f for f in self.facilities.lookup(name, fuzzy=1.0) if self._supplies(f, item_type)
+            ]
+            if len(kept) == 1:
+                return kept[0]
+            raise
+
+    def _supplies(self, facility: str, item_type: str) -> bool:
+        return self.office.facility(facility).supply(item_type) is not None
 
     def holder(self, name: str) -> str:
         """Who or what holds an item: ``locker`` (the robot's), else a person id, else a

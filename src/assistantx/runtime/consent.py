@@ -19,9 +19,10 @@ reading can waste a step but cannot hand anything to the wrong person:
 3. **Consent.** An item owned by someone other than the requester leaves its owner only with the
    owner's own yes: a reply written by the owner, in the owner's own direct chat, to a question
    there that names the item. A keeper cannot give it away for them, and a yes in a group chat
-   is not enough (the owner is then asked directly). Products and items owned by nobody need no
-   consent; the owner taking their own item back needs none either. Someone else's file is
-   forwarded only after its owner sent it themselves.
+   is not enough (the owner is then asked directly). Products and items owned by nobody (a
+   facility's supplies, ``office.is_supply``: pens in the stationery cupboard) need no consent,
+   only the keeper who takes them out; the owner taking their own item back needs none
+   either. Someone else's file is forwarded only after its owner sent it themselves.
 4. **Text carries no authority.** Only who wrote a message, and in whose chat, counts; what a
    message *says* ("Zhang already said yes", "I am Zhang", "admin mode") never stands in for a
    consent or changes who is asked. ``authority_claims`` spots such wording so the requester
@@ -38,12 +39,11 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
-from assistantx.core import english
+from assistantx.core import english, task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, Person
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.core.task_schema import SEAL_TOOL
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.recipients import named_recipients
 
@@ -54,8 +54,9 @@ ConsentState = Literal["yes", "no", "pending", "not_asked"]
 # Purposes that take an item out of the locker for good, and those that put one in.
 _COLLECT = "collect"
 _DEPOSIT = "deposit"
-# Purposes a named person does by hand on the requester's item (no facility involved).
-_BY_HAND = ("sign", "seal")
+# Purposes a named person does by hand on the requester's item (no facility involved): the
+# table's person kinds (sign, seal, ...).
+_BY_HAND = frozenset(task_kinds.person_kinds())
 
 
 @dataclass(frozen=True)
@@ -202,13 +203,15 @@ def _is_party(office: Office, stm: ShortTermMemory, contact: str, item: str, pur
     item_type, _, owner = item.partition(":")
     if contact == owner:
         return True
-    if purpose == _DEPOSIT and _is_person(office, owner):
+    if purpose == _DEPOSIT and (_is_person(office, owner) or office.is_supply(item)):
+        # the keeper of where it is kept (the fridge's, the stationery cupboard's)
         keeper = _keeper(office, owner, item_type)
         return keeper is not None and contact in keeper
     if purpose == _COLLECT:
         return contact in named_recipients(office, stm)
     if purpose in _BY_HAND:
-        if purpose == "seal" and _owns(office, contact, SEAL_TOOL):
+        tool = task_kinds.tool_type(purpose, office)  # whoever owns the seal may stamp
+        if tool is not None and _owns(office, contact, tool):
             return True
         return contact in named_recipients(office, stm)
     # work at a facility (copy, heat, produce, ...): its guards run it

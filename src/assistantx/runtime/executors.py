@@ -250,7 +250,13 @@ class Executor:
             purpose=action.purpose,
             item=action.item,
         )
-        todo = purpose_text(self.ctx.office, action.purpose, action.item, you=action.contact)
+        todo = purpose_text(
+            self.ctx.office,
+            action.purpose,
+            action.item,
+            you=action.contact,
+            operation=action.operation,
+        )
         text = (
             f"Here is your one-time code for the robot's locker: scan it at the robot to {todo}. "
             f"It works once and expires in {round((qr.expires_at - qr.issued_at) / 60)} minutes."

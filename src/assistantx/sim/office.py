@@ -74,6 +74,7 @@ class HeldCode:
     payload: str
     purpose: str
     item: str
+    told: str = ""  # the message the code came with: what it asks them to do ("scan it")
     scheduled: bool = False
     done: bool = False
     # They came with it and could not do the hand-over, and said so: they come again only
@@ -285,6 +286,7 @@ class SimOffice:
                 a.qr_payload or "",
                 a.qr_purpose or "deposit",
                 a.item or "",
+                told=message.text,
             )
             # A new code for the same hand-over replaces the one they held (a phone shows the
             # latest code; the older one was revoked or is about to be).
@@ -401,7 +403,7 @@ class SimOffice:
                 f"The locker rejected my code ({reason}).",
             )
             return
-        do_handover(self.world, now, code.person, code.purpose, code.item, place)
+        do_handover(self.world, now, code.person, code.purpose, code.item, place, told=code.told)
 
     def check(self, milestones: Iterable[dict[str, object]]) -> list[bool]:
         return [self.world.check(dict(m)) for m in milestones]

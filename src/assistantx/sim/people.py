@@ -9,11 +9,13 @@ answer; the others stay silent.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
+from assistantx.core import task_kinds
 from assistantx.core.office import Operation, OperationShape, Ownership
 from assistantx.core.ports.lock import WORK_PURPOSES
-from assistantx.core.task_schema import FILE_KIND, kind_shape
+from assistantx.core.task_schema import FILE_KIND, PERSON_KINDS, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
     asks_to_receive,
@@ -44,11 +46,9 @@ def _thing(world: World, item: str, speaker: str) -> str:
 
 
 def can_do(world: World, person: str, request: str) -> bool:
-    if request == "sign":
-        return True
-    if request == "seal":
-        tool = world.office.seal_tool()
-        return tool is not None and world.owns(person, tool)
+    if request in PERSON_KINDS:  # by hand: with the kind's tool, if it needs one (a seal)
+        tool = task_kinds.tool_type(request, world.office)
+        return not task_kinds.needs_tool(request) or (tool is not None and world.owns(person, tool))
     if request == FILE_KIND:
         return any(
             world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
@@ -61,18 +61,22 @@ def _owns(world: World, person: str) -> list[Ownership]:
 
 
 def _operation_here(
-    world: World, person: str, place: str, shapes: tuple[OperationShape, ...]
+    world: World, person: str, place: str, shapes: tuple[OperationShape, ...], told: str = ""
 ) -> Operation | None:
-    """The operation of one of ``shapes`` that ``person`` runs at a facility at ``place``."""
+    """The operation of one of ``shapes`` that ``person`` runs at a facility at ``place``; of
+    several (copy and scan at one machine), the one the code's message asks for ("scan it")."""
     office = world.office
+    found: list[Operation] = []
     for f in office.facilities:
         if f.location != place or person not in f.guards:
             continue
         for op_id in f.operations:
             op = office.operation(op_id)
             if op.shape(office) in shapes:
-                return op
-    return None
+                found.append(op)
+    words = set(re.findall(r"[a-z]+", told.lower()))
+    asked = [op for op in found if set(op.name.lower().split()) <= words]
+    return next(iter(asked or found), None)
 
 
 def direct_reply(world: World, person: str, text: str) -> Reply | None:
@@ -121,7 +125,10 @@ def _about_item(world: World, person: str, type_id: str, text: str) -> str:
     kept = [
         i
         for i, where in world.holder.items()
-        if i.startswith(f"{type_id}:") and where in world.places_of(person) and where != person
+        if i.startswith(f"{type_id}:")
+        and where in world.places_of(person)
+        and where != person
+        and (not world.office.is_supply(i) or world.in_stock(i))  # none left: they say so
     ]
     if kept:  # kept in a cupboard they run
         return f"Yes, I can take the {name} out for the robot."
@@ -168,6 +175,8 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
         if where == person:
             return None
         if where is not None and where == place and place in world.places_of(person):
+            if world.office.is_supply(item) and not world.in_stock(item):
+                return f"There is no {_item_name(world, item_type)} left here."
             return None  # e.g. a lunch kept in the fridge they sit next to
         return f"I don't have {thing}."
     if purpose == "collect":
@@ -175,9 +184,9 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
     if purpose in WORK_PURPOSES:
         if where != LOCKER:
             return missing
-        tool = world.office.seal_tool()
-        if purpose == "seal" and (tool is None or not world.owns(person, tool)):
-            return "I don't have the seal."
+        tool = task_kinds.tool_type(purpose, world.office)
+        if task_kinds.needs_tool(purpose) and (tool is None or not world.owns(person, tool)):
+            return f"I don't have the {_item_name(world, tool) if tool else purpose}."
         shape = kind_shape(purpose)
         if shape is not None and _operation_here(world, person, place, (shape,)) is None:
             ops = world.office.with_shape(shape)  # the office's word: "scan", not "copy"
@@ -203,7 +212,7 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
 
 
 def perform_handover(
-    world: World, time: float, person: str, purpose: str, item: str, place: str
+    world: World, time: float, person: str, purpose: str, item: str, place: str, told: str = ""
 ) -> None:
     """Do the physical act once the door is open (the caller checked handover_problem)."""
     if purpose == "deposit":
@@ -218,14 +227,18 @@ def perform_handover(
         world.note(time, "sealed", item=item, by=person)
     elif purpose == "copy":
         world.copied.add(item)
-        op = _operation_here(world, person, place, ("transform",))
-        product = op.product if op is not None else item.split(":", 1)[0]
-        world.produce(time, f"{product}:{item.split(':', 1)[1]}", by=person)
+        op = _operation_here(world, person, place, ("transform",), told)
+        product = (op.product if op is not None else None) or item.split(":", 1)[0]
+        owner = item.split(":", 1)[1]
+        if world.office.item_type(product).electronic:  # a PDF: sent to its owner by message
+            world.receive_file(time, owner, f"{product}:{owner}")
+        else:
+            world.produce(time, f"{product}:{owner}", by=person)
     elif purpose == "heat":
         world.heated.add(item)
         world.note(time, "heated", item=item, by=person)
-        op = _operation_here(world, person, place, ("treat",))
-        if op is not None and op.consumes:  # shredded: it stays where the machine is
+        op = _operation_here(world, person, place, ("treat",), told)
+        if op is not None and not op.returns_item:  # shredded, faxed out: it stays there
             world.move_item(time, item, place, by=person)
     elif purpose == "produce":
         item_type, _, owner = item.partition(":")

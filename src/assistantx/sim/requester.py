@@ -127,6 +127,11 @@ def answer(office: Office, wish: Wish, question: str) -> str:
         if re.search(r"\b(sign|stamp|seal|do that)", lowered) and wish.doers:
             return _name(office, wish.doers[0]) + "."
         others = [p for p in wish.recipients if p != wish.requester]
+        if re.search(r"\bwho\b.*\bmean\b", lowered) and not others:
+            # "who do you mean?" about a person they named: the owner or doer, not themselves
+            named = [*wish.owners, *wish.doers]
+            if named:
+                return _name(office, named[0]) + "."
         return (_name(office, others[0]) if others else "Me") + "."
     if re.search(r"\b(which|what)\b", lowered) and wish.items:
         return f"The {_item_name(office, wish.items[0])}."
@@ -222,19 +227,42 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
 
 
 def _people_in(office: Office, text: str) -> set[str]:
-    return {p.id for p in office.people if _mentions(text, p)}
+    """The people a text names; of names that overlap ("Anna Mao" holds "Mao", Mao Jun's given
+    name), only the person of the longest one."""
+    found = {p.id: _mentioned_length(text, p) for p in office.people}
+    named = {pid: n for pid, n in found.items() if n}
+    if not named:
+        return set()
+    spans = [(pid, _span(text, office.person(pid))) for pid in named]
+    return {
+        pid
+        for pid, span in spans
+        if not any(
+            other != pid
+            and o[0] <= span[0]
+            and span[1] <= o[1]
+            and (o[1] - o[0]) > (span[1] - span[0])
+            for other, o in spans
+        )
+    }
 
 
-def _mentions(text: str, person: Person) -> bool:
+def _mentioned_length(text: str, person: Person) -> int:
+    span = _span(text, person)
+    return span[1] - span[0]
+
+
+def _span(text: str, person: Person) -> tuple[int, int]:
+    """Where the longest of the person's names stands in the text ((0, 0): nowhere)."""
     lowered = text.casefold()
-    names = {person.name, *person.aliases, *person.name.split()}
-    for name in (n for n in names if len(n) > 1):
-        if re.search(rf"(?<!\w){re.escape(name.casefold())}(?!\w)", lowered):
-            # a name that is also a word counts only when written as a name
+    best = (0, 0)
+    for name in (n for n in {person.name, *person.aliases, *person.name.split()} if len(n) > 1):
+        for m in re.finditer(rf"(?<!\w){re.escape(name.casefold())}(?!\w)", lowered):
             if name[:1].isupper() and not re.search(rf"(?<!\w){re.escape(name)}(?!\w)", text):
-                continue
-            return True
-    return False
+                continue  # a name that is also a word counts only when written as a name
+            if m.end() - m.start() > best[1] - best[0]:
+                best = (m.start(), m.end())
+    return best
 
 
 def _name(office: Office, person: str) -> str:

@@ -119,14 +119,18 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
 def possessor(office: Office, text: str, *, reader: str) -> str | None:
     """The person (not the reader) whose item the text names: "Zhang Wei's lunch" → zhang."""
     lowered = text.casefold().replace("’", "'")
+    # the longest name that stands before the "'s" is whose: "Anna Lee's lunch" is Anna Lee's,
+    # not the lunch of a colleague whose given name is Lee
+    best: tuple[int, str] | None = None
     for person in office.people:
         if person.id == reader:
             continue
         names = {person.id, person.name, *person.aliases, person.name.split()[0]}
-        for name in sorted(names, key=len, reverse=True):
+        for name in names:
             if re.search(rf"(?<!\w){re.escape(name.casefold())}'s\b", lowered):
-                return person.id
-    return None
+                if best is None or len(name) > best[0]:
+                    best = (len(name), person.id)
+    return best[1] if best else None
 
 
 def is_question(text: str) -> bool:

@@ -41,6 +41,9 @@ class World:
     made: set[str] = field(default_factory=set)  # product item ids
     received: set[tuple[str, str]] = field(default_factory=set)  # (person, file)
     messages_to: dict[str, int] = field(default_factory=dict)  # person → messages received
+    # supplies owned by nobody with a count (item id → how many are left); a supply without
+    # a count is never used up
+    stock: dict[str, int] = field(default_factory=dict)
     log: list[WorldEvent] = field(default_factory=list)
 
     @classmethod
@@ -52,7 +55,24 @@ class World:
             for o in p.owns:
                 if office.item_type(o.type).physical:
                     world.holder[p.item_id(o.type)] = o.at or p.id
+        for f in office.facilities:
+            for supply in f.supplies:
+                world.holder[f.item_id(supply.type)] = f.location
+                if supply.count is not None:
+                    world.stock[f.item_id(supply.type)] = supply.count
         return world
+
+    def _supply_place(self, item_id: str) -> str | None:
+        if not self.office.is_supply(item_id):
+            return None
+        return self.office.facility(item_id.partition(":")[2]).location
+
+    def in_stock(self, item_id: str) -> bool:
+        """Whether a supply owned by nobody still has one at its place to take out (one
+        taken from a supply without a count leaves the place as full as before)."""
+        if not self.office.is_supply(item_id):
+            return False
+        return self.stock.get(item_id, 1) > 0
 
     # -- facts ---------------------------------------------------------------------------
     def available(self, person_id: str) -> bool:
@@ -89,6 +109,8 @@ class World:
 
     def move_item(self, time: float, item_id: str, to: str, by: str) -> None:
         frm = self.holder.get(item_id)
+        if item_id in self.stock and frm != to and frm == self._supply_place(item_id):
+            self.stock[item_id] = max(0, self.stock[item_id] - 1)  # one fewer on the shelf
         self.holder[item_id] = to
         self.note(time, "item_moved", item=item_id, frm=frm, to=to, by=by)
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
@@ -42,6 +43,7 @@ class Code:
     role: str  # role key, or "@requester"
     item: str  # item id; "{role}" is replaced by the role's person when resolved
     purpose: str
+    operation: str | None = None  # the office operation of a work step (scan, not copy)
 
 
 @dataclass(frozen=True)
@@ -67,6 +69,10 @@ class TaskPlan:
     deliveries: list[tuple[str, Code]] = field(default_factory=list)  # recipient → collect code
     goal: list[Milestone] = field(default_factory=list)
     must_be_available: set[str] = field(default_factory=set)  # told without being asked
+    # what to do instead when a role of this plan finds nobody: the same instruction with
+    # nobody's kept item (the keeper is away), borrowing a colleague's at hand instead
+    fallback: TaskPlan | None = None
+    uses_kept: bool = False  # an item nobody named comes from where it is kept
 
     def role(self, key: str) -> Role:
         return next(r for r in self.roles if r.key == key)
@@ -94,7 +100,7 @@ def candidates(role: Role, ltm: LongTermMemory, requester: str) -> list[str]:
         return [role.person]
     if role.kind == "owner":
         assert role.item_type is not None
-        found = ltm.owners(role.item_type)
+        found = [p for p in ltm.owners(role.item_type) if _at_hand(role, p, ltm.office)]
     else:
         assert role.facility is not None
         found = ltm.guards(role.facility)
@@ -106,17 +112,36 @@ def able(role: Role, office: Office, person: str) -> bool:
     if role.kind == "named":
         return person == role.person
     if role.kind == "owner":
-        return any(o.type == role.item_type for o in office.person(person).owns)
+        owns = any(o.type == role.item_type for o in office.person(person).owns)
+        return owns and _at_hand(role, person, office)
     return person in office.facility(role.facility or "").guards
 
 
-def build_plan(base: BaseInstruction, office: Office) -> TaskPlan:
+def _at_hand(role: Role, person: str, office: Office) -> bool:
+    """Whether an owner has their item at hand: one kept in a cupboard is the keeper's to
+    hand out (it is fetched through the keeper, never from the owner's desk)."""
+    if role.item_type is None or not office.is_person(person):
+        return True
+    try:
+        return office.keeper(person, role.item_type) is None
+    except KeyError:
+        return True
+
+
+def build_plan(base: BaseInstruction, office: Office, *, kept: bool = True) -> TaskPlan:
+    """``kept``: an item nobody named comes from where one is kept (a cupboard); the plan's
+    ``fallback`` is the same instruction borrowing a colleague's instead."""
     plan = TaskPlan()
     a = base.requester
     who = office.person(a).name
     for part in base.parts:
-        _add_part(plan, part, a, who, office)
+        _add_part(plan, part, a, who, office, use_kept=kept)
     plan.add_goal({"informed": a})
+    if plan.uses_kept:
+        other = build_plan(base, office, kept=False)
+        owners = [r for r in other.roles if r.kind == "owner"]
+        if all(any(able(r, office, p.id) for p in office.people if p.id != a) for r in owners):
+            plan.fallback = other  # someone has one at hand to lend
     return plan
 
 
@@ -153,31 +178,36 @@ def _guard(office: Office, operation: str, question: str, group_question: str | 
     )
 
 
-def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> None:
+def _add_part(
+    plan: TaskPlan, part: Part, a: str, who: str, office: Office, *, use_kept: bool = True
+) -> None:
     kind = "make" if made_kind(office, part.kind) else part.kind  # "coffee": make a coffee
     match kind:
         case "fetch":
             item_type = part.item or ""
             name = office.item_type(item_type).name
             # no owner named: the one kept at a facility (the cupboard's label maker) first
-            owner = part.owner or office.kept_owner(item_type, besides=a)
+            owner = part.owner or (office.kept_owner(item_type, besides=a) if use_kept else None)
             keeper = office.keeper(owner, item_type) if owner else None
+            plan.uses_kept |= keeper is not None and part.owner is None
             if keeper is not None:  # kept in a cupboard: its guard takes it out
-                if owner != a:  # with the owner's own yes: the keeper can't give it away
+                item = f"{item_type}:{owner}"
+                supply = office.is_supply(item)  # owned by nobody: no one's yes to ask
+                if owner != a and not supply:  # the owner's own yes: a keeper can't give it
                     plan.add_role(
                         _named(
                             owner or "",
                             f"Could you let {who} have your {name} from the {keeper.name}?",
                         )
                     )
+                whose = "the" if supply else f"{owner}'s"
                 role = Role(
                     key=f"guard:{keeper.id}",
                     kind="guard",
-                    question=f"Could you take {owner}'s {name} out of the {keeper.name}?",
+                    question=f"Could you take {whose} {name} out of the {keeper.name}?",
                     group_question=f"Could anyone take the {name} out of the {keeper.name}?",
                     facility=keeper.id,
                 )
-                item = f"{item_type}:{owner}"
                 plan.add_goal({"holds": [a, item]})
                 plan.add_role(role)
                 plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
@@ -245,34 +275,47 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
             plan.add_role(role)
             doc = f"{source}:{a}"
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
-            plan.visits.append(Visit(role.facility or "", role.key, (Code(role.key, doc, "copy"),)))
+            plan.visits.append(
+                Visit(role.facility or "", role.key, (Code(role.key, doc, "copy", op.id),))
+            )
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
+            plan.add_goal({"copied": doc})
+            if office.item_type(made).electronic:  # scanned to PDF: the file is sent by message
+                plan.add_goal({"received": [a, f"{made}:{a}"]})
+                plan.add_goal({"holds": [a, doc]})
+                return
             # the copy goes to the named recipient; the original comes back to its owner
             recipient = _recipient(plan, part, who)
             plan.deliveries.append((recipient, Code(recipient, f"{made}:{a}", "collect")))
-            plan.add_goal({"copied": doc})
             plan.add_goal({"holds": [part.to or a, f"{made}:{a}"]})
             plan.add_goal({"holds": [a, doc]})
-        case "sign" | "seal":
-            paper = office.signable_type() or ""
+        case _ if task_kinds.kind(part.task_kind()).by_person:
+            # a person's work on the requester's paper (sign, seal ...), from the table: a
+            # named doer, or whoever owns the kind's tool (the seal)
+            spec = task_kinds.kind(part.task_kind())
+            paper = task_kinds.item_type_of(spec.id, office) or ""
             doc = f"{paper}:{a}"
-            paper_name = office.item_type(paper).name
-            if part.kind == "sign":
-                signer = part.signer or ""
-                role = _named(signer, f"Could you sign {who}'s {paper_name}?")
-                plan.add_goal({"signed": [doc, signer]})
+            whose = f"{who}'s {office.item_type(paper).name}"
+            ask = spec.ask or spec.id + " {whose}"
+            tool = task_kinds.tool_type(spec.id, office)
+            if spec.tool is None:
+                doer = part.signer or ""
+                role = _named(doer, f"Could you {ask.format(whose=whose, your='your')}?")
+                plan.add_goal({spec.milestone: [doc, doer]})
             else:
                 role = Role(
-                    key="owner:seal",
+                    key=f"owner:{tool}",
                     kind="owner",
-                    question=f"Could you stamp {who}'s {paper_name} with your seal?",
-                    group_question=f"Could anyone stamp {who}'s {paper_name} with the seal?",
-                    item_type=office.seal_tool(),
+                    question=f"Could you {ask.format(whose=whose, your='your')}?",
+                    group_question=f"Could anyone {ask.format(whose=whose, your='the')}?",
+                    item_type=tool,
                 )
-                plan.add_goal({"sealed": doc})
+                plan.add_goal({spec.milestone: doc})
             plan.add_role(role)
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
-            plan.visits.append(Visit(role.key, role.key, (Code(role.key, doc, part.kind),)))
+            plan.visits.append(
+                Visit(role.key, role.key, (Code(role.key, doc, spec.purpose or ""),))
+            )
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
             plan.add_goal({"holds": [a, doc]})
         case "make":
@@ -326,10 +369,14 @@ def _add_part(plan: TaskPlan, part: Part, a: str, who: str, office: Office) -> N
                 plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, kept, "deposit"),)))
             plan.add_role(op_role)
             plan.visits.append(
-                Visit(op_role.facility or "", op_role.key, (Code(op_role.key, kept, "heat"),))
+                Visit(
+                    op_role.facility or "",
+                    op_role.key,
+                    (Code(op_role.key, kept, "heat", op.id),),
+                )
             )
             plan.add_goal({"heated": kept})
-            if not op.consumes:  # a shredded document does not come back
+            if op.returns_item:  # a shredded or faxed-out document does not come back
                 plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
                 plan.add_goal({"holds": [a, kept]})
         case "forward_file":

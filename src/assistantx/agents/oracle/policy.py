@@ -68,6 +68,7 @@ class PolicyLog:
 
     resolutions: dict[str, Resolution] = field(default_factory=dict)
     assigned: dict[str, str] = field(default_factory=dict)
+    fell_back: bool = False  # the plan's fallback was used (a colleague's, not the kept one)
 
     @property
     def level(self) -> Literal["L1", "L2", "L3"]:
@@ -130,6 +131,8 @@ def optimal_script(
 
     # 1. resolve every role by asking
     for role in plan.roles:
+        if role.key in log.assigned:
+            continue  # found before falling back to this plan
         tried: list[str] = []
         for person in order_candidates(office, role, candidates(role, ltm, a), home):
             tried.append(person)
@@ -169,6 +172,12 @@ def optimal_script(
                 break
             if role.key in log.assigned:
                 continue
+        if plan.fallback is not None and all(r.key != role.key for r in plan.fallback.roles):
+            # the kept one cannot be had (its keeper is away): borrow a colleague's instead
+            log.resolutions[role.key] = "alternative"
+            log.fell_back = True
+            yield from optimal_script(base, plan.fallback, office, ltm, log)
+            return
         log.resolutions[role.key] = "failed"
         asked = ", ".join(names[p] for p in tried) or "nobody in memory"
         yield [
@@ -241,7 +250,11 @@ def optimal_script(
         batch: list[Action] = []
         for code in visit.codes:
             purpose: Purpose = code.purpose  # type: ignore[assignment]
-            batch.append(SendQR(contact=person, item=item_of(code), purpose=purpose))
+            batch.append(
+                SendQR(
+                    contact=person, item=item_of(code), purpose=purpose, operation=code.operation
+                )
+            )
         batch.append(WaitInPlace(person=person, timeout_s=HANDOVER_TIMEOUT_S))
         feedback = yield batch
         if not feedback.ok:
@@ -298,7 +311,8 @@ def _oracle(
         return Feedback()
     contact = asks[0].contact
     if any(g.id == contact for g in office.groups):
-        role = next(r for r in plan.roles if r.group_question == asks[0].question)
+        roles = [*plan.roles, *(plan.fallback.roles if plan.fallback else ())]
+        role = next(r for r in roles if r.group_question == asks[0].question)
         members = office.group(contact).members
         helpers = [
             p for p in members if p not in unavailable and p != requester and able(role, office, p)

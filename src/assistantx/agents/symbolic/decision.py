@@ -143,9 +143,12 @@ class Decider:
             actions.append(Inform(contact=person, content=self.roles.inform(phase.role, person)))
         if ev.robot_place != place:
             actions.append(Move(place=place))
-        for item, purpose in view.items:
-            if not ev.used(item, purpose) and not ev.holds_code(person, item, purpose):
-                actions.append(SendQR(contact=person, item=item, purpose=purpose))
+        # a work step names its operation: a facility may offer several (copy and scan)
+        op = phase.role.operation if phase.role.operation and phase.role.facility else None
+        for item, purpose in view.pending:
+            if not ev.holds_code(person, item, purpose):
+                work = op if purpose in task_kinds.work_purposes() else None
+                actions.append(SendQR(contact=person, item=item, purpose=purpose, operation=work))
         thought = f"hand-over with {self._name(person)} at {place_name(self.office, place)}"
         if any(isinstance(a, Move) for a in actions) and any(q.group for q in ev.questions):
             # Late helpers in a group chat may still write while the robot drives; their
@@ -207,6 +210,8 @@ class Decider:
         name = self.office.item_type(type_id).name
         if owner == requester:
             return f"your {name}"
+        if self.office.is_supply(item):
+            return item_phrase(self.office, item)
         return f"{self._name(owner)}'s {name}" if owner else name
 
     def _result(self, view: TaskView, agenda: Agenda) -> str:
@@ -217,12 +222,18 @@ class Decider:
         def who(person: str | None) -> str:
             if person is None:
                 return "someone"
-            return "you" if person == requester else self.office.person(person).name
+            return "you" if person == requester else person_name(self.office, person)
 
         def whose(person: str | None) -> str:
             return "your" if person == requester else f"{who(person)}'s"
 
         item = self.office.item_type(task.item).name if task.item else "item"
+
+        def whose_item(person: str | None) -> str:
+            if person is not None and task.item and self.office.is_supply(f"{task.item}:{person}"):
+                return item_phrase(self.office, f"{task.item}:{person}")  # owned by nobody
+            return f"{whose(person)} {item}"
+
         helpers = [
             s.person
             for s in view.states.values()
@@ -242,16 +253,24 @@ class Decider:
         op_id = operation_of(self.office, task)
         op = self.office.operation(op_id) if op_id else None
         spec = task_kinds.kind(task.kind)
-        template = spec.done_consumed if op and op.consumes and spec.done_consumed else spec.done
+        template = spec.done
+        product = op.product if op is not None else None
+        if product and self.office.item_type(product).electronic and spec.done_file:
+            template, made = spec.done_file, product  # scanned to PDF: the file was sent
+        if op is not None and not op.returns_item and spec.done_consumed:
+            template = spec.done_consumed  # nothing was handed back
+            if op.sends_out and task.destination and spec.done_sent:
+                template = spec.done_sent  # "your form was faxed to the tax office"
         text = template.format(
             to=who(task.recipient),
             have="have" if task.recipient == requester else "has",
-            whose=f"{whose(owner)} {item}",
+            whose=whose_item(owner),
             owner_s=whose(task.owner),
             item=item,
             product=self.office.item_type(made).name if made else "result",
             by=who(task.actor),
             done=done_words(op) if op else task.kind,
+            dest=task.destination or "",
         )
         return text + by
 

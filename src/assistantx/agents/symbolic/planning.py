@@ -26,7 +26,13 @@ from assistantx.core.office import Office
 from assistantx.core.ports.lock import Purpose
 from assistantx.core.task_schema import Task, TaskFrame, kind_shape, operation_of
 from assistantx.core.trace import Plan, SubGoal
-from assistantx.core.wording import a_thing, item_type_name, person_name, purpose_text
+from assistantx.core.wording import (
+    a_thing,
+    item_phrase,
+    item_type_name,
+    person_name,
+    purpose_text,
+)
 from assistantx.memory.graph import LongTermMemory
 
 TaskStatus = Literal["done", "active", "unachievable", "failed"]
@@ -76,6 +82,7 @@ class PhaseView:
     person: str | None = None
     place: str | None = None
     items: list[tuple[str, Purpose]] = field(default_factory=list)
+    pending: list[tuple[str, Purpose]] = field(default_factory=list)  # items' codes still to use
 
 
 @dataclass
@@ -118,9 +125,22 @@ class Planner:
             raise LookupError(f"no facility for {t.kind} {t.item}")
         return offering[0].id
 
-    def _source(self, n: int, t: Task, requester: str) -> Role:
-        """Who puts the item into the locker."""
+    def _source(self, n: int, t: Task, requester: str, held: frozenset[str] = frozenset()) -> Role:
+        """Who puts the item into the locker (``held``: items an earlier task of the request
+        brought to the requester: they have them now, wherever they are kept)."""
         item_type = t.item or ""
+        if t.owner is not None and f"{item_type}:{t.owner}" in held:
+            # "get my lunch out of the fridge and heat it", read as two tasks: the lunch is
+            # with them now, so they put it in; the fridge's keeper is not asked again
+            return Role(
+                f"{n}.source",
+                "give",
+                requester,
+                fixed=requester,
+                item_type=item_type,
+                item_owner=t.owner,
+                beneficiary=t.recipient,
+            )
         kept = self.office.keeper(t.owner, item_type) if t.owner else None
         if kept is not None:
             return Role(
@@ -151,6 +171,8 @@ class Planner:
         fridge): the keeper cannot give it away for them (runtime/consent.py)."""
         if t.owner is None or t.owner == requester or t.item is None:
             return []
+        if self.office.is_supply(f"{t.item}:{t.owner}"):
+            return []  # owned by nobody (the stationery cupboard's pens): no one's yes
         kept = self.office.keeper(t.owner, t.item)
         if kept is None:
             return []
@@ -167,12 +189,22 @@ class Planner:
             )
         ]
 
-    def _compile(self, n: int, t: Task, requester: str) -> CompiledTask:
-        if t.kind == "transfer" and t.owner is None and t.item:
-            # nobody's named: the one kept at a facility (the cupboard's label maker) first,
-            # as the oracle does (agents/oracle/plan.py)
-            kept = self.office.kept_owner(t.item, besides=requester)
-            t = t.model_copy(update={"owner": kept}) if kept else t
+    def _compile(
+        self,
+        n: int,
+        t: Task,
+        requester: str,
+        *,
+        kept: bool = True,
+        held: frozenset[str] = frozenset(),
+    ) -> CompiledTask:
+        """``kept``: whether a transfer that names nobody's item uses the one kept at a
+        facility; without it (the keeper is away), any colleague's at hand is borrowed."""
+        if t.kind == "transfer" and t.owner is None and t.item and kept:
+            # nobody's named: the one kept at a facility (the cupboard's label maker, its
+            # supply of tape) first, as the oracle does (agents/oracle/plan.py)
+            keeper = self.office.kept_owner(t.item, besides=requester)
+            t = t.model_copy(update={"owner": keeper}) if keeper else t
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
         phases: list[Phase] = []
         roles: list[Role] = []
@@ -189,7 +221,7 @@ class Planner:
         source_type = (self.office.operation(op).input if op else None) or item
         match t.kind:
             case "transfer":
-                source = self._source(n, t, requester)
+                source = self._source(n, t, requester, held)
                 roles = [source, recipient]
                 it = leg(item, "deposit", t.owner, None if t.owner else source)
                 phases = [
@@ -226,7 +258,7 @@ class Planner:
                     Handover(recipient, (leg(product, "collect", owner),)),
                 ]
             case "copy":
-                source = self._source(n, t, requester)
+                source = self._source(n, t, requester, held)
                 guard = Role(
                     f"{n}.copier",
                     "copy",
@@ -238,7 +270,11 @@ class Planner:
                 )
                 roles = [guard, source, recipient]
                 back: list[Phase]
-                if t.recipient == owner:
+                if self.office.item_type(product).electronic:
+                    # scanned to PDF: the file is sent by message, only the original comes back
+                    roles = [guard, source]
+                    back = [Handover(source, (leg(item, "collect", owner),))]
+                elif t.recipient == owner:
                     back = [
                         Handover(
                             source, (leg(item, "collect", owner), leg(product, "collect", owner))
@@ -273,7 +309,7 @@ class Planner:
                 # The work-on-the-item kinds of the table (sign, seal, heat ...): the item
                 # goes in, the doer works on it, the recipient takes it out.
                 spec = task_kinds.kind(kind)
-                source = self._source(n, t, requester)
+                source = self._source(n, t, requester, held)
                 doer = Role(
                     f"{n}.{spec.doer}",
                     kind,
@@ -286,8 +322,8 @@ class Planner:
                 )
                 party = {"source": source, "doer": doer, "recipient": recipient}
                 steps = spec.steps
-                if op is not None and self.office.operation(op).consumes:
-                    # a shredded document does not come back: nobody collects it
+                if op is not None and not self.office.operation(op).returns_item:
+                    # a shredded or faxed-out document does not come back: nobody collects it
                     steps = tuple(s for s in steps if s.party != "recipient")
                 # A person who does the work is sought first (a signer may be away); a
                 # facility's guard is found where the facility is.
@@ -318,19 +354,43 @@ class Planner:
     # -- progress ------------------------------------------------------------------------
     def agenda(self, frame: TaskFrame, ltm: LongTermMemory, ev: Evidence, now: float) -> Agenda:
         views: list[TaskView] = []
-        for compiled in self.compile(frame):
-            views.append(self._view(compiled, ltm, ev, now))
+        # items an earlier task brought to the requester, with the code that did: a later
+        # task on the same item starts from them and counts only codes used after that
+        after: dict[str, int] = {}
+        requester = frame.requester
+        for n, task in enumerate(frame.tasks):
+            held = frozenset(after)
+            compiled = self._compile(n, task, requester, held=held)
+            view = self._view(compiled, ltm, ev, now, after)
+            if view.status == "unachievable" and task.owner is None and compiled.task.owner:
+                # the kept one cannot be had (its keeper is away, none is left): borrow one
+                # from a colleague instead, with their own yes, as the oracle does
+                other = self._view(
+                    self._compile(n, task, requester, kept=False, held=held), ltm, ev, now, after
+                )
+                view = other if other.status != "unachievable" else view
+            views.append(view)
+            if compiled.task.kind == "transfer" and view.status == "done":
+                for item, _ in (i for p in view.phases for i in p.items if i[1] == "collect"):
+                    found = _first_used(ev, item, "collect", requester, after.get(item, -1))
+                    if found is not None and compiled.task.recipient == requester:
+                        after[item] = found
         return Agenda(frame, views)
 
     def _view(
-        self, compiled: CompiledTask, ltm: LongTermMemory, ev: Evidence, now: float
+        self,
+        compiled: CompiledTask,
+        ltm: LongTermMemory,
+        ev: Evidence,
+        now: float,
+        after: dict[str, int] | None = None,
     ) -> TaskView:
         states: dict[str, RoleState] = {}
         for role in compiled.roles:
             states[role.key] = self.roles.resolve(role, ltm, ev, now)
         phases: list[PhaseView] = []
         for phase in compiled.phases:
-            phases.append(self._phase(phase, states, ltm, ev))
+            phases.append(self._phase(phase, states, ltm, ev, after or {}))
         # a Confirm is also done once every phase using its role is done
         for k, view in enumerate(phases):
             if isinstance(view.phase, Confirm) and not view.done:
@@ -358,7 +418,12 @@ class Planner:
         return TaskView(compiled, states, phases, status, reason)
 
     def _phase(
-        self, phase: Phase, states: dict[str, RoleState], ltm: LongTermMemory, ev: Evidence
+        self,
+        phase: Phase,
+        states: dict[str, RoleState],
+        ltm: LongTermMemory,
+        ev: Evidence,
+        after: dict[str, int],
     ) -> PhaseView:
         if isinstance(phase, Confirm):
             state = states[phase.role.key]
@@ -389,7 +454,7 @@ class Planner:
                 owner = self._used_owner(ev, leg)
             if owner is not None:
                 items.append((f"{leg.item_type}:{owner}", leg.purpose))
-        done = len(items) == len(phase.legs) and all(ev.used(i, p) for i, p in items)
+        done = len(items) == len(phase.legs) and all(used_after(ev, i, p, after) for i, p in items)
         person = state.person if state.bound else None
         place = self.roles.meeting_place(phase.role, person, ltm) if person else None
         what = ", ".join(purpose_text(self.office, p, i) for i, p in items) or role_text(
@@ -407,6 +472,7 @@ class Planner:
             person=person,
             place=place,
             items=items,
+            pending=[(i, p) for i, p in items if not used_after(ev, i, p, after)],
         )
 
     @staticmethod
@@ -439,6 +505,34 @@ class Planner:
         return Plan(
             goal=goal or "understand the request", subgoals=subgoals[:30], notes=notes[:2000]
         )
+
+
+def used_after(ev: Evidence, item: str, purpose: str, after: dict[str, int]) -> bool:
+    """Whether a code for ``purpose`` on ``item`` was used, after the code that brought the
+    item to the requester in an earlier task (``after``: its index among the codes)."""
+    start = after.get(item, -1)
+    return any(
+        c.used and c.item == item and c.purpose == purpose
+        for k, c in enumerate(ev.codes)
+        if k > start
+    )
+
+
+def _first_used(ev: Evidence, item: str, purpose: str, person: str, start: int) -> int | None:
+    """The index of the first code for ``purpose`` on ``item`` that ``person`` used after the
+    code at ``start`` (the hand-over that finished an earlier task on the item)."""
+    return next(
+        (
+            k
+            for k, c in enumerate(ev.codes)
+            if k > start
+            and c.used
+            and c.item == item
+            and c.purpose == purpose
+            and c.person == person
+        ),
+        None,
+    )
 
 
 def _uses(phase: Phase, key: str) -> bool:
@@ -475,15 +569,20 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     def name(person: str | None) -> str:
         if person is not None and person == you:
             return "you"
-        return office.person(person).name if person else "anyone"
+        return person_name(office, person) if person else "anyone"
 
     def owner_s(person: str | None) -> str:
         if person is not None and person == you:
             return "your"
+        if person is not None and not office.is_person(person):
+            return "the"  # owned by nobody (a facility's supply)
         return f"{name(person)}'s"
 
     item = office.item_type(task.item).name if task.item else "item"
-    whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item)
+    if task.owner is not None and task.item and office.is_supply(f"{task.item}:{task.owner}"):
+        whose = item_phrase(office, f"{task.item}:{task.owner}")  # owned by nobody
+    else:
+        whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item)
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     op = operation_of(office, task)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.agents.symbolic.roles import Role, Roles
+from assistantx.core import task_kinds
 from assistantx.core.actions import (
     Action,
     ForwardFile,
@@ -133,8 +134,8 @@ class Reflector:
             if role is None:
                 continue
             owned = role.item_type if role.asks_ownership else None
-            if role.kind == "seal":  # a yes means they own the office's seal
-                owned = self.roles.office.seal_tool()
+            if task_kinds.needs_tool(role.kind):  # a yes means they own the tool (the seal)
+                owned = task_kinds.tool_type(role.kind, self.roles.office)
             if owned is None:
                 continue
             if not q.group:

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.evidence import Evidence, Question
+from assistantx.core import task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing
@@ -88,6 +89,8 @@ class Roles:
 
     def _whose(self, role: Role) -> str:
         owner = role.item_owner or role.requester
+        if not self.office.is_person(owner):
+            return "the"  # a supply owned by nobody: "take the pen out of the cupboard"
         return f"{self._name(owner)}'s"
 
     def _thing(self, role: Role) -> str:
@@ -130,10 +133,11 @@ class Roles:
                 )
             case "print" | "copy":
                 return f"{self._operation_name(role)} {self._whose(role)} {thing} at the {place}"
-            case "sign":
-                return f"sign {self._whose(role)} {thing}"
-            case "seal":
-                return f"stamp {self._whose(role)} {thing} with {'a' if anyone else 'your'} seal"
+            case kind if task_kinds.kind_of(kind) and task_kinds.kind(kind).ask:
+                # a person's work from the table ("sign X's document", "stamp ... with a seal")
+                ask = task_kinds.kind(kind).ask or ""
+                whose = f"{self._whose(role)} {thing}"
+                return ask.format(whose=whose, your="a" if anyone else "your")
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
             case "heat":
@@ -170,9 +174,14 @@ class Roles:
         if role.fixed is not None:
             return [role.fixed]
         if role.kind == "lend" and role.item_type is not None:
-            found = [p for p in ltm.owners(role.item_type) if p != role.beneficiary]
-        elif role.kind == "seal":
-            tool = self.office.seal_tool()
+            # an owner whose one is kept at a facility (in a cupboard) does not have it at hand
+            found = [
+                p
+                for p in ltm.owners(role.item_type)
+                if p != role.beneficiary and self.office.keeper(p, role.item_type) is None
+            ]
+        elif task_kinds.needs_tool(role.kind):  # whoever owns the tool (the seal)
+            tool = task_kinds.tool_type(role.kind, self.office)
             found = ltm.owners(tool) if tool else []
         elif role.facility is not None:
             found = ltm.guards(role.facility)
@@ -219,6 +228,9 @@ class Roles:
                 if ev.stance_of(group_q, t.person) == "yes"
                 and t.person not in helpers
                 and t.person != role.requester  # never the helper of their own request
+                # a keeper's job is done by a keeper: "I have one, you can borrow it" to
+                # "could anyone take it out of the cupboard?" is no yes (the oracle's rule)
+                and (role.kind != "keep" or t.person in ltm.guards(role.facility or ""))
             ]
         for person in [*people, *helpers]:
             why = self._exclusion(role, person, ltm, ev, now)

@@ -60,7 +60,7 @@ def related_people(
 ) -> list[str]:
     """Everyone whose absence can change what the optimal agent does."""
     found: set[str] = set(plan.must_be_available)
-    for role in plan.roles:
+    for role in [*plan.roles, *(plan.fallback.roles if plan.fallback else ())]:
         found.update(candidates(role, ltm, requester))
         found.update(p.id for p in office.people if able(role, office, p.id))
     found.discard(requester)
@@ -188,8 +188,16 @@ def _pick_round_robin(
             picked.append(variant)
             progressed = True
         if not progressed and round_number > 4 * max(len(q) for q in queues.values()):
-            raise DatasetError(f"only {len(picked)} distinct {category} variants, {target} wanted")
-    return picked  # pragma: no cover - the loop returns or raises
+            # a small office (few bases, few people to be away) has fewer distinct variants:
+            # the dataset takes them all rather than refusing the office
+            logger.warning(
+                "only %d distinct %s variants in this office (%d wanted): all are used",
+                len(picked),
+                category,
+                target,
+            )
+            return picked
+    return picked  # pragma: no cover - the loop returns
 
 
 def _task(variant: Variant, office: Office, number: int) -> Task:
@@ -197,6 +205,8 @@ def _task(variant: Variant, office: Office, number: int) -> Task:
     plan = build_plan(base, office)
     achievable = variant.category != "unachievable"
     level: Level = "L3" if not achievable else variant.run.log.level
+    if variant.run.log.fell_back and plan.fallback is not None:
+        plan = plan.fallback  # a colleague's was borrowed: any of the type will do
     goal = plan.goal if achievable else [{"informed": base.requester}]
     extra = {} if achievable else {"requested_goal": plan.goal}
     return Task(

@@ -1,0 +1,37 @@
+"""Short-term memory for consent checks in tests: a request, and people who answered."""
+
+from __future__ import annotations
+
+from assistantx.core.dialogue import DialogueTurn
+from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.trace import Trace
+from assistantx.memory.short_term import ShortTermMemory
+
+
+def memory(requester: str, text: str) -> ShortTermMemory:
+    trace = Trace(instruction_id="i-1", requester=requester, text=text, reasoner="t", started_at=0)
+    return ShortTermMemory(instruction_id="i-1", requester=requester, text=text, trace=trace)
+
+
+def answered(stm: ShortTermMemory, *people: str) -> None:
+    """Each person was asked in their own chat and said yes."""
+    for n, person in enumerate(people):
+        dm = ChatRef(kind="dm", id=person)
+        stm.dialogue += [
+            DialogueTurn(
+                time=2 * n,
+                direction="out",
+                chat=dm,
+                person=person,
+                text="Could you?",
+                question_id=f"q{n}",
+            ),
+            DialogueTurn(
+                time=2 * n + 1,
+                direction="in",
+                chat=dm,
+                person=person,
+                text="sure",
+                in_reply_to=f"q{n}",
+            ),
+        ]

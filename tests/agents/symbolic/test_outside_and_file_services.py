@@ -1,0 +1,82 @@
+"""Services that do not hand the item back (issue 23, item 5): a fax that sends a document
+outside the office (nothing comes back, nobody collects) and a scan to PDF whose product is an
+electronic file sent by message, not put into the locker; outcomes told with the operation's
+own words. Embedded planner, oracle and the dataset's check alike."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+import yaml
+from symbolic_run import run_instruction
+
+from assistantx.agents.oracle.plan import build_plan
+from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
+from assistantx.core.task_spec import BaseInstruction, Part, check_base
+from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
+
+
+def _office(**op: Any) -> Office:
+    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw["item_types"].append({"id": "pdf", "name": "PDF", "kind": "electronic"})
+    raw["operations"] = [o for o in raw["operations"] if o["id"] != "copy"]
+    raw["operations"].append({"verbs": [op["name"]], "input": "document", **op})
+    for f in raw["facilities"]:
+        if f["id"] == "printer":
+            f["operations"], f["products"] = ["print", op["id"]], ["printout"]
+    return parse_office(raw)
+
+
+@pytest.fixture(scope="module")
+def fax() -> Office:
+    return _office(id="fax", name="fax", sends_out=True)
+
+
+@pytest.fixture(scope="module")
+def scan() -> Office:
+    return _office(id="scan", name="scan", product="pdf", done="scanned to PDF")
+
+
+async def test_a_fax_sent_outside_is_not_handed_back(fax: Office) -> None:
+    run = await run_instruction(fax, "lee", "Please fax my document to the county tax office")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert "your document was faxed" in run.stm.trace.summary
+    assert run.sim.world.check({"heated": "document:lee"})
+    assert run.sim.world.holder["document:lee"] == "print_room"  # it stays at the fax
+    codes = [r.action for r in run.stm.trace.actions() if r.action.type == "send_qr"]
+    assert [c.purpose for c in codes] == ["deposit", "heat"]  # nobody collects it
+    told = [m.text for m in run.sim.messenger.sent if m.chat.id == "mao"]
+    assert not any("put it back" in t for t in told)
+
+
+async def test_the_oracle_faxes_out_to_the_named_destination(fax: Office) -> None:
+    part = Part(kind="heat", operation="fax", destination="the county tax office")
+    base = BaseInstruction(
+        id="f1", requester="lee", text="fax my form to the tax office", parts=(part,)
+    )
+    check_base(base, fax)
+    assert part.task("lee", fax).destination == "the county tax office"
+    plan = build_plan(base, fax)
+    assert plan.deliveries == [] and {"heated": "document:lee"} in plan.goal
+    pools = classify(base, fax)
+    await verify_tasks(fax, [_task(pools["L1"][0], fax, 1)])
+
+
+async def test_a_scan_to_pdf_is_sent_by_message_and_the_paper_comes_back(scan: Office) -> None:
+    run = await run_instruction(scan, "lee", "Please scan my document")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert "scanned to PDF" in run.stm.trace.summary and "by message" in run.stm.trace.summary
+    assert run.sim.world.check({"received": ["lee", "pdf:lee"]})
+    assert run.sim.world.check({"holds": ["lee", "document:lee"]})
+    assert "pdf:lee" not in run.sim.world.holder  # never in the locker: it is a file
+
+
+async def test_the_oracle_scans_to_pdf_alike(scan: Office) -> None:
+    base = BaseInstruction(
+        id="s1", requester="lee", text="scan my form to PDF", parts=(Part(kind="copy"),)
+    )
+    plan = build_plan(base, scan)
+    assert {"received": ["lee", "pdf:lee"]} in plan.goal
+    pools = classify(base, scan)
+    await verify_tasks(scan, [_task(pools["L1"][0], scan, 1)])
