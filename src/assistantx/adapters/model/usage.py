@@ -80,35 +80,28 @@ class UsageLedger:
 
     def record(self, request: ChatRequest, response: ChatResponse) -> CallRecord:
         """Add the call that answered ``request`` with ``response``."""
-        entry = CallRecord(
-            agent=request.agent,
-            instruction_id=request.instruction_id,
-            step=request.step,
-            model=response.model,
-            prompt_tokens=response.usage.prompt_tokens,
-            completion_tokens=response.usage.completion_tokens,
-            latency_s=response.latency_s,
-            retries=response.retries,
-            attempt=request.attempt,
-            estimated=response.usage.estimated,
-        )
-        self._records.append(entry)
-        return entry
+        return self._add(request, response, failed=False)
 
     def record_failure(self, request: ChatRequest, error: LLMCallFailed) -> CallRecord:
         """Add a call that failed, with what it cost before it did."""
+        return self._add(request, error, failed=True)
+
+    def _add(
+        self, request: ChatRequest, outcome: ChatResponse | LLMCallFailed, *, failed: bool
+    ) -> CallRecord:
+        # An answer and a failure carry the same cost fields: one record shape for both.
         entry = CallRecord(
             agent=request.agent,
             instruction_id=request.instruction_id,
             step=request.step,
-            model=error.model,
-            prompt_tokens=error.usage.prompt_tokens,
-            completion_tokens=error.usage.completion_tokens,
-            latency_s=error.latency_s,
-            retries=error.retries,
+            model=outcome.model,
+            prompt_tokens=outcome.usage.prompt_tokens,
+            completion_tokens=outcome.usage.completion_tokens,
+            latency_s=outcome.latency_s,
+            retries=outcome.retries,
             attempt=request.attempt,
-            estimated=error.usage.estimated,
-            failed=True,
+            estimated=outcome.usage.estimated,
+            failed=failed,
         )
         self._records.append(entry)
         return entry
