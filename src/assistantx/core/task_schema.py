@@ -29,9 +29,6 @@ from assistantx.core.office import Office, OperationShape
 TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
 if set(get_args(TaskKind)) != {k.id for k in task_kinds.KINDS}:  # pragma: no cover
     raise RuntimeError("task_schema.TaskKind and the task_kinds table disagree")
-# The tool of a ``seal`` task in an office file of the previous format, which marked none
-# (``ItemType.seals``); the loader marks it (office.upgrade) and code asks office.seal_tool().
-SEAL_TOOL = "seal"
 # The task kind each shape of office operation takes (office.Operation.shape).
 SHAPE_KIND: dict[OperationShape, TaskKind] = {
     k.shape: cast(TaskKind, k.id) for k in task_kinds.KINDS if k.shape is not None

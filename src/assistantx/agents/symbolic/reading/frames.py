@@ -33,7 +33,6 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, task_kinds
 from assistantx.core.office import Office
-from assistantx.core.task_schema import SEAL_TOOL as SEAL
 from assistantx.core.task_schema import Task, TaskFrame
 
 _BREAK_WORDS = english.words("clause_breaks")
@@ -155,10 +154,11 @@ class FrameReader:
             return True
         if task.kind in FILE_KINDS and self.reader.kinds[type_id] in ("electronic", "personal"):
             return True  # "print my report", "email my contract"
+        # the tool a kind's doer uses (the office's sealing tool, whatever its type id)
         return (task.kind, type_id) in {
             ("print", self.reader.printout),
             ("copy", self.reader.copy),
-            ("seal", SEAL),
+            (task.kind, task_kinds.tool_type(task.kind, self.office)),
         }
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
