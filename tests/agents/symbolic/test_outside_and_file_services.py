@@ -50,6 +50,28 @@ async def test_a_fax_sent_outside_is_not_handed_back(fax: Office) -> None:
     assert not any("put it back" in t for t in told)
 
 
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("Please fax my document to the county tax office", "the county tax office"),
+        ("could you fax my contract to +44 20 7946 0000 please", "+44 20 7946 0000"),
+    ],
+)
+async def test_the_outcome_names_where_the_fax_went_in_the_requesters_words(
+    fax: Office, text: str, where: str
+) -> None:
+    run = await run_instruction(fax, "lee", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert f"your document was faxed to {where}" in run.stm.trace.summary
+
+
+async def test_a_fax_with_no_destination_asks_where_before_anything_moves(fax: Office) -> None:
+    run = await run_instruction(fax, "lee", "please fax my document")
+    told = [m.text for m in run.sim.messenger.sent if m.chat.id == "lee"]
+    assert told and "Where should I fax it to?" in told[0]
+    assert not [r for r in run.stm.trace.actions() if r.action.type in ("send_qr", "move")]
+
+
 async def test_the_oracle_faxes_out_to_the_named_destination(fax: Office) -> None:
     part = Part(kind="heat", operation="fax", destination="the county tax office")
     base = BaseInstruction(

@@ -32,6 +32,7 @@ import dataclasses
 
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
+from assistantx.agents.symbolic.reading.destination import destination
 from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
 from assistantx.agents.symbolic.reading.readings import MentionReader
@@ -132,6 +133,18 @@ class InstructionParser:
                         requester=frame.requester, question=f"Which do you mean: {names}?"
                     )
                 t = t.model_copy(update={"operation": said[0].id})
+            op_id = t.operation or (ops[0].id if len(ops) == 1 else None)
+            op = self.office.operation(op_id) if op_id else None
+            if op is not None and op.sends_out and t.destination is None:
+                # a fax leaves the office: where to is the requester's to say, never a guess
+                where = destination(lexed.text, self._op_words[op.id])
+                if where is None:
+                    return TaskFrame(
+                        requester=frame.requester,
+                        question=f"Where should I {op.name} it to? Please give the number "
+                        "or the name of the place.",
+                    )
+                t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
 
