@@ -23,12 +23,16 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 
 
 def _serve(args: argparse.Namespace) -> int:
+    from assistantx.nav import disk_cache
     from assistantx.service.app import create_app
     from assistantx.service.datalock import DataDirBusyError, DataDirLock
-    from assistantx.service.runtime import ServiceRuntime
+    from assistantx.service.runtime import MAP_CACHE_DIR, ServiceRuntime
     from assistantx.service.server import service_server
 
     settings = Settings()
+    # The map's derived arrays are kept by content hash from the first use on, the check of
+    # the robot's files below included (it builds the costmap and planner the service uses).
+    disk_cache.use_directory(settings.data_dir / MAP_CACHE_DIR)
     problem = _robot_files_problem(settings)
     if problem is not None:
         print(f"error: {problem}")

@@ -17,13 +17,12 @@ import socket
 from collections.abc import Callable
 from contextlib import AsyncExitStack
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from uuid import uuid4
 
 from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
-from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup, matrix_setup
 from assistantx.adapters.model import model_from_settings
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
@@ -57,7 +56,6 @@ from assistantx.service.errors import NotFoundError, TooManyRequestsError
 from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
-from assistantx.service.matrix_wiring import build_matrix, start_matrix
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
@@ -67,6 +65,9 @@ from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
 from assistantx.store.leases import Leases
+
+if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
+    from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup
 
 logger = logging.getLogger(__name__)
 
@@ -109,9 +110,11 @@ class ServiceRuntime:
         self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
         # here (create_app fails fast on a bad one); it is built in start, with the rest.
-        self.matrix_setup: MatrixSetup | None = (
-            matrix_setup(settings) if settings.messenger == "matrix" else None
-        )
+        self.matrix_setup: MatrixSetup | None = None
+        if settings.messenger == "matrix":
+            from assistantx.adapters.messenger.matrix import matrix_setup
+
+            self.matrix_setup = matrix_setup(settings)
         self.matrix: MatrixRuntime | None = None
 
     # -- start-up ------------------------------------------------------------------------
@@ -168,6 +171,8 @@ class ServiceRuntime:
         self.codebook = CodeBook(self.lock_keys.codes, self.clock, data_dir / CODEBOOK_FILE)
         self.messenger.relay_to(self.codebook.note)
         if self.matrix_setup is not None:  # Matrix traffic journaled; its codes scannable too
+            from assistantx.service.matrix_wiring import build_matrix
+
             self.matrix = build_matrix(
                 stack, self.matrix_setup, transcript=self.journal, relay=self.codebook.note
             )
@@ -247,6 +252,8 @@ class ServiceRuntime:
         self.ledger.world_state = self._world_state  # the world as restored, from now on
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
+            from assistantx.service.matrix_wiring import start_matrix
+
             await start_matrix(stack, self.matrix, self.assistant)
         # Before anything resumes: a resumed instruction is surveyed like a new one. Opened
         # before _stop is pushed, so it closes after the assistant stopped: an instruction
