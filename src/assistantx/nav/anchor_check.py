@@ -83,8 +83,8 @@ def place_anchors(
 ) -> dict[str, Anchor]:
     """``count`` anchors spread over the largest reachable free area: cells at least
     ``clearance_m`` from any wall, chosen by farthest-point sampling from a seeded start."""
-    labels, n = _components(costmap)
-    if n == 0:
+    labels = _components(costmap)
+    if not labels.any():
         raise ValueError("the map has no free space the robot can stand in")
     sizes = np.bincount(labels.ravel())
     sizes[0] = 0

@@ -27,7 +27,6 @@ from assistantx.adapters.model import model_from_settings
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
 from assistantx.agents.registry import load_builder, needs_llm, reasoner_factory
-from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
 from assistantx.core.office import Office, PersonId, load_office
@@ -68,6 +67,7 @@ from assistantx.store.leases import Leases
 
 if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
     from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup
+    from assistantx.agents.symbolic.requests import RequestRecognizer
 
 logger = logging.getLogger(__name__)
 
@@ -184,7 +184,7 @@ class ServiceRuntime:
         code_lifetime_s = s.lock_code_expiry_min * 60
         self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
         self.locker.listen(self.ledger.on_lock_event)
-        self._request_check = RequestRecognizer(self.office)
+        self._request_check: RequestRecognizer | None = None  # made on the first message
         ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
@@ -203,7 +203,7 @@ class ServiceRuntime:
                     wall_s=s.instruction_wall_s,
                 ),
                 # A direct message starts an instruction only when it asks for something.
-                is_request=self._request_check,
+                is_request=self._is_request,
                 retire_codes=self.ledger.retire,
             )
         )
@@ -409,10 +409,20 @@ class ServiceRuntime:
         self.admission.admit(record)
         return record
 
+    def _is_request(self, text: str, sender: str, *, strict: bool) -> bool:
+        """Whether a direct message asks for something. The recognizer is made on the first
+        message, not at start: its word forms (lemminflect's tables, about a third of a
+        CPU-second) would delay every start for a message that may not come soon."""
+        if self._request_check is None:
+            from assistantx.agents.symbolic.requests import RequestRecognizer
+
+            self._request_check = RequestRecognizer(self.office)
+        return self._request_check(text, sender, strict=strict)
+
     async def _over_the_rate(self, message: InboundMessage) -> bool:
         """A direct message that would start one instruction too many is answered in words
         (once per window) instead; True: handled, nothing starts."""
-        if not self._request_check(message.text, message.sender, strict=False):
+        if not self._is_request(message.text, message.sender, strict=False):
             return False  # not a request: the assistant answers it as usual
         wait_s = self.rate.take(message.sender)
         if wait_s is None:

@@ -9,6 +9,10 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+# Loaded now: the function ``registration`` shares its name with its module, which importing
+# the module would bind here in its place (config and yaml; the service loads both anyway).
+from assistantx.adapters.messenger.matrix.registration import registration, write_registration
+
 if TYPE_CHECKING:
     from assistantx.adapters.messenger.matrix.adapter import MatrixMessenger, transaction_id
     from assistantx.adapters.messenger.matrix.appservice import create_appservice_router
@@ -16,10 +20,6 @@ if TYPE_CHECKING:
     from assistantx.adapters.messenger.matrix.config import MatrixConfig, load_matrix_config
     from assistantx.adapters.messenger.matrix.ingest import EventIngestor
     from assistantx.adapters.messenger.matrix.normalize import EventNormalizer
-    from assistantx.adapters.messenger.matrix.registration import (
-        registration,
-        write_registration,
-    )
     from assistantx.adapters.messenger.matrix.runtime import (
         MatrixRuntime,
         MatrixSetup,
@@ -41,8 +41,6 @@ _HOMES = {
     "load_matrix_config": "config",
     "EventIngestor": "ingest",
     "EventNormalizer": "normalize",
-    "registration": "registration",
-    "write_registration": "registration",
     "MatrixRuntime": "runtime",
     "MatrixSetup": "runtime",
     "build_matrix_runtime": "runtime",
