@@ -8,6 +8,7 @@ first, then the port, and only then the journal (resuming the running instructio
 from __future__ import annotations
 
 import argparse
+import gc
 import signal
 import socket
 import sys
@@ -42,6 +43,11 @@ def _serve(args: argparse.Namespace) -> int:
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
 
     def announce(runtime: ServiceRuntime) -> None:
+        # What start-up built lives as long as the process: out of the collector's sight, a
+        # full collection no longer walks it (shorter pauses of the event loop), and neither
+        # do the collections of the interpreter's exit, which took about a CPU-second of
+        # every stop (perf: two thirds of the stop in gc_collect_main).
+        gc.freeze()
         print(f"AssistantX is serving on http://{shown}:{port}/", flush=True)
         print(f"  API docs: http://{shown}:{port}/docs", flush=True)
         if runtime.auth.generated_token:
