@@ -9,7 +9,14 @@ had started (the planning worker, multiprocessing's resource tracker) was still 
 The office map is the repository's; "warehouse" is nav2's (maps/nav2, 30 x 50 m at 3 cm,
 the largest there), with anchors for the office's places spread over its free space.
 
+Bytecode: an installed package is byte-compiled (pip does it), but a checkout run with
+PYTHONDONTWRITEBYTECODE (set on the team's machines) compiles every module it imports at
+every start, about a CPU-second more. With ``--bytecode`` (the default) the servers write and
+read bytecode under a temporary PYTHONPYCACHEPREFIX, filled by one start on a throw-away data
+folder first (not counted); ``--no-bytecode`` measures the environment as it is.
+
     python bench/serve_start.py [--maps office,warehouse] [--localize | --no-localize]
+                                [--bytecode | --no-bytecode]
 
 Last line: one JSON object.
 """
@@ -65,6 +72,15 @@ def _anchors_for(map_yaml: Path, out: Path) -> Path:
     return out
 
 
+def _env(base: dict[str, str], data_dir: Path, map_yaml: Path, localize: bool) -> dict[str, str]:
+    return base | {
+        "ASSISTANTX_DATA_DIR": str(data_dir),
+        "ASSISTANTX_OPERATOR_TOKEN": "bench-operator-token-000000001",
+        "ASSISTANTX_ROBOT_LOCALIZE": str(localize).lower(),
+        "ASSISTANTX_MAP": str(map_yaml),
+    }
+
+
 def start_once(env: dict[str, str], log: Path) -> dict[str, object]:
     port = _free_port()
     cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1", "--port", str(port)]
@@ -109,19 +125,21 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--maps", default="office,warehouse")
     parser.add_argument("--localize", action=argparse.BooleanOptionalAction, default=True)
+    parser.add_argument("--bytecode", action=argparse.BooleanOptionalAction, default=True)
     args = parser.parse_args()
     results: dict[str, dict[str, object]] = {}
     with tempfile.TemporaryDirectory() as tmp:
+        base = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
+        if args.bytecode:
+            base.pop("PYTHONDONTWRITEBYTECODE", None)
+            base["PYTHONPYCACHEPREFIX"] = str(Path(tmp) / "pycache")
+            warm = Path(tmp) / "warm-up"
+            (warm / "data").mkdir(parents=True)
+            start_once(_env(base, warm / "data", MAPS["office"], args.localize), warm / "log")
         for name in args.maps.split(","):
             data_dir = Path(tmp) / name / "data"
             data_dir.mkdir(parents=True)
-            env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
-            env.update(
-                ASSISTANTX_DATA_DIR=str(data_dir),
-                ASSISTANTX_OPERATOR_TOKEN="bench-operator-token-000000001",
-                ASSISTANTX_ROBOT_LOCALIZE=str(args.localize).lower(),
-                ASSISTANTX_MAP=str(MAPS[name]),
-            )
+            env = _env(base, data_dir, MAPS[name], args.localize)
             if name != "office":
                 anchors = _anchors_for(MAPS[name], Path(tmp) / name / "anchors.yaml")
                 env["ASSISTANTX_MAP_ANCHORS"] = str(anchors)
@@ -134,7 +152,8 @@ def main() -> None:
                 f"{second['stop_s']} s; processes left {first['children_left']} / "
                 f"{second['children_left']}"
             )
-    print(json.dumps({"maps": results, "load_avg_1min": round(os.getloadavg()[0], 1)}))
+    summary = {"maps": results, "bytecode": args.bytecode}
+    print(json.dumps(summary | {"load_avg_1min": round(os.getloadavg()[0], 1)}))
 
 
 if __name__ == "__main__":

@@ -13,6 +13,7 @@ from assistantx.nav import disk_cache
 from assistantx.nav.amcl import AmclParams, LikelihoodField
 from assistantx.nav.costmap import Costmap, InflationParams
 from assistantx.nav.occupancy_map import OccupancyMap
+from assistantx.nav.planner import GridPlanner
 
 
 def _room(wall_at: int = 5) -> OccupancyMap:
@@ -69,3 +70,24 @@ def test_a_torn_file_is_computed_again_and_replaced(cache_dir: Path) -> None:
 def test_without_a_directory_nothing_is_written(tmp_path: Path) -> None:
     Costmap.inflate(_room())
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_planners_components_are_read_back_and_a_torn_file_recomputed(cache_dir: Path) -> None:
+    costmap = Costmap.inflate(_room(wall_at=20))
+    first = GridPlanner(costmap)
+    [stored] = list(cache_dir.glob("traversable-components-*.npy"))
+    stamp = stored.stat().st_mtime_ns
+    second = GridPlanner(costmap)
+    assert stored.stat().st_mtime_ns == stamp  # read, not written again
+    assert np.array_equal(second.known_components(), first.known_components())
+    stored.write_bytes(b"\x93NUMPY garbage")
+    third = GridPlanner(costmap)
+    assert np.array_equal(third.known_components(), first.known_components())
+    disk_cache.use_directory(None)
+    assert np.array_equal(GridPlanner(costmap).known_components(), first.known_components())
+
+
+def test_another_map_gets_its_own_components(cache_dir: Path) -> None:
+    GridPlanner(Costmap.inflate(_room(wall_at=5)))
+    GridPlanner(Costmap.inflate(_room(wall_at=20)))
+    assert len(list(cache_dir.glob("traversable-components-*.npy"))) == 2

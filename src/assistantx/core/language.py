@@ -28,7 +28,6 @@ import unicodedata
 from collections.abc import Iterable
 
 from lemminflect import getAllInflections, getAllInflectionsOOV, getAllLemmas
-from rapidfuzz.distance import OSA, Indel
 
 WORD = re.compile(r"[^\W_]+(?:['’][^\W_]+)*", re.UNICODE)
 """A word of any script, with inner apostrophes ("José", "Müller's", "don't")."""
@@ -136,6 +135,8 @@ def closest(word: str, vocabulary: Iterable[str]) -> list[str]:
     (several: the typo is ambiguous). Nearest by edits (a swap of neighbours is one), ties
     broken by insertions and deletions only ("staplr" is nearer stapler than staple). The
     typed word itself never counts."""
+    from rapidfuzz.distance import OSA, Indel  # on the first typo, not at every start
+
     limit = typo_limit(word)
     if limit == 0:
         return []
@@ -155,6 +156,8 @@ def closest(word: str, vocabulary: Iterable[str]) -> list[str]:
 
 def within(word: str, vocabulary: Iterable[str], limit: int) -> list[str]:
     """The vocabulary words at most ``limit`` edits from ``word``."""
+    from rapidfuzz.distance import OSA
+
     return sorted(v for v in vocabulary if OSA.distance(word, v, score_cutoff=limit) <= limit)
 
 

@@ -21,8 +21,7 @@ from typing import TypeVar
 from assistantx.core.errors import JournalError
 from assistantx.feedback.impact import InstructionRecord
 from assistantx.feedback.survey import Survey, SurveyState
-from assistantx.store.connection import DATABASE_ERRORS, Connection
-from assistantx.store.postgres_store import PostgresStore, redact
+from assistantx.store.connection import Connection, database_errors
 from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore
 
 _SCHEMA = """
@@ -80,11 +79,13 @@ class FeedbackStore:
     @classmethod
     def open(cls, path: Path, *, database_url: str | None = None) -> FeedbackStore:
         if database_url is not None:
+            from assistantx.store.postgres_store import PostgresStore, redact  # psycopg: here only
+
             try:
                 return cls(PostgresStore.open_url(database_url, FEEDBACK_SCHEMA))
             except SchemaError as exc:
                 raise JournalError(f"{redact(database_url)}: {exc}") from exc
-            except DATABASE_ERRORS as exc:
+            except database_errors() as exc:
                 raise JournalError(
                     f"{redact(database_url)}: cannot hold survey data ({exc})"
                 ) from exc

@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.ndimage import label
+import numpy.typing as npt
 
 from assistantx.nav.anchors import Anchor
 from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
@@ -26,17 +26,24 @@ class AnchorProblem:
     problem: str
 
 
-def _components(costmap: Costmap) -> tuple[np.ndarray, int]:
-    labels, count = label(costmap.traversable)
-    return np.asarray(labels), int(count)
+def _components(costmap: Costmap) -> npt.NDArray[np.int32]:
+    from scipy.ndimage import label  # here: importing the checks costs no scipy
+
+    labels, _ = label(costmap.traversable)
+    return np.asarray(labels, dtype=np.int32)
 
 
-def check_anchors(costmap: Costmap, anchors: Mapping[str, Anchor]) -> list[AnchorProblem]:
+def check_anchors(
+    costmap: Costmap,
+    anchors: Mapping[str, Anchor],
+    components: npt.NDArray[np.int32] | None = None,
+) -> list[AnchorProblem]:
     """Every anchor that is off the map, in a wall, in unknown space, too close to a wall
     for the robot, or cut off from the others (the largest group of mutually reachable
-    anchors counts as "the others")."""
+    anchors counts as "the others"). ``components``: the traversable cells' labels when the
+    caller has them (a planner on this costmap), else computed."""
     grid = costmap.grid
-    labels, _ = _components(costmap)
+    labels = _components(costmap) if components is None else components
     problems: list[AnchorProblem] = []
     component: dict[str, int] = {}
     for name, a in anchors.items():
@@ -76,8 +83,8 @@ def place_anchors(
 ) -> dict[str, Anchor]:
     """``count`` anchors spread over the largest reachable free area: cells at least
     ``clearance_m`` from any wall, chosen by farthest-point sampling from a seeded start."""
-    labels, n = _components(costmap)
-    if n == 0:
+    labels = _components(costmap)
+    if not labels.any():
         raise ValueError("the map has no free space the robot can stand in")
     sizes = np.bincount(labels.ravel())
     sizes[0] = 0

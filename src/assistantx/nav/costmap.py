@@ -16,7 +16,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
-from scipy.ndimage import distance_transform_edt
 
 from assistantx.nav import disk_cache
 from assistantx.nav.occupancy_map import UNKNOWN, OccupancyMap
@@ -73,6 +72,8 @@ def capped_distance(
     equal the whole map's; a larger one in the tile only says the true one is larger too."""
     height, width = lethal.shape
     halo = math.ceil(reach_m / resolution)
+    from scipy.ndimage import distance_transform_edt  # here: a cached start needs no scipy
+
     out = np.full(lethal.shape, math.inf)
     for y0 in range(0, height, _TILE):
         for x0 in range(0, width, _TILE):
@@ -162,6 +163,8 @@ def update_obstacles(
     near = (my >= my0) & (my < my1) & (mx >= mx0) & (mx < mx1)
     lethal[my[near] - my0, mx[near] - mx0] = True
     if lethal.any():
+        from scipy.ndimage import distance_transform_edt
+
         distance = np.asarray(distance_transform_edt(~lethal), dtype=np.float64) * grid.resolution
     else:
         distance = np.full(lethal.shape, math.inf)

@@ -26,8 +26,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import numpy.typing as npt
-from scipy.ndimage import distance_transform_edt
 
+from assistantx.nav import disk_cache
 from assistantx.nav.geometry import FloatArray
 from assistantx.nav.occupancy_map import OccupancyMap
 
@@ -147,7 +147,11 @@ class GroundTruth:
         self.static: BoolArray = static
         # Metres from each cell centre to the nearest solid cell's edge (half a cell less
         # than centre to centre), for the collision check.
-        centre = np.asarray(distance_transform_edt(~static), dtype=np.float64)
+        centre = disk_cache.cached_array(
+            "solid-distance",
+            (static.shape, np.packbits(static).tobytes()),
+            lambda: _distance_to_solid(static),
+        )
         self._static_distance_m = np.maximum(centre - 0.5, 0.0) * grid.resolution
         rng = rng or np.random.default_rng(0)
         self.walkers = [Walker(spec, float(rng.uniform(0.0, 1.0))) for spec in walkers]
@@ -236,3 +240,10 @@ def _segment_distance(
     t = np.zeros_like(x) if length2 == 0 else ((x - ax) * dx + (y - ay) * dy) / length2
     t = np.clip(t, 0.0, 1.0)
     return np.asarray(np.hypot(x - (ax + t * dx), y - (ay + t * dy)))
+
+
+def _distance_to_solid(solid: BoolArray) -> npt.NDArray[np.float64]:
+    """Cells from each cell centre to the nearest solid one (scipy only when not cached)."""
+    from scipy.ndimage import distance_transform_edt
+
+    return np.asarray(distance_transform_edt(~solid), dtype=np.float64)

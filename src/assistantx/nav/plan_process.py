@@ -31,7 +31,13 @@ logger = logging.getLogger(__name__)
 
 _KEEP = 4  # planners the worker keeps (the map's, and a robot's latest layered versions)
 _Key = tuple[str, int]
-_Payload = tuple[OccupancyMap, npt.NDArray[np.uint8], InflationParams, PlannerParams]
+_Payload = tuple[
+    OccupancyMap,
+    npt.NDArray[np.uint8],
+    InflationParams,
+    PlannerParams,
+    npt.NDArray[np.int32] | None,  # the components when the caller has them: not redone here
+]
 _worker_planners: dict[_Key, GridPlanner] = {}  # in the worker process only
 
 
@@ -57,10 +63,7 @@ class _Missing(Exception):
 
 def _keep_in_worker(key: _Key, payload: _Payload) -> None:
     if key not in _worker_planners:
-        grid, costs, inflation, params = payload
-        _worker_planners[key] = GridPlanner(
-            Costmap(grid, costs, np.empty((0, 0)), inflation), params
-        )
+        _worker_planners[key] = _planner_from(payload)
 
 
 def _plan_in_worker(
@@ -70,9 +73,7 @@ def _plan_in_worker(
     if planner is None:
         if payload is None:
             raise _Missing(key)
-        grid, costs, inflation, params = payload
-        costmap = Costmap(grid, costs, np.empty((0, 0)), inflation)
-        planner = GridPlanner(costmap, params)
+        planner = _planner_from(payload)
         _worker_planners[key] = planner
         while len(_worker_planners) > _KEEP:
             del _worker_planners[next(iter(_worker_planners))]
@@ -137,7 +138,14 @@ class PlanProcess:
 
 def _payload(planner: GridPlanner) -> _Payload:
     costmap = planner.costmap
-    return costmap.grid, costmap.costs.copy(), costmap.params, planner.params
+    components = planner.known_components()
+    return costmap.grid, costmap.costs.copy(), costmap.params, planner.params, components
+
+
+def _planner_from(payload: _Payload) -> GridPlanner:
+    grid, costs, inflation, params, components = payload
+    costmap = Costmap(grid, costs, np.empty((0, 0)), inflation)
+    return GridPlanner(costmap, params, components=components)
 
 
 PLAN_PROCESS = PlanProcess()

@@ -30,13 +30,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
-from scipy.ndimage import distance_transform_edt, label
 
 from assistantx.core.errors import UnreachableError
-from assistantx.nav import grid_astar
+from assistantx.nav import disk_cache, grid_astar
 from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
 
-if TYPE_CHECKING:  # scipy.sparse is imported by the fallback search and the full graph only
+# scipy is imported where it is used: a start whose tables are in the map cache needs none of
+# it (scipy.ndimage alone is about a third of a CPU-second).
+if TYPE_CHECKING:
     from scipy.sparse import csr_matrix
 
 
@@ -62,8 +63,28 @@ class Path:
         return resample_polyline(self.points, spacing_m)
 
 
+def _components(traversable: npt.NDArray[np.bool_]) -> npt.NDArray[np.int32]:
+    """Each traversable cell's connected component (cells sharing an edge), 0 elsewhere: two
+    cells with different labels have no path between them. Kept in the map cache for the
+    map's own planner: on a big floor it is a fair part of the set-up."""
+    from scipy.ndimage import label
+
+    labels = np.empty(traversable.shape, dtype=np.int32)
+    label(traversable, output=labels)
+    return labels
+
+
 class GridPlanner:
-    def __init__(self, costmap: Costmap, params: PlannerParams | None = None) -> None:
+    def __init__(
+        self,
+        costmap: Costmap,
+        params: PlannerParams | None = None,
+        *,
+        components: npt.NDArray[np.int32] | None = None,
+    ) -> None:
+        """``components``: the traversable cells' labels when the caller has them already
+        (the planning worker gets them with the costs); else read from the map cache or
+        computed."""
         self.costmap = costmap
         self.params = params or PlannerParams()
         # Who this planner is and which costs it plans on, for a worker process that keeps
@@ -74,7 +95,14 @@ class GridPlanner:
         # For snapping a start that strayed into the inscribed zone back to the nearest
         # traversable cell: made on first need (an EDT with indices is costly on big maps).
         self._nearest_free: npt.NDArray[np.intp] | None = None
-        self._component_labels()
+        if components is None:
+            traversable = costmap.traversable
+            components = disk_cache.cached_array(
+                "traversable-components",
+                (traversable.shape, np.packbits(traversable).tobytes()),
+                lambda: _components(traversable),
+            )
+        self._labels = components
 
     def layered(self, costmap: Costmap) -> GridPlanner:
         """A planner on ``costmap`` (the map's costs plus obstacles seen, never lower)."""
@@ -91,11 +119,13 @@ class GridPlanner:
         self._nearest_free = None
         self.version += 1
 
+    def known_components(self) -> npt.NDArray[np.int32] | None:
+        """The component labels when they are made for the current costs, else None."""
+        return self._labels
+
     def _component_labels(self) -> npt.NDArray[np.int32]:
         if self._labels is None:
-            labels = np.empty(self.costmap.costs.shape, dtype=np.int32)
-            label(self.costmap.traversable, output=labels)
-            self._labels = labels
+            self._labels = _components(self.costmap.traversable)
         return self._labels
 
     # -- queries ---------------------------------------------------------------------------
@@ -207,6 +237,8 @@ class GridPlanner:
             return iy, ix
         traversable = self.costmap.costs < INSCRIBED
         if self._nearest_free is None:
+            from scipy.ndimage import distance_transform_edt
+
             _, nearest = distance_transform_edt(~traversable, return_indices=True)
             self._nearest_free = np.asarray(nearest)
         ny, nx = (int(v) for v in self._nearest_free[:, iy, ix])

@@ -17,18 +17,16 @@ import socket
 from collections.abc import Callable
 from contextlib import AsyncExitStack
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from uuid import uuid4
 
 from assistantx.adapters.lock.protocol.keys import LockKeys, load_lock_keys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
-from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup, matrix_setup
 from assistantx.adapters.model import model_from_settings
 from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
 from assistantx.agents.registry import load_builder, needs_llm, reasoner_factory
-from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core.clock import WallClock
 from assistantx.core.errors import LockConnectionError
 from assistantx.core.office import Office, PersonId, load_office
@@ -57,7 +55,6 @@ from assistantx.service.errors import NotFoundError, TooManyRequestsError
 from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
-from assistantx.service.matrix_wiring import build_matrix, start_matrix
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
@@ -67,6 +64,10 @@ from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
 from assistantx.store.leases import Leases
+
+if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
+    from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup
+    from assistantx.agents.symbolic.requests import RequestRecognizer
 
 logger = logging.getLogger(__name__)
 
@@ -109,9 +110,11 @@ class ServiceRuntime:
         self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
         # here (create_app fails fast on a bad one); it is built in start, with the rest.
-        self.matrix_setup: MatrixSetup | None = (
-            matrix_setup(settings) if settings.messenger == "matrix" else None
-        )
+        self.matrix_setup: MatrixSetup | None = None
+        if settings.messenger == "matrix":
+            from assistantx.adapters.messenger.matrix import matrix_setup
+
+            self.matrix_setup = matrix_setup(settings)
         self.matrix: MatrixRuntime | None = None
 
     # -- start-up ------------------------------------------------------------------------
@@ -168,6 +171,8 @@ class ServiceRuntime:
         self.codebook = CodeBook(self.lock_keys.codes, self.clock, data_dir / CODEBOOK_FILE)
         self.messenger.relay_to(self.codebook.note)
         if self.matrix_setup is not None:  # Matrix traffic journaled; its codes scannable too
+            from assistantx.service.matrix_wiring import build_matrix
+
             self.matrix = build_matrix(
                 stack, self.matrix_setup, transcript=self.journal, relay=self.codebook.note
             )
@@ -179,7 +184,7 @@ class ServiceRuntime:
         code_lifetime_s = s.lock_code_expiry_min * 60
         self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
         self.locker.listen(self.ledger.on_lock_event)
-        self._request_check = RequestRecognizer(self.office)
+        self._request_check: RequestRecognizer | None = None  # made on the first message
         ltm = Durability.restore_memory(self.journal, self.office)
         factory, name = self._reasoner()
         self.assistant = Assistant(
@@ -198,7 +203,7 @@ class ServiceRuntime:
                     wall_s=s.instruction_wall_s,
                 ),
                 # A direct message starts an instruction only when it asks for something.
-                is_request=self._request_check,
+                is_request=self._is_request,
                 retire_codes=self.ledger.retire,
             )
         )
@@ -247,6 +252,8 @@ class ServiceRuntime:
         self.ledger.world_state = self._world_state  # the world as restored, from now on
         await self.assistant.start()
         if self.matrix is not None:  # started once the assistant's inbox is connected
+            from assistantx.service.matrix_wiring import start_matrix
+
             await start_matrix(stack, self.matrix, self.assistant)
         # Before anything resumes: a resumed instruction is surveyed like a new one. Opened
         # before _stop is pushed, so it closes after the assistant stopped: an instruction
@@ -402,10 +409,20 @@ class ServiceRuntime:
         self.admission.admit(record)
         return record
 
+    def _is_request(self, text: str, sender: str, *, strict: bool) -> bool:
+        """Whether a direct message asks for something. The recognizer is made on the first
+        message, not at start: its word forms (lemminflect's tables, about a third of a
+        CPU-second) would delay every start for a message that may not come soon."""
+        if self._request_check is None:
+            from assistantx.agents.symbolic.requests import RequestRecognizer
+
+            self._request_check = RequestRecognizer(self.office)
+        return self._request_check(text, sender, strict=strict)
+
     async def _over_the_rate(self, message: InboundMessage) -> bool:
         """A direct message that would start one instruction too many is answered in words
         (once per window) instead; True: handled, nothing starts."""
-        if not self._request_check(message.text, message.sender, strict=False):
+        if not self._is_request(message.text, message.sender, strict=False):
             return False  # not a request: the assistant answers it as usual
         wait_s = self.rate.take(message.sender)
         if wait_s is None:

@@ -29,8 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from assistantx.core.errors import JournalError, LeaseLostError
-from assistantx.store.connection import DATABASE_ERRORS, Connection
-from assistantx.store.postgres_store import PostgresStore, redact
+from assistantx.store.connection import Connection, database_errors
 from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore
 
 _TABLE = """
@@ -73,14 +72,19 @@ class Leases:
         database_url: str | None = None,
         clock: Callable[[], float] = time.time,
     ) -> Leases:
-        where = str(path) if database_url is None else redact(database_url)
+        if database_url is None:
+            where = str(path)
+        else:
+            from assistantx.store.postgres_store import PostgresStore, redact  # psycopg: here only
+
+            where = redact(database_url)
         try:
             if database_url is None:
                 return cls(SqliteStore.open(path, LEASES_SCHEMA), clock)
             return cls(PostgresStore.open_url(database_url, LEASES_SCHEMA), clock)
         except SchemaError as exc:
             raise JournalError(f"{where}: {exc}") from exc
-        except DATABASE_ERRORS as exc:
+        except database_errors() as exc:
             raise JournalError(f"{where}: cannot hold leases ({exc})") from exc
 
     def close(self) -> None:

@@ -11,7 +11,7 @@ from assistantx.core.events import TraceEvent
 from assistantx.core.ports.messenger import ChatRef, OutboundMessage
 from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.store.connection import DATABASE_ERRORS, Connection
+from assistantx.store.connection import Connection, database_errors
 from store.conftest import OpenJournal
 
 
@@ -42,7 +42,7 @@ async def test_a_failing_write_fails_alone(open_journal: OpenJournal) -> None:
     failing = journal.awrite(broken)
     after = journal.arecord(_event(2))
     results = await asyncio.gather(before, failing, after, return_exceptions=True)
-    assert isinstance(results[1], DATABASE_ERRORS)
+    assert isinstance(results[1], database_errors())
     assert [r.event.step for r in journal.events()] == [1, 2]
     journal.close()
 

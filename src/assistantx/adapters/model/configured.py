@@ -3,7 +3,6 @@ into the reasoners, which never build a provider themselves."""
 
 from __future__ import annotations
 
-from assistantx.adapters.model.openai_compat import OpenAICompatibleModel
 from assistantx.core.errors import ReasonerError
 from assistantx.core.ports.model import ChatModel
 from assistantx.core.settings import Settings
@@ -14,6 +13,8 @@ def model_from_settings(settings: Settings) -> ChatModel | None:
     (the reasoners that need a model then say so); ReasonerError when it is unusable."""
     if not settings.llm_base_url:
         return None
+    from assistantx.adapters.model.openai_compat import OpenAICompatibleModel  # httpx: here
+
     try:
         return OpenAICompatibleModel.from_settings(settings)
     except ValueError as exc:

@@ -76,7 +76,7 @@ def _checked(planner: GridPlanner, anchors: Mapping[str, Anchor]) -> list[Anchor
     key = tuple(sorted((k, a.x, a.y) for k, a in anchors.items()))
     per_map = _ANCHOR_CHECKS.setdefault(planner, {})
     if key not in per_map:
-        per_map[key] = check_anchors(planner.costmap, anchors)
+        per_map[key] = check_anchors(planner.costmap, anchors, planner.known_components())
     return per_map[key]
 
 

@@ -39,14 +39,13 @@ from assistantx.core.events import TraceEvent
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, OutboundMessage
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.store.connection import (
-    DATABASE_ERRORS,
-    INTEGRITY_ERRORS,
     Connection,
+    database_errors,
+    integrity_errors,
     is_postgres_url,
 )
 from assistantx.store.journal._schema import JOURNAL_SCHEMA
 from assistantx.store.leases import Lease, fence
-from assistantx.store.postgres_store import PostgresStore, connect_postgres, redact
 from assistantx.store.sqlite_store import SchemaError, SqliteStore, connect
 
 logger = logging.getLogger(__name__)
@@ -139,6 +138,8 @@ class Journal:
 
     @classmethod
     def _open_postgres(cls, url: str) -> Journal:
+        from assistantx.store.postgres_store import PostgresStore, connect_postgres, redact
+
         where = redact(url)
         if not is_postgres_url(url):
             raise JournalError(f"{where}: a database URL starts with postgresql://")
@@ -146,11 +147,11 @@ class Journal:
             writer = PostgresStore.open_url(url, JOURNAL_SCHEMA)
         except SchemaError as exc:
             raise JournalError(f"{where}: {exc}") from exc
-        except DATABASE_ERRORS as exc:
+        except database_errors() as exc:
             raise JournalError(f"{where}: not a usable journal ({exc})") from exc
         try:
             reader = connect_postgres(url)
-        except DATABASE_ERRORS as exc:
+        except database_errors() as exc:
             writer.close()
             raise JournalError(f"{where}: not a usable journal ({exc})") from exc
         return cls(writer, reader)
@@ -167,6 +168,8 @@ class Journal:
         if lease is None:
             self._fence = None
         else:
+            from assistantx.store.postgres_store import PostgresStore
+
             self._fence = fence(lease, postgres=isinstance(self.writer, PostgresStore))
 
     def _fenced(self, fn: Callable[[Connection], T]) -> Callable[[Connection], T]:
@@ -491,7 +494,7 @@ def _new_id(instruction_id: str) -> Iterator[None]:
     """Turns the primary key's refusal of a taken id into a clear error."""
     try:
         yield
-    except INTEGRITY_ERRORS as exc:
+    except integrity_errors() as exc:
         raise JournalError(f"instruction id {instruction_id!r} is taken") from exc
 
 

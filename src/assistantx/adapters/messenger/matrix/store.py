@@ -29,8 +29,7 @@ from typing import Protocol, TypeVar
 
 from assistantx.core.errors import MessengerError
 from assistantx.core.ports.messenger import InboundMessage
-from assistantx.store.connection import DATABASE_ERRORS, Connection
-from assistantx.store.postgres_store import PostgresStore, redact
+from assistantx.store.connection import Connection, database_errors
 from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore, StoreClosedError
 
 T = TypeVar("T")
@@ -172,6 +171,8 @@ class SqliteEventStore:
     one transaction (``core.sqlite_store``); the event loop awaits them."""
 
     def __init__(self, path: Path | str, *, database_url: str | None = None) -> None:
+        from assistantx.store.postgres_store import PostgresStore, redact
+
         self.path = Path(path)
         self.where = str(self.path) if database_url is None else redact(database_url)
         self._db: SqliteStore  # or its PostgreSQL twin
@@ -184,7 +185,7 @@ class SqliteEventStore:
                 self._db = SqliteStore.open(self.path, EVENT_SCHEMA, synchronous="FULL")
         except SchemaError as exc:
             raise MessengerError(f"{self.where}: cannot open the event store: {exc}") from exc
-        except DATABASE_ERRORS as exc:
+        except database_errors() as exc:
             raise MessengerError(f"{self.where}: cannot open the event store: {exc}") from exc
 
     async def _run(self, work: Callable[[Connection], T]) -> T:
@@ -192,7 +193,7 @@ class SqliteEventStore:
             return await self._db.acall(work)
         except StoreClosedError as exc:
             raise MessengerError(f"{self.where}: the event store is closed") from exc
-        except DATABASE_ERRORS as exc:
+        except database_errors() as exc:
             raise MessengerError(f"{self.where}: event store failed: {exc}") from exc
 
     async def transaction_seen(self, txn_id: str) -> bool:
