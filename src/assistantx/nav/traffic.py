@@ -45,6 +45,7 @@ class TrafficParams:
     standing_radius_m: float = 0.9
     patience_s: float = 300.0  # longest wait behind a standing robot before giving up
     step_s: float = 0.25  # a driving robot moves and reports its position this often
+    touch_m: float = 0.5  # robots whose centres come closer than this touch (2 radii)
 
 
 class Traffic:
@@ -58,6 +59,8 @@ class Traffic:
         self.separation_m = math.inf  # the closest two robots have been
         self.waits: list[tuple[str, float]] = []  # (robot, seconds it yielded) per claim
         self.deadlocks = 0  # waits that ran out of patience
+        self.contacts = 0  # times two robots came closer than ``touch_m`` (collisions)
+        self._touching: set[frozenset[str]] = set()
 
     # -- blocks ------------------------------------------------------------------------------
     def blocks_along(self, points: FloatArray) -> list[Block]:
@@ -174,8 +177,16 @@ class Traffic:
     def moved(self, robot: str, x: float, y: float) -> None:
         self.positions[robot] = (x, y)
         for other, (ox, oy) in self.positions.items():
-            if other != robot:
-                self.separation_m = min(self.separation_m, math.hypot(x - ox, y - oy))
+            if other == robot:
+                continue
+            gap = math.hypot(x - ox, y - oy)
+            self.separation_m = min(self.separation_m, gap)
+            pair = frozenset((robot, other))
+            if gap < self.params.touch_m and pair not in self._touching:
+                self.contacts += 1
+                self._touching.add(pair)
+            elif gap >= self.params.touch_m:
+                self._touching.discard(pair)
 
     def drive(
         self, robot: str, points: FloatArray, speed_mps: float
