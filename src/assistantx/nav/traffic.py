@@ -124,14 +124,12 @@ class Traffic:
         goal), which is claimed instead. Raises BlockedError past ``patience_s``."""
         blocks = self.blocks_along(path)
         started = self.clock.timer()
-        tried: set[str] = set()
+        tried: set[tuple[str, tuple[float, float]]] = set()  # standing robots gone round
         while others := self.holders(blocks, robot):
-            standing = others - self.driving
-            if detour is not None and standing == others and not standing <= tried:
+            standing = {(o, self.positions.get(o, (math.nan, math.nan))) for o in others}
+            if detour is not None and not others & self.driving and not standing <= tried:
                 tried |= standing
-                around = detour(
-                    [self.positions[o] for o in sorted(standing) if o in self.positions]
-                )
+                around = detour([xy for _, xy in sorted(standing)])
                 if around is not None:
                     path, blocks = around, self.blocks_along(around)
                     continue
@@ -146,7 +144,6 @@ class Traffic:
                 )
             changed = self._changed
             await self.clock.wait_event(changed, left)
-            tried.clear()  # the others moved: round them again if need be
         for block in blocks:
             self._holder[block] = robot
         self.driving.add(robot)

@@ -24,9 +24,10 @@ from assistantx.adapters.robot.navigator import DEFAULT_MAP, NavigatorRobot
 from assistantx.agents.base import ReasonerFactory
 from assistantx.core.clock import Clock
 from assistantx.core.office import Office
+from assistantx.core.ports.lock import Locker
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.nav.anchors import Anchor, load_anchors
-from assistantx.nav.occupancy_map import load_map
+from assistantx.nav.occupancy_map import OccupancyMap, load_map
 from assistantx.nav.traffic import Traffic
 from assistantx.runtime.assistant import Assistant, AssistantParts
 from assistantx.runtime.fleet import Body, FleetLease, FleetLocker, FleetRobot
@@ -95,6 +96,78 @@ def parking_name(n: int) -> str:
     return f"parking {n + 1}"
 
 
+def fleet_floor(
+    map_yaml: Path = DEFAULT_MAP,
+    anchors_yaml: Path | None = None,
+    parking: Sequence[tuple[float, float]] = PARKING,
+) -> tuple[OccupancyMap, dict[str, Anchor]]:
+    """The map and its anchors, with the parking places added as anchors."""
+    grid = load_map(map_yaml)
+    anchors: dict[str, Anchor] = dict(
+        load_anchors(anchors_yaml or map_yaml.with_name(map_yaml.stem + ".anchors.yaml"))
+    )
+    for n, (x, y) in enumerate(parking):
+        anchors[parking_name(n)] = Anchor(x=x, y=y, yaw=0.0)
+    return grid, anchors
+
+
+def fleet_base(
+    office: Office,
+    clock: Clock,
+    n: int,
+    floor: tuple[OccupancyMap, dict[str, Anchor]],
+    traffic: Traffic,
+    *,
+    localize: bool = False,
+    start: str | None = None,
+) -> NavigatorRobot:
+    """Robot ``n + 1``'s base, standing at ``start`` (default: its parking place)."""
+    grid, anchors = floor
+    return NavigatorRobot(
+        office,
+        grid,
+        anchors,
+        clock,
+        seed=n,
+        localize=localize,
+        start=start or parking_name(n),
+        traffic=traffic,
+        name=robot_name(n),
+    )
+
+
+def robot_name(n: int) -> str:
+    return f"robot {n + 1}"
+
+
+def join_fleet(
+    sim: SimOffice,
+    bases: Sequence[NavigatorRobot],
+    lockers: Sequence[Locker],
+    traffic: Traffic,
+) -> SimFleet:
+    """``sim``'s robot (``bases[0]``, with ``lockers[0]``) and the others as one fleet."""
+    bodies = [Body(robot_name(0), sim.robot, lockers[0], parking=parking_name(0))]
+    for n in range(1, len(bases)):
+        observed = sim.add_robot(robot_name(n), bases[n], lockers[n], parking_name(n))
+        bodies.append(Body(robot_name(n), observed, lockers[n], parking=parking_name(n)))
+    lease = FleetLease(bodies, speed_mps=sim.office.robot.speed_mps)
+
+    def robot_of(instruction_id: str) -> str | None:
+        body = lease.body_of(instruction_id)
+        return None if body is None else body.name
+
+    sim.robot_of = robot_of
+    return SimFleet(
+        sim,
+        lease,
+        FleetRobot(bodies, [loc.id for loc in sim.office.locations]),
+        FleetLocker(bodies),
+        traffic,
+        bodies,
+    )
+
+
 def sim_fleet(
     office: Office,
     clock: Clock,
@@ -105,32 +178,15 @@ def sim_fleet(
     parking: Sequence[tuple[float, float]] = PARKING,
     reply_delay_s: float = 20.0,
     handover_delay_s: float = 30.0,
-    traffic: Traffic | None = None,
 ) -> SimFleet:
-    """``size`` robots (at most one per parking place), all simulated."""
+    """``size`` robots (at most one per parking place) in a new simulated office, all
+    simulated: kinematic driving along planned paths, in-process lockers."""
     if not 1 <= size <= len(parking):
         raise ValueError(f"a fleet of 1 to {len(parking)} robots, not {size}")
-    grid = load_map(map_yaml)
-    anchors: dict[str, Anchor] = dict(
-        load_anchors(anchors_yaml or map_yaml.with_name(map_yaml.stem + ".anchors.yaml"))
-    )
-    for n, (x, y) in enumerate(parking):
-        anchors[parking_name(n)] = Anchor(x=x, y=y, yaw=0.0)
-    traffic = traffic or Traffic(clock)
-    bases = [
-        NavigatorRobot(
-            office,
-            grid,
-            anchors,
-            clock,
-            localize=False,
-            start=parking_name(n),
-            traffic=traffic,
-            name=f"robot {n + 1}",
-        )
-        for n in range(size)
-    ]
-    lockers = [_locker(n, clock) for n in range(size)]
+    floor = fleet_floor(map_yaml, anchors_yaml, parking)
+    traffic = Traffic(clock)
+    bases = [fleet_base(office, clock, n, floor, traffic) for n in range(size)]
+    lockers = [sim_locker(n, clock) for n in range(size)]
     sim = SimOffice(
         office,
         clock=clock,
@@ -139,29 +195,10 @@ def sim_fleet(
         reply_delay_s=reply_delay_s,
         handover_delay_s=handover_delay_s,
     )
-    bodies = [Body("robot 1", sim.robot, lockers[0], parking=parking_name(0))]
-    for n in range(1, size):
-        name = f"robot {n + 1}"
-        observed = sim.add_robot(name, bases[n], lockers[n], parking_name(n))
-        bodies.append(Body(name, observed, lockers[n], parking=parking_name(n)))
-    lease = FleetLease(bodies, speed_mps=office.robot.speed_mps)
-
-    def robot_of(instruction_id: str) -> str | None:
-        body = lease.body_of(instruction_id)
-        return None if body is None else body.name
-
-    sim.robot_of = robot_of
-    return SimFleet(
-        sim,
-        lease,
-        FleetRobot(bodies, [loc.id for loc in office.locations]),
-        FleetLocker(bodies),
-        traffic,
-        bodies,
-    )
+    return join_fleet(sim, bases, lockers, traffic)
 
 
-def _locker(n: int, clock: Clock) -> LocalLocker:
+def sim_locker(n: int, clock: Clock) -> LocalLocker:
     key = hashlib.sha256(f"assistantx-sim-fleet-{n}".encode()).digest()
     controller = LockController(f"sim-locker-{n + 1}", Keyring.single("sim", key), clock)
     return LocalLocker(controller, clock=clock, render_png=False)

@@ -5,9 +5,12 @@ from __future__ import annotations
 
 import asyncio
 
+import numpy as np
+
 from assistantx.adapters.robot.navigator import NavigatorRobot
+from assistantx.core.errors import BlockedError
 from assistantx.core.office import load_office
-from assistantx.nav.traffic import Traffic
+from assistantx.nav.traffic import Traffic, TrafficParams
 from assistantx.sim.virtual_time import LoopClock, run_virtual
 
 ROBOT_DIAMETER_M = 0.5
@@ -61,19 +64,53 @@ def test_robots_head_on_along_the_desks_aisle_take_turns_or_go_round() -> None:
     assert traffic.separation_m >= ROBOT_DIAMETER_M
 
 
-def test_a_robot_standing_in_the_way_is_waited_for_then_reported_not_driven_into() -> None:
-    """A robot parked on the other's goal never moves: the other waits its patience out and
-    fails with words naming the robot in the way, instead of driving into it."""
+def test_robots_swapping_desks_stop_beside_the_one_standing_there() -> None:
+    """Each robot's goal is where the other stands: neither waits for ever; the first to go
+    stops beside the other (a person walks a step further), then the other drives to the
+    first's old desk. Nobody touches."""
+
+    async def scenario() -> tuple[Traffic, list[str], list[float]]:
+        traffic = Traffic(LoopClock())
+        west, east = _robot(traffic, "west", "desk_03"), _robot(traffic, "east", "desk_04")
+        arrived = await asyncio.gather(west.move_to("desk_04"), east.move_to("desk_03"))
+        misses = []
+        for robot, place in ((west, "desk_04"), (east, "desk_03")):
+            anchor, pose = robot.anchors[place], robot.state().pose
+            misses.append(round(float(np.hypot(pose.x - anchor.x, pose.y - anchor.y)), 2))
+        return traffic, [a.place for a in arrived], misses
+
+    traffic, places, misses = run_virtual(scenario)
+    assert places == ["desk_04", "desk_03"]
+    assert traffic.deadlocks == 0 and traffic.separation_m >= ROBOT_DIAMETER_M
+    assert sorted(m > 0.5 for m in misses) == [False, True]  # one stopped beside its desk
+    assert max(misses) <= 2.0
+
+
+def test_a_robot_that_stands_in_the_only_way_for_ever_is_reported_not_driven_into() -> None:
+    """A robot parked in the meeting room's one-robot-wide door never moves: the other waits
+    its patience out and fails with words naming the robot in the way."""
 
     async def scenario() -> str:
-        traffic = Traffic(LoopClock())
-        _robot(traffic, "parked", "desk_03")
-        mover = _robot(traffic, "mover", "desk_01")
+        traffic = Traffic(LoopClock(), TrafficParams(patience_s=120.0))
+        parked = _robot(traffic, "parked", "meeting_room")
+        door = _door(parked)
+        traffic.stand("parked", *door)
+        mover = _robot(traffic, "mover", "desk_08")
         try:
-            await mover.move_to("desk_03")
-        except Exception as exc:
-            return f"{type(exc).__name__}: {exc}"
+            await mover.move_to("meeting_room")
+        except BlockedError as exc:
+            return str(exc)
         return "arrived"
 
-    outcome = run_virtual(scenario)
-    assert outcome.startswith("BlockedError: another robot (parked) has stood in the way")
+    assert run_virtual(scenario).startswith("another robot (parked) has stood in the way")
+
+
+def _door(robot: NavigatorRobot) -> tuple[float, float]:
+    """The narrowest point of the path out of the meeting room: its door."""
+    path = robot.plan_to("desk_08").resampled(0.05)
+    clearance = [
+        robot.navigator.costmap.obstacle_distance_m[robot.grid.world_to_cell(x, y)[::-1]]
+        for x, y in path
+    ]
+    x, y = path[int(np.argmin(clearance))]
+    return float(x), float(y)

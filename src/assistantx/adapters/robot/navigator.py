@@ -249,7 +249,7 @@ class NavigatorRobot(RobotBase):
         if self.traffic is not None and not self.localize:
             chunks = self._follow_in_traffic(path, anchor.yaw)
         elif self.localize:
-            chunks = nav.navigate((anchor.x, anchor.y), anchor.yaw, path)
+            chunks = nav.navigate(self._stop_point(anchor, path), anchor.yaw, path)
         else:
             chunks = nav.follow(path, anchor.yaw)
         try:
@@ -275,7 +275,8 @@ class NavigatorRobot(RobotBase):
                 true = nav.base.true_pose
                 self.traffic.stand(self.name, float(true[0]), float(true[1]))
         true = nav.base.true_pose
-        miss = math.hypot(true[0] - anchor.x, true[1] - anchor.y)
+        stop_x, stop_y = self._stop_point(anchor, path)
+        miss = math.hypot(true[0] - stop_x, true[1] - stop_y)
         self._goal, self._path = None, None
         if miss > self.arrival_tolerance_m:
             raise LocalizationLostError(
@@ -305,6 +306,13 @@ class NavigatorRobot(RobotBase):
         length = float(np.hypot(*np.diff(points, axis=0).T).sum())
         return Path(points, length, length, len(points))
 
+    def _stop_point(self, anchor: Anchor, path: Path) -> tuple[float, float]:
+        """Where the robot stops for ``anchor``: the anchor; among other robots, the end of
+        its claimed path, which is beside the anchor when another robot stands on it."""
+        if self.traffic is None:
+            return (anchor.x, anchor.y)
+        return (float(path.points[-1][0]), float(path.points[-1][1]))
+
     def _round_standing(
         self, location_id: str, robots: list[tuple[float, float]]
     ) -> FloatArray | None:
@@ -313,8 +321,6 @@ class NavigatorRobot(RobotBase):
         goal = self.anchors[location_id]
         nav = self._navigator
         radius = self.traffic.params.standing_radius_m
-        if any(math.hypot(goal.x - x, goal.y - y) < radius for x, y in robots):
-            return None  # one stands on the goal: only its leaving helps
         res = self._grid.resolution
         rings = []
         for ox, oy in robots:
@@ -324,12 +330,37 @@ class NavigatorRobot(RobotBase):
             )
             inside = np.hypot(xs - ox, ys - oy) <= radius
             rings.append(np.column_stack([xs[inside], ys[inside]]))
-        planner = GridPlanner(nav.costmap.with_obstacles(np.concatenate(rings)), nav.params.planner)
-        try:
-            around = planner.plan((float(nav.pose[0]), float(nav.pose[1])), (goal.x, goal.y))
-        except RobotError:
-            return None
-        return around.points
+        costmap = nav.costmap.with_obstacles(np.concatenate(rings))
+        planner = GridPlanner(costmap, nav.params.planner)
+        start = (float(nav.pose[0]), float(nav.pose[1]))
+        for stop in self._stops_beside(goal, robots, radius):
+            if self.traffic.holders(self.traffic.blocks_along(np.array([stop])), self.name):
+                continue  # too close to another robot's footprint
+            try:
+                around = planner.plan(start, stop)
+            except RobotError:
+                continue
+            return around.points
+        return None
+
+    @staticmethod
+    def _stops_beside(
+        goal: Anchor, robots: list[tuple[float, float]], radius: float
+    ) -> list[tuple[float, float]]:
+        """The goal, or when another robot stands on it, points beside it nearest first (the
+        robots then serve the same desk side by side: a person walks a step further)."""
+        if not any(math.hypot(goal.x - x, goal.y - y) < radius for x, y in robots):
+            return [(goal.x, goal.y)]
+        beside = []
+        for distance in (radius + 0.3, radius + 0.6, radius + 0.9):
+            for k in range(12):
+                angle = k * math.tau / 12
+                beside.append(
+                    (goal.x + distance * math.cos(angle), goal.y + distance * math.sin(angle))
+                )
+        return [
+            p for p in beside if all(math.hypot(p[0] - x, p[1] - y) >= radius for x, y in robots)
+        ]
 
     def _follow_in_traffic(self, path: Path, goal_yaw: float) -> Iterator[float]:
         """Kinematic mode among other robots: along the path step by step (not in one jump),
