@@ -48,7 +48,13 @@ def first_robot(s: Settings, office: Office, clock: Clock, place: str | None) ->
     check_fleet_settings(s)
     floor = fleet_floor(DEFAULT_MAP, s.map_anchors)
     return fleet_base(
-        office, clock, 0, floor, Traffic(clock), localize=s.robot_localize, start=place or None
+        office,
+        clock,
+        0,
+        floor,
+        Traffic(clock),
+        localize=s.robot_localize,
+        start=place or office.robot.home,
     )
 
 
