@@ -205,6 +205,9 @@ class FleetRobot(RobotBase):
     def path_length(self, a: str, b: str) -> float | None:
         return self.bodies[0].robot.path_length(a, b)  # one floor map for all
 
+    def forget_obstacles(self) -> None:
+        current_body(self.bodies).robot.forget_obstacles()
+
 
 class FleetLocker(Locker):
     """The one locker the executors see: codes are issued at the calling instruction's

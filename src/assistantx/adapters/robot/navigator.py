@@ -505,6 +505,10 @@ class NavigatorRobot(RobotBase):
             data[np.hypot(cx - ox, cy - oy) <= r] = OCCUPIED
         self._navigator.set_world(self._grid.with_data(data))
 
+    def forget_obstacles(self) -> None:
+        """Forget what the robot saw (the world stays as it is)."""
+        self._navigator.reset_obstacles()
+
     def clear_obstacles(self) -> None:
         """Remove the dropped obstacles from the world and from what the robot remembers."""
         self._obstacles.clear()
