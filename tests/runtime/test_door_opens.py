@@ -42,6 +42,6 @@ async def test_the_robot_says_the_door_is_closed_and_comes_back_when_it_opens() 
     assert clock.now() >= 300.0  # it got in only once the door had been opened
     assert told == [
         "The door on the way to Meeting room is closed. I'll come back when it's open: I try "
-        "again every 2 minutes, for up to 30 minutes."
+        "again every 3 minutes, for up to 15 minutes."
     ]
     assert robot.navigator.safety.collisions == 0

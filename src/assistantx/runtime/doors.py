@@ -24,8 +24,8 @@ logger = logging.getLogger(__name__)
 
 @dataclass(frozen=True)
 class DoorPatience:
-    retry_s: float = 120.0  # office clock: how often the robot goes back to the door
-    patience_s: float = 1800.0  # after this long the move fails as before
+    retry_s: float = 180.0  # office clock: how often the robot goes back to the door
+    patience_s: float = 900.0  # after this long the move fails as before
 
 
 def closed_door_note(place_name: str, patience: DoorPatience) -> str:
