@@ -38,9 +38,17 @@ def test_a_free_robot_nearest_the_first_stop_is_given_then_the_first_to_come_fre
             lease.release("b")  # nobody waits: robot 1 drives back to its parking place
             await asyncio.sleep(600)
             seen.append(str(fleet.bodies[0].robot.state().place))
+            # What "a" left aboard goes back with robot 2 (its locker holds it), not with the
+            # free robot 1: the errand waits for robot 2.
+            errand = asyncio.ensure_future(lease.acquire("a.return"))
+            await asyncio.sleep(0)
+            assert not errand.done()
+            lease.release("c")
+            await errand
+            seen.append(lease.body_of("a.return").name)  # type: ignore[union-attr]
         return seen
 
-    assert run_virtual(scenario) == ["robot 2", "robot 1", "robot 2", "parking 1"]
+    assert run_virtual(scenario) == ["robot 2", "robot 1", "robot 2", "parking 1", "robot 2"]
 
 
 def test_two_instructions_at_once_are_served_by_two_robots_with_their_own_lockers() -> None:

@@ -48,6 +48,9 @@ class Body:
     _parking_drive: asyncio.Task[None] | None = field(default=None, repr=False)
 
 
+RETURN_SUFFIX = ".return"  # runtime.returns: the errand that gives back what an instruction left
+SERVED_KEPT = 256
+
 _CURRENT: ContextVar[Body | None] = ContextVar("assistantx_fleet_body", default=None)
 
 
@@ -60,7 +63,11 @@ class FleetLease:
         self.bodies = list(bodies)
         self.speed_mps = speed_mps
         self._holding: dict[str, Body] = {}  # instruction id → its robot
-        self._waiting: deque[tuple[str, asyncio.Future[Body]]] = deque()
+        # Waiting instructions in order, each with the one robot it must have (None: any).
+        self._waiting: deque[tuple[str, Body | None, asyncio.Future[Body]]] = deque()
+        # The robot each recent instruction had: its give-back errand ("<id>.return") needs
+        # the same robot, whose locker holds what is to go back.
+        self._served: dict[str, Body] = {}
 
     # -- what the service shows ------------------------------------------------------------
     @property
@@ -76,7 +83,7 @@ class FleetLease:
 
     def queue(self) -> list[str]:
         """The holders first, then the waiting instructions in order."""
-        return list(self._holding) + [iid for iid, _ in self._waiting]
+        return list(self._holding) + [iid for iid, _, _ in self._waiting]
 
     def holds(self, instruction_id: str) -> bool:
         body = self._holding.get(instruction_id)
@@ -95,23 +102,31 @@ class FleetLease:
         id) soonest; else wait for the first that comes free."""
         if self.holds(instruction_id):
             return
+        needed = self._served.get(instruction_id.removesuffix(RETURN_SUFFIX))
+        if not instruction_id.endswith(RETURN_SUFFIX):
+            needed = None
         free = [b for b in self.bodies if self.holder_of(b) is None]
-        if free and not self._waiting:
+        if needed is not None:
+            free = [b for b in free if b is needed]
+        if free and not any(w is None or w in free for _, w, _ in self._waiting):
             body = min(free, key=lambda b: self._drive_s(b, toward))
         else:
             future: asyncio.Future[Body] = asyncio.get_running_loop().create_future()
-            self._waiting.append((instruction_id, future))
+            self._waiting.append((instruction_id, needed, future))
             if on_wait is not None:
                 on_wait(self.queue())
             try:
                 body = await future
             except asyncio.CancelledError:
-                self._waiting = deque((i, f) for i, f in self._waiting if f is not future)
+                self._waiting = deque(w for w in self._waiting if w[2] is not future)
                 if future.done() and not future.cancelled():
                     self._holding[instruction_id] = future.result()
                     self.release(instruction_id)
                 raise
         self._holding[instruction_id] = body
+        self._served[instruction_id] = body
+        while len(self._served) > SERVED_KEPT:
+            self._served.pop(next(iter(self._served)))
         body.served += 1
         _CURRENT.set(body)
         await self._stop_parking(body)
@@ -120,11 +135,14 @@ class FleetLease:
     def release(self, instruction_id: str) -> None:
         body = self._holding.pop(instruction_id, None)
         if body is None:
-            self._waiting = deque((i, f) for i, f in self._waiting if i != instruction_id)
+            self._waiting = deque(w for w in self._waiting if w[0] != instruction_id)
             return
-        while self._waiting:
-            next_id, future = self._waiting.popleft()
-            if not future.done():
+        for waiter in list(self._waiting):
+            next_id, needed, future = waiter
+            if future.done():
+                self._waiting.remove(waiter)
+            elif needed is None or needed is body:
+                self._waiting.remove(waiter)
                 self._holding[next_id] = body
                 future.set_result(body)
                 return
