@@ -10,8 +10,9 @@ import pytest
 
 from assistantx.core.settings import Settings
 from assistantx.service.fleet_wiring import FleetSettingsError, check_fleet_settings
+from assistantx.service.robots import desk_for_code, open_desk
 from helpers.eventually import eventually
-from service.inprocess import running_service
+from service.inprocess import running_service, serving_runtime
 from service.server import LEE, OPERATOR, ZHANG
 
 AUTH = {LEE: {"Authorization": f"Bearer {LEE}"}, ZHANG: {"Authorization": f"Bearer {ZHANG}"}}
@@ -84,3 +85,24 @@ def test_a_fleet_the_settings_cannot_run_is_refused_in_one_line(
 ) -> None:
     with pytest.raises(FleetSettingsError, match=words):
         check_fleet_settings(Settings(**settings))  # type: ignore[arg-type]
+
+
+async def test_a_code_is_scanned_at_the_locker_of_the_robot_that_issued_it(tmp_path: Path) -> None:
+    async with serving_runtime(tmp_path / "data", robots=2, robot_localize=False) as (_, runtime):
+        fleet = runtime.fleet
+        assert fleet is not None
+        await fleet.lease.acquire("first")  # going nowhere yet: the first free robot, robot 1
+        await fleet.lease.acquire("second")  # robot 2
+        robot_2 = fleet.lease.body_of("second")
+        assert robot_2 is not None and robot_2.name == "robot 2"
+        code = await runtime.locker.issue_code(  # this task's robot: the last one given
+            instruction_id="second", person="lee", purpose="deposit", item="stapler:lee"
+        )
+        assert code.lock_id == "locker-1-2"
+        desk = await desk_for_code(runtime, code.code_id)
+        assert desk is robot_2.locker
+        event = await desk.simulate_scan(code.payload)
+        assert event.kind == "code_accepted"
+        assert await open_desk(runtime) is robot_2.locker  # its door is the open one
+        fleet.lease.release("first")
+        fleet.lease.release("second")

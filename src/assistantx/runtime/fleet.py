@@ -254,10 +254,16 @@ class FleetLocker(Locker):
             instruction_id=instruction_id, person=person, purpose=purpose, item=item
         )
         self._issued_at[code.code_id] = locker
+        while len(self._issued_at) > SERVED_KEPT * 8:  # codes live minutes: keep the recent
+            self._issued_at.pop(next(iter(self._issued_at)))
         return code
 
     async def status(self) -> LockStatus:
         return await current_body(self.bodies).locker.status()
+
+    def issued_at(self, code_id: str) -> Locker | None:
+        """The locker that issued ``code_id`` since the start (None: unknown here)."""
+        return self._issued_at.get(code_id)
 
     async def revoke(self, code_id: str) -> None:
         locker = self._issued_at.pop(code_id, None)

@@ -14,6 +14,7 @@ from prometheus_client.metrics_core import GaugeMetricFamily, Metric
 from pydantic import Field
 
 from assistantx.core.ports.robot import RobotState
+from assistantx.sim.office import HandOverDesk
 
 if TYPE_CHECKING:
     from assistantx.service.runtime import ServiceRuntime
@@ -39,6 +40,26 @@ def robot_states(runtime: ServiceRuntime) -> list[NamedRobotState]:
         )
         for body in fleet.bodies
     ]
+
+
+async def desk_for_code(runtime: ServiceRuntime, code_id: str) -> HandOverDesk:
+    """Where a person holds up ``code_id``: the locker of the robot that issued it (robot 1's
+    when one robot, or when the code was issued before this start)."""
+    if runtime.fleet is not None:
+        locker = runtime.fleet.locker.issued_at(code_id)
+        if isinstance(locker, HandOverDesk):
+            return locker
+    return runtime.sim.desk
+
+
+async def open_desk(runtime: ServiceRuntime) -> HandOverDesk | None:
+    """A locker whose door stands open (robot 1's first), None when every door is shut."""
+    if runtime.fleet is None:
+        return runtime.sim.desk if (await runtime.locker.status()).door == "open" else None
+    for body in runtime.fleet.bodies:
+        if (await body.locker.status()).door == "open" and isinstance(body.locker, HandOverDesk):
+            return body.locker
+    return None
 
 
 class RobotGauges:
