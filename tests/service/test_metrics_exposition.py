@@ -33,6 +33,10 @@ TYPES = {
     "assistantx_event_loop_lag_max_seconds": "gauge",
     "assistantx_event_streams": "gauge",
     "assistantx_inbound_events_skipped": "counter",
+    "assistantx_robot_busy": "gauge",
+    "assistantx_robot_driving": "gauge",
+    "assistantx_robot_odometer_meters": "gauge",
+    "assistantx_robot_instructions_served": "gauge",
 }
 
 Key = tuple[tuple[str, str], ...]
@@ -161,8 +165,9 @@ def test_two_apps_in_one_process_keep_their_own_counts(tmp_path: Path) -> None:
     def read(metrics: ServiceMetrics) -> dict[str, list[Sample]]:
         text = metrics.render().decode()
         types = {f.name: f.type for f in text_string_to_metric_families(text)}
-        # The loop-lag and event-stream gauges are the runtime's: a bare ServiceMetrics has none.
-        runtimes = ("loop_lag", "event_streams")
+        # The loop-lag, event-stream and robot gauges are the runtime's: a bare ServiceMetrics
+        # has none.
+        runtimes = ("loop_lag", "event_streams", "robot_")
         assert types == {k: v for k, v in TYPES.items() if not any(r in k for r in runtimes)}
         return {f.name: f.samples for f in text_string_to_metric_families(text)}
 

@@ -120,6 +120,9 @@ class Settings(BaseSettings):
     map: Path | None = Field(default=None, description="ROS map YAML (default: maps/office.yaml)")
     map_anchors: Path | None = Field(default=None, description="default: MAP's .anchors.yaml")
     robot_localize: bool = Field(default=True, description="AMCL on (False: kinematic paths)")
+    robots: int = Field(
+        default=1, ge=1, le=3, description="robot bases serving the office (each with a locker)"
+    )
 
     # -- the smart lock ------------------------------------------------------------------
     lock: Literal["local", "tcp"] = Field(

@@ -53,6 +53,7 @@ class Door:
     end: tuple[float, float]
     name: str = "a door"
     thickness_m: float = 0.1
+    opens_after_s: float | None = None  # a scenario event: someone opens it then (office clock)
 
 
 @dataclass(frozen=True)
@@ -136,6 +137,22 @@ class GroundTruth:
         self.trails: list[list[tuple[float, float]]] = [[] for _ in walkers]
         self.time_s = 0.0
         self._next_trail_s = 0.0
+        self.static: BoolArray = self._solid()
+        # Metres from each cell centre to the nearest solid cell's edge (half a cell less
+        # than centre to centre), for the collision check.
+        self._static_distance_m = self._distance_m(self.static)
+        rng = rng or np.random.default_rng(0)
+        self.walkers = [Walker(spec, float(rng.uniform(0.0, 1.0))) for spec in walkers]
+        for walker in self.walkers:
+            walker.s_m *= walker.length_m
+            walker.direction = 1 if rng.random() < 0.5 else -1
+        self.blocked: BoolArray = self.static.copy()
+        self._stamped = np.zeros(0, dtype=np.int64)
+        self._stamp_people()
+
+    def _solid(self) -> BoolArray:
+        """Walls, the grey rim, the boxes and the doors that are shut."""
+        grid = self.grid
         static = grid.obstacles | grid.unknown_rim
         cx, cy = grid.cell_to_world(*np.meshgrid(np.arange(grid.width), np.arange(grid.height)))
         for box in self.boxes:
@@ -144,21 +161,28 @@ class GroundTruth:
             )
         for door in self.doors:
             static |= _segment_distance(cx, cy, door.start, door.end) <= door.thickness_m / 2
-        self.static: BoolArray = static
-        # Metres from each cell centre to the nearest solid cell's edge (half a cell less
-        # than centre to centre), for the collision check.
+        return static
+
+    def _distance_m(self, static: BoolArray) -> FloatArray:
+        # cached by the solid cells' content: a second start on the same floor reads it
         centre = disk_cache.cached_array(
             "solid-distance",
             (static.shape, np.packbits(static).tobytes()),
             lambda: _distance_to_solid(static),
         )
-        self._static_distance_m = np.maximum(centre - 0.5, 0.0) * grid.resolution
-        rng = rng or np.random.default_rng(0)
-        self.walkers = [Walker(spec, float(rng.uniform(0.0, 1.0))) for spec in walkers]
-        for walker in self.walkers:
-            walker.s_m *= walker.length_m
-            walker.direction = 1 if rng.random() < 0.5 else -1
-        self.blocked: BoolArray = static.copy()
+        return np.maximum(centre - 0.5, 0.0) * self.grid.resolution
+
+    # -- doors -----------------------------------------------------------------------------
+    def open_door(self, name: str) -> None:
+        """Someone opens the door called ``name``: it is solid no more. The arrays the
+        sensors read are changed in place (they hold them by reference)."""
+        doors = tuple(d for d in self.doors if d.name != name)
+        if len(doors) == len(self.doors):
+            raise KeyError(f"no closed door called {name!r}")
+        self.doors = doors
+        self.static[...] = self._solid()
+        self._static_distance_m = self._distance_m(self.static)
+        self.blocked[...] = self.static
         self._stamped = np.zeros(0, dtype=np.int64)
         self._stamp_people()
 
@@ -243,7 +267,7 @@ def _segment_distance(
 
 
 def _distance_to_solid(solid: BoolArray) -> npt.NDArray[np.float64]:
-    """Cells from each cell centre to the nearest solid one (scipy only when not cached)."""
+    # scipy is imported here, not at start: only a floor not yet cached pays for it
     from scipy.ndimage import distance_transform_edt
 
     return np.asarray(distance_transform_edt(~solid), dtype=np.float64)

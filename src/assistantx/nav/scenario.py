@@ -11,6 +11,7 @@ A scenario is a YAML file (maps/scenarios/*.yaml)::
       - {name: a pallet, x: 10.0, y: 7.5, width: 1.2, depth: 0.8}
     doors:                         # closed doors, as segments
       - {name: the meeting room door, from: [35.5, 9.0], to: [35.5, 10.6]}
+      - {name: the kitchen door, from: [..], to: [..], opens_after: 600}  # opened then (s)
     people:                        # walking to and fro along a path
       - {path: [[3, 10], [30, 10]], speed: 1.2, radius: 0.25}
     expect:                        # per leg, optional: "arrive" or "blocked"
@@ -21,6 +22,7 @@ Anything malformed is a ScenarioError naming the file and the field.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -29,6 +31,7 @@ from typing import Any
 import numpy as np
 import yaml
 
+from assistantx.core.clock import Clock
 from assistantx.core.errors import MapError
 from assistantx.nav.ground_truth import Box, Door, GroundTruth, WalkerSpec
 from assistantx.nav.occupancy_map import OccupancyMap, load_map
@@ -70,6 +73,13 @@ class Scenario:
             rng=np.random.default_rng(self.seed),
             robot_radius_m=robot_radius_m,
         )
+
+
+def schedule_events(scenario: Scenario, world: GroundTruth, clock: Clock) -> None:
+    """Put the scenario's events on ``clock``: each door with ``opens_after`` opens then."""
+    for door in scenario.doors:
+        if door.opens_after_s is not None:
+            clock.call_later(door.opens_after_s, functools.partial(world.open_door, door.name))
 
 
 def load_scenario(path: str | Path) -> Scenario:
@@ -125,7 +135,12 @@ def _parse(path: Path, raw: dict[str, Any]) -> Scenario:
             for b in raw.get("boxes", [])
         ),
         doors=tuple(
-            Door(_point(d["from"]), _point(d["to"]), str(d.get("name", "a door")))
+            Door(
+                _point(d["from"]),
+                _point(d["to"]),
+                str(d.get("name", "a door")),
+                opens_after_s=float(d["opens_after"]) if "opens_after" in d else None,
+            )
             for d in raw.get("doors", [])
         ),
         people=tuple(

@@ -36,6 +36,7 @@ from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.executors import ExecutionContext, Executor
+from assistantx.runtime.fleet import FleetLease
 from assistantx.runtime.lease import BodyLease
 from assistantx.runtime.loop import InstructionRunner, LoopLimits
 from assistantx.runtime.replies import ReplyBox
@@ -89,6 +90,9 @@ class AssistantParts:
     is_request: RequestCheck | None = None
     # Journals codes as revoked before the lock withdraws them (``ExecutionContext``).
     retire_codes: Callable[[list[str]], Awaitable[None]] | None = None
+    # Several robots (runtime.fleet): their lease; ``robot`` and ``locker`` are then the
+    # fleet's FleetRobot and FleetLocker. None: the one robot's BodyLease.
+    fleet: FleetLease | None = None
 
 
 class Assistant:
@@ -99,7 +103,7 @@ class Assistant:
         self.ltm = parts.ltm or LongTermMemory(parts.office)
         self.resolver = Resolver(parts.office)
         self.replies = ReplyBox(is_member=self._is_member)
-        self.lease = BodyLease()
+        self.lease: BodyLease | FleetLease = parts.fleet or BodyLease()
         self.inbox: asyncio.Queue[InboundMessage | None] = asyncio.Queue()
         self.executor = Executor(
             ExecutionContext(

@@ -42,6 +42,8 @@ from assistantx.core.wording import item_phrase, person_name, purpose_text
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.runtime import consent
+from assistantx.runtime.doors import drive_past_closed_doors
+from assistantx.runtime.failures import place_name
 from assistantx.runtime.replies import ReplyBox
 
 logger = logging.getLogger(__name__)
@@ -137,7 +139,14 @@ class Executor:
             case Wait():
                 return await self._wait(stm, action)
             case Move():
-                result = await self.ctx.robot.move_to(action.place)
+
+                async def tell(text: str) -> None:
+                    await self.tell_requester(stm, text, key=f"{key}:door")
+
+                name = place_name(self.ctx.office, action.place)
+                result = await drive_past_closed_doors(
+                    self.ctx.robot, action.place, self.ctx.clock, tell, name
+                )
                 stm.embodied.robot_place = result.place
                 return (
                     True,

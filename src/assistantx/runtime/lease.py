@@ -13,6 +13,8 @@ from collections.abc import Callable
 
 
 class BodyLease:
+    """The one robot's lease (``runtime.fleet.FleetLease``: one per robot of a fleet)."""
+
     def __init__(self) -> None:
         self._holder: str | None = None
         self._waiting: deque[tuple[str, asyncio.Future[None]]] = deque()
@@ -30,8 +32,14 @@ class BodyLease:
         return self._holder == instruction_id
 
     async def acquire(
-        self, instruction_id: str, on_wait: Callable[[list[str]], None] | None = None
+        self,
+        instruction_id: str,
+        on_wait: Callable[[list[str]], None] | None = None,
+        toward: str | None = None,
     ) -> None:
+        """``toward``: where the instruction drives first; one robot goes wherever it must
+        (a fleet's lease picks the robot by it)."""
+        del toward
         if self._holder == instruction_id:
             return
         if self._holder is None and not self._waiting:

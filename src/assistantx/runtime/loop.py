@@ -57,6 +57,7 @@ from assistantx.memory.updates import (
 from assistantx.runtime import consent
 from assistantx.runtime.executors import Executor
 from assistantx.runtime.failures import FailureMemory, failure_summary
+from assistantx.runtime.fleet import FleetLease
 from assistantx.runtime.lease import BodyLease
 from assistantx.runtime.returns import return_note
 
@@ -96,7 +97,7 @@ class InstructionRunner:
         resolver: Resolver,
         executor: Executor,
         reasoner: Reasoner,
-        lease: BodyLease,
+        lease: BodyLease | FleetLease,
         limits: LoopLimits = LoopLimits(),
         emit: EventSink | None = None,
     ) -> None:
@@ -326,7 +327,7 @@ class InstructionRunner:
                 if note:
                     action = action.model_copy(update={"summary": action.summary + note})
             if isinstance(action, _BODY_ACTIONS):
-                await self._take_body(stm, step)
+                await self._take_body(stm, step, action)
             result = await self.executor.execute(stm, action, key=f"s{step.index}a{n}")
             self._last_seen[seen_key] = self._info
             if not result.ok:
@@ -373,14 +374,17 @@ class InstructionRunner:
         )
         return self._apply_updates(stm, step, [update])
 
-    async def _take_body(self, stm: ShortTermMemory, step: TraceStep) -> None:
+    async def _take_body(self, stm: ShortTermMemory, step: TraceStep, action: Action) -> None:
         if self.lease.holds(stm.instruction_id):
             return
 
         def queued(queue: list[str]) -> None:
             step.queue = queue
 
-        await self.lease.acquire(stm.instruction_id, queued)
+        toward = action.place if isinstance(action, Move) else None
+        await self.lease.acquire(stm.instruction_id, queued, toward)
+        if isinstance(self.lease, FleetLease):  # the robot given may stand anywhere
+            stm.embodied.robot_place = self.executor.ctx.robot.state().place
         if step.queue:
             await self._emit(stm, "queued", step.index, queue=step.queue)
 

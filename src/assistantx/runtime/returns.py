@@ -22,6 +22,7 @@ from assistantx.core.wording import item_phrase, person_name
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.executors import Executor
+from assistantx.runtime.fleet import FleetLease
 from assistantx.runtime.lease import BodyLease
 
 logger = logging.getLogger(__name__)
@@ -60,7 +61,7 @@ async def return_items(
     office: Office,
     resolver: Resolver,
     executor: Executor,
-    lease: BodyLease,
+    lease: BodyLease | FleetLease,
     ended: ShortTermMemory,
     *,
     attempt: int = 0,

@@ -43,6 +43,7 @@ from assistantx.nav.occupancy_map import OccupancyMap, load_map
 from assistantx.service.codebook import CodeBook
 from assistantx.service.deps import Caller, Runtime
 from assistantx.service.errors import ConflictError, NotFoundError, UnavailableError
+from assistantx.service.robots import desk_for_code, open_desk
 from assistantx.service.runtime import ServiceRuntime
 
 logger = logging.getLogger(__name__)
@@ -323,7 +324,8 @@ async def locker_scan(
             f"no QR code {body.code_id!r} is known to the dashboard (it notes codes sent "
             "while the service runs, and those simulated colleagues hold)"
         )
-    event = await runtime.sim.desk.simulate_scan(payload)
+    desk = await desk_for_code(runtime, body.code_id)  # the robot that carries it
+    event = await desk.simulate_scan(payload)
     logger.info("dashboard: simulated scan of %s: %s", body.code_id, event.kind)
     return event
 
@@ -335,6 +337,7 @@ async def locker_scan(
 )
 async def locker_close(runtime: Runtime, caller: Caller) -> LockEvent:
     caller.require_operator()
-    if (await runtime.locker.status()).door != "open":
+    desk = await open_desk(runtime)
+    if desk is None:
         raise ConflictError("the locker's door is already closed")
-    return await runtime.sim.desk.simulate_close()
+    return await desk.simulate_close()

@@ -1,4 +1,4 @@
-"""The robot's and the locker's state."""
+"""The robots' and the locker's state."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ from fastapi import APIRouter
 from assistantx.core.ports.lock import LockStatus
 from assistantx.core.ports.robot import RobotState
 from assistantx.service.deps import Caller, Runtime
+from assistantx.service.robots import NamedRobotState, robot_states
 
 router = APIRouter(prefix="/v1", tags=["devices"])
 
@@ -14,8 +15,14 @@ router = APIRouter(prefix="/v1", tags=["devices"])
 @router.get("/robot", response_model=RobotState)
 async def robot(runtime: Runtime, caller: Caller) -> RobotState:
     """Pose, place (None while driving), goal, planned path; plus the instruction holding the
-    robot (``holder``)."""
+    robot (``holder``). With several robots: robot 1 (``/v1/robots`` lists them all)."""
     return runtime.sim.robot.state().model_copy(update={"holder": runtime.assistant.lease.holder})
+
+
+@router.get("/robots", response_model=list[NamedRobotState])
+async def robots(runtime: Runtime, caller: Caller) -> list[NamedRobotState]:
+    """Every robot of the office, in order, each as ``/v1/robot`` shows one, with its name."""
+    return robot_states(runtime)
 
 
 @router.get("/locker", response_model=LockStatus)

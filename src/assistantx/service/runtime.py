@@ -42,7 +42,7 @@ from assistantx.runtime.assistant import (
     new_instruction_id,
 )
 from assistantx.runtime.loop import LoopLimits
-from assistantx.service import colleagues
+from assistantx.service import colleagues, fleet_wiring
 from assistantx.service.admission import Admission
 from assistantx.service.auth import AuthSetup, build_authority
 from assistantx.service.code_ledger import CodeLedger
@@ -58,7 +58,9 @@ from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
+from assistantx.service.robots import RobotGauges, robot_states
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.sim.fleet import SimFleet
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
@@ -116,6 +118,8 @@ class ServiceRuntime:
 
             self.matrix_setup = matrix_setup(settings)
         self.matrix: MatrixRuntime | None = None
+        self.fleet: SimFleet | None = None  # ASSISTANTX_ROBOTS > 1 (service.fleet_wiring)
+        fleet_wiring.check_fleet_settings(settings)
 
     # -- start-up ------------------------------------------------------------------------
     async def start(self, stack: AsyncExitStack) -> None:
@@ -164,6 +168,8 @@ class ServiceRuntime:
             locker=self.locker,
             robot=await asyncio.to_thread(self._robot_base, robot_place),
         )
+        if s.robots > 1:
+            self._join_fleet()
         self.messenger = BuiltinMessenger(self.journal, self.clock)
         self.metrics.skipped_sends = lambda: self.messenger.duplicates_skipped
         # Registered before anything is sent: every code is scannable from the dashboard,
@@ -191,7 +197,7 @@ class ServiceRuntime:
             AssistantParts(
                 office=self.office,
                 messenger=self.matrix.messenger if self.matrix else self.messenger,
-                robot=self.sim.robot,
+                robot=self.fleet.robot if self.fleet else self.sim.robot,
                 locker=self.locker,
                 clock=self.clock,
                 reasoner_factory=factory,
@@ -205,6 +211,7 @@ class ServiceRuntime:
                 # A direct message starts an instruction only when it asks for something.
                 is_request=self._is_request,
                 retire_codes=self.ledger.retire,
+                fleet=self.fleet.lease if self.fleet else None,
             )
         )
         self.durability = Durability(
@@ -215,6 +222,7 @@ class ServiceRuntime:
         if self.matrix is not None:
             skipped.append(self.matrix.messenger.skipped_events)
         self.metrics.count_skipped(*skipped)
+        self.metrics.registry.register(RobotGauges(lambda: robot_states(self)))
         self.admission = Admission(self.assistant, self.journal)
         self.rate = InstructionRate(s.instructions_per_minute)
         self.assistant.intercept_direct_messages(self._over_the_rate)
@@ -246,6 +254,9 @@ class ServiceRuntime:
         if inbox is not None:  # stops after the simulator: what they wrote is journaled
             await stack.enter_async_context(inbox)
         await stack.enter_async_context(self.sim.robot)
+        if self.fleet is not None:
+            await stack.enter_async_context(self.fleet.robot)  # robots 2..
+            stack.push_async_callback(self.fleet.lease.stop)  # parking drives
         stack.push_async_callback(self.sim.aclose)  # after the assistant stopped
         if world is not None:
             colleagues.restore(self.sim, world, phones, settled.live)
@@ -314,6 +325,8 @@ class ServiceRuntime:
         s = self.settings
         if s.robot == "sim":
             return None
+        if s.robots > 1:
+            return fleet_wiring.first_robot(s, self.office, self.clock, place)
         return NavigatorRobot.from_files(
             self.office,
             self.clock,
@@ -322,6 +335,16 @@ class ServiceRuntime:
             localize=s.robot_localize,
             start=place,
         )
+
+    def _join_fleet(self) -> None:
+        """Robots 2.. join robot 1; from here on the assistant, the ledger and the code
+        book see the fleet's locker (every robot's)."""
+        first = self.sim.robot.base
+        assert isinstance(first, NavigatorRobot)
+        self.fleet = fleet_wiring.join_robots(
+            self.settings, self.sim, first, self.lock_keys, self.clock
+        )
+        self.locker = self.fleet.locker
 
     def _locker(self) -> Locker:
         s = self.settings

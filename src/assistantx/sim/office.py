@@ -13,7 +13,7 @@ import functools
 import hashlib
 import itertools
 import logging
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from typing import Any, Protocol, runtime_checkable
@@ -190,6 +190,26 @@ class SimOffice:
         # answer the assistant's questions from it instead of with a generic line
         self.wishes: dict[str, Wish] = {}
         self._visits: set[asyncio.Task[None]] = set()
+        # Further robots, each with its locker (a fleet: add_robot), and which robot serves
+        # an instruction; people go to that robot for its hand-overs.
+        self.fleet: dict[str, tuple[ObservedRobot, Locker]] = {}
+        self.robot_of: Callable[[str], str | None] = lambda _instruction: None
+
+    def add_robot(self, name: str, base: RobotBase, locker: Locker, home: str) -> ObservedRobot:
+        """Another robot with its own locker in this office (``robot_of`` says which robot
+        serves an instruction; an instruction it names no robot for is the first robot's)."""
+        if not isinstance(locker, HandOverDesk):
+            raise TypeError(f"{type(locker).__name__} cannot be used by simulated people")
+        observed = ObservedRobot(base, home, self._on_robot_arrived)
+        self.fleet[name] = (observed, locker)
+        return observed
+
+    def _body(self, instruction_id: str) -> tuple[ObservedRobot, Locker]:
+        """The robot and locker serving ``instruction_id``."""
+        name = self.robot_of(instruction_id)
+        if name is None or name not in self.fleet:
+            return self.robot, self.locker
+        return self.fleet[name]
 
     def timestamp(self) -> datetime:
         return datetime.fromtimestamp(self.clock.now(), tz=UTC)
@@ -321,10 +341,11 @@ class SimOffice:
         self._schedule_handovers()
 
     def _schedule_handovers(self) -> None:
-        place = self.robot.place
-        if place is None or self.robot.moving:
-            return
         for code in self.codes:
+            robot, _ = self._body(code.instruction_id)
+            place = robot.place
+            if place is None or robot.moving:
+                continue
             if code.done or code.scheduled or not self.world.available(code.person):
                 continue
             if place not in self.world.places_of(code.person):
@@ -343,7 +364,8 @@ class SimOffice:
     def _handover(self, code: HeldCode, place: str) -> None:
         """The person comes to the robot and uses every code they hold that works here."""
         code.scheduled = False
-        if self.robot.moving or self.robot.place != place or code.done:
+        robot, _ = self._body(code.instruction_id)
+        if robot.moving or robot.place != place or code.done:
             return  # the robot left before the person came
         mine = [
             c
@@ -368,12 +390,13 @@ class SimOffice:
                 )
             return
         code.done = True
-        if isinstance(self.locker, LocalLocker):
+        _, locker = self._body(code.instruction_id)
+        if isinstance(locker, LocalLocker):
             # In-process lock: the whole visit happens at this instant of the clock.
-            decision = self.locker.controller.scan(code.payload).decision
+            decision = locker.controller.scan(code.payload).decision
             self._after_scan(code, decision, now, place)
             if decision.kind == "code_accepted":
-                self.locker.controller.close()
+                locker.controller.close()
             return
         task = asyncio.get_running_loop().create_task(self._visit(code, now, place))
         self._visits.add(task)
@@ -381,8 +404,11 @@ class SimOffice:
 
     async def _visit(self, code: HeldCode, now: float, place: str) -> None:
         """A hand-over at a networked locker: scan, swap the item, shut the door."""
+        _, locker = self._body(code.instruction_id)
+        assert isinstance(locker, HandOverDesk)  # checked on the way in
+        desk = locker
         try:
-            decision = await self.desk.simulate_scan(code.payload)
+            decision = await desk.simulate_scan(code.payload)
         except LockError as exc:
             logger.warning("simulated scan by %s failed: %s", code.person, exc)
             code.done = False  # they try again the next time the robot is here
@@ -390,7 +416,7 @@ class SimOffice:
         self._after_scan(code, decision, now, place)
         if decision.kind == "code_accepted":
             try:
-                await self.desk.simulate_close()
+                await desk.simulate_close()
             except LockError as exc:
                 logger.warning("simulated door close by %s failed: %s", code.person, exc)
 

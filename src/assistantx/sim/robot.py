@@ -110,6 +110,9 @@ class ObservedRobot(RobotBase):
     def path_length(self, a: str, b: str) -> float | None:
         return self.base.path_length(a, b)
 
+    def forget_obstacles(self) -> None:
+        self.base.forget_obstacles()
+
     def state(self) -> RobotState:
         # Motion as the base reports it: a base still planning its path has not left its place.
         return self.base.state().model_copy(update={"odometer_m": self.odometer_m})

@@ -30,6 +30,7 @@ as one MapError line naming the anchors file, the location id and the problem.
 from __future__ import annotations
 
 import asyncio
+import functools
 import logging
 import math
 from collections.abc import Iterator, Mapping
@@ -57,6 +58,7 @@ from assistantx.nav.navigation import NavigationParams, Navigator
 from assistantx.nav.occupancy_map import OCCUPIED, OccupancyMap, load_map
 from assistantx.nav.plan_process import PLAN_PROCESS
 from assistantx.nav.planner import GridPlanner, Path
+from assistantx.nav.traffic import Traffic
 
 logger = logging.getLogger(__name__)
 
@@ -111,7 +113,12 @@ class NavigatorRobot(RobotBase):
         arrival_tolerance_m: float = 0.15,
         anchors_file: str | FilePath | None = None,
         world: GroundTruth | None = None,
+        traffic: Traffic | None = None,
+        name: str = "robot",
     ) -> None:
+        """``traffic``: robots sharing this map (a fleet); this one, called ``name`` there,
+        claims the floor it drives over and yields to the others (nav.traffic). None: alone
+        on the floor, driving exactly as before."""
         super().__init__()
         where = f"{anchors_file}: " if anchors_file is not None else ""
         missing = sorted({loc.id for loc in office.locations} - anchors.keys())
@@ -155,6 +162,10 @@ class NavigatorRobot(RobotBase):
         self._goal: str | None = None
         self._path: Path | None = None
         self._lock = asyncio.Lock()
+        self.traffic = traffic
+        self.name = name
+        if traffic is not None:
+            traffic.stand(name, home.x, home.y)
 
     @classmethod
     def from_files(
@@ -167,6 +178,8 @@ class NavigatorRobot(RobotBase):
         anchors_yaml: str | FilePath | None = None,
         localize: bool = True,
         start: str | None = None,
+        traffic: Traffic | None = None,
+        name: str = "robot",
     ) -> NavigatorRobot:
         map_path = FilePath(map_yaml).resolve()
         anchors_path = FilePath(
@@ -188,6 +201,8 @@ class NavigatorRobot(RobotBase):
             localize=localize,
             start=start,
             anchors_file=anchors_path,
+            traffic=traffic,
+            name=name,
         )
 
     async def _start(self) -> None:
@@ -227,13 +242,16 @@ class NavigatorRobot(RobotBase):
             path = self._plan(location_id)
         else:
             path = await asyncio.to_thread(self._plan, location_id)
+        if self.traffic is not None:
+            path = await self._yield_to_others(location_id, path)
         self._goal, self._path, self._place = location_id, path, None
         logger.info("driving to %s (%.1f m)", location_id, path.length_m)
-        chunks = (
-            nav.navigate((anchor.x, anchor.y), anchor.yaw, path)
-            if self.localize
-            else nav.follow(path, anchor.yaw)
-        )
+        if self.traffic is not None and not self.localize:
+            chunks = self._follow_in_traffic(path, anchor.yaw)
+        elif self.localize:
+            chunks = nav.navigate(self._stop_point(anchor, path), anchor.yaw, path)
+        else:
+            chunks = nav.follow(path, anchor.yaw)
         try:
             while True:
                 if self.localize:
@@ -243,6 +261,9 @@ class NavigatorRobot(RobotBase):
                 if seconds is None:
                     break
                 await self.clock.sleep(seconds)
+                if self.traffic is not None:
+                    true = nav.base.true_pose
+                    self.traffic.moved(self.name, float(true[0]), float(true[1]))
         except (RobotError, asyncio.CancelledError):
             # Stopped short (blocked, or the instruction was cancelled): no goal, and no
             # planned path left for the dashboard to draw.
@@ -250,8 +271,12 @@ class NavigatorRobot(RobotBase):
             raise
         finally:
             self._snapshot = None
+            if self.traffic is not None:  # standing again, wherever it stopped
+                true = nav.base.true_pose
+                self.traffic.stand(self.name, float(true[0]), float(true[1]))
         true = nav.base.true_pose
-        miss = math.hypot(true[0] - anchor.x, true[1] - anchor.y)
+        stop_x, stop_y = self._stop_point(anchor, path)
+        miss = math.hypot(true[0] - stop_x, true[1] - stop_y)
         self._goal, self._path = None, None
         if miss > self.arrival_tolerance_m:
             raise LocalizationLostError(
@@ -263,6 +288,100 @@ class NavigatorRobot(RobotBase):
             distance_m=round(nav.base.odometer_m - odometer_before, 3),
             duration_s=round(nav.base.time_s - started_at, 3),
         )
+
+    async def _yield_to_others(self, location_id: str, path: Path) -> Path:
+        """Wait where it stands until the floor the path sweeps is free of other robots,
+        going round robots that stand in the way when the floor leaves room; returns the
+        path to drive."""
+        assert self.traffic is not None
+        started = self.clock.timer()
+        points = await self.traffic.claim(
+            self.name, path.points, functools.partial(self._round_standing, location_id)
+        )
+        waited = self.clock.timer() - started
+        if waited > 0:
+            logger.info("%s yielded %.1f s to other robots", self.name, waited)
+        if points is path.points:
+            return path
+        length = float(np.hypot(*np.diff(points, axis=0).T).sum())
+        return Path(points, length, length, len(points))
+
+    def _stop_point(self, anchor: Anchor, path: Path) -> tuple[float, float]:
+        """Where the robot stops for ``anchor``: the anchor; among other robots, the end of
+        its claimed path, which is beside the anchor when another robot stands on it."""
+        if self.traffic is None:
+            return (anchor.x, anchor.y)
+        return (float(path.points[-1][0]), float(path.points[-1][1]))
+
+    def _round_standing(
+        self, location_id: str, robots: list[tuple[float, float]]
+    ) -> FloatArray | None:
+        """A path to ``location_id`` that keeps clear of the robots standing at ``robots``."""
+        assert self.traffic is not None
+        goal = self.anchors[location_id]
+        nav = self._navigator
+        radius = self.traffic.params.standing_radius_m
+        res = self._grid.resolution
+        rings = []
+        for ox, oy in robots:
+            xs, ys = np.meshgrid(
+                np.arange(ox - radius, ox + radius + res, res),
+                np.arange(oy - radius, oy + radius + res, res),
+            )
+            inside = np.hypot(xs - ox, ys - oy) <= radius
+            rings.append(np.column_stack([xs[inside], ys[inside]]))
+        costmap = nav.costmap.with_obstacles(np.concatenate(rings))
+        planner = GridPlanner(costmap, nav.params.planner)
+        start = (float(nav.pose[0]), float(nav.pose[1]))
+        for stop in self._stops_beside(goal, robots, radius):
+            if self.traffic.holders(self.traffic.blocks_along(np.array([stop])), self.name):
+                continue  # too close to another robot's footprint
+            try:
+                around = planner.plan(start, stop)
+            except RobotError:
+                continue
+            return around.points
+        return None
+
+    @staticmethod
+    def _stops_beside(
+        goal: Anchor, robots: list[tuple[float, float]], radius: float
+    ) -> list[tuple[float, float]]:
+        """The goal, or when another robot stands on it, points beside it nearest first (the
+        robots then serve the same desk side by side: a person walks a step further)."""
+        if not any(math.hypot(goal.x - x, goal.y - y) < radius for x, y in robots):
+            return [(goal.x, goal.y)]
+        beside = []
+        for distance in (radius + 0.3, radius + 0.6, radius + 0.9):
+            for k in range(12):
+                angle = k * math.tau / 12
+                beside.append(
+                    (goal.x + distance * math.cos(angle), goal.y + distance * math.sin(angle))
+                )
+        return [
+            p for p in beside if all(math.hypot(p[0] - x, p[1] - y) >= radius for x, y in robots)
+        ]
+
+    def _follow_in_traffic(self, path: Path, goal_yaw: float) -> Iterator[float]:
+        """Kinematic mode among other robots: along the path step by step (not in one jump),
+        so the floor behind is handed back as the robot passes it and others see it move."""
+        assert self.traffic is not None
+        base = self._navigator.base
+        drive = self._navigator.params.drive
+        x, y = float(base.true_pose[0]), float(base.true_pose[1])
+        for x, y, seconds in self.traffic.drive(self.name, path.points, drive.max_speed_mps):
+            step = math.hypot(x - base.true_pose[0], y - base.true_pose[1])
+            heading = math.atan2(y - base.true_pose[1], x - base.true_pose[0])
+            base.true_pose = np.array([x, y, heading])
+            base.odom_pose = base.true_pose.copy()
+            base.time_s += seconds
+            base.odometer_m += step
+            yield seconds
+        turn = abs(math.remainder(goal_yaw - float(base.true_pose[2]), math.tau))
+        base.true_pose = np.array([x, y, goal_yaw])
+        base.odom_pose = base.true_pose.copy()
+        base.time_s += turn / drive.max_turn_rate_rps
+        yield turn / drive.max_turn_rate_rps
 
     def _drive_chunk(self, chunks: Iterator[float]) -> float | None:
         """In the worker thread: drive one chunk, then publish what state() shows."""
@@ -385,6 +504,10 @@ class NavigatorRobot(RobotBase):
         for ox, oy, r in self._obstacles:
             data[np.hypot(cx - ox, cy - oy) <= r] = OCCUPIED
         self._navigator.set_world(self._grid.with_data(data))
+
+    def forget_obstacles(self) -> None:
+        """Forget what the robot saw (the world stays as it is)."""
+        self._navigator.reset_obstacles()
 
     def clear_obstacles(self) -> None:
         """Remove the dropped obstacles from the world and from what the robot remembers."""

@@ -53,6 +53,11 @@ class RobotBase(Component, ABC):
     def state(self) -> RobotState:
         """The current pose, place, path and (if localizing) particle sample."""
 
+    def forget_obstacles(self) -> None:
+        """Forget the obstacles the base has seen that its map lacks (nav2's "clear the
+        costmap"), to look again on the next move: a door may have been opened meanwhile.
+        A base without a memory of obstacles has nothing to forget."""
+
     def path_length(self, a: str, b: str) -> float | None:
         """Metres along the path a person would take from location ``a`` to ``b`` on this
         base's floor map; None when the base has no map (callers then measure straight

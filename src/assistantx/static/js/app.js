@@ -170,15 +170,21 @@ async function refreshLocker() {
 }
 
 async function refreshRobot() {
-  const robot = await api("/v1/robot");
-  mapView.setRobot(robot);
+  // Every robot of the office (one, or a fleet's robots 1, 2..), each on the map.
+  const robots = await api("/v1/robots");
+  mapView.setRobots(robots);
   // Places by name: ids (desk_03) and instruction ids are not for people to read.
   const named = (id) => (id ? (state.memory?.places[id] ?? id.replaceAll("_", " ")) : null);
-  const place = named(robot.place);
-  const goal = named(robot.goal);
-  $("#robot-status").textContent = robot.moving
-    ? `Robot: driving${goal ? ` to ${goal}` : ""}`
-    : `Robot: at ${place ?? "an unnamed spot"}, ${robot.odometer_m.toFixed(1)} m driven`;
+  const doing = (robot) => {
+    const place = named(robot.place);
+    const goal = named(robot.goal);
+    return robot.moving
+      ? `driving${goal ? ` to ${goal}` : ""}`
+      : `at ${place ?? "an unnamed spot"}, ${robot.odometer_m.toFixed(1)} m driven`;
+  };
+  $("#robot-status").textContent = robots.length === 1
+    ? `Robot: ${doing(robots[0])}`
+    : robots.map((robot) => `${robot.name.replace(/^r/, "R")}: ${doing(robot)}`).join(" · ");
 }
 
 async function refreshAll() {

@@ -24,6 +24,7 @@ export class MapView {
     this.info = null;
     this.image = null;
     this.robot = null;
+    this.others = []; // robots 2, 3.. of a fleet (GET /v1/robots), drawn like the first
     this.people = [];
     this.showParticles = true;
     this.showLabels = true;
@@ -71,6 +72,13 @@ export class MapView {
     this.draw();
   }
 
+  /** Every robot of the office, the first as setRobot shows it; each numbered when several. */
+  setRobots(states) {
+    this.robot = states[0] ?? null;
+    this.others = states.slice(1);
+    this.draw();
+  }
+
   /** people: [{id, name, place, available: true|false|null}] */
   setPeople(people) {
     this.people = people;
@@ -89,6 +97,7 @@ export class MapView {
     if (this.showParticles) this.drawParticles();
     this.drawPath();
     this.drawRobot();
+    this.drawOthers();
   }
 
   drawAnchors() {
@@ -138,11 +147,13 @@ export class MapView {
 
   /** The box the robot's marker covers (see drawRobot), nose included; none without a pose. */
   robotDisc() {
-    const pose = this.robot?.pose;
-    if (!pose) return [];
     const u = this.unit;
-    const [px, py] = this.toPixel(pose.x, pose.y);
-    return [{ x: px - 16 * u, y: py - 16 * u, w: 32 * u, h: 32 * u }];
+    return [this.robot, ...this.others]
+      .filter((robot) => robot?.pose)
+      .map((robot) => {
+        const [px, py] = this.toPixel(robot.pose.x, robot.pose.y);
+        return { x: px - 16 * u, y: py - 16 * u, w: 32 * u, h: 32 * u };
+      });
   }
 
   /** The boxes the people's discs cover (see drawPeople), so labels keep clear of them. */
@@ -240,6 +251,51 @@ export class MapView {
     ctx.stroke();
     // Where the marker is, in canvas pixels, for tests and assistive summaries.
     this.canvas.dataset.robot = `${px.toFixed(1)},${py.toFixed(1)}`;
+    if (this.others.length) this.drawNumber(px, py, 1);
+  }
+
+  /** Robots 2, 3..: their planned paths and numbered markers. */
+  drawOthers() {
+    const { ctx, unit: u } = this;
+    const where = this.robot?.pose ? [this.canvas.dataset.robot] : [];
+    this.others.forEach((robot, i) => {
+      if (!robot.pose) return;
+      if (robot.path?.length) {
+        ctx.strokeStyle = COLOURS.path;
+        ctx.lineWidth = 2 * u;
+        ctx.setLineDash([4 * u, 4 * u]);
+        ctx.beginPath();
+        robot.path.forEach(([x, y], k) => {
+          const [px, py] = this.toPixel(x, y);
+          if (k === 0) ctx.moveTo(px, py);
+          else ctx.lineTo(px, py);
+        });
+        ctx.stroke();
+        ctx.setLineDash([]);
+      }
+      const [px, py] = this.toPixel(robot.pose.x, robot.pose.y);
+      ctx.beginPath();
+      ctx.arc(px, py, 11 * u, 0, 2 * Math.PI);
+      ctx.fillStyle = COLOURS.robot;
+      ctx.fill();
+      ctx.strokeStyle = "#ffffff";
+      ctx.lineWidth = 2 * u;
+      ctx.stroke();
+      this.drawNumber(px, py, i + 2);
+      where.push(`${px.toFixed(1)},${py.toFixed(1)}`);
+    });
+    // Every robot's marker, "x,y;x,y", for tests and assistive summaries.
+    this.canvas.dataset.robots = where.join(";");
+  }
+
+  drawNumber(px, py, n) {
+    const { ctx, unit: u } = this;
+    ctx.fillStyle = "#ffffff";
+    ctx.font = `bold ${11 * u}px system-ui, sans-serif`;
+    ctx.textAlign = "center";
+    ctx.textBaseline = "middle";
+    ctx.fillText(String(n), px, py + 0.5);
+    ctx.textAlign = "start";
   }
 }
 
