@@ -11,8 +11,12 @@ import argparse
 import signal
 import socket
 import sys
+from typing import TYPE_CHECKING
 
 from assistantx.core.settings import Settings
+
+if TYPE_CHECKING:
+    from assistantx.service.offices.directory import Offices
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -25,7 +29,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 def _serve(args: argparse.Namespace) -> int:
     from assistantx.service.app import create_app
     from assistantx.service.datalock import DataDirBusyError, DataDirLock
-    from assistantx.service.runtime import ServiceRuntime
+    from assistantx.service.offices.deployment import DeploymentError
     from assistantx.service.server import service_server
 
     settings = Settings()
@@ -37,14 +41,19 @@ def _serve(args: argparse.Namespace) -> int:
     port = args.port if args.port is not None else settings.port
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
 
-    def announce(runtime: ServiceRuntime) -> None:
+    def announce(offices: Offices) -> None:
         print(f"AssistantX is serving on http://{shown}:{port}/", flush=True)
         print(f"  API docs: http://{shown}:{port}/docs", flush=True)
-        if runtime.auth.generated_token:
+        if offices.several:
+            names = ", ".join(f"{o} ({offices.status(o)})" for o in offices.slots)
+            print(f"  offices: {names}; replica {offices.replica}", flush=True)
+            if offices.generated_token:
+                print(f"  operator token: {offices.generated_token}", flush=True)
+            return
+        auth = offices.runtime(None).auth
+        if auth.generated_token:
             print(
-                f"  operator token (also in {runtime.auth.token_file}): "
-                f"{runtime.auth.generated_token}",
-                flush=True,
+                f"  operator token (also in {auth.token_file}): {auth.generated_token}", flush=True
             )
 
     try:
@@ -59,13 +68,20 @@ def _serve(args: argparse.Namespace) -> int:
         print(f"assistantx serve: cannot listen on {host}:{port}: {exc.strerror}", file=sys.stderr)
         return 1
     # A replica that lost its office's lease stops (its writes are refused anyway); the
-    # supervisor that restarts it makes it a standby.
-    app = create_app(
-        settings,
-        on_ready=announce,
-        data_lock=lock,
-        on_lease_lost=lambda: signal.raise_signal(signal.SIGTERM),
-    )
+    # supervisor that restarts it makes it a standby. With several offices only the lost
+    # office stops; the replica takes its share again.
+    try:
+        app = create_app(
+            settings,
+            on_ready=announce,
+            data_lock=lock,
+            on_lease_lost=lambda: signal.raise_signal(signal.SIGTERM),
+        )
+    except DeploymentError as exc:
+        lock.release()
+        listener.close()
+        print(f"assistantx serve: {exc}", file=sys.stderr)
+        return 2
     service_server(app, host, port).run(sockets=[listener])
     return 0
 

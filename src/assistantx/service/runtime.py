@@ -123,7 +123,9 @@ class ServiceRuntime:
         if self.data_lock is None or not self.data_lock.held:
             self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
             stack.callback(self.data_lock.release)
-        if s.database is not None:  # replicas share the database: run only under the lease
+        if s.database is not None and self.office_lease is None:
+            # Replicas share the database: run only under the lease (several offices: the
+            # caller took this office's lease and set ``office_lease`` already).
             await self._hold_office(stack, data_dir, s.database)
         self.journal = Journal.open(data_dir / JOURNAL_FILE, database_url=s.database)
         stack.callback(self.journal.close)  # before the lease's release: its last writes land
