@@ -194,5 +194,5 @@ def test_each_office_but_the_home_one_has_its_own_folder_and_schema(tmp_path: Pa
     assert harbour.settings.data_dir == tmp_path / "d" / "offices" / "harbour"
     assert harbour.settings.database == scoped_url(url, "office_harbour")
     assert harbour.settings.database is not None
-    assert harbour.settings.database.endswith("?options=-c%20search_path%3Doffice_harbour")
+    assert harbour.settings.database.endswith("?options=-c%20search_path%3Doffice_harbour%2Cpublic")
     assert harbour.settings.office == HARBOUR / "office.yaml"

@@ -91,7 +91,7 @@ def _read(path: Path, base: Settings) -> list[OfficeSpec]:
     entries = raw.get("offices") if isinstance(raw, dict) else None
     if not isinstance(entries, list) or not entries:
         raise DeploymentError(f"{where}: needs 'offices:', a list of offices")
-    if base.tokens is not None:
+    if base.tokens is not None and base.tokens.get_secret_value().strip():
         raise DeploymentError(
             f"{where}: ASSISTANTX_TOKENS names people of one office; with several offices give"
             " each office its own 'tokens:'"
@@ -160,9 +160,12 @@ def _token_text(tokens: Any, here: str) -> str:
 
 
 def scoped_url(url: str, schema: str) -> str:
-    """``url`` with its search path set to ``schema``: every unqualified table an office's
-    stores create or read is that office's (libpq reads ``options`` from the URL's query)."""
+    """``url`` with its search path starting at ``schema`` (libpq reads ``options`` from the
+    URL's query): every table an office's stores create is made there (PostgreSQL creates in
+    the path's first schema, and ``IF NOT EXISTS`` looks only there) and read from there
+    first; ``public`` after it holds what the deployment shares, the leases table, which the
+    fencing check of every journal write reads."""
     parts = urlsplit(url)
     query = [(k, v) for k, v in parse_qsl(parts.query) if k != "options"]
-    query.append(("options", f"-c search_path={schema}"))
+    query.append(("options", f"-c search_path={schema},public"))
     return urlunsplit(parts._replace(query=urlencode(query, quote_via=quote)))

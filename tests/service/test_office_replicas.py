@@ -1,0 +1,131 @@
+"""Three offices over two real replica processes on the tests' PostgreSQL: the offices spread
+(at most ceil(3/2) = 2 each), a SIGTERM hands a replica's offices to the other at once, and a
+``kill -9`` moves them once their leases expire; ``GET /v1/offices`` and ``/metrics`` of
+either replica say which replica runs which office."""
+
+from __future__ import annotations
+
+import time
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+import httpx
+import psycopg
+import pytest
+import yaml
+
+from helpers.eventually import eventually_sync
+from service.server import OPERATOR, Server, free_port, serve
+
+pytestmark = [pytest.mark.postgres, pytest.mark.slow]
+
+TTL_S = 2.0
+HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
+OFFICES = ["annex", "harbour", "hq"]
+
+
+def deployment(folder: Path) -> Path:
+    harbour = Path(__file__).resolve().parents[2] / "dataset" / "offices" / "harbour"
+    path = folder / "offices.yaml"
+    entries: list[dict[str, Any]] = [
+        {"id": "hq", "name": "Headquarters"},
+        {"id": "harbour", "name": "Harbour Street", "office": str(harbour / "office.yaml")},
+        {"id": "annex", "name": "Annex"},
+    ]
+    path.write_text(yaml.safe_dump({"offices": entries}), encoding="utf-8")
+    return path
+
+
+def replica(folder: Path, name: str, url: str, offices: Path) -> Server:
+    return serve(
+        folder / name,
+        free_port(),
+        ASSISTANTX_OFFICES=str(offices),
+        ASSISTANTX_DATABASE_URL=url,
+        ASSISTANTX_LEASE_TTL_S=str(TTL_S),
+        ASSISTANTX_REPLICA_ID=name,
+        ASSISTANTX_ROBOT="sim",
+        ASSISTANTX_TOKENS="",
+    )
+
+
+def holders(server: Server) -> dict[str, str | None]:
+    """Who runs each office, as ``server`` answers ``GET /v1/offices`` (ready offices only:
+    an office still starting is not run yet)."""
+    r = httpx.get(f"{server.url}/v1/offices", headers=HEADERS, timeout=10)
+    assert r.status_code == 200, r.text
+    return {
+        o["id"]: o["replica"] if o["status"] in ("ready", "elsewhere") else None for o in r.json()
+    }
+
+
+def settle(server: Server, until: Any, what: str, timeout_s: float = 60) -> dict[str, Any]:
+    result: dict[str, Any] = eventually_sync(
+        lambda: holders(server), until=until, what=what, timeout_s=timeout_s
+    )
+    return result
+
+
+def spread(view: dict[str, str | None]) -> list[int]:
+    return sorted(Counter(view.values()).values())
+
+
+def replica_series(server: Server) -> dict[str, str]:
+    text = httpx.get(f"{server.url}/metrics", headers=HEADERS, timeout=10).text
+    found: dict[str, str] = {}
+    for line in text.splitlines():
+        if line.startswith("assistantx_office_replica{"):
+            labels = dict(
+                part.split("=", 1)
+                for part in line[line.index("{") + 1 : line.index("}")].split(",")
+            )
+            found[labels["office"].strip('"')] = labels["replica"].strip('"')
+    return found
+
+
+def test_offices_spread_over_replicas_and_move_when_one_leaves(
+    tmp_path: Path, postgres_url: str
+) -> None:
+    offices = deployment(tmp_path)
+    a = replica(tmp_path, "replica-a", postgres_url, offices)
+    b: Server | None = None
+    try:
+        # Alone, A runs every office.
+        settle(a, lambda v: set(v.values()) == {"replica-a"}, "replica A to run all offices")
+        # B joins: A hands one office back and B takes it; 2 and 1, never more than 2.
+        b = replica(tmp_path, "replica-b", postgres_url, offices)
+        view = settle(
+            a,
+            lambda v: None not in v.values() and spread(v) == [1, 2],
+            "the offices to spread over A and B",
+        )
+        assert set(view.values()) == {"replica-a", "replica-b"}
+        assert settle(b, lambda v: v == view, "B to see the same spread") == view
+        assert replica_series(b) == view  # /metrics of either replica names the holders
+        # Each office's journal is in its own schema: one per office but the home one.
+        with psycopg.connect(postgres_url, autocommit=True) as db:
+            schemas = {r[0] for r in db.execute("SELECT nspname FROM pg_namespace")}
+        assert {"office_harbour", "office_annex"} <= schemas
+
+        # SIGTERM: B hands its office over at once (no wait for the lease to expire).
+        b.stop()
+        stopped = time.monotonic()
+        settle(a, lambda v: set(v.values()) == {"replica-a"}, "A to take B's office back")
+        assert time.monotonic() - stopped < 30
+
+        # B again, then kill -9 A: its offices move to B once their leases expire.
+        b = replica(tmp_path, "replica-b", postgres_url, offices)
+        settle(b, lambda v: None not in v.values() and spread(v) == [1, 2], "the spread again")
+        a.kill()
+        settle(
+            b,
+            lambda v: set(v.values()) == {"replica-b"},
+            "B to take A's offices once their leases expired",
+        )
+        r = httpx.get(f"{b.url}/v1/offices/harbour/me", headers=HEADERS, timeout=10)
+        assert r.status_code == 200, r.text  # the moved office answers on B
+    finally:
+        a.stop()
+        if b is not None:
+            b.stop()
