@@ -63,6 +63,7 @@ class Server:
     results_dir: Path
     port: int = field(default_factory=free_port)
     process: subprocess.Popen[bytes] | None = None
+    env: dict[str, str] = field(default_factory=dict)  # more ASSISTANTX_* settings
 
     @property
     def url(self) -> str:
@@ -79,6 +80,7 @@ class Server:
                 "ASSISTANTX_PEOPLE": "human",  # the test plays the colleagues
                 "ASSISTANTX_SPEEDUP": "50",
                 **_reasoner_env(),
+                **self.env,
             }
         )
         cmd = [sys.executable, "-m", "assistantx", "serve", "--host", "127.0.0.1"]
