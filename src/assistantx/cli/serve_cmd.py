@@ -20,7 +20,17 @@ if TYPE_CHECKING:
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    p = sub.add_parser("serve", help="run the assistant as a service (REST API + dashboard)")
+    p = sub.add_parser(
+        "serve",
+        help="run the assistant as a service (REST API + dashboard)",
+        description=(
+            "Serve one office (ASSISTANTX_OFFICE) or several: ASSISTANTX_OFFICES=deployment.yaml"
+            " lists them (id, name, and each office's own settings: office, map, map_anchors,"
+            " lock_port, matrix_config, tokens ...); each is served at /v1/offices/ID/..., the"
+            " first also at today's paths. With ASSISTANTX_DATABASE_URL several serve"
+            " processes share the offices, each under its own lease. See README, Configuration."
+        ),
+    )
     p.add_argument("--host", default=None, help="bind address (default: ASSISTANTX_HOST)")
     p.add_argument("--port", type=int, default=None, help="port (default: ASSISTANTX_PORT)")
     p.set_defaults(func=_serve)
@@ -29,14 +39,20 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
 def _serve(args: argparse.Namespace) -> int:
     from assistantx.service.app import create_app
     from assistantx.service.datalock import DataDirBusyError, DataDirLock
-    from assistantx.service.offices.deployment import DeploymentError
+    from assistantx.service.offices.deployment import DeploymentError, load_deployment
     from assistantx.service.server import service_server
 
     settings = Settings()
-    problem = _robot_files_problem(settings)
-    if problem is not None:
-        print(f"error: {problem}")
+    try:
+        offices = load_deployment(settings)
+    except DeploymentError as exc:
+        print(f"assistantx serve: {exc}", file=sys.stderr)
         return 2
+    for office in offices:  # every office's map and anchors, before anything binds
+        problem = _robot_files_problem(office.settings)
+        if problem is not None:
+            print(f"error: {problem}")
+            return 2
     host = args.host or settings.host
     port = args.port if args.port is not None else settings.port
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
@@ -70,18 +86,12 @@ def _serve(args: argparse.Namespace) -> int:
     # A replica that lost its office's lease stops (its writes are refused anyway); the
     # supervisor that restarts it makes it a standby. With several offices only the lost
     # office stops; the replica takes its share again.
-    try:
-        app = create_app(
-            settings,
-            on_ready=announce,
-            data_lock=lock,
-            on_lease_lost=lambda: signal.raise_signal(signal.SIGTERM),
-        )
-    except DeploymentError as exc:
-        lock.release()
-        listener.close()
-        print(f"assistantx serve: {exc}", file=sys.stderr)
-        return 2
+    app = create_app(
+        settings,
+        on_ready=announce,
+        data_lock=lock,
+        on_lease_lost=lambda: signal.raise_signal(signal.SIGTERM),
+    )
     service_server(app, host, port).run(sockets=[listener])
     return 0
 
