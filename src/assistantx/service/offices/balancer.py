@@ -79,7 +79,7 @@ class Balancer:
         self._failing = False
 
     async def start(self) -> None:
-        await self._round()
+        await self.balance()
         if self._loop is None:
             self._loop = asyncio.create_task(self._run(), name="office-balancer")
 
@@ -115,7 +115,7 @@ class Balancer:
         while True:
             await asyncio.sleep(self.ttl_s / 3)
             try:
-                await self._round()
+                await self.balance()
             except Exception as exc:  # the database unreachable: logged once, retried
                 if not self._failing:
                     logger.warning("replica %s: cannot balance offices (%s)", self.replica, exc)
@@ -125,7 +125,9 @@ class Balancer:
                 logger.warning("replica %s: balancing offices again", self.replica)
                 self._failing = False
 
-    async def _round(self) -> None:
+    async def balance(self) -> None:
+        """One round: heartbeat, count the live replicas, hand back a surplus office or take
+        free ones up to the fair share."""
         self._heartbeat = await asyncio.to_thread(
             self.leases.acquire, REPLICA_PREFIX + self.replica, self.replica, self.ttl_s
         )
