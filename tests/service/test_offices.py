@@ -20,7 +20,15 @@ import yaml
 from assistantx.core.office import DEFAULT_OFFICE
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.service.offices.deployment import DeploymentError, load_deployment, scoped_url
+from assistantx.core.errors import JournalError
+from assistantx.service.offices.deployment import (
+    OFFICE_STATE,
+    DeploymentError,
+    claim_journal,
+    load_deployment,
+    scoped_url,
+)
+from assistantx.store.journal import Journal
 from helpers.servers import serving_app
 from service.server import LEE, OPERATOR
 
@@ -114,6 +122,9 @@ async def test_each_office_has_its_own_people_instructions_and_journal(tmp_path:
             return {row[0] for row in db.execute("SELECT id FROM instructions")}
 
     assert journaled(tmp_path / "data" / "journal.sqlite3") == {at_hq}
+    with sqlite3.connect(tmp_path / "data" / "journal.sqlite3") as db:
+        [(claim,)] = db.execute("SELECT body FROM state WHERE name=?", (OFFICE_STATE,))
+    assert json.loads(claim) == {"id": "hq"}  # the journal knows whose it is
     assert journaled(tmp_path / "data" / "offices" / "harbour" / "journal.sqlite3") == {at_harbour}
 
 
@@ -196,3 +207,19 @@ def test_each_office_but_the_home_one_has_its_own_folder_and_schema(tmp_path: Pa
     assert harbour.settings.database is not None
     assert harbour.settings.database.endswith("?options=-c%20search_path%3Doffice_harbour%2Cpublic")
     assert harbour.settings.office == HARBOUR / "office.yaml"
+
+
+def test_a_journal_of_one_office_is_refused_to_another(tmp_path: Path) -> None:
+    """Listing another office first would give it the home office's journal: refused."""
+    journal = Journal.open(tmp_path / "journal.sqlite3")
+    try:
+        claim_journal(journal, "hq", "data/journal.sqlite3")  # a single office's journal
+        claim_journal(journal, "hq", "data/journal.sqlite3")  # its own again: fine
+        with pytest.raises(JournalError) as refused:
+            claim_journal(journal, "harbour", "data/journal.sqlite3")
+    finally:
+        journal.close()
+    assert str(refused.value) == (
+        "data/journal.sqlite3: this journal belongs to office 'hq', not 'harbour': keep the"
+        " office that was listed first in the deployment file first"
+    )

@@ -59,6 +59,7 @@ from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.matrix_wiring import build_matrix, start_matrix
 from assistantx.service.office_lease import OfficeLease
+from assistantx.service.offices.deployment import claim_journal
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.telemetry import ServiceMetrics
@@ -67,6 +68,7 @@ from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
 from assistantx.store.leases import Leases
+from assistantx.store.postgres_store import redact
 
 logger = logging.getLogger(__name__)
 
@@ -106,6 +108,7 @@ class ServiceRuntime:
         self.ready = False
         self.resumed: list[str] = []
         self.office_lease: OfficeLease | None = None  # with a database URL: the office's lease
+        self.office_id: str | None = None  # one of several offices: its id in the deployment
         self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
         # here (create_app fails fast on a bad one); it is built in start, with the rest.
@@ -131,6 +134,9 @@ class ServiceRuntime:
         stack.callback(self.journal.close)  # before the lease's release: its last writes land
         if self.office_lease is not None:
             self.office_lease.hold(self.journal)
+        if self.office_id is not None:  # one of several offices: this journal must be its own
+            where = redact(s.database) if s.database else str(data_dir / JOURNAL_FILE)
+            claim_journal(self.journal, self.office_id, where)
         # The map's distance transforms, kept by content hash: a second start reads them.
         disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
         stack.callback(disk_cache.use_directory, None)

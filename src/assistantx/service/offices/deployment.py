@@ -41,7 +41,9 @@ from urllib.parse import parse_qsl, quote, urlencode, urlsplit, urlunsplit
 import yaml
 from pydantic import SecretStr, ValidationError
 
+from assistantx.core.errors import JournalError
 from assistantx.core.settings import Settings
+from assistantx.store.journal import Journal
 
 OFFICE_ID = re.compile(r"^[a-z][a-z0-9-]{0,39}$")
 OFFICES_DIR = "offices"  # DATA_DIR/offices/ID: each office but the home one
@@ -169,3 +171,23 @@ def scoped_url(url: str, schema: str) -> str:
     query = [(k, v) for k, v in parse_qsl(parts.query) if k != "options"]
     query.append(("options", f"-c search_path={schema},public"))
     return urlunsplit(parts._replace(query=urlencode(query, quote_via=quote)))
+
+
+OFFICE_STATE = "deployment_office"  # the journal's state row naming the office it belongs to
+
+
+def claim_journal(journal: Journal, office_id: str, where: str) -> None:
+    """Mark ``journal`` as ``office_id``'s, or refuse it when it is another office's.
+
+    The home office's journal is the data folder's (the database's ``public`` schema) by its
+    place in the file, not by its id: listing another office first would hand it the home
+    office's instructions, people's answers and memory. A journal of one office (no mark yet)
+    becomes the home office's on the first start with a deployment file."""
+    claim = journal.state(OFFICE_STATE)
+    if claim is None:
+        journal.put_state(OFFICE_STATE, {"id": office_id})
+    elif claim.get("id") != office_id:
+        raise JournalError(
+            f"{where}: this journal belongs to office {claim.get('id')!r}, not {office_id!r}:"
+            " keep the office that was listed first in the deployment file first"
+        )

@@ -173,6 +173,7 @@ class Offices:
         elif settings.operator_token is None and self.settings.operator_token is not None:
             settings = settings.model_copy(update={"operator_token": self.settings.operator_token})
         runtime = ServiceRuntime(settings, self.data_lock if spec.home else None)
+        runtime.office_id = office_id
         stack = AsyncExitStack()
         try:
             if lease is not None:
