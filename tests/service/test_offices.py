@@ -17,10 +17,10 @@ import httpx
 import pytest
 import yaml
 
+from assistantx.core.errors import JournalError
 from assistantx.core.office import DEFAULT_OFFICE
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
-from assistantx.core.errors import JournalError
 from assistantx.service.offices.deployment import (
     OFFICE_STATE,
     DeploymentError,
