@@ -16,9 +16,10 @@ import pytest
 import yaml
 
 from helpers.eventually import eventually_sync
+from service.inprocess import serving_runtime
 from service.server import OPERATOR, Server, free_port, serve
 
-pytestmark = [pytest.mark.postgres, pytest.mark.slow]
+pytestmark = pytest.mark.postgres
 
 TTL_S = 2.0
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
@@ -84,6 +85,21 @@ def replica_series(server: Server) -> dict[str, str]:
     return found
 
 
+async def test_one_office_on_replicas_lists_the_lease_holder(
+    tmp_path: Path, postgres_url: str
+) -> None:
+    """One office (no deployment file) under a lease: /v1/offices names the replica holding
+    it, as the lease does (its generated name, when none is configured)."""
+    async with serving_runtime(
+        tmp_path, database_url=postgres_url, lease_ttl_s=TTL_S, robot="sim"
+    ) as (api, runtime):
+        assert runtime.office_lease is not None and runtime.office_lease.lease is not None
+        [office] = (await api.get("/v1/offices")).json()
+        assert office["replica"] == runtime.office_lease.lease.holder
+        assert (office["id"], office["here"], office["status"]) == ("default", True, "ready")
+
+
+@pytest.mark.slow
 def test_offices_spread_over_replicas_and_move_when_one_leaves(
     tmp_path: Path, postgres_url: str
 ) -> None:

@@ -285,20 +285,27 @@ class Offices:
         """The replica running ``office_id``: this one, another (from the shared leases), or
         None."""
         slot = self.slots[office_id]
-        if slot.runtime is not None and (not self.several or slot.stack is not None):
+        if not self.several and slot.runtime is not None:
+            lease = slot.runtime.office_lease  # replicas of one office: the lease's holder
+            return lease.holder if lease is not None else self.replica
+        if slot.stack is not None:
             return self.replica
         if self.balancer is not None:
             return self.balancer.holders().get(office_id)
         return None
 
+    def runs_here(self, office_id: str) -> bool:
+        """Whether this process runs ``office_id`` (ready or still starting)."""
+        slot = self.slots[office_id]
+        return slot.runtime is not None if not self.several else slot.stack is not None
+
     def status(self, office_id: str) -> str:
         slot = self.slots[office_id]
         if slot.runtime is not None and slot.runtime.ready:
             return READY
-        holder = self.holder(office_id)
-        if holder is None:
-            return UNASSIGNED
-        return STARTING if holder == self.replica else ELSEWHERE
+        if self.runs_here(office_id):
+            return STARTING
+        return UNASSIGNED if self.holder(office_id) is None else ELSEWHERE
 
     def listing(self, slots: list[OfficeSlot]) -> list[dict[str, Any]]:
         return [
@@ -306,7 +313,7 @@ class Offices:
                 "id": slot.spec.id,
                 "name": slot.display,
                 "replica": self.holder(slot.spec.id),
-                "here": self.holder(slot.spec.id) == self.replica,
+                "here": self.runs_here(slot.spec.id),
                 "status": self.status(slot.spec.id),
             }
             for slot in slots
