@@ -75,6 +75,7 @@ class Balancer:
         self._holders: dict[str, str] = {}
         self.replicas: list[str] = [replica]
         self._loop: asyncio.Task[None] | None = None
+        self._beating: asyncio.Task[None] | None = None
         self._tasks: set[asyncio.Task[None]] = set()
         self._failing = False
 
@@ -82,17 +83,20 @@ class Balancer:
         await self.balance()
         if self._loop is None:
             self._loop = asyncio.create_task(self._run(), name="office-balancer")
+            # Its own task: a round that starts an office may outlast a heartbeat's term.
+            self._beating = asyncio.create_task(self._beat(), name="replica-heartbeat")
 
     async def stop(self) -> None:
         """Stop taking offices and end the heartbeat (the offices themselves are stopped by
         their owner, releasing their leases)."""
-        if self._loop is not None:
-            self._loop.cancel()
-            try:
-                await self._loop
-            except asyncio.CancelledError:
-                pass
-            self._loop = None
+        for task in (self._loop, self._beating):
+            if task is not None:
+                task.cancel()
+                try:
+                    await task
+                except asyncio.CancelledError:
+                    pass
+        self._loop = self._beating = None
         for task in list(self._tasks):
             await task
         heartbeat, self._heartbeat = self._heartbeat, None
@@ -125,12 +129,23 @@ class Balancer:
                 logger.warning("replica %s: balancing offices again", self.replica)
                 self._failing = False
 
-    async def balance(self) -> None:
-        """One round: heartbeat, count the live replicas, hand back a surplus office or take
-        free ones up to the fair share."""
+    async def _beat(self) -> None:
+        while True:
+            await asyncio.sleep(self.ttl_s / 3)
+            try:
+                await self._heartbeat_now()
+            except Exception:  # the database unreachable: the balancing round logs it
+                continue
+
+    async def _heartbeat_now(self) -> None:
         self._heartbeat = await asyncio.to_thread(
             self.leases.acquire, REPLICA_PREFIX + self.replica, self.replica, self.ttl_s
         )
+
+    async def balance(self) -> None:
+        """One round: heartbeat, count the live replicas, hand back a surplus office or take
+        free ones up to the fair share."""
+        await self._heartbeat_now()
         rows = await asyncio.to_thread(self.leases.holders)
         now = self._clock()
         live = {

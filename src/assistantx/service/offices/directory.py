@@ -110,14 +110,15 @@ class Offices:
         await asyncio.to_thread(self._build_authorities)
         url = self.settings.database
         if url is None:  # one process runs every office
+            stack.push_async_callback(self._stop_all)  # also those started before one failed
             for office_id in self.slots:
                 await self._start_office(office_id, None)
-            stack.push_async_callback(self._stop_all)
             self.started = True
             return
         await asyncio.to_thread(_create_schemas, url, self.specs)
         self.leases = Leases.open(self.settings.data_dir / JOURNAL_FILE, database_url=url)
-        stack.callback(self.leases.close)
+        stack.callback(self.leases.close)  # last: the offices release their leases through it
+        stack.push_async_callback(self._stop_all)
         self.balancer = Balancer(
             self.leases,
             list(self.slots),
@@ -127,9 +128,8 @@ class Offices:
             stop_office=self._stop_office,
             held=lambda: {o for o, slot in self.slots.items() if slot.stack is not None},
         )
-        stack.push_async_callback(self._stop_all)  # after the balancer stopped taking offices
+        stack.push_async_callback(self.balancer.stop)  # first: no office is taken meanwhile
         await self.balancer.start()
-        stack.push_async_callback(self.balancer.stop)
         self.started = True
 
     def _not_started(self) -> None:
