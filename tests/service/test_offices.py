@@ -115,6 +115,23 @@ async def test_each_office_has_its_own_people_instructions_and_journal(tmp_path:
         r = await api.get(f"/v1/offices/hq/instructions/{at_harbour}", headers=bearer(OPERATOR))
         assert r.status_code == 404
 
+        # /metrics says which replica runs each office; each office has its own series.
+        text = (await api.get("/metrics", headers=bearer(OPERATOR))).text
+        replica = listed["hq"]["replica"]
+        for office in ("hq", "harbour"):
+            assert f'assistantx_office_replica{{office="{office}",replica="{replica}"}} 1.0' in text
+            assert f'assistantx_office_ready{{office="{office}"}} 1.0' in text
+        harbour_metrics = await api.get("/v1/offices/harbour/metrics", headers=bearer(OPERATOR))
+        assert harbour_metrics.status_code == 200
+        assert "assistantx_http_requests_total" in harbour_metrics.text
+        ready = (await api.get("/readyz")).json()
+        assert ready == {
+            "status": "ready",
+            "replica": replica,
+            "offices": {"hq": "ready", "harbour": "ready"},
+        }
+        assert (await api.get("/v1/offices/harbour/readyz")).json()["status"] == "ready"
+
     # The rows are apart: the home office's journal is where one office keeps it, the
     # other's in its own folder.
     def journaled(path: Path) -> set[str]:
