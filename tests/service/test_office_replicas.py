@@ -5,6 +5,7 @@ either replica say which replica runs which office."""
 
 from __future__ import annotations
 
+import asyncio
 import time
 from collections import Counter
 from pathlib import Path
@@ -15,7 +16,10 @@ import psycopg
 import pytest
 import yaml
 
-from helpers.eventually import eventually_sync
+from assistantx.core.settings import Settings
+from assistantx.service.app import create_app
+from helpers.eventually import eventually, eventually_sync
+from helpers.servers import serving_app
 from service.inprocess import serving_runtime
 from service.server import OPERATOR, Server, free_port, serve
 
@@ -145,3 +149,45 @@ def test_offices_spread_over_replicas_and_move_when_one_leaves(
         a.stop()
         if b is not None:
             b.stop()
+
+
+async def test_a_replica_that_loses_one_office_stops_that_office_only(
+    tmp_path: Path, postgres_url: str
+) -> None:
+    """Another replica takes Harbour Street's lease (as after this one paused past it): this
+    replica stops Harbour Street, keeps running the others, and does not take it back while
+    the other's lease holds."""
+    settings = Settings(
+        data_dir=tmp_path / "data",
+        offices=deployment(tmp_path),
+        database_url=postgres_url,
+        lease_ttl_s=TTL_S,
+        replica_id="replica-a",
+        operator_token=OPERATOR,
+        robot="sim",
+        speedup=50,
+    )
+    async with serving_app(create_app(settings), headers=HEADERS) as api:
+
+        async def view() -> dict[str, tuple[str | None, str]]:
+            offices = (await api.get("/v1/offices")).json()
+            return {o["id"]: (o["replica"], o["status"]) for o in offices}
+
+        everywhere = {office: ("replica-a", "ready") for office in OFFICES}
+        await eventually(view, until=lambda v: v == everywhere, what="A to run every office")
+        with psycopg.connect(postgres_url, autocommit=True) as db:
+            db.execute(
+                "UPDATE leases SET holder='replica-b', token=token+1, expires_at=%s"
+                " WHERE office='harbour'",
+                (time.time() + 600,),
+            )
+        moved = {**everywhere, "harbour": ("replica-b", "elsewhere")}
+        await eventually(view, until=lambda v: v == moved, what="A to stop Harbour Street")
+        r = await api.get("/v1/offices/harbour/instructions")
+        assert r.status_code == 503
+        assert r.json()["message"] == "the office Harbour Street is run by replica replica-b"
+        assert (await api.get("/v1/offices/annex/instructions")).status_code == 200
+        # A negative, so no event to wait on: three rounds pass and A leaves the office alone.
+        for _ in range(3):
+            await asyncio.sleep(TTL_S / 3)
+        assert await view() == moved
