@@ -240,3 +240,19 @@ def test_a_journal_of_one_office_is_refused_to_another(tmp_path: Path) -> None:
         "data/journal.sqlite3: this journal belongs to office 'hq', not 'harbour': keep the"
         " office that was listed first in the deployment file first"
     )
+
+
+async def test_with_no_operator_token_one_is_generated_for_every_office(tmp_path: Path) -> None:
+    settings = Settings(
+        data_dir=tmp_path / "data", offices=write_deployment(tmp_path), speedup=50, robot="sim"
+    )
+    app = create_app(settings)
+    async with serving_app(app) as api:
+        generated = app.state.offices.generated_token
+        assert generated == (tmp_path / "data" / "operator-token").read_text().strip()
+        r = await api.get("/v1/offices", headers=bearer(generated))
+        assert [o["id"] for o in r.json()] == ["hq", "harbour"]
+        r = await api.get("/v1/offices/harbour/instructions", headers=bearer(generated))
+        assert r.status_code == 200
+    # No office generated a token of its own: one token, the deployment's.
+    assert not (tmp_path / "data" / "offices" / "harbour" / "operator-token").exists()

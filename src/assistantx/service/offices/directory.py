@@ -91,7 +91,8 @@ class Offices:
         self.leases: Leases | None = None
         self.balancer: Balancer | None = None
         self.started = False
-        self.generated_token: str | None = None
+        self.generated_token: str | None = None  # the deployment operator's, when generated
+        self._deployment_operator = ""
         if not self.several:  # today's service: its runtime exists before it starts
             runtime = ServiceRuntime(settings, data_lock)
             runtime.on_lease_lost = on_lease_lost  # replicas: another took the office over
@@ -144,6 +145,7 @@ class Offices:
         )
         if base.operator_token is None:
             self.generated_token = deployment_operator
+        self._deployment_operator = deployment_operator
         for slot in self.slots.values():
             s = slot.spec.settings
             office = load_office(s.office)
@@ -163,15 +165,11 @@ class Offices:
         a failure is logged and leaves the office to the next try (or another replica)."""
         slot = self.slots[office_id]
         spec = slot.spec
-        settings = spec.settings
-        if self.settings.operator_token is None and self.generated_token is not None:
-            # The runtime's own authority is not asked (``authenticate`` is); given the
-            # deployment operator's token, it generates none of its own.
-            settings = settings.model_copy(
-                update={"operator_token": SecretStr(self.generated_token)}
-            )
-        elif settings.operator_token is None and self.settings.operator_token is not None:
-            settings = settings.model_copy(update={"operator_token": self.settings.operator_token})
+        # The runtime's own authority is not asked (``authenticate`` is); given the
+        # deployment operator's token, it generates none of its own.
+        settings = spec.settings.model_copy(
+            update={"operator_token": SecretStr(self._deployment_operator)}
+        )
         runtime = ServiceRuntime(settings, self.data_lock if spec.home else None)
         runtime.office_id = office_id
         stack = AsyncExitStack()
