@@ -12,12 +12,26 @@ import gc
 import signal
 import socket
 import sys
+from typing import TYPE_CHECKING
 
 from assistantx.core.settings import Settings
 
+if TYPE_CHECKING:
+    from assistantx.service.offices.directory import Offices
+
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    p = sub.add_parser("serve", help="run the assistant as a service (REST API + dashboard)")
+    p = sub.add_parser(
+        "serve",
+        help="run the assistant as a service (REST API + dashboard)",
+        description=(
+            "Serve one office (ASSISTANTX_OFFICE) or several: ASSISTANTX_OFFICES=deployment.yaml"
+            " lists them (id, name, and each office's own settings: office, map, map_anchors,"
+            " lock_port, matrix_config, tokens ...); each is served at /v1/offices/ID/..., the"
+            " first also at today's paths. With ASSISTANTX_DATABASE_URL several serve"
+            " processes share the offices, each under its own lease. See README, Configuration."
+        ),
+    )
     p.add_argument("--host", default=None, help="bind address (default: ASSISTANTX_HOST)")
     p.add_argument("--port", type=int, default=None, help="port (default: ASSISTANTX_PORT)")
     p.set_defaults(func=_serve)
@@ -27,22 +41,30 @@ def _serve(args: argparse.Namespace) -> int:
     from assistantx.nav import disk_cache
     from assistantx.service.app import create_app
     from assistantx.service.datalock import DataDirBusyError, DataDirLock
-    from assistantx.service.runtime import MAP_CACHE_DIR, ServiceRuntime
+    from assistantx.service.offices.deployment import DeploymentError, load_deployment
+    from assistantx.service.runtime import MAP_CACHE_DIR
     from assistantx.service.server import service_server
 
     settings = Settings()
     # The map's derived arrays are kept by content hash from the first use on, the check of
-    # the robot's files below included (it builds the costmap and planner the service uses).
+    # the robot's files below included (it builds the costmap and planner the service uses);
+    # keyed by content, one folder serves every office of a deployment.
     disk_cache.use_directory(settings.data_dir / MAP_CACHE_DIR)
-    problem = _robot_files_problem(settings)
-    if problem is not None:
-        print(f"error: {problem}")
+    try:
+        offices = load_deployment(settings)
+    except DeploymentError as exc:
+        print(f"assistantx serve: {exc}", file=sys.stderr)
         return 2
+    for office in offices:  # every office's map and anchors, before anything binds
+        problem = _robot_files_problem(office.settings)
+        if problem is not None:
+            print(f"error: {problem}")
+            return 2
     host = args.host or settings.host
     port = args.port if args.port is not None else settings.port
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
 
-    def announce(runtime: ServiceRuntime) -> None:
+    def announce(offices: Offices) -> None:
         # What start-up built lives as long as the process: out of the collector's sight, a
         # full collection no longer walks it (shorter pauses of the event loop), and neither
         # do the collections of the interpreter's exit, which took about a CPU-second of
@@ -50,11 +72,16 @@ def _serve(args: argparse.Namespace) -> int:
         gc.freeze()
         print(f"AssistantX is serving on http://{shown}:{port}/", flush=True)
         print(f"  API docs: http://{shown}:{port}/docs", flush=True)
-        if runtime.auth.generated_token:
+        if offices.several:
+            names = ", ".join(f"{o} ({offices.status(o)})" for o in offices.slots)
+            print(f"  offices: {names}; replica {offices.replica}", flush=True)
+            if offices.generated_token:
+                print(f"  operator token: {offices.generated_token}", flush=True)
+            return
+        auth = offices.runtime(None).auth
+        if auth.generated_token:
             print(
-                f"  operator token (also in {runtime.auth.token_file}): "
-                f"{runtime.auth.generated_token}",
-                flush=True,
+                f"  operator token (also in {auth.token_file}): {auth.generated_token}", flush=True
             )
 
     try:
@@ -69,7 +96,8 @@ def _serve(args: argparse.Namespace) -> int:
         print(f"assistantx serve: cannot listen on {host}:{port}: {exc.strerror}", file=sys.stderr)
         return 1
     # A replica that lost its office's lease stops (its writes are refused anyway); the
-    # supervisor that restarts it makes it a standby.
+    # supervisor that restarts it makes it a standby. With several offices only the lost
+    # office stops; the replica takes its share again.
     app = create_app(
         settings,
         on_ready=announce,

@@ -28,6 +28,10 @@ class Settings(BaseSettings):
     # -- the office and the data directory ---------------------------------------------
     office: Path = Field(default=DEFAULT_OFFICE, description="office YAML file")
     data_dir: Path = Field(default=Path("data"), description="journal, snapshots, keys")
+    offices: Path | None = Field(
+        default=None,
+        description="deployment YAML naming several offices (default: one, ASSISTANTX_OFFICE)",
+    )
     database_url: SecretStr | None = Field(
         default=None,
         description="postgresql://user:password@host:port/db: the journal, surveys and Matrix"

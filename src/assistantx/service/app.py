@@ -36,7 +36,9 @@ from assistantx.service.body_limit import BodyLimit, PathLimit
 from assistantx.service.client_gone import ClientGone
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.errors import install_error_handlers
-from assistantx.service.runtime import ServiceRuntime
+from assistantx.service.offices import routes as office_routes
+from assistantx.service.offices.directory import Offices
+from assistantx.service.offices.routing import OfficeRouting, office_of
 from assistantx.service.security_headers import SecurityHeaders
 
 logger = logging.getLogger(__name__)
@@ -52,16 +54,16 @@ PATH_BODY_LIMITS = (PathLimit(PUSH_PATH_PREFIX, MAX_PUSH_BODY_BYTES, push_too_la
 def create_app(
     settings: Settings | None = None,
     *,
-    on_ready: Callable[[ServiceRuntime], None] | None = None,
+    on_ready: Callable[[Offices], None] | None = None,
     data_lock: DataDirLock | None = None,
     on_lease_lost: Callable[[], None] | None = None,
 ) -> FastAPI:
     """The app; ``on_ready`` is called once the assistant runs (the CLI prints where to go);
-    ``data_lock``: the data folder's lock, when the caller holds it already."""
+    ``data_lock``: the data folder's lock, when the caller holds it already;
+    ``on_lease_lost``: one office, replicas: another replica took the office over."""
     settings = settings or Settings()
-    runtime = ServiceRuntime(settings, data_lock)
+    offices = Offices(settings, data_lock, on_lease_lost)  # DeploymentError: a bad file
     pushes: list[BaseRoute] = []
-    runtime.on_lease_lost = on_lease_lost  # replicas: another took the office over
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
@@ -69,12 +71,17 @@ def create_app(
             # Unmounted once everything stopped: a push during shutdown still gets the
             # stopped messenger's 500 and is retried by the homeserver.
             stack.callback(_unmount, app, pushes)
-            await runtime.start(stack)
-            if runtime.matrix is not None:  # built by start: the homeserver's pushes
-                pushes.extend(_mount_first(app, runtime.matrix.push_router))
-            logger.info("assistant ready (%s reasoner)", runtime.assistant.parts.reasoner_name)
+            await offices.start(stack)
+            for runtime in offices.running():
+                if runtime.matrix is not None:  # built by start: the homeserver's pushes
+                    pushes.extend(_mount_first(app, runtime.matrix.push_router))
+            if offices.several:
+                logger.info("offices ready on replica %s", offices.replica)
+            else:
+                runtime = offices.runtime(None)
+                logger.info("assistant ready (%s reasoner)", runtime.assistant.parts.reasoner_name)
             if on_ready is not None:
-                on_ready(runtime)
+                on_ready(offices)
             yield
 
     app = FastAPI(
@@ -87,7 +94,9 @@ def create_app(
         docs_url=None,
         redoc_url=None,
     )
-    app.state.runtime = runtime
+    app.state.offices = offices
+    # One office: its runtime, as before (tests and tools reach it here); several: None.
+    app.state.runtime = None if offices.several else offices.slots[offices.home].runtime
     install_error_handlers(app)
 
     @app.middleware("http")
@@ -96,7 +105,8 @@ def create_app(
         response = await call_next(request)
         route = request.scope.get("route")
         path = getattr(route, "path", "unmatched")
-        if runtime.ready:
+        runtime = offices.serving(office_of(request.scope))
+        if runtime is not None:
             seconds = time.perf_counter() - started
             runtime.metrics.request_served(request.method, path, response.status_code, seconds)
         return response
@@ -111,6 +121,7 @@ def create_app(
         devices,
         metrics,
         dashboard,
+        office_routes,
     ):
         app.include_router(module.router)
     app.include_router(reports.router)
@@ -123,6 +134,7 @@ def create_app(
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
     app.add_middleware(ClientGone)  # a client leaving a stream is no traceback
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
+    app.add_middleware(OfficeRouting)  # /v1/offices/{office}/... reaches the routes
     app.add_middleware(SecurityHeaders)  # outermost: also on the body limit's 413
     return app
 

@@ -134,6 +134,12 @@ def build_authority(
     return AuthSetup(authority, generated_token=token, token_file=path)
 
 
+def generated_operator_token(data_dir: Path) -> str:
+    """The operator token generated once into ``data_dir`` (the one ``build_authority`` makes
+    when no token is configured)."""
+    return _read_or_create_token(data_dir / TOKEN_FILE)
+
+
 def _read_or_create_token(path: Path) -> str:
     path.parent.mkdir(parents=True, exist_ok=True)
     if path.exists():

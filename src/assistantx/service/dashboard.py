@@ -240,7 +240,11 @@ router = APIRouter(prefix="/v1", tags=["dashboard"])
 
 def _office_map(request: Request, runtime: ServiceRuntime) -> OfficeMap:
     """Loaded on first use, so a missing map file costs the map view, not the start-up."""
-    cached: OfficeMap | None = getattr(request.app.state, "dashboard_map", None)
+    maps: dict[str, OfficeMap] | None = getattr(request.app.state, "dashboard_maps", None)
+    if maps is None:
+        maps = request.app.state.dashboard_maps = {}
+    key = str(runtime.settings.data_dir)  # one map per office
+    cached = maps.get(key)
     if cached is None:
         try:
             cached = OfficeMap.from_files(
@@ -249,7 +253,7 @@ def _office_map(request: Request, runtime: ServiceRuntime) -> OfficeMap:
         except MapError as exc:
             logger.warning("dashboard map unavailable: %s", exc)
             raise UnavailableError(f"the office map cannot be loaded: {exc}") from exc
-        request.app.state.dashboard_map = cached
+        maps[key] = cached
     return cached
 
 

@@ -8,22 +8,27 @@ from fastapi import Depends, Request
 
 from assistantx.service.auth import Principal
 from assistantx.service.errors import UnavailableError
+from assistantx.service.offices.directory import Offices
+from assistantx.service.offices.routing import office_of
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.store.journal import InstructionRecord
 
 
 def get_runtime(request: Request) -> ServiceRuntime:
-    runtime: ServiceRuntime | None = getattr(request.app.state, "runtime", None)
-    if runtime is None or not runtime.ready:
+    """The runtime of the office the request addresses (``/v1/offices/{office}/...``; else
+    the home office)."""
+    offices: Offices | None = getattr(request.app.state, "offices", None)
+    if offices is None:
         raise UnavailableError("the assistant is starting or stopping; try again shortly")
-    return runtime
+    return offices.runtime(office_of(request.scope))
 
 
 Runtime = Annotated[ServiceRuntime, Depends(get_runtime)]
 
 
 def get_principal(request: Request, runtime: Runtime) -> Principal:
-    return runtime.auth.authority.authenticate(request.headers.get("authorization"))
+    offices: Offices = request.app.state.offices
+    return offices.authenticate(office_of(request.scope), request.headers.get("authorization"))
 
 
 Caller = Annotated[Principal, Depends(get_principal)]

@@ -7,6 +7,9 @@ from typing import Any
 from fastapi import APIRouter, Request
 from fastapi.responses import JSONResponse
 
+from assistantx.service.offices.directory import Offices
+from assistantx.service.offices.routing import office_of
+
 router = APIRouter(tags=["health"])
 
 
@@ -17,8 +20,12 @@ async def healthz() -> dict[str, str]:
 
 @router.get("/readyz", response_model=None)
 async def readyz(request: Request) -> JSONResponse | dict[str, Any]:
-    runtime = getattr(request.app.state, "runtime", None)
-    if runtime is None or not runtime.ready:
+    offices: Offices | None = getattr(request.app.state, "offices", None)
+    office = office_of(request.scope)
+    if offices is not None and offices.several and office is None:
+        return _deployment_ready(offices)
+    runtime = offices.serving(office) if offices is not None else None
+    if runtime is None:
         return JSONResponse({"status": "starting"}, status_code=503)
     ready: dict[str, Any] = {
         "status": "ready",
@@ -37,3 +44,15 @@ async def readyz(request: Request) -> JSONResponse | dict[str, Any]:
             "lease_expires_at": lease.expires_at,
         }
     return ready
+
+
+def _deployment_ready(offices: Offices) -> JSONResponse | dict[str, Any]:
+    """Several offices: this replica answers once it started (on PostgreSQL: once it took
+    its first share of the offices); each office's state is in ``offices``."""
+    if not offices.started:
+        return JSONResponse({"status": "starting"}, status_code=503)
+    return {
+        "status": "ready",
+        "replica": offices.replica,
+        "offices": {office: offices.status(office) for office in offices.slots},
+    }

@@ -56,6 +56,7 @@ from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.office_lease import OfficeLease
+from assistantx.service.offices.deployment import claim_journal
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.robots import RobotGauges, robot_states
@@ -66,6 +67,7 @@ from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
 from assistantx.store.leases import Leases
+from assistantx.store.postgres_store import redact
 
 if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
     from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup
@@ -109,6 +111,7 @@ class ServiceRuntime:
         self.ready = False
         self.resumed: list[str] = []
         self.office_lease: OfficeLease | None = None  # with a database URL: the office's lease
+        self.office_id: str | None = None  # one of several offices: its id in the deployment
         self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
         # here (create_app fails fast on a bad one); it is built in start, with the rest.
@@ -130,12 +133,17 @@ class ServiceRuntime:
         if self.data_lock is None or not self.data_lock.held:
             self.data_lock = DataDirLock(data_dir).acquire()  # DataDirBusyError: another serves
             stack.callback(self.data_lock.release)
-        if s.database is not None:  # replicas share the database: run only under the lease
+        if s.database is not None and self.office_lease is None:
+            # Replicas share the database: run only under the lease (several offices: the
+            # caller took this office's lease and set ``office_lease`` already).
             await self._hold_office(stack, data_dir, s.database)
         self.journal = Journal.open(data_dir / JOURNAL_FILE, database_url=s.database)
         stack.callback(self.journal.close)  # before the lease's release: its last writes land
         if self.office_lease is not None:
             self.office_lease.hold(self.journal)
+        if self.office_id is not None:  # one of several offices: this journal must be its own
+            where = redact(s.database) if s.database else str(data_dir / JOURNAL_FILE)
+            claim_journal(self.journal, self.office_id, where)
         # The map's distance transforms, kept by content hash: a second start reads them.
         disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
         stack.callback(disk_cache.use_directory, None)

@@ -13,18 +13,18 @@ import socket
 import uvicorn
 from fastapi import FastAPI
 
-from assistantx.service.runtime import ServiceRuntime
+from assistantx.service.offices.directory import Offices
 
 GRACEFUL_SHUTDOWN_S = 2  # seconds (uvicorn takes an int)
 
 
 class ServiceServer(uvicorn.Server):
-    def __init__(self, config: uvicorn.Config, runtime: ServiceRuntime) -> None:
+    def __init__(self, config: uvicorn.Config, offices: Offices) -> None:
         super().__init__(config)
-        self.runtime = runtime
+        self.offices = offices
 
     async def shutdown(self, sockets: list[socket.socket] | None = None) -> None:
-        self.runtime.hub.close()  # the live streams end before uvicorn waits for them
+        self.offices.close_streams()  # the live streams end before uvicorn waits for them
         await super().shutdown(sockets)
 
 
@@ -38,5 +38,5 @@ def service_server(app: FastAPI, host: str, port: int, *, log_level: str = "info
         access_log=False,
         timeout_graceful_shutdown=GRACEFUL_SHUTDOWN_S,
     )
-    runtime: ServiceRuntime = app.state.runtime
-    return ServiceServer(config, runtime)
+    offices: Offices = app.state.offices
+    return ServiceServer(config, offices)

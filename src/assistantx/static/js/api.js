@@ -1,6 +1,7 @@
 // The REST API with the bearer token kept in localStorage.
 
 const TOKEN_KEY = "assistantx.token";
+const OFFICE_KEY = "assistantx.office";
 
 export class ApiError extends Error {
   constructor(status, message) {
@@ -14,6 +15,23 @@ export const token = {
   set: (value) => localStorage.setItem(TOKEN_KEY, value.trim()),
   clear: () => localStorage.removeItem(TOKEN_KEY),
 };
+
+// The office the page shows, in a deployment of several (none: the single office's own paths).
+export const office = {
+  get: () => localStorage.getItem(OFFICE_KEY) ?? "",
+  set: (value) => localStorage.setItem(OFFICE_KEY, value),
+  clear: () => localStorage.removeItem(OFFICE_KEY),
+};
+
+/** The chosen office's path for an API path: "/v1/robot" → "/v1/offices/ID/robot". */
+export function scoped(path) {
+  const id = office.get();
+  if (!id || path.startsWith("/v1/offices")) return path;
+  const prefix = `/v1/offices/${encodeURIComponent(id)}`;
+  if (path.startsWith("/v1/")) return `${prefix}/${path.slice(4)}`;
+  if (path === "/readyz" || path === "/metrics") return `${prefix}${path}`;
+  return path;
+}
 
 const unauthorizedListeners = [];
 
@@ -47,7 +65,7 @@ export async function api(path, { method = "GET", body, signal } = {}) {
   }
   let response;
   try {
-    response = await fetch(path, init);
+    response = await fetch(scoped(path), init);
   } catch (err) {
     if (err.name === "AbortError") throw err;
     throw new ApiError(0, "the server cannot be reached");

@@ -3,7 +3,7 @@
 // what has no trace event (a colleague typing, the operator elsewhere), and the robot is
 // polled quickly while an instruction runs so its marker moves smoothly.
 
-import { api, onUnauthorized, token } from "./api.js";
+import { api, office, onUnauthorized, scoped, token } from "./api.js";
 import { ChatsPanel } from "./chats.js";
 import { $, badge, clock, h, instructionState, keepFocus, replace } from "./dom.js";
 import { showEvaluation } from "./evaluation.js";
@@ -289,7 +289,7 @@ $("#submit-form").addEventListener("submit", async (event) => {
 async function showSpeedup() {
   const label = $("#speedup");
   try {
-    const ready = await (await fetch("/readyz")).json();
+    const ready = await (await fetch(scoped("/readyz"))).json();
     const speedup = Number(ready.speedup);
     label.hidden = !(speedup > 0 && speedup !== 1);
     label.textContent = `Simulated time runs ${speedup}× faster (robot travel, simulated replies, waits); clock times are real.`;
@@ -303,18 +303,55 @@ async function showSpeedup() {
 // takeover, so a watcher sees a failover happened even when the same page stays open.
 function showReplica(replica) {
   const label = $("#replica");
-  label.hidden = !replica;
-  if (replica) {
+  const shown = Boolean(replica) && typeof replica === "object";
+  label.hidden = !shown;
+  if (shown) {
     label.textContent = `Office ${replica.office} is run by replica ${replica.id} (lease term ${replica.fencing_token}).`;
   }
 }
 
+// Several offices in one deployment: the picker chooses the one the page shows (kept for the
+// next visit); every API path then goes to that office's /v1/offices/ID/... One office: no
+// picker, today's paths.
+async function pickOffice() {
+  const picker = $("#office-picker");
+  const select = $("#office-select");
+  const deployment = await (await fetch("/readyz")).json().catch(() => ({}));
+  if (!deployment.offices) {
+    office.clear();
+    picker.hidden = true;
+    return;
+  }
+  const offices = await api("/v1/offices");
+  const chosen = offices.find((o) => o.id === office.get()) ?? offices[0];
+  if (chosen) office.set(chosen.id);
+  replace(
+    select,
+    ...offices.map((o) => {
+      const where = o.status === "ready" || o.here ? "" : o.replica ? ` (on ${o.replica})` : " (not running)";
+      return h("option", { value: o.id, selected: o.id === chosen?.id }, `${o.name}${where}`);
+    }),
+  );
+  picker.hidden = offices.length < 2;
+}
+$("#office-select").addEventListener("change", (event) => {
+  office.set(event.target.value);
+  location.reload(); // every panel, stream and map starts over on the chosen office
+});
+
 async function start() {
-  showSpeedup();
   if (!token.get()) {
+    showSpeedup();
     askToken();
     return;
   }
+  try {
+    await pickOffice();
+  } catch (err) {
+    handleError(err);
+    if (err?.status === 401) return;
+  }
+  showSpeedup();
   try {
     state.me = await api("/v1/me");
     await refreshMemory();

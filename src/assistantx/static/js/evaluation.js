@@ -1,7 +1,7 @@
 // The evaluation tab: the newest run's summary table (from its summary.md, whose tables and
 // headings are rendered here without any HTML from the file) and its charts.
 
-import { api, authHeaders } from "./api.js";
+import { api, authHeaders, scoped } from "./api.js";
 import { h, replace } from "./dom.js";
 
 function cells(line) {
@@ -55,7 +55,7 @@ function caption(file) {
 }
 
 async function chart(url) {
-  const response = await fetch(url, { headers: authHeaders() });
+  const response = await fetch(scoped(url), { headers: authHeaders() });
   if (!response.ok) throw new Error(`HTTP ${response.status}`);
   return URL.createObjectURL(await response.blob());
 }

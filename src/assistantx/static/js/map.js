@@ -4,7 +4,7 @@
 //   px = (x - origin_x) / resolution,   py = height - (y - origin_y) / resolution
 // since the PNG's top row is the map's last row.
 
-import { authHeaders } from "./api.js";
+import { authHeaders, scoped } from "./api.js";
 
 const COLOURS = {
   robot: "#6a1b9a",
@@ -49,10 +49,10 @@ export class MapView {
 
   async load() {
     const headers = authHeaders();
-    const infoResponse = await fetch("/v1/map", { headers });
+    const infoResponse = await fetch(scoped("/v1/map"), { headers });
     if (!infoResponse.ok) throw new Error(`map metadata: HTTP ${infoResponse.status}`);
     const info = await infoResponse.json();
-    const imageResponse = await fetch(info.image, { headers });
+    const imageResponse = await fetch(scoped(info.image), { headers });
     if (!imageResponse.ok) throw new Error(`map image: HTTP ${imageResponse.status}`);
     this.image = await createImageBitmap(await imageResponse.blob());
     this.info = info;

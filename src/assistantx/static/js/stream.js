@@ -3,7 +3,7 @@
 // (the text/event-stream format of the HTML standard). Reconnects by itself with exponential
 // backoff and jitter, resuming with Last-Event-ID so no event is missed or repeated.
 
-import { authHeaders } from "./api.js";
+import { authHeaders, scoped } from "./api.js";
 
 const MIN_DELAY_MS = 500;
 const MAX_DELAY_MS = 15000;
@@ -74,7 +74,7 @@ export function follow(url, { onEvent, onState }) {
     });
     let problem;
     try {
-      const response = await fetch(url, { headers, signal: controller.signal, cache: "no-store" });
+      const response = await fetch(scoped(url), { headers, signal: controller.signal, cache: "no-store" });
       if (response.status === 401 || response.status === 403) {
         onState("unauthorized", { status: response.status });
         return; // waits for a new token: the app calls restart()

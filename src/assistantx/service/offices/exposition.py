@@ -1,0 +1,59 @@
+"""The deployment's series on ``/metrics``: which replica runs which office, and its state.
+
+``assistantx_office_replica{office, replica}`` is 1 for the replica running each office (as
+this replica last read the shared leases, or itself); ``assistantx_office_ready{office}`` is 1
+where the office's assistant runs on the replica answering; ``assistantx_replica_offices
+{replica}`` counts the offices each live replica runs, so a scrape of any one replica shows
+the spread. Only with several offices (one office keeps today's series alone).
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterator
+
+from prometheus_client import CollectorRegistry, generate_latest
+from prometheus_client.metrics_core import GaugeMetricFamily, Metric
+from prometheus_client.registry import Collector
+
+from assistantx.service.offices.directory import READY, Offices
+
+
+class _OfficeCollector(Collector):
+    def __init__(self, offices: Offices) -> None:
+        self._offices = offices
+
+    def collect(self) -> Iterator[Metric]:
+        offices = self._offices
+        holder = GaugeMetricFamily(
+            "assistantx_office_replica",
+            "1 for the replica that runs each office",
+            labels=["office", "replica"],
+        )
+        ready = GaugeMetricFamily(
+            "assistantx_office_ready",
+            "1 where the office's assistant runs on this replica",
+            labels=["office"],
+        )
+        per_replica: Counter[str] = Counter()
+        for office in offices.slots:
+            replica = offices.holder(office)
+            if replica is not None:
+                holder.add_metric([office, replica], 1.0)
+                per_replica[replica] += 1
+            ready.add_metric([office], 1.0 if offices.status(office) == READY else 0.0)
+        counts = GaugeMetricFamily(
+            "assistantx_replica_offices",
+            "offices each live replica runs",
+            labels=["replica"],
+        )
+        live = offices.balancer.replicas if offices.balancer is not None else [offices.replica]
+        for replica in sorted(set(live) | set(per_replica)):
+            counts.add_metric([replica], float(per_replica[replica]))
+        yield from (holder, ready, counts)
+
+
+def render_offices(offices: Offices) -> bytes:
+    registry = CollectorRegistry(auto_describe=False)
+    registry.register(_OfficeCollector(offices))
+    return generate_latest(registry)
