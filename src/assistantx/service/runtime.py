@@ -61,12 +61,13 @@ from assistantx.service.matrix_wiring import build_matrix, start_matrix
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
+from assistantx.service.shared_phones import SharedPhones
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
-from assistantx.store.leases import Leases
+from assistantx.store.leases import Leases, fence
 
 logger = logging.getLogger(__name__)
 
@@ -86,7 +87,7 @@ class ServiceRuntime:
     sim: SimOffice
     locker: Locker
     lock_keys: LockKeys
-    phones: colleagues.CodePhones
+    phones: colleagues.CodePhones | SharedPhones
     codebook: CodeBook
     ledger: CodeLedger
     messenger: BuiltinMessenger
@@ -147,7 +148,13 @@ class ServiceRuntime:
         # Timestamps are real time; the speed-up shortens simulated durations only.
         self.clock = WallClock(s.effective_speedup)
         self.lock_keys = lock_keys_for(s, data_dir)
-        self.phones = colleagues.CodePhones(data_dir / SIM_CODES_FILE)
+        if s.database is None:
+            self.phones = colleagues.CodePhones(data_dir / SIM_CODES_FILE)
+        else:  # replicas: the simulated people keep their codes across a takeover
+            self.phones = shared = SharedPhones.open(s.database)
+            stack.callback(shared.close)
+            if self.office_lease is not None and self.office_lease.lease is not None:
+                shared.fence = fence(self.office_lease.lease, postgres=True)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
         robot_place = world["robot"]["place"] if world else None
