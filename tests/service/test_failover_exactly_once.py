@@ -134,6 +134,18 @@ def test_every_message_code_and_robot_action_happens_once_across_three_kills(
         )
         assert record["status"] == "done", record
         done = results(postgres_url)
+        # The journal as it ended, for a failure to be read from (tmp_path is kept).
+        (tmp_path / "journal.txt").write_text(
+            "\n".join(
+                repr(row)
+                for sql in (
+                    "SELECT seq, kind, time, left(data, 600) FROM events ORDER BY seq",
+                    "SELECT seq, direction, chat_id, left(text, 60), time, question_id,"
+                    " in_reply_to, status FROM messages ORDER BY seq",
+                )
+                for row in rows(postgres_url, sql)
+            )
+        )
         seen = [
             (r["action"]["type"], r["ok"], r["observation"][:50]) for r in done
         ]  # what a failure shows
