@@ -173,6 +173,9 @@ def main() -> None:
             "ASSISTANTX_DATABASE_URL": url,
             "ASSISTANTX_LEASE_TTL_S": str(args.ttl),
             "ASSISTANTX_OPERATOR_TOKEN": OPERATOR,
+            # One lock key for all replicas, as the README asks: without it each made its own,
+            # and a code sent before a kill was refused by the next replica's lock.
+            "ASSISTANTX_LOCK_SHARED_KEY": "the failover bench's shared lock key",
             "ASSISTANTX_ROBOT": "sim",
             "ASSISTANTX_SPEEDUP": "50",
             "ASSISTANTX_SIM_REPLY_DELAY_S": "60",  # 300 makes the questions time out (unachievable)

@@ -1,8 +1,9 @@
-"""kill -9 of the replica that runs the office, three times in one hand-over: while a
-colleague is asked, while the robot drives, and between the deposit and the collect. Four
-real ``assistantx serve`` processes share the tests' PostgreSQL; each kill hands the office to
-a standby, which resumes the instruction from the shared journal. At the end the journal is the
-count: every question, message, code and robot action of the instruction happened once."""
+"""kill -9 of the replica that runs the office, four times in one hand-over: while a
+colleague is asked, while the robot drives, while the colleague walks to the robot with the
+code, and between the deposit and the collect. Five real ``assistantx serve`` processes share
+the tests' PostgreSQL; each kill hands the office to a standby, which resumes the instruction
+from the shared journal. At the end the journal is the count: every question, message, code
+and robot action of the instruction happened once."""
 
 from __future__ import annotations
 
@@ -24,7 +25,11 @@ from service.standby import Replica, start_standby
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
+NAMES = ("replica-a", "replica-b", "replica-c", "replica-d", "replica-e")  # four kills
 ENV = {
+    # One lock key for all: a code one replica issued opens the locker under the next one
+    # (without it each replica made its own key, and a code sent before a kill was refused).
+    "ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests",
     "ASSISTANTX_LEASE_TTL_S": "3",
     "ASSISTANTX_ROBOT": "sim",
     "ASSISTANTX_SPEEDUP": "10",  # a 12 m drive takes 2.4 s: time to see it and kill
@@ -61,6 +66,13 @@ def driving(url: str) -> bool:
     return moves > arrived
 
 
+def code_out_not_used(url: str) -> bool:
+    """Wang holds his deposit code and has not used it yet (he is walking to the robot)."""
+    done = results(url)
+    sent = any(r["action"]["type"] == "send_qr" and r["ok"] for r in done)
+    return sent and not deposited(url)
+
+
 def deposited(url: str) -> bool:
     return any(
         r["action"]["type"] == "wait_in_place" and r["action"]["person"] == "wang" and r["ok"]
@@ -89,7 +101,7 @@ def holder(replicas: list[Server | Replica]) -> Server | Replica:
     return found
 
 
-def test_every_message_code_and_robot_action_happens_once_across_three_kills(
+def test_every_message_code_and_robot_action_happens_once_across_four_kills(
     tmp_path: Path, postgres_url: str
 ) -> None:
     env = {**ENV, "ASSISTANTX_DATABASE_URL": postgres_url}
@@ -98,8 +110,9 @@ def test_every_message_code_and_robot_action_happens_once_across_three_kills(
     )
     replicas: list[Server | Replica] = [first_server]
     try:
-        for name in ("replica-b", "replica-c", "replica-d"):
+        for name in NAMES[1:]:
             replicas.append(start_standby(tmp_path, name, env))
+        by_name = dict(zip(NAMES, replicas, strict=True))
         first = holder(replicas)
         r = httpx.post(
             f"{first.url}/v1/instructions",
@@ -112,13 +125,20 @@ def test_every_message_code_and_robot_action_happens_once_across_three_kills(
         moments: list[tuple[str, Callable[[str], bool]]] = [
             ("a colleague is asked", asked_not_answered),
             ("the robot drives", driving),
+            ("Wang walks to the robot with his code", code_out_not_used),
             ("the stapler is in the locker", deposited),
         ]
         killed: list[str] = []
         for what, moment in moments:
             eventually_sync(lambda m=moment: m(postgres_url), what=what, timeout_s=90)
-            owner = holder([r for r in replicas if r.process.poll() is None])
+            # The lease names the owner at once (asking each replica's /readyz took seconds
+            # on a loaded machine, and the drive was over before the kill).
+            ((name,),) = rows(postgres_url, "SELECT holder FROM leases")
+            owner = by_name[name]
             owner.kill()
+            # Still true with the owner dead (the next one needs a lease's time to start
+            # writing): the kill landed while it held.
+            assert moment(postgres_url), f"the kill came after {what}"
             killed.append(what)
             stopped = time.monotonic()
             resumed = holder([r for r in replicas if r.process.poll() is None])

@@ -20,6 +20,7 @@ from service.standby import start_standby
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
+SHARED = {"ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests"}
 
 
 def rows(url: str, sql: str, args: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
@@ -30,7 +31,7 @@ def rows(url: str, sql: str, args: tuple[Any, ...] = ()) -> list[tuple[Any, ...]
 def test_a_paused_replica_that_lost_its_lease_cannot_write_when_it_wakes(
     tmp_path: Path, postgres_url: str
 ) -> None:
-    env = {"ASSISTANTX_DATABASE_URL": postgres_url, "ASSISTANTX_LEASE_TTL_S": "2"}
+    env = {"ASSISTANTX_DATABASE_URL": postgres_url, "ASSISTANTX_LEASE_TTL_S": "2", **SHARED}
     a = serve(tmp_path / "a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
     b = start_standby(tmp_path, "replica-b", env)
     try:
@@ -68,7 +69,7 @@ def test_a_clean_shutdown_hands_the_office_over_before_its_lease_runs_out(
 ) -> None:
     """A lease of 15 s: a standby that took it before it ran out got it from the release
     (standbys try every third of the lease)."""
-    env = {"ASSISTANTX_DATABASE_URL": postgres_url, "ASSISTANTX_LEASE_TTL_S": "15"}
+    env = {"ASSISTANTX_DATABASE_URL": postgres_url, "ASSISTANTX_LEASE_TTL_S": "15", **SHARED}
     a = serve(tmp_path / "a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
     b = start_standby(tmp_path, "replica-b", env)
     try:

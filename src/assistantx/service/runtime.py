@@ -278,6 +278,14 @@ class ServiceRuntime:
         self.ready = True
 
     async def _hold_office(self, stack: AsyncExitStack, data_dir: Path, url: str) -> None:
+        s = self.settings
+        if s.lock_shared_key is None and s.lock_key_file is None:
+            # Each replica would make its own key in its data folder: a code one replica
+            # sent before it died would not open the locker under the next one.
+            logger.warning(
+                "replicas need one lock key: set ASSISTANTX_LOCK_SHARED_KEY (or "
+                "ASSISTANTX_LOCK_KEY_FILE) alike on every replica"
+            )
         leases = Leases.open(data_dir / JOURNAL_FILE, database_url=url)
         stack.callback(leases.close)
         holder = (
