@@ -1,9 +1,10 @@
 """Matching inbound messages to the instruction and question that asked for them.
 
 Every question the assistant sends gets a question id. A reply is matched by, in order:
-the platform's explicit reply reference (``in_reply_to``), the most recent open question in
-the same chat (a DM with that person, or that group), else the most recent open instruction
-that wrote to that chat (a colleague told to meet the robot writes back "I can't come").
+the platform's explicit reply reference (``in_reply_to``), the most recent question still
+unanswered in the same chat (a DM with that person, or that group), else the open instruction
+that wrote to that chat last (its question there, or the instruction itself: a colleague sent
+a locker code writes back "I came, but I don't have it").
 Anything unmatched goes back to the caller (a new instruction, or chatter to ignore).
 Replies are kept per instruction, so two instructions asking the same person never see
 each other's answers. Once an instruction ends, its questions and the chats it wrote to are
