@@ -85,3 +85,40 @@ def test_a_group_question_is_answered_only_in_the_group_by_members() -> None:
     assert box.route(_msg("lin", group, "me", reply_to="q9")) is None  # not a member
     assert box.route(_msg("gao", group, "me", reply_to="q9")) == "ins-3"
     assert [m.sender for m in box.take("ins-3")] == ["gao"]
+
+
+def test_a_word_after_an_answered_question_follows_the_chats_last_writer() -> None:
+    """Three instructions asked Wang, he said yes to each; one then sent him a locker code.
+    "I came to the robot, but I don't have it" is about that code: it goes to the one that
+    wrote last, not to the newest question (seen: it went to another instruction, and the
+    one waiting at the locker sent Wang 29 codes, never told why he did not come)."""
+    box = ReplyBox()
+    wang = ChatRef(kind="dm", id="wang")
+    for n in (1, 2, 3):
+        box.ask(f"q{n}", f"ins-{n}", wang, n)
+        box.engage(f"ins-{n}", wang)
+    for n in (1, 2, 3):
+        assert box.route(_msg("wang", wang, f"yes {n}", reply_to=f"q{n}")) == f"ins-{n}"
+    box.engage("ins-2", wang)  # the code
+    assert box.route(_msg("wang", wang, "I came to the robot, but I don't have it")) == "ins-2"
+    assert [m.in_reply_to for m in box.take("ins-2")] == ["q2", "q2"]
+
+
+def test_an_unanswered_question_still_takes_the_next_word() -> None:
+    box = ReplyBox()
+    wang = ChatRef(kind="dm", id="wang")
+    box.ask("q1", "ins-1", wang, 1)
+    box.engage("ins-1", wang)
+    box.engage("ins-2", wang)  # a code sent while Wang's answer to ins-1 is pending
+    assert box.route(_msg("wang", wang, "yes, I have one")) == "ins-1"
+
+
+def test_writers_registered_again_after_a_restart_keep_the_order_they_wrote_in() -> None:
+    box = ReplyBox()
+    wang = ChatRef(kind="dm", id="wang")
+    box.ask("q1", "ins-1", wang, 1, answered=True)
+    box.engage("ins-1", wang, 5.0)  # resumed first, though it wrote earlier
+    box.engage("ins-2", wang, 3.0)
+    assert box.route(_msg("wang", wang, "I don't have it")) == "ins-1"
+    box.engage("ins-2", wang)  # a write after the restart comes after every journaled one
+    assert box.route(_msg("wang", wang, "still don't")) == "ins-2"

@@ -105,6 +105,7 @@ def test_a_killed_replica_is_replaced_by_the_standby_within_the_lease(
     env = {
         "ASSISTANTX_DATABASE_URL": postgres_url,
         "ASSISTANTX_LEASE_TTL_S": "2",
+        "ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests",
         "ASSISTANTX_ROBOT": "sim",
         "ASSISTANTX_SIM_HANDOVER_DELAY_S": "3600",
     }
@@ -160,6 +161,7 @@ def test_no_message_or_code_goes_out_twice_across_a_failover(
     env = {
         "ASSISTANTX_DATABASE_URL": postgres_url,
         "ASSISTANTX_LEASE_TTL_S": "2",
+        "ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests",
         "ASSISTANTX_ROBOT": "sim",
         "ASSISTANTX_SIM_REPLY_DELAY_S": "60",  # 1.2 s here; 300 times the question out
         "ASSISTANTX_SIM_HANDOVER_DELAY_S": "10",

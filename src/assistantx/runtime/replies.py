@@ -1,9 +1,10 @@
 """Matching inbound messages to the instruction and question that asked for them.
 
 Every question the assistant sends gets a question id. A reply is matched by, in order:
-the platform's explicit reply reference (``in_reply_to``), the most recent open question in
-the same chat (a DM with that person, or that group), else the most recent open instruction
-that wrote to that chat (a colleague told to meet the robot writes back "I can't come").
+the platform's explicit reply reference (``in_reply_to``), the most recent question still
+unanswered in the same chat (a DM with that person, or that group), else the open instruction
+that wrote to that chat last (its question there, or the instruction itself: a colleague sent
+a locker code writes back "I came, but I don't have it").
 Anything unmatched goes back to the caller (a new instruction, or chatter to ignore).
 Replies are kept per instruction, so two instructions asking the same person never see
 each other's answers. Once an instruction ends, its questions and the chats it wrote to are
@@ -21,7 +22,7 @@ from __future__ import annotations
 import asyncio
 from collections import defaultdict
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import TypeVar
 
 from assistantx.core.ports.messenger import ChatRef, InboundMessage
@@ -36,7 +37,7 @@ class OpenQuestion:
     instruction_id: str
     chat: ChatRef
     asked_at: float
-    answers: list[InboundMessage] = field(default_factory=list)
+    answered: bool = False  # an answer arrived (a later unreferenced word may be for another)
 
 
 # Whether a person belongs to a group (person id, group id); None: trust the chat alone.
@@ -51,21 +52,38 @@ class ReplyBox:
         self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
         self._inbox: dict[str, list[InboundMessage]] = defaultdict(list)
         self._engaged: dict[ChatRef, list[str]] = defaultdict(list)
+        self._written_at: dict[ChatRef, dict[str, float]] = defaultdict(dict)
         self._ended_questions: dict[str, str] = {}  # question id → its ended instruction
         self._ended_chats: dict[ChatRef, str] = {}  # chat → the ended instruction last in it
 
-    def ask(self, question_id: str, instruction_id: str, chat: ChatRef, time: float) -> None:
-        self._questions[question_id] = OpenQuestion(question_id, instruction_id, chat, time)
+    def ask(
+        self,
+        question_id: str,
+        instruction_id: str,
+        chat: ChatRef,
+        time: float,
+        *,
+        answered: bool = False,
+    ) -> None:
+        """Register an open question; ``answered``: asked and answered before a restart."""
+        self._questions[question_id] = OpenQuestion(
+            question_id, instruction_id, chat, time, answered=answered
+        )
         self._by_chat[chat].append(question_id)
         self._ended_chats.pop(chat, None)
 
-    def engage(self, instruction_id: str, chat: ChatRef) -> None:
-        """``instruction_id`` wrote to ``chat``: unprompted messages there may concern it."""
+    def engage(self, instruction_id: str, chat: ChatRef, at: float | None = None) -> None:
+        """``instruction_id`` wrote to ``chat`` (at ``at``; None: now, after every other
+        write): unprompted messages there may concern it. The chat's writers stay in the
+        order of their last writes, also when a restart registers them again out of order."""
         self._ended_chats.pop(chat, None)
         engaged = self._engaged[chat]
         if instruction_id in engaged:
             engaged.remove(instruction_id)
+        written = self._written_at[chat]
+        written[instruction_id] = at if at is not None else max(written.values(), default=0.0)
         engaged.append(instruction_id)
+        engaged.sort(key=lambda i: written.get(i, 0.0))
 
     def event(self, instruction_id: str) -> asyncio.Event:
         """Set whenever a message for ``instruction_id`` arrives."""
@@ -78,10 +96,7 @@ class ReplyBox:
             message = message.model_copy(update={"in_reply_to": None})
             question = None
         if question is None:
-            open_here = self._by_chat.get(message.chat, [])
-            question = self._questions[open_here[-1]] if open_here else None
-            if question is not None and not self.may_answer(question, message):
-                question = None
+            question = self._in_context(message)
         if question is None:
             engaged = self._engaged.get(message.chat)
             if not engaged:
@@ -90,10 +105,30 @@ class ReplyBox:
             return engaged[-1]
         if message.in_reply_to is None:
             message = message.model_copy(update={"in_reply_to": question.question_id})
-        question.answers.append(message)
+        question.answered = True
         self._inbox[question.instruction_id].append(message)
         self._events[question.instruction_id].set()
         return question.instruction_id
+
+    def _in_context(self, message: InboundMessage) -> OpenQuestion | None:
+        """The open question an unreferenced ``message`` answers; None: it is unprompted.
+
+        A question nobody has answered yet comes first (the newest). Once every question here
+        has its answer, the message follows the chat's last writer: the instruction that wrote
+        there last (its newest question, else none: an unprompted word to it), so "I came to
+        the robot, but I don't have it" reaches the instruction that just sent the code, not
+        another one whose question was answered earlier. With no writer known, the newest
+        question."""
+        here = [self._questions[q] for q in self._by_chat.get(message.chat, [])]
+        here = [q for q in here if self.may_answer(q, message)]
+        waiting = [q for q in here if not q.answered]
+        if waiting:
+            return waiting[-1]
+        engaged = self._engaged.get(message.chat)
+        if engaged:
+            mine = [q for q in here if q.instruction_id == engaged[-1]]
+            return mine[-1] if mine else None
+        return here[-1] if here else None
 
     def may_answer(self, question: OpenQuestion, message: InboundMessage) -> bool:
         """Whether ``message`` comes from the chat ``question`` was asked in."""
@@ -124,6 +159,7 @@ class ReplyBox:
             if not self._engaged.get(question.chat):
                 self._remember(self._ended_chats, question.chat, instruction_id)
         for chat, engaged in self._engaged.items():
+            self._written_at[chat].pop(instruction_id, None)
             if instruction_id in engaged:
                 engaged.remove(instruction_id)
                 if not engaged and not self._by_chat.get(chat):

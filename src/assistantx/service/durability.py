@@ -21,7 +21,7 @@ from typing import Any
 
 from assistantx.core.events import TraceEvent
 from assistantx.core.office import Office
-from assistantx.core.ports.messenger import InboundMessage
+from assistantx.core.ports.messenger import ChatRef, InboundMessage
 from assistantx.core.trace import ActionResult
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
@@ -204,10 +204,23 @@ class Durability:
                     self._replay(stm.instruction_id, f"s{cut.index}a{n}", result)
         replies = self.assistant.replies
         asked: dict[str, float] = {}
+        answered = {t.in_reply_to for t in stm.dialogue if t.direction == "in" and t.in_reply_to}
         for turn in stm.dialogue:
-            if turn.direction == "out" and turn.question_id:
-                replies.ask(turn.question_id, stm.instruction_id, turn.chat, turn.time)
+            if turn.direction != "out":
+                continue
+            if turn.question_id:
+                replies.ask(
+                    turn.question_id,
+                    stm.instruction_id,
+                    turn.chat,
+                    turn.time,
+                    answered=turn.question_id in answered,
+                )
                 asked[turn.question_id] = turn.time
+            if turn.chat != ChatRef(kind="dm", id=stm.requester):
+                # Where it wrote, in the order it wrote: a word there after the restart goes
+                # to the instruction that wrote last, as it did before (``ReplyBox.route``).
+                replies.engage(stm.instruction_id, turn.chat, turn.time)
         self._redeliver(stm, asked)
         return stm
 

@@ -60,13 +60,14 @@ from assistantx.service.offices.deployment import claim_journal
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.robots import RobotGauges, robot_states
+from assistantx.service.shared_phones import SharedPhones
 from assistantx.service.telemetry import ServiceMetrics
 from assistantx.sim.fleet import SimFleet
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
-from assistantx.store.leases import Leases
+from assistantx.store.leases import Leases, fence
 from assistantx.store.postgres_store import redact
 
 if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
@@ -91,7 +92,7 @@ class ServiceRuntime:
     sim: SimOffice
     locker: Locker
     lock_keys: LockKeys
-    phones: colleagues.CodePhones
+    phones: colleagues.CodePhones | SharedPhones
     codebook: CodeBook
     ledger: CodeLedger
     messenger: BuiltinMessenger
@@ -162,7 +163,13 @@ class ServiceRuntime:
         # Timestamps are real time; the speed-up shortens simulated durations only.
         self.clock = WallClock(s.effective_speedup)
         self.lock_keys = lock_keys_for(s, data_dir)
-        self.phones = colleagues.CodePhones(data_dir / SIM_CODES_FILE)
+        if s.database is None:
+            self.phones = colleagues.CodePhones(data_dir / SIM_CODES_FILE)
+        else:  # replicas: the simulated people keep their codes across a takeover
+            self.phones = shared = SharedPhones.open(s.database)
+            stack.callback(shared.close)
+            if self.office_lease is not None and self.office_lease.lease is not None:
+                shared.fence = fence(self.office_lease.lease, postgres=True)
         self.locker = self._locker()
         world = self.journal.state(colleagues.SIM_STATE)
         robot_place = world["robot"]["place"] if world else None
@@ -297,6 +304,14 @@ class ServiceRuntime:
         self.ready = True
 
     async def _hold_office(self, stack: AsyncExitStack, data_dir: Path, url: str) -> None:
+        s = self.settings
+        if s.lock_shared_key is None and s.lock_key_file is None:
+            # Each replica would make its own key in its data folder: a code one replica
+            # sent before it died would not open the locker under the next one.
+            logger.warning(
+                "replicas need one lock key: set ASSISTANTX_LOCK_SHARED_KEY (or "
+                "ASSISTANTX_LOCK_KEY_FILE) alike on every replica"
+            )
         leases = Leases.open(data_dir / JOURNAL_FILE, database_url=url)
         stack.callback(leases.close)
         holder = (
