@@ -20,6 +20,21 @@ from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both s
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 
+# Under pytest-xdist (`make test` runs two workers, `--dist loadgroup`), the tests that share
+# one session-wide server stay on one worker, so it starts once, not once per worker: Synapse
+# and the gateway port written into its appservice registration, and the llama.cpp server.
+_ONE_WORKER_EACH = ("synapse", "llm_server")
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    if not config.pluginmanager.hasplugin("xdist"):
+        return
+    for item in items:
+        for marker in _ONE_WORKER_EACH:
+            if item.get_closest_marker(marker) is not None:
+                item.add_marker(pytest.mark.xdist_group(marker))
+
+
 @pytest.fixture(autouse=True)
 def _no_network(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(socket.socket, "connect", guarded_connect)
