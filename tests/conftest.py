@@ -6,6 +6,7 @@ import os
 import socket
 import sys
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 
@@ -33,6 +34,24 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         for marker in _ONE_WORKER_EACH:
             if item.get_closest_marker(marker) is not None:
                 item.add_marker(pytest.mark.xdist_group(marker))
+
+
+# Every httpx client builds an SSL context; from one bundle file (SSL_CERT_FILE, or certifi's)
+# that parses some 150 PEM certificates, 40-60 ms of CPU per client, and the suite makes
+# thousands (each in-process service, model adapter and test client). The same system store
+# as its hashed folder loads a certificate only when a handshake needs it, which no test does
+# (the guard below keeps them on 127.0.0.1, in plain HTTP). Subprocesses inherit the same trust.
+_SYSTEM_CERTS = Path("/etc/ssl/certs")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    bundle = str(_SYSTEM_CERTS / "ca-certificates.crt")
+    own_file = os.environ.get("SSL_CERT_FILE", bundle) != bundle
+    own_dir = os.environ.get("SSL_CERT_DIR", str(_SYSTEM_CERTS)) != str(_SYSTEM_CERTS)
+    if own_file or own_dir or not any(_SYSTEM_CERTS.glob("*.0")):
+        return  # a trust store of the user's own, or no hashed system store: left as it is
+    os.environ.pop("SSL_CERT_FILE", None)
+    os.environ["SSL_CERT_DIR"] = str(_SYSTEM_CERTS)
 
 
 @pytest.fixture(autouse=True)
