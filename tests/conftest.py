@@ -20,7 +20,6 @@ from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both s
 )
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
-
 # Under pytest-xdist (`make test` runs two workers, `--dist loadgroup`), the tests that share
 # one session-wide server stay on one worker, so it starts once, not once per worker: Synapse
 # and the gateway port written into its appservice registration, and the llama.cpp server.
