@@ -16,8 +16,12 @@ TEST_INSTALLS := install-synapse install-browser install-llm-server install-post
 # waiting on a server, a subprocess or a simulated second, so two workers overlap those waits
 # even on 2 cores. `--dist loadgroup` keeps the tests that share one session server (Synapse,
 # llama.cpp) on one worker (tests/conftest.py groups them). TEST_WORKERS=0 runs in one process.
+# Compiled bytecode is cached (under .cache/pycache) even where the environment sets
+# PYTHONDONTWRITEBYTECODE: without it every worker, served app and CLI subprocess compiles
+# and assertion-rewrites every module again (collection alone: 20 CPU-s, 11.5 with the cache).
 TEST_WORKERS ?= 2
-PYTEST := $(PY) -m pytest -q -n $(TEST_WORKERS) --dist loadgroup
+PYTEST := env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(CURDIR)/.cache/pycache \
+	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist loadgroup
 
 .PHONY: install run test test-fast check fmt clean $(TEST_INSTALLS)
 
