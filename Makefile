@@ -12,6 +12,17 @@ export SYNAPSE_VENV
 # and saying what it installs. Add a new one here and below.
 TEST_INSTALLS := install-synapse install-browser install-llm-server install-postgres
 
+# The suite runs on TEST_WORKERS processes (pytest-xdist): most of a test's time is spent
+# waiting on a server, a subprocess or a simulated second, so two workers overlap those waits
+# even on 2 cores. `--dist loadgroup` keeps the tests that share one session server (Synapse,
+# llama.cpp) on one worker (tests/conftest.py groups them). TEST_WORKERS=0 runs in one process.
+# Compiled bytecode is cached (under .cache/pycache) even where the environment sets
+# PYTHONDONTWRITEBYTECODE: without it every worker, served app and CLI subprocess compiles
+# and assertion-rewrites every module again (collection alone: 20 CPU-s, 11.5 with the cache).
+TEST_WORKERS ?= 2
+PYTEST := env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(CURDIR)/.cache/pycache \
+	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist loadgroup
+
 .PHONY: install run test test-fast check fmt clean $(TEST_INSTALLS)
 
 $(VENV)/bin/python:
@@ -49,12 +60,12 @@ install-postgres:  # Debian's PostgreSQL for the postgres-marked tests (apt-get,
 	@bash .ci/install-postgres
 
 test: $(VENV)/.installed $(TEST_INSTALLS)
-	$(PY) -m pytest -q
+	$(PYTEST)
 
 # The inner loop: no homeserver, browser or model server, and none of the tests marked slow
 # (those that start servers or the CLI as processes, or localize on big maps). Installs nothing.
 test-fast: $(VENV)/.installed
-	$(PY) -m pytest -q -m "not synapse and not browser and not llm_server and not postgres and not slow"
+	$(PYTEST) -m "not synapse and not browser and not llm_server and not postgres and not slow"
 
 check: $(VENV)/.installed
 	$(VENV)/bin/ruff format --check src tests bench

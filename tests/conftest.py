@@ -6,6 +6,7 @@ import os
 import socket
 import sys
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 
@@ -18,6 +19,38 @@ from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both s
     postgres_url,
 )
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
+
+# Under pytest-xdist (`make test` runs two workers, `--dist loadgroup`), the tests that share
+# one session-wide server stay on one worker, so it starts once, not once per worker: Synapse
+# and the gateway port written into its appservice registration, and the llama.cpp server.
+_ONE_WORKER_EACH = ("synapse", "llm_server")
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    if not config.pluginmanager.hasplugin("xdist"):
+        return
+    for item in items:
+        for marker in _ONE_WORKER_EACH:
+            if item.get_closest_marker(marker) is not None:
+                item.add_marker(pytest.mark.xdist_group(marker))
+
+
+# Every httpx client builds an SSL context; from one bundle file (SSL_CERT_FILE, or certifi's)
+# that parses some 150 PEM certificates, 40-60 ms of CPU per client, and the suite makes
+# thousands (each in-process service, model adapter and test client). The same system store
+# as its hashed folder loads a certificate only when a handshake needs it, which no test does
+# (the guard below keeps them on 127.0.0.1, in plain HTTP). Subprocesses inherit the same trust.
+_SYSTEM_CERTS = Path("/etc/ssl/certs")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    bundle = str(_SYSTEM_CERTS / "ca-certificates.crt")
+    own_file = os.environ.get("SSL_CERT_FILE", bundle) != bundle
+    own_dir = os.environ.get("SSL_CERT_DIR", str(_SYSTEM_CERTS)) != str(_SYSTEM_CERTS)
+    if own_file or own_dir or not any(_SYSTEM_CERTS.glob("*.0")):
+        return  # a trust store of the user's own, or no hashed system store: left as it is
+    os.environ.pop("SSL_CERT_FILE", None)
+    os.environ["SSL_CERT_DIR"] = str(_SYSTEM_CERTS)
 
 
 @pytest.fixture(autouse=True)

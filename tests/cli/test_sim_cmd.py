@@ -10,7 +10,12 @@ import pty
 import subprocess
 import sys
 
+import pytest
+
 from assistantx.cli.sim_cmd import EXAMPLE, PROMPT
+
+# Starts the CLI as a process: not in `make test-fast`.
+pytestmark = pytest.mark.slow
 
 
 def _sim(stdin: str, *args: str) -> list[str]:

@@ -61,6 +61,7 @@ def test_the_current_format_loads_without_a_warning(caplog: pytest.LogCaptureFix
     assert caplog.text == ""
 
 
+@pytest.mark.slow  # starts the CLI as a process: not in `make test-fast`
 def test_office_migrate_writes_the_current_format(
     tmp_path: Path, caplog: pytest.LogCaptureFixture
 ) -> None:
@@ -84,6 +85,7 @@ def test_office_migrate_writes_the_current_format(
     assert office.keeper("zhang", "lunch") == office.facility("fridge")
 
 
+@pytest.mark.slow  # starts the CLI as a process: not in `make test-fast`
 def test_office_migrate_names_a_missing_file(tmp_path: Path) -> None:
     out = subprocess.run(
         [sys.executable, "-m", "assistantx", "office", "migrate", str(tmp_path / "none.yaml")],
