@@ -10,13 +10,13 @@ from hypothesis import strategies as st
 
 from assistantx.core.actions import SendQR
 from assistantx.core.dialogue import DialogueTurn
-from assistantx.core.office import Office
+from assistantx.core.office import Office, parse_office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime import consent
 from assistantx.runtime.recipients import named_recipients
-from helpers.clinic import clinic
+from helpers.clinic import clinic, raw_clinic
 
 RECIPIENT = (
     "take my {item} to {x}",
@@ -165,3 +165,47 @@ def test_a_name_as_the_answer_or_in_an_accepted_offer_names_the_recipient() -> N
     assert named_recipients(office, offer) == {"dawn"}
     # a name as a word, in lower case, names nobody
     assert named_recipients(office, _memory("ines", "take my form to the may fair stall")) == set()
+
+
+def _with_shared_name_words() -> Office:
+    """The clinic plus a person whose surname is another's alias (Page / Oksana Page) and one
+    who shares a surname with Hal Brooks."""
+    raw = raw_clinic()
+    raw["people"] += [  # Oksana first: the file's order must not decide who "Page" is
+        {
+            "id": "oksana",
+            "name": "Oksana Page",
+            "location": "desk_7",
+            "handle": "@oksana",
+            "owns": [{"type": "file"}],
+        },
+        {
+            "id": "page_h",
+            "name": "Page Holloway",
+            "aliases": ["Page"],
+            "location": "desk_6",
+            "handle": "@page_h",
+            "owns": [{"type": "file"}],
+        },
+        {
+            "id": "ada",
+            "name": "Ada Brooks",
+            "location": "desk_5",
+            "handle": "@ada",
+            "owns": [{"type": "file"}],
+        },
+    ]
+    return parse_office(raw, "clinic-shared-names")
+
+
+def test_a_name_word_declared_for_one_person_names_that_person() -> None:
+    office = _with_shared_name_words()
+    text = "send my rota to Page and to Dawn Ellis"
+    assert named_recipients(office, _memory("ines", text)) == {"page_h", "dawn"}
+
+
+def test_a_name_word_shared_by_several_people_names_each_of_them() -> None:
+    # "Brooks" is nobody's declared name: the requester may mean either, and the reasoner
+    # asks which; the guard must not pick one of them by the office file's order
+    office = _with_shared_name_words()
+    assert named_recipients(office, _memory("ines", "take my form to Brooks")) == {"hal", "ada"}

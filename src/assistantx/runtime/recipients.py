@@ -69,28 +69,37 @@ def _tokens(text: str) -> list[_Word]:
 
 @dataclass(frozen=True)
 class _Mention:
-    person: str
+    people: frozenset[str]  # whom the words may mean: one, or each sharing a name word
     start: int
     end: int  # exclusive
     possessive: bool
 
 
-def _names(office: Office) -> list[tuple[tuple[str, ...], str]]:
-    """Every way a person is written (full name, aliases, each part of the name, the id),
-    as folded word tuples, longest first."""
-    found: dict[tuple[str, ...], set[str]] = {}
+def _names(office: Office) -> list[tuple[tuple[str, ...], frozenset[str]]]:
+    """Every way a person is written, as folded word tuples, longest first, with whom each
+    may mean. A spelling the office declares for someone (full name, alias, id) means only
+    them; a part of a name ("Page" of "Oksana Page") means everyone it is a part of, unless
+    it is declared for someone ("Page", Page Holloway's alias)."""
+    declared: dict[tuple[str, ...], set[str]] = {}
+    parts: dict[tuple[str, ...], set[str]] = {}
+
+    def key(spelling: str) -> tuple[str, ...]:
+        return tuple(language.fold(w) for w in re.findall(r"\w+", spelling))
+
     for p in office.people:
-        spellings = {p.name, *p.aliases, p.id, p.id.replace("_", " ")}
-        spellings.update(w for w in p.name.split() if len(w) > 1)
-        for s in spellings:
-            key = tuple(language.fold(w) for w in re.findall(r"\w+", s))
-            if key:
-                found.setdefault(key, set()).add(p.id)
+        for s in {p.name, *p.aliases, p.id, p.id.replace("_", " ")}:
+            if k := key(s):
+                declared.setdefault(k, set()).add(p.id)
+        for w in p.name.split():
+            if len(w) > 1 and (k := key(w)):
+                parts.setdefault(k, set()).add(p.id)
         for alias in p.aliases:  # "Manager Mao": "the manager" names them too
             for w in re.findall(r"\w+", language.fold(alias)):
                 if w in _ROLE_TITLES:
-                    found.setdefault((w,), set()).add(p.id)
-    return sorted(((k, i) for k, ids in found.items() for i in ids), key=lambda x: -len(x[0]))
+                    parts.setdefault((w,), set()).add(p.id)
+    found = {k: frozenset(ids) for k, ids in parts.items()}
+    found.update({k: frozenset(ids) for k, ids in declared.items()})
+    return sorted(found.items(), key=lambda x: -len(x[0]))
 
 
 def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
@@ -99,7 +108,7 @@ def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
     n = 0
     while n < len(words):
         hit = None
-        for key, person in names:
+        for key, people in names:
             span = tuple(w.folded for w in words[n : n + len(key)])
             if span != key:
                 continue
@@ -109,7 +118,7 @@ def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
             if len(key) == 1 and not first[:1].isupper() and word not in _ROLE_TITLES:
                 if word in _COMMON | {"may", "will"} or language.is_english_word(word):
                     continue
-            hit = _Mention(person, n, n + len(key), words[n + len(key) - 1].possessive)
+            hit = _Mention(people, n, n + len(key), words[n + len(key) - 1].possessive)
             break
         if hit is None:
             n += 1
@@ -168,7 +177,7 @@ def _in_roles(office: Office, text: str, requester: str) -> set[str]:
         joined = joined and words[receiving_end].folded in _AND
         receiving = _receiving(words, m.start, m.end, m.possessive, operations)
         if receiving or (joined and not m.possessive):
-            named.add(m.person)
+            named |= m.people
             receiving_end = m.end
     for n, w in enumerate(words):
         if w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations):
@@ -177,9 +186,10 @@ def _in_roles(office: Office, text: str, requester: str) -> set[str]:
         # the pronoun: "take him May's ice pack") nor a source ("from May"); "Hal's clipboard
         # snapped, lend him mine" is about Hal
         candidates = {
-            m.person
+            person
             for m in mentions
             if not (m.possessive and m.start > n) and _before(words, m.start) != "from"
+            for person in m.people
         } - {requester}
         if len(candidates) == 1:
             named |= candidates
@@ -192,7 +202,7 @@ def _just_a_name(office: Office, text: str) -> set[str]:
     mentions = _mentions(office, words)
     covered = {n for m in mentions for n in range(m.start, m.end)}
     rest = [w for n, w in enumerate(words) if n not in covered and w.folded not in _FILLERS]
-    return {m.person for m in mentions} if mentions and not rest else set()
+    return {p for m in mentions for p in m.people} if mentions and not rest else set()
 
 
 def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
