@@ -172,6 +172,14 @@ def is_finite_verb(word: str) -> bool:
     return False
 
 
+def is_stance_adverb(word: str) -> bool:
+    """A manner-of-speaking adverb ("honestly", "frankly", "seriously"): one the dictionary
+    knows only as an adverb, formed with -ly. At the head of a sentence it is the speaker's
+    stance, not what the sentence is about; short adverbs ("no", "not", "again", "instead")
+    carry meaning there and are not stance."""
+    return word.endswith("ly") and set(lemmas(word)) == {"ADV"}
+
+
 def is_noun(word: str) -> bool:
     """Whether the dictionary knows the word as a noun."""
     return "NOUN" in lemmas(word)

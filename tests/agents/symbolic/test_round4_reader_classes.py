@@ -108,11 +108,24 @@ def test_a_fetch_then_a_delivery_elsewhere_stays_a_delivery() -> None:
         "I wish the staff room had a kettle",
         "if only the print corner had a bigger tray",
         "it would be nice if the printer were faster",
+        # the speaker's stance first, with or without a comma (round 4 after: one class left)
+        "honestly I wish the staff room had a kettle",
+        "frankly the print corner should have a bigger tray, I wish it did",
+        "to be honest I wish the printer were faster",
+        "tbh if only the staff room had a sofa",
     ],
 )
 def test_a_wish_about_the_place_is_answered_in_words(text: str) -> None:
     frame = clinic_with_supplies().parse(text, "dawn")
     assert frame.tasks == [] and frame.question is None and frame.decline is not None
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["honestly, could Hal lend me his thermometer", "seriously can you bring me Hal's thermometer"],
+)
+def test_a_stance_word_before_a_request_leaves_the_request(text: str) -> None:
+    assert _clinic(text) == [("transfer", "thermometer", "hal", "dawn")]
 
 
 def test_a_wish_that_names_someone_to_act_is_still_read_as_a_request() -> None:

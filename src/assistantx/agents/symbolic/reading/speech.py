@@ -42,6 +42,8 @@ _AUX = english.words("question_auxiliaries")
 _MODALS = english.words("request_modals")
 _ASKEES = english.words("request_askees")
 _OPENERS = english.words("speech_openers")
+# "to be honest, ...", "by the way ...": the speaker's stance before what is said
+_STANCE = tuple(tuple(p.split()) for p in english.entries("stance_phrases"))
 _THANKS = english.words("thanks_words")
 _RELAY = english.words("relay_verbs")
 _NOBODY = tuple(tuple(p.split()) for p in english.entries("prohibition_subjects"))
@@ -80,9 +82,17 @@ class Act:
 
 
 def _content(words: list[str]) -> list[str]:
+    """The words after the openers: greetings, fillers, a stance adverb ("honestly") or
+    phrase ("to be honest"), however many, in any order."""
     k = 0
-    while k < len(words) and words[k] in _OPENERS:
-        k += 1
+    while k < len(words):
+        phrase = next((p for p in _STANCE if _starts(words[k:], p)), None)
+        if phrase is not None:
+            k += len(phrase)
+        elif words[k] in _OPENERS or language.is_stance_adverb(words[k]):
+            k += 1
+        else:
+            break
     return words[k:]
 
 
