@@ -23,57 +23,20 @@ import argparse
 import asyncio
 import json
 import os
-import socket
-import subprocess
 import sys
 import tempfile
 import time
 from contextlib import AsyncExitStack
 from pathlib import Path
 
-import httpx
-
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from journal_growth import _drive, _settings  # the same workload as the journal's bench
+from journal_growth import _drive, _settings, restart_serve  # the journal bench's workload
 
 from assistantx.service.runtime import ServiceRuntime
 
-TICKS = os.sysconf("SC_CLK_TCK")
 RSS_GROWTH_TARGET_PCT = 10.0
 RESTART_TARGET_S = 3.0
-
-
-def _cpu_s(pid: int) -> float:
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / TICKS
-
-
-def restart(data: Path) -> dict[str, float]:
-    """``assistantx serve`` on ``data``'s journal: CPU-seconds and wall seconds to ready."""
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = int(s.getsockname()[1])
-    env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
-    env.update(ASSISTANTX_DATA_DIR=str(data), ASSISTANTX_ROBOT="sim")
-    cmd = [sys.executable, "-m", "assistantx", "serve", "--port", str(port)]
-    started = time.perf_counter()
-    process = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
-    try:
-        while time.perf_counter() - started < 300:
-            if process.poll() is not None:
-                raise RuntimeError(f"serve exited with {process.returncode}")
-            try:
-                if httpx.get(f"http://127.0.0.1:{port}/readyz").status_code == 200:
-                    wall = time.perf_counter() - started
-                    return {"cpu_s": round(_cpu_s(process.pid), 2), "wall_s": round(wall, 2)}
-            except httpx.TransportError:
-                pass
-            time.sleep(0.05)
-        raise RuntimeError("the restarted service did not become ready")
-    finally:
-        process.terminate()
-        process.wait(30)
 
 
 async def run(n: int, every: int, batch: int, data: Path) -> dict[str, object]:
@@ -111,7 +74,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         data = Path(tmp) / "data"
         result = asyncio.run(run(args.n, args.every, args.batch, data))
-        again = restart(data)
+        again = restart_serve(data)
     result["restart_cpu_s"], result["restart_wall_s"] = again["cpu_s"], again["wall_s"]
     result["restart_ok"] = again["cpu_s"] <= RESTART_TARGET_S
     result["load_avg_1min"] = round(os.getloadavg()[0], 1)

@@ -12,11 +12,10 @@ from assistantx.core.actions import SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, parse_office
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.core.trace import Trace
-from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime import consent
 from assistantx.runtime.recipients import named_recipients
 from helpers.clinic import clinic, raw_clinic
+from helpers.consent_memory import answered, memory
 
 RECIPIENT = (
     "take my {item} to {x}",
@@ -38,11 +37,6 @@ PRONOUN = (
     "{x} hurt {pos} hand, take {obj} my {item}",
     "{x} needs a {item}, please bring {obj} mine",
 )
-
-
-def _memory(requester: str, text: str) -> ShortTermMemory:
-    trace = Trace(instruction_id="i-1", requester=requester, text=text, reasoner="t", started_at=0)
-    return ShortTermMemory(instruction_id="i-1", requester=requester, text=text, trace=trace)
 
 
 def _written(office: Office, person: str, full: bool) -> str:
@@ -67,29 +61,6 @@ def requests(draw: st.DrawFn) -> tuple[str, str, str, str]:
     return requester, x, b, text
 
 
-def _answered(stm: ShortTermMemory, *people: str) -> None:
-    for n, person in enumerate(people):
-        dm = ChatRef(kind="dm", id=person)
-        stm.dialogue += [
-            DialogueTurn(
-                time=2 * n,
-                direction="out",
-                chat=dm,
-                person=person,
-                text="Be there?",
-                question_id=f"q{n}",
-            ),
-            DialogueTurn(
-                time=2 * n + 1,
-                direction="in",
-                chat=dm,
-                person=person,
-                text="sure",
-                in_reply_to=f"q{n}",
-            ),
-        ]
-
-
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(requests())
 def test_only_the_person_named_as_recipient_may_collect(
@@ -97,8 +68,8 @@ def test_only_the_person_named_as_recipient_may_collect(
 ) -> None:
     office = clinic()
     requester, x, b, text = request
-    stm = _memory(requester, text)
-    _answered(stm, x, b)
+    stm = memory(requester, text)
+    answered(stm, x, b)
     assert named_recipients(office, stm) == {x}, text
     mine = f"clipboard:{requester}"
     assert consent.check(office, stm, SendQR(contact=x, item=mine, purpose="collect")) is None
@@ -121,12 +92,12 @@ def test_a_pronoun_recipient_is_the_one_person_named_who_is_not_an_owner(
     )
     # an owner named beside them does not make the pronoun ambiguous
     text += f", or {_written(office, owner, True)}'s if mine is gone"
-    assert named_recipients(office, _memory(requester, text)) == {x}, text
+    assert named_recipients(office, memory(requester, text)) == {x}, text
 
 
 def test_a_name_as_the_answer_or_in_an_accepted_offer_names_the_recipient() -> None:
     office = clinic()
-    stm = _memory("ines", "print my rota, Rich said so")
+    stm = memory("ines", "print my rota, Rich said so")
     own = ChatRef(kind="dm", id="ines")
     assert named_recipients(office, stm) == set()
     stm.dialogue += [
@@ -148,7 +119,7 @@ def test_a_name_as_the_answer_or_in_an_accepted_offer_names_the_recipient() -> N
         ),
     ]
     assert named_recipients(office, stm) == {"hal"}
-    offer = _memory("ines", "Dawn needs a thermometer.")
+    offer = memory("ines", "Dawn needs a thermometer.")
     offer.dialogue += [
         DialogueTurn(
             time=0,
@@ -164,7 +135,7 @@ def test_a_name_as_the_answer_or_in_an_accepted_offer_names_the_recipient() -> N
     ]
     assert named_recipients(office, offer) == {"dawn"}
     # a name as a word, in lower case, names nobody
-    assert named_recipients(office, _memory("ines", "take my form to the may fair stall")) == set()
+    assert named_recipients(office, memory("ines", "take my form to the may fair stall")) == set()
 
 
 def _with_shared_name_words() -> Office:
@@ -201,11 +172,11 @@ def _with_shared_name_words() -> Office:
 def test_a_name_word_declared_for_one_person_names_that_person() -> None:
     office = _with_shared_name_words()
     text = "send my rota to Page and to Dawn Ellis"
-    assert named_recipients(office, _memory("ines", text)) == {"page_h", "dawn"}
+    assert named_recipients(office, memory("ines", text)) == {"page_h", "dawn"}
 
 
 def test_a_name_word_shared_by_several_people_names_each_of_them() -> None:
     # "Brooks" is nobody's declared name: the requester may mean either, and the reasoner
     # asks which; the guard must not pick one of them by the office file's order
     office = _with_shared_name_words()
-    assert named_recipients(office, _memory("ines", "take my form to Brooks")) == {"hal", "ada"}
+    assert named_recipients(office, memory("ines", "take my form to Brooks")) == {"hal", "ada"}

@@ -8,7 +8,6 @@ from __future__ import annotations
 from typing import Any
 
 import yaml
-from consent_memory import answered, memory
 from symbolic_run import run_instruction
 
 from assistantx.core.actions import SendQR
@@ -18,6 +17,7 @@ from assistantx.core.wording import purpose_text
 from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
 from assistantx.runtime import consent
 from assistantx.runtime.consent import check
+from helpers.consent_memory import answered, memory
 
 
 def _raw() -> dict[str, Any]:

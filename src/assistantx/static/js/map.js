@@ -236,13 +236,7 @@ export class MapView {
     const [px, py] = this.toPixel(pose.x, pose.y);
     const yaw = pose.yaw ?? 0;
     // A disc with a nose pointing along the heading (canvas y grows downwards: -sin).
-    ctx.beginPath();
-    ctx.arc(px, py, 11 * u, 0, 2 * Math.PI);
-    ctx.fillStyle = COLOURS.robot;
-    ctx.fill();
-    ctx.strokeStyle = "#ffffff";
-    ctx.lineWidth = 2 * u;
-    ctx.stroke();
+    this.drawDisc(px, py);
     ctx.beginPath();
     ctx.moveTo(px, py);
     ctx.lineTo(px + 16 * u * Math.cos(yaw), py - 16 * u * Math.sin(yaw));
@@ -252,6 +246,18 @@ export class MapView {
     // Where the marker is, in canvas pixels, for tests and assistive summaries.
     this.canvas.dataset.robot = `${px.toFixed(1)},${py.toFixed(1)}`;
     if (this.others.length) this.drawNumber(px, py, 1);
+  }
+
+  /** A robot's disc, white-rimmed, at canvas pixel (px, py). */
+  drawDisc(px, py) {
+    const { ctx, unit: u } = this;
+    ctx.beginPath();
+    ctx.arc(px, py, 11 * u, 0, 2 * Math.PI);
+    ctx.fillStyle = COLOURS.robot;
+    ctx.fill();
+    ctx.strokeStyle = "#ffffff";
+    ctx.lineWidth = 2 * u;
+    ctx.stroke();
   }
 
   /** Robots 2, 3..: their planned paths and numbered markers. */
@@ -274,13 +280,7 @@ export class MapView {
         ctx.setLineDash([]);
       }
       const [px, py] = this.toPixel(robot.pose.x, robot.pose.y);
-      ctx.beginPath();
-      ctx.arc(px, py, 11 * u, 0, 2 * Math.PI);
-      ctx.fillStyle = COLOURS.robot;
-      ctx.fill();
-      ctx.strokeStyle = "#ffffff";
-      ctx.lineWidth = 2 * u;
-      ctx.stroke();
+      this.drawDisc(px, py);
       this.drawNumber(px, py, i + 2);
       where.push(`${px.toFixed(1)},${py.toFixed(1)}`);
     });
