@@ -28,6 +28,9 @@ class ServiceServer(uvicorn.Server):
         await super().shutdown(sockets)
 
 
+KEEP_ALIVE_S = 75
+
+
 def service_server(app: FastAPI, host: str, port: int, *, log_level: str = "info") -> ServiceServer:
     """The server for an app made by ``create_app``."""
     config = uvicorn.Config(
@@ -37,6 +40,11 @@ def service_server(app: FastAPI, host: str, port: int, *, log_level: str = "info
         log_level=log_level,
         access_log=False,
         timeout_graceful_shutdown=GRACEFUL_SHUTDOWN_S,
+        # An idle connection is closed by the server only well after any client or proxy in
+        # front would have dropped it (60 s is the common proxy default): with uvicorn's 5 s,
+        # a request sent as the server closed its connection failed with a read error (seen
+        # after the event loop was held for 5.3 s under load).
+        timeout_keep_alive=KEEP_ALIVE_S,
     )
     offices: Offices = app.state.offices
     return ServiceServer(config, offices)
