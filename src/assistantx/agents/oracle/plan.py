@@ -14,7 +14,7 @@ from typing import Literal
 
 from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
-from assistantx.core.office import Office
+from assistantx.core.office import Office, Operation
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
 from assistantx.memory.graph import LongTermMemory
 
@@ -167,6 +167,21 @@ def _recipient(plan: TaskPlan, part: Part, who: str) -> str:
     return target.key
 
 
+def _machine_guard(office: Office, part: Part, who: str) -> tuple[Operation, Role]:
+    """The operation a print or copy part runs, and the role of the guard asked to run it on
+    ``who``'s item at its machine."""
+    op = part_operation(office, part)
+    place_name = office.facility(facility_for(office, op.id)).name
+    thing = office.item_type(op.input or "").name
+    role = _guard(
+        office,
+        op.id,
+        f"Could you {op.name} {who}'s {thing} at the {place_name}?",
+        f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
+    )
+    return op, role
+
+
 def _guard(office: Office, operation: str, question: str, group_question: str | None) -> Role:
     facility = facility_for(office, operation)
     return Role(
@@ -242,16 +257,8 @@ def _add_part(
             plan.deliveries.append((role.key, Code(role.key, item, "collect")))
             plan.add_goal({"holds": [to, item]})
         case "print":
-            op = part_operation(office, part)
+            op, role = _machine_guard(office, part, who)
             source, made = op.input or "", op.product or ""
-            place_name = office.facility(facility_for(office, op.id)).name
-            thing = office.item_type(source).name
-            role = _guard(
-                office,
-                op.id,
-                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
-                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
-            )
             plan.add_role(role)
             product = f"{made}:{a}"
             plan.forwards.append(Forward(REQUESTER, role.key))
@@ -262,16 +269,8 @@ def _add_part(
             plan.add_goal({"printed": f"{source}:{a}"})
             plan.add_goal({"holds": [part.to or a, product]})
         case "copy":
-            op = part_operation(office, part)
+            op, role = _machine_guard(office, part, who)
             source, made = op.input or "", op.product or ""
-            place_name = office.facility(facility_for(office, op.id)).name
-            thing = office.item_type(source).name
-            role = _guard(
-                office,
-                op.id,
-                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
-                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
-            )
             plan.add_role(role)
             doc = f"{source}:{a}"
             plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
