@@ -55,6 +55,9 @@ async def test_a_fax_sent_outside_is_not_handed_back(fax: Office) -> None:
     [
         ("Please fax my document to the county tax office", "the county tax office"),
         ("could you fax my contract to +44 20 7946 0000 please", "+44 20 7946 0000"),
+        # a capitalized name after the fax's "to" is a place outside, not a colleague to find
+        ("fax my document to Harlow & Sons Ltd, thanks!", "Harlow & Sons Ltd"),
+        ("pls fax my contract to Dr Okafor at St Mary's clinic", "Dr Okafor at St Mary's clinic"),
     ],
 )
 async def test_the_outcome_names_where_the_fax_went_in_the_requesters_words(

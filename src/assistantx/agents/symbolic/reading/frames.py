@@ -89,6 +89,8 @@ class FrameReader:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+        tasks = _without_rejected(tasks, readings)
+        objects = [m for m in objects if m.id not in _rejected_items(readings)]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -187,6 +189,33 @@ class FrameReader:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+# Words between "not" and the item it rejects: "not the stapler", "not his scissors".
+_DETERMINERS = frozenset({"the", "a", "an", "my", "his", "her", "their", "your", "that", "this"})
+
+
+def _rejected_items(readings: Readings) -> set[str]:
+    """Item types the requester rejected outright ("..., sorry, a pen, not the stapler")."""
+    tokens = readings.tokens
+    rejected: set[str] = set()
+    for m in readings.mentions:
+        if m.kind != "item":
+            continue
+        k = m.start - 1
+        while k >= 0 and tokens[k].word in _DETERMINERS:
+            k -= 1
+        if k >= 0 and tokens[k].word == "not":
+            rejected.update(m.ids)
+    return rejected
+
+
+def _without_rejected(tasks: list[Task], readings: Readings) -> list[Task]:
+    """The tasks left once those on a rejected item are dropped: a correction names what is
+    wanted and what is not. When nothing is left, the checks that follow ask what is wanted:
+    a rejected item is never fetched."""
+    rejected = _rejected_items(readings)
+    return [t for t in tasks if t.item not in rejected]
 
 
 def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:

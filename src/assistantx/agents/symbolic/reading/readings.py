@@ -14,7 +14,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from assistantx.agents.symbolic.reading.lexicon import COMMON, PRONOUNS, Lexed, Lexicon, Mention
+from assistantx.agents.symbolic.reading.lexicon import (
+    COMMON,
+    PRONOUNS,
+    Lexed,
+    Lexicon,
+    Mention,
+    inflections,
+)
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language
 from assistantx.core.office import Office
@@ -43,6 +50,15 @@ class MentionReader:
     def __init__(self, office: Office, lex: Lexicon) -> None:
         self.office = office
         self.lex = lex
+        # the verbs of services that send an item out of the office (a fax, a courier): what
+        # follows their "to" is a destination outside, not a colleague to look up
+        self._sends_out = frozenset(
+            form
+            for op in office.operations
+            if op.sends_out
+            for phrase in (*op.verbs, op.name)
+            for form in inflections(language.fold(phrase).split()[0] if phrase else "")
+        )
 
     def read(self, lexed: Lexed) -> Readings:
         tokens = lexed.tokens
@@ -64,9 +80,20 @@ class MentionReader:
                 out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
         return out
 
+    def _destination_from(self, tokens: Sequence[Token]) -> int | None:
+        """The index of the first word after "to" that follows a send-out verb, if any."""
+        verb = next((k for k, t in enumerate(tokens) if t.word in self._sends_out), None)
+        if verb is None:
+            return None
+        to = next((k for k in range(verb + 1, len(tokens)) if tokens[k].word == "to"), None)
+        return None if to is None else to + 1
+
     def _doubts(self, tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[str]:
         out: list[str] = []
+        outside = self._destination_from(tokens)
         for n, m in enumerate(mentions):
+            if outside is not None and m.start >= outside and m.kind in ("word", "person"):
+                continue  # "fax it to Harlow Ltd": a place outside, not someone to find
             if m.kind == "person" and m.alternative and len(m.ids) == 1:
                 name = self.office.person(m.id).name
                 out.append(f"Do you mean {name}, or {m.alternative}?")
