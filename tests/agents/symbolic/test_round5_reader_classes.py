@@ -32,3 +32,35 @@ def test_a_rejected_item_is_not_fetched(text: str, wanted: tuple[str, str | None
 def test_a_rejected_item_alone_is_asked_about_never_fetched(text: str) -> None:
     frame = office_parser("default").parse(text, "wang")
     assert frame.tasks == [] and frame.question
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a greeting or a notice phrase left beside a statement says nothing to act on
+        "hi, the printer is fixed",
+        "no need to do anything, just letting you know the printer is fixed",
+        "just so you know, Zhang is out today",
+        "heads up: the printer is out of paper",
+        # a hedged wish, with its contraction
+        "it'd be nice if the coffee were stronger",
+        "it'd be great if the printer were faster",
+    ],
+)
+def test_a_message_that_asks_for_nothing_is_answered_in_words(text: str) -> None:
+    frame = office_parser("default").parse(text, "wang")
+    assert frame.tasks == [] and frame.question is None and frame.decline is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("hi, can you bring me a stapler", ("transfer", "stapler")),
+        ("just so you know I need a stapler, can you bring me one", ("transfer", "stapler")),
+    ],
+)
+def test_a_request_after_a_greeting_or_notice_is_still_a_request(
+    text: str, wanted: tuple[str, str]
+) -> None:
+    frame = office_parser("default").parse(text, "wang")
+    assert [(t.kind, t.item) for t in frame.tasks] == [wanted]

@@ -50,7 +50,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
-from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs
+from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs, content
 from assistantx.core import language
 from assistantx.core.english import entries_of
 from assistantx.core.english import words as english_words
@@ -263,7 +263,8 @@ class RequestScreen:
             return out
         dropped = [f.piece for f in findings if f.verdict in _DROPPED]
         left = _without(text, cut, dropped)
-        if not set(_words(left)) - self.en.courtesy or self._aside(left, live):
+        meant = set(content(_words(left))) - self.en.courtesy  # "hi," left of a statement
+        if not meant or self._aside(left, live):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)

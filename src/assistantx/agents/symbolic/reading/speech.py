@@ -81,6 +81,12 @@ class Act:
     relay: bool = False  # thanks to be passed on to someone else
 
 
+def content(words: list[str]) -> list[str]:
+    """What is said once greetings, fillers and the speaker's stance are passed over: "hi",
+    "just so you know" or "no need to do anything" alone says nothing to act on."""
+    return _content(words)
+
+
 def _content(words: list[str]) -> list[str]:
     """The words after the openers: greetings, fillers, a stance adverb ("honestly") or
     phrase ("to be honest"), however many, in any order."""
