@@ -88,6 +88,11 @@ class MessengerError(AdapterError):
     """The messenger could not deliver or receive."""
 
 
+class MessengerClosedError(MessengerError):
+    """The messenger's connection was closed (the service is stopping): the work in hand is
+    no message's fault and is to be taken again after a restart, never skipped."""
+
+
 class UnreachableContactError(MessengerError):
     """The messenger has no way to reach this person or group at all (no account, no room):
     trying again cannot help, so the loop records the person as unreachable."""

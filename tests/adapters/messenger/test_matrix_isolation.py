@@ -159,3 +159,37 @@ async def test_a_poison_event_or_room_in_sync_is_skipped_and_the_poller_advances
     assert drained(inbox) == ["$before", "$after"]
     assert await store.sync_token("pull") == "s2"
     assert ingestor.skipped.by_path == {"matrix_sync": 2}
+
+
+async def test_a_transaction_met_by_a_closed_homeserver_connection_is_taken_again_not_skipped(
+    serve_routers: ServeRouters,
+    store: SqliteEventStore,
+    inbox: asyncio.Queue[InboundMessage],
+) -> None:
+    """Stopping mid-batch (the Matrix client already closed under the room bookkeeping) is no
+    event's fault: the transaction is refused, so the homeserver brings it again, and its
+    events are handled then (a stop lost a DM's bookkeeping for good before)."""
+    closing = MatrixClient("http://127.0.0.1:9", "token")
+    await closing.aclose()
+    joins: list[str] = []
+
+    async def on_invite(room_id: str, user: str, event: Mapping[str, Any]) -> None:
+        if not joins:
+            joins.append("stopped")
+            await closing.request("POST", f"/_matrix/client/v3/join/{room_id}")
+        joins.append(room_id)
+
+    ingestor = EventIngestor(store, EventNormalizer(CONFIG, {}), inbox.put, on_invite=on_invite)
+    router = create_appservice_router(hs_token=SecretStr(HS_TOKEN), ingestor=ingestor)
+    events = [json.dumps(invite("$invite", "!dm:office.test")), json.dumps(text_event("$hi", "hi"))]
+    body = ('{"events": [' + ", ".join(events) + "]}").encode()
+    headers = {**AUTH, "Content-Type": "application/json"}
+    async with serve_routers(router) as url, httpx.AsyncClient(base_url=url) as client:
+        first = await client.put("/_matrix/app/v1/transactions/t1", content=body, headers=headers)
+        assert first.status_code == 500
+        assert not await store.transaction_seen("t1")
+        again = await client.put("/_matrix/app/v1/transactions/t1", content=body, headers=headers)
+    assert again.status_code == 200
+    assert joins == ["stopped", "!dm:office.test"]
+    assert ingestor.skipped.total == 0
+    assert drained(inbox) == ["$hi"]

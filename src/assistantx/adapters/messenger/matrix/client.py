@@ -21,7 +21,7 @@ from urllib.parse import quote
 
 import httpx
 
-from assistantx.core.errors import MessengerError
+from assistantx.core.errors import MessengerClosedError, MessengerError
 from assistantx.core.http_retry import RetryingTransport, RetryPolicy, header_retry_after
 
 logger = logging.getLogger(__name__)
@@ -133,6 +133,8 @@ class MatrixClient:
         all_headers = {"Authorization": f"Bearer {self._token}", **(headers or {})}
         timeout = httpx.USE_CLIENT_DEFAULT if timeout_s is None else httpx.Timeout(timeout_s)
         url = self._base + path
+        if self._http.is_closed:  # stopping: httpx would raise a bare RuntimeError
+            raise MessengerClosedError(f"{method} {path}: the homeserver connection is closed")
         try:
             response = await self._http.request(
                 method,

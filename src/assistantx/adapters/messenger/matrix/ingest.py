@@ -24,6 +24,7 @@ from typing import Any
 
 from assistantx.adapters.messenger.matrix.normalize import PLATFORM, AutoReply, EventNormalizer
 from assistantx.adapters.messenger.matrix.store import EventStore
+from assistantx.core.errors import MessengerClosedError
 from assistantx.core.isolation import SkippedEvents
 from assistantx.core.ports.messenger import InboundMessage
 
@@ -106,6 +107,8 @@ class EventIngestor:
                     await self._take_invite(room_id, event)
                     if self._prepare is not None:
                         await self._prepare(room_id, event)
+                except MessengerClosedError:
+                    raise  # stopping mid-batch: the whole batch comes again, nothing skipped
                 except Exception as exc:
                     self.skipped.skip(path, _event_id(event), "room bookkeeping", exc)
                     continue
