@@ -105,3 +105,16 @@ async def test_the_oracle_scans_to_pdf_alike(scan: Office) -> None:
     assert {"received": ["lee", "pdf:lee"]} in plan.goal
     pools = classify(base, scan)
     await verify_tasks(scan, [_task(pools["L1"][0], scan, 1)])
+
+
+def test_only_the_send_out_service_verb_makes_a_destination_outside() -> None:
+    """A courier whose verbs include "send out": "courier it to <a firm>" is a place outside,
+    but a plain "send ... to Yang" is still about colleagues (two of them share "Yang")."""
+    from assistantx.agents.symbolic import InstructionParser
+
+    office = _office(id="courier", name="courier", verbs=["send out", "courier"], sends_out=True)
+    parser = InstructionParser(office)
+    sent = parser.parse("courier my document to Harlow & Sons Ltd", "lee")
+    assert [(t.operation, t.destination) for t in sent.tasks] == [("courier", "Harlow & Sons Ltd")]
+    asked = parser.parse("send my slides to Yang", "lee")
+    assert asked.tasks == [] and asked.question and "Yang" in asked.question

@@ -50,14 +50,15 @@ class MentionReader:
     def __init__(self, office: Office, lex: Lexicon) -> None:
         self.office = office
         self.lex = lex
-        # the verbs of services that send an item out of the office (a fax, a courier): what
-        # follows their "to" is a destination outside, not a colleague to look up
-        self._sends_out = frozenset(
-            form
+        # the verb phrases of services that send an item out of the office (a fax, a
+        # courier), first word in any form: what follows their "to" is a destination outside,
+        # not a colleague to look up. A phrase counts whole ("send out", never plain "send").
+        self._sends_out = tuple(
+            (frozenset(inflections(words[0])), tuple(words[1:]))
             for op in office.operations
             if op.sends_out
             for phrase in (*op.verbs, op.name)
-            for form in inflections(language.fold(phrase).split()[0] if phrase else "")
+            if (words := language.fold(phrase).split())
         )
 
     def read(self, lexed: Lexed) -> Readings:
@@ -82,7 +83,16 @@ class MentionReader:
 
     def _destination_from(self, tokens: Sequence[Token]) -> int | None:
         """The index of the first word after "to" that follows a send-out verb, if any."""
-        verb = next((k for k, t in enumerate(tokens) if t.word in self._sends_out), None)
+        words = [t.word for t in tokens]
+        verb = next(
+            (
+                k + len(rest)
+                for k, word in enumerate(words)
+                for forms, rest in self._sends_out
+                if word in forms and tuple(words[k + 1 : k + 1 + len(rest)]) == rest
+            ),
+            None,
+        )
         if verb is None:
             return None
         to = next((k for k in range(verb + 1, len(tokens)) if tokens[k].word == "to"), None)
