@@ -89,8 +89,10 @@ class FrameReader:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
-        tasks = _without_rejected(tasks, readings)
-        objects = [m for m in objects if m.id not in _rejected_items(readings)]
+        rejected = _rejected_items(readings)
+        # a rejected item is never fetched; with nothing left, the checks below ask
+        tasks = [t for t in tasks if t.item not in rejected]
+        objects = [m for m in objects if m.id not in rejected]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -192,7 +194,7 @@ class FrameReader:
 
 
 # Words between "not" and the item it rejects: "not the stapler", "not his scissors".
-_DETERMINERS = frozenset({"the", "a", "an", "my", "his", "her", "their", "your", "that", "this"})
+_DETERMINERS = english.words("determiners")
 
 
 def _rejected_items(readings: Readings) -> set[str]:
@@ -208,14 +210,6 @@ def _rejected_items(readings: Readings) -> set[str]:
         if k >= 0 and tokens[k].word == "not":
             rejected.update(m.ids)
     return rejected
-
-
-def _without_rejected(tasks: list[Task], readings: Readings) -> list[Task]:
-    """The tasks left once those on a rejected item are dropped: a correction names what is
-    wanted and what is not. When nothing is left, the checks that follow ask what is wanted:
-    a rejected item is never fetched."""
-    rejected = _rejected_items(readings)
-    return [t for t in tasks if t.item not in rejected]
 
 
 def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:

@@ -82,14 +82,9 @@ class Act:
 
 
 def content(words: list[str]) -> list[str]:
-    """What is said once greetings, fillers and the speaker's stance are passed over: "hi",
-    "just so you know" or "no need to do anything" alone says nothing to act on."""
-    return _content(words)
-
-
-def _content(words: list[str]) -> list[str]:
     """The words after the openers: greetings, fillers, a stance adverb ("honestly") or
-    phrase ("to be honest"), however many, in any order."""
+    phrase ("to be honest", "just so you know"), however many, in any order; "hi" alone says
+    nothing to act on."""
     k = 0
     while k < len(words):
         phrase = next((p for p in _STANCE if _starts(words[k:], p)), None)
@@ -118,7 +113,7 @@ class SpeechActs:
 
     def withdrawal(self, words: list[str]) -> bool:
         """ "forget about the scissors", "never mind the stapler", "cancel my request"."""
-        w = _content(words)
+        w = content(words)
         for head in _WITHDRAW_HEADS:
             if _starts(w, head):
                 rest = w[len(head) :]
@@ -127,7 +122,7 @@ class SpeechActs:
 
     def wish(self, words: list[str]) -> bool:
         """A wish or prohibition about other people's conduct: nothing to fetch."""
-        w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
         for n in range(len(w)):
             if any(_starts(w[n:], p) for p in _NOBODY):
                 return True  # "nobody take my mug", "make sure no one uses ..."
@@ -145,7 +140,7 @@ class SpeechActs:
         """ "I wish the staff room had a kettle", "if only this place had ...": a wish about
         the place, asking nobody for anything (no person named, nothing for the speaker,
         nobody addressed); "if Hal could sign my form" is a request, read as one."""
-        w = _content(words)
+        w = content(words)
         opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None)
         if opener is None:
             return False
@@ -156,7 +151,7 @@ class SpeechActs:
         return not any(m.kind in ("person", "self", "cue") for m in mentions)
 
     def thanks(self, words: list[str]) -> Act | None:
-        w = _content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
         if self._asks_you(w):
             w = w[next(n for n, x in enumerate(w) if x in _YOU) + 1 :]  # "could you thank ..."
             asked = True
@@ -196,7 +191,7 @@ class SpeechActs:
 
     def question(self, words: list[str], asks: bool) -> QuestionKind | None:
         """Whether a piece is a question, and a polite request or a question for information."""
-        w = _content(words)
+        w = content(words)
         if not w:
             return None
         for lead in _EMBEDDED_QUESTIONS:  # "I wonder if anyone has ...", "any idea who ..."
@@ -235,7 +230,7 @@ class SpeechActs:
     def statement(self, words: list[str]) -> bool:
         """A statement of fact, not a request: a subject, then a state or past verb, before
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
-        w = _content(words)
+        w = content(words)
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if _has_need_phrase(w):
@@ -287,7 +282,7 @@ class SpeechActs:
 
     def need(self, words: list[str], requester_words: frozenset[str]) -> bool:
         """ "Min needs scissors": someone else's need, said as a fact."""
-        w = _content(words)
+        w = content(words)
         if _has_need_phrase(w) and self._named(w[0]):
             return True
         for n in range(1, min(len(w), 5)):
@@ -298,7 +293,7 @@ class SpeechActs:
 
     def request(self, words: list[str]) -> bool:
         """Request wording: an imperative, a polite question, or the requester's own need."""
-        w = _content(words)
+        w = content(words)
         if not w:
             return False
         if self._imperative(w) or set(w) & _WILLING:
