@@ -83,6 +83,24 @@ def test_availability_toggles_look_pressable(browser: Browser, server: Server) -
     assert toggle.evaluate("el => getComputedStyle(el).boxShadow") != before
 
 
+def test_a_refresh_keeps_the_rows_that_did_not_change(browser: Browser, server: Server) -> None:
+    """A toggle is never swapped out from under a pointer: when one person changes, the other
+    rows stay the very same elements (a redraw of every row used to detach them)."""
+    page = open_dashboard(browser, server)
+    gao = page.locator('#people-table tr[data-person="gao"] button')
+    gao.evaluate("el => { el.dataset.probe = 'kept'; }")
+    changed = server.api(
+        "PATCH",
+        "/v1/people/zhang",
+        json={"available": False, "evidence": "out for lunch"},
+    )
+    assert changed.status_code == 200, changed.text
+    zhang = page.locator('#people-table tr[data-person="zhang"] button')
+    expect(zhang).to_have_attribute("aria-pressed", "false", timeout=10_000)
+    expect(zhang).to_have_text("unavailable")
+    expect(gao).to_have_attribute("data-probe", "kept")
+
+
 def test_the_evaluation_tab_explains_its_metrics(browser: Browser, server: Server) -> None:
     write_sample_evaluation(server.results_dir)
     page = open_dashboard(browser, server)

@@ -14,12 +14,30 @@ export class PeoplePanel {
   }
 
   render(memory) {
-    const rows = memory.people.map((person) => h("tr", { dataset: { person: person.id, key: person.id } },
-      h("th", { scope: "row" }, person.name),
-      h("td", {}, memory.places[person.place] ?? person.place ?? "—"),
-      h("td", {}, this.toggle(person)),
-      h("td", {}, person.items.length ? person.items.join(", ") : "—")));
-    keepFocus(this.tbody, () => replace(this.tbody, rows));
+    this.renderRows(memory);
+    this.renderLearned(memory);
+  }
+
+  renderRows(memory) {
+    // A row is redrawn only when what it shows changed: a refresh that swapped identical rows
+    // would pull a toggle out from under a pointer that is about to press it.
+    const kept = new Map([...this.tbody.children].map((row) => [row.dataset.key, row]));
+    const rows = memory.people.map((person) => {
+      const place = memory.places[person.place] ?? person.place ?? "—";
+      const shown = JSON.stringify([person.name, place, person.available, person.items]);
+      const old = kept.get(person.id);
+      if (old && old.dataset.shown === shown) return old;
+      return h("tr", { dataset: { person: person.id, key: person.id, shown } },
+        h("th", { scope: "row" }, person.name),
+        h("td", {}, place),
+        h("td", {}, this.toggle(person)),
+        h("td", {}, person.items.length ? person.items.join(", ") : "—"));
+    });
+    const same = rows.length === this.tbody.children.length && rows.every((row, i) => row === this.tbody.children[i]);
+    if (!same) keepFocus(this.tbody, () => replace(this.tbody, rows));
+  }
+
+  renderLearned(memory) {
     const learned = memory.updates.filter((u) => u.changed !== false).slice(-50).reverse();
     replace(this.learnedList, learned.length
       ? learned.map((applied) => h("li", {},
@@ -49,6 +67,8 @@ export class PeoplePanel {
         body: { available, evidence: "set by the operator on the dashboard" },
       });
       await this.onChanged();
+      // A change that altered nothing leaves the row as it was, so its button is enabled again.
+      button.disabled = false;
       // Keep keyboard focus on the same person's toggle after the table is redrawn.
       this.tbody.querySelector(`tr[data-person="${CSS.escape(person.id)}"] button`)?.focus();
     } catch (err) {
