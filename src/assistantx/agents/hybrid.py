@@ -42,12 +42,13 @@ from assistantx.agents.llm.grounding import (
 )
 from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
+from assistantx.core import task_kinds
 from assistantx.core.errors import GroundingError, ModelBehaviorError, ModelOutputError
 from assistantx.core.office import Office
 from assistantx.core.ports.model import ChatModel, ChatRequest, LLMCallFailed, Message
 from assistantx.core.settings import Settings
 from assistantx.core.structured import Attempt, structured_call
-from assistantx.core.task_schema import PERSON_KINDS, SHAPE_KIND, TaskKind
+from assistantx.core.task_schema import SHAPE_KIND, TaskKind
 from assistantx.core.trace import Percept
 from assistantx.memory.resolve import Resolver
 
@@ -59,7 +60,8 @@ class ReadTask(BaseModel):
 
     kind: TaskKind = Field(
         description="transfer: bring/take an item to someone; sign; seal; send_file: forward "
-        "an electronic file; or the kind of one of the office's services (listed in the prompt)"
+        "an electronic file; or the kind of one of the office's services (listed in the prompt)",
+        json_schema_extra=lambda schema: schema.update(enum=[k.id for k in task_kinds.kinds()]),
     )
     item: str = Field(min_length=1, max_length=80, description="the item, e.g. stapler")
     owner: str | None = Field(default=None, max_length=80, description="whose item, if said")
@@ -123,7 +125,7 @@ def to_task_frame(read: ReadFrame, requester: str, office: Office) -> TaskFrame:
         name = office.item_type(item).name
         if read_task.kind == "transfer" and owner is None and kinds[item] == "personal":
             return TaskFrame(requester=requester, question=f"Whose {name} do you mean?")
-        if read_task.kind in PERSON_KINDS and (actor is None or actor == requester):
+        if read_task.kind in task_kinds.person_kinds() and (actor is None or actor == requester):
             return TaskFrame(
                 requester=requester,
                 question=f"Who should do that with your {name}? Please tell me their name.",

@@ -16,7 +16,6 @@ from __future__ import annotations
 import difflib
 import unicodedata
 from collections.abc import Iterable, Sequence
-from typing import cast
 
 from assistantx.core import english, task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
@@ -169,7 +168,7 @@ def ungrounded_action(words: RequestWords, requester: str, action: Action) -> st
             type_id = item.partition(":")[0]
             # what the code does to its item, as a task kind (deposit/collect: a transfer)
             spec = task_kinds.of_purpose(purpose)
-            kind = cast("TaskKind", spec.id) if spec is not None else None
+            kind = spec.id if spec is not None else None
             if kind in _PERSON_VERBS:
                 if not words.says_any(_PERSON_VERBS[kind]):
                     return f"the request never asks to {kind} anything"
