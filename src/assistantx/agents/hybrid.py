@@ -40,6 +40,7 @@ from assistantx.agents.llm.grounding import (
     RequestWords,
     ungrounded,
 )
+from assistantx.agents.llm.shared import ModelHold
 from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
 from assistantx.agents.symbolic.reasoner import SymbolicReasoner
 from assistantx.core import task_kinds
@@ -164,19 +165,15 @@ class HybridReasoner(SymbolicReasoner):
         self.shared = shared
         self.output_retries = output_retries
         self.cascade = cascade
-        self._holding = False
+        self._hold = ModelHold(shared)
         if cascade:
             self.name = "cascade"
 
     async def start(self) -> None:
-        if not self._holding:
-            await self.shared.acquire()
-            self._holding = True
+        await self._hold.take()
 
     async def stop(self) -> None:
-        if self._holding:
-            self._holding = False
-            await self.shared.release()
+        await self._hold.give_back()
 
     async def perceive(self, ctx: AgentContext) -> Percept:
         answers = ctx.stm.requester_answers()

@@ -82,14 +82,17 @@ def _operation_on(
     return next(iter(runs or on or ops), None)
 
 
-def person_name(office: Office, person_id: str, *, you: str | None = None) -> str:
-    """A person's (or group's) display name ("you" for the reader ``you``)."""
+def person_name(
+    office: Office, person_id: str, *, you: str | None = None, unknown: str | None = None
+) -> str:
+    """A person's (or group's) display name ("you" for the reader ``you``); one the office
+    does not know is ``unknown`` when given, else its id in words."""
     if you is not None and person_id == you:
         return "you"
     names = {p.id: p.name for p in office.people} | {g.id: g.name for g in office.groups}
     if person_id in names:
         return names[person_id]
-    return _words(person_id)
+    return _words(person_id) if unknown is None else unknown
 
 
 def item_type_name(office: Office, type_id: str) -> str:
@@ -121,8 +124,9 @@ def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
     return f"{person_name(office, owner)}'s {thing}"
 
 
-def place_name(office: Office, place_id: str) -> str:
-    """A location, facility or person (their desk) by name."""
+def place_name(office: Office, place_id: str, *, unknown: str | None = None) -> str:
+    """A location, facility or person (their desk) by name; a place the office does not know
+    is ``unknown`` when given, else its id in words."""
     for location in office.locations:
         if location.id == place_id:
             return location.name
@@ -132,7 +136,7 @@ def place_name(office: Office, place_id: str) -> str:
     try:
         return f"{office.person(place_id).name}'s desk"
     except KeyError:
-        return _words(place_id)
+        return _words(place_id) if unknown is None else unknown
 
 
 def _words(identifier: str) -> str:
