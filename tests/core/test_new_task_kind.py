@@ -14,9 +14,11 @@ from collections.abc import Iterator
 import pytest
 from pydantic import ValidationError
 
+from assistantx.agents.llm.grounding import RequestWords, ungrounded_action
 from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.agents.oracle.plan import build_plan
 from assistantx.core import task_kinds
+from assistantx.core.actions import SendQR
 from assistantx.core.goals import parse_milestone
 from assistantx.core.office import load_office
 from assistantx.core.ports.lock import QRCode
@@ -117,3 +119,14 @@ async def test_the_added_kind_runs_to_done_in_the_simulated_office(approve: Kind
     # the document went back to nobody but its owner
     moved_to = {e.detail["to"] for e in run.sim.world.handovers()}
     assert moved_to <= {"lee", "wang", "locker"}, moved_to
+
+
+def test_the_model_path_grounds_the_added_kind_by_its_words(approve: KindSpec) -> None:
+    """A code for the added kind's work is grounded when the request says one of its words,
+    and refused when it does not (the model's reading never adds work nobody asked for)."""
+    office = load_office()
+    code = SendQR(contact="wang", item="document:lee", purpose="approve")
+    asked = RequestWords(office, ["Please get my document approved by Wang."])
+    assert ungrounded_action(asked, "lee", code) is None
+    not_asked = RequestWords(office, ["Please bring my document to Wang."])
+    assert ungrounded_action(not_asked, "lee", code) == "the request never asks to approve anything"
