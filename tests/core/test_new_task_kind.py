@@ -14,6 +14,7 @@ from collections.abc import Iterator
 import pytest
 from pydantic import ValidationError
 
+from assistantx.agents.hybrid import build_factory
 from assistantx.agents.llm.grounding import RequestWords, ungrounded_action
 from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.agents.oracle.plan import build_plan
@@ -25,7 +26,12 @@ from assistantx.core.ports.lock import QRCode
 from assistantx.core.task_kinds import KindSpec, Step
 from assistantx.core.task_schema import Part, Task
 from assistantx.core.task_spec import BaseInstruction, check_base
+from assistantx.sim.office import SimOffice
 from assistantx.sim.run import run_in_sim
+from fakes.fixtures import scripted_llm  # noqa: F401
+from fakes.scripted_llm import ScriptedLLM, json_reply
+from helpers.llm_office import llm_model, llm_settings
+from helpers.office import run_one, sim_assistant
 
 APPROVE = KindSpec(
     id="approve",
@@ -130,3 +136,32 @@ def test_the_model_path_grounds_the_added_kind_by_its_words(approve: KindSpec) -
     assert ungrounded_action(asked, "lee", code) is None
     not_asked = RequestWords(office, ["Please bring my document to Wang."])
     assert ungrounded_action(not_asked, "lee", code) == "the request never asks to approve anything"
+
+
+async def test_the_embedded_planner_runs_the_added_kind_from_the_models_reading(
+    approve: KindSpec,
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    """The hybrid reasoner: the model (scripted) reads the request as the added kind, told of
+    it in its prompt; the symbolic planner, with no code of the kind, runs it to done."""
+    office = load_office()
+    scripted_llm.script(
+        "understanding",
+        json_reply(
+            {"sure": True, "tasks": [{"kind": "approve", "item": "document", "actor": "Wang Fang"}]}
+        ),
+    )
+    sim = SimOffice(office)
+    factory = build_factory(office, llm_settings(scripted_llm), model=llm_model(scripted_llm))
+    try:
+        stm = await run_one(
+            sim, sim_assistant(sim, factory), "lee", "Please get my document approved by Wang."
+        )
+    finally:
+        await factory.model.stop()
+
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"approved": ["document:lee", "wang"]})
+    assert sim.world.check({"holds": ["lee", "document:lee"]})
+    prompt = scripted_llm.requests_for("understanding")[0]
+    assert "sign, seal, approve" in prompt.messages[0]["content"]
