@@ -14,11 +14,10 @@ from __future__ import annotations
 import ast
 import re
 from pathlib import Path
-from typing import get_args
 
 import yaml
 
-from assistantx.core.task_schema import PART_KINDS, TaskKind
+from assistantx.core import task_kinds
 
 ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "src" / "assistantx"
@@ -101,7 +100,7 @@ def test_the_word_check_sees_a_word() -> None:
 
 # --- task kinds: listed by the task schema only -----------------------------------------------
 
-TASK_KINDS = set(get_args(TaskKind)) | set(PART_KINDS)
+TASK_KINDS = {k.id for k in task_kinds.kinds()} | set(task_kinds.part_kinds())
 # Lock purposes share some words with task kinds, but they are the lock's wire protocol (what
 # a code opens the locker for), not a reading of a request.
 KIND_LIST_EXEMPT = {"core/ports/lock.py", "adapters/lock/protocol/controller.py"}

@@ -13,7 +13,7 @@ import pytest
 from assistantx.core.actions import Inquire, Move, SendQR, Stop, Wait, WaitInPlace
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM
-from helpers.llm_office import decision, script_helpers
+from helpers.llm_office import CANONICAL_FETCH, decision, script_helpers
 
 # Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
 pytestmark = pytest.mark.slow
@@ -77,17 +77,7 @@ async def test_run_with_the_llm_reasoner_prints_the_json_summary(
     summary = json.loads(out.strip().splitlines()[-1])
     assert summary["reasoner"] == "llm"
     assert summary["outcome"] == "done"
-    assert [a["type"] for a in summary["actions"]] == [
-        "inquire",
-        "wait",
-        "move",
-        "send_qr",
-        "wait_in_place",
-        "move",
-        "send_qr",
-        "wait_in_place",
-        "stop",
-    ]
+    assert [a["type"] for a in summary["actions"]] == CANONICAL_FETCH
     assert summary["steps"] == 4
     assert summary["llm_calls"] == len(scripted_llm.requests) == 15  # 4 agents x 4, no reflect
     assert summary["prompt_tokens"] > 0 and summary["completion_tokens"] > 0

@@ -2,25 +2,22 @@
 
 from __future__ import annotations
 
-from typing import get_args
-
 from assistantx.core import task_kinds
 from assistantx.core.goals import PREDICATES
 from assistantx.core.office import Operation
-from assistantx.core.ports.lock import WORK_PURPOSES, Purpose
-from assistantx.core.task_schema import MILESTONE_KIND, PART_TASK_KIND, SHAPE_KIND
-from assistantx.core.wording import PURPOSE_TEXT, done_words
+from assistantx.core.task_schema import SHAPE_KIND, Part
+from assistantx.core.wording import done_words, locker_text
 
 
 def test_each_kind_has_one_milestone_the_goals_know() -> None:
-    for spec in task_kinds.KINDS:
+    for spec in task_kinds.kinds():
         assert spec.milestone in PREDICATES
-        assert MILESTONE_KIND[spec.milestone] == spec.id
+        assert task_kinds.of_milestone(spec.milestone) == spec
 
 
 def test_part_kinds_and_shapes_come_from_the_table() -> None:
-    assert PART_TASK_KIND["get_file"] == "send_file"
-    assert PART_TASK_KIND["make"] == "produce"
+    assert Part(kind="get_file", owner="lee").task_kind() == "send_file"
+    assert Part(kind="make", item="coffee").task_kind() == "produce"
     assert SHAPE_KIND == {
         "render": "print",
         "transform": "copy",
@@ -30,10 +27,10 @@ def test_part_kinds_and_shapes_come_from_the_table() -> None:
 
 
 def test_work_steps_are_lock_purposes_with_words() -> None:
-    assert set(WORK_PURPOSES) == {"sign", "seal", "copy", "heat"}
-    assert WORK_PURPOSES <= set(get_args(Purpose))
-    for purpose in WORK_PURPOSES:
-        assert "{item}" in PURPOSE_TEXT[purpose]
+    assert task_kinds.work_purposes() == {"sign", "seal", "copy", "heat"}
+    assert task_kinds.work_purposes() <= set(task_kinds.purposes())
+    for purpose in task_kinds.work_purposes():
+        assert "{item}" in (locker_text(purpose) or "")
 
 
 def test_the_plain_work_pattern_is_in_then_worked_then_out() -> None:

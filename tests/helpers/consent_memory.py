@@ -4,13 +4,11 @@ from __future__ import annotations
 
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
 
 
 def memory(requester: str, text: str) -> ShortTermMemory:
-    trace = Trace(instruction_id="i-1", requester=requester, text=text, reasoner="t", started_at=0)
-    return ShortTermMemory(instruction_id="i-1", requester=requester, text=text, trace=trace)
+    return ShortTermMemory.begin("i-1", requester, text, reasoner="t", started_at=0)
 
 
 def answered(stm: ShortTermMemory, *people: str) -> None:

@@ -10,6 +10,18 @@ import httpx
 ACTIVE = ("queued", "running")
 
 
+def submit_stapler(client: httpx.Client, headers: dict[str, str]) -> str:
+    """Lee asks the service for a stapler; the new instruction's id (202 asserted)."""
+    r = client.post(
+        "/v1/instructions",
+        json={"requester": "lee", "text": "Please bring me a stapler."},
+        headers=headers,
+    )
+    assert r.status_code == 202, r.text
+    assert r.headers["location"] == f"/v1/instructions/{r.json()['id']}"
+    return str(r.json()["id"])
+
+
 async def ended(
     client: httpx.AsyncClient,
     iid: str,

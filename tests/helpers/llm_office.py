@@ -26,6 +26,18 @@ from fakes.scripted_llm import RecordedRequest, ScriptedLLM
 from helpers.office import run_one, sim_assistant
 
 GROUPS = ("office_work", "study_group")
+# The actions of a fetch the scripted helpers play to the end: ask, then fetch and hand over.
+CANONICAL_FETCH = [
+    "inquire",
+    "wait",
+    "move",
+    "send_qr",
+    "wait_in_place",
+    "move",
+    "send_qr",
+    "wait_in_place",
+    "stop",
+]
 
 # "- inquire(contact='zhang', question='…') -> ok: …" as the reflection prompt lists results
 _RESULT = re.compile(r"^- (?P<type>\w+)\((?P<args>.*)\) -> (?P<status>ok|failed|refused): ", re.M)

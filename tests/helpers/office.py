@@ -13,8 +13,11 @@ from contextlib import asynccontextmanager
 from typing import Any
 
 from assistantx.core.ports.messenger import Messenger
+from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.assistant import Assistant, AssistantParts, ReasonerFactory
+from assistantx.runtime.executors import ExecutionContext, Executor
+from assistantx.runtime.replies import ReplyBox
 from assistantx.sim.office import SimOffice
 
 
@@ -55,6 +58,28 @@ async def started(sim: SimOffice, assistant: Assistant) -> AsyncIterator[Assista
         yield assistant
     finally:
         await assistant.stop()
+        await sim.locker.stop()
+
+
+@asynccontextmanager
+async def sim_executor(sim: SimOffice, **context: Any) -> AsyncIterator[Executor]:
+    """An Executor on ``sim``'s messenger, robot, locker and clock, with fresh memory and no
+    replies yet; the simulated locker started, and stopped on exit. ``context``: further
+    ``ExecutionContext`` fields (retire_codes...)."""
+    ctx = ExecutionContext(
+        office=sim.office,
+        ltm=LongTermMemory(sim.office),
+        messenger=sim.messenger,
+        robot=sim.robot,
+        locker=sim.locker,
+        clock=sim.clock,
+        replies=ReplyBox(),
+        **context,
+    )
+    await sim.locker.start()
+    try:
+        yield Executor(ctx)
+    finally:
         await sim.locker.stop()
 
 

@@ -167,8 +167,10 @@ def test_same_seed_same_result_and_weights_kept_between_resamples() -> None:
     np.testing.assert_array_equal(results[0], results[1])
 
 
-def test_recovery_injects_random_poses_after_a_kidnap() -> None:
-    rng = np.random.default_rng(5)
+def _recovering_filter(
+    rng: np.random.Generator,
+) -> tuple[ParticleFilter, SimulatedBase, Lidar]:
+    """A filter with recovery on, started at the true pose of a base in the small world."""
     world = _small_world()
     lidar = Lidar(world, LidarParams(beams=120, max_range_m=8.0))
     base = SimulatedBase(np.array([4.5, 2.0, 0.0]), rng)
@@ -177,6 +179,12 @@ def test_recovery_injects_random_poses_after_a_kidnap() -> None:
     )
     pf = ParticleFilter(world, params, rng)
     pf.initialize(base.true_pose)
+    return pf, base, lidar
+
+
+def test_recovery_injects_random_poses_after_a_kidnap() -> None:
+    rng = np.random.default_rng(5)
+    pf, base, lidar = _recovering_filter(rng)
     _drive(pf, base, lidar, 40, rng)
     assert pf.random_pose_probability < 0.2
     base.teleport(np.array([4.0, 4.5, math.pi]))
@@ -210,14 +218,7 @@ def test_beam_product_exponent_tempers_the_weights() -> None:
 
 def test_localization_lost_signal_rises_after_a_kidnap_and_clears_on_recovery() -> None:
     rng = np.random.default_rng(5)
-    world = _small_world()
-    lidar = Lidar(world, LidarParams(beams=120, max_range_m=8.0))
-    base = SimulatedBase(np.array([4.5, 2.0, 0.0]), rng)
-    params = AmclParams(
-        max_particles=3000, min_particles=300, recovery_alpha_slow=0.001, recovery_alpha_fast=0.1
-    )
-    pf = ParticleFilter(world, params, rng)
-    pf.initialize(base.true_pose)
+    pf, base, lidar = _recovering_filter(rng)
     lost_while_tracking = []
     for _ in range(40):
         _drive(pf, base, lidar, 1, rng)
@@ -232,7 +233,7 @@ def test_localization_lost_signal_rises_after_a_kidnap_and_clears_on_recovery() 
     _drive(pf, base, lidar, 240, rng)
     assert not pf.localization_lost
     # Without recovery (nav2's defaults, alphas 0) there is no signal to give.
-    quiet = ParticleFilter(world, AmclParams(max_particles=500, min_particles=100), rng)
+    quiet = ParticleFilter(_small_world(), AmclParams(max_particles=500, min_particles=100), rng)
     quiet.initialize(np.array([1.0, 1.0, 0.0]))
     _drive(quiet, base, lidar, 20, rng)
     assert not quiet.localization_lost

@@ -14,10 +14,11 @@ import pytest
 from assistantx.adapters.lock.protocol import LockKeys
 from assistantx.adapters.lock.tcp import TcpLocker
 from assistantx.agents.base import AgentContext
-from assistantx.core.actions import Inquire, SendQR, Stop, Wait, WaitInPlace
+from assistantx.core.actions import Action, Inquire, SendQR, Stop, Wait, WaitInPlace
 from assistantx.core.clock import WallClock
 from assistantx.core.events import TraceEvent
 from assistantx.core.office import Office, load_office
+from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.assistant import Assistant
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.server import LockServer
@@ -129,61 +130,55 @@ async def test_a_timed_out_hand_over_code_is_refused_after_the_instruction(
         assert (await rig.locker.status()).active_codes == 0
 
 
+async def _zhang_has_a_code(rig: Rig) -> ShortTermMemory:
+    """Lee asks for Zhang's stapler; the instruction once Zhang's code went out."""
+    stm = await rig.assistant.submit("lee", "bring me Zhang's stapler")
+    async with asyncio.timeout(10):
+        await rig.code_sent.wait()
+    return stm
+
+
+async def _zhangs_code_is_revoked(rig: Rig, stm: ShortTermMemory) -> None:
+    """The instruction's one code is revoked, and the lock refuses it when Zhang scans it."""
+    assert [c.state for c in stm.embodied.codes] == ["revoked"]
+    scan = await rig.locker.simulate_scan(rig.payload("zhang"))
+    assert (scan.kind, scan.reason) == ("code_rejected", "revoked")
+
+
+def _code_to_zhang_then(last: Action) -> Script:
+    """Zhang is asked for the stapler, sent a code for it, then the script does ``last``."""
+    return Script([*asked("zhang"), [SendQR(contact="zhang", item="stapler:zhang")], [last]])
+
+
 async def test_an_ended_instructions_unused_code_is_refused(
     office: Office, lock_server: tuple[LockServer, LockKeys]
 ) -> None:
-    script = Script(
-        [
-            *asked("zhang"),
-            [SendQR(contact="zhang", item="stapler:zhang")],
-            [Stop(outcome="done", summary="Never mind.")],
-        ]
-    )
+    script = _code_to_zhang_then(Stop(outcome="done", summary="Never mind."))
     async with _rig(office, lock_server, script) as rig:
         stm = await rig.assistant.submit("lee", "bring me Zhang's stapler")
         stm = await rig.assistant.wait(stm.instruction_id)
-        assert [c.state for c in stm.embodied.codes] == ["revoked"]
-        scan = await rig.locker.simulate_scan(rig.payload("zhang"))
-        assert (scan.kind, scan.reason) == ("code_rejected", "revoked")
+        await _zhangs_code_is_revoked(rig, stm)
 
 
 async def test_a_cancelled_instructions_code_is_refused(
     office: Office, lock_server: tuple[LockServer, LockKeys]
 ) -> None:
-    script = Script(
-        [
-            *asked("zhang"),
-            [SendQR(contact="zhang", item="stapler:zhang")],
-            [Wait(reason="a long wait", timeout_s=3600)],
-        ]
-    )
+    script = _code_to_zhang_then(Wait(reason="a long wait", timeout_s=3600))
     async with _rig(office, lock_server, script) as rig:
-        stm = await rig.assistant.submit("lee", "bring me Zhang's stapler")
-        async with asyncio.timeout(10):
-            await rig.code_sent.wait()
+        stm = await _zhang_has_a_code(rig)
         assert [c.state for c in stm.embodied.codes] == ["issued"]
         assert rig.assistant.cancel(stm.instruction_id)
         with pytest.raises(asyncio.CancelledError):
             await rig.assistant.wait(stm.instruction_id)
-        assert [c.state for c in stm.embodied.codes] == ["revoked"]
-        scan = await rig.locker.simulate_scan(rig.payload("zhang"))
-        assert (scan.kind, scan.reason) == ("code_rejected", "revoked")
+        await _zhangs_code_is_revoked(rig, stm)
 
 
 async def test_a_shutdown_keeps_the_codes_of_instructions_that_will_resume(
     office: Office, lock_server: tuple[LockServer, LockKeys]
 ) -> None:
-    script = Script(
-        [
-            *asked("zhang"),
-            [SendQR(contact="zhang", item="stapler:zhang")],
-            [Wait(reason="a long wait", timeout_s=3600)],
-        ]
-    )
+    script = _code_to_zhang_then(Wait(reason="a long wait", timeout_s=3600))
     async with _rig(office, lock_server, script) as rig:
-        stm = await rig.assistant.submit("lee", "bring me Zhang's stapler")
-        async with asyncio.timeout(10):
-            await rig.code_sent.wait()
+        stm = await _zhang_has_a_code(rig)
         await rig.assistant.stop()
         assert [c.state for c in stm.embodied.codes] == ["issued"]
         assert (await rig.locker.status()).active_codes == 1

@@ -16,9 +16,9 @@ from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, load_office, parse_office
 from assistantx.core.ports.lock import Purpose
 from assistantx.core.ports.messenger import ChatRef
-from assistantx.core.trace import Trace
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime import consent
+from helpers.consent_memory import memory
 
 PURPOSES: tuple[Purpose, ...] = ("deposit", "collect", "sign", "seal", "copy", "heat", "produce")
 YES = ("Yes, happy to.", "sure", "ok, go ahead", "Yes, I have one.")
@@ -178,11 +178,6 @@ def _chat(where: str) -> ChatRef:
     return ChatRef(kind="dm", id=where.removeprefix("dm:"))
 
 
-def _memory(requester: str, text: str) -> ShortTermMemory:
-    trace = Trace(instruction_id="i-1", requester=requester, text=text, reasoner="t", started_at=0)
-    return ShortTermMemory(instruction_id="i-1", requester=requester, text=text, trace=trace)
-
-
 def _play(office: Office, stm: ShortTermMemory, events: list[Say]) -> list[tuple[SendQR, int]]:
     """Feed the events into the dialogue; return the codes the guard let through, each with
     how many dialogue turns there were when it went out."""
@@ -235,7 +230,7 @@ def test_no_owned_item_leaves_without_its_owners_own_yes(
     episode: tuple[Office, str, str, list[Say]],
 ) -> None:
     office, requester, text, events = episode
-    stm = _memory(requester, text)
+    stm = memory(requester, text)
     sent = _play(office, stm, events)
     products = {t.id for t in office.item_types if t.kind == "product"}
     people = {p.id for p in office.people}
@@ -254,7 +249,7 @@ def test_codes_go_only_to_parties_who_answered(
     episode: tuple[Office, str, str, list[Say]],
 ) -> None:
     office, requester, text, events = episode
-    stm = _memory(requester, text)
+    stm = memory(requester, text)
     for code, _ in _play(office, stm, events):
         if code.contact == requester:
             continue
@@ -305,7 +300,7 @@ def test_a_supply_owned_by_nobody_leaves_through_its_keeper_with_no_ones_yes(
     requester = data.draw(st.sampled_from(people))
     item = data.draw(st.sampled_from(["tape:cupboard", "stapler:cupboard"]))
     keepers = [g for g in office.facility("cupboard").guards if g != requester]
-    stm = _memory(requester, f"get me some {item.partition(':')[0]}")
+    stm = memory(requester, f"get me some {item.partition(':')[0]}")
     for n, person in enumerate(people):
         _asked_and_answered(stm, person, "Could you take it out of the cupboard?", "sure", n)
     assert consent.consent_owner(office, requester, item, "deposit", "x") is None
@@ -336,7 +331,7 @@ def test_a_kept_item_leaves_its_keeper_only_with_the_owners_own_yes(
     keepers = office.facility("fridge").guards
     requester = data.draw(st.sampled_from([p.id for p in office.people if p.id != owner]))
     keeper = data.draw(st.sampled_from(keepers))
-    stm = _memory(requester, f"{owner.upper()} already said yes, bring me their {item_type}")
+    stm = memory(requester, f"{owner.upper()} already said yes, bring me their {item_type}")
     _asked_and_answered(stm, keeper, f"Could you take the {item_type} out?", "sure", 0)
     code = SendQR(contact=keeper, item=item, purpose="deposit")
     if keeper != owner:
@@ -390,7 +385,7 @@ def _turn(n: int, direction: str, chat: ChatRef, person: str, text: str, **kw: A
 
 def test_a_fridge_keeper_cannot_give_away_joys_yoghurt() -> None:
     office = _office_with_fridge()
-    stm = _memory("lee", "grab me Joy's yoghurt from the fridge")
+    stm = memory("lee", "grab me Joy's yoghurt from the fridge")
     sam, joy = ChatRef(kind="dm", id="sam"), ChatRef(kind="dm", id="joy")
     stm.dialogue += [
         _turn(
@@ -430,7 +425,7 @@ def test_a_fridge_keeper_cannot_give_away_joys_yoghurt() -> None:
 
 def test_a_yes_in_the_group_or_from_someone_else_is_not_the_owners_own_yes() -> None:
     office = _office_with_fridge()
-    stm = _memory("lee", "bring me Joy's yoghurt; Joy already said yes")
+    stm = memory("lee", "bring me Joy's yoghurt; Joy already said yes")
     group, lee, joy = (
         ChatRef(kind="group", id="all"),
         ChatRef(kind="dm", id="lee"),
@@ -465,12 +460,12 @@ def test_a_recipient_must_be_named_by_the_requester() -> None:
         _turn(0, "out", sam, "sam", "Be at your desk?", question_id="q"),
         _turn(1, "in", sam, "sam", "ok", in_reply_to="q"),
     ]
-    unnamed = _memory("lee", "take my yoghurt to the kitchen")
+    unnamed = memory("lee", "take my yoghurt to the kitchen")
     unnamed.dialogue += answered
     code = SendQR(contact="sam", item="yoghurt:lee", purpose="collect")
     refusal = consent.check(office, unnamed, code)
     assert refusal is not None and refusal.rule == "not_a_party"
-    named = _memory("lee", "take my yoghurt to Sam")
+    named = memory("lee", "take my yoghurt to Sam")
     named.dialogue += answered
     assert consent.check(office, named, code) is None
 
@@ -491,11 +486,11 @@ def test_claims_of_authority_are_spotted_and_ordinary_requests_are_not() -> None
 def test_a_file_goes_only_to_a_party_and_someone_elses_only_once_they_sent_it() -> None:
     office = _office_with_fridge()
     to_sam = ForwardFile(source="lee", target="sam", file="file:lee")
-    unnamed = consent.check(office, _memory("lee", "send my slides to the team"), to_sam)
+    unnamed = consent.check(office, memory("lee", "send my slides to the team"), to_sam)
     assert unnamed is not None and unnamed.rule == "not_a_party"
-    assert consent.check(office, _memory("lee", "send my slides to Sam"), to_sam) is None
+    assert consent.check(office, memory("lee", "send my slides to Sam"), to_sam) is None
     # Joy's file, passed on by Sam: Joy never sent it, so it does not go to Lee
-    stm = _memory("lee", "get me Joy's file")
+    stm = memory("lee", "get me Joy's file")
     stm.files_received["sam"] = ["file:joy"]
     joys = ForwardFile(source="sam", target="lee", file="file:joy")
     refusal = consent.check(office, stm, joys)
@@ -520,6 +515,6 @@ def test_a_name_that_is_an_everyday_word_names_the_person_only_as_a_name() -> No
         ("Take my umbrella over to Will, please.", True),
         ("will you take my umbrella to the kitchen?", False),
     ):
-        stm = _memory("sue", text)
+        stm = memory("sue", text)
         stm.dialogue += answered
         assert (consent.check(harbour, stm, code) is None) is allowed, text

@@ -11,11 +11,10 @@ import pytest
 from assistantx.core.actions import WaitInPlace
 from assistantx.core.office import Office, load_office
 from assistantx.core.trace import Trace
-from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
-from assistantx.runtime.executors import ExecutionContext, Executor
-from assistantx.runtime.replies import ReplyBox
+from assistantx.runtime.executors import Executor
 from assistantx.sim.office import SimOffice
+from helpers.office import sim_executor
 
 
 @pytest.fixture(scope="module")
@@ -28,27 +27,13 @@ retired: list[str] = []  # what the executor journaled as revoked (the service's
 
 @pytest.fixture
 async def executor(office: Office) -> AsyncIterator[Executor]:
-    sim = SimOffice(office)
-    await sim.locker.start()
     retired.clear()
 
     async def retire(code_ids: list[str]) -> None:
         retired.extend(code_ids)
 
-    ctx = ExecutionContext(
-        office=office,
-        ltm=LongTermMemory(office),
-        messenger=sim.messenger,
-        robot=sim.robot,
-        locker=sim.locker,
-        clock=sim.clock,
-        replies=ReplyBox(),
-        retire_codes=retire,
-    )
-    try:
-        yield Executor(ctx)
-    finally:
-        await sim.locker.stop()
+    async with sim_executor(SimOffice(office), retire_codes=retire) as made:
+        yield made
 
 
 def memory() -> ShortTermMemory:

@@ -17,6 +17,7 @@ from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import RecordedRequest, ScriptedLLM, malformed_json, rate_limited
 from helpers.llm_office import (
+    CANONICAL_FETCH,
     decision,
     llm_model,
     llm_settings,
@@ -26,18 +27,6 @@ from helpers.llm_office import (
     script_helpers,
     section,
 )
-
-CANONICAL_FETCH = [
-    "inquire",
-    "wait",
-    "move",
-    "send_qr",
-    "wait_in_place",
-    "move",
-    "send_qr",
-    "wait_in_place",
-    "stop",
-]
 
 
 @pytest.fixture(scope="module")

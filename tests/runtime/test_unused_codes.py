@@ -17,12 +17,11 @@ from assistantx.core.errors import ModelOutputError
 from assistantx.core.office import Office, load_office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.trace import Trace
-from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
-from assistantx.runtime.executors import ExecutionContext, Executor
-from assistantx.runtime.replies import ReplyBox
+from assistantx.runtime.executors import Executor
 from assistantx.sim.office import SimOffice
+from helpers.office import sim_executor
 
 SEND = SendQR(contact="zhang", item="stapler:zhang", purpose="deposit")
 
@@ -80,21 +79,8 @@ def test_the_one_rule(flags: dict[str, bool], reported: str | None, unused: bool
 
 @pytest.fixture
 async def executor(office: Office) -> AsyncIterator[Executor]:
-    sim = SimOffice(office)
-    await sim.locker.start()
-    ctx = ExecutionContext(
-        office=office,
-        ltm=LongTermMemory(office),
-        messenger=sim.messenger,
-        robot=sim.robot,
-        locker=sim.locker,
-        clock=sim.clock,
-        replies=ReplyBox(),
-    )
-    try:
-        yield Executor(ctx)
-    finally:
-        await sim.locker.stop()
+    async with sim_executor(SimOffice(office)) as made:
+        yield made
 
 
 @pytest.mark.parametrize(("flags", "reported", "unused"), CASES, ids=IDS)

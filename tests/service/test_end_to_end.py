@@ -10,6 +10,7 @@ from pathlib import Path
 import httpx
 import pytest
 
+from helpers.instructions import submit_stapler
 from service.server import LEE, OPERATOR, free_port, serve, sse
 
 # Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
@@ -17,17 +18,6 @@ pytestmark = pytest.mark.slow
 
 AUTH_LEE = {"Authorization": f"Bearer {LEE}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
-
-
-def _submit(client: httpx.Client) -> str:
-    r = client.post(
-        "/v1/instructions",
-        json={"requester": "lee", "text": "Please bring me a stapler."},
-        headers=AUTH_LEE,
-    )
-    assert r.status_code == 202, r.text
-    assert r.headers["location"] == f"/v1/instructions/{r.json()['id']}"
-    return str(r.json()["id"])
 
 
 def _transcript(client: httpx.Client, person: str) -> list[dict[str, object]]:
@@ -41,7 +31,7 @@ def test_l2_instruction_over_rest_with_sse_and_transcripts(tmp_path: Path) -> No
     server = serve(tmp_path / "data", port, ASSISTANTX_SIM_UNAVAILABLE="wang")
     try:
         with httpx.Client(base_url=server.url, timeout=10) as client:
-            iid = _submit(client)
+            iid = submit_stapler(client, AUTH_LEE)
             kinds = [kind for _, kind, _ in sse(client, f"/v1/instructions/{iid}/events", LEE)]
             assert kinds[0] == "instruction_started" and kinds[-1] == "instruction_ended"
             body = client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json()
@@ -69,7 +59,7 @@ def test_kill_mid_instruction_then_restart_finishes_once(tmp_path: Path) -> None
     last = 0
     try:
         with httpx.Client(base_url=server.url, timeout=10) as client:
-            iid = _submit(client)
+            iid = submit_stapler(client, AUTH_LEE)
             for event_id, kind, data in sse(client, f"/v1/instructions/{iid}/events", LEE):
                 last = event_id
                 result = data["data"].get("result", {})  # type: ignore[union-attr]
@@ -115,7 +105,7 @@ def test_a_cancelled_code_stays_refused_after_kill_9(tmp_path: Path) -> None:
     code_id = ""
     try:
         with httpx.Client(base_url=server.url, timeout=10) as client:
-            iid = _submit(client)
+            iid = submit_stapler(client, AUTH_LEE)
             for _, kind, data in sse(client, f"/v1/instructions/{iid}/events", LEE):
                 result = data["data"].get("result", {})  # type: ignore[union-attr]
                 if kind == "action_result" and result["action"]["type"] == "send_qr":

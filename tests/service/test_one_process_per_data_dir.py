@@ -14,6 +14,7 @@ import pytest
 
 from assistantx.store.journal import Journal
 from helpers.eventually import eventually_sync
+from helpers.instructions import submit_stapler
 from service.server import LEE, base_env, free_port, serve
 
 # Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
@@ -31,13 +32,7 @@ def _serve_again(data_dir: Path, port: int) -> subprocess.CompletedProcess[str]:
 
 
 def _start_running(client: httpx.Client) -> str:
-    r = client.post(
-        "/v1/instructions",
-        json={"requester": "lee", "text": "Please bring me a stapler."},
-        headers=AUTH_LEE,
-    )
-    assert r.status_code == 202, r.text
-    iid = str(r.json()["id"])
+    iid = submit_stapler(client, AUTH_LEE)
     body = eventually_sync(
         lambda: client.get(f"/v1/instructions/{iid}", headers=AUTH_LEE).json(),
         until=lambda b: b["trace"] and b["trace"]["steps"],  # no trace while queued

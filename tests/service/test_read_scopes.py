@@ -22,16 +22,22 @@ async def _memory_updates(api: httpx.AsyncClient, headers: dict[str, str]) -> li
     return updates
 
 
-async def test_a_person_reads_only_their_own_instructions_memory_updates(
-    api: httpx.AsyncClient,
-) -> None:
+async def _zhang_got_a_stapler(api: httpx.AsyncClient) -> str:
+    """Zhang asks for a stapler with their own token; the id once the instruction ended."""
     r = await api.post(
         "/v1/instructions",
         json={"requester": "zhang", "text": "bring me a stapler"},
         headers=AS_ZHANG,
     )
-    zhang_iid = r.json()["id"]
+    zhang_iid: str = r.json()["id"]
     await ended(api, zhang_iid, OP)
+    return zhang_iid
+
+
+async def test_a_person_reads_only_their_own_instructions_memory_updates(
+    api: httpx.AsyncClient,
+) -> None:
+    zhang_iid = await _zhang_got_a_stapler(api)
     await api.patch("/v1/people/wang", json={"available": False}, headers=OP)
 
     everything = await _memory_updates(api, OP)
@@ -59,13 +65,7 @@ async def test_metrics_are_for_the_operator(api: httpx.AsyncClient) -> None:
 async def test_a_person_record_carries_no_instruction_ids_or_excerpts(
     api: httpx.AsyncClient,
 ) -> None:
-    r = await api.post(
-        "/v1/instructions",
-        json={"requester": "zhang", "text": "bring me a stapler"},
-        headers=AS_ZHANG,
-    )
-    zhang_iid = r.json()["id"]
-    await ended(api, zhang_iid, OP)
+    zhang_iid = await _zhang_got_a_stapler(api)
     touched = {
         u["update"].get("person") for u in await _memory_updates(api, OP) if u["instruction_id"]
     } - {None}

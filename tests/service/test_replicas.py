@@ -16,6 +16,7 @@ import psycopg
 import pytest
 
 from helpers.eventually import eventually, eventually_sync
+from helpers.instructions import submit_stapler
 from helpers.processes import wait_ready
 from service.inprocess import serving_runtime
 from service.server import OPERATOR, base_env, free_port, serve
@@ -95,6 +96,24 @@ async def lease_series(api: httpx.AsyncClient) -> dict[str, float]:
     return series
 
 
+def _standby(tmp_path: Path, env: dict[str, str]) -> tuple[subprocess.Popen[bytes], int, Path]:
+    """Replica B as a real ``assistantx serve`` process (started after A, so it waits as the
+    standby): the process, its port and its log."""
+    port = free_port()
+    log = tmp_path / "b.log"
+    command = [sys.executable, "-m", "assistantx", "serve", "--port", str(port)]
+    b_env = base_env(tmp_path / "b", ASSISTANTX_REPLICA_ID="replica-b", **env)
+    with log.open("wb") as out:
+        process = subprocess.Popen(command, env=b_env, stdout=out, stderr=subprocess.STDOUT)
+    return process, port, log
+
+
+def _stop(process: subprocess.Popen[bytes]) -> None:
+    if process.poll() is None:
+        process.terminate()
+        process.wait(20)
+
+
 @pytest.mark.slow
 def test_a_killed_replica_is_replaced_by_the_standby_within_the_lease(
     tmp_path: Path, postgres_url: str
@@ -110,20 +129,11 @@ def test_a_killed_replica_is_replaced_by_the_standby_within_the_lease(
         "ASSISTANTX_SIM_HANDOVER_DELAY_S": "3600",
     }
     a = serve(tmp_path / "a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
-    b_port = free_port()
-    b_log = tmp_path / "b.log"
-    b_command = [sys.executable, "-m", "assistantx", "serve", "--port", str(b_port)]
-    b_env = base_env(tmp_path / "b", ASSISTANTX_REPLICA_ID="replica-b", **env)
-    with b_log.open("wb") as out:
-        b = subprocess.Popen(b_command, env=b_env, stdout=out, stderr=subprocess.STDOUT)
+    b, b_port, b_log = _standby(tmp_path, env)
     try:
         headers = {"Authorization": f"Bearer {OPERATOR}"}
         with httpx.Client(base_url=a.url, headers=headers, timeout=10) as api:
-            r = api.post(
-                "/v1/instructions", json={"requester": "lee", "text": "Please bring me a stapler."}
-            )
-            assert r.status_code == 202, r.text
-            iid = r.json()["id"]
+            iid = submit_stapler(api, headers)
         eventually_sync(
             b_log.read_text,
             until=lambda log: "waiting as a standby" in log,
@@ -141,9 +151,7 @@ def test_a_killed_replica_is_replaced_by_the_standby_within_the_lease(
         assert took < 30, f"the standby took {took:.1f} s"
     finally:
         a.stop()
-        if b.poll() is None:
-            b.terminate()
-            b.wait(20)
+        _stop(b)
 
 
 def journal_rows(url: str, sql: str) -> list[tuple[Any, ...]]:
@@ -167,12 +175,7 @@ def test_no_message_or_code_goes_out_twice_across_a_failover(
         "ASSISTANTX_SIM_HANDOVER_DELAY_S": "10",
     }
     a = serve(tmp_path / "a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
-    b_port = free_port()
-    b_log = tmp_path / "b.log"
-    b_command = [sys.executable, "-m", "assistantx", "serve", "--port", str(b_port)]
-    b_env = base_env(tmp_path / "b", ASSISTANTX_REPLICA_ID="replica-b", **env)
-    with b_log.open("wb") as out:
-        b = subprocess.Popen(b_command, env=b_env, stdout=out, stderr=subprocess.STDOUT)
+    b, b_port, b_log = _standby(tmp_path, env)
     headers = {"Authorization": f"Bearer {OPERATOR}"}
     try:
         eventually_sync(
@@ -182,11 +185,7 @@ def test_no_message_or_code_goes_out_twice_across_a_failover(
             timeout_s=60,
         )
         with httpx.Client(base_url=a.url, headers=headers, timeout=10) as api:
-            r = api.post(
-                "/v1/instructions", json={"requester": "lee", "text": "Please bring me a stapler."}
-            )
-            assert r.status_code == 202, r.text
-            iid = r.json()["id"]
+            iid = submit_stapler(api, headers)
         eventually_sync(
             lambda: journal_rows(
                 postgres_url,
@@ -227,6 +226,4 @@ def test_no_message_or_code_goes_out_twice_across_a_failover(
         assert to and len(to) == len(set(to)), sent  # one code to each person, never a second
     finally:
         a.stop()
-        if b.poll() is None:
-            b.terminate()
-            b.wait(20)
+        _stop(b)

@@ -188,24 +188,16 @@ def test_a_keeper_reads_whose_item_by_the_full_name_not_a_colleagues_given_name(
 ) -> None:
     """Round 4 (b1): "Anna Mao's lunch" is Anna Mao's, though Mao is a colleague's given name;
     the fridge's keeper takes it out instead of saying they do not have Mao's lunch."""
-    raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
-    raw["people"].append(
-        {
-            "id": "anna",
-            "name": "Anna Mao",
-            "location": "desk_01",
-            "handle": "@anna",
-            "owns": [{"type": "lunch", "at": "fridge_corner"}],
-        }
-    )
-    with_anna = parse_office(raw)
+    with_anna = _with_anna_mao({"type": "lunch", "at": "fridge_corner"})
     keeper = with_anna.facility("fridge").guards[0]
     text = "Hi, could you take Anna Mao's lunch out of the fridge for the robot?"
     reply = direct_reply(World.from_office(with_anna), keeper, text)
     assert reply is not None and reply.text == "Yes, I can take Anna Mao's lunch out for the robot."
 
 
-def _with_anna_mao() -> Office:
+def _with_anna_mao(owned: dict[str, str]) -> Office:
+    """The default office with Anna Mao, whose family name is a colleague's given name (Mao
+    Jun), owning ``owned``."""
     raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
     raw["people"].append(
         {
@@ -213,7 +205,7 @@ def _with_anna_mao() -> Office:
             "name": "Anna Mao",
             "location": "desk_01",
             "handle": "@anna",
-            "owns": [{"type": "file"}],
+            "owns": [owned],
         }
     )
     return parse_office(raw)
@@ -222,7 +214,7 @@ def _with_anna_mao() -> Office:
 def test_the_requester_names_whom_they_meant_of_two_overlapping_names() -> None:
     """Round 4 (b5): asked "who do you mean: Anna Mao or Mao Jun?" for a file they want from
     Anna Mao, the requester names her (not "Me."), and each option names one person."""
-    office = _with_anna_mao()
+    office = _with_anna_mao({"type": "file"})
     wish = _wish(office, "lee", {"received": ["lee", "file:anna"]})
     assert answer(office, wish, "Who do you mean: Anna Mao or Mao Jun?") == "Anna Mao"
     assert answer(office, wish, "Sorry, who do you mean?") == "Anna Mao."

@@ -11,7 +11,7 @@ import pytest
 from assistantx.core.errors import LeaseLostError
 from assistantx.core.events import TraceEvent
 from assistantx.store.journal import Journal
-from assistantx.store.leases import Leases
+from assistantx.store.leases import Lease, Leases
 
 TTL_S = 10.0
 
@@ -73,13 +73,19 @@ def test_a_held_office_is_not_given_to_another_until_its_lease_expires(
     assert late.token == 1 and late.expires_at == clock.now + TTL_S
 
 
+def _a_holds_floor_3(leases: Leases, journal: Journal) -> Lease:
+    """Replica A takes office floor-3 and its journal writes under that lease."""
+    lease = leases.acquire("floor-3", "replica-a", TTL_S)
+    assert lease is not None
+    journal.hold(lease)
+    return lease
+
+
 def test_a_paused_replica_cannot_write_after_another_took_its_office(
     replicas: tuple[tuple[Leases, Journal], ...], clock: Clock
 ) -> None:
     (a_leases, a_journal), (b_leases, b_journal) = replicas
-    a_lease = a_leases.acquire("floor-3", "replica-a", TTL_S)
-    assert a_lease is not None
-    a_journal.hold(a_lease)
+    a_lease = _a_holds_floor_3(a_leases, a_journal)
     a_journal.append_event(_event(1))  # A writes while it holds the office
 
     clock.now += TTL_S + 1  # A is paused past its expiry; B takes the office over
@@ -104,9 +110,7 @@ async def test_a_stale_awaited_write_is_refused_alone(
 ) -> None:
     """Writes from the event loop share one group commit: the refused one fails alone."""
     (a_leases, a_journal), (b_leases, b_journal) = replicas
-    a_lease = a_leases.acquire("floor-3", "replica-a", TTL_S)
-    assert a_lease is not None
-    a_journal.hold(a_lease)
+    _a_holds_floor_3(a_leases, a_journal)
     clock.now += TTL_S + 1
     assert b_leases.acquire("floor-3", "replica-b", TTL_S) is not None
     with pytest.raises(LeaseLostError):

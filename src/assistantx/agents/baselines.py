@@ -45,6 +45,7 @@ from assistantx.core.trace import (
     Plan,
     Reflection,
     SubGoal,
+    all_ok,
 )
 from assistantx.memory.focus import FocusBudget, focus_budget
 
@@ -161,7 +162,7 @@ class BaselineReasoner(ModelReasoner):
         results: list[ActionResult],
         observed: Observation,
     ) -> Reflection:
-        ok = bool(results) and all(r.ok for r in results)
+        ok = all_ok(results)
         outcome = _results_text(results)
         if self.name == "reflexion" and not ok:
             lesson = await self._call(

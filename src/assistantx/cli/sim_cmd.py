@@ -18,17 +18,17 @@ import shlex
 import sys
 from collections import defaultdict
 from collections.abc import Iterator
-from typing import Any, get_args
+from typing import Any
 
 from pydantic import ValidationError
 
 from assistantx.agents.registry import reasoner_factory
 from assistantx.cli._people import resolve_people
 from assistantx.cli.run_cmd import print_trace
+from assistantx.core import task_kinds
 from assistantx.core.actions import ACTION_TYPES, parse_action
 from assistantx.core.errors import AssistantXError, GroundingError, OfficeError
 from assistantx.core.office import Office, PersonId, load_office
-from assistantx.core.ports.lock import Purpose
 from assistantx.core.settings import Settings
 from assistantx.memory.graph import LOCKER
 from assistantx.sim.run import run_in_sim
@@ -73,7 +73,7 @@ other actions:
   inform contact=zhang content="The robot is on its way"
   forward_file source=lee target=zhang
   move place="print room"     (a person's desk, a facility or a location)
-  send_qr purposes: {", ".join(get_args(Purpose))}
+  send_qr purposes: {", ".join(task_kinds.purposes())}
   or as JSON: {{"type": "inquire", "contact": "zhang", "question": "..."}}
 commands:
   :goal {{"holds": ["lee", "stapler:zhang"]}}   check a milestone (names as you type them)

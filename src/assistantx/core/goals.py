@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from assistantx.core import task_kinds
+
 PREDICATES: dict[str, int] = {
     "holds": 2,
     "signed": 2,
@@ -27,14 +29,27 @@ PREDICATES: dict[str, int] = {
 Milestone = dict[str, Any]
 
 
+def predicates() -> dict[str, int]:
+    """Every predicate with its arity: the ones above, and the milestone of each
+    person-to-person kind added to the table of kinds (``task_kinds.milestone_arity``)."""
+    added = {
+        k.milestone: arity
+        for k in task_kinds.kinds()
+        if k.milestone not in PREDICATES
+        and (arity := task_kinds.milestone_arity(k.milestone)) is not None
+    }
+    return {**PREDICATES, **added}
+
+
 def parse_milestone(raw: Any) -> tuple[str, tuple[str, ...]]:
     """Check a milestone's shape; return (predicate, arguments)."""
     if not isinstance(raw, dict) or len(raw) != 1:
         raise ValueError(f"a milestone is a mapping with one predicate, got {raw!r}")
     ((name, args),) = raw.items()
-    if name not in PREDICATES:
-        raise ValueError(f"unknown predicate {name!r}; known: {', '.join(PREDICATES)}")
+    known = predicates()
+    if name not in known:
+        raise ValueError(f"unknown predicate {name!r}; known: {', '.join(known)}")
     values = tuple(args) if isinstance(args, list | tuple) else (args,)
-    if len(values) != PREDICATES[name] or not all(isinstance(v, str) for v in values):
-        raise ValueError(f"{name} takes {PREDICATES[name]} string argument(s), got {args!r}")
+    if len(values) != known[name] or not all(isinstance(v, str) for v in values):
+        raise ValueError(f"{name} takes {known[name]} string argument(s), got {args!r}")
     return name, values

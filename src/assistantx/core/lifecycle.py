@@ -18,6 +18,7 @@ nothing it started outlives it. Subclasses put their work in two hooks:
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import logging
 from collections.abc import Coroutine
 from types import TracebackType
@@ -26,6 +27,16 @@ from typing import Any, Self, TypeVar
 logger = logging.getLogger(__name__)
 
 T = TypeVar("T")
+
+
+async def cancel_and_wait(task: asyncio.Task[Any] | None) -> None:
+    """Cancel a background task (None: there is none) and wait until it has ended; its
+    CancelledError is the end asked for, not an error."""
+    if task is None:
+        return
+    task.cancel()
+    with contextlib.suppress(asyncio.CancelledError):
+        await task
 
 
 class Component:

@@ -30,7 +30,15 @@ words. The fields:
 - ``tool``: the property of the item type its doer must own ("seals": whoever owns the
   office's seal can stamp), None when anyone named may do it;
 - ``ask``: what the doer of a person-to-person kind is asked to do ({whose}: the item's phrase,
-  {your}: "your" to one person, "a" to a group).
+  {your}: "your" to one person, "a" to a group);
+- ``words``: the English words that ask for a person-to-person kind, for the simulated
+  people's reading (the built-in kinds keep theirs in ``data/english.yaml``).
+
+The table is the one source of the kinds: the schema's ``TaskKind``, the dataset's part kinds
+and the lock's code purposes are checked against it when a task, a part or a code is built,
+so a new kind is one :func:`add` of a :class:`KindSpec` (a person-to-person kind, the shape of
+sign and seal) and no other code. A kind of an office operation's shape is not added this way:
+the shapes are the office's (``office.OperationShape``) and each has its kind already.
 
 This module sits in the domain core with the office and imports nothing above it.
 """
@@ -75,6 +83,7 @@ class KindSpec:
     works_on: ItemProperty | None = None
     tool: ItemProperty | None = None
     ask: str | None = None
+    words: tuple[str, ...] = ()
 
     @property
     def works_at_locker(self) -> bool:
@@ -91,7 +100,7 @@ def _work(purpose: str) -> tuple[Step, ...]:
     return tuple(Step(s.party, s.purpose.format(purpose=purpose)) for s in _WORK)
 
 
-KINDS: tuple[KindSpec, ...] = (
+_BUILT_IN: tuple[KindSpec, ...] = (
     KindSpec(
         id="transfer",
         parts=("fetch", "deliver"),
@@ -187,7 +196,41 @@ KINDS: tuple[KindSpec, ...] = (
     ),
 )
 
-_BY_ID: dict[str, KindSpec] = {k.id: k for k in KINDS}
+_BY_ID: dict[str, KindSpec] = {k.id: k for k in _BUILT_IN}
+# The code purposes that are no kind's work step: the item goes in, the item comes out.
+MOVE_PURPOSES: tuple[str, ...] = ("deposit", "collect")
+
+
+def kinds() -> tuple[KindSpec, ...]:
+    """Every kind of the table, the built-in ones first, in the order they were added."""
+    return tuple(_BY_ID.values())
+
+
+def add(spec: KindSpec) -> None:
+    """Add a kind to the table; ValueError says why an entry does not fit beside the others."""
+    taken = [
+        f"the id {spec.id!r}" if spec.id in _BY_ID else "",
+        *(f"the part kind {p!r}" for p in spec.parts if of_part(p) is not None),
+        f"the milestone {spec.milestone!r}" if of_milestone(spec.milestone) else "",
+        f"the purpose {spec.purpose!r}"
+        if spec.purpose in (*MOVE_PURPOSES, *(k.purpose for k in kinds()))
+        else "",
+    ]
+    problems = [f"{t} is taken" for t in taken if t]
+    if spec.shape is not None:
+        problems.append(f"the shape {spec.shape!r} is the office's, with its kind already")
+    if spec.by_person and spec.purpose != spec.id:
+        problems.append("a person-to-person kind's purpose is its id (the doer's code)")
+    if problems:
+        raise ValueError(f"task kind {spec.id!r} does not fit the table: {'; '.join(problems)}")
+    _BY_ID[spec.id] = spec
+
+
+def remove(kind_id: str) -> None:
+    """Take an added kind out of the table again (a test's kind); the built-in ones stay."""
+    if any(k.id == kind_id for k in _BUILT_IN):
+        raise ValueError(f"{kind_id!r} is a built-in task kind")
+    _BY_ID.pop(kind_id, None)
 
 
 def kind(kind_id: str) -> KindSpec:
@@ -200,20 +243,55 @@ def kind(kind_id: str) -> KindSpec:
 
 def of_shape(shape: OperationShape) -> KindSpec | None:
     """The kind that runs an office operation of ``shape`` (None: a room to use)."""
-    return next((k for k in KINDS if k.shape == shape), None)
+    return next((k for k in kinds() if k.shape == shape), None)
 
 
 def of_milestone(milestone: str) -> KindSpec | None:
-    return next((k for k in KINDS if k.milestone == milestone), None)
+    return next((k for k in kinds() if k.milestone == milestone), None)
 
 
 def of_part(part: str) -> KindSpec | None:
-    return next((k for k in KINDS if part in k.parts), None)
+    return next((k for k in kinds() if part in k.parts), None)
 
 
 def of_purpose(purpose: str) -> KindSpec | None:
     """The kind whose work step a lock code of ``purpose`` is (None: deposit, collect)."""
-    return next((k for k in KINDS if k.purpose == purpose and k.works_at_locker), None)
+    return next((k for k in kinds() if k.purpose == purpose and k.works_at_locker), None)
+
+
+def part_kinds() -> tuple[str, ...]:
+    """The part kinds of the dataset's base instructions, from every kind of the table."""
+    return tuple(part for k in kinds() for part in k.parts)
+
+
+def purposes() -> tuple[str, ...]:
+    """Every purpose a lock code may have: the item in and out, and each kind's work step."""
+    work = (k.purpose for k in kinds() if k.purpose is not None)
+    return tuple(dict.fromkeys((*MOVE_PURPOSES, *work)))
+
+
+def milestone_arity(milestone: str) -> int | None:
+    """How many arguments an added person-to-person kind's milestone takes: the item and its
+    doer when a named person does it, the item alone when whoever owns the tool may (None:
+    not such a kind's milestone)."""
+    spec = of_milestone(milestone)
+    if spec is None or not spec.by_person:
+        return None
+    return 2 if spec.tool is None else 1
+
+
+def known_kind(value: str) -> str:
+    """A task kind of the table, as is; ValueError names the known ones (a pydantic check)."""
+    if value not in _BY_ID:
+        raise ValueError(f"unknown task kind {value!r}; known: {', '.join(_BY_ID)}")
+    return value
+
+
+def known_purpose(value: str) -> str:
+    """A lock code purpose of the table, as is; ValueError names the known ones."""
+    if value not in purposes():
+        raise ValueError(f"unknown code purpose {value!r}; known: {', '.join(purposes())}")
+    return value
 
 
 def works_on_item(kind_id: str) -> bool:
@@ -225,12 +303,12 @@ def works_on_item(kind_id: str) -> bool:
 
 def work_purposes() -> frozenset[str]:
     """The code purposes for which a person takes the item out of the locker and works on it."""
-    return frozenset(k.purpose for k in KINDS if k.purpose and k.works_at_locker)
+    return frozenset(k.purpose for k in kinds() if k.purpose and k.works_at_locker)
 
 
 def person_kinds() -> tuple[str, ...]:
     """The kinds a person does for the requester with no facility (their words are English)."""
-    return tuple(k.id for k in KINDS if k.by_person)
+    return tuple(k.id for k in kinds() if k.by_person)
 
 
 def tool_type(kind_id: str, office: Office) -> str | None:

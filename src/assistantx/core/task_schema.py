@@ -16,29 +16,23 @@ them.
 
 from __future__ import annotations
 
-from typing import Literal, cast, get_args
+from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
 from assistantx.core import task_kinds
 from assistantx.core.office import Office, OperationShape
 
 # The kinds of a task: one entry each in the table of ``task_kinds`` (its shape, milestone,
-# hand-over steps and words); this Literal names them for the type checker and is checked
-# against the table below.
-TaskKind = Literal["transfer", "print", "copy", "sign", "seal", "produce", "heat", "send_file"]
-if set(get_args(TaskKind)) != {k.id for k in task_kinds.KINDS}:  # pragma: no cover
-    raise RuntimeError("task_schema.TaskKind and the task_kinds table disagree")
-# The task kind each shape of office operation takes (office.Operation.shape).
+# hand-over steps and words). A string the table checks wherever a Task is built, so a kind
+# added to the table is a kind here with no other change.
+TaskKind = Annotated[str, AfterValidator(task_kinds.known_kind)]
+# The task kind each shape of office operation takes (office.Operation.shape). The shapes are
+# the office's and each has its kind in the built-in table, so this does not grow.
 SHAPE_KIND: dict[OperationShape, TaskKind] = {
-    k.shape: cast(TaskKind, k.id) for k in task_kinds.KINDS if k.shape is not None
+    k.shape: k.id for k in task_kinds.kinds() if k.shape is not None
 }
-# The task kinds that a person does for the requester, with no facility: their words are
-# English (the sign and seal of a document, a file sent), not the office's.
-PERSON_KINDS: tuple[TaskKind, ...] = tuple(cast(TaskKind, k) for k in task_kinds.person_kinds())
 FILE_KIND: TaskKind = "send_file"
-# What a finished task leaves true in the world (sim.goals milestones) → the task kind.
-MILESTONE_KIND: dict[str, TaskKind] = {k.milestone: cast(TaskKind, k.id) for k in task_kinds.KINDS}
 # The coarse kinds of the usage report: what the robot did for an instruction. "none": it
 # reached nobody but its requester (text not understood, a decline, a question back).
 RecordKind = Literal["delivery", "file", "message", "none"]
@@ -150,19 +144,9 @@ def kind_shape(kind: str) -> OperationShape | None:
 
 
 # The written form of a task in the dataset's base instructions (``parts:`` of
-# dataset/base_instructions.yaml): one part per task, kinds named from the requester's side.
-# Any other part kind must be a product of one of the office's operations ("make one").
-PartKind = Literal[
-    "fetch", "deliver", "print", "copy", "sign", "seal", "make", "heat", "forward_file", "get_file"
-]
-PART_KINDS: tuple[PartKind, ...] = tuple(
-    cast(PartKind, part) for k in task_kinds.KINDS for part in k.parts
-)
-if set(PART_KINDS) != set(get_args(PartKind)):  # pragma: no cover
-    raise RuntimeError("task_schema.PartKind and the task_kinds table disagree")
-PART_TASK_KIND: dict[str, TaskKind] = {
-    part: cast(TaskKind, k.id) for k in task_kinds.KINDS for part in k.parts
-}
+# dataset/base_instructions.yaml): one part per task, kinds named from the requester's side
+# (``task_kinds.part_kinds()``: every kind's ``parts``). Any other part kind must be a product
+# of one of the office's operations ("make one").
 
 # The fields each part kind must name (dataset.spec checks them).
 PART_NEEDS: dict[str, tuple[str, ...]] = {
@@ -179,7 +163,9 @@ class Part(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=True)
 
-    kind: str = Field(min_length=1, description="one of PART_KINDS, or a product of the office")
+    kind: str = Field(
+        min_length=1, description="a part kind of the task_kinds table, or a product of the office"
+    )
     item: str | None = Field(default=None, description="item type (fetch, deliver)")
     owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
     to: str | None = Field(
@@ -195,11 +181,12 @@ class Part(BaseModel):
 
     def task_kind(self) -> TaskKind:
         """The schema's kind of this part (a product's name is a ``produce``)."""
-        return PART_TASK_KIND.get(self.kind, "produce")
+        spec = task_kinds.of_part(self.kind)
+        return spec.id if spec is not None else "produce"
 
     def shape(self, office: Office) -> OperationShape | None:
         """The shape of office operation the part uses; None for person-to-person parts."""
-        if self.kind not in PART_KINDS:
+        if self.kind not in task_kinds.part_kinds():
             return "make" if office.making(self.kind) is not None else None
         return kind_shape(self.task_kind())
 

@@ -25,9 +25,9 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from assistantx.core import task_kinds
 from assistantx.core.errors import DatasetError
 from assistantx.core.office import Office, Operation
-from assistantx.core.task_schema import PART_KINDS, PART_NEEDS, PERSON_KINDS, Part, Task
+from assistantx.core.task_schema import PART_NEEDS, Part, Task
 
-__all__ = ["PART_KINDS", "BaseInstruction", "Part", "load_base_instructions", "part_operation"]
+__all__ = ["BaseInstruction", "Part", "load_base_instructions", "part_operation"]
 
 
 class BaseInstruction(BaseModel):
@@ -68,11 +68,11 @@ def load_base_instructions(path: str | Path, office: Office) -> list[BaseInstruc
             where = ".".join(str(p) for p in err["loc"])
             raise DatasetError(f"{file}: instructions[{n}].{where}: {err['msg']}") from exc
         for k, part in enumerate(base.parts):
-            if part.kind not in PART_KINDS and not made_kind(office, part.kind):
+            if part.kind not in task_kinds.part_kinds() and not made_kind(office, part.kind):
                 raise DatasetError(
                     f"{file}: instructions[{n}].parts[{k}].kind: unknown kind {part.kind!r}: "
-                    f"one of {', '.join(PART_KINDS)}, or a product an operation of the office "
-                    "makes"
+                    f"one of {', '.join(task_kinds.part_kinds())}, or a product an operation of "
+                    "the office makes"
                 )
         try:
             check_base(base, office)
@@ -91,7 +91,7 @@ def _owns(office: Office, person: str, item_type: str) -> bool:
 
 def made_kind(office: Office, kind: str) -> bool:
     """Whether a part kind names a product of the office ("coffee": make a coffee)."""
-    return kind not in PART_KINDS and office.making(kind) is not None
+    return kind not in task_kinds.part_kinds() and office.making(kind) is not None
 
 
 def part_operation(office: Office, part: Part) -> Operation:
@@ -132,10 +132,10 @@ def check_base(base: BaseInstruction, office: Office) -> None:
     a = base.requester
     office.person(a)
     for part in base.parts:
-        if part.kind not in PART_KINDS and not made_kind(office, part.kind):
+        if part.kind not in task_kinds.part_kinds() and not made_kind(office, part.kind):
             raise ValueError(
-                f"unknown kind {part.kind!r}: one of {', '.join(PART_KINDS)}, or a product "
-                "an operation of the office makes"
+                f"unknown kind {part.kind!r}: one of {', '.join(task_kinds.part_kinds())}, or a "
+                "product an operation of the office makes"
             )
         for person in (part.owner, part.to, part.signer):
             if person is not None:
@@ -163,7 +163,7 @@ def check_base(base: BaseInstruction, office: Office) -> None:
                 raise ValueError(f"the requester owns no {part.item}")
         kind = part.task_kind()
         file = task_kinds.item_type_of("send_file", office)
-        if kind in PERSON_KINDS:  # a person's work on the kind's paper, with its tool if any
+        if kind in task_kinds.person_kinds():  # a person's work on the kind's paper (+ its tool)
             paper = task_kinds.item_type_of(kind, office)
             if paper is None or not _owns(office, a, paper):
                 raise ValueError(f"the requester has nothing to {kind}")

@@ -68,6 +68,11 @@ class ActionResult(BaseModel):
     data: dict[str, Any] = Field(default_factory=dict)
 
 
+def all_ok(results: list[ActionResult]) -> bool:
+    """Whether a batch did anything and every action of it succeeded."""
+    return bool(results) and all(r.ok for r in results)
+
+
 class AgentCall(BaseModel):
     """Accounting of one agent call (LLM or embedded)."""
 

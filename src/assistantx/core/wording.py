@@ -19,11 +19,17 @@ from assistantx.core.task_schema import kind_shape
 # the item in and out, and each task kind's work step from the table of kinds. The purposes
 # that run an office operation on the item are worded with the office's own operation by
 # ``purpose_text``; the table's line is only the fallback for an office without one.
-PURPOSE_TEXT = {
+_MOVE_TEXT = {
     "deposit": "put {item} into the locker",
     "collect": "take {item} out of the locker",
-    **{k.purpose: k.locker for k in task_kinds.KINDS if k.purpose and k.locker},
 }
+
+
+def locker_text(purpose: str) -> str | None:
+    """The table's line for ``purpose`` (the item in or out, or a kind's work step)."""
+    if purpose in _MOVE_TEXT:
+        return _MOVE_TEXT[purpose]
+    return next((k.locker for k in task_kinds.kinds() if k.purpose == purpose and k.locker), None)
 
 
 def purpose_text(
@@ -43,7 +49,7 @@ def purpose_text(
     if operation is not None and shape is not None:  # the one the code is for (scan, not copy)
         op = office.operation(operation)
     if op is None or shape not in ("transform", "treat"):
-        return PURPOSE_TEXT.get(purpose, "{item}").format(item=thing)
+        return (locker_text(purpose) or "{item}").format(item=thing)
     if shape == "transform" and op.product and office.item_type(op.product).electronic:
         made = office.item_type(op.product).name  # a PDF goes by message, not into the locker
         return f"take {thing} out, {op.name} it, send the {made} to its owner and put it back"
@@ -76,14 +82,17 @@ def _operation_on(
     return next(iter(runs or on or ops), None)
 
 
-def person_name(office: Office, person_id: str, *, you: str | None = None) -> str:
-    """A person's (or group's) display name ("you" for the reader ``you``)."""
+def person_name(
+    office: Office, person_id: str, *, you: str | None = None, unknown: str | None = None
+) -> str:
+    """A person's (or group's) display name ("you" for the reader ``you``); one the office
+    does not know is ``unknown`` when given, else its id in words."""
     if you is not None and person_id == you:
         return "you"
     names = {p.id: p.name for p in office.people} | {g.id: g.name for g in office.groups}
     if person_id in names:
         return names[person_id]
-    return _words(person_id)
+    return _words(person_id) if unknown is None else unknown
 
 
 def item_type_name(office: Office, type_id: str) -> str:
@@ -115,8 +124,9 @@ def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
     return f"{person_name(office, owner)}'s {thing}"
 
 
-def place_name(office: Office, place_id: str) -> str:
-    """A location, facility or person (their desk) by name."""
+def place_name(office: Office, place_id: str, *, unknown: str | None = None) -> str:
+    """A location, facility or person (their desk) by name; a place the office does not know
+    is ``unknown`` when given, else its id in words."""
     for location in office.locations:
         if location.id == place_id:
             return location.name
@@ -126,7 +136,7 @@ def place_name(office: Office, place_id: str) -> str:
     try:
         return f"{office.person(place_id).name}'s desk"
     except KeyError:
-        return _words(place_id)
+        return _words(place_id) if unknown is None else unknown
 
 
 def _words(identifier: str) -> str:

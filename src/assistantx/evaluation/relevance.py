@@ -13,7 +13,7 @@ from typing import Any
 from assistantx.core import task_kinds
 from assistantx.core.goals import parse_milestone
 from assistantx.core.office import Office
-from assistantx.core.task_schema import MILESTONE_KIND, kind_shape
+from assistantx.core.task_schema import kind_shape
 
 
 def _owner(item: str) -> str:
@@ -31,7 +31,8 @@ def _guards(office: Office, operation: str) -> set[str]:
 def _kind_guards(office: Office, milestone: str) -> set[str]:
     """Everyone who runs an operation of the shape the milestone's task kind uses (printing,
     copying, heating ...)."""
-    shape = kind_shape(MILESTONE_KIND[milestone])
+    spec = task_kinds.of_milestone(milestone)
+    shape = kind_shape(spec.id) if spec is not None else None
     if shape is None:
         return set()
     return {g for op in office.with_shape(shape) for g in _guards(office, op.id)}
@@ -47,11 +48,9 @@ def relevant_people(office: Office, requester: str, goal: list[dict[str, Any]]) 
                 person, item = args
                 people.add(person)
                 people.update(_item_people(office, item))
-            case "signed":
-                people.update((_owner(args[0]), args[1]))
-            case "sealed":
-                people.add(_owner(args[0]))
-                tool = task_kinds.tool_type("seal", office)
+            case _ if (spec := task_kinds.of_milestone(name)) and spec.by_person:  # sign, seal
+                people.update((_owner(args[0]), *args[1:]))  # the named doer, if any
+                tool = task_kinds.tool_type(spec.id, office)  # else whoever owns the tool
                 people.update(office.owners_of(tool) if tool else ())
             case "printed" | "copied":
                 people.add(_owner(args[0]))

@@ -13,13 +13,12 @@ from pydantic import BaseModel, Field
 
 from assistantx.core.actions import ForwardFile, Inform, Inquire, Move, SendQR, WaitInPlace
 from assistantx.core.office import Office
-from assistantx.core.task_schema import RECORD_KINDS, RecordKind
+from assistantx.core.task_schema import RecordKind
 from assistantx.core.trace import Trace
 from assistantx.feedback.walking import DistanceFn, WalkingEstimate, estimate_walking
 
-# The report's kinds are the task schema's coarse record kinds (what the robot did).
-TaskKind = RecordKind
-TASK_KINDS: tuple[RecordKind, ...] = RECORD_KINDS
+# The report's kinds are the task schema's coarse record kinds (what the robot did), not its
+# task kinds: one name each, so the two are never mistaken for each other.
 RecordOutcome = Literal["done", "failed", "unachievable", "cancelled"]
 OUTCOMES: tuple[RecordOutcome, ...] = ("done", "failed", "unachievable", "cancelled")
 
@@ -28,7 +27,7 @@ class InstructionRecord(BaseModel):
     instruction_id: str
     requester: str
     text: str
-    kind: TaskKind = Field(
+    kind: RecordKind = Field(
         description="delivery: the robot drove or handed something over; file: a file was "
         "forwarded; message: only messages, at least one to someone besides the requester; "
         "none: it reached nobody but the requester (e.g. 'asdf qwerty', a decline)"
@@ -46,7 +45,7 @@ class InstructionRecord(BaseModel):
         return max(0.0, self.ended_at - self.started_at)
 
 
-def task_kind(trace: Trace) -> TaskKind:
+def task_kind(trace: Trace) -> RecordKind:
     tried = [r.action for r in trace.actions() if not r.refused]
     if any(isinstance(a, Move | SendQR | WaitInPlace) for a in tried):
         return "delivery"

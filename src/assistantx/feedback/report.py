@@ -23,8 +23,9 @@ from typing import TYPE_CHECKING, Literal
 
 from pydantic import BaseModel, Field
 
+from assistantx.core.task_schema import RECORD_KINDS
 from assistantx.feedback.answers import CHOICES, Choice
-from assistantx.feedback.impact import OUTCOMES, TASK_KINDS, InstructionRecord
+from assistantx.feedback.impact import OUTCOMES, InstructionRecord
 from assistantx.feedback.store import FeedbackStore
 from assistantx.feedback.survey import QUESTIONS, Survey, SurveyState
 
@@ -209,7 +210,7 @@ def build_report(
 def _instructions(records: list[InstructionRecord]) -> InstructionSummary:
     by_outcome = Counter(r.outcome for r in records)
     by_kind: dict[str, dict[str, int]] = {}
-    for kind in TASK_KINDS:
+    for kind in RECORD_KINDS:
         counts = Counter(r.outcome for r in records if r.kind == kind)
         if counts:
             by_kind[kind] = {o: counts[o] for o in OUTCOMES if counts[o]}

@@ -18,12 +18,12 @@ Messages carry stable idempotency keys (``survey:<instruction>``, ``...:reminder
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import logging
 from typing import TYPE_CHECKING
 
 from assistantx.core.clock import Clock
 from assistantx.core.errors import AdapterError
+from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef, InboundMessage, Messenger, OutboundMessage
 from assistantx.feedback.answers import ParsedReply, parse_reply
@@ -78,11 +78,8 @@ class Surveyor:
     async def stop(self) -> None:
         """Stop reminding and stop taking instruction ends and replies (the store may close)."""
         self._closed = True
-        if self._task is not None:
-            self._task.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await self._task
-            self._task = None
+        await cancel_and_wait(self._task)
+        self._task = None
         async with self._turn:
             pass  # an end or a reply taken before is through with the store
 

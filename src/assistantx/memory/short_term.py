@@ -82,6 +82,28 @@ class ShortTermMemory(BaseModel):
     )
     trace: Trace
 
+    @classmethod
+    def begin(
+        cls,
+        instruction_id: str,
+        requester: str,
+        text: str,
+        *,
+        reasoner: str,
+        started_at: float,
+        trace_text: str | None = None,
+    ) -> ShortTermMemory:
+        """The memory of an instruction that starts now, with its empty trace (whose text is
+        ``trace_text`` where the trace names the work otherwise than the request does)."""
+        trace = Trace(
+            instruction_id=instruction_id,
+            requester=requester,
+            text=text if trace_text is None else trace_text,
+            reasoner=reasoner,
+            started_at=started_at,
+        )
+        return cls(instruction_id=instruction_id, requester=requester, text=text, trace=trace)
+
     def replies_to(self, question_id: str) -> list[DialogueTurn]:
         return [t for t in self.dialogue if t.direction == "in" and t.in_reply_to == question_id]
 

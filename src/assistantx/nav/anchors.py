@@ -16,6 +16,7 @@ from pathlib import Path
 import yaml
 
 from assistantx.core.errors import MapError
+from assistantx.nav.occupancy_map import read_yaml
 
 
 @dataclass(frozen=True)
@@ -28,12 +29,7 @@ class Anchor:
 def load_anchors(path: str | Path) -> dict[str, Anchor]:
     """Read an anchors file; raise MapError naming the file and the bad entry."""
     file = Path(path)
-    try:
-        # libyaml's loader when present: the pure-Python one was most of a robot's set-up.
-        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-        doc = yaml.load(file.read_text(encoding="utf-8"), Loader=loader)
-    except (OSError, yaml.YAMLError, UnicodeDecodeError) as exc:
-        raise MapError(f"{file}: cannot read anchors: {exc}") from exc
+    doc = read_yaml(file, "anchors")
     if not isinstance(doc, dict) or not isinstance(doc.get("anchors"), dict):
         raise MapError(f"{file}: expected a mapping with an 'anchors' mapping")
     anchors: dict[str, Anchor] = {}

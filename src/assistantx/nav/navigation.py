@@ -384,15 +384,19 @@ class Navigator:
     def _replan_round(self, controller: PurePursuit) -> Path:
         """Held by the monitor: mark what the scan sees now and plan round it."""
         self._sense_obstacles(self.lidar.scan(self.base.true_pose, self.rng))
-        pose, goal = self.pose, controller.path[-1]
+        return self._replan_to(controller.path[-1], "something stands in the way to {goal}")
+
+    def _replan_to(self, goal: FloatArray, blocked: str) -> Path:
+        """A plan from here to ``goal`` on the live costmap; when there is none, BlockedError
+        says ``blocked`` ({goal}: where to, {why}: the planner's reason)."""
+        pose = self.pose
         try:
             return self._plan_on(
                 self.planner, (float(pose[0]), float(pose[1])), (float(goal[0]), float(goal[1]))
             )
         except UnreachableError as exc:
-            raise BlockedError(
-                f"something stands in the way to ({goal[0]:.2f}, {goal[1]:.2f})"
-            ) from exc
+            where = f"({goal[0]:.2f}, {goal[1]:.2f})"
+            raise BlockedError(blocked.format(goal=where, why=exc)) from exc
 
     def _gave_up(self, goal: tuple[float, float], last: BlockedError | None) -> BlockedError:
         tried = ", ".join(RECOVERIES)
@@ -520,13 +524,4 @@ class Navigator:
         if not ((costs >= INSCRIBED) & (static < INSCRIBED)).any():
             return None
         logger.info("path blocked by %d marked cells; replanning", len(self.obstacles))
-        pose = self.pose
-        goal = controller.path[-1]
-        try:
-            return self._plan_on(
-                self.planner, (float(pose[0]), float(pose[1])), (float(goal[0]), float(goal[1]))
-            )
-        except UnreachableError as exc:
-            raise BlockedError(
-                f"the way to ({goal[0]:.2f}, {goal[1]:.2f}) is blocked: {exc}"
-            ) from exc
+        return self._replan_to(controller.path[-1], "the way to {goal} is blocked: {why}")

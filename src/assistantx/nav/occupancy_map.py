@@ -132,15 +132,21 @@ class OccupancyMap:
 
 
 # -- reading -------------------------------------------------------------------------------
-def load_map(yaml_path: str | Path) -> OccupancyMap:
-    """Load a map_server map (YAML + image); raise MapError naming the file and the problem."""
-    path = Path(yaml_path)
+def read_yaml(path: Path, what: str) -> Any:
+    """A map's YAML file (its header, its anchors) as read; MapError names the file and
+    ``what`` could not be read."""
     try:
         # libyaml's loader when present: the pure-Python one was most of a robot's set-up.
         loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-        header = yaml.load(path.read_text(encoding="utf-8"), Loader=loader)
+        return yaml.load(path.read_text(encoding="utf-8"), Loader=loader)
     except (OSError, yaml.YAMLError, UnicodeDecodeError) as exc:
-        raise MapError(f"{path}: cannot read map header: {exc}") from exc
+        raise MapError(f"{path}: cannot read {what}: {exc}") from exc
+
+
+def load_map(yaml_path: str | Path) -> OccupancyMap:
+    """Load a map_server map (YAML + image); raise MapError naming the file and the problem."""
+    path = Path(yaml_path)
+    header = read_yaml(path, "map header")
     if not isinstance(header, dict):
         raise MapError(f"{path}: map header must be a mapping")
     image = _require(header, "image", path)

@@ -31,7 +31,6 @@ from assistantx.core.ports.messenger import (
     OutboundMessage,
 )
 from assistantx.core.ports.robot import RobotBase
-from assistantx.core.trace import Trace
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
@@ -206,17 +205,12 @@ class Assistant:
             instruction_id = instruction_id or self.new_id()
             if instruction_id in self.running or instruction_id in self.finished:
                 raise ValueError(f"instruction {instruction_id} exists already")
-            stm = ShortTermMemory(
-                instruction_id=instruction_id,
-                requester=requester,
-                text=text,
-                trace=Trace(
-                    instruction_id=instruction_id,
-                    requester=requester,
-                    text=text,
-                    reasoner=self.parts.reasoner_name,
-                    started_at=self.clock.now(),
-                ),
+            stm = ShortTermMemory.begin(
+                instruction_id,
+                requester,
+                text,
+                reasoner=self.parts.reasoner_name,
+                started_at=self.clock.now(),
             )
             stm.embodied.robot_place = self.parts.robot.state().place
         reasoner = self.parts.reasoner_factory()

@@ -54,9 +54,6 @@ ConsentState = Literal["yes", "no", "pending", "not_asked"]
 # Purposes that take an item out of the locker for good, and those that put one in.
 _COLLECT = "collect"
 _DEPOSIT = "deposit"
-# Purposes a named person does by hand on the requester's item (no facility involved): the
-# table's person kinds (sign, seal, ...).
-_BY_HAND = frozenset(task_kinds.person_kinds())
 
 
 @dataclass(frozen=True)
@@ -209,7 +206,7 @@ def _is_party(office: Office, stm: ShortTermMemory, contact: str, item: str, pur
         return keeper is not None and contact in keeper
     if purpose == _COLLECT:
         return contact in named_recipients(office, stm)
-    if purpose in _BY_HAND:
+    if purpose in task_kinds.person_kinds():  # by hand, no facility: sign, seal, ...
         tool = task_kinds.tool_type(purpose, office)  # whoever owns the seal may stamp
         if tool is not None and _owns(office, contact, tool):
             return True

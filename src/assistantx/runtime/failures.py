@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 
+from assistantx.core import wording
 from assistantx.core.actions import Action, Move
 from assistantx.core.office import Office
 from assistantx.core.ports.robot import RobotBase
@@ -59,16 +60,8 @@ class FailureMemory:
 
 
 def place_name(office: Office, place: str) -> str:
-    for location in office.locations:
-        if location.id == place:
-            return location.name
-    for facility in office.facilities:
-        if facility.id == place:
-            return facility.name
-    for person in office.people:
-        if person.id == place:
-            return f"{person.name}'s desk"
-    return "the destination"
+    """The office's name of a place; one it does not know is "the destination", never an id."""
+    return wording.place_name(office, place, unknown="the destination")
 
 
 def item_name(office: Office, item_id: str) -> str:
@@ -91,22 +84,14 @@ def robot_whereabouts(office: Office, robot: RobotBase) -> str:
     return f"near {nearest.name}"
 
 
-def _person_or_group_name(office: Office, contact: str) -> str:
-    for person in office.people:
-        if person.id == contact:
-            return person.name
-    for group in office.groups:
-        if group.id == contact:
-            return group.name
-    return "them"
-
-
 def _failed_action_in_words(office: Office, action: Action) -> str:
     """ "I could not ask Wang Fang": what failed, with names, never an action's wire name."""
     if isinstance(action, Move):
         return f"I could not get to {place_name(office, action.place)}"
     contact = getattr(action, "contact", None) or getattr(action, "target", None)
-    who = _person_or_group_name(office, contact) if isinstance(contact, str) else "them"
+    who = (
+        wording.person_name(office, contact, unknown="them") if isinstance(contact, str) else "them"
+    )
     doing = {
         "inquire": f"ask {who}",
         "inform": f"send {who} a message",

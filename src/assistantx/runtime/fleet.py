@@ -22,7 +22,6 @@ start) they show the first robot.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import logging
 from collections import deque
 from collections.abc import Callable, Collection, Sequence
@@ -30,6 +29,7 @@ from contextvars import ContextVar
 from dataclasses import dataclass, field
 
 from assistantx.core.errors import AssistantXError
+from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.core.ports.lock import Locker, LockEvent, LockStatus, Purpose, QRCode
 from assistantx.core.ports.robot import MoveResult, RobotBase, RobotState
 
@@ -178,9 +178,7 @@ class FleetLease:
     async def _stop_parking(self, body: Body) -> None:
         drive, body._parking_drive = body._parking_drive, None
         if drive is not None and not drive.done():
-            drive.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await drive
+            await cancel_and_wait(drive)
 
     async def stop(self) -> None:
         """Stop every parking drive (the service stops)."""

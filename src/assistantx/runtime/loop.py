@@ -295,13 +295,7 @@ class InstructionRunner:
                 action = self.resolver.ground(proposed)
             except GroundingError as exc:
                 feedback.append(f"Action {proposed.signature()} was refused: {exc}")
-                step.results.append(self._refused(proposed, str(exc)))
-                await self._emit(
-                    stm,
-                    "action_result",
-                    step.index,
-                    result=step.results[-1].model_dump(mode="json"),
-                )
+                await self._refuse(stm, step, proposed, str(exc))
                 break
             signature = action.signature()
             # Waits differ only in wording; what matters is that nothing new came in since.
@@ -312,13 +306,7 @@ class InstructionRunner:
                     "between; do something else"
                 )
                 feedback.append(f"Action refused: {reason}.")
-                step.results.append(self._refused(action, reason))
-                await self._emit(
-                    stm,
-                    "action_result",
-                    step.index,
-                    result=step.results[-1].model_dump(mode="json"),
-                )
+                await self._refuse(stm, step, action, reason)
                 break
             if isinstance(action, Stop) and action.outcome != "done":
                 # Someone's item still aboard goes back (runtime.returns): the requester is
@@ -388,9 +376,12 @@ class InstructionRunner:
         if step.queue:
             await self._emit(stm, "queued", step.index, queue=step.queue)
 
-    def _refused(self, action: Action, reason: str) -> ActionResult:
+    async def _refuse(
+        self, stm: ShortTermMemory, step: TraceStep, action: Action, reason: str
+    ) -> None:
+        """Record ``action`` as refused in the step, and tell the event stream."""
         now = self._now()
-        return ActionResult(
+        result = ActionResult(
             action=action,
             ok=False,
             observation=f"refused: {reason}",
@@ -399,6 +390,8 @@ class InstructionRunner:
             started_at=now,
             ended_at=now,
         )
+        step.results.append(result)
+        await self._emit(stm, "action_result", step.index, result=result.model_dump(mode="json"))
 
     def _apply_updates(
         self, stm: ShortTermMemory, step: TraceStep, updates: list[MemoryUpdate]

@@ -17,7 +17,6 @@ import logging
 
 from assistantx.core.actions import Action, Inform, Move, SendQR, WaitInPlace
 from assistantx.core.office import Office
-from assistantx.core.trace import Trace
 from assistantx.core.wording import item_phrase, person_name
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
@@ -76,17 +75,13 @@ async def return_items(
         # The errand acts for the owner: they are given back their own item, which needs no
         # one's consent (runtime/consent.py lets a code go to the requester), and nobody else
         # can be handed anything by it.
-        stm = ShortTermMemory(
-            instruction_id=errand_id,
-            requester=owner,
-            text=f"give back what {ended.instruction_id} left in the locker",
-            trace=Trace(
-                instruction_id=errand_id,
-                requester=owner,
-                text="return items",
-                reasoner="return",
-                started_at=executor.ctx.clock.now(),
-            ),
+        stm = ShortTermMemory.begin(
+            errand_id,
+            owner,
+            f"give back what {ended.instruction_id} left in the locker",
+            trace_text="return items",
+            reasoner="return",
+            started_at=executor.ctx.clock.now(),
         )
         stm.embodied.locker_contents = [item]
         return stm

@@ -15,7 +15,6 @@ before the snapshot that refers to them.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import dataclasses
 import functools
 import hashlib
@@ -26,6 +25,7 @@ from pathlib import Path
 from typing import Any
 
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
+from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.core.ports.messenger import InboundMessage, OutboundMessage
 from assistantx.sim.office import HeldCode, SimOffice
 from assistantx.store.journal import Journal
@@ -62,9 +62,7 @@ class InboxRelay(asyncio.Queue[InboundMessage]):
             await asyncio.wait_for(self.join(), RELAY_DRAIN_S)
         except TimeoutError:
             logger.warning("%d simulated colleagues' messages not journaled at stop", self.qsize())
-        self._task.cancel()
-        with contextlib.suppress(asyncio.CancelledError):
-            await self._task
+        await cancel_and_wait(self._task)
         self._task = None
 
     async def _hand_on(self) -> None:

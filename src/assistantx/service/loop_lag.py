@@ -11,10 +11,11 @@ by the server.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import logging
 import time
 from collections import deque
+
+from assistantx.core.lifecycle import cancel_and_wait
 
 logger = logging.getLogger(__name__)
 
@@ -34,11 +35,8 @@ class LoopLagMonitor:
             self._task = asyncio.create_task(self._tick(), name="loop-lag-monitor")
 
     async def stop(self) -> None:
-        if self._task is not None:
-            self._task.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await self._task
-            self._task = None
+        await cancel_and_wait(self._task)
+        self._task = None
 
     def observe(self, lag_s: float, now: float | None = None) -> None:
         second = int(time.monotonic() if now is None else now)

@@ -9,10 +9,10 @@ what) and every memory update. 0 keeps everything.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import logging
 import time
 
+from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.store.journal import Journal
 
 logger = logging.getLogger(__name__)
@@ -31,11 +31,8 @@ class Retention:
             self._task = asyncio.create_task(self._run(), name="journal-retention")
 
     async def stop(self) -> None:
-        if self._task is not None:
-            self._task.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await self._task
-            self._task = None
+        await cancel_and_wait(self._task)
+        self._task = None
 
     async def apply(self) -> int:
         cut = time.time() - self.days * 86400

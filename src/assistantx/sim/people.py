@@ -14,8 +14,7 @@ from dataclasses import dataclass
 
 from assistantx.core import task_kinds
 from assistantx.core.office import Operation, OperationShape, Ownership
-from assistantx.core.ports.lock import WORK_PURPOSES
-from assistantx.core.task_schema import FILE_KIND, PERSON_KINDS, kind_shape
+from assistantx.core.task_schema import FILE_KIND, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
     asks_to_receive,
@@ -46,7 +45,7 @@ def _thing(world: World, item: str, speaker: str) -> str:
 
 
 def can_do(world: World, person: str, request: str) -> bool:
-    if request in PERSON_KINDS:  # by hand: with the kind's tool, if it needs one (a seal)
+    if request in task_kinds.person_kinds():  # by hand: with its tool, if it needs one (seal)
         tool = task_kinds.tool_type(request, world.office)
         return not task_kinds.needs_tool(request) or (tool is not None and world.owns(person, tool))
     if request == FILE_KIND:
@@ -181,7 +180,7 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
         return f"I don't have {thing}."
     if purpose == "collect":
         return None if where == LOCKER else missing
-    if purpose in WORK_PURPOSES:
+    if purpose in task_kinds.work_purposes():
         if where != LOCKER:
             return missing
         tool = task_kinds.tool_type(purpose, world.office)
@@ -240,6 +239,9 @@ def perform_handover(
         op = _operation_here(world, person, place, ("treat",), told)
         if op is not None and not op.returns_item:  # shredded, faxed out: it stays there
             world.move_item(time, item, place, by=person)
+    elif (spec := task_kinds.of_purpose(purpose)) is not None and spec.by_person:
+        world.worked.add((spec.milestone, item, person))  # an added kind's work by hand
+        world.note(time, spec.milestone, item=item, by=person)
     elif purpose == "produce":
         item_type, _, owner = item.partition(":")
         op = world.office.making(item_type)

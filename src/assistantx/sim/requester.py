@@ -26,6 +26,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone, parse_milestone
 from assistantx.core.office import Office, Person
 from assistantx.sim.understanding import mentioned_item_types
@@ -90,9 +91,9 @@ class Wish:
                 case "holds" | "received":
                     recipients.append(args[0])
                     item(args[1])
-                case "signed":
+                case _ if task_kinds.milestone_arity(name) is not None:  # sign, seal, ...
                     item(args[0])
-                    doers.append(args[1])
+                    doers.extend(args[1:])  # the named doer (a seal's: whoever owns one)
                 case "sealed" | "printed" | "copied" | "heated" | "made":
                     item(args[0])
         people = {*recipients, *owners, *doers} - {requester}

@@ -7,18 +7,18 @@ person would, with the same grounding and executors the PPDR loop uses.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 from types import TracebackType
 from typing import Self
 
 from assistantx.core.actions import Action
 from assistantx.core.clock import Clock
 from assistantx.core.errors import GroundingError
+from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.core.office import Office
 from assistantx.core.ports.lock import Locker
 from assistantx.core.ports.messenger import InboundMessage
 from assistantx.core.ports.robot import RobotBase
-from assistantx.core.trace import ActionResult, Trace
+from assistantx.core.trace import ActionResult
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
@@ -62,17 +62,8 @@ class SimSession:
             )
         )
         requester = self.resolver.person(requester)
-        self.stm = ShortTermMemory(
-            instruction_id=instruction_id,
-            requester=requester,
-            text=text,
-            trace=Trace(
-                instruction_id=instruction_id,
-                requester=requester,
-                text=text,
-                reasoner="hand",
-                started_at=self.sim.clock.now(),
-            ),
+        self.stm = ShortTermMemory.begin(
+            instruction_id, requester, text, reasoner="hand", started_at=self.sim.clock.now()
         )
         self.stm.embodied.robot_place = office.robot.home
         self.sim.register_instruction(instruction_id, requester)
@@ -91,10 +82,7 @@ class SimSession:
         exc: BaseException | None,
         tb: TracebackType | None,
     ) -> None:
-        if self._pump is not None:
-            self._pump.cancel()
-            with contextlib.suppress(asyncio.CancelledError):
-                await self._pump
+        await cancel_and_wait(self._pump)
         await self.sim.aclose()
         await self.sim.locker.stop()
 

@@ -12,23 +12,27 @@ from __future__ import annotations
 
 import re
 
-from assistantx.core import english
+from assistantx.core import english, task_kinds
 from assistantx.core.office import Office
-from assistantx.core.task_schema import FILE_KIND, PERSON_KINDS
+from assistantx.core.task_schema import FILE_KIND
 from assistantx.memory.names import normalize
 
-# The task schema's person-to-person kinds → the English words that signal them (the package's
-# English data file); the office's own operations are signalled by their verbs, their names
-# and their product's names (``request_words``).
-PERSON_REQUEST_WORDS: dict[str, tuple[str, ...]] = {
-    kind: english.kind_words(kind) for kind in PERSON_KINDS
-}
 SEND_FILE_WORDS = english.kind_words(FILE_KIND)
+
+
+def person_request_words() -> dict[str, tuple[str, ...]]:
+    """The table's person-to-person kinds → the English words that signal them: a kind's own
+    ``words``, else the package's English data file's; the office's own operations are
+    signalled by their verbs, their names and their product's names (``request_words``)."""
+    return {
+        kind: task_kinds.kind(kind).words or english.kind_words(kind)
+        for kind in task_kinds.person_kinds()
+    }
 
 
 def request_words(office: Office) -> dict[str, tuple[str, ...]]:
     """Request kind (or operation id) → the words that signal it, from the operation table."""
-    words = dict(PERSON_REQUEST_WORDS)
+    words = person_request_words()
     for op in office.operations:
         if not office.runnable(op.id):
             continue
@@ -101,15 +105,16 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
             haystack = haystack.replace(f" {variant} ", " | ")
     at: dict[str, int] = {}
     words = request_words(office)
+    by_person = person_request_words()
     rest = original  # the office's words are used up as they are read
-    for kind in (k for k in words if k not in PERSON_REQUEST_WORDS and k != FILE_KIND):
+    for kind in (k for k in words if k not in by_person and k != FILE_KIND):
         for form in (f for w in words[kind] for f in word_forms(w)):
             if f" {form} " in haystack:
                 at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
                 haystack = haystack.replace(f" {form} ", " | ")
                 rest = rest.replace(f" {form} ", " | ")
     # the English words of signing, sealing and sending, in what the office's words left
-    for kind in (*PERSON_REQUEST_WORDS, FILE_KIND):
+    for kind in (*by_person, FILE_KIND):
         for form in (f for w in words[kind] for f in word_forms(w)):
             if f" {form} " in rest:
                 at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))

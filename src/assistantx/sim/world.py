@@ -11,6 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
+from assistantx.core import task_kinds
 from assistantx.core.errors import ActionError
 from assistantx.core.goals import parse_milestone
 from assistantx.core.office import Office
@@ -38,6 +39,8 @@ class World:
     printed: set[str] = field(default_factory=set)  # file ids
     copied: set[str] = field(default_factory=set)  # document ids
     heated: set[str] = field(default_factory=set)
+    # the work of a person-to-person kind added to the table of kinds: (milestone, item, doer)
+    worked: set[tuple[str, str, str]] = field(default_factory=set)
     made: set[str] = field(default_factory=set)  # product item ids
     received: set[tuple[str, str]] = field(default_factory=set)  # (person, file)
     messages_to: dict[str, int] = field(default_factory=dict)  # person → messages received
@@ -157,6 +160,12 @@ class World:
                 return args[0] in self.made
             case "informed":
                 return self.messages_to.get(args[0], 0) > 0
+            case _ if task_kinds.milestone_arity(name) is not None:  # an added kind's work
+                doc, *doer = args  # the item, and its named doer when the kind names one
+                return any(
+                    (m, d) == (name, doc) and (not doer or by == doer[0])
+                    for m, d, by in self.worked
+                )
         raise ActionError(f"unknown milestone {milestone!r}")  # pragma: no cover
 
     def matching(self, item: str) -> list[str]:

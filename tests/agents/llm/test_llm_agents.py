@@ -31,7 +31,6 @@ from assistantx.core.trace import (
     Plan,
     Reflection,
     SubGoal,
-    Trace,
     TraceStep,
 )
 from assistantx.memory.graph import LongTermMemory
@@ -68,14 +67,7 @@ async def factory(
 
 
 def context(office: Office, text: str = "get me a stapler", requester: str = "lee") -> AgentContext:
-    stm = ShortTermMemory(
-        instruction_id="ins-7",
-        requester=requester,
-        text=text,
-        trace=Trace(
-            instruction_id="ins-7", requester=requester, text=text, reasoner="llm", started_at=0
-        ),
-    )
+    stm = ShortTermMemory.begin("ins-7", requester, text, reasoner="llm", started_at=0)
     stm.embodied.robot_place = "meeting_room"
     stm.trace.steps.append(TraceStep(index=0, started_at=0.0))
     return AgentContext(

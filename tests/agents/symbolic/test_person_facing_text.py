@@ -9,14 +9,15 @@ the names of attached files.
 from __future__ import annotations
 
 import re
+from typing import get_args
 
 import pytest
 from symbolic_run import run_instruction
 from test_tasks_in_sim import CASES, Case
 
 from assistantx.agents.symbolic.roles import RoleKind
+from assistantx.core import task_kinds
 from assistantx.core.office import Office, load_office
-from assistantx.core.wording import PURPOSE_TEXT
 from assistantx.sim.people import handover_problem
 from assistantx.sim.world import World
 
@@ -26,10 +27,11 @@ _PEOPLE = sorted({p.id for p in _OFFICE.people}, key=len, reverse=True)
 # stapler:wang, file:lee, copy:lee ... (the type, a colon, an owner id)
 ITEM_ID = re.compile(rf"\b(?:{'|'.join(_ITEM_TYPES)}):(?:{'|'.join(_PEOPLE)})\b")
 INSTRUCTION_ID = re.compile(r"\bins-[0-9a-z]+")
-ROLE_KINDS = RoleKind.__args__  # type: ignore[attr-defined]
+ROLE_KINDS = (*get_args(get_args(RoleKind)[0]), *(k.id for k in task_kinds.kinds()))
+_LABELS = (*ROLE_KINDS, *task_kinds.purposes())
 # An internal token used as a label ("lend: stapler", "(stapler)", "send_file").
 TOKEN = re.compile(
-    rf"\b(?:{'|'.join(ROLE_KINDS)}|{'|'.join(PURPOSE_TEXT)}): (?:{'|'.join(_ITEM_TYPES)})\b"
+    rf"\b(?:{'|'.join(_LABELS)}): (?:{'|'.join(_ITEM_TYPES)})\b"
     rf"|\((?:{'|'.join(_ITEM_TYPES)}|help)\)"
     r"|\b[a-z]+_[a-z_]+\b"
 )

@@ -16,7 +16,6 @@ from __future__ import annotations
 import difflib
 import unicodedata
 from collections.abc import Iterable, Sequence
-from typing import cast
 
 from assistantx.core import english, task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
@@ -145,10 +144,15 @@ def ungrounded(
 UNSURE_QUESTION = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
 )
-# a person-to-person task is said by one of the reader's cue words for it ("signed", "stamp")
-_PERSON_VERBS: dict[str, frozenset[str]] = {
-    kind: english.word_table("cues")[kind] for kind in task_kinds.person_kinds()
-}
+
+
+def _person_verbs(kind: str | None) -> frozenset[str] | None:
+    """The words that say a person-to-person task ("signed", "stamp"): the reader's cue words
+    for it, or the words of its entry in the table of kinds; None: not such a kind."""
+    if kind is None or kind not in task_kinds.person_kinds():
+        return None
+    said = english.word_table("cues").get(kind)
+    return said if said is not None else frozenset(task_kinds.kind(kind).words)
 
 
 def request_words(office: Office, stm: ShortTermMemory) -> RequestWords:
@@ -169,9 +173,10 @@ def ungrounded_action(words: RequestWords, requester: str, action: Action) -> st
             type_id = item.partition(":")[0]
             # what the code does to its item, as a task kind (deposit/collect: a transfer)
             spec = task_kinds.of_purpose(purpose)
-            kind = cast("TaskKind", spec.id) if spec is not None else None
-            if kind in _PERSON_VERBS:
-                if not words.says_any(_PERSON_VERBS[kind]):
+            kind = spec.id if spec is not None else None
+            verbs = _person_verbs(kind)
+            if verbs is not None:
+                if not words.says_any(verbs):
                     return f"the request never asks to {kind} anything"
                 return None
             if kind is not None:

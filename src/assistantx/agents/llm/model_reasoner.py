@@ -23,7 +23,7 @@ from pydantic import BaseModel
 
 from assistantx.agents.base import AgentContext, Reasoner
 from assistantx.agents.llm.grounding import UNSURE_QUESTION, request_words, ungrounded_action
-from assistantx.agents.llm.shared import SharedModel
+from assistantx.agents.llm.shared import ModelHold, SharedModel
 from assistantx.core.actions import Inquire, Wait
 from assistantx.core.errors import ModelBehaviorError, ModelOutputError
 from assistantx.core.ports.model import ChatRequest, ChatResponse, LLMCallFailed, Message
@@ -57,7 +57,7 @@ class ModelReasoner(Reasoner):
         self.shared = shared
         self.output_retries = output_retries
         self.budget = budget or focus_budget(8192, 1024)
-        self._holding = False
+        self._hold = ModelHold(shared)
 
     def memory(self, ctx: AgentContext, percept: Percept | None = None) -> str:
         """The memory an agent sees: the task's focus (merged with the model's percept),
@@ -66,14 +66,10 @@ class ModelReasoner(Reasoner):
         return render_focused(ctx.ltm, ctx.stm, focus, self.budget)
 
     async def start(self) -> None:
-        if not self._holding:
-            await self.shared.acquire()
-            self._holding = True
+        await self._hold.take()
 
     async def stop(self) -> None:
-        if self._holding:
-            self._holding = False
-            await self.shared.release()
+        await self._hold.give_back()
 
     async def _grounded_decision(
         self,

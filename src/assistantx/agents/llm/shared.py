@@ -39,6 +39,25 @@ class SharedModel:
                 await self.model.stop()
 
 
+class ModelHold:
+    """One reasoner's hold on a shared model, from its start to its stop: taken once however
+    often it starts, given back once however often it stops."""
+
+    def __init__(self, shared: SharedModel) -> None:
+        self.shared = shared
+        self._holding = False
+
+    async def take(self) -> None:
+        if not self._holding:
+            await self.shared.acquire()
+            self._holding = True
+
+    async def give_back(self) -> None:
+        if self._holding:
+            self._holding = False
+            await self.shared.release()
+
+
 def require_model(model: ChatModel | None, reasoner: str) -> ChatModel:
     """``model``, injected by the composition root; ReasonerError, naming ``reasoner``, when
     none was (``ASSISTANTX_LLM_BASE_URL`` unset)."""

@@ -21,6 +21,7 @@ from assistantx.core.trace import (
     Plan,
     Reflection,
     SubGoal,
+    all_ok,
 )
 
 
@@ -71,8 +72,7 @@ class OptimalReasoner(Reasoner):
         results: list[ActionResult],
         observed: Observation,
     ) -> Reflection:
-        ok = bool(results) and all(r.ok for r in results)
-        return Reflection(verdict="Y" if ok else "N", reason="as the policy expected")
+        return Reflection(verdict="Y" if all_ok(results) else "N", reason="as the policy expected")
 
 
 def _feedback(results: list[ActionResult]) -> Feedback:
@@ -82,4 +82,4 @@ def _feedback(results: list[ActionResult]) -> Feedback:
             replies = r.data.get("replies", [])
             if isinstance(replies, list):
                 repliers.extend(str(p) for p in replies)
-    return Feedback(tuple(repliers), ok=bool(results) and all(r.ok for r in results))
+    return Feedback(tuple(repliers), ok=all_ok(results))

@@ -249,7 +249,7 @@ def optimal_script(
             robot_at = location
         batch: list[Action] = []
         for code in visit.codes:
-            purpose: Purpose = code.purpose  # type: ignore[assignment]
+            purpose: Purpose = code.purpose
             batch.append(
                 SendQR(
                     contact=person, item=item_of(code), purpose=purpose, operation=code.operation

@@ -16,7 +16,7 @@ loses its person and its Confirm phase is unmet again.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal, cast
+from typing import Literal
 
 from assistantx.agents.symbolic.evidence import Evidence
 from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
@@ -331,8 +331,7 @@ class Planner:
                 if len(steps) < len(spec.steps):
                     roles.remove(recipient)
                 phases = [
-                    Handover(party[step.party], (leg(item, cast(Purpose, step.purpose), owner),))
-                    for step in steps
+                    Handover(party[step.party], (leg(item, step.purpose, owner),)) for step in steps
                 ]
             case "send_file":
                 if owner != requester:

@@ -27,7 +27,7 @@ from assistantx.memory.graph import LongTermMemory
 DistanceFn = Callable[[str, str], float]
 # A role is one of the person-to-person parts of a transfer, or the task kind it fills.
 # ``allow``: the owner's own yes for their item that a keeper hands over (no hand-over of theirs).
-RoleKind = Literal["lend", "give", "keep", "allow", "receive", TaskKind]
+RoleKind = Literal["lend", "give", "keep", "allow", "receive"] | TaskKind
 RoleStatus = Literal["bound", "ask", "waiting", "group", "group_waiting", "exhausted"]
 
 # How long an availability observation stays true (s): people come and go.

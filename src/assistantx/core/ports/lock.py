@@ -11,9 +11,9 @@ import asyncio
 import logging
 from abc import ABC, abstractmethod
 from collections.abc import Callable
-from typing import Literal, get_args
+from typing import Annotated, Literal
 
-from pydantic import BaseModel, Field
+from pydantic import AfterValidator, BaseModel, Field
 
 from assistantx.core import task_kinds
 from assistantx.core.lifecycle import Component
@@ -22,12 +22,9 @@ logger = logging.getLogger(__name__)
 
 # What the person does at the locker: put the item in, take it out, or take it out, work on
 # it (sign, seal, copy, heat) and put it back; "produce" = make it at a facility and put it in.
-Purpose = Literal["deposit", "collect", "sign", "seal", "copy", "heat", "produce"]
-# The purposes for which the person takes the item out, works on it and puts it back: the
-# work steps of the table of task kinds.
-WORK_PURPOSES: frozenset[str] = task_kinds.work_purposes()
-if not WORK_PURPOSES <= set(get_args(Purpose)):  # pragma: no cover
-    raise RuntimeError("a work step of the task_kinds table is not a lock Purpose")
+# The work steps are the table of task kinds' (``task_kinds.purposes()``), checked wherever a
+# code is built, so a kind added to the table brings its purpose with it.
+Purpose = Annotated[str, AfterValidator(task_kinds.known_purpose)]
 
 LockEventKind = Literal["door_opened", "door_closed", "code_accepted", "code_rejected"]
 

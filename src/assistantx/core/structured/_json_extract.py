@@ -68,6 +68,15 @@ def _candidates(text: str) -> Iterator[str]:
         start = text.find("{", end + 1)
 
 
+def _string_step(c: str, escaped: bool) -> tuple[bool, bool]:
+    """One character on inside a JSON string: (still inside it, the next one is escaped)."""
+    if escaped:
+        return True, False
+    if c == "\\":
+        return True, True
+    return c != '"', False
+
+
 def _balanced_end(text: str, start: int) -> int | None:
     """Index of the brace closing the one at ``start``, skipping braces inside strings."""
     depth = 0
@@ -76,12 +85,7 @@ def _balanced_end(text: str, start: int) -> int | None:
     for i in range(start, len(text)):
         c = text[i]
         if in_string:
-            if escaped:
-                escaped = False
-            elif c == "\\":
-                escaped = True
-            elif c == '"':
-                in_string = False
+            in_string, escaped = _string_step(c, escaped)
         elif c == '"':
             in_string = True
         elif c == "{":
@@ -102,12 +106,7 @@ def remove_trailing_commas(text: str) -> str:
     for c in text:
         if in_string:
             out.append(c)
-            if escaped:
-                escaped = False
-            elif c == "\\":
-                escaped = True
-            elif c == '"':
-                in_string = False
+            in_string, escaped = _string_step(c, escaped)
             continue
         if c in "}]" and pending_comma is not None:
             del out[pending_comma]

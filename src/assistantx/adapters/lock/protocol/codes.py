@@ -22,13 +22,13 @@ import math
 import os
 import secrets
 from dataclasses import dataclass
-from typing import get_args
 
 import segno
 from cryptography.exceptions import InvalidTag
 from cryptography.hazmat.primitives.ciphers.aead import AESGCM
 
 from assistantx.adapters.lock.protocol.keys import Keyring, b64decode, b64encode
+from assistantx.core import task_kinds
 from assistantx.core.clock import Clock
 from assistantx.core.errors import InvalidCodeError
 from assistantx.core.ports.lock import Purpose, QRCode
@@ -38,7 +38,6 @@ GCM_NONCE_BYTES = 12
 CODE_ID_BYTES = 12
 # A payload longer than this is not ours; refuse it before any base64 or crypto work.
 MAX_PAYLOAD_CHARS = 2048
-PURPOSES: frozenset[str] = frozenset(get_args(Purpose))
 
 
 @dataclass(frozen=True)
@@ -139,7 +138,7 @@ def _claims_from_plaintext(plaintext: bytes) -> CodeClaims:
         isinstance(t, (int, float)) and not isinstance(t, bool) and math.isfinite(t) for t in times
     ):
         raise InvalidCodeError("malformed", "lock code body has wrong field types")
-    if purpose not in PURPOSES:
+    if purpose not in task_kinds.purposes():
         raise InvalidCodeError("malformed", f"lock code has unknown purpose {purpose!r}")
     return CodeClaims(
         code_id=code_id,
@@ -183,7 +182,7 @@ class CodeIssuer:
     def issue(
         self, *, instruction_id: str, person: str, purpose: Purpose, item: str
     ) -> tuple[CodeClaims, str]:
-        if purpose not in PURPOSES:
+        if purpose not in task_kinds.purposes():
             raise ValueError(f"unknown purpose {purpose!r}")
         now = self.clock.now()
         claims = CodeClaims(
