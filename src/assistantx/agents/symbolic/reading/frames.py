@@ -28,10 +28,10 @@ from assistantx.agents.symbolic.reading._parties import (
     UnresolvedPronoun,
     clause_roles,
 )
-from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english, task_kinds
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame
 
@@ -53,8 +53,9 @@ class FrameReader:
         self.office = office
         self.reader = TaskReader(office)
 
-    def frame(self, readings: Readings, requester: str) -> TaskFrame:
-        """The tasks the readings ask for, or the question that is still open."""
+    def frame(self, readings: Readings, requester: str, holder: str | None = None) -> TaskFrame:
+        """The tasks the readings ask for, or the question that is still open. ``holder``:
+        who the whole message says has an item now (``holder``), for one given back."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -93,6 +94,7 @@ class FrameReader:
         # a rejected item is never fetched; with nothing left, the checks below ask
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
+        tasks = [self._given_back(t, holder) for t in tasks]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -178,7 +180,8 @@ class FrameReader:
                 if t.owner is None and self.reader.kinds[t.item] == "personal":
                     return f"Whose {name} do you mean?"
                 kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
-                if t.owner is not None and t.owner == t.recipient and not kept:
+                held = t.source is not None and t.source != t.owner  # "it's on my desk"
+                if t.owner is not None and t.owner == t.recipient and not (kept or held):
                     who = "you" if t.owner == requester else self.office.person(t.owner).name
                     return (
                         f"Who should get {who}r {name}?"
@@ -192,9 +195,49 @@ class FrameReader:
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
 
+    def _given_back(self, task: Task, holder: str | None) -> Task:
+        """ "Wren lent me her umbrella, please return it to her": an item going back to its
+        owner is taken from whoever the text says has it now (the office file still says the
+        owner), never asked about as if the owner had it."""
+        if task.kind != "transfer" or task.owner is None or task.owner != task.recipient:
+            return task
+        if holder is None or holder == task.owner or task.source is not None:
+            return task
+        if task.item is None or self.office.keeper(task.owner, task.item) is not None:
+            return task
+        return task.model_copy(update={"source": holder})
+
 
 # Words between "not" and the item it rejects: "not the stapler", "not his scissors".
 _DETERMINERS = english.words("determiners")
+
+
+_PLACE_WORDS = english.words("place_words")
+_LEND = frozenset({*language.verb_forms("lend"), *language.verb_forms("loan")})
+_BORROWED = frozenset(language.verb_forms("borrow")) - {"borrow"}
+_WITH_ME = (("i", "have", "it"), ("ive", "got", "it"), ("i", "have", "got", "it"), ("with", "me"))
+
+
+def holder(lexed: Lexed, requester: str) -> str | None:
+    """Who the text says has an item now, if anyone: the requester when they were lent it or
+    borrowed it, or it is on their desk or with them ("P lent me her ruler", "it's on my
+    desk", "I have it"); a colleague when it is on their desk ("it's on Bill's desk")."""
+    words = [t.word for t in lexed.tokens]
+    for n, w in enumerate(words):
+        after = words[n + 1 : n + 4]
+        if w in _LEND and "me" in after:
+            return requester  # "lent me", "loaned it to me"
+        if w in _BORROWED and n and words[n - 1] in ("i", "ive", "id", "we"):
+            return requester  # "I borrowed"
+        if w == "my" and after[:1] and after[0] in _PLACE_WORDS:
+            return requester  # "on my desk"
+        if any(tuple(words[n : n + len(p)]) == p for p in _WITH_ME):
+            return requester
+    for m in lexed.mentions:
+        nxt = lexed.tokens[m.end].word if m.end < len(lexed.tokens) else ""
+        if m.kind == "person" and m.possessive and len(m.ids) == 1 and nxt in _PLACE_WORDS:
+            return m.ids[0]  # "it's on Bill's desk"
+    return None
 
 
 def _rejected_items(readings: Readings) -> set[str]:

@@ -33,7 +33,7 @@ import dataclasses
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.reading.destination import destination
-from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
+from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader, holder
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
@@ -88,7 +88,10 @@ class InstructionParser:
                 evidence=screened.evidence,
             )
         lexed = self.lex.read(screened.text)  # stages 1 and 2, once; later ones get it
-        frame = self.frames.frame(self.readings.read(lexed), requester)
+        # who has an item now is said anywhere, also in a statement the screen set aside
+        # ("P lent me her ruler. Please return it to her; it's on my desk")
+        said_holder = holder(self.lex.read(text) if text != screened.text else lexed, requester)
+        frame = self.frames.frame(self.readings.read(lexed), requester, said_holder)
         if frame.understood:
             frame = self._with_operations(frame, lexed)
         if frame.question == NOT_UNDERSTOOD:

@@ -70,6 +70,12 @@ _MANNER = english.words("manner_openers")
 _WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
 _FOR_SPEAKER = frozenset({"i", "me", "my", "mine", "id", "im", "ive"})
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
+_NOTE_OPENERS = tuple(
+    sorted((tuple(p.split()) for p in english.entries("note_openers")), key=lambda p: -len(p))
+)
+_CONDITIONS = tuple(tuple(p.split()) for p in english.entries("condition_openers"))
+_LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
+_DEADLINES = frozenset({"by", "before", "until", "till"})
 
 
 @dataclass(frozen=True)
@@ -119,6 +125,50 @@ class SpeechActs:
                 rest = w[len(head) :]
                 return not rest or not self._imperative(rest)
         return False
+
+    def note(self, words: list[str]) -> list[str] | None:
+        """ "note this down: the tape ran out", "for the record, ...": the words of a note
+        to keep (after its opener), or None when the piece opens no note. The opener is read
+        as a phrase, so a verb that is also someone's name ("mark this down") opens it too."""
+        w = content(words)
+        opener = next((p for p in _NOTE_OPENERS if _starts(w, p)), None)
+        if opener is not None:
+            return w[len(opener) :]
+        # "<verb> this down": writing down, whatever the verb, unless it is a task word
+        # ("bring this down to ..." is an errand)
+        for down in (["this", "down"], ["that", "down"], ["it", "down"], ["down"]):
+            after = w[1 : 1 + len(down)]
+            if after == down and language.verb_lemmas(w[0]) and w[0] not in self.lex.cue_words:
+                rest = w[1 + len(down) :]
+                return None if rest[:1] == ["to"] else rest
+        return None
+
+    def condition(self, words: list[str], asks: bool) -> bool:
+        """ "if Hal ever needs a ruler", "in case anyone asks", "whenever Ida is back": a
+        clause that says when, not what to do; not "if you could ..." (a polite request) nor
+        "when is Ida back?" (a question)."""
+        w = content(words)
+        opener = next((p for p in _CONDITIONS if _starts(w, p)), None)
+        if any(_starts(w, o) for o in _WISH_OPENERS):
+            return False  # "if only Rich would lend me ...": a wish, read as one
+        if opener is None or asks:
+            return False
+        rest = w[len(opener) :]
+        if not rest or self._asks_you(rest) or self._imperative(rest):
+            return False  # "if you could bring ...", "if possible, ..." is read on
+        return not (w[0] in _WH and rest[0] in _AUX)  # "when is ...": a question
+
+    @staticmethod
+    def later(words: list[str]) -> bool:
+        """ "... I could use later", "... tomorrow", "... on Friday": a time after now."""
+        w = content(words)
+        if any(a == "on" and language.is_weekday(b) for a, b in itertools.pairwise(w)):
+            return True
+        return any(
+            _starts(w[n:], p) and (n == 0 or w[n - 1] not in _DEADLINES)  # "by tomorrow": now
+            for n in range(len(w))
+            for p in _LATER
+        )
 
     def wish(self, words: list[str]) -> bool:
         """A wish or prohibition about other people's conduct: nothing to fetch."""
@@ -220,8 +270,8 @@ class SpeechActs:
         if first in _AUX and first in _SUBJECT_VERB and not asks:
             return None  # "we're trying to ...": a contraction, not "were ...?"
         if first in _AUX:
-            if self._for_me(w):
-                return "polite"  # "does anyone have a stapler I could borrow?"
+            if self._for_me(w):  # "does anyone have a stapler I could borrow?"
+                return "info" if self.later(w) else "polite"  # "... I could use later?"
             return "info"
         if asks and not self._imperative(w) and not (set(w) & _WILLING):
             return "info" if first in _AUX | _WH else None
