@@ -181,3 +181,28 @@ async def test_the_lent_item_goes_from_the_borrower_back_to_its_lender() -> None
     )
     assert stm.trace.outcome == "done", stm.trace.summary
     assert sim.world.check({"holds": ["wren", "umbrella:wren"]})
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("can you send out my report to Harlow & Finch", "Harlow & Finch"),
+        ("send out my drawing to the client today", "the client"),
+        ("please courier my contract to our lawyers", "our lawyers"),
+        ("courier my drawing to Bill", "Bill"),  # a send-out goes outside, whatever the name
+    ],
+)
+def test_a_send_out_service_sends_to_the_place_outside(text: str, where: str) -> None:
+    frame = parser().parse(text, REQUESTER)
+    assert [(t.operation, t.destination, t.recipient) for t in frame.tasks] == [
+        ("courier", where, REQUESTER)
+    ], frame.question
+
+
+@pytest.mark.parametrize("answer", ["the client", "to our lawyers", "Harlow & Finch."])
+def test_the_answer_to_where_is_the_place_outside_asked_once(answer: str) -> None:
+    first = parser().parse("send out my drawing.", REQUESTER)
+    assert first.question and first.question.startswith("Where should I courier")
+    frame = parser().parse_with_answers("send out my drawing.", REQUESTER, [answer])
+    assert [(t.operation, t.recipient) for t in frame.tasks] == [("courier", REQUESTER)]
+    assert frame.tasks[0].destination == answer.removeprefix("to ").rstrip(".")

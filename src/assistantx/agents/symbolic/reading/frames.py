@@ -205,6 +205,8 @@ class FrameReader:
             return task
         if task.item is None or self.office.keeper(task.owner, task.item) is not None:
             return task
+        if task.owner not in self.office.owners_of(task.item):
+            return task  # an item the office does not know as theirs: asked, not guessed
         return task.model_copy(update={"source": holder})
 
 
