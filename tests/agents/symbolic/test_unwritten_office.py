@@ -206,3 +206,28 @@ def test_the_answer_to_where_is_the_place_outside_asked_once(answer: str) -> Non
     frame = parser().parse_with_answers("send out my drawing.", REQUESTER, [answer])
     assert [(t.operation, t.recipient) for t in frame.tasks] == [("courier", REQUESTER)]
     assert frame.tasks[0].destination == answer.removeprefix("to ").rstrip(".")
+
+
+@pytest.mark.parametrize(
+    ("text", "signer"),
+    [
+        ("can you get Wren to sign off the bill? it's the invoice on my desk", "wren"),
+        ("please have Hedda sign off the bill. It's the invoice on my desk.", "hedda"),
+        ("get Wren to sign the bill, it's the invoice on my desk", "wren"),
+    ],
+)
+def test_an_item_named_in_a_later_sentence_is_the_one_meant(text: str, signer: str) -> None:
+    """ "the bill" is no item word here (and Bill is a colleague's name); the sentence after
+    it names the office's signable paper, so that is the one to sign."""
+    frame = parser().parse(text, REQUESTER)
+    assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
+        ("sign", "document", REQUESTER, signer)
+    ], frame.question
+
+
+@pytest.mark.parametrize(
+    "text", ["get Wren to sign off the bill", "get Wren to sign off the bill, it's by my ruler"]
+)
+def test_with_no_such_item_named_elsewhere_the_item_is_asked(text: str) -> None:
+    frame = parser().parse(text, REQUESTER)
+    assert frame.tasks == [] and frame.question and "item" in frame.question

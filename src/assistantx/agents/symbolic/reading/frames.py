@@ -53,9 +53,17 @@ class FrameReader:
         self.office = office
         self.reader = TaskReader(office)
 
-    def frame(self, readings: Readings, requester: str, holder: str | None = None) -> TaskFrame:
+    def frame(
+        self,
+        readings: Readings,
+        requester: str,
+        holder: str | None = None,
+        named: Sequence[NamedItem] = (),
+    ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
-        who the whole message says has an item now (``holder``), for one given back."""
+        who the whole message says has an item now (``holder``), for one given back;
+        ``named``: the items the whole message names (``named_items``), for a task whose
+        object was no item word of the office."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -95,6 +103,7 @@ class FrameReader:
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
         tasks = [self._given_back(t, holder) for t in tasks]
+        tasks = [self._named_elsewhere(t, named, requester) for t in tasks]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -195,6 +204,25 @@ class FrameReader:
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
 
+    def _named_elsewhere(self, task: Task, named: Sequence[NamedItem], requester: str) -> Task:
+        """ "get Wren to sign off the bill? it's the invoice on my desk": a task whose object
+        is no item word of the office ("the bill", a word that is also a name) takes the one
+        item of the kind it works on that another sentence names; two such items, or none,
+        still ask "which item?"."""
+        if task.item is not None:
+            return task
+        spec = task_kinds.kind(task.kind) if task_kinds.kind_of(task.kind) else None
+        prop = spec.works_on if spec is not None else None
+        fits = {
+            (item, owner)
+            for item, owner in named
+            if prop is None or getattr(self.office.item_type(item), prop)
+        }
+        if len({item for item, _ in fits}) != 1:
+            return task
+        item, owner = sorted(fits, key=lambda f: f[1] is None)[0]
+        return task.model_copy(update={"item": item, "owner": task.owner or owner or requester})
+
     def _given_back(self, task: Task, holder: str | None) -> Task:
         """ "Wren lent me her umbrella, please return it to her": an item going back to its
         owner is taken from whoever the text says has it now (the office file still says the
@@ -215,6 +243,27 @@ _DETERMINERS = english.words("determiners")
 
 
 _PLACE_WORDS = english.words("place_words")
+NamedItem = tuple[str, str | None]  # an item type and whose it was said to be (None: unsaid)
+
+
+def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
+    """The items a whole message names, with whose each was said to be ("my invoice",
+    "Wren's ruler"), in order; the reader's stages may have set the sentence aside."""
+    out: list[NamedItem] = []
+    for n, m in enumerate(lexed.mentions):
+        if m.kind != "item" or len(m.ids) != 1:
+            continue
+        before = lexed.mentions[n - 1] if n else None
+        owner: str | None = None
+        if before is not None and before.end == m.start:
+            if before.kind == "self" and lexed.tokens[before.start].word in ("my", "mine"):
+                owner = requester
+            elif before.kind == "person" and before.possessive and len(before.ids) == 1:
+                owner = before.ids[0]
+        out.append((m.ids[0], owner))
+    return tuple(out)
+
+
 _LEND = frozenset({*language.verb_forms("lend"), *language.verb_forms("loan")})
 _BORROWED = frozenset(language.verb_forms("borrow")) - {"borrow"}
 _WITH_ME = (("i", "have", "it"), ("ive", "got", "it"), ("i", "have", "got", "it"), ("with", "me"))

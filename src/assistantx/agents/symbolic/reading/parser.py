@@ -34,7 +34,12 @@ import re
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.reading.destination import Outside
-from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader, holder
+from assistantx.agents.symbolic.reading.frames import (
+    NOT_UNDERSTOOD,
+    FrameReader,
+    holder,
+    named_items,
+)
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
@@ -92,9 +97,11 @@ class InstructionParser:
         lexed = self.lex.read(screened.text)  # stages 1 and 2, once; later ones get it
         # who has an item now is said anywhere, also in a statement the screen set aside
         # ("P lent me her ruler. Please return it to her; it's on my desk")
-        said_holder = holder(self.lex.read(text) if text != screened.text else lexed, requester)
+        whole = self.lex.read(text) if text != screened.text else lexed
         readings = self.readings.read(lexed)
-        frame = self.frames.frame(readings, requester, said_holder)
+        frame = self.frames.frame(
+            readings, requester, holder(whole, requester), named_items(whole, requester)
+        )
         if frame.understood:
             frame = self._with_operations(frame, lexed, readings.outside)
         if frame.question == NOT_UNDERSTOOD:
