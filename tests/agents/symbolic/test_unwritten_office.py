@@ -57,6 +57,7 @@ def test_a_message_that_asks_for_nothing_is_answered_in_words(text: str) -> None
             [("transfer", "ruler", None, REQUESTER)],
         ),
         ("when Ciaran is back, bring me his ruler", [("transfer", "ruler", "ciaran", REQUESTER)]),
+        ("if possible bring me a calculator", [("transfer", "calculator", None, REQUESTER)]),
     ],
 )
 def test_a_request_beside_a_note_or_condition_is_still_read(

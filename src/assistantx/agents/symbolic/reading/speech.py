@@ -76,6 +76,8 @@ _NOTE_OPENERS = tuple(
 _CONDITIONS = tuple(tuple(p.split()) for p in english.entries("condition_openers"))
 _LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
 _DEADLINES = frozenset({"by", "before", "until", "till"})
+# What stands before a verb that is not a command: its subject, "to", a modal's contraction.
+_SUBJECT_WORDS = english.words("subject_pronouns") | _SUBJECT_VERB | {"to", "ll", "d", "s"}
 
 
 @dataclass(frozen=True)
@@ -156,7 +158,21 @@ class SpeechActs:
         rest = w[len(opener) :]
         if not rest or self._asks_you(rest) or self._imperative(rest):
             return False  # "if you could bring ...", "if possible, ..." is read on
+        if self._main_clause(rest):
+            return False  # "when you're free bring me a ruler": the request after it
         return not (w[0] in _WH and rest[0] in _AUX)  # "when is ...": a question
+
+    def _main_clause(self, w: list[str]) -> bool:
+        """A task word in command form after a condition with no comma ("if possible bring
+        me ..."): not the condition's own verb ("if Wren needs to copy ...", "if Ida
+        copies ...": after "to", a subject or a modal)."""
+        for k in range(1, len(w)):
+            before = w[k - 1]
+            if before in _SUBJECT_WORDS or before in _MODALS or self._named(before):
+                continue
+            if self._imperative(w[k:]):
+                return True
+        return False
 
     @staticmethod
     def later(words: list[str]) -> bool:
