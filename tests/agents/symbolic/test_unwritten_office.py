@@ -34,9 +34,13 @@ def _read(
         "note this down: the tape ran out; no need to do anything",
         "mark this down: Hedda is away next week",
         "jot this down: Priya is off on Friday",
+        "Mark this down please: Wren's umbrella is in the kitchen",
+        "note to self: Bill has the spare calculator",
+        "just for your records, Bill has the spare calculator",
         "Note this down. Ciaran needs his laser measure on Friday.",
         # a hedged wish about a facility
         "it'd be nice if the supply cupboard had more tape",
+        "it'd be lovely if the kettle were quicker",
         # a past report that closes a matter
         "Hedda returned my umbrella this morning, all sorted",
         "Bill gave back my calculator yesterday, all good now",

@@ -76,6 +76,7 @@ _NOTE_OPENERS = tuple(
 _CONDITIONS = tuple(tuple(p.split()) for p in english.entries("condition_openers"))
 _LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
 _DEADLINES = frozenset({"by", "before", "until", "till"})
+_HEDGES = (("itd", "be"), ("it", "would", "be"), ("would", "be"), ("wouldnt", "it", "be"))
 # What stands before a verb that is not a command: its subject, "to", a modal's contraction.
 _SUBJECT_WORDS = english.words("subject_pronouns") | _SUBJECT_VERB | {"to", "ll", "d", "s"}
 
@@ -103,6 +104,25 @@ def content(words: list[str]) -> list[str]:
         else:
             break
     return words[k:]
+
+
+def _after_courtesy(w: list[str]) -> list[str]:
+    """The words after a "please" that follows an opener ("mark this down please: ...")."""
+    k = 0
+    while k < len(w) and w[k] in ("please", "pls", "plz", "kindly"):
+        k += 1
+    return w[k:]
+
+
+def _hedged(w: list[str]) -> tuple[str, ...] | None:
+    """ "it'd be lovely if ...", "it would be so handy if ...": a hedged wish opener, with
+    whatever word says how nice it would be (one or two words before "if")."""
+    for head in _HEDGES:
+        if _starts(w, head):
+            for n in (1, 2):
+                if w[len(head) + n : len(head) + n + 1] == ["if"]:
+                    return tuple(w[: len(head) + n + 1])
+    return None
 
 
 def _has_need_phrase(w: list[str]) -> bool:
@@ -133,16 +153,18 @@ class SpeechActs:
         to keep (after its opener), or None when the piece opens no note. The opener is read
         as a phrase, so a verb that is also someone's name ("mark this down") opens it too."""
         w = content(words)
+        while w[:1] and w[0] in ("just", "also", "and", "so"):
+            w = w[1:]  # "just for your records, ..."
         opener = next((p for p in _NOTE_OPENERS if _starts(w, p)), None)
         if opener is not None:
-            return w[len(opener) :]
+            return _after_courtesy(w[len(opener) :])
         # "<verb> this down": writing down, whatever the verb, unless it is a task word
         # ("bring this down to ..." is an errand)
         for down in (["this", "down"], ["that", "down"], ["it", "down"], ["down"]):
             after = w[1 : 1 + len(down)]
             if after == down and language.verb_lemmas(w[0]) and w[0] not in self.lex.cue_words:
                 rest = w[1 + len(down) :]
-                return None if rest[:1] == ["to"] else rest
+                return None if rest[:1] == ["to"] else _after_courtesy(rest)
         return None
 
     def condition(self, words: list[str], asks: bool) -> bool:
@@ -207,7 +229,7 @@ class SpeechActs:
         the place, asking nobody for anything (no person named, nothing for the speaker,
         nobody addressed); "if Hal could sign my form" is a request, read as one."""
         w = content(words)
-        opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None)
+        opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None) or _hedged(w)
         if opener is None:
             return False
         rest = w[len(opener) :]
