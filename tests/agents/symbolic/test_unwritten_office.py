@@ -194,6 +194,8 @@ async def test_the_lent_item_goes_from_the_borrower_back_to_its_lender() -> None
         ("can you send out my report to Harlow & Finch", "Harlow & Finch"),
         ("send out my drawing to the client today", "the client"),
         ("please courier my contract to our lawyers", "our lawyers"),
+        # a task word as the item's adjective says what was done, not what to do
+        ("please send out the signed drawing to our surveyors in Leeds", "our surveyors in Leeds"),
         ("courier my drawing to Bill", "Bill"),  # a send-out goes outside, whatever the name
     ],
 )

@@ -71,6 +71,7 @@ class MentionReader:
     def read(self, lexed: Lexed) -> Readings:
         tokens = lexed.tokens
         mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
+        mentions = participles(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
         outside = find_outside(tokens, spaces, self._sends_out)
         if outside is not None:
@@ -191,4 +192,19 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
         after = tokens[m.end].word if m.end < len(tokens) else ""
         if before in _BEFORE_VERB and after in _DETERMINERS:
             out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
+    return out
+
+
+def participles(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """Task words used as an item's adjective ("send out *the signed* drawing", "my printed
+    slides") turned into plain words: they say what was done to it, not what to do."""
+    out = list(mentions)
+    for n, m in enumerate(out[:-1]):
+        if m.kind != "cue" or m.end - m.start != 1 or out[n + 1].kind != "item":
+            continue
+        word = tokens[m.start].word
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        inflected = word not in language.verb_lemmas(word) and bool(language.verb_lemmas(word))
+        if before in _DETERMINERS and inflected and out[n + 1].start == m.end:
+            out[n] = Mention("word", m.start, m.end, (word,), False, m.text)
     return out
