@@ -174,6 +174,12 @@ def test_a_return_with_no_holder_named_is_still_asked() -> None:
     assert frame.tasks == [] and frame.question
 
 
+def test_a_return_of_an_item_the_office_does_not_know_as_theirs_is_asked_truthfully() -> None:
+    frame = parser().parse("Hedda lent me her umbrella, please bring it back to her", REQUESTER)
+    assert frame.tasks == [] and frame.question
+    assert "has no umbrella" in frame.question and "already has" not in frame.question
+
+
 async def test_the_lent_item_goes_from_the_borrower_back_to_its_lender() -> None:
     sim = SimOffice(office())
     sim.world.holder["umbrella:wren"] = REQUESTER  # the truth: Wren lent it to Tomasz

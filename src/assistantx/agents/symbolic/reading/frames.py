@@ -192,6 +192,12 @@ class FrameReader:
                 held = t.source is not None and t.source != t.owner  # "it's on my desk"
                 if t.owner is not None and t.owner == t.recipient and not (kept or held):
                     who = "you" if t.owner == requester else self.office.person(t.owner).name
+                    if who != "you" and t.owner not in self.office.owners_of(t.item):
+                        # "Hedda lent me her umbrella ...": not one the office knows as hers
+                        return (
+                            f"As far as I know, {who} has no {name} of their own. Whose "
+                            f"{name} is it, and who should get it?"
+                        )
                     return (
                         f"Who should get {who}r {name}?"
                         if who == "you"
