@@ -129,6 +129,22 @@ class Planner:
         """Who puts the item into the locker (``held``: items an earlier task of the request
         brought to the requester: they have them now, wherever they are kept)."""
         item_type = t.item or ""
+        if (
+            t.source is not None
+            and t.source != t.owner
+            and t.source in {p.id for p in self.office.people}
+        ):
+            # "P lent me her ruler, please return it to her; it's on my desk": whoever the
+            # request says has it puts it in, not the owner the office file names
+            return Role(
+                f"{n}.source",
+                "give",
+                requester,
+                fixed=t.source,
+                item_type=item_type,
+                item_owner=t.owner,
+                beneficiary=t.recipient,
+            )
         if t.owner is not None and f"{item_type}:{t.owner}" in held:
             # "get my lunch out of the fridge and heat it", read as two tasks: the lunch is
             # with them now, so they put it in; the fridge's keeper is not asked again
@@ -206,6 +222,17 @@ class Planner:
             keeper = self.office.kept_owner(t.item, besides=requester)
             t = t.model_copy(update={"owner": keeper}) if keeper else t
         recipient = Role(f"{n}.recipient", "receive", requester, fixed=t.recipient)
+        if t.source is not None and t.owner == t.recipient and t.source != t.owner:
+            # given back: the owner is asked about their own item by name, so their yes is
+            # also the owner's yes the locker's guard wants before it leaves the borrower
+            recipient = Role(
+                f"{n}.recipient",
+                "receive",
+                requester,
+                fixed=t.recipient,
+                item_type=t.item,
+                item_owner=t.owner,
+            )
         phases: list[Phase] = []
         roles: list[Role] = []
 

@@ -127,6 +127,11 @@ class Roles:
                 return f"take {self._whose(role)} {thing} out of the {place} for the robot"
             case "allow":
                 return f"let {beneficiary} have your {thing} from the {place}"
+            case "receive" if role.item_type and role.item_owner == role.fixed:
+                return (  # given back to its owner: named, so the yes is the owner's own
+                    f"be at your desk soon to receive your {thing} back from "
+                    f"{self._name(role.requester)}"
+                )
             case "receive":
                 return (
                     f"be at your desk soon to receive a delivery from {self._name(role.requester)}"

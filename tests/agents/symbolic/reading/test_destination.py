@@ -1,13 +1,19 @@
-"""The destination stage of a service that sends outside: the requester's own words after the
-service's verb and "to", never a guess."""
+"""The destination of a service that sends outside, found once on the tokens: the requester's
+own words after the service's verb phrase and "to", never a guess."""
 
 from __future__ import annotations
 
 import pytest
 
-from assistantx.agents.symbolic.reading.destination import destination
+from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
+from assistantx.agents.symbolic.reading.tokens import gaps, tokenize
 
-FAX = ("fax", "faxes", "faxed", "faxing")
+PHRASES = (*verb_phrases("fax", ["fax"]), *verb_phrases("courier", ["courier", "send out"]))
+
+
+def _outside(text: str) -> Outside | None:
+    tokens = tokenize(text)
+    return find_outside(tokens, gaps(text, tokens), PHRASES)
 
 
 @pytest.mark.parametrize(
@@ -17,15 +23,30 @@ FAX = ("fax", "faxes", "faxed", "faxing")
         ("Fax it to 020 7946 0000 please", "020 7946 0000"),
         ("send this to Lee and fax my form to the bank. Thanks", "the bank"),
         ("faxed to Müller & Søn GmbH, asap", "Müller & Søn GmbH"),
+        ("can you send out my plans to Ashdown & Reeve", "Ashdown & Reeve"),
     ],
 )
 def test_the_words_after_the_verb_and_to(text: str, where: str) -> None:
-    assert destination(text, FAX) == where
+    found = _outside(text)
+    assert found is not None and found.phrase == where
 
 
 @pytest.mark.parametrize(
-    "text",
-    ["fax my form", "please fax my form, it has to go today", "take it to Lee", "fax my form to"],
+    "text", ["fax my form", "please fax my form, it has to go today", "fax my form to"]
 )
 def test_no_destination_is_none(text: str) -> None:
-    assert destination(text, FAX) is None
+    found = _outside(text)
+    assert found is not None and found.phrase is None and found.start is None
+
+
+@pytest.mark.parametrize("text", ["take it to Lee", "send my plans to Lee"])
+def test_no_send_out_phrase_is_none(text: str) -> None:
+    """A phrase counts whole: "send" alone is no "send out"."""
+    assert _outside(text) is None
+
+
+def test_the_spans_are_the_tokens_of_the_verb_and_the_place() -> None:
+    found = _outside("please send out my plans to the client")
+    assert found is not None
+    assert (found.operation, found.verb_start, found.verb_end) == ("courier", 1, 3)
+    assert (found.start, found.end) == (6, 8) and found.holds(7) and not found.holds(5)

@@ -1,36 +1,107 @@
 """Where a service that sends an item outside the office sends it ("fax my form to the county
-tax office"): the words after "to" that follow the service's verb, as the requester wrote them.
+tax office", "send out my drawing to the client"), found once, on the tokens, by the readings
+stage, and handed forward: the readings stage reads the verb phrase as the service's task word
+and the words after its "to" as a place outside (never a colleague to look up); the parser
+takes the phrase as the task's destination.
 
-The destination is outside the office, so it is never a name the lexicon knows; it is kept in
-the requester's own words (a number, an organisation) for the outcome the requester reads.
+The destination is outside the office, so it is kept in the requester's own words (a number,
+an organisation) for the outcome the requester reads.
 """
 
 from __future__ import annotations
 
-import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import language
 
 # What ends a destination: a sentence or clause end, or a courtesy word after it.
-_END = re.compile(r"[.!?;,\n]|\s+(?:please|pls|thanks|thank you|thx|asap|today|now)\b", re.I)
+_END_MARKS = frozenset(".!?;,\n")
+_END_WORDS = frozenset({"please", "pls", "thanks", "thank", "thx", "asap", "today", "now"})
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
 
 
-def destination(text: str, verbs: Iterable[str]) -> str | None:
-    """The phrase after the first "to" that follows one of ``verbs`` (inflected forms, lower
-    case) in ``text``; None when the text names no destination."""
-    forms = sorted({v for v in verbs if v}, key=len, reverse=True)
-    if not forms:
+@dataclass(frozen=True)
+class VerbPhrase:
+    """How a send-out service is asked for: its first word in any form, then the rest as
+    written ("send" + "out"); the phrase counts whole, never its first word alone."""
+
+    operation: str
+    forms: frozenset[str]
+    rest: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Outside:
+    """A send-out service's verb phrase in a request, and where it sends the item."""
+
+    operation: str
+    verb_start: int  # token span of the verb phrase
+    verb_end: int
+    start: int | None  # token span of the destination (after "to"); None: none named
+    end: int | None
+    phrase: str | None  # the destination in the requester's words
+
+    def holds(self, token: int) -> bool:
+        """Whether token index ``token`` is part of the destination."""
+        return self.start is not None and self.end is not None and self.start <= token < self.end
+
+
+def verb_phrases(operation: str, phrases: Iterable[str]) -> tuple[VerbPhrase, ...]:
+    """The verb phrases of one send-out operation ("fax"; "courier", "send out")."""
+    out: list[VerbPhrase] = []
+    for phrase in phrases:
+        words = language.fold(phrase).split()
+        if words:
+            forms = frozenset(language.verb_forms(words[0])) | {words[0]}
+            out.append(VerbPhrase(operation, forms, tuple(words[1:])))
+    return tuple(out)
+
+
+def find_outside(
+    tokens: Sequence[Token], gaps: Sequence[str], phrases: Sequence[VerbPhrase]
+) -> Outside | None:
+    """The first send-out verb phrase of ``tokens`` (``gaps``: the punctuation before each
+    token), with the phrase after the first "to" in the verb's own clause, if any."""
+    words = [t.word for t in tokens]
+    found = next(
+        (
+            (k, k + 1 + len(p.rest), p.operation)
+            for k, word in enumerate(words)
+            for p in phrases
+            if word in p.forms and tuple(words[k + 1 : k + 1 + len(p.rest)]) == p.rest
+        ),
+        None,
+    )
+    if found is None:
         return None
-    verb = re.search(r"\b(?:" + "|".join(map(re.escape, forms)) + r")\b", text, re.I)
-    if verb is None:
-        return None
-    clause = re.split(r"[.!?;,\n]", text[verb.end() :], maxsplit=1)[0]
-    to = re.search(r"\bto\s+", clause, re.I)  # in the verb's own clause ("…, it has to go")
-    if to is None:
-        return None
-    rest = text[verb.end() + to.end() :]
-    end = _END.search(rest)
-    phrase = (rest[: end.start()] if end else rest).strip().strip("\"'")
-    if not phrase or len(phrase) > _LONGEST:
-        return None
-    return phrase
+    verb_start, verb_end, operation = found
+    to = None
+    for k in range(verb_end, len(tokens)):
+        if _ends(gaps[k]):
+            break  # "please fax my form, it has to go today": another clause's "to"
+        if words[k] == "to":
+            to = k
+            break
+    start = end = None
+    phrase = None
+    if to is not None and to + 1 < len(tokens):
+        start = end = to + 1
+        while end < len(tokens) and not (end > start and _ends(gaps[end])):
+            if words[end] in _END_WORDS:
+                break
+            end += 1
+        lead = gaps[start].strip()  # "+44 ...", "#3 ...": a sign before the first word
+        said = "".join(
+            (gaps[k] if k > start else lead) + tokens[k].text for k in range(start, end)
+        ).strip()
+        said = said.strip("\"'")
+        phrase = said if said and len(said) <= _LONGEST else None
+        if phrase is None:
+            start = end = None
+    return Outside(operation, verb_start, verb_end, start, end, phrase)
+
+
+def _ends(gap: str) -> bool:
+    return any(c in _END_MARKS for c in gap)

@@ -28,10 +28,10 @@ from assistantx.agents.symbolic.reading._parties import (
     UnresolvedPronoun,
     clause_roles,
 )
-from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english, task_kinds
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame
 
@@ -53,8 +53,17 @@ class FrameReader:
         self.office = office
         self.reader = TaskReader(office)
 
-    def frame(self, readings: Readings, requester: str) -> TaskFrame:
-        """The tasks the readings ask for, or the question that is still open."""
+    def frame(
+        self,
+        readings: Readings,
+        requester: str,
+        holder: str | None = None,
+        named: Sequence[NamedItem] = (),
+    ) -> TaskFrame:
+        """The tasks the readings ask for, or the question that is still open. ``holder``:
+        who the whole message says has an item now (``holder``), for one given back;
+        ``named``: the items the whole message names (``named_items``), for a task whose
+        object was no item word of the office."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -93,6 +102,8 @@ class FrameReader:
         # a rejected item is never fetched; with nothing left, the checks below ask
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
+        tasks = [self._given_back(t, holder) for t in tasks]
+        tasks = [self._named_elsewhere(t, named, requester) for t in tasks]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -178,8 +189,15 @@ class FrameReader:
                 if t.owner is None and self.reader.kinds[t.item] == "personal":
                     return f"Whose {name} do you mean?"
                 kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
-                if t.owner is not None and t.owner == t.recipient and not kept:
+                held = t.source is not None and t.source != t.owner  # "it's on my desk"
+                if t.owner is not None and t.owner == t.recipient and not (kept or held):
                     who = "you" if t.owner == requester else self.office.person(t.owner).name
+                    if who != "you" and t.owner not in self.office.owners_of(t.item):
+                        # "Hedda lent me her umbrella ...": not one the office knows as hers
+                        return (
+                            f"As far as I know, {who} has no {name} of their own. Whose "
+                            f"{name} is it, and who should get it?"
+                        )
                     return (
                         f"Who should get {who}r {name}?"
                         if who == "you"
@@ -192,9 +210,91 @@ class FrameReader:
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
 
+    def _named_elsewhere(self, task: Task, named: Sequence[NamedItem], requester: str) -> Task:
+        """ "get Wren to sign off the bill? it's the invoice on my desk": a task whose object
+        is no item word of the office ("the bill", a word that is also a name) takes the one
+        item of the kind it works on that another sentence names; two such items, or none,
+        still ask "which item?"."""
+        if task.item is not None:
+            return task
+        spec = task_kinds.kind(task.kind) if task_kinds.kind_of(task.kind) else None
+        prop = spec.works_on if spec is not None else None
+        fits = {
+            (item, owner)
+            for item, owner in named
+            if prop is None or getattr(self.office.item_type(item), prop)
+        }
+        if len({item for item, _ in fits}) != 1:
+            return task
+        item, owner = sorted(fits, key=lambda f: f[1] is None)[0]
+        return task.model_copy(update={"item": item, "owner": task.owner or owner or requester})
+
+    def _given_back(self, task: Task, holder: str | None) -> Task:
+        """ "Wren lent me her umbrella, please return it to her": an item going back to its
+        owner is taken from whoever the text says has it now (the office file still says the
+        owner), never asked about as if the owner had it."""
+        if task.kind != "transfer" or task.owner is None or task.owner != task.recipient:
+            return task
+        if holder is None or holder == task.owner or task.source is not None:
+            return task
+        if task.item is None or self.office.keeper(task.owner, task.item) is not None:
+            return task
+        if task.owner not in self.office.owners_of(task.item):
+            return task  # an item the office does not know as theirs: asked, not guessed
+        return task.model_copy(update={"source": holder})
+
 
 # Words between "not" and the item it rejects: "not the stapler", "not his scissors".
 _DETERMINERS = english.words("determiners")
+
+
+_PLACE_WORDS = english.words("place_words")
+NamedItem = tuple[str, str | None]  # an item type and whose it was said to be (None: unsaid)
+
+
+def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
+    """The items a whole message names, with whose each was said to be ("my invoice",
+    "Wren's ruler"), in order; the reader's stages may have set the sentence aside."""
+    out: list[NamedItem] = []
+    for n, m in enumerate(lexed.mentions):
+        if m.kind != "item" or len(m.ids) != 1:
+            continue
+        before = lexed.mentions[n - 1] if n else None
+        owner: str | None = None
+        if before is not None and before.end == m.start:
+            if before.kind == "self" and lexed.tokens[before.start].word in ("my", "mine"):
+                owner = requester
+            elif before.kind == "person" and before.possessive and len(before.ids) == 1:
+                owner = before.ids[0]
+        out.append((m.ids[0], owner))
+    return tuple(out)
+
+
+_LEND = frozenset({*language.verb_forms("lend"), *language.verb_forms("loan")})
+_BORROWED = frozenset(language.verb_forms("borrow")) - {"borrow"}
+_WITH_ME = (("i", "have", "it"), ("ive", "got", "it"), ("i", "have", "got", "it"), ("with", "me"))
+
+
+def holder(lexed: Lexed, requester: str) -> str | None:
+    """Who the text says has an item now, if anyone: the requester when they were lent it or
+    borrowed it, or it is on their desk or with them ("P lent me her ruler", "it's on my
+    desk", "I have it"); a colleague when it is on their desk ("it's on Bill's desk")."""
+    words = [t.word for t in lexed.tokens]
+    for n, w in enumerate(words):
+        after = words[n + 1 : n + 4]
+        if w in _LEND and "me" in after:
+            return requester  # "lent me", "loaned it to me"
+        if w in _BORROWED and n and words[n - 1] in ("i", "ive", "id", "we"):
+            return requester  # "I borrowed"
+        if w == "my" and after[:1] and after[0] in _PLACE_WORDS:
+            return requester  # "on my desk"
+        if any(tuple(words[n : n + len(p)]) == p for p in _WITH_ME):
+            return requester
+    for m in lexed.mentions:
+        nxt = lexed.tokens[m.end].word if m.end < len(lexed.tokens) else ""
+        if m.kind == "person" and m.possessive and len(m.ids) == 1 and nxt in _PLACE_WORDS:
+            return m.ids[0]  # "it's on Bill's desk"
+    return None
 
 
 def _rejected_items(readings: Readings) -> set[str]:

@@ -20,6 +20,7 @@ mention carries both readings and the parser asks which was meant.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
@@ -483,13 +484,19 @@ def _one_verb(forms: list[str]) -> bool:
     return bool(shared)
 
 
+_INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
+
+
 def _finite(word: str) -> bool:
     return bool(word) and language.is_finite_verb(word)
 
 
 def key_of(name: str) -> str:
-    """The lookup key of a name or phrase: folded, titles and punctuation dropped."""
-    return normalize(language.fold(name))
+    """The lookup key of a name or phrase: folded, titles and punctuation dropped. An
+    apostrophe inside a word is dropped as the tokenizer drops it ("O'Keeffe" is one word,
+    ``okeeffe``, so "First O'Surname's ruler" finds the name), after a possessive "'s"."""
+    folded = re.sub(r"'s\b", "", language.fold(name))
+    return normalize(_INNER_APOSTROPHE.sub("", folded))
 
 
 def inflections(verb: str) -> set[str]:

@@ -29,11 +29,17 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import re
 
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
-from assistantx.agents.symbolic.reading.destination import destination
-from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
+from assistantx.agents.symbolic.reading.destination import Outside
+from assistantx.agents.symbolic.reading.frames import (
+    NOT_UNDERSTOOD,
+    FrameReader,
+    holder,
+    named_items,
+)
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
@@ -43,6 +49,7 @@ from assistantx.core.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, T
 from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+_WHERE_TO = "Where should I "  # the question for a send-out service's place outside
 
 __all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
@@ -88,9 +95,15 @@ class InstructionParser:
                 evidence=screened.evidence,
             )
         lexed = self.lex.read(screened.text)  # stages 1 and 2, once; later ones get it
-        frame = self.frames.frame(self.readings.read(lexed), requester)
+        # who has an item now is said anywhere, also in a statement the screen set aside
+        # ("P lent me her ruler. Please return it to her; it's on my desk")
+        whole = self.lex.read(text) if text != screened.text else lexed
+        readings = self.readings.read(lexed)
+        frame = self.frames.frame(
+            readings, requester, holder(whole, requester), named_items(whole, requester)
+        )
         if frame.understood:
-            frame = self._with_operations(frame, lexed)
+            frame = self._with_operations(frame, lexed, readings.outside)
         if frame.question == NOT_UNDERSTOOD:
             unknown = self._unknown_item(lexed)
             if unknown is not None:
@@ -117,7 +130,9 @@ class InstructionParser:
             f"one. {self.screen.capabilities()}"
         )
 
-    def _with_operations(self, frame: TaskFrame, lexed: Lexed) -> TaskFrame:
+    def _with_operations(
+        self, frame: TaskFrame, lexed: Lexed, outside: Outside | None
+    ) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say."""
         words = {t.word for t in lexed.tokens}
@@ -136,12 +151,13 @@ class InstructionParser:
             op_id = t.operation or (ops[0].id if len(ops) == 1 else None)
             op = self.office.operation(op_id) if op_id else None
             if op is not None and op.sends_out and t.destination is None:
-                # a fax leaves the office: where to is the requester's to say, never a guess
-                where = destination(lexed.text, self._op_words[op.id])
+                # a fax leaves the office: where to is the requester's to say, never a guess;
+                # the readings stage found the words ("send out my drawing to the client")
+                where = outside.phrase if outside is not None else None
                 if where is None:
                     return TaskFrame(
                         requester=frame.requester,
-                        question=f"Where should I {op.name} it to? Please give the number "
+                        question=f"{_WHERE_TO}{op.name} it to? Please give the number "
                         "or the name of the place.",
                     )
                 t = t.model_copy(update={"operation": op.id, "destination": where})
@@ -186,6 +202,12 @@ class InstructionParser:
                         decline="OK, I won't do anything, then.",
                         decline_outcome="done",
                     )
+            if frame.question is not None and frame.question.startswith(_WHERE_TO):
+                # the answer is the place outside ("the client", "to our lawyers"): read as
+                # the request's own "to ...", by the same stage, not as a new request
+                place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
+                frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
+                continue
             chosen = self._chosen_reading(text, answer)
             if chosen:
                 frame = self._choosing(chosen).parse(text, requester)

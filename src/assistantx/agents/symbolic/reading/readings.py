@@ -14,17 +14,18 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
 from assistantx.agents.symbolic.reading.lexicon import (
     COMMON,
     PRONOUNS,
     Lexed,
     Lexicon,
     Mention,
-    inflections,
 )
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language
 from assistantx.core.office import Office
+from assistantx.core.task_schema import SHAPE_KIND
 
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
@@ -35,13 +36,15 @@ _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"
 @dataclass(frozen=True)
 class Readings:
     """What the readings stage hands on: the mentions as read in their sentences, the
-    punctuation before each token, and the first doubt to ask about (or None)."""
+    punctuation before each token, the first doubt to ask about (or None), and where a
+    send-out service sends the item (``destination``)."""
 
     text: str
     tokens: tuple[Token, ...]
     mentions: tuple[Mention, ...]
     gaps: tuple[str, ...]
     doubt: str | None
+    outside: Outside | None = None  # a send-out service's verb phrase and destination
 
 
 class MentionReader:
@@ -54,20 +57,51 @@ class MentionReader:
         # courier), first word in any form: what follows their "to" is a destination outside,
         # not a colleague to look up. A phrase counts whole ("send out", never plain "send").
         self._sends_out = tuple(
-            (frozenset(inflections(words[0])), tuple(words[1:]))
+            vp
             for op in office.operations
             if op.sends_out
-            for phrase in (*op.verbs, op.name)
-            if (words := language.fold(phrase).split())
+            for vp in verb_phrases(op.id, (*op.verbs, op.name))
         )
+        self._kind_of = {
+            op.id: kind
+            for op in office.operations
+            if (kind := SHAPE_KIND.get(op.shape(office))) is not None
+        }
 
     def read(self, lexed: Lexed) -> Readings:
         tokens = lexed.tokens
         mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
+        mentions = participles(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
+        outside = find_outside(tokens, spaces, self._sends_out)
+        if outside is not None:
+            mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
-        doubts = self._doubts(tokens, settled)
-        return Readings(lexed.text, tokens, tuple(settled), spaces, doubts[0] if doubts else None)
+        doubts = self._doubts(tokens, settled, outside)
+        return Readings(
+            lexed.text, tokens, tuple(settled), spaces, doubts[0] if doubts else None, outside
+        )
+
+    def _sent_out(
+        self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside
+    ) -> list[Mention]:
+        """The send-out verb phrase read whole as its service's task word ("send out" is
+        the courier, not a plain "send"), and the destination's words as plain words (a
+        firm, "the client": never a colleague to find or hand anything to)."""
+        out: list[Mention] = []
+        kind = self._kind_of.get(outside.operation)
+        for m in mentions:
+            if kind is not None and outside.verb_start <= m.start < outside.verb_end:
+                if m.start == outside.verb_start:
+                    words = tokens[outside.verb_start : outside.verb_end]
+                    said = " ".join(t.text for t in words)
+                    out.append(Mention("cue", m.start, outside.verb_end, (kind,), False, said))
+                continue
+            if outside.holds(m.start) and m.kind != "word":
+                word = tokens[m.start].word
+                m = Mention("word", m.start, m.end, (word,), False, m.text)
+            out.append(m)
+        return out
 
     def _owned_cue_items(
         self, mentions: Sequence[Mention], tokens: Sequence[Token]
@@ -81,28 +115,12 @@ class MentionReader:
                 out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
         return out
 
-    def _destination_from(self, tokens: Sequence[Token]) -> int | None:
-        """The index of the first word after "to" that follows a send-out verb, if any."""
-        words = [t.word for t in tokens]
-        verb = next(
-            (
-                k + len(rest)
-                for k, word in enumerate(words)
-                for forms, rest in self._sends_out
-                if word in forms and tuple(words[k + 1 : k + 1 + len(rest)]) == rest
-            ),
-            None,
-        )
-        if verb is None:
-            return None
-        to = next((k for k in range(verb + 1, len(tokens)) if tokens[k].word == "to"), None)
-        return None if to is None else to + 1
-
-    def _doubts(self, tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[str]:
+    def _doubts(
+        self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside | None
+    ) -> list[str]:
         out: list[str] = []
-        outside = self._destination_from(tokens)
         for n, m in enumerate(mentions):
-            if outside is not None and m.start >= outside and m.kind in ("word", "person"):
+            if outside is not None and outside.holds(m.start):
                 continue  # "fax it to Harlow Ltd": a place outside, not someone to find
             if m.kind == "person" and m.alternative and len(m.ids) == 1:
                 name = self.office.person(m.id).name
@@ -174,4 +192,19 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
         after = tokens[m.end].word if m.end < len(tokens) else ""
         if before in _BEFORE_VERB and after in _DETERMINERS:
             out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
+    return out
+
+
+def participles(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """Task words used as an item's adjective ("send out *the signed* drawing", "my printed
+    slides") turned into plain words: they say what was done to it, not what to do."""
+    out = list(mentions)
+    for n, m in enumerate(out[:-1]):
+        if m.kind != "cue" or m.end - m.start != 1 or out[n + 1].kind != "item":
+            continue
+        word = tokens[m.start].word
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        inflected = word not in language.verb_lemmas(word) and bool(language.verb_lemmas(word))
+        if before in _DETERMINERS and inflected and out[n + 1].start == m.end:
+            out[n] = Mention("word", m.start, m.end, (word,), False, m.text)
     return out

@@ -172,6 +172,8 @@ class Piece:
 
 Verdict = Literal[
     "withdrawn",
+    "note",
+    "condition",
     "exclusion",
     "wish",
     "thanks",
@@ -240,6 +242,7 @@ class RequestScreen:
     def screen(self, text: str, requester: str) -> Screened:
         text, corrected = self._corrected(text)
         self._text = text
+        self._noting: int | None = None  # where a note began ("note this down: ...")
         pieces = _pieces(text)
         findings: list[Finding] = []
         for piece in pieces:
@@ -264,7 +267,8 @@ class RequestScreen:
         dropped = [f.piece for f in findings if f.verdict in _DROPPED]
         left = _without(text, cut, dropped)
         meant = set(content(_words(left))) - self.en.courtesy  # "hi," left of a statement
-        if not meant or self._aside(left, live):
+        kept = [p for p in pieces if p.start >= cut and not any(p is d for d in dropped)]
+        if not meant or self._aside(left, live, kept):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)
@@ -276,12 +280,11 @@ class RequestScreen:
                 return out
             if live or withdrawn:
                 return self._answered(out, live, withdrawn=bool(withdrawn))
-        kept = [p for p in pieces if p.start >= cut and not any(p is d for d in dropped)]
         if any(self.acts.need(p.words, self._self_words) for p in kept) and not any(
             self.acts.request(p.words) for p in kept
         ):
             out.confirm = True  # "Min needs scissors.": restate and ask before moving
-        context = [c for f in live if f.verdict == "statement" for c in f.context]
+        context = [c for f in live if f.verdict in ("statement", "condition") for c in f.context]
         left, rewrites = self._rewrite(left, out.hints, context)
         out.evidence += rewrites
         out.text = left
@@ -298,6 +301,10 @@ class RequestScreen:
         fix = re.split(r"[.!?;\n]", after, maxsplit=1)[0]
         rest = after[len(fix) :]
         tokens = self.lex.tokens(fix)
+        # "..., sorry, his laser, not the ruler": what is rejected after it says which one
+        # the correction replaces; the correction itself is the part before "not"
+        cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
+        tokens, rejected = tokens[:cut], tokens[cut:]
         if not tokens or len(tokens) > 5:
             return text, []
         mentions = [m for m in self.lex.scan(tokens) if m.kind in ("person", "item")]
@@ -305,6 +312,9 @@ class RequestScreen:
             return text, []
         new = mentions[0]
         names = self._spellings(new.kind, before)
+        if rejected:
+            said_no = " ".join(t.text for t in rejected)
+            names = (self._spellings(new.kind, said_no) & names) or names
         if not names:
             return text, []
         pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
@@ -332,13 +342,22 @@ class RequestScreen:
             for n in (t.name, *t.synonyms, language.plural(t.name))
         }
 
-    def _aside(self, left: str, live: list[Finding]) -> bool:
-        """What is left beside a thanks, wish or withdrawal names nothing of this office and
-        asks for nothing ("..., lifesaver", "..., you're the best"): an aside, not a request."""
-        if not any(f.verdict in ("thanks", "wish", "withdrawn") for f in live):
+    def _aside(self, left: str, live: list[Finding], kept: list[Piece]) -> bool:
+        """What is left beside a thanks, wish or withdrawal, or after a note, condition or
+        report, names nothing of this office and asks for nothing ("..., lifesaver", "...,
+        all sorted"): an aside, not a request. Before a report it is no closing remark
+        ("hello there. I don't know more than I wrote" still says nothing of what is needed)."""
+        anywhere = any(f.verdict in ("thanks", "wish", "withdrawn") for f in live)
+        reports = [f.piece.start for f in live if f.verdict in _SAYS_NOTHING_TO_DO]
+        closing = bool(reports) and all(p.start > min(reports) for p in kept)
+        if not (anywhere or closing):
             return False
         words = _words(left)
-        return not set(words) & self._office_words and not self.acts.request(words)
+        if set(words) & self._office_words or self.acts.request(words):
+            return False
+        # "something longer?", "another one": what a statement beside it makes a request of
+        helpers = {w for p in (*self.en.purpose_heads, *self.en.another_one) for w in _words(p)}
+        return not set(words) & helpers
 
     def _answered(self, out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened:
         """No request left: the replies to what was said, or one "Shall I ...?"."""
@@ -368,6 +387,34 @@ class RequestScreen:
         if piece.start > 0 and said in self.en.elliptical_withdrawals:
             return Finding("withdrawn", piece, "withdraws what was asked before")
         return None
+
+    def _note(self, piece: Piece, requester: str) -> Finding | None:
+        """ "note this down: the tape ran out", "mark this down: ...": a note to keep, answered
+        in words; a later piece of the same message is part of it unless it asks for
+        something ("Note this down. Ida is away next week.")."""
+        said = self.acts.note(piece.words)
+        noting = self._noting is not None and piece.start >= self._noting
+        if said is None and not (noting and not self.acts.request(piece.words)):
+            return None
+        if said is not None:
+            self._noting = piece.start
+            if said and self.acts.request(said):
+                return None  # "please note I need a ruler": a request, read as one
+        return Finding("note", piece, "a note to keep, not a request", message="Noted.")
+
+    def _condition(self, piece: Piece, requester: str) -> Finding | None:
+        """ "if Hal ever needs a ruler, Ida has one": a condition says when, never what to do;
+        with no request beside it the message is information, answered in words."""
+        if not self.acts.condition(piece.words, piece.asks):
+            return None
+        named = tuple(f"person:{p}" for p in self._named(piece.text, "person")[:1])
+        return Finding(
+            "condition",
+            piece,
+            "a condition, not a request",
+            message="Noted; I'll keep it in mind.",
+            context=named,
+        )
 
     def _exclusion(self, piece: Piece, requester: str) -> Finding | None:
         """ "not from Wang though", "Not Chen's, they're blunt": that person's item is not
@@ -484,13 +531,16 @@ class RequestScreen:
             answer = f"I can't tell that about the {t.name} from what I know."
             return Finding("question", piece, "a question, answered in words", message=answer)
         verb = "get" if t.kind == "product" else "bring"
+        shall = f"Shall I {verb} you one?"
+        if self.acts.later(piece.words):  # "... I could use later?": not now unless told so
+            shall = f"Shall I {verb} you one now, or would you rather tell me when?"
         return Finding(
             "question",
             piece,
             "a question that may be a request: answered, then asked",
             message=answer,
             offer=f"{verb} me {whose or _article(t.name)} {t.name}",
-            shall=f"Shall I {verb} you one?",
+            shall=shall,
         )
 
     def _statement(self, piece: Piece, requester: str) -> Finding | None:
@@ -502,9 +552,15 @@ class RequestScreen:
         return Finding("statement", piece, "a statement, context only", context=named)
 
     def _says_mine(self, text: str, item: str) -> bool:
-        mentions = self.lex.scan(self.lex.tokens(text))
+        """ "did anyone find *my* umbrella?" (not "lend *me* a ruler": the asker's want)."""
+        tokens = self.lex.tokens(text)
+        mentions = self.lex.scan(tokens)
         return any(
-            m.kind == "item" and m.ids == (item,) and n and mentions[n - 1].kind == "self"
+            m.kind == "item"
+            and m.ids == (item,)
+            and n
+            and mentions[n - 1].kind == "self"
+            and tokens[mentions[n - 1].start].word in ("my", "mine")
             for n, m in enumerate(mentions)
         )
 
@@ -917,9 +973,11 @@ def _listed(words: list[str]) -> str:
 
 RequestScreen.RULES = (
     ("withdrawn", RequestScreen._withdrawn),
+    ("note", RequestScreen._note),
     ("exclusion", RequestScreen._exclusion),
     ("wish", RequestScreen._wish),
     ("thanks", RequestScreen._thanks),
+    ("condition", RequestScreen._condition),
     ("negated", RequestScreen._negated),
     ("destructive", RequestScreen._destructive),
     ("fact", RequestScreen._fact),
@@ -928,8 +986,23 @@ RequestScreen.RULES = (
     ("unsupported", RequestScreen._unsupported),
 )
 UNANSWERED = "a question I cannot answer"
+# What asks nothing of the assistant: an aside beside it ("..., all sorted") is no request.
+_SAYS_NOTHING_TO_DO = frozenset(
+    {"thanks", "wish", "withdrawn", "note", "condition", "fact", "statement"}
+)
 _DROPPED = frozenset(
-    {"negated", "fact", "withdrawn", "exclusion", "wish", "thanks", "question", "statement"}
+    {
+        "note",
+        "condition",
+        "negated",
+        "fact",
+        "withdrawn",
+        "exclusion",
+        "wish",
+        "thanks",
+        "question",
+        "statement",
+    }
 )
 
 

@@ -70,6 +70,15 @@ _MANNER = english.words("manner_openers")
 _WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
 _FOR_SPEAKER = frozenset({"i", "me", "my", "mine", "id", "im", "ive"})
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
+_NOTE_OPENERS = tuple(
+    sorted((tuple(p.split()) for p in english.entries("note_openers")), key=lambda p: -len(p))
+)
+_CONDITIONS = tuple(tuple(p.split()) for p in english.entries("condition_openers"))
+_LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
+_DEADLINES = frozenset({"by", "before", "until", "till"})
+_HEDGES = (("itd", "be"), ("it", "would", "be"), ("would", "be"), ("wouldnt", "it", "be"))
+# What stands before a verb that is not a command: its subject, "to", a modal's contraction.
+_SUBJECT_WORDS = english.words("subject_pronouns") | _SUBJECT_VERB | {"to", "ll", "d", "s"}
 
 
 @dataclass(frozen=True)
@@ -97,6 +106,25 @@ def content(words: list[str]) -> list[str]:
     return words[k:]
 
 
+def _after_courtesy(w: list[str]) -> list[str]:
+    """The words after a "please" that follows an opener ("mark this down please: ...")."""
+    k = 0
+    while k < len(w) and w[k] in ("please", "pls", "plz", "kindly"):
+        k += 1
+    return w[k:]
+
+
+def _hedged(w: list[str]) -> tuple[str, ...] | None:
+    """ "it'd be lovely if ...", "it would be so handy if ...": a hedged wish opener, with
+    whatever word says how nice it would be (one or two words before "if")."""
+    for head in _HEDGES:
+        if _starts(w, head):
+            for n in (1, 2):
+                if w[len(head) + n : len(head) + n + 1] == ["if"]:
+                    return tuple(w[: len(head) + n + 1])
+    return None
+
+
 def _has_need_phrase(w: list[str]) -> bool:
     return any(_starts(w[n:], p) for n in range(len(w)) for p in NEED_PHRASES)
 
@@ -120,6 +148,66 @@ class SpeechActs:
                 return not rest or not self._imperative(rest)
         return False
 
+    def note(self, words: list[str]) -> list[str] | None:
+        """ "note this down: the tape ran out", "for the record, ...": the words of a note
+        to keep (after its opener), or None when the piece opens no note. The opener is read
+        as a phrase, so a verb that is also someone's name ("mark this down") opens it too."""
+        w = content(words)
+        while w[:1] and w[0] in ("just", "also", "and", "so"):
+            w = w[1:]  # "just for your records, ..."
+        opener = next((p for p in _NOTE_OPENERS if _starts(w, p)), None)
+        if opener is not None:
+            return _after_courtesy(w[len(opener) :])
+        # "<verb> this down": writing down, whatever the verb, unless it is a task word
+        # ("bring this down to ..." is an errand)
+        for down in (["this", "down"], ["that", "down"], ["it", "down"], ["down"]):
+            after = w[1 : 1 + len(down)]
+            if after == down and language.verb_lemmas(w[0]) and w[0] not in self.lex.cue_words:
+                rest = w[1 + len(down) :]
+                return None if rest[:1] == ["to"] else _after_courtesy(rest)
+        return None
+
+    def condition(self, words: list[str], asks: bool) -> bool:
+        """ "if Hal ever needs a ruler", "in case anyone asks", "whenever Ida is back": a
+        clause that says when, not what to do; not "if you could ..." (a polite request) nor
+        "when is Ida back?" (a question)."""
+        w = content(words)
+        opener = next((p for p in _CONDITIONS if _starts(w, p)), None)
+        if any(_starts(w, o) for o in _WISH_OPENERS):
+            return False  # "if only Rich would lend me ...": a wish, read as one
+        if opener is None or asks:
+            return False
+        rest = w[len(opener) :]
+        if not rest or self._asks_you(rest) or self._imperative(rest):
+            return False  # "if you could bring ...", "if possible, ..." is read on
+        if self._main_clause(rest):
+            return False  # "when you're free bring me a ruler": the request after it
+        return not (w[0] in _WH and rest[0] in _AUX)  # "when is ...": a question
+
+    def _main_clause(self, w: list[str]) -> bool:
+        """A task word in command form after a condition with no comma ("if possible bring
+        me ..."): not the condition's own verb ("if Wren needs to copy ...", "if Ida
+        copies ...": after "to", a subject or a modal)."""
+        for k in range(1, len(w)):
+            before = w[k - 1]
+            if before in _SUBJECT_WORDS or before in _MODALS or self._named(before):
+                continue
+            if self._imperative(w[k:]):
+                return True
+        return False
+
+    @staticmethod
+    def later(words: list[str]) -> bool:
+        """ "... I could use later", "... tomorrow", "... on Friday": a time after now."""
+        w = content(words)
+        if any(a == "on" and language.is_weekday(b) for a, b in itertools.pairwise(w)):
+            return True
+        return any(
+            _starts(w[n:], p) and (n == 0 or w[n - 1] not in _DEADLINES)  # "by tomorrow": now
+            for n in range(len(w))
+            for p in _LATER
+        )
+
     def wish(self, words: list[str]) -> bool:
         """A wish or prohibition about other people's conduct: nothing to fetch."""
         w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
@@ -141,7 +229,7 @@ class SpeechActs:
         the place, asking nobody for anything (no person named, nothing for the speaker,
         nobody addressed); "if Hal could sign my form" is a request, read as one."""
         w = content(words)
-        opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None)
+        opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None) or _hedged(w)
         if opener is None:
             return False
         rest = w[len(opener) :]
@@ -220,8 +308,8 @@ class SpeechActs:
         if first in _AUX and first in _SUBJECT_VERB and not asks:
             return None  # "we're trying to ...": a contraction, not "were ...?"
         if first in _AUX:
-            if self._for_me(w):
-                return "polite"  # "does anyone have a stapler I could borrow?"
+            if self._for_me(w):  # "does anyone have a stapler I could borrow?"
+                return "info" if self.later(w) else "polite"  # "... I could use later?"
             return "info"
         if asks and not self._imperative(w) and not (set(w) & _WILLING):
             return "info" if first in _AUX | _WH else None
