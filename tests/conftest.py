@@ -33,6 +33,11 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         for marker in _ONE_WORKER_EACH:
             if item.get_closest_marker(marker) is not None:
                 item.add_marker(pytest.mark.xdist_group(marker))
+        # Tests that share what one of them builds once per process (a cache, a module's
+        # fixture) are one group too: split over two workers, each worker would build it.
+        shared = item.get_closest_marker("shares_worker")
+        if shared is not None:
+            item.add_marker(pytest.mark.xdist_group(shared.args[0]))
 
 
 # Every httpx client builds an SSL context; from one bundle file (SSL_CERT_FILE, or certifi's)
