@@ -12,6 +12,7 @@ import pytest
 
 from fakes.fixtures import scripted_llm  # noqa: F401  (the scripted model server, for every folder)
 from helpers.children import descendants
+from helpers.markers import never_selects
 from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both store backends)
     backend,
     database_url,
@@ -26,13 +27,38 @@ from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 _ONE_WORKER_EACH = ("synapse", "llm_server")
 
 
+# The folders whose every test needs one server from outside, and that server's marker.
+# Every test in the folder carries the marker (added below, whatever its module says), so a
+# run whose `-m` deselects the marker (`make test-fast`) does not import the folder at all:
+# matrix-nio and Playwright cost about 1.3 CPU-s of collection in each xdist worker.
+_TESTS = Path(__file__).parent
+_FOLDER_MARKERS = {"synapse": "synapse", "browser": "browser", "llm_server": "llm_server"}
+
+
+def pytest_ignore_collect(collection_path: Path, config: pytest.Config) -> bool | None:
+    marker = _FOLDER_MARKERS.get(collection_path.name)
+    if marker is None or collection_path.parent != _TESTS:
+        return None
+    return True if never_selects(config.getoption("markexpr"), marker) else None
+
+
+@pytest.hookimpl(tryfirst=True)  # before `-m` deselects by the markers added here
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    for item in items:
+        folder = item.path.relative_to(_TESTS).parts[0] if item.path.is_relative_to(_TESTS) else ""
+        if folder in _FOLDER_MARKERS:
+            item.add_marker(_FOLDER_MARKERS[folder])
     if not config.pluginmanager.hasplugin("xdist"):
         return
     for item in items:
         for marker in _ONE_WORKER_EACH:
             if item.get_closest_marker(marker) is not None:
                 item.add_marker(pytest.mark.xdist_group(marker))
+        # Tests that share what one of them builds once per process (a cache, a module's
+        # fixture) are one group too: split over two workers, each worker would build it.
+        shared = item.get_closest_marker("shares_worker")
+        if shared is not None:
+            item.add_marker(pytest.mark.xdist_group(shared.args[0]))
 
 
 # Every httpx client builds an SSL context; from one bundle file (SSL_CERT_FILE, or certifi's)

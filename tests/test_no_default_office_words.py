@@ -12,9 +12,11 @@ and is exempt as a whole.
 from __future__ import annotations
 
 import ast
+import functools
 import re
 from pathlib import Path
 
+import pytest
 import yaml
 
 from assistantx.core import task_kinds
@@ -45,22 +47,20 @@ PATTERN = re.compile(r"\b(" + "|".join(re.escape(w) for w in WORDS) + r")\b")
 
 
 def _strings(tree: ast.AST) -> list[tuple[int, str]]:
-    """String constants that are not docstrings, with their line numbers."""
-    docstrings = {
-        id(node.body[0].value)
-        for node in ast.walk(tree)
-        if isinstance(node, ast.Module | ast.ClassDef | ast.FunctionDef | ast.AsyncFunctionDef)
-        and node.body
-        and isinstance(node.body[0], ast.Expr)
-        and isinstance(node.body[0].value, ast.Constant)
-    }
-    return [
-        (node.lineno, node.value)
-        for node in ast.walk(tree)
-        if isinstance(node, ast.Constant)
-        and isinstance(node.value, str)
-        and id(node) not in docstrings
-    ]
+    """String constants that are not docstrings, with their line numbers (one walk)."""
+    docstrings: set[int] = set()
+    constants: list[ast.Constant] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            constants.append(node)
+        elif (
+            isinstance(node, ast.Module | ast.ClassDef | ast.FunctionDef | ast.AsyncFunctionDef)
+            and node.body
+            and isinstance(node.body[0], ast.Expr)
+            and isinstance(node.body[0].value, ast.Constant)
+        ):
+            docstrings.add(id(node.body[0].value))
+    return [(node.lineno, node.value) for node in constants if id(node) not in docstrings]
 
 
 def test_the_word_list_is_the_default_office() -> None:
@@ -72,28 +72,40 @@ def _modules(exempt: set[str]) -> list[str]:
     return sorted(rel for p in SRC.rglob("*.py") if (rel := str(p.relative_to(SRC))) not in exempt)
 
 
-def _office_words_in(source: str) -> list[str]:
+@functools.cache
+def _tree(module: str) -> ast.Module:
+    """The module's syntax tree, parsed once for both scans (parsing the package's 1.7 MB of
+    source is about 2 CPU-s; the two scans share one xdist worker, below, to share it)."""
+    return ast.parse((SRC / module).read_text(encoding="utf-8"))
+
+
+# Both whole-package scans on one worker, so the second reuses the first's parsed trees.
+_ONE_PARSE = pytest.mark.shares_worker("source_scan")
+
+
+def _office_words_in(tree: ast.AST) -> list[str]:
     return [
         f"line {line}: {match.group(0)!r} in {text[:60]!r}"
-        for line, text in _strings(ast.parse(source))
+        for line, text in _strings(tree)
         for match in [PATTERN.search(text)]
         if match is not None
     ]
 
 
+@_ONE_PARSE
 def test_no_module_names_a_default_office_word() -> None:
     # One scan of every module (a test per module made 190 tests of this one check); the
     # message names every offending module, not only the first.
     found = {
         module: hits
         for module in _modules(ALLOWED_MODULES)
-        if (hits := _office_words_in((SRC / module).read_text(encoding="utf-8")))
+        if (hits := _office_words_in(_tree(module)))
     }
     assert not found, found
 
 
 def test_the_word_check_sees_a_word() -> None:
-    assert _office_words_in('"""The printer."""\nPLACE = "printer"\n') == [
+    assert _office_words_in(ast.parse('"""The printer."""\nPLACE = "printer"\n')) == [
         "line 2: 'printer' in 'printer'"
     ]
 
@@ -132,11 +144,12 @@ def _listed_kinds(tree: ast.AST) -> list[tuple[int, list[str]]]:
     return found
 
 
+@_ONE_PARSE
 def test_no_module_lists_task_kinds() -> None:
     found = {
         module: listed
         for module in _modules({"core/task_schema.py"} | KIND_LIST_EXEMPT)
-        if (listed := _listed_kinds(ast.parse((SRC / module).read_text(encoding="utf-8"))))
+        if (listed := _listed_kinds(_tree(module)))
     }
     assert not found, found
 

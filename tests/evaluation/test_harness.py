@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+import assistantx.evaluation.report as eval_report
 from assistantx.adapters.model import model_from_settings
 from assistantx.cli import main
 from assistantx.core.office import DEFAULT_OFFICE
@@ -17,6 +18,21 @@ from fakes.scripted_llm import Reply, ScriptedLLM
 
 TASKS = DEFAULT_OFFICE.parent / "tasks.jsonl"
 FIXTURES = Path(__file__).parent / "dataset" / "fixtures"
+
+
+@pytest.fixture
+def charts_skipped(monkeypatch: pytest.MonkeyPatch) -> list[Path]:
+    """For the tests of resuming, offices and jobs: the five PNG charts are a CPU-second of
+    matplotlib per run and are checked by the first test below, so here they are not drawn;
+    yields the folders whose charts were asked for (the command still asks)."""
+    asked: list[Path] = []
+
+    def skip(_summary: dict[str, object], out: Path) -> list[Path]:
+        asked.append(out)
+        return []
+
+    monkeypatch.setattr(eval_report, "charts", skip)
+    return asked
 
 
 def _lines(out: Path) -> list[dict[str, object]]:
@@ -43,7 +59,7 @@ def test_optimal_method_writes_results_summary_and_charts(
     assert "SR" in capsys.readouterr().err  # the progress line
 
 
-def test_resume_skips_finished_episodes(tmp_path: Path) -> None:
+def test_resume_skips_finished_episodes(tmp_path: Path, charts_skipped: list[Path]) -> None:
     out = tmp_path / "run"
     args = ["eval", "--tasks", str(TASKS), "--method", "optimal", "--out", str(out), "--quiet"]
     assert main([*args, "--limit", "3"]) == 0
@@ -56,10 +72,11 @@ def test_resume_skips_finished_episodes(tmp_path: Path) -> None:
     done = [json.loads(x)["task_id"] for x in lines if x.endswith("}")]
     assert done[:3] == [e["task_id"] for e in first]
     assert sorted(done) == ["t001", "t002", "t003", "t004", "t005"]
+    assert charts_skipped == [out, out]
 
 
 def test_resume_refuses_another_method_in_the_same_folder(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], charts_skipped: list[Path]
 ) -> None:
     out = tmp_path / "run"
     base = ["eval", "--tasks", str(TASKS), "--out", str(out), "--quiet", "--limit", "1"]
@@ -78,7 +95,9 @@ def test_parallel_jobs_give_the_same_scores(tmp_path: Path) -> None:
     assert a == b and len(a) == 6
 
 
-def test_task_file_of_another_office_runs_unchanged(tmp_path: Path) -> None:
+def test_task_file_of_another_office_runs_unchanged(
+    tmp_path: Path, charts_skipped: list[Path]
+) -> None:
     out = tmp_path / "small"
     tasks = FIXTURES / "tasks.jsonl"
     # s4 has no spec, so the optimal policy cannot replay it: run the three that have one
@@ -112,7 +131,7 @@ def test_llm_baseline_without_a_model_says_so(
     assert "ASSISTANTX_LLM_BASE_URL" in capsys.readouterr().out
 
 
-def test_parallel_jobs_with_an_office_file(tmp_path: Path) -> None:
+def test_parallel_jobs_with_an_office_file(tmp_path: Path, charts_skipped: list[Path]) -> None:
     """``--office`` with ``--jobs 2`` once crashed: the office path is not JSON."""
     out = tmp_path / "office-jobs"
     office = DEFAULT_OFFICE

@@ -39,13 +39,15 @@ async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[http
 async def serving_runtime(
     data_dir: Path, **settings: Any
 ) -> AsyncIterator[tuple[httpx.AsyncClient, ServiceRuntime]]:
-    """Like ``running_service`` (the operator's token on every request), also yielding the
-    runtime: for tests that play the physical world (a person holding a code up to the lock)."""
+    """Like ``running_service`` (the operator's token on every request; no AMCL unless
+    ``robot_localize=True``), also yielding the runtime: for tests that play the physical
+    world (a person holding a code up to the lock)."""
     defaults: dict[str, Any] = {
         "data_dir": data_dir,
         "operator_token": OPERATOR,
         "tokens": json.dumps({LEE: "lee", ZHANG: "zhang"}),
         "speedup": 50,
+        "robot_localize": False,
     }
     app = create_app(Settings(**{**defaults, **settings}))
     headers = {"Authorization": f"Bearer {OPERATOR}"}

@@ -13,10 +13,10 @@ import json
 import os
 import threading
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import pytest
 import requests
-import schemathesis
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -26,6 +26,9 @@ from assistantx.service.server import service_server
 from helpers.eventually import eventually_sync
 from helpers.servers import free_port
 from service.server import LEE, OPERATOR
+
+if TYPE_CHECKING:
+    import schemathesis
 
 EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "5"))
 AUTH = {"Authorization": f"Bearer {OPERATOR}"}
@@ -56,6 +59,10 @@ def base_url(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
 
 
 def _operations(base_url: str) -> list[schemathesis.APIOperation]:
+    # Imported here: the worker that does not run this test need not load schemathesis (its
+    # pytest plugin is off too, `-p no:schemathesis` in pyproject.toml: nothing uses it).
+    import schemathesis
+
     schema = schemathesis.openapi.from_url(f"{base_url}/openapi.json")
     found = [result.ok() for result in schema.get_all_operations()]
     return [op for op in found if not op.path.endswith("/events")]

@@ -4,15 +4,30 @@
 from __future__ import annotations
 
 import base64
+from collections.abc import AsyncIterator
 
 import httpx
 import pytest
+import pytest_asyncio
 
+from service.inprocess import running_service
 from service.server import LEE, OPERATOR
+
+# One service for the module: every request here is refused and none may leave anything
+# behind (each test checks the instruction list stays empty), so the tests share it instead
+# of starting one each (14 starts), on one xdist worker.
+pytestmark = [pytest.mark.asyncio(loop_scope="module"), pytest.mark.shares_worker("refusals")]
 
 OP = {"Authorization": f"Bearer {OPERATOR}"}
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
 TOO_BIG = [2**63, 2**64, 10**30]
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def api(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[httpx.AsyncClient]:
+    data_dir = tmp_path_factory.mktemp("refusals") / "data"
+    async with running_service(data_dir, max_body_bytes=4096) as client:
+        yield client
 
 
 def _cursor(seq: int) -> str:

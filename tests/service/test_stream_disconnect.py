@@ -25,7 +25,11 @@ async def test_a_client_leaving_a_flowing_stream_logs_no_traceback(
     tmp_path: Path, caplog: pytest.LogCaptureFixture, request: pytest.FixtureRequest
 ) -> None:
     settings = Settings(  # type: ignore[arg-type]
-        data_dir=tmp_path / "data", operator_token=OPERATOR, speedup=200, people="simulated"
+        data_dir=tmp_path / "data",
+        operator_token=OPERATOR,
+        speedup=200,
+        people="simulated",
+        robot_localize=False,
     )
     app = create_app(settings)
     port = free_port()
