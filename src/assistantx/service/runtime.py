@@ -203,7 +203,12 @@ class ServiceRuntime:
             else None
         )
         code_lifetime_s = s.lock_code_expiry_min * 60
-        self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
+        self.ledger = CodeLedger(
+            self.journal,
+            self.clock,
+            code_lifetime_s,
+            transcript_after_send=self.matrix is not None,
+        )
         self.locker.listen(self.ledger.on_lock_event)
         self._request_check: RequestRecognizer | None = None  # made on the first message
         ltm = Durability.restore_memory(self.journal, self.office)
@@ -226,6 +231,7 @@ class ServiceRuntime:
                 # A direct message starts an instruction only when it asks for something.
                 is_request=self._is_request,
                 retire_codes=self.ledger.retire,
+                code_records=self.ledger,
                 fleet=self.fleet.lease if self.fleet else None,
             )
         )
