@@ -183,9 +183,11 @@ async def test_a_replica_that_loses_one_office_stops_that_office_only(
             )
         moved = {**everywhere, "harbour": ("replica-b", "elsewhere")}
         await eventually(view, until=lambda v: v == moved, what="A to stop Harbour Street")
-        r = await api.get("/v1/offices/harbour/instructions")
+        r = await api.get("/v1/offices/harbour/robot")  # the robot is the holder's to tell
         assert r.status_code == 503
         assert r.json()["message"] == "the office Harbour Street is run by replica replica-b"
+        # Instructions are read from the shared journal (``offices.submissions``).
+        assert (await api.get("/v1/offices/harbour/instructions")).status_code == 200
         assert (await api.get("/v1/offices/annex/instructions")).status_code == 200
         # A negative, so no event to wait on: three rounds pass and A leaves the office alone.
         for _ in range(3):
