@@ -231,6 +231,8 @@ def restore(
     sim.told = {(i or None, p) for i, p in state["told"]}
     held = _held_codes(state, payloads or {})
     sim.codes = [c for c in held if not c.done and c.payload in (live or set())]
+    # A code that reached a phone after the snapshot came in a message: its holder was told.
+    sim.told |= {(c.instruction_id, c.person) for c in sim.codes}
     robot = state["robot"]
     sim.robot.restore(robot["place"] or sim.office.robot.home, float(robot["odometer_m"]))
     sim.on_robot_arrived()  # people with a code for this place come (again)
