@@ -82,8 +82,8 @@ def deposited(url: str) -> bool:
 
 def deposited_not_collected(url: str) -> bool:
     """The stapler is in the locker and Lee has no collect code yet: between deposit and
-    collect. (A kill just after a code went out is another moment, not covered here: the
-    replayed step may issue that code again; #30 keeps it open.)"""
+    collect. (A kill just after a code went out is another moment, held open by a trigger
+    in ``test_failover_after_code_sent``.)"""
     lee_codes = any(
         r["action"]["type"] == "send_qr" and r["action"]["contact"] == "lee" and r["ok"]
         for r in results(url)

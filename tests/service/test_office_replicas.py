@@ -89,6 +89,17 @@ def replica_series(server: Server) -> dict[str, str]:
     return found
 
 
+def replica_health(server: Server) -> dict[str, float]:
+    """``assistantx_replica_up`` by replica, as ``server`` answers ``/metrics``."""
+    text = httpx.get(f"{server.url}/metrics", headers=HEADERS, timeout=10).text
+    found: dict[str, float] = {}
+    for line in text.splitlines():
+        if line.startswith("assistantx_replica_up{"):
+            replica = line[line.index('replica="') + 9 : line.index('"}')]
+            found[replica] = float(line.rsplit(" ", 1)[1])
+    return found
+
+
 async def test_one_office_on_replicas_lists_the_lease_holder(
     tmp_path: Path, postgres_url: str
 ) -> None:
@@ -123,6 +134,7 @@ def test_offices_spread_over_replicas_and_move_when_one_leaves(
         assert set(view.values()) == {"replica-a", "replica-b"}
         assert settle(b, lambda v: v == view, "B to see the same spread") == view
         assert replica_series(b) == view  # /metrics of either replica names the holders
+        assert replica_health(b) == {"replica-a": 1.0, "replica-b": 1.0}
         # Each office's journal is in its own schema: one per office but the home one.
         with psycopg.connect(postgres_url, autocommit=True) as db:
             schemas = {r[0] for r in db.execute("SELECT nspname FROM pg_namespace")}
@@ -145,6 +157,15 @@ def test_offices_spread_over_replicas_and_move_when_one_leaves(
         )
         r = httpx.get(f"{b.url}/v1/offices/harbour/me", headers=HEADERS, timeout=10)
         assert r.status_code == 200, r.text  # the moved office answers on B
+        # The killed replica is no longer up once its heartbeat expired (0, then gone).
+        eventually_sync(
+            lambda: replica_health(b),
+            until=lambda health: (
+                health.get("replica-a", 0.0) == 0.0 and health.get("replica-b") == 1.0
+            ),
+            what="B's /metrics to say A is down",
+            timeout_s=30,
+        )
     finally:
         a.stop()
         if b is not None:
@@ -183,9 +204,11 @@ async def test_a_replica_that_loses_one_office_stops_that_office_only(
             )
         moved = {**everywhere, "harbour": ("replica-b", "elsewhere")}
         await eventually(view, until=lambda v: v == moved, what="A to stop Harbour Street")
-        r = await api.get("/v1/offices/harbour/instructions")
+        r = await api.get("/v1/offices/harbour/robot")  # the robot is the holder's to tell
         assert r.status_code == 503
         assert r.json()["message"] == "the office Harbour Street is run by replica replica-b"
+        # Instructions are read from the shared journal (``offices.submissions``).
+        assert (await api.get("/v1/offices/harbour/instructions")).status_code == 200
         assert (await api.get("/v1/offices/annex/instructions")).status_code == 200
         # A negative, so no event to wait on: three rounds pass and A leaves the office alone.
         for _ in range(3):

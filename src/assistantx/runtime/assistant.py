@@ -34,7 +34,7 @@ from assistantx.core.ports.robot import RobotBase
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.executors import ExecutionContext, Executor
+from assistantx.runtime.executors import CodeRecords, ExecutionContext, Executor
 from assistantx.runtime.fleet import FleetLease
 from assistantx.runtime.lease import BodyLease
 from assistantx.runtime.loop import InstructionRunner, LoopLimits
@@ -89,6 +89,8 @@ class AssistantParts:
     is_request: RequestCheck | None = None
     # Journals codes as revoked before the lock withdraws them (``ExecutionContext``).
     retire_codes: Callable[[list[str]], Awaitable[None]] | None = None
+    # Journals the code each send minted, by its key (``ExecutionContext.code_records``).
+    code_records: CodeRecords | None = None
     # Several robots (runtime.fleet): their lease; ``robot`` and ``locker`` are then the
     # fleet's FleetRobot and FleetLocker. None: the one robot's BodyLease.
     fleet: FleetLease | None = None
@@ -114,6 +116,7 @@ class Assistant:
                 clock=parts.clock,
                 replies=self.replies,
                 retire_codes=parts.retire_codes,
+                code_records=parts.code_records,
             )
         )
         self.running: dict[str, Running] = {}

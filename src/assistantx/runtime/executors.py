@@ -2,7 +2,9 @@
 
 They update short-term memory (dialogue, embodied state, files received) with what they saw;
 long-term memory changes are Reflection's job. Every message carries a stable idempotency key
-(instruction, step, position), so a resumed instruction never sends a message twice.
+(instruction, step, the action itself: ``runtime.action_keys``), so a resumed instruction never
+sends a message twice, and the code a send minted is journaled under that key before it goes
+out (``CodeRecords``), so a replayed send re-uses it instead of handing the person a second.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ import asyncio
 import logging
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
-from typing import Literal
+from typing import Literal, Protocol
 
 from assistantx.core.actions import (
     Action,
@@ -49,6 +51,24 @@ from assistantx.runtime.replies import ReplyBox
 logger = logging.getLogger(__name__)
 
 
+@dataclass(frozen=True)
+class EarlierCode:
+    """A code minted under an idempotency key before a restart, and whether its message is
+    known to have gone out."""
+
+    code_id: str
+    delivered: bool
+
+
+class CodeRecords(Protocol):
+    """Where the code minted under each send's idempotency key is journaled before the send
+    (the service's ``CodeLedger``), so a replayed step re-uses it instead of minting another."""
+
+    def earlier(self, key: str) -> EarlierCode | None: ...
+
+    async def minted(self, key: str, code_id: str) -> None: ...
+
+
 @dataclass
 class ExecutionContext:
     office: Office
@@ -61,6 +81,8 @@ class ExecutionContext:
     # Records codes as revoked before the lock is asked to withdraw them (the service's
     # journal), so a crash in between cannot bring them back; None: nothing to record.
     retire_codes: Callable[[list[str]], Awaitable[None]] | None = None
+    # None: nothing journals the codes minted per key (a replayed send mints a new one).
+    code_records: CodeRecords | None = None
 
 
 class Executor:
@@ -238,6 +260,32 @@ class Executor:
     async def _send_qr(
         self, stm: ShortTermMemory, action: SendQR, key: str
     ) -> tuple[bool, str, dict[str, object]]:
+        records = self.ctx.code_records
+        message_key = f"{stm.instruction_id}:{key}"
+        earlier = records.earlier(message_key) if records is not None else None
+        todo = purpose_text(
+            self.ctx.office,
+            action.purpose,
+            action.item,
+            you=action.contact,
+            operation=action.operation,
+        )
+        if earlier is not None and earlier.delivered:
+            # Sent before a crash cut this step short: the person holds that code, and it is
+            # the one to wait for (a new one would be a second code in their hands). Not
+            # watched from here: they may have used it already, while no one watched, which
+            # the wait reads from what the lock reported (``_used_unseen``).
+            self._hold(stm, action, earlier.code_id)
+            logger.info("code of %s was sent before; not minted again", message_key)
+            return (
+                True,
+                f"sent {action.contact} a one-time code to {todo}",
+                {"code_id": earlier.code_id},
+            )
+        if earlier is not None:
+            # Minted, its message not known to have gone out: withdrawn before a new one goes
+            # out under the same key, so at most one code of this send ever opens the locker.
+            await self._withdraw([earlier.code_id])
         held = stm.embodied.unused_code(
             action.contact, action.item, action.purpose, self.ctx.locker.code_states
         )
@@ -250,22 +298,15 @@ class Executor:
                 ),
                 {},
             )
-        if stm.instruction_id not in self._watching:
-            notify = asyncio.Event()
-            self._watching[stm.instruction_id] = (self.ctx.locker.subscribe(notify), notify)
+        self._watch(stm)
         qr = await self.ctx.locker.issue_code(
             instruction_id=stm.instruction_id,
             person=action.contact,
             purpose=action.purpose,
             item=action.item,
         )
-        todo = purpose_text(
-            self.ctx.office,
-            action.purpose,
-            action.item,
-            you=action.contact,
-            operation=action.operation,
-        )
+        if records is not None:
+            await records.minted(message_key, qr.code_id)  # journaled before it goes out
         text = (
             f"Here is your one-time code for the robot's locker: scan it at the robot to {todo}. "
             f"It works once and expires in {round((qr.expires_at - qr.issued_at) / 60)} minutes."
@@ -282,12 +323,21 @@ class Executor:
         await self._send(
             stm, ChatRef(kind="dm", id=action.contact), text, key, attachments=[attachment]
         )
+        self._hold(stm, action, qr.code_id)
+        return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
+
+    def _watch(self, stm: ShortTermMemory) -> None:
+        if stm.instruction_id not in self._watching:
+            notify = asyncio.Event()
+            self._watching[stm.instruction_id] = (self.ctx.locker.subscribe(notify), notify)
+
+    @staticmethod
+    def _hold(stm: ShortTermMemory, action: SendQR, code_id: str) -> None:
         stm.embodied.codes.append(
             IssuedCode(
-                code_id=qr.code_id, person=action.contact, item=action.item, purpose=action.purpose
+                code_id=code_id, person=action.contact, item=action.item, purpose=action.purpose
             )
         )
-        return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
 
     async def revoke_codes(self, stm: ShortTermMemory, *, person: str | None = None) -> int:
         """Withdraw at the lock this instruction's unused codes (only ``person``'s, if given);
@@ -299,24 +349,31 @@ class Executor:
             if code.unused(self.ctx.locker.code_states)
             and (person is None or code.person == person)
         ]
-        if doomed and self.ctx.retire_codes is not None:
-            await self.ctx.retire_codes([code.code_id for code in doomed])
+        withdrawn = await self._withdraw([code.code_id for code in doomed])
         for code in doomed:
+            if code.code_id in withdrawn:
+                code.revoked = True
+                revoked += 1
+        return revoked
+
+    async def _withdraw(self, code_ids: list[str]) -> set[str]:
+        """Journal ``code_ids`` as revoked, then revoke them at the lock; those withdrawn."""
+        if code_ids and self.ctx.retire_codes is not None:
+            await self.ctx.retire_codes(code_ids)
+        withdrawn: set[str] = set()
+        for code_id in code_ids:
             try:
-                await self.ctx.locker.revoke(code.code_id)
+                await self.ctx.locker.revoke(code_id)
             except LockCommandError as exc:
                 # The lock has no such active code (expired, or forgotten by a lock that
                 # restarted): it opens nothing, which is what "revoked" means to the reader.
-                logger.info(
-                    "code %s of %s not active at the lock: %s", code.code_id, code.person, exc
-                )
+                logger.info("code %s not active at the lock: %s", code_id, exc)
             except AdapterError as exc:
                 # The lock unreachable: still open there (the next start withdraws it).
-                logger.info("code %s of %s not revoked: %s", code.code_id, code.person, exc)
+                logger.info("code %s not revoked: %s", code_id, exc)
                 continue
-            code.revoked = True
-            revoked += 1
-        return revoked
+            withdrawn.add(code_id)
+        return withdrawn
 
     # -- waiting -------------------------------------------------------------------------
     def take_messages(self, stm: ShortTermMemory) -> list[InboundMessage]:

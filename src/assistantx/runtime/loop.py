@@ -55,6 +55,7 @@ from assistantx.memory.updates import (
     MemoryUpdate,
 )
 from assistantx.runtime import consent
+from assistantx.runtime.action_keys import StepKeys
 from assistantx.runtime.executors import Executor
 from assistantx.runtime.failures import FailureMemory, failure_summary
 from assistantx.runtime.fleet import FleetLease
@@ -290,7 +291,8 @@ class InstructionRunner:
         self, stm: ShortTermMemory, step: TraceStep, actions: list[Action]
     ) -> list[str]:
         feedback: list[str] = []
-        for n, proposed in enumerate(actions):
+        keys = StepKeys(step.index)
+        for proposed in actions:
             try:
                 action = self.resolver.ground(proposed)
             except GroundingError as exc:
@@ -316,7 +318,7 @@ class InstructionRunner:
                     action = action.model_copy(update={"summary": action.summary + note})
             if isinstance(action, _BODY_ACTIONS):
                 await self._take_body(stm, step, action)
-            result = await self.executor.execute(stm, action, key=f"s{step.index}a{n}")
+            result = await self.executor.execute(stm, action, key=keys.next(action))
             self._last_seen[seen_key] = self._info
             if not result.ok:
                 self._info += 1  # a failure or a timeout is news

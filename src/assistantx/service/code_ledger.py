@@ -12,6 +12,11 @@ expires. The first two are journaled here the moment they happen:
 
 Expiry needs no record: a code carries its own expiry. An entry is kept for one code
 lifetime after it was written, by when any code it could name has expired anyway.
+
+It also journals which code each send minted, by the send's idempotency key, *before* the
+message goes out (``CodeRecords``): a replica killed just after a code went out leaves the
+key here and the message journaled as sent, and the replica that replays the step re-uses
+that code instead of handing the person a second one.
 """
 
 from __future__ import annotations
@@ -22,6 +27,7 @@ from typing import Any, Literal, cast
 
 from assistantx.core.clock import Clock
 from assistantx.core.ports.lock import LockEvent
+from assistantx.runtime.executors import EarlierCode
 from assistantx.store.journal import Journal
 
 logger = logging.getLogger(__name__)
@@ -46,6 +52,8 @@ class CodeLedger:
         clock: Clock,
         lifetime_s: float,
         world_state: WorldState | None = None,
+        *,
+        transcript_after_send: bool = False,
     ) -> None:
         self._journal = journal
         self._clock = clock
@@ -53,11 +61,18 @@ class CodeLedger:
         # Set once the simulated world is restored: a lock that replays old events on connect
         # must not journal the world as it is before that.
         self.world_state = world_state
+        # Whether the journal's transcript holds an outbound message only once it was sent
+        # (Matrix); the built-in messenger journals it before and marks it sent after.
+        self._transcript_after_send = transcript_after_send
         self._ended: dict[str, tuple[Ended, float]] = {}
-        for code_id, entry in (journal.state(LEDGER_STATE) or {}).get("codes", {}).items():
+        self._minted: dict[str, tuple[str, float]] = {}  # send's key -> (code id, kept until)
+        body = journal.state(LEDGER_STATE) or {}
+        for code_id, entry in body.get("codes", {}).items():
             state, until = entry
             if state in _RANK:
                 self._ended[str(code_id)] = (cast(Ended, state), float(until))
+        for key, (code_id, until) in body.get("minted", {}).items():
+            self._minted[str(key)] = (str(code_id), float(until))
 
     def ended(self, code_id: str) -> Ended | None:
         entry = self._ended.get(code_id)
@@ -72,6 +87,24 @@ class CodeLedger:
         """Journal that these codes are revoked; call it before asking the lock to revoke."""
         if self._note(code_ids, "revoked"):
             await self._journal.aput_states({LEDGER_STATE: self._body()})
+
+    async def minted(self, key: str, code_id: str) -> None:
+        """Journal that the send under ``key`` minted ``code_id``; before it goes out."""
+        self._minted[key] = (code_id, self._clock.now() + self._lifetime_s)
+        await self._journal.aput_states({LEDGER_STATE: self._body()})
+
+    def earlier(self, key: str) -> EarlierCode | None:
+        """The code a send under ``key`` minted before (a replayed step), if any."""
+        entry = self._minted.get(key)
+        if entry is None:
+            return None
+        record = self._journal.outbound(key)
+        delivered = record is not None and (record.status == "sent" or self._transcript_after_send)
+        return EarlierCode(code_id=entry[0], delivered=delivered)
+
+    def was_minted(self, code_id: str) -> bool:
+        """Whether a send journaled minting ``code_id`` (for start-up's settling)."""
+        return any(minted == code_id for minted, _ in self._minted.values())
 
     def on_lock_event(self, event: LockEvent) -> None:
         """A ``Locker.listen`` listener: journal a scan or a closed door before anyone acts on
@@ -100,4 +133,8 @@ class CodeLedger:
     def _body(self) -> dict[str, Any]:
         now = self._clock.now()
         self._ended = {c: e for c, e in self._ended.items() if e[1] > now}
-        return {"codes": {c: [s, until] for c, (s, until) in self._ended.items()}}
+        self._minted = {k: e for k, e in self._minted.items() if e[1] > now}
+        return {
+            "codes": {c: [s, until] for c, (s, until) in self._ended.items()},
+            "minted": {k: [c, until] for k, (c, until) in self._minted.items()},
+        }

@@ -2,7 +2,8 @@
 
 A code may open the locker after a restart only when the journal says its hand-over is still
 to happen: its instruction is unfinished, its last checkpoint lists the code as issued (not
-scanned, used or revoked), the code ledger holds no end for it, and it has not expired.
+scanned, used or revoked) or the ledger lists it as minted by a send (one the process died in
+before the checkpoint), the code ledger holds no end for it, and it has not expired.
 Every other code the service can name (the payloads in the code book and in the simulated
 people's hands, and the codes of instructions that ended within one code lifetime) is
 journaled as revoked and withdrawn at the lock: an in-process lock, which forgot everything
@@ -109,6 +110,10 @@ def _open(record: InstructionRecord | None, code_id: str, ledger: CodeLedger) ->
         return False
     if ledger.ended(code_id) is not None:
         return False
+    if ledger.was_minted(code_id):
+        # Minted by a send the process died in (its checkpoint not yet written): the step
+        # runs again and re-uses it if its message went out, or withdraws it.
+        return True
     return any(c.code_id == code_id and c.state == "issued" for c in record.stm.embodied.codes)
 
 

@@ -129,6 +129,29 @@ def _held_code_record(code: HeldCode) -> dict[str, Any]:
     return record
 
 
+def phone_entries(codes: list[HeldCode]) -> dict[str, str]:
+    """What the phones keep of ``codes``, by ``code_ref``: each whole held code with its
+    payload, so a code that reached a phone after the last journaled snapshot (the process
+    died in between) is still in that person's hands after a restart, as with a real phone."""
+    return {
+        code_ref(c.payload): json.dumps(dataclasses.asdict(c), sort_keys=True)
+        for c in codes
+        if c.payload
+    }
+
+
+def _phone_code(entry: str) -> HeldCode | None:
+    """The held code a phone entry keeps; None for an entry of the older payload-only kind."""
+    if not entry.startswith("{"):
+        return None
+    return HeldCode(**{**json.loads(entry), "scheduled": False})
+
+
+def _phone_payload(entry: str) -> str:
+    code = _phone_code(entry)
+    return code.payload if code is not None else entry
+
+
 class CodePhones:
     """The QR payloads simulated people hold, kept out of the journal in an owner-only file."""
 
@@ -137,7 +160,7 @@ class CodePhones:
         self._written: dict[str, str] | None = None
 
     def save(self, codes: list[HeldCode]) -> None:
-        held = {code_ref(c.payload): c.payload for c in codes if c.payload}
+        held = phone_entries(codes)
         if held == self._written:
             return
         temporary = self.path.with_name(f".{self.path.name}.tmp")
@@ -158,19 +181,29 @@ class CodePhones:
         return {str(k): str(v) for k, v in data.items()} if isinstance(data, dict) else {}
 
 
-def _held_code(record: dict[str, Any], payloads: dict[str, str]) -> HeldCode | None:
+def _held_code(record: dict[str, Any], phones: dict[str, str]) -> HeldCode | None:
     fields = {k: v for k, v in record.items() if k != "ref"}
-    payload = fields.pop("payload", None) or payloads.get(str(record.get("ref")))
+    entry = phones.get(str(record.get("ref")))
+    payload = fields.pop("payload", None) or (_phone_payload(entry) if entry else None)
     if not payload:
         return None  # the phone lost it: the person holds no code
     return HeldCode(**{**fields, "payload": payload, "scheduled": False})
 
 
-def held_payloads(state: dict[str, Any], payloads: dict[str, str]) -> list[str]:
-    """The payloads of the codes the journaled world puts in people's hands (``payloads``:
-    from ``CodePhones.load``), for the start-up to settle before ``restore``."""
-    held = [_held_code(c, payloads) for c in state["codes"]]
-    return [c.payload for c in held if c is not None]
+def _held_codes(state: dict[str, Any], phones: dict[str, str]) -> list[HeldCode]:
+    """The codes in people's hands: those the journaled world names, and those that reached a
+    phone after it was journaled (the message went out, the process died before the next
+    snapshot)."""
+    named = {str(c.get("ref")) for c in state["codes"]}
+    held = [_held_code(c, phones) for c in state["codes"]]
+    later = [_phone_code(entry) for ref, entry in phones.items() if ref not in named]
+    return [c for c in [*held, *later] if c is not None]
+
+
+def held_payloads(state: dict[str, Any], phones: dict[str, str]) -> list[str]:
+    """The payloads of the codes in people's hands (``phones``: from ``CodePhones.load``),
+    for the start-up to settle before ``restore``."""
+    return [c.payload for c in _held_codes(state, phones)]
 
 
 def restore(
@@ -194,8 +227,10 @@ def restore(
     world.received = {(a, b) for a, b in state["received"]}
     world.messages_to = {str(k): int(v) for k, v in state["messages_to"].items()}
     sim.told = {(i or None, p) for i, p in state["told"]}
-    held = [_held_code(c, payloads or {}) for c in state["codes"]]
-    sim.codes = [c for c in held if c is not None and not c.done and c.payload in (live or set())]
+    held = _held_codes(state, payloads or {})
+    sim.codes = [c for c in held if not c.done and c.payload in (live or set())]
+    # A code that reached a phone after the snapshot came in a message: its holder was told.
+    sim.told |= {(c.instruction_id, c.person) for c in sim.codes}
     robot = state["robot"]
     sim.robot.restore(robot["place"] or sim.office.robot.home, float(robot["odometer_m"]))
     sim.on_robot_arrived()  # people with a code for this place come (again)

@@ -10,6 +10,7 @@ from assistantx.service.auth import Principal
 from assistantx.service.errors import UnavailableError
 from assistantx.service.offices.directory import Offices
 from assistantx.service.offices.routing import office_of
+from assistantx.service.offices.submissions import OfficeDesk
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.store.journal import InstructionRecord
 
@@ -26,7 +27,19 @@ def get_runtime(request: Request) -> ServiceRuntime:
 Runtime = Annotated[ServiceRuntime, Depends(get_runtime)]
 
 
-def get_principal(request: Request, runtime: Runtime) -> Principal:
+async def get_desk(request: Request) -> ServiceRuntime | OfficeDesk:
+    """What answers instruction reads and submissions: the office's runtime, or, for an
+    office another replica runs, its journal in the shared database."""
+    offices: Offices | None = getattr(request.app.state, "offices", None)
+    if offices is None:
+        raise UnavailableError("the assistant is starting or stopping; try again shortly")
+    return await offices.desk(office_of(request.scope))
+
+
+Desk = Annotated[ServiceRuntime | OfficeDesk, Depends(get_desk)]
+
+
+def get_principal(request: Request) -> Principal:
     offices: Offices = request.app.state.offices
     return offices.authenticate(office_of(request.scope), request.headers.get("authorization"))
 
@@ -35,7 +48,7 @@ Caller = Annotated[Principal, Depends(get_principal)]
 
 
 def visible_instruction(
-    runtime: ServiceRuntime, caller: Principal, instruction_id: str
+    runtime: ServiceRuntime | OfficeDesk, caller: Principal, instruction_id: str
 ) -> InstructionRecord:
     """The instruction, if ``caller`` may see it (the operator sees all; a person their own).
     Someone else's id gets the very answer an unknown id gets (404), so ids cannot be probed."""

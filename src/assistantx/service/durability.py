@@ -7,10 +7,13 @@ Long-term memory is journaled incrementally: each applied update is one row of
 ``SNAPSHOT_EVERY`` updates and on shutdown, stamped with the last update row it holds; on
 start-up the updates after that stamp are applied again (``restore_memory``). On
 start-up an instruction that was running resumes from its checkpoint: the step that was cut
-short runs again under the same step index, so its actions carry the same idempotency keys;
-actions whose results were journaled are replayed (not executed again), and sends whose key is
-journaled as sent are answered from the journal by the built-in messenger. Questions asked
-before the restart are registered again, and replies that arrived meanwhile are delivered.
+short runs again under the same step index, and an action's idempotency key comes from that
+index and the action itself (``runtime.action_keys``), so the same action gets the same key
+wherever it stands in the new decision; actions whose results were journaled are replayed (not
+executed again), sends whose key is journaled as sent are answered from the journal by the
+built-in messenger, and a code whose key is journaled is not minted again (``CodeLedger``).
+Questions asked before the restart are registered again, and replies that arrived meanwhile
+are delivered.
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ from assistantx.core.trace import ActionResult
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.memory.updates import AppliedUpdate
+from assistantx.runtime.action_keys import StepKeys
 from assistantx.runtime.assistant import Assistant
 from assistantx.service.give_back import GiveBacks
 from assistantx.service.hub import EventHub
@@ -199,9 +203,11 @@ class Durability:
         steps = stm.trace.steps
         while steps and steps[-1].ended_at is None:
             cut = steps.pop()
-            for n, result in enumerate(cut.results):
+            keys = StepKeys(cut.index)  # the keys the loop gave these actions, in order
+            for result in cut.results:
+                key = keys.next(result.action)
                 if not result.refused:
-                    self._replay(stm.instruction_id, f"s{cut.index}a{n}", result)
+                    self._replay(stm.instruction_id, key, result)
         replies = self.assistant.replies
         asked: dict[str, float] = {}
         answered = {t.in_reply_to for t in stm.dialogue if t.direction == "in" and t.in_reply_to}

@@ -7,7 +7,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Response
 
-from assistantx.service.deps import Caller, Runtime, visible_instruction
+from assistantx.service.deps import Caller, Desk, Runtime, visible_instruction
 from assistantx.service.errors import ForbiddenError, UnprocessableError
 from assistantx.service.schemas import (
     CancelOut,
@@ -23,9 +23,10 @@ router = APIRouter(prefix="/v1/instructions", tags=["instructions"])
 
 @router.post("", status_code=202, response_model=InstructionOut)
 async def submit(
-    body: InstructionIn, runtime: Runtime, caller: Caller, response: Response
+    body: InstructionIn, runtime: Desk, caller: Caller, response: Response
 ) -> InstructionOut:
-    """Journal the instruction, start it, and answer 202 with its id and Location."""
+    """Journal the instruction, start it, and answer 202 with its id and Location (an office
+    another replica runs: journaled, and started by that replica)."""
     requester = runtime.resolver.person(body.requester)  # 422 naming an unknown person
     caller.require_person(requester)
     record = await runtime.submit(requester, body.text)
@@ -35,7 +36,7 @@ async def submit(
 
 @router.get("", response_model=InstructionPage)
 async def list_instructions(
-    runtime: Runtime,
+    runtime: Desk,
     caller: Caller,
     status: Status | None = None,
     requester: Annotated[str | None, Query(max_length=100)] = None,
@@ -60,9 +61,7 @@ async def list_instructions(
 
 
 @router.get("/{instruction_id}", response_model=InstructionDetail)
-async def get_instruction(
-    instruction_id: str, runtime: Runtime, caller: Caller
-) -> InstructionDetail:
+async def get_instruction(instruction_id: str, runtime: Desk, caller: Caller) -> InstructionDetail:
     """Status, outcome, the full trace and the dialogue."""
     return InstructionDetail.full(visible_instruction(runtime, caller, instruction_id))
 

@@ -57,6 +57,7 @@ from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.offices.deployment import claim_journal
+from assistantx.service.offices.submissions import SubmissionListener
 from assistantx.service.rate_limit import InstructionRate, refusal_text
 from assistantx.service.retention import Retention
 from assistantx.service.robots import RobotGauges, robot_states
@@ -113,6 +114,7 @@ class ServiceRuntime:
         self.resumed: list[str] = []
         self.office_lease: OfficeLease | None = None  # with a database URL: the office's lease
         self.office_id: str | None = None  # one of several offices: its id in the deployment
+        self._picked_up: set[str] = set()  # submissions journaled by other replicas, admitted
         self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
         # here (create_app fails fast on a bad one); it is built in start, with the rest.
@@ -203,7 +205,12 @@ class ServiceRuntime:
             else None
         )
         code_lifetime_s = s.lock_code_expiry_min * 60
-        self.ledger = CodeLedger(self.journal, self.clock, code_lifetime_s)
+        self.ledger = CodeLedger(
+            self.journal,
+            self.clock,
+            code_lifetime_s,
+            transcript_after_send=self.matrix is not None,
+        )
         self.locker.listen(self.ledger.on_lock_event)
         self._request_check: RequestRecognizer | None = None  # made on the first message
         ltm = Durability.restore_memory(self.journal, self.office)
@@ -226,6 +233,7 @@ class ServiceRuntime:
                 # A direct message starts an instruction only when it asks for something.
                 is_request=self._is_request,
                 retire_codes=self.ledger.retire,
+                code_records=self.ledger,
                 fleet=self.fleet.lease if self.fleet else None,
             )
         )
@@ -301,6 +309,8 @@ class ServiceRuntime:
         await self._resume()
         await self.durability.resume_give_backs(set(self.sim.world.locker_contents()))
         self.admission.start()
+        if s.database is not None and self.office_id is not None:
+            await self._listen_for_submissions(stack, s.database, self.office_id)
         self.ready = True
 
     async def _hold_office(self, stack: AsyncExitStack, data_dir: Path, url: str) -> None:
@@ -323,6 +333,29 @@ class ServiceRuntime:
         await self.office_lease.acquire()
         stack.push_async_callback(self.office_lease.stop)  # hands the office over
         self.office_lease.start()
+
+    async def _listen_for_submissions(
+        self, stack: AsyncExitStack, url: str, office_id: str
+    ) -> None:
+        """Start what other replicas journal for this office: told through LISTEN/NOTIFY, and,
+        once listening, what they journaled since ``_resume`` read the journal."""
+        listener = SubmissionListener(url, office_id, self._pick_up_submitted)
+        await listener.start()
+        stack.push_async_callback(listener.stop)
+        for record in self.journal.unfinished():
+            if record.stm is None:
+                self._pick_up_submitted(record.id)
+
+    def _pick_up_submitted(self, instruction_id: str) -> None:
+        """Admit an instruction another replica journaled, once."""
+        if instruction_id in self.resumed or instruction_id in self._picked_up:
+            return
+        record = self.journal.instruction(instruction_id)
+        if record is None or record.status != "queued" or record.stm is not None:
+            return
+        self._picked_up.add(instruction_id)
+        logger.info("instruction %s was submitted through another replica", instruction_id)
+        self.admission.admit(record)
 
     def _lease_lost(self) -> None:
         self.ready = False

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from assistantx.service.colleagues import code_ref
+from assistantx.service.colleagues import phone_entries
 from assistantx.sim.office import HeldCode
 from assistantx.store.connection import Connection
 from assistantx.store.postgres_store import PostgresStore
@@ -46,7 +46,7 @@ class SharedPhones:
     def save(self, codes: list[HeldCode]) -> None:
         """Blocks until committed: the checkpoint that names these codes is written next, and
         a replica that reads that checkpoint must find their payloads."""
-        held = {code_ref(c.payload): c.payload for c in codes if c.payload}
+        held = phone_entries(codes)
         if held == self._written:
             return
         fence = self.fence

@@ -74,6 +74,7 @@ class Balancer:
         self._heartbeat: Lease | None = None
         self._holders: dict[str, str] = {}
         self.replicas: list[str] = [replica]
+        self.heartbeats: dict[str, float] = {}  # live replica -> when it last heartbeat
         self._loop: asyncio.Task[None] | None = None
         self._beating: asyncio.Task[None] | None = None
         self._tasks: set[asyncio.Task[None]] = set()
@@ -115,6 +116,11 @@ class Balancer:
     def holders(self) -> dict[str, str]:
         return dict(self._holders)
 
+    def heartbeat_ages(self) -> dict[str, float]:
+        """Seconds since each live replica last heartbeat, as of the last round."""
+        now = self._clock()
+        return {replica: max(0.0, now - beat) for replica, beat in self.heartbeats.items()}
+
     async def _run(self) -> None:
         while True:
             await asyncio.sleep(self.ttl_s / 3)
@@ -154,6 +160,12 @@ class Balancer:
             if r.office.startswith(REPLICA_PREFIX) and r.holder and r.expires_at > now
         }
         self.replicas = sorted(live | {self.replica})
+        # When each live replica last heartbeat (its lease's expiry less its time to live).
+        self.heartbeats = {
+            r.holder: r.expires_at - self.ttl_s
+            for r in rows
+            if r.office.startswith(REPLICA_PREFIX) and r.holder and r.expires_at > now
+        }
         self._holders = {
             r.office: r.holder
             for r in rows

@@ -48,7 +48,9 @@ from assistantx.service.errors import (
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.offices.balancer import Balancer
 from assistantx.service.offices.deployment import OfficeSpec, load_deployment
+from assistantx.service.offices.submissions import OfficeDesk
 from assistantx.service.runtime import JOURNAL_FILE, ServiceRuntime
+from assistantx.store.journal import Journal
 from assistantx.store.leases import Lease, Leases
 
 logger = logging.getLogger(__name__)
@@ -66,6 +68,7 @@ class OfficeSlot:
     stack: AsyncExitStack | None = None
     lease: OfficeLease | None = None
     display: str = ""  # the office's name as people read it
+    desk: OfficeDesk | None = None  # run elsewhere: its journal, for reads and submissions
 
 
 class Offices:
@@ -120,6 +123,7 @@ class Offices:
         self.leases = Leases.open(self.settings.data_dir / JOURNAL_FILE, database_url=url)
         stack.callback(self.leases.close)  # last: the offices release their leases through it
         stack.push_async_callback(self._stop_all)
+        stack.callback(self._close_desks)
         self.balancer = Balancer(
             self.leases,
             list(self.slots),
@@ -245,6 +249,32 @@ class Offices:
         if self.several and holder is not None and holder != self.replica:
             raise UnavailableError(f"the office {slot.display} is run by replica {holder}")
         raise UnavailableError("the assistant is starting or stopping; try again shortly")
+
+    async def desk(self, office_id: str | None) -> ServiceRuntime | OfficeDesk:
+        """What answers instruction reads and submissions for ``office_id``: its runtime when
+        it runs here; with several offices on a database, else the office's journal in the
+        shared database (``submissions``); otherwise the 503 of ``runtime``."""
+        slot = self.slot(office_id)
+        runtime = slot.runtime
+        url = slot.spec.settings.database
+        if (runtime is not None and runtime.ready) or not self.several or url is None:
+            return self.runtime(office_id)
+        if slot.desk is None:
+            journal = await asyncio.to_thread(
+                Journal.open, slot.spec.settings.data_dir / JOURNAL_FILE, database_url=url
+            )
+            office = await asyncio.to_thread(load_office, slot.spec.settings.office)
+            if slot.desk is None:
+                slot.desk = OfficeDesk(slot.spec.id, office, journal)
+            else:  # opened meanwhile by another request
+                journal.close()
+        return slot.desk
+
+    def _close_desks(self) -> None:
+        for slot in self.slots.values():
+            if slot.desk is not None:
+                slot.desk.close()
+                slot.desk = None
 
     def authenticate(self, office_id: str | None, authorization: str | None) -> Principal:
         slot = self.slot(office_id)

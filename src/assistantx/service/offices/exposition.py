@@ -4,7 +4,9 @@
 this replica last read the shared leases, or itself); ``assistantx_office_ready{office}`` is 1
 where the office's assistant runs on the replica answering; ``assistantx_replica_offices
 {replica}`` counts the offices each live replica runs, so a scrape of any one replica shows
-the spread. Only with several offices (one office keeps today's series alone).
+the spread; ``assistantx_replica_up{replica}`` and
+``assistantx_replica_heartbeat_age_seconds{replica}`` say each replica's health as the shared
+leases show it. Only with several offices (one office keeps today's series alone).
 """
 
 from __future__ import annotations
@@ -47,10 +49,28 @@ class _OfficeCollector(Collector):
             "offices each live replica runs",
             labels=["replica"],
         )
-        live = offices.balancer.replicas if offices.balancer is not None else [offices.replica]
+        balancer = offices.balancer
+        live = balancer.replicas if balancer is not None else [offices.replica]
         for replica in sorted(set(live) | set(per_replica)):
             counts.add_metric([replica], float(per_replica[replica]))
-        yield from (holder, ready, counts)
+        up = GaugeMetricFamily(
+            "assistantx_replica_up",
+            "1 for a replica whose heartbeat is live; 0 for one that still holds an office's"
+            " lease without it",
+            labels=["replica"],
+        )
+        for replica in sorted(set(live) | set(per_replica)):
+            up.add_metric([replica], 1.0 if replica in live else 0.0)
+        age = GaugeMetricFamily(
+            "assistantx_replica_heartbeat_age_seconds",
+            "seconds since each live replica last heartbeat, as this replica last read the"
+            " leases (a stalled replica's grows towards the lease's time)",
+            labels=["replica"],
+        )
+        if balancer is not None:
+            for replica, seconds in sorted(balancer.heartbeat_ages().items()):
+                age.add_metric([replica], seconds)
+        yield from (holder, ready, counts, up, age)
 
 
 def render_offices(offices: Offices) -> bytes:

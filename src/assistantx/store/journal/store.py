@@ -208,10 +208,28 @@ class Journal:
         return _queued(seq, instruction_id, requester, text, created_at)
 
     async def acreate_instruction(
-        self, instruction_id: str, requester: str, text: str, created_at: float
+        self,
+        instruction_id: str,
+        requester: str,
+        text: str,
+        created_at: float,
+        *,
+        notify: str | None = None,
     ) -> InstructionRecord:
-        """The one insert of an admission; returns once it is committed."""
-        seq = await self.awrite(_insert_instruction(instruction_id, requester, text, created_at))
+        """The one insert of an admission; returns once it is committed. ``notify``: a
+        PostgreSQL channel told the instruction's id in the same transaction (at commit)."""
+        insert = _insert_instruction(instruction_id, requester, text, created_at)
+        if notify is not None:
+            channel = notify
+
+            def insert_and_notify(db: Connection) -> int:
+                seq = insert(db)
+                db.execute("SELECT pg_notify(?, ?)", (channel, instruction_id))
+                return seq
+
+            seq = await self.awrite(insert_and_notify)
+        else:
+            seq = await self.awrite(insert)
         return _queued(seq, instruction_id, requester, text, created_at)
 
     def insert_instruction(self, stm: ShortTermMemory, status: Status = "running") -> None:

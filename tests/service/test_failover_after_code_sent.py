@@ -1,0 +1,171 @@
+"""kill -9 of the replica that runs the office just after a hand-over code went out: Lee's
+collect code is delivered (the message journaled as sent, the code on his phone) and the
+replica dies before the step's result is journaled, so the standby replays that step. Lee must
+hold exactly one collect code at the end, and it must be the one the lock takes.
+
+The moment is a few milliseconds wide in a real run, so the test holds it open with the
+database itself: a trigger on the journal's ``events`` table makes the transaction that
+journals the send's result sleep, and the owning replica is killed while it sleeps."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import httpx
+import psycopg
+import pytest
+
+from helpers.eventually import eventually_sync
+from service.server import OPERATOR, Server, free_port, serve
+from service.standby import Replica, start_standby
+
+pytestmark = [pytest.mark.postgres, pytest.mark.slow]
+
+HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
+ENV = {
+    "ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests",
+    "ASSISTANTX_LEASE_TTL_S": "3",
+    "ASSISTANTX_ROBOT": "sim",
+    "ASSISTANTX_SPEEDUP": "20",
+    "ASSISTANTX_SIM_HANDOVER_DELAY_S": "20",
+}
+
+# Sleeps in the transaction that journals the result of a code sent to Lee, once: the code is
+# out, its result not yet written. The test ends the sleeping backend after the kill.
+STALL = """
+CREATE TABLE stall_armed (armed boolean NOT NULL);
+INSERT INTO stall_armed VALUES (true);
+CREATE FUNCTION stall_after_lee_code() RETURNS trigger AS $$
+BEGIN
+  IF NEW.kind = 'action_result' AND NEW.data LIKE '%"type": "send_qr"%'
+     AND NEW.data LIKE '%"contact": "lee"%' AND (SELECT armed FROM stall_armed) THEN
+    UPDATE stall_armed SET armed = false;
+    PERFORM pg_sleep(300);
+  END IF;
+  RETURN NEW;
+END $$ LANGUAGE plpgsql;
+"""
+TRIGGER = (
+    "CREATE TRIGGER stall BEFORE INSERT ON events FOR EACH ROW"
+    " EXECUTE FUNCTION stall_after_lee_code()"
+)
+
+
+def rows(url: str, sql: str) -> list[tuple[Any, ...]]:
+    with psycopg.connect(url, autocommit=True) as db:
+        return list(db.execute(sql).fetchall())  # type: ignore[arg-type]
+
+
+def run(url: str, sql: str) -> None:
+    with psycopg.connect(url, autocommit=True) as db:
+        db.execute(sql)  # type: ignore[arg-type]
+
+
+def sleeping_backend(url: str) -> int | None:
+    """The backend stalled in the trigger, once the code's message is journaled as sent."""
+    found = rows(url, "SELECT pid FROM pg_stat_activity WHERE wait_event = 'PgSleep'")
+    return int(found[0][0]) if found else None
+
+
+def codes_to(url: str, person: str) -> list[str]:
+    """The texts of the code messages that went out to ``person`` (delivered: 'sent')."""
+    found = rows(
+        url,
+        "SELECT body FROM messages WHERE direction='out' AND status='sent'"
+        f" AND chat_id='{person}' ORDER BY seq",
+    )
+    return [
+        json.loads(body)["text"]
+        for (body,) in found
+        if any(a.get("name") == "locker-code.png" for a in json.loads(body)["attachments"])
+    ]
+
+
+def holder(replicas: list[Server | Replica]) -> Server | Replica:
+    def ready() -> Server | Replica | None:
+        for r in replicas:
+            try:
+                if httpx.get(f"{r.url}/readyz", timeout=2).status_code == 200:
+                    return r
+            except httpx.HTTPError:
+                continue
+        return None
+
+    found = eventually_sync(ready, what="a replica to run the office", timeout_s=60)
+    assert found is not None
+    return found
+
+
+def test_a_kill_just_after_a_code_went_out_does_not_send_a_second_code(
+    tmp_path: Path, postgres_url: str
+) -> None:
+    env = {**ENV, "ASSISTANTX_DATABASE_URL": postgres_url}
+    first = serve(tmp_path / "replica-a", free_port(), ASSISTANTX_REPLICA_ID="replica-a", **env)
+    replicas: list[Server | Replica] = [first]
+    try:
+        replicas.append(start_standby(tmp_path, "replica-b", env))
+        holder(replicas)  # the journal's tables exist once the first replica runs
+        with psycopg.connect(postgres_url, autocommit=True) as db:
+            db.execute(STALL)
+            db.execute(TRIGGER)
+        r = httpx.post(
+            f"{first.url}/v1/instructions",
+            headers=HEADERS,
+            json={"requester": "lee", "text": "Please bring me a stapler."},
+            timeout=10,
+        )
+        assert r.status_code == 202, r.text
+        iid = r.json()["id"]
+        stalled = eventually_sync(
+            lambda: sleeping_backend(postgres_url),
+            what="the result of Lee's code to be journaled (and held)",
+            timeout_s=120,
+        )
+        assert stalled is not None
+        assert len(codes_to(postgres_url, "lee")) == 1  # the code is out
+        first.kill()
+        rows(postgres_url, f"SELECT pg_terminate_backend({stalled})")  # it slept on alone
+        run(postgres_url, "DROP TRIGGER stall ON events")
+        last = holder([r for r in replicas if r.process.poll() is None])
+        record = eventually_sync(
+            lambda: httpx.get(f"{last.url}/v1/instructions/{iid}", headers=HEADERS).json(),
+            until=lambda rec: rec["status"] not in ("queued", "running"),
+            what="the instruction to end",
+            timeout_s=120,
+        )
+        # The journal as it ended, for a failure to be read from (tmp_path is kept).
+        (tmp_path / "journal.txt").write_text(
+            "\n".join(
+                repr(row)
+                for sql in (
+                    "SELECT seq, kind, left(data, 400) FROM events ORDER BY seq",
+                    "SELECT seq, chat_id, left(text, 50), idempotency_key, status FROM messages"
+                    " ORDER BY seq",
+                )
+                for row in rows(postgres_url, sql)
+            )
+        )
+        assert record["status"] == "done", record
+        assert len(codes_to(postgres_url, "lee")) == 1, codes_to(postgres_url, "lee")
+        data = rows(postgres_url, "SELECT data FROM events WHERE kind='action_result'")
+        lee_codes = [
+            result
+            for (d,) in data
+            if (result := json.loads(d)["result"])["action"]["type"] == "send_qr"
+            and result["action"]["contact"] == "lee"
+            and result["ok"]
+        ]
+        assert len(lee_codes) == 1, lee_codes
+        # The code Lee holds is the one the instruction watched and saw used.
+        collected = [
+            json.loads(d)["result"]
+            for (d,) in data
+            if json.loads(d)["result"]["action"]["type"] == "wait_in_place"
+            and json.loads(d)["result"]["action"]["person"] == "lee"
+        ]
+        assert [c["ok"] for c in collected] == [True], collected
+    finally:
+        for replica in replicas:
+            replica.stop()
