@@ -38,7 +38,8 @@ _DOUBLES = ctypes.POINTER(ctypes.c_double)
 _Frame = ctypes.c_double * 6  # the map's frame, as _grid_astar.c's `frame`
 _Ends = ctypes.c_double * 4  # the start's and the goal's world x, y
 _Counts = ctypes.c_int32 * 2
-_STATE_BYTES = 24  # sizeof(cell_state)
+_STATE_BYTES = 16  # sizeof(cell_state)
+_LAST_GENERATION = 2**29 - 1  # a cell's tag keeps the generation above 3 bits
 
 
 @cache
@@ -62,7 +63,7 @@ def _library() -> ctypes.CDLL | None:
 
 
 class _Workspace(threading.local):
-    """A thread's per-cell search state (``cell_state`` in C, 24 bytes a cell), kept between
+    """A thread's per-cell search state (``cell_state`` in C, 16 bytes a cell), kept between
     searches on grids of one size: allocating it afresh cost more than the search itself on
     a small floor (fresh pages fault in). Its address is kept with it (asking numpy for one
     costs about a microsecond)."""
@@ -78,8 +79,8 @@ class _Workspace(threading.local):
 
     def next_search(self, size: int) -> int:
         """Ready the state for a search on ``size`` cells; the search's generation."""
-        if size != self.size or self.generation == 2**32 - 1:
-            self.states = np.zeros(size * _STATE_BYTES, dtype=np.uint8)  # every stamp 0
+        if size != self.size or self.generation == _LAST_GENERATION:
+            self.states = np.zeros(size * _STATE_BYTES, dtype=np.uint8)  # every tag 0
             self.address = self.states.ctypes.data
             self.size, self.generation = size, 0
         self.generation += 1
