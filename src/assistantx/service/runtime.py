@@ -58,6 +58,7 @@ from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.office_lease import OfficeLease
 from assistantx.service.offices.deployment import claim_journal
 from assistantx.service.rate_limit import InstructionRate, refusal_text
+from assistantx.service.reasoner_warmup import DEFERRED_REASONERS, DeferredFactory
 from assistantx.service.retention import Retention
 from assistantx.service.robots import RobotGauges, robot_states
 from assistantx.service.shared_phones import SharedPhones
@@ -123,6 +124,7 @@ class ServiceRuntime:
             self.matrix_setup = matrix_setup(settings)
         self.matrix: MatrixRuntime | None = None
         self.fleet: SimFleet | None = None  # ASSISTANTX_ROBOTS > 1 (service.fleet_wiring)
+        self._deferred_reasoner: DeferredFactory | None = None  # built after ready
         fleet_wiring.check_fleet_settings(settings)
 
     # -- start-up ------------------------------------------------------------------------
@@ -302,6 +304,8 @@ class ServiceRuntime:
         await self.durability.resume_give_backs(set(self.sim.world.locker_contents()))
         self.admission.start()
         self.ready = True
+        if self._deferred_reasoner is not None:
+            self._deferred_reasoner.warm_in_background()
 
     async def _hold_office(self, stack: AsyncExitStack, data_dir: Path, url: str) -> None:
         s = self.settings
@@ -335,8 +339,13 @@ class ServiceRuntime:
             factory = load_builder(s.reasoner_builder)(self.office, s)
             return factory, s.reasoner_builder.partition(":")[2]
         kind = s.effective_reasoner
-        model = model_from_settings(s) if needs_llm(kind) else None
-        return reasoner_factory(kind, self.office, s, model=model), kind
+        if needs_llm(kind) or kind not in DEFERRED_REASONERS:
+            model = model_from_settings(s) if needs_llm(kind) else None
+            return reasoner_factory(kind, self.office, s, model=model), kind
+        # Nothing to check at start (no model, no plug-in): built once the service is ready.
+        office = self.office
+        self._deferred_reasoner = DeferredFactory(lambda: reasoner_factory(kind, office, s))
+        return self._deferred_reasoner, kind
 
     @property
     def map_yaml(self) -> Path:
