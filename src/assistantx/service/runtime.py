@@ -69,7 +69,6 @@ from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
 from assistantx.store.leases import Leases, fence
-from assistantx.store.postgres_store import redact
 
 if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
     from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup
@@ -145,7 +144,12 @@ class ServiceRuntime:
         if self.office_lease is not None:
             self.office_lease.hold(self.journal)
         if self.office_id is not None:  # one of several offices: this journal must be its own
-            where = redact(s.database) if s.database else str(data_dir / JOURNAL_FILE)
+            if s.database:
+                from assistantx.store.postgres_store import redact  # psycopg: PostgreSQL only
+
+                where = redact(s.database)
+            else:
+                where = str(data_dir / JOURNAL_FILE)
             claim_journal(self.journal, self.office_id, where)
         # The map's distance transforms, kept by content hash: a second start reads them.
         disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
