@@ -27,6 +27,7 @@ from assistantx.nav.planner import (
     PlannerParams,
     costmap_graph,
     resample_polyline,
+    shortcut,
 )
 from helpers.maps import REPO, real_map
 
@@ -278,3 +279,35 @@ def test_the_planners_graph_is_the_reference_graph(office_planner: GridPlanner) 
     reference = _full_graph_costs(costmap, source, PlannerParams().cost_penalty)
     traversable = costmap.traversable
     assert np.allclose(dist, reference[traversable], rtol=1e-12, equal_nan=False)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 0.4])
+def test_the_compiled_smoothing_keeps_the_waypoints_the_python_shortcut_keeps(
+    yaw: float,
+) -> None:
+    """A compiled plan smooths its path in C: the same waypoints, to the last bit, as
+    ``shortcut`` over the same unsmoothed path (on tb3_sandbox's pillars, with and without
+    a rotated map origin)."""
+    base = load_map(real_map("tb3_sandbox"))
+    grid = OccupancyMap(base.data, base.resolution, base.origin_x, base.origin_y, yaw)
+    costmap = Costmap.inflate(grid)
+    raw = GridPlanner(costmap, PlannerParams(smooth=False))
+    smoothed = GridPlanner(costmap, PlannerParams())
+    rng = np.random.default_rng(5)
+    free = np.argwhere(costmap.costs < 200)
+    compared = 0
+    for _ in range(40):
+        a, b = free[rng.integers(0, len(free), 2)]
+        start = tuple(float(v) + 0.013 for v in grid.cell_to_world(a[1], a[0]))
+        goal = tuple(float(v) - 0.01 for v in grid.cell_to_world(b[1], b[0]))
+        try:
+            unsmoothed = raw.plan((start[0], start[1]), (goal[0], goal[1]))
+        except UnreachableError:
+            continue
+        path = smoothed.plan((start[0], start[1]), (goal[0], goal[1]))
+        expected = shortcut(unsmoothed.points, costmap)
+        assert np.array_equal(path.points, expected)
+        assert path.cost == unsmoothed.cost
+        assert path.grid_cells == unsmoothed.grid_cells
+        compared += len(unsmoothed.points) > 2
+    assert compared >= 20

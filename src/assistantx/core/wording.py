@@ -8,8 +8,6 @@ id with a colon.
 
 from __future__ import annotations
 
-import lemminflect
-
 from assistantx.core import task_kinds
 from assistantx.core.english import words
 from assistantx.core.office import Office, Operation
@@ -65,6 +63,8 @@ def done_words(op: Operation) -> str:
     ``done`` ("scanned to PDF"), else its verb's past participle ("shredded", "faxed")."""
     if op.done:
         return op.done
+    import lemminflect  # loaded when an outcome is first worded, not with the dashboard
+
     verb, _, rest = op.name.partition(" ")
     forms = lemminflect.getInflection(verb, "VBN")
     past = forms[0] if forms else f"{verb.removesuffix('e')}ed"

@@ -10,6 +10,10 @@
  * optimal. A node whose cost improves after it left the queue is queued again, so rounding
  * in the heuristic cannot cost optimality either.
  *
+ * grid_plan adds the path's cells and the planner's line-of-sight smoothing (planner.shortcut,
+ * the same steps and the same samples) in the same call: done in Python, with a call per
+ * step, they cost more than the search itself on a small floor.
+ *
  * Built by setuptools as an extension module (PyInit below makes it importable, which is how
  * Python finds the file); the search itself is called through ctypes with numpy's buffers.
  */
@@ -20,17 +24,34 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+/* A queued cell: its f = g + h, and g again in single precision, only to break ties (the
+ * exact g is the cell's own): 16 bytes, so a queue step moves less. */
 typedef struct {
     double f;
-    double g;
+    float g;
     int32_t node;
 } entry;
 
-/* A binary heap of open cells that knows where each cell sits (`where`, -1: not queued), so
- * a cell reached cheaper moves up in place instead of being queued twice. */
+/* What a search keeps per cell, side by side in 16 bytes so a cell it reaches costs a quarter
+ * of a cache line, not a line per array: the cost so far, its place in the queue (-1: not
+ * queued), and in `tag` the search that wrote them (its generation, above the low 3 bits:
+ * they count where it is the current one) and the move it was reached by (low 3 bits, an
+ * index into DY/DX: the parent is one step back). */
+typedef struct {
+    double g;
+    int32_t where;
+    uint32_t tag;
+} cell_state;
+_Static_assert(sizeof(cell_state) == 16, "grid_astar.py allocates 16 bytes a cell");
+
+static const int32_t DY[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+static const int32_t DX[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+
+/* A binary heap of open cells that knows where each cell sits (`where`), so a cell reached
+ * cheaper moves up in place instead of being queued twice. */
 typedef struct {
     entry *items;
-    int32_t *where;
+    cell_state *cells;
     size_t size;
     size_t capacity;
 } heap;
@@ -46,16 +67,16 @@ static void sift_up(heap *h, size_t i, entry e) {
         size_t parent = (i - 1) / 2;
         if (!before(&e, &h->items[parent])) break;
         h->items[i] = h->items[parent];
-        h->where[h->items[i].node] = (int32_t)i;
+        h->cells[h->items[i].node].where = (int32_t)i;
         i = parent;
     }
     h->items[i] = e;
-    h->where[e.node] = (int32_t)i;
+    h->cells[e.node].where = (int32_t)i;
 }
 
 /* Queue `e`, or lower its node's entry to `e` when the node is queued already. */
 static int heap_push(heap *h, entry e) {
-    int32_t at = h->where[e.node];
+    int32_t at = h->cells[e.node].where;
     if (at >= 0) {
         sift_up(h, (size_t)at, e);
         return 0;
@@ -73,7 +94,7 @@ static int heap_push(heap *h, entry e) {
 
 static entry heap_pop(heap *h) {
     entry top = h->items[0];
-    h->where[top.node] = -1;
+    h->cells[top.node].where = -1;
     entry last = h->items[--h->size];
     if (!h->size) return top;
     size_t i = 0;
@@ -83,11 +104,11 @@ static entry heap_pop(heap *h) {
         if (child + 1 < h->size && before(&h->items[child + 1], &h->items[child])) child++;
         if (!before(&h->items[child], &last)) break;
         h->items[i] = h->items[child];
-        h->where[h->items[i].node] = (int32_t)i;
+        h->cells[h->items[i].node].where = (int32_t)i;
         i = child;
     }
     h->items[i] = last;
-    h->where[last.node] = (int32_t)i;
+    h->cells[last.node].where = (int32_t)i;
     return top;
 }
 
@@ -97,42 +118,38 @@ static double octile(int32_t dy, int32_t dx) {
     return hi + (M_SQRT2 - 1.0) * lo;
 }
 
-/* Search from `start` to `goal` (flat cell indices). `g` (doubles), `parent` and `where`
- * (int32) hold one entry per cell; they are valid for a cell only where `stamp` equals
- * `generation` (a new number per search), so a search touches only the cells it reaches
- * instead of clearing the whole grid first: on a big map with a small free area the
- * clearing was most of the search. Returns the path's cost, -1.0 when the goal cannot
- * be reached, -2.0 when memory ran out. */
-double grid_astar(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
-                  double resolution, double penalty, int32_t start, int32_t goal, double *g,
-                  int32_t *parent, int32_t *where, uint32_t *stamp, uint32_t generation) {
-    static const int32_t DY[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
-    static const int32_t DX[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+/* Search from `start` to `goal` (flat cell indices). `cells` holds one cell_state per cell;
+ * a state is valid only where its tag's generation is `generation` (a new number per search,
+ * below 2**29), so a search touches only the cells it reaches instead of clearing the whole
+ * grid first: on a big map with a small free area the clearing was most of the search.
+ * Returns the path's cost, -1.0 when the goal cannot be reached, -2.0 when memory ran out. */
+static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t width,
+                         int32_t inscribed, double resolution, double penalty, int32_t start,
+                         int32_t goal, cell_state *cells, uint32_t generation) {
     const int32_t gy = goal / width, gx = goal % width;
     double lengths[8];
     for (int k = 0; k < 8; k++) lengths[k] = resolution * ((DY[k] && DX[k]) ? M_SQRT2 : 1.0);
 #define TOUCH(v)                  \
-    if (stamp[v] != generation) { \
-        stamp[v] = generation;    \
-        g[v] = INFINITY;          \
-        where[v] = -1;            \
+    if (cells[v].tag >> 3 != generation) { \
+        cells[v].tag = generation << 3;       \
+        cells[v].g = INFINITY;             \
+        cells[v].where = -1;               \
     }
     TOUCH(start);
 
-    heap open = {NULL, where, 0, 0};
-    g[start] = 0.0;
-    parent[start] = -1;
+    heap open = {NULL, cells, 0, 0};
+    cells[start].g = 0.0;
     entry first = {resolution * octile(start / width - gy, start % width - gx), 0.0, start};
     if (heap_push(&open, first) < 0) return -2.0;
     double found = -1.0;
     while (open.size) {
         entry e = heap_pop(&open);
         if (e.node == goal) {
-            found = e.g;
+            found = cells[goal].g;
             break;
         }
         const int32_t y = e.node / width, x = e.node % width;
-        const double c_u = (double)costs[e.node];
+        const double c_u = (double)costs[e.node], g_u = cells[e.node].g;
         for (int k = 0; k < 8; k++) {
             const int32_t ny = y + DY[k], nx = x + DX[k];
             if (ny < 0 || ny >= height || nx < 0 || nx >= width) continue;
@@ -143,12 +160,13 @@ double grid_astar(const uint8_t *costs, int32_t height, int32_t width, int32_t i
                 continue;
             const double mean = (c_u + (double)costs[v]) / 2.0;
             const double weight = lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
-            const double candidate = e.g + weight;
+            const double candidate = g_u + weight;
             TOUCH(v);
-            if (candidate < g[v]) {
-                g[v] = candidate;
-                parent[v] = e.node;
-                entry next = {candidate + resolution * octile(ny - gy, nx - gx), candidate, v};
+            if (candidate < cells[v].g) {
+                cells[v].g = candidate;
+                cells[v].tag = (generation << 3) | (uint32_t)k;
+                entry next = {candidate + resolution * octile(ny - gy, nx - gx), (float)candidate,
+                              v};
                 if (heap_push(&open, next) < 0) {
                     free(open.items);
                     return -2.0;
@@ -159,6 +177,166 @@ double grid_astar(const uint8_t *costs, int32_t height, int32_t width, int32_t i
     free(open.items);
     return found;
 #undef TOUCH
+}
+
+/* The cell `v` was reached from: one step back along the move in its tag. */
+static int32_t parent_of(const cell_state *cells, int32_t width, int32_t v) {
+    const uint32_t k = cells[v].tag & 7u;
+    return v - DY[k] * width - DX[k];
+}
+
+/* The cells of the path a search found, from `start` to `goal`, by `parent` (flat indices).
+ * Writes them to `out` when they fit in `capacity`; returns their number either way. */
+static int32_t grid_path(const cell_state *cells, int32_t width, int32_t start, int32_t goal,
+                         int32_t *out, int32_t capacity) {
+    int32_t count = 1;
+    for (int32_t v = goal; v != start; v = parent_of(cells, width, v)) count++;
+    if (count > capacity) return count;
+    int32_t i = count;
+    for (int32_t v = goal; v != start; v = parent_of(cells, width, v)) out[--i] = v;
+    out[0] = start;
+    return count;
+}
+
+static int32_t clamp_cell(double v, int32_t size) {
+    double cell = floor(v);
+    if (cell < 0.0) cell = 0.0;
+    if (cell > (double)(size - 1)) cell = (double)(size - 1);
+    return (int32_t)cell;
+}
+
+/* Whether every sample of the segment a-b (grid frame, cell units), taken every half cell,
+ * costs at most `allowed`: planner._segment_max_cost(...) <= allowed, sample for sample. */
+static int segment_within(const uint8_t *costs, int32_t height, int32_t width, double ax,
+                          double ay, double bx, double by, int32_t allowed) {
+    const double dx = bx - ax, dy = by - ay;
+    int64_t n = (int64_t)ceil(hypot(dx, dy) * 2.0) + 1;
+    if (n < 2) n = 2;
+    for (int64_t i = 0; i < n; i++) {
+        const double t = (double)i / (double)(n - 1);
+        const int32_t ix = clamp_cell(ax + t * dx, width), iy = clamp_cell(ay + t * dy, height);
+        if ((int32_t)costs[(int64_t)iy * width + ix] > allowed) return 0;
+    }
+    return 1;
+}
+
+/* Greedy line-of-sight shortcuts over the waypoints (xs[i], ys[i]) (grid frame, cell units),
+ * `along[i]` the cost under each: from each kept waypoint, a binary search for the farthest
+ * one whose segment costs at most the highest cost the path met in between plus a slack of
+ * 10 (capped below `inscribed`). Writes the kept waypoints' indices to `kept` (room for n)
+ * and returns their number. */
+static int32_t shortcut(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
+                        const double *xs, const double *ys, const int32_t *along, int32_t n,
+                        int32_t *kept) {
+    int32_t count = 0;
+    kept[count++] = 0;
+    int32_t i = 0;
+    while (i < n - 1) {
+        int32_t lo = i + 1, hi = n - 1, best = lo;
+        while (lo <= hi) {
+            const int32_t mid = lo + (hi - lo) / 2;
+            int32_t highest = along[i];
+            for (int32_t j = i + 1; j <= mid; j++)
+                if (along[j] > highest) highest = along[j];
+            int32_t allowed = highest + 10;
+            if (allowed > inscribed - 1) allowed = inscribed - 1;
+            if (segment_within(costs, height, width, xs[i], ys[i], xs[mid], ys[mid], allowed)) {
+                best = mid;
+                lo = mid + 1;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        kept[count++] = best;
+        i = best;
+    }
+    return count;
+}
+
+/* The map's frame, as occupancy_map.OccupancyMap has it: the origin (m), its yaw's cosine
+ * and sine (rotated: whether the yaw is not zero), the resolution (m per cell). */
+typedef struct {
+    double origin_x, origin_y, cos_yaw, sin_yaw, rotated, resolution;
+} frame;
+
+/* A world point (m) in the grid's frame in cell units: to_grid_frame(x, y) / resolution,
+ * the same operations in the same order, so the same doubles. */
+static void to_cells(const frame *f, double x, double y, double *gx, double *gy) {
+    const double dx = x - f->origin_x, dy = y - f->origin_y;
+    if (f->rotated == 0.0) {
+        *gx = dx / f->resolution;
+        *gy = dy / f->resolution;
+    } else {
+        *gx = (f->cos_yaw * dx + f->sin_yaw * dy) / f->resolution;
+        *gy = (-f->sin_yaw * dx + f->cos_yaw * dy) / f->resolution;
+    }
+}
+
+/* Smooth the path `cells` (n flat cells) in place: the robot's exact start and goal (world
+ * m) stand for the first and last cell, every other cell for its centre (cell_to_world),
+ * as planner.shortcut sees them. Leaves the kept cells first in `cells`; returns their
+ * number, -1 when memory ran out. */
+static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
+                      const frame *f, const double ends[4], int32_t *cells, int32_t n) {
+    double *xs = malloc((size_t)n * 2 * sizeof(double));
+    int32_t *along = malloc((size_t)n * 2 * sizeof(int32_t));
+    if (!xs || !along) {
+        free(xs);
+        free(along);
+        return -1;
+    }
+    double *ys = xs + n;
+    int32_t *kept = along + n;
+    for (int32_t i = 0; i < n; i++) {
+        double x, y;
+        if (i == 0 || i == n - 1) {
+            x = ends[i == 0 ? 0 : 2];
+            y = ends[i == 0 ? 1 : 3];
+        } else { /* cell_to_world: the centre's world point, then back as to_cells does */
+            const double cx = ((double)(cells[i] % width) + 0.5) * f->resolution;
+            const double cy = ((double)(cells[i] / width) + 0.5) * f->resolution;
+            if (f->rotated == 0.0) {
+                x = f->origin_x + cx;
+                y = f->origin_y + cy;
+            } else {
+                x = f->origin_x + f->cos_yaw * cx - f->sin_yaw * cy;
+                y = f->origin_y + f->sin_yaw * cx + f->cos_yaw * cy;
+            }
+        }
+        to_cells(f, x, y, &xs[i], &ys[i]);
+        along[i] = costs[(int64_t)clamp_cell(ys[i], height) * width + clamp_cell(xs[i], width)];
+    }
+    const int32_t count = shortcut(costs, height, width, inscribed, xs, ys, along, n, kept);
+    for (int32_t k = 0; k < count; k++) cells[k] = cells[kept[k]]; /* kept[k] >= k */
+    free(xs);
+    free(along);
+    return count;
+}
+
+/* A whole plan in one call: the search (grid_astar_search's arguments), the path's cells
+ * into `out` and, when `smoothing`, the planner's shortcuts over them (`f`, and `ends`: the
+ * start's and the goal's world x, y). `counts` gets the path's cells and the cells left
+ * first in `out` (all of them unsmoothed). When the path does not fit in `capacity`,
+ * counts[1] is -1 and nothing is written (call again with room for counts[0]). Returns the
+ * search's result (the cost, -1.0 no path, -2.0 out of memory). */
+double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
+                 double resolution, double penalty, int32_t start, int32_t goal,
+                 cell_state *cells, uint32_t generation,
+                 int32_t smoothing, const frame *f, const double ends[4], int32_t *out,
+                 int32_t capacity, int32_t counts[2]) {
+    const double cost = grid_astar_search(costs, height, width, inscribed, resolution, penalty,
+                                          start, goal, cells, generation);
+    if (cost < 0.0) return cost;
+    const int32_t n = grid_path(cells, width, start, goal, out, capacity);
+    counts[0] = n;
+    counts[1] = -1;
+    if (n > capacity) return cost;
+    counts[1] = n;
+    if (smoothing && n > 2) {
+        counts[1] = smooth(costs, height, width, inscribed, f, ends, out, n);
+        if (counts[1] < 0) return -2.0;
+    }
+    return cost;
 }
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_grid_astar", NULL, -1, NULL};

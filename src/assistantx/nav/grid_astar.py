@@ -5,25 +5,41 @@ the octile distance as heuristic: an exact search that stops at the goal and tou
 cells on the goal's side first, where a full Dijkstra settles the whole floor. The extension
 is built with the package (``pyproject.toml``, optional: where no C compiler was at hand it
 is missing, ``available()`` says so and the planner searches with scipy instead).
+
+``plan`` is the planner's whole query in one call: the search, the path's cells and the
+planner's line-of-sight smoothing (``planner.shortcut``'s steps, bit for bit). On a small
+floor those steps in Python, and numpy's per-call cost on a few waypoints, were most of a
+plan (tb3_sandbox: a plan 1.7x a full Dijkstra, the search alone 0.3x).
 """
 
 from __future__ import annotations
 
 import ctypes
 import logging
+import math
 import threading
 from functools import cache
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
 from assistantx.nav.costmap import INSCRIBED
 
+if TYPE_CHECKING:
+    from assistantx.nav.occupancy_map import OccupancyMap
+
 logger = logging.getLogger(__name__)
 
-_DOUBLE_P = np.ctypeslib.ndpointer(np.float64, flags="C_CONTIGUOUS")
-_INT32_P = np.ctypeslib.ndpointer(np.int32, flags="C_CONTIGUOUS")
-_UINT8_P = np.ctypeslib.ndpointer(np.uint8, flags="C_CONTIGUOUS")
+# Buffers go to C as plain addresses: numpy's ndpointer checks cost more per call than a
+# search on a small floor (five arrays, a few microseconds each).
+_ADDRESS = ctypes.c_void_p
+_DOUBLES = ctypes.POINTER(ctypes.c_double)
+_Frame = ctypes.c_double * 6  # the map's frame, as _grid_astar.c's `frame`
+_Ends = ctypes.c_double * 4  # the start's and the goal's world x, y
+_Counts = ctypes.c_int32 * 2
+_STATE_BYTES = 16  # sizeof(cell_state)
+_LAST_GENERATION = 2**29 - 1  # a cell's tag keeps the generation above 3 bits
 
 
 @cache
@@ -34,47 +50,47 @@ def _library() -> ctypes.CDLL | None:
         logger.info("the compiled A* is not built; plans search with scipy's Dijkstra")
         return None
     library = ctypes.CDLL(_grid_astar.__file__)
-    function = library.grid_astar
-    function.restype = ctypes.c_double
-    function.argtypes = [
-        _UINT8_P,
-        ctypes.c_int32,
-        ctypes.c_int32,
-        ctypes.c_int32,
-        ctypes.c_double,
-        ctypes.c_double,
-        ctypes.c_int32,
-        ctypes.c_int32,
-        _DOUBLE_P,
-        _INT32_P,
-        _INT32_P,
-        np.ctypeslib.ndpointer(np.uint32, flags="C_CONTIGUOUS"),
-        ctypes.c_uint32,
-    ]
+    if not hasattr(library, "grid_plan"):  # a stale build of an older source
+        logger.warning("the compiled A* is out of date (rebuild the package); using scipy")
+        return None
+    int32, double = ctypes.c_int32, ctypes.c_double
+    function = library.grid_plan
+    function.restype = double
+    function.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, int32]
+    function.argtypes += [_ADDRESS, ctypes.c_uint32]
+    function.argtypes += [int32, _DOUBLES, _DOUBLES, _ADDRESS, int32, _ADDRESS]
     return library
 
 
 class _Workspace(threading.local):
-    """A thread's per-cell arrays, kept between searches on grids of one size: allocating
-    them afresh cost more than the search itself on a small floor (fresh pages fault in)."""
+    """A thread's per-cell search state (``cell_state`` in C, 16 bytes a cell), kept between
+    searches on grids of one size: allocating it afresh cost more than the search itself on
+    a small floor (fresh pages fault in). Its address is kept with it (asking numpy for one
+    costs about a microsecond)."""
 
     size = -1
-    generation = 0  # the search's number: a cell's entries count where its stamp equals it
-    g: npt.NDArray[np.float64]
-    parent: npt.NDArray[np.int32]
-    where: npt.NDArray[np.int32]
-    stamp: npt.NDArray[np.uint32]
+    generation = 0  # the search's number: a cell's state counts where its stamp equals it
+    states: npt.NDArray[np.uint8]
+    address = 0
+
+    def __init__(self) -> None:
+        self.path = np.empty(1024, dtype=np.int32)  # the last path's cells (first the kept)
+        self.path_address = self.path.ctypes.data
 
     def next_search(self, size: int) -> int:
-        """Ready the arrays for a search on ``size`` cells; the search's generation."""
-        if size != self.size or self.generation == 2**32 - 1:
-            self.g = np.empty(size, dtype=np.float64)
-            self.parent = np.empty(size, dtype=np.int32)
-            self.where = np.empty(size, dtype=np.int32)
-            self.stamp = np.zeros(size, dtype=np.uint32)
+        """Ready the state for a search on ``size`` cells; the search's generation."""
+        if size != self.size or self.generation == _LAST_GENERATION:
+            self.states = np.zeros(size * _STATE_BYTES, dtype=np.uint8)  # every tag 0
+            self.address = self.states.ctypes.data
             self.size, self.generation = size, 0
         self.generation += 1
         return self.generation
+
+    def grow_path(self, length: int) -> None:
+        """Room for a path of ``length`` cells (grown by doubling, kept)."""
+        if len(self.path) < length:
+            self.path = np.empty(max(length, 2 * len(self.path)), dtype=np.int32)
+            self.path_address = self.path.ctypes.data
 
 
 _workspace = _Workspace()
@@ -83,6 +99,27 @@ _workspace = _Workspace()
 def available() -> bool:
     """Whether the compiled search was built with this installation."""
     return _library() is not None
+
+
+class Found(NamedTuple):
+    """A compiled plan: its waypoints' flat cells (row * width + col; the kept ones when
+    smoothed, else every cell of the path), the path's cost and its number of grid cells."""
+
+    flat: npt.NDArray[np.intp]
+    cost: float
+    path_cells: int
+
+
+class MapFrame:
+    """A map's frame as the compiled smoothing takes it (``frame`` in C): made once per map,
+    as packing it costs about as much per plan as a tenth of a small search."""
+
+    def __init__(self, grid: OccupancyMap) -> None:
+        yaw = grid.origin_yaw
+        rotated = 0.0 if yaw == 0.0 else 1.0
+        self.packed = _Frame(
+            grid.origin_x, grid.origin_y, math.cos(yaw), math.sin(yaw), rotated, grid.resolution
+        )
 
 
 def search(
@@ -94,6 +131,24 @@ def search(
 ) -> tuple[npt.NDArray[np.intp], float] | None:
     """The cheapest path's (row, col) cells from ``start`` to ``goal`` and its cost, or None
     when no path joins them. Requires ``available()``."""
+    found = plan(costs, resolution, cost_penalty, start, goal, None)
+    if found is None:
+        return None
+    return np.column_stack(np.divmod(found.flat, costs.shape[1])), found.cost
+
+
+def plan(
+    costs: npt.NDArray[np.uint8],
+    resolution: float,
+    cost_penalty: float,
+    start: tuple[int, int],
+    goal: tuple[int, int],
+    smoothing: tuple[MapFrame, tuple[float, float, float, float]] | None,
+) -> Found | None:
+    """The cheapest path from cell ``start`` to cell ``goal`` (row, col), smoothed as
+    ``planner.shortcut`` does when ``smoothing`` is given (the map's frame, and the start's
+    and the goal's exact world x, y); None when no path joins them. Requires
+    ``available()``."""
     library = _library()
     if library is None:
         raise RuntimeError("the compiled A* is not built")
@@ -101,31 +156,40 @@ def search(
     height, width = grid.shape
     if height * width >= 2**31:
         raise ValueError("a grid of 2**31 cells or more is beyond the compiled search")
-    work = _workspace
-    generation = work.next_search(height * width)
+    frame, ends = _NO_FRAME, _NO_ENDS
+    if smoothing is not None:
+        frame, ends = smoothing[0].packed, _Ends(*smoothing[1])
     source, target = start[0] * width + start[1], goal[0] * width + goal[1]
-    cost = library.grid_astar(
-        grid,
-        height,
-        width,
-        INSCRIBED,
-        resolution,
-        cost_penalty,
-        source,
-        target,
-        work.g,
-        work.parent,
-        work.where,
-        work.stamp,
-        generation,
-    )
-    if cost == -2.0:
-        raise MemoryError("the A* search ran out of memory")
-    if cost < 0.0:
-        return None
-    nodes = [target]
-    while nodes[-1] != source:
-        nodes.append(int(work.parent[nodes[-1]]))
-    nodes.reverse()
-    flat = np.asarray(nodes, dtype=np.intp)
-    return np.column_stack(np.divmod(flat, width)), cost
+    work, counts = _workspace, _Counts()
+    while True:
+        generation = work.next_search(height * width)
+        cost = library.grid_plan(
+            grid.ctypes.data,
+            height,
+            width,
+            INSCRIBED,
+            resolution,
+            cost_penalty,
+            source,
+            target,
+            work.address,
+            generation,
+            smoothing is not None,
+            frame,
+            ends,
+            work.path_address,
+            len(work.path),
+            counts,
+        )
+        if cost == -2.0:
+            raise MemoryError("the A* search ran out of memory")
+        if cost < 0.0:
+            return None
+        if counts[1] >= 0:
+            break
+        work.grow_path(counts[0])  # a path longer than any before: search again with room
+    return Found(work.path[: counts[1]].astype(np.intp), cost, counts[0])
+
+
+_NO_FRAME = _Frame()
+_NO_ENDS = _Ends()

@@ -17,11 +17,13 @@ start s and goal g) and runs scipy's Dijkstra there: a path found with cost <= L
 that region, so it is optimal over the whole map; otherwise L grows (x1.4) and it repeats.
 
 The grid path is then shortened by line-of-sight shortcuts that never pass closer to an
-obstacle than the grid path did over the same stretch, and resampled for the controller.
+obstacle than the grid path did over the same stretch (in C with the compiled search, the
+same waypoints), and resampled for the controller.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import uuid
 from collections.abc import Sequence
@@ -95,6 +97,7 @@ class GridPlanner:
         # For snapping a start that strayed into the inscribed zone back to the nearest
         # traversable cell: made on first need (an EDT with indices is costly on big maps).
         self._nearest_free: npt.NDArray[np.intp] | None = None
+        self._frame: grid_astar.MapFrame | None = None  # for the compiled smoothing
         if components is None:
             traversable = costmap.traversable
             components = disk_cache.cached_array(
@@ -104,11 +107,16 @@ class GridPlanner:
             )
         self._labels = components
 
+    def _map_frame(self) -> grid_astar.MapFrame:
+        if self._frame is None:
+            self._frame = grid_astar.MapFrame(self.costmap.grid)
+        return self._frame
+
     def layered(self, costmap: Costmap) -> GridPlanner:
         """A planner on ``costmap`` (the map's costs plus obstacles seen, never lower)."""
         other = GridPlanner.__new__(GridPlanner)
         other.costmap, other.params = costmap, self.params
-        other._labels, other._nearest_free = None, None
+        other._labels, other._nearest_free, other._frame = None, None, None
         other.token, other.version = uuid.uuid4().hex, 0
         return other
 
@@ -140,12 +148,18 @@ class GridPlanner:
             raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
         res = self.costmap.grid.resolution
         if self.params.compiled_search and grid_astar.available():
-            found = grid_astar.search(
-                self.costmap.costs, res, self.params.cost_penalty, start_cell, goal_cell
+            ends = (start[0], start[1], goal[0], goal[1])
+            planned = grid_astar.plan(
+                self.costmap.costs,
+                res,
+                self.params.cost_penalty,
+                start_cell,
+                goal_cell,
+                (self._map_frame(), ends) if self.params.smooth else None,
             )
-            if found is None:  # cannot happen within one component; kept as a guard
+            if planned is None:  # cannot happen within one component; kept as a guard
                 raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
-            return self._make_path(found[0], found[1], start, goal)
+            return self._compiled_path(planned, start, goal)
         straight = float(_octile(start_cell[0] - goal_cell[0], start_cell[1] - goal_cell[1])) * res
         # Path costs run a few percent above the straight line in open space; start just
         # above that and widen. Once the region holds the whole map (no cell is farther
@@ -214,11 +228,21 @@ class GridPlanner:
 
     # -- helpers ---------------------------------------------------------------------------
     def _cell(self, point: tuple[float, float], role: str) -> tuple[int, int]:
+        """The (row, col) cell under a world point: ``grid.world_to_cell`` for one point, in
+        plain floats (numpy's per-call cost on scalars was a tenth of a small plan)."""
         grid = self.costmap.grid
-        ix, iy = grid.world_to_cell(point[0], point[1])
-        if not (0 <= ix < grid.width and 0 <= iy < grid.height):
+        dx, dy = float(point[0]) - grid.origin_x, float(point[1]) - grid.origin_y
+        if grid.origin_yaw != 0.0:
+            c, s = math.cos(grid.origin_yaw), math.sin(grid.origin_yaw)
+            dx, dy = c * dx + s * dy, -s * dx + c * dy
+        fx, fy = dx / grid.resolution, dy / grid.resolution
+        height, width = self.costmap.costs.shape
+        if not (math.isfinite(fx) and math.isfinite(fy)):
             raise UnreachableError(f"{role} {_fmt(point)} is off the map")
-        return int(iy), int(ix)
+        ix, iy = math.floor(fx), math.floor(fy)
+        if not (0 <= ix < width and 0 <= iy < height):
+            raise UnreachableError(f"{role} {_fmt(point)} is off the map")
+        return iy, ix
 
     def _goal_cell(self, goal: tuple[float, float]) -> tuple[int, int]:
         cell = self._cell(goal, "goal")
@@ -255,13 +279,54 @@ class GridPlanner:
         goal: tuple[float, float],
     ) -> Path:
         xs, ys = self.costmap.grid.cell_to_world(cells[:, 1], cells[:, 0])
-        points = np.column_stack([xs, ys]).astype(np.float64)
+        points = np.empty((len(cells), 2), dtype=np.float64)
+        points[:, 0], points[:, 1] = xs, ys
         # Exact endpoints: the robot starts where it is and stops on the anchor.
         points[0], points[-1] = start, goal
         if self.params.smooth and len(points) > 2:
             points = shortcut(points, self.costmap)
-        length = float(np.linalg.norm(np.diff(points, axis=0), axis=1).sum())
-        return Path(points, length, cost, len(cells))
+        return Path(points, _length(points), cost, len(cells))
+
+    def _compiled_path(
+        self, planned: grid_astar.Found, start: tuple[float, float], goal: tuple[float, float]
+    ) -> Path:
+        """The path of a compiled plan: its waypoints were smoothed in C already (the same
+        shortcuts); only their world points are left to find. A smoothed path has a handful
+        of them: plain floats then, as numpy's per-call cost was a fifth of a small plan."""
+        grid = self.costmap.grid
+        if len(planned.flat) > _FEW_WAYPOINTS:
+            rows, cols = np.divmod(planned.flat, self.costmap.costs.shape[1])
+            xs, ys = grid.cell_to_world(cols, rows)
+            points = np.empty((len(xs), 2), dtype=np.float64)
+            points[:, 0], points[:, 1] = xs, ys
+            points[0], points[-1] = start, goal  # the robot's exact start, the anchor itself
+            return Path(points, _length(points), planned.cost, planned.path_cells)
+        width, res = self.costmap.costs.shape[1], grid.resolution
+        yaw, ox, oy = grid.origin_yaw, grid.origin_x, grid.origin_y
+        c, s = math.cos(yaw), math.sin(yaw)
+        waypoints = [start]
+        for cell in planned.flat.tolist()[1:-1]:  # cell_to_world, one cell at a time
+            row, col = divmod(cell, width)
+            gx, gy = (col + 0.5) * res, (row + 0.5) * res
+            if yaw == 0.0:
+                waypoints.append((ox + gx, oy + gy))
+            else:
+                waypoints.append((ox + c * gx - s * gy, oy + s * gx + c * gy))
+        waypoints.append(goal)
+        length = 0.0
+        for (x0, y0), (x1, y1) in itertools.pairwise(waypoints):
+            length += math.sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0))
+        points = np.array(waypoints, dtype=np.float64)
+        return Path(points, length, planned.cost, planned.path_cells)
+
+
+_FEW_WAYPOINTS = 32  # up to this many, a compiled plan's world points are found in plain floats
+
+
+def _length(points: npt.NDArray[np.float64]) -> float:
+    """A polyline's length (m): the norm's own sum, without linalg's checks."""
+    steps = np.diff(points, axis=0)
+    return float(np.sqrt((steps * steps).sum(axis=1)).sum())
 
 
 def costmap_graph(

@@ -59,6 +59,7 @@ from assistantx.service.office_lease import OfficeLease
 from assistantx.service.offices.deployment import claim_journal
 from assistantx.service.offices.submissions import SubmissionListener
 from assistantx.service.rate_limit import InstructionRate, refusal_text
+from assistantx.service.reasoner_warmup import DEFERRED_REASONERS, DeferredFactory
 from assistantx.service.retention import Retention
 from assistantx.service.robots import RobotGauges, robot_states
 from assistantx.service.shared_phones import SharedPhones
@@ -69,7 +70,6 @@ from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.office import SimOffice
 from assistantx.store.journal import InstructionRecord, Journal
 from assistantx.store.leases import Leases, fence
-from assistantx.store.postgres_store import redact
 
 if TYPE_CHECKING:  # Matrix loads when the settings ask for it (httpx and the rest: ~0.2 CPU-s)
     from assistantx.adapters.messenger.matrix import MatrixRuntime, MatrixSetup
@@ -125,6 +125,7 @@ class ServiceRuntime:
             self.matrix_setup = matrix_setup(settings)
         self.matrix: MatrixRuntime | None = None
         self.fleet: SimFleet | None = None  # ASSISTANTX_ROBOTS > 1 (service.fleet_wiring)
+        self._deferred_reasoner: DeferredFactory | None = None  # built after ready
         fleet_wiring.check_fleet_settings(settings)
 
     # -- start-up ------------------------------------------------------------------------
@@ -145,7 +146,12 @@ class ServiceRuntime:
         if self.office_lease is not None:
             self.office_lease.hold(self.journal)
         if self.office_id is not None:  # one of several offices: this journal must be its own
-            where = redact(s.database) if s.database else str(data_dir / JOURNAL_FILE)
+            if s.database:
+                from assistantx.store.postgres_store import redact  # psycopg: PostgreSQL only
+
+                where = redact(s.database)
+            else:
+                where = str(data_dir / JOURNAL_FILE)
             claim_journal(self.journal, self.office_id, where)
         # The map's distance transforms, kept by content hash: a second start reads them.
         disk_cache.use_directory(data_dir / MAP_CACHE_DIR)
@@ -312,6 +318,8 @@ class ServiceRuntime:
         if s.database is not None and self.office_id is not None:
             await self._listen_for_submissions(stack, s.database, self.office_id)
         self.ready = True
+        if self._deferred_reasoner is not None:
+            self._deferred_reasoner.warm_in_background()
 
     async def _hold_office(self, stack: AsyncExitStack, data_dir: Path, url: str) -> None:
         s = self.settings
@@ -368,8 +376,13 @@ class ServiceRuntime:
             factory = load_builder(s.reasoner_builder)(self.office, s)
             return factory, s.reasoner_builder.partition(":")[2]
         kind = s.effective_reasoner
-        model = model_from_settings(s) if needs_llm(kind) else None
-        return reasoner_factory(kind, self.office, s, model=model), kind
+        if needs_llm(kind) or kind not in DEFERRED_REASONERS:
+            model = model_from_settings(s) if needs_llm(kind) else None
+            return reasoner_factory(kind, self.office, s, model=model), kind
+        # Nothing to check at start (no model, no plug-in): built once the service is ready.
+        office = self.office
+        self._deferred_reasoner = DeferredFactory(lambda: reasoner_factory(kind, office, s))
+        return self._deferred_reasoner, kind
 
     @property
     def map_yaml(self) -> Path:

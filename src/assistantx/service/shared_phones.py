@@ -15,12 +15,15 @@ transaction: a replica that lost the office cannot take the codes out of people'
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from assistantx.service.colleagues import phone_entries
 from assistantx.sim.office import HeldCode
 from assistantx.store.connection import Connection
-from assistantx.store.postgres_store import PostgresStore
 from assistantx.store.sqlite_store import Schema
+
+if TYPE_CHECKING:
+    from assistantx.store.postgres_store import PostgresStore
 
 _TABLE = "CREATE TABLE IF NOT EXISTS sim_phones (ref TEXT PRIMARY KEY, payload TEXT NOT NULL)"
 PHONES_SCHEMA = Schema("sim_phones", (_TABLE,), postgres=(_TABLE,))
@@ -38,6 +41,8 @@ class SharedPhones:
 
     @classmethod
     def open(cls, database_url: str) -> SharedPhones:
+        from assistantx.store.postgres_store import PostgresStore  # psycopg: replicas only
+
         return cls(PostgresStore.open_url(database_url, PHONES_SCHEMA))
 
     def close(self) -> None:

@@ -4,9 +4,38 @@ It understands instructions with rules over the office's own vocabulary, asks wh
 sure, plans the canonical action sequences of docs/task-semantics.md, and needs no LLM and no
 network. ``build_factory(office, settings)`` is what ``assistantx.agents.registry`` loads for
 ``--reasoner symbolic``.
+
+Names are loaded from their modules on first use (PEP 562): the runtime imports one small
+submodule (``answers``, for consent replies) at start, and with it this package; the reader
+and its language tools (lemminflect, ~0.4 CPU-s of imports) then load when the reasoner is
+built, after the service is ready (``service.reasoner_warmup``).
 """
 
-from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
-from assistantx.agents.symbolic.reasoner import SymbolicReasoner, build_factory
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
+    from assistantx.agents.symbolic.reasoner import SymbolicReasoner, build_factory
+
+_WHERE = {
+    "InstructionParser": "assistantx.agents.symbolic.reading.parser",
+    "Task": "assistantx.agents.symbolic.reading.parser",
+    "TaskFrame": "assistantx.agents.symbolic.reading.parser",
+    "SymbolicReasoner": "assistantx.agents.symbolic.reasoner",
+    "build_factory": "assistantx.agents.symbolic.reasoner",
+}
+
+
+def __getattr__(name: str) -> Any:
+    module = _WHERE.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # the next lookup is a plain module attribute
+    return value
+
 
 __all__ = ["InstructionParser", "SymbolicReasoner", "Task", "TaskFrame", "build_factory"]

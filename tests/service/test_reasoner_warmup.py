@@ -1,0 +1,79 @@
+"""The reasoner's factory built after ready: once, by the warm-up or by the first use."""
+
+from __future__ import annotations
+
+import threading
+
+import pytest
+
+from assistantx.agents.base import Reasoner, ReasonerFactory
+from assistantx.service.reasoner_warmup import DeferredFactory
+
+
+class _Built:
+    """A stand-in for a built factory: counts the reasoners it makes."""
+
+    def __init__(self) -> None:
+        self.made = 0
+
+    def __call__(self) -> Reasoner:
+        self.made += 1
+        return object()  # type: ignore[return-value]  # never started here
+
+
+def test_nothing_is_built_until_the_first_use_and_then_once() -> None:
+    builds: list[_Built] = []
+
+    def build() -> ReasonerFactory:
+        builds.append(_Built())
+        return builds[-1]
+
+    deferred = DeferredFactory(build)
+    assert builds == []
+    deferred()
+    deferred()
+    assert len(builds) == 1
+    assert builds[0].made == 2
+
+
+def test_a_first_use_during_the_warm_up_waits_for_it_instead_of_building_again() -> None:
+    started, release = threading.Event(), threading.Event()
+    builds: list[_Built] = []
+
+    def build() -> ReasonerFactory:
+        started.set()
+        release.wait(10)
+        builds.append(_Built())
+        return builds[-1]
+
+    deferred = DeferredFactory(build)
+    warm_up = deferred.warm_in_background()
+    assert started.wait(10)
+    first_use = threading.Thread(target=deferred)
+    first_use.start()
+    release.set()
+    first_use.join(10)
+    warm_up.join(10)
+    assert len(builds) == 1
+    assert builds[0].made == 1
+
+
+def test_a_failed_warm_up_is_raised_on_first_use(caplog: pytest.LogCaptureFixture) -> None:
+    def build() -> ReasonerFactory:
+        raise RuntimeError("no lexicon")
+
+    deferred = DeferredFactory(build)
+    deferred.warm_in_background().join(10)
+    assert "building the reasoner failed: no lexicon" in caplog.text
+    with pytest.raises(RuntimeError, match="no lexicon"):
+        deferred()
+
+
+def test_the_warm_up_never_holds_up_the_process_exit() -> None:
+    """A stop right after the start: the interpreter does not wait for the warm-up."""
+    release = threading.Event()
+    deferred = DeferredFactory(lambda: (release.wait(10), _Built())[1])
+    thread = deferred.warm_in_background()
+    assert thread.daemon
+    release.set()
+    thread.join(10)
