@@ -436,7 +436,7 @@ def contact_clashes(office: Office) -> list[str]:
         for spelling in dict.fromkeys((p.name, *p.aliases)):
             for group_id in groups.get(" ".join(spelling.casefold().split()), []):
                 found.append(
-                    f"person {p.id!r} is also called {spelling!r}, like group {g!r}: a message "
+                    f"person {p.id!r} is also called {spelling!r}, like group {group_id!r}: a message "
                     f"to {spelling!r} is ambiguous; address them by id, or rename one"
                 )
     return found
