@@ -77,7 +77,9 @@ def test_a_true_clash_is_one_warning_line_naming_both(caplog: pytest.LogCaptureF
         office = parse_office(_clinic_with_station("Station"), "clinic.yaml")
     clashes = [r.getMessage() for r in caplog.records if "like group" in r.getMessage()]
     assert len(clashes) == 1 and "\n" not in clashes[0]
-    assert clashes[0].startswith("clinic.yaml: person 'rich' is also called 'Station', like group 'station':")
+    assert clashes[0].startswith(
+        "clinic.yaml: person 'rich' is also called 'Station', like group 'station':"
+    )
     # the id still means its group; the clashing spelling written otherwise is the person's
     assert Resolver(office).contact("station") == ("group", "station")
     with pytest.raises(AmbiguousNameError):

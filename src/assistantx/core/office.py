@@ -436,8 +436,8 @@ def contact_clashes(office: Office) -> list[str]:
         for spelling in dict.fromkeys((p.name, *p.aliases)):
             for group_id in groups.get(" ".join(spelling.casefold().split()), []):
                 found.append(
-                    f"person {p.id!r} is also called {spelling!r}, like group {group_id!r}: a message "
-                    f"to {spelling!r} is ambiguous; address them by id, or rename one"
+                    f"person {p.id!r} is also called {spelling!r}, like group {group_id!r}: a "
+                    f"message to {spelling!r} is ambiguous; address them by id, or rename one"
                 )
     return found
 
