@@ -228,7 +228,8 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
             return f"The robot is not at a place that offers {op.name}."
         owner = item.split(":", 1)[1]
         if op.input is not None and op.shape(world.office) == "render":
-            if (person, f"{op.input}:{owner}") not in world.received:
+            # their own file they have; anyone else's must have been sent to them
+            if person != owner and (person, f"{op.input}:{owner}") not in world.received:
                 what = _thing(world, f"{op.input}:{owner}", person)
                 return f"I haven't received the file to {op.name} ({what})."
         if op.input is not None and op.shape(world.office) == "transform":
