@@ -82,3 +82,11 @@ async def test_a_guard_refusal_tells_the_reasoner_not_to_send_it_again(office: O
     stm = await run_one(sim, assistant, "lee", "bring me Zhang's stapler")
     assert any("Do not send it again unchanged" in f for f in reasoner.seen_feedback[1])
     assert stm.trace.outcome == "failed" and stm.trace.summary.startswith("Giving up.")
+
+
+async def test_the_requesters_own_item_is_called_theirs(office: Office) -> None:
+    to_wang = SendQR(contact="wang", item="document:lee", purpose="sign")
+    asked: Step = [Inquire(contact="wang", question="Could you sign it?"), Wait()]
+    _, sim = await _scripted(office, [asked, [to_wang], [to_wang]], "sign my document")
+    told = [m.text for m in sim.messenger.sent if m.chat.id == "lee"][-1]
+    assert "for your document" in told and "Lee Ming's" not in told

@@ -152,7 +152,7 @@ _REFUSED_BECAUSE = {
 }
 
 
-def refusal_summary(office: Office, result: ActionResult) -> str:
+def refusal_summary(office: Office, result: ActionResult, requester: str) -> str:
     """What the requester reads when the reasoner tried again, unchanged, an action the consent
     guard refused: what could not be done and why, with names, and what would unblock it."""
     action: Action = result.action
@@ -161,7 +161,9 @@ def refusal_summary(office: Office, result: ActionResult) -> str:
     who = _person_or_group_name(office, contact) if isinstance(contact, str) else "they"
     item = getattr(action, "item", None) or getattr(action, "file", None)
     if isinstance(item, str):
-        what += f" for {item_name(office, item)}"
+        type_id, _, owner = item.partition(":")
+        kind = next((t.name for t in office.item_types if t.id == type_id), "item")
+        what += f" for your {kind}" if owner == requester else f" for {item_name(office, item)}"
     why = _REFUSED_BECAUSE.get(result.error or "", "the hand-over was not allowed")
     return (
         f"{what}: {why.format(who=who)}. I will not try the same thing again; if someone else "

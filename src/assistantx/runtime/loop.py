@@ -383,7 +383,9 @@ class InstructionRunner:
             stm, "action_result", step.index, result=step.results[-1].model_dump(mode="json")
         )
         logger.info("instruction %s: a refused action chosen again; ending", stm.instruction_id)
-        await self._finish(stm, "failed", refusal_summary(self.executor.ctx.office, refused))
+        await self._finish(
+            stm, "failed", refusal_summary(self.executor.ctx.office, refused, stm.requester)
+        )
 
     def _note_unreachable(
         self, stm: ShortTermMemory, step: TraceStep, action: Action, result: ActionResult
