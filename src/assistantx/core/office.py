@@ -418,7 +418,28 @@ def parse_office(raw: Any, where: str = "<office>") -> Office:
         err = exc.errors()[0]
         raise OfficeError(where, _entry_name(raw, err["loc"]), err["msg"]) from exc
     _check_references(office, where)
+    for clash in contact_clashes(office):
+        logger.warning("%s: %s", where, clash)
     return office
+
+
+def contact_clashes(office: Office) -> list[str]:
+    """A person's name or alias written exactly like a group's id or name: a message to
+    that spelling is ambiguous (an id still means its own group). One line each, naming
+    both, for the office's author."""
+    groups: dict[str, list[str]] = {}
+    for g in office.groups:
+        for spelling in {g.id, g.id.replace("_", " "), g.name}:
+            groups.setdefault(" ".join(spelling.casefold().split()), []).append(g.id)
+    found: list[str] = []
+    for p in office.people:
+        for spelling in dict.fromkeys((p.name, *p.aliases)):
+            for group_id in groups.get(" ".join(spelling.casefold().split()), []):
+                found.append(
+                    f"person {p.id!r} is also called {spelling!r}, like group {group_id!r}: a "
+                    f"message to {spelling!r} is ambiguous; address them by id, or rename one"
+                )
+    return found
 
 
 def _entry_name(raw: dict[str, Any], loc: tuple[int | str, ...]) -> str:

@@ -181,5 +181,7 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             if op.input is not None and not _owns(office, a, op.input):
                 raise ValueError(f"the requester has no {op.input}")
             facility = office.offering(op.id)[0]
-            if not set(facility.guards) - {a}:  # a guard may ask, if someone else runs it too
-                raise ValueError(f"only the requester runs the {facility.id}")
+            if not facility.guards:
+                raise ValueError(f"nobody runs the {facility.id}")
+            # a guard may ask too: another guard runs it, or, when the requester is the only
+            # one, they run it themselves with the robot (agents/oracle/policy.runs_it_alone)

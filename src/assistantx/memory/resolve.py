@@ -66,6 +66,15 @@ class Resolver:
             self.item_types.add(t.id, [t.name, *t.synonyms, *plural])
         self.lockers = NameIndex()
         self.lockers.add(LOCKER, LOCKER_NAMES)
+        # How each contact is written in the office file, only case and spacing folded: the
+        # tie-break when a tolerant match finds a person and a group (see ``contact``).
+        self._written: dict[str, dict[str, set[str]]] = {"person": {}, "group": {}}
+        for p in office.people:
+            for spelling in (p.id, p.id.replace("_", " "), p.name, *p.aliases):
+                self._written["person"].setdefault(_as_written(spelling), set()).add(p.id)
+        for g in office.groups:
+            for spelling in (g.id, g.id.replace("_", " "), g.name):
+                self._written["group"].setdefault(_as_written(spelling), set()).add(g.id)
 
     # -- single lookups ------------------------------------------------------------------
     def person(self, name: str) -> PersonId:
@@ -89,6 +98,8 @@ class Resolver:
         people = self.people.lookup(name)
         groups = self.groups.lookup(name)
         if people and groups:
+            people, groups = self._as_declared(name, people, groups)
+        if people and groups:
             raise AmbiguousNameError(
                 "contact",
                 name,
@@ -105,6 +116,28 @@ class Resolver:
             self._people_hint() + " " + self._groups_hint(),
             self.people.keys() + self.groups.keys(),
         )
+
+    def _as_declared(
+        self, name: str, people: list[str], groups: list[str]
+    ) -> tuple[list[str], list[str]]:
+        """A name the tolerant match finds as a person and as a group: an id, then a
+        spelling the office declares, written as it is (case and spacing aside), decides.
+        Group ``station`` and the alias "the station manager" both normalize to "station"
+        (titles and articles are dropped), yet "station" is the group and "the station
+        manager" the person; a name written like both stays ambiguous."""
+        raw = name.strip()
+        if raw in groups and raw not in people:
+            return [], [raw]
+        if raw in people and raw not in groups:
+            return [raw], []
+        key = _as_written(name)
+        as_person = sorted(self._written["person"].get(key, set()) & set(people))
+        as_group = sorted(self._written["group"].get(key, set()) & set(groups))
+        if as_person and not as_group:
+            return as_person, []
+        if as_group and not as_person:
+            return [], as_group
+        return people, groups
 
     def place(self, name: str) -> str:
         """A location id from a location, a facility or a person's name (their desk)."""
@@ -293,6 +326,10 @@ class Resolver:
         if hint is None:
             hint = self._hints[1] = "Group chats: " + _listing([g.id for g in self.office.groups])
         return hint
+
+
+def _as_written(name: str) -> str:
+    return " ".join(name.casefold().split())
 
 
 HINT_NAMES = 40  # names listed in an error's hint; a large office lists the first ones

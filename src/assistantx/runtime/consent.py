@@ -8,7 +8,8 @@ reading can waste a step but cannot hand anything to the wrong person:
 1. **Parties.** A code (and a forwarded file) goes only to the requester; the item's owner;
    the keeper of the facility where the owner keeps it (a fridge's keeper, for a deposit); a
    guard of a facility whose operation works on or makes the item (a copy, a heat, a print);
-   for ``sign``/``seal``, a person the requester named as the one to do it (and, for a seal,
+   for ``sign``/``seal``, a person the requester named as the one to do it, in a doing place
+   of their words or as the doer of the reader's frame of the request (and, for a seal,
    anyone who owns the seal); for ``collect``, a person the requester named as the recipient.
    "Named as" means in that role, in the requester's own words (``recipients``): "take it to
    Hal", "bring Hal one", "get Hal to sign", a reply that is just the name, a yes to "Shall I
@@ -45,7 +46,7 @@ from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, Person
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.recipients import named_recipients
+from assistantx.runtime.recipients import named_doers, named_recipients
 
 _COMMON = english.words("common")
 RefusalRule = Literal["not_a_party", "no_answer", "no_consent"]
@@ -210,7 +211,7 @@ def _is_party(office: Office, stm: ShortTermMemory, contact: str, item: str, pur
         tool = task_kinds.tool_type(purpose, office)  # whoever owns the seal may stamp
         if tool is not None and _owns(office, contact, tool):
             return True
-        return contact in named_recipients(office, stm)
+        return contact in named_doers(office, stm)
     # work at a facility (copy, heat, produce, ...): its guards run it
     return contact in _facility_workers(office, item_type)
 

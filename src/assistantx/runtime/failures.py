@@ -123,3 +123,34 @@ def failure_summary(
     else:
         lines.append(f"The robot is {where}; its locker is empty.")
     return " ".join(lines)
+
+
+# Why the consent guard refused a hand-over, in words for the requester (the guard's own
+# reason, written for the agent, carries ids).
+_REFUSED_BECAUSE = {
+    "not_a_party": (
+        "{who} is not someone you named to receive or work on it, and I hand things only to "
+        "you, their owner, whoever keeps them, or a person you name"
+    ),
+    "no_answer": "{who} has not answered me, so they have not agreed to the hand-over",
+    "no_consent": "its owner has not given me their own yes",
+}
+
+
+def refusal_summary(office: Office, result: ActionResult, requester: str) -> str:
+    """What the requester reads when the reasoner tried again, unchanged, an action the consent
+    guard refused: what could not be done and why, with names, and what would unblock it."""
+    action: Action = result.action
+    what = _failed_action_in_words(office, action)
+    contact = getattr(action, "contact", None) or getattr(action, "target", None)
+    who = _person_or_group_name(office, contact) if isinstance(contact, str) else "they"
+    item = getattr(action, "item", None) or getattr(action, "file", None)
+    if isinstance(item, str):
+        type_id, _, owner = item.partition(":")
+        kind = next((t.name for t in office.item_types if t.id == type_id), "item")
+        what += f" for your {kind}" if owner == requester else f" for {item_name(office, item)}"
+    why = _REFUSED_BECAUSE.get(result.error or "", "the hand-over was not allowed")
+    return (
+        f"{what}: {why.format(who=who)}. I will not try the same thing again; if someone else "
+        "should do it, tell me who and send the request again."
+    )

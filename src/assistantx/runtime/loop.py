@@ -57,7 +57,7 @@ from assistantx.memory.updates import (
 from assistantx.runtime import consent
 from assistantx.runtime.action_keys import StepKeys
 from assistantx.runtime.executors import Executor
-from assistantx.runtime.failures import FailureMemory, failure_summary
+from assistantx.runtime.failures import FailureMemory, failure_summary, refusal_summary
 from assistantx.runtime.fleet import FleetLease
 from assistantx.runtime.lease import BodyLease
 from assistantx.runtime.returns import return_note
@@ -112,6 +112,8 @@ class InstructionRunner:
         self._info = 0  # bumped on every new piece of information
         self._last_seen: dict[str, int] = {}  # action signature → info version when executed
         self._failures = FailureMemory()
+        # action signature → (info version, result) when the consent guard refused it
+        self._guard_refused: dict[str, tuple[int, ActionResult]] = {}
 
     def _now(self) -> float:
         return self.executor.ctx.clock.now()
@@ -300,6 +302,12 @@ class InstructionRunner:
                 await self._refuse(stm, step, proposed, str(exc))
                 break
             signature = action.signature()
+            refused_before = self._guard_refused.get(signature)
+            if refused_before is not None and refused_before[0] == self._info:
+                # The guard already refused exactly this and nothing has changed since: a
+                # reasoner that neither replanned nor asked would only loop to the step limit.
+                await self._end_on_refusal(stm, step, action, refused_before[1])
+                break
             # Waits differ only in wording; what matters is that nothing new came in since.
             seen_key = "wait()" if isinstance(action, Wait) else signature
             if self._last_seen.get(seen_key) == self._info and not isinstance(action, Stop):
@@ -320,7 +328,16 @@ class InstructionRunner:
                 await self._take_body(stm, step, action)
             result = await self.executor.execute(stm, action, key=keys.next(action))
             self._last_seen[seen_key] = self._info
-            if not result.ok:
+            if result.refused:
+                # A refusal changes nothing in the office: it is not news that would make the
+                # same action worth trying again.
+                self._guard_refused[signature] = (self._info, result)
+                feedback.append(
+                    f"{signature} was refused: {result.observation}. Do not send it again "
+                    "unchanged: ask the person concerned or the requester, choose someone "
+                    "else, or stop and say why it cannot be done."
+                )
+            elif not result.ok:
                 self._info += 1  # a failure or a timeout is news
                 feedback.append(f"{signature} did not succeed: {result.observation}")
                 feedback += self._note_unreachable(stm, step, action, result)
@@ -344,6 +361,21 @@ class InstructionRunner:
             if not result.ok:
                 break  # the rest of the decision assumed this one worked
         return feedback
+
+    async def _end_on_refusal(
+        self, stm: ShortTermMemory, step: TraceStep, action: Action, refused: ActionResult
+    ) -> None:
+        """End, in words, an instruction whose reasoner chose again an action the guard
+        refused with nothing new since (the second try is not sent)."""
+        reason = f"{action.signature()} was refused before and nothing has changed since"
+        step.results.append(self._refused(action, reason))
+        await self._emit(
+            stm, "action_result", step.index, result=step.results[-1].model_dump(mode="json")
+        )
+        logger.info("instruction %s: a refused action chosen again; ending", stm.instruction_id)
+        await self._finish(
+            stm, "failed", refusal_summary(self.executor.ctx.office, refused, stm.requester)
+        )
 
     def _note_unreachable(
         self, stm: ShortTermMemory, step: TraceStep, action: Action, result: ActionResult

@@ -16,18 +16,29 @@ words alone (never from a reasoner's reading), by the position of the name:
 - a reply in their own chat that is just a name ("Hal Brooks.", "to Hal, please"): the
   answer to "Who should get it?";
 - a "Shall I ...?" of the assistant in the requester's chat, answered yes by the requester,
-  in which the name stands in one of those places ("Shall I bring Hal a thermometer?").
+  in which the name stands in one of those places ("Shall I bring Hal a thermometer?");
+
+and, for work done by hand (sign, seal), ``named_doers``: the doer of the reader's own frame
+of the request ("Hal needs to sign my form, can you sort it?": Hal signs), the reading the
+symbolic reasoner plans with, so the guard never refuses the hand-over that reading asked
+for. The frame adds only people the requester's own words name, and only as doers: the work
+done by hand puts the item back in the locker, whereas a recipient keeps it, so a recipient
+is still read from the words alone (a frame that misreads "May wants it on the board, my
+clipboard is for Rich" as giving it to May must not make May a party).
 """
 
 from __future__ import annotations
 
 import re
+import weakref
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
+from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
@@ -224,3 +235,47 @@ def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
         if last_offer is not None and stance(turn.text) == "yes":
             found |= _in_roles(office, last_offer, stm.requester)
     return found
+
+
+# One parser per office (building one reads the whole office), and the frames it read.
+_PARSERS: weakref.WeakKeyDictionary[Office, InstructionParser] = weakref.WeakKeyDictionary()
+_FRAMES: dict[tuple[int, str, str, tuple[str, ...]], TaskFrame] = {}
+_FRAMES_KEPT = 256
+
+
+def _frame(office: Office, stm: ShortTermMemory) -> TaskFrame:
+    answers = tuple(stm.requester_answers())
+    key = (id(office), stm.requester, stm.text, answers)
+    frame = _FRAMES.get(key)
+    if frame is None:
+        parser = _PARSERS.get(office)
+        if parser is None:
+            parser = _PARSERS[office] = InstructionParser(office)
+        frame = parser.parse_with_answers(stm.text, stm.requester, list(answers))
+        if len(_FRAMES) >= _FRAMES_KEPT:
+            _FRAMES.pop(next(iter(_FRAMES)))
+        _FRAMES[key] = frame
+    return frame
+
+
+def _written_by_requester(office: Office, stm: ShortTermMemory) -> set[str]:
+    """Everyone a name in the requester's own words may mean (the instruction and their
+    messages in their own chat)."""
+    own = ChatRef(kind="dm", id=stm.requester)
+    texts = [stm.text] + [
+        t.text
+        for t in stm.dialogue
+        if t.chat == own and t.direction == "in" and t.person == stm.requester
+    ]
+    return {p for text in texts for m in _mentions(office, _tokens(text)) for p in m.people}
+
+
+def named_doers(office: Office, stm: ShortTermMemory) -> set[str]:
+    """Who does the work by hand (signs, seals): the doers the requester named in a receiving
+    or doing place (``named_recipients``) and the doers of the reader's frame of the request
+    whom the requester's own words name."""
+    frame = _frame(office, stm)
+    doers = {t.actor for t in frame.tasks if t.actor and t.actor != stm.requester}
+    if doers:
+        doers &= _written_by_requester(office, stm)
+    return named_recipients(office, stm) | doers

@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 
 from assistantx.core import task_kinds
-from assistantx.core.office import Operation, OperationShape, Ownership
+from assistantx.core.office import Facility, Operation, OperationShape, Ownership
 from assistantx.core.task_schema import FILE_KIND, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
@@ -118,6 +118,9 @@ def _about_item(world: World, person: str, type_id: str, text: str) -> str:
         if not world.owns(person, type_id):
             return f"Sorry, I don't have {_thing(world, f'{type_id}:{whose}', person)}."
     if world.owns(person, type_id):
+        keeper = kept_at(world, person, type_id)
+        if keeper is not None:  # kept in a cupboard: their yes, and who takes it out
+            return _kept_answer(world, person, name, keeper)
         if world.office.item_type(type_id).kind == "belonging":
             return f"Yes, I have {a_thing(name)}. Happy to lend it."
         return f"Yes, you can have my {name}."
@@ -155,10 +158,35 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
     return replies
 
 
+def kept_at(world: World, person: str, type_id: str) -> Facility | None:
+    """The facility the office declares keeps ``person``'s item of this type (a cupboard, a
+    fridge), or None when it is with them."""
+    try:
+        return world.office.keeper(person, type_id)
+    except KeyError:
+        return None
+
+
+def _kept_answer(world: World, person: str, name: str, keeper: Facility) -> str:
+    """An owner asked for an item the office keeps for them: yes (the owner's own consent),
+    and where it really is, so nobody expects them to bring it from their desk."""
+    if person in keeper.guards:
+        return f"Yes, you can have my {name}. I'll take it out of the {keeper.name} for the robot."
+    others = [world.office.person(g).name for g in keeper.guards if g != person]
+    who = " or ".join(others) if others else "whoever looks after it"
+    return (
+        f"Yes, you can have my {name}. It is kept in the {keeper.name}, not with me: "
+        f"{who} can take it out for the robot."
+    )
+
+
 def _can_bring(world: World, person: str, type_id: str) -> bool:
-    """Whether ``person`` has their item of this type at hand (on them, or kept where they
-    can get at it); an item locked in a cupboard someone else runs is not at hand."""
-    if not world.owns(person, type_id):
+    """Whether ``person`` has their item of this type at hand to lend from their desk (on
+    them, or where they can get at it). An item the office declares kept at a facility is
+    never at hand, even when its owner runs that facility or sits by it: it is fetched from
+    there through the keeper, by the same rule as the oracle's (``oracle.plan.able``), so a
+    group chat's volunteers are the ones the oracle and the dataset generator expect."""
+    if not world.owns(person, type_id) or kept_at(world, person, type_id) is not None:
         return False
     where = world.holder.get(f"{type_id}:{person}", person)
     return where == person or where in world.places_of(person)
@@ -199,7 +227,8 @@ def handover_problem(world: World, person: str, purpose: str, item: str, place: 
             return f"The robot is not at a place that offers {op.name}."
         owner = item.split(":", 1)[1]
         if op.input is not None and op.shape(world.office) == "render":
-            if (person, f"{op.input}:{owner}") not in world.received:
+            # their own file they have; anyone else's must have been sent to them
+            if person != owner and (person, f"{op.input}:{owner}") not in world.received:
                 what = _thing(world, f"{op.input}:{owner}", person)
                 return f"I haven't received the file to {op.name} ({what})."
         if op.input is not None and op.shape(world.office) == "transform":

@@ -115,6 +115,17 @@ def order_candidates(
     return list(best)
 
 
+# A visit is one decision: its codes and the wait for the hand-over (Decision holds at most 4).
+MAX_CODES_PER_VISIT = 3
+
+
+def runs_it_alone(office: Office, role: Role, requester: str) -> bool:
+    """Whether ``role`` is a guard's whose facility only the requester runs."""
+    if role.kind != "guard" or role.facility is None:
+        return False
+    return set(office.facility(role.facility).guards) == {requester}
+
+
 def biggest_group(office: Office, person: str) -> str | None:
     groups = [g for g in office.groups if person in g.members]
     if not groups:
@@ -133,6 +144,12 @@ def optimal_script(
     for role in plan.roles:
         if role.key in log.assigned:
             continue  # found before falling back to this plan
+        if runs_it_alone(office, role, a):
+            # the requester is the only one who runs the facility: they do it themselves with
+            # the robot (their request is their yes), nobody is asked
+            log.assigned[role.key] = a
+            log.resolutions[role.key] = "first"
+            continue
         tried: list[str] = []
         for person in order_candidates(office, role, candidates(role, ltm, a), home):
             tried.append(person)
@@ -202,7 +219,9 @@ def optimal_script(
 
     # 2. files
     forwards: list[Action] = [
-        ForwardFile(source=who(f.source), target=who(f.target)) for f in plan.forwards
+        ForwardFile(source=who(f.source), target=who(f.target))
+        for f in plan.forwards
+        if who(f.source) != who(f.target)  # the requester runs the printer: it is their file
     ]
     if forwards:
         feedback = yield forwards
@@ -227,6 +246,16 @@ def optimal_script(
             who(visit.person),
         ):
             merged[-1] = Visit(last.place, last.person, last.codes + visit.codes)
+        elif (
+            last is not None
+            and who(last.person) == who(visit.person) == a
+            and REQUESTER in (last.place, visit.place)
+            and len(last.codes) + len(visit.codes) <= MAX_CODES_PER_VISIT
+        ):
+            # the requester runs the facility themselves: everything of theirs is handed over
+            # where they work it, not at their desk before and after
+            place = visit.place if last.place == REQUESTER else last.place
+            merged[-1] = Visit(place, last.person, last.codes + visit.codes)
         else:
             merged.append(visit)
 

@@ -125,6 +125,13 @@ class Planner:
             raise LookupError(f"no facility for {t.kind} {t.item}")
         return offering[0].id
 
+    def _runs_alone(self, t: Task, requester: str) -> str | None:
+        """The requester, when they are the only guard of the facility the task needs: they
+        run it themselves with the robot (nobody else can be asked; the oracle's
+        ``policy.runs_it_alone`` plans the same)."""
+        guards = self.office.facility(self._facility_for(t)).guards
+        return requester if set(guards) == {requester} else None
+
     def _source(self, n: int, t: Task, requester: str, held: frozenset[str] = frozenset()) -> Role:
         """Who puts the item into the locker (``held``: items an earlier task of the request
         brought to the requester: they have them now, wherever they are kept)."""
@@ -262,6 +269,7 @@ class Planner:
                     f"{n}.renderer",
                     "print",
                     requester,
+                    fixed=self._runs_alone(t, requester),
                     item_type=source_type,
                     item_owner=owner,
                     facility=self._facility_for(t),
@@ -279,8 +287,14 @@ class Planner:
                             beneficiary=requester,
                         )
                     )
+                # a requester who runs the printer alone has their own file already
+                send: list[Phase] = (
+                    []
+                    if guard.fixed == owner
+                    else [Forward(owner, guard, f"{source_type}:{owner}")]
+                )
                 phases = [
-                    Forward(owner, guard, f"{source_type}:{owner}"),
+                    *send,
                     Handover(guard, (leg(product, "produce", owner),)),
                     Handover(recipient, (leg(product, "collect", owner),)),
                 ]
@@ -290,6 +304,7 @@ class Planner:
                     f"{n}.copier",
                     "copy",
                     requester,
+                    fixed=self._runs_alone(t, requester),
                     item_type=item,
                     item_owner=owner,
                     facility=self._facility_for(t),
@@ -322,6 +337,7 @@ class Planner:
                     f"{n}.maker",
                     "produce",
                     requester,
+                    fixed=self._runs_alone(t, requester),
                     item_type=item,
                     facility=self._facility_for(t),
                     operation=op,
@@ -341,7 +357,7 @@ class Planner:
                     f"{n}.{spec.doer}",
                     kind,
                     requester,
-                    fixed=t.actor if spec.by_person else None,
+                    fixed=t.actor if spec.by_person else self._runs_alone(t, requester),
                     item_type=item,
                     item_owner=owner,
                     facility=None if spec.by_person else self._facility_for(t),
