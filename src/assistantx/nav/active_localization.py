@@ -63,7 +63,7 @@ class ExploreParams:
     # measured on tb3_sandbox, a pose turned a quarter round among its pillars fits 95% of
     # the beams within 0.3 m but only 55-80% within 0.1 m; the true pose, 95-100%.
     fit_distance_m: float = 0.1
-    converged_fit: float = 0.85
+    converged_fit: float = 0.9
     # The cloud is drawn from this many times max_particles uniform poses, weighed by the
     # first scan (ParticleFilter.global_localization).
     oversample: int = 10
