@@ -1,55 +1,35 @@
-"""Global localization and kidnapped-robot recovery on the office map (seeded trials).
+"""Global localization and kidnapped-robot recovery on the office map (seeded trials), with
+the robot moving while it localizes (bench/_active_trials.py: it turns in place, then drives
+short legs into free space picked from its scan, until the cloud has converged, or says it
+is not localized).
 
-Global: the filter starts from a uniform cloud of ``max_particles`` over the free space; the
-robot drives (steered by its true pose, as if tele-operated) from a random spot towards a
-random anchor; a trial succeeds when the estimate is within 0.25 m and 10 deg of the truth
-by the 30th filter update and stays there for the rest of the run.
+A trial succeeds only when the robot declared a pose, that pose is within 0.25 m and 10 deg
+of the TRUE pose, and it stays so for the next 10 updates of driving. Kidnapped: the robot
+tracks for 20 updates, is carried elsewhere without the odometry noticing, drives on until
+it notices (LostWatch), then localizes again.
 
-Kidnapped: the robot tracks for 20 updates, is carried to another random spot without the
-odometry noticing, and must be found again within 50 updates, with recovery_alpha_slow 0.001
-and recovery_alpha_fast 0.1 (augmented MCL) and max_particles 5000.
-
-Both use a tempered beam product (``beam_product_exponent`` 0.02 global, 0.05 kidnapped):
-with the plain product the first update of a spread cloud collapses it onto the best-looking
-wrong place about half the time (measured with exponent 1: 9/20 global with 20000
-particles, 12/20 kidnapped with 2000). Tracking
-keeps the default exponent 1 (bench/robot_amcl_tracking.py).
-
-Run: python bench/robot_amcl_global.py
+Run: python bench/robot_amcl_global.py [--trials N]
 """
 
 from __future__ import annotations
 
+import argparse
 import json
-import math
 import time
 from pathlib import Path
 
 import numpy as np
+from _active_trials import global_trial, kidnap_trial
 from _tours import TourWorld
 
-from assistantx.nav.amcl import AmclParams, ParticleFilter
 from assistantx.nav.anchors import load_anchors
 from assistantx.nav.costmap import Costmap
-from assistantx.nav.diff_drive import PurePursuit, SimulatedBase
-from assistantx.nav.geometry import angle_diff
 from assistantx.nav.lidar import Lidar
 from assistantx.nav.occupancy_map import load_map
 from assistantx.nav.planner import GridPlanner
 
 REPO = Path(__file__).resolve().parents[1]
 TRIALS = 20
-GLOBAL_WITHIN = 30
-KIDNAP_WITHIN = 50
-POS_TOL_M = 0.25
-YAW_TOL = math.radians(10)
-GLOBAL_PARAMS = AmclParams(max_particles=20000, min_particles=500, beam_product_exponent=0.02)
-KIDNAP_PARAMS = AmclParams(
-    recovery_alpha_slow=0.001,
-    recovery_alpha_fast=0.1,
-    beam_product_exponent=0.05,
-    max_particles=5000,
-)
 
 
 class World(TourWorld):
@@ -62,91 +42,33 @@ class World(TourWorld):
         self.clear = np.argwhere(self.costmap.costs == 0)
 
 
-def run_filter(
-    world: World,
-    pf: ParticleFilter,
-    base: SimulatedBase,
-    controller: PurePursuit,
-    updates: int,
-    rng: np.random.Generator,
-) -> list[bool]:
-    """Drive and update; per update, whether the estimate is within tolerance."""
-    ok: list[bool] = []
-    while len(ok) < updates:
-        v, w, done = controller.command(base.true_pose)
-        if done:
-            break
-        base.step(v, w, 0.1)
-        if pf.update(base.odom_pose, world.lidar.scan(base.true_pose, rng)):
-            est = pf.estimate
-            assert est is not None
-            err = math.hypot(est.x - base.true_pose[0], est.y - base.true_pose[1])
-            yaw_err = abs(float(angle_diff(est.yaw, base.true_pose[2])))
-            ok.append(err < POS_TOL_M and yaw_err < YAW_TOL)
-    return ok
-
-
-def first_lasting(ok: list[bool]) -> int | None:
-    """1-based update from which the estimate stays within tolerance to the end."""
-    for i in range(len(ok)):
-        if all(ok[i:]):
-            return i + 1
-    return None
-
-
 def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--trials", type=int, default=TRIALS)
+    trials = parser.parse_args().trials
     world = World()
-    started = time.perf_counter()
-    global_found: list[int | None] = []
-    for trial in range(TRIALS):
-        rng = np.random.default_rng(1000 + trial)
-        start = world.random_pose(rng)
-        base = SimulatedBase(start, rng)
-        pf = ParticleFilter(world.grid, GLOBAL_PARAMS, rng)
-        pf.global_localization()
-        ok = run_filter(world, pf, base, world.route(start, rng), GLOBAL_WITHIN + 10, rng)
-        found = first_lasting(ok)
-        global_found.append(found)
-        print(f"global trial {trial:2d}: localized at update {found}")
-    global_s = time.perf_counter() - started
-    kidnap_found: list[int | None] = []
-    for trial in range(TRIALS):
-        rng = np.random.default_rng(2000 + trial)
-        start = world.random_pose(rng)
-        base = SimulatedBase(start, rng)
-        pf = ParticleFilter(world.grid, KIDNAP_PARAMS, rng)
-        pf.initialize(start)
-        controller = world.route(start, rng)
-        run_filter(world, pf, base, controller, 20, rng)
-        base.teleport(world.random_pose(rng))
-        ok = run_filter(world, pf, base, world.route(base.true_pose, rng), KIDNAP_WITHIN + 10, rng)
-        found = first_lasting(ok)
-        kidnap_found.append(found)
-        print(f"kidnap trial {trial:2d}: recovered at update {found}")
-    global_ok = [f for f in global_found if f is not None and f <= GLOBAL_WITHIN]
-    kidnap_ok = [f for f in kidnap_found if f is not None and f <= KIDNAP_WITHIN]
-    result = {
-        "trials": TRIALS,
-        "global_success_rate": len(global_ok) / TRIALS,
-        "global_median_updates": float(np.median(global_ok)) if global_ok else None,
-        "global_max_particles": GLOBAL_PARAMS.max_particles,
-        "global_beam_product_exponent": GLOBAL_PARAMS.beam_product_exponent,
-        "kidnap_max_particles": KIDNAP_PARAMS.max_particles,
-        "kidnap_beam_product_exponent": KIDNAP_PARAMS.beam_product_exponent,
-        "kidnap_success_rate": len(kidnap_ok) / TRIALS,
-        "kidnap_median_updates": float(np.median(kidnap_ok)) if kidnap_ok else None,
-        "wall_s": round(time.perf_counter() - started, 1),
-        "global_wall_s": round(global_s, 1),
-    }
-    print(
-        f"global localization: {len(global_ok)}/{TRIALS} within {GLOBAL_WITHIN} updates "
-        f"(median {result['global_median_updates']}), {GLOBAL_PARAMS.max_particles} particles"
-    )
-    print(
-        f"kidnapped robot: {len(kidnap_ok)}/{TRIALS} recovered within {KIDNAP_WITHIN} updates "
-        f"(median {result['kidnap_median_updates']})"
-    )
-    print(json.dumps(result))
+    started = time.process_time()
+    results: dict[str, object] = {"trials": trials}
+    for kind, run, seed0 in (("global", global_trial, 1000), ("kidnap", kidnap_trial, 2000)):
+        outcomes = []
+        for i in range(trials):
+            t = run(world, seed0 + i)
+            outcomes.append(t)
+            print(
+                f"{kind} trial {i:2d}: {'ok' if t.success else 'FAILED'}"
+                f"{'' if t.localized else ' (said: not localized)'} after {t.updates} "
+                f"updates, {t.distance_m:.1f} m driven",
+                flush=True,
+            )
+        ok = [t for t in outcomes if t.success]
+        results[f"{kind}_success"] = len(ok)
+        results[f"{kind}_not_localized"] = sum(not t.localized for t in outcomes)
+        results[f"{kind}_median_updates"] = (
+            float(np.median([t.updates for t in ok])) if ok else None
+        )
+    results["cpu_s"] = round(time.process_time() - started, 1)
+    results["all_ok"] = results["global_success"] == trials and results["kidnap_success"] == trials
+    print(json.dumps(results))
 
 
 if __name__ == "__main__":

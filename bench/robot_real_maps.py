@@ -12,11 +12,13 @@ of them (assistantx.nav.anchor_check.place_anchors). Per map:
 - tour: the robot with default parameters (AMCL on, LiDAR, obstacle layer) drives a seeded
   tour of ``--legs`` legs between random anchors; legs_failed counts RobotErrors, the
   position errors compare the AMCL estimate with the truth at every filter update;
-- global localization and kidnapped-robot recovery, 20 seeded trials each, with the same
-  parameters and success rule as bench/robot_amcl_global.py, on random poses of the
-  reachable free space; of the failures, ``*_failed_on_lookalike_pose`` counts those whose
-  final estimate sees the map as the true pose does (median beam difference < 5 cm: a
-  symmetric map that no scan from there disambiguates); they still count as failures;
+- global localization and kidnapped-robot recovery, 20 seeded trials each, as
+  bench/_active_trials.py runs them (the robot turns and drives short legs while it
+  localizes; success only when the pose it declares is the true one, within 0.25 m and
+  10 deg, and stays so), on random poses of the reachable free space; ``*_not_localized``
+  counts the trials that ended saying so, ``*_wrong_pose_declared`` those that declared a
+  wrong pose; of the failures, ``*_failed_on_lookalike_pose`` counts those whose final
+  estimate sees the map as the true pose does (median beam difference < 5 cm);
 - peak_rss_mb: the process's peak resident memory after the map (it only grows).
 
 Last stdout line: one JSON object, ``{"maps": {name: {...}}, "all_ok": bool}``.
@@ -48,25 +50,17 @@ from _tours import TourWorld
 from scipy.ndimage import label
 
 from assistantx.core.errors import RobotError
-from assistantx.nav.amcl import LikelihoodField, ParticleFilter
+from assistantx.nav.amcl import LikelihoodField
 from assistantx.nav.anchor_check import check_anchors, place_anchors
 from assistantx.nav.anchors import Anchor, load_anchors
 from assistantx.nav.costmap import Costmap
-from assistantx.nav.diff_drive import SimulatedBase
 from assistantx.nav.lidar import Lidar, cast_rays
 from assistantx.nav.navigation import NavigationParams, Navigator, shared_planner
 from assistantx.nav.occupancy_map import OccupancyMap, load_map
 from assistantx.nav.scenario import load_scenario
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from robot_amcl_global import (
-    GLOBAL_PARAMS,
-    GLOBAL_WITHIN,
-    KIDNAP_PARAMS,
-    KIDNAP_WITHIN,
-    first_lasting,
-    run_filter,
-)
+from _active_trials import global_trial, kidnap_trial
 
 REPO = Path(__file__).resolve().parents[1]
 # The three nav2 maps are committed in the repository (maps/nav2, Apache-2.0).
@@ -165,55 +159,37 @@ def tour(grid: OccupancyMap, anchors: dict[str, Anchor], legs: int, seed: int) -
 LOOKALIKE_M = 0.05  # median beam difference below the LiDAR's noise: the map looks the same
 
 
-def looks_alike(world: RealWorld, pf: ParticleFilter, true_pose: np.ndarray) -> bool:
-    """Whether the map, seen from the filter's (wrong) estimate, gives the scan it gives from
-    the true pose: noise-free ranges of every beam within LOOKALIKE_M (median), so no
-    scan from here can tell the two poses apart."""
-    est = pf.estimate
-    if est is None:
+def looks_alike(world: RealWorld, estimate: np.ndarray | None, true_pose: np.ndarray) -> bool:
+    """Whether the map, seen from the final (wrong) estimate, gives the scan it gives from
+    the true pose: noise-free ranges of every beam within LOOKALIKE_M (median)."""
+    if estimate is None:
         return False
     blocked, grid, lidar = world.grid.obstacles, world.grid, world.lidar
     seen = cast_rays(blocked, grid, true_pose, lidar.angles, lidar.params.max_range_m)
-    there = np.array([est.x, est.y, est.yaw])
-    other = cast_rays(blocked, grid, there, lidar.angles, lidar.params.max_range_m)
+    other = cast_rays(blocked, grid, estimate, lidar.angles, lidar.params.max_range_m)
     return bool(np.median(np.abs(seen - other)) < LOOKALIKE_M)
 
 
 def localization(world: RealWorld, trials: int) -> dict[str, object]:
-    """Successes, and of the failures those that ended on a look-alike pose (still failures:
-    reported so that a symmetric map's ambiguity is visible, not hidden)."""
-    global_ok = kidnap_ok = global_alike = kidnap_alike = 0
-    for trial in range(trials):
-        rng = np.random.default_rng(1000 + trial)
-        start = world.random_pose(rng)
-        base = SimulatedBase(start, rng)
-        pf = ParticleFilter(world.grid, GLOBAL_PARAMS, rng)
-        pf.global_localization()
-        ok = run_filter(world, pf, base, world.route(start, rng), GLOBAL_WITHIN + 10, rng)  # type: ignore[arg-type]
-        found = first_lasting(ok)
-        success = found is not None and found <= GLOBAL_WITHIN
-        global_ok += success
-        global_alike += not success and looks_alike(world, pf, base.true_pose)
-    for trial in range(trials):
-        rng = np.random.default_rng(2000 + trial)
-        start = world.random_pose(rng)
-        base = SimulatedBase(start, rng)
-        pf = ParticleFilter(world.grid, KIDNAP_PARAMS, rng)
-        pf.initialize(start)
-        run_filter(world, pf, base, world.route(start, rng), 20, rng)  # type: ignore[arg-type]
-        base.teleport(world.random_pose(rng))
-        ok = run_filter(world, pf, base, world.route(base.true_pose, rng), KIDNAP_WITHIN + 10, rng)  # type: ignore[arg-type]
-        found = first_lasting(ok)
-        success = found is not None and found <= KIDNAP_WITHIN
-        kidnap_ok += success
-        kidnap_alike += not success and looks_alike(world, pf, base.true_pose)
-    return {
-        "trials": trials,
-        "global_success": global_ok,
-        "global_failed_on_lookalike_pose": global_alike,
-        "kidnap_success": kidnap_ok,
-        "kidnap_failed_on_lookalike_pose": kidnap_alike,
-    }
+    """Successes (bench/_active_trials.py: the robot moves while it localizes, and a trial
+    counts only if the pose it declared is the true one), the trials that ended saying
+    "not localized", and of the failures those that ended on a look-alike pose."""
+    out: dict[str, object] = {"trials": trials}
+    for kind, run, seed0 in (("global", global_trial, 1000), ("kidnap", kidnap_trial, 2000)):
+        results = [run(world, seed0 + i) for i in range(trials)]  # type: ignore[arg-type]
+        ok = [t for t in results if t.success]
+        out[f"{kind}_success"] = len(ok)
+        out[f"{kind}_not_localized"] = sum(not t.localized for t in results)
+        out[f"{kind}_wrong_pose_declared"] = sum(t.localized and not t.success for t in results)
+        out[f"{kind}_failed_on_lookalike_pose"] = sum(
+            not t.success and looks_alike(world, t.final_pose, t.true_pose) for t in results
+        )
+        out[f"{kind}_median_updates"] = float(np.median([t.updates for t in ok])) if ok else None
+        out[f"{kind}_max_updates"] = max((t.updates for t in ok), default=None)
+        out[f"{kind}_median_drive_m"] = (
+            round(float(np.median([t.distance_m for t in ok])), 1) if ok else None
+        )
+    return out
 
 
 def run_map(
@@ -289,9 +265,12 @@ def main() -> None:
             f"{r['planner_pairs']} pairs, median {r['planning_median_s']} s; tour "
             f"{r['legs'] - r['legs_failed']}/{r['legs']} legs, error mean "
             f"{r['mean_position_error_m']} m p95 {r['p95_position_error_m']} m; global "
-            f"{r.get('global_success')}/{args.trials} ({r.get('global_failed_on_lookalike_pose')}"
-            f" of the failures on a look-alike pose), kidnap {r.get('kidnap_success')}/"
-            f"{args.trials} ({r.get('kidnap_failed_on_lookalike_pose')}); "
+            f"{r.get('global_success')}/{args.trials} (not localized "
+            f"{r.get('global_not_localized')}, wrong pose {r.get('global_wrong_pose_declared')}, "
+            f"median {r.get('global_median_updates')} updates), kidnap "
+            f"{r.get('kidnap_success')}/{args.trials} (not localized "
+            f"{r.get('kidnap_not_localized')}, wrong pose {r.get('kidnap_wrong_pose_declared')},"
+            f" median {r.get('kidnap_median_updates')} updates); "
             f"peak {r['peak_rss_mb']} MB; {r['wall_s']} s",
             flush=True,
         )

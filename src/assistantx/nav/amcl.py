@@ -86,6 +86,12 @@ class AmclParams:
     # hypotheses alive while the cloud is spread (global localization, recovery).
     beam_product_exponent: float = 1.0
     do_beamskip: bool = False
+    # Not in nav2: selective resampling (Doucet; GMapping's Neff test). With a value r > 0 a
+    # resample due by resample_interval happens only when the effective sample size
+    # 1 / sum(w^2) is below r times the particle count. Evidence that does not favour one
+    # of several look-alike places leaves their weights even and Neff high, so no resample
+    # thins one of them out by chance (0 = resample whenever due, as nav2).
+    resample_min_neff_ratio: float = 0.0
     # Not in nav2: measure distances to the unknown rim of the known floor too (the grey edge
     # of a SLAM map is a wall seen edge-on, and the world's beams end there).
     unknown_rim_is_wall: bool = False
@@ -361,9 +367,27 @@ class ParticleFilter:
         cloud[:, 2] = wrap_angle(cloud[:, 2])
         self._reset(cloud)
 
-    def global_localization(self) -> None:
-        """Spread ``max_particles`` uniformly over the free space of the map."""
-        self._reset(self.field.random_poses(self.params.max_particles, self.rng))
+    def global_localization(self, scan: LaserScan | None = None, oversample: int = 1) -> None:
+        """Spread ``max_particles`` uniformly over the free space of the map. With a ``scan``
+        and ``oversample`` k > 1, ``k * max_particles`` uniform poses are weighed by that scan
+        (the tempered product) and ``max_particles`` drawn from them: on a big map a uniform
+        cloud often has no particle close enough to the truth to win, and then gathers on
+        the best wrong place; drawing from k times as many poses puts k times as many near
+        every place the scan fits."""
+        n = self.params.max_particles
+        if scan is None or oversample <= 1:
+            self._reset(self.field.random_poses(n, self.rng))
+            return
+        candidates = self.field.random_poses(n * oversample, self.rng)
+        ranges, angles = self.usable_beams(scan)
+        if ranges.size == 0:
+            self._reset(candidates[:n])
+            return
+        log_w = self.params.beam_product_exponent * self.field.beam_log_likelihood(
+            candidates, ranges, angles
+        )
+        weights = np.exp(log_w - log_w.max())
+        self._reset(candidates[low_variance_resample(weights, n, self.rng)])
 
     def _reset(self, cloud: FloatArray) -> None:
         self.particles = cloud
@@ -372,6 +396,17 @@ class ParticleFilter:
         self._recovery = _RecoveryState()
         self._since_resample = 0
         self.estimate = self._estimate()
+
+    def drop(self, ruled_out: npt.NDArray[np.bool_]) -> None:
+        """Remove the particles at places shown not to be the robot's (kept if that would
+        leave none): a check the likelihood field cannot make has ruled them out."""
+        if ruled_out.all() or not ruled_out.any():
+            return
+        keep = ~ruled_out
+        self.particles = self.particles[keep]
+        self.log_weights = self.log_weights[keep] - logsumexp(self.log_weights[keep])
+        self.estimate = self._estimate()
+        self._pose_at_update = self.estimate.pose
 
     # -- updates --------------------------------------------------------------------------
     def pose_from_odometry(self, odom: FloatArray) -> FloatArray:
@@ -402,13 +437,20 @@ class ParticleFilter:
         self.sensor_update(scan)
         self.estimate = self._estimate()
         self._since_resample += 1
-        if self._since_resample >= self.params.resample_interval:
+        if self._since_resample >= self.params.resample_interval and self._weights_uneven():
             self.resample()
             self._since_resample = 0
         self._odom_at_update = np.asarray(odom, dtype=float).copy()
         self._pose_at_update = self.estimate.pose
         self.updates += 1
         return True
+
+    def _weights_uneven(self) -> bool:
+        ratio = self.params.resample_min_neff_ratio
+        if ratio <= 0:
+            return True
+        w = np.exp(self.log_weights - logsumexp(self.log_weights))
+        return bool(1.0 / float(w @ w) < ratio * w.size)
 
     def sensor_update(self, scan: LaserScan) -> None:
         ranges, angles = self.usable_beams(scan)
