@@ -9,6 +9,7 @@ clause say when, what for, or where, and must never become tasks of their own:
 - a purpose clause after the object: "a book *to read* on the train", "a pen *to sign my
   contract* with" (a purpose verb with an object of its own is not the request either, so its
   task word does not count; "take my contract to Zhang *to sign*" keeps it);
+- a reason clause after the object: "a radio *because there's no money for new headlamps*";
 - a container or measure word before "of": "a *cup of* coffee" is coffee.
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
@@ -31,6 +32,8 @@ TIME_PREPOSITIONS = english.words("time_prepositions")
 # form"), "from"/"to"/"by" (people's roles).
 MODIFIER_PREPOSITIONS = english.words("object_modifier_prepositions")
 DETERMINERS = english.words("determiners")
+# Conjunctions that open a reason clause: what it names explains the request, never joins it.
+REASON_CONJUNCTIONS = english.words("reason_conjunctions")
 
 
 def modifiers(
@@ -47,6 +50,9 @@ def modifiers(
             continue
         if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(mentions, n):
             in_purpose = True
+            continue
+        if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and head_seen:
+            in_purpose = True  # "... because there's no money for new stopwatches": context
             continue
         if m.kind != "item":
             continue

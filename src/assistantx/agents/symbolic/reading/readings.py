@@ -64,6 +64,7 @@ class MentionReader:
     def read(self, lexed: Lexed) -> Readings:
         tokens = lexed.tokens
         mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
+        mentions = participle_adjectives(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
         settled = _settled_by_later_sentence(mentions, spaces)
         doubts = self._doubts(tokens, settled)
@@ -173,5 +174,23 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
         before = tokens[m.start - 1].word if m.start > 0 else ""
         after = tokens[m.end].word if m.end < len(tokens) else ""
         if before in _BEFORE_VERB and after in _DETERMINERS:
+            out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
+    return out
+
+
+def participle_adjectives(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """ "send the signed form to Kasia": a task word's past participle between a determiner
+    (or a possessive) and the item it describes is an adjective, a plain word; the request is
+    the sentence's own verb, not that task."""
+    out = list(mentions)
+    for n, m in enumerate(out[:-1]):
+        if m.kind != "cue" or m.end - m.start != 1 or out[n + 1].kind != "item":
+            continue
+        if out[n + 1].start != m.end or m.start == 0:
+            continue
+        before = tokens[m.start - 1]
+        if before.word not in _DETERMINERS and not before.possessive:
+            continue
+        if language.is_past_participle(tokens[m.start].word):
             out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
     return out

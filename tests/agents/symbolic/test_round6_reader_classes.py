@@ -1,0 +1,97 @@
+"""Blind round 6's reader classes, by mechanism, on sentences of our own against a boathouse
+no sentence was written for (the round's office and sentences were never read). Only what is
+asked for moves, and only whose it was said to be."""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+
+from assistantx.agents.symbolic import InstructionParser
+from helpers.boathouse import boathouse
+
+
+@functools.cache
+def _parser() -> InstructionParser:
+    return InstructionParser(boathouse())
+
+
+def _tasks(text: str, who: str) -> list[tuple[str, str | None, str | None, str]]:
+    frame = _parser().parse(text, who)
+    return [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
+
+
+@pytest.mark.parametrize(
+    ("who", "text", "owner", "item"),
+    [
+        ("ottilie", "Bram has a stopwatch on his bay. Can I borrow it?", "bram", "stopwatch"),
+        ("ottilie", "Femi has a stopwatch. could you get it for me", "femi", "stopwatch"),
+        (
+            "bram",
+            "Ottilie has a headlamp at her bay, can you get it for me?",
+            "ottilie",
+            "headlamp",
+        ),
+        ("bram", "Kasia's got a radio. I'd like to borrow it", "kasia", "radio"),
+    ],
+)
+def test_it_after_a_person_who_has_the_item_is_that_persons_item(
+    who: str, text: str, owner: str, item: str
+) -> None:
+    """E: "it" is the item the statement said the person has, never another of its kind (so
+    its owner is the one asked)."""
+    assert _tasks(text, who) == [("transfer", item, owner, who)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "please bring me a radio because there's no money for new stopwatches",
+        "please bring me a radio, because there's no money for new stopwatches",
+        "can I get a radio since we can't afford new headlamps",
+        "bring me a radio cause the club won't buy new stopwatches",
+    ],
+)
+def test_an_item_in_a_reason_clause_is_not_fetched(text: str) -> None:
+    """F: a reason clause's items explain the request; only the radio is fetched."""
+    assert _tasks(text, "femi") == [("transfer", "radio", None, "femi")]
+
+
+def test_a_reason_clause_keeps_the_owner_of_the_requested_item() -> None:
+    text = "get me Bram's stopwatch because we have no budget for new stopwatches"
+    assert _tasks(text, "femi") == [("transfer", "stopwatch", "bram", "femi")]
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("take my signed form to Kasia", ("transfer", "form", "bram", "kasia")),
+        ("please bring Femi my signed waiver", ("transfer", "form", "bram", "femi")),
+        ("print the signed log for Kasia", ("print", "log", "bram", "kasia")),
+    ],
+)
+def test_a_participle_before_the_item_describes_it(
+    text: str, wanted: tuple[str, str, str, str]
+) -> None:
+    """C: "the signed form" is a form that was signed; the request is the sentence's verb."""
+    assert _tasks(text, "bram") == [wanted]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "courier my signed waiver to the regional federation",
+        "please courier the signed form to the county rowing office",
+    ],
+)
+def test_a_send_out_of_a_signed_paper_is_the_send_out(text: str) -> None:
+    frame = _parser().parse(text, "bram")
+    assert [(t.item, t.operation) for t in frame.tasks] == [("form", "courier")]
+    assert frame.tasks[0].destination
+
+
+@pytest.mark.parametrize("text", ["can you get my form signed by Rune", "get Rune to sign my form"])
+def test_the_verb_itself_still_asks_for_the_signature(text: str) -> None:
+    assert _tasks(text, "bram") == [("sign", "form", "bram", "bram")]
+    assert _parser().parse(text, "bram").tasks[0].actor == "rune"
