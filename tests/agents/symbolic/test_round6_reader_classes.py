@@ -95,3 +95,81 @@ def test_a_send_out_of_a_signed_paper_is_the_send_out(text: str) -> None:
 def test_the_verb_itself_still_asks_for_the_signature(text: str) -> None:
     assert _tasks(text, "bram") == [("sign", "form", "bram", "bram")]
     assert _parser().parse(text, "bram").tasks[0].actor == "rune"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can you print my log? I need the spreadsheet for the regatta meeting",
+        "please print my log. I need the log for tomorrow's briefing",
+    ],
+)
+def test_the_file_named_again_as_what_is_needed_is_the_purpose(text: str) -> None:
+    """D: a second sentence that says what the file is needed for keeps the print."""
+    assert _tasks(text, "ottilie") == [("print", "log", "ottilie", "ottilie")]
+
+
+def test_a_signed_paper_needed_for_something_is_still_the_signature() -> None:
+    text = "get Rune to sign my form. I need the waiver for the race on Saturday"
+    assert _tasks(text, "bram") == [("sign", "form", "bram", "bram")]
+
+
+@pytest.mark.parametrize(
+    ("text", "to"),
+    [
+        ("print my log and email it to Kasia", "kasia"),
+        ("print my log. send the spreadsheet to Rune too", "rune"),
+    ],
+)
+def test_a_file_passed_on_to_someone_else_is_a_second_task(text: str, to: str) -> None:
+    assert _tasks(text, "ottilie") == [
+        ("print", "log", "ottilie", "ottilie"),
+        ("send_file", "log", "ottilie", to),
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could you get me a radio as my headlamp is dying",
+        "I'd like a radio please, my headlamp is dying",
+        "can you bring a radio to me since my headlamp is dying",
+    ],
+)
+def test_an_owned_item_in_a_trailing_reason_is_not_the_object(text: str) -> None:
+    """H: "my headlamp is dying" explains the request; the radio is what is fetched."""
+    assert _tasks(text, "ottilie") == [("transfer", "radio", None, "ottilie")]
+
+
+@pytest.mark.parametrize(
+    ("text", "thing"),
+    [
+        ("could I get a power bank, my headlamp is dying", "power bank"),
+        ("can you bring me a spare battery because my headlamp is dying", "spare battery"),
+        ("bring me a power bank as my headlamp is dying", "power bank"),
+    ],
+)
+def test_an_unknown_thing_with_a_reason_is_declined_not_swapped(text: str, thing: str) -> None:
+    """H: the item of the reason is never fetched in place of a thing the office lacks."""
+    frame = _parser().parse(text, "ottilie")
+    assert frame.tasks == [] and frame.decline and f"no {thing} in this office" in frame.decline
+
+
+@pytest.mark.parametrize(
+    ("text", "item"),
+    [
+        ("I'm out of stopwatches for the race. could you get me a few?", "stopwatch"),
+        ("we're short of radios, can you fetch a few", "radio"),
+        ("the crew needs radios. can you bring a couple?", "radio"),
+        ("we need stopwatches for the regatta. grab some more please", "stopwatch"),
+    ],
+)
+def test_a_quantity_word_refers_back_to_the_item_named_before(text: str, item: str) -> None:
+    """G: "a few", "a couple", "some more" are how many of the item just named."""
+    assert _tasks(text, "femi") == [("transfer", item, None, "femi")]
+
+
+@pytest.mark.parametrize("text", ["can you bring me a few", "bring me a couple more"])
+def test_a_quantity_with_nothing_named_is_asked_about(text: str) -> None:
+    frame = _parser().parse(text, "femi")
+    assert frame.tasks == [] and frame.decline is None and frame.question

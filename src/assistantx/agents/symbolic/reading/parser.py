@@ -32,17 +32,20 @@ import dataclasses
 
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
+from assistantx.agents.symbolic.reading._objects import REASON_CONJUNCTIONS, modifiers
 from assistantx.agents.symbolic.reading.destination import destination
 from assistantx.agents.symbolic.reading.frames import NOT_UNDERSTOOD, FrameReader
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
-from assistantx.core import language
+from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
 from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+# The words of the phrases that point back to an item named before ("another", "a few more").
+_BACK_WORDS = english.words("another_one")
 
 __all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
@@ -106,10 +109,18 @@ class InstructionParser:
         """ "bring me a tape measure": a fetch of a thing no one here has, said in words."""
         tokens, mentions = lexed.tokens, lexed.mentions
         cue = next((m for m in mentions if m.kind == "cue" and set(m.ids) & {"give", "make"}), None)
-        if cue is None or any(m.kind in ("item", "facility") for m in mentions):
+        context = modifiers(tokens, mentions)  # "... because my headlamp is dying"
+        if cue is None or any(
+            m.kind in ("item", "facility") and m.start not in context for m in mentions
+        ):
             return None
         words = [t.word for t in tokens[cue.end :]]
+        # the thing ends where a reason starts: "a power bank as my headlamp is dying"
+        ends = [n for n, w in enumerate(words) if w in REASON_CONJUNCTIONS or w == "as"]
+        words = words[: ends[0]] if ends else words
         thing = self.screen.unknown_thing(words)
+        if thing and set(thing.split()) <= _BACK_WORDS:
+            return None  # "bring me a few": how many of something not named, so ask what
         if not thing or not all(language.lemmas(w) or language.zipf(w) > 0 for w in thing.split()):
             return None
         return (

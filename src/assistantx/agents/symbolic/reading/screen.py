@@ -744,6 +744,8 @@ class RequestScreen:
                 continue
             if language.zipf(noun) < 3 or noun in ("one", "bit", "lot"):
                 continue
+            if _compound_head(text[match.end() :]):
+                continue  # "a power bank": a thing of its own, not a quantity of the item
             evidence = [Evidence(words=match.group(0), meaning=f"a {noun} of {thing}")]
             return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
         return text, []
@@ -1020,6 +1022,16 @@ def _holder(mentions: list[Mention], n: int, words: list[str]) -> str | None:
     between = words[people[0].end : mentions[n].start]
     verb = between[:1] if not people[0].possessive else ["has"]  # "Femi's got": has got
     return people[0].ids[0] if verb and verb[0] in _POSSESSION_VERBS else None
+
+
+def _compound_head(after: str) -> bool:
+    """Whether the word right after a noun is a noun that heads a compound with it ("a power
+    *bank*"), not a time word or a courtesy ("a box today", "a box please")."""
+    nxt = language.words(after)[:1]
+    if not nxt or not after[:1].isspace():
+        return False
+    found = language.lemmas(nxt[0])
+    return "NOUN" in found and "ADV" not in found
 
 
 def _has_words(text: str) -> bool:
