@@ -7,6 +7,7 @@ from __future__ import annotations
 import functools
 
 import pytest
+from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from helpers.boathouse import boathouse
@@ -173,3 +174,80 @@ def test_a_quantity_word_refers_back_to_the_item_named_before(text: str, item: s
 def test_a_quantity_with_nothing_named_is_asked_about(text: str) -> None:
     frame = _parser().parse(text, "femi")
     assert frame.tasks == [] and frame.decline is None and frame.question
+
+
+@pytest.mark.parametrize(
+    ("who", "text", "owner"),
+    [
+        ("ottilie", "charge my headlamp", "ottilie"),
+        ("ottilie", "please recharge my head torch", "ottilie"),
+        ("ottilie", "put my headlamp on the charging shelf", "ottilie"),
+        ("ottilie", "take my headlamp to the charging shelf", "ottilie"),
+        ("bram", "could you put Ottilie's headlamp on the charging shelf for her", "ottilie"),
+    ],
+)
+def test_a_declared_service_on_a_belonging_is_reached_by_verb_and_by_facility(
+    who: str, text: str, owner: str
+) -> None:
+    """A: the office's own treat service on an ordinary belonging, by its declared verbs and
+    by putting the item at the facility that offers it."""
+    frame = _parser().parse(text, who)
+    assert [(t.item, t.owner, t.operation) for t in frame.tasks] == [("headlamp", owner, "charge")]
+
+
+def test_an_item_taken_from_a_service_facility_is_only_fetched() -> None:
+    assert _tasks("bring me Bram's headlamp from the charging shelf", "ottilie") == [
+        ("transfer", "headlamp", "bram", "ottilie")
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("charge my radio", "charge a radio"),
+        ("put my radio on the charging shelf", "charge a radio"),
+        ("courier my headlamp to the federation", "courier a headlamp"),
+    ],
+)
+def test_a_service_on_an_item_it_does_not_take_is_unachievable(text: str, said: str) -> None:
+    frame = _parser().parse(text, "ottilie")
+    assert frame.tasks == [] and frame.decline_outcome == "unachievable"
+    assert frame.decline and said in frame.decline
+
+
+async def test_a_declared_service_on_a_belonging_runs_to_done() -> None:
+    run = await run_instruction(boathouse(), "ottilie", "Please charge my headlamp.")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    handed = {e.detail["to"] for e in run.sim.world.handovers() if e.detail.get("to") != "locker"}
+    assert handed <= {"ottilie", "kasia"}
+
+
+async def test_a_service_on_an_item_it_does_not_take_ends_unachievable() -> None:
+    run = await run_instruction(boathouse(), "ottilie", "charge my radio please")
+    assert run.stm.trace.outcome == "unachievable"
+    assert run.actions == ["stop"]
+
+
+@pytest.mark.parametrize(
+    ("text", "thing"),
+    [
+        ("can you bring me a recharger", "recharger"),
+        ("I need a courier bag", "courier bag"),
+        ("get me a dispatcher please", "dispatcher"),
+        ("could you fetch a printer cable", "printer cable"),
+        ("bring me a charge cable", "charge cable"),
+    ],
+)
+def test_a_noun_made_from_a_service_word_is_a_thing_the_office_lacks(text: str, thing: str) -> None:
+    """B: a device named after a service ("recharger"), or a service word as the first noun
+    of a compound, is a thing asked for: declined by name, never a question about the
+    service's item."""
+    frame = _parser().parse(text, "ottilie")
+    assert frame.tasks == [] and frame.question is None
+    assert frame.decline and f"no {thing} in this office" in frame.decline
+
+
+def test_a_service_noun_with_its_object_still_asks_for_the_service() -> None:
+    assert _tasks("can I have a print of my log please", "femi") == [
+        ("print", "log", "femi", "femi")
+    ]

@@ -29,6 +29,11 @@ from assistantx.core.office import Office
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
 _DETERMINERS = english.words("determiners")
+_ARTICLES = frozenset({"a", "an", "the", "some", "any"})
+_A = frozenset({"a", "an", "another"})
+_PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
+    "from_facility_prepositions"
+)
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
 
 
@@ -65,6 +70,7 @@ class MentionReader:
         tokens = lexed.tokens
         mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
         mentions = participle_adjectives(tokens, mentions)
+        mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
         settled = _settled_by_later_sentence(mentions, spaces)
         doubts = self._doubts(tokens, settled)
@@ -80,6 +86,31 @@ class MentionReader:
             word = tokens[m.start].word
             if m.kind == "cue" and word in self.lex.items and before.possessive:
                 out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
+        return out
+
+    def _noun_uses(self, tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+        """ "bring me the couriers", "a courier bag": a service's verb right after an article
+        is a noun (a plural, or the first noun of a compound), not a request for the service;
+        "a scan of my form", "a print please" still name the service's work."""
+        out = list(mentions)
+        for n, m in enumerate(out):
+            word = tokens[m.start].word
+            if m.kind != "cue" or m.end - m.start != 1 or m.start == 0:
+                continue
+            if word not in self.lex.operation_words or not language.is_noun(word):
+                continue
+            after = tokens[m.end].word if m.end < len(tokens) else ""
+            plural = word not in language.lemmas(word)["NOUN"]  # "the couriers"
+            compound = bool(after) and after not in COMMON and language.is_noun(after)
+            if tokens[m.start - 1].word in _ARTICLES and (plural or compound):
+                out[n] = Mention("word", m.start, m.end, (word,), False, m.text)
+        for n, m in enumerate(out):
+            # "bring me a binder", "a printer cable": a thing asked for by a name a facility
+            # also has, never the facility's service; "on a charging shelf" is the place
+            if m.kind != "facility" or m.start < 1 or tokens[m.start - 1].word not in _A:
+                continue
+            if m.start < 2 or tokens[m.start - 2].word not in _PLACE_PREPOSITIONS:
+                out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
         return out
 
     def _destination_from(self, tokens: Sequence[Token]) -> int | None:
