@@ -10,7 +10,8 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
-from helpers.boathouse import boathouse
+from assistantx.core.office import parse_office
+from helpers.boathouse import boathouse, raw_boathouse
 
 
 @functools.cache
@@ -250,4 +251,35 @@ def test_a_noun_made_from_a_service_word_is_a_thing_the_office_lacks(text: str, 
 def test_a_service_noun_with_its_object_still_asks_for_the_service() -> None:
     assert _tasks("can I have a print of my log please", "femi") == [
         ("print", "log", "femi", "femi")
+    ]
+
+
+def _with_a_duplicator() -> InstructionParser:
+    """The boathouse with a light box that traces forms (a product from a physical item)."""
+    raw = raw_boathouse()
+    raw["item_types"].append({"id": "tracing", "name": "tracing", "kind": "product"})
+    raw["operations"].append(
+        {"id": "trace", "name": "trace", "verbs": ["trace"], "input": "form", "product": "tracing"}
+    )
+    raw["facilities"].append(
+        {
+            "id": "light_box",
+            "name": "light box",
+            "location": "tack_room",
+            "operations": ["trace"],
+            "guards": ["rune"],
+        }
+    )
+    return InstructionParser(parse_office(raw, "boathouse with a light box"))
+
+
+@pytest.mark.parametrize(
+    "text", ["put my waiver in the light box", "take my form to the light box", "trace my form"]
+)
+def test_an_item_taken_to_a_facility_that_makes_something_from_it_asks_for_that(
+    text: str,
+) -> None:
+    frame = _with_a_duplicator().parse(text, "bram")
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("copy", "form", "bram", "bram")
     ]

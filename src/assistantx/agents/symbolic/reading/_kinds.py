@@ -170,11 +170,11 @@ class TaskReader:
             if m.id == self.copy:
                 cues.add("copy")
         facilities = [m.id for m in clause.mentions if m.kind == "facility"]
+        facilities_said = [m for m in clause.mentions if m.kind == "facility"]
         treating = [
             m
-            for m in clause.mentions
-            if m.kind == "facility"
-            and any(
+            for m in facilities_said
+            if any(
                 self.office.operation(op).shape(self.office) == "treat"
                 for op in self.office.facility(m.id).operations
             )
@@ -188,6 +188,22 @@ class TaskReader:
         # "bring me Bram's headlamp from the charging shelf": the facility is where it is
         if any(word_before(m) not in _FROM_FACILITY for m in treating):
             cues.add("heat")
+
+        # "put my contract in the scanner": a physical item taken to a facility that makes
+        # something from it asks for that (one that also prints leaves it open: ask)
+        def shapes(m: Mention) -> set[OperationShape]:
+            return {
+                self.office.operation(op).shape(self.office)
+                for op in self.office.facility(m.id).operations
+            }
+
+        if any(
+            word_before(m) in _TO_FACILITY
+            and "transform" in shapes(m)
+            and "render" not in shapes(m)
+            for m in facilities_said
+        ):
+            cues.add("copy")
         # "put my headlamp on the charging shelf": the item goes *to* the facility
         treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
         items = [m for m in items if m.id not in (self.printout, self.copy)]

@@ -169,6 +169,8 @@ class InstructionParser:
                 ops = fits
             if len(ops) > 1 and t.operation is None:
                 said = [op for op in ops if self._op_words[op.id] & words]
+                if not said:  # "put my contract in the scanner": the facility's own service
+                    said = [op for op in ops if op.id in facility_ops]
                 if len(said) != 1:
                     names = " or ".join(op.name for op in ops)
                     return TaskFrame(
