@@ -80,6 +80,13 @@ def test_a_participle_before_the_item_describes_it(
     assert _tasks(text, "bram") == [wanted]
 
 
+@pytest.mark.parametrize("text", ["bring me the printed log", "bring me my printed spreadsheet"])
+def test_an_office_service_participle_still_asks_for_its_product(text: str) -> None:
+    """Only a person's service (a signature) is an adjective there; "the printed log" is
+    still the print of the requester's log."""
+    assert _tasks(text, "femi") == [("print", "log", "femi", "femi")]
+
+
 @pytest.mark.parametrize(
     "text",
     [

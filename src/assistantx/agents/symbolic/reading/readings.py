@@ -25,12 +25,14 @@ from assistantx.agents.symbolic.reading.lexicon import (
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language
 from assistantx.core.office import Office
+from assistantx.core.task_schema import PERSON_KINDS
 
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
 _DETERMINERS = english.words("determiners")
 _ARTICLES = frozenset({"a", "an", "the", "some", "any"})
 _A = frozenset({"a", "an", "another"})
+_PERSON_KINDS = frozenset(PERSON_KINDS)
 _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
@@ -210,13 +212,15 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
 
 
 def participle_adjectives(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
-    """ "send the signed form to Kasia": a task word's past participle between a determiner
-    (or a possessive) and the item it describes is an adjective, a plain word; the request is
-    the sentence's own verb, not that task."""
+    """ "send the signed form to Kasia": a person-service's past participle between a
+    determiner (or a possessive) and the item it describes is an adjective, a plain word; the
+    request is the sentence's own verb, not that service."""
     out = list(mentions)
     for n, m in enumerate(out[:-1]):
         if m.kind != "cue" or m.end - m.start != 1 or out[n + 1].kind != "item":
             continue
+        if not set(m.ids) <= _PERSON_KINDS:
+            continue  # "the printed report": an office service's product, read as before
         if out[n + 1].start != m.end or m.start == 0:
             continue
         before = tokens[m.start - 1]
