@@ -172,6 +172,18 @@ def is_finite_verb(word: str) -> bool:
     return False
 
 
+@functools.cache
+def is_past_participle(word: str) -> bool:
+    """A past participle of a verb ("signed", "bound", "stamped"): before a noun it describes
+    the thing ("the signed form"), it does not ask for the verb's work."""
+    for lemma in verb_lemmas(word):
+        forms = getAllInflections(lemma, upos="VERB")
+        # the dictionary lists a participle only where it differs from the past ("bound")
+        if word in (forms.get("VBN") or forms.get("VBD", ())):
+            return True
+    return False
+
+
 def is_stance_adverb(word: str) -> bool:
     """A manner-of-speaking adverb ("honestly", "frankly", "seriously"): one the dictionary
     knows only as an adverb, formed with -ly. At the head of a sentence it is the speaker's

@@ -143,7 +143,9 @@ def refusal_summary(office: Office, result: ActionResult, requester: str) -> str
     action: Action = result.action
     what = _failed_action_in_words(office, action)
     contact = getattr(action, "contact", None) or getattr(action, "target", None)
-    who = _person_or_group_name(office, contact) if isinstance(contact, str) else "they"
+    who = (
+        wording.person_name(office, contact, unknown="them") if isinstance(contact, str) else "they"
+    )
     item = getattr(action, "item", None) or getattr(action, "file", None)
     if isinstance(item, str):
         type_id, _, owner = item.partition(":")

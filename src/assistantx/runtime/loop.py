@@ -368,10 +368,7 @@ class InstructionRunner:
         """End, in words, an instruction whose reasoner chose again an action the guard
         refused with nothing new since (the second try is not sent)."""
         reason = f"{action.signature()} was refused before and nothing has changed since"
-        step.results.append(self._refused(action, reason))
-        await self._emit(
-            stm, "action_result", step.index, result=step.results[-1].model_dump(mode="json")
-        )
+        await self._refuse(stm, step, action, reason)
         logger.info("instruction %s: a refused action chosen again; ending", stm.instruction_id)
         await self._finish(
             stm, "failed", refusal_summary(self.executor.ctx.office, refused, stm.requester)

@@ -19,6 +19,9 @@ from assistantx.core.office import Office, OperationShape
 from assistantx.core.task_schema import FILE_KIND, Task
 
 _SEND_WORDS = english.words("send_words")
+# The prepositions that take an item to a facility ("on the charging shelf", "into the oven").
+_TO_FACILITY = english.words("to_facility_prepositions")
+_FROM_FACILITY = english.words("from_facility_prepositions")
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
 
@@ -42,6 +45,7 @@ class Scene:
     refers: bool  # "it", "them": the clause points back
     seal_tool: str | None = None  # the office's item type that stamps (ItemType.seals)
     file_type: str | None = None  # the office's electronic file type
+    treat_asked: bool = False  # a treat service's verb, or an item put at its facility
 
     @property
     def recipient(self) -> str:
@@ -91,10 +95,14 @@ def _seal(s: Scene) -> Task:
 
 
 def _heat(s: Scene) -> Task:
+    # an office's treat service may work on any belonging ("charge my headlamp"), not only
+    # on a personal one: the clause's first physical object, when the service is asked for
+    # by its verb or by taking the item to the facility that offers it
+    thing = s.doc or (s.physical[0] if s.physical and s.treat_asked else None)
     return Task(
         kind="heat",
-        item=s.doc.id if s.doc else None,
-        owner=s.owner(s.doc) or s.requester,
+        item=thing.id if thing else None,
+        owner=s.owner(thing) or s.requester,
         recipient=s.recipient,
     )
 
@@ -162,12 +170,42 @@ class TaskReader:
             if m.id == self.copy:
                 cues.add("copy")
         facilities = [m.id for m in clause.mentions if m.kind == "facility"]
-        if any(
-            self.office.operation(op).shape(self.office) == "treat"
-            for f in facilities
-            for op in self.office.facility(f).operations
-        ):
+        facilities_said = [m for m in clause.mentions if m.kind == "facility"]
+        treating = [
+            m
+            for m in facilities_said
+            if any(
+                self.office.operation(op).shape(self.office) == "treat"
+                for op in self.office.facility(m.id).operations
+            )
+        ]
+        before = {b.start: a for a, b in zip(clause.mentions, clause.mentions[1:], strict=False)}
+
+        def word_before(m: Mention) -> str:
+            w = before.get(m.start)
+            return w.ids[0] if w is not None and w.kind == "word" else ""
+
+        # "bring me Bram's headlamp from the charging shelf": the facility is where it is
+        if any(word_before(m) not in _FROM_FACILITY for m in treating):
             cues.add("heat")
+
+        # "put my contract in the scanner": a physical item taken to a facility that makes
+        # something from it asks for that (one that also prints leaves it open: ask)
+        def shapes(m: Mention) -> set[OperationShape]:
+            return {
+                self.office.operation(op).shape(self.office)
+                for op in self.office.facility(m.id).operations
+            }
+
+        if any(
+            word_before(m) in _TO_FACILITY
+            and "transform" in shapes(m)
+            and "render" not in shapes(m)
+            for m in facilities_said
+        ):
+            cues.add("copy")
+        # "put my headlamp on the charging shelf": the item goes *to* the facility
+        treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
         items = [m for m in items if m.id not in (self.printout, self.copy)]
         files = [m for m in items if self.kinds[m.id] == "electronic"]
         personal = [m for m in items if self.kinds[m.id] == "personal"]
@@ -199,6 +237,7 @@ class TaskReader:
             refers,
             self.office.seal_tool(),
             self.office.file_type(),
+            treat_asked,
         )
 
     def tasks(

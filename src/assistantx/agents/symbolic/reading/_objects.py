@@ -9,6 +9,8 @@ clause say when, what for, or where, and must never become tasks of their own:
 - a purpose clause after the object: "a book *to read* on the train", "a pen *to sign my
   contract* with" (a purpose verb with an object of its own is not the request either, so its
   task word does not count; "take my contract to Zhang *to sign*" keeps it);
+- a reason clause after the object: "a radio *because there's no money for new headlamps*";
+- a statement about an owned item after the object: "a radio *as my headlamp is dying*";
 - a container or measure word before "of": "a *cup of* coffee" is coffee.
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
@@ -31,6 +33,9 @@ TIME_PREPOSITIONS = english.words("time_prepositions")
 # form"), "from"/"to"/"by" (people's roles).
 MODIFIER_PREPOSITIONS = english.words("object_modifier_prepositions")
 DETERMINERS = english.words("determiners")
+# Conjunctions that open a reason clause: what it names explains the request, never joins it.
+REASON_CONJUNCTIONS = english.words("reason_conjunctions")
+STATE_VERBS = english.words("state_verbs")
 
 
 def modifiers(
@@ -48,7 +53,15 @@ def modifiers(
         if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(mentions, n):
             in_purpose = True
             continue
+        asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
+        if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and asked:
+            in_purpose = True  # "... because there's no money for new stopwatches": context
+            continue
         if m.kind != "item":
+            continue
+        if asked and _subject_of_state(tokens, mentions, n):
+            in_purpose = True  # "..., as my headlamp is dying": a reason said as a statement
+            out.add(m.start)
             continue
         if _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
             out.add(m.start)
@@ -69,6 +82,15 @@ def _purpose(mentions: Sequence[Mention], n: int) -> bool:
     if nxt.kind == "cue":
         return any(m.kind == "item" for m in mentions[n + 2 :])
     return False
+
+
+def _subject_of_state(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """ "my headlamp is dying": an owned item followed by a state verb is the subject of a
+    statement about it, not an object of the request."""
+    m = mentions[n]
+    before = mentions[n - 1] if n else None
+    owned = before is not None and before.possessive and before.end == m.start
+    return owned and m.end < len(tokens) and tokens[m.end].word in STATE_VERBS
 
 
 def _time_phrase(tokens: Sequence[Token], m: Mention) -> bool:

@@ -89,6 +89,9 @@ class FrameReader:
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
+            # "print my log. I need the spreadsheet for the meeting": the item a task already
+            # works on for that person, named again as what they need, is context
+            made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
@@ -107,6 +110,21 @@ class FrameReader:
         question = self._uncovered(objects, tasks) or self._check(tasks, requester)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
+        )
+
+    def _restates(self, earlier: Task, task: Task) -> bool:
+        """Whether ``task`` only names again, for the same person, the item ``earlier``
+        already works on (its file, its item): a purpose or a reason, not a new errand. A
+        task that moves the item on to someone else, or someone else's, is new."""
+        if earlier.recipient != task.recipient or earlier.kind == task.kind or task.item is None:
+            return False
+        if task.kind == "send_file":
+            return task.owner == task.recipient and self._covers(earlier, task.item)
+        return (
+            task.kind == "transfer"
+            and task.owner in (None, task.recipient)
+            and earlier.item == task.item
+            and task_kinds.works_on_item(earlier.kind)
         )
 
     @staticmethod

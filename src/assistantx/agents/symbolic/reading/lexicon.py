@@ -229,6 +229,8 @@ class Lexicon:
             or language.zipf(word) >= language.COMMON_ZIPF
         ):
             return word
+        if any(_agent_noun(word, cue) for cue in self.operation_words):
+            return word  # "recharger": a device named after the service, not the service
         if verb_slot:
             verbs = language.closest(word, self.cue_words)
             if len(verbs) == 1 or (verbs and _one_verb(verbs)):  # "print" or "printed"
@@ -476,6 +478,14 @@ class Lexicon:
         said = [tokens[k].text for k in range(start, end)]
         said[i - start] = said[i - start].lower()
         return " ".join(said)
+
+
+def _agent_noun(word: str, verb: str) -> bool:
+    """Whether ``word`` is a noun made from ``verb`` with -er/-or ("charger", "recharger",
+    "shredder", "dispatchers"): the thing or person that does it."""
+    stem = word.removesuffix("s")
+    base = verb.removesuffix("e")
+    return any(stem == f"{b}{suffix}" for b in (base, verb + verb[-1:]) for suffix in ("er", "or"))
 
 
 def _one_verb(forms: list[str]) -> bool:

@@ -30,9 +30,11 @@ from __future__ import annotations
 import copy
 import dataclasses
 import re
+from collections.abc import Sequence
 
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.planning import describe
+from assistantx.agents.symbolic.reading._objects import REASON_CONJUNCTIONS, modifiers
 from assistantx.agents.symbolic.reading.destination import Outside
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
@@ -40,16 +42,28 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
-from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading, inflections
+from assistantx.agents.symbolic.reading.lexicon import (
+    COMMON,
+    Lexed,
+    Lexicon,
+    Mention,
+    Reading,
+    inflections,
+)
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
-from assistantx.core import language
-from assistantx.core.office import Office
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, Evidence, Task, TaskFrame, TaskKind
 from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 _WHERE_TO = "Where should I "  # the question for a send-out service's place outside
+# The words of the phrases that point back to an item named before ("another", "a few more").
+_BACK_WORDS = english.words("another_one")
+# Words that end the name of a thing asked for: a reason, a courtesy ("a dispatcher please").
+_THING_ENDS = REASON_CONJUNCTIONS | english.words("polite") | {"as"}
 
 __all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
@@ -105,7 +119,7 @@ class InstructionParser:
         if frame.understood:
             frame = self._with_operations(frame, lexed, readings.outside)
         if frame.question == NOT_UNDERSTOOD:
-            unknown = self._unknown_item(lexed)
+            unknown = self._unknown_item(readings.tokens, readings.mentions)
             if unknown is not None:
                 frame = TaskFrame(requester=requester, decline=unknown)
         said = screened.text.strip()
@@ -115,14 +129,21 @@ class InstructionParser:
             frame = TaskFrame(requester=requester, question=f"Shall I {what}?")
         return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
 
-    def _unknown_item(self, lexed: Lexed) -> str | None:
+    def _unknown_item(self, tokens: Sequence[Token], mentions: Sequence[Mention]) -> str | None:
         """ "bring me a tape measure": a fetch of a thing no one here has, said in words."""
-        tokens, mentions = lexed.tokens, lexed.mentions
         cue = next((m for m in mentions if m.kind == "cue" and set(m.ids) & {"give", "make"}), None)
-        if cue is None or any(m.kind in ("item", "facility") for m in mentions):
+        context = modifiers(tokens, mentions)  # "... because my headlamp is dying"
+        if cue is None or any(m.kind == "item" and m.start not in context for m in mentions):
+            return None
+        if any(m.kind == "facility" for m in mentions):
             return None
         words = [t.word for t in tokens[cue.end :]]
+        # the thing ends where a reason starts: "a power bank as my headlamp is dying"
+        ends = [n for n, w in enumerate(words) if w in _THING_ENDS]
+        words = words[: ends[0]] if ends else words
         thing = self.screen.unknown_thing(words)
+        if thing and set(thing.split()) <= _BACK_WORDS:
+            return None  # "bring me a few": how many of something not named, so ask what
         if not thing or not all(language.lemmas(w) or language.zipf(w) > 0 for w in thing.split()):
             return None
         return (
@@ -136,12 +157,34 @@ class InstructionParser:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say."""
         words = {t.word for t in lexed.tokens}
+        facility_ops = {
+            op
+            for m in lexed.mentions
+            if m.kind == "facility"
+            for op in self.office.facility(m.ids[0]).operations
+        }
         tasks: list[Task] = []
         for t in frame.tasks:
             shape = _KIND_SHAPE.get(t.kind)
             ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
+            if shape == "treat" and ops and t.item is not None and t.operation is None:
+                # the service asked for by its verb, else at the facility named, else any
+                asked = [op for op in ops if self._op_words[op.id] & words] or [
+                    op for op in ops if op.id in facility_ops
+                ]
+                asked = asked or ops
+                fits = [op for op in asked if op.input == t.item]
+                if not fits:  # "charge my radio" where only headlamps are charged
+                    return TaskFrame(
+                        requester=frame.requester, decline=self._cannot_treat(asked, t.item)
+                    )
+                if len(fits) == 1 and len(ops) > 1:  # named where several share the shape
+                    t = t.model_copy(update={"operation": fits[0].id})
+                ops = fits
             if len(ops) > 1 and t.operation is None:
                 said = [op for op in ops if self._op_words[op.id] & words]
+                if not said:  # "put my contract in the scanner": the facility's own service
+                    said = [op for op in ops if op.id in facility_ops]
                 if len(said) != 1:
                     names = " or ".join(op.name for op in ops)
                     return TaskFrame(
@@ -163,6 +206,20 @@ class InstructionParser:
                 t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
+
+    def _cannot_treat(self, ops: list[Operation], item: str) -> str:
+        """Why a service the office offers cannot be run on this item, with what it is for."""
+        asked = " or ".join(dict.fromkeys(op.name for op in ops))
+        thing = self._item_name(item)
+        fits = [
+            f"{op.name} {language.plural(self._item_name(op.input))}"
+            for op in ops
+            if op.input is not None
+        ]
+        return (
+            f"Sorry, I can't {asked} {_article(thing)} {thing} here: I can only "
+            f"{' and '.join(fits)}."
+        )
 
     def _evidence(self, task: Task, said: str) -> Evidence:
         """A task in words: what it does, with whose item, for whom."""
@@ -253,3 +310,7 @@ class InstructionParser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def _article(noun: str) -> str:
+    return "an" if noun[:1].lower() in "aeiou" else "a"

@@ -23,13 +23,18 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Mention,
 )
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
-from assistantx.core import english, language
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
 
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
 _DETERMINERS = english.words("determiners")
+_ARTICLES = frozenset({"a", "an", "the", "some", "any"})
+_A = frozenset({"a", "an", "another"})
+_PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
+    "from_facility_prepositions"
+)
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
 
 
@@ -71,7 +76,8 @@ class MentionReader:
     def read(self, lexed: Lexed) -> Readings:
         tokens = lexed.tokens
         mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
-        mentions = participles(tokens, mentions)
+        mentions = participle_adjectives(tokens, mentions)
+        mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
         outside = find_outside(tokens, spaces, self._sends_out)
         if outside is not None:
@@ -113,6 +119,31 @@ class MentionReader:
             word = tokens[m.start].word
             if m.kind == "cue" and word in self.lex.items and before.possessive:
                 out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
+        return out
+
+    def _noun_uses(self, tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+        """ "bring me the couriers", "a courier bag": a service's verb right after an article
+        is a noun (a plural, or the first noun of a compound), not a request for the service;
+        "a scan of my form", "a print please" still name the service's work."""
+        out = list(mentions)
+        for n, m in enumerate(out):
+            word = tokens[m.start].word
+            if m.kind != "cue" or m.end - m.start != 1 or m.start == 0:
+                continue
+            if word not in self.lex.operation_words or not language.is_noun(word):
+                continue
+            after = tokens[m.end].word if m.end < len(tokens) else ""
+            plural = word not in language.lemmas(word)["NOUN"]  # "the couriers"
+            compound = bool(after) and after not in COMMON and language.is_noun(after)
+            if tokens[m.start - 1].word in _ARTICLES and (plural or compound):
+                out[n] = Mention("word", m.start, m.end, (word,), False, m.text)
+        for n, m in enumerate(out):
+            # "bring me a binder", "a printer cable": a thing asked for by a name a facility
+            # also has, never the facility's service; "on a charging shelf" is the place
+            if m.kind != "facility" or m.start < 1 or tokens[m.start - 1].word not in _A:
+                continue
+            if m.start < 2 or tokens[m.start - 2].word not in _PLACE_PREPOSITIONS:
+                out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
         return out
 
     def _doubts(
@@ -195,16 +226,21 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
     return out
 
 
-def participles(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
-    """Task words used as an item's adjective ("send out *the signed* drawing", "my printed
-    slides") turned into plain words: they say what was done to it, not what to do."""
+def participle_adjectives(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """ "send the signed form to Kasia": a person-service's past participle between a
+    determiner (or a possessive) and the item it describes is an adjective, a plain word; the
+    request is the sentence's own verb, not that service."""
     out = list(mentions)
     for n, m in enumerate(out[:-1]):
         if m.kind != "cue" or m.end - m.start != 1 or out[n + 1].kind != "item":
             continue
-        word = tokens[m.start].word
-        before = tokens[m.start - 1].word if m.start > 0 else ""
-        inflected = word not in language.verb_lemmas(word) and bool(language.verb_lemmas(word))
-        if before in _DETERMINERS and inflected and out[n + 1].start == m.end:
-            out[n] = Mention("word", m.start, m.end, (word,), False, m.text)
+        if not set(m.ids) <= set(task_kinds.person_kinds()):
+            continue  # "the printed report": an office service's product, read as before
+        if out[n + 1].start != m.end or m.start == 0:
+            continue
+        before = tokens[m.start - 1]
+        if before.word not in _DETERMINERS and not before.possessive:
+            continue
+        if language.is_past_participle(tokens[m.start].word):
+            out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
     return out

@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading._objects import modifiers
-from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs, content
 from assistantx.core import language
 from assistantx.core.english import entries_of
@@ -587,6 +587,8 @@ class RequestScreen:
                 people = {p.ids for p in mentions[:n] if p.kind == "person" and len(p.ids) == 1}
                 if len(people) == 1:  # "Yang said I could borrow his book"
                     whose = f"{self.office.person(next(iter(people))[0]).name}'s"
+            elif (holder := _holder(mentions, n, words)) is not None:
+                whose = f"{self.office.person(holder).name}'s"  # "Bram has a stopwatch"
             else:
                 for k in range(len(words) - 1):
                     if words[k : k + 2] == ["belongs", "to"]:
@@ -798,6 +800,8 @@ class RequestScreen:
                 continue
             if language.zipf(noun) < 3 or noun in ("one", "bit", "lot"):
                 continue
+            if _compound_head(text[match.end() :]):
+                continue  # "a power bank": a thing of its own, not a quantity of the item
             evidence = [Evidence(words=match.group(0), meaning=f"a {noun} of {thing}")]
             return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
         return text, []
@@ -1077,6 +1081,30 @@ def _possessive_of_name(text: str, word: str, office_words: frozenset[str]) -> b
     if not word.endswith("s") or word[:-1] not in office_words:
         return False
     return re.search(rf"\b{re.escape(word[:-1])}['’]s\b", text, re.IGNORECASE) is not None
+
+
+_POSSESSION_VERBS = english_words("possession_verbs")
+
+
+def _holder(mentions: list[Mention], n: int, words: list[str]) -> str | None:
+    """The one person a statement says has the item ``mentions[n]`` ("Bram has a stopwatch",
+    "Femi's got a spare radio"): a later "it" is theirs, not another of its kind."""
+    people = [m for m in mentions[:n] if m.kind == "person" and len(m.ids) == 1]
+    if len(people) != 1:
+        return None
+    between = words[people[0].end : mentions[n].start]
+    verb = between[:1] if not people[0].possessive else ["has"]  # "Femi's got": has got
+    return people[0].ids[0] if verb and verb[0] in _POSSESSION_VERBS else None
+
+
+def _compound_head(after: str) -> bool:
+    """Whether the word right after a noun is a noun that heads a compound with it ("a power
+    *bank*"), not a time word or a courtesy ("a box today", "a box please")."""
+    nxt = language.words(after)[:1]
+    if not nxt or not after[:1].isspace():
+        return False
+    found = language.lemmas(nxt[0])
+    return "NOUN" in found and "ADV" not in found
 
 
 def _has_words(text: str) -> bool:
