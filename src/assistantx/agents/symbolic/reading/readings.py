@@ -80,6 +80,10 @@ class MentionReader:
         mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
         outside = find_outside(tokens, spaces, self._sends_out)
+        if outside is not None and not any(
+            m.kind == "cue" and m.start == outside.verb_start for m in mentions
+        ):
+            outside = None  # "a courier bag": the service's word used as a noun, not its verb
         if outside is not None:
             mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
