@@ -386,6 +386,8 @@ class RequestScreen:
         said = tuple(w for w in piece.words if w not in ("oh", "ok", "okay", "wait", "hmm"))
         if piece.start > 0 and said in self.en.elliptical_withdrawals:
             return Finding("withdrawn", piece, "withdraws what was asked before")
+        if piece.start > 0 and not piece.asks and self.acts.had_already(piece.words):
+            return Finding("withdrawn", piece, "what was asked for is had already")
         return None
 
     def _note(self, piece: Piece, requester: str) -> Finding | None:
@@ -405,6 +407,15 @@ class RequestScreen:
     def _condition(self, piece: Piece, requester: str) -> Finding | None:
         """ "if Hal ever needs a ruler, Ida has one": a condition says when, never what to do;
         with no request beside it the message is information, answered in words."""
+        deferred = self.acts.defers(_words(self._text))
+        put_off = self.acts.defers(piece.words) and not self.acts.imperative(piece.words)
+        if put_off or self.acts.future_need(piece.words, deferred):
+            return Finding(
+                "condition",
+                piece,
+                "a need that may come later, not a request for now",
+                message="Noted; tell me when you need it and I'll bring it then.",
+            )
         if not self.acts.condition(piece.words, piece.asks):
             return None
         named = tuple(f"person:{p}" for p in self._named(piece.text, "person")[:1])

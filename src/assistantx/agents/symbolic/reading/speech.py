@@ -59,6 +59,17 @@ _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
 _BORROW = english.words("borrow_words")
+_DONE_VERBS = english.words("done_verbs")
+_DONE_MARKERS = tuple(tuple(p.split()) for p in english.entries("done_markers"))
+_DECLINING_THANKS = tuple(tuple(p.split()) for p in english.entries("declining_thanks"))
+# Another one of what was asked for: "X brought me *one*", "Ida lent me *hers*"
+_ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
+# The errand itself, said again: "someone already did *it*"
+_THE_ERRAND = frozenset({"it", "that", "this"})
+_HAVE_NOW = frozenset({"have", "ive", "weve", "got"})
+_POSSIBLY = english.words("possibility_words")
+_DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
+_SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ill", "im", "ive", "wed", "well"})
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
 _SELF_PLANS = frozenset({"ill"})
@@ -147,6 +158,55 @@ class SpeechActs:
                 rest = w[len(head) :]
                 return not rest or not self._imperative(rest)
         return False
+
+    def had_already(self, words: list[str]) -> bool:
+        """ "oh actually Ida just brought me one", "someone else already did it", "thanks
+        anyway": what was asked for is had or done already, told after the request, so the
+        request is withdrawn. A past task word (or "did", "found", "got") for the speaker or
+        about "it", marked as news ("already", "actually") or said of "one"/"it"; a later
+        fact with no such mark ("fetch the copies, Priya made them for me") is context."""
+        w = [x for x in words if x not in ("oh", "ah", "ok", "okay", "well", "so")]
+        if any(_starts(w[n:], p) for n in range(len(w)) for p in _DECLINING_THANKS):
+            return True
+        if not w or self._imperative(w) or w[0] in _MODALS or w[0] in _AUX - {"did"}:
+            return False  # "could you ...", "did Ida bring one?" (a question) is no news
+        marked = any(_starts(w[n:], p) for n in range(len(w)) for p in _DONE_MARKERS)
+        mine = bool(set(w) & (_FOR_SPEAKER | {"us", "we", "weve"}))
+        for n, x in enumerate(w):
+            if not language.is_past_verb(x) and x not in _HAVE_NOW:
+                continue
+            lemmas = language.verb_lemmas(x) or {"have"}
+            if not lemmas & (self.lex.cue_words | _DONE_VERBS):
+                continue
+            after = set(w[n + 1 : n + 4])
+            if mine and (marked or after & _ONE_MORE):
+                return True  # "Ida just brought me one", "I already have one"
+            if marked and after & _THE_ERRAND:
+                return True  # "someone else already did it"
+        return False
+
+    @staticmethod
+    def defers(words: list[str]) -> bool:
+        """ "I'll let you know", "will tell you when": the asking is put off."""
+        return any(_starts(words[n:], p) for n in range(len(words)) for p in _DEFERRALS)
+
+    def future_need(self, words: list[str], deferred: bool) -> bool:
+        """ "I might need Hal's ruler later", "may need a calculator if ...": the speaker's
+        need, only possible or for later, is not a request for now; with the asking put off
+        in the same message ("..., I'll let you know") a later want is one too ("could I
+        borrow it later? I'll let you know"). A command is always read as one."""
+        w = content(words)
+        if not w or self._imperative(w):
+            return False
+        at = next((n for n, x in enumerate(w[:7]) if x in _NEED or x in _BORROW), None)
+        if at is None:
+            return False
+        before = w[:at]
+        if before and not (set(before) & (_SPEAKER_SUBJECTS | _POSSIBLY | _MODALS)):
+            return False  # "Ida might need ...": someone else's, read as a need of theirs
+        if set(before) & _POSSIBLY and not (set(before) & _YOU):
+            return True
+        return deferred and self.later(w)
 
     def note(self, words: list[str]) -> list[str] | None:
         """ "note this down: the tape ran out", "for the record, ...": the words of a note
@@ -410,6 +470,10 @@ class SpeechActs:
                 if any(after.startswith(f) for f in self.lex.facilities):
                     return True
         return False
+
+    def imperative(self, words: list[str]) -> bool:
+        """A command: a task word first, after the openers ("please just bring ...")."""
+        return self._imperative(content(words))
 
     def _imperative(self, w: list[str]) -> bool:
         k = 0

@@ -1,0 +1,101 @@
+"""Speech acts on an office nobody wrote the reader for (``_survey_office``), by the failure
+classes of blind round 6 (never its sentences): only a request moves the robot."""
+
+from __future__ import annotations
+
+import pytest
+from _survey_office import office, parser
+from symbolic_run import run_instruction
+
+from assistantx.sim.office import SimOffice
+
+REQUESTER = "tomasz"
+
+
+def _read(
+    text: str,
+) -> tuple[list[tuple[str, str | None, str | None, str]], str | None, str | None]:
+    frame = parser().parse(text, REQUESTER)
+    tasks = [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
+    return tasks, frame.question, frame.decline
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could you brew me a cuppa? oh actually Hedda just brought me one, thanks anyway",
+        "Make me a cup of tea please. Oh actually Wren already made me one, thanks anyway!",
+        "copy my report please... oh actually Priya already did it, thanks anyway",
+        "bring me a ruler - oh actually Wren just lent me hers",
+        "can I get a cup of tea? oh actually someone else already got me one",
+        "bring me a ruler. oh actually I already have one",
+    ],
+)
+def test_a_request_had_already_from_someone_else_is_withdrawn(text: str) -> None:
+    tasks, question, decline = _read(text)
+    assert tasks == [] and question is None, (tasks, question)
+    assert decline and decline.startswith("OK"), decline
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        # what someone did, told as context, or news that is not the thing asked for
+        ("bring Hedda a ruler, she just asked for one", [("transfer", "ruler", None, "hedda")]),
+        ("bring me a ruler, Wren just lent hers to Bill", [("transfer", "ruler", None, REQUESTER)]),
+        (
+            "Wren lent me her umbrella, please return it to her; it's on my desk",
+            [("transfer", "umbrella", "wren", "wren")],
+        ),
+    ],
+)
+def test_news_that_does_not_have_the_thing_leaves_the_request(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted
+
+
+async def test_a_product_had_already_is_never_made() -> None:
+    run = await run_instruction(
+        office(),
+        REQUESTER,
+        "could you make me a cup of tea? oh actually Hedda just brought me one, thanks anyway",
+    )
+    assert run.sim.world.holder == SimOffice(office()).world.holder
+    assert run.actions == [] or not any("operate" in a for a in run.actions), run.actions
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I might need to borrow Ciaran's ruler later, I'll let you know",
+        "might need a calculator later if Bill is out, will let you know",
+        "I may need Hedda's laser measure tomorrow if the client agrees; I'll let you know",
+        "I'll probably need a calculator later",
+        "Could I maybe borrow Ciaran's ruler later? I'll let you know",
+    ],
+)
+def test_a_need_that_may_come_later_is_answered_not_met_now(text: str) -> None:
+    tasks, question, decline = _read(text)
+    assert tasks == [] and question is None, (tasks, question)
+    assert decline and "tell me when" in decline, decline
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("I need a ruler", [("transfer", "ruler", None, REQUESTER)]),
+        (
+            "can you bring me a ruler? I might need it later",
+            [("transfer", "ruler", None, REQUESTER)],
+        ),
+        (
+            "bring me Ciaran's ruler, I'll let you know if I need more",
+            [("transfer", "ruler", "ciaran", REQUESTER)],
+        ),
+    ],
+)
+def test_a_need_for_now_beside_a_later_one_is_still_read(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted
