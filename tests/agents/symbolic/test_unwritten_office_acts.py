@@ -99,3 +99,26 @@ def test_a_need_for_now_beside_a_later_one_is_still_read(
     text: str, wanted: list[tuple[str, str | None, str | None, str]]
 ) -> None:
     assert _read(text)[0] == wanted
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Can you even carry a cup of tea without spilling it?",
+        "can you actually make tea?",
+        "could you really carry an umbrella up the stairs?",
+        "can you bring me a ruler without dropping it?",
+        "can you even lift a calculator?",
+    ],
+)
+def test_a_doubt_about_what_the_assistant_can_do_is_answered_and_offered(text: str) -> None:
+    tasks, question, _ = _read(text)
+    assert tasks == [], tasks
+    assert question and question.startswith("Yes, I can") and "Shall I" in question, question
+
+
+@pytest.mark.parametrize(
+    "text", ["could you possibly bring me a ruler?", "can you bring me a ruler?"]
+)
+def test_a_polite_request_is_still_one(text: str) -> None:
+    assert _read(text)[0] == [("transfer", "ruler", None, REQUESTER)]

@@ -491,7 +491,19 @@ class RequestScreen:
         facilities = self._named(piece.text, "facility")
         people = self._named(piece.text, "person")
         if len(items) == 1 and not facilities:
-            return self._item_question(piece, items[0], requester)
+            found = self._item_question(piece, items[0], requester)
+            if self.acts.doubts_ability(piece.words) and found.offer:
+                # "can you even carry ...?": yes, said first; the errand only on a yes
+                message = f"Yes, I can do that. {found.message}"
+                return Finding(
+                    found.verdict,
+                    piece,
+                    found.meaning,
+                    message=message,
+                    offer=found.offer,
+                    shall=found.shall,
+                )
+            return found
         if facilities:
             f = self.office.facility(facilities[0])
             where = self.office.location(f.location).name

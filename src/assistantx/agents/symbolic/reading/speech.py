@@ -68,6 +68,7 @@ _ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
 _THE_ERRAND = frozenset({"it", "that", "this"})
 _HAVE_NOW = frozenset({"have", "ive", "weve", "got"})
 _POSSIBLY = english.words("possibility_words")
+_DOUBTS = english.words("doubt_words")
 _DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
 _SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ill", "im", "ive", "wed", "well"})
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
@@ -204,6 +205,8 @@ class SpeechActs:
         before = w[:at]
         if before and not (set(before) & (_SPEAKER_SUBJECTS | _POSSIBLY | _MODALS)):
             return False  # "Ida might need ...": someone else's, read as a need of theirs
+        if before[:1] and before[0] in _MODALS and before[1:2] and before[1] in _FOR_SPEAKER:
+            before = before[2:]  # "may I borrow ...": a polite question, not a "may" of doubt
         if set(before) & _POSSIBLY and not (set(before) & _YOU):
             return True
         return deferred and self.later(w)
@@ -361,6 +364,8 @@ class SpeechActs:
             return "info"  # "will Ray be in tomorrow?"
         if first in _MODALS and second in _YOU and self._ability_only(w[2:]):
             return "info"  # "can you print in colour?": what it can do, nothing to act on
+        if self.doubts_ability(w):
+            return "info"  # "can you even carry a tea without spilling it?"
         if first in _MODALS and (asked or second in ("you", "u", "ya", "i", "we")):
             return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
         if first in _MODALS and second in ("not", "nt"):
@@ -447,6 +452,21 @@ class SpeechActs:
         if self._imperative(w) or set(w) & _WILLING:
             return True
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
+
+    @staticmethod
+    def doubts_ability(words: list[str]) -> bool:
+        """ "can you even carry a tea?", "could you really lift that without dropping it?":
+        a question about what the assistant can do, said with doubt, not a request. Only
+        after "can/could you"; "could you possibly ..." stays a polite request."""
+        w = content(words)
+        if len(w) < 3 or w[0] not in _MODALS or w[1] not in _YOU:
+            return False
+        if w[2] in _DOUBTS:
+            return True
+        return any(
+            a == "without" and b.endswith("ing") and bool(language.verb_lemmas(b))
+            for a, b in itertools.pairwise(w[2:])
+        )
 
     # -- helpers -------------------------------------------------------------------------
     def _ability_only(self, w: list[str]) -> bool:
