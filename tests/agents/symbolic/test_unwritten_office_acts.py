@@ -122,3 +122,37 @@ def test_a_doubt_about_what_the_assistant_can_do_is_answered_and_offered(text: s
 )
 def test_a_polite_request_is_still_one(text: str) -> None:
     assert _read(text)[0] == [("transfer", "ruler", None, REQUESTER)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "wish this place had a kettle upstairs",
+        "wish we had a laser measure here",
+        "shame there's no laser measure in the studio",
+        "pity there's no second copier",
+        "too bad there's no kettle up here",
+        "would be nice to have tape in the studio",
+    ],
+)
+def test_a_regret_about_what_the_place_lacks_is_answered_in_words(text: str) -> None:
+    tasks, question, decline = _read(text)
+    assert tasks == [] and question is None, (tasks, question)
+    assert decline and decline.startswith("Noted"), decline
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("wish me luck, bring me a ruler", [("transfer", "ruler", None, REQUESTER)]),
+        (
+            "shame about the rain, can you bring me Wren's umbrella",
+            [("transfer", "umbrella", "wren", REQUESTER)],
+        ),
+        ("would be nice to have a ruler on my desk", [("transfer", "ruler", None, REQUESTER)]),
+    ],
+)
+def test_a_request_beside_a_regret_or_for_the_speaker_is_still_read(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted

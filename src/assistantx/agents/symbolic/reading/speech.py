@@ -134,6 +134,8 @@ def _hedged(w: list[str]) -> tuple[str, ...] | None:
             for n in (1, 2):
                 if w[len(head) + n : len(head) + n + 1] == ["if"]:
                     return tuple(w[: len(head) + n + 1])
+                if w[len(head) + n : len(head) + n + 2] == ["to", "have"]:
+                    return tuple(w[: len(head) + n + 2])  # "would be nice to have ..."
     return None
 
 
