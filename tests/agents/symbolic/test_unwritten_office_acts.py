@@ -156,3 +156,36 @@ def test_a_request_beside_a_regret_or_for_the_speaker_is_still_read(
     text: str, wanted: list[tuple[str, str | None, str | None, str]]
 ) -> None:
     assert _read(text)[0] == wanted
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "never mind, found the calculator in my drawer, thanks",
+        "bring me a ruler. Never mind! Found the ruler under my desk.",
+        "never mind, found my umbrella in the studio, cheers",
+    ],
+)
+def test_a_withdrawal_with_its_reason_drops_the_request(text: str) -> None:
+    tasks, question, decline = _read(text)
+    assert tasks == [] and question is None, (tasks, question)
+    assert decline and decline.startswith("OK"), decline
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        (
+            "never mind, found the calculator in my drawer, but could you bring me a ruler",
+            [("transfer", "ruler", None, REQUESTER)],
+        ),
+        (
+            "never mind the ruler. bring me a calculator instead",
+            [("transfer", "calculator", None, REQUESTER)],
+        ),
+    ],
+)
+def test_a_request_after_a_withdrawal_and_its_reason_is_read(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted

@@ -243,7 +243,9 @@ class RequestScreen:
         text, corrected = self._corrected(text)
         self._text = text
         self._noting: int | None = None  # where a note began ("note this down: ...")
+        self._withdrawing = False  # a withdrawal was read: what follows may be its reason
         pieces = _pieces(text)
+        self._pieces = pieces
         findings: list[Finding] = []
         for piece in pieces:
             for _, rule in self.RULES:
@@ -380,6 +382,23 @@ class RequestScreen:
 
     # -- rules ---------------------------------------------------------------------------
     def _withdrawn(self, piece: Piece, requester: str) -> Finding | None:
+        found = self._withdrawal(piece)
+        if found is not None:
+            self._withdrawing = True
+            return found
+        told = any(language.is_finite_verb(w) for w in piece.words)
+        if (
+            self._withdrawing
+            and told
+            and not any(self.acts.request(p.words) for p in self._pieces if p.start >= piece.start)
+        ):
+            # "never mind, found the stapler in my drawer, thanks": the reason for it, told as
+            # what happened, not an errand; a request after it ("..., bring me a pen instead")
+            # is read, and so is a bare correction ("no wait, a pencil": asked about)
+            return Finding("withdrawn", piece, "the reason the request is withdrawn")
+        return None
+
+    def _withdrawal(self, piece: Piece) -> Finding | None:
         words = [w for w in piece.words if w not in ("actually", "oh", "ok", "okay", "please")]
         if tuple(words) in self.en.withdraw or self.acts.withdrawal(words):
             return Finding("withdrawn", piece, "withdraws the request")

@@ -418,6 +418,8 @@ class SpeechActs:
             return True  # "found one", "broke it"
         if w[0] in ("got", "found") and w[1:2] and w[1] in ("one", "some", "it", "them"):
             return True  # "got one already"
+        if w[0] == "found" and w[1:2] and w[1] in ("the", "a", "an", "my", "mine", "his", "her"):
+            return True  # "found the stapler in my drawer": a past find, never an errand
         possessive = w[0].endswith("s") and self._named(w[0][:-1])  # "Hal's clipboard snapped"
         if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
             return False
