@@ -189,3 +189,28 @@ def test_a_request_after_a_withdrawal_and_its_reason_is_read(
     text: str, wanted: list[tuple[str, str | None, str | None, str]]
 ) -> None:
     assert _read(text)[0] == wanted
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        (
+            "I hope you don't mind fetching me Ciaran's ruler",
+            [("transfer", "ruler", "ciaran", REQUESTER)],
+        ),
+        ("hope you won't mind brewing me a cuppa", [("produce", "tea", None, REQUESTER)]),
+        (
+            "if you wouldn't mind photocopying my drawing",
+            [("copy", "document", REQUESTER, REQUESTER)],
+        ),
+    ],
+)
+def test_a_request_hedged_as_a_hope_is_read(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted
+
+
+def test_the_speakers_own_willingness_is_no_request() -> None:
+    tasks, question, decline = _read("I don't mind fetching it myself")
+    assert tasks == [] and question is None and decline, (tasks, question)

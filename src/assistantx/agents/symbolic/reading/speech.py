@@ -243,8 +243,8 @@ class SpeechActs:
         if opener is None or asks:
             return False
         rest = w[len(opener) :]
-        if not rest or self._asks_you(rest) or self._imperative(rest):
-            return False  # "if you could bring ...", "if possible, ..." is read on
+        if not rest or self._asks_you(rest) or self._imperative(rest) or self._minded(w):
+            return False  # "if you could bring ...", "if you don't mind printing ..." is read on
         if self._main_clause(rest):
             return False  # "when you're free bring me a ruler": the request after it
         return not (w[0] in _WH and rest[0] in _AUX)  # "when is ...": a question
@@ -334,6 +334,17 @@ class SpeechActs:
             for a, b in itertools.pairwise(w)
         )
 
+    def _minded(self, w: list[str]) -> bool:
+        """ "I hope you don't mind bringing me ...", "if you wouldn't mind fetching ...": a
+        task word as a gerund after "mind", with "you" just before: a request, hedged."""
+        for n in range(1, len(w) - 1):
+            if w[n] != "mind" or not set(w[max(0, n - 4) : n]) & _YOU:
+                continue
+            gerund = w[n + 1]
+            if gerund.endswith("ing") and language.verb_lemmas(gerund) & self.lex.cue_words:
+                return True
+        return False
+
     @staticmethod
     def _asks_you(w: list[str]) -> bool:
         """ "could you ...", "if you could ...": someone is asked to do something."""
@@ -390,6 +401,8 @@ class SpeechActs:
             return False
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
+        if self._minded(w):
+            return False  # "I hope you don't mind bringing me a pen": asked, gently
         pairs = itertools.pairwise(w)
         if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
             return False  # "I was wondering if you could print ..."
@@ -453,7 +466,7 @@ class SpeechActs:
         w = content(words)
         if not w:
             return False
-        if self._imperative(w) or set(w) & _WILLING:
+        if self._imperative(w) or set(w) & _WILLING or self._minded(w):
             return True
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
 
