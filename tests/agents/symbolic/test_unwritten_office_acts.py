@@ -214,3 +214,37 @@ def test_a_request_hedged_as_a_hope_is_read(
 def test_the_speakers_own_willingness_is_no_request() -> None:
     tasks, question, decline = _read("I don't mind fetching it myself")
     assert tasks == [] and question is None and decline, (tasks, question)
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("I have faith in you bring me a ruler", [("transfer", "ruler", None, REQUESTER)]),
+        (
+            "I have every confidence in you please bring me Wren's umbrella",
+            [("transfer", "umbrella", "wren", REQUESTER)],
+        ),
+        (
+            "I'm so grateful to you fetch me the calculator",
+            [("transfer", "calculator", None, REQUESTER)],
+        ),
+        ("🙏🙏 brew me a cuppa", [("produce", "tea", None, REQUESTER)]),
+    ],
+)
+def test_a_request_after_an_aside_in_the_same_sentence_is_read(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I have one copy left",
+        "Hedda brought me a ruler",
+        "thank you so much for bringing me the ruler",
+    ],
+)
+def test_a_statement_or_thanks_with_a_task_word_is_no_request(text: str) -> None:
+    tasks, question, decline = _read(text)
+    assert tasks == [] and question is None and decline, (tasks, question)

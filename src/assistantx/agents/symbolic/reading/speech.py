@@ -67,6 +67,11 @@ _ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
 # The errand itself, said again: "someone already did *it*"
 _THE_ERRAND = frozenset({"it", "that", "this"})
 _HAVE_NOW = frozenset({"have", "ive", "weve", "got"})
+_PREPOSITIONS = frozenset({"in", "to", "for", "with", "on", "of", "at"})
+# What follows a command's verb: "bring *me*", "fetch *the* ...", "copy *my* ..."
+_COMMAND_OBJECTS = frozenset(
+    {"me", "us", "a", "an", "the", "my", "our", "some", "this", "these", "those", "her", "him"}
+)
 _POSSIBLY = english.words("possibility_words")
 _DOUBTS = english.words("doubt_words")
 _DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
@@ -314,8 +319,8 @@ class SpeechActs:
             return Act("thanks", relay=True)  # "say thanks to Wang", "tell Wang thank you"
         if w[:1] == ["thank"] and w[1:2] and w[1] not in _YOU:
             return Act("thanks", relay=True)  # "thank Rich for the clipboard"
-        if asked:
-            return None  # "could you bring ...", "I'd appreciate it if you could ..."
+        if asked or self._command_inside(w):
+            return None  # "could you bring ...", "so grateful to you fetch me ..."
         if set(w[:3]) & _THANKS:
             return Act("thanks")  # "thanks ...", "big thank you for ...", "much appreciated"
         if self._done_for_me(w):
@@ -333,6 +338,34 @@ class SpeechActs:
             and bool({b, *language.verb_lemmas(b)} & self.lex.cue_words)
             for a, b in itertools.pairwise(w)
         )
+
+    def _command_inside(self, w: list[str]) -> bool:
+        """A command after an aside with no comma between ("I have faith in you bring me a
+        ruler", "... in you please bring me ..."): a task word in its bare form, after
+        "please" or after a word that is no subject, modal, "to" or determiner of it, with
+        the speaker or a thing right after it ("bring me", "fetch the", "copy my"); "I have
+        one copy left" has a noun there, not a command."""
+        for k in range(2, len(w) - 1):
+            x, before = w[k], w[k - 1]
+            if x not in self.lex.cue_words or x not in language.verb_lemmas(x):
+                continue
+            aside_ends = before in _YOU and w[k - 2] in _PREPOSITIONS  # "faith in you bring"
+            if (
+                before not in ("please", "pls", "plz", "kindly")
+                and not aside_ends
+                and (
+                    before in _SUBJECT_WORDS
+                    or before in _MODALS
+                    or before in _COMMAND_OBJECTS
+                    or self._named(before)
+                    or before.isdigit()
+                    or before in ("one", "two", "and", "or", "the", "no")
+                )
+            ):
+                continue
+            if w[k + 1] in _COMMAND_OBJECTS or self._named(w[k + 1].removesuffix("s")):
+                return True
+        return False
 
     def _minded(self, w: list[str]) -> bool:
         """ "I hope you don't mind bringing me ...", "if you wouldn't mind fetching ...": a
@@ -403,6 +436,8 @@ class SpeechActs:
             return False  # "Chen is looking for a pen": a need
         if self._minded(w):
             return False  # "I hope you don't mind bringing me a pen": asked, gently
+        if self._command_inside(w):
+            return False  # "I have faith in you bring me a ruler": an aside, then the request
         pairs = itertools.pairwise(w)
         if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
             return False  # "I was wondering if you could print ..."
