@@ -248,3 +248,35 @@ def test_a_request_after_an_aside_in_the_same_sentence_is_read(
 def test_a_statement_or_thanks_with_a_task_word_is_no_request(text: str) -> None:
     tasks, question, decline = _read(text)
     assert tasks == [] and question is None and decline, (tasks, question)
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("Tea time soon. Could you bring me a ruler?", [("transfer", "ruler", None, REQUESTER)]),
+        (
+            "I need to pay the bill. Could you bring me a calculator?",
+            [("transfer", "calculator", None, REQUESTER)],
+        ),
+        (
+            "The bill is due today. Can you bring me a calculator?",
+            [("transfer", "calculator", None, REQUESTER)],
+        ),
+        (
+            "Mark my words, it will rain. Can you bring me Wren's umbrella?",
+            [("transfer", "umbrella", "wren", REQUESTER)],
+        ),
+    ],
+)
+def test_a_context_sentence_does_not_spoil_the_request_after_it(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted
+
+
+@pytest.mark.parametrize(
+    "text", ["I need you to scan my drawing. Bring me a ruler", "I need to pay the bill"]
+)
+def test_a_service_the_office_lacks_asked_of_the_assistant_is_still_declined(text: str) -> None:
+    tasks, _, decline = _read(text)
+    assert tasks == [] and decline and "can't" in decline, decline

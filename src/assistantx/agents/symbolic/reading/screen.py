@@ -49,7 +49,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading._objects import modifiers
-from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs, content
 from assistantx.core import language
 from assistantx.core.english import entries_of
@@ -586,12 +586,36 @@ class RequestScreen:
         )
 
     def _statement(self, piece: Piece, requester: str) -> Finding | None:
+        if not piece.asks and self._context_fragment(piece):
+            return Finding("statement", piece, "context beside the request")
         if piece.asks or not self.acts.statement(piece.words):
             return None
         named = tuple(self._stated_items(piece, requester)) + tuple(
             f"person:{p}" for p in self._named(piece.text, "person")[:1]
         )
         return Finding("statement", piece, "a statement, context only", context=named)
+
+    def _context_fragment(self, piece: Piece) -> bool:
+        """ "Tea time soon. Could you bring me a ruler?": a fragment with no request wording
+        whose items only modify other words ("tea time"), beside a sentence that asks for
+        something, is context; it never adds an errand of its own."""
+        if self.acts.request(piece.words):
+            return False
+        others = [p for p in self._pieces if p is not piece and p.start > piece.end]
+        if not any(self.acts.request(p.words) for p in others):
+            return False
+        tokens = self.lex.tokens(piece.text)
+        mentions = self.lex.scan(tokens)
+        items = [m for m in mentions if m.kind in ("item", "cue")]
+        if not items or any(language.verb_lemmas(t.word) & self.lex.cue_words for t in tokens):
+            return False
+        modifying = modifiers(tokens, mentions)
+
+        def compound(m: Mention) -> bool:  # "tea time": the item names a kind of time
+            after = tokens[m.end].word if m.end < len(tokens) else ""
+            return language.is_noun(after) and after not in self.en.courtesy
+
+        return all(m.start in modifying or compound(m) for m in items)
 
     def _says_mine(self, text: str, item: str) -> bool:
         """ "did anyone find *my* umbrella?" (not "lend *me* a ruler": the asker's want)."""
@@ -754,6 +778,25 @@ class RequestScreen:
         return Finding("fact", piece, f"a fact: the requester's {thing} is out of use", hint)
 
     def _unsupported(self, piece: Piece, requester: str) -> Finding | None:
+        found = self._unsupported_service(piece)
+        if found is not None and self._own_doing(piece) and self._asked_elsewhere(piece):
+            # "I need to pay the bill. Could you bring me a calculator?": what the speaker
+            # will do themselves is context for the request beside it, not asked of me
+            return Finding("statement", piece, "the speaker's own doing, context only")
+        return found
+
+    def _own_doing(self, piece: Piece) -> bool:
+        """ "I need to pay ...", "we have to scan ...": the speaker's own activity ("to"
+        and a verb after a first-person subject), not "I need you to ..."."""
+        w = content(piece.words)
+        if not w or w[0] not in self._self_words or set(w) & {"you", "u"}:
+            return False
+        return "to" in w[1:4]
+
+    def _asked_elsewhere(self, piece: Piece) -> bool:
+        return any(self.acts.request(p.words) for p in self._pieces if p is not piece)
+
+    def _unsupported_service(self, piece: Piece) -> Finding | None:
         for sub in _sub_pieces(piece):
             words = sub.words
             at = sub.verb_at(self.en.lead_in)
