@@ -370,6 +370,9 @@ class RequestScreen:
             out.offer = offers[0].offer
             return out
         replies = [f.message for f in live if f.message]
+        if any(r.startswith("Noted. ") for r in replies):  # one "Noted", then what to do
+            replies = [_unnoted(r) for r in replies]
+            replies.sort(key=lambda r: not r.startswith("Noted. "))
         if withdrawn:
             replies.insert(0, "OK, I've dropped that request.")
         facts = [f.meaning.removeprefix("a fact: ") for f in live if f.verdict == "fact"]
@@ -433,7 +436,7 @@ class RequestScreen:
                 "condition",
                 piece,
                 "a need that may come later, not a request for now",
-                message="Noted; tell me when you need it and I'll bring it then.",
+                message="Noted. Tell me when you need it and I'll bring it then.",
             )
         if not self.acts.condition(piece.words, piece.asks):
             return None
@@ -1046,6 +1049,12 @@ class RequestScreen:
         if machines:
             parts.append(f"run errands at the {_listed(machines)}")
         return f"What I can do here: {_listed(parts)}."
+
+
+def _unnoted(reply: str) -> str:
+    """ "Noted; I'll keep it in mind." → "I'll keep it in mind." (said once already)."""
+    rest = reply.removeprefix("Noted; ")
+    return rest[:1].upper() + rest[1:] if rest != reply else reply
 
 
 def _article(noun: str) -> str:
