@@ -280,3 +280,17 @@ def test_a_context_sentence_does_not_spoil_the_request_after_it(
 def test_a_service_the_office_lacks_asked_of_the_assistant_is_still_declined(text: str) -> None:
     tasks, _, decline = _read(text)
     assert tasks == [] and decline and "can't" in decline, decline
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I might need to borrow Ciaran's ruler later if the client calls, I'll let you know",
+        "Can you even carry Hedda's laser measure without dropping it?",
+    ],
+)
+async def test_a_later_need_or_a_doubt_moves_nothing_and_asks_no_owner(text: str) -> None:
+    run = await run_instruction(office(), REQUESTER, text)
+    assert run.sim.world.holder == SimOffice(office()).world.holder
+    owners = {"ciaran", "hedda"}
+    assert not [m.text for m in run.sim.messenger.sent if m.chat.id in owners]
