@@ -294,3 +294,24 @@ async def test_a_later_need_or_a_doubt_moves_nothing_and_asks_no_owner(text: str
     assert run.sim.world.holder == SimOffice(office()).world.holder
     owners = {"ciaran", "hedda"}
     assert not [m.text for m in run.sim.messenger.sent if m.chat.id in owners]
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        (
+            "would you be able to fetch me Ciaran's ruler?",
+            [("transfer", "ruler", "ciaran", REQUESTER)],
+        ),
+        ("would you be able to brew me a cuppa?", [("produce", "tea", None, REQUESTER)]),
+    ],
+)
+def test_would_you_be_able_to_is_a_polite_request(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert _read(text)[0] == wanted
+
+
+def test_are_you_able_to_with_doubt_is_answered_and_offered() -> None:
+    tasks, question, _ = _read("are you able to carry a cup of tea without spilling it?")
+    assert tasks == [] and question and question.startswith("Yes, I can"), question

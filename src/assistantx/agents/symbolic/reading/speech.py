@@ -406,12 +406,14 @@ class SpeechActs:
                 return "polite"
             return "info"
         asked = second in _ASKEES or self._person_at(w, 1)
+        if self.doubts_ability(w):
+            return "info"  # "can you even carry a tea without spilling it?"
+        if first in _MODALS and second in _YOU and w[2:5] == ["be", "able", "to"]:
+            return "polite"  # "would you be able to bring me a pen?": asked, politely
         if first in _MODALS and asked and "be" in w[2:4]:
             return "info"  # "will Ray be in tomorrow?"
         if first in _MODALS and second in _YOU and self._ability_only(w[2:]):
             return "info"  # "can you print in colour?": what it can do, nothing to act on
-        if self.doubts_ability(w):
-            return "info"  # "can you even carry a tea without spilling it?"
         if first in _MODALS and (asked or second in ("you", "u", "ya", "i", "we")):
             return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
         if first in _MODALS and second in ("not", "nt"):
@@ -511,6 +513,9 @@ class SpeechActs:
         a question about what the assistant can do, said with doubt, not a request. Only
         after "can/could you"; "could you possibly ..." stays a polite request."""
         w = content(words)
+        if w[:3] in (["are", "you", "able"], ["are", "you", "even"], ["are", "you", "really"]):
+            return True  # "are you able to ...?": asked of what it can do, not "would you be
+            # able to ...", a polite request
         if len(w) < 3 or w[0] not in _MODALS or w[1] not in _YOU:
             return False
         if w[2] in _DOUBTS:
