@@ -184,6 +184,16 @@ def is_past_participle(word: str) -> bool:
     return False
 
 
+@functools.cache
+def is_past_verb(word: str) -> bool:
+    """A past form of a verb ("brought", "made", "done"): what is told as already done."""
+    for lemma in verb_lemmas(word):
+        forms = getAllInflections(lemma, upos="VERB")
+        if word in forms.get("VBD", ()) or word in forms.get("VBN", ()):
+            return True
+    return False
+
+
 def is_stance_adverb(word: str) -> bool:
     """A manner-of-speaking adverb ("honestly", "frankly", "seriously"): one the dictionary
     knows only as an adverb, formed with -ly. At the head of a sentence it is the speaker's

@@ -243,7 +243,9 @@ class RequestScreen:
         text, corrected = self._corrected(text)
         self._text = text
         self._noting: int | None = None  # where a note began ("note this down: ...")
+        self._withdrawing = False  # a withdrawal was read: what follows may be its reason
         pieces = _pieces(text)
+        self._pieces = pieces
         findings: list[Finding] = []
         for piece in pieces:
             for _, rule in self.RULES:
@@ -368,6 +370,9 @@ class RequestScreen:
             out.offer = offers[0].offer
             return out
         replies = [f.message for f in live if f.message]
+        if any(r.startswith("Noted. ") for r in replies):  # one "Noted", then what to do
+            replies = [_unnoted(r) for r in replies]
+            replies.sort(key=lambda r: not r.startswith("Noted. "))
         if withdrawn:
             replies.insert(0, "OK, I've dropped that request.")
         facts = [f.meaning.removeprefix("a fact: ") for f in live if f.verdict == "fact"]
@@ -380,12 +385,31 @@ class RequestScreen:
 
     # -- rules ---------------------------------------------------------------------------
     def _withdrawn(self, piece: Piece, requester: str) -> Finding | None:
+        found = self._withdrawal(piece)
+        if found is not None:
+            self._withdrawing = True
+            return found
+        told = any(language.is_finite_verb(w) for w in piece.words)
+        if (
+            self._withdrawing
+            and told
+            and not any(self.acts.request(p.words) for p in self._pieces if p.start >= piece.start)
+        ):
+            # "never mind, found the stapler in my drawer, thanks": the reason for it, told as
+            # what happened, not an errand; a request after it ("..., bring me a pen instead")
+            # is read, and so is a bare correction ("no wait, a pencil": asked about)
+            return Finding("withdrawn", piece, "the reason the request is withdrawn")
+        return None
+
+    def _withdrawal(self, piece: Piece) -> Finding | None:
         words = [w for w in piece.words if w not in ("actually", "oh", "ok", "okay", "please")]
         if tuple(words) in self.en.withdraw or self.acts.withdrawal(words):
             return Finding("withdrawn", piece, "withdraws the request")
         said = tuple(w for w in piece.words if w not in ("oh", "ok", "okay", "wait", "hmm"))
         if piece.start > 0 and said in self.en.elliptical_withdrawals:
             return Finding("withdrawn", piece, "withdraws what was asked before")
+        if piece.start > 0 and not piece.asks and self.acts.had_already(piece.words):
+            return Finding("withdrawn", piece, "what was asked for is had already")
         return None
 
     def _note(self, piece: Piece, requester: str) -> Finding | None:
@@ -405,6 +429,15 @@ class RequestScreen:
     def _condition(self, piece: Piece, requester: str) -> Finding | None:
         """ "if Hal ever needs a ruler, Ida has one": a condition says when, never what to do;
         with no request beside it the message is information, answered in words."""
+        deferred = self.acts.defers(_words(self._text))
+        put_off = self.acts.defers(piece.words) and not self.acts.imperative(piece.words)
+        if put_off or self.acts.future_need(piece.words, deferred):
+            return Finding(
+                "condition",
+                piece,
+                "a need that may come later, not a request for now",
+                message="Noted. Tell me when you need it and I'll bring it then.",
+            )
         if not self.acts.condition(piece.words, piece.asks):
             return None
         named = tuple(f"person:{p}" for p in self._named(piece.text, "person")[:1])
@@ -480,7 +513,19 @@ class RequestScreen:
         facilities = self._named(piece.text, "facility")
         people = self._named(piece.text, "person")
         if len(items) == 1 and not facilities:
-            return self._item_question(piece, items[0], requester)
+            found = self._item_question(piece, items[0], requester)
+            if self.acts.doubts_ability(piece.words) and found.offer:
+                # "can you even carry ...?": yes, said first; the errand only on a yes
+                message = f"Yes, I can do that. {found.message}"
+                return Finding(
+                    found.verdict,
+                    piece,
+                    found.meaning,
+                    message=message,
+                    offer=found.offer,
+                    shall=found.shall,
+                )
+            return found
         if facilities:
             f = self.office.facility(facilities[0])
             where = self.office.location(f.location).name
@@ -544,12 +589,36 @@ class RequestScreen:
         )
 
     def _statement(self, piece: Piece, requester: str) -> Finding | None:
+        if not piece.asks and self._context_fragment(piece):
+            return Finding("statement", piece, "context beside the request")
         if piece.asks or not self.acts.statement(piece.words):
             return None
         named = tuple(self._stated_items(piece, requester)) + tuple(
             f"person:{p}" for p in self._named(piece.text, "person")[:1]
         )
         return Finding("statement", piece, "a statement, context only", context=named)
+
+    def _context_fragment(self, piece: Piece) -> bool:
+        """ "Tea time soon. Could you bring me a ruler?": a fragment with no request wording
+        whose items only modify other words ("tea time"), beside a sentence that asks for
+        something, is context; it never adds an errand of its own."""
+        if self.acts.request(piece.words):
+            return False
+        others = [p for p in self._pieces if p is not piece and p.start > piece.end]
+        if not any(self.acts.request(p.words) for p in others):
+            return False
+        tokens = self.lex.tokens(piece.text)
+        mentions = self.lex.scan(tokens)
+        items = [m for m in mentions if m.kind in ("item", "cue")]
+        if not items or any(language.verb_lemmas(t.word) & self.lex.cue_words for t in tokens):
+            return False
+        modifying = modifiers(tokens, mentions)
+
+        def compound(m: Mention) -> bool:  # "tea time": the item names a kind of time
+            after = tokens[m.end].word if m.end < len(tokens) else ""
+            return language.is_noun(after) and after not in self.en.courtesy
+
+        return all(m.start in modifying or compound(m) for m in items)
 
     def _says_mine(self, text: str, item: str) -> bool:
         """ "did anyone find *my* umbrella?" (not "lend *me* a ruler": the asker's want)."""
@@ -714,6 +783,25 @@ class RequestScreen:
         return Finding("fact", piece, f"a fact: the requester's {thing} is out of use", hint)
 
     def _unsupported(self, piece: Piece, requester: str) -> Finding | None:
+        found = self._unsupported_service(piece)
+        if found is not None and self._own_doing(piece) and self._asked_elsewhere(piece):
+            # "I need to pay the bill. Could you bring me a calculator?": what the speaker
+            # will do themselves is context for the request beside it, not asked of me
+            return Finding("statement", piece, "the speaker's own doing, context only")
+        return found
+
+    def _own_doing(self, piece: Piece) -> bool:
+        """ "I need to pay ...", "we have to scan ...": the speaker's own activity ("to"
+        and a verb after a first-person subject), not "I need you to ..."."""
+        w = content(piece.words)
+        if not w or w[0] not in self._self_words or set(w) & {"you", "u"}:
+            return False
+        return "to" in w[1:4]
+
+    def _asked_elsewhere(self, piece: Piece) -> bool:
+        return any(self.acts.request(p.words) for p in self._pieces if p is not piece)
+
+    def _unsupported_service(self, piece: Piece) -> Finding | None:
         for sub in _sub_pieces(piece):
             words = sub.words
             at = sub.verb_at(self.en.lead_in)
@@ -965,6 +1053,12 @@ class RequestScreen:
         if machines:
             parts.append(f"run errands at the {_listed(machines)}")
         return f"What I can do here: {_listed(parts)}."
+
+
+def _unnoted(reply: str) -> str:
+    """ "Noted; I'll keep it in mind." → "I'll keep it in mind." (said once already)."""
+    rest = reply.removeprefix("Noted; ")
+    return rest[:1].upper() + rest[1:] if rest != reply else reply
 
 
 def _article(noun: str) -> str:

@@ -59,6 +59,23 @@ _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
 _BORROW = english.words("borrow_words")
+_DONE_VERBS = english.words("done_verbs")
+_DONE_MARKERS = tuple(tuple(p.split()) for p in english.entries("done_markers"))
+_DECLINING_THANKS = tuple(tuple(p.split()) for p in english.entries("declining_thanks"))
+# Another one of what was asked for: "X brought me *one*", "Ida lent me *hers*"
+_ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
+# The errand itself, said again: "someone already did *it*"
+_THE_ERRAND = frozenset({"it", "that", "this"})
+_HAVE_NOW = frozenset({"have", "ive", "weve", "got"})
+_PREPOSITIONS = frozenset({"in", "to", "for", "with", "on", "of", "at"})
+# What follows a command's verb: "bring *me*", "fetch *the* ...", "copy *my* ..."
+_COMMAND_OBJECTS = frozenset(
+    {"me", "us", "a", "an", "the", "my", "our", "some", "this", "these", "those", "her", "him"}
+)
+_POSSIBLY = english.words("possibility_words")
+_DOUBTS = english.words("doubt_words")
+_DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
+_SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ill", "im", "ive", "wed", "well"})
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
 _SELF_PLANS = frozenset({"ill"})
@@ -122,6 +139,8 @@ def _hedged(w: list[str]) -> tuple[str, ...] | None:
             for n in (1, 2):
                 if w[len(head) + n : len(head) + n + 1] == ["if"]:
                     return tuple(w[: len(head) + n + 1])
+                if w[len(head) + n : len(head) + n + 2] == ["to", "have"]:
+                    return tuple(w[: len(head) + n + 2])  # "would be nice to have ..."
     return None
 
 
@@ -147,6 +166,57 @@ class SpeechActs:
                 rest = w[len(head) :]
                 return not rest or not self._imperative(rest)
         return False
+
+    def had_already(self, words: list[str]) -> bool:
+        """ "oh actually Ida just brought me one", "someone else already did it", "thanks
+        anyway": what was asked for is had or done already, told after the request, so the
+        request is withdrawn. A past task word (or "did", "found", "got") for the speaker or
+        about "it", marked as news ("already", "actually") or said of "one"/"it"; a later
+        fact with no such mark ("fetch the copies, Priya made them for me") is context."""
+        w = [x for x in words if x not in ("oh", "ah", "ok", "okay", "well", "so")]
+        if any(_starts(w[n:], p) for n in range(len(w)) for p in _DECLINING_THANKS):
+            return True
+        if not w or self._imperative(w) or w[0] in _MODALS or w[0] in _AUX - {"did"}:
+            return False  # "could you ...", "did Ida bring one?" (a question) is no news
+        marked = any(_starts(w[n:], p) for n in range(len(w)) for p in _DONE_MARKERS)
+        mine = bool(set(w) & (_FOR_SPEAKER | {"us", "we", "weve"}))
+        for n, x in enumerate(w):
+            if not language.is_past_verb(x) and x not in _HAVE_NOW:
+                continue
+            lemmas = language.verb_lemmas(x) or {"have"}
+            if not lemmas & (self.lex.cue_words | _DONE_VERBS):
+                continue
+            after = set(w[n + 1 : n + 4])
+            if mine and (marked or after & _ONE_MORE):
+                return True  # "Ida just brought me one", "I already have one"
+            if marked and after & _THE_ERRAND:
+                return True  # "someone else already did it"
+        return False
+
+    @staticmethod
+    def defers(words: list[str]) -> bool:
+        """ "I'll let you know", "will tell you when": the asking is put off."""
+        return any(_starts(words[n:], p) for n in range(len(words)) for p in _DEFERRALS)
+
+    def future_need(self, words: list[str], deferred: bool) -> bool:
+        """ "I might need Hal's ruler later", "may need a calculator if ...": the speaker's
+        need, only possible or for later, is not a request for now; with the asking put off
+        in the same message ("..., I'll let you know") a later want is one too ("could I
+        borrow it later? I'll let you know"). A command is always read as one."""
+        w = content(words)
+        if not w or self._imperative(w):
+            return False
+        at = next((n for n, x in enumerate(w[:7]) if x in _NEED or x in _BORROW), None)
+        if at is None:
+            return False
+        before = w[:at]
+        if before and not (set(before) & (_SPEAKER_SUBJECTS | _POSSIBLY | _MODALS)):
+            return False  # "Ida might need ...": someone else's, read as a need of theirs
+        if before[:1] and before[0] in _MODALS and before[1:2] and before[1] in _FOR_SPEAKER:
+            before = before[2:]  # "may I borrow ...": a polite question, not a "may" of doubt
+        if set(before) & _POSSIBLY and not (set(before) & _YOU):
+            return True
+        return deferred and self.later(w)
 
     def note(self, words: list[str]) -> list[str] | None:
         """ "note this down: the tape ran out", "for the record, ...": the words of a note
@@ -178,8 +248,8 @@ class SpeechActs:
         if opener is None or asks:
             return False
         rest = w[len(opener) :]
-        if not rest or self._asks_you(rest) or self._imperative(rest):
-            return False  # "if you could bring ...", "if possible, ..." is read on
+        if not rest or self._asks_you(rest) or self._imperative(rest) or self._minded(w):
+            return False  # "if you could bring ...", "if you don't mind printing ..." is read on
         if self._main_clause(rest):
             return False  # "when you're free bring me a ruler": the request after it
         return not (w[0] in _WH and rest[0] in _AUX)  # "when is ...": a question
@@ -249,8 +319,8 @@ class SpeechActs:
             return Act("thanks", relay=True)  # "say thanks to Wang", "tell Wang thank you"
         if w[:1] == ["thank"] and w[1:2] and w[1] not in _YOU:
             return Act("thanks", relay=True)  # "thank Rich for the clipboard"
-        if asked:
-            return None  # "could you bring ...", "I'd appreciate it if you could ..."
+        if asked or self._command_inside(w):
+            return None  # "could you bring ...", "so grateful to you fetch me ..."
         if set(w[:3]) & _THANKS:
             return Act("thanks")  # "thanks ...", "big thank you for ...", "much appreciated"
         if self._done_for_me(w):
@@ -268,6 +338,45 @@ class SpeechActs:
             and bool({b, *language.verb_lemmas(b)} & self.lex.cue_words)
             for a, b in itertools.pairwise(w)
         )
+
+    def _command_inside(self, w: list[str]) -> bool:
+        """A command after an aside with no comma between ("I have faith in you bring me a
+        ruler", "... in you please bring me ..."): a task word in its bare form, after
+        "please" or after a word that is no subject, modal, "to" or determiner of it, with
+        the speaker or a thing right after it ("bring me", "fetch the", "copy my"); "I have
+        one copy left" has a noun there, not a command."""
+        for k in range(2, len(w) - 1):
+            x, before = w[k], w[k - 1]
+            if x not in self.lex.cue_words or x not in language.verb_lemmas(x):
+                continue
+            aside_ends = before in _YOU and w[k - 2] in _PREPOSITIONS  # "faith in you bring"
+            if (
+                before not in ("please", "pls", "plz", "kindly")
+                and not aside_ends
+                and (
+                    before in _SUBJECT_WORDS
+                    or before in _MODALS
+                    or before in _COMMAND_OBJECTS
+                    or self._named(before)
+                    or before.isdigit()
+                    or before in ("one", "two", "and", "or", "the", "no")
+                )
+            ):
+                continue
+            if w[k + 1] in _COMMAND_OBJECTS or self._named(w[k + 1].removesuffix("s")):
+                return True
+        return False
+
+    def _minded(self, w: list[str]) -> bool:
+        """ "I hope you don't mind bringing me ...", "if you wouldn't mind fetching ...": a
+        task word as a gerund after "mind", with "you" just before: a request, hedged."""
+        for n in range(1, len(w) - 1):
+            if w[n] != "mind" or not set(w[max(0, n - 4) : n]) & _YOU:
+                continue
+            gerund = w[n + 1]
+            if gerund.endswith("ing") and language.verb_lemmas(gerund) & self.lex.cue_words:
+                return True
+        return False
 
     @staticmethod
     def _asks_you(w: list[str]) -> bool:
@@ -297,6 +406,10 @@ class SpeechActs:
                 return "polite"
             return "info"
         asked = second in _ASKEES or self._person_at(w, 1)
+        if self.doubts_ability(w):
+            return "info"  # "can you even carry a tea without spilling it?"
+        if first in _MODALS and second in _YOU and w[2:5] == ["be", "able", "to"]:
+            return "polite"  # "would you be able to bring me a pen?": asked, politely
         if first in _MODALS and asked and "be" in w[2:4]:
             return "info"  # "will Ray be in tomorrow?"
         if first in _MODALS and second in _YOU and self._ability_only(w[2:]):
@@ -323,6 +436,10 @@ class SpeechActs:
             return False
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
+        if self._minded(w):
+            return False  # "I hope you don't mind bringing me a pen": asked, gently
+        if self._command_inside(w):
+            return False  # "I have faith in you bring me a ruler": an aside, then the request
         pairs = itertools.pairwise(w)
         if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
             return False  # "I was wondering if you could print ..."
@@ -351,6 +468,8 @@ class SpeechActs:
             return True  # "found one", "broke it"
         if w[0] in ("got", "found") and w[1:2] and w[1] in ("one", "some", "it", "them"):
             return True  # "got one already"
+        if w[0] == "found" and w[1:2] and w[1] in ("the", "a", "an", "my", "mine", "his", "her"):
+            return True  # "found the stapler in my drawer": a past find, never an errand
         possessive = w[0].endswith("s") and self._named(w[0][:-1])  # "Hal's clipboard snapped"
         if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
             return False
@@ -384,9 +503,27 @@ class SpeechActs:
         w = content(words)
         if not w:
             return False
-        if self._imperative(w) or set(w) & _WILLING:
+        if self._imperative(w) or set(w) & _WILLING or self._minded(w):
             return True
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
+
+    @staticmethod
+    def doubts_ability(words: list[str]) -> bool:
+        """ "can you even carry a tea?", "could you really lift that without dropping it?":
+        a question about what the assistant can do, said with doubt, not a request. Only
+        after "can/could you"; "could you possibly ..." stays a polite request."""
+        w = content(words)
+        if w[:3] in (["are", "you", "able"], ["are", "you", "even"], ["are", "you", "really"]):
+            return True  # "are you able to ...?": asked of what it can do, not "would you be
+            # able to ...", a polite request
+        if len(w) < 3 or w[0] not in _MODALS or w[1] not in _YOU:
+            return False
+        if w[2] in _DOUBTS:
+            return True
+        return any(
+            a == "without" and b.endswith("ing") and bool(language.verb_lemmas(b))
+            for a, b in itertools.pairwise(w[2:])
+        )
 
     # -- helpers -------------------------------------------------------------------------
     def _ability_only(self, w: list[str]) -> bool:
@@ -410,6 +547,10 @@ class SpeechActs:
                 if any(after.startswith(f) for f in self.lex.facilities):
                     return True
         return False
+
+    def imperative(self, words: list[str]) -> bool:
+        """A command: a task word first, after the openers ("please just bring ...")."""
+        return self._imperative(content(words))
 
     def _imperative(self, w: list[str]) -> bool:
         k = 0
