@@ -315,3 +315,31 @@ def test_would_you_be_able_to_is_a_polite_request(
 def test_are_you_able_to_with_doubt_is_answered_and_offered() -> None:
     tasks, question, _ = _read("are you able to carry a cup of tea without spilling it?")
     assert tasks == [] and question and question.startswith("Yes, I can"), question
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        (
+            "if Hedda's not using her laser measure, could you bring it over to me?",
+            [("transfer", "laser", "hedda", REQUESTER)],
+        ),
+        (
+            "If Wren isn't using her umbrella, could you borrow it for me?",
+            [("transfer", "umbrella", "wren", REQUESTER)],
+        ),
+    ],
+)
+def test_a_condition_beside_a_request_in_its_sentence_is_the_requests_own(
+    text: str, wanted: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    """A condition is information only when no request stands beside it: "if X isn't using
+    her Y, could you bring it over?" asks for X's Y (X is asked, and her answer is the
+    condition); the condition's item is the request's "it"."""
+    assert _read(text)[0] == wanted
+
+
+def test_a_condition_with_a_statement_beside_it_stays_information() -> None:
+    tasks, question, decline = _read("if Bill ever needs a ruler, Wren has one")
+    assert tasks == [] and question is None, (tasks, question)
+    assert decline and decline.startswith("Noted"), decline
