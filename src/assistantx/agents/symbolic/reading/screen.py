@@ -440,16 +440,11 @@ class RequestScreen:
             )
         if not self.acts.condition(piece.words, piece.asks):
             return None
-        after = next((p for p in self._pieces if p.start > piece.start), None)
-        if (
-            after is not None
-            and not _SENTENCE_END.search(self._text[piece.end : after.start])
-            and self.acts.request(after.words)
-        ):
-            # "if Kwame isn't using his punch, could you bring it over?": the condition of the
-            # request beside it in its sentence, read with it (its item is the request's)
-            return None
-        named = tuple(f"person:{p}" for p in self._named(piece.text, "person")[:1])
+        # what the condition names is context for a request beside it, as a statement's is:
+        # "if Hedda isn't using her laser, could you bring it over?" asks for Hedda's laser
+        named = tuple(self._stated_items(piece, requester)) + tuple(
+            f"person:{p}" for p in self._named(piece.text, "person")[:1]
+        )
         return Finding(
             "condition",
             piece,
