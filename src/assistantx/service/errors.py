@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 import logging
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
@@ -23,6 +23,9 @@ from assistantx.core.errors import (
     AssistantXError,
     GroundingError,
 )
+
+if TYPE_CHECKING:
+    from assistantx.store.journal import InstructionRecord, Journal
 
 logger = logging.getLogger(__name__)
 
@@ -174,3 +177,16 @@ def install_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(AssistantXError, domain_error)
     app.add_exception_handler(RequestValidationError, validation_error)
     app.add_exception_handler(StarletteHTTPException, http_error)
+
+
+def unknown_instruction(instruction_id: str) -> NotFoundError:
+    """The one answer for an instruction that is not there (or not the caller's to see)."""
+    return NotFoundError(f"no instruction {instruction_id!r}")
+
+
+def journaled_instruction(journal: Journal, instruction_id: str) -> InstructionRecord:
+    """An instruction's record from the journal, or ``unknown_instruction``."""
+    record = journal.instruction(instruction_id)
+    if record is None:
+        raise unknown_instruction(instruction_id)
+    return record

@@ -51,7 +51,11 @@ from assistantx.service.codebook import CodeBook
 from assistantx.service.data_dir import LOCK_KEYS_FILE, ensure_data_dir
 from assistantx.service.datalock import DataDirLock
 from assistantx.service.durability import Durability
-from assistantx.service.errors import NotFoundError, TooManyRequestsError
+from assistantx.service.errors import (
+    TooManyRequestsError,
+    journaled_instruction,
+    unknown_instruction,
+)
 from assistantx.service.feedback_wiring import start_feedback
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
@@ -532,14 +536,9 @@ class ServiceRuntime:
         return True
 
     def instruction(self, instruction_id: str) -> InstructionRecord:
-        record = self.journal.instruction(instruction_id)
-        if record is None:
-            raise self.unknown_instruction(instruction_id)
-        return record
+        return journaled_instruction(self.journal, instruction_id)
 
-    @staticmethod
-    def unknown_instruction(instruction_id: str) -> NotFoundError:
-        return NotFoundError(f"no instruction {instruction_id!r}")
+    unknown_instruction = staticmethod(unknown_instruction)
 
     async def cancel(self, instruction_id: str) -> bool:
         """Ask a running instruction to stop; False when it had already ended."""

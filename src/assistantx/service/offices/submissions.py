@@ -25,7 +25,7 @@ from psycopg.conninfo import make_conninfo
 from assistantx.core.office import Office, PersonId
 from assistantx.memory.resolve import Resolver
 from assistantx.runtime.assistant import new_instruction_id
-from assistantx.service.errors import NotFoundError
+from assistantx.service.errors import journaled_instruction, unknown_instruction
 from assistantx.store.journal import InstructionRecord, Journal
 
 logger = logging.getLogger(__name__)
@@ -57,14 +57,9 @@ class OfficeDesk:
         )
 
     def instruction(self, instruction_id: str) -> InstructionRecord:
-        record = self.journal.instruction(instruction_id)
-        if record is None:
-            raise self.unknown_instruction(instruction_id)
-        return record
+        return journaled_instruction(self.journal, instruction_id)
 
-    @staticmethod
-    def unknown_instruction(instruction_id: str) -> NotFoundError:
-        return NotFoundError(f"no instruction {instruction_id!r}")
+    unknown_instruction = staticmethod(unknown_instruction)
 
 
 class SubmissionListener:
