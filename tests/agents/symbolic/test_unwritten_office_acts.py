@@ -343,3 +343,23 @@ def test_a_condition_with_a_statement_beside_it_stays_information() -> None:
     tasks, question, decline = _read("if Bill ever needs a ruler, Wren has one")
     assert tasks == [] and question is None, (tasks, question)
     assert decline and decline.startswith("Noted"), decline
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "don't bother to bring me a ruler, Wren lent me hers",
+        "please don't trouble yourself fetching me a calculator",
+        "no need to bother bringing me the laser measure",
+        "do not worry about copying my report",
+    ],
+)
+def test_a_negation_passed_on_by_bother_or_trouble_moves_nothing(text: str) -> None:
+    """A negated verb that only passes the negation on ("don't bother to ...", "don't trouble
+    yourself ...") negates the errand after it: nothing is fetched or made."""
+    tasks, question, _ = _read(text)
+    assert tasks == [] and question is None, (tasks, question)
+
+
+def test_dont_forget_to_still_asks_for_the_errand() -> None:
+    assert _read("don't forget to bring me a ruler")[0] == [("transfer", "ruler", None, REQUESTER)]

@@ -685,7 +685,7 @@ class RequestScreen:
                     )  # "no longer need"
                 k = at + len(neg)
                 while k < len(words):  # "don't actually need", "do not ever print"
-                    if self._request_verb(words, k):
+                    if self._request_verb(words, k) or self._errand_gerund(words[k]):
                         return Finding("negated", piece, f"negated: not to {words[k]}")
                     if words[k] not in self.en.negation_fillers:
                         break
@@ -995,6 +995,11 @@ class RequestScreen:
         return w in self.lex.cue_words or (
             w in self.en.service_verbs and (at + 1 >= len(words) or words[at + 1] in _DETERMINERS)
         )
+
+    def _errand_gerund(self, word: str) -> bool:
+        """An errand's verb as a gerund ("bringing", "fetching"), where a negation passed on
+        by "bother" or "trouble yourself" lands."""
+        return word.endswith("ing") and bool(language.verb_lemmas(word) & self.lex.cue_words)
 
     def _names_an_item(self, text: str) -> bool:
         return any(m.kind == "item" for m in self.lex.scan(self.lex.tokens(text)))
