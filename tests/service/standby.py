@@ -8,9 +8,13 @@ import subprocess
 import sys
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
+
+import httpx
+import psycopg
 
 from helpers.eventually import eventually_sync
-from service.server import base_env, free_port
+from service.server import OPERATOR, Server, base_env, free_port
 
 
 @dataclass
@@ -62,3 +66,38 @@ def start_standby(folder: Path, name: str, env: dict[str, str]) -> Replica:
         timeout_s=60,
     )
     return replica
+
+
+def rows(url: str, sql: str, args: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
+    """The rows of one query on the replicas' shared database."""
+    with psycopg.connect(url, autocommit=True) as db:
+        return list(db.execute(sql, args or None).fetchall())  # type: ignore[arg-type]
+
+
+def holder(replicas: list[Server | Replica]) -> Server | Replica:
+    """The replica that runs the office now: the one whose ``/readyz`` answers 200."""
+
+    def ready() -> Server | Replica | None:
+        for r in replicas:
+            try:
+                if httpx.get(f"{r.url}/readyz", timeout=2).status_code == 200:
+                    return r
+            except httpx.HTTPError:
+                continue
+        return None
+
+    found = eventually_sync(ready, what="a replica to run the office", timeout_s=60)
+    assert found is not None
+    return found
+
+
+def holders(server: Server) -> dict[str, str | None]:
+    """Who runs each office, as ``server`` answers ``GET /v1/offices`` (ready offices only:
+    an office still starting is not run yet)."""
+    r = httpx.get(
+        f"{server.url}/v1/offices", headers={"Authorization": f"Bearer {OPERATOR}"}, timeout=10
+    )
+    assert r.status_code == 200, r.text
+    return {
+        o["id"]: o["replica"] if o["status"] in ("ready", "elsewhere") else None for o in r.json()
+    }

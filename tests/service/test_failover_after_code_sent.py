@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
 
 import httpx
 import psycopg
@@ -19,7 +18,7 @@ import pytest
 
 from helpers.eventually import eventually_sync
 from service.server import OPERATOR, Server, free_port, serve
-from service.standby import Replica, start_standby
+from service.standby import Replica, holder, rows, start_standby
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
@@ -53,11 +52,6 @@ TRIGGER = (
 )
 
 
-def rows(url: str, sql: str) -> list[tuple[Any, ...]]:
-    with psycopg.connect(url, autocommit=True) as db:
-        return list(db.execute(sql).fetchall())  # type: ignore[arg-type]
-
-
 def run(url: str, sql: str) -> None:
     with psycopg.connect(url, autocommit=True) as db:
         db.execute(sql)  # type: ignore[arg-type]
@@ -81,21 +75,6 @@ def codes_to(url: str, person: str) -> list[str]:
         for (body,) in found
         if any(a.get("name") == "locker-code.png" for a in json.loads(body)["attachments"])
     ]
-
-
-def holder(replicas: list[Server | Replica]) -> Server | Replica:
-    def ready() -> Server | Replica | None:
-        for r in replicas:
-            try:
-                if httpx.get(f"{r.url}/readyz", timeout=2).status_code == 200:
-                    return r
-            except httpx.HTTPError:
-                continue
-        return None
-
-    found = eventually_sync(ready, what="a replica to run the office", timeout_s=60)
-    assert found is not None
-    return found
 
 
 def test_a_kill_just_after_a_code_went_out_does_not_send_a_second_code(

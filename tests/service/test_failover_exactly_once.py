@@ -15,12 +15,11 @@ from pathlib import Path
 from typing import Any
 
 import httpx
-import psycopg
 import pytest
 
 from helpers.eventually import eventually_sync
 from service.server import OPERATOR, Server, free_port, serve
-from service.standby import Replica, start_standby
+from service.standby import Replica, holder, rows, start_standby
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
@@ -36,11 +35,6 @@ ENV = {
     "ASSISTANTX_SIM_REPLY_DELAY_S": "30",  # 3 s: the question is out, the answer not yet
     "ASSISTANTX_SIM_HANDOVER_DELAY_S": "20",
 }
-
-
-def rows(url: str, sql: str) -> list[tuple[Any, ...]]:
-    with psycopg.connect(url, autocommit=True) as db:
-        return list(db.execute(sql).fetchall())
 
 
 def results(url: str) -> list[dict[str, Any]]:
@@ -95,21 +89,6 @@ def asked_not_answered(url: str) -> bool:
     asked = rows(url, "SELECT count(*) FROM messages WHERE question_id IS NOT NULL")[0][0]
     answered = rows(url, "SELECT count(*) FROM messages WHERE direction='in'")[0][0]
     return bool(asked > 0 and answered == 0)
-
-
-def holder(replicas: list[Server | Replica]) -> Server | Replica:
-    def ready() -> Server | Replica | None:
-        for r in replicas:
-            try:
-                if httpx.get(f"{r.url}/readyz", timeout=2).status_code == 200:
-                    return r
-            except httpx.HTTPError:
-                continue
-        return None
-
-    found = eventually_sync(ready, what="a replica to run the office", timeout_s=60)
-    assert found is not None
-    return found
 
 
 def test_every_message_code_and_robot_action_happens_once_across_four_kills(

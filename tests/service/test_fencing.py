@@ -6,26 +6,19 @@ from __future__ import annotations
 
 import signal
 from pathlib import Path
-from typing import Any
 
 import httpx
-import psycopg
 import pytest
 
 from helpers.eventually import eventually_sync
 from helpers.processes import wait_ready
 from service.server import OPERATOR, free_port, serve
-from service.standby import start_standby
+from service.standby import rows, start_standby
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 SHARED = {"ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests"}
-
-
-def rows(url: str, sql: str, args: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
-    with psycopg.connect(url, autocommit=True) as db:
-        return list(db.execute(sql, args or None).fetchall())
 
 
 def test_a_paused_replica_that_lost_its_lease_cannot_write_when_it_wakes(

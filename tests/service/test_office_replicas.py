@@ -22,6 +22,7 @@ from helpers.eventually import eventually, eventually_sync
 from helpers.servers import serving_app
 from service.inprocess import serving_runtime
 from service.server import OPERATOR, Server, free_port, serve
+from service.standby import holders
 
 pytestmark = pytest.mark.postgres
 
@@ -53,16 +54,6 @@ def replica(folder: Path, name: str, url: str, offices: Path) -> Server:
         ASSISTANTX_ROBOT="sim",
         ASSISTANTX_TOKENS="",
     )
-
-
-def holders(server: Server) -> dict[str, str | None]:
-    """Who runs each office, as ``server`` answers ``GET /v1/offices`` (ready offices only:
-    an office still starting is not run yet)."""
-    r = httpx.get(f"{server.url}/v1/offices", headers=HEADERS, timeout=10)
-    assert r.status_code == 200, r.text
-    return {
-        o["id"]: o["replica"] if o["status"] in ("ready", "elsewhere") else None for o in r.json()
-    }
 
 
 def settle(server: Server, until: Any, what: str, timeout_s: float = 60) -> dict[str, Any]:

@@ -15,6 +15,7 @@ import yaml
 
 from helpers.eventually import eventually_sync
 from service.server import OPERATOR, Server, free_port, serve
+from service.standby import holders
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
@@ -44,14 +45,6 @@ def replica(folder: Path, name: str, url: str, offices: Path) -> Server:
         ASSISTANTX_SPEEDUP="50",
         ASSISTANTX_TOKENS="",
     )
-
-
-def holders(server: Server) -> dict[str, str | None]:
-    r = httpx.get(f"{server.url}/v1/offices", headers=HEADERS, timeout=10)
-    assert r.status_code == 200, r.text
-    return {
-        o["id"]: o["replica"] if o["status"] in ("ready", "elsewhere") else None for o in r.json()
-    }
 
 
 def test_a_replica_takes_submissions_and_reads_for_an_office_another_runs(

@@ -132,3 +132,16 @@ def office() -> Office:
 @functools.cache
 def parser() -> InstructionParser:
     return InstructionParser(office())
+
+
+REQUESTER = "tomasz"  # the person who writes the tests' messages
+
+
+def read(
+    text: str,
+) -> tuple[list[tuple[str, str | None, str | None, str]], str | None, str | None]:
+    """What the reader makes of ``text`` from the requester: its tasks as (kind, item, owner,
+    recipient), the question it asks, and its answer in words."""
+    frame = parser().parse(text, REQUESTER)
+    tasks = [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
+    return tasks, frame.question, frame.decline

@@ -5,23 +5,14 @@ the rest is answered in words, and a need for later is answered and offered, not
 from __future__ import annotations
 
 import pytest
-from _survey_office import office, parser
+from _survey_office import REQUESTER, office, parser
+from _survey_office import read as _read
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import build_factory
 from assistantx.core.settings import Settings
 from assistantx.sim.office import SimOffice
 from helpers.office import run_one, sim_assistant
-
-REQUESTER = "tomasz"
-
-
-def _read(
-    text: str,
-) -> tuple[list[tuple[str, str | None, str | None, str]], str | None, str | None]:
-    frame = parser().parse(text, REQUESTER)
-    tasks = [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
-    return tasks, frame.question, frame.decline
 
 
 @pytest.mark.parametrize(

@@ -4,20 +4,11 @@ classes of blind round 6 (never its sentences): only a request moves the robot."
 from __future__ import annotations
 
 import pytest
-from _survey_office import office, parser
+from _survey_office import REQUESTER, office
+from _survey_office import read as _read
 from symbolic_run import run_instruction
 
 from assistantx.sim.office import SimOffice
-
-REQUESTER = "tomasz"
-
-
-def _read(
-    text: str,
-) -> tuple[list[tuple[str, str | None, str | None, str]], str | None, str | None]:
-    frame = parser().parse(text, REQUESTER)
-    tasks = [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
-    return tasks, frame.question, frame.decline
 
 
 @pytest.mark.parametrize(
