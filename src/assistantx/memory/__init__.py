@@ -7,8 +7,9 @@ tools (lemminflect, numpy) with it.
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from assistantx.core.lazy import exports
 
 if TYPE_CHECKING:
     from assistantx.core.dialogue import DialogueTurn
@@ -44,13 +45,7 @@ _WHERE = {
 }
 
 
-def __getattr__(name: str) -> Any:
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value  # the next lookup is a plain module attribute
-    return value
+__getattr__ = exports(__name__, _WHERE)
 
 
 __all__ = [

@@ -12,8 +12,9 @@ Each name loads its module on first use (PEP 562): the service imports
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from assistantx.core.lazy import exports
 
 if TYPE_CHECKING:
     from assistantx.adapters.model.configured import model_from_settings
@@ -89,8 +90,4 @@ __all__ = [
 ]
 
 
-def __getattr__(name: str) -> Any:
-    home = _HOMES.get(name)
-    if home is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    return getattr(importlib.import_module(home), name)
+__getattr__ = exports(__name__, _HOMES)

@@ -13,8 +13,9 @@ built, after the service is ready (``service.reasoner_warmup``).
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from assistantx.core.lazy import exports
 
 if TYPE_CHECKING:
     from assistantx.agents.symbolic.reading.parser import InstructionParser, Task, TaskFrame
@@ -29,13 +30,7 @@ _WHERE = {
 }
 
 
-def __getattr__(name: str) -> Any:
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value  # the next lookup is a plain module attribute
-    return value
+__getattr__ = exports(__name__, _WHERE)
 
 
 __all__ = ["InstructionParser", "SymbolicReasoner", "Task", "TaskFrame", "build_factory"]
