@@ -1,0 +1,230 @@
+"""bench/phrasings.py: its judge on real runs of the assistant in the default office, case by
+case, the phrasings file's checks, and (slow) the whole tool in its own processes."""
+
+from __future__ import annotations
+
+import asyncio
+import copy
+import json
+import os
+import subprocess
+import sys
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from assistantx.agents.registry import reasoner_factory
+from assistantx.core.office import load_office
+from assistantx.core.settings import Settings
+from assistantx.sim.run import run_in_sim
+
+BENCH = Path(__file__).resolve().parents[2] / "bench"
+sys.path.insert(0, str(BENCH))
+
+from _phrasing_judge import (  # noqa: E402  (bench/ is no package: on the path above)
+    Case,
+    PhrasingsError,
+    judge,
+    load_phrasings,
+)
+
+OFFICE = load_office()
+
+
+@cache
+def _run(requester: str, text: str) -> str:
+    """The trace JSON of one real symbolic run, as ``assistantx run --trace-out`` writes it
+    (a string, so no test can change another's copy)."""
+    factory = reasoner_factory("symbolic", OFFICE, Settings())
+    run = asyncio.run(run_in_sim(OFFICE, requester, text, factory, reasoner_name="symbolic"))
+    return run.trace.model_dump_json()
+
+
+def trace(requester: str, text: str) -> dict[str, Any]:
+    loaded: dict[str, Any] = json.loads(_run(requester, text))
+    return loaded
+
+
+def case(text: str, expect: str, **fields: Any) -> Case:
+    return Case.model_validate({"id": "c", "as": "lee", "text": text, "expect": expect, **fields})
+
+
+BORROW = "bring me Zhang's stapler"
+QUESTION = "bring me the thing"
+THANKS = "thanks for the stapler earlier"
+UNKNOWN = "bring me a unicorn"
+
+
+@pytest.mark.parametrize("item", ["stapler:zhang", "stapler"])
+def test_the_borrowed_stapler_handed_to_the_requester_is_a_right_delivery(item: str) -> None:
+    borrowed = case(BORROW, "deliver", recipient="lee", item=item, owner_asked="zhang")
+    verdict = judge(borrowed, trace("lee", BORROW), OFFICE)
+    assert (verdict.got, verdict.right, verdict.wrong_physical) == ("deliver", True, None)
+
+
+@pytest.mark.parametrize(
+    ("fields", "why"),
+    [
+        ({"item": "stapler:wang"}, "stapler:wang never handed to lee"),
+        ({"item": "scissors"}, "scissors never handed to lee"),
+        ({"item": "stapler", "owner_asked": "wang"}, "wang not asked before stapler:zhang moved"),
+    ],
+)
+def test_another_item_or_an_owner_never_asked_is_wrong_but_not_physical(
+    fields: dict[str, str], why: str
+) -> None:
+    verdict = judge(
+        case(BORROW, "deliver", recipient="lee", **fields), trace("lee", BORROW), OFFICE
+    )
+    assert (verdict.right, verdict.wrong_physical, verdict.why) == (False, None, why)
+
+
+def test_the_item_handed_to_someone_else_than_the_recipient_is_a_wrong_physical_action() -> None:
+    verdict = judge(
+        case(BORROW, "deliver", recipient="wang", item="stapler"), trace("lee", BORROW), OFFICE
+    )
+    assert not verdict.right
+    assert verdict.wrong_physical == "handed stapler:zhang to lee"
+
+
+def test_an_owned_item_moved_before_its_owner_was_asked_is_a_wrong_physical_action() -> None:
+    # the real run with its question to Zhang taken out: as if the assistant had not asked
+    unasked = copy.deepcopy(trace("lee", BORROW))
+    for step in unasked["steps"]:
+        step["results"] = [r for r in step["results"] if r["action"]["type"] != "inquire"]
+    verdict = judge(case(BORROW, "deliver", recipient="lee", item="stapler"), unasked, OFFICE)
+    assert verdict.wrong_physical == "moved stapler:zhang without asking zhang"
+    # the requester's own item needs nobody's yes
+    own = "take my book to Wang"
+    assert judge(
+        case(own, "deliver", recipient="wang", item="book"), trace("lee", own), OFFICE
+    ).right
+
+
+@pytest.mark.parametrize("expect", ["words", "decline"])
+def test_a_real_request_judged_as_words_or_a_refusal_is_a_wrong_physical_action(
+    expect: str,
+) -> None:
+    verdict = judge(case(BORROW, expect), trace("lee", BORROW), OFFICE)
+    assert (verdict.got, verdict.right) == ("deliver", False)
+    assert verdict.wrong_physical == f"move on a {expect} case"
+
+
+def test_a_question_before_any_step_is_ask_and_nothing_else() -> None:
+    asked = trace("lee", QUESTION)
+    assert judge(case(QUESTION, "ask"), asked, OFFICE).right
+    delivered = judge(case(QUESTION, "deliver", recipient="lee", item="stapler"), asked, OFFICE)
+    assert (delivered.got, delivered.right, delivered.wrong_physical) == ("ask", False, None)
+    # the run ends saying it did not understand: no decline, and no answer in words either
+    assert not judge(case(QUESTION, "words"), asked, OFFICE).right
+    assert judge(
+        case(QUESTION, "deliver", recipient="lee", item="pen", accept=["ask"]), asked, OFFICE
+    ).right
+
+
+def test_asking_after_no_question_or_after_acting_is_no_ask() -> None:
+    verdict = judge(case(BORROW, "ask"), trace("lee", BORROW), OFFICE)
+    assert (verdict.right, verdict.why) == (False, "never asked the requester")
+    # the stapler went to the person the text names: no wrong physical action on an ask case
+    third = "take Zhang's stapler to Wang"
+    verdict = judge(case(third, "ask"), trace("lee", third), OFFICE)
+    assert (verdict.got, verdict.right, verdict.wrong_physical) == ("deliver", False, None)
+
+
+def test_a_thank_you_is_words_and_a_known_nothing_is_a_decline() -> None:
+    thanked = trace("lee", THANKS)
+    assert judge(case(THANKS, "words"), thanked, OFFICE).right
+    for other in ("decline", "ask"):
+        assert judge(case(THANKS, other), thanked, OFFICE).got == "words"
+        assert not judge(case(THANKS, other), thanked, OFFICE).right
+    refused = trace("lee", UNKNOWN)
+    assert judge(case(UNKNOWN, "decline"), refused, OFFICE).right
+    verdict = judge(case(UNKNOWN, "words"), refused, OFFICE)
+    assert (verdict.got, verdict.right, verdict.wrong_physical) == ("decline", False, None)
+
+
+def test_a_product_and_a_printed_file_are_delivered_with_no_one_elses_hand_over() -> None:
+    coffee = "get me a coffee"
+    verdict = judge(
+        case(coffee, "deliver", recipient="lee", item="coffee"), trace("lee", coffee), OFFICE
+    )
+    assert (verdict.right, verdict.wrong_physical) == (True, None)
+    # the file forwarded to the printer's keeper is what printing takes, not a delivery to him
+    printed = "print my report and bring it to me"
+    verdict = judge(
+        case(printed, "deliver", recipient="lee", item="printout"), trace("lee", printed), OFFICE
+    )
+    assert (verdict.right, verdict.wrong_physical) == (True, None)
+
+
+def _write(tmp_path: Path, cases: str) -> Path:
+    office = Path(__file__).resolve().parents[2] / "dataset" / "office.yaml"
+    path = tmp_path / "phrasings.yaml"
+    path.write_text(f"office: {office}\ncases:\n{cases}\n")
+    return path
+
+
+@pytest.mark.parametrize(
+    ("cases", "error"),
+    [
+        ("  - {id: a, as: nobody, text: hi, expect: words}", "case a: as: 'nobody' is no person"),
+        ("  - {id: a, as: lee, expect: words}", "case a.text: Field required"),
+        ("  - {id: a, as: lee, text: hi, expect: maybe}", "case a.expect: 'maybe' is not one of"),
+        ("  - {id: a, as: lee, text: hi, expect: deliver, item: pen}", "needs both recipient"),
+        (
+            "  - {id: a, as: lee, text: hi, expect: deliver, item: pen, recipient: bob}",
+            "case a: recipient: 'bob' is no person id",
+        ),
+        (
+            "  - {id: a, as: lee, text: hi, expect: deliver, item: unicorn, recipient: lee}",
+            "case a: item: 'unicorn' is no item id",
+        ),
+    ],
+)
+def test_a_bad_phrasings_file_is_one_clear_line(tmp_path: Path, cases: str, error: str) -> None:
+    with pytest.raises(PhrasingsError) as raised:
+        load_phrasings(_write(tmp_path, cases))
+    assert error in str(raised.value)
+    assert "\n" not in str(raised.value)
+
+
+@pytest.mark.slow
+def test_the_tool_runs_each_case_in_its_own_process_and_ends_with_one_json_line(
+    tmp_path: Path,
+) -> None:
+    path = _write(
+        tmp_path,
+        f'  - {{id: thanks, as: lee, text: "{THANKS}", expect: words}}\n'
+        f'  - {{id: taken, as: lee, text: "{BORROW}", expect: words}}',
+    )
+    env = {**os.environ, "PYTHONPATH": str(BENCH.parent / "src")}
+    done = subprocess.run(
+        [
+            *(sys.executable, str(BENCH / "phrasings.py"), "--phrasings", str(path)),
+            *("--label", "t", "--out", str(tmp_path / "out")),
+        ],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+        timeout=120,
+    )
+    lines = done.stdout.splitlines()
+    assert lines[:2] == [
+        "thanks: expected words, got words, right",
+        "taken: expected words, got deliver, WRONG (wrong physical action: move on a words case)",
+    ]
+    report = json.loads(lines[-1])
+    assert report == {
+        "label": "t",
+        "cases": 2,
+        "right": 1,
+        "wrong_physical": 1,
+        "by_expect": {"words": {"cases": 2, "right": 1, "wrong_physical": 1}},
+        "wrong": ["taken"],
+    }
+    kept = json.loads((tmp_path / "out" / "results.json").read_text())
+    assert [c["id"] for c in kept["per_case"]] == ["thanks", "taken"]
+    assert json.loads((tmp_path / "out" / "traces" / "taken.json").read_text())["text"] == BORROW
