@@ -41,21 +41,27 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
         hint = Hint(kind="condition", person=person, value=said, item_type=item, said=piece.text)
         thing = terms.office.item_type(item).name
         return Finding("fact", piece, f"a fact: {name}'s {thing} is {said}", hint)
-    for phrase in terms.en.away:
-        if starts_with(state, 0, phrase) and len(state) <= len(phrase) + 2:
-            hint = Hint(kind="availability", person=person, value="away", said=piece.text)
-            return Finding("fact", piece, f"a fact: {name} is away", hint)
+    if _says(state, terms.en.away, after=2):  # "Wang is away today"
+        return _availability(piece, person, name, "away")
     if state and state[0] in terms.en.location_prepositions:
         place = terms.place(piece.lexed)
         if place is not None:
             hint = Hint(kind="location", person=person, value=place, said=piece.text)
             where = terms.office.location(place).name
             return Finding("fact", piece, f"a fact: {name} is at the {where}", hint)
-    for phrase in terms.en.here:
-        if starts_with(state, 0, phrase) and len(state) <= len(phrase) + 1:
-            hint = Hint(kind="availability", person=person, value="here", said=piece.text)
-            return Finding("fact", piece, f"a fact: {name} is here", hint)
+    if _says(state, terms.en.here, after=1):  # "Zhang is back"
+        return _availability(piece, person, name, "here")
     return None
+
+
+def _says(state: list[str], phrases: tuple[tuple[str, ...], ...], *, after: int) -> bool:
+    """Whether the state opens with one of ``phrases`` and says at most ``after`` words more."""
+    return any(starts_with(state, 0, p) and len(state) <= len(p) + after for p in phrases)
+
+
+def _availability(piece: Piece, person: str, name: str, value: str) -> Finding:
+    hint = Hint(kind="availability", person=person, value=value, said=piece.text)
+    return Finding("fact", piece, f"a fact: {name} is {value}", hint)
 
 
 def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
