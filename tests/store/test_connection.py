@@ -44,8 +44,12 @@ def test_the_block_is_committed(conn: TransactedConnection) -> None:
 def test_an_error_rolls_the_whole_block_back_and_is_raised(
     conn: TransactedConnection, error: BaseException
 ) -> None:
-    with pytest.raises(type(error)), transaction(conn):
-        conn.execute("INSERT INTO notes VALUES (?)", ("a",))
-        raise error
+    def write_then_fail() -> None:
+        with transaction(conn):
+            conn.execute("INSERT INTO notes VALUES (?)", ("a",))
+            raise error
+
+    with pytest.raises(type(error)):
+        write_then_fail()
     assert not conn.in_transaction
     assert _notes(conn) == []
