@@ -4,13 +4,13 @@ item, and a send-out service's place outside taken from the readings or asked fo
 from __future__ import annotations
 
 import pytest
-from tests.helpers.boathouse import boathouse
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.operations import WHERE_TO, OperationChooser
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame
+from helpers.boathouse import boathouse
 
 
 @pytest.fixture(scope="module")

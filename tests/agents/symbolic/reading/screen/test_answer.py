@@ -3,14 +3,10 @@ that may be a request, and what is only an aside."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Screened
-from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Read
 
 
 def test_the_replies_are_joined_and_nothing_is_done(message: Read) -> None:

@@ -2,29 +2,21 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
-from assistantx.agents.symbolic.reading.screen.pieces import Message
-from assistantx.agents.symbolic.reading.screen.terms import Terms
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Judge
 
 
-def test_throwing_away_is_declined(terms: Terms, message: Read) -> None:
-    msg = message("could you throw away Wang's stapler")
-    found = destructive(terms, msg, msg.pieces[0], "lee")
+def test_throwing_away_is_declined(judged: Judge) -> None:
+    found = judged(destructive, "could you throw away Wang's stapler", "lee")
     assert found is not None and found.meaning == "destructive: throw away"
     assert found.message.startswith("Sorry, I won't throw away anything")
     assert "What I can do here:" in found.message
 
 
-def test_a_destructive_verb_in_a_later_part_is_found(terms: Terms, message: Read) -> None:
-    msg = message("bring me a pen and hide Wang's stapler")
-    found = destructive(terms, msg, msg.pieces[0], "lee")
+def test_a_destructive_verb_in_a_later_part_is_found(judged: Judge) -> None:
+    found = judged(destructive, "bring me a pen and hide Wang's stapler", "lee")
     assert found is not None and found.meaning == "destructive: hide"
 
 
-def test_a_request_is_not_destructive(terms: Terms, message: Read) -> None:
-    msg = message("bring me Wang's stapler")
-    assert destructive(terms, msg, msg.pieces[0], "lee") is None
+def test_a_request_is_not_destructive(judged: Judge) -> None:
+    assert judged(destructive, "bring me Wang's stapler", "lee") is None

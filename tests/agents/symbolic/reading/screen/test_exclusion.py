@@ -2,13 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
-from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Judge, Read
 
 
 def test_not_from_a_person_keeps_their_item_of_the_message_out(terms: Terms, message: Read) -> None:
@@ -24,8 +20,6 @@ def test_not_from_a_person_keeps_their_item_of_the_message_out(terms: Terms, mes
     assert found.meaning == "not Wang Fang's stapler"
 
 
-def test_an_exclusion_needs_one_person_and_an_item(terms: Terms, message: Read) -> None:
-    msg = message("not now")
-    assert exclusion(terms, msg, msg.pieces[0], "lee") is None
-    msg = message("bring me a stapler")
-    assert exclusion(terms, msg, msg.pieces[0], "lee") is None
+def test_an_exclusion_needs_one_person_and_an_item(judged: Judge) -> None:
+    assert judged(exclusion, "not now", "lee") is None
+    assert judged(exclusion, "bring me a stapler", "lee") is None

@@ -2,15 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 import pytest
 
 from assistantx.agents.symbolic.reading.screen.negation import negated
-from assistantx.agents.symbolic.reading.screen.pieces import Message
-from assistantx.agents.symbolic.reading.screen.terms import Terms
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Judge
 
 
 @pytest.mark.parametrize(
@@ -22,9 +17,8 @@ Read = Callable[[str], Message]
         "do not ever print my file",
     ],
 )
-def test_a_negated_request_is_found(terms: Terms, message: Read, text: str) -> None:
-    msg = message(text)
-    found = negated(terms, msg, msg.pieces[0], "lee")
+def test_a_negated_request_is_found(judged: Judge, text: str) -> None:
+    found = judged(negated, text, "lee")
     assert found is not None and found.verdict == "negated"
 
 
@@ -36,6 +30,5 @@ def test_a_negated_request_is_found(terms: Terms, message: Read, text: str) -> N
         "don't forget to bring me a pen",  # still asks for it
     ],
 )
-def test_what_is_not_a_negated_request(terms: Terms, message: Read, text: str) -> None:
-    msg = message(text)
-    assert negated(terms, msg, msg.pieces[0], "lee") is None
+def test_what_is_not_a_negated_request(judged: Judge, text: str) -> None:
+    assert judged(negated, text, "lee") is None

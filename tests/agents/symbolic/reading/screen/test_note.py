@@ -2,13 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 from assistantx.agents.symbolic.reading.screen.note import note
-from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Judge, Read
 
 
 def test_a_note_and_the_sentence_after_it_are_kept_in_words(terms: Terms, message: Read) -> None:
@@ -24,6 +20,5 @@ def test_a_request_after_a_note_is_read_as_one(terms: Terms, message: Read) -> N
     assert note(terms, msg, msg.pieces[1], "lee") is None
 
 
-def test_a_request_is_no_note(terms: Terms, message: Read) -> None:
-    msg = message("bring me a pen")
-    assert note(terms, msg, msg.pieces[0], "lee") is None
+def test_a_request_is_no_note(judged: Judge) -> None:
+    assert judged(note, "bring me a pen", "lee") is None

@@ -33,9 +33,7 @@ def test_the_parts_of_a_piece_are_split_at_and_then_but(office: Office) -> None:
     assert [p.text.strip() for p in sub_pieces(piece)] == ["hide the pen", "bring me paper"]
 
 
-def test_what_is_left_has_the_dropped_pieces_and_their_commas_taken_out(
-    office: Office,
-) -> None:
+def test_what_is_left_has_the_dropped_pieces_and_their_commas_taken_out(office: Office) -> None:
     text = "Thanks, bring me a pen, Wang is away"
     found = pieces(text, Lexicon.from_office(office).read)
     assert without(text, 0, [found[0], found[2]]) == "bring me a pen"

@@ -3,14 +3,10 @@ pronoun the facts pin to one person, a dangling possessive."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
-from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes, rewrite, stem
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core.task_schema import Hint
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Read
 
 
 def test_a_thing_named_by_its_purpose_becomes_the_declared_item(terms: Terms) -> None:

@@ -2,13 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
-from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.rules import RULES
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Read
 
 
 def test_the_rules_in_priority_order() -> None:

@@ -18,9 +18,7 @@ def test_an_item_word_after_a_possessive_is_the_item_not_a_verb(terms: Terms) ->
     assert terms.named(terms.lex.read("keep away from Mao's seal"), "item") == ["seal"]
 
 
-def test_a_request_verb_is_a_task_word_or_a_service_verb_before_its_object(
-    terms: Terms,
-) -> None:
+def test_a_request_verb_is_a_task_word_or_a_service_verb_before_its_object(terms: Terms) -> None:
     assert terms.request_verb(split_words("bring me a pen"), 0)
     assert terms.request_verb(split_words("scan my contract"), 0)
     assert not terms.request_verb(split_words("scan twice"), 0)  # no object after it

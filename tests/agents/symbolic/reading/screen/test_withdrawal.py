@@ -2,15 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 import pytest
 
-from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
-
-Read = Callable[[str], Message]
+from reading.screen._judge import Read
 
 
 @pytest.mark.parametrize("text", ["never mind", "forget about the stapler", "cancel that"])
