@@ -13,6 +13,7 @@ from __future__ import annotations
 import sqlite3
 import sys
 from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Protocol
 
@@ -34,6 +35,29 @@ class Connection(Protocol):
     """One database connection; a row supports ``row["column"]`` and ``row[0]``."""
 
     def execute(self, sql: str, parameters: Sequence[Any] = ..., /) -> Cursor: ...
+
+
+class TransactedConnection(Connection, Protocol):
+    """A connection that says whether a transaction is open (``sqlite3.Connection`` and
+    ``postgres_store.PgConnection`` both do)."""
+
+    @property
+    def in_transaction(self) -> bool: ...
+
+
+@contextmanager
+def transaction(conn: TransactedConnection, begin: str = "BEGIN") -> Iterator[None]:
+    """One transaction around the block: ``begin``, then COMMIT; on any error, COMMIT's
+    included, ROLLBACK where one is still open, and the error raised again. BaseException:
+    an interrupted migration leaves nothing half-done either."""
+    conn.execute(begin)
+    try:
+        yield
+        conn.execute("COMMIT")
+    except BaseException:
+        if conn.in_transaction:
+            conn.execute("ROLLBACK")
+        raise
 
 
 def integrity_errors() -> tuple[type[Exception], ...]:

@@ -27,6 +27,7 @@ import psycopg
 from psycopg import pq
 from psycopg.conninfo import conninfo_to_dict, make_conninfo
 
+from assistantx.store.connection import transaction
 from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore
 
 logger = logging.getLogger(__name__)
@@ -167,8 +168,7 @@ def migrate_postgres(conn: PgConnection, schema: Schema) -> int:
             f"{schema.name} has {len(schema.postgres)} PostgreSQL migrations for"
             f" {schema.version} versions: it cannot run on PostgreSQL"
         )
-    conn.execute("BEGIN")
-    try:
+    with transaction(conn):
         conn.execute("SELECT pg_advisory_xact_lock(?)", (_lock_key(schema.name),))
         conn.execute(
             "CREATE TABLE IF NOT EXISTS store_versions"
@@ -186,9 +186,4 @@ def migrate_postgres(conn: PgConnection, schema: Schema) -> int:
                 " ON CONFLICT (store) DO UPDATE SET version=excluded.version",
                 (schema.name, schema.version),
             )
-        conn.execute("COMMIT")
-    except BaseException:
-        if conn.in_transaction:
-            conn.execute("ROLLBACK")
-        raise
     return found

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal, TypeVar
 
-from assistantx.store.connection import Connection
+from assistantx.store.connection import Connection, transaction
 
 logger = logging.getLogger(__name__)
 
@@ -273,8 +273,7 @@ def connect(
 
 def migrate(conn: sqlite3.Connection, schema: Schema) -> int:
     """Run the migrations ``schema`` lacks in one transaction; returns the version before."""
-    conn.execute("BEGIN IMMEDIATE")
-    try:
+    with transaction(conn, "BEGIN IMMEDIATE"):
         conn.execute(
             "CREATE TABLE IF NOT EXISTS store_versions"
             " (store TEXT PRIMARY KEY, version INTEGER NOT NULL)"
@@ -290,11 +289,6 @@ def migrate(conn: sqlite3.Connection, schema: Schema) -> int:
                 "INSERT OR REPLACE INTO store_versions VALUES (?, ?)",
                 (schema.name, schema.version),
             )
-        conn.execute("COMMIT")
-    except BaseException:
-        if conn.in_transaction:
-            conn.execute("ROLLBACK")
-        raise
     return found
 
 

@@ -8,12 +8,6 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic import InstructionParser
-from helpers.clinic import clinic
-
-
-@pytest.fixture(scope="module")
-def parser() -> InstructionParser:
-    return InstructionParser(clinic())
 
 
 @pytest.mark.parametrize(
@@ -25,30 +19,34 @@ def parser() -> InstructionParser:
         "print my rota, it is due in May",
     ],
 )
-def test_a_date_is_not_a_person(parser: InstructionParser, text: str) -> None:
-    frame = parser.parse(text, "ines")
+def test_a_date_is_not_a_person(clinic_parser: InstructionParser, text: str) -> None:
+    frame = clinic_parser.parse(text, "ines")
     assert [(t.kind, t.recipient) for t in frame.tasks] == [("print", "ines")], (text, frame)
 
 
 def test_a_weekday_or_month_nobody_is_called_is_never_asked_about(
-    parser: InstructionParser,
+    clinic_parser: InstructionParser,
 ) -> None:
-    frame = parser.parse("bring the clipboard to May by Friday", "ines")
+    frame = clinic_parser.parse("bring the clipboard to May by Friday", "ines")
     assert [(t.item, t.recipient) for t in frame.tasks] == [("clipboard", "may")]
     for text in ("bring me Dawn's form from March", "bring me Hal's form by Friday"):
-        frame = parser.parse(text, "ines")
+        frame = clinic_parser.parse(text, "ines")
         assert "anyone called" not in (frame.question or ""), text
         assert len(frame.tasks) == 1, text
 
 
 def test_for_a_month_that_is_a_name_asks_which_and_the_answer_settles_it(
-    parser: InstructionParser,
+    clinic_parser: InstructionParser,
 ) -> None:
     text = "print the rota for May"
-    assert parser.parse(text, "ines").question == "Do you mean May Oduya, or the month of May?"
-    month = parser.parse_with_answers(text, "ines", ["the month"])
+    assert (
+        clinic_parser.parse(text, "ines").question == "Do you mean May Oduya, or the month of May?"
+    )
+    month = clinic_parser.parse_with_answers(text, "ines", ["the month"])
     assert [t.recipient for t in month.tasks] == ["ines"]
-    her = parser.parse_with_answers(text, "ines", ["May Oduya"])
+    her = clinic_parser.parse_with_answers(text, "ines", ["May Oduya"])
     assert [t.recipient for t in her.tasks] == ["may"]
     # "to May" and "May's" are the person
-    assert [t.recipient for t in parser.parse("take my form to May", "ines").tasks] == ["may"]
+    assert [t.recipient for t in clinic_parser.parse("take my form to May", "ines").tasks] == [
+        "may"
+    ]

@@ -7,12 +7,6 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic import InstructionParser
-from helpers.clinic import clinic
-
-
-@pytest.fixture(scope="module")
-def parser() -> InstructionParser:
-    return InstructionParser(clinic())
 
 
 @pytest.mark.parametrize(
@@ -30,9 +24,9 @@ def parser() -> InstructionParser:
     ],
 )
 def test_words_that_ask_for_nothing_move_nothing(
-    parser: InstructionParser, text: str, reply: str
+    clinic_parser: InstructionParser, text: str, reply: str
 ) -> None:
-    frame = parser.parse(text, "ines")
+    frame = clinic_parser.parse(text, "ines")
     assert not frame.tasks and frame.question is None, (text, frame)
     assert reply in (frame.decline or ""), (text, frame.decline)
 
@@ -47,6 +41,6 @@ def test_words_that_ask_for_nothing_move_nothing(
     ],
 )
 def test_a_request_beside_thanks_still_moves(
-    parser: InstructionParser, text: str, item: str
+    clinic_parser: InstructionParser, text: str, item: str
 ) -> None:
-    assert [t.item for t in parser.parse(text, "ines").tasks] == [item], text
+    assert [t.item for t in clinic_parser.parse(text, "ines").tasks] == [item], text

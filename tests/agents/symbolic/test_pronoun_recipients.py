@@ -8,12 +8,6 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic import InstructionParser
-from helpers.clinic import clinic
-
-
-@pytest.fixture(scope="module")
-def parser() -> InstructionParser:
-    return InstructionParser(clinic())
 
 
 @pytest.mark.parametrize(
@@ -27,12 +21,12 @@ def parser() -> InstructionParser:
     ],
 )
 def test_the_pronoun_is_the_person_in_need_not_the_lender(
-    parser: InstructionParser, text: str, task: tuple[str, str, str]
+    clinic_parser: InstructionParser, text: str, task: tuple[str, str, str]
 ) -> None:
-    frame = parser.parse(text, "ines")
+    frame = clinic_parser.parse(text, "ines")
     assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [task], (text, frame)
 
 
-def test_two_things_asked_for_in_one_breath_stay_two(parser: InstructionParser) -> None:
-    frame = parser.parse("bring me a clipboard and Rich's clipboard", "ines")
+def test_two_things_asked_for_in_one_breath_stay_two(clinic_parser: InstructionParser) -> None:
+    frame = clinic_parser.parse("bring me a clipboard and Rich's clipboard", "ines")
     assert [t.owner for t in frame.tasks] == [None, "rich"]

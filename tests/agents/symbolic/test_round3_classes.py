@@ -17,20 +17,17 @@ from assistantx.sim.run import run_in_sim
 from helpers.clinic import clinic
 
 
-@pytest.fixture(scope="module")
-def parser() -> InstructionParser:
-    return InstructionParser(clinic())
+def _tasks(
+    clinic_parser: InstructionParser, text: str
+) -> list[tuple[str, str | None, str | None, str]]:
+    return [(t.kind, t.item, t.owner, t.recipient) for t in clinic_parser.parse(text, "ines").tasks]
 
 
-def _tasks(parser: InstructionParser, text: str) -> list[tuple[str, str | None, str | None, str]]:
-    return [(t.kind, t.item, t.owner, t.recipient) for t in parser.parse(text, "ines").tasks]
-
-
-def test_a_spaced_dash_ends_a_statement(parser: InstructionParser) -> None:
-    assert _tasks(parser, "I'm on the ward all day - please print my rota") == [
+def test_a_spaced_dash_ends_a_statement(clinic_parser: InstructionParser) -> None:
+    assert _tasks(clinic_parser, "I'm on the ward all day - please print my rota") == [
         ("print", "file", "ines", "ines")
     ]
-    assert _tasks(parser, "my clipboard snapped - could you bring me Rich's?") == [
+    assert _tasks(clinic_parser, "my clipboard snapped - could you bring me Rich's?") == [
         ("transfer", "clipboard", "rich", "ines")
     ]
 
@@ -45,20 +42,22 @@ def test_a_spaced_dash_ends_a_statement(parser: InstructionParser) -> None:
     ],
 )
 def test_a_correction_replaces_what_it_corrects(
-    parser: InstructionParser, text: str, task: tuple[str, str | None, str]
+    clinic_parser: InstructionParser, text: str, task: tuple[str, str | None, str]
 ) -> None:
-    assert [(i, o, r) for _, i, o, r in _tasks(parser, text)] == [task], text
+    assert [(i, o, r) for _, i, o, r in _tasks(clinic_parser, text)] == [task], text
 
 
-def test_a_colleagues_possessive_is_not_a_product_word(parser: InstructionParser) -> None:
-    assert _tasks(parser, "could you bring me Chip's clipboard") == [
+def test_a_colleagues_possessive_is_not_a_product_word(clinic_parser: InstructionParser) -> None:
+    assert _tasks(clinic_parser, "could you bring me Chip's clipboard") == [
         ("transfer", "clipboard", "chip", "ines")
     ]
-    assert "can't get you any chips" in (parser.parse("bring me some chips", "ines").decline or "")
+    assert "can't get you any chips" in (
+        clinic_parser.parse("bring me some chips", "ines").decline or ""
+    )
 
 
-def test_a_container_after_a_statement_is_the_stated_item(parser: InstructionParser) -> None:
-    assert _tasks(parser, "I ran out of thermometers. Could you bring me a box?") == [
+def test_a_container_after_a_statement_is_the_stated_item(clinic_parser: InstructionParser) -> None:
+    assert _tasks(clinic_parser, "I ran out of thermometers. Could you bring me a box?") == [
         ("transfer", "thermometer", None, "ines")
     ]
 
@@ -67,9 +66,9 @@ def test_a_container_after_a_statement_is_the_stated_item(parser: InstructionPar
     "text", ["send my rota to Hal and to Dawn", "send my rota to Hal and Dawn"]
 )
 def test_a_file_goes_to_each_recipient_and_the_guard_agrees(
-    parser: InstructionParser, text: str
+    clinic_parser: InstructionParser, text: str
 ) -> None:
-    assert [t[3] for t in _tasks(parser, text)] == ["hal", "dawn"]
+    assert [t[3] for t in _tasks(clinic_parser, text)] == ["hal", "dawn"]
     trace = Trace(instruction_id="i", requester="ines", text=text, reasoner="t", started_at=0)
     stm = ShortTermMemory(instruction_id="i", requester="ines", text=text, trace=trace)
     assert named_recipients(clinic(), stm) == {"hal", "dawn"}
@@ -84,13 +83,15 @@ async def test_a_pronoun_recipient_whose_own_item_broke_gets_the_requesters() ->
     assert run.sim.world.check({"holds": ["hal", "clipboard:ines"]})
 
 
-def test_a_role_title_in_an_alias_names_its_holder(parser: InstructionParser) -> None:
+def test_a_role_title_in_an_alias_names_its_holder(clinic_parser: InstructionParser) -> None:
     # Rich's alias is "Manager Rich": "by the manager" is Rich, and the guard agrees
     text = "could you get my form signed by the manager"
-    assert [(t.kind, t.actor) for t in parser.parse(text, "ines").tasks] == [("sign", "rich")]
+    assert [(t.kind, t.actor) for t in clinic_parser.parse(text, "ines").tasks] == [
+        ("sign", "rich")
+    ]
     trace = Trace(instruction_id="i", requester="ines", text=text, reasoner="t", started_at=0)
     stm = ShortTermMemory(instruction_id="i", requester="ines", text=text, trace=trace)
     assert named_recipients(clinic(), stm) == {"rich"}
     # followed by a name, the title is a title: "Manager Rich", not two people
-    frame = parser.parse("take my form to Manager Rich", "ines")
+    frame = clinic_parser.parse("take my form to Manager Rich", "ines")
     assert [t.recipient for t in frame.tasks] == ["rich"]

@@ -4,18 +4,10 @@ signed my form yesterday") are a statement, and nothing moves (issue 23)."""
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from _offices import parser as office_parser
 
 from assistantx.agents.symbolic import InstructionParser
-from helpers.clinic import clinic
-
-
-@functools.cache
-def clinic_parser() -> InstructionParser:
-    return InstructionParser(clinic())
 
 
 @pytest.mark.parametrize(
@@ -27,8 +19,10 @@ def clinic_parser() -> InstructionParser:
         "I wish Hal would sign my form",
     ],
 )
-def test_a_wish_that_a_person_would_sign_is_a_request_for_them_to(text: str) -> None:
-    frame = clinic_parser().parse(text, "dawn")
+def test_a_wish_that_a_person_would_sign_is_a_request_for_them_to(
+    clinic_parser: InstructionParser, text: str
+) -> None:
+    frame = clinic_parser.parse(text, "dawn")
     assert [(t.kind, t.owner, t.actor) for t in frame.tasks] == [("sign", "dawn", "hal")]
 
 
@@ -40,6 +34,8 @@ def test_the_default_office_too() -> None:
 
 
 @pytest.mark.parametrize("text", ["Hal signed my form yesterday", "Hal signs forms on Fridays"])
-def test_the_same_work_told_as_done_moves_nothing(text: str) -> None:
-    frame = clinic_parser().parse(text, "dawn")
+def test_the_same_work_told_as_done_moves_nothing(
+    clinic_parser: InstructionParser, text: str
+) -> None:
+    frame = clinic_parser.parse(text, "dawn")
     assert frame.tasks == [] and frame.decline is not None

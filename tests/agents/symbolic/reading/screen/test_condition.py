@@ -1,0 +1,24 @@
+"""Condition: says when, never what to do; a need that may come later is not for now."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.condition import condition
+from reading.screen._judge import Judge
+
+
+def test_an_if_clause_is_a_condition_with_what_it_names_as_context(judged: Judge) -> None:
+    found = judged(condition, "if Wang isn't using her stapler, could you bring it over?", "lee")
+    assert found is not None and found.verdict == "condition"
+    assert found.message == "Noted; I'll keep it in mind."
+    assert "person:wang" in found.context
+
+
+def test_a_need_that_may_come_later_is_not_for_now(judged: Judge) -> None:
+    found = judged(condition, "I might need a stapler later", "lee")
+    assert found is not None
+    assert found.meaning == "a need that may come later, not a request for now"
+    assert found.message == "Noted. Tell me when you need it and I'll bring it then."
+
+
+def test_a_plain_request_is_no_condition(judged: Judge) -> None:
+    assert judged(condition, "bring me a stapler", "lee") is None

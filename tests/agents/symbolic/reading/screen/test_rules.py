@@ -1,0 +1,40 @@
+"""The table: every verdict has its rule, tried in priority order; the first match decides."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.rules import RULES
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from reading.screen._judge import Read
+
+
+def test_the_rules_in_priority_order() -> None:
+    assert [verdict for verdict, _ in RULES] == [
+        "withdrawn",
+        "note",
+        "exclusion",
+        "wish",
+        "thanks",
+        "condition",
+        "negated",
+        "destructive",
+        "fact",
+        "question",
+        "statement",
+        "unsupported",
+    ]
+
+
+def first_verdict(terms: Terms, message: Read, text: str) -> str | None:
+    msg = message(text)
+    for _, rule in RULES:
+        found = rule(terms, msg, msg.pieces[0], "lee")
+        if found is not None:
+            return found.verdict
+    return None
+
+
+def test_the_first_rule_that_matches_decides(terms: Terms, message: Read) -> None:
+    # "don't" negates, but the wish about other people is tried first
+    assert first_verdict(terms, message, "don't let anyone use my pen") == "wish"
+    assert first_verdict(terms, message, "don't bring me a pen") == "negated"
+    assert first_verdict(terms, message, "bring me a pen") is None  # a request: no rule

@@ -1,0 +1,77 @@
+"""What each piece of a message does, from its words: a request, a question (polite or for
+information), thanks, a wish, a withdrawal, a statement, someone else's need."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.speech import SpeechActs, content
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+
+
+@pytest.fixture(scope="module")
+def acts(terms: Terms) -> SpeechActs:
+    return terms.acts
+
+
+def test_openers_and_stance_are_passed_over() -> None:
+    assert content(split_words("hi, to be honest, bring me a pen")) == ["bring", "me", "a", "pen"]
+    assert content(split_words("hi")) == []
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("could you bring me a stapler", "polite"),
+        ("may I borrow a pen", "polite"),
+        ("who has a tape measure", "info"),
+        ("is the printer working", "info"),
+        ("can you print in colour", "info"),  # what it can do: nothing to act on
+        ("bring me a stapler", None),
+    ],
+)
+def test_a_question_is_polite_or_for_information(
+    acts: SpeechActs, text: str, kind: str | None
+) -> None:
+    assert acts.question(split_words(text), asks=True) == kind
+
+
+@pytest.mark.parametrize(
+    ("text", "asks_for_something"),
+    [
+        ("bring me a stapler", True),
+        ("I need a pen", True),
+        ("could you lend me some scissors", True),
+        ("my data cable is too short", False),
+        ("thanks for the pen", False),
+    ],
+)
+def test_request_wording(acts: SpeechActs, text: str, asks_for_something: bool) -> None:
+    assert acts.request(split_words(text)) is asks_for_something
+
+
+def test_a_statement_is_a_subject_and_a_state_before_any_request(acts: SpeechActs) -> None:
+    assert acts.statement(split_words("I spilled my tea"))
+    assert not acts.statement(split_words("bring me some wipes"))
+
+
+def test_someone_elses_need_said_as_a_fact(acts: SpeechActs, terms: Terms) -> None:
+    assert acts.need(split_words("Min needs scissors"), terms.self_words)
+    assert not acts.need(split_words("I need scissors"), terms.self_words)
+
+
+def test_thanks_and_thanks_to_pass_on(acts: SpeechActs) -> None:
+    mine = acts.thanks(split_words("thanks for the pen"))
+    relayed = acts.thanks(split_words("say thanks to Wang for the pen"))
+    assert mine is not None and not mine.relay
+    assert relayed is not None and relayed.relay
+    assert acts.thanks(split_words("bring me a pen")) is None
+
+
+def test_withdrawal_and_wishes(acts: SpeechActs) -> None:
+    assert acts.withdrawal(split_words("forget about the scissors"))
+    assert not acts.withdrawal(split_words("bring me the scissors"))
+    assert acts.wish(split_words("nobody take my mug"))
+    assert acts.world_wish(split_words("I wish the printer were faster"))
+    assert not acts.wish(split_words("bring me my mug"))
