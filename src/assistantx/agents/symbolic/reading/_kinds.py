@@ -22,6 +22,11 @@ _SEND_WORDS = english.words("send_words")
 # The prepositions that take an item to a facility ("on the charging shelf", "into the oven").
 _TO_FACILITY = english.words("to_facility_prepositions")
 _FROM_FACILITY = english.words("from_facility_prepositions")
+# The words that make a tool the instrument of a service on a paper ("stamped *with* the
+# embosser", "the stamp *on* it"), and the participles that ask for the service itself.
+_INSTRUMENT = english.words("instrument_prepositions")
+_ONTO = english.words("onto_prepositions")
+_SERVICE_PARTICIPLES = english.words("service_participles")
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
 
@@ -46,6 +51,7 @@ class Scene:
     seal_tool: str | None = None  # the office's item type that stamps (ItemType.seals)
     file_type: str | None = None  # the office's electronic file type
     treat_asked: bool = False  # a treat service's verb, or an item put at its facility
+    signable: str | None = None  # the office's paper a person signs or stamps (signable)
 
     @property
     def recipient(self) -> str:
@@ -81,10 +87,49 @@ def _seal_items(s: Scene) -> list[Mention]:
     return [m for m in s.clause.mentions if m.kind == "item" and m.id == s.seal_tool]
 
 
+def _tool_used(s: Scene) -> bool:
+    """Whether the clause uses the stamping tool on a paper rather than asking for the tool:
+    "stamped with the embosser", "needs the stamp on it", "get it stamped". The tool is the
+    instrument after "with"/"using", or what goes "on" the paper; a participle of the
+    service ("stamped", "sealed") asks for the service itself. An owned tool read this way
+    is never an object to hand over, whatever paper noun the office failed to list."""
+    if s.seal_tool is None:
+        return False
+    mentions = s.clause.mentions
+    for n, m in enumerate(mentions):
+        tool = (m.kind == "item" and m.id == s.seal_tool) or (m.kind == "cue" and "seal" in m.ids)
+        if not tool:
+            continue
+        k = n - 1
+        while k >= 0 and mentions[k].possessive:  # "with *his* embosser"
+            k -= 1
+        before = mentions[k] if k >= 0 else None
+        after = mentions[n + 1] if n + 1 < len(mentions) else None
+        if before is not None and before.kind == "word" and before.ids[0] in _INSTRUMENT:
+            return True
+        if m.kind == "cue" and before is not None and before.kind == "word":
+            if before.ids[0] == "to":  # "get Tobias to stamp my lease": the service
+                return True
+        if after is not None and after.kind == "word" and after.ids[0] in _ONTO:
+            return True
+        if m.kind == "cue" and m.text.lower() in _SERVICE_PARTICIPLES:
+            return True
+    return False
+
+
 def _seal(s: Scene) -> Task:
-    assert s.doc is not None
     sealer = next((s.roles.owners.get(m.start) for m in _seal_items(s)), None)
     sealer = sealer or next(iter(s.roles.actor + s.roles.bare), None)
+    if s.doc is None:
+        # "get my lease stamped with the embosser": a paper the office does not list by
+        # that word is its signable paper, the requester's unless the clause says whose
+        return Task(
+            kind="seal",
+            item=s.signable,
+            owner=s.requester,
+            recipient=s.recipient,
+            actor=sealer,
+        )
     return Task(
         kind="seal",
         item=s.doc.id,
@@ -129,7 +174,8 @@ KIND_RULES: tuple[KindRule, ...] = (
     KindRule("a signature, whatever else is said", lambda s: "sign" in s.cues, _sign),
     KindRule(
         "a seal on a document (the seal named or asked for)",
-        lambda s: ("seal" in s.cues or bool(_seal_items(s))) and s.doc is not None,
+        lambda s: ("seal" in s.cues or bool(_seal_items(s)))
+        and (s.doc is not None or (s.signable is not None and _tool_used(s))),
         _seal,
     ),
     KindRule(
@@ -238,6 +284,7 @@ class TaskReader:
             self.office.seal_tool(),
             self.office.file_type(),
             treat_asked,
+            self.office.signable_type(),
         )
 
     def tasks(

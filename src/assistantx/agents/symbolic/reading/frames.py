@@ -116,8 +116,17 @@ class FrameReader:
         """Whether ``task`` only names again, for the same person, the item ``earlier``
         already works on (its file, its item): a purpose or a reason, not a new errand. A
         task that moves the item on to someone else, or someone else's, is new."""
-        if earlier.recipient != task.recipient or earlier.kind == task.kind or task.item is None:
+        if earlier.recipient != task.recipient or task.item is None:
             return False
+        if earlier.kind == task.kind:
+            # "fetch Bill's tripod? I need the tripod": anyone's item of the kind already
+            # on its way to the same person is the need said again, not a second errand
+            return (
+                task.kind == "transfer"
+                and task.owner is None
+                and task.source is None
+                and earlier.item == task.item
+            )
         if task.kind == "send_file":
             return task.owner == task.recipient and self._covers(earlier, task.item)
         return (

@@ -60,6 +60,12 @@ from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 _WHERE_TO = "Where should I "  # the question for a send-out service's place outside
+# The question when a send-out service's destination is a colleague's name.
+_OUT_OR_IN = "Should I send it out by "
+# The words of an answer to it that choose the hand-over inside the office.
+_INSIDE_WORDS = frozenset(
+    {"bring", "hand", "give", "take", "deliver", "desk", "him", "her", "them", "here", "inside"}
+)
 # The words of the phrases that point back to an item named before ("another", "a few more").
 _BACK_WORDS = english.words("another_one")
 # Words that end the name of a thing asked for: a reason, a courtesy ("a dispatcher please").
@@ -88,7 +94,9 @@ class InstructionParser:
         }
 
     # -- public --------------------------------------------------------------------------
-    def parse(self, text: str, requester: str, *, confirmed: bool = False) -> TaskFrame:
+    def parse(
+        self, text: str, requester: str, *, confirmed: bool = False, sent_out: bool = False
+    ) -> TaskFrame:
         """The frame of a request: screened first (speech acts, withdrawn, negated,
         destructive, facts, unsupported services; ``screen``), then the tasks read from what
         is left. ``confirmed``: the requester already said yes to the restated reading."""
@@ -117,7 +125,7 @@ class InstructionParser:
             readings, requester, holder(whole, requester), named_items(whole, requester)
         )
         if frame.understood:
-            frame = self._with_operations(frame, lexed, readings.outside)
+            frame = self._with_operations(frame, lexed, readings.outside, sent_out=sent_out)
         if frame.question == NOT_UNDERSTOOD:
             unknown = self._unknown_item(readings.tokens, readings.mentions)
             if unknown is not None:
@@ -152,7 +160,7 @@ class InstructionParser:
         )
 
     def _with_operations(
-        self, frame: TaskFrame, lexed: Lexed, outside: Outside | None
+        self, frame: TaskFrame, lexed: Lexed, outside: Outside | None, *, sent_out: bool = False
     ) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say."""
@@ -203,6 +211,16 @@ class InstructionParser:
                         question=f"{_WHERE_TO}{op.name} it to? Please give the number "
                         "or the name of the place.",
                     )
+                colleague = self._colleague(where) if not sent_out else None
+                if colleague is not None:
+                    # "courier my plan to Bill" where Bill works here: sending it out of the
+                    # office and handing it to him are different physical actions; ask
+                    name = self.office.person(colleague).name
+                    return TaskFrame(
+                        requester=frame.requester,
+                        question=f"{_OUT_OR_IN}{op.name} to {where} outside the office, "
+                        f"or bring it to {name} here?",
+                    )
                 t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
@@ -247,6 +265,9 @@ class InstructionParser:
         for answer in answers:
             if frame.understood or frame.decline is not None:
                 break
+            if frame.question is not None and frame.question.startswith(_OUT_OR_IN):
+                frame = self._out_or_in(text, requester, answer, frame)
+                continue
             if frame.question is not None and "Shall I" in frame.question:
                 yes_no = offer_stance(answer)
                 if yes_no == "yes":
@@ -277,6 +298,49 @@ class InstructionParser:
             alone = self.parse(answer, requester)
             frame = alone if alone.understood else combined
         return frame
+
+    def _colleague(self, where: str) -> str | None:
+        """The one colleague a send-out destination names and nothing else ("Bill", "Bill
+        Osei"), None for a place outside ("the county land registry")."""
+        tokens = self.lex.tokens(where)
+        mentions = [m for m in self.lex.scan(tokens) if m.kind != "word"]
+        if len(mentions) != 1 or mentions[0].kind != "person" or len(mentions[0].ids) != 1:
+            return None
+        rest = [t.word for t in tokens[: mentions[0].start]] + [
+            t.word for t in tokens[mentions[0].end :]
+        ]
+        return mentions[0].ids[0] if set(rest) <= COMMON else None
+
+    def _out_or_in(self, text: str, requester: str, answer: str, asked: TaskFrame) -> TaskFrame:
+        """The answer to "send it out by courier to Bill, or bring it to Bill here?": the
+        operation's verb or "out" sends it out as written; a hand-over word or the colleague's
+        name brings it to them instead; anything else leaves the question open."""
+        out = self.parse(text, requester, sent_out=True)
+        words = {t.word for t in self.lex.tokens(answer)}
+        verbs = {w for op in self.office.operations if op.sends_out for w in self._op_words[op.id]}
+        if words & (verbs | {"out", "outside"}):
+            return out
+        named = {i for m in self.lex.scan(self.lex.tokens(answer)) for i in m.ids}
+        sent = [t for t in out.tasks if t.destination is not None]
+        if not sent:
+            return asked
+        colleague = self._colleague(sent[0].destination or "")
+        if colleague is None or not (words & _INSIDE_WORDS or colleague in named):
+            return asked
+        inside = [
+            t.model_copy(
+                update={
+                    "kind": "transfer",
+                    "operation": None,
+                    "destination": None,
+                    "recipient": colleague,
+                }
+            )
+            if t.destination is not None
+            else t
+            for t in out.tasks
+        ]
+        return out.model_copy(update={"tasks": inside})
 
     def _choosing(self, chosen: dict[str, Reading]) -> InstructionParser:
         """The same stages, with a lexicon that reads the name words the requester was asked

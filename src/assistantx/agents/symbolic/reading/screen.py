@@ -44,12 +44,13 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs, content
 from assistantx.core import language
 from assistantx.core.english import entries_of
@@ -69,6 +70,10 @@ _CORRECTION = re.compile(
     r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b)[,:]?\s*",
     re.IGNORECASE,
 )
+# "bring me the… actually, just print it": after a trailing-off, "actually" corrects too.
+_ELLIPSIS_ACTUALLY = re.compile(r"(?:\.{2,}|…)\s*actually\b[,:]?\s*(?:no\b[,.!]?\s*)?", re.I)
+# The words before a correction's own request verb ("just", "please", "rather").
+_CORRECTION_FILLERS = frozenset({"just", "please", "rather", "instead", "simply", "only", "can", "you", "could"})
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
 _DETERMINERS = english_words("screen_determiners")
 
@@ -296,13 +301,23 @@ class RequestScreen:
         """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
         correction of one person or item right after it is said replaces it; the retracted
         one is never acted on (nor is the whole message dropped as withdrawn)."""
-        match = _CORRECTION.search(text)
+        match = _CORRECTION.search(text) or _ELLIPSIS_ACTUALLY.search(text)
         if match is None:
             return text, []
         before, after = text[: match.start()], text[match.end() :]
         fix = re.split(r"[.!?;\n]", after, maxsplit=1)[0]
         rest = after[len(fix) :]
         tokens = self.lex.tokens(fix)
+        if self._opens_request(tokens):
+            # "fetch Bill's tripod... actually, no, just print my draft": a correction that
+            # says a request of its own withdraws the request it breaks off; the withdrawn
+            # verb never runs (what came before that request's sentence stays)
+            kept = _SENTENCE_END.split(before.rstrip(" .…,;-–—"))
+            cut = before.rstrip(" .…,;-–—").rfind(kept[-1]) if kept[-1] else len(before)
+            dropped = before[cut:].strip()
+            fixed = before[:cut] + after
+            meaning = f"withdraws {dropped!r}, asks instead"
+            return fixed, [Evidence(words=text[match.start() :].strip(), meaning=meaning)]
         # "..., sorry, his laser, not the ruler": what is rejected after it says which one
         # the correction replaces; the correction itself is the part before "not"
         cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
@@ -329,6 +344,14 @@ class RequestScreen:
             said = self.office.item_type(new.ids[0]).name
         fixed = before[: old.start()] + said + before[old.end() :] + rest
         return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+    def _opens_request(self, tokens: Sequence[Token]) -> bool:
+        """Whether a correction's words open with a request verb of their own ("just print
+        my draft", "please bind my plan instead"), not a person or an item alone."""
+        words = [t.word for t in tokens if t.word not in _CORRECTION_FILLERS]
+        return bool(words) and (
+            words[0] in self.lex.cue_words or words[0] in self.lex.operation_words
+        ) and self.acts.request(words)
 
     def _spellings(self, kind: str, text: str) -> set[str]:
         """How the people (or items) ``text`` names are written there."""

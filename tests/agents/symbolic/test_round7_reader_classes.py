@@ -1,0 +1,322 @@
+"""Blind round 7's reader classes, by mechanism, on sentences of our own against a land
+surveyors' practice no sentence was written for (the round's law firm and its sentences were
+never read). Only what is asked for moves; a tool used on a paper is never handed over; a
+request whose readings lead to different physical actions is asked about first."""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Iterator
+
+import pytest
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core import task_kinds
+from assistantx.core.office import Office
+from assistantx.core.task_kinds import KindSpec, Step
+from assistantx.core.task_schema import TaskFrame
+from helpers.surveyors import surveyors
+
+Row = tuple[str, str | None, str | None, str]
+
+
+@functools.cache
+def _parser() -> InstructionParser:
+    return InstructionParser(surveyors())
+
+
+def _frame(text: str, who: str = "callum") -> TaskFrame:
+    return _parser().parse(text, who)
+
+
+def _tasks(text: str, who: str = "callum") -> list[Row]:
+    return [(t.kind, t.item, t.owner, t.recipient) for t in _frame(text, who).tasks]
+
+
+def _ops(text: str, who: str = "callum") -> list[tuple[str, str | None, str]]:
+    return [(t.kind, t.operation, t.recipient) for t in _frame(text, who).tasks]
+
+
+def _moves_nothing(frame: TaskFrame) -> None:
+    assert frame.tasks == [], frame.tasks
+
+
+# -- 1: a negation carried by a light verb, with its reason ----------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "don't bother bringing me the spirit level, Otto's lending me his",
+        "don't bother fetching a tripod, Bill is driving me to the site",
+        "no need to fetch the measuring tape, I found mine in the van",
+        "please don't trouble yourself getting Noor's level, we postponed the visit",
+        "Don't bother with the tripod, the survey is cancelled",
+    ],
+)
+def test_a_negated_errand_with_its_reason_moves_nothing(text: str) -> None:
+    frame = _frame(text)
+    _moves_nothing(frame)
+    assert frame.question is None and frame.decline is not None
+    assert frame.decline_outcome == "done"
+
+
+def test_a_request_after_the_negated_errand_is_still_read() -> None:
+    text = "don't bother bringing the tripod, just bring me the spirit level please"
+    assert _tasks(text) == [("transfer", "level", None, "callum")]
+
+
+# -- 2: a failing item and "might need a new one" is offered, not fetched --------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my tripod is wobbly, I might need a new one",
+        "The measuring tape is fraying. might need another one",
+        "my spirit level keeps giving odd readings, I may need a new one",
+    ],
+)
+def test_a_failing_item_with_a_possible_need_is_offered(text: str) -> None:
+    frame = _frame(text)
+    _moves_nothing(frame)
+    assert frame.question is not None and "Shall I" in frame.question
+
+
+def test_the_offer_is_carried_out_on_yes_and_dropped_on_no() -> None:
+    text = "my tripod is wobbly, I might need a new one"
+    yes = _parser().parse_with_answers(text, "callum", ["yes please"])
+    assert [(t.kind, t.item, t.recipient) for t in yes.tasks] == [
+        ("transfer", "tripod", "callum")
+    ]
+    no = _parser().parse_with_answers(text, "callum", ["no, it's fine for now"])
+    assert no.tasks == [] and no.decline_outcome == "done"
+
+
+def test_a_need_on_a_condition_is_still_only_noted() -> None:
+    frame = _frame("if my tripod breaks I might need a new one")
+    _moves_nothing(frame)
+    assert frame.question is None and frame.decline is not None
+
+
+# -- 3: a stamping tool used on a paper is a service, never a hand-over ----------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can you get my lease stamped with the embosser",
+        "my affidavit needs the chartered stamp on it",
+        "the will needs the stamp on it please",
+        "please get my plan stamped with the practice seal",
+        "could my tenancy agreement get the embosser on it",
+    ],
+)
+def test_a_tool_used_on_a_paper_stamps_the_paper(text: str) -> None:
+    assert _tasks(text) == [("seal", "plan", "callum", "callum")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "please get it stamped with the embosser",
+        "it needs the stamp on it",
+        "get Tobias to stamp my lease with his embosser",
+        "I need this stamped with the chartered stamp",
+    ],
+)
+def test_the_stamping_tool_is_never_handed_over_for_a_paper(text: str) -> None:
+    """Whatever else is read, the owned tool named as what stamps a paper does not move."""
+    frame = _frame(text)
+    assert not [t for t in frame.tasks if t.kind == "transfer" and t.item == "stamp"], frame
+    assert frame.tasks or frame.question
+
+
+def test_the_stamper_named_is_the_one_asked() -> None:
+    frame = _frame("get Tobias to stamp my lease with his embosser")
+    assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
+        ("seal", "plan", "callum", "tobias")
+    ]
+
+
+@pytest.mark.parametrize("text", ["bring me the embosser", "could I borrow Ines's stamp"])
+def test_the_tool_asked_for_itself_is_still_fetched(text: str) -> None:
+    assert [(t.kind, t.item) for t in _frame(text).tasks] == [("transfer", "stamp")]
+
+
+# -- 4: operations of one machine told apart by their gerund, else asked -----------------------
+@pytest.mark.parametrize(
+    ("text", "op"),
+    [
+        ("my plan needs binding", "bind"),
+        ("my contract wants scanning", "scan"),
+        ("can you put my plan through the copier to scan it", "scan"),
+        ("please take my survey plan to the copier, it needs binding", "bind"),
+        ("take my certificate to the photocopier for copying", "copy"),
+        ("my plan needs scanning on the copier", "scan"),
+    ],
+)
+def test_the_operation_is_the_one_its_verb_or_gerund_names(text: str, op: str) -> None:
+    assert [(t.operation, t.item) for t in _frame(text).tasks] == [(op, "plan")]
+
+
+@pytest.mark.parametrize("text", ["take my plan to the copier", "put my contract in the copier"])
+def test_a_machine_of_several_operations_named_alone_is_asked_about(text: str) -> None:
+    frame = _frame(text)
+    _moves_nothing(frame)
+    assert frame.question is not None
+    assert all(op in frame.question for op in ("copy", "scan", "bind")), frame.question
+
+
+# -- 5: a modifier that is another item's word --------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "row"),
+    [
+        ("give Noor my draft contract", ("transfer", "plan", "callum", "noor")),
+        ("please bring Bill the draft certificate from Ines", ("transfer", "plan", "ines", "bill")),
+    ],
+)
+def test_an_item_word_before_another_item_modifies_it(text: str, row: Row) -> None:
+    assert _tasks(text) == [row]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["scan my draft contract", "could you scan my contract to PDF", "send my plan to PDF"],
+)
+def test_a_paper_to_pdf_is_its_scan(text: str) -> None:
+    assert [(t.kind, t.item, t.operation) for t in _frame(text).tasks] == [
+        ("copy", "plan", "scan")
+    ]
+
+
+# -- 6: "I need a PDF of it for <someone>" names the scan's recipient ------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "scan my plan, I need a PDF of it for Noor",
+        "please scan my certificate. Noor needs a PDF of it",
+        "can you scan my contract? I need a PDF of it for Noor",
+    ],
+)
+def test_the_pdf_of_a_scan_goes_to_whom_it_is_for(text: str) -> None:
+    assert _ops(text) == [("copy", "scan", "noor")]
+
+
+def test_a_scan_for_oneself_stays_with_the_requester() -> None:
+    assert _ops("scan my plan, I need a PDF of it for the meeting") == [
+        ("copy", "scan", "callum")
+    ]
+
+
+# -- 7: a self-correction after an ellipsis withdraws the first verb -------------------------
+@pytest.mark.parametrize(
+    ("text", "row"),
+    [
+        ("fetch Bill's tripod… actually, no, just print my draft", ("print", "drawing")),
+        ("bring me Noor's level... actually no, just scan my plan", ("copy", "plan")),
+        ("get me the tripod... no wait, just bind my plan", ("heat", "plan")),
+    ],
+)
+def test_only_the_corrected_request_runs(text: str, row: tuple[str, str]) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item) for t in frame.tasks] == [row]
+    assert all(t.owner in (None, "callum") for t in frame.tasks)
+
+
+# -- 8: "I need it" after a fetch is the same errand ---------------------------------------
+@pytest.mark.parametrize(
+    ("text", "row"),
+    [
+        ("could you fetch Bill's tripod? I need the tripod", ("transfer", "tripod", "bill")),
+        ("bring me Noor's spirit level. I need it", ("transfer", "level", "noor")),
+        (
+            "get me Callum's measuring tape please. I need the tape for the site visit",
+            ("transfer", "tape", "callum"),
+        ),
+        ("can you get me a tripod? I need one for the site", ("transfer", "tripod", None)),
+    ],
+)
+def test_the_need_said_again_is_no_second_task(text: str, row: tuple[str, str, str]) -> None:
+    who = "otto"
+    assert [(t.kind, t.item, t.owner) for t in _frame(text, who).tasks] == [row]
+
+
+def test_a_need_of_someone_else_after_a_fetch_is_still_theirs() -> None:
+    rows = _tasks("bring me Bill's tripod. Noor needs the spirit level too", "otto")
+    assert ("transfer", "tripod", "bill", "otto") in rows
+    assert any(r[1] == "level" and r[3] == "noor" for r in rows)
+
+
+# -- 9: a send-out service "to" a colleague asks which was meant -----------------------------
+@pytest.mark.parametrize(
+    ("text", "verb"),
+    [("courier my plan to Bill", "courier"), ("fax my contract to Noor", "fax")],
+)
+def test_sending_out_to_a_colleague_is_asked(text: str, verb: str) -> None:
+    frame = _frame(text)
+    _moves_nothing(frame)
+    assert frame.question is not None and verb in frame.question.lower()
+    assert "bring it to" in frame.question
+
+
+def test_the_answer_chooses_the_hand_over_or_the_send_out() -> None:
+    text = "courier my plan to Bill"
+    inside = _parser().parse_with_answers(text, "callum", ["just bring it to him"])
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in inside.tasks] == [
+        ("transfer", "plan", "callum", "bill")
+    ]
+    outside = _parser().parse_with_answers(text, "callum", ["send it out by courier"])
+    assert [(t.operation, t.destination) for t in outside.tasks] == [("courier", "Bill")]
+
+
+def test_a_place_outside_is_sent_without_asking() -> None:
+    frame = _frame("courier my plan to the county land registry")
+    assert [(t.operation, t.destination) for t in frame.tasks] == [
+        ("courier", "the county land registry")
+    ]
+
+
+# -- 10: a task kind added to the live table is read from its words ------------------------
+_ENDORSE = KindSpec(
+    id="endorse",
+    parts=("endorse",),
+    milestone="endorsed",
+    by_person=True,
+    works_on="signable",
+    ask="endorse {whose}",
+    purpose="endorse",
+    doer="endorser",
+    steps=(Step("source", "deposit"), Step("doer", "endorse"), Step("recipient", "collect")),
+    locker="take {item} out, endorse it and put it back",
+    todo="get {whose} endorsed by {by}",
+    done="{whose} was endorsed by {by} and handed to {to}",
+    words=("endorse", "endorsement"),
+)
+
+
+@pytest.fixture
+def endorse() -> Iterator[Office]:
+    task_kinds.add(_ENDORSE)
+    yield surveyors()
+    task_kinds.remove(_ENDORSE.id)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "please get my plan endorsed by Noor",
+        "can you get Noor to endorse my certificate",
+        "I need Noor's endorsement on my contract",
+    ],
+)
+def test_an_added_kind_is_read_by_its_words(endorse: Office, text: str) -> None:
+    frame = InstructionParser(endorse).parse(text, "callum")
+    assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
+        ("endorse", "plan", "callum", "noor")
+    ]
+
+
+def test_an_added_kind_with_no_doer_asks_who(endorse: Office) -> None:
+    frame = InstructionParser(endorse).parse("please get my plan endorsed", "callum")
+    _moves_nothing(frame)
+    assert frame.question is not None and "Who" in frame.question
+
+
+def test_the_kind_is_unknown_again_once_removed() -> None:
+    frame = InstructionParser(surveyors()).parse("please get my plan endorsed by Noor", "callum")
+    assert not [t for t in frame.tasks if t.kind == "endorse"]
