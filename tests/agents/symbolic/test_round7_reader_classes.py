@@ -82,9 +82,7 @@ def test_a_failing_item_with_a_possible_need_is_offered(text: str) -> None:
 def test_the_offer_is_carried_out_on_yes_and_dropped_on_no() -> None:
     text = "my tripod is wobbly, I might need a new one"
     yes = _parser().parse_with_answers(text, "callum", ["yes please"])
-    assert [(t.kind, t.item, t.recipient) for t in yes.tasks] == [
-        ("transfer", "tripod", "callum")
-    ]
+    assert [(t.kind, t.item, t.recipient) for t in yes.tasks] == [("transfer", "tripod", "callum")]
     no = _parser().parse_with_answers(text, "callum", ["no, it's fine for now"])
     assert no.tasks == [] and no.decline_outcome == "done"
 
@@ -179,9 +177,7 @@ def test_an_item_word_before_another_item_modifies_it(text: str, row: Row) -> No
     ["scan my draft contract", "could you scan my contract to PDF", "send my plan to PDF"],
 )
 def test_a_paper_to_pdf_is_its_scan(text: str) -> None:
-    assert [(t.kind, t.item, t.operation) for t in _frame(text).tasks] == [
-        ("copy", "plan", "scan")
-    ]
+    assert [(t.kind, t.item, t.operation) for t in _frame(text).tasks] == [("copy", "plan", "scan")]
 
 
 # -- 6: "I need a PDF of it for <someone>" names the scan's recipient ------------------------
@@ -198,9 +194,7 @@ def test_the_pdf_of_a_scan_goes_to_whom_it_is_for(text: str) -> None:
 
 
 def test_a_scan_for_oneself_stays_with_the_requester() -> None:
-    assert _ops("scan my plan, I need a PDF of it for the meeting") == [
-        ("copy", "scan", "callum")
-    ]
+    assert _ops("scan my plan, I need a PDF of it for the meeting") == [("copy", "scan", "callum")]
 
 
 # -- 7: a self-correction after an ellipsis withdraws the first verb -------------------------

@@ -14,9 +14,9 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.lexicon import Mention
-from assistantx.core import english
+from assistantx.core import english, task_kinds
 from assistantx.core.office import Office, OperationShape
-from assistantx.core.task_schema import FILE_KIND, Task
+from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task
 
 _SEND_WORDS = english.words("send_words")
 # The prepositions that take an item to a facility ("on the charging shelf", "into the oven").
@@ -72,10 +72,20 @@ class KindRule:
     task: Callable[[Scene], Task]
 
 
+def person_work(cues: set[str]) -> str | None:
+    """The kind of work a named person does that the cues ask for: a signature, or a kind
+    added to the table with its words ("endorse"); kinds whose doer needs a tool (the seal)
+    are read by their own rule."""
+    return next(
+        (k for k in task_kinds.person_kinds() if k in cues and not task_kinds.needs_tool(k)),
+        None,
+    )
+
+
 def _sign(s: Scene) -> Task:
     actor = next(iter(s.roles.actor + s.roles.bare + s.roles.recipient), None)
     return Task(
-        kind="sign",
+        kind=person_work(s.cues) or "sign",
         item=s.doc.id if s.doc else None,
         owner=s.owner(s.doc) or s.requester,
         recipient=s.requester if actor in s.roles.recipient else s.recipient,
@@ -171,11 +181,17 @@ def _copy(s: Scene) -> Task:
 
 # One task for the whole clause: highest priority first.
 KIND_RULES: tuple[KindRule, ...] = (
-    KindRule("a signature, whatever else is said", lambda s: "sign" in s.cues, _sign),
+    KindRule(
+        "a person's work (a signature, a kind of the table), whatever else is said",
+        lambda s: person_work(s.cues) is not None,
+        _sign,
+    ),
     KindRule(
         "a seal on a document (the seal named or asked for)",
-        lambda s: ("seal" in s.cues or bool(_seal_items(s)))
-        and (s.doc is not None or (s.signable is not None and _tool_used(s))),
+        lambda s: (
+            ("seal" in s.cues or bool(_seal_items(s)))
+            and (s.doc is not None or (s.signable is not None and _tool_used(s)))
+        ),
         _seal,
     ),
     KindRule(
@@ -201,11 +217,22 @@ class TaskReader:
         # the products that name their task: "a printout" is a print, "a copy" a copy
         self.printout = product_of_shape(office, "render")
         self.copy = product_of_shape(office, "transform")
-        self.sourced = frozenset(p for p in (self.printout, self.copy) if p)
+        # every product made from an item or a file names its task ("a PDF of my plan" is
+        # the scan, as "a printout" is the print), not only each shape's first
+        self.made: dict[str, str] = {
+            o.product: SHAPE_KIND[o.shape(office)]
+            for o in office.operations
+            if o.product and o.shape(office) in ("render", "transform")
+        }
+        self.sourced = frozenset(p for p in (self.printout, self.copy, *self.made) if p)
         self.file = office.file_type() or ""  # what is forwarded
 
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
+
+    def products_of(self, kind: str) -> frozenset[str]:
+        """Every product a task of ``kind`` may hand over (a copy, a PDF)."""
+        return frozenset(p for p, k in self.made.items() if k == kind)
 
     def scene(self, clause: Clause, roles: Roles, requester: str, previous: Task | None) -> Scene:
         items = clause.objects()
@@ -215,6 +242,8 @@ class TaskReader:
                 cues.add("print")
             if m.id == self.copy:
                 cues.add("copy")
+            if m.id in self.made:
+                cues.add(self.made[m.id])
         facilities = [m.id for m in clause.mentions if m.kind == "facility"]
         facilities_said = [m for m in clause.mentions if m.kind == "facility"]
         treating = [
@@ -252,7 +281,7 @@ class TaskReader:
             cues.add("copy")
         # "put my headlamp on the charging shelf": the item goes *to* the facility
         treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
-        items = [m for m in items if m.id not in (self.printout, self.copy)]
+        items = [m for m in items if m.id not in self.sourced]
         files = [m for m in items if self.kinds[m.id] == "electronic"]
         personal = [m for m in items if self.kinds[m.id] == "personal"]
         products = [m for m in items if self.kinds[m.id] == "product"]
@@ -294,7 +323,7 @@ class TaskReader:
         if (
             previous is not None
             and not cues & {"print", "copy"}
-            and any(m.id == self.product_of(previous.kind) for m in clause.objects())
+            and any(m.id in self.products_of(previous.kind) for m in clause.objects())
         ):
             return []  # "print my draft and take the printout to Sue": the same task, on
         s = self.scene(clause, roles, requester, previous)
@@ -356,7 +385,8 @@ class TaskReader:
         if roles.recipient:
             update["recipient"] = roles.recipient[-1]
         for who in roles.actor + roles.bare:
-            if task.kind in ("sign", "seal") and task.actor is None and "actor" not in update:
+            by_person = task_kinds.kind_of(task.kind) and task_kinds.kind(task.kind).by_person
+            if by_person and task.actor is None and "actor" not in update:
                 update["actor"] = who
             elif task.kind == "transfer" and task.owner is None and "owner" not in update:
                 update["owner"] = who

@@ -11,7 +11,8 @@ clause say when, what for, or where, and must never become tasks of their own:
   task word does not count; "take my contract to Zhang *to sign*" keeps it);
 - a reason clause after the object: "a radio *because there's no money for new headlamps*";
 - a statement about an owned item after the object: "a radio *as my headlamp is dying*";
-- a container or measure word before "of": "a *cup of* coffee" is coffee.
+- a container or measure word before "of": "a *cup of* coffee" is coffee;
+- an item word right before another ("the *draft* contract"): the last noun is the head.
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
 wipes") are all objects of the same verb. (An item word used as a verb, "book me a taxi", was
@@ -63,13 +64,22 @@ def modifiers(
             in_purpose = True  # "..., as my headlamp is dying": a reason said as a statement
             out.add(m.start)
             continue
-        if _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
+        if _compound_modifier(mentions, n):
+            out.add(m.start)  # "my draft contract": the head is the last noun, "contract"
+        elif _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
             out.add(m.start)
         elif _container(tokens, mentions, n, sourced):
             out.add(m.start)
         else:
             head_seen = True
     return out
+
+
+def _compound_modifier(mentions: Sequence[Mention], n: int) -> bool:
+    """ "the draft contract", "my report file": an item word right before another item word
+    (nothing between) modifies it; the last one names the thing."""
+    nxt = mentions[n + 1] if n + 1 < len(mentions) else None
+    return nxt is not None and nxt.kind == "item" and nxt.start == mentions[n].end
 
 
 def _purpose(mentions: Sequence[Mention], n: int) -> bool:

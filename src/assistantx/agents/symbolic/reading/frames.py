@@ -200,6 +200,7 @@ class FrameReader:
         return (task.kind, type_id) in {
             ("print", self.reader.printout),
             ("copy", self.reader.copy),
+            *((task.kind, p) for p in self.reader.products_of(task.kind)),
             (task.kind, task_kinds.tool_type(task.kind, self.office)),
         }
 
@@ -210,7 +211,8 @@ class FrameReader:
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:
                 return f"Which item do you mean for the {t.kind.replace('_', ' ')} request?"
-            if t.kind in ("sign",) and (t.actor is None or t.actor == requester):
+            done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
+            if done_by_one and (t.actor is None or t.actor == requester):
                 return f"Who should do that with your {name}? Please tell me their name."
             if t.kind == "transfer":
                 if t.owner is None and self.reader.kinds[t.item] == "personal":

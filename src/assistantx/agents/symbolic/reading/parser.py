@@ -171,8 +171,12 @@ class InstructionParser:
             if m.kind == "facility"
             for op in self.office.facility(m.ids[0]).operations
         }
+        products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
         tasks: list[Task] = []
         for t in frame.tasks:
+            t, which = self._one_of_several(t, words, facility_ops, products)
+            if which is not None:
+                return TaskFrame(requester=frame.requester, question=which)
             shape = _KIND_SHAPE.get(t.kind)
             ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
             if shape == "treat" and ops and t.item is not None and t.operation is None:
@@ -224,6 +228,37 @@ class InstructionParser:
                 t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
+
+    def _one_of_several(
+        self, task: Task, words: set[str], facility_ops: set[str], products: set[str]
+    ) -> tuple[Task, str | None]:
+        """The operation a task on an item runs, where a machine does several: the one whose
+        verb or gerund is said ("needs binding", "through the copier to scan it"), whatever
+        shape the rest of the clause suggested; with none said and the machine named doing
+        several to this item, the question which ("Which do you mean: copy, scan or bind?")."""
+        if task.item is None or task.operation is not None or task.kind not in _KIND_SHAPE:
+            return task, None
+        fits = [
+            op
+            for op in self.office.operations
+            if op.input == task.item and self.office.runnable(op.id) and not op.sends_out
+        ]
+        said = [op for op in fits if self._op_words[op.id] & words]
+        # "scan my contract to PDF", "send my plan to PDF": the product named says which
+        said = said or [op for op in fits if op.product in products]
+        if len(said) == 1:
+            shape = said[0].shape(self.office)
+            kind = SHAPE_KIND.get(shape)
+            # only where the clause read another shape, or several share this one: a lone
+            # operation of its shape is left to the plain reading
+            if kind is not None and (kind != task.kind or len(self.office.with_shape(shape)) > 1):
+                return task.model_copy(update={"kind": kind, "operation": said[0].id}), None
+        at_machine = [op for op in fits if op.id in facility_ops]
+        if not said and len(at_machine) > 1:
+            names = [op.name for op in at_machine]
+            listed = ", ".join(names[:-1]) + " or " + names[-1]
+            return task, f"Which do you mean: {listed}?"
+        return task, None
 
     def _cannot_treat(self, ops: list[Operation], item: str) -> str:
         """Why a service the office offers cannot be run on this item, with what it is for."""

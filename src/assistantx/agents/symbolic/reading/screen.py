@@ -50,8 +50,8 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
-from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES, SpeechActs, content
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 from assistantx.core.english import entries_of
 from assistantx.core.english import words as english_words
@@ -73,7 +73,12 @@ _CORRECTION = re.compile(
 # "bring me the… actually, just print it": after a trailing-off, "actually" corrects too.
 _ELLIPSIS_ACTUALLY = re.compile(r"(?:\.{2,}|…)\s*actually\b[,:]?\s*(?:no\b[,.!]?\s*)?", re.I)
 # The words before a correction's own request verb ("just", "please", "rather").
-_CORRECTION_FILLERS = frozenset({"just", "please", "rather", "instead", "simply", "only", "can", "you", "could"})
+_CORRECTION_FILLERS = frozenset(
+    {"just", "please", "rather", "instead", "simply", "only", "can", "you", "could"}
+)
+# "a new one", "another", "a replacement": a need that replaces an item said to be failing.
+_REPLACEMENT = english_words("replacement_words")
+_CONDITION_WORDS = english_words("condition_openers")
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
 _DETERMINERS = english_words("screen_determiners")
 
@@ -249,6 +254,7 @@ class RequestScreen:
         self._text = text
         self._noting: int | None = None  # where a note began ("note this down: ...")
         self._withdrawing = False  # a withdrawal was read: what follows may be its reason
+        self._negating = False  # a negated errand was read: what follows may be its reason
         pieces = _pieces(text)
         self._pieces = pieces
         findings: list[Finding] = []
@@ -349,9 +355,11 @@ class RequestScreen:
         """Whether a correction's words open with a request verb of their own ("just print
         my draft", "please bind my plan instead"), not a person or an item alone."""
         words = [t.word for t in tokens if t.word not in _CORRECTION_FILLERS]
-        return bool(words) and (
-            words[0] in self.lex.cue_words or words[0] in self.lex.operation_words
-        ) and self.acts.request(words)
+        return (
+            bool(words)
+            and (words[0] in self.lex.cue_words or words[0] in self.lex.operation_words)
+            and self.acts.request(words)
+        )
 
     def _spellings(self, kind: str, text: str) -> set[str]:
         """How the people (or items) ``text`` names are written there."""
@@ -454,6 +462,10 @@ class RequestScreen:
         with no request beside it the message is information, answered in words."""
         deferred = self.acts.defers(_words(self._text))
         put_off = self.acts.defers(piece.words) and not self.acts.imperative(piece.words)
+        if not put_off and self.acts.future_need(piece.words, deferred):
+            offered = self._replacement_offer(piece)
+            if offered is not None:
+                return offered
         if put_off or self.acts.future_need(piece.words, deferred):
             return Finding(
                 "condition",
@@ -474,6 +486,32 @@ class RequestScreen:
             "a condition, not a request",
             message="Noted; I'll keep it in mind.",
             context=named,
+        )
+
+    def _replacement_offer(self, piece: Piece) -> Finding | None:
+        """ "my tripod is wobbly, I might need a new one": a possible need of a replacement
+        for an item said to be failing, with no condition and no "later", is offered ("Shall
+        I bring you a tripod?"), never fetched at once nor only noted."""
+        words = set(piece.words)
+        if not words & _REPLACEMENT or words & _CONDITION_WORDS or self.acts.later(piece.words):
+            return None
+        said = (
+            self._named(piece.text, "item") or self._named(self._text[: piece.start], "item")[-1:]
+        )
+        if len(said) != 1:
+            return None
+        t = self.office.item_type(said[0])
+        if t.kind not in ("belonging", "product"):
+            return None
+        verb = "get" if t.kind == "product" else "bring"
+        thing = f"{_article(t.name)} {t.name}"
+        return Finding(
+            "condition",
+            piece,
+            f"a possible need of a new {t.name}: offered, not fetched",
+            message=f"Sorry about your {t.name}.",
+            offer=f"{verb} me {thing}",
+            shall=f"Shall I {verb} you {thing}?",
         )
 
     def _exclusion(self, piece: Piece, requester: str) -> Finding | None:
@@ -695,6 +733,26 @@ class RequestScreen:
         return out
 
     def _negated(self, piece: Piece, requester: str) -> Finding | None:
+        found = self._negation(piece)
+        if found is not None:
+            self._negating = True
+            return found
+        if self._negating and self._told_reason(piece):
+            # "don't bother bringing the level, Otto's lending me his": why the errand is not
+            # wanted, told as what is happening, not an errand of its own
+            return Finding("negated", piece, "the reason the errand is not wanted")
+        return None
+
+    def _told_reason(self, piece: Piece) -> bool:
+        """A piece after a negated errand that tells something (a finite verb, a contracted
+        "'s") and asks nothing, with no request after it in the message."""
+        told = any(language.is_finite_verb(w) for w in piece.words) or bool(
+            re.search(r"\w['’](?:s|re|m|ve|ll)\b", piece.text)
+        )
+        later = [p for p in self._pieces if p.start >= piece.start]
+        return told and not piece.asks and not any(self.acts.request(p.words) for p in later)
+
+    def _negation(self, piece: Piece) -> Finding | None:
         words = piece.words
         for at in range(len(words)):
             for neg in self.en.negators:
