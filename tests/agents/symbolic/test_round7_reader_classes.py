@@ -131,7 +131,15 @@ def test_the_stamper_named_is_the_one_asked() -> None:
     ]
 
 
-@pytest.mark.parametrize("text", ["bring me the embosser", "could I borrow Ines's stamp"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me the embosser",
+        "could I borrow Ines's stamp",
+        "put the stamp on my desk",  # "on" a place: the tool is moved, not used
+        "please leave the embosser on the shelf for me",
+    ],
+)
 def test_the_tool_asked_for_itself_is_still_fetched(text: str) -> None:
     assert [(t.kind, t.item) for t in _frame(text).tasks] == [("transfer", "stamp")]
 

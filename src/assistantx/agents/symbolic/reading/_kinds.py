@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.lexicon import Mention
-from assistantx.core import english, task_kinds
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office, OperationShape
 from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task
 
@@ -27,6 +27,7 @@ _FROM_FACILITY = english.words("from_facility_prepositions")
 _INSTRUMENT = english.words("instrument_prepositions")
 _ONTO = english.words("onto_prepositions")
 _SERVICE_PARTICIPLES = english.words("service_participles")
+_PLACE_WORDS = english.words("place_words") | english.words("surface_words")
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
 
@@ -121,10 +122,27 @@ def _tool_used(s: Scene) -> bool:
             if before.ids[0] == "to":  # "get Tobias to stamp my lease": the service
                 return True
         if after is not None and after.kind == "word" and after.ids[0] in _ONTO:
-            return True
+            if _onto_paper(mentions[n + 2 :]):
+                return True
         if m.kind == "cue" and m.text.lower() in _SERVICE_PARTICIPLES:
             return True
     return False
+
+
+def _onto_paper(rest: list[Mention]) -> bool:
+    """Whether what follows "on" is the paper ("on it", "on my lease", "on the contract"),
+    not a place the tool is put ("on my desk", "on the table")."""
+    k = 0
+    while k < len(rest) and rest[k].possessive:
+        k += 1
+    if k >= len(rest):
+        return False
+    m = rest[k]
+    if m.kind == "pronoun":
+        return True
+    if m.kind == "item":
+        return True
+    return m.kind == "word" and m.ids[0] not in _PLACE_WORDS and language.is_noun(m.ids[0])
 
 
 def _seal(s: Scene) -> Task:
