@@ -9,6 +9,7 @@ import functools
 from collections.abc import Iterator
 
 import pytest
+from _offices import parser as other_parser
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core import task_kinds
@@ -322,3 +323,62 @@ def test_an_added_kind_with_no_doer_asks_who(endorse: Office) -> None:
 def test_the_kind_is_unknown_again_once_removed() -> None:
     frame = InstructionParser(surveyors()).parse("please get my plan endorsed by Noor", "callum")
     assert not [t for t in frame.tasks if t.kind == "endorse"]
+
+
+# -- the same mechanisms on offices of other trades ------------------------------------------
+@pytest.mark.parametrize(
+    ("office", "who", "text", "row"),
+    [
+        # a negated errand and its reason; a possible replacement is offered, not fetched
+        ("default", "lee", "don't bother bringing me a stapler, Zhang is lending me his", None),
+        ("default", "lee", "no need to get me the scissors, I borrowed Sun's", None),
+        # the default office's seal on a paper it does not list by that word
+        ("default", "lee", "get my lease stamped with the company seal", ("seal", "document")),
+        ("default", "lee", "my tenancy agreement needs the seal on it", ("seal", "document")),
+        ("default", "lee", "put the seal on my desk", ("transfer", "seal")),
+        # a gerund, a correction with its own verb, a need said again
+        ("default", "lee", "my contract needs copying", ("copy", "document")),
+        (
+            "default",
+            "lee",
+            "bring me the stapler... actually no, just print my report",
+            ("print", "file"),
+        ),
+        (
+            "default",
+            "lee",
+            "could you get me Wang's stapler? I need the stapler",
+            ("transfer", "stapler"),
+        ),
+        # harbour's scan makes a "scanned copy"; its file is also called "PDF"
+        ("harbour", "may", "scan my contract to PDF", ("copy", "document")),
+        ("harbour", "may", "my timesheet needs scanning", ("copy", "document")),
+        ("harbour", "may", "give Mark my draft contract", ("transfer", "document")),
+    ],
+)
+def test_the_mechanisms_hold_on_other_offices(
+    office: str, who: str, text: str, row: tuple[str, str] | None
+) -> None:
+    frame = other_parser(office).parse(text, who)
+    if row is None:
+        assert frame.tasks == [] and frame.decline_outcome == "done", frame
+    else:
+        assert [(t.kind, t.item) for t in frame.tasks] == [row], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "scan my contract, I need a scan of it for Mark",
+        "please scan my invoice. Mark needs a scan of it",
+        "can you scan my letter to pdf for Mark",
+    ],
+)
+def test_a_scan_for_someone_on_another_office_goes_to_them(text: str) -> None:
+    frame = other_parser("harbour").parse(text, "may")
+    assert [(t.kind, t.owner, t.recipient) for t in frame.tasks] == [("copy", "may", "mark")]
+
+
+def test_a_replacement_on_another_office_is_offered() -> None:
+    frame = other_parser("default").parse("my stapler is jammed, I might need a new one", "lee")
+    assert frame.tasks == [] and frame.question and "Shall I bring you a stapler?" in frame.question

@@ -243,6 +243,8 @@ class TaskReader:
             if o.product and o.shape(office) in ("render", "transform")
         }
         self.sourced = frozenset(p for p in (self.printout, self.copy, *self.made) if p)
+        # the file types, which may name the format of what a service makes ("to PDF")
+        self.formats = frozenset(t.id for t in office.item_types if t.electronic)
         self.file = office.file_type() or ""  # what is forwarded
 
     def product_of(self, kind: str) -> str | None:

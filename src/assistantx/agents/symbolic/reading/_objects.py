@@ -37,13 +37,22 @@ DETERMINERS = english.words("determiners")
 # Conjunctions that open a reason clause: what it names explains the request, never joins it.
 REASON_CONJUNCTIONS = english.words("reason_conjunctions")
 STATE_VERBS = english.words("state_verbs")
+# The words before a file type that name a product's format ("to PDF", "into a PDF").
+_FORMAT_LINKS = frozenset({"to", "into", "as"})
 
 
 def modifiers(
-    tokens: Sequence[Token], mentions: Sequence[Mention], sourced: frozenset[str] = frozenset()
+    tokens: Sequence[Token],
+    mentions: Sequence[Mention],
+    sourced: frozenset[str] = frozenset(),
+    formats: frozenset[str] = frozenset(),
 ) -> set[int]:
-    """Start tokens of the clause's item and cue mentions that are not its request."""
+    """Start tokens of the clause's item and cue mentions that are not its request.
+    ``sourced``: the products made from an item ("a copy of my form"); ``formats``: the file
+    types, which after "to"/"into"/"as" in a clause that asks to copy or print name the
+    format of what is made ("scan my contract to PDF"), never a thing or a person."""
     out: set[int] = set()
+    making = any(m.kind == "cue" and {"copy", "print"} & set(m.ids) for m in mentions)
     head_seen = False
     in_purpose = False
     for n, m in enumerate(mentions):
@@ -64,7 +73,9 @@ def modifiers(
             in_purpose = True  # "..., as my headlamp is dying": a reason said as a statement
             out.add(m.start)
             continue
-        if _compound_modifier(mentions, n):
+        if making and m.id in formats and _after(tokens, m, _FORMAT_LINKS):
+            out.add(m.start)  # "to PDF", "into a pdf", "as a PDF"
+        elif _compound_modifier(mentions, n):
             out.add(m.start)  # "my draft contract": the head is the last noun, "contract"
         elif _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
             out.add(m.start)
@@ -73,6 +84,14 @@ def modifiers(
         else:
             head_seen = True
     return out
+
+
+def _after(tokens: Sequence[Token], m: Mention, words: frozenset[str]) -> bool:
+    """Whether the word before ``m`` (past an article) is one of ``words``."""
+    k = m.start - 1
+    while k >= 0 and tokens[k].word in ("a", "an", "the"):
+        k -= 1
+    return k >= 0 and tokens[k].word in words
 
 
 def _compound_modifier(mentions: Sequence[Mention], n: int) -> bool:

@@ -92,6 +92,11 @@ class FrameReader:
             # "print my log. I need the spreadsheet for the meeting": the item a task already
             # works on for that person, named again as what they need, is context
             made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
+            if tasks and len(made) == 1 and _for_another(tasks[-1], made[0], clause, requester):
+                # "please scan my invoice. Mark needs a scan of it": the same work, and whom
+                # its product is for; one scan, handed to Mark
+                tasks[-1] = tasks[-1].model_copy(update={"recipient": made[0].recipient})
+                made = []
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
@@ -162,7 +167,7 @@ class FrameReader:
                 continue
             clauses[-1].mentions.append(m)
         for c in clauses:
-            c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced)
+            c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced, self.reader.formats)
             c.cues = {
                 k
                 for m in c.mentions
@@ -375,6 +380,21 @@ def _to_each(made: list[Task], roles: Roles) -> list[Task]:
     if len(people) < 2:
         return made
     return [made[0].model_copy(update={"recipient": who}) for who in people]
+
+
+def _for_another(earlier: Task, task: Task, clause: Clause, requester: str) -> bool:
+    """Whether ``task`` is ``earlier``'s work again, on the same item pointed back to ("a
+    scan of it"), only for someone else: whom the product is for, not a second job."""
+    refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
+    return (
+        refers
+        and task.kind == earlier.kind
+        and task.kind not in ("transfer", "send_file")
+        and task.item == earlier.item
+        and task.owner == earlier.owner
+        and earlier.recipient == requester
+        and task.recipient != requester
+    )
 
 
 def _first_leg(earlier: Task, made: list[Task]) -> bool:
