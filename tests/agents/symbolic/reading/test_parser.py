@@ -1,4 +1,4 @@
-"""The parser runs the stages (screen, tokens, lexicon, readings, frames) on one office and
+"""The parser runs the stages (tokens, lexicon, screen, readings, frames, judge) on one office and
 settles a doubt with the requester's answer by reading again, never by changing itself."""
 
 from __future__ import annotations

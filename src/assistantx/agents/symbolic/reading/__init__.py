@@ -1,2 +1,3 @@
-"""The symbolic reader, as stages that pass forward (see ``parser``): screen → tokens →
-lexicon → readings → frames. ``InstructionParser`` runs them against one office."""
+"""The symbolic reader, as stages that pass forward (see ``parser``): tokens → lexicon →
+screen (the speech acts of each piece) → readings → frames → operations and unknown items →
+the screen's judgement. ``InstructionParser`` runs them against one office."""

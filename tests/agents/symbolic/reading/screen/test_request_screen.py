@@ -1,4 +1,5 @@
-"""Stage 0, screen: the speech acts and sanity checks of the raw text, before any task."""
+"""The request screen: the speech acts and sanity checks of each piece of a message, before the
+request is read, and what they make of the whole message."""
 
 from __future__ import annotations
 

@@ -1,0 +1,186 @@
+"""After the frames: the office's operation named where several share a task's shape ("scan"
+or "copy" a contract), asked about when the words do not say which, declined when none fits
+the item ("charge my radio" where only headlamps are charged), and a send-out service's place
+outside taken from the readings ("send out my drawing to the client") or asked for."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.destination import Outside
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
+from assistantx.core import language
+from assistantx.core.office import Office, Operation
+from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
+from assistantx.memory.names import normalize
+
+_KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
+WHERE_TO = "Where should I "  # the question for a send-out service's place outside
+# The question when a send-out service's destination is a colleague's name.
+OUT_OR_IN = "Should I send it out by "
+
+
+class OperationChooser:
+    """Names the operations of one office's tasks from the words that asked for them."""
+
+    def __init__(self, office: Office) -> None:
+        self.office = office
+        self._op_words = {
+            op.id: {
+                form
+                for phrase in (*op.verbs, op.name)
+                for verb in normalize(phrase).split()[:1]
+                for form in inflections(verb)
+            }
+            for op in office.operations
+        }
+
+    def choose(
+        self, frame: TaskFrame, lexed: Lexed, outside: Outside | None, *, sent_out: bool = False
+    ) -> TaskFrame:
+        """Name the operation where the office has several of a task's shape ("scan" or
+        "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
+        already said a send-out to a colleague's name is meant to leave the office."""
+        words = {t.word for t in lexed.tokens}
+        facility_ops = {
+            op
+            for m in lexed.mentions
+            if m.kind == "facility"
+            for op in self.office.facility(m.ids[0]).operations
+        }
+        products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
+        tasks: list[Task] = []
+        for t in frame.tasks:
+            t, which = self._one_of_several(t, words, facility_ops, products)
+            if which is not None:
+                return TaskFrame(requester=frame.requester, question=which)
+            shape = _KIND_SHAPE.get(t.kind)
+            ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
+            if shape == "treat" and ops and t.item is not None and t.operation is None:
+                # the service asked for by its verb, else at the facility named, else any
+                asked = [op for op in ops if self._op_words[op.id] & words] or [
+                    op for op in ops if op.id in facility_ops
+                ]
+                asked = asked or ops
+                fits = [op for op in asked if op.input == t.item]
+                if not fits:  # "charge my radio" where only headlamps are charged
+                    return TaskFrame(
+                        requester=frame.requester, decline=self._cannot_treat(asked, t.item)
+                    )
+                if len(fits) == 1 and len(ops) > 1:  # named where several share the shape
+                    t = t.model_copy(update={"operation": fits[0].id})
+                ops = fits
+            if len(ops) > 1 and t.operation is None:
+                said = [op for op in ops if self._op_words[op.id] & words]
+                if not said:  # "put my contract in the scanner": the facility's own service
+                    said = [op for op in ops if op.id in facility_ops]
+                if len(said) != 1:
+                    names = " or ".join(op.name for op in ops)
+                    return TaskFrame(
+                        requester=frame.requester, question=f"Which do you mean: {names}?"
+                    )
+                t = t.model_copy(update={"operation": said[0].id})
+            op_id = t.operation or (ops[0].id if len(ops) == 1 else None)
+            op = self.office.operation(op_id) if op_id else None
+            if op is not None and op.sends_out and t.destination is None:
+                # a fax leaves the office: where to is the requester's to say, never a guess;
+                # the readings stage found the words ("send out my drawing to the client")
+                where = outside.phrase if outside is not None else None
+                if where is None:
+                    return TaskFrame(
+                        requester=frame.requester,
+                        question=f"{WHERE_TO}{op.name} it to? Please give the number "
+                        "or the name of the place.",
+                    )
+                colleague = _colleague(lexed, outside) if not sent_out else None
+                if colleague is not None:
+                    # "courier my plan to Bill" where Bill works here: sending it out of the
+                    # office and handing it to him are different physical actions; ask
+                    name = self.office.person(colleague).name
+                    return TaskFrame(
+                        requester=frame.requester,
+                        question=f"{OUT_OR_IN}{op.name} to {where} outside the office, "
+                        f"or bring it to {name} here?",
+                    )
+                t = t.model_copy(update={"operation": op.id, "destination": where})
+            tasks.append(t)
+        return frame.model_copy(update={"tasks": tasks})
+
+    def sending_words(self) -> frozenset[str]:
+        """Every form of the verbs of the office's send-out services ("courier", "faxed")."""
+        return frozenset(
+            w for op in self.office.operations if op.sends_out for w in self._op_words[op.id]
+        )
+
+    def _one_of_several(
+        self, task: Task, words: set[str], facility_ops: set[str], products: set[str]
+    ) -> tuple[Task, str | None]:
+        """The operation a task on an item runs, where a machine does several: the one whose
+        verb or gerund is said ("needs binding", "through the copier to scan it") or whose
+        product is named ("to PDF"), whatever shape the rest of the clause suggested; with
+        none said and the machine named doing several to this item, the question which
+        ("Which do you mean: copy, scan or bind?")."""
+        if task.item is None or task.operation is not None or task.kind not in _KIND_SHAPE:
+            return task, None
+        fits = [
+            op
+            for op in self.office.operations
+            if op.input == task.item and self.office.runnable(op.id) and not op.sends_out
+        ]
+        said = [op for op in fits if self._op_words[op.id] & words]
+        # "scan my contract to PDF", "send my plan to PDF": the product named says which
+        said = said or [op for op in fits if op.product in products]
+        if len(said) == 1:
+            shape = said[0].shape(self.office)
+            kind = SHAPE_KIND.get(shape)
+            # only where the clause read another shape, or several share this one: a lone
+            # operation of its shape is left to the plain reading
+            if kind is not None and (kind != task.kind or len(self.office.with_shape(shape)) > 1):
+                return task.model_copy(update={"kind": kind, "operation": said[0].id}), None
+        at_machine = [op for op in fits if op.id in facility_ops]
+        if not said and len(at_machine) > 1:
+            names = [op.name for op in at_machine]
+            listed = ", ".join(names[:-1]) + " or " + names[-1]
+            return task, f"Which do you mean: {listed}?"
+        return task, None
+
+    def _cannot_treat(self, ops: list[Operation], item: str) -> str:
+        """Why a service the office offers cannot be run on this item, with what it is for."""
+        asked = " or ".join(dict.fromkeys(op.name for op in ops))
+        thing = self._item_name(item)
+        fits = [
+            f"{op.name} {language.plural(self._item_name(op.input))}"
+            for op in ops
+            if op.input is not None
+        ]
+        return (
+            f"Sorry, I can't {asked} {_article(thing)} {thing} here: I can only "
+            f"{' and '.join(fits)}."
+        )
+
+    def _item_name(self, type_id: str) -> str:
+        return self.office.item_type(type_id).name
+
+
+def colleague_named(lexed: Lexed, start: int = 0, end: int | None = None) -> str | None:
+    """The one colleague the tokens ``start:end`` of ``lexed`` name and nothing else ("Bill",
+    "Bill Osei"); None for a place outside ("the county land registry")."""
+    stop = len(lexed.tokens) if end is None else end
+    inside = [m for m in lexed.mentions if start <= m.start < stop and m.kind != "word"]
+    if len(inside) != 1 or inside[0].kind != "person" or len(inside[0].ids) != 1:
+        return None
+    person = inside[0]
+    rest = {
+        t.word
+        for k, t in enumerate(lexed.tokens[start:stop], start)
+        if not person.start <= k < person.end
+    }
+    return person.ids[0] if rest <= COMMON else None
+
+
+def _colleague(lexed: Lexed, outside: Outside | None) -> str | None:
+    if outside is None or outside.start is None or outside.end is None:
+        return None
+    return colleague_named(lexed, outside.start, outside.end)
+
+
+def _article(noun: str) -> str:
+    return "an" if noun[:1].lower() in "aeiou" else "a"

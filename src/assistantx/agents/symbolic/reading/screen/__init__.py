@@ -1,0 +1,51 @@
+"""The request screen: ask or decline, never guess — before any task is read from a request.
+
+A request is cut into pieces (sentences, and the comma/"and"/"then" parts of one); a table of
+rules, tried in priority order, says what each piece is. The first rule that matches a piece
+decides it:
+
+==============  ==================================================================  ==========
+rule            matches                                                             effect
+==============  ==================================================================  ==========
+withdrawn       "never mind", "forget it", "forget about the scissors"              drops all
+                                                                                    said before
+exclusion       "not from Wang though", "not Chen's"                                a hint that
+                                                                                    keeps them out
+wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
+thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
+negated         "don't bring me ...", "no need to print ..."                        drops piece
+destructive     "throw away Wang's stapler", "hide ...", "get rid of ..."           declines
+fact            "Wang is away", "Zhang is in the meeting room",                     a hint;
+                "Zhang's stapler is broken"                                         drops piece
+question        "who has a tape measure?", "is the printer working?" (not "could    answered;
+                you bring me ...?", a request)                                      "Shall I?"
+statement       "my laptop cable is too short", "I spilled my tea"                  context
+unsupported     a service the office does not offer ("scan my contract",            declines
+                "make me a cup of tea")
+==============  ==================================================================  ==========
+
+The speech acts (wish, thanks, question, statement) are read by ``speech``: only a request moves the
+robot, the others are answered in words. A message with no request left is answered with the
+replies of its pieces; an information question that may be a request in disguise ("does anyone
+have a stapler?") is answered and met with "Shall I bring you one?"; a third person's need
+with no request wording ("Min needs scissors") is restated and asked before anything moves.
+
+Then two rewrites make the rest readable by the frame parser: a thing named by its purpose
+("something to cut this with") becomes the office's item type declared for that purpose, and
+"another one" after a stated condition ("Zhang's stapler is broken") becomes that item.
+
+The English words live in the package's ``data/english.yaml`` (``assistantx.core.english``); the
+office's words (people, items, facilities, purposes) come from the office file. Pieces are
+removed from the original text by their character spans, never re-joined, so what is left
+parses as the person wrote it.
+
+Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
+``thanks``, ``condition``, ``negation``, ``destructive``, ``fact``, ``question``,
+``statement``, ``service``), tried in the order of ``rules``; ``request_screen`` walks the
+pieces (``pieces``) and decides the message (``answer``), then ``rewrites``.
+"""
+
+from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Screened
+from assistantx.agents.symbolic.reading.screen.request_screen import RequestScreen
+
+__all__ = ["UNANSWERED", "RequestScreen", "Screened"]

@@ -1,0 +1,59 @@
+"""A message with no request left: the replies of its pieces in words, one "Shall I ...?"
+for a question that may be a request, and what counts as an aside beside a thanks or a wish."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.findings import SAYS_NOTHING_TO_DO, Finding, Screened
+from assistantx.agents.symbolic.reading.screen.pieces import Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+
+
+def aside(terms: Terms, left: str, live: list[Finding], kept: list[Piece]) -> bool:
+    """What is left beside a thanks, wish or withdrawal, or after a note, condition or
+    report, names nothing of this office and asks for nothing ("..., lifesaver", "...,
+    all sorted"): an aside, not a request. Before a report it is no closing remark
+    ("hello there. I don't know more than I wrote" still says nothing of what is needed)."""
+    anywhere = any(f.verdict in ("thanks", "wish", "withdrawn") for f in live)
+    reports = [f.piece.start for f in live if f.verdict in SAYS_NOTHING_TO_DO]
+    closing = bool(reports) and all(p.start > min(reports) for p in kept)
+    if not (anywhere or closing):
+        return False
+    words = split_words(left)
+    if set(words) & terms.office_words or terms.acts.request(words):
+        return False
+    # "something longer?", "another one": what a statement beside it makes a request of
+    helpers = {w for p in (*terms.en.purpose_heads, *terms.en.another_one) for w in split_words(p)}
+    return not set(words) & helpers
+
+
+def answered(out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened:
+    """No request left: the replies to what was said, or one "Shall I ...?"."""
+    out.outcome = "done"
+    offers = [f for f in live if f.offer]
+    if len(offers) == 1 and not any(f.verdict in ("wish", "thanks") for f in live):
+        out.question = f"{offers[0].message} {offers[0].shall}"
+        out.offer = offers[0].offer
+        return out
+    replies = [f.message for f in live if f.message]
+    if any(r.startswith("Noted. ") for r in replies):  # one "Noted", then what to do
+        replies = [unnoted(r) for r in replies]
+        replies.sort(key=lambda r: not r.startswith("Noted. "))
+    if withdrawn:
+        replies.insert(0, "OK, I've dropped that request.")
+    facts = [f.meaning.removeprefix("a fact: ") for f in live if f.verdict == "fact"]
+    if facts:
+        replies.append(f"Thanks, noted: {'; '.join(facts)}.")
+    if not replies:
+        replies = ["Noted."]
+    out.decline = " ".join(dict.fromkeys(replies)) + " I did nothing."
+    return out
+
+
+# -- rules ---------------------------------------------------------------------------
+
+
+def unnoted(reply: str) -> str:
+    """ "Noted; I'll keep it in mind." → "I'll keep it in mind." (said once already)."""
+    rest = reply.removeprefix("Noted; ")
+    return rest[:1].upper() + rest[1:] if rest != reply else reply

@@ -1,0 +1,88 @@
+"""The screen's English: the word lists of ``english.yaml`` it reads pieces with, phrases as
+tuples of words, and the small word-matching helpers every rule shares."""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+from assistantx.core import language
+from assistantx.core.english import entries_of
+from assistantx.core.english import words as english_words
+
+# Words that start a noun phrase: after a service verb they make it a request ("scan *my* ...").
+DETERMINERS = english_words("screen_determiners")
+
+
+@dataclass(frozen=True)
+class English:
+    """The word lists of ``english.yaml``, phrases as tuples of words."""
+
+    lead_in: frozenset[str]
+    withdraw: tuple[tuple[str, ...], ...]
+    negators: tuple[tuple[str, ...], ...]
+    negation_fillers: frozenset[str]
+    destructive: tuple[tuple[str, ...], ...]
+    copulas: tuple[tuple[str, ...], ...]
+    away: tuple[tuple[str, ...], ...]
+    here: tuple[tuple[str, ...], ...]
+    location_prepositions: frozenset[str]
+    conditions: tuple[tuple[str, ...], ...]
+    fact_openers: frozenset[str]
+    another_one: tuple[str, ...]
+    purpose_heads: tuple[str, ...]
+    purpose_links: tuple[str, ...]
+    purpose_tail: frozenset[str]
+    service_verbs: frozenset[str]
+    service_products: frozenset[str]
+    modifier_prepositions: frozenset[str]
+    courtesy: frozenset[str]
+    own_item_lost: tuple[tuple[str, ...], ...]
+    exclusion_openers: frozenset[str]
+    elliptical_withdrawals: tuple[tuple[str, ...], ...]
+
+
+@functools.cache
+def english() -> English:
+    raw = entries_of()
+
+    def phrases(key: str) -> tuple[tuple[str, ...], ...]:
+        # longest first, so "throw away" wins over "throw"
+        found = {tuple(language.words(str(p))) for p in raw[key]}
+        return tuple(sorted(found, key=lambda p: (-len(p), p)))
+
+    def word_set(key: str) -> frozenset[str]:
+        return frozenset(w for p in raw[key] for w in language.words(str(p)))
+
+    return English(
+        lead_in=word_set("lead_in"),
+        withdraw=phrases("withdraw"),
+        negators=phrases("negators"),
+        negation_fillers=word_set("negation_fillers"),
+        destructive=phrases("destructive"),
+        copulas=phrases("copulas"),
+        away=phrases("away"),
+        here=phrases("here"),
+        location_prepositions=word_set("location_prepositions"),
+        conditions=phrases("conditions"),
+        fact_openers=word_set("fact_openers"),
+        another_one=tuple(sorted((str(p) for p in raw["another_one"]), key=lambda p: -len(p))),
+        purpose_heads=tuple(str(p) for p in raw["purpose_heads"]),
+        purpose_links=tuple(str(p) for p in raw["purpose_links"]),
+        purpose_tail=word_set("purpose_tail"),
+        service_verbs=word_set("service_verbs"),
+        service_products=word_set("service_products"),
+        modifier_prepositions=word_set("modifier_prepositions"),
+        courtesy=word_set("courtesy"),
+        own_item_lost=phrases("own_item_lost"),
+        exclusion_openers=word_set("exclusion_openers"),
+        elliptical_withdrawals=phrases("elliptical_withdrawals"),
+    )
+
+
+def split_words(text: str) -> list[str]:
+    return language.words(text)
+
+
+def starts_with(words: list[str], at: int, phrase: tuple[str, ...]) -> bool:
+    return tuple(words[at : at + len(phrase)]) == phrase

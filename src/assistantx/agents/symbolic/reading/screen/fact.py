@@ -1,0 +1,84 @@
+"""Fact: "Wang is away", "Zhang is in the meeting room", "Zhang's stapler is broken", "I
+can't find my stapler": a hint for the plan; the piece is dropped."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.english import starts_with
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core.task_schema import Hint
+
+
+def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    k = 0
+    while k < len(mentions) and mentions[k].kind == "word":
+        if tokens[mentions[k].start].word not in terms.en.fact_openers:
+            return None
+        k += 1
+    if k < len(mentions) and mentions[k].kind == "self":
+        return own_item_fact(terms, msg, piece, requester)
+    if k >= len(mentions) or mentions[k].kind != "person" or len(mentions[k].ids) != 1:
+        return None
+    subject = mentions[k]
+    person = subject.ids[0]
+    rest = [t.word for t in tokens[subject.end :]]
+    item: str | None = None
+    if subject.possessive and k + 1 < len(mentions) and mentions[k + 1].kind == "item":
+        item = mentions[k + 1].ids[0]
+        rest = [t.word for t in tokens[mentions[k + 1].end :]]
+    copula = next((c for c in terms.en.copulas if starts_with(rest, 0, c)), None)
+    if copula is None and not (subject.possessive and item is None):
+        return None  # "Wang's away" reads as a possessive: the copula is in the 's
+    state = rest[len(copula) :] if copula else rest
+    name = terms.office.person(person).name
+    if item is not None:
+        cond = next((c for c in terms.en.conditions if starts_with(state, 0, c)), None)
+        if cond is None:
+            return None
+        said = " ".join(cond)
+        hint = Hint(kind="condition", person=person, value=said, item_type=item, said=piece.text)
+        thing = terms.office.item_type(item).name
+        return Finding("fact", piece, f"a fact: {name}'s {thing} is {said}", hint)
+    for phrase in terms.en.away:
+        if starts_with(state, 0, phrase) and len(state) <= len(phrase) + 2:
+            hint = Hint(kind="availability", person=person, value="away", said=piece.text)
+            return Finding("fact", piece, f"a fact: {name} is away", hint)
+    if state and state[0] in terms.en.location_prepositions:
+        place = terms.place(piece.lexed)
+        if place is not None:
+            hint = Hint(kind="location", person=person, value=place, said=piece.text)
+            where = terms.office.location(place).name
+            return Finding("fact", piece, f"a fact: {name} is at the {where}", hint)
+    for phrase in terms.en.here:
+        if starts_with(state, 0, phrase) and len(state) <= len(phrase) + 1:
+            hint = Hint(kind="availability", person=person, value="here", said=piece.text)
+            return Finding("fact", piece, f"a fact: {name} is here", hint)
+    return None
+
+
+def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """ "I can't find my stapler", "my stapler is broken": the requester's own item is out
+    of use (so they want someone else's), said as a fact, not a request."""
+    tokens = piece.lexed.tokens
+    words = [t.word for t in tokens]
+    items = [m for m in piece.lexed.mentions if m.kind == "item"]
+    if len(items) != 1 or items[0].start == 0 or words[items[0].start - 1] != "my":
+        return None
+    before, after = words[: items[0].start - 1], words[items[0].end :]
+    lost = any(
+        starts_with(before, n, p) for n in range(len(before)) for p in terms.en.own_item_lost
+    )
+    copula = next((c for c in terms.en.copulas if starts_with(after, 0, c)), None)
+    broken = copula is not None and any(
+        starts_with(after, len(copula), c) for c in terms.en.conditions
+    )
+    if not (lost and before[:1] == ["i"]) and not (broken and not before):
+        return None
+    item = items[0].ids[0]
+    hint = Hint(
+        kind="condition", person=requester, value="missing", item_type=item, said=piece.text
+    )
+    thing = terms.office.item_type(item).name
+    return Finding("fact", piece, f"a fact: the requester's {thing} is out of use", hint)

@@ -1,0 +1,111 @@
+"""A message cut into pieces (sentences, and the comma parts of one), each with its place in
+the original, so what is dropped is removed by its characters and what is left reads as the
+person wrote it, and with the lexicon's reading of its words (the stage before the screen:
+every rule reads the piece's tokens and mentions from it); and the state the rules keep while
+they walk one message's pieces."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.agents.symbolic.reading.screen.english import split_words
+
+# A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
+_SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
+_PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
+
+
+@dataclass(frozen=True)
+class Part:
+    """A part of the request: its text, its place in the original and its words."""
+
+    text: str
+    start: int
+    end: int
+    words: list[str]
+    asks: bool = False  # the sentence ends with a question mark
+
+    def verb_at(self, lead_in: frozenset[str]) -> int:
+        """Index of the request's verb: the first word that is no lead-in ("could you ...")."""
+        return next((n for n, w in enumerate(self.words) if w not in lead_in), len(self.words))
+
+
+@dataclass(frozen=True, kw_only=True)
+class Piece(Part):
+    """A piece of a message, as the lexicon read it."""
+
+    lexed: Lexed  # its tokens, typos corrected, and the mentions of the office in them
+
+
+@dataclass
+class Message:
+    """One message being screened: its text, its pieces, and what earlier pieces set."""
+
+    text: str
+    pieces: list[Piece]
+    noting: int | None = None  # where a note began ("note this down: ...")
+    withdrawing: bool = False  # a withdrawal was read: what follows may be its reason
+    negating: bool = False  # a negated errand was read: what follows may be its reason
+
+
+def pieces(text: str, read: Callable[[str], Lexed]) -> list[Piece]:
+    """Sentences, and the comma-separated parts of each, each read by ``read`` (the lexicon)."""
+    out: list[Piece] = []
+    pos = 0
+    for m in [*_SENTENCE_END.finditer(text), None]:
+        end = m.start() if m is not None else len(text)
+        sentence_start = pos
+        sub = 0
+        for b in [*re.finditer(",", text[sentence_start:end]), None]:
+            stop = sentence_start + (b.start() if b is not None else end - sentence_start)
+            chunk = text[sentence_start + sub : stop]
+            lead = len(chunk) - len(chunk.lstrip())
+            piece_text = chunk.strip()
+            if piece_text:
+                start = sentence_start + sub + lead
+                asks = b is None and m is not None and "?" in m.group(0)  # its last part
+                out.append(
+                    Piece(
+                        piece_text,
+                        start,
+                        start + len(piece_text),
+                        split_words(piece_text),
+                        asks,
+                        lexed=read(piece_text),
+                    )
+                )
+            if b is not None:
+                sub = b.end()
+        pos = m.end() if m is not None else len(text)
+    return out
+
+
+def sub_pieces(piece: Part) -> list[Part]:
+    """The parts of a piece joined by "and"/"then"/"but", for finding each one's verb."""
+    out: list[Part] = []
+    pos = 0
+    for m in [*_PIECE_BREAK.finditer(piece.text), None]:
+        end = m.start() if m is not None else len(piece.text)
+        chunk = piece.text[pos:end]
+        if chunk.strip():
+            out.append(Part(chunk, piece.start + pos, piece.start + end, split_words(chunk)))
+        pos = m.end() if m is not None else len(piece.text)
+    return out
+
+
+def without(text: str, cut: int, dropped: list[Piece]) -> str:
+    """The text from ``cut`` on, with the dropped pieces blanked out."""
+    chars = list(text)
+    for n in range(min(cut, len(chars))):
+        chars[n] = " "
+    for p in dropped:
+        for n in range(p.start, p.end):
+            chars[n] = " "
+    left = "".join(chars)
+    # punctuation left stranded by a removed piece: ", ," or a leading comma
+    left = re.sub(r"(^|[.!?;])[\s,]*,", r"\1", left)
+    left = re.sub(r",\s*(?=[.!?;]|$)", "", left)
+    return re.sub(r"\s+", " ", left).strip(" ,")

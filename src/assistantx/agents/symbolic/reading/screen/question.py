@@ -1,0 +1,109 @@
+"""Question: "who has a tape measure?", "is the printer working?": answered from what the
+office file says; one that may be a request in disguise ("does anyone have a stapler?") is
+answered and met with "Shall I bring you one?"."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
+from assistantx.core import language
+
+
+def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    kind = terms.acts.question(piece.words, piece.asks)
+    if kind != "info":
+        return None
+    items = terms.named(piece.lexed, "item")
+    facilities = terms.named(piece.lexed, "facility")
+    people = terms.named(piece.lexed, "person")
+    if len(items) == 1 and not facilities:
+        found = item_question(terms, piece, items[0], requester)
+        if terms.acts.doubts_ability(piece.words) and found.offer:
+            # "can you even carry ...?": yes, said first; the errand only on a yes
+            message = f"Yes, I can do that. {found.message}"
+            return Finding(
+                found.verdict,
+                piece,
+                found.meaning,
+                message=message,
+                offer=found.offer,
+                shall=found.shall,
+            )
+        return found
+    if facilities:
+        f = terms.office.facility(facilities[0])
+        where = terms.office.location(f.location).name
+        message = (
+            f"As far as I know the {f.name} at the {where} is in service, but I can't "
+            "check it from here."
+        )
+    elif len(people) == 1:
+        p = terms.office.person(people[0])
+        where = terms.office.location(p.location).name
+        message = f"{p.name} works at {where}; I can't see whether they are there right now."
+    else:
+        thing = terms.unknown_thing(piece.words)
+        if not thing:
+            message = f"I can't answer that from what I know. {terms.capabilities()}"
+            return Finding("question", piece, UNANSWERED, message=message)
+        message = f"I don't know of any {thing} in this office."
+    return Finding("question", piece, "a question, answered in words", message=message)
+
+
+def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Finding:
+    t = terms.office.item_type(item)
+    owners = [o for o in terms.office.owners_of(item, known_only=True) if o != requester]
+    asked = [p for p in terms.named(piece.lexed, "person") if p != requester]
+    names = [terms.office.person(o).name for o in owners[:4]]
+    makers = [f for f in terms.office.facilities if item in f.products]
+    whose = ""
+    a_thing = f"{article(t.name)} {t.name}"
+    if language.plural(t.name) == t.name:
+        a_thing = f"some {t.name}"  # "scissors"
+    if says_mine(piece.lexed, item):  # "did anyone find my umbrella?"
+        answer = f"I don't know where your {t.name} is; I can't see it from here."
+        return Finding("question", piece, "a question, answered in words", message=answer)
+    if len(asked) == 1:  # "does Hope have a calculator?"
+        who = terms.office.person(asked[0]).name
+        if asked[0] in owners:
+            answer, whose = f"As far as I know, {who} has {a_thing}.", f"{who}'s"
+        else:
+            answer = f"As far as I know, {who} has no {t.name}."
+    elif makers:
+        where = terms.office.location(makers[0].location).name
+        answer = f"The {makers[0].name} at the {where} makes them."
+    elif names:
+        has = "has" if len(names) == 1 else "have"
+        answer = f"As far as I know, {listed(names)} {has} {a_thing}."
+    else:
+        answer = f"I don't know of anyone here with {a_thing}."
+    if t.kind not in ("belonging", "product"):  # a document, a file: not for me to tell
+        answer = f"I can't tell that about the {t.name} from what I know."
+        return Finding("question", piece, "a question, answered in words", message=answer)
+    verb = "get" if t.kind == "product" else "bring"
+    shall = f"Shall I {verb} you one?"
+    if terms.acts.later(piece.words):  # "... I could use later?": not now unless told so
+        shall = f"Shall I {verb} you one now, or would you rather tell me when?"
+    return Finding(
+        "question",
+        piece,
+        "a question that may be a request: answered, then asked",
+        message=answer,
+        offer=f"{verb} me {whose or article(t.name)} {t.name}",
+        shall=shall,
+    )
+
+
+def says_mine(lexed: Lexed, item: str) -> bool:
+    """ "did anyone find *my* umbrella?" (not "lend *me* a ruler": the asker's want)."""
+    tokens, mentions = lexed.tokens, lexed.mentions
+    return any(
+        m.kind == "item"
+        and m.ids == (item,)
+        and n
+        and mentions[n - 1].kind == "self"
+        and tokens[mentions[n - 1].start].word in ("my", "mine")
+        for n, m in enumerate(mentions)
+    )

@@ -1,0 +1,184 @@
+"""The rewrites that make what is left readable by the later stages: a thing named by its
+purpose ("something to cut this with") becomes the office's item declared for it, "another
+one" after a stated condition becomes that item, a pronoun the facts pin to one person gets
+the name back, a dangling possessive ("lend him mine") gets its item."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.agents.symbolic.reading.screen.pieces import Message
+from assistantx.agents.symbolic.reading.screen.speech import NEED_PHRASES
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import language
+from assistantx.core.task_schema import Evidence, Hint
+from assistantx.memory.names import normalize
+
+
+def rewrite(
+    terms: Terms, msg: Message, text: str, hints: list[Hint], context: list[str]
+) -> tuple[str, list[Evidence]]:
+    evidence: list[Evidence] = []
+    text, found = purposes(terms, text)
+    evidence += found
+    for phrase in NEED_PHRASES:  # "Chen is looking for a pen": Chen needs a pen
+        spaced = r"[\s']*".join(re.escape(w) for w in phrase)
+        text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
+    subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
+    text = name_pronouns(terms, text, hints, subjects)
+    text, found = dangling_possessives(terms, msg, text)
+    evidence += found
+    said = [
+        f"{h.item_type}|"
+        for h in hints
+        if h.kind == "condition" and h.item_type and h.value != "not wanted"
+    ]
+    stated = [c for c in context if not c.startswith("person:")]
+    said += stated
+    if said and not terms.names_an_item(text):
+        item, _, whose = said[-1].partition("|")
+        thing = terms.office.item_type(item).name
+        # "the stapler is for Wang, bring it to him": "it" is the stated item, and
+        # "Gao asked for my scissors, bring them to her": mine
+        back = ("it", "them") if stated and said[-1] == stated[-1] else ()
+        for phrase in (*terms.en.another_one, "some", *back):
+            pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
+            match = pattern.search(text)
+            if match:
+                kept = phrase in back and whose
+                said_as = f"{whose} {thing}" if kept else f"a {thing}"
+                meaning = said_as if kept else f"another {thing}"
+                evidence.append(Evidence(words=match.group(0), meaning=meaning))
+                text = text[: match.start()] + said_as + text[match.end() :]
+                break
+        else:
+            text, found = container_of(terms, text, thing)
+            evidence += found
+    return text, evidence
+
+
+def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidence]]:
+    """ "I ran out of forms. Could you bring me a box?": a noun this office does not know,
+    asked for right after a statement that named an item, is a quantity of that item."""
+    pattern = re.compile(r"\b(?:a|an|one|another)\s+([a-z]+)\b", re.IGNORECASE)
+    for match in pattern.finditer(text):
+        noun = match.group(1).lower()
+        if terms.names_at(text[match.start(1) :]) or not language.is_noun(noun):
+            continue
+        if language.zipf(noun) < 3 or noun in ("one", "bit", "lot"):
+            continue
+        if compound_head(text[match.end() :]):
+            continue  # "a power bank": a thing of its own, not a quantity of the item
+        evidence = [Evidence(words=match.group(0), meaning=f"a {noun} of {thing}")]
+        return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
+    return text, []
+
+
+def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
+    """ "lend him mine", "give him Rich's": a possessive with no item after it means the
+    item named last before it (in what is left, else in the whole message)."""
+    evidence: list[Evidence] = []
+
+    def last_item(before: str) -> str | None:
+        for said in (before, msg.text):
+            items = [m for m in terms.lex.scan(terms.lex.tokens(said)) if m.kind == "item"]
+            if items:
+                return terms.office.item_type(items[-1].ids[0]).name
+        return None
+
+    def whole(match: re.Match[str]) -> str:
+        word = match.group(1)
+        owner = re.sub(r"['’]s$", "", word)
+        if word.lower() != "mine" and not terms.is_person_word(owner):
+            return word
+        thing = last_item(text[: match.start()])
+        if thing is None:
+            return word
+        said = f"my {thing}" if word.lower() == "mine" else f"{word} {thing}"
+        evidence.append(Evidence(words=word, meaning=said))
+        return said
+
+    pattern = re.compile(
+        r"\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
+        r"for now|for a bit|for today)\b))",
+        re.IGNORECASE,
+    )
+    return pattern.sub(whole, text), evidence
+
+
+def name_pronouns(terms: Terms, text: str, hints: list[Hint], subjects: set[str]) -> str:
+    """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
+    pack": with the fact taken out, a pronoun that can only mean the one person it named
+    gets the name back."""
+    people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
+    people |= subjects
+    if len(people) != 1:
+        return text
+    name = terms.office.person(next(iter(people))).name
+
+    def named(match: re.Match[str]) -> str:
+        word, gap, following = match.group(1).lower(), match.group(2), match.group(3)
+        possessive = word == "his" or (word == "her" and normalize(following) in terms.lex.items)
+        return (f"{name}'s" if possessive else name) + gap + following
+
+    return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
+
+
+def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
+    heads = "|".join(re.escape(h) for h in sorted(terms.en.purpose_heads, key=len, reverse=True))
+    links = "|".join(re.escape(h) for h in sorted(terms.en.purpose_links, key=len, reverse=True))
+    pattern = re.compile(
+        rf"\b(?:{heads})\s+(?:{links})\s+([a-z]+)((?:\s+[a-z0-9]+)*)", re.IGNORECASE
+    )
+    evidence: list[Evidence] = []
+    match = pattern.search(text)
+    if match is None:
+        return text, evidence
+    verb = stem(match.group(1).lower())
+    tail = match.group(2).split()
+    keep = 0
+    while keep < len(tail) and tail[keep].lower() in terms.en.purpose_tail:
+        keep += 1
+    used_tail = " ".join(tail[:keep])
+    end = match.start(2) + (
+        len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0
+    )
+    following = tail[0].lower() if tail else ""
+
+    def declared(phrase: str) -> list[str]:
+        return [t.name for t in terms.office.item_types if phrase in map(purpose, t.purposes)]
+
+    # "to write on" (paper) before "to write" (pen, "to write with")
+    types = declared(f"{verb} {following}") if following else []
+    types = types or declared(verb)
+    if len(types) != 1:
+        return text, evidence  # none or several: the parser asks which item
+    name = types[0]
+    evidence.append(Evidence(words=text[match.start() : end], meaning=f"a {name} (to {verb})"))
+    return text[: match.start()] + f"a {name}" + text[end:], evidence
+
+
+# -- helpers -------------------------------------------------------------------------
+
+
+def stem(word: str) -> str:
+    """'cutting' → 'cut', 'writes' → 'write', 'stapling' → 'staple' (the verb's lemma, from
+    the morphology library; a word it does not know as a verb stays as it is)."""
+    w = word.lower()
+    found = language.verb_lemmas(w)
+    return min(found, key=len) if found else w
+
+
+def purpose(phrase: str) -> str:
+    first, _, rest = phrase.lower().partition(" ")
+    return f"{stem(first)} {rest}".strip()
+
+
+def compound_head(after: str) -> bool:
+    """Whether the word right after a noun is a noun that heads a compound with it ("a power
+    *bank*"), not a time word or a courtesy ("a box today", "a box please")."""
+    nxt = language.words(after)[:1]
+    if not nxt or not after[:1].isspace():
+        return False
+    found = language.lemmas(nxt[0])
+    return "NOUN" in found and "ADV" not in found

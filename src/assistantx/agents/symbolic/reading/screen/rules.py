@@ -1,0 +1,40 @@
+"""The screen's table: the rules tried on each piece in priority order; the first that
+matches decides what the piece is (see the package's table)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from assistantx.agents.symbolic.reading.screen.condition import condition
+from assistantx.agents.symbolic.reading.screen.destructive import destructive
+from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
+from assistantx.agents.symbolic.reading.screen.fact import fact
+from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
+from assistantx.agents.symbolic.reading.screen.negation import negated
+from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.question import question
+from assistantx.agents.symbolic.reading.screen.service import unsupported
+from assistantx.agents.symbolic.reading.screen.statement import statement
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.wish import wish
+from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
+
+# A rule reads one piece of a message with the office's terms; None: not this kind of piece.
+Rule = Callable[[Terms, Message, Piece, str], Finding | None]
+
+RULES: tuple[tuple[Verdict, Rule], ...] = (
+    ("withdrawn", withdrawn),
+    ("note", note),
+    ("exclusion", exclusion),
+    ("wish", wish),
+    ("thanks", thanks),
+    ("condition", condition),
+    ("negated", negated),
+    ("destructive", destructive),
+    ("fact", fact),
+    ("question", question),
+    ("statement", statement),
+    ("unsupported", unsupported),
+)

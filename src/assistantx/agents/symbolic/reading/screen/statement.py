@@ -1,0 +1,95 @@
+"""Statement: "my laptop cable is too short", "I spilled my tea", "tea time soon": context
+beside a request, with the items and people it names for the rewrites."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading._objects import modifiers
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import language
+from assistantx.core.english import words as english_words
+
+
+def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if not piece.asks and context_fragment(terms, msg, piece):
+        return Finding("statement", piece, "context beside the request")
+    if piece.asks or not terms.acts.statement(piece.words):
+        return None
+    named = tuple(stated_items(terms, piece, requester)) + tuple(
+        f"person:{p}" for p in terms.named(piece.lexed, "person")[:1]
+    )
+    return Finding("statement", piece, "a statement, context only", context=named)
+
+
+def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "Tea time soon. Could you bring me a ruler?": a fragment with no request wording
+    whose items only modify other words ("tea time"), beside a sentence that asks for
+    something, is context; it never adds an errand of its own."""
+    if terms.acts.request(piece.words):
+        return False
+    others = [p for p in msg.pieces if p is not piece and p.start > piece.end]
+    if not any(terms.acts.request(p.words) for p in others):
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    items = [m for m in mentions if m.kind in ("item", "cue")]
+    if not items or any(language.verb_lemmas(t.word) & terms.lex.cue_words for t in tokens):
+        return False
+    modifying = modifiers(tokens, mentions)
+
+    def compound(m: Mention) -> bool:  # "tea time": the item names a kind of time
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        return language.is_noun(after) and after not in terms.en.courtesy
+
+    return all(m.start in modifying or compound(m) for m in items)
+
+
+def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
+    """The items a statement names, as "item|whose": "my stapler" → stapler|my,
+    "the book ... belongs to Yang" → book|Yang Lei's (a later "it" keeps its owner). An
+    item that only modifies another ("wipes *for the cups*") is not what the statement is
+    about, so a later "some" never means it."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    modifying = modifiers(tokens, mentions)
+    out: list[str] = []
+    for n, m in enumerate(mentions):
+        if m.kind != "item" or len(m.ids) != 1 or m.start in modifying:
+            continue
+        before = mentions[n - 1] if n else None
+        whose = ""
+        if before is not None and before.kind == "self" and before.possessive:
+            whose = "my"
+        elif before is not None and before.kind == "person" and before.possessive:
+            whose = f"{terms.office.person(before.ids[0]).name}'s"
+        elif before is not None and before.kind == "pronoun" and before.possessive:
+            people = {p.ids for p in mentions[:n] if p.kind == "person" and len(p.ids) == 1}
+            if len(people) == 1:  # "Yang said I could borrow his book"
+                whose = f"{terms.office.person(next(iter(people))[0]).name}'s"
+        elif (holder := holder_of(mentions, n, words)) is not None:
+            whose = f"{terms.office.person(holder).name}'s"  # "Bram has a stopwatch"
+        else:
+            for k in range(len(words) - 1):
+                if words[k : k + 2] == ["belongs", "to"]:
+                    owner = [x for x in mentions if x.kind == "person" and x.start > k]
+                    if owner and len(owner[0].ids) == 1:
+                        whose = f"{terms.office.person(owner[0].ids[0]).name}'s"
+        out.append(f"{m.ids[0]}|{whose}")
+    return out
+
+
+_POSSESSION_VERBS = english_words("possession_verbs")
+
+
+def holder_of(mentions: Sequence[Mention], n: int, words: list[str]) -> str | None:
+    """The one person a statement says has the item ``mentions[n]`` ("Bram has a stopwatch",
+    "Femi's got a spare radio"): a later "it" is theirs, not another of its kind."""
+    people = [m for m in mentions[:n] if m.kind == "person" and len(m.ids) == 1]
+    if len(people) != 1:
+        return None
+    between = words[people[0].end : mentions[n].start]
+    verb = between[:1] if not people[0].possessive else ["has"]  # "Femi's got": has got
+    return people[0].ids[0] if verb and verb[0] in _POSSESSION_VERBS else None

@@ -1,0 +1,31 @@
+"""Wish: "keep everyone away from Mao's seal", "nobody take my mug", "I wish it were
+warmer": answered in words; nothing is moved."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+
+
+def wish(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if terms.acts.world_wish(piece.words):
+        return Finding(
+            "wish",
+            piece,
+            "a wish about the place, not a request",
+            message="Noted; that is not something I can change.",
+        )
+    if not terms.acts.wish(piece.words):
+        return None
+    things = terms.named(piece.lexed, "item")
+    what = f"the {terms.office.item_type(things[0]).name}" if len(things) == 1 else "anything"
+    return Finding(
+        "wish",
+        piece,
+        "a wish about other people, not a request",
+        message=(
+            f"Understood: I won't move or hand out {what} unless its owner asks me to. "
+            "I can't keep people away from things, though."
+        ),
+    )

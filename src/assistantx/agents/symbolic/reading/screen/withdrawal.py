@@ -1,0 +1,39 @@
+"""Withdrawal: "never mind", "forget about the scissors", "cancel that"; drops all said
+before it, and the reason told after it ("..., found one in my drawer")."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import language
+
+
+def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    found = withdrawal(terms, piece)
+    if found is not None:
+        msg.withdrawing = True
+        return found
+    told = any(language.is_finite_verb(w) for w in piece.words)
+    if (
+        msg.withdrawing
+        and told
+        and not any(terms.acts.request(p.words) for p in msg.pieces if p.start >= piece.start)
+    ):
+        # "never mind, found the stapler in my drawer, thanks": the reason for it, told as
+        # what happened, not an errand; a request after it ("..., bring me a pen instead")
+        # is read, and so is a bare correction ("no wait, a pencil": asked about)
+        return Finding("withdrawn", piece, "the reason the request is withdrawn")
+    return None
+
+
+def withdrawal(terms: Terms, piece: Piece) -> Finding | None:
+    words = [w for w in piece.words if w not in ("actually", "oh", "ok", "okay", "please")]
+    if tuple(words) in terms.en.withdraw or terms.acts.withdrawal(words):
+        return Finding("withdrawn", piece, "withdraws the request")
+    said = tuple(w for w in piece.words if w not in ("oh", "ok", "okay", "wait", "hmm"))
+    if piece.start > 0 and said in terms.en.elliptical_withdrawals:
+        return Finding("withdrawn", piece, "withdraws what was asked before")
+    if piece.start > 0 and not piece.asks and terms.acts.had_already(piece.words):
+        return Finding("withdrawn", piece, "what was asked for is had already")
+    return None
