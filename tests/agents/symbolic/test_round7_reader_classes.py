@@ -10,6 +10,7 @@ from collections.abc import Iterator
 
 import pytest
 from _offices import parser as other_parser
+from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core import task_kinds
@@ -130,6 +131,18 @@ def test_the_stamper_named_is_the_one_asked() -> None:
     assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
         ("seal", "plan", "callum", "tobias")
     ]
+
+
+async def test_in_the_office_the_paper_is_stamped_and_the_tool_stays_with_its_owner() -> None:
+    run = await run_instruction(
+        surveyors(), "callum", "can you get my lease stamped with the embosser"
+    )
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"sealed": ["plan:callum"]})
+    assert run.sim.world.check({"holds": ["callum", "plan:callum"]})
+    moved = {e.detail["item"] for e in run.sim.world.handovers()}
+    assert "plan:callum" in moved  # the paper went to the stamp's owner and back
+    assert not {i for i in moved if i.startswith("stamp:")}, moved
 
 
 @pytest.mark.parametrize(
