@@ -52,6 +52,9 @@ def _moves_nothing(frame: TaskFrame) -> None:
         "no need to fetch the measuring tape, I found mine in the van",
         "please don't trouble yourself getting Noor's level, we postponed the visit",
         "Don't bother with the tripod, the survey is cancelled",
+        "skip fetching the tripod, Bill's got one in his car",
+        "there's no need to get Bill's tripod since I'm staying in",
+        "no point fetching the level, it's raining",
     ],
 )
 def test_a_negated_errand_with_its_reason_moves_nothing(text: str) -> None:
@@ -73,6 +76,9 @@ def test_a_request_after_the_negated_errand_is_still_read() -> None:
         "my tripod is wobbly, I might need a new one",
         "The measuring tape is fraying. might need another one",
         "my spirit level keeps giving odd readings, I may need a new one",
+        "the tripod's leg snapped, might need a replacement",
+        "my measuring tape won't retract; probably need a new one",
+        "I think I'll need a new spirit level, mine is cracked",
     ],
 )
 def test_a_failing_item_with_a_possible_need_is_offered(text: str) -> None:
@@ -104,6 +110,10 @@ def test_a_need_on_a_condition_is_still_only_noted() -> None:
         "the will needs the stamp on it please",
         "please get my plan stamped with the practice seal",
         "could my tenancy agreement get the embosser on it",
+        "can the embosser go on my lease?",
+        "get the practice seal put on my lease",
+        "I need my affidavit embossed",
+        "my deed of variation needs stamping with the practice seal",
     ],
 )
 def test_a_tool_used_on_a_paper_stamps_the_paper(text: str) -> None:
@@ -168,10 +178,33 @@ def test_the_tool_asked_for_itself_is_still_fetched(text: str) -> None:
         ("please take my survey plan to the copier, it needs binding", "bind"),
         ("take my certificate to the photocopier for copying", "copy"),
         ("my plan needs scanning on the copier", "scan"),
+        ("my plan needs to be bound", "bind"),
+        ("my certificate needs to be scanned", "scan"),
     ],
 )
 def test_the_operation_is_the_one_its_verb_or_gerund_names(text: str, op: str) -> None:
     assert [(t.operation, t.item) for t in _frame(text).tasks] == [(op, "plan")]
+
+
+@pytest.mark.parametrize(
+    ("text", "ops"),
+    [
+        ("photocopy and bind my plan", ["copy", "bind"]),
+        ("scan my plan and then bind it", ["scan", "bind"]),
+        ("please bind and scan my certificate", ["bind", "scan"]),
+    ],
+)
+def test_several_operations_said_on_one_item_are_each_run(text: str, ops: list[str]) -> None:
+    frame = _frame(text)
+    assert [t.operation for t in frame.tasks] == ops
+    assert {(t.item, t.owner) for t in frame.tasks} == {("plan", "callum")}
+
+
+async def test_a_copy_and_a_binding_both_run_in_the_office() -> None:
+    run = await run_instruction(surveyors(), "callum", "photocopy and bind my plan")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"copied": ["plan:callum"]})
+    assert run.sim.world.check({"heated": ["plan:callum"]})
 
 
 @pytest.mark.parametrize("text", ["take my plan to the copier", "put my contract in the copier"])
@@ -226,6 +259,12 @@ def test_a_scan_for_oneself_stays_with_the_requester() -> None:
         ("fetch Bill's tripod… actually, no, just print my draft", ("print", "drawing")),
         ("bring me Noor's level... actually no, just scan my plan", ("copy", "plan")),
         ("get me the tripod... no wait, just bind my plan", ("heat", "plan")),
+        ("bring me the tripod - actually, just plot my drawing", ("print", "drawing")),
+        ("fetch the level… no, actually print my draft", ("print", "drawing")),
+        (
+            "could you bring me the tripod? actually, make it the spirit level",
+            ("transfer", "level"),
+        ),
     ],
 )
 def test_only_the_corrected_request_runs(text: str, row: tuple[str, str]) -> None:

@@ -115,18 +115,27 @@ def _tool_used(s: Scene) -> bool:
         while k >= 0 and mentions[k].possessive:  # "with *his* embosser"
             k -= 1
         before = mentions[k] if k >= 0 else None
-        after = mentions[n + 1] if n + 1 < len(mentions) else None
+        j = n + 1
+        while j < min(len(mentions), n + 3) and _verb_word(mentions[j]):
+            j += 1  # "the embosser *go* on my lease", "the seal *put* on it"
+        after = mentions[j] if j < len(mentions) else None
         if before is not None and before.kind == "word" and before.ids[0] in _INSTRUMENT:
             return True
         if m.kind == "cue" and before is not None and before.kind == "word":
             if before.ids[0] == "to":  # "get Tobias to stamp my lease": the service
                 return True
         if after is not None and after.kind == "word" and after.ids[0] in _ONTO:
-            if _onto_paper(mentions[n + 2 :]):
+            if _onto_paper(mentions[j + 1 :]):
                 return True
         if m.kind == "cue" and m.text.lower() in _SERVICE_PARTICIPLES:
             return True
     return False
+
+
+def _verb_word(m: Mention) -> bool:
+    """A plain word that is a verb ("go", "put", "be"), not a preposition like "on"."""
+    word = m.ids[0] if m.ids else ""
+    return m.kind == "word" and word not in _ONTO and bool(language.verb_lemmas(word))
 
 
 def _onto_paper(rest: list[Mention]) -> bool:

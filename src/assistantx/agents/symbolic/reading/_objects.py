@@ -106,6 +106,8 @@ def _purpose(mentions: Sequence[Mention], n: int) -> bool:
     nxt = mentions[n + 1] if n + 1 < len(mentions) else None
     if nxt is None:
         return False
+    if nxt.kind == "word" and nxt.ids[0] == "be":
+        return False  # "my plan needs to be bound": a passive, the service asked for
     if nxt.kind == "word":
         return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit()
     if nxt.kind == "cue":

@@ -39,7 +39,8 @@ class OperationChooser:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
         already said a send-out to a colleague's name is meant to leave the office."""
-        words = {t.word for t in lexed.tokens}
+        in_order = [t.word for t in lexed.tokens]
+        words = set(in_order)
         facility_ops = {
             op
             for m in lexed.mentions
@@ -47,11 +48,22 @@ class OperationChooser:
             for op in self.office.facility(m.ids[0]).operations
         }
         products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
-        tasks: list[Task] = []
-        for t in frame.tasks:
-            t, which = self._one_of_several(t, words, facility_ops, products)
+        named: list[Task] = []
+        for n, t in enumerate(frame.tasks):
+            # the other tasks on the same item: "scan my plan and then bind it" is two
+            # clauses, one operation each, not both operations twice
+            peers = [
+                k
+                for k, u in enumerate(frame.tasks)
+                if u.item == t.item and u.kind in _KIND_SHAPE and u.operation is None
+            ]
+            place = (peers.index(n), len(peers)) if n in peers else (0, 1)
+            split, which = self._one_of_several(t, in_order, facility_ops, products, place)
             if which is not None:
                 return TaskFrame(requester=frame.requester, question=which)
+            named += split
+        tasks: list[Task] = []
+        for t in named:
             shape = _KIND_SHAPE.get(t.kind)
             ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
             if shape == "treat" and ops and t.item is not None and t.operation is None:
@@ -111,36 +123,56 @@ class OperationChooser:
         )
 
     def _one_of_several(
-        self, task: Task, words: set[str], facility_ops: set[str], products: set[str]
-    ) -> tuple[Task, str | None]:
-        """The operation a task on an item runs, where a machine does several: the one whose
+        self,
+        task: Task,
+        words: list[str],
+        facility_ops: set[str],
+        products: set[str],
+        place: tuple[int, int] = (0, 1),
+    ) -> tuple[list[Task], str | None]:
+        """The operations a task on an item runs, where a machine does several: the one whose
         verb or gerund is said ("needs binding", "through the copier to scan it") or whose
-        product is named ("to PDF"), whatever shape the rest of the clause suggested; with
-        none said and the machine named doing several to this item, the question which
-        ("Which do you mean: copy, scan or bind?")."""
+        product is named ("to PDF"), whatever shape the rest of the clause suggested, and one
+        task each when several are said ("photocopy and bind my plan"); with none said and
+        the machine named doing several to this item, the question which ("Which do you
+        mean: copy, scan or bind?"). ``place``: this task's index among the tasks on the same
+        item, and their number (several tasks take the operations said in turn)."""
         if task.item is None or task.operation is not None or task.kind not in _KIND_SHAPE:
-            return task, None
+            return [task], None
         fits = [
             op
             for op in self.office.operations
             if op.input == task.item and self.office.runnable(op.id) and not op.sends_out
         ]
-        said = [op for op in fits if self._op_words[op.id] & words]
+        order = {w: n for n, w in reversed(list(enumerate(words)))}
+        said = [op for op in fits if self._op_words[op.id] & set(words)]
         # "scan my contract to PDF", "send my plan to PDF": the product named says which
         said = said or [op for op in fits if op.product in products]
+        if len(said) > 1:
+            # in the order they were said: "photocopy and bind" copies, then binds
+            said.sort(key=lambda op: min(order.get(w, len(order)) for w in self._op_words[op.id]))
+            at, peers = place
+            if peers == len(said):  # one clause each: "scan my plan and then bind it"
+                return [self._as(task, said[at])], None
+            if peers == 1:
+                return [self._as(task, op) for op in said], None
         if len(said) == 1:
             shape = said[0].shape(self.office)
-            kind = SHAPE_KIND.get(shape)
             # only where the clause read another shape, or several share this one: a lone
             # operation of its shape is left to the plain reading
-            if kind is not None and (kind != task.kind or len(self.office.with_shape(shape)) > 1):
-                return task.model_copy(update={"kind": kind, "operation": said[0].id}), None
+            if SHAPE_KIND.get(shape) != task.kind or len(self.office.with_shape(shape)) > 1:
+                return [self._as(task, said[0])], None
         at_machine = [op for op in fits if op.id in facility_ops]
         if not said and len(at_machine) > 1:
             names = [op.name for op in at_machine]
             listed = ", ".join(names[:-1]) + " or " + names[-1]
-            return task, f"Which do you mean: {listed}?"
-        return task, None
+            return [task], f"Which do you mean: {listed}?"
+        return [task], None
+
+    def _as(self, task: Task, op: Operation) -> Task:
+        """``task`` as a run of ``op``: its kind is the one of the operation's shape."""
+        kind = SHAPE_KIND.get(op.shape(self.office), task.kind)
+        return task.model_copy(update={"kind": kind, "operation": op.id})
 
     def _cannot_treat(self, ops: list[Operation], item: str) -> str:
         """Why a service the office offers cannot be run on this item, with what it is for."""

@@ -13,6 +13,9 @@ from assistantx.core.english import words as english_words
 # "a new one", "another", "a replacement": a need that replaces an item said to be failing.
 _REPLACEMENT = english_words("replacement_words")
 _CONDITION_WORDS = english_words("condition_openers")
+_NEED = english_words("need_verbs")
+# What makes the need only possible: "might", "probably", "I think", "I'll".
+_HEDGES = english_words("possibility_words") | frozenset({"think", "guess", "ill", "will"})
 
 
 def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -20,7 +23,7 @@ def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     with no request beside it the message is information, answered in words."""
     deferred = terms.acts.defers(split_words(msg.text))
     put_off = terms.acts.defers(piece.words) and not terms.acts.imperative(piece.words)
-    if not put_off and terms.acts.future_need(piece.words, deferred):
+    if not put_off:
         offered = _replacement_offer(terms, msg, piece)
         if offered is not None:
             return offered
@@ -52,7 +55,9 @@ def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | No
     an item said to be failing, with no condition and no "later", is offered ("Shall I bring
     you a tripod?"), never fetched at once nor only noted."""
     words = set(piece.words)
-    if not words & _REPLACEMENT or words & _CONDITION_WORDS or terms.acts.later(piece.words):
+    if not (words & _NEED and words & _HEDGES and words & _REPLACEMENT):
+        return None
+    if words & _CONDITION_WORDS or terms.acts.later(piece.words):
         return None
     said = (
         terms.named(piece.lexed, "item")

@@ -11,21 +11,24 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 from assistantx.core.task_schema import Evidence
 
-# "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...": the words after it correct
+# "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
+# a pen": the words after it correct
 # what was just said (only when they name one person or item, ``corrected``)
 _CORRECTION = re.compile(
-    r"(?:[,;.!?]|\s[-–—]+)\s*"
+    r"(?:[,;.!?…]|\s[-–—]+)\s*"
     r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|no(?=[,!.]))\b"
-    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b)[,:]?\s*",
+    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
+    r"[,:]?\s*",
     re.IGNORECASE,
 )
-# "bring me the… actually, just print it": after a trailing-off, "actually" corrects too.
+# "bring me the… actually, just print it", "... - actually, ...": after a trailing-off or a
+# dash, "actually" corrects too.
 _ELLIPSIS_ACTUALLY = re.compile(
-    r"(?:\.{2,}|…)\s*actually\b[,:]?\s*(?:no\b[,.!]?\s*)?", re.IGNORECASE
+    r"(?:\.{2,}|…|\s[-–—]+)\s*actually\b[,:]?\s*(?:no\b[,.!]?\s*)?", re.IGNORECASE
 )
 # The words before a correction's own request verb ("just", "please", "rather").
 _FILLERS = frozenset(
-    {"just", "please", "rather", "instead", "simply", "only", "can", "you", "could"}
+    {"just", "please", "rather", "instead", "simply", "only", "can", "you", "could", "actually"}
 )
 _SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
 _TRAILING = " .…,;-–—"
