@@ -114,6 +114,9 @@ def test_a_need_on_a_condition_is_still_only_noted() -> None:
         "get the practice seal put on my lease",
         "I need my affidavit embossed",
         "my deed of variation needs stamping with the practice seal",
+        "I've got a power of attorney here. Can you get it stamped with the embosser?",
+        "the affidavit on my desk needs the practice seal",
+        "please emboss my lease",
     ],
 )
 def test_a_tool_used_on_a_paper_stamps_the_paper(text: str) -> None:
@@ -136,11 +139,31 @@ def test_the_stamping_tool_is_never_handed_over_for_a_paper(text: str) -> None:
     assert frame.tasks or frame.question
 
 
-def test_the_stamper_named_is_the_one_asked() -> None:
-    frame = _frame("get Tobias to stamp my lease with his embosser")
-    assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
-        ("seal", "plan", "callum", "tobias")
+@pytest.mark.parametrize(
+    ("text", "stamper"),
+    [
+        ("get Tobias to stamp my lease with his embosser", "tobias"),
+        ("have Ines stamp my lease", "ines"),
+        ("my lease needs Tobias's embosser", "tobias"),
+        ("can Ines put her stamp on my lease?", "ines"),
+        ("take my lease to Ines to be stamped", "ines"),
+    ],
+)
+def test_the_stamper_named_is_the_one_asked(text: str, stamper: str) -> None:
+    """Whoever the words make the stamper (asked, owning the tool named, or the one the paper
+    is taken to) stamps it, and the paper comes back to the requester."""
+    assert [(t.kind, t.item, t.owner, t.actor, t.recipient) for t in _frame(text).tasks] == [
+        ("seal", "plan", "callum", stamper, "callum")
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "signer"),
+    [("have Wang sign my contract", "wang"), ("have Mao stamp my contract", "mao")],
+)
+def test_have_a_person_do_it_is_a_request_not_a_question(text: str, signer: str) -> None:
+    frame = other_parser("default").parse(text, "lee")
+    assert [(t.item, t.actor) for t in frame.tasks] == [("document", signer)], frame
 
 
 async def test_in_the_office_the_paper_is_stamped_and_the_tool_stays_with_its_owner() -> None:
@@ -162,6 +185,7 @@ async def test_in_the_office_the_paper_is_stamped_and_the_tool_stays_with_its_ow
         "could I borrow Ines's stamp",
         "put the stamp on my desk",  # "on" a place: the tool is moved, not used
         "please leave the embosser on the shelf for me",
+        "could you ask Tobias to lend me his stamp",
     ],
 )
 def test_the_tool_asked_for_itself_is_still_fetched(text: str) -> None:

@@ -9,6 +9,7 @@ file is sent, a belonging is brought).
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -28,6 +29,8 @@ _INSTRUMENT = english.words("instrument_prepositions")
 _ONTO = english.words("onto_prepositions")
 _SERVICE_PARTICIPLES = english.words("service_participles")
 _PLACE_WORDS = english.words("place_words") | english.words("surface_words")
+_LEAD_IN = english.words("lead_in")
+_NEED_WORDS = english.words("need_verbs")
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
 
@@ -53,6 +56,7 @@ class Scene:
     file_type: str | None = None  # the office's electronic file type
     treat_asked: bool = False  # a treat service's verb, or an item put at its facility
     signable: str | None = None  # the office's paper a person signs or stamps (signable)
+    tool_owners: frozenset[str] = frozenset()  # who owns the office's stamping tool
 
     @property
     def recipient(self) -> str:
@@ -129,7 +133,43 @@ def _tool_used(s: Scene) -> bool:
                 return True
         if m.kind == "cue" and m.text.lower() in _SERVICE_PARTICIPLES:
             return True
+        if m.kind == "cue" and _verb_position(mentions, n):
+            return True  # "please emboss my lease": the service is the clause's verb
+        if _needed_by_paper(mentions, n):
+            return True  # "my lease needs Tobias's embosser": a paper needs the tool
     return False
+
+
+def _verb_position(mentions: list[Mention], n: int) -> bool:
+    """Whether a service word is the clause's verb, with its object after it ("stamp my
+    lease", "please emboss it", "have Ines stamp my lease"), not a noun ("bring me the
+    stamp", "Ines's stamp")."""
+    nxt = mentions[n + 1] if n + 1 < len(mentions) else None
+    if nxt is None or not (nxt.possessive or nxt.kind in ("pronoun", "item")):
+        return False
+    before = mentions[n - 1] if n else None
+    if before is not None and before.kind == "person" and not before.possessive:
+        return True  # "have Ines stamp my lease": she does it
+    return all(m.kind == "word" and m.ids[0] in _LEAD_IN for m in mentions[:n])
+
+
+def _needed_by_paper(mentions: list[Mention], n: int) -> bool:
+    """ "my lease needs Tobias's embosser", "the affidavit needs the practice seal": the tool
+    is the object of a need whose subject is a thing (a noun, "it"), not a person or "I"."""
+    k = n - 1
+    while k >= 0 and mentions[k].possessive:
+        k -= 1
+    if k < 0 or mentions[k].kind != "cue" or mentions[k].text.lower() not in _NEED_WORDS:
+        return False
+    subject = [m for m in mentions[:k] if not m.possessive]
+    if any(m.kind in ("person", "self") for m in subject):
+        return False
+    return any(
+        m.kind == "pronoun"
+        or m.kind == "item"
+        or (m.kind == "word" and m.ids[0] not in _LEAD_IN and language.is_noun(m.ids[0]))
+        for m in subject
+    )
 
 
 def _verb_word(m: Mention) -> bool:
@@ -157,6 +197,17 @@ def _onto_paper(rest: list[Mention]) -> bool:
 def _seal(s: Scene) -> Task:
     sealer = next((s.roles.owners.get(m.start) for m in _seal_items(s)), None)
     sealer = sealer or next(iter(s.roles.actor + s.roles.bare), None)
+    # "take my lease to Ines to be stamped": the one it goes to who owns a stamp stamps it,
+    # and it comes back to the requester, as a signer named so would sign it
+    to_sealer = next((p for p in s.roles.recipient if p in s.tool_owners), None)
+    if sealer is None and to_sealer is not None:
+        sealer = to_sealer
+        s = dataclasses.replace(
+            s,
+            roles=dataclasses.replace(
+                s.roles, recipient=[p for p in s.roles.recipient if p != to_sealer]
+            ),
+        )
     if s.doc is None:
         # "get my lease stamped with the embosser": a paper the office does not list by
         # that word is its signable paper, the requester's unless the clause says whose
@@ -255,6 +306,8 @@ class TaskReader:
         # the file types, which may name the format of what a service makes ("to PDF")
         self.formats = frozenset(t.id for t in office.item_types if t.electronic)
         self.file = office.file_type() or ""  # what is forwarded
+        seal = office.seal_tool()
+        self.tool_owners = frozenset(office.owners_of(seal) if seal else ())
 
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
@@ -343,6 +396,7 @@ class TaskReader:
             self.office.file_type(),
             treat_asked,
             self.office.signable_type(),
+            self.tool_owners,
         )
 
     def tasks(
