@@ -117,6 +117,7 @@ def test_a_need_on_a_condition_is_still_only_noted() -> None:
         "I've got a power of attorney here. Can you get it stamped with the embosser?",
         "the affidavit on my desk needs the practice seal",
         "please emboss my lease",
+        "I need the embosser for my lease",
     ],
 )
 def test_a_tool_used_on_a_paper_stamps_the_paper(text: str) -> None:
@@ -186,6 +187,8 @@ async def test_in_the_office_the_paper_is_stamped_and_the_tool_stays_with_its_ow
         "put the stamp on my desk",  # "on" a place: the tool is moved, not used
         "please leave the embosser on the shelf for me",
         "could you ask Tobias to lend me his stamp",
+        "I need the stamp for tomorrow",
+        "bring me the embosser for the site visit",
     ],
 )
 def test_the_tool_asked_for_itself_is_still_fetched(text: str) -> None:

@@ -30,6 +30,7 @@ _ONTO = english.words("onto_prepositions")
 _SERVICE_PARTICIPLES = english.words("service_participles")
 _PLACE_WORDS = english.words("place_words") | english.words("surface_words")
 _LEAD_IN = english.words("lead_in")
+_COMMON = english.words("common")
 _NEED_WORDS = english.words("need_verbs")
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
@@ -137,6 +138,9 @@ def _tool_used(s: Scene) -> bool:
             return True  # "please emboss my lease": the service is the clause's verb
         if _needed_by_paper(mentions, n):
             return True  # "my lease needs Tobias's embosser": a paper needs the tool
+        if after is not None and after.kind == "word" and after.ids[0] == "for":
+            if _for_paper(mentions[j + 1 :]):
+                return True  # "I need the embosser for my lease": used on the lease
     return False
 
 
@@ -151,6 +155,29 @@ def _verb_position(mentions: list[Mention], n: int) -> bool:
     if before is not None and before.kind == "person" and not before.possessive:
         return True  # "have Ines stamp my lease": she does it
     return all(m.kind == "word" and m.ids[0] in _LEAD_IN for m in mentions[:n])
+
+
+def _for_paper(rest: list[Mention]) -> bool:
+    """Whether what follows "for" is someone's paper the tool is used on ("for my lease",
+    "for Noor's deed"), not a time, a place or a person ("for tomorrow", "for Noor", "for the
+    site visit"): only a possessed noun is read so."""
+    k = 0
+    while k < len(rest) and rest[k].possessive:
+        k += 1
+    if k == 0 or k >= len(rest):
+        return False
+    m = rest[k]
+    if m.kind == "item":
+        return True
+    word = m.ids[0] if m.ids else ""
+    return (
+        m.kind == "word"
+        and word not in _PLACE_WORDS
+        and word not in _COMMON
+        and not language.is_weekday(word)
+        and not language.is_month(word)
+        and language.is_noun(word)
+    )
 
 
 def _needed_by_paper(mentions: list[Mention], n: int) -> bool:
