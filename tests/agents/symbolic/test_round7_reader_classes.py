@@ -275,6 +275,26 @@ def test_the_pdf_of_a_scan_goes_to_whom_it_is_for(text: str) -> None:
     assert _ops(text) == [("copy", "scan", "noor")]
 
 
+@pytest.mark.parametrize(
+    ("text", "rows"),
+    [
+        (
+            "I need a copy of my plan for Noor and a PDF for Bill",
+            [("copy", "copy", "noor"), ("copy", "scan", "bill")],
+        ),
+        (
+            "a copy and a PDF of my certificate please",
+            [("copy", "copy", "callum"), ("copy", "scan", "callum")],
+        ),
+        ("could you turn my plan into a PDF for Bill", [("copy", "scan", "bill")]),
+    ],
+)
+def test_each_product_of_a_paper_named_is_made_for_whom_it_is_for(
+    text: str, rows: list[tuple[str, str, str]]
+) -> None:
+    assert _ops(text) == rows
+
+
 def test_a_scan_for_oneself_stays_with_the_requester() -> None:
     assert _ops("scan my plan, I need a PDF of it for the meeting") == [("copy", "scan", "callum")]
 

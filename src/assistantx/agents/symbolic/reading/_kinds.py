@@ -330,6 +330,18 @@ class TaskReader:
             if o.product and o.shape(office) in ("render", "transform")
         }
         self.sourced = frozenset(p for p in (self.printout, self.copy, *self.made) if p)
+        # the operation that makes each product of a paper ("a PDF": the scan)
+        self.copy_ops = {
+            o.product: o.id
+            for o in office.operations
+            if o.product and o.shape(office) == "transform"
+        }
+        self.product_words = {
+            language.fold(name): t.id
+            for t in office.item_types
+            if t.id in self.copy_ops
+            for name in (t.name, *t.synonyms)
+        }
         # the file types, which may name the format of what a service makes ("to PDF")
         self.formats = frozenset(t.id for t in office.item_types if t.electronic)
         self.file = office.file_type() or ""  # what is forwarded
@@ -437,10 +449,47 @@ class TaskReader:
         ):
             return []  # "print my draft and take the printout to Sue": the same task, on
         s = self.scene(clause, roles, requester, previous)
+        each = self._each_product(s)
+        if each:
+            return each
         rule = next((r for r in KIND_RULES if r.applies(s)), None)
         if rule is not None:
             return [rule.task(s)]
         return self._objects(s)
+
+    def _each_product(self, s: Scene) -> list[Task]:
+        """ "a copy of my plan for Noor and a PDF for Bill": two products made from one
+        paper, each named with whom it is for, are a task each, run by the operation that
+        makes it (none: a clause of one product, read by the rules)."""
+        if s.doc is None:
+            return []
+        named = [
+            m
+            for m in s.clause.mentions
+            if self._product(m) is not None and m.start not in s.clause.modifiers
+        ]
+        if len({self._product(m) for m in named}) < 2:
+            return []
+        owner = s.owner(s.doc) or s.requester
+        return [
+            Task(
+                kind="copy",
+                item=s.doc.id,
+                owner=owner,
+                recipient=recipient_of(named, k, s.roles, s.recipient),
+                operation=self.copy_ops[self._product(m) or ""],
+            )
+            for k, m in enumerate(named)
+        ]
+
+    def _product(self, m: Mention) -> str | None:
+        """The product of a paper a mention names: an item ("a PDF"), or a task word that is
+        also the product's name ("a copy")."""
+        if m.kind == "item":
+            return m.id if m.id in self.copy_ops else None
+        if m.kind == "cue":
+            return self.product_words.get(language.fold(m.text))
+        return None
 
     def _objects(self, s: Scene) -> list[Task]:
         """No one-task rule applied: a task per object of the verb."""
