@@ -95,6 +95,12 @@ def test_the_offer_is_carried_out_on_yes_and_dropped_on_no() -> None:
     assert no.tasks == [] and no.decline_outcome == "done"
 
 
+def test_a_request_beside_the_possible_need_is_carried_out() -> None:
+    """ "..., can you bring one?" asks for it: "one" is the item the need named."""
+    frame = other_parser("default").parse("maybe I need a new stapler, can you bring one?", "lee")
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("transfer", "stapler", "lee")]
+
+
 def test_a_need_on_a_condition_is_still_only_noted() -> None:
     frame = _frame("if my tripod breaks I might need a new one")
     _moves_nothing(frame)

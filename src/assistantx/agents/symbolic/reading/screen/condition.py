@@ -77,4 +77,5 @@ def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | No
         message=f"Sorry about your {t.name}.",
         offer=f"{verb} me {thing}",
         shall=f"Shall I {verb} you {thing}?",
+        context=(f"{said[0]}|",),  # "..., can you bring one?": the one is this item
     )
