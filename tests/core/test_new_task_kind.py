@@ -18,11 +18,14 @@ from assistantx.agents.hybrid import build_factory
 from assistantx.agents.llm.grounding import RequestWords, ungrounded_action
 from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.agents.oracle.plan import build_plan
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.agents.symbolic import build_factory as symbolic_factory
 from assistantx.core import task_kinds
 from assistantx.core.actions import SendQR
 from assistantx.core.goals import parse_milestone
 from assistantx.core.office import load_office
 from assistantx.core.ports.lock import QRCode
+from assistantx.core.settings import Settings
 from assistantx.core.task_kinds import KindSpec, Step
 from assistantx.core.task_schema import Part, Task
 from assistantx.core.task_spec import BaseInstruction, check_base
@@ -165,3 +168,26 @@ async def test_the_embedded_planner_runs_the_added_kind_from_the_models_reading(
     assert sim.world.check({"holds": ["lee", "document:lee"]})
     prompt = scripted_llm.requests_for("understanding")[0]
     assert "sign, seal, approve" in prompt.messages[0]["content"]
+
+
+async def test_the_embedded_reader_reads_and_runs_the_added_kind(approve: KindSpec) -> None:
+    """The symbolic reasoner, built after the kind was added and with no code of it, reads
+    the kind from its words ("approved", "approval") and runs it to done: the approver is
+    asked with the kind's words and the requester's document comes back approved."""
+    office = load_office()
+    sim = SimOffice(office)
+    factory = symbolic_factory(office, Settings())
+    stm = await run_one(
+        sim, sim_assistant(sim, factory), "lee", "Please get my document approved by Wang."
+    )
+
+    assert stm.trace.outcome == "done", stm.trace.summary
+    assert sim.world.check({"approved": ["document:lee", "wang"]})
+    assert sim.world.check({"holds": ["lee", "document:lee"]})
+    to_wang = [m.text for m in sim.messenger.sent if m.chat.id == "wang"]
+    assert any("approve" in t for t in to_wang), to_wang
+
+
+def test_the_embedded_reader_asks_who_approves_when_nobody_is_named(approve: KindSpec) -> None:
+    frame = InstructionParser(load_office()).parse("Please get my document approved.", "lee")
+    assert frame.tasks == [] and frame.question and "Who" in frame.question

@@ -83,7 +83,7 @@ KIND_CASES = [
     (
         "Get Zhang Wei to sign my contract and copy it.",
         "sign",
-        "a signature, whatever else is said",
+        "a person's work (a signature, a kind of the table), whatever else is said",
     ),
     ("Please stamp my contract with the seal.", "seal", "a seal on a document"),
     ("Please heat my lunch.", "heat", "heating, unless a product is asked for"),

@@ -396,8 +396,9 @@ class Planner:
     # -- progress ------------------------------------------------------------------------
     def agenda(self, frame: TaskFrame, ltm: LongTermMemory, ev: Evidence, now: float) -> Agenda:
         views: list[TaskView] = []
-        # items an earlier task brought to the requester, with the code that did: a later
-        # task on the same item starts from them and counts only codes used after that
+        # items an earlier task brought (or brought back) to the requester, with the code
+        # that did: a later task on the same item starts from them and counts only codes
+        # used after that
         after: dict[str, int] = {}
         requester = frame.requester
         for n, task in enumerate(frame.tasks):
@@ -412,7 +413,10 @@ class Planner:
                 )
                 view = other if other.status != "unachievable" else view
             views.append(view)
-            if compiled.task.kind == "transfer" and view.status == "done":
+            # any finished task that handed the item back (a fetch, a copy, a binding): a
+            # later task on it ("photocopy and bind my plan") starts with the requester
+            # holding it, and its own hand-overs are the codes used after that
+            if view.status == "done":
                 for item, _ in (i for p in view.phases for i in p.items if i[1] == "collect"):
                     found = _first_used(ev, item, "collect", requester, after.get(item, -1))
                     if found is not None and compiled.task.recipient == requester:

@@ -9,19 +9,29 @@ file is sent, a belonging is brought).
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.lexicon import Mention
-from assistantx.core import english
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office, OperationShape
-from assistantx.core.task_schema import FILE_KIND, Task
+from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task
 
 _SEND_WORDS = english.words("send_words")
 # The prepositions that take an item to a facility ("on the charging shelf", "into the oven").
 _TO_FACILITY = english.words("to_facility_prepositions")
 _FROM_FACILITY = english.words("from_facility_prepositions")
+# The words that make a tool the instrument of a service on a paper ("stamped *with* the
+# embosser", "the stamp *on* it"), and the participles that ask for the service itself.
+_INSTRUMENT = english.words("instrument_prepositions")
+_ONTO = english.words("onto_prepositions")
+_SERVICE_PARTICIPLES = english.words("service_participles")
+_PLACE_WORDS = english.words("place_words") | english.words("surface_words")
+_LEAD_IN = english.words("lead_in")
+_COMMON = english.words("common")
+_NEED_WORDS = english.words("need_verbs")
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
 
@@ -46,6 +56,8 @@ class Scene:
     seal_tool: str | None = None  # the office's item type that stamps (ItemType.seals)
     file_type: str | None = None  # the office's electronic file type
     treat_asked: bool = False  # a treat service's verb, or an item put at its facility
+    signable: str | None = None  # the office's paper a person signs or stamps (signable)
+    tool_owners: frozenset[str] = frozenset()  # who owns the office's stamping tool
 
     @property
     def recipient(self) -> str:
@@ -66,10 +78,20 @@ class KindRule:
     task: Callable[[Scene], Task]
 
 
+def person_work(cues: set[str]) -> str | None:
+    """The kind of work a named person does that the cues ask for: a signature, or a kind
+    added to the table with its words ("endorse"); kinds whose doer needs a tool (the seal)
+    are read by their own rule."""
+    return next(
+        (k for k in task_kinds.person_kinds() if k in cues and not task_kinds.needs_tool(k)),
+        None,
+    )
+
+
 def _sign(s: Scene) -> Task:
     actor = next(iter(s.roles.actor + s.roles.bare + s.roles.recipient), None)
     return Task(
-        kind="sign",
+        kind=person_work(s.cues) or "sign",
         item=s.doc.id if s.doc else None,
         owner=s.owner(s.doc) or s.requester,
         recipient=s.requester if actor in s.roles.recipient else s.recipient,
@@ -81,10 +103,148 @@ def _seal_items(s: Scene) -> list[Mention]:
     return [m for m in s.clause.mentions if m.kind == "item" and m.id == s.seal_tool]
 
 
+def _tool_used(s: Scene) -> bool:
+    """Whether the clause uses the stamping tool on a paper rather than asking for the tool:
+    "stamped with the embosser", "needs the stamp on it", "get it stamped". The tool is the
+    instrument after "with"/"using", or what goes "on" the paper; a participle of the
+    service ("stamped", "sealed") asks for the service itself. An owned tool read this way
+    is never an object to hand over, whatever paper noun the office failed to list."""
+    if s.seal_tool is None:
+        return False
+    mentions = s.clause.mentions
+    for n, m in enumerate(mentions):
+        tool = (m.kind == "item" and m.id == s.seal_tool) or (m.kind == "cue" and "seal" in m.ids)
+        if not tool:
+            continue
+        k = n - 1
+        while k >= 0 and mentions[k].possessive:  # "with *his* embosser"
+            k -= 1
+        before = mentions[k] if k >= 0 else None
+        j = n + 1
+        while j < min(len(mentions), n + 3) and _verb_word(mentions[j]):
+            j += 1  # "the embosser *go* on my lease", "the seal *put* on it"
+        after = mentions[j] if j < len(mentions) else None
+        if before is not None and before.kind == "word" and before.ids[0] in _INSTRUMENT:
+            return True
+        if m.kind == "cue" and before is not None and before.kind == "word":
+            if before.ids[0] == "to":  # "get Tobias to stamp my lease": the service
+                return True
+        if after is not None and after.kind == "word" and after.ids[0] in _ONTO:
+            if _onto_paper(mentions[j + 1 :]):
+                return True
+        if m.kind == "cue" and m.text.lower() in _SERVICE_PARTICIPLES:
+            return True
+        if m.kind == "cue" and _verb_position(mentions, n):
+            return True  # "please emboss my lease": the service is the clause's verb
+        if _needed_by_paper(mentions, n):
+            return True  # "my lease needs Tobias's embosser": a paper needs the tool
+        if after is not None and after.kind == "word" and after.ids[0] == "for":
+            if _for_paper(mentions[j + 1 :]):
+                return True  # "I need the embosser for my lease": used on the lease
+    return False
+
+
+def _verb_position(mentions: list[Mention], n: int) -> bool:
+    """Whether a service word is the clause's verb, with its object after it ("stamp my
+    lease", "please emboss it", "have Ines stamp my lease"), not a noun ("bring me the
+    stamp", "Ines's stamp")."""
+    nxt = mentions[n + 1] if n + 1 < len(mentions) else None
+    if nxt is None or not (nxt.possessive or nxt.kind in ("pronoun", "item")):
+        return False
+    before = mentions[n - 1] if n else None
+    if before is not None and before.kind == "person" and not before.possessive:
+        return True  # "have Ines stamp my lease": she does it
+    return all(m.kind == "word" and m.ids[0] in _LEAD_IN for m in mentions[:n])
+
+
+def _for_paper(rest: list[Mention]) -> bool:
+    """Whether what follows "for" is someone's paper the tool is used on ("for my lease",
+    "for Noor's deed"), not a time, a place or a person ("for tomorrow", "for Noor", "for the
+    site visit"): only a possessed noun is read so."""
+    k = 0
+    while k < len(rest) and rest[k].possessive:
+        k += 1
+    if k == 0 or k >= len(rest):
+        return False
+    m = rest[k]
+    if m.kind == "item":
+        return True
+    word = m.ids[0] if m.ids else ""
+    return (
+        m.kind == "word"
+        and word not in _PLACE_WORDS
+        and word not in _COMMON
+        and not language.is_weekday(word)
+        and not language.is_month(word)
+        and language.is_noun(word)
+    )
+
+
+def _needed_by_paper(mentions: list[Mention], n: int) -> bool:
+    """ "my lease needs Tobias's embosser", "the affidavit needs the practice seal": the tool
+    is the object of a need whose subject is a thing (a noun, "it"), not a person or "I"."""
+    k = n - 1
+    while k >= 0 and mentions[k].possessive:
+        k -= 1
+    if k < 0 or mentions[k].kind != "cue" or mentions[k].text.lower() not in _NEED_WORDS:
+        return False
+    subject = [m for m in mentions[:k] if not m.possessive]
+    if any(m.kind in ("person", "self") for m in subject):
+        return False
+    return any(
+        m.kind == "pronoun"
+        or m.kind == "item"
+        or (m.kind == "word" and m.ids[0] not in _LEAD_IN and language.is_noun(m.ids[0]))
+        for m in subject
+    )
+
+
+def _verb_word(m: Mention) -> bool:
+    """A plain word that is a verb ("go", "put", "be"), not a preposition like "on"."""
+    word = m.ids[0] if m.ids else ""
+    return m.kind == "word" and word not in _ONTO and bool(language.verb_lemmas(word))
+
+
+def _onto_paper(rest: list[Mention]) -> bool:
+    """Whether what follows "on" is the paper ("on it", "on my lease", "on the contract"),
+    not a place the tool is put ("on my desk", "on the table")."""
+    k = 0
+    while k < len(rest) and rest[k].possessive:
+        k += 1
+    if k >= len(rest):
+        return False
+    m = rest[k]
+    if m.kind == "pronoun":
+        return True
+    if m.kind == "item":
+        return True
+    return m.kind == "word" and m.ids[0] not in _PLACE_WORDS and language.is_noun(m.ids[0])
+
+
 def _seal(s: Scene) -> Task:
-    assert s.doc is not None
     sealer = next((s.roles.owners.get(m.start) for m in _seal_items(s)), None)
     sealer = sealer or next(iter(s.roles.actor + s.roles.bare), None)
+    # "take my lease to Ines to be stamped": the one it goes to who owns a stamp stamps it,
+    # and it comes back to the requester, as a signer named so would sign it
+    to_sealer = next((p for p in s.roles.recipient if p in s.tool_owners), None)
+    if sealer is None and to_sealer is not None:
+        sealer = to_sealer
+        s = dataclasses.replace(
+            s,
+            roles=dataclasses.replace(
+                s.roles, recipient=[p for p in s.roles.recipient if p != to_sealer]
+            ),
+        )
+    if s.doc is None:
+        # "get my lease stamped with the embosser": a paper the office does not list by
+        # that word is its signable paper, the requester's unless the clause says whose
+        return Task(
+            kind="seal",
+            item=s.signable,
+            owner=s.requester,
+            recipient=s.recipient,
+            actor=sealer,
+        )
     return Task(
         kind="seal",
         item=s.doc.id,
@@ -126,10 +286,17 @@ def _copy(s: Scene) -> Task:
 
 # One task for the whole clause: highest priority first.
 KIND_RULES: tuple[KindRule, ...] = (
-    KindRule("a signature, whatever else is said", lambda s: "sign" in s.cues, _sign),
+    KindRule(
+        "a person's work (a signature, a kind of the table), whatever else is said",
+        lambda s: person_work(s.cues) is not None,
+        _sign,
+    ),
     KindRule(
         "a seal on a document (the seal named or asked for)",
-        lambda s: ("seal" in s.cues or bool(_seal_items(s))) and s.doc is not None,
+        lambda s: (
+            ("seal" in s.cues or bool(_seal_items(s)))
+            and (s.doc is not None or (s.signable is not None and _tool_used(s)))
+        ),
         _seal,
     ),
     KindRule(
@@ -155,11 +322,38 @@ class TaskReader:
         # the products that name their task: "a printout" is a print, "a copy" a copy
         self.printout = product_of_shape(office, "render")
         self.copy = product_of_shape(office, "transform")
-        self.sourced = frozenset(p for p in (self.printout, self.copy) if p)
+        # every product made from an item or a file names its task ("a PDF of my plan" is
+        # the scan, as "a printout" is the print), not only each shape's first
+        self.made: dict[str, str] = {
+            o.product: SHAPE_KIND[o.shape(office)]
+            for o in office.operations
+            if o.product and o.shape(office) in ("render", "transform")
+        }
+        self.sourced = frozenset(p for p in (self.printout, self.copy, *self.made) if p)
+        # the operation that makes each product of a paper ("a PDF": the scan)
+        self.copy_ops = {
+            o.product: o.id
+            for o in office.operations
+            if o.product and o.shape(office) == "transform"
+        }
+        self.product_words = {
+            language.fold(name): t.id
+            for t in office.item_types
+            if t.id in self.copy_ops
+            for name in (t.name, *t.synonyms)
+        }
+        # the file types, which may name the format of what a service makes ("to PDF")
+        self.formats = frozenset(t.id for t in office.item_types if t.electronic)
         self.file = office.file_type() or ""  # what is forwarded
+        seal = office.seal_tool()
+        self.tool_owners = frozenset(office.owners_of(seal) if seal else ())
 
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
+
+    def products_of(self, kind: str) -> frozenset[str]:
+        """Every product a task of ``kind`` may hand over (a copy, a PDF)."""
+        return frozenset(p for p, k in self.made.items() if k == kind)
 
     def scene(self, clause: Clause, roles: Roles, requester: str, previous: Task | None) -> Scene:
         items = clause.objects()
@@ -169,6 +363,8 @@ class TaskReader:
                 cues.add("print")
             if m.id == self.copy:
                 cues.add("copy")
+            if m.id in self.made:
+                cues.add(self.made[m.id])
         facilities = [m.id for m in clause.mentions if m.kind == "facility"]
         facilities_said = [m for m in clause.mentions if m.kind == "facility"]
         treating = [
@@ -206,7 +402,7 @@ class TaskReader:
             cues.add("copy")
         # "put my headlamp on the charging shelf": the item goes *to* the facility
         treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
-        items = [m for m in items if m.id not in (self.printout, self.copy)]
+        items = [m for m in items if m.id not in self.sourced]
         files = [m for m in items if self.kinds[m.id] == "electronic"]
         personal = [m for m in items if self.kinds[m.id] == "personal"]
         products = [m for m in items if self.kinds[m.id] == "product"]
@@ -238,6 +434,8 @@ class TaskReader:
             self.office.seal_tool(),
             self.office.file_type(),
             treat_asked,
+            self.office.signable_type(),
+            self.tool_owners,
         )
 
     def tasks(
@@ -247,14 +445,51 @@ class TaskReader:
         if (
             previous is not None
             and not cues & {"print", "copy"}
-            and any(m.id == self.product_of(previous.kind) for m in clause.objects())
+            and any(m.id in self.products_of(previous.kind) for m in clause.objects())
         ):
             return []  # "print my draft and take the printout to Sue": the same task, on
         s = self.scene(clause, roles, requester, previous)
+        each = self._each_product(s)
+        if each:
+            return each
         rule = next((r for r in KIND_RULES if r.applies(s)), None)
         if rule is not None:
             return [rule.task(s)]
         return self._objects(s)
+
+    def _each_product(self, s: Scene) -> list[Task]:
+        """ "a copy of my plan for Noor and a PDF for Bill": two products made from one
+        paper, each named with whom it is for, are a task each, run by the operation that
+        makes it (none: a clause of one product, read by the rules)."""
+        if s.doc is None:
+            return []
+        named = [
+            m
+            for m in s.clause.mentions
+            if self._product(m) is not None and m.start not in s.clause.modifiers
+        ]
+        if len({self._product(m) for m in named}) < 2:
+            return []
+        owner = s.owner(s.doc) or s.requester
+        return [
+            Task(
+                kind="copy",
+                item=s.doc.id,
+                owner=owner,
+                recipient=recipient_of(named, k, s.roles, s.recipient),
+                operation=self.copy_ops[self._product(m) or ""],
+            )
+            for k, m in enumerate(named)
+        ]
+
+    def _product(self, m: Mention) -> str | None:
+        """The product of a paper a mention names: an item ("a PDF"), or a task word that is
+        also the product's name ("a copy")."""
+        if m.kind == "item":
+            return m.id if m.id in self.copy_ops else None
+        if m.kind == "cue":
+            return self.product_words.get(language.fold(m.text))
+        return None
 
     def _objects(self, s: Scene) -> list[Task]:
         """No one-task rule applied: a task per object of the verb."""
@@ -309,7 +544,8 @@ class TaskReader:
         if roles.recipient:
             update["recipient"] = roles.recipient[-1]
         for who in roles.actor + roles.bare:
-            if task.kind in ("sign", "seal") and task.actor is None and "actor" not in update:
+            by_person = task_kinds.kind_of(task.kind) and task_kinds.kind(task.kind).by_person
+            if by_person and task.actor is None and "actor" not in update:
                 update["actor"] = who
             elif task.kind == "transfer" and task.owner is None and "owner" not in update:
                 update["owner"] = who

@@ -11,7 +11,8 @@ clause say when, what for, or where, and must never become tasks of their own:
   task word does not count; "take my contract to Zhang *to sign*" keeps it);
 - a reason clause after the object: "a radio *because there's no money for new headlamps*";
 - a statement about an owned item after the object: "a radio *as my headlamp is dying*";
-- a container or measure word before "of": "a *cup of* coffee" is coffee.
+- a container or measure word before "of": "a *cup of* coffee" is coffee;
+- an item word right before another ("the *draft* contract"): the last noun is the head.
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
 wipes") are all objects of the same verb. (An item word used as a verb, "book me a taxi", was
@@ -36,13 +37,22 @@ DETERMINERS = english.words("determiners")
 # Conjunctions that open a reason clause: what it names explains the request, never joins it.
 REASON_CONJUNCTIONS = english.words("reason_conjunctions")
 STATE_VERBS = english.words("state_verbs")
+# The words before a file type that name a product's format ("to PDF", "into a PDF").
+_FORMAT_LINKS = frozenset({"to", "into", "as"})
 
 
 def modifiers(
-    tokens: Sequence[Token], mentions: Sequence[Mention], sourced: frozenset[str] = frozenset()
+    tokens: Sequence[Token],
+    mentions: Sequence[Mention],
+    sourced: frozenset[str] = frozenset(),
+    formats: frozenset[str] = frozenset(),
 ) -> set[int]:
-    """Start tokens of the clause's item and cue mentions that are not its request."""
+    """Start tokens of the clause's item and cue mentions that are not its request.
+    ``sourced``: the products made from an item ("a copy of my form"); ``formats``: the file
+    types, which after "to"/"into"/"as" in a clause that asks to copy or print name the
+    format of what is made ("scan my contract to PDF"), never a thing or a person."""
     out: set[int] = set()
+    making = any(m.kind == "cue" and {"copy", "print"} & set(m.ids) for m in mentions)
     head_seen = False
     in_purpose = False
     for n, m in enumerate(mentions):
@@ -63,7 +73,11 @@ def modifiers(
             in_purpose = True  # "..., as my headlamp is dying": a reason said as a statement
             out.add(m.start)
             continue
-        if _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
+        if making and m.id in formats and _after(tokens, m, _FORMAT_LINKS):
+            out.add(m.start)  # "to PDF", "into a pdf", "as a PDF"
+        elif _compound_modifier(mentions, n):
+            out.add(m.start)  # "my draft contract": the head is the last noun, "contract"
+        elif _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
             out.add(m.start)
         elif _container(tokens, mentions, n, sourced):
             out.add(m.start)
@@ -72,11 +86,28 @@ def modifiers(
     return out
 
 
+def _after(tokens: Sequence[Token], m: Mention, words: frozenset[str]) -> bool:
+    """Whether the word before ``m`` (past an article) is one of ``words``."""
+    k = m.start - 1
+    while k >= 0 and tokens[k].word in ("a", "an", "the"):
+        k -= 1
+    return k >= 0 and tokens[k].word in words
+
+
+def _compound_modifier(mentions: Sequence[Mention], n: int) -> bool:
+    """ "the draft contract", "my report file": an item word right before another item word
+    (nothing between) modifies it; the last one names the thing."""
+    nxt = mentions[n + 1] if n + 1 < len(mentions) else None
+    return nxt is not None and nxt.kind == "item" and nxt.start == mentions[n].end
+
+
 def _purpose(mentions: Sequence[Mention], n: int) -> bool:
     """ "to" + a verb: a purpose clause, unless the verb is a task word without its own object."""
     nxt = mentions[n + 1] if n + 1 < len(mentions) else None
     if nxt is None:
         return False
+    if nxt.kind == "word" and nxt.ids[0] == "be":
+        return False  # "my plan needs to be bound": a passive, the service asked for
     if nxt.kind == "word":
         return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit()
     if nxt.kind == "cue":

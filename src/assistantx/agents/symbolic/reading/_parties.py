@@ -120,7 +120,10 @@ PERSON_RULES: tuple[PersonRule, ...] = (
             s.possessive
             and s.following is not None
             and s.following.kind == "cue"
-            and "sign" in s.following.ids
+            and any(
+                k in s.following.ids and not task_kinds.needs_tool(k)
+                for k in task_kinds.person_kinds()
+            )
         ),
         "actor",
     ),

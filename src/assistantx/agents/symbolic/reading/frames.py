@@ -92,6 +92,11 @@ class FrameReader:
             # "print my log. I need the spreadsheet for the meeting": the item a task already
             # works on for that person, named again as what they need, is context
             made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
+            if tasks and len(made) == 1 and _for_another(tasks[-1], made[0], clause, requester):
+                # "please scan my invoice. Mark needs a scan of it": the same work, and whom
+                # its product is for; one scan, handed to Mark
+                tasks[-1] = tasks[-1].model_copy(update={"recipient": made[0].recipient})
+                made = []
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
@@ -116,8 +121,17 @@ class FrameReader:
         """Whether ``task`` only names again, for the same person, the item ``earlier``
         already works on (its file, its item): a purpose or a reason, not a new errand. A
         task that moves the item on to someone else, or someone else's, is new."""
-        if earlier.recipient != task.recipient or earlier.kind == task.kind or task.item is None:
+        if earlier.recipient != task.recipient or task.item is None:
             return False
+        if earlier.kind == task.kind:
+            # "fetch Bill's tripod? I need the tripod": anyone's item of the kind already
+            # on its way to the same person is the need said again, not a second errand
+            return (
+                task.kind == "transfer"
+                and task.owner is None
+                and task.source is None
+                and earlier.item == task.item
+            )
         if task.kind == "send_file":
             return task.owner == task.recipient and self._covers(earlier, task.item)
         return (
@@ -153,7 +167,7 @@ class FrameReader:
                 continue
             clauses[-1].mentions.append(m)
         for c in clauses:
-            c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced)
+            c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced, self.reader.formats)
             c.cues = {
                 k
                 for m in c.mentions
@@ -191,6 +205,7 @@ class FrameReader:
         return (task.kind, type_id) in {
             ("print", self.reader.printout),
             ("copy", self.reader.copy),
+            *((task.kind, p) for p in self.reader.products_of(task.kind)),
             (task.kind, task_kinds.tool_type(task.kind, self.office)),
         }
 
@@ -201,7 +216,8 @@ class FrameReader:
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:
                 return f"Which item do you mean for the {t.kind.replace('_', ' ')} request?"
-            if t.kind in ("sign",) and (t.actor is None or t.actor == requester):
+            done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
+            if done_by_one and (t.actor is None or t.actor == requester):
                 return f"Who should do that with your {name}? Please tell me their name."
             if t.kind == "transfer":
                 if t.owner is None and self.reader.kinds[t.item] == "personal":
@@ -364,6 +380,21 @@ def _to_each(made: list[Task], roles: Roles) -> list[Task]:
     if len(people) < 2:
         return made
     return [made[0].model_copy(update={"recipient": who}) for who in people]
+
+
+def _for_another(earlier: Task, task: Task, clause: Clause, requester: str) -> bool:
+    """Whether ``task`` is ``earlier``'s work again, on the same item pointed back to ("a
+    scan of it"), only for someone else: whom the product is for, not a second job."""
+    refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
+    return (
+        refers
+        and task.kind == earlier.kind
+        and task.kind not in ("transfer", "send_file")
+        and task.item == earlier.item
+        and task.owner == earlier.owner
+        and earlier.recipient == requester
+        and task.recipient != requester
+    )
 
 
 def _first_leg(earlier: Task, made: list[Task]) -> bool:

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
-from assistantx.core import english, language
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
 from assistantx.memory.names import TITLES, normalize
@@ -125,6 +125,12 @@ class Lexicon:
     def from_office(cls, office: Office) -> Lexicon:
         lex = cls(office)
         cues = {k: set(v) for k, v in CUES.items()}
+        for spec in task_kinds.kinds():
+            # a kind added to the live table is asked for by its own words ("endorse",
+            # "endorsement"), every form of them; the built-in ones keep english.yaml's
+            if spec.words and spec.id not in CUES:
+                forms = {form for w in spec.words for form in inflections(key_of(w))}
+                cues.setdefault(spec.id, set()).update(forms)
         ops: set[str] = set()
         for op in office.operations:
             forms = {form for verb in op.verbs for form in inflections(key_of(verb))}

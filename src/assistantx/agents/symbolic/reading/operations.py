@@ -6,7 +6,7 @@ outside taken from the readings ("send out my drawing to the client") or asked f
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.destination import Outside
-from assistantx.agents.symbolic.reading.lexicon import Lexed, inflections
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
 from assistantx.core import language
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
@@ -14,6 +14,8 @@ from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 WHERE_TO = "Where should I "  # the question for a send-out service's place outside
+# The question when a send-out service's destination is a colleague's name.
+OUT_OR_IN = "Should I send it out by "
 
 
 class OperationChooser:
@@ -31,18 +33,37 @@ class OperationChooser:
             for op in office.operations
         }
 
-    def choose(self, frame: TaskFrame, lexed: Lexed, outside: Outside | None) -> TaskFrame:
+    def choose(
+        self, frame: TaskFrame, lexed: Lexed, outside: Outside | None, *, sent_out: bool = False
+    ) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
-        "copy" a contract); ask which when the words do not say."""
-        words = {t.word for t in lexed.tokens}
+        "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
+        already said a send-out to a colleague's name is meant to leave the office."""
+        in_order = [t.word for t in lexed.tokens]
+        words = set(in_order)
         facility_ops = {
             op
             for m in lexed.mentions
             if m.kind == "facility"
             for op in self.office.facility(m.ids[0]).operations
         }
+        products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
+        named: list[Task] = []
+        for n, t in enumerate(frame.tasks):
+            # the other tasks on the same item: "scan my plan and then bind it" is two
+            # clauses, one operation each, not both operations twice
+            peers = [
+                k
+                for k, u in enumerate(frame.tasks)
+                if u.item == t.item and u.kind in _KIND_SHAPE and u.operation is None
+            ]
+            place = (peers.index(n), len(peers)) if n in peers else (0, 1)
+            split, which = self._one_of_several(t, in_order, facility_ops, products, place)
+            if which is not None:
+                return TaskFrame(requester=frame.requester, question=which)
+            named += split
         tasks: list[Task] = []
-        for t in frame.tasks:
+        for t in named:
             shape = _KIND_SHAPE.get(t.kind)
             ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
             if shape == "treat" and ops and t.item is not None and t.operation is None:
@@ -81,9 +102,77 @@ class OperationChooser:
                         question=f"{WHERE_TO}{op.name} it to? Please give the number "
                         "or the name of the place.",
                     )
+                colleague = _colleague(lexed, outside) if not sent_out else None
+                if colleague is not None:
+                    # "courier my plan to Bill" where Bill works here: sending it out of the
+                    # office and handing it to him are different physical actions; ask
+                    name = self.office.person(colleague).name
+                    return TaskFrame(
+                        requester=frame.requester,
+                        question=f"{OUT_OR_IN}{op.name} to {where} outside the office, "
+                        f"or bring it to {name} here?",
+                    )
                 t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
+
+    def sending_words(self) -> frozenset[str]:
+        """Every form of the verbs of the office's send-out services ("courier", "faxed")."""
+        return frozenset(
+            w for op in self.office.operations if op.sends_out for w in self._op_words[op.id]
+        )
+
+    def _one_of_several(
+        self,
+        task: Task,
+        words: list[str],
+        facility_ops: set[str],
+        products: set[str],
+        place: tuple[int, int] = (0, 1),
+    ) -> tuple[list[Task], str | None]:
+        """The operations a task on an item runs, where a machine does several: the one whose
+        verb or gerund is said ("needs binding", "through the copier to scan it") or whose
+        product is named ("to PDF"), whatever shape the rest of the clause suggested, and one
+        task each when several are said ("photocopy and bind my plan"); with none said and
+        the machine named doing several to this item, the question which ("Which do you
+        mean: copy, scan or bind?"). ``place``: this task's index among the tasks on the same
+        item, and their number (several tasks take the operations said in turn)."""
+        if task.item is None or task.operation is not None or task.kind not in _KIND_SHAPE:
+            return [task], None
+        fits = [
+            op
+            for op in self.office.operations
+            if op.input == task.item and self.office.runnable(op.id) and not op.sends_out
+        ]
+        order = {w: n for n, w in reversed(list(enumerate(words)))}
+        said = [op for op in fits if self._op_words[op.id] & set(words)]
+        # "scan my contract to PDF", "send my plan to PDF": the product named says which
+        said = said or [op for op in fits if op.product in products]
+        if len(said) > 1:
+            # in the order they were said: "photocopy and bind" copies, then binds
+            said.sort(key=lambda op: min(order.get(w, len(order)) for w in self._op_words[op.id]))
+            at, peers = place
+            if peers == len(said):  # one clause each: "scan my plan and then bind it"
+                return [self._as(task, said[at])], None
+            if peers == 1:
+                return [self._as(task, op) for op in said], None
+        if len(said) == 1:
+            shape = said[0].shape(self.office)
+            # only where the clause read another shape, or several share this one: a lone
+            # operation of its shape is left to the plain reading
+            if SHAPE_KIND.get(shape) != task.kind or len(self.office.with_shape(shape)) > 1:
+                return [self._as(task, said[0])], None
+        at_machine = [op for op in fits if op.id in facility_ops]
+        if not said and len(at_machine) > 1:
+            names = [op.name for op in at_machine]
+            listed = ", ".join(names[:-1]) + " or " + names[-1]
+            return [task], f"Which do you mean: {listed}?"
+        return [task], None
+
+    def _as(self, task: Task, op: Operation) -> Task:
+        """``task`` as a run of ``op``: its kind is the one of the operation's shape."""
+        kind = SHAPE_KIND.get(op.shape(self.office), task.kind)
+        return task.model_copy(update={"kind": kind, "operation": op.id})
 
     def _cannot_treat(self, ops: list[Operation], item: str) -> str:
         """Why a service the office offers cannot be run on this item, with what it is for."""
@@ -101,6 +190,28 @@ class OperationChooser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def colleague_named(lexed: Lexed, start: int = 0, end: int | None = None) -> str | None:
+    """The one colleague the tokens ``start:end`` of ``lexed`` name and nothing else ("Bill",
+    "Bill Osei"); None for a place outside ("the county land registry")."""
+    stop = len(lexed.tokens) if end is None else end
+    inside = [m for m in lexed.mentions if start <= m.start < stop and m.kind != "word"]
+    if len(inside) != 1 or inside[0].kind != "person" or len(inside[0].ids) != 1:
+        return None
+    person = inside[0]
+    rest = {
+        t.word
+        for k, t in enumerate(lexed.tokens[start:stop], start)
+        if not person.start <= k < person.end
+    }
+    return person.ids[0] if rest <= COMMON else None
+
+
+def _colleague(lexed: Lexed, outside: Outside | None) -> str | None:
+    if outside is None or outside.start is None or outside.end is None:
+        return None
+    return colleague_named(lexed, outside.start, outside.end)
 
 
 def _article(noun: str) -> str:

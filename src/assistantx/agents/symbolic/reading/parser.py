@@ -47,7 +47,12 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexicon, Reading
-from assistantx.agents.symbolic.reading.operations import WHERE_TO, OperationChooser
+from assistantx.agents.symbolic.reading.operations import (
+    OUT_OR_IN,
+    WHERE_TO,
+    OperationChooser,
+    colleague_named,
+)
 from assistantx.agents.symbolic.reading.readings import MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
@@ -55,6 +60,11 @@ from assistantx.agents.symbolic.reading.unknown_items import unknown_item
 from assistantx.core import language
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
+
+# The words of an answer to "send it out, or bring it to Bill?" that choose the hand-over.
+_INSIDE_WORDS = frozenset(
+    {"bring", "hand", "give", "take", "deliver", "desk", "him", "her", "them", "here", "inside"}
+)
 
 __all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
 
@@ -71,17 +81,20 @@ class InstructionParser:
         self.operations = OperationChooser(office)
 
     # -- public --------------------------------------------------------------------------
-    def parse(self, text: str, requester: str, *, confirmed: bool = False) -> TaskFrame:
+    def parse(
+        self, text: str, requester: str, *, confirmed: bool = False, sent_out: bool = False
+    ) -> TaskFrame:
         """The frame of a request: its pieces lexed and screened (speech acts, withdrawn,
         negated, destructive, facts, unsupported services), the tasks read from what is left,
-        then judged. ``confirmed``: the requester already said yes to the restated reading."""
+        then judged. ``confirmed``: the requester already said yes to the restated reading;
+        ``sent_out``: a send-out to a colleague's name is meant to leave the office."""
         screened = self.screen.screen(text, requester)  # stages 1 to 3, piece by piece
         if screened.answered:
             return answered_frame(screened, requester)
-        frame = self._frame(text, screened.text, requester)  # stages 1, 2, 4 and 5
+        frame = self._frame(text, screened.text, requester, sent_out)  # stages 1, 2, 4, 5
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
-    def _frame(self, text: str, request: str, requester: str) -> TaskFrame:
+    def _frame(self, text: str, request: str, requester: str, sent_out: bool) -> TaskFrame:
         """The tasks of the request the screen left (``request``), read from its readings."""
         lexed = self.lex.read(request)  # stages 1 and 2, once; later ones get it
         # who has an item now is said anywhere, also in a statement the screen set aside
@@ -92,7 +105,7 @@ class InstructionParser:
             readings, requester, holder(whole, requester), named_items(whole, requester)
         )
         if frame.understood:
-            frame = self.operations.choose(frame, lexed, readings.outside)
+            frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
         if frame.question == NOT_UNDERSTOOD:
             unknown = unknown_item(self.screen.terms, readings.tokens, readings.mentions)
             if unknown is not None:
@@ -109,6 +122,9 @@ class InstructionParser:
         for answer in answers:
             if frame.understood or frame.decline is not None:
                 break
+            if frame.question is not None and frame.question.startswith(OUT_OR_IN):
+                frame = self._out_or_in(text, requester, answer, frame)
+                continue
             if frame.question is not None and "Shall I" in frame.question:
                 yes_no = offer_stance(answer)
                 if yes_no == "yes":
@@ -139,6 +155,35 @@ class InstructionParser:
             alone = self.parse(answer, requester)
             frame = alone if alone.understood else combined
         return frame
+
+    def _out_or_in(self, text: str, requester: str, answer: str, asked: TaskFrame) -> TaskFrame:
+        """The answer to "send it out by courier to Bill, or bring it to Bill here?": the
+        service's verb or "out" sends it out as written; a hand-over word or the colleague's
+        name brings it to them instead; anything else leaves the question open."""
+        out = self.parse(text, requester, sent_out=True)
+        said = self.lex.read(answer)
+        words = {t.word for t in said.tokens}
+        if words & (self.operations.sending_words() | {"out", "outside"}):
+            return out
+        sent = [t for t in out.tasks if t.destination is not None]
+        colleague = colleague_named(self.lex.read(sent[0].destination or "")) if sent else None
+        named = {i for m in said.mentions for i in m.ids}
+        if colleague is None or not (words & _INSIDE_WORDS or colleague in named):
+            return asked
+        inside = [
+            t.model_copy(
+                update={
+                    "kind": "transfer",
+                    "operation": None,
+                    "destination": None,
+                    "recipient": colleague,
+                }
+            )
+            if t.destination is not None
+            else t
+            for t in out.tasks
+        ]
+        return out.model_copy(update={"tasks": inside})
 
     def _choosing(self, chosen: dict[str, Reading]) -> InstructionParser:
         """The same stages, with a lexicon that reads the name words the requester was asked

@@ -7,7 +7,15 @@ from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.statement import stated_items
-from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.terms import Terms, article
+from assistantx.core.english import words as english_words
+
+# "a new one", "another", "a replacement": a need that replaces an item said to be failing.
+_REPLACEMENT = english_words("replacement_words")
+_CONDITION_WORDS = english_words("condition_openers")
+_NEED = english_words("need_verbs")
+# What makes the need only possible: "might", "probably", "I think", "I'll".
+_HEDGES = english_words("possibility_words") | frozenset({"think", "guess", "ill", "will"})
 
 
 def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -15,6 +23,10 @@ def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     with no request beside it the message is information, answered in words."""
     deferred = terms.acts.defers(split_words(msg.text))
     put_off = terms.acts.defers(piece.words) and not terms.acts.imperative(piece.words)
+    if not put_off:
+        offered = _replacement_offer(terms, msg, piece)
+        if offered is not None:
+            return offered
     if put_off or terms.acts.future_need(piece.words, deferred):
         return Finding(
             "condition",
@@ -35,4 +47,35 @@ def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         "a condition, not a request",
         message="Noted; I'll keep it in mind.",
         context=named,
+    )
+
+
+def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | None:
+    """ "my tripod is wobbly, I might need a new one": a possible need of a replacement for
+    an item said to be failing, with no condition and no "later", is offered ("Shall I bring
+    you a tripod?"), never fetched at once nor only noted."""
+    words = set(piece.words)
+    if not (words & _NEED and words & _HEDGES and words & _REPLACEMENT):
+        return None
+    if words & _CONDITION_WORDS or terms.acts.later(piece.words):
+        return None
+    said = (
+        terms.named(piece.lexed, "item")
+        or terms.named(terms.lex.read(msg.text[: piece.start]), "item")[-1:]
+    )
+    if len(said) != 1:
+        return None
+    t = terms.office.item_type(said[0])
+    if t.kind not in ("belonging", "product"):
+        return None
+    verb = "get" if t.kind == "product" else "bring"
+    thing = f"{article(t.name)} {t.name}"
+    return Finding(
+        "condition",
+        piece,
+        f"a possible need of a new {t.name}: offered, not fetched",
+        message=f"Sorry about your {t.name}.",
+        offer=f"{verb} me {thing}",
+        shall=f"Shall I {verb} you {thing}?",
+        context=(f"{said[0]}|",),  # "..., can you bring one?": the one is this item
     )

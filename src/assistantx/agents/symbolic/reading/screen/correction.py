@@ -4,32 +4,58 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 from assistantx.core.task_schema import Evidence
 
-# "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...": the words after it correct
+# "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
+# a pen": the words after it correct
 # what was just said (only when they name one person or item, ``corrected``)
 _CORRECTION = re.compile(
-    r"(?:[,;.!?]|\s[-–—]+)\s*"
+    r"(?:[,;.!?…]|\s[-–—]+)\s*"
     r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|no(?=[,!.]))\b"
-    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b)[,:]?\s*",
+    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
+    r"[,:]?\s*",
     re.IGNORECASE,
 )
+# "bring me the… actually, just print it", "... - actually, ...": after a trailing-off or a
+# dash, "actually" corrects too.
+_ELLIPSIS_ACTUALLY = re.compile(
+    r"(?:\.{2,}|…|\s[-–—]+)\s*actually\b[,:]?\s*(?:no\b[,.!]?\s*)?", re.IGNORECASE
+)
+# The words before a correction's own request verb ("just", "please", "rather").
+_FILLERS = frozenset(
+    {"just", "please", "rather", "instead", "simply", "only", "can", "you", "could", "actually"}
+)
+_SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
+_TRAILING = " .…,;-–—"
 
 
 def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
     correction of one person or item right after it is said replaces it; the retracted
     one is never acted on (nor is the whole message dropped as withdrawn)."""
-    match = _CORRECTION.search(text)
+    match = _CORRECTION.search(text) or _ELLIPSIS_ACTUALLY.search(text)
     if match is None:
         return text, []
     before, after = text[: match.start()], text[match.end() :]
     fix = re.split(r"[.!?;\n]", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
+    if _opens_request(terms, tokens):
+        # "fetch Bill's tripod... actually, no, just print my draft": a correction that
+        # says a request of its own withdraws the request it breaks off; the withdrawn
+        # verb never runs (what came before that request's sentence stays)
+        trimmed = before.rstrip(_TRAILING)
+        last = _SENTENCE_END.split(trimmed)[-1]
+        cut = trimmed.rfind(last) if last else len(before)
+        meaning = f"withdraws {before[cut:].strip()!r}, asks instead"
+        return before[:cut] + after, [
+            Evidence(words=text[match.start() :].strip(), meaning=meaning)
+        ]
     # "..., sorry, his laser, not the ruler": what is rejected after it says which one
     # the correction replaces; the correction itself is the part before "not"
     cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
@@ -56,6 +82,16 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = terms.office.item_type(new.ids[0]).name
     fixed = before[: old.start()] + said + before[old.end() :] + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+
+def _opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:
+    """Whether a correction's words open with a request verb of their own ("just print my
+    draft", "please bind my plan instead"), not a person or an item alone."""
+    words = [t.word for t in tokens if t.word not in _FILLERS]
+    opens = bool(words) and (
+        words[0] in terms.lex.cue_words or words[0] in terms.lex.operation_words
+    )
+    return opens and terms.acts.request(words)
 
 
 def spellings(terms: Terms, kind: str, text: str) -> set[str]:

@@ -3,13 +3,42 @@ piece is dropped; with nothing else asked, the message is answered "OK, I won't"
 
 from __future__ import annotations
 
+import re
+
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import language
+
+# "Otto's lending me his", "we're off site": a statement with its verb contracted.
+_CONTRACTION = re.compile(r"\w['’](?:s|re|m|ve|ll)\b")
 
 
 def negated(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    found = negation(terms, piece)
+    if found is not None:
+        msg.negating = True
+        return found
+    if msg.negating and _told_reason(terms, msg, piece):
+        # "don't bother bringing the level, Otto's lending me his": why the errand is not
+        # wanted, told as what is happening, not an errand of its own
+        return Finding("negated", piece, "the reason the errand is not wanted")
+    return None
+
+
+def _told_reason(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """A piece after a negated errand that tells something (a finite verb, a contracted
+    "'s") and asks nothing, with no request after it in the message."""
+    told = any(language.is_finite_verb(w) for w in piece.words) or bool(
+        _CONTRACTION.search(piece.text)
+    )
+    later = [p for p in msg.pieces if p.start >= piece.start]
+    return told and not piece.asks and not any(terms.acts.request(p.words) for p in later)
+
+
+def negation(terms: Terms, piece: Piece) -> Finding | None:
+    """The piece's own negated errand ("don't bring me ...", "no need to print ...")."""
     words = piece.words
     for at in range(len(words)):
         for neg in terms.en.negators:

@@ -48,6 +48,7 @@ class Message:
     pieces: list[Piece]
     noting: int | None = None  # where a note began ("note this down: ...")
     withdrawing: bool = False  # a withdrawal was read: what follows may be its reason
+    negating: bool = False  # a negated errand was read: what follows may be its reason
 
 
 def pieces(text: str, read: Callable[[str], Lexed]) -> list[Piece]:

@@ -420,6 +420,8 @@ class SpeechActs:
             return "polite"
         if first in _AUX and first in _SUBJECT_VERB and not asks:
             return None  # "we're trying to ...": a contraction, not "were ...?"
+        if first == "have" and not asks and self._causative(w):
+            return None  # "have Ines stamp my lease": a request that she does it
         if first in _AUX:
             if self._for_me(w):  # "does anyone have a stapler I could borrow?"
                 return "info" if self.later(w) else "polite"  # "... I could use later?"
@@ -565,6 +567,16 @@ class SpeechActs:
 
     def _named(self, word: str) -> bool:
         return word in self.lex.name_words or word in self.lex.people
+
+    def _causative(self, w: list[str]) -> bool:
+        """ "have Ines stamp my lease", "have Wang sign it": "have", a person's name, then a
+        verb in its plain form: someone made to do something, not "have you got ...?"."""
+        k = 1
+        while k < len(w) and k < 4 and (w[k] in self.lex.name_words or w[k] in self.lex.people):
+            k += 1
+        if k == 1 or k >= len(w):
+            return False
+        return w[k] in language.verb_lemmas(w[k])
 
     def _person_at(self, w: list[str], n: int) -> bool:
         k = n
