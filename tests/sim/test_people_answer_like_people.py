@@ -61,7 +61,7 @@ def test_missing_recipient_owner_signer_and_item_are_told(office: Office) -> Non
     zhou, zhang = office.person("zhou").name, office.person("zhang").name
     assert answer(office, wish, "Who should get Zhang Wei's book?") == f"{zhou}."
     assert answer(office, wish, "Whose book do you mean?") == f"{zhang}'s."
-    assert answer(office, wish, "Which item do you mean for the transfer request?") == "The book."
+    assert answer(office, wish, "Which item do you mean? Please tell me what it is.") == "The book."
     signed = _wish(office, "lee", {"signed": ["document:lee", "wang"]})
     who = "Who should do that with your document? Please tell me their name."
     assert answer(office, signed, who) == f"{office.person('wang').name}."

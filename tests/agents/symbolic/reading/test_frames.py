@@ -58,3 +58,15 @@ def test_a_doubt_from_the_readings_is_asked_and_no_task_is_made(
 
 def test_a_text_with_no_request_asks_what_is_needed(frame: Callable[[str], TaskFrame]) -> None:
     assert frame("hello there").question == NOT_UNDERSTOOD
+
+
+@pytest.mark.parametrize(
+    "text", ["could you heat something up for me?", "can you warm one up for me please"]
+)
+def test_a_service_with_no_item_asks_which_item_in_plain_words(
+    frame: Callable[[str], TaskFrame], text: str
+) -> None:
+    framed = frame(text)
+    # the person reads the question: never a task kind's id ("the heat request")
+    assert framed.tasks == []
+    assert framed.question == "Which item do you mean? Please tell me what it is."

@@ -209,13 +209,19 @@ class FrameReader:
             (task.kind, task_kinds.tool_type(task.kind, self.office)),
         }
 
+    def _which_item(self, task: Task) -> str:
+        """Ask for a task's missing item in the operation's own word, never a task kind's id."""
+        if task.operation is not None:
+            return f"Which item should I {self.office.operation(task.operation).name}?"
+        return "Which item do you mean? Please tell me what it is."
+
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
             return NOT_UNDERSTOOD
         for t in tasks:
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:
-                return f"Which item do you mean for the {t.kind.replace('_', ' ')} request?"
+                return self._which_item(t)
             done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
             if done_by_one and (t.actor is None or t.actor == requester):
                 return f"Who should do that with your {name}? Please tell me their name."
