@@ -78,8 +78,8 @@ class OperationChooser:
                 if where is None:
                     return TaskFrame(
                         requester=frame.requester,
-                        question=f"{WHERE_TO}{op.name} it to? Please give the number "
-                        "or the name of the place.",
+                        question=f"{WHERE_TO}{op.name} it to? Please give me "
+                        f"{op.destination_asked}.",
                     )
                 t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
