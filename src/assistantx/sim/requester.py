@@ -181,7 +181,10 @@ def answer(office: Office, wish: Wish, question: str) -> str:
 
 
 DONT_KNOW = "Sorry, I don't know."
-_WHOLE_REQUEST = re.compile(r"\bwhat (should|shall|can) i do\b|\bwhat do you (need|want)\b")
+_WHOLE_REQUEST = re.compile(
+    r"\bwhat (should|shall|can) i do\b|\bwhat do you (need|want)\b|"
+    r"\bwhat would you like me to do\b"
+)
 _WHERE_TO = re.compile(r"\bwhere\b.*\bto\b|\bwhere should i (send|take)\b")
 _POSSESSIVE = re.compile(r"\bby '(his|her|their|hers|theirs)'")
 
@@ -194,7 +197,7 @@ def _who(office: Office, wish: Wish, lowered: str) -> str:
     if "whose" in lowered:
         whose = _whose(office, wish)
         if re.search(r"\bwho should get\b", lowered):  # "Whose book is it, and who should get it?"
-            return f"{whose.rstrip('.')}, for {'me' if gets == 'Me' else gets}."
+            return _whose_and_for_whom(office, wish, "me" if gets == "Me" else gets)
         return whose
     if re.search(r"\b(sign|stamp|seal|do that)", lowered):
         return _name(office, wish.doers[0]) + "." if wish.doers else DONT_KNOW
@@ -206,6 +209,19 @@ def _who(office: Office, wish: Wish, lowered: str) -> str:
             return _name(office, named[0]) + "."
         return gets + "." if others else DONT_KNOW
     return gets + "."
+
+
+def _whose_and_for_whom(office: Office, wish: Wish, gets: str) -> str:
+    """ "It's Zhang Wei's stapler, for Zhou Yan.": the item named whole, so the answer stands
+    alone as what they want."""
+    thing = _item_name(office, wish.items[0]) if wish.items else "one"
+    if wish.owners:
+        return f"It's {_name(office, wish.owners[0])}'s {thing}, for {gets}."
+    if wish.own == "mine":
+        return f"It's my {thing}, for {gets}."
+    if wish.own == "any":
+        return f"Any {thing} will do, for {gets}."
+    return DONT_KNOW
 
 
 def _whose(office: Office, wish: Wish) -> str:
@@ -282,11 +298,15 @@ def _choose(office: Office, wish: Wish, options: list[str]) -> str | None:
 
     def score(option: str) -> int:
         people = _people_in(office, option) - {wish.requester}
+        # "the month of May": a name that is only a word of a longer phrase counts half for
+        # the person, and nothing against them ("May Oduya" is the person for sure)
+        named = {p for p in people if _is_the_name(option, office.person(p))}
         items = set(mentioned_item_types(office, option))
         services = _operations_in(office, option)
         return (
-            2 * len(people & wish.people)
-            - 2 * len(people - wish.people)
+            2 * len(named & wish.people)
+            + len((people - named) & wish.people)
+            - 2 * len(named - wish.people)
             + 2 * len(items & set(wish.items))
             - len(items - set(wish.items))
             + 2 * len(services & set(wish.operations))
@@ -308,6 +328,13 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
     # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
     # did not ask for: no
     return not (people - wish.people or items - set(wish.items))
+
+
+def _is_the_name(option: str, person: Person) -> bool:
+    """Whether an option is only the person's name ("Zhang Wei", "Zhang Wei's")."""
+    start, end = _span(option, person)
+    rest = f"{option[:start]} {option[end:]}".replace("'s", " ")
+    return not [w for w in _plain_words(rest) if w not in _ARTICLES]
 
 
 def _operations_in(office: Office, text: str) -> set[str]:
