@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
+import yaml
 
 from assistantx.agents.hybrid import (
     UNSURE_QUESTION,
@@ -13,7 +14,7 @@ from assistantx.agents.hybrid import (
     build_factory,
 )
 from assistantx.core.actions import Inquire, SendQR
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import DEFAULT_OFFICE, Office, load_office, parse_office
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
@@ -163,3 +164,26 @@ async def test_the_cascade_asks_the_model_when_the_embedded_reader_is_unsure(
     asked = [r.action for r in stm.trace.actions() if isinstance(r.action, Inquire)]
     assert [(a.contact, a.question) for a in asked] == [("lee", UNSURE_QUESTION)]
     assert stm.trace.usage.llm_calls == 1
+
+
+async def test_the_cascade_never_sends_a_fax_to_an_answer_that_says_i_dont_know(
+    scripted_llm: ScriptedLLM,  # noqa: F811
+) -> None:
+    # "please fax my document": the embedded reader asks where to; the requester of `run`
+    # knows no more than they wrote. Read as the answer, "Sorry, I don't ..." was the place
+    # the fax went to; the question stays open, and the model (unsure here) is asked instead
+    raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw["operations"].append(
+        {"id": "fax", "name": "fax", "verbs": ["fax"], "input": "document", "sends_out": True}
+    )
+    for f in raw["facilities"]:
+        if f["id"] == "printer":
+            f["operations"] = [*f["operations"], "fax"]
+    fax = parse_office(raw)
+    scripted_llm.script("understanding", json_reply(_frame(sure=False)))
+    stm, sim = await _run(fax, scripted_llm, "please fax my document", cascade=True)
+
+    assert not sim.world.check({"heated": "document:lee"})
+    assert not [r for r in stm.trace.actions() if isinstance(r.action, SendQR)]
+    assert len(scripted_llm.requests_for("understanding")) >= 1
+    assert stm.trace.outcome != "done", stm.trace.summary

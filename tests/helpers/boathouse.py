@@ -70,6 +70,7 @@ def raw_boathouse() -> dict[str, Any]:
                 "verbs": ["courier", "dispatch"],
                 "input": "form",
                 "sends_out": True,
+                "destination_asked": "the name and address of the place",
             },
         ],
         "people": [

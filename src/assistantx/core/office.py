@@ -112,6 +112,12 @@ class Operation(_Model):
         description="it sends the item to someone outside the office (a fax to a tax office): "
         "nothing comes back; the requester is told where it went",
     )
+    destination_asked: str = Field(
+        default="the name of the place",
+        description="what a requester who did not say where it goes is asked for, in words "
+        "that fit how it sends: 'the fax number' for a fax, 'the name and address of the "
+        "place' for a courier (only for an operation that sends out)",
+    )
     done: str | None = Field(
         default=None,
         description="what it did to an item, as told to people ('scanned to PDF'); default: "

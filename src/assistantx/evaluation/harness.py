@@ -112,7 +112,9 @@ async def run_episode(
             seed=run,
             # what they asked for, also when it cannot be done (an unachievable task's goal is
             # only to be told): a question back is answered from the request, not "nothing"
-            wish=Wish.from_goal(office, task.requester, [*task.goal, *_requested(task)]),
+            wish=Wish.from_goal(
+                office, task.requester, [*task.goal, *_requested(task)], task.spec or ()
+            ),
         )
     except AssistantXError as exc:
         raise DatasetError(f"task {task.id} could not start: {exc}") from exc

@@ -6,9 +6,18 @@ they answer the question that was asked, from the task's truth (its goal milesto
 - a question that names options ("Do you mean Grace Obi, or the grace period talk?") gets the
   option that fits what they want ("the grace period talk");
 - "Shall I ...?" gets "Yes, please." when the offer fits what they want, else "No, thanks.";
-- "Who should get ...?" / "Whose ...?" / "Who should sign ...?" get the person's name, "Which
-  item ...?" / "What ...?" the item;
-- anything else gets what they want, said plainly ("the stapler, for Min").
+- "Where should I courier it to?" gets the place outside the task sends it to ("To the
+  regional federation.");
+- "Who should get ...?" / "Whose ...?" (also both at once) / "Who should sign ...?" / "Who do
+  you mean by 'his'?" get the person's name (or "Mine."), "Which item ...?" the item;
+- "What should I do, with which item, and for whom?" (the whole request) and anything else get
+  what they want, said plainly ("I mean Zhang Wei's stapler, for Min Ho.", "I mean the form:
+  please courier it to the regional federation.");
+- a question whose answer the truth does not hold gets "Sorry, I don't know." (never a guess).
+
+The truth is the goal's milestones and, for an evaluation task, its parts (``Task.spec``): the
+place outside a send-out service sends to and the service asked for are the requester's to
+say, and no world-state milestone holds them.
 
 A task that asks for nothing (its goal is only that the requester is told) answers every
 offer with "No, thanks." The rules read only the question and the truth, never the
@@ -16,19 +25,22 @@ assistant's reading, so a wrong reading is corrected rather than confirmed.
 
 Without a task (``assistantx run``: only the words they wrote are known, ``Wish.from_words``),
 the requester still answers the question asked and nothing else: of two options, the one
-whose words they wrote; to an offer, "No, thanks." (they asked for what they wrote, and a
-yes would be a guess at a wish nobody knows); to anything else, that they have nothing to add.
+whose words they wrote; to "where to?", the place after the "to" they wrote; to an offer, "No,
+thanks." (they asked for what they wrote, and a yes would be a guess at a wish nobody knows);
+to anything else, that they have nothing to add.
 They never answer as a colleague would ("Yes, I have a stapler"), which read as a yes.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone, parse_milestone
 from assistantx.core.office import Office, Person
+from assistantx.core.task_schema import Part
 from assistantx.sim.understanding import mentioned_item_types
 
 _OFFER = re.compile(
@@ -52,6 +64,10 @@ class Wish:
     owners: tuple[str, ...] = ()
     doers: tuple[str, ...] = ()  # signers, sealers
     items: tuple[str, ...] = ()  # item type ids, products and their inputs alike
+    # whose the item is when it is not someone else's: "mine", "any" (any will do) or ""
+    own: str = ""
+    operations: tuple[str, ...] = ()  # the office operations asked for ("courier")
+    destinations: tuple[str, ...] = ()  # where a send-out service sends it ("the federation")
     wants_something: bool = True
     people: frozenset[str] = field(default_factory=frozenset)
     # the words they wrote, when no task says what they want (``from_words``)
@@ -70,11 +86,21 @@ class Wish:
         )
 
     @classmethod
-    def from_goal(cls, office: Office, requester: str, goal: list[Milestone]) -> Wish:
+    def from_goal(
+        cls,
+        office: Office,
+        requester: str,
+        goal: list[Milestone],
+        parts: Sequence[Part] = (),
+    ) -> Wish:
+        """What the requester wants: the goal's milestones, and the task's ``parts`` for what
+        no milestone holds (the operation asked for, where a send-out service sends it)."""
         recipients: list[str] = []
         owners: list[str] = []
         doers: list[str] = []
         items: list[str] = []
+        own: list[str] = []
+        operations: list[str] = []
 
         def item(item_id: str) -> None:
             type_id, _, owner = item_id.partition(":")
@@ -84,6 +110,8 @@ class Wish:
                 items.append(op.input)  # a printout is of a file
             if owner not in ("", "*") and owner != requester:
                 owners.append(owner)
+            else:
+                own.append("mine" if owner == requester else "any")
 
         for milestone in goal:
             name, args = parse_milestone(milestone)
@@ -96,6 +124,11 @@ class Wish:
                     doers.extend(args[1:])  # the named doer (a seal's: whoever owns one)
                 case "sealed" | "printed" | "copied" | "heated" | "made":
                     item(args[0])
+                    operations.extend(_operation_of(office, name, args[0]))
+        for part in parts:
+            task = part.task(requester, office)
+            if task.operation is not None:
+                operations.append(task.operation)
         people = {*recipients, *owners, *doers} - {requester}
         return cls(
             requester=requester,
@@ -103,9 +136,23 @@ class Wish:
             owners=tuple(dict.fromkeys(owners)),
             doers=tuple(dict.fromkeys(doers)),
             items=tuple(dict.fromkeys(items)),
+            own=own[0] if own and not owners else "",
+            operations=tuple(dict.fromkeys(operations)),
+            destinations=tuple(dict.fromkeys(p.destination for p in parts if p.destination)),
             wants_something=bool(items or recipients),
             people=frozenset(people),
         )
+
+
+def _operation_of(office: Office, milestone: str, item_id: str) -> list[str]:
+    """The office operation a work milestone ("heated": form) was done by, when the item's type
+    says which (the courier of forms, not the charger of headlamps); none when several fit."""
+    spec = task_kinds.of_milestone(milestone)
+    if spec is None or spec.shape is None:
+        return []
+    type_id = item_id.partition(":")[0]
+    fits = [op.id for op in office.with_shape(spec.shape) if type_id in (op.input, op.product)]
+    return fits if len(fits) == 1 else []
 
 
 def answer(office: Office, wish: Wish, question: str) -> str:
@@ -122,21 +169,65 @@ def answer(office: Office, wish: Wish, question: str) -> str:
     if not wish.wants_something:
         return "Nothing, thanks."
     lowered = question.lower()
+    if _WHOLE_REQUEST.search(lowered):
+        return _plainly(office, wish)
+    if _WHERE_TO.search(lowered):
+        return f"To {wish.destinations[0]}." if wish.destinations else DONT_KNOW
     if re.search(r"\bwho(m|se)?\b", lowered):
-        if "whose" in lowered and wish.owners:
-            return _name(office, wish.owners[0]) + "'s."
-        if re.search(r"\b(sign|stamp|seal|do that)", lowered) and wish.doers:
-            return _name(office, wish.doers[0]) + "."
-        others = [p for p in wish.recipients if p != wish.requester]
-        if re.search(r"\bwho\b.*\bmean\b", lowered) and not others:
-            # "who do you mean?" about a person they named: the owner or doer, not themselves
-            named = [*wish.owners, *wish.doers]
-            if named:
-                return _name(office, named[0]) + "."
-        return (_name(office, others[0]) if others else "Me") + "."
+        return _who(office, wish, lowered)
     if re.search(r"\b(which|what)\b", lowered) and wish.items:
         return f"The {_item_name(office, wish.items[0])}."
     return _plainly(office, wish)
+
+
+DONT_KNOW = "Sorry, I don't know."
+_WHOLE_REQUEST = re.compile(
+    r"\bwhat (should|shall|can) i do\b|\bwhat do you (need|want)\b|"
+    r"\bwhat would you like me to do\b"
+)
+_WHERE_TO = re.compile(r"\bwhere\b.*\bto\b|\bwhere should i (send|take)\b")
+_POSSESSIVE = re.compile(r"\bby '(his|her|their|hers|theirs)'")
+
+
+def _who(office: Office, wish: Wish, lowered: str) -> str:
+    """The person a who-question asks for: whose the item is, who does the work, who gets it,
+    or whom a word the assistant could not place meant; both when it asks whose and who."""
+    others = [p for p in wish.recipients if p != wish.requester]
+    gets = _name(office, others[0]) if others else "Me"
+    if "whose" in lowered:
+        whose = _whose(office, wish)
+        if re.search(r"\bwho should get\b", lowered):  # "Whose book is it, and who should get it?"
+            return _whose_and_for_whom(office, wish, "me" if gets == "Me" else gets)
+        return whose
+    if re.search(r"\b(sign|stamp|seal|do that)", lowered):
+        return _name(office, wish.doers[0]) + "." if wish.doers else DONT_KNOW
+    if re.search(r"\bwho\b.*\bmean\b", lowered):
+        # "who do you mean by 'his'?": whose it is, for a possessive; else who gets it, and
+        # of a request for themselves, the owner or doer they named (never "Me.")
+        named = [*wish.owners, *wish.doers]
+        if named and (_POSSESSIVE.search(lowered) or not others):
+            return _name(office, named[0]) + "."
+        return gets + "." if others else DONT_KNOW
+    return gets + "."
+
+
+def _whose_and_for_whom(office: Office, wish: Wish, gets: str) -> str:
+    """ "It's Zhang Wei's stapler, for Zhou Yan.": the item named whole, so the answer stands
+    alone as what they want."""
+    thing = _item_name(office, wish.items[0]) if wish.items else "one"
+    if wish.owners:
+        return f"It's {_name(office, wish.owners[0])}'s {thing}, for {gets}."
+    if wish.own == "mine":
+        return f"It's my {thing}, for {gets}."
+    if wish.own == "any":
+        return f"Any {thing} will do, for {gets}."
+    return DONT_KNOW
+
+
+def _whose(office: Office, wish: Wish) -> str:
+    if wish.owners:
+        return _name(office, wish.owners[0]) + "'s."
+    return {"mine": "Mine.", "any": "Anyone's, any will do."}.get(wish.own, DONT_KNOW)
 
 
 def _is_offer(question: str) -> bool:
@@ -157,6 +248,11 @@ def _from_words(words: str, question: str, options: list[str]) -> str:
             return chosen
     if _is_offer(question):
         return "No, thanks."
+    if _WHERE_TO.search(question.lower()):
+        # "courier my form to the federation, please": the place they wrote after "to"
+        said = re.search(r"\bto\s+(.+?)(?:,?\s+(?:please|thanks?(?: you)?))?[.!?\s]*$", words)
+        if said is not None:
+            return f"To {said.group(1)}."
     return NOTHING_TO_ADD
 
 
@@ -202,12 +298,19 @@ def _choose(office: Office, wish: Wish, options: list[str]) -> str | None:
 
     def score(option: str) -> int:
         people = _people_in(office, option) - {wish.requester}
+        # "the month of May": a name that is only a word of a longer phrase counts half for
+        # the person, and nothing against them ("May Oduya" is the person for sure)
+        named = {p for p in people if _is_the_name(option, office.person(p))}
         items = set(mentioned_item_types(office, option))
+        services = _operations_in(office, option)
         return (
-            2 * len(people & wish.people)
-            - 2 * len(people - wish.people)
+            2 * len(named & wish.people)
+            + len((people - named) & wish.people)
+            - 2 * len(named - wish.people)
             + 2 * len(items & set(wish.items))
             - len(items - set(wish.items))
+            + 2 * len(services & set(wish.operations))
+            - len(services - set(wish.operations))
         )
 
     scored = sorted(((score(o), n, o) for n, o in enumerate(options)), key=lambda x: (-x[0], x[1]))
@@ -225,6 +328,23 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
     # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
     # did not ask for: no
     return not (people - wish.people or items - set(wish.items))
+
+
+def _is_the_name(option: str, person: Person) -> bool:
+    """Whether an option is only the person's name ("Zhang Wei", "Zhang Wei's")."""
+    start, end = _span(option, person)
+    rest = f"{option[:start]} {option[end:]}".replace("'s", " ")
+    return not [w for w in _plain_words(rest) if w not in _ARTICLES]
+
+
+def _operations_in(office: Office, text: str) -> set[str]:
+    """The office operations an option names by name or verb ("scan", "make tea")."""
+    said = f" {' '.join(_plain_words(text))} "
+    return {
+        op.id
+        for op in office.operations
+        if any(f" {' '.join(_plain_words(w))} " in said for w in (op.name, *op.verbs))
+    }
 
 
 def _people_in(office: Office, text: str) -> set[str]:
@@ -275,9 +395,14 @@ def _item_name(office: Office, type_id: str) -> str:
 
 
 def _plainly(office: Office, wish: Wish) -> str:
-    """What they want, in a few words: "Zhang Wei's stapler, for Min Ho"."""
+    """What they want, in a few words: "I mean Zhang Wei's stapler, for Min Ho."; a service
+    that sends the item out says where: "I mean the form: please courier it to the club."."""
     thing = _item_name(office, wish.items[0]) if wish.items else "it"
     whose = f"{_name(office, wish.owners[0])}'s {thing}" if wish.owners else f"the {thing}"
+    sent = [o for o in wish.operations if office.operation(o).sends_out]
+    if sent and wish.destinations:
+        op = office.operation(sent[0])
+        return f"I mean {whose}: please {op.name} it to {wish.destinations[0]}."
     others = [p for p in wish.recipients if p != wish.requester]
     to = f", for {_name(office, others[0])}" if others else ", for me"
     by = f", signed by {_name(office, wish.doers[0])}" if wish.doers else ""

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.agents.symbolic.answers import stance
+from assistantx.agents.symbolic.answers import says_not_known, stance
 
 
 @pytest.mark.parametrize(
@@ -28,3 +28,20 @@ from assistantx.agents.symbolic.answers import stance
 )
 def test_stance(text: str, expected: str) -> None:
     assert stance(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Sorry, I don't know.", True),
+        ("Sorry, I don't know more than I wrote.", True),
+        ("no idea", True),
+        ("I'm not sure", True),
+        ("To the regional federation.", False),
+        ("Zhang Wei's.", False),
+        ("I know: the county office", False),
+        ("Don Knowles", False),
+    ],
+)
+def test_a_reply_that_only_says_they_do_not_know(text: str, expected: bool) -> None:
+    assert says_not_known(text) is expected

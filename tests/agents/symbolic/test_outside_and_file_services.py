@@ -30,7 +30,7 @@ def _office(**op: Any) -> Office:
 
 @pytest.fixture(scope="module")
 def fax() -> Office:
-    return _office(id="fax", name="fax", sends_out=True)
+    return _office(id="fax", name="fax", sends_out=True, destination_asked="the fax number")
 
 
 @pytest.fixture(scope="module")
@@ -71,7 +71,7 @@ async def test_the_outcome_names_where_the_fax_went_in_the_requesters_words(
 async def test_a_fax_with_no_destination_asks_where_before_anything_moves(fax: Office) -> None:
     run = await run_instruction(fax, "lee", "please fax my document")
     told = [m.text for m in run.sim.messenger.sent if m.chat.id == "lee"]
-    assert told and "Where should I fax it to?" in told[0]
+    assert told and "Where should I fax it to? Please give me the fax number." in told[0]
     assert not [r for r in run.stm.trace.actions() if r.action.type in ("send_qr", "move")]
 
 

@@ -68,3 +68,16 @@ def offer_stance(text: str) -> Stance:
     if _HAVE_ONE.search(t) and not re.search(r"\b(please|need|want)\b", t):
         return "no"
     return stance(text)
+
+
+# "Sorry, I don't know.", "no idea", "not sure": a reply to a clarifying question that names
+# nothing; read as the answer, its words would become the answer ("fax it to Sorry").
+_NOT_KNOWN = re.compile(
+    r"^(sorry )?(i )?(dont know|do not know|have no idea|no idea|am not sure|im not sure|"
+    r"not sure)\b"
+)
+
+
+def says_not_known(text: str) -> bool:
+    """Whether a reply to a clarifying question only says that they do not know."""
+    return bool(_NOT_KNOWN.search(_clean(text)))

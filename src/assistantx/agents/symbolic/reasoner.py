@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from assistantx.agents.base import AgentContext, Reasoner
+from assistantx.agents.symbolic.answers import says_not_known
 from assistantx.agents.symbolic.decision import Decider
 from assistantx.agents.symbolic.evidence import Evidence, gather
 from assistantx.agents.symbolic.perception import perceive
@@ -71,8 +72,9 @@ class SymbolicReasoner(Reasoner):
 
     # -- understanding -------------------------------------------------------------------
     def frame(self, stm: ShortTermMemory) -> TaskFrame:
-        """The frame from the instruction and the first answer to each clarifying question."""
-        answers = stm.requester_answers()
+        """The frame from the instruction and the first answer to each clarifying question;
+        an answer that only says they do not know is no answer (the question stays open)."""
+        answers = [a for a in stm.requester_answers() if not says_not_known(a)]
         key = (stm.text, *answers)
         if key not in self._frames:
             self._frames[key] = self.parser.parse_with_answers(stm.text, stm.requester, answers)

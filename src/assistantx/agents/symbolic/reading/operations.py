@@ -99,8 +99,8 @@ class OperationChooser:
                 if where is None:
                     return TaskFrame(
                         requester=frame.requester,
-                        question=f"{WHERE_TO}{op.name} it to? Please give the number "
-                        "or the name of the place.",
+                        question=f"{WHERE_TO}{op.name} it to? Please give me "
+                        f"{op.destination_asked}.",
                     )
                 colleague = _colleague(lexed, outside) if not sent_out else None
                 if colleague is not None:
