@@ -137,7 +137,7 @@ ASKED = (
         "lee",
         "get it signed by Wang",
         ({"signed": ["document:lee", "wang"]}, {"holds": ["lee", "document:lee"]}),
-        "Which item do you mean for the sign request?",
+        "Which item do you mean? Please tell me what it is.",
         "The document.",
     ),
     Asked(
