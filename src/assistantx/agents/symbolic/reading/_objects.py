@@ -11,7 +11,10 @@ clause say when, what for, or where, and must never become tasks of their own:
   task word does not count; "take my contract to Zhang *to sign*" keeps it);
 - a reason clause after the object: "a radio *because there's no money for new headlamps*";
 - a statement about an owned item after the object: "a radio *as my headlamp is dying*";
-- a container or measure word before "of": "a *cup of* coffee" is coffee.
+- a container or measure word before "of": "a *cup of* coffee" is coffee;
+- a purpose phrase after a product or a pronoun that is the object: "I need a copy *for the
+  file*", "I need one *for the rota*" (the product's noun, "one" or "it" is what is asked
+  for; the item word after "for the" says what it is for, never a second object).
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
 wipes") are all objects of the same verb. (An item word used as a verb, "book me a taxi", was
@@ -36,6 +39,9 @@ DETERMINERS = english.words("determiners")
 # Conjunctions that open a reason clause: what it names explains the request, never joins it.
 REASON_CONJUNCTIONS = english.words("reason_conjunctions")
 STATE_VERBS = english.words("state_verbs")
+_ARTICLES = frozenset({"a", "an", "another"})
+# The task kinds whose work is a product named like the service ("a copy", "a print").
+_PRODUCT_KINDS = frozenset({"print", "copy"})
 
 
 def modifiers(
@@ -57,6 +63,9 @@ def modifiers(
         if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and asked:
             in_purpose = True  # "... because there's no money for new stopwatches": context
             continue
+        if asked and _object_word(tokens, m):
+            head_seen = True  # "I need a copy for the file": the copy is what is asked for
+            continue
         if m.kind != "item":
             continue
         if asked and _subject_of_state(tokens, mentions, n):
@@ -70,6 +79,15 @@ def modifiers(
         else:
             head_seen = True
     return out
+
+
+def _object_word(tokens: Sequence[Token], m: Mention) -> bool:
+    """A request's object that is no item of its own: the name of a service's product used
+    as a noun after an article ("a copy", "a print"), or "one" standing for the item."""
+    if m.kind == "cue":
+        after_article = m.start > 0 and tokens[m.start - 1].word in _ARTICLES
+        return after_article and bool(m.ids) and set(m.ids) <= _PRODUCT_KINDS
+    return m.kind == "word" and m.ids[0] == "one"
 
 
 def _purpose(mentions: Sequence[Mention], n: int) -> bool:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import language
 from assistantx.core.task_schema import Evidence
@@ -27,7 +28,9 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if match is None:
         return text, []
     before, after = text[: match.start()], text[match.end() :]
-    fix = re.split(r"[.!?;\n]", after, maxsplit=1)[0]
+    # the correction ends at its sentence's end or at a comma: what follows is said beside it
+    # ("... I meant Mao's seal, Wang needs hers today": the reason, read as a piece of its own)
+    fix = re.split(r"[,.!?;\n]", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
     # "..., sorry, his laser, not the ruler": what is rejected after it says which one
@@ -37,6 +40,8 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
+    if len(mentions) == 2 and _same_item_again(terms, mentions, before):
+        mentions = mentions[:1]  # "I meant Mao's seal": the owner is what is corrected
     if len(mentions) != 1 or len(mentions[0].ids) != 1:
         return text, []
     new = mentions[0]
@@ -56,6 +61,16 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = terms.office.item_type(new.ids[0]).name
     fixed = before[: old.start()] + said + before[old.end() :] + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+
+def _same_item_again(terms: Terms, mentions: list[Mention], before: str) -> bool:
+    """ "bring me Ann's torch... sorry, I meant Dev's torch": a person's possessive and the
+    item already asked for, said again with the new owner."""
+    whose, item = mentions
+    if whose.kind != "person" or not whose.possessive or item.kind != "item":
+        return False
+    said = {i for m in terms.lex.scan(terms.lex.tokens(before)) if m.kind == "item" for i in m.ids}
+    return set(item.ids) <= said
 
 
 def spellings(terms: Terms, kind: str, text: str) -> set[str]:

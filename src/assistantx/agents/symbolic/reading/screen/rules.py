@@ -12,6 +12,7 @@ from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
@@ -34,6 +35,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("negated", negated),
     ("destructive", destructive),
     ("fact", fact),
+    ("statement", own_need),
     ("question", question),
     ("statement", statement),
     ("unsupported", unsupported),

@@ -1,0 +1,165 @@
+"""Blind round 8's reader classes, by mechanism, on sentences of our own against a theatre's
+production office no sentence was written for (``helpers.playhouse``) and against the
+default office (the round's own office and sentences were never read)."""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+from symbolic_run import run_instruction
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import Office, load_office
+from helpers.playhouse import playhouse
+
+
+@functools.cache
+def _office(name: str) -> Office:
+    return playhouse() if name == "playhouse" else load_office()
+
+
+@functools.cache
+def _parser(name: str) -> InstructionParser:
+    return InstructionParser(_office(name))
+
+
+def _tasks(office: str, text: str, who: str) -> list[tuple[str, str | None, str | None, str]]:
+    frame = _parser(office).parse(text, who)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    return [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
+
+
+# -- 1. "for the <noun>" after a copy or print request is its purpose ----------------------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "wanted"),
+    [
+        ("default", "mao", "can you copy my contract? I need a copy for the file", "copy"),
+        ("default", "mao", "copy my contract please, need a copy for the file", "copy"),
+        ("default", "zhou", "can you photocopy my report. I need one for the file", "copy"),
+        ("default", "chen", "print my slides, I need a printout for the report", "print"),
+        ("playhouse", "oona", "can you copy my contract? I need a copy for the rota", "copy"),
+        ("playhouse", "dev", "copy my rider, need a copy for the schedule", "copy"),
+        ("playhouse", "ann", "please print my rota, need one for the green room", "print"),
+        ("playhouse", "jon", "photocopy my agreement. I need a copy for the records", "copy"),
+        ("playhouse", "jon", "copy my contract, I need one for the props cupboard", "copy"),
+    ],
+)
+def test_a_purpose_after_the_product_is_no_recipient(
+    office: str, who: str, text: str, wanted: str
+) -> None:
+    """The item word, place or thing after "for the" says what the product is for: the
+    requester gets it, nobody is asked whom to pass a file on to."""
+    [(kind, _, owner, recipient)] = _tasks(office, text, who)
+    assert (kind, owner, recipient) == (wanted, who, who)
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "to"),
+    [
+        ("default", "mao", "get me a copy of my contract for Wang", "wang"),
+        ("playhouse", "oona", "copy my contract. I need a copy for Dev", "dev"),
+    ],
+)
+def test_a_person_after_for_is_still_the_recipient(
+    office: str, who: str, text: str, to: str
+) -> None:
+    [(kind, _, owner, recipient)] = _tasks(office, text, who)
+    assert (kind, owner, recipient) == ("copy", who, to)
+
+
+async def test_the_copy_for_the_file_reaches_the_requester() -> None:
+    run = await run_instruction(
+        _office("default"), "zhou", "can you copy my contract? I need a copy for the file"
+    )
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["zhou", "copy:zhou"]})
+
+
+# -- 2. a correction after an ellipsis, with the corrected-away person in a reason ---------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "owner", "item"),
+    [
+        (
+            "default",
+            "sun",
+            "bring me Wang's seal... sorry, I meant Mao's seal, Wang needs hers today",
+            "mao",
+            "seal",
+        ),
+        (
+            "default",
+            "lee",
+            "get me Wang's stapler... no wait, Zhang's, Wang is using hers",
+            "zhang",
+            "stapler",
+        ),
+        (
+            "playhouse",
+            "oona",
+            "bring me Ann's torch... sorry, I meant Dev's torch, Ann needs hers tonight",
+            "dev",
+            "torch",
+        ),
+        (
+            "playhouse",
+            "oona",
+            "could you get me Jon's lanyard... oops, I mean Jonathan's, Jon needs his own today",
+            "jonathan",
+            "lanyard",
+        ),
+        (
+            "playhouse",
+            "dev",
+            "get me Ann's tape measure... sorry I meant Roseanne's tape measure, Ann needs hers",
+            "roseanne",
+            "tape_measure",
+        ),
+        (
+            "playhouse",
+            "dev",
+            "get me Ann's tape measure - no wait, Oona's tape measure. Ann is using hers",
+            "oona",
+            "tape_measure",
+        ),
+    ],
+)
+def test_the_corrected_owner_is_asked_and_the_requester_gets_it(
+    office: str, who: str, text: str, owner: str, item: str
+) -> None:
+    """Only the corrected item is fetched, for the requester; the person of the reason is
+    neither a recipient nor an owner asked."""
+    assert _tasks(office, text, who) == [("transfer", item, owner, who)]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "owner", "item"),
+    [
+        ("default", "sun", "bring me Mao's seal, Wang needs hers today", "mao", "seal"),
+        ("playhouse", "oona", "get me Dev's torch, as Jon needs his tonight", "dev", "torch"),
+    ],
+)
+def test_a_colleague_who_needs_their_own_is_the_reason(
+    office: str, who: str, text: str, owner: str, item: str
+) -> None:
+    assert _tasks(office, text, who) == [("transfer", item, owner, who)]
+
+
+def test_a_colleagues_need_alone_is_not_read_as_a_reason() -> None:
+    """With no request beside it, "Wang needs hers" is no reason for anything: not answered
+    as context, and nothing is fetched."""
+    frame = _parser("default").parse("Wang needs hers today", "sun")
+    assert frame.tasks == []
+
+
+async def test_the_corrected_seal_reaches_the_requester_with_its_owners_yes() -> None:
+    text = "bring me Wang's seal... sorry, I meant Mao's seal, Wang needs hers today"
+    run = await run_instruction(_office("default"), "sun", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["sun", "seal:mao"]})
+    asked = {m.chat.id for m in run.sim.messenger.sent if "seal" in m.text}
+    assert "mao" in asked and "wang" not in asked
