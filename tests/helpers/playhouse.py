@@ -46,7 +46,7 @@ def raw_playhouse() -> dict[str, Any]:
             {"id": "tape_measure", "name": "tape measure"},
             {"id": "lanyard", "name": "lanyard", "synonyms": ["pass"]},
             {"id": "cotton_gloves", "name": "cotton gloves", "synonyms": ["white gloves"]},
-            {"id": "gaffer_tape", "name": "gaffer tape", "consumable": True},
+            {"id": "gaffer_tape", "name": "gaffer tape", "consumable": True, "mass": True},
             {
                 "id": "contract",
                 "name": "contract",

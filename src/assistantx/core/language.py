@@ -98,6 +98,27 @@ def plural(noun: str) -> str:
     return " ".join([*head, forms[0] if forms else last + "s"])
 
 
+def is_plural_noun(phrase: str) -> bool:
+    """Whether a noun phrase names several things ("handling gloves", "wipes"): its last
+    word is a plural form of another noun in the dictionary ("gloves" → glove), or a noun
+    that is only ever plural ("scissors": no form but itself)."""
+    last = phrase.lower().split(" ")[-1]
+    found = lemmas(last).get("NOUN", ())
+    if found and last not in found:
+        return True
+    forms = getAllInflections(last, upos="NOUN")
+    return last.endswith("s") and forms.get("NNS", ()) == (last,) == forms.get("NN", ())
+
+
+def is_mass_noun(phrase: str) -> bool:
+    """Whether a noun phrase names stuff, not a thing: the dictionary's only plural of its
+    last word is the word itself ("glue", "ink", "stationery"). Nouns used both ways
+    ("paper", "tape", and as often "battery") are not told apart by the dictionary."""
+    last = phrase.lower().split(" ")[-1]
+    plurals = getAllInflections(last, upos="NOUN").get("NNS", ())
+    return plurals == (last,) and not last.endswith("s")
+
+
 def _zipf_english(word: str) -> float:
     # wordfreq is imported on first use: its import finds its data through a stack walk that
     # costs a quarter CPU-second, and most commands and a service's start never ask.

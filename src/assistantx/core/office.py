@@ -78,6 +78,11 @@ class ItemType(_Model):
     consumable: bool = Field(
         default=False, description="used up when used (paper, wipes): one is given, not lent"
     )
+    mass: bool = Field(
+        default=False,
+        description="named as stuff, not as a thing: 'some gaffer tape', never 'a gaffer "
+        "tape' (a noun the dictionary knows only as stuff, glue or ink, needs no mark)",
+    )
 
     @property
     def physical(self) -> bool:

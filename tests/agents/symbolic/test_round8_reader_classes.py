@@ -163,3 +163,79 @@ async def test_the_corrected_seal_reaches_the_requester_with_its_owners_yes() ->
     assert run.sim.world.check({"holds": ["sun", "seal:mao"]})
     asked = {m.chat.id for m in run.sim.messenger.sent if "seal" in m.text}
     assert "mao" in asked and "wang" not in asked
+
+
+# -- 3. a statement of where an item is is answered in words, never acted on ---------------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("playhouse", "oona", "fyi gaffer tape's in the cupboard"),
+        ("playhouse", "oona", "fyi Dev's torch's back in the cupboard"),
+        ("playhouse", "ann", "fyi you'll find the gaffer tape in the cupboard"),
+        ("playhouse", "jon", "fyi, your copy is at the copier"),
+        ("playhouse", "jon", "just so u know the lanyard is in Jon's drawer"),
+        ("playhouse", "dev", "heads-up: gaffer tape is in the props cupboard again"),
+        ("playhouse", "dev", "heads up, the white gloves are back in the store room"),
+        ("playhouse", "ann", "the torch is in the drawer again"),
+        ("default", "lee", "fyi Wang's stapler is back in the print room"),
+        ("default", "lee", "heads up: scissors are in the kitchenette again"),
+        ("default", "zhou", "just so you know, the paper's by the printer"),
+        ("default", "zhou", "fyi the wipes are back in the fridge"),
+    ],
+)
+def test_where_an_item_is_is_answered_in_words(office: str, who: str, text: str) -> None:
+    frame = _parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.question is None
+    assert frame.decline is not None and "I did nothing" in frame.decline
+
+
+def test_the_answer_says_what_was_told_with_its_verb_agreeing() -> None:
+    frame = _parser("default").parse("heads up: scissors are in the kitchenette again", "lee")
+    assert frame.decline == "Thanks for telling me where the scissors are. I did nothing."
+    frame = _parser("playhouse").parse("fyi gaffer tape's in the cupboard", "ann")
+    assert frame.decline == "Thanks for telling me where the gaffer tape is. I did nothing."
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("gaffer tape's in the cupboard, bring me some", ("transfer", "gaffer_tape", None, "oona")),
+        (
+            "the torch is in the cupboard, can you get it for me",
+            ("transfer", "torch", None, "oona"),
+        ),
+        (
+            "Dev's torch is in the props cupboard, could you bring it to Ann",
+            ("transfer", "torch", "dev", "ann"),
+        ),
+        ("fyi my contract is on the copier, please copy it", ("copy", "contract", "oona", "oona")),
+    ],
+)
+def test_a_request_beside_where_it_is_still_points_back_to_it(
+    text: str, wanted: tuple[str, str, str | None, str]
+) -> None:
+    assert _tasks("playhouse", text, "oona") == [wanted]
+
+
+async def test_a_whereabouts_statement_moves_nothing() -> None:
+    run = await run_instruction(_office("playhouse"), "oona", "fyi gaffer tape's in the cupboard")
+    assert run.stm.trace.outcome == "done"
+    assert not {"move", "send_qr", "inquire"} & set(run.actions)
+
+
+# -- 6. the article told to people follows the noun ---------------------------------------
+
+
+async def test_a_plural_supply_is_told_without_a_singular_article() -> None:
+    run = await run_instruction(_office("playhouse"), "ann", "get me some cotton gloves")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    summary = run.stm.trace.summary
+    assert "you now have some cotton gloves from the props cupboard" in summary
+    assert "a cotton gloves" not in summary
+
+
+async def test_a_consumable_supply_is_told_as_stuff() -> None:
+    run = await run_instruction(_office("playhouse"), "ann", "could you bring me some gaffer tape")
+    assert "you now have some gaffer tape from the props cupboard" in run.stm.trace.summary

@@ -19,6 +19,7 @@ from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
 
@@ -38,5 +39,6 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_need),
     ("question", question),
     ("statement", statement),
+    ("statement", whereabouts),
     ("unsupported", unsupported),
 )
