@@ -10,8 +10,8 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
-from assistantx.core.office import Office, load_office
-from helpers.playhouse import playhouse
+from assistantx.core.office import Office, load_office, parse_office
+from helpers.playhouse import playhouse, raw_playhouse
 
 
 @functools.cache
@@ -239,3 +239,64 @@ async def test_a_plural_supply_is_told_without_a_singular_article() -> None:
 async def test_a_consumable_supply_is_told_as_stuff() -> None:
     run = await run_instruction(_office("playhouse"), "ann", "could you bring me some gaffer tape")
     assert "you now have some gaffer tape from the props cupboard" in run.stm.trace.summary
+
+
+# -- 5. a send-out service's destination outside the office, also named before "by" --------
+
+
+def _with_service_synonyms() -> InstructionParser:
+    """The playhouse where the courier desk is also called "courier" and the fax machine
+    "fax": the service's word after "by" is then a facility's name too."""
+    raw = raw_playhouse()
+    names = {"courier_desk": ["courier"], "fax_machine": ["fax"]}
+    for facility in raw["facilities"]:
+        facility["synonyms"] = names.get(facility["id"], [])
+    return InstructionParser(parse_office(raw, "playhouse with short names"))
+
+
+@pytest.mark.parametrize(
+    ("text", "op", "destination"),
+    [
+        ("send my loan agreement to the arts council by courier", "courier", "the arts council"),
+        (
+            "please send my rider to the touring company by courier",
+            "courier",
+            "the touring company",
+        ),
+        ("get my contract to the Lyric Theatre via courier", "courier", "the Lyric Theatre"),
+        ("send my agreement to the county arts office by fax", "fax", "the county arts office"),
+        ("send my contract to Hartwell & Co by courier please", "courier", "Hartwell & Co"),
+        ("fax my agreement to Hartwell Associates", "fax", "Hartwell Associates"),
+        (
+            "fax my contract to the council's planning office",
+            "fax",
+            "the council's planning office",
+        ),
+        ("send my contract by fax to the insurers", "fax", "the insurers"),
+    ],
+)
+@pytest.mark.parametrize("short_names", [False, True])
+def test_a_destination_outside_is_where_the_service_sends_it(
+    text: str, op: str, destination: str, short_names: bool
+) -> None:
+    parser = _with_service_synonyms() if short_names else _parser("playhouse")
+    frame = parser.parse(text, "oona")
+    assert frame.question is None, frame.question
+    assert [(t.item, t.owner, t.operation, t.destination) for t in frame.tasks] == [
+        ("contract", "oona", op, destination)
+    ]
+
+
+def test_to_a_place_then_a_verb_is_still_a_purpose() -> None:
+    """ "a torch to read by": "to" with a verb after it is what the item is for; only an
+    article or a name that is no verb after "to" opens a place."""
+    assert _tasks("playhouse", "bring me a torch to read the script with", "oona") == [
+        ("transfer", "torch", None, "oona")
+    ]
+
+
+async def test_the_courier_to_an_outside_office_runs_to_done() -> None:
+    text = "send my loan agreement to the arts council by courier"
+    run = await run_instruction(_office("playhouse"), "oona", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert "the arts council" in run.stm.trace.summary

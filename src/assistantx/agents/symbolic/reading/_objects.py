@@ -27,7 +27,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english
+from assistantx.core import english, language
 
 # Prepositions of time: a bare noun after one is a time phrase ("over lunch", "at lunch").
 TIME_PREPOSITIONS = english.words("time_prepositions")
@@ -56,7 +56,7 @@ def modifiers(
             if m.kind in ("item", "cue"):
                 out.add(m.start)
             continue
-        if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(mentions, n):
+        if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(tokens, mentions, n):
             in_purpose = True
             continue
         asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
@@ -90,13 +90,17 @@ def _object_word(tokens: Sequence[Token], m: Mention) -> bool:
     return m.kind == "word" and m.ids[0] == "one"
 
 
-def _purpose(mentions: Sequence[Mention], n: int) -> bool:
-    """ "to" + a verb: a purpose clause, unless the verb is a task word without its own object."""
+def _purpose(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """ "to" + a verb: a purpose clause, unless the verb is a task word without its own object
+    ("to the arts council": an article after "to" opens a place, not a verb)."""
     nxt = mentions[n + 1] if n + 1 < len(mentions) else None
-    if nxt is None:
+    after = mentions[n].end
+    if nxt is None or (after < len(tokens) and tokens[after].word in DETERMINERS):
         return False
     if nxt.kind == "word":
-        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit()
+        # "to Hartwell & Co": a capitalized word that is no verb names a place, not a purpose
+        named = nxt.text[:1].isupper() and not language.verb_lemmas(nxt.ids[0])
+        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit() and not named
     if nxt.kind == "cue":
         return any(m.kind == "item" for m in mentions[n + 2 :])
     return False

@@ -81,9 +81,13 @@ class MentionReader:
         spaces = gaps(lexed.text, tokens)
         outside = find_outside(tokens, spaces, self._sends_out)
         if outside is not None and not any(
-            m.kind == "cue" and m.start == outside.verb_start for m in mentions
+            m.start == outside.verb_start
+            and (m.kind == "cue" or (m.kind == "facility" and outside.means))
+            for m in mentions
         ):
-            outside = None  # "a courier bag": the service's word used as a noun, not its verb
+            # "a courier bag": the service's word used as a noun, not its verb; but "by
+            # courier" names the service as the means, also where a facility is so called
+            outside = None
         if outside is not None:
             mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
