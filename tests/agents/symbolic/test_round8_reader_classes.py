@@ -300,3 +300,65 @@ async def test_the_courier_to_an_outside_office_runs_to_done() -> None:
     run = await run_instruction(_office("playhouse"), "oona", text)
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     assert "the arts council" in run.stm.trace.summary
+
+
+# -- 4. a name said like another person's name is asked about ------------------------------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "names"),
+    [
+        ("default", "mao", "give my contract to Li", ("Sun Li", "Lee Ming")),
+        ("default", "mao", "get Li a pen", ("Sun Li", "Lee Ming")),
+        ("default", "zhou", "bring Li's book", ("Sun Li", "Lee Ming")),
+        ("playhouse", "oona", "give my contract to Ann", ("Ann Mbeki", "Roseanne Vale")),
+        ("playhouse", "oona", "get Jon's lanyard", ("Jon Petrov", "Jonathan Wilde")),
+        ("playhouse", "dev", "give my rota to Jon", ("Jon Petrov", "Jonathan Wilde")),
+    ],
+)
+def test_a_given_name_said_like_anothers_alias_is_asked(
+    office: str, who: str, text: str, names: tuple[str, str]
+) -> None:
+    """ "Li" is Sun Li's given name and sounds like "Lee", Lee Ming's alias: either may be
+    meant, so the reader asks, naming both, and moves nothing."""
+    frame = _parser(office).parse(text, who)
+    assert frame.tasks == [] and frame.question is not None
+    assert all(name in frame.question for name in names), frame.question
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "wanted"),
+    [
+        # an alias the office declares is how that person is called: it wins
+        ("default", "mao", "get Lee's book", ("transfer", "book", "lee", "mao")),
+        ("default", "mao", "take my stapler to Lee", ("transfer", "stapler", "mao", "lee")),
+        ("playhouse", "oona", "get John's lanyard", ("transfer", "lanyard", "jonathan", "oona")),
+        (
+            "playhouse",
+            "oona",
+            "bring me Anne's tape measure",
+            ("transfer", "tape_measure", "roseanne", "oona"),
+        ),
+        # only the one spelled so owns the item: no other could be meant
+        ("default", "mao", "bring me Li's scissors", ("transfer", "scissors", "sun", "mao")),
+        ("playhouse", "oona", "get Jon's torch", ("transfer", "torch", "jon", "oona")),
+        # names that only look alike, said differently ("Lei", "Lin"), are never mixed up
+        ("default", "mao", "give my contract to Lei", ("transfer", "document", "mao", "yang")),
+        ("default", "mao", "give my contract to Sun Li", ("transfer", "document", "mao", "sun")),
+    ],
+)
+def test_an_alias_or_the_owner_settles_who_is_meant(
+    office: str, who: str, text: str, wanted: tuple[str, str, str, str]
+) -> None:
+    assert _tasks(office, text, who) == [wanted]
+
+
+async def test_the_question_comes_before_anything_moves() -> None:
+    """In the simulated office the requester is asked "Who do you mean by 'Li'?", naming
+    both, in their own chat, and nothing is handed to either."""
+    run = await run_instruction(_office("default"), "mao", "give my contract to Li")
+    asked = [r.action for r in run.stm.trace.actions() if r.action.type == "inquire"]
+    assert asked and asked[0].contact == "mao"  # type: ignore[attr-defined]
+    assert "Sun Li" in asked[0].question and "Lee Ming" in asked[0].question  # type: ignore[attr-defined]
+    assert not run.sim.world.check({"holds": ["sun", "document:mao"]})
+    assert not run.sim.world.check({"holds": ["lee", "document:mao"]})
