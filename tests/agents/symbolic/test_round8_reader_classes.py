@@ -45,6 +45,8 @@ def _tasks(office: str, text: str, who: str) -> list[tuple[str, str | None, str 
         ("playhouse", "ann", "please print my rota, need one for the green room", "print"),
         ("playhouse", "jon", "photocopy my agreement. I need a copy for the records", "copy"),
         ("playhouse", "jon", "copy my contract, I need one for the props cupboard", "copy"),
+        ("default", "zhou", "copy my contract, I need a copy for the contract file", "copy"),
+        ("playhouse", "ann", "copy my agreement. I need one for the rota folder", "copy"),
     ],
 )
 def test_a_purpose_after_the_product_is_no_recipient(
@@ -126,13 +128,35 @@ async def test_the_copy_for_the_file_reaches_the_requester() -> None:
             "oona",
             "tape_measure",
         ),
+        (
+            "playhouse",
+            "oona",
+            "bring me Ann's torch... sorry I meant Dev's, Ann's using hers",
+            "dev",
+            "torch",
+        ),
+        (
+            "playhouse",
+            "oona",
+            "fetch Ann's torch for me... no wait, Jon's, Ann has to keep hers",
+            "jon",
+            "torch",
+        ),
+        (
+            "playhouse",
+            "oona",
+            "bring me Ann's torch.. sorry, meant Dev's torch - Ann needs hers today",
+            "dev",
+            "torch",
+        ),
     ],
 )
 def test_the_corrected_owner_is_asked_and_the_requester_gets_it(
     office: str, who: str, text: str, owner: str, item: str
 ) -> None:
     """Only the corrected item is fetched, for the requester; the person of the reason is
-    neither a recipient nor an owner asked."""
+    neither a recipient nor an owner asked (also when their name alone could mean two
+    people: "Ann" or Roseanne, called "Anne": the reason's person is only context)."""
     assert _tasks(office, text, who) == [("transfer", item, owner, who)]
 
 
@@ -207,8 +231,8 @@ def test_the_answer_says_what_was_told_with_its_verb_agreeing() -> None:
             ("transfer", "torch", None, "oona"),
         ),
         (
-            "Dev's torch is in the props cupboard, could you bring it to Ann",
-            ("transfer", "torch", "dev", "ann"),
+            "Jonathan's lanyard is in the props cupboard, could you bring it to Roseanne",
+            ("transfer", "lanyard", "jonathan", "roseanne"),
         ),
         ("fyi my contract is on the copier, please copy it", ("copy", "contract", "oona", "oona")),
     ],

@@ -72,8 +72,9 @@ def modifiers(
             in_purpose = True  # "..., as my headlamp is dying": a reason said as a statement
             out.add(m.start)
             continue
-        if _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
-            out.add(m.start)
+        compound = n > 0 and mentions[n - 1].start in out and mentions[n - 1].end == m.start
+        if _time_phrase(tokens, m) or (head_seen and (_modifier_phrase(tokens, m) or compound)):
+            out.add(m.start)  # "a copy for the contract file": the whole noun is the purpose
         elif _container(tokens, mentions, n, sourced):
             out.add(m.start)
         else:

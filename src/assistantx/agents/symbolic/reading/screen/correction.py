@@ -15,7 +15,7 @@ from assistantx.core.task_schema import Evidence
 _CORRECTION = re.compile(
     r"(?:[,;.!?]|\s[-–—]+)\s*"
     r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|no(?=[,!.]))\b"
-    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b)[,:]?\s*",
+    r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?|i\s+mean[t]?\b)[,:]?\s*",
     re.IGNORECASE,
 )
 
@@ -30,7 +30,7 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     before, after = text[: match.start()], text[match.end() :]
     # the correction ends at its sentence's end or at a comma: what follows is said beside it
     # ("... I meant Mao's seal, Wang needs hers today": the reason, read as a piece of its own)
-    fix = re.split(r"[,.!?;\n]", after, maxsplit=1)[0]
+    fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
     # "..., sorry, his laser, not the ruler": what is rejected after it says which one
@@ -42,7 +42,8 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
     if len(mentions) == 2 and _same_item_again(terms, mentions, before):
         mentions = mentions[:1]  # "I meant Mao's seal": the owner is what is corrected
-    if len(mentions) != 1 or len(mentions[0].ids) != 1:
+    # a name several people may have is kept as said: the reader asks whom it means later
+    if len(mentions) != 1 or (len(mentions[0].ids) != 1 and mentions[0].kind != "person"):
         return text, []
     new = mentions[0]
     names = spellings(terms, new.kind, before)

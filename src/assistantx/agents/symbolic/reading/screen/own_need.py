@@ -13,7 +13,9 @@ from assistantx.core import language
 # The possessive pronouns that stand for the subject's own item with no noun after them.
 _OWN = frozenset({"hers", "his", "theirs"})
 _OWN_BEFORE = frozenset({"her", "his", "their"})  # "her own"
-_AUXILIARIES = frozenset({"is", "was", "will", "ll", "s", "still", "really", "also", "does"})
+_AUXILIARIES = frozenset(
+    {"is", "was", "will", "ll", "s", "still", "really", "also", "does", "has", "have", "to", "got"}
+)
 _OWN_USE = frozenset({"need", "want", "use", "keep"})
 
 
@@ -26,21 +28,27 @@ def own_need(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         if tokens[mentions[k].start].word not in terms.en.fact_openers:
             return None  # only "as", "since", "because", "so" ... before the subject
         k += 1
-    if k >= len(mentions) or mentions[k].kind != "person" or len(mentions[k].ids) != 1:
-        return None
+    if k >= len(mentions) or mentions[k].kind != "person":
+        return None  # whoever it is (also a name asked about): the reason's person is context
     subject = mentions[k]
-    if subject.possessive or subject.ids[0] == requester:
+    if requester in subject.ids:
         return None
     rest = [t.word for t in tokens[subject.end :]]
-    n = 0
-    while n < len(rest) and rest[n] in _AUXILIARIES:
-        n += 1
-    if n >= len(rest) or not language.verb_lemmas(rest[n]) & _OWN_USE:
+    at = next((n for n, w in enumerate(rest[:6]) if _own_at(rest, n)), None)
+    if at is None or not at:
         return None
-    own = rest[n + 1 : n + 3]
-    if not own or not (own[0] in _OWN or (own[0] in _OWN_BEFORE and own[1:] == ["own"])):
-        return None
+    verbs = [w for w in rest[:at] if language.verb_lemmas(w) & _OWN_USE]
+    if not verbs or not all(w in _AUXILIARIES or w in verbs for w in rest[:at]):
+        return None  # "Ann needs hers", "Ann's using hers", "Ann has to keep hers"
+    if subject.possessive and rest[0] not in verbs:
+        return None  # "Ann's torch ...": whose item, not "Ann is"
     if any(m.kind == "item" for m in mentions[k + 1 :]):
         return None  # "Ann needs his torch": whose item is meant is read on
-    name = terms.office.person(subject.ids[0]).name
-    return Finding("statement", piece, f"a reason: {name} needs their own")
+    return Finding("statement", piece, "a reason: a colleague needs their own")
+
+
+def _own_at(words: list[str], n: int) -> bool:
+    """ "hers", "his", "theirs", "her own" at ``n`` with no noun after it."""
+    if words[n] in _OWN_BEFORE and words[n + 1 : n + 2] == ["own"]:
+        return True
+    return words[n] in _OWN and (n + 1 >= len(words) or words[n + 1] != "own")
