@@ -294,6 +294,11 @@ class Office(_Model):
         """The office's electronic file type (what is forwarded and printed)."""
         return next((t.id for t in self.item_types if t.electronic), None)
 
+    def file_of(self, person: str) -> str:
+        """The item id of ``person``'s file, whatever this office calls its electronic type
+        ("rota:ann", "log:bram"; ``file:…`` where the office has none)."""
+        return f"{self.file_type() or 'file'}:{person}"
+
     # -- items owned by nobody ------------------------------------------------------------
     def is_person(self, person_id: str) -> bool:
         try:

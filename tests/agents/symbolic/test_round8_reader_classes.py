@@ -80,6 +80,22 @@ async def test_the_copy_for_the_file_reaches_the_requester() -> None:
     assert run.sim.world.check({"holds": ["zhou", "copy:zhou"]})
 
 
+async def test_a_printout_for_the_noticeboard_reaches_the_requester() -> None:
+    """The playhouse's files are rotas, not "file"s: the requester's rota, sent along with
+    the request, is forwarded to the copier's keeper and the printout comes back."""
+    text = "print my rota, I need a printout for the noticeboard"
+    run = await run_instruction(_office("playhouse"), "ann", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["ann", "printout:ann"]})
+
+
+async def test_a_file_of_another_name_is_passed_on() -> None:
+    run = await run_instruction(_office("playhouse"), "ann", "send my rota to Dev")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    forwarded = [r.action for r in run.stm.trace.actions() if r.action.type == "forward_file"]
+    assert [(a.target, a.file) for a in forwarded] == [("dev", "rota:ann")]  # type: ignore[attr-defined]
+
+
 # -- 2. a correction after an ellipsis, with the corrected-away person in a reason ---------
 
 
