@@ -402,3 +402,21 @@ async def test_the_question_comes_before_anything_moves() -> None:
     assert "Sun Li" in asked[0].question and "Lee Ming" in asked[0].question  # type: ignore[attr-defined]
     assert not run.sim.world.check({"holds": ["sun", "document:mao"]})
     assert not run.sim.world.check({"holds": ["lee", "document:mao"]})
+
+
+@pytest.mark.parametrize(
+    ("office", "text", "said", "who"),
+    [
+        ("playhouse", "fax this to the council's planning office", "fax", "oona"),
+        ("default", "heat this up", "for me to heat", "lee"),
+        ("default", "could you sign it?", "to be signed", "lee"),
+    ],
+)
+def test_which_item_is_asked_in_the_offices_words(
+    office: str, text: str, said: str, who: str
+) -> None:
+    """With no item to act on, the question names the service as the office calls it, never
+    the task kind behind it (a fax is not "the heat request")."""
+    frame = _parser(office).parse(text, who)
+    assert frame.question is not None and said in frame.question
+    assert "request" not in frame.question and "heat" not in frame.question.replace(said, "")
