@@ -335,6 +335,22 @@ def test_to_a_place_then_a_verb_is_still_a_purpose() -> None:
     ]
 
 
+@pytest.mark.parametrize(
+    ("text", "here"),
+    [
+        ("fax my contract to the green room", "The green room"),
+        ("courier my contract to the Company", "The Company group"),
+        ("send my contract to the props cupboard by courier", "The props cupboard"),
+    ],
+)
+def test_a_place_or_group_of_the_office_is_no_destination_outside(text: str, here: str) -> None:
+    """A send-out service sends things out of the office: a place, facility or group of
+    the office after "to" is asked about, never sent to nor read as somewhere outside."""
+    frame = _parser("playhouse").parse(text, "oona")
+    assert frame.tasks == [] and frame.question is not None
+    assert frame.question.startswith(f"{here} is here in the office")
+
+
 async def test_the_courier_to_an_outside_office_runs_to_done() -> None:
     text = "send my loan agreement to the arts council by courier"
     run = await run_instruction(_office("playhouse"), "oona", text)
