@@ -351,6 +351,22 @@ def test_a_place_or_group_of_the_office_is_no_destination_outside(text: str, her
     assert frame.question.startswith(f"{here} is here in the office")
 
 
+@pytest.mark.parametrize(
+    ("answer", "destination"),
+    [
+        ("the county arts office", "the county arts office"),
+        ("to the Lyric Theatre", "the Lyric Theatre"),
+    ],
+)
+def test_the_answer_names_the_place_outside(answer: str, destination: str) -> None:
+    parser = _parser("playhouse")
+    frame = parser.parse_with_answers("fax my contract to the green room", "oona", [answer])
+    assert frame.question is None
+    assert [(t.item, t.operation, t.destination) for t in frame.tasks] == [
+        ("contract", "fax", destination)
+    ]
+
+
 async def test_the_courier_to_an_outside_office_runs_to_done() -> None:
     text = "send my loan agreement to the arts council by courier"
     run = await run_instruction(_office("playhouse"), "oona", text)

@@ -36,6 +36,9 @@ _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
+# The question when a send-out service's destination is a place or group of the office; the
+# answer names the place outside instead (``InstructionParser.parse_with_answers``).
+HERE_NOT_OUTSIDE = " is here in the office, and I "
 
 
 @dataclass(frozen=True)
@@ -124,7 +127,7 @@ class MentionReader:
             name = f"the {here[0].text}"
         verb = self.office.operation(outside.operation).name
         return (
-            f"{name[:1].upper()}{name[1:]} is here in the office, and I {verb} things to "
+            f"{name[:1].upper()}{name[1:]}{HERE_NOT_OUTSIDE}{verb} things to "
             f"places outside it. Where should I {verb} it to?"
         )
 
