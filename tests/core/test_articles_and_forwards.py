@@ -8,7 +8,7 @@ import pytest
 from assistantx.agents.symbolic.roles import Role, Roles
 from assistantx.core.actions import ForwardFile
 from assistantx.core.office import load_office
-from assistantx.core.wording import a_thing
+from assistantx.core.wording import a_thing, is_are
 from assistantx.sim.session import SimSession
 
 
@@ -48,3 +48,32 @@ async def test_a_file_forwarded_from_its_owner_names_them_once() -> None:
         assert (
             s.sim.messenger.sent[-1].text == "Forwarding Lee Ming's electronic file from Mao Jun."
         )
+
+
+@pytest.mark.parametrize(
+    ("name", "mass", "said"),
+    [
+        ("handling gloves", False, "some handling gloves"),
+        ("wipes", False, "some wipes"),
+        ("sticky notes", False, "some sticky notes"),
+        ("glue", False, "some glue"),
+        ("stationery", False, "some stationery"),
+        ("gaffer tape", True, "some gaffer tape"),
+        ("gaffer tape", False, "a gaffer tape"),
+        ("battery", False, "a battery"),
+        ("seal", False, "a seal"),
+        ("pair of scissors", False, "a pair of scissors"),
+    ],
+)
+def test_a_plural_or_stuff_takes_some(name: str, mass: bool, said: str) -> None:
+    """The morphology library says which nouns are plural ("gloves" is a form of glove) or
+    only stuff ("glue" has no other plural); a noun used both ways ("tape") is stuff when the
+    office says its item is (``mass``)."""
+    assert a_thing(name, mass=mass) == said
+
+
+@pytest.mark.parametrize(
+    ("name", "verb"), [("gloves", "are"), ("scissors", "are"), ("tape", "is"), ("seal", "is")]
+)
+def test_the_verb_agrees_with_the_item(name: str, verb: str) -> None:
+    assert is_are(name) == verb

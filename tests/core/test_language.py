@@ -100,3 +100,22 @@ def test_folding_is_case_and_diacritics_blind() -> None:
 def test_finite_verbs() -> None:
     assert language.is_finite_verb("hurt") and language.is_finite_verb("needs")
     assert not language.is_finite_verb("deck") and not language.is_finite_verb("period")
+
+
+def test_spellings_said_alike_and_spelled_nearly_are_found() -> None:
+    """The pronouncing dictionary says "li" and "lee", "jon" and "john", "ann" and "anne"
+    alike; "lei" and "lin" are said differently; a word it lacks has no match."""
+    alike = language.sound_alike_spellings(
+        ["li", "lee", "lei", "lin", "jon", "john", "ann", "anne"]
+    )
+    assert alike["li"] == {"lee"} and alike["lee"] == {"li"}
+    assert alike["jon"] == {"john"} and alike["ann"] == {"anne"}
+    assert "lei" not in alike and "lin" not in alike
+    assert language.sound_alike_spellings(["zxqv", "li"]) == {}
+
+
+def test_plural_and_mass_nouns_come_from_the_dictionary() -> None:
+    assert language.is_plural_noun("handling gloves") and language.is_plural_noun("scissors")
+    assert not language.is_plural_noun("glass") and not language.is_plural_noun("gaffer tape")
+    assert language.is_mass_noun("glue") and language.is_mass_noun("stationery")
+    assert not language.is_mass_noun("battery") and not language.is_mass_noun("gloves")

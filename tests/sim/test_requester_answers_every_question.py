@@ -137,7 +137,7 @@ ASKED = (
         "lee",
         "get it signed by Wang",
         ({"signed": ["document:lee", "wang"]}, {"holds": ["lee", "document:lee"]}),
-        "Which item do you mean? Please tell me what it is.",
+        "Which item do you mean to be signed?",
         "The document.",
     ),
     Asked(

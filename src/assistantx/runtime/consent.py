@@ -108,7 +108,7 @@ def _check_forward(office: Office, stm: ShortTermMemory, action: ForwardFile) ->
     """A file goes only to a party (the requester, its owner, the guard of a facility whose
     operation takes it, a person or group the requester named), and someone else's file only
     once its owner sent it themselves (sending it is their yes)."""
-    file = action.file or f"file:{action.source}"
+    file = action.file or office.file_of(action.source)
     item_type, _, owner = file.partition(":")
     target = action.target
     parties = {stm.requester, owner, *_facility_workers(office, item_type)}

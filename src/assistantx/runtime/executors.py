@@ -229,10 +229,10 @@ class Executor:
     async def _forward(
         self, stm: ShortTermMemory, action: ForwardFile, key: str
     ) -> tuple[bool, str, dict[str, object]]:
-        file = action.file or f"file:{action.source}"
+        file = action.file or self.ctx.office.file_of(action.source)
         have = set(stm.files_received.get(action.source, []))
         if action.source == stm.requester:
-            have.add(f"file:{stm.requester}")  # sent along with the instruction
+            have.add(self.ctx.office.file_of(stm.requester))  # sent along with the instruction
         if file not in have:
             return (
                 False,

@@ -90,7 +90,7 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     requests = mentioned_requests(world.office, text)
     wants_file = bool(electronic & set(named)) and FILE_KIND in requests
     if wants_file:
-        return Reply(person, "Sure, here is my file.", (f"file:{person}",))
+        return Reply(person, "Sure, here is my file.", (world.office.file_of(person),))
     service = [r for r in requests if r != FILE_KIND]
     if service:
         request = service[0]

@@ -134,7 +134,9 @@ def gather(stm: ShortTermMemory, office: Office) -> Evidence:
             ev.told.update(groups.get(action.contact, (action.contact,)))
         elif isinstance(action, ForwardFile) and result.ok:
             ev.told.update(groups.get(action.target, (action.target,)))
-            ev.forwarded.add((action.source, action.target, action.file or f"file:{action.source}"))
+            ev.forwarded.add(
+                (action.source, action.target, action.file or office.file_of(action.source))
+            )
         elif isinstance(action, Wait) and result.data.get("timed_out"):
             ev.timeouts.append(result.started_at)
         elif isinstance(action, WaitInPlace):

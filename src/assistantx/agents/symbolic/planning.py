@@ -388,7 +388,7 @@ class Planner:
                             beneficiary=t.recipient,
                         )
                     ]
-                phases = [Forward(owner, recipient, f"file:{owner}")]
+                phases = [Forward(owner, recipient, self.office.file_of(owner))]
         roles = [*self._consent(n, t, requester), *roles]
         confirms: list[Phase] = [Confirm(r) for r in roles if r.confirm]
         return CompiledTask(t, roles, [*confirms, *phases])
@@ -628,7 +628,8 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     if task.owner is not None and task.item and office.is_supply(f"{task.item}:{task.owner}"):
         whose = item_phrase(office, f"{task.item}:{task.owner}")  # owned by nobody
     else:
-        whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item)
+        stuff = bool(task.item) and office.item_type(task.item or "").mass
+        whose = f"{name(task.owner)}'s {item}" if task.owner else a_thing(item, mass=stuff)
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     op = operation_of(office, task)

@@ -318,7 +318,9 @@ class Roles:
                 if turns and ev.stance_of(question, person) == "yes":
                     said.append((turns[-1].time, person))
         if role.kind == "send_file":  # the file itself is the yes
-            said += [(0.0, p) for p in people if f"file:{p}" in ev.files_received.get(p, [])]
+            said += [
+                (0.0, p) for p in people if self.office.file_of(p) in ev.files_received.get(p, [])
+            ]
         return [p for _, p in sorted(said)]
 
     def _exclusion(
@@ -342,7 +344,7 @@ class Roles:
                 role.kind == "send_file"
                 and said == "yes"
                 and ev.expired(q)
-                and (f"file:{person}" not in ev.files_received.get(person, []))
+                and (self.office.file_of(person) not in ev.files_received.get(person, []))
             ):
                 return "did not send the file"
             return None

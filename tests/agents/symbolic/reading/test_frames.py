@@ -69,4 +69,4 @@ def test_a_service_with_no_item_asks_which_item_in_plain_words(
     framed = frame(text)
     # the person reads the question: never a task kind's id ("the heat request")
     assert framed.tasks == []
-    assert framed.question == "Which item do you mean? Please tell me what it is."
+    assert framed.question == "Which item do you mean for me to heat?"

@@ -13,6 +13,9 @@ clause say when, what for, or where, and must never become tasks of their own:
 - a statement about an owned item after the object: "a radio *as my headlamp is dying*";
 - a container or measure word before "of": "a *cup of* coffee" is coffee;
 - an item word right before another ("the *draft* contract"): the last noun is the head.
+- a purpose phrase after a product or a pronoun that is the object: "I need a copy *for the
+  file*", "I need one *for the rota*" (the product's noun, "one" or "it" is what is asked
+  for; the item word after "for the" says what it is for, never a second object).
 
 Objects joined by "and", "or" or commas ("a stapler and a coffee", "scissors, a pen and some
 wipes") are all objects of the same verb. (An item word used as a verb, "book me a taxi", was
@@ -25,7 +28,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english
+from assistantx.core import english, language
 
 # Prepositions of time: a bare noun after one is a time phrase ("over lunch", "at lunch").
 TIME_PREPOSITIONS = english.words("time_prepositions")
@@ -39,6 +42,9 @@ REASON_CONJUNCTIONS = english.words("reason_conjunctions")
 STATE_VERBS = english.words("state_verbs")
 # The words before a file type that name a product's format ("to PDF", "into a PDF").
 _FORMAT_LINKS = frozenset({"to", "into", "as"})
+_ARTICLES = frozenset({"a", "an", "another"})
+# The task kinds whose work is a product named like the service ("a copy", "a print").
+_PRODUCT_KINDS = frozenset({"print", "copy"})
 
 
 def modifiers(
@@ -60,12 +66,15 @@ def modifiers(
             if m.kind in ("item", "cue"):
                 out.add(m.start)
             continue
-        if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(mentions, n):
+        if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(tokens, mentions, n):
             in_purpose = True
             continue
         asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
         if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and asked:
             in_purpose = True  # "... because there's no money for new stopwatches": context
+            continue
+        if asked and _object_word(tokens, m):
+            head_seen = True  # "I need a copy for the file": the copy is what is asked for
             continue
         if m.kind != "item":
             continue
@@ -73,12 +82,13 @@ def modifiers(
             in_purpose = True  # "..., as my headlamp is dying": a reason said as a statement
             out.add(m.start)
             continue
+        compound = n > 0 and mentions[n - 1].start in out and mentions[n - 1].end == m.start
         if making and m.id in formats and _after(tokens, m, _FORMAT_LINKS):
             out.add(m.start)  # "to PDF", "into a pdf", "as a PDF"
         elif _compound_modifier(mentions, n):
             out.add(m.start)  # "my draft contract": the head is the last noun, "contract"
-        elif _time_phrase(tokens, m) or (head_seen and _modifier_phrase(tokens, m)):
-            out.add(m.start)
+        elif _time_phrase(tokens, m) or (head_seen and (_modifier_phrase(tokens, m) or compound)):
+            out.add(m.start)  # "a copy for the contract file": the whole noun is the purpose
         elif _container(tokens, mentions, n, sourced):
             out.add(m.start)
         else:
@@ -101,15 +111,28 @@ def _compound_modifier(mentions: Sequence[Mention], n: int) -> bool:
     return nxt is not None and nxt.kind == "item" and nxt.start == mentions[n].end
 
 
-def _purpose(mentions: Sequence[Mention], n: int) -> bool:
-    """ "to" + a verb: a purpose clause, unless the verb is a task word without its own object."""
+def _object_word(tokens: Sequence[Token], m: Mention) -> bool:
+    """A request's object that is no item of its own: the name of a service's product used
+    as a noun after an article ("a copy", "a print"), or "one" standing for the item."""
+    if m.kind == "cue":
+        after_article = m.start > 0 and tokens[m.start - 1].word in _ARTICLES
+        return after_article and bool(m.ids) and set(m.ids) <= _PRODUCT_KINDS
+    return m.kind == "word" and m.ids[0] == "one"
+
+
+def _purpose(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """ "to" + a verb: a purpose clause, unless the verb is a task word without its own object
+    ("to the arts council": an article after "to" opens a place, not a verb)."""
     nxt = mentions[n + 1] if n + 1 < len(mentions) else None
-    if nxt is None:
+    after = mentions[n].end
+    if nxt is None or (after < len(tokens) and tokens[after].word in DETERMINERS):
         return False
     if nxt.kind == "word" and nxt.ids[0] == "be":
         return False  # "my plan needs to be bound": a passive, the service asked for
     if nxt.kind == "word":
-        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit()
+        # "to Hartwell & Co": a capitalized word that is no verb names a place, not a purpose
+        named = nxt.text[:1].isupper() and not language.verb_lemmas(nxt.ids[0])
+        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit() and not named
     if nxt.kind == "cue":
         return any(m.kind == "item" for m in mentions[n + 2 :])
     return False

@@ -20,6 +20,8 @@ from assistantx.core import language
 _END_MARKS = frozenset(".!?;,\n")
 _END_WORDS = frozenset({"please", "pls", "thanks", "thank", "thx", "asap", "today", "now"})
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
+# The words that name a service as the means of sending ("send it to the council *by* courier").
+_MEANS = frozenset({"by", "via"})
 
 
 @dataclass(frozen=True)
@@ -42,6 +44,7 @@ class Outside:
     start: int | None  # token span of the destination (after "to"); None: none named
     end: int | None
     phrase: str | None  # the destination in the requester's words
+    means: bool = False  # the service named as the means of sending ("by courier")
 
     def holds(self, token: int) -> bool:
         """Whether token index ``token`` is part of the destination."""
@@ -84,11 +87,15 @@ def find_outside(
         if words[k] == "to":
             to = k
             break
+    means = verb_start - 1 if verb_start and words[verb_start - 1] in _MEANS else None
+    if to is None and means is not None:
+        to = _to_before(words, gaps, means)  # "send my agreement to the council by courier"
     start = end = None
     phrase = None
     if to is not None and to + 1 < len(tokens):
         start = end = to + 1
-        while end < len(tokens) and not (end > start and _ends(gaps[end])):
+        stop = means if means is not None and means > to else len(tokens)
+        while end < stop and not (end > start and _ends(gaps[end])):
             if words[end] in _END_WORDS:
                 break
             end += 1
@@ -100,7 +107,18 @@ def find_outside(
         phrase = said if said and len(said) <= _LONGEST else None
         if phrase is None:
             start = end = None
-    return Outside(operation, verb_start, verb_end, start, end, phrase)
+    return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
+
+
+def _to_before(words: Sequence[str], gaps: Sequence[str], means: int) -> int | None:
+    """The "to" before a service named as the means of sending ("to the arts council *by
+    courier*"), in the same clause."""
+    for k in range(means - 1, -1, -1):
+        if _ends(gaps[k + 1]):
+            return None
+        if words[k] == "to":
+            return k
+    return None
 
 
 def _ends(gap: str) -> bool:

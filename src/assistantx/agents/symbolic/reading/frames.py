@@ -33,12 +33,20 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
-from assistantx.core.task_schema import Task, TaskFrame
+from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
 
 _BREAK_WORDS = english.words("clause_breaks")
 _JOIN_WORDS = english.words("clause_joins")
 _SKIP_AFTER_JOIN = english.words("skip_after_join")
 
+
+# The person-to-person kinds' words for "which item?" (the office's services use their names).
+_ASKED_TO = {
+    "transfer": "for me to bring",
+    "send_file": "for me to pass on",
+    "sign": "to be signed",
+    "seal": "to be stamped",
+}
 
 NOT_UNDERSTOOD = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
@@ -209,11 +217,14 @@ class FrameReader:
             (task.kind, task_kinds.tool_type(task.kind, self.office)),
         }
 
-    def _which_item(self, task: Task) -> str:
-        """Ask for a task's missing item in the operation's own word, never a task kind's id."""
-        if task.operation is not None:
-            return f"Which item should I {self.office.operation(task.operation).name}?"
-        return "Which item do you mean? Please tell me what it is."
+    def _asked_to(self, kind: str) -> str:
+        """What the requester asked for, in the office's words: "for me to fax or courier"
+        (its operations of the kind's shape), never the task kind's internal name."""
+        shape = next((s for s, k in SHAPE_KIND.items() if k == kind), None)
+        names = [op.name for op in self.office.with_shape(shape)] if shape else []
+        if names:
+            return f"for me to {' or '.join(dict.fromkeys(names))}"
+        return _ASKED_TO.get(kind, "")
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
@@ -221,7 +232,8 @@ class FrameReader:
         for t in tasks:
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:
-                return self._which_item(t)
+                asked = self._asked_to(t.kind)
+                return f"Which item do you mean{' ' if asked else ''}{asked}?"
             done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
             if done_by_one and (t.actor is None or t.actor == requester):
                 return f"Who should do that with your {name}? Please tell me their name."

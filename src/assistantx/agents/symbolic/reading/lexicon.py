@@ -120,6 +120,8 @@ class Lexicon:
     titled: dict[str, set[str]] = field(default_factory=dict)
     # the reading the requester chose for a name word they were asked about (word → reading)
     chosen: dict[str, Reading] = field(default_factory=dict)
+    # one-word names said like another person's name and spelled nearly so ("li": "lee")
+    sound_alike: dict[str, frozenset[str]] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -172,6 +174,8 @@ class Lexicon:
                 key = key_of(name)
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
+        one_word = {k for k in (*lex.people, *lex.name_words) if " " not in k}
+        lex.sound_alike = language.sound_alike_spellings(one_word)
         phrases = [*lex.people, *lex.items, *lex.facilities, *lex.places]
         lex.max_words = max(len(p.split()) for p in phrases)
         words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
@@ -196,13 +200,21 @@ class Lexicon:
         """Who a one-word name means: after a title, those the office calls so with a title
         ("Dr Kim"); else those it calls so bare ("Kim"); else everyone with that name word
         ("Yang": Yang Lei, and Liu Yang's given name), to be settled by the words around it
-        or asked."""
+        or asked. A name word said the same as another person's name and spelled nearly so
+        may mean either ("Li": Sun Li, or Lee Ming, called "Lee"); a bare alias is how the
+        office says that person is called, and wins."""
         prev = tokens[i - 1].word if i > 0 else ""
         if prev in TITLES and prev not in ("a", "an", "the", "our") and word in self.titled:
             return self.titled[word]
         if word in self.bare:
             return self.bare[word]
-        return self.people.get(word, set()) | self.name_words.get(word, set())
+        found = self.people.get(word, set()) | self.name_words.get(word, set())
+        alike = {
+            p
+            for other in self.sound_alike.get(word, ())
+            for p in self.people.get(other, set()) | self.name_words.get(other, set())
+        }
+        return found | alike if found else found
 
     # -- stage 2: tokens → the office's words ----------------------------------------------
     def read(self, text: str) -> Lexed:
@@ -290,6 +302,10 @@ class Lexicon:
                 continue
             owners = set(self.office.owners_of(item))
             candidates = tuple(i for i in m.ids if i in owners)
+            word = tokens[m.start].word
+            spelled = self.people.get(word, set()) | self.name_words.get(word, set())
+            if candidates and spelled and not set(candidates) & spelled:
+                continue  # "Li's book" where only Lee owns one: the spelling says Sun Li; ask
             if len(candidates) == 1:
                 out[n] = Mention("person", m.start, m.end, candidates, m.possessive, m.text)
         return out

@@ -10,6 +10,7 @@ from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflection
 from assistantx.core import language
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
+from assistantx.core.wording import a_thing
 from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
@@ -183,10 +184,7 @@ class OperationChooser:
             for op in ops
             if op.input is not None
         ]
-        return (
-            f"Sorry, I can't {asked} {_article(thing)} {thing} here: I can only "
-            f"{' and '.join(fits)}."
-        )
+        return f"Sorry, I can't {asked} {a_thing(thing)} here: I can only {' and '.join(fits)}."
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
@@ -212,7 +210,3 @@ def _colleague(lexed: Lexed, outside: Outside | None) -> str | None:
     if outside is None or outside.start is None or outside.end is None:
         return None
     return colleague_named(lexed, outside.start, outside.end)
-
-
-def _article(noun: str) -> str:
-    return "an" if noun[:1].lower() in "aeiou" else "a"

@@ -53,7 +53,7 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
-from assistantx.agents.symbolic.reading.readings import MentionReader
+from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.unknown_items import unknown_item
@@ -137,6 +137,15 @@ class InstructionParser:
                         decline="OK, I won't do anything, then.",
                         decline_outcome="done",
                     )
+            if frame.question is not None and HERE_NOT_OUTSIDE in frame.question:
+                # "fax it to the green room" → "Where should I fax it to?" → "the bank": the
+                # answer takes the place of the office's own place, read by the same stage
+                said = self.readings.read(self.lex.read(text)).outside
+                place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
+                if said is not None and said.phrase and said.phrase in text:
+                    text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
+                    frame = self.parse(text, requester)
+                    continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request

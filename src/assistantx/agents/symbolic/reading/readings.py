@@ -36,6 +36,9 @@ _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
+# The question when a send-out service's destination is a place or group of the office; the
+# answer names the place outside instead (``InstructionParser.parse_with_answers``).
+HERE_NOT_OUTSIDE = " is here in the office, and I "
 
 
 @dataclass(frozen=True)
@@ -81,15 +84,51 @@ class MentionReader:
         spaces = gaps(lexed.text, tokens)
         outside = find_outside(tokens, spaces, self._sends_out)
         if outside is not None and not any(
-            m.kind == "cue" and m.start == outside.verb_start for m in mentions
+            m.start == outside.verb_start
+            and (m.kind == "cue" or (m.kind == "facility" and outside.means))
+            for m in mentions
         ):
-            outside = None  # "a courier bag": the service's word used as a noun, not its verb
+            # "a courier bag": the service's word used as a noun, not its verb; but "by
+            # courier" names the service as the means, also where a facility is so called
+            outside = None
+        inside = self._inside(tokens, mentions, outside) if outside is not None else None
         if outside is not None:
             mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
-        doubts = self._doubts(tokens, settled, outside)
+        doubts = ([inside] if inside else []) + self._doubts(tokens, settled, outside)
         return Readings(
             lexed.text, tokens, tuple(settled), spaces, doubts[0] if doubts else None, outside
+        )
+
+    def _inside(
+        self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside
+    ) -> str | None:
+        """ "fax my contract to the green room", "courier it to the Company": a destination
+        that is a place, a facility or a group of this office is no place outside; the
+        service sends things out, so ask where (a colleague's name is asked about apart)."""
+        if outside.start is None or outside.end is None:
+            return None
+        said = [t.word for t in tokens[outside.start : outside.end]]
+        while said and said[0] in _ARTICLES | {"our"}:
+            said = said[1:]
+        phrase = " ".join(said)
+        groups = {language.fold(g.name): g.name for g in self.office.groups}
+        if phrase in groups:
+            name = f"the {groups[phrase]} group"
+        else:
+            here = [
+                m
+                for m in mentions
+                if m.kind in ("place", "facility") and outside.holds(m.start)
+                if m.end == outside.end and m.end - m.start == len(said)
+            ]
+            if not here:
+                return None
+            name = f"the {here[0].text}"
+        verb = self.office.operation(outside.operation).name
+        return (
+            f"{name[:1].upper()}{name[1:]}{HERE_NOT_OUTSIDE}{verb} things to "
+            f"places outside it. Where should I {verb} it to?"
         )
 
     def _sent_out(

@@ -18,8 +18,10 @@ def test_the_rules_in_priority_order() -> None:
         "negated",
         "destructive",
         "fact",
+        "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
         "question",
         "statement",
+        "statement",  # where an item is ("fyi the tape's in the cupboard")
         "unsupported",
     ]
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
@@ -17,7 +18,7 @@ from assistantx.core.task_schema import Evidence
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
     r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|no(?=[,!.]))\b"
-    r"[,!.]?\s*(?:i\s+mean[t]?\b)?|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
+    r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
     r"[,:]?\s*",
     re.IGNORECASE,
 )
@@ -42,7 +43,9 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if match is None:
         return text, []
     before, after = text[: match.start()], text[match.end() :]
-    fix = re.split(r"[.!?;\n]", after, maxsplit=1)[0]
+    # the correction ends at its sentence's end or at a comma: what follows is said beside it
+    # ("... I meant Mao's seal, Wang needs hers today": the reason, read as a piece of its own)
+    fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
     if _opens_request(terms, tokens):
@@ -63,7 +66,10 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
-    if len(mentions) != 1 or len(mentions[0].ids) != 1:
+    if len(mentions) == 2 and _same_item_again(terms, mentions, before):
+        mentions = mentions[:1]  # "I meant Mao's seal": the owner is what is corrected
+    # a name several people may have is kept as said: the reader asks whom it means later
+    if len(mentions) != 1 or (len(mentions[0].ids) != 1 and mentions[0].kind != "person"):
         return text, []
     new = mentions[0]
     names = spellings(terms, new.kind, before)
@@ -92,6 +98,16 @@ def _opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:
         words[0] in terms.lex.cue_words or words[0] in terms.lex.operation_words
     )
     return opens and terms.acts.request(words)
+
+
+def _same_item_again(terms: Terms, mentions: list[Mention], before: str) -> bool:
+    """ "bring me Ann's torch... sorry, I meant Dev's torch": a person's possessive and the
+    item already asked for, said again with the new owner."""
+    whose, item = mentions
+    if whose.kind != "person" or not whose.possessive or item.kind != "item":
+        return False
+    said = {i for m in terms.lex.scan(terms.lex.tokens(before)) if m.kind == "item" for i in m.ids}
+    return set(item.ids) <= said
 
 
 def spellings(terms: Terms, kind: str, text: str) -> set[str]:

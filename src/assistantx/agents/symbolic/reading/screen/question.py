@@ -8,7 +8,7 @@ from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
-from assistantx.core import language
+from assistantx.core import wording
 
 
 def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -59,9 +59,7 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
     names = [terms.office.person(o).name for o in owners[:4]]
     makers = [f for f in terms.office.facilities if item in f.products]
     whose = ""
-    a_thing = f"{article(t.name)} {t.name}"
-    if language.plural(t.name) == t.name:
-        a_thing = f"some {t.name}"  # "scissors"
+    a_thing = wording.a_thing(t.name, mass=t.mass)  # "some gloves"
     if says_mine(piece.lexed, item):  # "did anyone find my umbrella?"
         answer = f"I don't know where your {t.name} is; I can't see it from here."
         return Finding("question", piece, "a question, answered in words", message=answer)

@@ -12,12 +12,14 @@ from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
 
@@ -34,7 +36,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("negated", negated),
     ("destructive", destructive),
     ("fact", fact),
+    ("statement", own_need),
     ("question", question),
     ("statement", statement),
+    ("statement", whereabouts),
     ("unsupported", unsupported),
 )
