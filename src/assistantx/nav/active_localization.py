@@ -25,12 +25,13 @@ has gathered where the scan does not fit is spread over the map again (``resprea
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 import numpy as np
 
 from assistantx.nav.amcl import (
+    AmclParams,
     ParticleFilter,
     PoseEstimate,
     cluster_labels,
@@ -83,6 +84,11 @@ class ExploreParams:
     centred_yaw_rad: float = math.radians(3.0)
     recentre_std_m: float = 0.05
     recentre_yaw_std_rad: float = math.radians(2.0)
+    # Once the cloud holds one place (no rival, the scan fitting there) the tempering that
+    # kept look-alike places alive has done its work; the beam product's exponent is raised
+    # to this (annealing), so a cloud stretched along an aisle longer than the LiDAR's reach
+    # tightens on what the scans do tell instead of staying as wide as the odometry leaves it.
+    one_place_exponent: float = 0.25
 
 
 class Body(Protocol):
@@ -209,11 +215,20 @@ class ActiveLocalizer:
     recentres: int = field(init=False, default=0)
     _settled: int = field(init=False, default=0)
     _misfit: int = field(init=False, default=0)
+    _one_place: bool = field(init=False, default=False)
+    _tempered_params: AmclParams | None = field(init=False, default=None)
     _last_scan: LaserScan | None = field(init=False, default=None)
     _visited: list[FloatArray] = field(init=False, default_factory=list)
     rivals: RivalPlaces = field(init=False, default_factory=RivalPlaces)
 
     def run(self, *, start_global: bool = True) -> LocalizationOutcome:
+        tempered = self._tempered_params = self.pf.params
+        try:
+            return self._run(start_global)
+        finally:  # the caller's filter tracks on with its own parameters
+            self.pf.params = tempered
+
+    def _run(self, start_global: bool) -> LocalizationOutcome:
         if start_global:
             self.pf.global_localization(self.body.scan(), self.params.oversample)
         self._visited = [self.body.odom_pose[:2].copy()]
@@ -294,6 +309,11 @@ class ActiveLocalizer:
         if not (force or self.pf.needs_update(odom)):
             return False
         scan = self.body.scan()
+        tempered = self._tempered_params or self.pf.params
+        exponent = max(tempered.beam_product_exponent, self.params.one_place_exponent)
+        self.pf.params = (
+            replace(tempered, beam_product_exponent=exponent) if self._one_place else tempered
+        )
         self.pf.update(odom, scan, force=True)
         self.updates += 1
         self._last_scan = scan
@@ -314,13 +334,18 @@ class ActiveLocalizer:
             )
             self.recentres += 1
         good = gathered and fits_well and unrivalled and centred
+        self._one_place = (
+            est.cluster_weight >= self.params.converged_share and fits_well and unrivalled
+        )
         self._settled = self._settled + 1 if good else 0
         self._misfit = self._misfit + 1 if gathered and not fits_well else 0
         if self._misfit >= self.params.respread_after_updates:
+            self.pf.params = self._tempered_params or self.pf.params
             self.pf.global_localization(scan, self.params.oversample)
             self.respreads += 1
             self._misfit = 0
             self.rivals = RivalPlaces(min_share=self.params.mode_share)
+            self._one_place = False
         return self._settled >= self.params.settle_updates
 
     def _outcome(self, localized: bool) -> LocalizationOutcome:
