@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -97,6 +98,29 @@ def test_pure_pursuit_reaches_the_goal_and_heading() -> None:
     assert base.odometer_m == pytest.approx(3.4, abs=0.3)
     # The odometry drifted, but only a little (alphas 0.005).
     assert 0 < math.hypot(*(base.odom_pose - base.true_pose)[:2]) < 0.2
+
+
+def test_pure_pursuit_drives_a_route_that_ends_where_it_starts() -> None:
+    # A 2 m x 1 m loop, back to its first point: the goal is where the robot stands, yet
+    # the route is to be driven round, not declared done at once.
+    rng = np.random.default_rng(5)
+    base = SimulatedBase(np.array([0.0, 0.0, 0.0]), rng)
+    corners = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0], [0.0, 0.0]])
+    path = np.vstack(
+        [np.linspace(a, b, 41)[:-1] for a, b in itertools.pairwise(corners)] + [corners[-1:]]
+    )
+    controller = PurePursuit(path, None, DriveParams())
+    farthest = 0.0
+    for _ in range(1000):
+        v, w, done = controller.command(base.true_pose)
+        if done:
+            break
+        base.step(v, w, 0.1)
+        farthest = max(farthest, float(base.true_pose[0]))
+    assert done
+    assert farthest > 1.7  # it went round
+    assert base.odometer_m == pytest.approx(6.0, abs=0.6)
+    assert math.hypot(*base.true_pose[:2]) <= 0.05
 
 
 def _room() -> OccupancyMap:

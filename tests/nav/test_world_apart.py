@@ -240,3 +240,21 @@ def test_amcl_holds_when_a_fifth_of_the_returns_hit_things_the_map_lacks() -> No
     errors = [math.dist(s.true_pose[:2], s.estimate[:2]) for s in nav.tracking]
     assert float(np.percentile(errors, 95)) <= 0.10
     assert nav.safety.collisions == 0
+
+
+def test_a_room_lined_with_boxes_the_map_lacks_is_not_a_lost_robot() -> None:
+    """Boxes stand along three walls of the west room, in front of them: half the beams
+    end on them, short of the map's walls, while the estimate is right. The robot drives
+    through to the east room (it used to stop there, saying the scan no longer matched the
+    map); a robot carried off still says so (tests/adapters/robot/test_navigator_robot.py)."""
+    grid = _corridor_map()
+    lining = [Box(x, y, 0.5, 0.5, "a box") for x in (1.2, 2.0, 2.8, 3.6) for y in (1.1, 4.9)]
+    lining += [Box(1.1, y, 0.5, 0.5, "a box") for y in (2.0, 3.0, 4.0)]
+    world = GroundTruth(grid, boxes=lining)
+    nav = Navigator(grid, np.array([2.5, 3.0, math.pi]), np.random.default_rng(2), world=world)
+    _drive(nav, 12.5, 3.0, 0.0)
+    assert _arrived(nav, 12.5, 3.0)
+    assert max(nav.unmapped_shares) > 0.5  # most returns were on the boxes for a while
+    errors = [math.dist(s.true_pose[:2], s.estimate[:2]) for s in nav.tracking]
+    assert max(errors) < 0.15
+    assert nav.safety.collisions == 0

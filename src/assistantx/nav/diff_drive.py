@@ -50,6 +50,14 @@ class PurePursuit:
     goal_yaw: float | None
     params: DriveParams = field(default_factory=DriveParams)
     _progress: int = 0
+    # Path length from each point to the end: the goal counts as reached only once the
+    # robot has come along the path to its last stretch, so a route that ends where it
+    # starts (a tour back to its first stop) is driven, not declared done at once.
+    _to_end: FloatArray = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        steps = np.hypot(*np.diff(self.path, axis=0).T) if len(self.path) > 1 else np.zeros(0)
+        self._to_end = np.r_[np.cumsum(steps[::-1])[::-1], 0.0]
 
     @property
     def remaining(self) -> FloatArray:
@@ -60,18 +68,19 @@ class PurePursuit:
         """(v m/s, w rad/s, done) for the robot at ``pose``."""
         p = self.params
         goal = self.path[-1]
+        # Progress along the path only moves forward (the nearest point in a short window).
+        window = self.path[self._progress : self._progress + 40]
+        d = np.hypot(window[:, 0] - pose[0], window[:, 1] - pose[1])
+        self._progress += int(np.argmin(d))
         to_goal = math.hypot(goal[0] - pose[0], goal[1] - pose[1])
-        if to_goal <= p.goal_tolerance_m:
+        on_last_stretch = self._to_end[self._progress] <= p.lookahead_m
+        if to_goal <= p.goal_tolerance_m and on_last_stretch:
             if self.goal_yaw is None:
                 return 0.0, 0.0, True
             err = float(angle_diff(self.goal_yaw, pose[2]))
             if abs(err) <= p.yaw_tolerance_rad:
                 return 0.0, 0.0, True
             return 0.0, _turn_rate(err, p), False
-        # Progress along the path only moves forward (the nearest point in a short window).
-        window = self.path[self._progress : self._progress + 40]
-        d = np.hypot(window[:, 0] - pose[0], window[:, 1] - pose[1])
-        self._progress += int(np.argmin(d))
         ahead = self.path[self._progress :]
         dist = np.hypot(ahead[:, 0] - pose[0], ahead[:, 1] - pose[1])
         beyond = np.nonzero(dist >= p.lookahead_m)[0]
@@ -79,7 +88,8 @@ class PurePursuit:
         alpha = float(angle_diff(math.atan2(target[1] - pose[1], target[0] - pose[0]), pose[2]))
         if abs(alpha) > p.rotate_in_place_rad:
             return 0.0, _turn_rate(alpha, p), False
-        v = p.max_speed_mps * min(1.0, max(0.2, to_goal / p.slow_down_m))
+        left = max(to_goal, float(self._to_end[self._progress]))
+        v = p.max_speed_mps * min(1.0, max(0.2, left / p.slow_down_m))
         distance = max(math.hypot(target[0] - pose[0], target[1] - pose[1]), 1e-6)
         w = 2.0 * v * math.sin(alpha) / distance
         limit = p.max_turn_rate_rps

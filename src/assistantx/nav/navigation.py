@@ -10,7 +10,8 @@ caller can await between chunks). It raises:
   way round it (the layer marks what the LiDAR sees that the map lacks and clears it again
   by ray tracing and decay; see obstacle_layer.py);
 - LocalizationLostError when the scan stops matching the map at the estimated pose for
-  several updates in a row (fewer than ``lost_match_ratio`` of the beams end near a wall);
+  several updates in a row (fewer than ``lost_match_ratio`` of the beams end near a wall or,
+  up to ``lost_short_allowance``, short of one: on something the map lacks);
 - BlockedError as well when the drive takes far longer than the path length warrants.
 
 ``navigate`` wraps plan and follow in nav2's recovery sequence: when the way is blocked it
@@ -83,6 +84,12 @@ class NavigationParams:
         default_factory=lambda: OdometryNoise(0.005, 0.005, 0.005, 0.005)
     )
     lost_match_ratio: float = 0.5  # share of beams that must end within 0.3 m of a wall
+    # ... or, up to this share of the beams, end short of the map's wall on their line (the
+    # beam model's short readings: a person, a box, chairs the map lacks stand in front of
+    # it). In a doorway stacked with boxes, half the beams can end on them while the
+    # estimate is right; a cap keeps a scan made almost all of short readings (the robot
+    # carried into a small room) from passing as a match.
+    lost_short_allowance: float = 0.3
     lost_after_updates: int = 5
     block_lookahead_m: float = 1.5
     timeout_factor: float = 4.0  # give up after this multiple of the nominal driving time
@@ -498,7 +505,10 @@ class Navigator:
         if ranges.size == 0:
             return
         distances = self.filter.field.endpoint_distances(self.pose, ranges, angles)
-        matched = float(np.mean(distances < 0.3))
+        near_wall = distances < 0.3
+        expected = cast_rays(self._map_blocked, self.grid, self.pose, angles, scan.range_max)
+        short = float(np.mean(~near_wall & (ranges < expected - 0.3)))
+        matched = float(np.mean(near_wall)) + min(short, self.params.lost_short_allowance)
         bad = matched < self.params.lost_match_ratio or self.filter.localization_lost
         self._bad_matches = self._bad_matches + 1 if bad else 0
         if self._bad_matches >= self.params.lost_after_updates:
