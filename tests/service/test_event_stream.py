@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import asyncio
 import json
+from collections.abc import Callable
 
 import httpx
 import pytest
@@ -17,9 +18,14 @@ AS_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
 
 
 async def _read(
-    api: httpx.AsyncClient, path: str, headers: dict[str, str], seconds: float
+    api: httpx.AsyncClient,
+    path: str,
+    headers: dict[str, str],
+    seconds: float,
+    enough: Callable[[list[str]], bool] = lambda _: False,
 ) -> tuple[httpx.Headers, list[str]]:
-    """The response headers and the lines the stream sent within ``seconds``."""
+    """The response headers and the lines the stream sent within ``seconds``, or until the
+    lines are ``enough``."""
     lines: list[str] = []
     got: list[httpx.Headers] = []
 
@@ -29,6 +35,8 @@ async def _read(
             got.append(response.headers)
             async for line in response.aiter_lines():
                 lines.append(line)
+                if enough(lines):
+                    return
 
     try:
         await asyncio.wait_for(read(), seconds)
@@ -43,8 +51,13 @@ async def test_an_idle_stream_sends_keep_alive_comments(
 ) -> None:
     # FastAPI's SSE response sends the keep-alives; its interval (15 s) is shortened here so
     # that a second of silence shows several. Renaming it upstream fails this test loudly.
+    # Read until three have come (a fixed second saw two on a loaded machine).
     monkeypatch.setattr("fastapi.routing._PING_INTERVAL", 0.2)
-    headers, lines = await _read(api, "/v1/events", OP, 1.2)
+
+    def three_comments(lines: list[str]) -> bool:
+        return sum(line.startswith(":") for line in lines) >= 3
+
+    headers, lines = await _read(api, "/v1/events", OP, 30, enough=three_comments)
     assert headers["content-type"].startswith("text/event-stream")
     assert headers["cache-control"] == "no-cache"
     assert headers["x-accel-buffering"] == "no"  # a proxy must not hold events back
