@@ -179,8 +179,8 @@ def main() -> None:
                 f"{name}: ready {first['ready_cpu_s']} CPU-s (wall {first['ready_wall_s']} s), "
                 f"second start {second['ready_cpu_s']} CPU-s; by the service's own count "
                 f"{first['ready_cpu_s_self']} / {second['ready_cpu_s_self']}; "
-                f"stop {first['stop_s']} / {second['stop_s']} s; processes left {first['children_left']} / "
-                f"{second['children_left']}"
+                f"stop {first['stop_s']} / {second['stop_s']} s; "
+                f"processes left {first['children_left']} / {second['children_left']}"
             )
     summary = {"maps": results, "bytecode": args.bytecode}
     print(json.dumps(summary | {"load_avg_1min": round(os.getloadavg()[0], 1)}))
