@@ -30,7 +30,7 @@ from typing import Any
 
 from assistantx.adapters.model import model_from_settings
 from assistantx.agents.ablations import ABLATIONS
-from assistantx.agents.baselines import BASELINES
+from assistantx.agents.baseline_names import BASELINES
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset.tasks import Task, load_tasks

@@ -25,9 +25,9 @@ import yaml
 
 from assistantx.adapters.model import ChatRequest, Message, OpenAICompatibleModel, estimate_tokens
 from assistantx.agents.base import AgentContext
+from assistantx.agents.baseline_names import BASELINES
 from assistantx.agents.baselines import (
     ACTION_SPACE,
-    BASELINES,
     BaselineReasoner,
     load_baseline_prompts,
 )

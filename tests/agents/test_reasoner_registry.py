@@ -6,7 +6,8 @@ import pytest
 
 from assistantx.adapters.model import model_from_settings
 from assistantx.agents.ablations import ABLATIONS, NoPerception
-from assistantx.agents.baselines import BASELINES, BaselineReasoner
+from assistantx.agents.baseline_names import BASELINES
+from assistantx.agents.baselines import BaselineReasoner
 from assistantx.agents.hybrid import HybridReasoner
 from assistantx.agents.llm import LLMReasoner
 from assistantx.agents.oracle.optimal import OptimalReasoner

@@ -66,3 +66,28 @@ def test_a_mistyped_command_still_lists_every_command() -> None:
     assert out.returncode == 2
     for command in ("office", "run", "serve", "lock-keys", "report", "matrix"):
         assert command in out.stderr
+
+
+# What `serve` imports before it is ready: the app and the server. The reader (a third of a
+# start, mostly lemminflect's tables) loads after ready (the reasoner's warm-up) or on the
+# first consent check.
+_SERVE_PROBE = """
+import json, sys
+import assistantx.cli.serve_cmd, assistantx.service.app, assistantx.service.server
+print(json.dumps(sorted(m for m in {late!r} if m in sys.modules)))
+"""
+LOADED_AFTER_READY = (
+    "assistantx.agents.symbolic.reading.parser",
+    "assistantx.agents.symbolic.reading.frames",  # reads lemminflect's tables as it loads
+)
+
+
+def test_the_service_imports_no_reader_before_it_is_ready() -> None:
+    out = subprocess.run(
+        [sys.executable, "-c", _SERVE_PROBE.format(late=LOADED_AFTER_READY)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
+    assert json.loads(out.stdout.strip().splitlines()[-1]) == []

@@ -10,7 +10,8 @@ import pytest
 from assistantx.adapters.model import OpenAICompatibleModel
 from assistantx.agents.ablations import NoPerception, NoPlanning, NoReflection
 from assistantx.agents.base import AgentContext, Reasoner
-from assistantx.agents.baselines import BASELINES, BaselineFactory
+from assistantx.agents.baseline_names import BASELINES
+from assistantx.agents.baselines import BaselineFactory
 from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
 from assistantx.core.settings import Settings
 from assistantx.core.trace import Decision, Percept, Plan

@@ -26,6 +26,7 @@ from typing import Literal, TypeVar
 from pydantic import BaseModel, Field
 
 from assistantx.agents.base import AgentContext
+from assistantx.agents.baseline_names import BaselineName
 from assistantx.agents.llm import (
     ModelReasoner,
     SharedModel,
@@ -48,9 +49,6 @@ from assistantx.core.trace import (
     all_ok,
 )
 from assistantx.memory.focus import FocusBudget, focus_budget
-
-BaselineName = Literal["direct", "cot", "react", "reflexion", "mobile_agent_v2"]
-BASELINES: tuple[BaselineName, ...] = ("direct", "cot", "react", "reflexion", "mobile_agent_v2")
 
 OutputT = TypeVar("OutputT", bound=BaseModel)
 

@@ -28,9 +28,7 @@ from typing import Any, Literal
 
 from assistantx.agents.ablations import ABLATIONS
 from assistantx.agents.base import Reasoner, ReasonerFactory
-from assistantx.agents.baselines import BASELINES, build_baseline_factory
-from assistantx.agents.llm.shared import require_model
-from assistantx.agents.oracle.optimal import OptimalReasoner
+from assistantx.agents.baseline_names import BASELINES
 from assistantx.core.errors import ReasonerError
 from assistantx.core.office import Office
 from assistantx.core.ports.model import ChatModel
@@ -85,6 +83,8 @@ def reasoner_factory(
         builder = _import(PPDR_REASONERS[name], name=name)
         factory: ReasonerFactory
         if name in LLM_REASONERS:
+            from assistantx.agents.llm.shared import require_model
+
             factory = builder(office, settings, model=require_model(model, name))
         else:
             factory = builder(office, settings)
@@ -102,6 +102,10 @@ def reasoner_factory(
 
         return ablated
     if name in BASELINES:
+        # The baselines and the oracle load with the first of them built: the LLM agents and
+        # the optimal policy were ~50 ms of every service start, which builds neither.
+        from assistantx.agents.baselines import build_baseline_factory
+
         return build_baseline_factory(name, settings, model=model)
     if name == ORACLE:
         return _oracle(office, task)
@@ -127,6 +131,8 @@ def _import(target: str, *, name: str | None) -> Callable[..., Any]:
 def _oracle(office: Office, task: OracleTask | None) -> ReasonerFactory:
     if task is None:
         raise ReasonerError("the optimal reasoner follows a task's spec: it needs the task")
+
+    from assistantx.agents.oracle.optimal import OptimalReasoner
 
     def optimal() -> Reasoner:
         return OptimalReasoner.for_task(office, task.id, task.requester, task.text, task.spec)

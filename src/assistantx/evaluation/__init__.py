@@ -1,7 +1,8 @@
 """The evaluator: methods run over a task file in the simulated office, scored and reported."""
 
 from assistantx.agents.ablations import ABLATIONS, NoPerception, NoPlanning, NoReflection
-from assistantx.agents.baselines import BASELINES, BaselineFactory, BaselineReasoner
+from assistantx.agents.baseline_names import BASELINES
+from assistantx.agents.baselines import BaselineFactory, BaselineReasoner
 from assistantx.evaluation.episode import Episode, Handover
 from assistantx.evaluation.harness import EvalConfig, evaluate, load_episodes, run_episode
 from assistantx.evaluation.methods import METHODS, MethodBuilder, MethodSpec

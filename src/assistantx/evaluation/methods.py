@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.ablations import ABLATIONS
 from assistantx.agents.base import ReasonerFactory
-from assistantx.agents.baselines import BASELINES
+from assistantx.agents.baseline_names import BASELINES
 from assistantx.agents.registry import (
     ORACLE,
     OracleTask,

@@ -32,14 +32,17 @@ from __future__ import annotations
 import re
 import weakref
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from assistantx.agents.symbolic.answers import stance
-from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
+
+if TYPE_CHECKING:
+    from assistantx.agents.symbolic.reading.parser import InstructionParser
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
 _AT_PLACE = frozenset({"on", "at", "to", "onto", "in", "into"})
@@ -250,6 +253,10 @@ def _frame(office: Office, stm: ShortTermMemory) -> TaskFrame:
     if frame is None:
         parser = _PARSERS.get(office)
         if parser is None:
+            # The reader (and lemminflect's tables under it) is imported on the first check
+            # that needs it, not with the runtime: a third of a service's start otherwise.
+            from assistantx.agents.symbolic.reading.parser import InstructionParser
+
             parser = _PARSERS[office] = InstructionParser(office)
         frame = parser.parse_with_answers(stm.text, stm.requester, list(answers))
         if len(_FRAMES) >= _FRAMES_KEPT:

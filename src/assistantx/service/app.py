@@ -75,11 +75,16 @@ def create_app(
             for runtime in offices.running():
                 if runtime.matrix is not None:  # built by start: the homeserver's pushes
                     pushes.extend(_mount_first(app, runtime.matrix.push_router))
+            # The process's CPU time so far (all threads): what a start cost, as the service
+            # itself counts it (bench/serve_start.py reads it; from outside, a probe's answer
+            # comes later and also counts what runs after ready, the reasoner's warm-up).
+            spent = time.process_time()
             if offices.several:
-                logger.info("offices ready on replica %s", offices.replica)
+                logger.info("offices ready on replica %s after %.2f CPU-s", offices.replica, spent)
             else:
                 runtime = offices.runtime(None)
-                logger.info("assistant ready (%s reasoner)", runtime.assistant.parts.reasoner_name)
+                name = runtime.assistant.parts.reasoner_name
+                logger.info("assistant ready (%s reasoner) after %.2f CPU-s", name, spent)
             if on_ready is not None:
                 on_ready(offices)
             yield

@@ -23,7 +23,6 @@ import os
 import secrets
 from dataclasses import dataclass
 
-import segno
 from cryptography.exceptions import InvalidTag
 from cryptography.hazmat.primitives.ciphers.aead import AESGCM
 
@@ -154,6 +153,8 @@ def _claims_from_plaintext(plaintext: bytes) -> CodeClaims:
 
 def render_png(payload: str, *, scale: int = 4) -> bytes:
     """Draw the payload as a QR code (PNG bytes, error correction M, quiet zone 4)."""
+    import segno  # on the first code drawn: ~20 ms of every service start otherwise
+
     buffer = io.BytesIO()
     segno.make_qr(payload, error="m", boost_error=False).save(buffer, kind="png", scale=scale)
     return buffer.getvalue()
