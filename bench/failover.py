@@ -18,8 +18,12 @@ each office's journal in the shared database:
   journaled more than once;
 - duplicated codes: more than one code sent for the same instruction, person and purpose.
 
-Both must be 0. Seconds are wall time on whatever machine runs it (a loaded one stretches
-them); the lease's time (``--ttl``) bounds the wait for the expiry.
+Both must be 0, and each takeover within ``--resume-limit`` s (10): ``ok`` in the JSON says
+whether the run did all three. Seconds are wall time on whatever machine runs it (a loaded
+one stretches them); the lease's time (``--ttl``) bounds the wait for the expiry.
+
+The issue's run (its defaults): 2 replicas, 3 offices, 60 instructions in flight, the replica
+running a random office killed 3 times:
 
     python bench/failover.py [--offices 3] [--instructions 60] [--kills 3] [--replicas 2]
     python bench/failover.py --sweep --png failover.png   # also 1, 2, 3 replicas, no kill
@@ -228,10 +232,11 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             "ASSISTANTX_LOCK_SHARED_KEY": "the failover bench's shared lock key",
             "ASSISTANTX_ROBOT": "sim",
             "ASSISTANTX_SPEEDUP": "50",
-            # Under the assistant's 60 s wait for an answer (equal, a loaded machine made the
-            # wait end first now and then: two requests then contended for Wang's stapler).
+            # Under the assistant's 60 s wait for an answer and its 300 s wait at the locker
+            # (300, equal to it, made people come as the wait ran out: a coin toss between a
+            # hand-over and a colleague left out as "did not come").
             "ASSISTANTX_SIM_REPLY_DELAY_S": "30",
-            "ASSISTANTX_SIM_HANDOVER_DELAY_S": "300",
+            "ASSISTANTX_SIM_HANDOVER_DELAY_S": "150",
             "ASSISTANTX_INSTRUCTIONS_PER_MINUTE": "0",
             "PYTHONPATH": str(ROOT / "src"),
         }
@@ -325,17 +330,24 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             replica.stop()
         if cluster is not None:
             cluster.stop()
+    slowest = max((t for ts in resumes.values() for t in ts), default=None)
     return {
         "replicas": replicas_n,
+        "offices": len(offices),
         "kills": kills,
         "instructions": args.instructions,
         "instructions_per_minute": round((len(ids) - lost) / minutes, 2),
         "resume_s": resumes,
-        "max_resume_s": max((t for ts in resumes.values() for t in ts), default=None),
+        "max_resume_s": slowest,
         "statuses": ended,
         "lost": lost,
         "duplicated_messages": dup_messages,
         "duplicated_codes": dup_codes,
+        # What the issue asks of the run: nothing lost or twice, every takeover in time.
+        "ok": lost == 0
+        and dup_messages == 0
+        and dup_codes == 0
+        and (slowest is None or slowest <= args.resume_limit),
     }
 
 
@@ -348,7 +360,7 @@ def draw(path: Path, kill_run: dict[str, Any], sweep: list[dict[str, Any]]) -> N
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     for office, times in sorted(kill_run["resume_s"].items()):
         left.plot(range(1, len(times) + 1), times, "o-", label=office)
-    left.axhline(10, color="grey", linestyle="--", label="10 s")
+    left.axhline(10, color="grey", linestyle="--", label="10 s")  # the issue's bound
     left.set(xlabel="takeover of the office", ylabel="seconds to resume", title="Resume per office")
     left.legend()
     right.bar([str(r["replicas"]) for r in sweep], [r["instructions_per_minute"] for r in sweep])
@@ -372,6 +384,9 @@ def main() -> None:
     parser.add_argument("--replicas", type=int, default=2, help="replicas sharing the offices")
     parser.add_argument("--database-url", default=None, help="default: a throwaway cluster")
     parser.add_argument("--end-timeout", type=float, default=900.0)
+    parser.add_argument(
+        "--resume-limit", type=float, default=10.0, help="seconds a takeover may take (ok)"
+    )
     parser.add_argument("--sweep", action="store_true", help="also 1, 2, 3 replicas, no kill")
     parser.add_argument("--png", type=Path, default=None, help="with --sweep: the figure")
     args = parser.parse_args()
