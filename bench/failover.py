@@ -57,6 +57,19 @@ ROOT = Path(__file__).resolve().parents[1]
 OPERATOR = "bench-operator-token"
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 ENDED = {"done", "failed", "unachievable", "cancelled"}  # the journal's final statuses
+# What colleagues ask, in turn (each office gets them in this order): things two colleagues
+# of the default office own and lend, so most requests end done, and the stapler asked for
+# by two requesters contends for Wang's and Zhang's. One request alone (Lee's stapler, 20
+# times an office) ran out of staplers after four: the rest ended unachievable at once.
+REQUESTS = [
+    ("lee", "Please bring me a stapler."),
+    ("mao", "Please bring me a pair of scissors."),
+    ("sun", "Please bring me a data cable."),
+    ("wu", "Please bring me a book."),
+    ("zhou", "Please bring me a pen."),
+    ("xu", "Please bring me a stapler."),
+    ("liu", "Please bring me some wipes."),
+]
 
 
 @dataclass
@@ -259,10 +272,11 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
         for n in range(args.instructions):
             office = offices[n % len(offices)]
             via = replicas[n % len(replicas)]  # any replica takes it
+            requester, text = REQUESTS[(n // len(offices)) % len(REQUESTS)]
             r = httpx.post(
                 f"{via.url}/v1/offices/{office}/instructions",
                 headers=HEADERS,
-                json={"requester": "lee", "text": "Please bring me a stapler."},
+                json={"requester": requester, "text": text},
                 timeout=30,
             )
             r.raise_for_status()
