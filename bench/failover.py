@@ -306,10 +306,17 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             )
             owner.start(env)  # rejoins and takes its share back
             # Two replicas at every kill: the next one waits until this one runs an office
-            # again (else the next takeover would wait for a process still starting).
-            wait(lambda owner=owner: bool(running_here(owner)), f"{owner.name} to rejoin", 300)
+            # again (else the next takeover would wait for a process still starting); with
+            # fewer offices than replicas, until it answers (it may run none).
+            share = len(offices) >= len(replicas)
+            wait(
+                lambda owner=owner: owner.ready() and (bool(running_here(owner)) or not share),
+                f"{owner.name} to rejoin",
+                300,
+            )
         deadline = time.monotonic() + args.end_timeout
         statuses: dict[tuple[str, str], str] = {}
+        summaries: dict[tuple[str, str], str] = {}  # what the requester was told at the end
         while time.monotonic() < deadline:
             live = [r for r in replicas if r.process is not None and r.process.poll() is None]
             for office, iid in ids:
@@ -325,6 +332,7 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
                     continue
                 if answer.status_code == 200:
                     statuses[(office, iid)] = str(answer.json().get("status"))
+                    summaries[(office, iid)] = str(answer.json().get("summary"))
             if len(statuses) == len(ids) and all(s in ENDED for s in statuses.values()):
                 break
             time.sleep(1.0)
@@ -333,6 +341,12 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
         for key in ids:
             status = statuses.get(key, "missing")
             ended[status] = ended.get(status, 0) + 1
+        told: dict[str, int] = {}  # why the ones not done ended, in the requester's words
+        for key, status in statuses.items():
+            if status != "done":
+                told[summaries[key][:90]] = told.get(summaries[key][:90], 0) + 1
+        for summary, n in sorted(told.items(), key=lambda kv: -kv[1]):
+            print(f"  {n} not done: {summary}")
         for office in offices:
             m, c = duplicates(url, schema_of(office, offices[0]), work)
             dup_messages += m
