@@ -281,6 +281,7 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             )
             r.raise_for_status()
             ids.append((office, str(r.json()["id"])))
+        share = len(offices) >= len(replicas)  # every replica runs an office
         for kill in range(kills):
             time.sleep(rng.uniform(1.0, 6.0))  # a random moment in the instructions' run
             running = ready_offices(replicas)
@@ -308,7 +309,6 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             # Two replicas at every kill: the next one waits until this one runs an office
             # again (else the next takeover would wait for a process still starting); with
             # fewer offices than replicas, until it answers (it may run none).
-            share = len(offices) >= len(replicas)
             wait(
                 lambda owner=owner: owner.ready() and (bool(running_here(owner)) or not share),
                 f"{owner.name} to rejoin",
