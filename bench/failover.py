@@ -262,6 +262,8 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
     ended: dict[str, int] = {}
     dup_messages = dup_codes = 0
     minutes = 1.0
+    statuses_seen: dict[tuple[str, str], str] = {}
+    summaries_seen: dict[tuple[str, str], str] = {}
     try:
         for replica in replicas:
             replica.start(env)
@@ -337,6 +339,8 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
                 break
             time.sleep(1.0)
         minutes = (time.monotonic() - submitted) / 60
+        statuses_seen.update(statuses)
+        summaries_seen.update(summaries)
         lost = sum(1 for key in ids if statuses.get(key) not in ENDED)
         for key in ids:
             status = statuses.get(key, "missing")
@@ -372,11 +376,32 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
         "duplicated_messages": dup_messages,
         "duplicated_codes": dup_codes,
         # What the issue asks of the run: nothing lost or twice, every takeover in time.
+        # Each instruction in submission order: office, requester, text, status, the summary.
+        "outcomes": [
+            [
+                office,
+                *REQUESTS[(n // len(offices)) % len(REQUESTS)],
+                statuses_seen.get((office, iid), "missing"),
+                summaries_seen.get((office, iid), ""),
+            ]
+            for n, (office, iid) in enumerate(ids)
+        ],
         "ok": lost == 0
         and dup_messages == 0
         and dup_codes == 0
         and (slowest is None or slowest <= args.resume_limit),
     }
+
+
+def differing(calm: list[list[str]], killed: list[list[str]]) -> list[int]:
+    """The instructions (submission order) that ended differently with kills; printed."""
+    changed = []
+    for n, (a, b) in enumerate(zip(calm, killed, strict=True)):
+        if a[3] != b[3]:
+            changed.append(n)
+            print(f"#{n} {a[0]} {a[1]}: {a[2]!r} no kill {a[3]} / kills {b[3]}: {b[4][:80]!r}")
+    print(f"{len(changed)} of {len(calm)} instructions ended differently with kills")
+    return changed
 
 
 def draw(path: Path, kill_run: dict[str, Any], sweep: list[dict[str, Any]]) -> None:
@@ -415,12 +440,21 @@ def main() -> None:
     parser.add_argument(
         "--resume-limit", type=float, default=10.0, help="seconds a takeover may take (ok)"
     )
+    parser.add_argument(
+        "--compare",
+        action="store_true",
+        help="also the same instructions and seed with no kill; print each outcome that differs",
+    )
     parser.add_argument("--sweep", action="store_true", help="also 1, 2, 3 replicas, no kill")
     parser.add_argument("--png", type=Path, default=None, help="with --sweep: the figure")
     args = parser.parse_args()
     if args.sweep and args.database_url is not None:
         raise SystemExit("--sweep needs fresh databases: leave --database-url out")
     result = run(args, args.replicas, args.kills, args.seed)
+    if args.compare:
+        calm = run(args, args.replicas, 0, args.seed)
+        result["no_kill_statuses"] = calm["statuses"]
+        result["differing"] = differing(calm["outcomes"], result["outcomes"])
     if args.sweep:
         sweep = [run(args, n, 0, args.seed) for n in (1, 2, 3)]
         result["instructions_per_minute_by_replicas"] = {
