@@ -27,6 +27,10 @@ running a random office killed 3 times:
 
     python bench/failover.py [--offices 3] [--instructions 60] [--kills 3] [--replicas 2]
     python bench/failover.py --sweep --png failover.png   # also 1, 2, 3 replicas, no kill
+    python bench/failover.py --compare   # also the same instructions and seed, no kill
+
+``--compare`` prints each instruction (in submission order) whose status differs between the
+two runs: a kill must change no outcome.
 
 Instructions per minute: the instructions ended over the minutes from the first submission to
 the last end. ``--sweep`` runs the kill run, then the same instructions with no kill on 1, 2
