@@ -18,11 +18,19 @@ each office's journal in the shared database:
   journaled more than once;
 - duplicated codes: more than one code sent for the same instruction, person and purpose.
 
-Both must be 0. Seconds are wall time on whatever machine runs it (a loaded one stretches
-them); the lease's time (``--ttl``) bounds the wait for the expiry.
+Both must be 0, and each takeover within ``--resume-limit`` s (10): ``ok`` in the JSON says
+whether the run did all three. Seconds are wall time on whatever machine runs it (a loaded
+one stretches them); the lease's time (``--ttl``) bounds the wait for the expiry.
+
+The issue's run (its defaults): 2 replicas, 3 offices, 60 instructions in flight, the replica
+running a random office killed 3 times:
 
     python bench/failover.py [--offices 3] [--instructions 60] [--kills 3] [--replicas 2]
     python bench/failover.py --sweep --png failover.png   # also 1, 2, 3 replicas, no kill
+    python bench/failover.py --compare   # also the same instructions and seed, no kill
+
+``--compare`` prints each instruction (in submission order) whose status differs between the
+two runs: a kill must change no outcome.
 
 Instructions per minute: the instructions ended over the minutes from the first submission to
 the last end. ``--sweep`` runs the kill run, then the same instructions with no kill on 1, 2
@@ -53,6 +61,19 @@ ROOT = Path(__file__).resolve().parents[1]
 OPERATOR = "bench-operator-token"
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 ENDED = {"done", "failed", "unachievable", "cancelled"}  # the journal's final statuses
+# What colleagues ask, in turn (each office gets them in this order): things two colleagues
+# of the default office own and lend, so most requests end done, and the stapler asked for
+# by two requesters contends for Wang's and Zhang's. One request alone (Lee's stapler, 20
+# times an office) ran out of staplers after four: the rest ended unachievable at once.
+REQUESTS = [
+    ("lee", "Please bring me a stapler."),
+    ("mao", "Please bring me a pair of scissors."),
+    ("sun", "Please bring me a data cable."),
+    ("wu", "Please bring me a book."),
+    ("zhou", "Please bring me a pen."),
+    ("xu", "Please bring me a stapler."),
+    ("liu", "Please bring me some wipes."),
+]
 
 
 @dataclass
@@ -228,10 +249,11 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             "ASSISTANTX_LOCK_SHARED_KEY": "the failover bench's shared lock key",
             "ASSISTANTX_ROBOT": "sim",
             "ASSISTANTX_SPEEDUP": "50",
-            # Under the assistant's 60 s wait for an answer (equal, a loaded machine made the
-            # wait end first now and then: two requests then contended for Wang's stapler).
+            # Under the assistant's 60 s wait for an answer and its 300 s wait at the locker
+            # (300, equal to it, made people come as the wait ran out: a coin toss between a
+            # hand-over and a colleague left out as "did not come").
             "ASSISTANTX_SIM_REPLY_DELAY_S": "30",
-            "ASSISTANTX_SIM_HANDOVER_DELAY_S": "300",
+            "ASSISTANTX_SIM_HANDOVER_DELAY_S": "150",
             "ASSISTANTX_INSTRUCTIONS_PER_MINUTE": "0",
             "PYTHONPATH": str(ROOT / "src"),
         }
@@ -244,6 +266,8 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
     ended: dict[str, int] = {}
     dup_messages = dup_codes = 0
     minutes = 1.0
+    statuses_seen: dict[tuple[str, str], str] = {}
+    summaries_seen: dict[tuple[str, str], str] = {}
     try:
         for replica in replicas:
             replica.start(env)
@@ -254,14 +278,16 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
         for n in range(args.instructions):
             office = offices[n % len(offices)]
             via = replicas[n % len(replicas)]  # any replica takes it
+            requester, text = REQUESTS[(n // len(offices)) % len(REQUESTS)]
             r = httpx.post(
                 f"{via.url}/v1/offices/{office}/instructions",
                 headers=HEADERS,
-                json={"requester": "lee", "text": "Please bring me a stapler."},
+                json={"requester": requester, "text": text},
                 timeout=30,
             )
             r.raise_for_status()
             ids.append((office, str(r.json()["id"])))
+        share = len(offices) >= len(replicas)  # every replica runs an office
         for kill in range(kills):
             time.sleep(rng.uniform(1.0, 6.0))  # a random moment in the instructions' run
             running = ready_offices(replicas)
@@ -287,10 +313,16 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             )
             owner.start(env)  # rejoins and takes its share back
             # Two replicas at every kill: the next one waits until this one runs an office
-            # again (else the next takeover would wait for a process still starting).
-            wait(lambda owner=owner: bool(running_here(owner)), f"{owner.name} to rejoin", 300)
+            # again (else the next takeover would wait for a process still starting); with
+            # fewer offices than replicas, until it answers (it may run none).
+            wait(
+                lambda owner=owner: owner.ready() and (bool(running_here(owner)) or not share),
+                f"{owner.name} to rejoin",
+                300,
+            )
         deadline = time.monotonic() + args.end_timeout
         statuses: dict[tuple[str, str], str] = {}
+        summaries: dict[tuple[str, str], str] = {}  # what the requester was told at the end
         while time.monotonic() < deadline:
             live = [r for r in replicas if r.process is not None and r.process.poll() is None]
             for office, iid in ids:
@@ -306,14 +338,23 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
                     continue
                 if answer.status_code == 200:
                     statuses[(office, iid)] = str(answer.json().get("status"))
+                    summaries[(office, iid)] = str(answer.json().get("summary"))
             if len(statuses) == len(ids) and all(s in ENDED for s in statuses.values()):
                 break
             time.sleep(1.0)
         minutes = (time.monotonic() - submitted) / 60
+        statuses_seen.update(statuses)
+        summaries_seen.update(summaries)
         lost = sum(1 for key in ids if statuses.get(key) not in ENDED)
         for key in ids:
             status = statuses.get(key, "missing")
             ended[status] = ended.get(status, 0) + 1
+        told: dict[str, int] = {}  # why the ones not done ended, in the requester's words
+        for key, status in statuses.items():
+            if status != "done":
+                told[summaries[key][:90]] = told.get(summaries[key][:90], 0) + 1
+        for summary, n in sorted(told.items(), key=lambda kv: -kv[1]):
+            print(f"  {n} not done: {summary}")
         for office in offices:
             m, c = duplicates(url, schema_of(office, offices[0]), work)
             dup_messages += m
@@ -325,18 +366,46 @@ def run(args: argparse.Namespace, replicas_n: int, kills: int, seed: int) -> dic
             replica.stop()
         if cluster is not None:
             cluster.stop()
+    slowest = max((t for ts in resumes.values() for t in ts), default=None)
     return {
         "replicas": replicas_n,
+        "offices": len(offices),
         "kills": kills,
         "instructions": args.instructions,
         "instructions_per_minute": round((len(ids) - lost) / minutes, 2),
         "resume_s": resumes,
-        "max_resume_s": max((t for ts in resumes.values() for t in ts), default=None),
+        "max_resume_s": slowest,
         "statuses": ended,
         "lost": lost,
         "duplicated_messages": dup_messages,
         "duplicated_codes": dup_codes,
+        # What the issue asks of the run: nothing lost or twice, every takeover in time.
+        # Each instruction in submission order: office, requester, text, status, the summary.
+        "outcomes": [
+            [
+                office,
+                *REQUESTS[(n // len(offices)) % len(REQUESTS)],
+                statuses_seen.get((office, iid), "missing"),
+                summaries_seen.get((office, iid), ""),
+            ]
+            for n, (office, iid) in enumerate(ids)
+        ],
+        "ok": lost == 0
+        and dup_messages == 0
+        and dup_codes == 0
+        and (slowest is None or slowest <= args.resume_limit),
     }
+
+
+def differing(calm: list[list[str]], killed: list[list[str]]) -> list[int]:
+    """The instructions (submission order) that ended differently with kills; printed."""
+    changed = []
+    for n, (a, b) in enumerate(zip(calm, killed, strict=True)):
+        if a[3] != b[3]:
+            changed.append(n)
+            print(f"#{n} {a[0]} {a[1]}: {a[2]!r} no kill {a[3]} / kills {b[3]}: {b[4][:80]!r}")
+    print(f"{len(changed)} of {len(calm)} instructions ended differently with kills")
+    return changed
 
 
 def draw(path: Path, kill_run: dict[str, Any], sweep: list[dict[str, Any]]) -> None:
@@ -348,7 +417,7 @@ def draw(path: Path, kill_run: dict[str, Any], sweep: list[dict[str, Any]]) -> N
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     for office, times in sorted(kill_run["resume_s"].items()):
         left.plot(range(1, len(times) + 1), times, "o-", label=office)
-    left.axhline(10, color="grey", linestyle="--", label="10 s")
+    left.axhline(10, color="grey", linestyle="--", label="10 s")  # the issue's bound
     left.set(xlabel="takeover of the office", ylabel="seconds to resume", title="Resume per office")
     left.legend()
     right.bar([str(r["replicas"]) for r in sweep], [r["instructions_per_minute"] for r in sweep])
@@ -372,12 +441,24 @@ def main() -> None:
     parser.add_argument("--replicas", type=int, default=2, help="replicas sharing the offices")
     parser.add_argument("--database-url", default=None, help="default: a throwaway cluster")
     parser.add_argument("--end-timeout", type=float, default=900.0)
+    parser.add_argument(
+        "--resume-limit", type=float, default=10.0, help="seconds a takeover may take (ok)"
+    )
+    parser.add_argument(
+        "--compare",
+        action="store_true",
+        help="also the same instructions and seed with no kill; print each outcome that differs",
+    )
     parser.add_argument("--sweep", action="store_true", help="also 1, 2, 3 replicas, no kill")
     parser.add_argument("--png", type=Path, default=None, help="with --sweep: the figure")
     args = parser.parse_args()
     if args.sweep and args.database_url is not None:
         raise SystemExit("--sweep needs fresh databases: leave --database-url out")
     result = run(args, args.replicas, args.kills, args.seed)
+    if args.compare:
+        calm = run(args, args.replicas, 0, args.seed)
+        result["no_kill_statuses"] = calm["statuses"]
+        result["differing"] = differing(calm["outcomes"], result["outcomes"])
     if args.sweep:
         sweep = [run(args, n, 0, args.seed) for n in (1, 2, 3)]
         result["instructions_per_minute_by_replicas"] = {

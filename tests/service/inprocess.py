@@ -10,10 +10,12 @@ from pathlib import Path
 from typing import Any
 
 import httpx
+from fastapi import FastAPI
 
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from assistantx.service.runtime import ServiceRuntime
+from helpers.eventually import eventually
 from helpers.servers import serving_app
 from service.server import LEE, OPERATOR, ZHANG
 
@@ -32,6 +34,7 @@ async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[http
     }
     app = create_app(Settings(**{**defaults, **settings}))
     async with serving_app(app) as client:
+        await _holding(app)
         yield client
 
 
@@ -52,4 +55,17 @@ async def serving_runtime(
     app = create_app(Settings(**{**defaults, **settings}))
     headers = {"Authorization": f"Bearer {OPERATOR}"}
     async with serving_app(app, headers=headers) as client:
+        await _holding(app)
         yield client, app.state.runtime
+
+
+async def _holding(app: FastAPI) -> None:
+    """One office on a database answers as a standby at once; tests of the office want it
+    run here: wait until it holds the office's lease and its assistant runs (a replica
+    started while another holds the office waits here, as a standby does)."""
+    offices = app.state.offices
+    if offices.several or offices.leases is None:
+        return
+    await eventually(
+        lambda: offices.serving(None), what="this replica to run the office", timeout_s=120
+    )

@@ -5,7 +5,15 @@ hold exactly one collect code at the end, and it must be the one the lock takes.
 
 The moment is a few milliseconds wide in a real run, so the test holds it open with the
 database itself: a trigger on the journal's ``events`` table makes the transaction that
-journals the send's result sleep, and the owning replica is killed while it sleeps."""
+journals the send's result sleep, and the owning replica is killed while it sleeps.
+
+The moment must also stay shut to the simulated Lee of the dying replica: he walks to the
+robot one second after his code arrives, and his use of it reaches the shared phones (their
+own connection, not the stalled journal) while the lock's report of it dies with the replica.
+A test that saw the sleep and killed later than that (a loaded machine) left Lee's phone with a
+used code the next replica's lock had never seen used: Lee did not come again and the wait ran
+out. So, once the journal sleeps, a write to the phones waits for it too (the sleeping
+transaction holds the lock of ``stall_armed``'s row), and the kill may come whenever it comes."""
 
 from __future__ import annotations
 
@@ -45,10 +53,17 @@ BEGIN
   END IF;
   RETURN NEW;
 END $$ LANGUAGE plpgsql;
+CREATE FUNCTION phones_wait_for_the_stall() RETURNS trigger AS $$
+BEGIN
+  PERFORM armed FROM stall_armed FOR UPDATE;
+  RETURN NULL;
+END $$ LANGUAGE plpgsql;
 """
-TRIGGER = (
+TRIGGERS = (
     "CREATE TRIGGER stall BEFORE INSERT ON events FOR EACH ROW"
-    " EXECUTE FUNCTION stall_after_lee_code()"
+    " EXECUTE FUNCTION stall_after_lee_code()",
+    "CREATE TRIGGER phones_wait BEFORE INSERT OR UPDATE OR DELETE ON sim_phones"
+    " FOR EACH STATEMENT EXECUTE FUNCTION phones_wait_for_the_stall()",
 )
 
 
@@ -88,7 +103,8 @@ def test_a_kill_just_after_a_code_went_out_does_not_send_a_second_code(
         holder(replicas)  # the journal's tables exist once the first replica runs
         with psycopg.connect(postgres_url, autocommit=True) as db:
             db.execute(STALL)
-            db.execute(TRIGGER)
+            for trigger in TRIGGERS:
+                db.execute(trigger)  # type: ignore[arg-type]
         r = httpx.post(
             f"{first.url}/v1/instructions",
             headers=HEADERS,
@@ -105,8 +121,11 @@ def test_a_kill_just_after_a_code_went_out_does_not_send_a_second_code(
         assert stalled is not None
         assert len(codes_to(postgres_url, "lee")) == 1  # the code is out
         first.kill()
-        rows(postgres_url, f"SELECT pg_terminate_backend({stalled})")  # it slept on alone
-        run(postgres_url, "DROP TRIGGER stall ON events")
+        # Its sleeping journal write lived on alone. A phones write waiting behind it ends
+        # with it, uncommitted (its process is gone); the standby's lease waits behind it too
+        # (its fence locks the lease's row), so only the sleeper is ended.
+        rows(postgres_url, f"SELECT pg_terminate_backend({stalled})")
+        run(postgres_url, "DROP TRIGGER stall ON events; DROP TRIGGER phones_wait ON sim_phones")
         last = holder([r for r in replicas if r.process.poll() is None])
         record = eventually_sync(
             lambda: httpx.get(f"{last.url}/v1/instructions/{iid}", headers=HEADERS).json(),

@@ -92,7 +92,13 @@ def _serve_collector_off(args: argparse.Namespace) -> int:
             if offices.generated_token:
                 print(f"  operator token: {offices.generated_token}", flush=True)
             return
-        auth = offices.runtime(None).auth
+        running = offices.serving(None)
+        if running is None:  # one office on replicas: another one holds it for now
+            print(f"  replica {offices.replica}: a standby until it holds the office", flush=True)
+            if offices.generated_token:
+                print(f"  operator token: {offices.generated_token}", flush=True)
+            return
+        auth = running.auth
         if auth.generated_token:
             print(
                 f"  operator token (also in {auth.token_file}): {auth.generated_token}", flush=True

@@ -151,6 +151,17 @@ class LongTermMemory:
             return None
         return holder
 
+    def taken_by_another(self, item_id: str, instruction_id: str) -> AppliedUpdate | None:
+        """The hand-over that took ``item_id`` away from its owner (into a locker or to
+        someone else), when another instruction than ``instruction_id`` made it; None when
+        the item is with its owner, not known to have moved, or moved by this instruction."""
+        holder = self.item_holder(item_id)
+        owner = item_id.partition(":")[2]
+        moved = self.latest.get(f"holder:{item_id}")
+        if holder is None or holder == owner or moved is None:
+            return None
+        return moved if moved.instruction_id != instruction_id else None
+
     def known_not_owners(self, item_type: str) -> list[str]:
         return sorted(self._lacking.get(item_type, ()))
 

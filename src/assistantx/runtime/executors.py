@@ -298,6 +298,9 @@ class Executor:
                 ),
                 {},
             )
+        taken = self._taken_from(stm, action)
+        if taken is not None:
+            return False, taken, {"taken": True}
         self._watch(stm)
         qr = await self.ctx.locker.issue_code(
             instruction_id=stm.instruction_id,
@@ -325,6 +328,23 @@ class Executor:
         )
         self._hold(stm, action, qr.code_id)
         return True, f"sent {action.contact} a one-time code to {todo}", {"code_id": qr.code_id}
+
+    def _taken_from(self, stm: ShortTermMemory, action: SendQR) -> str | None:
+        """Why no deposit code goes to the owner of ``action``'s item: memory knows another
+        instruction took it after this instruction last heard from them (two instructions
+        asked them at nearly the same time, both heard yes, and the other one's hand-over came
+        first: a code would ask for an item they no longer have). None: send the code."""
+        owner = action.item.partition(":")[2]
+        if action.purpose != "deposit" or action.contact != owner:
+            return None
+        taken = self.ctx.ltm.taken_by_another(action.item, stm.instruction_id)
+        if taken is None:
+            return None
+        heard = [t.time for t in stm.dialogue if t.direction == "in" and t.person == owner]
+        if heard and max(heard) > taken.time:
+            return None  # they wrote since: what they said is newer than memory
+        thing = item_phrase(self.ctx.office, action.item)
+        return f"{thing} was taken for another errand; no code sent to {action.contact}"
 
     def _watch(self, stm: ShortTermMemory) -> None:
         if stm.instruction_id not in self._watching:
@@ -462,8 +482,11 @@ class Executor:
         for code in stm.embodied.codes:
             if code.code_id in accepted:
                 code.scanned = True
-        if not mine and self.ctx.clock.now() >= deadline:
-            # Timed out: the person's codes must not open the locker after the robot left.
+        # On the clock the deadline was set on (simulated seconds): the result's timestamps
+        # are wall time, so at a speed-up their difference cannot tell a full wait apart.
+        timed_out = not mine and self.ctx.clock.timer() >= deadline
+        if timed_out:
+            # The person's codes must not open the locker after the robot left.
             await self.revoke_codes(stm, person=action.person)
         if closed:
             for code in stm.embodied.codes:
@@ -475,7 +498,10 @@ class Executor:
         rejected = [e.reason for e in mine if e.kind == "code_rejected"]
         if rejected:
             return False, f"{action.person}'s code was rejected: {rejected[0]}", {"events": kinds}
-        return False, f"{action.person} did not come to the locker", {"events": kinds}
+        data: dict[str, object] = {"events": kinds}
+        if timed_out:
+            data["timed_out"] = True
+        return False, f"{action.person} did not come to the locker", data
 
     def _used_unseen(self, stm: ShortTermMemory, person: str) -> list[IssuedCode]:
         """``person``'s codes the lock reported used that this instruction never saw used."""

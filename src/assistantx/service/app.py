@@ -39,6 +39,7 @@ from assistantx.service.errors import install_error_handlers
 from assistantx.service.offices import routes as office_routes
 from assistantx.service.offices.directory import Offices
 from assistantx.service.offices.routing import OfficeRouting, office_of
+from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
 
 logger = logging.getLogger(__name__)
@@ -71,19 +72,27 @@ def create_app(
             # Unmounted once everything stopped: a push during shutdown still gets the
             # stopped messenger's 500 and is retried by the homeserver.
             stack.callback(_unmount, app, pushes)
-            await offices.start(stack)
-            for runtime in offices.running():
+
+            def mount_pushes(runtime: ServiceRuntime) -> None:
                 if runtime.matrix is not None:  # built by start: the homeserver's pushes
                     pushes.extend(_mount_first(app, runtime.matrix.push_router))
+
+            offices.on_started = mount_pushes  # one office on replicas: once it holds it
+            await offices.start(stack)
+            for runtime in offices.running():
+                if runtime.ready:
+                    mount_pushes(runtime)
+            running = offices.serving(None)
             # The process's CPU time so far (all threads): what a start cost, as the service
             # itself counts it (bench/serve_start.py reads it; from outside, a probe's answer
             # comes later and also counts what runs after ready, the reasoner's warm-up).
             spent = time.process_time()
             if offices.several:
                 logger.info("offices ready on replica %s after %.2f CPU-s", offices.replica, spent)
+            elif running is None:  # one office on replicas: another replica holds it
+                logger.info("replica %s answers as a standby", offices.replica)
             else:
-                runtime = offices.runtime(None)
-                name = runtime.assistant.parts.reasoner_name
+                name = running.assistant.parts.reasoner_name
                 logger.info("assistant ready (%s reasoner) after %.2f CPU-s", name, spent)
             if on_ready is not None:
                 on_ready(offices)

@@ -1,7 +1,12 @@
-"""/healthz (the process answers) and /readyz (the assistant runs); no token needed."""
+"""/healthz (the process answers) and /readyz (the assistant runs); no token needed.
+
+A standby replica of one office answers /readyz 503 ``standby``, naming itself and the
+replica that holds the office (a load balancer sends traffic to the holder, and an operator
+reads who it is)."""
 
 from __future__ import annotations
 
+import asyncio
 from typing import Any
 
 from fastapi import APIRouter, Request
@@ -26,6 +31,11 @@ async def readyz(request: Request) -> JSONResponse | dict[str, Any]:
         return _deployment_ready(offices)
     runtime = offices.serving(office) if offices is not None else None
     if runtime is None:
+        if offices is not None and offices.started and offices.leases is not None:
+            # One office on replicas, this one a standby: it answers, the office is elsewhere.
+            holder = await asyncio.to_thread(offices.holder, offices.home)
+            standby = {"status": "standby", "replica": offices.replica, "holder": holder}
+            return JSONResponse(standby, status_code=503)
         return JSONResponse({"status": "starting"}, status_code=503)
     ready: dict[str, Any] = {
         "status": "ready",

@@ -118,6 +118,9 @@ class ServiceRuntime:
         self.resumed: list[str] = []
         self.office_lease: OfficeLease | None = None  # with a database URL: the office's lease
         self.office_id: str | None = None  # one of several offices: its id in the deployment
+        # On a shared database: the office id other replicas NOTIFY submissions under (one
+        # office on replicas: its standbys take submissions too); None: ``office_id``.
+        self.listen_as: str | None = None
         self._picked_up: set[str] = set()  # submissions journaled by other replicas, admitted
         self.on_lease_lost: Callable[[], None] | None = None  # the CLI stops the process
         # ASSISTANTX_MESSENGER=matrix: the assistant talks on Matrix. Its config is checked
@@ -319,8 +322,9 @@ class ServiceRuntime:
         await self._resume()
         await self.durability.resume_give_backs(set(self.sim.world.locker_contents()))
         self.admission.start()
-        if s.database is not None and self.office_id is not None:
-            await self._listen_for_submissions(stack, s.database, self.office_id)
+        listen_as = self.listen_as or self.office_id
+        if s.database is not None and listen_as is not None:
+            await self._listen_for_submissions(stack, s.database, listen_as)
         self.ready = True
         if self._deferred_reasoner is not None:
             self._deferred_reasoner.warm_in_background()

@@ -77,8 +77,9 @@ class _OfficeLease:
     ``assistantx_office_lease_token{office, replica}`` is the fencing token (it only grows, so a
     change tells a failover happened), ``assistantx_office_lease_expires_in_seconds`` how long
     the lease lasts without a renewal (near zero or negative: the renewals stall) and
-    ``assistantx_replica_ready{replica}`` whether the assistant runs. A standby serves no HTTP,
-    so only the holder is scraped; without a database URL there is no lease and no series."""
+    ``assistantx_replica_ready{replica}`` whether the assistant runs. These come from the
+    holder; every replica (a standby too) adds which replica holds the office
+    (``offices.exposition``). Without a database URL there is no lease and no series."""
 
     def __init__(
         self,

@@ -13,6 +13,7 @@ import functools
 import hashlib
 import itertools
 import logging
+import uuid
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from datetime import UTC, datetime
@@ -89,6 +90,12 @@ class SimMessenger(Messenger):
         super().__init__()
         self._sim = office_sim
         self._ids = itertools.count(1)
+        # A messenger names each message once and for all: a service that restarts or
+        # whose office another replica takes over journals what people write by these ids
+        # and ignores an id it has seen (a platform's retry). Counted from 1 in each process
+        # alone, the replies after a takeover reused the previous process's ids and were
+        # dropped as duplicates: the colleague "did not answer" (bench/failover.py).
+        self._run = uuid.uuid4().hex[:12]
         self.sent: list[OutboundMessage] = []
         self.received: list[InboundMessage] = []
         self._seen_keys: dict[str, SentMessage] = {}
@@ -123,7 +130,7 @@ class SimMessenger(Messenger):
         """A simulated person writes to the assistant (used by people and by the CLI)."""
         inbound = InboundMessage(
             platform=self.platform,
-            event_id=f"sim-in-{next(self._ids)}",
+            event_id=f"sim-in-{self._run}-{next(self._ids)}",
             chat=chat,
             sender=person,
             text=text,

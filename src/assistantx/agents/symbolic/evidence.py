@@ -44,6 +44,7 @@ class HandoverAttempt:
 class Evidence:
     requester: str
     robot_place: str | None
+    instruction_id: str = ""  # whose evidence: memory's changes by others are told apart
     locker: list[str] = field(default_factory=list)  # item ids in the robot's locker now
     questions: list[Question] = field(default_factory=list)
     replies: dict[str, list[DialogueTurn]] = field(default_factory=dict)  # question id → turns
@@ -106,6 +107,7 @@ class Evidence:
 def gather(stm: ShortTermMemory, office: Office) -> Evidence:
     ev = Evidence(
         requester=stm.requester,
+        instruction_id=stm.instruction_id,
         robot_place=stm.embodied.robot_place,
         locker=list(stm.embodied.locker_contents),
         codes=list(stm.embodied.codes),
@@ -163,7 +165,13 @@ def _attempt(
         None,
     )
     events = data.get("events") or []
-    full_wait = ended - started >= action.timeout_s - _INTERRUPTED_MARGIN_S
+    # The executor says when the wait ran out. The timestamps are wall time and the timeout
+    # is in simulated seconds: at a speed-up (50 in the service's simulation) a full wait of
+    # 300 s lasts 6 s of them, which read as "cut short" kept the person bound and sent a
+    # new code after each wait. Results journaled before the flag keep the old reading.
+    full_wait = bool(data.get("timed_out")) or (
+        ended - started >= action.timeout_s - _INTERRUPTED_MARGIN_S
+    )
     interrupted = not ok and complaint is None and not full_wait and not events
     return HandoverAttempt(
         person=action.person,

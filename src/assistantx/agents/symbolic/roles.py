@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.core import task_kinds
 from assistantx.core.office import Office
@@ -293,6 +294,30 @@ class Roles:
             and ltm.lent_out(person, role.item_type) is not None
         )
 
+    def _taken_since_yes(
+        self, role: Role, person: str, ltm: LongTermMemory, ev: Evidence
+    ) -> str | None:
+        """Why ``person`` cannot lend now although they may have said yes: another
+        instruction's hand-over took their item after their answer (two instructions asked
+        them at nearly the same time and both heard yes; the first took it). Without this,
+        the second sent them a code for an item they no longer had. A yes given after that
+        hand-over is theirs to give (the item came back)."""
+        if role.kind != "lend" or role.item_type is None:
+            return None
+        item = f"{role.item_type}:{person}"
+        taken = ltm.taken_by_another(item, ev.instruction_id)
+        if taken is None:
+            return None
+        q = ev.asked(person, self.question(role, person))
+        yes = [
+            t.time
+            for t in (ev.answers(q) if q is not None else [])
+            if t.person == person and stance(t.text) == "yes"
+        ]
+        if yes and max(yes) > taken.time:
+            return None
+        return f"their {role.item_type} was taken for another errand"
+
     def group_for(self, requester: str) -> str | None:
         """The largest group chat the requester belongs to."""
         mine = [g for g in self.office.groups if requester in g.members]
@@ -333,6 +358,9 @@ class Roles:
                 if failed.complaint
                 else ("did not come to the robot")
             )
+        taken = self._taken_since_yes(role, person, ltm, ev)
+        if taken is not None:
+            return taken
         q = ev.asked(person, self.question(role, person))
         if q is not None:
             said = ev.stance_of(q, person)

@@ -1,8 +1,12 @@
 """The offices of one process: each office's runtime, its tokens, and where each one runs.
 
-One office (no deployment file) is today's service, unchanged: one ``ServiceRuntime``, its
-own tokens, and with a database URL its lease held before it starts (a standby serves no
-HTTP). Several offices (``ASSISTANTX_OFFICES``) each get their own ``ServiceRuntime`` (own
+One office (no deployment file) is today's service: one ``ServiceRuntime``, its own tokens,
+and with a database URL its lease held before it starts. Such a replica answers HTTP from the
+start all the same: while another replica holds the office it is a standby that serves health,
+``/metrics`` (who holds the office), reads and submissions from the shared journal (as for an
+office run elsewhere, below), and its assistant starts once it takes the lease.
+
+Several offices (``ASSISTANTX_OFFICES``) each get their own ``ServiceRuntime`` (own
 people, map, robot, lock, messenger, memory and journal: ``deployment``), started and stopped
 through an ``AsyncExitStack`` of its own. On SQLite this process runs them all; with a
 database URL the ``Balancer`` takes a fair share of the offices' leases and starts the ones it
@@ -20,6 +24,7 @@ import asyncio
 import logging
 import os
 import socket
+import time
 from collections.abc import Callable
 from contextlib import AsyncExitStack
 from dataclasses import dataclass
@@ -28,6 +33,7 @@ from uuid import uuid4
 
 from pydantic import SecretStr
 
+from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
 from assistantx.memory.resolve import Resolver
@@ -55,6 +61,17 @@ from assistantx.store.leases import Lease, Leases
 logger = logging.getLogger(__name__)
 
 STARTING, READY, ELSEWHERE, UNASSIGNED = "starting", "ready", "elsewhere", "unassigned"
+
+
+@dataclass(frozen=True)
+class ReplicaView:
+    """One replica as this one sees it through the shared leases."""
+
+    id: str
+    here: bool  # the replica answering
+    up: bool  # its heartbeat (or, one office, its lease) is live
+    heartbeat_age_s: float | None  # seconds since its last heartbeat (several offices only)
+    offices: list[str]  # the ids of the offices it runs
 
 
 @dataclass
@@ -93,6 +110,9 @@ class Offices:
         self.leases: Leases | None = None
         self.balancer: Balancer | None = None
         self.started = False
+        self.standing_by = False  # one office on replicas: until its assistant first runs here
+        # Called with that office's runtime once it runs (the app mounts its Matrix pushes).
+        self.on_started: Callable[[ServiceRuntime], None] | None = None
         self.generated_token: str | None = None  # the deployment operator's, when generated
         self._deployment_operator = ""
         if not self.several:  # today's service: its runtime exists before it starts
@@ -106,6 +126,9 @@ class Offices:
         if not self.several:
             runtime = self.slots[self.home].runtime
             assert runtime is not None
+            if self.settings.database is not None:
+                await self._start_standby(stack, runtime, self.settings.database)
+                return
             await runtime.start(stack)
             self.slots[self.home].display = runtime.office.name
             self.started = True
@@ -138,6 +161,40 @@ class Offices:
 
     def _not_started(self) -> None:
         self.started = False
+
+    async def _start_standby(
+        self, stack: AsyncExitStack, runtime: ServiceRuntime, url: str
+    ) -> None:
+        """One office on replicas: serve at once, and start the assistant in the background
+        once this replica holds the office's lease (``ServiceRuntime.start`` waits for it).
+        The tokens are checked here meanwhile; the shared leases say who holds the office."""
+        await asyncio.to_thread(self._build_authorities)
+        self.leases = Leases.open(self.settings.data_dir / JOURNAL_FILE, database_url=url)
+        stack.callback(self.leases.close)
+        stack.callback(self._close_desks)
+        runtime.listen_as = self.home  # submissions journaled by a standby reach it
+        own = AsyncExitStack()  # the runtime's: closed after its start is cancelled
+
+        async def run() -> None:
+            try:
+                await runtime.start(own)
+                self.standing_by = False  # from now on it answers as the holder, or not at all
+                if self.on_started is not None:
+                    self.on_started(runtime)
+            except Exception:
+                logger.exception("the office could not start on this replica")
+                if self.on_lease_lost is not None:
+                    self.on_lease_lost()  # the CLI stops the process, as on a lost lease
+
+        self.standing_by = True
+        task = asyncio.create_task(run(), name="office-start")
+
+        async def stop() -> None:
+            await cancel_and_wait(task)
+            await own.aclose()
+
+        stack.push_async_callback(stop)
+        self.started = True
 
     def _build_authorities(self) -> None:
         base = self.settings
@@ -251,12 +308,14 @@ class Offices:
 
     async def desk(self, office_id: str | None) -> ServiceRuntime | OfficeDesk:
         """What answers instruction reads and submissions for ``office_id``: its runtime when
-        it runs here; with several offices on a database, else the office's journal in the
-        shared database (``submissions``); otherwise the 503 of ``runtime``."""
+        it runs here; on a shared database, else the office's journal there
+        (``submissions``); otherwise the 503 of ``runtime``."""
         slot = self.slot(office_id)
         runtime = slot.runtime
         url = slot.spec.settings.database
-        if (runtime is not None and runtime.ready) or not self.several or url is None:
+        # One office: only a standby (a holder that lost its lease is stopping: 503).
+        elsewhere = self.several or self.standing_by
+        if (runtime is not None and runtime.ready) or url is None or not elsewhere:
             return self.runtime(office_id)
         if slot.desk is None:
             journal = await asyncio.to_thread(
@@ -278,6 +337,9 @@ class Offices:
     def authenticate(self, office_id: str | None, authorization: str | None) -> Principal:
         slot = self.slot(office_id)
         if not self.several:
+            running = self.serving(office_id)
+            if running is None and slot.authority is not None:  # a standby's
+                return slot.authority.authenticate(authorization)
             return self.runtime(office_id).auth.authority.authenticate(authorization)
         assert slot.authority is not None
         try:
@@ -314,6 +376,10 @@ class Offices:
         slot = self.slots[office_id]
         if not self.several and slot.runtime is not None:
             lease = slot.runtime.office_lease  # replicas of one office: the lease's holder
+            if lease is not None and lease.lease is not None:
+                return lease.holder
+            if self.leases is not None:  # a standby: whoever the shared lease names
+                return self._lease_holder(slot.display)
             return lease.holder if lease is not None else self.replica
         if slot.stack is not None:
             return self.replica
@@ -321,10 +387,25 @@ class Offices:
             return self.balancer.holders().get(office_id)
         return None
 
+    def _lease_holder(self, office_name: str) -> str | None:
+        """The replica whose unexpired lease holds the office (one office on replicas)."""
+        assert self.leases is not None
+        now = time.time()
+        for lease in self.leases.holders():
+            if lease.office == office_name and lease.holder and lease.expires_at > now:
+                return lease.holder
+        return None
+
     def runs_here(self, office_id: str) -> bool:
-        """Whether this process runs ``office_id`` (ready or still starting)."""
+        """Whether this process runs ``office_id`` (ready or still starting; a standby of
+        one office waiting for its lease does not)."""
         slot = self.slots[office_id]
-        return slot.runtime is not None if not self.several else slot.stack is not None
+        if self.several:
+            return slot.stack is not None
+        if slot.runtime is None:
+            return False
+        lease = slot.runtime.office_lease
+        return self.leases is None or (lease is not None and lease.lease is not None)
 
     def status(self, office_id: str) -> str:
         slot = self.slots[office_id]
@@ -344,6 +425,30 @@ class Offices:
                 "status": self.status(slot.spec.id),
             }
             for slot in slots
+        ]
+
+    def replicas(self) -> list[ReplicaView]:
+        """Every replica this one knows of, with its health and the offices it runs: the
+        live ones (heartbeats; one office: this replica and the holder of the unexpired
+        lease) and any that still hold an office's lease without a live heartbeat (down).
+        Without a database, this process alone."""
+        runs: dict[str, list[str]] = {}
+        for office in self.slots:
+            holder = self.holder(office)
+            if holder is not None:
+                runs.setdefault(holder, []).append(office)
+        balancer = self.balancer
+        live = set(balancer.replicas) if balancer is not None else {self.replica, *runs}
+        ages = balancer.heartbeat_ages() if balancer is not None else {}
+        return [
+            ReplicaView(
+                id=replica,
+                here=replica == self.replica,
+                up=replica in live,
+                heartbeat_age_s=ages.get(replica),
+                offices=runs.get(replica, []),
+            )
+            for replica in sorted(live | set(runs))
         ]
 
     def running(self) -> list[ServiceRuntime]:

@@ -6,12 +6,12 @@ where the office's assistant runs on the replica answering; ``assistantx_replica
 {replica}`` counts the offices each live replica runs, so a scrape of any one replica shows
 the spread; ``assistantx_replica_up{replica}`` and
 ``assistantx_replica_heartbeat_age_seconds{replica}`` say each replica's health as the shared
-leases show it. Only with several offices (one office keeps today's series alone).
+leases show it. With several offices, and with one office on replicas (every replica, a
+standby too, says who holds it); one office on its own keeps today's series alone.
 """
 
 from __future__ import annotations
 
-from collections import Counter
 from collections.abc import Iterator
 
 from prometheus_client import CollectorRegistry, generate_latest
@@ -37,39 +37,33 @@ class _OfficeCollector(Collector):
             "1 where the office's assistant runs on this replica",
             labels=["office"],
         )
-        per_replica: Counter[str] = Counter()
         for office in offices.slots:
             replica = offices.holder(office)
             if replica is not None:
                 holder.add_metric([office, replica], 1.0)
-                per_replica[replica] += 1
             ready.add_metric([office], 1.0 if offices.status(office) == READY else 0.0)
         counts = GaugeMetricFamily(
             "assistantx_replica_offices",
             "offices each live replica runs",
             labels=["replica"],
         )
-        balancer = offices.balancer
-        live = balancer.replicas if balancer is not None else [offices.replica]
-        for replica in sorted(set(live) | set(per_replica)):
-            counts.add_metric([replica], float(per_replica[replica]))
         up = GaugeMetricFamily(
             "assistantx_replica_up",
             "1 for a replica whose heartbeat is live; 0 for one that still holds an office's"
             " lease without it",
             labels=["replica"],
         )
-        for replica in sorted(set(live) | set(per_replica)):
-            up.add_metric([replica], 1.0 if replica in live else 0.0)
         age = GaugeMetricFamily(
             "assistantx_replica_heartbeat_age_seconds",
             "seconds since each live replica last heartbeat, as this replica last read the"
             " leases (a stalled replica's grows towards the lease's time)",
             labels=["replica"],
         )
-        if balancer is not None:
-            for replica, seconds in sorted(balancer.heartbeat_ages().items()):
-                age.add_metric([replica], seconds)
+        for view in offices.replicas():
+            counts.add_metric([view.id], float(len(view.offices)))
+            up.add_metric([view.id], 1.0 if view.up else 0.0)
+            if view.heartbeat_age_s is not None:
+                age.add_metric([view.id], view.heartbeat_age_s)
         yield from (holder, ready, counts, up, age)
 
 

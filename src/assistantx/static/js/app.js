@@ -188,7 +188,37 @@ async function refreshRobot() {
 }
 
 async function refreshAll() {
-  await Promise.all([refreshInstructions(), refreshSelected(), refreshMemory(), chats.refresh(), refreshLocker(), refreshRobot()]);
+  await Promise.all([refreshInstructions(), refreshSelected(), refreshMemory(), chats.refresh(), refreshLocker(), refreshRobot(), refreshReplicas()]);
+}
+
+// Replicas on one database: each one's health and the offices it runs, refreshed with the
+// page, so a watcher sees a takeover (a replica down, its offices run by another) without
+// reading /metrics. Hidden without replicas, and for a colleague's token (operator only).
+async function refreshReplicas() {
+  const panel = $("#replicas");
+  let replicas = [];
+  let offices = [];
+  try {
+    [replicas, offices] = await Promise.all([api("/v1/replicas"), api("/v1/offices")]);
+  } catch {
+    replicas = [];
+  }
+  const names = new Map(offices.map((o) => [o.id, o.name]));
+  panel.hidden = replicas.length === 0;
+  replace(
+    $("#replicas-table tbody"),
+    ...replicas.map((r) => {
+      const age = r.heartbeat_age_s == null ? "" : ` (heartbeat ${r.heartbeat_age_s.toFixed(1)} s ago)`;
+      const runs = r.offices.map((id) => names.get(id) ?? "an office not yours").join(", ");
+      return h(
+        "tr",
+        { "data-replica": r.id },
+        h("td", {}, r.here ? `${r.id} (answering this page)` : r.id),
+        h("td", {}, r.up ? `up${age}` : "down"),
+        h("td", {}, runs || "no office"),
+      );
+    }),
+  );
 }
 
 // Coalesce bursts of events into one refresh; never two refreshes at once.
