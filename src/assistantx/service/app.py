@@ -9,10 +9,10 @@ from collections.abc import AsyncIterator, Callable
 from contextlib import AsyncExitStack, asynccontextmanager
 from pathlib import Path
 
-from fastapi import APIRouter, FastAPI
+from fastapi import FastAPI
 from fastapi.responses import FileResponse
 from fastapi.staticfiles import StaticFiles
-from starlette.routing import BaseRoute
+from starlette.routing import BaseRoute, Route
 
 from assistantx.adapters.messenger.matrix.appservice import (
     MAX_PUSH_BODY_BYTES,
@@ -39,6 +39,7 @@ from assistantx.service.errors import install_error_handlers
 from assistantx.service.offices import routes as office_routes
 from assistantx.service.offices.directory import Offices
 from assistantx.service.offices.routing import OfficeRouting, office_of
+from assistantx.service.pushes import OfficePushes
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
 
@@ -46,6 +47,9 @@ logger = logging.getLogger(__name__)
 
 STATIC_DIR = Path(__file__).resolve().parents[1] / "static"
 
+
+PUSH_ROUTE = PUSH_PATH_PREFIX + "{rest:path}"
+"""Every office's push endpoints, told apart by their homeserver token (``pushes``)."""
 
 PATH_BODY_LIMITS = (PathLimit(PUSH_PATH_PREFIX, MAX_PUSH_BODY_BYTES, push_too_large_error),)
 """Routes with their protocol's own body limit and 413 format: a Matrix transaction may hold
@@ -64,24 +68,23 @@ def create_app(
     ``on_lease_lost``: one office, replicas: another replica took the office over."""
     settings = settings or Settings()
     offices = Offices(settings, data_lock, on_lease_lost)  # DeploymentError: a bad file
-    pushes: list[BaseRoute] = []
+    pushes = OfficePushes()
+    mounted: list[BaseRoute] = []
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         async with AsyncExitStack() as stack:
             # Unmounted once everything stopped: a push during shutdown still gets the
-            # stopped messenger's 500 and is retried by the homeserver.
-            stack.callback(_unmount, app, pushes)
+            # stopped office's 503 and is retried by the homeserver.
+            stack.callback(_unmount, app, mounted)
 
-            def mount_pushes(runtime: ServiceRuntime) -> None:
-                if runtime.matrix is not None:  # built by start: the homeserver's pushes
-                    pushes.extend(_mount_first(app, runtime.matrix.push_router))
+            def mount_pushes(office_id: str, runtime: ServiceRuntime) -> None:
+                # Each office as it starts here, whenever that is: its homeserver's pushes.
+                if pushes.add(office_id, runtime) and not mounted:
+                    mounted.append(_mount_first(app, Route(PUSH_ROUTE, endpoint=pushes)))
 
-            offices.on_started = mount_pushes  # one office on replicas: once it holds it
+            offices.on_started = mount_pushes
             await offices.start(stack)
-            for runtime in offices.running():
-                if runtime.ready:
-                    mount_pushes(runtime)
             running = offices.serving(None)
             # The process's CPU time so far (all threads): what a start cost, as the service
             # itself counts it (bench/serve_start.py reads it; from outside, a probe's answer
@@ -153,14 +156,11 @@ def create_app(
     return app
 
 
-def _mount_first(app: FastAPI, router: APIRouter) -> list[BaseRoute]:
-    """Mount ``router``'s routes ahead of the others (the static files at "/" take every path
-    they reach); returns them, for ``_unmount``."""
-    before = list(app.router.routes)
-    app.include_router(router)
-    added = [route for route in app.router.routes if route not in before]
-    app.router.routes[:] = [*added, *before]
-    return added
+def _mount_first(app: FastAPI, route: BaseRoute) -> BaseRoute:
+    """Mount ``route`` ahead of the others (the static files at "/" take every path they
+    reach); returns it, for ``_unmount``."""
+    app.router.routes.insert(0, route)
+    return route
 
 
 def _unmount(app: FastAPI, routes: list[BaseRoute]) -> None:

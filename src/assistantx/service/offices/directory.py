@@ -111,8 +111,9 @@ class Offices:
         self.balancer: Balancer | None = None
         self.started = False
         self.standing_by = False  # one office on replicas: until its assistant first runs here
-        # Called with that office's runtime once it runs (the app mounts its Matrix pushes).
-        self.on_started: Callable[[ServiceRuntime], None] | None = None
+        # Called with an office's id and runtime each time it starts running here, at start-up
+        # or later (the balancer took it over): the app routes its Matrix pushes to it.
+        self.on_started: Callable[[str, ServiceRuntime], None] | None = None
         self.generated_token: str | None = None  # the deployment operator's, when generated
         self._deployment_operator = ""
         if not self.several:  # today's service: its runtime exists before it starts
@@ -131,6 +132,7 @@ class Offices:
                 return
             await runtime.start(stack)
             self.slots[self.home].display = runtime.office.name
+            self._started(self.home, runtime)
             self.started = True
             return
         await asyncio.to_thread(self._build_authorities)
@@ -179,8 +181,7 @@ class Offices:
             try:
                 await runtime.start(own)
                 self.standing_by = False  # from now on it answers as the holder, or not at all
-                if self.on_started is not None:
-                    self.on_started(runtime)
+                self._started(self.home, runtime)
             except Exception:
                 logger.exception("the office could not start on this replica")
                 if self.on_lease_lost is not None:
@@ -256,7 +257,12 @@ class Offices:
             if lease is None:
                 raise  # one process runs every office: a bad office stops the start-up
             return
+        self._started(office_id, runtime)
         logger.info("office %s runs on this replica (%s)", office_id, self.replica)
+
+    def _started(self, office_id: str, runtime: ServiceRuntime) -> None:
+        if self.on_started is not None:
+            self.on_started(office_id, runtime)
 
     async def _stop_office(self, office_id: str) -> None:
         slot = self.slots[office_id]

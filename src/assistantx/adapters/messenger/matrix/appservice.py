@@ -54,7 +54,8 @@ def push_too_large_error(limit_bytes: int) -> dict[str, str]:
     return {"errcode": "M_TOO_LARGE", "error": f"the request body exceeds {limit_bytes} bytes"}
 
 
-def _presented_token(request: Request) -> str | None:
+def presented_token(request: Request) -> str | None:
+    """The homeserver token a push presents; None without one ("" for a malformed header)."""
     header = request.headers.get("authorization")
     if header is not None:
         scheme, _, token = header.partition(" ")
@@ -65,14 +66,26 @@ def _presented_token(request: Request) -> str | None:
 
 
 def _authenticate(request: Request, hs_token: SecretStr) -> JSONResponse | None:
-    presented = _presented_token(request)
+    presented = presented_token(request)
     if presented is None:
-        return matrix_error(401, "M_UNAUTHORIZED", "missing homeserver token")
-    expected = hs_token.get_secret_value().encode()
-    if not hmac.compare_digest(presented.encode(), expected):
+        return unauthorized()
+    if not token_matches(presented, hs_token):
         logger.warning("refused a push with a wrong homeserver token from %s", request.client)
-        return matrix_error(403, "M_FORBIDDEN", "invalid homeserver token")
+        return forbidden()
     return None
+
+
+def token_matches(presented: str, hs_token: SecretStr) -> bool:
+    """Whether ``presented`` is ``hs_token``, compared in constant time."""
+    return hmac.compare_digest(presented.encode(), hs_token.get_secret_value().encode())
+
+
+def unauthorized() -> JSONResponse:
+    return matrix_error(401, "M_UNAUTHORIZED", "missing homeserver token")
+
+
+def forbidden() -> JSONResponse:
+    return matrix_error(403, "M_FORBIDDEN", "invalid homeserver token")
 
 
 def _room_events(body: Any) -> list[RoomEvent] | None:
