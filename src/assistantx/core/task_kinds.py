@@ -32,7 +32,9 @@ words. The fields:
 - ``ask``: what the doer of a person-to-person kind is asked to do ({whose}: the item's phrase,
   {your}: "your" to one person, "a" to a group);
 - ``words``: the English words that ask for a person-to-person kind, for the simulated
-  people's reading (the built-in kinds keep theirs in ``data/english.yaml``).
+  people's reading (the built-in kinds keep theirs in ``data/english.yaml``);
+- ``which_item``: the words after "Which item do you mean" when a request names no item ("for
+  me to bring"; a kind run by an office's service is asked about in the service's names).
 
 The table is the one source of the kinds: the schema's ``TaskKind``, the dataset's part kinds
 and the lock's code purposes are checked against it when a task, a part or a code is built,
@@ -84,6 +86,9 @@ class KindSpec:
     tool: ItemProperty | None = None
     ask: str | None = None
     words: tuple[str, ...] = ()
+    # "Which item do you mean <which_item>?" when a request names none ("for me to bring");
+    # a kind run by an office's service is asked about in the service's own names instead
+    which_item: str = ""
 
     @property
     def works_at_locker(self) -> bool:
@@ -103,6 +108,7 @@ def _work(purpose: str) -> tuple[Step, ...]:
 _BUILT_IN: tuple[KindSpec, ...] = (
     KindSpec(
         id="transfer",
+        which_item="for me to bring",
         parts=("fetch", "deliver"),
         milestone="holds",
         steps=(Step("source", "deposit"), Step("recipient", "collect")),
@@ -133,6 +139,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
     ),
     KindSpec(
         id="sign",
+        which_item="to be signed",
         parts=("sign",),
         milestone="signed",
         by_person=True,
@@ -147,6 +154,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
     ),
     KindSpec(
         id="seal",
+        which_item="to be stamped",
         parts=("seal",),
         milestone="sealed",
         by_person=True,
@@ -188,6 +196,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
     ),
     KindSpec(
         id="send_file",
+        which_item="for me to pass on",
         parts=("forward_file", "get_file"),
         milestone="received",
         works_on="electronic",

@@ -40,14 +40,6 @@ _JOIN_WORDS = english.words("clause_joins")
 _SKIP_AFTER_JOIN = english.words("skip_after_join")
 
 
-# The person-to-person kinds' words for "which item?" (the office's services use their names).
-_ASKED_TO = {
-    "transfer": "for me to bring",
-    "send_file": "for me to pass on",
-    "sign": "to be signed",
-    "seal": "to be stamped",
-}
-
 NOT_UNDERSTOOD = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
 )
@@ -224,7 +216,7 @@ class FrameReader:
         names = [op.name for op in self.office.with_shape(shape)] if shape else []
         if names:
             return f"for me to {' or '.join(dict.fromkeys(names))}"
-        return _ASKED_TO.get(kind, "")
+        return task_kinds.kind(kind).which_item
 
     def _check(self, tasks: list[Task], requester: str) -> str | None:
         if not tasks:
