@@ -411,6 +411,7 @@ class ServiceRuntime:
             anchors_yaml=s.map_anchors,
             localize=s.robot_localize,
             start=place,
+            search_off_loop=True,
         )
 
     def _join_fleet(self) -> None:
