@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import threading
 
 import pytest
@@ -77,3 +78,21 @@ def test_the_warm_up_never_holds_up_the_process_exit() -> None:
     assert thread.daemon
     release.set()
     thread.join(10)
+
+
+async def test_waiting_for_a_factory_being_built_leaves_the_loop_free() -> None:
+    release = threading.Event()
+    made = _Built()
+
+    def build() -> ReasonerFactory:
+        # Set by the loop: a wait that held the loop would never see it (the guard ends it).
+        assert release.wait(timeout=10), "the wait held the loop"
+        return made
+
+    deferred = DeferredFactory(build)
+    deferred.warm_in_background()
+    waiting = asyncio.create_task(deferred.built())
+    await asyncio.sleep(0)
+    release.set()
+    await waiting
+    assert deferred.factory() is made

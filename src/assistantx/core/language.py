@@ -122,6 +122,15 @@ def is_mass_noun(phrase: str) -> bool:
     return plurals == (last,) and not last.endswith("s")
 
 
+def load_tables() -> None:
+    """Load now the lemma table and the word frequencies, which load on the first word that
+    needs them (gzip and msgpack reads, a wordfreq import): called where a stall is cheap,
+    so that the first instruction a service reads does not pay for them on its event loop
+    (bench/service_load.py: up to ~0.3 s there)."""
+    getAllLemmas("read")
+    _zipf_english("read")
+
+
 def _zipf_english(word: str) -> float:
     # wordfreq is imported on first use: its import finds its data through a stack walk that
     # costs a quarter CPU-second, and most commands and a service's start never ask.

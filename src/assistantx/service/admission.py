@@ -13,6 +13,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
+from collections.abc import Awaitable, Callable
 
 from assistantx.core.office import PersonId
 from assistantx.runtime.assistant import Assistant
@@ -22,8 +23,16 @@ logger = logging.getLogger(__name__)
 
 
 class Admission:
-    def __init__(self, assistant: Assistant, journal: Journal) -> None:
+    def __init__(
+        self,
+        assistant: Assistant,
+        journal: Journal,
+        reasoner_built: Callable[[], Awaitable[None]] | None = None,
+    ) -> None:
+        """``reasoner_built``: awaited before each start, so that starting an instruction
+        never waits on the loop for a reasoner still being built (service.reasoner_warmup)."""
         self._assistant = assistant
+        self._reasoner_built = reasoner_built
         self._journal = journal
         self._queue: asyncio.Queue[InstructionRecord | None] = asyncio.Queue()
         self._waiting: set[str] = set()
@@ -64,6 +73,10 @@ class Admission:
             record = await self._queue.get()
             if record is None or self._stopping:
                 return
+            if self._reasoner_built is not None:
+                await self._reasoner_built()  # still withdrawable meanwhile
+                if self._stopping:
+                    return
             if record.id not in self._waiting:
                 continue  # withdrawn
             self._waiting.discard(record.id)  # from here on, cancelling it cancels the run

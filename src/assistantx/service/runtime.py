@@ -259,7 +259,10 @@ class ServiceRuntime:
             skipped.append(self.matrix.messenger.skipped_events)
         self.metrics.count_skipped(*skipped)
         self.metrics.registry.register(RobotGauges(lambda: robot_states(self)))
-        self.admission = Admission(self.assistant, self.journal)
+        deferred = self._deferred_reasoner
+        self.admission = Admission(
+            self.assistant, self.journal, deferred.built if deferred is not None else None
+        )
         self.rate = InstructionRate(s.instructions_per_minute)
         self.assistant.intercept_direct_messages(self._over_the_rate)
         self.assistant.on_instruction_start(self._register_with_sim)
@@ -411,6 +414,7 @@ class ServiceRuntime:
             anchors_yaml=s.map_anchors,
             localize=s.robot_localize,
             start=place,
+            search_off_loop=True,
         )
 
     def _join_fleet(self) -> None:

@@ -115,10 +115,14 @@ class NavigatorRobot(RobotBase):
         world: GroundTruth | None = None,
         traffic: Traffic | None = None,
         name: str = "robot",
+        search_off_loop: bool = False,
     ) -> None:
         """``traffic``: robots sharing this map (a fleet); this one, called ``name`` there,
         claims the floor it drives over and yields to the others (nav.traffic). None: alone
-        on the floor, driving exactly as before."""
+        on the floor, driving exactly as before. ``search_off_loop``: the kinematic base's
+        path searches run in a worker thread (a service's loop keeps serving meanwhile);
+        off where the loop keeps virtual time (``sim.virtual_time``), which jumps ahead
+        while it waits for a thread."""
         super().__init__()
         where = f"{anchors_file}: " if anchors_file is not None else ""
         missing = sorted({loc.id for loc in office.locations} - anchors.keys())
@@ -164,6 +168,7 @@ class NavigatorRobot(RobotBase):
         self._lock = asyncio.Lock()
         self.traffic = traffic
         self.name = name
+        self.search_off_loop = search_off_loop
         if traffic is not None:
             traffic.stand(name, home.x, home.y)
 
@@ -180,6 +185,7 @@ class NavigatorRobot(RobotBase):
         start: str | None = None,
         traffic: Traffic | None = None,
         name: str = "robot",
+        search_off_loop: bool = False,
     ) -> NavigatorRobot:
         map_path = FilePath(map_yaml).resolve()
         anchors_path = FilePath(
@@ -203,6 +209,7 @@ class NavigatorRobot(RobotBase):
             anchors_file=anchors_path,
             traffic=traffic,
             name=name,
+            search_off_loop=search_off_loop,
         )
 
     async def _start(self) -> None:
@@ -238,9 +245,12 @@ class NavigatorRobot(RobotBase):
         nav = self._navigator
         anchor = self.anchors[location_id]
         started_at, odometer_before = nav.base.time_s, nav.base.odometer_m
-        if not self.localize:  # kinematic: cached paths, nothing worth a thread
-            path = self._plan(location_id)
+        if not self.localize and (not self.search_off_loop or self._has_path_to(location_id)):
+            path = self._plan(location_id)  # kinematic: a path at hand, or searched here
         else:
+            # A search: the kinematic base's first table of paths from a place (a plan_many
+            # to every anchor) held the service's loop for up to 1.2 s with 50 instructions
+            # running (bench/service_load.py); the compiled search releases the GIL.
             path = await asyncio.to_thread(self._plan, location_id)
         if self.traffic is not None:
             path = await self._yield_to_others(location_id, path)
@@ -466,6 +476,12 @@ class NavigatorRobot(RobotBase):
                     )
                     self._paths[(end, start)] = reverse
         return self._paths[(start, goal)]
+
+    def _has_path_to(self, location_id: str) -> bool:
+        """Whether the kinematic base's path there is in the table already (no search)."""
+        if self._place is None or self._obstacles:
+            return False
+        return (_xy(self.anchors[self._place]), _xy(self.anchors[location_id])) in self._paths
 
     def plan_to(self, location_id: str) -> Path:
         """The path the robot would take from where it is to ``location_id``."""

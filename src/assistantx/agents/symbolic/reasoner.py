@@ -23,6 +23,7 @@ from assistantx.agents.symbolic.planning import Agenda, Planner
 from assistantx.agents.symbolic.reading.parser import InstructionParser, TaskFrame
 from assistantx.agents.symbolic.reflection import Reflector
 from assistantx.agents.symbolic.roles import Roles
+from assistantx.core import language
 from assistantx.core.actions import Action, Stop
 from assistantx.core.office import Office
 from assistantx.core.trace import (
@@ -214,6 +215,9 @@ def build_factory(office: Office, settings: object) -> Callable[[], Reasoner]:
     """A factory making one SymbolicReasoner per instruction (the parser is shared)."""
     del settings  # nothing to configure: no model, no network
     parser = InstructionParser(office)
+    # Built in the service's warm-up thread: the reader's tables load there, not at the
+    # first instruction, on the loop.
+    language.load_tables()
     distance = office.distance
 
     def make() -> Reasoner:
