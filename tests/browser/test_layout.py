@@ -65,8 +65,13 @@ def _running_instruction(page: Page, server: Server) -> None:
     )
     assert created.status_code == 202, created.text
     ins = created.json()["id"]
+
+    def steps() -> int:
+        trace = server.api("GET", f"/v1/instructions/{ins}").json()["trace"]
+        return 0 if trace is None else len(trace["steps"])  # no trace while it waits to start
+
     eventually_sync(
-        lambda: len(server.api("GET", f"/v1/instructions/{ins}").json()["trace"]["steps"]) >= 1,
+        lambda: steps() >= 1,
         what="the instruction's first step",
         timeout_s=30,
         interval_s=0.2,
