@@ -139,7 +139,7 @@ async def test_a_small_structured_call_is_schema_valid_and_counted(
         Message(role="system", content="Answer with JSON: a word and a small number."),
         Message(role="user", content="Give one word and the number 3."),
     )
-    budget = server_speed.budget_s(prompt_tokens(messages), 40)
+    budget = server_speed.must_finish_budget_s(prompt_tokens(messages), 40)
     ledger = UsageLedger()
     served_before = requests_served(llama_server)
     # not streamed: llama-cpp-python reports usage on plain answers only
