@@ -14,11 +14,13 @@ from pathlib import Path
 from typing import Any
 
 import httpx
+import pytest
 import yaml
 
 from adapters.messenger.conftest import PUSH_YAML
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
+from assistantx.service.offices.deployment import DeploymentError, load_deployment
 from assistantx.service.offices.directory import Offices
 from helpers.eventually import eventually
 from helpers.servers import serving_app
@@ -37,9 +39,9 @@ def _deployment(folder: Path) -> Path:
     for entry in DEPLOYMENT["offices"]:
         config = folder / f"matrix-{entry['id']}.yaml"
         config.write_text(
-            PUSH_YAML.replace("hs-token", TOKENS[entry["id"]]).replace(
-                'people: {lee: "@lee:office.test"}', "people: {}"
-            ),
+            PUSH_YAML.replace("as-token", f"as-token-of-{entry['id']}")
+            .replace("hs-token", TOKENS[entry["id"]])
+            .replace('people: {lee: "@lee:office.test"}', "people: {}"),
             encoding="utf-8",
         )
         offices.append({**entry, "messenger": "matrix", "matrix_config": str(config)})
@@ -129,3 +131,31 @@ async def test_an_office_taken_over_later_gets_its_pushes_and_leaves_a_503(
             assert await _seen(a, kept, "a-kept")
             # B never ran the other office: its token is none of B's offices'.
             assert (await _push(b_api, "b-kept", TOKENS[kept])).status_code == 403
+
+
+@pytest.mark.parametrize("shared", ["hs-token", "as-token"])
+def test_two_offices_with_one_registration_token_are_refused_in_one_line(
+    tmp_path: Path, shared: str
+) -> None:
+    path = _deployment(tmp_path)
+    harbour = tmp_path / "matrix-harbour.yaml"
+    hq_text = (tmp_path / "matrix-hq.yaml").read_text(encoding="utf-8")
+    if shared == "hs-token":
+        harbour.write_text(hq_text, encoding="utf-8")  # the same file's tokens: both shared
+    else:
+        # only the application-service token is the other office's
+        harbour_text = harbour.read_text(encoding="utf-8")
+        harbour.write_text(
+            harbour_text.replace("as-token-of-harbour", "as-token-of-hq"), encoding="utf-8"
+        )
+    with pytest.raises(DeploymentError) as caught:
+        load_deployment(Settings(offices=path))
+    message = str(caught.value)
+    assert message.startswith(str(path)) and "\n" not in message
+    assert "'hq' and 'harbour'" in message and shared.replace("-", "_") in message
+    assert "token-of" not in message  # no secret shown
+
+
+def test_offices_with_their_own_registrations_load(tmp_path: Path) -> None:
+    specs = load_deployment(Settings(offices=_deployment(tmp_path)))
+    assert [s.id for s in specs] == list(OFFICES)

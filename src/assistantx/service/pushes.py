@@ -14,8 +14,8 @@ goes to the office whose token it presents:
 - no office here has that token: ``401 M_UNAUTHORIZED`` without a token, ``403 M_FORBIDDEN``
   with another one, as the application-service API specifies.
 
-A newer runtime of an office replaces a stopped one's routes; two offices sharing one token
-are a configuration mistake, and the first running one listed gets the pushes.
+A newer runtime of an office replaces a stopped one's routes. Two offices sharing one token
+are refused when the deployment file is read (``offices.deployment``).
 """
 
 from __future__ import annotations

@@ -104,7 +104,37 @@ def _read(path: Path, base: Settings) -> list[OfficeSpec]:
         if any(s.id == spec.id for s in specs):
             raise DeploymentError(f"{where}: office {n}: the id {spec.id!r} is listed twice")
         specs.append(spec)
+    _one_registration_each(specs, where)
     return specs
+
+
+def _one_registration_each(specs: list[OfficeSpec], where: str) -> None:
+    """Refuse two offices on Matrix with one application-service token: the pushes of one
+    homeserver token reach one office only, so the other office's people would be answered
+    by nobody (or by the wrong office) with nothing in any log saying why."""
+    from assistantx.adapters.messenger.matrix.config import load_matrix_config
+    from assistantx.core.errors import MessengerError
+
+    seen: dict[tuple[str, str], str] = {}
+    for spec in specs:
+        path = spec.settings.matrix_config
+        if spec.settings.messenger != "matrix" or path is None:
+            continue
+        try:
+            config = load_matrix_config(path)
+        except MessengerError:
+            continue  # the office's own start says what is wrong with its file
+        tokens = (
+            ("homeserver token (hs_token)", config.hs_token.get_secret_value()),
+            ("application service token (as_token)", config.as_token.get_secret_value()),
+        )
+        for name, token in tokens:
+            other = seen.setdefault((name, token), spec.id)
+            if other != spec.id:
+                raise DeploymentError(
+                    f"{where}: offices {other!r} and {spec.id!r} have the same {name}: give"
+                    " each office its own application-service registration"
+                )
 
 
 def _office(
