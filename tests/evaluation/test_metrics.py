@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+import pytest
+
 from assistantx.core.actions import (
     Action,
     ForwardFile,
@@ -16,8 +18,14 @@ from assistantx.core.actions import (
     WaitInPlace,
 )
 from assistantx.core.trace import ActionResult, Trace, TraceStep
-from assistantx.evaluation.episode import Episode, Handover
-from assistantx.evaluation.metrics import judge_actions, score, success, wrong_handovers
+from assistantx.evaluation.episode import Episode, Handover, SentOut
+from assistantx.evaluation.metrics import (
+    judge_actions,
+    score,
+    success,
+    wrong_handovers,
+    wrong_sends,
+)
 
 STAPLER_GOAL = [{"holds": ["lee", "stapler:*"]}, {"informed": "lee"}]
 PEOPLE = ["lee", "wang", "zhang", "hu", "gao", "office_work", "study_group"]
@@ -170,6 +178,33 @@ def test_owner_taking_their_item_back_is_not_wrong() -> None:
     back = [Handover(item="stapler:wang", to="wang")]
     episode = _episode(_perfect(), outcome="done", milestones=[True, True], handovers=back)
     assert wrong_handovers(episode) == []
+
+
+FAX_WORDS = "scan it at the robot to take Lee Ming's form out and fax it to {where}."
+
+
+@pytest.mark.parametrize(
+    ("told", "right"),
+    [
+        ("the County  Tax Office", True),  # the requester's words, in any case and spacing
+        ("the tax office", False),  # not what the requester named
+        ("", False),  # faxed with no word of where to
+    ],
+)
+def test_an_item_sent_out_counts_only_where_its_sender_was_told_the_destination(
+    told: str, right: bool
+) -> None:
+    episode = _episode(
+        _perfect(), outcome="done", milestones=[True, True], handovers=HANDED
+    ).model_copy(
+        update={
+            "sent_out": [SentOut(item="form:lee", told=FAX_WORDS.format(where=told))],
+            "destinations": ["the county tax office"],
+        }
+    )
+    assert wrong_sends(episode) == ([] if right else ["form:lee"])
+    s = score(episode)
+    assert (s.sr, s.wrong_handover) == ((1.0, False) if right else (0.0, True))
 
 
 def test_goal_unmet_or_not_done_fails() -> None:

@@ -97,6 +97,11 @@ class SendQR(_Action):
         description="the office operation a work step runs, when a facility offers several of "
         "its shape (copy and scan at one machine): the code's text names it",
     )
+    destination: str | None = Field(
+        default=None,
+        description="where an operation that sends the item outside sends it, in the "
+        "requester's words ('the county tax office'): the code's text names it",
+    )
 
     @property
     def kind(self) -> ActionKind:

@@ -37,10 +37,12 @@ def purpose_text(
     *,
     you: str | None = None,
     operation: str | None = None,
+    destination: str | None = None,
 ) -> str:
     """What the person does at the locker for a code of ``purpose`` on ``item_id``, in the
     office's words: "take your document out, scan it and put the original and the scan back"
-    where the office's operation of the copy shape is a scan."""
+    where the office's operation of the copy shape is a scan; "take Lee's form out and fax it
+    to the county tax office" where it sends the item outside (``destination``)."""
     thing = item_phrase(office, item_id, you=you)
     shape = kind_shape(purpose)
     op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
@@ -54,7 +56,8 @@ def purpose_text(
     if shape == "transform":
         return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
     if not op.returns_item:  # shredded, faxed out: nothing goes back into the locker
-        return f"take {thing} out and {op.name} it"
+        to = f" to {destination}" if op.sends_out and destination else ""
+        return f"take {thing} out and {op.name} it{to}"
     return f"take {thing} out, {op.name} it and put it back"
 
 

@@ -22,6 +22,13 @@ class Handover(BaseModel):
     time: float = 0.0
 
 
+class SentOut(BaseModel):
+    """An item a colleague sent outside the office, and what they were told to do with it."""
+
+    item: str
+    told: str
+
+
 class Episode(BaseModel):
     task_id: str
     run: int = Field(ge=0)
@@ -39,6 +46,10 @@ class Episode(BaseModel):
     relevant_places: list[str] = Field(default_factory=list, description="location ids")
     milestones: list[bool] = Field(description="which goal milestones hold at the end")
     handovers: list[Handover] = Field(default_factory=list)
+    sent_out: list[SentOut] = Field(default_factory=list)
+    destinations: list[str] = Field(
+        default_factory=list, description="where the task's send-out parts go (its truth)"
+    )
     trace: Trace
     wall_s: float = 0.0
     sim_time_s: float = 0.0

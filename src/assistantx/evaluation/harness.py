@@ -20,7 +20,7 @@ from assistantx.core.errors import AssistantXError, DatasetError
 from assistantx.core.office import Office, PersonId, load_office
 from assistantx.core.settings import Settings
 from assistantx.evaluation.dataset.tasks import Task, load_tasks
-from assistantx.evaluation.episode import Episode, Handover
+from assistantx.evaluation.episode import Episode, Handover, SentOut
 from assistantx.evaluation.methods import MethodBuilder, MethodSpec, ModelBuilder
 from assistantx.evaluation.metrics import success
 from assistantx.evaluation.relevance import relevant_people, relevant_places
@@ -141,6 +141,11 @@ async def run_episode(
         relevant_places=sorted(relevant_places(office, people)),
         milestones=sim.check(task.goal),
         handovers=handovers,
+        sent_out=[
+            SentOut(item=str(e.detail["item"]), told=str(e.detail["told"]))
+            for e in sim.world.sent_out()
+        ],
+        destinations=[p.destination for p in task.spec or () if p.destination],
         trace=trace,
         wall_s=round(time.perf_counter() - started, 4),
         sim_time_s=round(sim.clock.now(), 1),

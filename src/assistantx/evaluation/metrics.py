@@ -4,7 +4,8 @@
   with ``done`` (the requester was told, and told the truth) and nothing was handed to the
   wrong person. For an unachievable task the method stopped with ``unachievable`` (the stop
   message tells the requester why), made no false claim (a ``done`` fails) and handed nothing
-  to the wrong person.
+  to the wrong person. In both, nothing was sent outside the office (faxed, couriered) with
+  words that do not name where the requester wanted it to go.
 - **CR** (completion): milestones reached / milestones in the goal. The ``informed``
   milestone of an unachievable task counts only when the requester was told ``unachievable``;
   that of the requester in an achievable task only when they were told ``done``: being told
@@ -108,8 +109,19 @@ def wrong_handovers(episode: Episode) -> list[str]:
     return wrong
 
 
+def _words(text: str) -> str:
+    return " ".join(text.casefold().split())
+
+
+def wrong_sends(episode: Episode) -> list[str]:
+    """Items sent outside the office whose sender was not told where the requester wanted
+    them to go (their code's words name none of the task's destinations)."""
+    wanted = [_words(d) for d in episode.destinations]
+    return [s.item for s in episode.sent_out if not any(w in _words(s.told) for w in wanted)]
+
+
 def success(episode: Episode) -> bool:
-    if episode.error is not None or wrong_handovers(episode):
+    if episode.error is not None or wrong_handovers(episode) or wrong_sends(episode):
         return False
     if episode.achievable:
         return outcome(episode) == "done" and all(episode.milestones)
@@ -214,7 +226,7 @@ def score(episode: Episode) -> Scores:
         rta=_share(v for v in verdicts if v.result.action.type in REAL),
         actions=len(verdicts),
         redundant=redundant,
-        wrong_handover=bool(wrong_handovers(episode)),
+        wrong_handover=bool(wrong_handovers(episode) or wrong_sends(episode)),
         steps=len(episode.trace.steps),
         llm_calls=usage.llm_calls,
         prompt_tokens=usage.prompt_tokens,

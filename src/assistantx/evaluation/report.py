@@ -109,7 +109,8 @@ def markdown(summary: dict[str, Any]) -> str:
     if all_entry:
         lines += [
             "",
-            f"Wrong hand-overs: {all_entry['wrong_handovers']}; episodes the harness could "
+            "Wrong hand-overs (an item to the wrong person, or sent out with no word of where"
+            f" to): {all_entry['wrong_handovers']}; episodes the harness could "
             f"not finish: {all_entry['errors']}.",
         ]
     return "\n".join(lines) + "\n"

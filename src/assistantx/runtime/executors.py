@@ -269,6 +269,7 @@ class Executor:
             action.item,
             you=action.contact,
             operation=action.operation,
+            destination=action.destination,
         )
         if earlier is not None and earlier.delivered:
             # Sent before a crash cut this step short: the person holds that code, and it is

@@ -268,6 +268,8 @@ def perform_handover(
         op = _operation_here(world, person, place, ("treat",), told)
         if op is not None and not op.returns_item:  # shredded, faxed out: it stays there
             world.move_item(time, item, place, by=person)
+        if op is not None and op.sends_out:  # sent where their code's message said
+            world.note(time, "sent_out", item=item, by=person, told=told)
     elif (spec := task_kinds.of_purpose(purpose)) is not None and spec.by_person:
         world.worked.add((spec.milestone, item, person))  # an added kind's work by hand
         world.note(time, spec.milestone, item=item, by=person)

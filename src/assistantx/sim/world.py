@@ -177,3 +177,8 @@ class World:
 
     def handovers(self) -> list[WorldEvent]:
         return [e for e in self.log if e.kind == "item_moved"]
+
+    def sent_out(self) -> list[WorldEvent]:
+        """Items a colleague sent outside the office (faxed, couriered), each with the
+        words of the code that asked them to: where it went is what those words said."""
+        return [e for e in self.log if e.kind == "sent_out"]

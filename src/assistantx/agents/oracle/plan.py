@@ -44,6 +44,7 @@ class Code:
     item: str  # item id; "{role}" is replaced by the role's person when resolved
     purpose: str
     operation: str | None = None  # the office operation of a work step (scan, not copy)
+    destination: str | None = None  # where a send-out operation sends the item
 
 
 @dataclass(frozen=True)
@@ -344,11 +345,13 @@ def _add_part(
             keeper = office.keeper(a, source)
             thing = office.item_type(source).name
             place_name = office.facility(facility_for(office, op.id)).name
+            # who sends it outside is told where to, as the embedded planner tells them
+            to = f" to {part.destination}" if op.sends_out and part.destination else ""
             op_role = _guard(
                 office,
                 op.id,
-                f"Could you {op.name} {who}'s {thing} at the {place_name}?",
-                f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
+                f"Could you {op.name} {who}'s {thing} at the {place_name}{to}?",
+                f"Could anyone {op.name} {who}'s {thing} at the {place_name}{to}?",
             )
             if keeper is not None:  # kept at a facility (a lunch in the fridge)
                 keeper_role = Role(
@@ -371,7 +374,15 @@ def _add_part(
                 Visit(
                     op_role.facility or "",
                     op_role.key,
-                    (Code(op_role.key, kept, "heat", op.id),),
+                    (
+                        Code(
+                            op_role.key,
+                            kept,
+                            "heat",
+                            op.id,
+                            part.destination if op.sends_out else None,
+                        ),
+                    ),
                 )
             )
             plan.add_goal({"heated": kept})

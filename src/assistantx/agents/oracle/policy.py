@@ -281,7 +281,11 @@ def optimal_script(
             purpose: Purpose = code.purpose
             batch.append(
                 SendQR(
-                    contact=person, item=item_of(code), purpose=purpose, operation=code.operation
+                    contact=person,
+                    item=item_of(code),
+                    purpose=purpose,
+                    operation=code.operation,
+                    destination=code.destination,
                 )
             )
         batch.append(WaitInPlace(person=person, timeout_s=HANDOVER_TIMEOUT_S))

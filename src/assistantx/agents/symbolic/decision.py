@@ -148,7 +148,12 @@ class Decider:
         for item, purpose in view.pending:
             if not ev.holds_code(person, item, purpose):
                 work = op if purpose in task_kinds.work_purposes() else None
-                actions.append(SendQR(contact=person, item=item, purpose=purpose, operation=work))
+                dest = phase.role.destination if work else None
+                actions.append(
+                    SendQR(
+                        contact=person, item=item, purpose=purpose, operation=work, destination=dest
+                    )
+                )
         thought = f"hand-over with {self._name(person)} at {place_name(self.office, place)}"
         if any(isinstance(a, Move) for a in actions) and any(q.group for q in ev.questions):
             # Late helpers in a group chat may still write while the robot drives; their

@@ -362,6 +362,9 @@ class Planner:
                     item_owner=owner,
                     facility=None if spec.by_person else self._facility_for(t),
                     operation=None if spec.by_person else op,
+                    destination=t.destination
+                    if op is not None and self.office.operation(op).sends_out
+                    else None,
                 )
                 party = {"source": source, "doer": doer, "recipient": recipient}
                 steps = spec.steps

@@ -46,6 +46,7 @@ class Role:
     facility: str | None = None  # where a guard meets the robot
     beneficiary: str | None = None  # for whom
     operation: str | None = None  # the office operation a facility role runs
+    destination: str | None = None  # where a send-out operation sends it (requester's words)
 
     @property
     def confirm(self) -> bool:
@@ -146,6 +147,11 @@ class Roles:
                 return ask.format(whose=whose, your="a" if anyone else "your")
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
+            case "heat" if role.destination:  # the one who faxes it must know where to
+                return (
+                    f"{self._operation_name(role)} {self._whose(role)} {thing} in the {place}"
+                    f" to {role.destination}"
+                )
             case "heat":
                 return f"{self._operation_name(role)} {self._whose(role)} {thing} in the {place}"
             case "send_file":
