@@ -13,8 +13,9 @@ from assistantx.agents.symbolic.reading.screen.findings import DROPPED, Finding,
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces, without
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
-from assistantx.agents.symbolic.reading.screen.speech import content
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.agents.symbolic.reading.speech_acts import acts_reader
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Evidence
 
@@ -30,7 +31,8 @@ class RequestScreen:
     def screen(self, text: str, requester: str) -> Screened:
         terms = self.terms
         text, fixes = corrected(terms, text)
-        msg = Message(text=text, pieces=pieces(text, terms.lex.read))
+        acts = acts_reader(terms.acts, terms.self_words, split_words(text))
+        msg = Message(text=text, pieces=pieces(text, terms.lex.read, acts))
         findings: list[Finding] = []
         for piece in msg.pieces:
             for _, rule in RULES:
@@ -67,9 +69,7 @@ class RequestScreen:
                 return out
             if live or withdrawn:
                 return answered(out, live, withdrawn=bool(withdrawn))
-        if any(terms.acts.need(p.words, terms.self_words) for p in kept) and not any(
-            terms.acts.request(p.words) for p in kept
-        ):
+        if any(p.acts.need for p in kept) and not any(p.acts.request for p in kept):
             out.confirm = True  # "Min needs scissors.": restate and ask before moving
         context = [c for f in live if f.verdict in ("statement", "condition") for c in f.context]
         left, rewrites = rewrite(terms, msg, left, out.hints, context)

@@ -8,8 +8,8 @@ from __future__ import annotations
 import re
 
 from assistantx.agents.symbolic.reading.screen.pieces import Message
-from assistantx.agents.symbolic.reading.screen.speech import NEED_PHRASES
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.core import language
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
