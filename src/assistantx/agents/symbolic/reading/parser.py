@@ -88,10 +88,12 @@ class InstructionParser:
         negated, destructive, facts, unsupported services), the tasks read from what is left,
         then judged. ``confirmed``: the requester already said yes to the restated reading;
         ``sent_out``: a send-out to a colleague's name is meant to leave the office."""
-        screened = self.screen.screen(text, requester)  # stages 1 to 3, piece by piece
+        spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
+        request = self.screen.request(spoken)
+        frame = self._frame(text, request.text, requester, sent_out)  # stages 5 and 6
+        screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
-        frame = self._frame(text, screened.text, requester, sent_out)  # stages 1, 2, 4, 5
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _frame(self, text: str, request: str, requester: str, sent_out: bool) -> TaskFrame:
