@@ -46,7 +46,7 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
-from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexicon, Reading
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -90,18 +90,18 @@ class InstructionParser:
         ``sent_out``: a send-out to a colleague's name is meant to leave the office."""
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
-        frame = self._frame(text, request.text, requester, sent_out)  # stages 5 and 6
+        frame = self._frame(spoken.msg.lexed, request.text, requester, sent_out)  # 5 and 6
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
-    def _frame(self, text: str, request: str, requester: str, sent_out: bool) -> TaskFrame:
-        """The tasks of the request the screen left (``request``), read from its readings."""
-        lexed = self.lex.read(request)  # stages 1 and 2, once; later ones get it
-        # who has an item now is said anywhere, also in a statement the screen set aside
-        # ("P lent me her ruler. Please return it to her; it's on my desk")
-        whole = self.lex.read(text) if text != request else lexed
+    def _frame(self, whole: Lexed, request: str, requester: str, sent_out: bool) -> TaskFrame:
+        """The tasks of the request the screen left (``request``), read from its readings;
+        ``whole`` is the whole message as the lexicon read it for the screen: who has an item
+        now is said anywhere, also in a statement the screen set aside ("P lent me her
+        ruler. Please return it to her; it's on my desk")."""
+        lexed = self.lex.read(request)  # the rewritten request, read once; later stages get it
         readings = self.readings.read(lexed)
         frame = self.frames.frame(
             readings, requester, holder(whole, requester), named_items(whole, requester)

@@ -27,7 +27,8 @@ def message(terms: Terms) -> Read:
 
     def read(text: str) -> Message:
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
-        return Message(text=text, pieces=pieces(text, terms.lex.read, acts))
+        read = terms.lex.read
+        return Message(text=text, pieces=pieces(text, read, acts), lexed=read(text))
 
     return read
 

@@ -48,6 +48,7 @@ class Message:
 
     text: str
     pieces: list[Piece]
+    lexed: Lexed  # the whole message, read once by the lexicon (a rule that looks beyond its piece)
     noting: int | None = None  # where a note began ("note this down: ...")
     withdrawing: bool = False  # a withdrawal was read: what follows may be its reason
     negating: bool = False  # a negated errand was read: what follows may be its reason

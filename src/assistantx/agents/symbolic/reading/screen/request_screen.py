@@ -39,7 +39,9 @@ class RequestScreen:
         terms = self.terms
         text, fixes = corrected(terms, text)
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
-        msg = Message(text=text, pieces=pieces(text, terms.lex.read, acts))
+        msg = Message(
+            text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)
+        )
         findings: list[Finding] = []
         for piece in msg.pieces:
             for _, rule in RULES:
