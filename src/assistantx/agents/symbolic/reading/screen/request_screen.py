@@ -1,7 +1,8 @@
-"""The request screen: the message cut into pieces, each judged by the table of rules
-(``rules``), and what the pieces make of the whole: a decline, the replies to a message with
-no request, a "Shall I ...?", or the request left for the later stages, rewritten so they can
-read it (``rewrites``)."""
+"""The request screen in three steps: the message cut into pieces, each judged by the table of
+rules (``verdicts``); the request left for the later stages, rewritten so they can read it
+(``request``, ``rewrites``); and, once those stages have read it, what the pieces make of the
+whole (``decide``): a decline, the replies to a message with no request, a "Shall I ...?",
+or the request."""
 
 from __future__ import annotations
 
