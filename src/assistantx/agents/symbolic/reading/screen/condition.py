@@ -57,10 +57,8 @@ def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | No
         return None
     if words & _CONDITION_WORDS or piece.acts.later:
         return None
-    said = (
-        terms.named(piece.lexed, "item")
-        or terms.named(terms.lex.read(msg.text[: piece.start]), "item")[-1:]
-    )
+    before = (i for p in msg.pieces if p.end <= piece.start for i in terms.named(p.lexed, "item"))
+    said = terms.named(piece.lexed, "item") or list(dict.fromkeys(before))[-1:]
     if len(said) != 1:
         return None
     t = terms.office.item_type(said[0])
