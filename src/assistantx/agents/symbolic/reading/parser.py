@@ -7,23 +7,29 @@ own; none reaches back into an earlier one:
 
 1. ``tokens``: the words (Unicode), with their punctuation;
 2. ``lexicon``: typos corrected against the office's words, and the mentions of its people,
-   items, facilities, places and task words (``Lexed``); the message is read piece by piece
-   (sentences, and the comma parts of one) for the screen, then what is left as the request;
-3. ``screen`` (the speech acts): each lexed piece judged by the table of rules (a withdrawal,
-   a thanks, a wish, a question, a fact, a negation, something destructive or not offered);
-   what is left is the request, rewritten so the next stages can read it (``Screened``);
-4. ``readings``: the request's mentions read in their sentences, and the first doubt left (a
+   items, facilities, places and task words (``Lexed``): the whole message and each of its
+   pieces (sentences, and the comma parts of one) are read once;
+3. ``speech_acts``: what each piece does (a request, a question, thanks, a wish, a withdrawal,
+   a statement, someone else's need, a note, a condition), read once from its words and
+   carried on the piece (``Acts``);
+4. the screen's verdicts (``RequestScreen.verdicts``): each piece judged by the first rule of
+   the table that matches (a withdrawal, a thanks, a wish, a question, a fact, a negation,
+   something destructive or not offered), from the piece's ``lexed`` and ``acts`` (``Spoken``);
+   then the request: what is left once the pieces that ask nothing are taken out, rewritten
+   so the next stages can read it (``RequestScreen.request``: ``Request``);
+5. ``readings``: the request's mentions read in their sentences, and the first doubt left (a
    name that may be a word, a name several people share) (``Readings``);
-5. ``frames``: clauses, roles and task kinds → the tasks, or the question still open; then
+6. ``frames``: clauses, roles and task kinds → the tasks, or the question still open; then
    ``operations`` (the office's operation named where several share a shape, a send-out
    service's place) and ``unknown_items`` (a thing the office does not have, said as such);
-6. ``screen.judge``: what the reader answers: the screen's own reply where it answered the
-   message, else the frames with the screen's hints and evidence, a third person's need
-   restated and asked ("Shall I ...?").
+7. the screen's decision (``RequestScreen.decide``: ``Screened``) and ``screen.judge``: what
+   the reader answers: the screen's own reply where the message asks nothing (or declines),
+   else the frames with the screen's hints and evidence, a third person's need restated and
+   asked ("Shall I ...?").
 
-The speech acts are judged before the request is read because they decide what the request
-is: the frames read only what is left once the withdrawn, negated, answered and stated pieces
-are taken out (``screen`` runs on the lexicon's reading of each piece, never on raw text).
+The pieces' verdicts come before the readings because they decide what the request is: the
+frames are read only from what is left once the withdrawn, negated, answered and stated pieces
+are taken out; the decision on the message comes last, once the frames are read.
 
 Competing readings are kept with their evidence and asked about when they lead to different
 physical actions (the idea of KnowNo, "Robots That Ask For Help"): a name that is also an
@@ -46,7 +52,7 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
-from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexicon, Reading
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -88,18 +94,20 @@ class InstructionParser:
         negated, destructive, facts, unsupported services), the tasks read from what is left,
         then judged. ``confirmed``: the requester already said yes to the restated reading;
         ``sent_out``: a send-out to a colleague's name is meant to leave the office."""
-        screened = self.screen.screen(text, requester)  # stages 1 to 3, piece by piece
+        spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
+        request = self.screen.request(spoken)
+        frame = self._frame(spoken.msg.lexed, request.text, requester, sent_out)  # 5 and 6
+        screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
-        frame = self._frame(text, screened.text, requester, sent_out)  # stages 1, 2, 4, 5
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
-    def _frame(self, text: str, request: str, requester: str, sent_out: bool) -> TaskFrame:
-        """The tasks of the request the screen left (``request``), read from its readings."""
-        lexed = self.lex.read(request)  # stages 1 and 2, once; later ones get it
-        # who has an item now is said anywhere, also in a statement the screen set aside
-        # ("P lent me her ruler. Please return it to her; it's on my desk")
-        whole = self.lex.read(text) if text != request else lexed
+    def _frame(self, whole: Lexed, request: str, requester: str, sent_out: bool) -> TaskFrame:
+        """The tasks of the request the screen left (``request``), read from its readings;
+        ``whole`` is the whole message as the lexicon read it for the screen: who has an item
+        now is said anywhere, also in a statement the screen set aside ("P lent me her
+        ruler. Please return it to her; it's on my desk")."""
+        lexed = self.lex.read(request)  # the rewritten request, read once; later stages get it
         readings = self.readings.read(lexed)
         frame = self.frames.frame(
             readings, requester, holder(whole, requester), named_items(whole, requester)

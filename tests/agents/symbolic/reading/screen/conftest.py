@@ -5,10 +5,12 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rules import Rule
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech_acts import acts_reader
 from assistantx.core.office import Office
 from reading.screen._judge import Judge, Read
 
@@ -20,10 +22,13 @@ def terms(office: Office) -> Terms:
 
 @pytest.fixture(scope="module")
 def message(terms: Terms) -> Read:
-    """A message as the screen walks it: its pieces, each read by the office's lexicon."""
+    """A message as the screen walks it: its pieces, each read by the office's lexicon and
+    the speech acts."""
 
     def read(text: str) -> Message:
-        return Message(text=text, pieces=pieces(text, terms.lex.read))
+        acts = acts_reader(terms.acts, terms.self_words, split_words(text))
+        read = terms.lex.read
+        return Message(text=text, pieces=pieces(text, read, acts), lexed=read(text))
 
     return read
 

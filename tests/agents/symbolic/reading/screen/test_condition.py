@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.condition import condition
-from reading.screen._judge import Judge
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from reading.screen._judge import Judge, Read
 
 
 def test_an_if_clause_is_a_condition_with_what_it_names_as_context(judged: Judge) -> None:
@@ -22,3 +23,15 @@ def test_a_need_that_may_come_later_is_not_for_now(judged: Judge) -> None:
 
 def test_a_plain_request_is_no_condition(judged: Judge) -> None:
     assert judged(condition, "bring me a stapler", "lee") is None
+
+
+def test_a_possible_new_one_is_of_the_item_an_earlier_piece_named(
+    terms: Terms, message: Read
+) -> None:
+    msg = message("my stapler is broken, I might need a new one")
+    found = condition(terms, msg, msg.pieces[1], "lee")
+    assert found is not None and found.offer == "bring me a stapler"
+    assert found.context == ("stapler|",)
+    alone = message("I might need a new one")  # no item named before it: nothing to offer
+    found = condition(terms, alone, alone.pieces[0], "lee")
+    assert found is None or not found.offer

@@ -3,7 +3,6 @@ never what to do; a need that may come later is not a request for now."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.statement import stated_items
@@ -21,20 +20,19 @@ _HEDGES = english_words("possibility_words") | frozenset({"think", "guess", "ill
 def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     """ "if Hal ever needs a ruler, Ida has one": a condition says when, never what to do;
     with no request beside it the message is information, answered in words."""
-    deferred = terms.acts.defers(split_words(msg.text))
-    put_off = terms.acts.defers(piece.words) and not terms.acts.imperative(piece.words)
+    put_off = piece.acts.defers and not piece.acts.imperative
     if not put_off:
         offered = _replacement_offer(terms, msg, piece)
         if offered is not None:
             return offered
-    if put_off or terms.acts.future_need(piece.words, deferred):
+    if put_off or piece.acts.future_need:
         return Finding(
             "condition",
             piece,
             "a need that may come later, not a request for now",
             message="Noted. Tell me when you need it and I'll bring it then.",
         )
-    if not terms.acts.condition(piece.words, piece.asks):
+    if not piece.acts.condition:
         return None
     # what the condition names is context for a request beside it, as a statement's is:
     # "if Hedda isn't using her laser, could you bring it over?" asks for Hedda's laser
@@ -57,12 +55,10 @@ def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | No
     words = set(piece.words)
     if not (words & _NEED and words & _HEDGES and words & _REPLACEMENT):
         return None
-    if words & _CONDITION_WORDS or terms.acts.later(piece.words):
+    if words & _CONDITION_WORDS or piece.acts.later:
         return None
-    said = (
-        terms.named(piece.lexed, "item")
-        or terms.named(terms.lex.read(msg.text[: piece.start]), "item")[-1:]
-    )
+    before = (i for p in msg.pieces if p.end <= piece.start for i in terms.named(p.lexed, "item"))
+    said = terms.named(piece.lexed, "item") or list(dict.fromkeys(before))[-1:]
     if len(said) != 1:
         return None
     t = terms.office.item_type(said[0])

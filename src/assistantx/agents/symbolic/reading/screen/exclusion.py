@@ -16,7 +16,7 @@ def exclusion(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if not words or words[0] not in terms.en.exclusion_openers:
         return None
     people = terms.named(piece.lexed, "person")
-    items = terms.named(piece.lexed, "item") or terms.named(terms.lex.read(msg.text), "item")
+    items = terms.named(piece.lexed, "item") or terms.named(msg.lexed, "item")
     if len(people) != 1 or not items:
         return None
     who = terms.office.person(people[0]).name

@@ -34,7 +34,7 @@ def _told_reason(terms: Terms, msg: Message, piece: Piece) -> bool:
         _CONTRACTION.search(piece.text)
     )
     later = [p for p in msg.pieces if p.start >= piece.start]
-    return told and not piece.asks and not any(terms.acts.request(p.words) for p in later)
+    return told and not piece.asks and not any(p.acts.request for p in later)
 
 
 def negation(terms: Terms, piece: Piece) -> Finding | None:

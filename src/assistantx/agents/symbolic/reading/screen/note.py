@@ -11,12 +11,12 @@ def note(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
     """ "note this down: the tape ran out", "mark this down: ...": a note to keep, answered
     in words; a later piece of the same message is part of it unless it asks for
     something ("Note this down. Ida is away next week.")."""
-    said = terms.acts.note(piece.words)
+    said = piece.acts.note
     noting = msg.noting is not None and piece.start >= msg.noting
-    if said is None and not (noting and not terms.acts.request(piece.words)):
+    if said is None and not (noting and not piece.acts.request):
         return None
     if said is not None:
         msg.noting = piece.start
-        if said and terms.acts.request(said):
+        if piece.acts.note_asks:
             return None  # "please note I need a ruler": a request, read as one
     return Finding("note", piece, "a note to keep, not a request", message="Noted.")

@@ -20,7 +20,7 @@ _OWN_USE = frozenset({"need", "want", "use", "keep"})
 
 
 def own_need(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    if not any(terms.acts.request(p.words) for p in msg.pieces if p is not piece):
+    if not any(p.acts.request for p in msg.pieces if p is not piece):
         return None  # alone it may be a request for that person: read on
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     k = 0

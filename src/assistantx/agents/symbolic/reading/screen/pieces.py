@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.speech_acts import Acts
 
 # A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
 _SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
@@ -35,9 +36,10 @@ class Part:
 
 @dataclass(frozen=True, kw_only=True)
 class Piece(Part):
-    """A piece of a message, as the lexicon read it."""
+    """A piece of a message, as the lexicon and the speech acts read it."""
 
     lexed: Lexed  # its tokens, typos corrected, and the mentions of the office in them
+    acts: Acts  # what it does (a request, a question, thanks ...), read once
 
 
 @dataclass
@@ -46,13 +48,17 @@ class Message:
 
     text: str
     pieces: list[Piece]
+    lexed: Lexed  # the whole message, read once by the lexicon (a rule that looks beyond its piece)
     noting: int | None = None  # where a note began ("note this down: ...")
     withdrawing: bool = False  # a withdrawal was read: what follows may be its reason
     negating: bool = False  # a negated errand was read: what follows may be its reason
 
 
-def pieces(text: str, read: Callable[[str], Lexed]) -> list[Piece]:
-    """Sentences, and the comma-separated parts of each, each read by ``read`` (the lexicon)."""
+def pieces(
+    text: str, read: Callable[[str], Lexed], acts: Callable[[list[str], bool], Acts]
+) -> list[Piece]:
+    """Sentences, and the comma-separated parts of each, each read by ``read`` (the lexicon)
+    and by ``acts`` (the speech acts, ``speech_acts.acts_reader``)."""
     out: list[Piece] = []
     pos = 0
     for m in [*_SENTENCE_END.finditer(text), None]:
@@ -67,14 +73,16 @@ def pieces(text: str, read: Callable[[str], Lexed]) -> list[Piece]:
             if piece_text:
                 start = sentence_start + sub + lead
                 asks = b is None and m is not None and "?" in m.group(0)  # its last part
+                words = split_words(piece_text)
                 out.append(
                     Piece(
                         piece_text,
                         start,
                         start + len(piece_text),
-                        split_words(piece_text),
+                        words,
                         asks,
                         lexed=read(piece_text),
+                        acts=acts(words, asks),
                     )
                 )
             if b is not None:

@@ -12,7 +12,7 @@ from assistantx.core import wording
 
 
 def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    kind = terms.acts.question(piece.words, piece.asks)
+    kind = piece.acts.question
     if kind != "info":
         return None
     items = terms.named(piece.lexed, "item")
@@ -20,7 +20,7 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     people = terms.named(piece.lexed, "person")
     if len(items) == 1 and not facilities:
         found = item_question(terms, piece, items[0], requester)
-        if terms.acts.doubts_ability(piece.words) and found.offer:
+        if piece.acts.doubts_ability and found.offer:
             # "can you even carry ...?": yes, said first; the errand only on a yes
             message = f"Yes, I can do that. {found.message}"
             return Finding(
@@ -82,7 +82,7 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
         return Finding("question", piece, "a question, answered in words", message=answer)
     verb = "get" if t.kind == "product" else "bring"
     shall = f"Shall I {verb} you one?"
-    if terms.acts.later(piece.words):  # "... I could use later?": not now unless told so
+    if piece.acts.later:  # "... I could use later?": not now unless told so
         shall = f"Shall I {verb} you one now, or would you rather tell me when?"
     return Finding(
         "question",

@@ -1,7 +1,8 @@
-"""The request screen: the message cut into pieces, each judged by the table of rules
-(``rules``), and what the pieces make of the whole: a decline, the replies to a message with
-no request, a "Shall I ...?", or the request left for the later stages, rewritten so they can
-read it (``rewrites``)."""
+"""The request screen in three steps: the message cut into pieces, each judged by the table of
+rules (``verdicts``); the request left for the later stages, rewritten so they can read it
+(``request``, ``rewrites``); and, once those stages have read it, what the pieces make of the
+whole (``decide``): a decline, the replies to a message with no request, a "Shall I ...?",
+or the request."""
 
 from __future__ import annotations
 
@@ -9,12 +10,13 @@ from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.correction import corrected
 from assistantx.agents.symbolic.reading.screen.english import split_words
-from assistantx.agents.symbolic.reading.screen.findings import DROPPED, Finding, Screened
-from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces, without
+from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
+from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
-from assistantx.agents.symbolic.reading.screen.speech import content
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.agents.symbolic.reading.speech_acts import acts_reader
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Evidence
 
@@ -28,9 +30,19 @@ class RequestScreen:
         self.terms = Terms(office, lex)
 
     def screen(self, text: str, requester: str) -> Screened:
+        """The whole screen at once: the pieces' verdicts, the request left, the decision."""
+        spoken = self.verdicts(text, requester)
+        return self.decide(spoken, self.request(spoken))
+
+    def verdicts(self, text: str, requester: str) -> Spoken:
+        """The message corrected, cut into pieces (each lexed and its speech acts read), and
+        each piece judged by the table of rules (the first that matches decides it)."""
         terms = self.terms
         text, fixes = corrected(terms, text)
-        msg = Message(text=text, pieces=pieces(text, terms.lex.read))
+        acts = acts_reader(terms.acts, terms.self_words, split_words(text))
+        msg = Message(
+            text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)
+        )
         findings: list[Finding] = []
         for piece in msg.pieces:
             for _, rule in RULES:
@@ -38,23 +50,34 @@ class RequestScreen:
                 if found is not None:
                     findings.append(found)
                     break
-        out = Screened(text=text)
-        out.evidence = [
-            *fixes,
-            *(Evidence(words=f.piece.text, meaning=f.meaning) for f in findings),
+        return Spoken(msg=msg, findings=findings, fixes=fixes)
+
+    def request(self, spoken: Spoken) -> Request:
+        """What is left of the message once the pieces that ask nothing are taken out,
+        rewritten so the later stages can read it (``rewrites``)."""
+        context = [
+            c for f in spoken.live if f.verdict in ("statement", "condition") for c in f.context
         ]
-        out.hints = [f.hint for f in findings if f.hint is not None]
-        withdrawn = [f for f in findings if f.verdict == "withdrawn"]
-        cut = withdrawn[-1].piece.end if withdrawn else 0
-        live = [f for f in findings if f.piece.start >= cut]
+        text, rewrites = rewrite(self.terms, spoken.msg, spoken.left, spoken.hints, context)
+        return Request(text=text, evidence=rewrites)
+
+    def decide(self, spoken: Spoken, request: Request) -> Screened:
+        """What the pieces make of the whole message: a decline, the replies to a message
+        with no request, a "Shall I ...?" to ask first, or the request left to act on."""
+        terms = self.terms
+        out = Screened(text=spoken.msg.text)
+        out.evidence = [
+            *spoken.fixes,
+            *(Evidence(words=f.piece.text, meaning=f.meaning) for f in spoken.findings),
+        ]
+        out.hints = spoken.hints
+        live, withdrawn, kept = spoken.live, spoken.withdrawn, spoken.kept
         declines = [f for f in live if f.verdict in ("destructive", "unsupported")]
         if declines:
             out.decline, out.outcome = declines[0].message, "unachievable"
             return out
-        dropped = [f.piece for f in findings if f.verdict in DROPPED]
-        left = without(text, cut, dropped)
+        left = spoken.left
         meant = set(content(split_words(left))) - terms.en.courtesy  # "hi," left of a statement
-        kept = [p for p in msg.pieces if p.start >= cut and not any(p is d for d in dropped)]
         if not meant or aside(terms, left, live, kept):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
@@ -67,14 +90,10 @@ class RequestScreen:
                 return out
             if live or withdrawn:
                 return answered(out, live, withdrawn=bool(withdrawn))
-        if any(terms.acts.need(p.words, terms.self_words) for p in kept) and not any(
-            terms.acts.request(p.words) for p in kept
-        ):
+        if any(p.acts.need for p in kept) and not any(p.acts.request for p in kept):
             out.confirm = True  # "Min needs scissors.": restate and ask before moving
-        context = [c for f in live if f.verdict in ("statement", "condition") for c in f.context]
-        left, rewrites = rewrite(terms, msg, left, out.hints, context)
-        out.evidence += rewrites
-        out.text = left
+        out.evidence += request.evidence
+        out.text = request.text
         return out
 
     def unknown_thing(self, words: list[str]) -> str:

@@ -8,8 +8,8 @@ from __future__ import annotations
 import re
 
 from assistantx.agents.symbolic.reading.screen.pieces import Message
-from assistantx.agents.symbolic.reading.screen.speech import NEED_PHRASES
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.core import language
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
@@ -80,8 +80,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     evidence: list[Evidence] = []
 
     def last_item(before: str) -> str | None:
-        for said in (before, msg.text):
-            items = [m for m in terms.lex.scan(terms.lex.tokens(said)) if m.kind == "item"]
+        for mentions in (terms.lex.scan(terms.lex.tokens(before)), msg.lexed.mentions):
+            items = [m for m in mentions if m.kind == "item"]
             if items:
                 return terms.office.item_type(items[-1].ids[0]).name
         return None

@@ -9,8 +9,8 @@ import re
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
-from assistantx.agents.symbolic.reading.screen.speech import content
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
 
 
 def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -32,7 +32,7 @@ def own_doing(terms: Terms, piece: Piece) -> bool:
 
 
 def asked_elsewhere(terms: Terms, msg: Message, piece: Piece) -> bool:
-    return any(terms.acts.request(p.words) for p in msg.pieces if p is not piece)
+    return any(p.acts.request for p in msg.pieces if p is not piece)
 
 
 def unsupported_service(terms: Terms, piece: Piece) -> Finding | None:

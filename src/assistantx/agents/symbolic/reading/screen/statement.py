@@ -17,7 +17,7 @@ from assistantx.core.english import words as english_words
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
-    if piece.asks or not terms.acts.statement(piece.words):
+    if piece.asks or not piece.acts.statement:
         return None
     named = tuple(stated_items(terms, piece, requester)) + tuple(
         f"person:{p}" for p in terms.named(piece.lexed, "person")[:1]
@@ -29,10 +29,10 @@ def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
     """ "Tea time soon. Could you bring me a ruler?": a fragment with no request wording
     whose items only modify other words ("tea time"), beside a sentence that asks for
     something, is context; it never adds an errand of its own."""
-    if terms.acts.request(piece.words):
+    if piece.acts.request:
         return False
     others = [p for p in msg.pieces if p is not piece and p.start > piece.end]
-    if not any(terms.acts.request(p.words) for p in others):
+    if not any(p.acts.request for p in others):
         return False
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     items = [m for m in mentions if m.kind in ("item", "cue")]

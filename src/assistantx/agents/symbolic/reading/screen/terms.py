@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Lexicon
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS, english, split_words
-from assistantx.agents.symbolic.reading.screen.speech import SpeechActs
+from assistantx.agents.symbolic.reading.speech import SpeechActs
 from assistantx.core import language
 from assistantx.core.office import Office
 

@@ -9,7 +9,7 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 
 
 def thanks(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    act = terms.acts.thanks(piece.words)
+    act = piece.acts.thanks
     if act is None:
         return None
     if act.relay:

@@ -13,9 +13,9 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
-from assistantx.agents.symbolic.reading.screen.speech import content
 from assistantx.agents.symbolic.reading.screen.statement import stated_items
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english
 from assistantx.core.wording import is_are
 

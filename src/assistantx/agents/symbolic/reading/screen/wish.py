@@ -9,14 +9,14 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 
 
 def wish(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    if terms.acts.world_wish(piece.words):
+    if piece.acts.world_wish:
         return Finding(
             "wish",
             piece,
             "a wish about the place, not a request",
             message="Noted; that is not something I can change.",
         )
-    if not terms.acts.wish(piece.words):
+    if not piece.acts.wish:
         return None
     things = terms.named(piece.lexed, "item")
     what = f"the {terms.office.item_type(things[0]).name}" if len(things) == 1 else "anything"

@@ -6,6 +6,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech_acts import without_fillers
 from assistantx.core import language
 
 
@@ -18,7 +19,7 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if (
         msg.withdrawing
         and told
-        and not any(terms.acts.request(p.words) for p in msg.pieces if p.start >= piece.start)
+        and not any(p.acts.request for p in msg.pieces if p.start >= piece.start)
     ):
         # "never mind, found the stapler in my drawer, thanks": the reason for it, told as
         # what happened, not an errand; a request after it ("..., bring me a pen instead")
@@ -28,12 +29,11 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
 
 
 def withdrawal(terms: Terms, piece: Piece) -> Finding | None:
-    words = [w for w in piece.words if w not in ("actually", "oh", "ok", "okay", "please")]
-    if tuple(words) in terms.en.withdraw or terms.acts.withdrawal(words):
+    if tuple(without_fillers(piece.words)) in terms.en.withdraw or piece.acts.withdrawal:
         return Finding("withdrawn", piece, "withdraws the request")
     said = tuple(w for w in piece.words if w not in ("oh", "ok", "okay", "wait", "hmm"))
     if piece.start > 0 and said in terms.en.elliptical_withdrawals:
         return Finding("withdrawn", piece, "withdraws what was asked before")
-    if piece.start > 0 and not piece.asks and terms.acts.had_already(piece.words):
+    if piece.start > 0 and not piece.asks and piece.acts.had_already:
         return Finding("withdrawn", piece, "what was asked for is had already")
     return None

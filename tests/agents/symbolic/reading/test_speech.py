@@ -5,14 +5,15 @@ from __future__ import annotations
 
 import pytest
 
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.english import split_words
-from assistantx.agents.symbolic.reading.screen.speech import SpeechActs, content
-from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import SpeechActs, content
+from assistantx.core.office import Office
 
 
 @pytest.fixture(scope="module")
-def acts(terms: Terms) -> SpeechActs:
-    return terms.acts
+def acts(office: Office) -> SpeechActs:
+    return SpeechActs(Lexicon.from_office(office))
 
 
 def test_openers_and_stance_are_passed_over() -> None:
@@ -56,9 +57,10 @@ def test_a_statement_is_a_subject_and_a_state_before_any_request(acts: SpeechAct
     assert not acts.statement(split_words("bring me some wipes"))
 
 
-def test_someone_elses_need_said_as_a_fact(acts: SpeechActs, terms: Terms) -> None:
-    assert acts.need(split_words("Min needs scissors"), terms.self_words)
-    assert not acts.need(split_words("I need scissors"), terms.self_words)
+def test_someone_elses_need_said_as_a_fact(acts: SpeechActs) -> None:
+    speaker = frozenset({"i", "me", "my", "we"})  # the requester's own words
+    assert acts.need(split_words("Min needs scissors"), speaker)
+    assert not acts.need(split_words("I need scissors"), speaker)
 
 
 def test_thanks_and_thanks_to_pass_on(acts: SpeechActs) -> None:

@@ -1,0 +1,81 @@
+"""The speech-act stage: what each piece of a message does, read once from its words and
+passed forward with the piece (``Acts``), so the screen's rules judge a piece by what this
+stage found instead of reading its words again.
+
+The features are those of ``speech`` (a request, a question, thanks, a wish, a withdrawal, a
+statement, a third person's need, a note, a condition, a need put off until later), each
+read on the piece's own words; the one feature of the whole message, whether it puts its
+need off ("I'll need it later"), is read once per message (``acts_reader``) and given to
+every piece's reading.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs
+
+# Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it".
+WITHDRAWAL_FILLERS = frozenset({"actually", "oh", "ok", "okay", "please"})
+
+
+@dataclass(frozen=True)
+class Acts:
+    """What one piece of a message does, by its words (``speech``'s readings of them)."""
+
+    request: bool  # request wording: an imperative, a polite question, one's own need
+    imperative: bool  # a command ("bring me ...")
+    question: QuestionKind | None  # "polite" (a request asked) or "info" (answered in words)
+    doubts_ability: bool  # "can you even carry ...?"
+    thanks: Act | None  # thanks, and whether it is to be passed on
+    wish: bool  # "please keep everyone away from Mao's seal"
+    world_wish: bool  # "I wish the printer worked": nothing anyone can bring
+    withdrawal: bool  # "forget about the scissors", "never mind"
+    had_already: bool  # "Ida already brought me one"
+    statement: bool  # "my laptop cable is too short"
+    need: bool  # "Min needs scissors": a third person's need said as a fact
+    note: tuple[str, ...] | None  # the words of a note to keep, after its opener
+    note_asks: bool  # the note's words are themselves a request ("please note I need ...")
+    condition: bool  # "if Hal ever needs a ruler": says when, not what to do
+    defers: bool  # the piece puts its need off ("not now, later")
+    future_need: bool  # a need that may come later, in a message that puts it off
+    later: bool  # names a later time ("this afternoon")
+
+
+def without_fillers(words: list[str]) -> list[str]:
+    """A piece's words without the fillers a withdrawal is read through."""
+    return [w for w in words if w not in WITHDRAWAL_FILLERS]
+
+
+def acts_reader(
+    speech: SpeechActs, self_words: frozenset[str], message_words: list[str]
+) -> Callable[[list[str], bool], Acts]:
+    """How the pieces of one message are read: ``message_words`` are the whole message's,
+    read once for whether it puts its need off; the reader takes a piece's words and
+    whether it ends with a question mark."""
+    deferred = speech.defers(message_words)
+
+    def read(words: list[str], asks: bool) -> Acts:
+        note = speech.note(words)
+        return Acts(
+            request=speech.request(words),
+            imperative=speech.imperative(words),
+            question=speech.question(words, asks),
+            doubts_ability=speech.doubts_ability(words),
+            thanks=speech.thanks(words),
+            wish=speech.wish(words),
+            world_wish=speech.world_wish(words),
+            withdrawal=speech.withdrawal(without_fillers(words)),
+            had_already=speech.had_already(words),
+            statement=speech.statement(words),
+            need=speech.need(words, self_words),
+            note=tuple(note) if note is not None else None,
+            note_asks=bool(note) and speech.request(note or []),
+            condition=speech.condition(words, asks),
+            defers=speech.defers(words),
+            future_need=speech.future_need(words, deferred),
+            later=speech.later(words),
+        )
+
+    return read
