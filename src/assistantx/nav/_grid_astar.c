@@ -118,6 +118,29 @@ static double octile(int32_t dy, int32_t dx) {
     return hi + (M_SQRT2 - 1.0) * lo;
 }
 
+/* How far a landmark's stored distance may be off, relative to the distances compared: they
+ * are kept in single precision (2**-24 each) from sums in double precision. */
+#define MARK_SLACK (1.0 / (1 << 22))
+
+/* A lower bound on the cost from a cell to the goal: the octile distance (`scale`: the
+ * resolution, 0 for none), and with landmarks (`here`, `there`: the cell's and the goal's
+ * distances from each of `n` landmarks, negative where unreached) the landmark bound
+ * |d(L, goal) - d(L, cell)|, which the triangle inequality makes no more than the path
+ * between them, less a slack for the rounding of the stored distances. */
+static inline double estimate(int32_t dy, int32_t dx, double scale, const float *here,
+                              const float *there, int32_t n) {
+    double best = scale * octile(dy, dx);
+    if (here) {
+        for (int32_t k = 0; k < n; k++) {
+            if (here[k] < 0.0f || there[k] < 0.0f) continue;
+            const double a = (double)here[k], b = (double)there[k];
+            const double bound = fabs(a - b) - (a + b) * MARK_SLACK;
+            if (bound > best) best = bound;
+        }
+    }
+    return best;
+}
+
 /* Search from `start` to `goal` (flat cell indices). `cells` holds one cell_state per cell;
  * a state is valid only where its tag's generation is `generation` (a new number per search,
  * below 2**29), so a search touches only the cells it reaches instead of clearing the whole
@@ -125,8 +148,11 @@ static double octile(int32_t dy, int32_t dx) {
  * Returns the path's cost, -1.0 when the goal cannot be reached, -2.0 when memory ran out. */
 static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t width,
                          int32_t inscribed, double resolution, double penalty, int32_t start,
-                         int32_t goal, cell_state *cells, uint32_t generation) {
-    const int32_t gy = goal / width, gx = goal % width;
+                         int32_t goal, cell_state *cells, uint32_t generation,
+                         const float *marks, int32_t n_marks) {
+    const int32_t gy = goal >= 0 ? goal / width : 0, gx = goal >= 0 ? goal % width : 0;
+    const double scale = goal >= 0 ? resolution : 0.0; /* no goal: no heuristic (Dijkstra) */
+    const float *goal_marks = (goal >= 0 && n_marks > 0) ? marks + (size_t)goal * n_marks : NULL;
     double lengths[8];
     for (int k = 0; k < 8; k++) lengths[k] = resolution * ((DY[k] && DX[k]) ? M_SQRT2 : 1.0);
 #define TOUCH(v)                  \
@@ -139,7 +165,10 @@ static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t wi
 
     heap open = {NULL, cells, 0, 0};
     cells[start].g = 0.0;
-    entry first = {resolution * octile(start / width - gy, start % width - gx), 0.0, start};
+    entry first = {estimate(start / width - gy, start % width - gx, scale,
+                            goal_marks ? marks + (size_t)start * n_marks : NULL, goal_marks,
+                            n_marks),
+                   0.0, start};
     if (heap_push(&open, first) < 0) return -2.0;
     double found = -1.0;
     while (open.size) {
@@ -165,8 +194,10 @@ static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t wi
             if (candidate < cells[v].g) {
                 cells[v].g = candidate;
                 cells[v].tag = (generation << 3) | (uint32_t)k;
-                entry next = {candidate + resolution * octile(ny - gy, nx - gx), (float)candidate,
-                              v};
+                const double h = estimate(ny - gy, nx - gx, scale,
+                                          goal_marks ? marks + (size_t)v * n_marks : NULL,
+                                          goal_marks, n_marks);
+                entry next = {candidate + h, (float)candidate, v};
                 if (heap_push(&open, next) < 0) {
                     free(open.items);
                     return -2.0;
@@ -323,9 +354,10 @@ double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t in
                  double resolution, double penalty, int32_t start, int32_t goal,
                  cell_state *cells, uint32_t generation,
                  int32_t smoothing, const frame *f, const double ends[4], int32_t *out,
-                 int32_t capacity, int32_t counts[2]) {
+                 int32_t capacity, int32_t counts[2], const float *marks, int32_t n_marks) {
+    if (goal < 0) return -1.0;
     const double cost = grid_astar_search(costs, height, width, inscribed, resolution, penalty,
-                                          start, goal, cells, generation);
+                                          start, goal, cells, generation, marks, n_marks);
     if (cost < 0.0) return cost;
     const int32_t n = grid_path(cells, width, start, goal, out, capacity);
     counts[0] = n;
@@ -337,6 +369,25 @@ double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t in
         if (counts[1] < 0) return -2.0;
     }
     return cost;
+}
+
+/* The cheapest cost from `source` to every cell (a full Dijkstra: the search with no goal),
+ * in single precision into out[cell * stride] (-1 where unreached or not traversable), for
+ * the landmark bounds. Returns the number of cells reached, -2 when memory ran out. */
+int32_t grid_distances(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
+                       double resolution, double penalty, int32_t source, cell_state *cells,
+                       uint32_t generation, float *out, int32_t stride) {
+    if (grid_astar_search(costs, height, width, inscribed, resolution, penalty, source, -1,
+                          cells, generation, NULL, 0) == -2.0)
+        return -2;
+    int32_t reached = 0;
+    const int64_t size = (int64_t)height * width;
+    for (int64_t v = 0; v < size; v++) {
+        const int fresh = (cells[v].tag >> 3) == generation && cells[v].g < INFINITY;
+        out[v * stride] = fresh ? (float)cells[v].g : -1.0f;
+        reached += fresh;
+    }
+    return reached;
 }
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_grid_astar", NULL, -1, NULL};

@@ -50,7 +50,7 @@ def _library() -> ctypes.CDLL | None:
         logger.info("the compiled A* is not built; plans search with scipy's Dijkstra")
         return None
     library = ctypes.CDLL(_grid_astar.__file__)
-    if not hasattr(library, "grid_plan"):  # a stale build of an older source
+    if not hasattr(library, "grid_distances"):  # a stale build of an older source
         logger.warning("the compiled A* is out of date (rebuild the package); using scipy")
         return None
     int32, double = ctypes.c_int32, ctypes.c_double
@@ -58,7 +58,11 @@ def _library() -> ctypes.CDLL | None:
     function.restype = double
     function.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, int32]
     function.argtypes += [_ADDRESS, ctypes.c_uint32]
-    function.argtypes += [int32, _DOUBLES, _DOUBLES, _ADDRESS, int32, _ADDRESS]
+    function.argtypes += [int32, _DOUBLES, _DOUBLES, _ADDRESS, int32, _ADDRESS, _ADDRESS, int32]
+    distances = library.grid_distances
+    distances.restype = int32
+    distances.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, _ADDRESS]
+    distances.argtypes += [ctypes.c_uint32, _ADDRESS, int32]
     return library
 
 
@@ -122,16 +126,57 @@ class MapFrame:
         )
 
 
+def distances(
+    costs: npt.NDArray[np.uint8],
+    resolution: float,
+    cost_penalty: float,
+    source: int,
+    out: npt.NDArray[np.float32],
+    column: int,
+) -> int:
+    """The cheapest cost from flat cell ``source`` to every cell (a full Dijkstra on the
+    search's graph) into column ``column`` of ``out`` ((cells, columns), C order, float32;
+    -1 where unreached); the number of cells reached. Requires ``available()``."""
+    library = _library()
+    if library is None:
+        raise RuntimeError("the compiled A* is not built")
+    grid = np.ascontiguousarray(costs, dtype=np.uint8)
+    height, width = grid.shape
+    if out.shape[0] != height * width or not out.flags.c_contiguous or out.dtype != np.float32:
+        raise ValueError("out must be a C-ordered float32 array with a row per cell")
+    if height * width >= 2**31:
+        raise ValueError("a grid of 2**31 cells or more is beyond the compiled search")
+    work = _workspace
+    generation = work.next_search(height * width)
+    reached: int = library.grid_distances(
+        grid.ctypes.data,
+        height,
+        width,
+        INSCRIBED,
+        resolution,
+        cost_penalty,
+        source,
+        work.address,
+        generation,
+        out.ctypes.data + column * out.itemsize,
+        out.shape[1],
+    )
+    if reached == -2:
+        raise MemoryError("the Dijkstra search ran out of memory")
+    return reached
+
+
 def search(
     costs: npt.NDArray[np.uint8],
     resolution: float,
     cost_penalty: float,
     start: tuple[int, int],
     goal: tuple[int, int],
+    marks: tuple[int, int] = (0, 0),
 ) -> tuple[npt.NDArray[np.intp], float] | None:
     """The cheapest path's (row, col) cells from ``start`` to ``goal`` and its cost, or None
-    when no path joins them. Requires ``available()``."""
-    found = plan(costs, resolution, cost_penalty, start, goal, None)
+    when no path joins them (``marks`` as for ``plan``). Requires ``available()``."""
+    found = plan(costs, resolution, cost_penalty, start, goal, None, marks)
     if found is None:
         return None
     return np.column_stack(np.divmod(found.flat, costs.shape[1])), found.cost
@@ -144,11 +189,13 @@ def plan(
     start: tuple[int, int],
     goal: tuple[int, int],
     smoothing: tuple[MapFrame, tuple[float, float, float, float]] | None,
+    marks: tuple[int, int] = (0, 0),
 ) -> Found | None:
     """The cheapest path from cell ``start`` to cell ``goal`` (row, col), smoothed as
     ``planner.shortcut`` does when ``smoothing`` is given (the map's frame, and the start's
-    and the goal's exact world x, y); None when no path joins them. Requires
-    ``available()``."""
+    and the goal's exact world x, y); None when no path joins them. ``marks``: the address
+    and column count of a landmark table (``landmarks.Landmarks.marks``; it must bound these
+    costs) to steer the search by, (0, 0) for none. Requires ``available()``."""
     library = _library()
     if library is None:
         raise RuntimeError("the compiled A* is not built")
@@ -180,6 +227,8 @@ def plan(
             work.path_address,
             len(work.path),
             counts,
+            marks[0],
+            marks[1],
         )
         if cost == -2.0:
             raise MemoryError("the A* search ran out of memory")

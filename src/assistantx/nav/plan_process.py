@@ -64,6 +64,7 @@ class _Missing(Exception):
 def _keep_in_worker(key: _Key, payload: _Payload) -> None:
     if key not in _worker_planners:
         _worker_planners[key] = _planner_from(payload)
+    _worker_planners[key].prepare()  # its landmarks now, not on the first plan
 
 
 def _plan_in_worker(
@@ -145,7 +146,17 @@ def _payload(planner: GridPlanner) -> _Payload:
 def _planner_from(payload: _Payload) -> GridPlanner:
     grid, costs, inflation, params, components = payload
     costmap = Costmap(grid, costs, np.empty((0, 0)), inflation)
-    return GridPlanner(costmap, params, components=components)
+    # A robot's layered costs (the map's plus obstacles seen) keep the map planner's
+    # landmarks: measuring them again for every version would cost a few full Dijkstras.
+    marks = next(
+        (
+            kept.marks
+            for kept in reversed(_worker_planners.values())
+            if kept.params == params and kept.marks is not None and kept.marks.bounds(costs)
+        ),
+        None,
+    )
+    return GridPlanner(costmap, params, components=components, marks=marks or "measure")
 
 
 PLAN_PROCESS = PlanProcess()
