@@ -11,8 +11,8 @@ Goldberg and Harrelson).
 The bounds hold for any costs at least those they were measured on (a dearer edge or a cell
 no longer traversable only lengthens d(v, g)), so a planner on the map's costs plus obstacles
 seen keeps the map's landmarks; where a cost falls below them, the landmarks are dropped
-(``bounds``). Landmarks are picked farthest-first in the largest free component: each the
-cell farthest from those picked so far.
+(``bounds``). Landmarks are picked farthest-first in the largest free component: a corner,
+then each the cell farthest from those picked so far.
 """
 
 from __future__ import annotations
@@ -103,17 +103,19 @@ def _measure(
 ) -> npt.NDArray[np.float32]:
     sizes = np.bincount(components.ravel())
     sizes[0] = 0
-    seed = int(np.argmax(components.ravel() == int(np.argmax(sizes))))
+    cells = np.flatnonzero(components.ravel() == int(np.argmax(sizes)))
+    # The first landmark is the cell of the largest component farthest from its centroid
+    # (a corner, found without a Dijkstra); each next one the cell whose cost from every
+    # landmark so far is the highest (unreached cells, -1, are never picked).
+    rows, cols = np.divmod(cells, costs.shape[1])
+    landmark = int(cells[np.argmax(np.hypot(rows - rows.mean(), cols - cols.mean()))])
     table = np.empty((costs.size, count), dtype=np.float32)
-    # The first landmark is the cell farthest from a seed cell; each next one the cell
-    # farthest from every landmark so far (unreached cells, -1, are never picked).
-    grid_astar.distances(costs, resolution, cost_penalty, seed, table, 0)
-    nearest = table[:, 0].copy()
+    nearest = np.empty(costs.size, dtype=np.float32)
     for k in range(count):
-        landmark = int(np.argmax(nearest))
         grid_astar.distances(costs, resolution, cost_penalty, landmark, table, k)
         if k == 0:
             nearest[:] = table[:, 0]
         else:
             np.minimum(nearest, table[:, k], out=nearest)
+        landmark = int(np.argmax(nearest))
     return table
