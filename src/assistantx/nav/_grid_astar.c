@@ -371,19 +371,101 @@ double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t in
     return cost;
 }
 
-/* The cheapest cost from `source` to every cell (a full Dijkstra: the search with no goal),
- * in single precision into out[cell * stride] (-1 where unreached or not traversable), for
- * the landmark bounds. Returns the number of cells reached, -2 when memory ran out. */
+/* A plain binary heap of entries by f, for the full Dijkstra below: a cell reached cheaper
+ * is queued again and its stale entries skipped when they surface (no `where` to keep up to
+ * date on every move, which costs more than the duplicates when every cell is settled). */
+typedef struct {
+    entry *items;
+    size_t size;
+    size_t capacity;
+} plain_heap;
+
+static int plain_push(plain_heap *h, entry e) {
+    if (h->size == h->capacity) {
+        size_t capacity = h->capacity ? h->capacity * 2 : 4096;
+        entry *grown = realloc(h->items, capacity * sizeof(entry));
+        if (!grown) return -1;
+        h->items = grown;
+        h->capacity = capacity;
+    }
+    size_t i = h->size++;
+    while (i > 0) {
+        size_t parent = (i - 1) / 2;
+        if (!(e.f < h->items[parent].f)) break;
+        h->items[i] = h->items[parent];
+        i = parent;
+    }
+    h->items[i] = e;
+    return 0;
+}
+
+static entry plain_pop(plain_heap *h) {
+    entry top = h->items[0];
+    entry last = h->items[--h->size];
+    size_t i = 0;
+    for (;;) {
+        size_t child = 2 * i + 1;
+        if (child >= h->size) break;
+        if (child + 1 < h->size && h->items[child + 1].f < h->items[child].f) child++;
+        if (!(h->items[child].f < last.f)) break;
+        h->items[i] = h->items[child];
+        i = child;
+    }
+    if (h->size) h->items[i] = last;
+    return top;
+}
+
+/* The cheapest cost from `source` to every cell (a full Dijkstra on the search's graph, the
+ * same edge weights summed in the same order), in single precision into out[cell * stride]
+ * (-1 where unreached or not traversable), for the landmark bounds. `cells` is the search's
+ * per-cell state, of which only `g` and the generation are used. Returns the number of cells
+ * reached, -2 when memory ran out. */
 int32_t grid_distances(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
                        double resolution, double penalty, int32_t source, cell_state *cells,
                        uint32_t generation, float *out, int32_t stride) {
-    if (grid_astar_search(costs, height, width, inscribed, resolution, penalty, source, -1,
-                          cells, generation, NULL, 0) == -2.0)
-        return -2;
+    double lengths[8];
+    for (int k = 0; k < 8; k++) lengths[k] = resolution * ((DY[k] && DX[k]) ? M_SQRT2 : 1.0);
+    const uint32_t tag = generation << 3;
+    cells[source].tag = tag;
+    cells[source].g = 0.0;
+    plain_heap open = {NULL, 0, 0};
+    entry first = {0.0, 0.0f, source};
+    if (plain_push(&open, first) < 0) return -2;
+    while (open.size) {
+        const entry e = plain_pop(&open);
+        if (e.f > cells[e.node].g) continue; /* a stale entry: reached cheaper since */
+        const int32_t y = e.node / width, x = e.node % width;
+        const double c_u = (double)costs[e.node], g_u = e.f;
+        for (int k = 0; k < 8; k++) {
+            const int32_t ny = y + DY[k], nx = x + DX[k];
+            if (ny < 0 || ny >= height || nx < 0 || nx >= width) continue;
+            const int32_t v = ny * width + nx;
+            if (costs[v] >= inscribed) continue;
+            if (DY[k] && DX[k] &&
+                (costs[ny * width + x] >= inscribed || costs[y * width + nx] >= inscribed))
+                continue;
+            const double mean = (c_u + (double)costs[v]) / 2.0;
+            const double candidate =
+                g_u + lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
+            if ((cells[v].tag >> 3) != generation) {
+                cells[v].tag = tag;
+                cells[v].g = INFINITY;
+            }
+            if (candidate < cells[v].g) {
+                cells[v].g = candidate;
+                entry next = {candidate, 0.0f, v};
+                if (plain_push(&open, next) < 0) {
+                    free(open.items);
+                    return -2;
+                }
+            }
+        }
+    }
+    free(open.items);
     int32_t reached = 0;
     const int64_t size = (int64_t)height * width;
     for (int64_t v = 0; v < size; v++) {
-        const int fresh = (cells[v].tag >> 3) == generation && cells[v].g < INFINITY;
+        const int fresh = (cells[v].tag >> 3) == generation;
         out[v * stride] = fresh ? (float)cells[v].g : -1.0f;
         reached += fresh;
     }
