@@ -165,6 +165,7 @@ def test_the_planning_worker_gives_layered_costs_the_maps_landmarks() -> None:
     plan_process._worker_planners.clear()
     try:
         plan_process._keep_in_worker(("map", 0), plan_process._payload(planner))
+        plan_process._prepare_in_worker(("map", 0))
         kept = plan_process._worker_planners[("map", 0)].marks
         assert kept is not None
         seen = static.costs.copy()

@@ -6,9 +6,11 @@
  * computed in that order so a path's cost is the same sum Dijkstra makes.
  *
  * Every edge weighs at least its grid length, so the octile distance times the resolution
- * never overestimates what is left: the first time the goal leaves the queue its cost is
- * optimal. A node whose cost improves after it left the queue is queued again, so rounding
- * in the heuristic cannot cost optimality either.
+ * never overestimates what is left; nor does the landmark bound (nav/landmarks.py: each
+ * cell's cost from a few landmarks, measured by grid_distances below), less a slack for its
+ * single precision. The heuristic is the larger of the two, so the first time the goal
+ * leaves the queue its cost is optimal. A node whose cost improves after it left the queue
+ * is queued again, so rounding in the heuristic cannot cost optimality either.
  *
  * grid_plan adds the path's cells and the planner's line-of-sight smoothing (planner.shortcut,
  * the same steps and the same samples) in the same call: done in Python, with a call per

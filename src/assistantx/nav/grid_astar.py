@@ -1,8 +1,10 @@
 """A* on a costmap's grid, in C (``_grid_astar.c``), called through ctypes.
 
 The same graph and edge weights as the planner's Dijkstra, searched towards the goal with
-the octile distance as heuristic: an exact search that stops at the goal and touches the
-cells on the goal's side first, where a full Dijkstra settles the whole floor. The extension
+the octile distance, or the landmark bound where it is larger (``landmarks``), as heuristic:
+an exact search that stops at the goal and touches the cells on the goal's side first, where
+a full Dijkstra settles the whole floor. ``distances`` is that full Dijkstra, for measuring
+the landmarks. The extension
 is built with the package (``pyproject.toml``, optional: where no C compiler was at hand it
 is missing, ``available()`` says so and the planner searches with scipy instead).
 
