@@ -183,3 +183,15 @@ def test_the_planning_worker_gives_layered_costs_the_maps_landmarks() -> None:
 def test_no_landmarks_without_a_traversable_cell() -> None:
     costs = np.full((10, 10), LETHAL, dtype=np.uint8)
     assert landmarks.measure_landmarks(costs, 0.05, 2.0, np.zeros((10, 10), np.int32)) is None
+
+
+def test_a_floor_too_big_for_the_table_gets_fewer_landmarks_or_none() -> None:
+    costmap = _walled_room()  # 3,600 cells: 4 bytes a cell a landmark
+    components = GridPlanner(costmap, PlannerParams(landmarks=0)).known_components()
+    assert components is not None
+    cells = costmap.costs.size
+    three = landmarks.measure_landmarks(costmap.costs, 0.05, 2.0, components, 8, 4 * cells * 3)
+    assert three is not None
+    assert three.table.shape == (cells, 3)
+    one = landmarks.measure_landmarks(costmap.costs, 0.05, 2.0, components, 8, 4 * cells * 1)
+    assert one is None

@@ -28,6 +28,9 @@ import numpy.typing as npt
 from assistantx.nav import disk_cache, grid_astar
 
 DEFAULT_COUNT = 8  # landmarks per map: see the README's planning figures
+# The table holds 4 bytes a cell a landmark: on a floor so big that the count asked for
+# would pass this, fewer are measured (none where fewer than 2 fit): 8 up to 2 M cells.
+TABLE_BUDGET_BYTES = 64 * 2**20
 _KIND = "planner-landmarks"
 # The last landmarks measured, by the hash of their costs: every robot, runtime and planning
 # worker on the same map in one process shares them instead of measuring them again.
@@ -68,11 +71,14 @@ def measure_landmarks(
     cost_penalty: float,
     components: npt.NDArray[np.int32],
     count: int = DEFAULT_COUNT,
+    budget_bytes: int = TABLE_BUDGET_BYTES,
 ) -> Landmarks | None:
-    """``count`` landmarks in the largest component of ``components`` (the traversable
-    cells' labels, 0 elsewhere), kept in the map cache by the costs they are measured on;
-    None when there is no traversable cell or the compiled search is not built."""
-    if count <= 0 or not grid_astar.available() or not components.any():
+    """Up to ``count`` landmarks (as many as fit in ``budget_bytes``) in the largest
+    component of ``components`` (the traversable cells' labels, 0 elsewhere), kept in the
+    map cache by the costs they are measured on; None when fewer than 2 fit, there is no
+    traversable cell or the compiled search is not built."""
+    count = min(count, budget_bytes // (4 * max(1, costs.size)))
+    if count < 2 or not grid_astar.available() or not components.any():
         return None
     measured_on = np.array(costs, dtype=np.uint8, order="C")
     inputs = (measured_on.shape, measured_on.tobytes(), resolution, cost_penalty, count)

@@ -56,8 +56,9 @@ class PlannerParams:
     smooth: bool = True
     # A* in C where it was built; False: scipy's bounded Dijkstra (the fallback), same costs
     compiled_search: bool = True
-    # landmarks steering the compiled A* (0: the octile distance alone); same paths, fewer
-    # cells searched, for a set-up of this many full Dijkstras (and one more)
+    # landmarks steering the compiled A* (0: the octile distance alone; fewer on a floor too
+    # big for their table, see landmarks.py); same paths, fewer cells searched, for a set-up
+    # of this many full Dijkstras
     landmarks: int = DEFAULT_COUNT
 
 
