@@ -45,13 +45,15 @@ def test_the_landmark_bound_never_exceeds_the_cheapest_cost() -> None:
     planner = GridPlanner(costmap)
     marks = planner.prepare()
     assert marks is not None
+    y0, y1, x0, x1 = marks.box
+    assert (y1 - y0) * (x1 - x0) < costmap.costs.size / 10  # its free space is a small box
     table = marks.table.astype(np.float64)
     rng = np.random.default_rng(3)
     free = np.argwhere(costmap.costs == 0)
     tight = 0
     for goal in free[rng.integers(0, len(free), 6)]:
-        exact = _reference(costmap, (int(goal[0]), int(goal[1]))).ravel()
-        there = table[goal[0] * costmap.costs.shape[1] + goal[1]]
+        exact = _reference(costmap, (int(goal[0]), int(goal[1])))[y0:y1, x0:x1].ravel()
+        there = table[(goal[0] - y0) * (x1 - x0) + goal[1] - x0]
         usable = (table >= 0) & (there >= 0)
         bound = np.where(usable, np.abs(table - there) - (table + there) * SLACK, 0.0).max(axis=1)
         reached = np.isfinite(exact)
@@ -140,7 +142,8 @@ def test_a_goal_outside_the_landmarks_component_is_planned_without_them() -> Non
     planner = GridPlanner(costmap)
     marks = planner.prepare()
     assert marks is not None
-    room = costmap.costs.shape[1] * 50 + np.arange(5, 55)
+    y0, _, x0, x1 = marks.box
+    room = (50 - y0) * (x1 - x0) + np.arange(5, 55) - x0
     assert (marks.table[room] < 0).all()
     start, goal = (50, 5), (55, 54)
     path = planner.plan(_world(costmap, start), _world(costmap, goal))
@@ -189,7 +192,7 @@ def test_a_floor_too_big_for_the_table_gets_fewer_landmarks_or_none() -> None:
     costmap = _walled_room()  # 3,600 cells: 4 bytes a cell a landmark
     components = GridPlanner(costmap, PlannerParams(landmarks=0)).known_components()
     assert components is not None
-    cells = costmap.costs.size
+    cells = costmap.costs.size  # the box is the whole room: free to its edges
     three = landmarks.measure_landmarks(costmap.costs, 0.05, 2.0, components, 8, 4 * cells * 3)
     assert three is not None
     assert three.table.shape == (cells, 3)

@@ -238,17 +238,35 @@ static int32_t clamp_cell(double v, int32_t size) {
     return (int32_t)cell;
 }
 
+/* The costs a plan searches: a box of the map's grid (all of it, or the box round its
+ * traversable cells, whose costs the planner keeps as an array of their own), at row0, col0
+ * of the map's full_height x full_width cells. */
+typedef struct {
+    const uint8_t *costs;
+    int32_t height, width, row0, col0, full_height, full_width;
+} view;
+
+/* The cost under a point of the map's grid frame (cell units), clamped to the map as
+ * planner.shortcut clamps it. Outside the box it is NO_INFORMATION: every cell there is
+ * untraversable (at least inscribed), and the smoothing only asks whether a cost is below
+ * inscribed, so the answers are the map's own. */
+static int32_t cost_at(const view *w, double gx, double gy) {
+    const int32_t ix = clamp_cell(gx, w->full_width) - w->col0;
+    const int32_t iy = clamp_cell(gy, w->full_height) - w->row0;
+    if (ix < 0 || ix >= w->width || iy < 0 || iy >= w->height) return 255;
+    return (int32_t)w->costs[(int64_t)iy * w->width + ix];
+}
+
 /* Whether every sample of the segment a-b (grid frame, cell units), taken every half cell,
  * costs at most `allowed`: planner._segment_max_cost(...) <= allowed, sample for sample. */
-static int segment_within(const uint8_t *costs, int32_t height, int32_t width, double ax,
-                          double ay, double bx, double by, int32_t allowed) {
+static int segment_within(const view *w, double ax, double ay, double bx, double by,
+                          int32_t allowed) {
     const double dx = bx - ax, dy = by - ay;
     int64_t n = (int64_t)ceil(hypot(dx, dy) * 2.0) + 1;
     if (n < 2) n = 2;
     for (int64_t i = 0; i < n; i++) {
         const double t = (double)i / (double)(n - 1);
-        const int32_t ix = clamp_cell(ax + t * dx, width), iy = clamp_cell(ay + t * dy, height);
-        if ((int32_t)costs[(int64_t)iy * width + ix] > allowed) return 0;
+        if (cost_at(w, ax + t * dx, ay + t * dy) > allowed) return 0;
     }
     return 1;
 }
@@ -258,9 +276,8 @@ static int segment_within(const uint8_t *costs, int32_t height, int32_t width, d
  * one whose segment costs at most the highest cost the path met in between plus a slack of
  * 10 (capped below `inscribed`). Writes the kept waypoints' indices to `kept` (room for n)
  * and returns their number. */
-static int32_t shortcut(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
-                        const double *xs, const double *ys, const int32_t *along, int32_t n,
-                        int32_t *kept) {
+static int32_t shortcut(const view *w, int32_t inscribed, const double *xs, const double *ys,
+                        const int32_t *along, int32_t n, int32_t *kept) {
     int32_t count = 0;
     kept[count++] = 0;
     int32_t i = 0;
@@ -273,7 +290,7 @@ static int32_t shortcut(const uint8_t *costs, int32_t height, int32_t width, int
                 if (along[j] > highest) highest = along[j];
             int32_t allowed = highest + 10;
             if (allowed > inscribed - 1) allowed = inscribed - 1;
-            if (segment_within(costs, height, width, xs[i], ys[i], xs[mid], ys[mid], allowed)) {
+            if (segment_within(w, xs[i], ys[i], xs[mid], ys[mid], allowed)) {
                 best = mid;
                 lo = mid + 1;
             } else {
@@ -305,12 +322,12 @@ static void to_cells(const frame *f, double x, double y, double *gx, double *gy)
     }
 }
 
-/* Smooth the path `cells` (n flat cells) in place: the robot's exact start and goal (world
- * m) stand for the first and last cell, every other cell for its centre (cell_to_world),
- * as planner.shortcut sees them. Leaves the kept cells first in `cells`; returns their
- * number, -1 when memory ran out. */
-static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
-                      const frame *f, const double ends[4], int32_t *cells, int32_t n) {
+/* Smooth the path `cells` (n flat cells of the box) in place: the robot's exact start and
+ * goal (world m) stand for the first and last cell, every other cell for its centre
+ * (cell_to_world, on the map's grid), as planner.shortcut sees them. Leaves the kept cells
+ * first in `cells`; returns their number, -1 when memory ran out. */
+static int32_t smooth(const view *w, int32_t inscribed, const frame *f, const double ends[4],
+                      int32_t *cells, int32_t n) {
     double *xs = malloc((size_t)n * 2 * sizeof(double));
     int32_t *along = malloc((size_t)n * 2 * sizeof(int32_t));
     if (!xs || !along) {
@@ -326,8 +343,10 @@ static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32
             x = ends[i == 0 ? 0 : 2];
             y = ends[i == 0 ? 1 : 3];
         } else { /* cell_to_world: the centre's world point, then back as to_cells does */
-            const double cx = ((double)(cells[i] % width) + 0.5) * f->resolution;
-            const double cy = ((double)(cells[i] / width) + 0.5) * f->resolution;
+            const int32_t col = cells[i] % w->width + w->col0;
+            const int32_t row = cells[i] / w->width + w->row0;
+            const double cx = ((double)col + 0.5) * f->resolution;
+            const double cy = ((double)row + 0.5) * f->resolution;
             if (f->rotated == 0.0) {
                 x = f->origin_x + cx;
                 y = f->origin_y + cy;
@@ -337,26 +356,28 @@ static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32
             }
         }
         to_cells(f, x, y, &xs[i], &ys[i]);
-        along[i] = costs[(int64_t)clamp_cell(ys[i], height) * width + clamp_cell(xs[i], width)];
+        along[i] = cost_at(w, xs[i], ys[i]);
     }
-    const int32_t count = shortcut(costs, height, width, inscribed, xs, ys, along, n, kept);
+    const int32_t count = shortcut(w, inscribed, xs, ys, along, n, kept);
     for (int32_t k = 0; k < count; k++) cells[k] = cells[kept[k]]; /* kept[k] >= k */
     free(xs);
     free(along);
     return count;
 }
 
-/* A whole plan in one call: the search (grid_astar_search's arguments), the path's cells
- * into `out` and, when `smoothing`, the planner's shortcuts over them (`f`, and `ends`: the
- * start's and the goal's world x, y). `counts` gets the path's cells and the cells left
- * first in `out` (all of them unsmoothed). When the path does not fit in `capacity`,
- * counts[1] is -1 and nothing is written (call again with room for counts[0]). Returns the
- * search's result (the cost, -1.0 no path, -2.0 out of memory). */
+/* A whole plan in one call: the search (grid_astar_search's arguments, on the costs of a box
+ * of the map: `box` is its row0, col0 and the map's full height and width), the path's cells
+ * into `out` as flat cells of the whole map and, when `smoothing`, the planner's shortcuts
+ * over them (`f`, and `ends`: the start's and the goal's world x, y). `counts` gets the
+ * path's cells and the cells left first in `out` (all of them unsmoothed). When the path
+ * does not fit in `capacity`, counts[1] is -1 and nothing is written (call again with room
+ * for counts[0]). Returns the search's result (the cost, -1.0 no path, -2.0 out of memory). */
 double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
                  double resolution, double penalty, int32_t start, int32_t goal,
                  cell_state *cells, uint32_t generation,
                  int32_t smoothing, const frame *f, const double ends[4], int32_t *out,
-                 int32_t capacity, int32_t counts[2], const float *marks, int32_t n_marks) {
+                 int32_t capacity, int32_t counts[2], const float *marks, int32_t n_marks,
+                 const int32_t box[4]) {
     if (goal < 0) return -1.0;
     const double cost = grid_astar_search(costs, height, width, inscribed, resolution, penalty,
                                           start, goal, cells, generation, marks, n_marks);
@@ -366,10 +387,13 @@ double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t in
     counts[1] = -1;
     if (n > capacity) return cost;
     counts[1] = n;
+    const view w = {costs, height, width, box[0], box[1], box[2], box[3]};
     if (smoothing && n > 2) {
-        counts[1] = smooth(costs, height, width, inscribed, f, ends, out, n);
+        counts[1] = smooth(&w, inscribed, f, ends, out, n);
         if (counts[1] < 0) return -2.0;
     }
+    for (int32_t k = 0; k < counts[1]; k++) /* the box's cells as the map's */
+        out[k] = (out[k] / width + w.row0) * w.full_width + out[k] % width + w.col0;
     return cost;
 }
 

@@ -40,6 +40,7 @@ _DOUBLES = ctypes.POINTER(ctypes.c_double)
 _Frame = ctypes.c_double * 6  # the map's frame, as _grid_astar.c's `frame`
 _Ends = ctypes.c_double * 4  # the start's and the goal's world x, y
 _Counts = ctypes.c_int32 * 2
+_Box = ctypes.c_int32 * 4  # a box of the map: its first row and column, the map's height, width
 _STATE_BYTES = 16  # sizeof(cell_state)
 _LAST_GENERATION = 2**29 - 1  # a cell's tag keeps the generation above 3 bits
 
@@ -61,6 +62,7 @@ def _library() -> ctypes.CDLL | None:
     function.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, int32]
     function.argtypes += [_ADDRESS, ctypes.c_uint32]
     function.argtypes += [int32, _DOUBLES, _DOUBLES, _ADDRESS, int32, _ADDRESS, _ADDRESS, int32]
+    function.argtypes += [_ADDRESS]
     distances = library.grid_distances
     distances.restype = int32
     distances.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, _ADDRESS]
@@ -128,6 +130,17 @@ class MapFrame:
         )
 
 
+def traversable_box(costs: npt.NDArray[np.uint8]) -> tuple[int, int, int, int]:
+    """The box round the traversable cells (y0, y1, x0, x1), all a compiled search can
+    reach: on a map whose free space is a small part of its grid, searching the box's costs
+    alone keeps the search's state and the landmarks' table small and close together."""
+    traversable = costs < INSCRIBED
+    rows, cols = np.flatnonzero(traversable.any(axis=1)), np.flatnonzero(traversable.any(axis=0))
+    if not len(rows):
+        return (0, 0, 0, 0)
+    return int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1
+
+
 def distances(
     costs: npt.NDArray[np.uint8],
     resolution: float,
@@ -175,13 +188,16 @@ def search(
     start: tuple[int, int],
     goal: tuple[int, int],
     marks: tuple[int, int] = (0, 0),
+    box: tuple[int, int, int, int] | None = None,
 ) -> tuple[npt.NDArray[np.intp], float] | None:
-    """The cheapest path's (row, col) cells from ``start`` to ``goal`` and its cost, or None
-    when no path joins them (``marks`` as for ``plan``). Requires ``available()``."""
-    found = plan(costs, resolution, cost_penalty, start, goal, None, marks)
+    """The cheapest path's (row, col) cells of the map from ``start`` to ``goal`` and its
+    cost, or None when no path joins them (``marks`` and ``box`` as for ``plan``). Requires
+    ``available()``."""
+    found = plan(costs, resolution, cost_penalty, start, goal, None, marks, box)
     if found is None:
         return None
-    return np.column_stack(np.divmod(found.flat, costs.shape[1])), found.cost
+    width = costs.shape[1] if box is None else box[3]
+    return np.column_stack(np.divmod(found.flat, width)), found.cost
 
 
 def plan(
@@ -192,24 +208,30 @@ def plan(
     goal: tuple[int, int],
     smoothing: tuple[MapFrame, tuple[float, float, float, float]] | None,
     marks: tuple[int, int] = (0, 0),
+    box: tuple[int, int, int, int] | None = None,
 ) -> Found | None:
     """The cheapest path from cell ``start`` to cell ``goal`` (row, col), smoothed as
     ``planner.shortcut`` does when ``smoothing`` is given (the map's frame, and the start's
     and the goal's exact world x, y); None when no path joins them. ``marks``: the address
     and column count of a landmark table (``landmarks.Landmarks.marks``; it must bound these
-    costs) to steer the search by, (0, 0) for none. Requires ``available()``."""
+    costs) to steer the search by, (0, 0) for none. ``box``: when ``costs`` are a box of the
+    map (every traversable cell inside it), its first row and column and the map's height
+    and width; ``start`` and ``goal`` are then the box's cells, the path's are the map's.
+    Requires ``available()``."""
     library = _library()
     if library is None:
         raise RuntimeError("the compiled A* is not built")
     grid = np.ascontiguousarray(costs, dtype=np.uint8)
     height, width = grid.shape
-    if height * width >= 2**31:
+    if box is None:
+        box = (0, 0, height, width)
+    if box[2] * box[3] >= 2**31:
         raise ValueError("a grid of 2**31 cells or more is beyond the compiled search")
     frame, ends = _NO_FRAME, _NO_ENDS
     if smoothing is not None:
         frame, ends = smoothing[0].packed, _Ends(*smoothing[1])
     source, target = start[0] * width + start[1], goal[0] * width + goal[1]
-    work, counts = _workspace, _Counts()
+    work, counts, packed_box = _workspace, _Counts(), _Box(*box)
     while True:
         generation = work.next_search(height * width)
         cost = library.grid_plan(
@@ -231,6 +253,7 @@ def plan(
             counts,
             marks[0],
             marks[1],
+            packed_box,
         )
         if cost == -2.0:
             raise MemoryError("the A* search ran out of memory")

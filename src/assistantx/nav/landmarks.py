@@ -43,8 +43,10 @@ _lock = threading.Lock()
 class Landmarks:
     """Each cell's cost from each landmark, and the costs they were measured on."""
 
-    table: npt.NDArray[np.float32]  # (cells, landmarks), C order; -1 where unreached
-    measured_on: npt.NDArray[np.uint8]  # a copy of the costs measured
+    # (cells of the box, landmarks), C order; -1 where unreached
+    table: npt.NDArray[np.float32]
+    measured_on: npt.NDArray[np.uint8]  # a copy of the map's costs measured
+    box: tuple[int, int, int, int]  # y0, y1, x0, x1: the traversable cells' box, the table's
     token: str = field(default_factory=lambda: uuid.uuid4().hex)  # for the planning worker
 
     @property
@@ -77,10 +79,12 @@ def measure_landmarks(
     component of ``components`` (the traversable cells' labels, 0 elsewhere), kept in the
     map cache by the costs they are measured on; None when fewer than 2 fit, there is no
     traversable cell or the compiled search is not built."""
-    count = min(count, budget_bytes // (4 * max(1, costs.size)))
+    y0, y1, x0, x1 = box = grid_astar.traversable_box(costs)
+    count = min(count, budget_bytes // (4 * max(1, (y1 - y0) * (x1 - x0))))
     if count < 2 or not grid_astar.available() or not components.any():
         return None
     measured_on = np.array(costs, dtype=np.uint8, order="C")
+    inside = np.ascontiguousarray(measured_on[y0:y1, x0:x1])
     inputs = (measured_on.shape, measured_on.tobytes(), resolution, cost_penalty, count)
     key = disk_cache.content_key(_KIND, inputs)
     with _lock:
@@ -89,9 +93,9 @@ def measure_landmarks(
             table = disk_cache.cached_array(
                 _KIND,
                 inputs,
-                lambda: _measure(measured_on, resolution, cost_penalty, components, count),
+                lambda: _measure(inside, resolution, cost_penalty, components[y0:y1, x0:x1], count),
             )
-            found = Landmarks(table, measured_on)
+            found = Landmarks(table, measured_on, box)
             _recent[key] = found
             while len(_recent) > _KEEP:
                 _recent.popitem(last=False)

@@ -121,6 +121,7 @@ class GridPlanner:
         self._labels = components
         self._marks: Landmarks | Literal["measure"] | None = marks
         self._base: GridPlanner | None = None  # a layered planner's map planner
+        self._box: _Box | None = None  # the costs the compiled search runs on
 
     def _map_frame(self) -> grid_astar.MapFrame:
         if self._frame is None:
@@ -135,7 +136,7 @@ class GridPlanner:
         other.token, other.version = uuid.uuid4().hex, 0
         # The map's landmarks stay lower bounds on costs never below the map's: taken from
         # this planner when first needed (checked then).
-        other._marks, other._base = "measure", self
+        other._marks, other._base, other._box = "measure", self, None
         return other
 
     def update_window(self, window: tuple[int, int, int, int]) -> None:
@@ -144,6 +145,7 @@ class GridPlanner:
         # kept while no cost fell below those they were measured on (obstacles seen only add).
         self._labels = None
         self._nearest_free = None
+        self._box = None
         marks = self._marks
         if isinstance(marks, Landmarks) and not marks.bounds(self.costmap.costs, window):
             logger.info("costs fell below the planner's landmarks; planning without them")
@@ -178,6 +180,22 @@ class GridPlanner:
         self._marks = marks
         return marks
 
+    def _search_box(self) -> _Box:
+        """The costs the compiled search runs on: the box round the traversable cells (the
+        landmarks' box when steered by them), copied once per version of the costs."""
+        if self._box is None:
+            marks = self.prepare()
+            costs = self.costmap.costs
+            y0, y1, x0, x1 = grid_astar.traversable_box(costs) if marks is None else marks.box
+            whole = (y0, y1, x0, x1) == (0, costs.shape[0], 0, costs.shape[1])
+            inside = costs if whole else np.ascontiguousarray(costs[y0:y1, x0:x1])
+            self._box = _Box(
+                inside,
+                (y0, x0, costs.shape[0], costs.shape[1]),
+                _NO_MARKS if marks is None else marks.marks,
+            )
+        return self._box
+
     def _component_labels(self) -> npt.NDArray[np.int32]:
         if self._labels is None:
             self._labels = _components(self.costmap.traversable)
@@ -196,15 +214,17 @@ class GridPlanner:
         res = self.costmap.grid.resolution
         if self.params.compiled_search and grid_astar.available():
             ends = (start[0], start[1], goal[0], goal[1])
-            marks = self.prepare()
+            box = self._search_box()
+            row0, col0 = box.corner[0], box.corner[1]
             planned = grid_astar.plan(
-                self.costmap.costs,
+                box.costs,
                 res,
                 self.params.cost_penalty,
-                start_cell,
-                goal_cell,
+                (start_cell[0] - row0, start_cell[1] - col0),
+                (goal_cell[0] - row0, goal_cell[1] - col0),
                 (self._map_frame(), ends) if self.params.smooth else None,
-                _NO_MARKS if marks is None else marks.marks,
+                box.marks,
+                box.corner,
             )
             if planned is None:  # cannot happen within one component; kept as a guard
                 raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
@@ -370,6 +390,19 @@ class GridPlanner:
 
 
 _NO_MARKS = (0, 0)
+
+
+@dataclass(frozen=True)
+class _Box:
+    """The costs a compiled search runs on: a box of the map holding every traversable cell
+    (its costs, its first row and column and the map's height and width) and the landmark
+    table measured over the same box."""
+
+    costs: npt.NDArray[np.uint8]
+    corner: tuple[int, int, int, int]
+    marks: tuple[int, int]
+
+
 _FEW_WAYPOINTS = 32  # up to this many, a compiled plan's world points are found in plain floats
 
 
