@@ -198,3 +198,24 @@ def test_a_floor_too_big_for_the_table_gets_fewer_landmarks_or_none() -> None:
     assert three.table.shape == (cells, 3)
     one = landmarks.measure_landmarks(costmap.costs, 0.05, 2.0, components, 8, 4 * cells * 1)
     assert one is None
+
+
+def test_space_opened_outside_the_searched_box_is_searched_after_the_update() -> None:
+    """The search runs on the box round the traversable cells; cells freed outside it (in
+    place, then told) widen the box, and a plan into them is found and optimal."""
+    data = np.full((80, 80), OCCUPIED, dtype=np.int8)
+    data[10:30, 10:30] = 0  # one room: the box is 20 x 20 cells, less the inflation
+    params = InflationParams(inflation_radius=0.1, cost_scaling_factor=5.0, robot_radius=0.05)
+    costmap = Costmap.inflate(OccupancyMap(data, 0.05), params)
+    planner = GridPlanner(costmap)
+    marks = planner.prepare()
+    assert marks is not None
+    assert marks.box[1] <= 30
+    start = (20, 20)
+    planner.plan(_world(costmap, start), _world(costmap, (25, 25)))  # searched in the box
+    costmap.costs[18:22, 28:70] = 0  # a corridor east, out of the box, into new space
+    costmap.costs[18:60, 66:70] = 0
+    planner.update_window((18, 60, 28, 70))
+    goal = (58, 68)
+    path = planner.plan(_world(costmap, start), _world(costmap, goal))
+    assert path.cost == pytest.approx(_reference(costmap, start)[goal], rel=1e-9)
