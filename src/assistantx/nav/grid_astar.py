@@ -20,6 +20,7 @@ import ctypes
 import logging
 import math
 import threading
+from collections.abc import Callable
 from functools import cache
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -36,33 +37,25 @@ logger = logging.getLogger(__name__)
 # Buffers go to C as plain addresses: numpy's ndpointer checks cost more per call than a
 # search on a small floor (five arrays, a few microseconds each).
 _ADDRESS = ctypes.c_void_p
-_DOUBLES = ctypes.POINTER(ctypes.c_double)
 _Frame = ctypes.c_double * 6  # the map's frame, as _grid_astar.c's `frame`
-_Ends = ctypes.c_double * 4  # the start's and the goal's world x, y
-_Counts = ctypes.c_int32 * 2
-_Box = ctypes.c_int32 * 4  # a box of the map: its first row and column, the map's height, width
 _STATE_BYTES = 16  # sizeof(cell_state)
 _LAST_GENERATION = 2**29 - 1  # a cell's tag keeps the generation above 3 bits
 
 
 @cache
 def _library() -> ctypes.CDLL | None:
+    """The extension as a C library, for ``grid_distances`` (the plans call its Python
+    function ``plan``); None where it was not built or is out of date."""
     try:
         from assistantx.nav import _grid_astar  # type: ignore[attr-defined]
     except ImportError:
         logger.info("the compiled A* is not built; plans search with scipy's Dijkstra")
         return None
-    library = ctypes.CDLL(_grid_astar.__file__)
-    if not hasattr(library, "grid_distances"):  # a stale build of an older source
+    if not hasattr(_grid_astar, "plan"):  # a stale build of an older source
         logger.warning("the compiled A* is out of date (rebuild the package); using scipy")
         return None
+    library = ctypes.CDLL(_grid_astar.__file__)
     int32, double = ctypes.c_int32, ctypes.c_double
-    function = library.grid_plan
-    function.restype = double
-    function.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, int32]
-    function.argtypes += [_ADDRESS, ctypes.c_uint32]
-    function.argtypes += [int32, _DOUBLES, _DOUBLES, _ADDRESS, int32, _ADDRESS, _ADDRESS, int32]
-    function.argtypes += [_ADDRESS]
     distances = library.grid_distances
     distances.restype = int32
     distances.argtypes = [_ADDRESS, int32, int32, int32, double, double, int32, _ADDRESS]
@@ -128,6 +121,7 @@ class MapFrame:
         self.packed = _Frame(
             grid.origin_x, grid.origin_y, math.cos(yaw), math.sin(yaw), rotated, grid.resolution
         )
+        self.address = ctypes.addressof(self.packed)
 
 
 def traversable_box(costs: npt.NDArray[np.uint8]) -> tuple[int, int, int, int]:
@@ -218,8 +212,7 @@ def plan(
     map (every traversable cell inside it), its first row and column and the map's height
     and width; ``start`` and ``goal`` are then the box's cells, the path's are the map's.
     Requires ``available()``."""
-    library = _library()
-    if library is None:
+    if _library() is None:
         raise RuntimeError("the compiled A* is not built")
     grid = np.ascontiguousarray(costs, dtype=np.uint8)
     height, width = grid.shape
@@ -227,43 +220,52 @@ def plan(
         box = (0, 0, height, width)
     if box[2] * box[3] >= 2**31:
         raise ValueError("a grid of 2**31 cells or more is beyond the compiled search")
-    frame, ends = _NO_FRAME, _NO_ENDS
+    frame, (sx, sy, gx, gy) = 0, _NO_ENDS
     if smoothing is not None:
-        frame, ends = smoothing[0].packed, _Ends(*smoothing[1])
+        frame, (sx, sy, gx, gy) = smoothing[0].address, smoothing[1]
     source, target = start[0] * width + start[1], goal[0] * width + goal[1]
-    work, counts, packed_box = _workspace, _Counts(), _Box(*box)
+    work, call = _workspace, _module_plan()
     while True:
         generation = work.next_search(height * width)
-        cost = library.grid_plan(
+        cost, cells, kept = call(
             grid.ctypes.data,
             height,
             width,
             INSCRIBED,
-            resolution,
-            cost_penalty,
+            float(resolution),
+            float(cost_penalty),
             source,
             target,
             work.address,
             generation,
-            smoothing is not None,
             frame,
-            ends,
+            float(sx),
+            float(sy),
+            float(gx),
+            float(gy),
             work.path_address,
             len(work.path),
-            counts,
             marks[0],
             marks[1],
-            packed_box,
+            *box,
         )
         if cost == -2.0:
             raise MemoryError("the A* search ran out of memory")
         if cost < 0.0:
             return None
-        if counts[1] >= 0:
+        if kept >= 0:
             break
-        work.grow_path(counts[0])  # a path longer than any before: search again with room
-    return Found(work.path[: counts[1]].astype(np.intp), cost, counts[0])
+        work.grow_path(cells)  # a path longer than any before: search again with room
+    return Found(work.path[:kept].astype(np.intp), cost, cells)
 
 
-_NO_FRAME = _Frame()
-_NO_ENDS = _Ends()
+_NO_ENDS = (0.0, 0.0, 0.0, 0.0)
+
+
+@cache
+def _module_plan() -> Callable[..., tuple[float, int, int]]:
+    """``_grid_astar.plan``: grid_plan called without ctypes (see _grid_astar.c)."""
+    from assistantx.nav import _grid_astar  # type: ignore[attr-defined]
+
+    function: Callable[..., tuple[float, int, int]] = _grid_astar.plan
+    return function
