@@ -4,11 +4,13 @@ since the last plan reach the worker, and the planner's reasons come back as the
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from assistantx.core.errors import UnreachableError
+from assistantx.nav import disk_cache
 from assistantx.nav.costmap import Costmap, update_obstacles
 from assistantx.nav.occupancy_map import FREE, OCCUPIED, OccupancyMap
 from assistantx.nav.plan_process import PlanProcess
@@ -63,3 +65,23 @@ def test_the_worker_raises_the_planners_reason(worker: PlanProcess) -> None:
         worker.plan(planner, (1.0, 2.0), (3.05, 0.8))
     with pytest.raises(UnreachableError, match="off the map"):
         worker.plan(planner, (1.0, 2.0), (30.0, 2.0))
+
+
+def test_a_warmed_worker_measures_the_landmarks_into_the_map_cache(tmp_path: Path) -> None:
+    """The worker keeps the map cache its parent names, and measures a warmed planner's
+    landmarks before its first plan (a second start on the map reads them)."""
+    cache = tmp_path / "cache"
+    disk_cache.use_directory(cache)
+    process = PlanProcess()
+    try:
+        hall = _hall()
+        hall.data[5, 5] = OCCUPIED  # costs no other test measures (no landmarks in memory)
+        planner = GridPlanner(Costmap.inflate(hall))
+        process.warm(planner)
+        path = process.plan(planner, (1.0, 2.0), (5.0, 2.0))
+        assert len(list(cache.glob("planner-landmarks-*.npy"))) == 1  # the worker's
+        assert planner.marks is None  # none measured here
+        assert path.cost == pytest.approx(planner.plan((1.0, 2.0), (5.0, 2.0)).cost)
+    finally:
+        process.close()
+        disk_cache.use_directory(None)

@@ -6,9 +6,11 @@
  * computed in that order so a path's cost is the same sum Dijkstra makes.
  *
  * Every edge weighs at least its grid length, so the octile distance times the resolution
- * never overestimates what is left: the first time the goal leaves the queue its cost is
- * optimal. A node whose cost improves after it left the queue is queued again, so rounding
- * in the heuristic cannot cost optimality either.
+ * never overestimates what is left; nor does the landmark bound (nav/landmarks.py: each
+ * cell's cost from a few landmarks, measured by grid_distances below), less a slack for its
+ * single precision. The heuristic is the larger of the two, so the first time the goal
+ * leaves the queue its cost is optimal. A node whose cost improves after it left the queue
+ * is queued again, so rounding in the heuristic cannot cost optimality either.
  *
  * grid_plan adds the path's cells and the planner's line-of-sight smoothing (planner.shortcut,
  * the same steps and the same samples) in the same call: done in Python, with a call per
@@ -118,6 +120,29 @@ static double octile(int32_t dy, int32_t dx) {
     return hi + (M_SQRT2 - 1.0) * lo;
 }
 
+/* How far a landmark's stored distance may be off, relative to the distances compared: they
+ * are kept in single precision (2**-24 each) from sums in double precision. */
+#define MARK_SLACK (1.0 / (1 << 22))
+
+/* A lower bound on the cost from a cell to the goal: the octile distance (`scale`: the
+ * resolution, 0 for none), and with landmarks (`here`, `there`: the cell's and the goal's
+ * distances from each of `n` landmarks, negative where unreached) the landmark bound
+ * |d(L, goal) - d(L, cell)|, which the triangle inequality makes no more than the path
+ * between them, less a slack for the rounding of the stored distances. */
+static inline double estimate(int32_t dy, int32_t dx, double scale, const float *here,
+                              const float *there, int32_t n) {
+    double best = scale * octile(dy, dx);
+    if (here) {
+        for (int32_t k = 0; k < n; k++) {
+            if (here[k] < 0.0f || there[k] < 0.0f) continue;
+            const double a = (double)here[k], b = (double)there[k];
+            const double bound = fabs(a - b) - (a + b) * MARK_SLACK;
+            if (bound > best) best = bound;
+        }
+    }
+    return best;
+}
+
 /* Search from `start` to `goal` (flat cell indices). `cells` holds one cell_state per cell;
  * a state is valid only where its tag's generation is `generation` (a new number per search,
  * below 2**29), so a search touches only the cells it reaches instead of clearing the whole
@@ -125,8 +150,11 @@ static double octile(int32_t dy, int32_t dx) {
  * Returns the path's cost, -1.0 when the goal cannot be reached, -2.0 when memory ran out. */
 static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t width,
                          int32_t inscribed, double resolution, double penalty, int32_t start,
-                         int32_t goal, cell_state *cells, uint32_t generation) {
-    const int32_t gy = goal / width, gx = goal % width;
+                         int32_t goal, cell_state *cells, uint32_t generation,
+                         const float *marks, int32_t n_marks) {
+    const int32_t gy = goal >= 0 ? goal / width : 0, gx = goal >= 0 ? goal % width : 0;
+    const double scale = goal >= 0 ? resolution : 0.0; /* no goal: no heuristic (Dijkstra) */
+    const float *goal_marks = (goal >= 0 && n_marks > 0) ? marks + (size_t)goal * n_marks : NULL;
     double lengths[8];
     for (int k = 0; k < 8; k++) lengths[k] = resolution * ((DY[k] && DX[k]) ? M_SQRT2 : 1.0);
 #define TOUCH(v)                  \
@@ -139,7 +167,10 @@ static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t wi
 
     heap open = {NULL, cells, 0, 0};
     cells[start].g = 0.0;
-    entry first = {resolution * octile(start / width - gy, start % width - gx), 0.0, start};
+    entry first = {estimate(start / width - gy, start % width - gx, scale,
+                            goal_marks ? marks + (size_t)start * n_marks : NULL, goal_marks,
+                            n_marks),
+                   0.0, start};
     if (heap_push(&open, first) < 0) return -2.0;
     double found = -1.0;
     while (open.size) {
@@ -165,8 +196,10 @@ static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t wi
             if (candidate < cells[v].g) {
                 cells[v].g = candidate;
                 cells[v].tag = (generation << 3) | (uint32_t)k;
-                entry next = {candidate + resolution * octile(ny - gy, nx - gx), (float)candidate,
-                              v};
+                const double h = estimate(ny - gy, nx - gx, scale,
+                                          goal_marks ? marks + (size_t)v * n_marks : NULL,
+                                          goal_marks, n_marks);
+                entry next = {candidate + h, (float)candidate, v};
                 if (heap_push(&open, next) < 0) {
                     free(open.items);
                     return -2.0;
@@ -205,17 +238,35 @@ static int32_t clamp_cell(double v, int32_t size) {
     return (int32_t)cell;
 }
 
+/* The costs a plan searches: a box of the map's grid (all of it, or the box round its
+ * traversable cells, whose costs the planner keeps as an array of their own), at row0, col0
+ * of the map's full_height x full_width cells. */
+typedef struct {
+    const uint8_t *costs;
+    int32_t height, width, row0, col0, full_height, full_width;
+} view;
+
+/* The cost under a point of the map's grid frame (cell units), clamped to the map as
+ * planner.shortcut clamps it. Outside the box it is NO_INFORMATION: every cell there is
+ * untraversable (at least inscribed), and the smoothing only asks whether a cost is below
+ * inscribed, so the answers are the map's own. */
+static int32_t cost_at(const view *w, double gx, double gy) {
+    const int32_t ix = clamp_cell(gx, w->full_width) - w->col0;
+    const int32_t iy = clamp_cell(gy, w->full_height) - w->row0;
+    if (ix < 0 || ix >= w->width || iy < 0 || iy >= w->height) return 255;
+    return (int32_t)w->costs[(int64_t)iy * w->width + ix];
+}
+
 /* Whether every sample of the segment a-b (grid frame, cell units), taken every half cell,
  * costs at most `allowed`: planner._segment_max_cost(...) <= allowed, sample for sample. */
-static int segment_within(const uint8_t *costs, int32_t height, int32_t width, double ax,
-                          double ay, double bx, double by, int32_t allowed) {
+static int segment_within(const view *w, double ax, double ay, double bx, double by,
+                          int32_t allowed) {
     const double dx = bx - ax, dy = by - ay;
     int64_t n = (int64_t)ceil(hypot(dx, dy) * 2.0) + 1;
     if (n < 2) n = 2;
     for (int64_t i = 0; i < n; i++) {
         const double t = (double)i / (double)(n - 1);
-        const int32_t ix = clamp_cell(ax + t * dx, width), iy = clamp_cell(ay + t * dy, height);
-        if ((int32_t)costs[(int64_t)iy * width + ix] > allowed) return 0;
+        if (cost_at(w, ax + t * dx, ay + t * dy) > allowed) return 0;
     }
     return 1;
 }
@@ -225,9 +276,8 @@ static int segment_within(const uint8_t *costs, int32_t height, int32_t width, d
  * one whose segment costs at most the highest cost the path met in between plus a slack of
  * 10 (capped below `inscribed`). Writes the kept waypoints' indices to `kept` (room for n)
  * and returns their number. */
-static int32_t shortcut(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
-                        const double *xs, const double *ys, const int32_t *along, int32_t n,
-                        int32_t *kept) {
+static int32_t shortcut(const view *w, int32_t inscribed, const double *xs, const double *ys,
+                        const int32_t *along, int32_t n, int32_t *kept) {
     int32_t count = 0;
     kept[count++] = 0;
     int32_t i = 0;
@@ -240,7 +290,7 @@ static int32_t shortcut(const uint8_t *costs, int32_t height, int32_t width, int
                 if (along[j] > highest) highest = along[j];
             int32_t allowed = highest + 10;
             if (allowed > inscribed - 1) allowed = inscribed - 1;
-            if (segment_within(costs, height, width, xs[i], ys[i], xs[mid], ys[mid], allowed)) {
+            if (segment_within(w, xs[i], ys[i], xs[mid], ys[mid], allowed)) {
                 best = mid;
                 lo = mid + 1;
             } else {
@@ -272,12 +322,12 @@ static void to_cells(const frame *f, double x, double y, double *gx, double *gy)
     }
 }
 
-/* Smooth the path `cells` (n flat cells) in place: the robot's exact start and goal (world
- * m) stand for the first and last cell, every other cell for its centre (cell_to_world),
- * as planner.shortcut sees them. Leaves the kept cells first in `cells`; returns their
- * number, -1 when memory ran out. */
-static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
-                      const frame *f, const double ends[4], int32_t *cells, int32_t n) {
+/* Smooth the path `cells` (n flat cells of the box) in place: the robot's exact start and
+ * goal (world m) stand for the first and last cell, every other cell for its centre
+ * (cell_to_world, on the map's grid), as planner.shortcut sees them. Leaves the kept cells
+ * first in `cells`; returns their number, -1 when memory ran out. */
+static int32_t smooth(const view *w, int32_t inscribed, const frame *f, const double ends[4],
+                      int32_t *cells, int32_t n) {
     double *xs = malloc((size_t)n * 2 * sizeof(double));
     int32_t *along = malloc((size_t)n * 2 * sizeof(int32_t));
     if (!xs || !along) {
@@ -293,8 +343,10 @@ static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32
             x = ends[i == 0 ? 0 : 2];
             y = ends[i == 0 ? 1 : 3];
         } else { /* cell_to_world: the centre's world point, then back as to_cells does */
-            const double cx = ((double)(cells[i] % width) + 0.5) * f->resolution;
-            const double cy = ((double)(cells[i] / width) + 0.5) * f->resolution;
+            const int32_t col = cells[i] % w->width + w->col0;
+            const int32_t row = cells[i] / w->width + w->row0;
+            const double cx = ((double)col + 0.5) * f->resolution;
+            const double cy = ((double)row + 0.5) * f->resolution;
             if (f->rotated == 0.0) {
                 x = f->origin_x + cx;
                 y = f->origin_y + cy;
@@ -304,41 +356,194 @@ static int32_t smooth(const uint8_t *costs, int32_t height, int32_t width, int32
             }
         }
         to_cells(f, x, y, &xs[i], &ys[i]);
-        along[i] = costs[(int64_t)clamp_cell(ys[i], height) * width + clamp_cell(xs[i], width)];
+        along[i] = cost_at(w, xs[i], ys[i]);
     }
-    const int32_t count = shortcut(costs, height, width, inscribed, xs, ys, along, n, kept);
+    const int32_t count = shortcut(w, inscribed, xs, ys, along, n, kept);
     for (int32_t k = 0; k < count; k++) cells[k] = cells[kept[k]]; /* kept[k] >= k */
     free(xs);
     free(along);
     return count;
 }
 
-/* A whole plan in one call: the search (grid_astar_search's arguments), the path's cells
- * into `out` and, when `smoothing`, the planner's shortcuts over them (`f`, and `ends`: the
- * start's and the goal's world x, y). `counts` gets the path's cells and the cells left
- * first in `out` (all of them unsmoothed). When the path does not fit in `capacity`,
- * counts[1] is -1 and nothing is written (call again with room for counts[0]). Returns the
- * search's result (the cost, -1.0 no path, -2.0 out of memory). */
+/* A whole plan in one call: the search (grid_astar_search's arguments, on the costs of a box
+ * of the map: `box` is its row0, col0 and the map's full height and width), the path's cells
+ * into `out` as flat cells of the whole map and, when `smoothing`, the planner's shortcuts
+ * over them (`f`, and `ends`: the start's and the goal's world x, y). `counts` gets the
+ * path's cells and the cells left first in `out` (all of them unsmoothed). When the path
+ * does not fit in `capacity`, counts[1] is -1 and nothing is written (call again with room
+ * for counts[0]). Returns the search's result (the cost, -1.0 no path, -2.0 out of memory). */
 double grid_plan(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
                  double resolution, double penalty, int32_t start, int32_t goal,
                  cell_state *cells, uint32_t generation,
                  int32_t smoothing, const frame *f, const double ends[4], int32_t *out,
-                 int32_t capacity, int32_t counts[2]) {
+                 int32_t capacity, int32_t counts[2], const float *marks, int32_t n_marks,
+                 const int32_t box[4]) {
+    if (goal < 0) return -1.0;
     const double cost = grid_astar_search(costs, height, width, inscribed, resolution, penalty,
-                                          start, goal, cells, generation);
+                                          start, goal, cells, generation, marks, n_marks);
     if (cost < 0.0) return cost;
     const int32_t n = grid_path(cells, width, start, goal, out, capacity);
     counts[0] = n;
     counts[1] = -1;
     if (n > capacity) return cost;
     counts[1] = n;
+    const view w = {costs, height, width, box[0], box[1], box[2], box[3]};
     if (smoothing && n > 2) {
-        counts[1] = smooth(costs, height, width, inscribed, f, ends, out, n);
+        counts[1] = smooth(&w, inscribed, f, ends, out, n);
         if (counts[1] < 0) return -2.0;
     }
+    for (int32_t k = 0; k < counts[1]; k++) /* the box's cells as the map's */
+        out[k] = (out[k] / width + w.row0) * w.full_width + out[k] % width + w.col0;
     return cost;
 }
 
-static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_grid_astar", NULL, -1, NULL};
+/* A plain binary heap of entries by f, for the full Dijkstra below: a cell reached cheaper
+ * is queued again and its stale entries skipped when they surface (no `where` to keep up to
+ * date on every move, which costs more than the duplicates when every cell is settled). */
+typedef struct {
+    entry *items;
+    size_t size;
+    size_t capacity;
+} plain_heap;
+
+static int plain_push(plain_heap *h, entry e) {
+    if (h->size == h->capacity) {
+        size_t capacity = h->capacity ? h->capacity * 2 : 4096;
+        entry *grown = realloc(h->items, capacity * sizeof(entry));
+        if (!grown) return -1;
+        h->items = grown;
+        h->capacity = capacity;
+    }
+    size_t i = h->size++;
+    while (i > 0) {
+        size_t parent = (i - 1) / 2;
+        if (!(e.f < h->items[parent].f)) break;
+        h->items[i] = h->items[parent];
+        i = parent;
+    }
+    h->items[i] = e;
+    return 0;
+}
+
+static entry plain_pop(plain_heap *h) {
+    entry top = h->items[0];
+    entry last = h->items[--h->size];
+    size_t i = 0;
+    for (;;) {
+        size_t child = 2 * i + 1;
+        if (child >= h->size) break;
+        if (child + 1 < h->size && h->items[child + 1].f < h->items[child].f) child++;
+        if (!(h->items[child].f < last.f)) break;
+        h->items[i] = h->items[child];
+        i = child;
+    }
+    if (h->size) h->items[i] = last;
+    return top;
+}
+
+/* The cheapest cost from `source` to every cell (a full Dijkstra on the search's graph, the
+ * same edge weights summed in the same order), in single precision into out[cell * stride]
+ * (-1 where unreached or not traversable), for the landmark bounds. `cells` is the search's
+ * per-cell state, of which only `g` and the generation are used. Returns the number of cells
+ * reached, -2 when memory ran out. */
+int32_t grid_distances(const uint8_t *costs, int32_t height, int32_t width, int32_t inscribed,
+                       double resolution, double penalty, int32_t source, cell_state *cells,
+                       uint32_t generation, float *out, int32_t stride) {
+    double lengths[8];
+    for (int k = 0; k < 8; k++) lengths[k] = resolution * ((DY[k] && DX[k]) ? M_SQRT2 : 1.0);
+    const uint32_t tag = generation << 3;
+    cells[source].tag = tag;
+    cells[source].g = 0.0;
+    plain_heap open = {NULL, 0, 0};
+    entry first = {0.0, 0.0f, source};
+    if (plain_push(&open, first) < 0) return -2;
+    while (open.size) {
+        const entry e = plain_pop(&open);
+        if (e.f > cells[e.node].g) continue; /* a stale entry: reached cheaper since */
+        const int32_t y = e.node / width, x = e.node % width;
+        const double c_u = (double)costs[e.node], g_u = e.f;
+        for (int k = 0; k < 8; k++) {
+            const int32_t ny = y + DY[k], nx = x + DX[k];
+            if (ny < 0 || ny >= height || nx < 0 || nx >= width) continue;
+            const int32_t v = ny * width + nx;
+            if (costs[v] >= inscribed) continue;
+            if (DY[k] && DX[k] &&
+                (costs[ny * width + x] >= inscribed || costs[y * width + nx] >= inscribed))
+                continue;
+            const double mean = (c_u + (double)costs[v]) / 2.0;
+            const double candidate =
+                g_u + lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
+            if ((cells[v].tag >> 3) != generation) {
+                cells[v].tag = tag;
+                cells[v].g = INFINITY;
+            }
+            if (candidate < cells[v].g) {
+                cells[v].g = candidate;
+                entry next = {candidate, 0.0f, v};
+                if (plain_push(&open, next) < 0) {
+                    free(open.items);
+                    return -2;
+                }
+            }
+        }
+    }
+    free(open.items);
+    int32_t reached = 0;
+    const int64_t size = (int64_t)height * width;
+    for (int64_t v = 0; v < size; v++) {
+        const int fresh = (cells[v].tag >> 3) == generation;
+        out[v * stride] = fresh ? (float)cells[v].g : -1.0f;
+        reached += fresh;
+    }
+    return reached;
+}
+
+/* grid_plan called from Python directly (METH_FASTCALL), without ctypes: on a small floor
+ * ctypes' own work per call (converting 19 arguments through libffi) was a third of a plan
+ * whose caches a full Dijkstra had just emptied. The arguments, in order: the costs'
+ * address, height, width, inscribed, resolution, penalty, start, goal, the cell states'
+ * address, generation, the frame's address (0: no smoothing), the start's and the goal's
+ * world x, y, the out buffer's address, its capacity, the landmark table's address and
+ * columns, and the box (row0, col0, the map's height and width). Returns (cost, the path's
+ * cells, the cells left in out). The GIL is released during the search, as ctypes did. */
+static PyObject *py_plan(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
+    (void)self;
+    if (nargs != 23) {
+        PyErr_SetString(PyExc_TypeError, "plan takes 23 arguments");
+        return NULL;
+    }
+    const uint8_t *costs = PyLong_AsVoidPtr(args[0]);
+    const long height = PyLong_AsLong(args[1]), width = PyLong_AsLong(args[2]);
+    const long inscribed = PyLong_AsLong(args[3]);
+    const double resolution = PyFloat_AsDouble(args[4]), penalty = PyFloat_AsDouble(args[5]);
+    const long start = PyLong_AsLong(args[6]), goal = PyLong_AsLong(args[7]);
+    cell_state *cells = PyLong_AsVoidPtr(args[8]);
+    const unsigned long generation = PyLong_AsUnsignedLong(args[9]);
+    const frame *f = PyLong_AsVoidPtr(args[10]);
+    const double ends[4] = {PyFloat_AsDouble(args[11]), PyFloat_AsDouble(args[12]),
+                            PyFloat_AsDouble(args[13]), PyFloat_AsDouble(args[14])};
+    int32_t *out = PyLong_AsVoidPtr(args[15]);
+    const long capacity = PyLong_AsLong(args[16]);
+    const float *marks = PyLong_AsVoidPtr(args[17]);
+    const long n_marks = PyLong_AsLong(args[18]);
+    const int32_t box[4] = {(int32_t)PyLong_AsLong(args[19]), (int32_t)PyLong_AsLong(args[20]),
+                            (int32_t)PyLong_AsLong(args[21]), (int32_t)PyLong_AsLong(args[22])};
+    if (PyErr_Occurred()) return NULL;
+    int32_t counts[2] = {0, 0};
+    double cost;
+    Py_BEGIN_ALLOW_THREADS;
+    cost = grid_plan(costs, (int32_t)height, (int32_t)width, (int32_t)inscribed, resolution,
+                     penalty, (int32_t)start, (int32_t)goal, cells, (uint32_t)generation,
+                     f != NULL, f, ends, out, (int32_t)capacity, counts, marks,
+                     (int32_t)n_marks, box);
+    Py_END_ALLOW_THREADS;
+    return Py_BuildValue("(dii)", cost, (int)counts[0], (int)counts[1]);
+}
+
+static PyMethodDef methods[] = {
+    {"plan", (PyCFunction)(void (*)(void))py_plan, METH_FASTCALL, "grid_plan, see above"},
+    {NULL, NULL, 0, NULL}};
+
+static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_grid_astar", NULL, -1, methods};
 
 PyMODINIT_FUNC PyInit__grid_astar(void) { return PyModule_Create(&module); }

@@ -38,6 +38,11 @@ def use_directory(directory: Path | None) -> None:
     _directory = directory
 
 
+def directory() -> Path | None:
+    """The folder derived arrays are kept in, None when none."""
+    return _directory
+
+
 def content_key(kind: str, inputs: Iterable[bytes | str | float | int | tuple[int, ...]]) -> str:
     """The hash naming ``kind`` computed from ``inputs`` (arrays passed as their bytes)."""
     digest = hashlib.sha256(f"{kind}\0{FORMAT}".encode())

@@ -16,13 +16,15 @@ from __future__ import annotations
 import logging
 import multiprocessing
 import os
+import pathlib
 import threading
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import Future, ProcessPoolExecutor
 
 import numpy as np
 import numpy.typing as npt
 
+from assistantx.nav import disk_cache
 from assistantx.nav.costmap import Costmap, InflationParams
 from assistantx.nav.occupancy_map import OccupancyMap
 from assistantx.nav.planner import GridPlanner, Path, PlannerParams
@@ -44,10 +46,17 @@ _worker_planners: dict[_Key, GridPlanner] = {}  # in the worker process only
 _PARENT_CHECK_S = 0.5  # how often the worker looks whether the process that started it lives
 
 
+def _start_worker(parent: int, cache: pathlib.Path | None) -> None:
+    """The worker's initializer: it keeps derived arrays (the planners' landmarks) in the
+    parent's map cache, and ends when its parent does."""
+    disk_cache.use_directory(cache)
+    _exit_with_parent(parent)
+
+
 def _exit_with_parent(parent: int) -> None:
-    """The worker's initializer: it ends when its parent does. A parent killed (SIGKILL, a
-    crash) never shuts the pool down, and the worker, blocked on its call queue, lived on,
-    with the resource tracker it holds open (8 of them after one killed test run)."""
+    """The worker ends when its parent does. A parent killed (SIGKILL, a crash) never shuts
+    the pool down, and the worker, blocked on its call queue, lived on, with the resource
+    tracker it holds open (8 of them after one killed test run)."""
 
     def watch() -> None:
         while os.getppid() == parent:
@@ -64,6 +73,19 @@ class _Missing(Exception):
 def _keep_in_worker(key: _Key, payload: _Payload) -> None:
     if key not in _worker_planners:
         _worker_planners[key] = _planner_from(payload)
+
+
+def _prepare_in_worker(key: _Key) -> None:
+    """Measure a kept planner's landmarks now rather than on its first plan."""
+    planner = _worker_planners.get(key)
+    if planner is not None:
+        planner.prepare()
+
+
+def _log_failure(future: Future[None]) -> None:
+    error = future.exception()
+    if error is not None:
+        logger.warning("the planning worker could not prepare a planner: %r", error)
 
 
 def _plan_in_worker(
@@ -109,8 +131,13 @@ class PlanProcess:
         key = (planner.token, planner.version)
         with self._lock:
             if key not in self._sent:
-                self._ensure_pool().submit(_keep_in_worker, key, _payload(planner)).result()
+                pool = self._ensure_pool()
+                pool.submit(_keep_in_worker, key, _payload(planner)).result()
                 self._sent.add(key)
+                # The landmarks next, not waited for: the worker measures them (or reads
+                # them from the map cache) before the first plan it is sent, while the
+                # caller goes on starting.
+                pool.submit(_prepare_in_worker, key).add_done_callback(_log_failure)
 
     def close(self) -> None:
         """Stop the worker (a plan under way finishes first; queued ones are dropped). The
@@ -128,8 +155,8 @@ class PlanProcess:
             self._pool = ProcessPoolExecutor(
                 max_workers=1,
                 mp_context=context,
-                initializer=_exit_with_parent,
-                initargs=(os.getpid(),),
+                initializer=_start_worker,
+                initargs=(os.getpid(), disk_cache.directory()),
             )
             self._sent.clear()
             logger.info("started the planning worker process")
@@ -145,7 +172,17 @@ def _payload(planner: GridPlanner) -> _Payload:
 def _planner_from(payload: _Payload) -> GridPlanner:
     grid, costs, inflation, params, components = payload
     costmap = Costmap(grid, costs, np.empty((0, 0)), inflation)
-    return GridPlanner(costmap, params, components=components)
+    # A robot's layered costs (the map's plus obstacles seen) keep the map planner's
+    # landmarks: measuring them again for every version would cost a few full Dijkstras.
+    marks = next(
+        (
+            kept.marks
+            for kept in reversed(_worker_planners.values())
+            if kept.params == params and kept.marks is not None and kept.marks.bounds(costs)
+        ),
+        None,
+    )
+    return GridPlanner(costmap, params, components=components, marks=marks or "measure")
 
 
 PLAN_PROCESS = PlanProcess()

@@ -5,11 +5,13 @@ cells are traversable, so paths never cut a corner). An edge from u to v weighs
 ``length_m * (1 + cost_penalty * (c_u + c_v) / 2 / 252)``, the cost term of nav2's Smac
 planner: the path keeps away from walls where there is room.
 
-A query runs A* over the whole grid in C (``grid_astar``, the octile distance as heuristic:
-it never overestimates, since every edge weighs at least its grid length, so the path is
-optimal) and keeps nothing between queries. Set-up is the costmap plus a 4-connected
-labelling, which tells an unreachable goal at once (without corner cutting, 8-connected
-moves join exactly the cells that 4-connected ones do).
+A query runs A* over the whole grid in C (``grid_astar``). Its heuristic is the larger of
+the octile distance (it never overestimates, since every edge weighs at least its grid
+length) and the landmark bound (``landmarks``: a few full Dijkstras measured once per map, a
+far closer bound where walls make paths dearer than the straight line); both are lower
+bounds, so the path is optimal. Set-up is the costmap, a 4-connected labelling, which tells
+an unreachable goal at once (without corner cutting, 8-connected moves join exactly the cells
+that 4-connected ones do), and the landmarks (both kept in the map cache).
 
 Where the compiled search was not built (no C compiler at install), a query builds the graph
 only over the cells p with ``oct(s, p) + oct(p, g) <= L`` (an ellipse-like region round
@@ -24,11 +26,12 @@ same waypoints), and resampled for the controller.
 from __future__ import annotations
 
 import itertools
+import logging
 import math
 import uuid
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -36,11 +39,14 @@ import numpy.typing as npt
 from assistantx.core.errors import UnreachableError
 from assistantx.nav import disk_cache, grid_astar
 from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
+from assistantx.nav.landmarks import DEFAULT_COUNT, Landmarks, measure_landmarks
 
 # scipy is imported where it is used: a start whose tables are in the map cache needs none of
 # it (scipy.ndimage alone is about a third of a CPU-second).
 if TYPE_CHECKING:
     from scipy.sparse import csr_matrix
+
+logger = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -50,6 +56,10 @@ class PlannerParams:
     smooth: bool = True
     # A* in C where it was built; False: scipy's bounded Dijkstra (the fallback), same costs
     compiled_search: bool = True
+    # landmarks steering the compiled A* (0: the octile distance alone; fewer on a floor too
+    # big for their table, see landmarks.py); same paths, fewer cells searched, for a set-up
+    # of this many full Dijkstras
+    landmarks: int = DEFAULT_COUNT
 
 
 @dataclass(frozen=True)
@@ -83,10 +93,13 @@ class GridPlanner:
         params: PlannerParams | None = None,
         *,
         components: npt.NDArray[np.int32] | None = None,
+        marks: Landmarks | Literal["measure"] | None = "measure",
     ) -> None:
         """``components``: the traversable cells' labels when the caller has them already
         (the planning worker gets them with the costs); else read from the map cache or
-        computed."""
+        computed. ``marks``: the landmarks to steer by (they must bound these costs), None
+        for none; by default measured on the first compiled plan or ``prepare`` (a few full
+        Dijkstras: a planner that never plans, or plans in the worker, never pays them)."""
         self.costmap = costmap
         self.params = params or PlannerParams()
         # Who this planner is and which costs it plans on, for a worker process that keeps
@@ -106,6 +119,9 @@ class GridPlanner:
                 lambda: _components(traversable),
             )
         self._labels = components
+        self._marks: Landmarks | Literal["measure"] | None = marks
+        self._base: GridPlanner | None = None  # a layered planner's map planner
+        self._box: _Box | None = None  # the costs the compiled search runs on
 
     def _map_frame(self) -> grid_astar.MapFrame:
         if self._frame is None:
@@ -118,18 +134,67 @@ class GridPlanner:
         other.costmap, other.params = costmap, self.params
         other._labels, other._nearest_free, other._frame = None, None, None
         other.token, other.version = uuid.uuid4().hex, 0
+        # The map's landmarks stay lower bounds on costs never below the map's: taken from
+        # this planner when first needed (checked then).
+        other._marks, other._base, other._box = "measure", self, None
         return other
 
     def update_window(self, window: tuple[int, int, int, int]) -> None:
         """The costs in ``window`` changed (in place): forget what was derived from them."""
-        del window  # the whole labelling is redone on next need (one pass, ~linear)
+        # The whole labelling is redone on next need (one pass, ~linear); the landmarks are
+        # kept while no cost fell below those they were measured on (obstacles seen only add).
         self._labels = None
         self._nearest_free = None
+        self._box = None
+        marks = self._marks
+        if isinstance(marks, Landmarks) and not marks.bounds(self.costmap.costs, window):
+            logger.info("costs fell below the planner's landmarks; planning without them")
+            self._marks = None
         self.version += 1
 
     def known_components(self) -> npt.NDArray[np.int32] | None:
         """The component labels when they are made for the current costs, else None."""
         return self._labels
+
+    @property
+    def marks(self) -> Landmarks | None:
+        """The landmarks this planner steers by, if it has them yet (``prepare``)."""
+        return self._marks if isinstance(self._marks, Landmarks) else None
+
+    def prepare(self) -> Landmarks | None:
+        """The landmarks to steer by, measured now if not yet (the map cache and the last
+        ones measured in this process are looked up first); None when it plans without."""
+        if not isinstance(self._marks, str):
+            return self._marks
+        marks = None
+        if self.params.compiled_search and self.params.landmarks > 0 and grid_astar.available():
+            costs = self.costmap.costs
+            if self._base is not None:  # a layered planner: the map's, where they still hold
+                marks = self._base.prepare()
+                if marks is not None and not marks.bounds(costs):
+                    marks = None
+            else:
+                res, penalty = self.costmap.grid.resolution, self.params.cost_penalty
+                labels, count = self._component_labels(), self.params.landmarks
+                marks = measure_landmarks(costs, res, penalty, labels, count)
+        self._marks = marks
+        return marks
+
+    def _search_box(self) -> _Box:
+        """The costs the compiled search runs on: the box round the traversable cells (the
+        landmarks' box when steered by them), copied once per version of the costs."""
+        if self._box is None:
+            marks = self.prepare()
+            costs = self.costmap.costs
+            y0, y1, x0, x1 = grid_astar.traversable_box(costs) if marks is None else marks.box
+            whole = (y0, y1, x0, x1) == (0, costs.shape[0], 0, costs.shape[1])
+            inside = costs if whole else np.ascontiguousarray(costs[y0:y1, x0:x1])
+            self._box = _Box(
+                inside,
+                (y0, x0, costs.shape[0], costs.shape[1]),
+                _NO_MARKS if marks is None else marks.marks,
+            )
+        return self._box
 
     def _component_labels(self) -> npt.NDArray[np.int32]:
         if self._labels is None:
@@ -149,13 +214,17 @@ class GridPlanner:
         res = self.costmap.grid.resolution
         if self.params.compiled_search and grid_astar.available():
             ends = (start[0], start[1], goal[0], goal[1])
+            box = self._search_box()
+            row0, col0 = box.corner[0], box.corner[1]
             planned = grid_astar.plan(
-                self.costmap.costs,
+                box.costs,
                 res,
                 self.params.cost_penalty,
-                start_cell,
-                goal_cell,
+                (start_cell[0] - row0, start_cell[1] - col0),
+                (goal_cell[0] - row0, goal_cell[1] - col0),
                 (self._map_frame(), ends) if self.params.smooth else None,
+                box.marks,
+                box.corner,
             )
             if planned is None:  # cannot happen within one component; kept as a guard
                 raise UnreachableError(f"goal {_fmt(goal)} is cut off from start {_fmt(start)}")
@@ -318,6 +387,20 @@ class GridPlanner:
             length += math.sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0))
         points = np.array(waypoints, dtype=np.float64)
         return Path(points, length, planned.cost, planned.path_cells)
+
+
+_NO_MARKS = (0, 0)
+
+
+@dataclass(frozen=True)
+class _Box:
+    """The costs a compiled search runs on: a box of the map holding every traversable cell
+    (its costs, its first row and column and the map's height and width) and the landmark
+    table measured over the same box."""
+
+    costs: npt.NDArray[np.uint8]
+    corner: tuple[int, int, int, int]
+    marks: tuple[int, int]
 
 
 _FEW_WAYPOINTS = 32  # up to this many, a compiled plan's world points are found in plain floats
