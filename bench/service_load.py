@@ -67,6 +67,40 @@ def _pct(values: list[float], q: float) -> float:
     return ordered[min(len(ordered) - 1, round(q * (len(ordered) - 1)))]
 
 
+class _CpuMeter:
+    """The service's CPU time (all threads) and its loop thread's time on a CPU and waiting
+    for one (Linux ``/proc``): on a shared machine a slow answer is often the loop waiting
+    for a core, not working; these tell the two apart. Empty figures where ``/proc`` is not."""
+
+    def __init__(self, pid: int) -> None:
+        self.pid = pid
+
+    def read(self) -> tuple[float, float, float] | None:
+        """(process CPU s, loop thread on-CPU s, loop thread run-queue wait s)."""
+        try:
+            stat = Path(f"/proc/{self.pid}/stat").read_text().rsplit(")", 1)[1].split()
+            sched = Path(f"/proc/{self.pid}/task/{self.pid}/schedstat").read_text().split()
+        except OSError:
+            return None
+        ticks = os.sysconf("SC_CLK_TCK")
+        return (int(stat[11]) + int(stat[12])) / ticks, int(sched[0]) / 1e9, int(sched[1]) / 1e9
+
+    @staticmethod
+    def phase(
+        name: str, before: tuple[float, float, float] | None, after: object, calls: int
+    ) -> dict[str, object]:
+        if before is None or not isinstance(after, tuple):
+            return {}
+        cpu, on_cpu, waiting = (a - b for a, b in zip(after, before, strict=True))
+        return {
+            f"{name}_service_cpu_s": round(cpu, 2),
+            f"{name}_service_cpu_ms_per_call": round(1000 * cpu / max(calls, 1), 2),
+            f"{name}_loop_thread_on_cpu_s": round(on_cpu, 2),
+            f"{name}_loop_thread_runqueue_wait_s": round(waiting, 2),
+            f"{name}_load_avg_1min": round(os.getloadavg()[0], 2),
+        }
+
+
 def _start(
     data_dir: Path, port: int, args: argparse.Namespace
 ) -> tuple[subprocess.Popen[bytes], str]:
@@ -164,20 +198,27 @@ async def _post_under_load(
         await asyncio.sleep(0.25)
 
 
-async def _loop_lag_s(client: httpx.AsyncClient) -> float | None:
+LAG = "assistantx_event_loop_lag_max_seconds"
+OWN_LAG = "assistantx_event_loop_own_lag_max_seconds"  # less the loop's waits for a CPU
+
+
+async def _loop_lags(client: httpx.AsyncClient) -> dict[str, float]:
+    """The service's loop-lag gauges (the longest stall of the last minute)."""
     text = (await client.get("/metrics", headers={"Authorization": f"Bearer {TOKEN}"})).text
+    found: dict[str, float] = {}
     for line in text.splitlines():
-        if line.startswith("assistantx_event_loop_lag_max_seconds "):
-            return float(line.split()[1])
-    return None
+        name, _, value = line.partition(" ")
+        if name in (LAG, OWN_LAG):
+            found[name] = float(value)
+    return found
 
 
-async def _watch_lag(client: httpx.AsyncClient, lags: list[float], stop: asyncio.Event) -> None:
-    """The service's loop-lag gauge once a second while the load runs."""
+async def _watch_lag(
+    client: httpx.AsyncClient, lags: list[dict[str, float]], stop: asyncio.Event
+) -> None:
+    """The service's loop-lag gauges once a second while the load runs."""
     while not stop.is_set():
-        lag = await _loop_lag_s(client)
-        if lag is not None:
-            lags.append(lag)
+        lags.append(await _loop_lags(client))
         await asyncio.sleep(1.0)
 
 
@@ -191,7 +232,9 @@ async def _ended_within(submitted: dict[str, float], ended: dict[str, float], s:
     return True
 
 
-async def _run(url: str, n: int, load_s: float, drain_s: float) -> dict[str, object]:
+async def _run(
+    url: str, n: int, load_s: float, drain_s: float, meter: _CpuMeter
+) -> dict[str, object]:
     ended: dict[str, float] = {}
     outcomes: dict[str, str] = {}
     follower = asyncio.create_task(_follow(url, ended, outcomes))
@@ -235,27 +278,30 @@ async def _run(url: str, n: int, load_s: float, drain_s: float) -> dict[str, obj
             t0 = time.perf_counter()
             (await client.get(path, headers=headers)).raise_for_status()
             idle_gets.append(time.perf_counter() - t0)
-        lag_idle = await _loop_lag_s(client)
+        lag_idle = await _loop_lags(client)
 
         stop_probe = asyncio.Event()
-        lags: list[float] = []
+        lags: list[dict[str, float]] = []
         probe = asyncio.create_task(_probe(client, submitted, samples, stop_probe))
         watch = asyncio.create_task(_watch_lag(client, lags, stop_probe))
         t_start = time.perf_counter()
+        cpu_burst = meter.read()
         posts += await asyncio.gather(*(submit(i) for i in range(n)))
         t_submitted = time.perf_counter()
+        cpu_load = meter.read()
         during: list[float] = []
         poster = asyncio.create_task(_post_under_load(submit, during, stop_probe))
         await asyncio.sleep(load_s)  # the fixed load phase: the probes and POSTs run meanwhile
         stop_probe.set()
         await asyncio.gather(probe, poster, watch)
+        cpu_end = meter.read()
         drained = await _ended_within(submitted, ended, drain_s)
         t_done = time.perf_counter()
         unfinished = sorted(set(submitted) - set(ended))
         for iid in unfinished:  # the bounded end: what is left is cancelled, and counted
             await client.post(f"/v1/instructions/{iid}/cancel", headers=headers)
         await _ended_within(submitted, ended, 30)
-        lag_load = await _loop_lag_s(client)
+        lags.append(await _loop_lags(client))
         after: list[float] = []  # every instruction read once the load is over
         largest = 0
         for iid in submitted:
@@ -287,12 +333,19 @@ async def _run(url: str, n: int, load_s: float, drain_s: float) -> dict[str, obj
         "loaded_post_p99_ms": round(1000 * _pct(during, 0.99), 1),
         "loaded_get_p50_ms": round(1000 * _pct(gets_during, 0.5), 1),
         "loaded_get_p99_ms": round(1000 * _pct(gets_during, 0.99), 1),
-        "loop_lag_max_s_idle": lag_idle,
-        "loop_lag_max_s_loaded": max([*lags, lag_load or 0.0]),
+        "loop_lag_max_s_idle": lag_idle.get(LAG),
+        "loop_lag_max_s_loaded": max((lag[LAG] for lag in lags if LAG in lag), default=None),
+        "loop_own_lag_max_s_idle": lag_idle.get(OWN_LAG),  # None: a service without it
+        "loop_own_lag_max_s_loaded": max(
+            (lag[OWN_LAG] for lag in lags if OWN_LAG in lag), default=None
+        ),
         "load_s": load_s,
         "drained": drained,
         "cancelled_after_drain": len(unfinished),
     }
+    figures |= _CpuMeter.phase("burst", cpu_burst, cpu_load, n)
+    load_calls = len(during) + sum(len(timed) for timed in samples.values())
+    figures |= _CpuMeter.phase("load", cpu_load, cpu_end, load_calls)
     for name, timed in samples.items():
         took = [seconds for _, seconds in timed]
         figures[f"{name}_n"] = len(took)
@@ -371,7 +424,8 @@ def main() -> None:
         url = f"http://127.0.0.1:{port}"
         try:
             asyncio.run(_wait_ready(url))
-            figures = asyncio.run(_run(url, args.n, args.load_s, args.drain_s))
+            meter = _CpuMeter(process.pid)
+            figures = asyncio.run(_run(url, args.n, args.load_s, args.drain_s, meter))
         finally:
             process.terminate()
             process.wait(15)
@@ -397,8 +451,19 @@ def main() -> None:
         f"with {args.n} running: POST p50 {figures['loaded_post_p50_ms']} ms, p99 "
         f"{figures['loaded_post_p99_ms']} ms ({figures['loaded_post_n']} calls); GET p50 "
         f"{figures['loaded_get_p50_ms']} ms, p99 {figures['loaded_get_p99_ms']} ms; longest "
-        f"loop stall {figures['loop_lag_max_s_loaded']} s"
+        f"loop stall {figures['loop_lag_max_s_loaded']} s, longest less its waits for a CPU "
+        f"{figures['loop_own_lag_max_s_loaded']} s (idle: {figures['loop_lag_max_s_idle']} s, "
+        f"own {figures['loop_own_lag_max_s_idle']} s)"
     )
+    for phase in ("burst", "load"):
+        if f"{phase}_service_cpu_s" in figures:
+            print(
+                f"{phase}: service CPU {figures[f'{phase}_service_cpu_s']} s "
+                f"({figures[f'{phase}_service_cpu_ms_per_call']} ms a call); its loop thread "
+                f"on a CPU {figures[f'{phase}_loop_thread_on_cpu_s']} s, waiting for one "
+                f"{figures[f'{phase}_loop_thread_runqueue_wait_s']} s; load average "
+                f"{figures[f'{phase}_load_avg_1min']}"
+            )
     for name in ("get_instruction", "list_instructions", "robot"):
         print(
             f"during the load, {name}: p50 {figures[f'{name}_p50_ms']} ms, p99 "

@@ -31,6 +31,7 @@ TYPES = {
     "assistantx_http_request_duration_seconds": "histogram",
     "assistantx_duplicate_sends_skipped": "gauge",
     "assistantx_event_loop_lag_max_seconds": "gauge",
+    "assistantx_event_loop_own_lag_max_seconds": "gauge",
     "assistantx_event_streams": "gauge",
     "assistantx_inbound_events_skipped": "counter",
     "assistantx_robot_busy": "gauge",
@@ -147,6 +148,11 @@ async def test_each_family_has_its_type_and_the_values_of_a_real_run(tmp_path: P
         families["assistantx_event_loop_lag_max_seconds"], "assistantx_event_loop_lag_max_seconds"
     )
     assert list(lag) == [()] and lag[()] >= 0.0
+    own = _values(
+        families["assistantx_event_loop_own_lag_max_seconds"],
+        "assistantx_event_loop_own_lag_max_seconds",
+    )
+    assert list(own) == [()] and 0.0 <= own[()] <= lag[()]
     streams = families["assistantx_event_streams"]
     assert _values(streams, "assistantx_event_streams") == {(): 0.0}  # none is open here
 
@@ -167,7 +173,7 @@ def test_two_apps_in_one_process_keep_their_own_counts(tmp_path: Path) -> None:
         types = {f.name: f.type for f in text_string_to_metric_families(text)}
         # The loop-lag, event-stream and robot gauges are the runtime's: a bare ServiceMetrics
         # has none.
-        runtimes = ("loop_lag", "event_streams", "robot_")
+        runtimes = ("event_loop_", "event_streams", "robot_")
         assert types == {k: v for k, v in TYPES.items() if not any(r in k for r in runtimes)}
         return {f.name: f.samples for f in text_string_to_metric_families(text)}
 

@@ -8,7 +8,12 @@ import threading
 import pytest
 
 from assistantx.agents.base import Reasoner, ReasonerFactory
+from assistantx.core.office import PersonId, load_office
+from assistantx.core.settings import Settings
 from assistantx.service.reasoner_warmup import DeferredFactory
+from assistantx.sim.office import SimOffice
+from helpers.office import sim_assistant, started
+from service.stapler_reasoner import build_factory as stapler_factory
 
 
 class _Built:
@@ -96,3 +101,28 @@ async def test_waiting_for_a_factory_being_built_leaves_the_loop_free() -> None:
     release.set()
     await waiting
     assert deferred.factory() is made
+
+
+async def test_an_instruction_started_outside_admission_waits_for_the_warm_up_off_the_loop() -> (
+    None
+):
+    # A direct message's instruction calls Assistant.submit itself, not through Admission.
+    office = load_office()
+    sim = SimOffice(office)
+    release = threading.Event()
+
+    def build() -> ReasonerFactory:
+        assert release.wait(timeout=10), "the wait held the loop"
+        return stapler_factory(office, Settings())
+
+    deferred = DeferredFactory(build)
+    assistant = sim_assistant(sim, deferred)
+    assistant.reasoner_ready = deferred.built
+    async with started(sim, assistant):
+        deferred.warm_in_background()
+        submitting = asyncio.create_task(assistant.submit(PersonId("lee"), "a stapler please"))
+        await asyncio.sleep(0)  # the submission is waiting for the warm-up now
+        release.set()  # only a free loop gets here
+        stm = await submitting
+        assert stm.instruction_id in assistant.running
+        assert assistant.cancel(stm.instruction_id)

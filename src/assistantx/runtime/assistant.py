@@ -120,6 +120,10 @@ class Assistant:
             )
         )
         self.running: dict[str, Running] = {}
+        # Awaited before the reasoner factory is called: a factory still being built (the
+        # service's warm-up thread after ready) is waited for off the loop, whoever starts the
+        # instruction (an admitted POST, a direct message, a resumed one).
+        self.reasoner_ready: Callable[[], Awaitable[None]] | None = None
         # The latest FINISHED_KEPT ended instructions (older ones are in the journal, if any):
         # a service running for months must not keep every instruction it ever ran.
         self.finished: OrderedDict[str, ShortTermMemory] = OrderedDict()
@@ -216,6 +220,8 @@ class Assistant:
                 started_at=self.clock.now(),
             )
             stm.embodied.robot_place = self.parts.robot.state().place
+        if self.reasoner_ready is not None:
+            await self.reasoner_ready()
         reasoner = self.parts.reasoner_factory()
         await reasoner.start()  # its stop() runs when the instruction ends, in _run
         runner = InstructionRunner(

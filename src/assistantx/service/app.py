@@ -38,10 +38,12 @@ from assistantx.service.datalock import DataDirLock
 from assistantx.service.errors import install_error_handlers
 from assistantx.service.offices import routes as office_routes
 from assistantx.service.offices.directory import Offices
-from assistantx.service.offices.routing import OfficeRouting, office_of
+from assistantx.service.offices.routing import OfficeRouting
 from assistantx.service.pushes import OfficePushes
+from assistantx.service.request_metrics import RequestMetrics
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
+from assistantx.service.telemetry import ServiceMetrics
 
 logger = logging.getLogger(__name__)
 
@@ -116,18 +118,6 @@ def create_app(
     app.state.runtime = None if offices.several else offices.slots[offices.home].runtime
     install_error_handlers(app)
 
-    @app.middleware("http")
-    async def count_requests(request, call_next):  # type: ignore[no-untyped-def]
-        started = time.perf_counter()
-        response = await call_next(request)
-        route = request.scope.get("route")
-        path = getattr(route, "path", "unmatched")
-        runtime = offices.serving(office_of(request.scope))
-        if runtime is not None:
-            seconds = time.perf_counter() - started
-            runtime.metrics.request_served(request.method, path, response.status_code, seconds)
-        return response
-
     for module in (
         health,
         whoami,
@@ -149,6 +139,12 @@ def create_app(
 
     if STATIC_DIR.is_dir():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="static")
+
+    def metrics_of(office: str | None) -> ServiceMetrics | None:
+        runtime = offices.serving(office)
+        return runtime.metrics if runtime is not None else None
+
+    app.add_middleware(RequestMetrics, metrics_of=metrics_of)  # innermost: sees the route
     app.add_middleware(ClientGone)  # a client leaving a stream is no traceback
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
     app.add_middleware(OfficeRouting)  # /v1/offices/{office}/... reaches the routes

@@ -260,6 +260,8 @@ class ServiceRuntime:
         self.metrics.count_skipped(*skipped)
         self.metrics.registry.register(RobotGauges(lambda: robot_states(self)))
         deferred = self._deferred_reasoner
+        if deferred is not None:  # a direct message's instruction waits off the loop too
+            self.assistant.reasoner_ready = deferred.built
         self.admission = Admission(
             self.assistant, self.journal, deferred.built if deferred is not None else None
         )

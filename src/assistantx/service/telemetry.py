@@ -201,6 +201,12 @@ class ServiceMetrics:
             "the longest the event loop was blocked in the last minute",
             registry=self.registry,
         ).set_function(monitor.max_lag_s)
+        Gauge(
+            "assistantx_event_loop_own_lag_max_seconds",
+            "the longest the service's own code held the event loop in the last minute "
+            "(the lag less the loop thread's waits for a CPU, where Linux reports them)",
+            registry=self.registry,
+        ).set_function(monitor.max_own_lag_s)
 
     def watch_streams(self, open_streams: Callable[[], int]) -> None:
         Gauge(
