@@ -91,3 +91,19 @@ def test_the_service_imports_no_reader_before_it_is_ready() -> None:
         check=True,
     )
     assert json.loads(out.stdout.strip().splitlines()[-1]) == []
+
+
+# The embedded service journals to SQLite: PostgreSQL's driver is for replicas on a shared
+# database (ASSISTANTX_DATABASE_URL) and is imported where they connect.
+ONLY_WITH_A_DATABASE = ("psycopg", "psycopg_binary", "psycopg_c", "psycopg_pool")
+
+
+def test_the_service_imports_no_postgres_driver_without_a_database() -> None:
+    out = subprocess.run(
+        [sys.executable, "-c", _SERVE_PROBE.format(late=ONLY_WITH_A_DATABASE)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
+    assert json.loads(out.stdout.strip().splitlines()[-1]) == []
