@@ -7,8 +7,9 @@ that moment (from ``/proc/PID/stat``: wall time on a shared machine mostly measu
 neighbours). That answer comes a little after the service is ready, and the reasoner's
 warm-up (a thread started at ready) runs meanwhile and is counted too; the service also
 logs its own CPU time at the moment it became ready (``ready_cpu_s_self``, read from its
-log). Then SIGINT: the seconds until the process exited, and whether any process it had
-started (the planning worker, multiprocessing's resource tracker) was still running.
+log). Then SIGINT (``--signal TERM``: SIGTERM, as a supervisor stops it): the seconds until
+the process exited, and whether any process it had started (the planning worker,
+multiprocessing's resource tracker) was still running.
 The office map is the repository's; "warehouse" is nav2's (maps/nav2, 30 x 50 m at 3 cm,
 the largest there), with anchors for the office's places spread over its free space.
 
@@ -20,10 +21,12 @@ folder first (not counted); ``--no-bytecode`` measures the environment as it is.
 
 Each figure of one start varies by a few tenths of a CPU-second with the machine's load;
 ``--repeat N`` starts N times after the first on the same data folder ("second": the
-median of those, with each run listed).
+median of those, with each run listed), and ``--fresh N`` makes N first starts, each on a
+data folder of its own ("first": their median; the later starts use the last folder).
 
     python bench/serve_start.py [--maps office,warehouse] [--localize | --no-localize]
-                                [--bytecode | --no-bytecode] [--repeat N]
+                                [--bytecode | --no-bytecode] [--repeat N] [--fresh N]
+                                [--signal INT | TERM]
 
 Last line: one JSON object.
 """
@@ -91,7 +94,9 @@ def _env(base: dict[str, str], data_dir: Path, map_yaml: Path, localize: bool) -
     }
 
 
-def start_once(env: dict[str, str], log: Path) -> dict[str, object]:
+def start_once(
+    env: dict[str, str], log: Path, stop: signal.Signals = signal.SIGINT
+) -> dict[str, object]:
     port = _free_port()
     # -v: the service logs its own CPU time at ready (INFO), read back from the log below
     cmd = [sys.executable, "-m", "assistantx", "-v", "serve"]
@@ -113,7 +118,7 @@ def start_once(env: dict[str, str], log: Path) -> dict[str, object]:
     ready_cpu = _cpu_s(process.pid)
     ready_wall = time.perf_counter() - began
     children = [child.pid for child in descendants(process.pid)]
-    process.send_signal(signal.SIGINT)
+    process.send_signal(stop)
     stopping = time.perf_counter()
     try:
         process.wait(60)
@@ -150,8 +155,11 @@ def main() -> None:
     parser.add_argument("--localize", action=argparse.BooleanOptionalAction, default=True)
     parser.add_argument("--bytecode", action=argparse.BooleanOptionalAction, default=True)
     parser.add_argument("--repeat", type=int, default=1, help="starts after the first")
+    parser.add_argument("--fresh", type=int, default=1, help="first starts, each on a new folder")
+    parser.add_argument("--signal", default="INT", choices=["INT", "TERM"], help="the stop's")
     args = parser.parse_args()
     results: dict[str, dict[str, object]] = {}
+    stop = signal.Signals[f"SIG{args.signal}"]
     with tempfile.TemporaryDirectory() as tmp:
         base = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
         if args.bytecode:
@@ -161,17 +169,25 @@ def main() -> None:
             (warm / "data").mkdir(parents=True)
             start_once(_env(base, warm / "data", MAPS["office"], args.localize), warm / "log")
         for name in args.maps.split(","):
-            data_dir = Path(tmp) / name / "data"
-            data_dir.mkdir(parents=True)
-            env = _env(base, data_dir, MAPS[name], args.localize)
+            anchors = None
             if name != "office":
+                (Path(tmp) / name).mkdir()
                 anchors = _anchors_for(MAPS[name], Path(tmp) / name / "anchors.yaml")
-                env["ASSISTANTX_MAP_ANCHORS"] = str(anchors)
             log = Path(tmp) / name / "server.log"
-            first = start_once(env, log)
-            later = [start_once(env, log) for _ in range(max(1, args.repeat))]
+            firsts = []
+            for attempt in range(max(1, args.fresh)):  # each on an empty data folder
+                data_dir = Path(tmp) / name / f"data-{attempt}"
+                data_dir.mkdir(parents=True)
+                env = _env(base, data_dir, MAPS[name], args.localize)
+                if anchors is not None:
+                    env["ASSISTANTX_MAP_ANCHORS"] = str(anchors)
+                firsts.append(start_once(env, log, stop))
+            first = _median_run(firsts)
+            later = [start_once(env, log, stop) for _ in range(max(1, args.repeat))]
             second = _median_run(later)
             results[name] = {"first": first, "second": second}
+            if len(firsts) > 1:
+                results[name]["first_ready_cpu_s"] = [run["ready_cpu_s"] for run in firsts]
             if len(later) > 1:
                 results[name]["later_ready_cpu_s"] = [run["ready_cpu_s"] for run in later]
                 results[name]["later_ready_cpu_s_self"] = [run["ready_cpu_s_self"] for run in later]
@@ -182,7 +198,7 @@ def main() -> None:
                 f"stop {first['stop_s']} / {second['stop_s']} s; "
                 f"processes left {first['children_left']} / {second['children_left']}"
             )
-    summary = {"maps": results, "bytecode": args.bytecode}
+    summary = {"maps": results, "bytecode": args.bytecode, "signal": args.signal}
     print(json.dumps(summary | {"load_avg_1min": round(os.getloadavg()[0], 1)}))
 
 

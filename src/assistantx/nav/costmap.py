@@ -4,9 +4,9 @@ Costs (uint8, nav2 values): 254 LETHAL on occupied cells, 253 INSCRIBED within
 ``robot_radius`` of one (the robot's centre there means a collision), then an exponential
 decay ``252 * exp(-cost_scaling_factor * (d - robot_radius))`` out to ``inflation_radius``,
 0 beyond, and 255 NO_INFORMATION on unknown cells. ``d`` is the Euclidean distance in metres
-between cell centres, from scipy's exact distance transform, taken tile by tile and exact up
-to ``EXACT_DISTANCE_M`` (``obstacle_distance_m`` is ``inf`` farther out; every reader
-compares it with less).
+between cell centres, from an exact distance transform (nav.map_transforms), taken tile by
+tile and exact up to ``EXACT_DISTANCE_M`` (``obstacle_distance_m`` is ``inf`` farther out;
+every reader compares it with less).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from assistantx.nav import disk_cache
+from assistantx.nav import disk_cache, map_transforms
 from assistantx.nav.occupancy_map import UNKNOWN, OccupancyMap
 
 FREE_SPACE = 0
@@ -66,14 +66,13 @@ def capped_distance(
 ) -> npt.NDArray[np.float64]:
     """Euclidean distance (m) from each cell centre to the nearest lethal one, exact up to
     ``reach_m`` and ``inf`` beyond. Computed tile by tile, each with a halo of the reach:
-    scipy's transform of a whole big map holds ~40 bytes a cell at once (400 MB for a
-    175 x 142 m floor at 5 cm); a tile's is small, and a tile with no obstacle near costs
-    nothing. A nearest obstacle within the reach lies inside the halo, so those distances
-    equal the whole map's; a larger one in the tile only says the true one is larger too."""
+    scipy's transform (where the compiled one is not built) of a whole big map holds ~40
+    bytes a cell at once (400 MB for a 175 x 142 m floor at 5 cm); a tile's is small, and a
+    tile with no obstacle near costs nothing. A nearest obstacle within the reach lies inside
+    the halo, so those distances equal the whole map's; a larger one in the tile only says
+    the true one is larger too."""
     height, width = lethal.shape
     halo = math.ceil(reach_m / resolution)
-    from scipy.ndimage import distance_transform_edt  # here: a cached start needs no scipy
-
     out = np.full(lethal.shape, math.inf)
     for y0 in range(0, height, _TILE):
         for x0 in range(0, width, _TILE):
@@ -83,7 +82,7 @@ def capped_distance(
             tile = lethal[ya:yb, xa:xb]
             if not tile.any():
                 continue
-            cells = np.asarray(distance_transform_edt(~tile), dtype=np.float64)
+            cells = map_transforms.distance_to(tile)
             cells = cells[y0 - ya : y1 - ya, x0 - xa : x1 - xa]
             cells[cells > halo] = math.inf
             out[y0:y1, x0:x1] = cells * resolution
@@ -162,12 +161,7 @@ def update_obstacles(
     my, mx = np.divmod(marked, grid.width)
     near = (my >= my0) & (my < my1) & (mx >= mx0) & (mx < mx1)
     lethal[my[near] - my0, mx[near] - mx0] = True
-    if lethal.any():
-        from scipy.ndimage import distance_transform_edt
-
-        distance = np.asarray(distance_transform_edt(~lethal), dtype=np.float64) * grid.resolution
-    else:
-        distance = np.full(lethal.shape, math.inf)
+    distance = map_transforms.distance_to(lethal) * grid.resolution  # inf: no lethal cell
     costs = inflation_cost(distance, static.params)
     unknown = (static.costs[my0:my1, mx0:mx1] == NO_INFORMATION) & ~lethal
     costs[unknown] = NO_INFORMATION

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
-from assistantx.nav import disk_cache
+from assistantx.nav import disk_cache, map_transforms
 from assistantx.nav.geometry import FloatArray
 from assistantx.nav.occupancy_map import OccupancyMap
 
@@ -267,7 +267,4 @@ def _segment_distance(
 
 
 def _distance_to_solid(solid: BoolArray) -> npt.NDArray[np.float64]:
-    # scipy is imported here, not at start: only a floor not yet cached pays for it
-    from scipy.ndimage import distance_transform_edt
-
-    return np.asarray(distance_transform_edt(~solid), dtype=np.float64)
+    return map_transforms.distance_to(solid)

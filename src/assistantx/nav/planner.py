@@ -37,12 +37,12 @@ import numpy as np
 import numpy.typing as npt
 
 from assistantx.core.errors import UnreachableError
-from assistantx.nav import disk_cache, grid_astar
+from assistantx.nav import disk_cache, grid_astar, map_transforms
 from assistantx.nav.costmap import INSCRIBED, LETHAL, NO_INFORMATION, Costmap
 from assistantx.nav.landmarks import DEFAULT_COUNT, Landmarks, measure_landmarks
 
-# scipy is imported where it is used: a start whose tables are in the map cache needs none of
-# it (scipy.ndimage alone is about a third of a CPU-second).
+# scipy is imported where it is used: a start needs none of it (scipy.ndimage alone is about
+# a third of a CPU-second; the components are nav.map_transforms', in C).
 if TYPE_CHECKING:
     from scipy.sparse import csr_matrix
 
@@ -79,11 +79,7 @@ def _components(traversable: npt.NDArray[np.bool_]) -> npt.NDArray[np.int32]:
     """Each traversable cell's connected component (cells sharing an edge), 0 elsewhere: two
     cells with different labels have no path between them. Kept in the map cache for the
     map's own planner: on a big floor it is a fair part of the set-up."""
-    from scipy.ndimage import label
-
-    labels = np.empty(traversable.shape, dtype=np.int32)
-    label(traversable, output=labels)
-    return labels
+    return map_transforms.components(traversable)
 
 
 class GridPlanner:
