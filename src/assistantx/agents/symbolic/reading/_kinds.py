@@ -23,6 +23,7 @@ _SEND_WORDS = english.words("send_words")
 # The prepositions that take an item to a facility ("on the charging shelf", "into the oven").
 _TO_FACILITY = english.words("to_facility_prepositions")
 _FROM_FACILITY = english.words("from_facility_prepositions")
+_THROUGH = english.words("through_prepositions")
 # The words that make a tool the instrument of a service on a paper ("stamped *with* the
 # embosser", "the stamp *on* it"), and the participles that ask for the service itself.
 _INSTRUMENT = english.words("instrument_prepositions")
@@ -394,12 +395,20 @@ class TaskReader:
             }
 
         if any(
-            word_before(m) in _TO_FACILITY
+            word_before(m) in _TO_FACILITY | _THROUGH
             and "transform" in shapes(m)
             and "render" not in shapes(m)
             for m in facilities_said
         ):
             cues.add("copy")
+        # "run my drawing through the plotter", "put my file on the printer": a file taken
+        # to a facility that renders files asks for that rendering (which of the office's
+        # renderings, the facility's own: operations.py)
+        if any(self.kinds[m.id] == "electronic" for m in items) and any(
+            word_before(m) in _TO_FACILITY | _THROUGH and "render" in shapes(m)
+            for m in facilities_said
+        ):
+            cues.add("print")
         # "put my headlamp on the charging shelf": the item goes *to* the facility
         treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
         items = [m for m in items if m.id not in self.sourced]

@@ -18,6 +18,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
@@ -30,6 +31,7 @@ from assistantx.agents.symbolic.reading._parties import (
 )
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.readings import Readings
+from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
@@ -86,6 +88,15 @@ class FrameReader:
                 # "bring me his stapler. Zhang Wei": the answer names him
                 answered.add(later[0])
                 roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+            found = referent(clause, tokens, named) if not tasks else None
+            if found is not None:
+                # "Olive has a craft knife, bring it to me": the item another sentence named
+                pointed, owner = found
+                rest = [m for m in clause.mentions if m.start != pointed.start]
+                mentions = sorted([*rest, pointed], key=lambda m: m.start)
+                clause = dataclasses.replace(clause, mentions=mentions)
+                if owner is not None and pointed.start not in roles.owners:
+                    roles.owners[pointed.start] = owner
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
@@ -293,7 +304,8 @@ _DETERMINERS = english.words("determiners")
 
 
 _PLACE_WORDS = english.words("place_words")
-NamedItem = tuple[str, str | None]  # an item type and whose it was said to be (None: unsaid)
+# "Olive has a knife", "Bill's got one": the verbs that say who has an item
+_HAVE = english.words("possession_verbs") | {"has", "have", "had", "got", "owns", "keeps", "s"}
 
 
 def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
@@ -310,8 +322,27 @@ def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
                 owner = requester
             elif before.kind == "person" and before.possessive and len(before.ids) == 1:
                 owner = before.ids[0]
+        owner = owner or _said_to_have(lexed, n)
         out.append((m.ids[0], owner))
     return tuple(out)
+
+
+def _said_to_have(lexed: Lexed, at: int) -> str | None:
+    """ "Olive Grant has a craft knife", "Bill's got one of those staplers": the one person
+    a statement says has the item mention ``at``, with only a verb of having and determiners
+    between them."""
+    item = lexed.mentions[at]
+    person = next(
+        (m for m in reversed(lexed.mentions[:at]) if m.kind not in ("word", "self")), None
+    )
+    if person is None or person.kind != "person" or person.possessive or len(person.ids) != 1:
+        return None
+    between = [t.word for t in lexed.tokens[person.end : item.start]]
+    if not between or between[0] not in _HAVE:
+        return None
+    if not all(w in _HAVE or w in _DETERMINERS for w in between):
+        return None
+    return person.ids[0]
 
 
 _LEND = frozenset({*language.verb_forms("lend"), *language.verb_forms("loan")})

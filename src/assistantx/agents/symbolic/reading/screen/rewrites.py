@@ -75,7 +75,8 @@ def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidenc
 
 
 def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
-    """ "lend him mine", "give him Rich's": a possessive with no item after it means the
+    """ "lend him mine", "give him Rich's", "borrow Priya's for me": a possessive with no
+    item after it (the clause ends, or a preposition or a linking word follows) means the
     item named last before it (in what is left, else in the whole message)."""
     evidence: list[Evidence] = []
 
@@ -100,7 +101,7 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
 
     pattern = re.compile(
         r"\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
-        r"for now|for a bit|for today)\b))",
+        r"for|to|back|over|from|so|because|since)\b))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
