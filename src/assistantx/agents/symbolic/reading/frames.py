@@ -30,6 +30,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
+from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -134,6 +135,11 @@ class FrameReader:
         task that moves the item on to someone else, or someone else's, is new."""
         if earlier.recipient != task.recipient or task.item is None:
             return False
+        if earlier.kind == task.kind and earlier.item == task.item and task.actor is None:
+            if earlier.actor is not None and task.owner == earlier.owner:
+                # "need Wang's signature on my invoice, can you get it signed": the same
+                # work by the doer already named, asked for again without the name
+                return True
         if earlier.kind == task.kind:
             # "fetch Bill's tripod? I need the tripod": anyone's item of the kind already
             # on its way to the same person is the need said again, not a second errand
@@ -179,6 +185,7 @@ class FrameReader:
             clauses[-1].mentions.append(m)
         for c in clauses:
             c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced, self.reader.formats)
+            c.modifiers |= others_purpose(tokens, c.mentions)  # "... so it can be couriered"
             c.cues = {
                 k
                 for m in c.mentions
