@@ -10,6 +10,7 @@ file is sent, a belonging is brought).
 from __future__ import annotations
 
 import dataclasses
+import itertools
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -94,7 +95,7 @@ def _work_of(s: Scene) -> str | None:
     """ "Wang's signature": the one whose work the clause names by a possessive right before
     the work's word is its doer."""
     ms = s.clause.mentions
-    for a, b in zip(ms, ms[1:], strict=False):
+    for a, b in itertools.pairwise(ms):
         if a.kind == "person" and a.possessive and len(a.ids) == 1 and b.start == a.end:
             if b.kind == "cue" and person_work(set(b.ids)) is not None:
                 return a.ids[0]
