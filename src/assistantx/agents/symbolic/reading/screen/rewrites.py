@@ -100,7 +100,7 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         return said
 
     pattern = re.compile(
-        r"\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
+        r"(?<!\bof\s)\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
         r"for|to|back|over|from|so|because|since)\b))",
         re.IGNORECASE,
     )
