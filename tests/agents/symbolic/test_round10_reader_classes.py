@@ -128,8 +128,8 @@ def test_the_product_named_says_which_rendering(text: str, operation: str) -> No
 
 
 def test_a_rendering_the_words_do_not_name_is_asked() -> None:
-    """ "a copy of my artwork on paper or brass?": with neither operation's words nor its
-    product's, the two renderings are asked about, never one guessed."""
+    """With neither operation's words nor its product's said, nothing is rendered: the
+    requester is asked, neither rendering guessed."""
     frame = _parser("printshop").parse("could you make something of my artwork file", "lena")
     assert frame.tasks == []
     assert frame.question is not None
