@@ -98,6 +98,9 @@ def test_a_unit_points_back_only_to_one_item_named(text: str) -> None:
         ("can you put my artwork file on the engraver", "engrave"),
         ("please run my artwork through the printer", "print"),
         ("could you send my svg through the engraver for me", "engrave"),
+        # a thing of mine the office has no word for, at a machine that renders files
+        ("run my poster through the engraver and bring it back to me", "engrave"),
+        ("can you put my logo on the printer", "print"),
     ],
 )
 def test_a_file_taken_through_a_facility_is_its_operation(text: str, operation: str) -> None:
@@ -243,6 +246,12 @@ def test_a_hand_over_for_someone_else_to_send_out_is_a_hand_over(text: str) -> N
     """The send-out in "so it can be mailed" is the colleague's to run: the errand is the
     hand-over, and nobody is asked where to mail it."""
     assert _tasks("printshop", text, "kofi") == [("transfer", "proof", "kofi", "ravi", None)]
+
+
+def test_a_belonging_put_on_a_rendering_machine_is_not_a_file() -> None:
+    """ "my loupe" is an item of the office, no file: not printed."""
+    frame = _parser("printshop").parse("put my loupe on the printer", "lena")
+    assert all(t.kind != "print" for t in frame.tasks)
 
 
 def test_mailing_asked_of_the_assistant_still_asks_where() -> None:

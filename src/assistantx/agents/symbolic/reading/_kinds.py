@@ -427,10 +427,23 @@ class TaskReader:
         # "run my drawing through the plotter", "put my file on the printer": a file taken
         # to a facility that renders files asks for that rendering (which of the office's
         # renderings, the facility's own: operations.py)
-        if any(self.kinds[m.id] == "electronic" for m in items) and any(
+        rendered = any(
             word_before(m) in _TO_FACILITY | _THROUGH and "render" in shapes(m)
             for m in facilities_said
-        ):
+        )
+        if rendered and not items and self.file:
+            # "run my poster through the plotter": a thing of mine the office has no word
+            # for, taken to a machine that renders files, is my file
+            items = [
+                Mention("item", m.start, m.end, (self.file,), False, m.text)
+                for a, m in itertools.pairwise(clause.mentions)
+                if a.kind == "self"
+                and a.possessive
+                and a.end == m.start
+                and m.kind == "word"
+                and language.is_noun(m.ids[0] if m.ids else "")
+            ][:1]
+        if rendered and any(self.kinds[m.id] == "electronic" for m in items):
             cues.add("print")
         # "put my headlamp on the charging shelf": the item goes *to* the facility
         treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
