@@ -237,6 +237,20 @@ def test_an_owner_said_after_the_item_is_kept(
 @pytest.mark.parametrize(
     "text",
     [
+        "Can I borrow a loupe? Not Lena's, she needs hers for the exam.",
+        "can I borrow a loupe? not Lena's, she needs hers for the print run",
+    ],
+)
+def test_a_possessive_before_a_purpose_is_not_made_the_request(text: str) -> None:
+    """ "she needs hers for the exam": the excluded owner's need, with a purpose after it,
+    never turned into a request for her item."""
+    [task] = _parser("printshop").parse(text, "kofi").tasks
+    assert (task.item, task.recipient) == ("loupe", "kofi") and task.owner != "lena"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         "take my proof to Ravi at the post desk so it can be mailed to the printers in Leeds",
         "can you run my proof down to Ravi so he can post it to the client",
         "take my proof to Ravi at the mailroom",

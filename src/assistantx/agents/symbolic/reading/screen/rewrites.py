@@ -76,8 +76,9 @@ def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidenc
 
 def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
     """ "lend him mine", "give him Rich's", "borrow Priya's for me": a possessive with no
-    item after it (the clause ends, or a preposition or a linking word follows) means the
-    item named last before it (in what is left, else in the whole message)."""
+    item after it (the clause ends, or whom it is for, "back" or "over" follows) means the
+    item named last before it (in what is left, else in the whole message); "for the exam"
+    after it is a purpose, which leaves it alone."""
     evidence: list[Evidence] = []
 
     def last_item(before: str) -> str | None:
@@ -101,7 +102,7 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
 
     pattern = re.compile(
         r"(?<!\bof\s)\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
-        r"for|to|back|over|from|so|because|since)\b))",
+        r"for now|for a bit|for today|(?:for|to) (?:me|us|him|her|them)|back|over)\b))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
