@@ -10,6 +10,7 @@ file is sent, a belonging is brought).
 from __future__ import annotations
 
 import dataclasses
+import itertools
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -23,6 +24,8 @@ _SEND_WORDS = english.words("send_words")
 # The prepositions that take an item to a facility ("on the charging shelf", "into the oven").
 _TO_FACILITY = english.words("to_facility_prepositions")
 _FROM_FACILITY = english.words("from_facility_prepositions")
+_THROUGH = english.words("through_prepositions")
+_AT = frozenset({"at", "in", "by", "near"})
 # The words that make a tool the instrument of a service on a paper ("stamped *with* the
 # embosser", "the stamp *on* it"), and the participles that ask for the service itself.
 _INSTRUMENT = english.words("instrument_prepositions")
@@ -88,8 +91,21 @@ def person_work(cues: set[str]) -> str | None:
     )
 
 
+def _work_of(s: Scene) -> str | None:
+    """ "Wang's signature": the one whose work the clause names by a possessive right before
+    the work's word is its doer."""
+    ms = s.clause.mentions
+    for a, b in itertools.pairwise(ms):
+        if a.kind == "person" and a.possessive and len(a.ids) == 1 and b.start == a.end:
+            if b.kind == "cue" and person_work(set(b.ids)) is not None:
+                return a.ids[0]
+    return None
+
+
 def _sign(s: Scene) -> Task:
-    actor = next(iter(s.roles.actor + s.roles.bare + s.roles.recipient), None)
+    # "take it to Wang to sign": whom it goes to signs, never the requester it comes back to
+    to = [p for p in s.roles.recipient if p != s.requester]
+    actor = next(iter(s.roles.actor + s.roles.bare + to), None) or _work_of(s)
     return Task(
         kind=person_work(s.cues) or "sign",
         item=s.doc.id if s.doc else None,
@@ -381,7 +397,15 @@ class TaskReader:
             w = before.get(m.start)
             return w.ids[0] if w is not None and w.kind == "word" else ""
 
+        def persons_place(m: Mention) -> bool:
+            """ "Dot at dispatch": the facility is where a colleague is, not its service."""
+            w = before.get(m.start)
+            if w is None or w.kind != "word" or not w.ids or w.ids[0] not in _AT:
+                return False
+            return before.get(w.start, w).kind == "person"
+
         # "bring me Bram's headlamp from the charging shelf": the facility is where it is
+        treating = [m for m in treating if not persons_place(m)]
         if any(word_before(m) not in _FROM_FACILITY for m in treating):
             cues.add("heat")
 
@@ -394,12 +418,33 @@ class TaskReader:
             }
 
         if any(
-            word_before(m) in _TO_FACILITY
+            word_before(m) in _TO_FACILITY | _THROUGH
             and "transform" in shapes(m)
             and "render" not in shapes(m)
             for m in facilities_said
         ):
             cues.add("copy")
+        # "run my drawing through the plotter", "put my file on the printer": a file taken
+        # to a facility that renders files asks for that rendering (which of the office's
+        # renderings, the facility's own: operations.py)
+        rendered = any(
+            word_before(m) in _TO_FACILITY | _THROUGH and "render" in shapes(m)
+            for m in facilities_said
+        )
+        if rendered and not items and self.file:
+            # "run my poster through the plotter": a thing of mine the office has no word
+            # for, taken to a machine that renders files, is my file
+            items = [
+                Mention("item", m.start, m.end, (self.file,), False, m.text)
+                for a, m in itertools.pairwise(clause.mentions)
+                if a.kind == "self"
+                and a.possessive
+                and a.end == m.start
+                and m.kind == "word"
+                and language.is_noun(m.ids[0] if m.ids else "")
+            ][:1]
+        if rendered and any(self.kinds[m.id] == "electronic" for m in items):
+            cues.add("print")
         # "put my headlamp on the charging shelf": the item goes *to* the facility
         treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
         items = [m for m in items if m.id not in self.sourced]

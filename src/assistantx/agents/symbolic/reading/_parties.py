@@ -272,6 +272,8 @@ def owner_of(
             after = ms[n + 2]
         if nxt in ("of", "from") and after.kind == "person":
             return after.ids[0]
+        if nxt == "of" and after.kind == "self" and tokens[after.start].word in ("mine", "ours"):
+            return requester  # "these headphones of mine"
     return None
 
 

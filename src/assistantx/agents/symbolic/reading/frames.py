@@ -18,6 +18,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
@@ -29,7 +30,9 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
+from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
+from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
@@ -86,6 +89,15 @@ class FrameReader:
                 # "bring me his stapler. Zhang Wei": the answer names him
                 answered.add(later[0])
                 roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+            found = referent(clause, tokens, named) if not tasks else None
+            if found is not None:
+                # "Olive has a craft knife, bring it to me": the item another sentence named
+                pointed, owner = found
+                rest = [m for m in clause.mentions if m.start != pointed.start]
+                mentions = sorted([*rest, pointed], key=lambda m: m.start)
+                clause = dataclasses.replace(clause, mentions=mentions)
+                if owner is not None and pointed.start not in roles.owners:
+                    roles.owners[pointed.start] = owner
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
@@ -123,6 +135,11 @@ class FrameReader:
         task that moves the item on to someone else, or someone else's, is new."""
         if earlier.recipient != task.recipient or task.item is None:
             return False
+        if earlier.kind == task.kind and earlier.item == task.item and task.actor is None:
+            if earlier.actor is not None and task.owner == earlier.owner:
+                # "need Wang's signature on my invoice, can you get it signed": the same
+                # work by the doer already named, asked for again without the name
+                return True
         if earlier.kind == task.kind:
             # "fetch Bill's tripod? I need the tripod": anyone's item of the kind already
             # on its way to the same person is the need said again, not a second errand
@@ -168,6 +185,7 @@ class FrameReader:
             clauses[-1].mentions.append(m)
         for c in clauses:
             c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced, self.reader.formats)
+            c.modifiers |= others_purpose(tokens, c.mentions)  # "... so it can be couriered"
             c.cues = {
                 k
                 for m in c.mentions
@@ -293,7 +311,8 @@ _DETERMINERS = english.words("determiners")
 
 
 _PLACE_WORDS = english.words("place_words")
-NamedItem = tuple[str, str | None]  # an item type and whose it was said to be (None: unsaid)
+# "Olive has a knife", "Bill's got one": the verbs that say who has an item
+_HAVE = english.words("possession_verbs") | {"has", "have", "had", "got", "owns", "keeps", "s"}
 
 
 def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
@@ -310,8 +329,27 @@ def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
                 owner = requester
             elif before.kind == "person" and before.possessive and len(before.ids) == 1:
                 owner = before.ids[0]
+        owner = owner or _said_to_have(lexed, n)
         out.append((m.ids[0], owner))
     return tuple(out)
+
+
+def _said_to_have(lexed: Lexed, at: int) -> str | None:
+    """ "Olive Grant has a craft knife", "Bill's got one of those staplers": the one person
+    a statement says has the item mention ``at``, with only a verb of having and determiners
+    between them."""
+    item = lexed.mentions[at]
+    person = next(
+        (m for m in reversed(lexed.mentions[:at]) if m.kind not in ("word", "self")), None
+    )
+    if person is None or person.kind != "person" or person.possessive or len(person.ids) != 1:
+        return None
+    between = [t.word for t in lexed.tokens[person.end : item.start]]
+    if not between or between[0] not in _HAVE:
+        return None
+    if not all(w in _HAVE or w in _DETERMINERS for w in between):
+        return None
+    return person.ids[0]
 
 
 _LEND = frozenset({*language.verb_forms("lend"), *language.verb_forms("loan")})

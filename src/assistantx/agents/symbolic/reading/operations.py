@@ -40,7 +40,10 @@ class OperationChooser:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
         already said a send-out to a colleague's name is meant to leave the office."""
-        in_order = [t.word for t in lexed.tokens]
+        # the words said as verbs: not those inside a thing's name ("an A1 print" names the
+        # plot, its "print" is no print asked for)
+        inside = {n for m in lexed.mentions if m.kind == "item" for n in range(m.start, m.end)}
+        in_order = [t.word for n, t in enumerate(lexed.tokens) if n not in inside]
         words = set(in_order)
         facility_ops = {
             op

@@ -46,6 +46,7 @@ _OPENERS = english.words("speech_openers")
 _STANCE = tuple(tuple(p.split()) for p in english.entries("stance_phrases"))
 _THANKS = english.words("thanks_words")
 _RELAY = english.words("relay_verbs")
+_PRAISE = tuple(tuple(p.split()) for p in english.entries("praise_openers"))
 _NOBODY = tuple(tuple(p.split()) for p in english.entries("prohibition_subjects"))
 _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
@@ -325,6 +326,8 @@ class SpeechActs:
             return Act("thanks")  # "thanks ...", "big thank you for ...", "much appreciated"
         if self._done_for_me(w):
             return Act("thanks")  # "you're a star for fetching the clipboard"
+        if any(_starts(w, p) for p in _PRAISE) and not set(w) & (_WILLING | _MODALS):
+            return Act("thanks")  # "you're a star", "you've been a great help"
         return None
 
     def _done_for_me(self, w: list[str]) -> bool:

@@ -34,6 +34,7 @@ class English:
     purpose_links: tuple[str, ...]
     purpose_tail: frozenset[str]
     service_verbs: frozenset[str]
+    serial_verbs: frozenset[str]  # "go print it": a verb that leads another, no modifier
     service_products: frozenset[str]
     modifier_prepositions: frozenset[str]
     courtesy: frozenset[str]
@@ -71,6 +72,7 @@ def english() -> English:
         purpose_links=tuple(str(p) for p in raw["purpose_links"]),
         purpose_tail=word_set("purpose_tail"),
         service_verbs=word_set("service_verbs"),
+        serial_verbs=word_set("serial_verbs"),
         service_products=word_set("service_products"),
         modifier_prepositions=word_set("modifier_prepositions"),
         courtesy=word_set("courtesy"),

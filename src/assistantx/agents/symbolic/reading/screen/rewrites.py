@@ -75,8 +75,10 @@ def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidenc
 
 
 def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
-    """ "lend him mine", "give him Rich's": a possessive with no item after it means the
-    item named last before it (in what is left, else in the whole message)."""
+    """ "lend him mine", "give him Rich's", "borrow Priya's for me": a possessive with no
+    item after it (the clause ends, or whom it is for, "back" or "over" follows) means the
+    item named last before it (in what is left, else in the whole message); "for the exam"
+    after it is a purpose, which leaves it alone."""
     evidence: list[Evidence] = []
 
     def last_item(before: str) -> str | None:
@@ -99,8 +101,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         return said
 
     pattern = re.compile(
-        r"\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
-        r"for now|for a bit|for today)\b))",
+        r"(?<!\bof\s)\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
+        r"for now|for a bit|for today|(?:for|to) (?:me|us|him|her|them)|back|over)\b))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence

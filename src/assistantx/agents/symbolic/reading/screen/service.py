@@ -11,6 +11,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
+from assistantx.core import language
 
 
 def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -39,6 +40,11 @@ def unsupported_service(terms: Terms, piece: Piece) -> Finding | None:
     for sub in sub_pieces(piece):
         words = sub.words
         at = sub.verb_at(terms.en.lead_in)
+        modified = modified_service(terms, words, at)
+        if modified is not None:
+            typed = r"[\s-]+".join(re.escape(w) for w in modified.split())
+            said = re.search(rf"\b{typed}\b", piece.text, re.IGNORECASE)
+            return decline_service(terms, piece, said.group(0) if said else modified)
         if at < len(words) and words[at] in terms.en.service_verbs:
             verb = words[at]
             nxt = words[at + 1] if at + 1 < len(words) else ""
@@ -56,6 +62,30 @@ def unsupported_service(terms: Terms, piece: Piece) -> Finding | None:
                 if possessive_of_name(piece.text, w, terms.office_words):
                     continue  # "Chip's scanner": a colleague's, not "chips"
                 return decline_service(terms, piece, w, product=True)
+    return None
+
+
+def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
+    """ "3D print my model", "laser cut this", "screen print my logo": a modifier glued to
+    the verb of one of the office's services makes it another service, which the office
+    does not offer unless it has the modifier's word too ("laser print" where a laser
+    printer is listed); the modified verb, never the plain service run instead. A modifier
+    is a word with a digit ("3d"), or one the dictionary knows as a noun and not as an
+    adverb or adjective ("laser", not "now", "quick" or "first"), that is none of the
+    office's words and no verb that leads another ("go print it")."""
+    if at + 2 < len(words) and words[at + 2] in terms.service_verbs:
+        # "3-D print": a number and a letter, one modifier written in two parts
+        if words[at].isdigit() and len(words[at + 1]) == 1 and words[at + 1].isalpha():
+            return f"{words[at]} {words[at + 1]} {words[at + 2]}"
+    if at + 1 >= len(words) or words[at + 1] not in terms.service_verbs:
+        return None
+    word = words[at]
+    if word in terms.office_words or word in terms.en.serial_verbs:
+        return None
+    kinds = set(language.lemmas(word))
+    glued = any(c.isdigit() for c in word) and any(c.isalpha() for c in word)
+    if glued or ("NOUN" in kinds and not kinds & {"ADV", "ADJ"}):
+        return f"{word} {words[at + 1]}"
     return None
 
 

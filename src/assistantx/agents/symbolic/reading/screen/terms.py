@@ -32,6 +32,15 @@ class Terms:
             for w in split_words(phrase)
         )
 
+        # every form of the verbs of the office's own services ("print", "plotted")
+        self.service_verbs = frozenset(
+            form
+            for op in office.operations
+            for phrase in (*op.verbs, op.name)
+            for form in language.verb_forms(split_words(phrase)[0])
+            if split_words(phrase)
+        )
+
     def request_verb(self, words: list[str], at: int) -> bool:
         w = words[at]
         return w in self.lex.cue_words or (

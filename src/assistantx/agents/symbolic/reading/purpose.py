@@ -1,0 +1,39 @@
+"""What someone else will do with the item once it is handed over: "take my drive to Dot *so
+it can be couriered* to the lab", "... so she can post it". The verbs of such a purpose are
+not asked of the robot: its errand is the hand-over; the colleague runs the service.
+
+A purpose opens with "so" (or "so that") and a subject other than the one spoken to ("it",
+"she", "Dot") with a modal after it ("can", "will", "could be"); every task word after it in
+the clause only modifies.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english
+
+_MODALS = english.words("request_modals") | {"shall", "should", "must"}
+_SPOKEN_TO = frozenset({"you", "u", "ya", "ye"})
+_SUBJECT_WORDS = frozenset({"it", "they", "she", "he", "we", "i", "them", "someone"})
+
+
+def others_purpose(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[int]:
+    """The starts of the task words in ``mentions`` that say what another will do once the
+    errand is done ("so it can be couriered"), none when no such purpose is said."""
+    words = [t.word for t in tokens]
+    for m in mentions:
+        at = m.start
+        if words[at] != "so":
+            continue
+        k = at + 1 + (at + 1 < len(words) and words[at + 1] == "that")
+        subject = next((x for x in mentions if x.start == k), None)
+        if k >= len(words) or words[k] in _SPOKEN_TO:
+            continue
+        said = words[k] in _SUBJECT_WORDS or (subject is not None and subject.kind == "person")
+        end = subject.end if subject is not None else k + 1
+        if said and end < len(words) and words[end] in _MODALS:
+            return {x.start for x in mentions if x.start > end and x.kind == "cue"}
+    return set()
