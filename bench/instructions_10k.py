@@ -119,6 +119,11 @@ class Server:
             ASSISTANTX_INSTRUCTION_DEADLINE_S=str(30 * 24 * 3600),
             # A few people send thousands: far beyond a person's per-minute bound.
             ASSISTANTX_INSTRUCTIONS_PER_MINUTE="0",
+            # A QR code lives in real time (the lock's clock), the rest in simulated time
+            # x10,000: at the default 15 minutes every code of most of the run would be
+            # alive at the end (a real office sends a handful in 15 minutes). One minute
+            # still outlasts any hand-over here by far.
+            ASSISTANTX_LOCK_CODE_EXPIRY_MIN="1",
         )
         cmd = [sys.executable, "-m", "assistantx", "serve", "--port", str(port)]
         started = time.perf_counter()
