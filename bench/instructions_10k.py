@@ -88,7 +88,7 @@ def _proc_status(pid: int) -> dict[str, float]:
     return out
 
 
-def _cpu_s(pid: int) -> float:
+def process_cpu_s(pid: int) -> float:
     fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
     return (int(fields[11]) + int(fields[12])) / TICKS
 
@@ -184,7 +184,7 @@ def drive(server: Server, client: httpx.Client, args: argparse.Namespace, data: 
     run = Drive()
     marks = list(range(args.first, args.n + 1, args.every))
     started = time.perf_counter()
-    cpu_at_start = _cpu_s(server.process.pid)
+    cpu_at_start = process_cpu_s(server.process.pid)
     deadline = started + 60 * args.max_min
     active = 0
     while True:
@@ -215,7 +215,7 @@ def drive(server: Server, client: httpx.Client, args: argparse.Namespace, data: 
                 "hwm_mb": round(memory["VmHWM"], 1),
                 "journal_mb": round(_journal_mb(data), 1),
                 "wall_s": round(elapsed, 1),
-                "server_cpu_s": round(_cpu_s(server.process.pid) - cpu_at_start, 1),
+                "server_cpu_s": round(process_cpu_s(server.process.pid) - cpu_at_start, 1),
             }
             run.samples.append(sample)
             print(json.dumps(sample), flush=True)
@@ -251,7 +251,7 @@ def main() -> None:
         again = Server.start(data, args, args.log)
         try:
             restart_wall_s = again.wait_ready(client)
-            restart_cpu_s = _cpu_s(again.process.pid)
+            restart_cpu_s = process_cpu_s(again.process.pid)
             restart_rss_mb = _proc_status(again.process.pid)["VmRSS"]
             first = client.get(f"{again.url}/v1/instructions/{run.first_id}")
             first_read_back = first.status_code == 200 and first.json()["status"] not in ACTIVE
