@@ -20,8 +20,6 @@ import asyncio
 import gc
 import json
 import os
-import socket
-import subprocess
 import sys
 import tempfile
 import time
@@ -31,12 +29,17 @@ from pathlib import Path
 import httpx
 import yaml
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from instructions_10k import (
+    Server,
+    process_cpu_s,
+)  # the served process, as the 10,000 bench runs it
+
 from assistantx.core.office import DEFAULT_OFFICE
 from assistantx.core.settings import Settings
 from assistantx.service.events import REPLAY_DEFAULT
 from assistantx.service.runtime import JOURNAL_FILE, ServiceRuntime
-
-TICKS = os.sysconf("SC_CLK_TCK")
 
 BASES = DEFAULT_OFFICE.parent / "base_instructions.yaml"
 SPEEDUP = 1000.0  # as bench/service_load.py: faster, and replies miss their waits
@@ -94,36 +97,16 @@ async def _drive(runtime: ServiceRuntime, n: int, batch: int, every: int) -> lis
     return rows
 
 
-def _cpu_s(pid: int) -> float:
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / TICKS
-
-
-def restart_serve(data: Path) -> dict[str, float]:
+def restart_serve(data: Path, log: Path) -> dict[str, float]:
     """``assistantx serve`` on ``data``'s journal: CPU-seconds and wall seconds to ready."""
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = int(s.getsockname()[1])
-    env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
-    env.update(ASSISTANTX_DATA_DIR=str(data), ASSISTANTX_ROBOT="sim")
-    cmd = [sys.executable, "-m", "assistantx", "serve", "--port", str(port)]
-    started = time.perf_counter()
-    process = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
-    try:
-        while time.perf_counter() - started < 300:
-            if process.poll() is not None:
-                raise RuntimeError(f"serve exited with {process.returncode}")
-            try:
-                if httpx.get(f"http://127.0.0.1:{port}/readyz").status_code == 200:
-                    wall = time.perf_counter() - started
-                    return {"cpu_s": round(_cpu_s(process.pid), 2), "wall_s": round(wall, 2)}
-            except httpx.TransportError:
-                pass
-            time.sleep(0.05)
-        raise RuntimeError("the restarted service did not become ready")
-    finally:
-        process.terminate()
-        process.wait(30)
+    args = argparse.Namespace(speedup=SPEEDUP, robot="sim")
+    with httpx.Client() as client:
+        server = Server.start(data, args, log)
+        try:
+            wall = server.wait_ready(client)
+            return {"cpu_s": round(process_cpu_s(server.process.pid), 2), "wall_s": round(wall, 2)}
+        finally:
+            server.stop()
 
 
 def _replay_s(runtime: ServiceRuntime, after: int) -> tuple[float, int]:
@@ -202,7 +185,9 @@ def main() -> None:
     args.out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         result = asyncio.run(_run(args, Path(tmp) / "data"))
-        result["restart_s"] = restart_serve(Path(tmp) / "data")["wall_s"]
+        result["restart_s"] = restart_serve(
+            Path(tmp) / "data", args.out / "journal_growth-server.log"
+        )["wall_s"]
     result["plot"] = str(_plot(result, args.out))
     print(
         f"journal {result['journal_kb_per_instruction']} KB per instruction; RSS growth after "

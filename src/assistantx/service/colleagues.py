@@ -112,10 +112,11 @@ def snapshot(sim: SimOffice) -> dict[str, Any]:
     }
 
 
-@functools.lru_cache(maxsize=4096)
+@functools.lru_cache(maxsize=256)
 def code_ref(payload: str) -> str:
     """Names a payload in the journal without revealing it (remembered: the snapshot names
-    every held code at every checkpoint)."""
+    every held code at every checkpoint). People hold a few codes at a time; 4,096 payloads
+    (one or two per fetch) filled only after thousands of instructions, growing till then."""
     return hashlib.sha256(payload.encode("utf-8")).hexdigest()[:32]
 
 

@@ -47,8 +47,11 @@ __all__ = ["HandOverDesk", "HeldCode", "SimMessenger", "SimOffice", "SimRobot"]
 logger = logging.getLogger(__name__)
 
 # What a long-running simulation keeps of its history (messages, ended instructions): a
-# service runs it for months; an evaluation episode never comes near the bound.
-KEEP = 2000
+# service runs it for months; an evaluation episode never comes near the bound. Small enough
+# that a service reaches it within its first few hundred instructions: at 2,000 the messages
+# (about 2.9 KB each), the ended ids and their wishes grew for the first 1,500-4,000
+# instructions, a tenth of the process's memory (bench/instructions_10k.py).
+KEEP = 256
 
 
 def _trim(history: list[Any], keep: int = KEEP) -> None:

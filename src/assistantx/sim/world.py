@@ -19,7 +19,9 @@ from assistantx.core.office import Office
 LOCKER = "locker"
 
 
-LOG_KEEP = 5000  # world events kept (an evaluation episode logs a few dozen)
+# World events kept (an evaluation episode logs a few dozen; a service about one per
+# instruction): at 5,000 a service's log grew for its first 11,000 instructions.
+LOG_KEEP = 256
 
 
 @dataclass
