@@ -132,15 +132,27 @@ def playwright() -> Iterator[Playwright]:
         yield p
 
 
-@pytest.fixture
-def browser(playwright: Playwright, server: Server) -> Iterator[Browser]:
-    # Depends on the server so that it closes first: an open event stream would hold up the
-    # server's graceful shutdown.
+@pytest.fixture(scope="module")
+def chromium(playwright: Playwright) -> Iterator[Browser]:
+    """One Chromium for a module's tests: a launch costs about a second of CPU, a page in a
+    running browser a fraction of that. Each test's pages have their own contexts (cookies,
+    storage), closed after the test by ``browser``."""
     browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
     try:
         yield browser
     finally:
         browser.close()
+
+
+@pytest.fixture
+def browser(chromium: Browser, server: Server) -> Iterator[Browser]:
+    # Depends on the server so that the test's pages close first: an open event stream would
+    # hold up the server's graceful shutdown.
+    try:
+        yield chromium
+    finally:
+        for context in chromium.contexts:
+            context.close()
 
 
 def new_page(browser: Browser, width: int = 1366, height: int = 900) -> tuple[Page, list[str]]:

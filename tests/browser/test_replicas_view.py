@@ -43,6 +43,13 @@ def replicas(tmp_path: Path, postgres_url: str) -> Iterator[tuple[Server, Server
             server.stop()
 
 
+@pytest.fixture
+def server(replicas: tuple[Server, Server]) -> Server:
+    """The page's server, replica A (the ``browser`` fixture closes the pages before the
+    replicas stop); without it, ``browser`` would start a third server nobody uses."""
+    return replicas[0]
+
+
 def test_the_replicas_table_shows_health_and_offices_and_follows_a_takeover(
     browser: Browser, replicas: tuple[Server, Server]
 ) -> None:
