@@ -1,6 +1,5 @@
 VENV ?= .venv
 PY := $(VENV)/bin/python
-PIP := $(VENV)/bin/pip
 HOST ?= 127.0.0.1
 PORT ?= 8000
 # Project-local installs for the tests (gitignored): `make test` puts them here and the tests
@@ -9,7 +8,10 @@ SYNAPSE_VENV ?= $(CURDIR)/.cache/synapse-venv
 export SYNAPSE_VENV
 
 # What `make test` installs before it runs the suite: one target per thing, each idempotent
-# and saying what it installs. Add a new one here and below.
+# and saying what it installs. Add a new one here and below. They run side by side (each
+# waits on the network or on its own build, not on the others; the two apt-get installs take
+# turns), and the Python ones install with uv (.ci/uv): on a fresh clone here the app's venv
+# took 112 s and Synapse's 61 s with pip, one after the other.
 TEST_INSTALLS := install-synapse install-browser install-llm-server install-postgres
 
 # The suite runs on TEST_WORKERS processes (pytest-xdist): most of a test's time is spent
@@ -23,15 +25,17 @@ TEST_WORKERS ?= 2
 PYTEST := env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(CURDIR)/.cache/pycache \
 	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist loadgroup
 
-.PHONY: install run test test-fast check fmt clean $(TEST_INSTALLS)
+.PHONY: install run test test-installs test-fast check fmt clean $(TEST_INSTALLS)
 
+# uv's venv, pip included (for those who use $(VENV)/bin/pip, and the packaging test's
+# `pip wheel`): 0.3 CPU-s where `python3 -m venv` took 4.6. uv installs what pip would, the
+# same versions.
 $(VENV)/bin/python:
-	python3 -m venv $(VENV)
-	$(PIP) install --quiet --upgrade pip
+	bash .ci/uv venv --quiet --python python3 $(VENV)
 
 $(VENV)/.installed: pyproject.toml | $(VENV)/bin/python
 	@echo "make: AssistantX with its test and dev tools into $(VENV)"
-	$(PIP) install --quiet -e '.[test,dev]'
+	bash .ci/uv pip install --quiet --python $(PY) -e '.[test,dev]' pip
 	touch $@
 
 # The app and its `assistantx` command into $(VENV): `. $(VENV)/bin/activate` puts it on PATH,
@@ -59,7 +63,10 @@ install-postgres:  # Debian's PostgreSQL for the postgres-marked tests (apt-get,
 	@echo "make test: PostgreSQL (initdb and postgres for tests/helpers/postgres.py)"
 	@bash .ci/install-postgres
 
-test: $(VENV)/.installed $(TEST_INSTALLS)
+test-installs:
+	@$(MAKE) --no-print-directory -j $(VENV)/.installed $(TEST_INSTALLS)
+
+test: test-installs
 	$(PYTEST)
 
 # The inner loop: no homeserver, browser or model server, and none of the tests marked slow

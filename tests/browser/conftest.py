@@ -20,7 +20,7 @@ from pathlib import Path
 
 import httpx
 import pytest
-from playwright.sync_api import Browser, Playwright, sync_playwright
+from playwright.sync_api import Browser, Page, Playwright, expect, sync_playwright
 
 from helpers.processes import wait_ready
 from helpers.servers import free_port
@@ -132,15 +132,51 @@ def playwright() -> Iterator[Playwright]:
         yield p
 
 
-@pytest.fixture
-def browser(playwright: Playwright, server: Server) -> Iterator[Browser]:
-    # Depends on the server so that it closes first: an open event stream would hold up the
-    # server's graceful shutdown.
+@pytest.fixture(scope="module")
+def chromium(playwright: Playwright) -> Iterator[Browser]:
+    """One Chromium for a module's tests: a launch costs about a second of CPU, a page in a
+    running browser a fraction of that. Each test's pages have their own contexts (cookies,
+    storage), closed after the test by ``browser``."""
     browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
     try:
         yield browser
     finally:
         browser.close()
+
+
+@pytest.fixture
+def browser(chromium: Browser, server: Server) -> Iterator[Browser]:
+    # Depends on the server so that the test's pages close first: an open event stream would
+    # hold up the server's graceful shutdown.
+    try:
+        yield chromium
+    finally:
+        for context in chromium.contexts:
+            context.close()
+
+
+def new_page(browser: Browser, width: int = 1366, height: int = 900) -> tuple[Page, list[str]]:
+    """A page at this viewport, and the list its uncaught script errors go into."""
+    page = browser.new_page(viewport={"width": width, "height": height})
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    return page, errors
+
+
+def give_token(page: Page, token: str) -> None:
+    """Types the token into the dashboard's dialog and sends it, as a person does."""
+    page.fill("#token-input", token)
+    page.click("#token-form button[type=submit]")
+
+
+def sign_in(page: Page, url: str, token: str = OPERATOR, *, live: bool = True) -> None:
+    """Opens the dashboard at ``url``, which asks for a token, gives it, and (``live``) waits
+    until the page is live, its event stream open: not on a replica that runs no office yet."""
+    page.goto(url + "/")
+    expect(page.locator("#token-dialog")).to_be_visible()
+    give_token(page, token)
+    if live:
+        expect(page.locator("#connection-text")).to_have_text("Live", timeout=10_000)
 
 
 def screenshot_targets(name: str) -> list[Path]:

@@ -10,7 +10,15 @@ import re
 import pytest
 from playwright.sync_api import Browser, Page, expect
 
-from browser.conftest import OPERATOR, Server, screenshot_targets, write_sample_evaluation
+from browser.conftest import (
+    OPERATOR,
+    Server,
+    give_token,
+    new_page,
+    screenshot_targets,
+    sign_in,
+    write_sample_evaluation,
+)
 from helpers.eventually import eventually_sync
 
 pytestmark = pytest.mark.browser
@@ -19,14 +27,8 @@ FINAL = {"done", "failed", "unachievable", "cancelled"}
 
 
 def open_dashboard(browser: Browser, server: Server, width: int = 1366) -> Page:
-    page = browser.new_page(viewport={"width": width, "height": 900})
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    page.goto(server.url + "/")
-    expect(page.locator("#token-dialog")).to_be_visible()
-    page.fill("#token-input", OPERATOR)
-    page.click("#token-form button[type=submit]")
-    expect(page.locator("#connection-text")).to_have_text("Live", timeout=10_000)
+    page, errors = new_page(browser, width)
+    sign_in(page, server.url)
     expect(page.locator("#people-table tbody tr")).to_have_count(16)
     expect(page.locator("#map")).to_have_attribute("data-robot", re.compile(r"^[0-9.]+,[0-9.]+$"))
     assert not errors, errors
@@ -163,12 +165,10 @@ def test_the_page_reconnects_after_the_server_restarts(browser: Browser, server:
 def test_a_wrong_token_is_refused_with_a_clear_message(browser: Browser, server: Server) -> None:
     page = browser.new_page()
     page.goto(server.url + "/")
-    page.fill("#token-input", "not-the-right-token-at-all")
-    page.click("#token-form button[type=submit]")
+    give_token(page, "not-the-right-token-at-all")
     expect(page.locator("#banner")).to_contain_text("token was refused")
     expect(page.locator("#token-dialog")).to_be_visible()
-    page.fill("#token-input", OPERATOR)
-    page.click("#token-form button[type=submit]")
+    give_token(page, OPERATOR)
     expect(page.locator("#connection-text")).to_have_text("Live", timeout=10_000)
     expect(page.locator("#banner")).to_be_hidden()
 

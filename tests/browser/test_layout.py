@@ -15,7 +15,7 @@ import re
 import pytest
 from playwright.sync_api import Browser, Page, expect
 
-from browser.conftest import LEE, OPERATOR, Server, write_sample_evaluation
+from browser.conftest import LEE, OPERATOR, Server, new_page, write_sample_evaluation
 from browser.test_dashboard import shoot
 from helpers.eventually import eventually_sync
 
@@ -28,9 +28,7 @@ Box = dict[str, float]
 
 
 def _open(browser: Browser, server: Server, width: int, token: str = OPERATOR) -> Page:
-    page = browser.new_page(viewport={"width": width, "height": HEIGHTS[width]})
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    page, errors = new_page(browser, width, HEIGHTS[width])
     page.add_init_script(f"localStorage.setItem('assistantx.token', {json.dumps(token)})")
     page.goto(server.url + "/")
     expect(page.locator("#connection-text")).to_have_text("Live", timeout=15_000)

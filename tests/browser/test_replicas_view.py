@@ -10,7 +10,7 @@ import pytest
 import yaml
 from playwright.sync_api import Browser, expect
 
-from browser.conftest import OPERATOR, Server
+from browser.conftest import Server, new_page, sign_in
 
 pytestmark = [pytest.mark.browser, pytest.mark.postgres]
 
@@ -43,16 +43,19 @@ def replicas(tmp_path: Path, postgres_url: str) -> Iterator[tuple[Server, Server
             server.stop()
 
 
+@pytest.fixture
+def server(replicas: tuple[Server, Server]) -> Server:
+    """The page's server, replica A (the ``browser`` fixture closes the pages before the
+    replicas stop); without it, ``browser`` would start a third server nobody uses."""
+    return replicas[0]
+
+
 def test_the_replicas_table_shows_health_and_offices_and_follows_a_takeover(
     browser: Browser, replicas: tuple[Server, Server]
 ) -> None:
     a, b = replicas
-    page = browser.new_page(viewport={"width": 1366, "height": 900})
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    page.goto(a.url + "/")
-    page.fill("#token-input", OPERATOR)
-    page.click("#token-form button[type=submit]")
+    page, errors = new_page(browser)
+    sign_in(page, a.url, live=False)  # the page follows the replicas, not an office
     table = page.locator("#replicas-table")
     expect(table).to_be_visible(timeout=20_000)
     row_a = table.locator('tr[data-replica="replica-a"] td')
