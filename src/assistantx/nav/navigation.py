@@ -58,7 +58,7 @@ from assistantx.nav.motion_model import OdometryNoise
 from assistantx.nav.obstacle_layer import ObstacleLayer, ObstacleLayerParams
 from assistantx.nav.occupancy_map import OccupancyMap
 from assistantx.nav.plan_process import PLAN_PROCESS
-from assistantx.nav.planner import GridPlanner, Path, PlannerParams
+from assistantx.nav.planner import GridPlanner, Path, PlannerParams, StartInObstacleError
 from assistantx.nav.safety import MonitorParams, SafetyRecord, translation_blocked
 
 logger = logging.getLogger(__name__)
@@ -201,13 +201,21 @@ class Navigator:
             self._sense_obstacles(self.lidar.scan(self.base.true_pose, self.rng))
         self._apply_obstacles(self.obstacles.expire(self.base.time_s))
         try:
-            return self._plan_on(self.planner, start, goal)
-        except UnreachableError as exc:
-            if self.planner is self.map_planner:
+            try:
+                return self._plan_on(self.planner, start, goal)
+            except UnreachableError as exc:
+                if self.planner is self.map_planner:
+                    raise
+                self._plan_on(self.map_planner, start, goal)  # raises if the map is the reason
+                raise BlockedError(
+                    f"obstacles the robot sees block the way to ({goal[0]:.2f}, {goal[1]:.2f})"
+                ) from exc
+        except StartInObstacleError as exc:
+            if self.filter is None:
                 raise
-            self._plan_on(self.map_planner, start, goal)  # raises if the map alone is the reason
-            raise BlockedError(
-                f"obstacles the robot sees block the way to ({goal[0]:.2f}, {goal[1]:.2f})"
+            # A robot cannot stand inside a wall of the map: the estimate is what is wrong
+            raise LocalizationLostError(
+                f"the estimated pose ({start[0]:.2f}, {start[1]:.2f}) is inside a wall of the map"
             ) from exc
 
     def _plan_on(

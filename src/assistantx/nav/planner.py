@@ -49,6 +49,11 @@ if TYPE_CHECKING:
 logger = logging.getLogger(__name__)
 
 
+class StartInObstacleError(UnreachableError):
+    """The start is inside an obstacle (no free cell within ``start_snap_m``): on the map
+    alone, a robot that believes it is there has lost where it is."""
+
+
 @dataclass(frozen=True)
 class PlannerParams:
     cost_penalty: float = 2.0
@@ -333,7 +338,7 @@ class GridPlanner:
         ny, nx = (int(v) for v in self._nearest_free[:, iy, ix])
         snap = math.hypot(ny - iy, nx - ix) * self.costmap.grid.resolution
         if snap > self.params.start_snap_m or not traversable[ny, nx]:
-            raise UnreachableError(f"start {_fmt(start)} is inside an obstacle")
+            raise StartInObstacleError(f"start {_fmt(start)} is inside an obstacle")
         return ny, nx
 
     def _make_path(

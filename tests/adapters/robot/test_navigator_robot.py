@@ -166,3 +166,32 @@ async def test_robots_on_the_same_files_share_the_planner(office: Office) -> Non
     assert second.path_distance("kitchenette", "desk_01") == pytest.approx(distance, rel=0.02)
     with pytest.raises(MapError, match="cannot read map files"):
         NavigatorRobot.from_files(office, SimClock(), map_yaml="/nonexistent/map.yaml")
+
+
+def _inside_a_wall(grid: OccupancyMap) -> np.ndarray:
+    """A pose at the map's occupied cell farthest from any free one (deep in a wall)."""
+    from scipy.ndimage import distance_transform_edt
+
+    depth = distance_transform_edt(grid.occupied)
+    row, col = np.unravel_index(int(np.argmax(depth)), depth.shape)
+    assert depth[row, col] * grid.resolution > 1.0  # no free cell within a metre
+    return np.array([*grid.cell_to_world(int(col), int(row)), 0.0])
+
+
+def test_an_estimate_inside_a_wall_is_localization_lost_not_an_unreachable_goal(
+    office: Office, office_map: OccupancyMap, office_anchors: dict[str, Anchor]
+) -> None:
+    goal = (office_anchors["desk_03"].x, office_anchors["desk_03"].y)
+    wall = _inside_a_wall(office_map)
+    robot = _robot(office, office_map, office_anchors, SimClock(), localize=True, start="desk_01")
+    assert robot.navigator.filter is not None
+    robot.navigator.filter.initialize(wall, covariance_diag=(1e-6, 1e-6, 1e-6))
+    with pytest.raises(LocalizationLostError, match="inside a wall of the map"):
+        robot.navigator.plan(goal)
+    # without localization the pose is the truth: a start in a wall is the map's problem
+    kinematic = _robot(
+        office, office_map, office_anchors, SimClock(), localize=False, start="desk_01"
+    )
+    kinematic.navigator.base.teleport(wall)
+    with pytest.raises(UnreachableError, match=r"start .* is inside an obstacle"):
+        kinematic.navigator.plan(goal)
