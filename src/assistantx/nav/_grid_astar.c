@@ -148,6 +148,25 @@ static inline double estimate(int32_t dy, int32_t dx, double scale, const float 
  * below 2**29), so a search touches only the cells it reaches instead of clearing the whole
  * grid first: on a big map with a small free area the clearing was most of the search.
  * Returns the path's cost, -1.0 when the goal cannot be reached, -2.0 when memory ran out. */
+/* The cost of the move `k` from (y, x), whose cost is c_u, to its neighbour v; negative when
+ * the move is not allowed (off the grid, into an inscribed cell, or a diagonal that cuts a
+ * blocked corner). One definition for the A* and the landmarks' Dijkstra, so both price a
+ * move to the same bits. */
+static inline double step_cost(const uint8_t *costs, int32_t height, int32_t width,
+                               int32_t inscribed, double penalty, const double *lengths,
+                               int32_t y, int32_t x, double c_u, int k, int32_t *v_out) {
+    const int32_t ny = y + DY[k], nx = x + DX[k];
+    if (ny < 0 || ny >= height || nx < 0 || nx >= width) return -1.0;
+    const int32_t v = ny * width + nx;
+    if (costs[v] >= inscribed) return -1.0;
+    if (DY[k] && DX[k] &&
+        (costs[ny * width + x] >= inscribed || costs[y * width + nx] >= inscribed))
+        return -1.0;
+    const double mean = (c_u + (double)costs[v]) / 2.0;
+    *v_out = v;
+    return lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
+}
+
 static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t width,
                          int32_t inscribed, double resolution, double penalty, int32_t start,
                          int32_t goal, cell_state *cells, uint32_t generation,
@@ -182,15 +201,11 @@ static double grid_astar_search(const uint8_t *costs, int32_t height, int32_t wi
         const int32_t y = e.node / width, x = e.node % width;
         const double c_u = (double)costs[e.node], g_u = cells[e.node].g;
         for (int k = 0; k < 8; k++) {
+            int32_t v = 0;
+            const double weight =
+                step_cost(costs, height, width, inscribed, penalty, lengths, y, x, c_u, k, &v);
+            if (weight < 0.0) continue;
             const int32_t ny = y + DY[k], nx = x + DX[k];
-            if (ny < 0 || ny >= height || nx < 0 || nx >= width) continue;
-            const int32_t v = ny * width + nx;
-            if (costs[v] >= inscribed) continue;
-            if (DY[k] && DX[k] &&
-                (costs[ny * width + x] >= inscribed || costs[y * width + nx] >= inscribed))
-                continue;
-            const double mean = (c_u + (double)costs[v]) / 2.0;
-            const double weight = lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
             const double candidate = g_u + weight;
             TOUCH(v);
             if (candidate < cells[v].g) {
@@ -463,16 +478,11 @@ int32_t grid_distances(const uint8_t *costs, int32_t height, int32_t width, int3
         const int32_t y = e.node / width, x = e.node % width;
         const double c_u = (double)costs[e.node], g_u = e.f;
         for (int k = 0; k < 8; k++) {
-            const int32_t ny = y + DY[k], nx = x + DX[k];
-            if (ny < 0 || ny >= height || nx < 0 || nx >= width) continue;
-            const int32_t v = ny * width + nx;
-            if (costs[v] >= inscribed) continue;
-            if (DY[k] && DX[k] &&
-                (costs[ny * width + x] >= inscribed || costs[y * width + nx] >= inscribed))
-                continue;
-            const double mean = (c_u + (double)costs[v]) / 2.0;
-            const double candidate =
-                g_u + lengths[k] * (1.0 + penalty * mean / (double)(inscribed - 1));
+            int32_t v = 0;
+            const double weight =
+                step_cost(costs, height, width, inscribed, penalty, lengths, y, x, c_u, k, &v);
+            if (weight < 0.0) continue;
+            const double candidate = g_u + weight;
             if ((cells[v].tag >> 3) != generation) {
                 cells[v].tag = tag;
                 cells[v].g = INFINITY;
