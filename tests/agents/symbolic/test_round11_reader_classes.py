@@ -1,0 +1,120 @@
+"""Blind round 11's reader classes, by mechanism, on sentences of our own against a small
+letterpress studio no sentence was written for (``helpers.printshop``, with a pulping bin
+added where a test needs one) and against the default office (the round's own office was
+read only to name the classes)."""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import Office, load_office, parse_office
+from assistantx.core.task_schema import TaskFrame
+from helpers.printshop import raw_printshop
+
+
+def _with_pulping_bin() -> Office:
+    """The studio with a service that takes papers away: the "secure waste bin" pulps a
+    proof (a consuming service at a facility whose name is also a waste container's)."""
+    raw = raw_printshop()
+    raw["operations"].append(
+        {"id": "pulp", "name": "pulp", "verbs": ["pulp"], "input": "proof", "consumes": True}
+    )
+    raw["facilities"].append(
+        {
+            "id": "waste_bin",
+            "name": "secure waste bin",
+            "synonyms": ["pulping bin"],
+            "location": "press_room",
+            "operations": ["pulp"],
+            "guards": ["ugo"],
+        }
+    )
+    return parse_office(raw, "printshop-pulp")
+
+
+@functools.cache
+def _parser(name: str) -> InstructionParser:
+    office = {"printshop": _with_pulping_bin, "default": load_office}[name]()
+    return InstructionParser(office)
+
+
+def _frame(office: str, text: str, who: str) -> TaskFrame:
+    return _parser(office).parse(text, who)
+
+
+# -- 1. disposal by a verb the reader does not know; a thing put where nothing is ----------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("printshop", "kofi", "chuck Lena's loupe in the skip, it's scratched"),
+        ("printshop", "kofi", "ditch Edda's creaser in the bin please"),
+        ("printshop", "noor", "could you pop Kofi's bone folder into the rubbish?"),
+        ("printshop", "noor", "just stick my loupe in the trash"),
+        ("printshop", "edda", "lob Noor's magnifier in a dumpster"),
+        ("default", "wang", "chuck Zhang's stapler in the bin, it's broken"),
+    ],
+)
+def test_a_thing_put_into_a_waste_container_is_declined(office: str, who: str, text: str) -> None:
+    """Whatever the verb, a thing put into a bin, skip or rubbish is thrown away: declined
+    like "throw away ...", never read as fetching it for the requester."""
+    frame = _frame(office, text, who)
+    assert frame.tasks == []
+    assert frame.decline is not None and "won't" in frame.decline, frame.decline
+
+
+@pytest.mark.parametrize(
+    ("who", "text", "item"),
+    [
+        ("kofi", "put my proof in the secure waste bin", "proof"),
+        ("kofi", "pulp my proof in the pulping bin please", "proof"),
+    ],
+)
+def test_an_office_facility_named_like_a_bin_is_its_service(who: str, text: str, item: str) -> None:
+    """A bin the office declares as its facility is no rubbish: the errand runs there."""
+    frame = _frame("printshop", text, who)
+    assert frame.decline is None and frame.question is None, (frame.decline, frame.question)
+    assert [(t.item, t.operation) for t in frame.tasks] == [(item, "pulp")]
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("printshop", "kofi", "chuck Lena's loupe in the van"),
+        ("printshop", "kofi", "stick Edda's creaser in the cupboard"),
+        ("printshop", "noor", "put Kofi's bone folder on the shelf"),
+        ("default", "wang", "shove Zhang's stapler in the drawer"),
+    ],
+)
+def test_a_thing_put_where_nothing_of_the_office_is_asks(office: str, who: str, text: str) -> None:
+    """A verb that is no errand, and a place that is no person, room or facility: what to
+    do is asked, nothing moves (before: a fetch of the thing for the requester)."""
+    frame = _frame(office, text, who)
+    assert frame.tasks == [] and frame.decline is None
+    assert frame.question is not None and "Who should I bring it to?" in frame.question
+    assert "_" not in frame.question  # no internal ids
+
+
+@pytest.mark.parametrize(
+    ("who", "text", "item", "owner", "recipient"),
+    [
+        ("kofi", "bring me the loupe in the press room", "loupe", None, "kofi"),
+        ("kofi", "chuck me Lena's loupe", "loupe", "lena", "kofi"),
+        ("kofi", "leave Lena's loupe on Edda's desk", "loupe", "lena", "edda"),
+        ("kofi", "grab me the creaser from the bin", "bone_folder", None, "kofi"),
+    ],
+)
+def test_errands_with_a_place_phrase_stay_errands(
+    who: str, text: str, item: str, owner: str | None, recipient: str
+) -> None:
+    """A known errand verb reads its place phrase as where the thing is; a dative "me" or a
+    person's desk says who gets it."""
+    frame = _frame("printshop", text, who)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", item, owner, recipient)
+    ]
