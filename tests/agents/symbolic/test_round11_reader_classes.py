@@ -118,3 +118,35 @@ def test_errands_with_a_place_phrase_stay_errands(
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("transfer", item, owner, recipient)
     ]
+
+
+# -- 2. a withdrawal, then a need of the withdrawn thing: its reason, not a new errand -----
+
+
+@pytest.mark.parametrize(
+    ("who", "text"),
+    [
+        ("kofi", "pulp my old proof... actually scratch that, I still need it"),
+        ("kofi", "post my proof to the client. forget it, I need it for the audit"),
+        ("edda", "engrave my artwork file. never mind, we still want it as it is"),
+        ("noor", "pulp my proofs, actually no, cancel that, I need them"),
+    ],
+)
+def test_a_need_of_what_was_withdrawn_is_its_reason(who: str, text: str) -> None:
+    """ "I still need it" after "scratch that": "it" is the thing of the withdrawn request,
+    kept; nothing is done and nothing is asked (before: "whose proof?")."""
+    frame = _frame("printshop", text, who)
+    assert frame.tasks == [] and frame.question is None, frame.question
+    assert frame.decline is not None and "did nothing" in frame.decline
+
+
+@pytest.mark.parametrize(
+    ("who", "text", "item"),
+    [
+        ("kofi", "pulp my old proof. never mind, I need a loupe instead", "loupe"),
+        ("kofi", "scratch that, I still need it. bring me a creaser", "bone_folder"),
+    ],
+)
+def test_a_request_after_the_withdrawal_is_still_read(who: str, text: str, item: str) -> None:
+    frame = _frame("printshop", text, who)
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("transfer", item, who)]
