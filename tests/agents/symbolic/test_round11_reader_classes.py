@@ -150,3 +150,36 @@ def test_a_need_of_what_was_withdrawn_is_its_reason(who: str, text: str) -> None
 def test_a_request_after_the_withdrawal_is_still_read(who: str, text: str, item: str) -> None:
     frame = _frame("printshop", text, who)
     assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("transfer", item, who)]
+
+
+# -- 5. "P has to sign my X": P signs; "can you sort that" asks for it ---------------------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "actor", "item"),
+    [
+        ("printshop", "kofi", "Lena has to sign my proof, can you sort that", "lena", "proof"),
+        ("printshop", "kofi", "Edda must sign my layout, could you arrange it?", "edda", "proof"),
+        ("printshop", "noor", "Ugo needs to sign my proof sheet, sort it out pls", "ugo", "proof"),
+        ("printshop", "noor", "Ravi ought to sign my proof, can you handle that", "ravi", "proof"),
+        ("default", "wang", "Zhang has to sign my contract, can you sort that", "zhang", None),
+    ],
+)
+def test_the_one_obliged_to_sign_is_the_signer(
+    office: str, who: str, text: str, actor: str, item: str | None
+) -> None:
+    """An obligation ("has to", "must", "ought to") before a person's work names its doer,
+    and a request that names nothing of its own ("sort that") asks for that work."""
+    frame = _frame(office, text, who)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    [task] = frame.tasks
+    assert (task.kind, task.actor, task.owner, task.recipient) == ("sign", actor, who, who)
+    if item is not None:
+        assert task.item == item
+
+
+def test_a_request_of_its_own_after_the_obligation_is_read_alone() -> None:
+    """ "Lena has to sign my proof, can you bring me a loupe": the statement is context; the
+    request names its own thing."""
+    frame = _frame("printshop", "Lena has to sign my proof, can you bring me a loupe", "kofi")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "loupe")]

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_to
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -15,6 +16,8 @@ from assistantx.core.english import words as english_words
 
 
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if obligation_asked(msg, piece):
+        return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
     if piece.asks or not piece.acts.statement:
@@ -23,6 +26,23 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         f"person:{p}" for p in terms.named(piece.lexed, "person")[:1]
     )
     return Finding("statement", piece, "a statement, context only", context=named)
+
+
+def obligation_asked(msg: Message, piece: Piece) -> bool:
+    """ "Zhang has to sign my lease, can you sort that": a person obliged to do a person's
+    work, then a request that names nothing of its own ("sort that", "arrange it"): the
+    statement is what the request asks for, not context beside it."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    if not any(
+        m.kind == "person" and not m.possessive and obliged_to(words, m.end, PERSON_WORK)
+        for m in mentions
+    ):
+        return False
+    later = [p for p in msg.pieces if p.start > piece.end and p.acts.request]
+    return bool(later) and not any(
+        m.kind in ("item", "cue", "person", "facility") for p in later for m in p.lexed.mentions
+    )
 
 
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
