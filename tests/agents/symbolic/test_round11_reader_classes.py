@@ -17,8 +17,13 @@ from helpers.printshop import raw_printshop
 
 def _with_pulping_bin() -> Office:
     """The studio with a service that takes papers away: the "secure waste bin" pulps a
-    proof (a consuming service at a facility whose name is also a waste container's)."""
+    proof (a consuming service at a facility whose name is also a waste container's); its
+    belongings declare what they are for (a bone folder creases, a loupe magnifies)."""
     raw = raw_printshop()
+    for t in raw["item_types"]:  # what each belonging is for, as an office file declares it
+        t["purposes"] = {"bone_folder": ["crease", "fold"], "loupe": ["inspect", "magnify"]}.get(
+            t["id"], []
+        )
     raw["operations"].append(
         {"id": "pulp", "name": "pulp", "verbs": ["pulp"], "input": "proof", "consumes": True}
     )
@@ -183,3 +188,41 @@ def test_a_request_of_its_own_after_the_obligation_is_read_alone() -> None:
     request names its own thing."""
     frame = _frame("printshop", "Lena has to sign my proof, can you bring me a loupe", "kofi")
     assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "loupe")]
+
+
+# -- 4. a thing asked for by its purpose in a question, then "bring it over" ---------------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "item"),
+    [
+        (
+            "printshop",
+            "kofi",
+            "got anything I can crease this card with? bring it over",
+            "bone_folder",
+        ),
+        (
+            "printshop",
+            "noor",
+            "is there something to inspect this plate with? fetch it pls",
+            "loupe",
+        ),
+        ("default", "wang", "got anything I can trim this ribbon with? bring it over", "scissors"),
+    ],
+)
+def test_a_question_for_a_thing_by_its_purpose_names_the_requests_it(
+    office: str, who: str, text: str, item: str
+) -> None:
+    """The question names the thing by what it is for; the item type declared for that
+    purpose is what the request's "it" means (before: not understood)."""
+    frame = _frame(office, text, who)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("transfer", item, who)]
+
+
+def test_the_purpose_question_alone_is_answered_and_offered() -> None:
+    frame = _frame("printshop", "got anything I can crease this card with?", "noor")
+    assert frame.tasks == []
+    assert frame.question is not None and "Edda Lund" in frame.question
+    assert frame.question.endswith("Shall I bring you one?")

@@ -126,6 +126,10 @@ def name_pronouns(terms: Terms, text: str, hints: list[Hint], subjects: set[str]
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
 
 
+# Words that open the object of a purpose's verb ("to cut *this* ribbon with").
+_OBJECT_OPENERS = frozenset({"this", "that", "these", "those", "the", "my", "our", "some"})
+
+
 def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     heads = "|".join(re.escape(h) for h in sorted(terms.en.purpose_heads, key=len, reverse=True))
     links = "|".join(re.escape(h) for h in sorted(terms.en.purpose_links, key=len, reverse=True))
@@ -141,6 +145,13 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     keep = 0
     while keep < len(tail) and tail[keep].lower() in terms.en.purpose_tail:
         keep += 1
+    # "anything I can trim *this ribbon with*": the purpose's own object, up to its "with",
+    # is part of the phrase (the ribbon is what is trimmed, never what is brought)
+    with_at = next(
+        (j for j in range(keep, min(len(tail), keep + 4)) if tail[j].lower() == "with"), None
+    )
+    if keep and with_at is not None and tail[keep - 1].lower() in _OBJECT_OPENERS:
+        keep = with_at + 1
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0
