@@ -18,7 +18,8 @@ from helpers.printshop import raw_printshop
 def _with_pulping_bin() -> Office:
     """The studio with a service that takes papers away: the "secure waste bin" pulps a
     proof (a consuming service at a facility whose name is also a waste container's); its
-    belongings declare what they are for (a bone folder creases, a loupe magnifies)."""
+    belongings declare what they are for (a bone folder creases, a loupe magnifies); a label
+    printer makes label sheets from an artwork file, as the printer makes printouts."""
     raw = raw_printshop()
     for t in raw["item_types"]:  # what each belonging is for, as an office file declares it
         t["purposes"] = {"bone_folder": ["crease", "fold"], "loupe": ["inspect", "magnify"]}.get(
@@ -35,6 +36,28 @@ def _with_pulping_bin() -> Office:
             "location": "press_room",
             "operations": ["pulp"],
             "guards": ["ugo"],
+        }
+    )
+    raw["item_types"].append(
+        {"id": "label_sheet", "name": "labels", "kind": "product", "synonyms": ["label sheet"]}
+    )
+    raw["operations"].append(
+        {
+            "id": "label",
+            "name": "label",
+            "verbs": ["label"],
+            "input": "artwork",
+            "product": "label_sheet",
+        }
+    )
+    raw["facilities"].append(
+        {
+            "id": "label_printer",
+            "name": "label printer",
+            "location": "press_room",
+            "operations": ["label"],
+            "guards": ["ugo"],
+            "products": ["label_sheet"],
         }
     )
     return parse_office(raw, "printshop-pulp")
@@ -226,3 +249,32 @@ def test_the_purpose_question_alone_is_answered_and_offered() -> None:
     assert frame.tasks == []
     assert frame.question is not None and "Edda Lund" in frame.question
     assert frame.question.endswith("Shall I bring you one?")
+
+
+# -- 3. "the labels are in my file, run them off": the product named picks the operation ---
+
+
+@pytest.mark.parametrize(
+    ("who", "text", "operation", "recipient"),
+    [
+        (
+            "kofi",
+            "the new labels are ready in my artwork file, run them off and bring them to Lena",
+            "label",
+            "lena",
+        ),
+        ("noor", "my svg has the shop labels, run them off for Edda", "label", "edda"),
+        ("kofi", "my prints are in my artwork file, run them off for Lena", "print", "lena"),
+    ],
+)
+def test_the_product_a_statement_names_picks_the_operation(
+    who: str, text: str, operation: str, recipient: str
+) -> None:
+    """The statement names the product by a word that is also a service's verb ("labels",
+    "prints") and the file it is in; "them" is the file, made into that product by the
+    operation that makes it from a file (before: the file was forwarded)."""
+    frame = _frame("printshop", text, who)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.item, t.owner, t.recipient, t.operation) for t in frame.tasks] == [
+        ("artwork", who, recipient, operation)
+    ]

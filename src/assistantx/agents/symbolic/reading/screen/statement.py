@@ -22,8 +22,10 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return Finding("statement", piece, "context beside the request")
     if piece.asks or not piece.acts.statement:
         return None
-    named = tuple(stated_items(terms, piece, requester)) + tuple(
-        f"person:{p}" for p in terms.named(piece.lexed, "person")[:1]
+    named = (
+        tuple(stated_items(terms, piece, requester))
+        + tuple(f"person:{p}" for p in terms.named(piece.lexed, "person")[:1])
+        + tuple(f"product:{p}" for p in stated_products(terms, piece))
     )
     return Finding("statement", piece, "a statement, context only", context=named)
 
@@ -65,6 +67,23 @@ def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
         return language.is_noun(after) and after not in terms.en.courtesy
 
     return all(m.start in modifying or compound(m) for m in items)
+
+
+def stated_products(terms: Terms, piece: Piece) -> list[str]:
+    """The products of the office a statement names by a word that is also a service's verb
+    ("the new *labels* are in my file": the label sheets the label service makes), read as
+    the thing, not the verb: a later request that makes "them" makes that product."""
+    tokens = piece.lexed.tokens
+    out: list[str] = []
+    for n, m in enumerate(piece.lexed.mentions):
+        word = " ".join(t.word for t in tokens[m.start : m.end])
+        item = terms.lex.items.get(word)
+        if m.kind != "cue" or item is None or terms.office.item_type(item).kind != "product":
+            continue
+        if n == 0 and m.start == 0:
+            continue  # first word: a verb ("label my file")
+        out.append(item)
+    return list(dict.fromkeys(out))
 
 
 def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
