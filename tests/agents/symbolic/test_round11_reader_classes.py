@@ -278,3 +278,20 @@ def test_the_product_a_statement_names_picks_the_operation(
     assert [(t.item, t.owner, t.recipient, t.operation) for t in frame.tasks] == [
         ("artwork", who, recipient, operation)
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "operation"),
+    [
+        ("print my artwork file as labels for Lena", "label"),
+        ("could you print my svg into label sheets for Lena", "label"),
+        ("print my artwork file for Lena", "print"),
+    ],
+)
+def test_what_a_file_is_made_into_picks_the_operation(text: str, operation: str) -> None:
+    """ "print X as labels": the print verb is the means, the product after "as"/"into" is
+    what is made; one task, not a plain print and the labels both."""
+    frame = _frame("printshop", text, "kofi")
+    assert [(t.item, t.recipient, t.operation) for t in frame.tasks] == [
+        ("artwork", "lena", operation)
+    ]
