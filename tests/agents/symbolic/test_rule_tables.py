@@ -27,6 +27,7 @@ def _site(
         kw.get("back", False),
         kw.get("subject", False),
         then,
+        kw.get("obliged", False),
     )
 
 
@@ -44,6 +45,10 @@ PERSON_CASES = [
     (
         _site("", nxt="wants", then="it", subject=True),
         "Rich wants it (on the board): a wish about what was asked, not a recipient",
+    ),
+    (
+        _site("", nxt="needs", then="to", subject=True, obliged=True),
+        "Zhang has to / must sign: the doer",
     ),
     (_site("", nxt="needs", subject=True), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language, task_kinds
 
@@ -89,6 +90,7 @@ class PersonSite:
     back: bool  # "back to Wang"
     subject: bool = False  # a finite verb follows: "Rich asked", "Hal said"
     then: str = ""  # the word after the next one ("it" in "Rich wants it")
+    obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
 
     @property
     def at_place(self) -> bool:
@@ -138,6 +140,7 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         lambda s: s.nxt in _NEEDS and s.then in _BACK_REFERENCES,
         "context",
     ),
+    PersonRule("Zhang has to / must sign: the doer", lambda s: s.obliged, "actor"),
     PersonRule(
         "Min needs / gets scissors: the one in need receives",
         lambda s: s.nxt in _NEEDS,
@@ -186,6 +189,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         back=m.start >= 2 and tokens[m.start - 2].word == "back",
         subject=m.end < len(tokens) and language.is_finite_verb(tokens[m.end].word),
         then=tokens[m.end + 1].word if m.end + 1 < len(tokens) else "",
+        obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
     )
     match person_rule(site).slot:
         case "recipient":

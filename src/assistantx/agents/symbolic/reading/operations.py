@@ -19,6 +19,10 @@ WHERE_TO = "Where should I "  # the question for a send-out service's place outs
 OUT_OR_IN = "Should I send it out by "
 
 
+# The words before what an item is made into ("print it *as* labels", "*into* a PDF").
+_INTO_PRODUCT = frozenset({"as", "into"})
+
+
 class OperationChooser:
     """Names the operations of one office's tasks from the words that asked for them."""
 
@@ -52,6 +56,13 @@ class OperationChooser:
             for op in self.office.facility(m.ids[0]).operations
         }
         products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
+        # "as label sheets", "into a PDF": the products the item is to be made into
+        made = {
+            i
+            for m in lexed.mentions
+            if m.kind == "item" and m.start and lexed.tokens[m.start - 1].word in _INTO_PRODUCT
+            for i in m.ids
+        }
         named: list[Task] = []
         for n, t in enumerate(frame.tasks):
             # the other tasks on the same item: "scan my plan and then bind it" is two
@@ -62,7 +73,7 @@ class OperationChooser:
                 if u.item == t.item and u.kind in _KIND_SHAPE and u.operation is None
             ]
             place = (peers.index(n), len(peers)) if n in peers else (0, 1)
-            split, which = self._one_of_several(t, in_order, facility_ops, products, place)
+            split, which = self._one_of_several(t, in_order, facility_ops, products, place, made)
             if which is not None:
                 return TaskFrame(requester=frame.requester, question=which)
             named += split
@@ -133,6 +144,7 @@ class OperationChooser:
         facility_ops: set[str],
         products: set[str],
         place: tuple[int, int] = (0, 1),
+        made: frozenset[str] | set[str] = frozenset(),
     ) -> tuple[list[Task], str | None]:
         """The operations a task on an item runs, where a machine does several: the one whose
         verb or gerund is said ("needs binding", "through the copier to scan it") or whose
@@ -140,7 +152,8 @@ class OperationChooser:
         task each when several are said ("photocopy and bind my plan"); with none said and
         the machine named doing several to this item, the question which ("Which do you
         mean: copy, scan or bind?"). ``place``: this task's index among the tasks on the same
-        item, and their number (several tasks take the operations said in turn)."""
+        item, and their number (several tasks take the operations said in turn); ``made``: the
+        products the item is to be made into ("as label sheets")."""
         if task.item is None or task.operation is not None or task.kind not in _KIND_SHAPE:
             return [task], None
         fits = [
@@ -150,8 +163,15 @@ class OperationChooser:
         ]
         order = {w: n for n, w in reversed(list(enumerate(words)))}
         said = [op for op in fits if self._op_words[op.id] & set(words)]
+        into = [op for op in fits if op.product in made]
+        if len(into) == 1 and {op.shape(self.office) for op in [*said, *into]} == {
+            into[0].shape(self.office)
+        }:
+            said = into  # "print my file as label sheets": the print verb is only the means
         # "scan my contract to PDF", "send my plan to PDF": the product named says which
         said = said or [op for op in fits if op.product in products]
+        if len(said) > 1:
+            said = self._made_into(said, words)
         if len(said) > 1:
             # in the order they were said: "photocopy and bind" copies, then binds
             said.sort(key=lambda op: min(order.get(w, len(order)) for w in self._op_words[op.id]))
@@ -172,6 +192,21 @@ class OperationChooser:
             listed = ", ".join(names[:-1]) + " or " + names[-1]
             return [task], f"Which do you mean: {listed}?"
         return [task], None
+
+    def _made_into(self, said: list[Operation], words: list[str]) -> list[Operation]:
+        """ "print my file *as labels*", "run it off *into* label sheets": of several
+        operations of one shape said, the one named right after "as"/"into" is what the
+        item is made into; the other's word is only the means ("print")."""
+        into = [
+            op
+            for op in said
+            if any(
+                n and words[n - 1] in _INTO_PRODUCT and w in self._op_words[op.id]
+                for n, w in enumerate(words)
+            )
+        ]
+        shapes = {op.shape(self.office) for op in said}
+        return into if len(into) == 1 and len(shapes) == 1 else said
 
     def _as(self, task: Task, op: Operation) -> Task:
         """``task`` as a run of ``op``: its kind is the one of the operation's shape."""

@@ -17,6 +17,7 @@ def test_the_rules_in_priority_order() -> None:
         "condition",
         "negated",
         "destructive",
+        "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "fact",
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
         "question",

@@ -14,7 +14,10 @@ exclusion       "not from Wang though", "not Chen's"                            
 wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
 thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
 negated         "don't bring me ...", "no need to print ..."                        drops piece
-destructive     "throw away Wang's stapler", "hide ...", "get rid of ..."           declines
+destructive     "throw away Wang's stapler", "hide ...", "get rid of ...",          declines
+                "chuck Reed's clipboard in the skip" (any verb, a waste container)
+unplaced        "stick Reed's clipboard in the van": a verb that is no errand, to   asks what
+                a place that names nothing of the office                            to do
 fact            "Wang is away", "Zhang is in the meeting room",                     a hint;
                 "Zhang's stapler is broken"                                         drops piece
 question        "who has a tape measure?", "is the printer working?" (not "could    answered;
@@ -40,7 +43,7 @@ removed from the original text by their character spans, never re-joined, so wha
 parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
-``thanks``, ``condition``, ``negation``, ``destructive``, ``fact``, ``own_need``,
+``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``, ``own_need``,
 ``question``, ``statement``, ``whereabouts``, ``service``), tried in the order of ``rules``;
 each reads the piece's lexicon reading (``Piece.lexed``) and speech acts (``Piece.acts``, the
 ``speech_acts`` stage before the screen), never its text again. ``request_screen`` runs in

@@ -23,6 +23,9 @@ class English:
     negators: tuple[tuple[str, ...], ...]
     negation_fillers: frozenset[str]
     destructive: tuple[tuple[str, ...], ...]
+    waste_containers: tuple[
+        tuple[str, ...], ...
+    ]  # "the skip": putting a thing there disposes of it
     copulas: tuple[tuple[str, ...], ...]
     away: tuple[tuple[str, ...], ...]
     here: tuple[tuple[str, ...], ...]
@@ -61,6 +64,7 @@ def english() -> English:
         negators=phrases("negators"),
         negation_fillers=word_set("negation_fillers"),
         destructive=phrases("destructive"),
+        waste_containers=phrases("waste_containers"),
         copulas=phrases("copulas"),
         away=phrases("away"),
         here=phrases("here"),

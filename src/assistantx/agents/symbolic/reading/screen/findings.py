@@ -18,6 +18,7 @@ Verdict = Literal[
     "thanks",
     "negated",
     "destructive",
+    "unplaced",
     "fact",
     "question",
     "statement",

@@ -7,15 +7,16 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
 from assistantx.core import wording
 
 
 def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     kind = piece.acts.question
-    if kind != "info":
+    if kind != "info" or asks_for_purpose(terms, msg, piece):
         return None
-    items = terms.named(piece.lexed, "item")
+    items = purpose_item(terms, piece) or terms.named(piece.lexed, "item")
     facilities = terms.named(piece.lexed, "facility")
     people = terms.named(piece.lexed, "person")
     if len(items) == 1 and not facilities:
@@ -50,6 +51,24 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
             return Finding("question", piece, UNANSWERED, message=message)
         message = f"I don't know of any {thing} in this office."
     return Finding("question", piece, "a question, answered in words", message=message)
+
+
+def asks_for_purpose(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "got anything I can trim this ribbon with? bring it over": a question for a thing
+    named by its purpose, which one item type of the office is declared for, then a request
+    that names no thing of its own: the question says what the request's "it" is, so it is
+    left in the request (the rewrite reads the purpose as the item)."""
+    _, found = purposes(terms, piece.text)
+    if not found:
+        return False
+    later = [p for p in msg.pieces if p.start > piece.end and p.acts.request]
+    return bool(later) and not any(m.kind == "item" for p in later for m in p.lexed.mentions)
+
+
+def purpose_item(terms: Terms, piece: Piece) -> list[str]:
+    """The item type a question names by its purpose ("anything I can trim this with?")."""
+    rewritten, found = purposes(terms, piece.text)
+    return terms.named(terms.lex.read(rewritten), "item") if found else []
 
 
 def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Finding:

@@ -76,6 +76,10 @@ class RequestScreen:
         if declines:
             out.decline, out.outcome = declines[0].message, "unachievable"
             return out
+        unplaced = [f for f in live if f.verdict == "unplaced"]
+        if unplaced:  # a thing told to go where nothing of the office is: asked, never moved
+            out.question = unplaced[0].message
+            return out
         left = spoken.left
         meant = set(content(split_words(left))) - terms.en.courtesy  # "hi," left of a statement
         if not meant or aside(terms, left, live, kept):

@@ -33,7 +33,8 @@ def rewrite(
         for h in hints
         if h.kind == "condition" and h.item_type and h.value != "not wanted"
     ]
-    stated = [c for c in context if not c.startswith("person:")]
+    stated = [c for c in context if not c.startswith(("person:", "product:"))]
+    products = [c.removeprefix("product:") for c in context if c.startswith("product:")]
     said += stated
     if said and not terms.names_an_item(text):
         item, _, whose = said[-1].partition("|")
@@ -47,6 +48,8 @@ def rewrite(
             if match:
                 kept = phrase in back and whose
                 said_as = f"{whose} {thing}" if kept else f"a {thing}"
+                if kept and (made := made_from(terms, item, [*stated, *products])) is not None:
+                    said_as += f" as {made}"  # "labels are in my file, run them off"
                 meaning = said_as if kept else f"another {thing}"
                 evidence.append(Evidence(words=match.group(0), meaning=meaning))
                 text = text[: match.start()] + said_as + text[match.end() :]
@@ -55,6 +58,21 @@ def rewrite(
             text, found = container_of(terms, text, thing)
             evidence += found
     return text, evidence
+
+
+def made_from(terms: Terms, item: str, stated: list[str]) -> str | None:
+    """ "the new labels are ready in my file, run them off": the one product a statement
+    names beside the item "them" stands for, that an operation of the office makes from that
+    item; the request makes it, so the product picks the operation."""
+    named = {c.partition("|")[0] for c in stated}
+    made = {
+        op.product
+        for op in terms.office.operations
+        if op.input == item and op.product is not None and op.product in named
+    }
+    if len(made) != 1:
+        return None
+    return terms.office.item_type(next(iter(made))).name
 
 
 def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidence]]:
@@ -126,6 +144,10 @@ def name_pronouns(terms: Terms, text: str, hints: list[Hint], subjects: set[str]
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
 
 
+# Words that open the object of a purpose's verb ("to cut *this* ribbon with").
+_OBJECT_OPENERS = frozenset({"this", "that", "these", "those", "the", "my", "our", "some"})
+
+
 def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     heads = "|".join(re.escape(h) for h in sorted(terms.en.purpose_heads, key=len, reverse=True))
     links = "|".join(re.escape(h) for h in sorted(terms.en.purpose_links, key=len, reverse=True))
@@ -141,6 +163,13 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     keep = 0
     while keep < len(tail) and tail[keep].lower() in terms.en.purpose_tail:
         keep += 1
+    # "anything I can trim *this ribbon with*": the purpose's own object, up to its "with",
+    # is part of the phrase (the ribbon is what is trimmed, never what is brought)
+    with_at = next(
+        (j for j in range(keep, min(len(tail), keep + 4)) if tail[j].lower() == "with"), None
+    )
+    if keep and with_at is not None and tail[keep - 1].lower() in _OBJECT_OPENERS:
+        keep = with_at + 1
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0

@@ -14,6 +14,7 @@ from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
@@ -35,6 +36,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("condition", condition),
     ("negated", negated),
     ("destructive", destructive),
+    ("unplaced", unplaced),
     ("fact", fact),
     ("statement", own_need),
     ("question", question),

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_to
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -15,14 +16,35 @@ from assistantx.core.english import words as english_words
 
 
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if obligation_asked(msg, piece):
+        return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
     if piece.asks or not piece.acts.statement:
         return None
-    named = tuple(stated_items(terms, piece, requester)) + tuple(
-        f"person:{p}" for p in terms.named(piece.lexed, "person")[:1]
+    named = (
+        tuple(stated_items(terms, piece, requester))
+        + tuple(f"person:{p}" for p in terms.named(piece.lexed, "person")[:1])
+        + tuple(f"product:{p}" for p in stated_products(terms, piece))
     )
     return Finding("statement", piece, "a statement, context only", context=named)
+
+
+def obligation_asked(msg: Message, piece: Piece) -> bool:
+    """ "Zhang has to sign my lease, can you sort that": a person obliged to do a person's
+    work, then a request that names nothing of its own ("sort that", "arrange it"): the
+    statement is what the request asks for, not context beside it."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    if not any(
+        m.kind == "person" and not m.possessive and obliged_to(words, m.end, PERSON_WORK)
+        for m in mentions
+    ):
+        return False
+    later = [p for p in msg.pieces if p.start > piece.end and p.acts.request]
+    return bool(later) and not any(
+        m.kind in ("item", "cue", "person", "facility") for p in later for m in p.lexed.mentions
+    )
 
 
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
@@ -45,6 +67,23 @@ def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
         return language.is_noun(after) and after not in terms.en.courtesy
 
     return all(m.start in modifying or compound(m) for m in items)
+
+
+def stated_products(terms: Terms, piece: Piece) -> list[str]:
+    """The products of the office a statement names by a word that is also a service's verb
+    ("the new *labels* are in my file": the label sheets the label service makes), read as
+    the thing, not the verb: a later request that makes "them" makes that product."""
+    tokens = piece.lexed.tokens
+    out: list[str] = []
+    for n, m in enumerate(piece.lexed.mentions):
+        word = " ".join(t.word for t in tokens[m.start : m.end])
+        item = terms.lex.items.get(word)
+        if m.kind != "cue" or item is None or terms.office.item_type(item).kind != "product":
+            continue
+        if n == 0 and m.start == 0:
+            continue  # first word: a verb ("label my file")
+        out.append(item)
+    return list(dict.fromkeys(out))
 
 
 def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:

@@ -7,7 +7,9 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech_acts import without_fillers
-from assistantx.core import language
+from assistantx.core import english, language
+
+_PRONOUNS = english.words("pronouns")
 
 
 def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -25,7 +27,22 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         # what happened, not an errand; a request after it ("..., bring me a pen instead")
         # is read, and so is a bare correction ("no wait, a pencil": asked about)
         return Finding("withdrawn", piece, "the reason the request is withdrawn")
+    if msg.withdrawing and _still_wanted(piece):
+        # "recycle my old note... actually scratch that, I still need it": "it" is the thing
+        # of the withdrawn request, kept; a need said of it is the reason, not a new errand
+        return Finding("withdrawn", piece, "the reason the request is withdrawn: still needed")
     return None
+
+
+def _still_wanted(piece: Piece) -> bool:
+    """A need or wish said only of "it"/"that"/"them" (no thing, no person named), not told
+    nor asked: the thing of the request just withdrawn, wanted where it is."""
+    acts = piece.acts
+    if acts.imperative or acts.question is not None or not acts.request:
+        return False
+    if any(m.kind in ("item", "person", "facility", "place") for m in piece.lexed.mentions):
+        return False
+    return bool(set(piece.words) & _PRONOUNS)
 
 
 def withdrawal(terms: Terms, piece: Piece) -> Finding | None:

@@ -1,0 +1,76 @@
+"""Unplaced: "chuck Reed's clipboard in the van", "stick my torch on the shelf": a thing told
+to go somewhere by a verb that is no errand the reader knows, into a place that names nothing
+of the office (no person, room or facility). Asked, never read as a fetch for the requester:
+what is done with the thing, and where it ends up, are both unknown.
+
+A known errand verb keeps its place phrase as where the thing is ("bring me the clipboard on
+the shelf"), and a place the office names is read by the later stages ("put my lunch in the
+fridge" where a fridge is a facility); a waste container was declined before this rule
+(``destructive``)."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english, language
+
+# "in the van", "onto the shelf": where a put-request sends its thing.
+_INTO = english.words("to_facility_prepositions") - {"to"}
+# What a place phrase that names something of the office is.
+_OFFICE_PLACES = frozenset({"person", "self", "place", "facility"})
+# Words between a thing and where it is told to go ("stick it *back* in the drawer").
+_PARTICLES = frozenset({"back", "down", "over", "up", "away", "out"})
+
+
+def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    words = piece.words
+    at = piece.verb_at(terms.en.lead_in)
+    if at >= len(words) or not _unknown_verb(terms, words[at]):
+        return None
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    told = [t.word for t in tokens]
+    items = [m for m in mentions if m.kind == "item"]
+    if not items:
+        return None
+    thing = items[0]
+    if any(m.kind in _OFFICE_PLACES and not m.possessive for m in mentions):
+        return None  # "run it down to Dot", "put my lunch in the fridge"
+    n = thing.end
+    while n < len(told) and told[n] in _PARTICLES:
+        n += 1  # "chuck it back in the van"
+    if n >= len(told) or told[n] not in _INTO:
+        return None  # the place, if any, is not where the thing is told to go
+    k = n + 1
+    while k < len(told) and told[k] in DETERMINERS:
+        k += 1
+    if k >= len(told) or told[k] in terms.en.modifier_prepositions:
+        return None  # "put the kettle on", "stick it on for me": no place named
+    if any(m.kind in _OFFICE_PLACES and m.start > n for m in mentions):
+        return None  # "leave my form on Hal's desk": a person's place, a delivery
+    verb = next((j for j, w in enumerate(told) if w == words[at]), 0)
+    said = " ".join(t.text for t in tokens[verb + 1 : thing.end])
+    where = " ".join(t.text for t in tokens[n:])
+    return Finding(
+        "unplaced",
+        piece,
+        f"unplaced: {words[at]} ... {where}",
+        message=(
+            f"Sorry, I'm not sure what to do with {said} ({where}). "
+            f"{terms.capabilities()} Who should I bring it to?"
+        ),
+    )
+
+
+def _unknown_verb(terms: Terms, word: str) -> bool:
+    """A verb in its plain form that names no errand of the reader nor service of the
+    office ("chuck", "stick", "put")."""
+    if word not in language.verb_lemmas(word):
+        return False
+    return not (
+        word in terms.lex.cue_words
+        or word in terms.service_verbs
+        or word in terms.en.service_verbs
+        or word in terms.lex.operation_words
+    )
