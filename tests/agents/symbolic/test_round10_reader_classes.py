@@ -305,3 +305,19 @@ def test_a_signature_named_by_its_signer_is_theirs(
     assert frame.question is None and frame.decline is None, frame.question
     [task] = frame.tasks
     assert (task.kind, task.actor, task.owner, task.recipient) == ("sign", signer, who, who)
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text"),
+    [
+        ("printshop", "kofi", "Lena has a loupe and Noor has a bone folder. Bring it to me"),
+        ("printshop", "kofi", "Noor has a bone folder and Lena has a loupe, bring them over"),
+    ],
+)
+def test_a_pronoun_after_two_stated_items_is_asked_about_not_guessed(
+    office: str, who: str, text: str
+) -> None:
+    """Two sentences each say someone has a thing: "it" could be either, so the reader asks
+    instead of taking the last one named."""
+    frame = _parser(office).parse(text, who)
+    assert frame.question is not None and not frame.tasks, frame.tasks

@@ -41,7 +41,10 @@ def rewrite(
         thing = terms.office.item_type(item).name
         # "the stapler is for Wang, bring it to him": "it" is the stated item, and
         # "Gao asked for my scissors, bring them to her": mine
-        back = ("it", "them") if stated and said[-1] == stated[-1] else ()
+        # Two things stated ("Lena has a loupe and Noor has a bone folder, bring it"): "it"
+        # could be either, so it is left for the frames, which ask which one
+        one_stated = len(set(stated)) == 1
+        back = ("it", "them") if stated and said[-1] == stated[-1] and one_stated else ()
         for phrase in (*terms.en.another_one, "some", *back):
             pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
             match = pattern.search(text)
