@@ -31,6 +31,7 @@ from fnmatch import fnmatchcase
 
 from assistantx.core.actions import Inquire, Move, Stop
 from assistantx.core.goals import parse_milestone
+from assistantx.core.language import fold
 from assistantx.core.trace import ActionResult
 from assistantx.evaluation.episode import Episode
 from assistantx.memory.updates import AvailabilityUpdate
@@ -110,7 +111,7 @@ def wrong_handovers(episode: Episode) -> list[str]:
 
 
 def _words(text: str) -> str:
-    return " ".join(text.casefold().split())
+    return " ".join(fold(text).split())  # one key for case, accents and curly apostrophes
 
 
 def wrong_sends(episode: Episode) -> list[str]:
