@@ -129,7 +129,13 @@ NavigatorRobot.from_files(load_office(), SimClock(), map_yaml=sys.argv[2], local
 files = {{f.name: f.stat().st_mtime_ns for f in cache.iterdir()}}
 print(json.dumps({{"scipy": "scipy" in sys.modules, "files": files}}))
 """
-CACHED_KINDS = {"obstacle-distance", "occupied-distance", "traversable-components"}
+CACHED_KINDS = {
+    "obstacle-distance",
+    "inflation-costs",
+    "endpoint-distance",
+    "endpoint-log-likelihood",
+    "traversable-components",
+}
 
 
 def _start_on(cache: Path, map_yaml: Path) -> tuple[bool, dict[str, int]]:

@@ -91,3 +91,52 @@ def test_another_map_gets_its_own_components(cache_dir: Path) -> None:
     GridPlanner(Costmap.inflate(_room(wall_at=5)))
     GridPlanner(Costmap.inflate(_room(wall_at=20)))
     assert len(list(cache_dir.glob("traversable-components-*.npy"))) == 2
+
+
+def test_amcls_field_is_mapped_back_read_only_and_equals_the_computed_one(
+    cache_dir: Path,
+) -> None:
+    first = LikelihoodField(_room(), AmclParams())
+    stored = {f.name: f.stat().st_mtime_ns for f in cache_dir.glob("endpoint-*.npy")}
+    assert {name.rsplit("-", 1)[0] for name in stored} == {
+        "endpoint-distance",
+        "endpoint-log-likelihood",
+    }
+    second = LikelihoodField(_room(), AmclParams())
+    assert {f.name: f.stat().st_mtime_ns for f in cache_dir.glob("endpoint-*.npy")} == stored
+    disk_cache.use_directory(None)
+    computed = LikelihoodField(_room(), AmclParams())
+    for field in (first, second, computed):
+        assert np.array_equal(field.log_p, computed.log_p)
+        assert np.array_equal(field.distance_m, computed.distance_m)
+        with pytest.raises(ValueError, match="read-only"):  # computed or read, the same
+            field.log_p[0] = 0.0
+
+
+def test_another_map_or_beam_model_gets_a_field_of_its_own(cache_dir: Path) -> None:
+    walled = LikelihoodField(_room(wall_at=20), AmclParams())
+    other_map = LikelihoodField(_room(wall_at=5), AmclParams())
+    assert len(list(cache_dir.glob("endpoint-distance-*.npy"))) == 2
+    cell = 20 * 60 + 30  # on the wall of the first map, open floor in the second
+    assert walled.distance_m[cell] == 0.0 < other_map.distance_m[cell]
+    sharper = LikelihoodField(_room(wall_at=5), AmclParams(sigma_hit=0.05))
+    assert len(list(cache_dir.glob("endpoint-distance-*.npy"))) == 2  # the same distances
+    assert len(list(cache_dir.glob("endpoint-log-likelihood-*.npy"))) == 3
+    assert not np.array_equal(sharper.log_p, other_map.log_p)
+
+
+def test_the_costs_are_read_back_writable_and_kept_per_inflation(cache_dir: Path) -> None:
+    first = Costmap.inflate(_room())
+    [stored] = list(cache_dir.glob("inflation-costs-*.npy"))
+    stamp = stored.stat().st_mtime_ns
+    second = Costmap.inflate(_room())
+    assert stored.stat().st_mtime_ns == stamp
+    assert np.array_equal(second.costs, first.costs)
+    second.costs[1, 1] = 0  # the obstacle layer writes into a copy; tests into the costs
+    assert Costmap.inflate(_room()).costs[1, 1] == first.costs[1, 1]  # the file unchanged
+    with pytest.raises(ValueError, match="read-only"):
+        second.obstacle_distance_m[1, 1] = 0.0
+    steeper = Costmap.inflate(_room(), InflationParams(cost_scaling_factor=3.0))
+    assert len(list(cache_dir.glob("inflation-costs-*.npy"))) == 2
+    assert len(list(cache_dir.glob("obstacle-distance-*.npy"))) == 1  # the same distances
+    assert not np.array_equal(steeper.costs, first.costs)

@@ -17,6 +17,8 @@ from assistantx.nav.occupancy_map import (
     UNKNOWN,
     OccupancyMap,
     load_map,
+    pixels_to_occupancy,
+    read_pgm,
     save_map,
 )
 from assistantx.nav.planner import GridPlanner
@@ -84,6 +86,39 @@ def test_sixteen_bit_pgm(tmp_path: Path) -> None:
         "occupied_thresh: 0.65\nfree_thresh: 0.196\n"
     )
     assert load_map(tmp_path / "m.yaml").data.tolist() == [[OCCUPIED, FREE]]
+
+
+@pytest.mark.parametrize("mode", ["trinary", "scale", "raw"])
+@pytest.mark.parametrize("negate", [0, 1])
+@pytest.mark.parametrize(("maxval", "dtype"), [(255, np.uint8), (1000, ">u2"), (65535, ">u2")])
+def test_a_binary_pgm_converts_every_grey_level_as_its_pixels_would(
+    tmp_path: Path, mode: str, negate: int, maxval: int, dtype: str
+) -> None:
+    """load_map converts each grey level once and looks the pixels up: every level (past
+    maxval too) gives what converting that pixel gives, in every mode."""
+    top = 255 if maxval == 255 else 65535
+    rng = np.random.default_rng(maxval + negate)
+    levels = np.concatenate([np.arange(top + 1), rng.integers(0, top + 1, 500)])
+    levels = levels[: len(levels) // 4 * 4].reshape(4, -1).astype(dtype)
+    height, width = levels.shape
+    image = tmp_path / "m.pgm"
+    image.write_bytes(f"P5\n{width} {height}\n{maxval}\n".encode() + levels.tobytes())
+    (tmp_path / "m.yaml").write_text(
+        f"image: m.pgm\nmode: {mode}\nresolution: 0.5\norigin: [0, 0, 0]\n"
+        f"negate: {negate}\noccupied_thresh: 0.65\nfree_thresh: 0.196\n"
+    )
+    per_pixel = pixels_to_occupancy(
+        read_pgm(image),
+        None,
+        negate=bool(negate),
+        occupied_thresh=0.65,
+        free_thresh=0.196,
+        mode=mode,  # type: ignore[arg-type]
+    )
+    loaded = load_map(tmp_path / "m.yaml").data
+    assert loaded.dtype == np.int8 and loaded.flags.c_contiguous
+    np.testing.assert_array_equal(loaded, np.flipud(per_pixel))
+    assert len(np.unique(loaded)) > 2  # the levels spread over free, unknown and occupied
 
 
 def test_save_and_load_round_trip(tmp_path: Path) -> None:

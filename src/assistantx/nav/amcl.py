@@ -140,17 +140,28 @@ class LikelihoodField:
         occupied = grid.data >= 65
         if params.unknown_rim_is_wall:
             occupied = occupied | grid.unknown_rim
+        # Both tables are kept in the map cache by what they are made from (the obstacles,
+        # the cell size, the beam model) and mapped from there, read-only, on a later start:
+        # computing them was most of a robot's set-up on a big map (~0.1 CPU-s on nav2's
+        # warehouse), and the filter's lookups read a few of their pages at a time.
+        inputs = (occupied.shape, np.packbits(occupied).tobytes(), grid.resolution)
+        max_dist = params.laser_likelihood_max_dist
         distance = disk_cache.cached_array(
-            "occupied-distance",
-            (occupied.shape, occupied.tobytes()),
-            lambda: _distance_to(occupied),
+            "endpoint-distance",
+            (*inputs, max_dist),
+            lambda: np.minimum(_distance_to(occupied) * grid.resolution, max_dist),
+            mapped=True,
         )
-        distance = np.minimum(distance * grid.resolution, params.laser_likelihood_max_dist)
+        beam_model = (max_dist, params.z_hit, params.sigma_hit, params.z_rand)
+        log_p = disk_cache.cached_array(
+            "endpoint-log-likelihood",
+            (*inputs, *beam_model, params.laser_max_range),
+            lambda: self._log_likelihood(distance, params),
+            mapped=True,
+        )
         self.distance_m = distance.ravel()
-        self.log_p = self._log_likelihood(distance, params).ravel()
-        self.log_p_off_map = float(
-            self._log_likelihood(np.array(params.laser_likelihood_max_dist), params)
-        )
+        self.log_p = log_p.ravel()
+        self.log_p_off_map = float(self._log_likelihood(np.array(max_dist), params))
 
     @cached_property
     def _free_cells(self) -> tuple[FloatArray, FloatArray]:
@@ -196,8 +207,14 @@ class LikelihoodField:
         inside = (ix >= 0) & (ix < grid.width) & (iy >= 0) & (iy < grid.height)
         flat = np.where(inside, iy * grid.width + ix, 0)
         log_p = np.where(inside, self.log_p[flat], self.log_p_off_map)
-        distance = np.where(inside, self.distance_m[flat], self.distance_m.max(initial=0.0))
+        distance = np.where(inside, self.distance_m[flat], self._farthest_m)
         return np.asarray(log_p), np.asarray(distance)
+
+    @cached_property
+    def _farthest_m(self) -> float:
+        """The largest distance in the field (an endpoint off the map is that far): found
+        once, not by reading the whole table at every scan."""
+        return float(self.distance_m.max(initial=0.0))
 
     def endpoint_distances(
         self, pose: FloatArray, ranges: FloatArray, angles: FloatArray

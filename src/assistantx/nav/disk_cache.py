@@ -8,6 +8,11 @@ or other parameters hash differently and are computed afresh; nothing goes stale
 
 Off until ``use_directory`` names a folder: the service puts it under its data folder; the
 library, the tests and the benchmarks compute as before unless they ask for it.
+
+An array asked for ``mapped`` is read as a read-only memory map of its file: a start costs
+its header, and the pages are read when first touched (AMCL's field on nav2's warehouse is
+two 13 MB arrays a start never reads whole). It is read-only when computed too, so a caller
+that writes into it fails on the first start already, not only on a second.
 """
 
 from __future__ import annotations
@@ -56,13 +61,17 @@ def cached_array(
     kind: str,
     inputs: Iterable[bytes | str | float | int | tuple[int, ...]],
     compute: Callable[[], npt.NDArray[T]],
+    *,
+    mapped: bool = False,
 ) -> npt.NDArray[T]:
-    """``compute()``, or the array stored for the same ``kind`` and ``inputs``."""
+    """``compute()``, or the array stored for the same ``kind`` and ``inputs``; ``mapped``:
+    read-only, and read from its file as a memory map (see the module's note)."""
     if _directory is None:
-        return compute()
+        return _read_only(compute()) if mapped else compute()
     file = _directory / f"{kind}-{content_key(kind, inputs)}.npy"
     try:
-        found: npt.NDArray[T] = np.load(file, allow_pickle=False)
+        # a file shorter than its header says fails here too (ValueError): computed again
+        found: npt.NDArray[T] = np.load(file, mmap_mode="r" if mapped else None, allow_pickle=False)
     except FileNotFoundError:
         pass
     except (OSError, ValueError) as exc:  # a torn or foreign file: computed again, replaced
@@ -78,4 +87,9 @@ def cached_array(
     except OSError as exc:  # a full or read-only disk costs the next start time, no more
         logger.warning("%s: could not keep the computed array: %s", file, exc)
         temporary.unlink(missing_ok=True)
+    return _read_only(value) if mapped else value
+
+
+def _read_only(value: npt.NDArray[T]) -> npt.NDArray[T]:
+    value.flags.writeable = False
     return value

@@ -118,6 +118,7 @@ class GridPlanner:
                 "traversable-components",
                 (traversable.shape, np.packbits(traversable).tobytes()),
                 lambda: _components(traversable),
+                mapped=True,  # read a few labels at a time (anchors, a plan's ends)
             )
         self._labels = components
         self._marks: Landmarks | Literal["measure"] | None = marks
