@@ -3,6 +3,7 @@ since the last plan reach the worker, and the planner's reasons come back as the
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -82,6 +83,31 @@ def test_a_warmed_worker_measures_the_landmarks_into_the_map_cache(tmp_path: Pat
         assert len(list(cache.glob("planner-landmarks-*.npy"))) == 1  # the worker's
         assert planner.marks is None  # none measured here
         assert path.cost == pytest.approx(planner.plan((1.0, 2.0), (5.0, 2.0)).cost)
+    finally:
+        process.close()
+        disk_cache.use_directory(None)
+
+
+def test_a_stop_ends_a_worker_measuring_landmarks_and_keeps_nothing_half_made(
+    tmp_path: Path, caplog: pytest.LogCaptureFixture
+) -> None:
+    """Landmarks are only a head start for the first plan: a stop while the worker measures
+    them (8 full Dijkstras on this 60 x 60 m floor, seconds) ends the worker rather than
+    waiting for them, and leaves no table, whole or partial, in the map cache."""
+    cache = tmp_path / "cache"
+    disk_cache.use_directory(cache)
+    process = PlanProcess()
+    try:
+        floor = np.full((1200, 1200), FREE, dtype=np.int8)
+        floor[[0, -1], :] = floor[:, [0, -1]] = OCCUPIED
+        planner = GridPlanner(Costmap.inflate(OccupancyMap(floor, RES)))
+        process.warm(planner)
+        with caplog.at_level(logging.INFO, logger="assistantx.nav.plan_process"):
+            process.close()
+        assert "ended the planning worker while it measured landmarks" in caplog.text
+        assert "could not prepare" not in caplog.text  # the stop is no failure
+        assert list(cache.glob("planner-landmarks-*")) == []
+        assert list(cache.glob(".*.tmp")) == []
     finally:
         process.close()
         disk_cache.use_directory(None)

@@ -17,6 +17,7 @@ import logging
 import multiprocessing
 import os
 import pathlib
+import signal
 import threading
 import time
 from concurrent.futures import Future, ProcessPoolExecutor
@@ -82,14 +83,6 @@ def _prepare_in_worker(key: _Key) -> None:
         planner.prepare()
 
 
-def _log_failure(future: Future[None]) -> None:
-    if future.cancelled():  # the worker was stopped before it got to it
-        return
-    error = future.exception()
-    if error is not None:
-        logger.warning("the planning worker could not prepare a planner: %r", error)
-
-
 def _plan_in_worker(
     key: _Key, payload: _Payload | None, start: tuple[float, float], goal: tuple[float, float]
 ) -> Path:
@@ -109,8 +102,11 @@ class PlanProcess:
 
     def __init__(self) -> None:
         self._pool: ProcessPoolExecutor | None = None
+        self._worker_pid: int | None = None
         self._lock = threading.Lock()
         self._sent: set[_Key] = set()
+        self._preparing: Future[None] | None = None  # the landmarks warm asked for
+        self._stopping = False
 
     def plan(
         self, planner: GridPlanner, start: tuple[float, float], goal: tuple[float, float]
@@ -139,17 +135,42 @@ class PlanProcess:
                 # The landmarks next, not waited for: the worker measures them (or reads
                 # them from the map cache) before the first plan it is sent, while the
                 # caller goes on starting.
-                pool.submit(_prepare_in_worker, key).add_done_callback(_log_failure)
+                self._preparing = pool.submit(_prepare_in_worker, key)
+                self._preparing.add_done_callback(self._log_failure)
 
     def close(self) -> None:
         """Stop the worker (a plan under way finishes first; queued ones are dropped). The
-        next plan starts a new one."""
+        next plan starts a new one. Landmarks still being measured are not waited for: the
+        worker is ended (on a big map that measuring takes seconds, and a service stopped
+        soon after its first start on a map waited for all of it: 3-6 s on nav2's warehouse
+        against the 2 s a stop may take); only a plan's head start is lost."""
         with self._lock:
             if self._pool is not None:
+                if self._preparing is not None and not self._preparing.done():
+                    self._end_worker()
                 self._pool.shutdown(wait=True, cancel_futures=True)
                 self._pool = None
+                self._stopping = False
                 logger.info("stopped the planning worker process")
             self._sent.clear()
+            self._preparing = None
+
+    def _end_worker(self) -> None:
+        self._stopping = True  # the preparation's failure is this stop, not a problem
+        if self._worker_pid is None:
+            return
+        try:
+            os.kill(self._worker_pid, signal.SIGTERM)
+        except ProcessLookupError:  # it ended meanwhile
+            return
+        logger.info("ended the planning worker while it measured landmarks")
+
+    def _log_failure(self, future: Future[None]) -> None:
+        if future.cancelled() or self._stopping:  # stopped before or while it ran
+            return
+        error = future.exception()
+        if error is not None:
+            logger.warning("the planning worker could not prepare a planner: %r", error)
 
     def _ensure_pool(self) -> ProcessPoolExecutor:
         if self._pool is None:
@@ -160,6 +181,8 @@ class PlanProcess:
                 initializer=_start_worker,
                 initargs=(os.getpid(), disk_cache.directory()),
             )
+            # which process to end if a stop comes while it measures landmarks
+            self._worker_pid = self._pool.submit(os.getpid).result()
             self._sent.clear()
             logger.info("started the planning worker process")
         return self._pool
