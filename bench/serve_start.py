@@ -1,5 +1,6 @@
 """``assistantx serve``: CPU-seconds to ready, a second start on the same data folder (the
-map's distance transforms read back from its cache), and the stop after SIGINT.
+map's derived arrays read back from its cache, AMCL's field and the obstacle distances as
+memory maps), and the stop after SIGINT.
 
 For each map: a fresh data folder; ``python -m assistantx serve`` started twice on it. Ready
 is the first 200 from ``/readyz``; its cost is the server's own user + system CPU time at
