@@ -44,6 +44,8 @@ from __future__ import annotations
 import copy
 import dataclasses
 import re
+import threading
+import weakref
 
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.reading.frames import (
@@ -63,7 +65,7 @@ from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, Mentio
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.unknown_items import unknown_item
-from assistantx.core import language
+from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
 
@@ -72,7 +74,34 @@ _INSIDE_WORDS = frozenset(
     {"bring", "hand", "give", "take", "deliver", "desk", "him", "her", "them", "here", "inside"}
 )
 
-__all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
+__all__ = [
+    "NOT_UNDERSTOOD",
+    "InstructionParser",
+    "Task",
+    "TaskFrame",
+    "TaskKind",
+    "shared_parser",
+]
+
+
+# One parser per office for the reasoner, the consent check and the request recognizer:
+# building one reads the office into a lexicon (a tenth to a third of a CPU-second), and each
+# built its own, the last two on the event loop at their first use (48 and 129 ms under
+# load). Rebuilt when the task kinds' table changed since (``task_kinds.add``).
+_SHARED: weakref.WeakKeyDictionary[
+    Office, tuple[tuple[task_kinds.KindSpec, ...], InstructionParser]
+] = weakref.WeakKeyDictionary()
+_SHARED_LOCK = threading.Lock()  # the service's warm-up thread builds it; the loop may wait
+
+
+def shared_parser(office: Office) -> InstructionParser:
+    """The parser of ``office`` its readers share (parsing changes nothing in it)."""
+    kinds = task_kinds.kinds()
+    with _SHARED_LOCK:
+        kept = _SHARED.get(office)
+        if kept is None or kept[0] != kinds:
+            kept = _SHARED[office] = (kinds, InstructionParser(office))
+        return kept[1]
 
 
 class InstructionParser:
