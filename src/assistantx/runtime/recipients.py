@@ -235,26 +235,14 @@ def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
     return found
 
 
-# The frames the office's parser read (``shared_parser``: one per office).
-_FRAMES: dict[tuple[int, str, str, tuple[str, ...]], TaskFrame] = {}
-_FRAMES_KEPT = 256
-
-
 def _frame(office: Office, stm: ShortTermMemory) -> TaskFrame:
-    answers = tuple(stm.requester_answers())
-    key = (id(office), stm.requester, stm.text, answers)
-    frame = _FRAMES.get(key)
-    if frame is None:
-        # The reader (and lemminflect's tables under it) is imported on the first check that
-        # needs it, not with the runtime: a third of a service's start otherwise. Its parser
-        # is the reasoner's, built by the service's warm-up thread, not here on the loop.
-        from assistantx.agents.symbolic.reading.parser import shared_parser
+    # The reader (and lemminflect's tables under it) is imported on the first check that
+    # needs it, not with the runtime: a third of a service's start otherwise. Its parser is
+    # the reasoner's, built by the service's warm-up thread, and remembers what it read.
+    from assistantx.agents.symbolic.reading.parser import shared_parser
 
-        frame = shared_parser(office).parse_with_answers(stm.text, stm.requester, list(answers))
-        if len(_FRAMES) >= _FRAMES_KEPT:
-            _FRAMES.pop(next(iter(_FRAMES)))
-        _FRAMES[key] = frame
-    return frame
+    answers = list(stm.requester_answers())
+    return shared_parser(office).parse_with_answers(stm.text, stm.requester, answers)
 
 
 def _written_by_requester(office: Office, stm: ShortTermMemory) -> set[str]:

@@ -63,3 +63,18 @@ def test_the_office_readers_share_one_parser_rebuilt_when_the_kinds_change() -> 
         assert "endorse" in rebuilt.lex.cue_words and "endorse" not in shared.lex.cue_words
     finally:
         task_kinds.remove(approve.id)
+
+
+def test_the_shared_parser_remembers_what_it_read_and_reads_it_alike() -> None:
+    office = load_office(HARBOUR)
+    shared = shared_parser(office)
+    text = "print the flyer for the Grace period talk"
+    asked = shared.parse_with_answers(text, "may", [])
+    assert shared.parse_with_answers(text, "may", []) is asked  # not read again
+    settled = shared.parse_with_answers(text, "may", ["Grace Huang"])
+    assert settled is not asked and [t.recipient for t in settled.tasks] == ["grace"]
+    fresh = InstructionParser(office)  # a parser of its own reads afresh each time
+    assert fresh.parse_with_answers(text, "may", []) == asked
+    assert fresh.parse_with_answers(text, "may", []) is not fresh.parse_with_answers(
+        text, "may", []
+    )
