@@ -12,8 +12,9 @@ machine (an open-ended "until every instruction ends" ran for over 11 minutes at
 the 2-core machine, since POSTs kept adding work for the one robot). Reports p50/p99 idle,
 in the burst and under load, throughput, whole instructions and the outcomes per kind, and
 the service's loop-lag gauge, sampled every second during the load (its maximum is the
-longest stall of the loop); writes ``service_load.png`` (``--out``). The robot is one body,
-so instructions queue for it; whole-instruction latency includes that.
+longest stall of the loop), and the service's CPU per call and per trace event (those the
+follower received) in the burst and the load; writes ``service_load.png`` (``--out``).
+The robot is one body, so instructions queue for it; whole-instruction latency includes that.
 
     python bench/service_load.py [--n 200] [--load-s 60] [--drain-s 90] [--speedup 1000]
         [--robot navigator|sim] [--localize | --no-localize] [--out DIR]
@@ -87,7 +88,11 @@ class _CpuMeter:
 
     @staticmethod
     def phase(
-        name: str, before: tuple[float, float, float] | None, after: object, calls: int
+        name: str,
+        before: tuple[float, float, float] | None,
+        after: object,
+        calls: int,
+        events: int,
     ) -> dict[str, object]:
         if before is None or not isinstance(after, tuple):
             return {}
@@ -95,6 +100,8 @@ class _CpuMeter:
         return {
             f"{name}_service_cpu_s": round(cpu, 2),
             f"{name}_service_cpu_ms_per_call": round(1000 * cpu / max(calls, 1), 2),
+            f"{name}_events": events,  # journaled trace events the follower received
+            f"{name}_service_cpu_ms_per_event": round(1000 * cpu / events, 2) if events else None,
             f"{name}_loop_thread_on_cpu_s": round(on_cpu, 2),
             f"{name}_loop_thread_runqueue_wait_s": round(waiting, 2),
             f"{name}_load_avg_1min": round(os.getloadavg()[0], 2),
@@ -144,7 +151,10 @@ async def _wait_ready(url: str) -> None:
     raise RuntimeError("server did not become ready")
 
 
-async def _follow(url: str, ended: dict[str, float], outcomes: dict[str, str]) -> None:
+async def _follow(
+    url: str, ended: dict[str, float], outcomes: dict[str, str], seen: list[int]
+) -> None:
+    """Follows every event; ``seen[0]``: how many so far (the service's CPU per event)."""
     last = 0
     async with httpx.AsyncClient(timeout=None) as client:
         while True:  # a listener that falls behind is dropped: reconnect with Last-Event-ID
@@ -157,6 +167,7 @@ async def _follow(url: str, ended: dict[str, float], outcomes: dict[str, str]) -
                     if not line.startswith("data: "):
                         continue
                     event = json.loads(line[6:])
+                    seen[0] += 1
                     if event["kind"] == "instruction_ended":
                         ended[event["instruction_id"]] = time.perf_counter()
                         outcomes[event["instruction_id"]] = str(event["data"].get("outcome"))
@@ -237,7 +248,8 @@ async def _run(
 ) -> dict[str, object]:
     ended: dict[str, float] = {}
     outcomes: dict[str, str] = {}
-    follower = asyncio.create_task(_follow(url, ended, outcomes))
+    seen = [0]
+    follower = asyncio.create_task(_follow(url, ended, outcomes, seen))
     await asyncio.sleep(0.3)
     # Pooled connections are dropped before uvicorn's 5 s keep-alive closes them: one reused
     # just as the server closed it failed the burst with a ReadError.
@@ -285,16 +297,16 @@ async def _run(
         probe = asyncio.create_task(_probe(client, submitted, samples, stop_probe))
         watch = asyncio.create_task(_watch_lag(client, lags, stop_probe))
         t_start = time.perf_counter()
-        cpu_burst = meter.read()
+        cpu_burst, seen_burst = meter.read(), seen[0]
         posts += await asyncio.gather(*(submit(i) for i in range(n)))
         t_submitted = time.perf_counter()
-        cpu_load = meter.read()
+        cpu_load, seen_load = meter.read(), seen[0]
         during: list[float] = []
         poster = asyncio.create_task(_post_under_load(submit, during, stop_probe))
         await asyncio.sleep(load_s)  # the fixed load phase: the probes and POSTs run meanwhile
         stop_probe.set()
         await asyncio.gather(probe, poster, watch)
-        cpu_end = meter.read()
+        cpu_end, seen_end = meter.read(), seen[0]
         drained = await _ended_within(submitted, ended, drain_s)
         t_done = time.perf_counter()
         unfinished = sorted(set(submitted) - set(ended))
@@ -343,9 +355,9 @@ async def _run(
         "drained": drained,
         "cancelled_after_drain": len(unfinished),
     }
-    figures |= _CpuMeter.phase("burst", cpu_burst, cpu_load, n)
+    figures |= _CpuMeter.phase("burst", cpu_burst, cpu_load, n, seen_load - seen_burst)
     load_calls = len(during) + sum(len(timed) for timed in samples.values())
-    figures |= _CpuMeter.phase("load", cpu_load, cpu_end, load_calls)
+    figures |= _CpuMeter.phase("load", cpu_load, cpu_end, load_calls, seen_end - seen_load)
     for name, timed in samples.items():
         took = [seconds for _, seconds in timed]
         figures[f"{name}_n"] = len(took)
@@ -459,7 +471,9 @@ def main() -> None:
         if f"{phase}_service_cpu_s" in figures:
             print(
                 f"{phase}: service CPU {figures[f'{phase}_service_cpu_s']} s "
-                f"({figures[f'{phase}_service_cpu_ms_per_call']} ms a call); its loop thread "
+                f"({figures[f'{phase}_service_cpu_ms_per_call']} ms a call, "
+                f"{figures[f'{phase}_service_cpu_ms_per_event']} ms an event of "
+                f"{figures[f'{phase}_events']}); its loop thread "
                 f"on a CPU {figures[f'{phase}_loop_thread_on_cpu_s']} s, waiting for one "
                 f"{figures[f'{phase}_loop_thread_runqueue_wait_s']} s; load average "
                 f"{figures[f'{phase}_load_avg_1min']}"

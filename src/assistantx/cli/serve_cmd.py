@@ -53,6 +53,7 @@ def _serve(args: argparse.Namespace) -> int:
 def _serve_collector_off(args: argparse.Namespace) -> int:
     from assistantx.nav import disk_cache
     from assistantx.service.app import create_app
+    from assistantx.service.collector import SurvivorFreezer
     from assistantx.service.datalock import DataDirBusyError, DataDirLock
     from assistantx.service.offices.deployment import DeploymentError, load_deployment
     from assistantx.service.runtime import MAP_CACHE_DIR
@@ -83,6 +84,9 @@ def _serve_collector_off(args: argparse.Namespace) -> int:
         # do the collections of the interpreter's exit, which took about a CPU-second of
         # every stop (perf: two thirds of the stop in gc_collect_main).
         gc.freeze()
+        # From now on what survives a full collection is frozen too, so a full collection
+        # walks what came since the last one, not every running instruction's memory.
+        SurvivorFreezer().install()
         gc.enable()  # off since _serve began
         print(f"AssistantX is serving on http://{shown}:{port}/", flush=True)
         print(f"  API docs: http://{shown}:{port}/docs", flush=True)

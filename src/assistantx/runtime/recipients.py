@@ -30,9 +30,7 @@ clipboard is for Rich" as giving it to May must not make May a party).
 from __future__ import annotations
 
 import re
-import weakref
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core import english, language
@@ -40,9 +38,6 @@ from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
-
-if TYPE_CHECKING:
-    from assistantx.agents.symbolic.reading.parser import InstructionParser
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
 _AT_PLACE = frozenset({"on", "at", "to", "onto", "in", "into"})
@@ -240,29 +235,14 @@ def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
     return found
 
 
-# One parser per office (building one reads the whole office), and the frames it read.
-_PARSERS: weakref.WeakKeyDictionary[Office, InstructionParser] = weakref.WeakKeyDictionary()
-_FRAMES: dict[tuple[int, str, str, tuple[str, ...]], TaskFrame] = {}
-_FRAMES_KEPT = 256
-
-
 def _frame(office: Office, stm: ShortTermMemory) -> TaskFrame:
-    answers = tuple(stm.requester_answers())
-    key = (id(office), stm.requester, stm.text, answers)
-    frame = _FRAMES.get(key)
-    if frame is None:
-        parser = _PARSERS.get(office)
-        if parser is None:
-            # The reader (and lemminflect's tables under it) is imported on the first check
-            # that needs it, not with the runtime: a third of a service's start otherwise.
-            from assistantx.agents.symbolic.reading.parser import InstructionParser
+    # The reader (and lemminflect's tables under it) is imported on the first check that
+    # needs it, not with the runtime: a third of a service's start otherwise. Its parser is
+    # the reasoner's, built by the service's warm-up thread, and remembers what it read.
+    from assistantx.agents.symbolic.reading.parser import shared_parser
 
-            parser = _PARSERS[office] = InstructionParser(office)
-        frame = parser.parse_with_answers(stm.text, stm.requester, list(answers))
-        if len(_FRAMES) >= _FRAMES_KEPT:
-            _FRAMES.pop(next(iter(_FRAMES)))
-        _FRAMES[key] = frame
-    return frame
+    answers = list(stm.requester_answers())
+    return shared_parser(office).parse_with_answers(stm.text, stm.requester, answers)
 
 
 def _written_by_requester(office: Office, stm: ShortTermMemory) -> set[str]:

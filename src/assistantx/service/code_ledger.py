@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Iterable
+from concurrent.futures import Future
 from typing import Any, Literal, cast
 
 from assistantx.core.clock import Clock
@@ -108,7 +109,10 @@ class CodeLedger:
 
     def on_lock_event(self, event: LockEvent) -> None:
         """A ``Locker.listen`` listener: journal a scan or a closed door before anyone acts on
-        it (synchronously: the event reaches the instructions after this returns)."""
+        it. The write is queued before the event reaches the instructions (after this returns)
+        and not waited for: whatever they do about it is journaled after it, in the journal's
+        order, so a crash never keeps their records without this one. (Waiting for the commit
+        here held the event loop on the writer: the longest of its stalls under load.)"""
         if event.code_id is None or event.kind not in ("code_accepted", "door_closed"):
             return
         state: Ended = "scanned" if event.kind == "code_accepted" else "used"
@@ -117,7 +121,7 @@ class CodeLedger:
         states = {LEDGER_STATE: self._body()}
         if self.world_state is not None:
             states.update(self.world_state())
-        self._journal.put_states(states)
+        self._journal.queue_states(states).add_done_callback(_log_failure)
 
     def _note(self, code_ids: Iterable[str], state: Ended) -> bool:
         until = self._clock.now() + self._lifetime_s
@@ -138,3 +142,9 @@ class CodeLedger:
             "codes": {c: [s, until] for c, (s, until) in self._ended.items()},
             "minted": {k: [c, until] for k, (c, until) in self._minted.items()},
         }
+
+
+def _log_failure(written: Future[None]) -> None:
+    error = written.exception()
+    if error is not None:  # the next start settles the code with the lock (code_recovery)
+        logger.error("a lock event was not journaled: %s", error)

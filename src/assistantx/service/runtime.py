@@ -509,9 +509,10 @@ class ServiceRuntime:
             name = self.office.person(person).name
             raise TooManyRequestsError(refusal_text(name, self.rate.per_minute, wait_s))
         instruction_id = new_instruction_id()
-        record = await self.journal.acreate_instruction(
-            instruction_id, person, text, self.clock.now()
-        )
+        with self.admission.arriving():  # no instruction starts meanwhile
+            record = await self.journal.acreate_instruction(
+                instruction_id, person, text, self.clock.now()
+            )
         self.admission.admit(record)
         return record
 

@@ -110,3 +110,16 @@ async def test_a_writer_cancelled_while_waiting_does_not_stop_the_journal(
     await asyncio.wait_for(journal.arecord(_event(2)), 10)  # a guard against a hang only
     assert [r.event.step for r in journal.events()] == [1, 2]
     journal.close()
+
+
+async def test_queued_states_are_ordered_before_every_later_write(
+    open_journal: OpenJournal,
+) -> None:
+    journal = open_journal()
+    written = journal.queue_states({"lock_codes": {"codes": {"c1": ["scanned", 9.0]}}})
+    assert not written.done()  # returned without waiting for the writer
+    # What acts on the event journals after it: once that is committed, so is the state.
+    await journal.arecord(_event(1))
+    assert written.done() and written.exception() is None
+    assert journal.state("lock_codes") == {"codes": {"c1": ["scanned", 9.0]}}
+    journal.close()

@@ -20,7 +20,7 @@ from assistantx.agents.symbolic.decision import Decider
 from assistantx.agents.symbolic.evidence import Evidence, gather
 from assistantx.agents.symbolic.perception import perceive
 from assistantx.agents.symbolic.planning import Agenda, Planner
-from assistantx.agents.symbolic.reading.parser import InstructionParser, TaskFrame
+from assistantx.agents.symbolic.reading.parser import InstructionParser, TaskFrame, shared_parser
 from assistantx.agents.symbolic.reflection import Reflector
 from assistantx.agents.symbolic.roles import Roles
 from assistantx.core import language
@@ -212,9 +212,10 @@ def _record(ctx: AgentContext, agent: str, started: float) -> None:
 
 
 def build_factory(office: Office, settings: object) -> Callable[[], Reasoner]:
-    """A factory making one SymbolicReasoner per instruction (the parser is shared)."""
+    """A factory making one SymbolicReasoner per instruction (the parser is shared, also
+    with the runtime's consent check and request recognizer: ``shared_parser``)."""
     del settings  # nothing to configure: no model, no network
-    parser = InstructionParser(office)
+    parser = shared_parser(office)
     # Built in the service's warm-up thread: the reader's tables load there, not at the
     # first instruction, on the loop.
     language.load_tables()

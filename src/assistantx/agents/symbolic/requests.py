@@ -17,8 +17,7 @@ from __future__ import annotations
 
 import re
 
-from assistantx.agents.symbolic.reading.lexicon import Lexicon
-from assistantx.agents.symbolic.reading.parser import NOT_UNDERSTOOD, InstructionParser
+from assistantx.agents.symbolic.reading.parser import NOT_UNDERSTOOD, shared_parser
 from assistantx.agents.symbolic.reading.screen import UNANSWERED
 from assistantx.core import english
 from assistantx.core.office import Office
@@ -37,8 +36,8 @@ class RequestRecognizer:
     """``recognizer(text, sender, strict=...)``: True when ``text`` is a request."""
 
     def __init__(self, office: Office) -> None:
-        self._parser = InstructionParser(office)
-        self._lex = Lexicon.from_office(office)
+        self._parser = shared_parser(office)  # the reasoner's: no second lexicon to build
+        self._lex = self._parser.lex
 
     def __call__(self, text: str, sender: str, *, strict: bool) -> bool:
         if self.explicit(text):

@@ -13,7 +13,9 @@ journal's order is the order of the events they record. Code on the event loop a
 write (``arecord``, ``acheckpoint``, ``acreate_instruction``, ``arecord_outbound``, ``awrite``)
 so the loop serves others meanwhile and the caller continues only once its write is
 committed; the plain methods block their thread until committed (operator, start-up and CLI
-writes). Reads use a second connection on the caller's thread; WAL lets them run beside the
+writes). ``queue_states`` neither waits nor blocks (reads see it once committed): a record the
+loop must make before anyone acts on an event, where acting journals too (ordered after it).
+Reads use a second connection on the caller's thread; WAL lets them run beside the
 writer, and they see every write whose call has returned.
 
 On PostgreSQL the same holds: the writer is a ``PostgresStore`` (the same thread and group
@@ -29,6 +31,7 @@ import logging
 import sqlite3
 import time
 from collections.abc import Callable, Iterator
+from concurrent.futures import Future
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -487,6 +490,14 @@ class Journal:
         """Several state rows in one transaction (all of them or none survive a crash)."""
         rows = [(name, json.dumps(body)) for name, body in states.items()]
         self.write(_put_states(rows))
+
+    def queue_states(self, states: dict[str, dict[str, Any]]) -> Future[None]:
+        """``put_states`` queued behind every write submitted before it and ahead of every
+        write after it, without waiting for its commit: a crash before that commit loses every
+        later write too, so the journal never holds what came after without it. The future
+        says whether it was committed (the caller logs a failure)."""
+        rows = [(name, json.dumps(body)) for name, body in states.items()]
+        return self.writer.submit(self._fenced(_put_states(rows)))
 
     async def aput_states(self, states: dict[str, dict[str, Any]]) -> None:
         rows = [(name, json.dumps(body)) for name, body in states.items()]

@@ -5,8 +5,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from assistantx.agents.symbolic.reading.parser import InstructionParser
+from assistantx.agents.symbolic.reading.parser import InstructionParser, shared_parser
+from assistantx.agents.symbolic.requests import RequestRecognizer
+from assistantx.core import task_kinds
 from assistantx.core.office import load_office
+from assistantx.core.task_kinds import KindSpec, Step
 
 HARBOUR = Path(__file__).resolve().parents[4] / "dataset" / "offices" / "harbour" / "office.yaml"
 
@@ -26,3 +29,52 @@ def test_an_answer_settles_a_reading_without_changing_the_parser() -> None:
     assert [t.recipient for t in settled.tasks] == ["grace"]
     assert p.lex.chosen == {}
     assert p.parse(text, "may").question is not None  # the next request is read afresh
+
+
+def test_the_office_readers_share_one_parser_rebuilt_when_the_kinds_change() -> None:
+    office, other = load_office(), load_office(HARBOUR)
+    shared = shared_parser(office)
+    assert shared_parser(office) is shared
+    assert shared_parser(other) is not shared
+    assert RequestRecognizer(office)._parser is shared  # the service's request check
+    approve = KindSpec(
+        id="approve_shared",
+        parts=("approve_shared",),
+        milestone="approved_shared",
+        by_person=True,
+        works_on="signable",
+        ask="approve {whose}",
+        purpose="approve_shared",
+        doer="approver",
+        steps=(
+            Step("source", "deposit"),
+            Step("doer", "approve_shared"),
+            Step("recipient", "collect"),
+        ),
+        locker="take {item} out, approve it and put it back",
+        todo="get {whose} approved by {by}",
+        done="{whose} was approved by {by} and handed to {to}",
+        words=("endorse",),
+    )
+    task_kinds.add(approve)
+    try:
+        rebuilt = shared_parser(office)  # reads the new kind's words
+        assert rebuilt is not shared
+        assert "endorse" in rebuilt.lex.cue_words and "endorse" not in shared.lex.cue_words
+    finally:
+        task_kinds.remove(approve.id)
+
+
+def test_the_shared_parser_remembers_what_it_read_and_reads_it_alike() -> None:
+    office = load_office(HARBOUR)
+    shared = shared_parser(office)
+    text = "print the flyer for the Grace period talk"
+    asked = shared.parse_with_answers(text, "may", [])
+    assert shared.parse_with_answers(text, "may", []) is asked  # not read again
+    settled = shared.parse_with_answers(text, "may", ["Grace Huang"])
+    assert settled is not asked and [t.recipient for t in settled.tasks] == ["grace"]
+    fresh = InstructionParser(office)  # a parser of its own reads afresh each time
+    assert fresh.parse_with_answers(text, "may", []) == asked
+    assert fresh.parse_with_answers(text, "may", []) is not fresh.parse_with_answers(
+        text, "may", []
+    )

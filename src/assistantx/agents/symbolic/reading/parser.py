@@ -44,6 +44,9 @@ from __future__ import annotations
 import copy
 import dataclasses
 import re
+import threading
+import weakref
+from collections import OrderedDict
 
 from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.reading.frames import (
@@ -63,7 +66,7 @@ from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, Mentio
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.unknown_items import unknown_item
-from assistantx.core import language
+from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
 
@@ -72,7 +75,42 @@ _INSIDE_WORDS = frozenset(
     {"bring", "hand", "give", "take", "deliver", "desk", "him", "her", "them", "here", "inside"}
 )
 
-__all__ = ["NOT_UNDERSTOOD", "InstructionParser", "Task", "TaskFrame", "TaskKind"]
+__all__ = [
+    "NOT_UNDERSTOOD",
+    "InstructionParser",
+    "Task",
+    "TaskFrame",
+    "TaskKind",
+    "shared_parser",
+]
+
+
+# One parser per office for the reasoner, the consent check and the request recognizer:
+# building one reads the office into a lexicon (a tenth to a third of a CPU-second), and each
+# built its own, the last two on the event loop at their first use (48 and 129 ms under
+# load). Rebuilt when the task kinds' table changed since (``task_kinds.add``).
+_SHARED: weakref.WeakKeyDictionary[
+    Office, tuple[tuple[task_kinds.KindSpec, ...], InstructionParser]
+] = weakref.WeakKeyDictionary()
+_SHARED_LOCK = threading.Lock()  # the service's warm-up thread builds it; the loop may wait
+
+
+FRAMES_KEPT = 256  # the shared parser's latest frames, remembered
+
+
+def shared_parser(office: Office) -> InstructionParser:
+    """The parser of ``office`` its readers share (parsing changes nothing in it). It also
+    remembers its latest ``FRAMES_KEPT`` frames (``parse_with_answers``): the reasoner and
+    the consent check read the same request alike, and a request said again (by anyone, in
+    the same words) is not read again; the frames are shared, so nobody changes one."""
+    kinds = task_kinds.kinds()
+    with _SHARED_LOCK:
+        kept = _SHARED.get(office)
+        if kept is None or kept[0] != kinds:
+            parser = InstructionParser(office)
+            parser._remembered = OrderedDict()
+            kept = _SHARED[office] = (kinds, parser)
+        return kept[1]
 
 
 class InstructionParser:
@@ -85,6 +123,8 @@ class InstructionParser:
         self.readings = MentionReader(office, self.lex)
         self.frames = FrameReader(office)
         self.operations = OperationChooser(office)
+        # The frames read, by (text, requester, answers): the shared parser's only.
+        self._remembered: OrderedDict[tuple[str, str, tuple[str, ...]], TaskFrame] | None = None
 
     # -- public --------------------------------------------------------------------------
     def parse(
@@ -121,6 +161,20 @@ class InstructionParser:
         return frame
 
     def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
+        remembered = self._remembered
+        if remembered is None:
+            return self._parse_with_answers(text, requester, answers)
+        key = (text, requester, tuple(answers))
+        frame = remembered.get(key)
+        if frame is None:
+            frame = remembered[key] = self._parse_with_answers(text, requester, answers)
+            if len(remembered) > FRAMES_KEPT:
+                remembered.popitem(last=False)
+        else:
+            remembered.move_to_end(key)
+        return frame
+
+    def _parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
         """Re-parse after clarifying answers: a yes or no to "Shall I ...?", the reading the
         answer chose, else the original with the answers; the answer alone only when the
         question asked for the whole request. A reply answers the question asked: it never
@@ -206,6 +260,7 @@ class InstructionParser:
         """The same stages, with a lexicon that reads the name words the requester was asked
         about as they answered (nothing of this parser changes)."""
         other = copy.copy(self)
+        other._remembered = None  # reads differently: remembers nothing of its own
         other.lex = dataclasses.replace(self.lex, chosen=chosen)
         other.screen = RequestScreen(self.office, other.lex)
         other.readings = MentionReader(self.office, other.lex)
