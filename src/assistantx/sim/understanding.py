@@ -36,7 +36,9 @@ def request_words(office: Office) -> dict[str, tuple[str, ...]]:
     for op in office.operations:
         if not office.runnable(op.id):
             continue
-        found = [normalize(v) for v in (*op.verbs, op.name)]
+        # its verbs, not its display name: "print spine labels" names a label run whose
+        # verb is "label"; its "print" is the printer's (Operation.request_phrases)
+        found = [normalize(v) for v in op.request_phrases]
         if op.product is not None:
             product = office.item_type(op.product)
             found += [normalize(n) for n in (product.name, *product.synonyms)]

@@ -28,10 +28,13 @@ class OperationChooser:
 
     def __init__(self, office: Office) -> None:
         self.office = office
+        # an operation is asked for by its verbs; its display name is a label ("print spine
+        # labels" names the label run, its "print" is the printer's verb), read as a verb
+        # only where the office declares none
         self._op_words = {
             op.id: {
                 form
-                for phrase in (*op.verbs, op.name)
+                for phrase in op.request_phrases
                 for verb in normalize(phrase).split()[:1]
                 for form in inflections(verb)
             }
