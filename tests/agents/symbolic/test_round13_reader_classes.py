@@ -13,6 +13,7 @@ import pytest
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import TaskFrame
+from assistantx.sim.understanding import mentioned_requests
 from helpers.archive import archive
 
 
@@ -63,3 +64,73 @@ def test_both_operations_said_are_both_done() -> None:
     """Near-miss: the printer's verb and the label run's own verb, each said, are two tasks."""
     frame = _frame("print my box list, and tag it too")
     assert [t.operation for t in frame.tasks] == ["print", "tag"]
+
+
+# -- 2. a named product chooses its operation over a generic making verb -------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("print box labels from my box list and take them to Priya", "priya"),
+        ("could you print me some box labels from my document", "ines"),
+        ("get some box labels printed from my box list", "ines"),
+    ],
+)
+def test_a_product_named_after_print_is_made_by_its_own_operation(
+    text: str, recipient: str
+) -> None:
+    """The file goes to a keeper of the facility that offers the label run, not to the
+    ordinary printer's keeper."""
+    assert _tasks(_frame(text)) == [("print", "doc_file", "tag", recipient)]
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("get me a new visitor pass printed", "ines"),
+        ("print me a visitor pass", "ines"),
+        ("could you print a visitor pass for Priya", "priya"),
+    ],
+)
+def test_a_made_thing_printed_is_made_by_the_press_that_makes_it(text: str, recipient: str) -> None:
+    """A product made from nothing ("a visitor pass") is no file to print: it is made."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("produce", "pass_card", recipient)
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "operation"),
+    [
+        ("print my box list and take the printout to Priya", "print"),
+        ("print my document", "print"),
+    ],
+)
+def test_a_plain_print_stays_the_printers(text: str, operation: str) -> None:
+    assert [t.operation for t in _frame(text).tasks] == [operation]
+
+
+def test_a_made_thing_beside_a_file_is_still_asked_about() -> None:
+    """Near-miss: "print my document and a visitor pass" is not read as either alone."""
+    frame = _frame("print my document and a visitor pass")
+    assert frame.tasks == [] and frame.question is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "asked"),
+    [
+        ("Can you print box labels?", ["tag"]),
+        ("Could you print box labels Ines Varga's document file at the tag printer?", ["tag"]),
+        ("can you print me a visitor pass?", ["badge"]),
+        ("can you get a visitor pass printed?", ["badge"]),
+        ("could you print Ines's document?", ["print"]),
+        ("could you tag my box list?", ["tag"]),
+    ],
+)
+def test_a_colleague_reads_the_operation_from_the_product(text: str, asked: list[str]) -> None:
+    """The simulated colleague answers from the office's operation table: the label run is
+    asked for by its product, so only its guards say yes."""
+    assert mentioned_requests(archive(), text) == asked

@@ -320,7 +320,12 @@ KIND_RULES: tuple[KindRule, ...] = (
         lambda s: "heat" in s.cues and not s.products,
         _heat,
     ),
-    KindRule("printing the requester's file", lambda s: "print" in s.cues, _print),
+    KindRule(
+        "printing the requester's file, unless the object is a thing the office makes from "
+        "nothing ('get me a visitor pass printed': the pass's own operation makes it)",
+        lambda s: "print" in s.cues and not (s.products and not s.files and not s.personal),
+        _print,
+    ),
     KindRule(
         "copying a document (not a file)",
         lambda s: "copy" in s.cues and s.doc is not None and not s.files,
