@@ -134,3 +134,73 @@ def test_a_colleague_reads_the_operation_from_the_product(text: str, asked: list
     """The simulated colleague answers from the office's operation table: the label run is
     asked for by its product, so only its guards say yes."""
     assert mentioned_requests(archive(), text) == asked
+
+
+# -- 3. electronic products, and a facility as the doer --------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("Please scan my glass slide on the reel reader and send me the PDF.", "ines"),
+        ("scan my slide and send me the PDF", "ines"),
+        ("scan my slide. PDF to me is fine.", "ines"),
+        ("scan my slide and email it to me", "ines"),
+    ],
+)
+def test_the_file_a_scan_makes_goes_to_whom_it_is_sent(text: str, recipient: str) -> None:
+    """ "send me the PDF" after a scan names who gets the scan's file; it is no forwarding
+    of the requester's own file to themselves (asked "Who should I pass your file on to?")."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("copy", "slide", recipient)]
+
+
+def test_an_owned_file_named_after_a_scan_is_still_a_file_of_its_own() -> None:
+    """Near-miss: "send Priya my PDF" names the requester's own file, a second task."""
+    frame = _frame("scan my slide and send Priya my PDF")
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [
+        ("copy", "ines"),
+        ("send_file", "priya"),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "item"),
+    [
+        ("Could the reel reader do my slide? PDF to me is fine.", "copy", "slide"),
+        ("can the reel reader take my glass slide please", "copy", "slide"),
+        ("could the mounting press handle my chart?", "heat", "chart"),
+    ],
+)
+def test_a_facility_as_the_doer_asks_for_its_operation(text: str, kind: str, item: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.item, t.owner) for t in frame.tasks] == [(kind, item, "ines")]
+
+
+@pytest.mark.parametrize(
+    "text", ["Can the reel reader do slides?", "can the reel reader take a slide?"]
+)
+def test_what_a_facility_can_do_in_general_moves_nothing(text: str) -> None:
+    """Near-miss: nobody's item ("slides") is a question about the machine, not work."""
+    assert _frame(text).tasks == []
+
+
+@pytest.mark.parametrize("answer", ["Me.", "to me", "me please", "myself"])
+def test_me_to_a_who_question_is_the_requester(answer: str) -> None:
+    frame = _parser().parse_with_answers("send the box list", "ines", [answer])
+    assert [(t.kind, t.owner, t.recipient) for t in frame.tasks] == [("send_file", "ines", "ines")]
+    frame = _parser().parse_with_answers("bring my tape gun", "ines", [answer])
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("transfer", "ines")]
+
+
+@pytest.mark.parametrize(("answer", "to"), [("Priya", "priya"), ("Priya, not me", "priya")])
+def test_another_name_to_a_who_question_is_that_person(answer: str, to: str) -> None:
+    frame = _parser().parse_with_answers("send the box list", "ines", [answer])
+    assert [t.recipient for t in frame.tasks] == [to]
+
+
+def test_not_me_leaves_the_who_question_open() -> None:
+    frame = _parser().parse_with_answers("send the box list", "ines", ["not me"])
+    assert frame.tasks == [] and frame.question is not None
