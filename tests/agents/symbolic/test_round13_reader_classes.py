@@ -10,11 +10,13 @@ from __future__ import annotations
 import functools
 
 import pytest
+from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import Office, parse_office
 from assistantx.core.task_schema import TaskFrame
 from assistantx.sim.understanding import mentioned_requests
-from helpers.archive import archive
+from helpers.archive import archive, raw_archive
 
 
 @functools.cache
@@ -204,3 +206,33 @@ def test_another_name_to_a_who_question_is_that_person(answer: str, to: str) -> 
 def test_not_me_leaves_the_who_question_open() -> None:
     frame = _parser().parse_with_answers("send the box list", "ines", ["not me"])
     assert frame.tasks == [] and frame.question is not None
+
+
+# -- 4. the recipient is also the operation's keeper -------------------------------------------
+
+
+def _only_guard(guard: str) -> Office:
+    raw = raw_archive()
+    for f in raw["facilities"]:
+        if f["id"] == "mount_press":
+            f["guards"] = [guard]
+    return parse_office(raw, "archive-one-guard")
+
+
+@pytest.mark.parametrize("office", [archive(), _only_guard("oskar")])
+async def test_the_operation_is_done_before_its_keeper_gets_the_item(office: Office) -> None:
+    """ "mount my chart and then take it over to Oskar", Oskar a guard of the mounting
+    press: the mount code is used at the press before the chart is handed to him."""
+    run = await run_instruction(office, "ines", "mount my chart and then take it over to Oskar")
+    codes = [
+        (r.action.contact, r.action.purpose, r.action.operation)
+        for r in run.stm.trace.actions()
+        if r.action.type == "send_qr" and not r.refused
+    ]
+    assert codes == [
+        ("ines", "deposit", None),
+        ("oskar", "heat", "mount"),
+        ("oskar", "collect", None),
+    ]
+    assert "chart:ines" in run.sim.world.heated
+    assert run.stm.trace.outcome == "done"
