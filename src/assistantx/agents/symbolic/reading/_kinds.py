@@ -560,15 +560,19 @@ class TaskReader:
         return self.makes_file(previous)
 
     def makes_file(self, task: Task) -> bool:
-        """Whether ``task`` (its operation, or one of its kind on its item) makes an
-        electronic file ("digitise" a reel into a scan), which is then sent, not carried."""
-        return any(
-            o.input == task.item
-            and o.product is not None
-            and self.kinds[o.product] == "electronic"
+        """Whether ``task`` (its operation, else every operation of its kind on its item)
+        makes an electronic file ("digitise" a reel into a scan), which is then sent, not
+        carried. Where a paper copy could also be meant ("copy my contract and send the
+        file to Wang"), "the file" is not read as the product: the old reading stands."""
+        runs = [
+            o
+            for o in self.office.operations
+            if o.input == task.item
             and SHAPE_KIND.get(o.shape(self.office)) == task.kind
             and task.operation in (None, o.id)
-            for o in self.office.operations
+        ]
+        return bool(runs) and all(
+            o.product is not None and self.kinds[o.product] == "electronic" for o in runs
         )
 
     def _each_product(self, s: Scene) -> list[Task]:
