@@ -236,3 +236,26 @@ async def test_the_operation_is_done_before_its_keeper_gets_the_item(office: Off
     ]
     assert "chart:ines" in run.sim.world.heated
     assert run.stm.trace.outcome == "done"
+
+
+# -- the file goes only to a keeper of the facility that runs the operation asked for -------
+
+
+@pytest.mark.parametrize(
+    ("text", "keepers"),
+    [
+        ("print box labels from my box list and take them to Priya", {"mira", "oskar"}),
+        ("print my document file, and also bring me a step ladder", {"jonas"}),
+    ],
+)
+async def test_the_file_goes_only_to_the_asked_operations_keepers(
+    text: str, keepers: set[str]
+) -> None:
+    run = await run_instruction(archive(), "ines", text)
+    sent_to = {
+        r.action.target
+        for r in run.stm.trace.actions()
+        if r.action.type == "forward_file" and not r.refused
+    }
+    assert len(sent_to) == 1 and sent_to <= keepers, sent_to
+    assert run.stm.trace.outcome == "done"
