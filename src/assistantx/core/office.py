@@ -130,6 +130,13 @@ class Operation(_Model):
     )
 
     @property
+    def request_phrases(self) -> tuple[str, ...]:
+        """The phrases whose first word asks for it: its verbs. Its name is a display label
+        ("print spine labels" may name a label run whose verb is "label"), read as a verb
+        only where the office declares no verbs ("hold a meeting")."""
+        return self.verbs or (self.name,)
+
+    @property
     def returns_item(self) -> bool:
         """Whether the item it works on comes back to be collected (not shredded, not sent
         outside)."""

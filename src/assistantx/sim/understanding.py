@@ -36,7 +36,9 @@ def request_words(office: Office) -> dict[str, tuple[str, ...]]:
     for op in office.operations:
         if not office.runnable(op.id):
             continue
-        found = [normalize(v) for v in (*op.verbs, op.name)]
+        # its verbs, not its display name: "print spine labels" names a label run whose
+        # verb is "label"; its "print" is the printer's (Operation.request_phrases)
+        found = [normalize(v) for v in op.request_phrases]
         if op.product is not None:
             product = office.item_type(op.product)
             found += [normalize(n) for n in (product.name, *product.synonyms)]
@@ -106,6 +108,7 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
     at: dict[str, int] = {}
     words = request_words(office)
     by_person = person_request_words()
+    haystack = _means_left_out(office, words, haystack)
     rest = original  # the office's words are used up as they are read
     for kind in (k for k in words if k not in by_person and k != FILE_KIND):
         for form in (f for w in words[kind] for f in word_forms(w)):
@@ -119,6 +122,32 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
             if f" {form} " in rest:
                 at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
     return sorted(at, key=lambda k: at[k])
+
+
+# The words between a making verb and what it makes: "print *me some new* labels".
+_BETWEEN = r"(?:(?:a|an|the|some|me|us|my|our|your|new|more|extra|fresh|\d+) )*"
+
+
+def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack: str) -> str:
+    """``haystack`` without the verbs that are only the means of making another operation's
+    named product ("print spine labels", "get a staff card printed"): the product says
+    which operation is asked for, as a colleague reads it, not the printer's verb."""
+    for op in office.operations:
+        if op.product is None or op.id not in words:
+            continue
+        product = office.item_type(op.product)
+        names = [normalize(n) for n in (product.name, *product.synonyms) if normalize(n)]
+        for other in office.operations:
+            if other.id == op.id or other.id not in words:
+                continue
+            if op.input is not None and op.shape(office) != other.shape(office):
+                continue  # "print a copy of my file": the copier's product, not its run
+            for verb in (f for w in other.request_phrases for f in word_forms(normalize(w))):
+                for name in names:
+                    noun = rf"{re.escape(name)}(?:s|es)?"
+                    haystack = re.sub(rf" {re.escape(verb)} (?={_BETWEEN}{noun} )", " | ", haystack)
+                    haystack = re.sub(rf" ({noun}) {re.escape(verb)} ", r" \1 | ", haystack)
+    return haystack
 
 
 def possessor(office: Office, text: str, *, reader: str) -> str | None:

@@ -25,6 +25,7 @@ _SEND_WORDS = english.words("send_words")
 _TO_FACILITY = english.words("to_facility_prepositions")
 _FROM_FACILITY = english.words("from_facility_prepositions")
 _THROUGH = english.words("through_prepositions")
+_FACILITY_DOING = english.words("facility_doing_verbs")
 _AT = frozenset({"at", "in", "by", "near"})
 # The words that make a tool the instrument of a service on a paper ("stamped *with* the
 # embosser", "the stamp *on* it"), and the participles that ask for the service itself.
@@ -35,6 +36,8 @@ _PLACE_WORDS = english.words("place_words") | english.words("surface_words")
 _LEAD_IN = english.words("lead_in")
 _COMMON = english.words("common")
 _NEED_WORDS = english.words("need_verbs")
+# The cue kinds that only pass something on ("send me", "get me"), not ask for other work.
+_PASSING_ON = frozenset({"send", "give", FILE_KIND})
 # The task kinds that act on the requester's file.
 FILE_KINDS = frozenset({"print", FILE_KIND})
 
@@ -320,7 +323,12 @@ KIND_RULES: tuple[KindRule, ...] = (
         lambda s: "heat" in s.cues and not s.products,
         _heat,
     ),
-    KindRule("printing the requester's file", lambda s: "print" in s.cues, _print),
+    KindRule(
+        "printing the requester's file, unless the object is a thing the office makes from "
+        "nothing ('get me a visitor pass printed': the pass's own operation makes it)",
+        lambda s: "print" in s.cues and not (s.products and not s.files and not s.personal),
+        _print,
+    ),
     KindRule(
         "copying a document (not a file)",
         lambda s: "copy" in s.cues and s.doc is not None and not s.files,
@@ -445,8 +453,17 @@ class TaskReader:
             ][:1]
         if rendered and any(self.kinds[m.id] == "electronic" for m in items):
             cues.add("print")
+        # "could the reel reader do my slide?": a facility as the doer of its own work
+        doing = self._facility_doing(clause, items, roles)
+        cues |= doing
+        if doing:
+            cues.discard("give")  # its "take" is the machine's work, not a fetch
         # "put my headlamp on the charging shelf": the item goes *to* the facility
-        treat_asked = "heat" in clause.cues or any(word_before(m) in _TO_FACILITY for m in treating)
+        treat_asked = (
+            "heat" in clause.cues
+            or "heat" in doing
+            or any(word_before(m) in _TO_FACILITY for m in treating)
+        )
         items = [m for m in items if m.id not in self.sourced]
         files = [m for m in items if self.kinds[m.id] == "electronic"]
         personal = [m for m in items if self.kinds[m.id] == "personal"]
@@ -483,6 +500,29 @@ class TaskReader:
             self.tool_owners,
         )
 
+    def _facility_doing(self, clause: Clause, items: list[Mention], roles: Roles) -> set[str]:
+        """ "could the reel reader do my slide?", "can the sealer take my chart?": a facility
+        as the subject of a doing verb, with someone's item one of its operations works on,
+        asks for that operation; the cue of its shape's task kind (none: not said so). An
+        item of nobody's ("can the reader do slides?") asks what it can do, not for work."""
+        ms = clause.mentions
+        for a, b in itertools.pairwise(ms):
+            if a.kind != "facility" or b.kind not in ("word", "cue") or b.start != a.end:
+                continue
+            if not language.verb_lemmas(b.text.lower()) & _FACILITY_DOING:
+                continue
+            later = [m for m in items if m.start > b.start and m.start in roles.owners]
+            kinds = {
+                kind
+                for op_id in self.office.facility(a.ids[0]).operations
+                for op in [self.office.operation(op_id)]
+                if any(m.id == op.input for m in later)
+                and (kind := SHAPE_KIND.get(op.shape(self.office))) is not None
+            }
+            if len(kinds) == 1:
+                return kinds
+        return set()
+
     def tasks(
         self, clause: Clause, roles: Roles, requester: str, previous: Task | None
     ) -> list[Task]:
@@ -493,6 +533,8 @@ class TaskReader:
             and any(m.id in self.products_of(previous.kind) for m in clause.objects())
         ):
             return []  # "print my draft and take the printout to Sue": the same task, on
+        if previous is not None and self._sends_made_file(clause, roles, previous):
+            return []  # "scan my reel and send me the PDF": the scan's file, to whom it goes
         s = self.scene(clause, roles, requester, previous)
         each = self._each_product(s)
         if each:
@@ -501,6 +543,37 @@ class TaskReader:
         if rule is not None:
             return [rule.task(s)]
         return self._objects(s)
+
+    def _sends_made_file(self, clause: Clause, roles: Roles, previous: Task) -> bool:
+        """Whether ``clause`` only sends on the electronic file the previous task's operation
+        makes ("scan my reel and send me the PDF", "... PDF to me is fine"): a file named
+        without an owner ("the PDF", never "my PDF"), after work on an item that an operation
+        of the office turns into a file; the clause then says whom the product goes to."""
+        if previous.item is None or set(clause.cues) - _PASSING_ON:
+            return False
+        objects = clause.objects()
+        if not objects or any(
+            self.kinds[m.id] != "electronic" or m.start in roles.owners or roles.source
+            for m in objects
+        ):
+            return False
+        return self.makes_file(previous)
+
+    def makes_file(self, task: Task) -> bool:
+        """Whether ``task`` (its operation, else every operation of its kind on its item)
+        makes an electronic file ("digitise" a reel into a scan), which is then sent, not
+        carried. Where a paper copy could also be meant ("copy my contract and send the
+        file to Wang"), "the file" is not read as the product: the old reading stands."""
+        runs = [
+            o
+            for o in self.office.operations
+            if o.input == task.item
+            and SHAPE_KIND.get(o.shape(self.office)) == task.kind
+            and task.operation in (None, o.id)
+        ]
+        return bool(runs) and all(
+            o.product is not None and self.kinds[o.product] == "electronic" for o in runs
+        )
 
     def _each_product(self, s: Scene) -> list[Task]:
         """ "a copy of my plan for Noor and a PDF for Bill": two products made from one

@@ -62,11 +62,14 @@ class FrameReader:
         requester: str,
         holder: str | None = None,
         named: Sequence[NamedItem] = (),
+        *,
+        to_self: bool = False,
     ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
         who the whole message says has an item now (``holder``), for one given back;
         ``named``: the items the whole message names (``named_items``), for a task whose
-        object was no item word of the office."""
+        object was no item word of the office; ``to_self``: the requester answered "me" to
+        whom their own item or file goes, so it goes to them, not asked again."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -124,7 +127,7 @@ class FrameReader:
         objects = [m for m in objects if m.id not in rejected]
         tasks = [self._given_back(t, holder) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester) for t in tasks]
-        question = self._uncovered(objects, tasks) or self._check(tasks, requester)
+        question = self._uncovered(objects, tasks) or self._check(tasks, requester, to_self)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
         )
@@ -219,6 +222,8 @@ class FrameReader:
             return True
         if task.kind in FILE_KINDS and self.reader.kinds[type_id] in ("electronic", "personal"):
             return True  # "print my report", "email my contract"
+        if self.reader.kinds[type_id] == "electronic" and self.reader.makes_file(task):
+            return True  # "scan my reel and send me the PDF": the file the scan makes
         # the tool a kind's doer uses (the office's sealing tool, whatever its type id)
         return (task.kind, type_id) in {
             ("print", self.reader.printout),
@@ -236,10 +241,12 @@ class FrameReader:
             return f"for me to {' or '.join(dict.fromkeys(names))}"
         return task_kinds.kind(kind).which_item
 
-    def _check(self, tasks: list[Task], requester: str) -> str | None:
+    def _check(self, tasks: list[Task], requester: str, to_self: bool = False) -> str | None:
         if not tasks:
             return NOT_UNDERSTOOD
         for t in tasks:
+            if to_self and t.owner == t.recipient == requester:
+                continue  # "Who should get your reel?" "Me.": it comes to the requester
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:
                 asked = self._asked_to(t.kind)

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.destination import Outside
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
-from assistantx.core import language
+from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
 from assistantx.core.wording import a_thing
@@ -21,6 +21,12 @@ OUT_OR_IN = "Should I send it out by "
 
 # The words before what an item is made into ("print it *as* labels", "*into* a PDF").
 _INTO_PRODUCT = frozenset({"as", "into"})
+# The words between a making verb and what it makes: "print *me some new* labels".
+_BETWEEN_VERB_AND_PRODUCT = english.words("determiners") | {"us", "new", "more", "fresh", "extra"}
+
+
+def _filler(word: str) -> bool:
+    return word in _BETWEEN_VERB_AND_PRODUCT or word.isdigit()
 
 
 class OperationChooser:
@@ -28,10 +34,13 @@ class OperationChooser:
 
     def __init__(self, office: Office) -> None:
         self.office = office
+        # an operation is asked for by its verbs; its display name is a label ("print spine
+        # labels" names the label run, its "print" is the printer's verb), read as a verb
+        # only where the office declares none
         self._op_words = {
             op.id: {
                 form
-                for phrase in (*op.verbs, op.name)
+                for phrase in op.request_phrases
                 for verb in normalize(phrase).split()[:1]
                 for form in inflections(verb)
             }
@@ -73,7 +82,9 @@ class OperationChooser:
                 if u.item == t.item and u.kind in _KIND_SHAPE and u.operation is None
             ]
             place = (peers.index(n), len(peers)) if n in peers else (0, 1)
-            split, which = self._one_of_several(t, in_order, facility_ops, products, place, made)
+            split, which = self._one_of_several(
+                t, lexed, in_order, facility_ops, products, place, made
+            )
             if which is not None:
                 return TaskFrame(requester=frame.requester, question=which)
             named += split
@@ -140,6 +151,7 @@ class OperationChooser:
     def _one_of_several(
         self,
         task: Task,
+        lexed: Lexed,
         words: list[str],
         facility_ops: set[str],
         products: set[str],
@@ -168,6 +180,14 @@ class OperationChooser:
             into[0].shape(self.office)
         }:
             said = into  # "print my file as label sheets": the print verb is only the means
+        # "print spine labels from my list", "get the labels printed": a product named as
+        # the object of a generic verb of one shape is made by its own operation; the verb
+        # (the printer's "print") is only the means
+        objects = [op for op in fits if op.product in self._verb_objects(lexed, said)]
+        if len(objects) == 1 and {op.shape(self.office) for op in [*said, *objects]} == {
+            objects[0].shape(self.office)
+        }:
+            said = objects
         # "scan my contract to PDF", "send my plan to PDF": the product named says which
         said = said or [op for op in fits if op.product in products]
         if len(said) > 1:
@@ -192,6 +212,31 @@ class OperationChooser:
             listed = ", ".join(names[:-1]) + " or " + names[-1]
             return [task], f"Which do you mean: {listed}?"
         return [task], None
+
+    def _verb_objects(self, lexed: Lexed, said: list[Operation]) -> set[str]:
+        """The item types named right after a verb of ``said`` ("print *spine labels*",
+        "print me some labels") or right before its participle ("get the labels
+        *printed*"), with only determiners and quantity words between."""
+        if not said:
+            return set()
+        verbs = {w for op in said for w in self._op_words[op.id]}
+        words = [t.word for t in lexed.tokens]
+        found: set[str] = set()
+        for m in lexed.mentions:
+            if m.kind != "item":
+                continue
+            k = m.start - 1
+            while k >= 0 and _filler(words[k]):
+                k -= 1
+            j = m.end
+            while j < len(words) and _filler(words[j]):
+                j += 1
+            after = words[j] if j < len(words) else ""
+            if (k >= 0 and words[k] in verbs) or (
+                after in verbs and language.is_past_participle(after)
+            ):
+                found.update(m.ids)
+        return found
 
     def _made_into(self, said: list[Operation], words: list[str]) -> list[Operation]:
         """ "print my file *as labels*", "run it off *into* label sheets": of several

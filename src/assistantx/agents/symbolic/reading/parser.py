@@ -128,21 +128,30 @@ class InstructionParser:
 
     # -- public --------------------------------------------------------------------------
     def parse(
-        self, text: str, requester: str, *, confirmed: bool = False, sent_out: bool = False
+        self,
+        text: str,
+        requester: str,
+        *,
+        confirmed: bool = False,
+        sent_out: bool = False,
+        to_self: bool = False,
     ) -> TaskFrame:
         """The frame of a request: its pieces lexed and screened (speech acts, withdrawn,
         negated, destructive, facts, unsupported services), the tasks read from what is left,
         then judged. ``confirmed``: the requester already said yes to the restated reading;
-        ``sent_out``: a send-out to a colleague's name is meant to leave the office."""
+        ``sent_out``: a send-out to a colleague's name is meant to leave the office;
+        ``to_self``: the requester answered "me" to whom their own item goes."""
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
-        frame = self._frame(spoken.msg.lexed, request.text, requester, sent_out)  # 5 and 6
+        frame = self._frame(spoken.msg.lexed, request.text, requester, sent_out, to_self)
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
-    def _frame(self, whole: Lexed, request: str, requester: str, sent_out: bool) -> TaskFrame:
+    def _frame(
+        self, whole: Lexed, request: str, requester: str, sent_out: bool, to_self: bool = False
+    ) -> TaskFrame:
         """The tasks of the request the screen left (``request``), read from its readings;
         ``whole`` is the whole message as the lexicon read it for the screen: who has an item
         now is said anywhere, also in a statement the screen set aside ("P lent me her
@@ -150,7 +159,11 @@ class InstructionParser:
         lexed = self.lex.read(request)  # the rewritten request, read once; later stages get it
         readings = self.readings.read(lexed)
         frame = self.frames.frame(
-            readings, requester, holder(whole, requester), named_items(whole, requester)
+            readings,
+            requester,
+            holder(whole, requester),
+            named_items(whole, requester),
+            to_self=to_self,
         )
         if frame.understood:
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
@@ -213,6 +226,10 @@ class InstructionParser:
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
+                continue
+            if frame.question is not None and _asks_who(frame.question) and _is_me(answer):
+                # "Who should get your reel?" "Me.": the requester, not a new request
+                frame = self.parse(text, requester, to_self=True)
                 continue
             chosen = self._chosen_reading(text, answer)
             if chosen:
@@ -286,3 +303,18 @@ class InstructionParser:
             elif set(m.ids) & named:
                 chosen[word] = "person"
         return chosen
+
+
+# The words of an answer that names only the one who asks: "me", "to me", "myself please".
+_ME = frozenset({"me", "myself", "mine", "i", "to", "for", "please", "just", "its", "it", "is"})
+_SELF = frozenset({"me", "myself", "mine"})
+
+
+def _asks_who(question: str) -> bool:
+    return question.lower().startswith("who ")
+
+
+def _is_me(answer: str) -> bool:
+    """Whether an answer only names the requester ("Me.", "to me", "myself", "me please")."""
+    words = language.words(answer.lower())
+    return bool(words) and set(words) <= _ME and bool(set(words) & _SELF)
