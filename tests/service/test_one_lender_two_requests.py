@@ -8,8 +8,8 @@ mechanisms, one test each:
 - a request whose lender's item another request already took does not send that lender a
   code, and borrows another colleague's;
 - a colleague who does not come to the robot within the wait gets no second code: the wait's
-  300 s are simulated seconds (1.2 wall seconds at the test's speed-up of 250), and a full
-  wait read as "cut short by a message" kept him bound.
+  300 s are simulated seconds (6 wall seconds at a speed-up of 50), and a full wait read as
+  "cut short by a message" kept him bound.
 """
 
 from __future__ import annotations
@@ -72,15 +72,9 @@ async def test_a_stapler_taken_by_one_request_is_not_asked_for_by_the_other(
 async def test_a_colleague_who_does_not_come_gets_one_code_and_the_next_one_is_asked(
     tmp_path: Path, database_url: str | None
 ) -> None:
-    # Wang takes a simulated day to walk to the robot: every wait for him runs out. At a
-    # speed-up of 250 the wait's 300 simulated seconds pass in 1.2 s of wall time (6 s at the
-    # tests' usual 50); nothing here races the clock: he never comes within any wait.
+    # Wang takes a simulated day to walk to the robot: every wait for him runs out.
     async with serving_runtime(
-        tmp_path / "data",
-        robot="sim",
-        sim_handover_delay_s=86_400.0,
-        speedup=250,
-        database_url=database_url,
+        tmp_path / "data", robot="sim", sim_handover_delay_s=86_400.0, database_url=database_url
     ) as (api, _):
         iid = await submit(api)
 
