@@ -11,7 +11,7 @@ import subprocess
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-BUILD_S = 3
+BUILD_S = 1  # a second of "build", with a progress line every quarter second
 
 # The stand-in answers the script's three uses of the venv's python: the probe (`python -`),
 # `-m pip install` (the llama.cpp build takes BUILD_S seconds) and nothing else.
@@ -40,7 +40,7 @@ def test_the_build_prints_progress_and_the_python_path_last(tmp_path: Path) -> N
     env = {
         **os.environ,
         "LLM_SERVER_VENV": str(venv),
-        "LLM_SERVER_HEARTBEAT_S": "1",
+        "LLM_SERVER_HEARTBEAT_S": "0.25",
         "LLAMA_CPP_VERSION": "0.3.16",
         "SMOLLM2_VERSION": "0.1.2",
     }

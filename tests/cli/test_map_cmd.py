@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import matplotlib.image as mpimg
@@ -13,13 +14,17 @@ from assistantx.nav.anchors import Anchor, load_anchors, save_anchors
 from assistantx.nav.costmap import Costmap
 from assistantx.nav.occupancy_map import load_map
 from assistantx.nav.planner import GridPlanner
+from helpers.children import descendants
 from helpers.maps import REPO, real_map
 
 
 def test_render_with_path_and_particles(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "office.png"
+    running = {child.pid for child in descendants(os.getpid())}
     code = main(["map", "render", "--out", str(out), "--path", "desk_01,desk_02", "--particles"])
     assert code == 0
+    # One plan and one drive: planned in this process, no planning worker started for it.
+    assert [c for c in descendants(os.getpid()) if c.pid not in running] == []
     assert "path 4.00 m" in capsys.readouterr().out
     image = mpimg.imread(out)
     assert image.shape[0] > 300

@@ -114,6 +114,18 @@ def test_spellings_said_alike_and_spelled_nearly_are_found() -> None:
     assert language.sound_alike_spellings(["zxqv", "li"]) == {}
 
 
+def test_pronunciations_asked_again_are_the_same_and_each_callers_own() -> None:
+    """The answer for a set of words is kept (readers of one office ask the same words over
+    and over); a caller that changes what it got does not change what the next one gets."""
+    first = language.pronunciations(["Li", "lee", "zxqv"])
+    assert first == {"li": frozenset({"L IY"}), "lee": frozenset({"L IY"})}
+    first["li"] = frozenset({"changed"})
+    del first["lee"]
+    again = language.pronunciations(["lee", "li", "zxqv", "LI"])
+    assert again == {"li": frozenset({"L IY"}), "lee": frozenset({"L IY"})}
+    assert language.pronunciations(["zxqv", "1234"]) == {}
+
+
 def test_plural_and_mass_nouns_come_from_the_dictionary() -> None:
     assert language.is_plural_noun("handling gloves") and language.is_plural_noun("scissors")
     assert not language.is_plural_noun("glass") and not language.is_plural_noun("gaffer tape")

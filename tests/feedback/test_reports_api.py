@@ -8,6 +8,7 @@ from typing import Any
 
 import httpx
 import pytest
+import pytest_asyncio
 
 from helpers.eventually import eventually
 from service.inprocess import running_service
@@ -18,10 +19,27 @@ AUTH_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
 AUTH_OP = {"Authorization": f"Bearer {OPERATOR}"}
 
 
+# The tests that are only refused share one service (``unused_api``), in the module's event
+# loop and on one xdist worker.
+pytestmark = pytest.mark.shares_worker("reports")
+IN_THE_SHARED_LOOP = pytest.mark.asyncio(loop_scope="module")
+
+
 @pytest.fixture
 async def api(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
     async with running_service(
         tmp_path / "data", speedup=200, reasoner_builder="service.stapler_reasoner:build_factory"
+    ) as client:
+        yield client
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def unused_api(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[httpx.AsyncClient]:
+    """A service no one has asked anything yet, for the tests that are only refused: they
+    share it (a service per test cost about 0.1 CPU-s and 0.3-0.5 s of wall time)."""
+    data_dir = tmp_path_factory.mktemp("reports") / "data"
+    async with running_service(
+        data_dir, speedup=200, reasoner_builder="service.stapler_reasoner:build_factory"
     ) as client:
         yield client
 
@@ -116,15 +134,17 @@ async def test_survey_over_the_builtin_messenger_and_the_report(api: httpx.Async
         ("/v1/surveys/ins-unknown", 404),
     ],
 )
+@IN_THE_SHARED_LOOP
 async def test_bad_requests_say_what_is_wrong(
-    api: httpx.AsyncClient, url: str, status: int
+    unused_api: httpx.AsyncClient, url: str, status: int
 ) -> None:
-    r = await api.get(url, headers=AUTH_OP)
+    r = await unused_api.get(url, headers=AUTH_OP)
     assert r.status_code == status, r.text
     assert r.json()["message"] and "\n" not in r.json()["message"]
 
 
-async def test_reports_need_a_token(api: httpx.AsyncClient) -> None:
-    r = await api.get("/v1/reports/usage")
+@IN_THE_SHARED_LOOP
+async def test_reports_need_a_token(unused_api: httpx.AsyncClient) -> None:
+    r = await unused_api.get("/v1/reports/usage")
     assert r.status_code == 401
     assert "www-authenticate" in r.headers

@@ -11,6 +11,7 @@ from assistantx.core.actions import Move
 from assistantx.core.clock import SimClock
 from assistantx.core.office import load_office
 from assistantx.nav.anchors import load_anchors
+from assistantx.nav.navigation import NavigationParams
 from assistantx.nav.scenario import load_scenario, schedule_events
 from assistantx.sim.session import SimSession
 
@@ -33,6 +34,10 @@ async def test_the_robot_says_the_door_is_closed_and_comes_back_when_it_opens() 
         seed=scenario.seed,
         start="desk_08",
         world=world,
+        # Plans here, not in the service's planning worker process (the default of a robot
+        # that localizes): the same plans, without spawning a process that imports numpy and
+        # scipy and measures the map's landmarks (about 3 CPU-s).
+        params=NavigationParams(plan_in_process=False),
     )
     async with robot, SimSession(office, requester="lee", robot=robot, clock=clock) as session:
         result = await session.do(Move(place="meeting_room"))

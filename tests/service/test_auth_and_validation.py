@@ -5,12 +5,30 @@ from __future__ import annotations
 from collections.abc import AsyncIterator
 
 import httpx
+import pytest
+import pytest_asyncio
 
+from service.inprocess import running_service
 from service.server import LEE, OPERATOR, ZHANG
+
+# The tests whose every request is refused (or only reads) share one service (``refusing``),
+# in the module's event loop and on one xdist worker: each of them that could leave something
+# behind checks the instruction list is still empty. The tests that submit or change people
+# start their own (``api``).
+pytestmark = pytest.mark.shares_worker("refused")
+IN_THE_SHARED_LOOP = pytest.mark.asyncio(loop_scope="module")
 
 OP = {"Authorization": f"Bearer {OPERATOR}"}
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
 AS_ZHANG = {"Authorization": f"Bearer {ZHANG}"}
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def refusing(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[httpx.AsyncClient]:
+    data_dir = tmp_path_factory.mktemp("refused") / "data"
+    async with running_service(data_dir, max_body_bytes=4096) as client:
+        yield client
+
 
 PROTECTED = [
     ("POST", "/v1/instructions"),
@@ -33,21 +51,23 @@ PROTECTED = [
 ]
 
 
+@IN_THE_SHARED_LOOP
 async def test_protected_endpoints_answer_401_with_www_authenticate(
-    api: httpx.AsyncClient,
+    refusing: httpx.AsyncClient,
 ) -> None:
     for method, path in PROTECTED:
         for header in (None, "Bearer wrong-token-000000000000", "Basic abc", "Bearer"):
             headers = {"Authorization": header} if header else {}
-            r = await api.request(method, path, headers=headers)
+            r = await refusing.request(method, path, headers=headers)
             assert r.status_code == 401, (method, path, header)
             assert r.headers["www-authenticate"].startswith("Bearer")
             assert r.json()["error"] == "unauthorized"
 
 
-async def test_health_needs_no_token(api: httpx.AsyncClient) -> None:
-    assert (await api.get("/healthz")).json() == {"status": "ok"}
-    assert (await api.get("/readyz")).json()["status"] == "ready"
+@IN_THE_SHARED_LOOP
+async def test_health_needs_no_token(refusing: httpx.AsyncClient) -> None:
+    assert (await refusing.get("/healthz")).json() == {"status": "ok"}
+    assert (await refusing.get("/readyz")).json()["status"] == "ready"
 
 
 async def test_a_person_submits_only_as_themselves(api: httpx.AsyncClient) -> None:
@@ -135,31 +155,34 @@ MALFORMED = [
 ]
 
 
+@IN_THE_SHARED_LOOP
 async def test_malformed_input_gets_a_4xx_that_names_the_problem(
-    api: httpx.AsyncClient,
+    refusing: httpx.AsyncClient,
 ) -> None:
     for method, path, body, named in MALFORMED:
         headers = OP if "messages" not in path else AS_LEE
-        r = await api.request(method, path, json=body, headers=headers)
+        r = await refusing.request(method, path, json=body, headers=headers)
         assert 400 <= r.status_code < 500, (path, r.text)
         assert named in r.text, (path, r.text)
 
 
-async def test_not_json_and_oversized_bodies(api: httpx.AsyncClient) -> None:
-    r = await api.post(
+@IN_THE_SHARED_LOOP
+async def test_not_json_and_oversized_bodies(refusing: httpx.AsyncClient) -> None:
+    r = await refusing.post(
         "/v1/instructions",
         content=b"{not json",
         headers={**AS_LEE, "content-type": "application/json"},
     )
     assert r.status_code == 422 and r.json()["error"] == "invalid_request"
     big = {"requester": "lee", "text": "x" * 5000}
-    r = await api.post("/v1/instructions", json=big, headers=AS_LEE)
+    r = await refusing.post("/v1/instructions", json=big, headers=AS_LEE)
     assert r.status_code == 413 and "4096" in r.json()["message"]
-    listed = (await api.get("/v1/instructions", headers=OP)).json()["items"]
+    listed = (await refusing.get("/v1/instructions", headers=OP)).json()["items"]
     assert listed == []  # nothing malformed reached the loop
 
 
-async def test_a_streamed_body_over_the_limit_gets_413_not_400(api: httpx.AsyncClient) -> None:
+@IN_THE_SHARED_LOOP
+async def test_a_streamed_body_over_the_limit_gets_413_not_400(refusing: httpx.AsyncClient) -> None:
     """Chunked, with no Content-Length: the limit counts what arrives, and the answer is the
     same 413 as for a declared size (the framework's own "400 error parsing the body" was)."""
 
@@ -169,17 +192,18 @@ async def test_a_streamed_body_over_the_limit_gets_413_not_400(api: httpx.AsyncC
             yield b"x" * 1000
         yield b'"}'
 
-    r = await api.post(
+    r = await refusing.post(
         "/v1/instructions", content=chunks(), headers={**AS_LEE, "content-type": "application/json"}
     )
     assert r.status_code == 413 and "4096" in r.json()["message"]
-    listed = (await api.get("/v1/instructions", headers=OP)).json()["items"]
+    listed = (await refusing.get("/v1/instructions", headers=OP)).json()["items"]
     assert listed == []
 
 
-async def test_a_deeply_nested_body_gets_a_json_4xx(api: httpx.AsyncClient) -> None:
+@IN_THE_SHARED_LOOP
+async def test_a_deeply_nested_body_gets_a_json_4xx(refusing: httpx.AsyncClient) -> None:
     deep = b"[" * 1500 + b"]" * 1500
-    r = await api.post(
+    r = await refusing.post(
         "/v1/instructions", content=deep, headers={**AS_LEE, "content-type": "application/json"}
     )
     assert 400 <= r.status_code < 500 and r.headers["content-type"] == "application/json"

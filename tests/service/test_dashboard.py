@@ -14,6 +14,7 @@ from pathlib import Path
 import httpx
 import numpy as np
 import pytest
+import pytest_asyncio
 from matplotlib.image import imread
 
 from assistantx.adapters.robot.navigator import DEFAULT_MAP
@@ -28,6 +29,8 @@ from helpers.servers import serving_app
 
 TOKEN = "operator-token-for-dashboard-tests"
 LEE_TOKEN = "lee-token-for-dashboard-tests-01"
+
+pytestmark = [pytest.mark.asyncio(loop_scope="module"), pytest.mark.shares_worker("dashboard")]
 
 
 @contextlib.asynccontextmanager
@@ -48,9 +51,12 @@ async def serve(tmp_path: Path, **overrides: object) -> AsyncIterator[httpx.Asyn
         yield client
 
 
-@pytest.fixture
-async def client(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
-    async with serve(tmp_path) as c:
+# The tests that only read (the page, the map, a results folder with no run) share one server,
+# and the five paths outside a run's files another; a server per test cost about 0.1 CPU-s and
+# 0.3-0.5 s of wall time to start and stop. The tests that write (runs, codes) start their own.
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def client(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[httpx.AsyncClient]:
+    async with serve(tmp_path_factory.mktemp("dashboard")) as c:
         yield c
 
 
@@ -163,15 +169,27 @@ async def test_evaluation_latest_is_the_newest_summary(tmp_path: Path) -> None:
         "/v1/evaluation/runs/2024-new/missing.png",
     ],
 )
-async def test_evaluation_files_are_plain_names_inside_a_run(tmp_path: Path, path: str) -> None:
-    results = tmp_path / "results"
+async def test_evaluation_files_are_plain_names_inside_a_run(
+    run_with_neighbours: httpx.AsyncClient, path: str
+) -> None:
+    response = await run_with_neighbours.get(path)
+    assert response.status_code == 404
+    assert b"secret" not in response.content
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def run_with_neighbours(
+    tmp_path_factory: pytest.TempPathFactory,
+) -> AsyncIterator[httpx.AsyncClient]:
+    """A server whose results hold one run, a file beside the results and one in the run that
+    is not a chart or summary (only read: shared by the paths above)."""
+    root = tmp_path_factory.mktemp("evaluation-files")
+    results = root / "results"
     _write_run(results, "2024-new", {}, mtime=1_000)
-    (tmp_path / "secret.png").write_bytes(b"secret")
+    (root / "secret.png").write_bytes(b"secret")
     (results / "2024-new" / "notes.txt").write_text("not served")
-    async with serve(tmp_path) as client:
-        response = await client.get(path)
-        assert response.status_code == 404
-        assert b"secret" not in response.content
+    async with serve(root) as client:
+        yield client
 
 
 async def test_no_evaluation_yet_says_where_it_looked(client: httpx.AsyncClient) -> None:

@@ -14,8 +14,10 @@ from helpers.eventually import eventually
 from helpers.instructions import ended
 from service.inprocess import serving_runtime
 
-# Hand-overs take long enough (simulated time) for the cancel to come between the two.
-SETTINGS: dict[str, Any] = {"robot": "sim", "speedup": 100, "sim_handover_delay_s": 300.0}
+# Hand-overs take long enough (simulated time) for the cancel to come between the two: the
+# cancel is sent the moment the deposit is seen, and Lee's hand-over would take 1.2 s of wall
+# time (300 simulated seconds at a speed-up of 250; at 100 the test waited out 6 s of them).
+SETTINGS: dict[str, Any] = {"robot": "sim", "speedup": 250, "sim_handover_delay_s": 300.0}
 
 
 def deposited_by(runtime: ServiceRuntime, person: str) -> asyncio.Future[None]:

@@ -8,6 +8,7 @@ nothing, and these tests send nothing out."""
 
 from __future__ import annotations
 
+import functools
 import json
 from pathlib import Path
 from typing import Any
@@ -15,6 +16,8 @@ from typing import Any
 import pytest
 
 from adapters.messenger.conftest import PUSH_YAML
+from assistantx.adapters.lock.protocol import client as lock_client
+from assistantx.adapters.lock.protocol.link import LinkTimeouts
 from assistantx.core.errors import LockConnectionError, MessengerError
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
@@ -71,10 +74,15 @@ async def test_the_runtime_builds_starts_mounts_and_closes_matrix(tmp_path: Path
     assert _push_routes(app) == []  # a later lifespan mounts its own messenger's routes
 
 
-async def test_a_start_that_fails_after_matrix_is_built_still_closes_it(tmp_path: Path) -> None:
+async def test_a_start_that_fails_after_matrix_is_built_still_closes_it(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # The lock's client gives up on a port nobody listens on after connect_s (5 s by default,
+    # waited out in full): half a second shows the same failure.
+    monkeypatch.setattr(lock_client, "LinkTimeouts", functools.partial(LinkTimeouts, connect_s=0.5))
     nobody_listens = free_port()
     app = create_app(_settings(tmp_path, lock="tcp", lock_port=nobody_listens))
-    with pytest.raises(LockConnectionError):
+    with pytest.raises(LockConnectionError, match=r"within 0\.5 s"):
         async with app.router.lifespan_context(app):
             pass
     matrix = app.state.runtime.matrix

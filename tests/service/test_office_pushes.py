@@ -96,6 +96,7 @@ async def test_each_office_gets_the_pushes_with_its_own_token(tmp_path: Path) ->
         assert (await _push(api, "t-y", None)).status_code == 401
 
 
+@pytest.mark.postgres  # two replicas sharing the tests' PostgreSQL (postgres_url)
 async def test_an_office_taken_over_later_gets_its_pushes_and_leaves_a_503(
     tmp_path: Path, postgres_url: str
 ) -> None:

@@ -4,11 +4,20 @@ HTTP against a real uvicorn server with simulated colleagues and the embedded re
 from __future__ import annotations
 
 import json
+from collections.abc import AsyncIterator
 
 import httpx
+import pytest
+import pytest_asyncio
 
 from helpers.instructions import ended
+from service.inprocess import running_service
 from service.server import LEE, OPERATOR, ZHANG
+
+# The tests read what one instruction of Zhang's left (and the operator's correction of one
+# test adds nothing the others look at): they share one service and that one instruction, in
+# the module's event loop and on one xdist worker, instead of a service and a run each.
+pytestmark = [pytest.mark.asyncio(loop_scope="module"), pytest.mark.shares_worker("scopes")]
 
 OP = {"Authorization": f"Bearer {OPERATOR}"}
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
@@ -22,22 +31,29 @@ async def _memory_updates(api: httpx.AsyncClient, headers: dict[str, str]) -> li
     return updates
 
 
-async def _zhang_got_a_stapler(api: httpx.AsyncClient) -> str:
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def api(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[httpx.AsyncClient]:
+    data_dir = tmp_path_factory.mktemp("scopes") / "data"
+    async with running_service(data_dir, max_body_bytes=4096) as client:
+        yield client
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def zhang_iid(api: httpx.AsyncClient) -> str:
     """Zhang asks for a stapler with their own token; the id once the instruction ended."""
     r = await api.post(
         "/v1/instructions",
         json={"requester": "zhang", "text": "bring me a stapler"},
         headers=AS_ZHANG,
     )
-    zhang_iid: str = r.json()["id"]
-    await ended(api, zhang_iid, OP)
-    return zhang_iid
+    iid: str = r.json()["id"]
+    await ended(api, iid, OP)
+    return iid
 
 
 async def test_a_person_reads_only_their_own_instructions_memory_updates(
-    api: httpx.AsyncClient,
+    api: httpx.AsyncClient, zhang_iid: str
 ) -> None:
-    zhang_iid = await _zhang_got_a_stapler(api)
     await api.patch("/v1/people/wang", json={"available": False}, headers=OP)
 
     everything = await _memory_updates(api, OP)
@@ -63,9 +79,8 @@ async def test_metrics_are_for_the_operator(api: httpx.AsyncClient) -> None:
 
 
 async def test_a_person_record_carries_no_instruction_ids_or_excerpts(
-    api: httpx.AsyncClient,
+    api: httpx.AsyncClient, zhang_iid: str
 ) -> None:
-    zhang_iid = await _zhang_got_a_stapler(api)
     touched = {
         u["update"].get("person") for u in await _memory_updates(api, OP) if u["instruction_id"]
     } - {None}

@@ -4,12 +4,28 @@ says what to send instead, over real HTTP."""
 
 from __future__ import annotations
 
-import httpx
+from collections.abc import AsyncIterator
 
+import httpx
+import pytest
+import pytest_asyncio
+
+from service.inprocess import running_service
 from service.server import LEE, OPERATOR
+
+# Every request here only reads or is refused: the tests share one service (the module's
+# event loop, one xdist worker) instead of starting one each.
+pytestmark = [pytest.mark.asyncio(loop_scope="module"), pytest.mark.shares_worker("help")]
 
 AS_LEE = {"Authorization": f"Bearer {LEE}"}
 EXAMPLE = '{"requester": "lee", "text": "Bring me a stapler"}'
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def api(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[httpx.AsyncClient]:
+    data_dir = tmp_path_factory.mktemp("help") / "data"
+    async with running_service(data_dir, max_body_bytes=4096) as client:
+        yield client
 
 
 async def test_openapi_shows_the_instruction_fields_and_an_example(

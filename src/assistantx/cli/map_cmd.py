@@ -20,6 +20,7 @@ from assistantx.memory.resolve import Resolver
 from assistantx.nav.anchor_check import check_anchors
 from assistantx.nav.anchors import Anchor, load_anchors
 from assistantx.nav.costmap import Costmap
+from assistantx.nav.navigation import NavigationParams
 from assistantx.nav.occupancy_map import load_map
 from assistantx.nav.render import render_map
 
@@ -123,6 +124,9 @@ async def _render(args: argparse.Namespace) -> int:
         anchors_yaml=args.anchors,
         localize=args.particles,
         start=start,
+        # One plan and one drive, with no requests to keep serving meanwhile: planned here,
+        # not in a worker process spawned for it (about a CPU-second to start).
+        params=NavigationParams(plan_in_process=False) if args.particles else None,
     )
     path = None
     if goal is not None:

@@ -180,6 +180,7 @@ async def _one_handshake(port: int, keys: LockKeys) -> bool:
         await close_writer(writer)
 
 
+@pytest.mark.slow  # the attacker is a process of its own, opening sockets flat out
 @pytest.mark.parametrize(
     "sources",
     [["127.0.0.1"], [f"127.0.0.{n}" for n in range(2, 10)]],

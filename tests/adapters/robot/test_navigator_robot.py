@@ -13,6 +13,7 @@ from assistantx.core.clock import SimClock
 from assistantx.core.errors import BlockedError, LocalizationLostError, MapError, UnreachableError
 from assistantx.core.office import DEFAULT_OFFICE, Office, load_office
 from assistantx.nav.anchors import Anchor
+from assistantx.nav.navigation import NavigationParams
 from assistantx.nav.occupancy_map import OccupancyMap
 
 
@@ -29,16 +30,32 @@ def _robot(
     *,
     localize: bool,
     start: str,
+    plan_in_process: bool = False,
 ) -> NavigatorRobot:
-    return NavigatorRobot(office, grid, anchors, clock, seed=4, localize=localize, start=start)
+    """The robot of these tests. Localizing, it plans here rather than in the service's
+    planning worker process (``plan_in_process``, the default of a localizing robot) unless a
+    test asks for the worker: the same planner and plans, without spawning a Python process
+    that imports numpy and scipy and measures the map's landmarks again (about 3 CPU-s; the
+    worker's own tests are tests/nav/test_plan_process.py)."""
+    params = NavigationParams(plan_in_process=plan_in_process) if localize else None
+    return NavigatorRobot(
+        office, grid, anchors, clock, seed=4, localize=localize, start=start, params=params
+    )
 
 
 async def test_drives_between_desks_with_localization(
     office: Office, office_map: OccupancyMap, office_anchors: dict[str, Anchor]
 ) -> None:
     clock = SimClock()
+    # The service's robot as it runs: plans in the worker process its start starts.
     async with _robot(
-        office, office_map, office_anchors, clock, localize=True, start="desk_01"
+        office,
+        office_map,
+        office_anchors,
+        clock,
+        localize=True,
+        start="desk_01",
+        plan_in_process=True,
     ) as robot:
         result = await robot.move_to("desk_10")
         assert result.place == "desk_10"

@@ -186,7 +186,10 @@ class NavigatorRobot(RobotBase):
         traffic: Traffic | None = None,
         name: str = "robot",
         search_off_loop: bool = False,
+        params: NavigationParams | None = None,
     ) -> NavigatorRobot:
+        """``params``: as for the constructor (None: a localizing robot plans in the worker
+        process, see plan_process)."""
         map_path = FilePath(map_yaml).resolve()
         anchors_path = FilePath(
             anchors_yaml or map_path.with_name(map_path.stem + ".anchors.yaml")
@@ -210,6 +213,7 @@ class NavigatorRobot(RobotBase):
             traffic=traffic,
             name=name,
             search_off_loop=search_off_loop,
+            params=params,
         )
 
     async def _start(self) -> None:
