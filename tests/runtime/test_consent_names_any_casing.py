@@ -152,6 +152,7 @@ def test_whom_the_reader_hands_over_to_the_guard_counts_as_named(
     people, requester, x, text = request
     frame = _parser(people).parse(text, requester)
     recipients = {t.recipient for t in frame.tasks} - {requester}
+    assert recipients <= {x}, text  # the reader hands over to the one named, or asks
     assert recipients <= named_recipients(_office(people), memory(requester, text)), text
 
 
