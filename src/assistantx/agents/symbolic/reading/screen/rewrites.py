@@ -25,7 +25,7 @@ def rewrite(
         spaced = r"[\s']*".join(re.escape(w) for w in phrase)
         text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
     subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
-    text = name_pronouns(terms, text, hints, subjects)
+    text = name_pronouns(terms, msg, text, hints, subjects)
     text, found = dangling_possessives(terms, msg, text)
     evidence += found
     said = [
@@ -129,13 +129,16 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     return pattern.sub(whole, text), evidence
 
 
-def name_pronouns(terms: Terms, text: str, hints: list[Hint], subjects: set[str]) -> str:
+def name_pronouns(
+    terms: Terms, msg: Message, text: str, hints: list[Hint], subjects: set[str]
+) -> str:
     """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
     pack": with the fact taken out, a pronoun that can only mean the one person it named
-    gets the name back."""
+    gets the name back. Another person named before the pronoun ("Penny's up the ladder,
+    Robin's at lunch, bring her a stool") leaves it to the frames, which ask whom."""
     people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
     people |= subjects
-    if len(people) != 1:
+    if len(people) != 1 or _named_before_pronoun(msg) - people:
         return text
     name = terms.office.person(next(iter(people))).name
 
@@ -145,6 +148,21 @@ def name_pronouns(terms: Terms, text: str, hints: list[Hint], subjects: set[str]
         return (f"{name}'s" if possessive else name) + gap + following
 
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
+
+
+_BACK_PRONOUNS = frozenset({"him", "his", "her"})
+
+
+def _named_before_pronoun(msg: Message) -> set[str]:
+    """Everyone a name before the message's first "him/his/her" may mean."""
+    tokens = msg.lexed.tokens
+    first = next((n for n, t in enumerate(tokens) if t.word in _BACK_PRONOUNS), len(tokens))
+    return {
+        person
+        for m in msg.lexed.mentions
+        if m.kind == "person" and m.start < first
+        for person in m.ids
+    }
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").

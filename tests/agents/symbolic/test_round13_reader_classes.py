@@ -1,0 +1,108 @@
+"""Blind round 13's reader classes, by mechanism, on sentences of our own against a small
+bindery no sentence was written for (``helpers.bindery``: colleagues whose given names are
+English words or carry diacritics, a staff fridge keeping a lunch, coffee and water made in a
+kitchen; the round's own office was never read)."""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+from symbolic_run import run_instruction
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.task_schema import TaskFrame
+from helpers.bindery import bindery
+
+
+@functools.cache
+def _parser() -> InstructionParser:
+    return InstructionParser(bindery())
+
+
+def _frame(text: str, who: str = "zoe") -> TaskFrame:
+    return _parser().parse(text, who)
+
+
+def _moves(frame: TaskFrame) -> list[tuple[str | None, str | None, str]]:
+    return [(t.item, t.owner, t.recipient) for t in frame.tasks]
+
+
+def _handed_to(run: object) -> list[str]:
+    sim = run.sim  # type: ignore[attr-defined]
+    return [e.detail["to"] for e in sim.world.handovers() if e.detail.get("to") != "locker"]
+
+
+# -- 1. the consent guard reads the names the reader reads -----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "to"),
+    [
+        ("take my bone folder to penny pls, she's got a class at 10", "bone_folder:zoe", "penny"),
+        ("drop my bone folder on ivy's desk", "bone_folder:zoe", "ivy"),
+        ("leave my bone folder with ives please", "bone_folder:zoe", "ivy"),
+        ("bring my bone folder to thao nguyen", "bone_folder:zoe", "thao"),
+    ],
+)
+async def test_a_lower_case_name_is_handed_over_to_not_carried_back(
+    text: str, item: str, to: str
+) -> None:
+    """Penny and Ivy in lower case, an alias, a name without its diacritics: the reader's
+    recipient, and the guard lets the hand-over through (it used to refuse the code and the
+    item was carried back)."""
+    run = await run_instruction(bindery(), "zoe", text)
+    assert run.sim.world.check({"holds": [to, item]}), run.actions
+    refused = [r for r in run.stm.trace.actions() if r.refused]
+    assert refused == []
+
+
+# -- 4. a pronoun after "P's <verb>ing" --------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "to"),
+    [
+        ("Thảo's trying to reach the top shelf, can you take her a kick stool?", "thao"),
+        ("thao's trying to reach the top shelf, can you take her a kick stool?", "thao"),
+        ("Łukasz's stuck up the ladder, bring him the kick stool please", "lukasz"),
+        ("Penny's struggling with the top shelf - take her a kick stool", "penny"),
+        ("Thảo is trying to reach the top shelf, could you bring her a kick stool", "thao"),
+    ],
+)
+def test_the_subject_of_is_ing_is_the_pronouns_referent(text: str, to: str) -> None:
+    """ "P's trying ...": P is the subject (the 's is "is"), and "her/him" after it, with
+    an article before the item, is whom the item goes to, never whose it is."""
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("transfer", "kick_stool", to)]
+    assert all(t.owner != to for t in frame.tasks)  # not fetched from the one who needs it
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Thảo's trying to reach the top shelf and Ivy's busy, can you take her a kick stool?",
+        "Thảo's sorting the returns and Penny's shelving, take her a kick stool",
+    ],
+)
+def test_a_pronoun_after_two_people_is_asked_about(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is not None
+    assert "her" in frame.question
+
+
+def test_her_before_an_item_is_still_a_possessive() -> None:
+    """Near-miss: "bring me her kick stool" (no article) is hers, fetched for the requester."""
+    frame = _frame("Thảo's not using it today, bring me her kick stool")
+    assert _moves(frame) == [("kick_stool", "thao", "zoe")] or frame.question is not None
+    assert all(t.recipient == "zoe" for t in frame.tasks)
+
+
+async def test_the_stool_reaches_the_one_on_the_ladder() -> None:
+    """End to end: the reader's recipient is named for the consent guard too (the pronoun's
+    one referent), so the stool is handed to Thảo, from a colleague who has one."""
+    text = "Thảo's trying to reach the top shelf, can you take her a kick stool?"
+    run = await run_instruction(bindery(), "zoe", text)
+    assert _handed_to(run) == ["thao"], run.actions
+    assert [r for r in run.stm.trace.actions() if r.refused] == []
