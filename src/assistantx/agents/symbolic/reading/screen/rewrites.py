@@ -134,17 +134,22 @@ def name_pronouns(
 ) -> str:
     """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
     pack": with the fact taken out, a pronoun that can only mean the one person it named
-    gets the name back. Another person named before the pronoun ("Penny's up the ladder,
-    Robin's at lunch, bring her a stool") leaves it to the frames, which ask whom."""
+    gets the name back. Where another person is named before it ("Thảo's on the ladder and
+    Ivy's free, take her a stool"), whom it goes to is left to the frames, which ask; whose
+    it is ("bring Zhou her stapler. It's Zhang Wei's stapler") is still the one the facts
+    name."""
     people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
     people |= subjects
-    if len(people) != 1 or _named_before_pronoun(msg) - people:
+    if len(people) != 1:
         return text
     name = terms.office.person(next(iter(people))).name
+    others_before = _named_before_pronoun(msg) - people
 
     def named(match: re.Match[str]) -> str:
         word, gap, following = match.group(1).lower(), match.group(2), match.group(3)
         possessive = word == "his" or (word == "her" and normalize(following) in terms.lex.items)
+        if others_before and not possessive:
+            return match.group(0)
         return (f"{name}'s" if possessive else name) + gap + following
 
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
