@@ -106,3 +106,47 @@ async def test_the_stool_reaches_the_one_on_the_ladder() -> None:
     run = await run_instruction(bindery(), "zoe", text)
     assert _handed_to(run) == ["thao"], run.actions
     assert [r for r in run.stm.trace.actions() if r.refused] == []
+
+
+# -- 3. someone else's obligation on the requester's own item ------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        (
+            "robin okonkwo needs to sign my condition report before it goes back to the lender",
+            "sign",
+        ),
+        ("Robin has to sign my condition report", "sign"),
+        ("Robin must sign my condition report before friday", "sign"),
+        ("Robin Okonkwo has got to stamp my condition report", "seal"),
+        ("robin should sign my condition report. thanks!", "sign"),
+    ],
+)
+def test_the_owner_saying_who_must_sign_asks_for_the_signature(text: str, kind: str) -> None:
+    """ "P needs to / has to / must / should sign my X", said by X's owner: the owner's
+    request for P's work on it, not a third person's need to restate."""
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
+        (kind, "report", "zoe", "robin")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Robin needs to sign Penny's condition report",  # not the speaker's: still asked
+        "Robin had to sign my condition report yesterday",  # told as done
+        "Robin has signed my condition report",
+        "Robin doesn't need to sign my condition report",
+    ],
+)
+def test_others_obligations_and_past_signatures_move_nothing(text: str) -> None:
+    assert _frame(text).tasks == []
+
+
+def test_the_obligation_beside_a_request_of_its_own_is_its_reason() -> None:
+    frame = _frame("Robin has to sign my condition report, can you bring me a kick stool")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "kick_stool")]

@@ -14,6 +14,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding, Request,
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
+from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.speech_acts import acts_reader
@@ -94,8 +95,11 @@ class RequestScreen:
                 return out
             if live or withdrawn:
                 return answered(out, live, withdrawn=bool(withdrawn))
-        if any(p.acts.need for p in kept) and not any(p.acts.request for p in kept):
-            out.confirm = True  # "Min needs scissors.": restate and ask before moving
+        needs = [p for p in kept if p.acts.need]
+        if needs and not any(p.acts.request for p in kept):
+            # "Min needs scissors.": restate and ask before moving; not "Robin needs to sign
+            # my report.", its owner's request for the signature
+            out.confirm = not all(owner_work_asked(spoken.msg, p) for p in needs)
         out.evidence += request.evidence
         out.text = request.text
         return out

@@ -18,6 +18,8 @@ from assistantx.core.english import words as english_words
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     if obligation_asked(msg, piece):
         return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
+    if owner_work_asked(msg, piece):
+        return None  # "Robin has to sign my condition report.": its owner asks for it
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
     if piece.asks or not piece.acts.statement:
@@ -45,6 +47,16 @@ def obligation_asked(msg: Message, piece: Piece) -> bool:
     return bool(later) and not any(
         m.kind in ("item", "cue", "person", "facility") for p in later for m in p.lexed.mentions
     )
+
+
+def owner_work_asked(msg: Message, piece: Piece) -> bool:
+    """ "Robin has to sign my condition report before it goes back": someone's work by hand
+    on the speaker's own thing, in a message that asks nothing else, is the owner's request
+    for that work. Beside a request of its own ("..., can you bring me a loupe") it is the
+    reason for that request, context."""
+    if not piece.acts.owner_work:
+        return False
+    return not any(p.acts.request for p in msg.pieces if p is not piece)
 
 
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
