@@ -11,8 +11,9 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import parse_office
 from assistantx.core.task_schema import TaskFrame
-from helpers.bindery import bindery
+from helpers.bindery import bindery, raw_bindery
 
 
 @functools.cache
@@ -150,3 +151,58 @@ def test_others_obligations_and_past_signatures_move_nothing(text: str) -> None:
 def test_the_obligation_beside_a_request_of_its_own_is_its_reason() -> None:
     frame = _frame("Robin has to sign my condition report, can you bring me a kick stool")
     assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "kick_stool")]
+
+
+# -- 5. an unknown noun for an owned item kept at a place -----------------------------------
+
+
+def _two_kept_at_the_fridge() -> InstructionParser:
+    """The bindery where Jürgen also keeps his worn book in the staff fridge."""
+    raw = raw_bindery()
+    jurgen = next(p for p in raw["people"] if p["id"] == "jurgen")
+    jurgen["owns"] = [
+        {"type": "book", "at": "kitchen", "facility": "fridge"} if o["type"] == "book" else o
+        for o in jurgen["owns"]
+    ]
+    return InstructionParser(parse_office(raw, "bindery-two-kept"))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can you bring me Jürgen's leftover curry from the staff fridge? he said I could have it",
+        "bring me jurgen's soup from the kitchen please",
+        "could you grab me Jürgen's pasta from the fridge, he's fine with it",
+    ],
+)
+def test_a_persons_unknown_thing_at_a_keeper_is_their_one_item_there(text: str) -> None:
+    """ "P's <a noun the office does not know> from <where P's one item is kept>": that item,
+    P's own; P is asked before it moves (a claimed "he said I could" is no consent)."""
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert _moves(frame) == [("lunch", "jurgen", "zoe")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me Penny's curry from the staff fridge",  # nothing of Penny's is kept there
+        "bring me Jürgen's curry",  # no place said
+    ],
+)
+def test_an_unknown_thing_nobody_keeps_there_is_not_guessed(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == []
+
+
+def test_several_things_kept_there_are_asked_about() -> None:
+    frame = _two_kept_at_the_fridge().parse("bring me Jürgen's curry from the staff fridge", "zoe")
+    assert frame.tasks == [] and frame.question is not None
+
+
+async def test_the_owner_is_asked_before_the_lunch_moves() -> None:
+    text = "can you bring me Jürgen's leftover curry from the staff fridge? he said I could have it"
+    run = await run_instruction(bindery(), "zoe", text)
+    first = run.stm.trace.actions()[0].action
+    assert first.type == "inquire" and getattr(first, "contact", None) == "jurgen"
+    assert run.sim.world.check({"holds": ["zoe", "lunch:jurgen"]})
