@@ -206,3 +206,59 @@ async def test_the_owner_is_asked_before_the_lunch_moves() -> None:
     first = run.stm.trace.actions()[0].action
     assert first.type == "inquire" and getattr(first, "contact", None) == "jurgen"
     assert run.sim.world.check({"holds": ["zoe", "lunch:jurgen"]})
+
+
+# -- 2. words in an aside or a purpose are no service request --------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        (
+            "can I borrow Łukasz's bone folder for the rebacking job? will give it straight back",
+            "lukasz",
+        ),
+        ("can I borrow Łukasz's bone folder for the printing job?", "lukasz"),
+        ("could I borrow Zoë's bone folder for my rebind project", "zoe"),
+        ("need the kick stool from Page's desk, reserve shelf again 🙄", "page"),
+        ("need the kick stool from Page's desk, print room again", "page"),
+        ("need the kick stool from Ivy's desk, rebind queue again", "ivy"),
+    ],
+)
+def test_a_service_word_as_a_noun_or_in_an_aside_is_context(text: str, owner: str) -> None:
+    """ "for the printing job", "reserve shelf again": a service's word after a determiner
+    before a noun, or a verbless fragment after the request, is context; the fetch itself is
+    read (its owner asked before it moves), nothing declined, nothing printed."""
+    who = "penny" if owner == "zoe" else "zoe"
+    frame = _parser().parse(text, who)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.kind, t.owner) for t in frame.tasks] == [("transfer", owner)]
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("bring me Ivy's kick stool, then print my flyer file", ["transfer", "print"]),
+        ("bring me Ivy's kick stool, print flyers too", ["transfer", "print"]),
+        ("get the printing done for my flyer file", ["print"]),
+        ("pirnt my flyer file", ["print"]),  # a typo of nothing else is still corrected
+    ],
+)
+def test_a_service_asked_for_in_verb_position_is_still_done(text: str, kinds: list[str]) -> None:
+    assert [t.kind for t in _frame(text).tasks] == kinds
+
+
+def test_an_unknown_service_asked_for_is_still_declined() -> None:
+    frame = _frame("bring me Ivy's kick stool, reserve a table for me")
+    assert frame.tasks == [] and frame.decline is not None and "reserve" in frame.decline
+
+
+def test_a_word_form_is_never_corrected_into_an_office_verb() -> None:
+    """ "rebond" (re + bond) and "rebacking" (re + backing) are word forms, not typos of
+    "rebind"; "rebnid" is a typo of nothing else."""
+    lex = _parser().lex
+    assert [t.word for t in lex.tokens("rebnid rebond rebacking")] == [
+        "rebind",
+        "rebond",
+        "rebacking",
+    ]

@@ -246,11 +246,15 @@ class Lexicon:
             return word
         if any(_agent_noun(word, cue) for cue in self.operation_words):
             return word  # "recharger": a device named after the service, not the service
-        if verb_slot:
+        # an English word or word form ("reprint", "rebacking") is never made a task verb
+        is_word = language.is_word_form(word)
+        if verb_slot and not is_word:
             verbs = language.closest(word, self.cue_words)
             if len(verbs) == 1 or (verbs and _one_verb(verbs)):  # "print" or "printed"
                 return min(verbs, key=len)
         close = language.closest(word, self.vocabulary)
+        if is_word:
+            close = [c for c in close if c not in self.cue_words]
         if len(close) == 1 or (close and all(c in self.name_words for c in close)):
             return close[0]
         return word
@@ -404,12 +408,33 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
+        if w in self.cue_words and self._noun_use(tokens, i):
+            return Mention("word", i, i + 1, (w,), t.possessive, t.text)  # "the print run"
         if w in self.cue_words:
             kinds = tuple(k for k, words in self.cues.items() if w in words)
             return Mention("cue", i, i + 1, kinds, t.possessive, t.text)
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
+
+    def _noun_use(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "for the printing job", "my rebind queue": a service's verb between a determiner
+        (or a possessive) and a noun the office does not know modifies that noun; it asks
+        for no work ("get the printing done" still does: no noun follows)."""
+        if tokens[i].word not in self.operation_words or i == 0 or tokens[i].opens:
+            return False
+        before = tokens[i - 1]
+        if before.word not in _MODIFIER_DETERMINERS and not before.possessive:
+            return False
+        if i + 1 >= len(tokens) or tokens[i + 1].opens or tokens[i].possessive:
+            return False
+        nxt = tokens[i + 1].word
+        return (
+            nxt not in COMMON
+            and not self._known(nxt)
+            and language.is_noun(nxt)
+            and not language.is_finite_verb(nxt)
+        )
 
     def _person_ids(
         self, tokens: Sequence[Token], idx: list[int], ids: set[str]
