@@ -42,6 +42,7 @@ def _handed_to(run: object) -> list[str]:
     [
         ("take my bone folder to penny pls, she's got a class at 10", "bone_folder:zoe", "penny"),
         ("drop my bone folder on ivy's desk", "bone_folder:zoe", "ivy"),
+        ("print my brochure and drop it on ivy's desk", "brochure:zoe", "ivy"),
         ("leave my bone folder with ives please", "bone_folder:zoe", "ivy"),
         ("bring my bone folder to thao nguyen", "bone_folder:zoe", "thao"),
     ],
