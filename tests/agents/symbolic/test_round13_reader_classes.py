@@ -199,6 +199,7 @@ def test_an_unknown_thing_nobody_keeps_there_is_not_guessed(text: str) -> None:
 def test_several_things_kept_there_are_asked_about() -> None:
     frame = _two_kept_at_the_fridge().parse("bring me Jürgen's curry from the staff fridge", "zoe")
     assert frame.tasks == [] and frame.question is not None
+    assert "lunch box" in frame.question and "worn book" in frame.question, frame.question
 
 
 async def test_the_owner_is_asked_before_the_lunch_moves() -> None:
@@ -263,3 +264,21 @@ def test_a_word_form_is_never_corrected_into_an_office_verb() -> None:
         "rebond",
         "rebacking",
     ]
+
+
+@pytest.mark.parametrize(
+    ("answer", "item"), [("the lunch box", "lunch"), ("the worn book please", "book")]
+)
+def test_the_answer_to_which_kept_thing_names_it(answer: str, item: str) -> None:
+    parser = _two_kept_at_the_fridge()
+    text = "bring me Jürgen's curry from the staff fridge"
+    frame = parser.parse_with_answers(text, "zoe", [answer])
+    assert _moves(frame) == [(item, "jurgen", "zoe")]
+
+
+def test_an_answer_naming_neither_kept_thing_asks_again() -> None:
+    parser = _two_kept_at_the_fridge()
+    frame = parser.parse_with_answers(
+        "bring me Jürgen's curry from the staff fridge", "zoe", ["either"]
+    )
+    assert frame.tasks == [] and frame.question is not None

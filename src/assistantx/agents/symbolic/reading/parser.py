@@ -62,6 +62,7 @@ from assistantx.agents.symbolic.reading.operations import (
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
+from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.unknown_items import unknown_item
 from assistantx.core import language
 from assistantx.core.office import Office
@@ -159,6 +160,11 @@ class InstructionParser:
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
+                continue
+            kept = chosen_kept(self.screen.terms, text, answer)
+            if kept is not None:  # "do you mean the lunch box or the worn book?"
+                text = kept
+                frame = self.parse(text, requester)
                 continue
             chosen = self._chosen_reading(text, answer)
             if chosen:

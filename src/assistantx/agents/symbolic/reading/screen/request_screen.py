@@ -77,8 +77,10 @@ class RequestScreen:
         if declines:
             out.decline, out.outcome = declines[0].message, "unachievable"
             return out
-        unplaced = [f for f in live if f.verdict == "unplaced"]
-        if unplaced:  # a thing told to go where nothing of the office is: asked, never moved
+        unplaced = [f for f in live if f.verdict in ("unplaced", "which")]
+        # a thing told to go where nothing of the office is, or one of several things kept
+        # for its owner: asked, never moved
+        if unplaced:
             out.question = unplaced[0].message
             return out
         left = spoken.left

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
@@ -65,58 +66,18 @@ def rewrite(
     return text, evidence
 
 
-_FROM = frozenset({"from", "out"})
-_MOST_UNKNOWN_WORDS = 3
-
-
 def kept_things(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
     """ "bring me Jürgen's leftover curry from the staff fridge": a thing of a person's the
     office has no word for, said to be at a facility (or a place) that keeps one item of
-    theirs, is that item ("Jürgen's lunch box"). Several kept there, or none: left as said,
-    and asked. Whose it is stays theirs: the owner is asked before it moves."""
-    tokens, mentions = msg.lexed.tokens, msg.lexed.mentions
-    for n, m in enumerate(mentions):
-        if m.kind != "person" or not m.possessive or len(m.ids) != 1:
-            continue
-        k = n + 1
-        while k < len(mentions) and mentions[k].kind == "word":
-            k += 1
-        unknown = mentions[n + 1 : k]
-        if not 0 < len(unknown) <= _MOST_UNKNOWN_WORDS or unknown[-1].text.lower() not in _FROM:
-            continue
-        unknown = unknown[:-1]  # the words before "from"
-        if not unknown or k >= len(mentions) or mentions[k].kind not in ("facility", "place"):
-            continue
-        if any(tokens[u.start].word in terms.lex.cue_words for u in unknown):
-            continue
-        where = mentions[k]
-        kept = _kept_at(terms, m.ids[0], where.kind, where.ids[0])
-        if len(kept) != 1:
-            continue
-        said = r"\s+".join(re.escape(u.text) for u in unknown)
-        found = re.search(rf"{re.escape(m.text)}\s+({said})\b", text)
-        if found is None:
-            continue
-        name = terms.office.item_type(kept[0]).name
-        meaning = f"{terms.office.person(m.ids[0]).name}'s {name} (kept at {where.text})"
-        evidence = [Evidence(words=found.group(1), meaning=meaning)]
-        return text[: found.start(1)] + name + text[found.end(1) :], evidence
-    return text, []
-
-
-def _kept_at(terms: Terms, owner: str, kind: str, where: str) -> list[str]:
-    """The item types of ``owner``'s kept by the facility ``where`` (or at the place)."""
-    office = terms.office
-    out = []
-    for own in office.person(owner).owns:
-        keeper = office.keeper(owner, own.type)
-        if keeper is None:
-            continue
-        if (kind == "facility" and keeper.id == where) or (
-            kind == "place" and keeper.location == where
-        ):
-            out.append(own.type)
-    return out
+    theirs, is that item ("Jürgen's lunch box"); several kept there are asked about by the
+    screen's ``kept`` rule. Whose it is stays theirs: the owner is asked before it moves."""
+    found = kept_thing(terms, msg.lexed, text)
+    if found is None or len(found.kept) != 1:
+        return text, []
+    name = terms.office.item_type(found.kept[0]).name
+    meaning = f"{terms.office.person(found.owner).name}'s {name} (kept at {found.where})"
+    evidence = [Evidence(words=text[found.start : found.end], meaning=meaning)]
+    return text[: found.start] + name + text[found.end :], evidence
 
 
 def made_from(terms: Terms, item: str, stated: list[str]) -> str | None:
