@@ -131,3 +131,14 @@ def test_plural_and_mass_nouns_come_from_the_dictionary() -> None:
     assert not language.is_plural_noun("glass") and not language.is_plural_noun("gaffer tape")
     assert language.is_mass_noun("glue") and language.is_mass_noun("stationery")
     assert not language.is_mass_noun("battery") and not language.is_mass_noun("gloves")
+
+
+@pytest.mark.parametrize("word", ["rebinding", "reprint", "binder", "rebacking", "unbinding"])
+def test_word_forms(word: str) -> None:
+    """The dictionary's forms, words in use, and a verb prefix on a word form."""
+    assert language.is_word_form(word)
+
+
+@pytest.mark.parametrize("word", ["pirnt", "rebnid", "stapeler", "cpoy", "printe"])
+def test_typos_are_no_word_forms(word: str) -> None:
+    assert not language.is_word_form(word)

@@ -7,6 +7,7 @@ from assistantx.agents.symbolic import InstructionParser, build_factory
 from assistantx.core.settings import Settings
 from assistantx.sim.requester import NOTHING_TO_ADD, Wish, answer
 from assistantx.sim.run import run_in_sim
+from helpers.bindery import bindery
 from helpers.clinic import clinic
 
 
@@ -44,3 +45,33 @@ def test_a_reply_that_says_they_have_one_declines_the_offer() -> None:
         assert frame.decline is not None, reply
     frame = parser.parse_with_answers(text, "rich", ["yes please"])
     assert [t.item for t in frame.tasks] == ["thermometer"]
+
+
+def test_without_a_task_an_offer_of_what_they_wrote_is_accepted() -> None:
+    """ "robin okonkwo needs to sign my condition report" met with "Shall I get your
+    condition report signed by Robin Okonkwo?": what their words ask for, so yes; an offer
+    that changes the person, the owner, the item or the work is still declined."""
+    office = bindery()
+    wrote = "robin okonkwo needs to sign my condition report before it goes back to the lender"
+    wish = Wish.from_words(office, "zoe", wrote)
+    yes = "Shall I get your condition report signed by Robin Okonkwo?"
+    assert answer(office, wish, yes) == "Yes, please."
+    for offer in (
+        "Shall I get Penny Castellanos's condition report signed by Robin Okonkwo?",
+        "Shall I get your condition report signed by Ivy Marchetti?",
+        "Shall I bring your condition report to Robin Okonkwo?",
+        "Shall I bring you a kick stool?",
+        "Shall I bring you one?",
+        "Shall I go ahead?",
+    ):
+        assert answer(office, wish, offer) == "No, thanks.", offer
+    others = Wish.from_words(office, "zoe", "Robin needs to sign Penny's condition report")
+    assert answer(office, others, yes) == "No, thanks."
+
+
+async def test_run_signs_the_report_its_owner_asked_to_be_signed() -> None:
+    office = bindery()
+    text = "robin okonkwo needs to sign my condition report before it goes back to the lender"
+    run = await run_in_sim(office, "zoe", text, build_factory(office, Settings()))
+    assert run.sim.world.check({"signed": ["report:zoe", "robin"]}), run.trace.outcome
+    assert run.sim.world.check({"holds": ["zoe", "report:zoe"]})

@@ -150,6 +150,29 @@ def is_english_word(word: str) -> bool:
     return any(pos in lemmas(w) for pos in _OPEN_CLASSES) and _zipf_english(w) >= COMMON_ZIPF
 
 
+# A word seen this often in written English (Zipf scale: about once in ten million words) is a
+# word in use, even where the dictionary lacks it.
+WORD_IN_USE_ZIPF = 2.0
+# English's productive prefixes of a verb: "re" + a word form is a word form ("rebacking")
+_VERB_PREFIXES = ("re", "un", "pre")
+
+
+@functools.cache
+def is_word_form(word: str) -> bool:
+    """Whether a (folded) word is an English word or a form of one: the dictionary knows it
+    ("rebinding", "reprint"), writing uses it, or it is a verb prefix on one ("rebacking":
+    re + backing). A word that is one is never taken for a typo of a task verb."""
+    w = word.lower()
+    if not w.isalpha():
+        return False
+    if lemmas(w) or _zipf_english(w) >= WORD_IN_USE_ZIPF:
+        return True
+    return any(
+        w.startswith(p) and len(w) - len(p) >= 4 and bool(lemmas(w[len(p) :]))
+        for p in _VERB_PREFIXES
+    )
+
+
 @functools.cache
 def zipf(word: str) -> float:
     """How common a word is in written English (Zipf scale; 0 for unknown words)."""

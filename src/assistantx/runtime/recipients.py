@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core import english, language
+from assistantx.core.name_reading import NameSlot, is_word_name, read_name
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.task_schema import TaskFrame
@@ -50,13 +51,12 @@ _TITLES = english.words("titles") - {"a", "an", "the", "our"}
 _ROLE_TITLES = _TITLES - {"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
 _PLACES = english.words("place_words") | frozenset({"tray", "pigeonhole", "inbox", "chair"})
 _PRONOUNS = english.words("object_pronouns")
-_COMMON = english.words("common")
 _FILLERS = english.words("courtesy") | frozenset(
     {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
 )
 _AND = frozenset({"and", "or", "plus"})
 _ARTICLES = frozenset({"the", "our", "a", "an"})
-_WORD = re.compile(r"[\w]+(?:['’]s)?")
+_SENTENCE_END = re.compile(r"[.!?;\n]")
 
 
 @dataclass(frozen=True)
@@ -64,15 +64,22 @@ class _Word:
     text: str  # as written, without a possessive 's
     folded: str
     possessive: bool
+    opens: bool  # the first word of a sentence
 
 
 def _tokens(text: str) -> list[_Word]:
+    """The words of a text as the reader's tokenizer splits them (any script, inner
+    apostrophes kept, a possessive 's marked), each with whether it opens a sentence."""
+    flat = text.replace("’", "'")
+    found = list(language.WORD.finditer(flat))
     out = []
-    for m in _WORD.finditer(text):
+    for n, m in enumerate(found):
         raw = m.group(0)
-        possessive = raw.lower().endswith(("'s", "’s"))
+        possessive = raw.lower().endswith("'s")
         bare = raw[:-2] if possessive else raw
-        out.append(_Word(bare, language.fold(bare), possessive))
+        gap = flat[found[n - 1].end() : m.start()] if n else ""
+        opens = n == 0 or bool(_SENTENCE_END.search(gap))
+        out.append(_Word(bare, language.fold(bare), possessive, opens))
     return out
 
 
@@ -111,8 +118,48 @@ def _names(office: Office) -> list[tuple[tuple[str, ...], frozenset[str]]]:
     return sorted(found.items(), key=lambda x: -len(x[0]))
 
 
+def _item_words(office: Office) -> frozenset[str]:
+    """The one-word names of the office's items, singular and plural ("puppet", "puppets")."""
+    found = set()
+    for t in office.item_types:
+        for name in (t.name, *t.synonyms, t.id.replace("_", " ")):
+            key = language.fold(name)
+            if key and " " not in key:
+                found |= {key, language.plural(key)}
+    return frozenset(found)
+
+
+def _name_words(office: Office) -> frozenset[str]:
+    return frozenset(language.fold(w) for p in office.people for w in p.name.split())
+
+
+def _written_as_name(
+    words: list[_Word], n: int, items: frozenset[str], name_words: frozenset[str]
+) -> bool:
+    """Whether a one-word name that is also an English word ("penny", "Ivy's", "Mark") is
+    meant as the person where it stands: the reader's own decision
+    (``core.name_reading.read_name``), so that the guard and the reader agree on who is
+    named in any casing. A reading the reader would ask about counts: the requester's answer
+    settles it for the reader, and the name's role is still checked here."""
+    w = words[n]
+    nxt = words[n + 1] if n + 1 < len(words) and not words[n + 1].opens else None
+    slot = NameSlot(
+        word=w.folded,
+        written=w.text,
+        possessive=w.possessive,
+        opens=w.opens,
+        prev=words[n - 1].folded if n > 0 else "",
+        next=nxt.folded if nxt is not None else "",
+        next_possessive=nxt is not None and nxt.possessive,
+        next_is_item=nxt is not None and nxt.folded in items,
+        next_is_name=nxt is not None and nxt.folded in name_words,
+    )
+    return read_name(slot) != "word"
+
+
 def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
     names = _names(office)
+    items, name_words = _item_words(office), _name_words(office)
     out: list[_Mention] = []
     n = 0
     while n < len(words):
@@ -121,11 +168,11 @@ def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
             span = tuple(w.folded for w in words[n : n + len(key)])
             if span != key:
                 continue
-            first = words[n].text
-            # a name that is also a word counts only when written as a name ("May", not "may")
+            # a name that is also a word counts only where it is read as the person ("to
+            # penny", "May's desk"; not "in May", "the grace period"); a role title is a role
             word = key[0]
-            if len(key) == 1 and not first[:1].isupper() and word not in _ROLE_TITLES:
-                if word in _COMMON | {"may", "will"} or language.is_english_word(word):
+            if len(key) == 1 and word not in _ROLE_TITLES and is_word_name(word):
+                if not _written_as_name(words, n, items, name_words):
                     continue
             hit = _Mention(people, n, n + len(key), words[n + len(key) - 1].possessive)
             break

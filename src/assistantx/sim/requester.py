@@ -25,9 +25,11 @@ assistant's reading, so a wrong reading is corrected rather than confirmed.
 
 Without a task (``assistantx run``: only the words they wrote are known, ``Wish.from_words``),
 the requester still answers the question asked and nothing else: of two options, the one
-whose words they wrote; to "where to?", the place after the "to" they wrote; to an offer, "No,
-thanks." (they asked for what they wrote, and a yes would be a guess at a wish nobody knows);
-to anything else, that they have nothing to add.
+whose words they wrote; to "where to?", the place after the "to" they wrote; to an offer,
+"Yes, please." only when it is what their words ask for (the same people, items and work,
+"your" for their "my": "Shall I get your condition report signed by Robin Okonkwo?" to
+"robin okonkwo needs to sign my condition report"), else "No, thanks." (a yes would be a
+guess at a wish nobody knows); to anything else, that they have nothing to add.
 They never answer as a colleague would ("Yes, I have a stapler"), which read as a yes.
 """
 
@@ -37,11 +39,12 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-from assistantx.core import task_kinds
+from assistantx.core import language, task_kinds
 from assistantx.core.goals import Milestone, parse_milestone
+from assistantx.core.name_reading import is_word_name
 from assistantx.core.office import Office, Person
 from assistantx.core.task_schema import Part
-from assistantx.sim.understanding import mentioned_item_types
+from assistantx.sim.understanding import mentioned_item_types, mentioned_requests
 
 _OFFER = re.compile(
     r"^\s*(?:ok(?:ay)?[,.]?\s+)?(shall|should|do you want me to|would you like me to|may|can|"
@@ -159,7 +162,7 @@ def answer(office: Office, wish: Wish, question: str) -> str:
     """What the requester says to ``question``."""
     options = _options(question)
     if wish.words is not None:
-        return _from_words(wish.words, question, options)
+        return _from_words(office, wish.words, question, options)
     if len(options) >= 2:
         chosen = _choose(office, wish, options)
         if chosen is not None:
@@ -240,20 +243,42 @@ def _is_offer(question: str) -> bool:
 NOTHING_TO_ADD = "Sorry, I don't know more than I wrote."
 
 
-def _from_words(words: str, question: str, options: list[str]) -> str:
+def _from_words(office: Office, words: str, question: str, options: list[str]) -> str:
     """The answer of a requester of whom only the request's words are known."""
     if len(options) >= 2:
         chosen = _option_written(words, options)
         if chosen is not None:
             return chosen
     if _is_offer(question):
-        return "No, thanks."
+        return "Yes, please." if _offer_written(office, words, question) else "No, thanks."
     if _WHERE_TO.search(question.lower()):
         # "courier my form to the federation, please": the place they wrote after "to"
         said = re.search(r"\bto\s+(.+?)(?:,?\s+(?:please|thanks?(?: you)?))?[.!?\s]*$", words)
         if said is not None:
             return f"To {said.group(1)}."
     return NOTHING_TO_ADD
+
+
+_MINE = frozenset({"my", "mine", "our", "ours"})
+
+
+def _offer_written(office: Office, words: str, question: str) -> bool:
+    """Whether the offer ("Shall I get your condition report signed by Robin Okonkwo?") is
+    what the request's own words ask for ("robin okonkwo needs to sign my condition
+    report"): the same people and the same items (at least one), the same work by name (a
+    signature, a service; not "bring" for "sign"), and "your" in the offer exactly when
+    they wrote "my". Anything else, or an offer
+    that names nothing ("Shall I bring you one?"), would be a guess at a wish nobody knows."""
+    offer = re.split(r"(?<=[.!?])\s+", question.strip())[-1]
+    items = set(mentioned_item_types(office, offer))
+    if not items or items != set(mentioned_item_types(office, words)):
+        return False
+    if _people_in(office, offer) != _people_in(office, words):
+        return False
+    if set(mentioned_requests(office, offer)) != set(mentioned_requests(office, words)):
+        return False
+    yours = "your" in _plain_words(offer)
+    return yours == bool(_MINE & set(_plain_words(words)))
 
 
 def _option_written(words: str, options: list[str]) -> str | None:
@@ -379,7 +404,8 @@ def _span(text: str, person: Person) -> tuple[int, int]:
     best = (0, 0)
     for name in (n for n in {person.name, *person.aliases, *person.name.split()} if len(n) > 1):
         for m in re.finditer(rf"(?<!\w){re.escape(name.casefold())}(?!\w)", lowered):
-            if name[:1].isupper() and not re.search(rf"(?<!\w){re.escape(name)}(?!\w)", text):
+            as_word = " " not in name and is_word_name(language.fold(name))
+            if as_word and not re.search(rf"(?<!\w){re.escape(name)}(?!\w)", text):
                 continue  # a name that is also a word counts only when written as a name
             if m.end() - m.start() > best[1] - best[0]:
                 best = (m.start(), m.end())

@@ -25,6 +25,8 @@ OTHER_POSSESSIVES = english.words("other_possessives")
 _OBJECT_STARTS = english.words("object_starts") | {"one", "some", "another"}
 # The words before a person that make them the recipient, the source or the doer.
 _TO = frozenset({"to", "for", "with"})
+# an article opens a noun phrase of its own: a possessive before it owns nothing in it
+_ARTICLES = frozenset({"a", "an", "the", "some", "another", "any"})
 _MEET_AT = frozenset({"to", "at", "for", "on", "by"})
 # "Min needs scissors": the one who needs the item gets it.
 _NEEDS = english.words("need_verbs") | english.words("receive_verbs")
@@ -232,15 +234,22 @@ def clause_roles(
             following = ms[n + 1] if n + 1 < len(ms) else None
             others = [x for x in last_person if x != requester]
             possessive_form = tokens[m.start].word in OTHER_POSSESSIVES
-            if following is not None and following.kind == "item" and possessive_form:
-                continue  # "her stapler": a possessive
+            owns_next = (
+                following is not None
+                and following.kind == "item"
+                and not _article_between(tokens, m, following)
+            )
+            if owns_next and possessive_form:
+                continue  # "her stapler": a possessive ("her a stapler": whom it goes to)
             prev = prev_word(tokens, m.start)
             # "take her my ice pack", "bring her some": she receives (not "forward them to")
             dative = (
                 prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
             )
-            if (prev in ("to", "for") or dative) and not others:
-                raise UnresolvedPronoun(m.text)  # never the requester by default
+            if (prev in ("to", "for") or dative) and len(set(others)) != 1:
+                # never the requester by default, nor the last of two people named ("Thảo's
+                # on the ladder and Ivy's busy, take her a stool": whom?)
+                raise UnresolvedPronoun(m.text)
             if prev in ("to", "for") or dative:
                 roles.add_recipient(others[-1], m.start)
         elif m.kind == "item":
@@ -257,6 +266,8 @@ def owner_of(
     # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
     for k in range(n - 1, max(-1, n - 3), -1):
         p = ms[k]
+        if _article_between(tokens, p, m):
+            break  # "take her a kick stool": "her" is whom it goes to, not whose it is
         if p.kind == "self" and p.possessive:
             return requester
         if p.kind == "person" and p.possessive:
@@ -292,6 +303,11 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
         or roles.recipient_between(0, objects[0].start)
         or default
     )
+
+
+def _article_between(tokens: Sequence[Token], a: Mention, b: Mention) -> bool:
+    """Whether an article stands between two mentions: "her a stool" is two phrases."""
+    return any(t.word in _ARTICLES for t in tokens[a.end : b.start])
 
 
 def _object_start(tokens: Sequence[Token], m: Mention) -> bool:

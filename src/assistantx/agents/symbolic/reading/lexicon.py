@@ -27,6 +27,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.core import english, language, task_kinds
+from assistantx.core.name_reading import NameSlot, is_word_name, read_name
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
 from assistantx.memory.names import TITLES, normalize
@@ -53,16 +54,12 @@ COMMON = english.words("common")
 # Words that open a verb's object: the word before one of them is in a verb's place.
 _VERB_OBJECT_STARTS = english.words("object_starts")
 
-_SUBJECT_PRONOUNS = english.words("subject_pronouns")
-_MONTH_PREPOSITIONS = english.words("month_prepositions")
 # Titles of address, not roles: "Dr. Zhang" does not make "the doctor" Zhang.
 _COURTESY_TITLES = frozenset(
     {"a", "an", "the", "our", "mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
 )
 _POLITE = english.words("polite")
-_DATIVE_VERBS = english.words("dative_verbs")
-# The syntax around a name word that makes it a person, or the ordinary word.
-_PERSON_BEFORE = english.words("person_before")
+# A determiner before a name word makes it the ordinary word ("the grace period").
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
@@ -249,11 +246,15 @@ class Lexicon:
             return word
         if any(_agent_noun(word, cue) for cue in self.operation_words):
             return word  # "recharger": a device named after the service, not the service
-        if verb_slot:
+        # an English word or word form ("reprint", "rebacking") is never made a task verb
+        is_word = language.is_word_form(word)
+        if verb_slot and not is_word:
             verbs = language.closest(word, self.cue_words)
             if len(verbs) == 1 or (verbs and _one_verb(verbs)):  # "print" or "printed"
                 return min(verbs, key=len)
         close = language.closest(word, self.vocabulary)
+        if is_word:
+            close = [c for c in close if c not in self.cue_words]
         if len(close) == 1 or (close and all(c in self.name_words for c in close)):
             return close[0]
         return word
@@ -407,12 +408,33 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
+        if w in self.cue_words and self._noun_use(tokens, i):
+            return Mention("word", i, i + 1, (w,), t.possessive, t.text)  # "the print run"
         if w in self.cue_words:
             kinds = tuple(k for k, words in self.cues.items() if w in words)
             return Mention("cue", i, i + 1, kinds, t.possessive, t.text)
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
+
+    def _noun_use(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "for the printing job", "my rebind queue": a service's verb between a determiner
+        (or a possessive) and a noun the office does not know modifies that noun; it asks
+        for no work ("get the printing done" still does: no noun follows)."""
+        if tokens[i].word not in self.operation_words or i == 0 or tokens[i].opens:
+            return False
+        before = tokens[i - 1]
+        if before.word not in _MODIFIER_DETERMINERS and not before.possessive:
+            return False
+        if i + 1 >= len(tokens) or tokens[i + 1].opens or tokens[i].possessive:
+            return False
+        nxt = tokens[i + 1].word
+        return (
+            nxt not in COMMON
+            and not self._known(nxt)
+            and language.is_noun(nxt)
+            and not language.is_finite_verb(nxt)
+        )
 
     def _person_ids(
         self, tokens: Sequence[Token], idx: list[int], ids: set[str]
@@ -428,58 +450,28 @@ class Lexicon:
         return tuple(sorted(found))
 
     def name_reading(self, tokens: Sequence[Token], i: int) -> Reading:
-        """Whether a one-word name means the person, the ordinary English word, or either.
-
-        Only a name that is also an ordinary English word (the dictionary and word frequency
-        say so, ``language.is_english_word``) has a word reading. Syntax decides: "to Mark",
-        "Mark's", "give mark a pen", "Pat hurt her hand" make a person; "the grace period",
-        "to be honest", "Will you", "in May", "Mark my form" make the word. When both
-        agree nothing, a capital letter makes the person; when they disagree, or a
-        capitalized word sits where only the word fits, the reading is asked."""
+        """Whether a one-word name means the person, the ordinary English word, or either:
+        ``core.name_reading.read_name`` (the consent guard reads names with it too), unless
+        the word was a typo's correction (then only a name) or the requester already said
+        which they meant."""
         t = tokens[i]
-        w = t.word
-        if not (language.is_english_word(w) or w in COMMON) or t.corrected:
+        if t.corrected or not is_word_name(t.word):
             return "person"
-        if w in self.chosen:
-            return self.chosen[w]
-        prev = tokens[i - 1].word if i > 0 and not t.opens else ""
-        nxt_token = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
-        nxt = nxt_token.word if nxt_token is not None else ""
-        capital = t.text[:1].isupper()
-        modal = nxt in _SUBJECT_PRONOUNS and (t.opens or not prev)  # "Will you", "May I"
-        person = not modal and (
-            t.possessive
-            or prev in _PERSON_BEFORE
-            or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or nxt in self.items))
-            or ((t.opens or not prev) and (nxt in ("is", "was", "has") or _finite(nxt)))
+        if t.word in self.chosen:
+            return self.chosen[t.word]
+        nxt = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
+        slot = NameSlot(
+            word=t.word,
+            written=t.text,
+            possessive=t.possessive,
+            opens=t.opens,
+            prev=tokens[i - 1].word if i > 0 else "",
+            next=nxt.word if nxt is not None else "",
+            next_possessive=nxt is not None and nxt.possessive,
+            next_is_item=nxt is not None and nxt.word in self.items,
+            next_is_name=nxt is not None and nxt.word in self.name_words,
         )
-        if language.is_month(w) and not t.possessive:
-            day = language.is_day_number(prev) or language.is_day_number(nxt)
-            if prev in _MONTH_PREPOSITIONS or day or prev == "of":
-                return "word"  # "by May", "in June", "May 3rd", "the 3rd of May": a date
-            if prev == "for":
-                return "ask"  # "print the rota for May": for her, or the month's rota?
-        word = (
-            modal
-            or prev in _WORD_BEFORE
-            or ((t.opens or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS)
-        )
-        # "grace period": a noun right after it makes a compound
-        compound = (
-            nxt_token is not None
-            and not nxt_token.possessive
-            and nxt not in COMMON
-            and nxt not in self.name_words
-            and language.is_noun(nxt)
-            and not _finite(nxt)
-        )
-        if person and word:
-            return "ask"
-        if person:
-            return "person"
-        if word or compound:
-            return "ask" if capital and not t.opens else "word"
-        return "person" if capital else "word"
+        return read_name(slot)
 
     def word_phrase(self, tokens: Sequence[Token], i: int) -> str:
         """The words a name word would be part of if meant as the ordinary word: "the grace
@@ -517,10 +509,6 @@ def _one_verb(forms: list[str]) -> bool:
 
 
 _INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
-
-
-def _finite(word: str) -> bool:
-    return bool(word) and language.is_finite_verb(word)
 
 
 def key_of(name: str) -> str:

@@ -65,6 +65,7 @@ from assistantx.agents.symbolic.reading.operations import (
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
+from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.unknown_items import unknown_item
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -230,6 +231,11 @@ class InstructionParser:
             if frame.question is not None and _asks_who(frame.question) and _is_me(answer):
                 # "Who should get your reel?" "Me.": the requester, not a new request
                 frame = self.parse(text, requester, to_self=True)
+                continue
+            kept = chosen_kept(self.screen.terms, text, answer)
+            if kept is not None:  # "do you mean the lunch box or the worn book?"
+                text = kept
+                frame = self.parse(text, requester)
                 continue
             chosen = self._chosen_reading(text, answer)
             if chosen:

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.core import english, language
 
 QuestionKind = Literal["polite", "info"]
@@ -52,6 +53,7 @@ _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
 _AWAY = english.words("guard_away")
 _NEED = english.words("need_verbs")
+_OWN = frozenset({"my", "our"})  # the requester's own thing
 _IN_PLACE = frozenset({"in", "at", "inside"})
 _RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
 _SUBJECTS = english.words("statement_subjects")
@@ -567,6 +569,22 @@ class SpeechActs:
         """ "... I could borrow", "... lend me one", "... for me": the asker wants it."""
         joined = " ".join(w)
         return bool(set(w) & _BORROW) or " for me" in f" {joined}" or " me " in f" {joined} "
+
+    def owner_work(self, words: list[str]) -> bool:
+        """ "Robin needs to sign my condition report", "P has to stamp our form": someone
+        named, obliged to do a person's work on the speaker's own thing, whatever the
+        obligation phrase ("needs to", "has to", "must", "should"); not one told as past
+        ("had to sign"). Said alone, it is the owner's request for that work."""
+        w = content(words)
+        for at in range(1, min(len(w), 4)):
+            if not all(self._named(x) for x in w[:at]):
+                return False
+            verb = obliged_verb(w, at)
+            if verb is not None:
+                past = "had" in w[at:verb]  # "Robin had to sign my report": told as done
+                work = w[verb] in PERSON_WORK and bool(_OWN & set(w[verb + 1 : verb + 3]))
+                return work and not past
+        return False
 
     def _named(self, word: str) -> bool:
         return word in self.lex.name_words or word in self.lex.people

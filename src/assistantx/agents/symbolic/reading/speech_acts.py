@@ -41,6 +41,9 @@ class Acts:
     defers: bool  # the piece puts its need off ("not now, later")
     future_need: bool  # a need that may come later, in a message that puts it off
     later: bool  # names a later time ("this afternoon")
+    # "Robin needs to sign my report": someone's work by hand on the speaker's own thing;
+    # said alone in a message, the owner's request for that work (``owner_work_asked``)
+    owner_work: bool = False
 
 
 def without_fillers(words: list[str]) -> list[str]:
@@ -76,6 +79,7 @@ def acts_reader(
             defers=speech.defers(words),
             future_need=speech.future_need(words, deferred),
             later=speech.later(words),
+            owner_work=speech.owner_work(words),
         )
 
     return read

@@ -23,6 +23,8 @@ fact            "Wang is away", "Zhang is in the meeting room",                 
 question        "who has a tape measure?", "is the printer working?" (not "could    answered;
                 you bring me ...?", a request)                                      "Shall I?"
 statement       "my laptop cable is too short", "I spilled my tea"                  context
+which           "Jürgen's curry from the staff fridge", where he keeps several      asks which
+                things (one: the rewrites name it)
 unsupported     a service the office does not offer ("scan my contract",            declines
                 "make me a cup of tea")
 ==============  ==================================================================  ==========
@@ -43,13 +45,14 @@ removed from the original text by their character spans, never re-joined, so wha
 parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
-``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``, ``own_need``,
-``question``, ``statement``, ``whereabouts``, ``service``), tried in the order of ``rules``;
-each reads the piece's lexicon reading (``Piece.lexed``) and speech acts (``Piece.acts``, the
-``speech_acts`` stage before the screen), never its text again. ``request_screen`` runs in
-three steps the parser calls in turn: ``verdicts`` (the pieces judged: ``Spoken``),
-``request`` (what is left, ``rewrites``: ``Request``), and, after the readings and frames,
-``decide`` (the message as a whole, ``answer``: ``Screened``); ``judge`` is the last stage.
+``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``,
+``own_need``, ``question``, ``statement``, ``whereabouts``, ``kept``, ``service``), tried in
+the order of ``rules``; each reads the piece's lexicon reading (``Piece.lexed``) and speech
+acts (``Piece.acts``, the ``speech_acts`` stage before the screen), never its text again.
+``request_screen`` runs in three steps the parser calls in turn: ``verdicts`` (the pieces
+judged: ``Spoken``), ``request`` (what is left, ``rewrites``: ``Request``), and, after the
+readings and frames, ``decide`` (the message as a whole, ``answer``: ``Screened``); ``judge``
+is the last stage.
 """
 
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Screened

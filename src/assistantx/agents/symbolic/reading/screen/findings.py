@@ -19,6 +19,7 @@ Verdict = Literal[
     "negated",
     "destructive",
     "unplaced",
+    "which",
     "fact",
     "question",
     "statement",

@@ -14,6 +14,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding, Request,
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
+from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.speech_acts import acts_reader
@@ -76,8 +77,10 @@ class RequestScreen:
         if declines:
             out.decline, out.outcome = declines[0].message, "unachievable"
             return out
-        unplaced = [f for f in live if f.verdict == "unplaced"]
-        if unplaced:  # a thing told to go where nothing of the office is: asked, never moved
+        unplaced = [f for f in live if f.verdict in ("unplaced", "which")]
+        # a thing told to go where nothing of the office is, or one of several things kept
+        # for its owner: asked, never moved
+        if unplaced:
             out.question = unplaced[0].message
             return out
         left = spoken.left
@@ -94,8 +97,11 @@ class RequestScreen:
                 return out
             if live or withdrawn:
                 return answered(out, live, withdrawn=bool(withdrawn))
-        if any(p.acts.need for p in kept) and not any(p.acts.request for p in kept):
-            out.confirm = True  # "Min needs scissors.": restate and ask before moving
+        needs = [p for p in kept if p.acts.need]
+        if needs and not any(p.acts.request for p in kept):
+            # "Min needs scissors.": restate and ask before moving; not "Robin needs to sign
+            # my report.", its owner's request for the signature
+            out.confirm = not all(owner_work_asked(spoken.msg, p) for p in needs)
         out.evidence += request.evidence
         out.text = request.text
         return out

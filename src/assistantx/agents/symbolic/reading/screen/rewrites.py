@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
@@ -21,11 +22,13 @@ def rewrite(
     evidence: list[Evidence] = []
     text, found = purposes(terms, text)
     evidence += found
+    text, found = kept_things(terms, msg, text)
+    evidence += found
     for phrase in NEED_PHRASES:  # "Chen is looking for a pen": Chen needs a pen
         spaced = r"[\s']*".join(re.escape(w) for w in phrase)
         text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
     subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
-    text = name_pronouns(terms, text, hints, subjects)
+    text = name_pronouns(terms, msg, text, hints, subjects)
     text, found = dangling_possessives(terms, msg, text)
     evidence += found
     said = [
@@ -61,6 +64,20 @@ def rewrite(
             text, found = container_of(terms, text, thing)
             evidence += found
     return text, evidence
+
+
+def kept_things(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
+    """ "bring me Jürgen's leftover curry from the staff fridge": a thing of a person's the
+    office has no word for, said to be at a facility (or a place) that keeps one item of
+    theirs, is that item ("Jürgen's lunch box"); several kept there are asked about by the
+    screen's ``kept`` rule. Whose it is stays theirs: the owner is asked before it moves."""
+    found = kept_thing(terms, msg.lexed, text)
+    if found is None or len(found.kept) != 1:
+        return text, []
+    name = terms.office.item_type(found.kept[0]).name
+    meaning = f"{terms.office.person(found.owner).name}'s {name} (kept at {found.where})"
+    evidence = [Evidence(words=text[found.start : found.end], meaning=meaning)]
+    return text[: found.start] + name + text[found.end :], evidence
 
 
 def made_from(terms: Terms, item: str, stated: list[str]) -> str | None:
@@ -129,22 +146,45 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     return pattern.sub(whole, text), evidence
 
 
-def name_pronouns(terms: Terms, text: str, hints: list[Hint], subjects: set[str]) -> str:
+def name_pronouns(
+    terms: Terms, msg: Message, text: str, hints: list[Hint], subjects: set[str]
+) -> str:
     """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
     pack": with the fact taken out, a pronoun that can only mean the one person it named
-    gets the name back."""
+    gets the name back. Where another person is named before it ("Thảo's on the ladder and
+    Ivy's free, take her a stool"), whom it goes to is left to the frames, which ask; whose
+    it is ("bring Zhou her stapler. It's Zhang Wei's stapler") is still the one the facts
+    name."""
     people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
     people |= subjects
     if len(people) != 1:
         return text
     name = terms.office.person(next(iter(people))).name
+    others_before = _named_before_pronoun(msg) - people
 
     def named(match: re.Match[str]) -> str:
         word, gap, following = match.group(1).lower(), match.group(2), match.group(3)
         possessive = word == "his" or (word == "her" and normalize(following) in terms.lex.items)
+        if others_before and not possessive:
+            return match.group(0)
         return (f"{name}'s" if possessive else name) + gap + following
 
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
+
+
+_BACK_PRONOUNS = frozenset({"him", "his", "her"})
+
+
+def _named_before_pronoun(msg: Message) -> set[str]:
+    """Everyone a name before the message's first "him/his/her" may mean."""
+    tokens = msg.lexed.tokens
+    first = next((n for n, t in enumerate(tokens) if t.word in _BACK_PRONOUNS), len(tokens))
+    return {
+        person
+        for m in msg.lexed.mentions
+        if m.kind == "person" and m.start < first
+        for person in m.ids
+    }
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").

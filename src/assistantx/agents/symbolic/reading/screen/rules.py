@@ -10,6 +10,7 @@ from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
+from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
@@ -42,5 +43,6 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("question", question),
     ("statement", statement),
     ("statement", whereabouts),
+    ("which", several_kept),
     ("unsupported", unsupported),
 )

@@ -8,6 +8,7 @@ import re
 
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -15,6 +16,8 @@ from assistantx.core import language
 
 
 def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if kept_thing(terms, msg.lexed, piece.text) is not None:
+        return None  # "Jürgen's soup from the kitchen": his thing kept there, no service
     found = unsupported_service(terms, piece)
     if found is not None and own_doing(terms, piece) and asked_elsewhere(terms, msg, piece):
         # "I need to pay the bill. Could you bring me a calculator?": what the speaker

@@ -18,8 +18,12 @@ from assistantx.core.english import words as english_words
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     if obligation_asked(msg, piece):
         return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
+    if owner_work_asked(msg, piece):
+        return None  # "Robin has to sign my condition report.": its owner asks for it
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
+    if not piece.asks and verbless_aside(terms, msg, piece):
+        return Finding("statement", piece, "an aside beside the request, context only")
     if piece.asks or not piece.acts.statement:
         return None
     named = (
@@ -45,6 +49,41 @@ def obligation_asked(msg: Message, piece: Piece) -> bool:
     return bool(later) and not any(
         m.kind in ("item", "cue", "person", "facility") for p in later for m in p.lexed.mentions
     )
+
+
+def owner_work_asked(msg: Message, piece: Piece) -> bool:
+    """ "Robin has to sign my condition report before it goes back": someone's work by hand
+    on the speaker's own thing, in a message that asks nothing else, is the owner's request
+    for that work. Beside a request of its own ("..., can you bring me a loupe") it is the
+    reason for that request, context."""
+    if not piece.acts.owner_work:
+        return False
+    return not any(p.acts.request for p in msg.pieces if p is not piece)
+
+
+# what a verb's object may open with: with one of these after it, the word is a verb
+_OBJECT_OPENERS = english_words("object_starts") | frozenset({"me", "us", "it", "them", "one"})
+
+
+def verbless_aside(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "need the kick stool from Page's desk, reserve shelf again": a trailing fragment
+    after a request whose first word, a service's verb or any other verb, is followed by a
+    bare noun the office does not know ("reserve shelf", "print room"), and that names
+    nothing of the office, is a noun compound said in passing, not a second request."""
+    if not any(p.acts.request for p in msg.pieces if p.end <= piece.start):
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    if any(m.kind not in ("word", "cue") for m in mentions) or len(tokens) < 2:
+        return False
+    head, noun = tokens[0].word, tokens[1].word
+    verb = head in terms.lex.cue_words or head in terms.en.service_verbs
+    if not verb or noun in _OBJECT_OPENERS or noun in terms.office_words:
+        return False
+    if tokens[1].possessive or not language.is_noun(noun) or language.is_finite_verb(noun):
+        return False
+    # nothing after the compound but words that are no object either ("again", "today")
+    rest = [t.word for t in tokens[2:]]
+    return not any(language.is_noun(w) and w not in terms.en.courtesy for w in rest)
 
 
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:

@@ -1,0 +1,98 @@
+"""Whether a one-word name that is also an English word means the person or the word.
+
+A colleague's given name may be an ordinary word ("Penny", "Ivy", "Mark", "Grace"); written
+in lower case ("take it to penny", "drop it on ivy's desk") it is still the person when the
+syntax around it says so. The reader's lexicon and the runtime's consent guard both decide
+with this one function, so the guard never refuses a hand-over to the person the reader read
+(nor lets through one to a word the reader never took for a person).
+
+Syntax decides: "to Mark", "Mark's", "give mark a pen", "Pat hurt her hand" make a person;
+"the grace period", "to be honest", "Will you", "in May", "Mark my form" make the word. When
+neither says anything a capital letter makes the person; when they disagree, or a capitalized
+word sits where only the word fits, the reading is "ask".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from assistantx.core import english, language
+
+NameReading = Literal["person", "word", "ask"]
+
+_COMMON = english.words("common")
+_PERSON_BEFORE = english.words("person_before")
+_WORD_BEFORE = english.words("word_before")
+_DATIVE_VERBS = english.words("dative_verbs")
+_VERB_OBJECT_STARTS = english.words("object_starts")
+_SUBJECT_PRONOUNS = english.words("subject_pronouns")
+_MONTH_PREPOSITIONS = english.words("month_prepositions")
+_POLITE = english.words("polite")
+
+
+@dataclass(frozen=True)
+class NameSlot:
+    """A one-word name where it stands: the word (folded), as written, and its neighbours in
+    the same sentence (folded; "" at a sentence's edge)."""
+
+    word: str
+    written: str
+    possessive: bool = False
+    opens: bool = False  # the first word of a sentence
+    prev: str = ""
+    next: str = ""
+    next_possessive: bool = False
+    next_is_item: bool = False  # the next word names one of the office's items
+    next_is_name: bool = False  # the next word is a word of someone's name
+
+
+def is_word_name(word: str) -> bool:
+    """Whether a (folded) name word is also an ordinary English word ("penny", "ivy", "may"):
+    only such a name has a word reading at all."""
+    return language.is_english_word(word) or word in _COMMON
+
+
+def read_name(slot: NameSlot) -> NameReading:
+    """The reading of a one-word name: the person, the ordinary word, or ask which."""
+    w = slot.word
+    if not is_word_name(w):
+        return "person"
+    prev = "" if slot.opens else slot.prev
+    nxt = slot.next
+    capital = slot.written[:1].isupper()
+    modal = nxt in _SUBJECT_PRONOUNS and (slot.opens or not prev)  # "Will you", "May I"
+    finite_next = bool(nxt) and language.is_finite_verb(nxt)
+    person = not modal and (
+        slot.possessive
+        or prev in _PERSON_BEFORE
+        or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or slot.next_is_item))
+        or ((slot.opens or not prev) and (nxt in ("is", "was", "has") or finite_next))
+    )
+    if language.is_month(w) and not slot.possessive:
+        day = language.is_day_number(prev) or language.is_day_number(nxt)
+        if prev in _MONTH_PREPOSITIONS or day or prev == "of":
+            return "word"  # "by May", "in June", "May 3rd", "the 3rd of May": a date
+        if prev == "for":
+            return "ask"  # "print the rota for May": for her, or the month's rota?
+    word = (
+        modal
+        or prev in _WORD_BEFORE
+        or ((slot.opens or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS)
+    )
+    # "grace period": a noun right after it makes a compound
+    compound = (
+        bool(nxt)
+        and not slot.next_possessive
+        and nxt not in _COMMON
+        and not slot.next_is_name
+        and language.is_noun(nxt)
+        and not finite_next
+    )
+    if person and word:
+        return "ask"
+    if person:
+        return "person"
+    if word or compound:
+        return "ask" if capital and not slot.opens else "word"
+    return "person" if capital else "word"
