@@ -19,6 +19,7 @@ from assistantx.core import language
 # What ends a destination: a sentence or clause end, or a courtesy word after it.
 _END_MARKS = frozenset(".!?;,\n")
 _END_WORDS = frozenset({"please", "pls", "thanks", "thank", "thx", "asap", "today", "now"})
+_TAIL_WORDS = 3  # the town (and postcode) after an address's comma
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
 # The words that name a service as the means of sending ("send it to the council *by* courier").
 _MEANS = frozenset({"by", "via"})
@@ -95,7 +96,13 @@ def find_outside(
     if to is not None and to + 1 < len(tokens):
         start = end = to + 1
         stop = means if means is not None and means > to else len(tokens)
-        while end < stop and not (end > start and _ends(gaps[end])):
+        while end < stop:
+            if end > start and _ends(gaps[end]):
+                more = _address_tail(tokens, gaps, start, end, stop)
+                if more == end:
+                    break
+                end = more
+                continue
             if words[end] in _END_WORDS:
                 break
             end += 1
@@ -108,6 +115,33 @@ def find_outside(
         if phrase is None:
             start = end = None
     return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
+
+
+def _address_tail(
+    tokens: Sequence[Token], gaps: Sequence[str], start: int, end: int, stop: int
+) -> int:
+    """Where a destination that is an address goes on past the comma at ``end`` ("Mrs
+    Abernethy at 14 Rosebery Crescent, Edinburgh"): only after a comma, only when the words so
+    far look like an address (a house number, or a person "at" a place), and only over a short
+    part that is all names or codes up to the clause's end ("Edinburgh", "Leeds LS1 4DY"); a
+    clause of its own after the comma ("it has to go today") ends the destination. ``end``
+    back when the destination stops here."""
+    if gaps[end].strip() != ",":
+        return end
+    so_far = tokens[start:end]
+    if not any(any(c.isdigit() for c in t.text) for t in so_far) and not any(
+        t.word == "at" for t in so_far[1:]
+    ):
+        return end
+    k = end
+    while k < stop and (k == end or not _ends(gaps[k])) and tokens[k].word not in _END_WORDS:
+        k += 1
+    part = tokens[end:k]
+    if not part or len(part) > _TAIL_WORDS:
+        return end
+    if all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part):
+        return k
+    return end
 
 
 def _to_before(words: Sequence[str], gaps: Sequence[str], means: int) -> int | None:
