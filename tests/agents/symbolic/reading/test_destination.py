@@ -85,3 +85,36 @@ def test_an_address_goes_on_past_its_comma_to_the_clause_end(text: str, where: s
 def test_a_comma_before_another_clause_still_ends_the_destination(text: str, where: str) -> None:
     found = _outside(text)
     assert found is not None and found.phrase == where
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        (
+            "the parcel needs to go out to the Kensington office, can you courier it",
+            "the Kensington office",
+        ),
+        (
+            "my form needs to go off to 3 Quay Street, Leeds. Can you fax it?",
+            "3 Quay Street, Leeds",
+        ),
+    ],
+)
+def test_a_statement_before_an_it_request_says_where_it_goes(text: str, where: str) -> None:
+    found = _outside(text)
+    assert found is not None and found.phrase == where
+    assert found.end is not None and found.end <= found.verb_start
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I'm going to the bank, can you courier it",  # where the person goes
+        "the parcel needs to go to the bank, can you courier my form",  # its own object
+        "it needs to go to the bank. It's late. Can you fax it?",  # two sentences back
+        "the form needs signing, can you fax it",  # no "to" at all
+    ],
+)
+def test_no_statement_destination_without_it_or_from_a_person(text: str) -> None:
+    found = _outside(text)
+    assert found is not None and found.phrase is None

@@ -21,6 +21,12 @@ _END_MARKS = frozenset(".!?;,\n")
 _END_WORDS = frozenset({"please", "pls", "thanks", "thank", "thx", "asap", "today", "now"})
 _TAIL_WORDS = 3  # the town (and postcode) after an address's comma
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
+# The object pronouns of a request whose item (and destination) a statement before it named.
+_PRONOUNS = frozenset({"it", "them", "this", "that"})
+# Subjects that make a statement of going a person's own ("I'm going to the bank").
+_PERSONS = frozenset({"i", "im", "we", "you", "he", "she", "they", "me", "us", "him", "her"})
+# Words of going or sending before a statement's destination ("needs to go out *to* ...").
+_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
 # The words that name a service as the means of sending ("send it to the council *by* courier").
 _MEANS = frozenset({"by", "via"})
 
@@ -91,11 +97,16 @@ def find_outside(
     means = verb_start - 1 if verb_start and words[verb_start - 1] in _MEANS else None
     if to is None and means is not None:
         to = _to_before(words, gaps, means)  # "send my agreement to the council by courier"
+    stop = len(tokens)
+    if to is None and means is None and _pronoun_object(words, verb_end):
+        to = _stated_before(words, gaps, verb_start)  # "... needs to go out to X, can you fax it"
+        stop = verb_start  # the destination stops where the request's clause begins
     start = end = None
     phrase = None
     if to is not None and to + 1 < len(tokens):
         start = end = to + 1
-        stop = means if means is not None and means > to else len(tokens)
+        if means is not None and means > to:
+            stop = means
         while end < stop:
             if end > start and _ends(gaps[end]):
                 more = _address_tail(tokens, gaps, start, end, stop)
@@ -142,6 +153,37 @@ def _address_tail(
     if all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part):
         return k
     return end
+
+
+def _pronoun_object(words: Sequence[str], verb_end: int) -> bool:
+    """Whether the send-out verb's object is a pronoun ("can you courier *it*"): the item was
+    named before, in a statement that may also say where it goes."""
+    return verb_end < len(words) and words[verb_end] in _PRONOUNS
+
+
+def _stated_before(words: Sequence[str], gaps: Sequence[str], verb_start: int) -> int | None:
+    """The "to" of a statement before the request that says where the item goes ("the parcel
+    ... needs to go out *to* the sister hotel, can you courier it"): the last "to" after a
+    word of going in an earlier clause of its sentence or the one before (never an infinitive's
+    "to": "needs *to* go")."""
+    sentences = 0
+    for k in range(verb_start - 1, 0, -1):
+        if any(c in ".!?;\n" for c in gaps[k + 1]):
+            sentences += 1
+            if sentences > 1:
+                return None  # only the sentence just before says what "it" is
+        if words[k] == "to" and words[k - 1] in _GOING and not _ends(gaps[k]):
+            return None if _person_goes(words, gaps, k) else k
+    return None
+
+
+def _person_goes(words: Sequence[str], gaps: Sequence[str], to: int) -> bool:
+    """Whether the clause of the statement's "to" is about a person going ("*I*'m going to
+    the bank, can you fax it"): then its place is where they go, never where the item goes."""
+    k = to - 1
+    while k > 0 and not _ends(gaps[k]):
+        k -= 1
+    return any(w in _PERSONS for w in words[k:to])
 
 
 def _to_before(words: Sequence[str], gaps: Sequence[str], means: int) -> int | None:

@@ -1,0 +1,96 @@
+"""Blind round 12's reader classes, by mechanism, on sentences of our own against the default
+office with a courier service that sends a document outside (the round's own office and
+sentences were never read)."""
+
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+import pytest
+import yaml
+from symbolic_run import run_instruction
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
+from assistantx.core.task_schema import TaskFrame
+
+
+@functools.cache
+def _courier_office() -> Office:
+    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw["operations"].append(
+        {
+            "id": "courier",
+            "name": "courier",
+            "verbs": ["courier", "post"],
+            "input": "document",
+            "sends_out": True,
+            "destination_asked": "the postal address",
+        }
+    )
+    for f in raw["facilities"]:
+        if f["id"] == "printer":
+            f["operations"] = [*f["operations"], "courier"]
+    return parse_office(raw)
+
+
+@functools.cache
+def _parser() -> InstructionParser:
+    return InstructionParser(_courier_office())
+
+
+def _frame(text: str, who: str = "lee") -> TaskFrame:
+    return _parser().parse(text, who)
+
+
+def _sent(frame: TaskFrame) -> list[tuple[str | None, str | None, str | None]]:
+    return [(t.item, t.operation, t.destination) for t in frame.tasks]
+
+
+# -- 2. a statement says where the item goes, then "can you <send-out verb> it" -------------
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        (
+            "the document in the printer needs to go out to the county tax office, can you"
+            " courier it",
+            "the county tax office",
+        ),
+        (
+            "my document needs to go off to 9 Mill Lane, Bath, could you post it?",
+            "9 Mill Lane, Bath",
+        ),
+        ("the document needs to go over to Harlow & Sons, can you courier it", "Harlow & Sons"),
+    ],
+)
+def test_the_statement_before_the_request_says_where_it_goes(text: str, where: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert _sent(frame) == [("document", "courier", where)]  # once, not once per mention
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I'm going to the bank, can you courier it",  # the person goes there, not the item
+        "she needs to go to the bank, can you courier my document",  # no "it" to refer back
+    ],
+)
+def test_a_place_someone_goes_or_a_far_statement_is_no_destination(text: str) -> None:
+    frame = _frame(text)
+    assert not [t for t in frame.tasks if t.destination is not None]
+
+
+async def test_the_courier_is_told_the_statements_destination() -> None:
+    text = (
+        "the document in the printer needs to go out to the county tax office, can you courier it"
+    )
+    run = await run_instruction(_courier_office(), "lee", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    [sent] = run.sim.world.sent_out()
+    assert sent.detail["item"] == "document:lee"
+    assert "courier it to the county tax office." in sent.detail["told"]
+    assert run.stm.trace.summary.count("the county tax office") == 1
