@@ -94,3 +94,60 @@ async def test_the_courier_is_told_the_statements_destination() -> None:
     assert sent.detail["item"] == "document:lee"
     assert "courier it to the county tax office." in sent.detail["told"]
     assert run.stm.trace.summary.count("the county tax office") == 1
+
+
+# -- 3. "my <word the office does not know>" for the requester's one item of the kind --------
+
+
+@functools.cache
+def _permit_office() -> Office:
+    """The default office where Lee also owns a signable permit (two signable papers) and
+    Mao owns nothing signable."""
+    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw["item_types"].append(
+        {"id": "permit", "name": "permit", "kind": "personal", "signable": True}
+    )
+    for p in raw["people"]:
+        if p["id"] == "lee":
+            p["owns"] = [*p["owns"], {"type": "permit"}]
+        if p["id"] == "mao":
+            p["owns"] = [o for o in p["owns"] if o["type"] != "document"]
+    return parse_office(raw)
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("Please ask Mao to sign my letter to the owners.", "sign"),
+        ("please get my letter signed by Mao", "sign"),
+        ("could Mao stamp my memo", "seal"),
+    ],
+)
+def test_my_unknown_paper_is_my_one_signable_item(text: str, kind: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.item, t.owner) for t in frame.tasks] == [(kind, "document", "lee")]
+
+
+@pytest.mark.parametrize(
+    ("text", "who"),
+    [
+        ("Please ask Mao to sign my letter to the owners.", "lee"),  # a document and a permit
+        ("Please ask Lee to sign my letter.", "mao"),  # nothing of Mao's is signable
+        ("please ask Mao to sign the letter", "lee"),  # not said to be the requester's
+        ("ask Mao to sign my letter and my memo", "lee"),  # two unknown things
+    ],
+)
+def test_several_or_no_fitting_items_still_ask_which(text: str, who: str) -> None:
+    frame = InstructionParser(_permit_office()).parse(text, who)
+    assert not frame.tasks and frame.question is not None
+    assert frame.question.startswith("Which item do you mean")
+
+
+async def test_the_one_signable_item_is_named_to_the_signer_and_in_the_outcome() -> None:
+    run = await run_instruction(_courier_office(), "lee", "Please ask Mao to sign my letter")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert "your document was signed by Mao Jun" in run.stm.trace.summary
+    assert run.sim.world.holder["document:lee"] == "lee" or run.sim.world.check(
+        {"signed": "document:lee"}
+    )
