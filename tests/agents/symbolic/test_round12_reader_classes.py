@@ -151,3 +151,43 @@ async def test_the_one_signable_item_is_named_to_the_signer_and_in_the_outcome()
     assert run.sim.world.holder["document:lee"] == "lee" or run.sim.world.check(
         {"signed": "document:lee"}
     )
+
+
+# -- 4. a question about a facility's state, then the problem behind it -------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "is the printer working? guest says his printout won't come out",
+        "is the printer working? Kim says her printout won't come out",
+        "is the microwave free? a guest's lunch is still cold",
+        "is the coffee machine broken? it keeps leaking",
+    ],
+)
+async def test_a_facility_question_with_a_problem_is_answered_in_words(text: str) -> None:
+    run = await run_instruction(_courier_office(), "lee", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert (
+        "As far as I know the" in run.stm.trace.summary and "I did nothing" in run.stm.trace.summary
+    )
+    assert not [r for r in run.stm.trace.actions() if r.action.type in ("send_qr", "move")]
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("is the printer working? please print my file", "print"),
+        ("is the coffee machine on? I need a coffee", "produce"),
+    ],
+)
+def test_a_request_after_the_question_is_still_a_request(text: str, kind: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [t.kind for t in frame.tasks] == [kind]
+
+
+def test_a_third_persons_need_after_the_question_is_still_offered() -> None:
+    """Near-miss: a need said of a colleague is not a problem report; it is offered as before."""
+    frame = _frame("is the printer working? Mao needs his printout")
+    assert frame.question is not None and frame.question.startswith("Shall I print")
