@@ -127,3 +127,32 @@ def test_only_the_send_out_service_verb_makes_a_destination_outside() -> None:
     assert [(t.operation, t.destination) for t in sent.tasks] == [("courier", "Harlow & Sons Ltd")]
     asked = parser.parse("send my slides to Yang", "lee")
     assert asked.tasks == [] and asked.question and "Yang" in asked.question
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        (
+            "fax my document to Mrs Abernethy at 14 Rosebery Crescent, Edinburgh please",
+            "Mrs Abernethy at 14 Rosebery Crescent, Edinburgh",
+        ),
+        ("please fax my document to 3 Quay Street, Leeds LS1 4DY", "3 Quay Street, Leeds LS1 4DY"),
+    ],
+)
+async def test_who_sends_it_is_told_the_whole_address_past_its_comma(
+    fax: Office, text: str, where: str
+) -> None:
+    """A person at an address with the town after a comma (C1 of round 12): the sender's
+    question and code name all of it, and the outcome says it back."""
+    run = await run_instruction(fax, "lee", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    question, code = [m.text for m in run.sim.messenger.sent if m.chat.id == "mao"]
+    assert f"to {where}?" in question and f"fax it to {where}." in code
+    assert f"your document was faxed to {where}" in run.stm.trace.summary
+
+
+async def test_a_clause_after_the_address_comma_is_not_sent_to(fax: Office) -> None:
+    run = await run_instruction(fax, "lee", "fax my document to 9 Mill Lane, it has to go today")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert "your document was faxed to 9 Mill Lane" in run.stm.trace.summary
+    assert "it has to go" not in " ".join(m.text for m in run.sim.messenger.sent)

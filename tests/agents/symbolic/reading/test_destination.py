@@ -50,3 +50,71 @@ def test_the_spans_are_the_tokens_of_the_verb_and_the_place() -> None:
     assert found is not None
     assert (found.operation, found.verb_start, found.verb_end) == ("courier", 1, 3)
     assert (found.start, found.end) == (6, 8) and found.holds(7) and not found.holds(5)
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        (
+            "courier the parcel to Mrs Abernethy at 14 Rosebery Crescent, Edinburgh please",
+            "Mrs Abernethy at 14 Rosebery Crescent, Edinburgh",
+        ),
+        ("fax my form to 3 Quay Street, Leeds LS1 4DY", "3 Quay Street, Leeds LS1 4DY"),
+        (
+            "send out my plans to Dr Okafor at the Old Manse, Pitlochry. Thanks",
+            "Dr Okafor at the Old Manse, Pitlochry",
+        ),
+        ("courier it to 9 Mill Lane, Bath, asap", "9 Mill Lane, Bath"),
+    ],
+)
+def test_an_address_goes_on_past_its_comma_to_the_clause_end(text: str, where: str) -> None:
+    """A person at an address, with the town after a comma: the sender is told all of it."""
+    found = _outside(text)
+    assert found is not None and found.phrase == where
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("courier it to 9 Mill Lane, it has to go today", "9 Mill Lane"),
+        ("fax my form to the county tax office, Frank", "the county tax office"),
+        ("courier it to Ms Ito at 4 Elm Road, then tell me", "Ms Ito at 4 Elm Road"),
+        ("fax it to 020 7946 0000, please", "020 7946 0000"),
+    ],
+)
+def test_a_comma_before_another_clause_still_ends_the_destination(text: str, where: str) -> None:
+    found = _outside(text)
+    assert found is not None and found.phrase == where
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        (
+            "the parcel needs to go out to the Kensington office, can you courier it",
+            "the Kensington office",
+        ),
+        (
+            "my form needs to go off to 3 Quay Street, Leeds. Can you fax it?",
+            "3 Quay Street, Leeds",
+        ),
+    ],
+)
+def test_a_statement_before_an_it_request_says_where_it_goes(text: str, where: str) -> None:
+    found = _outside(text)
+    assert found is not None and found.phrase == where
+    assert found.end is not None and found.end <= found.verb_start
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I'm going to the bank, can you courier it",  # where the person goes
+        "the parcel needs to go to the bank, can you courier my form",  # its own object
+        "it needs to go to the bank. It's late. Can you fax it?",  # two sentences back
+        "the form needs signing, can you fax it",  # no "to" at all
+    ],
+)
+def test_no_statement_destination_without_it_or_from_a_person(text: str) -> None:
+    found = _outside(text)
+    assert found is not None and found.phrase is None

@@ -19,7 +19,14 @@ from assistantx.core import language
 # What ends a destination: a sentence or clause end, or a courtesy word after it.
 _END_MARKS = frozenset(".!?;,\n")
 _END_WORDS = frozenset({"please", "pls", "thanks", "thank", "thx", "asap", "today", "now"})
+_TAIL_WORDS = 3  # the town (and postcode) after an address's comma
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
+# The object pronouns of a request whose item (and destination) a statement before it named.
+_PRONOUNS = frozenset({"it", "them", "this", "that"})
+# Subjects that make a statement of going a person's own ("I'm going to the bank").
+_PERSONS = frozenset({"i", "im", "we", "you", "he", "she", "they", "me", "us", "him", "her"})
+# Words of going or sending before a statement's destination ("needs to go out *to* ...").
+_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
 # The words that name a service as the means of sending ("send it to the council *by* courier").
 _MEANS = frozenset({"by", "via"})
 
@@ -90,12 +97,23 @@ def find_outside(
     means = verb_start - 1 if verb_start and words[verb_start - 1] in _MEANS else None
     if to is None and means is not None:
         to = _to_before(words, gaps, means)  # "send my agreement to the council by courier"
+    stop = len(tokens)
+    if to is None and means is None and _pronoun_object(words, verb_end):
+        to = _stated_before(words, gaps, verb_start)  # "... needs to go out to X, can you fax it"
+        stop = verb_start  # the destination stops where the request's clause begins
     start = end = None
     phrase = None
     if to is not None and to + 1 < len(tokens):
         start = end = to + 1
-        stop = means if means is not None and means > to else len(tokens)
-        while end < stop and not (end > start and _ends(gaps[end])):
+        if means is not None and means > to:
+            stop = means
+        while end < stop:
+            if end > start and _ends(gaps[end]):
+                more = _address_tail(tokens, gaps, start, end, stop)
+                if more == end:
+                    break
+                end = more
+                continue
             if words[end] in _END_WORDS:
                 break
             end += 1
@@ -108,6 +126,64 @@ def find_outside(
         if phrase is None:
             start = end = None
     return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
+
+
+def _address_tail(
+    tokens: Sequence[Token], gaps: Sequence[str], start: int, end: int, stop: int
+) -> int:
+    """Where a destination that is an address goes on past the comma at ``end`` ("Mrs
+    Abernethy at 14 Rosebery Crescent, Edinburgh"): only after a comma, only when the words so
+    far look like an address (a house number, or a person "at" a place), and only over a short
+    part that is all names or codes up to the clause's end ("Edinburgh", "Leeds LS1 4DY"); a
+    clause of its own after the comma ("it has to go today") ends the destination. ``end``
+    back when the destination stops here."""
+    if gaps[end].strip() != ",":
+        return end
+    so_far = tokens[start:end]
+    if not any(any(c.isdigit() for c in t.text) for t in so_far) and not any(
+        t.word == "at" for t in so_far[1:]
+    ):
+        return end
+    k = end
+    while k < stop and (k == end or not _ends(gaps[k])) and tokens[k].word not in _END_WORDS:
+        k += 1
+    part = tokens[end:k]
+    if not part or len(part) > _TAIL_WORDS:
+        return end
+    if all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part):
+        return k
+    return end
+
+
+def _pronoun_object(words: Sequence[str], verb_end: int) -> bool:
+    """Whether the send-out verb's object is a pronoun ("can you courier *it*"): the item was
+    named before, in a statement that may also say where it goes."""
+    return verb_end < len(words) and words[verb_end] in _PRONOUNS
+
+
+def _stated_before(words: Sequence[str], gaps: Sequence[str], verb_start: int) -> int | None:
+    """The "to" of a statement before the request that says where the item goes ("the parcel
+    ... needs to go out *to* the sister hotel, can you courier it"): the last "to" after a
+    word of going in an earlier clause of its sentence or the one before (never an infinitive's
+    "to": "needs *to* go")."""
+    sentences = 0
+    for k in range(verb_start - 1, 0, -1):
+        if any(c in ".!?;\n" for c in gaps[k + 1]):
+            sentences += 1
+            if sentences > 1:
+                return None  # only the sentence just before says what "it" is
+        if words[k] == "to" and words[k - 1] in _GOING and not _ends(gaps[k]):
+            return None if _person_goes(words, gaps, k) else k
+    return None
+
+
+def _person_goes(words: Sequence[str], gaps: Sequence[str], to: int) -> bool:
+    """Whether the clause of the statement's "to" is about a person going ("*I*'m going to
+    the bank, can you fax it"): then its place is where they go, never where the item goes."""
+    k = to - 1
+    while k > 0 and not _ends(gaps[k]):
+        k -= 1
+    return any(w in _PERSONS for w in words[k:to])
 
 
 def _to_before(words: Sequence[str], gaps: Sequence[str], means: int) -> int | None:

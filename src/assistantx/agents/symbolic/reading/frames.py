@@ -127,6 +127,7 @@ class FrameReader:
         objects = [m for m in objects if m.id not in rejected]
         tasks = [self._given_back(t, holder) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester) for t in tasks]
+        tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester, to_self)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
@@ -279,6 +280,22 @@ class FrameReader:
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
 
+    def _my_unknown_thing(self, task: Task, readings: Readings, requester: str) -> Task:
+        """ "ask Mao to sign my letter": "my" before a word that is no item of this office,
+        as the object of a kind that works on a property (a paper one signs, a file): the
+        requester's one item with that property, named in the restatement so they can
+        correct it; two such items of theirs, or none, still ask "which item?"."""
+        if task.item is not None or not task_kinds.kind_of(task.kind):
+            return task
+        prop = task_kinds.kind(task.kind).works_on
+        if prop is None or _my_unknown_words(readings) != 1:
+            return task
+        person = self.office.person(requester)
+        fits = [o.type for o in person.owns if getattr(self.office.item_type(o.type), prop)]
+        if len(fits) != 1:
+            return task
+        return task.model_copy(update={"item": fits[0], "owner": task.owner or requester})
+
     def _named_elsewhere(self, task: Task, named: Sequence[NamedItem], requester: str) -> Task:
         """ "get Wren to sign off the bill? it's the invoice on my desk": a task whose object
         is no item word of the office ("the bill", a word that is also a name) takes the one
@@ -399,6 +416,21 @@ def _rejected_items(readings: Readings) -> set[str]:
         if k >= 0 and tokens[k].word == "not":
             rejected.update(m.ids)
     return rejected
+
+
+def _my_unknown_words(readings: Readings) -> int:
+    """How many times the request says "my" before a word the lexicon read as no name of the
+    office ("my letter" where the office's paper is a "document")."""
+    tokens, mentions = readings.tokens, readings.mentions
+    named = {k for m in mentions if m.kind != "word" for k in range(m.start, m.end)}
+    return sum(
+        1
+        for k, t in enumerate(tokens[:-1])
+        if t.word == "my"
+        and k + 1 not in named
+        and tokens[k + 1].word.isalpha()
+        and not any(c in ".,;:!?" for c in readings.gaps[k + 1])
+    )
 
 
 def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:

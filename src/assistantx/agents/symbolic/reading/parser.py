@@ -168,6 +168,7 @@ class InstructionParser:
         )
         if frame.understood:
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
+            frame = _one_send_each(frame)
         if frame.question == NOT_UNDERSTOOD:
             unknown = unknown_item(self.screen.terms, readings.tokens, readings.mentions)
             if unknown is not None:
@@ -314,6 +315,20 @@ class InstructionParser:
 # The words of an answer that names only the one who asks: "me", "to me", "myself please".
 _ME = frozenset({"me", "myself", "mine", "i", "to", "for", "please", "just", "its", "it", "is"})
 _SELF = frozenset({"me", "myself", "mine"})
+
+
+def _one_send_each(frame: TaskFrame) -> TaskFrame:
+    """One item sent outside once: the same send-out said twice in one message ("the document
+    in the printer needs to go to the bank, can you fax it": the facility's service and the
+    verb each read as the task) is one task, as nothing sent out comes back to be sent again."""
+    kept: list[Task] = []
+    for task in frame.tasks:
+        if task.destination is not None and any(task == k for k in kept):
+            continue
+        kept.append(task)
+    if len(kept) == len(frame.tasks):
+        return frame
+    return frame.model_copy(update={"tasks": kept})
 
 
 def _asks_who(question: str) -> bool:

@@ -21,6 +21,7 @@ def test_the_rules_in_priority_order() -> None:
         "fact",
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
         "question",
+        "statement",  # a problem reported after a question about a facility's state
         "statement",
         "statement",  # where an item is ("fyi the tape's in the cupboard")
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")

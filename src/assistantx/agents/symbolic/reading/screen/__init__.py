@@ -46,13 +46,13 @@ parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
 ``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``,
-``own_need``, ``question``, ``statement``, ``whereabouts``, ``kept``, ``service``), tried in
-the order of ``rules``; each reads the piece's lexicon reading (``Piece.lexed``) and speech
-acts (``Piece.acts``, the ``speech_acts`` stage before the screen), never its text again.
-``request_screen`` runs in three steps the parser calls in turn: ``verdicts`` (the pieces
-judged: ``Spoken``), ``request`` (what is left, ``rewrites``: ``Request``), and, after the
-readings and frames, ``decide`` (the message as a whole, ``answer``: ``Screened``); ``judge``
-is the last stage.
+``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``,
+``service``), tried in the order of ``rules``; each reads the piece's lexicon reading
+(``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
+screen), never its text again. ``request_screen`` runs in three steps the parser calls in
+turn: ``verdicts`` (the pieces judged: ``Spoken``), ``request`` (what is left, ``rewrites``:
+``Request``), and, after the readings and frames, ``decide`` (the message as a whole,
+``answer``: ``Screened``); ``judge`` is the last stage.
 """
 
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Screened

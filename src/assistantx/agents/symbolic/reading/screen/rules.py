@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
+from assistantx.agents.symbolic.reading.screen.problem import problem
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
@@ -41,6 +42,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("fact", fact),
     ("statement", own_need),
     ("question", question),
+    ("statement", problem),
     ("statement", statement),
     ("statement", whereabouts),
     ("which", several_kept),
