@@ -103,7 +103,8 @@ class Assistant:
         self.clock = parts.clock
         self.ltm = parts.ltm or LongTermMemory(parts.office)
         self.resolver = Resolver(parts.office)
-        self.replies = ReplyBox(is_member=self._is_member)
+        # A late reply is looked up in ``finished``: the box remembers as many ended ones.
+        self.replies = ReplyBox(is_member=self._is_member, ended_kept=FINISHED_KEPT)
         self.lease: BodyLease | FleetLease = parts.fleet or BodyLease()
         self.inbox: asyncio.Queue[InboundMessage | None] = asyncio.Queue()
         self.executor = Executor(

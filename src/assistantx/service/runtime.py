@@ -290,7 +290,8 @@ class ServiceRuntime:
             self.clock.now(),
             code_lifetime_s,
         )
-        self.locker.code_states.update(self.ledger.reported())
+        for code_id, state in self.ledger.reported().items():
+            self.locker.report_code(code_id, state)
         await stack.enter_async_context(self.messenger)
         if inbox is not None:  # stops after the simulator: what they wrote is journaled
             await stack.enter_async_context(inbox)
