@@ -57,6 +57,7 @@ from assistantx.service.errors import (
     unknown_instruction,
 )
 from assistantx.service.feedback_wiring import start_feedback
+from assistantx.service.heap_trim import HeapTrim, malloc_trim
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.office_lease import OfficeLease
@@ -269,6 +270,9 @@ class ServiceRuntime:
         self.assistant.intercept_direct_messages(self._over_the_rate)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
+        # Resident memory stays flat: the C heap's free pages go back every so many instructions.
+        self.heap_trim = HeapTrim(malloc_trim())
+        self.assistant.on_instruction_end(self.heap_trim.on_end)
 
         try:
             await stack.enter_async_context(self.locker)
