@@ -8,6 +8,9 @@ memory in use stayed at 41.0 MB while its free memory went from 21.2 to 23.6 MB,
 ``malloc_trim(0)`` hands every whole free page back (madvise): 15 MB at the first call after
 500 instructions, about 1.3 MB at each later call 250 instructions apart, in 0.2–1.2 ms of the
 event loop each. Where the C library has no ``malloc_trim`` (musl, macOS) nothing is done.
+Python's own allocator (objects up to 512 bytes) is untouched: it gives an arena (1 MiB) back
+only once every object in it is freed, and its arenas still grew (130 to 134 over those 2,000
+instructions, the objects in them flat at 124 MiB).
 """
 
 from __future__ import annotations

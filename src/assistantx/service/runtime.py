@@ -270,7 +270,7 @@ class ServiceRuntime:
         self.assistant.intercept_direct_messages(self._over_the_rate)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
-        # Resident memory stays flat: the C heap's free pages go back every so many instructions.
+        # glibc keeps the pages the process freed: they go back every so many instructions.
         self.heap_trim = HeapTrim(malloc_trim())
         self.assistant.on_instruction_end(self.heap_trim.on_end)
 
