@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from datetime import UTC, datetime
 
+import pytest
+
 from assistantx.core.ports.messenger import ChatRef, InboundMessage
 from assistantx.runtime.replies import ReplyBox
 
@@ -122,3 +124,57 @@ def test_writers_registered_again_after_a_restart_keep_the_order_they_wrote_in()
     assert box.route(_msg("wang", wang, "I don't have it")) == "ins-1"
     box.engage("ins-2", wang)  # a write after the restart comes after every journaled one
     assert box.route(_msg("wang", wang, "still don't")) == "ins-2"
+
+
+def _ended_after(box: ReplyBox, question: str, chat: ChatRef) -> str | None:
+    """The ended instruction a late reply to ``question`` in ``chat`` is about."""
+    return box.ended_instruction(_msg(chat.id, chat, "late", reply_to=question))
+
+
+def test_only_the_latest_ended_instructions_are_remembered() -> None:
+    box = ReplyBox(ended_kept=2)
+    chats = [ChatRef(kind="dm", id=p) for p in ("zhang", "wang", "lee")]
+    for i, chat in enumerate(chats, start=1):
+        box.ask(f"q{i}", f"ins-{i}", chat, i)
+        box.close(f"ins-{i}")
+    assert _ended_after(box, "q1", chats[0]) is None  # forgotten with its chat
+    assert box.ended_instruction(_msg("zhang", chats[0], "hello again")) is None
+    assert _ended_after(box, "q2", chats[1]) == "ins-2"
+    assert _ended_after(box, "q3", chats[2]) == "ins-3"
+    assert box.ended_instruction(_msg("lee", chats[2], "hello again")) == "ins-3"
+
+
+def test_forgetting_an_instruction_keeps_a_chat_a_later_one_ended_in() -> None:
+    box = ReplyBox(ended_kept=1)
+    zhang = ChatRef(kind="dm", id="zhang")
+    box.ask("q1", "ins-1", zhang, 0)
+    box.close("ins-1")
+    box.ask("q2", "ins-2", zhang, 1)
+    box.close("ins-2")  # ins-1 is forgotten; the chat now names ins-2
+    assert _ended_after(box, "q1", zhang) == "ins-2"  # q1 unknown: the chat's last one
+    assert box.ended_instruction(_msg("zhang", zhang, "one more thing")) == "ins-2"
+
+
+def test_what_is_remembered_of_ended_instructions_stays_bounded() -> None:
+    box = ReplyBox(ended_kept=4)
+    for i in range(1000):
+        chat = ChatRef(kind="dm", id=f"person-{i % 7}")
+        box.ask(f"q{i}a", f"ins-{i}", chat, i)
+        box.ask(f"q{i}b", f"ins-{i}", chat, i)
+        box.engage(f"ins-{i}", chat, i)
+        box.close(f"ins-{i}")
+    remembered = [
+        i
+        for i in range(1000)
+        if _ended_after(box, f"q{i}a", ChatRef(kind="group", id="elsewhere")) is not None
+    ]
+    assert remembered == [996, 997, 998, 999]
+    assert all(
+        _ended_after(box, f"q{i}b", ChatRef(kind="group", id="elsewhere")) == f"ins-{i}"
+        for i in remembered
+    )
+
+
+def test_ended_kept_must_be_positive() -> None:
+    with pytest.raises(ValueError, match="ended_kept"):
+        ReplyBox(ended_kept=0)

@@ -44,6 +44,10 @@ from assistantx.runtime.returns import items_to_return, return_items
 logger = logging.getLogger(__name__)
 
 FINISHED_KEPT = 256
+# Unmatched messages kept for a look (tests, debugging), the latest; between UNMATCHED_KEPT and
+# twice as many. Every message is journaled by its messenger; a group the assistant sits in
+# (Matrix) talks among itself all day, and each word nobody asked for was kept for good.
+UNMATCHED_KEPT = 256
 
 InstructionHook = Callable[[ShortTermMemory], Awaitable[None]]
 # Called with the ended instruction's id when its give-back errand is over (not when a
@@ -103,7 +107,8 @@ class Assistant:
         self.clock = parts.clock
         self.ltm = parts.ltm or LongTermMemory(parts.office)
         self.resolver = Resolver(parts.office)
-        self.replies = ReplyBox(is_member=self._is_member)
+        # A late reply is looked up in ``finished``: the box remembers as many ended ones.
+        self.replies = ReplyBox(is_member=self._is_member, ended_kept=FINISHED_KEPT)
         self.lease: BodyLease | FleetLease = parts.fleet or BodyLease()
         self.inbox: asyncio.Queue[InboundMessage | None] = asyncio.Queue()
         self.executor = Executor(
@@ -367,6 +372,8 @@ class Assistant:
             stm = await self.submit(sender, message.text)
             return stm.instruction_id
         self.unmatched.append(message)
+        if len(self.unmatched) > 2 * UNMATCHED_KEPT:  # trimmed in bulk, not at every message
+            del self.unmatched[:-UNMATCHED_KEPT]
         return None
 
     def _not_a_new_request(self, message: InboundMessage) -> str | None:

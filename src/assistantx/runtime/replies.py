@@ -9,7 +9,11 @@ Anything unmatched goes back to the caller (a new instruction, or chatter to ign
 Replies are kept per instruction, so two instructions asking the same person never see
 each other's answers. Once an instruction ends, its questions and the chats it wrote to are
 remembered as ended (``ended_instruction``): a late reply there is about that instruction,
-not a new request.
+not a new request. Only the latest ``ended_kept`` ended instructions are remembered so: the
+assistant looks a late reply's instruction up among the ended instructions it still holds
+(as many, ``FINISHED_KEPT``) and treats one it no longer holds as unknown, so remembering
+more (the last 10,000 questions, as once) changed no answer and grew the service by one entry
+per question for its first 10,000 questions.
 
 A question is answered only from the chat it was asked in: a DM question by that person in
 that DM, a group question by a member in that group. An ``in_reply_to`` naming a question
@@ -23,12 +27,10 @@ import asyncio
 from collections import defaultdict
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TypeVar
 
 from assistantx.core.ports.messenger import ChatRef, InboundMessage
 
-_K = TypeVar("_K")
-_ENDED_KEPT = 10_000  # ended questions and chats remembered (a bound on memory)
+ENDED_KEPT = 256  # ended instructions whose questions and chats are remembered (by default)
 
 
 @dataclass
@@ -45,8 +47,13 @@ MembershipCheck = Callable[[str, str], bool]
 
 
 class ReplyBox:
-    def __init__(self, is_member: MembershipCheck | None = None) -> None:
+    def __init__(
+        self, is_member: MembershipCheck | None = None, *, ended_kept: int = ENDED_KEPT
+    ) -> None:
+        if ended_kept < 1:
+            raise ValueError("ended_kept must be at least 1")
         self._is_member = is_member
+        self._ended_kept = ended_kept
         self._questions: dict[str, OpenQuestion] = {}
         self._by_chat: dict[ChatRef, list[str]] = defaultdict(list)
         self._events: dict[str, asyncio.Event] = defaultdict(asyncio.Event)
@@ -55,6 +62,8 @@ class ReplyBox:
         self._written_at: dict[ChatRef, dict[str, float]] = defaultdict(dict)
         self._ended_questions: dict[str, str] = {}  # question id → its ended instruction
         self._ended_chats: dict[ChatRef, str] = {}  # chat → the ended instruction last in it
+        # The ended instructions remembered, oldest first, each with its ended questions.
+        self._ended: dict[str, list[str]] = {}
 
     def ask(
         self,
@@ -151,21 +160,27 @@ class ReplyBox:
 
     def close(self, instruction_id: str) -> None:
         """Forget an ended instruction's questions; later replies go unmatched, and
-        ``ended_instruction`` names it for them."""
-        for qid in [q for q, o in self._questions.items() if o.instruction_id == instruction_id]:
+        ``ended_instruction`` names it for them (while it is one of the latest ``ended_kept``
+        ended)."""
+        asked = [q for q, o in self._questions.items() if o.instruction_id == instruction_id]
+        for qid in asked:
             question = self._questions.pop(qid)
             self._by_chat[question.chat].remove(qid)
-            self._remember(self._ended_questions, qid, instruction_id)
+            self._ended_questions[qid] = instruction_id
             if not self._engaged.get(question.chat):
-                self._remember(self._ended_chats, question.chat, instruction_id)
+                self._ended_chats[question.chat] = instruction_id
         for chat, engaged in self._engaged.items():
             self._written_at[chat].pop(instruction_id, None)
             if instruction_id in engaged:
                 engaged.remove(instruction_id)
                 if not engaged and not self._by_chat.get(chat):
-                    self._remember(self._ended_chats, chat, instruction_id)
+                    self._ended_chats[chat] = instruction_id
         self._inbox.pop(instruction_id, None)
         self._events.pop(instruction_id, None)
+        self._ended.pop(instruction_id, None)
+        self._ended[instruction_id] = asked
+        while len(self._ended) > self._ended_kept:  # oldest first: dicts keep insertion order
+            self._forget(next(iter(self._ended)))
 
     def ended_instruction(self, message: InboundMessage) -> str | None:
         """The ended instruction an unmatched ``message`` answers (its ``in_reply_to``) or
@@ -174,9 +189,11 @@ class ReplyBox:
             return self._ended_questions[message.in_reply_to]
         return self._ended_chats.get(message.chat)
 
-    @staticmethod
-    def _remember(table: dict[_K, str], key: _K, instruction_id: str) -> None:
-        table.pop(key, None)
-        table[key] = instruction_id
-        while len(table) > _ENDED_KEPT:  # oldest first: dicts keep insertion order
-            del table[next(iter(table))]
+    def _forget(self, instruction_id: str) -> None:
+        """An ended instruction no longer remembered: its questions and the chats it was
+        the last in (unless a later one took them) name no instruction any more."""
+        for qid in self._ended.pop(instruction_id):
+            if self._ended_questions.get(qid) == instruction_id:
+                del self._ended_questions[qid]
+        for chat in [c for c, i in self._ended_chats.items() if i == instruction_id]:
+            del self._ended_chats[chat]

@@ -57,6 +57,7 @@ from assistantx.service.errors import (
     unknown_instruction,
 )
 from assistantx.service.feedback_wiring import start_feedback
+from assistantx.service.heap_trim import HeapTrim, malloc_trim
 from assistantx.service.hub import EventHub
 from assistantx.service.loop_lag import LoopLagMonitor
 from assistantx.service.office_lease import OfficeLease
@@ -269,6 +270,9 @@ class ServiceRuntime:
         self.assistant.intercept_direct_messages(self._over_the_rate)
         self.assistant.on_instruction_start(self._register_with_sim)
         self.assistant.on_instruction_end(self._end_with_sim)
+        # glibc keeps the pages the process freed: they go back every so many instructions.
+        self.heap_trim = HeapTrim(malloc_trim())
+        self.assistant.on_instruction_end(self.heap_trim.on_end)
 
         try:
             await stack.enter_async_context(self.locker)
@@ -290,7 +294,8 @@ class ServiceRuntime:
             self.clock.now(),
             code_lifetime_s,
         )
-        self.locker.code_states.update(self.ledger.reported())
+        for code_id, state in self.ledger.reported().items():
+            self.locker.report_code(code_id, state)
         await stack.enter_async_context(self.messenger)
         if inbox is not None:  # stops after the simulator: what they wrote is journaled
             await stack.enter_async_context(inbox)

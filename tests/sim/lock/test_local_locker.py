@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import pytest
+
 from assistantx.core.clock import SimClock
+from assistantx.core.ports import lock as lock_port
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from helpers.eventually import assert_quiet
@@ -63,3 +66,42 @@ async def test_revoke_and_expiry_through_the_locker(
         await clock.sleep(61)
         assert (await locker.simulate_scan(late.payload)).reason == "expired"
         assert (await locker.status()).active_codes == 0
+
+
+async def _hand_over(locker: LocalLocker, n: int) -> str:
+    """Person ``n`` collects an item with a fresh code; its code id."""
+    qr = await locker.issue_code(
+        instruction_id=f"ins-{n}", person="zhang", purpose="collect", item=f"doc-{n}"
+    )
+    await locker.simulate_scan(qr.payload)
+    await locker.simulate_close()
+    return qr.code_id
+
+
+async def test_the_reports_of_the_latest_codes_are_kept(
+    controller: LockController, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(lock_port, "CODE_REPORTS_KEPT", 3)
+    async with LocalLocker(controller, expiry_s=60, render_png=False) as locker:
+        codes = [await _hand_over(locker, n) for n in range(5)]
+        assert locker.code_states == {c: "used" for c in codes[2:]}
+
+
+async def test_a_code_reported_again_is_kept_as_the_latest(
+    controller: LockController, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(lock_port, "CODE_REPORTS_KEPT", 2)
+    async with LocalLocker(controller, expiry_s=60, render_png=False) as locker:
+        locker.report_code("a", "scanned")
+        locker.report_code("b", "used")
+        locker.report_code("a", "used")  # its door closed: now the latest report
+        locker.report_code("c", "scanned")
+        assert locker.code_states == {"a": "used", "c": "scanned"}
+
+
+def test_the_reports_kept_are_bounded(controller: LockController) -> None:
+    locker = LocalLocker(controller, expiry_s=60, render_png=False)
+    for n in range(3 * lock_port.CODE_REPORTS_KEPT):
+        locker.report_code(f"code-{n}", "scanned" if n % 2 else "used")
+    assert len(locker.code_states) == lock_port.CODE_REPORTS_KEPT
+    assert next(iter(locker.code_states)) == f"code-{2 * lock_port.CODE_REPORTS_KEPT}"

@@ -27,6 +27,15 @@ logger = logging.getLogger(__name__)
 Purpose = Annotated[str, AfterValidator(task_kinds.known_purpose)]
 
 LockEventKind = Literal["door_opened", "door_closed", "code_accepted", "code_rejected"]
+ReportedState = Literal["scanned", "used"]
+
+# The codes whose lock reports a ``Locker`` keeps: the latest reported. A code lives minutes
+# (15 by default) and one locker sees a few hand-overs an hour, so this is far more than the
+# codes alive at any time (the 10,000-instruction bench, at 10,000x simulated speed with
+# codes living one real minute, reports about 230 a minute); an older code has expired, its
+# instruction keeps its own view of it (``IssuedCode``) and the code ledger's journal its
+# state. Kept for ever, one entry per code scanned grew a long-running service for good.
+CODE_REPORTS_KEPT = 1024
 
 
 class QRCode(BaseModel):
@@ -69,7 +78,8 @@ class Locker(Component, ABC):
         self._subscribers: list[tuple[asyncio.Queue[LockEvent], asyncio.Event | None]] = []
         # What the lock reported of each code since we connected: "scanned" once accepted,
         # "used" once the door it opened closed (for live views; instructions keep their own).
-        self.code_states: dict[str, Literal["scanned", "used"]] = {}
+        # The latest CODE_REPORTS_KEPT codes reported, oldest report first (``report_code``).
+        self.code_states: dict[str, ReportedState] = {}
         self._listeners: list[Callable[[LockEvent], None]] = []
 
     @abstractmethod
@@ -99,11 +109,19 @@ class Locker(Component, ABC):
         queue gets it (for whoever must record an event before anyone acts on it)."""
         self._listeners.append(listener)
 
+    def report_code(self, code_id: str, state: ReportedState) -> None:
+        """Note what the lock reported of ``code_id``; the oldest report beyond
+        ``CODE_REPORTS_KEPT`` codes is forgotten."""
+        self.code_states.pop(code_id, None)  # its latest report goes last
+        self.code_states[code_id] = state
+        while len(self.code_states) > CODE_REPORTS_KEPT:  # dicts keep insertion order
+            del self.code_states[next(iter(self.code_states))]
+
     def _publish(self, event: LockEvent) -> None:
         if event.code_id is not None and event.kind == "code_accepted":
-            self.code_states[event.code_id] = "scanned"
+            self.report_code(event.code_id, "scanned")
         elif event.code_id is not None and event.kind == "door_closed":
-            self.code_states[event.code_id] = "used"
+            self.report_code(event.code_id, "used")
         for listener in list(self._listeners):
             try:
                 listener(event)
