@@ -118,6 +118,6 @@ class Admission:
         loop = asyncio.get_running_loop()
         give_up = loop.time() + HOLD_MAX_S
         while self._arriving or loop.time() - self._last_arrival < QUIET_S:
-            if loop.time() >= give_up:
+            if loop.time() >= give_up or self._stopping:
                 return
             await asyncio.sleep(QUIET_S / 5)
