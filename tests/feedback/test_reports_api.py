@@ -62,8 +62,12 @@ async def test_survey_over_the_builtin_messenger_and_the_report(api: httpx.Async
     iid = r.json()["id"]
     survey = (await _until(api, f"/v1/surveys/{iid}")).json()["survey"]
     assert survey["state"] == "open" and survey["person"] == "lee"
-    chat = (await api.get("/v1/chats/dm/lee", headers=AUTH_LEE)).json()
-    assert any("A short survey" in m["text"] for m in chat)
+    # the survey is recorded open before its question reaches Lee's chat: wait for the message
+    await eventually(
+        lambda: api.get("/v1/chats/dm/lee", headers=AUTH_LEE),
+        until=lambda r: any("A short survey" in m["text"] for m in r.json()),
+        what="the survey's question in Lee's chat",
+    )
 
     # Lee answers through the built-in messenger; it is a survey reply, not an instruction.
     r = await api.post("/v1/messages", json={"text": "y/n/?/y, quick and easy"}, headers=AUTH_LEE)
