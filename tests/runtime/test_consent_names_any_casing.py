@@ -188,3 +188,15 @@ def test_round13_analogues_in_lower_case_and_possessive() -> None:
         assert named_recipients(office, stm) == {who}, text
         send = SendQR(contact=who, item=f"puppet:{requester}", purpose="collect")
         assert consent.check(office, stm, send) is None, text
+
+
+def test_a_declared_name_with_an_inner_apostrophe_names_its_person() -> None:
+    # the guard split "Ms D'Amato" one way in the office file and another in the text, so
+    # the signer the requester named was refused
+    office = _office(
+        (("Renée", "D'Amato", "Ms D'Amato"), ("Ivy", "Marchetti", None), ("Zoë", "Brandt", None))
+    )
+    for text in ("leave my bone folder with Ms D'Amato", "take my puppet to ms d'amato please"):
+        stm = memory("p2", text)
+        answered(stm, "p1")
+        assert named_recipients(office, stm) == {"p1"}, text

@@ -100,7 +100,8 @@ def _names(office: Office) -> list[tuple[tuple[str, ...], frozenset[str]]]:
     parts: dict[tuple[str, ...], set[str]] = {}
 
     def key(spelling: str) -> tuple[str, ...]:
-        return tuple(language.fold(w) for w in re.findall(r"\w+", spelling))
+        # split as the text is (``_tokens``), so "Ms D'Amato" is the same words in both
+        return tuple(w.folded for w in _tokens(spelling))
 
     for p in office.people:
         for s in {p.name, *p.aliases, p.id, p.id.replace("_", " ")}:
