@@ -19,7 +19,7 @@ from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import RecordedRequest, Reply, ScriptedLLM, malformed_json, slow
 from helpers.llm_office import llm_settings, make_assistant
 from helpers.office import run_one
-from helpers.servers import free_port
+from helpers.servers import refusing_port
 
 # unsure for the embedded reader, so the cascade calls the model too
 TEXT = "bring me the thing"
@@ -91,8 +91,9 @@ async def test_refused_connections_are_counted_as_tries_at_no_tokens(
     scripted_llm: ScriptedLLM,  # noqa: F811
     name: str,
 ) -> None:
-    nowhere = f"http://127.0.0.1:{free_port()}/v1"  # nothing listens here
-    trace = await _trace(office, scripted_llm, name, llm_base_url=nowhere)
+    with refusing_port() as port:
+        nowhere = f"http://127.0.0.1:{port}/v1"
+        trace = await _trace(office, scripted_llm, name, llm_base_url=nowhere)
 
     assert scripted_llm.requests == []
     # one request and its two retries, none of which reached a server

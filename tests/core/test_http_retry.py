@@ -20,7 +20,7 @@ from assistantx.core.http_retry import (
     is_retryable_status,
     parse_retry_after,
 )
-from helpers.servers import free_port, serve_asgi
+from helpers.servers import refusing_port, serve_asgi
 
 NOW = 1_750_000_000.0
 
@@ -141,11 +141,11 @@ async def test_the_last_answer_comes_back_when_retries_run_out_and_4xx_is_final(
 
 
 async def test_a_refused_connection_is_retried_and_every_try_recorded() -> None:
-    port = free_port()  # nothing listens there
     tries: list[Try] = []
-    async with httpx.AsyncClient(transport=RetryingTransport(fast(max_retries=2))) as client:
-        with pytest.raises(httpx.ConnectError):
-            await client.post(f"http://127.0.0.1:{port}/call", extensions={TRIES: tries})
+    with refusing_port() as port:
+        async with httpx.AsyncClient(transport=RetryingTransport(fast(max_retries=2))) as client:
+            with pytest.raises(httpx.ConnectError):
+                await client.post(f"http://127.0.0.1:{port}/call", extensions={TRIES: tries})
     assert [t.outcome for t in tries] == ["refused"] * 3
     assert not any(t.reached_server for t in tries)
 

@@ -22,7 +22,7 @@ from assistantx.agents.llm import agent_call, failed_call
 from assistantx.core.ports.model import LLMCallFailed
 from assistantx.core.structured import structured_call
 from fakes.scripted_llm import Reply, ScriptedLLM, json_reply
-from helpers.servers import free_port, serve_asgi
+from helpers.servers import refusing_port, serve_asgi
 
 PROMPT = "Which of the two is closer to the printer?"
 
@@ -40,10 +40,11 @@ def estimated_prompt() -> int:
 
 
 async def test_refused_connections_are_tries_that_cost_nothing() -> None:
-    url = f"http://127.0.0.1:{free_port()}/v1"  # nothing listens here
-    async with OpenAICompatibleModel(url, "m", retry=quick(3)) as model:
-        with pytest.raises(LLMCallFailed) as caught:
-            await model.complete(ask())
+    with refusing_port() as port:
+        url = f"http://127.0.0.1:{port}/v1"
+        async with OpenAICompatibleModel(url, "m", retry=quick(3)) as model:
+            with pytest.raises(LLMCallFailed) as caught:
+                await model.complete(ask())
     failed = caught.value
     assert failed.retries == 3  # four requests tried
     assert (failed.usage.prompt_tokens, failed.usage.completion_tokens) == (0, 0)

@@ -23,6 +23,7 @@ from fakes.scripted_llm import (
     server_error,
     slow,
 )
+from helpers.servers import refusing_port
 
 SCHEMA = {
     "type": "object",
@@ -167,13 +168,12 @@ async def test_client_errors_are_not_retried(scripted_llm: ScriptedLLM) -> None:
 
 
 async def test_connection_refused_is_retried_then_reported() -> None:
-    # Reserve a port, then close it, so nothing listens there.
-    async with ScriptedLLM() as server:
-        url = server.base_url
-    model = OpenAICompatibleModel(url, "m", retry=tiny_retries(max_retries=2))
-    async with model:
-        with pytest.raises(LLMError, match="connection failed") as caught:
-            await model.complete(ask())
+    with refusing_port() as port:
+        url = f"http://127.0.0.1:{port}/v1"
+        model = OpenAICompatibleModel(url, "m", retry=tiny_retries(max_retries=2))
+        async with model:
+            with pytest.raises(LLMError, match="connection failed") as caught:
+                await model.complete(ask())
     assert isinstance(caught.value.__cause__, httpx.ConnectError)
 
 

@@ -171,11 +171,12 @@ def test_a_database_from_a_newer_version_is_refused(postgres_url: str, tmp_path:
 def test_a_database_that_cannot_be_reached_is_a_clear_error_without_its_password(
     tmp_path: Path,
 ) -> None:
-    from helpers.servers import free_port
+    from helpers.servers import refusing_port
 
-    url = f"postgresql://lee:secret@127.0.0.1:{free_port()}/nowhere"
-    with pytest.raises(JournalError, match="not a usable journal") as raised:
-        Journal.open(tmp_path / "unused", database_url=url)
+    with refusing_port() as port:
+        url = f"postgresql://lee:secret@127.0.0.1:{port}/nowhere"
+        with pytest.raises(JournalError, match="not a usable journal") as raised:
+            Journal.open(tmp_path / "unused", database_url=url)
     assert "secret" not in str(raised.value)
     assert str(raised.value).startswith("postgresql://lee@127.0.0.1:")
 
