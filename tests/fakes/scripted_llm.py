@@ -36,7 +36,7 @@ import json
 import socket
 import time
 from collections import deque
-from collections.abc import Callable, Generator
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Any, Literal, Self
@@ -46,6 +46,7 @@ from fastapi import FastAPI, Request
 from fastapi.responses import JSONResponse, Response
 
 from helpers.eventually import eventually
+from helpers.quiet_server import QuietServer
 
 AGENT_HEADER = "x-assistantx-agent"
 ANY_AGENT = "*"
@@ -162,46 +163,6 @@ def reject_response_format(status: int = 400) -> Reply:
 # -- the server -----------------------------------------------------------------------------
 
 
-class _QuietServer(uvicorn.Server):
-    """uvicorn without signal handling (a test must not take over SIGINT) that stops as soon
-    as asked instead of on its next 0.1 s tick."""
-
-    def __init__(self, config: uvicorn.Config) -> None:
-        super().__init__(config)
-        self.exit_requested = asyncio.Event()
-
-    @contextlib.contextmanager
-    def capture_signals(self) -> Generator[None, None, None]:
-        yield
-
-    async def main_loop(self) -> None:
-        await self.on_tick(0)  # sets the default response headers
-        await self.exit_requested.wait()
-
-    async def shutdown(self, sockets: list[socket.socket] | None = None) -> None:
-        """uvicorn's shutdown, less its fixed 0.1 s sleep after asking the connections to
-        close (the tests start and stop a scripted model hundreds of times): it
-        waits here only while a connection is still open, checked every 5 ms, up to the
-        graceful-shutdown timeout; then, as uvicorn does, cancels what is left."""
-        for server in self.servers:
-            server.close()
-        for sock in sockets or []:
-            sock.close()
-        for connection in list(self.server_state.connections):
-            connection.shutdown()
-        state = self.server_state
-        # uvicorn has no event for "the last connection closed": checked every 5 ms
-        for _ in range(int((self.config.timeout_graceful_shutdown or 0) / 0.005)):
-            if not (state.connections or state.tasks):
-                break
-            await asyncio.sleep(0.005)
-        for task in state.tasks:
-            task.cancel(msg="the scripted model stopped")
-        for server in self.servers:
-            await server.wait_closed()
-        await self.lifespan.shutdown()
-
-
 def _usage_for(body: dict[str, Any], content: str | None) -> dict[str, int]:
     prompt = sum(
         len(str(m.get("content", "")).split())
@@ -247,7 +208,7 @@ class ScriptedLLM:
         self.api_key: str | None = None
         self._queues: dict[str, deque[ScriptItem]] = {}
         self._handlers: dict[str, Handler] = {}
-        self._server: _QuietServer | None = None
+        self._server: QuietServer | None = None
         self._task: asyncio.Task[None] | None = None
         self._socket: socket.socket | None = None
         self._closing = asyncio.Event()
@@ -300,7 +261,7 @@ class ScriptedLLM:
             http="h11",
             timeout_graceful_shutdown=2,
         )
-        self._server = _QuietServer(config)
+        self._server = QuietServer(config)
         self._task = asyncio.create_task(self._server.serve(sockets=[sock]))
         server, task = self._server, self._task
 
@@ -318,8 +279,7 @@ class ScriptedLLM:
         if self._task is None or self._server is None:
             return
         self._closing.set()  # wake replies that are still waiting out their delay
-        self._server.should_exit = True
-        self._server.exit_requested.set()
+        self._server.request_exit()
         try:
             await self._task
         finally:
