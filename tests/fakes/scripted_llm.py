@@ -36,7 +36,7 @@ import json
 import socket
 import time
 from collections import deque
-from collections.abc import Callable, Generator
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Any, Literal, Self
@@ -46,6 +46,7 @@ from fastapi import FastAPI, Request
 from fastapi.responses import JSONResponse, Response
 
 from helpers.eventually import eventually
+from helpers.quiet_server import QuietServer
 
 AGENT_HEADER = "x-assistantx-agent"
 ANY_AGENT = "*"
@@ -162,23 +163,6 @@ def reject_response_format(status: int = 400) -> Reply:
 # -- the server -----------------------------------------------------------------------------
 
 
-class _QuietServer(uvicorn.Server):
-    """uvicorn without signal handling (a test must not take over SIGINT) that stops as soon
-    as asked instead of on its next 0.1 s tick."""
-
-    def __init__(self, config: uvicorn.Config) -> None:
-        super().__init__(config)
-        self.exit_requested = asyncio.Event()
-
-    @contextlib.contextmanager
-    def capture_signals(self) -> Generator[None, None, None]:
-        yield
-
-    async def main_loop(self) -> None:
-        await self.on_tick(0)  # sets the default response headers
-        await self.exit_requested.wait()
-
-
 def _usage_for(body: dict[str, Any], content: str | None) -> dict[str, int]:
     prompt = sum(
         len(str(m.get("content", "")).split())
@@ -224,7 +208,7 @@ class ScriptedLLM:
         self.api_key: str | None = None
         self._queues: dict[str, deque[ScriptItem]] = {}
         self._handlers: dict[str, Handler] = {}
-        self._server: _QuietServer | None = None
+        self._server: QuietServer | None = None
         self._task: asyncio.Task[None] | None = None
         self._socket: socket.socket | None = None
         self._closing = asyncio.Event()
@@ -277,7 +261,7 @@ class ScriptedLLM:
             http="h11",
             timeout_graceful_shutdown=2,
         )
-        self._server = _QuietServer(config)
+        self._server = QuietServer(config)
         self._task = asyncio.create_task(self._server.serve(sockets=[sock]))
         server, task = self._server, self._task
 
@@ -295,8 +279,7 @@ class ScriptedLLM:
         if self._task is None or self._server is None:
             return
         self._closing.set()  # wake replies that are still waiting out their delay
-        self._server.should_exit = True
-        self._server.exit_requested.set()
+        self._server.request_exit()
         try:
             await self._task
         finally:

@@ -21,7 +21,6 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import psycopg
 import pytest
 
 from helpers.eventually import eventually_sync
@@ -64,6 +63,8 @@ class Cluster:
 
     def new_database(self) -> str:
         """A fresh, empty database; its URL."""
+        import psycopg  # only where a test has a cluster: see start_cluster
+
         name = f"test_{next(self._names)}"
         with psycopg.connect(self.url(), autocommit=True) as conn:
             conn.execute(f"CREATE DATABASE {name}")
@@ -119,6 +120,9 @@ def start_cluster() -> Cluster:
     )  # fmt: skip
     log.close()
     cluster = Cluster(process, port, folder)
+    # psycopg is imported here, not with this module: every conftest imports it, and most runs
+    # (`make test-fast`) start no cluster (0.15-0.3 CPU-s per process: each xdist worker's)
+    import psycopg
 
     def ready() -> bool:
         if process.poll() is not None:

@@ -14,6 +14,7 @@ from fastapi import FastAPI
 
 from assistantx.service.server import service_server
 from helpers.eventually import eventually
+from helpers.quiet_server import QuietServer
 
 
 def free_port() -> int:
@@ -50,7 +51,10 @@ async def running(server: uvicorn.Server, *, timeout_s: float = 30.0) -> AsyncIt
         await eventually(listening, what="uvicorn to listen", timeout_s=timeout_s)
         yield
     finally:
-        server.should_exit = True
+        if isinstance(server, QuietServer):
+            server.request_exit()
+        else:
+            server.should_exit = True  # seen on its next 0.1 s tick
         await task
 
 
@@ -66,7 +70,7 @@ async def serve_asgi(app: Any, port: int | None = None) -> AsyncIterator[str]:
         ws="none",
         http="h11",
     )
-    async with running(uvicorn.Server(config)):
+    async with running(QuietServer(config)):
         yield f"http://127.0.0.1:{config.port}"
 
 

@@ -70,7 +70,8 @@ def test_the_period_must_be_positive() -> None:
 
 
 async def test_the_service_counts_its_ended_instructions_for_the_trim(tmp_path: Path) -> None:
-    async with serving_runtime(tmp_path / "data") as (api, runtime):
+    # speed-up 200: only the end of the instruction is looked at
+    async with serving_runtime(tmp_path / "data", speedup=200) as (api, runtime):
         r = await api.post(
             "/v1/instructions",
             json={"requester": "lee", "text": "Please bring me a stapler."},

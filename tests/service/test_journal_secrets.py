@@ -19,7 +19,7 @@ from service.server import OPERATOR
 async def test_held_codes_are_journaled_without_their_payloads(tmp_path: Path) -> None:
     data_dir = tmp_path / "data"
     settings = Settings(
-        data_dir=data_dir, operator_token=OPERATOR, speedup=50, robot_localize=False
+        data_dir=data_dir, operator_token=OPERATOR, speedup=200, robot_localize=False
     )
     app = create_app(settings)
     runtime = app.state.runtime

@@ -144,6 +144,11 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
                 continue  # "print a copy of my file": the copier's product, not its run
             for verb in (f for w in other.request_phrases for f in word_forms(normalize(w))):
                 for name in names:
+                    # both patterns need the verb and the name as they stand in the text: a
+                    # substring test first, so the regexes are built only for a text that has
+                    # them (one per verb and name, more than re's cache keeps)
+                    if f" {verb} " not in haystack or name not in haystack:
+                        continue
                     noun = rf"{re.escape(name)}(?:s|es)?"
                     haystack = re.sub(rf" {re.escape(verb)} (?={_BETWEEN}{noun} )", " | ", haystack)
                     haystack = re.sub(rf" ({noun}) {re.escape(verb)} ", r" \1 | ", haystack)
