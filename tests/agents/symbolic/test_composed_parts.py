@@ -94,7 +94,10 @@ async def test_with_the_signer_away_no_unsigned_drawing_goes_out() -> None:
     assert run.stm.trace.outcome == "unachievable", run.stm.trace.summary
     assert _moves(run) == [] and run.sim.world.sent_out() == []
     assert "luc" not in _asked(run)  # the courier is not troubled for a task that cannot be
-    assert "it was to follow: get your drawing set signed by Amara Osei" in run.stm.trace.summary
+    assert (
+        "courier your drawing set to Harlow & Sons "  # where it goes, not "for you"
+        "(it was to follow: get your drawing set signed by Amara Osei)"
+    ) in run.stm.trace.summary
 
 
 async def test_signed_then_stamped_drawings_end_with_the_requester() -> None:

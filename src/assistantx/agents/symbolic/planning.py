@@ -671,7 +671,12 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     to = name(task.recipient)
     op = operation_of(office, task)
     verb = office.operation(op).name if op else task.kind  # the office's word ("scan")
-    return task_kinds.kind(task.kind).todo.format(
+    spec = task_kinds.kind(task.kind)
+    template = spec.todo
+    if op is not None and office.operation(op).sends_out and task.destination and spec.todo_sent:
+        template = spec.todo_sent  # sent outside: where to, not for whom
+    return template.format(
+        dest=task.destination,
         verb=verb,
         whose=whose,
         owner_s=owner_s(task.owner),
