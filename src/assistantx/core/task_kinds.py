@@ -23,7 +23,8 @@ words. The fields:
 - ``locker``: what the doer does at the locker when the office has no operation to name it
   ({item}: the item's phrase);
 - ``todo``: the task in a plan's words ({verb} the operation's name, {whose} the item's
-  phrase, {to} the recipient, {by} the actor);
+  phrase, {to} the recipient, {by} the actor); ``todo_sent`` when its operation sends the
+  item outside ({dest}: where, in the requester's words): "courier your drawings to Harlow";
 - ``done``: the outcome told to the requester ({done}: the operation's past participle);
 - ``works_on``: the property of the item type a person-to-person kind works on ("signable":
   the office's paper), never a type id;
@@ -81,6 +82,7 @@ class KindSpec:
     returns: bool = True
     done_consumed: str | None = None  # the outcome when the operation consumes the item
     done_sent: str | None = None  # the outcome when it sent the item outside ({dest}: where)
+    todo_sent: str | None = None  # the task in a plan's words when it sends the item outside
     done_file: str | None = None  # the outcome when its product is a file sent by message
     works_on: ItemProperty | None = None
     tool: ItemProperty | None = None
@@ -193,6 +195,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         done="{whose} was {done} and handed to {to}",
         done_consumed="{whose} was {done}",
         done_sent="{whose} was {done} to {dest}",
+        todo_sent="{verb} {whose} to {dest}",
     ),
     KindSpec(
         id="send_file",

@@ -194,6 +194,42 @@ def _guard(office: Office, operation: str, question: str, group_question: str | 
     )
 
 
+def _put_in(plan: TaskPlan, item: str, a: str, who: str, office: Office) -> None:
+    """The hand-over that puts the requester's own ``item`` into the locker for a part that
+    works on it (a copy, a signature, a heat).
+
+    Parts run in order, as the embedded planner runs a request's tasks: when an earlier part
+    hands the item back to the requester ("get my drawings signed, then courier them"), that
+    hand-back happens here, before this part, at the same stop where the requester puts it in
+    again (with whatever else the earlier parts bring them), and the earlier part's "the
+    requester holds it" is no longer the end of the task: this part says where it ends. Else
+    an item kept at a facility (a film in the picture archive, a lunch in the fridge) is taken
+    out by the facility's keeper, who is asked; the requester's request is the owner's yes.
+    """
+    earlier = [(to, c) for to, c in plan.deliveries if to == REQUESTER]
+    if any(c.item == item for _, c in earlier):
+        plan.deliveries = [(to, c) for to, c in plan.deliveries if to != REQUESTER]
+        plan.visits.append(Visit(REQUESTER, REQUESTER, tuple(c for _, c in earlier)))
+        plan.goal = [m for m in plan.goal if m != {"holds": [a, item]}]
+        plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, item, "deposit"),)))
+        return
+    type_id = item.partition(":")[0]
+    keeper = office.keeper(a, type_id)
+    if keeper is None:  # the requester has it
+        plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, item, "deposit"),)))
+        return
+    thing = office.item_type(type_id).name
+    role = Role(
+        key=f"guard:{keeper.id}",
+        kind="guard",
+        question=f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?",
+        group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
+        facility=keeper.id,
+    )
+    plan.add_role(role)
+    plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
+
+
 def _add_part(
     plan: TaskPlan, part: Part, a: str, who: str, office: Office, *, use_kept: bool = True
 ) -> None:
@@ -274,7 +310,7 @@ def _add_part(
             source, made = op.input or "", op.product or ""
             plan.add_role(role)
             doc = f"{source}:{a}"
-            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
+            _put_in(plan, doc, a, who, office)
             plan.visits.append(
                 Visit(role.facility or "", role.key, (Code(role.key, doc, "copy", op.id),))
             )
@@ -312,7 +348,7 @@ def _add_part(
                 )
                 plan.add_goal({spec.milestone: doc})
             plan.add_role(role)
-            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, doc, "deposit"),)))
+            _put_in(plan, doc, a, who, office)
             plan.visits.append(
                 Visit(role.key, role.key, (Code(role.key, doc, spec.purpose or ""),))
             )
@@ -342,7 +378,6 @@ def _add_part(
             op = part_operation(office, part)
             source = op.input or ""
             kept = f"{source}:{a}"
-            keeper = office.keeper(a, source)
             thing = office.item_type(source).name
             place_name = office.facility(facility_for(office, op.id)).name
             # who sends it outside is told where to, as the embedded planner tells them
@@ -353,22 +388,7 @@ def _add_part(
                 f"Could you {op.name} {who}'s {thing} at the {place_name}{to}?",
                 f"Could anyone {op.name} {who}'s {thing} at the {place_name}{to}?",
             )
-            if keeper is not None:  # kept at a facility (a lunch in the fridge)
-                keeper_role = Role(
-                    key=f"guard:{keeper.id}",
-                    kind="guard",
-                    question=(
-                        f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?"
-                    ),
-                    group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
-                    facility=keeper.id,
-                )
-                plan.add_role(keeper_role)
-                plan.visits.append(
-                    Visit(keeper.id, keeper_role.key, (Code(keeper_role.key, kept, "deposit"),))
-                )
-            else:  # the requester has it
-                plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, kept, "deposit"),)))
+            _put_in(plan, kept, a, who, office)
             plan.add_role(op_role)
             plan.visits.append(
                 Visit(

@@ -310,21 +310,32 @@ class Planner:
                     facility=self._facility_for(t),
                     operation=op,
                 )
-                roles = [guard, source, recipient]
+                # the original comes back to whoever put it in, unless a facility's keeper
+                # took it out (a film from the picture archive): then to its owner, who asked
+                # or agreed, as the oracle plans it; a keeper is no recipient
+                home = source
+                if source.kind == "keep":
+                    home = (
+                        recipient
+                        if t.recipient == owner
+                        else Role(f"{n}.back", "receive", requester, fixed=owner)
+                    )
+                roles = [guard, source, *([home] if home not in (source, recipient) else [])]
+                roles.append(recipient)
                 back: list[Phase]
                 if self.office.item_type(product).electronic:
                     # scanned to PDF: the file is sent by message, only the original comes back
-                    roles = [guard, source]
-                    back = [Handover(source, (leg(item, "collect", owner),))]
+                    roles = [r for r in roles if r is not recipient or r is home]
+                    back = [Handover(home, (leg(item, "collect", owner),))]
                 elif t.recipient == owner:
                     back = [
                         Handover(
-                            source, (leg(item, "collect", owner), leg(product, "collect", owner))
+                            home, (leg(item, "collect", owner), leg(product, "collect", owner))
                         )
                     ]
                 else:
                     back = [
-                        Handover(source, (leg(item, "collect", owner),)),
+                        Handover(home, (leg(item, "collect", owner),)),
                         Handover(recipient, (leg(product, "collect", owner),)),
                     ]
                 phases = [
@@ -403,6 +414,10 @@ class Planner:
         # that did: a later task on the same item starts from them and counts only codes
         # used after that
         after: dict[str, int] = {}
+        # items an earlier task on them could not finish (a signature nobody could give):
+        # the request's later tasks on the same item wait on it ("get my drawings signed,
+        # then courier them" sends no unsigned drawings out)
+        blocked: dict[str, str] = {}
         requester = frame.requester
         for n, task in enumerate(frame.tasks):
             held = frozenset(after)
@@ -415,6 +430,12 @@ class Planner:
                     self._compile(n, task, requester, kept=False, held=held), ltm, ev, now, after
                 )
                 view = other if other.status != "unachievable" else view
+            item = self._item_in_hand(view.compiled.task, requester)
+            if item in blocked and view.status == "active" and not _moved(view):
+                view.status = "unachievable"
+                view.reason = f"it was to follow: {blocked[item]}"
+            if item is not None and view.status in ("unachievable", "failed"):
+                blocked.setdefault(item, describe(view.compiled.task, self.office, requester))
             views.append(view)
             # any finished task that handed the item back (a fetch, a copy, a binding): a
             # later task on it ("photocopy and bind my plan") starts with the requester
@@ -425,6 +446,14 @@ class Planner:
                     if found is not None and compiled.task.recipient == requester:
                         after[item] = found
         return Agenda(frame, views)
+
+    def _item_in_hand(self, t: Task, requester: str) -> str | None:
+        """The physical item a task hands around (the requester's drawing set to sign, their
+        film to develop, a named owner's stapler); None for a product, a file or anyone's."""
+        if t.item is None or t.kind == "produce" or not self.office.item_type(t.item).physical:
+            return None
+        owner = t.owner or (None if t.kind == "transfer" else requester)
+        return f"{t.item}:{owner}" if owner else None
 
     def _view(
         self,
@@ -584,6 +613,11 @@ def _first_used(ev: Evidence, item: str, purpose: str, person: str, start: int) 
     )
 
 
+def _moved(view: TaskView) -> bool:
+    """Whether a hand-over of the task has happened (a code of it was used)."""
+    return any(p.done and isinstance(p.phase, Handover) for p in view.phases)
+
+
 def _uses(phase: Phase, key: str) -> bool:
     if isinstance(phase, Handover):
         return phase.role.key == key or any(leg.owner_role == key for leg in phase.legs)
@@ -637,7 +671,12 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     to = name(task.recipient)
     op = operation_of(office, task)
     verb = office.operation(op).name if op else task.kind  # the office's word ("scan")
-    return task_kinds.kind(task.kind).todo.format(
+    spec = task_kinds.kind(task.kind)
+    template = spec.todo
+    if op is not None and office.operation(op).sends_out and task.destination and spec.todo_sent:
+        template = spec.todo_sent  # sent outside: where to, not for whom
+    return template.format(
+        dest=task.destination,
         verb=verb,
         whose=whose,
         owner_s=owner_s(task.owner),
