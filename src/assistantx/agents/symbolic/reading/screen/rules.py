@@ -22,6 +22,7 @@ from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
@@ -46,5 +47,6 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", statement),
     ("statement", whereabouts),
     ("which", several_kept),
+    ("unsupported", variant),
     ("unsupported", unsupported),
 )
