@@ -30,6 +30,11 @@ variant         a made thing in a variant the office does not make: "a master ke
                                                                                     make an
                                                                                     ordinary
                                                                                     one?"
+outsider        a recipient who is nobody of the office ("for the man at the        declines a
+                desk", "bring the courier guy a tea")                               credential;
+                                                                                    "Shall I
+                                                                                    bring it to
+                                                                                    you?"
 unsupported     a service the office does not offer ("scan my contract",            declines
                 "make me a cup of tea")
 ==============  ==================================================================  ==========
@@ -52,7 +57,7 @@ parses as the person wrote it.
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
 ``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``,
 ``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
-``service``), tried in the order of ``rules``; each reads the piece's lexicon
+``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
 reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
 screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:
 ``verdicts`` (the pieces judged: ``Spoken``), ``request`` (what is left, ``rewrites``:

@@ -13,6 +13,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
@@ -48,5 +49,6 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", whereabouts),
     ("which", several_kept),
     ("unsupported", variant),
+    ("instead", outsider),
     ("unsupported", unsupported),
 )
