@@ -169,7 +169,7 @@ class Part(BaseModel):
     item: str | None = Field(default=None, description="item type (fetch, deliver)")
     owner: str | None = Field(default=None, description="named owner (fetch, get_file)")
     to: str | None = Field(
-        default=None, description="recipient (deliver, forward_file; print, copy, make)"
+        default=None, description="recipient (deliver, forward_file; print, copy, make, heat)"
     )
     signer: str | None = Field(default=None, description="who signs (sign)")
     operation: str | None = Field(

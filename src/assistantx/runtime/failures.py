@@ -134,6 +134,7 @@ _REFUSED_BECAUSE = {
     ),
     "no_answer": "{who} has not answered me, so they have not agreed to the hand-over",
     "no_consent": "its owner has not given me their own yes",
+    "owner_only": "it would be used up, and only its owner can ask for that themselves",
 }
 
 

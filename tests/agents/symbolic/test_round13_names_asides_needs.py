@@ -205,8 +205,11 @@ def test_several_things_kept_there_are_asked_about() -> None:
 async def test_the_owner_is_asked_before_the_lunch_moves() -> None:
     text = "can you bring me Jürgen's leftover curry from the staff fridge? he said I could have it"
     run = await run_instruction(bindery(), "zoe", text)
-    first = run.stm.trace.actions()[0].action
+    # the requester is told first that Jürgen will be asked (fix14a's class 4), then he is
+    acted = [r.action for r in run.stm.trace.actions()]
+    first = next(a for a in acted if getattr(a, "contact", None) != "zoe")
     assert first.type == "inquire" and getattr(first, "contact", None) == "jurgen"
+    assert [a.type for a in acted[: acted.index(first)]] == ["inform"]
     assert run.sim.world.check({"holds": ["zoe", "lunch:jurgen"]})
 
 

@@ -47,7 +47,8 @@ CASES = [
         outcome="unachievable",
     ),
     # fetch from a named owner
-    Case("fetch named L1", "bring me Yang's book", [{"holds": ["lee", "book:yang"]}], actions=9),
+    # 10: the requester is told first that Yang will be asked (an inform), then as before
+    Case("fetch named L1", "bring me Yang's book", [{"holds": ["lee", "book:yang"]}], actions=10),
     Case("fetch named away", "bring me Yang's book", [], ("yang",), outcome="unachievable"),
     # deliver
     Case("deliver L1", "take my book to Wang", [{"holds": ["wang", "book:lee"]}], actions=9),

@@ -407,8 +407,12 @@ def _add_part(
             )
             plan.add_goal({"heated": kept})
             if op.returns_item:  # a shredded or faxed-out document does not come back
-                plan.deliveries.append((REQUESTER, Code(REQUESTER, kept, "collect")))
-                plan.add_goal({"holds": [a, kept]})
+                # to whom the part says ("laminate my poster and take it over to Drew"), as
+                # the task it reads as (``Part.task``: recipient ``to``) and the embedded
+                # planner hand it; else back to the requester
+                recipient = _recipient(plan, part, who)
+                plan.deliveries.append((recipient, Code(recipient, kept, "collect")))
+                plan.add_goal({"holds": [part.to or a, kept]})
         case "forward_file":
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))

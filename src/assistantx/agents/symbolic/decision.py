@@ -12,6 +12,7 @@
 from __future__ import annotations
 
 from assistantx.agents.symbolic.evidence import Evidence
+from assistantx.agents.symbolic.owner_notice import owner_notice, told
 from assistantx.agents.symbolic.planning import (
     Agenda,
     Confirm,
@@ -97,7 +98,7 @@ class Decider:
         phase = task.current
         assert phase is not None  # an active task has an unmet phase
         if isinstance(phase.phase, Confirm):
-            return self._confirm(task.states[phase.phase.role.key])
+            return self._confirm(task.states[phase.phase.role.key], ev)
         if isinstance(phase.phase, Forward):
             target = phase.person or phase.phase.target_role.fixed or ev.requester
             what = item_phrase(self.office, phase.phase.file)
@@ -106,12 +107,20 @@ class Decider:
             ]
         return self._handover(phase, phase.phase, ev)
 
-    def _confirm(self, state: RoleState) -> tuple[str, list[Action]]:
+    def _confirm(self, state: RoleState, ev: Evidence) -> tuple[str, list[Action]]:
         role = state.role
         if state.status == "ask" and state.person is not None:
             who = state.person
             doing = role_text(role, self.office)
+            # an owner asked for their own item: the requester hears so first, once
+            notice = owner_notice(self.office, role, who)
+            first: list[Action] = (
+                [Inform(contact=ev.requester, content=notice)]
+                if notice is not None and not told(ev, notice)
+                else []
+            )
             return f"ask {self._name(who)} (best candidate to {doing})", [
+                *first,
                 Inquire(contact=who, question=self.roles.question(role, who)),
                 Wait(reason=f"waiting for {self._name(who)}'s answer", timeout_s=REPLY_TIMEOUT_S),
             ]

@@ -67,6 +67,7 @@ from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.unknown_items import unknown_item
+from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
@@ -169,6 +170,7 @@ class InstructionParser:
         if frame.understood:
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
             frame = _one_send_each(frame)
+            frame = declined_use_up(self.office, frame)
         if frame.question == NOT_UNDERSTOOD:
             unknown = unknown_item(self.screen.terms, readings.tokens, readings.mentions)
             if unknown is not None:

@@ -25,6 +25,16 @@ question        "who has a tape measure?", "is the printer working?" (not "could
 statement       "my laptop cable is too short", "I spilled my tea"                  context
 which           "Jürgen's curry from the staff fridge", where he keeps several      asks which
                 things (one: the rewrites name it)
+variant         a made thing in a variant the office does not make: "a master key   declines;
+                card" (more authority), "an iced tea" (not "a strong tea")          "Shall I
+                                                                                    make an
+                                                                                    ordinary
+                                                                                    one?"
+outsider        a recipient who is nobody of the office ("for the man at the        declines a
+                desk", "bring the courier guy a tea")                               credential;
+                                                                                    "Shall I
+                                                                                    bring it to
+                                                                                    you?"
 unsupported     a service the office does not offer ("scan my contract",            declines
                 "make me a cup of tea")
 ==============  ==================================================================  ==========
@@ -46,11 +56,11 @@ parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
 ``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``,
-``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``,
-``service``), tried in the order of ``rules``; each reads the piece's lexicon reading
-(``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
-screen), never its text again. ``request_screen`` runs in three steps the parser calls in
-turn: ``verdicts`` (the pieces judged: ``Spoken``), ``request`` (what is left, ``rewrites``:
+``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
+``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
+reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
+screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:
+``verdicts`` (the pieces judged: ``Spoken``), ``request`` (what is left, ``rewrites``:
 ``Request``), and, after the readings and frames, ``decide`` (the message as a whole,
 ``answer``: ``Screened``); ``judge`` is the last stage.
 """

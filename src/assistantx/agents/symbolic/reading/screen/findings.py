@@ -20,6 +20,7 @@ Verdict = Literal[
     "destructive",
     "unplaced",
     "which",
+    "instead",
     "fact",
     "question",
     "statement",

@@ -77,6 +77,12 @@ class RequestScreen:
         if declines:
             out.decline, out.outcome = declines[0].message, "unachievable"
             return out
+        instead = [f for f in live if f.verdict == "instead"]
+        # what the office cannot do as asked, with what it can do instead ("Shall I bring it
+        # to you instead?"): asked, and on a yes the offer is read as the request
+        if instead:
+            out.question, out.offer = instead[0].message, instead[0].offer
+            return out
         unplaced = [f for f in live if f.verdict in ("unplaced", "which")]
         # a thing told to go where nothing of the office is, or one of several things kept
         # for its owner: asked, never moved

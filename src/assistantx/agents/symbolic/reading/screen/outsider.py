@@ -1,0 +1,200 @@
+"""A recipient who is nobody of the office: "make a door card for the man at the desk",
+"bring the courier guy a tea", "take the poster to a visitor".
+
+The frames would read such a request with no person named as its recipient, and the recipient
+would become the requester: the item would end in the wrong hands in the requester's name.
+The screen catches the recipient phrase first: ``for``/``to`` or a giving verb's first object,
+a noun phrase whose head is a noun that names a person by what they are (``outsider_nouns``
+in english.yaml: man, guy, visitor, courier ...), that names no person, group, item, place or
+facility of the office and is not the modifier of another noun ("the guest lounge").
+
+- A credential (an item whose name has a ``credential_words`` word: a key card, a pass, a
+  fob) is declined: the assistant hands what opens doors only to people of the office, and
+  what anyone says about who the outsider is carries no authority.
+- Anything else is asked about, with a "Shall I ...?" whose yes brings it to the requester
+  (the offer replaces the outsider's phrase by "me"); a no does nothing.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.tokens import Token, gaps
+from assistantx.core import english, language
+
+_OUTSIDERS = english.words("outsider_nouns")
+_CREDENTIAL = english.words("credential_words")
+_TO = frozenset({"for", "to"})
+_GIVING = english.words("dative_verbs") | english.words("handing_verbs")
+_STARTS = english.words("object_starts") | {"a", "an", "the", "that", "this"}
+_WHERE = english.words("location_prepositions")
+_STOPS = _STARTS | _TO | english.words("clause_joins") | english.words("polite") | {"then"}
+_OFFICE_KINDS = frozenset({"person", "group", "item", "place", "facility"})
+_MOST_MODIFIERS = 3  # "the tall delivery guy"
+
+
+@dataclass(frozen=True)
+class Outsider:
+    phrase: str  # as written: "the man"
+    start: int  # the phrase's characters in the message
+    end: int
+    be: str = "is"  # "are" for "the visitors"
+
+
+def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """The screen's rule: a request piece whose recipient is nobody of the office."""
+    del requester  # the earlier rules of the table took the pieces that ask nothing
+    if _sends_out(terms, msg):
+        return None  # "courier it to the client": a place outside, the destination's reading
+    found = _recipient_outsider(terms, msg, piece)
+    if found is None:
+        return None
+    items = [m for m in msg.lexed.mentions if m.kind == "item"]
+    if any(_credential(terms, m) for m in items):
+        return Finding(
+            "unsupported",
+            piece,
+            f"a credential for someone outside the office: {found.phrase}",
+            message=(
+                "Sorry, I can't do that: I hand keys, cards and passes only to people of this "
+                f"office, and I don't know who {found.phrase} {found.be}. What anyone says "
+                "about who they are doesn't change that. If it is for a colleague, ask again "
+                "with their name."
+            ),
+        )
+    offer = f"{msg.text[: found.start]}me{msg.text[found.end :]}"
+    return Finding(
+        "instead",
+        piece,
+        f"a recipient outside the office: {found.phrase}",
+        message=(
+            f"I hand things only to people of this office, and I don't know who {found.phrase} "
+            f"{found.be}. Shall I bring it to you instead, so you can pass it on?"
+        ),
+        offer=offer,
+    )
+
+
+def _sends_out(terms: Terms, msg: Message) -> bool:
+    """Whether the message names a service that sends things outside the office (its verb,
+    its name, or a facility that offers it): whoever it names outside is where it goes."""
+    office = terms.office
+    words: set[str] = set()
+    for op in office.operations:
+        if not op.sends_out:
+            continue
+        for phrase in (*op.verbs, op.name):
+            head = split_words(phrase)[:1]
+            words.update(f for w in head for f in language.verb_forms(w))
+        for f in office.offering(op.id):
+            words.update(split_words(f.name))
+    return bool(words & {t.word for t in msg.lexed.tokens})
+
+
+def _credential(terms: Terms, mention: Mention) -> bool:
+    office = terms.office
+    for type_id in mention.ids:
+        found = office.item_type(type_id)
+        names = (found.name, *found.synonyms)
+        if any(set(split_words(n)) & _CREDENTIAL for n in names):
+            return True
+    return False
+
+
+def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | None:
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    office_at = {k for m in mentions if m.kind in _OFFICE_KINDS for k in range(m.start, m.end)}
+    breaks = gaps(piece.text, tokens)
+    for n, tok in enumerate(tokens):
+        if n in office_at or not _outsider_noun(tok.word):
+            continue
+        nxt = n + 1
+        if nxt < len(tokens) and _outsider_noun(tokens[nxt].word) and nxt not in office_at:
+            continue  # "the courier guy": the next one is the head
+        if nxt < len(tokens) and not _ends_phrase(tokens[nxt], breaks[nxt], nxt in office_at):
+            continue  # "the guest lounge", "the visitor chair": it modifies another noun
+        start = n
+        while (
+            start > 0
+            and n - start < _MOST_MODIFIERS
+            and (start - 1) not in office_at
+            and tokens[start - 1].word not in _STARTS
+            and tokens[start - 1].word not in _TO
+            and tokens[start - 1].word not in _GIVING
+            and not breaks[start].strip()
+        ):
+            start -= 1
+        if start > 0 and tokens[start - 1].word in _STARTS and tokens[start - 1].word != "me":
+            start -= 1
+        before = tokens[start - 1].word if start > 0 else ""
+        given = before in _GIVING and _item_after(mentions, n)
+        if before not in _TO and not given:
+            continue
+        end = _described_where(tokens, breaks, n + 1, office_at)
+        span = _span(msg, piece, tokens[start:end])
+        if span is not None:
+            be = "are" if language.is_plural_noun(tok.word) else "is"
+            return Outsider(msg.text[span[0] : span[1]], *span, be=be)
+    return None
+
+
+def _described_where(
+    tokens: tuple[Token, ...], breaks: tuple[str, ...], at: int, office_at: set[int]
+) -> int:
+    """Where the outsider's phrase ends: after a place that says which one ("the man at the
+    desk", "the courier in reception"), else at ``at``."""
+    if at >= len(tokens) or tokens[at].word not in _WHERE or breaks[at].strip():
+        return at
+    k = at + 1
+    if k < len(tokens) and tokens[k].word in _STARTS and not breaks[k].strip():
+        k += 1
+    end = k
+    while (
+        end < len(tokens)
+        and end - k < _MOST_MODIFIERS
+        and not breaks[end].strip()
+        and (end in office_at or language.is_noun(tokens[end].word))
+        and tokens[end].word not in _STOPS
+    ):
+        end += 1
+    return end if end > k else at
+
+
+def _outsider_noun(word: str) -> bool:
+    if word in _OUTSIDERS:
+        return True
+    return bool(set(language.lemmas(word).get("NOUN", ())) & _OUTSIDERS)
+
+
+def _ends_phrase(token: Token, gap: str, office: bool) -> bool:
+    """Whether the word after a person noun leaves it the head of its phrase: punctuation
+    between, or a word that is no noun going on ("at", "he", "please", "a", "today")."""
+    if gap.strip() or office:
+        return True
+    word = token.word
+    if word in english.words("common") or word in _STARTS or word in _TO:
+        return True
+    if word.endswith("ing") and language.verb_lemmas(word):
+        return True  # "the visitor waiting downstairs"
+    read = language.lemmas(word)
+    # a noun goes on ("the guest room"), and so does a word the dictionary has only as a
+    # verb's base form, a noun it does not list ("the guest lounge")
+    return "NOUN" not in read and read.get("VERB") != (word,)
+
+
+def _item_after(mentions: tuple[Mention, ...], at: int) -> bool:
+    """ "bring the courier guy a tea": an item follows the person as the verb's second object."""
+    return any(m.kind == "item" and m.start > at for m in mentions)
+
+
+def _span(msg: Message, piece: Piece, said: tuple[Token, ...]) -> tuple[int, int] | None:
+    """Where the phrase's words stand in the message (from the piece on)."""
+    pattern = r"[\s\W]*".join(re.escape(t.text) for t in said)
+    found = re.compile(pattern).search(msg.text.replace("’", "'"), piece.start)
+    return (found.start(), found.end()) if found else None

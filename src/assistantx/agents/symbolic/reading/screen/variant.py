@@ -1,0 +1,187 @@
+"""A made thing asked for in a variant the office does not make: "an iced tea" where the urn
+makes tea, "a master key card" where the encoder makes ordinary door cards.
+
+The office declares what each operation makes (its product); the frames read the product's
+name and would make the ordinary one, dropping the words that asked for something else. The
+screen reads the words right before a product's name in a request (after its determiner,
+number, verb or preposition) and sorts them by what the dictionary says they are:
+
+- an **authority** modifier (``authority_modifiers`` in english.yaml: master, all-access,
+  admin, skeleton ...): more access than the office's product gives. Declined: a message
+  cannot grant it, and asking "shall I make an ordinary one?" would make a credential nobody
+  asked for.
+- a **variant** modifier, which names a kind of the thing rather than a quality of it: a past
+  participle of a process done to it ("iced", "decaffeinated", "toasted"), a noun that forms
+  a compound with it ("oat", "guest", "replacement" excepted below), or a word the dictionary
+  does not know ("decaf"). Asked: "Shall I make an ordinary tea instead?", a yes reading the
+  request without those words, a no doing nothing.
+- an adjective of quality ("strong", "quick", "hot", "large", "nice", "spare") is no variant:
+  the thing is made as the office makes it. So is a replacement word ("new", "another",
+  "fresh", "extra"), the participle of one of the office's own services ("printed") and
+  anything after the name ("a tea, quick").
+
+Limits, on purpose: an adjective that also names a variant ("herbal", "black") is read as a
+quality, as the dictionary cannot tell them apart; the office names such variants as items of
+their own where it makes them.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.tokens import Token, gaps
+from assistantx.core import english, language
+from assistantx.core.wording import a_thing
+
+_AUTHORITY = tuple(tuple(language.words(entry)) for entry in english.entries("authority_modifiers"))
+# Words a modifier run never goes past: what starts the phrase, links it, or asks for it.
+_STOPS = (
+    english.words("determiners")
+    | english.words("screen_determiners")
+    | english.words("object_starts")
+    | english.words("party_prepositions")
+    | english.words("modifier_prepositions")
+    | english.words("location_prepositions")
+    | english.words("lead_in")
+    | english.words("courtesy")
+    | english.words("dative_verbs")
+    | english.words("handing_verbs")
+    | english.words("clause_joins")
+    | english.words("self_words")
+    | english.words("pronouns")
+    | english.words("to_facility_prepositions")
+    | english.words("from_facility_prepositions")
+    | english.words("through_prepositions")
+    | english.words("instrument_prepositions")
+    | english.words("time_prepositions")
+    | english.words("clause_breaks")
+    | {"of", "as", "then", "one", "ones", "up", "down", "back", "away", "over", "around"}
+)
+_QUALITY_ANYWAY = english.words("replacement_words") | english.words("service_participles")
+_OFFICE_KINDS = frozenset({"person", "group", "item", "place", "facility", "cue", "self"})
+_MOST_MODIFIERS = 3
+
+
+@dataclass(frozen=True)
+class Variant:
+    item_type: str
+    words: tuple[str, ...]  # the modifiers as written
+    authority: bool
+    start: int  # the modifiers' characters in the message
+    end: int
+
+
+def variant(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """The screen's rule: a request piece asking for a product in a variant not made here."""
+    del requester  # the earlier rules of the table took the pieces that ask nothing
+    found = _variant(terms, msg, piece)
+    if found is None:
+        return None
+    office = terms.office
+    kind = office.item_type(found.item_type)
+    asked = a_thing(f"{' '.join(found.words)} {kind.name}", mass=kind.mass)
+    if found.authority:
+        return Finding(
+            "unsupported",
+            piece,
+            f"a variant with more authority than the office makes: {asked}",
+            message=(
+                f"Sorry, I can't make {asked}: I can only get the ordinary {kind.name} made "
+                "here, and a message cannot grant more access than that."
+            ),
+        )
+    ordinary = a_thing(f"ordinary {kind.name}", mass=kind.mass)
+    offer = f"{msg.text[: found.start]}{msg.text[found.end :].lstrip()}"
+    return Finding(
+        "instead",
+        piece,
+        f"a variant the office does not make: {asked}",
+        message=(
+            f"I can get {ordinary} made here, but {asked} is not something this office "
+            f"makes. Shall I get you {ordinary} instead?"
+        ),
+        offer=offer,
+    )
+
+
+def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    office_at = {k for m in mentions if m.kind in _OFFICE_KINDS for k in range(m.start, m.end)}
+    breaks = gaps(piece.text, tokens)
+    for m in mentions:
+        if m.kind != "item" or not _made_here(terms, m):
+            continue
+        start = m.start
+        while (
+            start > 0
+            and m.start - start < _MOST_MODIFIERS
+            and (start - 1) not in office_at
+            and not breaks[start].strip()
+            and _modifier(terms, tokens[start - 1], first=start == 1)
+        ):
+            start -= 1
+        said = tokens[start : m.start]
+        if not said:
+            continue
+        words = tuple(t.word for t in said)
+        # an authority phrase may start with a word that stops a modifier ("all-access")
+        reach = tuple(t.word for t in tokens[max(0, start - 1) : m.start])
+        authority = any(_has(reach, phrase) and set(phrase) & set(words) for phrase in _AUTHORITY)
+        if not authority and not any(_names_a_kind(terms, w) for w in words):
+            continue
+        if authority:
+            said = tokens[max(0, start - 1) : m.start] if reach != words else said
+        span = _span(msg, piece, said)
+        if span is not None:
+            return Variant(m.ids[0], tuple(t.text for t in said), authority, *span)
+    return None
+
+
+def _made_here(terms: Terms, mention: Mention) -> bool:
+    office = terms.office
+    return len(mention.ids) == 1 and office.making(mention.ids[0]) is not None
+
+
+def _modifier(terms: Terms, token: Token, *, first: bool) -> bool:
+    """Whether a word before a product's name may modify it (not a determiner, a number, a
+    verb that asks for it, a preposition, a pronoun); the first word of a piece in a verb's
+    plain form is the verb ("run off box labels"), not a modifier."""
+    word = token.word
+    if word in _STOPS or word.isdigit() or token.possessive:
+        return False
+    if first and word in language.verb_lemmas(word) and not _authority_word(word):
+        return False
+    return word not in terms.lex.cue_words and word not in terms.service_verbs
+
+
+def _names_a_kind(terms: Terms, word: str) -> bool:
+    """A variant's word: a process done to the thing ("iced"), a noun with no adjective
+    reading ("oat", "guest"), or a word the dictionary does not know ("decaf")."""
+    if word in _QUALITY_ANYWAY or word in terms.service_verbs:
+        return False
+    read = language.lemmas(word)
+    if not read:
+        return True  # "decaf": no quality the dictionary knows
+    if language.is_past_participle(word):
+        return True
+    return "ADJ" not in read and "NOUN" in read
+
+
+def _authority_word(word: str) -> bool:
+    return any(word in phrase for phrase in _AUTHORITY)
+
+
+def _has(words: tuple[str, ...], phrase: tuple[str, ...]) -> bool:
+    n = len(phrase)
+    return any(words[k : k + n] == phrase for k in range(len(words) - n + 1))
+
+
+def _span(msg: Message, piece: Piece, said: tuple[Token, ...]) -> tuple[int, int] | None:
+    pattern = r"[\s\W]*".join(re.escape(t.text) for t in said)
+    found = re.compile(pattern).search(msg.text.replace("’", "'"), piece.start)
+    return (found.start(), found.end()) if found else None
