@@ -80,3 +80,45 @@ async def test_a_decomposed_name_is_handed_the_stool_with_no_refusal() -> None:
     assert not [r for r in run.stm.trace.actions() if r.refused]
     stools = {item: who for item, who in run.sim.world.holder.items() if "step_stool" in item}
     assert "sian" in stools.values(), stools
+
+
+# -- 7. the same item named again in a sentence of its own is one item ------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me Mei's step stool. the step stool, not the ladder",
+        "bring me Mei's step stool. the step stool please",
+        "bring me Mei's step stool! the step stool, not the ladder",
+        "could you bring me Mei's step stool? the step stool I mean",
+    ],
+)
+def test_the_item_said_again_is_one_fetch(text: str) -> None:
+    assert _tasks(_frame(text)) == [("transfer", "step_stool", "mei", "hamid")]
+
+
+@pytest.mark.parametrize(
+    ("text", "items"),
+    [
+        ("bring me Mei's step stool. the ladder too", ["step_stool", "ladder"]),
+        ("bring me Mei's step stool. and Bea's ladder", ["step_stool", "ladder"]),
+        ("bring me Mei's step stool. take Dara the step stool too", ["step_stool", "step_stool"]),
+    ],
+)
+def test_another_item_or_another_recipient_is_still_its_own_task(
+    text: str, items: list[str]
+) -> None:
+    """Near-miss: a second sentence with another item, or the same kind for someone else, is
+    a second errand as before."""
+    assert [t.item for t in _frame(text).tasks] == items
+
+
+async def test_the_item_said_again_is_handed_over_once() -> None:
+    run = await run_instruction(
+        hostel(), "hamid", "bring me Mei's step stool. the step stool, not the ladder"
+    )
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.holder["step_stool:mei"] == "hamid"
+    assert run.sim.world.holder.get("step_stool:sian") != "hamid"
+    assert run.sim.world.holder.get("ladder:bea") != "hamid"

@@ -176,7 +176,11 @@ class FrameReader:
             word = tokens[m.start].word
             gap = gaps[m.start]
             spaced_dash = gap.strip() in ("-", "–", "—", "--") and gap != gap.strip()
-            hard = (any(c in gap for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
+            # a sentence may start on a word that is no mention ("... stool. the stool"): the
+            # break is wherever one starts since the last mention (a title's stop is none)
+            since = mentions[n - 1].end if n else m.start
+            ended = "".join(gaps[since : m.start + 1])
+            hard = (any(c in ended for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
             soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
                 self._starts_request(
                     mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
