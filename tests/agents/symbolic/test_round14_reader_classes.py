@@ -122,3 +122,56 @@ async def test_the_item_said_again_is_handed_over_once() -> None:
     assert run.sim.world.holder["step_stool:mei"] == "hamid"
     assert run.sim.world.holder.get("step_stool:sian") != "hamid"
     assert run.sim.world.holder.get("ladder:bea") != "hamid"
+
+
+# -- 5. a plural kind of thing after the request says why, it asks for no item ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "owner"),
+    [
+        ("can u fetch Dara's book trolley? storytime books need moving", "book_cart", "dara"),
+        ("could you bring Dara's book cart? storybooks need shelving", "book_cart", "dara"),
+        ("can you get Bea's ladder? the folders need to go up high", "ladder", "bea"),
+        ("bring me Dara's book cart, the books are heavy", "book_cart", "dara"),
+        ("grab Mei's step stool pls. folders keep falling off the top shelf", "step_stool", "mei"),
+    ],
+)
+def test_a_generic_plural_after_the_request_is_its_reason(text: str, item: str, owner: str) -> None:
+    assert _tasks(_frame(text)) == [("transfer", item, owner, "hamid")]
+
+
+@pytest.mark.parametrize(
+    ("text", "items"),
+    [
+        ("can you get Bea's ladder? also folders please", ["ladder", "folder"]),
+        ("can you get Bea's ladder? folders, too", ["ladder", "folder"]),
+        ("can u fetch Dara's book trolley? and bring me folders", ["book_cart", "folder"]),
+        ("get Bea's ladder and folders", ["ladder", "folder"]),
+    ],
+)
+def test_a_plural_asked_for_is_still_fetched(text: str, items: list[str]) -> None:
+    """Near-miss: a list of things ("folders please", "and bring me folders") is a request."""
+    assert [t.item for t in _frame(text).tasks] == items
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can you get Bea's ladder? the storybook needs moving",  # one thing: whose?
+        "can you get Bea's ladder? my folders need to go up",  # mine: where to?
+    ],
+)
+def test_a_singular_or_owned_thing_after_the_request_is_still_asked_about(text: str) -> None:
+    frame = _frame(text)
+    assert not frame.tasks and frame.question is not None
+
+
+async def test_only_the_cart_moves_for_the_reason() -> None:
+    run = await run_instruction(
+        hostel(), "hamid", "can u fetch Dara's book trolley? storytime books need moving"
+    )
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.holder["book_cart:dara"] == "hamid"
+    assert not [i for i, who in run.sim.world.holder.items() if "storybook" in i and who == "hamid"]
+

@@ -24,6 +24,8 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return Finding("statement", piece, "context beside the request")
     if not piece.asks and verbless_aside(terms, msg, piece):
         return Finding("statement", piece, "an aside beside the request, context only")
+    if not piece.asks and generic_explanation(terms, msg, piece):
+        return Finding("statement", piece, "why the request is made, context only")
     if piece.asks or not piece.acts.statement:
         return None
     named = (
@@ -84,6 +86,38 @@ def verbless_aside(terms: Terms, msg: Message, piece: Piece) -> bool:
     # nothing after the compound but words that are no object either ("again", "today")
     rest = [t.word for t in tokens[2:]]
     return not any(language.is_noun(w) and w not in terms.en.courtesy for w in rest)
+
+
+# the subject's verb after a plural noun: "books need moving", "the files are heavy",
+# "boxes will pile up" (a modal); any other verb form is read from the dictionary
+_SUBJECT_VERBS = english_words("copulas") | english_words("request_modals")
+
+
+def generic_explanation(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "can u fetch Dara's book cart? storybooks need moving": after a request, a piece
+    with no request wording whose subject is a kind of thing said in the plural, with no
+    one's name or "my" or "it" ("books need moving", "the folders are heavy"), says why the
+    request is made; it asks for no item of its own. A singular thing ("the storybook needs
+    moving"), anyone's thing ("my folders need ..."), a bare list ("folders please") or a
+    piece that opens with a verb is read as before."""
+    if piece.acts.request or not any(p.acts.request for p in msg.pieces if p.end <= piece.start):
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    if any(m.kind not in ("word", "cue", "item") for m in mentions):
+        return False  # a person, "me"/"my", a pronoun, a place: not a generic kind
+    items = [m for m in mentions if m.kind == "item"]
+    if not items or mentions[0].kind == "cue" and mentions[0].start == 0:
+        return False  # nothing named, or a verb first ("move the books")
+    for m in items:
+        last = tokens[m.end - 1]
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        if last.possessive or not language.is_plural_noun(last.word):
+            return False
+        if after in terms.en.courtesy or not (
+            after in _SUBJECT_VERBS or language.verb_lemmas(after)
+        ):
+            return False  # "folders please", "books too": a list, not a subject
+    return True
 
 
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
