@@ -1,8 +1,9 @@
 """A small youth hostel's back office for the reader's tests of blind round 14's classes (the
 round's own office and sentences were never read). A post room keeps a parcel for anyone and
-Yusuf's bike pump; a courier service sends a parcel outside; a kitchen keeps a kettle for anyone
-and makes tea and hot chocolate; people own project folders, step stools, ladders, book carts,
-storybooks and an electronic rota file; Bea keeps the key box at the front desk. No item is
+Yusuf's bike pump, and its post desk sends a parcel outside by courier; a copier there prints a
+rota file, laminates or shreds a notice; a kitchen keeps a kettle for anyone and makes tea and
+hot chocolate; a laundry shelf keeps an iron; people own project folders, step stools, ladders,
+book carts and storybooks. Some names carry diacritics (Siân, Trần Bảo Châu). No item is
 called a drink or something to write with."""
 
 from __future__ import annotations
@@ -53,6 +54,8 @@ def raw_hostel() -> dict[str, Any]:
             {"id": "kettle", "name": "kettle"},
             {"id": "iron", "name": "iron"},
             {"id": "rota", "name": "file", "kind": "electronic", "synonyms": ["spreadsheet"]},
+            {"id": "notice", "name": "notice", "kind": "personal"},
+            {"id": "printout", "name": "printout", "kind": "product"},
             {"id": "tea", "name": "tea", "kind": "product"},
             {"id": "cocoa", "name": "hot chocolate", "kind": "product"},
         ],
@@ -65,6 +68,21 @@ def raw_hostel() -> dict[str, Any]:
                 "sends_out": True,
                 "destination_asked": "the name and address of the place",
             },
+            {
+                "id": "print",
+                "name": "print",
+                "verbs": ["print"],
+                "input": "rota",
+                "product": "printout",
+            },
+            {"id": "laminate", "name": "laminate", "verbs": ["laminate"], "input": "notice"},
+            {
+                "id": "shred",
+                "name": "shred",
+                "verbs": ["shred"],
+                "input": "notice",
+                "consumes": True,
+            },
             {"id": "brew", "name": "make tea", "verbs": ["brew"], "product": "tea"},
             {"id": "cocoa", "name": "make hot chocolate", "product": "cocoa"},
         ],
@@ -75,7 +93,7 @@ def raw_hostel() -> dict[str, Any]:
                 "aliases": aliases,
                 "location": f"desk_{n}",
                 "handle": f"@{pid}",
-                "owns": [*owns, {"type": "rota"}],
+                "owns": [*owns, {"type": "rota"}, {"type": "notice"}],
             }
             for n, (pid, name, aliases, owns) in enumerate(_PEOPLE, 1)
         ],
@@ -87,6 +105,14 @@ def raw_hostel() -> dict[str, Any]:
                 "operations": ["courier"],
                 "guards": ["yusuf"],
                 "supplies": [{"type": "parcel", "count": 1}],
+            },
+            {
+                "id": "copier",
+                "name": "copier",
+                "location": "post_room",
+                "operations": ["print", "laminate", "shred"],
+                "products": ["printout"],
+                "guards": ["bea"],
             },
             {
                 "id": "kitchen_counter",

@@ -175,3 +175,52 @@ async def test_only_the_cart_moves_for_the_reason() -> None:
     assert run.sim.world.holder["book_cart:dara"] == "hamid"
     assert not [i for i, who in run.sim.world.holder.items() if "storybook" in i and who == "hamid"]
 
+
+# -- 6. a trailing aside after a complete request -------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "need the step stool from Mei's desk, reserve shelf again 🙄",
+        "need Mei's step stool, reserve shelf again ugh",
+        "need Mei's step stool. reserve shelf again 🙄",
+        "need Mei's step stool - laundry shelf again lol",
+        "need the step stool from Mei's desk, reserve shelf is full again 🙄",
+        "need Mei's step stool, print room is busy again",
+    ],
+)
+def test_an_aside_after_the_request_leaves_the_request_done(text: str) -> None:
+    """ "shelf" is a word of the laundry shelf's name, but alone it names no place of the
+    office: "reserve shelf" is a compound said in passing, not a request for a service."""
+    frame = _frame(text)
+    assert frame.decline is None and frame.question is None, frame.decline or frame.question
+    assert _tasks(frame) == [("transfer", "step_stool", "mei", "hamid")]
+
+
+@pytest.mark.parametrize(
+    ("text", "operations"),
+    [
+        ("print my file and laminate my notice", ["print", "laminate"]),
+        ("laminate my notice, then shred it", ["laminate", "shred"]),
+        ("print my file, then laminate my notice again", ["print", "laminate"]),
+    ],
+)
+def test_two_real_services_stay_two(text: str, operations: list[str]) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [t.operation or t.kind for t in frame.tasks] == operations
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "need Mei's step stool, reserve the shelf again 🙄",
+        "bring me a ladder, reserve a room for me",
+    ],
+)
+def test_a_service_the_office_lacks_asked_with_an_object_is_still_declined(text: str) -> None:
+    """Near-miss: "reserve the shelf", "reserve a room" ask for a service (its object after a
+    determiner); the office has none, so it says so rather than doing part."""
+    frame = _frame(text)
+    assert frame.decline is not None and not frame.tasks

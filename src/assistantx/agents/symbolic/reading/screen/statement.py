@@ -63,6 +63,8 @@ def owner_work_asked(msg: Message, piece: Piece) -> bool:
     return not any(p.acts.request for p in msg.pieces if p is not piece)
 
 
+_COPULAS = english_words("copulas")
+
 # what a verb's object may open with: with one of these after it, the word is a verb
 _OBJECT_OPENERS = english_words("object_starts") | frozenset({"me", "us", "it", "them", "one"})
 
@@ -79,18 +81,21 @@ def verbless_aside(terms: Terms, msg: Message, piece: Piece) -> bool:
         return False
     head, noun = tokens[0].word, tokens[1].word
     verb = head in terms.lex.cue_words or head in terms.en.service_verbs
-    if not verb or noun in _OBJECT_OPENERS or noun in terms.office_words:
+    if not verb or noun in _OBJECT_OPENERS or noun in terms.thing_words:
         return False
     if tokens[1].possessive or not language.is_noun(noun) or language.is_finite_verb(noun):
         return False
-    # nothing after the compound but words that are no object either ("again", "today")
+    # nothing after the compound but words that are no object either ("again", "today"),
+    # or the compound is the subject of a verb ("reserve shelf is full again")
     rest = [t.word for t in tokens[2:]]
+    if rest and (rest[0] in _COPULAS or language.is_finite_verb(rest[0])):
+        return True
     return not any(language.is_noun(w) and w not in terms.en.courtesy for w in rest)
 
 
 # the subject's verb after a plural noun: "books need moving", "the files are heavy",
 # "boxes will pile up" (a modal); any other verb form is read from the dictionary
-_SUBJECT_VERBS = english_words("copulas") | english_words("request_modals")
+_SUBJECT_VERBS = _COPULAS | english_words("request_modals")
 
 
 def generic_explanation(terms: Terms, msg: Message, piece: Piece) -> bool:
@@ -106,7 +111,7 @@ def generic_explanation(terms: Terms, msg: Message, piece: Piece) -> bool:
     if any(m.kind not in ("word", "cue", "item") for m in mentions):
         return False  # a person, "me"/"my", a pronoun, a place: not a generic kind
     items = [m for m in mentions if m.kind == "item"]
-    if not items or mentions[0].kind == "cue" and mentions[0].start == 0:
+    if not items or (mentions[0].kind == "cue" and mentions[0].start == 0):
         return False  # nothing named, or a verb first ("move the books")
     for m in items:
         last = tokens[m.end - 1]

@@ -19,11 +19,13 @@ class Terms:
         self.lex = lex
         self.en = english()
         self.acts = SpeechActs(lex)
-        self.office_words = frozenset(
+        # the words of the office's things, people and services; a word that occurs only in
+        # a facility's name ("shelf" of "the laundry shelf") is not one: alone it names no
+        # place (the whole name is a mention of its own)
+        self.thing_words = frozenset(
             w
             for phrase in (
                 *lex.items,
-                *lex.facilities,
                 *lex.people,
                 *lex.name_words,
                 *(o.name for o in office.operations),
@@ -31,6 +33,9 @@ class Terms:
             )
             for w in split_words(phrase)
         )
+        self.office_words = self.thing_words | {
+            w for phrase in lex.facilities for w in split_words(phrase)
+        }
 
         # every form of the verbs of the office's own services ("print", "plotted")
         self.service_verbs = frozenset(
