@@ -224,3 +224,51 @@ def test_a_service_the_office_lacks_asked_with_an_object_is_still_declined(text:
     determiner); the office has none, so it says so rather than doing part."""
     frame = _frame(text)
     assert frame.decline is not None and not frame.tasks
+
+
+# -- 3. words that describe an owned item stand between the possessive and the item ----------
+
+
+@pytest.mark.parametrize(
+    ("text", "row"),
+    [
+        ("bring me Bea's big blue project folder", ("transfer", "folder", "bea", "hamid")),
+        ("could you get me Mei's old blue step stool", ("transfer", "step_stool", "mei", "hamid")),
+        ("get Ms Quinn's laundry rota file for me", ("send_file", "rota", "quinn", "hamid")),
+        ("get Quinn's budget rota file for me", ("send_file", "rota", "quinn", "hamid")),
+        ("send me Ms Ashby's weekly laundry file", ("send_file", "rota", "quinn", "hamid")),
+    ],
+)
+def test_the_description_between_possessive_and_item_keeps_the_owner(text: str, row: Row) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert _tasks(frame) == [row]
+
+
+def test_the_description_holds_in_the_second_task_of_a_sentence() -> None:
+    frame = _frame("send my budget spreadsheet to Mei and get Ms Quinn's laundry rota file for me")
+    assert frame.question is None, frame.question
+    assert _tasks(frame) == [
+        ("send_file", "rota", "hamid", "mei"),
+        ("send_file", "rota", "quinn", "hamid"),
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me Bea's ladder and the blue project folder",
+        "bring me Bea's ladder and a big blue project folder",
+        "bring me Bea's ladder, also a blue project folder",
+    ],
+)
+def test_an_article_or_a_join_starts_a_phrase_the_possessive_does_not_own(text: str) -> None:
+    """Near-miss: "the/a ... folder" after "and" is a phrase of its own, not Bea's."""
+    owners = {t.item: t.owner for t in _frame(text).tasks}
+    assert owners.get("ladder") == "bea" and owners.get("folder") != "bea"
+
+
+async def test_the_described_folder_is_asked_of_its_owner() -> None:
+    run = await run_instruction(hostel(), "hamid", "bring me Bea's big blue project folder")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.holder["folder:bea"] == "hamid"
