@@ -13,8 +13,9 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import parse_office
 from assistantx.core.task_schema import TaskFrame
-from helpers.hostel import hostel
+from helpers.hostel import hostel, raw_hostel
 
 Row = tuple[str, str | None, str | None, str | None]
 
@@ -272,3 +273,156 @@ async def test_the_described_folder_is_asked_of_its_owner() -> None:
     run = await run_instruction(hostel(), "hamid", "bring me Bea's big blue project folder")
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     assert run.sim.world.holder["folder:bea"] == "hamid"
+
+
+# -- 1. "the <item> in/at/from <place>" is the one kept there ---------------------------------
+
+
+@functools.cache
+def _two_of_each() -> InstructionParser:
+    """The hostel where the laundry shelf also keeps a kettle for anyone, and Bea has a bike
+    pump of her own on her desk: the office's default kettle is the kitchen's, its default
+    pump Yusuf's in the post room."""
+    raw = raw_hostel()
+    for f in raw["facilities"]:
+        if f["id"] == "laundry_shelf":
+            f["supplies"] = [*f["supplies"], {"type": "kettle"}]
+    for p in raw["people"]:
+        if p["id"] == "bea":
+            p["owns"] = [*p["owns"], {"type": "pump"}]
+    return InstructionParser(parse_office(raw, "hostel-two-of-each"))
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("grab the kettle in the laundry", "laundry_shelf"),
+        ("bring me the kettle from the laundry shelf", "laundry_shelf"),
+        ("bring me the bike pump on desk 2", "bea"),  # the one on a desk: whoever sits there
+        # the one the office would take anyway is left to the planner (owner None), as before
+        ("grab the kettle in the kitchen", None),
+        ("bring me the bike pump in the post room", None),  # Yusuf's, kept there
+    ],
+)
+def test_the_place_phrase_names_the_item_kept_there(text: str, owner: str | None) -> None:
+    frame = _two_of_each().parse(text, "hamid")
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.owner, t.recipient) for t in frame.tasks] == [("transfer", owner, "hamid")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me the ladder in the kitchen",
+        "grab the kettle in the laundry",
+        "leave the ladder in the kitchen",
+        "bring me the step stool in the post room",
+    ],
+)
+def test_nothing_of_the_kind_kept_there_is_asked_about(text: str) -> None:
+    """Never another one from elsewhere: none of the kind is kept where the requester said."""
+    frame = _frame(text)
+    assert not frame.tasks and frame.question is not None
+    assert frame.question.startswith("I don't know of a")
+
+
+def _crowded_laundry() -> InstructionParser:
+    """The hostel where Bea and Yusuf both keep their ladders on the laundry shelf."""
+    raw = raw_hostel()
+    for p in raw["people"]:
+        if p["id"] in ("bea", "yusuf"):
+            p["owns"] = [
+                {"type": "ladder", "at": "laundry", "facility": "laundry_shelf"}
+                if o["type"] == "ladder"
+                else o
+                for o in p["owns"]
+                if o["type"] != "pump"
+            ]
+    return InstructionParser(parse_office(raw, "hostel-crowded"))
+
+
+def test_several_kept_there_are_asked_which() -> None:
+    frame = _crowded_laundry().parse("bring me the ladder in the laundry", "hamid")
+    assert not frame.tasks and frame.question is not None
+    assert "Bea Lindqvist's or Yusuf Demir's" in frame.question
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("bring me Bea's ladder", "bea"),  # a possessive, no place phrase: as before
+        ("bring me a ladder", None),  # anyone's: the planner chooses, as before
+    ],
+)
+def test_without_a_place_phrase_the_owner_is_read_as_before(text: str, owner: str | None) -> None:
+    assert [t.owner for t in _frame(text).tasks] == [owner]
+
+
+@pytest.mark.parametrize("text", ["bring me a ladder from the kitchen", "get me some kettle"])
+def test_an_indefinite_thing_from_a_place_is_any_one_as_before(text: str) -> None:
+    """Near-miss: "a ladder from the kitchen" asks for any one; none kept there is no
+    reason to ask (the planner finds one, as before)."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [t.owner for t in frame.tasks] == [None]
+
+
+async def test_the_kettle_kept_in_the_laundry_comes_from_its_keeper() -> None:
+    parser = _two_of_each()
+    run = await run_instruction(parser.office, "hamid", "grab the kettle in the laundry")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.holder["kettle:laundry_shelf"] == "hamid"
+    assert run.sim.world.holder["kettle:kitchen_counter"] != "hamid"
+
+
+# -- 2. a statement says where the item goes, then a send-out on "it" -------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        (
+            "the parcel in the post room needs to go out to the Dublin office, can you courier it",
+            "the Dublin office",
+        ),
+        (
+            "the parcel in the post room has to go off to Galway Hostel, can you post it",
+            "Galway Hostel",
+        ),
+        ("the parcel has to go off to Galway Hostel. Courier it please", "Galway Hostel"),
+        (
+            "the parcel should go over to 12 Shore Road, Cork, can you courier it",
+            "12 Shore Road, Cork",
+        ),
+    ],
+)
+def test_the_statement_says_where_the_parcel_kept_there_goes(text: str, where: str) -> None:
+    """ "post" is a verb of the courier service, but "the post room" names a place; "has to"
+    and "should" state where it goes as "needs to" does, and the parcel is the one the post
+    desk keeps for anyone (the requester has none of their own)."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.item, t.owner, t.operation, t.destination) for t in frame.tasks] == [
+        ("parcel", "post_desk", "courier", where)
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I have to go over to Galway, can you courier the parcel",  # the person goes
+        "the parcel has to go off to Galway Hostel, bring it to me",  # no send-out verb
+        "the parcel is back in the post room",  # where it is: words only
+    ],
+)
+def test_a_person_going_or_no_send_out_is_no_destination(text: str) -> None:
+    assert not [t for t in _frame(text).tasks if t.destination is not None]
+
+
+async def test_the_parcel_kept_in_the_post_room_is_couriered_where_the_statement_said() -> None:
+    text = "the parcel in the post room needs to go out to the Dublin office, can you courier it"
+    run = await run_instruction(hostel(), "hamid", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    [sent] = run.sim.world.sent_out()
+    assert sent.detail["item"] == "parcel:post_desk"
+    assert "to the Dublin office" in sent.detail["told"]

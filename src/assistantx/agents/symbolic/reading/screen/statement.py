@@ -20,6 +20,8 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
     if owner_work_asked(msg, piece):
         return None  # "Robin has to sign my condition report.": its owner asks for it
+    if destination_stated(terms, msg, piece):
+        return None  # "my parcel has to go off to Galway, post it": where "it" goes
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
     if not piece.asks and verbless_aside(terms, msg, piece):
@@ -64,6 +66,34 @@ def owner_work_asked(msg: Message, piece: Piece) -> bool:
 
 
 _COPULAS = english_words("copulas")
+
+# The words of going before a statement's destination ("has to go *off to* Galway"); the
+# readings stage (``destination``) reads the same "to" as where a send-out sends "it".
+_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
+_OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that"})
+
+
+def destination_stated(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "my parcel has to go off to Galway Hostel, post it off please": a statement that an
+    item goes somewhere ("to" after a word of going), followed in the next piece by a
+    request that sends "it" out with one of the office's send-out services, says where the
+    request sends it: it stays with the request, not set aside as context."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    if not any(m.kind == "item" for m in mentions):
+        return False
+    if not any(w == "to" and words[k - 1] in _GOING for k, w in enumerate(words) if k):
+        return False
+    later = [p for p in msg.pieces if p.start > piece.end][:3]
+    request = next((p for p in later if p.acts.request), None)
+    if request is None:
+        return False
+    said = [t.word for t in request.lexed.tokens]
+    return any(
+        w in terms.send_out_verbs and k + 1 < len(said) and said[k + 1] in _OBJECT_PRONOUNS
+        for k, w in enumerate(said)
+    )
+
 
 # what a verb's object may open with: with one of these after it, the word is a verb
 _OBJECT_OPENERS = english_words("object_starts") | frozenset({"me", "us", "it", "them", "one"})

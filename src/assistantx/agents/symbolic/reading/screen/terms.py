@@ -37,6 +37,15 @@ class Terms:
             w for phrase in lex.facilities for w in split_words(phrase)
         }
 
+        # every form of the verbs of the services that send an item out ("courier", "posted")
+        self.send_out_verbs = frozenset(
+            form
+            for op in office.operations
+            if op.sends_out
+            for phrase in (*op.verbs, op.name)
+            if split_words(phrase)
+            for form in language.verb_forms(split_words(phrase)[0])
+        )
         # every form of the verbs of the office's own services ("print", "plotted")
         self.service_verbs = frozenset(
             form
