@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import unicodedata
+
 import pytest
 
 from assistantx.core import language
@@ -142,3 +144,13 @@ def test_word_forms(word: str) -> None:
 @pytest.mark.parametrize("word", ["pirnt", "rebnid", "stapeler", "cpoy", "printe"])
 def test_typos_are_no_word_forms(word: str) -> None:
     assert not language.is_word_form(word)
+
+
+@pytest.mark.parametrize("text", ["Siân's stool", "Trần Bảo Châu", "Zoë’s"])
+def test_a_decomposed_accent_stays_in_its_word(text: str) -> None:
+    """Text pasted in the decomposed form (a letter, then its combining accent) splits into
+    the same words as the composed form, and they fold alike."""
+    decomposed = unicodedata.normalize("NFD", text)
+    assert decomposed != text
+    found = [language.fold(m.group(0)) for m in language.WORD.finditer(decomposed)]
+    assert found == [language.fold(m.group(0)) for m in language.WORD.finditer(text)]

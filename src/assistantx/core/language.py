@@ -32,8 +32,13 @@ from collections.abc import Iterable
 
 from lemminflect import getAllInflections, getAllInflectionsOOV, getAllLemmas
 
-WORD = re.compile(r"[^\W_]+(?:['’][^\W_]+)*", re.UNICODE)
-"""A word of any script, with inner apostrophes ("José", "Müller's", "don't")."""
+# Combining marks (accents typed or pasted as a letter plus a mark, the decomposed form NFD):
+# not word characters to ``re``, yet part of the letter before them ("Sia\u0302n" is "Siân").
+_MARKS = "\u0300-\u036f\u1ab0-\u1aff\u1dc0-\u1dff\u20d0-\u20ff\ufe20-\ufe2f"
+_LETTERS = rf"[^\W_](?:[^\W_]|[{_MARKS}])*"
+WORD = re.compile(rf"{_LETTERS}(?:['’]{_LETTERS})*", re.UNICODE)
+"""A word of any script, with inner apostrophes ("José", "Müller's", "don't"), its letters
+composed or decomposed (a letter and its combining accent are one word)."""
 
 # A word this common in written English (Zipf scale) is an ordinary word a person may type in
 # lower case; rarer dictionary words ("ken", "fang") are still words, but rarely meant.

@@ -279,6 +279,9 @@ def owner_of(
             return others[-1]
         if p.kind not in ("word", "item"):  # "Wang's report file": a compound noun
             break
+    described = _described_owner(tokens, ms, n, requester)
+    if described is not None:
+        return described
     # "the stapler of Zhang" / "a stapler from Zhang"
     if n + 2 < len(ms) + 1 and n + 1 < len(ms):
         nxt = tokens[m.end].word if m.end < len(tokens) else ""
@@ -289,6 +292,51 @@ def owner_of(
             return after.ids[0]
         if nxt == "of" and after.kind == "self" and tokens[after.start].word in ("mine", "ours"):
             return requester  # "these headphones of mine"
+    return None
+
+
+# Words that end a noun phrase when read backwards from its head: whatever stands before
+# them belongs to another phrase ("Bea's ladder and the folder", "Hamid's, for the folder").
+_PHRASE_ENDS = (
+    _ARTICLES
+    | english.words("party_prepositions")
+    | english.words("clause_joins")
+    | english.words("clause_breaks")
+    | english.words("determiners")
+    | english.words("self_words")
+    | english.words("pronouns")
+    | english.words("subject_pronouns")
+)
+# How many describing words may stand between a possessive and its item ("Omar's big blue
+# project folder", "Ms Lan's laundry rota file").
+_DESCRIBING_WORDS = 4
+
+
+def _described_owner(
+    tokens: Sequence[Token], ms: list[Mention], n: int, requester: str
+) -> str | None:
+    """ "Ms Lan's laundry rota file", "Omar's big blue project folder": the possessive
+    before words that describe the item (adjectives, nouns the office does not know, a
+    place's name used as a modifier, the item's own words) owns it. Any word that starts
+    another phrase (an article, a preposition, "and", a pronoun), a task word, a person
+    named without "'s", a second possessive or punctuation inside the phrase ends it."""
+    m = ms[n]
+    at = {x.start: x for x in ms}
+    inside = {k for x in ms for k in range(x.start + 1, x.end)}
+    k = m.start - 1
+    while k >= 0 and m.start - 1 - k <= _DESCRIBING_WORDS:
+        if k in inside:
+            k -= 1
+            continue
+        here = at.get(k)
+        if here is not None and here.possessive and here.kind in ("person", "self"):
+            return requester if here.kind == "self" else here.ids[0]
+        if here is not None and here.kind not in ("word", "item", "place", "facility"):
+            return None
+        token = tokens[k]
+        if token.possessive or token.word in _PHRASE_ENDS or token.opens:
+            return None
+        k -= 1
     return None
 
 

@@ -10,7 +10,7 @@ an organisation) for the outcome the requester reads.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -70,17 +70,23 @@ def verb_phrases(operation: str, phrases: Iterable[str]) -> tuple[VerbPhrase, ..
 
 
 def find_outside(
-    tokens: Sequence[Token], gaps: Sequence[str], phrases: Sequence[VerbPhrase]
+    tokens: Sequence[Token],
+    gaps: Sequence[str],
+    phrases: Sequence[VerbPhrase],
+    names: Collection[int] = (),
 ) -> Outside | None:
     """The first send-out verb phrase of ``tokens`` (``gaps``: the punctuation before each
-    token), with the phrase after the first "to" in the verb's own clause, if any."""
+    token), with the phrase after the first "to" in the verb's own clause, if any. ``names``:
+    token indices inside a name of the office ("the *post* room"), never the verb."""
     words = [t.word for t in tokens]
     found = next(
         (
             (k, k + 1 + len(p.rest), p.operation)
             for k, word in enumerate(words)
             for p in phrases
-            if word in p.forms and tuple(words[k + 1 : k + 1 + len(p.rest)]) == p.rest
+            if word in p.forms
+            and k not in names
+            and tuple(words[k + 1 : k + 1 + len(p.rest)]) == p.rest
         ),
         None,
     )

@@ -29,6 +29,7 @@ from assistantx.agents.symbolic.reading._parties import (
     UnresolvedPronoun,
     clause_roles,
 )
+from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
@@ -79,6 +80,7 @@ class FrameReader:
         previous_cues = True
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
+        placed: dict[str, str] = {}  # item type → the one a place phrase named
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
@@ -92,6 +94,9 @@ class FrameReader:
                 # "bring me his stapler. Zhang Wei": the answer names him
                 answered.add(later[0])
                 roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+            unclear_place = kept_owners(self.office, tokens, clause, roles, requester, placed)
+            if unclear_place is not None:  # "the ladder in the kitchen", where none is kept
+                return TaskFrame(requester=requester, question=unclear_place)
             found = referent(clause, tokens, named) if not tasks else None
             if found is not None:
                 # "Olive has a craft knife, bring it to me": the item another sentence named
@@ -99,11 +104,15 @@ class FrameReader:
                 rest = [m for m in clause.mentions if m.start != pointed.start]
                 mentions = sorted([*rest, pointed], key=lambda m: m.start)
                 clause = dataclasses.replace(clause, mentions=mentions)
+                if owner is None:  # "the parcel in the post room ... courier it"
+                    owner = placed.get(pointed.id)
                 if owner is not None and pointed.start not in roles.owners:
                     roles.owners[pointed.start] = owner
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
+            if found is not None and found[1] is None:
+                made = [self._not_mine(t, requester) for t in made]
             # "print my log. I need the spreadsheet for the meeting": the item a task already
             # works on for that person, named again as what they need, is context
             made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
@@ -115,7 +124,9 @@ class FrameReader:
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
-                tasks.pop()  # "get my lunch out of the fridge and heat it": one errand
+                # "get my lunch out of the fridge and heat it": one errand, on the item
+                # fetched ("the parcel in the post room ..., courier it": the one kept there)
+                made = [self._on_fetched(tasks.pop(), made[0], requester)]
             previous_cues = bool(clause.cues)
             if made:
                 tasks = [*_without_subsumed(tasks, made), *made]
@@ -126,12 +137,39 @@ class FrameReader:
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
         tasks = [self._given_back(t, holder) for t in tasks]
-        tasks = [self._named_elsewhere(t, named, requester) for t in tasks]
+        tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
         question = self._uncovered(objects, tasks) or self._check(tasks, requester, to_self)
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
         )
+
+    def _on_fetched(self, fetched: Task, work: Task, requester: str) -> Task:
+        """The work a later clause does on "it", the item the earlier clause fetched: that
+        item, whose it was said to be (the one kept in the post room); said of nobody's, and
+        the requester has none of the kind, the one the office keeps for anyone (or whose
+        belonging a facility keeps, asked of its owner as usual)."""
+        item = work.item or fetched.item
+        owner = fetched.owner
+        if owner is None and item is not None:
+            owner = self._nobodys(item, requester)
+        return work.model_copy(update={"item": item, "owner": owner or work.owner})
+
+    def _not_mine(self, task: Task, requester: str) -> Task:
+        """ "the parcel has to go off to Galway. Courier it please": work on "it", an item
+        another sentence named as nobody's, is the requester's only if they have one of the
+        kind; else the one the office keeps (a transfer is left to the planner as before)."""
+        if task.kind == "transfer" or task.item is None or task.owner != requester:
+            return task
+        owner = self._nobodys(task.item, requester)
+        return task.model_copy(update={"owner": owner}) if owner is not None else task
+
+    def _nobodys(self, item: str, requester: str) -> str | None:
+        """Whose item of a type said of nobody is meant: the requester's own, if they have
+        one; else the one the office keeps (``Office.kept_owner``); None: not known."""
+        if requester in self.office.owners_of(item):
+            return requester
+        return self.office.kept_owner(item, besides=requester)
 
     def _restates(self, earlier: Task, task: Task) -> bool:
         """Whether ``task`` only names again, for the same person, the item ``earlier``
@@ -176,7 +214,11 @@ class FrameReader:
             word = tokens[m.start].word
             gap = gaps[m.start]
             spaced_dash = gap.strip() in ("-", "–", "—", "--") and gap != gap.strip()
-            hard = (any(c in gap for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
+            # a sentence may start on a word that is no mention ("... stool. the stool"): the
+            # break is wherever one starts since the last mention (a title's stop is none)
+            since = mentions[n - 1].end if n else m.start
+            ended = "".join(gaps[since : m.start + 1])
+            hard = (any(c in ended for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
             soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
                 self._starts_request(
                     mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
@@ -296,7 +338,13 @@ class FrameReader:
             return task
         return task.model_copy(update={"item": fits[0], "owner": task.owner or requester})
 
-    def _named_elsewhere(self, task: Task, named: Sequence[NamedItem], requester: str) -> Task:
+    def _named_elsewhere(
+        self,
+        task: Task,
+        named: Sequence[NamedItem],
+        requester: str,
+        placed: dict[str, str],
+    ) -> Task:
         """ "get Wren to sign off the bill? it's the invoice on my desk": a task whose object
         is no item word of the office ("the bill", a word that is also a name) takes the one
         item of the kind it works on that another sentence names; two such items, or none,
@@ -313,7 +361,10 @@ class FrameReader:
         if len({item for item, _ in fits}) != 1:
             return task
         item, owner = sorted(fits, key=lambda f: f[1] is None)[0]
-        return task.model_copy(update={"item": item, "owner": task.owner or owner or requester})
+        if owner is None:  # said of nobody: the one a place phrase named
+            owner = placed.get(item)
+        filled = task.model_copy(update={"item": item, "owner": owner or task.owner or requester})
+        return filled if owner is not None else self._not_mine(filled, requester)
 
     def _given_back(self, task: Task, holder: str | None) -> Task:
         """ "Wren lent me her umbrella, please return it to her": an item going back to its
@@ -491,6 +542,6 @@ def _first_leg(earlier: Task, made: list[Task]) -> bool:
         len(made) == 1
         and task_kinds.works_on_item(made[0].kind)
         and earlier.kind == "transfer"
-        and earlier.item == made[0].item
+        and made[0].item in (earlier.item, None)  # None: "it", the item fetched
         and earlier.recipient == made[0].recipient
     )

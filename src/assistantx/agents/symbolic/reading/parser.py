@@ -66,7 +66,7 @@ from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, Mentio
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
-from assistantx.agents.symbolic.reading.unknown_items import unknown_item
+from assistantx.agents.symbolic.reading.unknown_items import category_asked, unknown_item
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -172,8 +172,12 @@ class InstructionParser:
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)
         if frame.question == NOT_UNDERSTOOD:
-            unknown = unknown_item(self.screen.terms, readings.tokens, readings.mentions)
-            if unknown is not None:
+            terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
+            which = category_asked(terms, tokens, mentions)  # "a drink": tea or cocoa?
+            unknown = unknown_item(terms, tokens, mentions) if which is None else None
+            if which is not None:
+                frame = TaskFrame(requester=requester, question=which)
+            elif unknown is not None:
                 frame = TaskFrame(requester=requester, decline=unknown)
         return frame
 

@@ -82,7 +82,11 @@ class MentionReader:
         mentions = participle_adjectives(tokens, mentions)
         mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
-        outside = find_outside(tokens, spaces, self._sends_out)
+        # a word of a place's or a person's name ("the post room") is never the verb
+        names = {
+            k for m in mentions if m.kind in ("place", "person") for k in range(m.start, m.end)
+        }
+        outside = find_outside(tokens, spaces, self._sends_out, names)
         if outside is not None and not any(
             m.start == outside.verb_start
             and (m.kind == "cue" or (m.kind == "facility" and outside.means))

@@ -46,8 +46,11 @@ def judge(
 def task_evidence(office: Office, task: Task, said: str) -> Evidence:
     """A task in words: what it does, with whose item, for whom."""
     name = office.item_type(task.item).name if task.item else "item"
+    kept = office.owner_name(task.owner) if task.owner else None
     whose = (
-        f"{office.person(task.owner).name}'s {name}"
+        f"{kept}'s {name}"
+        if kept is not None
+        else f"the {office.facility(task.owner).name}'s {name}"  # a supply, owned by nobody
         if task.owner
         else f"anyone's {name}"
         if task.kind == "transfer"

@@ -20,10 +20,14 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
     if owner_work_asked(msg, piece):
         return None  # "Robin has to sign my condition report.": its owner asks for it
+    if destination_stated(terms, msg, piece):
+        return None  # "my parcel has to go off to Galway, post it": where "it" goes
     if not piece.asks and context_fragment(terms, msg, piece):
         return Finding("statement", piece, "context beside the request")
     if not piece.asks and verbless_aside(terms, msg, piece):
         return Finding("statement", piece, "an aside beside the request, context only")
+    if not piece.asks and generic_explanation(terms, msg, piece):
+        return Finding("statement", piece, "why the request is made, context only")
     if piece.asks or not piece.acts.statement:
         return None
     named = (
@@ -61,6 +65,36 @@ def owner_work_asked(msg: Message, piece: Piece) -> bool:
     return not any(p.acts.request for p in msg.pieces if p is not piece)
 
 
+_COPULAS = english_words("copulas")
+
+# The words of going before a statement's destination ("has to go *off to* Galway"); the
+# readings stage (``destination``) reads the same "to" as where a send-out sends "it".
+_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
+_OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that"})
+
+
+def destination_stated(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "my parcel has to go off to Galway Hostel, post it off please": a statement that an
+    item goes somewhere ("to" after a word of going), followed in the next piece by a
+    request that sends "it" out with one of the office's send-out services, says where the
+    request sends it: it stays with the request, not set aside as context."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    if not any(m.kind == "item" for m in mentions):
+        return False
+    if not any(w == "to" and words[k - 1] in _GOING for k, w in enumerate(words) if k):
+        return False
+    later = [p for p in msg.pieces if p.start > piece.end][:3]
+    request = next((p for p in later if p.acts.request), None)
+    if request is None:
+        return False
+    said = [t.word for t in request.lexed.tokens]
+    return any(
+        w in terms.send_out_verbs and k + 1 < len(said) and said[k + 1] in _OBJECT_PRONOUNS
+        for k, w in enumerate(said)
+    )
+
+
 # what a verb's object may open with: with one of these after it, the word is a verb
 _OBJECT_OPENERS = english_words("object_starts") | frozenset({"me", "us", "it", "them", "one"})
 
@@ -77,13 +111,48 @@ def verbless_aside(terms: Terms, msg: Message, piece: Piece) -> bool:
         return False
     head, noun = tokens[0].word, tokens[1].word
     verb = head in terms.lex.cue_words or head in terms.en.service_verbs
-    if not verb or noun in _OBJECT_OPENERS or noun in terms.office_words:
+    if not verb or noun in _OBJECT_OPENERS or noun in terms.thing_words:
         return False
     if tokens[1].possessive or not language.is_noun(noun) or language.is_finite_verb(noun):
         return False
-    # nothing after the compound but words that are no object either ("again", "today")
+    # nothing after the compound but words that are no object either ("again", "today"),
+    # or the compound is the subject of a verb ("reserve shelf is full again")
     rest = [t.word for t in tokens[2:]]
+    if rest and (rest[0] in _COPULAS or language.is_finite_verb(rest[0])):
+        return True
     return not any(language.is_noun(w) and w not in terms.en.courtesy for w in rest)
+
+
+# the subject's verb after a plural noun: "books need moving", "the files are heavy",
+# "boxes will pile up" (a modal); any other verb form is read from the dictionary
+_SUBJECT_VERBS = _COPULAS | english_words("request_modals")
+
+
+def generic_explanation(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "can u fetch Dara's book cart? storybooks need moving": after a request, a piece
+    with no request wording whose subject is a kind of thing said in the plural, with no
+    one's name or "my" or "it" ("books need moving", "the folders are heavy"), says why the
+    request is made; it asks for no item of its own. A singular thing ("the storybook needs
+    moving"), anyone's thing ("my folders need ..."), a bare list ("folders please") or a
+    piece that opens with a verb is read as before."""
+    if piece.acts.request or not any(p.acts.request for p in msg.pieces if p.end <= piece.start):
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    if any(m.kind not in ("word", "cue", "item") for m in mentions):
+        return False  # a person, "me"/"my", a pronoun, a place: not a generic kind
+    items = [m for m in mentions if m.kind == "item"]
+    if not items or (mentions[0].kind == "cue" and mentions[0].start == 0):
+        return False  # nothing named, or a verb first ("move the books")
+    for m in items:
+        last = tokens[m.end - 1]
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        if last.possessive or not language.is_plural_noun(last.word):
+            return False
+        if after in terms.en.courtesy or not (
+            after in _SUBJECT_VERBS or language.verb_lemmas(after)
+        ):
+            return False  # "folders please", "books too": a list, not a subject
+    return True
 
 
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:

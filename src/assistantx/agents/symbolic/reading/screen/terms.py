@@ -19,11 +19,13 @@ class Terms:
         self.lex = lex
         self.en = english()
         self.acts = SpeechActs(lex)
-        self.office_words = frozenset(
+        # the words of the office's things, people and services; a word that occurs only in
+        # a facility's name ("shelf" of "the laundry shelf") is not one: alone it names no
+        # place (the whole name is a mention of its own)
+        self.thing_words = frozenset(
             w
             for phrase in (
                 *lex.items,
-                *lex.facilities,
                 *lex.people,
                 *lex.name_words,
                 *(o.name for o in office.operations),
@@ -31,7 +33,19 @@ class Terms:
             )
             for w in split_words(phrase)
         )
+        self.office_words = self.thing_words | {
+            w for phrase in lex.facilities for w in split_words(phrase)
+        }
 
+        # every form of the verbs of the services that send an item out ("courier", "posted")
+        self.send_out_verbs = frozenset(
+            form
+            for op in office.operations
+            if op.sends_out
+            for phrase in (*op.verbs, op.name)
+            if split_words(phrase)
+            for form in language.verb_forms(split_words(phrase)[0])
+        )
         # every form of the verbs of the office's own services ("print", "plotted")
         self.service_verbs = frozenset(
             form

@@ -13,7 +13,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
-from assistantx.agents.symbolic.reading.screen.statement import stated_items
+from assistantx.agents.symbolic.reading.screen.statement import destination_stated, stated_items
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english
@@ -27,8 +27,8 @@ _FIND = (("youll", "find"), ("you", "will", "find"), ("you", "can", "find"), ("y
 
 
 def whereabouts(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    if piece.asks:
-        return None
+    if piece.asks or destination_stated(terms, msg, piece):
+        return None  # "the parcel has to go off to Galway, courier it": where it is sent
     tokens = piece.lexed.tokens
     words = [t.word for t in tokens]
     said = content(_spelled_out(words))

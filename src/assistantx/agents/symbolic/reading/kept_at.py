@@ -1,0 +1,134 @@
+"""Which one a place phrase names: "the parcel in the post room", "grab the kettle in the
+kitchen", "the bike pump from the post desk" (the frames stage, once a clause's roles are
+read).
+
+An item said with no owner, then "in/at/from/on" and a place or facility of the office, is
+the one kept there: the facility's supply (owned by nobody: its owner part is the facility),
+the belonging a person keeps at a facility there (asked of its owner as usual), or the one on
+the desk of whoever sits at a workstation named. Exactly one such item: that one. None, or
+several: the requester is asked, never a guess at another one elsewhere (said with "a" or
+"some", any one will do, as before).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading._parties import Clause, Roles
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core.office import Facility, Office
+
+# The words between an item and a place that make the place where the item is now.
+_AT = frozenset({"in", "at", "from", "on", "inside"})
+_ARTICLES = frozenset({"the", "a", "an"})
+_INDEFINITE = frozenset({"a", "an", "some", "any", "another"})
+
+
+@dataclass(frozen=True)
+class PlacePhrase:
+    """An item mention followed by a place phrase, and the items kept there."""
+
+    item: Mention
+    place: str  # the place's or facility's name, as the office writes it
+    owners: tuple[str, ...]  # owner parts of the items of its type kept there
+    definite: bool  # "the kettle in the kitchen" (not "a kettle from the kitchen")
+
+
+def kept_owners(
+    office: Office,
+    tokens: Sequence[Token],
+    clause: Clause,
+    roles: Roles,
+    requester: str,
+    placed: dict[str, str],
+) -> str | None:
+    """Fill ``roles.owners`` for each object named with a place phrase and no owner (and
+    ``placed``, item type → owner part, for a later "it" in another clause); the question to
+    ask when "the <item>" names no such item there, or several, else None.
+
+    The one found is left unnamed (owner None) when it is the one the planner takes anyway
+    (``Office.kept_owner``). An indefinite "a/some <item> from <place>" asks nothing: with
+    none or several there, any one will do, as before. A personal item of the requester's
+    own, none kept there ("the document in the printer"), is theirs."""
+    for phrase in place_phrases(office, tokens, clause, roles):
+        item = phrase.item.id
+        name = office.item_type(item).name
+        if len(phrase.owners) == 1:
+            owner = placed[item] = phrase.owners[0]
+            if owner != office.kept_owner(item, besides=requester):
+                roles.owners[phrase.item.start] = owner
+            continue
+        if not phrase.definite:
+            continue
+        if not phrase.owners:
+            personal = office.item_type(item).kind == "personal"
+            if personal and requester in office.owners_of(item):
+                roles.owners[phrase.item.start] = placed[item] = requester
+                continue
+            return (
+                f"I don't know of a {name} kept at the {phrase.place}. Which {name} do you "
+                f"mean, or whose is it?"
+            )
+        whose = " or ".join(_owner_name(office, o) for o in phrase.owners)
+        return f"Which {name} at the {phrase.place} do you mean: {whose}?"
+    return None
+
+
+def place_phrases(
+    office: Office, tokens: Sequence[Token], clause: Clause, roles: Roles
+) -> list[PlacePhrase]:
+    """The clause's objects of a physical type said with no owner and followed by a place
+    phrase ("the kettle in the kitchen")."""
+    out: list[PlacePhrase] = []
+    ms = clause.mentions
+    for n, m in enumerate(ms[:-2]):
+        if m.kind != "item" or m.start in roles.owners or m.start in clause.modifiers:
+            continue
+        if office.item_type(m.id).kind not in ("belonging", "personal"):
+            continue
+        prep, where = ms[n + 1], ms[n + 2]
+        if prep.start != m.end or tokens[prep.start].word not in _AT:
+            continue
+        if any(t.word not in _ARTICLES for t in tokens[prep.end : where.start]):
+            continue
+        if where.kind == "facility":
+            facility = office.facility(where.ids[0])
+            place, facilities, desks = facility.name, [facility], []
+        elif where.kind == "place":
+            location = where.ids[0]
+            place = office.location(location).name.lower()
+            facilities = [f for f in office.facilities if f.location == location]
+            desks = [p.id for p in office.people if p.location == location]
+        else:
+            continue
+        definite = m.start == 0 or tokens[m.start - 1].word not in _INDEFINITE
+        kept = _kept_there(office, m.id, facilities, desks)
+        out.append(PlacePhrase(m, place, kept, definite))
+    return out
+
+
+def _kept_there(
+    office: Office, type_id: str, facilities: Sequence[Facility], desks: Sequence[str]
+) -> tuple[str, ...]:
+    """The owner parts of the items of ``type_id`` kept at ``facilities`` (a supply: the
+    facility's id; a person's: theirs) or on the desks of the people ``desks``."""
+    ids = {f.id for f in facilities}
+    found: list[str] = []
+    for f in facilities:
+        supply = f.supply(type_id)
+        if supply is not None and supply.count != 0:
+            found.append(f.id)
+    for p in office.people:
+        if not any(o.type == type_id for o in p.owns):
+            continue
+        kept = office.keeper(p.id, type_id)
+        if (kept is not None and kept.id in ids) or (kept is None and p.id in desks):
+            found.append(p.id)
+    return tuple(dict.fromkeys(found))
+
+
+def _owner_name(office: Office, owner: str) -> str:
+    name = office.owner_name(owner)
+    return f"{name}'s" if name is not None else f"the {office.facility(owner).name}'s"
