@@ -63,3 +63,60 @@ def test_a_withdrawal_of_the_request_itself_still_drops_it(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == []
     assert frame.decline is not None and "dropped" in frame.decline
+
+
+# -- 2. "who has an X I could use (tomorrow)?" is answered ----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("who has a magnifier I could use tomorrow?", "Kwame Osei"),
+        ("who's got a tape measure I could borrow on Friday?", "Teodor Novak"),
+        ("does anyone have a ruler I could borrow this afternoon?", "Teodor Novak"),
+    ],
+)
+def test_a_question_about_a_later_need_is_answered_and_nothing_asked(text: str, owner: str) -> None:
+    """A time after now: who has one, and the offer for then in words; no question is left
+    open and nothing is fetched now."""
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is None
+    assert frame.decline is not None and frame.decline_outcome == "done"
+    assert owner in frame.decline and "tell me when" in frame.decline.lower()
+
+
+def test_a_question_for_now_is_still_answered_and_offered() -> None:
+    frame = _frame("who's got a tape measure I could borrow?")
+    assert frame.tasks == []
+    assert frame.question is not None
+    assert "Teodor Novak" in frame.question and frame.question.endswith("Shall I bring you one?")
+
+
+@pytest.mark.parametrize(
+    "reply", ["hmm, not sure", "I'll ask him myself", "maybe later", "tomorrow is fine"]
+)
+def test_a_reply_that_is_no_yes_for_now_ends_the_answer(reply: str) -> None:
+    """The question was answered already: a reply that does not accept the offer for now
+    (unsure, the requester's own plan, a later time) ends as the answer, nothing fetched."""
+    frame = _parser().parse_with_answers(
+        "who's got a tape measure I could borrow?", "lotte", [reply]
+    )
+    assert frame.tasks == [] and frame.question is None
+    assert frame.decline is not None and frame.decline_outcome == "done"
+
+
+def test_a_plain_yes_still_fetches_and_a_no_still_declines() -> None:
+    asked = "who's got a tape measure I could borrow?"
+    yes = _parser().parse_with_answers(asked, "lotte", ["yes please"])
+    assert _tasks(yes) == [("transfer", "tape_measure", None, "lotte")]
+    no = _parser().parse_with_answers(asked, "lotte", ["no thanks"])
+    assert no.tasks == [] and no.decline_outcome == "done"
+
+
+def test_not_sure_is_no_yes_to_a_third_persons_need() -> None:
+    """ "Kwame needs a magnifier" is restated and asked; "hmm, not sure" is no yes: asked
+    again, nothing fetched."""
+    frame = _parser().parse_with_answers("Kwame needs a magnifier", "lotte", ["hmm, not sure"])
+    assert frame.tasks == []
+    yes = _parser().parse_with_answers("Kwame needs a magnifier", "lotte", ["yes please"])
+    assert _tasks(yes) == [("transfer", "magnifier", None, "kwame")]

@@ -48,7 +48,6 @@ import threading
 import weakref
 from collections import OrderedDict
 
-from assistantx.agents.symbolic.answers import offer_stance
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     FrameReader,
@@ -56,6 +55,9 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
+from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
+from assistantx.agents.symbolic.reading.offer_reply import offer_reply, plain_stance
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -203,9 +205,14 @@ class InstructionParser:
                 frame = self._out_or_in(text, requester, answer, frame)
                 continue
             if frame.question is not None and "Shall I" in frame.question:
-                yes_no = offer_stance(answer)
+                offer = self.screen.screen(text, requester).offer
+                yes_no = plain_stance(answer)
+                if offer:  # an answer was given already: only a plain yes for now acts
+                    yes_no = offer_reply(self.screen.terms.acts, answer)
+                    left = {"later": OFFER_LATER, "unclear": OFFER_LEFT}.get(yes_no)
+                    if left is not None:
+                        return TaskFrame(requester=requester, decline=left, decline_outcome="done")
                 if yes_no == "yes":
-                    offer = self.screen.screen(text, requester).offer
                     frame = self.parse(offer or text, requester, confirmed=True)
                     continue
                 if yes_no == "no":
