@@ -120,3 +120,69 @@ def test_not_sure_is_no_yes_to_a_third_persons_need() -> None:
     assert frame.tasks == []
     yes = _parser().parse_with_answers("Kwame needs a magnifier", "lotte", ["yes please"])
     assert _tasks(yes) == [("transfer", "magnifier", None, "kwame")]
+
+
+# -- 1. statements about a person or a facility are answered in words -----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "person"),
+    [
+        ("Kwame's at the dentist till 3 fyi", "kwame"),
+        ("Farida's off sick till Thursday fyi", "farida"),
+        ("Yusuf is on a course this week, btw", "yusuf"),
+        ("btw Teodor's at the vet this morning", "teodor"),
+    ],
+)
+def test_a_person_said_to_be_elsewhere_is_noted_away(text: str, person: str) -> None:
+    """ "<Name>'s at the dentist": the 's is "is"; a place that is none of the office's
+    puts them away, and what follows (a time, "fyi") says no more. Noted, nothing moves."""
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is None
+    assert frame.decline is not None and frame.decline_outcome == "done"
+    assert frame.away() == {person}
+
+
+@pytest.mark.parametrize(
+    ("text", "value"),
+    [("Kwame's in the darkroom", "darkroom"), ("Kwame's at his desk", "here")],
+)
+def test_a_person_at_a_place_of_the_office_is_not_away(text: str, value: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.away() == set()
+    assert [h.value for h in frame.hints] == [value]
+
+
+def test_a_request_beside_someone_elsewhere_is_still_read() -> None:
+    frame = _frame("Kwame's at the dentist, can you bring me his magnifier?")
+    assert frame.away() == {"kwame"}
+    assert _tasks(frame) == [("transfer", "magnifier", "kwame", "lotte")]
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("the label printer's out of black ribbon again, ugh", "label printer is out of black"),
+        ("scanner's jammed btw", "film scanner is jammed"),
+        ("fyi the film scanner is down today", "film scanner is down"),
+        ("the printer is playing up again", "printer is playing up"),
+    ],
+)
+def test_a_facility_said_to_be_in_some_state_is_answered_in_words(text: str, said: str) -> None:
+    """A report on a facility: answered in words, never its operation's verb ("scanner" is
+    no "scan"), never "what do you need?", nothing moves."""
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is None
+    assert frame.decline is not None and frame.decline_outcome == "done"
+    assert said in frame.decline
+
+
+def test_a_request_beside_a_facility_report_is_still_read() -> None:
+    frame = _frame("the label printer's jammed, can you print my shoot?")
+    assert _tasks(frame) == [("print", "shoot_file", "lotte", "lotte")]
+
+
+def test_a_question_about_a_facility_is_still_a_question() -> None:
+    frame = _frame("is the scanner jammed?")
+    assert frame.tasks == [] and frame.decline is not None
+    assert "in service" in frame.decline

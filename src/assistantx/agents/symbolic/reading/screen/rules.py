@@ -8,6 +8,7 @@ from collections.abc import Callable
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
+from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
@@ -40,6 +41,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", destructive),
     ("unplaced", unplaced),
     ("fact", fact),
+    ("statement", facility_report),
     ("statement", own_need),
     ("question", question),
     ("statement", problem),
