@@ -55,7 +55,7 @@ def raw_studio() -> dict[str, Any]:
                 "id": "contact_sheet",
                 "name": "contact sheet",
                 "kind": "product",
-                "synonyms": ["proof sheet"],
+                "synonyms": ["proof sheet", "contacts"],
             },
             {"id": "sticker", "name": "sticker label", "kind": "product"},
         ],

@@ -186,3 +186,51 @@ def test_a_question_about_a_facility_is_still_a_question() -> None:
     frame = _frame("is the scanner jammed?")
     assert frame.tasks == [] and frame.decline is not None
     assert "in service" in frame.decline
+
+
+# -- 3. idioms and nouns that look like verbs or names -------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "mine ran out in June, could you bring me a magnifier?",
+        "could you bring me a magnifier? mine ran out in june",
+        "to be fair, mine ran out. can you bring me a magnifier?",
+        "to be frank, could you bring me a magnifier?",
+        "can you bring me a magnifier before the run?",
+        "could you bring me a magnifier after the print run?",
+        "could you bring me a magnifier? need to check the contacts",
+        "bring me a magnifier, i need to look at the contacts",
+        "could you bring me a magnifier? I have to go over the contacts before the run",
+    ],
+)
+def test_an_aside_that_looks_like_a_request_leaves_the_request_alone(text: str) -> None:
+    """ "ran" only tells (the office's "run" is asked by its other forms), "the run" after
+    a preposition is an event, "June" after "in" is the month, "to be frank" is no
+    colleague Frank, and what the speaker will look at themselves is no thing to fetch:
+    only the magnifier is asked for."""
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert _tasks(frame) == [("transfer", "magnifier", None, "lotte")]
+
+
+@pytest.mark.parametrize(
+    "text", ["run my negative strip", "can you run my negative strip before lunch?"]
+)
+def test_the_operations_verb_still_asks_for_it(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.operation) for t in frame.tasks] == [("heat", "negative", "develop")]
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [("take my mug to June", "june"), ("could you bring June a magnifier?", "june")],
+)
+def test_a_colleague_named_like_a_month_is_still_the_colleague(text: str, recipient: str) -> None:
+    assert [t.recipient for t in _frame(text).tasks] == [recipient]
+
+
+def test_the_product_asked_for_by_its_name_is_still_made() -> None:
+    frame = _frame("proof my shoot and bring me the contacts")
+    assert [(t.kind, t.operation) for t in frame.tasks] == [("print", "proof")]

@@ -14,6 +14,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
@@ -42,6 +43,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unplaced", unplaced),
     ("fact", fact),
     ("statement", facility_report),
+    ("statement", own_doing),
     ("statement", own_need),
     ("question", question),
     ("statement", problem),
