@@ -234,3 +234,65 @@ def test_a_colleague_named_like_a_month_is_still_the_colleague(text: str, recipi
 def test_the_product_asked_for_by_its_name_is_still_made() -> None:
     frame = _frame("proof my shoot and bring me the contacts")
     assert [(t.kind, t.operation) for t in frame.tasks] == [("print", "proof")]
+
+
+# -- 4. corrections: "not X, (I meant) Y" --------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        (
+            "sorry not a ruler, i meant a tape measure - can i borrow Teodor's?",
+            [("transfer", "tape_measure", "teodor", "lotte")],
+        ),
+        (
+            "not a ruler, a tape measure. can i borrow Teodor's?",
+            [("transfer", "tape_measure", "teodor", "lotte")],
+        ),
+        (
+            "bring me Maren's folder - not the blue folder, the red one",
+            [("transfer", "red_folder", "maren", "lotte")],
+        ),
+        (
+            "can you bring me Maren's blue folder? not the blue folder, the red one",
+            [("transfer", "red_folder", "maren", "lotte")],
+        ),
+        (
+            "bring me Maren's blue folder, no wait, not the blue folder, the red one",
+            [("transfer", "red_folder", "maren", "lotte")],
+        ),
+    ],
+)
+def test_the_thing_said_after_not_x_is_the_one_meant(
+    text: str, wanted: list[tuple[str, str | None, str | None, str | None]]
+) -> None:
+    """The rejected thing is never acted on; the replacement takes its place (or the place
+    of the thing a bare possessive left unsaid), whose owner is the one named."""
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert _tasks(frame) == wanted
+
+
+def test_the_replacement_answers_a_question_about_which() -> None:
+    frame = _parser().parse_with_answers(
+        "can you bring me Maren's folder?", "lotte", ["not the blue folder, the red one"]
+    )
+    assert _tasks(frame) == [("transfer", "red_folder", "maren", "lotte")]
+
+
+@pytest.mark.parametrize(
+    ("text", "wanted"),
+    [
+        ("bring me a ruler, not a pen, thanks", [("transfer", "ruler", None, "kwame")]),
+        ("bring me a ruler, not Lotte's, thanks", [("transfer", "ruler", None, "kwame")]),
+        (
+            "bring me Lotte's tape measure - sorry, I meant Teodor's",
+            [("transfer", "tape_measure", "teodor", "kwame")],
+        ),
+    ],
+)
+def test_a_plain_exclusion_or_correction_reads_as_before(
+    text: str, wanted: list[tuple[str, str | None, str | None, str | None]]
+) -> None:
+    assert _tasks(_frame(text, "kwame")) == wanted
