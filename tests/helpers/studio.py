@@ -20,6 +20,7 @@ _PEOPLE = (
     ("yusuf", "Yusuf Demir", [{"type": "mug"}, {"type": "camera"}, {"type": "negative"}]),
     ("frank", "Frank Ito", [{"type": "mug"}]),
     ("june", "June Adler", [{"type": "mug"}]),
+    ("agnes", "Agnes Moreau", [{"type": "mug"}, {"type": "camera"}, {"type": "wide_lens"}]),
 )
 
 
@@ -29,7 +30,7 @@ def raw_studio() -> dict[str, Any]:
         "locations": [
             *(
                 {"id": f"bench_{n}", "kind": "workstation", "name": f"Bench {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0), 1)
+                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0), 1)
             ),
             {"id": "print_room", "kind": "facility", "name": "Print room", "x": 4.0, "y": 20.5},
             {"id": "darkroom", "kind": "facility", "name": "Darkroom", "x": 20.0, "y": 20.5},

@@ -296,3 +296,38 @@ def test_a_plain_exclusion_or_correction_reads_as_before(
     text: str, wanted: list[tuple[str, str | None, str | None, str | None]]
 ) -> None:
     assert _tasks(_frame(text, "kwame")) == wanted
+
+
+# -- 7. "it" with nothing to refer to -------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["can you print it and bring it over", "print it please", "proof it", "print it for Kwame"],
+)
+def test_it_with_nothing_said_before_is_asked_about(text: str) -> None:
+    """Nothing in the message is what "it" could be: which file is asked, never guessed as
+    the requester's own."""
+    frame = _frame(text)
+    assert frame.tasks == []
+    assert frame.question is not None and "'it'" in frame.question
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "print my shoot and bring it over",
+        "my shoot's ready, print it",
+        "can you print this for me",
+    ],
+)
+def test_it_after_a_named_file_or_this_at_hand_reads_as_before(text: str) -> None:
+    assert _tasks(_frame(text)) == [("print", "shoot_file", "lotte", "lotte")]
+
+
+@pytest.mark.parametrize(
+    ("answer", "owner"), [("my shoot", "lotte"), ("Kwame's shoot file", "kwame")]
+)
+def test_the_answer_is_what_it_means(answer: str, owner: str) -> None:
+    frame = _parser().parse_with_answers("can you print it and bring it over", "lotte", [answer])
+    assert _tasks(frame) == [("print", "shoot_file", owner, "lotte")]

@@ -48,6 +48,11 @@ import threading
 import weakref
 from collections import OrderedDict
 
+from assistantx.agents.symbolic.reading.antecedent import (
+    WHICH_FILE,
+    unanchored_it,
+    with_antecedent,
+)
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     FrameReader,
@@ -169,6 +174,9 @@ class InstructionParser:
             to_self=to_self,
         )
         if frame.understood:
+            unclear = unanchored_it(self.office, whole, frame.tasks)
+            if unclear is not None:  # "print it", nothing said that "it" could be
+                return TaskFrame(requester=requester, question=unclear)
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
             frame = _one_send_each(frame)
         if frame.question == NOT_UNDERSTOOD:
@@ -230,6 +238,20 @@ class InstructionParser:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
                     continue
+            if frame.question is not None and frame.question.startswith(WHICH_FILE):
+                # "print it" → "Which file do you mean by 'it'?" → "Kwame's shoot": the
+                # answer is the request's own object, in the place of its "it"
+                meant = self.parse(with_antecedent(text, answer), requester)
+                whose = {
+                    p
+                    for m in self.lex.read(answer).mentions
+                    if m.kind == "person" and m.possessive
+                    for p in m.ids
+                }
+                if whose and not whose & {t.owner for t in meant.tasks}:
+                    continue  # "Kwame's" read as someone else's file: asked, never guessed
+                text, frame = with_antecedent(text, answer), meant
+                continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request
