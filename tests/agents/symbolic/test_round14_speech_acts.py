@@ -331,3 +331,50 @@ def test_it_after_a_named_file_or_this_at_hand_reads_as_before(text: str) -> Non
 def test_the_answer_is_what_it_means(answer: str, owner: str) -> None:
     frame = _parser().parse_with_answers("can you print it and bring it over", "lotte", [answer])
     assert _tasks(frame) == [("print", "shoot_file", owner, "lotte")]
+
+
+# -- 6. "not his/her X" after one colleague named --------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I might need Farida's wide lens tonight, not her camera",
+        "could I borrow Farida's wide lens tonight? I'll let you know. not her camera",
+    ],
+)
+def test_not_her_x_after_one_colleague_changes_nothing(text: str) -> None:
+    """The request is set aside for later; "not her camera" is Farida's camera, not wanted:
+    no question of whom "her" means, nothing moves."""
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is None, frame.question
+    assert frame.decline is not None and frame.decline_outcome == "done"
+    assert frame.unusable("camera") == {"farida"}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could I borrow Farida's wide lens tonight? the 24mm one, not her camera",
+        "bring me Farida's wide lens, not his camera",
+    ],
+)
+def test_the_request_beside_not_her_x_is_done(text: str) -> None:
+    frame = _frame(text)
+    assert _tasks(frame) == [("transfer", "wide_lens", "farida", "lotte")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Kwame said Farida has one. not her camera",
+        "Kwame said Farida has one. I might need a wide lens tonight, not her camera",
+        "not her camera",
+    ],
+)
+def test_not_her_x_after_two_colleagues_or_none_is_asked(text: str) -> None:
+    """Whom "her" means is asked; the aside is never read as a request for someone's
+    camera (main took Kwame's camera for the first two)."""
+    frame = _frame(text)
+    assert frame.tasks == []
+    assert frame.question is not None and "'her'" in frame.question

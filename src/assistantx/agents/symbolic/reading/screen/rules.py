@@ -19,6 +19,7 @@ from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
+from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
@@ -35,6 +36,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("withdrawn", withdrawn),
     ("note", note),
     ("exclusion", exclusion),
+    ("exclusion", pronoun_exclusion),
     ("wish", wish),
     ("thanks", thanks),
     ("condition", condition),
