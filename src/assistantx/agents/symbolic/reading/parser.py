@@ -62,7 +62,11 @@ from assistantx.agents.symbolic.reading.frames import (
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
-from assistantx.agents.symbolic.reading.offer_reply import offer_reply, plain_stance
+from assistantx.agents.symbolic.reading.offer_reply import (
+    OfferReply,
+    offer_reply,
+    plain_stance,
+)
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -214,7 +218,7 @@ class InstructionParser:
                 continue
             if frame.question is not None and "Shall I" in frame.question:
                 offer = self.screen.screen(text, requester).offer
-                yes_no = plain_stance(answer)
+                yes_no: OfferReply = plain_stance(answer)
                 if offer:  # an answer was given already: only a plain yes for now acts
                     yes_no = offer_reply(self.screen.terms.acts, answer)
                     left = {"later": OFFER_LATER, "unclear": OFFER_LEFT}.get(yes_no)
