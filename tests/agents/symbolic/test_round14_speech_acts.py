@@ -326,7 +326,8 @@ def test_it_after_a_named_file_or_this_at_hand_reads_as_before(text: str) -> Non
 
 
 @pytest.mark.parametrize(
-    ("answer", "owner"), [("my shoot", "lotte"), ("Kwame's shoot file", "kwame")]
+    ("answer", "owner"),
+    [("my shoot", "lotte"), ("Kwame's shoot file", "kwame"), ("Kwame Osei's.", "kwame")],
 )
 def test_the_answer_is_what_it_means(answer: str, owner: str) -> None:
     frame = _parser().parse_with_answers("can you print it and bring it over", "lotte", [answer])

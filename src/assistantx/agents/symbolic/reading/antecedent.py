@@ -16,6 +16,7 @@ from assistantx.core.task_schema import Task
 _ANAPHORS = frozenset({"it", "them"})
 _ANCHORS = frozenset({"item", "facility", "place"})
 WHICH_FILE = "Which file do you mean by"
+_BARE_POSSESSIVE = re.compile(r"['’]s$|s['’]$")
 
 
 def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None:
@@ -34,13 +35,17 @@ def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None
     if not all(office.item_type(t.item).kind == "electronic" for t in tasks if t.item):
         return None
     said = next(t.text for t in whole.tokens if t.word in _ANAPHORS)
-    return f"{WHICH_FILE} {said!r}? Please tell me which file, and whose."
+    kinds = list(dict.fromkeys(office.item_type(t.item).name for t in tasks if t.item))
+    return f"{WHICH_FILE} {said!r}? Please tell me whose {' or '.join(kinds)} it is."
 
 
-def with_antecedent(text: str, answer: str) -> str:
+def with_antecedent(text: str, answer: str, kind: str = "") -> str:
     """The request with the answer to ``WHICH_FILE`` in the place of its first "it"
     ("print it and bring it over" + "Kwame's shoot" → "print Kwame's shoot and bring it
-    over"): read as the request's own object, not as a request of its own."""
+    over"): read as the request's own object, not as a request of its own. A bare
+    possessive ("Kwame's") is completed with ``kind``, the file the question asked about."""
     said = answer.strip().rstrip(" .!?")
+    if kind and _BARE_POSSESSIVE.search(said):
+        said = f"{said} {kind}"  # "Kwame's" → "Kwame's shoot file": the kind asked about
     pattern = r"\b(?:" + "|".join(sorted(_ANAPHORS)) + r")\b"
     return re.sub(pattern, lambda _: said, text, count=1, flags=re.IGNORECASE)

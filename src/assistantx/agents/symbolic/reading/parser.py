@@ -245,7 +245,9 @@ class InstructionParser:
             if frame.question is not None and frame.question.startswith(WHICH_FILE):
                 # "print it" → "Which file do you mean by 'it'?" → "Kwame's shoot": the
                 # answer is the request's own object, in the place of its "it"
-                meant = self.parse(with_antecedent(text, answer), requester)
+                asked = self.screen.terms.named(self.lex.read(frame.question), "item")
+                kind = self.office.item_type(asked[0]).name if len(asked) == 1 else ""
+                meant = self.parse(with_antecedent(text, answer, kind), requester)
                 whose = {
                     p
                     for m in self.lex.read(answer).mentions
@@ -254,7 +256,7 @@ class InstructionParser:
                 }
                 if whose and not whose & {t.owner for t in meant.tasks}:
                     continue  # "Kwame's" read as someone else's file: asked, never guessed
-                text, frame = with_antecedent(text, answer), meant
+                text, frame = with_antecedent(text, answer, kind), meant
                 continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
