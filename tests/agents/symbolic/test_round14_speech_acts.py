@@ -9,6 +9,7 @@ from __future__ import annotations
 import functools
 
 import pytest
+from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import TaskFrame
@@ -379,3 +380,28 @@ def test_not_her_x_after_two_colleagues_or_none_is_asked(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == []
     assert frame.question is not None and "'her'" in frame.question
+
+
+# -- in the simulated office: answered messages end done, nothing moved ---------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "who has a magnifier I could use tomorrow?",
+        "Kwame's at the dentist till 3 fyi",
+        "scanner's jammed btw",
+    ],
+)
+async def test_an_answered_message_ends_done_and_moves_nothing(text: str) -> None:
+    run = await run_instruction(studio(), "lotte", text)
+    assert run.actions == ["stop"], run.actions
+    assert run.stm.trace.outcome == "done"
+
+
+async def test_a_reason_clause_still_hands_the_mug_over() -> None:
+    run = await run_instruction(
+        studio(), "lotte", "take my mug to Kwame, he lent me his last week and his went missing"
+    )
+    assert "move" in run.actions
+    assert run.stm.trace.outcome == "done"
