@@ -332,3 +332,12 @@ def is_weekday(word: str) -> bool:
 def is_day_number(word: str) -> bool:
     """ "3", "3rd", "21st": a day of a month."""
     return bool(_DAY_NUMBER.match(word.lower()))
+
+
+@functools.cache
+def past_only_forms(verb: str) -> frozenset[str]:
+    """A verb's simple past forms that are not also its participle ("run" → {"ran"}, "take"
+    → {"took"}; "print" → none: "printed" is both)."""
+    forms = getAllInflections(verb, upos="VERB")
+    participles = set(forms.get("VBN", ())) or set(forms.get("VBD", ()))
+    return frozenset(f for f in forms.get("VBD", ()) if f not in participles)

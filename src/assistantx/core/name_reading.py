@@ -49,8 +49,9 @@ class NameSlot:
 
 def is_word_name(word: str) -> bool:
     """Whether a (folded) name word is also an ordinary English word ("penny", "ivy", "may"):
-    only such a name has a word reading at all."""
-    return language.is_english_word(word) or word in _COMMON
+    only such a name has a word reading at all. A month is one whatever the dictionary's
+    frequency says of it ("June": "mine ran out in June" is a date)."""
+    return language.is_english_word(word) or word in _COMMON or language.is_month(word)
 
 
 def read_name(slot: NameSlot) -> NameReading:

@@ -25,6 +25,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.core import english, language, task_kinds
 from assistantx.core.name_reading import NameSlot, is_word_name, read_name
@@ -132,7 +133,8 @@ class Lexicon:
                 cues.setdefault(spec.id, set()).update(forms)
         ops: set[str] = set()
         for op in office.operations:
-            forms = {form for verb in op.verbs for form in inflections(key_of(verb))}
+            # "ran" of "run" tells, never asks: not a cue of the operation
+            forms = {form for verb in op.verbs for form in asking_forms(key_of(verb))}
             ops |= forms
             kind = SHAPE_KIND.get(op.shape(office))
             if kind is not None:
@@ -408,7 +410,9 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
-        if w in self.cue_words and self._noun_use(tokens, i):
+        if w in self.cue_words and (
+            self._noun_use(tokens, i) or event_noun(tokens, i, self.operation_words)
+        ):
             return Mention("word", i, i + 1, (w,), t.possessive, t.text)  # "the print run"
         if w in self.cue_words:
             kinds = tuple(k for k, words in self.cues.items() if w in words)

@@ -48,7 +48,11 @@ import threading
 import weakref
 from collections import OrderedDict
 
-from assistantx.agents.symbolic.answers import offer_stance
+from assistantx.agents.symbolic.reading.antecedent import (
+    WHICH_FILE,
+    unanchored_it,
+    with_antecedent,
+)
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     FrameReader,
@@ -56,6 +60,13 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
+from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
+from assistantx.agents.symbolic.reading.offer_reply import (
+    OfferReply,
+    offer_reply,
+    plain_stance,
+)
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -168,6 +179,9 @@ class InstructionParser:
             to_self=to_self,
         )
         if frame.understood:
+            unclear = unanchored_it(self.office, whole, frame.tasks)
+            if unclear is not None:  # "print it", nothing said that "it" could be
+                return TaskFrame(requester=requester, question=unclear)
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)
@@ -209,9 +223,14 @@ class InstructionParser:
                 frame = self._out_or_in(text, requester, answer, frame)
                 continue
             if frame.question is not None and "Shall I" in frame.question:
-                yes_no = offer_stance(answer)
+                offer = self.screen.screen(text, requester).offer
+                yes_no: OfferReply = plain_stance(answer)
+                if offer:  # an answer was given already: only a plain yes for now acts
+                    yes_no = offer_reply(self.screen.terms.acts, answer)
+                    left = {"later": OFFER_LATER, "unclear": OFFER_LEFT}.get(yes_no)
+                    if left is not None:
+                        return TaskFrame(requester=requester, decline=left, decline_outcome="done")
                 if yes_no == "yes":
-                    offer = self.screen.screen(text, requester).offer
                     frame = self.parse(offer or text, requester, confirmed=True)
                     continue
                 if yes_no == "no":
@@ -229,6 +248,22 @@ class InstructionParser:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
                     continue
+            if frame.question is not None and frame.question.startswith(WHICH_FILE):
+                # "print it" → "Which file do you mean by 'it'?" → "Kwame's shoot": the
+                # answer is the request's own object, in the place of its "it"
+                asked = self.screen.terms.named(self.lex.read(frame.question), "item")
+                kind = self.office.item_type(asked[0]).name if len(asked) == 1 else ""
+                meant = self.parse(with_antecedent(text, answer, kind), requester)
+                whose = {
+                    p
+                    for m in self.lex.read(answer).mentions
+                    if m.kind == "person" and m.possessive
+                    for p in m.ids
+                }
+                if whose and not whose & {t.owner for t in meant.tasks}:
+                    continue  # "Kwame's" read as someone else's file: asked, never guessed
+                text, frame = with_antecedent(text, answer, kind), meant
+                continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request

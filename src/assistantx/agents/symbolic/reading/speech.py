@@ -65,6 +65,7 @@ _BORROW = english.words("borrow_words")
 _DONE_VERBS = english.words("done_verbs")
 _DONE_MARKERS = tuple(tuple(p.split()) for p in english.entries("done_markers"))
 _DECLINING_THANKS = tuple(tuple(p.split()) for p in english.entries("declining_thanks"))
+_PAST_TIMES = tuple(tuple(p.split()) for p in english.entries("past_times"))
 # Another one of what was asked for: "X brought me *one*", "Ida lent me *hers*"
 _ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
 # The errand itself, said again: "someone already did *it*"
@@ -182,6 +183,8 @@ class SpeechActs:
         if not w or self._imperative(w) or w[0] in _MODALS or w[0] in _AUX - {"did"}:
             return False  # "could you ...", "did Ida bring one?" (a question) is no news
         marked = any(_starts(w[n:], p) for n in range(len(w)) for p in _DONE_MARKERS)
+        if not marked and any(_starts(w[n:], p) for n in range(len(w)) for p in _PAST_TIMES):
+            return False  # "he lent me his last week": back-story told with the request
         mine = bool(set(w) & (_FOR_SPEAKER | {"us", "we", "weve"}))
         for n, x in enumerate(w):
             if not language.is_past_verb(x) and x not in _HAVE_NOW:

@@ -12,6 +12,7 @@ def test_the_rules_in_priority_order() -> None:
         "withdrawn",
         "note",
         "exclusion",
+        "exclusion",  # "not her camera" after one colleague was named
         "wish",
         "thanks",
         "condition",
@@ -19,6 +20,8 @@ def test_the_rules_in_priority_order() -> None:
         "destructive",
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "fact",
+        "statement",  # a facility said to be in some state ("scanner's jammed btw")
+        "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
         "question",
         "statement",  # a problem reported after a question about a facility's state

@@ -3,6 +3,7 @@ can't find my stapler": a hint for the plan; the piece is dropped."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.elsewhere import away_elsewhere, state_said
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -41,7 +42,7 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
         hint = Hint(kind="condition", person=person, value=said, item_type=item, said=piece.text)
         thing = terms.office.item_type(item).name
         return Finding("fact", piece, f"a fact: {name}'s {thing} is {said}", hint)
-    if _says(state, terms.en.away, after=2):  # "Wang is away today"
+    if _says(state_said(state), terms.en.away, after=2):  # "Wang is away today"
         return _availability(piece, person, name, "away")
     if state and state[0] in terms.en.location_prepositions:
         place = terms.place(piece.lexed)
@@ -49,6 +50,8 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
             hint = Hint(kind="location", person=person, value=place, said=piece.text)
             where = terms.office.location(place).name
             return Finding("fact", piece, f"a fact: {name} is at the {where}", hint)
+    if away_elsewhere(state_said(state), piece.lexed, subject.end):  # "... at the dentist"
+        return _availability(piece, person, name, "away")
     if _says(state, terms.en.here, after=1):  # "Zhang is back"
         return _availability(piece, person, name, "here")
     return None

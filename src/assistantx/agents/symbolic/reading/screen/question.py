@@ -100,9 +100,13 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
         answer = f"I can't tell that about the {t.name} from what I know."
         return Finding("question", piece, "a question, answered in words", message=answer)
     verb = "get" if t.kind == "product" else "bring"
+    if piece.acts.later:
+        # "... I could use tomorrow?": a need for later is answered, with the offer for
+        # then in words; nothing is fetched now and no question is left open on it
+        message = f"{answer} Tell me when you need it and I'll {verb} you one then."
+        meaning = "a question about a later need, answered"
+        return Finding("question", piece, meaning, message=message)
     shall = f"Shall I {verb} you one?"
-    if piece.acts.later:  # "... I could use later?": not now unless told so
-        shall = f"Shall I {verb} you one now, or would you rather tell me when?"
     return Finding(
         "question",
         piece,

@@ -12,6 +12,7 @@ from assistantx.agents.symbolic.reading.screen.correction import corrected
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
+from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
 from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
@@ -39,7 +40,9 @@ class RequestScreen:
         """The message corrected, cut into pieces (each lexed and its speech acts read), and
         each piece judged by the table of rules (the first that matches decides it)."""
         terms = self.terms
+        text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
+        fixes = [*rejected, *fixes]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
             text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)

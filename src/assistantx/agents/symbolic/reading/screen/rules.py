@@ -8,16 +8,19 @@ from collections.abc import Callable
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
+from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
+from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
+from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
@@ -35,6 +38,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("withdrawn", withdrawn),
     ("note", note),
     ("exclusion", exclusion),
+    ("exclusion", pronoun_exclusion),
     ("wish", wish),
     ("thanks", thanks),
     ("condition", condition),
@@ -42,6 +46,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", destructive),
     ("unplaced", unplaced),
     ("fact", fact),
+    ("statement", facility_report),
+    ("statement", own_doing),
     ("statement", own_need),
     ("question", question),
     ("statement", problem),

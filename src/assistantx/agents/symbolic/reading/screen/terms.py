@@ -4,6 +4,7 @@ operations and task words are called, and the questions every rule asks of a pie
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.asking_forms import asking_forms
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Lexicon
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS, english, split_words
 from assistantx.agents.symbolic.reading.speech import SpeechActs
@@ -46,12 +47,13 @@ class Terms:
             if split_words(phrase)
             for form in language.verb_forms(split_words(phrase)[0])
         )
-        # every form of the verbs of the office's own services ("print", "plotted")
+        # every form of the verbs of the office's own services that can ask for them
+        # ("print", "plotted"; not "ran", which only tells: ``asking_forms``)
         self.service_verbs = frozenset(
             form
             for op in office.operations
             for phrase in (*op.verbs, op.name)
-            for form in language.verb_forms(split_words(phrase)[0])
+            for form in asking_forms(split_words(phrase)[0])
             if split_words(phrase)
         )
 

@@ -1,0 +1,51 @@
+""" "it" with nothing to refer to: "can you print it and bring it over", the first thing said,
+names no item, no file, and nobody's thing. "it" points back at something said; with nothing
+said, which file is meant is asked, never guessed as the requester's own. "this" / "that"
+point at something at hand (a file attached, a paper held out) and keep their reading, and so
+does every message that names a thing ("print my shoot and bring it over")."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.core.office import Office
+from assistantx.core.task_schema import Task
+
+# Words that refer back to something said before, never to something at hand.
+_ANAPHORS = frozenset({"it", "them"})
+_ANCHORS = frozenset({"item", "facility", "place"})
+WHICH_FILE = "Which file do you mean by"
+_BARE_POSSESSIVE = re.compile(r"['’]s$|s['’]$")
+
+
+def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None:
+    """The question to ask where the tasks' file is only "it" and the message names nothing
+    it could be; None where it names something, or a task is no file's."""
+    words = {t.word for t in whole.tokens}
+    if not words & _ANAPHORS:
+        return None
+    for m in whole.mentions:
+        if m.kind in _ANCHORS or (m.kind in ("person", "self") and m.possessive):
+            return None  # "print my shoot and bring it over", "Kwame's file, print it"
+        if m.kind == "pronoun" and whole.tokens[m.start].word not in _ANAPHORS:
+            return None  # "print this": at hand
+    if not tasks or any(t.item is None for t in tasks):
+        return None
+    if not all(office.item_type(t.item).kind == "electronic" for t in tasks if t.item):
+        return None
+    said = next(t.text for t in whole.tokens if t.word in _ANAPHORS)
+    kinds = list(dict.fromkeys(office.item_type(t.item).name for t in tasks if t.item))
+    return f"{WHICH_FILE} {said!r}? Please tell me whose {' or '.join(kinds)} it is."
+
+
+def with_antecedent(text: str, answer: str, kind: str = "") -> str:
+    """The request with the answer to ``WHICH_FILE`` in the place of its first "it"
+    ("print it and bring it over" + "Kwame's shoot" → "print Kwame's shoot and bring it
+    over"): read as the request's own object, not as a request of its own. A bare
+    possessive ("Kwame's") is completed with ``kind``, the file the question asked about."""
+    said = answer.strip().rstrip(" .!?")
+    if kind and _BARE_POSSESSIVE.search(said):
+        said = f"{said} {kind}"  # "Kwame's" → "Kwame's shoot file": the kind asked about
+    pattern = r"\b(?:" + "|".join(sorted(_ANAPHORS)) + r")\b"
+    return re.sub(pattern, lambda _: said, text, count=1, flags=re.IGNORECASE)

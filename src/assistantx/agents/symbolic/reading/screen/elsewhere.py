@@ -1,0 +1,37 @@
+"""A person said to be somewhere the office is not ("Kwame's at the dentist till 3 fyi", "Noor
+is on a course this week"): away, like "Wang is away". What follows the state (when they
+will be back, "fyi", "again") says nothing more about where they are, so it is cut off before
+the state is read."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.core import english
+
+# Where a person is said to be: "at the dentist", "in Leeds", "on a course".
+_ELSEWHERE = frozenset({"at", "in", "on"})
+# Words of the office's own places: "at his desk", "on the bench" are in the office.
+_PLACES = english.words("place_words") | english.words("surface_words")
+# What ends the state and tells no more of it: a time ("till 3", "until Friday", "today",
+# "this week", "all day") or an aside ("fyi", "btw", "again", "ugh").
+_TAIL = english.words("state_tails")
+_OFFICE_THINGS = frozenset({"person", "item", "facility", "place"})
+
+
+def state_said(state: list[str]) -> list[str]:
+    """The state without what follows it: "off sick till Thursday fyi" → "off sick"."""
+    for n, word in enumerate(state):
+        if n and word in _TAIL:
+            return state[:n]
+    return state
+
+
+def away_elsewhere(state: list[str], lexed: Lexed, subject_end: int) -> bool:
+    """Whether the state puts the person somewhere that is no place of this office: "at the
+    dentist", "in Leeds", never "at his desk", nor a place, facility, item or person the
+    office names (those are its own facts, read by the rule)."""
+    if len(state) < 2 or state[0] not in _ELSEWHERE:
+        return False
+    if set(state) & _PLACES:
+        return False
+    return not any(m.kind in _OFFICE_THINGS for m in lexed.mentions if m.start >= subject_end)

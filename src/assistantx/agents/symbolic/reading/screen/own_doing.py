@@ -1,0 +1,41 @@
+"""Own doing: "could you bring me a magnifier? need to check the contacts": the speaker's own
+need to do something that is no errand or service of the office ("check", "look over"), said
+beside a request, is why the request is made. What it names ("the contacts") is the object of
+the speaker's own activity, never the request's, so the piece is context, not read for tasks.
+"I need to get my shoot printed" is no such piece: "get" is an errand's verb."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
+
+_SPEAKER = frozenset({"i", "we", "id", "ive", "im", "ill"})
+# "need to", "have to", "got to", "gotta", "want to": the speaker's own plan or obligation
+_OWN_PLAN = frozenset({"need", "needs", "have", "has", "got", "want", "must", "gotta", "going"})
+_BETWEEN = frozenset({"still", "just", "really", "also", "first", "ve", "got"})
+
+
+def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if piece.acts.imperative or piece.acts.question is not None or piece.asks:
+        return None
+    if not any(p.acts.request for p in msg.pieces if p is not piece):
+        return None  # alone it may be the request itself: read on
+    words = content(piece.words)
+    if words[:1] and words[0] in _SPEAKER:
+        words = words[1:]
+    if not words or words[0] not in _OWN_PLAN:
+        return None
+    rest = words[1:]
+    while rest and rest[0] in _BETWEEN:
+        rest = rest[1:]
+    if words[0] != "gotta":
+        if rest[:1] != ["to"]:
+            return None  # "I need you to scan ...": asked of someone, read on
+        rest = rest[1:]
+    if not rest or terms.request_verb(rest, 0) or rest[0] in terms.service_verbs:
+        return None  # "need to get my shoot printed": an errand asked
+    if rest[0] in terms.lex.items or rest[0] in terms.office_words:
+        return None
+    return Finding("statement", piece, "the speaker's own doing, context only")
