@@ -84,3 +84,83 @@ async def test_a_printout_for_the_title_alias_is_handed_to_her() -> None:
     ]
     assert ("oona", "collect") in handed
     assert not [r for r in run.stm.trace.actions() if r.refused]
+
+
+# -- 2. a person's own place names them as the recipient, for the reader and the guard ----
+
+AT_THEIR_PLACE = [
+    ("Sunniva wants a hole punch, drop one at her desk", "sunniva"),
+    ("Sunniva wants a hole punch. Could you drop one at her desk?", "sunniva"),
+    ("Teodor needs a calculator, could you drop one on his desk", "teodor"),
+    ("Bram asked for a hole punch, please put one in his office", "bram"),
+    ("drop a hole punch on Sunniva's desk", "sunniva"),
+    ("leave my calculator in Bram's tray", "bram"),
+]
+
+
+@pytest.mark.parametrize(("text", "to"), AT_THEIR_PLACE)
+def test_her_place_makes_her_the_recipient(text: str, to: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [t.recipient for t in frame.tasks] == [to]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        *(text for text, _ in AT_THEIR_PLACE),
+        "print my agenda and give it to the Provost",
+        "Sunniva asked for the agenda, print it for her",
+        "bring Teodor my calculator",
+        "can you drop my calculator off for Bram",
+    ],
+)
+def test_whoever_the_reader_hands_over_to_the_guard_was_told_of(text: str) -> None:
+    """One rule (``core.receiving_place``) for the reader and the guard: every recipient of
+    the reader's frame other than the requester is someone the guard counts as named."""
+    frame = _frame(text)
+    receivers = {t.recipient for t in frame.tasks} - {"kit", None}
+    assert receivers, frame
+    assert receivers <= named_recipients(kilnworks(), memory("kit", text)), text
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Sunniva and Bram want a hole punch, drop one at her desk",  # whose desk?
+        "drop a hole punch at her desk",  # nobody named
+    ],
+)
+def test_a_place_pronoun_with_no_one_person_before_it_is_asked(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "named"),
+    [
+        ("bring me the hole punch from Sunniva's desk", set()),  # a source, not a recipient
+        ("Sunniva wants a hole punch", set()),  # a wisher only
+        ("bring me Sunniva's calculator", set()),  # an owner only
+        ("Sunniva and Bram want a hole punch, drop one at her desk", set()),
+    ],
+)
+def test_the_guard_names_no_one_else_from_a_place(text: str, named: set[str]) -> None:
+    """Near-misses: a place one takes from, a wish, an owner, or an ambiguous "her" name no
+    recipient for the guard."""
+    assert named_recipients(kilnworks(), memory("kit", text)) == named
+
+
+async def test_the_item_left_at_her_desk_is_handed_to_her() -> None:
+    """The run that fetched a colleague's hole punch and then had the hand-over refused ("not
+    someone you named to receive it") now hands it over."""
+    run = await run_instruction(
+        kilnworks(), "kit", "Sunniva wants a hole punch, drop one at her desk"
+    )
+    assert not [r for r in run.stm.trace.actions() if r.refused]
+    handed = [
+        (r.action.contact, r.action.purpose)
+        for r in run.stm.trace.actions()
+        if r.action.type == "send_qr"
+    ]
+    assert handed[-1] == ("sunniva", "collect")
