@@ -102,6 +102,11 @@ class PersonSite:
         f = self.following
         return self.possessive and f is not None and f.kind == "word" and f.ids[0] in PLACE_WORDS
 
+    @property
+    def place(self) -> str:
+        """The place word after a possessive ("desk" in "Wang's desk"), else ""."""
+        return self.following.ids[0] if self.at_place and self.following is not None else ""
+
 
 Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner", "context"]
 
@@ -117,7 +122,7 @@ class PersonRule:
 PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule(
         "at Wang's desk: met there",
-        lambda s: s.at_place and names_receiving_place(s.prev, s.nxt),
+        lambda s: s.at_place and names_receiving_place(s.prev, s.place),
         "recipient",
     ),
     PersonRule("from Wang's desk: the source", lambda s: s.at_place and s.prev == "from", "source"),
