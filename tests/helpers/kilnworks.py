@@ -60,7 +60,13 @@ def raw_kilnworks() -> dict[str, Any]:
                 "input": "agenda",
                 "product": "printout",
             },
-            {"id": "vet", "name": "legal review", "verbs": ["vet", "clear"], "input": "report"},
+            {
+                "id": "vet",
+                "name": "legal review",
+                "verbs": ["vet", "clear"],
+                "input": "report",
+                "done": "vetted",
+            },
             {
                 "id": "courier",
                 "name": "courier",

@@ -13,7 +13,13 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
-from assistantx.core.task_schema import TaskFrame
+from assistantx.agents.symbolic.evidence import gather
+from assistantx.agents.symbolic.plan_parts import left_out
+from assistantx.agents.symbolic.planning import Agenda, Planner
+from assistantx.agents.symbolic.reading.parts import asked_part
+from assistantx.agents.symbolic.roles import Roles
+from assistantx.core.task_schema import Task, TaskFrame
+from assistantx.memory.graph import LongTermMemory
 from assistantx.runtime.recipients import named_recipients
 from helpers.consent_memory import memory
 from helpers.kilnworks import kilnworks
@@ -164,3 +170,146 @@ async def test_the_item_left_at_her_desk_is_handed_to_her() -> None:
         if r.action.type == "send_qr"
     ]
     assert handed[-1] == ("sunniva", "collect")
+
+
+# -- 4. a part of the request is never silently dropped -----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "part"),
+    [
+        ("get my report past legal and then off to the head office", "off to the head office"),
+        ("vet my report, then over to the annex", "over to the annex"),
+        ("vet my report and then send it out", "send it out"),
+        ("Vet my report. Then off to the county office please", "off to the county office"),
+        ("courier my report to the head office and vet it", "courier my report"),
+    ],
+)
+def test_a_part_no_task_carries_is_asked_about(text: str, part: str) -> None:
+    """The review is read; the sending out is not: the whole request waits for an answer
+    that names the part, never the review alone reported as done."""
+    frame = _frame(text)
+    assert frame.tasks == []
+    assert frame.question is not None and part in frame.question, frame.question
+    assert asked_part(frame.question) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "answer"),
+    [
+        (
+            "get my report past legal and then off to the head office",
+            "courier it to the head office",
+        ),
+        ("vet my report and then send it out", "fax it to the county office"),
+    ],
+)
+def test_the_answer_takes_the_place_of_the_part(text: str, answer: str) -> None:
+    frame = _parser().parse_with_answers(text, "kit", [answer])
+    assert frame.question is None, frame.question
+    assert [(t.operation, t.destination is not None) for t in frame.tasks] == [
+        ("vet", False),
+        (answer.split()[0], True),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "operations"),
+    [
+        ("vet my report and then courier it to the head office", ["vet", "courier"]),
+        ("get my report past legal and then fax it to the head office", ["vet", "fax"]),
+        ("courier my report to the head office", ["courier"]),
+        ("get my report past legal", ["vet"]),
+    ],
+)
+def test_each_service_said_is_its_own_task(text: str, operations: list[str]) -> None:
+    """The send-out said in the second clause is that clause's task, never the review run
+    twice with the sending left out."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [t.operation for t in frame.tasks] == operations
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "print my agenda and give it to the Provost",
+        "print my agenda, then bring it to me",
+        "bring me a calculator from the store cupboard",
+        "get my calculator out of the post room and bring it to me",
+        "could you take my report to the legal desk",
+        "please bring my report to Bram's desk and then to the Provost",
+    ],
+)
+def test_requests_whose_every_part_is_read_are_not_asked(text: str) -> None:
+    """Near-misses: a "to" naming a person, "me" or a place of the office, a purpose, a
+    facility an item is taken from."""
+    frame = _frame(text)
+    assert frame.question is None or asked_part(frame.question) is None, frame.question
+
+
+async def test_nothing_moves_before_the_part_is_answered() -> None:
+    """The run asks about the part first; with no answer that settles it, nothing physical
+    happens and the outcome is not done."""
+    run = await run_instruction(
+        kilnworks(), "kit", "get my report past legal and then off to the head office"
+    )
+    actions = [r.action for r in run.stm.trace.actions()]
+    assert actions[0].type == "inquire" and actions[0].contact == "kit"
+    assert not [a for a in actions if a.type in ("move", "send_qr", "forward_file")]
+    assert actions[-1].type == "stop" and actions[-1].outcome != "done"
+
+
+# -- 4b. where the plan is built: every task of the reading has its steps -----------------
+
+
+def _agenda(frame: TaskFrame) -> Agenda:
+    office = kilnworks()
+    planner = Planner(office, Roles(office, office.distance))
+    return planner.agenda(frame, LongTermMemory(office), gather(memory("kit", "x"), office), 0.0)
+
+
+def test_a_send_out_with_nowhere_to_go_stops_the_whole_plan() -> None:
+    """A frame from anywhere (a hybrid reasoner's, an answer's re-reading) with a send-out
+    that has no destination: nothing of it runs, not the review before it either."""
+    frame = TaskFrame(
+        requester="kit",
+        tasks=[
+            Task(kind="heat", item="report", owner="kit", recipient="kit", operation="vet"),
+            Task(kind="heat", item="report", owner="kit", recipient="kit", operation="courier"),
+        ],
+    )
+    agenda = _agenda(frame)
+    assert agenda.active is None
+    assert {t.status for t in agenda.tasks} == {"unachievable"}
+    assert "where to send" in agenda.tasks[1].reason
+
+
+def test_a_plan_with_every_part_runs() -> None:
+    frame = TaskFrame(
+        requester="kit",
+        tasks=[
+            Task(kind="heat", item="report", owner="kit", recipient="kit", operation="vet"),
+            Task(
+                kind="heat",
+                item="report",
+                owner="kit",
+                recipient="kit",
+                operation="courier",
+                destination="the head office",
+            ),
+        ],
+    )
+    agenda = _agenda(frame)
+    assert [t.status for t in agenda.tasks] == ["active", "active"]
+
+
+def test_the_parts_check_names_a_task_with_no_step() -> None:
+    class Compiled:
+        def __init__(self, task: Task, phases: list[object]) -> None:
+            self.task, self.phases = task, phases
+
+    report = Task(kind="heat", item="report", owner="kit", recipient="kit", operation="vet")
+    assert left_out(kilnworks(), [Compiled(report, [object()])]) is None
+    assert left_out(kilnworks(), [Compiled(report, [object()]), Compiled(report, [])])
+

@@ -62,6 +62,7 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
+from assistantx.agents.symbolic.reading.parts import asked_part, unread_part
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
@@ -169,6 +170,9 @@ class InstructionParser:
         if frame.understood:
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
             frame = _one_send_each(frame)
+            unread = unread_part(self.office, readings, frame)
+            if unread is not None:  # a part no task carries: asked, never dropped
+                frame = TaskFrame(requester=requester, question=unread)
         if frame.question == NOT_UNDERSTOOD:
             unknown = unknown_item(self.screen.terms, readings.tokens, readings.mentions)
             if unknown is not None:
@@ -223,6 +227,13 @@ class InstructionParser:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
                     continue
+            part = asked_part(frame.question) if frame.question is not None else None
+            if part is not None and part in text:
+                # "I'm not sure what you mean by 'off to the plant'" → "courier it to the
+                # plant": the answer takes the place of the part asked about
+                text = text.replace(part, answer.strip().rstrip(" .!?"), 1)
+                frame = self.parse(text, requester)
+                continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request
