@@ -313,3 +313,65 @@ def test_the_parts_check_names_a_task_with_no_step() -> None:
     assert left_out(kilnworks(), [Compiled(report, [object()])]) is None
     assert left_out(kilnworks(), [Compiled(report, [object()]), Compiled(report, [])])
 
+
+# -- 3. "can someone lend me theirs": anyone's item ----------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "item"),
+    [
+        ("my hole punch is broken, can someone lend me theirs", "hole_punch"),
+        ("my hole punch is broken. Could somebody lend me theirs?", "hole_punch"),
+        ("my hole punch jammed, could one of you lend me yours?", "hole_punch"),
+        ("my calculator died, does anyone have a spare I could borrow", "calculator"),
+        ("my calculator died, does anyone have a spare calculator I could borrow", "calculator"),
+    ],
+)
+def test_theirs_after_someone_is_anyones(text: str, item: str) -> None:
+    """Nobody's own item is named: whoever has one (their own yes), or the office's
+    ownerless one; never "I'm not sure what you need"."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", item, None, "kit")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can someone lend me theirs",  # no item said anywhere: asked
+        "Sunniva has a hole punch, could she lend me hers",  # hers is Sunniva's, not anyone's
+    ],
+)
+def test_theirs_with_no_item_or_a_named_owner_is_not_anyones(text: str) -> None:
+    """Near-misses: nothing is fetched from whoever has one."""
+    assert [t for t in _frame(text).tasks if t.owner is None] == []
+
+
+@pytest.mark.parametrize(
+    "text", ["does anyone have a spare?", "does anyone have a spare hole punch?"]
+)
+def test_asking_who_has_a_spare_moves_nothing(text: str) -> None:
+    """Near-miss: a question with no borrowing in it is answered in words."""
+    assert _frame(text).tasks == []
+
+
+async def test_a_colleagues_hole_punch_is_borrowed_with_their_own_yes() -> None:
+    run = await run_instruction(
+        kilnworks(), "kit", "my hole punch is broken, can someone lend me theirs"
+    )
+    actions = [r.action for r in run.stm.trace.actions() if not r.refused]
+    asked = [a.contact for a in actions if a.type == "inquire"]
+    deposits = [a for a in actions if a.type == "send_qr" and a.purpose == "deposit"]
+    assert asked and "kit" not in asked
+    assert [a.item.split(":")[1] for a in deposits] == asked[:1]
+    assert actions[-1].type == "stop" and actions[-1].outcome == "done"
+
+
+async def test_the_ownerless_calculator_is_taken_first() -> None:
+    run = await run_instruction(
+        kilnworks(), "kit", "my calculator died, does anyone have a spare I could borrow"
+    )
+    items = [r.action.item for r in run.stm.trace.actions() if r.action.type == "send_qr"]
+    assert items and set(items) == {"calculator:store_cupboard"}
