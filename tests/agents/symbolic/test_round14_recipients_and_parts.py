@@ -375,3 +375,66 @@ async def test_the_ownerless_calculator_is_taken_first() -> None:
     )
     items = [r.action.item for r in run.stm.trace.actions() if r.action.type == "send_qr"]
     assert items and set(items) == {"calculator:store_cupboard"}
+
+
+# -- 5. "for her" after a printed product, and a title in two-part sentences --------------
+
+
+@pytest.mark.parametrize(
+    ("text", "to"),
+    [
+        ("Sunniva asked for the agenda, print it for her", "sunniva"),
+        ("Sunniva needs the agenda, can you print it for her", "sunniva"),
+        ("Sunniva needs a printout of my agenda, print one for her", "sunniva"),
+        ("Teodor is chairing today, print my agenda for him please", "teodor"),
+    ],
+)
+def test_a_printout_for_her_is_one_print_handed_to_her(text: str, to: str) -> None:
+    """The need said first is met by the print: one print for her, no file sent besides
+    and no second printout."""
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("print", "agenda", to)]
+
+
+@pytest.mark.parametrize(
+    ("text", "tasks"),
+    [
+        (
+            "print my agenda and give it to the Provost, and bring me a calculator",
+            [("print", "agenda", "oona", None), ("transfer", "calculator", "kit", None)],
+        ),
+        (
+            "bring me a calculator and print my agenda for the Provost",
+            [("transfer", "calculator", "kit", None), ("print", "agenda", "oona", None)],
+        ),
+        (
+            "print the agenda for the Provost and give her my calculator",
+            [("print", "agenda", "oona", None), ("transfer", "calculator", "oona", None)],
+        ),
+    ],
+)
+def test_a_title_in_a_two_part_sentence_names_its_part(
+    text: str, tasks: list[tuple[str, str | None, str | None, str | None]]
+) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert _tasks(frame) == tasks
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("send Sunniva my agenda and print it for her", ["send_file", "print"]),
+        ("Sunniva needs my calculator, bring it to her", ["transfer"]),
+        ("print my agenda for Sunniva and bring her my calculator", ["print", "transfer"]),
+    ],
+)
+def test_two_errands_said_as_requests_stay_two(text: str, kinds: list[str]) -> None:
+    """Near-misses: only a need gives way to the work that meets it."""
+    assert [t.kind for t in _frame(text).tasks] == kinds
+
+
+def test_her_with_nobody_named_is_still_asked() -> None:
+    frame = _frame("print my agenda for her")
+    assert frame.tasks == [] and frame.question is not None
