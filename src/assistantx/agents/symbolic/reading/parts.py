@@ -9,9 +9,9 @@ done, the sending out silently left out, and "Done" reported). The parts no task
   item, not "me") and no task's destination outside: "off to the plant", "then over to head
   office";
 - a sending away with no task that sends anything out: "send it out", "get it away";
-- a service asked for by its verb, or by the facility named as where the work is done
-  ("past legal"), on an item a task carries, run by no task ("courier my report to the head
-  office and vet it" read as the review alone).
+- a send-out service asked for by a request's own verb, or a facility named as doing the
+  work ("past legal"), on an item a task carries, run by no task ("courier my report to the
+  head office and vet it" read as the review alone).
 
 Each is asked about before anything moves, quoting the part in the requester's words (with
 the office's ways of sending things out, where it has some); the answer takes the part's
@@ -31,6 +31,9 @@ from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame, operation_of
 
 _TO = frozenset({"to", "towards", "toward"})
+# The words before a "to" that no verb governs: "and then off to the plant", "then to X".
+_PARTICLES = frozenset({"off", "over", "on"})
+_NO_VERB = _PARTICLES | {"then", "afterwards"}
 # What opens a noun phrase after "to" that could be a place ("to *the* plant"); "my" and the
 # pronouns are the lexicon's own mentions, read as the requester or a person.
 _NP_OPENERS = frozenset({"the", "a", "an", "our", "their", "this", "that", "some"})
@@ -42,9 +45,10 @@ _OBJECTS = frozenset({"it", "them", "this", "that", "these", "those"})
 _PHRASE_MARKS = frozenset(".,;!?\n")
 _PHRASE_ENDS = frozenset({"and", "then", "or", "but", "so", "please", "pls", "asap", "by"})
 _LONGEST = 6  # words in a destination phrase: longer is no place named
-# The words before a facility that say where an item is, not that the facility works on it.
-_WHERE_IT_IS = frozenset({"from", "at", "in", "on", "near", "beside", "inside", "of", "out"})
-_PAST = frozenset({"past", "through", "via", "by", "to"})
+# The words before a facility that make it the one doing the work ("get it past legal").
+_PAST = frozenset({"past", "through", "via"})
+# What may stand before a request's own verb: a clause's start, a join, a courtesy.
+_REQUEST_OPENERS = frozenset({"", "and", "then", "also", "please", "pls", "just", "you"})
 # How the question quotes the part, so the answer can take its place in the request.
 ASKED = "Sorry, I'm not sure what you mean by “"
 _ASKED_END = "”."
@@ -93,6 +97,8 @@ def _unknown_destination(readings: Readings, destinations: set[str]) -> str | No
         first = tokens[n + 1]
         if first.word not in _NP_OPENERS:
             continue  # "to sign", "to me", "to Bram": a purpose, or the lexicon's own
+        if not n or tokens[n - 1].word not in _NO_VERB:
+            continue  # "fax it to the bank", "my letter to the owners": a verb's or a noun's
         end = _phrase_end(tokens, gaps, n + 2)
         span = range(n + 1, end)
         if end == n + 2 or any(at[k].kind != "word" for k in span if k in at):
@@ -102,7 +108,7 @@ def _unknown_destination(readings: Readings, destinations: set[str]) -> str | No
         words = {tokens[k].word for k in span} - _NP_OPENERS
         if words & destinations:
             continue
-        start = n - 1 if n and tokens[n - 1].word in ("off", "over", "on", "up") else n
+        start = n - 1 if tokens[n - 1].word in _PARTICLES else n
         return " ".join(tok.text for tok in tokens[start:end])
     return None
 
@@ -134,10 +140,14 @@ def _service_left_out(office: Office, readings: Readings, frame: TaskFrame) -> s
         if m.kind != "cue":
             continue
         verb = tokens[m.start].word
+        before = tokens[m.start - 1].word if m.start and not tokens[m.start].opens else ""
+        if before not in _REQUEST_OPENERS:
+            continue  # "so he can post it", "to be faxed": someone else's work, a purpose
         said = [
             op
             for op in office.operations
             if op.input in items
+            and op.sends_out
             and (verb in op.verbs or bool(language.verb_lemmas(verb) & set(op.verbs)))
         ]
         if said and not any(op.id in run for op in said):
@@ -146,13 +156,12 @@ def _service_left_out(office: Office, readings: Readings, frame: TaskFrame) -> s
     for m in readings.mentions:
         # "past legal", "through the laminator": the facility as where the work is done
         # (not "from/at the post desk": where an item is)
-        if m.kind != "facility" or (m.start and tokens[m.start - 1].word in _WHERE_IT_IS):
+        if m.kind != "facility" or not m.start or tokens[m.start - 1].word not in _PAST:
             continue
         offered = [office.operation(op) for op in office.facility(m.id).operations]
         said = [op for op in offered if op.input in items]
         if said and not any(op.id in run for op in said):
-            start = m.start - 1 if m.start and tokens[m.start - 1].word in _PAST else m.start
-            return " ".join(tok.text for tok in tokens[start : m.end])
+            return " ".join(tok.text for tok in tokens[m.start - 1 : m.end])
     return None
 
 
