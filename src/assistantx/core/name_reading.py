@@ -9,7 +9,9 @@ with this one function, so the guard never refuses a hand-over to the person the
 Syntax decides: "to Mark", "Mark's", "give mark a pen", "Pat hurt her hand" make a person;
 "the grace period", "to be honest", "Will you", "in May", "Mark my form" make the word. When
 neither says anything a capital letter makes the person; when they disagree, or a capitalized
-word sits where only the word fits, the reading is "ask".
+word sits where only the word fits, the reading is "ask". A title the office declares with its
+article ("the Provost" as someone's alias) is that person wherever it is written so: the
+article, which otherwise makes the word ("the grace period"), is part of the declared name.
 """
 
 from __future__ import annotations
@@ -45,6 +47,8 @@ class NameSlot:
     next_possessive: bool = False
     next_is_item: bool = False  # the next word names one of the office's items
     next_is_name: bool = False  # the next word is a word of someone's name
+    # the office declares "<prev> <word>" as someone's alias ("the Provost", "our Dean")
+    declared_with_prev: bool = False
 
 
 def is_word_name(word: str) -> bool:
@@ -57,7 +61,7 @@ def is_word_name(word: str) -> bool:
 def read_name(slot: NameSlot) -> NameReading:
     """The reading of a one-word name: the person, the ordinary word, or ask which."""
     w = slot.word
-    if not is_word_name(w):
+    if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
     prev = "" if slot.opens else slot.prev
     nxt = slot.next

@@ -8,7 +8,8 @@ owner, never as the one who gets the item. The roles are read from the requester
 words alone (never from a reasoner's reading), by the position of the name:
 
 - after a preposition of receiving: "to Hal", "for Hal", "with Hal" ("leave it with Hal"),
-  and a place of theirs: "on Hal's desk";
+  and a place of theirs: "on Hal's desk", "at her desk" (``core.receiving_place``, the rule
+  the reader reads the recipient with);
 - right after a giving verb, in any of its forms: "bring Hal a thermometer", "lent Hal ...";
 - as a doer: "by Hal", "get Hal to sign", "Hal to sign it";
 - a pronoun in one of those places ("take her my ice pack") when exactly one person the
@@ -37,11 +38,11 @@ from assistantx.core import english, language
 from assistantx.core.name_reading import NameSlot, is_word_name, read_name
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.receiving_place import names_receiving_place, pronoun_receiving_place
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
-_AT_PLACE = frozenset({"on", "at", "to", "onto", "in", "into"})
 _BY = frozenset({"by"})
 _DOER_VERBS = frozenset({"get", "ask", "have", "let", "make"})
 _DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "countersign"})
@@ -49,7 +50,6 @@ _GIVE = english.words("dative_verbs") | english.words("handing_verbs")
 _TITLES = english.words("titles") - {"a", "an", "the", "our"}
 # titles that name a role ("the manager"), not titles of address ("Dr.", "Ms")
 _ROLE_TITLES = _TITLES - {"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
-_PLACES = english.words("place_words") | frozenset({"tray", "pigeonhole", "inbox", "chair"})
 _PRONOUNS = english.words("object_pronouns")
 _FILLERS = english.words("courtesy") | frozenset(
     {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
@@ -214,7 +214,7 @@ def _receiving(
     before = _before(words, start)
     after = words[end].folded if end < len(words) else ""
     if possessive:  # "on Hal's desk": their place; "Hal's form": an owner
-        return before in _AT_PLACE and after in _PLACES
+        return names_receiving_place(before, after)
     if before in _TO or before in _BY or _is_give(before, operations):
         return True
     if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
@@ -237,7 +237,11 @@ def _in_roles(office: Office, text: str, requester: str) -> set[str]:
             named |= m.people
             receiving_end = m.end
     for n, w in enumerate(words):
-        if w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations):
+        after = words[n + 1].folded if n + 1 < len(words) else ""
+        at_place = pronoun_receiving_place(_before(words, n), w.folded, after)  # "at her desk"
+        if not at_place and (
+            w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations)
+        ):
             continue
         # the one person named who is not the owner of what is handed over (named after
         # the pronoun: "take him May's ice pack") nor a source ("from May"); "Hal's clipboard

@@ -16,10 +16,13 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language, task_kinds
+from assistantx.core.receiving_place import (
+    PLACE_WORDS,
+    names_receiving_place,
+    pronoun_receiving_place,
+)
 
 _DATIVE_VERBS = english.words("dative_verbs")
-# "Wang's desk": a person's place, where the robot meets them.
-_PLACE_WORDS = english.words("place_words")
 _OBJECT_PRONOUNS = english.words("object_pronouns")
 OTHER_POSSESSIVES = english.words("other_possessives")
 _OBJECT_STARTS = english.words("object_starts") | {"one", "some", "another"}
@@ -27,7 +30,6 @@ _OBJECT_STARTS = english.words("object_starts") | {"one", "some", "another"}
 _TO = frozenset({"to", "for", "with"})
 # an article opens a noun phrase of its own: a possessive before it owns nothing in it
 _ARTICLES = frozenset({"a", "an", "the", "some", "another", "any"})
-_MEET_AT = frozenset({"to", "at", "for", "on", "by"})
 # "Min needs scissors": the one who needs the item gets it.
 _NEEDS = english.words("need_verbs") | english.words("receive_verbs")
 _DIRECT = frozenset({"ask", "have", "let", "tell"})
@@ -98,7 +100,12 @@ class PersonSite:
     def at_place(self) -> bool:
         """ "Wang's desk": the person's place, not something they own."""
         f = self.following
-        return self.possessive and f is not None and f.kind == "word" and f.ids[0] in _PLACE_WORDS
+        return self.possessive and f is not None and f.kind == "word" and f.ids[0] in PLACE_WORDS
+
+    @property
+    def place(self) -> str:
+        """The place word after a possessive ("desk" in "Wang's desk"), else ""."""
+        return self.following.ids[0] if self.at_place and self.following is not None else ""
 
 
 Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner", "context"]
@@ -114,7 +121,9 @@ class PersonRule:
 # Highest priority first; the first rule that applies gives the person's role.
 PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule(
-        "at Wang's desk: met there", lambda s: s.at_place and s.prev in _MEET_AT, "recipient"
+        "at Wang's desk: met there",
+        lambda s: s.at_place and names_receiving_place(s.prev, s.place),
+        "recipient",
     ),
     PersonRule("from Wang's desk: the source", lambda s: s.at_place and s.prev == "from", "source"),
     PersonRule("Wang's desk: named, no role yet", lambda s: s.at_place, "bare"),
@@ -230,6 +239,13 @@ def clause_roles(
             prev = prev_word(tokens, m.start)
             if prev in _TO or prev in _DATIVE_VERBS:
                 roles.add_recipient(requester, m.start)
+        elif m.kind == "pronoun" and _at_their_place(tokens, m):
+            # "Priya wants a stapler, leave one at her desk": she receives it there (the
+            # consent guard reads the same words with the same rule)
+            others = [x for x in last_person if x != requester]
+            if len(set(others)) != 1:
+                raise UnresolvedPronoun(m.text)
+            roles.add_recipient(others[-1], m.start)
         elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
             following = ms[n + 1] if n + 1 < len(ms) else None
             others = [x for x in last_person if x != requester]
@@ -351,6 +367,12 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
         or roles.recipient_between(0, objects[0].start)
         or default
     )
+
+
+def _at_their_place(tokens: Sequence[Token], m: Mention) -> bool:
+    """ "at her desk", "in his office": a possessive pronoun naming a person's own place."""
+    after = tokens[m.end].word if m.end < len(tokens) and not tokens[m.end].opens else ""
+    return pronoun_receiving_place(prev_word(tokens, m.start), tokens[m.start].word, after)
 
 
 def _article_between(tokens: Sequence[Token], a: Mention, b: Mention) -> bool:

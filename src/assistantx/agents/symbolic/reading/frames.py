@@ -31,6 +31,7 @@ from assistantx.agents.symbolic.reading._parties import (
 )
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
+from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
@@ -78,6 +79,7 @@ class FrameReader:
         last_person: list[str] = []
         objects: list[Mention] = []
         previous_cues = True
+        previous_need = False  # the clause before said someone needs something
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
         placed: dict[str, str] = {}  # item type → the one a place phrase named
@@ -116,6 +118,11 @@ class FrameReader:
             # "print my log. I need the spreadsheet for the meeting": the item a task already
             # works on for that person, named again as what they need, is context
             made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
+            if tasks and previous_need:  # "P needs a printout of X, print one for her": one
+                made = [t for t in made if not same_work(tasks[-1], t)]
+            if tasks and previous_need and self._refers_back(clause) and met_by(tasks[-1], made):
+                tasks.pop()  # "Priya needs the agenda, print it for her": the print meets it
+            previous_need = says_a_need(clause, tokens)
             if tasks and len(made) == 1 and _for_another(tasks[-1], made[0], clause, requester):
                 # "please scan my invoice. Mark needs a scan of it": the same work, and whom
                 # its product is for; one scan, handed to Mark

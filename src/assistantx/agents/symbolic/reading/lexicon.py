@@ -60,6 +60,8 @@ _COURTESY_TITLES = frozenset(
     {"a", "an", "the", "our", "mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
 )
 _POLITE = english.words("polite")
+# the articles an alias may open with ("the Provost", "our Dean")
+_ALIAS_ARTICLES = frozenset({"the", "our"})
 # A determiner before a name word makes it the ordinary word ("the grace period").
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
@@ -116,6 +118,9 @@ class Lexicon:
     # "Dr. Kim" of another (word → the people it is declared for, bare or after a title)
     bare: dict[str, set[str]] = field(default_factory=dict)
     titled: dict[str, set[str]] = field(default_factory=dict)
+    # a one-word title declared with its article ("the Provost"): (article, word) pairs, so
+    # "the provost" written so is the person, never the ordinary word
+    with_article: set[tuple[str, str]] = field(default_factory=set)
     # the reading the requester chose for a name word they were asked about (word → reading)
     chosen: dict[str, Reading] = field(default_factory=dict)
     # one-word names said like another person's name and spelled nearly so ("li": "lee")
@@ -187,6 +192,8 @@ class Lexicon:
         and a word ("Dr. Kim"), or a role with its qualifier ("the lab manager")."""
         names = [w for w in words if w not in TITLES]
         roles = [w for w in words if w in TITLES and w not in _COURTESY_TITLES]
+        if len(words) == 2 and words[0] in _ALIAS_ARTICLES and names == words[1:]:
+            self.with_article.add((words[0], key_of(words[1])))
         if len(names) == 1 and not roles and len(words) == len(names):
             self.bare.setdefault(key_of(names[0]), set()).add(person)
         elif len(names) == 1 and words[-1] == names[0]:
@@ -474,6 +481,7 @@ class Lexicon:
             next_possessive=nxt is not None and nxt.possessive,
             next_is_item=nxt is not None and nxt.word in self.items,
             next_is_name=nxt is not None and nxt.word in self.name_words,
+            declared_with_prev=i > 0 and (tokens[i - 1].word, t.word) in self.with_article,
         )
         return read_name(slot)
 

@@ -190,12 +190,28 @@ class OperationChooser:
             said = objects
         # "scan my contract to PDF", "send my plan to PDF": the product named says which
         said = said or [op for op in fits if op.product in products]
+        at, peers = place
+        sent = self._sent_out_said(task.item, set(words))
+        # "get it past legal and then courier it": the facility named says the first
+        at_named = [op for op in fits if op.id in facility_ops and op not in said]
+        if sent and peers > 1 and len(said) + len(at_named) + len(sent) == peers:
+            # one clause each, the send-out among them (never the other operation twice,
+            # the sending left out), in the order they were said
+            def said_at(op: Operation) -> int:
+                spots = [order.get(w, len(order)) for w in self._op_words[op.id]]
+                spots += [
+                    m.start
+                    for m in lexed.mentions
+                    if m.kind == "facility" and op.id in self.office.facility(m.ids[0]).operations
+                ]
+                return min(spots, default=len(order))
+
+            return [self._as(task, sorted([*said, *at_named, *sent], key=said_at)[at])], None
         if len(said) > 1:
             said = self._made_into(said, words)
         if len(said) > 1:
             # in the order they were said: "photocopy and bind" copies, then binds
             said.sort(key=lambda op: min(order.get(w, len(order)) for w in self._op_words[op.id]))
-            at, peers = place
             if peers == len(said):  # one clause each: "scan my plan and then bind it"
                 return [self._as(task, said[at])], None
             if peers == 1:
@@ -212,6 +228,17 @@ class OperationChooser:
             listed = ", ".join(names[:-1]) + " or " + names[-1]
             return [task], f"Which do you mean: {listed}?"
         return [task], None
+
+    def _sent_out_said(self, item: str, words: set[str]) -> list[Operation]:
+        """The send-out services on ``item`` whose verb is said ("courier it")."""
+        return [
+            op
+            for op in self.office.operations
+            if op.input == item
+            and op.sends_out
+            and self.office.runnable(op.id)
+            and self._op_words[op.id] & words
+        ]
 
     def _verb_objects(self, lexed: Lexed, said: list[Operation]) -> set[str]:
         """The item types named right after a verb of ``said`` ("print *spine labels*",

@@ -73,6 +73,7 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
+from assistantx.agents.symbolic.reading.parts import asked_part, unread_part
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
@@ -185,6 +186,9 @@ class InstructionParser:
             frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)
+            unread = unread_part(self.office, readings, frame) if frame.understood else None
+            if unread is not None:  # a part no task carries: asked, never dropped
+                frame = TaskFrame(requester=requester, question=unread)
         if frame.question == NOT_UNDERSTOOD:
             terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
             which = category_asked(terms, tokens, mentions)  # "a drink": tea or cocoa?
@@ -263,6 +267,13 @@ class InstructionParser:
                 if whose and not whose & {t.owner for t in meant.tasks}:
                     continue  # "Kwame's" read as someone else's file: asked, never guessed
                 text, frame = with_antecedent(text, answer, kind), meant
+                continue
+            part = asked_part(frame.question) if frame.question is not None else None
+            if part is not None and part in text:
+                # "I'm not sure what you mean by 'off to the plant'" → "courier it to the
+                # plant": the answer takes the place of the part asked about
+                text = text.replace(part, answer.strip().rstrip(" .!?"), 1)
+                frame = self.parse(text, requester)
                 continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
+from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.correction import corrected
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
@@ -62,8 +63,9 @@ class RequestScreen:
         context = [
             c for f in spoken.live if f.verdict in ("statement", "condition") for c in f.context
         ]
-        text, rewrites = rewrite(self.terms, spoken.msg, spoken.left, spoken.hints, context)
-        return Request(text=text, evidence=rewrites)
+        left, anyone = anyones(spoken.left)  # "can someone lend me theirs": one, anyone's
+        text, rewrites = rewrite(self.terms, spoken.msg, left, spoken.hints, context)
+        return Request(text=text, evidence=[*anyone, *rewrites])
 
     def decide(self, spoken: Spoken, request: Request) -> Screened:
         """What the pieces make of the whole message: a decline, the replies to a message

@@ -1,0 +1,52 @@
+"""A need said, then the work that meets it: one errand, not two ("Priya asked for the
+agenda, print it for her"; "Priya needs a printout of my agenda, print one for her").
+
+The screen restates a third person's need as "Priya needs the agenda", which the frames read
+as its own task (the file sent to her); the request after it that works on the same item for
+the same person ("print it for her") is how the need is met, so the need's task gives way to
+it. The work a need names, asked for again for the same person ("needs a printout ...,
+print one for her"), is one print. An errand said as two requests ("send Priya my agenda and
+print it for her") keeps both: only a need gives way.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading._parties import Clause
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, task_kinds
+from assistantx.core.task_schema import Task
+
+_NEEDS = english.words("need_verbs")
+_HANDING = frozenset({"transfer", "send_file"})
+
+
+def says_a_need(clause: Clause, tokens: Sequence[Token]) -> bool:
+    """Whether a clause says someone needs something ("Priya needs the agenda")."""
+    return any(tokens[m.start].word in _NEEDS for m in clause.mentions)
+
+
+def met_by(need: Task, made: Sequence[Task]) -> bool:
+    """Whether the one task ``made`` works on the needed item for the one who needs it, so
+    the need's own hand-over is only the reason for it."""
+    if len(made) != 1 or need.kind not in _HANDING:
+        return False
+    work = made[0]
+    return (
+        work.kind != need.kind
+        and work.item == need.item
+        and work.recipient == need.recipient
+        and (work.kind == "print" or task_kinds.works_on_item(work.kind))
+    )
+
+
+def same_work(earlier: Task, task: Task) -> bool:
+    """Whether ``task`` is ``earlier``'s work said again (not a hand-over: two pens are two)."""
+    return (
+        task.kind not in _HANDING
+        and task.item is not None
+        and (earlier.kind, earlier.item, earlier.owner, earlier.recipient, earlier.operation)
+        == (task.kind, task.item, task.owner, task.recipient, task.operation)
+        and earlier.actor == task.actor
+    )

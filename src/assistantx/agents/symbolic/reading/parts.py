@@ -1,0 +1,182 @@
+"""After the operations: a part of the request that no task carries is asked about, never
+dropped.
+
+The frames stage makes tasks from the clauses it can read; a part it cannot read must not
+vanish from the errand ("get my report past legal and then off to the plant": the review
+done, the sending out silently left out, and "Done" reported). The parts no task carries:
+
+- a destination after "to" that is nothing of the office (no person, place, facility or
+  item, not "me") and no task's destination outside: "off to the plant", "then over to head
+  office";
+- a sending away with no task that sends anything out: "send it out", "get it away";
+- a send-out service asked for by a request's own verb, or a facility named as doing the
+  work ("past legal"), on an item a task carries, run by no task ("courier my report to the
+  head office and vet it" read as the review alone).
+
+Each is asked about before anything moves, quoting the part in the requester's words (with
+the office's ways of sending things out, where it has some); the answer takes the part's
+place in the request (``InstructionParser.parse_with_answers``). A "to" before a verb ("to
+sign") is a purpose, not a destination, and a destination a task already has is read.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.readings import Readings
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import language
+from assistantx.core.office import Office
+from assistantx.core.task_schema import TaskFrame, operation_of
+
+_TO = frozenset({"to", "towards", "toward"})
+# The words before a "to" that no verb governs: "and then off to the plant", "then to X".
+_PARTICLES = frozenset({"off", "over", "on"})
+_NO_VERB = _PARTICLES | {"then", "afterwards"}
+# What opens a noun phrase after "to" that could be a place ("to *the* plant"); "my" and the
+# pronouns are the lexicon's own mentions, read as the requester or a person.
+_NP_OPENERS = frozenset({"the", "a", "an", "our", "their", "this", "that", "some"})
+# The particles of sending something away, and the verbs that send with them.
+_AWAY = frozenset({"out", "away"})
+_SENDING = frozenset({"send", "get", "ship", "mail", "post", "dispatch"})
+_OBJECTS = frozenset({"it", "them", "this", "that", "these", "those"})
+# What ends a phrase: a sentence or clause mark before the next word, or a joining word.
+_PHRASE_MARKS = frozenset(".,;!?\n")
+_PHRASE_ENDS = frozenset({"and", "then", "or", "but", "so", "please", "pls", "asap", "by"})
+_LONGEST = 6  # words in a destination phrase: longer is no place named
+# The words before a facility that make it the one doing the work ("get it past legal").
+_PAST = frozenset({"past", "through", "via"})
+# What may stand before a request's own verb: a clause's start, a join, a courtesy.
+_REQUEST_OPENERS = frozenset({"", "and", "then", "also", "please", "pls", "just", "you"})
+# How the question quotes the part, so the answer can take its place in the request.
+ASKED = "Sorry, I'm not sure what you mean by “"
+_ASKED_END = "”."
+
+
+def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
+    """The question about a part of the request that no task of ``frame`` carries, or None
+    when every part is read."""
+    if not frame.understood:
+        return None
+    destinations = {
+        w for t in frame.tasks if t.destination for w in language.words(t.destination.lower())
+    }
+    phrase = (
+        _unknown_destination(readings, destinations)
+        or _unsent(readings, destinations)
+        or _service_left_out(office, readings, frame)
+    )
+    if phrase is None:
+        return None
+    return f"{ASKED}{phrase}{_ASKED_END}{_means(office)} Could you tell me?"
+
+
+def asked_part(question: str) -> str | None:
+    """The part of the request a question of ``unread_part`` asked about, in the requester's
+    words; None for any other question."""
+    if not question.startswith(ASKED) or _ASKED_END not in question:
+        return None
+    return question[len(ASKED) : question.index(_ASKED_END)]
+
+
+def _means(office: Office) -> str:
+    """How this office sends things out, for the requester's answer."""
+    names = list(dict.fromkeys(op.name for op in office.operations if op.sends_out))
+    if not names:
+        return ""
+    return f" I can send things out of the office by {' or '.join(names)}."
+
+
+def _unknown_destination(readings: Readings, destinations: set[str]) -> str | None:
+    tokens, gaps = readings.tokens, readings.gaps
+    at = _mention_at(readings.mentions)
+    for n, t in enumerate(tokens):
+        if t.word not in _TO or n + 1 >= len(tokens) or _ends_before(tokens, gaps, n + 1):
+            continue
+        first = tokens[n + 1]
+        if first.word not in _NP_OPENERS:
+            continue  # "to sign", "to me", "to Bram": a purpose, or the lexicon's own
+        if not n or tokens[n - 1].word not in _NO_VERB:
+            continue  # "fax it to the bank", "my letter to the owners": a verb's or a noun's
+        end = _phrase_end(tokens, gaps, n + 2)
+        span = range(n + 1, end)
+        if end == n + 2 or any(at[k].kind != "word" for k in span if k in at):
+            continue  # "to the": no noun; "to the post room": a place of the office
+        if readings.outside is not None and readings.outside.holds(n + 1):
+            continue  # a send-out service's destination, read by the readings stage
+        words = {tokens[k].word for k in span} - _NP_OPENERS
+        if words & destinations:
+            continue
+        start = n - 1 if tokens[n - 1].word in _PARTICLES else n
+        return " ".join(tok.text for tok in tokens[start:end])
+    return None
+
+
+def _unsent(readings: Readings, destinations: set[str]) -> str | None:
+    """ "send it out" with no task sending anything out: the sending is a part unread."""
+    if destinations:
+        return None
+    tokens = readings.tokens
+    for n, t in enumerate(tokens):
+        if t.word not in _AWAY or n < 2:
+            continue
+        nxt = tokens[n + 1].word if n + 1 < len(tokens) else ""
+        if nxt == "of":
+            continue  # "get it out of the fridge": from a place
+        verb, obj = tokens[n - 2].word, tokens[n - 1].word
+        if obj in _OBJECTS and language.verb_lemmas(verb) & _SENDING | ({verb} & _SENDING):
+            return " ".join(tok.text for tok in tokens[n - 2 : n + 1])
+    return None
+
+
+def _service_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
+    """A service's verb said ("courier", "vet") on an item some task carries, where no task
+    runs that service: the words from the verb to the end of its clause."""
+    items = {t.item for t in frame.tasks}
+    run = {operation_of(office, t) for t in frame.tasks}
+    tokens, gaps = readings.tokens, readings.gaps
+    for m in readings.mentions:
+        if m.kind != "cue":
+            continue
+        verb = tokens[m.start].word
+        before = tokens[m.start - 1].word if m.start and not tokens[m.start].opens else ""
+        if before not in _REQUEST_OPENERS:
+            continue  # "so he can post it", "to be faxed": someone else's work, a purpose
+        said = [
+            op
+            for op in office.operations
+            if op.input in items
+            and op.sends_out
+            and (verb in op.verbs or bool(language.verb_lemmas(verb) & set(op.verbs)))
+        ]
+        if said and not any(op.id in run for op in said):
+            end = _phrase_end(tokens, gaps, m.end)
+            return " ".join(tok.text for tok in tokens[m.start : end])
+    for m in readings.mentions:
+        # "past legal", "through the laminator": the facility as where the work is done
+        # (not "from/at the post desk": where an item is)
+        if m.kind != "facility" or not m.start or tokens[m.start - 1].word not in _PAST:
+            continue
+        offered = [office.operation(op) for op in office.facility(m.id).operations]
+        said = [op for op in offered if op.input in items]
+        if said and not any(op.id in run for op in said):
+            return " ".join(tok.text for tok in tokens[m.start - 1 : m.end])
+    return None
+
+
+def _mention_at(mentions: Sequence[Mention]) -> dict[int, Mention]:
+    return {k: m for m in mentions for k in range(m.start, m.end)}
+
+
+def _ends_before(tokens: Sequence[Token], gaps: Sequence[str], k: int) -> bool:
+    """Whether a sentence or clause mark stands before token ``k``."""
+    return tokens[k].opens or any(c in _PHRASE_MARKS for c in gaps[k])
+
+
+def _phrase_end(tokens: Sequence[Token], gaps: Sequence[str], k: int) -> int:
+    """Where the noun phrase running on from token ``k`` ends (exclusive)."""
+    stop = min(len(tokens), k + _LONGEST)
+    while k < stop and not _ends_before(tokens, gaps, k) and tokens[k].word not in _PHRASE_ENDS:
+        k += 1
+    return k

@@ -1,0 +1,64 @@
+"""The consent guard counts a person's own place as naming them the recipient ("leave one at
+her desk", "in Bram's tray"), by the rule the reader reads it with (``core.receiving_place``),
+and nothing more: a place taken from, a wish, an owner or a pronoun that could mean two people
+name nobody."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.core.actions import SendQR
+from assistantx.core.receiving_place import names_receiving_place, pronoun_receiving_place
+from assistantx.runtime import consent
+from helpers.consent_memory import answered, memory
+from helpers.kilnworks import kilnworks
+
+
+@pytest.mark.parametrize(
+    ("before", "after", "names"),
+    [
+        ("at", "desk", True),
+        ("in", "office", True),
+        ("on", "tray", True),
+        ("from", "desk", False),  # a source
+        ("at", "calculator", False),  # an owner's item, not a place
+        ("", "desk", False),
+    ],
+)
+def test_a_place_names_its_person_only_after_a_preposition_of_putting(
+    before: str, after: str, names: bool
+) -> None:
+    assert names_receiving_place(before, after) is names
+    assert pronoun_receiving_place(before, "her", after) is names
+    assert pronoun_receiving_place(before, "him", after) is False  # not a possessive
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Sunniva wants a hole punch, drop one at her desk",
+        "Sunniva needs a hole punch. Could you leave one on her desk?",
+        "put a hole punch in Sunniva's tray",
+    ],
+)
+def test_a_hand_over_at_her_place_is_let_through(text: str) -> None:
+    stm = memory("kit", text)
+    answered(stm, "sunniva")
+    action = SendQR(contact="sunniva", item="hole_punch:kit", purpose="collect")
+    assert consent.check(kilnworks(), stm, action) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me the hole punch from Sunniva's desk",
+        "Sunniva wants a hole punch",
+        "Sunniva and Wen want a hole punch, drop one at her desk",
+    ],
+)
+def test_a_hand_over_to_someone_not_named_by_a_place_is_refused(text: str) -> None:
+    stm = memory("kit", text)
+    answered(stm, "sunniva")
+    action = SendQR(contact="sunniva", item="hole_punch:kit", purpose="collect")
+    refusal = consent.check(kilnworks(), stm, action)
+    assert refusal is not None and refusal.rule == "not_a_party"
