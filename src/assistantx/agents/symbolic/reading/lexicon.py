@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.operation_nouns import operation_nouns, read_as_verbs
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.core import english, language, task_kinds
 from assistantx.core.name_reading import NameSlot, is_word_name, read_name
@@ -125,6 +126,8 @@ class Lexicon:
     chosen: dict[str, Reading] = field(default_factory=dict)
     # one-word names said like another person's name and spelled nearly so ("li": "lee")
     sound_alike: dict[str, frozenset[str]] = field(default_factory=dict)
+    # nouns that name one operation ("lamination", "legal review") → its verb
+    operation_nouns: dict[str, str] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -185,6 +188,7 @@ class Lexicon:
         words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
         lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
+        lex.operation_nouns = operation_nouns(office, lex._known)
         return lex
 
     def _declare(self, person: str, words: list[str]) -> None:
@@ -237,7 +241,13 @@ class Lexicon:
             # a word right before a determiner is a verb: "printe my file" is print, not printer
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
-        return out
+        # "needs a lamination": an operation named by a noun is read as its verb
+        return read_as_verbs(out, self.operation_nouns, self._modifier_word)
+
+    def _modifier_word(self, word: str) -> bool:
+        """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*
+        review"): an English word that is no function word and no word of the office."""
+        return word.isalpha() and word not in COMMON and not self._known(word)
 
     def _correct(self, word: str, *, verb_slot: bool = False) -> str:
         """Fix a small typo in an office word or a cue; leave English and numbers alone.
@@ -439,6 +449,8 @@ class Lexicon:
             return False
         if i + 1 >= len(tokens) or tokens[i + 1].opens or tokens[i].possessive:
             return False
+        if tokens[i + 1].after_pause:
+            return False  # "needs a proofread, deal with it": a comma ends the noun
         nxt = tokens[i + 1].word
         return (
             nxt not in COMMON

@@ -181,7 +181,12 @@ class MentionReader:
                 continue
             after = tokens[m.end].word if m.end < len(tokens) else ""
             plural = word not in language.lemmas(word)["NOUN"]  # "the couriers"
-            compound = bool(after) and after not in COMMON and language.is_noun(after)
+            compound = (
+                bool(after)
+                and after not in COMMON
+                and language.is_noun(after)
+                and not tokens[m.end].after_pause  # "a proofread, deal with it"
+            )
             if tokens[m.start - 1].word in _ARTICLES and (plural or compound):
                 out[n] = Mention("word", m.start, m.end, (word,), False, m.text)
         for n, m in enumerate(out):

@@ -364,6 +364,7 @@ class SpeechActs:
                 and (
                     before in _SUBJECT_WORDS
                     or before in _MODALS
+                    or before in _NEGATIONS  # "X doesn't need a ...": told, never a command
                     or before in _COMMAND_OBJECTS
                     or self._named(before)
                     or before.isdigit()

@@ -14,7 +14,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs
+from assistantx.agents.symbolic.reading.indirect_asks import indirect_ask
+from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
 
 # Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it".
 WITHDRAWAL_FILLERS = frozenset({"actually", "oh", "ok", "okay", "please"})
@@ -51,6 +52,13 @@ def without_fillers(words: list[str]) -> list[str]:
     return [w for w in words if w not in WITHDRAWAL_FILLERS]
 
 
+def _indirect(speech: SpeechActs, words: list[str]) -> QuestionKind | None:
+    """A polite indirect ask's kind by the verb it asks for; a doubt of what the assistant
+    can do ("could you bring it without dropping it?") is left to be answered and offered."""
+    kind = indirect_ask(content(words), speech.lex.cue_words)
+    return None if kind == "polite" and speech.doubts_ability(words) else kind
+
+
 def acts_reader(
     speech: SpeechActs, self_words: frozenset[str], message_words: list[str]
 ) -> Callable[[list[str], bool], Acts]:
@@ -64,7 +72,9 @@ def acts_reader(
         return Acts(
             request=speech.request(words),
             imperative=speech.imperative(words),
-            question=speech.question(words, asks),
+            # a polite indirect ask is read by the verb it asks for ("would somebody be able
+            # to bring me ...", "would anyone know where ..."), else by the question's shape
+            question=_indirect(speech, words) or speech.question(words, asks),
             doubts_ability=speech.doubts_ability(words),
             thanks=speech.thanks(words),
             wish=speech.wish(words),

@@ -16,6 +16,7 @@ from assistantx.core import language
 from assistantx.memory.names import TITLES
 
 _SENTENCE_END = re.compile(r"[.!?;\n]")
+_PAUSE = re.compile(r"[,:]")
 
 
 @dataclass(frozen=True)
@@ -25,6 +26,8 @@ class Token:
     possessive: bool
     typed: str = ""  # ``word`` before the typo correction
     opens: bool = False  # the first word of a sentence
+    # a comma (or colon) before it: "needs a proofread, deal with it" is no compound noun
+    after_pause: bool = False
 
     @property
     def corrected(self) -> bool:
@@ -50,7 +53,7 @@ def tokenize(text: str) -> tuple[Token, ...]:
             word = word[:-1]
         gap = flat[found[n - 1].end() : match.start()] if n else ""
         opens = n == 0 or bool(_SENTENCE_END.search(gap))
-        out.append(Token(raw, word, possessive, word, opens))
+        out.append(Token(raw, word, possessive, word, opens, after_pause=bool(_PAUSE.search(gap))))
     return tuple(out)
 
 

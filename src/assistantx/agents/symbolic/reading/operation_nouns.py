@@ -1,0 +1,101 @@
+"""An operation named by a noun: "my poster needs a lamination", "this contract could use a
+legal review", "my draft should get a proofread": after words that say the thing needs
+something ("needs", "wants", "could use", "should get"), a noun that names one of the office's
+operations asks for that operation on the thing, as its verb would ("laminate my poster").
+
+The nouns come from the office file only, never from a list of services here:
+
+* a nominalization of a declared verb that the morphology library knows as a noun
+  ("laminate" → "lamination", "inspect" → "inspection", "approve" → "approval"); the plain
+  verb used as a noun ("a proofread") and its gerund ("proofreading") are its own forms
+  already, read as the verb by the lexicon;
+* the head noun of the operation's display name where the office declares verbs of its own
+  ("legal review" for an operation asked for by "vet"), with the name's other words.
+
+A noun two operations share, or one that is already a word of the office (an item, a name, a
+task verb), is left alone. The rewrite is the lexicon's, like a typo's correction: the token
+is read as the operation's verb, its typed text kept.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+from assistantx.core.office import Office
+from assistantx.memory.names import normalize
+
+# The endings a verb takes to name its act: "laminat-ion", "inspect-ion", "approv-al".
+_NOMINAL_ENDINGS = ("ion", "ation", "ment", "al")
+# What says its subject needs something done: "needs", "wants", "requires", "is due".
+_NEEDING = english.words("need_verbs") | {"needed", "wanted", "requires", "require", "due"}
+# Two words that say the same: "could use a", "could do with a", "should get a".
+_NEEDING_PAIRS = frozenset(
+    {("could", "use"), ("do", "with"), ("should", "get"), ("should", "have"), ("to", "get")}
+)
+_ARTICLES = frozenset({"a", "an", "another", "some", "one", "its"})
+_MAX_MODIFIERS = 2  # "a quick final proofread"
+
+
+def _nominals(verb: str) -> set[str]:
+    """The nouns the dictionary knows that name the act of ``verb``."""
+    stems = {verb, verb[:-1]} if verb.endswith("e") else {verb}
+    found = {stem + ending for stem in stems for ending in _NOMINAL_ENDINGS}
+    return {n for n in found if n != verb and "NOUN" in language.lemmas(n)}
+
+
+def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, str]:
+    """Each noun that names exactly one of ``office``'s operations, with the operation's
+    first verb it is read as; ``taken``: whether a word already means something in the office
+    (an item, a person, a task verb)."""
+    named: dict[str, set[str]] = {}
+    for op in office.operations:
+        if not op.verbs:
+            continue  # an operation without verbs is asked for by its name's words already
+        verb = normalize(op.verbs[0]).split()[0]
+        nouns: set[str] = set()
+        for declared in op.verbs:
+            words = normalize(declared).split()
+            if len(words) == 1:
+                nouns |= _nominals(words[0])
+        name = normalize(op.name).split()
+        if name and language.is_noun(name[-1]):
+            nouns.add(name[-1])  # "legal review": its head noun
+        for noun in nouns:
+            named.setdefault(noun, set()).add(verb)
+    return {
+        noun: next(iter(verbs))
+        for noun, verbs in named.items()
+        if len(verbs) == 1 and not taken(noun)
+    }
+
+
+def _needed_before(words: Sequence[str], at: int, skippable: Callable[[str], bool]) -> bool:
+    """Whether the noun at ``at`` follows the words of a need: "needs (a) (quick) ___",
+    "could use a ___"; at most two modifiers between the article and the noun."""
+    k = at - 1
+    skipped = 0
+    while k >= 0 and skipped < _MAX_MODIFIERS and skippable(words[k]):
+        k -= 1
+        skipped += 1
+    if k >= 0 and words[k] in _ARTICLES:
+        k -= 1
+    if k < 0:
+        return False
+    return words[k] in _NEEDING or (k >= 1 and (words[k - 1], words[k]) in _NEEDING_PAIRS)
+
+
+def read_as_verbs(
+    tokens: Sequence[Token], nouns: dict[str, str], skippable: Callable[[str], bool]
+) -> list[Token]:
+    """``tokens`` with each noun of ``nouns`` said after a need read as its operation's verb
+    ("needs a lamination" → "needs a laminate"); ``skippable``: whether a word may stand as a
+    modifier between the article and the noun ("a *legal* review")."""
+    words = [t.word for t in tokens]
+    out = list(tokens)
+    for n, t in enumerate(tokens):
+        verb = nouns.get(t.word)
+        if verb is not None and not t.possessive and _needed_before(words, n, skippable):
+            out[n] = t.corrected_to(verb)
+    return out
