@@ -44,6 +44,7 @@ from assistantx.service.request_metrics import RequestMetrics
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.service.turns import RequestsFirst
 
 logger = logging.getLogger(__name__)
 
@@ -148,7 +149,8 @@ def create_app(
     app.add_middleware(ClientGone)  # a client leaving a stream is no traceback
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
     app.add_middleware(OfficeRouting)  # /v1/offices/{office}/... reaches the routes
-    app.add_middleware(SecurityHeaders)  # outermost: also on the body limit's 413
+    app.add_middleware(SecurityHeaders)  # also on the body limit's 413
+    app.add_middleware(RequestsFirst)  # outermost: instructions wait from a request's arrival
     return app
 
 
