@@ -3,6 +3,7 @@ through an AsyncExitStack) and tears it down in reverse order. Nothing runs at i
 
 from __future__ import annotations
 
+import asyncio
 import logging
 import time
 from collections.abc import AsyncIterator, Callable
@@ -41,6 +42,7 @@ from assistantx.service.offices.directory import Offices
 from assistantx.service.offices.routing import OfficeRouting
 from assistantx.service.pushes import OfficePushes
 from assistantx.service.request_metrics import RequestMetrics
+from assistantx.service.route_tables import build_route_tables
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
 from assistantx.service.telemetry import ServiceMetrics
@@ -88,6 +90,8 @@ def create_app(
 
             offices.on_started = mount_pushes
             await offices.start(stack)
+            # Off the loop, before ready: FastAPI would build them at the first requests.
+            await asyncio.to_thread(build_route_tables, app)
             running = offices.serving(None)
             # The process's CPU time so far (all threads): what a start cost, as the service
             # itself counts it (bench/serve_start.py reads it; from outside, a probe's answer
