@@ -298,9 +298,11 @@ async def _run(
         watch = asyncio.create_task(_watch_lag(client, lags, stop_probe))
         t_start = time.perf_counter()
         cpu_burst, seen_burst = meter.read(), seen[0]
+        client_burst = time.process_time()
         posts += await asyncio.gather(*(submit(i) for i in range(n)))
         t_submitted = time.perf_counter()
         cpu_load, seen_load = meter.read(), seen[0]
+        client_cpu_burst_s = time.process_time() - client_burst
         during: list[float] = []
         poster = asyncio.create_task(_post_under_load(submit, during, stop_probe))
         await asyncio.sleep(load_s)  # the fixed load phase: the probes and POSTs run meanwhile
@@ -351,6 +353,10 @@ async def _run(
         "loop_own_lag_max_s_loaded": max(
             (lag[OWN_LAG] for lag in lags if OWN_LAG in lag), default=None
         ),
+        # This process's own CPU in the burst: on a 2-core machine the client's 200 concurrent
+        # httpx requests compete with the service for the cores, and the burst's POST
+        # latencies include the time the client took to send them and read their answers.
+        "burst_client_cpu_s": round(client_cpu_burst_s, 2),
         "load_s": load_s,
         "drained": drained,
         "cancelled_after_drain": len(unfinished),

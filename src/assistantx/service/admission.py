@@ -37,11 +37,16 @@ class Admission:
         assistant: Assistant,
         journal: Journal,
         reasoner_built: Callable[[], Awaitable[None]] | None = None,
+        *,
+        turn: Callable[[], Awaitable[None]] | None = None,
     ) -> None:
         """``reasoner_built``: awaited before each start, so that starting an instruction
-        never waits on the loop for a reasoner still being built (service.reasoner_warmup)."""
+        never waits on the loop for a reasoner still being built (service.reasoner_warmup);
+        ``turn``: awaited last before each start, as a running instruction awaits its turn
+        between two events (``service.turns``): a start waits for the requests in flight."""
         self._assistant = assistant
         self._reasoner_built = reasoner_built
+        self._turn = turn
         self._journal = journal
         self._queue: asyncio.Queue[InstructionRecord | None] = asyncio.Queue()
         self._waiting: set[str] = set()
@@ -99,6 +104,8 @@ class Admission:
                 if self._stopping:
                     return
             await self._pause_in_submissions()
+            if self._turn is not None and not self._stopping:
+                await self._turn()
             if self._stopping:
                 return
             if record.id not in self._waiting:

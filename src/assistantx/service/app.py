@@ -3,6 +3,7 @@ through an AsyncExitStack) and tears it down in reverse order. Nothing runs at i
 
 from __future__ import annotations
 
+import asyncio
 import logging
 import time
 from collections.abc import AsyncIterator, Callable
@@ -41,9 +42,11 @@ from assistantx.service.offices.directory import Offices
 from assistantx.service.offices.routing import OfficeRouting
 from assistantx.service.pushes import OfficePushes
 from assistantx.service.request_metrics import RequestMetrics
+from assistantx.service.route_tables import build_route_tables
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.service.turns import RequestsFirst
 
 logger = logging.getLogger(__name__)
 
@@ -87,6 +90,8 @@ def create_app(
 
             offices.on_started = mount_pushes
             await offices.start(stack)
+            # Off the loop, before ready: FastAPI would build them at the first requests.
+            await asyncio.to_thread(build_route_tables, app)
             running = offices.serving(None)
             # The process's CPU time so far (all threads): what a start cost, as the service
             # itself counts it (bench/serve_start.py reads it; from outside, a probe's answer
@@ -148,7 +153,8 @@ def create_app(
     app.add_middleware(ClientGone)  # a client leaving a stream is no traceback
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes, paths=PATH_BODY_LIMITS)
     app.add_middleware(OfficeRouting)  # /v1/offices/{office}/... reaches the routes
-    app.add_middleware(SecurityHeaders)  # outermost: also on the body limit's 413
+    app.add_middleware(SecurityHeaders)  # also on the body limit's 413
+    app.add_middleware(RequestsFirst)  # outermost: instructions wait from a request's arrival
     return app
 
 

@@ -69,6 +69,7 @@ from assistantx.service.retention import Retention
 from assistantx.service.robots import RobotGauges, robot_states
 from assistantx.service.shared_phones import SharedPhones
 from assistantx.service.telemetry import ServiceMetrics
+from assistantx.service.turns import turns_of
 from assistantx.sim.fleet import SimFleet
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
@@ -255,6 +256,9 @@ class ServiceRuntime:
             self.journal, self.assistant, self.hub, self.metrics, self._world_state
         )
         self.durability.attach()
+        # After it journaled the event: an instruction waits its turn behind the requests.
+        turns = turns_of()
+        self.assistant.subscribe(turns.take_after)
         skipped = [self.assistant.skipped]
         if self.matrix is not None:
             skipped.append(self.matrix.messenger.skipped_events)
@@ -264,7 +268,10 @@ class ServiceRuntime:
         if deferred is not None:  # a direct message's instruction waits off the loop too
             self.assistant.reasoner_ready = deferred.built
         self.admission = Admission(
-            self.assistant, self.journal, deferred.built if deferred is not None else None
+            self.assistant,
+            self.journal,
+            deferred.built if deferred is not None else None,
+            turn=turns.take,
         )
         self.rate = InstructionRate(s.instructions_per_minute)
         self.assistant.intercept_direct_messages(self._over_the_rate)

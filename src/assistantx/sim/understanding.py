@@ -143,6 +143,8 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
             if op.input is not None and op.shape(office) != other.shape(office):
                 continue  # "print a copy of my file": the copier's product, not its run
             for verb in (f for w in other.request_phrases for f in word_forms(normalize(w))):
+                if f" {verb} " not in haystack:
+                    continue  # both patterns need the verb as a word: no regex to build
                 for name in names:
                     # both patterns need the verb and the name as they stand in the text: a
                     # substring test first, so the regexes are built only for a text that has
