@@ -133,6 +133,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
         if start > 0 and tokens[start - 1].word in _STARTS and tokens[start - 1].word != "me":
             start -= 1
         before = tokens[start - 1].word if start > 0 else ""
+        if before == "for" and nxt < len(tokens) and tokens[nxt].word == "to":
+            continue  # "would it be possible for someone to fetch me …": the doer, not whom
         given = before in _GIVING and _item_after(mentions, n)
         if before not in _TO and not given:
             continue
