@@ -146,9 +146,9 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
                 if f" {verb} " not in haystack:
                     continue  # both patterns need the verb as a word: no regex to build
                 for name in names:
-                    # both patterns need the verb and the name as they stand in the text: a
-                    # substring test first, so the regexes are built only for a text that has
-                    # them (one per verb and name, more than re's cache keeps)
+                    # the verb may be gone (replaced by an earlier name), and both patterns
+                    # need the name too: test first, as there are more patterns than re's
+                    # cache keeps
                     if f" {verb} " not in haystack or name not in haystack:
                         continue
                     noun = rf"{re.escape(name)}(?:s|es)?"
