@@ -28,6 +28,7 @@ from typing import Literal
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
 from assistantx.agents.symbolic.reading.operation_nouns import operation_nouns, read_as_verbs
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
+from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
 from assistantx.core.name_reading import NameSlot, is_word_name, read_name
 from assistantx.core.office import Office
@@ -128,6 +129,8 @@ class Lexicon:
     sound_alike: dict[str, frozenset[str]] = field(default_factory=dict)
     # nouns that name one operation ("lamination", "legal review") → its verb
     operation_nouns: dict[str, str] = field(default_factory=dict)
+    # the office's verb phrases of several words ("3d print"), each read as one token
+    verb_phrases: VerbPhrases = field(default_factory=lambda: VerbPhrases({}, frozenset(), 0))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -147,9 +150,18 @@ class Lexicon:
             kind = SHAPE_KIND.get(op.shape(office))
             if kind is not None:
                 cues.setdefault(kind, set()).update(forms)
+        lex.verb_phrases = VerbPhrases.from_office(office)
+        for form, op_id in lex.verb_phrases.forms.items():
+            # a joined phrase ("3d print") is one token: its whole form is the cue
+            ops.add(form)
+            kind = SHAPE_KIND.get(office.operation(op_id).shape(office))
+            if kind is not None:
+                cues.setdefault(kind, set()).add(form)
         lex.cues = {k: frozenset(v) for k, v in cues.items()}
         lex.cue_words = frozenset(w for v in cues.values() for w in v)
-        lex.operation_words = frozenset(w for form in ops for w in form.split()[:1])
+        lex.operation_words = frozenset(w for form in ops for w in form.split()[:1]) | frozenset(
+            lex.verb_phrases.forms
+        )
         for p in office.people:
             for name in (p.id, p.name, *p.aliases):
                 key = key_of(name)
@@ -242,7 +254,9 @@ class Lexicon:
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
         # "needs a lamination": an operation named by a noun is read as its verb
-        return read_as_verbs(out, self.operation_nouns, self._modifier_word)
+        out = read_as_verbs(out, self.operation_nouns, self._modifier_word)
+        # "3D print my file": a declared phrase is one verb, not the plotter's "print"
+        return self.verb_phrases.join(out, text)
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*
@@ -377,6 +391,9 @@ class Lexicon:
                     alt = self.word_phrase(tokens, idx[0]) if reading == "ask" else ""
                     return Mention("person", start, end, ids, poss, text, alt), n
             in_verb_slot = n == 1 and phrase in self.cue_words and self._verb_slot(tokens, start)
+            # a declared phrase joined into one token ("heat press" my file) is the verb: the
+            # joining left it as the thing where a determiner stood before it
+            in_verb_slot = in_verb_slot or (n == 1 and phrase in self.verb_phrases.forms)
             if phrase in self.facilities and not in_verb_slot:  # "fax my letter": the verb
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
             if phrase in self.places and not in_verb_slot:

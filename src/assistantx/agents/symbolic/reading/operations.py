@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.destination import Outside
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
+from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
@@ -25,6 +26,13 @@ _INTO_PRODUCT = frozenset({"as", "into"})
 _BETWEEN_VERB_AND_PRODUCT = english.words("determiners") | {"us", "new", "more", "fresh", "extra"}
 
 
+def _head_asks(phrase: str) -> bool:
+    """Whether a declared phrase's first word alone asks for it: a one-word verb, or the
+    verb heading a phrase ("seal in plastic"); not a modifier ("3d" of "3d print")."""
+    words = phrase.split()
+    return len(words) == 1 or "VERB" in language.lemmas(words[0])
+
+
 def _filler(word: str) -> bool:
     return word in _BETWEEN_VERB_AND_PRODUCT or word.isdigit()
 
@@ -37,13 +45,19 @@ class OperationChooser:
         # an operation is asked for by its verbs; its display name is a label ("print spine
         # labels" names the label run, its "print" is the printer's verb), read as a verb
         # only where the office declares none
+        # a declared phrase of several words is one token ("3d print"): its forms, and its
+        # first word only where that is a verb of its own ("seal" of "seal in plastic"), never
+        # a modifier ("3d" of "3d print" is in "the 3D printer", no request to 3D print)
+        phrases = VerbPhrases.from_office(office)
         self._op_words = {
             op.id: {
                 form
                 for phrase in op.request_phrases
                 for verb in normalize(phrase).split()[:1]
+                if _head_asks(normalize(phrase))
                 for form in inflections(verb)
             }
+            | phrases.of_operation(op.id)
             for op in office.operations
         }
 
@@ -216,6 +230,13 @@ class OperationChooser:
                 return [self._as(task, said[at])], None
             if peers == 1:
                 return [self._as(task, op) for op in said], None
+        said_shapes = {op.shape(self.office) for op in said}
+        named_elsewhere = [op for op in at_named if op.shape(self.office) in said_shapes]
+        if len(said) == 1 and named_elsewhere and said[0].id not in facility_ops:
+            # "print my file on the 3D printer": the verb is the plotter's, the machine named
+            # runs another operation of that shape; which is meant is the requester's to say
+            either = " or ".join(op.name for op in [*said, *named_elsewhere])
+            return [task], f"Which do you mean: {either}?"
         if len(said) == 1:
             shape = said[0].shape(self.office)
             # only where the clause read another shape, or several share this one: a lone

@@ -1,0 +1,159 @@
+"""An operation asked for by a phrase of several words the office declares ("3D print",
+"laser cut", "heat press"), read as one verb before anything else reads its words.
+
+An office may declare a verb phrase whose last word is another operation's verb ("3d print"
+beside the plotter's "print"), or whose first word is no verb at all ("vinyl cut"). Read word
+by word, the shorter verb inside wins and the wrong machine is asked. So the lexicon first
+joins each declared phrase said in the text into one token (longest phrase first, its
+words as typed: "3D-print" and "3D print" are the same tokens), and that token is the
+operation's own cue; the shorter verb it holds is no longer a word of the sentence.
+
+The phrases come from the office file only: an operation's compound verbs (words glued
+before a verb: "3d print", "heat press"; not a verb with its particle or object, "send out",
+"seal in plastic", whose head verb already asks and whose other words keep their readings),
+and its name where that is such a compound opening with one of its own verbs and naming no
+thing of the office ("laser cut" for an operation asked for by "laser"; never "buy a snack",
+whose "snack" is the product to be named). A phrase two operations share is left to be asked about. Every ordinary form of
+the phrase asks for it: its head inflected ("seal(s/ed/ing) in plastic") and its last word
+inflected ("3D print(s/ed/ing)"). A phrase that is also a facility's or an item's name is a
+thing after a determiner ("at the heat press"), and stays one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.asking_forms import asking_forms
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+from assistantx.core.office import Office, Operation
+from assistantx.memory.names import normalize
+
+_DETERMINERS = english.words("modifier_determiners")
+_FUNCTION_WORDS = english.words("common")
+
+
+def _key(phrase: str) -> str:
+    return normalize(phrase.replace("-", " "))
+
+
+def compound_verb(phrase: str) -> bool:
+    """Whether a phrase is a verb with words glued before it ("3d print", "heat press"):
+    several words, the last a verb, none a function word. A verb with its particle or
+    object ("send out", "seal in plastic") is not: its head verb is read as before, and its
+    other words keep their own readings (a destination after "send out")."""
+    words = phrase.split()
+    if len(words) < 2 or any(w in _FUNCTION_WORDS for w in words):
+        return False
+    return "VERB" in language.lemmas(words[-1])
+
+
+def _named_phrases(office: Office, op: Operation, things: set[str]) -> list[str]:
+    """The phrases of several words that ask for ``op``: its compound verbs, and its name
+    where the name is one that opens with one of its own verbs and names no thing."""
+    verbs = [_key(v) for v in op.verbs]
+    found = [v for v in verbs if compound_verb(v)]
+    name = _key(op.name)
+    words = name.split()
+    opens_with_own_verb = bool(words) and any(words[0] == v.split()[0] for v in verbs if v)
+    names_a_thing = any(
+        f" {thing} " in f" {name} " for thing in things if thing and thing not in verbs
+    )
+    if compound_verb(name) and opens_with_own_verb and not names_a_thing:
+        found.append(name)
+    return list(dict.fromkeys(found))
+
+
+def phrase_forms(phrase: str) -> set[str]:
+    """Every form of a phrase that can ask for its work: its head inflected ("seals in
+    plastic") and its last word inflected ("3d printed")."""
+    lead, _, last = phrase.rpartition(" ")
+    forms = set(asking_forms(phrase))
+    forms |= {f"{lead} {f}" for f in asking_forms(last)}
+    return forms
+
+
+@dataclass(frozen=True)
+class VerbPhrases:
+    """The office's declared phrases of several words, each form → its operation."""
+
+    forms: dict[str, str]  # "3d printed" → "print3d"
+    things: frozenset[str]  # facilities' and items' names: after a determiner, a thing
+    longest: int  # words in the longest form
+
+    @classmethod
+    def from_office(cls, office: Office) -> VerbPhrases:
+        things = {_key(n) for f in office.facilities for n in (f.name, *f.synonyms)} | {
+            _key(n) for t in office.item_types for n in (t.name, *t.synonyms)
+        }
+        claimed: dict[str, set[str]] = {}
+        for op in office.operations:
+            for phrase in _named_phrases(office, op, things):
+                for form in phrase_forms(phrase):
+                    claimed.setdefault(form, set()).add(op.id)
+        forms = {form: next(iter(ops)) for form, ops in claimed.items() if len(ops) == 1}
+        longest = max((len(f.split()) for f in forms), default=0)
+        return cls(forms, frozenset(things), longest)
+
+    def of_operation(self, op_id: str) -> set[str]:
+        return {form for form, op in self.forms.items() if op == op_id}
+
+    def join(self, tokens: Sequence[Token], text: str) -> list[Token]:
+        """``tokens`` with each declared phrase said in them joined into one token, longest
+        first; the joined token's text is the phrase as typed ("3D-print")."""
+        if not self.forms:
+            return list(tokens)
+        spans = _spans(text, tokens)
+        out: list[Token] = []
+        n = 0
+        while n < len(tokens):
+            joined = self._phrase_at(tokens, n)
+            if joined == 0:
+                out.append(tokens[n])
+                n += 1
+                continue
+            parts = tokens[n : n + joined]
+            start, end = spans[n][0], spans[n + joined - 1][1]
+            flat = text.replace("’", "'")
+            out.append(
+                Token(
+                    text=flat[start:end] if 0 <= start < end else " ".join(t.text for t in parts),
+                    word=" ".join(t.word for t in parts),
+                    possessive=parts[-1].possessive,
+                    typed=" ".join(t.typed or t.word for t in parts),
+                    opens=parts[0].opens,
+                    after_pause=parts[0].after_pause,
+                )
+            )
+            n += joined
+        return out
+
+    def _phrase_at(self, tokens: Sequence[Token], n: int) -> int:
+        """How many tokens from ``n`` make one declared phrase (0: none)."""
+        for size in range(min(self.longest, len(tokens) - n), 1, -1):
+            parts = tokens[n : n + size]
+            if any(t.opens for t in parts[1:]) or any(t.possessive for t in parts[:-1]):
+                continue  # a phrase does not run over a sentence's end or a possessive
+            said = " ".join(t.word for t in parts)
+            if said not in self.forms:
+                continue
+            if said in self.things and n and tokens[n - 1].word in _DETERMINERS:
+                continue  # "at the heat press": the machine, not its work
+            return size
+        return 0
+
+
+def _spans(text: str, tokens: Sequence[Token]) -> list[tuple[int, int]]:
+    """Where each token stands in ``text`` ((-1, -1): not found as typed)."""
+    flat = text.replace("’", "'")
+    pos = 0
+    out: list[tuple[int, int]] = []
+    for t in tokens:
+        at = flat.find(t.text, pos)
+        if at < 0:
+            out.append((-1, -1))
+            continue
+        out.append((at, at + len(t.text)))
+        pos = at + len(t.text)
+    return out
