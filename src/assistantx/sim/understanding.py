@@ -101,27 +101,68 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
     things = [n for n, _ in _names(office)]
     products = {n for n, _ in _names(office, only_products=True)}
     things += [normalize(n) for f in office.facilities for n in (f.name, *f.synonyms)]
-    haystack = original
-    for name in sorted((n for n in things if n and n not in products), key=len, reverse=True):
-        for variant in (name, name + "s", name + "es"):
-            haystack = haystack.replace(f" {variant} ", " | ")
     at: dict[str, int] = {}
     words = request_words(office)
     by_person = person_request_words()
+    phrases = {
+        form
+        for kind in words
+        if kind not in by_person and kind != FILE_KIND
+        for w in words[kind]
+        if " " in w
+        for form in word_forms(w)
+    }
+    haystack = _without_things(original, things, products, phrases)
     haystack = _means_left_out(office, words, haystack)
     rest = original  # the office's words are used up as they are read
-    for kind in (k for k in words if k not in by_person and k != FILE_KIND):
-        for form in (f for w in words[kind] for f in word_forms(w)):
-            if f" {form} " in haystack:
-                at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
-                haystack = haystack.replace(f" {form} ", " | ")
-                rest = rest.replace(f" {form} ", " | ")
+    # the longest phrase first, whichever operation's: "3d print" is the 3D printer's, not
+    # the plotter's "print" inside it
+    office_forms = sorted(
+        (
+            (form, kind)
+            for kind in words
+            if kind not in by_person and kind != FILE_KIND
+            for form in (f for w in words[kind] for f in word_forms(w))
+        ),
+        key=lambda pair: -len(pair[0]),
+    )
+    for form, kind in office_forms:
+        if f" {form} " in haystack:
+            at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
+            haystack = haystack.replace(f" {form} ", " | ")
+            rest = rest.replace(f" {form} ", " | ")
     # the English words of signing, sealing and sending, in what the office's words left
     for kind in (*by_person, FILE_KIND):
         for form in (f for w in words[kind] for f in word_forms(w)):
             if f" {form} " in rest:
                 at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
     return sorted(at, key=lambda k: at[k])
+
+
+# Before a thing's name, words that make it the thing: "at *the* heat press".
+_DETERMINERS = r"(?:the|a|an|my|your|our|their|his|her|this|that)"
+
+
+def _without_things(text: str, things: list[str], products: set[str], verbs: set[str]) -> str:
+    """``text`` with the things it names taken out, longest first; a product's name stays
+    whole, even where a shorter thing's name is inside it ("sample" in "sample board"); a
+    thing named like an operation's phrase ("heat press") is the thing only after a
+    determiner ("at the heat press"), else the work asked for ("could you heat press it")."""
+    kept: list[str] = []
+    for name in sorted((n for n in {*things, *products} if n), key=len, reverse=True):
+        for variant in (name, name + "s", name + "es"):
+            if f" {variant} " not in text:
+                continue
+            if name in products:  # held aside until the things are out
+                text = text.replace(f" {variant} ", f" \x00{len(kept)} ")
+                kept.append(variant)
+            elif variant in verbs:
+                text = re.sub(rf" ({_DETERMINERS}) {re.escape(variant)} ", r" \1 | ", text)
+            else:
+                text = text.replace(f" {variant} ", " | ")
+    for n, variant in reversed(list(enumerate(kept))):
+        text = text.replace(f" \x00{n} ", f" {variant} ")
+    return text
 
 
 # The words between a making verb and what it makes: "print *me some new* labels".
