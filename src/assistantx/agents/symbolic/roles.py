@@ -24,6 +24,7 @@ from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing
 from assistantx.memory.graph import LongTermMemory
+from assistantx.memory.names import normalize
 
 DistanceFn = Callable[[str, str], float]
 # A role is one of the person-to-person parts of a transfer, or the task kind it fills.
@@ -110,6 +111,22 @@ class Roles:
                     return op.name
         return role.kind
 
+    def _making_named(self, role: Role) -> str | None:
+        """The name of the operation that makes the role's product from nothing, where that
+        name says the product ("make up a sample board", "make coffee"): how its keeper is
+        asked to make one. None where the name does not say it ("frank" for a stamped
+        envelope): the product is named instead."""
+        if role.item_type is None:
+            return None
+        op = self.office.making(role.item_type)
+        if op is None or op.input is not None:
+            return None
+        product = self.office.item_type(role.item_type)
+        name = f" {normalize(op.name)} "
+        if any(f" {normalize(n)} " in name for n in (product.name, *product.synonyms) if n):
+            return op.name
+        return None
+
     def _used_up(self, role: Role) -> bool:
         return role.item_type is not None and self.office.item_type(role.item_type).consumable
 
@@ -145,6 +162,9 @@ class Roles:
                 ask = task_kinds.kind(kind).ask or ""
                 whose = f"{self._whose(role)} {thing}"
                 return ask.format(whose=whose, your="a" if anyone else "your")
+            case "produce" if (making := self._making_named(role)) is not None:
+                # "make up a sample board": the keeper is asked to make it, not to find one
+                return f"{making} for {beneficiary} at the {place}"
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
             case "heat" if role.destination:  # the one who faxes it must know where to
