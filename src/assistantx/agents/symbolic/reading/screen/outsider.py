@@ -81,6 +81,15 @@ def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     )
 
 
+def outsider_recipient(terms: Terms, msg: Message, piece: Piece) -> str | None:
+    """The phrase of a recipient who is nobody of the office ("the client"), as written;
+    None where there is none or the office sends things out to such places."""
+    if _sends_out(terms, msg):
+        return None
+    found = _recipient_outsider(terms, msg, piece)
+    return found.phrase if found is not None else None
+
+
 def _sends_out(terms: Terms, msg: Message) -> bool:
     """Whether the message names a service that sends things outside the office (its verb,
     its name, or a facility that offers it): whoever it names outside is where it goes."""

@@ -55,6 +55,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", whereabouts),
     ("which", several_kept),
     ("unsupported", variant),
-    ("instead", outsider),
+    # a service nothing here offers is declined before an outsider recipient is asked
+    # about: "scan my drawings and email them to the client" where there is no scanner
+    # cannot be done for anyone, so a question would only offer what was never asked
     ("unsupported", unsupported),
+    ("instead", outsider),
 )

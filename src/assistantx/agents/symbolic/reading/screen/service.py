@@ -9,6 +9,7 @@ import re
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
+from assistantx.agents.symbolic.reading.screen.outsider import outsider_recipient
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -23,6 +24,12 @@ def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
         # "I need to pay the bill. Could you bring me a calculator?": what the speaker
         # will do themselves is context for the request beside it, not asked of me
         return Finding("statement", piece, "the speaker's own doing, context only")
+    outside = outsider_recipient(terms, msg, piece) if found is not None else None
+    if found is not None and outside is not None:
+        # "... and email them to the client": the other half cannot be done either, and is
+        # said so, not asked about
+        nor = f"Nor can I send anything to {outside}: I hand things only to people of this office."
+        found = unsupported_service(terms, piece, nor=nor)
     return found
 
 
@@ -39,7 +46,9 @@ def asked_elsewhere(terms: Terms, msg: Message, piece: Piece) -> bool:
     return any(p.acts.request for p in msg.pieces if p is not piece)
 
 
-def unsupported_service(terms: Terms, piece: Piece) -> Finding | None:
+def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding | None:
+    """The first service the piece asks for that nothing here offers, declined; ``nor``:
+    what else in it cannot be done, said before what can."""
     for sub in sub_pieces(piece):
         words = sub.words
         at = sub.verb_at(terms.en.lead_in)
@@ -47,13 +56,13 @@ def unsupported_service(terms: Terms, piece: Piece) -> Finding | None:
         if modified is not None:
             typed = r"[\s-]+".join(re.escape(w) for w in modified.split())
             said = re.search(rf"\b{typed}\b", piece.text, re.IGNORECASE)
-            return decline_service(terms, piece, said.group(0) if said else modified)
+            return decline_service(terms, piece, said.group(0) if said else modified, nor=nor)
         if at < len(words) and words[at] in terms.en.service_verbs:
             verb = words[at]
             nxt = words[at + 1] if at + 1 < len(words) else ""
             ours = verb in terms.lex.cue_words or verb in terms.office_words
             if not ours or (verb not in terms.lex.cue_words and nxt in DETERMINERS):
-                return decline_service(terms, piece, verb)
+                return decline_service(terms, piece, verb, nor=nor)
         cue = next((n for n, w in enumerate(words) if terms.request_verb(words, n)), None)
         if cue is None:
             continue
@@ -64,7 +73,7 @@ def unsupported_service(terms: Terms, piece: Piece) -> Finding | None:
             if w in terms.en.service_products and w not in terms.office_words:
                 if possessive_of_name(piece.text, w, terms.office_words):
                     continue  # "Chip's scanner": a colleague's, not "chips"
-                return decline_service(terms, piece, w, product=True)
+                return decline_service(terms, piece, w, product=True, nor=nor)
     return None
 
 
@@ -92,16 +101,21 @@ def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
     return None
 
 
-def decline_service(terms: Terms, piece: Piece, word: str, *, product: bool = False) -> Finding:
+def decline_service(
+    terms: Terms, piece: Piece, word: str, *, product: bool = False, nor: str = ""
+) -> Finding:
     what = f"get you any {word}" if product else word  # "any": mass and count nouns alike
+    said = [
+        f"Sorry, I can't {what}: nothing in this office offers that, and I won't swap it for "
+        "something else.",
+        nor,
+        terms.capabilities(),
+    ]
     return Finding(
         "unsupported",
         piece,
         f"not offered here: {word}",
-        message=(
-            f"Sorry, I can't {what}: nothing in this office offers that, and I won't "
-            f"swap it for something else. {terms.capabilities()}"
-        ),
+        message=" ".join(s for s in said if s),
     )
 
 
