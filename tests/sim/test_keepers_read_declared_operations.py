@@ -65,3 +65,22 @@ def test_the_stores_keeper_agrees_to_make_up_a_kit_bag() -> None:
     # her own first aid kit, asked for as a thing, is still a thing she lends
     lend = direct_reply(world, "wanda", "Hi Wanda, could you lend Ines Varga your first aid kit?")
     assert lend is not None and "first aid kit" in lend.text
+
+
+def test_a_request_naming_only_the_machine_asks_for_its_operation() -> None:
+    world = World.from_office(fablab())
+    asked = "Hi Priit, could you run Ines Varga's design file through the 3D printer?"
+    keeper = direct_reply(world, "priit", asked)
+    assert keeper is not None and keeper.text.startswith("Yes, I can do that (print3d)")
+    other = direct_reply(world, "hana", asked.replace("Priit", "Hana"))
+    assert other is not None and other.text.startswith("Sorry, I can't help with that (print3d)")
+    # a question about the machine asks nothing of them
+    free = direct_reply(world, "priit", "Hi Priit, is the 3D printer free?")
+    assert free is not None and "can do that" not in free.text
+
+
+def test_in_the_group_only_the_machines_keeper_volunteers_for_it() -> None:
+    world = World.from_office(fablab())
+    everyone = [p.id for p in fablab().people]
+    asked = "Hi all, could anyone run Ines Varga's design file through the laser cutter?"
+    assert [r.person for r in group_replies(world, everyone, asked)] == ["priit"]

@@ -17,7 +17,9 @@ from assistantx.core.office import Facility, Operation, OperationShape, Ownershi
 from assistantx.core.task_schema import FILE_KIND, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
 from assistantx.sim.understanding import (
+    asks_to_do,
     asks_to_receive,
+    facility_requests,
     is_question,
     mentioned_item_types,
     mentioned_requests,
@@ -92,6 +94,8 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     if wants_file:
         return Reply(person, "Sure, here is my file.", (world.office.file_of(person),))
     service = [r for r in requests if r != FILE_KIND]
+    if not service and not types and asks_to_do(text):
+        service = facility_requests(world.office, text)  # "... through the 3D printer?"
     if service:
         request = service[0]
         if can_do(world, person, request):
@@ -145,6 +149,8 @@ def group_replies(world: World, members: list[str], text: str) -> list[Reply]:
         if world.office.item_type(t).kind == "belonging"
     ]
     requests = [r for r in mentioned_requests(world.office, text) if r != FILE_KIND]
+    if not requests and not types and asks_to_do(text):
+        requests = facility_requests(world.office, text)  # "... through the 3D printer?"
     replies: list[Reply] = []
     for person in members:
         if not world.available(person):

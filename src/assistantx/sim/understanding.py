@@ -4,8 +4,10 @@ This is the simulator's stand-in for a human reader. It reads the office's own t
 colleague who works there would: item types and facilities by their names (longest first, so
 "label printer" is a thing, not a request to print), then the office's operations by their
 verbs and names as whole words with their ordinary endings ("print", "prints", "printed",
-"printing" — never "printer"), then the English words of the person-to-person kinds (sign,
-seal) and of sending a file.
+"printing" — never "printer"), longest phrase first whichever operation's ("3D print" before
+"print"), then the English words of the person-to-person kinds (sign, seal) and of sending a
+file. A request that names no operation and no thing but a machine that runs one ("could you
+run my file through the 3D printer?") asks for that machine's operation.
 """
 
 from __future__ import annotations
@@ -139,6 +141,26 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
     return sorted(at, key=lambda k: at[k])
 
 
+def facility_requests(office: Office, text: str) -> list[str]:
+    """The operation a request names only by its machine ("could you run my file through
+    the 3D printer?"): of each facility named (longest names first), its one operation the
+    assistant can run; none for a facility that runs several, or none."""
+    haystack = _words(text)
+    found: list[str] = []
+    names = sorted(
+        ((normalize(n), f) for f in office.facilities for n in (f.name, *f.synonyms)),
+        key=lambda pair: -len(pair[0]),
+    )
+    for name, facility in names:
+        if not name or f" {name} " not in haystack:
+            continue
+        haystack = haystack.replace(f" {name} ", " | ")
+        runs = [op for op in facility.operations if office.runnable(op)]
+        if len(runs) == 1 and runs[0] not in found:
+            found.append(runs[0])
+    return found
+
+
 # Before a thing's name, words that make it the thing: "at *the* heat press".
 _DETERMINERS = r"(?:the|a|an|my|your|our|their|his|her|this|that)"
 
@@ -218,6 +240,14 @@ def possessor(office: Office, text: str, *, reader: str) -> str | None:
 def is_question(text: str) -> bool:
     t = normalize(text)
     return "?" in text or t.startswith(("can ", "could ", "would ", "do ", "does ", "are ", "is "))
+
+
+def asks_to_do(text: str) -> bool:
+    """Whether a message asks its reader to do something ("could you ...", "please ..."),
+    not only about something ("is the 3D printer free?")."""
+    return (
+        re.search(r"\b(?:could|can|would|will) (?:you|anyone)\b|\bplease\b", text, re.I) is not None
+    )
 
 
 def asks_to_receive(text: str) -> bool:
