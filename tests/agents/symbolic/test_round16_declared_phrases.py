@@ -11,12 +11,13 @@ from __future__ import annotations
 import functools
 
 import pytest
-from symbolic_run import run_instruction
+from symbolic_run import answer_first_question, run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.task_schema import TaskFrame
 from helpers.fablab import costume_works, fablab
 
@@ -222,3 +223,19 @@ async def test_the_heat_press_runs_beside_the_wardrobe_that_presses() -> None:
     )
     assert run.stm.trace.outcome == "done"
     assert run.sim.world.holder["transfer:ada"] == "bram"
+
+
+async def test_a_yes_in_the_group_from_another_machines_keeper_binds_nobody() -> None:
+    """The 3D printer's keeper is away; the plotter's keeper says yes in the group to "could
+    anyone 3D print ... at the 3D printer?": no file goes to her, no code, nothing refused."""
+    asked: list[str] = []
+    hook = answer_first_question(
+        "all", "hana", ChatRef(kind="group", id="all"), "Yes, sure!", asked
+    )
+    run = await run_instruction(
+        fablab(), "ines", "3d print my file please", unavailable=("priit",), on_event=hook
+    )
+    assert asked and "3D print" in asked[0]
+    assert "forward_file" not in run.actions and "send_qr" not in run.actions
+    assert not [r for r in run.stm.trace.actions() if r.refused]
+    assert run.stm.trace.outcome != "done"

@@ -260,9 +260,11 @@ class Roles:
                 if ev.stance_of(group_q, t.person) == "yes"
                 and t.person not in helpers
                 and t.person != role.requester  # never the helper of their own request
-                # a keeper's job is done by a keeper: "I have one, you can borrow it" to
-                # "could anyone take it out of the cupboard?" is no yes (the oracle's rule)
-                and (role.kind != "keep" or t.person in ltm.guards(role.facility or ""))
+                # a facility's job is done by its guards: "I have one, you can borrow it" to
+                # "could anyone take it out of the cupboard?" is no yes, nor the plotter's
+                # keeper's yes to "could anyone 3D print it at the 3D printer?" (the
+                # oracle's rule; the consent guard sends work codes only to the guards)
+                and (role.facility is None or t.person in ltm.guards(role.facility))
             ]
         for person in [*people, *helpers]:
             why = self._exclusion(role, person, ltm, ev, now)

@@ -13,8 +13,8 @@ before a verb: "3d print", "heat press"; not a verb with its particle or object,
 "seal in plastic", whose head verb already asks and whose other words keep their readings),
 and its name where that is such a compound opening with one of its own verbs and naming no
 thing of the office ("laser cut" for an operation asked for by "laser"; never "buy a snack",
-whose "snack" is the product to be named). A phrase two operations share is left to be asked about. Every ordinary form of
-the phrase asks for it: its head inflected ("seal(s/ed/ing) in plastic") and its last word
+whose "snack" is the product to be named). A phrase two operations share is left to be asked
+about. Every ordinary form of the phrase asks for it: its head inflected and its last word
 inflected ("3D print(s/ed/ing)"). A phrase that is also a facility's or an item's name is a
 thing after a determiner ("at the heat press"), and stays one.
 """
