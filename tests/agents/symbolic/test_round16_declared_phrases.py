@@ -239,3 +239,36 @@ async def test_a_yes_in_the_group_from_another_machines_keeper_binds_nobody() ->
     assert "forward_file" not in run.actions and "send_qr" not in run.actions
     assert not [r for r in run.stm.trace.actions() if r.refused]
     assert run.stm.trace.outcome != "done"
+
+
+def test_two_services_verbs_glued_together_are_asked_about() -> None:
+    """ "laser print" is no phrase the office declares: the laser cutter's "laser" and the
+    plotter's "print" side by side are one compound, not two requests; "laser and plot" is
+    two."""
+    frame = _frame("fablab", "laser print my file", "ines")
+    assert not frame.tasks and frame.question == "Which do you mean: laser cut or plot?"
+    both = _frame("fablab", "laser and plot my file", "ines")
+    assert [t.operation for t in both.tasks] == ["cut", "plot"]
+
+
+@pytest.mark.parametrize(
+    ("text", "tasks"),
+    [
+        ("could someone print my file?", [("design_file", "plot", "ines")]),
+        ("can anybody 3d print my file", [("design_file", "print3d", "ines")]),
+        ("could someone make up a kit bag for Tomas?", [("kit_bag", None, "tomas")]),
+    ],
+)
+def test_who_is_asked_is_no_modifier_of_the_verb(
+    text: str, tasks: list[tuple[str, str | None, str]]
+) -> None:
+    """ "could someone print it" was declined as "I can't someone print"."""
+    frame = _frame("fablab", text, "ines")
+    assert frame.question is None and frame.decline is None, frame
+    assert _tasks(frame) == tasks
+
+
+def test_a_missing_service_asked_of_someone_is_declined_by_its_verb() -> None:
+    frame = _frame("fablab", "could someone scan my drawings", "ines")
+    assert not frame.tasks and frame.decline is not None
+    assert frame.decline.startswith("Sorry, I can't scan:")

@@ -228,6 +228,11 @@ class OperationChooser:
             said.sort(key=lambda op: min(order.get(w, len(order)) for w in self._op_words[op.id]))
             if peers == len(said):  # one clause each: "scan my plan and then bind it"
                 return [self._as(task, said[at])], None
+            if peers == 1 and self._glued(said, lexed):
+                # "laser print my file": two services' verbs side by side are one compound
+                # the office does not declare, not two requests; which is meant is asked
+                either = " or ".join(op.name for op in said)
+                return [task], f"Which do you mean: {either}?"
             if peers == 1:
                 return [self._as(task, op) for op in said], None
         said_shapes = {op.shape(self.office) for op in said}
@@ -249,6 +254,16 @@ class OperationChooser:
             listed = ", ".join(names[:-1]) + " or " + names[-1]
             return [task], f"Which do you mean: {listed}?"
         return [task], None
+
+    def _glued(self, said: list[Operation], lexed: Lexed) -> bool:
+        """Whether the verbs of two of ``said`` stand side by side ("laser print")."""
+        at = {
+            n: op.id
+            for n, t in enumerate(lexed.tokens)
+            for op in said
+            if t.word in self._op_words[op.id]
+        }
+        return any(n + 1 in at and at[n + 1] != op for n, op in at.items())
 
     def _sent_out_said(self, item: str, words: set[str]) -> list[Operation]:
         """The send-out services on ``item`` whose verb is said ("courier it")."""

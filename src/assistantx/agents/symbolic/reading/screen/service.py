@@ -13,7 +13,10 @@ from assistantx.agents.symbolic.reading.screen.outsider import outsider_recipien
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
-from assistantx.core import language
+from assistantx.core import english, language
+
+# Who a request asks ("can someone ...", "could anybody ..."): never a verb's modifier.
+_ASKEES = english.words("request_askees")
 
 
 def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -52,6 +55,8 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
     for sub in sub_pieces(piece):
         words = sub.words
         at = sub.verb_at(terms.en.lead_in)
+        while at + 1 < len(words) and words[at] in _ASKEES:
+            at += 1  # "could someone scan ...": the verb after who is asked
         modified = modified_service(terms, words, at)
         if modified is not None:
             typed = r"[\s-]+".join(re.escape(w) for w in modified.split())
@@ -92,8 +97,8 @@ def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
     if at + 1 >= len(words) or words[at + 1] not in terms.service_verbs:
         return None
     word = words[at]
-    if word in terms.office_words or word in terms.en.serial_verbs:
-        return None
+    if word in terms.office_words or word in terms.en.serial_verbs or word in _ASKEES:
+        return None  # "could someone print it": who is asked, no modifier of the verb
     kinds = set(language.lemmas(word))
     glued = any(c.isdigit() for c in word) and any(c.isalpha() for c in word)
     if glued or ("NOUN" in kinds and not kinds & {"ADV", "ADJ"}):
