@@ -54,6 +54,8 @@ def _tasks(frame: TaskFrame) -> list[tuple[str | None, str | None, str]]:
             [("design_file", "print3d", "ines")],
         ),
         ("fablab", "ines", "can you 3D-print my file", [("design_file", "print3d", "ines")]),
+        ("fablab", "ines", "3-D print my file", [("design_file", "print3d", "ines")]),
+        ("fablab", "tomas", "could you 3 D print my file", [("design_file", "print3d", "tomas")]),
         ("fablab", "hana", "Could you 3D print my stl?", [("design_file", "print3d", "hana")]),
         ("fablab", "ines", "can I get my file 3D printed", [("design_file", "print3d", "ines")]),
         ("fablab", "gus", "I need my file 3d printed", [("design_file", "print3d", "gus")]),

@@ -5,7 +5,7 @@ An office may declare a verb phrase whose last word is another operation's verb 
 beside the plotter's "print"), or whose first word is no verb at all ("vinyl cut"). Read word
 by word, the shorter verb inside wins and the wrong machine is asked. So the lexicon first
 joins each declared phrase said in the text into one token (longest phrase first, its
-words as typed: "3D-print" and "3D print" are the same tokens), and that token is the
+words as typed: "3D-print", "3-D print" and "3D print" are one phrase), and that token is the
 operation's own cue; the shorter verb it holds is no longer a word of the sentence.
 
 The phrases come from the office file only: an operation's compound verbs (words glued
@@ -22,7 +22,7 @@ thing after a determiner ("at the heat press"), and stays one.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -81,6 +81,8 @@ class VerbPhrases:
     forms: dict[str, str]  # "3d printed" → "print3d"
     things: frozenset[str]  # facilities' and items' names: after a determiner, a thing
     longest: int  # words in the longest form
+    # each form without its spaces → the form: "3-D print" is typed as "3", "d", "print"
+    glued: dict[str, str] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> VerbPhrases:
@@ -93,8 +95,9 @@ class VerbPhrases:
                 for form in phrase_forms(phrase):
                     claimed.setdefault(form, set()).add(op.id)
         forms = {form: next(iter(ops)) for form, ops in claimed.items() if len(ops) == 1}
-        longest = max((len(f.split()) for f in forms), default=0)
-        return cls(forms, frozenset(things), longest)
+        glued = {f.replace(" ", ""): f for f in forms}
+        longest = max((len(f.split()) for f in forms), default=0) + 1  # "3 d print"
+        return cls(forms, frozenset(things), longest, glued)
 
     def of_operation(self, op_id: str) -> set[str]:
         return {form for form, op in self.forms.items() if op == op_id}
@@ -108,7 +111,7 @@ class VerbPhrases:
         out: list[Token] = []
         n = 0
         while n < len(tokens):
-            joined = self._phrase_at(tokens, n)
+            joined, form = self._phrase_at(tokens, n)
             if joined == 0:
                 out.append(tokens[n])
                 n += 1
@@ -119,7 +122,7 @@ class VerbPhrases:
             out.append(
                 Token(
                     text=flat[start:end] if 0 <= start < end else " ".join(t.text for t in parts),
-                    word=" ".join(t.word for t in parts),
+                    word=form,
                     possessive=parts[-1].possessive,
                     typed=" ".join(t.typed or t.word for t in parts),
                     opens=parts[0].opens,
@@ -129,19 +132,21 @@ class VerbPhrases:
             n += joined
         return out
 
-    def _phrase_at(self, tokens: Sequence[Token], n: int) -> int:
-        """How many tokens from ``n`` make one declared phrase (0: none)."""
+    def _phrase_at(self, tokens: Sequence[Token], n: int) -> tuple[int, str]:
+        """How many tokens from ``n`` make one declared phrase, and its form (0: none)."""
         for size in range(min(self.longest, len(tokens) - n), 1, -1):
             parts = tokens[n : n + size]
             if any(t.opens for t in parts[1:]) or any(t.possessive for t in parts[:-1]):
                 continue  # a phrase does not run over a sentence's end or a possessive
             said = " ".join(t.word for t in parts)
             if said not in self.forms:
+                said = self.glued.get(said.replace(" ", ""), "")
+            if not said or len(said.split()) > size:
                 continue
             if said in self.things and n and tokens[n - 1].word in _DETERMINERS:
                 continue  # "at the heat press": the machine, not its work
-            return size
-        return 0
+            return size, said
+        return 0, ""
 
 
 def _spans(text: str, tokens: Sequence[Token]) -> list[tuple[int, int]]:

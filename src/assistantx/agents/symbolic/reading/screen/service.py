@@ -93,6 +93,8 @@ def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
     if at + 2 < len(words) and words[at + 2] in terms.service_verbs:
         # "3-D print": a number and a letter, one modifier written in two parts
         if words[at].isdigit() and len(words[at + 1]) == 1 and words[at + 1].isalpha():
+            if words[at] + words[at + 1] in terms.office_words:
+                return None  # "3-D print" where the office has its "3D print"
             return f"{words[at]} {words[at + 1]} {words[at + 2]}"
     if at + 1 >= len(words) or words[at + 1] not in terms.service_verbs:
         return None
