@@ -6,133 +6,93 @@ lunches; a kitchen makes coffee and water; condition reports are signed by a col
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers.office_builder import (
+    facility,
+    item,
+    kept,
+    office_file,
+    operation,
+    parsed,
+    person,
+    room,
+)
 
-_DESKS = tuple((5.0 + 4 * n, 6.0) for n in range(8))
-_PEOPLE: tuple[tuple[str, str, list[str], list[dict[str, Any]]], ...] = (
-    ("penny", "Penny Castellanos", [], [{"type": "puppet"}, {"type": "report"}]),
-    ("ivy", "Ivy Marchetti", ["Ives"], [{"type": "kick_stool"}]),
-    ("robin", "Robin Okonkwo", [], [{"type": "report"}]),
-    ("page", "Oksana Page", [], [{"type": "kick_stool"}, {"type": "report"}]),
-    ("thao", "Thảo Nguyễn", [], [{"type": "report"}]),
-    ("lukasz", "Łukasz Wróbel", ["Luke"], [{"type": "bone_folder"}]),
-    ("zoe", "Zoë Brandt", [], [{"type": "bone_folder"}, {"type": "report"}]),
-    (
-        "jurgen",
-        "Jürgen Falk",
-        [],
-        [{"type": "lunch", "at": "kitchen", "facility": "fridge"}, {"type": "report"}],
-    ),
+_PEOPLE = (
+    person("penny", "Penny Castellanos", "puppet", "report"),
+    person("ivy", "Ivy Marchetti", "kick_stool", aliases=["Ives"]),
+    person("robin", "Robin Okonkwo", "report"),
+    person("page", "Oksana Page", "kick_stool", "report"),
+    person("thao", "Thảo Nguyễn", "report"),
+    person("lukasz", "Łukasz Wróbel", "bone_folder", aliases=["Luke"]),
+    person("zoe", "Zoë Brandt", "bone_folder", "report"),
+    person("jurgen", "Jürgen Falk", kept("lunch", at="kitchen", facility="fridge"), "report"),
 )
 
 
 def raw_bindery() -> dict[str, Any]:
-    return {
-        "name": "bindery",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": y}
-                for n, (x, y) in enumerate(_DESKS, 1)
+    return office_file(
+        "bindery",
+        _PEOPLE,
+        everyone_owns=["flyer_file", "book"],
+        rooms=[room("workroom", "Workroom", 4.0, 20.5), room("kitchen", "Kitchen", 11.0, 20.5)],
+        item_types=[
+            item("puppet", "puppet", synonyms=["hand puppet"]),
+            item("kick_stool", "kick stool", synonyms=["step stool"]),
+            item("bone_folder", "bone folder"),
+            item("lunch", "lunch box", synonyms=["lunchbox"]),
+            item("report", "condition report", "personal", signable=True),
+            item("book", "worn book", synonyms=["damaged book"]),
+            item("flyer_file", "flyer file", "electronic"),
+            item("brochure", "brochure", "product", synonyms=["flyer"]),
+            item("rebound", "rebound book", "product"),
+            item("coffee", "coffee", "product"),
+            item("water", "water", "product"),
+        ],
+        operations=[
+            operation("print", "print", input="flyer_file", product="brochure"),
+            operation("rebind", "rebind", input="book", product="rebound"),
+            operation("brew", "brew", name="make coffee", product="coffee"),
+            operation("pour", "pour", name="pour water", product="water"),
+        ],
+        facilities=[
+            facility(
+                "printer",
+                "printer",
+                at="workroom",
+                guards=["page"],
+                operations=["print"],
+                products=["brochure"],
             ),
-            {"id": "workroom", "kind": "facility", "name": "Workroom", "x": 4.0, "y": 20.5},
-            {"id": "kitchen", "kind": "facility", "name": "Kitchen", "x": 11.0, "y": 20.5},
+            facility(
+                "press",
+                "bindery press",
+                at="workroom",
+                guards=["page"],
+                operations=["rebind"],
+                products=["rebound"],
+            ),
+            facility("fridge", "staff fridge", at="kitchen", guards=["robin"], synonyms=["fridge"]),
+            facility(
+                "coffee_machine",
+                "coffee machine",
+                at="kitchen",
+                guards=["robin"],
+                operations=["brew"],
+                products=["coffee"],
+            ),
+            facility(
+                "water_cooler",
+                "water cooler",
+                at="kitchen",
+                guards=["robin"],
+                operations=["pour"],
+                products=["water"],
+            ),
         ],
-        "item_types": [
-            {"id": "puppet", "name": "puppet", "synonyms": ["hand puppet"]},
-            {"id": "kick_stool", "name": "kick stool", "synonyms": ["step stool"]},
-            {"id": "bone_folder", "name": "bone folder"},
-            {"id": "lunch", "name": "lunch box", "synonyms": ["lunchbox"]},
-            {
-                "id": "report",
-                "name": "condition report",
-                "kind": "personal",
-                "signable": True,
-            },
-            {"id": "book", "name": "worn book", "synonyms": ["damaged book"]},
-            {"id": "flyer_file", "name": "flyer file", "kind": "electronic"},
-            {"id": "brochure", "name": "brochure", "kind": "product", "synonyms": ["flyer"]},
-            {"id": "rebound", "name": "rebound book", "kind": "product"},
-            {"id": "coffee", "name": "coffee", "kind": "product"},
-            {"id": "water", "name": "water", "kind": "product"},
-        ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "flyer_file",
-                "product": "brochure",
-            },
-            {
-                "id": "rebind",
-                "name": "rebind",
-                "verbs": ["rebind"],
-                "input": "book",
-                "product": "rebound",
-            },
-            {"id": "brew", "name": "make coffee", "verbs": ["brew"], "product": "coffee"},
-            {"id": "pour", "name": "pour water", "verbs": ["pour"], "product": "water"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": aliases,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "flyer_file"}, {"type": "book"}],
-            }
-            for n, (pid, name, aliases, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "printer",
-                "name": "printer",
-                "location": "workroom",
-                "operations": ["print"],
-                "guards": ["page"],
-                "products": ["brochure"],
-            },
-            {
-                "id": "press",
-                "name": "bindery press",
-                "location": "workroom",
-                "operations": ["rebind"],
-                "guards": ["page"],
-                "products": ["rebound"],
-            },
-            {
-                "id": "fridge",
-                "name": "staff fridge",
-                "synonyms": ["fridge"],
-                "location": "kitchen",
-                "guards": ["robin"],
-            },
-            {
-                "id": "coffee_machine",
-                "name": "coffee machine",
-                "location": "kitchen",
-                "operations": ["brew"],
-                "products": ["coffee"],
-                "guards": ["robin"],
-            },
-            {
-                "id": "water_cooler",
-                "name": "water cooler",
-                "location": "kitchen",
-                "operations": ["pour"],
-                "products": ["water"],
-                "guards": ["robin"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "workroom"},
-    }
+        home="workroom",
+    )
 
 
-@functools.cache
-def bindery() -> Office:
-    return parse_office(raw_bindery(), "bindery")
+bindery = parsed(raw_bindery)

@@ -6,93 +6,78 @@ changed); ordinary belongings (a headset, a van key)."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers.office_builder import (
+    facility,
+    item,
+    kept,
+    office_file,
+    operation,
+    parsed,
+    person,
+    room,
+)
 
 _PEOPLE = (
-    ("wren", "Wren Okafor", [{"type": "headset"}, {"type": "script"}, {"type": "poster"}]),
-    ("basil", "Basil Novak", [{"type": "van_key"}, {"type": "contract"}]),
-    ("odile", "Odile Marsh", [{"type": "headset"}, {"type": "script"}]),
-    ("teodor", "Teodor Haas", [{"type": "contract"}, {"type": "poster"}]),
-    ("linnea", "Linnea Brandt", [{"type": "script"}]),
+    person("wren", "Wren Okafor", "headset", "script", "poster"),
+    person("basil", "Basil Novak", "van_key", "contract"),
+    person("odile", "Odile Marsh", "headset", "script"),
+    person("teodor", "Teodor Haas", "contract", "poster"),
+    person(
+        "linnea",
+        "Linnea Brandt",
+        "script",
+        kept("glue_stick", at="store_room", facility="supply_cupboard"),
+        kept("marker_pen", at="store_room", facility="supply_cupboard"),
+    ),
 )
 
 
 def raw_radio_station() -> dict[str, Any]:
-    kept = [
-        {"type": "glue_stick", "at": "store_room", "facility": "supply_cupboard"},
-        {"type": "marker_pen", "at": "store_room", "facility": "supply_cupboard"},
-    ]
-    return {
-        "name": "radio_station",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0), 1)
+    return office_file(
+        "radio_station",
+        _PEOPLE,
+        rooms=[
+            room("store_room", "Store room", 4.0, 20.5),
+            room("back_office", "Back office", 18.0, 20.5),
+        ],
+        item_types=[
+            item("headset", "headset"),
+            item("van_key", "van key", synonyms=["van keys"]),
+            item("glue_stick", "glue stick"),
+            item("marker_pen", "marker pen"),
+            item("script", "script", "personal", synonyms=["show script"]),
+            item("contract", "contract", "personal"),
+            item("poster", "poster", "personal"),
+        ],
+        operations=[
+            operation("proof", "proofread", name="proofread", input="script"),
+            operation("vet", "vet", name="legal review", input="contract"),
+            operation("laminate", "laminate", input="poster"),
+        ],
+        facilities=[
+            facility("supply_cupboard", "supply cupboard", at="store_room", guards=["linnea"]),
+            facility(
+                "proof_desk",
+                "proofing desk",
+                at="back_office",
+                guards=["odile"],
+                operations=["proof"],
             ),
-            {"id": "store_room", "kind": "facility", "name": "Store room", "x": 4.0, "y": 20.5},
-            {"id": "back_office", "kind": "facility", "name": "Back office", "x": 18.0, "y": 20.5},
+            facility(
+                "legal_desk", "legal desk", at="back_office", guards=["basil"], operations=["vet"]
+            ),
+            facility(
+                "laminator",
+                "laminator",
+                at="store_room",
+                guards=["teodor"],
+                operations=["laminate"],
+            ),
         ],
-        "item_types": [
-            {"id": "headset", "name": "headset"},
-            {"id": "van_key", "name": "van key", "synonyms": ["van keys"]},
-            {"id": "glue_stick", "name": "glue stick"},
-            {"id": "marker_pen", "name": "marker pen"},
-            {"id": "script", "name": "script", "kind": "personal", "synonyms": ["show script"]},
-            {"id": "contract", "name": "contract", "kind": "personal"},
-            {"id": "poster", "name": "poster", "kind": "personal"},
-        ],
-        "operations": [
-            {"id": "proof", "name": "proofread", "verbs": ["proofread"], "input": "script"},
-            {"id": "vet", "name": "legal review", "verbs": ["vet"], "input": "contract"},
-            {"id": "laminate", "name": "laminate", "verbs": ["laminate"], "input": "poster"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, *(kept if pid == "linnea" else [])],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "supply_cupboard",
-                "name": "supply cupboard",
-                "location": "store_room",
-                "guards": ["linnea"],
-            },
-            {
-                "id": "proof_desk",
-                "name": "proofing desk",
-                "location": "back_office",
-                "operations": ["proof"],
-                "guards": ["odile"],
-            },
-            {
-                "id": "legal_desk",
-                "name": "legal desk",
-                "location": "back_office",
-                "operations": ["vet"],
-                "guards": ["basil"],
-            },
-            {
-                "id": "laminator",
-                "name": "laminator",
-                "location": "store_room",
-                "operations": ["laminate"],
-                "guards": ["teodor"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "store_room"},
-    }
+        home="store_room",
+    )
 
 
-@functools.cache
-def radio_station() -> Office:
-    return parse_office(raw_radio_station(), "radio_station")
+radio_station = parsed(raw_radio_station)

@@ -8,132 +8,94 @@ lists."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers.office_builder import (
+    desk_row,
+    facility,
+    item,
+    office_file,
+    operation,
+    parsed,
+    person,
+    room,
+)
 
 _PEOPLE = (
-    ("ines", "Ines Varga", ["stamp", "plan", "tape"]),
-    ("tobias", "Tobias Rehn", ["stamp", "plan"]),
-    ("bill", "Bill Osei", ["plan", "tripod"]),
-    ("noor", "Noor Haddad", ["plan", "level"]),
-    ("callum", "Callum Price", ["plan", "tripod", "tape"]),
-    ("otto", "Otto Lindgren", ["plan", "level"]),
+    person("ines", "Ines Varga", "stamp", "plan", "tape"),
+    person("tobias", "Tobias Rehn", "stamp", "plan"),
+    person("bill", "Bill Osei", "plan", "tripod"),
+    person("noor", "Noor Haddad", "plan", "level"),
+    person("callum", "Callum Price", "plan", "tripod", "tape"),
+    person("otto", "Otto Lindgren", "plan", "level"),
 )
 
 
 def raw_surveyors() -> dict[str, Any]:
-    return {
-        "name": "surveyors",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": 4.0 * n}
-                | {"y": 6.0}
-                for n in range(1, len(_PEOPLE) + 1)
+    return office_file(
+        "surveyors",
+        _PEOPLE,
+        everyone_owns=["drawing"],
+        desks=desk_row(len(_PEOPLE), x0=4.0),
+        rooms=[
+            room("plan_room", "Plan room", 4.0, 18.0),
+            room("post_room", "Post room", 16.0, 18.0),
+        ],
+        item_types=[
+            item("tape", "measuring tape", synonyms=["tape measure"]),
+            item("level", "spirit level", synonyms=["level"]),
+            item("tripod", "tripod"),
+            item(
+                "stamp",
+                "chartered stamp",
+                seals=True,
+                synonyms=["stamp", "embosser", "practice seal"],
             ),
-            {"id": "plan_room", "kind": "facility", "name": "Plan room", "x": 4.0, "y": 18.0},
-            {"id": "post_room", "kind": "facility", "name": "Post room", "x": 16.0, "y": 18.0},
+            item(
+                "plan",
+                "plan",
+                "personal",
+                signable=True,
+                synonyms=["survey plan", "contract", "certificate"],
+            ),
+            item(
+                "drawing", "drawing file", "electronic", synonyms=["drawing", "draft", "cad file"]
+            ),
+            item("pdf", "PDF", "electronic", synonyms=["pdf file"]),
+            item("plot", "plot", "product", synonyms=["printout"]),
+            item("copy", "copy", "product", synonyms=["photocopy"]),
         ],
-        "item_types": [
-            {"id": "tape", "name": "measuring tape", "synonyms": ["tape measure"]},
-            {"id": "level", "name": "spirit level", "synonyms": ["level"]},
-            {"id": "tripod", "name": "tripod"},
-            {
-                "id": "stamp",
-                "name": "chartered stamp",
-                "seals": True,
-                "synonyms": ["stamp", "embosser", "practice seal"],
-            },
-            {
-                "id": "plan",
-                "name": "plan",
-                "kind": "personal",
-                "signable": True,
-                "synonyms": ["survey plan", "contract", "certificate"],
-            },
-            {
-                "id": "drawing",
-                "name": "drawing file",
-                "kind": "electronic",
-                "synonyms": ["drawing", "draft", "cad file"],
-            },
-            {"id": "pdf", "name": "PDF", "kind": "electronic", "synonyms": ["pdf file"]},
-            {"id": "plot", "name": "plot", "kind": "product", "synonyms": ["printout"]},
-            {"id": "copy", "name": "copy", "kind": "product", "synonyms": ["photocopy"]},
+        operations=[
+            operation("plot", "print", "plot", name="print", input="drawing", product="plot"),
+            operation("copy", "copy", "photocopy", input="plan", product="copy"),
+            operation(
+                "scan", "scan", "digitise", input="plan", product="pdf", done="scanned to PDF"
+            ),
+            operation("bind", "bind", input="plan"),
+            operation("courier", "courier", input="plan", sends_out=True),
+            operation("fax", "fax", input="plan", sends_out=True),
         ],
-        "operations": [
-            {
-                "id": "plot",
-                "name": "print",
-                "verbs": ["print", "plot"],
-                "input": "drawing",
-                "product": "plot",
-            },
-            {
-                "id": "copy",
-                "name": "copy",
-                "verbs": ["copy", "photocopy"],
-                "input": "plan",
-                "product": "copy",
-            },
-            {
-                "id": "scan",
-                "name": "scan",
-                "verbs": ["scan", "digitise"],
-                "input": "plan",
-                "product": "pdf",
-                "done": "scanned to PDF",
-            },
-            {"id": "bind", "name": "bind", "verbs": ["bind"], "input": "plan"},
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier"],
-                "input": "plan",
-                "sends_out": True,
-            },
-            {"id": "fax", "name": "fax", "verbs": ["fax"], "input": "plan", "sends_out": True},
+        facilities=[
+            facility(
+                "copier",
+                "copier",
+                at="plan_room",
+                guards=["otto"],
+                operations=["copy", "scan", "bind"],
+                synonyms=["photocopier"],
+            ),
+            facility("plotter", "plotter", at="plan_room", guards=["otto"], operations=["plot"]),
+            facility(
+                "post_desk",
+                "post desk",
+                at="post_room",
+                guards=["noor"],
+                operations=["courier", "fax"],
+            ),
         ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*({"type": t} for t in owns), {"type": "drawing"}],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "copier",
-                "name": "copier",
-                "synonyms": ["photocopier"],
-                "location": "plan_room",
-                "operations": ["copy", "scan", "bind"],
-                "guards": ["otto"],
-            },
-            {
-                "id": "plotter",
-                "name": "plotter",
-                "location": "plan_room",
-                "operations": ["plot"],
-                "guards": ["otto"],
-            },
-            {
-                "id": "post_desk",
-                "name": "post desk",
-                "location": "post_room",
-                "operations": ["courier", "fax"],
-                "guards": ["noor"],
-            },
-        ],
-        "groups": [{"id": "practice", "name": "Practice", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "plan_room"},
-    }
+        home="plan_room",
+        group=("practice", "Practice"),
+    )
 
 
-@functools.cache
-def surveyors() -> Office:
-    return parse_office(raw_surveyors(), "surveyors")
+surveyors = parsed(raw_surveyors)
