@@ -10,49 +10,51 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import facility, item, office_file, operation, parsed, person, room
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("ines", "Ines Varga", "tape_gun", "chart", "slide"),
-    person("tobias", "Tobias Reed", "step_ladder", "chart"),
-    person("priya", "Priya Nair", "tape_gun", "slide"),
-    person("jonas", "Jonas Kell", "chart"),
-    person("mira", "Mira Sato", "slide"),
-    person("oskar", "Oskar Lind", "chart"),
+    ob.person("ines", "Ines Varga", "tape_gun", "chart", "slide"),
+    ob.person("tobias", "Tobias Reed", "step_ladder", "chart"),
+    ob.person("priya", "Priya Nair", "tape_gun", "slide"),
+    ob.person("jonas", "Jonas Kell", "chart"),
+    ob.person("mira", "Mira Sato", "slide"),
+    ob.person("oskar", "Oskar Lind", "chart"),
 )
 
 
 def raw_archive() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "archive",
         _PEOPLE,
         everyone_owns=["doc_file"],
         rooms=[
-            room("copy_room", "Copy room", 4.0, 20.5),
-            room("stack_room", "Stack room", 20.0, 20.5),
+            ob.room("copy_room", "Copy room", 4.0, 20.5),
+            ob.room("stack_room", "Stack room", 20.0, 20.5),
         ],
         item_types=[
-            item("step_ladder", "step ladder", synonyms=["kick step"]),
-            item("tape_gun", "tape gun"),
-            item("chart", "chart", "personal", synonyms=["map sheet"]),
-            item("slide", "glass slide", "personal", synonyms=["slide"]),
-            item(
+            ob.item("step_ladder", "step ladder", synonyms=["kick step"]),
+            ob.item("tape_gun", "tape gun"),
+            ob.item("chart", "chart", "personal", synonyms=["map sheet"]),
+            ob.item("slide", "glass slide", "personal", synonyms=["slide"]),
+            ob.item(
                 "doc_file", "document file", "electronic", synonyms=["document", "box list", "pdf"]
             ),
-            item("printout", "printout", "product"),
-            item("box_label", "box labels", "product", synonyms=["box label"]),
-            item("pass_card", "visitor pass", "product", synonyms=["pass card"]),
-            item("slide_scan", "slide scan", "electronic", synonyms=["slide image"]),
+            ob.item("printout", "printout", "product"),
+            ob.item("box_label", "box labels", "product", synonyms=["box label"]),
+            ob.item("pass_card", "visitor pass", "product", synonyms=["pass card"]),
+            ob.item("slide_scan", "slide scan", "electronic", synonyms=["slide image"]),
         ],
         operations=[
-            operation("print", "print", input="doc_file", product="printout"),
-            operation("tag", "tag", name="print box labels", input="doc_file", product="box_label"),
-            operation("badge", "issue", name="issue passes", product="pass_card"),
-            operation("digitise", "scan", "digitise", input="slide", product="slide_scan"),
-            operation("mount", "mount", "backboard", input="chart"),
+            ob.operation("print", "print", input="doc_file", product="printout"),
+            ob.operation(
+                "tag", "tag", name="print box labels", input="doc_file", product="box_label"
+            ),
+            ob.operation("badge", "issue", name="issue passes", product="pass_card"),
+            ob.operation("digitise", "scan", "digitise", input="slide", product="slide_scan"),
+            ob.operation("mount", "mount", "backboard", input="chart"),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "printer",
                 "printer",
                 at="copy_room",
@@ -60,7 +62,7 @@ def raw_archive() -> dict[str, Any]:
                 operations=["print"],
                 products=["printout"],
             ),
-            facility(
+            ob.facility(
                 "tag_printer",
                 "tag printer",
                 at="stack_room",
@@ -68,7 +70,7 @@ def raw_archive() -> dict[str, Any]:
                 operations=["tag"],
                 products=["box_label"],
             ),
-            facility(
+            ob.facility(
                 "badge_press",
                 "badge press",
                 at="copy_room",
@@ -76,14 +78,14 @@ def raw_archive() -> dict[str, Any]:
                 operations=["badge"],
                 products=["pass_card"],
             ),
-            facility(
+            ob.facility(
                 "reel_reader",
                 "reel reader",
                 at="stack_room",
                 guards=["mira"],
                 operations=["digitise"],
             ),
-            facility(
+            ob.facility(
                 "mount_press",
                 "mounting press",
                 at="stack_room",
@@ -95,4 +97,4 @@ def raw_archive() -> dict[str, Any]:
     )
 
 
-archive = parsed(raw_archive)
+archive = ob.parsed(raw_archive)

@@ -8,56 +8,50 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    facility,
-    item,
-    kept,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("penny", "Penny Castellanos", "puppet", "report"),
-    person("ivy", "Ivy Marchetti", "kick_stool", aliases=["Ives"]),
-    person("robin", "Robin Okonkwo", "report"),
-    person("page", "Oksana Page", "kick_stool", "report"),
-    person("thao", "Thảo Nguyễn", "report"),
-    person("lukasz", "Łukasz Wróbel", "bone_folder", aliases=["Luke"]),
-    person("zoe", "Zoë Brandt", "bone_folder", "report"),
-    person("jurgen", "Jürgen Falk", kept("lunch", at="kitchen", facility="fridge"), "report"),
+    ob.person("penny", "Penny Castellanos", "puppet", "report"),
+    ob.person("ivy", "Ivy Marchetti", "kick_stool", aliases=["Ives"]),
+    ob.person("robin", "Robin Okonkwo", "report"),
+    ob.person("page", "Oksana Page", "kick_stool", "report"),
+    ob.person("thao", "Thảo Nguyễn", "report"),
+    ob.person("lukasz", "Łukasz Wróbel", "bone_folder", aliases=["Luke"]),
+    ob.person("zoe", "Zoë Brandt", "bone_folder", "report"),
+    ob.person("jurgen", "Jürgen Falk", ob.kept("lunch", at="kitchen", facility="fridge"), "report"),
 )
 
 
 def raw_bindery() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "bindery",
         _PEOPLE,
         everyone_owns=["flyer_file", "book"],
-        rooms=[room("workroom", "Workroom", 4.0, 20.5), room("kitchen", "Kitchen", 11.0, 20.5)],
+        rooms=[
+            ob.room("workroom", "Workroom", 4.0, 20.5),
+            ob.room("kitchen", "Kitchen", 11.0, 20.5),
+        ],
         item_types=[
-            item("puppet", "puppet", synonyms=["hand puppet"]),
-            item("kick_stool", "kick stool", synonyms=["step stool"]),
-            item("bone_folder", "bone folder"),
-            item("lunch", "lunch box", synonyms=["lunchbox"]),
-            item("report", "condition report", "personal", signable=True),
-            item("book", "worn book", synonyms=["damaged book"]),
-            item("flyer_file", "flyer file", "electronic"),
-            item("brochure", "brochure", "product", synonyms=["flyer"]),
-            item("rebound", "rebound book", "product"),
-            item("coffee", "coffee", "product"),
-            item("water", "water", "product"),
+            ob.item("puppet", "puppet", synonyms=["hand puppet"]),
+            ob.item("kick_stool", "kick stool", synonyms=["step stool"]),
+            ob.item("bone_folder", "bone folder"),
+            ob.item("lunch", "lunch box", synonyms=["lunchbox"]),
+            ob.item("report", "condition report", "personal", signable=True),
+            ob.item("book", "worn book", synonyms=["damaged book"]),
+            ob.item("flyer_file", "flyer file", "electronic"),
+            ob.item("brochure", "brochure", "product", synonyms=["flyer"]),
+            ob.item("rebound", "rebound book", "product"),
+            ob.item("coffee", "coffee", "product"),
+            ob.item("water", "water", "product"),
         ],
         operations=[
-            operation("print", "print", input="flyer_file", product="brochure"),
-            operation("rebind", "rebind", input="book", product="rebound"),
-            operation("brew", "brew", name="make coffee", product="coffee"),
-            operation("pour", "pour", name="pour water", product="water"),
+            ob.operation("print", "print", input="flyer_file", product="brochure"),
+            ob.operation("rebind", "rebind", input="book", product="rebound"),
+            ob.operation("brew", "brew", name="make coffee", product="coffee"),
+            ob.operation("pour", "pour", name="pour water", product="water"),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "printer",
                 "printer",
                 at="workroom",
@@ -65,7 +59,7 @@ def raw_bindery() -> dict[str, Any]:
                 operations=["print"],
                 products=["brochure"],
             ),
-            facility(
+            ob.facility(
                 "press",
                 "bindery press",
                 at="workroom",
@@ -73,8 +67,10 @@ def raw_bindery() -> dict[str, Any]:
                 operations=["rebind"],
                 products=["rebound"],
             ),
-            facility("fridge", "staff fridge", at="kitchen", guards=["robin"], synonyms=["fridge"]),
-            facility(
+            ob.facility(
+                "fridge", "staff fridge", at="kitchen", guards=["robin"], synonyms=["fridge"]
+            ),
+            ob.facility(
                 "coffee_machine",
                 "coffee machine",
                 at="kitchen",
@@ -82,7 +78,7 @@ def raw_bindery() -> dict[str, Any]:
                 operations=["brew"],
                 products=["coffee"],
             ),
-            facility(
+            ob.facility(
                 "water_cooler",
                 "water cooler",
                 at="kitchen",
@@ -95,4 +91,4 @@ def raw_bindery() -> dict[str, Any]:
     )
 
 
-bindery = parsed(raw_bindery)
+bindery = ob.parsed(raw_bindery)

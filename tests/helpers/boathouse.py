@@ -7,66 +7,58 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    ASKS_NAME_AND_ADDRESS,
-    desk_row,
-    facility,
-    item,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("ottilie", "Ottilie Brandt", "headlamp", "form"),
-    person("bram", "Bram Okafor", "stopwatch", "headlamp", "form"),
-    person("kasia", "Kasia Lind", "radio", "form"),
-    person("femi", "Femi Adair", "stopwatch", "form"),
-    person("rune", "Rune Solberg", "oar_clamp", "form"),
+    ob.person("ottilie", "Ottilie Brandt", "headlamp", "form"),
+    ob.person("bram", "Bram Okafor", "stopwatch", "headlamp", "form"),
+    ob.person("kasia", "Kasia Lind", "radio", "form"),
+    ob.person("femi", "Femi Adair", "stopwatch", "form"),
+    ob.person("rune", "Rune Solberg", "oar_clamp", "form"),
 )
 
 
 def raw_boathouse() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "boathouse",
         _PEOPLE,
         everyone_owns=["log"],
-        desks=desk_row(len(_PEOPLE), x0=4.0, y=5.0),
+        desks=ob.desk_row(len(_PEOPLE), x0=4.0, y=5.0),
         desk_word="bay",
-        rooms=[room("tack_room", "Tack room", 4.0, 18.0)],
+        rooms=[ob.room("tack_room", "Tack room", 4.0, 18.0)],
         item_types=[
-            item("headlamp", "headlamp", synonyms=["head torch"]),
-            item("stopwatch", "stopwatch"),
-            item("radio", "radio", synonyms=["walkie-talkie"]),
-            item("oar_clamp", "oar clamp"),
-            item("form", "form", "personal", signable=True, synonyms=["waiver", "entry form"]),
-            item("log", "log", "electronic", synonyms=["spreadsheet"]),
-            item("printout", "printout", "product"),
+            ob.item("headlamp", "headlamp", synonyms=["head torch"]),
+            ob.item("stopwatch", "stopwatch"),
+            ob.item("radio", "radio", synonyms=["walkie-talkie"]),
+            ob.item("oar_clamp", "oar clamp"),
+            ob.item("form", "form", "personal", signable=True, synonyms=["waiver", "entry form"]),
+            ob.item("log", "log", "electronic", synonyms=["spreadsheet"]),
+            ob.item("printout", "printout", "product"),
         ],
         operations=[
-            operation("print", "print", input="log", product="printout"),
-            operation("charge", "charge", "recharge", input="headlamp"),
-            operation(
+            ob.operation("print", "print", input="log", product="printout"),
+            ob.operation("charge", "charge", "recharge", input="headlamp"),
+            ob.operation(
                 "courier",
                 "courier",
                 "dispatch",
                 input="form",
                 sends_out=True,
-                destination_asked=ASKS_NAME_AND_ADDRESS,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
             ),
         ],
         facilities=[
-            facility("printer", "printer", at="tack_room", guards=["rune"], operations=["print"]),
-            facility(
+            ob.facility(
+                "printer", "printer", at="tack_room", guards=["rune"], operations=["print"]
+            ),
+            ob.facility(
                 "charging_shelf",
                 "charging shelf",
                 at="tack_room",
                 guards=["kasia"],
                 operations=["charge"],
             ),
-            facility(
+            ob.facility(
                 "dispatch_tray",
                 "dispatch tray",
                 at="tack_room",
@@ -79,4 +71,4 @@ def raw_boathouse() -> dict[str, Any]:
     )
 
 
-boathouse = parsed(raw_boathouse)
+boathouse = ob.parsed(raw_boathouse)

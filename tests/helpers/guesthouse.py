@@ -8,38 +8,41 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import facility, item, office_file, operation, parsed, person, room
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("wren", "Wren Okafor", "step_stool", "ledger", "poster"),
-    person("basil", "Basil Moreau", "hole_punch", "ledger"),
-    person("ottilie", "Ottilie Brandt", "step_stool", "poster"),
-    person("cosmo", "Cosmo Delacroix", "ledger"),
-    person("juniper", "Juniper Hale", "hole_punch", "poster"),
+    ob.person("wren", "Wren Okafor", "step_stool", "ledger", "poster"),
+    ob.person("basil", "Basil Moreau", "hole_punch", "ledger"),
+    ob.person("ottilie", "Ottilie Brandt", "step_stool", "poster"),
+    ob.person("cosmo", "Cosmo Delacroix", "ledger"),
+    ob.person("juniper", "Juniper Hale", "hole_punch", "poster"),
 )
 
 
 def raw_guesthouse() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "guesthouse",
         _PEOPLE,
-        rooms=[room("back_room", "Back room", 4.0, 20.5), room("pantry", "Pantry", 20.0, 20.5)],
+        rooms=[
+            ob.room("back_room", "Back room", 4.0, 20.5),
+            ob.room("pantry", "Pantry", 20.0, 20.5),
+        ],
         item_types=[
-            item("step_stool", "step stool", synonyms=["kick stool"]),
-            item("hole_punch", "hole punch"),
-            item("ledger", "ledger", "personal", synonyms=["day book"]),
-            item("poster", "poster", "personal"),
-            item("door_card", "door card", "product", synonyms=["key card", "room card"]),
-            item("tea", "tea", "product", mass=True),
+            ob.item("step_stool", "step stool", synonyms=["kick stool"]),
+            ob.item("hole_punch", "hole punch"),
+            ob.item("ledger", "ledger", "personal", synonyms=["day book"]),
+            ob.item("poster", "poster", "personal"),
+            ob.item("door_card", "door card", "product", synonyms=["key card", "room card"]),
+            ob.item("tea", "tea", "product", mass=True),
         ],
         operations=[
-            operation("encode", "encode", "cut", product="door_card"),
-            operation("brew", "brew", product="tea"),
-            operation("shred", "shred", input="ledger", consumes=True),
-            operation("laminate", "laminate", input="poster"),
+            ob.operation("encode", "encode", "cut", product="door_card"),
+            ob.operation("brew", "brew", product="tea"),
+            ob.operation("shred", "shred", input="ledger", consumes=True),
+            ob.operation("laminate", "laminate", input="poster"),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "encoder",
                 "card encoder",
                 at="back_room",
@@ -47,7 +50,7 @@ def raw_guesthouse() -> dict[str, Any]:
                 operations=["encode"],
                 products=["door_card"],
             ),
-            facility(
+            ob.facility(
                 "urn",
                 "tea urn",
                 at="pantry",
@@ -55,10 +58,10 @@ def raw_guesthouse() -> dict[str, Any]:
                 operations=["brew"],
                 products=["tea"],
             ),
-            facility(
+            ob.facility(
                 "shredder", "shredder", at="back_room", guards=["basil"], operations=["shred"]
             ),
-            facility(
+            ob.facility(
                 "laminator",
                 "laminator",
                 at="pantry",
@@ -70,4 +73,4 @@ def raw_guesthouse() -> dict[str, Any]:
     )
 
 
-guesthouse = parsed(raw_guesthouse)
+guesthouse = ob.parsed(raw_guesthouse)

@@ -10,74 +10,66 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    ASKS_NAME_AND_ADDRESS,
-    facility,
-    item,
-    kept,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("hamid", "Hamid Rahimi", "folder", "step_stool"),
-    person("bea", "Bea Lindqvist", "folder", "ladder"),
-    person("quinn", "Ms Quinn Ashby", "folder", aliases=["Ms Ashby"]),
-    person("dara", "Dara Flynn", "book_cart", "storybook"),
-    person("mei", "Mei Tanaka", "step_stool", "storybook"),
-    person("yusuf", "Yusuf Demir", kept("pump", at="post_room", facility="post_desk"), "ladder"),
-    person("oona", "Oona Byrne", "storybook"),
-    person("chau", "Trần Bảo Châu", "storybook"),
-    person("sian", "Siân Pryce", "step_stool"),
+    ob.person("hamid", "Hamid Rahimi", "folder", "step_stool"),
+    ob.person("bea", "Bea Lindqvist", "folder", "ladder"),
+    ob.person("quinn", "Ms Quinn Ashby", "folder", aliases=["Ms Ashby"]),
+    ob.person("dara", "Dara Flynn", "book_cart", "storybook"),
+    ob.person("mei", "Mei Tanaka", "step_stool", "storybook"),
+    ob.person(
+        "yusuf", "Yusuf Demir", ob.kept("pump", at="post_room", facility="post_desk"), "ladder"
+    ),
+    ob.person("oona", "Oona Byrne", "storybook"),
+    ob.person("chau", "Trần Bảo Châu", "storybook"),
+    ob.person("sian", "Siân Pryce", "step_stool"),
 )
 
 
 def raw_hostel() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "hostel",
         _PEOPLE,
         everyone_owns=["rota", "notice"],
         rooms=[
-            room("post_room", "Post room", 4.0, 20.5),
-            room("kitchen", "Kitchen", 14.0, 20.5),
-            room("laundry", "Laundry", 24.0, 20.5),
+            ob.room("post_room", "Post room", 4.0, 20.5),
+            ob.room("kitchen", "Kitchen", 14.0, 20.5),
+            ob.room("laundry", "Laundry", 24.0, 20.5),
         ],
         item_types=[
-            item("folder", "project folder", synonyms=["folder"]),
-            item("step_stool", "step stool"),
-            item("ladder", "ladder"),
-            item("book_cart", "book cart", synonyms=["book trolley"]),
-            item("storybook", "storybook", "personal", synonyms=["book"]),
-            item("pump", "bike pump"),
-            item("parcel", "parcel", synonyms=["package"]),
-            item("kettle", "kettle"),
-            item("iron", "iron"),
-            item("rota", "file", "electronic", synonyms=["spreadsheet"]),
-            item("notice", "notice", "personal"),
-            item("printout", "printout", "product"),
-            item("tea", "tea", "product"),
-            item("cocoa", "hot chocolate", "product"),
+            ob.item("folder", "project folder", synonyms=["folder"]),
+            ob.item("step_stool", "step stool"),
+            ob.item("ladder", "ladder"),
+            ob.item("book_cart", "book cart", synonyms=["book trolley"]),
+            ob.item("storybook", "storybook", "personal", synonyms=["book"]),
+            ob.item("pump", "bike pump"),
+            ob.item("parcel", "parcel", synonyms=["package"]),
+            ob.item("kettle", "kettle"),
+            ob.item("iron", "iron"),
+            ob.item("rota", "file", "electronic", synonyms=["spreadsheet"]),
+            ob.item("notice", "notice", "personal"),
+            ob.item("printout", "printout", "product"),
+            ob.item("tea", "tea", "product"),
+            ob.item("cocoa", "hot chocolate", "product"),
         ],
         operations=[
-            operation(
+            ob.operation(
                 "courier",
                 "courier",
                 "post",
                 input="parcel",
                 sends_out=True,
-                destination_asked=ASKS_NAME_AND_ADDRESS,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
             ),
-            operation("print", "print", input="rota", product="printout"),
-            operation("laminate", "laminate", input="notice"),
-            operation("shred", "shred", input="notice", consumes=True),
-            operation("brew", "brew", name="make tea", product="tea"),
-            operation("cocoa", name="make hot chocolate", product="cocoa"),
+            ob.operation("print", "print", input="rota", product="printout"),
+            ob.operation("laminate", "laminate", input="notice"),
+            ob.operation("shred", "shred", input="notice", consumes=True),
+            ob.operation("brew", "brew", name="make tea", product="tea"),
+            ob.operation("cocoa", name="make hot chocolate", product="cocoa"),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "post_desk",
                 "post desk",
                 at="post_room",
@@ -85,7 +77,7 @@ def raw_hostel() -> dict[str, Any]:
                 operations=["courier"],
                 supplies=[{"type": "parcel", "count": 1}],
             ),
-            facility(
+            ob.facility(
                 "copier",
                 "copier",
                 at="post_room",
@@ -93,7 +85,7 @@ def raw_hostel() -> dict[str, Any]:
                 operations=["print", "laminate", "shred"],
                 products=["printout"],
             ),
-            facility(
+            ob.facility(
                 "kitchen_counter",
                 "kitchen counter",
                 at="kitchen",
@@ -102,7 +94,7 @@ def raw_hostel() -> dict[str, Any]:
                 products=["tea", "cocoa"],
                 supplies=["kettle"],
             ),
-            facility(
+            ob.facility(
                 "laundry_shelf", "laundry shelf", at="laundry", guards=["mei"], supplies=["iron"]
             ),
         ],
@@ -110,4 +102,4 @@ def raw_hostel() -> dict[str, Any]:
     )
 
 
-hostel = parsed(raw_hostel)
+hostel = ob.parsed(raw_hostel)

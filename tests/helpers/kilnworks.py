@@ -9,58 +9,49 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    ASKS_NAME_AND_ADDRESS,
-    facility,
-    item,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("kit", "Kit Abara", "hole_punch", "calculator"),
-    person("oona", "Oona Pike", "calculator", aliases=["the Provost"]),
-    person("sunniva", "Sunniva Holt", "hole_punch"),
-    person("teodor", "Teodor Lusk", "hole_punch", "calculator"),
-    person("bram", "Bram Okoro", "calculator"),
-    person("wen", "Wen Ashby"),
+    ob.person("kit", "Kit Abara", "hole_punch", "calculator"),
+    ob.person("oona", "Oona Pike", "calculator", aliases=["the Provost"]),
+    ob.person("sunniva", "Sunniva Holt", "hole_punch"),
+    ob.person("teodor", "Teodor Lusk", "hole_punch", "calculator"),
+    ob.person("bram", "Bram Okoro", "calculator"),
+    ob.person("wen", "Wen Ashby"),
 )
 
 
 def raw_kilnworks() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "kilnworks",
         _PEOPLE,
         everyone_owns=["report", "agenda"],
         rooms=[
-            room("print_bay", "Print bay", 4.0, 20.5),
-            room("legal_room", "Legal room", 14.0, 20.5),
-            room("post_room", "Post room", 24.0, 20.5),
+            ob.room("print_bay", "Print bay", 4.0, 20.5),
+            ob.room("legal_room", "Legal room", 14.0, 20.5),
+            ob.room("post_room", "Post room", 24.0, 20.5),
         ],
         item_types=[
-            item("hole_punch", "hole punch", synonyms=["punch"]),
-            item("calculator", "calculator"),
-            item("report", "report", "personal", signable=True, synonyms=["glaze report"]),
-            item("agenda", "agenda", "electronic", synonyms=["agenda file", "minutes"]),
-            item("printout", "printout", "product"),
+            ob.item("hole_punch", "hole punch", synonyms=["punch"]),
+            ob.item("calculator", "calculator"),
+            ob.item("report", "report", "personal", signable=True, synonyms=["glaze report"]),
+            ob.item("agenda", "agenda", "electronic", synonyms=["agenda file", "minutes"]),
+            ob.item("printout", "printout", "product"),
         ],
         operations=[
-            operation("print", "print", input="agenda", product="printout"),
-            operation("vet", "vet", "clear", name="legal review", input="report", done="vetted"),
-            operation(
+            ob.operation("print", "print", input="agenda", product="printout"),
+            ob.operation("vet", "vet", "clear", name="legal review", input="report", done="vetted"),
+            ob.operation(
                 "courier",
                 "courier",
                 input="report",
                 sends_out=True,
-                destination_asked=ASKS_NAME_AND_ADDRESS,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
             ),
-            operation("fax", "fax", input="report", sends_out=True),
+            ob.operation("fax", "fax", input="report", sends_out=True),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "printer",
                 "printer",
                 at="print_bay",
@@ -68,7 +59,7 @@ def raw_kilnworks() -> dict[str, Any]:
                 operations=["print"],
                 products=["printout"],
             ),
-            facility(
+            ob.facility(
                 "legal_desk",
                 "legal desk",
                 at="legal_room",
@@ -76,14 +67,14 @@ def raw_kilnworks() -> dict[str, Any]:
                 operations=["vet"],
                 synonyms=["legal"],
             ),
-            facility(
+            ob.facility(
                 "post_desk",
                 "post desk",
                 at="post_room",
                 guards=["teodor"],
                 operations=["courier", "fax"],
             ),
-            facility(
+            ob.facility(
                 "store_cupboard",
                 "store cupboard",
                 at="post_room",
@@ -95,4 +86,4 @@ def raw_kilnworks() -> dict[str, Any]:
     )
 
 
-kilnworks = parsed(raw_kilnworks)
+kilnworks = ob.parsed(raw_kilnworks)

@@ -8,63 +8,57 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    facility,
-    item,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("lotte", "Lotte Brandt", "mug", "tape_measure"),
-    person("kwame", "Kwame Osei", "mug", "magnifier", "wide_lens"),
-    person("farida", "Farida Haddad", "mug", "camera", "wide_lens"),
-    person("teodor", "Teodor Novak", "mug", "tape_measure", "ruler"),
-    person("maren", "Maren Holt", "mug", "blue_folder", "red_folder"),
-    person("yusuf", "Yusuf Demir", "mug", "camera", "negative"),
-    person("frank", "Frank Ito", "mug"),
-    person("june", "June Adler", "mug"),
-    person("agnes", "Agnes Moreau", "mug", "camera", "wide_lens"),
+    ob.person("lotte", "Lotte Brandt", "mug", "tape_measure"),
+    ob.person("kwame", "Kwame Osei", "mug", "magnifier", "wide_lens"),
+    ob.person("farida", "Farida Haddad", "mug", "camera", "wide_lens"),
+    ob.person("teodor", "Teodor Novak", "mug", "tape_measure", "ruler"),
+    ob.person("maren", "Maren Holt", "mug", "blue_folder", "red_folder"),
+    ob.person("yusuf", "Yusuf Demir", "mug", "camera", "negative"),
+    ob.person("frank", "Frank Ito", "mug"),
+    ob.person("june", "June Adler", "mug"),
+    ob.person("agnes", "Agnes Moreau", "mug", "camera", "wide_lens"),
 )
 
 
 def raw_studio() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "studio",
         _PEOPLE,
         everyone_owns=["shoot_file"],
         desk_word="bench",
         rooms=[
-            room("print_room", "Print room", 4.0, 20.5),
-            room("darkroom", "Darkroom", 20.0, 20.5),
+            ob.room("print_room", "Print room", 4.0, 20.5),
+            ob.room("darkroom", "Darkroom", 20.0, 20.5),
         ],
         item_types=[
-            item("magnifier", "magnifier", synonyms=["loupe"]),
-            item("tape_measure", "tape measure"),
-            item("ruler", "ruler"),
-            item("wide_lens", "wide lens", synonyms=["wide angle lens"]),
-            item("camera", "camera"),
-            item("mug", "mug", "personal"),
-            item("blue_folder", "blue folder", "personal"),
-            item("red_folder", "red folder", "personal"),
-            item("negative", "negative strip", "personal"),
-            item("shoot_file", "shoot file", "electronic", synonyms=["shoot", "photo file"]),
-            item("printout", "printout", "product"),
-            item("contact_sheet", "contact sheet", "product", synonyms=["proof sheet", "contacts"]),
-            item("sticker", "sticker label", "product"),
+            ob.item("magnifier", "magnifier", synonyms=["loupe"]),
+            ob.item("tape_measure", "tape measure"),
+            ob.item("ruler", "ruler"),
+            ob.item("wide_lens", "wide lens", synonyms=["wide angle lens"]),
+            ob.item("camera", "camera"),
+            ob.item("mug", "mug", "personal"),
+            ob.item("blue_folder", "blue folder", "personal"),
+            ob.item("red_folder", "red folder", "personal"),
+            ob.item("negative", "negative strip", "personal"),
+            ob.item("shoot_file", "shoot file", "electronic", synonyms=["shoot", "photo file"]),
+            ob.item("printout", "printout", "product"),
+            ob.item(
+                "contact_sheet", "contact sheet", "product", synonyms=["proof sheet", "contacts"]
+            ),
+            ob.item("sticker", "sticker label", "product"),
         ],
         operations=[
-            operation("print", "print", input="shoot_file", product="printout"),
-            operation("proof", "proof", input="shoot_file", product="contact_sheet"),
-            operation("label", "label", product="sticker"),
-            operation("scan", "scan", input="negative"),
-            operation("develop", "develop", "run", input="negative"),
+            ob.operation("print", "print", input="shoot_file", product="printout"),
+            ob.operation("proof", "proof", input="shoot_file", product="contact_sheet"),
+            ob.operation("label", "label", product="sticker"),
+            ob.operation("scan", "scan", input="negative"),
+            ob.operation("develop", "develop", "run", input="negative"),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "printer",
                 "printer",
                 at="print_room",
@@ -72,7 +66,7 @@ def raw_studio() -> dict[str, Any]:
                 operations=["print", "proof"],
                 products=["printout", "contact_sheet"],
             ),
-            facility(
+            ob.facility(
                 "label_printer",
                 "label printer",
                 at="print_room",
@@ -80,7 +74,7 @@ def raw_studio() -> dict[str, Any]:
                 operations=["label"],
                 products=["sticker"],
             ),
-            facility(
+            ob.facility(
                 "scanner",
                 "film scanner",
                 at="darkroom",
@@ -93,4 +87,4 @@ def raw_studio() -> dict[str, Any]:
     )
 
 
-studio = parsed(raw_studio)
+studio = ob.parsed(raw_studio)

@@ -9,63 +9,54 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    desk_row,
-    facility,
-    item,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("ann", "Ann Mbeki", "torch", "contract"),
-    person("roseanne", "Roseanne Vale", "tape_measure", "contract", aliases=["Anne"]),
-    person("jon", "Jon Petrov", "torch", "contract", "lanyard"),
-    person("jonathan", "Jonathan Wilde", "lanyard", "contract", aliases=["John"]),
-    person("oona", "Oona Beck", "tape_measure", "contract"),
-    person("dev", "Dev Kapoor", "torch", "contract", aliases=["Devraj"]),
+    ob.person("ann", "Ann Mbeki", "torch", "contract"),
+    ob.person("roseanne", "Roseanne Vale", "tape_measure", "contract", aliases=["Anne"]),
+    ob.person("jon", "Jon Petrov", "torch", "contract", "lanyard"),
+    ob.person("jonathan", "Jonathan Wilde", "lanyard", "contract", aliases=["John"]),
+    ob.person("oona", "Oona Beck", "tape_measure", "contract"),
+    ob.person("dev", "Dev Kapoor", "torch", "contract", aliases=["Devraj"]),
 )
 
 
 def raw_playhouse() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "playhouse",
         _PEOPLE,
         everyone_owns=["rota"],
-        desks=desk_row(len(_PEOPLE), x0=4.0, y=5.0),
+        desks=ob.desk_row(len(_PEOPLE), x0=4.0, y=5.0),
         rooms=[
-            room("print_nook", "Print nook", 4.0, 18.0),
-            room("store_room", "Store room", 12.0, 18.0),
-            room("stage_door", "Stage door", 20.0, 18.0),
-            room("green_room", "Green room", 28.0, 18.0, kind="room"),
+            ob.room("print_nook", "Print nook", 4.0, 18.0),
+            ob.room("store_room", "Store room", 12.0, 18.0),
+            ob.room("stage_door", "Stage door", 20.0, 18.0),
+            ob.room("green_room", "Green room", 28.0, 18.0, kind="room"),
         ],
         item_types=[
-            item("torch", "torch", synonyms=["flashlight"]),
-            item("tape_measure", "tape measure"),
-            item("lanyard", "lanyard", synonyms=["pass"]),
-            item("cotton_gloves", "cotton gloves", synonyms=["white gloves"]),
-            item("gaffer_tape", "gaffer tape", consumable=True, mass=True),
-            item(
+            ob.item("torch", "torch", synonyms=["flashlight"]),
+            ob.item("tape_measure", "tape measure"),
+            ob.item("lanyard", "lanyard", synonyms=["pass"]),
+            ob.item("cotton_gloves", "cotton gloves", synonyms=["white gloves"]),
+            ob.item("gaffer_tape", "gaffer tape", consumable=True, mass=True),
+            ob.item(
                 "contract", "contract", "personal", signable=True, synonyms=["agreement", "rider"]
             ),
-            item("rota", "rota", "electronic", synonyms=["schedule"]),
-            item("printout", "printout", "product"),
-            item("copy", "photocopy", "product", synonyms=["copy"]),
+            ob.item("rota", "rota", "electronic", synonyms=["schedule"]),
+            ob.item("printout", "printout", "product"),
+            ob.item("copy", "photocopy", "product", synonyms=["copy"]),
         ],
         operations=[
-            operation("print", "print", input="rota", product="printout"),
-            operation("copy", "copy", "photocopy", input="contract", product="copy"),
-            operation("courier", "courier", input="contract", sends_out=True),
-            operation("fax", "fax", input="contract", sends_out=True),
+            ob.operation("print", "print", input="rota", product="printout"),
+            ob.operation("copy", "copy", "photocopy", input="contract", product="copy"),
+            ob.operation("courier", "courier", input="contract", sends_out=True),
+            ob.operation("fax", "fax", input="contract", sends_out=True),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "copier", "copier", at="print_nook", guards=["oona"], operations=["print", "copy"]
             ),
-            facility(
+            ob.facility(
                 "props_cupboard",
                 "props cupboard",
                 at="store_room",
@@ -73,14 +64,14 @@ def raw_playhouse() -> dict[str, Any]:
                 supplies=["cotton_gloves", "gaffer_tape"],
                 synonyms=["cupboard"],
             ),
-            facility(
+            ob.facility(
                 "courier_desk",
                 "courier desk",
                 at="stage_door",
                 guards=["jon"],
                 operations=["courier"],
             ),
-            facility(
+            ob.facility(
                 "fax_machine", "fax machine", at="print_nook", guards=["oona"], operations=["fax"]
             ),
         ],
@@ -89,4 +80,4 @@ def raw_playhouse() -> dict[str, Any]:
     )
 
 
-playhouse = parsed(raw_playhouse)
+playhouse = ob.parsed(raw_playhouse)

@@ -9,52 +9,46 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    facility,
-    item,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("edda", "Edda Lund", "bone_folder", "proof"),
-    person("kofi", "Kofi Mensah", "bone_folder", "proof"),
-    person("lena", "Lena Ortiz", "loupe", "proof"),
-    person("ravi", "Ravi Batra", "proof", at="front_desk"),
-    person("noor", "Noor Haddad", "loupe", "proof"),
-    person("ugo", "Ugo Ferri", "proof"),
+    ob.person("edda", "Edda Lund", "bone_folder", "proof"),
+    ob.person("kofi", "Kofi Mensah", "bone_folder", "proof"),
+    ob.person("lena", "Lena Ortiz", "loupe", "proof"),
+    ob.person("ravi", "Ravi Batra", "proof", at="front_desk"),
+    ob.person("noor", "Noor Haddad", "loupe", "proof"),
+    ob.person("ugo", "Ugo Ferri", "proof"),
 )
 
 
 def raw_printshop() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "printshop",
         _PEOPLE,
         everyone_owns=["artwork"],
         rooms=[
-            room("press_room", "Press room", 4.0, 20.5),
-            room("front_desk", "Front desk", 11.0, 20.5),
+            ob.room("press_room", "Press room", 4.0, 20.5),
+            ob.room("front_desk", "Front desk", 11.0, 20.5),
         ],
         item_types=[
-            item("bone_folder", "bone folder", synonyms=["creaser"]),
-            item("loupe", "loupe", synonyms=["magnifier"]),
-            item("proof", "proof", "personal", signable=True, synonyms=["proof sheet", "layout"]),
-            item("artwork", "artwork file", "electronic", synonyms=["svg"]),
-            item("printout", "printout", "product", synonyms=["print"]),
-            item("plate", "etched plate", "product", synonyms=["brass print", "engraving"]),
-            item("card_stock", "card stock", consumable=True, synonyms=["card"]),
-            item("string", "cotton string", consumable=True),
+            ob.item("bone_folder", "bone folder", synonyms=["creaser"]),
+            ob.item("loupe", "loupe", synonyms=["magnifier"]),
+            ob.item(
+                "proof", "proof", "personal", signable=True, synonyms=["proof sheet", "layout"]
+            ),
+            ob.item("artwork", "artwork file", "electronic", synonyms=["svg"]),
+            ob.item("printout", "printout", "product", synonyms=["print"]),
+            ob.item("plate", "etched plate", "product", synonyms=["brass print", "engraving"]),
+            ob.item("card_stock", "card stock", consumable=True, synonyms=["card"]),
+            ob.item("string", "cotton string", consumable=True),
         ],
         operations=[
-            operation("print", "print", input="artwork", product="printout"),
-            operation("engrave", "engrave", "etch", input="artwork", product="plate"),
-            operation("post", "post", "mail", input="proof", sends_out=True),
+            ob.operation("print", "print", input="artwork", product="printout"),
+            ob.operation("engrave", "engrave", "etch", input="artwork", product="plate"),
+            ob.operation("post", "post", "mail", input="proof", sends_out=True),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "printer",
                 "printer",
                 at="press_room",
@@ -62,7 +56,7 @@ def raw_printshop() -> dict[str, Any]:
                 operations=["print"],
                 products=["printout"],
             ),
-            facility(
+            ob.facility(
                 "engraver",
                 "engraver",
                 at="press_room",
@@ -71,14 +65,14 @@ def raw_printshop() -> dict[str, Any]:
                 products=["plate"],
                 synonyms=["etching machine"],
             ),
-            facility(
+            ob.facility(
                 "paper_store",
                 "paper store",
                 at="press_room",
                 guards=["ugo"],
                 supplies=[{"type": "card_stock", "count": 3}, "string"],
             ),
-            facility(
+            ob.facility(
                 "post_desk",
                 "post desk",
                 at="front_desk",
@@ -91,4 +85,4 @@ def raw_printshop() -> dict[str, Any]:
     )
 
 
-printshop = parsed(raw_printshop)
+printshop = ob.parsed(raw_printshop)

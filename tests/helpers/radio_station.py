@@ -8,67 +8,58 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    facility,
-    item,
-    kept,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("wren", "Wren Okafor", "headset", "script", "poster"),
-    person("basil", "Basil Novak", "van_key", "contract"),
-    person("odile", "Odile Marsh", "headset", "script"),
-    person("teodor", "Teodor Haas", "contract", "poster"),
-    person(
+    ob.person("wren", "Wren Okafor", "headset", "script", "poster"),
+    ob.person("basil", "Basil Novak", "van_key", "contract"),
+    ob.person("odile", "Odile Marsh", "headset", "script"),
+    ob.person("teodor", "Teodor Haas", "contract", "poster"),
+    ob.person(
         "linnea",
         "Linnea Brandt",
         "script",
-        kept("glue_stick", at="store_room", facility="supply_cupboard"),
-        kept("marker_pen", at="store_room", facility="supply_cupboard"),
+        ob.kept("glue_stick", at="store_room", facility="supply_cupboard"),
+        ob.kept("marker_pen", at="store_room", facility="supply_cupboard"),
     ),
 )
 
 
 def raw_radio_station() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "radio_station",
         _PEOPLE,
         rooms=[
-            room("store_room", "Store room", 4.0, 20.5),
-            room("back_office", "Back office", 18.0, 20.5),
+            ob.room("store_room", "Store room", 4.0, 20.5),
+            ob.room("back_office", "Back office", 18.0, 20.5),
         ],
         item_types=[
-            item("headset", "headset"),
-            item("van_key", "van key", synonyms=["van keys"]),
-            item("glue_stick", "glue stick"),
-            item("marker_pen", "marker pen"),
-            item("script", "script", "personal", synonyms=["show script"]),
-            item("contract", "contract", "personal"),
-            item("poster", "poster", "personal"),
+            ob.item("headset", "headset"),
+            ob.item("van_key", "van key", synonyms=["van keys"]),
+            ob.item("glue_stick", "glue stick"),
+            ob.item("marker_pen", "marker pen"),
+            ob.item("script", "script", "personal", synonyms=["show script"]),
+            ob.item("contract", "contract", "personal"),
+            ob.item("poster", "poster", "personal"),
         ],
         operations=[
-            operation("proof", "proofread", name="proofread", input="script"),
-            operation("vet", "vet", name="legal review", input="contract"),
-            operation("laminate", "laminate", input="poster"),
+            ob.operation("proof", "proofread", name="proofread", input="script"),
+            ob.operation("vet", "vet", name="legal review", input="contract"),
+            ob.operation("laminate", "laminate", input="poster"),
         ],
         facilities=[
-            facility("supply_cupboard", "supply cupboard", at="store_room", guards=["linnea"]),
-            facility(
+            ob.facility("supply_cupboard", "supply cupboard", at="store_room", guards=["linnea"]),
+            ob.facility(
                 "proof_desk",
                 "proofing desk",
                 at="back_office",
                 guards=["odile"],
                 operations=["proof"],
             ),
-            facility(
+            ob.facility(
                 "legal_desk", "legal desk", at="back_office", guards=["basil"], operations=["vet"]
             ),
-            facility(
+            ob.facility(
                 "laminator",
                 "laminator",
                 at="store_room",
@@ -80,4 +71,4 @@ def raw_radio_station() -> dict[str, Any]:
     )
 
 
-radio_station = parsed(raw_radio_station)
+radio_station = ob.parsed(raw_radio_station)

@@ -10,72 +10,60 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from helpers.office_builder import (
-    ASKS_NAME_AND_ADDRESS,
-    desk_row,
-    facility,
-    item,
-    kept,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-    write_office,
-)
+from helpers import office_builder as ob
 
-_IN_ARCHIVE = kept("film", at="store_room", facility="picture_archive")
-_IN_FRIDGE = kept("film", at="store_room", facility="fridge")
+_IN_ARCHIVE = ob.kept("film", at="store_room", facility="picture_archive")
+_IN_FRIDGE = ob.kept("film", at="store_room", facility="fridge")
 _PEOPLE = (
-    person("ada", "Ada Lindqvist", _IN_ARCHIVE, "drawings"),
-    person("bo", "Bo Farrow", _IN_FRIDGE, "drawings"),
-    person("cyrus", "Cyrus Mehta", "film", "drawings"),
-    person("amara", "Amara Osei", "drawings", "stamp"),
-    person("otto", "Otto Brandt", "tape_measure"),
-    person("kai", "Kai Nakamura", "tape_measure"),
-    person("pia", "Pia Holm", "stamp"),
-    person("sven", "Sven Aalto", "drawings"),
-    person("luc", "Luc Perrin"),
+    ob.person("ada", "Ada Lindqvist", _IN_ARCHIVE, "drawings"),
+    ob.person("bo", "Bo Farrow", _IN_FRIDGE, "drawings"),
+    ob.person("cyrus", "Cyrus Mehta", "film", "drawings"),
+    ob.person("amara", "Amara Osei", "drawings", "stamp"),
+    ob.person("otto", "Otto Brandt", "tape_measure"),
+    ob.person("kai", "Kai Nakamura", "tape_measure"),
+    ob.person("pia", "Pia Holm", "stamp"),
+    ob.person("sven", "Sven Aalto", "drawings"),
+    ob.person("luc", "Luc Perrin"),
 )
 
 
 def raw_studio() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "studio",
         _PEOPLE,
         everyone_owns=["file"],
-        desks=[*desk_row(8), (5.0, 13.0)],
+        desks=[*ob.desk_row(8), (5.0, 13.0)],
         rooms=[
-            room("store_room", "Store room", 11.0, 20.5),
-            room("lab", "Lab", 23.0, 20.5),
-            room("front_desk", "Front desk", 37.0, 20.5),
+            ob.room("store_room", "Store room", 11.0, 20.5),
+            ob.room("lab", "Lab", 23.0, 20.5),
+            ob.room("front_desk", "Front desk", 37.0, 20.5),
         ],
         item_types=[
-            item("tape_measure", "tape measure"),
-            item("film", "roll of film", "personal", synonyms=["film"]),
-            item(
+            ob.item("tape_measure", "tape measure"),
+            ob.item("film", "roll of film", "personal", synonyms=["film"]),
+            ob.item(
                 "drawings", "drawing set", "personal", signable=True, synonyms=["drawings", "plans"]
             ),
-            item("stamp", "approval stamp", seals=True, synonyms=["stamp"]),
-            item("file", "file", "electronic"),
-            item("photo_prints", "photo prints", "product", synonyms=["prints"]),
+            ob.item("stamp", "approval stamp", seals=True, synonyms=["stamp"]),
+            ob.item("file", "file", "electronic"),
+            ob.item("photo_prints", "photo prints", "product", synonyms=["prints"]),
         ],
         operations=[
-            operation("develop", "develop", input="film", product="photo_prints"),
-            operation(
+            ob.operation("develop", "develop", input="film", product="photo_prints"),
+            ob.operation(
                 "courier",
                 "courier",
                 "send out",
                 input="drawings",
                 sends_out=True,
-                destination_asked=ASKS_NAME_AND_ADDRESS,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
                 done="couriered",
             ),
         ],
         facilities=[
-            facility("picture_archive", "picture archive", at="store_room", guards=["otto"]),
-            facility("fridge", "fridge", at="store_room", guards=["kai"]),
-            facility(
+            ob.facility("picture_archive", "picture archive", at="store_room", guards=["otto"]),
+            ob.facility("fridge", "fridge", at="store_room", guards=["kai"]),
+            ob.facility(
                 "darkroom",
                 "darkroom",
                 at="lab",
@@ -83,7 +71,7 @@ def raw_studio() -> dict[str, Any]:
                 operations=["develop"],
                 products=["photo_prints"],
             ),
-            facility(
+            ob.facility(
                 "post_desk", "post desk", at="front_desk", guards=["luc"], operations=["courier"]
             ),
         ],
@@ -91,9 +79,9 @@ def raw_studio() -> dict[str, Any]:
     )
 
 
-studio = parsed(raw_studio)
+studio = ob.parsed(raw_studio)
 
 
 def write_studio(path: Path) -> Path:
     """The studio as an office file, for the command line (``--office``)."""
-    return write_office(raw_studio(), path)
+    return ob.write_office(raw_studio(), path)

@@ -10,73 +10,64 @@ from __future__ import annotations
 
 from typing import Any
 
-from helpers.office_builder import (
-    desk_row,
-    facility,
-    item,
-    office_file,
-    operation,
-    parsed,
-    person,
-    room,
-)
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    person("ines", "Ines Varga", "stamp", "plan", "tape"),
-    person("tobias", "Tobias Rehn", "stamp", "plan"),
-    person("bill", "Bill Osei", "plan", "tripod"),
-    person("noor", "Noor Haddad", "plan", "level"),
-    person("callum", "Callum Price", "plan", "tripod", "tape"),
-    person("otto", "Otto Lindgren", "plan", "level"),
+    ob.person("ines", "Ines Varga", "stamp", "plan", "tape"),
+    ob.person("tobias", "Tobias Rehn", "stamp", "plan"),
+    ob.person("bill", "Bill Osei", "plan", "tripod"),
+    ob.person("noor", "Noor Haddad", "plan", "level"),
+    ob.person("callum", "Callum Price", "plan", "tripod", "tape"),
+    ob.person("otto", "Otto Lindgren", "plan", "level"),
 )
 
 
 def raw_surveyors() -> dict[str, Any]:
-    return office_file(
+    return ob.office_file(
         "surveyors",
         _PEOPLE,
         everyone_owns=["drawing"],
-        desks=desk_row(len(_PEOPLE), x0=4.0),
+        desks=ob.desk_row(len(_PEOPLE), x0=4.0),
         rooms=[
-            room("plan_room", "Plan room", 4.0, 18.0),
-            room("post_room", "Post room", 16.0, 18.0),
+            ob.room("plan_room", "Plan room", 4.0, 18.0),
+            ob.room("post_room", "Post room", 16.0, 18.0),
         ],
         item_types=[
-            item("tape", "measuring tape", synonyms=["tape measure"]),
-            item("level", "spirit level", synonyms=["level"]),
-            item("tripod", "tripod"),
-            item(
+            ob.item("tape", "measuring tape", synonyms=["tape measure"]),
+            ob.item("level", "spirit level", synonyms=["level"]),
+            ob.item("tripod", "tripod"),
+            ob.item(
                 "stamp",
                 "chartered stamp",
                 seals=True,
                 synonyms=["stamp", "embosser", "practice seal"],
             ),
-            item(
+            ob.item(
                 "plan",
                 "plan",
                 "personal",
                 signable=True,
                 synonyms=["survey plan", "contract", "certificate"],
             ),
-            item(
+            ob.item(
                 "drawing", "drawing file", "electronic", synonyms=["drawing", "draft", "cad file"]
             ),
-            item("pdf", "PDF", "electronic", synonyms=["pdf file"]),
-            item("plot", "plot", "product", synonyms=["printout"]),
-            item("copy", "copy", "product", synonyms=["photocopy"]),
+            ob.item("pdf", "PDF", "electronic", synonyms=["pdf file"]),
+            ob.item("plot", "plot", "product", synonyms=["printout"]),
+            ob.item("copy", "copy", "product", synonyms=["photocopy"]),
         ],
         operations=[
-            operation("plot", "print", "plot", name="print", input="drawing", product="plot"),
-            operation("copy", "copy", "photocopy", input="plan", product="copy"),
-            operation(
+            ob.operation("plot", "print", "plot", name="print", input="drawing", product="plot"),
+            ob.operation("copy", "copy", "photocopy", input="plan", product="copy"),
+            ob.operation(
                 "scan", "scan", "digitise", input="plan", product="pdf", done="scanned to PDF"
             ),
-            operation("bind", "bind", input="plan"),
-            operation("courier", "courier", input="plan", sends_out=True),
-            operation("fax", "fax", input="plan", sends_out=True),
+            ob.operation("bind", "bind", input="plan"),
+            ob.operation("courier", "courier", input="plan", sends_out=True),
+            ob.operation("fax", "fax", input="plan", sends_out=True),
         ],
         facilities=[
-            facility(
+            ob.facility(
                 "copier",
                 "copier",
                 at="plan_room",
@@ -84,8 +75,8 @@ def raw_surveyors() -> dict[str, Any]:
                 operations=["copy", "scan", "bind"],
                 synonyms=["photocopier"],
             ),
-            facility("plotter", "plotter", at="plan_room", guards=["otto"], operations=["plot"]),
-            facility(
+            ob.facility("plotter", "plotter", at="plan_room", guards=["otto"], operations=["plot"]),
+            ob.facility(
                 "post_desk",
                 "post desk",
                 at="post_room",
@@ -98,4 +89,4 @@ def raw_surveyors() -> dict[str, Any]:
     )
 
 
-surveyors = parsed(raw_surveyors)
+surveyors = ob.parsed(raw_surveyors)
