@@ -8,143 +8,93 @@ belongings (a step ladder, a tape gun)."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("ines", "Ines Varga", [{"type": "tape_gun"}, {"type": "chart"}, {"type": "slide"}]),
-    ("tobias", "Tobias Reed", [{"type": "step_ladder"}, {"type": "chart"}]),
-    ("priya", "Priya Nair", [{"type": "tape_gun"}, {"type": "slide"}]),
-    ("jonas", "Jonas Kell", [{"type": "chart"}]),
-    ("mira", "Mira Sato", [{"type": "slide"}]),
-    ("oskar", "Oskar Lind", [{"type": "chart"}]),
+    ob.person("ines", "Ines Varga", "tape_gun", "chart", "slide"),
+    ob.person("tobias", "Tobias Reed", "step_ladder", "chart"),
+    ob.person("priya", "Priya Nair", "tape_gun", "slide"),
+    ob.person("jonas", "Jonas Kell", "chart"),
+    ob.person("mira", "Mira Sato", "slide"),
+    ob.person("oskar", "Oskar Lind", "chart"),
 )
 
 
 def raw_archive() -> dict[str, Any]:
-    return {
-        "name": "archive",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0), 1)
+    return ob.office_file(
+        "archive",
+        _PEOPLE,
+        everyone_owns=["doc_file"],
+        rooms=[
+            ob.room("copy_room", "Copy room", 4.0, 20.5),
+            ob.room("stack_room", "Stack room", 20.0, 20.5),
+        ],
+        item_types=[
+            ob.item("step_ladder", "step ladder", synonyms=["kick step"]),
+            ob.item("tape_gun", "tape gun"),
+            ob.item("chart", "chart", "personal", synonyms=["map sheet"]),
+            ob.item("slide", "glass slide", "personal", synonyms=["slide"]),
+            ob.item(
+                "doc_file", "document file", "electronic", synonyms=["document", "box list", "pdf"]
             ),
-            {"id": "copy_room", "kind": "facility", "name": "Copy room", "x": 4.0, "y": 20.5},
-            {"id": "stack_room", "kind": "facility", "name": "Stack room", "x": 20.0, "y": 20.5},
+            ob.item("printout", "printout", "product"),
+            ob.item("box_label", "box labels", "product", synonyms=["box label"]),
+            ob.item("pass_card", "visitor pass", "product", synonyms=["pass card"]),
+            ob.item("slide_scan", "slide scan", "electronic", synonyms=["slide image"]),
         ],
-        "item_types": [
-            {"id": "step_ladder", "name": "step ladder", "synonyms": ["kick step"]},
-            {"id": "tape_gun", "name": "tape gun"},
-            {"id": "chart", "name": "chart", "kind": "personal", "synonyms": ["map sheet"]},
-            {"id": "slide", "name": "glass slide", "kind": "personal", "synonyms": ["slide"]},
-            {
-                "id": "doc_file",
-                "name": "document file",
-                "kind": "electronic",
-                "synonyms": ["document", "box list", "pdf"],
-            },
-            {"id": "printout", "name": "printout", "kind": "product"},
-            {
-                "id": "box_label",
-                "name": "box labels",
-                "kind": "product",
-                "synonyms": ["box label"],
-            },
-            {
-                "id": "pass_card",
-                "name": "visitor pass",
-                "kind": "product",
-                "synonyms": ["pass card"],
-            },
-            {
-                "id": "slide_scan",
-                "name": "slide scan",
-                "kind": "electronic",
-                "synonyms": ["slide image"],
-            },
+        operations=[
+            ob.operation("print", "print", input="doc_file", product="printout"),
+            ob.operation(
+                "tag", "tag", name="print box labels", input="doc_file", product="box_label"
+            ),
+            ob.operation("badge", "issue", name="issue passes", product="pass_card"),
+            ob.operation("digitise", "scan", "digitise", input="slide", product="slide_scan"),
+            ob.operation("mount", "mount", "backboard", input="chart"),
         ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "doc_file",
-                "product": "printout",
-            },
-            {
-                "id": "tag",
-                "name": "print box labels",
-                "verbs": ["tag"],
-                "input": "doc_file",
-                "product": "box_label",
-            },
-            {"id": "badge", "name": "issue passes", "verbs": ["issue"], "product": "pass_card"},
-            {
-                "id": "digitise",
-                "name": "digitise",
-                "verbs": ["scan", "digitise"],
-                "input": "slide",
-                "product": "slide_scan",
-            },
-            {"id": "mount", "name": "mount", "verbs": ["mount", "backboard"], "input": "chart"},
+        facilities=[
+            ob.facility(
+                "printer",
+                "printer",
+                at="copy_room",
+                guards=["jonas"],
+                operations=["print"],
+                products=["printout"],
+            ),
+            ob.facility(
+                "tag_printer",
+                "tag printer",
+                at="stack_room",
+                guards=["mira", "oskar"],
+                operations=["tag"],
+                products=["box_label"],
+            ),
+            ob.facility(
+                "badge_press",
+                "badge press",
+                at="copy_room",
+                guards=["jonas"],
+                operations=["badge"],
+                products=["pass_card"],
+            ),
+            ob.facility(
+                "reel_reader",
+                "reel reader",
+                at="stack_room",
+                guards=["mira"],
+                operations=["digitise"],
+            ),
+            ob.facility(
+                "mount_press",
+                "mounting press",
+                at="stack_room",
+                guards=["oskar", "tobias"],
+                operations=["mount"],
+            ),
         ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "doc_file"}],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "printer",
-                "name": "printer",
-                "location": "copy_room",
-                "operations": ["print"],
-                "guards": ["jonas"],
-                "products": ["printout"],
-            },
-            {
-                "id": "tag_printer",
-                "name": "tag printer",
-                "location": "stack_room",
-                "operations": ["tag"],
-                "guards": ["mira", "oskar"],
-                "products": ["box_label"],
-            },
-            {
-                "id": "badge_press",
-                "name": "badge press",
-                "location": "copy_room",
-                "operations": ["badge"],
-                "guards": ["jonas"],
-                "products": ["pass_card"],
-            },
-            {
-                "id": "reel_reader",
-                "name": "reel reader",
-                "location": "stack_room",
-                "operations": ["digitise"],
-                "guards": ["mira"],
-            },
-            {
-                "id": "mount_press",
-                "name": "mounting press",
-                "location": "stack_room",
-                "operations": ["mount"],
-                "guards": ["oskar", "tobias"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "copy_room"},
-    }
+        home="copy_room",
+    )
 
 
-@functools.cache
-def archive() -> Office:
-    return parse_office(raw_archive(), "archive")
+archive = ob.parsed(raw_archive)

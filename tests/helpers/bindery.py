@@ -6,133 +6,89 @@ lunches; a kitchen makes coffee and water; condition reports are signed by a col
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
-_DESKS = tuple((5.0 + 4 * n, 6.0) for n in range(8))
-_PEOPLE: tuple[tuple[str, str, list[str], list[dict[str, Any]]], ...] = (
-    ("penny", "Penny Castellanos", [], [{"type": "puppet"}, {"type": "report"}]),
-    ("ivy", "Ivy Marchetti", ["Ives"], [{"type": "kick_stool"}]),
-    ("robin", "Robin Okonkwo", [], [{"type": "report"}]),
-    ("page", "Oksana Page", [], [{"type": "kick_stool"}, {"type": "report"}]),
-    ("thao", "Thảo Nguyễn", [], [{"type": "report"}]),
-    ("lukasz", "Łukasz Wróbel", ["Luke"], [{"type": "bone_folder"}]),
-    ("zoe", "Zoë Brandt", [], [{"type": "bone_folder"}, {"type": "report"}]),
-    (
-        "jurgen",
-        "Jürgen Falk",
-        [],
-        [{"type": "lunch", "at": "kitchen", "facility": "fridge"}, {"type": "report"}],
-    ),
+_PEOPLE = (
+    ob.person("penny", "Penny Castellanos", "puppet", "report"),
+    ob.person("ivy", "Ivy Marchetti", "kick_stool", aliases=["Ives"]),
+    ob.person("robin", "Robin Okonkwo", "report"),
+    ob.person("page", "Oksana Page", "kick_stool", "report"),
+    ob.person("thao", "Thảo Nguyễn", "report"),
+    ob.person("lukasz", "Łukasz Wróbel", "bone_folder", aliases=["Luke"]),
+    ob.person("zoe", "Zoë Brandt", "bone_folder", "report"),
+    ob.person("jurgen", "Jürgen Falk", ob.kept("lunch", at="kitchen", facility="fridge"), "report"),
 )
 
 
 def raw_bindery() -> dict[str, Any]:
-    return {
-        "name": "bindery",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": y}
-                for n, (x, y) in enumerate(_DESKS, 1)
+    return ob.office_file(
+        "bindery",
+        _PEOPLE,
+        everyone_owns=["flyer_file", "book"],
+        rooms=[
+            ob.room("workroom", "Workroom", 4.0, 20.5),
+            ob.room("kitchen", "Kitchen", 11.0, 20.5),
+        ],
+        item_types=[
+            ob.item("puppet", "puppet", synonyms=["hand puppet"]),
+            ob.item("kick_stool", "kick stool", synonyms=["step stool"]),
+            ob.item("bone_folder", "bone folder"),
+            ob.item("lunch", "lunch box", synonyms=["lunchbox"]),
+            ob.item("report", "condition report", "personal", signable=True),
+            ob.item("book", "worn book", synonyms=["damaged book"]),
+            ob.item("flyer_file", "flyer file", "electronic"),
+            ob.item("brochure", "brochure", "product", synonyms=["flyer"]),
+            ob.item("rebound", "rebound book", "product"),
+            ob.item("coffee", "coffee", "product"),
+            ob.item("water", "water", "product"),
+        ],
+        operations=[
+            ob.operation("print", "print", input="flyer_file", product="brochure"),
+            ob.operation("rebind", "rebind", input="book", product="rebound"),
+            ob.operation("brew", "brew", name="make coffee", product="coffee"),
+            ob.operation("pour", "pour", name="pour water", product="water"),
+        ],
+        facilities=[
+            ob.facility(
+                "printer",
+                "printer",
+                at="workroom",
+                guards=["page"],
+                operations=["print"],
+                products=["brochure"],
             ),
-            {"id": "workroom", "kind": "facility", "name": "Workroom", "x": 4.0, "y": 20.5},
-            {"id": "kitchen", "kind": "facility", "name": "Kitchen", "x": 11.0, "y": 20.5},
+            ob.facility(
+                "press",
+                "bindery press",
+                at="workroom",
+                guards=["page"],
+                operations=["rebind"],
+                products=["rebound"],
+            ),
+            ob.facility(
+                "fridge", "staff fridge", at="kitchen", guards=["robin"], synonyms=["fridge"]
+            ),
+            ob.facility(
+                "coffee_machine",
+                "coffee machine",
+                at="kitchen",
+                guards=["robin"],
+                operations=["brew"],
+                products=["coffee"],
+            ),
+            ob.facility(
+                "water_cooler",
+                "water cooler",
+                at="kitchen",
+                guards=["robin"],
+                operations=["pour"],
+                products=["water"],
+            ),
         ],
-        "item_types": [
-            {"id": "puppet", "name": "puppet", "synonyms": ["hand puppet"]},
-            {"id": "kick_stool", "name": "kick stool", "synonyms": ["step stool"]},
-            {"id": "bone_folder", "name": "bone folder"},
-            {"id": "lunch", "name": "lunch box", "synonyms": ["lunchbox"]},
-            {
-                "id": "report",
-                "name": "condition report",
-                "kind": "personal",
-                "signable": True,
-            },
-            {"id": "book", "name": "worn book", "synonyms": ["damaged book"]},
-            {"id": "flyer_file", "name": "flyer file", "kind": "electronic"},
-            {"id": "brochure", "name": "brochure", "kind": "product", "synonyms": ["flyer"]},
-            {"id": "rebound", "name": "rebound book", "kind": "product"},
-            {"id": "coffee", "name": "coffee", "kind": "product"},
-            {"id": "water", "name": "water", "kind": "product"},
-        ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "flyer_file",
-                "product": "brochure",
-            },
-            {
-                "id": "rebind",
-                "name": "rebind",
-                "verbs": ["rebind"],
-                "input": "book",
-                "product": "rebound",
-            },
-            {"id": "brew", "name": "make coffee", "verbs": ["brew"], "product": "coffee"},
-            {"id": "pour", "name": "pour water", "verbs": ["pour"], "product": "water"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": aliases,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "flyer_file"}, {"type": "book"}],
-            }
-            for n, (pid, name, aliases, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "printer",
-                "name": "printer",
-                "location": "workroom",
-                "operations": ["print"],
-                "guards": ["page"],
-                "products": ["brochure"],
-            },
-            {
-                "id": "press",
-                "name": "bindery press",
-                "location": "workroom",
-                "operations": ["rebind"],
-                "guards": ["page"],
-                "products": ["rebound"],
-            },
-            {
-                "id": "fridge",
-                "name": "staff fridge",
-                "synonyms": ["fridge"],
-                "location": "kitchen",
-                "guards": ["robin"],
-            },
-            {
-                "id": "coffee_machine",
-                "name": "coffee machine",
-                "location": "kitchen",
-                "operations": ["brew"],
-                "products": ["coffee"],
-                "guards": ["robin"],
-            },
-            {
-                "id": "water_cooler",
-                "name": "water cooler",
-                "location": "kitchen",
-                "operations": ["pour"],
-                "products": ["water"],
-                "guards": ["robin"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "workroom"},
-    }
+        home="workroom",
+    )
 
 
-@functools.cache
-def bindery() -> Office:
-    return parse_office(raw_bindery(), "bindery")
+bindery = ob.parsed(raw_bindery)

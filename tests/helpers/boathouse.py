@@ -5,112 +5,70 @@ nor paper), a printer and a desk of signable forms."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("ottilie", "Ottilie Brandt", [{"type": "headlamp"}, {"type": "form"}]),
-    ("bram", "Bram Okafor", [{"type": "stopwatch"}, {"type": "headlamp"}, {"type": "form"}]),
-    ("kasia", "Kasia Lind", [{"type": "radio"}, {"type": "form"}]),
-    ("femi", "Femi Adair", [{"type": "stopwatch"}, {"type": "form"}]),
-    ("rune", "Rune Solberg", [{"type": "oar_clamp"}, {"type": "form"}]),
+    ob.person("ottilie", "Ottilie Brandt", "headlamp", "form"),
+    ob.person("bram", "Bram Okafor", "stopwatch", "headlamp", "form"),
+    ob.person("kasia", "Kasia Lind", "radio", "form"),
+    ob.person("femi", "Femi Adair", "stopwatch", "form"),
+    ob.person("rune", "Rune Solberg", "oar_clamp", "form"),
 )
 
 
 def raw_boathouse() -> dict[str, Any]:
-    return {
-        "name": "boathouse",
-        "locations": [
-            *(
-                {
-                    "id": f"bay_{n}",
-                    "kind": "workstation",
-                    "name": f"Bay {n}",
-                    "x": 4.0 * n,
-                    "y": 5.0,
-                }
-                for n in range(1, len(_PEOPLE) + 1)
+    return ob.office_file(
+        "boathouse",
+        _PEOPLE,
+        everyone_owns=["log"],
+        desks=ob.desk_row(len(_PEOPLE), x0=4.0, y=5.0),
+        desk_word="bay",
+        rooms=[ob.room("tack_room", "Tack room", 4.0, 18.0)],
+        item_types=[
+            ob.item("headlamp", "headlamp", synonyms=["head torch"]),
+            ob.item("stopwatch", "stopwatch"),
+            ob.item("radio", "radio", synonyms=["walkie-talkie"]),
+            ob.item("oar_clamp", "oar clamp"),
+            ob.item("form", "form", "personal", signable=True, synonyms=["waiver", "entry form"]),
+            ob.item("log", "log", "electronic", synonyms=["spreadsheet"]),
+            ob.item("printout", "printout", "product"),
+        ],
+        operations=[
+            ob.operation("print", "print", input="log", product="printout"),
+            ob.operation("charge", "charge", "recharge", input="headlamp"),
+            ob.operation(
+                "courier",
+                "courier",
+                "dispatch",
+                input="form",
+                sends_out=True,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
             ),
-            {"id": "tack_room", "kind": "facility", "name": "Tack room", "x": 4.0, "y": 18.0},
         ],
-        "item_types": [
-            {"id": "headlamp", "name": "headlamp", "synonyms": ["head torch"]},
-            {"id": "stopwatch", "name": "stopwatch"},
-            {"id": "radio", "name": "radio", "synonyms": ["walkie-talkie"]},
-            {"id": "oar_clamp", "name": "oar clamp"},
-            {
-                "id": "form",
-                "name": "form",
-                "kind": "personal",
-                "signable": True,
-                "synonyms": ["waiver", "entry form"],
-            },
-            {"id": "log", "name": "log", "kind": "electronic", "synonyms": ["spreadsheet"]},
-            {"id": "printout", "name": "printout", "kind": "product"},
+        facilities=[
+            ob.facility(
+                "printer", "printer", at="tack_room", guards=["rune"], operations=["print"]
+            ),
+            ob.facility(
+                "charging_shelf",
+                "charging shelf",
+                at="tack_room",
+                guards=["kasia"],
+                operations=["charge"],
+            ),
+            ob.facility(
+                "dispatch_tray",
+                "dispatch tray",
+                at="tack_room",
+                guards=["femi"],
+                operations=["courier"],
+            ),
         ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "log",
-                "product": "printout",
-            },
-            {
-                "id": "charge",
-                "name": "charge",
-                "verbs": ["charge", "recharge"],
-                "input": "headlamp",
-            },
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier", "dispatch"],
-                "input": "form",
-                "sends_out": True,
-                "destination_asked": "the name and address of the place",
-            },
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"bay_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "log"}],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "printer",
-                "name": "printer",
-                "location": "tack_room",
-                "operations": ["print"],
-                "guards": ["rune"],
-            },
-            {
-                "id": "charging_shelf",
-                "name": "charging shelf",
-                "location": "tack_room",
-                "operations": ["charge"],
-                "guards": ["kasia"],
-            },
-            {
-                "id": "dispatch_tray",
-                "name": "dispatch tray",
-                "location": "tack_room",
-                "operations": ["courier"],
-                "guards": ["femi"],
-            },
-        ],
-        "groups": [{"id": "crew", "name": "Crew", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "tack_room"},
-    }
+        home="tack_room",
+        group=("crew", "Crew"),
+    )
 
 
-@functools.cache
-def boathouse() -> Office:
-    return parse_office(raw_boathouse(), "boathouse")
+boathouse = ob.parsed(raw_boathouse)

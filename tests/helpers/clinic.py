@@ -5,86 +5,48 @@ makes printouts."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
-_DESKS = (
-    (5.0, 6.0),
-    (9.0, 6.0),
-    (13.0, 6.0),
-    (17.0, 6.0),
-    (21.0, 6.0),
-    (25.0, 6.0),
-    (29.0, 6.0),
-)
 _PEOPLE = (
-    ("dawn", "Dawn Ellis", [{"type": "thermometer"}, {"type": "document"}]),
-    ("rich", "Rich Adeyemi", [{"type": "clipboard"}, {"type": "document"}]),
-    ("may", "May Oduya", [{"type": "ice_pack", "at": "staff_room", "facility": "fridge"}]),
-    ("hal", "Hal Brooks", [{"type": "thermometer"}, {"type": "document"}]),
-    ("ines", "Inés Vidal", [{"type": "clipboard"}, {"type": "document"}]),
-    ("tomas", "Tomás Reyes", [{"type": "document"}]),
-    ("chip", "Chip Moreno", [{"type": "chip_scanner"}, {"type": "document"}]),
+    ob.person("dawn", "Dawn Ellis", "thermometer", "document"),
+    ob.person("rich", "Rich Adeyemi", "clipboard", "document", aliases=["Manager Rich"]),
+    ob.person("may", "May Oduya", ob.kept("ice_pack", at="staff_room", facility="fridge")),
+    ob.person("hal", "Hal Brooks", "thermometer", "document"),
+    ob.person("ines", "Inés Vidal", "clipboard", "document"),
+    ob.person("tomas", "Tomás Reyes", "document"),
+    ob.person("chip", "Chip Moreno", "chip_scanner", "document"),
 )
 
 
 def raw_clinic() -> dict[str, Any]:
-    return {
-        "name": "clinic",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": y}
-                for n, (x, y) in enumerate(_DESKS, 1)
+    return ob.office_file(
+        "clinic",
+        _PEOPLE,
+        everyone_owns=["file"],
+        rooms=[
+            ob.room("print_corner", "Print corner", 4.0, 20.5),
+            ob.room("staff_room", "Staff room", 11.0, 20.5),
+        ],
+        item_types=[
+            ob.item("thermometer", "thermometer"),
+            ob.item("clipboard", "clipboard"),
+            ob.item("chip_scanner", "microchip scanner", synonyms=["chip reader"]),
+            ob.item("ice_pack", "ice pack", "personal"),
+            ob.item("document", "document", "personal", synonyms=["form"]),
+            ob.item("file", "file", "electronic", synonyms=["rota"]),
+            ob.item("printout", "printout", "product"),
+        ],
+        operations=[ob.operation("print", "print", input="file", product="printout")],
+        facilities=[
+            ob.facility(
+                "printer", "printer", at="print_corner", guards=["tomas"], operations=["print"]
             ),
-            {"id": "print_corner", "kind": "facility", "name": "Print corner", "x": 4.0, "y": 20.5},
-            {"id": "staff_room", "kind": "facility", "name": "Staff room", "x": 11.0, "y": 20.5},
+            ob.facility("fridge", "fridge", at="staff_room", guards=["hal"]),
         ],
-        "item_types": [
-            {"id": "thermometer", "name": "thermometer"},
-            {"id": "clipboard", "name": "clipboard"},
-            {"id": "chip_scanner", "name": "microchip scanner", "synonyms": ["chip reader"]},
-            {"id": "ice_pack", "name": "ice pack", "kind": "personal"},
-            {"id": "document", "name": "document", "kind": "personal", "synonyms": ["form"]},
-            {"id": "file", "name": "file", "kind": "electronic", "synonyms": ["rota"]},
-            {"id": "printout", "name": "printout", "kind": "product"},
-        ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "file",
-                "product": "printout",
-            }
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "file"}],
-                "aliases": ["Manager Rich"] if pid == "rich" else [],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "printer",
-                "name": "printer",
-                "location": "print_corner",
-                "operations": ["print"],
-                "guards": ["tomas"],
-            },
-            {"id": "fridge", "name": "fridge", "location": "staff_room", "guards": ["hal"]},
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "print_corner"},
-    }
+        home="print_corner",
+    )
 
 
-@functools.cache
-def clinic() -> Office:
-    return parse_office(raw_clinic(), "clinic")
+clinic = ob.parsed(raw_clinic)

@@ -6,103 +6,71 @@ ordinary belongings (a step stool, a hole punch) and personal papers (a ledger, 
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("wren", "Wren Okafor", [{"type": "step_stool"}, {"type": "ledger"}, {"type": "poster"}]),
-    ("basil", "Basil Moreau", [{"type": "hole_punch"}, {"type": "ledger"}]),
-    ("ottilie", "Ottilie Brandt", [{"type": "step_stool"}, {"type": "poster"}]),
-    ("cosmo", "Cosmo Delacroix", [{"type": "ledger"}]),
-    ("juniper", "Juniper Hale", [{"type": "hole_punch"}, {"type": "poster"}]),
+    ob.person("wren", "Wren Okafor", "step_stool", "ledger", "poster"),
+    ob.person("basil", "Basil Moreau", "hole_punch", "ledger"),
+    ob.person("ottilie", "Ottilie Brandt", "step_stool", "poster"),
+    ob.person("cosmo", "Cosmo Delacroix", "ledger"),
+    ob.person("juniper", "Juniper Hale", "hole_punch", "poster"),
 )
 
 
 def raw_guesthouse() -> dict[str, Any]:
-    return {
-        "name": "guesthouse",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0), 1)
+    return ob.office_file(
+        "guesthouse",
+        _PEOPLE,
+        rooms=[
+            ob.room("back_room", "Back room", 4.0, 20.5),
+            ob.room("pantry", "Pantry", 20.0, 20.5),
+        ],
+        item_types=[
+            ob.item("step_stool", "step stool", synonyms=["kick stool"]),
+            ob.item("hole_punch", "hole punch"),
+            ob.item("ledger", "ledger", "personal", synonyms=["day book"]),
+            ob.item("poster", "poster", "personal"),
+            ob.item("door_card", "door card", "product", synonyms=["key card", "room card"]),
+            ob.item("tea", "tea", "product", mass=True),
+        ],
+        operations=[
+            ob.operation("encode", "encode", "cut", product="door_card"),
+            ob.operation("brew", "brew", product="tea"),
+            ob.operation("shred", "shred", input="ledger", consumes=True),
+            ob.operation("laminate", "laminate", input="poster"),
+        ],
+        facilities=[
+            ob.facility(
+                "encoder",
+                "card encoder",
+                at="back_room",
+                guards=["basil"],
+                operations=["encode"],
+                products=["door_card"],
             ),
-            {"id": "back_room", "kind": "facility", "name": "Back room", "x": 4.0, "y": 20.5},
-            {"id": "pantry", "kind": "facility", "name": "Pantry", "x": 20.0, "y": 20.5},
+            ob.facility(
+                "urn",
+                "tea urn",
+                at="pantry",
+                guards=["cosmo"],
+                operations=["brew"],
+                products=["tea"],
+            ),
+            ob.facility(
+                "shredder", "shredder", at="back_room", guards=["basil"], operations=["shred"]
+            ),
+            ob.facility(
+                "laminator",
+                "laminator",
+                at="pantry",
+                guards=["cosmo", "juniper"],
+                operations=["laminate"],
+            ),
         ],
-        "item_types": [
-            {"id": "step_stool", "name": "step stool", "synonyms": ["kick stool"]},
-            {"id": "hole_punch", "name": "hole punch"},
-            {"id": "ledger", "name": "ledger", "kind": "personal", "synonyms": ["day book"]},
-            {"id": "poster", "name": "poster", "kind": "personal"},
-            {
-                "id": "door_card",
-                "name": "door card",
-                "kind": "product",
-                "synonyms": ["key card", "room card"],
-            },
-            {"id": "tea", "name": "tea", "kind": "product", "mass": True},
-        ],
-        "operations": [
-            {"id": "encode", "name": "encode", "verbs": ["encode", "cut"], "product": "door_card"},
-            {"id": "brew", "name": "brew", "verbs": ["brew"], "product": "tea"},
-            {
-                "id": "shred",
-                "name": "shred",
-                "verbs": ["shred"],
-                "input": "ledger",
-                "consumes": True,
-            },
-            {"id": "laminate", "name": "laminate", "verbs": ["laminate"], "input": "poster"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": owns,
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "encoder",
-                "name": "card encoder",
-                "location": "back_room",
-                "operations": ["encode"],
-                "guards": ["basil"],
-                "products": ["door_card"],
-            },
-            {
-                "id": "urn",
-                "name": "tea urn",
-                "location": "pantry",
-                "operations": ["brew"],
-                "guards": ["cosmo"],
-                "products": ["tea"],
-            },
-            {
-                "id": "shredder",
-                "name": "shredder",
-                "location": "back_room",
-                "operations": ["shred"],
-                "guards": ["basil"],
-            },
-            {
-                "id": "laminator",
-                "name": "laminator",
-                "location": "pantry",
-                "operations": ["laminate"],
-                "guards": ["cosmo", "juniper"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "back_room"},
-    }
+        home="back_room",
+    )
 
 
-@functools.cache
-def guesthouse() -> Office:
-    return parse_office(raw_guesthouse(), "guesthouse")
+guesthouse = ob.parsed(raw_guesthouse)

@@ -8,134 +8,98 @@ called a drink or something to write with."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
-_PEOPLE: tuple[tuple[str, str, list[str], list[dict[str, Any]]], ...] = (
-    ("hamid", "Hamid Rahimi", [], [{"type": "folder"}, {"type": "step_stool"}]),
-    ("bea", "Bea Lindqvist", [], [{"type": "folder"}, {"type": "ladder"}]),
-    ("quinn", "Ms Quinn Ashby", ["Ms Ashby"], [{"type": "folder"}]),
-    ("dara", "Dara Flynn", [], [{"type": "book_cart"}, {"type": "storybook"}]),
-    ("mei", "Mei Tanaka", [], [{"type": "step_stool"}, {"type": "storybook"}]),
-    (
-        "yusuf",
-        "Yusuf Demir",
-        [],
-        [{"type": "pump", "at": "post_room", "facility": "post_desk"}, {"type": "ladder"}],
+_PEOPLE = (
+    ob.person("hamid", "Hamid Rahimi", "folder", "step_stool"),
+    ob.person("bea", "Bea Lindqvist", "folder", "ladder"),
+    ob.person("quinn", "Ms Quinn Ashby", "folder", aliases=["Ms Ashby"]),
+    ob.person("dara", "Dara Flynn", "book_cart", "storybook"),
+    ob.person("mei", "Mei Tanaka", "step_stool", "storybook"),
+    ob.person(
+        "yusuf", "Yusuf Demir", ob.kept("pump", at="post_room", facility="post_desk"), "ladder"
     ),
-    ("oona", "Oona Byrne", [], [{"type": "storybook"}]),
-    ("chau", "Trần Bảo Châu", [], [{"type": "storybook"}]),
-    ("sian", "Siân Pryce", [], [{"type": "step_stool"}]),
+    ob.person("oona", "Oona Byrne", "storybook"),
+    ob.person("chau", "Trần Bảo Châu", "storybook"),
+    ob.person("sian", "Siân Pryce", "step_stool"),
 )
 
 
 def raw_hostel() -> dict[str, Any]:
-    return {
-        "name": "hostel",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0), 1)
+    return ob.office_file(
+        "hostel",
+        _PEOPLE,
+        everyone_owns=["rota", "notice"],
+        rooms=[
+            ob.room("post_room", "Post room", 4.0, 20.5),
+            ob.room("kitchen", "Kitchen", 14.0, 20.5),
+            ob.room("laundry", "Laundry", 24.0, 20.5),
+        ],
+        item_types=[
+            ob.item("folder", "project folder", synonyms=["folder"]),
+            ob.item("step_stool", "step stool"),
+            ob.item("ladder", "ladder"),
+            ob.item("book_cart", "book cart", synonyms=["book trolley"]),
+            ob.item("storybook", "storybook", "personal", synonyms=["book"]),
+            ob.item("pump", "bike pump"),
+            ob.item("parcel", "parcel", synonyms=["package"]),
+            ob.item("kettle", "kettle"),
+            ob.item("iron", "iron"),
+            ob.item("rota", "file", "electronic", synonyms=["spreadsheet"]),
+            ob.item("notice", "notice", "personal"),
+            ob.item("printout", "printout", "product"),
+            ob.item("tea", "tea", "product"),
+            ob.item("cocoa", "hot chocolate", "product"),
+        ],
+        operations=[
+            ob.operation(
+                "courier",
+                "courier",
+                "post",
+                input="parcel",
+                sends_out=True,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
             ),
-            {"id": "post_room", "kind": "facility", "name": "Post room", "x": 4.0, "y": 20.5},
-            {"id": "kitchen", "kind": "facility", "name": "Kitchen", "x": 14.0, "y": 20.5},
-            {"id": "laundry", "kind": "facility", "name": "Laundry", "x": 24.0, "y": 20.5},
+            ob.operation("print", "print", input="rota", product="printout"),
+            ob.operation("laminate", "laminate", input="notice"),
+            ob.operation("shred", "shred", input="notice", consumes=True),
+            ob.operation("brew", "brew", name="make tea", product="tea"),
+            ob.operation("cocoa", name="make hot chocolate", product="cocoa"),
         ],
-        "item_types": [
-            {"id": "folder", "name": "project folder", "synonyms": ["folder"]},
-            {"id": "step_stool", "name": "step stool"},
-            {"id": "ladder", "name": "ladder"},
-            {"id": "book_cart", "name": "book cart", "synonyms": ["book trolley"]},
-            {"id": "storybook", "name": "storybook", "kind": "personal", "synonyms": ["book"]},
-            {"id": "pump", "name": "bike pump"},
-            {"id": "parcel", "name": "parcel", "synonyms": ["package"]},
-            {"id": "kettle", "name": "kettle"},
-            {"id": "iron", "name": "iron"},
-            {"id": "rota", "name": "file", "kind": "electronic", "synonyms": ["spreadsheet"]},
-            {"id": "notice", "name": "notice", "kind": "personal"},
-            {"id": "printout", "name": "printout", "kind": "product"},
-            {"id": "tea", "name": "tea", "kind": "product"},
-            {"id": "cocoa", "name": "hot chocolate", "kind": "product"},
+        facilities=[
+            ob.facility(
+                "post_desk",
+                "post desk",
+                at="post_room",
+                guards=["yusuf"],
+                operations=["courier"],
+                supplies=[{"type": "parcel", "count": 1}],
+            ),
+            ob.facility(
+                "copier",
+                "copier",
+                at="post_room",
+                guards=["bea"],
+                operations=["print", "laminate", "shred"],
+                products=["printout"],
+            ),
+            ob.facility(
+                "kitchen_counter",
+                "kitchen counter",
+                at="kitchen",
+                guards=["oona"],
+                operations=["brew", "cocoa"],
+                products=["tea", "cocoa"],
+                supplies=["kettle"],
+            ),
+            ob.facility(
+                "laundry_shelf", "laundry shelf", at="laundry", guards=["mei"], supplies=["iron"]
+            ),
         ],
-        "operations": [
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier", "post"],
-                "input": "parcel",
-                "sends_out": True,
-                "destination_asked": "the name and address of the place",
-            },
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "rota",
-                "product": "printout",
-            },
-            {"id": "laminate", "name": "laminate", "verbs": ["laminate"], "input": "notice"},
-            {
-                "id": "shred",
-                "name": "shred",
-                "verbs": ["shred"],
-                "input": "notice",
-                "consumes": True,
-            },
-            {"id": "brew", "name": "make tea", "verbs": ["brew"], "product": "tea"},
-            {"id": "cocoa", "name": "make hot chocolate", "product": "cocoa"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": aliases,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "rota"}, {"type": "notice"}],
-            }
-            for n, (pid, name, aliases, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "post_desk",
-                "name": "post desk",
-                "location": "post_room",
-                "operations": ["courier"],
-                "guards": ["yusuf"],
-                "supplies": [{"type": "parcel", "count": 1}],
-            },
-            {
-                "id": "copier",
-                "name": "copier",
-                "location": "post_room",
-                "operations": ["print", "laminate", "shred"],
-                "products": ["printout"],
-                "guards": ["bea"],
-            },
-            {
-                "id": "kitchen_counter",
-                "name": "kitchen counter",
-                "location": "kitchen",
-                "operations": ["brew", "cocoa"],
-                "products": ["tea", "cocoa"],
-                "guards": ["oona"],
-                "supplies": [{"type": "kettle"}],
-            },
-            {
-                "id": "laundry_shelf",
-                "name": "laundry shelf",
-                "location": "laundry",
-                "guards": ["mei"],
-                "supplies": [{"type": "iron"}],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "post_room"},
-    }
+        home="post_room",
+    )
 
 
-@functools.cache
-def hostel() -> Office:
-    return parse_office(raw_hostel(), "hostel")
+hostel = ob.parsed(raw_hostel)

@@ -7,134 +7,77 @@ facilities (the green room, the stage door)."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("ann", "Ann Mbeki", [], [{"type": "torch"}, {"type": "contract"}]),
-    ("roseanne", "Roseanne Vale", ["Anne"], [{"type": "tape_measure"}, {"type": "contract"}]),
-    ("jon", "Jon Petrov", [], [{"type": "torch"}, {"type": "contract"}, {"type": "lanyard"}]),
-    ("jonathan", "Jonathan Wilde", ["John"], [{"type": "lanyard"}, {"type": "contract"}]),
-    ("oona", "Oona Beck", [], [{"type": "tape_measure"}, {"type": "contract"}]),
-    ("dev", "Dev Kapoor", ["Devraj"], [{"type": "torch"}, {"type": "contract"}]),
+    ob.person("ann", "Ann Mbeki", "torch", "contract"),
+    ob.person("roseanne", "Roseanne Vale", "tape_measure", "contract", aliases=["Anne"]),
+    ob.person("jon", "Jon Petrov", "torch", "contract", "lanyard"),
+    ob.person("jonathan", "Jonathan Wilde", "lanyard", "contract", aliases=["John"]),
+    ob.person("oona", "Oona Beck", "tape_measure", "contract"),
+    ob.person("dev", "Dev Kapoor", "torch", "contract", aliases=["Devraj"]),
 )
 
 
 def raw_playhouse() -> dict[str, Any]:
-    return {
-        "name": "playhouse",
-        "locations": [
-            *(
-                {
-                    "id": f"desk_{n}",
-                    "kind": "workstation",
-                    "name": f"Desk {n}",
-                    "x": 4.0 * n,
-                    "y": 5.0,
-                }
-                for n in range(1, len(_PEOPLE) + 1)
+    return ob.office_file(
+        "playhouse",
+        _PEOPLE,
+        everyone_owns=["rota"],
+        desks=ob.desk_row(len(_PEOPLE), x0=4.0, y=5.0),
+        rooms=[
+            ob.room("print_nook", "Print nook", 4.0, 18.0),
+            ob.room("store_room", "Store room", 12.0, 18.0),
+            ob.room("stage_door", "Stage door", 20.0, 18.0),
+            ob.room("green_room", "Green room", 28.0, 18.0, kind="room"),
+        ],
+        item_types=[
+            ob.item("torch", "torch", synonyms=["flashlight"]),
+            ob.item("tape_measure", "tape measure"),
+            ob.item("lanyard", "lanyard", synonyms=["pass"]),
+            ob.item("cotton_gloves", "cotton gloves", synonyms=["white gloves"]),
+            ob.item("gaffer_tape", "gaffer tape", consumable=True, mass=True),
+            ob.item(
+                "contract", "contract", "personal", signable=True, synonyms=["agreement", "rider"]
             ),
-            {"id": "print_nook", "kind": "facility", "name": "Print nook", "x": 4.0, "y": 18.0},
-            {"id": "store_room", "kind": "facility", "name": "Store room", "x": 12.0, "y": 18.0},
-            {"id": "stage_door", "kind": "facility", "name": "Stage door", "x": 20.0, "y": 18.0},
-            {"id": "green_room", "kind": "room", "name": "Green room", "x": 28.0, "y": 18.0},
+            ob.item("rota", "rota", "electronic", synonyms=["schedule"]),
+            ob.item("printout", "printout", "product"),
+            ob.item("copy", "photocopy", "product", synonyms=["copy"]),
         ],
-        "item_types": [
-            {"id": "torch", "name": "torch", "synonyms": ["flashlight"]},
-            {"id": "tape_measure", "name": "tape measure"},
-            {"id": "lanyard", "name": "lanyard", "synonyms": ["pass"]},
-            {"id": "cotton_gloves", "name": "cotton gloves", "synonyms": ["white gloves"]},
-            {"id": "gaffer_tape", "name": "gaffer tape", "consumable": True, "mass": True},
-            {
-                "id": "contract",
-                "name": "contract",
-                "kind": "personal",
-                "signable": True,
-                "synonyms": ["agreement", "rider"],
-            },
-            {"id": "rota", "name": "rota", "kind": "electronic", "synonyms": ["schedule"]},
-            {"id": "printout", "name": "printout", "kind": "product"},
-            {"id": "copy", "name": "photocopy", "kind": "product", "synonyms": ["copy"]},
+        operations=[
+            ob.operation("print", "print", input="rota", product="printout"),
+            ob.operation("copy", "copy", "photocopy", input="contract", product="copy"),
+            ob.operation("courier", "courier", input="contract", sends_out=True),
+            ob.operation("fax", "fax", input="contract", sends_out=True),
         ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "rota",
-                "product": "printout",
-            },
-            {
-                "id": "copy",
-                "name": "copy",
-                "verbs": ["copy", "photocopy"],
-                "input": "contract",
-                "product": "copy",
-            },
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier"],
-                "input": "contract",
-                "sends_out": True,
-            },
-            {
-                "id": "fax",
-                "name": "fax",
-                "verbs": ["fax"],
-                "input": "contract",
-                "sends_out": True,
-            },
+        facilities=[
+            ob.facility(
+                "copier", "copier", at="print_nook", guards=["oona"], operations=["print", "copy"]
+            ),
+            ob.facility(
+                "props_cupboard",
+                "props cupboard",
+                at="store_room",
+                guards=["dev"],
+                supplies=["cotton_gloves", "gaffer_tape"],
+                synonyms=["cupboard"],
+            ),
+            ob.facility(
+                "courier_desk",
+                "courier desk",
+                at="stage_door",
+                guards=["jon"],
+                operations=["courier"],
+            ),
+            ob.facility(
+                "fax_machine", "fax machine", at="print_nook", guards=["oona"], operations=["fax"]
+            ),
         ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": aliases,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "rota"}],
-            }
-            for n, (pid, name, aliases, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "copier",
-                "name": "copier",
-                "location": "print_nook",
-                "operations": ["print", "copy"],
-                "guards": ["oona"],
-            },
-            {
-                "id": "props_cupboard",
-                "name": "props cupboard",
-                "synonyms": ["cupboard"],
-                "location": "store_room",
-                "guards": ["dev"],
-                "supplies": [{"type": "cotton_gloves"}, {"type": "gaffer_tape"}],
-            },
-            {
-                "id": "courier_desk",
-                "name": "courier desk",
-                "location": "stage_door",
-                "operations": ["courier"],
-                "guards": ["jon"],
-            },
-            {
-                "id": "fax_machine",
-                "name": "fax machine",
-                "location": "print_nook",
-                "operations": ["fax"],
-                "guards": ["oona"],
-            },
-        ],
-        "groups": [{"id": "company", "name": "Company", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "print_nook"},
-    }
+        home="print_nook",
+        group=("company", "Company"),
+    )
 
 
-@functools.cache
-def playhouse() -> Office:
-    return parse_office(raw_playhouse(), "playhouse")
+playhouse = ob.parsed(raw_playhouse)

@@ -6,93 +6,69 @@ changed); ordinary belongings (a headset, a van key)."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("wren", "Wren Okafor", [{"type": "headset"}, {"type": "script"}, {"type": "poster"}]),
-    ("basil", "Basil Novak", [{"type": "van_key"}, {"type": "contract"}]),
-    ("odile", "Odile Marsh", [{"type": "headset"}, {"type": "script"}]),
-    ("teodor", "Teodor Haas", [{"type": "contract"}, {"type": "poster"}]),
-    ("linnea", "Linnea Brandt", [{"type": "script"}]),
+    ob.person("wren", "Wren Okafor", "headset", "script", "poster"),
+    ob.person("basil", "Basil Novak", "van_key", "contract"),
+    ob.person("odile", "Odile Marsh", "headset", "script"),
+    ob.person("teodor", "Teodor Haas", "contract", "poster"),
+    ob.person(
+        "linnea",
+        "Linnea Brandt",
+        "script",
+        ob.kept("glue_stick", at="store_room", facility="supply_cupboard"),
+        ob.kept("marker_pen", at="store_room", facility="supply_cupboard"),
+    ),
 )
 
 
 def raw_radio_station() -> dict[str, Any]:
-    kept = [
-        {"type": "glue_stick", "at": "store_room", "facility": "supply_cupboard"},
-        {"type": "marker_pen", "at": "store_room", "facility": "supply_cupboard"},
-    ]
-    return {
-        "name": "radio_station",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0), 1)
+    return ob.office_file(
+        "radio_station",
+        _PEOPLE,
+        rooms=[
+            ob.room("store_room", "Store room", 4.0, 20.5),
+            ob.room("back_office", "Back office", 18.0, 20.5),
+        ],
+        item_types=[
+            ob.item("headset", "headset"),
+            ob.item("van_key", "van key", synonyms=["van keys"]),
+            ob.item("glue_stick", "glue stick"),
+            ob.item("marker_pen", "marker pen"),
+            ob.item("script", "script", "personal", synonyms=["show script"]),
+            ob.item("contract", "contract", "personal"),
+            ob.item("poster", "poster", "personal"),
+        ],
+        operations=[
+            ob.operation("proof", "proofread", name="proofread", input="script"),
+            ob.operation("vet", "vet", name="legal review", input="contract"),
+            ob.operation("laminate", "laminate", input="poster"),
+        ],
+        facilities=[
+            ob.facility("supply_cupboard", "supply cupboard", at="store_room", guards=["linnea"]),
+            ob.facility(
+                "proof_desk",
+                "proofing desk",
+                at="back_office",
+                guards=["odile"],
+                operations=["proof"],
             ),
-            {"id": "store_room", "kind": "facility", "name": "Store room", "x": 4.0, "y": 20.5},
-            {"id": "back_office", "kind": "facility", "name": "Back office", "x": 18.0, "y": 20.5},
+            ob.facility(
+                "legal_desk", "legal desk", at="back_office", guards=["basil"], operations=["vet"]
+            ),
+            ob.facility(
+                "laminator",
+                "laminator",
+                at="store_room",
+                guards=["teodor"],
+                operations=["laminate"],
+            ),
         ],
-        "item_types": [
-            {"id": "headset", "name": "headset"},
-            {"id": "van_key", "name": "van key", "synonyms": ["van keys"]},
-            {"id": "glue_stick", "name": "glue stick"},
-            {"id": "marker_pen", "name": "marker pen"},
-            {"id": "script", "name": "script", "kind": "personal", "synonyms": ["show script"]},
-            {"id": "contract", "name": "contract", "kind": "personal"},
-            {"id": "poster", "name": "poster", "kind": "personal"},
-        ],
-        "operations": [
-            {"id": "proof", "name": "proofread", "verbs": ["proofread"], "input": "script"},
-            {"id": "vet", "name": "legal review", "verbs": ["vet"], "input": "contract"},
-            {"id": "laminate", "name": "laminate", "verbs": ["laminate"], "input": "poster"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, *(kept if pid == "linnea" else [])],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "supply_cupboard",
-                "name": "supply cupboard",
-                "location": "store_room",
-                "guards": ["linnea"],
-            },
-            {
-                "id": "proof_desk",
-                "name": "proofing desk",
-                "location": "back_office",
-                "operations": ["proof"],
-                "guards": ["odile"],
-            },
-            {
-                "id": "legal_desk",
-                "name": "legal desk",
-                "location": "back_office",
-                "operations": ["vet"],
-                "guards": ["basil"],
-            },
-            {
-                "id": "laminator",
-                "name": "laminator",
-                "location": "store_room",
-                "operations": ["laminate"],
-                "guards": ["teodor"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "store_room"},
-    }
+        home="store_room",
+    )
 
 
-@functools.cache
-def radio_station() -> Office:
-    return parse_office(raw_radio_station(), "radio_station")
+radio_station = ob.parsed(raw_radio_station)

@@ -8,132 +8,85 @@ lists."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("ines", "Ines Varga", ["stamp", "plan", "tape"]),
-    ("tobias", "Tobias Rehn", ["stamp", "plan"]),
-    ("bill", "Bill Osei", ["plan", "tripod"]),
-    ("noor", "Noor Haddad", ["plan", "level"]),
-    ("callum", "Callum Price", ["plan", "tripod", "tape"]),
-    ("otto", "Otto Lindgren", ["plan", "level"]),
+    ob.person("ines", "Ines Varga", "stamp", "plan", "tape"),
+    ob.person("tobias", "Tobias Rehn", "stamp", "plan"),
+    ob.person("bill", "Bill Osei", "plan", "tripod"),
+    ob.person("noor", "Noor Haddad", "plan", "level"),
+    ob.person("callum", "Callum Price", "plan", "tripod", "tape"),
+    ob.person("otto", "Otto Lindgren", "plan", "level"),
 )
 
 
 def raw_surveyors() -> dict[str, Any]:
-    return {
-        "name": "surveyors",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": 4.0 * n}
-                | {"y": 6.0}
-                for n in range(1, len(_PEOPLE) + 1)
+    return ob.office_file(
+        "surveyors",
+        _PEOPLE,
+        everyone_owns=["drawing"],
+        desks=ob.desk_row(len(_PEOPLE), x0=4.0),
+        rooms=[
+            ob.room("plan_room", "Plan room", 4.0, 18.0),
+            ob.room("post_room", "Post room", 16.0, 18.0),
+        ],
+        item_types=[
+            ob.item("tape", "measuring tape", synonyms=["tape measure"]),
+            ob.item("level", "spirit level", synonyms=["level"]),
+            ob.item("tripod", "tripod"),
+            ob.item(
+                "stamp",
+                "chartered stamp",
+                seals=True,
+                synonyms=["stamp", "embosser", "practice seal"],
             ),
-            {"id": "plan_room", "kind": "facility", "name": "Plan room", "x": 4.0, "y": 18.0},
-            {"id": "post_room", "kind": "facility", "name": "Post room", "x": 16.0, "y": 18.0},
+            ob.item(
+                "plan",
+                "plan",
+                "personal",
+                signable=True,
+                synonyms=["survey plan", "contract", "certificate"],
+            ),
+            ob.item(
+                "drawing", "drawing file", "electronic", synonyms=["drawing", "draft", "cad file"]
+            ),
+            ob.item("pdf", "PDF", "electronic", synonyms=["pdf file"]),
+            ob.item("plot", "plot", "product", synonyms=["printout"]),
+            ob.item("copy", "copy", "product", synonyms=["photocopy"]),
         ],
-        "item_types": [
-            {"id": "tape", "name": "measuring tape", "synonyms": ["tape measure"]},
-            {"id": "level", "name": "spirit level", "synonyms": ["level"]},
-            {"id": "tripod", "name": "tripod"},
-            {
-                "id": "stamp",
-                "name": "chartered stamp",
-                "seals": True,
-                "synonyms": ["stamp", "embosser", "practice seal"],
-            },
-            {
-                "id": "plan",
-                "name": "plan",
-                "kind": "personal",
-                "signable": True,
-                "synonyms": ["survey plan", "contract", "certificate"],
-            },
-            {
-                "id": "drawing",
-                "name": "drawing file",
-                "kind": "electronic",
-                "synonyms": ["drawing", "draft", "cad file"],
-            },
-            {"id": "pdf", "name": "PDF", "kind": "electronic", "synonyms": ["pdf file"]},
-            {"id": "plot", "name": "plot", "kind": "product", "synonyms": ["printout"]},
-            {"id": "copy", "name": "copy", "kind": "product", "synonyms": ["photocopy"]},
+        operations=[
+            ob.operation("plot", "print", "plot", name="print", input="drawing", product="plot"),
+            ob.operation("copy", "copy", "photocopy", input="plan", product="copy"),
+            ob.operation(
+                "scan", "scan", "digitise", input="plan", product="pdf", done="scanned to PDF"
+            ),
+            ob.operation("bind", "bind", input="plan"),
+            ob.operation("courier", "courier", input="plan", sends_out=True),
+            ob.operation("fax", "fax", input="plan", sends_out=True),
         ],
-        "operations": [
-            {
-                "id": "plot",
-                "name": "print",
-                "verbs": ["print", "plot"],
-                "input": "drawing",
-                "product": "plot",
-            },
-            {
-                "id": "copy",
-                "name": "copy",
-                "verbs": ["copy", "photocopy"],
-                "input": "plan",
-                "product": "copy",
-            },
-            {
-                "id": "scan",
-                "name": "scan",
-                "verbs": ["scan", "digitise"],
-                "input": "plan",
-                "product": "pdf",
-                "done": "scanned to PDF",
-            },
-            {"id": "bind", "name": "bind", "verbs": ["bind"], "input": "plan"},
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier"],
-                "input": "plan",
-                "sends_out": True,
-            },
-            {"id": "fax", "name": "fax", "verbs": ["fax"], "input": "plan", "sends_out": True},
+        facilities=[
+            ob.facility(
+                "copier",
+                "copier",
+                at="plan_room",
+                guards=["otto"],
+                operations=["copy", "scan", "bind"],
+                synonyms=["photocopier"],
+            ),
+            ob.facility("plotter", "plotter", at="plan_room", guards=["otto"], operations=["plot"]),
+            ob.facility(
+                "post_desk",
+                "post desk",
+                at="post_room",
+                guards=["noor"],
+                operations=["courier", "fax"],
+            ),
         ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*({"type": t} for t in owns), {"type": "drawing"}],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "copier",
-                "name": "copier",
-                "synonyms": ["photocopier"],
-                "location": "plan_room",
-                "operations": ["copy", "scan", "bind"],
-                "guards": ["otto"],
-            },
-            {
-                "id": "plotter",
-                "name": "plotter",
-                "location": "plan_room",
-                "operations": ["plot"],
-                "guards": ["otto"],
-            },
-            {
-                "id": "post_desk",
-                "name": "post desk",
-                "location": "post_room",
-                "operations": ["courier", "fax"],
-                "guards": ["noor"],
-            },
-        ],
-        "groups": [{"id": "practice", "name": "Practice", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "plan_room"},
-    }
+        home="plan_room",
+        group=("practice", "Practice"),
+    )
 
 
-@functools.cache
-def surveyors() -> Office:
-    return parse_office(raw_surveyors(), "surveyors")
+surveyors = ob.parsed(raw_surveyors)

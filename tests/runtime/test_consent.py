@@ -18,7 +18,7 @@ from assistantx.core.ports.lock import Purpose
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime import consent
-from helpers.consent_memory import memory
+from helpers.consent_memory import exchange, memory
 
 PURPOSES: tuple[Purpose, ...] = ("deposit", "collect", "sign", "seal", "copy", "heat", "produce")
 YES = ("Yes, happy to.", "sure", "ok, go ahead", "Yes, I have one.")
@@ -273,20 +273,7 @@ def test_codes_go_only_to_parties_who_answered(
 def _asked_and_answered(
     stm: ShortTermMemory, person: str, question: str, answer: str, n: int
 ) -> None:
-    dm = ChatRef(kind="dm", id=person)
-    stm.dialogue += [
-        DialogueTurn(
-            time=2 * n, direction="out", chat=dm, person=person, text=question, question_id=f"k{n}"
-        ),
-        DialogueTurn(
-            time=2 * n + 1,
-            direction="in",
-            chat=dm,
-            person=person,
-            text=answer,
-            in_reply_to=f"k{n}",
-        ),
-    ]
+    stm.dialogue += exchange(person, question, answer, time=2 * n, question_id=f"k{n}")
 
 
 @settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -13,35 +13,16 @@ from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime import consent
-from helpers.consent_memory import memory
+from helpers.consent_memory import exchange, memory
 from helpers.guesthouse import guesthouse
 
 
 def _owner_said_yes(stm: ShortTermMemory, owner: str, text: str) -> None:
     """``owner`` was asked about their ledger in their own chat and said yes (and handed it
     in: the keeper of the shredder answered too)."""
-    dm = ChatRef(kind="dm", id=owner)
     stm.dialogue += [
-        DialogueTurn(time=0, direction="out", chat=dm, person=owner, text=text, question_id="q0"),
-        DialogueTurn(
-            time=1, direction="in", chat=dm, person=owner, text="yes, fine", in_reply_to="q0"
-        ),
-        DialogueTurn(
-            time=2,
-            direction="out",
-            chat=ChatRef(kind="dm", id="basil"),
-            person="basil",
-            text="Could you shred it at the shredder?",
-            question_id="q1",
-        ),
-        DialogueTurn(
-            time=3,
-            direction="in",
-            chat=ChatRef(kind="dm", id="basil"),
-            person="basil",
-            text="sure",
-            in_reply_to="q1",
-        ),
+        *exchange(owner, text, "yes, fine"),
+        *exchange("basil", "Could you shred it at the shredder?", "sure", time=2, question_id="q1"),
     ]
 
 

@@ -9,13 +9,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from assistantx.core.actions import SendQR
-from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, parse_office
-from assistantx.core.ports.messenger import ChatRef
 from assistantx.runtime import consent
 from assistantx.runtime.recipients import named_recipients
 from helpers.clinic import clinic, raw_clinic
-from helpers.consent_memory import answered, memory
+from helpers.consent_memory import answered, exchange, memory
 
 RECIPIENT = (
     "take my {item} to {x}",
@@ -98,41 +96,15 @@ def test_a_pronoun_recipient_is_the_one_person_named_who_is_not_an_owner(
 def test_a_name_as_the_answer_or_in_an_accepted_offer_names_the_recipient() -> None:
     office = clinic()
     stm = memory("ines", "print my rota, Rich said so")
-    own = ChatRef(kind="dm", id="ines")
     assert named_recipients(office, stm) == set()
-    stm.dialogue += [
-        DialogueTurn(
-            time=0,
-            direction="out",
-            chat=own,
-            person="ines",
-            text="Who should get the printout?",
-            question_id="q1",
-        ),
-        DialogueTurn(
-            time=1,
-            direction="in",
-            chat=own,
-            person="ines",
-            text="Hal Brooks, please",
-            in_reply_to="q1",
-        ),
-    ]
+    stm.dialogue += exchange(
+        "ines", "Who should get the printout?", "Hal Brooks, please", question_id="q1"
+    )
     assert named_recipients(office, stm) == {"hal"}
     offer = memory("ines", "Dawn needs a thermometer.")
-    offer.dialogue += [
-        DialogueTurn(
-            time=0,
-            direction="out",
-            chat=own,
-            person="ines",
-            text="Shall I bring Dawn Ellis a thermometer?",
-            question_id="q1",
-        ),
-        DialogueTurn(
-            time=1, direction="in", chat=own, person="ines", text="yes please", in_reply_to="q1"
-        ),
-    ]
+    offer.dialogue += exchange(
+        "ines", "Shall I bring Dawn Ellis a thermometer?", "yes please", question_id="q1"
+    )
     assert named_recipients(office, offer) == {"dawn"}
     # a name as a word, in lower case, names nobody
     assert named_recipients(office, memory("ines", "take my form to the may fair stall")) == set()

@@ -12,15 +12,14 @@ import pytest
 from assistantx.agents.llm import check_actions
 from assistantx.agents.symbolic.evidence import gather
 from assistantx.core.actions import SendQR
-from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.errors import ModelOutputError
 from assistantx.core.office import Office, load_office
-from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.trace import Trace
 from assistantx.memory.resolve import Resolver
 from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.runtime.executors import Executor
 from assistantx.sim.office import SimOffice
+from helpers.consent_memory import exchange
 from helpers.office import sim_executor
 
 SEND = SendQR(contact="zhang", item="stapler:zhang", purpose="deposit")
@@ -46,20 +45,7 @@ def memory(**flags: bool) -> ShortTermMemory:
     trace = Trace(instruction_id="i-5", requester="lee", text="x", reasoner="t", started_at=0)
     stm = ShortTermMemory(instruction_id="i-5", requester="lee", text="x", trace=trace)
     # Zhang agreed in his own chat: the consent guard lets his stapler's codes go out.
-    zhang = ChatRef(kind="dm", id="zhang")
-    stm.dialogue += [
-        DialogueTurn(
-            time=0,
-            direction="out",
-            chat=zhang,
-            person="zhang",
-            text="Lend Lee your stapler?",
-            question_id="q-1",
-        ),
-        DialogueTurn(
-            time=1, direction="in", chat=zhang, person="zhang", text="Yes.", in_reply_to="q-1"
-        ),
-    ]
+    stm.dialogue += exchange("zhang", "Lend Lee your stapler?", "Yes.", question_id="q-1")
     stm.embodied.codes.append(
         IssuedCode(code_id="c-1", person="zhang", item="stapler:zhang", purpose="deposit", **flags)
     )

@@ -20,11 +20,9 @@ from helpers.servers import serving_app
 from service.server import LEE, OPERATOR, ZHANG
 
 
-@asynccontextmanager
-async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[httpx.AsyncClient]:
-    """A client of a fresh server; ``settings`` override the tests' defaults (speed-up 50; the
-    navigator without AMCL, i.e. kinematic paths on the map: a test of localization passes
-    ``robot_localize=True``)."""
+def _settings(data_dir: Path, **settings: Any) -> Settings:
+    """The tests' defaults (the operator's and two colleagues' tokens, speed-up 50, no AMCL)
+    with ``settings`` over them."""
     defaults: dict[str, Any] = {
         "data_dir": data_dir,
         "operator_token": OPERATOR,
@@ -32,7 +30,15 @@ async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[http
         "speedup": 50,
         "robot_localize": False,
     }
-    app = create_app(Settings(**{**defaults, **settings}))
+    return Settings(**{**defaults, **settings})
+
+
+@asynccontextmanager
+async def running_service(data_dir: Path, **settings: Any) -> AsyncIterator[httpx.AsyncClient]:
+    """A client of a fresh server; ``settings`` override the tests' defaults (speed-up 50; the
+    navigator without AMCL, i.e. kinematic paths on the map: a test of localization passes
+    ``robot_localize=True``)."""
+    app = create_app(_settings(data_dir, **settings))
     async with serving_app(app) as client:
         await _holding(app)
         yield client
@@ -45,14 +51,7 @@ async def serving_runtime(
     """Like ``running_service`` (the operator's token on every request; no AMCL unless
     ``robot_localize=True``), also yielding the runtime: for tests that play the physical
     world (a person holding a code up to the lock)."""
-    defaults: dict[str, Any] = {
-        "data_dir": data_dir,
-        "operator_token": OPERATOR,
-        "tokens": json.dumps({LEE: "lee", ZHANG: "zhang"}),
-        "speedup": 50,
-        "robot_localize": False,
-    }
-    app = create_app(Settings(**{**defaults, **settings}))
+    app = create_app(_settings(data_dir, **settings))
     headers = {"Authorization": f"Bearer {OPERATOR}"}
     async with serving_app(app, headers=headers) as client:
         await _holding(app)

@@ -14,14 +14,14 @@ from typing import Any
 import httpx
 import psycopg
 import pytest
-import yaml
 
 from assistantx.core.settings import Settings
 from assistantx.service.app import create_app
 from helpers.eventually import eventually, eventually_sync
 from helpers.servers import serving_app
 from service.inprocess import serving_runtime
-from service.server import OPERATOR, Server, free_port, serve
+from service.replicas import deployment, replica
+from service.server import OPERATOR, Server
 from service.standby import holders
 
 pytestmark = pytest.mark.postgres
@@ -31,29 +31,8 @@ HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 OFFICES = ["annex", "harbour", "hq"]
 
 
-def deployment(folder: Path) -> Path:
-    harbour = Path(__file__).resolve().parents[2] / "dataset" / "offices" / "harbour"
-    path = folder / "offices.yaml"
-    entries: list[dict[str, Any]] = [
-        {"id": "hq", "name": "Headquarters"},
-        {"id": "harbour", "name": "Harbour Street", "office": str(harbour / "office.yaml")},
-        {"id": "annex", "name": "Annex"},
-    ]
-    path.write_text(yaml.safe_dump({"offices": entries}), encoding="utf-8")
-    return path
-
-
-def replica(folder: Path, name: str, url: str, offices: Path) -> Server:
-    return serve(
-        folder / name,
-        free_port(),
-        ASSISTANTX_OFFICES=str(offices),
-        ASSISTANTX_DATABASE_URL=url,
-        ASSISTANTX_LEASE_TTL_S=str(TTL_S),
-        ASSISTANTX_REPLICA_ID=name,
-        ASSISTANTX_ROBOT="sim",
-        ASSISTANTX_TOKENS="",
-    )
+def _replica(folder: Path, name: str, url: str, offices: Path) -> Server:
+    return replica(folder, name, url, offices, ASSISTANTX_LEASE_TTL_S=str(TTL_S))
 
 
 def settle(server: Server, until: Any, what: str, timeout_s: float = 60) -> dict[str, Any]:
@@ -109,14 +88,14 @@ async def test_one_office_on_replicas_lists_the_lease_holder(
 def test_offices_spread_over_replicas_and_move_when_one_leaves(
     tmp_path: Path, postgres_url: str
 ) -> None:
-    offices = deployment(tmp_path)
-    a = replica(tmp_path, "replica-a", postgres_url, offices)
+    offices = deployment(tmp_path, "hq", "harbour", "annex")
+    a = _replica(tmp_path, "replica-a", postgres_url, offices)
     b: Server | None = None
     try:
         # Alone, A runs every office.
         settle(a, lambda v: set(v.values()) == {"replica-a"}, "replica A to run all offices")
         # B joins: A hands one office back and B takes it; 2 and 1, never more than 2.
-        b = replica(tmp_path, "replica-b", postgres_url, offices)
+        b = _replica(tmp_path, "replica-b", postgres_url, offices)
         view = settle(
             a,
             lambda v: None not in v.values() and spread(v) == [1, 2],
@@ -138,7 +117,7 @@ def test_offices_spread_over_replicas_and_move_when_one_leaves(
         assert time.monotonic() - stopped < 30
 
         # B again, then kill -9 A: its offices move to B once their leases expire.
-        b = replica(tmp_path, "replica-b", postgres_url, offices)
+        b = _replica(tmp_path, "replica-b", postgres_url, offices)
         settle(b, lambda v: None not in v.values() and spread(v) == [1, 2], "the spread again")
         a.kill()
         settle(
@@ -171,7 +150,7 @@ async def test_a_replica_that_loses_one_office_stops_that_office_only(
     the other's lease holds."""
     settings = Settings(
         data_dir=tmp_path / "data",
-        offices=deployment(tmp_path),
+        offices=deployment(tmp_path, "hq", "harbour", "annex"),
         database_url=postgres_url,
         lease_ttl_s=TTL_S,
         replica_id="replica-a",

@@ -7,14 +7,13 @@ from __future__ import annotations
 
 from collections import Counter
 from pathlib import Path
-from typing import Any
 
 import httpx
 import pytest
-import yaml
 
 from helpers.eventually import eventually_sync
-from service.server import OPERATOR, Server, free_port, serve
+from service.replicas import deployment, replica
+from service.server import OPERATOR, Server
 from service.standby import holders
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
@@ -22,39 +21,18 @@ pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 
 
-def deployment(folder: Path) -> Path:
-    harbour = Path(__file__).resolve().parents[2] / "dataset" / "offices" / "harbour"
-    path = folder / "offices.yaml"
-    entries: list[dict[str, Any]] = [
-        {"id": "hq", "name": "Headquarters"},
-        {"id": "harbour", "name": "Harbour Street", "office": str(harbour / "office.yaml")},
-    ]
-    path.write_text(yaml.safe_dump({"offices": entries}), encoding="utf-8")
-    return path
-
-
-def replica(folder: Path, name: str, url: str, offices: Path) -> Server:
-    return serve(
-        folder / name,
-        free_port(),
-        ASSISTANTX_OFFICES=str(offices),
-        ASSISTANTX_DATABASE_URL=url,
-        ASSISTANTX_LEASE_TTL_S="2",
-        ASSISTANTX_REPLICA_ID=name,
-        ASSISTANTX_ROBOT="sim",
-        ASSISTANTX_SPEEDUP="50",
-        ASSISTANTX_TOKENS="",
-    )
+def _replica(folder: Path, name: str, url: str, offices: Path) -> Server:
+    return replica(folder, name, url, offices, ASSISTANTX_LEASE_TTL_S="2", ASSISTANTX_SPEEDUP="50")
 
 
 def test_a_replica_takes_submissions_and_reads_for_an_office_another_runs(
     tmp_path: Path, postgres_url: str
 ) -> None:
-    offices = deployment(tmp_path)
-    a = replica(tmp_path, "replica-a", postgres_url, offices)
+    offices = deployment(tmp_path, "hq", "harbour")
+    a = _replica(tmp_path, "replica-a", postgres_url, offices)
     b: Server | None = None
     try:
-        b = replica(tmp_path, "replica-b", postgres_url, offices)
+        b = _replica(tmp_path, "replica-b", postgres_url, offices)
         view = eventually_sync(
             lambda: holders(a),
             until=lambda v: (

@@ -17,11 +17,11 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any, Literal, NewType, TypeVar
 
-import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.core import office_upgrade
 from assistantx.core.errors import OfficeError
+from assistantx.core.yaml_file import read_yaml
 
 logger = logging.getLogger(__name__)
 
@@ -418,14 +418,7 @@ def load_office(path: str | Path | None = None) -> Office:
     """Load and check an office file; any problem raises OfficeError naming file and entry."""
     file = Path(path) if path is not None else DEFAULT_OFFICE
     where = str(file)
-    try:
-        # libyaml's loader when present: the pure-Python one takes seconds on a large office.
-        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-        raw = yaml.load(file.read_text(encoding="utf-8"), Loader=loader)
-    except OSError as exc:
-        raise OfficeError(where, "file", f"cannot be read: {exc.strerror or exc}") from exc
-    except yaml.YAMLError as exc:
-        raise OfficeError(where, "file", f"is not valid YAML: {exc}") from exc
+    raw = read_yaml(file, lambda why: OfficeError(where, "file", why))
     return parse_office(raw, where)
 
 

@@ -19,13 +19,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from assistantx.core import task_kinds
 from assistantx.core.errors import DatasetError
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import PART_NEEDS, Part, Task
+from assistantx.core.yaml_file import read_yaml
 
 __all__ = ["BaseInstruction", "Part", "load_base_instructions", "part_operation"]
 
@@ -50,12 +50,7 @@ class BaseInstruction(BaseModel):
 def load_base_instructions(path: str | Path, office: Office) -> list[BaseInstruction]:
     """Load and check base instructions against the office; problems raise DatasetError."""
     file = Path(path)
-    try:
-        raw = yaml.safe_load(file.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise DatasetError(f"{file}: cannot be read: {exc.strerror or exc}") from exc
-    except yaml.YAMLError as exc:
-        raise DatasetError(f"{file}: not valid YAML: {exc}") from exc
+    raw = read_yaml(file, lambda why: DatasetError(f"{file}: {why}"))
     entries = raw.get("instructions") if isinstance(raw, dict) else None
     if not isinstance(entries, list):
         raise DatasetError(f"{file}: expected a mapping with a list under 'instructions'")

@@ -14,15 +14,10 @@ from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import parse_office
 from assistantx.core.task_schema import TaskFrame
 from helpers.bindery import bindery, raw_bindery
+from helpers.reading import frame_reader, parser_for
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(bindery())
-
-
-def _frame(text: str, who: str = "zoe") -> TaskFrame:
-    return _parser().parse(text, who)
+_parser = functools.partial(parser_for, bindery)
+_frame = frame_reader(bindery, "zoe")
 
 
 def _moves(frame: TaskFrame) -> list[tuple[str | None, str | None, str]]:

@@ -12,20 +12,14 @@ import functools
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import Office, parse_office
 from assistantx.core.task_schema import TaskFrame
 from assistantx.sim.understanding import mentioned_requests
 from helpers.archive import archive, raw_archive
+from helpers.reading import frame_reader, parser_for
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(archive())
-
-
-def _frame(text: str, who: str = "ines") -> TaskFrame:
-    return _parser().parse(text, who)
+_parser = functools.partial(parser_for, archive)
+_frame = frame_reader(archive, "ines")
 
 
 def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str | None, str | None]]:

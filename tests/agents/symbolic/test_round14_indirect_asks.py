@@ -7,26 +7,17 @@ moves nothing."""
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.reading.indirect_asks import asked_verb_at, indirect_ask
-from assistantx.core.task_schema import TaskFrame
 from helpers.radio_station import radio_station
+from helpers.reading import frame_reader
 
 _TASK_VERBS = frozenset({"bring", "grab", "get", "fetch", "find", "print"})
 
 
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(radio_station())
-
-
-def _frame(text: str, who: str = "wren") -> TaskFrame:
-    return _parser().parse(text, who)
+_frame = frame_reader(radio_station, "wren")
 
 
 @pytest.mark.parametrize(

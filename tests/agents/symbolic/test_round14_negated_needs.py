@@ -8,13 +8,10 @@ import functools
 
 import pytest
 
-from assistantx.agents.symbolic import InstructionParser
 from helpers.radio_station import radio_station
+from helpers.reading import parser_for
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(radio_station())
+_parser = functools.partial(parser_for, radio_station)
 
 
 @pytest.mark.parametrize(

@@ -6,26 +6,16 @@ question or a negation with the same nouns moves nothing."""
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.operation_nouns import read_as_verbs
 from assistantx.agents.symbolic.reading.tokens import tokenize
-from assistantx.core.task_schema import TaskFrame
 from helpers.radio_station import radio_station
+from helpers.reading import frame_reader
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(radio_station())
-
-
-def _frame(text: str, who: str) -> TaskFrame:
-    return _parser().parse(text, who)
+_frame = frame_reader(radio_station, "wren")
 
 
 @pytest.mark.parametrize(

@@ -16,17 +16,12 @@ from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import parse_office
 from assistantx.core.task_schema import TaskFrame
 from helpers.hostel import hostel, raw_hostel
+from helpers.reading import frame_reader
 
 Row = tuple[str, str | None, str | None, str | None]
 
 
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(hostel())
-
-
-def _frame(text: str, who: str = "hamid") -> TaskFrame:
-    return _parser().parse(text, who)
+_frame = frame_reader(hostel, "hamid")
 
 
 def _tasks(frame: TaskFrame) -> list[Row]:

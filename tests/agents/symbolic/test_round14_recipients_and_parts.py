@@ -12,7 +12,6 @@ import functools
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.evidence import gather
 from assistantx.agents.symbolic.plan_parts import left_out
 from assistantx.agents.symbolic.planning import Agenda, Planner
@@ -23,15 +22,10 @@ from assistantx.memory.graph import LongTermMemory
 from assistantx.runtime.recipients import named_recipients
 from helpers.consent_memory import memory
 from helpers.kilnworks import kilnworks
+from helpers.reading import frame_reader, parser_for
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(kilnworks())
-
-
-def _frame(text: str, who: str = "kit") -> TaskFrame:
-    return _parser().parse(text, who)
+_parser = functools.partial(parser_for, kilnworks)
+_frame = frame_reader(kilnworks, "kit")
 
 
 def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str | None, str | None]]:

@@ -11,18 +11,12 @@ import functools
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import TaskFrame
 from helpers.photo_studio import studio
+from helpers.reading import frame_reader, parser_for
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(studio())
-
-
-def _frame(text: str, who: str = "lotte") -> TaskFrame:
-    return _parser().parse(text, who)
+_parser = functools.partial(parser_for, studio)
+_frame = frame_reader(studio, "lotte")
 
 
 def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str | None, str | None]]:

@@ -12,11 +12,9 @@ from symbolic_run import run_instruction
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import parse_office
 from helpers.boathouse import boathouse, raw_boathouse
+from helpers.reading import parser_for
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(boathouse())
+_parser = functools.partial(parser_for, boathouse)
 
 
 def _tasks(text: str, who: str) -> list[tuple[str, str | None, str | None, str]]:

@@ -17,18 +17,14 @@ from assistantx.core import task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_kinds import KindSpec, Step
 from assistantx.core.task_schema import TaskFrame
+from helpers.reading import frame_reader, parser_for
 from helpers.surveyors import surveyors
 
 Row = tuple[str, str | None, str | None, str]
 
 
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(surveyors())
-
-
-def _frame(text: str, who: str = "callum") -> TaskFrame:
-    return _parser().parse(text, who)
+_parser = functools.partial(parser_for, surveyors)
+_frame = frame_reader(surveyors, "callum")
 
 
 def _tasks(text: str, who: str = "callum") -> list[Row]:

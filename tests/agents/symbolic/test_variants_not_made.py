@@ -6,24 +6,14 @@ instead?"); "a strong tea", "a tea, quick", "a new door card" are made as before
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.actions import Inquire, SendQR
-from assistantx.core.task_schema import TaskFrame
 from helpers.guesthouse import guesthouse
+from helpers.reading import answered_reader
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(guesthouse())
-
-
-def _frame(text: str, answers: tuple[str, ...] = ()) -> TaskFrame:
-    return _parser().parse_with_answers(text, "wren", list(answers))
+_frame = answered_reader(guesthouse, "wren")
 
 
 @pytest.mark.parametrize(

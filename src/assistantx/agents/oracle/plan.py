@@ -184,7 +184,11 @@ def _machine_guard(office: Office, part: Part, who: str) -> tuple[Operation, Rol
 
 
 def _guard(office: Office, operation: str, question: str, group_question: str | None) -> Role:
-    facility = facility_for(office, operation)
+    return _guard_of(facility_for(office, operation), question, group_question)
+
+
+def _guard_of(facility: str, question: str, group_question: str | None) -> Role:
+    """Whoever guards ``facility``, asked ``question`` (``group_question`` in a group)."""
     return Role(
         key=f"guard:{facility}",
         kind="guard",
@@ -219,12 +223,10 @@ def _put_in(plan: TaskPlan, item: str, a: str, who: str, office: Office) -> None
         plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, item, "deposit"),)))
         return
     thing = office.item_type(type_id).name
-    role = Role(
-        key=f"guard:{keeper.id}",
-        kind="guard",
-        question=f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?",
-        group_question=f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
-        facility=keeper.id,
+    role = _guard_of(
+        keeper.id,
+        f"Could you take {who}'s {thing} out of the {keeper.name} for the robot?",
+        f"Could anyone take {who}'s {thing} out of the {keeper.name}?",
     )
     plan.add_role(role)
     plan.visits.append(Visit(keeper.id, role.key, (Code(role.key, item, "deposit"),)))
@@ -253,12 +255,10 @@ def _add_part(
                         )
                     )
                 whose = "the" if supply else f"{owner}'s"
-                role = Role(
-                    key=f"guard:{keeper.id}",
-                    kind="guard",
-                    question=f"Could you take {whose} {name} out of the {keeper.name}?",
-                    group_question=f"Could anyone take the {name} out of the {keeper.name}?",
-                    facility=keeper.id,
+                role = _guard_of(
+                    keeper.id,
+                    f"Could you take {whose} {name} out of the {keeper.name}?",
+                    f"Could anyone take the {name} out of the {keeper.name}?",
                 )
                 plan.add_goal({"holds": [a, item]})
                 plan.add_role(role)

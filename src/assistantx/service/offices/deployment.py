@@ -38,11 +38,11 @@ from pathlib import Path
 from typing import Any
 from urllib.parse import parse_qsl, quote, urlencode, urlsplit, urlunsplit
 
-import yaml
 from pydantic import SecretStr, ValidationError
 
 from assistantx.core.errors import JournalError
 from assistantx.core.settings import Settings
+from assistantx.core.yaml_file import read_yaml
 from assistantx.store.journal import Journal
 
 OFFICE_ID = re.compile(r"^[a-z][a-z0-9-]{0,39}$")
@@ -84,12 +84,7 @@ def load_deployment(settings: Settings) -> list[OfficeSpec]:
 
 def _read(path: Path, base: Settings) -> list[OfficeSpec]:
     where = str(path)
-    try:
-        raw = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise DeploymentError(f"{where}: cannot be read: {exc.strerror or exc}") from exc
-    except yaml.YAMLError as exc:
-        raise DeploymentError(f"{where}: not YAML: {exc}") from exc
+    raw = read_yaml(path, lambda why: DeploymentError(f"{where}: {why}"))
     entries = raw.get("offices") if isinstance(raw, dict) else None
     if not isinstance(entries, list) or not entries:
         raise DeploymentError(f"{where}: needs 'offices:', a list of offices")

@@ -16,9 +16,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles
+from assistantx.agents.symbolic.reading.kept_items import items_kept_at
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core.office import Facility, Office
+from assistantx.core.office import Office
 
 # The words between an item and a place that make the place where the item is now.
 _AT = frozenset({"in", "at", "from", "on", "inside"})
@@ -94,39 +95,16 @@ def place_phrases(
         if any(t.word not in _ARTICLES for t in tokens[prep.end : where.start]):
             continue
         if where.kind == "facility":
-            facility = office.facility(where.ids[0])
-            place, facilities, desks = facility.name, [facility], []
+            place = office.facility(where.ids[0]).name
         elif where.kind == "place":
-            location = where.ids[0]
-            place = office.location(location).name.lower()
-            facilities = [f for f in office.facilities if f.location == location]
-            desks = [p.id for p in office.people if p.location == location]
+            place = office.location(where.ids[0]).name.lower()
         else:
             continue
         definite = m.start == 0 or tokens[m.start - 1].word not in _INDEFINITE
-        kept = _kept_there(office, m.id, facilities, desks)
+        there = items_kept_at(office, where.kind, where.ids[0])
+        kept = tuple(dict.fromkeys(k.owner for k in there if k.type_id == m.id))
         out.append(PlacePhrase(m, place, kept, definite))
     return out
-
-
-def _kept_there(
-    office: Office, type_id: str, facilities: Sequence[Facility], desks: Sequence[str]
-) -> tuple[str, ...]:
-    """The owner parts of the items of ``type_id`` kept at ``facilities`` (a supply: the
-    facility's id; a person's: theirs) or on the desks of the people ``desks``."""
-    ids = {f.id for f in facilities}
-    found: list[str] = []
-    for f in facilities:
-        supply = f.supply(type_id)
-        if supply is not None and supply.count != 0:
-            found.append(f.id)
-    for p in office.people:
-        if not any(o.type == type_id for o in p.owns):
-            continue
-        kept = office.keeper(p.id, type_id)
-        if (kept is not None and kept.id in ids) or (kept is None and p.id in desks):
-            found.append(p.id)
-    return tuple(dict.fromkeys(found))
 
 
 def _owner_name(office: Office, owner: str) -> str:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.kept_items import PlaceKind, items_kept_at
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -57,17 +58,9 @@ def kept_thing(terms: Terms, lexed: Lexed, text: str) -> KeptThing | None:
 
 def _kept_at(terms: Terms, owner: str, kind: str, where: str) -> list[str]:
     """The item types of ``owner``'s kept by the facility ``where`` (or at the place)."""
-    office = terms.office
-    out = []
-    for own in office.person(owner).owns:
-        keeper = office.keeper(owner, own.type)
-        if keeper is None:
-            continue
-        if (kind == "facility" and keeper.id == where) or (
-            kind == "place" and keeper.location == where
-        ):
-            out.append(own.type)
-    return out
+    place_kind: PlaceKind = "facility" if kind == "facility" else "place"
+    there = items_kept_at(terms.office, place_kind, where)
+    return [k.type_id for k in there if k.owner == owner and k.how == "keeper"]
 
 
 def several_kept(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
