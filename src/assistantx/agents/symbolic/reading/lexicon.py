@@ -26,7 +26,11 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
-from assistantx.agents.symbolic.reading.operation_nouns import operation_nouns, read_as_verbs
+from assistantx.agents.symbolic.reading.operation_nouns import (
+    operation_names,
+    operation_nouns,
+    read_as_verbs,
+)
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.core import english, language, task_kinds
 from assistantx.core.name_reading import NameSlot, is_word_name, read_name
@@ -128,6 +132,8 @@ class Lexicon:
     sound_alike: dict[str, frozenset[str]] = field(default_factory=dict)
     # nouns that name one operation ("lamination", "legal review") → its verb
     operation_nouns: dict[str, str] = field(default_factory=dict)
+    # operations' whole display names of two words or more ("legal read") → its verb
+    operation_names: dict[tuple[str, ...], str] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -189,6 +195,7 @@ class Lexicon:
         lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
         lex.operation_nouns = operation_nouns(office, lex._known)
+        lex.operation_names = operation_names(office)
         return lex
 
     def _declare(self, person: str, words: list[str]) -> None:
@@ -242,7 +249,7 @@ class Lexicon:
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
         # "needs a lamination": an operation named by a noun is read as its verb
-        return read_as_verbs(out, self.operation_nouns, self._modifier_word)
+        return read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*

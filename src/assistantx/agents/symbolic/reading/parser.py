@@ -73,7 +73,13 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
-from assistantx.agents.symbolic.reading.parts import asked_part, unread_part
+from assistantx.agents.symbolic.reading.parts import (
+    asked_part,
+    items_named,
+    names_work,
+    operation_left_out,
+    unread_part,
+)
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
@@ -189,6 +195,13 @@ class InstructionParser:
             unread = unread_part(self.office, readings, frame) if frame.understood else None
             if unread is not None:  # a part no task carries: asked, never dropped
                 frame = TaskFrame(requester=requester, question=unread)
+        elif frame.question is not None and _asks_who(frame.question):
+            # "my proof needs a read, can you sort it", the read not understood: which work
+            # is meant is asked, not who gets the proof (it comes back to the requester)
+            named = items_named(readings)
+            left_out = operation_left_out(self.office, readings, set(), named)
+            if left_out is not None:
+                frame = TaskFrame(requester=requester, question=left_out)
         if frame.question == NOT_UNDERSTOOD:
             terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
             which = category_asked(terms, tokens, mentions)  # "a drink": tea or cocoa?
@@ -269,6 +282,8 @@ class InstructionParser:
                 text, frame = with_antecedent(text, answer, kind), meant
                 continue
             part = asked_part(frame.question) if frame.question is not None else None
+            if part is not None and not names_work(self.office, frame.question or "", answer):
+                continue  # "a read?" "Me.": the work is still not said; asked again
             if part is not None and part in text:
                 # "I'm not sure what you mean by 'off to the plant'" → "courier it to the
                 # plant": the answer takes the place of the part asked about
