@@ -155,22 +155,32 @@ class InstructionParser:
         confirmed: bool = False,
         sent_out: bool = False,
         to_self: bool = False,
+        destination: str | None = None,
     ) -> TaskFrame:
         """The frame of a request: its pieces lexed and screened (speech acts, withdrawn,
         negated, destructive, facts, unsupported services), the tasks read from what is left,
         then judged. ``confirmed``: the requester already said yes to the restated reading;
         ``sent_out``: a send-out to a colleague's name is meant to leave the office;
-        ``to_self``: the requester answered "me" to whom their own item goes."""
+        ``to_self``: the requester answered "me" to whom their own item goes;
+        ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
-        frame = self._frame(spoken.msg.lexed, request.text, requester, sent_out, to_self)
+        frame = self._frame(
+            spoken.msg.lexed, request.text, requester, sent_out, to_self, destination
+        )
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _frame(
-        self, whole: Lexed, request: str, requester: str, sent_out: bool, to_self: bool = False
+        self,
+        whole: Lexed,
+        request: str,
+        requester: str,
+        sent_out: bool,
+        to_self: bool = False,
+        destination: str | None = None,
     ) -> TaskFrame:
         """The tasks of the request the screen left (``request``), read from its readings;
         ``whole`` is the whole message as the lexicon read it for the screen: who has an item
@@ -189,7 +199,9 @@ class InstructionParser:
             unclear = unanchored_it(self.office, whole, frame.tasks)
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)
-            frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
+            frame = self.operations.choose(
+                frame, lexed, readings.outside, sent_out=sent_out, destination=destination
+            )
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)
             unread = unread_part(self.office, readings, frame) if frame.understood else None
@@ -295,6 +307,11 @@ class InstructionParser:
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
+                if frame.question is not None and not frame.question.startswith(OUT_OR_IN):
+                    # the words appended read otherwise ("... with the courier to Riverside
+                    # print plant": "Riverside" looked up as a colleague): the answer is
+                    # the place outside, as said, never a person to find
+                    frame = self.parse(text, requester, destination=place.rstrip(" .!?"))
                 continue
             if frame.question is not None and _asks_who(frame.question) and _is_me(answer):
                 # "Who should get your reel?" "Me.": the requester, not a new request
