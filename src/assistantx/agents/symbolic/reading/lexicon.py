@@ -132,6 +132,9 @@ class Lexicon:
     sound_alike: dict[str, frozenset[str]] = field(default_factory=dict)
     # nouns that name one operation ("lamination", "legal review") → its verb
     operation_nouns: dict[str, str] = field(default_factory=dict)
+    # the office's names of things and places written with a possessive inside ("reporter's
+    # notebook", "St John's room"), by key: the possessive there is part of the name
+    inner_possessives: frozenset[str] = frozenset()
     # operations' whole display names of two words or more ("legal read") → its verb
     operation_names: dict[tuple[str, ...], str] = field(default_factory=dict)
 
@@ -187,6 +190,17 @@ class Lexicon:
                 key = key_of(name)
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
+        named = [
+            *(n for t in office.item_types for n in (t.name, *t.synonyms)),
+            *(n for f in office.facilities for n in (f.name, *f.synonyms)),
+            *(loc.name for loc in office.locations),
+        ]
+        lex.inner_possessives = frozenset(
+            variant
+            for n in named
+            if _INNER_POSSESSIVE.search(language.fold(n))
+            for variant in (key_of(n), _plural(key_of(n)))
+        )
         one_word = {k for k in (*lex.people, *lex.name_words) if " " not in k}
         lex.sound_alike = language.sound_alike_spellings(one_word)
         phrases = [*lex.people, *lex.items, *lex.facilities, *lex.places]
@@ -365,10 +379,11 @@ class Lexicon:
     ) -> tuple[Mention, int] | None:
         for n in range(min(self.max_words, len(content) - k), 0, -1):
             idx = content[k : k + n]
-            # a possessive ends a phrase ("zhang's stapler" is two mentions)
-            if any(tokens[i].possessive for i in idx[:-1]):
-                continue
             phrase = " ".join(tokens[i].word for i in idx)
+            # a possessive ends a phrase ("zhang's stapler" is two mentions), unless the
+            # office's own name of a thing has it inside ("a reporter's notebook")
+            if any(tokens[i].possessive for i in idx[:-1]) and phrase not in self.inner_possessives:
+                continue
             start, end = idx[0], idx[-1] + 1
             poss = tokens[idx[-1]].possessive
             text = " ".join(tokens[i].text for i in idx)
@@ -540,6 +555,10 @@ def _one_verb(forms: list[str]) -> bool:
 
 
 _INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
+
+
+# A possessive "'s" inside a name, before another word ("reporter's notebook").
+_INNER_POSSESSIVE = re.compile(r"\w['’]s\s+\w")
 
 
 def key_of(name: str) -> str:

@@ -243,9 +243,11 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
     if language.is_month(word) or language.is_weekday(word):
         return False  # "from March", "by Friday": a date
     following = mentions[n + 1] if n + 1 < len(mentions) else None
-    if m.possessive and following is not None and following.kind == "item":
-        return True  # "Smith's stapler"
     prev = prev_word(tokens, m.start, skip_titles=False)
+    if m.possessive and following is not None and following.kind == "item":
+        # "Smith's stapler"; but "an editor's notebook": a kind of person, said in lower
+        # case after "a", is an ordinary noun, no name to look up
+        return not (m.text[:1].islower() and prev in ("a", "an") and language.is_noun(word))
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
     return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
