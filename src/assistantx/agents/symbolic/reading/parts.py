@@ -31,7 +31,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
-from assistantx.core.office import Office
+from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
 from assistantx.memory.names import normalize
 
@@ -54,6 +54,8 @@ _LONGEST = 6  # words in a destination phrase: longer is no place named
 _PAST = frozenset({"past", "through", "via"})
 # What may stand before a request's own verb: a clause's start, a join, a courtesy.
 _REQUEST_OPENERS = frozenset({"", "and", "then", "also", "please", "pls", "just", "you"})
+# The words that take a thing to a place ("take it *to* the post room", "drop it *into* ...").
+_TO_PLACE = frozenset({"to", "into"})
 # The articles before an operation's name said as a noun: "a legal read", "the read".
 _NAME_ARTICLES = frozenset({"a", "an", "the", "another", "its", "some"})
 # How the question quotes the part, so the answer can take its place in the request.
@@ -73,7 +75,9 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     }
     run = {operation_of(office, t) for t in frame.tasks}
     items = {t.item for t in frame.tasks}
-    left_out = operation_left_out(office, readings, run, items)
+    left_out = operation_left_out(office, readings, run, items) or _place_left_out(
+        office, readings, frame
+    )
     if left_out is not None:
         return left_out
     phrase = (
@@ -132,6 +136,56 @@ def names_work(office: Office, question: str, answer: str) -> bool:
         for w in normalize(phrase).split()
     }
     return bool(said & words)
+
+
+def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
+    """The question about a place of the office the request takes something to ("print my
+    agenda and take it to the post room") that no task goes to: no task's facility, source,
+    operation or person is there. The robot hands things to people, so who there gets it
+    is asked (naming who looks after it), never the place dropped and the item brought back
+    to the requester."""
+    tokens = readings.tokens
+    for m in readings.mentions:
+        if m.kind not in ("place", "facility") or m.start < 1:
+            continue
+        k = m.start - 1
+        while k > 0 and tokens[k].word in _NP_OPENERS:
+            k -= 1
+        if tokens[k].word not in _TO_PLACE:
+            continue
+        facilities = (
+            [office.facility(m.id)]
+            if m.kind == "facility"
+            else [f for f in office.facilities if f.location == m.id]
+        )
+        if _goes_to(office, frame, m.id if m.kind == "place" else None, facilities):
+            continue
+        there = [p.id for p in office.people if m.kind == "place" and p.location == m.id]
+        keepers = list(dict.fromkeys([*(g for f in facilities for g in f.guards), *there]))
+        names = " or ".join(office.person(g).name for g in keepers)
+        kept = f" ({names} {'is' if len(keepers) == 1 else 'are'} there.)"
+        phrase = " ".join(t.text for t in tokens[k : m.end])
+        return (
+            f"{ASKED}{phrase}{_ASKED_END} I hand things to people, not to rooms: who "
+            f"there should get it?{kept if keepers else ''}"
+        )
+    return None
+
+
+def _goes_to(
+    office: Office, frame: TaskFrame, place: str | None, facilities: Sequence[Facility]
+) -> bool:
+    """Whether a task of ``frame`` goes to the place or to one of its facilities."""
+    ids = {f.id for f in facilities}
+    where = {p.id: p.location for p in office.people}
+    ops = {op for f in facilities for op in f.operations}
+    for t in frame.tasks:
+        if t.facility in ids or t.source in ids or t.owner in ids or operation_of(office, t) in ops:
+            return True
+        people = [p for p in (t.recipient, t.actor, t.owner, t.source) if p]
+        if place is not None and any(where.get(p) == place for p in people):
+            return True
+    return False
 
 
 def items_named(readings: Readings) -> set[str | None]:
