@@ -288,12 +288,12 @@ class InstructionParser:
                 continue
             if frame.question is not None and frame.question.startswith(PROPOSED):
                 # "I can get you a pen. Would you like that?": yes asks for the pen
-                yes_no = plain_stance(answer)
-                chosen = self._with_one_choice(text, requester) if yes_no == "yes" else None
-                if chosen is not None:
-                    text, frame = chosen, self.parse(chosen, requester)
+                taken = plain_stance(answer)
+                offered = self._with_one_choice(text, requester) if taken == "yes" else None
+                if offered is not None:
+                    text, frame = offered, self.parse(offered, requester)
                     continue
-                if yes_no == "no":
+                if taken == "no":
                     return TaskFrame(
                         requester=requester,
                         decline="OK, I won't do anything, then.",
@@ -347,11 +347,11 @@ class InstructionParser:
             if part is not None and part in text:
                 # "I'm not sure what you mean by 'off to the plant'" → "courier it to the
                 # plant": the answer takes the place of the part asked about
-                said = answer.strip().rstrip(" .!?")
+                instead = answer.strip().rstrip(" .!?")
                 lead = part.split()[0]
-                if lead.lower() in ("to", "into") and said.lower().split()[:1] != [lead.lower()]:
-                    said = f"{lead} {said}"  # "to the post room" → "Hana": "to Hana"
-                text = text.replace(part, said, 1)
+                if lead.lower() in ("to", "into") and instead.lower().split()[:1] != [lead.lower()]:
+                    instead = f"{lead} {instead}"  # "to the post room" → "Hana": "to Hana"
+                text = text.replace(part, instead, 1)
                 frame = self.parse(text, requester)
                 continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
