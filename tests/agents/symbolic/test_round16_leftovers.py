@@ -51,6 +51,28 @@ def test_both_parts_after_a_title_with_a_stop_are_done(text: str) -> None:
     ]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "have my proof signed by Mr. Adeyemi, then get it stamped",
+        "have my proof signed by Femi, then get it stamped",
+    ],
+)
+def test_have_the_thing_done_is_a_request_not_a_question(text: str) -> None:
+    """ "have my proof signed by ...": "have", the thing, a task word's participle asks for
+    the work (it was read as a question, and only the stamp was done)."""
+    frame = _frame(text)
+    assert [(t.kind, t.actor) for t in frame.tasks] == [("sign", "femi"), ("seal", None)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["have the proofs arrived", "have you signed my proof?", "have my proof signed by Femi?"],
+)
+def test_have_as_a_question_moves_nothing(text: str) -> None:
+    assert _frame(text).tasks == []
+
+
 def test_a_title_with_a_stop_names_the_doer() -> None:
     frame = _frame("please have Mr. Reyes stamp my proof")
     assert [(t.kind, t.actor) for t in frame.tasks] == [("seal", "tomas")]

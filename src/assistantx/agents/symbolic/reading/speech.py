@@ -116,6 +116,10 @@ class Act:
 _PERSON_TITLES = english.words("titles") - {"a", "an", "the", "our"}
 
 
+# What opens the thing after a causative "have" ("have *my* proof signed", "have *it* done").
+_THING_OPENERS = frozenset({"my", "our", "the", "this", "that", "these", "those", "it", "them"})
+
+
 def _left_at_someones_place(w: list[str]) -> bool:
     """Whether the words name a person's own place as where a thing is left: "on her desk",
     "in my office", "at their workstation" (``core.receiving_place``)."""
@@ -620,7 +624,12 @@ class SpeechActs:
 
     def _causative(self, w: list[str]) -> bool:
         """ "have Ines stamp my lease", "have Wang sign it": "have", a person's name, then a
-        verb in its plain form: someone made to do something, not "have you got ...?"."""
+        verb in its plain form: someone made to do something, not "have you got ...?"; and
+        "have my proof signed by Femi": "have", the thing, then a task word's participle."""
+        if w[1:2] and w[1] in _THING_OPENERS:
+            for x in w[2:6]:
+                if x in self.lex.cue_words and language.is_past_participle(x):
+                    return True
         k = 1
         while k < len(w) and k < 4 and (w[k] in self.lex.name_words or w[k] in self.lex.people):
             k += 1
