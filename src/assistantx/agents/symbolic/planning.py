@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.evidence import Evidence
-from assistantx.agents.symbolic.plan_parts import left_out
+from assistantx.agents.symbolic.plan_parts import left_out, moves_nothing
 from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
 from assistantx.core import task_kinds
 from assistantx.core.english import wording
@@ -421,7 +421,7 @@ class Planner:
         blocked: dict[str, str] = {}
         requester = frame.requester
         whole = [self._compile(n, t, requester) for n, t in enumerate(frame.tasks)]
-        missing = left_out(self.office, whole)
+        missing = left_out(self.office, whole) or moves_nothing(whole)
         if missing is not None:  # a part left out: nothing moves, the reason says which
             return Agenda(frame, [TaskView(c, {}, [], "unachievable", missing) for c in whole])
         for n, task in enumerate(frame.tasks):

@@ -19,7 +19,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.evidence import Evidence, Question
-from assistantx.core import task_kinds
+from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing
@@ -108,7 +108,7 @@ class Roles:
                 if op.shape(self.office) == shape and (
                     role.operation is None or op.id == role.operation
                 ):
-                    return op.name
+                    return _as_verb(op.name)
         return role.kind
 
     def _making_named(self, role: Role) -> str | None:
@@ -425,3 +425,13 @@ def _fresh_availability(ltm: LongTermMemory, person: str, now: float) -> str:
     if value != "unknown" and seen is not None and now - seen > AVAILABILITY_TTL_S:
         return "unknown"
     return value
+
+
+def _as_verb(name: str) -> str:
+    """An operation's display name as the verb phrase of a request: "print" as it is, a
+    name that opens with no verb ("legal read": an adjective, a noun) as its act done to the
+    thing ("do a legal read on ..."), never "could you legal read ..."."""
+    words = name.split()
+    if len(words) < 2 or "VERB" in language.lemmas(language.fold(words[0])):
+        return name
+    return f"do {a_thing(name)} on"

@@ -27,8 +27,10 @@ _PRONOUNS = frozenset({"it", "them", "this", "that"})
 _PERSONS = frozenset({"i", "im", "we", "you", "he", "she", "they", "me", "us", "him", "her"})
 # Words of going or sending before a statement's destination ("needs to go out *to* ...").
 _GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
-# The words that name a service as the means of sending ("send it to the council *by* courier").
-_MEANS = frozenset({"by", "via"})
+# The words that name a service as the means of sending ("send it to the council *by* courier",
+# "go out to the plant *with the* courier"), an article or "our" between them and the service.
+_MEANS = frozenset({"by", "via", "with"})
+_MEANS_ARTICLES = frozenset({"the", "a", "our", "your"})
 
 
 @dataclass(frozen=True)
@@ -100,7 +102,7 @@ def find_outside(
         if words[k] == "to":
             to = k
             break
-    means = verb_start - 1 if verb_start and words[verb_start - 1] in _MEANS else None
+    means = _means_before(words, verb_start)
     if to is None and means is not None:
         to = _to_before(words, gaps, means)  # "send my agreement to the council by courier"
     stop = len(tokens)
@@ -129,9 +131,20 @@ def find_outside(
         ).strip()
         said = said.strip("\"'")
         phrase = said if said and len(said) <= _LONGEST else None
+        if phrase is not None and set(words[start:end]) <= _PRONOUNS | _PERSONS:
+            phrase = None  # "courier it to them": no place said; asked where
         if phrase is None:
             start = end = None
     return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
+
+
+def _means_before(words: Sequence[str], verb_start: int) -> int | None:
+    """The index of the word that names the service as the means ("by courier", "with the
+    courier"), or None."""
+    k = verb_start - 1
+    if k >= 1 and words[k] in _MEANS_ARTICLES:
+        k -= 1
+    return k if k >= 0 and words[k] in _MEANS else None
 
 
 def _address_tail(

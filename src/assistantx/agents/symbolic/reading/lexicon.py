@@ -26,7 +26,11 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
-from assistantx.agents.symbolic.reading.operation_nouns import operation_nouns, read_as_verbs
+from assistantx.agents.symbolic.reading.operation_nouns import (
+    operation_names,
+    operation_nouns,
+    read_as_verbs,
+)
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
@@ -131,6 +135,11 @@ class Lexicon:
     operation_nouns: dict[str, str] = field(default_factory=dict)
     # the office's verb phrases of several words ("3d print"), each read as one token
     verb_phrases: VerbPhrases = field(default_factory=lambda: VerbPhrases({}, frozenset(), 0))
+    # the office's names of things and places written with a possessive inside ("reporter's
+    # notebook", "St John's room"), by key: the possessive there is part of the name
+    inner_possessives: frozenset[str] = frozenset()
+    # operations' whole display names of two words or more ("legal read") → its verb
+    operation_names: dict[tuple[str, ...], str] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -193,6 +202,17 @@ class Lexicon:
                 key = key_of(name)
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
+        named = [
+            *(n for t in office.item_types for n in (t.name, *t.synonyms)),
+            *(n for f in office.facilities for n in (f.name, *f.synonyms)),
+            *(loc.name for loc in office.locations),
+        ]
+        lex.inner_possessives = frozenset(
+            variant
+            for n in named
+            if _INNER_POSSESSIVE.search(language.fold(n))
+            for variant in (key_of(n), _plural(key_of(n)))
+        )
         one_word = {k for k in (*lex.people, *lex.name_words) if " " not in k}
         lex.sound_alike = language.sound_alike_spellings(one_word)
         phrases = [*lex.people, *lex.items, *lex.facilities, *lex.places]
@@ -201,6 +221,7 @@ class Lexicon:
         lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
         lex.operation_nouns = operation_nouns(office, lex._known)
+        lex.operation_names = operation_names(office)
         return lex
 
     def _declare(self, person: str, words: list[str]) -> None:
@@ -254,7 +275,7 @@ class Lexicon:
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
         # "needs a lamination": an operation named by a noun is read as its verb
-        out = read_as_verbs(out, self.operation_nouns, self._modifier_word)
+        out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"
         return self.verb_phrases.join(out, text)
 
@@ -372,10 +393,11 @@ class Lexicon:
     ) -> tuple[Mention, int] | None:
         for n in range(min(self.max_words, len(content) - k), 0, -1):
             idx = content[k : k + n]
-            # a possessive ends a phrase ("zhang's stapler" is two mentions)
-            if any(tokens[i].possessive for i in idx[:-1]):
-                continue
             phrase = " ".join(tokens[i].word for i in idx)
+            # a possessive ends a phrase ("zhang's stapler" is two mentions), unless the
+            # office's own name of a thing has it inside ("a reporter's notebook")
+            if any(tokens[i].possessive for i in idx[:-1]) and phrase not in self.inner_possessives:
+                continue
             start, end = idx[0], idx[-1] + 1
             poss = tokens[idx[-1]].possessive
             text = " ".join(tokens[i].text for i in idx)
@@ -550,6 +572,10 @@ def _one_verb(forms: list[str]) -> bool:
 
 
 _INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
+
+
+# A possessive "'s" inside a name, before another word ("reporter's notebook").
+_INNER_POSSESSIVE = re.compile(r"\w['’]s\s+\w")
 
 
 def key_of(name: str) -> str:

@@ -13,8 +13,10 @@ The nouns come from the office file only, never from a list of services here:
   ("legal review" for an operation asked for by "vet"), with the name's other words.
 
 A noun two operations share, or one that is already a word of the office (an item, a name, a
-task verb), is left alone. The rewrite is the lexicon's, like a typo's correction: the token
-is read as the operation's verb, its typed text kept.
+task verb), is left alone as a bare noun; said with the rest of an operation's display name
+("a *legal* read" where a "style read" also exists, or where "read" is an office word), the
+whole name names that operation and is read as it. The rewrite is the lexicon's, like a
+typo's correction: the token is read as the operation's verb, its typed text kept.
 """
 
 from __future__ import annotations
@@ -71,6 +73,21 @@ def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, s
     }
 
 
+def operation_names(office: Office) -> dict[tuple[str, ...], str]:
+    """Each operation's display name of two words or more, as its words ("legal", "read"),
+    with the operation's first verb: the whole name names one operation even where its head
+    noun alone is shared or means something else in the office. A name two operations share
+    is left out."""
+    named: dict[tuple[str, ...], set[str]] = {}
+    for op in office.operations:
+        if not op.verbs:
+            continue
+        name = tuple(normalize(op.name).split())
+        if len(name) >= 2 and language.is_noun(name[-1]):
+            named.setdefault(name, set()).add(normalize(op.verbs[0]).split()[0])
+    return {name: next(iter(verbs)) for name, verbs in named.items() if len(verbs) == 1}
+
+
 def _needed_before(words: Sequence[str], at: int, skippable: Callable[[str], bool]) -> bool:
     """Whether the noun at ``at`` follows the words of a need: "needs (a) (quick) ___",
     "could use a ___"; at most two modifiers between the article and the noun."""
@@ -87,15 +104,42 @@ def _needed_before(words: Sequence[str], at: int, skippable: Callable[[str], boo
 
 
 def read_as_verbs(
-    tokens: Sequence[Token], nouns: dict[str, str], skippable: Callable[[str], bool]
+    tokens: Sequence[Token],
+    nouns: dict[str, str],
+    skippable: Callable[[str], bool],
+    names: dict[tuple[str, ...], str] | None = None,
 ) -> list[Token]:
     """``tokens`` with each noun of ``nouns`` said after a need read as its operation's verb
     ("needs a lamination" → "needs a laminate"); ``skippable``: whether a word may stand as a
-    modifier between the article and the noun ("a *legal* review")."""
+    modifier between the article and the noun ("a *legal* review"); ``names``: operations'
+    whole display names (``operation_names``), whose head noun after a need is read as the
+    verb whatever the noun alone means ("needs a legal read" → "needs a legal vet")."""
     words = [t.word for t in tokens]
     out = list(tokens)
     for n, t in enumerate(tokens):
-        verb = nouns.get(t.word)
-        if verb is not None and not t.possessive and _needed_before(words, n, skippable):
+        if t.possessive:
+            continue
+        verb = _by_whole_name(words, n, names or {})
+        if verb is None:
+            verb = nouns.get(t.word)
+            if verb is not None and not _needed_before(words, n, skippable):
+                verb = None
+        if verb is not None:
             out[n] = t.corrected_to(verb)
     return out
+
+
+def _by_whole_name(words: Sequence[str], n: int, names: dict[tuple[str, ...], str]) -> str | None:
+    """The verb of the operation whose whole name ends at word ``n`` after a need, if any.
+    The whole name is specific, so any plain word may describe it ("a *quick* legal read")."""
+    for name, verb in names.items():
+        start = n - len(name) + 1
+        if start < 0 or tuple(words[start : n + 1]) != name:
+            continue
+        if _needed_before(words, start, _describing):
+            return verb
+    return None
+
+
+def _describing(word: str) -> bool:
+    return word.isalpha() and word not in _ARTICLES and word not in _NEEDING

@@ -62,11 +62,19 @@ class OperationChooser:
         }
 
     def choose(
-        self, frame: TaskFrame, lexed: Lexed, outside: Outside | None, *, sent_out: bool = False
+        self,
+        frame: TaskFrame,
+        lexed: Lexed,
+        outside: Outside | None,
+        *,
+        sent_out: bool = False,
+        destination: str | None = None,
     ) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
-        already said a send-out to a colleague's name is meant to leave the office."""
+        already said a send-out to a colleague's name is meant to leave the office;
+        ``destination``: the requester's answer to "Where should I courier it to?", the place
+        outside in their words where the request's own words named none."""
         # the words said as verbs: not those inside a thing's name ("an A1 print" names the
         # plot, its "print" is no print asked for)
         inside = {n for m in lexed.mentions if m.kind == "item" for n in range(m.start, m.end)}
@@ -136,6 +144,7 @@ class OperationChooser:
                 # a fax leaves the office: where to is the requester's to say, never a guess;
                 # the readings stage found the words ("send out my drawing to the client")
                 where = outside.phrase if outside is not None else None
+                where = where or destination
                 if where is None:
                     return TaskFrame(
                         requester=frame.requester,

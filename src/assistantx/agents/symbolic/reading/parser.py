@@ -48,6 +48,7 @@ import threading
 import weakref
 from collections import OrderedDict
 
+from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
     unanchored_it,
@@ -73,12 +74,25 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
-from assistantx.agents.symbolic.reading.parts import asked_part, unread_part
+from assistantx.agents.symbolic.reading.parts import (
+    asked_part,
+    items_named,
+    names_work,
+    operation_left_out,
+    unread_part,
+)
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
-from assistantx.agents.symbolic.reading.unknown_items import category_asked, unknown_item
+from assistantx.agents.symbolic.reading.unknown_items import (
+    PROPOSED,
+    category_asked,
+    one_choice,
+    proposal,
+    unknown_item,
+    with_choice,
+)
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -149,22 +163,33 @@ class InstructionParser:
         confirmed: bool = False,
         sent_out: bool = False,
         to_self: bool = False,
+        destination: str | None = None,
     ) -> TaskFrame:
         """The frame of a request: its pieces lexed and screened (speech acts, withdrawn,
         negated, destructive, facts, unsupported services), the tasks read from what is left,
         then judged. ``confirmed``: the requester already said yes to the restated reading;
         ``sent_out``: a send-out to a colleague's name is meant to leave the office;
-        ``to_self``: the requester answered "me" to whom their own item goes."""
+        ``to_self``: the requester answered "me" to whom their own item goes;
+        ``destination``: their answer to where a send-out goes (a place outside, as said)."""
+        text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
-        frame = self._frame(spoken.msg.lexed, request.text, requester, sent_out, to_self)
+        frame = self._frame(
+            spoken.msg.lexed, request.text, requester, sent_out, to_self, destination
+        )
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _frame(
-        self, whole: Lexed, request: str, requester: str, sent_out: bool, to_self: bool = False
+        self,
+        whole: Lexed,
+        request: str,
+        requester: str,
+        sent_out: bool,
+        to_self: bool = False,
+        destination: str | None = None,
     ) -> TaskFrame:
         """The tasks of the request the screen left (``request``), read from its readings;
         ``whole`` is the whole message as the lexicon read it for the screen: who has an item
@@ -183,14 +208,32 @@ class InstructionParser:
             unclear = unanchored_it(self.office, whole, frame.tasks)
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)
-            frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
+            frame = self.operations.choose(
+                frame, lexed, readings.outside, sent_out=sent_out, destination=destination
+            )
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)
             unread = unread_part(self.office, readings, frame) if frame.understood else None
             if unread is not None:  # a part no task carries: asked, never dropped
                 frame = TaskFrame(requester=requester, question=unread)
+        elif frame.question is not None and _asks_who(frame.question):
+            # "my proof needs a read, can you sort it", the read not understood: which work
+            # is meant is asked, not who gets the proof (it comes back to the requester)
+            named = items_named(readings)
+            left_out = operation_left_out(self.office, readings, set(), named)
+            if left_out is not None:
+                frame = TaskFrame(requester=requester, question=left_out)
         if frame.question == NOT_UNDERSTOOD:
             terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
+            only = one_choice(terms, tokens, mentions)
+            if only is not None:
+                # "something to write with" where a pen is the office's one such thing: no
+                # "Which would you like: pen?"; the pen is what was asked for, if nobody's
+                # (a supply, a product; a colleague's is offered: "I can get you ...")
+                said = with_choice(request, only[1], only[0])
+                if said is not None and self._anyones(only[0]):
+                    return self._frame(whole, said, requester, sent_out, to_self, destination)
+                return TaskFrame(requester=requester, question=proposal(only[0]))
             which = category_asked(terms, tokens, mentions)  # "a drink": tea or cocoa?
             unknown = unknown_item(terms, tokens, mentions) if which is None else None
             if which is not None:
@@ -198,6 +241,22 @@ class InstructionParser:
             elif unknown is not None:
                 frame = TaskFrame(requester=requester, decline=unknown)
         return frame
+
+    def _with_one_choice(self, text: str, requester: str) -> str | None:
+        """The request with its category words replaced by the office's one such thing."""
+        request = self.screen.request(self.screen.verdicts(text, requester))
+        readings = self.readings.read(self.lex.read(request.text))
+        only = one_choice(self.screen.terms, readings.tokens, readings.mentions)
+        return with_choice(text, only[1], only[0]) if only is not None else None
+
+    def _anyones(self, name: str) -> bool:
+        """Whether the item type so named is nobody's (a supply kept for anyone, or a thing
+        the office makes): the one thing of a category is then simply what was asked for; a
+        colleague's belonging is offered first ("I can get you ...")."""
+        return any(
+            t.name == name and (t.kind == "product" or self.office.supplier(t.id) is not None)
+            for t in self.office.item_types
+        )
 
     def parse_with_answers(self, text: str, requester: str, answers: list[str]) -> TaskFrame:
         remembered = self._remembered
@@ -219,6 +278,7 @@ class InstructionParser:
         question asked for the whole request. A reply answers the question asked: it never
         starts a request of its own ("Yes, I have a stapler" to "Shall I bring you one?" is
         a no, not a yes nor a new request for a stapler)."""
+        text, answers = undotted(text), [undotted(a) for a in answers]
         frame = self.parse(text, requester)
         for answer in answers:
             if frame.understood or frame.decline is not None:
@@ -226,6 +286,19 @@ class InstructionParser:
             if frame.question is not None and frame.question.startswith(OUT_OR_IN):
                 frame = self._out_or_in(text, requester, answer, frame)
                 continue
+            if frame.question is not None and frame.question.startswith(PROPOSED):
+                # "I can get you a pen. Would you like that?": yes asks for the pen
+                taken = plain_stance(answer)
+                offered = self._with_one_choice(text, requester) if taken == "yes" else None
+                if offered is not None:
+                    text, frame = offered, self.parse(offered, requester)
+                    continue
+                if taken == "no":
+                    return TaskFrame(
+                        requester=requester,
+                        decline="OK, I won't do anything, then.",
+                        decline_outcome="done",
+                    )
             if frame.question is not None and "Shall I" in frame.question:
                 offer = self.screen.screen(text, requester).offer
                 yes_no: OfferReply = plain_stance(answer)
@@ -269,10 +342,16 @@ class InstructionParser:
                 text, frame = with_antecedent(text, answer, kind), meant
                 continue
             part = asked_part(frame.question) if frame.question is not None else None
+            if part is not None and not names_work(self.office, frame.question or "", answer):
+                continue  # "a read?" "Me.": the work is still not said; asked again
             if part is not None and part in text:
                 # "I'm not sure what you mean by 'off to the plant'" → "courier it to the
                 # plant": the answer takes the place of the part asked about
-                text = text.replace(part, answer.strip().rstrip(" .!?"), 1)
+                instead = answer.strip().rstrip(" .!?")
+                lead = part.split()[0]
+                if lead.lower() in ("to", "into") and instead.lower().split()[:1] != [lead.lower()]:
+                    instead = f"{lead} {instead}"  # "to the post room" → "Hana": "to Hana"
+                text = text.replace(part, instead, 1)
                 frame = self.parse(text, requester)
                 continue
             if frame.question is not None and frame.question.startswith(WHERE_TO):
@@ -280,6 +359,11 @@ class InstructionParser:
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
+                if frame.question is not None and not frame.question.startswith(OUT_OR_IN):
+                    # the words appended read otherwise ("... with the courier to Riverside
+                    # print plant": "Riverside" looked up as a colleague): the answer is
+                    # the place outside, as said, never a person to find
+                    frame = self.parse(text, requester, destination=place.rstrip(" .!?"))
                 continue
             if frame.question is not None and _asks_who(frame.question) and _is_me(answer):
                 # "Who should get your reel?" "Me.": the requester, not a new request

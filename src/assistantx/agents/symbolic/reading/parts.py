@@ -11,7 +11,11 @@ done, the sending out silently left out, and "Done" reported). The parts no task
 - a sending away with no task that sends anything out: "send it out", "get it away";
 - a send-out service asked for by a request's own verb, or a facility named as doing the
   work ("past legal"), on an item a task carries, run by no task ("courier my report to the
-  head office and vet it" read as the review alone).
+  head office and vet it" read as the review alone);
+- an operation named by its display name, or by the head noun of it after an article ("a
+  legal read", "a read" where a legal read and a style read both exist), on an item the
+  request names, run by no task (``operation_left_out``): after "Who should get your
+  proof?" "Me.", the proof handed back unread would be reported done.
 
 Each is asked about before anything moves, quoting the part in the requester's words (with
 the office's ways of sending things out, where it has some); the answer takes the part's
@@ -27,8 +31,9 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
-from assistantx.core.office import Office
+from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
+from assistantx.memory.names import normalize
 
 _TO = frozenset({"to", "towards", "toward"})
 # The words before a "to" that no verb governs: "and then off to the plant", "then to X".
@@ -49,9 +54,15 @@ _LONGEST = 6  # words in a destination phrase: longer is no place named
 _PAST = frozenset({"past", "through", "via"})
 # What may stand before a request's own verb: a clause's start, a join, a courtesy.
 _REQUEST_OPENERS = frozenset({"", "and", "then", "also", "please", "pls", "just", "you"})
+# The words that take a thing to a place ("take it *to* the post room", "drop it *into* ...").
+_TO_PLACE = frozenset({"to", "into"})
+# The articles before an operation's name said as a noun: "a legal read", "the read".
+_NAME_ARTICLES = frozenset({"a", "an", "the", "another", "its", "some"})
 # How the question quotes the part, so the answer can take its place in the request.
 ASKED = "Sorry, I'm not sure what you mean by “"
 _ASKED_END = "”."
+# How a question about an operation's name lists the work it may mean.
+WHICH_WORK = " I can arrange "
 
 
 def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
@@ -62,6 +73,13 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     destinations = {
         w for t in frame.tasks if t.destination for w in language.words(t.destination.lower())
     }
+    run = {operation_of(office, t) for t in frame.tasks}
+    items = {t.item for t in frame.tasks}
+    left_out = operation_left_out(office, readings, run, items) or _place_left_out(
+        office, readings, frame
+    )
+    if left_out is not None:
+        return left_out
     phrase = (
         _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
@@ -70,6 +88,130 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if phrase is None:
         return None
     return f"{ASKED}{phrase}{_ASKED_END}{_means(office)} Could you tell me?"
+
+
+def operation_left_out(
+    office: Office, readings: Readings, run: set[str | None], items: set[str | None]
+) -> str | None:
+    """The question about an operation of the office named in the request ("a legal read")
+    on one of ``items`` that none of the operations in ``run`` is; None when there is none.
+    The question names the operations the words may mean, so the answer can choose one."""
+    tokens = readings.tokens
+    words = [t.word for t in tokens]
+    office_words = {
+        k
+        for m in readings.mentions
+        if m.kind in ("person", "item", "facility", "place")
+        for k in range(m.start, m.end)
+    }
+    for op in office.operations:
+        if op.input is None or op.input not in items or op.id in run or not op.verbs:
+            continue
+        at = _said_at(words, normalize(op.name).split(), office_words)
+        if at is None:
+            continue
+        head = normalize(op.name).split()[-1]
+        meant = [
+            o.name
+            for o in office.operations
+            if o.input == op.input and normalize(o.name).split()[-1:] == [head]
+        ]
+        phrase = " ".join(t.text for t in tokens[at[0] : at[1]])
+        offer = " or ".join(f"a {n}" for n in dict.fromkeys(meant))
+        return f"{ASKED}{phrase}{_ASKED_END}{WHICH_WORK}{offer}. Could you tell me?"
+    return None
+
+
+def names_work(office: Office, question: str, answer: str) -> bool:
+    """Whether ``answer`` to a question of ``operation_left_out`` names work: a word of an
+    operation's name or one of its verbs ("the legal one", "vet it"); "Me." names none, and
+    must not take the place of the work asked about."""
+    if WHICH_WORK not in question:
+        return True
+    said = set(language.words(answer.lower()))
+    words = {
+        w
+        for op in office.operations
+        for phrase in (op.name, *op.verbs)
+        for w in normalize(phrase).split()
+    }
+    return bool(said & words)
+
+
+def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
+    """The question about a place of the office the request takes something to ("print my
+    agenda and take it to the post room") that no task goes to: no task's facility, source,
+    operation or person is there. The robot hands things to people, so who there gets it
+    is asked (naming who looks after it), never the place dropped and the item brought back
+    to the requester."""
+    tokens = readings.tokens
+    for m in readings.mentions:
+        if m.kind not in ("place", "facility") or m.start < 1:
+            continue
+        k = m.start - 1
+        while k > 0 and tokens[k].word in _NP_OPENERS:
+            k -= 1
+        if tokens[k].word not in _TO_PLACE:
+            continue
+        facilities = (
+            [office.facility(m.id)]
+            if m.kind == "facility"
+            else [f for f in office.facilities if f.location == m.id]
+        )
+        if _goes_to(office, frame, m.id if m.kind == "place" else None, facilities):
+            continue
+        there = [p.id for p in office.people if m.kind == "place" and p.location == m.id]
+        keepers = list(dict.fromkeys([*(g for f in facilities for g in f.guards), *there]))
+        names = " or ".join(office.person(g).name for g in keepers)
+        kept = f" ({names} {'is' if len(keepers) == 1 else 'are'} there.)"
+        phrase = " ".join(t.text for t in tokens[k : m.end])
+        return (
+            f"{ASKED}{phrase}{_ASKED_END} I hand things to people, not to rooms: who "
+            f"there should get it?{kept if keepers else ''}"
+        )
+    return None
+
+
+def _goes_to(
+    office: Office, frame: TaskFrame, place: str | None, facilities: Sequence[Facility]
+) -> bool:
+    """Whether a task of ``frame`` goes to the place or to one of its facilities."""
+    ids = {f.id for f in facilities}
+    where = {p.id: p.location for p in office.people}
+    ops = {op for f in facilities for op in f.operations}
+    for t in frame.tasks:
+        if t.facility in ids or t.source in ids or t.owner in ids or operation_of(office, t) in ops:
+            return True
+        people = [p for p in (t.recipient, t.actor, t.owner, t.source) if p]
+        if place is not None and any(where.get(p) == place for p in people):
+            return True
+    return False
+
+
+def items_named(readings: Readings) -> set[str | None]:
+    """The office's item types the request names."""
+    return {m.id for m in readings.mentions if m.kind == "item"}
+
+
+def _said_at(
+    words: Sequence[str], name: Sequence[str], office_words: set[int]
+) -> tuple[int, int] | None:
+    """Where an operation's name is said as a noun, its article kept with it: the whole name
+    of two words or more ("legal read"), or its head noun right after an article ("a read",
+    "the courier"); never inside the name of a person, item, facility or place ("the post
+    desk")."""
+    n = len(name)
+    if not n:
+        return None
+    for k in range(len(words) - n + 1):
+        if office_words & set(range(k, k + n)) or list(words[k : k + n]) != list(name):
+            continue
+        if n >= 2:
+            return (k - 1 if k and words[k - 1] in _NAME_ARTICLES else k), k + n
+    for k in range(1, len(words)):
+        if k not in office_words and words[k] == name[-1] and words[k - 1] in _NAME_ARTICLES:
+            return k - 1, k + 1
+    return None
 
 
 def asked_part(question: str) -> str | None:

@@ -89,11 +89,16 @@ class MentionReader:
         outside = find_outside(tokens, spaces, self._sends_out, names)
         if outside is not None and not any(
             m.start == outside.verb_start
-            and (m.kind == "cue" or (m.kind == "facility" and outside.means))
+            and (
+                m.kind == "cue"
+                or (m.kind == "facility" and outside.means)
+                or (m.kind == "word" and outside.means and _phrase_ends(tokens, spaces, m.end))
+            )
             for m in mentions
         ):
             # "a courier bag": the service's word used as a noun, not its verb; but "by
-            # courier" names the service as the means, also where a facility is so called
+            # courier", "with the courier" name the service as the means (also where a
+            # facility is so called), the noun ending its phrase (never "the courier bag")
             outside = None
         inside = self._inside(tokens, mentions, outside) if outside is not None else None
         if outside is not None:
@@ -238,9 +243,11 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
     if language.is_month(word) or language.is_weekday(word):
         return False  # "from March", "by Friday": a date
     following = mentions[n + 1] if n + 1 < len(mentions) else None
-    if m.possessive and following is not None and following.kind == "item":
-        return True  # "Smith's stapler"
     prev = prev_word(tokens, m.start, skip_titles=False)
+    if m.possessive and following is not None and following.kind == "item":
+        # "Smith's stapler"; but "an editor's notebook": a kind of person, said in lower
+        # case after "a", is an ordinary noun, no name to look up
+        return not (m.text[:1].islower() and prev in ("a", "an") and language.is_noun(word))
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
     return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
@@ -296,3 +303,15 @@ def participle_adjectives(tokens: Sequence[Token], mentions: Sequence[Mention]) 
         if language.is_past_participle(tokens[m.start].word):
             out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
     return out
+
+
+# What may follow a service's noun that ends its phrase: "with the courier *please*".
+_AFTER_MEANS = frozenset({"please", "pls", "thanks", "thank", "today", "asap", "now", "and"})
+
+
+def _phrase_ends(tokens: Sequence[Token], spaces: Sequence[str], k: int) -> bool:
+    """Whether the phrase ends before token ``k``: the message's end, a clause mark, or a
+    courtesy or joining word ("with the courier, please"; never "with the courier bag")."""
+    if k >= len(tokens):
+        return True
+    return any(c in ".,;!?\n" for c in spaces[k]) or tokens[k].word in _AFTER_MEANS

@@ -35,6 +35,7 @@ from typing import Literal
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.core import english, language
+from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
 
 QuestionKind = Literal["polite", "info"]
 
@@ -109,6 +110,23 @@ class Act:
     kind: Literal["question", "thanks", "wish", "withdrawal", "statement", "need"]
     question: QuestionKind | None = None
     relay: bool = False  # thanks to be passed on to someone else
+
+
+# The titles said before a person's name ("Dr", "Mrs"), not the articles the titles list has.
+_PERSON_TITLES = english.words("titles") - {"a", "an", "the", "our"}
+
+
+# What opens the thing after a causative "have" ("have *my* proof signed", "have *it* done").
+_THING_OPENERS = frozenset({"my", "our", "the", "this", "that", "these", "those", "it", "them"})
+
+
+def _left_at_someones_place(w: list[str]) -> bool:
+    """Whether the words name a person's own place as where a thing is left: "on her desk",
+    "in my office", "at their workstation" (``core.receiving_place``)."""
+    return any(
+        a in MEET_AT and (b in PLACE_PRONOUNS or b in _OWN) and c in PLACE_WORDS
+        for a, b, c in zip(w, w[1:], w[2:], strict=False)
+    )
 
 
 def content(words: list[str]) -> list[str]:
@@ -290,7 +308,9 @@ class SpeechActs:
         for n in range(len(w)):
             if any(_starts(w[n:], p) for p in _NOBODY):
                 return True  # "nobody take my mug", "make sure no one uses ..."
-        if w[:1] and w[0] in _GUARD_VERBS:
+        if w[:1] and w[0] in _GUARD_VERBS and not _left_at_someones_place(w[1:]):
+            # "leave it on her desk", "leave it in my office": where it is delivered to,
+            # never "leave her alone"
             rest = set(w[1:])
             if rest & _EVERYONE or rest & _AWAY:  # "keep everyone away from", "leave it alone"
                 return True
@@ -442,7 +462,7 @@ class SpeechActs:
     def statement(self, words: list[str]) -> bool:
         """A statement of fact, not a request: a subject, then a state or past verb, before
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
-        w = content(words)
+        w = self._untitled(content(words))
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if _has_need_phrase(w):
@@ -567,6 +587,8 @@ class SpeechActs:
         k = 0
         while k < len(w) and w[k] in ("please", "pls", "plz", "kindly", "just", "also", "then"):
             k += 1
+        if k < len(w) and w[k] == "leave" and _left_at_someones_place(w[k + 1 :]):
+            return True  # "leave it on her desk": where it is delivered, a command
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
 
     def _for_me(self, w: list[str]) -> bool:
@@ -593,9 +615,21 @@ class SpeechActs:
     def _named(self, word: str) -> bool:
         return word in self.lex.name_words or word in self.lex.people
 
+    def _untitled(self, w: list[str]) -> list[str]:
+        """The words without a title before the name that opens them ("Dr Osei signed it"
+        reads as "Osei signed it"): the subject is the person, the title no verb."""
+        if len(w) > 1 and w[0] in _PERSON_TITLES and self._named(w[1]):
+            return w[1:]
+        return w
+
     def _causative(self, w: list[str]) -> bool:
         """ "have Ines stamp my lease", "have Wang sign it": "have", a person's name, then a
-        verb in its plain form: someone made to do something, not "have you got ...?"."""
+        verb in its plain form: someone made to do something, not "have you got ...?"; and
+        "have my proof signed by Femi": "have", the thing, then a task word's participle."""
+        if w[1:2] and w[1] in _THING_OPENERS:
+            for x in w[2:6]:
+                if x in self.lex.cue_words and language.is_past_participle(x):
+                    return True
         k = 1
         while k < len(w) and k < 4 and (w[k] in self.lex.name_words or w[k] in self.lex.people):
             k += 1

@@ -4,6 +4,7 @@ rather than asked about again."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._objects import REASON_CONJUNCTIONS, modifiers
@@ -18,6 +19,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
+from assistantx.core.wording import a_thing
 
 # The words of the phrases that point back to an item named before ("another", "a few more").
 _BACK_WORDS = english.words("another_one")
@@ -57,15 +59,72 @@ def category_asked(
     return which_question(choices) if choices else None
 
 
+def one_choice(
+    terms: Terms, tokens: Sequence[Token], mentions: Sequence[Mention]
+) -> tuple[str, tuple[str, ...]] | None:
+    """The office's one thing of the category asked for ("something to write with" where
+    the only such thing is a pen), by its item type's name, with the words that said the
+    category; None where the office has none or several of it, or names its one only by a
+    synonym ("soda from the vending machine")."""
+    words = _asked_words(tokens, mentions)
+    if words is None:
+        return None
+    thing = terms.unknown_thing(words)
+    category, said = _category_said(thing, words)
+    if category is None:
+        return None
+    choices = office_choices(terms.office, category)
+    names = {t.name for t in terms.office.item_types}
+    if len(choices) != 1 or choices[0] not in names:
+        return None
+    return choices[0], said
+
+
+# How the one thing of a category is offered where it is someone's own kind of thing.
+PROPOSED = "I can get you "
+
+
+def proposal(choice: str) -> str:
+    """ "I can get you a pen. Would you like that?": the one thing, offered plainly."""
+    return f"{PROPOSED}{a_thing(choice)}. Would you like that?"
+
+
+def with_choice(text: str, said: Sequence[str], choice: str) -> str | None:
+    """``text`` with the words that said the category (as folded words, any punctuation
+    between) replaced by the one thing ("bring me something to write with" → "bring me a
+    pen"); None when they are not found in it."""
+    if not said:
+        return None
+    pattern = r"\b" + r"\W+".join(re.escape(w) for w in said) + r"\b"
+    found = re.search(pattern, language.fold(text), flags=re.IGNORECASE)
+    if found is None or len(language.fold(text)) != len(text):
+        return None
+    start, end = found.span()
+    before = text[:start].rstrip().lower()
+    if before.endswith((" a", " an", " some", " any")) or before in ("a", "an", "some", "any"):
+        return f"{text[:start]}{choice}{text[end:]}"  # "a drink" → "a coffee"
+    return f"{text[:start]}{a_thing(choice)}{text[end:]}"
+
+
 def _category(thing: str, words: list[str]) -> Category | None:
     """The category of "a drink", "some hot drinks", or of "something to write with"."""
+    return _category_said(thing, words)[0]
+
+
+def _category_said(thing: str, words: list[str]) -> tuple[Category | None, tuple[str, ...]]:
+    """The category and the words that said it: "drink" in "a drink", "something to write
+    with"."""
     found = category_named(thing) if thing else None
     if found is not None:
-        return found
+        return found, tuple(thing.split())
     for n, w in enumerate(words[:-2]):
         if w in _SOMETHING and words[n + 1] == "to":
-            return category_named(" ".join(words[n : n + 3])) or category_for_purpose(words[n + 2])
-    return None
+            category = category_named(" ".join(words[n : n + 3])) or category_for_purpose(
+                words[n + 2]
+            )
+            end = n + 4 if words[n + 3 : n + 4] == ["with"] else n + 3
+            return category, tuple(words[n:end])
+    return None, ()
 
 
 def _asked_words(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[str] | None:

@@ -20,9 +20,11 @@ number, verb or preposition) and sorts them by what the dictionary says they are
   "fresh", "extra"), the participle of one of the office's own services ("printed") and
   anything after the name ("a tea, quick").
 
-Limits, on purpose: an adjective that also names a variant ("herbal", "black") is read as a
-quality, as the dictionary cannot tell them apart; the office names such variants as items of
-their own where it makes them.
+An adjective that also names a variant ("herbal", "black") the dictionary cannot tell from a
+quality; where the package's table of general English things (``data/categories.yaml``)
+knows the whole phrase as a thing of its own ("herbal tea", "black coffee"), it is a variant
+all the same (asked), unless the office names it as an item of its own. Other adjectives are
+read as qualities, on purpose.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.categories import categories
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -132,7 +135,11 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         # an authority phrase may start with a word that stops a modifier ("all-access")
         reach = tuple(t.word for t in tokens[max(0, start - 1) : m.start])
         authority = any(_has(reach, phrase) and set(phrase) & set(words) for phrase in _AUTHORITY)
-        if not authority and not any(_names_a_kind(terms, w) for w in words):
+        if (
+            not authority
+            and not any(_names_a_kind(terms, w) for w in words)
+            and not _a_thing_of_its_own(terms, words, m.ids[0])
+        ):
             continue
         if authority:
             said = tokens[max(0, start - 1) : m.start] if reach != words else said
@@ -170,6 +177,19 @@ def _names_a_kind(terms: Terms, word: str) -> bool:
     if language.is_past_participle(word):
         return True
     return "ADJ" not in read and "NOUN" in read
+
+
+def _a_thing_of_its_own(terms: Terms, words: tuple[str, ...], item_type: str) -> bool:
+    """Whether the modifiers and the product's name together name a thing of its own in the
+    package's table of general English things (``data/categories.yaml``: "herbal tea",
+    "black coffee" beside "tea" and "coffee"), one the office does not name: an adjective
+    the dictionary cannot tell from a quality ("herbal", "black") still asks for a kind."""
+    name = language.fold(terms.office.item_type(item_type).name)
+    members = {m for c in categories() for m in c.members}
+    return any(
+        (said := f"{' '.join(words[-n:])} {name}") in members and said not in terms.lex.items
+        for n in range(1, len(words) + 1)
+    )
 
 
 def _authority_word(word: str) -> bool:
