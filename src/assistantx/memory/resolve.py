@@ -231,10 +231,18 @@ class Resolver:
             case ForwardFile():
                 source = self.person(action.source)
                 target = self.contact(action.target)[1]
-                file = self.item(action.file) if action.file else f"file:{source}"
-                if self.office.item_type(file.split(":")[0]).kind != "electronic":
+                # the office names its file type as it likes ("script:ann", "drawing:bo")
+                file = self.item(action.file) if action.file else self.office.file_of(source)
+                file_type = self.office.file_type()
+                if file_type is None:
                     raise UnknownNameError(
-                        "file", file, f"{file!r} is not an electronic file; use 'file:<person>'."
+                        "file", file, "This office keeps no electronic files to forward."
+                    )
+                if self.office.item_type(file.partition(":")[0]).kind != "electronic":
+                    raise UnknownNameError(
+                        "file",
+                        file,
+                        f"{file!r} is not an electronic file; use '{file_type}:<person>'.",
                     )
                 return action.model_copy(update={"source": source, "target": target, "file": file})
             case SendQR():

@@ -417,10 +417,14 @@ def _add_part(
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))
             plan.must_be_available.add(to)
-            plan.add_goal({"received": [to, f"{office.file_type()}:{a}"]})
+            plan.add_goal({"received": [to, office.file_of(a)]})
         case "get_file":
             owner = part.owner or ""
-            role = _named(owner, f"Could you send me your file for {who}?", wants_file=True)
+            # named as this office names its files (a "script", a "drawing"): asked for by
+            # that name, the owner knows which file is meant
+            file_type = office.file_type() or ""
+            thing = office.item_type(file_type).name
+            role = _named(owner, f"Could you send me your {thing} for {who}?", wants_file=True)
             plan.add_role(role)
             plan.forwards.append(Forward(role.key, REQUESTER))
-            plan.add_goal({"received": [a, f"{office.file_type()}:{owner}"]})
+            plan.add_goal({"received": [a, office.file_of(owner)]})

@@ -1,0 +1,60 @@
+"""A forward is grounded on the office's own file type, whatever its id (issue 23: an office
+whose electronic type is ``script`` crashed with ``unknown item type 'file'``)."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.core.actions import ForwardFile
+from assistantx.core.errors import GroundingError
+from assistantx.core.office import Office, parse_office
+from assistantx.memory.resolve import Resolver
+from helpers.rehearsal_rooms import (
+    drafting_studio,
+    raw_rehearsal_rooms,
+    rehearsal_rooms,
+)
+
+
+@pytest.mark.parametrize(
+    ("office", "source", "target", "expected"),
+    [
+        (rehearsal_rooms(), "priya", "company", "script:priya"),
+        (rehearsal_rooms(), "Bruno Aalto", "kwesi", "script:bruno"),
+        (drafting_studio(), "femi", "Greta", "drawing:femi"),
+    ],
+    ids=["script", "script-by-name", "drawing"],
+)
+def test_a_forward_with_no_file_named_is_the_sources_file(
+    office: Office, source: str, target: str, expected: str
+) -> None:
+    grounded = Resolver(office).ground(ForwardFile(source=source, target=target))
+    assert isinstance(grounded, ForwardFile)
+    assert grounded.file == expected
+
+
+def test_a_named_file_of_the_offices_type_is_kept() -> None:
+    grounded = Resolver(rehearsal_rooms()).ground(
+        ForwardFile(source="priya", target="bruno", file="Kwesi Boateng's script")
+    )
+    assert isinstance(grounded, ForwardFile)
+    assert grounded.file == "script:kwesi"
+
+
+def test_a_physical_item_is_no_file_and_the_hint_names_the_offices_type() -> None:
+    with pytest.raises(GroundingError, match="script:<person>"):
+        Resolver(rehearsal_rooms()).ground(
+            ForwardFile(source="priya", target="bruno", file="contract:priya")
+        )
+
+
+def test_an_office_with_no_files_says_so_rather_than_crashing() -> None:
+    raw = raw_rehearsal_rooms()
+    raw["item_types"] = [t for t in raw["item_types"] if t["id"] not in ("script", "script_pack")]
+    raw["operations"] = [o for o in raw["operations"] if o["id"] != "make_pack"]
+    raw["facilities"] = [f for f in raw["facilities"] if f["id"] != "photocopier"]
+    for person in raw["people"]:
+        person["owns"] = [o for o in person["owns"] if o["type"] != "script"]
+    office = parse_office(raw, "no_files")
+    with pytest.raises(GroundingError, match="no electronic files"):
+        Resolver(office).ground(ForwardFile(source="priya", target="bruno"))
