@@ -11,6 +11,8 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.oracle.plan import build_plan
+from assistantx.agents.oracle.policy import dry_run
+from assistantx.core.actions import ForwardFile, Inquire, SendQR
 from assistantx.core.office import Office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
 from assistantx.evaluation.dataset.generate import _task as task_of
@@ -99,3 +101,67 @@ def test_the_owner_is_asked_for_the_file_by_the_offices_name_for_it(office_name:
     [role] = build_plan(base, office).roles
     name = office.item_type(office.file_type() or "").name
     assert f"send me your {name} for" in role.question
+
+
+# -- the two-part errand: a product for A, the file itself to B, a keeper of the machine ----
+
+PACK_AND_SCRIPT = BaseInstruction(
+    id="two",
+    requester="ines",
+    text="Please make up a script pack from my script for Bruno and send my script to Tomas.",
+    parts=(Part(kind="print", to="bruno"), Part(kind="forward_file", to="tomas")),
+)
+
+
+def test_the_keeper_who_gets_the_file_is_sent_it_once() -> None:
+    """Ines and Tomas keep the photocopier; Tomas makes the pack (Ines asked, so not her) and
+    is the one the script is to go to: one forward serves both, a second would only repeat
+    it (and the runtime refuses a repeat)."""
+    office = rehearsal_rooms()
+    run = dry_run(PACK_AND_SCRIPT, build_plan(PACK_AND_SCRIPT, office), office, set())
+    forwards = [a for a in run.actions if isinstance(a, ForwardFile)]
+    assert [(f.source, f.target) for f in forwards] == [("ines", "tomas")]
+    assert [a.contact for a in run.actions if isinstance(a, Inquire)] == ["tomas", "bruno"]
+    codes = [(a.contact, a.item, a.purpose) for a in run.actions if isinstance(a, SendQR)]
+    assert codes == [
+        ("tomas", "script_pack:ines", "produce"),
+        ("bruno", "script_pack:ines", "collect"),
+    ]
+    assert run.outcome == "done"
+
+
+def _to(to: str) -> BaseInstruction:
+    """The errand with the script going to ``to`` instead of Tomas."""
+    name = rehearsal_rooms().person(to).name
+    return PACK_AND_SCRIPT.model_copy(
+        update={
+            "text": PACK_AND_SCRIPT.text.replace("Tomas", name),
+            "parts": (Part(kind="print", to="bruno"), Part(kind="forward_file", to=to)),
+        }
+    )
+
+
+def test_a_file_for_someone_besides_the_keeper_is_still_forwarded_twice() -> None:
+    office = rehearsal_rooms()
+    base = _to("kwesi")
+    run = dry_run(base, build_plan(base, office), office, set())
+    forwards = [(a.source, a.target) for a in run.actions if isinstance(a, ForwardFile)]
+    assert forwards == [("ines", "tomas"), ("ines", "kwesi")]
+
+
+@pytest.mark.parametrize("to", ["tomas", "kwesi"], ids=["to-the-keeper", "to-a-colleague"])
+async def test_every_variant_of_the_two_part_errand_is_solved(to: str) -> None:
+    await _verify_every_variant(rehearsal_rooms(), _to(to))
+
+
+async def test_the_two_part_errand_with_a_third_keeper_is_solved() -> None:
+    """With Hedda keeping the photocopier too, whoever makes the pack, the script still
+    reaches Tomas, once."""
+    office = rehearsal_rooms()
+    facilities = tuple(
+        f.model_copy(update={"guards": (*f.guards, "hedda")}) if f.id == "photocopier" else f
+        for f in office.facilities
+    )
+    await _verify_every_variant(
+        office.model_copy(update={"facilities": facilities}), PACK_AND_SCRIPT
+    )
