@@ -1,0 +1,93 @@
+"""The symbolic ppdr on offices whose electronic file type is not called ``file`` (issue 23):
+the requester's ``script`` or ``drawing`` is worked on at the machine, handed over, sent to a
+colleague, and asked for from one; and the two-part errand whose file goes to a keeper of the
+machine that works on it reaches both people, the file forwarded once."""
+
+from __future__ import annotations
+
+import pytest
+from symbolic_run import run_instruction
+
+from assistantx.core.actions import ForwardFile
+from assistantx.core.goals import Milestone
+from assistantx.core.office import Office
+from helpers.rehearsal_rooms import drafting_studio, rehearsal_rooms
+
+OFFICES = {"script": rehearsal_rooms, "drawing": drafting_studio}
+
+CASES = [
+    (
+        "script",
+        "priya",
+        "Could you make up a rehearsal script pack from my script?",
+        [{"printed": "script:priya"}, {"holds": ["priya", "script_pack:priya"]}],
+    ),
+    (
+        "script",
+        "priya",
+        "Please make up a script pack from my script and take it to Bruno.",
+        [{"holds": ["bruno", "script_pack:priya"]}],
+    ),
+    (
+        "script",
+        "priya",
+        "Send my script to Kwesi, please.",
+        [{"received": ["kwesi", "script:priya"]}],
+    ),
+    ("script", "kwesi", "can you get me Bruno's script", [{"received": ["kwesi", "script:bruno"]}]),
+    (
+        "drawing",
+        "femi",
+        "Could you plot my drawing?",
+        [{"printed": "drawing:femi"}, {"holds": ["femi", "plot:femi"]}],
+    ),
+    (
+        "drawing",
+        "femi",
+        "Please plot my drawing and take it to Greta.",
+        [{"holds": ["greta", "plot:femi"]}],
+    ),
+    ("drawing", "greta", "pass my drawing on to Yusuf", [{"received": ["yusuf", "drawing:greta"]}]),
+    (
+        "drawing",
+        "yusuf",
+        "Could you get me Femi's drawing?",
+        [{"received": ["yusuf", "drawing:femi"]}],
+    ),
+]
+
+
+def _office(name: str) -> Office:
+    return OFFICES[name]()
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "goal"), CASES, ids=[f"{c[0]}-{n}" for n, c in enumerate(CASES)]
+)
+async def test_the_file_errand_is_done(
+    office: str, who: str, text: str, goal: list[Milestone]
+) -> None:
+    run = await run_instruction(_office(office), who, text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert all(run.sim.world.check(m) for m in goal), goal
+    assert not [r for r in run.stm.trace.actions() if r.refused]
+
+
+@pytest.mark.parametrize(
+    ("to", "forwards"),
+    [("Tomas", [("ines", "tomas")]), ("Kwesi", [("ines", "tomas"), ("ines", "kwesi")])],
+    ids=["to-the-keeper", "to-a-colleague"],
+)
+async def test_the_pack_goes_to_one_and_the_script_to_the_other(
+    to: str, forwards: list[tuple[str, str]]
+) -> None:
+    """Ines keeps the photocopier with Tomas: Tomas makes the pack, Bruno gets it, and the
+    script reaches ``to``; when that is Tomas, the one forward for the pack is it."""
+    text = f"Please make up a script pack from my script for Bruno and send my script to {to}."
+    run = await run_instruction(rehearsal_rooms(), "ines", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["bruno", "script_pack:ines"]})
+    assert run.sim.world.check({"received": [to.lower(), "script:ines"]})
+    done = [r.action for r in run.stm.trace.actions() if not r.refused]
+    assert [(a.source, a.target) for a in done if isinstance(a, ForwardFile)] == forwards
+    assert not [r for r in run.stm.trace.actions() if r.refused]
