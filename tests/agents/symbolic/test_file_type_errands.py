@@ -9,8 +9,11 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.core.actions import ForwardFile
+from assistantx.core.events import TraceEvent
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office
+from assistantx.core.ports.messenger import ChatRef, persons_file
+from assistantx.sim.office import SimOffice
 from helpers.rehearsal_rooms import drafting_studio, rehearsal_rooms
 
 OFFICES = {"script": rehearsal_rooms, "drawing": drafting_studio}
@@ -91,3 +94,38 @@ async def test_the_pack_goes_to_one_and_the_script_to_the_other(
     done = [r.action for r in run.stm.trace.actions() if not r.refused]
     assert [(a.source, a.target) for a in done if isinstance(a, ForwardFile)] == forwards
     assert not [r for r in run.stm.trace.actions() if r.refused]
+
+
+async def test_a_file_labelled_by_a_messenger_that_knows_no_office_is_the_senders() -> None:
+    """Matrix labels a file Bruno sends ``file:bruno`` (it cannot know the office calls its
+    files scripts): the runtime reads it as Bruno's script, so the one Kwesi asked for is
+    seen to have come and is passed on."""
+    asked: list[str] = []
+
+    async def hook(event: TraceEvent, sim: SimOffice) -> None:
+        # Bruno's own simulated self is away: he answers the first question with his file
+        result = event.data.get("result")
+        if event.kind != "action_result" or not isinstance(result, dict) or asked:
+            return
+        action = result["action"]
+        if action["type"] == "inquire" and action["contact"] == "bruno":
+            asked.append(action["question"])
+            sim.messenger.post(
+                "bruno",
+                ChatRef(kind="dm", id="bruno"),
+                "here it is",
+                files=[persons_file("bruno")],
+                in_reply_to=result["data"]["question_id"],
+            )
+
+    run = await run_instruction(
+        rehearsal_rooms(),
+        "kwesi",
+        "can you get me Bruno's script",
+        unavailable=("bruno",),
+        on_event=hook,
+    )
+    assert asked, "Bruno was never asked"
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"received": ["kwesi", "script:bruno"]})
+    assert run.stm.files_received.get("bruno") == ["script:bruno"]

@@ -30,6 +30,17 @@ class ChatRef(BaseModel):
         return f"{self.kind}:{self.id}"
 
 
+# What a messenger that cannot know the office (Matrix) calls a file a person sent: their
+# ``file:<person>``. The runtime reads it as the office's own name for that person's file
+# (``script:lee`` in an office whose electronic type is a script: ``Office.file_of``).
+PERSONS_FILE_TYPE = "file"
+
+
+def persons_file(person: str) -> str:
+    """The messenger's item id for a file ``person`` sent, whatever the office calls it."""
+    return f"{PERSONS_FILE_TYPE}:{person}"
+
+
 class Attachment(BaseModel):
     kind: Literal["image", "file"]
     name: str
