@@ -58,3 +58,23 @@ def test_an_office_with_no_files_says_so_rather_than_crashing() -> None:
     office = parse_office(raw, "no_files")
     with pytest.raises(GroundingError, match="no electronic files"):
         Resolver(office).ground(ForwardFile(source="priya", target="bruno"))
+
+
+@pytest.mark.parametrize("name", ["file:priya", "Priya's file", "the file of Priya Raman"])
+def test_the_word_file_is_the_offices_file_type(name: str) -> None:
+    """The LLM agents' prompts and a messenger that knows no office say ``file:priya``."""
+    grounded = Resolver(rehearsal_rooms()).ground(
+        ForwardFile(source="priya", target="bruno", file=name)
+    )
+    assert isinstance(grounded, ForwardFile)
+    assert grounded.file == "script:priya"
+
+
+def test_a_type_the_office_calls_file_is_that_type() -> None:
+    """A paper ``file`` (a folder) of the office's own is no electronic file to forward."""
+    raw = raw_rehearsal_rooms()
+    raw["item_types"].append({"id": "folder", "name": "file"})
+    resolver = Resolver(parse_office(raw, "with_folders"))
+    assert resolver.item("file:priya") == "folder:priya"
+    with pytest.raises(GroundingError, match="not an electronic file"):
+        resolver.ground(ForwardFile(source="priya", target="bruno", file="file:priya"))

@@ -10,8 +10,8 @@ asked for is seen to have come (``script:lee``, not an unknown ``file:lee``).
 
 from __future__ import annotations
 
-from assistantx.core.office import Office
-from assistantx.core.ports.messenger import PERSONS_FILE_TYPE, InboundMessage
+from assistantx.core.office import FILE_WORD, Office
+from assistantx.core.ports.messenger import InboundMessage
 
 
 def received_files(office: Office, message: InboundMessage) -> list[str]:
@@ -23,8 +23,8 @@ def office_item(office: Office, item: str) -> str:
     """``item`` in the office's names: the neutral ``file:<person>`` is that person's file,
     unless ``file`` is an item type of the office's own (then it is that)."""
     type_id, _, owner = item.partition(":")
-    if type_id != PERSONS_FILE_TYPE or not owner or office.file_type() is None:
+    if type_id != FILE_WORD or not owner or office.file_type() is None:
         return item
-    if any(t.id == PERSONS_FILE_TYPE for t in office.item_types):
+    if any(t.id == FILE_WORD for t in office.item_types):
         return item
     return office.file_of(owner)

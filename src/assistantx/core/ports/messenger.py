@@ -16,6 +16,7 @@ from typing import Literal
 from pydantic import BaseModel, Field
 
 from assistantx.core.lifecycle import Component
+from assistantx.core.office import FILE_WORD
 
 
 class ChatRef(BaseModel):
@@ -30,15 +31,11 @@ class ChatRef(BaseModel):
         return f"{self.kind}:{self.id}"
 
 
-# What a messenger that cannot know the office (Matrix) calls a file a person sent: their
-# ``file:<person>``. The runtime reads it as the office's own name for that person's file
-# (``script:lee`` in an office whose electronic type is a script: ``Office.file_of``).
-PERSONS_FILE_TYPE = "file"
-
-
 def persons_file(person: str) -> str:
-    """The messenger's item id for a file ``person`` sent, whatever the office calls it."""
-    return f"{PERSONS_FILE_TYPE}:{person}"
+    """What a messenger that cannot know the office (Matrix) calls a file ``person`` sent:
+    ``file:<person>``. The runtime reads it as the office's own name for that person's file
+    (``script:lee`` in an office whose electronic type is a script: ``Office.file_of``)."""
+    return f"{FILE_WORD}:{person}"
 
 
 class Attachment(BaseModel):
