@@ -8,11 +8,13 @@ from __future__ import annotations
 import pytest
 from symbolic_run import run_instruction
 
+from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.actions import ForwardFile
 from assistantx.core.events import TraceEvent
 from assistantx.core.goals import Milestone
-from assistantx.core.office import Office
+from assistantx.core.office import Office, load_office
 from assistantx.core.ports.messenger import ChatRef, persons_file
+from assistantx.core.wording import file_noun
 from assistantx.sim.office import SimOffice
 from helpers.rehearsal_rooms import drafting_studio, rehearsal_rooms
 
@@ -129,3 +131,58 @@ async def test_a_file_labelled_by_a_messenger_that_knows_no_office_is_the_sender
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     assert run.sim.world.check({"received": ["kwesi", "script:bruno"]})
     assert run.stm.files_received.get("bruno") == ["script:bruno"]
+
+
+# -- the words: the office's name for its files, "file" where the office calls them so -------
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "said", "not_said"),
+    [
+        (
+            "script",
+            "priya",
+            "Could you make up a rehearsal script pack from my script?",
+            "the rehearsal script pack of your script was handed to you",
+            "your file",
+        ),
+        ("script", "priya", "Send my script to Kwesi, please.", "your script was passed", "file"),
+        ("drawing", "yusuf", "Could you get me Femi's drawing?", "Femi Adeyemi's drawing", "file"),
+    ],
+    ids=["made-from-it", "passed-on", "asked-for"],
+)
+async def test_the_outcome_names_the_file_as_the_office_does(
+    office: str, who: str, text: str, said: str, not_said: str
+) -> None:
+    run = await run_instruction(_office(office), who, text)
+    summary = run.stm.trace.summary or ""
+    assert said in summary and not_said not in summary, summary
+
+
+async def test_the_default_office_still_says_file() -> None:
+    """Its type is an "electronic file", also called a "file": said the short way."""
+    run = await run_instruction(load_office(), "zhou", "Print my file and bring it to me.")
+    assert "the printout of your file was handed to you" in (run.stm.trace.summary or "")
+
+
+@pytest.mark.parametrize(
+    ("office", "who", "text", "question"),
+    [
+        ("script", "priya", "forward my script", "Who should I pass your script on to?"),
+        ("drawing", "greta", "send my drawing on", "Who should I pass your drawing on to?"),
+    ],
+)
+def test_whom_to_pass_it_on_to_is_asked_in_the_offices_words(
+    office: str, who: str, text: str, question: str
+) -> None:
+    frame = InstructionParser(_office(office)).parse(text, who)
+    assert (frame.tasks, frame.question) == ([], question)
+
+
+@pytest.mark.parametrize(
+    ("office", "noun"),
+    [(rehearsal_rooms(), "script"), (drafting_studio(), "drawing"), (load_office(), "file")],
+    ids=["script", "drawing", "default"],
+)
+def test_the_file_noun(office: Office, noun: str) -> None:
+    assert file_noun(office) == noun

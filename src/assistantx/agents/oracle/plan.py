@@ -16,6 +16,7 @@ from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
+from assistantx.core.wording import file_noun
 from assistantx.memory.graph import LongTermMemory
 
 RoleKind = Literal["named", "owner", "guard"]
@@ -422,8 +423,7 @@ def _add_part(
             owner = part.owner or ""
             # named as this office names its files (a "script", a "drawing"): asked for by
             # that name, the owner knows which file is meant
-            file_type = office.file_type() or ""
-            thing = office.item_type(file_type).name
+            thing = file_noun(office)
             role = _named(owner, f"Could you send me your {thing} for {who}?", wants_file=True)
             plan.add_role(role)
             plan.forwards.append(Forward(role.key, REQUESTER))
