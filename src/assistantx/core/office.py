@@ -54,6 +54,13 @@ ItemKind = Literal["belonging", "personal", "electronic", "product"]
 ItemProperty = Literal["signable", "seals", "electronic"]
 
 
+# The plain word for a person's electronic file, whatever id the office gives its type
+# ("script", "drawing"): a messenger that cannot know the office names a file a person sent
+# ``file:<person>`` (ports.messenger.persons_file), and the resolver reads the word as the
+# office's type.
+FILE_WORD = "file"
+
+
 class ItemType(_Model):
     """A kind of item.
 
@@ -310,7 +317,7 @@ class Office(_Model):
     def file_of(self, person: str) -> str:
         """The item id of ``person``'s file, whatever this office calls its electronic type
         ("rota:ann", "log:bram"; ``file:…`` where the office has none)."""
-        return f"{self.file_type() or 'file'}:{person}"
+        return f"{self.file_type() or FILE_WORD}:{person}"
 
     # -- items owned by nobody ------------------------------------------------------------
     def is_person(self, person_id: str) -> bool:

@@ -23,8 +23,10 @@ words. The fields:
 - ``locker``: what the doer does at the locker when the office has no operation to name it
   ({item}: the item's phrase);
 - ``todo``: the task in a plan's words ({verb} the operation's name, {whose} the item's
-  phrase, {to} the recipient, {by} the actor); ``todo_sent`` when its operation sends the
-  item outside ({dest}: where, in the requester's words): "courier your drawings to Harlow";
+  phrase, {to} the recipient, {by} the actor, {owner_s} "your"/"Lee Ming's", {file} what
+  the office calls a person's file: ``wording.file_noun``); ``todo_sent`` when its operation
+  sends the item outside ({dest}: where, in the requester's words): "courier your drawings
+  to Harlow";
 - ``done``: the outcome told to the requester ({done}: the operation's past participle);
 - ``works_on``: the property of the item type a person-to-person kind works on ("signable":
   the office's paper), never a type id;
@@ -124,8 +126,8 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         shape="render",
         purpose="produce",
         doer="renderer",
-        todo="{verb} {owner_s} file for {to}",
-        done="the {product} of {owner_s} file was handed to {to}",
+        todo="{verb} {owner_s} {file} for {to}",
+        done="the {product} of {owner_s} {file} was handed to {to}",
     ),
     KindSpec(
         id="copy",
@@ -203,8 +205,8 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         parts=("forward_file", "get_file"),
         milestone="received",
         works_on="electronic",
-        todo="pass {owner_s} file to {to}",
-        done="{owner_s} file was passed to {to}",
+        todo="pass {owner_s} {file} to {to}",
+        done="{owner_s} {file} was passed to {to}",
     ),
 )
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from assistantx.core import language, task_kinds
 from assistantx.core.english import words
-from assistantx.core.office import Office, Operation
+from assistantx.core.office import FILE_WORD, Office, Operation
 from assistantx.core.task_schema import kind_shape
 
 # What the person does at the locker, per code purpose ({item}: an ``item_phrase``): moving
@@ -103,6 +103,18 @@ def item_type_name(office: Office, type_id: str) -> str:
         return office.item_type(type_id).name
     except KeyError:
         return _words(type_id)
+
+
+def file_noun(office: Office) -> str:
+    """What a person's electronic file is called in a sentence ("your file", "your script"):
+    "file" where the office calls its type so (its name or a synonym: "electronic file",
+    also "file"), else the type's name, whatever its id ("script", "drawing")."""
+    type_id = office.file_type()
+    if type_id is None:
+        return FILE_WORD
+    t = office.item_type(type_id)
+    names = {t.name.lower(), *(s.lower() for s in t.synonyms)}
+    return FILE_WORD if FILE_WORD in names else t.name
 
 
 def a_thing(name: str, *, mass: bool = False) -> str:

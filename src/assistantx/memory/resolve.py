@@ -26,7 +26,7 @@ from assistantx.core.actions import (
 )
 from assistantx.core.errors import AmbiguousNameError, GroundingError, UnknownNameError
 from assistantx.core.goals import Milestone, parse_milestone
-from assistantx.core.office import Office, PersonId
+from assistantx.core.office import FILE_WORD, Office, PersonId
 from assistantx.memory.graph import LOCKER
 from assistantx.memory.names import NameIndex, normalize
 from assistantx.memory.updates import (
@@ -61,9 +61,14 @@ class Resolver:
         for loc in office.locations:
             self.locations.add(loc.id, [loc.name])
         self.item_types = NameIndex()
+        file_type = office.file_type()
         for t in office.item_types:
             plural = [f"{n}s" for n in (t.name, *t.synonyms) if not n.endswith("s")]
-            self.item_types.add(t.id, [t.name, *t.synonyms, *plural])
+            # "file" (the messenger's neutral name, ports.messenger.persons_file, and the
+            # plain word) is also the office's electronic type, whatever its id ("script"),
+            # below any type the office itself names so
+            generic = [FILE_WORD, f"{FILE_WORD}s"] if t.id == file_type else []
+            self.item_types.add(t.id, [t.name, *t.synonyms, *plural], words=generic)
         self.lockers = NameIndex()
         self.lockers.add(LOCKER, LOCKER_NAMES)
         # How each contact is written in the office file, only case and spacing folded: the
@@ -231,10 +236,18 @@ class Resolver:
             case ForwardFile():
                 source = self.person(action.source)
                 target = self.contact(action.target)[1]
-                file = self.item(action.file) if action.file else f"file:{source}"
-                if self.office.item_type(file.split(":")[0]).kind != "electronic":
+                # the office names its file type as it likes ("script:ann", "drawing:bo")
+                file = self.item(action.file) if action.file else self.office.file_of(source)
+                file_type = self.office.file_type()
+                if file_type is None:
                     raise UnknownNameError(
-                        "file", file, f"{file!r} is not an electronic file; use 'file:<person>'."
+                        "file", file, "This office keeps no electronic files to forward."
+                    )
+                if self.office.item_type(file.partition(":")[0]).kind != "electronic":
+                    raise UnknownNameError(
+                        "file",
+                        file,
+                        f"{file!r} is not an electronic file; use '{file_type}:<person>'.",
                     )
                 return action.model_copy(update={"source": source, "target": target, "file": file})
             case SendQR():

@@ -46,6 +46,7 @@ from assistantx.memory.short_term import IssuedCode, ShortTermMemory
 from assistantx.runtime import consent
 from assistantx.runtime.doors import drive_past_closed_doors
 from assistantx.runtime.failures import place_name
+from assistantx.runtime.received_files import received_files
 from assistantx.runtime.replies import ReplyBox
 
 logger = logging.getLogger(__name__)
@@ -401,7 +402,7 @@ class Executor:
         """Move messages that arrived for this instruction into its dialogue."""
         messages = self.ctx.replies.take(stm.instruction_id)
         for m in messages:
-            files = [a.item for a in m.attachments if a.item]
+            files = received_files(self.ctx.office, m)
             if files:
                 stm.files_received.setdefault(m.sender, []).extend(files)
             stm.dialogue.append(

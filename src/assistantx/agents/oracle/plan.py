@@ -16,6 +16,7 @@ from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
+from assistantx.core.wording import file_noun
 from assistantx.memory.graph import LongTermMemory
 
 RoleKind = Literal["named", "owner", "guard"]
@@ -417,10 +418,13 @@ def _add_part(
             to = part.to or ""
             plan.forwards.append(Forward(REQUESTER, to))
             plan.must_be_available.add(to)
-            plan.add_goal({"received": [to, f"{office.file_type()}:{a}"]})
+            plan.add_goal({"received": [to, office.file_of(a)]})
         case "get_file":
             owner = part.owner or ""
-            role = _named(owner, f"Could you send me your file for {who}?", wants_file=True)
+            # named as this office names its files (a "script", a "drawing"): asked for by
+            # that name, the owner knows which file is meant
+            thing = file_noun(office)
+            role = _named(owner, f"Could you send me your {thing} for {who}?", wants_file=True)
             plan.add_role(role)
             plan.forwards.append(Forward(role.key, REQUESTER))
-            plan.add_goal({"received": [a, f"{office.file_type()}:{owner}"]})
+            plan.add_goal({"received": [a, office.file_of(owner)]})

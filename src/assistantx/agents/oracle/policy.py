@@ -217,12 +217,15 @@ def optimal_script(
             item = item.replace("{" + key + "}", person)
         return item
 
-    # 2. files
-    forwards: list[Action] = [
-        ForwardFile(source=who(f.source), target=who(f.target))
-        for f in plan.forwards
-        if who(f.source) != who(f.target)  # the requester runs the printer: it is their file
-    ]
+    # 2. files: each to each person once. The requester runs the printer: it is their file;
+    # the keeper who prints it is the one it is also to be sent to: one forward serves both
+    # (a second one would only repeat the first)
+    pairs: list[tuple[str, str]] = []
+    for f in plan.forwards:
+        pair = (who(f.source), who(f.target))
+        if pair[0] != pair[1] and pair not in pairs:
+            pairs.append(pair)
+    forwards: list[Action] = [ForwardFile(source=s, target=t) for s, t in pairs]
     if forwards:
         feedback = yield forwards
         if not feedback.ok:

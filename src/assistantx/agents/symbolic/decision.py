@@ -38,7 +38,7 @@ from assistantx.core.actions import (
 )
 from assistantx.core.office import Office
 from assistantx.core.task_schema import operation_of
-from assistantx.core.wording import done_words, item_phrase, person_name, place_name
+from assistantx.core.wording import done_words, file_noun, item_phrase, person_name, place_name
 
 MAX_ACTIONS = 4
 MAX_CLARIFICATIONS = 3  # questions to the requester in all (one re-ask of each)
@@ -280,6 +280,7 @@ class Decider:
             have="have" if task.recipient == requester else "has",
             whose=whose_item(owner),
             owner_s=whose(task.owner),
+            file=file_noun(self.office),
             item=item,
             product=self.office.item_type(made).name if made else "result",
             by=who(task.actor),

@@ -29,6 +29,7 @@ from assistantx.core.task_schema import Task, TaskFrame, kind_shape, operation_o
 from assistantx.core.trace import Plan, SubGoal
 from assistantx.core.wording import (
     a_thing,
+    file_noun,
     item_phrase,
     item_type_name,
     person_name,
@@ -685,6 +686,7 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         verb=verb,
         whose=whose,
         owner_s=owner_s(task.owner),
+        file=file_noun(office),
         to=to,
         by=name(task.actor),
         item=item,

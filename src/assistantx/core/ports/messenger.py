@@ -16,6 +16,7 @@ from typing import Literal
 from pydantic import BaseModel, Field
 
 from assistantx.core.lifecycle import Component
+from assistantx.core.office import FILE_WORD
 
 
 class ChatRef(BaseModel):
@@ -28,6 +29,13 @@ class ChatRef(BaseModel):
 
     def __str__(self) -> str:
         return f"{self.kind}:{self.id}"
+
+
+def persons_file(person: str) -> str:
+    """What a messenger that cannot know the office (Matrix) calls a file ``person`` sent:
+    ``file:<person>``. The runtime reads it as the office's own name for that person's file
+    (``script:lee`` in an office whose electronic type is a script: ``Office.file_of``)."""
+    return f"{FILE_WORD}:{person}"
 
 
 class Attachment(BaseModel):

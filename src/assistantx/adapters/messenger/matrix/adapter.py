@@ -75,6 +75,7 @@ from assistantx.core.ports.messenger import (
     Messenger,
     OutboundMessage,
     SentMessage,
+    persons_file,
 )
 
 logger = logging.getLogger(__name__)
@@ -552,6 +553,16 @@ class MatrixMessenger(Messenger):
             time=datetime.now(UTC),
         )
 
+    async def _media(self, item: str) -> tuple[str, str, str] | None:
+        """The media a person sent for ``item``: remembered under the item, or, for the
+        office's name of their file (``script:lee``), under the one it came in as
+        (``file:lee``: this adapter does not know the office's name for files)."""
+        found = await self.store.media(item)
+        owner = item.partition(":")[2]
+        if found is None and owner and item != persons_file(owner):
+            found = await self.store.media(persons_file(owner))
+        return found
+
     async def _describe(self, attachment: Attachment) -> JSON:
         """The event content of an attachment (its URL filled in by ``_upload`` for data)."""
         mime, name = attachment.mime, attachment.name
@@ -562,10 +573,10 @@ class MatrixMessenger(Messenger):
                 mime = "image/png"
         elif attachment.ref is not None and attachment.ref.startswith("mxc://"):
             url = attachment.ref  # forward: the media stays where it is, no copy
-        elif attachment.item is not None and (found := await self.store.media(attachment.item)):
+        elif attachment.item is not None and (found := await self._media(attachment.item)):
             url, name, mime = found  # the person's own file name, not the office's item id
         else:
-            owner = (attachment.item or "").removeprefix("file:") or "anyone"
+            owner = (attachment.item or "").partition(":")[2] or "anyone"
             raise MessengerError(
                 f"I have no copy of {attachment.item or attachment.name}: {owner} has not sent "
                 "it to me on Matrix; ask them to send it first"

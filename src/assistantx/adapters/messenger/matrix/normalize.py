@@ -16,7 +16,8 @@ What people expect of a Matrix bot (as maubot and the mautrix bridges do it):
 - an edit is answered with what the bot does about it (it keeps the original request);
 - an encrypted message, a stranger's direct message and an over-long text each get a short
   answer in plain words instead of silence;
-- a file is delivered with the item name the office uses for a person's file (``file:lee``).
+- a file is delivered as the sender's file, ``file:lee`` (``ports.messenger.persons_file``:
+  the runtime reads it as the office's own name for it, ``script:lee``).
 
 ``interpret`` takes any JSON value as an event. What is not a message for the bot (wrong
 types, missing fields, unknown kinds) gives no item; the one error it raises is
@@ -35,7 +36,7 @@ from typing import Any
 
 from assistantx.adapters.messenger.matrix.config import MatrixConfig
 from assistantx.core.errors import MessengerError
-from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage
+from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage, persons_file
 
 logger = logging.getLogger(__name__)
 
@@ -310,8 +311,9 @@ def _text_and_attachments(
         name=name,
         mime=mime if isinstance(mime, str) and mime else "application/octet-stream",
         ref=url,
-        # The office names a person's electronic file "file:<person>" (see forward_file).
-        item=f"file:{person}" if kind == "file" else None,
+        # The office's name for files is not known here: the port's neutral one, which the
+        # runtime reads as the sender's file in the office's own type (see forward_file).
+        item=persons_file(person) if kind == "file" else None,
     )
     return caption, [attachment]
 

@@ -39,6 +39,7 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
+from assistantx.core.wording import file_noun
 
 _BREAK_WORDS = english.words("clause_breaks")
 _JOIN_WORDS = english.words("clause_joins")
@@ -323,7 +324,7 @@ class FrameReader:
                         else (f"{who} already has their {name}; who should get it?")
                     )
             if t.kind == "send_file" and t.owner == t.recipient:
-                return "Who should I pass your file on to?"
+                return f"Who should I pass your {file_noun(self.office)} on to?"
         return None
 
     def _item_name(self, type_id: str) -> str:
