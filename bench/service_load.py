@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import contextlib
 import importlib.util
 import json
 import os
@@ -41,6 +42,7 @@ from collections.abc import Awaitable, Callable
 from pathlib import Path
 
 import httpx
+from _raw_http import RawConnections
 
 ROOT = Path(__file__).resolve().parents[1]
 IDLE_CALLS = 30
@@ -244,7 +246,7 @@ async def _ended_within(submitted: dict[str, float], ended: dict[str, float], s:
 
 
 async def _run(
-    url: str, n: int, load_s: float, drain_s: float, meter: _CpuMeter
+    url: str, n: int, load_s: float, drain_s: float, meter: _CpuMeter, burst_client: str
 ) -> dict[str, object]:
     ended: dict[str, float] = {}
     outcomes: dict[str, str] = {}
@@ -296,13 +298,33 @@ async def _run(
         lags: list[dict[str, float]] = []
         probe = asyncio.create_task(_probe(client, submitted, samples, stop_probe))
         watch = asyncio.create_task(_watch_lag(client, lags, stop_probe))
-        t_start = time.perf_counter()
-        cpu_burst, seen_burst = meter.read(), seen[0]
-        client_burst = time.process_time()
-        posts += await asyncio.gather(*(submit(i) for i in range(n)))
-        t_submitted = time.perf_counter()
-        cpu_load, seen_load = meter.read(), seen[0]
-        client_cpu_burst_s = time.process_time() - client_burst
+        async with contextlib.AsyncExitStack() as burst_stack:
+            if burst_client == "raw":  # connected before the burst, requests prepared
+                host, _, port = url.removeprefix("http://").partition(":")
+                raw = RawConnections(host, int(port), n)
+                await burst_stack.enter_async_context(raw)
+                burst = [mix[i % len(mix)] for i in range(n)]
+                prepared = [
+                    raw.request("/v1/instructions", {"requester": r, "text": t}, TOKEN)
+                    for r, t, _ in burst
+                ]
+            t_start = time.perf_counter()
+            cpu_burst, seen_burst = meter.read(), seen[0]
+            client_burst = time.process_time()
+            if burst_client == "raw":
+                answers = await raw.post_all(prepared)
+            else:
+                posts += await asyncio.gather(*(submit(i) for i in range(n)))
+            t_submitted = time.perf_counter()
+            cpu_load, seen_load = meter.read(), seen[0]
+            client_cpu_burst_s = time.process_time() - client_burst
+        if burst_client == "raw":
+            for (took, status, answer), (_, _, kind) in zip(answers, burst, strict=True):
+                if status != 202:
+                    raise RuntimeError(f"a burst POST was answered {status}: {answer[:200]!r}")
+                iid = json.loads(answer)["id"]
+                submitted[iid], kinds[iid] = t_start, kind
+                posts.append(took)
         during: list[float] = []
         poster = asyncio.create_task(_post_under_load(submit, during, stop_probe))
         await asyncio.sleep(load_s)  # the fixed load phase: the probes and POSTs run meanwhile
@@ -357,6 +379,7 @@ async def _run(
         # httpx requests compete with the service for the cores, and the burst's POST
         # latencies include the time the client took to send them and read their answers.
         "burst_client_cpu_s": round(client_cpu_burst_s, 2),
+        "burst_client": burst_client,
         "load_s": load_s,
         "drained": drained,
         "cancelled_after_drain": len(unfinished),
@@ -429,6 +452,13 @@ def main() -> None:
     parser.add_argument("--speedup", type=float, default=1000.0)
     parser.add_argument("--robot", choices=["navigator", "sim"], default="navigator")
     parser.add_argument("--localize", action=argparse.BooleanOptionalAction, default=False)
+    parser.add_argument(
+        "--burst-client",
+        choices=["raw", "httpx"],
+        default="raw",
+        help="the burst's client: raw (connected beforehand, prepared requests; measures the"
+        " service) or httpx (as the other phases; its own CPU is as much as the service's)",
+    )
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--deadline-s", type=float, default=30 * 24 * 3600.0, help="simulated")
     parser.add_argument("--out", type=Path, default=Path("results/bench"))
@@ -443,7 +473,9 @@ def main() -> None:
         try:
             asyncio.run(_wait_ready(url))
             meter = _CpuMeter(process.pid)
-            figures = asyncio.run(_run(url, args.n, args.load_s, args.drain_s, meter))
+            figures = asyncio.run(
+                _run(url, args.n, args.load_s, args.drain_s, meter, args.burst_client)
+            )
         finally:
             process.terminate()
             process.wait(15)
@@ -457,7 +489,8 @@ def main() -> None:
     figures["plot"] = str(_plot(figures, args.out))
     print(f"reasoner: {reasoner}; robot: {robot}; simulated time x{args.speedup:g}")
     print(
-        f"submitted {args.n} instructions in {figures['submit_wall_s']} s "
+        f"submitted {args.n} instructions ({args.burst_client} client) in "
+        f"{figures['submit_wall_s']} s "
         f"({figures['submit_throughput_per_s']}/s); POST p50 {figures['post_p50_ms']} ms, "
         f"p99 {figures['post_p99_ms']} ms"
     )
