@@ -1,23 +1,26 @@
 """Load on the running service: N instructions of every kind submitted concurrently over REST.
 
 Starts ``python -m assistantx serve`` on a free port with a fresh data directory (simulated
-travel and replies sped up, everyone available), follows ``GET /v1/events`` (SSE). First,
-idle: a few POSTs and GETs one at a time. Then a burst: N instructions submitted at once —
-the 30 base instructions of ``dataset/base_instructions.yaml`` in turn, each from its own
-requester — and, for a fixed load phase (``--load-s``), an instruction, the list and the
-robot are read every 50 ms and one more instruction is POSTed every 250 ms (POST latency
-with N running). Then a bounded drain (``--drain-s``): what has not ended by then is
-cancelled over REST and counted, so the bench ends in load + drain + set-up whatever the
-machine (an open-ended "until every instruction ends" ran for over 11 minutes at N=200 on
-the 2-core machine, since POSTs kept adding work for the one robot). Reports p50/p99 idle,
-in the burst and under load, throughput, whole instructions and the outcomes per kind, and
-the service's loop-lag gauge, sampled every second during the load (its maximum is the
-longest stall of the loop), and the service's CPU per call and per trace event (those the
-follower received) in the burst and the load; writes ``service_load.png`` (``--out``).
-The robot is one body, so instructions queue for it; whole-instruction latency includes that.
+travel and replies sped up, everyone available), follows ``GET /v1/events`` (SSE). First, idle:
+a few POSTs and GETs one at a time. Then a burst: N instructions submitted at once — the 30 base
+instructions of ``dataset/base_instructions.yaml`` in turn, each from its own requester; by
+default over N connections opened beforehand, each POST prepared as bytes (``_raw_http``:
+httpx's own CPU for the burst was as much as the service's, on the same cores; ``--burst-client
+httpx`` sends it as before) — and, for a fixed load phase (``--load-s``), an instruction, the
+list and the robot are read every 50 ms and one more instruction is POSTed every 250 ms (POST
+latency with N running). Then a bounded drain (``--drain-s``): what has not ended by then is
+cancelled over REST and counted, so the bench ends in load + drain + set-up whatever the machine
+(an open-ended "until every instruction ends" ran for over 11 minutes at N=200 on the 2-core
+machine, since POSTs kept adding work for the one robot). Reports p50/p99 idle, in the burst and
+under load, throughput, whole instructions and the outcomes per kind, and the service's loop-lag
+gauge, sampled every second during the load (its maximum is the longest stall of the loop), and
+the service's CPU per call and per trace event (those the follower received) in the burst and
+the load; writes ``service_load.png`` (``--out``). The robot is one body, so instructions queue
+for it; whole-instruction latency includes that.
 
     python bench/service_load.py [--n 200] [--load-s 60] [--drain-s 90] [--speedup 1000]
-        [--robot navigator|sim] [--localize | --no-localize] [--out DIR]
+        [--robot navigator|sim] [--localize | --no-localize] [--burst-client raw|httpx]
+        [--out DIR]
 
 Uses the embedded reasoner (``assistantx.agents.symbolic``) when it is installed, else the tests'
 deterministic stapler reasoner (said in the output). Last line: one JSON object.
