@@ -1,23 +1,26 @@
 """Load on the running service: N instructions of every kind submitted concurrently over REST.
 
 Starts ``python -m assistantx serve`` on a free port with a fresh data directory (simulated
-travel and replies sped up, everyone available), follows ``GET /v1/events`` (SSE). First,
-idle: a few POSTs and GETs one at a time. Then a burst: N instructions submitted at once —
-the 30 base instructions of ``dataset/base_instructions.yaml`` in turn, each from its own
-requester — and, for a fixed load phase (``--load-s``), an instruction, the list and the
-robot are read every 50 ms and one more instruction is POSTed every 250 ms (POST latency
-with N running). Then a bounded drain (``--drain-s``): what has not ended by then is
-cancelled over REST and counted, so the bench ends in load + drain + set-up whatever the
-machine (an open-ended "until every instruction ends" ran for over 11 minutes at N=200 on
-the 2-core machine, since POSTs kept adding work for the one robot). Reports p50/p99 idle,
-in the burst and under load, throughput, whole instructions and the outcomes per kind, and
-the service's loop-lag gauge, sampled every second during the load (its maximum is the
-longest stall of the loop), and the service's CPU per call and per trace event (those the
-follower received) in the burst and the load; writes ``service_load.png`` (``--out``).
-The robot is one body, so instructions queue for it; whole-instruction latency includes that.
+travel and replies sped up, everyone available), follows ``GET /v1/events`` (SSE). First, idle:
+a few POSTs and GETs one at a time. Then a burst: N instructions submitted at once — the 30 base
+instructions of ``dataset/base_instructions.yaml`` in turn, each from its own requester; by
+default over N connections opened beforehand, each POST prepared as bytes (``_raw_http``:
+httpx's own CPU for the burst was as much as the service's, on the same cores; ``--burst-client
+httpx`` sends it as before) — and, for a fixed load phase (``--load-s``), an instruction, the
+list and the robot are read every 50 ms and one more instruction is POSTed every 250 ms (POST
+latency with N running). Then a bounded drain (``--drain-s``): what has not ended by then is
+cancelled over REST and counted, so the bench ends in load + drain + set-up whatever the machine
+(an open-ended "until every instruction ends" ran for over 11 minutes at N=200 on the 2-core
+machine, since POSTs kept adding work for the one robot). Reports p50/p99 idle, in the burst and
+under load, throughput, whole instructions and the outcomes per kind, and the service's loop-lag
+gauge, sampled every second during the load (its maximum is the longest stall of the loop), and
+the service's CPU per call and per trace event (those the follower received) in the burst and
+the load; writes ``service_load.png`` (``--out``). The robot is one body, so instructions queue
+for it; whole-instruction latency includes that.
 
     python bench/service_load.py [--n 200] [--load-s 60] [--drain-s 90] [--speedup 1000]
-        [--robot navigator|sim] [--localize | --no-localize] [--out DIR]
+        [--robot navigator|sim] [--localize | --no-localize] [--burst-client raw|httpx]
+        [--out DIR]
 
 Uses the embedded reasoner (``assistantx.agents.symbolic``) when it is installed, else the tests'
 deterministic stapler reasoner (said in the output). Last line: one JSON object.
@@ -27,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import contextlib
 import importlib.util
 import json
 import os
@@ -41,6 +45,7 @@ from collections.abc import Awaitable, Callable
 from pathlib import Path
 
 import httpx
+from _raw_http import RawConnections
 
 ROOT = Path(__file__).resolve().parents[1]
 IDLE_CALLS = 30
@@ -244,7 +249,7 @@ async def _ended_within(submitted: dict[str, float], ended: dict[str, float], s:
 
 
 async def _run(
-    url: str, n: int, load_s: float, drain_s: float, meter: _CpuMeter
+    url: str, n: int, load_s: float, drain_s: float, meter: _CpuMeter, burst_client: str
 ) -> dict[str, object]:
     ended: dict[str, float] = {}
     outcomes: dict[str, str] = {}
@@ -296,13 +301,33 @@ async def _run(
         lags: list[dict[str, float]] = []
         probe = asyncio.create_task(_probe(client, submitted, samples, stop_probe))
         watch = asyncio.create_task(_watch_lag(client, lags, stop_probe))
-        t_start = time.perf_counter()
-        cpu_burst, seen_burst = meter.read(), seen[0]
-        client_burst = time.process_time()
-        posts += await asyncio.gather(*(submit(i) for i in range(n)))
-        t_submitted = time.perf_counter()
-        cpu_load, seen_load = meter.read(), seen[0]
-        client_cpu_burst_s = time.process_time() - client_burst
+        async with contextlib.AsyncExitStack() as burst_stack:
+            if burst_client == "raw":  # connected before the burst, requests prepared
+                host, _, port = url.removeprefix("http://").partition(":")
+                raw = RawConnections(host, int(port), n)
+                await burst_stack.enter_async_context(raw)
+                burst = [mix[i % len(mix)] for i in range(n)]
+                prepared = [
+                    raw.request("/v1/instructions", {"requester": r, "text": t}, TOKEN)
+                    for r, t, _ in burst
+                ]
+            t_start = time.perf_counter()
+            cpu_burst, seen_burst = meter.read(), seen[0]
+            client_burst = time.process_time()
+            if burst_client == "raw":
+                answers = await raw.post_all(prepared)
+            else:
+                posts += await asyncio.gather(*(submit(i) for i in range(n)))
+            t_submitted = time.perf_counter()
+            cpu_load, seen_load = meter.read(), seen[0]
+            client_cpu_burst_s = time.process_time() - client_burst
+        if burst_client == "raw":
+            for (took, status, answer), (_, _, kind) in zip(answers, burst, strict=True):
+                if status != 202:
+                    raise RuntimeError(f"a burst POST was answered {status}: {answer[:200]!r}")
+                iid = json.loads(answer)["id"]
+                submitted[iid], kinds[iid] = t_start, kind
+                posts.append(took)
         during: list[float] = []
         poster = asyncio.create_task(_post_under_load(submit, during, stop_probe))
         await asyncio.sleep(load_s)  # the fixed load phase: the probes and POSTs run meanwhile
@@ -357,6 +382,7 @@ async def _run(
         # httpx requests compete with the service for the cores, and the burst's POST
         # latencies include the time the client took to send them and read their answers.
         "burst_client_cpu_s": round(client_cpu_burst_s, 2),
+        "burst_client": burst_client,
         "load_s": load_s,
         "drained": drained,
         "cancelled_after_drain": len(unfinished),
@@ -429,6 +455,13 @@ def main() -> None:
     parser.add_argument("--speedup", type=float, default=1000.0)
     parser.add_argument("--robot", choices=["navigator", "sim"], default="navigator")
     parser.add_argument("--localize", action=argparse.BooleanOptionalAction, default=False)
+    parser.add_argument(
+        "--burst-client",
+        choices=["raw", "httpx"],
+        default="raw",
+        help="the burst's client: raw (connected beforehand, prepared requests; measures the"
+        " service) or httpx (as the other phases; its own CPU is as much as the service's)",
+    )
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--deadline-s", type=float, default=30 * 24 * 3600.0, help="simulated")
     parser.add_argument("--out", type=Path, default=Path("results/bench"))
@@ -443,7 +476,9 @@ def main() -> None:
         try:
             asyncio.run(_wait_ready(url))
             meter = _CpuMeter(process.pid)
-            figures = asyncio.run(_run(url, args.n, args.load_s, args.drain_s, meter))
+            figures = asyncio.run(
+                _run(url, args.n, args.load_s, args.drain_s, meter, args.burst_client)
+            )
         finally:
             process.terminate()
             process.wait(15)
@@ -457,7 +492,8 @@ def main() -> None:
     figures["plot"] = str(_plot(figures, args.out))
     print(f"reasoner: {reasoner}; robot: {robot}; simulated time x{args.speedup:g}")
     print(
-        f"submitted {args.n} instructions in {figures['submit_wall_s']} s "
+        f"submitted {args.n} instructions ({args.burst_client} client) in "
+        f"{figures['submit_wall_s']} s "
         f"({figures['submit_throughput_per_s']}/s); POST p50 {figures['post_p50_ms']} ms, "
         f"p99 {figures['post_p99_ms']} ms"
     )

@@ -3,9 +3,11 @@ now and then walks everything again and frees the cycles among frozen objects.""
 
 from __future__ import annotations
 
+import asyncio
 import gc
 import weakref
 from collections.abc import Iterator
+from typing import Any
 
 import pytest
 
@@ -71,3 +73,66 @@ def test_without_it_the_collector_frees_the_same_cycle(clock: _Clock) -> None:
     del held
     gc.collect()
     assert member() is None
+
+
+def test_paced_full_collections_run_on_the_loop_and_never_during_a_request(clock: _Clock) -> None:
+    freezer = SurvivorFreezer(thorough_every_s=60.0, clock=clock)
+    freezer.install()
+    threshold = gc.get_threshold()
+    in_flight = [1]  # a request is being answered
+    loop = asyncio.new_event_loop()
+    try:
+        freezer.pace(loop, lambda: in_flight[0], pace_s=0.01, hold_max_s=3600.0)
+        # The interpreter no longer starts full collections: the oldest generation's
+        # threshold is out of reach, the younger ones are as they were.
+        assert gc.get_threshold()[:2] == threshold[:2]
+        assert gc.get_threshold()[2] > 1_000_000
+        held, member = _cycle()
+        del held
+        # Due, but a request is in flight: the loop turns many times and does not collect.
+        loop.run_until_complete(asyncio.sleep(0.1))
+        assert freezer.paced_collections == 0
+        assert member() is not None
+        in_flight[0] = 0  # answered: the next look collects, on the loop, and freezes
+        loop.run_until_complete(_full_collections(1))
+        assert freezer.paced_collections == 1
+        assert member() is None  # a full collection found the cycle
+        assert freezer.frozen_collections == 1
+        loop.run_until_complete(_full_collections(1))  # and again, a pace later
+        assert freezer.paced_collections == 2
+    finally:
+        freezer.uninstall()
+        loop.close()
+    assert gc.get_threshold() == threshold  # uninstall gives the interpreter its own back
+
+
+def test_a_paced_collection_waits_for_requests_only_so_long(clock: _Clock) -> None:
+    freezer = SurvivorFreezer(thorough_every_s=60.0, clock=clock)
+    freezer.install()
+    loop = asyncio.new_event_loop()
+    try:
+        freezer.pace(loop, lambda: 1, pace_s=0.01, hold_max_s=0.02)  # requests never stop
+        loop.run_until_complete(_full_collections(2))
+        assert freezer.paced_collections == 2
+    finally:
+        freezer.uninstall()
+        loop.close()
+
+
+async def _full_collections(count: int) -> None:
+    """Returns once ``count`` more full collections have run (the pacer runs them on this
+    loop's thread)."""
+    ran, seen = asyncio.Event(), [0]
+
+    def on_collection(phase: str, info: dict[str, Any]) -> None:
+        if phase == "stop" and info["generation"] == 2:
+            seen[0] += 1
+            if seen[0] >= count:
+                ran.set()
+
+    gc.callbacks.append(on_collection)
+    try:
+        async with asyncio.timeout(30):  # a bound for a broken pacer, not a speed check
+            await ran.wait()
+    finally:
+        gc.callbacks.remove(on_collection)

@@ -51,6 +51,8 @@ def _serve(args: argparse.Namespace) -> int:
 
 
 def _serve_collector_off(args: argparse.Namespace) -> int:
+    import asyncio
+
     from assistantx.nav import disk_cache
     from assistantx.service.app import create_app
     from assistantx.service.collector import SurvivorFreezer
@@ -58,6 +60,7 @@ def _serve_collector_off(args: argparse.Namespace) -> int:
     from assistantx.service.offices.deployment import DeploymentError, load_deployment
     from assistantx.service.runtime import MAP_CACHE_DIR
     from assistantx.service.server import service_server
+    from assistantx.service.turns import turns_of
 
     settings = Settings()
     # The map's derived arrays are kept by content hash from the first use on, the check of
@@ -85,8 +88,11 @@ def _serve_collector_off(args: argparse.Namespace) -> int:
         # every stop (perf: two thirds of the stop in gc_collect_main).
         gc.freeze()
         # From now on what survives a full collection is frozen too, so a full collection
-        # walks what came since the last one, not every running instruction's memory.
-        SurvivorFreezer().install()
+        # walks what came since the last one, not every running instruction's memory; the
+        # loop runs one every second, between requests (paced), so each walks a second's.
+        freezer = SurvivorFreezer()
+        freezer.install()
+        freezer.pace(asyncio.get_running_loop(), lambda: turns_of().requests)
         gc.enable()  # off since _serve began
         print(f"AssistantX is serving on http://{shown}:{port}/", flush=True)
         print(f"  API docs: http://{shown}:{port}/docs", flush=True)

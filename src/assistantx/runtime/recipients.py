@@ -30,7 +30,9 @@ clipboard is for Rich" as giving it to May must not make May a party).
 
 from __future__ import annotations
 
+import functools
 import re
+import weakref
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
@@ -158,14 +160,51 @@ def _written_as_name(
     return read_name(slot) != "word"
 
 
-def _mentions(office: Office, words: list[_Word]) -> list[_Mention]:
-    names = _names(office)
-    items, name_words = _item_words(office), _name_words(office)
+class _OfficeWords:
+    """The office's spellings of people, items and operations the guard reads with: built
+    once per office (``_words_of``), not at every check (3.5 ms of every reading of a text,
+    several readings per consent check, on the event loop). The names are looked up by their
+    first word, longest first, so a text is read in one pass, not once per name."""
+
+    __slots__ = ("items", "name_words", "names_by_first", "operations")
+
+    def __init__(self, office: Office) -> None:
+        self.names_by_first: dict[str, list[tuple[tuple[str, ...], frozenset[str]]]] = {}
+        for key, people in _names(office):
+            self.names_by_first.setdefault(key[0], []).append((key, people))
+        self.items = _item_words(office)
+        self.name_words = _name_words(office)
+        self.operations = _operation_verbs(office)
+
+
+OFFICES_KEPT = 16  # offices whose words are kept (a service serves a few)
+TEXTS_KEPT = 2048  # readings kept, by (office, text, requester)
+
+# By the office's identity: an office is frozen, and hashing one (all its people and items)
+# costs more than a lookup should. The weak reference tells a live office from a dead one
+# whose id was reused.
+_WORDS: dict[int, tuple[weakref.ref[Office], _OfficeWords]] = {}
+
+
+def _words_of(office: Office) -> _OfficeWords:
+    kept = _WORDS.get(id(office))
+    if kept is not None and kept[0]() is office:
+        return kept[1]
+    if len(_WORDS) >= OFFICES_KEPT:
+        _WORDS.clear()
+    words = _OfficeWords(office)
+    _WORDS[id(office)] = (weakref.ref(office), words)
+    return words
+
+
+def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mention]:
+    names = words_of_office.names_by_first
+    items, name_words = words_of_office.items, words_of_office.name_words
     out: list[_Mention] = []
     n = 0
     while n < len(words):
         hit = None
-        for key, people in names:
+        for key, people in names.get(words[n].folded, ()):
             span = tuple(w.folded for w in words[n : n + len(key)])
             if span != key:
                 continue
@@ -223,10 +262,17 @@ def _receiving(
     return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
 
 
-def _in_roles(office: Office, text: str, requester: str) -> set[str]:
+def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:
+    return _roles_in(_words_of(office), text, requester)
+
+
+# A reading depends on the office's words, the text and who wrote it only: remembered, as
+# the guard reads the same request (and the same replies) at every hand-over it checks.
+@functools.lru_cache(maxsize=TEXTS_KEPT)
+def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozenset[str]:
     words = _tokens(text)
-    mentions = _mentions(office, words)
-    operations = _operation_verbs(office)
+    mentions = _mentions(office_words, words)
+    operations = office_words.operations
     named: set[str] = set()
     receiving_end = -1  # where the last receiving name ended: "to Hal and Dawn" names both
     for m in mentions:
@@ -254,23 +300,36 @@ def _in_roles(office: Office, text: str, requester: str) -> set[str]:
         } - {requester}
         if len(candidates) == 1:
             named |= candidates
-    return named - {requester}
+    return frozenset(named - {requester})
 
 
-def _just_a_name(office: Office, text: str) -> set[str]:
+def _just_a_name(office: Office, text: str) -> frozenset[str]:
     """The people a reply names when it says nothing but names ("Hal Brooks.", "to Hal")."""
+    return _only_names_in(_words_of(office), text)
+
+
+@functools.lru_cache(maxsize=TEXTS_KEPT)
+def _only_names_in(office_words: _OfficeWords, text: str) -> frozenset[str]:
     words = _tokens(text)
-    mentions = _mentions(office, words)
+    mentions = _mentions(office_words, words)
     covered = {n for m in mentions for n in range(m.start, m.end)}
     rest = [w for n, w in enumerate(words) if n not in covered and w.folded not in _FILLERS]
-    return {p for m in mentions for p in m.people} if mentions and not rest else set()
+    return (
+        frozenset(p for m in mentions for p in m.people) if mentions and not rest else frozenset()
+    )
+
+
+@functools.lru_cache(maxsize=TEXTS_KEPT)
+def _people_in(office_words: _OfficeWords, text: str) -> frozenset[str]:
+    """Everyone a name in ``text`` may mean."""
+    return frozenset(p for m in _mentions(office_words, _tokens(text)) for p in m.people)
 
 
 def named_recipients(office: Office, stm: ShortTermMemory) -> set[str]:
     """The people the requester named as a recipient or a doer, in the instruction, in their
     later messages in their own chat, or by a yes to the assistant's offer there."""
     own = ChatRef(kind="dm", id=stm.requester)
-    found = _in_roles(office, stm.text, stm.requester)
+    found = set(_in_roles(office, stm.text, stm.requester))
     last_offer: str | None = None
     for turn in stm.dialogue:
         if turn.chat != own:
@@ -306,7 +365,8 @@ def _written_by_requester(office: Office, stm: ShortTermMemory) -> set[str]:
         for t in stm.dialogue
         if t.chat == own and t.direction == "in" and t.person == stm.requester
     ]
-    return {p for text in texts for m in _mentions(office, _tokens(text)) for p in m.people}
+    office_words = _words_of(office)
+    return {p for text in texts for p in _people_in(office_words, text)}
 
 
 def named_doers(office: Office, stm: ShortTermMemory) -> set[str]:

@@ -42,7 +42,7 @@ from assistantx.service.offices.directory import Offices
 from assistantx.service.offices.routing import OfficeRouting
 from assistantx.service.pushes import OfficePushes
 from assistantx.service.request_metrics import RequestMetrics
-from assistantx.service.route_tables import build_route_tables
+from assistantx.service.route_tables import build_route_tables, import_thread_backend
 from assistantx.service.runtime import ServiceRuntime
 from assistantx.service.security_headers import SecurityHeaders
 from assistantx.service.telemetry import ServiceMetrics
@@ -92,6 +92,7 @@ def create_app(
             await offices.start(stack)
             # Off the loop, before ready: FastAPI would build them at the first requests.
             await asyncio.to_thread(build_route_tables, app)
+            await asyncio.to_thread(import_thread_backend)
             running = offices.serving(None)
             # The process's CPU time so far (all threads): what a start cost, as the service
             # itself counts it (bench/serve_start.py reads it; from outside, a probe's answer
