@@ -183,7 +183,9 @@ class InstructionParser:
             unclear = unanchored_it(self.office, whole, frame.tasks)
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)
-            frame = self.operations.choose(frame, lexed, readings.outside, sent_out=sent_out)
+            frame = self.operations.choose(
+                frame, lexed, readings.outside, sent_out=sent_out, errands=readings.errands
+            )
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)
             unread = unread_part(self.office, readings, frame) if frame.understood else None

@@ -1,0 +1,101 @@
+"""A carrying errand across the office is a delivery, and "them" can be the desk named before
+it (blind round 16's class 2; the round's office and sentences were never read). "standards
+need to see my proof ... can you run it over to them and bring it back" takes the proof to the
+standards desk for its read and back to the requester: "run" (a verb the courier lists) leads
+an errand there, and is never a send-out; "them" is the one desk named before, where no
+colleague was. A real courier request still sends out; "them" after people named is asked."""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.task_schema import TaskFrame
+from helpers.newsroom import newsroom
+
+
+@functools.cache
+def _parser() -> InstructionParser:
+    return InstructionParser(newsroom())
+
+
+def _frame(text: str) -> TaskFrame:
+    return _parser().parse_with_answers(text, "ines", [])
+
+
+def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str, str | None, str | None]]:
+    return [(t.kind, t.item, t.recipient, t.operation, t.destination) for t in frame.tasks]
+
+
+_VETTED = [("heat", "page_proof", "ines", "vet", None)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "standards need to see my proof before it goes. can you run it over to them and bring "
+        "it back to me",
+        "the standards team need to see my proof. can you run it over to them and bring it back",
+        "compliance want to see my page proof. can you pop it over to them and bring it back",
+        "compliance want to see my proof. can you take it over to them",
+        "standards need to see my proof. can you take it to them",
+        "can you run my proof over to the standards desk and bring it back to me",
+        "can you run my proof over to the standards desk",
+        "nip my proof across to compliance and bring it back please",
+    ],
+)
+def test_an_errand_to_the_desk_is_its_service_and_back(text: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None
+    assert _tasks(frame) == _VETTED
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["run my proof over to Will", "nip my proof across to Will", "pop my proof round to Will"],
+)
+def test_an_errand_to_a_colleague_is_a_hand_over(text: str) -> None:
+    assert _tasks(_frame(text)) == [("transfer", "page_proof", "will", None, None)]
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("courier my proof to the printers in Leeds", "the printers in Leeds"),
+        ("can you run my proof to the printers in Leeds", "the printers in Leeds"),
+        ("dispatch my proof to Harlow Press", "Harlow Press"),
+    ],
+)
+def test_a_courier_request_still_sends_out(text: str, where: str) -> None:
+    assert _tasks(_frame(text)) == [("heat", "page_proof", "ines", "courier", where)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # "them" after colleagues were named: whom is asked, never guessed as the desk
+        "standards need to see my proof. Will and Mark are there. take it to them",
+        # a courier to a desk of the office is no send-out: where outside is asked
+        "standards need to see my proof. can you courier it to them",
+        # "run it over to" with no item named: what is asked
+        "run it over to Will",
+    ],
+)
+def test_unclear_errands_are_asked(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is not None
+    assert "them is here" not in frame.question
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "did you run my proof over to standards?",
+        "thanks for running my proof over to standards",
+        "don't run my proof over to standards",
+    ],
+)
+def test_no_request_moves_nothing(text: str) -> None:
+    assert _frame(text).tasks == []
