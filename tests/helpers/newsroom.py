@@ -122,7 +122,7 @@ def raw_newsroom() -> dict[str, Any]:
             {
                 "id": "standards_desk",
                 "name": "standards desk",
-                "synonyms": ["standards", "the standards team", "compliance"],
+                "synonyms": ["standards", "the standards team", "compliance", "editorial"],
                 "location": "back_office",
                 "operations": ["vet"],
                 "guards": ["mark"],

@@ -44,6 +44,9 @@ _VETTED = [("heat", "page_proof", "ines", "vet", None)]
         "can you run my proof over to the standards desk and bring it back to me",
         "can you run my proof over to the standards desk",
         "nip my proof across to compliance and bring it back please",
+        # a desk named by an adjective ("editorial") as the subject
+        "editorial need to see my proof before it goes. can you run it over to them and bring "
+        "it back to me",
     ],
 )
 def test_an_errand_to_the_desk_is_its_service_and_back(text: str) -> None:
