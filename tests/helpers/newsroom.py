@@ -33,6 +33,7 @@ _PEOPLE: tuple[tuple[str, str, list[str], list[dict[str, Any]]], ...] = (
     ("mark", "Mark Ellison", [], [{"type": "cutting_mat"}, {"type": "magnifying_glass"}]),
     ("will", "Will Tanner", [], [{"type": "light_meter"}, {"type": "page_proof"}]),
     ("sunny", "Sunny Rao", [], [{"type": "magnifying_glass"}]),
+    ("bjorn", "Bjørn Haugen", [], [{"type": "long_lens"}, {"type": "camera"}]),
     ("bea", "Beatrix Holm", ["Bea", "the Publisher"], [{"type": "running_sheet"}]),
 )
 
@@ -43,7 +44,7 @@ def raw_newsroom() -> dict[str, Any]:
         "locations": [
             *(
                 {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0), 1)
+                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0, 41.0), 1)
             ),
             {"id": "print_room", "kind": "facility", "name": "Print room", "x": 4.0, "y": 20.5},
             {"id": "back_office", "kind": "facility", "name": "Back office", "x": 20.0, "y": 20.5},
