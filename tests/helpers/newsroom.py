@@ -1,7 +1,7 @@
 """A small newsroom for the tests of blind round 16's classes (the round's own office and
 sentences were never read). People named with diacritics (Åsa, Ramón, Łukasz, Zoë) who each
 own a long lens and a camera; people whose first names are ordinary English words (Mark,
-Will, Sunny); an editor with a role alias ("the Publisher"); a standards desk named by an
+Will, Sunny, Frank); an editor with a role alias ("the Publisher"); a standards desk named by an
 adjective ("standards", "compliance") that reads page proofs and gives them back; a courier
 whose verbs include "run"; a printer whose input is the running sheet; a trimmer whose verbs
 include "cut" beside a cutting mat; a light meter and a magnifying glass to borrow; negative
@@ -34,6 +34,7 @@ _PEOPLE: tuple[tuple[str, str, list[str], list[dict[str, Any]]], ...] = (
     ("will", "Will Tanner", [], [{"type": "light_meter"}, {"type": "page_proof"}]),
     ("sunny", "Sunny Rao", [], [{"type": "magnifying_glass"}]),
     ("bjorn", "Bjørn Haugen", [], [{"type": "long_lens"}, {"type": "camera"}]),
+    ("frank", "Frank Osei", [], [{"type": "cutting_mat"}]),
     ("bea", "Beatrix Holm", ["Bea", "the Publisher"], [{"type": "running_sheet"}]),
 )
 
@@ -44,7 +45,9 @@ def raw_newsroom() -> dict[str, Any]:
         "locations": [
             *(
                 {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0, 41.0), 1)
+                for n, x in enumerate(
+                    (5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0, 41.0, 45.0), 1
+                )
             ),
             {"id": "print_room", "kind": "facility", "name": "Print room", "x": 4.0, "y": 20.5},
             {"id": "back_office", "kind": "facility", "name": "Back office", "x": 20.0, "y": 20.5},
