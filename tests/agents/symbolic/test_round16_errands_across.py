@@ -10,8 +10,10 @@ from __future__ import annotations
 import functools
 
 import pytest
+from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.actions import Inquire
 from assistantx.core.task_schema import TaskFrame
 from helpers.newsroom import newsroom
 
@@ -102,3 +104,20 @@ def test_unclear_errands_are_asked(text: str) -> None:
 )
 def test_no_request_moves_nothing(text: str) -> None:
     assert _frame(text).tasks == []
+
+
+async def test_a_run_has_the_desk_read_it_and_gives_it_back() -> None:
+    run = await run_instruction(
+        newsroom(),
+        "ines",
+        "standards need to see my proof before it goes. can you run it over to them and bring "
+        "it back to me",
+    )
+    acted = [r.action for r in run.stm.trace.actions() if not r.refused]
+    asked = [a.question for a in acted if isinstance(a, Inquire)]
+    # the desk's guard is asked in words a colleague reads: its verb, not "standards read"
+    assert asked and all("could you vet" in q for q in asked)
+    assert run.stm.trace.outcome == "done"
+    assert not run.sim.world.sent_out()
+    assert run.sim.world.heated == {"page_proof:ines"}
+    assert run.sim.world.holder["page_proof:ines"] == "ines"

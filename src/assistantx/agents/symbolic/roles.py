@@ -19,8 +19,8 @@ from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.evidence import Evidence, Question
-from assistantx.core import task_kinds
-from assistantx.core.office import Office
+from assistantx.core import language, task_kinds
+from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing
 from assistantx.memory.graph import LongTermMemory
@@ -107,7 +107,7 @@ class Roles:
                 if op.shape(self.office) == shape and (
                     role.operation is None or op.id == role.operation
                 ):
-                    return op.name
+                    return _as_verb(op)
         return role.kind
 
     def _used_up(self, role: Role) -> bool:
@@ -403,3 +403,13 @@ def _fresh_availability(ltm: LongTermMemory, person: str, now: float) -> str:
     if value != "unknown" and seen is not None and now - seen > AVAILABILITY_TTL_S:
         return "unknown"
     return value
+
+
+def _as_verb(op: Operation) -> str:
+    """The operation as the verb of "could you ...": its name where the name opens with a
+    verb ("print", "make coffee"), else its first declared verb ("vet" for a "standards
+    read": "could you standards read ..." is no English a colleague reads as asked)."""
+    first = op.name.split()[0].lower() if op.name.split() else ""
+    if op.verbs and not language.verb_lemmas(first):
+        return op.verbs[0]
+    return op.name
