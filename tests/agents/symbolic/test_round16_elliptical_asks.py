@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 
 import pytest
+from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import TaskFrame
@@ -69,3 +70,13 @@ def test_questions_move_nothing(text: str) -> None:
 def test_a_reason_that_asks_for_work_of_its_own_is_still_that_request() -> None:
     frame = _frame("got a light meter? want to print my draft")
     assert [(t.kind, t.item) for t in frame.tasks] == [("print", "file")]
+
+
+async def test_a_run_brings_a_light_meter_and_nothing_else() -> None:
+    run = await run_instruction(
+        newsroom(), "ines", "got an exposure meter anywhere? want to check the light before the run"
+    )
+    assert run.stm.trace.outcome == "done"
+    assert not run.sim.world.sent_out()
+    moved = {e.detail["item"].partition(":")[0] for e in run.sim.world.handovers()}
+    assert moved == {"light_meter"}
