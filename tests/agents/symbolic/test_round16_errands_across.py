@@ -71,10 +71,22 @@ def test_an_errand_to_a_colleague_is_a_hand_over(text: str) -> None:
         ("courier my proof to the printers in Leeds", "the printers in Leeds"),
         ("can you run my proof to the printers in Leeds", "the printers in Leeds"),
         ("dispatch my proof to Harlow Press", "Harlow Press"),
+        # the destination ends where the request's next clause begins, never a firm's "and"
+        ("courier my proof to Harlow Press and let me know when it's gone", "Harlow Press"),
+        ("dispatch my proof to Smith and Sons", "Smith and Sons"),
+        ("dispatch my proof to Procter and Gamble", "Procter and Gamble"),
     ],
 )
 def test_a_courier_request_still_sends_out(text: str, where: str) -> None:
     assert _tasks(_frame(text)) == [("heat", "page_proof", "ines", "courier", where)]
+
+
+def test_a_request_after_the_destination_is_its_own_task() -> None:
+    frame = _frame("courier my proof to Harlow Press and then bring me the camera")
+    assert _tasks(frame) == [
+        ("heat", "page_proof", "ines", "courier", "Harlow Press"),
+        ("transfer", "camera", "ines", None, None),
+    ]
 
 
 @pytest.mark.parametrize(
