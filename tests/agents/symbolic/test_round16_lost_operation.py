@@ -152,15 +152,16 @@ async def test_the_legal_read_is_done_and_the_proof_comes_back() -> None:
 
 
 async def test_the_keeper_is_asked_for_the_work_in_words_that_read() -> None:
-    """ "legal read" opens with no verb: the keeper is asked "could you do a legal read on
-    ...", never "could you legal read ..."; a name that opens with a verb reads as before."""
+    """ "legal read" opens with no verb: the keeper is asked by its declared verb ("could
+    you vet ..."), never "could you legal read ..."; a name that opens with a verb reads as
+    before."""
     run = await run_instruction(newsroom(), "ines", "my proof needs a legal read, can you sort it")
     [asked] = [
         r.action.question
         for r in run.stm.trace.actions()
         if r.action.type == "inquire" and r.action.contact == "oskar"
     ]
-    assert "could you do a legal read on Ines Varga's page proof" in asked
+    assert "could you vet Ines Varga's page proof" in asked
     run = await run_instruction(
         newsroom_with_style_desk(), "ines", "my proof needs a style read, can you sort it"
     )

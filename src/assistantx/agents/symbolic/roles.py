@@ -20,7 +20,7 @@ from typing import Literal
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.core import language, task_kinds
-from assistantx.core.office import Office
+from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing
 from assistantx.memory.graph import LongTermMemory
@@ -108,7 +108,7 @@ class Roles:
                 if op.shape(self.office) == shape and (
                     role.operation is None or op.id == role.operation
                 ):
-                    return _as_verb(op.name)
+                    return _as_verb(op)
         return role.kind
 
     def _making_named(self, role: Role) -> str | None:
@@ -427,11 +427,12 @@ def _fresh_availability(ltm: LongTermMemory, person: str, now: float) -> str:
     return value
 
 
-def _as_verb(name: str) -> str:
-    """An operation's display name as the verb phrase of a request: "print" as it is, a
-    name that opens with no verb ("legal read": an adjective, a noun) as its act done to the
-    thing ("do a legal read on ..."), never "could you legal read ..."."""
-    words = name.split()
-    if len(words) < 2 or "VERB" in language.lemmas(language.fold(words[0])):
-        return name
-    return f"do {a_thing(name)} on"
+def _as_verb(op: Operation) -> str:
+    """The operation as the verb of "could you ...": its name where the name opens with a
+    verb ("print", "make coffee"), else its first declared verb ("vet" for a "legal read":
+    "could you legal read ..." is no English a colleague reads as asked, and the verb is the
+    word the office says the work is asked for by)."""
+    first = op.name.split()[0].lower() if op.name.split() else ""
+    if op.verbs and not language.verb_lemmas(first):
+        return op.verbs[0]
+    return op.name

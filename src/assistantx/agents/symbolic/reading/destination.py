@@ -14,7 +14,7 @@ from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import english, language
 
 # What ends a destination: a sentence or clause end, or a courtesy word after it.
 _END_MARKS = frozenset(".!?;,\n")
@@ -31,6 +31,10 @@ _GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"}
 # "go out to the plant *with the* courier"), an article or "our" between them and the service.
 _MEANS = frozenset({"by", "via", "with"})
 _MEANS_ARTICLES = frozenset({"the", "a", "our", "your"})
+# A join that opens the request's next clause of handing or telling ("to the client *and let*
+# me know", "*and then bring* me the camera"), not a firm's name ("Smith and Sons"); a verb of
+# other work ("and vet it") stays unread, so the part is asked about, never reordered.
+_HANDING = english.words("handing_verbs") | english.words("dative_verbs") | {"let", "tell"}
 
 
 @dataclass(frozen=True)
@@ -122,7 +126,7 @@ def find_outside(
                     break
                 end = more
                 continue
-            if words[end] in _END_WORDS:
+            if words[end] in _END_WORDS or _next_clause(words, end):
                 break
             end += 1
         lead = gaps[start].strip()  # "+44 ...", "#3 ...": a sign before the first word
@@ -214,6 +218,18 @@ def _to_before(words: Sequence[str], gaps: Sequence[str], means: int) -> int | N
         if words[k] == "to":
             return k
     return None
+
+
+def _next_clause(words: Sequence[str], k: int) -> bool:
+    """Whether ``words[k]`` joins the request's next clause of handing or telling onto the
+    destination ("and let me know", "and then bring me ..."), one not about the item sent."""
+    if words[k] != "and":
+        return False
+    nxt = list(words[k + 1 : k + 4])
+    if nxt[:1] == ["then"]:
+        nxt = nxt[1:]
+    # "and bring it back": more done with the item sent out, which cannot be; left unread
+    return bool(nxt) and nxt[0] in _HANDING and nxt[1:2] != [] and nxt[1] not in _PRONOUNS
 
 
 def _ends(gap: str) -> bool:

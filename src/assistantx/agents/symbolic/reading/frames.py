@@ -119,6 +119,11 @@ class FrameReader:
             # "print my log. I need the spreadsheet for the meeting": the item a task already
             # works on for that person, named again as what they need, is context
             made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
+            # "Ramón's long lens please, the telephoto, ...": the item named again by another
+            # of its names in the same clause is the same errand, and keeps its owner
+            made = [
+                t for n, t in enumerate(made) if not any(self._restates(e, t) for e in made[:n])
+            ]
             if tasks and previous_need:  # "P needs a printout of X, print one for her": one
                 made = [t for t in made if not same_work(tasks[-1], t)]
             if tasks and previous_need and self._refers_back(clause) and met_by(tasks[-1], made):

@@ -73,6 +73,27 @@ def _frame_end(w: list[str]) -> int | None:
     return None
 
 
+# Who may follow "any chance (that)": the speaker asking for themself, or anyone asked.
+_CHANCE_SUBJECTS = english.words("request_askees") - {"the", "robot"}
+
+
+def chance_reworded(w: list[str]) -> list[str] | None:
+    """ "(is there) any chance (that) I could nab Åsa's lens" as the question it softens,
+    "could I nab Åsa's lens"; "any chance of a long lens" as "could I have a long lens";
+    None where ``w`` does not open so. The speech stage then reads the plain question."""
+    k = 2 if w[:2] == ["is", "there"] else 0
+    if w[k : k + 2] != ["any", "chance"]:
+        return None
+    k += 2
+    if w[k : k + 1] == ["of"] and len(w) > k + 1:
+        return ["could", "i", "have", *w[k + 1 :]]
+    if w[k : k + 1] == ["that"]:
+        k += 1
+    if len(w) > k + 2 and w[k] in _CHANCE_SUBJECTS and w[k + 1] in _MODALS:
+        return [w[k + 1], w[k], *w[k + 2 :]]
+    return None
+
+
 def indirect_ask(w: list[str], task_verbs: frozenset[str]) -> QuestionKind | None:
     """ "polite" where an asking frame asks for an office task done on something, "info"
     where it asks to be told or to know something (an embedded question), else None."""

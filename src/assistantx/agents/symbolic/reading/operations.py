@@ -69,15 +69,19 @@ class OperationChooser:
         *,
         sent_out: bool = False,
         destination: str | None = None,
+        errands: frozenset[int] = frozenset(),
     ) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
         already said a send-out to a colleague's name is meant to leave the office;
         ``destination``: the requester's answer to "Where should I courier it to?", the place
-        outside in their words where the request's own words named none."""
+        outside in their words where the request's own words named none.
+        ``errands``: the tokens of hurrying verbs of an errand ("*run* it over to Will"),
+        never a service's verb."""
         # the words said as verbs: not those inside a thing's name ("an A1 print" names the
-        # plot, its "print" is no print asked for)
+        # plot, its "print" is no print asked for), nor an errand's hurrying verb
         inside = {n for m in lexed.mentions if m.kind == "item" for n in range(m.start, m.end)}
+        inside |= errands
         in_order = [t.word for n, t in enumerate(lexed.tokens) if n not in inside]
         words = set(in_order)
         facility_ops = {

@@ -209,7 +209,12 @@ class InstructionParser:
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)
             frame = self.operations.choose(
-                frame, lexed, readings.outside, sent_out=sent_out, destination=destination
+                frame,
+                lexed,
+                readings.outside,
+                sent_out=sent_out,
+                destination=destination,
+                errands=readings.errands,
             )
             frame = _one_send_each(frame)
             frame = declined_use_up(self.office, frame)

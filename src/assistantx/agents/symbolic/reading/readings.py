@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
+from assistantx.agents.symbolic.reading.errand import errand_verbs, facility_pronouns
 from assistantx.agents.symbolic.reading.lexicon import (
     COMMON,
     PRONOUNS,
@@ -53,6 +54,9 @@ class Readings:
     gaps: tuple[str, ...]
     doubt: str | None
     outside: Outside | None = None  # a send-out service's verb phrase and destination
+    # the hurrying verbs of errands carried across the office ("run it over to Will"): plain
+    # words, never a service's verb (``errand.errand_verbs``)
+    errands: frozenset[int] = frozenset()
 
 
 class MentionReader:
@@ -82,10 +86,14 @@ class MentionReader:
         mentions = participle_adjectives(tokens, mentions)
         mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
-        # a word of a place's or a person's name ("the post room") is never the verb
+        # "run it over to them": an errand carried across the office, to the one desk named
+        mentions, errands = errand_verbs(tokens, spaces, mentions)
+        mentions = facility_pronouns(tokens, mentions)
+        # a word of a place's or a person's name ("the post room") is never the verb, nor a
+        # hurrying verb of an errand
         names = {
             k for m in mentions if m.kind in ("place", "person") for k in range(m.start, m.end)
-        }
+        } | errands
         outside = find_outside(tokens, spaces, self._sends_out, names)
         if outside is not None and not any(
             m.start == outside.verb_start
@@ -106,7 +114,13 @@ class MentionReader:
         settled = _settled_by_later_sentence(mentions, spaces)
         doubts = ([inside] if inside else []) + self._doubts(tokens, settled, outside)
         return Readings(
-            lexed.text, tokens, tuple(settled), spaces, doubts[0] if doubts else None, outside
+            lexed.text,
+            tokens,
+            tuple(settled),
+            spaces,
+            doubts[0] if doubts else None,
+            outside,
+            errands,
         )
 
     def _inside(
@@ -133,7 +147,10 @@ class MentionReader:
             ]
             if not here:
                 return None
-            name = f"the {here[0].text}"
+            said_name = here[0].text
+            if here[0].kind == "facility" and said_name.lower() in PRONOUNS:
+                said_name = self.office.facility(here[0].id).name  # "them": the desk meant
+            name = f"the {said_name}"
         verb = self.office.operation(outside.operation).name
         return (
             f"{name[:1].upper()}{name[1:]}{HERE_NOT_OUTSIDE}{verb} things to "

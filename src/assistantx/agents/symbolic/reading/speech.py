@@ -44,6 +44,8 @@ _AUX = english.words("question_auxiliaries")
 _MODALS = english.words("request_modals")
 _ASKEES = english.words("request_askees")
 _OPENERS = english.words("speech_openers")
+# "can't read these", "couldn't see a thing": the speaker's inability, the "I" left out
+_CANNOT = frozenset({"cant", "cannot", "couldnt"})
 # "to be honest, ...", "by the way ...": the speaker's stance before what is said
 _STANCE = tuple(tuple(p.split()) for p in english.entries("stance_phrases"))
 _THANKS = english.words("thanks_words")
@@ -138,11 +140,19 @@ def content(words: list[str]) -> list[str]:
         phrase = next((p for p in _STANCE if _starts(words[k:], p)), None)
         if phrase is not None:
             k += len(phrase)
+        elif _stance_infinitive(words[k : k + 3]):
+            k += 3  # "to be frank", "to be blunt": never a colleague called Frank
         elif words[k] in _OPENERS or language.is_stance_adverb(words[k]):
             k += 1
         else:
             break
     return words[k:]
+
+
+def _stance_infinitive(w: list[str]) -> bool:
+    """ "to be frank", "to be blunt", "to be clear": "to be" and an adjective whose -ly
+    adverb is a stance adverb ("frankly"), the same stance said as an infinitive."""
+    return len(w) == 3 and w[:2] == ["to", "be"] and language.is_stance_adverb(f"{w[2]}ly")
 
 
 def _after_courtesy(w: list[str]) -> list[str]:
@@ -476,6 +486,8 @@ class SpeechActs:
             return False  # "I was wondering if you could print ..."
         if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
             return True  # "happy to lend it": the speaker offers, nobody asks
+        if w[0] in _CANNOT and w[1:2] and w[1] in language.verb_lemmas(w[1]):
+            return True  # "can't read these printouts": the speaker's own "I can't", a reason
         if w[-1] in _REFLEXIVES and w[0] not in _MODALS:
             return True  # "she'll get it herself": someone else's own plan
         wants = any(a == "to" and b in self.lex.cue_words for a, b in itertools.pairwise(w))

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from assistantx.agents.symbolic.reading.indirect_asks import indirect_ask
+from assistantx.agents.symbolic.reading.indirect_asks import chance_reworded, indirect_ask
 from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
 
 # Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it".
@@ -68,6 +68,8 @@ def acts_reader(
     deferred = speech.defers(message_words)
 
     def read(words: list[str], asks: bool) -> Acts:
+        # "any chance I could nab ...": read as the question it softens ("could I nab ...")
+        words = chance_reworded(words) or words
         note = speech.note(words)
         return Acts(
             request=speech.request(words),

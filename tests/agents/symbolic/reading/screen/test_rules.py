@@ -19,6 +19,7 @@ def test_the_rules_in_priority_order() -> None:
         "negated",
         "destructive",
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
+        "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
         "fact",
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")

@@ -18,6 +18,8 @@ destructive     "throw away Wang's stapler", "hide ...", "get rid of ...",      
                 "chuck Reed's clipboard in the skip" (any verb, a waste container)
 unplaced        "stick Reed's clipboard in the van": a verb that is no errand, to   asks what
                 a place that names nothing of the office                            to do
+elliptical      the reason after "got a loupe anywhere?" ("want to check the        context; the
+                plates"): the ask before it is a request for one                    ask kept
 fact            "Wang is away", "Zhang is in the meeting room",                     a hint;
                 "Zhang's stapler is broken"                                         drops piece
 question        "who has a tape measure?", "is the printer working?" (not "could    answered;
@@ -55,7 +57,7 @@ removed from the original text by their character spans, never re-joined, so wha
 parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
-``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``fact``,
+``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``elliptical``, ``fact``,
 ``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
 ``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
 reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the

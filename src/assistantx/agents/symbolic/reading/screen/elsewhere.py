@@ -1,7 +1,7 @@
 """A person said to be somewhere the office is not ("Kwame's at the dentist till 3 fyi", "Noor
-is on a course this week"): away, like "Wang is away". What follows the state (when they
-will be back, "fyi", "again") says nothing more about where they are, so it is cut off before
-the state is read."""
+is on a course this week", "Ramón's out on a delivery till 3"): away, like "Wang is away".
+What follows the state (when they will be back, "fyi", "again") says nothing more about
+where they are, so it is cut off before the state is read."""
 
 from __future__ import annotations
 
@@ -16,6 +16,9 @@ _PLACES = english.words("place_words") | english.words("surface_words")
 # "this week", "all day") or an aside ("fyi", "btw", "again", "ugh").
 _TAIL = english.words("state_tails")
 _OFFICE_THINGS = frozenset({"person", "item", "facility", "place"})
+# A word of being gone before where: "*out* on a delivery", "*off* at the dentist", "*away* in
+# Leeds" say where the person is gone, like "on a delivery" alone.
+_GONE = frozenset({"out", "off", "away"})
 
 
 def state_said(state: list[str]) -> list[str]:
@@ -30,6 +33,8 @@ def away_elsewhere(state: list[str], lexed: Lexed, subject_end: int) -> bool:
     """Whether the state puts the person somewhere that is no place of this office: "at the
     dentist", "in Leeds", never "at his desk", nor a place, facility, item or person the
     office names (those are its own facts, read by the rule)."""
+    if len(state) > 2 and state[0] in _GONE and state[1] in _ELSEWHERE:
+        state = state[1:]  # "out on a delivery till 3": gone, on a delivery
     if len(state) < 2 or state[0] not in _ELSEWHERE:
         return False
     if set(state) & _PLACES:

@@ -5,6 +5,7 @@ answered and met with "Shall I bring you one?"."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_ask
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
@@ -16,6 +17,8 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     kind = piece.acts.question
     if kind != "info" or asks_for_purpose(terms, msg, piece):
         return None
+    if elliptical_ask(terms, msg, piece):
+        return None  # "got a light meter? want to check the flash": a request, kept
     items = purpose_item(terms, piece) or terms.named(piece.lexed, "item")
     facilities = terms.named(piece.lexed, "facility")
     people = terms.named(piece.lexed, "person")

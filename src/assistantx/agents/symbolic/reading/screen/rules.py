@@ -7,6 +7,7 @@ from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
+from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.fact import fact
@@ -45,6 +46,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("negated", negated),
     ("destructive", destructive),
     ("unplaced", unplaced),
+    ("statement", elliptical_reason),
     ("fact", fact),
     ("statement", facility_report),
     ("statement", own_doing),

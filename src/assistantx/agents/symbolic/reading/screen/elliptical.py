@@ -1,0 +1,87 @@
+"""Elliptical asks: "got a light meter anywhere? want to check the light before the run",
+"anyone got an eyeglass? want to look at the negatives". A question whether anyone has one
+thing of a kind of the office, followed by the speaker's own reason, asks for one for the
+speaker: the question rule leaves it in the request (``elliptical_ask``), and the reason is
+set aside as context (``elliptical_reason``), so the things it names (the negatives the
+speaker looks at) are never errands of their own. A question about the one thing ("got the
+light meter back from Will yet?", "who's got the light meter?"), a bare "got a light
+meter?" and a reason that asks for work of its own ("want to print my draft") keep their
+readings."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english
+
+# "(anyone) got a light meter (anywhere)?": who may be asked before the verb of having.
+_ASKED = english.words("request_askees") - {"i", "we", "the", "robot"}
+_HAVING = frozenset({"got", "have"})
+_AUXILIARIES = frozenset({"have", "has", "do", "does"})
+_ANYWHERE = frozenset({"anywhere", "around", "about", "handy"})
+_INDEFINITE = frozenset({"a", "an", "any", "some", "another", "one"})
+# The speaker's reason after it: "want to check ...", "need it for ...", "to check ...".
+_REASON_OPENERS = english.words("need_verbs") | {"wanna", "gotta", "to", "for"}
+_REASON_LEAD = frozenset({"i", "just", "so", "only", "id", "ill"})
+
+
+def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "got a light meter anywhere? want to check the flash", "anyone got a light meter?
+    need it for the shoot", "light meter anywhere? ...": a question whether anyone has a
+    thing of the office (one of a kind, never "the" one), then the speaker's own reason, asks
+    for one for the speaker; it is left in the request. "got the light meter back from Will
+    yet?", "who's got the light meter?" and a bare "got a light meter?" stay questions
+    (answered, an offer at most)."""
+    if len(terms.named(piece.lexed, "item")) != 1 or terms.named(piece.lexed, "person"):
+        return False
+    if not (_having_one(piece.words) or _one_anywhere(piece)):
+        return False
+    later = [p for p in msg.pieces if p.start > piece.end]
+    return bool(later) and _gives_a_reason(terms, later[0]) and later[0].acts.question is None
+
+
+def _having_one(w: list[str]) -> bool:
+    """ "(have you / has anyone / anyone) got a ...", "(does anyone) have a ..."."""
+    k = 1 if w[:1] and w[0] in _AUXILIARIES else 0
+    k += 1 if w[k : k + 1] and w[k] in _ASKED else 0
+    return len(w) > k + 2 and w[k] in _HAVING and w[k + 1] in _INDEFINITE
+
+
+def _one_anywhere(piece: Piece) -> bool:
+    """ "light meter anywhere?", "a light meter around?": only the thing and where."""
+    w = piece.words
+    if len(w) < 2 or w[-1] not in _ANYWHERE:
+        return False
+    items = [m for m in piece.lexed.mentions if m.kind == "item"]
+    return len(items) == 1 and all(
+        k in range(items[0].start, items[0].end) or w[k] in _INDEFINITE for k in range(len(w) - 1)
+    )
+
+
+def elliptical_reason(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """The speaker's reason after an elliptical ask ("got an eyeglass anywhere? *want to look
+    at the negatives*"): context for the thing asked for, never an errand of its own on the
+    things it names (the negatives are what the speaker already has in hand)."""
+    before = [p for p in msg.pieces if p.end < piece.start]
+    if not before or not _gives_a_reason(terms, piece):
+        return None
+    if not elliptical_ask(terms, msg, before[-1]):
+        return None
+    return Finding("statement", piece, "the speaker's reason for the thing asked for")
+
+
+def _gives_a_reason(terms: Terms, piece: Piece) -> bool:
+    """Whether ``piece`` is the speaker's own reason for wanting something ("want to check
+    the light before the run"), naming no person of the office (a thing it names is what
+    the speaker works on: "want to look at the negatives")."""
+    w = piece.words
+    k = 0
+    while k < len(w) and w[k] in _REASON_LEAD:
+        k += 1
+    if k >= len(w) or w[k] not in _REASON_OPENERS:
+        return False
+    # "want to print my draft" asks for a task of its own; "want to check ..." does not
+    return not any(
+        m.kind == "person" or (m.kind == "cue" and m.start != k) for m in piece.lexed.mentions
+    )
