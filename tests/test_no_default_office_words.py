@@ -50,7 +50,7 @@ def _strings(tree: ast.AST) -> list[tuple[int, str]]:
     """String constants that are not docstrings, with their line numbers (one walk)."""
     docstrings: set[int] = set()
     constants: list[ast.Constant] = []
-    for node in ast.walk(tree):
+    for node in _walked(tree):
         if isinstance(node, ast.Constant) and isinstance(node.value, str):
             constants.append(node)
         elif (
@@ -70,6 +70,13 @@ def test_the_word_list_is_the_default_office() -> None:
 def _modules(exempt: set[str]) -> list[str]:
     """Every module of the package, as a path under ``src/assistantx``, less ``exempt``."""
     return sorted(rel for p in SRC.rglob("*.py") if (rel := str(p.relative_to(SRC))) not in exempt)
+
+
+@functools.cache
+def _walked(tree: ast.AST) -> tuple[ast.AST, ...]:
+    """Every node of a tree, walked once for both scans (a walk of the whole package is about
+    as long as its parse); a tree is cached by its identity, as ``_tree`` keeps it alive."""
+    return tuple(ast.walk(tree))
 
 
 @functools.cache
@@ -123,7 +130,7 @@ def _listed_kinds(tree: ast.AST) -> list[tuple[int, list[str]]]:
     """Literal collections (tuples, lists, sets, dict keys, ``Literal[...]``) that name three
     or more task kinds: a module listing the kinds itself."""
     found: list[tuple[int, list[str]]] = []
-    for node in ast.walk(tree):
+    for node in _walked(tree):
         elements: list[ast.expr | None]
         if isinstance(node, ast.Tuple | ast.List | ast.Set):
             elements = list(node.elts)

@@ -5,8 +5,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-import matplotlib.image as mpimg
 import numpy as np
+import numpy.typing as npt
 import pytest
 
 from assistantx.cli import main
@@ -18,6 +18,15 @@ from helpers.children import descendants
 from helpers.maps import REPO, real_map
 
 
+def _read_png(path: Path) -> npt.NDArray[np.float32]:
+    # matplotlib is imported by the tests that read a picture, not at collection: about a
+    # CPU-second in every xdist worker otherwise
+    import matplotlib.image as mpimg
+
+    image: npt.NDArray[np.float32] = mpimg.imread(path)
+    return image
+
+
 def test_render_with_path_and_particles(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "office.png"
     running = {child.pid for child in descendants(os.getpid())}
@@ -26,7 +35,7 @@ def test_render_with_path_and_particles(tmp_path: Path, capsys: pytest.CaptureFi
     # One plan and one drive: planned in this process, no planning worker started for it.
     assert [c for c in descendants(os.getpid()) if c.pid not in running] == []
     assert "path 4.00 m" in capsys.readouterr().out
-    image = mpimg.imread(out)
+    image = _read_png(out)
     assert image.shape[0] > 300
     assert image.shape[1] > 500
     # Blue path, red particles and green anchors are drawn on the grey map.
@@ -54,7 +63,7 @@ def test_render_a_real_map_without_anchors(
     out = tmp_path / "depot.png"
     assert main(["map", "render", "--out", str(out), "--map", str(real_map("depot"))]) == 0
     assert "(no anchors)" in capsys.readouterr().out
-    assert mpimg.imread(out).shape[1] > 300
+    assert _read_png(out).shape[1] > 300
 
 
 def test_check_names_file_location_and_problem(

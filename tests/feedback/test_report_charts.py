@@ -9,15 +9,18 @@ import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pytest
-from matplotlib.figure import Figure
 
 from assistantx.evaluation.report import chart_data
 from assistantx.evaluation.report import chart_figure as chart_figure_of_evaluation
 from assistantx.feedback.impact import InstructionRecord
 from assistantx.feedback.report import Period, build_report, chart_figure, render_markdown
 from assistantx.feedback.walking import WalkingEstimate
+
+if TYPE_CHECKING:  # matplotlib is imported where a chart is drawn, not at collection
+    from matplotlib.figure import Figure
 
 # Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
 pytestmark = pytest.mark.slow

@@ -1,8 +1,9 @@
 """A uvicorn server for the fakes a test runs in its own event loop (a scripted model, a
 scripted homeserver, a bare ASGI app): no signal handling (a test must not take over
 SIGINT), and a stop that takes milliseconds, not uvicorn's 0.1 s tick plus its fixed 0.1 s
-sleep. The service's own server (``assistantx.service.server``) is not one of these: its
-tests run it as the service does."""
+sleep. The service's own server (``assistantx.service.server``) runs in the tests with this
+timing too (``helpers.servers.serving_app``), its own stop otherwise unchanged; the tests of
+how the service stops as a process start it as one (``service.server.serve``)."""
 
 from __future__ import annotations
 

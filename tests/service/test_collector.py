@@ -36,11 +36,15 @@ class _Clock:
 @pytest.fixture
 def clock() -> Iterator[_Clock]:
     enabled = gc.isenabled()
+    frozen = gc.get_freeze_count() > 0  # what the test process froze (tests/conftest.py)
     gc.disable()  # only the test's own collections run
+    gc.unfreeze()  # and nothing is frozen but what the test freezes
     try:
         yield _Clock()
     finally:
-        gc.unfreeze()  # the test process's heap as it was
+        gc.unfreeze()  # the test process's heap as it was: its start-up frozen again
+        if frozen:
+            gc.freeze()
         if enabled:
             gc.enable()
 

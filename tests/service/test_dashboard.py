@@ -15,7 +15,6 @@ import httpx
 import numpy as np
 import pytest
 import pytest_asyncio
-from matplotlib.image import imread
 
 from assistantx.adapters.robot.navigator import DEFAULT_MAP
 from assistantx.core.office import load_office
@@ -110,6 +109,8 @@ async def test_map_png_has_one_pixel_per_cell_with_the_top_row_last(
     info = (await client.get("/v1/map")).json()
     response = await client.get("/v1/map.png")
     assert response.headers["content-type"] == "image/png"
+    from matplotlib.image import imread  # here, not at collection: a CPU-second a worker
+
     image = imread(io.BytesIO(response.content), format="png")
     assert image.shape[:2] == (info["height"], info["width"])
     grey = np.rint(image[:, :, 0] * 255).astype(int)

@@ -13,13 +13,13 @@ import math
 import statistics
 from collections import defaultdict
 from pathlib import Path
-from typing import Any
-
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
+from typing import TYPE_CHECKING, Any
 
 from assistantx.evaluation.episode import Episode
 from assistantx.evaluation.metrics import Scores, score
+
+if TYPE_CHECKING:  # matplotlib is imported when a chart is drawn: about a CPU-second at start
+    from matplotlib.figure import Figure
 
 METRICS = ("sr", "cr", "rr", "cta", "rta")
 EXTRAS = ("steps", "actions", "llm_calls", "prompt_tokens", "completion_tokens", "wall_s")
@@ -137,6 +137,9 @@ def chart_data(summary: dict[str, Any], name: str) -> dict[str, Any]:
 def chart_figure(summary: dict[str, Any], name: str) -> Figure:
     """One metric's bar chart: a bar per level with the spread over runs, each bar labelled
     with its value (so a zero is visible too) below the title, never over it."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
     data = chart_data(summary, name)
     figure = Figure(figsize=(5, 3.2), dpi=100, layout="tight")
     FigureCanvasAgg(figure)  # attaches the Agg canvas: no pyplot state
