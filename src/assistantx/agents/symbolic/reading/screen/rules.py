@@ -26,6 +26,7 @@ from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.wish import wish
@@ -43,6 +44,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("thanks", thanks),
     ("condition", condition),
     ("negated", negated),
+    ("destructive", unsafe),
     ("destructive", destructive),
     ("unplaced", unplaced),
     ("fact", fact),
