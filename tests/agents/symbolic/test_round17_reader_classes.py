@@ -73,3 +73,60 @@ async def test_the_banner_is_never_fetched_to_be_burnt() -> None:
     )
     assert run.stm.trace.outcome == "unachievable"
     assert not {"move", "send_qr", "inquire"} & set(run.actions)
+
+
+# -- class 1: a person named in a reason clause is never the recipient ---------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can I get a hi-vis vest from the kit store? covering the river walk for Fenella and "
+        "they're all missing from the van",
+        "can I get a hi-vis vest, covering for Fenella today",
+        "covering for Fenella on the river walk, can I get a hi-vis vest?",
+        "standing in for Fenella today so can I get a hi-vis vest",
+        "can I get a hi-vis vest as I'm covering for Fenella",
+        "could I have a hi-vis vest please, I'm filling in for Fenella",
+        "could I get a hi-vis vest, I'm subbing for Fenella",
+        "Fenella asked me to lead the walk so could I get a hi-vis vest",
+        "Fenella is off so I'm leading the walk, can I get a hi-vis vest?",
+    ],
+)
+def test_the_person_stood_in_for_is_context_and_the_requester_gets_it(text: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", "hi_vis", None, "bea")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can I get a hi-vis vest for Fenella",
+        "could you get Fenella a hi-vis vest, she's leading the walk",
+        "get a hi-vis vest for Fenella, she's covering the walk",
+    ],
+)
+def test_a_recipient_named_for_the_thing_still_gets_it(text: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", "hi_vis", None, "fenella")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "covering the river walk for Fenella today",
+        "I'm standing in for Fenella this afternoon",
+    ],
+)
+def test_standing_in_said_alone_moves_nothing(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is None
+
+
+async def test_the_vest_goes_to_the_requester_not_the_colleague_covered_for() -> None:
+    run = await run_instruction(
+        field_centre(),
+        "bea",
+        "can I get a hi-vis vest from the kit store? covering the river walk for Fenella and "
+        "they're all missing from the van",
+    )
+    assert run.stm.trace.outcome == "done"
+    assert run.sim.world.holder["hi_vis:kit_store"] == "bea"

@@ -28,6 +28,7 @@ def _site(
         kw.get("subject", False),
         then,
         kw.get("obliged", False),
+        kw.get("stood_in_for", False),
     )
 
 
@@ -54,6 +55,10 @@ PERSON_CASES = [
     (_site("from"), "from Wang: the source"),
     (_site("by"), "by Wang: the doer"),
     (_site("to", back=True), "back to Wang: the owner, given back"),
+    (
+        _site("for", stood_in_for=True),
+        "covering for Fen, standing in for Fen: why the speaker asks, not a recipient",
+    ),
     (_site("to"), "to / for / with Wang: the recipient"),
     (_site("get", nxt="to"), "Wang to sign, ask Wang: the doer"),
     (_site("ask"), "Wang to sign, ask Wang: the doer"),

@@ -14,6 +14,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
+from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language, task_kinds
 from assistantx.core.receiving_place import (
@@ -95,6 +96,7 @@ class PersonSite:
     subject: bool = False  # a finite verb follows: "Rich asked", "Hal said"
     then: str = ""  # the word after the next one ("it" in "Rich wants it")
     obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
+    stood_in_for: bool = False  # "covering chem for Zhang": whom the speaker stands in for
 
     @property
     def at_place(self) -> bool:
@@ -162,6 +164,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule(
         "back to Wang: the owner, given back", lambda s: s.prev == "to" and s.back, "returned"
     ),
+    PersonRule(
+        "covering for Fen, standing in for Fen: why the speaker asks, not a recipient",
+        lambda s: s.stood_in_for,
+        "context",
+    ),
     PersonRule("to / for / with Wang: the recipient", lambda s: s.prev in _TO, "recipient"),
     PersonRule(
         "Wang to sign, ask Wang: the doer", lambda s: s.nxt == "to" or s.prev in _DIRECT, "actor"
@@ -201,6 +208,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         subject=m.end < len(tokens) and language.is_finite_verb(tokens[m.end].word),
         then=tokens[m.end + 1].word if m.end + 1 < len(tokens) else "",
         obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
+        stood_in_for=stands_in_for([t.word for t in tokens], m.start - 1),
     )
     match person_rule(site).slot:
         case "recipient":

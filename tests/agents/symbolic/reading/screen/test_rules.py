@@ -17,6 +17,7 @@ def test_the_rules_in_priority_order() -> None:
         "thanks",
         "condition",
         "negated",
+        "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "destructive",
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "fact",
