@@ -1,6 +1,6 @@
 """A field studies centre staff base for the tests of blind round 17's classes (the round's own
 office and sentences were never read). Two people share the first name Robin and are told apart
-by an alias with an initial ("Robin A", "Robin O"); the deputy head has role aliases ("the
+by an alias with an initial ("Robin B", "Robin O"); the deputy head has role aliases ("the
 Deputy Head", "the deputy"); a reprographics room goes by "repro", and a colleague sits there;
 a kit store keeps hi-vis vests for anyone (a supply); papers to sign (consent forms), a personal
 banner, an electronic file that the print room renders as a printout, and ordinary belongings
@@ -16,8 +16,8 @@ from assistantx.core.office import Office, parse_office
 # (id, name, aliases, location, owned types)
 _PEOPLE: tuple[tuple[str, str, list[str], str, list[str]], ...] = (
     ("bea", "Bea Lindgren", [], "desk_1", ["hole_punch", "consent_form", "file"]),
-    ("robin_a", "Robin Achebe", ["Robin A"], "desk_2", ["scissors", "file"]),
-    ("robin_o", "Robin Okonkwo", ["Robin O"], "desk_3", ["board_marker", "file"]),
+    ("robin_b", "Robin Baptiste", ["Robin B"], "desk_2", ["scissors", "file"]),
+    ("robin_o", "Robin Okonkwo", ["Robin O"], "desk_3", ["board_marker", "scissors", "file"]),
     ("tomas", "Tomás Ibarra", [], "desk_4", ["board_marker", "hole_punch", "file", "torch"]),
     ("nkechi", "Nkechi Adeyemi", [], "desk_5", ["consent_form", "file"]),
     ("linh", "Linh Vo", [], "desk_6", ["file"]),

@@ -130,3 +130,62 @@ async def test_the_vest_goes_to_the_requester_not_the_colleague_covered_for() ->
     )
     assert run.stm.trace.outcome == "done"
     assert run.sim.world.holder["hi_vis:kit_store"] == "bea"
+
+
+# -- class 2: a named owner is never swapped for another; a shared name is asked -----------
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("Robin O's got a spare board pen hasn't he? could you nab it for me", "robin_o"),
+        ("robin o's got a spare board pen hasnt he? could you nab it for me", "robin_o"),
+        ("Robin O has a spare board pen, could you nab it for me", "robin_o"),
+        ("could you nab Robin O's board pen for me", "robin_o"),
+        ("Tomás has got a spare board pen hasn't he? could you grab it for me", "tomas"),
+        ("tomás's got a board marker hasn't he? grab it for me please", "tomas"),
+        ("Robin B's got some scissors hasn't he? can you get them for me", "robin_b"),
+    ],
+)
+def test_the_owner_named_is_the_owner_asked(text: str, owner: str) -> None:
+    assert [(t.item, t.owner, t.recipient) for t in _frame(text).tasks] == [
+        ("board_marker" if "pen" in text or "marker" in text else "scissors", owner, "bea")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Robin's got scissors, could you grab them for me",
+        "Robin has a pair of scissors hasn't he? can you get them for me",
+        "could you grab Robin's scissors for me",
+    ],
+)
+def test_a_name_two_people_share_is_asked_never_anyones(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == []
+    assert frame.question is not None and "Robin Baptiste" in frame.question
+    assert "Robin Okonkwo" in frame.question
+
+
+def test_the_answer_to_which_robin_names_the_owner() -> None:
+    frame = _frame("Robin's got scissors, could you grab them for me", answers=("Robin O",))
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("scissors", "robin_o", "bea")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["Tomás has a board pen, doesn't he?", "Robin O's got a board pen hasn't he?"],
+)
+def test_a_tag_question_alone_moves_nothing(text: str) -> None:
+    assert _frame(text).tasks == []
+
+
+async def test_the_pen_comes_from_robin_o_not_from_another_owner() -> None:
+    run = await run_instruction(
+        field_centre(), "bea", "Robin O's got a spare board pen hasn't he? could you nab it for me"
+    )
+    assert run.stm.trace.outcome == "done"
+    holder = run.sim.world.holder
+    assert holder["board_marker:robin_o"] == "bea"
+    assert holder["board_marker:tomas"] == "tomas" and holder["board_marker:fenella"] == "fenella"
