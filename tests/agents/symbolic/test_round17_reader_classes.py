@@ -189,3 +189,58 @@ async def test_the_pen_comes_from_robin_o_not_from_another_owner() -> None:
     holder = run.sim.world.holder
     assert holder["board_marker:robin_o"] == "bea"
     assert holder["board_marker:tomas"] == "tomas" and holder["board_marker:fenella"] == "fenella"
+
+
+# -- class 3: "could P have a X" makes P the recipient, not the lender -----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "to"),
+    [
+        (
+            "Could Nkechi have a pair of scissors please? She's doing the name cards.",
+            "scissors",
+            "nkechi",
+        ),
+        ("Could Linh have a pair of scissors? He's cutting out name cards", "scissors", "linh"),
+        ("can Linh borrow a hole punch?", "hole_punch", "linh"),
+        ("let Linh have a hole punch", "hole_punch", "linh"),
+        ("Linh could do with a hole punch", "hole_punch", "linh"),
+        ("get Linh a hole punch please", "hole_punch", "linh"),
+    ],
+)
+def test_the_person_asked_for_receives_anyones(text: str, item: str, to: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", item, None, to)]
+
+
+@pytest.mark.parametrize(
+    ("text", "moves"),
+    [
+        ("could I have Tomás's hole punch?", [("transfer", "hole_punch", "tomas", "bea")]),
+        ("could Linh have Tomás's hole punch?", [("transfer", "hole_punch", "tomas", "linh")]),
+    ],
+)
+def test_a_possessive_still_names_the_owner(text: str, moves: list[tuple[str, ...]]) -> None:
+    assert _moves(_frame(text)) == moves
+
+
+def test_having_a_look_at_a_paper_gives_nobody_the_paper() -> None:
+    frame = _frame("could Marguerite have a look at my consent form")
+    assert frame.tasks == [] and frame.question is not None
+
+
+def test_a_need_said_as_a_fact_is_still_asked() -> None:
+    frame = _frame("Linh needs a hole punch")
+    assert frame.tasks == [] and frame.question is not None and "Linh" in frame.question
+
+
+async def test_the_scissors_go_to_nkechi_from_an_owner_asked() -> None:
+    run = await run_instruction(
+        field_centre(),
+        "bea",
+        "Could Nkechi have a pair of scissors please? She's doing the name cards.",
+    )
+    assert run.stm.trace.outcome == "done"
+    moved = [e.detail for e in run.sim.world.handovers()]
+    assert moved[-1]["to"] == "nkechi" and moved[-1]["item"] != "scissors:nkechi"
+    assert "inquire" in run.actions  # the owner was asked before anything moved

@@ -17,6 +17,7 @@ from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language, task_kinds
+from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.receiving_place import (
     PLACE_WORDS,
     names_receiving_place,
@@ -97,6 +98,7 @@ class PersonSite:
     then: str = ""  # the word after the next one ("it" in "Rich wants it")
     obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
     stood_in_for: bool = False  # "covering chem for Zhang": whom the speaker stands in for
+    to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
 
     @property
     def at_place(self) -> bool:
@@ -155,6 +157,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     ),
     PersonRule("Zhang has to / must sign: the doer", lambda s: s.obliged, "actor"),
     PersonRule(
+        "could Min have / let Min borrow scissors: the one asked for receives",
+        lambda s: s.to_have and not s.possessive,
+        "recipient",
+    ),
+    PersonRule(
         "Min needs / gets scissors: the one in need receives",
         lambda s: s.nxt in _NEEDS,
         "recipient",
@@ -197,6 +204,11 @@ def person_rule(site: PersonSite) -> PersonRule:
     return next(r for r in PERSON_RULES if r.applies(site))
 
 
+def _next_item_start(ms: list[Mention], n: int, default: int) -> int:
+    """Where the first item named after mention ``n`` starts ("could Min have a *stapler*")."""
+    return next((x.start for x in ms[n + 1 :] if x.kind == "item"), default)
+
+
 def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
     m = ms[n]
     site = PersonSite(
@@ -209,6 +221,10 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         then=tokens[m.end + 1].word if m.end + 1 < len(tokens) else "",
         obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
         stood_in_for=stands_in_for([t.word for t in tokens], m.start - 1),
+        to_have=asked_to_have(
+            tokens[m.start - 1].word if m.start > 0 else "",
+            [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
+        ),
     )
     match person_rule(site).slot:
         case "recipient":
