@@ -244,3 +244,59 @@ async def test_the_scissors_go_to_nkechi_from_an_owner_asked() -> None:
     moved = [e.detail for e in run.sim.world.handovers()]
     assert moved[-1]["to"] == "nkechi" and moved[-1]["item"] != "scissors:nkechi"
     assert "inquire" in run.actions  # the owner was asked before anything moved
+
+
+# -- class 4: "to P for a signature" is P's signing, its result back to the requester ------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could you take my permission slip to the deputy for a signature? she said she'd sign "
+        "it today",
+        "take my consent form to Marguerite for a signature",
+        "take my consent form to Marguerite for her signature",
+        "take my consent form to the Deputy Head for signing",
+        "could you take my permission slip to Marguerite for her to sign",
+        "send the deputy my consent form for a signature",
+    ],
+)
+def test_the_signer_signs_and_the_paper_comes_back(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.owner, t.recipient, t.actor) for t in frame.tasks] == [
+        ("sign", "consent_form", "bea", "bea", "marguerite")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could you take my permission slip to the deputy for a signature and then on to Nkechi",
+        "take my consent form to Marguerite for her signature and then to Nkechi",
+        "take my consent form to Marguerite for a signature, then give it to Nkechi",
+    ],
+)
+def test_a_recipient_named_after_the_signer_gets_the_signed_paper(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.recipient, t.actor) for t in frame.tasks] == [
+        ("sign", "nkechi", "marguerite")
+    ]
+
+
+def test_taking_a_paper_to_someone_with_no_signature_asked_is_still_a_hand_over() -> None:
+    assert _moves(_frame("take my consent form to the deputy")) == [
+        ("transfer", "consent_form", "bea", "marguerite")
+    ]
+
+
+async def test_the_signed_slip_is_brought_back_to_the_requester() -> None:
+    run = await run_instruction(
+        field_centre(),
+        "bea",
+        "could you take my permission slip to the deputy for a signature? she said she'd sign "
+        "it today",
+    )
+    assert run.stm.trace.outcome == "done"
+    world = run.sim.world
+    assert ("consent_form:bea", "marguerite") in world.signed
+    assert world.holder["consent_form:bea"] == "bea"

@@ -109,11 +109,15 @@ def _sign(s: Scene) -> Task:
     # "take it to Wang to sign": whom it goes to signs, never the requester it comes back to
     to = [p for p in s.roles.recipient if p != s.requester]
     actor = next(iter(s.roles.actor + s.roles.bare + to), None) or _work_of(s)
+    # the signed paper comes back to the requester, unless someone else is named to get it
+    # after the signer ("to Wang for a signature and then on to Hal": Hal)
+    onward = [p for p in to if p != actor]
+    back = s.requester if actor in s.roles.recipient else s.recipient
     return Task(
         kind=person_work(s.cues) or "sign",
         item=s.doc.id if s.doc else None,
         owner=s.owner(s.doc) or s.requester,
-        recipient=s.requester if actor in s.roles.recipient else s.recipient,
+        recipient=onward[-1] if onward and actor in s.roles.recipient else back,
         actor=actor,
     )
 
