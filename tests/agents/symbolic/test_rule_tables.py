@@ -29,6 +29,7 @@ def _site(
         then,
         kw.get("obliged", False),
         kw.get("stood_in_for", False),
+        kw.get("to_have", False),
     )
 
 
@@ -50,6 +51,10 @@ PERSON_CASES = [
     (
         _site("", nxt="needs", then="to", subject=True, obliged=True),
         "Zhang has to / must sign: the doer",
+    ),
+    (
+        _site("could", nxt="have", subject=True, to_have=True),
+        "could Min have / let Min borrow scissors: the one asked for receives",
     ),
     (_site("", nxt="needs", subject=True), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),
