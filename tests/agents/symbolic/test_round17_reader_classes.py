@@ -300,3 +300,48 @@ async def test_the_signed_slip_is_brought_back_to_the_requester() -> None:
     world = run.sim.world
     assert ("consent_form:bea", "marguerite") in world.signed
     assert world.holder["consent_form:bea"] == "bea"
+
+
+# -- class 5: "mine" is the requester's own item of the kind just named ---------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Hattie's hole punch has packed in, can you take mine down to her in repro",
+        "Hattie's hole punch has packed in, can you take mine down to Hattie in repro",
+        "Hattie's hole punch is broken, can you take mine to her",
+        "Hattie's hole punch has packed in, could you run mine over to her",
+    ],
+)
+def test_mine_is_my_item_of_the_kind_named(text: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", "hole_punch", "bea", "hattie")]
+
+
+def test_mine_with_no_kind_named_is_asked_never_printed() -> None:
+    frame = _frame("can you take mine down to Hattie in repro")
+    assert frame.tasks == [] and frame.question is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "moves"),
+    [
+        ("put my worksheet through repro for Hattie", [("print", "file", "bea", "hattie")]),
+        ("take my hole punch to Hattie", [("transfer", "hole_punch", "bea", "hattie")]),
+    ],
+)
+def test_a_service_asked_at_the_room_and_my_named_item_are_read_as_before(
+    text: str, moves: list[tuple[str, ...]]
+) -> None:
+    assert _moves(_frame(text)) == moves
+
+
+async def test_my_hole_punch_reaches_hattie_in_repro() -> None:
+    run = await run_instruction(
+        field_centre(),
+        "bea",
+        "Hattie's hole punch has packed in, can you take mine down to her in repro",
+    )
+    assert run.stm.trace.outcome == "done"
+    assert run.sim.world.holder["hole_punch:bea"] == "hattie"
+    assert not run.sim.world.printed

@@ -440,7 +440,9 @@ class TaskReader:
         # to a facility that renders files asks for that rendering (which of the office's
         # renderings, the facility's own: operations.py)
         rendered = any(
-            word_before(m) in _TO_FACILITY | _THROUGH and "render" in shapes(m)
+            word_before(m) in _TO_FACILITY | _THROUGH
+            and "render" in shapes(m)
+            and not persons_place(m)  # "to Hattie in repro": where she is, not its service
             for m in facilities_said
         )
         if rendered and not items and self.file:
@@ -451,6 +453,7 @@ class TaskReader:
                 for a, m in itertools.pairwise(clause.mentions)
                 if a.kind == "self"
                 and a.possessive
+                and a.text.lower() != "mine"  # "mine down to ...": no noun follows "mine"
                 and a.end == m.start
                 and m.kind == "word"
                 and language.is_noun(m.ids[0] if m.ids else "")

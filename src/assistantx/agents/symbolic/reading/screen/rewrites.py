@@ -114,9 +114,9 @@ def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidenc
 
 def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
     """ "lend him mine", "give him Rich's", "borrow Priya's for me": a possessive with no
-    item after it (the clause ends, or whom it is for, "back" or "over" follows) means the
-    item named last before it (in what is left, else in the whole message); "for the exam"
-    after it is a purpose, which leaves it alone."""
+    item after it (the clause ends, or whom it is for, "back" or "over" follows; "mine"
+    anywhere) means the item named last before it (in what is left, else in the whole
+    message); "for the exam" after "Rich's" is a purpose, which leaves it alone."""
     evidence: list[Evidence] = []
 
     def last_item(before: str) -> str | None:
@@ -138,9 +138,13 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         evidence.append(Evidence(words=word, meaning=said))
         return said
 
+    # "mine" is never followed by its noun, so wherever it stands ("take mine down to Hattie
+    # in repro", with "her" already named back) it is the requester's own item of the kind
+    # named last; "Rich's" is a possessive only where no noun can follow it
     pattern = re.compile(
-        r"(?<!\bof\s)\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
-        r"for now|for a bit|for today|(?:for|to) (?:me|us|him|her|them)|back|over)\b))",
+        r"(?<!\bof\s)\b(mine\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
+        r"and|or|for now|for a bit|for today|(?:(?:down|up|over|round|across)\s+)?(?:for|to) "
+        r"(?:me|us|him|her|them)|back|over)\b)))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
