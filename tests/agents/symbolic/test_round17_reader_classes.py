@@ -345,3 +345,54 @@ async def test_my_hole_punch_reaches_hattie_in_repro() -> None:
     assert run.stm.trace.outcome == "done"
     assert run.sim.world.holder["hole_punch:bea"] == "hattie"
     assert not run.sim.world.printed
+
+
+# -- class 6: "the file not a printout" chooses the owner's file, forwarded ----------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "get Tomás to send me his yr10 field guide would you, the file not a printout",
+        "get Tomás to send me his field guide, the file not a hard copy",
+        "ask Tomás to send me his year 10 scheme of work, the pdf not a printout",
+        "could you get Tomás to send me his yr9 lesson plan, the file not a printout",
+    ],
+)
+def test_the_owners_file_is_forwarded(text: str) -> None:
+    assert _moves(_frame(text)) == [("send_file", "file", "tomas", "bea")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "get Tomás to send me his yr10 field guide please, not a printout",
+        "get Tomás to send me his yr10 field guide would you",
+    ],
+)
+def test_an_unnamed_thing_with_no_kind_chosen_is_asked_never_printed(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "item"),
+    [
+        ("bring me scissors, not the board marker", "scissors"),
+        ("a board marker, not scissors", "board_marker"),
+        ("can I have a board marker please? not a torch", "board_marker"),
+    ],
+)
+def test_the_thing_rejected_is_never_fetched(text: str, item: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", item, None, "bea")]
+
+
+async def test_the_file_is_forwarded_and_nothing_printed() -> None:
+    run = await run_instruction(
+        field_centre(),
+        "bea",
+        "get Tomás to send me his yr10 field guide would you, the file not a printout",
+    )
+    assert run.stm.trace.outcome == "done"
+    assert ("bea", "file:tomas") in run.sim.world.received
+    assert not run.sim.world.printed and not run.sim.world.made

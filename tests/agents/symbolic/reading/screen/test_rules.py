@@ -13,6 +13,7 @@ def test_the_rules_in_priority_order() -> None:
         "note",
         "exclusion",
         "exclusion",  # "not her camera" after one colleague was named
+        "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",
         "thanks",
         "condition",

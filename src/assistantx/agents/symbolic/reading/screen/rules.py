@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.condition import condition
+from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
@@ -40,6 +41,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("note", note),
     ("exclusion", exclusion),
     ("exclusion", pronoun_exclusion),
+    ("statement", contrast),
     ("wish", wish),
     ("thanks", thanks),
     ("condition", condition),
