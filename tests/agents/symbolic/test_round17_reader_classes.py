@@ -11,6 +11,7 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import DEFAULT_OFFICE, load_office
 from assistantx.core.task_schema import TaskFrame
 from helpers.field_centre import field_centre
 
@@ -60,6 +61,22 @@ def test_an_unsafe_act_is_declined_with_its_reason(text: str) -> None:
 )
 def test_a_torch_asked_for_is_still_fetched(text: str, moves: list[tuple[str, ...]]) -> None:
     assert _moves(_frame(text)) == moves
+
+
+@pytest.mark.parametrize(
+    ("text", "heats"),
+    [
+        ("please microwave my lunch box", True),
+        ("my lunch is in the fridge, microwave it please", True),
+        ("microwave Chen's stapler", False),
+    ],
+)
+def test_microwaving_is_the_offices_service_only_on_what_it_heats(text: str, heats: bool) -> None:
+    frame = InstructionParser(load_office(DEFAULT_OFFICE)).parse_with_answers(text, "mao", [])
+    if heats:
+        assert [(t.kind, t.item) for t in frame.tasks] == [("heat", "lunch")]
+    else:
+        assert frame.tasks == [] and frame.decline is not None and "danger" in frame.decline
 
 
 def test_a_negated_unsafe_act_moves_nothing() -> None:
