@@ -345,6 +345,11 @@ def test_mine_with_no_kind_named_is_asked_never_printed() -> None:
     [
         ("put my worksheet through repro for Hattie", [("print", "file", "bea", "hattie")]),
         ("take my hole punch to Hattie", [("transfer", "hole_punch", "bea", "hattie")]),
+        (
+            "Could you bring me a hole punch? Mine just died.",
+            [("transfer", "hole_punch", None, "bea")],
+        ),
+        ("mine's broken, could you get me a hole punch", [("transfer", "hole_punch", None, "bea")]),
     ],
 )
 def test_a_service_asked_at_the_room_and_my_named_item_are_read_as_before(

@@ -189,11 +189,9 @@ _SUBJECT_VERBS = frozenset({"s", "is", "was", "has", "had", "does", "did", "will
 
 
 def _subject(after: str) -> bool:
-    """Whether the words after "mine" make it the subject of a verb ("mine ran out")."""
-    words = language.words(after)
-    if not words:
-        return False
-    return words[0] in _SUBJECT_VERBS or language.is_finite_verb(words[0])
+    """Whether the words after "mine" make it the subject of a verb ("mine ran out", "mine
+    just died": an adverb may stand between)."""
+    return any(w in _SUBJECT_VERBS or language.is_finite_verb(w) for w in language.words(after)[:2])
 
 
 def name_pronouns(
