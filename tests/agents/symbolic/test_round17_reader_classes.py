@@ -108,6 +108,7 @@ async def test_the_banner_is_never_fetched_to_be_burnt() -> None:
         "could I get a hi-vis vest, I'm subbing for Fenella",
         "Fenella asked me to lead the walk so could I get a hi-vis vest",
         "Fenella is off so I'm leading the walk, can I get a hi-vis vest?",
+        "covering the river walk for Fenella and the hi-vis vests are all missing, can I get one",
     ],
 )
 def test_the_person_stood_in_for_is_context_and_the_requester_gets_it(text: str) -> None:
@@ -133,6 +134,13 @@ def test_a_recipient_named_for_the_thing_still_gets_it(text: str) -> None:
         "I'm standing in for Fenella this afternoon",
     ],
 )
+@pytest.mark.parametrize(
+    "text", ["looking for a hole punch, can you help", "needing a hole punch please"]
+)
+def test_a_participle_about_a_thing_still_asks_for_it(text: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", "hole_punch", None, "bea")]
+
+
 def test_standing_in_said_alone_moves_nothing(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == [] and frame.question is None

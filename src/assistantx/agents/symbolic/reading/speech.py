@@ -542,19 +542,27 @@ class SpeechActs:
         )
 
     # -- helpers -------------------------------------------------------------------------
+    def _names_item(self, w: list[str]) -> bool:
+        """Whether the words name one of the office's items (a phrase of up to three words)."""
+        return any(
+            " ".join(w[n : n + k]) in self.lex.items for n in range(len(w)) for k in (1, 2, 3)
+        )
+
     def _doing_clause(self, w: list[str]) -> bool:
         """A piece that opens with a present participle no errand asks for, its subject left
         out ("covering the river walk for Fen", "standing in for Fen today", "running late"):
         what the speaker is doing, the reason for a request, never one. A person named in it
         ("for Fen") is context, not the one the request's thing goes to. An errand's own
         participle ("bringing me a pen would be great", "printing my slides") is no such
-        clause."""
+        clause, nor one about a thing of the office ("looking for a hole punch")."""
         first = w[0]
         if not first.endswith("ing") or first in self.lex.items or self._named(first):
             return False
         lemmas = language.verb_lemmas(first)
         if not lemmas or first in lemmas or lemmas & self.lex.cue_words:
             return False  # no verb, a plain verb ("swing by ..."), or an errand's own verb
+        if self._names_item(w):
+            return False  # "looking for a hole punch": about a thing, read as before
         return not _asks_after_reason(w)  # "standing in for Fen so could I get a vest"
 
     def _ability_only(self, w: list[str]) -> bool:
