@@ -12,6 +12,8 @@ words alone (never from a reasoner's reading), by the position of the name:
   the reader reads the recipient with);
 - right after a giving verb, in any of its forms: "bring Hal a thermometer", "lent Hal ...";
 - as a doer: "by Hal", "get Hal to sign", "Hal to sign it";
+- asked to be given it: "could Hal have a thermometer?", "Hal could do with one"
+  (``core.asked_to_have``, the rule the reader reads the recipient with);
 - a pronoun in one of those places ("take her my ice pack") when exactly one person the
   requester named is neither an owner ("May's ice pack") nor the requester;
 - a reply in their own chat that is just a name ("Hal Brooks.", "to Hal, please"): the
@@ -37,6 +39,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core import english, language
+from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.name_reading import NameSlot, is_word_name, read_name
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
@@ -258,6 +261,8 @@ def _receiving(
         return True
     if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
         return True
+    if asked_to_have(before, [w.folded for w in words[end : end + 3]]):
+        return True  # "could Linh have a stapler?", "Linh could do with one"
     nxt = words[end + 1].folded if end + 1 < len(words) else ""
     return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
 

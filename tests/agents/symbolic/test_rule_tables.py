@@ -28,6 +28,8 @@ def _site(
         kw.get("subject", False),
         then,
         kw.get("obliged", False),
+        kw.get("stood_in_for", False),
+        kw.get("to_have", False),
     )
 
 
@@ -50,10 +52,18 @@ PERSON_CASES = [
         _site("", nxt="needs", then="to", subject=True, obliged=True),
         "Zhang has to / must sign: the doer",
     ),
+    (
+        _site("could", nxt="have", subject=True, to_have=True),
+        "could Min have / let Min borrow scissors: the one asked for receives",
+    ),
     (_site("", nxt="needs", subject=True), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),
     (_site("by"), "by Wang: the doer"),
     (_site("to", back=True), "back to Wang: the owner, given back"),
+    (
+        _site("for", stood_in_for=True),
+        "covering for Fen, standing in for Fen: why the speaker asks, not a recipient",
+    ),
     (_site("to"), "to / for / with Wang: the recipient"),
     (_site("get", nxt="to"), "Wang to sign, ask Wang: the doer"),
     (_site("ask"), "Wang to sign, ask Wang: the doer"),

@@ -109,11 +109,15 @@ def _sign(s: Scene) -> Task:
     # "take it to Wang to sign": whom it goes to signs, never the requester it comes back to
     to = [p for p in s.roles.recipient if p != s.requester]
     actor = next(iter(s.roles.actor + s.roles.bare + to), None) or _work_of(s)
+    # the signed paper comes back to the requester, unless someone else is named to get it
+    # after the signer ("to Wang for a signature and then on to Hal": Hal)
+    onward = [p for p in to if p != actor]
+    back = s.requester if actor in s.roles.recipient else s.recipient
     return Task(
         kind=person_work(s.cues) or "sign",
         item=s.doc.id if s.doc else None,
         owner=s.owner(s.doc) or s.requester,
-        recipient=s.requester if actor in s.roles.recipient else s.recipient,
+        recipient=onward[-1] if onward and actor in s.roles.recipient else back,
         actor=actor,
     )
 
@@ -436,7 +440,9 @@ class TaskReader:
         # to a facility that renders files asks for that rendering (which of the office's
         # renderings, the facility's own: operations.py)
         rendered = any(
-            word_before(m) in _TO_FACILITY | _THROUGH and "render" in shapes(m)
+            word_before(m) in _TO_FACILITY | _THROUGH
+            and "render" in shapes(m)
+            and not persons_place(m)  # "to Hattie in repro": where she is, not its service
             for m in facilities_said
         )
         if rendered and not items and self.file:
@@ -447,6 +453,7 @@ class TaskReader:
                 for a, m in itertools.pairwise(clause.mentions)
                 if a.kind == "self"
                 and a.possessive
+                and a.text.lower() != "mine"  # "mine down to ...": no noun follows "mine"
                 and a.end == m.start
                 and m.kind == "word"
                 and language.is_noun(m.ids[0] if m.ids else "")

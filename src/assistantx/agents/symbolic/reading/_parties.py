@@ -14,8 +14,10 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
+from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language, task_kinds
+from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.receiving_place import (
     PLACE_WORDS,
     names_receiving_place,
@@ -95,6 +97,8 @@ class PersonSite:
     subject: bool = False  # a finite verb follows: "Rich asked", "Hal said"
     then: str = ""  # the word after the next one ("it" in "Rich wants it")
     obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
+    stood_in_for: bool = False  # "covering chem for Zhang": whom the speaker stands in for
+    to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
 
     @property
     def at_place(self) -> bool:
@@ -153,6 +157,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     ),
     PersonRule("Zhang has to / must sign: the doer", lambda s: s.obliged, "actor"),
     PersonRule(
+        "could Min have / let Min borrow scissors: the one asked for receives",
+        lambda s: s.to_have and not s.possessive,
+        "recipient",
+    ),
+    PersonRule(
         "Min needs / gets scissors: the one in need receives",
         lambda s: s.nxt in _NEEDS,
         "recipient",
@@ -161,6 +170,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule("by Wang: the doer", lambda s: s.prev == "by", "actor"),
     PersonRule(
         "back to Wang: the owner, given back", lambda s: s.prev == "to" and s.back, "returned"
+    ),
+    PersonRule(
+        "covering for Fen, standing in for Fen: why the speaker asks, not a recipient",
+        lambda s: s.stood_in_for,
+        "context",
     ),
     PersonRule("to / for / with Wang: the recipient", lambda s: s.prev in _TO, "recipient"),
     PersonRule(
@@ -190,6 +204,11 @@ def person_rule(site: PersonSite) -> PersonRule:
     return next(r for r in PERSON_RULES if r.applies(site))
 
 
+def _next_item_start(ms: list[Mention], n: int, default: int) -> int:
+    """Where the first item named after mention ``n`` starts ("could Min have a *stapler*")."""
+    return next((x.start for x in ms[n + 1 :] if x.kind == "item"), default)
+
+
 def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
     m = ms[n]
     site = PersonSite(
@@ -201,6 +220,11 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         subject=m.end < len(tokens) and language.is_finite_verb(tokens[m.end].word),
         then=tokens[m.end + 1].word if m.end + 1 < len(tokens) else "",
         obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
+        stood_in_for=stands_in_for([t.word for t in tokens], m.start - 1),
+        to_have=asked_to_have(
+            tokens[m.start - 1].word if m.start > 0 else "",
+            [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
+        ),
     )
     match person_rule(site).slot:
         case "recipient":

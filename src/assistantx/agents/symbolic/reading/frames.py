@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language, task_kinds
+from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
 from assistantx.core.wording import file_noun
@@ -432,6 +433,10 @@ def _said_to_have(lexed: Lexed, at: int) -> str | None:
     )
     if person is None or person.kind != "person" or person.possessive or len(person.ids) != 1:
         return None
+    tokens = lexed.tokens
+    before = tokens[person.start - 1].word if person.start > 0 else ""
+    if asked_to_have(before, [t.word for t in tokens[person.end : item.start]]):
+        return None  # "could Nkechi have a stapler": she is to get one, not lend hers
     between = [t.word for t in lexed.tokens[person.end : item.start]]
     if not between or between[0] not in _HAVE:
         return None

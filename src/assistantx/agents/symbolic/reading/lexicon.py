@@ -467,7 +467,8 @@ class Lexicon:
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
         if w in self.cue_words and (
-            self._noun_use(tokens, i) or event_noun(tokens, i, self.operation_words)
+            self._noun_use(tokens, i)
+            or (event_noun(tokens, i, self.operation_words) and not self._work_asked(tokens, i))
         ):
             return Mention("word", i, i + 1, (w,), t.possessive, t.text)  # "the print run"
         if w in self.cue_words:
@@ -476,6 +477,13 @@ class Lexicon:
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
+
+    def _work_asked(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "to Ines for a signature", "for the countersignature": a person's work named as
+        what the thing goes to them for, a request for that work (its doer is whom it goes
+        to), not an event ("after the print run")."""
+        work = {w for k in task_kinds.person_kinds() for w in self.cues.get(k, ())}
+        return tokens[i].word in work and i >= 2 and tokens[i - 2].word == "for"
 
     def _noun_use(self, tokens: Sequence[Token], i: int) -> bool:
         """ "for the printing job", "my rebind queue": a service's verb between a determiner

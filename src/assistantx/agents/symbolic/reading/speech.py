@@ -89,6 +89,7 @@ _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
 _NEGATIONS = english.words("statement_negations")
+_SO = frozenset({"so", "then"})  # a reason, then the request it leads to
 # Words that open how a task would be done, not on what: "print *in* colour", "copy *double*-sided"
 _MANNER = english.words("manner_openers")
 _WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
@@ -499,6 +500,10 @@ class SpeechActs:
             )  # "I'll get it myself"
         if w[0] in _SUBJECT_VERB:
             return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."
+        if self._doing_clause(w):
+            return True  # "covering the river walk for Fen": what the speaker is doing
+        if _asks_after_reason(w):
+            return False  # "Fen asked me to lead the walk so could I get a vest"
         if (
             w[0] not in self.lex.cue_words
             and w[0] not in self.lex.items  # "scissors please": the thing asked for
@@ -569,6 +574,29 @@ class SpeechActs:
         )
 
     # -- helpers -------------------------------------------------------------------------
+    def _names_item(self, w: list[str]) -> bool:
+        """Whether the words name one of the office's items (a phrase of up to three words)."""
+        return any(
+            " ".join(w[n : n + k]) in self.lex.items for n in range(len(w)) for k in (1, 2, 3)
+        )
+
+    def _doing_clause(self, w: list[str]) -> bool:
+        """A piece that opens with a present participle no errand asks for, its subject left
+        out ("covering the river walk for Fen", "standing in for Fen today", "running late"):
+        what the speaker is doing, the reason for a request, never one. A person named in it
+        ("for Fen") is context, not the one the request's thing goes to. An errand's own
+        participle ("bringing me a pen would be great", "printing my slides") is no such
+        clause, nor one about a thing of the office ("looking for a hole punch")."""
+        first = w[0]
+        if not first.endswith("ing") or first in self.lex.items or self._named(first):
+            return False
+        lemmas = language.verb_lemmas(first)
+        if not lemmas or first in lemmas or lemmas & self.lex.cue_words:
+            return False  # no verb, a plain verb ("swing by ..."), or an errand's own verb
+        if self._names_item(w):
+            return False  # "looking for a hole punch": about a thing, read as before
+        return not _asks_after_reason(w)  # "standing in for Fen so could I get a vest"
+
     def _ability_only(self, w: list[str]) -> bool:
         """ "print in colour", "copy double-sided", "scan": a task verb with no object, only
         a manner or nothing after it, so nothing of the office to act on."""
@@ -656,3 +684,9 @@ class SpeechActs:
                 return True
             k += 1
         return False
+
+
+def _asks_after_reason(w: list[str]) -> bool:
+    """Whether a request follows a reason in one piece: "so" or "then" right before a
+    request modal or marker ("... so could I get a vest", "... so please bring one")."""
+    return any(a in _SO and (b in _MODALS or b in _WILLING) for a, b in itertools.pairwise(w))

@@ -13,10 +13,12 @@ def test_the_rules_in_priority_order() -> None:
         "note",
         "exclusion",
         "exclusion",  # "not her camera" after one colleague was named
+        "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",
         "thanks",
         "condition",
         "negated",
+        "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "destructive",
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")

@@ -14,6 +14,8 @@ exclusion       "not from Wang though", "not Chen's"                            
 wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
 thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
 negated         "don't bring me ...", "no need to print ..."                        drops piece
+unsafe          "set light to Reed's banner", "set off the fire alarm", "torch      declines
+                Reed's banner" (not "bring me a torch")
 destructive     "throw away Wang's stapler", "hide ...", "get rid of ...",          declines
                 "chuck Reed's clipboard in the skip" (any verb, a waste container)
 unplaced        "stick Reed's clipboard in the van": a verb that is no errand, to   asks what
@@ -57,8 +59,8 @@ removed from the original text by their character spans, never re-joined, so wha
 parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``wish``,
-``thanks``, ``condition``, ``negation``, ``destructive``, ``placement``, ``elliptical``, ``fact``,
-``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
+``thanks``, ``condition``, ``negation``, ``unsafe``, ``destructive``, ``placement``, ``elliptical``,
+``fact``, ``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
 ``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
 reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
 screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:

@@ -23,6 +23,7 @@ class English:
     negators: tuple[tuple[str, ...], ...]
     negation_fillers: frozenset[str]
     destructive: tuple[tuple[str, ...], ...]
+    unsafe_acts: tuple[tuple[str, ...], ...]  # fire, false alarms: a danger, never done
     waste_containers: tuple[
         tuple[str, ...], ...
     ]  # "the skip": putting a thing there disposes of it
@@ -64,6 +65,7 @@ def english() -> English:
         negators=phrases("negators"),
         negation_fillers=word_set("negation_fillers"),
         destructive=phrases("destructive"),
+        unsafe_acts=phrases("unsafe_acts"),
         waste_containers=phrases("waste_containers"),
         copulas=phrases("copulas"),
         away=phrases("away"),

@@ -16,6 +16,21 @@ from assistantx.agents.symbolic.reading.speech_acts import Acts
 
 # A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
 _SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
+# A tag question closing a statement ("Robin's got a spare one hasn't he?", "... isn't it?"):
+# a negated auxiliary and a pronoun, said to have the statement confirmed. It asks nothing of
+# its own, so its question mark does not make the statement a question: what the statement
+# says (who has the thing) stays context for the request beside it.
+_TAG_AUXILIARIES = frozenset(
+    {"hasnt", "havent", "isnt", "arent", "doesnt", "dont", "didnt", "wasnt", "werent", "wont"}
+)
+_TAG_PRONOUNS = frozenset({"he", "she", "they", "it", "we", "i", "you"})
+
+
+def tag_question(words: list[str]) -> bool:
+    """Whether a sentence ends in a tag question after a statement of its own."""
+    return len(words) > 3 and words[-2] in _TAG_AUXILIARIES and words[-1] in _TAG_PRONOUNS
+
+
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
 
 
@@ -72,8 +87,10 @@ def pieces(
             piece_text = chunk.strip()
             if piece_text:
                 start = sentence_start + sub + lead
-                asks = b is None and m is not None and "?" in m.group(0)  # its last part
                 words = split_words(piece_text)
+                asks = (  # its last part
+                    b is None and m is not None and "?" in m.group(0) and not tag_question(words)
+                )
                 out.append(
                     Piece(
                         piece_text,

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -36,7 +37,11 @@ def rewrite(
         for h in hints
         if h.kind == "condition" and h.item_type and h.value != "not wanted"
     ]
-    stated = [c for c in context if not c.startswith(("person:", "product:"))]
+    chosen = [c.removeprefix(CHOSEN) for c in context if c.startswith(CHOSEN)]
+    if chosen:
+        text, found = chosen_kind(terms, text, chosen[-1])
+        evidence += found
+    stated = [c for c in context if not c.startswith(("person:", "product:", CHOSEN))]
     products = [c.removeprefix("product:") for c in context if c.startswith("product:")]
     said += stated
     if said and not terms.names_an_item(text):
@@ -64,6 +69,33 @@ def rewrite(
             text, found = container_of(terms, text, thing)
             evidence += found
     return text, evidence
+
+
+# "his yr9 scheme of work would you": a possessive, then up to six words to the clause's end
+_OWN_THING = re.compile(
+    r"\b(my|his|her|their|our|\w+['’]s)\s+((?:[\w-]+\s+){0,5}?[\w-]+)"
+    r"(?=\s*(?:[,.!?;]|$|\s+(?:would you|could you|will you|please|thanks|for me|to me|asap|"
+    r"today|now)\b))",
+    re.IGNORECASE,
+)
+
+
+def chosen_kind(terms: Terms, text: str, item: str) -> tuple[str, list[Evidence]]:
+    """ "get José to send me his yr9 scheme of work, the file not a printout": a thing of
+    someone's the office has no word for, beside a contrast that chose one of the office's
+    kinds, is that kind ("his electronic file"); a request that names an item keeps it."""
+    if terms.names_an_item(text):
+        return text, []
+    for match in _OWN_THING.finditer(text):
+        words = match.group(2)
+        tokens = terms.lex.tokens(words)
+        if any(m.kind != "word" for m in terms.lex.scan(tokens)):
+            continue  # a person, a place, a service: not an unnamed thing
+        name = terms.office.item_type(item).name
+        said = f"{match.group(1)} {name}"
+        evidence = [Evidence(words=match.group(0), meaning=said)]
+        return text[: match.start()] + said + text[match.end() :], evidence
+    return text, []
 
 
 def kept_things(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
@@ -114,9 +146,9 @@ def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidenc
 
 def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
     """ "lend him mine", "give him Rich's", "borrow Priya's for me": a possessive with no
-    item after it (the clause ends, or whom it is for, "back" or "over" follows) means the
-    item named last before it (in what is left, else in the whole message); "for the exam"
-    after it is a purpose, which leaves it alone."""
+    item after it (the clause ends, or whom it is for, "back" or "over" follows; "mine"
+    anywhere) means the item named last before it (in what is left, else in the whole
+    message); "for the exam" after "Rich's" is a purpose, which leaves it alone."""
     evidence: list[Evidence] = []
 
     def last_item(before: str) -> str | None:
@@ -131,6 +163,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         owner = re.sub(r"['’]s$", "", word)
         if word.lower() != "mine" and not terms.is_person_word(owner):
             return word
+        if word.lower() == "mine" and _subject(text[match.end() :]):
+            return word  # "mine ran out in June": what it says of mine, not an object
         thing = last_item(text[: match.start()])
         if thing is None:
             return word
@@ -138,12 +172,26 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         evidence.append(Evidence(words=word, meaning=said))
         return said
 
+    # "mine" is never followed by its noun, so wherever it stands ("take mine down to Hattie
+    # in repro", with "her" already named back) it is the requester's own item of the kind
+    # named last; "Rich's" is a possessive only where no noun can follow it
     pattern = re.compile(
-        r"(?<!\bof\s)\b(mine|\w+['’]s)(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|and|or|"
-        r"for now|for a bit|for today|(?:for|to) (?:me|us|him|her|them)|back|over)\b))",
+        r"(?<!\bof\s)\b(mine\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
+        r"and|or|for now|for a bit|for today|(?:(?:down|up|over|round|across)\s+)?(?:for|to) "
+        r"(?:me|us|him|her|them)|back|over)\b)))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
+
+
+# what follows a subject: "mine's broken", "mine is", "mine ran out"
+_SUBJECT_VERBS = frozenset({"s", "is", "was", "has", "had", "does", "did", "will", "wont"})
+
+
+def _subject(after: str) -> bool:
+    """Whether the words after "mine" make it the subject of a verb ("mine ran out", "mine
+    just died": an adverb may stand between)."""
+    return any(w in _SUBJECT_VERBS or language.is_finite_verb(w) for w in language.words(after)[:2])
 
 
 def name_pronouns(

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.condition import condition
+from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
@@ -27,6 +28,7 @@ from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.wish import wish
@@ -40,10 +42,12 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("note", note),
     ("exclusion", exclusion),
     ("exclusion", pronoun_exclusion),
+    ("statement", contrast),
     ("wish", wish),
     ("thanks", thanks),
     ("condition", condition),
     ("negated", negated),
+    ("destructive", unsafe),
     ("destructive", destructive),
     ("unplaced", unplaced),
     ("statement", elliptical_reason),

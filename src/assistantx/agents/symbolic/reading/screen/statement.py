@@ -211,13 +211,13 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
         if before is not None and before.kind == "self" and before.possessive:
             whose = "my"
         elif before is not None and before.kind == "person" and before.possessive:
-            whose = f"{terms.office.person(before.ids[0]).name}'s"
+            whose = _whose_name(terms, before)
         elif before is not None and before.kind == "pronoun" and before.possessive:
             people = {p.ids for p in mentions[:n] if p.kind == "person" and len(p.ids) == 1}
             if len(people) == 1:  # "Yang said I could borrow his book"
                 whose = f"{terms.office.person(next(iter(people))[0]).name}'s"
         elif (holder := holder_of(mentions, n, words)) is not None:
-            whose = f"{terms.office.person(holder).name}'s"  # "Bram has a stopwatch"
+            whose = _whose_name(terms, holder)  # "Bram has a stopwatch"
         else:
             for k in range(len(words) - 1):
                 if words[k : k + 2] == ["belongs", "to"]:
@@ -231,12 +231,23 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
 _POSSESSION_VERBS = english_words("possession_verbs")
 
 
-def holder_of(mentions: Sequence[Mention], n: int, words: list[str]) -> str | None:
+def holder_of(mentions: Sequence[Mention], n: int, words: list[str]) -> Mention | None:
     """The one person a statement says has the item ``mentions[n]`` ("Bram has a stopwatch",
-    "Femi's got a spare radio"): a later "it" is theirs, not another of its kind."""
-    people = [m for m in mentions[:n] if m.kind == "person" and len(m.ids) == 1]
+    "Femi's got a spare radio"): a later "it" is theirs, not another of its kind. The mention
+    may name several people ("Robin" where two are called Robin): who is meant is asked."""
+    people = [m for m in mentions[:n] if m.kind == "person"]
     if len(people) != 1:
         return None
     between = words[people[0].end : mentions[n].start]
     verb = between[:1] if not people[0].possessive else ["has"]  # "Femi's got": has got
-    return people[0].ids[0] if verb and verb[0] in _POSSESSION_VERBS else None
+    return people[0] if verb and verb[0] in _POSSESSION_VERBS else None
+
+
+def _whose_name(terms: Terms, person: Mention) -> str:
+    """The owner a statement names, for the rewritten request: the person's full name, or,
+    where the name is several people's ("Robin's" with two Robins), the name as written, so
+    the readings ask which one is meant; never dropped, which would make it anyone's."""
+    if len(person.ids) == 1:
+        return f"{terms.office.person(person.ids[0]).name}'s"
+    said = person.text.strip()
+    return said if said.lower().endswith(("'s", "’s")) else f"{said}'s"

@@ -1,0 +1,37 @@
+"""Asked to have: "could Nkechi have a pair of scissors?", "can Linh borrow a hole punch?",
+"let Linh have the torch", "Linh could do with a hole punch". The person named is to be given
+the thing, through the requester: they are its recipient, and whose thing it is stays open
+(anyone's, its owner asked), never theirs. "Could I have Tomás's hole punch?" borrows Tomás's:
+the requester is the one to have it, the possessive names the owner.
+
+The reader (``agents.symbolic.reading._parties``, ``frames``) and the runtime's consent guard
+(``runtime.recipients``) decide with this one function, so the guard lets the hand-over the
+reader planned go to the person named. The words: a request modal ("could", "can", "may") or
+"let" right before the name and a verb of having or borrowing right after it ("could Linh get
+me ..." makes Linh the one who gets it for the requester, not a recipient; "let Linh get one"
+does); or the name, then "could do with"."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.core import english
+
+_ASKING = english.words("request_modals") | {"let"}
+_HAVING = frozenset({"have", "borrow", "get"})
+_DO_WITH = (["could", "do", "with"], ["can", "do", "with"])
+# "could Marguerite have a look at my form": a preposition before the thing makes it what an
+# activity is about, not what is given.
+_ABOUT = frozenset({"at", "on", "over", "through", "about", "into", "for", "to"})
+
+
+def asked_to_have(before: str, after: Sequence[str]) -> bool:
+    """Whether the person named between the folded word ``before`` and the words ``after``
+    (up to the thing asked for) is asked to be given it."""
+    if list(after[:3]) in _DO_WITH:
+        return True
+    if before not in _ASKING or not after or after[0] not in _HAVING:
+        return False
+    if after[0] == "get" and before != "let":
+        return False  # "could Linh get me one": Linh gets it for the requester
+    return not any(w in _ABOUT for w in after[1:])
