@@ -68,6 +68,10 @@ _ALIAS_ARTICLES = frozenset({"the", "our"})
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
+# "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
+_EVERYDAY = english.phrase_table("everyday_names")
+# What makes one of those names that is also a verb ("brew") a thing: an article before it
+_THING_ARTICLES = frozenset({"a", "an", "another", "the", "some", "quick", "nice", "proper"})
 
 
 @dataclass(frozen=True)
@@ -112,6 +116,8 @@ class Lexicon:
     cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
     cue_words: frozenset[str] = frozenset()
     operation_words: frozenset[str] = frozenset()  # every form of the office's own verbs
+    # everyday names of the office's things ("brew" for its tea) that are also generic verbs
+    everyday_verbs: frozenset[str] = frozenset()
     vocabulary: list[str] = field(default_factory=list)
     _vocabulary_set: frozenset[str] = frozenset()
     # "the manager": a title that stands in someone's alias ("Manager Mao") names them
@@ -183,6 +189,7 @@ class Lexicon:
                     continue
                 for variant in (key, _plural(key)):
                     lex.items.setdefault(variant, t.id)
+        lex.everyday_verbs = lex._everyday_names(office, ops)
         for f in office.facilities:
             for name in (f.name, *f.synonyms, f.id.replace("_", " ")):
                 key = key_of(name)
@@ -202,6 +209,31 @@ class Lexicon:
         lex._vocabulary_set = frozenset(lex.vocabulary)
         lex.operation_nouns = operation_nouns(office, lex._known)
         return lex
+
+    def _everyday_names(self, office: Office, verbs: set[str]) -> frozenset[str]:
+        """Adds the everyday names of the office's things ("a cuppa", "a brew" for its tea)
+        as names of them, after the office's own names; a name that is a verb of one of the
+        office's operations (a "brew" coffee service) stays that verb. Returns the names
+        added that are also generic verbs, read as the thing only after an article."""
+        verb_names: set[str] = set()
+        taken = {*self.items, *self.people, *self.name_words, *self.facilities}
+        for t in office.item_types:
+            for name in (t.name, *t.synonyms):
+                for said in _EVERYDAY.get(key_of(name), ()):
+                    key = key_of(said)
+                    if not key or key in verbs or key in taken:
+                        continue
+                    for variant in (key, _plural(key)):
+                        self.items.setdefault(variant, t.id)
+                        if any(variant in words for words in CUES.values()):
+                            verb_names.add(variant)
+        return frozenset(verb_names)
+
+    def _thing_named(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "make me a brew": an everyday name that is also a generic verb, after an article."""
+        return tokens[i].word in self.everyday_verbs and (
+            i > 0 and tokens[i - 1].word in _THING_ARTICLES
+        )
 
     def _declare(self, person: str, words: list[str]) -> None:
         """Record how a name or alias of ``person`` is written: a bare word ("Kim"), a title
@@ -398,7 +430,8 @@ class Lexicon:
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
             if phrase in self.places and not in_verb_slot:
                 return Mention("place", start, end, (self.places[phrase],), poss, text), n
-            if phrase in self.items and not (n == 1 and phrase in self.cue_words):
+            verb_only = n == 1 and phrase in self.cue_words and not self._thing_named(tokens, start)
+            if phrase in self.items and not verb_only:
                 return Mention("item", start, end, (self.items[phrase],), poss, text), n
         return None
 
@@ -444,6 +477,8 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
+        if self._thing_named(tokens, i):  # "a brew": the office's tea
+            return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         if w in self.cue_words and (
             self._noun_use(tokens, i) or event_noun(tokens, i, self.operation_words)
         ):
