@@ -110,3 +110,26 @@ def raw_playschool() -> dict[str, Any]:
 
 
 playschool = ob.parsed(raw_playschool)
+
+
+def raw_playschool_with_vat() -> dict[str, Any]:
+    """The school with the urn also making coffee and a dye vat in the props workshop that
+    dyes costumes (the vat also just "the vat"): a reason clause may name either."""
+    raw = raw_playschool()
+    raw["item_types"] += [ob.item("coffee", "coffee", "product"), ob.item("costume", "costume")]
+    raw["operations"] += [
+        ob.operation("coffee", name="make coffee", product="coffee"),
+        ob.operation("dye", "dye", input="costume"),
+    ]
+    urn = next(f for f in raw["facilities"] if f["id"] == "urn")
+    urn["operations"].append("coffee")
+    urn["products"].append("coffee")
+    raw["facilities"].append(
+        ob.facility(
+            "vat", "dye vat", at="props_room", guards=["jun"], operations=["dye"], synonyms=["vat"]
+        )
+    )
+    return raw
+
+
+playschool_with_vat = ob.parsed(raw_playschool_with_vat)
