@@ -103,3 +103,33 @@ def test_an_office_whose_verb_is_brew_keeps_it() -> None:
     frame = parser.parse("could you brew me a coffee", "ada")
     assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "coffee")]
     assert parser.lex.items.get("brew") != "tea"
+
+
+def _with_tea_named(*teas: tuple[str, str]) -> InstructionParser:
+    raw = raw_playschool()
+    raw["item_types"] = [t for t in raw["item_types"] if t["id"] != "tea"]
+    raw["item_types"] += [ob.item(type_id, name, "product") for type_id, name in teas]
+    urn = raw["facilities"][0]
+    urn["operations"] = []
+    urn["products"] = []
+    raw["operations"] = [o for o in raw["operations"] if o["id"] != "tea"]
+    for type_id, name in teas:
+        raw["operations"].append(
+            ob.operation(f"make_{type_id}", name=f"make {name}", product=type_id)
+        )
+        urn["operations"].append(f"make_{type_id}")
+        urn["products"].append(type_id)
+    return InstructionParser(ob.parsed(lambda: raw)())
+
+
+def test_a_tea_named_by_a_longer_name_is_still_the_brew() -> None:
+    parser = _with_tea_named(("cuppa_tea", "builder's tea"))
+    frame = parser.parse("could you make me a brew? milk no sugar", "ada")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "cuppa_tea")], frame
+
+
+def test_of_two_teas_a_brew_is_neither() -> None:
+    parser = _with_tea_named(("green_tea", "green tea"), ("mint_tea", "mint tea"))
+    assert "brew" not in parser.lex.items and "cuppa" not in parser.lex.items
+    frame = parser.parse("could you make me a brew?", "ada")
+    assert frame.tasks == [], frame

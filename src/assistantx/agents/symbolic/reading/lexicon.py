@@ -217,9 +217,17 @@ class Lexicon:
         added that are also generic verbs, read as the thing only after an article."""
         verb_names: set[str] = set()
         taken = {*self.items, *self.people, *self.name_words, *self.facilities}
+        names = {t.id: {key_of(n) for n in (t.name, *t.synonyms)} for t in office.item_types}
+        heads: dict[str, set[str]] = {}  # "cup of tea", "builder's tea": their "tea"
+        for type_id, keys in names.items():
+            for key in keys:
+                heads.setdefault(key.split()[-1] if key else "", set()).add(type_id)
         for t in office.item_types:
-            for name in (t.name, *t.synonyms):
-                for said in _EVERYDAY.get(key_of(name), ()):
+            own = set(names[t.id])
+            # its own name, or a head noun no other thing of the office has
+            own |= {k.split()[-1] for k in own if k and heads.get(k.split()[-1]) == {t.id}}
+            for name in sorted(own):
+                for said in _EVERYDAY.get(name, ()):
                     key = key_of(said)
                     if not key or key in verbs or key in taken:
                         continue
