@@ -30,6 +30,7 @@ def test_the_speakers_own_absence_moves_nothing(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == [] and frame.question is None, frame
     assert frame.decline is not None and "did nothing" in frame.decline
+    assert "bring it then" not in frame.decline  # told, not a need for later
 
 
 @pytest.mark.parametrize(
