@@ -25,6 +25,9 @@ _NOTHING_TO_ADD = "Sorry, I don't know more than I wrote."
         "prep room is miles away from S4 and I've got no free, could Luke make up a kit for my "
         "practical?",
         "could Luke make up a practical kit for me",
+        "prep room is Miles away from S4 and I've got no free, could Luke make up a kit for my "
+        "practical?",
+        "the prep room is Miles away, could Luke make up a kit for me",
         "the prep room is miles from here, can Luke make up a kit for me please",
         "I've got a practical in S4 and a penny for every time I've asked... could Luke make "
         "up a kit?",
@@ -36,6 +39,23 @@ def test_a_kit_is_made_for_the_requester(text: str) -> None:
     assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
         ("produce", "practical_kit", "ada")
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "owner", "recipient"),
+    [
+        ("Miles is away, bring his stapler to me", "miles", "ada"),
+        ("Penny is Miles away from here, bring me Rory's stapler", "rory", "ada"),
+    ],
+)
+def test_miles_as_a_subject_is_still_the_colleague(text: str, owner: str, recipient: str) -> None:
+    frame = _frame(text)
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("stapler", owner, recipient)]
+
+
+def test_is_miles_away_asks_rather_than_guesses() -> None:
+    frame = _frame("is Miles away today? bring him Rory's stapler")
+    assert frame.tasks == [] and frame.question is not None
 
 
 def test_a_named_colleague_is_still_the_colleague() -> None:

@@ -68,6 +68,8 @@ _ALIAS_ARTICLES = frozenset({"the", "our"})
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
+# The copulas of a distance ("the lab is miles away")
+_DISTANCE_COPULAS = frozenset({"is", "s", "are", "was", "were", "isnt", "arent", "feels"})
 # "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
 _EVERYDAY = english.phrase_table("everyday_names")
 # What makes one of those names that is also a verb ("brew") a thing: an article before it
@@ -542,6 +544,8 @@ class Lexicon:
             return "person"
         if t.word in self.chosen:
             return self.chosen[t.word]
+        if self._distance(tokens, i):
+            return "word"
         nxt = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
         slot = NameSlot(
             word=t.word,
@@ -556,6 +560,20 @@ class Lexicon:
             declared_with_prev=i > 0 and (tokens[i - 1].word, t.word) in self.with_article,
         )
         return read_name(slot)
+
+    def _distance(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "the prep room is Miles away from S4": a plural noun of measure between a
+        thing's "is" and "away" says how far, whoever is called Miles; not "is Miles away?"
+        (the copula opens a question about him) nor "Rory is Miles' deputy"."""
+        if i < 2 or i + 1 >= len(tokens) or tokens[i + 1].word != "away" or tokens[i].possessive:
+            return False
+        copula, subject = tokens[i - 1], tokens[i - 2]
+        if copula.word not in _DISTANCE_COPULAS or copula.opens or tokens[i + 1].opens:
+            return False
+        if subject.word in self.people or subject.word in self.name_words:
+            return False  # "Penny is Miles away ...": not a place's distance
+        singular = language.lemmas(tokens[i].word).get("NOUN", ())
+        return any(s != tokens[i].word for s in singular)
 
     def word_phrase(self, tokens: Sequence[Token], i: int) -> str:
         """The words a name word would be part of if meant as the ordinary word: "the grace
