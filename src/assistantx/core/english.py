@@ -72,6 +72,17 @@ def kind_words(kind: str) -> tuple[str, ...]:
 
 
 @functools.cache
+def phrase_table(key: str) -> dict[str, tuple[str, ...]]:
+    """A table of phrase lists of the file: a name → the phrases said for it, as written."""
+    table = _raw().get(key)
+    if not isinstance(table, dict) or not all(
+        isinstance(v, list) and all(isinstance(w, str) for w in v) for v in table.values()
+    ):
+        raise KeyError(f"{WORDS_FILE}: no phrase table {key!r} (a mapping of string lists)")
+    return {str(k): tuple(v) for k, v in table.items()}
+
+
+@functools.cache
 def word_table(key: str) -> dict[str, frozenset[str]]:
     """A table of word lists of the file: token (a cue's task kind) → its words."""
     table = _raw().get(key)

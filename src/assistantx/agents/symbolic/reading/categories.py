@@ -89,6 +89,11 @@ def which_question(choices: list[str]) -> str:
     return f"Which would you like: {listed}? Please tell me which."
 
 
+def is_member(category: Category, name: str) -> bool:
+    """Whether a thing called ``name`` is of ``category`` ("decaf coffee" is a hot drink)."""
+    return _member(category, name)
+
+
 def _member(category: Category, name: str) -> bool:
     """Whether a name, or its head noun ("decaf *coffee*"), is one of the category's."""
     folded = language.fold(name)

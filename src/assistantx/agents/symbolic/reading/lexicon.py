@@ -72,6 +72,12 @@ _ALIAS_ARTICLES = frozenset({"the", "our"})
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
+# The copulas of a distance ("the lab is miles away")
+_DISTANCE_COPULAS = frozenset({"is", "s", "are", "was", "were", "isnt", "arent", "feels"})
+# "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
+_EVERYDAY = english.phrase_table("everyday_names")
+# What makes one of those names that is also a verb ("brew") a thing: an article before it
+_THING_ARTICLES = frozenset({"a", "an", "another", "the", "some", "quick", "nice", "proper"})
 
 
 @dataclass(frozen=True)
@@ -116,6 +122,8 @@ class Lexicon:
     cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
     cue_words: frozenset[str] = frozenset()
     operation_words: frozenset[str] = frozenset()  # every form of the office's own verbs
+    # everyday names of the office's things ("brew" for its tea) that are also generic verbs
+    everyday_verbs: frozenset[str] = frozenset()
     vocabulary: list[str] = field(default_factory=list)
     _vocabulary_set: frozenset[str] = frozenset()
     # "the manager": a title that stands in someone's alias ("Manager Mao") names them
@@ -192,6 +200,7 @@ class Lexicon:
                     continue
                 for variant in (key, _plural(key)):
                     lex.items.setdefault(variant, t.id)
+        lex.everyday_verbs = lex._everyday_names(office, ops)
         for f in office.facilities:
             for name in (f.name, *f.synonyms, f.id.replace("_", " ")):
                 key = key_of(name)
@@ -223,6 +232,39 @@ class Lexicon:
         lex.operation_nouns = operation_nouns(office, lex._known)
         lex.operation_names = operation_names(office)
         return lex
+
+    def _everyday_names(self, office: Office, verbs: set[str]) -> frozenset[str]:
+        """Adds the everyday names of the office's things ("a cuppa", "a brew" for its tea)
+        as names of them, after the office's own names; a name that is a verb of one of the
+        office's operations (a "brew" coffee service) stays that verb. Returns the names
+        added that are also generic verbs, read as the thing only after an article."""
+        verb_names: set[str] = set()
+        taken = {*self.items, *self.people, *self.name_words, *self.facilities}
+        names = {t.id: {key_of(n) for n in (t.name, *t.synonyms)} for t in office.item_types}
+        heads: dict[str, set[str]] = {}  # "cup of tea", "builder's tea": their "tea"
+        for type_id, keys in names.items():
+            for key in keys:
+                heads.setdefault(key.split()[-1] if key else "", set()).add(type_id)
+        for t in office.item_types:
+            own = set(names[t.id])
+            # its own name, or a head noun no other thing of the office has
+            own |= {k.split()[-1] for k in own if k and heads.get(k.split()[-1]) == {t.id}}
+            for name in sorted(own):
+                for said in _EVERYDAY.get(name, ()):
+                    key = key_of(said)
+                    if not key or key in verbs or key in taken:
+                        continue
+                    for variant in (key, _plural(key)):
+                        self.items.setdefault(variant, t.id)
+                        if any(variant in words for words in CUES.values()):
+                            verb_names.add(variant)
+        return frozenset(verb_names)
+
+    def _thing_named(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "make me a brew": an everyday name that is also a generic verb, after an article."""
+        return tokens[i].word in self.everyday_verbs and (
+            i > 0 and tokens[i - 1].word in _THING_ARTICLES
+        )
 
     def _declare(self, person: str, words: list[str]) -> None:
         """Record how a name or alias of ``person`` is written: a bare word ("Kim"), a title
@@ -420,7 +462,8 @@ class Lexicon:
                 return Mention("facility", start, end, (self.facilities[phrase],), poss, text), n
             if phrase in self.places and not in_verb_slot:
                 return Mention("place", start, end, (self.places[phrase],), poss, text), n
-            if phrase in self.items and not (n == 1 and phrase in self.cue_words):
+            verb_only = n == 1 and phrase in self.cue_words and not self._thing_named(tokens, start)
+            if phrase in self.items and not verb_only:
                 return Mention("item", start, end, (self.items[phrase],), poss, text), n
         return None
 
@@ -466,6 +509,8 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
+        if self._thing_named(tokens, i):  # "a brew": the office's tea
+            return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         if w in self.cue_words and (
             self._noun_use(tokens, i)
             or (event_noun(tokens, i, self.operation_words) and not self._work_asked(tokens, i))
@@ -529,6 +574,8 @@ class Lexicon:
             return "person"
         if t.word in self.chosen:
             return self.chosen[t.word]
+        if self._distance(tokens, i):
+            return "word"
         nxt = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
         slot = NameSlot(
             word=t.word,
@@ -543,6 +590,20 @@ class Lexicon:
             declared_with_prev=i > 0 and (tokens[i - 1].word, t.word) in self.with_article,
         )
         return read_name(slot)
+
+    def _distance(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "the prep room is Miles away from S4": a plural noun of measure between a
+        thing's "is" and "away" says how far, whoever is called Miles; not "is Miles away?"
+        (the copula opens a question about him) nor "Rory is Miles' deputy"."""
+        if i < 2 or i + 1 >= len(tokens) or tokens[i + 1].word != "away" or tokens[i].possessive:
+            return False
+        copula, subject = tokens[i - 1], tokens[i - 2]
+        if copula.word not in _DISTANCE_COPULAS or copula.opens or tokens[i + 1].opens:
+            return False
+        if subject.word in self.people or subject.word in self.name_words:
+            return False  # "Penny is Miles away ...": not a place's distance
+        singular = language.lemmas(tokens[i].word).get("NOUN", ())
+        return any(s != tokens[i].word for s in singular)
 
     def word_phrase(self, tokens: Sequence[Token], i: int) -> str:
         """The words a name word would be part of if meant as the ordinary word: "the grace

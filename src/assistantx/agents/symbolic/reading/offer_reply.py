@@ -20,13 +20,16 @@ LATER = "OK, tell me when you need it and I'll bring it then. I did nothing."
 LEFT = "OK, I'll leave it there; tell me if you do want me to bring one. I did nothing."
 
 
+def not_known(answer: str) -> bool:
+    """A reply that only says they do not know ("hmm, sorry, I don't know more than I
+    wrote"): no answer to the question at all."""
+    return says_not_known(" ".join(w for w in language.words(answer) if w not in _FILLERS))
+
+
 def plain_stance(answer: str) -> Stance:
     """Whether a reply to any "Shall I ...?" accepts it; "hmm, not sure" is no yes,
     whatever its "sure" says."""
-    words = language.words(answer)
-    if says_not_known(" ".join(w for w in words if w not in _FILLERS)):
-        return "unclear"
-    return offer_stance(answer)
+    return "unclear" if not_known(answer) else offer_stance(answer)
 
 
 def offer_reply(speech: SpeechActs, answer: str) -> OfferReply:

@@ -65,6 +65,7 @@ from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
 from assistantx.agents.symbolic.reading.offer_reply import (
     OfferReply,
+    not_known,
     offer_reply,
     plain_stance,
 )
@@ -305,7 +306,13 @@ class InstructionParser:
                         decline_outcome="done",
                     )
             if frame.question is not None and "Shall I" in frame.question:
-                offer = self.screen.screen(text, requester).offer
+                screened = self.screen.screen(text, requester)
+                offer = screened.offer
+                if offer and screened.outcome != "done" and not_known(answer):
+                    # "Shall I get you an ordinary coffee instead?" "Sorry, I don't know
+                    # more than I wrote.": no answer, so the question stays open (asked
+                    # again, then "I could not understand"), never dropped as a no
+                    continue
                 yes_no: OfferReply = plain_stance(answer)
                 if offer:  # an answer was given already: only a plain yes for now acts
                     yes_no = offer_reply(self.screen.terms.acts, answer)

@@ -230,8 +230,10 @@ class SpeechActs:
 
     @staticmethod
     def defers(words: list[str]) -> bool:
-        """ "I'll let you know", "will tell you when": the asking is put off."""
-        return any(_starts(words[n:], p) for n in range(len(words)) for p in _DEFERRALS)
+        """ "I'll let you know", "will tell you when": the asking is put off; not the
+        stance that opens a message ("just to let you know I'm off tomorrow")."""
+        w = content(words)
+        return any(_starts(w[n:], p) for n in range(len(w)) for p in _DEFERRALS)
 
     def future_need(self, words: list[str], deferred: bool) -> bool:
         """ "I might need Hal's ruler later", "may need a calculator if ...": the speaker's

@@ -10,14 +10,17 @@ from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.correction import corrected
+from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
+from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
 from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.timing import without_time_idioms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.speech_acts import acts_reader
 from assistantx.core.office import Office
@@ -41,9 +44,12 @@ class RequestScreen:
         """The message corrected, cut into pieces (each lexed and its speech acts read), and
         each piece judged by the table of rules (the first that matches decides it)."""
         terms = self.terms
+        text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
+        text, restored = subject_restored(text)  # "been at the machine": I've been
+        text, taken = how_taken(terms, text)  # "a brew, milk no sugar": no milk to fetch
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
-        fixes = [*rejected, *fixes]
+        fixes = [*idioms, *restored, *taken, *rejected, *fixes]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
             text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)

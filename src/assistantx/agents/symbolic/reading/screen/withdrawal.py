@@ -10,6 +10,8 @@ from assistantx.agents.symbolic.reading.speech_acts import without_fillers
 from assistantx.core import english, language
 
 _PRONOUNS = english.words("pronouns")
+# "..., Thandi's already run one off", "..., Ravi has just done it": done by now, a reason
+_DONE_BY_NOW = frozenset({"already", "just"})
 
 
 def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -17,7 +19,7 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if found is not None:
         msg.withdrawing = True
         return found
-    told = any(language.is_finite_verb(w) for w in piece.words)
+    told = any(language.is_finite_verb(w) for w in piece.words) or _done_by_now(piece)
     if (
         msg.withdrawing
         and told
@@ -32,6 +34,16 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         # of the withdrawn request, kept; a need said of it is the reason, not a new errand
         return Finding("withdrawn", piece, "the reason the request is withdrawn: still needed")
     return None
+
+
+def _done_by_now(piece: Piece) -> bool:
+    """ "Thandi's already run one off": a participle after "already"/"just", told not asked
+    (its "run" is no past form, so ``is_finite_verb`` misses it)."""
+    words = piece.words
+    return not piece.asks and any(
+        w in _DONE_BY_NOW and n + 1 < len(words) and language.is_past_participle(words[n + 1])
+        for n, w in enumerate(words)
+    )
 
 
 def _still_wanted(piece: Piece) -> bool:

@@ -1,0 +1,51 @@
+"""A sentence of chat that drops its subject "I" ("been at the machine all morning", "just
+knocked coffee all over my keyboard", "can't leave the vat"): the speaker's own state or doing,
+so it gets its "I" back before the pieces are judged and is read as the statement it is, never
+as a request naming a facility or an item ("heat a tea at the machine", "a knocked coffee",
+"dye a lunch at the vat"). Only a clause that opens so is restored: "can't you ...", "just
+bring ..." and "just put it ..." (a past form that is also the plain verb) are left as said."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.core import english, language
+from assistantx.core.task_schema import Evidence
+
+# Where a clause opens: the message's start, or after a stop or a comma.
+_OPENS = r"(^|[.!?;,]\s*|\n\s*)"
+# "been ..." (not "been told"/"been asked", someone else's doing to the speaker)
+_BEEN = re.compile(rf"{_OPENS}(been)\b(?!\s+(?:you|u|told|asked)\b)", re.IGNORECASE)
+# "can't leave ...": a modal's negation and a verb, not "can't you/someone ..." (a request)
+_CANT = re.compile(rf"{_OPENS}(can'?t|cannot|couldn'?t)\s+([a-z]+)\b", re.IGNORECASE)
+# "just knocked ...": "just" and a past form
+_JUST = re.compile(rf"{_OPENS}(just)\s+([a-z]+)\b", re.IGNORECASE)
+_ASKED_OF = english.words("request_askees") | english.words("subject_pronouns")
+
+
+def subject_restored(text: str) -> tuple[str, list[Evidence]]:
+    """``text`` with "I" back before a clause that opens with "been", "can't" + a verb or
+    "just" + a past form."""
+    found: list[Evidence] = []
+
+    def been(match: re.Match[str]) -> str:
+        found.append(Evidence(words=match.group(2), meaning="I've been (the speaker)"))
+        return f"{match.group(1)}I've {match.group(2)}"
+
+    def cant(match: re.Match[str]) -> str:
+        verb = match.group(3).lower()
+        if verb in _ASKED_OF or not language.verb_lemmas(verb):
+            return match.group(0)  # "can't you bring it", "can't someone ...": asked
+        found.append(Evidence(words=match.group(0).strip(" ,.;"), meaning="I can't (the speaker)"))
+        return f"{match.group(1)}I {match.group(2)} {match.group(3)}"
+
+    def just(match: re.Match[str]) -> str:
+        verb = match.group(3).lower()
+        if not language.is_past_verb(verb) or verb in language.verb_lemmas(verb):
+            return match.group(0)  # "just bring it", "just put it there": asked
+        found.append(Evidence(words=match.group(0).strip(" ,.;"), meaning="I just (the speaker)"))
+        return f"{match.group(1)}I {match.group(2)} {match.group(3)}"
+
+    text = _BEEN.sub(been, text)
+    text = _CANT.sub(cant, text)
+    return _JUST.sub(just, text), found
