@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
     operation_nouns,
@@ -140,6 +141,8 @@ class Lexicon:
     inner_possessives: frozenset[str] = frozenset()
     # operations' whole display names of two words or more ("legal read") → its verb
     operation_names: dict[tuple[str, ...], str] = field(default_factory=dict)
+    # near forms of the office's verbs ("fire-proof", "flameproofed", "dying" for "dye")
+    near_forms: NearForms = field(default_factory=lambda: NearForms({}, 0))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -160,6 +163,7 @@ class Lexicon:
             if kind is not None:
                 cues.setdefault(kind, set()).update(forms)
         lex.verb_phrases = VerbPhrases.from_office(office)
+        lex.near_forms = NearForms.from_office(office, inflections)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -274,6 +278,8 @@ class Lexicon:
             # a word right before a determiner is a verb: "printe my file" is print, not printer
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
+        # "flame-proofed", "dying": near forms of the office's own verbs are those verbs
+        out = self.near_forms.join(out, self._known)
         # "needs a lamination": an operation named by a noun is read as its verb
         out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"

@@ -242,6 +242,8 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         return False
     if language.is_month(word) or language.is_weekday(word):
         return False  # "from March", "by Friday": a date
+    if any(c.isdigit() for c in word):
+        return False  # "down to A4", "for the Y9 trip": a size or a code, nobody's name
     following = mentions[n + 1] if n + 1 < len(mentions) else None
     prev = prev_word(tokens, m.start, skip_titles=False)
     if m.possessive and following is not None and following.kind == "item":
