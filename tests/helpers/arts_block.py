@@ -54,7 +54,7 @@ def raw_arts_block() -> dict[str, Any]:
                 "x": 16.0,
                 "y": 18.0,
             },
-            {"id": "repro", "kind": "facility", "name": "Reprographics", "x": 22.0, "y": 18.0},
+            {"id": "print_unit", "kind": "facility", "name": "Reprographics", "x": 22.0, "y": 18.0},
             {
                 "id": "exams_office",
                 "kind": "facility",
@@ -138,7 +138,7 @@ def raw_arts_block() -> dict[str, Any]:
             {
                 "id": "comb_binder",
                 "name": "comb binder",
-                "location": "repro",
+                "location": "print_unit",
                 "operations": ["bind"],
                 "guards": ["colm"],
             },

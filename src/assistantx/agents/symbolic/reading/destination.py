@@ -124,12 +124,14 @@ def find_outside(
                 continue
             if words[end] in _END_WORDS:
                 break
+            if end > start and words[end] == "to" and words[end + 1 : end + 2] == ["be"]:
+                break  # "to Parkside Laundry to be laundered": the work, not the place
             end += 1
         lead = gaps[start].strip()  # "+44 ...", "#3 ...": a sign before the first word
         said = "".join(
             (gaps[k] if k > start else lead) + tokens[k].text for k in range(start, end)
         ).strip()
-        said = said.strip("\"'")
+        said = _bracketed(said.strip("\"'"))
         phrase = said if said and len(said) <= _LONGEST else None
         if phrase is not None and set(words[start:end]) <= _PRONOUNS | _PERSONS:
             phrase = None  # "courier it to them": no place said; asked where
@@ -214,6 +216,14 @@ def _to_before(words: Sequence[str], gaps: Sequence[str], means: int) -> int | N
         if words[k] == "to":
             return k
     return None
+
+
+def _bracketed(said: str) -> str:
+    """ "the exam board (WJEC)": the name in brackets is the place's own name."""
+    if "(" not in said:
+        return said
+    inner = said.split("(", 1)[1].split(")", 1)[0].strip()
+    return inner or said.replace("(", "").replace(")", "").strip()
 
 
 def _ends(gap: str) -> bool:

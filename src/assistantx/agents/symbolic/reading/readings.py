@@ -22,6 +22,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Lexicon,
     Mention,
 )
+from assistantx.agents.symbolic.reading.send_off import sent_off
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
@@ -70,6 +71,12 @@ class MentionReader:
             if op.sends_out
             for vp in verb_phrases(op.id, (*op.verbs, op.name))
         )
+        self._send_inputs = {op.id: op.input for op in office.operations if op.sends_out}
+        self._send_forms = {
+            op.id: frozenset(f for v in op.verbs for f in language.verb_forms(language.fold(v)))
+            for op in office.operations
+            if op.sends_out
+        }
         self._kind_of = {
             op.id: kind
             for op in office.operations
@@ -87,7 +94,15 @@ class MentionReader:
             k for m in mentions if m.kind in ("place", "person") for k in range(m.start, m.end)
         }
         outside = find_outside(tokens, spaces, self._sends_out, names)
-        if outside is not None and not any(
+        plain = None
+        if (outside is None or outside.start is None) and self._send_inputs:
+            # "need sending off to Edexcel", "send it to Parkside Laundry to be laundered"
+            plain = sent_off(tokens, spaces, mentions, self._send_inputs, self._send_forms, names)
+            if plain is not None and outside is not None and plain.operation != outside.operation:
+                plain = None
+        if plain is not None:
+            outside = plain  # "sending" said in plain English: the service's verb here
+        elif outside is not None and not any(
             m.start == outside.verb_start
             and (
                 m.kind == "cue"
