@@ -31,6 +31,20 @@ from assistantx.core.task_schema import SHAPE_KIND
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
 _DETERMINERS = english.words("determiners")
+# Words of time that may follow a name ("for Kowalski tomorrow"), never a noun it describes.
+_WHEN = (
+    english.words("later_times")
+    | english.words("past_times")
+    | {
+        "today",
+        "morning",
+        "afternoon",
+        "evening",
+        "night",
+        "weekend",
+        "asap",
+    }
+)
 _ARTICLES = frozenset({"a", "an", "the", "some", "any"})
 _A = frozenset({"a", "an", "another"})
 _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
@@ -267,7 +281,24 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         return not (m.text[:1].islower() and prev in ("a", "an") and language.is_noun(word))
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
+    if prev == "for" and _modifies_next(tokens, m.end):
+        return False  # "for PE cover", "for Year 9": what it is for, nobody's name
     return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+
+
+def _modifies_next(tokens: Sequence[Token], at: int) -> bool:
+    """Whether the word before ``at`` describes the next one, in one phrase: a common noun
+    written in lower case ("PE *cover*", "Drama *club*") or a number ("Year *9*")."""
+    if at >= len(tokens) or tokens[at].after_pause or tokens[at - 1].possessive:
+        return False
+    after = tokens[at]
+    if after.word.isdigit():
+        return True
+    if not after.text.islower() or after.word in COMMON or after.word in PRONOUNS:
+        return False
+    if after.word in _WHEN or language.is_weekday(after.word) or language.is_month(after.word):
+        return False  # "for Kowalski tomorrow": a time after a name, still someone to ask about
+    return language.is_noun(after.word)
 
 
 def _settled_by_later_sentence(mentions: Sequence[Mention], spaces: Sequence[str]) -> list[Mention]:
