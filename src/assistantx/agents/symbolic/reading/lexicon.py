@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.clipped_names import clipped_names
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -206,6 +207,13 @@ class Lexicon:
                 key = key_of(name)
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
+        # "down to repro": a place's one-word name clipped as people say it
+        taken = {*lex.people, *lex.name_words, *lex.items, *lex.facilities, *lex.places}
+        clipped = clipped_names(
+            ((key_of(loc.name), loc.id) for loc in office.locations), taken | lex.cue_words
+        )
+        for clip, loc_id in clipped.items():
+            lex.places.setdefault(clip, loc_id)
         named = [
             *(n for t in office.item_types for n in (t.name, *t.synonyms)),
             *(n for f in office.facilities for n in (f.name, *f.synonyms)),
