@@ -187,3 +187,14 @@ def raw_arts_block() -> dict[str, Any]:
 @functools.cache
 def arts_block() -> Office:
     return parse_office(raw_arts_block(), "arts_block")
+
+
+@functools.cache
+def arts_block_dry_cleaning() -> Office:
+    """The same arts block whose wardrobe sends costumes out to be dry cleaned (verb "dry
+    clean", a phrase of two words) instead of laundered."""
+    raw = raw_arts_block()
+    for op in raw["operations"]:
+        if op["id"] == "launder":
+            op["verbs"], op["name"] = ["dry clean"], "dry clean"
+    return parse_office(raw, "arts_block_dry_cleaning")

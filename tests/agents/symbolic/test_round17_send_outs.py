@@ -13,7 +13,7 @@ from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import TaskFrame
-from helpers.arts_block import arts_block
+from helpers.arts_block import arts_block, arts_block_dry_cleaning
 
 
 @functools.cache
@@ -98,3 +98,18 @@ async def test_the_scripts_go_out_to_the_board_named() -> None:
     assert sent.detail["item"] == "scripts:colm" and sent.detail["by"] == "marta"
     assert "Edexcel" in sent.detail["told"]
     assert not any(m.chat.id == "edexcel" for m in run.sim.messenger.sent)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Send my tunic to Parkside Cleaners to be dry cleaned please.",
+        "Send my costume to Parkside Cleaners to be dry-cleaned please.",
+    ],
+)
+def test_a_two_word_service_named_after_the_place_is_that_service(text: str) -> None:
+    frame = InstructionParser(arts_block_dry_cleaning()).parse(text, "hatty")
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.operation, t.item, t.destination) for t in frame.tasks] == [
+        ("launder", "tunic", "Parkside Cleaners")
+    ]

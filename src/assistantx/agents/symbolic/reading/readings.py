@@ -87,7 +87,7 @@ class MentionReader:
         )
         self._send_inputs = {op.id: op.input for op in office.operations if op.sends_out}
         self._send_forms = {
-            op.id: frozenset(f for v in op.verbs for f in language.verb_forms(language.fold(v)))
+            op.id: frozenset(f for v in op.verbs for f in _phrase_forms(language.fold(v)))
             for op in office.operations
             if op.sends_out
         }
@@ -262,6 +262,15 @@ class MentionReader:
         """A facility whose operations are none the assistant can run (a meeting room)."""
         ops = self.office.facility(facility_id).operations
         return bool(ops) and not any(self.office.runnable(op) for op in ops)
+
+
+def _phrase_forms(verb: str) -> frozenset[str]:
+    """Every form of a verb, a phrase's by its last word ("dry clean" → "dry cleaned"): a
+    declared phrase is one token of the lexicon, its last word inflected."""
+    *head, last = verb.split() or [""]
+    return frozenset(language.verb_forms(verb)) | {
+        " ".join([*head, form]) for form in language.verb_forms(last)
+    }
 
 
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
