@@ -128,12 +128,14 @@ def find_outside(
                 continue
             if words[end] in _END_WORDS or _next_clause(words, end):
                 break
+            if end > start and words[end] == "to" and words[end + 1 : end + 2] == ["be"]:
+                break  # "to Parkside Laundry to be laundered": the work, not the place
             end += 1
         lead = gaps[start].strip()  # "+44 ...", "#3 ...": a sign before the first word
         said = "".join(
             (gaps[k] if k > start else lead) + tokens[k].text for k in range(start, end)
         ).strip()
-        said = said.strip("\"'")
+        said = _bracketed(said.strip("\"'"))
         phrase = said if said and len(said) <= _LONGEST else None
         if phrase is not None and set(words[start:end]) <= _PRONOUNS | _PERSONS:
             phrase = None  # "courier it to them": no place said; asked where
@@ -230,6 +232,14 @@ def _next_clause(words: Sequence[str], k: int) -> bool:
         nxt = nxt[1:]
     # "and bring it back": more done with the item sent out, which cannot be; left unread
     return bool(nxt) and nxt[0] in _HANDING and nxt[1:2] != [] and nxt[1] not in _PRONOUNS
+
+
+def _bracketed(said: str) -> str:
+    """ "the exam board (WJEC)": the name in brackets is the place's own name."""
+    if "(" not in said:
+        return said
+    inner = said.split("(", 1)[1].split(")", 1)[0].strip()
+    return inner or said.replace("(", "").replace(")", "").strip()
 
 
 def _ends(gap: str) -> bool:

@@ -26,6 +26,8 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.clipped_names import clipped_names
+from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
     operation_nouns,
@@ -148,6 +150,8 @@ class Lexicon:
     inner_possessives: frozenset[str] = frozenset()
     # operations' whole display names of two words or more ("legal read") → its verb
     operation_names: dict[tuple[str, ...], str] = field(default_factory=dict)
+    # near forms of the office's verbs ("fire-proof", "flameproofed", "dying" for "dye")
+    near_forms: NearForms = field(default_factory=lambda: NearForms({}, 0))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -168,6 +172,7 @@ class Lexicon:
             if kind is not None:
                 cues.setdefault(kind, set()).update(forms)
         lex.verb_phrases = VerbPhrases.from_office(office)
+        lex.near_forms = NearForms.from_office(office, inflections)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -211,6 +216,13 @@ class Lexicon:
                 key = key_of(name)
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
+        # "down to repro": a place's one-word name clipped as people say it
+        taken = {*lex.people, *lex.name_words, *lex.items, *lex.facilities, *lex.places}
+        clipped = clipped_names(
+            ((key_of(loc.name), loc.id) for loc in office.locations), taken | lex.cue_words
+        )
+        for clip, loc_id in clipped.items():
+            lex.places.setdefault(clip, loc_id)
         named = [
             *(n for t in office.item_types for n in (t.name, *t.synonyms)),
             *(n for f in office.facilities for n in (f.name, *f.synonyms)),
@@ -316,6 +328,8 @@ class Lexicon:
             # a word right before a determiner is a verb: "printe my file" is print, not printer
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
+        # "flame-proofed", "dying": near forms of the office's own verbs are those verbs
+        out = self.near_forms.join(out, self._known)
         # "needs a lamination": an operation named by a noun is read as its verb
         out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"

@@ -86,6 +86,7 @@ from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, Mentio
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
+from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
     category_asked,
@@ -206,6 +207,13 @@ class InstructionParser:
             to_self=to_self,
         )
         if frame.understood:
+            # "need cable ties, the art room has some": the one kept where the requester said
+            # (said anywhere, also in a statement the screen set aside)
+            sources = stated_sources(self.office, whole.tokens, whole.mentions)
+            tasks, unclear_source = from_stated_source(self.office, frame.tasks, sources)
+            if unclear_source is not None:
+                return TaskFrame(requester=requester, question=unclear_source)
+            frame = frame.model_copy(update={"tasks": tasks})
             unclear = unanchored_it(self.office, whole, frame.tasks)
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)

@@ -23,6 +23,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Lexicon,
     Mention,
 )
+from assistantx.agents.symbolic.reading.send_off import sent_off
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
@@ -31,6 +32,20 @@ from assistantx.core.task_schema import SHAPE_KIND
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
 _DETERMINERS = english.words("determiners")
+# Words of time that may follow a name ("for Kowalski tomorrow"), never a noun it describes.
+_WHEN = (
+    english.words("later_times")
+    | english.words("past_times")
+    | {
+        "today",
+        "morning",
+        "afternoon",
+        "evening",
+        "night",
+        "weekend",
+        "asap",
+    }
+)
 _ARTICLES = frozenset({"a", "an", "the", "some", "any"})
 _A = frozenset({"a", "an", "another"})
 _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
@@ -74,6 +89,12 @@ class MentionReader:
             if op.sends_out
             for vp in verb_phrases(op.id, (*op.verbs, op.name))
         )
+        self._send_inputs = {op.id: op.input for op in office.operations if op.sends_out}
+        self._send_forms = {
+            op.id: frozenset(f for v in op.verbs for f in _phrase_forms(language.fold(v)))
+            for op in office.operations
+            if op.sends_out
+        }
         self._kind_of = {
             op.id: kind
             for op in office.operations
@@ -95,7 +116,15 @@ class MentionReader:
             k for m in mentions if m.kind in ("place", "person") for k in range(m.start, m.end)
         } | errands
         outside = find_outside(tokens, spaces, self._sends_out, names)
-        if outside is not None and not any(
+        plain = None
+        if (outside is None or outside.start is None) and self._send_inputs:
+            # "need sending off to Edexcel", "send it to Parkside Laundry to be laundered"
+            plain = sent_off(tokens, spaces, mentions, self._send_inputs, self._send_forms, names)
+            if plain is not None and outside is not None and plain.operation != outside.operation:
+                plain = None
+        if plain is not None:
+            outside = plain  # "sending" said in plain English: the service's verb here
+        elif outside is not None and not any(
             m.start == outside.verb_start
             and (
                 m.kind == "cue"
@@ -252,6 +281,15 @@ class MentionReader:
         return bool(ops) and not any(self.office.runnable(op) for op in ops)
 
 
+def _phrase_forms(verb: str) -> frozenset[str]:
+    """Every form of a verb, a phrase's by its last word ("dry clean" → "dry cleaned"): a
+    declared phrase is one token of the lexicon, its last word inflected."""
+    *head, last = verb.split() or [""]
+    return frozenset(language.verb_forms(verb)) | {
+        " ".join([*head, form]) for form in language.verb_forms(last)
+    }
+
+
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
     m = mentions[n]
     word = tokens[m.start].word
@@ -259,6 +297,8 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         return False
     if language.is_month(word) or language.is_weekday(word):
         return False  # "from March", "by Friday": a date
+    if any(c.isdigit() for c in word):
+        return False  # "down to A4", "for the Y9 trip": a size or a code, nobody's name
     following = mentions[n + 1] if n + 1 < len(mentions) else None
     prev = prev_word(tokens, m.start, skip_titles=False)
     if m.possessive and following is not None and following.kind == "item":
@@ -267,7 +307,24 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         return not (m.text[:1].islower() and prev in ("a", "an") and language.is_noun(word))
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
+    if prev == "for" and _modifies_next(tokens, m.end):
+        return False  # "for PE cover", "for Year 9": what it is for, nobody's name
     return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+
+
+def _modifies_next(tokens: Sequence[Token], at: int) -> bool:
+    """Whether the word before ``at`` describes the next one, in one phrase: a common noun
+    written in lower case ("PE *cover*", "Drama *club*") or a number ("Year *9*")."""
+    if at >= len(tokens) or tokens[at].after_pause or tokens[at - 1].possessive:
+        return False
+    after = tokens[at]
+    if after.word.isdigit():
+        return True
+    if not after.text.islower() or after.word in COMMON or after.word in PRONOUNS:
+        return False
+    if after.word in _WHEN or language.is_weekday(after.word) or language.is_month(after.word):
+        return False  # "for Kowalski tomorrow": a time after a name, still someone to ask about
+    return language.is_noun(after.word)
 
 
 def _settled_by_later_sentence(mentions: Sequence[Mention], spaces: Sequence[str]) -> list[Mention]:

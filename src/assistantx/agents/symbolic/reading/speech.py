@@ -531,11 +531,26 @@ class SpeechActs:
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
             if x in self.lex.items:
                 continue  # "Hu's scissors": an item of the office, never the verb
+            if self._work_obliged(w, n):
+                return False  # "my banner has to be fireproofed": the work is needed
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
                 return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
         return False
+
+    def _work_obliged(self, w: list[str], n: int) -> bool:
+        """ "has to be / must be" and a form of one of the office's own verbs from ``n``:
+        work said to be needed on the subject ("my banner has to be fireproofed before the
+        show"), as "needs to be" says it, not a fact told."""
+        verb = obliged_verb(w, n)
+        if verb is None or w[verb] != "be" or verb + 1 >= len(w):
+            return False
+        said = w[verb + 1 :]
+        near = self.lex.near_forms.forms  # "has to be flame-proofed": a near form of one
+        return said[0] in self.lex.operation_words or any(
+            tuple(said[:size]) in near for size in (1, 2)
+        )
 
     def need(self, words: list[str], requester_words: frozenset[str]) -> bool:
         """ "Min needs scissors": someone else's need, said as a fact."""
