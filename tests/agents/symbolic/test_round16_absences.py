@@ -5,24 +5,14 @@ done, and the absence is a hint for its plan."""
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.actions import Inquire, Move
-from assistantx.core.task_schema import TaskFrame
 from helpers.gazette import newsroom
+from helpers.reading import answered_reader
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(newsroom())
-
-
-def _frame(text: str) -> TaskFrame:
-    return _parser().parse_with_answers(text, "ines", [])
+_frame = answered_reader(newsroom, "ines")
 
 
 @pytest.mark.parametrize(

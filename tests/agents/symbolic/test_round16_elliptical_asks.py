@@ -8,23 +8,13 @@ meter?") and a bare "got a light meter?" stay questions, answered in words."""
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
-from assistantx.core.task_schema import TaskFrame
 from helpers.gazette import newsroom
+from helpers.reading import answered_reader
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(newsroom())
-
-
-def _frame(text: str) -> TaskFrame:
-    return _parser().parse_with_answers(text, "ines", [])
+_frame = answered_reader(newsroom, "ines")
 
 
 @pytest.mark.parametrize(

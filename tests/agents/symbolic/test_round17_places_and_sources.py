@@ -10,23 +10,14 @@
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import TaskFrame
 from helpers.arts_block import arts_block
+from helpers.reading import frame_reader
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(arts_block())
-
-
-def _frame(text: str, who: str) -> TaskFrame:
-    return _parser().parse(text, who)
+_frame = frame_reader(arts_block, "ola")
 
 
 def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str | None, str]]:

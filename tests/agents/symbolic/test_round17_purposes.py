@@ -5,22 +5,12 @@ nobody in the office after "for" is still asked about, and a colleague's name st
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 
-from assistantx.agents.symbolic import InstructionParser
-from assistantx.core.task_schema import TaskFrame
 from helpers.arts_block import arts_block
+from helpers.reading import frame_reader
 
-
-@functools.cache
-def _parser() -> InstructionParser:
-    return InstructionParser(arts_block())
-
-
-def _frame(text: str, who: str) -> TaskFrame:
-    return _parser().parse(text, who)
+_frame = frame_reader(arts_block, "marta")
 
 
 @pytest.mark.parametrize(
