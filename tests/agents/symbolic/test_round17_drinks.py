@@ -133,3 +133,33 @@ def test_of_two_teas_a_brew_is_neither() -> None:
     assert "brew" not in parser.lex.items and "cuppa" not in parser.lex.items
     frame = parser.parse("could you make me a brew?", "ada")
     assert frame.tasks == [], frame
+
+
+def _hot_drink_school() -> InstructionParser:
+    """The school with its urn's product called "hot drink", going by "tea", "cuppa" and "cup
+    of tea": how the drink is taken is still no milk fetch."""
+    raw = raw_playschool()
+    for kind in raw["item_types"]:
+        if kind["id"] == "tea":
+            kind["name"] = "hot drink"
+            kind["synonyms"] = ["tea", "cuppa", "cup of tea"]
+    return InstructionParser(ob.parsed(lambda: raw)())
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could I have a cup of tea? milk no sugar",
+        "could I have a cuppa? milk no sugar",
+        "tea please, white, one sugar",
+    ],
+)
+def test_a_drink_named_by_a_synonym_is_taken_with_milk_not_fetched_with_it(text: str) -> None:
+    frame = _hot_drink_school().parse(text, "ada")
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("produce", "tea", "ada")]
+
+
+def test_milk_beside_a_drink_named_by_a_synonym_is_still_milk_when_asked_for() -> None:
+    frame = _hot_drink_school().parse("could I have a cup of tea and some milk", "ada")
+    assert sorted(t.item for t in frame.tasks) == ["milk", "tea"]

@@ -74,7 +74,10 @@ def _drink_named(terms: Terms, text: str) -> str | None:
         return None
     lexed = terms.lex.read(text)
     for item_id in terms.named(lexed, "item"):
-        name = terms.office.item_type(item_id).name
-        if is_member(hot, name):
-            return name
+        kind = terms.office.item_type(item_id)
+        # an office may call its urn's product "hot drink" and list "tea" and "brew" among
+        # its synonyms: the thing is a hot drink if its name, or any name it goes by, is one
+        names = (kind.name, *kind.synonyms)
+        if category_named(kind.name) is hot or any(is_member(hot, n) for n in names):
+            return kind.name
     return None
