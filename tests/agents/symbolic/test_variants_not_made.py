@@ -9,8 +9,11 @@ from __future__ import annotations
 import pytest
 from symbolic_run import run_instruction
 
+from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.actions import Inquire, SendQR
+from helpers import office_builder as ob
 from helpers.guesthouse import guesthouse
+from helpers.playschool import raw_playschool
 from helpers.reading import answered_reader
 
 _frame = answered_reader(guesthouse, "wren")
@@ -90,3 +93,36 @@ async def test_a_run_for_a_master_card_asks_nobody_and_makes_nothing() -> None:
     assert not [a for a in acted if isinstance(a, Inquire | SendQR)]
     assert run.stm.trace.outcome == "unachievable"
     assert not run.sim.world.made
+
+
+def _school_with_practicals() -> InstructionParser:
+    """The school office whose practical kits also go by "practical" (as teachers call the
+    lesson they are for)."""
+    raw = raw_playschool()
+    for kind in raw["item_types"]:
+        if kind["id"] == "practical_kit":
+            kind["synonyms"] = ["kit", "practical"]
+    return InstructionParser(ob.parsed(lambda: raw)())
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could Luke make up a kit for my 10Y2 electrolysis practical?",
+        "prep room is miles away and I've got no free, could Luke make up a kit for my "
+        "year 9 titration practical?",
+        "make up a kit for my chromatography practical please",
+    ],
+)
+def test_a_product_named_again_after_for_is_what_it_is_for_not_a_variant(text: str) -> None:
+    frame = _school_with_practicals().parse(text, "ada")
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("produce", "practical_kit", "ada")
+    ]
+
+
+def test_a_variant_of_the_product_named_once_is_still_asked_about() -> None:
+    frame = _school_with_practicals().parse("could Luke make up an electrolysis kit for me", "ada")
+    assert frame.tasks == []
+    assert frame.question is not None and "electrolysis practical kit" in frame.question

@@ -117,7 +117,7 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
     office_at = {k for m in mentions if m.kind in _OFFICE_KINDS for k in range(m.start, m.end)}
     breaks = gaps(piece.text, tokens)
     for m in mentions:
-        if m.kind != "item" or not _made_here(terms, m):
+        if m.kind != "item" or not _made_here(terms, m) or _named_for(tokens, mentions, m):
             continue
         start = m.start
         while (
@@ -147,6 +147,14 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         if span is not None:
             return Variant(m.ids[0], tuple(t.text for t in said), authority, *span)
     return None
+
+
+def _named_for(tokens: tuple[Token, ...], mentions: tuple[Mention, ...], m: Mention) -> bool:
+    """Whether the product was already asked for earlier in the piece and this mention comes
+    after "for" ("make up a kit for my 10Y2 electrolysis practical"): the words there name
+    what the thing is for (the lesson), not another kind of it."""
+    earlier = [e for e in mentions if e.kind == "item" and e.ids == m.ids and e.end <= m.start]
+    return bool(earlier) and "for" in {t.word for t in tokens[earlier[0].end : m.start]}
 
 
 def _made_here(terms: Terms, mention: Mention) -> bool:
