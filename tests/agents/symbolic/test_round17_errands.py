@@ -12,8 +12,10 @@ from __future__ import annotations
 import pytest
 from symbolic_run import run_instruction
 
+from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.reading.clipped_names import clipped_names
-from helpers.arts_block import arts_block
+from assistantx.core.office import parse_office
+from helpers.arts_block import arts_block, raw_arts_block
 from helpers.reading import frame_reader
 
 _frame = frame_reader(arts_block, "hatty")
@@ -80,6 +82,28 @@ def test_a_clipped_name_is_a_word_in_use_and_no_dictionary_word() -> None:
     # a clip two names share names neither
     assert "repro" not in clipped_names([("reprographics", "r"), ("reproduction", "s")], set())
     assert "repro" not in clipped_names([("reprographics", "r")], {"repro"})
+
+
+def test_a_room_named_with_room_after_it_is_clipped_from_its_first_word() -> None:
+    # "Reprographics room" is said "repro" as "Reprographics" is; a longer name is not clipped
+    assert clipped_names([("reprographics room", "r")], set())["repro"] == "r"
+    assert clipped_names([("reprographics office", "r")], set())["repro"] == "r"
+    assert "repro" not in clipped_names([("reprographics and print room", "r")], set())
+    assert "repro" not in clipped_names([("reprographics kit", "r")], set())
+
+
+def test_taken_to_a_clipped_room_to_be_bound_is_the_binding() -> None:
+    raw = raw_arts_block()
+    for place in raw["locations"]:
+        if place["name"] == "Reprographics":
+            place["name"] = "Reprographics room"
+    frame = InstructionParser(parse_office(raw, "arts_block")).parse(
+        "Would you take my portfolio down to repro to be bound? Deadline is Friday.", "priya"
+    )
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.operation, t.item, t.recipient) for t in frame.tasks] == [
+        ("bind", "portfolio", "priya")
+    ]
 
 
 async def test_the_portfolio_is_bound_and_comes_back() -> None:

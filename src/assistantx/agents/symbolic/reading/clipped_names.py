@@ -1,4 +1,5 @@
-"""A place's one-word name said clipped, as people say it: "repro" for "Reprographics"
+"""A place's one-word name said clipped, as people say it: "repro" for "Reprographics" (or
+"Reprographics room")
 (the lexicon stage, when its tables are built).
 
 The clipped form must be a word in use (``language.zipf`` at least ``_IN_USE``) that is no
@@ -12,6 +13,9 @@ from collections.abc import Collection, Iterable
 
 from assistantx.core import language
 
+# "Reprographics room", "Reprographics office": the room is the one word before a word that
+# only says it is a room, so "repro" clips it too.
+_ROOM_WORDS = frozenset({"room", "office", "area", "suite", "centre", "center"})
 _SHORTEST = 5
 _SHORT_BY = 3
 _IN_USE = 2.0
@@ -21,8 +25,9 @@ def clipped_names(names: Iterable[tuple[str, str]], taken: Collection[str]) -> d
     """Clipped form → id, for each one-word ``(name key, id)`` pair; ``taken``: the keys the
     office already uses (a clipped form never replaces one)."""
     found: dict[str, set[str]] = {}
-    for key, ident in names:
-        if " " in key or not key.isalpha():
+    for name, ident in names:
+        key = _head(name)
+        if key is None or not key.isalpha():
             continue
         for end in range(_SHORTEST, len(key) - _SHORT_BY + 1):
             clip = key[:end]
@@ -31,3 +36,14 @@ def clipped_names(names: Iterable[tuple[str, str]], taken: Collection[str]) -> d
             if language.zipf(clip) >= _IN_USE:
                 found.setdefault(clip, set()).add(ident)
     return {clip: next(iter(ids)) for clip, ids in found.items() if len(ids) == 1}
+
+
+def _head(key: str) -> str | None:
+    """The word a place's name may be clipped from: a one-word name, or the first of two
+    where the second only says it is a room ("reprographics room")."""
+    words = key.split(" ")
+    if len(words) == 1:
+        return words[0]
+    if len(words) == 2 and words[1] in _ROOM_WORDS:
+        return words[0]
+    return None
