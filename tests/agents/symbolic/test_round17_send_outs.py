@@ -10,7 +10,8 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
-from helpers.arts_block import arts_block, arts_block_dry_cleaning
+from assistantx.core.office import parse_office
+from helpers.arts_block import arts_block, arts_block_dry_cleaning, raw_arts_block
 from helpers.reading import frame_reader
 
 _frame = frame_reader(arts_block, "colm")
@@ -103,4 +104,32 @@ def test_a_two_word_service_named_after_the_place_is_that_service(text: str) -> 
     assert frame.question is None and frame.decline is None, frame
     assert [(t.operation, t.item, t.destination) for t in frame.tasks] == [
         ("launder", "tunic", "Parkside Cleaners")
+    ]
+
+
+def _arts_block_posting_off() -> InstructionParser:
+    """The arts block whose post service is also asked for by "send off" (a verb of two
+    words the office declares): a declared phrase in its -ing form is still the verb."""
+    raw = raw_arts_block()
+    for op in raw["operations"]:
+        if op.get("sends_out"):
+            op["verbs"] = [*op["verbs"], "send off"]
+    return InstructionParser(parse_office(raw, "arts_block"))
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("my exam scripts need sending off to AQA today, can you sort it", "AQA"),
+        ("my Spanish scripts need sending off to Edexcel", "Edexcel"),
+        ("can you send my scripts off to AQA today", "AQA"),
+    ],
+)
+def test_a_declared_two_word_send_out_verb_said_with_ing_keeps_its_destination(
+    text: str, where: str
+) -> None:
+    frame = _arts_block_posting_off().parse(text, "colm")
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.operation, t.item, t.destination) for t in frame.tasks] == [
+        ("post_out", "scripts", where)
     ]

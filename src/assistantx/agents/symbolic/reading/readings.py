@@ -48,6 +48,8 @@ _WHEN = (
 )
 _ARTICLES = frozenset({"a", "an", "the", "some", "any"})
 _A = frozenset({"a", "an", "another"})
+# words after which a service's word may be a noun ("a courier bag", "their courier")
+_DETERMINERS = _ARTICLES | _A | {"my", "your", "his", "her", "our", "their", "this", "that"}
 _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
@@ -124,16 +126,21 @@ class MentionReader:
                 plain = None
         if plain is not None:
             outside = plain  # "sending" said in plain English: the service's verb here
-        elif outside is not None and not any(
-            m.start == outside.verb_start
-            and (
-                m.kind == "cue"
-                or (m.kind == "facility" and outside.means)
-                or (m.kind == "word" and outside.means and _phrase_ends(tokens, spaces, m.end))
+        elif (
+            outside is not None
+            and _after_a_determiner(tokens, outside.verb_start)
+            and not any(
+                m.start == outside.verb_start
+                and (
+                    m.kind == "cue"
+                    or (m.kind == "facility" and outside.means)
+                    or (m.kind == "word" and outside.means and _phrase_ends(tokens, spaces, m.end))
+                )
+                for m in mentions
             )
-            for m in mentions
         ):
-            # "a courier bag": the service's word used as a noun, not its verb; but "by
+            # "a courier bag": the service's word used as a noun (after a determiner), not its
+            # verb ("need sending off to AQA" is the verb); but "by
             # courier", "with the courier" name the service as the means (also where a
             # facility is so called), the noun ending its phrase (never "the courier bag")
             outside = None
@@ -381,6 +388,12 @@ def participle_adjectives(tokens: Sequence[Token], mentions: Sequence[Mention]) 
 
 # What may follow a service's noun that ends its phrase: "with the courier *please*".
 _AFTER_MEANS = frozenset({"please", "pls", "thanks", "thank", "today", "asap", "now", "and"})
+
+
+def _after_a_determiner(tokens: Sequence[Token], at: int | None) -> bool:
+    """Whether the word at ``at`` follows a determiner ("a courier bag", "my courier
+    bag"), where a service's word may be a noun."""
+    return at is not None and at > 0 and tokens[at - 1].word in _DETERMINERS
 
 
 def _phrase_ends(tokens: Sequence[Token], spaces: Sequence[str], k: int) -> bool:
