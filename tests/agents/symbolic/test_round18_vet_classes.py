@@ -1,0 +1,47 @@
+"""Blind round 18's reader classes (second half), by mechanism, on sentences of our own
+against a vet practice no sentence was written for (the round's office and sentences were
+never read). Only what is asked for moves, and only whose it was said to be."""
+
+from __future__ import annotations
+
+import pytest
+
+from helpers.reading import frame_reader
+from helpers.vet_practice import vet_practice
+
+_frame = frame_reader(vet_practice, "frank")
+
+
+def _tasks(text: str, who: str = "frank") -> list[tuple[str, str | None, str | None, str]]:
+    return [(t.kind, t.item, t.owner, t.recipient) for t in _frame(text, who).tasks]
+
+
+@pytest.mark.parametrize(
+    ("text", "item"),
+    [
+        ("Could you bring me an ice bucket? Running minipreps in 10", "ice_bucket"),
+        ("Could you bring me an ice bucket? Printing the rota later", "ice_bucket"),
+        ("could you bring me some gloves, stamping forms all afternoon", "gloves"),
+        ("bring me some gloves please. Running gels after lunch", "gloves"),
+    ],
+)
+def test_a_service_participle_after_a_request_is_the_speakers_doing(text: str, item: str) -> None:
+    """1: "Running minipreps in 10" after a request is why it is asked, not a service."""
+    assert _tasks(text) == [("transfer", item, None, "frank")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Printing my file please", [("print", "case_file", "frank", "frank")]),
+        (
+            "bring me some gloves. printing my file too please",
+            [("transfer", "gloves", None, "frank"), ("print", "case_file", "frank", "frank")],
+        ),
+    ],
+)
+def test_a_service_participle_that_asks_is_still_a_request(
+    text: str, expected: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    """1, near-miss: alone, or with "too please", the participle asks for the service."""
+    assert _tasks(text) == expected
