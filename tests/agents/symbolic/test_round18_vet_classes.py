@@ -45,3 +45,50 @@ def test_a_service_participle_that_asks_is_still_a_request(
 ) -> None:
     """1, near-miss: alone, or with "too please", the participle asks for the service."""
     assert _tasks(text) == expected
+
+
+_PRINT = ("print", "case_file", "frank", "frank")
+
+
+@pytest.mark.parametrize(
+    ("text", "second"),
+    [
+        (
+            "print off my file, and while you're at it grab me some gloves from stores",
+            ("transfer", "gloves", None, "frank"),
+        ),
+        (
+            "print off my file and while you are at it grab me some gloves",
+            ("transfer", "gloves", None, "frank"),
+        ),
+        (
+            "print my file, and if you can bring me an ice bucket",
+            ("transfer", "ice_bucket", None, "frank"),
+        ),
+        (
+            "print my file, and if you get a chance bring me an ice bucket",
+            ("transfer", "ice_bucket", None, "frank"),
+        ),
+        (
+            "print my file and while you're at it bring Hazel's stethoscope to me",
+            ("transfer", "stethoscope", "hazel", "frank"),
+        ),
+    ],
+)
+def test_an_aside_joins_a_second_request(
+    text: str, second: tuple[str, str | None, str | None, str]
+) -> None:
+    """2: "while you're at it", "if you can" join a second request; both are done in order."""
+    assert _tasks(text) == [_PRINT, second]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "print my file, and while you're at it don't bring me any gloves",
+        "print my file and while you're at it thanks for the gloves",
+    ],
+)
+def test_an_aside_before_a_negation_or_thanks_moves_no_gloves(text: str) -> None:
+    """2, near-miss: what follows the aside is no request: no gloves move."""
+    assert all(t[1] != "gloves" for t in _tasks(text))
