@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import pytest
 
-from helpers.reading import frame_reader
+from assistantx.agents.symbolic.reading.clipped_names import clipped_item
+from helpers.reading import answered_reader, frame_reader
 from helpers.vet_practice import vet_practice
 
 _frame = frame_reader(vet_practice, "frank")
@@ -92,3 +93,55 @@ def test_an_aside_joins_a_second_request(
 def test_an_aside_before_a_negation_or_thanks_moves_no_gloves(text: str) -> None:
     """2, near-miss: what follows the aside is no request: no gloves move."""
     assert all(t[1] != "gloves" for t in _tasks(text))
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("can you bring me a steth", [("transfer", "stethoscope", None, "hazel")]),
+        ("could I borrow Frank's stetho please", [("transfer", "stethoscope", "frank", "hazel")]),
+        ("bring me a thermom", [("transfer", "thermometer", None, "hazel")]),
+    ],
+)
+def test_a_clipped_item_name_is_the_item(
+    text: str, expected: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    """3: "steth" clips only "stethoscope": read as it."""
+    assert _tasks(text, "hazel") == expected
+
+
+def test_a_clipped_name_with_a_reason_is_offered_and_done_on_yes() -> None:
+    """3: "anyone got a spare steth? mine's in the wash" reads as the whole name would: the
+    holders are offered, and a yes fetches one for the asker."""
+    read = answered_reader(vet_practice, "hazel")
+    text = "anyone got a spare steth? mine's in the wash, puppy wee all over it lol"
+    first = read(text)
+    assert not first.tasks and first.question and "stethoscope" in first.question
+    assert [(t.kind, t.item, t.recipient) for t in read(text, ["yes please"]).tasks] == [
+        ("transfer", "stethoscope", "hazel")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text", ["thanks for the steth", "does anyone have a steth?", "don't bring me a steth"]
+)
+def test_a_clipped_name_in_thanks_a_question_or_a_negation_moves_nothing(text: str) -> None:
+    """3, near-miss: the clipped name changes what is named, never what is asked."""
+    assert _tasks(text, "hazel") == []
+
+
+@pytest.mark.parametrize(
+    ("word", "names", "expected"),
+    [
+        ("steth", {"stethoscope": "steth_id", "stapler": "s"}, "stethoscope"),
+        ("therm", {"thermometer": "t", "thermos": "f"}, None),  # two clipped: asked
+        ("ther", {"thermometer": "t"}, None),  # an English word form, left alone
+        ("stet", {"stethoscope": "steth_id"}, "stethoscope"),
+        ("ste", {"stethoscope": "steth_id"}, None),  # too short to say which
+        ("glov", {"glove": "g"}, None),  # only one letter short: a typo's business
+    ],
+)
+def test_clipped_item_needs_one_item_and_an_unknown_word(
+    word: str, names: dict[str, str], expected: str | None
+) -> None:
+    assert clipped_item(word, names) == expected

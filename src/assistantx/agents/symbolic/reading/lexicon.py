@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
-from assistantx.agents.symbolic.reading.clipped_names import clipped_names
+from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -367,7 +367,7 @@ class Lexicon:
             close = [c for c in close if c not in self.cue_words]
         if len(close) == 1 or (close and all(c in self.name_words for c in close)):
             return close[0]
-        return word
+        return clipped_item(word, self.items) or word  # "steth": a clipped item name
 
     def _known(self, word: str) -> bool:
         return (
