@@ -145,3 +145,39 @@ def test_clipped_item_needs_one_item_and_an_unknown_word(
     word: str, names: dict[str, str], expected: str | None
 ) -> None:
     assert clipped_item(word, names) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "Frank's stethoscope for me please, he said he's not using it till after lunch",
+            [("transfer", "stethoscope", "frank", "hazel")],
+        ),
+        ("Frank's stethoscope for me please.", [("transfer", "stethoscope", "frank", "hazel")]),
+        (
+            "Frank's thermometer for Jonno please, he's not using it",
+            [("transfer", "thermometer", "frank", "jonno")],
+        ),
+    ],
+)
+def test_a_verbless_request_opening_with_an_owners_name_is_asked(
+    text: str, expected: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    """4: "Frank's" is Frank's, not the verb "franks": the owner is asked for his item."""
+    assert _tasks(text, "hazel") == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Frank's stethoscope is broken",
+        "Frank's stethoscope snapped yesterday",
+        "Frank's stethoscope works fine",
+        "Frank's stethoscope for me please. actually never mind",
+        "thanks for Frank's stethoscope",
+    ],
+)
+def test_a_statement_about_an_owners_item_moves_nothing(text: str) -> None:
+    """4, near-miss: told, withdrawn or thanked for, Frank's stethoscope stays."""
+    assert _tasks(text, "hazel") == []

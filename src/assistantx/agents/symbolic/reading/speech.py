@@ -511,6 +511,7 @@ class SpeechActs:
             and w[0] not in self.lex.items  # "scissors please": the thing asked for
             and w[0] not in language.verb_lemmas(w[0])  # "put it on ...": an imperative
             and not self._named(w[0])  # "rose needs ...": a name, not the verb "rise"
+            and not self._possessive_name(w[0])  # "Frank's ...": a name's, not "franks"
             and w[0] not in _MODALS | _AUX | _WILLING
             and "AUX" not in language.lemmas(w[0])
             and language.is_finite_verb(w[0])
@@ -520,7 +521,7 @@ class SpeechActs:
             return True  # "got one already"
         if w[0] == "found" and w[1:2] and w[1] in ("the", "a", "an", "my", "mine", "his", "her"):
             return True  # "found the stapler in my drawer": a past find, never an errand
-        possessive = w[0].endswith("s") and self._named(w[0][:-1])  # "Hal's clipboard snapped"
+        possessive = self._possessive_name(w[0])  # "Hal's clipboard snapped"
         if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
             return False
         for n in range(1, min(len(w), 7)):
@@ -596,6 +597,10 @@ class SpeechActs:
         return any(
             " ".join(w[n : n + k]) in self.lex.items for n in range(len(w)) for k in (1, 2, 3)
         )
+
+    def _possessive_name(self, word: str) -> bool:
+        """ "franks" from "Frank's": a name of the office with its possessive "s"."""
+        return word.endswith("s") and self._named(word[:-1])
 
     def _doing_clause(self, w: list[str]) -> bool:
         """A piece that opens with a present participle no errand asks for, its subject left
