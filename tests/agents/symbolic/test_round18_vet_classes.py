@@ -181,3 +181,34 @@ def test_a_verbless_request_opening_with_an_owners_name_is_asked(
 def test_a_statement_about_an_owners_item_moves_nothing(text: str) -> None:
     """4, near-miss: told, withdrawn or thanked for, Frank's stethoscope stays."""
     assert _tasks(text, "hazel") == []
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        (
+            "make up 14 days of meloxicam for the cat in kennel 6 and bring it to me when "
+            "it's done",
+            "hazel",
+        ),
+        ("dispense 5 days of meloxicam for me please", "hazel"),
+        ("can you make up a course of amoxicillin for Jonno", "jonno"),
+    ],
+)
+def test_a_course_of_an_unknown_drug_is_the_dispensarys_product(text: str, recipient: str) -> None:
+    """5: "14 days of meloxicam" beside the dispensary's verb names what it makes; "for the
+    cat in kennel 6" is a purpose, the asker still the recipient."""
+    assert _tasks(text, "hazel") == [("produce", "meds", None, recipient)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me 14 days of meloxicam",  # no making service said: nothing guessed
+        "don't make up 14 days of meloxicam",
+        "thanks for making up 14 days of meloxicam",
+    ],
+)
+def test_a_course_without_the_service_asked_makes_nothing(text: str) -> None:
+    """5, near-miss: no service asked, or its making negated or thanked for."""
+    assert _tasks(text, "hazel") == []
