@@ -212,3 +212,33 @@ def test_a_course_of_an_unknown_drug_is_the_dispensarys_product(text: str, recip
 def test_a_course_without_the_service_asked_makes_nothing(text: str) -> None:
     """5, near-miss: no service asked, or its making negated or thanked for."""
     assert _tasks(text, "hazel") == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "jonno's asked for a thermometer down in kennels, can you get one to him?",
+        "Jonno's asked for a thermometer down in kennels, can you get one to him?",
+        "jonno's asked for a thermometer up in the lab, can you take one to him",
+    ],
+)
+def test_him_after_a_name_that_has_asked_is_that_person(text: str) -> None:
+    """6: "jonno's asked" is "Jonno has asked"; "him" is Jonno, the one person named, and
+    "down in kennels" says where, it names no kind of thermometer."""
+    assert _tasks(text, "hazel") == [("transfer", "thermometer", None, "jonno")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "jonno's asked for a thermometer",
+        "Jonno has asked for a thermometer",
+        "jonno's asked for a thermometer down in kennels",
+    ],
+)
+def test_a_name_that_has_asked_alone_is_offered_to_that_person(text: str) -> None:
+    """6, near-miss: said alone, a colleague's need is restated and asked first, offered to
+    the colleague (never the speaker), and nothing moves."""
+    frame = _frame(text, "hazel")
+    assert not frame.tasks
+    assert frame.question is not None and "Jonno" in frame.question

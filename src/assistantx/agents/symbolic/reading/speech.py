@@ -556,8 +556,8 @@ class SpeechActs:
     def need(self, words: list[str], requester_words: frozenset[str]) -> bool:
         """ "Min needs scissors": someone else's need, said as a fact."""
         w = content(words)
-        if _has_need_phrase(w) and self._named(w[0]):
-            return True
+        if _has_need_phrase(w) and (self._named(w[0]) or self._has_done(w)):
+            return True  # "Min asked for scissors", "jonno's asked for a thermometer"
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
@@ -601,6 +601,11 @@ class SpeechActs:
     def _possessive_name(self, word: str) -> bool:
         """ "franks" from "Frank's": a name of the office with its possessive "s"."""
         return word.endswith("s") and self._named(word[:-1])
+
+    def _has_done(self, w: list[str]) -> bool:
+        """ "jonno's asked for ...": a name's "'s" before a past participle is "has", the
+        name the subject, never an owner."""
+        return len(w) > 1 and self._possessive_name(w[0]) and language.is_past_participle(w[1])
 
     def _doing_clause(self, w: list[str]) -> bool:
         """A piece that opens with a present participle no errand asks for, its subject left
