@@ -242,3 +242,38 @@ def test_a_name_that_has_asked_alone_is_offered_to_that_person(text: str) -> Non
     frame = _frame(text, "hazel")
     assert not frame.tasks
     assert frame.question is not None and "Jonno" in frame.question
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the insurance form for Biscuit needs stamping please",
+        "can you get the insurance form for Biscuit stamped",
+        "stamp my insurance form for Biscuit please",
+    ],
+)
+def test_a_name_after_a_personal_paper_and_for_is_what_it_is_about(text: str) -> None:
+    """7: "for Biscuit" after the form names the patient it is about, nobody in the office:
+    the requester's form is stamped and comes back to her."""
+    assert _tasks(text, "hazel") == [("seal", "form", "hazel", "hazel")]
+
+
+@pytest.mark.parametrize(
+    ("text", "unknown"),
+    [
+        ("bring a thermometer for Biscuit", "Biscuit"),  # an ordinary thing: for someone
+        ("stamp my form for Biscuit and give it to Bob", "Bob"),  # a recipient named
+    ],
+)
+def test_an_unknown_recipient_is_still_asked_about(text: str, unknown: str) -> None:
+    """7, near-miss: a thing for an unknown name, or handed to one, is asked about first."""
+    frame = _frame(text, "hazel")
+    assert not frame.tasks
+    assert frame.question is not None and repr(unknown) in frame.question
+
+
+def test_a_name_of_the_office_after_a_paper_is_still_its_recipient() -> None:
+    """7, near-miss: "the insurance form for Frank" gives the stamped form to Frank."""
+    assert _tasks("the insurance form for Frank needs stamping please", "hazel") == [
+        ("seal", "form", "hazel", "frank")
+    ]
