@@ -277,3 +277,38 @@ def test_a_name_of_the_office_after_a_paper_is_still_its_recipient() -> None:
     assert _tasks("the insurance form for Frank needs stamping please", "hazel") == [
         ("seal", "form", "hazel", "frank")
     ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the holly wreath on the reception desk is shedding everywhere lol",
+        "the wreath on the reception desk by the window is shedding everywhere",
+        "fyi the gel doc is down, UV bulb's gone. told Hazel already",
+    ],
+)
+def test_a_statement_with_a_long_subject_moves_nothing(text: str) -> None:
+    """8: a statement whose subject carries where its thing is ("on the reception desk") is
+    words, answered and noted, not an unclear request; "holly" names a plant, not Holly."""
+    frame = _frame(text, "hazel")
+    assert not frame.tasks and frame.question is None and frame.decline is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "the gloves in the stores room by the door please bring me some",
+            [("transfer", "gloves", None, "hazel")],
+        ),
+        (
+            "Holly's thermometer on the desk by the window, bring it to me please",
+            [("transfer", "thermometer", "holly", "hazel")],
+        ),
+    ],
+)
+def test_a_request_with_a_long_subject_is_still_done(
+    text: str, expected: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    """8, near-miss: an errand's verb or "please" after the long subject still asks."""
+    assert _tasks(text, "hazel") == expected

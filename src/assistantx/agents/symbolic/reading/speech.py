@@ -85,6 +85,11 @@ _DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
 _SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ill", "im", "ive", "wed", "well"})
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
+# How far a statement's verb is looked for after its subject: six words for a plain subject,
+# ten where it carries a phrase of place ("the holly wreath on the reception desk is ...").
+_PLAIN_SUBJECT = 7
+_SUBJECT_REACH = 11
+_IN_PLACE_PHRASE = frozenset({"on", "in", "at", "by", "near", "under", "behind"})
 _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
@@ -524,7 +529,12 @@ class SpeechActs:
         possessive = self._possessive_name(w[0])  # "Hal's clipboard snapped"
         if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
             return False
-        for n in range(1, min(len(w), 7)):
+        # a subject may carry where its thing is ("the holly wreath on the reception desk
+        # is shedding"): the verb is looked for past such a phrase, not only in six words
+        placed = bool(set(w[1:_PLAIN_SUBJECT]) & _IN_PLACE_PHRASE)
+        for n in range(1, min(len(w), _SUBJECT_REACH if placed else _PLAIN_SUBJECT)):
+            if n >= _PLAIN_SUBJECT and w[n] in self.lex.cue_words:
+                return False  # far from the subject, an errand's verb: read as before
             x = w[n]
             if x in _NEGATIONS:
                 return True  # "Wang doesn't need the stapler any more": nobody asks
