@@ -5,11 +5,14 @@
 The clipped form must be a word in use (``language.zipf`` at least ``_IN_USE``) that is no
 dictionary word of its own ("photo" stays a photo), at least five letters and three short
 of the name, and clip only one name of the office; it names nothing else of the office.
+
+An item's one-word name said clipped ("steth" for "stethoscope") is read as that name when
+the word is otherwise unknown (``clipped_item``, the lexicon's typo step).
 """
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable
+from collections.abc import Collection, Iterable, Mapping
 
 from assistantx.core import language
 
@@ -47,3 +50,25 @@ def _head(key: str) -> str | None:
     if len(words) == 2 and words[1] in _ROOM_WORDS:
         return words[0]
     return None
+
+
+# An item's name clipped ("steth" for "stethoscope"): at least this many letters, and this many
+# short of the name, so a whole word said with a typo is left to the typo reading.
+_ITEM_SHORTEST = 4
+_ITEM_SHORT_BY = 2
+
+
+def clipped_item(word: str, items: Mapping[str, str]) -> str | None:
+    """The one-word item name (a key of ``items``, name → item type id) that ``word`` clips:
+    "steth" → "stethoscope". Only a word that is no English word or word form ("ther" stays
+    "ther"), at least four letters and two short of the name, clipping the names of exactly
+    one item type; clipping several ("therm" for a thermometer and a thermos), it names none,
+    and the request is asked about as an unknown thing."""
+    if len(word) < _ITEM_SHORTEST or not word.isalpha() or language.is_word_form(word):
+        return None
+    found = {
+        ident: key
+        for key, ident in items.items()
+        if key.isalpha() and len(key) - len(word) >= _ITEM_SHORT_BY and key.startswith(word)
+    }
+    return next(iter(found.values())) if len(found) == 1 else None

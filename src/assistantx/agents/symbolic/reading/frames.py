@@ -29,6 +29,7 @@ from assistantx.agents.symbolic.reading._parties import (
     UnresolvedPronoun,
     clause_roles,
 )
+from assistantx.agents.symbolic.reading.asides import aside_length
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
@@ -224,22 +225,29 @@ class FrameReader:
     def _clauses(self, readings: Readings) -> list[Clause]:
         tokens, mentions, gaps = readings.tokens, readings.mentions, readings.gaps
         clauses: list[Clause] = [Clause([])]
+        aside_end = 0  # an aside's mentions, skipped ("and while you're at it grab ...")
         for n, m in enumerate(mentions):
+            if n < aside_end:
+                continue
             word = tokens[m.start].word
             gap = gaps[m.start]
+            joined = word in _JOIN_WORDS or word in _BREAK_WORDS
+            after_join = n + 1 if joined else n
+            aside = aside_length(mentions, after_join, tokens) if joined or "," in gap else 0
             spaced_dash = gap.strip() in ("-", "–", "—", "--") and gap != gap.strip()
             # a sentence may start on a word that is no mention ("... stool. the stool"): the
             # break is wherever one starts since the last mention (a title's stop is none)
             since = mentions[n - 1].end if n else m.start
             ended = "".join(gaps[since : m.start + 1])
             hard = (any(c in ended for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
-            soft = (word in _BREAK_WORDS or word in _JOIN_WORDS or "," in gaps[m.start]) and (
-                self._starts_request(
-                    mentions, n + (1 if word in _JOIN_WORDS | _BREAK_WORDS else 0), tokens
-                )
+            soft = bool(aside) or (
+                (joined or "," in gap) and self._starts_request(mentions, after_join, tokens)
             )
             if (hard or soft) and clauses[-1].mentions:
                 clauses.append(Clause([]))
+            if aside:
+                aside_end = after_join + aside
+                continue
             if m.kind == "word" and (word in _JOIN_WORDS or word in _BREAK_WORDS):
                 continue
             clauses[-1].mentions.append(m)

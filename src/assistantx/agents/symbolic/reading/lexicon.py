@@ -26,7 +26,8 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
-from assistantx.agents.symbolic.reading.clipped_names import clipped_names
+from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
+from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -152,6 +153,7 @@ class Lexicon:
     operation_names: dict[tuple[str, ...], str] = field(default_factory=dict)
     # near forms of the office's verbs ("fire-proof", "flameproofed", "dying" for "dye")
     near_forms: NearForms = field(default_factory=lambda: NearForms({}, 0))
+    courses: Courses = field(default_factory=lambda: Courses({}))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -173,6 +175,7 @@ class Lexicon:
                 cues.setdefault(kind, set()).update(forms)
         lex.verb_phrases = VerbPhrases.from_office(office)
         lex.near_forms = NearForms.from_office(office, inflections)
+        lex.courses = Courses.from_office(office)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -330,6 +333,8 @@ class Lexicon:
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
         # "flame-proofed", "dying": near forms of the office's own verbs are those verbs
         out = self.near_forms.join(out, self._known)
+        # "14 days of meloxicam" with a making service's verb: that service's product
+        out = self.courses.read(out, self._known)
         # "needs a lamination": an operation named by a noun is read as its verb
         out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"
@@ -367,7 +372,7 @@ class Lexicon:
             close = [c for c in close if c not in self.cue_words]
         if len(close) == 1 or (close and all(c in self.name_words for c in close)):
             return close[0]
-        return word
+        return clipped_item(word, self.items) or word  # "steth": a clipped item name
 
     def _known(self, word: str) -> bool:
         return (

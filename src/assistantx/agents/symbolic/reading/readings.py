@@ -256,6 +256,21 @@ class MentionReader:
                 out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
         return out
 
+    def _paper_about(self, tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+        """ "the insurance form for Biscuit", "my claim for Rex": a name nobody in the office
+        has, right after a personal paper and "for", says what the paper is about (a patient,
+        a case), not someone to hand it to; an ordinary thing "for Bob" still asks who Bob
+        is. Only a capitalised word that names nothing of the office."""
+        m = mentions[n]
+        if n < 2 or not m.text[:1].isupper() or m.possessive:
+            return False
+        before = mentions[n - 2]  # the paper, then "for"
+        if tokens[m.start - 1].word != "for" or before.end != m.start - 1:
+            return False
+        if before.kind != "item" or len(before.ids) != 1:
+            return False
+        return self.office.item_type(before.id).kind == "personal"
+
     def _doubts(
         self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside | None
     ) -> list[str]:
@@ -270,6 +285,8 @@ class MentionReader:
                 names = " or ".join(self.office.person(i).name for i in m.ids)
                 said = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"Who do you mean by {said!r}: {names}?")
+            if m.kind == "word" and self._paper_about(tokens, mentions, n):
+                continue  # "the insurance form for Biscuit": whom the paper is about
             if m.kind == "word" and _unknown_name(tokens, mentions, n):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")

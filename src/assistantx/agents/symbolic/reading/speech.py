@@ -85,6 +85,11 @@ _DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
 _SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ill", "im", "ive", "wed", "well"})
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
+# How far a statement's verb is looked for after its subject: six words for a plain subject,
+# ten where it carries a phrase of place ("the holly wreath on the reception desk is ...").
+_PLAIN_SUBJECT = 7
+_SUBJECT_REACH = 11
+_IN_PLACE_PHRASE = frozenset({"on", "in", "at", "by", "near", "under", "behind"})
 _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
@@ -511,6 +516,7 @@ class SpeechActs:
             and w[0] not in self.lex.items  # "scissors please": the thing asked for
             and w[0] not in language.verb_lemmas(w[0])  # "put it on ...": an imperative
             and not self._named(w[0])  # "rose needs ...": a name, not the verb "rise"
+            and not self._possessive_name(w[0])  # "Frank's ...": a name's, not "franks"
             and w[0] not in _MODALS | _AUX | _WILLING
             and "AUX" not in language.lemmas(w[0])
             and language.is_finite_verb(w[0])
@@ -520,10 +526,15 @@ class SpeechActs:
             return True  # "got one already"
         if w[0] == "found" and w[1:2] and w[1] in ("the", "a", "an", "my", "mine", "his", "her"):
             return True  # "found the stapler in my drawer": a past find, never an errand
-        possessive = w[0].endswith("s") and self._named(w[0][:-1])  # "Hal's clipboard snapped"
+        possessive = self._possessive_name(w[0])  # "Hal's clipboard snapped"
         if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
             return False
-        for n in range(1, min(len(w), 7)):
+        # a subject may carry where its thing is ("the holly wreath on the reception desk
+        # is shedding"): the verb is looked for past such a phrase, not only in six words
+        placed = bool(set(w[1:_PLAIN_SUBJECT]) & _IN_PLACE_PHRASE)
+        for n in range(1, min(len(w), _SUBJECT_REACH if placed else _PLAIN_SUBJECT)):
+            if n >= _PLAIN_SUBJECT and w[n] in self.lex.cue_words:
+                return False  # far from the subject, an errand's verb: read as before
             x = w[n]
             if x in _NEGATIONS:
                 return True  # "Wang doesn't need the stapler any more": nobody asks
@@ -555,8 +566,8 @@ class SpeechActs:
     def need(self, words: list[str], requester_words: frozenset[str]) -> bool:
         """ "Min needs scissors": someone else's need, said as a fact."""
         w = content(words)
-        if _has_need_phrase(w) and self._named(w[0]):
-            return True
+        if _has_need_phrase(w) and (self._named(w[0]) or self._has_done(w)):
+            return True  # "Min asked for scissors", "jonno's asked for a thermometer"
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
@@ -596,6 +607,15 @@ class SpeechActs:
         return any(
             " ".join(w[n : n + k]) in self.lex.items for n in range(len(w)) for k in (1, 2, 3)
         )
+
+    def _possessive_name(self, word: str) -> bool:
+        """ "franks" from "Frank's": a name of the office with its possessive "s"."""
+        return word.endswith("s") and self._named(word[:-1])
+
+    def _has_done(self, w: list[str]) -> bool:
+        """ "jonno's asked for ...": a name's "'s" before a past participle is "has", the
+        name the subject, never an owner."""
+        return len(w) > 1 and self._possessive_name(w[0]) and language.is_past_participle(w[1])
 
     def _doing_clause(self, w: list[str]) -> bool:
         """A piece that opens with a present participle no errand asks for, its subject left

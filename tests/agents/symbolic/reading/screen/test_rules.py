@@ -25,6 +25,7 @@ def test_the_rules_in_priority_order() -> None:
         "fact",
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
+        "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
         "question",
         "statement",  # a problem reported after a question about a facility's state

@@ -60,8 +60,8 @@ parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``contrast``,
 ``wish``, ``thanks``, ``condition``, ``negation``, ``unsafe``, ``destructive``, ``placement``,
-``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``own_need``, ``question``,
-``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
+``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``doing_after``, ``own_need``,
+``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
 ``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
 reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
 screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:

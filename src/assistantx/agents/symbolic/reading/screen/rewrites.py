@@ -16,6 +16,8 @@ from assistantx.core import language
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
 
+_HAS_ASKED = re.compile(r"(\w)['’]s\s+asked\b", re.IGNORECASE)
+
 
 def rewrite(
     terms: Terms, msg: Message, text: str, hints: list[Hint], context: list[str]
@@ -25,6 +27,8 @@ def rewrite(
     evidence += found
     text, found = kept_things(terms, msg, text)
     evidence += found
+    # "jonno's asked for ...": the "'s" of "has", so the need's subject is Jonno
+    text = _HAS_ASKED.sub(r"\1 has asked", text)
     for phrase in NEED_PHRASES:  # "Chen is looking for a pen": Chen needs a pen
         spaced = r"[\s']*".join(re.escape(w) for w in phrase)
         text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)

@@ -8,6 +8,7 @@ from collections.abc import Callable
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
+from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
@@ -54,6 +55,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("fact", fact),
     ("statement", facility_report),
     ("statement", own_doing),
+    ("statement", doing_after),
     ("statement", own_need),
     ("question", question),
     ("statement", problem),

@@ -172,7 +172,10 @@ def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
 
     def compound(m: Mention) -> bool:  # "tea time": the item names a kind of time
         after = tokens[m.end].word if m.end < len(tokens) else ""
-        return language.is_noun(after) and after not in terms.en.courtesy
+        # "a thermometer down in kennels": a word that is also an adverb of place or
+        # direction says where the item is wanted, not what kind of thing it names
+        adverb = "ADV" in language.lemmas(after)
+        return language.is_noun(after) and after not in terms.en.courtesy and not adverb
 
     return all(m.start in modifying or compound(m) for m in items)
 

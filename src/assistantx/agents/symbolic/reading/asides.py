@@ -1,0 +1,33 @@
+"""Asides that join a second request to a first: "print my file, and while you're at it grab
+me some gloves", "... and if you can bring me an ice bucket". The aside says only that the
+second part is asked as well; it names nothing, so its words ("it" in "at it") are no part of
+either request, and the second part is a request of its own when an errand's or service's
+verb follows the aside. The phrases are English data (``request_asides``)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english
+
+_ASIDES: tuple[tuple[str, ...], ...] = tuple(
+    sorted((tuple(p.split()) for p in english.entries("request_asides")), key=len, reverse=True)
+)
+
+
+def aside_length(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -> int:
+    """How many mentions from ``mentions[n]`` on are one aside phrase (0: none), counted only
+    when a task's verb follows it ("while you're at it grab ...")."""
+    if n >= len(mentions):
+        return 0
+    start = mentions[n].start
+    for phrase in _ASIDES:
+        end = start + len(phrase)
+        if tuple(t.word for t in tokens[start:end]) != phrase:
+            continue
+        inside = sum(1 for m in mentions[n:] if m.start < end)
+        if n + inside < len(mentions) and mentions[n + inside].kind == "cue":
+            return inside
+    return 0
