@@ -666,10 +666,13 @@ class TaskReader:
     def fill(self, task: Task, roles: Roles, requester: str) -> Task:
         """A clause with no task of its own completes the previous one."""
         update: dict[str, str] = {}
-        if roles.recipient:
-            update["recipient"] = roles.recipient[-1]
+        by_person = task_kinds.kind_of(task.kind) and task_kinds.kind(task.kind).by_person
+        # "P needs to sign my form. Take it to her": the way to the signer already named, not
+        # whom the signed paper goes to (it comes back, unless someone else is named)
+        onward = [p for p in roles.recipient if not (by_person and p == task.actor)]
+        if onward:
+            update["recipient"] = onward[-1]
         for who in roles.actor + roles.bare:
-            by_person = task_kinds.kind_of(task.kind) and task_kinds.kind(task.kind).by_person
             if by_person and task.actor is None and "actor" not in update:
                 update["actor"] = who
             elif task.kind == "transfer" and task.owner is None and "owner" not in update:
