@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
 from assistantx.agents.symbolic.reading.offer_reply import (
@@ -226,6 +227,8 @@ class InstructionParser:
                 errands=readings.errands,
             )
             frame = _one_send_each(frame)
+            # "print my file? it's Fern who needs the hard copy, not me": for Fern
+            frame = for_needer(frame, needer(whole, requester, self.lex.name_words))
             frame = declined_use_up(self.office, frame)
             unread = unread_part(self.office, readings, frame) if frame.understood else None
             if unread is not None:  # a part no task carries: asked, never dropped
