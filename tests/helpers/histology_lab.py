@@ -2,7 +2,8 @@
 office and sentences were never read): three colleagues share the first name Jude and are told
 apart by an initial ("Jude A", "Jude C", "Jude O"), a signable paper is a "timesheet" (also a
 "COSHH form"), the printer prints files, the reagent store only makes up 70% ethanol, and the
-specimen desk sends samples off to an outside lab or for sequencing, asking which lab first."""
+specimen desk sends samples off to an outside lab (asking which lab first) and minipreps for
+sequencing (asking which company)."""
 
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ _PEOPLE = (
     ob.person("jude_a", "Jude Ashby", "timesheet", "timer", "forceps", aliases=["Jude A"]),
     ob.person("jude_c", "Jude Carver", "timesheet", "forceps", aliases=["Jude C"]),
     ob.person("jude_o", "Jude Okoro", "timesheet", "timer", aliases=["Jude O"]),
-    ob.person("bea", "Bea Lund", "timesheet", "sample", "timer"),
+    ob.person("bea", "Bea Lund", "timesheet", "sample", "timer", "miniprep"),
 )
 
 
@@ -42,6 +43,7 @@ def raw_histology_lab() -> dict[str, Any]:
                 synonyms=["coshh form", "holiday form"],
             ),
             ob.item("sample", "sample", "personal", synonyms=["biopsy", "slides"]),
+            ob.item("miniprep", "miniprep", "personal", synonyms=["plasmid prep"]),
             ob.item("file", "file", "electronic", synonyms=["protocol"]),
             ob.item("printout", "printout", "product", synonyms=["hard copy"]),
             ob.item("ethanol", "70% ethanol", "product", synonyms=["ethanol"]),
@@ -56,6 +58,14 @@ def raw_histology_lab() -> dict[str, Any]:
                 input="sample",
                 sends_out=True,
                 destination_asked="which lab",
+            ),
+            ob.operation(
+                "sequence",
+                "sequence",
+                name="sequencing",
+                input="miniprep",
+                sends_out=True,
+                destination_asked="which company",
             ),
         ],
         facilities=[
@@ -74,7 +84,7 @@ def raw_histology_lab() -> dict[str, Any]:
                 "specimen desk",
                 at="specimen_room",
                 guards=["wren"],
-                operations=["send_off"],
+                operations=["send_off", "sequence"],
             ),
         ],
         home="print_bay",

@@ -244,3 +244,20 @@ def _bracketed(said: str) -> str:
 
 def _ends(gap: str) -> bool:
     return any(c in _END_MARKS for c in gap)
+
+
+# Words that only say a place is elsewhere, never which place ("the *outside* lab").
+_ELSEWHERE = frozenset({"outside", "external", "offsite", "off", "site", "other", "somewhere"})
+_ARTICLES = frozenset({"the", "a", "an", "some", "one", "our"})
+
+
+def only_describes(phrase: str, asked: str) -> bool:
+    """Whether a destination ``phrase`` only describes the kind of place the service asks
+    for (``asked``: "which lab") without naming one ("the outside lab", "an external lab"): no
+    capitalised word, and no word beyond an article, the question's own words and words of
+    being elsewhere. Such a phrase is no destination; the place is asked."""
+    said = phrase.replace("-", " ").split()
+    if not said or any(w[:1].isupper() or not w.isalpha() for w in said):
+        return False
+    question = set(language.fold(asked).replace(",", " ").split())
+    return all(w in _ARTICLES | _ELSEWHERE | question for w in said)
