@@ -50,3 +50,27 @@ def test_a_named_place_is_still_the_destination(text: str, place: str) -> None:
 def test_the_answer_to_which_lab_is_the_destination() -> None:
     frame = _answered("send my biopsy off to the outside lab pls", ["Northgate Diagnostics"])
     assert _sent(frame) == [("sample", "send_off", "Northgate Diagnostics")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "send my biopsy off to the outside lab, Northgate Diagnostics please",
+        "send my biopsy off to the outside lab (Northgate Diagnostics)",
+    ],
+)
+def test_the_name_said_after_the_description_is_the_destination(text: str) -> None:
+    assert _sent(_frame(text)) == [("sample", "send_off", "Northgate Diagnostics")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "send my biopsy off to the outside lab, thanks",
+        "send my biopsy off to the outside lab, Ivy please",
+    ],
+)
+def test_no_name_after_the_description_still_asks(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == []
+    assert frame.question is not None and "Where should I send off it to?" in frame.question

@@ -10,6 +10,7 @@ an organisation) for the outcome the requester reads.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass
 
@@ -261,3 +262,19 @@ def only_describes(phrase: str, asked: str) -> bool:
         return False
     question = set(language.fold(asked).replace(",", " ").split())
     return all(w in _ARTICLES | _ELSEWHERE | question for w in said)
+
+
+# A place's name said right after a description of it ("the outside lab, Northgate Labs please").
+_NAMED_AFTER = re.compile(
+    r"^\s*[,:(\u2013\u2014-]\s*([A-Z][\w&'.]*(?:\s+(?:[A-Z][\w&'.]*|&|of|and))*)"
+)
+
+
+def named_after(text: str, phrase: str) -> str | None:
+    """The capitalised name said right after a described destination in ``text``, if any."""
+    at = text.find(phrase)
+    if at < 0:
+        return None
+    found = _NAMED_AFTER.match(text[at + len(phrase) :])
+    name = found.group(1).rstrip(" .") if found else ""
+    return name if name and name.split()[-1] not in ("and", "of", "&") else None
