@@ -23,8 +23,11 @@ def normalize(text: str) -> str:
     's, and titles; collapse spaces."""
     text = fold(text)
     text = re.sub(r"'s\b", "", text)
-    words = [w for w in _NON_WORD.split(text) if w and w not in TITLES]
-    return " ".join(words)
+    split = [w for w in _NON_WORD.split(text) if w]
+    # "Robin A": a one-letter last word after a name is an initial, not the article "a"
+    initial = split[-1:] if len(split) > 1 and len(split[-1]) == 1 else []
+    words = [w for w in split[: len(split) - len(initial)] if w not in TITLES]
+    return " ".join(words + initial) if words else ""
 
 
 class NameIndex:

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office, OperationShape
 from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task
@@ -637,7 +638,8 @@ class TaskReader:
                 for p in self.office.facility(f).products[:1]
                 if p not in (self.printout, self.copy) and ("give" in s.cues or "make" in s.cues)
             ]
-            if made:
+            if made and unlisted_thing(clause.mentions) is None:
+                # "50 ml of chloroform from the chem store": never what the store makes instead
                 return [Task(kind="produce", item=p, recipient=s.recipient) for p in made]
             if "seal" in s.cues and s.seal_tool:  # "bring me the stamp": the seal as an item
                 items = physical = [
@@ -666,10 +668,13 @@ class TaskReader:
     def fill(self, task: Task, roles: Roles, requester: str) -> Task:
         """A clause with no task of its own completes the previous one."""
         update: dict[str, str] = {}
-        if roles.recipient:
-            update["recipient"] = roles.recipient[-1]
+        by_person = task_kinds.kind_of(task.kind) and task_kinds.kind(task.kind).by_person
+        # "P needs to sign my form. Take it to her": the way to the signer already named, not
+        # whom the signed paper goes to (it comes back, unless someone else is named)
+        onward = [p for p in roles.recipient if not (by_person and p == task.actor)]
+        if onward:
+            update["recipient"] = onward[-1]
         for who in roles.actor + roles.bare:
-            by_person = task_kinds.kind_of(task.kind) and task_kinds.kind(task.kind).by_person
             if by_person and task.actor is None and "actor" not in update:
                 update["actor"] = who
             elif task.kind == "transfer" and task.owner is None and "owner" not in update:

@@ -10,6 +10,7 @@ an organisation) for the outcome the requester reads.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass
 
@@ -244,3 +245,36 @@ def _bracketed(said: str) -> str:
 
 def _ends(gap: str) -> bool:
     return any(c in _END_MARKS for c in gap)
+
+
+# Words that only say a place is elsewhere, never which place ("the *outside* lab").
+_ELSEWHERE = frozenset({"outside", "external", "offsite", "off", "site", "other", "somewhere"})
+_ARTICLES = frozenset({"the", "a", "an", "some", "one", "our"})
+
+
+def only_describes(phrase: str, asked: str) -> bool:
+    """Whether a destination ``phrase`` only describes the kind of place the service asks
+    for (``asked``: "which lab") without naming one ("the outside lab", "an external lab"): no
+    capitalised word, and no word beyond an article, the question's own words and words of
+    being elsewhere. Such a phrase is no destination; the place is asked."""
+    said = phrase.replace("-", " ").split()
+    if not said or any(w[:1].isupper() or not w.isalpha() for w in said):
+        return False
+    question = set(language.fold(asked).replace(",", " ").split())
+    return all(w in _ARTICLES | _ELSEWHERE | question for w in said)
+
+
+# A place's name said right after a description of it ("the outside lab, Northgate Labs please").
+_NAMED_AFTER = re.compile(
+    r"^\s*[,:(\u2013\u2014-]\s*([A-Z][\w&'.]*(?:\s+(?:[A-Z][\w&'.]*|&|of|and))*)"
+)
+
+
+def named_after(text: str, phrase: str) -> str | None:
+    """The capitalised name said right after a described destination in ``text``, if any."""
+    at = text.find(phrase)
+    if at < 0:
+        return None
+    found = _NAMED_AFTER.match(text[at + len(phrase) :])
+    name = found.group(1).rstrip(" .") if found else ""
+    return name if name and name.split()[-1] not in ("and", "of", "&") else None

@@ -69,6 +69,35 @@ _COURTESY_TITLES = frozenset(
     {"a", "an", "the", "our", "mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
 )
 _POLITE = english.words("polite")
+# Words that may follow a person's name but never an article ("Robin A please", "to Robin A
+# and ..."): after them a one-letter word ending a name is an initial.
+_AFTER_NAME = _POLITE | frozenset(
+    {
+        "she",
+        "he",
+        "they",
+        "and",
+        "or",
+        "to",
+        "for",
+        "who",
+        "if",
+        "because",
+        "so",
+        "when",
+        "now",
+        "today",
+        "asap",
+        "is",
+        "has",
+        "needs",
+        "wants",
+        "said",
+        "thanks",
+        "too",
+        "as",
+    }
+)
 # the articles an alias may open with ("the Provost", "our Dean")
 _ALIAS_ARTICLES = frozenset({"the", "our"})
 # A determiner before a name word makes it the ordinary word ("the grace period").
@@ -389,7 +418,9 @@ class Lexicon:
     def scan(self, tokens: Sequence[Token]) -> list[Mention]:
         """Mentions in text order; titles and articles are skipped inside phrases."""
         content = [
-            i for i, t in enumerate(tokens) if t.word not in TITLES or self._role_at(tokens, i)
+            i
+            for i, t in enumerate(tokens)
+            if t.word not in TITLES or self._role_at(tokens, i) or self._initial_at(tokens, i)
         ]
         mentions: list[Mention] = []
         k = 0
@@ -441,6 +472,18 @@ class Lexicon:
             if later.kind == "pronoun" and later.possessive and after and after.kind == "item":
                 return after.id
         return None
+
+    def _initial_at(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "Robin A's clippers": a one-letter word after a name that, with it, is someone's
+        name ("Robin A" beside "Robin C") is their initial, not an article."""
+        if i == 0 or len(tokens[i].word) != 1:
+            return False
+        if f"{tokens[i - 1].word} {tokens[i].word}" not in self.people:
+            return False
+        # "give Robin a timer": an article before a thing; the initial ends the name
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else None
+        ends = nxt is None or nxt.opens or nxt.after_pause or nxt.word in _AFTER_NAME
+        return tokens[i].possessive or ends
 
     def _role_at(self, tokens: Sequence[Token], i: int) -> bool:
         """ "by the manager": a role title with no name after it names the one it stands for."""

@@ -5,7 +5,7 @@ outside taken from the readings ("send out my drawing to the client") or asked f
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.destination import Outside
+from assistantx.agents.symbolic.reading.destination import Outside, named_after, only_describes
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
@@ -148,6 +148,12 @@ class OperationChooser:
                 # a fax leaves the office: where to is the requester's to say, never a guess;
                 # the readings stage found the words ("send out my drawing to the client")
                 where = outside.phrase if outside is not None else None
+                if where is not None and only_describes(where, op.destination_asked):
+                    # "to the outside lab": no lab named; asked which, unless its name follows
+                    where = named_after(lexed.text, where)
+                    named_people = {m.text for m in lexed.mentions if m.kind == "person"}
+                    if where is not None and any(n in where for n in named_people):
+                        where = None  # "..., Ivy please": the colleague addressed, not a place
                 where = where or destination
                 if where is None:
                     return TaskFrame(

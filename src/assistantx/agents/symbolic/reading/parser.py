@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
 from assistantx.agents.symbolic.reading.offer_reply import (
@@ -95,6 +96,7 @@ from assistantx.agents.symbolic.reading.unknown_items import (
     unknown_item,
     with_choice,
 )
+from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -226,6 +228,8 @@ class InstructionParser:
                 errands=readings.errands,
             )
             frame = _one_send_each(frame)
+            # "print my file? it's Fern who needs the hard copy, not me": for Fern
+            frame = for_needer(frame, needer(whole, requester, self.lex.name_words))
             frame = declined_use_up(self.office, frame)
             unread = unread_part(self.office, readings, frame) if frame.understood else None
             if unread is not None:  # a part no task carries: asked, never dropped
@@ -250,11 +254,26 @@ class InstructionParser:
                 return TaskFrame(requester=requester, question=proposal(only[0]))
             which = category_asked(terms, tokens, mentions)  # "a drink": tea or cocoa?
             unknown = unknown_item(terms, tokens, mentions) if which is None else None
+            unlisted = unlisted_thing(mentions)
+            if which is None and unknown is None and unlisted is not None:
+                # "50 ml of chloroform from the chem store": declined by name, nothing swapped
+                unknown = self._not_there(*unlisted)
             if which is not None:
                 frame = TaskFrame(requester=requester, question=which)
             elif unknown is not None:
                 frame = TaskFrame(requester=requester, decline=unknown)
         return frame
+
+    def _not_there(self, thing: str, facility_id: str) -> str:
+        """The decline of a thing the facility named does not make or keep, with what it does."""
+        facility = self.office.facility(facility_id)
+        offers = [self.office.item_type(t).name for t in facility.products]
+        offers += [self.office.item_type(s.type).name for s in facility.supplies]
+        has = f" It has {' and '.join(dict.fromkeys(offers))}." if offers else ""
+        return (
+            f"Sorry, there is no {thing} at the {facility.name} that I know of, so I can't "
+            f"get you any.{has}"
+        )
 
     def _with_one_choice(self, text: str, requester: str) -> str | None:
         """The request with its category words replaced by the office's one such thing."""
