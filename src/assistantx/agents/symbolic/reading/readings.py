@@ -51,6 +51,7 @@ _A = frozenset({"a", "an", "another"})
 _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
+_LOCATION_PREPOSITIONS = english.words("location_prepositions")
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
 # The question when a send-out service's destination is a place or group of the office; the
 # answer names the place outside instead (``InstructionParser.parse_with_answers``).
@@ -266,6 +267,8 @@ class MentionReader:
             if m.kind == "word" and _unknown_name(tokens, mentions, n):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
+            if m.kind == "facility" and _where_an_item_is_wanted(tokens, mentions, n):
+                continue  # "a tape measure in the rehearsal room": the place, not its service
             if m.kind == "facility" and self._unsupported_facility(m.id):
                 f = self.office.facility(m.id)
                 out.append(
@@ -288,6 +291,18 @@ def _phrase_forms(verb: str) -> frozenset[str]:
     return frozenset(language.verb_forms(verb)) | {
         " ".join([*head, form]) for form in language.verb_forms(last)
     }
+
+
+def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """ "need a tape measure in the rehearsal room": a facility after a location preposition,
+    in a sentence that names an item, says where the item is wanted, not which service is
+    asked for; a room whose service nobody runs is then no reason to refuse."""
+    start = mentions[n].start
+    while start > 0 and tokens[start - 1].word in _ARTICLES:
+        start -= 1
+    if start == 0 or tokens[start - 1].word not in _LOCATION_PREPOSITIONS:
+        return False
+    return any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
 
 
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:

@@ -1,0 +1,50 @@
+"""Blind round 16's reader classes, on an opera house's wardrobe office built in the tests
+(``helpers.opera_wardrobe``; the round's names are not used). Each class has its phrasings
+and the near-misses that must not change: a reading the reader is unsure of is asked, never
+acted on."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.core.task_schema import TaskFrame
+from helpers.opera_wardrobe import opera_wardrobe
+from helpers.reading import answered_reader, frame_reader
+
+_frame = frame_reader(opera_wardrobe, "ilse")
+_answered = answered_reader(opera_wardrobe, "ilse")
+
+
+def _moves(frame: TaskFrame) -> list[tuple[str, str | None, str | None, str]]:
+    return [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
+
+
+# -- class 1: a room named as where an item is wanted is no request for the room's service ----
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "need a spirit level in the scene dock asap, hanging the flats",
+        "could someone bring me a spirit level in the scene dock",
+        "I need a level at the scene dock please",
+    ],
+)
+def test_an_item_wanted_in_a_room_whose_service_nobody_runs_is_brought(text: str) -> None:
+    frame = _frame(text, "bram")
+    assert _moves(frame) == [("transfer", "spirit_level", None, "bram")]
+    assert frame.question is None and frame.decline is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["could you rig the scene dock", "can you sort out the scene dock for me"],
+)
+def test_the_room_itself_asked_for_is_still_refused(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == []
+    assert "can't help with the scene dock" in (frame.question or frame.decline or "")
+
+
+def test_a_question_about_an_item_in_the_room_moves_nothing() -> None:
+    assert _frame("is there a spirit level in the scene dock?").tasks == []
