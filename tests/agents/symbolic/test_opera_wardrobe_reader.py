@@ -48,3 +48,32 @@ def test_the_room_itself_asked_for_is_still_refused(text: str) -> None:
 
 def test_a_question_about_an_item_in_the_room_moves_nothing() -> None:
     assert _frame("is there a spirit level in the scene dock?").tasks == []
+
+
+# -- class 5: "mine" as the subject of a clause is the reason, never the item asked for ------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can i borrow Bram's seam ripper? mine have gone blunt",
+        "can i borrow Bram's seam ripper? mine are at home",
+        "could I borrow Bram's seam ripper, mine's broken",
+        "can I have a lend of Bram's seam ripper? mine were left at home",
+    ],
+)
+def test_mine_as_a_subject_leaves_the_borrowing_as_asked(text: str) -> None:
+    frame = _frame(text)
+    assert _moves(frame) == [("transfer", "seam_ripper", "bram", "ilse")]
+    assert frame.question is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Gwen needs a seam ripper, can you take mine to her",
+        "Gwen wants a seam ripper, take mine over to her please",
+    ],
+)
+def test_mine_as_an_object_is_still_my_item(text: str) -> None:
+    assert _moves(_frame(text)) == [("transfer", "seam_ripper", "ilse", "gwen")]
