@@ -1,6 +1,6 @@
 """An opera house's wardrobe office for the reader's tests of blind round 16's classes (written
 without the round's names): spirit levels and seam rippers owned by people, a scene dock whose
-only service (rigging) the assistant cannot run, PP3 batteries counted at a loading bay whose
+only service (rigging) the assistant cannot run, PP3 batteries counted at a goods door whose
 keepers also send gowns out to be dry cleaned (asking the cleaner's name), and a shake bar
 whose service is asked for with the verb "shake" and whose product is also called "a shake"."""
 
@@ -26,7 +26,7 @@ def raw_opera_wardrobe() -> dict[str, Any]:
         desks=ob.desk_row(len(_PEOPLE), x0=4.0, y=5.0),
         rooms=[
             ob.room("scene_dock", "Scene dock", 30.0, 6.0, kind="room"),
-            ob.room("loading_bay", "Loading bay", 20.0, 18.0),
+            ob.room("goods_door", "Goods door", 20.0, 18.0),
             ob.room("canteen", "Canteen", 8.0, 18.0),
         ],
         item_types=[
@@ -56,9 +56,9 @@ def raw_opera_wardrobe() -> dict[str, Any]:
                 "scene_dock", "scene dock", at="scene_dock", guards=["tomas"], operations=["rig"]
             ),
             ob.facility(
-                "loading_bay",
-                "loading bay",
-                at="loading_bay",
+                "goods_door",
+                "goods door",
+                at="goods_door",
                 guards=["gwen", "bram"],
                 operations=["dryclean"],
                 supplies=[{"type": "pp3_batteries", "count": 6}],

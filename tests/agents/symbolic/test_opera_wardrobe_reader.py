@@ -50,6 +50,32 @@ def test_a_question_about_an_item_in_the_room_moves_nothing() -> None:
     assert _frame("is there a spirit level in the scene dock?").tasks == []
 
 
+# -- class 2: a facility said to have some is where the supply is, not its service asked ------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "need PP3 batteries for the radio mics, goods door has some",
+        "could you get me PP3 batteries, goods door has some",
+        "need PP3s, goods door's got some",
+        "need PP3 batteries, goods door should have a few",
+    ],
+)
+def test_a_supply_said_to_be_at_a_facility_is_fetched_from_it(text: str) -> None:
+    frame = _frame(text)
+    assert _moves(frame) == [("transfer", "pp3_batteries", "goods_door", "ilse")]
+
+
+def test_the_facility_s_own_service_is_still_asked_where_it_sends() -> None:
+    frame = _frame("could you dry clean my gown at the goods door")
+    assert frame.tasks == [] and "name of the cleaner" in (frame.question or "")
+
+
+def test_a_question_whether_the_facility_has_some_moves_nothing() -> None:
+    assert _frame("does the goods door have any PP3 batteries?").tasks == []
+
+
 # -- class 5: "mine" as the subject of a clause is the reason, never the item asked for ------
 
 
