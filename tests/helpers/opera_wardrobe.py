@@ -43,7 +43,7 @@ def raw_opera_wardrobe() -> dict[str, Any]:
                 "dryclean",
                 "dry clean",
                 "send to the cleaners",
-                name="send to the cleaner",
+                name="send to the dry cleaner",
                 input="gown",
                 sends_out=True,
                 destination_asked="the name of the cleaner",

@@ -76,6 +76,48 @@ def test_a_question_whether_the_facility_has_some_moves_nothing() -> None:
     assert _frame("does the goods door have any PP3 batteries?").tasks == []
 
 
+# -- class 3: a send-out's destination is a place named, never "to be done" or the kind ------
+
+_WHERE = "Please give me the name of the cleaner."
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Send my gown to Harlow Cleaners to be dry cleaned please.",
+        "send my gown off to Harlow Cleaners",
+        "could you send my gown off to Harlow Cleaners to be dry cleaned",
+    ],
+)
+def test_a_named_cleaner_is_where_the_gown_is_sent(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.operation, t.item, t.owner, t.destination) for t in frame.tasks] == [
+        ("dryclean", "gown", "ilse", "Harlow Cleaners")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Could you have my gown sent off to be dry cleaned? The wine stain won't come out.",
+        "can you send my gown off to the cleaner",
+        "can you send my gown off to the cleaners please",
+        "could you get my gown dry cleaned",
+    ],
+)
+def test_no_cleaner_named_is_asked_never_guessed(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and _WHERE in (frame.question or "")
+    answered = _answered(text, ["Harlow Cleaners"])
+    assert [(t.operation, t.destination) for t in answered.tasks] == [
+        ("dryclean", "Harlow Cleaners")
+    ]
+
+
+def test_a_question_about_the_cleaners_moves_nothing() -> None:
+    assert _frame("has my gown come back from the cleaners yet?").tasks == []
+
+
 # -- class 5: "mine" as the subject of a clause is the reason, never the item asked for ------
 
 

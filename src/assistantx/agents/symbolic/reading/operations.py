@@ -5,7 +5,7 @@ outside taken from the readings ("send out my drawing to the client") or asked f
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.destination import Outside
+from assistantx.agents.symbolic.reading.destination import Outside, names_no_place
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
@@ -148,6 +148,8 @@ class OperationChooser:
                 # a fax leaves the office: where to is the requester's to say, never a guess;
                 # the readings stage found the words ("send out my drawing to the client")
                 where = outside.phrase if outside is not None else None
+                if where is not None and names_no_place(where, (op.name, *op.verbs, op.done or "")):
+                    where = None  # "off to the cleaners": which cleaner is still to ask
                 where = where or destination
                 if where is None:
                     return TaskFrame(

@@ -379,7 +379,12 @@ class InstructionParser:
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
-                if frame.question is not None and not frame.question.startswith(OUT_OR_IN):
+                joined = any(
+                    t.destination not in (None, place.rstrip(" .!?")) for t in frame.tasks
+                )  # "off to the cleaner to Harlow Cleaners": the answer is the whole place
+                if joined or (
+                    frame.question is not None and not frame.question.startswith(OUT_OR_IN)
+                ):
                     # the words appended read otherwise ("... with the courier to Riverside
                     # print plant": "Riverside" looked up as a colleague): the answer is
                     # the place outside, as said, never a person to find
