@@ -118,6 +118,30 @@ def test_a_question_about_the_cleaners_moves_nothing() -> None:
     assert _frame("has my gown come back from the cleaners yet?").tasks == []
 
 
+# -- class 4: "a shake" after an article is the thing a make-from-nothing service makes -------
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("could you make me a shake? been on my feet all day", "ilse"),
+        ("could you get me a shake", "ilse"),
+        ("can you whip up a shake for Bram", "bram"),
+        ("could you shake me a milkshake", "ilse"),
+    ],
+)
+def test_a_product_named_by_its_service_s_verb_is_made(text: str, recipient: str) -> None:
+    assert _moves(_frame(text)) == [("produce", "milkshake", None, recipient)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["thanks for the shake", "I don't want a shake, thanks", "is the shake bar open?"],
+)
+def test_thanks_refusals_and_questions_about_it_move_nothing(text: str) -> None:
+    assert _frame(text).tasks == []
+
+
 # -- class 5: "mine" as the subject of a clause is the reason, never the item asked for ------
 
 

@@ -229,6 +229,12 @@ class MentionReader:
             word = tokens[m.start].word
             if m.kind != "cue" or m.end - m.start != 1 or m.start == 0:
                 continue
+            if tokens[m.start - 1].word in _ARTICLES and self._made_from_nothing(word):
+                # "make me a brew" where brewing makes tea, also called "a brew": the thing
+                # made, asked for by its name, never a request with nothing to work on
+                item = (self.lex.items[word],)
+                out[n] = Mention("item", m.start, m.end, item, False, m.text)
+                continue
             if word not in self.lex.operation_words or not language.is_noun(word):
                 continue
             after = tokens[m.end].word if m.end < len(tokens) else ""
@@ -249,6 +255,13 @@ class MentionReader:
             if m.start < 2 or tokens[m.start - 2].word not in _PLACE_PREPOSITIONS:
                 out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
         return out
+
+    def _made_from_nothing(self, word: str) -> bool:
+        """Whether ``word`` names the product of a service that makes it from nothing."""
+        item = self.lex.items.get(word)
+        return item is not None and any(
+            op.product == item and op.input is None for op in self.office.operations
+        )
 
     def _doubts(
         self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside | None
