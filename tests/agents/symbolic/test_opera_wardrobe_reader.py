@@ -114,6 +114,12 @@ def test_no_cleaner_named_is_asked_never_guessed(text: str) -> None:
     ]
 
 
+def test_an_answer_that_names_the_work_again_is_no_place() -> None:
+    text = "could you have my gown sent off to be dry cleaned?"
+    frame = _answered(text, ["To be dry cleaned, the stain won't come out."])
+    assert frame.tasks == [] and _WHERE in (frame.question or "")
+
+
 def test_a_question_about_the_cleaners_moves_nothing() -> None:
     assert _frame("has my gown come back from the cleaners yet?").tasks == []
 

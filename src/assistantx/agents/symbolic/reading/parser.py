@@ -341,6 +341,8 @@ class InstructionParser:
                 # answer takes the place of the office's own place, read by the same stage
                 said = self.readings.read(self.lex.read(text)).outside
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
+                if re.match(r"be\b", place, flags=re.IGNORECASE):
+                    continue  # "to be dry cleaned": the work again, no place; still asked
                 if said is not None and said.phrase and said.phrase in text:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
@@ -378,6 +380,8 @@ class InstructionParser:
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
+                if re.match(r"be\b", place, flags=re.IGNORECASE):
+                    continue  # "to be dry cleaned": the work again, no place; still asked
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
                 joined = any(
                     t.destination not in (None, place.rstrip(" .!?")) for t in frame.tasks
