@@ -252,8 +252,11 @@ def _from_words(office: Office, words: str, question: str, options: list[str]) -
     if _is_offer(question):
         return "Yes, please." if _offer_written(office, words, question) else "No, thanks."
     if _WHERE_TO.search(question.lower()):
-        # "courier my form to the federation, please": the place they wrote after "to"
-        said = re.search(r"\bto\s+(.+?)(?:,?\s+(?:please|thanks?(?: you)?))?[.!?\s]*$", words)
+        # "courier my form to the federation, please": the place they wrote after "to"; "to
+        # be dry cleaned" is the work they asked for, no place
+        said = re.search(
+            r"\bto\s+(?!be\b)(.+?)(?:,?\s+(?:please|thanks?(?: you)?))?[.!?\s]*$", words
+        )
         if said is not None:
             return f"To {said.group(1)}."
     return NOTHING_TO_ADD

@@ -41,6 +41,10 @@ def request_words(office: Office) -> dict[str, tuple[str, ...]]:
         # its verbs, not its display name: "print spine labels" names a label run whose
         # verb is "label"; its "print" is the printer's (Operation.request_phrases)
         found = [normalize(v) for v in op.request_phrases]
+        if " " in op.name.strip():
+            # the robot asks for it by its name ("could you send to the specialist cleaner
+            # my coat?"); the whole phrase names this one service, never another's verb
+            found.append(normalize(op.name))
         if op.product is not None:
             product = office.item_type(op.product)
             found += [normalize(n) for n in (product.name, *product.synonyms)]

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.stated_source import says_has_some
 from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office, OperationShape
@@ -417,8 +418,15 @@ class TaskReader:
                 return False
             return before.get(w.start, w).kind == "person"
 
+        def has_some(m: Mention) -> bool:
+            """ "need cable ties, art room has some": where the thing is, not its service."""
+            after = itertools.takewhile(
+                lambda a: a.kind == "word", (a for a in clause.mentions if a.start >= m.end)
+            )
+            return says_has_some([a.ids[0] for a in after], m.possessive)
+
         # "bring me Bram's headlamp from the charging shelf": the facility is where it is
-        treating = [m for m in treating if not persons_place(m)]
+        treating = [m for m in treating if not persons_place(m) and not has_some(m)]
         if any(word_before(m) not in _FROM_FACILITY for m in treating):
             cues.add("heat")
 

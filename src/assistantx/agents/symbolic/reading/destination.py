@@ -140,6 +140,8 @@ def find_outside(
         phrase = said if said and len(said) <= _LONGEST else None
         if phrase is not None and set(words[start:end]) <= _PRONOUNS | _PERSONS:
             phrase = None  # "courier it to them": no place said; asked where
+        if words[start] == "be":
+            phrase = None  # "sent off to be dry cleaned": the work asked, no place said
         if phrase is None:
             start = end = None
     return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
@@ -278,3 +280,17 @@ def named_after(text: str, phrase: str) -> str | None:
     found = _NAMED_AFTER.match(text[at + len(phrase) :])
     name = found.group(1).rstrip(" .") if found else ""
     return name if name and name.split()[-1] not in ("and", "of", "&") else None
+
+
+def names_no_place(phrase: str, service_words: Iterable[str]) -> bool:
+    """Whether a destination is said only in the service's own words ("send it off to the
+    cleaners" where the service is "send to the cleaners"): the kind of place every such
+    send-out goes to, not which one; the requester is asked, never a guess."""
+    said = {_singular(w) for w in language.words(phrase)} - _MEANS_ARTICLES - {"an"}
+    own = {_singular(w) for text in service_words for w in language.words(text)}
+    return bool(said) and said <= own
+
+
+def _singular(word: str) -> str:
+    nouns = language.lemmas(word).get("NOUN", ())
+    return nouns[0] if nouns else word

@@ -5,7 +5,12 @@ outside taken from the readings ("send out my drawing to the client") or asked f
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.destination import Outside, named_after, only_describes
+from assistantx.agents.symbolic.reading.destination import (
+    Outside,
+    named_after,
+    names_no_place,
+    only_describes,
+)
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
@@ -154,6 +159,8 @@ class OperationChooser:
                     named_people = {m.text for m in lexed.mentions if m.kind == "person"}
                     if where is not None and any(n in where for n in named_people):
                         where = None  # "..., Ivy please": the colleague addressed, not a place
+                if where is not None and names_no_place(where, (op.name, *op.verbs, op.done or "")):
+                    where = None  # "off to the cleaners": which cleaner is still to ask
                 where = where or destination
                 if where is None:
                     return TaskFrame(

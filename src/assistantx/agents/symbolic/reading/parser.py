@@ -360,6 +360,8 @@ class InstructionParser:
                 # answer takes the place of the office's own place, read by the same stage
                 said = self.readings.read(self.lex.read(text)).outside
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
+                if re.match(r"be\b", place, flags=re.IGNORECASE):
+                    continue  # "to be dry cleaned": the work again, no place; still asked
                 if said is not None and said.phrase and said.phrase in text:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
@@ -397,8 +399,15 @@ class InstructionParser:
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
+                if re.match(r"be\b", place, flags=re.IGNORECASE):
+                    continue  # "to be dry cleaned": the work again, no place; still asked
                 frame = self.parse(f"{text.rstrip(' .!?')} to {place}", requester)
-                if frame.question is not None and not frame.question.startswith(OUT_OR_IN):
+                joined = any(
+                    t.destination not in (None, place.rstrip(" .!?")) for t in frame.tasks
+                )  # "off to the cleaner to Harlow Cleaners": the answer is the whole place
+                if joined or (
+                    frame.question is not None and not frame.question.startswith(OUT_OR_IN)
+                ):
                     # the words appended read otherwise ("... with the courier to Riverside
                     # print plant": "Riverside" looked up as a colleague): the answer is
                     # the place outside, as said, never a person to find

@@ -53,6 +53,7 @@ _DETERMINERS = _ARTICLES | _A | {"my", "your", "his", "her", "our", "their", "th
 _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
+_LOCATION_PREPOSITIONS = english.words("location_prepositions")
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
 # The question when a send-out service's destination is a place or group of the office; the
 # answer names the place outside instead (``InstructionParser.parse_with_answers``).
@@ -235,6 +236,12 @@ class MentionReader:
             word = tokens[m.start].word
             if m.kind != "cue" or m.end - m.start != 1 or m.start == 0:
                 continue
+            if tokens[m.start - 1].word in _ARTICLES and self._made_from_nothing(word):
+                # "make me a brew" where brewing makes tea, also called "a brew": the thing
+                # made, asked for by its name, never a request with nothing to work on
+                item = (self.lex.items[word],)
+                out[n] = Mention("item", m.start, m.end, item, False, m.text)
+                continue
             if word not in self.lex.operation_words or not language.is_noun(word):
                 continue
             after = tokens[m.end].word if m.end < len(tokens) else ""
@@ -271,6 +278,13 @@ class MentionReader:
             return False
         return self.office.item_type(before.id).kind == "personal"
 
+    def _made_from_nothing(self, word: str) -> bool:
+        """Whether ``word`` names the product of a service that makes it from nothing."""
+        item = self.lex.items.get(word)
+        return item is not None and any(
+            op.product == item and op.input is None for op in self.office.operations
+        )
+
     def _doubts(
         self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside | None
     ) -> list[str]:
@@ -290,6 +304,8 @@ class MentionReader:
             if m.kind == "word" and _unknown_name(tokens, mentions, n):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
+            if m.kind == "facility" and _where_an_item_is_wanted(tokens, mentions, n):
+                continue  # "a tape measure in the rehearsal room": the place, not its service
             if m.kind == "facility" and self._unsupported_facility(m.id):
                 f = self.office.facility(m.id)
                 out.append(
@@ -312,6 +328,18 @@ def _phrase_forms(verb: str) -> frozenset[str]:
     return frozenset(language.verb_forms(verb)) | {
         " ".join([*head, form]) for form in language.verb_forms(last)
     }
+
+
+def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """ "need a tape measure in the rehearsal room": a facility after a location preposition,
+    in a sentence that names an item, says where the item is wanted, not which service is
+    asked for; a room whose service nobody runs is then no reason to refuse."""
+    start = mentions[n].start
+    while start > 0 and tokens[start - 1].word in _ARTICLES:
+        start -= 1
+    if start == 0 or tokens[start - 1].word not in _LOCATION_PREPOSITIONS:
+        return False
+    return any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
 
 
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:

@@ -55,7 +55,13 @@ def stated_sources(
 
 def _has_some_after(tokens: Sequence[Token], at: int, contracted: bool) -> bool:
     """ "<P> has some", "<P> should have a few", "<P>'s got some"."""
-    words = [t.word for t in tokens[at : at + 5]]
+    return says_has_some([t.word for t in tokens[at : at + 5]], contracted)
+
+
+def says_has_some(words: Sequence[str], contracted: bool = False) -> bool:
+    """Whether the words after a place say it has some ("has some", "should have a few",
+    after "<P>'s": "got some"); the place is then where the thing is, not a service asked."""
+    words = list(words[:5])
     n = 0
     while n < len(words) and words[n] in _MODALS:
         n += 1

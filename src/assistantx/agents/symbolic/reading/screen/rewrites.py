@@ -188,8 +188,13 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     return pattern.sub(whole, text), evidence
 
 
-# what follows a subject: "mine's broken", "mine is", "mine ran out"
-_SUBJECT_VERBS = frozenset({"s", "is", "was", "has", "had", "does", "did", "will", "wont"})
+# what follows a subject: "mine's broken", "mine is", "mine ran out"; "mine" may stand for
+# several ("mine have gone blunt", "mine are at home", "mine've walked off")
+_SUBJECT_VERBS = frozenset(
+    {"s", "is", "was", "has", "had", "does", "did", "will", "wont", "isnt", "wasnt", "hasnt"}
+    | {"are", "were", "have", "do", "re", "ve", "arent", "werent", "havent", "dont", "doesnt"}
+    | {"didnt", "can", "cant", "could", "couldnt", "would", "wouldnt", "keep", "need", "d", "ll"}
+)
 
 
 def _subject(after: str) -> bool:
