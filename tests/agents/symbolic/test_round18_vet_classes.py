@@ -24,6 +24,9 @@ def _tasks(text: str, who: str = "frank") -> list[tuple[str, str | None, str | N
         ("Could you bring me an ice bucket? Printing the rota later", "ice_bucket"),
         ("could you bring me some gloves, stamping forms all afternoon", "gloves"),
         ("bring me some gloves please. Running gels after lunch", "gloves"),
+        # a participle of no service here names the speaker's own samples, none to fetch
+        ("Could you bring me an ice bucket? Spinning down minipreps in 10", "ice_bucket"),
+        ("bring me some gloves please. Loading gels after lunch", "gloves"),
     ],
 )
 def test_a_service_participle_after_a_request_is_the_speakers_doing(text: str, item: str) -> None:

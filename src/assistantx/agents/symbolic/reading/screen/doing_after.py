@@ -11,8 +11,10 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
-from assistantx.core import language
+from assistantx.core import english, language
 
+# Verbs of an errand itself: "bringing the kit over?" is no doing of the speaker's.
+_ERRAND_VERBS = english.words("handing_verbs") | english.words("dative_verbs")
 # Words that ask, whatever opens the piece: "printing my slides too please" is a request.
 _ASKING = frozenset({"please", "pls", "plz", "too", "also", "as", "well"})
 
@@ -31,11 +33,15 @@ def doing_after(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
 
 
 def _service_participle(terms: Terms, word: str) -> bool:
-    """A present participle of one of the office's services ("running", "printing"); one
-    of no service ("covering the desk") is ``speech``'s doing clause already."""
+    """A present participle of one of the office's services ("running", "printing"), or of
+    any verb that asks for no task ("running minipreps in 10" where nothing here runs: the
+    thing it names is the speaker's, not one to fetch); never one of fetching or handing
+    ("bringing", "grabbing"), an errand's own."""
     if not word.endswith("ing") or word in terms.lex.items:
         return False
     lemmas = language.verb_lemmas(word)
     if not lemmas or word in lemmas:
         return False
-    return bool(lemmas & terms.service_verbs)
+    if lemmas & terms.service_verbs:
+        return True
+    return not lemmas & (terms.lex.cue_words | _ERRAND_VERBS)
