@@ -200,3 +200,24 @@ def test_a_declared_name_with_an_inner_apostrophe_names_its_person() -> None:
         stm = memory("p2", text)
         answered(stm, "p1")
         assert named_recipients(office, stm) == {"p1"}, text
+
+
+def test_the_one_a_cleft_picks_out_is_named_and_a_plain_wish_is_not() -> None:
+    # "it's fern who needs the hard copy": "who" is said of people, so a word-name there is
+    # the colleague, and the cleft names the one the item is for (blind round 18)
+    people = (("Penny", "Castellanos", None), ("Ivy", "Marchetti", None), ("Zoë", "Brandt", None))
+    office = _office(people)
+    for text in (
+        "can you bring my puppet over? it's ivy who needs it not me",
+        "bring my kick stool round, it is Ivy that wants it",
+        "take my bone folder over please - it's ivy who needs to use it",
+    ):
+        assert named_recipients(office, memory("p1", text)) == {"p2"}, text
+        frame = _parser(people).parse(text, "p1")
+        assert {t.recipient for t in frame.tasks} <= {"p2"}, text  # the reader agrees
+    for text in (
+        "ivy wants my puppet on the shelf",  # a wish, not a recipient
+        "it's ivy's puppet, take it to the workroom",  # an owner
+        "is it ivy who broke the kick stool?",  # a question about Ivy
+    ):
+        assert named_recipients(office, memory("p1", text)) == set(), text

@@ -6,7 +6,8 @@ syntax around it says so. The reader's lexicon and the runtime's consent guard b
 with this one function, so the guard never refuses a hand-over to the person the reader read
 (nor lets through one to a word the reader never took for a person).
 
-Syntax decides: "to Mark", "Mark's", "give mark a pen", "Pat hurt her hand" make a person;
+Syntax decides: "to Mark", "Mark's", "give mark a pen", "Pat hurt her hand", "it's fern who
+needs it" make a person;
 "the grace period", "to be honest", "Will you", "in May", "Mark my form" make the word. When
 neither says anything a capital letter makes the person; when they disagree, or a capitalized
 word sits where only the word fits, the reading is "ask". A title the office declares with its
@@ -73,6 +74,7 @@ def read_name(slot: NameSlot) -> NameReading:
         or prev in _PERSON_BEFORE
         or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or slot.next_is_item))
         or ((slot.opens or not prev) and (nxt in ("is", "was", "has") or finite_next))
+        or nxt == "who"  # "it's fern who needs it": "who" is said of people only
     )
     if language.is_month(w) and not slot.possessive:
         day = language.is_day_number(prev) or language.is_day_number(nxt)

@@ -14,6 +14,8 @@ words alone (never from a reasoner's reading), by the position of the name:
 - as a doer: "by Hal", "get Hal to sign", "Hal to sign it";
 - asked to be given it: "could Hal have a thermometer?", "Hal could do with one"
   (``core.asked_to_have``, the rule the reader reads the recipient with);
+- picked out as the one who needs it: "it's Hal who needs the copy, not me" (the cleft says
+  who, where a plain "Hal wants it" may only be a wish);
 - a pronoun in one of those places ("take her my ice pack") when exactly one person the
   requester named is neither an owner ("May's ice pack") nor the requester;
 - a reply in their own chat that is just a name ("Hal Brooks.", "to Hal, please"): the
@@ -263,8 +265,28 @@ def _receiving(
         return True
     if asked_to_have(before, [w.folded for w in words[end : end + 3]]):
         return True  # "could Linh have a stapler?", "Linh could do with one"
+    if _picked_out(words, start, end):
+        return True  # "it's Linh who needs it"
     nxt = words[end + 1].folded if end + 1 < len(words) else ""
     return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
+
+
+_CLEFT_VERBS = frozenset({"need", "want", "use"})
+
+
+def _picked_out(words: list[_Word], start: int, end: int) -> bool:
+    """ "it's Hal who needs it", "it is Hal that wants the copy": a cleft that picks out the
+    one the item is for."""
+    if start >= 1 and words[start - 1].folded == "it" and words[start - 1].possessive:
+        pass  # "it's Hal"
+    elif not (
+        start >= 2 and words[start - 2].folded == "it" and words[start - 1].folded in {"is", "s"}
+    ):
+        return False
+    if end + 1 >= len(words) or words[end].folded not in {"who", "that"}:
+        return False
+    verb = words[end + 1].folded
+    return verb in _CLEFT_VERBS or bool(language.verb_lemmas(verb) & _CLEFT_VERBS)
 
 
 def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:

@@ -80,3 +80,34 @@ def test_an_office_thing_named_like_a_while_is_kept() -> None:
     raw["item_types"].append(ob.item("tick", "tick"))  # a tick sheet, say
     terms = _terms(raw)
     assert without_time_idioms(terms, "bring me it in a tick") == ("bring me it in a tick", [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me Rory's stapler when he's back from lunch",
+        "bring me Rory's stapler once he is back from his lunch",
+        "can you get Rory's stapler for me as soon as he gets in",
+        "bring me Rory's stapler when Rory is free",
+        "when she's back from lunch, bring me Rory's stapler",
+    ],
+)
+def test_waiting_for_someone_says_when_and_fetches_no_lunch(text: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "stapler", "rory", "ada")
+    ]
+
+
+def test_a_wait_for_oneself_or_a_named_antecedent_is_kept() -> None:
+    terms = _terms(raw_playschool())
+    for text in (
+        "once you're back, bring me Rory's lunch",
+        "once Miles is free, take my stapler to him",
+        "bring me Rory's lunch",
+    ):
+        assert without_time_idioms(terms, text) == (text, [])
+    text, evidence = without_time_idioms(terms, "bring me Rory's stapler when he's back from lunch")
+    assert text == "bring me Rory's stapler"
+    assert [e.words for e in evidence] == ["when he's back from lunch"]

@@ -88,6 +88,21 @@ _YOU = frozenset({"you", "u", "ya"})
 # How far a statement's verb is looked for after its subject: six words for a plain subject,
 # ten where it carries a phrase of place ("the holly wreath on the reception desk is ...").
 _PLAIN_SUBJECT = 7
+_BARE_COPULAS = frozenset({"is", "are", "was", "were", "has", "have"})
+
+
+def _verb_like(word: str) -> bool:
+    """Whether a word may open or be a clause's verb ("print", "took"), or is a grammar word
+    ("can", "could"): not the noun of a bare subject."""
+    return (
+        word in language.verb_lemmas(word)
+        or language.is_finite_verb(word)
+        or word in _MODALS
+        or word in _AUX
+        or "AUX" in language.lemmas(word)
+    )
+
+
 _SUBJECT_REACH = 11
 _IN_PLACE_PHRASE = frozenset({"on", "in", "at", "by", "near", "under", "behind"})
 _SELF_PLANS = frozenset({"ill"})
@@ -195,6 +210,7 @@ class SpeechActs:
 
     def __init__(self, lex: Lexicon) -> None:
         self.lex = lex
+        self._known: frozenset[str] | None = None  # the office's words, read on first use
 
     def withdrawal(self, words: list[str]) -> bool:
         """ "forget about the scissors", "never mind the stapler", "cancel my request"."""
@@ -527,7 +543,12 @@ class SpeechActs:
         if w[0] == "found" and w[1:2] and w[1] in ("the", "a", "an", "my", "mine", "his", "her"):
             return True  # "found the stapler in my drawer": a past find, never an errand
         possessive = self._possessive_name(w[0])  # "Hal's clipboard snapped"
-        if w[0] not in _SUBJECTS and not self._named(w[0]) and not possessive:
+        if (
+            w[0] not in _SUBJECTS
+            and not self._named(w[0])
+            and not possessive
+            and not self._bare_subject(w)
+        ):
             return False
         # a subject may carry where its thing is ("the holly wreath on the reception desk
         # is shedding"): the verb is looked for past such a phrase, not only in six words
@@ -549,6 +570,30 @@ class SpeechActs:
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
         return False
+
+    def _bare_subject(self, w: list[str]) -> bool:
+        """ "kettle is broken", "uv bulb has gone": chat drops the subject's article; one to
+        three words that are no verb, then "is"/"has", are still a subject. Only for things
+        the office does not know: its own items and places are read by the rules for them
+        ("scissors are in the kitchenette": where they are)."""
+        for n in range(1, min(len(w), 4)):
+            if w[n] in _BARE_COPULAS:
+                known = self._office_words()
+                *before, head = w[:n]  # "hall clock has stopped": a head noun may be a verb too
+                head_noun = not _verb_like(head) or (
+                    language.is_noun(head) and head not in _MODALS | _AUX
+                )
+                return (
+                    head_noun and all(not _verb_like(x) for x in before) and not set(w[:n]) & known
+                )
+        return False
+
+    def _office_words(self) -> frozenset[str]:
+        if self._known is None:
+            lex = self.lex
+            phrases = (*lex.items, *lex.facilities, *lex.places, *lex.people, *lex.name_words)
+            self._known = frozenset(w for p in phrases for w in p.split())
+        return self._known
 
     def _work_obliged(self, w: list[str], n: int) -> bool:
         """ "has to be / must be" and a form of one of the office's own verbs from ``n``:

@@ -2,7 +2,12 @@
 minute", "in a tick", "whenever"): set aside before the pieces are judged, so its noun is never
 read as a thing asked for ("there is no sec in this office") and what is left is read alone
 ("can u bring it down to me" still asks which item "it" is). An idiom whose noun goes on into
-a phrase ("in a second envelope") or is the office's own item is left as said."""
+a phrase ("in a second envelope") or is the office's own item is left as said.
+
+A clause that waits for someone else ("when he's back from lunch", "once Zhang is free", "as
+soon as she gets in") is set aside the same way: it says when, not what, so "lunch" is no thing
+to fetch. Only a third person's being back, in, free or done counts: "once you've printed it"
+is a step of the errand, and stays."""
 
 from __future__ import annotations
 
@@ -30,6 +35,16 @@ _IDIOM = re.compile(
     re.IGNORECASE,
 )
 
+# "when he's back from lunch", "once Zhang is free", "as soon as she gets in", "after they're
+# out of the meeting": the clause runs to the next stop or comma.
+_WAITED = re.compile(
+    r"(?:,\s*)?\b(?:when|once|as\s+soon\s+as|after)\s+(?P<who>[^\W\d_]+)"
+    r"(?:'s|\s+is|'re|\s+are|\s+gets?|\s+comes?|\s+has\s+got|\s+has)\s+"
+    r"(?:back|in|free|done|finished|out|off|around|available|up)\b[^.,;:!?]*",
+    re.IGNORECASE,
+)
+_THIRD_PERSONS = frozenset({"he", "she", "they", "hes", "shes"})
+
 
 def without_time_idioms(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     """``text`` without its idioms of time, each kept as evidence of how it was read."""
@@ -42,5 +57,14 @@ def without_time_idioms(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         found.append(Evidence(words=match.group(0).strip(" ,"), meaning="when: soon, no time"))
         return ""
 
-    left = _IDIOM.sub(drop, text)
+    def waited(match: re.Match[str]) -> str:
+        who = match.group("who").lower()
+        if who not in _THIRD_PERSONS and who not in terms.lex.name_words:
+            return match.group(0)  # "once you're back", "when it is done": not someone else
+        if who not in _THIRD_PERSONS and match.string[match.end() :].strip(" .!?"):
+            return match.group(0)  # "once Miles is free, take it to him": the name is wanted
+        found.append(Evidence(words=match.group(0).strip(" ,"), meaning="when: once they can"))
+        return ""
+
+    left = _WAITED.sub(waited, _IDIOM.sub(drop, text))
     return (re.sub(r"\s{2,}", " ", left).strip(), found) if found else (text, [])

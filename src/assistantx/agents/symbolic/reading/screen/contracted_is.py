@@ -1,0 +1,68 @@
+"""A state said with "'s" for "is" or "has" ("UV bulb's gone", "the kettle's broken", "scanner's
+down again", "hall clock's stopped"): the "'s" is the verb, not a possessive, so the clause is
+read as the statement it is ("the bulb is gone", "the clock has stopped"), never as a request
+about a thing belonging to the bulb. Only a word of state or a past participle that ends its
+clause counts ("Zhang's broken stapler" owns a stapler, and stays)."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.core import english, language
+from assistantx.core.task_schema import Evidence
+
+# the one-word states of a thing ("broken", "gone", "down") and what may follow one and end
+# the clause ("again", "today", "btw")
+_STATES = frozenset(
+    entry
+    for key in ("conditions", "facility_faults")
+    for entry in english.entries(key)
+    if " " not in entry
+)
+_TAILS = english.words("state_tails") | frozenset(
+    {"already", "completely", "totally", "again", "too"}
+)
+# what may follow a participle and still end its clause: "asked for ..." goes on
+_PARTICIPLE_TAILS = frozenset(
+    {
+        "again",
+        "already",
+        "now",
+        "btw",
+        "fyi",
+        "lol",
+        "though",
+        "too",
+        "completely",
+        "and",
+        "but",
+        "so",
+    }
+)
+_PRONOUNS = english.words("subject_pronouns") | frozenset(
+    {"that", "this", "there", "here", "what", "who", "where", "let", "he", "she", "mine", "yours"}
+)
+_CONTRACTED = re.compile(
+    r"\b(?P<subject>[^\W\d_]+)['’]s\s+(?P<state>[a-z]+)\b(?P<rest>\s*(?:[^\W\d_]+)?)",
+    re.IGNORECASE,
+)
+
+
+def contracted_is(text: str) -> tuple[str, list[Evidence]]:
+    """``text`` with "X's <state>" written "X is <state>" (or "X has <participle>") where
+    the state ends its clause."""
+    found: list[Evidence] = []
+
+    def expand(match: re.Match[str]) -> str:
+        subject, state = match.group("subject"), match.group("state").lower()
+        after = match.group("rest").strip().lower()
+        if subject.lower() in _PRONOUNS:
+            return match.group(0)
+        verb = "is" if state in _STATES else "has" if language.is_past_participle(state) else ""
+        tails = _TAILS if verb == "is" else _PARTICIPLE_TAILS
+        if not verb or (after and after not in tails):
+            return match.group(0)  # "Zhang's broken stapler": a possessive
+        found.append(Evidence(words=match.group(0).strip(), meaning=f"{subject} {verb} {state}"))
+        return f"{subject} {verb} {match.group('state')}{match.group('rest')}"
+
+    return _CONTRACTED.sub(expand, text), found
