@@ -4,7 +4,11 @@ thing said after "not X," is the one meant, and it takes the place of X (or of t
 request left unsaid, "Teodor's") in the request, before the pieces are judged. "the red one"
 is the rejected thing's noun with the new word ("the red folder"). Only where both name an
 item of the office and they differ; anything else is left as written (the correction and
-exclusion rules read it)."""
+exclusion rules read it).
+
+The same holds for whose it is: "not Wang's stapler, Zhang's - bring it over please" means
+Zhang's stapler; the new owner's name takes the old one's place, or "it" in the request where
+the request does not name the item again. The new owner is asked before it moves, as ever."""
 
 from __future__ import annotations
 
@@ -41,6 +45,9 @@ def rejected_alternative(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
             y = _ONE.sub(language.words(x)[-1], y)
         y_item = _one_item(terms, y)
         if y_item is None or y_item == x_item:
+            swapped = _owner_swapped(terms, text, match, x, y, x_item)
+            if swapped is not None:
+                return swapped
             continue
         # the rejection and its replacement taken out, with the break before and after it
         rest = f"{text[: match.start()]} {text[match.end() :]}".strip(" ,;–—-")
@@ -51,6 +58,43 @@ def rejected_alternative(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = text[match.start() : match.end()].strip(" ,;.!?-–—")
         return fixed, [Evidence(words=said, meaning=f"means {name}")]
     return text, []
+
+
+_IT = re.compile(r"\b(?:it|that|this|them)\b", re.IGNORECASE)
+
+
+def _owner_of(terms: Terms, phrase: str) -> str | None:
+    """The one person whose thing a phrase names ("Wang's stapler", "Zhang's", "zhang's one")."""
+    lexed = terms.lex.read(phrase)
+    owners = [m for m in lexed.mentions if m.kind == "person" and m.possessive]
+    others = [m for m in lexed.mentions if m.kind == "person" and not m.possessive]
+    if len(owners) != 1 or others or len(owners[0].ids) != 1:
+        return None
+    return owners[0].ids[0]
+
+
+def _owner_swapped(
+    terms: Terms, text: str, match: re.Match[str], x: str, y: str, item: str
+) -> tuple[str, list[Evidence]] | None:
+    """ "not Wang's stapler, Zhang's": the same item of another owner, put in the request."""
+    old, new = _owner_of(terms, x), _owner_of(terms, y)
+    y_item = _one_item(terms, y)
+    if old is None or new is None or old == new or y_item not in (None, item):
+        return None
+    leftover = [w for w in language.words(y) if w not in ("one", "the", "s")]
+    if y_item is None and len(leftover) > len(language.words(terms.office.person(new).name)):
+        return None  # "not Wang's stapler, Zhang wants it": no replacement said
+    rest = f"{text[: match.start()]} {text[match.end() :]}".strip(" ,;–—-")
+    t = terms.office.item_type(item)
+    thing = f"{terms.office.person(new).name}'s {t.name}"
+    if _one_item(terms, rest) == item:
+        return None  # the request names the item again: the owner rules read it as said
+    spots = list(_IT.finditer(rest))
+    if len(spots) != 1:
+        return None
+    fixed = rest[: spots[0].start()] + thing + rest[spots[0].end() :]
+    said = text[match.start() : match.end()].strip(" ,;.!?-–—")
+    return fixed, [Evidence(words=said, meaning=f"means {thing}")]
 
 
 def _one_item(terms: Terms, phrase: str) -> str | None:
