@@ -12,6 +12,8 @@ from assistantx.core.receiving_place import names_receiving_place, pronoun_recei
 from assistantx.runtime import consent
 from helpers.consent_memory import answered, memory
 from helpers.kilnworks import kilnworks
+from helpers.playschool import playschool
+from helpers.reading import frame_reader
 
 
 @pytest.mark.parametrize(
@@ -20,6 +22,8 @@ from helpers.kilnworks import kilnworks
         ("at", "desk", True),
         ("in", "office", True),
         ("on", "tray", True),
+        ("at", "station", True),  # a kitchen's or a ramp's workplace: round 22's "Teo's station"
+        ("by", "locker", True),
         ("from", "desk", False),  # a source
         ("at", "calculator", False),  # an owner's item, not a place
         ("", "desk", False),
@@ -39,6 +43,8 @@ def test_a_place_names_its_person_only_after_a_preposition_of_putting(
         "Sunniva wants a hole punch, drop one at her desk",
         "Sunniva needs a hole punch. Could you leave one on her desk?",
         "put a hole punch in Sunniva's tray",
+        "drop a hole punch at Sunniva's station please",
+        "leave a hole punch on her bench, Sunniva needs one",
     ],
 )
 def test_a_hand_over_at_her_place_is_let_through(text: str) -> None:
@@ -62,3 +68,13 @@ def test_a_hand_over_to_someone_not_named_by_a_place_is_refused(text: str) -> No
     action = SendQR(contact="sunniva", item="hole_punch:kit", purpose="collect")
     refusal = consent.check(kilnworks(), stm, action)
     assert refusal is not None and refusal.rule == "not_a_party"
+
+
+def test_the_reader_reads_a_workplace_word_as_the_persons_place_too() -> None:
+    # the guard and the reader share the place words: what one hands over the other allows
+    frame = frame_reader(playschool, "ada")
+    for text, kind, item in (
+        ("print my script and drop it at Rory's station please", "print", "script"),
+        ("leave my stapler at Rory's bench", "transfer", "stapler"),
+    ):
+        assert [(t.kind, t.item, t.recipient) for t in frame(text).tasks] == [(kind, item, "rory")]

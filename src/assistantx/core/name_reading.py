@@ -7,7 +7,7 @@ with this one function, so the guard never refuses a hand-over to the person the
 (nor lets through one to a word the reader never took for a person).
 
 Syntax decides: "to Mark", "Mark's", "give mark a pen", "Pat hurt her hand", "it's fern who
-needs it" make a person;
+needs it", "can Penny sign it?" make a person;
 "the grace period", "to be honest", "Will you", "in May", "Mark my form" make the word. When
 neither says anything a capital letter makes the person; when they disagree, or a capitalized
 word sits where only the word fits, the reading is "ask". A title the office declares with its
@@ -32,6 +32,7 @@ _VERB_OBJECT_STARTS = english.words("object_starts")
 _SUBJECT_PRONOUNS = english.words("subject_pronouns")
 _MONTH_PREPOSITIONS = english.words("month_prepositions")
 _POLITE = english.words("polite")
+_MODALS = english.words("request_modals")
 
 
 @dataclass(frozen=True)
@@ -75,6 +76,8 @@ def read_name(slot: NameSlot) -> NameReading:
         or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or slot.next_is_item))
         or ((slot.opens or not prev) and (nxt in ("is", "was", "has") or finite_next))
         or nxt == "who"  # "it's fern who needs it": "who" is said of people only
+        # "Can Penny sign my report?": the subject of a modal's question, before its verb
+        or (prev in _MODALS and bool(nxt) and nxt in language.verb_lemmas(nxt))
     )
     if language.is_month(w) and not slot.possessive:
         day = language.is_day_number(prev) or language.is_day_number(nxt)
