@@ -8,7 +8,6 @@ is still a thing to fetch."""
 from __future__ import annotations
 
 import functools
-from pathlib import Path
 
 import pytest
 from symbolic_run import run_instruction
@@ -17,9 +16,8 @@ from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.roles import Role, Roles
 from assistantx.core.office import load_office
 from assistantx.core.task_schema import TaskFrame
+from helpers.dataset_offices import HARBOUR_FILE as HARBOUR
 from helpers.fablab import fablab
-
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
 
 
 @functools.cache

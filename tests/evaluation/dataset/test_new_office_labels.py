@@ -5,23 +5,14 @@ optimal policy the generator verifies with."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from assistantx.agents.oracle.plan import build_plan
-from assistantx.core.office import Office, Ownership, load_office
+from assistantx.core.office import Office, Ownership
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
 from assistantx.evaluation.dataset.generate import _task as task_of
 from assistantx.evaluation.dataset.generate import classify, verify_tasks
 from assistantx.memory.resolve import Resolver
-
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
 
 
 @pytest.fixture(scope="module")

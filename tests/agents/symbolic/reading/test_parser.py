@@ -3,15 +3,12 @@ settles a doubt with the requester's answer by reading again, never by changing 
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from assistantx.agents.symbolic.reading.parser import InstructionParser, shared_parser
 from assistantx.agents.symbolic.requests import RequestRecognizer
 from assistantx.core import task_kinds
 from assistantx.core.office import load_office
 from assistantx.core.task_kinds import KindSpec, Step
-
-HARBOUR = Path(__file__).resolve().parents[4] / "dataset" / "offices" / "harbour" / "office.yaml"
+from helpers.dataset_offices import HARBOUR_FILE as HARBOUR
 
 
 def test_a_request_runs_through_every_stage_to_a_frame() -> None:
