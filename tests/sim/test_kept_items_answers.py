@@ -14,10 +14,11 @@ from assistantx.agents.oracle.plan import Role, able
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core.office import Office, load_office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part
-from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
+from assistantx.evaluation.dataset.generate import verify_tasks
 from assistantx.sim.people import direct_reply, group_replies
 from assistantx.sim.world import World
 from helpers.dataset_offices import harbour_office
+from helpers.dataset_tasks import every_task
 
 
 @functools.cache
@@ -142,9 +143,8 @@ async def test_the_generators_verification_agrees_when_every_stapler_at_hand_is_
         text="Could you get me a stapler?",
         parts=(Part(kind="fetch", item="stapler"),),
     )
-    variants = [v for vs in classify(base, office).values() for v in vs]
-    assert variants
-    tasks = [_task(v, office, n) for n, v in enumerate(variants, start=1)]
+    tasks = every_task(office, base)
+    assert tasks
     away = [t for t in tasks if set(t.unavailable) >= {"kit", "bea"}]
     assert away and not any(t.achievable for t in away)
     await verify_tasks(office, tasks)  # raises DatasetError on a disagreement
