@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from assistantx.core.office import Office, parse_office
 from helpers import office_builder as ob
 
 _REHEARSAL_PEOPLE = (
@@ -82,6 +83,18 @@ def raw_rehearsal_rooms() -> dict[str, Any]:
 
 
 rehearsal_rooms = ob.parsed(raw_rehearsal_rooms)
+
+
+def rehearsal_rooms_without_files() -> Office:
+    """The rehearsal rooms with no electronic file type at all: no scripts, so no script
+    packs and no photocopier that makes them up."""
+    raw = raw_rehearsal_rooms()
+    raw["item_types"] = [t for t in raw["item_types"] if t["id"] not in ("script", "script_pack")]
+    raw["operations"] = [o for o in raw["operations"] if o["id"] != "make_pack"]
+    raw["facilities"] = [f for f in raw["facilities"] if f["id"] != "photocopier"]
+    for person in raw["people"]:
+        person["owns"] = [o for o in person["owns"] if o["type"] != "script"]
+    return parse_office(raw, "no_files")
 
 
 _DRAFTING_PEOPLE = tuple(
