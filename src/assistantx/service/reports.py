@@ -85,7 +85,7 @@ class _Asked:
     person: str | None
 
 
-def _asked(
+async def _asked(  # async: FastAPI would run a plain function in its thread pool
     runtime: Runtime,
     caller: Caller,
     start: _From = None,
