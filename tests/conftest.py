@@ -13,6 +13,7 @@ import pytest
 
 from fakes.fixtures import scripted_llm  # noqa: F401  (the scripted model server, for every folder)
 from helpers.children import descendants
+from helpers.dataset_offices import harbour  # noqa: F401  (the dataset's harbour office, parsed once)
 from helpers.markers import never_selects
 from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both store backends)
     backend,

@@ -26,38 +26,24 @@ from assistantx.core.goals import parse_milestone
 from assistantx.core.office import load_office
 from assistantx.core.ports.lock import QRCode
 from assistantx.core.settings import Settings
-from assistantx.core.task_kinds import KindSpec, Step
+from assistantx.core.task_kinds import KindSpec
 from assistantx.core.task_schema import Part, Task
 from assistantx.core.task_spec import BaseInstruction, check_base
 from assistantx.sim.office import SimOffice
 from assistantx.sim.run import run_in_sim
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM, json_reply
+from helpers.added_kinds import kind_added, signing_kind
 from helpers.llm_office import llm_model, llm_settings
 from helpers.office import run_one, sim_assistant
 
-APPROVE = KindSpec(
-    id="approve",
-    parts=("approve",),
-    milestone="approved",
-    by_person=True,
-    works_on="signable",
-    ask="approve {whose}",
-    purpose="approve",
-    doer="approver",
-    steps=(Step("source", "deposit"), Step("doer", "approve"), Step("recipient", "collect")),
-    locker="take {item} out, approve it and put it back",
-    todo="get {whose} approved by {by}",
-    done="{whose} was approved by {by} and handed to {to}",
-    words=("approve", "approval"),
-)
+APPROVE = signing_kind("approve", "approve", "approved", "approver", words=("approve", "approval"))
 
 
 @pytest.fixture
 def approve() -> Iterator[KindSpec]:
-    task_kinds.add(APPROVE)
-    yield APPROVE
-    task_kinds.remove(APPROVE.id)
+    with kind_added(APPROVE):
+        yield APPROVE
 
 
 def _code(purpose: str) -> QRCode:

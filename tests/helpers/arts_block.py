@@ -16,177 +16,133 @@ import functools
 from typing import Any
 
 from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("marta", "Marta Quigley", "desk_1", [{"type": "stopwatch"}, {"type": "banner"}]),
-    ("ewan", "Ewan Holt", "desk_2", [{"type": "tape_measure"}, {"type": "poster"}]),
-    ("priya", "Priya Natt", "dance_studio", [{"type": "tunic"}, {"type": "portfolio"}]),
-    ("colm", "Colm Reddy", "desk_3", [{"type": "stopwatch"}, {"type": "scripts"}]),
-    ("hatty", "Hatty Lowe", "desk_4", [{"type": "tunic"}, {"type": "poster"}]),
-    ("bram", "Bram Osei", "desk_5", [{"type": "scripts"}, {"type": "portfolio"}]),
-    ("ola", "Ola Brennan", "music_room", [{"type": "poster"}]),
-    ("finn", "Finn Darby", "music_room", [{"type": "stopwatch"}]),
+    ob.person("marta", "Marta Quigley", "stopwatch", "banner"),
+    ob.person("ewan", "Ewan Holt", "tape_measure", "poster"),
+    ob.person("priya", "Priya Natt", "tunic", "portfolio", at="dance_studio"),
+    ob.person("colm", "Colm Reddy", "stopwatch", "scripts"),
+    ob.person("hatty", "Hatty Lowe", "tunic", "poster"),
+    ob.person("bram", "Bram Osei", "scripts", "portfolio"),
+    ob.person("ola", "Ola Brennan", "poster", at="music_room"),
+    ob.person("finn", "Finn Darby", "stopwatch", at="music_room"),
 )
 
 
 def raw_arts_block() -> dict[str, Any]:
-    return {
-        "name": "arts_block",
-        "locations": [
-            *(
-                {
-                    "id": f"desk_{n}",
-                    "kind": "workstation",
-                    "name": f"Desk {n}",
-                    "x": 4.0 * n,
-                    "y": 5.0,
-                }
-                for n in range(1, 6)
+    return ob.office_file(
+        "arts_block",
+        _PEOPLE,
+        desks=ob.desk_row(5, x0=4.0, y=5.0),
+        desk_for_everyone=False,
+        rooms=[
+            ob.room("music_room", "Music room", 30.0, 5.0, kind="workstation"),
+            ob.room("dance_studio", "Dance studio", 26.0, 5.0, kind="room"),
+            ob.room("wardrobe", "Wardrobe store", 4.0, 18.0),
+            ob.room("art_room", "Art room", 10.0, 18.0),
+            ob.room("scenery_dock", "Scenery dock", 16.0, 18.0),
+            ob.room("print_unit", "Reprographics", 22.0, 18.0),
+            ob.room("exams_office", "Exams office", 28.0, 18.0),
+            ob.room("prep_room", "Prep room", 34.0, 18.0),
+            ob.room("staff_room", "Staff room", 34.0, 5.0, kind="room"),
+            ob.room("kitchen", "Kitchen", 40.0, 18.0),
+        ],
+        item_types=[
+            ob.item("stopwatch", "stopwatch"),
+            ob.item("tape_measure", "tape measure"),
+            ob.item("stapler", "stapler"),
+            ob.item("cable_ties", "cable ties", consumable=True),
+            ob.item("tunic", "tunic", "personal", synonyms=["costume"]),
+            ob.item("banner", "banner", "personal", synonyms=["backdrop"]),
+            ob.item("poster", "poster", "personal"),
+            ob.item("portfolio", "portfolio", "personal", synonyms=["folder"]),
+            ob.item("scripts", "exam scripts", "personal", synonyms=["scripts"]),
+            ob.item("coffee", "coffee", "product"),
+        ],
+        operations=[
+            ob.operation("press", "press", input="tunic"),
+            ob.operation("crop", "crop", input="poster"),
+            ob.operation("fireproof", "fireproof", input="banner"),
+            ob.operation("dye", "dye", input="tunic"),
+            ob.operation("bind", "bind", input="portfolio"),
+            ob.operation("brew", "make", name="make coffee", product="coffee"),
+            ob.operation(
+                "post_out",
+                "post",
+                name="post",
+                input="scripts",
+                sends_out=True,
+                destination_asked="which exam board they go to",
             ),
-            {"id": "music_room", "kind": "workstation", "name": "Music room", "x": 30.0, "y": 5.0},
-            {"id": "dance_studio", "kind": "room", "name": "Dance studio", "x": 26.0, "y": 5.0},
-            {"id": "wardrobe", "kind": "facility", "name": "Wardrobe store", "x": 4.0, "y": 18.0},
-            {"id": "art_room", "kind": "facility", "name": "Art room", "x": 10.0, "y": 18.0},
-            {
-                "id": "scenery_dock",
-                "kind": "facility",
-                "name": "Scenery dock",
-                "x": 16.0,
-                "y": 18.0,
-            },
-            {"id": "print_unit", "kind": "facility", "name": "Reprographics", "x": 22.0, "y": 18.0},
-            {
-                "id": "exams_office",
-                "kind": "facility",
-                "name": "Exams office",
-                "x": 28.0,
-                "y": 18.0,
-            },
-            {"id": "prep_room", "kind": "facility", "name": "Prep room", "x": 34.0, "y": 18.0},
-            {"id": "staff_room", "kind": "room", "name": "Staff room", "x": 34.0, "y": 5.0},
-            {"id": "kitchen", "kind": "facility", "name": "Kitchen", "x": 40.0, "y": 18.0},
+            ob.operation(
+                "launder",
+                "launder",
+                input="tunic",
+                sends_out=True,
+                destination_asked="which laundry it goes to",
+            ),
         ],
-        "item_types": [
-            {"id": "stopwatch", "name": "stopwatch"},
-            {"id": "tape_measure", "name": "tape measure"},
-            {"id": "stapler", "name": "stapler"},
-            {"id": "cable_ties", "name": "cable ties", "consumable": True},
-            {"id": "tunic", "name": "tunic", "kind": "personal", "synonyms": ["costume"]},
-            {"id": "banner", "name": "banner", "kind": "personal", "synonyms": ["backdrop"]},
-            {"id": "poster", "name": "poster", "kind": "personal"},
-            {"id": "portfolio", "name": "portfolio", "kind": "personal", "synonyms": ["folder"]},
-            {"id": "scripts", "name": "exam scripts", "kind": "personal", "synonyms": ["scripts"]},
-            {"id": "coffee", "name": "coffee", "kind": "product"},
+        facilities=[
+            ob.facility(
+                "hot_press",
+                "hot press",
+                at="wardrobe",
+                guards=["hatty"],
+                operations=["press", "launder"],
+            ),
+            ob.facility(
+                "guillotine", "guillotine", at="art_room", guards=["ewan"], operations=["crop"]
+            ),
+            ob.facility(
+                "dye_bench",
+                "dye bench",
+                at="scenery_dock",
+                guards=["bram"],
+                operations=["fireproof", "dye"],
+            ),
+            ob.facility(
+                "comb_binder", "comb binder", at="print_unit", guards=["colm"], operations=["bind"]
+            ),
+            ob.facility(
+                "exams_desk",
+                "exams desk",
+                at="exams_office",
+                guards=["marta"],
+                operations=["post_out"],
+            ),
+            ob.facility(
+                "prep_shelves",
+                "prep shelves",
+                at="prep_room",
+                guards=["colm"],
+                supplies=["tape_measure", "cable_ties"],
+            ),
+            ob.facility(
+                "art_cupboard",
+                "art cupboard",
+                at="art_room",
+                guards=["ewan"],
+                supplies=["cable_ties"],
+            ),
+            ob.facility(
+                "staff_shelf", "staff shelf", at="staff_room", guards=["bram"], supplies=["stapler"]
+            ),
+            ob.facility(
+                "coffee_machine",
+                "coffee machine",
+                at="kitchen",
+                guards=["bram"],
+                operations=["brew"],
+                products=["coffee"],
+            ),
         ],
-        "operations": [
-            {"id": "press", "name": "press", "verbs": ["press"], "input": "tunic"},
-            {"id": "crop", "name": "crop", "verbs": ["crop"], "input": "poster"},
-            {"id": "fireproof", "name": "fireproof", "verbs": ["fireproof"], "input": "banner"},
-            {"id": "dye", "name": "dye", "verbs": ["dye"], "input": "tunic"},
-            {"id": "bind", "name": "bind", "verbs": ["bind"], "input": "portfolio"},
-            {"id": "brew", "name": "make coffee", "verbs": ["make"], "product": "coffee"},
-            {
-                "id": "post_out",
-                "name": "post",
-                "verbs": ["post"],
-                "input": "scripts",
-                "sends_out": True,
-                "destination_asked": "which exam board they go to",
-            },
-            {
-                "id": "launder",
-                "name": "launder",
-                "verbs": ["launder"],
-                "input": "tunic",
-                "sends_out": True,
-                "destination_asked": "which laundry it goes to",
-            },
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": [],
-                "location": where,
-                "handle": f"@{pid}",
-                "owns": owns,
-            }
-            for pid, name, where, owns in _PEOPLE
-        ],
-        "facilities": [
-            {
-                "id": "hot_press",
-                "name": "hot press",
-                "location": "wardrobe",
-                "operations": ["press", "launder"],
-                "guards": ["hatty"],
-            },
-            {
-                "id": "guillotine",
-                "name": "guillotine",
-                "location": "art_room",
-                "operations": ["crop"],
-                "guards": ["ewan"],
-            },
-            {
-                "id": "dye_bench",
-                "name": "dye bench",
-                "location": "scenery_dock",
-                "operations": ["fireproof", "dye"],
-                "guards": ["bram"],
-            },
-            {
-                "id": "comb_binder",
-                "name": "comb binder",
-                "location": "print_unit",
-                "operations": ["bind"],
-                "guards": ["colm"],
-            },
-            {
-                "id": "exams_desk",
-                "name": "exams desk",
-                "location": "exams_office",
-                "operations": ["post_out"],
-                "guards": ["marta"],
-            },
-            {
-                "id": "prep_shelves",
-                "name": "prep shelves",
-                "location": "prep_room",
-                "guards": ["colm"],
-                "supplies": [{"type": "tape_measure"}, {"type": "cable_ties"}],
-            },
-            {
-                "id": "art_cupboard",
-                "name": "art cupboard",
-                "location": "art_room",
-                "guards": ["ewan"],
-                "supplies": [{"type": "cable_ties"}],
-            },
-            {
-                "id": "staff_shelf",
-                "name": "staff shelf",
-                "location": "staff_room",
-                "guards": ["bram"],
-                "supplies": [{"type": "stapler"}],
-            },
-            {
-                "id": "coffee_machine",
-                "name": "coffee machine",
-                "location": "kitchen",
-                "operations": ["brew"],
-                "products": ["coffee"],
-                "guards": ["bram"],
-            },
-        ],
-        "groups": [{"id": "arts", "name": "Arts", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "kitchen"},
-    }
+        home="kitchen",
+        group=("arts", "Arts"),
+    )
 
 
-@functools.cache
-def arts_block() -> Office:
-    return parse_office(raw_arts_block(), "arts_block")
+arts_block = ob.parsed(raw_arts_block)
 
 
 @functools.cache

@@ -16,291 +16,207 @@ costumes (verbs "press", "steam"), and a scanner (verbs "scan")."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
-
-_DESKS = ((5.0, 6.0), (9.0, 6.0), (13.0, 6.0), (17.0, 6.0), (21.0, 6.0), (25.0, 6.0))
+from helpers import office_builder as ob
 
 _FAB_PEOPLE = (
-    ("ines", "Ines Varga", [{"type": "laser_measure"}, {"type": "tape"}]),
-    ("tomas", "Tomas Reyes", [{"type": "laser_measure"}, {"type": "drawing"}]),
-    ("hana", "Hana Ilves", [{"type": "tape"}, {"type": "drawing"}]),
-    ("priit", "Priit Kask", [{"type": "drawing"}]),
-    ("wanda", "Wanda Obi", [{"type": "tape"}, {"type": "first_aid_kit"}]),
-    ("gus", "Gus Moreau", [{"type": "drawing"}]),
+    ob.person("ines", "Ines Varga", "laser_measure", "tape"),
+    ob.person("tomas", "Tomas Reyes", "laser_measure", "drawing"),
+    ob.person("hana", "Hana Ilves", "tape", "drawing"),
+    ob.person("priit", "Priit Kask", "drawing"),
+    ob.person("wanda", "Wanda Obi", "tape", "first_aid_kit"),
+    ob.person("gus", "Gus Moreau", "drawing"),
 )
 
 
-def _places(extra: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    return [
-        *(
-            {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": y}
-            for n, (x, y) in enumerate(_DESKS, 1)
-        ),
-        *extra,
-    ]
-
-
-def _people(
-    people: tuple[tuple[str, str, list[dict[str, str]]], ...], file_type: str
-) -> list[dict[str, Any]]:
-    return [
-        {
-            "id": pid,
-            "name": name,
-            "location": f"desk_{n}",
-            "handle": f"@{pid}",
-            "owns": [*owns, {"type": file_type}],
-        }
-        for n, (pid, name, owns) in enumerate(people, 1)
-    ]
-
-
 def raw_fablab() -> dict[str, Any]:
-    return {
-        "name": "fablab",
-        "locations": _places(
-            [
-                {"id": "workshop", "kind": "facility", "name": "Workshop", "x": 4.0, "y": 20.5},
-                {
-                    "id": "store_room",
-                    "kind": "facility",
-                    "name": "Store room",
-                    "x": 14.0,
-                    "y": 20.5,
-                },
-            ]
-        ),
-        "item_types": [
-            {"id": "laser_measure", "name": "laser measure", "synonyms": ["laser meter"]},
-            {"id": "tape", "name": "tape measure"},
-            {"id": "drawing", "name": "drawing", "kind": "personal", "synonyms": ["drawings"]},
-            {
-                "id": "design_file",
-                "name": "design file",
-                "kind": "electronic",
-                "synonyms": ["stl", "file"],
-            },
-            {"id": "plot", "name": "plot", "kind": "product", "synonyms": ["plotted sheet"]},
-            {
-                "id": "model_part",
-                "name": "printed part",
-                "kind": "product",
-                "synonyms": ["3d print"],
-            },
-            {"id": "cut_parts", "name": "cut parts", "kind": "product", "synonyms": ["bits"]},
-            {"id": "kit_bag", "name": "kit bag", "kind": "product"},
-            {"id": "first_aid_kit", "name": "first aid kit", "synonyms": ["kit"]},
+    return ob.office_file(
+        "fablab",
+        _FAB_PEOPLE,
+        everyone_owns=["design_file"],
+        rooms=[
+            ob.room("workshop", "Workshop", 4.0, 20.5),
+            ob.room("store_room", "Store room", 14.0, 20.5),
         ],
-        "operations": [
-            {
-                "id": "plot",
-                "name": "plot",
-                "verbs": ["plot", "print"],
-                "input": "design_file",
-                "product": "plot",
-            },
-            {
-                "id": "print3d",
-                "name": "3D print",
-                "verbs": ["3d print", "3d-print"],
-                "input": "design_file",
-                "product": "model_part",
-            },
-            {
-                "id": "cut",
-                "name": "laser cut",
-                "verbs": ["laser", "lasercut", "laser-cut"],
-                "input": "design_file",
-                "product": "cut_parts",
-            },
-            {"id": "bundle", "name": "make up a kit bag", "product": "kit_bag"},
+        item_types=[
+            ob.item("laser_measure", "laser measure", synonyms=["laser meter"]),
+            ob.item("tape", "tape measure"),
+            ob.item("drawing", "drawing", "personal", synonyms=["drawings"]),
+            ob.item("design_file", "design file", "electronic", synonyms=["stl", "file"]),
+            ob.item("plot", "plot", "product", synonyms=["plotted sheet"]),
+            ob.item("model_part", "printed part", "product", synonyms=["3d print"]),
+            ob.item("cut_parts", "cut parts", "product", synonyms=["bits"]),
+            ob.item("kit_bag", "kit bag", "product"),
+            ob.item("first_aid_kit", "first aid kit", synonyms=["kit"]),
         ],
-        "people": _people(_FAB_PEOPLE, "design_file"),
-        "facilities": [
-            {
-                "id": "plotter",
-                "name": "plotter",
-                "location": "workshop",
-                "operations": ["plot"],
-                "guards": ["hana"],
-                "products": ["plot"],
-            },
-            {
-                "id": "printer3d",
-                "name": "3D printer",
-                "location": "workshop",
-                "operations": ["print3d"],
-                "guards": ["priit"],
-                "products": ["model_part"],
-            },
-            {
-                "id": "laser_cutter",
-                "name": "laser cutter",
-                "location": "workshop",
-                "operations": ["cut"],
-                "guards": ["priit"],
-                "products": ["cut_parts"],
-            },
-            {
-                "id": "stores",
-                "name": "stores cupboard",
-                "location": "store_room",
-                "operations": ["bundle"],
-                "guards": ["wanda"],
-                "products": ["kit_bag"],
-            },
+        operations=[
+            ob.operation("plot", "plot", "print", input="design_file", product="plot"),
+            ob.operation(
+                "print3d",
+                "3d print",
+                "3d-print",
+                name="3D print",
+                input="design_file",
+                product="model_part",
+            ),
+            ob.operation(
+                "cut",
+                "laser",
+                "lasercut",
+                "laser-cut",
+                name="laser cut",
+                input="design_file",
+                product="cut_parts",
+            ),
+            ob.operation("bundle", name="make up a kit bag", product="kit_bag"),
         ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _FAB_PEOPLE]}],
-        "robot": {"home": "workshop"},
-    }
+        facilities=[
+            ob.facility(
+                "plotter",
+                "plotter",
+                at="workshop",
+                guards=["hana"],
+                operations=["plot"],
+                products=["plot"],
+            ),
+            ob.facility(
+                "printer3d",
+                "3D printer",
+                at="workshop",
+                guards=["priit"],
+                operations=["print3d"],
+                products=["model_part"],
+            ),
+            ob.facility(
+                "laser_cutter",
+                "laser cutter",
+                at="workshop",
+                guards=["priit"],
+                operations=["cut"],
+                products=["cut_parts"],
+            ),
+            ob.facility(
+                "stores",
+                "stores cupboard",
+                at="store_room",
+                guards=["wanda"],
+                operations=["bundle"],
+                products=["kit_bag"],
+            ),
+        ],
+        home="workshop",
+    )
 
 
-@functools.cache
-def fablab() -> Office:
-    return parse_office(raw_fablab(), "fablab")
+fablab = ob.parsed(raw_fablab)
 
 
 _COSTUME_PEOPLE = (
-    ("ada", "Ada Quist", [{"type": "costume"}, {"type": "drawing"}]),
-    ("bram", "Bram Dekker", [{"type": "costume"}, {"type": "drawing"}]),
-    ("cleo", "Cleo Marin", [{"type": "costume"}]),
-    ("dov", "Dov Adler", [{"type": "drawing"}]),
-    ("esme", "Esme Lind", [{"type": "costume"}]),
-    ("fitz", "Fitz Amari", [{"type": "drawing"}]),
+    ob.person("ada", "Ada Quist", "costume", "drawing"),
+    ob.person("bram", "Bram Dekker", "costume", "drawing"),
+    ob.person("cleo", "Cleo Marin", "costume"),
+    ob.person("dov", "Dov Adler", "drawing"),
+    ob.person("esme", "Esme Lind", "costume"),
+    ob.person("fitz", "Fitz Amari", "drawing"),
 )
 
 
 def raw_costume_works() -> dict[str, Any]:
-    return {
-        "name": "costume_works",
-        "locations": _places(
-            [
-                {"id": "shop_floor", "kind": "facility", "name": "Shop floor", "x": 4.0, "y": 20.5},
-                {
-                    "id": "wardrobe_room",
-                    "kind": "facility",
-                    "name": "Wardrobe room",
-                    "x": 16.0,
-                    "y": 20.5,
-                },
-            ]
-        ),
-        "item_types": [
-            {"id": "costume", "name": "costume", "kind": "personal"},
-            {"id": "drawing", "name": "drawing", "kind": "personal", "synonyms": ["drawings"]},
-            {"id": "artwork", "name": "artwork", "kind": "electronic", "synonyms": ["file"]},
-            {"id": "decal", "name": "vinyl decal", "kind": "product", "synonyms": ["decal"]},
-            {"id": "plaque", "name": "engraved plaque", "kind": "product", "synonyms": ["plaque"]},
-            {
-                "id": "routed_panel",
-                "name": "routed panel",
-                "kind": "product",
-                "synonyms": ["panel"],
-            },
-            {
-                "id": "transfer",
-                "name": "pressed transfer",
-                "kind": "product",
-                "synonyms": ["transfer"],
-            },
-            {"id": "scan", "name": "scan", "kind": "product", "synonyms": ["pdf"]},
+    return ob.office_file(
+        "costume_works",
+        _COSTUME_PEOPLE,
+        everyone_owns=["artwork"],
+        rooms=[
+            ob.room("shop_floor", "Shop floor", 4.0, 20.5),
+            ob.room("wardrobe_room", "Wardrobe room", 16.0, 20.5),
         ],
-        "operations": [
-            {
-                "id": "vinyl",
-                "name": "vinyl cut",
-                "verbs": ["vinyl cut", "vinyl-cut"],
-                "input": "artwork",
-                "product": "decal",
-            },
-            {
-                "id": "engrave",
-                "name": "laser engrave",
-                "verbs": ["engrave", "laser engrave"],
-                "input": "artwork",
-                "product": "plaque",
-            },
-            {
-                "id": "rout",
-                "name": "rout",
-                "verbs": ["rout", "mill", "cnc"],
-                "input": "artwork",
-                "product": "routed_panel",
-            },
-            {
-                "id": "heatpress",
-                "name": "heat press",
-                "verbs": ["heat press", "heat-press"],
-                "input": "artwork",
-                "product": "transfer",
-            },
-            {"id": "steam", "name": "press", "verbs": ["press", "steam"], "input": "costume"},
-            {
-                "id": "scan",
-                "name": "scan",
-                "verbs": ["scan"],
-                "input": "drawing",
-                "product": "scan",
-            },
+        item_types=[
+            ob.item("costume", "costume", "personal"),
+            ob.item("drawing", "drawing", "personal", synonyms=["drawings"]),
+            ob.item("artwork", "artwork", "electronic", synonyms=["file"]),
+            ob.item("decal", "vinyl decal", "product", synonyms=["decal"]),
+            ob.item("plaque", "engraved plaque", "product", synonyms=["plaque"]),
+            ob.item("routed_panel", "routed panel", "product", synonyms=["panel"]),
+            ob.item("transfer", "pressed transfer", "product", synonyms=["transfer"]),
+            ob.item("scan", "scan", "product", synonyms=["pdf"]),
         ],
-        "people": _people(_COSTUME_PEOPLE, "artwork"),
-        "facilities": [
-            {
-                "id": "vinyl_cutter",
-                "name": "vinyl cutter",
-                "location": "shop_floor",
-                "operations": ["vinyl"],
-                "guards": ["dov"],
-                "products": ["decal"],
-            },
-            {
-                "id": "laser_engraver",
-                "name": "laser engraver",
-                "location": "shop_floor",
-                "operations": ["engrave"],
-                "guards": ["dov"],
-                "products": ["plaque"],
-            },
-            {
-                "id": "cnc_router",
-                "name": "CNC router",
-                "location": "shop_floor",
-                "operations": ["rout"],
-                "guards": ["fitz"],
-                "products": ["routed_panel"],
-            },
-            {
-                "id": "heat_press",
-                "name": "heat press",
-                "location": "shop_floor",
-                "operations": ["heatpress"],
-                "guards": ["fitz"],
-                "products": ["transfer"],
-            },
-            {
-                "id": "wardrobe",
-                "name": "wardrobe",
-                "location": "wardrobe_room",
-                "operations": ["steam"],
-                "guards": ["esme"],
-            },
-            {
-                "id": "scanner",
-                "name": "scanner",
-                "location": "shop_floor",
-                "operations": ["scan"],
-                "guards": ["dov"],
-                "products": ["scan"],
-            },
+        operations=[
+            ob.operation(
+                "vinyl",
+                "vinyl cut",
+                "vinyl-cut",
+                name="vinyl cut",
+                input="artwork",
+                product="decal",
+            ),
+            ob.operation(
+                "engrave",
+                "engrave",
+                "laser engrave",
+                name="laser engrave",
+                input="artwork",
+                product="plaque",
+            ),
+            ob.operation("rout", "rout", "mill", "cnc", input="artwork", product="routed_panel"),
+            ob.operation(
+                "heatpress",
+                "heat press",
+                "heat-press",
+                name="heat press",
+                input="artwork",
+                product="transfer",
+            ),
+            ob.operation("steam", "press", "steam", name="press", input="costume"),
+            ob.operation("scan", "scan", input="drawing", product="scan"),
         ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _COSTUME_PEOPLE]}],
-        "robot": {"home": "shop_floor"},
-    }
+        facilities=[
+            ob.facility(
+                "vinyl_cutter",
+                "vinyl cutter",
+                at="shop_floor",
+                guards=["dov"],
+                operations=["vinyl"],
+                products=["decal"],
+            ),
+            ob.facility(
+                "laser_engraver",
+                "laser engraver",
+                at="shop_floor",
+                guards=["dov"],
+                operations=["engrave"],
+                products=["plaque"],
+            ),
+            ob.facility(
+                "cnc_router",
+                "CNC router",
+                at="shop_floor",
+                guards=["fitz"],
+                operations=["rout"],
+                products=["routed_panel"],
+            ),
+            ob.facility(
+                "heat_press",
+                "heat press",
+                at="shop_floor",
+                guards=["fitz"],
+                operations=["heatpress"],
+                products=["transfer"],
+            ),
+            ob.facility(
+                "wardrobe", "wardrobe", at="wardrobe_room", guards=["esme"], operations=["steam"]
+            ),
+            ob.facility(
+                "scanner",
+                "scanner",
+                at="shop_floor",
+                guards=["dov"],
+                operations=["scan"],
+                products=["scan"],
+            ),
+        ],
+        home="shop_floor",
+    )
 
 
-@functools.cache
-def costume_works() -> Office:
-    return parse_office(raw_costume_works(), "costume_works")
+costume_works = ob.parsed(raw_costume_works)

@@ -8,108 +8,78 @@ banner, an electronic file that the print room renders as a printout, and ordina
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
-# (id, name, aliases, location, owned types)
-_PEOPLE: tuple[tuple[str, str, list[str], str, list[str]], ...] = (
-    ("bea", "Bea Lindgren", [], "desk_1", ["hole_punch", "consent_form", "file"]),
-    ("robin_b", "Robin Baptiste", ["Robin B"], "desk_2", ["scissors", "file"]),
-    ("robin_o", "Robin Okonkwo", ["Robin O"], "desk_3", ["board_marker", "scissors", "file"]),
-    ("tomas", "Tomás Ibarra", [], "desk_4", ["board_marker", "hole_punch", "file", "torch"]),
-    ("nkechi", "Nkechi Adeyemi", [], "desk_5", ["consent_form", "file"]),
-    ("linh", "Linh Vo", [], "desk_6", ["file"]),
-    (
+_PEOPLE = (
+    ob.person("bea", "Bea Lindgren", "hole_punch", "consent_form", "file"),
+    ob.person("robin_b", "Robin Baptiste", "scissors", "file", aliases=["Robin B"]),
+    ob.person("robin_o", "Robin Okonkwo", "board_marker", "scissors", "file", aliases=["Robin O"]),
+    ob.person("tomas", "Tomás Ibarra", "board_marker", "hole_punch", "file", "torch"),
+    ob.person("nkechi", "Nkechi Adeyemi", "consent_form", "file"),
+    ob.person("linh", "Linh Vo", "file"),
+    ob.person(
         "marguerite",
         "Marguerite Sallow",
-        ["the Deputy Head", "the deputy"],
-        "desk_7",
-        ["consent_form", "file"],
+        "consent_form",
+        "file",
+        aliases=["the Deputy Head", "the deputy"],
     ),
-    ("hattie", "Hattie Quill", [], "repro_room", ["hole_punch"]),
-    ("fenella", "Fenella Hart", [], "desk_8", ["scissors", "board_marker"]),
-    ("otto", "Otto Brisk", [], "desk_9", ["banner"]),
+    ob.person("hattie", "Hattie Quill", "hole_punch", at="repro_room"),
+    ob.person("fenella", "Fenella Hart", "scissors", "board_marker"),
+    ob.person("otto", "Otto Brisk", "banner"),
 )
 
 
 def raw_field_centre() -> dict[str, Any]:
-    return {
-        "name": "field_centre",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0), 1)
+    return ob.office_file(
+        "field_centre",
+        _PEOPLE,
+        desk_for_everyone=False,
+        rooms=[
+            ob.room("repro_room", "Repro room", 4.0, 20.5),
+            ob.room("kit_room", "Kit room", 20.0, 20.5),
+        ],
+        item_types=[
+            ob.item("board_marker", "board marker", synonyms=["board pen"]),
+            ob.item("scissors", "scissors", synonyms=["pair of scissors"]),
+            ob.item("hole_punch", "hole punch"),
+            ob.item("torch", "torch", synonyms=["flashlight"]),
+            ob.item("hi_vis", "hi-vis vest", synonyms=["hi-vis", "high-vis vest"]),
+            ob.item(
+                "consent_form",
+                "consent form",
+                "personal",
+                signable=True,
+                synonyms=["permission slip"],
             ),
-            {"id": "repro_room", "kind": "facility", "name": "Repro room", "x": 4.0, "y": 20.5},
-            {"id": "kit_room", "kind": "facility", "name": "Kit room", "x": 20.0, "y": 20.5},
+            ob.item("banner", "banner", "personal"),
+            ob.item(
+                "file",
+                "electronic file",
+                "electronic",
+                synonyms=["file", "pdf", "lesson plan", "worksheet"],
+            ),
+            ob.item("printout", "printout", "product", synonyms=["hard copy"]),
         ],
-        "item_types": [
-            {"id": "board_marker", "name": "board marker", "synonyms": ["board pen"]},
-            {"id": "scissors", "name": "scissors", "synonyms": ["pair of scissors"]},
-            {"id": "hole_punch", "name": "hole punch"},
-            {"id": "torch", "name": "torch", "synonyms": ["flashlight"]},
-            {"id": "hi_vis", "name": "hi-vis vest", "synonyms": ["hi-vis", "high-vis vest"]},
-            {
-                "id": "consent_form",
-                "name": "consent form",
-                "kind": "personal",
-                "signable": True,
-                "synonyms": ["permission slip"],
-            },
-            {"id": "banner", "name": "banner", "kind": "personal"},
-            {
-                "id": "file",
-                "name": "electronic file",
-                "kind": "electronic",
-                "synonyms": ["file", "pdf", "lesson plan", "worksheet"],
-            },
-            {"id": "printout", "name": "printout", "kind": "product", "synonyms": ["hard copy"]},
+        operations=[ob.operation("print", "print", input="file", product="printout")],
+        facilities=[
+            ob.facility(
+                "reprographics",
+                "reprographics room",
+                synonyms=["repro"],
+                at="repro_room",
+                guards=["hattie"],
+                operations=["print"],
+                products=["printout"],
+            ),
+            ob.facility(
+                "kit_store", "kit store", at="kit_room", guards=["linh"], supplies=["hi_vis"]
+            ),
         ],
-        "operations": [
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "file",
-                "product": "printout",
-            },
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": aliases,
-                "location": location,
-                "handle": f"@{pid}",
-                "owns": [{"type": t} for t in owns],
-            }
-            for pid, name, aliases, location, owns in _PEOPLE
-        ],
-        "facilities": [
-            {
-                "id": "reprographics",
-                "name": "reprographics room",
-                "synonyms": ["repro"],
-                "location": "repro_room",
-                "operations": ["print"],
-                "guards": ["hattie"],
-                "products": ["printout"],
-            },
-            {
-                "id": "kit_store",
-                "name": "kit store",
-                "location": "kit_room",
-                "guards": ["linh"],
-                "supplies": [{"type": "hi_vis"}],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "kit_room"},
-    }
+        home="kit_room",
+    )
 
 
-@functools.cache
-def field_centre() -> Office:
-    return parse_office(raw_field_centre(), "field_centre")
+field_centre = ob.parsed(raw_field_centre)

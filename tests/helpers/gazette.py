@@ -9,156 +9,91 @@ strips (synonym "negatives") that people hold."""
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
-from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
-_PEOPLE: tuple[tuple[str, str, list[str], list[dict[str, Any]]], ...] = (
-    (
-        "ines",
-        "Ines Duarte",
-        [],
-        [{"type": "page_proof"}, {"type": "running_sheet"}, {"type": "file"}],
-    ),
-    (
-        "asa",
-        "Åsa Lindgren",
-        [],
-        [{"type": "long_lens"}, {"type": "camera"}, {"type": "negative_strip"}],
-    ),
-    ("ramon", "Ramón Ibáñez", [], [{"type": "long_lens"}, {"type": "camera"}]),
-    ("lukasz", "Łukasz Nowak", [], [{"type": "long_lens"}, {"type": "light_meter"}]),
-    ("zoe", "Zoë Marchetti", [], [{"type": "camera"}, {"type": "page_proof"}]),
-    ("mark", "Mark Ellison", [], [{"type": "cutting_mat"}, {"type": "magnifying_glass"}]),
-    ("will", "Will Tanner", [], [{"type": "light_meter"}, {"type": "page_proof"}]),
-    ("sunny", "Sunny Rao", [], [{"type": "magnifying_glass"}]),
-    ("bjorn", "Bjørn Haugen", [], [{"type": "long_lens"}, {"type": "camera"}]),
-    ("frank", "Frank Osei", [], [{"type": "cutting_mat"}]),
-    ("bea", "Beatrix Holm", ["Bea", "the Publisher"], [{"type": "running_sheet"}]),
+_PEOPLE = (
+    ob.person("ines", "Ines Duarte", "page_proof", "running_sheet", "file"),
+    ob.person("asa", "Åsa Lindgren", "long_lens", "camera", "negative_strip"),
+    ob.person("ramon", "Ramón Ibáñez", "long_lens", "camera"),
+    ob.person("lukasz", "Łukasz Nowak", "long_lens", "light_meter"),
+    ob.person("zoe", "Zoë Marchetti", "camera", "page_proof"),
+    ob.person("mark", "Mark Ellison", "cutting_mat", "magnifying_glass"),
+    ob.person("will", "Will Tanner", "light_meter", "page_proof"),
+    ob.person("sunny", "Sunny Rao", "magnifying_glass"),
+    ob.person("bjorn", "Bjørn Haugen", "long_lens", "camera"),
+    ob.person("frank", "Frank Osei", "cutting_mat"),
+    ob.person("bea", "Beatrix Holm", "running_sheet", aliases=["Bea", "the Publisher"]),
 )
 
 
 def raw_newsroom() -> dict[str, Any]:
-    return {
-        "name": "newsroom",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate(
-                    (5.0, 9.0, 13.0, 17.0, 21.0, 25.0, 29.0, 33.0, 37.0, 41.0, 45.0), 1
-                )
+    return ob.office_file(
+        "newsroom",
+        _PEOPLE,
+        rooms=[
+            ob.room("print_room", "Print room", 4.0, 20.5),
+            ob.room("back_office", "Back office", 20.0, 20.5),
+            ob.room("post_room", "Post room", 30.0, 20.5),
+        ],
+        item_types=[
+            ob.item("long_lens", "long lens", synonyms=["telephoto"]),
+            ob.item("camera", "camera"),
+            ob.item("light_meter", "light meter", synonyms=["exposure meter"]),
+            ob.item("magnifying_glass", "magnifying glass", synonyms=["eyeglass"]),
+            ob.item("cutting_mat", "cutting mat"),
+            ob.item("negative_strip", "negative strip", "personal", synonyms=["negatives"]),
+            ob.item("page_proof", "page proof", "personal", synonyms=["proof"]),
+            ob.item("running_sheet", "running sheet", "personal", synonyms=["rundown"]),
+            ob.item("file", "electronic file", "electronic", synonyms=["file", "draft"]),
+            ob.item("printout", "printout", "product", synonyms=["hard copy"]),
+        ],
+        operations=[
+            ob.operation("vet", "vet", name="standards read", input="page_proof"),
+            ob.operation(
+                "courier",
+                "courier",
+                "run",
+                "dispatch",
+                input="page_proof",
+                sends_out=True,
+                destination_asked=ob.ASKS_NAME_AND_ADDRESS,
             ),
-            {"id": "print_room", "kind": "facility", "name": "Print room", "x": 4.0, "y": 20.5},
-            {"id": "back_office", "kind": "facility", "name": "Back office", "x": 20.0, "y": 20.5},
-            {"id": "post_room", "kind": "facility", "name": "Post room", "x": 30.0, "y": 20.5},
+            ob.operation("print", "print", input="file", product="printout"),
+            ob.operation("shred", "shred", input="page_proof", consumes=True),
+            ob.operation("trim", "trim", "cut", input="printout"),
         ],
-        "item_types": [
-            {"id": "long_lens", "name": "long lens", "synonyms": ["telephoto"]},
-            {"id": "camera", "name": "camera"},
-            {"id": "light_meter", "name": "light meter", "synonyms": ["exposure meter"]},
-            {"id": "magnifying_glass", "name": "magnifying glass", "synonyms": ["eyeglass"]},
-            {"id": "cutting_mat", "name": "cutting mat"},
-            {
-                "id": "negative_strip",
-                "name": "negative strip",
-                "kind": "personal",
-                "synonyms": ["negatives"],
-            },
-            {
-                "id": "page_proof",
-                "name": "page proof",
-                "kind": "personal",
-                "synonyms": ["proof"],
-            },
-            {
-                "id": "running_sheet",
-                "name": "running sheet",
-                "kind": "personal",
-                "synonyms": ["rundown"],
-            },
-            {
-                "id": "file",
-                "name": "electronic file",
-                "kind": "electronic",
-                "synonyms": ["file", "draft"],
-            },
-            {"id": "printout", "name": "printout", "kind": "product", "synonyms": ["hard copy"]},
+        facilities=[
+            ob.facility(
+                "standards_desk",
+                "standards desk",
+                synonyms=["standards", "the standards team", "compliance", "editorial"],
+                at="back_office",
+                guards=["mark"],
+                operations=["vet"],
+            ),
+            ob.facility(
+                "courier_desk",
+                "courier desk",
+                at="post_room",
+                guards=["sunny"],
+                operations=["courier", "shred"],
+            ),
+            ob.facility(
+                "printer",
+                "printer",
+                at="print_room",
+                guards=["will"],
+                operations=["print"],
+                products=["printout"],
+            ),
+            ob.facility(
+                "trimmer", "trimmer", at="print_room", guards=["will"], operations=["trim"]
+            ),
         ],
-        "operations": [
-            {"id": "vet", "name": "standards read", "verbs": ["vet"], "input": "page_proof"},
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier", "run", "dispatch"],
-                "input": "page_proof",
-                "sends_out": True,
-                "destination_asked": "the name and address of the place",
-            },
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "file",
-                "product": "printout",
-            },
-            {
-                "id": "shred",
-                "name": "shred",
-                "verbs": ["shred"],
-                "input": "page_proof",
-                "consumes": True,
-            },
-            {"id": "trim", "name": "trim", "verbs": ["trim", "cut"], "input": "printout"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "aliases": aliases,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": owns,
-            }
-            for n, (pid, name, aliases, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "standards_desk",
-                "name": "standards desk",
-                "synonyms": ["standards", "the standards team", "compliance", "editorial"],
-                "location": "back_office",
-                "operations": ["vet"],
-                "guards": ["mark"],
-            },
-            {
-                "id": "courier_desk",
-                "name": "courier desk",
-                "location": "post_room",
-                "operations": ["courier", "shred"],
-                "guards": ["sunny"],
-            },
-            {
-                "id": "printer",
-                "name": "printer",
-                "location": "print_room",
-                "operations": ["print"],
-                "guards": ["will"],
-                "products": ["printout"],
-            },
-            {
-                "id": "trimmer",
-                "name": "trimmer",
-                "location": "print_room",
-                "operations": ["trim"],
-                "guards": ["will"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "print_room"},
-    }
+        home="print_room",
+    )
 
 
-@functools.cache
-def newsroom() -> Office:
-    return parse_office(raw_newsroom(), "newsroom")
+newsroom = ob.parsed(raw_newsroom)

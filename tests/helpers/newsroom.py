@@ -13,14 +13,15 @@ import functools
 from typing import Any
 
 from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
 _PEOPLE = (
-    ("ines", "Ines Varga", [{"type": "page_proof"}, {"type": "lanyard"}]),
-    ("tomas", "Tomas Reyes", [{"type": "page_proof"}, {"type": "desk_stamp"}]),
-    ("femi", "Femi Adeyemi", [{"type": "page_proof"}]),
-    ("marta", "Marta Lindqvist", [{"type": "page_proof"}, {"type": "lanyard"}]),
-    ("oskar", "Oskar Brandt", [{"type": "page_proof"}]),
-    ("hana", "Hana Sato", []),
+    ob.person("ines", "Ines Varga", "page_proof", "lanyard"),
+    ob.person("tomas", "Tomas Reyes", "page_proof", "desk_stamp"),
+    ob.person("femi", "Femi Adeyemi", "page_proof"),
+    ob.person("marta", "Marta Lindqvist", "page_proof", "lanyard"),
+    ob.person("oskar", "Oskar Brandt", "page_proof"),
+    ob.person("hana", "Hana Sato"),
 )
 
 
@@ -30,134 +31,93 @@ def raw_newsroom(*, style_desk: bool = False) -> dict[str, Any]:
     raw = _raw()
     if style_desk:
         raw["operations"].append(
-            {"id": "subedit", "name": "style read", "verbs": ["subedit"], "input": "page_proof"}
+            ob.operation("subedit", "subedit", name="style read", input="page_proof")
         )
         raw["facilities"].append(
-            {
-                "id": "subs_desk",
-                "name": "subs desk",
-                "location": "back_office",
-                "operations": ["subedit"],
-                "guards": ["femi"],
-            }
+            ob.facility(
+                "subs_desk", "subs desk", at="back_office", guards=["femi"], operations=["subedit"]
+            )
         )
     return raw
 
 
 def _raw() -> dict[str, Any]:
-    return {
-        "name": "newsroom",
-        "locations": [
-            *(
-                {"id": f"desk_{n}", "kind": "workstation", "name": f"Desk {n}", "x": x, "y": 6.0}
-                for n, x in enumerate((5.0, 9.0, 13.0, 17.0, 21.0, 25.0), 1)
+    return ob.office_file(
+        "newsroom",
+        _PEOPLE,
+        everyone_owns=["agenda"],
+        rooms=[
+            ob.room("back_office", "Back office", 6.0, 20.5),
+            ob.room("post_room", "Post room", 14.0, 20.5),
+            ob.room("kitchen", "Kitchen", 22.0, 20.5),
+        ],
+        item_types=[
+            ob.item("page_proof", "page proof", "personal", signable=True, synonyms=["proof"]),
+            ob.item("lanyard", "lanyard"),
+            ob.item("desk_stamp", "desk stamp", seals=True),
+            ob.item("notebook", "reporter's notebook", consumable=True),
+            ob.item("pen", "pen", consumable=True),
+            ob.item("agenda", "agenda", "electronic"),
+            ob.item("printout", "printout", "product"),
+            ob.item("coffee", "coffee", "product"),
+            ob.item("tea", "tea", "product"),
+        ],
+        operations=[
+            ob.operation("vet", "vet", name="legal read", input="page_proof"),
+            ob.operation(
+                "courier",
+                "courier",
+                input="page_proof",
+                sends_out=True,
+                destination_asked="which printing works it should go to",
+                done="sent with the courier",
             ),
-            {"id": "back_office", "kind": "facility", "name": "Back office", "x": 6.0, "y": 20.5},
-            {"id": "post_room", "kind": "facility", "name": "Post room", "x": 14.0, "y": 20.5},
-            {"id": "kitchen", "kind": "facility", "name": "Kitchen", "x": 22.0, "y": 20.5},
+            ob.operation("print", "print", input="agenda", product="printout"),
+            ob.operation("brew", "brew", name="make coffee", product="coffee"),
+            ob.operation("steep", "steep", name="make tea", product="tea"),
         ],
-        "item_types": [
-            {
-                "id": "page_proof",
-                "name": "page proof",
-                "kind": "personal",
-                "signable": True,
-                "synonyms": ["proof"],
-            },
-            {"id": "lanyard", "name": "lanyard"},
-            {"id": "desk_stamp", "name": "desk stamp", "seals": True},
-            {"id": "notebook", "name": "reporter's notebook", "consumable": True},
-            {"id": "pen", "name": "pen", "consumable": True},
-            {"id": "agenda", "name": "agenda", "kind": "electronic"},
-            {"id": "printout", "name": "printout", "kind": "product"},
-            {"id": "coffee", "name": "coffee", "kind": "product"},
-            {"id": "tea", "name": "tea", "kind": "product"},
+        facilities=[
+            ob.facility(
+                "legal_desk", "legal desk", at="back_office", guards=["oskar"], operations=["vet"]
+            ),
+            ob.facility(
+                "dispatch",
+                "dispatch desk",
+                at="post_room",
+                guards=["hana"],
+                operations=["courier"],
+            ),
+            ob.facility("post_room_tray", "post room", at="post_room", guards=["hana"]),
+            ob.facility(
+                "print_room",
+                "print room",
+                at="back_office",
+                guards=["oskar"],
+                operations=["print"],
+                products=["printout"],
+            ),
+            ob.facility(
+                "cupboard",
+                "stationery cupboard",
+                synonyms=["cupboard"],
+                at="back_office",
+                guards=["oskar"],
+                supplies=["notebook", "pen"],
+            ),
+            ob.facility(
+                "kitchen_counter",
+                "kitchen counter",
+                at="kitchen",
+                guards=["marta"],
+                operations=["brew", "steep"],
+                products=["coffee", "tea"],
+            ),
         ],
-        "operations": [
-            {"id": "vet", "name": "legal read", "verbs": ["vet"], "input": "page_proof"},
-            {
-                "id": "courier",
-                "name": "courier",
-                "verbs": ["courier"],
-                "input": "page_proof",
-                "sends_out": True,
-                "destination_asked": "which printing works it should go to",
-                "done": "sent with the courier",
-            },
-            {
-                "id": "print",
-                "name": "print",
-                "verbs": ["print"],
-                "input": "agenda",
-                "product": "printout",
-            },
-            {"id": "brew", "name": "make coffee", "verbs": ["brew"], "product": "coffee"},
-            {"id": "steep", "name": "make tea", "verbs": ["steep"], "product": "tea"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "agenda"}],
-            }
-            for n, (pid, name, owns) in enumerate(_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "legal_desk",
-                "name": "legal desk",
-                "location": "back_office",
-                "operations": ["vet"],
-                "guards": ["oskar"],
-            },
-            {
-                "id": "dispatch",
-                "name": "dispatch desk",
-                "location": "post_room",
-                "operations": ["courier"],
-                "guards": ["hana"],
-            },
-            {
-                "id": "post_room_tray",
-                "name": "post room",
-                "location": "post_room",
-                "guards": ["hana"],
-            },
-            {
-                "id": "print_room",
-                "name": "print room",
-                "location": "back_office",
-                "operations": ["print"],
-                "guards": ["oskar"],
-                "products": ["printout"],
-            },
-            {
-                "id": "cupboard",
-                "name": "stationery cupboard",
-                "synonyms": ["cupboard"],
-                "location": "back_office",
-                "guards": ["oskar"],
-                "supplies": [{"type": "notebook"}, {"type": "pen"}],
-            },
-            {
-                "id": "kitchen_counter",
-                "name": "kitchen counter",
-                "location": "kitchen",
-                "operations": ["brew", "steep"],
-                "guards": ["marta"],
-                "products": ["coffee", "tea"],
-            },
-        ],
-        "groups": [{"id": "all", "name": "Everyone", "members": [p[0] for p in _PEOPLE]}],
-        "robot": {"home": "back_office"},
-    }
+        home="back_office",
+    )
 
 
-@functools.cache
-def newsroom() -> Office:
-    return parse_office(raw_newsroom(), "newsroom")
+newsroom = ob.parsed(raw_newsroom)
 
 
 @functools.cache

@@ -142,11 +142,15 @@ def office_file(
     desks: Sequence[tuple[float, float]] | None = None,
     desk_word: str = "desk",
     group: tuple[str, str] = ("all", "Everyone"),
+    desk_for_everyone: bool = True,
 ) -> Row:
     """The office file: person n sits at workstation n (``{desk_word}_n``, at ``desks[n-1]``,
-    a row along y=6 by default) unless placed elsewhere; ``group``: the id and name of the
-    group of everyone; ``home``: where the robot waits."""
-    places = desks if desks is not None else desk_row(len(people))
+    a row along y=6 by default) unless placed elsewhere; ``desk_for_everyone`` False: a person
+    placed elsewhere has no workstation, and the desks are numbered over the others only;
+    ``group``: the id and name of the group of everyone; ``home``: where the robot waits."""
+    seated = [p for p in people if desk_for_everyone or p.at is None]
+    desk_of = {p.person_id: f"{desk_word}_{n}" for n, p in enumerate(seated, 1)}
+    places = desks if desks is not None else desk_row(len(seated))
     workstations = [
         room(f"{desk_word}_{n}", f"{desk_word.capitalize()} {n}", x, y, kind="workstation")
         for n, (x, y) in enumerate(places, 1)
@@ -163,11 +167,11 @@ def office_file(
                     "id": p.person_id,
                     "name": p.name,
                     "aliases": list(p.aliases),
-                    "location": p.at or f"{desk_word}_{n}",
+                    "location": p.at or desk_of[p.person_id],
                     "handle": f"@{p.person_id}",
                     "owns": _things([*p.owns, *everyone_owns]),
                 }
-                for n, p in enumerate(people, 1)
+                for p in people
             ],
             "facilities": list(facilities),
             "groups": [

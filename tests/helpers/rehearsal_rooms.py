@@ -12,178 +12,128 @@ dataset tools (an outside writer's new office crashed ``dataset generate``).
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
 from assistantx.core.office import Office, parse_office
+from helpers import office_builder as ob
 
-_REHEARSAL_PEOPLE: tuple[tuple[str, str, list[dict[str, Any]]], ...] = (
-    ("ines", "Ines Carvalho", [{"type": "torch"}, {"type": "contract"}]),
-    ("tomas", "Tomas Weller", [{"type": "contract"}]),
-    ("priya", "Priya Raman", [{"type": "torch"}, {"type": "contract"}]),
-    ("bruno", "Bruno Aalto", [{"type": "stopwatch"}, {"type": "contract"}]),
-    ("hedda", "Hedda Moreau", [{"type": "stopwatch"}, {"type": "contract"}]),
-    ("kwesi", "Kwesi Boateng", [{"type": "contract"}]),
+_REHEARSAL_PEOPLE = (
+    ob.person("ines", "Ines Carvalho", "torch", "contract"),
+    ob.person("tomas", "Tomas Weller", "contract"),
+    ob.person("priya", "Priya Raman", "torch", "contract"),
+    ob.person("bruno", "Bruno Aalto", "stopwatch", "contract"),
+    ob.person("hedda", "Hedda Moreau", "stopwatch", "contract"),
+    ob.person("kwesi", "Kwesi Boateng", "contract"),
 )
 
 
 def raw_rehearsal_rooms() -> dict[str, Any]:
-    return {
-        "name": "rehearsal_rooms",
-        "locations": [
-            *(
-                {
-                    "id": f"desk_{n}",
-                    "kind": "workstation",
-                    "name": f"Desk {n}",
-                    "x": 4.0 * n,
-                    "y": 5.0,
-                }
-                for n in range(1, len(_REHEARSAL_PEOPLE) + 1)
+    return ob.office_file(
+        "rehearsal_rooms",
+        _REHEARSAL_PEOPLE,
+        everyone_owns=["script"],
+        desks=ob.desk_row(len(_REHEARSAL_PEOPLE), x0=4.0, y=5.0),
+        rooms=[
+            ob.room("copy_corner", "Copy corner", 6.0, 18.0),
+            ob.room("green_room", "Green room", 18.0, 18.0),
+        ],
+        item_types=[
+            ob.item("torch", "torch", synonyms=["flashlight"]),
+            ob.item("stopwatch", "stopwatch"),
+            ob.item("gaffer_tape", "gaffer tape", consumable=True, mass=True),
+            ob.item("contract", "contract", "personal", signable=True),
+            ob.item("script", "script", "electronic"),
+            ob.item("script_pack", "rehearsal script pack", "product", synonyms=["script pack"]),
+            ob.item("tea", "tea", "product"),
+        ],
+        operations=[
+            ob.operation(
+                "make_pack", "make up", name="make up", input="script", product="script_pack"
             ),
-            {"id": "copy_corner", "kind": "facility", "name": "Copy corner", "x": 6.0, "y": 18.0},
-            {"id": "green_room", "kind": "facility", "name": "Green room", "x": 18.0, "y": 18.0},
+            ob.operation("brew", "brew", name="make tea", product="tea"),
         ],
-        "item_types": [
-            {"id": "torch", "name": "torch", "synonyms": ["flashlight"]},
-            {"id": "stopwatch", "name": "stopwatch"},
-            {"id": "gaffer_tape", "name": "gaffer tape", "consumable": True, "mass": True},
-            {
-                "id": "contract",
-                "name": "contract",
-                "kind": "personal",
-                "signable": True,
-            },
-            {"id": "script", "name": "script", "kind": "electronic"},
-            {
-                "id": "script_pack",
-                "name": "rehearsal script pack",
-                "kind": "product",
-                "synonyms": ["script pack"],
-            },
-            {"id": "tea", "name": "tea", "kind": "product"},
+        facilities=[
+            ob.facility(
+                "photocopier",
+                "photocopier",
+                at="copy_corner",
+                guards=["ines", "tomas"],
+                operations=["make_pack"],
+                products=["script_pack"],
+            ),
+            ob.facility(
+                "urn",
+                "tea urn",
+                at="green_room",
+                guards=["hedda"],
+                operations=["brew"],
+                products=["tea"],
+            ),
+            ob.facility(
+                "prop_cupboard",
+                "prop cupboard",
+                at="green_room",
+                guards=["hedda"],
+                supplies=["gaffer_tape"],
+            ),
         ],
-        "operations": [
-            {
-                "id": "make_pack",
-                "name": "make up",
-                "verbs": ["make up"],
-                "input": "script",
-                "product": "script_pack",
-            },
-            {"id": "brew", "name": "make tea", "verbs": ["brew"], "product": "tea"},
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [*owns, {"type": "script"}],
-            }
-            for n, (pid, name, owns) in enumerate(_REHEARSAL_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "photocopier",
-                "name": "photocopier",
-                "location": "copy_corner",
-                "operations": ["make_pack"],
-                "guards": ["ines", "tomas"],
-                "products": ["script_pack"],
-            },
-            {
-                "id": "urn",
-                "name": "tea urn",
-                "location": "green_room",
-                "operations": ["brew"],
-                "guards": ["hedda"],
-                "products": ["tea"],
-            },
-            {
-                "id": "prop_cupboard",
-                "name": "prop cupboard",
-                "location": "green_room",
-                "guards": ["hedda"],
-                "supplies": [{"type": "gaffer_tape"}],
-            },
-        ],
-        "groups": [
-            {"id": "company", "name": "Company", "members": [p[0] for p in _REHEARSAL_PEOPLE]}
-        ],
-        "robot": {"home": "copy_corner"},
-    }
+        home="copy_corner",
+        group=("company", "Company"),
+    )
 
 
-@functools.cache
-def rehearsal_rooms() -> Office:
-    return parse_office(raw_rehearsal_rooms(), "rehearsal_rooms")
+rehearsal_rooms = ob.parsed(raw_rehearsal_rooms)
 
 
-_DRAFTING_PEOPLE: tuple[tuple[str, str], ...] = (
-    ("mira", "Mira Castell"),
-    ("oskar", "Oskar Lind"),
-    ("femi", "Femi Adeyemi"),
-    ("greta", "Greta Holm"),
-    ("yusuf", "Yusuf Demir"),
+def rehearsal_rooms_without_files() -> Office:
+    """The rehearsal rooms with no electronic file type at all: no scripts, so no script
+    packs and no photocopier that makes them up."""
+    raw = raw_rehearsal_rooms()
+    raw["item_types"] = [t for t in raw["item_types"] if t["id"] not in ("script", "script_pack")]
+    raw["operations"] = [o for o in raw["operations"] if o["id"] != "make_pack"]
+    raw["facilities"] = [f for f in raw["facilities"] if f["id"] != "photocopier"]
+    for person in raw["people"]:
+        person["owns"] = [o for o in person["owns"] if o["type"] != "script"]
+    return parse_office(raw, "no_files")
+
+
+_DRAFTING_PEOPLE = tuple(
+    ob.person(person_id, name, "scale_rule", "drawing")
+    for person_id, name in (
+        ("mira", "Mira Castell"),
+        ("oskar", "Oskar Lind"),
+        ("femi", "Femi Adeyemi"),
+        ("greta", "Greta Holm"),
+        ("yusuf", "Yusuf Demir"),
+    )
 )
 
 
 def raw_drafting_studio() -> dict[str, Any]:
-    return {
-        "name": "drafting_studio",
-        "locations": [
-            *(
-                {
-                    "id": f"desk_{n}",
-                    "kind": "workstation",
-                    "name": f"Desk {n}",
-                    "x": 5.0 * n,
-                    "y": 4.0,
-                }
-                for n in range(1, len(_DRAFTING_PEOPLE) + 1)
+    return ob.office_file(
+        "drafting_studio",
+        _DRAFTING_PEOPLE,
+        desks=ob.desk_row(len(_DRAFTING_PEOPLE), x0=5.0, step=5.0, y=4.0),
+        rooms=[ob.room("plot_room", "Plot room", 12.0, 16.0)],
+        item_types=[
+            ob.item("scale_rule", "scale rule"),
+            ob.item("drawing", "drawing", "electronic", synonyms=["cad file"]),
+            ob.item("plot", "plot", "product", synonyms=["large print"]),
+        ],
+        operations=[ob.operation("plot", "plot", input="drawing", product="plot")],
+        facilities=[
+            ob.facility(
+                "plotter",
+                "plotter",
+                at="plot_room",
+                guards=["mira", "oskar"],
+                operations=["plot"],
+                products=["plot"],
             ),
-            {"id": "plot_room", "kind": "facility", "name": "Plot room", "x": 12.0, "y": 16.0},
         ],
-        "item_types": [
-            {"id": "scale_rule", "name": "scale rule"},
-            {"id": "drawing", "name": "drawing", "kind": "electronic", "synonyms": ["cad file"]},
-            {"id": "plot", "name": "plot", "kind": "product", "synonyms": ["large print"]},
-        ],
-        "operations": [
-            {
-                "id": "plot",
-                "name": "plot",
-                "verbs": ["plot"],
-                "input": "drawing",
-                "product": "plot",
-            },
-        ],
-        "people": [
-            {
-                "id": pid,
-                "name": name,
-                "location": f"desk_{n}",
-                "handle": f"@{pid}",
-                "owns": [{"type": "scale_rule"}, {"type": "drawing"}],
-            }
-            for n, (pid, name) in enumerate(_DRAFTING_PEOPLE, 1)
-        ],
-        "facilities": [
-            {
-                "id": "plotter",
-                "name": "plotter",
-                "location": "plot_room",
-                "operations": ["plot"],
-                "guards": ["mira", "oskar"],
-                "products": ["plot"],
-            },
-        ],
-        "groups": [{"id": "studio", "name": "Studio", "members": [p[0] for p in _DRAFTING_PEOPLE]}],
-        "robot": {"home": "plot_room"},
-    }
+        home="plot_room",
+        group=("studio", "Studio"),
+    )
 
 
-@functools.cache
-def drafting_studio() -> Office:
-    return parse_office(raw_drafting_studio(), "drafting_studio")
+drafting_studio = ob.parsed(raw_drafting_studio)

@@ -13,6 +13,7 @@ from helpers.rehearsal_rooms import (
     drafting_studio,
     raw_rehearsal_rooms,
     rehearsal_rooms,
+    rehearsal_rooms_without_files,
 )
 
 
@@ -49,13 +50,7 @@ def test_a_physical_item_is_no_file_and_the_hint_names_the_offices_type() -> Non
 
 
 def test_an_office_with_no_files_says_so_rather_than_crashing() -> None:
-    raw = raw_rehearsal_rooms()
-    raw["item_types"] = [t for t in raw["item_types"] if t["id"] not in ("script", "script_pack")]
-    raw["operations"] = [o for o in raw["operations"] if o["id"] != "make_pack"]
-    raw["facilities"] = [f for f in raw["facilities"] if f["id"] != "photocopier"]
-    for person in raw["people"]:
-        person["owns"] = [o for o in person["owns"] if o["type"] != "script"]
-    office = parse_office(raw, "no_files")
+    office = rehearsal_rooms_without_files()
     with pytest.raises(GroundingError, match="no electronic files"):
         Resolver(office).ground(ForwardFile(source="priya", target="bruno"))
 

@@ -11,7 +11,12 @@ import pytest
 from assistantx.core.office import Office, load_office, parse_office
 from assistantx.core.ports.messenger import Attachment, ChatRef, InboundMessage, persons_file
 from assistantx.runtime.received_files import office_item, received_files
-from helpers.rehearsal_rooms import drafting_studio, raw_rehearsal_rooms, rehearsal_rooms
+from helpers.rehearsal_rooms import (
+    drafting_studio,
+    raw_rehearsal_rooms,
+    rehearsal_rooms,
+    rehearsal_rooms_without_files,
+)
 
 
 def _message(sender: str, *items: str) -> InboundMessage:
@@ -61,10 +66,4 @@ def test_an_office_whose_own_type_is_called_file_keeps_it() -> None:
 
 
 def test_an_office_with_no_files_keeps_the_name() -> None:
-    raw = raw_rehearsal_rooms()
-    raw["item_types"] = [t for t in raw["item_types"] if t["id"] not in ("script", "script_pack")]
-    raw["operations"] = [o for o in raw["operations"] if o["id"] != "make_pack"]
-    raw["facilities"] = [f for f in raw["facilities"] if f["id"] != "photocopier"]
-    for person in raw["people"]:
-        person["owns"] = [o for o in person["owns"] if o["type"] != "script"]
-    assert office_item(parse_office(raw, "no_files"), "file:bruno") == "file:bruno"
+    assert office_item(rehearsal_rooms_without_files(), "file:bruno") == "file:bruno"

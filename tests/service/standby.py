@@ -16,6 +16,8 @@ import psycopg
 from helpers.eventually import eventually_sync
 from service.server import OPERATOR, Server, base_env, free_port
 
+_OPERATOR_HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
+
 
 @dataclass
 class Replica:
@@ -89,6 +91,40 @@ def holder(replicas: list[Server | Replica]) -> Server | Replica:
     found = eventually_sync(ready, what="a replica to run the office", timeout_s=60)
     assert found is not None
     return found
+
+
+def submit(url: str, requester: str, text: str) -> str:
+    """The id of an instruction submitted, as the operator, to the replica at ``url``."""
+    r = httpx.post(
+        f"{url}/v1/instructions",
+        headers=_OPERATOR_HEADERS,
+        json={"requester": requester, "text": text},
+        timeout=10,
+    )
+    assert r.status_code == 202, r.text
+    return str(r.json()["id"])
+
+
+def ended(replicas: list[Server | Replica], iid: str) -> dict[str, Any]:
+    """The instruction's record once it ended, from the live replica that runs the office."""
+    last = holder([r for r in replicas if r.process.poll() is None])
+    record: dict[str, Any] = eventually_sync(
+        lambda: httpx.get(f"{last.url}/v1/instructions/{iid}", headers=_OPERATOR_HEADERS).json(),
+        until=lambda rec: rec["status"] not in ("queued", "running"),
+        what="the instruction to end",
+        timeout_s=120,
+    )
+    return record
+
+
+def write_journal(url: str, path: Path, events: str, messages: str) -> None:
+    """The shared journal's ``events`` and ``messages`` columns, a row a line, written to
+    ``path``: the journal as it ended, for a failure to be read from (tmp_path is kept)."""
+    queries = (
+        f"SELECT {events} FROM events ORDER BY seq",
+        f"SELECT {messages} FROM messages ORDER BY seq",
+    )
+    path.write_text("\n".join(repr(row) for sql in queries for row in rows(url, sql)))
 
 
 def holders(server: Server) -> dict[str, str | None]:

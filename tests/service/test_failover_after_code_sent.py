@@ -20,17 +20,15 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import httpx
 import psycopg
 import pytest
 
 from helpers.eventually import eventually_sync
-from service.server import OPERATOR, Server, free_port, serve
-from service.standby import Replica, holder, rows, start_standby
+from service.server import Server, free_port, serve
+from service.standby import Replica, ended, holder, rows, start_standby, submit, write_journal
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
-HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 ENV = {
     "ASSISTANTX_LOCK_SHARED_KEY": "the replicas' shared lock key for the tests",
     "ASSISTANTX_LEASE_TTL_S": "3",
@@ -105,14 +103,7 @@ def test_a_kill_just_after_a_code_went_out_does_not_send_a_second_code(
             db.execute(STALL)
             for trigger in TRIGGERS:
                 db.execute(trigger)  # type: ignore[arg-type]
-        r = httpx.post(
-            f"{first.url}/v1/instructions",
-            headers=HEADERS,
-            json={"requester": "lee", "text": "Please bring me a stapler."},
-            timeout=10,
-        )
-        assert r.status_code == 202, r.text
-        iid = r.json()["id"]
+        iid = submit(first.url, "lee", "Please bring me a stapler.")
         stalled = eventually_sync(
             lambda: sleeping_backend(postgres_url),
             what="the result of Lee's code to be journaled (and held)",
@@ -126,24 +117,12 @@ def test_a_kill_just_after_a_code_went_out_does_not_send_a_second_code(
         # (its fence locks the lease's row), so only the sleeper is ended.
         rows(postgres_url, f"SELECT pg_terminate_backend({stalled})")
         run(postgres_url, "DROP TRIGGER stall ON events; DROP TRIGGER phones_wait ON sim_phones")
-        last = holder([r for r in replicas if r.process.poll() is None])
-        record = eventually_sync(
-            lambda: httpx.get(f"{last.url}/v1/instructions/{iid}", headers=HEADERS).json(),
-            until=lambda rec: rec["status"] not in ("queued", "running"),
-            what="the instruction to end",
-            timeout_s=120,
-        )
-        # The journal as it ended, for a failure to be read from (tmp_path is kept).
-        (tmp_path / "journal.txt").write_text(
-            "\n".join(
-                repr(row)
-                for sql in (
-                    "SELECT seq, kind, left(data, 400) FROM events ORDER BY seq",
-                    "SELECT seq, chat_id, left(text, 50), idempotency_key, status FROM messages"
-                    " ORDER BY seq",
-                )
-                for row in rows(postgres_url, sql)
-            )
+        record = ended(replicas, iid)
+        write_journal(
+            postgres_url,
+            tmp_path / "journal.txt",
+            events="seq, kind, left(data, 400)",
+            messages="seq, chat_id, left(text, 50), idempotency_key, status",
         )
         assert record["status"] == "done", record
         assert len(codes_to(postgres_url, "lee")) == 1, codes_to(postgres_url, "lee")

@@ -14,16 +14,14 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-import httpx
 import pytest
 
 from helpers.eventually import eventually_sync
-from service.server import OPERATOR, Server, free_port, serve
-from service.standby import Replica, holder, rows, start_standby
+from service.server import Server, free_port, serve
+from service.standby import Replica, ended, holder, rows, start_standby, submit, write_journal
 
 pytestmark = [pytest.mark.postgres, pytest.mark.slow]
 
-HEADERS = {"Authorization": f"Bearer {OPERATOR}"}
 NAMES = ("replica-a", "replica-b", "replica-c", "replica-d", "replica-e")  # four kills
 ENV = {
     # One lock key for all: a code one replica issued opens the locker under the next one
@@ -104,14 +102,7 @@ def test_every_message_code_and_robot_action_happens_once_across_four_kills(
             replicas.append(start_standby(tmp_path, name, env))
         by_name = dict(zip(NAMES, replicas, strict=True))
         first = holder(replicas)
-        r = httpx.post(
-            f"{first.url}/v1/instructions",
-            headers=HEADERS,
-            json={"requester": "lee", "text": "Please bring me a stapler."},
-            timeout=10,
-        )
-        assert r.status_code == 202, r.text
-        iid = r.json()["id"]
+        iid = submit(first.url, "lee", "Please bring me a stapler.")
         moments: list[tuple[str, Callable[[str], bool]]] = [
             ("a colleague is asked", asked_not_answered),
             ("the robot drives", driving),
@@ -135,26 +126,15 @@ def test_every_message_code_and_robot_action_happens_once_across_four_kills(
             assert resumed is not owner
             assert time.monotonic() - stopped < 30, f"no takeover after a kill while {what}"
         assert killed == [w for w, _ in moments]
-        last = holder([r for r in replicas if r.process.poll() is None])
-        record = eventually_sync(
-            lambda: httpx.get(f"{last.url}/v1/instructions/{iid}", headers=HEADERS).json(),
-            until=lambda rec: rec["status"] not in ("queued", "running"),
-            what="the instruction to end",
-            timeout_s=120,
-        )
+        record = ended(replicas, iid)
         assert record["status"] == "done", record
         done = results(postgres_url)
-        # The journal as it ended, for a failure to be read from (tmp_path is kept).
-        (tmp_path / "journal.txt").write_text(
-            "\n".join(
-                repr(row)
-                for sql in (
-                    "SELECT seq, kind, time, left(data, 600) FROM events ORDER BY seq",
-                    "SELECT seq, direction, chat_id, left(text, 60), time, question_id,"
-                    " in_reply_to, status FROM messages ORDER BY seq",
-                )
-                for row in rows(postgres_url, sql)
-            )
+        write_journal(
+            postgres_url,
+            tmp_path / "journal.txt",
+            events="seq, kind, time, left(data, 600)",
+            messages="seq, direction, chat_id, left(text, 60), time, question_id, in_reply_to,"
+            " status",
         )
         seen = [
             (r["action"]["type"], r["ok"], r["observation"][:50]) for r in done

@@ -7,7 +7,6 @@ plays the oracle against these simulated people) agrees with its dry run."""
 from __future__ import annotations
 
 import functools
-from pathlib import Path
 
 import pytest
 
@@ -15,11 +14,11 @@ from assistantx.agents.oracle.plan import Role, able
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core.office import Office, load_office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part
-from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
+from assistantx.evaluation.dataset.generate import verify_tasks
 from assistantx.sim.people import direct_reply, group_replies
 from assistantx.sim.world import World
-
-HARBOUR = Path(__file__).resolve().parents[2] / "dataset" / "offices" / "harbour" / "office.yaml"
+from helpers.dataset_offices import harbour_office
+from helpers.dataset_tasks import every_task
 
 
 @functools.cache
@@ -83,11 +82,6 @@ def print_shop() -> Office:
     )
 
 
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
-
-
 def test_an_owner_asked_to_lend_a_kept_item_says_where_it_is_and_who_takes_it_out(
     harbour: Office,
 ) -> None:
@@ -125,7 +119,7 @@ def test_in_a_group_an_owner_of_a_kept_item_does_not_volunteer_to_lend_it() -> N
 def test_group_volunteers_are_exactly_those_the_oracle_counts_able(which: str) -> None:
     office = {
         "default": load_office,
-        "harbour": lambda: load_office(HARBOUR),
+        "harbour": harbour_office,
         "print shop": print_shop,
     }[which]()
     world = World.from_office(office)
@@ -149,9 +143,8 @@ async def test_the_generators_verification_agrees_when_every_stapler_at_hand_is_
         text="Could you get me a stapler?",
         parts=(Part(kind="fetch", item="stapler"),),
     )
-    variants = [v for vs in classify(base, office).values() for v in vs]
-    assert variants
-    tasks = [_task(v, office, n) for n, v in enumerate(variants, start=1)]
+    tasks = every_task(office, base)
+    assert tasks
     away = [t for t in tasks if set(t.unavailable) >= {"kit", "bea"}]
     assert away and not any(t.achievable for t in away)
     await verify_tasks(office, tasks)  # raises DatasetError on a disagreement

@@ -3,8 +3,6 @@ from the office's own tables (a "label printer" is a thing to lend, not a reques
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 import yaml
 
@@ -17,17 +15,10 @@ from assistantx.sim.run import run_in_sim
 from assistantx.sim.understanding import mentioned_requests
 from assistantx.sim.world import World
 
-HARBOUR = Path(__file__).resolve().parents[2] / "dataset" / "offices" / "harbour" / "office.yaml"
-
 
 @pytest.fixture(scope="module")
 def office() -> Office:
     return load_office()
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
 
 
 def _wish(office: Office, requester: str, *goal: dict[str, object]) -> Wish:

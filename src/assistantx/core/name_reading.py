@@ -17,8 +17,9 @@ article, which otherwise makes the word ("the grace period"), is part of the dec
 
 from __future__ import annotations
 
+from collections.abc import Container, Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import Literal, Protocol
 
 from assistantx.core import english, language
 
@@ -51,6 +52,51 @@ class NameSlot:
     next_is_name: bool = False  # the next word is a word of someone's name
     # the office declares "<prev> <word>" as someone's alias ("the Provost", "our Dean")
     declared_with_prev: bool = False
+
+
+class SlotWord(Protocol):
+    """A word of a text as a reader split it: the reader's ``Token``, the consent guard's
+    word (both split as the reader's tokenizer does)."""
+
+    @property
+    def word(self) -> str: ...  # folded, without a possessive 's
+
+    @property
+    def text(self) -> str: ...  # as written
+
+    @property
+    def possessive(self) -> bool: ...
+
+    @property
+    def opens(self) -> bool: ...  # the first word of a sentence
+
+
+def slot_at(
+    words: Sequence[SlotWord],
+    n: int,
+    *,
+    items: Container[str],
+    name_words: Container[str],
+    with_article: Container[tuple[str, str]] = (),
+) -> NameSlot:
+    """The name word ``words[n]`` where it stands, for ``read_name``: the reader and the
+    guard take its neighbours the same way (the next word only within the sentence).
+    ``items``: the office's one-word item names; ``name_words``: the words of people's names;
+    ``with_article``: (article, word) pairs the office declares as someone's alias."""
+    w = words[n]
+    nxt = words[n + 1] if n + 1 < len(words) and not words[n + 1].opens else None
+    return NameSlot(
+        word=w.word,
+        written=w.text,
+        possessive=w.possessive,
+        opens=w.opens,
+        prev=words[n - 1].word if n > 0 else "",
+        next=nxt.word if nxt is not None else "",
+        next_possessive=nxt is not None and nxt.possessive,
+        next_is_item=nxt is not None and nxt.word in items,
+        next_is_name=nxt is not None and nxt.word in name_words,
+        declared_with_prev=n > 0 and (words[n - 1].word, w.word) in with_article,
+    )
 
 
 def is_word_name(word: str) -> bool:

@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core import english, language
 from assistantx.core.asked_to_have import asked_to_have
-from assistantx.core.name_reading import NameSlot, is_word_name, read_name
+from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.receiving_place import names_receiving_place, pronoun_receiving_place
@@ -72,6 +72,11 @@ class _Word:
     folded: str
     possessive: bool
     opens: bool  # the first word of a sentence
+
+    @property
+    def word(self) -> str:
+        """The folded word, as the reader's ``Token`` names it (``name_reading.slot_at``)."""
+        return self.folded
 
 
 def _tokens(text: str) -> list[_Word]:
@@ -149,19 +154,7 @@ def _written_as_name(
     (``core.name_reading.read_name``), so that the guard and the reader agree on who is
     named in any casing. A reading the reader would ask about counts: the requester's answer
     settles it for the reader, and the name's role is still checked here."""
-    w = words[n]
-    nxt = words[n + 1] if n + 1 < len(words) and not words[n + 1].opens else None
-    slot = NameSlot(
-        word=w.folded,
-        written=w.text,
-        possessive=w.possessive,
-        opens=w.opens,
-        prev=words[n - 1].folded if n > 0 else "",
-        next=nxt.folded if nxt is not None else "",
-        next_possessive=nxt is not None and nxt.possessive,
-        next_is_item=nxt is not None and nxt.folded in items,
-        next_is_name=nxt is not None and nxt.folded in name_words,
-    )
+    slot = slot_at(words, n, items=items, name_words=name_words)
     return read_name(slot) != "word"
 
 

@@ -19,9 +19,10 @@ from __future__ import annotations
 
 import asyncio
 import logging
+from dataclasses import dataclass
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Query, Request
+from fastapi import APIRouter, Depends, Query, Request
 from fastapi.responses import PlainTextResponse, Response
 from pydantic import BaseModel
 
@@ -72,15 +73,34 @@ _To = Annotated[str | None, Query(alias="to", max_length=40, description="end (e
 _Person = Annotated[str | None, Query(max_length=100, description="operator: one person")]
 
 
-async def _report(
-    request: Request,
-    runtime: ServiceRuntime,
-    caller: Principal,
-    start: str | None,
-    end: str | None,
-    person: str | None,
-) -> UsageReport:
-    lo, hi, requester = _period(runtime, caller, start, end, person)
+@dataclass(frozen=True)
+class _Asked:
+    """What a usage report's request asks for: its office, its caller, the period and person
+    of its query (``?from=&to=&person=``), the same for every form of the report."""
+
+    runtime: ServiceRuntime
+    caller: Principal
+    start: str | None
+    end: str | None
+    person: str | None
+
+
+async def _asked(  # async: FastAPI would run a plain function in its thread pool
+    runtime: Runtime,
+    caller: Caller,
+    start: _From = None,
+    end: _To = None,
+    person: _Person = None,
+) -> _Asked:
+    return _Asked(runtime, caller, start, end, person)
+
+
+Asked = Annotated[_Asked, Depends(_asked)]
+
+
+async def _report(asked: _Asked) -> UsageReport:
+    runtime = asked.runtime
+    lo, hi, requester = _period(runtime, asked.caller, asked.start, asked.end, asked.person)
     store = runtime.feedback.store
     names = {p.id: p.name for p in runtime.office.people}
     return await asyncio.to_thread(
@@ -89,28 +109,14 @@ async def _report(
 
 
 @router.get("/v1/reports/usage", response_model=UsageReport)
-async def usage(
-    request: Request,
-    runtime: Runtime,
-    caller: Caller,
-    start: _From = None,
-    end: _To = None,
-    person: _Person = None,
-) -> UsageReport:
+async def usage(asked: Asked) -> UsageReport:
     """Instructions by kind and outcome, times, group requests, survey shares, walking."""
-    return await _report(request, runtime, caller, start, end, person)
+    return await _report(asked)
 
 
 @router.get("/v1/reports/usage.md", response_class=PlainTextResponse)
-async def usage_markdown(
-    request: Request,
-    runtime: Runtime,
-    caller: Caller,
-    start: _From = None,
-    end: _To = None,
-    person: _Person = None,
-) -> PlainTextResponse:
-    report = await _report(request, runtime, caller, start, end, person)
+async def usage_markdown(asked: Asked) -> PlainTextResponse:
+    report = await _report(asked)
     return PlainTextResponse(render_markdown(report), media_type="text/markdown; charset=utf-8")
 
 
@@ -119,19 +125,11 @@ async def usage_markdown(
     response_class=Response,
     responses={200: {"content": {"image/png": {}}}},
 )
-async def usage_chart(
-    request: Request,
-    name: str,
-    runtime: Runtime,
-    caller: Caller,
-    start: _From = None,
-    end: _To = None,
-    person: _Person = None,
-) -> Response:
+async def usage_chart(name: str, asked: Asked) -> Response:
     if name not in CHARTS:
         raise NotFoundError(f"no chart {name!r}; charts: {', '.join(CHARTS)}")
     chart: ChartName = name
-    report = await _report(request, runtime, caller, start, end, person)
+    report = await _report(asked)
     png = await asyncio.to_thread(render_chart, report, chart)
     return Response(png, media_type="image/png", headers={"Cache-Control": "no-store"})
 

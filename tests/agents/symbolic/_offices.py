@@ -5,21 +5,17 @@ from __future__ import annotations
 
 import copy
 import functools
-from pathlib import Path
 from typing import Any
 
 import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import Office, load_office, parse_office
-
-ROOT = Path(__file__).resolve().parents[3]
-DEFAULT = ROOT / "dataset" / "office.yaml"
-HARBOUR = ROOT / "dataset" / "offices" / "harbour" / "office.yaml"
+from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE, harbour_office
 
 
 def _mail_room_office() -> Office:
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
     raw["locations"].append(
         {"id": "mail_room", "kind": "facility", "name": "Mail room", "x": 37.0, "y": 16.0}
     )
@@ -64,9 +60,9 @@ def _mail_room_office() -> Office:
 @functools.cache
 def office(name: str) -> Office:
     if name == "default":
-        return load_office(DEFAULT)
+        return load_office(DEFAULT_FILE)
     if name == "harbour":
-        return load_office(HARBOUR)
+        return harbour_office()
     return _mail_room_office()
 
 

@@ -4,21 +4,11 @@ keeper and with its owner's own yes, in the embedded planner and in the oracle a
 
 from __future__ import annotations
 
-from pathlib import Path
-
-import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.oracle.plan import build_plan
 from assistantx.core.office import Office, load_office
 from assistantx.core.task_spec import BaseInstruction, Part
-
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
 
 
 async def test_the_cupboards_label_maker_is_fetched_when_no_owner_is_named(

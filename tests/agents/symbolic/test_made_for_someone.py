@@ -4,16 +4,12 @@ correct run of the embedded agent meets every milestone the generator labels the
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.oracle.plan import build_plan
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office
 from assistantx.core.task_spec import BaseInstruction, Part
-
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
 
 BASES = (
     BaseInstruction(
@@ -29,11 +25,6 @@ BASES = (
         parts=(Part(kind="copy", to="mark"),),
     ),
 )
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
 
 
 @pytest.mark.parametrize("base", BASES, ids=lambda b: b.id)

@@ -3,20 +3,12 @@ cupboard that keeps things) runs its tasks to done in the simulated office, unch
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Any
 
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.core.office import Office, load_office
-
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
+from assistantx.core.office import Office
 
 
 @pytest.mark.parametrize(

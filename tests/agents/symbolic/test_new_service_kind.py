@@ -17,8 +17,8 @@ from symbolic_run import run_instruction
 
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part
-from assistantx.evaluation.dataset.generate import _task as task_of
-from assistantx.evaluation.dataset.generate import classify, verify_tasks
+from assistantx.evaluation.dataset.generate import verify_tasks
+from helpers.dataset_tasks import every_task
 
 
 @pytest.fixture(scope="module")
@@ -95,8 +95,7 @@ async def test_a_service_that_consumes_the_item_hands_nothing_back() -> None:
         text="shred my contract",
         parts=(Part(kind="heat", operation="shred"),),
     )
-    variants = [v for vs in classify(base, office).values() for v in vs]
-    await verify_tasks(office, [task_of(v, office, n) for n, v in enumerate(variants, 1)])
+    await verify_tasks(office, every_task(office, base))
     run = await run_instruction(office, "lee", "Please shred my old contract.")
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     assert run.sim.world.check({"heated": "document:lee"})

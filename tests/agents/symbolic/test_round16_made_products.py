@@ -7,28 +7,16 @@ is still a thing to fetch."""
 
 from __future__ import annotations
 
-import functools
-from pathlib import Path
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.roles import Role, Roles
 from assistantx.core.office import load_office
-from assistantx.core.task_schema import TaskFrame
+from helpers.dataset_offices import HARBOUR_FILE as HARBOUR
 from helpers.fablab import fablab
+from helpers.reading import frame_reader
 
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
-
-
-@functools.cache
-def _fablab_parser() -> InstructionParser:
-    return InstructionParser(fablab())
-
-
-def _frame(text: str, who: str) -> TaskFrame:
-    return _fablab_parser().parse(text, who)
+_frame = frame_reader(fablab, "ines")
 
 
 @pytest.mark.parametrize(

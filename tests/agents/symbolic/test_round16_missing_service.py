@@ -5,23 +5,13 @@ once, naming both, never asked about; in a workshop with a scanner the scan is d
 
 from __future__ import annotations
 
-import functools
-
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.agents.symbolic import InstructionParser
-from assistantx.core.task_schema import TaskFrame
 from helpers.fablab import costume_works, fablab
+from helpers.reading import frame_reader
 
-
-@functools.cache
-def _fablab_parser() -> InstructionParser:
-    return InstructionParser(fablab())
-
-
-def _frame(text: str, who: str) -> TaskFrame:
-    return _fablab_parser().parse(text, who)
+_frame = frame_reader(fablab, "ines")
 
 
 @pytest.mark.parametrize(

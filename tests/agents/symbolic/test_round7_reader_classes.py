@@ -13,10 +13,9 @@ from _offices import parser as other_parser
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
-from assistantx.core import task_kinds
 from assistantx.core.office import Office
-from assistantx.core.task_kinds import KindSpec, Step
 from assistantx.core.task_schema import TaskFrame
+from helpers.added_kinds import kind_added, signing_kind
 from helpers.reading import frame_reader, parser_for
 from helpers.surveyors import surveyors
 
@@ -376,28 +375,15 @@ def test_a_place_outside_is_sent_without_asking() -> None:
 
 
 # -- 10: a task kind added to the live table is read from its words ------------------------
-_ENDORSE = KindSpec(
-    id="endorse",
-    parts=("endorse",),
-    milestone="endorsed",
-    by_person=True,
-    works_on="signable",
-    ask="endorse {whose}",
-    purpose="endorse",
-    doer="endorser",
-    steps=(Step("source", "deposit"), Step("doer", "endorse"), Step("recipient", "collect")),
-    locker="take {item} out, endorse it and put it back",
-    todo="get {whose} endorsed by {by}",
-    done="{whose} was endorsed by {by} and handed to {to}",
-    words=("endorse", "endorsement"),
+_ENDORSE = signing_kind(
+    "endorse", "endorse", "endorsed", "endorser", words=("endorse", "endorsement")
 )
 
 
 @pytest.fixture
 def endorse() -> Iterator[Office]:
-    task_kinds.add(_ENDORSE)
-    yield surveyors()
-    task_kinds.remove(_ENDORSE.id)
+    with kind_added(_ENDORSE):
+        yield surveyors()
 
 
 @pytest.mark.parametrize(

@@ -16,12 +16,9 @@ from symbolic_run import expected_tasks
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import load_office
+from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
 
-ROOT = Path(__file__).resolve().parents[3]
-OFFICES = {
-    "default": ROOT / "dataset" / "office.yaml",
-    "harbour": ROOT / "dataset" / "offices" / "harbour" / "office.yaml",
-}
+OFFICES = {"default": DEFAULT_FILE, "harbour": HARBOUR_FILE}
 CASES: list[dict[str, Any]] = yaml.safe_load(
     Path(__file__).with_name("understanding_set.yaml").read_text(encoding="utf-8")
 )

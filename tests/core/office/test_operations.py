@@ -4,22 +4,14 @@ naming the file, the entry and the problem (runs: tests/agents/symbolic/test_new
 from __future__ import annotations
 
 import copy
-from pathlib import Path
 from typing import Any
 
 import pytest
 import yaml
 
 from assistantx.core.errors import OfficeError
-from assistantx.core.office import Office, load_office, parse_office
-
-ROOT = Path(__file__).resolve().parents[3]
-HARBOUR = ROOT / "dataset" / "offices" / "harbour" / "office.yaml"
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
+from assistantx.core.office import Office, parse_office
+from helpers.dataset_offices import HARBOUR_FILE as HARBOUR
 
 
 @pytest.fixture

@@ -5,23 +5,13 @@ optimal policy the generator verifies with."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from assistantx.agents.oracle.plan import build_plan
-from assistantx.core.office import Office, Ownership, load_office
+from assistantx.core.office import Office, Ownership
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
-from assistantx.evaluation.dataset.generate import _task as task_of
-from assistantx.evaluation.dataset.generate import classify, verify_tasks
 from assistantx.memory.resolve import Resolver
-
-HARBOUR = Path(__file__).resolve().parents[3] / "dataset" / "offices" / "harbour" / "office.yaml"
-
-
-@pytest.fixture(scope="module")
-def harbour() -> Office:
-    return load_office(HARBOUR)
+from helpers.dataset_tasks import verify_every_variant
 
 
 @pytest.fixture(scope="module")
@@ -38,13 +28,6 @@ def two_robins(harbour: Office) -> Office:
         ),
     )
     return harbour.model_copy(update={"people": (*harbour.people, *robins)})
-
-
-async def _verify_every_variant(office: Office, base: BaseInstruction) -> None:
-    variants = [v for vs in classify(base, office).values() for v in vs]
-    tasks = [task_of(v, office, n) for n, v in enumerate(variants, start=1)]
-    assert any(t.achievable for t in tasks)
-    await verify_tasks(office, tasks)
 
 
 MADE_FOR_SOMEONE = (
@@ -81,7 +64,7 @@ def test_a_made_thing_with_a_recipient_is_the_recipients_to_hold(
 async def test_the_optimal_policy_brings_it_to_the_recipient(
     harbour: Office, base: BaseInstruction
 ) -> None:
-    await _verify_every_variant(harbour, base)
+    await verify_every_variant(harbour, base)
 
 
 def test_an_id_resolves_as_that_id_before_any_name(two_robins: Office) -> None:
@@ -99,7 +82,7 @@ async def test_people_sharing_a_first_name_request_and_own_by_id(two_robins: Off
         parts=(Part(kind="fetch", item="ruler", owner="robin_m"),),
     )
     check_base(base, two_robins)
-    await _verify_every_variant(two_robins, base)
+    await verify_every_variant(two_robins, base)
 
 
 async def test_a_cupboard_item_asked_for_without_an_owner_is_achieved(harbour: Office) -> None:
@@ -110,7 +93,7 @@ async def test_a_cupboard_item_asked_for_without_an_owner_is_achieved(harbour: O
         parts=(Part(kind="fetch", item="label_maker"),),
     )
     check_base(base, harbour)
-    await _verify_every_variant(harbour, base)
+    await verify_every_variant(harbour, base)
 
 
 async def test_a_cupboard_item_with_another_at_a_desk_is_labelled_as_the_policy_plays(
@@ -132,4 +115,4 @@ async def test_a_cupboard_item_with_another_at_a_desk_is_labelled_as_the_policy_
         parts=(Part(kind="fetch", item="label_maker"),),
     )
     check_base(base, office)
-    await _verify_every_variant(office, base)
+    await verify_every_variant(office, base)

@@ -9,9 +9,9 @@ import pytest
 
 from assistantx.core.office import Office, load_office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
-from assistantx.evaluation.dataset.generate import _task as task_of
-from assistantx.evaluation.dataset.generate import classify, verify_tasks
+from assistantx.evaluation.dataset.generate import verify_tasks
 from assistantx.sim.world import World
+from helpers.dataset_tasks import every_task
 
 BASES = (
     # dang owns a cup: "mine is leaking" asks for someone else's
@@ -69,8 +69,7 @@ def test_your_own_item_does_not_count_as_another(office: Office) -> None:
 
 async def test_the_optimal_policy_achieves_every_generated_task(office: Office) -> None:
     # every variant of each (all levels, achievable or not), labelled as the generator does
-    variants = [v for b in BASES for vs in classify(b, office).values() for v in vs]
-    tasks = [task_of(v, office, n) for n, v in enumerate(variants, start=1)]
+    tasks = every_task(office, *BASES)
     assert {t.base for t in tasks} == {"r1", "r2", "r3"}
     assert any(t.achievable for t in tasks if t.base == "r2")
     await verify_tasks(office, tasks)

@@ -336,15 +336,8 @@ class Journal:
     def events(
         self, instruction_id: str | None = None, *, after_seq: int = 0, limit: int = 1000
     ) -> list[EventRecord]:
-        if instruction_id is None:
-            rows = self._conn.execute(
-                "SELECT * FROM events WHERE seq>? ORDER BY seq LIMIT ?", (after_seq, limit)
-            ).fetchall()
-        else:
-            rows = self._conn.execute(
-                "SELECT * FROM events WHERE instruction_id=? AND seq>? ORDER BY seq LIMIT ?",
-                (instruction_id, after_seq, limit),
-            ).fetchall()
+        match = {} if instruction_id is None else {"instruction_id": instruction_id}
+        rows = self._page("events", match, after_seq, limit)
         return [
             EventRecord(
                 seq=int(r["seq"]),
@@ -430,17 +423,20 @@ class Journal:
     def messages(
         self, chat: ChatRef | None = None, *, after_seq: int = 0, limit: int = 200
     ) -> list[MessageRecord]:
-        if chat is None:
-            rows = self._conn.execute(
-                "SELECT * FROM messages WHERE seq>? ORDER BY seq LIMIT ?", (after_seq, limit)
-            ).fetchall()
-        else:
-            rows = self._conn.execute(
-                "SELECT * FROM messages WHERE chat_kind=? AND chat_id=? AND seq>?"
-                " ORDER BY seq LIMIT ?",
-                (chat.kind, chat.id, after_seq, limit),
-            ).fetchall()
-        return [_message(r) for r in rows]
+        match = {} if chat is None else {"chat_kind": chat.kind, "chat_id": chat.id}
+        return [_message(r) for r in self._page("messages", match, after_seq, limit)]
+
+    def _page(
+        self, table: str, match: dict[str, str], after_seq: int, limit: int
+    ) -> list[sqlite3.Row]:
+        """The rows of ``table`` after ``after_seq`` whose columns equal ``match``, oldest
+        first, at most ``limit``: how a reader pages through the events or the messages."""
+        where = " AND ".join([*(f"{column}=?" for column in match), "seq>?"])
+        rows: list[sqlite3.Row] = self._conn.execute(
+            f"SELECT * FROM {table} WHERE {where} ORDER BY seq LIMIT ?",
+            (*match.values(), after_seq, limit),
+        ).fetchall()
+        return rows
 
     def chats(self) -> list[ChatSummary]:
         rows = self._conn.execute(

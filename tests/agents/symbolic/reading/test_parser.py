@@ -3,15 +3,11 @@ settles a doubt with the requester's answer by reading again, never by changing 
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from assistantx.agents.symbolic.reading.parser import InstructionParser, shared_parser
 from assistantx.agents.symbolic.requests import RequestRecognizer
-from assistantx.core import task_kinds
 from assistantx.core.office import load_office
-from assistantx.core.task_kinds import KindSpec, Step
-
-HARBOUR = Path(__file__).resolve().parents[4] / "dataset" / "offices" / "harbour" / "office.yaml"
+from helpers.added_kinds import kind_added, signing_kind
+from helpers.dataset_offices import HARBOUR_FILE as HARBOUR
 
 
 def test_a_request_runs_through_every_stage_to_a_frame() -> None:
@@ -37,32 +33,18 @@ def test_the_office_readers_share_one_parser_rebuilt_when_the_kinds_change() -> 
     assert shared_parser(office) is shared
     assert shared_parser(other) is not shared
     assert RequestRecognizer(office)._parser is shared  # the service's request check
-    approve = KindSpec(
-        id="approve_shared",
-        parts=("approve_shared",),
-        milestone="approved_shared",
-        by_person=True,
-        works_on="signable",
-        ask="approve {whose}",
-        purpose="approve_shared",
-        doer="approver",
-        steps=(
-            Step("source", "deposit"),
-            Step("doer", "approve_shared"),
-            Step("recipient", "collect"),
-        ),
-        locker="take {item} out, approve it and put it back",
-        todo="get {whose} approved by {by}",
-        done="{whose} was approved by {by} and handed to {to}",
+    approve = signing_kind(
+        "approve_shared",
+        "approve",
+        "approved",
+        "approver",
         words=("endorse",),
+        milestone="approved_shared",
     )
-    task_kinds.add(approve)
-    try:
+    with kind_added(approve):
         rebuilt = shared_parser(office)  # reads the new kind's words
         assert rebuilt is not shared
         assert "endorse" in rebuilt.lex.cue_words and "endorse" not in shared.lex.cue_words
-    finally:
-        task_kinds.remove(approve.id)
 
 
 def test_the_shared_parser_remembers_what_it_read_and_reads_it_alike() -> None:

@@ -37,7 +37,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
-from assistantx.core.name_reading import NameSlot, is_word_name, read_name
+from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
 from assistantx.memory.names import TITLES, normalize
@@ -638,18 +638,12 @@ class Lexicon:
             return self.chosen[t.word]
         if self._distance(tokens, i):
             return "word"
-        nxt = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
-        slot = NameSlot(
-            word=t.word,
-            written=t.text,
-            possessive=t.possessive,
-            opens=t.opens,
-            prev=tokens[i - 1].word if i > 0 else "",
-            next=nxt.word if nxt is not None else "",
-            next_possessive=nxt is not None and nxt.possessive,
-            next_is_item=nxt is not None and nxt.word in self.items,
-            next_is_name=nxt is not None and nxt.word in self.name_words,
-            declared_with_prev=i > 0 and (tokens[i - 1].word, t.word) in self.with_article,
+        slot = slot_at(
+            tokens,
+            i,
+            items=self.items,
+            name_words=self.name_words,
+            with_article=self.with_article,
         )
         return read_name(slot)
 
