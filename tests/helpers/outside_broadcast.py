@@ -2,7 +2,8 @@
 blind round's office or sentences were read): belongings with a multi-word synonym ("camera
 headset", "ear defenders"), a signable form and a signable log sheet, a shared file, a tag
 printer that makes rush tags (a product), a dispatch desk that sends things out to places
-outside ("courier", "dispatch"), and people with accented names (Renée, Chloë)."""
+outside ("courier", "dispatch"), and people with accented names (Renée, Chloë) and
+names that are also words (Sandy, Dawn)."""
 
 from __future__ import annotations
 
@@ -17,6 +18,8 @@ _PEOPLE = (
     ob.person("chloe", "Chloë Varga", "curling_tongs", "log_sheet"),
     ob.person("anouk", "Anouk Teller", "ear_defenders", "call_sheet", "tape"),
     ob.person("piet", "Piet Lund", "log_sheet"),
+    ob.person("sandy", "Sandy Okoro", "call_sheet", "tape"),
+    ob.person("dawn", "Dawn Pryce", "log_sheet"),
 )
 
 
