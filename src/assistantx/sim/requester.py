@@ -5,7 +5,9 @@ they answer the question that was asked, from the task's truth (its goal milesto
 
 - a question that names options ("Do you mean Grace Obi, or the grace period talk?") gets the
   option that fits what they want ("the grace period talk");
-- "Shall I ...?" gets "Yes, please." when the offer fits what they want, else "No, thanks.";
+- "Shall I ...?" gets "Yes, please." when the offer fits what they want, else "No, thanks."
+  (the people an answer names before the offer, "As far as I know, Dov and Renée have a
+  headset. Shall I bring you one?", are who has one, not whom it is for);
 - "Where should I courier it to?" gets the place outside the task sends it to ("To the
   regional federation.");
 - "Who should get ...?" / "Whose ...?" (also both at once) / "Who should sign ...?" / "Who do
@@ -351,11 +353,18 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
     """Whether an offer ("Shall I bring you Zhang's stapler?") is what the requester wants."""
     if not wish.wants_something:
         return False
-    people = _people_in(office, offer) - {wish.requester}
+    *told, asked = re.split(r"(?<=[.!?])\s+", offer.strip())
+    people = _people_in(office, asked) - {wish.requester}
     items = set(mentioned_item_types(office, offer))
     # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
     # did not ask for: no
-    return not (people - wish.people or items - set(wish.items))
+    if people - wish.people or items - set(wish.items):
+        return False
+    # "As far as I know, Dov and Renée have a headset. Shall I bring you one?": the people
+    # before the offer are who has one, not whom it is for; any one will do for a wish of
+    # anyone's, and for a wish of someone's own only when no one else is named
+    holders = _people_in(office, " ".join(told)) - {wish.requester}
+    return wish.own == "any" or not holders - wish.people
 
 
 def _is_the_name(option: str, person: Person) -> bool:

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from assistantx.core import english, task_kinds
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import FILE_KIND
 from assistantx.memory.names import normalize
@@ -87,11 +87,13 @@ def _names(office: Office, *, only_products: bool = False) -> list[tuple[str, st
 
 
 def mentioned_item_types(office: Office, text: str) -> list[str]:
-    """Item types named in ``text`` (longest names first, so 'data cable' beats 'cable')."""
+    """Item types named in ``text`` (longest names first, so 'data cable' beats 'cable'),
+    in the singular or the plural."""
     haystack = _words(text)
     found: list[str] = []
     for name, type_id in _names(office):
-        for variant in (name, name + "s", name + "es"):
+        # the plural English gives it too ("batteries", "knives"), beside the plain endings
+        for variant in dict.fromkeys((name, name + "s", name + "es", language.plural(name))):
             if f" {variant} " in haystack:
                 if type_id not in found:
                     found.append(type_id)

@@ -270,6 +270,13 @@ def clause_roles(
             if len(set(others)) != 1:
                 raise UnresolvedPronoun(m.text)
             roles.add_recipient(others[-1], m.start)
+        elif m.kind == "pronoun" and _asked_to_do_person_work(tokens, m):
+            # "send my rundown to Dawn and get her to sign my log sheet": the one colleague
+            # named before does the work; with none or several named, whom is asked
+            others = [x for x in last_person if x != requester]
+            if len(set(others)) != 1:
+                raise UnresolvedPronoun(m.text)
+            roles.actor.append(others[-1])
         elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
             following = ms[n + 1] if n + 1 < len(ms) else None
             others = [x for x in last_person if x != requester]
@@ -390,6 +397,19 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
         roles.recipient_between(m.end, end)
         or roles.recipient_between(0, objects[0].start)
         or default
+    )
+
+
+def _asked_to_do_person_work(tokens: Sequence[Token], m: Mention) -> bool:
+    """Whether an object pronoun is the one asked to do a person's work ("get *her* to sign
+    it", "ask *him* to stamp my form"): "to" and the work's word right after it."""
+    after = [t.word for t in tokens[m.end : m.end + 2]]
+    return (
+        m.end == m.start + 1
+        and tokens[m.start].word in _OBJECT_PRONOUNS - {"them"}
+        and after[:1] == ["to"]
+        and after[1:] != []
+        and after[1] in _PERSON_WORK
     )
 
 

@@ -120,9 +120,16 @@ def find_outside(
         start = end = to + 1
         if means is not None and means > to:
             stop = means
+        which: str | None = None
+        unclear = False
         while end < stop:
             if end > start and _ends(gaps[end]):
-                more = _address_tail(tokens, gaps, start, end, stop)
+                one = _which_one(tokens, gaps, start, end, stop)
+                if one is not None:  # "the lab, the Bristol one": the Bristol lab
+                    end, which = one
+                    unclear = which is None
+                    break
+                more = _address_tail(tokens, gaps, start, end, stop, names)
                 if more == end:
                     break
                 end = more
@@ -136,8 +143,8 @@ def find_outside(
         said = "".join(
             (gaps[k] if k > start else lead) + tokens[k].text for k in range(start, end)
         ).strip()
-        said = _bracketed(said.strip("\"'"))
-        phrase = said if said and len(said) <= _LONGEST else None
+        said = which or _bracketed(said.strip("\"'"))
+        phrase = said if said and len(said) <= _LONGEST and not unclear else None
         if phrase is not None and set(words[start:end]) <= _PRONOUNS | _PERSONS:
             phrase = None  # "courier it to them": no place said; asked where
         if words[start] == "be":
@@ -157,30 +164,85 @@ def _means_before(words: Sequence[str], verb_start: int) -> int | None:
 
 
 def _address_tail(
-    tokens: Sequence[Token], gaps: Sequence[str], start: int, end: int, stop: int
+    tokens: Sequence[Token],
+    gaps: Sequence[str],
+    start: int,
+    end: int,
+    stop: int,
+    names: Collection[int] = (),
 ) -> int:
     """Where a destination that is an address goes on past the comma at ``end`` ("Mrs
-    Abernethy at 14 Rosebery Crescent, Edinburgh"): only after a comma, only when the words so
-    far look like an address (a house number, or a person "at" a place), and only over a short
-    part that is all names or codes up to the clause's end ("Edinburgh", "Leeds LS1 4DY"); a
-    clause of its own after the comma ("it has to go today") ends the destination. ``end``
-    back when the destination stops here."""
+    Abernethy at 14 Rosebery Crescent, Edinburgh"; "Broadcast House, Portland Place"): only
+    after a comma, only when the words so far look like an address (a house number, a person
+    "at" a place) or are a place's proper name ("Broadcast House", "the BBC"), and only over a
+    short part that is all names or codes up to the clause's end ("Edinburgh", "Leeds LS1
+    4DY"), never a colleague's name nor a day; a clause of its own after the comma ("it has to
+    go today", "then print me a tag") ends the destination. ``end`` back when the destination
+    stops here."""
     if gaps[end].strip() != ",":
         return end
     so_far = tokens[start:end]
-    if not any(any(c.isdigit() for c in t.text) for t in so_far) and not any(
-        t.word == "at" for t in so_far[1:]
+    if (
+        not any(any(c.isdigit() for c in t.text) for t in so_far)
+        and not any(t.word == "at" for t in so_far[1:])
+        and not _proper_name(so_far)
     ):
         return end
     k = end
     while k < stop and (k == end or not _ends(gaps[k])) and tokens[k].word not in _END_WORDS:
         k += 1
     part = tokens[end:k]
-    if not part or len(part) > _TAIL_WORDS:
+    if not part or len(part) > _TAIL_WORDS or any(n in names for n in range(end, k)):
         return end
+    if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
+        return end  # "to Ofcom, Monday": when, not where
     if all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part):
         return k
     return end
+
+
+# Small words a place's proper name may hold between its capitalised words ("the Bank of
+# England", "Marks and Spencer").
+_NAME_JOINS = frozenset({"the", "of", "and", "&", "for", "on", "upon", "de", "la"})
+
+
+def _proper_name(words: Sequence[Token]) -> bool:
+    """Whether the words are a proper name: each capitalised (or a code), but for the small
+    joining words, and at least one capitalised."""
+    capitalised = [t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in words]
+    return any(capitalised) and all(
+        c or t.word in _NAME_JOINS for c, t in zip(capitalised, words, strict=True)
+    )
+
+
+def _which_one(
+    tokens: Sequence[Token], gaps: Sequence[str], start: int, end: int, stop: int
+) -> tuple[int, str | None] | None:
+    """A destination said as a kind of place, then which one after the comma at ``end``
+    ("the lab, the Bristol one", "the lab, the one in Bristol"): the place said whole ("the
+    Bristol lab", "the lab in Bristol") and where the words end; no place (asked) when the
+    words after the comma say more than which one ("the Bristol one or the Bath one"); None
+    when the comma is followed by no "the ... one"."""
+    if gaps[end].strip() != "," or tokens[start].word != "the" or tokens[end].word != "the":
+        return None
+    kind = tokens[start + 1 : end]
+    if not kind or any(t.text[:1].isupper() for t in kind):
+        return None
+    clause = end + 1
+    while clause < stop and not _ends(gaps[clause]) and tokens[clause].word not in _END_WORDS:
+        clause += 1
+    said = tokens[end + 1 : clause]
+    if "one" not in [t.word for t in said]:
+        return None
+    plain = " ".join(t.text for t in kind)
+    names = [t.text for t in said[:-1]]
+    if said[-1].word == "one" and names and all(n[:1].isupper() for n in names):
+        return clause, f"the {' '.join(names)} {plain}"  # "the Bristol one"
+    where = [t.text for t in said[2:]]
+    if [t.word for t in said[:2]] in (["one", "in"], ["one", "at"]) and where:
+        if all(n[:1].isupper() for n in where):  # "the one in Bristol"
+            return clause, f"the {plain} {said[1].text} {' '.join(where)}"
+    return clause, None
 
 
 def _pronoun_object(words: Sequence[str], verb_end: int) -> bool:

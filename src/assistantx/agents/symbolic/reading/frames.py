@@ -30,6 +30,10 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.directed_work import (
+    asks_someone_to_work,
+    hands_across,
+)
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
@@ -266,7 +270,11 @@ class FrameReader:
     def _starts_request(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -> bool:
         while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
             n += 1
-        return n < len(mentions) and mentions[n].kind == "cue"
+        return n < len(mentions) and (
+            mentions[n].kind == "cue"
+            or asks_someone_to_work(mentions, n, tokens)
+            or hands_across(mentions, n, tokens)
+        )
 
     # -- checks ----------------------------------------------------------------------------
     def _uncovered(self, objects: list[Mention], tasks: list[Task]) -> str | None:

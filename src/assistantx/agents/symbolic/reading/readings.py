@@ -264,15 +264,27 @@ class MentionReader:
         return out
 
     def _paper_about(self, tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
-        """ "the insurance form for Biscuit", "my claim for Rex": a name nobody in the office
-        has, right after a personal paper and "for", says what the paper is about (a patient,
-        a case), not someone to hand it to; an ordinary thing "for Bob" still asks who Bob
-        is. Only a capitalised word that names nothing of the office."""
+        """ "the insurance form for Biscuit", "my claim for Rex", "the purchase order from
+        Harlow Dairy": a name nobody in the office has, right after a personal paper and
+        "for" or "from", says what the paper is about or where it came from (a patient, a
+        supplier), not someone to hand it to or fetch it from; an ordinary thing "for Bob"
+        still asks who Bob is. Only capitalised words that name nothing of the office."""
         m = mentions[n]
-        if n < 2 or not m.text[:1].isupper() or m.possessive:
+        if not m.text[:1].isupper() or m.possessive:
             return False
-        before = mentions[n - 2]  # the paper, then "for"
-        if tokens[m.start - 1].word != "for" or before.end != m.start - 1:
+        while (  # "Harlow Dairy": the name's first word
+            n >= 1
+            and mentions[n - 1].kind == "word"
+            and mentions[n - 1].end == m.start
+            and mentions[n - 1].text[:1].isupper()
+            and not mentions[n - 1].possessive
+        ):
+            n -= 1
+            m = mentions[n]
+        if n < 2:
+            return False
+        before = mentions[n - 2]  # the paper, then "for" / "from"
+        if tokens[m.start - 1].word not in ("for", "from") or before.end != m.start - 1:
             return False
         if before.kind != "item" or len(before.ids) != 1:
             return False

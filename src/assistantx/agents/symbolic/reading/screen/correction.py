@@ -17,7 +17,7 @@ from assistantx.core.task_schema import Evidence
 # what was just said (only when they name one person or item, ``corrected``)
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
-    r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|no(?=[,!.]))\b"
+    r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
     r"[,:]?\s*",
     re.IGNORECASE,
@@ -43,6 +43,7 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if match is None:
         return text, []
     before, after = text[: match.start()], text[match.end() :]
+    after = _last_of_chain(after)
     # the correction ends at its sentence's end or at a comma: what follows is said beside it
     # ("... I meant Mao's seal, Wang needs hers today": the reason, read as a piece of its own)
     fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
@@ -88,6 +89,22 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = terms.office.item_type(new.ids[0]).name
     fixed = before[: old.start()] + said + before[old.end() :] + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+
+def _last_of_chain(after: str) -> str:
+    """ "heat... sorry, STEAM, nope, I mean get Zoë's straighteners": a correction that is
+    corrected again at once (its few words, then another correction) says nothing that
+    stands; the last correction of the chain is what the first one corrects to."""
+    while True:
+        fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
+        again = _CORRECTION.match(after, len(fix))
+        if not fix.strip() or len(fix.split()) > _CHAINED_WORDS or again is None:
+            return after
+        after = after[again.end() :]
+
+
+# The most words of a correction that is itself corrected at once ("STEAM", "the blue one").
+_CHAINED_WORDS = 4
 
 
 def _opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:
