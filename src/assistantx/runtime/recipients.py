@@ -151,6 +151,7 @@ def _written_as_name(
     settles it for the reader, and the name's role is still checked here."""
     w = words[n]
     nxt = words[n + 1] if n + 1 < len(words) and not words[n + 1].opens else None
+    after = words[n + 2] if nxt is not None and n + 2 < len(words) else None
     slot = NameSlot(
         word=w.folded,
         written=w.text,
@@ -161,6 +162,7 @@ def _written_as_name(
         next_possessive=nxt is not None and nxt.possessive,
         next_is_item=nxt is not None and nxt.folded in items,
         next_is_name=nxt is not None and nxt.folded in name_words,
+        after_next=after.folded if after is not None and not after.opens else "",
     )
     return read_name(slot) != "word"
 

@@ -639,6 +639,7 @@ class Lexicon:
         if self._distance(tokens, i):
             return "word"
         nxt = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
+        after = tokens[i + 2] if nxt is not None and i + 2 < len(tokens) else None
         slot = NameSlot(
             word=t.word,
             written=t.text,
@@ -649,6 +650,7 @@ class Lexicon:
             next_possessive=nxt is not None and nxt.possessive,
             next_is_item=nxt is not None and nxt.word in self.items,
             next_is_name=nxt is not None and nxt.word in self.name_words,
+            after_next=after.word if after is not None and not after.opens else "",
             declared_with_prev=i > 0 and (tokens[i - 1].word, t.word) in self.with_article,
         )
         return read_name(slot)
