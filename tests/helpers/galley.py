@@ -40,7 +40,7 @@ def raw_galley() -> dict[str, Any]:
             ob.item(
                 "release_form", "release form", "personal", signable=True, synonyms=["release"]
             ),
-            ob.item("costings", "costings", "electronic", synonyms=["costings spreadsheet"]),
+            ob.item("costings", "costings", "electronic", synonyms=["spreadsheet"]),
             ob.item("running_order", "running order", "personal"),
             ob.item("rush_tag", "rush tag", "product", synonyms=["rush label"]),
             ob.item("printout", "printout", "product"),
