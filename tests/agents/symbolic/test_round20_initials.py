@@ -2,7 +2,8 @@
 ``helpers.galley``, an airline catering unit no sentence was written for: Luca Ferrand and
 Luca Bianchi): "luca f's costings", "Luca F.'s costings" are Luca Ferrand's, sent to the
 requester once Luca Ferrand agrees; "Luca's costings" alone still asks which Luca, and an
-initial neither Luca has asks too."""
+initial neither Luca has asks too. The file named again by another of its names ("the
+spreadsheet, not a printout") is the same file, not the requester's own to pass on."""
 
 from __future__ import annotations
 
@@ -30,6 +31,30 @@ def test_the_initial_picks_one_luca(text: str, owner: str) -> None:
     assert frame.question is None and frame.decline is None, frame
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("send_file", "costings", owner, "nia")
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("could you get me luca f's costings? the spreadsheet, not a printout", "luca_f"),
+        ("get me Luca F.'s costings? the spreadsheet, not a printout", "luca_f"),
+        ("could you send me Deepa's costings? the spreadsheet", "deepa"),
+    ],
+)
+def test_the_file_named_again_is_the_same_file(text: str, owner: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("send_file", "costings", owner, "nia")
+    ]
+
+
+def test_a_second_file_for_someone_else_is_still_sent() -> None:
+    frame = _frame("send me Deepa's costings, and send Holly my costings")
+    assert [(t.kind, t.owner, t.recipient) for t in frame.tasks] == [
+        ("send_file", "deepa", "nia"),
+        ("send_file", "nia", "holly"),
     ]
 
 
