@@ -27,6 +27,7 @@ _frame = frame_reader(galley, "nia")
         "could you get holly to sign my release form, the chef's agent needs it back",
         "have holly sign my release form, the chef wants it by noon",
         "could you have holly sign my release form",
+        "pls have holly sign my release form",
         "I need holly to sign my release form before the cooking slot",
     ],
 )
@@ -44,6 +45,9 @@ def test_holly_signs_and_the_form_comes_back(text: str) -> None:
         "is holly signing my release form?",
         "thanks for getting holly to sign my release form",
         "don't get holly to sign my release form",
+        "pls has Holly signed my release form",
+        "pls is the stapler here",
+        "pls are there any staplers left",
     ],
 )
 def test_no_request_moves_nothing(text: str) -> None:
