@@ -7,7 +7,8 @@ with this one function, so the guard never refuses a hand-over to the person the
 (nor lets through one to a word the reader never took for a person).
 
 Syntax decides: "to Mark", "Mark's", "give mark a pen", "Pat hurt her hand", "it's fern who
-needs it", "can Penny sign it?" make a person;
+needs it", "can Penny sign it?", "get holly to sign it", "have holly sign it" (the doer of a
+verb) make a person;
 "the grace period", "to be honest", "Will you", "in May", "Mark my form" make the word. When
 neither says anything a capital letter makes the person; when they disagree, or a capitalized
 word sits where only the word fits, the reading is "ask". A title the office declares with its
@@ -30,6 +31,8 @@ _PERSON_BEFORE = english.words("person_before")
 _WORD_BEFORE = english.words("word_before")
 _DATIVE_VERBS = english.words("dative_verbs")
 _VERB_OBJECT_STARTS = english.words("object_starts")
+_DOER_VERBS_TO = english.words("doer_verbs_to")
+_DOER_VERBS_BARE = english.words("doer_verbs_bare")
 _SUBJECT_PRONOUNS = english.words("subject_pronouns")
 _MONTH_PREPOSITIONS = english.words("month_prepositions")
 _POLITE = english.words("polite")
@@ -50,6 +53,7 @@ class NameSlot:
     next_possessive: bool = False
     next_is_item: bool = False  # the next word names one of the office's items
     next_is_name: bool = False  # the next word is a word of someone's name
+    after_next: str = ""  # the word after the next one (folded; "" at a sentence's edge)
     # the office declares "<prev> <word>" as someone's alias ("the Provost", "our Dean")
     declared_with_prev: bool = False
 
@@ -85,6 +89,7 @@ def slot_at(
     ``with_article``: (article, word) pairs the office declares as someone's alias."""
     w = words[n]
     nxt = words[n + 1] if n + 1 < len(words) and not words[n + 1].opens else None
+    after = words[n + 2] if nxt is not None and n + 2 < len(words) else None
     return NameSlot(
         word=w.word,
         written=w.text,
@@ -95,6 +100,7 @@ def slot_at(
         next_possessive=nxt is not None and nxt.possessive,
         next_is_item=nxt is not None and nxt.word in items,
         next_is_name=nxt is not None and nxt.word in name_words,
+        after_next=after.word if after is not None and not after.opens else "",
         declared_with_prev=n > 0 and (words[n - 1].word, w.word) in with_article,
     )
 
@@ -124,6 +130,7 @@ def read_name(slot: NameSlot) -> NameReading:
         or nxt == "who"  # "it's fern who needs it": "who" is said of people only
         # "Can Penny sign my report?": the subject of a modal's question, before its verb
         or (prev in _MODALS and bool(nxt) and nxt in language.verb_lemmas(nxt))
+        or _doer(prev, nxt, slot.after_next)
     )
     if language.is_month(w) and not slot.possessive:
         day = language.is_day_number(prev) or language.is_day_number(nxt)
@@ -139,6 +146,7 @@ def read_name(slot: NameSlot) -> NameReading:
     # "grace period": a noun right after it makes a compound
     compound = (
         bool(nxt)
+        and not _doer(prev, nxt, slot.after_next)
         and not slot.next_possessive
         and nxt not in _COMMON
         and not slot.next_is_name
@@ -152,3 +160,19 @@ def read_name(slot: NameSlot) -> NameReading:
     if word or compound:
         return "ask" if capital and not slot.opens else "word"
     return "person" if capital else "word"
+
+
+def _doer(prev: str, nxt: str, after_next: str) -> bool:
+    """ "get holly to sign it", "have holly sign it": after a verb that has someone do
+    something, the name followed by "to" and a verb, or by the bare verb, is who does it (a
+    plant is never asked to sign); "get holly to the desk" (no verb after "to") says
+    nothing."""
+    if prev in _DOER_VERBS_TO and nxt == "to" and _base_verb(after_next):
+        return True
+    return prev in _DOER_VERBS_BARE and _base_verb(nxt)
+
+
+def _base_verb(word: str) -> bool:
+    """Whether ``word`` is a verb as the dictionary lists it (its own lemma: "sign", "print"),
+    not an inflected form nor a word that is no verb ("the", "desk")."""
+    return bool(word) and word in language.verb_lemmas(word)

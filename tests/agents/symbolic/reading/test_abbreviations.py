@@ -19,6 +19,8 @@ from assistantx.agents.symbolic.reading.abbreviations import undotted
         ("a pen, e.g. a blue one", "a pen, eg a blue one"),
         ("the red one, i.e. mine", "the red one, ie mine"),
         ("approx. ten copies", "approx ten copies"),
+        ("get me Luca F.'s costings", "get me Luca F's costings"),
+        ("luca f.’s costings", "luca f’s costings"),
     ],
 )
 def test_the_stop_of_an_abbreviation_is_taken_out(text: str, read: str) -> None:
@@ -34,6 +36,7 @@ def test_the_stop_of_an_abbreviation_is_taken_out(text: str, read: str) -> None:
         "done by Prof.",
         "I need the mrs. form",
         "the end. Dr Osei signs next",
+        "it's plan B. Luca's costings",  # no possessive after the letter: a sentence end
     ],
 )
 def test_other_stops_are_kept(text: str) -> None:

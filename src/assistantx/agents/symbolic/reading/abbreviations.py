@@ -7,6 +7,7 @@ and then stamped" would be two sentences, the second ("Osei and then stamped") a
 set aside, and only the signature done. The text is read once with those stops taken out,
 before any stage; nothing else in it changes.
 
+An initial's stop is taken out before a possessive ("Luca F.'s file": Luca F's, one name).
 A title's stop is taken out only before a capitalised word (a name: "Dr. Osei"; "...see the
 dr. Then print it" keeps its sentence end); a Latin or measure abbreviation's before any word.
 """
@@ -27,6 +28,8 @@ _WORD_STOP = re.compile(
     r"(?<![\w.])(" + "|".join(re.escape(w) for w in _WORDS) + r")\.(?=[ \t]*,?[ \t]*\w)",
     re.IGNORECASE,
 )
+# An initial's stop before a possessive ("Luca F.'s costings"): the name goes on.
+_INITIAL_STOP = re.compile(r"(?<![\w.'’])([A-Za-z])\.(?=['’]s\b)")
 # The inner stop of "e.g" and "i.e": the word is read as "eg", "ie".
 _INNER = re.compile(r"(?<![\w.])([ei])\.([gie])(?=\b)", re.IGNORECASE)
 
@@ -35,4 +38,5 @@ def undotted(text: str) -> str:
     """``text`` with the stops of abbreviations before further words taken out."""
     out = _TITLE_STOP.sub(r"\1", text)
     out = _WORD_STOP.sub(r"\1", out)
+    out = _INITIAL_STOP.sub(r"\1", out)
     return _INNER.sub(r"\1\2", out)

@@ -201,6 +201,10 @@ class FrameReader:
                 # "need Wang's signature on my invoice, can you get it signed": the same
                 # work by the doer already named, asked for again without the name
                 return True
+        if earlier.kind == task.kind == "send_file":
+            # "get me Luca's costings? the spreadsheet": the file named again by another of
+            # its names, read as the requester's own to themselves, is the same file
+            return task.owner == task.recipient and earlier.item == task.item
         if earlier.kind == task.kind:
             # "fetch Bill's tripod? I need the tripod": anyone's item of the kind already
             # on its way to the same person is the need said again, not a second errand

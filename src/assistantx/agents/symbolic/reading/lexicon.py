@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.near_forms import NearForms
@@ -453,6 +454,10 @@ class Lexicon:
             spelled = self.people.get(word, set()) | self.name_words.get(word, set())
             if candidates and spelled and not set(candidates) & spelled:
                 continue  # "Li's book" where only Lee owns one: the spelling says Sun Li; ask
+            if len(candidates) == 1 and m.end - m.start == 1:
+                others = [self.office.person(i) for i in m.ids if i != candidates[0]]
+                if only_in_full_name(self.office.person(candidates[0]), others, word):
+                    continue  # "cliff's running order", only Marcus Cliff keeps one: ask
             if len(candidates) == 1:
                 out[n] = Mention("person", m.start, m.end, candidates, m.possessive, m.text)
         return out

@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.codes import code_of_a_thing
 from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
 from assistantx.agents.symbolic.reading.errand import errand_verbs, facility_pronouns
 from assistantx.agents.symbolic.reading.lexicon import (
@@ -373,6 +374,8 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
     titled = prev in _TITLE_WORDS
     if prev == "for" and _modifies_next(tokens, m.end):
         return False  # "for PE cover", "for Year 9": what it is for, nobody's name
+    if code_of_a_thing(tokens, mentions, n):
+        return False  # "the bag for LIS": an airport's code, nobody's name
     return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
 
 

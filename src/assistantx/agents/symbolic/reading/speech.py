@@ -576,6 +576,8 @@ class SpeechActs:
         three words that are no verb, then "is"/"has", are still a subject. Only for things
         the office does not know: its own items and places are read by the rules for them
         ("scissors are in the kitchenette": where they are)."""
+        if w[0] in _WILLING and w[1:2] == ["have"] and self._causative(w[1:]):
+            return False  # "pls have holly sign it": a request marker is nobody's subject
         for n in range(1, min(len(w), 4)):
             if w[n] in _BARE_COPULAS:
                 known = self._office_words()
