@@ -31,7 +31,7 @@ def _words(*spec: str) -> list[_W]:
 def test_the_neighbours_and_what_the_office_says_of_the_next_word() -> None:
     words = _words("give", "penny", "a", "pen")
     assert slot_at(words, 1, items={"pen"}, name_words={"penny"}) == NameSlot(
-        word="penny", written="penny", prev="give", next="a"
+        word="penny", written="penny", prev="give", next="a", after_next="pen"
     )
     slot = slot_at(_words("give", "penny", "pens"), 1, items={"pens"}, name_words=set())
     assert slot.next_is_item and not slot.next_is_name
