@@ -27,6 +27,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
+from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
@@ -434,7 +435,24 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
-        return self._settled_by_owner(tokens, mentions)
+        return self._settled_by_owner(tokens, self._compound_heads(tokens, mentions))
+
+    def _compound_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "my wine list file": an item's name before a noun the office does not know is
+        the first part of a compound (``compound_heads``), a plain word, not the item."""
+        return [
+            Mention(
+                "word",
+                m.start,
+                m.end,
+                (" ".join(t.word for t in tokens[m.start : m.end]),),
+                m.possessive,
+                m.text,
+            )
+            if m.kind == "item" and modifies_a_noun(tokens, m.end, self._known)
+            else m
+            for m in mentions
+        ]
 
     def _settled_by_owner(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Yang's book", "Yang said I could borrow his book": a name several people share
