@@ -36,7 +36,7 @@ def raw_galley() -> dict[str, Any]:
         ],
         item_types=[
             ob.item("wine", "wine", synonyms=["bottle of wine"]),
-            ob.item("doc_file", "file", "electronic", synonyms=["e-file", "recipe file"]),
+            ob.item("doc_file", "file", "electronic", synonyms=["e-file", "recipe file", "recipe"]),
             ob.item("contract", "contract", "personal", signable=True, synonyms=["paperwork"]),
             ob.item("prep", "prep", "personal", synonyms=["mise en place"]),
             ob.item("trimmings", "trimmings", "personal", synonyms=["offcuts"]),

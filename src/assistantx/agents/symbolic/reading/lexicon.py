@@ -29,6 +29,7 @@ from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.courses import Courses
+from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -184,6 +185,7 @@ class Lexicon:
     # near forms of the office's verbs ("fire-proof", "flameproofed", "dying" for "dye")
     near_forms: NearForms = field(default_factory=lambda: NearForms({}, 0))
     courses: Courses = field(default_factory=lambda: Courses({}))
+    made_objects: MadeObjects = field(default_factory=lambda: MadeObjects({}))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -206,6 +208,7 @@ class Lexicon:
         lex.verb_phrases = VerbPhrases.from_office(office)
         lex.near_forms = NearForms.from_office(office, inflections)
         lex.courses = Courses.from_office(office)
+        lex.made_objects = MadeObjects.from_office(office)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -591,6 +594,9 @@ class Lexicon:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
         if self._thing_named(tokens, i):  # "a brew": the office's tea
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
+        made = self.made_objects.product_at(tokens, i, self._known)
+        if made is not None:  # "print labels": the label run's product, not its verb
+            return Mention("item", i, i + 1, (made,), t.possessive, t.text)
         if w in self.cue_words and (
             self._noun_use(tokens, i)
             or (event_noun(tokens, i, self.operation_words) and not self._work_asked(tokens, i))
