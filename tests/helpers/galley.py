@@ -52,7 +52,7 @@ def raw_galley() -> dict[str, Any]:
             ob.operation("burn", "burn", name="burn a disc", input="doc_file", product="disc"),
             ob.operation("photocopy", "photocopy", "copy", input="contract", product="photocopy"),
             ob.operation(
-                "seal",
+                "vac_seal",
                 "vacuum seal",
                 "vac pack",
                 name="vacuum seal",
@@ -93,7 +93,7 @@ def raw_galley() -> dict[str, Any]:
                 "vacuum packer",
                 at="cold_room",
                 guards=["maren"],
-                operations=["seal"],
+                operations=["vac_seal"],
             ),
             ob.facility(
                 "blast_chiller",

@@ -37,10 +37,10 @@ def test_unsaid_work_on_an_item_two_operations_take_is_asked_by_name(text: str) 
 @pytest.mark.parametrize(
     ("answer", "operation"),
     [
-        ("vacuum seal", "seal"),
+        ("vacuum seal", "vac_seal"),
         ("blast chill", "chill"),
         ("the blast chill please", "chill"),
-        ("Vacuum seal it, thanks.", "seal"),
+        ("Vacuum seal it, thanks.", "vac_seal"),
     ],
 )
 def test_the_answer_names_the_work(answer: str, operation: str) -> None:
@@ -59,7 +59,7 @@ def test_an_answer_that_names_no_work_leaves_it_asked(answer: str) -> None:
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
-        ("vac pack my prep", [("seal", "prep")]),
+        ("vac pack my prep", [("vac_seal", "prep")]),
         ("blast chill my prep please", [("chill", "prep")]),
         ("bring Tobin my prep", [(None, "prep")]),
     ],

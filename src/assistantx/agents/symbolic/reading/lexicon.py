@@ -27,6 +27,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
+from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
@@ -186,6 +187,7 @@ class Lexicon:
     near_forms: NearForms = field(default_factory=lambda: NearForms({}, 0))
     courses: Courses = field(default_factory=lambda: Courses({}))
     made_objects: MadeObjects = field(default_factory=lambda: MadeObjects({}))
+    clipped_verbs: ClippedVerbs = field(default_factory=lambda: ClippedVerbs({}, {}))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -209,6 +211,7 @@ class Lexicon:
         lex.near_forms = NearForms.from_office(office, inflections)
         lex.courses = Courses.from_office(office)
         lex.made_objects = MadeObjects.from_office(office)
+        lex.clipped_verbs = ClippedVerbs.from_office(office, lex.verb_phrases.forms)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -371,7 +374,9 @@ class Lexicon:
         # "needs a lamination": an operation named by a noun is read as its verb
         out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"
-        return self.verb_phrases.join(out, text)
+        out = self.verb_phrases.join(out, text)
+        # "vac my prep": a compound verb said by its first word, clipped ("vac pack")
+        return self.clipped_verbs.read(out, self._known)
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*
