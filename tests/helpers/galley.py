@@ -44,7 +44,7 @@ def raw_galley() -> dict[str, Any]:
             ob.item("labels", "labels", "product", synonyms=["date labels", "stickers"]),
             ob.item("disc", "disc", "product", synonyms=["cd"]),
             ob.item("photocopy", "photocopy", "product", synonyms=["copy", "copies"]),
-            ob.item("temp_pass", "temporary pass", consumable=True, synonyms=["visitor pass"]),
+            ob.item("airside_pass", "temporary pass", consumable=True, synonyms=["visitor pass"]),
         ],
         operations=[
             ob.operation("print", "print", input="doc_file", product="printout"),
@@ -108,7 +108,7 @@ def raw_galley() -> dict[str, Any]:
                 "pass office",
                 at="security",
                 guards=["tobin"],
-                supplies=[{"type": "temp_pass", "count": 5}],
+                supplies=[{"type": "airside_pass", "count": 5}],
             ),
         ],
         home="office",
