@@ -27,6 +27,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
+from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.courses import Courses
@@ -280,6 +281,12 @@ class Lexicon:
         words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
         lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
+        # "a temp pass": a name of several words with its first word clipped (after the
+        # typo vocabulary, so no clipped word is ever a typo's correction)
+        compounds = [(k, i) for k, i in lex.items.items() if " " in k]
+        used = {*lex.items, *lex.people, *lex.facilities}
+        for form, type_id in clipped_phrases(compounds, used).items():
+            lex.items.setdefault(form, type_id)
         lex.operation_nouns = operation_nouns(office, lex._known)
         lex.operation_names = operation_names(office)
         return lex
