@@ -11,10 +11,10 @@ from symbolic_run import run_instruction
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.tokens import tokenize
-from helpers.galley import galley
+from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import frame_reader
 
-_frame = frame_reader(galley, "odile")
+_frame = frame_reader(airside_kitchen, "odile")
 
 _SEAL = ("vac_seal", "prep", "odile", "odile")
 _DIGEST = ("digest", "trimmings", "odile", "odile")
@@ -81,7 +81,7 @@ def test_no_clipped_verb_where_it_does_not_fit(text: str) -> None:
 def test_read_needs_a_clip_of_one_operation_in_a_verbs_place(
     text: str, at: int, verb: str | None
 ) -> None:
-    office = galley()
+    office = airside_kitchen()
     clipped = ClippedVerbs.from_office(office, Lexicon.from_office(office).verb_phrases.forms)
     tokens = tokenize(text)
     read = clipped.read(tokens, lambda word: False)
@@ -94,7 +94,7 @@ def test_a_first_word_two_operations_share_is_left_unread() -> None:
 
 
 async def test_the_prep_is_sealed_and_the_trimmings_digested() -> None:
-    run = await run_instruction(galley(), "odile", _VAC_THEN_DIGEST)
+    run = await run_instruction(airside_kitchen(), "odile", _VAC_THEN_DIGEST)
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     done = [
         (r.action.operation, r.action.item)  # type: ignore[union-attr]

@@ -10,10 +10,10 @@ from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic.reading.compound_heads import compound_noun
 from assistantx.agents.symbolic.reading.tokens import tokenize
-from helpers.galley import galley
+from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import frame_reader
 
-_frame = frame_reader(galley, "odile")
+_frame = frame_reader(airside_kitchen, "odile")
 
 Row = tuple[str, str | None, str | None, str]
 
@@ -101,6 +101,8 @@ def test_compound_noun_is_a_plain_noun_nothing_else_reads(said: str, noun: bool)
 
 
 async def test_no_bottle_is_handed_over_for_the_wine_list_file() -> None:
-    run = await run_instruction(galley(), "odile", "Send my wine list file to Tobin please.")
+    run = await run_instruction(
+        airside_kitchen(), "odile", "Send my wine list file to Tobin please."
+    )
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     assert "handover" not in run.actions and "pick_up" not in run.actions, run.actions

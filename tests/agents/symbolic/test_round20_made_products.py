@@ -11,10 +11,10 @@ from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.tokens import tokenize
-from helpers.galley import galley
+from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import frame_reader
 
-_frame = frame_reader(galley, "odile")
+_frame = frame_reader(airside_kitchen, "odile")
 
 Row = tuple[str, str | None, str | None, str | None, str]
 
@@ -91,19 +91,19 @@ def test_thanks_a_negation_or_a_statement_prints_nothing(text: str) -> None:
     ],
 )
 def test_product_at_needs_a_rival_verb_before_it(text: str, at: int, product: str | None) -> None:
-    made = MadeObjects.from_office(galley())
+    made = MadeObjects.from_office(airside_kitchen())
     assert made.product_at(tokenize(text), at, lambda word: False) == product
 
 
 def test_only_operations_on_the_same_input_are_rivals() -> None:
     """The photocopy's "copy" works on a paper, the printer's "print" on a file: no rivals,
     so "print a copy" is read as before."""
-    assert set(MadeObjects.from_office(galley()).rivals) == {"labels"}
+    assert set(MadeObjects.from_office(airside_kitchen()).rivals) == {"labels"}
 
 
 async def test_the_label_run_is_what_reaches_tobin() -> None:
     run = await run_instruction(
-        galley(), "odile", "print labels for my recipe and take them to Tobin"
+        airside_kitchen(), "odile", "print labels for my recipe and take them to Tobin"
     )
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     codes = [

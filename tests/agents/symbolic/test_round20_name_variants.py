@@ -9,10 +9,10 @@ import pytest
 
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.core import language
-from helpers.galley import galley
+from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import frame_reader
 
-_frame = frame_reader(galley, "odile")
+_frame = frame_reader(airside_kitchen, "odile")
 
 _PASS_TO_TOBIN = [("transfer", "airside_pass", None, "tobin")]
 

@@ -12,10 +12,10 @@ from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import load_office
-from helpers.galley import galley
+from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import frame_reader
 
-_frame = frame_reader(galley, "odile")
+_frame = frame_reader(airside_kitchen, "odile")
 
 Row = tuple[str, str | None, str | None, str | None, str]
 _OUTSIDER_ASKED = "I hand things only to people of this office"
@@ -93,7 +93,7 @@ def test_the_default_office_copies_the_agreement_for_its_owner() -> None:
 
 async def test_the_disc_reaches_tobin_and_nobody_else() -> None:
     run = await run_instruction(
-        galley(),
+        airside_kitchen(),
         "odile",
         "burn my file onto a disc and take it to Tobin, he wants to show it to the guest",
     )

@@ -9,11 +9,11 @@ from __future__ import annotations
 import pytest
 from symbolic_run import run_instruction
 
-from helpers.galley import galley
+from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import answered_reader, frame_reader
 
-_frame = frame_reader(galley, "odile")
-_answered = answered_reader(galley, "odile")
+_frame = frame_reader(airside_kitchen, "odile")
+_answered = answered_reader(airside_kitchen, "odile")
 
 _ASKED = "Which should I do with your prep: vacuum seal or blast chill?"
 _DO_SOMETHING = "can you do something with my prep before it turns"
@@ -91,7 +91,7 @@ def test_no_question_of_which_work_where_it_does_not_fit(text: str) -> None:
 
 
 async def test_nothing_moves_when_the_requester_cannot_say_which() -> None:
-    run = await run_instruction(galley(), "odile", _DO_SOMETHING)
+    run = await run_instruction(airside_kitchen(), "odile", _DO_SOMETHING)
     asked = [r.action for r in run.stm.trace.actions() if r.action.type == "inquire"]
     assert asked and asked[0].question == _ASKED  # type: ignore[union-attr]
     assert not {"send_qr", "forward_file", "move"} & set(run.actions), run.actions

@@ -22,9 +22,9 @@ _PEOPLE = (
 )
 
 
-def raw_galley() -> dict[str, Any]:
+def raw_airside_kitchen() -> dict[str, Any]:
     return ob.office_file(
-        "galley",
+        "airside kitchen",
         _PEOPLE,
         everyone_owns=["doc_file", "contract"],
         rooms=[
@@ -116,4 +116,4 @@ def raw_galley() -> dict[str, Any]:
     )
 
 
-galley = ob.parsed(raw_galley)
+airside_kitchen = ob.parsed(raw_airside_kitchen)
