@@ -9,6 +9,11 @@ from __future__ import annotations
 import pytest
 from symbolic_run import run_instruction
 
+from assistantx.core.settings import Settings
+from assistantx.core.task_schema import Part
+from assistantx.evaluation.dataset.tasks import Task
+from assistantx.evaluation.harness import run_episode
+from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from helpers.airside_kitchen import airside_kitchen
 from helpers.reading import answered_reader, frame_reader
 
@@ -95,3 +100,31 @@ async def test_nothing_moves_when_the_requester_cannot_say_which() -> None:
     asked = [r.action for r in run.stm.trace.actions() if r.action.type == "inquire"]
     assert asked and asked[0].question == _ASKED  # type: ignore[union-attr]
     assert not {"send_qr", "forward_file", "move"} & set(run.actions), run.actions
+
+
+@pytest.mark.parametrize(("operation", "said"), [("chill", "chilled"), ("vac_seal", "sealed")])
+async def test_a_requester_who_knows_which_answers_and_it_is_done(
+    operation: str, said: str
+) -> None:
+    """In evaluation the simulated requester answers the question from the task's truth, and
+    the work named is done to their prep."""
+    office = airside_kitchen()
+    goal: list[dict[str, object]] = [{"heated": "prep:odile"}, {"informed": "odile"}]
+    task = Task(
+        id="t001",
+        base="b1",
+        level="L1",
+        achievable=True,
+        requester="odile",
+        instruction=_DO_SOMETHING,
+        goal=goal,
+        optimal_actions=1,
+        spec=[Part(kind="heat", operation=operation)],
+    )
+    episode = await run_episode(
+        task, 0, office, MethodBuilder(MethodSpec("ppdr"), office, Settings())
+    )
+    asked = [r.action for r in episode.trace.actions() if r.action.type == "inquire"]
+    assert [getattr(a, "question", None) for a in asked][:1] == [_ASKED]
+    assert episode.trace.outcome == "done", episode.trace.summary
+    assert all(episode.milestones) and said in (episode.trace.summary or "")
