@@ -105,4 +105,6 @@ async def test_no_bottle_is_handed_over_for_the_wine_list_file() -> None:
         airside_kitchen(), "odile", "Send my wine list file to Tobin please."
     )
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
-    assert "handover" not in run.actions and "pick_up" not in run.actions, run.actions
+    assert "forward_file" in run.actions, run.actions
+    # nothing is carried: no code for a locker, no trip (main fetched a bottle of wine)
+    assert not {"send_qr", "move"} & set(run.actions), run.actions
