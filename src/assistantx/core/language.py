@@ -99,8 +99,8 @@ def verb_forms(verb: str) -> frozenset[str]:
 def plural(noun: str) -> str:
     """The plural of a noun or of a phrase's last word ("tape dispenser" → tape dispensers)."""
     *head, last = noun.split(" ")
-    if last.endswith("s"):
-        return noun
+    if last.endswith("s") and not last.endswith("ss"):
+        return noun  # "gloves", "scissors"; not "pass", "glass", whose plural adds -es
     found = getAllInflections(last, upos="NOUN") or getAllInflectionsOOV(last, upos="NOUN")
     forms = found.get("NNS", ())
     return " ".join([*head, forms[0] if forms else last + "s"])

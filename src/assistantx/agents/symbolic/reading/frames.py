@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.office import Office
@@ -158,7 +159,11 @@ class FrameReader:
         tasks = [self._given_back(t, holder) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
-        question = self._uncovered(objects, tasks) or self._check(tasks, requester, to_self)
+        question = (
+            self._uncovered(objects, tasks)
+            or which_work(self.office, tasks, readings.mentions, requester)
+            or self._check(tasks, requester, to_self)
+        )
         return TaskFrame(
             requester=requester, tasks=tasks if question is None else [], question=question
         )

@@ -28,7 +28,11 @@ from typing import Literal
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
+from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
+from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
+from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.courses import Courses
+from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -184,6 +188,8 @@ class Lexicon:
     # near forms of the office's verbs ("fire-proof", "flameproofed", "dying" for "dye")
     near_forms: NearForms = field(default_factory=lambda: NearForms({}, 0))
     courses: Courses = field(default_factory=lambda: Courses({}))
+    made_objects: MadeObjects = field(default_factory=lambda: MadeObjects({}))
+    clipped_verbs: ClippedVerbs = field(default_factory=lambda: ClippedVerbs({}, {}))
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -206,6 +212,8 @@ class Lexicon:
         lex.verb_phrases = VerbPhrases.from_office(office)
         lex.near_forms = NearForms.from_office(office, inflections)
         lex.courses = Courses.from_office(office)
+        lex.made_objects = MadeObjects.from_office(office)
+        lex.clipped_verbs = ClippedVerbs.from_office(office, lex.verb_phrases.forms)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -274,6 +282,12 @@ class Lexicon:
         words = {w for p in phrases for w in p.split()} | set(lex.name_words) | lex.cue_words
         lex.vocabulary = sorted(w for w in words if language.typo_limit(w) > 0)
         lex._vocabulary_set = frozenset(lex.vocabulary)
+        # "a temp pass": a name of several words with its first word clipped (after the
+        # typo vocabulary, so no clipped word is ever a typo's correction)
+        compounds = [(k, i) for k, i in lex.items.items() if " " in k]
+        used = {*lex.items, *lex.people, *lex.facilities}
+        for form, type_id in clipped_phrases(compounds, used).items():
+            lex.items.setdefault(form, type_id)
         lex.operation_nouns = operation_nouns(office, lex._known)
         lex.operation_names = operation_names(office)
         return lex
@@ -368,7 +382,9 @@ class Lexicon:
         # "needs a lamination": an operation named by a noun is read as its verb
         out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"
-        return self.verb_phrases.join(out, text)
+        out = self.verb_phrases.join(out, text)
+        # "vac my prep": a compound verb said by its first word, clipped ("vac pack")
+        return self.clipped_verbs.read(out, self._known)
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*
@@ -435,7 +451,24 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
-        return self._settled_by_owner(tokens, mentions)
+        return self._settled_by_owner(tokens, self._compound_heads(tokens, mentions))
+
+    def _compound_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "my wine list file": an item's name before a noun the office does not know is
+        the first part of a compound (``compound_heads``), a plain word, not the item."""
+        return [
+            Mention(
+                "word",
+                m.start,
+                m.end,
+                (" ".join(t.word for t in tokens[m.start : m.end]),),
+                m.possessive,
+                m.text,
+            )
+            if m.kind == "item" and modifies_a_noun(tokens, m.end, self._known)
+            else m
+            for m in mentions
+        ]
 
     def _settled_by_owner(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Yang's book", "Yang said I could borrow his book": a name several people share
@@ -578,6 +611,9 @@ class Lexicon:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
         if self._thing_named(tokens, i):  # "a brew": the office's tea
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
+        made = self.made_objects.product_at(tokens, i, self._known)
+        if made is not None:  # "print labels": the label run's product, not its verb
+            return Mention("item", i, i + 1, (made,), t.possessive, t.text)
         if w in self.cue_words and (
             self._noun_use(tokens, i)
             or (event_noun(tokens, i, self.operation_words) and not self._work_asked(tokens, i))

@@ -38,6 +38,12 @@ def _head_asks(phrase: str) -> bool:
     return len(words) == 1 or "VERB" in language.lemmas(words[0])
 
 
+def _verbs_of_another(by_verb: list[Operation], task: Task, tasks: list[Task]) -> bool:
+    """Whether the operations said by verb work on the item of another of ``tasks``, not
+    on ``task``'s: the verb belongs to that other clause."""
+    return any(op.input == u.item != task.item for op in by_verb for u in tasks)
+
+
 def _filler(word: str) -> bool:
     return word in _BETWEEN_VERB_AND_PRODUCT or word.isdigit()
 
@@ -125,11 +131,15 @@ class OperationChooser:
             ops = self.office.with_shape(shape) if shape and t.kind != "produce" else []
             if shape == "treat" and ops and t.item is not None and t.operation is None:
                 # the service asked for by its verb, else at the facility named, else any
-                asked = [op for op in ops if self._op_words[op.id] & words] or [
-                    op for op in ops if op.id in facility_ops
-                ]
-                asked = asked or ops
+                by_verb = [op for op in ops if self._op_words[op.id] & words]
+                at_named = [op for op in ops if op.id in facility_ops]
+                asked = by_verb or at_named or ops
                 fits = [op for op in asked if op.input == t.item]
+                if not fits and _verbs_of_another(by_verb, t, named):
+                    # "vac my prep then send my trimmings to the digester": the verb said
+                    # is the other clause's, on its item; the machine named takes this one
+                    fits = [op for op in at_named if op.input == t.item]
+                    asked = at_named if fits else asked
                 if not fits:  # "charge my radio" where only headlamps are charged
                     return TaskFrame(
                         requester=frame.requester, decline=self._cannot_treat(asked, t.item)

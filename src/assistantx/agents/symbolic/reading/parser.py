@@ -98,6 +98,7 @@ from assistantx.agents.symbolic.reading.unknown_items import (
 )
 from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
+from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
@@ -381,6 +382,13 @@ class InstructionParser:
                 if whose and not whose & {t.owner for t in meant.tasks}:
                     continue  # "Kwame's" read as someone else's file: asked, never guessed
                 text, frame = with_antecedent(text, answer, kind), meant
+                continue
+            if frame.question is not None and frame.question.startswith(WHICH_WORK):
+                # "do something with my prep" → "vacuum seal or blast chill?" → "vacuum
+                # seal": the work said, done to the item; anything else is asked again
+                meant = self.parse(with_work(text, answer), requester)
+                if meant.understood:
+                    text, frame = with_work(text, answer), meant
                 continue
             part = asked_part(frame.question) if frame.question is not None else None
             if part is not None and not names_work(self.office, frame.question or "", answer):

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.others_clause import in_others_clause
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
@@ -147,6 +148,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
         given = before in _GIVING and _item_after(mentions, n)
         if before not in _TO and not given:
             continue
+        if in_others_clause(tokens, breaks, mentions, start, later=piece.start > 0):
+            continue  # "..., she wants to show it to the guest": why, not whom it goes to
         end = _described_where(tokens, breaks, n + 1, office_at)
         span = _span(msg, piece, tokens[start:end])
         if span is not None:

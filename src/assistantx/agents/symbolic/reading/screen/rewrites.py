@@ -270,6 +270,8 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     )
     if keep and with_at is not None and tail[keep - 1].lower() in _OBJECT_OPENERS:
         keep = with_at + 1
+    elif keep and keep < len(tail) and tail[keep - 1].lower() in _OBJECT_OPENERS:
+        keep += 1  # "something to charge my phone": the phone is charged, never brought
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0

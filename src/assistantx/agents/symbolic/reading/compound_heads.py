@@ -1,0 +1,54 @@
+"""An office item's name as the first noun of a compound noun: "my *wine* list file", "the
+new *wine* list" name a file and a list, never the office's wine.
+
+In English the head of a compound noun is its last noun; the nouns before it only say what
+kind of one it is. An item name followed, inside the same noun phrase, by a noun the office
+does not know ("list") is such a modifier: the mention is read as a plain word, so no stage
+after the lexicon takes it for the thing. What the phrase then names is its head: another of
+the office's items ("file": the requester's file) or a thing the office does not have ("the
+wine list": nothing to fetch, asked or declined as any unknown thing would be).
+
+A word counts as a noun of the compound only where nothing else reads it: a dictionary noun
+that is no adverb or adjective ("the wine *today*", "take my file *home*" say when and where,
+"a pen *real* quick" how), no clause opener ("a radio *cause* ..."), no function word, no
+finite verb ("my stapler *works*"), no unit ("a scissors *pair*"), no word of the office (a
+name, a task word, a place), written in lower case and not after a pause or a sentence break.
+The dictionary's parts of speech are English, not the office's, so the rule holds for any
+office.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+
+_COMMON = english.words("common")
+# A unit after an item's name measures the item ("a scissors pair"): not a head of its own.
+_UNITS = english.words("portion_words")
+# Words that open a clause of their own ("a radio *cause* ..."), though also nouns.
+_OPENERS = english.words("reason_conjunctions") | english.words("clause_breaks")
+
+
+def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bool]) -> bool:
+    """Whether the word at ``end`` (right after an item's name) is a noun the name modifies:
+    the name is then the first part of a compound whose head comes later."""
+    if end >= len(tokens):
+        return False
+    t = tokens[end]
+    if t.opens or t.after_pause or tokens[end - 1].possessive:
+        return False
+    return compound_noun(t, known)
+
+
+def compound_noun(t: Token, known: Callable[[str], bool]) -> bool:
+    """A word that can only be a noun inside a noun phrase here (see the module's note)."""
+    word = t.word
+    if not t.text.isalpha() or not t.text[:1].islower() or t.corrected:
+        return False  # "won't": a contraction, no noun; "Tobin": a name
+    if word in _COMMON or word in _UNITS or word in _OPENERS or known(word):
+        return False
+    parts = language.lemmas(word)
+    describes = "ADV" in parts or "ADJ" in parts  # "real quick", "home", "back"
+    return "NOUN" in parts and not describes and not language.is_finite_verb(word)
