@@ -64,6 +64,7 @@ _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
+_REFUSING = frozenset({"no", "nah", "nope"})
 _BORROW = english.words("borrow_words")
 _DONE_VERBS = english.words("done_verbs")
 _DONE_MARKERS = tuple(tuple(p.split()) for p in english.entries("done_markers"))
@@ -219,7 +220,8 @@ class SpeechActs:
             if _starts(w, head):
                 rest = w[len(head) :]
                 return not rest or not self._imperative(rest)
-        return False
+        # "no forget it", "nah never mind": a refusal word before a withdrawal only stresses it
+        return len(w) > 1 and w[0] in _REFUSING and self.withdrawal(w[1:])
 
     def had_already(self, words: list[str]) -> bool:
         """ "oh actually Ida just brought me one", "someone else already did it", "thanks
