@@ -14,6 +14,7 @@ from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
+from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
@@ -45,6 +46,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("exclusion", pronoun_exclusion),
     ("statement", contrast),
     ("wish", wish),
+    ("wish", hope),
     ("thanks", thanks),
     ("condition", condition),
     ("negated", negated),
