@@ -15,6 +15,7 @@ def test_the_rules_in_priority_order() -> None:
         "exclusion",  # "not her camera" after one colleague was named
         "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",
+        "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
         "condition",
         "negated",

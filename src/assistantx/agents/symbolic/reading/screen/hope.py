@@ -9,9 +9,12 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
-from assistantx.core import english
+from assistantx.core import english, language
 
-_HOPES = english.words("hope_words")
+# the verb, by its lemma ("hope", "hoping"), and the adverb; never listed with the English
+# data, where no colleague's name may stand
+_HOPE = "hope"
+_HOPEFULLY = "hopefully"
 # what may stand before the hope itself ("I really do hope ...", "just hoping ...")
 _BEFORE_HOPE = english.words("hope_leads")
 # the assistant or the speaker: a hope with these in it may be a request in disguise
@@ -47,12 +50,16 @@ def _hoped(terms: Terms, piece: Piece) -> bool:
     n = 0
     while n < len(words) and words[n] in _BEFORE_HOPE:
         n += 1
-    if n >= len(words) or words[n] not in _HOPES:
+    if n >= len(words) or not _hoping(words[n]):
         return False
     if n == 0 and words[n] in terms.lex.name_words:
         return False  # the word opens the piece and is someone's name here
     hoped = words[n + 1 :]
     return hoped[:1] not in ([], ["to"]) and not set(hoped) & _ASKED_OR_FOR_ME
+
+
+def _hoping(word: str) -> bool:
+    return word == _HOPEFULLY or _HOPE in language.verb_lemmas(word)
 
 
 def _about_them(piece: Piece) -> bool:
