@@ -28,7 +28,9 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
+        "question",  # where a thing is kept ("where do we keep the clay?"), in words
         "question",
+        "question",  # the choices said with a question ("..., workshop store or dry store?")
         "statement",  # a problem reported after a question about a facility's state
         "statement",
         "statement",  # where an item is ("fyi the tape's in the cupboard")

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
@@ -16,6 +17,7 @@ from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
+from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
@@ -59,7 +61,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_doing),
     ("statement", doing_after),
     ("statement", own_need),
+    ("question", kept_where),
     ("question", question),
+    ("question", choices),
     ("statement", problem),
     ("statement", statement),
     ("statement", whereabouts),
