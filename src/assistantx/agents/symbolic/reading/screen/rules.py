@@ -8,6 +8,7 @@ from collections.abc import Callable
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
+from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
@@ -55,6 +56,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", unsafe),
     ("destructive", destructive),
     ("unplaced", unplaced),
+    ("unplaced", cut_off),
     ("statement", elliptical_reason),
     ("fact", fact),
     ("statement", facility_report),
