@@ -202,6 +202,12 @@ def _has_need_phrase(w: list[str]) -> bool:
     return any(_starts(w[n:], p) for n in range(len(w)) for p in NEED_PHRASES)
 
 
+def _perfect_after(words: list[str]) -> bool:
+    """A past participle just after "have" ("'ve lost", "have just misplaced"): the perfect,
+    not having a thing; "got" is read as having ("I've got one")."""
+    return any(language.is_past_verb(x) and x != "got" for x in words)
+
+
 def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
     return tuple(words[: len(phrase)]) == phrase
 
@@ -241,6 +247,8 @@ class SpeechActs:
         for n, x in enumerate(w):
             if not language.is_past_verb(x) and x not in _HAVE_NOW:
                 continue
+            if x in _HAVE_NOW - {"got"} and _perfect_after(w[n + 1 : n + 3]):
+                continue  # "I've lost mine": "have" of the perfect, its verb read next
             lemmas = language.verb_lemmas(x) or {"have"}
             if not lemmas & (self.lex.cue_words | _DONE_VERBS):
                 continue
