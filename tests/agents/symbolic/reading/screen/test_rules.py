@@ -21,6 +21,7 @@ def test_the_rules_in_priority_order() -> None:
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "destructive",
+        "unsupported",  # a send to an account outside ("to my personal gmail")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")

@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
@@ -55,6 +56,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("negated", negated),
     ("destructive", unsafe),
     ("destructive", destructive),
+    ("unsupported", outside_account),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     ("statement", elliptical_reason),
