@@ -26,6 +26,7 @@ _frame = frame_reader(conservation_lab, "nell")
         ("where do we keep clay, workshop or basement?", "dry store"),
         ("where's the modelling clay kept, the workshop store or the dry store?", "workshop"),
         ("where do we keep the clay?", "dry store"),
+        ("where's the clay for the casting trial kept - workshop store or dry store?", "dry"),
         ("where do we keep the Clay for the casting trial, workshop store or dry store?", "dry"),
         ("where do we keep the batteries, photo room or basement?", "at their desk"),
         ("where are the timesheets kept, records office or workshop?", "don't know"),

@@ -12,6 +12,8 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import language
 
 _OR = frozenset({"or"})
+# what stands between the question and its choices ("..., A or B?", "... - A or B?")
+_JOINING = frozenset({",", "-", "–", "—", ":"})
 
 
 def choices(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -27,8 +29,8 @@ def choices(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding
     before = [p for p in msg.pieces if p.end <= piece.start]
     if not before or before[-1].acts.question != "info":
         return None
-    if msg.text[before[-1].end : piece.start].strip() != ",":
-        return None  # only the choices said in the same sentence as the question
+    if msg.text[before[-1].end : piece.start].strip() not in _JOINING:
+        return None  # only the choices said right after the question, with its own mark
     return Finding("question", piece, "the choices offered with the question before it")
 
 
