@@ -26,6 +26,7 @@ _frame = frame_reader(conservation_lab, "nell")
         "fetch my sample tray from the walk-in. never mind, Otto is bringing it up",
         "fetch my sample tray please. forget it, Joss will bring it over later",
         "could you grab me a checklist? actually never mind, Bea's printing me one",
+        "charge me a battery please. actually forget it, Mina's already on it",
     ],
 )
 def test_withdrawn_with_someone_else_on_it_moves_nothing(text: str) -> None:

@@ -3,6 +3,7 @@ before it, and the reason told after it ("..., found one in my drawer")."""
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from assistantx.agents.symbolic.reading.screen.findings import Finding
@@ -63,12 +64,16 @@ def _done_by_now(piece: Piece) -> bool:
     )
 
 
+def _told(piece: Piece) -> bool:
+    acts = piece.acts
+    return not (piece.asks or acts.imperative or acts.question is not None)
+
+
 def _under_way(piece: Piece) -> bool:
     """ "Otto's bringing it up", "Joss will bring it over later": what someone is doing or
     will do, told not asked (a participle or "will" after its subject; the contracted "'s",
     "'ll" are lost with the apostrophe, so any word before it is taken as the subject)."""
-    acts = piece.acts
-    if piece.asks or acts.imperative or acts.question is not None:
+    if not _told(piece):
         return False
     words = piece.words
     return any(
@@ -79,7 +84,11 @@ def _under_way(piece: Piece) -> bool:
 def _someone_else_on_it(piece: Piece) -> bool:
     """A colleague (named first, or "he"/"she"/"they") said to be doing or about to do it."""
     named_first = any(m.kind == "person" and m.start == 0 for m in piece.lexed.mentions)
-    return (named_first or piece.words[:1] in (["he"], ["she"], ["they"])) and _under_way(piece)
+    words = piece.words
+    if not (named_first or words[:1] in (["he"], ["she"], ["they"])):
+        return False
+    # "Jun's already on it": seeing to it, said without a verb
+    return _under_way(piece) or (_told(piece) and ("on", "it") in itertools.pairwise(words))
 
 
 def _still_wanted(piece: Piece) -> bool:
