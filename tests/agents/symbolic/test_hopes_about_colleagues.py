@@ -22,6 +22,8 @@ _frame = frame_reader(conservation_lab, "nell")
         "hoping Joss finds his battery before the shoot",
         "so hope Bea's checklist turns up, she needs it today",
         "I do hope Rafi gets his phone fixed soon",
+        "I wish Otto would get his phone back, he's lost without it",
+        "wish Bea could find her checklist",
     ],
 )
 def test_a_hope_about_a_colleagues_thing_moves_nothing(text: str) -> None:

@@ -15,6 +15,11 @@ from assistantx.core import english, language
 # data, where no colleague's name may stand
 _HOPE = "hope"
 _HOPEFULLY = "hopefully"
+# "I wish Otto would get his phone back": a wish read as a hope where what is wished for is
+# someone's own ("his", "her", "their"); other wishes that name a colleague are requests of
+# them ("I wish Hal would sign the form")
+_WISH = "wish"
+_THEIR_OWN = frozenset({"his", "her", "hers", "their", "theirs"})
 # what may stand before the hope itself ("I really do hope ...", "just hoping ...")
 _BEFORE_HOPE = english.words("hope_leads")
 # the assistant or the speaker: a hope with these in it may be a request in disguise
@@ -50,11 +55,13 @@ def _hoped(terms: Terms, piece: Piece) -> bool:
     n = 0
     while n < len(words) and words[n] in _BEFORE_HOPE:
         n += 1
-    if n >= len(words) or not _hoping(words[n]):
+    if n >= len(words) or not (_hoping(words[n]) or words[n] == _WISH):
         return False
     if n == 0 and words[n] in terms.lex.name_words:
         return False  # the word opens the piece and is someone's name here
     hoped = words[n + 1 :]
+    if words[n] == _WISH and not set(hoped) & _THEIR_OWN:
+        return False  # "I wish Hal would sign the form": who is to do the work, asked
     return hoped[:1] not in ([], ["to"]) and not set(hoped) & _ASKED_OR_FOR_ME
 
 
