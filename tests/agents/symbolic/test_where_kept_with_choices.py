@@ -11,6 +11,7 @@ from __future__ import annotations
 import pytest
 
 from helpers.conservation_lab import conservation_lab
+from helpers.playschool import playschool
 from helpers.reading import frame_reader
 
 _frame = frame_reader(conservation_lab, "nell")
@@ -26,6 +27,8 @@ _frame = frame_reader(conservation_lab, "nell")
         ("where do we keep clay, workshop or basement?", "dry store"),
         ("where's the modelling clay kept, the workshop store or the dry store?", "workshop"),
         ("where do we keep the clay?", "dry store"),
+        ("clay for the casting trial - where do we keep it, workshop store or dry store?", "dry"),
+        ("where would I find the clay for the casting trial, workshop store or dry store?", "dry"),
         ("where's the clay for the casting trial kept - workshop store or dry store?", "dry"),
         ("where do we keep the Clay for the casting trial, workshop store or dry store?", "dry"),
         ("where do we keep the batteries, photo room or basement?", "at their desk"),
@@ -45,6 +48,7 @@ def test_where_a_thing_is_kept_is_answered_in_words(text: str, said: str) -> Non
     [
         "bring me some clay, workshop store or dry store",
         "can you bring me some clay? workshop store or dry store, whichever's nearer",
+        "bring me some clay - where do we keep it anyway, workshop store or dry store?",
     ],
 )
 def test_a_request_naming_places_to_fetch_from_is_still_done(text: str) -> None:
@@ -53,6 +57,20 @@ def test_a_request_naming_places_to_fetch_from_is_still_done(text: str) -> None:
     assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("transfer", "clay", "nell")]
 
 
+def test_choices_after_a_question_of_its_own_are_no_request() -> None:
+    frame = _frame("where's the clay? workshop store or dry store?")
+    assert frame.tasks == [], frame
+    assert "not sure what you need" not in (frame.question or ""), frame
+
+
 def test_where_a_colleague_is_still_asks_nothing_of_them() -> None:
     frame = _frame("where's Clay, workshop or basement?")
     assert frame.tasks == [], frame
+
+
+def test_the_thing_named_first_is_the_one_asked_about_in_another_office() -> None:
+    frame = frame_reader(playschool, "ada")(
+        "milk for the tea, where do we keep it, fridge or cupboard?"
+    )
+    assert frame.tasks == [] and frame.question is None, frame
+    assert frame.decline is not None and "green room fridge" in frame.decline, frame

@@ -13,7 +13,7 @@ from assistantx.core import language
 
 _OR = frozenset({"or"})
 # what stands between the question and its choices ("..., A or B?", "... - A or B?")
-_JOINING = frozenset({",", "-", "–", "—", ":"})
+_JOINING = frozenset({",", "-", "–", "—", ":", "?"})
 
 
 def choices(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:

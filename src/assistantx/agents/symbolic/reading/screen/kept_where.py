@@ -14,17 +14,18 @@ from assistantx.core import english
 from assistantx.core.office import Facility
 from assistantx.core.wording import is_are
 
-_WHERE = frozenset({"where", "wheres"})
 _KEEPING = english.words("kept_where_verbs")
+_PRONOUNS = frozenset({"it", "them", "they", "these", "those"})
 
 
 def kept_where(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    if piece.acts.question != "info":
+    if _topic(terms, msg, piece):
+        # "clay for the casting trial - where do we keep it?": the thing the question after
+        # it is about, named first; no errand of its own
+        return Finding("question", piece, "the thing a where-question after it asks about")
+    if not _asks_where_kept(piece):
         return None
-    words = content(piece.words)
-    if words[:1] not in (["where"], ["wheres"]) or not set(words) & _KEEPING:
-        return None
-    items = terms.named(piece.lexed, "item") or _kept_names(terms, piece)
+    items = _items(terms, piece) or _topic_items(terms, msg, piece)
     if len(items) != 1:
         return None
     return Finding(
@@ -33,6 +34,44 @@ def kept_where(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
         "a question of where a thing is kept, answered in words",
         message=_where_kept(terms, items[0]),
     )
+
+
+def _asks_where_kept(piece: Piece) -> bool:
+    words = content(piece.words)
+    return (
+        piece.acts.question == "info"
+        and words[:1] in (["where"], ["wheres"])
+        and bool(set(words) & _KEEPING)
+    )
+
+
+def _items(terms: Terms, piece: Piece) -> list[str]:
+    """The thing asked about: the first one named ("the milk for the tea": the milk; what
+    follows "for" is what it is for)."""
+    named = [m for m in piece.lexed.mentions if m.kind == "item" and len(m.ids) == 1]
+    if named:
+        return [min(named, key=lambda m: m.start).id]
+    return _kept_names(terms, piece)
+
+
+def _topic(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """A piece that only names one thing (no request, no question), followed by a question
+    of where "it" is kept."""
+    acts = piece.acts
+    if acts.request or acts.imperative or acts.question is not None or acts.statement:
+        return False
+    if len(_items(terms, piece)) != 1:
+        return False
+    later = [p for p in msg.pieces if p.start >= piece.end]
+    return bool(later) and _asks_where_kept(later[0]) and not _items(terms, later[0])
+
+
+def _topic_items(terms: Terms, msg: Message, piece: Piece) -> list[str]:
+    """The thing "it"/"them" stands for, named by the piece just before the question."""
+    if not set(piece.words) & _PRONOUNS:
+        return []
+    before = [p for p in msg.pieces if p.end <= piece.start]
+    return _items(terms, before[-1]) if before else []
 
 
 def _where_kept(terms: Terms, item: str) -> str:
