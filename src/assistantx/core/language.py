@@ -297,6 +297,14 @@ def is_past_participle(word: str) -> bool:
 
 
 @functools.cache
+def is_present_participle(word: str) -> bool:
+    """A verb's -ing form ("bringing", "printing"): after its subject, what is under way."""
+    return any(
+        word in getAllInflections(lemma, upos="VERB").get("VBG", ()) for lemma in verb_lemmas(word)
+    )
+
+
+@functools.cache
 def is_past_verb(word: str) -> bool:
     """A past form of a verb ("brought", "made", "done"): what is told as already done."""
     for lemma in verb_lemmas(word):

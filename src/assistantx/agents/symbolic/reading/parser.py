@@ -85,6 +85,7 @@ from assistantx.agents.symbolic.reading.parts import (
 )
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.screen import RequestScreen
+from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
@@ -389,6 +390,10 @@ class InstructionParser:
                 meant = self.parse(with_work(text, answer), requester)
                 if meant.understood:
                     text, frame = with_work(text, answer), meant
+                continue
+            whole = completed(text, frame.question or "", answer)
+            if whole is not None:  # "take my tray to" → "Joss": "take my tray to Joss"
+                text, frame = whole, self.parse(whole, requester)
                 continue
             part = asked_part(frame.question) if frame.question is not None else None
             if part is not None and not names_work(self.office, frame.question or "", answer):

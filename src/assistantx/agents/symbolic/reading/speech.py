@@ -64,6 +64,7 @@ _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
+_REFUSING = frozenset({"no", "nah", "nope"})
 _BORROW = english.words("borrow_words")
 _DONE_VERBS = english.words("done_verbs")
 _DONE_MARKERS = tuple(tuple(p.split()) for p in english.entries("done_markers"))
@@ -201,6 +202,12 @@ def _has_need_phrase(w: list[str]) -> bool:
     return any(_starts(w[n:], p) for n in range(len(w)) for p in NEED_PHRASES)
 
 
+def _perfect_after(words: list[str]) -> bool:
+    """A past participle just after "have" ("'ve lost", "have just misplaced"): the perfect,
+    not having a thing; "got" is read as having ("I've got one")."""
+    return any(language.is_past_verb(x) and x != "got" for x in words)
+
+
 def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
     return tuple(words[: len(phrase)]) == phrase
 
@@ -219,7 +226,8 @@ class SpeechActs:
             if _starts(w, head):
                 rest = w[len(head) :]
                 return not rest or not self._imperative(rest)
-        return False
+        # "no forget it", "nah never mind": a refusal word before a withdrawal only stresses it
+        return len(w) > 1 and w[0] in _REFUSING and self.withdrawal(w[1:])
 
     def had_already(self, words: list[str]) -> bool:
         """ "oh actually Ida just brought me one", "someone else already did it", "thanks
@@ -239,6 +247,8 @@ class SpeechActs:
         for n, x in enumerate(w):
             if not language.is_past_verb(x) and x not in _HAVE_NOW:
                 continue
+            if x in _HAVE_NOW - {"got"} and _perfect_after(w[n + 1 : n + 3]):
+                continue  # "I've lost mine": "have" of the perfect, its verb read next
             lemmas = language.verb_lemmas(x) or {"have"}
             if not lemmas & (self.lex.cue_words | _DONE_VERBS):
                 continue

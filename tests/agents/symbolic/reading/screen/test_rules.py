@@ -15,19 +15,24 @@ def test_the_rules_in_priority_order() -> None:
         "exclusion",  # "not her camera" after one colleague was named
         "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",
+        "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
         "condition",
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "destructive",
+        "unsupported",  # a send to an account outside ("to my personal gmail")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
+        "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
         "fact",
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
+        "question",  # where a thing is kept ("where do we keep the clay?"), in words
         "question",
+        "question",  # the choices said with a question ("..., workshop store or dry store?")
         "statement",  # a problem reported after a question about a facility's state
         "statement",
         "statement",  # where an item is ("fyi the tape's in the cupboard")

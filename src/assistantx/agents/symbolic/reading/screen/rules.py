@@ -5,8 +5,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
+from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
@@ -14,9 +16,12 @@ from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
+from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
+from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
@@ -45,19 +50,24 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("exclusion", pronoun_exclusion),
     ("statement", contrast),
     ("wish", wish),
+    ("wish", hope),
     ("thanks", thanks),
     ("condition", condition),
     ("negated", negated),
     ("destructive", unsafe),
     ("destructive", destructive),
+    ("unsupported", outside_account),
     ("unplaced", unplaced),
+    ("unplaced", cut_off),
     ("statement", elliptical_reason),
     ("fact", fact),
     ("statement", facility_report),
     ("statement", own_doing),
     ("statement", doing_after),
     ("statement", own_need),
+    ("question", kept_where),
     ("question", question),
+    ("question", choices),
     ("statement", problem),
     ("statement", statement),
     ("statement", whereabouts),

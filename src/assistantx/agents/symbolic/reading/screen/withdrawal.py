@@ -3,6 +3,9 @@ before it, and the reason told after it ("..., found one in my drawer")."""
 
 from __future__ import annotations
 
+import itertools
+import re
+
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -12,6 +15,9 @@ from assistantx.core import english, language
 _PRONOUNS = english.words("pronouns")
 # "..., Thandi's already run one off", "..., Ravi has just done it": done by now, a reason
 _DONE_BY_NOW = frozenset({"already", "just"})
+# "..., Joss will bring it", "..., she's gonna print one": what someone else will do
+_WILL = frozenset({"will", "gonna"})
+_CONTRACTED_WILL = re.compile(r"\w['’]ll\b", re.IGNORECASE)
 
 
 def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -19,7 +25,19 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if found is not None:
         msg.withdrawing = True
         return found
-    told = any(language.is_finite_verb(w) for w in piece.words) or _done_by_now(piece)
+    if (
+        msg.withdrawing
+        and _someone_else_on_it(piece)
+        and not any(p.acts.request for p in msg.pieces if p.start > piece.start)
+    ):
+        # "forget it, Joss will bring it over later": reads like an errand for Joss, but it
+        # is who else sees to it, the reason for the withdrawal
+        return Finding("withdrawn", piece, "the reason the request is withdrawn: someone's on it")
+    told = (
+        any(language.is_finite_verb(w) for w in piece.words)
+        or _done_by_now(piece)
+        or _under_way(piece)
+    )
     if (
         msg.withdrawing
         and told
@@ -44,6 +62,33 @@ def _done_by_now(piece: Piece) -> bool:
         w in _DONE_BY_NOW and n + 1 < len(words) and language.is_past_participle(words[n + 1])
         for n, w in enumerate(words)
     )
+
+
+def _told(piece: Piece) -> bool:
+    acts = piece.acts
+    return not (piece.asks or acts.imperative or acts.question is not None)
+
+
+def _under_way(piece: Piece) -> bool:
+    """ "Otto's bringing it up", "Joss will bring it over later": what someone is doing or
+    will do, told not asked (a participle or "will" after its subject; the contracted "'s",
+    "'ll" are lost with the apostrophe, so any word before it is taken as the subject)."""
+    if not _told(piece):
+        return False
+    words = piece.words
+    return any(
+        n > 0 and (w in _WILL or language.is_present_participle(w)) for n, w in enumerate(words)
+    ) or bool(_CONTRACTED_WILL.search(piece.text))
+
+
+def _someone_else_on_it(piece: Piece) -> bool:
+    """A colleague (named first, or "he"/"she"/"they") said to be doing or about to do it."""
+    named_first = any(m.kind == "person" and m.start == 0 for m in piece.lexed.mentions)
+    words = piece.words
+    if not (named_first or words[:1] in (["he"], ["she"], ["they"])):
+        return False
+    # "Jun's already on it": seeing to it, said without a verb
+    return _under_way(piece) or (_told(piece) and ("on", "it") in itertools.pairwise(words))
 
 
 def _still_wanted(piece: Piece) -> bool:
