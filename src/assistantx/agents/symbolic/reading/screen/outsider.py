@@ -18,6 +18,7 @@ facility of the office and is not the modifier of another noun ("the guest loung
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
@@ -129,6 +130,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
             continue  # "the courier guy": the next one is the head
         if nxt < len(tokens) and not _ends_phrase(tokens[nxt], breaks[nxt], nxt in office_at):
             continue  # "the guest lounge", "the visitor chair": it modifies another noun
+        if nxt < len(tokens) and not breaks[nxt].strip() and _item_at(mentions, nxt):
+            continue  # "my guest package": the office's item, named for whom it is about
         start = n
         while (
             start > 0
@@ -178,6 +181,10 @@ def _described_where(
     ):
         end += 1
     return end if end > k else at
+
+
+def _item_at(mentions: Sequence[Mention], at: int) -> bool:
+    return any(m.kind == "item" and m.start == at for m in mentions)
 
 
 def _outsider_noun(word: str) -> bool:
