@@ -207,6 +207,30 @@ def test_an_item_sent_out_counts_only_where_its_sender_was_told_the_destination(
     assert (s.sr, s.wrong_handover) == ((1.0, False) if right else (0.0, True))
 
 
+@pytest.mark.parametrize(
+    ("told", "destination", "right"),
+    [
+        # every word of the destination told, in another order and punctuation (round 21)
+        ("Dublin, attention Customer Relations", "Dublin customer relations", True),
+        ("Broadcast Centre, White City", "Broadcast Centre, White City", True),
+        ("Broadcast Centre", "Broadcast Centre, White City", False),  # half an address
+        ("Relations", "Dublin customer relations", False),
+    ],
+)
+def test_a_destination_is_told_when_all_its_words_are(
+    told: str, destination: str, right: bool
+) -> None:
+    episode = _episode(
+        _perfect(), outcome="done", milestones=[True, True], handovers=HANDED
+    ).model_copy(
+        update={
+            "sent_out": [SentOut(item="form:lee", told=FAX_WORDS.format(where=told))],
+            "destinations": [destination],
+        }
+    )
+    assert wrong_sends(episode) == ([] if right else ["form:lee"])
+
+
 def test_goal_unmet_or_not_done_fails() -> None:
     unmet = _episode(_perfect(), outcome="done", milestones=[False, True])
     assert not success(unmet) and score(unmet).cr == 0.5

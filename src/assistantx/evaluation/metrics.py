@@ -25,6 +25,7 @@ asked the person directly and a later wait timed out with no word from them.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
@@ -110,15 +111,18 @@ def wrong_handovers(episode: Episode) -> list[str]:
     return wrong
 
 
-def _words(text: str) -> str:
-    return " ".join(fold(text).split())  # one key for case, accents and curly apostrophes
+def _words(text: str) -> frozenset[str]:
+    # one key for case, accents, curly apostrophes and punctuation
+    return frozenset(re.findall(r"[^\W_]+(?:'[^\W_]+)?", fold(text)))
 
 
 def wrong_sends(episode: Episode) -> list[str]:
     """Items sent outside the office whose sender was not told where the requester wanted
-    them to go (their code's words name none of the task's destinations)."""
+    them to go: every word of one of the task's destinations must be in their code's words
+    ("Dublin customer relations" is told by "to Dublin, attention Customer Relations"; "to
+    Broadcast Centre" does not tell "Broadcast Centre, White City")."""
     wanted = [_words(d) for d in episode.destinations]
-    return [s.item for s in episode.sent_out if not any(w in _words(s.told) for w in wanted)]
+    return [s.item for s in episode.sent_out if not any(w <= _words(s.told) for w in wanted)]
 
 
 def success(episode: Episode) -> bool:
