@@ -20,7 +20,7 @@ from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both s
     postgres_cluster,
     postgres_url,
 )
-from helpers.xdist_groups import name_groups_in_ids
+from helpers.xdist_schedule import long_modules_first, name_groups_in_ids
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 # Under pytest-xdist (`make test` runs two workers, `--dist loadgroup`), the tests that share
@@ -44,8 +44,9 @@ def pytest_ignore_collect(collection_path: Path, config: pytest.Config) -> bool 
     return True if never_selects(config.getoption("markexpr"), marker) else None
 
 
-# A wrapper: the markers go on before any other hook (`-m` deselects by them), and the group
-# goes into the test's id after every other hook (xdist's own included; see `xdist_groups`).
+# A wrapper: the markers go on before any other hook (`-m` deselects by them); after every other
+# hook (xdist's own included), each group goes into its tests' ids and the modules with a long
+# test go first (see `helpers.xdist_schedule`).
 @pytest.hookimpl(wrapper=True, tryfirst=True)
 def pytest_collection_modifyitems(
     config: pytest.Config, items: list[pytest.Item]
@@ -68,6 +69,7 @@ def pytest_collection_modifyitems(
     result = yield
     if getattr(config.option, "loadgroup", False):  # set in an xdist worker of `--dist loadgroup`
         name_groups_in_ids(items)
+        items[:] = long_modules_first(items)
     return result
 
 

@@ -31,3 +31,21 @@ def name_groups_in_ids(items: list[pytest.Item]) -> None:
             continue
         # Parsed like any id, but its string form is the one given (with the suffix).
         item._id = coerce_node_id(f"{item.nodeid}@{group}")
+
+
+# The markers of the tests that start servers or processes, or localize on big maps: seconds
+# to a minute each, where most others take milliseconds.
+LONG_MARKERS = ("slow", "synapse", "browser", "llm_server", "postgres")
+
+
+def long_modules_first(items: list[pytest.Item]) -> list[pytest.Item]:
+    """The modules holding a long test first, each module's tests kept together and in order.
+
+    xdist hands the tests out in this order, a few at a time, to whichever worker is free; a
+    long test handed out last keeps one worker busy while the other has nothing left to do.
+    Whole modules move, so a module's fixtures are still built once per worker.
+    """
+    long_modules = {
+        item.path for item in items if any(item.get_closest_marker(m) for m in LONG_MARKERS)
+    }
+    return sorted(items, key=lambda item: item.path not in long_modules)
