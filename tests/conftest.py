@@ -66,6 +66,9 @@ def pytest_collection_modifyitems(
         shared = item.get_closest_marker("shares_worker")
         if shared is not None:
             item.add_marker(pytest.mark.xdist_group(shared.args[0]))
+        elif item.get_closest_marker("browser") is not None:
+            # each browser module launches its own Playwright and Chromium (a module fixture)
+            item.add_marker(pytest.mark.xdist_group(f"browser-{item.path.stem}"))
     result = yield
     if getattr(config.option, "loadgroup", False):  # set in an xdist worker of `--dist loadgroup`
         name_groups_in_ids(items)
