@@ -1,4 +1,5 @@
-"""The ``xdist_group`` of a test, written into its id where ``--dist loadgroup`` looks for it.
+"""How `--dist loadgroup` hands the tests out: each test's ``xdist_group`` written into its id,
+where xdist looks for it, and the modules with a long test first.
 
 xdist's controller never sees a test's markers, only the ids its workers collected: it groups
 the tests whose id ends in the same ``@name``. xdist 3.8 appends that suffix by assigning
@@ -25,6 +26,7 @@ def group_of(item: pytest.Item) -> str | None:
 
 
 def name_groups_in_ids(items: list[pytest.Item]) -> None:
+    """Appends ``@group`` to the id of each grouped test that does not end in it yet."""
     for item in items:
         group = group_of(item)
         if group is None or item.nodeid.endswith(f"@{group}"):
