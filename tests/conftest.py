@@ -6,7 +6,7 @@ import gc
 import os
 import socket
 import sys
-from collections.abc import Iterator
+from collections.abc import Generator, Iterator
 from pathlib import Path
 
 import pytest
@@ -21,6 +21,7 @@ from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both s
     postgres_cluster,
     postgres_url,
 )
+from helpers.xdist_schedule import long_modules_first, name_groups_in_ids
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 # Under pytest-xdist (`make test` runs two workers, `--dist loadgroup`), the tests that share
@@ -44,14 +45,19 @@ def pytest_ignore_collect(collection_path: Path, config: pytest.Config) -> bool 
     return True if never_selects(config.getoption("markexpr"), marker) else None
 
 
-@pytest.hookimpl(tryfirst=True)  # before `-m` deselects by the markers added here
-def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+# A wrapper: the markers go on before any other hook (`-m` deselects by them); after every other
+# hook (xdist's own included), each group goes into its tests' ids and the modules with a long
+# test go first (see `helpers.xdist_schedule`).
+@pytest.hookimpl(wrapper=True, tryfirst=True)
+def pytest_collection_modifyitems(
+    config: pytest.Config, items: list[pytest.Item]
+) -> Generator[None, None, None]:
     for item in items:
         folder = item.path.relative_to(_TESTS).parts[0] if item.path.is_relative_to(_TESTS) else ""
         if folder in _FOLDER_MARKERS:
             item.add_marker(_FOLDER_MARKERS[folder])
     if not config.pluginmanager.hasplugin("xdist"):
-        return
+        return (yield)
     for item in items:
         for marker in _ONE_WORKER_EACH:
             if item.get_closest_marker(marker) is not None:
@@ -61,6 +67,14 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         shared = item.get_closest_marker("shares_worker")
         if shared is not None:
             item.add_marker(pytest.mark.xdist_group(shared.args[0]))
+        elif item.get_closest_marker("browser") is not None:
+            # each browser module launches its own Playwright and Chromium (a module fixture)
+            item.add_marker(pytest.mark.xdist_group(f"browser-{item.path.stem}"))
+    result = yield
+    if getattr(config.option, "loadgroup", False):  # set in an xdist worker of `--dist loadgroup`
+        name_groups_in_ids(items)
+        items[:] = long_modules_first(items)
+    return result
 
 
 # What collection built (every test module, its imports, the items and their parameters)

@@ -8,6 +8,7 @@ images in ``docs/screenshots/`` are rewritten too.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
@@ -111,15 +112,30 @@ class Server:
         return httpx.request(method, f"{self.url}{path}", headers=headers, timeout=10, **kwargs)  # type: ignore[arg-type]
 
 
-@pytest.fixture
-def server(tmp_path: Path) -> Iterator[Server]:
-    (tmp_path / "data").mkdir()
-    srv = Server(tmp_path / "data", tmp_path / "results")
+@contextlib.contextmanager
+def started_server(root: Path, **env: str) -> Iterator[Server]:
+    """A server on its own data and results folders under ``root``, stopped at the end."""
+    (root / "data").mkdir()
+    srv = Server(root / "data", root / "results", env=env)
     srv.start()
     try:
         yield srv
     finally:
         srv.stop()
+
+
+@pytest.fixture
+def server(tmp_path: Path) -> Iterator[Server]:
+    with started_server(tmp_path) as srv:
+        yield srv
+
+
+@pytest.fixture(scope="module")
+def module_server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Server]:
+    """One server for the tests of a module that only look: they submit nothing and change
+    nobody, so a start (2-3 CPU-s, seconds of wall time) serves them all."""
+    with started_server(tmp_path_factory.mktemp("module-server")) as srv:
+        yield srv
 
 
 @pytest.fixture(scope="module")
@@ -144,15 +160,29 @@ def chromium(playwright: Playwright) -> Iterator[Browser]:
         browser.close()
 
 
-@pytest.fixture
-def browser(chromium: Browser, server: Server) -> Iterator[Browser]:
-    # Depends on the server so that the test's pages close first: an open event stream would
-    # hold up the server's graceful shutdown.
+@contextlib.contextmanager
+def closing_pages(chromium: Browser) -> Iterator[Browser]:
     try:
         yield chromium
     finally:
         for context in chromium.contexts:
             context.close()
+
+
+@pytest.fixture
+def browser(chromium: Browser, server: Server) -> Iterator[Browser]:
+    # Depends on the server so that the test's pages close first: an open event stream would
+    # hold up the server's graceful shutdown.
+    with closing_pages(chromium) as browser:
+        yield browser
+
+
+@pytest.fixture
+def pages(chromium: Browser) -> Iterator[Browser]:
+    """``browser`` for a test on a server that outlives it (``module_server``): the test's
+    pages are closed at its end all the same, long before that server stops."""
+    with closing_pages(chromium) as browser:
+        yield browser
 
 
 def new_page(browser: Browser, width: int = 1366, height: int = 900) -> tuple[Page, list[str]]:

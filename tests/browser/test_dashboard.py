@@ -162,9 +162,11 @@ def test_the_page_reconnects_after_the_server_restarts(browser: Browser, server:
     ).to_be_visible(timeout=10_000)
 
 
-def test_a_wrong_token_is_refused_with_a_clear_message(browser: Browser, server: Server) -> None:
-    page = browser.new_page()
-    page.goto(server.url + "/")
+def test_a_wrong_token_is_refused_with_a_clear_message(
+    pages: Browser, module_server: Server
+) -> None:
+    page = pages.new_page()
+    page.goto(module_server.url + "/")
     give_token(page, "not-the-right-token-at-all")
     expect(page.locator("#banner")).to_contain_text("token was refused")
     expect(page.locator("#token-dialog")).to_be_visible()
@@ -173,8 +175,8 @@ def test_a_wrong_token_is_refused_with_a_clear_message(browser: Browser, server:
     expect(page.locator("#banner")).to_be_hidden()
 
 
-def test_the_page_states_the_speedup(browser: Browser, server: Server) -> None:
-    page = open_dashboard(browser, server)
+def test_the_page_states_the_speedup(pages: Browser, module_server: Server) -> None:
+    page = open_dashboard(pages, module_server)
     label = page.locator("#speedup")
     expect(label).to_be_visible()
     expect(label).to_contain_text("50× faster")

@@ -11,11 +11,20 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Iterator
+from dataclasses import dataclass
 
 import pytest
 from playwright.sync_api import Browser, Page, expect
 
-from browser.conftest import LEE, OPERATOR, Server, new_page, write_sample_evaluation
+from browser.conftest import (
+    LEE,
+    OPERATOR,
+    Server,
+    new_page,
+    started_server,
+    write_sample_evaluation,
+)
 from browser.test_dashboard import shoot
 from helpers.eventually import eventually_sync
 
@@ -56,24 +65,45 @@ def _rects_overlap(a: list[float], b: list[float]) -> bool:
     return a[0] < b[0] + b[2] and b[0] < a[0] + a[2] and a[1] < b[1] + b[3] and b[1] < a[1] + a[3]
 
 
-def _running_instruction(page: Page, server: Server) -> None:
-    """An instruction with a few steps in the trace (the test plays nobody: it waits)."""
-    created = server.api(
-        "POST", "/v1/instructions", json={"requester": "lee", "text": "Bring me a stapler"}
-    )
-    assert created.status_code == 202, created.text
-    ins = created.json()["id"]
+@dataclass(frozen=True)
+class Running:
+    server: Server
+    instruction: str
 
-    def steps() -> int:
-        trace = server.api("GET", f"/v1/instructions/{ins}").json()["trace"]
-        return 0 if trace is None else len(trace["steps"])  # no trace while it waits to start
 
-    eventually_sync(
-        lambda: steps() >= 1,
-        what="the instruction's first step",
-        timeout_s=30,
-        interval_s=0.2,
-    )
+@pytest.fixture(scope="module")
+def running(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Running]:
+    """One server with an instruction that has steps in its trace (the tests play nobody: it
+    waits on them), for the three widths: each looks at it, none changes it."""
+    with started_server(tmp_path_factory.mktemp("running")) as server:
+        created = server.api(
+            "POST", "/v1/instructions", json={"requester": "lee", "text": "Bring me a stapler"}
+        )
+        assert created.status_code == 202, created.text
+        ins = created.json()["id"]
+
+        def steps() -> int:
+            trace = server.api("GET", f"/v1/instructions/{ins}").json()["trace"]
+            return 0 if trace is None else len(trace["steps"])  # none while it waits to start
+
+        eventually_sync(
+            lambda: steps() >= 1,
+            what="the instruction's first step",
+            timeout_s=30,
+            interval_s=0.2,
+        )
+        yield Running(server, ins)
+
+
+@pytest.fixture(scope="module")
+def evaluated(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Server]:
+    """One server with the sample evaluation in its results folder, for both widths."""
+    with started_server(tmp_path_factory.mktemp("evaluated")) as server:
+        write_sample_evaluation(server.results_dir)
+        yield server
+
+
+def _show_the_instruction(page: Page, ins: str) -> None:
     page.click(f'#instruction-list button[data-id="{ins}"]')
     expect(page.locator("#timeline .step").first).to_be_visible(timeout=10_000)
 
@@ -98,9 +128,9 @@ def _check_common_layout(page: Page, width: int) -> dict[str, Box]:
 
 
 @pytest.mark.parametrize("width", [390, 820, 1280])
-def test_layout_at_three_widths(browser: Browser, server: Server, width: int) -> None:
-    page = _open(browser, server, width)
-    _running_instruction(page, server)
+def test_layout_at_three_widths(pages: Browser, running: Running, width: int) -> None:
+    page = _open(pages, running.server, width)
+    _show_the_instruction(page, running.instruction)
     boxes = _check_common_layout(page, width)
     view = HEIGHTS[width]
     if width == 390:
@@ -143,9 +173,8 @@ def test_the_as_box_is_the_tokens_person_or_asks(browser: Browser, server: Serve
 
 
 @pytest.mark.parametrize("width", [390, 1280])
-def test_evaluation_values_stay_on_one_line(browser: Browser, server: Server, width: int) -> None:
-    write_sample_evaluation(server.results_dir)
-    page = _open(browser, server, width)
+def test_evaluation_values_stay_on_one_line(pages: Browser, evaluated: Server, width: int) -> None:
+    page = _open(pages, evaluated, width)
     page.click("#tab-evaluation")
     cell = page.locator("#evaluation td", has_text="100.0 ± 0.0").first
     expect(cell).to_be_visible(timeout=10_000)

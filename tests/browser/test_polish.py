@@ -49,8 +49,8 @@ def _overlap(a: list[float], b: list[float]) -> bool:
     return a[0] < b[0] + b[2] and b[0] < a[0] + a[2] and a[1] < b[1] + b[3] and b[1] < a[1] + a[3]
 
 
-def test_map_labels_do_not_overlap_on_a_phone(browser: Browser, server: Server) -> None:
-    page = open_dashboard(browser, server, width=390)
+def test_map_labels_do_not_overlap_on_a_phone(pages: Browser, module_server: Server) -> None:
+    page = open_dashboard(pages, module_server, width=390)
     page.locator("#map").scroll_into_view_if_needed()
     labels = json.loads(page.get_attribute("#map", "data-labels") or "[]")
     width = page.evaluate("document.getElementById('map').clientWidth")
@@ -63,8 +63,8 @@ def test_map_labels_do_not_overlap_on_a_phone(browser: Browser, server: Server) 
     shoot(page, "dashboard-phone")
 
 
-def test_availability_toggles_look_pressable(browser: Browser, server: Server) -> None:
-    page = open_dashboard(browser, server)
+def test_availability_toggles_look_pressable(pages: Browser, module_server: Server) -> None:
+    page = open_dashboard(pages, module_server)
     toggle = page.locator('#people-table tr[data-person="gao"] button')
     style = toggle.evaluate(
         """el => {

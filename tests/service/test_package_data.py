@@ -12,8 +12,9 @@ from pathlib import Path
 
 import pytest
 
-# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`.
-pytestmark = pytest.mark.slow
+# Starts processes (a server, the CLI) or localizes on big maps: not in `make test-fast`. Both
+# tests read the one wheel the module builds (pip, 6-7 s): on one worker it is built once.
+pytestmark = [pytest.mark.slow, pytest.mark.shares_worker("wheel")]
 
 ROOT = Path(__file__).resolve().parents[2]
 CANONICAL = ["dataset/office.yaml", "maps/office.yaml", "maps/office.pgm"]
