@@ -6,12 +6,15 @@ must be said as it is (singular or plural); the clipped word is the start of the
 word, four letters or more and at least two short of it. Every such form is added to the
 lexicon's item names at build time, unless it is already a name of the office or two items'
 names clip to the same form (then neither gets it: which was meant is asked, as for any word
-the office does not know).
+the office does not know). A clip that is the first word's own verb ("weigh" of "weighing
+scales") is no clip: "need to weigh the salt" is the speaker's doing.
 """
 
 from __future__ import annotations
 
 from collections.abc import Collection, Iterable
+
+from assistantx.core import language
 
 _SHORTEST = 4
 _SHORT_BY = 2
@@ -26,6 +29,8 @@ def clipped_phrases(names: Iterable[tuple[str, str]], taken: Collection[str]) ->
         if not rest or not first.isalpha():
             continue
         for end in range(_SHORTEST, len(first) - _SHORT_BY + 1):
+            if first in language.verb_forms(first[:end]):
+                continue  # "weigh" of "weighing scales" is the verb itself, no clip
             found.setdefault(" ".join([first[:end], *rest]), set()).add(item)
     return {
         form: next(iter(items))
