@@ -27,6 +27,9 @@ _frame = frame_reader(conservation_lab, "nell")
         "fetch my sample tray please. forget it, Joss will bring it over later",
         "could you grab me a checklist? actually never mind, Bea's printing me one",
         "charge me a battery please. actually forget it, Mina's already on it",
+        # "wait" before a withdrawal only stresses it (blind round 24's default office)
+        "bring me a battery. oh wait never mind, Joss just gave me one",
+        "can you get me a battery? wait, never mind",
     ],
 )
 def test_withdrawn_with_someone_else_on_it_moves_nothing(text: str) -> None:
@@ -40,6 +43,7 @@ def test_withdrawn_with_someone_else_on_it_moves_nothing(text: str) -> None:
     [
         "bring me a battery, Joss's got a spare on his desk",
         "bring me a battery please. Joss has a spare on his desk",
+        "bring me a battery please, wait for me at my desk",
     ],
 )
 def test_who_has_one_without_a_withdrawal_is_still_done(text: str) -> None:

@@ -226,8 +226,9 @@ class SpeechActs:
             if _starts(w, head):
                 rest = w[len(head) :]
                 return not rest or not self._imperative(rest)
-        # "no forget it", "nah never mind": a refusal word before a withdrawal only stresses it
-        return len(w) > 1 and w[0] in _REFUSING and self.withdrawal(w[1:])
+        # "no forget it", "nah never mind", "(oh) wait never mind": a refusal word or a "wait"
+        # before a withdrawal only stresses it ("wait for me" withdraws nothing)
+        return len(w) > 1 and w[0] in _REFUSING | {"wait"} and self.withdrawal(w[1:])
 
     def had_already(self, words: list[str]) -> bool:
         """ "oh actually Ida just brought me one", "someone else already did it", "thanks
