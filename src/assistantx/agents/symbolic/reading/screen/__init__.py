@@ -40,7 +40,9 @@ outsider        a recipient who is nobody of the office ("for the man at the    
                                                                                     bring it to
                                                                                     you?"
 unsupported     a service the office does not offer ("scan my contract",            declines
-                "make me a cup of tea")
+                "make me a cup of tea"), a send to an outside account ("to my
+                personal gmail"), a request behind an owner's back ("borrow
+                Zhang's stapler without telling him")
 ==============  ==================================================================  ==========
 
 The speech acts (wish, thanks, question, statement) are read by ``speech``: only a request moves the

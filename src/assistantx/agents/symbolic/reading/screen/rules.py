@@ -8,6 +8,7 @@ from collections.abc import Callable
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
+from assistantx.agents.symbolic.reading.screen.covert import covert
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
@@ -57,6 +58,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", unsafe),
     ("destructive", destructive),
     ("unsupported", outside_account),
+    ("unsupported", covert),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     ("statement", elliptical_reason),
