@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 from assistantx.core import english, language, task_kinds
-from assistantx.core.office import Office
+from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import FILE_KIND
 from assistantx.memory.names import normalize
 
@@ -211,9 +211,12 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
                 continue
             if op.input is not None and op.shape(office) != other.shape(office):
                 continue  # "print a copy of my file": the copier's product, not its run
+            made = _product_names(office, other)
             for verb in (f for w in other.request_phrases for f in word_forms(normalize(w))):
                 if f" {verb} " not in haystack:
                     continue  # both patterns need the verb as a word: no regex to build
+                if verb in made:
+                    continue  # "print labels": "labels" is the label run's product, no verb
                 for name in names:
                     # the verb may be gone (replaced by an earlier name), and both patterns
                     # need the name too: test first, as there are more patterns than re's
@@ -224,6 +227,15 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
                     haystack = re.sub(rf" {re.escape(verb)} (?={_BETWEEN}{noun} )", " | ", haystack)
                     haystack = re.sub(rf" ({noun}) {re.escape(verb)} ", r" \1 | ", haystack)
     return haystack
+
+
+def _product_names(office: Office, op: Operation) -> frozenset[str]:
+    """The names of what ``op`` makes ("labels", "label"), as the haystack spells them."""
+    if op.product is None:
+        return frozenset()
+    product = office.item_type(op.product)
+    names = {normalize(n) for n in (product.name, *product.synonyms)}
+    return frozenset(form for n in names if n for form in (n, n + "s", n + "es"))
 
 
 def possessor(office: Office, text: str, *, reader: str) -> str | None:
