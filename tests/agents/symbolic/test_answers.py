@@ -24,6 +24,11 @@ from assistantx.agents.symbolic.answers import says_not_known, stance
         ("unfortunately not today", "no"),
         ("what do you mean?", "unclear"),
         ("", "unclear"),
+        # a name with a diacritic is one word: "Noémie" holds no "no" (blind round 24: an
+        # owner's yes naming the keeper was read as a no and the consent guard refused it)
+        ("Yes, it's in the key safe: Noémie can take it out for the robot.", "yes"),
+        ("Sure, ask Nöel", "yes"),
+        ("No, Noémie has it", "no"),
     ],
 )
 def test_stance(text: str, expected: str) -> None:

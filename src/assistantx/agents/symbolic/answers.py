@@ -11,6 +11,8 @@ from __future__ import annotations
 import re
 from typing import Literal
 
+from assistantx.core.language import fold
+
 Stance = Literal["yes", "no", "unclear"]
 
 _POSITIVE_PHRASES = (
@@ -35,7 +37,9 @@ _POSITIVE = re.compile(
 
 
 def _clean(text: str) -> str:
-    text = text.lower().replace("’", "'").replace("'", "")
+    # folded first: "Noémie" is one word "noemie", never "no" and "mie" (a yes naming her
+    # was read as a no, and the consent guard refused the owner's own yes)
+    text = fold(text).replace("'", "")
     return re.sub(r"\s+", " ", re.sub(r"[^a-z0-9 ]+", " ", text)).strip()
 
 
