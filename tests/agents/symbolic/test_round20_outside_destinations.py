@@ -37,6 +37,12 @@ def _sends(instruction: str) -> list[str | None]:
             "the BBC, Media City, Salford",
         ),
         ("please courier my tape to Arqiva in Winchester", "Arqiva in Winchester"),
+        # who it is for there (round 21: "to Dublin, attention Customer Relations")
+        (
+            "courier my tape to Dublin, attention Customer Relations",
+            "Dublin, attention Customer Relations",
+        ),
+        ("courier my tape to Ofcom, FAO Licensing please", "Ofcom, FAO Licensing"),
         ("can you send my tape off to the lab, the Bristol one", "the Bristol lab"),
         ("courier my tape to the lab, the one in Bristol please", "the lab in Bristol"),
         # the clause after the address is the next part, the address stays whole

@@ -192,6 +192,9 @@ def _address_tail(
     while k < stop and (k == end or not _ends(gaps[k])) and tokens[k].word not in _END_WORDS:
         k += 1
     part = tokens[end:k]
+    # "Dublin, attention Customer Relations", "FAO the Registrar": who it is for there
+    while part and part[0].word in _ATTENTION:
+        part = part[1:]
     if not part or len(part) > _TAIL_WORDS or any(n in names for n in range(end, k)):
         return end
     if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
@@ -199,6 +202,10 @@ def _address_tail(
     if all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part):
         return k
     return end
+
+
+# The words that open an address line naming who it is for ("attention Customer Relations").
+_ATTENTION = frozenset({"attention", "attn", "fao", "att", "the"})
 
 
 # Small words a place's proper name may hold between its capitalised words ("the Bank of
