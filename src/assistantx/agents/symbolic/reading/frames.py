@@ -30,6 +30,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
     asks_someone_to_work,
     hands_across,
@@ -121,6 +122,7 @@ class FrameReader:
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
+            made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             if found is not None and found[1] is None:
                 made = [self._not_mine(t, requester) for t in made]
             # "print my log. I need the spreadsheet for the meeting": the item a task already

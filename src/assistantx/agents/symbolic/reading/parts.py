@@ -30,6 +30,7 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.unread_compounds import unread_compound
 from assistantx.core import language
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
@@ -81,7 +82,8 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if left_out is not None:
         return left_out
     phrase = (
-        _unknown_destination(readings, destinations)
+        unread_compound(office, readings.mentions, [t.text for t in readings.tokens])
+        or _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
         or _service_left_out(office, readings, frame)
     )

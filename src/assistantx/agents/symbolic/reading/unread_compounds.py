@@ -1,0 +1,72 @@
+"""A noun phrase whose head is a word of an office item's longer name, read as nothing.
+
+"get Maren's vet notes forwarded to me", where the office's file is the "session notes", or
+"fwd my ride briefing to Ulla", where it is the "briefing pack": the phrase says a thing of
+the office in words the office does not list, so no mention of the item comes out of the
+lexicon and no task carries it. In a request of two parts the other part is still read, and
+without this the unread part vanishes while "Done" is reported for the rest.
+
+The phrase is found from what opens it: a possessive ("my", "Maren's") or an article,
+followed only by plain words up to its head; the head must be a word of a name of two words
+or more of the office's electronic file (so "my lunch", "the way" never count), and no item
+of the office may follow it in the phrase ("my wine list file" is the file). The
+phrase is then quoted back to the requester as a part not understood, never guessed.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.core import language
+from assistantx.core.office import Office
+from assistantx.memory.names import normalize
+
+_ARTICLES = frozenset({"the", "a", "an", "this", "that"})
+_LONGEST = 4  # plain words in the phrase after its opener
+
+
+def name_words(office: Office) -> frozenset[str]:
+    """The words of the names of two words or more of the office's electronic files
+    ("notes", "briefing"): what moves for them is a file, never a thing."""
+    return frozenset(
+        w
+        for t in office.item_types
+        if t.kind == "electronic"
+        for name in (t.name, *t.synonyms)
+        for words in [normalize(name).split()]
+        if len(words) > 1
+        for w in words
+    )
+
+
+def unread_compound(
+    office: Office, mentions: Sequence[Mention], texts: Sequence[str]
+) -> str | None:
+    """The words of the first such phrase (opener kept), or None. ``texts``: each token's
+    text as written (an article is no mention of its own)."""
+    words = name_words(office)
+    ends = {m.end: m for m in mentions}
+    for n, first in enumerate(mentions):
+        if first.kind != "word" or first.start < 1:
+            continue
+        opener = ends.get(first.start)
+        if opener is not None and opener.kind in ("self", "person") and opener.possessive:
+            begin = opener.start
+        elif opener is None and texts[first.start - 1].lower() in _ARTICLES:
+            begin = first.start - 1
+        else:
+            continue
+        run = [first]
+        for m in mentions[n + 1 : n + _LONGEST]:
+            if m.kind != "word" or m.start != run[-1].end:
+                break
+            run.append(m)
+        # the head is the last plain word that is such a noun ("my ride briefing to ...")
+        heads = [k for k, w in enumerate(run) if w.ids[0] in words and language.is_noun(w.ids[0])]
+        after = next((m for m in mentions if heads and m.start == run[heads[-1]].end), None)
+        if after is not None and after.kind == "item":
+            continue  # "my wine list file": the item after it is the phrase's head
+        if heads:
+            return " ".join(texts[begin : run[heads[-1]].end])
+    return None
