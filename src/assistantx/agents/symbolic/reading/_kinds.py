@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.made_from import input_of_product
 from assistantx.agents.symbolic.reading.stated_source import says_has_some
 from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.core import english, language, task_kinds
@@ -490,6 +491,15 @@ class TaskReader:
             dropped = personal.pop()
             physical = [m for m in physical if m is not dropped]
         doc: Mention | None = personal[0] if personal else None
+        if doc is None and "copy" in cues:
+            # "get a spare key cut for my car": what the product is made from, unsaid
+            made_from = input_of_product(
+                self.office, clause.objects(), clause.mentions, self.copy_ops, requester
+            )
+            if made_from is not None:
+                doc, own = made_from
+                if own:
+                    roles.owners[-1] = requester
         refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
         if doc is None and refers and previous is not None and previous.item is not None:
             if self.kinds[previous.item] == "personal":  # "... and get Zhang to sign it"

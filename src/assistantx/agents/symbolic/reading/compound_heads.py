@@ -29,6 +29,14 @@ _COMMON = english.words("common")
 _UNITS = english.words("portion_words")
 # Words that open a clause of their own ("a radio *cause* ..."), though also nouns.
 _OPENERS = english.words("reason_conjunctions") | english.words("clause_breaks")
+# "a stopwatch *i* can borrow": a pronoun starts a clause of its own (the dictionary lists
+# the letter "i" as a noun).
+_PRONOUNS = (
+    english.words("self_words")
+    | english.words("subject_pronouns")
+    | english.words("object_pronouns")
+    | english.words("pronouns")
+)
 
 
 def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bool]) -> bool:
@@ -39,7 +47,21 @@ def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bo
     t = tokens[end]
     if t.opens or t.after_pause or tokens[end - 1].possessive:
         return False
+    if _says_how_it_is(tokens, end):
+        return False
     return compound_noun(t, known)
+
+
+def _says_how_it_is(tokens: Sequence[Token], end: int) -> bool:
+    """ "a stopwatch *going* spare", "my drill *sitting* idle": a verb's -ing form followed
+    by a word that describes (or by nothing) says what the item is doing, no compound's head;
+    "wine *tasting* notes" (a noun after it) stays a compound."""
+    if not language.is_present_participle(tokens[end].word):
+        return False
+    if end + 1 >= len(tokens) or tokens[end + 1].after_pause:
+        return True
+    parts = language.lemmas(tokens[end + 1].word)
+    return "ADJ" in parts or "ADV" in parts
 
 
 def compound_noun(t: Token, known: Callable[[str], bool]) -> bool:
@@ -47,7 +69,7 @@ def compound_noun(t: Token, known: Callable[[str], bool]) -> bool:
     word = t.word
     if not t.text.isalpha() or not t.text[:1].islower() or t.corrected:
         return False  # "won't": a contraction, no noun; "Tobin": a name
-    if word in _COMMON or word in _UNITS or word in _OPENERS or known(word):
+    if word in _COMMON or word in _UNITS or word in _OPENERS or word in _PRONOUNS or known(word):
         return False
     parts = language.lemmas(word)
     describes = "ADV" in parts or "ADJ" in parts  # "real quick", "home", "back"

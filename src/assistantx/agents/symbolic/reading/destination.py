@@ -139,9 +139,14 @@ def find_outside(
             if end > start and words[end] == "to" and words[end + 1 : end + 2] == ["be"]:
                 break  # "to Parkside Laundry to be laundered": the work, not the place
             end += 1
-        lead = gaps[start].strip()  # "+44 ...", "#3 ...": a sign before the first word
+        # "to the customer please, Mrs Patel at 14 Elm Road": the address said after it is
+        # the place; the destination spans both, so neither is read as someone to find
+        named = _address_after(tokens, gaps, end, stop) if which is None else None
+        first = start if named is None else named[0]
+        end = end if named is None else named[1]
+        lead = gaps[first].strip() if named is None else ""  # "+44 ...", "#3 ...": a sign
         said = "".join(
-            (gaps[k] if k > start else lead) + tokens[k].text for k in range(start, end)
+            (gaps[k] if k > first else lead) + tokens[k].text for k in range(first, end)
         ).strip()
         said = which or _bracketed(said.strip("\"'"))
         phrase = said if said and len(said) <= _LONGEST and not unclear else None
@@ -206,6 +211,33 @@ def _address_tail(
 
 # The words that open an address line naming who it is for ("attention Customer Relations").
 _ATTENTION = frozenset({"attention", "attn", "fao", "att", "the"})
+
+
+def _address_after(
+    tokens: Sequence[Token], gaps: Sequence[str], end: int, stop: int
+) -> tuple[int, int] | None:
+    """ "post it to the customer please, *Mrs Patel at 14 Elm Road*": after the destination
+    (and a "please"), a comma, then to the clause's end an address said in full (a name "at"
+    a house number, all capitalised words and numbers), which names the place the words
+    before only described. None when anything else follows."""
+    k = end
+    while k < stop and tokens[k].word in ("please", "pls"):
+        k += 1
+    if k >= stop or gaps[k].strip() != ",":
+        return None
+    last = k
+    while last < stop and (last == k or not _ends(gaps[last])):
+        last += 1
+    part = tokens[k:last]
+    if last != stop or len(part) < 3 or not part[0].text[:1].isupper():
+        return None
+    at = next((n for n, t in enumerate(part) if t.word == "at"), None)
+    if at is None or at == 0 or not any(c.isdigit() for c in part[at + 1].text):
+        return None
+    spelled = [t for n, t in enumerate(part) if n != at]
+    if not all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in spelled):
+        return None
+    return k, last
 
 
 # Small words a place's proper name may hold between its capitalised words ("the Bank of

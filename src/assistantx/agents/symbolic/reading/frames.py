@@ -30,6 +30,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
     asks_someone_to_work,
@@ -371,7 +372,13 @@ class FrameReader:
         if task.item is not None or not task_kinds.kind_of(task.kind):
             return task
         prop = task_kinds.kind(task.kind).works_on
-        if prop is None or _my_unknown_words(readings) != 1:
+        if prop is None:
+            return task
+        # "sign this contract extension": the paper's name as a compound's first part
+        named = first_part_item(self.office, readings.mentions, prop, requester)
+        if named is not None:
+            return task.model_copy(update={"item": named, "owner": task.owner or requester})
+        if _my_unknown_words(readings) != 1:
             return task
         person = self.office.person(requester)
         fits = [o.type for o in person.owns if getattr(self.office.item_type(o.type), prop)]

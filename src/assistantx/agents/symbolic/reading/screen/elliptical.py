@@ -10,6 +10,8 @@ readings."""
 
 from __future__ import annotations
 
+import itertools
+
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -24,6 +26,10 @@ _INDEFINITE = frozenset({"a", "an", "any", "some", "another", "one"})
 # The speaker's reason after it: "want to check ...", "need it for ...", "to check ...".
 _REASON_OPENERS = english.words("need_verbs") | {"wanna", "gotta", "to", "for"}
 _REASON_LEAD = frozenset({"i", "just", "so", "only", "id", "ill"})
+# "... I can nab", "... we could use": the speaker, then a modal of possibility.
+_SPEAKER = frozenset({"i", "we"})
+_MODALS = frozenset({"can", "could", "may", "might"})
+_SPARE = "spare"
 
 
 def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
@@ -37,8 +43,26 @@ def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
         return False
     if not (_having_one(piece.words) or _one_anywhere(piece)):
         return False
+    if _wanted_by_the_asker(piece) and not piece.acts.later:
+        return True  # "anyone got a stopwatch I can nab?", "... going spare?"
     later = [p for p in msg.pieces if p.start > piece.end]
     return bool(later) and _gives_a_reason(terms, later[0]) and later[0].acts.question is None
+
+
+def _wanted_by_the_asker(piece: Piece) -> bool:
+    """The ask itself says the thing is for the speaker: the thing said to be spare, to be
+    given away ("anyone got a stopwatch *going spare*?", "... a stopwatch spare?"), or the
+    speaker as the subject of a modal after the thing ("... a stopwatch *I can* nab?", "...
+    I could pinch"), whatever verb of taking follows. "a spare stopwatch" before the thing
+    only says which kind: the question stays a question."""
+    items = [m for m in piece.lexed.mentions if m.kind == "item"]
+    if len(items) != 1:
+        return False
+    w = [t.word for t in piece.lexed.tokens]
+    after = w[items[0].end :]
+    if _SPARE in after:
+        return True
+    return any(a in _SPEAKER and b in _MODALS for a, b in itertools.pairwise(after))
 
 
 def _having_one(w: list[str]) -> bool:

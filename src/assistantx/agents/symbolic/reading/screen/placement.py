@@ -47,6 +47,8 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         k += 1
     if k >= len(told) or told[k] in terms.en.modifier_prepositions:
         return None  # "put the kettle on", "stick it on for me": no place named
+    if _service_word(terms, told[k + 1 if told[k] == "to" else k]):
+        return None  # "stick my jump pack on charge": the office's service, read later
     if any(m.kind in _OFFICE_PLACES and m.start > n for m in mentions):
         return None  # "leave my form on Hal's desk": a person's place, a delivery
     verb = next((j for j, w in enumerate(told) if w == words[at]), 0)
@@ -61,6 +63,12 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
             f"{terms.capabilities()} Who should I bring it to?"
         ),
     )
+
+
+def _service_word(terms: Terms, word: str) -> bool:
+    """ "on *charge*", "in for a *wash*": a word that asks for a service of the office, so
+    where the thing goes is that service."""
+    return word in terms.lex.operation_words or word in terms.service_verbs
 
 
 def _unknown_verb(terms: Terms, word: str) -> bool:
