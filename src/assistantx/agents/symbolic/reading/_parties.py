@@ -244,6 +244,22 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             pass  # why the request was made ("because Rich asked"): no role in it
 
 
+_COURTESY_AFTER = frozenset({"please", "pls", "plz", "thanks", "thx", "ta", "cheers", "x"})
+
+
+def _a_favour(
+    tokens: Sequence[Token], ms: Sequence[Mention], n: int, roles: Roles, requester: str
+) -> bool:
+    """ "... to Zhang for me (please)": a "for me" that ends the clause after a colleague
+    already named after "to" asks a favour; it names no second recipient."""
+    if any(tokens[m.start].word not in _COURTESY_AFTER for m in ms[n + 1 :]):
+        return False
+    return any(
+        who != requester and prev_word(tokens, at) == "to"
+        for who, at in zip(roles.recipient, roles.recipient_at, strict=True)
+    )
+
+
 def clause_roles(
     tokens: Sequence[Token], clause: Clause, requester: str, last_person: list[str]
 ) -> Roles:
@@ -261,6 +277,8 @@ def clause_roles(
             if word in ("my", "mine"):
                 continue
             prev = prev_word(tokens, m.start)
+            if prev == "for" and _a_favour(tokens, ms, n, roles, requester):
+                continue  # "take my stapler to Zhang for me": Zhang gets it, as a favour to me
             if prev in _TO or prev in _DATIVE_VERBS:
                 roles.add_recipient(requester, m.start)
         elif m.kind == "pronoun" and _at_their_place(tokens, m):
