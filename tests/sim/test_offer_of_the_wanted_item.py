@@ -11,11 +11,8 @@ import pytest
 
 from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.core.goals import Milestone
-from assistantx.core.settings import Settings
-from assistantx.evaluation.dataset.tasks import Task
-from assistantx.evaluation.harness import run_episode
-from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from assistantx.sim.requester import Wish, answer
+from helpers.one_episode import ppdr_episode
 from helpers.outside_broadcast import outside_broadcast
 
 ANY_HEADSET: list[Milestone] = [{"holds": ["quill", "camera_headset:*"]}]
@@ -95,18 +92,8 @@ async def test_the_question_offered_on_is_answered_yes_and_the_task_is_done(
     asked = InstructionParser(office).parse(instruction, "quill").question
     assert asked is not None and asked.endswith("Shall I bring you one?")
     wanted = "battery" if "batter" in instruction else "camera_headset"
-    task = Task(
-        id="t001",
-        base="b1",
-        level="L1",
-        achievable=True,
-        requester="quill",
-        instruction=instruction,
-        goal=[{"holds": ["quill", f"{wanted}:*"]}, {"informed": "quill"}],
-        optimal_actions=1,
-    )
-    episode = await run_episode(
-        task, 0, office, MethodBuilder(MethodSpec("ppdr"), office, Settings())
+    episode = await ppdr_episode(
+        office, "quill", instruction, [{"holds": ["quill", f"{wanted}:*"]}, {"informed": "quill"}]
     )
     assert episode.trace.outcome == "done", episode.trace.summary
     assert all(episode.milestones), (episode.milestones, episode.trace.summary)

@@ -10,11 +10,8 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic.reading.parser import InstructionParser
-from assistantx.core.settings import Settings
 from assistantx.evaluation import metrics
-from assistantx.evaluation.dataset.tasks import Task
-from assistantx.evaluation.harness import run_episode
-from assistantx.evaluation.methods import MethodBuilder, MethodSpec
+from helpers.one_episode import ppdr_episode
 from helpers.outside_broadcast import outside_broadcast
 
 Read = tuple[str, str, str | None, str]  # kind, item, owner, recipient
@@ -75,18 +72,8 @@ async def test_the_corrected_errand_is_done_and_the_owner_asked() -> None:
     instruction = (
         "its dov, could u tag... sorry, COURIER, nope, i mean get Chloë's curling tongs for me"
     )
-    task = Task(
-        id="t001",
-        base="b1",
-        level="L1",
-        achievable=True,
-        requester="dov",
-        instruction=instruction,
-        goal=[{"holds": ["dov", "curling_tongs:chloe"]}, {"informed": "dov"}],
-        optimal_actions=1,
-    )
-    episode = await run_episode(
-        task, 0, office, MethodBuilder(MethodSpec("ppdr"), office, Settings())
+    episode = await ppdr_episode(
+        office, "dov", instruction, [{"holds": ["dov", "curling_tongs:chloe"]}, {"informed": "dov"}]
     )
     assert metrics.success(episode), (episode.milestones, episode.trace.summary)
     asked = [

@@ -12,11 +12,8 @@ import pytest
 
 from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.core.goals import Milestone
-from assistantx.core.settings import Settings
 from assistantx.evaluation import metrics
-from assistantx.evaluation.dataset.tasks import Task
-from assistantx.evaluation.harness import run_episode
-from assistantx.evaluation.methods import MethodBuilder, MethodSpec
+from helpers.one_episode import ppdr_episode
 from helpers.outside_broadcast import outside_broadcast
 
 Read = tuple[str, str, str, str | None]  # kind, item, recipient, actor
@@ -131,18 +128,6 @@ def test_a_question_thanks_or_negation_moves_nothing(instruction: str) -> None:
 )
 async def test_the_errand_is_done_whole(instruction: str, goal: list[Milestone]) -> None:
     office = outside_broadcast()
-    task = Task(
-        id="t001",
-        base="b1",
-        level="L1",
-        achievable=True,
-        requester="quill",
-        instruction=instruction,
-        goal=[*goal, {"informed": "quill"}],
-        optimal_actions=1,
-    )
-    episode = await run_episode(
-        task, 0, office, MethodBuilder(MethodSpec("ppdr"), office, Settings())
-    )
+    episode = await ppdr_episode(office, "quill", instruction, [*goal, {"informed": "quill"}])
     assert metrics.success(episode), (episode.milestones, episode.trace.summary)
     assert metrics.wrong_handovers(episode) == []

@@ -11,12 +11,9 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic.reading.parser import InstructionParser
-from assistantx.core.settings import Settings
 from assistantx.core.task_schema import Part
 from assistantx.evaluation import metrics
-from assistantx.evaluation.dataset.tasks import Task
-from assistantx.evaluation.harness import run_episode
-from assistantx.evaluation.methods import MethodBuilder, MethodSpec
+from helpers.one_episode import ppdr_episode
 from helpers.outside_broadcast import outside_broadcast
 
 WHERE = "Where should I courier it to? Please give me the name and address of the place."
@@ -105,19 +102,12 @@ async def test_the_tape_is_sent_where_the_requester_said(
     instruction: str, destination: str
 ) -> None:
     office = outside_broadcast()
-    task = Task(
-        id="t001",
-        base="b1",
-        level="L1",
-        achievable=True,
-        requester="quill",
-        instruction=instruction,
-        goal=[{"heated": "tape:quill"}, {"informed": "quill"}],
-        optimal_actions=1,
-        spec=[Part(kind="heat", item="tape", operation="courier", destination=destination)],
-    )
-    episode = await run_episode(
-        task, 0, office, MethodBuilder(MethodSpec("ppdr"), office, Settings())
+    episode = await ppdr_episode(
+        office,
+        "quill",
+        instruction,
+        [{"heated": "tape:quill"}, {"informed": "quill"}],
+        [Part(kind="heat", item="tape", operation="courier", destination=destination)],
     )
     assert metrics.success(episode), episode.trace.summary
     assert metrics.wrong_sends(episode) == []

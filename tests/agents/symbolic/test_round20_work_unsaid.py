@@ -9,12 +9,9 @@ from __future__ import annotations
 import pytest
 from symbolic_run import run_instruction
 
-from assistantx.core.settings import Settings
 from assistantx.core.task_schema import Part
-from assistantx.evaluation.dataset.tasks import Task
-from assistantx.evaluation.harness import run_episode
-from assistantx.evaluation.methods import MethodBuilder, MethodSpec
 from helpers.airside_kitchen import airside_kitchen
+from helpers.one_episode import ppdr_episode
 from helpers.reading import answered_reader, frame_reader
 
 _frame = frame_reader(airside_kitchen, "odile")
@@ -110,19 +107,8 @@ async def test_a_requester_who_knows_which_answers_and_it_is_done(
     the work named is done to their prep."""
     office = airside_kitchen()
     goal: list[dict[str, object]] = [{"heated": "prep:odile"}, {"informed": "odile"}]
-    task = Task(
-        id="t001",
-        base="b1",
-        level="L1",
-        achievable=True,
-        requester="odile",
-        instruction=_DO_SOMETHING,
-        goal=goal,
-        optimal_actions=1,
-        spec=[Part(kind="heat", operation=operation)],
-    )
-    episode = await run_episode(
-        task, 0, office, MethodBuilder(MethodSpec("ppdr"), office, Settings())
+    episode = await ppdr_episode(
+        office, "odile", _DO_SOMETHING, goal, [Part(kind="heat", operation=operation)]
     )
     asked = [r.action for r in episode.trace.actions() if r.action.type == "inquire"]
     assert [getattr(a, "question", None) for a in asked][:1] == [_ASKED]
