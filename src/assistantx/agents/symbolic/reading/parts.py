@@ -30,7 +30,10 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.agents.symbolic.reading.unread_compounds import unread_compound
+from assistantx.agents.symbolic.reading.unread_compounds import (
+    unread_compound,
+    unread_sent_thing,
+)
 from assistantx.core import language
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
@@ -83,6 +86,7 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
         return left_out
     phrase = (
         unread_compound(office, readings.mentions, [t.text for t in readings.tokens])
+        or unread_sent_thing(readings.mentions, [t.text for t in readings.tokens])
         or _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
         or _service_left_out(office, readings, frame)

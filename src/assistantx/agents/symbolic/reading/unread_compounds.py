@@ -11,6 +11,10 @@ followed only by plain words up to its head; the head must be a word of a name o
 or more of the office's electronic file (so "my lunch", "the way" never count), and no item
 of the office may follow it in the phrase ("my wine list file" is the file). The
 phrase is then quoted back to the requester as a part not understood, never guessed.
+
+The same holds for a colleague's thing in words the office has nowhere, asked to be sent on:
+"get Carmen's physio notes forwarded to me" (``unread_sent_thing``): a thing of hers to be
+forwarded is no errand the reader may drop.
 """
 
 from __future__ import annotations
@@ -24,6 +28,10 @@ from assistantx.memory.names import normalize
 
 _ARTICLES = frozenset({"the", "a", "an", "this", "that"})
 _LONGEST = 4  # plain words in the phrase after its opener
+# the participles that ask for a thing to be sent on ("get her notes forwarded to me")
+_SENT_ON = frozenset(
+    {"forwarded", "sent", "emailed", "mailed", "shared", "passed", "transferred", "fwded"}
+)
 
 
 def name_words(office: Office) -> frozenset[str]:
@@ -69,4 +77,25 @@ def unread_compound(
             continue  # "my wine list file": the item after it is the phrase's head
         if heads:
             return " ".join(texts[begin : run[heads[-1]].end])
+    return None
+
+
+def unread_sent_thing(mentions: Sequence[Mention], texts: Sequence[str]) -> str | None:
+    """ "Carmen's physio notes" in "get Carmen's physio notes forwarded to me": a colleague's
+    possessive, then only plain words, then a participle of sending on; the words (opener
+    kept), or None."""
+    for n, opener in enumerate(mentions):
+        if opener.kind != "person" or not opener.possessive:
+            continue
+        run: list[Mention] = []
+        for m in mentions[n + 1 : n + 1 + _LONGEST]:
+            if m.start != (run[-1].end if run else opener.end):
+                break
+            if texts[m.start].lower() in _SENT_ON:
+                if run and language.is_noun(run[-1].ids[0]):
+                    return " ".join(texts[opener.start : run[-1].end])
+                break
+            if m.kind != "word":
+                break
+            run.append(m)
     return None
