@@ -45,3 +45,23 @@ def test_a_capitalized_name_nobody_here_has_is_asked_about(read: Callable[[str],
 def test_a_task_word_after_a_possessive_is_the_item(read: Callable[[str], Readings]) -> None:
     readings = read("fetch Mao's seal")
     assert [m.kind for m in readings.mentions][-1] == "item"
+
+
+@pytest.mark.parametrize(
+    ("writer", "text", "meant"),
+    [
+        ("liu", "send my spreadsheet to Yang please, he asked for the numbers", ("yang",)),
+        ("yang", "send my spreadsheet to Yang please", ("liu",)),
+        ("mao", "send my spreadsheet to Yang please", ("liu", "yang")),
+    ],
+)
+def test_a_name_the_writer_shares_with_a_colleague_means_the_colleague(
+    office: Office, writer: str, text: str, meant: tuple[str, ...]
+) -> None:
+    """People say "me" of themselves: Liu Yang's "to Yang" is Yang Lei, and the other way
+    round; anyone else's "Yang" is still in doubt."""
+    lex = Lexicon.from_office(office)
+    readings = MentionReader(office, lex).read(lex.read(text), writer)
+    people = [m for m in readings.mentions if m.kind == "person"]
+    assert [m.ids for m in people] == [meant]
+    assert (readings.doubt is None) == (len(meant) == 1)

@@ -239,6 +239,9 @@ class Lexicon:
                         lex.roles.setdefault(word, set()).add(p.id)
                 lex._declare(p.id, said)
             lex._declare(p.id, language.fold(p.name).replace(".", " ").split())
+        for phrase, holders in rank_titles(office).items():
+            if phrase not in lex.people:  # "the Station Officer": the one who holds the rank
+                lex.people[phrase] = set(holders)
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
                 key = key_of(name)
@@ -742,6 +745,35 @@ _INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
 
 # A possessive "'s" inside a name, before another word ("reporter's notebook").
 _INNER_POSSESSIVE = re.compile(r"\w['’]s\s+\w")
+
+
+def rank_titles(office: Office) -> dict[str, frozenset[str]]:
+    """The ranks the office writes before surnames ("Station Officer Delaney", "Sister
+    Okafor"), each with the one person who holds it: a colleague says "the station officer"
+    of them. A rank two people hold names neither (asked as any shared name is not: it is
+    no name of theirs); a courtesy title ("Dr", "Mr") is no rank, and words of two letters
+    ("SO Delaney") are initials, not words people say."""
+    held: dict[str, set[str]] = {}
+    for p in office.people:
+        surname = key_of(p.name.split()[-1]) if p.name.split() else ""
+        for alias in p.aliases:
+            said = key_of(alias.replace(".", " ")).split()
+            if len(said) < 2 or said[-1] != surname:
+                continue
+            rank = said[:-1]
+            while rank and rank[0] in _ALIAS_ARTICLES:
+                rank = rank[1:]
+            # one word before a surname is as often a given name or a nickname ("Big Dave
+            # Okoro", "Watch Quinn") as a rank; the roles of TITLES ("the professor") are read
+            # apart (``roles``), so a rank here is a phrase of two words or more
+            if len(rank) > 1 and all(len(w) > 2 and w not in _COURTESY_TITLES for w in rank):
+                held.setdefault(" ".join(rank), set()).add(p.id)
+    names = {w for p in office.people for w in key_of(p.name).split()}
+    return {
+        rank: frozenset(ids)
+        for rank, ids in held.items()
+        if len(ids) == 1 and not set(rank.split()) <= names  # "Olive B" is no rank
+    }
 
 
 def key_of(name: str) -> str:

@@ -202,7 +202,7 @@ class InstructionParser:
         now is said anywhere, also in a statement the screen set aside ("P lent me her
         ruler. Please return it to her; it's on my desk")."""
         lexed = self.lex.read(request)  # the rewritten request, read once; later stages get it
-        readings = self.readings.read(lexed)
+        readings = self.readings.read(lexed, requester)
         frame = self.frames.frame(
             readings,
             requester,
@@ -280,7 +280,7 @@ class InstructionParser:
     def _with_one_choice(self, text: str, requester: str) -> str | None:
         """The request with its category words replaced by the office's one such thing."""
         request = self.screen.request(self.screen.verdicts(text, requester))
-        readings = self.readings.read(self.lex.read(request.text))
+        readings = self.readings.read(self.lex.read(request.text), requester)
         only = one_choice(self.screen.terms, readings.tokens, readings.mentions)
         return with_choice(text, only[1], only[0]) if only is not None else None
 

@@ -12,7 +12,7 @@ here has, a facility whose services the assistant cannot run.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from assistantx.agents.symbolic.reading.codes import code_of_a_thing
 from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
@@ -105,9 +105,11 @@ class MentionReader:
             if (kind := SHAPE_KIND.get(op.shape(office))) is not None
         }
 
-    def read(self, lexed: Lexed) -> Readings:
+    def read(self, lexed: Lexed, requester: str | None = None) -> Readings:
         tokens = lexed.tokens
         mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
+        if requester is not None:
+            mentions = not_the_writer(mentions, requester)
         mentions = participle_adjectives(tokens, mentions)
         mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
@@ -411,6 +413,17 @@ def _settled_by_later_sentence(mentions: Sequence[Mention], spaces: Sequence[str
                     used.add(k)
                 break
     return [m for k, m in enumerate(out) if k not in used]
+
+
+def not_the_writer(mentions: Sequence[Mention], requester: str) -> list[Mention]:
+    """ "send my spreadsheet to Yang", written by Liu Yang where Yang Lei works too: people
+    say "me" and "my" of themselves, so a name they share with a colleague means the
+    colleague; the writer is no candidate while another one is left."""
+    out = list(mentions)
+    for n, m in enumerate(out):
+        if m.kind == "person" and len(m.ids) > 1 and requester in m.ids:
+            out[n] = replace(m, ids=tuple(i for i in m.ids if i != requester))
+    return out
 
 
 def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:

@@ -75,6 +75,8 @@ _ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
 # The errand itself, said again: "someone already did *it*"
 _THE_ERRAND = frozenset({"it", "that", "this"})
 _HAVE_NOW = frozenset({"have", "ive", "weve", "got"})
+# "he can have mine", "you may have it": a "have" given leave or promised, not had now
+_MAY_HAVE = _MODALS | {"can", "could", "may", "might", "will", "would", "shall", "should", "to"}
 _PREPOSITIONS = frozenset({"in", "to", "for", "with", "on", "of", "at"})
 # What follows a command's verb: "bring *me*", "fetch *the* ...", "copy *my* ..."
 _COMMAND_OBJECTS = frozenset(
@@ -250,6 +252,8 @@ class SpeechActs:
                 continue
             if x in _HAVE_NOW - {"got"} and _perfect_after(w[n + 1 : n + 3]):
                 continue  # "I've lost mine": "have" of the perfect, its verb read next
+            if x in _HAVE_NOW and n > 0 and w[n - 1] in _MAY_HAVE:
+                continue  # "so he can have mine": an offer of the speaker's, nothing had
             lemmas = language.verb_lemmas(x) or {"have"}
             if not lemmas & (self.lex.cue_words | _DONE_VERBS):
                 continue

@@ -19,3 +19,11 @@ def test_an_item_corrected_is_replaced(terms: Terms) -> None:
 
 def test_no_correction_leaves_the_text(terms: Terms) -> None:
     assert corrected(terms, "bring me a stapler") == ("bring me a stapler", [])
+
+
+def test_what_is_refused_first_then_what_replaces_it(terms: Terms) -> None:
+    """ "no wait not Wang's, Zhang's one" (blind round 26's class): the refusal comes first
+    and the replacement after the comma; on main "not Wang's" was read as the correction."""
+    text, evidence = corrected(terms, "bring me Wang's stapler? no wait not Wang's, Zhang's one")
+    assert text == "bring me Zhang's stapler"
+    assert [e.meaning for e in evidence] == ["means Zhang"]

@@ -49,6 +49,13 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
+    refused: Sequence[Token] = ()
+    if tokens and tokens[0].word == "not" and rest.startswith(","):
+        # "no wait not rob's, Kiz's one": what is rejected first, then what replaces it
+        refused = tokens[1:]
+        fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
+        rest = rest[1 + len(fix) :]
+        tokens = terms.lex.tokens(fix)
     if _opens_request(terms, tokens):
         # "fetch Bill's tripod... actually, no, just print my draft": a correction that
         # says a request of its own withdraws the request it breaks off; the withdrawn
@@ -63,7 +70,7 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     # "..., sorry, his laser, not the ruler": what is rejected after it says which one
     # the correction replaces; the correction itself is the part before "not"
     cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
-    tokens, rejected = tokens[:cut], tokens[cut:]
+    tokens, rejected = tokens[:cut], [*refused, *tokens[cut:]]
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]

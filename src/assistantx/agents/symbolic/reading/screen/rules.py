@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
@@ -59,6 +60,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", destructive),
     ("unsupported", outside_account),
     ("unsupported", covert),
+    ("unsupported", break_in),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     ("statement", elliptical_reason),
