@@ -154,3 +154,10 @@ def test_a_decomposed_accent_stays_in_its_word(text: str) -> None:
     assert decomposed != text
     found = [language.fold(m.group(0)) for m in language.WORD.finditer(decomposed)]
     assert found == [language.fold(m.group(0)) for m in language.WORD.finditer(text)]
+
+
+def test_a_soft_c_typed_as_said_finds_its_word() -> None:
+    """ "servisd" is two edits from "serviced" as spelled, one as said ("servised"); the
+    soft "c" is only a second look, when nothing is near as spelled."""
+    assert language.closest("servisd", ["service", "serviced", "servers"]) == ["serviced"]
+    assert language.closest("servisd", ["scarves"]) == []  # a hard "c" is no "s"

@@ -1,7 +1,8 @@
 """A fire station's watch room for the reader's tests of blind rounds 25 to 27 (the rounds'
 own offices and sentences were never read): people called by rank and surname ("Station
-Officer Delaney"), a rank two people hold ("Watch Manager"), initials as an alias ("SO
-Delaney"), and a hose tester that tests a hose and gives it back."""
+Officer Delaney"), a rank two people hold ("Crew Manager"), initials as an alias ("SO
+Delaney"), a hose tester that tests a hose and gives it back, and a bench that services
+breathing-apparatus sets (a verb with a soft "c", typed as said)."""
 
 from __future__ import annotations
 
@@ -16,9 +17,10 @@ _PEOPLE = (
         "hose",
         aliases=["Frank", "Station Officer Delaney", "SO Delaney"],
     ),
-    ob.person("hazel", "Hazel Quinn", "hose", aliases=["Watch Manager Quinn"]),
-    ob.person("rob", "Rob Stone", aliases=["Watch Manager Stone"]),
-    ob.person("kemal", "Kemal Aydin", "hose"),
+    ob.person("hazel", "Hazel Quinn", "hose", "timesheet", aliases=["Watch Manager Quinn"]),
+    ob.person("rob", "Rob Stone", "ba_set", aliases=["Crew Manager Stone"]),
+    ob.person("ana", "Ana Silva", aliases=["Crew Manager Silva", "CM Silva"]),
+    ob.person("kemal", "Kemal Aydin", "hose", "ba_set", "timesheet"),
 )
 
 
@@ -30,8 +32,13 @@ def raw_watch_room() -> dict[str, Any]:
         item_types=[
             ob.item("file", "file", "electronic", synonyms=["spreadsheet"]),
             ob.item("hose", "hose", synonyms=["length of hose"]),
+            ob.item("ba_set", "BA set", synonyms=["breathing set"]),
+            ob.item("timesheet", "timesheet", "personal", signable=True, synonyms=["sheet"]),
         ],
-        operations=[ob.operation("test", "test", "pressure test", input="hose")],
+        operations=[
+            ob.operation("test", "test", "pressure test", input="hose"),
+            ob.operation("service", "service", "overhaul", input="ba_set"),
+        ],
         facilities=[
             ob.facility(
                 "hose_tester",
@@ -39,7 +46,10 @@ def raw_watch_room() -> dict[str, Any]:
                 at="appliance_bay",
                 guards=["kemal"],
                 operations=["test"],
-            )
+            ),
+            ob.facility(
+                "ba_bench", "BA bench", at="appliance_bay", guards=["kemal"], operations=["service"]
+            ),
         ],
         everyone_owns=["file"],
         home="appliance_bay",

@@ -261,6 +261,32 @@ def closest(word: str, vocabulary: Iterable[str]) -> list[str]:
             continue
         scored.append((d, Indel.distance(word, candidate), candidate))
     if not scored:
+        return _spelled_as_said(word, vocabulary, limit)
+    best = min(s[:2] for s in scored)
+    return sorted(c for d, i, c in scored if (d, i) == best)
+
+
+# A soft "c" (before e, i, y) is said as "s" and typed so by ear: "servisd" for serviced.
+_SOFT_C = re.compile(r"c(?=[eiy])")
+
+
+def _spelled_as_said(word: str, vocabulary: Iterable[str], limit: int) -> list[str]:
+    """The vocabulary words a typed word is within its typo limit of once their soft "c" is
+    written as it is said ("servisd": "servised", one edit from serviced), where no word is
+    near as spelled; the nearest (ties broken as ``closest`` breaks them), all equally near."""
+    from rapidfuzz.distance import OSA, Indel
+
+    scored: list[tuple[int, int, str]] = []
+    for candidate in vocabulary:
+        if candidate == word or "c" not in candidate or typo_limit(candidate) == 0:
+            continue
+        said = _SOFT_C.sub("s", candidate)
+        if said == candidate or abs(len(said) - len(word)) > limit:
+            continue
+        d = OSA.distance(word, said, score_cutoff=limit)
+        if d <= limit:
+            scored.append((d, Indel.distance(word, said), candidate))
+    if not scored:
         return []
     best = min(s[:2] for s in scored)
     return sorted(c for d, i, c in scored if (d, i) == best)

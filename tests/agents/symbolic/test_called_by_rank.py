@@ -15,7 +15,10 @@ _frame = frame_reader(watch_room, "kemal")
 
 
 def test_only_a_rank_one_person_holds_is_a_name() -> None:
-    assert rank_titles(watch_room()) == {"station officer": frozenset({"frank"})}
+    assert rank_titles(watch_room()) == {
+        "station officer": frozenset({"frank"}),
+        "watch manager": frozenset({"hazel"}),
+    }
 
 
 @pytest.mark.parametrize(
@@ -33,7 +36,29 @@ def test_the_rank_names_its_holder(text: str) -> None:
     ], frame
 
 
+def test_a_rank_beside_a_name_settles_the_signer() -> None:
+    """ "needs the Watch Manager's signature, can you get Hazel to sign it": one person."""
+    frame = _frame("my timesheet needs the Watch Manager's signature, can you get Hazel to sign it")
+    assert frame.question is None, frame
+    assert [(t.kind, t.owner, t.actor) for t in frame.tasks] == [("sign", "kemal", "hazel")]
+
+
 def test_a_rank_two_hold_names_nobody() -> None:
-    frame = _frame("send my spreadsheet to the watch manager")
+    frame = _frame("send my spreadsheet to the crew manager")
     assert frame.tasks == [], frame
     assert frame.question is not None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "wld you get my BA set servisd and also take my hose to Hazel after",
+        "get my breathing set servised pls",
+    ],
+)
+def test_a_soft_c_typed_as_said_is_read(text: str) -> None:
+    """ "servisd" for serviced (blind round 26's class): one edit once the soft "c" is
+    written as said; on main it was two edits from any word and was left unread."""
+    frame = _frame(text, "rob" if "hose" not in text else "kemal")
+    assert frame.question is None, frame
+    assert frame.tasks[0].operation == "service", frame

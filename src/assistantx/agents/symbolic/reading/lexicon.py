@@ -755,10 +755,10 @@ def rank_titles(office: Office) -> dict[str, frozenset[str]]:
     ("SO Delaney") are initials, not words people say."""
     held: dict[str, set[str]] = {}
     for p in office.people:
-        surname = key_of(p.name.split()[-1]) if p.name.split() else ""
+        surname = _said(p.name)[-1:]
         for alias in p.aliases:
-            said = key_of(alias.replace(".", " ")).split()
-            if len(said) < 2 or said[-1] != surname:
+            said = _said(alias)  # as written: "Watch Manager Quinn" keeps its "manager"
+            if len(said) < 2 or said[-1:] != surname:
                 continue
             rank = said[:-1]
             while rank and rank[0] in _ALIAS_ARTICLES:
@@ -768,12 +768,17 @@ def rank_titles(office: Office) -> dict[str, frozenset[str]]:
             # apart (``roles``), so a rank here is a phrase of two words or more
             if len(rank) > 1 and all(len(w) > 2 and w not in _COURTESY_TITLES for w in rank):
                 held.setdefault(" ".join(rank), set()).add(p.id)
-    names = {w for p in office.people for w in key_of(p.name).split()}
+    names = {w for p in office.people for w in _said(p.name)}
     return {
         rank: frozenset(ids)
         for rank, ids in held.items()
         if len(ids) == 1 and not set(rank.split()) <= names  # "Olive B" is no rank
     }
+
+
+def _said(name: str) -> list[str]:
+    """The words of a name as written, folded, with no word dropped ("watch manager quinn")."""
+    return re.sub(r"[^\w\s]", "", language.fold(name).replace(".", " ")).split()
 
 
 def key_of(name: str) -> str:

@@ -352,7 +352,15 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
     start = mentions[n].start
     while start > 0 and tokens[start - 1].word in _ARTICLES:
         start -= 1
-    if start == 0 or tokens[start - 1].word not in _LOCATION_PREPOSITIONS:
+    if start == 0:
+        return False
+    before = tokens[start - 1].word
+    # "bring my bass down from the tuning room lockers", "out of the cold store": where the
+    # item is taken from is a place too
+    taken_from = before == "from" or (
+        before == "of" and start >= 2 and tokens[start - 2].word == "out"
+    )
+    if before not in _LOCATION_PREPOSITIONS and not taken_from:
         return False
     return any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
 

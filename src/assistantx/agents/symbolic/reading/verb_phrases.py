@@ -32,6 +32,8 @@ from assistantx.memory.names import normalize
 
 _DETERMINERS = english.words("modifier_determiners")
 _FUNCTION_WORDS = english.words("common")
+# The particles of phrasal verbs ("run off", "knock up"): grammar, not any office's words.
+_PARTICLES = frozenset({"off", "out", "up", "down", "over", "through", "away", "back"})
 
 
 def _key(phrase: str) -> str:
@@ -49,11 +51,27 @@ def compound_verb(phrase: str) -> bool:
     return "VERB" in language.lemmas(words[-1])
 
 
+def particle_verb(phrase: str, own: Sequence[str]) -> bool:
+    """Whether a phrase is a verb and its particle that says more than its head ("run off"
+    copies is to print them, where "run" alone runs an errand): two words, the first a verb
+    that is none of the operation's own one-word verbs (``own``), the second a particle. Such
+    a phrase is the only way it asks for the work, so it is read whole, as a compound is;
+    "send out" beside a "send" the operation has keeps its words."""
+    words = phrase.split()
+    if len(words) != 2 or words[1] not in _PARTICLES or words[0] in own:
+        return False
+    return "VERB" in language.lemmas(words[0])
+
+
 def _named_phrases(office: Office, op: Operation, things: set[str]) -> list[str]:
-    """The phrases of several words that ask for ``op``: its compound verbs, and its name
-    where the name is one that opens with one of its own verbs and names no thing."""
+    """The phrases of several words that ask for ``op``: its compound verbs, its verbs with
+    a particle whose head alone asks for other work, and its name where the name is one that
+    opens with one of its own verbs and names no thing."""
     verbs = [_key(v) for v in op.verbs]
+    own = [v for v in verbs if " " not in v]
     found = [v for v in verbs if compound_verb(v)]
+    if not op.sends_out:  # a send's destination is read after its verb's words
+        found += [v for v in verbs if particle_verb(v, own)]
     name = _key(op.name)
     words = name.split()
     opens_with_own_verb = bool(words) and any(words[0] == v.split()[0] for v in verbs if v)

@@ -32,6 +32,11 @@ _FILLERS = frozenset(
     {"just", "please", "rather", "instead", "simply", "only", "can", "you", "could", "actually"}
 )
 _SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
+# Where a sentence goes on to a request of its own: "..., and then ...", "..., can you ...".
+_NEXT_REQUEST = re.compile(
+    r"(?:,\s*|\s+)(?:and\s+)?then\s+|,\s*(?:and\s+)?(?=(?:can|could|would|will)\s+you\b)",
+    re.IGNORECASE,
+)
 _TRAILING = " .…,;-–—"
 
 
@@ -39,9 +44,11 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
     correction of one person or item right after it is said replaces it; the retracted
     one is never acted on (nor is the whole message dropped as withdrawn)."""
-    match = _CORRECTION.search(text) or _ELLIPSIS_ACTUALLY.search(text)
-    if match is None:
+    # the first to start: "fetch X... actually, no, just print" is corrected at "actually"
+    found = [m for m in (_CORRECTION.search(text), _ELLIPSIS_ACTUALLY.search(text)) if m]
+    if not found:
         return text, []
+    match = min(found, key=lambda m: m.start())
     before, after = text[: match.start()], text[match.end() :]
     after = _last_of_chain(after)
     # the correction ends at its sentence's end or at a comma: what follows is said beside it
@@ -62,8 +69,14 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         # verb never runs (what came before that request's sentence stays)
         trimmed = before.rstrip(_TRAILING)
         last = _SENTENCE_END.split(trimmed)[-1]
+        # "could my jacket get steamed, and then can you heat... no sorry, just bring my
+        # lunch": only the request broken off is withdrawn, not an earlier one beside it
+        last = _NEXT_REQUEST.split(last)[-1]
         cut = trimmed.rfind(last) if last else len(before)
         meaning = f"withdraws {before[cut:].strip()!r}, asks instead"
+        # "just bring my lunch": the adverb said only of the correction; after "and then"
+        # the request reads plainly
+        after = re.sub(r"^(?:(?:just|simply|rather|instead)\s+)+", "", after, flags=re.IGNORECASE)
         return before[:cut] + after, [
             Evidence(words=text[match.start() :].strip(), meaning=meaning)
         ]
