@@ -65,3 +65,21 @@ def test_a_room_an_item_is_taken_from_is_no_service_refused(text: str) -> None:
 def test_asking_for_the_rooms_own_use_is_still_refused() -> None:
     frame = _frame("can you warm up in the practice room for me")
     assert frame.tasks == [], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "item"),
+    [
+        ("Teodor has the score file, can you get it off him for me?", "send_file", "part"),
+        ("can you get the score file off Teodor for me?", "send_file", "part"),
+        ("could you borrow a cello off Teodor for me", "transfer", "cello"),
+    ],
+)
+def test_off_a_person_is_from_them(text: str, kind: str, item: str) -> None:
+    """ "get it off her" (blind round 27's class): "off" said of a person as "from"; on
+    main the file was taken to be the requester's own and whom to send it to was asked."""
+    frame = _frame(text, "maud")
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        (kind, item, "teodor", "maud")
+    ], frame

@@ -58,6 +58,7 @@ PERSON_CASES = [
     ),
     (_site("", nxt="needs", subject=True), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),
+    (_site("off"), "off Wang: the source"),
     (_site("by"), "by Wang: the doer"),
     (_site("to", back=True), "back to Wang: the owner, given back"),
     (

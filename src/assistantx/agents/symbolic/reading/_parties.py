@@ -167,6 +167,8 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "recipient",
     ),
     PersonRule("from Wang: the source", lambda s: s.prev == "from", "source"),
+    # "get it off her", "borrow a pen off Zhang": "off" as people say "from" of a person
+    PersonRule("off Wang: the source", lambda s: s.prev == "off", "source"),
     PersonRule("by Wang: the doer", lambda s: s.prev == "by", "actor"),
     PersonRule(
         "back to Wang: the owner, given back", lambda s: s.prev == "to" and s.back, "returned"
