@@ -83,3 +83,16 @@ def test_off_a_person_is_from_them(text: str, kind: str, item: str) -> None:
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         (kind, item, "teodor", "maud")
     ], frame
+
+
+def test_slang_for_borrowing_asked_for_oneself_borrows_with_the_owners_yes() -> None:
+    """ "can i nick X's Y?" (blind round 27's class) was declined as taking people's things."""
+    frame = _frame("hey can i nick Teodor's cello for the Ravel? mine's gone walkabout again")
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "cello", "teodor", "ines")
+    ], frame
+
+
+def test_slang_for_taking_told_to_the_robot_is_declined() -> None:
+    frame = _frame("nick Teodor's cello for me")
+    assert frame.tasks == [] and frame.decline is not None, frame

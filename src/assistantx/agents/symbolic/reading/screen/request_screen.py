@@ -9,6 +9,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
+from assistantx.agents.symbolic.reading.screen.asked_leave import asked_leave
 from assistantx.agents.symbolic.reading.screen.contracted_is import contracted_is
 from assistantx.agents.symbolic.reading.screen.correction import corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
@@ -49,9 +50,10 @@ class RequestScreen:
         text, restored = subject_restored(text)  # "been at the machine": I've been
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
         text, taken = how_taken(terms, text)  # "a brew, milk no sugar": no milk to fetch
+        text, leave = asked_leave(text)  # "can I nick Robin's mute?": asks to borrow it
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
-        fixes = [*idioms, *restored, *stated, *taken, *rejected, *fixes]
+        fixes = [*idioms, *restored, *stated, *taken, *leave, *rejected, *fixes]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
             text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)
