@@ -1,7 +1,8 @@
 """An opera house's orchestra pit for the reader's tests of blind round 27 (the round's own
 office and sentences were never read): a copier that prints a part (also "run off"), a
 wardrobe that steams a jacket, instruments kept in a practice room whose only use is a room
-to warm up in, and lunches kept in the band-room fridge."""
+to warm up in, and lunches kept in the band-room fridge; a player named like an
+instrument (Viola Hart)."""
 
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ _PEOPLE = (
     ),
     ob.person("teodor", "Teodor Lind", "jacket", "cello"),
     ob.person("maud", "Maud Fairley"),
+    ob.person("viola", "Viola Hart", ob.kept("lunch", at="band_room", facility="fridge")),
 )
 
 
@@ -35,7 +37,7 @@ def raw_orchestra_pit() -> dict[str, Any]:
             ob.item("part", "part", "electronic", synonyms=["score file"]),
             ob.item("printout", "printout", "product", synonyms=["copy"]),
             ob.item("jacket", "concert jacket", synonyms=["jacket", "tails"]),
-            ob.item("cello", "cello", synonyms=["instrument"]),
+            ob.item("cello", "cello", synonyms=["instrument", "viola"]),
             ob.item("lunch", "lunch", "personal"),
         ],
         operations=[

@@ -14,6 +14,7 @@ from assistantx.runtime import consent
 from assistantx.runtime.recipients import named_recipients
 from helpers.clinic import clinic, raw_clinic
 from helpers.consent_memory import answered, exchange, memory
+from helpers.watch_room import watch_room
 
 RECIPIENT = (
     "take my {item} to {x}",
@@ -152,3 +153,52 @@ def test_a_name_word_shared_by_several_people_names_each_of_them() -> None:
     # asks which; the guard must not pick one of them by the office file's order
     office = _with_shared_name_words()
     assert named_recipients(office, memory("ines", "take my form to Brooks")) == {"hal", "ada"}
+
+
+CORRECTION = (
+    "take my {item} to {x}, no wait, {y}",
+    "take my {item} to {x}, no wait not {x}, {y}, they need it",
+    "could you bring {x} my {item} - sorry, I meant {y}",
+    "hand my {item} to {x}... oops, {y}",
+)
+NEWS = ("take my {item} to {x}. sorry, {y} has it", "take my {item} to {x}, sorry {y} is out")
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(CORRECTION), st.data())
+def test_a_corrected_recipient_replaces_the_one_corrected(
+    template: str, data: st.DataObject
+) -> None:
+    """Blind round 27's class: "to Siobhán, no wait not Siobhán, Łukasz" names Łukasz as the
+    recipient (the reader hands it to him; on main the guard refused his code) and no
+    longer Siobhán, whom the requester took back."""
+    office = clinic()
+    requester, x, y = data.draw(st.permutations([p.id for p in office.people]))[:3]
+    text = template.format(
+        item="clipboard",
+        x=_written(office, x, data.draw(st.booleans())),
+        y=_written(office, y, data.draw(st.booleans())),
+    )
+    assert named_recipients(office, memory(requester, text)) == {y}, text
+
+
+@given(st.sampled_from(NEWS), st.data())
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+def test_a_name_after_sorry_that_is_news_is_no_recipient(
+    template: str, data: st.DataObject
+) -> None:
+    office = clinic()
+    requester, x, y = data.draw(st.permutations([p.id for p in office.people]))[:3]
+    text = template.format(
+        item="clipboard", x=_written(office, x, True), y=_written(office, y, True)
+    )
+    assert named_recipients(office, memory(requester, text)) == {x}, text
+
+
+def test_a_rank_one_person_holds_names_them() -> None:
+    """ "the Station Officer" (blind round 26's class): the guard reads the reader's ranks."""
+    office = watch_room()
+    stm = memory("kemal", "send my stock count spreadsheet to the Station Officer")
+    assert named_recipients(office, stm) == {"frank"}
+    stm = memory("kemal", "send my spreadsheet to the crew manager")
+    assert named_recipients(office, stm) == set()

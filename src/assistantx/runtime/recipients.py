@@ -45,6 +45,7 @@ from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
+from assistantx.core.ranks import rank_titles
 from assistantx.core.receiving_place import names_receiving_place, pronoun_receiving_place
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
@@ -126,6 +127,8 @@ def _names(office: Office) -> list[tuple[tuple[str, ...], frozenset[str]]]:
             for w in re.findall(r"\w+", language.fold(alias)):
                 if w in _ROLE_TITLES:
                     parts.setdefault((w,), set()).add(p.id)
+    for rank, holder in rank_titles(office).items():  # "the Station Officer": the one
+        declared.setdefault(tuple(rank.split()), set()).update(holder)
     found = {k: frozenset(ids) for k, ids in parts.items()}
     found.update({k: frozenset(ids) for k, ids in declared.items()})
     return sorted(found.items(), key=lambda x: -len(x[0]))
@@ -282,6 +285,36 @@ def _picked_out(words: list[_Word], start: int, end: int) -> bool:
     return verb in _CLEFT_VERBS or bool(language.verb_lemmas(verb) & _CLEFT_VERBS)
 
 
+# What a requester says before the name they correct a receiver to: "to Siobhán, no wait,
+# Łukasz", "for Hal - sorry, I meant Dawn"
+_CORRECTION_MARKS = tuple(
+    tuple(mark.split())
+    for mark in (
+        "no wait", "wait no", "oh wait", "no sorry", "sorry no", "i mean", "i meant",
+        "sorry", "no", "nope", "oops", "make it", "make that",
+    )
+)  # fmt: skip
+
+
+_SUBJECT_AFTER = frozenset({"has", "have", "is", "was", "will", "can", "could", "might", "s"})
+
+
+def _corrects(words: list[_Word], mentions: list[_Mention], k: int) -> bool:
+    """Whether mention ``k`` is the name a correction puts in place of the one said before
+    it ("..., no wait, Łukasz", "... sorry, not Siobhán, Łukasz"): it stands where that
+    one stood, so after a receiver it receives."""
+    at, end = mentions[k].start, mentions[k].end
+    after = words[end].folded if end < len(words) else ""
+    if after in _SUBJECT_AFTER or language.is_finite_verb(after):
+        return False  # "... sorry, Dawn has it": Dawn is the subject of news, no receiver
+    before = mentions[k - 1] if k >= 1 else None
+    if before is not None and before.end == at and before.start >= 1:
+        if words[before.start - 1].folded == "not":
+            at = before.start - 1  # the name refused, then the one meant
+    said = tuple(w.folded for w in words[:at])
+    return any(said[len(said) - len(mark) :] == mark for mark in _CORRECTION_MARKS if mark)
+
+
 def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:
     return _roles_in(_words_of(office), text, requester)
 
@@ -294,14 +327,21 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
     mentions = _mentions(office_words, words)
     operations = office_words.operations
     named: set[str] = set()
+    refused: set[str] = set()
+    last_receiver: frozenset[str] = frozenset()
     receiving_end = -1  # where the last receiving name ended: "to Hal and Dawn" names both
-    for m in mentions:
+    for k, m in enumerate(mentions):
         joined = receiving_end >= 0 and m.start == receiving_end + 1
         joined = joined and words[receiving_end].folded in _AND
         receiving = _receiving(words, m.start, m.end, m.possessive, operations)
-        if receiving or (joined and not m.possessive):
+        correcting = receiving_end >= 0 and not m.possessive and _corrects(words, mentions, k)
+        if correcting:  # "to Siobhán, no wait, Łukasz": Siobhán is no longer meant
+            refused |= last_receiver - m.people
+        if receiving or correcting or (joined and not m.possessive):
             named |= m.people
             receiving_end = m.end
+            last_receiver = m.people
+    named -= refused
     for n, w in enumerate(words):
         after = words[n + 1].folded if n + 1 < len(words) else ""
         at_place = pronoun_receiving_place(_before(words, n), w.folded, after)  # "at her desk"

@@ -88,8 +88,9 @@ def _names(office: Office, *, only_products: bool = False) -> list[tuple[str, st
 
 def mentioned_item_types(office: Office, text: str) -> list[str]:
     """Item types named in ``text`` (longest names first, so 'data cable' beats 'cable'),
-    in the singular or the plural."""
-    haystack = _words(text)
+    in the singular or the plural. A colleague's full name is a name, never a thing: "Viola
+    Brandt's lunch" asks for the lunch where a viola is an instrument of the office."""
+    haystack = _without_full_names(office, _words(text))
     found: list[str] = []
     for name, type_id in _names(office):
         # the plural English gives it too ("batteries", "knives"), beside the plain endings
@@ -99,6 +100,13 @@ def mentioned_item_types(office: Office, text: str) -> list[str]:
                     found.append(type_id)
                 haystack = haystack.replace(f" {variant} ", " ")
     return found
+
+
+def _without_full_names(office: Office, haystack: str) -> str:
+    for name in sorted((normalize(p.name) for p in office.people), key=len, reverse=True):
+        if name and " " in name:
+            haystack = haystack.replace(f" {name} ", " | ")
+    return haystack
 
 
 def mentioned_requests(office: Office, text: str) -> list[str]:

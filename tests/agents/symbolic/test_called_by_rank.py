@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from assistantx.agents.symbolic.reading.lexicon import rank_titles
+from assistantx.core.ranks import rank_titles
 from helpers.reading import frame_reader
 from helpers.watch_room import watch_room
 

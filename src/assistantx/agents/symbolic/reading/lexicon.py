@@ -44,6 +44,7 @@ from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.office import Office
+from assistantx.core.ranks import COURTESY_TITLES, rank_titles
 from assistantx.core.task_schema import SHAPE_KIND
 from assistantx.memory.names import TITLES, normalize
 
@@ -69,10 +70,6 @@ COMMON = english.words("common")
 # Words that open a verb's object: the word before one of them is in a verb's place.
 _VERB_OBJECT_STARTS = english.words("object_starts")
 
-# Titles of address, not roles: "Dr. Zhang" does not make "the doctor" Zhang.
-_COURTESY_TITLES = frozenset(
-    {"a", "an", "the", "our", "mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
-)
 _POLITE = english.words("polite")
 # Words that may follow a person's name but never an article ("Robin A please", "to Robin A
 # and ..."): after them a one-letter word ending a name is an initial.
@@ -235,7 +232,7 @@ class Lexicon:
             for alias in p.aliases:
                 said = language.fold(alias).replace(".", " ").split()
                 for word in said:
-                    if word in TITLES and word not in _COURTESY_TITLES:
+                    if word in TITLES and word not in COURTESY_TITLES:
                         lex.roles.setdefault(word, set()).add(p.id)
                 lex._declare(p.id, said)
             lex._declare(p.id, language.fold(p.name).replace(".", " ").split())
@@ -332,7 +329,7 @@ class Lexicon:
         """Record how a name or alias of ``person`` is written: a bare word ("Kim"), a title
         and a word ("Dr. Kim"), or a role with its qualifier ("the lab manager")."""
         names = [w for w in words if w not in TITLES]
-        roles = [w for w in words if w in TITLES and w not in _COURTESY_TITLES]
+        roles = [w for w in words if w in TITLES and w not in COURTESY_TITLES]
         if len(words) == 2 and words[0] in _ALIAS_ARTICLES and names == words[1:]:
             self.with_article.add((words[0], key_of(words[1])))
         if len(names) == 1 and not roles and len(words) == len(names):
@@ -340,7 +337,7 @@ class Lexicon:
         elif len(names) == 1 and words[-1] == names[0]:
             self.titled.setdefault(key_of(names[0]), set()).add(person)
         if roles and names:  # "the lab manager": the whole role phrase names them
-            phrase = " ".join(w for w in words if w not in _COURTESY_TITLES or w in roles)
+            phrase = " ".join(w for w in words if w not in COURTESY_TITLES or w in roles)
             self.people.setdefault(phrase, set()).add(person)
 
     def _word_people(self, tokens: Sequence[Token], i: int, word: str) -> set[str]:
@@ -745,40 +742,6 @@ _INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
 
 # A possessive "'s" inside a name, before another word ("reporter's notebook").
 _INNER_POSSESSIVE = re.compile(r"\w['’]s\s+\w")
-
-
-def rank_titles(office: Office) -> dict[str, frozenset[str]]:
-    """The ranks the office writes before surnames ("Station Officer Delaney", "Sister
-    Okafor"), each with the one person who holds it: a colleague says "the station officer"
-    of them. A rank two people hold names neither (asked as any shared name is not: it is
-    no name of theirs); a courtesy title ("Dr", "Mr") is no rank, and words of two letters
-    ("SO Delaney") are initials, not words people say."""
-    held: dict[str, set[str]] = {}
-    for p in office.people:
-        surname = _said(p.name)[-1:]
-        for alias in p.aliases:
-            said = _said(alias)  # as written: "Watch Manager Quinn" keeps its "manager"
-            if len(said) < 2 or said[-1:] != surname:
-                continue
-            rank = said[:-1]
-            while rank and rank[0] in _ALIAS_ARTICLES:
-                rank = rank[1:]
-            # one word before a surname is as often a given name or a nickname ("Big Dave
-            # Okoro", "Watch Quinn") as a rank; the roles of TITLES ("the professor") are read
-            # apart (``roles``), so a rank here is a phrase of two words or more
-            if len(rank) > 1 and all(len(w) > 2 and w not in _COURTESY_TITLES for w in rank):
-                held.setdefault(" ".join(rank), set()).add(p.id)
-    names = {w for p in office.people for w in _said(p.name)}
-    return {
-        rank: frozenset(ids)
-        for rank, ids in held.items()
-        if len(ids) == 1 and not set(rank.split()) <= names  # "Olive B" is no rank
-    }
-
-
-def _said(name: str) -> list[str]:
-    """The words of a name as written, folded, with no word dropped ("watch manager quinn")."""
-    return re.sub(r"[^\w\s]", "", language.fold(name).replace(".", " ")).split()
 
 
 def key_of(name: str) -> str:

@@ -1,0 +1,50 @@
+"""The ranks an office writes before surnames ("Station Officer Delaney", "Watch Manager
+Quinn"), each with the one person who holds it: a colleague says "the station officer" of
+them. The reader reads such a phrase as that person, and the consent guard counts it as
+naming them, from this one table, so the two never disagree on who "the Station Officer" is.
+
+A rank two people hold names neither (it is no name of either); a courtesy title ("Dr",
+"Mr") is no rank; words of two letters ("SO Delaney") are initials, not words people say;
+one word before a surname is as often a given name or a nickname ("Big Dave Okoro") as a
+rank, and the roles of the titles list ("the professor") are read apart, so a rank is a
+phrase of two words or more."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.core import language
+from assistantx.core.office import Office
+
+# Titles of address, not roles: "Dr. Zhang" does not make "the doctor" Zhang.
+COURTESY_TITLES = frozenset(
+    {"a", "an", "the", "our", "mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
+)
+_ARTICLES = frozenset({"the", "our"})
+
+
+def rank_titles(office: Office) -> dict[str, frozenset[str]]:
+    """Each rank phrase (folded words, "station officer") with the one person holding it."""
+    held: dict[str, set[str]] = {}
+    for p in office.people:
+        surname = said_words(p.name)[-1:]
+        for alias in p.aliases:
+            said = said_words(alias)  # as written: "Watch Manager Quinn" keeps "manager"
+            if len(said) < 2 or said[-1:] != surname:
+                continue
+            rank = said[:-1]
+            while rank and rank[0] in _ARTICLES:
+                rank = rank[1:]
+            if len(rank) > 1 and all(len(w) > 2 and w not in COURTESY_TITLES for w in rank):
+                held.setdefault(" ".join(rank), set()).add(p.id)
+    names = {w for p in office.people for w in said_words(p.name)}
+    return {
+        rank: frozenset(ids)
+        for rank, ids in held.items()
+        if len(ids) == 1 and not set(rank.split()) <= names  # "Olive B" is no rank
+    }
+
+
+def said_words(name: str) -> list[str]:
+    """The words of a name as written, folded, with no word dropped ("watch manager quinn")."""
+    return re.sub(r"[^\w\s]", "", language.fold(name).replace(".", " ")).split()
