@@ -62,3 +62,21 @@ def test_a_soft_c_typed_as_said_is_read(text: str) -> None:
     frame = _frame(text, "rob" if "hose" not in text else "kemal")
     assert frame.question is None, frame
     assert frame.tasks[0].operation == "service", frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my timesheet needs Hazel Quinn's signature, can you get Hazel to sign it",
+        "my timesheet needs the Watch Manager's signature, could you get Hazel to sign it",
+        "Hazel has to sign my timesheet. can you get her to sign it",
+    ],
+)
+def test_the_signer_named_again_is_no_recipient(text: str) -> None:
+    """Blind round 26's eval class: the signer said twice ("needs Hazel's signature, get
+    Hazel to sign it") signs, and the signed paper comes back; on main the second naming
+    made her the recipient too and the paper stayed with her (a wrong hand-over)."""
+    frame = _frame(text)
+    assert [(t.kind, t.actor, t.recipient) for t in frame.tasks] == [("sign", "hazel", "kemal")], (
+        frame
+    )

@@ -693,6 +693,8 @@ class TaskReader:
         if onward:
             update["recipient"] = onward[-1]
         for who in roles.actor + roles.bare:
+            if by_person and who == task.actor:
+                continue  # "needs Wang's signature, get Wang to sign it": the signer again
             if by_person and task.actor is None and "actor" not in update:
                 update["actor"] = who
             elif task.kind == "transfer" and task.owner is None and "owner" not in update:
