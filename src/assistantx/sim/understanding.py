@@ -212,8 +212,7 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
     for op in office.operations:
         if op.product is None or op.id not in words:
             continue
-        product = office.item_type(op.product)
-        names = [normalize(n) for n in (product.name, *product.synonyms) if normalize(n)]
+        names = _names_of_product(office, op)
         for other in office.operations:
             if other.id == op.id or other.id not in words:
                 continue
@@ -237,13 +236,18 @@ def _means_left_out(office: Office, words: dict[str, tuple[str, ...]], haystack:
     return haystack
 
 
+def _names_of_product(office: Office, op: Operation) -> list[str]:
+    """The names of what ``op`` makes ("label", "sticker"), normalized, in the file's order."""
+    if op.product is None:
+        return []
+    product = office.item_type(op.product)
+    return list(dict.fromkeys(n for n in map(normalize, (product.name, *product.synonyms)) if n))
+
+
 def _product_names(office: Office, op: Operation) -> frozenset[str]:
     """The names of what ``op`` makes ("labels", "label"), as the haystack spells them."""
-    if op.product is None:
-        return frozenset()
-    product = office.item_type(op.product)
-    names = {normalize(n) for n in (product.name, *product.synonyms)}
-    return frozenset(form for n in names if n for form in (n, n + "s", n + "es"))
+    names = _names_of_product(office, op)
+    return frozenset(form for n in names for form in (n, n + "s", n + "es"))
 
 
 def possessor(office: Office, text: str, *, reader: str) -> str | None:
