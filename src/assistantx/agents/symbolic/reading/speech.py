@@ -60,6 +60,7 @@ _OWN = frozenset({"my", "our"})  # the requester's own thing
 _IN_PLACE = frozenset({"in", "at", "inside"})
 _RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
 _SUBJECTS = english.words("statement_subjects")
+_PLEASE = frozenset({"please", "pls", "plz", "plse", "pleeease"})
 _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
@@ -513,6 +514,10 @@ class SpeechActs:
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
         w = self._untitled(content(words))
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
+            return False
+        if set(words[1:]) & _PLEASE:
+            # "a copy of my file printed for Zhang please": asked, not told ("pls is the
+            # stapler here": a "please" that opens a question is read with the question)
             return False
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
