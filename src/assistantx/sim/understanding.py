@@ -112,8 +112,10 @@ def _without_full_names(office: Office, haystack: str) -> str:
 def mentioned_requests(office: Office, text: str) -> list[str]:
     """Request kinds the text mentions, in the order it mentions them. Things (item types
     other than products, facilities) are read first and taken out, so a word inside a thing's
-    name ("printer" in "label printer", "stamp" in "stamped envelope") is not a request."""
-    original = _words(text)
+    name ("printer" in "label printer", "stamp" in "stamped envelope") is not a request, nor
+    is a word of a colleague's full name ("lend Frank Szabó your tape gun" where "frank" is
+    the franking machine's verb)."""
+    original = _without_full_names(office, _words(text))
     things = [n for n, _ in _names(office)]
     products = {n for n, _ in _names(office, only_products=True)}
     things += [normalize(n) for f in office.facilities for n in (f.name, *f.synonyms)]

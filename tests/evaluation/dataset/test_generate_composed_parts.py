@@ -47,7 +47,29 @@ SIGN_THEN_STAMP = BaseInstruction(
     text="Get my drawings signed by Amara Osei and then stamped.",
     parts=(Part(kind="sign", signer="amara"), Part(kind="seal")),
 )
-BASES = (FILM_IN_ARCHIVE, FILM_IN_FRIDGE_TO_CYRUS, SIGN_THEN_COURIER, SIGN_THEN_STAMP)
+# Blind rounds 28 and 30's refused bases: one's own thing kept at a facility handed to a
+# colleague, and a signature followed by a hand-over to a third person (the optimal policy
+# took the thing from the requester's desk, where it never was, and ended "failed").
+KEPT_FILM_TO_CYRUS = BaseInstruction(
+    id="s6",
+    requester="ada",
+    text="Could you take my film over to Cyrus?",
+    parts=(Part(kind="deliver", item="film", to="cyrus"),),
+)
+SIGN_THEN_TO_LUC = BaseInstruction(
+    id="s7",
+    requester="ada",
+    text="Get Amara to sign my drawings and then take them to Luc.",
+    parts=(Part(kind="sign", signer="amara"), Part(kind="deliver", item="drawings", to="luc")),
+)
+BASES = (
+    FILM_IN_ARCHIVE,
+    FILM_IN_FRIDGE_TO_CYRUS,
+    SIGN_THEN_COURIER,
+    SIGN_THEN_STAMP,
+    KEPT_FILM_TO_CYRUS,
+    SIGN_THEN_TO_LUC,
+)
 
 
 def _codes(base: BaseInstruction, office: Office) -> list[tuple[str, ...]]:
@@ -170,3 +192,28 @@ def test_the_commands_generate_and_both_methods_complete_the_tasks(
         assert main([*args, "--runs", "1", "--out", str(out), "--quiet"]) == 0
         summary = json.loads((out / "summary.json").read_text())
         assert summary["levels"]["all"]["sr"]["mean"] == 1.0, method
+
+
+def test_ones_own_kept_film_is_taken_out_by_its_keeper_and_handed_to_the_colleague() -> None:
+    office = studio()
+    assert _asked(KEPT_FILM_TO_CYRUS, office) == ["cyrus", "otto"]
+    assert _codes(KEPT_FILM_TO_CYRUS, office) == [
+        ("otto", "film:ada", "deposit"),
+        ("cyrus", "film:ada", "collect"),
+    ]
+
+
+def test_signed_drawings_go_on_to_the_colleague_from_the_locker() -> None:
+    """As the embedded planner does it: signed, they stay in the locker and Luc takes them
+    out; nothing comes back to Ada first."""
+    office = studio()
+    assert _codes(SIGN_THEN_TO_LUC, office) == [
+        ("ada", "drawings:ada", "deposit"),
+        ("amara", "drawings:ada", "sign"),
+        ("luc", "drawings:ada", "collect"),
+    ]
+    assert build_plan(SIGN_THEN_TO_LUC, office).goal == [
+        {"signed": ["drawings:ada", "amara"]},
+        {"holds": ["luc", "drawings:ada"]},
+        {"informed": "ada"},
+    ]

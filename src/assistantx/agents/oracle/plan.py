@@ -291,7 +291,16 @@ def _add_part(
                 to, f"Could you be at your desk? The robot brings you something from {who}."
             )
             plan.add_role(role)
-            plan.visits.append(Visit(REQUESTER, REQUESTER, (Code(REQUESTER, item, "deposit"),)))
+            back = [(t, c) for t, c in plan.deliveries if t == REQUESTER and c.item == item]
+            if back:
+                # an earlier part's work leaves it in the locker ("get Amara to sign my
+                # drawings and then take them to Luc"): it goes on from there, not back first
+                plan.deliveries = [d for d in plan.deliveries if d not in back]
+                plan.goal = [m for m in plan.goal if m != {"holds": [a, item]}]
+            else:
+                # from where it is: the requester's desk, or the cupboard its keeper opens (a
+                # torque wrench kept in the parts store)
+                _put_in(plan, item, a, who, office)
             plan.deliveries.append((role.key, Code(role.key, item, "collect")))
             plan.add_goal({"holds": [to, item]})
         case "print":
