@@ -24,6 +24,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Lexicon,
     Mention,
 )
+from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
@@ -111,6 +112,7 @@ class MentionReader:
         if requester is not None:
             mentions = not_the_writer(mentions, requester)
         mentions = participle_adjectives(tokens, mentions)
+        mentions = without_states(tokens, mentions)  # "a torque wrench going spare"
         mentions = self._noun_uses(tokens, mentions)
         spaces = gaps(lexed.text, tokens)
         # "run it over to them": an errand carried across the office, to the one desk named

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import itertools
 
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -39,7 +41,7 @@ def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
     for one for the speaker; it is left in the request. "got the light meter back from Will
     yet?", "who's got the light meter?" and a bare "got a light meter?" stay questions
     (answered, an offer at most)."""
-    if len(terms.named(piece.lexed, "item")) != 1 or terms.named(piece.lexed, "person"):
+    if len(_things(piece)) != 1 or terms.named(piece.lexed, "person"):
         return False
     if not (_having_one(piece.words) or _one_anywhere(piece)):
         return False
@@ -55,7 +57,7 @@ def _wanted_by_the_asker(piece: Piece) -> bool:
     speaker as the subject of a modal after the thing ("... a stopwatch *I can* nab?", "...
     I could pinch"), whatever verb of taking follows. "a spare stopwatch" before the thing
     only says which kind: the question stays a question."""
-    items = [m for m in piece.lexed.mentions if m.kind == "item"]
+    items = _things(piece)
     if len(items) != 1:
         return False
     w = [t.word for t in piece.lexed.tokens]
@@ -63,6 +65,13 @@ def _wanted_by_the_asker(piece: Piece) -> bool:
     if _SPARE in after:
         return True
     return any(a in _SPEAKER and b in _MODALS for a, b in itertools.pairwise(after))
+
+
+def _things(piece: Piece) -> list[Mention]:
+    """The items the piece asks about, less a word said of one of them ("a torque wrench
+    *going spare*", ``said_of``)."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    return [m for m in without_states(tokens, mentions) if m.kind == "item"]
 
 
 def _having_one(w: list[str]) -> bool:
