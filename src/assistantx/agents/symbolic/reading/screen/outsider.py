@@ -151,6 +151,9 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
         given = before in _GIVING and _item_after(mentions, n)
         if before not in _TO and not given:
             continue
+        if before == "for" and _colleague_receives(msg):
+            continue  # "print my quote for the juke customer and give it to Robin": about
+
         if in_others_clause(tokens, breaks, mentions, start, later=piece.start > 0):
             continue  # "..., she wants to show it to the guest": why, not whom it goes to
         end = _described_where(tokens, breaks, n + 1, office_at)
@@ -181,6 +184,20 @@ def _described_where(
     ):
         end += 1
     return end if end > k else at
+
+
+def _colleague_receives(msg: Message) -> bool:
+    """Whether the message hands its thing to a colleague by name ("... and give it to
+    Robin", "hand Robin the quote"): a "for the customer" beside it says what the thing is
+    for, not whom it goes to."""
+    tokens = msg.lexed.tokens
+    return any(
+        m.kind == "person"
+        and not m.possessive
+        and m.start > 0
+        and (tokens[m.start - 1].word == "to" or tokens[m.start - 1].word in _GIVING)
+        for m in msg.lexed.mentions
+    )
 
 
 def _item_at(mentions: Sequence[Mention], at: int) -> bool:
