@@ -159,11 +159,10 @@ def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str
             k -= 1
         if tokens[k].word not in _TO_PLACE:
             continue
-        facilities = (
-            [office.facility(m.id)]
-            if m.kind == "facility"
-            else [f for f in office.facilities if f.location == m.id]
-        )
+        # a facility named is also the room it stands in ("down to the kit room", the
+        # kit cage's other name, where the washing machine stands too)
+        room = office.facility(m.id).location if m.kind == "facility" else m.id
+        facilities = [f for f in office.facilities if f.location == room]
         if _goes_to(office, frame, m.id if m.kind == "place" else None, facilities):
             continue
         there = [p.id for p in office.people if m.kind == "place" and p.location == m.id]
