@@ -159,10 +159,15 @@ def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str
             k -= 1
         if tokens[k].word not in _TO_PLACE:
             continue
-        # a facility named is also the room it stands in ("down to the kit room", the
-        # kit cage's other name, where the washing machine stands too)
-        room = office.facility(m.id).location if m.kind == "facility" else m.id
-        facilities = [f for f in office.facilities if f.location == room]
+        if m.kind == "place":
+            facilities = [f for f in office.facilities if f.location == m.id]
+        elif office.facility(m.id).operations:
+            facilities = [office.facility(m.id)]  # "to the legal desk": that desk's work
+        else:
+            # a store that runs nothing, named as the way to its room ("down to the kit
+            # room", the kit cage's other name): the room, where the washing machine is too
+            room = office.facility(m.id).location
+            facilities = [f for f in office.facilities if f.location == room]
         if _goes_to(office, frame, m.id if m.kind == "place" else None, facilities):
             continue
         there = [p.id for p in office.people if m.kind == "place" and p.location == m.id]
