@@ -614,7 +614,10 @@ class SpeechActs:
         if self._known is None:
             lex = self.lex
             phrases = (*lex.items, *lex.facilities, *lex.places, *lex.people, *lex.name_words)
-            self._known = frozenset(w for p in phrases for w in p.split())
+            # a whole name of one word ("scissors"), or a name's last word ("the kettle" of
+            # "staff kettle"); a word that only leads a longer name ("reg" of "reg plates")
+            # names nothing alone: "reg is on the job card" is told
+            self._known = frozenset(p.split()[-1] for p in phrases if p)
         return self._known
 
     def _work_obliged(self, w: list[str], n: int) -> bool:
