@@ -1,0 +1,46 @@
+"""Blind round 28's classes on items, operations and places, on an office no sentence was
+written for (``helpers.packing_loft``): a correction to a colleague's name that is also an
+ordinary word ("sorry not sam, robin") replaces the name said before, even one two people
+share."""
+
+from __future__ import annotations
+
+import pytest
+
+from helpers.packing_loft import packing_loft
+from helpers.reading import frame_reader
+
+_frame = frame_reader(packing_loft, "lena")
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("pls print my file and take the copies to sam. sorry not sam, robin", "print"),
+        ("take my file to sam. sorry not sam, robin", "send_file"),
+        ("take my file to sam. sorry, robin", "send_file"),
+        ("print my file for Sam Reyes, no wait, robin", "print"),
+    ],
+)
+def test_a_lower_case_name_said_as_a_correction_replaces_the_receiver(text: str, kind: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [(kind, "file", "robin")]
+
+
+def test_a_shared_name_said_as_the_correction_is_still_asked_about() -> None:
+    """ "sorry not robin, sam": two people are called Sam, so which is asked; no Sam is
+    picked for the requester."""
+    frame = _frame("take my file to robin. sorry not robin, sam")
+    assert frame.tasks == [] and frame.question is not None, frame
+    assert "Sam Kowal" in frame.question and "Sam Reyes" in frame.question
+
+
+def test_a_shared_name_left_uncorrected_is_asked_about() -> None:
+    frame = _frame("take my file to sam")
+    assert frame.tasks == [] and frame.question is not None, frame
+
+
+def test_news_after_sorry_names_no_receiver() -> None:
+    frame = _frame("take my file to Sam Reyes. sorry, robin has the other one")
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("send_file", "sam_r")], frame
