@@ -70,6 +70,7 @@ def raw_packing_loft() -> dict[str, Any]:
             ob.facility(
                 "copier",
                 "copier",
+                synonyms=["printer"],
                 at="back_office",
                 guards=["robin"],
                 operations=["print", "photocopy"],

@@ -44,3 +44,33 @@ def test_a_shared_name_left_uncorrected_is_asked_about() -> None:
 def test_news_after_sorry_names_no_receiver() -> None:
     frame = _frame("take my file to Sam Reyes. sorry, robin has the other one")
     assert [(t.kind, t.recipient) for t in frame.tasks] == [("send_file", "sam_r")], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can u run my labels off on the printer and bring em here",
+        "could you run my file off please",
+        "run Otto's file off for me",
+        "can you run off my labels",
+    ],
+)
+def test_a_declared_particle_verb_with_its_object_between_asks_for_its_operation(
+    text: str,
+) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item) for t in frame.tasks] == [("print", "file")], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "to"),
+    [
+        ("can you run my file over to Robin", "robin"),
+        ("run my file off to Robin", "robin"),
+        ("can you run my file to Otto", "otto"),
+    ],
+)
+def test_the_plain_verb_or_a_particle_before_to_still_runs_an_errand(text: str, to: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("send_file", to)], frame
