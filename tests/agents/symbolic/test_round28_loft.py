@@ -74,3 +74,34 @@ def test_a_declared_particle_verb_with_its_object_between_asks_for_its_operation
 def test_the_plain_verb_or_a_particle_before_to_still_runs_an_errand(text: str, to: str) -> None:
     frame = _frame(text)
     assert [(t.kind, t.recipient) for t in frame.tasks] == [("send_file", to)], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "need a cold pack for the van, the delivery run's a long one today",
+        "need a cold pack for the van",
+        "can I have an ice pack for the cool box",
+    ],
+)
+def test_a_thing_wanted_for_a_facility_that_takes_no_such_thing_is_fetched(text: str) -> None:
+    """ "for the van" says what the cold pack is for; on main the van's send-out service was
+    asked of it and declined."""
+    frame = _frame(text)
+    assert frame.decline is None and frame.question is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("transfer", "ice_pack", "lena")
+    ], frame
+
+
+@pytest.mark.parametrize(
+    "text", ["my sample for the cool box please", "put my sample in the cool box"]
+)
+def test_a_thing_the_facility_takes_is_still_its_service(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item) for t in frame.tasks] == [("heat", "sample")], frame
+
+
+def test_a_parcel_for_the_van_still_asks_where_it_goes() -> None:
+    frame = _frame("could you take my parcel for the van")
+    assert frame.tasks == [] and frame.question is not None, frame
