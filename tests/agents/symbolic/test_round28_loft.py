@@ -105,3 +105,25 @@ def test_a_thing_the_facility_takes_is_still_its_service(text: str) -> None:
 def test_a_parcel_for_the_van_still_asks_where_it_goes() -> None:
     frame = _frame("could you take my parcel for the van")
     assert frame.tasks == [] and frame.question is not None, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "second"),
+    [
+        ("Grab me a ruler from Otto and a stapler while you're at it", "stapler"),
+        ("Grab me a ruler from Otto and a cable tie", "cable_tie"),
+    ],
+)
+def test_a_source_said_of_one_item_is_not_the_next_ones(text: str, second: str) -> None:
+    """ "a ruler from Otto and a stapler": Otto's ruler; the stapler is left to the planner
+    (on main Otto was asked for both, and has no cable ties at all)."""
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.owner) for t in frame.tasks] == [
+        ("transfer", "ruler", "otto"),
+        ("transfer", second, None),
+    ], frame
+
+
+def test_a_source_said_after_both_items_is_both_ones() -> None:
+    frame = _frame("grab me a ruler and a stapler from Otto")
+    assert [(t.item, t.owner) for t in frame.tasks] == [("ruler", "otto"), ("stapler", "otto")]

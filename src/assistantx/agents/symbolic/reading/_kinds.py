@@ -75,9 +75,7 @@ class Scene:
     def owner(self, m: Mention | None) -> str | None:
         if m is None:
             return None
-        return self.roles.owners.get(m.start) or (
-            self.roles.source[-1] if self.roles.source else None
-        )
+        return self.roles.owners.get(m.start) or self.roles.source_for(m.start)
 
 
 @dataclass(frozen=True)
