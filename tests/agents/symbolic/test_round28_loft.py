@@ -127,3 +127,24 @@ def test_a_source_said_of_one_item_is_not_the_next_ones(text: str, second: str) 
 def test_a_source_said_after_both_items_is_both_ones() -> None:
     frame = _frame("grab me a ruler and a stapler from Otto")
     assert [(t.item, t.owner) for t in frame.tasks] == [("ruler", "otto"), ("stapler", "otto")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "out of cable ties on the packing bench, bring some over?",
+        "we've run out of the cable ties on the packing bench, could you bring some",
+    ],
+)
+def test_where_the_requester_ran_out_is_not_where_the_thing_is_kept(text: str) -> None:
+    """On main "on the packing bench" was read as where the ties are kept, and none are."""
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("transfer", "cable_tie", "lena")
+    ], frame
+
+
+def test_a_thing_asked_for_at_a_place_that_keeps_none_is_still_asked_about() -> None:
+    frame = _frame("bring me the cable ties on the packing bench")
+    assert frame.tasks == [] and frame.question is not None, frame
