@@ -1,9 +1,9 @@
 """A packing loft for the reader's tests of blind round 28's classes on items, operations and
 places (the round's own office and sentences were never read): a cool-box service that packs a
 sample (its verb also the last word of an item's name, "ice pack"), a copier that prints a
-file (also "run off") and photocopies a paper, a van that sends a parcel out, a stamp desk, a
-binder that comb-binds a manuscript, supplies kept in the stores; two people called Sam, and one
-person who owns a register kept in a cabinet."""
+file (also "run off") and photocopies a paper, a van that sends a parcel out, an office stamp
+Robin keeps, a binder that comb-binds a manuscript, supplies kept in the stores; two people
+called Sam, and one person who owns a register kept in a cabinet."""
 
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ _PEOPLE = (
     ),
     ob.person("sam_r", "Sam Reyes", "ruler"),
     ob.person("sam_k", "Sam Kowal"),
-    ob.person("robin", "Robin Hale"),
+    ob.person("robin", "Robin Hale", "office_stamp"),
 )
 
 
@@ -50,6 +50,7 @@ def raw_packing_loft() -> dict[str, Any]:
             ob.item("invoice", "invoice", "personal"),
             ob.item("manuscript", "manuscript", "personal", synonyms=["ms"]),
             ob.item("parcel", "parcel"),
+            ob.item("office_stamp", "office stamp", synonyms=["stamp"], seals=True),
         ],
         operations=[
             ob.operation("print", "print", "run off", input="file", product="printout"),
@@ -63,7 +64,6 @@ def raw_packing_loft() -> dict[str, Any]:
                 input="parcel",
                 sends_out=True,
             ),
-            ob.operation("stamp", "stamp", name="office stamp", input="invoice"),
             ob.operation("bind", "comb-bind", "bind", input="manuscript"),
         ],
         facilities=[
@@ -78,9 +78,6 @@ def raw_packing_loft() -> dict[str, Any]:
             ),
             ob.facility("cool_box", "cool box", at="bench", guards=["robin"], operations=["pack"]),
             ob.facility("van", "van", at="yard", guards=["robin"], operations=["send_out"]),
-            ob.facility(
-                "stamp_desk", "stamp desk", at="back_office", guards=["robin"], operations=["stamp"]
-            ),
             ob.facility(
                 "binder", "binder", at="back_office", guards=["robin"], operations=["bind"]
             ),

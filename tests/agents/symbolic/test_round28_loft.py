@@ -148,3 +148,27 @@ def test_where_the_requester_ran_out_is_not_where_the_thing_is_kept(text: str) -
 def test_a_thing_asked_for_at_a_place_that_keeps_none_is_still_asked_about() -> None:
     frame = _frame("bring me the cable ties on the packing bench")
     assert frame.tasks == [] and frame.question is not None, frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "This invoice needs the office stamp on it before it goes to Acme, could you sort that?",
+        "my invoice needs stamping before it goes to Acme",
+        "can you stamp my invoice before they go out to Acme",
+    ],
+)
+def test_a_name_in_a_clause_of_a_later_event_is_context(text: str) -> None:
+    """ "before it goes to Acme" says when; on main who Acme is was asked."""
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("seal", "invoice", "lena")]
+
+
+@pytest.mark.parametrize(
+    "text", ["take my invoice to Acme", "stamp my invoice before you take it to Acme"]
+)
+def test_a_name_the_robot_is_to_take_the_thing_to_is_still_asked_about(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is not None, frame
+    assert "Acme" in frame.question
