@@ -172,3 +172,35 @@ def test_a_name_the_robot_is_to_take_the_thing_to_is_still_asked_about(text: str
     frame = _frame(text)
     assert frame.tasks == [] and frame.question is not None, frame
     assert "Acme" in frame.question
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["can you get my ms comb-bound", "could you comb-bind my ms please"],
+)
+def test_a_things_name_that_is_a_title_is_the_thing_after_a_possessive(text: str) -> None:
+    """ "my ms" (the office lists "ms" for its manuscript): on main the title's word was
+    dropped and which item was asked."""
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.owner) for t in frame.tasks] == [("heat", "manuscript", "lena")]
+
+
+def test_the_title_before_a_name_is_still_a_title() -> None:
+    frame = _frame("bring my ms to Ms Hale")
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("transfer", "manuscript", "robin")
+    ], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Otto, I think, has a ruler - could I borrow it?",
+        "Otto, I believe, has a ruler, could I borrow it?",
+    ],
+)
+def test_a_parenthetical_i_think_keeps_the_owner(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "ruler", "otto", "lena")
+    ], frame
