@@ -204,3 +204,27 @@ def test_a_parenthetical_i_think_keeps_the_owner(text: str) -> None:
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("transfer", "ruler", "otto", "lena")
     ], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Need the register for the check. Otto's got the keys so it'll have to come out of "
+        "the cabinet via him",
+        "Need the register. it's in the cabinet",
+        "bring me the register, it's kept in the cabinet",
+    ],
+)
+def test_the_place_said_in_a_sentence_of_its_own_names_the_one_kept_there(text: str) -> None:
+    """Only Otto keeps a register, in the cabinet: his, asked of him (on main: "Whose
+    register do you mean?")."""
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "register", "otto", "lena")
+    ], frame
+
+
+def test_the_register_with_no_place_said_is_still_asked_about() -> None:
+    frame = _frame("Need the register")
+    assert frame.tasks == [] and frame.question is not None, frame
