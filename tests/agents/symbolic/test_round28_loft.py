@@ -228,3 +228,27 @@ def test_the_place_said_in_a_sentence_of_its_own_names_the_one_kept_there(text: 
 def test_the_register_with_no_place_said_is_still_asked_about() -> None:
     frame = _frame("Need the register")
     assert frame.tasks == [] and frame.question is not None, frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "photocopy my invoice please, need 1 for the files",
+        "photocopy my invoice please, need two for the files",
+        "photocopy my invoice please, need two.",
+    ],
+)
+def test_need_and_a_number_after_a_request_is_how_many_the_speaker_needs(text: str) -> None:
+    """ "need 1 for the files" (the copy asked for; on main whom to pass the file on to was
+    asked, as if the files were wanted)."""
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("copy", "invoice", "lena")]
+
+
+def test_need_and_a_number_of_things_named_still_asks_for_them() -> None:
+    frame = _frame("bring me a ruler, need 2 staplers too")
+    assert [(t.kind, t.item) for t in frame.tasks] == [
+        ("transfer", "ruler"),
+        ("transfer", "stapler"),
+    ], frame
