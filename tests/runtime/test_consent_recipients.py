@@ -14,6 +14,7 @@ from assistantx.runtime import consent
 from assistantx.runtime.recipients import named_recipients
 from helpers.clinic import clinic, raw_clinic
 from helpers.consent_memory import answered, exchange, memory
+from helpers.packing_loft import packing_loft
 from helpers.watch_room import watch_room
 
 RECIPIENT = (
@@ -202,3 +203,17 @@ def test_a_rank_one_person_holds_names_them() -> None:
     assert named_recipients(office, stm) == {"frank"}
     stm = memory("kemal", "send my spreadsheet to the crew manager")
     assert named_recipients(office, stm) == set()
+
+
+def test_a_lower_case_name_said_as_a_correction_is_the_receiver() -> None:
+    """ "to sam. sorry not sam, robin" (blind round 28's class): the guard agrees with the
+    reader that robin, not either Sam, receives; a name word said before more words is not
+    a correction alone."""
+    office = packing_loft()
+    for text in (
+        "pls print my file and take the copies to sam. sorry not sam, robin",
+        "take my file to sam. sorry, robin",
+    ):
+        assert named_recipients(office, memory("lena", text)) == {"robin"}, text
+    stm = memory("lena", "take my file to sam. sorry not sam, robin told me")
+    assert named_recipients(office, stm) == {"sam_k", "sam_r"}

@@ -213,7 +213,9 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
             # penny", "May's desk"; not "in May", "the grace period"); a role title is a role
             word = key[0]
             if len(key) == 1 and word not in _ROLE_TITLES and is_word_name(word):
-                if not _written_as_name(words, n, items, name_words):
+                if not _written_as_name(words, n, items, name_words) and not _said_alone_as_fix(
+                    words, n
+                ):
                     continue
             hit = _Mention(people, n, n + len(key), words[n + len(key) - 1].possessive)
             break
@@ -223,6 +225,17 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
         out.append(hit)
         n = hit.end
     return out
+
+
+def _said_alone_as_fix(words: list[_Word], n: int) -> bool:
+    """ "to sam. sorry not sam, robin": a name word said alone as a correction, at its
+    sentence's end, is the person (the reader reads it so, ``screen.correction``): a
+    correction replaces what was just said, and a bird is nothing it could replace."""
+    if n + 1 < len(words) and not words[n + 1].opens:
+        return False
+    at = n - 2 if n >= 2 and words[n - 2].folded == "not" else n  # "not sam, robin"
+    said = tuple(w.folded for w in words[:at])
+    return any(said[len(said) - len(mark) :] == mark for mark in _CORRECTION_MARKS)
 
 
 def _before(words: list[_Word], at: int) -> str:

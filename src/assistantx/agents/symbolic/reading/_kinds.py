@@ -75,9 +75,7 @@ class Scene:
     def owner(self, m: Mention | None) -> str | None:
         if m is None:
             return None
-        return self.roles.owners.get(m.start) or (
-            self.roles.source[-1] if self.roles.source else None
-        )
+        return self.roles.owners.get(m.start) or self.roles.source_for(m.start)
 
 
 @dataclass(frozen=True)
@@ -426,8 +424,20 @@ class TaskReader:
             )
             return says_has_some([a.ids[0] for a in after], m.possessive)
 
+        def what_it_is_for(m: Mention) -> bool:
+            """ "need a cold pack for the van": a thing wanted for a facility whose
+            services take no such thing is for using there, no service asked of it."""
+            inputs = {
+                self.office.operation(op).input for op in self.office.facility(m.id).operations
+            }
+            return word_before(m) == "for" and bool(items) and not inputs & {i.id for i in items}
+
         # "bring me Bram's headlamp from the charging shelf": the facility is where it is
-        treating = [m for m in treating if not persons_place(m) and not has_some(m)]
+        treating = [
+            m
+            for m in treating
+            if not persons_place(m) and not has_some(m) and not what_it_is_for(m)
+        ]
         if any(word_before(m) not in _FROM_FACILITY for m in treating):
             cues.add("heat")
 

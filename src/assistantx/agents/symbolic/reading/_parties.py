@@ -69,6 +69,7 @@ class Roles:
     recipient_at: list[int] = field(default_factory=list)  # token start of each recipient
     returned_to: list[str] = field(default_factory=list)  # "back to X": X owns the item
     source: list[str] = field(default_factory=list)
+    source_at: list[int] = field(default_factory=list)  # token start of each source
     actor: list[str] = field(default_factory=list)
     bare: list[str] = field(default_factory=list)
     owners: dict[int, str] = field(default_factory=dict)  # item mention start → owner id
@@ -76,6 +77,16 @@ class Roles:
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
         self.recipient_at.append(at)
+
+    def source_for(self, item_start: int) -> str | None:
+        """Where an item with no owner of its own comes from: the clause's last source,
+        unless that source was said of an item before it ("a ruler *from Otto* and a
+        stapler": Otto's ruler, the stapler anyone's) and this item comes after it."""
+        if not self.source:
+            return None
+        who, at = self.source[-1], self.source_at[-1]
+        bound = any(start < at and owner == who for start, owner in self.owners.items())
+        return None if bound and item_start > at else who
 
     def recipient_between(self, start: int, end: int) -> str | None:
         """The last recipient named in tokens [start, end) ("a coffee *for me* and ...")."""
@@ -236,6 +247,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             roles.returned_to.append(who)
         case "source":
             roles.source.append(who)
+            roles.source_at.append(m.start)
         case "actor":
             roles.actor.append(who)
         case "bare":

@@ -19,7 +19,7 @@
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
 from assistantx.agents.symbolic.reading._objects import modifiers
@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
+from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
@@ -76,12 +77,15 @@ class FrameReader:
         named: Sequence[NamedItem] = (),
         *,
         to_self: bool = False,
+        kept_said: Mapping[str, str] | None = None,
     ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
         who the whole message says has an item now (``holder``), for one given back;
         ``named``: the items the whole message names (``named_items``), for a task whose
         object was no item word of the office; ``to_self``: the requester answered "me" to
-        whom their own item or file goes, so it goes to them, not asked again."""
+        whom their own item or file goes, so it goes to them, not asked again;
+        ``kept_said``: item type → its one keeper where the whole message says the thing
+        is kept (``said_kept``)."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -162,6 +166,8 @@ class FrameReader:
         tasks = [self._given_back(t, holder) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
+        # "Need the register. ... it'll have to come out of the cabinet": the one kept there
+        tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
         question = (
             self._uncovered(objects, tasks)
             or which_work(self.office, tasks, readings.mentions, requester)

@@ -92,6 +92,8 @@ def place_phrases(
         prep, where = ms[n + 1], ms[n + 2]
         if prep.start != m.end or tokens[prep.start].word not in _AT:
             continue
+        if _ran_out_of(tokens, m.start):
+            continue  # "out of cable ties on the bench": where they ran out, not where kept
         if any(t.word not in _ARTICLES for t in tokens[prep.end : where.start]):
             continue
         if where.kind == "facility":
@@ -105,6 +107,15 @@ def place_phrases(
         kept = tuple(dict.fromkeys(k.owner for k in there if k.type_id == m.id))
         out.append(PlacePhrase(m, place, kept, definite))
     return out
+
+
+def _ran_out_of(tokens: Sequence[Token], start: int) -> bool:
+    """ "(we've run) out of cable ties on the packing bench": the item is what someone is
+    out of, and the place after it is where they are without it, not where one is kept."""
+    k = start
+    while k > 0 and tokens[k - 1].word in _ARTICLES | _INDEFINITE:
+        k -= 1
+    return k >= 2 and tokens[k - 1].word == "of" and tokens[k - 2].word == "out"
 
 
 def _owner_name(office: Office, owner: str) -> str:

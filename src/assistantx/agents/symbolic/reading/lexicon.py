@@ -111,6 +111,8 @@ _DISTANCE_COPULAS = frozenset({"is", "s", "are", "was", "were", "isnt", "arent",
 # "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
 _EVERYDAY = english.phrase_table("everyday_names")
 # What makes one of those names that is also a verb ("brew") a thing: an article before it
+# The words before a thing's name that say whose or which one it is ("my ms", "the ms").
+_OWNING_WORDS = frozenset({"my", "your", "his", "her", "our", "their", "the", "this", "that"})
 _THING_ARTICLES = frozenset({"a", "an", "another", "the", "some", "quick", "nice", "proper"})
 
 
@@ -241,7 +243,7 @@ class Lexicon:
                 lex.people[phrase] = set(holders)
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
-                key = key_of(name)
+                key = key_of(name) or _title_word(name)  # "ms" for a manuscript
                 if not key:
                     continue
                 for variant in (key, _plural(key)):
@@ -437,7 +439,10 @@ class Lexicon:
         content = [
             i
             for i, t in enumerate(tokens)
-            if t.word not in TITLES or self._role_at(tokens, i) or self._initial_at(tokens, i)
+            if t.word not in TITLES
+            or self._role_at(tokens, i)
+            or self._initial_at(tokens, i)
+            or self._title_naming_a_thing(tokens, i)
         ]
         mentions: list[Mention] = []
         k = 0
@@ -522,6 +527,18 @@ class Lexicon:
         nxt = tokens[i + 1] if i + 1 < len(tokens) else None
         ends = nxt is None or nxt.opens or nxt.after_pause or nxt.word in _AFTER_NAME
         return tokens[i].possessive or ends
+
+    def _title_naming_a_thing(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "my ms": a title's word ("Ms") that is also a name of one of the office's things
+        ("ms" for its manuscript), after a possessive or an article and with no name after
+        it, is the thing; "Ms Pike" stays a title."""
+        if tokens[i].word not in self.items or i == 0 or tokens[i].word in _THING_ARTICLES:
+            return False
+        before = tokens[i - 1]
+        if not (before.possessive or before.word in _OWNING_WORDS):
+            return False
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
+        return nxt not in self.people and nxt not in self.name_words
 
     def _role_at(self, tokens: Sequence[Token], i: int) -> bool:
         """ "by the manager": a role title with no name after it names the one it stands for."""
@@ -750,6 +767,13 @@ def key_of(name: str) -> str:
     ``okeeffe``, so "First O'Surname's ruler" finds the name), after a possessive "'s"."""
     folded = re.sub(r"'s\b", "", language.fold(name))
     return normalize(_INNER_APOSTROPHE.sub("", folded))
+
+
+def _title_word(name: str) -> str:
+    """A thing's name that is one title's word ("ms" for a manuscript), which ``key_of``
+    drops as a title: kept as the thing's name (read as one only where no name follows)."""
+    folded = language.fold(name).strip(". ")
+    return folded if folded in TITLES and folded not in _THING_ARTICLES else ""
 
 
 def inflections(verb: str) -> set[str]:

@@ -84,6 +84,7 @@ from assistantx.agents.symbolic.reading.parts import (
     unread_part,
 )
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
+from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
@@ -209,6 +210,7 @@ class InstructionParser:
             holder(whole, requester),
             named_items(whole, requester),
             to_self=to_self,
+            kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
         )
         if frame.understood:
             # "need cable ties, the art room has some": the one kept where the requester said

@@ -17,6 +17,7 @@ from dataclasses import dataclass, replace
 from assistantx.agents.symbolic.reading.codes import code_of_a_thing
 from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
 from assistantx.agents.symbolic.reading.errand import errand_verbs, facility_pronouns
+from assistantx.agents.symbolic.reading.event_clause import in_later_event
 from assistantx.agents.symbolic.reading.lexicon import (
     COMMON,
     PRONOUNS,
@@ -318,6 +319,8 @@ class MentionReader:
                 out.append(f"Who do you mean by {said!r}: {names}?")
             if m.kind == "word" and self._paper_about(tokens, mentions, n):
                 continue  # "the insurance form for Biscuit": whom the paper is about
+            if m.kind == "word" and in_later_event(tokens, m.start):
+                continue  # "before it goes to Acme": when, by what happens to it later
             if m.kind == "word" and _unknown_name(tokens, mentions, n):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")

@@ -21,7 +21,7 @@ thing after a determiner ("at the heat press"), and stays one.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms
@@ -125,6 +125,7 @@ class VerbPhrases:
         first; the joined token's text is the phrase as typed ("3D-print")."""
         if not self.forms:
             return list(tokens)
+        tokens = self._particles_joined(tokens)
         spans = _spans(text, tokens)
         out: list[Token] = []
         n = 0
@@ -150,6 +151,17 @@ class VerbPhrases:
             n += joined
         return out
 
+    def _particles_joined(self, tokens: Sequence[Token]) -> list[Token]:
+        """ "run my labels off on the printer": a declared verb with its particle said
+        with its object between them, moved next to its verb ("run off my labels"), as
+        English lets a particle stand after a short object (``separated_particle``)."""
+        out = list(tokens)
+        for n in range(len(out)):
+            at = separated_particle(out, n, self.forms)
+            if at is not None:
+                out.insert(n + 1, out.pop(at))
+        return out
+
     def _phrase_at(self, tokens: Sequence[Token], n: int) -> tuple[int, str]:
         """How many tokens from ``n`` make one declared phrase, and its form (0: none)."""
         for size in range(min(self.longest, len(tokens) - n), 1, -1):
@@ -165,6 +177,36 @@ class VerbPhrases:
                 continue  # "at the heat press": the machine, not its work
             return size, said
         return 0, ""
+
+
+# The most words of an object between a verb and its particle ("run *my new labels* off").
+_OBJECT_WORDS = 4
+# Words that end a verb's object: what follows is no longer the thing the verb acts on.
+_OBJECT_ENDS = frozenset(
+    {"to", "for", "on", "in", "at", "with", "from", "and", "then", "but", "or", "by", "into"}
+)
+
+
+def separated_particle(tokens: Sequence[Token], n: int, forms: Mapping[str, str]) -> int | None:
+    """Where the particle of a declared phrasal verb said at ``n`` stands, after an object
+    of a few words ("run *em* off", "run my labels off"), or None. Not when the particle
+    opens a "to" of its own ("run it off to Sam": hurried over, an errand's words), nor
+    across a pause or a sentence's end, nor when the verb is already followed by it."""
+    verb = tokens[n].word
+    if tokens[n].possessive or n + 1 >= len(tokens):
+        return None
+    if f"{verb} {tokens[n + 1].word}" in forms:
+        return None  # "run off my labels": already together
+    for k in range(n + 1, min(len(tokens), n + 2 + _OBJECT_WORDS)):
+        t = tokens[k]
+        if t.opens or t.after_pause:
+            return None
+        if k > n + 1 and t.word in _PARTICLES and f"{verb} {t.word}" in forms:
+            after = tokens[k + 1].word if k + 1 < len(tokens) else ""
+            return k if after != "to" else None
+        if t.word in _OBJECT_ENDS or t.word in _PARTICLES:
+            return None
+    return None
 
 
 def _spans(text: str, tokens: Sequence[Token]) -> list[tuple[int, int]]:

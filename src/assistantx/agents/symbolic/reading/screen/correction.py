@@ -87,12 +87,17 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
+    alone = not mentions  # "sorry not sam, robin": a name word read as the ordinary word
+    if alone:
+        mentions = _name_said_alone(terms, tokens)
     if len(mentions) == 2 and _same_item_again(terms, mentions, before):
         mentions = mentions[:1]  # "I meant Mao's seal": the owner is what is corrected
     # a name several people may have is kept as said: the reader asks whom it means later
     if len(mentions) != 1 or (len(mentions[0].ids) != 1 and mentions[0].kind != "person"):
         return text, []
     new = mentions[0]
+    if new.kind == "person" and not new.possessive and _subject_of_news(tokens, new.end):
+        return text, []
     names = spellings(terms, new.kind, before)
     if rejected:
         said_no = " ".join(t.text for t in rejected)
@@ -105,10 +110,42 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         return text, []
     old = spots[-1]
     said = new.text.replace("’", "'").removesuffix("'s")
+    if alone:
+        # "robin" said alone: written as the person's name, so no later stage takes the
+        # lower-case word for the ordinary one
+        said = terms.office.person(new.ids[0]).name
     if new.kind == "item":
         said = terms.office.item_type(new.ids[0]).name
     fixed = before[: old.start()] + said + before[old.end() :] + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+
+# Words after a name that make it the subject of what follows ("sorry, Otto has it")
+_SUBJECT_AFTER = frozenset({"has", "have", "is", "was", "will", "can", "could", "might", "s"})
+
+
+def _subject_of_news(tokens: Sequence[Token], end: int) -> bool:
+    """ "take my file to Sam. sorry, Otto has the other one": a person named before a verb
+    after "sorry" is the subject of news, not the receiver corrected (the consent guard reads
+    it so too)."""
+    if end >= len(tokens):
+        return False
+    after = tokens[end].word
+    return after in _SUBJECT_AFTER or language.is_finite_verb(after)
+
+
+def _name_said_alone(terms: Terms, tokens: Sequence[Token]) -> list[Mention]:
+    """ "to sam. sorry not sam, robin": a correction that is one name word of one colleague
+    names them, though the word is also an ordinary one (a robin): a correction replaces what
+    was just said, and a bare bird or month is nothing it could replace a person or an item
+    with."""
+    if len(tokens) != 1:
+        return []
+    ids = terms.lex.name_words.get(tokens[0].word, set())
+    if len(ids) != 1:
+        return []
+    token = tokens[0]
+    return [Mention("person", 0, 1, tuple(ids), token.possessive, token.text)]
 
 
 def _last_of_chain(after: str) -> str:

@@ -21,11 +21,19 @@ _CANT = re.compile(rf"{_OPENS}(can'?t|cannot|couldn'?t)\s+([a-z]+)\b", re.IGNORE
 # "just knocked ...": "just" and a past form
 _JUST = re.compile(rf"{_OPENS}(just)\s+([a-z]+)\b", re.IGNORECASE)
 _ASKED_OF = english.words("request_askees") | english.words("subject_pronouns")
+# "photocopy my invoice, need 1 for the files": after a request, "need" and a number with no
+# noun of its own is how many of what was asked the speaker needs (never at the message's
+# start, nor with a thing named: "need two pens" asks)
+_NEED_COUNT = re.compile(
+    r"([.!?;,]\s*|\n\s*)(need)\s+"
+    r"(?=(?:\d+|one|two|three|four|five|a\s+couple)\s*(?:for\b|[.!?,;]|$))",
+    re.IGNORECASE,
+)
 
 
 def subject_restored(text: str) -> tuple[str, list[Evidence]]:
-    """``text`` with "I" back before a clause that opens with "been", "can't" + a verb or
-    "just" + a past form."""
+    """``text`` with "I" back before a clause that opens with "been", "can't" + a verb,
+    "just" + a past form, or (after a request) "need" + a number."""
     found: list[Evidence] = []
 
     def been(match: re.Match[str]) -> str:
@@ -46,6 +54,11 @@ def subject_restored(text: str) -> tuple[str, list[Evidence]]:
         found.append(Evidence(words=match.group(0).strip(" ,.;"), meaning="I just (the speaker)"))
         return f"{match.group(1)}I {match.group(2)} {match.group(3)}"
 
+    def need(match: re.Match[str]) -> str:
+        found.append(Evidence(words=match.group(2), meaning="I need (the speaker)"))
+        return f"{match.group(1)}I {match.group(2)} "
+
     text = _BEEN.sub(been, text)
     text = _CANT.sub(cant, text)
+    text = _NEED_COUNT.sub(need, text)
     return _JUST.sub(just, text), found

@@ -1,0 +1,68 @@
+"""Where the requester says the thing they ask for will come from, in a sentence of its own:
+"Need the register for the check. Otto's got the keys so it'll have to come *out of the
+cabinet* via him", "... it's kept in the cabinet" (the frames stage, for a task whose
+owner no word of the request says).
+
+A place or facility of the office said after "out of", or after "it's (kept) in/at", names
+where the thing is kept. An item type exactly one owner keeps there is theirs (a colleague's
+belonging is still asked of them as usual; a supply's owner part is the facility); none or
+several there say nothing, and whose is asked as before.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.kept_items import items_kept_at
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core.office import Office
+from assistantx.core.task_schema import Task
+
+_ARTICLES = frozenset({"the", "a", "an", "our", "that"})
+_IN = frozenset({"in", "at", "inside"})
+_BE = frozenset({"s", "is", "are", "re"})
+_SUBJECTS = frozenset({"it", "they", "its", "theyre"})
+
+
+def kept_where_said(
+    office: Office, tokens: Sequence[Token], mentions: Sequence[Mention]
+) -> dict[str, str]:
+    """Item type → the one owner part that keeps it at a place the text says the thing
+    comes out of or is in; types kept there by several owners are left out."""
+    owners: dict[str, set[str]] = {}
+    for m in mentions:
+        if m.kind not in ("facility", "place") or not _said_as_where_it_is(tokens, m.start):
+            continue
+        for kept in items_kept_at(office, m.kind, m.ids[0]):
+            owners.setdefault(kept.type_id, set()).add(kept.owner)
+    return {item: next(iter(who)) for item, who in owners.items() if len(who) == 1}
+
+
+def _said_as_where_it_is(tokens: Sequence[Token], start: int) -> bool:
+    """ "(come) out of the cabinet", "it's (kept) in the cabinet"."""
+    k = start
+    while k > 0 and tokens[k - 1].word in _ARTICLES:
+        k -= 1
+    words = [t.word for t in tokens[max(0, k - 4) : k]]
+    if words[-2:] == ["out", "of"]:
+        return True
+    if not words or words[-1] not in _IN:
+        return False
+    rest = words[:-1]
+    if rest and rest[-1] == "kept":
+        rest = rest[:-1]
+    if rest and rest[-1] in _BE:
+        rest = rest[:-1]
+    return bool(rest) and rest[-1] in _SUBJECTS
+
+
+def owned_as_said(task: Task, kept: dict[str, str]) -> Task:
+    """A fetch of an item whose owner the request leaves unsaid, from the one owner that
+    keeps it where the text says it is."""
+    if task.kind != "transfer" or task.item is None or task.owner is not None or task.source:
+        return task
+    owner = kept.get(task.item)
+    if owner is None or owner == task.recipient:
+        return task
+    return task.model_copy(update={"owner": owner})
