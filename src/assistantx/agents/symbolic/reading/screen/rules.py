@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
@@ -59,6 +60,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", unsafe),
     ("destructive", destructive),
     ("unsupported", outside_account),
+    ("unsupported", absent_owner),
     ("unsupported", covert),
     ("unsupported", break_in),
     ("unplaced", unplaced),
