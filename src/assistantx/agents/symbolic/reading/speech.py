@@ -34,6 +34,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
+from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
 
@@ -397,6 +398,8 @@ class SpeechActs:
             return Act("thanks", relay=True)  # "thank Rich for the clipboard"
         if asked or self._command_inside(w):
             return None  # "could you bring ...", "so grateful to you fetch me ..."
+        if thanks_ahead(w):
+            return None  # "I'd be grateful for a box of staples": asked, with thanks ahead
         if set(w[:3]) & _THANKS:
             return Act("thanks")  # "thanks ...", "big thank you for ...", "much appreciated"
         if self._done_for_me(w):
