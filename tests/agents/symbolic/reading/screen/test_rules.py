@@ -22,6 +22,7 @@ def test_the_rules_in_priority_order() -> None:
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "destructive",
         "unsupported",  # a send to an account outside ("to my personal gmail")
+        "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
