@@ -38,7 +38,7 @@ def raw_tyre_bay() -> dict[str, Any]:
             ob.item("sheet", "laminated sheet", "product"),
         ],
         operations=[
-            ob.operation("scrap", "scrap", name="scrapping", input="tyre"),
+            ob.operation("scrap", "scrap", input="tyre", consumes=True),
             ob.operation("laminate", "laminate", input="file", product="sheet"),
         ],
         facilities=[

@@ -34,6 +34,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
+from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
@@ -229,6 +230,8 @@ class SpeechActs:
         for head in _WITHDRAW_HEADS:
             if _starts(w, head):
                 rest = w[len(head) :]
+                if service_asked(self.lex, head, rest):
+                    return False  # "scrap my old tyre" where the office scraps tyres
                 return not rest or not self._imperative(rest)
         # "no forget it", "nah never mind", "(oh) wait never mind": a refusal word or a "wait"
         # before a withdrawal only stresses it ("wait for me" withdraws nothing)
