@@ -17,6 +17,7 @@ def test_the_rules_in_priority_order() -> None:
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
+        "statement",  # how a question beside it is meant ("just curious", "no rush")
         "condition",
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")

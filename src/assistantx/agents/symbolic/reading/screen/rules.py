@@ -11,6 +11,7 @@ from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.covert import covert
+from assistantx.agents.symbolic.reading.screen.curious import curious
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
@@ -55,6 +56,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("wish", wish),
     ("wish", hope),
     ("thanks", thanks),
+    ("statement", curious),
     ("condition", condition),
     ("negated", negated),
     ("destructive", unsafe),
