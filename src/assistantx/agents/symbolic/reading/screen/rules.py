@@ -18,6 +18,7 @@ from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
+from assistantx.agents.symbolic.reading.screen.facility_state_asked import facility_state_asked
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.hope import hope
@@ -73,6 +74,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_doing),
     ("statement", doing_after),
     ("statement", own_need),
+    ("question", facility_state_asked),
     ("question", kept_where),
     ("question", question),
     ("question", choices),
