@@ -6,7 +6,9 @@ asked for a plain request, and a fact beside a request for nobody's thing change
 from __future__ import annotations
 
 import pytest
+from symbolic_run import run_instruction
 
+from assistantx.core.actions import Move
 from helpers.reading import frame_reader
 from helpers.tyre_bay import tyre_bay
 
@@ -49,3 +51,12 @@ def test_either_half_alone_is_read_as_before(text: str, owner: str | None) -> No
 def test_a_fact_and_a_yes_without_a_request_move_nothing() -> None:
     frame = _frame("Bruno is away, he won't mind")
     assert frame.tasks == [] and frame.question is None, frame
+
+
+async def test_end_to_end_nothing_moves_and_the_owner_is_not_asked() -> None:
+    text = "Bruno's off today, grab his ruler for me, he won't mind"
+    run = await run_instruction(tyre_bay(), "ines", text)
+    trace = run.stm.trace
+    contacts = {getattr(r.action, "contact", None) for r in trace.actions()}
+    assert "bruno" not in contacts, trace.summary
+    assert not any(isinstance(r.action, Move) for r in trace.actions()), trace.summary
