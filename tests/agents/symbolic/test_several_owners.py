@@ -6,7 +6,9 @@ single owner, a supply, "a X" or an owner said are read as before."""
 from __future__ import annotations
 
 import pytest
+from symbolic_run import run_instruction
 
+from assistantx.core.actions import Move
 from helpers.reading import answered_reader, frame_reader
 from helpers.tyre_bay import tyre_bay
 
@@ -75,3 +77,11 @@ def test_other_readings_are_unchanged(text: str, who: str, expected: Row) -> Non
 )
 def test_a_question_or_negation_moves_nothing(text: str) -> None:
     assert _frame(text).tasks == []
+
+
+async def test_end_to_end_no_tray_moves_on_a_guessed_owner() -> None:
+    run = await run_instruction(tyre_bay(), "marlo", "could you take the tray over to Amber")
+    trace = run.stm.trace
+    contacts = {getattr(r.action, "contact", None) for r in trace.actions()}
+    assert not contacts & {"ines", "bruno", "tove"}, trace.summary
+    assert not any(isinstance(r.action, Move) for r in trace.actions()), trace.summary
