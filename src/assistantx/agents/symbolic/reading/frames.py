@@ -43,6 +43,7 @@ from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
+from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
@@ -128,6 +129,10 @@ class FrameReader:
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
+            for t in made:  # "take the tray to Amber" where three colleagues have one
+                whose = whose_of_several(self.office, tokens, clause, roles, t, requester)
+                if whose is not None:
+                    return TaskFrame(requester=requester, question=whose)
             if found is not None and found[1] is None:
                 made = [self._not_mine(t, requester) for t in made]
             # "print my log. I need the spreadsheet for the meeting": the item a task already

@@ -89,6 +89,7 @@ from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
+from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
@@ -392,6 +393,10 @@ class InstructionParser:
                 meant = self.parse(with_work(text, answer), requester)
                 if meant.understood:
                     text, frame = with_work(text, answer), meant
+                continue
+            owned = with_owner(self.lex, text, frame.question or "", answer)
+            if owned is not None:  # "Several colleagues have a tray: whose ...?" "Bruno's"
+                text, frame = owned, self.parse(owned, requester)
                 continue
             whole = completed(text, frame.question or "", answer)
             if whole is not None:  # "take my tray to" → "Joss": "take my tray to Joss"

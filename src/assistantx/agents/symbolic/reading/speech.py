@@ -34,6 +34,8 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
+from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
+from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
 
@@ -228,6 +230,8 @@ class SpeechActs:
         for head in _WITHDRAW_HEADS:
             if _starts(w, head):
                 rest = w[len(head) :]
+                if service_asked(self.lex, head, rest):
+                    return False  # "scrap my old tyre" where the office scraps tyres
                 return not rest or not self._imperative(rest)
         # "no forget it", "nah never mind", "(oh) wait never mind": a refusal word or a "wait"
         # before a withdrawal only stresses it ("wait for me" withdraws nothing)
@@ -397,6 +401,8 @@ class SpeechActs:
             return Act("thanks", relay=True)  # "thank Rich for the clipboard"
         if asked or self._command_inside(w):
             return None  # "could you bring ...", "so grateful to you fetch me ..."
+        if thanks_ahead(w):
+            return None  # "I'd be grateful for a box of staples": asked, with thanks ahead
         if set(w[:3]) & _THANKS:
             return Act("thanks")  # "thanks ...", "big thank you for ...", "much appreciated"
         if self._done_for_me(w):

@@ -17,11 +17,13 @@ def test_the_rules_in_priority_order() -> None:
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
+        "statement",  # how a question beside it is meant ("just curious", "no rush")
         "condition",
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "destructive",
         "unsupported",  # a send to an account outside ("to my personal gmail")
+        "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
@@ -32,6 +34,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
+        "question",  # a facility's state asked with no verb ("laminator working today?")
         "question",  # where a thing is kept ("where do we keep the clay?"), in words
         "question",
         "question",  # the choices said with a question ("..., workshop store or dry store?")

@@ -3,6 +3,7 @@ for a question that may be a request, and what counts as an aside beside a thank
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.curious import CURIOUS
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import SAYS_NOTHING_TO_DO, Finding, Screened
 from assistantx.agents.symbolic.reading.screen.pieces import Piece
@@ -31,7 +32,9 @@ def answered(out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened
     """No request left: the replies to what was said, or one "Shall I ...?"."""
     out.outcome = "done"
     offers = [f for f in live if f.offer]
-    if len(offers) == 1 and not any(f.verdict in ("wish", "thanks") for f in live):
+    # "... just curious": the question asked no errand, so nothing is offered
+    offering = not any(f.verdict in ("wish", "thanks") or f.meaning == CURIOUS for f in live)
+    if len(offers) == 1 and offering:
         out.question = f"{offers[0].message} {offers[0].shall}"
         out.offer = offers[0].offer
         return out

@@ -2,7 +2,8 @@
 down again", "hall clock's stopped"): the "'s" is the verb, not a possessive, so the clause is
 read as the statement it is ("the bulb is gone", "the clock has stopped"), never as a request
 about a thing belonging to the bulb. Only a word of state or a past participle that ends its
-clause counts ("Zhang's broken stapler" owns a stapler, and stays)."""
+clause counts ("Zhang's broken stapler" owns a stapler, and stays), or a change of state with
+what it became ("the fridge light's gone amber again")."""
 
 from __future__ import annotations
 
@@ -39,6 +40,9 @@ _PARTICIPLE_TAILS = frozenset(
         "so",
     }
 )
+# a change of state said with its result ("the light's gone amber", "screen's turned blue"):
+# the word after it says what the thing became, and the clause is still a statement
+_BECOME = frozenset({"gone", "turned", "become", "grown"})
 _PRONOUNS = english.words("subject_pronouns") | frozenset(
     {"that", "this", "there", "here", "what", "who", "where", "let", "he", "she", "mine", "yours"}
 )
@@ -60,6 +64,10 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
             return match.group(0)
         verb = "is" if state in _STATES else "has" if language.is_past_participle(state) else ""
         tails = _TAILS if verb == "is" else _PARTICIPLE_TAILS
+        read = language.lemmas(after) if after else {}
+        # an adjective, never a place or a direction ("Zhang's gone home": he is away)
+        if state in _BECOME and "ADJ" in read and "ADV" not in read:
+            verb, tails = "has", frozenset({after})  # "light's gone amber": what it became
         if not verb or (after and after not in tails):
             return match.group(0)  # "Zhang's broken stapler": a possessive
         found.append(Evidence(words=match.group(0).strip(), meaning=f"{subject} {verb} {state}"))

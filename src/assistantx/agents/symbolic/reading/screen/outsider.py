@@ -11,6 +11,7 @@ facility of the office and is not the modifier of another noun ("the guest loung
 - A credential (an item whose name has a ``credential_words`` word: a key card, a pass, a
   fob) is declined: the assistant hands what opens doors only to people of the office, and
   what anyone says about who the outsider is carries no authority.
+- A thing the office has not (``not_here``) is said to be unknown here, in words.
 - Anything else is asked about, with a "Shall I ...?" whose yes brings it to the requester
   (the offer replaces the outsider's phrase by "me"); a no does nothing.
 """
@@ -24,6 +25,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.not_here import thing_not_here
 from assistantx.agents.symbolic.reading.screen.others_clause import in_others_clause
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -68,6 +70,19 @@ def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
                 f"office, and I don't know who {found.phrase} {found.be}. What anyone says "
                 "about who they are doesn't change that. If it is for a colleague, ask again "
                 "with their name."
+            ),
+        )
+    missing = thing_not_here(terms, msg, piece)
+    if missing is not None:
+        # nothing here to bring to anyone: no "Shall I bring it to you?" about nothing
+        return Finding(
+            "unsupported",
+            piece,
+            f"a thing the office has not, for someone outside it: {found.phrase}",
+            message=(
+                f"Sorry, I don't know of any {missing} in this office, so I can't get any "
+                f"for {found.phrase}; and I hand things only to people of this office. "
+                "I did nothing."
             ),
         )
     offer = f"{msg.text[: found.start]}me{msg.text[found.end :]}"

@@ -5,17 +5,20 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.covert import covert
+from assistantx.agents.symbolic.reading.screen.curious import curious
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
+from assistantx.agents.symbolic.reading.screen.facility_state_asked import facility_state_asked
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.hope import hope
@@ -54,11 +57,13 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("wish", wish),
     ("wish", hope),
     ("thanks", thanks),
+    ("statement", curious),
     ("condition", condition),
     ("negated", negated),
     ("destructive", unsafe),
     ("destructive", destructive),
     ("unsupported", outside_account),
+    ("unsupported", absent_owner),
     ("unsupported", covert),
     ("unsupported", break_in),
     ("unplaced", unplaced),
@@ -69,6 +74,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_doing),
     ("statement", doing_after),
     ("statement", own_need),
+    ("question", facility_state_asked),
     ("question", kept_where),
     ("question", question),
     ("question", choices),

@@ -1,0 +1,101 @@
+"""An owner said to be away, and their yes said for them: "Otto is away, just take his ruler
+from his desk, he won't mind". A colleague's things leave them only with their own yes, asked
+in their chat (text carries no authority); a request that says the owner cannot be reached and
+answers for them asks the robot to take the thing without that yes, so it is declined in words,
+with the reason, before anything in it is read as an errand. The requester may ask for the
+thing plainly and the owner is then asked as usual.
+
+Either half alone is read as before: "borrow Rory's stapler, he won't mind" asks Rory (the
+covert rule's docstring), and "Otto is away, could you bring me his ruler" is a fact for the
+plan beside a plain request."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.fact import fact
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+
+# Someone's yes said on their behalf: "he won't mind", "she wouldn't care", "they'll be fine
+# with it". The words are matched after the pronoun that says whose yes it is.
+_PRESUMED = (
+    ("wont", "mind"),
+    ("wouldnt", "mind"),
+    ("will", "not", "mind"),
+    ("would", "not", "mind"),
+    ("wont", "care"),
+    ("wouldnt", "care"),
+    ("wont", "object"),
+    ("wouldnt", "object"),
+    ("wont", "notice"),
+    ("wont", "miss", "it"),
+    ("be", "fine", "with", "it"),
+    ("be", "ok", "with", "it"),
+    ("be", "okay", "with", "it"),
+)
+# Whose yes: a third person's, never the speaker's or the robot's ("I won't mind" is no
+# one's yes for another). A possessive "'ll" is split off by the tokens ("hell" is not read).
+_THIRD = frozenset({"he", "she", "they", "hed", "shed", "theyd", "hell", "shell", "theyll"})
+
+
+def _answers_for_someone(words: list[str]) -> bool:
+    for n, word in enumerate(words):
+        if word not in _THIRD:
+            continue
+        rest = words[n + 1 :]
+        if rest[:1] == ["ll"]:  # "he'll be fine with it" when split
+            rest = rest[1:]
+        if any(tuple(rest[: len(p)]) == p for p in _PRESUMED):
+            return True
+    return False
+
+
+# Whose thing, when it is not a name: the absent colleague's ("take *his* ruler").
+_THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
+
+
+def _away(terms: Terms, msg: Message, requester: str) -> set[str]:
+    """The colleagues a piece of the message says are away ("Otto is away", "Otto's off
+    today"), as the fact rule reads it."""
+    out: set[str] = set()
+    for piece in msg.pieces:
+        found = fact(terms, msg, piece, requester)
+        hint = found.hint if found is not None else None
+        if hint is not None and hint.kind == "availability" and hint.value == "away":
+            out.add(hint.person)
+    return out
+
+
+def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:
+    """Whether a request in the message asks for a thing of a colleague said to be away: by
+    their name's possessive, or by "his"/"her" after the name ("Otto is away, take his
+    ruler"); "Otto is away, bring me some staples" asks for nobody's."""
+    away = _away(terms, msg, requester)
+    if not away:
+        return False
+    for piece in msg.pieces:
+        if not piece.acts.request:
+            continue
+        if any(w in _THEIRS for w in piece.words):
+            return True
+        for m in piece.lexed.mentions:
+            if m.kind == "person" and m.possessive and away.intersection(m.ids):
+                return True
+    return False
+
+
+def absent_owner(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if not _answers_for_someone(piece.words):
+        return None
+    if not _absent_owners_thing(terms, msg, requester):
+        return None
+    return Finding(
+        "unsupported",
+        piece,
+        "a request to take an absent owner's thing on a yes said for them",
+        message=(
+            "Sorry, I can't take someone's things on their behalf while they're away: I only "
+            "take them with the owner's own yes, asked in their chat. If you'd like, ask me for "
+            "it and I'll ask them. I did nothing."
+        ),
+    )

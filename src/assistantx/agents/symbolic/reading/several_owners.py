@@ -1,0 +1,94 @@
+"""Whose "the X" is when several colleagues have one: "could you take the tray over to Amber",
+said by someone with no tray of their own where three colleagues each have one. "The" points
+at one particular tray, and nothing said tells whose: guessing would move a colleague's thing
+nobody meant, so the requester is asked whose it is, and their answer ("Bruno's") is read as
+the owner in the request's own words ("take Bruno Keel's tray over to Amber").
+
+Only a verb that moves one particular thing ("take", "carry", "pop ... over") asks: "bring
+Amber the tray" provides her with one, and any one the planner finds will do. Nothing is asked
+where the requester has one (``definite_own``: their own), where one colleague
+besides the recipient has one (the planner finds them), for a thing the office keeps for anyone
+(a supply), for "a tray" (any one will do) or where whose it is was said ("Bruno's tray", "the
+tray from Bruno")."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading._parties import Clause, Roles
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import language
+from assistantx.core.office import Office
+from assistantx.core.task_schema import Task
+from assistantx.core.wording import a_thing
+
+# How the question starts, so the answer to it is read as whose the thing is.
+SEVERAL_HAVE = "Several colleagues have "
+# Verbs that move a particular thing from where it is, rather than provide one.
+_MOVING = frozenset({"take", "carry", "move", "shift", "ferry", "wheel", "cart", "lug", "pop"})
+# An answer that any one will do ("Anyone's, any will do", "whichever").
+_ANY = frozenset({"any", "anyones", "anybodys", "whichever", "whoevers"})
+_ASKED = re.compile(rf"^{SEVERAL_HAVE}(?:an?|some|a pair of) (?P<name>.+?): whose")
+
+
+def whose_of_several(
+    office: Office,
+    tokens: Sequence[Token],
+    clause: Clause,
+    roles: Roles,
+    task: Task,
+    requester: str,
+) -> str | None:
+    """The question whose the thing is, when ``task`` takes "the X" (whose not said) to
+    someone else, the requester has no X and several colleagues besides the recipient do."""
+    if task.kind != "transfer" or task.owner is not None or task.item is None:
+        return None
+    if task.recipient in (None, requester) or roles.source or roles.returned_to:
+        return None
+    if office.supplier(task.item) is not None:
+        return None  # "take the box of staples to Amber": the supply room's, for anyone
+    owners = [p for p in office.owners_of(task.item) if p != task.recipient]
+    if requester in owners or len(owners) < 2:
+        return None
+    said = [m for m in clause.objects() if m.id == task.item and m.start > 0]
+    if len(said) != 1 or tokens[said[0].start - 1].word.lower() != "the":
+        return None
+    if not _moved(tokens, clause, said[0].start):
+        return None
+    name = office.item_type(task.item).name
+    return f"{SEVERAL_HAVE}{a_thing(name)}: whose {name} do you mean?"
+
+
+def _moved(tokens: Sequence[Token], clause: Clause, item_at: int) -> bool:
+    """Whether the verb before the thing moves one particular thing where it is ("take the
+    tray over to Amber", "carry the ruler to ..."), not provides someone with one ("bring
+    Amber the tray", "bring him the kick stool": any one the planner finds will do)."""
+    start = min((m.start for m in clause.mentions), default=item_at)
+    for token in tokens[start:item_at]:
+        verb = token.word.lower()
+        if ({verb} | language.verb_lemmas(verb)) & _MOVING:
+            return True
+    return False
+
+
+def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | None:
+    """``text`` with "the X" asked about replaced by the colleague the answer names ("Bruno's",
+    "it's Bruno's tray"): "take Bruno Keel's tray over to Amber", or by "a tray" when any
+    will do; None when the answer says neither or the question is not this one."""
+    asked = _ASKED.match(question)
+    if asked is None:
+        return None
+    said = lex.read(answer)
+    people = {p for m in said.mentions if m.kind == "person" for p in m.ids}
+    name = asked.group("name")
+    pattern = re.compile(rf"\bthe\s+{re.escape(name)}\b", re.IGNORECASE)
+    if pattern.search(text) is None:
+        return None
+    if len(people) == 1:
+        owner = lex.office.person(next(iter(people))).name
+        return pattern.sub(f"{owner}'s {name}", text, count=1)
+    if not people and {t.word for t in said.tokens} & _ANY:
+        return pattern.sub(a_thing(name), text, count=1)  # "any will do": "take a tray ..."
+    return None
