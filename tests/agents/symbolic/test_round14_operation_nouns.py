@@ -10,8 +10,10 @@ import pytest
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
-from assistantx.agents.symbolic.reading.operation_nouns import read_as_verbs
+from assistantx.agents.symbolic.reading.operation_nouns import operation_nouns, read_as_verbs
 from assistantx.agents.symbolic.reading.tokens import tokenize
+from assistantx.core.office import Office
+from helpers import office_builder as ob
 from helpers.radio_station import radio_station
 from helpers.reading import frame_reader
 
@@ -91,3 +93,46 @@ async def test_the_poster_is_laminated_and_comes_back() -> None:
     assert run.stm.trace.outcome == "done"
     assert "poster:wren" in run.sim.world.heated
     assert run.sim.world.holder["poster:wren"] == "wren"
+
+
+def test_a_thing_an_operation_is_named_after_stays_the_thing() -> None:
+    """Blind round 28's class: an operation named "pack a cool box", whose product is the
+    cool box, must not make "box" its noun: "I need a cool box" read "box" as the packing and
+    fetched the office's cool pack instead (8 wrong hand-overs)."""
+
+    def cold_room() -> Office:
+        return ob.parsed(
+            lambda: ob.office_file(
+                "cold room",
+                (ob.person("ines", "Ines Varga"), ob.person("otto", "Otto Brandt")),
+                rooms=[ob.room("cold", "Cold room", 4.0, 20.0)],
+                item_types=[
+                    ob.item("cool_box", "cool box", "product", synonyms=["cool bag"]),
+                    ob.item("ice_pack", "ice pack", synonyms=["cool pack"]),
+                ],
+                operations=[
+                    ob.operation("pack", "pack", name="pack a cool box", product="cool_box")
+                ],
+                facilities=[
+                    ob.facility(
+                        "packing_bench",
+                        "packing bench",
+                        at="cold",
+                        guards=["otto"],
+                        operations=["pack"],
+                        products=["cool_box"],
+                        supplies=[{"type": "ice_pack", "count": 4}],
+                    )
+                ],
+                home="cold",
+            )
+        )()
+
+    office = cold_room()
+    assert "box" not in operation_nouns(office, lambda w: False)
+    frame = frame_reader(cold_room, "ines")(
+        "I need a cool box for the insulin going out today, can one be packed for me?"
+    )
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("produce", "cool_box", "ines")
+    ], frame

@@ -52,6 +52,7 @@ def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, s
     first verb it is read as; ``taken``: whether a word already means something in the office
     (an item, a person, a task verb)."""
     named: dict[str, set[str]] = {}
+    things = _thing_names(office)
     for op in office.operations:
         if not op.verbs:
             continue  # an operation without verbs is asked for by its name's words already
@@ -62,7 +63,7 @@ def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, s
             if len(words) == 1:
                 nouns |= _nominals(words[0])
         name = normalize(op.name).split()
-        if name and language.is_noun(name[-1]):
+        if name and language.is_noun(name[-1]) and not _ends_with_thing(name, things):
             nouns.add(name[-1])  # "legal review": its head noun
         for noun in nouns:
             named.setdefault(noun, set()).add(verb)
@@ -71,6 +72,22 @@ def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, s
         for noun, verbs in named.items()
         if len(verbs) == 1 and not taken(noun)
     }
+
+
+def _thing_names(office: Office) -> set[tuple[str, ...]]:
+    """The office's item names, as word tuples ("cool", "box")."""
+    return {
+        tuple(normalize(n).split())
+        for t in office.item_types
+        for n in (t.name, *t.synonyms)
+        if normalize(n)
+    }
+
+
+def _ends_with_thing(name: list[str], things: set[tuple[str, ...]]) -> bool:
+    """Whether an operation's display name ends with an item's name: "pack a cool box" names
+    the verb and the thing it makes, whose noun ("box") is that thing, not the act."""
+    return any(len(t) <= len(name) and tuple(name[-len(t) :]) == t for t in things)
 
 
 def operation_names(office: Office) -> dict[tuple[str, ...], str]:
