@@ -52,14 +52,19 @@ def facility_state_asked(
     said = (*_WORKING, *_FAULTS, *terms.en.conditions)
     if not state or not any(starts_with(state, 0, s) for s in said):
         return None
-    f = terms.office.facility(mentions[k].ids[0])
-    where = terms.office.location(f.location).name
     return Finding(
         "question",
         piece,
         "a question about a facility's state, answered in words",
-        message=(
-            f"As far as I know the {f.name} at the {where} is in service, but I can't "
-            "check it from here."
-        ),
+        message=in_service(terms, mentions[k].ids[0]),
+    )
+
+
+def in_service(terms: Terms, facility_id: str) -> str:
+    """The answer about a facility's state: what the office file says, and no more."""
+    f = terms.office.facility(facility_id)
+    where = terms.office.location(f.location).name
+    return (
+        f"As far as I know the {f.name} at the {where} is in service, but I can't check it "
+        "from here."
     )

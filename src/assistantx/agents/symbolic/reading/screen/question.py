@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_ask
+from assistantx.agents.symbolic.reading.screen.facility_state_asked import in_service
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
@@ -37,12 +38,7 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
             )
         return found
     if facilities:
-        f = terms.office.facility(facilities[0])
-        where = terms.office.location(f.location).name
-        message = (
-            f"As far as I know the {f.name} at the {where} is in service, but I can't "
-            "check it from here."
-        )
+        message = in_service(terms, facilities[0])
     elif len(people) == 1:
         p = terms.office.person(people[0])
         where = terms.office.location(p.location).name
