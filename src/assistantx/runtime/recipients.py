@@ -65,6 +65,7 @@ _FILLERS = english.words("courtesy") | frozenset(
 _AND = frozenset({"and", "or", "plus"})
 _ARTICLES = frozenset({"the", "our", "a", "an"})
 _SENTENCE_END = re.compile(r"[.!?;\n]")
+_PAUSE = re.compile(r"[,:]")
 
 
 @dataclass(frozen=True)
@@ -73,6 +74,7 @@ class _Word:
     folded: str
     possessive: bool
     opens: bool  # the first word of a sentence
+    after_pause: bool = False  # a comma (or colon) before it, as the reader's ``Token``
 
     @property
     def word(self) -> str:
@@ -92,7 +94,8 @@ def _tokens(text: str) -> list[_Word]:
         bare = raw[:-2] if possessive else raw
         gap = flat[found[n - 1].end() : m.start()] if n else ""
         opens = n == 0 or bool(_SENTENCE_END.search(gap))
-        out.append(_Word(bare, language.fold(bare), possessive, opens))
+        pause = bool(_PAUSE.search(gap))
+        out.append(_Word(bare, language.fold(bare), possessive, opens, pause))
     return out
 
 
