@@ -43,6 +43,7 @@ from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
@@ -92,12 +93,13 @@ class FrameReader:
         previous_need = False  # the clause before said someone needs something
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
+        addressed = addressed_person(tokens, readings.mentions, readings.gaps)
         placed: dict[str, str] = {}  # item type → the one a place phrase named
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
             try:
-                roles = clause_roles(tokens, clause, requester, last_person)
+                roles = clause_roles(tokens, clause, requester, last_person, addressed=addressed)
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
                 if later is None:
@@ -105,7 +107,9 @@ class FrameReader:
                     return TaskFrame(requester=requester, question=unclear)
                 # "bring me his stapler. Zhang Wei": the answer names him
                 answered.add(later[0])
-                roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+                roles = clause_roles(
+                    tokens, clause, requester, [*last_person, later[1]], addressed=addressed
+                )
             unclear_place = kept_owners(self.office, tokens, clause, roles, requester, placed)
             if unclear_place is not None:  # "the ladder in the kitchen", where none is kept
                 return TaskFrame(requester=requester, question=unclear_place)
