@@ -20,12 +20,14 @@ mention carries both readings and the parser asks which was meant.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.bare_possessives import read_bare_possessives
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
@@ -369,7 +371,8 @@ class Lexicon:
 
     def tokens(self, text: str) -> list[Token]:
         """The tokens of ``text`` (stage 1), each corrected against this office's words."""
-        raw = tokenize(text)
+        # "bring idas ruler": a name's possessive without its apostrophe, before correction
+        raw = read_bare_possessives(tokenize(text), self._one_word_names, self._item_openers)
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
@@ -385,6 +388,14 @@ class Lexicon:
         out = self.verb_phrases.join(out, text)
         # "vac my prep": a compound verb said by its first word, clipped ("vac pack")
         return self.clipped_verbs.read(out, self._known)
+
+    @functools.cached_property
+    def _one_word_names(self) -> frozenset[str]:
+        return frozenset(k for k in (*self.people, *self.name_words) if " " not in k)
+
+    @functools.cached_property
+    def _item_openers(self) -> frozenset[str]:
+        return frozenset(k.split()[0] for k in self.items)
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*
