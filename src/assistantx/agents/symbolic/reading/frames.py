@@ -77,12 +77,15 @@ class FrameReader:
         named: Sequence[NamedItem] = (),
         *,
         to_self: bool = False,
+        named_once: str | None = None,
     ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
         who the whole message says has an item now (``holder``), for one given back;
         ``named``: the items the whole message names (``named_items``), for a task whose
         object was no item word of the office; ``to_self``: the requester answered "me" to
-        whom their own item or file goes, so it goes to them, not asked again."""
+        whom their own item or file goes, so it goes to them, not asked again;
+        ``named_once``: the one colleague the whole message names (``the_one_named``), whom
+        "his" means when the request's own words name nobody."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -102,6 +105,8 @@ class FrameReader:
                 roles = clause_roles(tokens, clause, requester, last_person, addressed=addressed)
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
+                if later is None and named_once is not None:
+                    later = (-1, named_once)  # "Is Otto in? I need his ruler": Otto's
                 if later is None:
                     unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
                     return TaskFrame(requester=requester, question=unclear)
