@@ -15,9 +15,10 @@ _PEOPLE = (
         "Ada Brennan",
         "ruler",
         ob.kept("soup", at="crew_room", facility="fridge"),
+        aliases=["Bren"],
     ),
     ob.person("mark", "Mark Tiller", "ruler"),
-    ob.person("bill", "Bill Okoro", "ruler"),
+    ob.person("bill", "Bill Okoro", "ruler", aliases=["Mr Okoro"]),
     ob.person("chase", "Chase Munro"),
     ob.person(
         "otto",
@@ -26,6 +27,8 @@ _PEOPLE = (
         ob.kept("soup", at="crew_room", facility="fridge"),
     ),
     ob.person("rhiannon", "Rhiannon Pryce", "ruler"),
+    ob.person("alexandra", "Alexandra Petrov", "ruler"),
+    ob.person("alexei", "Alexei Marr", "ruler"),
 )
 
 
