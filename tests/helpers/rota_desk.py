@@ -26,7 +26,7 @@ _PEOPLE = (
         "ruler",
         ob.kept("soup", at="crew_room", facility="fridge"),
     ),
-    ob.person("rhiannon", "Rhiannon Pryce", "ruler"),
+    ob.person("rhiannon", "Rhiannon Pryce", "ruler", aliases=["Mrs Okafor"]),
     ob.person("alexandra", "Alexandra Petrov", "ruler"),
     ob.person("alexei", "Alexei Marr", "ruler"),
 )
