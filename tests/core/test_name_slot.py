@@ -14,6 +14,7 @@ class _W:
     word: str
     possessive: bool = False
     opens: bool = False
+    after_pause: bool = False  # a comma before it
 
 
 def _words(*spec: str) -> list[_W]:
@@ -52,3 +53,11 @@ def test_a_title_declared_with_its_article() -> None:
     plain = slot_at(words, 2, items=set(), name_words=set())
     assert declared.declared_with_prev and not plain.declared_with_prev
     assert read_name(declared) == "person"
+
+
+def test_a_pause_before_the_next_word_is_taken() -> None:
+    """ "to Mark, it's urgent": the comma keeps "it" from making "Mark" a verb."""
+    words = [_W("to", "to"), _W("Mark", "mark"), _W("it", "it", after_pause=True)]
+    assert slot_at(words, 1, items=set(), name_words=set()).next_after_pause
+    words = [_W("to", "to"), _W("mark", "mark"), _W("it", "it")]
+    assert not slot_at(words, 1, items=set(), name_words=set()).next_after_pause

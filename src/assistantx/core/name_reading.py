@@ -37,6 +37,8 @@ _SUBJECT_PRONOUNS = english.words("subject_pronouns")
 _MONTH_PREPOSITIONS = english.words("month_prepositions")
 _POLITE = english.words("polite")
 _MODALS = english.words("request_modals")
+_VERB_SLOT_BEFORE = english.words("verb_slot_before")
+_VERB_SLOT_OBJECTS = english.words("verb_slot_objects")
 
 
 @dataclass(frozen=True)
@@ -53,6 +55,7 @@ class NameSlot:
     next_possessive: bool = False
     next_is_item: bool = False  # the next word names one of the office's items
     next_is_name: bool = False  # the next word is a word of someone's name
+    next_after_pause: bool = False  # a comma (or colon) between the name and the next word
     after_next: str = ""  # the word after the next one (folded; "" at a sentence's edge)
     # the office declares "<prev> <word>" as someone's alias ("the Provost", "our Dean")
     declared_with_prev: bool = False
@@ -73,6 +76,9 @@ class SlotWord(Protocol):
 
     @property
     def opens(self) -> bool: ...  # the first word of a sentence
+
+    @property
+    def after_pause(self) -> bool: ...  # a comma (or colon) before it
 
 
 def slot_at(
@@ -100,6 +106,7 @@ def slot_at(
         next_possessive=nxt is not None and nxt.possessive,
         next_is_item=nxt is not None and nxt.word in items,
         next_is_name=nxt is not None and nxt.word in name_words,
+        next_after_pause=nxt is not None and nxt.after_pause,
         after_next=after.word if after is not None and not after.opens else "",
         declared_with_prev=n > 0 and (words[n - 1].word, w.word) in with_article,
     )
@@ -117,6 +124,8 @@ def read_name(slot: NameSlot) -> NameReading:
     w = slot.word
     if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
+    if _verb_slot(slot):
+        return "word"
     prev = "" if slot.opens else slot.prev
     nxt = slot.next
     capital = slot.written[:1].isupper()
@@ -160,6 +169,23 @@ def read_name(slot: NameSlot) -> NameReading:
     if word or compound:
         return "ask" if capital and not slot.opens else "word"
     return "person" if capital else "word"
+
+
+def _verb_slot(slot: NameSlot) -> bool:
+    """ "I'd rather not have to mark it down", "we need to chase them": a name that is also a
+    verb, where a bare verb goes ("to", "not", a modal) and right before "it"/"them", is the
+    verb: a person named there would need a verb of their own after them (only a verb of
+    giving takes a person and then "it": "give Mark it", never "to Mark it"). "to Mark, it's
+    urgent" (a pause, or "it's") says nothing."""
+    return (
+        not slot.opens
+        and not slot.possessive
+        and slot.prev in _VERB_SLOT_BEFORE
+        and slot.next in _VERB_SLOT_OBJECTS
+        and not slot.next_possessive
+        and not slot.next_after_pause
+        and _base_verb(slot.word)
+    )
 
 
 def _doer(prev: str, nxt: str, after_next: str) -> bool:

@@ -57,7 +57,8 @@ _DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "coun
 _GIVE = english.words("dative_verbs") | english.words("handing_verbs")
 _TITLES = english.words("titles") - {"a", "an", "the", "our"}
 # titles that name a role ("the manager"), not titles of address ("Dr.", "Ms")
-_ROLE_TITLES = _TITLES - {"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"}
+_ADDRESS_TITLES = frozenset({"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"})
+_ROLE_TITLES = _TITLES - _ADDRESS_TITLES
 _PRONOUNS = english.words("object_pronouns")
 _FILLERS = english.words("courtesy") | frozenset(
     {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
@@ -65,6 +66,7 @@ _FILLERS = english.words("courtesy") | frozenset(
 _AND = frozenset({"and", "or", "plus"})
 _ARTICLES = frozenset({"the", "our", "a", "an"})
 _SENTENCE_END = re.compile(r"[.!?;\n]")
+_PAUSE = re.compile(r"[,:]")
 
 
 @dataclass(frozen=True)
@@ -73,6 +75,7 @@ class _Word:
     folded: str
     possessive: bool
     opens: bool  # the first word of a sentence
+    after_pause: bool = False  # a comma (or colon) before it, as the reader's ``Token``
 
     @property
     def word(self) -> str:
@@ -92,7 +95,8 @@ def _tokens(text: str) -> list[_Word]:
         bare = raw[:-2] if possessive else raw
         gap = flat[found[n - 1].end() : m.start()] if n else ""
         opens = n == 0 or bool(_SENTENCE_END.search(gap))
-        out.append(_Word(bare, language.fold(bare), possessive, opens))
+        pause = bool(_PAUSE.search(gap))
+        out.append(_Word(bare, language.fold(bare), possessive, opens, pause))
     return out
 
 
@@ -124,9 +128,15 @@ def _names(office: Office) -> list[tuple[tuple[str, ...], frozenset[str]]]:
             if len(w) > 1 and (k := key(w)):
                 parts.setdefault(k, set()).add(p.id)
         for alias in p.aliases:  # "Manager Mao": "the manager" names them too
-            for w in re.findall(r"\w+", language.fold(alias)):
+            alias_words = re.findall(r"\w+", language.fold(alias))
+            for w in alias_words:
                 if w in _ROLE_TITLES:
                     parts.setdefault((w,), set()).add(p.id)
+            if len(alias_words) > 1 and alias_words[0] in _ADDRESS_TITLES:
+                # "Mrs Okafor": the surname alone names her too, as the reader reads it
+                for w in alias_words[1:]:
+                    if len(w) > 1 and (k := key(w)):
+                        parts.setdefault(k, set()).add(p.id)
     for rank, holder in rank_titles(office).items():  # "the Station Officer": the one
         declared.setdefault(tuple(rank.split()), set()).update(holder)
     found = {k: frozenset(ids) for k, ids in parts.items()}

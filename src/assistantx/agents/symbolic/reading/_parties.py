@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
+from assistantx.agents.symbolic.reading.vocative import yours_addressed
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.receiving_place import (
@@ -275,10 +276,16 @@ def _a_favour(
 
 
 def clause_roles(
-    tokens: Sequence[Token], clause: Clause, requester: str, last_person: list[str]
+    tokens: Sequence[Token],
+    clause: Clause,
+    requester: str,
+    last_person: list[str],
+    *,
+    addressed: str | None = None,
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
-    (for "him", "her")."""
+    (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
+    "your" is theirs, ``vocative``)."""
     roles = Roles()
     ms = clause.mentions
     for n, m in enumerate(ms):
@@ -332,14 +339,20 @@ def clause_roles(
             if prev in ("to", "for") or dative:
                 roles.add_recipient(others[-1], m.start)
         elif m.kind == "item":
-            owner = owner_of(tokens, ms, n, requester, last_person)
+            owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
             if owner is not None:
                 roles.owners[m.start] = owner
     return roles
 
 
 def owner_of(
-    tokens: Sequence[Token], ms: list[Mention], n: int, requester: str, last_person: list[str]
+    tokens: Sequence[Token],
+    ms: list[Mention],
+    n: int,
+    requester: str,
+    last_person: list[str],
+    *,
+    addressed: str | None = None,
 ) -> str | None:
     m = ms[n]
     # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
@@ -358,6 +371,8 @@ def owner_of(
             return others[-1]
         if p.kind not in ("word", "item"):  # "Wang's report file": a compound noun
             break
+    if addressed != requester and (yours := yours_addressed(tokens, m, addressed)):
+        return yours  # "Otto, could the robot bring me your ruler?": Otto's
     described = _described_owner(tokens, ms, n, requester)
     if described is not None:
         return described

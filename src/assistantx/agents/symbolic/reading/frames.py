@@ -45,6 +45,7 @@ from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
@@ -79,6 +80,7 @@ class FrameReader:
         *,
         to_self: bool = False,
         kept_said: Mapping[str, str] | None = None,
+        named_once: str | None = None,
     ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
         who the whole message says has an item now (``holder``), for one given back;
@@ -86,7 +88,8 @@ class FrameReader:
         object was no item word of the office; ``to_self``: the requester answered "me" to
         whom their own item or file goes, so it goes to them, not asked again;
         ``kept_said``: item type → its one keeper where the whole message says the thing
-        is kept (``said_kept``)."""
+        is kept (``said_kept``); ``named_once``: the one colleague the whole message names
+        (``the_one_named``), whom "his" means when the request's own words name nobody."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -97,20 +100,25 @@ class FrameReader:
         previous_need = False  # the clause before said someone needs something
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
+        addressed = addressed_person(tokens, readings.mentions, readings.gaps)
         placed: dict[str, str] = {}  # item type → the one a place phrase named
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
             try:
-                roles = clause_roles(tokens, clause, requester, last_person)
+                roles = clause_roles(tokens, clause, requester, last_person, addressed=addressed)
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
+                if later is None and named_once is not None:
+                    later = (-1, named_once)  # "Is Otto in? I need his ruler": Otto's
                 if later is None:
                     unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
                     return TaskFrame(requester=requester, question=unclear)
                 # "bring me his stapler. Zhang Wei": the answer names him
                 answered.add(later[0])
-                roles = clause_roles(tokens, clause, requester, [*last_person, later[1]])
+                roles = clause_roles(
+                    tokens, clause, requester, [*last_person, later[1]], addressed=addressed
+                )
             unclear_place = kept_owners(self.office, tokens, clause, roles, requester, placed)
             if unclear_place is not None:  # "the ladder in the kitchen", where none is kept
                 return TaskFrame(requester=requester, question=unclear_place)

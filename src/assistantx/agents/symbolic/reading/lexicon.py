@@ -20,13 +20,16 @@ mention carries both readings and the parser asks which was meant.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.bare_possessives import read_bare_possessives
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
+from assistantx.agents.symbolic.reading.clipped_given import clipped_owner, given_name_clips
 from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
@@ -60,6 +63,8 @@ CUE_WORDS = frozenset(w for words in CUES.values() for w in words)
 SELF_WORDS = english.words("self_words")
 PRONOUNS = english.words("pronouns")
 OTHER_POSSESSIVES = english.words("other_possessives")
+# A clipped given name never stands after a determiner: "my Mum's ruler" is no Mumtaz's.
+_CLIP_NEVER_AFTER = english.words("object_starts") | english.words("other_possessives")
 # Words that connect a person to a role in the sentence.
 PREPOSITIONS = english.words("party_prepositions")
 
@@ -371,7 +376,8 @@ class Lexicon:
 
     def tokens(self, text: str) -> list[Token]:
         """The tokens of ``text`` (stage 1), each corrected against this office's words."""
-        raw = tokenize(text)
+        # "bring idas ruler": a name's possessive without its apostrophe, before correction
+        raw = read_bare_possessives(tokenize(text), self._one_word_names, self._item_openers)
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
@@ -387,6 +393,19 @@ class Lexicon:
         out = self.verb_phrases.join(out, text)
         # "vac my prep": a compound verb said by its first word, clipped ("vac pack")
         return self.clipped_verbs.read(out, self._known)
+
+    @functools.cached_property
+    def _one_word_names(self) -> frozenset[str]:
+        return frozenset(k for k in (*self.people, *self.name_words) if " " not in k)
+
+    @functools.cached_property
+    def _given_clips(self) -> dict[str, tuple[str, ...]]:
+        taken = {*self.people, *self.name_words, *self.items, *self.facilities, *self.places}
+        return given_name_clips(((p.name, p.id) for p in self.office.people), taken)
+
+    @functools.cached_property
+    def _item_openers(self) -> frozenset[str]:
+        return frozenset(k.split()[0] for k in self.items)
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*
@@ -641,6 +660,10 @@ class Lexicon:
             return Mention("cue", i, i + 1, kinds, t.possessive, t.text)
         if w in self.items:  # a cue word that is also an item name ("print", "copy")
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
+        clipped = clipped_owner(w, t.text, t.possessive, self._given_clips)
+        after_determiner = i > 0 and tokens[i - 1].word in _CLIP_NEVER_AFTER  # "my Mum's"
+        if clipped and not self._known(w) and not after_determiner:  # "Rhi's": Rhiannon's
+            return Mention("person", i, i + 1, clipped, True, t.text)
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
 
     def _work_asked(self, tokens: Sequence[Token], i: int) -> bool:

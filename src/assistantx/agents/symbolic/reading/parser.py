@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
@@ -212,6 +213,7 @@ class InstructionParser:
             named_items(whole, requester),
             to_self=to_self,
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
+            named_once=the_one_named(whole, requester),
         )
         if frame.understood:
             # "need cable ties, the art room has some": the one kept where the requester said

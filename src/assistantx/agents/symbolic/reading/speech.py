@@ -32,6 +32,7 @@ import itertools
 from dataclasses import dataclass
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
@@ -568,6 +569,14 @@ class SpeechActs:
             return True  # "got one already"
         if w[0] == "found" and w[1:2] and w[1] in ("the", "a", "an", "my", "mine", "his", "her"):
             return True  # "found the stapler in my drawer": a past find, never an errand
+        if clipped_progressive(
+            w,
+            cue_words=self.lex.cue_words,
+            asking_words=_MODALS | _WILLING | _NEED | _PLEASE,
+            verb_like=_verb_like,
+            names_item=self._names_item,
+        ):
+            return True  # "two parcels going out with Otto later": under way, context
         possessive = self._possessive_name(w[0])  # "Hal's clipboard snapped"
         if (
             w[0] not in _SUBJECTS

@@ -20,6 +20,7 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
+from assistantx.agents.symbolic.reading.screen.self_introduction import self_introduction
 from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.timing import without_time_idioms
@@ -46,6 +47,7 @@ class RequestScreen:
         """The message corrected, cut into pieces (each lexed and its speech acts read), and
         each piece judged by the table of rules (the first that matches decides it)."""
         terms = self.terms
+        text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         text, restored = subject_restored(text)  # "been at the machine": I've been
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
@@ -53,7 +55,7 @@ class RequestScreen:
         text, leave = asked_leave(text)  # "can I nick Robin's mute?": asks to borrow it
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
-        fixes = [*idioms, *restored, *stated, *taken, *leave, *rejected, *fixes]
+        fixes = [*intro, *idioms, *restored, *stated, *taken, *leave, *rejected, *fixes]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
             text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)

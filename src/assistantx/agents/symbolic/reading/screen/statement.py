@@ -11,6 +11,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_t
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 from assistantx.core.english import words as english_words
 
@@ -209,14 +210,15 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
     for n, m in enumerate(mentions):
         if m.kind != "item" or len(m.ids) != 1 or m.start in modifying:
             continue
-        before = mentions[n - 1] if n else None
+        k = _past_describing_words(tokens, mentions, n)
+        before = mentions[k - 1] if k else None
         whose = ""
         if before is not None and before.kind == "self" and before.possessive:
             whose = "my"
         elif before is not None and before.kind == "person" and before.possessive:
             whose = _whose_name(terms, before)
         elif before is not None and before.kind == "pronoun" and before.possessive:
-            people = {p.ids for p in mentions[:n] if p.kind == "person" and len(p.ids) == 1}
+            people = {p.ids for p in mentions[:k] if p.kind == "person" and len(p.ids) == 1}
             if len(people) == 1:  # "Yang said I could borrow his book"
                 whose = f"{terms.office.person(next(iter(people))[0]).name}'s"
         elif (holder := holder_of(mentions, n, words)) is not None:
@@ -229,6 +231,29 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
                         whose = f"{terms.office.person(owner[0].ids[0]).name}'s"
         out.append(f"{m.ids[0]}|{whose}")
     return out
+
+
+# "his leftover soup", "Wren's big red ruler": words that describe the item between it and
+# whose it is said to be
+_DESCRIBING_WORDS = 2
+
+
+def _past_describing_words(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> int:
+    """The index of the first mention of the describing words right before item mention
+    ``n`` (``n`` itself when there are none): plain words, adjacent, no pause between."""
+    k = n
+    while (
+        k > 0
+        and n - k < _DESCRIBING_WORDS
+        and mentions[k - 1].kind == "word"
+        and not mentions[k - 1].possessive
+        and mentions[k - 1].end == mentions[k].start
+        and not tokens[mentions[k].start].after_pause
+    ):
+        k -= 1
+    if k > 0 and mentions[k - 1].possessive and mentions[k - 1].end == mentions[k].start:
+        return k  # "his leftover soup": the possessive owns the item past its describing words
+    return n
 
 
 _POSSESSION_VERBS = english_words("possession_verbs")

@@ -1,0 +1,47 @@
+"""A possessive written without its apostrophe: "could u bring idas ruler", "borrow Ottos
+ruler" (Ida's, Otto's). A word that is a colleague's one-word name plus "s", itself no name
+and no English word, right before a word of one of the office's items in the same clause,
+is that name's possessive. Read on the tokens before the typo correction, which would
+otherwise make "ottos" plain "otto" ("bring Otto the ruler": Otto would receive his own
+ruler). An English word ("bills ruler", "marks ruler") is left as written: whose is asked,
+never guessed. "James' ruler" is already a possessive (the tokenizer's "s'").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+from dataclasses import replace
+
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import language
+
+_SHORTEST_NAME = 2  # "Al" + "s"
+
+
+def read_bare_possessives(
+    tokens: Sequence[Token], names: Collection[str], item_words: Collection[str]
+) -> list[Token]:
+    """``tokens`` with each apostrophe-less possessive of a name read as the name's
+    possessive. ``names``: the office's one-word names of people (folded); ``item_words``:
+    the words that open an item's name (folded)."""
+    out = list(tokens)
+    for n, t in enumerate(tokens):
+        nxt = tokens[n + 1] if n + 1 < len(tokens) else None
+        if nxt is None or nxt.opens or nxt.after_pause or nxt.word not in item_words:
+            continue
+        if _bare_possessive(t, names):
+            base = t.word[:-1]
+            out[n] = replace(t, word=base, typed=base, possessive=True)
+    return out
+
+
+def _bare_possessive(t: Token, names: Collection[str]) -> bool:
+    word = t.word
+    return (
+        not t.possessive
+        and word.endswith("s")
+        and len(word) > _SHORTEST_NAME
+        and word[:-1] in names
+        and word not in names
+        and not language.is_english_word(word)
+    )

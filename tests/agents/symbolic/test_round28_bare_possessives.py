@@ -1,0 +1,44 @@
+"""A possessive written without its apostrophe (blind round 28's class, on an office no
+sentence was written for, ``helpers.rota_desk``): "could u bring ottos ruler" is Otto's
+ruler brought to the requester, Otto asked; on main the typo correction made "ottos" plain
+"otto" and the ruler went to Otto. A plural that is an English word ("bills", "marks") is
+left as written: whose is not guessed."""
+
+from __future__ import annotations
+
+import pytest
+
+from helpers.reading import frame_reader
+from helpers.rota_desk import rota_desk
+
+_frame = frame_reader(rota_desk, "ada")
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("could u bring ottos ruler", "otto"),
+        ("could u bring me Ottos ruler", "otto"),
+        ("can i borrow rhiannons ruler", "rhiannon"),
+        ("pls fetch ottos steel rule for me", "otto"),
+    ],
+)
+def test_a_name_and_s_before_an_item_is_its_owner(text: str, owner: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "ruler", owner, "ada")
+    ], frame
+
+
+@pytest.mark.parametrize("text", ["could u bring marks ruler", "could u bring me bills ruler"])
+def test_an_english_plural_is_not_taken_for_a_name(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("ruler", None, "ada")]
+
+
+@pytest.mark.parametrize(
+    "text", ["take my ruler to otto", "take my ruler to ottos desk", "bring Otto my ruler"]
+)
+def test_a_name_before_no_item_still_receives(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("ruler", "ada", "otto")]
