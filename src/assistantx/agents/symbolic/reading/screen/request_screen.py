@@ -15,6 +15,7 @@ from assistantx.agents.symbolic.reading.screen.correction import corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
+from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
@@ -53,9 +54,10 @@ class RequestScreen:
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
         text, taken = how_taken(terms, text)  # "a brew, milk no sugar": no milk to fetch
         text, leave = asked_leave(text)  # "can I nick Robin's mute?": asks to borrow it
+        text, hedged = without_hedges(text)  # "Holly, I think, has one": Holly has one
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
-        fixes = [*intro, *idioms, *restored, *stated, *taken, *leave, *rejected, *fixes]
+        fixes = [*intro, *idioms, *restored, *stated, *taken, *leave, *hedged, *rejected, *fixes]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
             text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)
