@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from helpers.packing_loft import packing_loft
+from assistantx.core.office import Office, parse_office
+from helpers.packing_loft import packing_loft, raw_packing_loft
 from helpers.reading import frame_reader
 
 _frame = frame_reader(packing_loft, "lena")
@@ -251,4 +252,29 @@ def test_need_and_a_number_of_things_named_still_asks_for_them() -> None:
     assert [(t.kind, t.item) for t in frame.tasks] == [
         ("transfer", "ruler"),
         ("transfer", "stapler"),
+    ], frame
+
+
+def _loft_with_a_named_cabinet() -> Office:
+    """The loft whose cabinet is called by a longer name ("controlled drugs cabinet")."""
+    raw = raw_packing_loft()
+    for f in raw["facilities"]:
+        if f["id"] == "cabinet":
+            f["id"], f["name"], f["synonyms"] = "cd_store", "controlled drugs cabinet", ["cd cab"]
+    for person in raw["people"]:
+        for owned in person["owns"]:
+            if owned.get("facility") == "cabinet":
+                owned["facility"] = "cd_store"
+    return parse_office(raw)
+
+
+def test_the_cabinet_said_by_its_head_noun_is_the_one_cabinet() -> None:
+    """Blind round 28's sentence said "out of the cabinet" of the "CD cabinet": the head noun
+    of one facility's name, where the words say the thing is kept there."""
+    frame = frame_reader(_loft_with_a_named_cabinet, "lena")(
+        "Need the register for the check. Otto's got the keys so it'll have to come out of "
+        "the cabinet via him"
+    )
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "register", "otto", "lena")
     ], frame

@@ -18,6 +18,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task
+from assistantx.memory.names import normalize
 
 _ARTICLES = frozenset({"the", "a", "an", "our", "that"})
 _IN = frozenset({"in", "at", "inside"})
@@ -31,12 +32,32 @@ def kept_where_said(
     """Item type → the one owner part that keeps it at a place the text says the thing
     comes out of or is in; types kept there by several owners are left out."""
     owners: dict[str, set[str]] = {}
+    heads = _facility_heads(office)
     for m in mentions:
-        if m.kind not in ("facility", "place") or not _said_as_where_it_is(tokens, m.start):
+        if m.kind in ("facility", "place"):
+            kind, where = m.kind, m.ids[0]
+        elif m.kind == "word" and m.end - m.start == 1 and tokens[m.start].word in heads:
+            kind, where = "facility", heads[tokens[m.start].word]  # "the cabinet"
+        else:
             continue
-        for kept in items_kept_at(office, m.kind, m.ids[0]):
+        if not _said_as_where_it_is(tokens, m.start):
+            continue
+        for kept in items_kept_at(office, kind, where):
             owners.setdefault(kept.type_id, set()).add(kept.owner)
     return {item: next(iter(who)) for item, who in owners.items() if len(who) == 1}
+
+
+def _facility_heads(office: Office) -> dict[str, str]:
+    """The last word of a facility's name of several words ("cabinet" of "CD cabinet")
+    that ends no other facility's name: "out of the cabinet" says that one, here only,
+    where the words around it already say it is where a thing is kept."""
+    heads: dict[str, set[str]] = {}
+    for f in office.facilities:
+        for name in (f.name, *f.synonyms):
+            words = normalize(name).split()
+            if len(words) > 1:
+                heads.setdefault(words[-1], set()).add(f.id)
+    return {head: next(iter(ids)) for head, ids in heads.items() if len(ids) == 1}
 
 
 def _said_as_where_it_is(tokens: Sequence[Token], start: int) -> bool:
