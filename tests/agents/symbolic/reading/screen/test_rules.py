@@ -41,6 +41,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # a problem reported after a question about a facility's state
         "statement",
         "statement",  # where an item is ("fyi the tape's in the cupboard")
+        "statement",  # told for information beside a tag ("..., just so you know")
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
         "unsupported",  # a service nothing here offers, before an outsider is asked about

@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.screen.facility_report import facility_r
 from assistantx.agents.symbolic.reading.screen.facility_state_asked import facility_state_asked
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
+from assistantx.agents.symbolic.reading.screen.fyi import fyi
 from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
@@ -81,6 +82,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", problem),
     ("statement", statement),
     ("statement", whereabouts),
+    ("statement", fyi),  # after the statements that say more ("Thanks for telling me ...")
     ("which", several_kept),
     ("unsupported", variant),
     # a service nothing here offers is declined before an outsider recipient is asked
