@@ -108,9 +108,28 @@ def _show_the_instruction(page: Page, ins: str) -> None:
     expect(page.locator("#timeline .step").first).to_be_visible(timeout=10_000)
 
 
+def _panel_boxes(page: Page) -> dict[str, Box]:
+    """Every panel's box in one layout of the page: the instruction runs on while the test
+    looks (a chat message arrives, a step is added), so boxes read one call at a time may
+    come from two layouts, a panel seen before it grew beside one seen after (a CI run saw
+    the trace over the chats that way)."""
+    found: dict[str, Box | None] = page.evaluate(
+        """(names) => Object.fromEntries(names.map((name) => {
+            const el = document.querySelector(`#view-live > .${name}`);
+            if (!el) return [name, null];
+            const r = el.getBoundingClientRect();
+            return [name, {x: r.x, y: r.y, width: r.width, height: r.height}];
+        }))""",
+        PANELS,
+    )
+    missing = [name for name, box in found.items() if box is None]
+    assert not missing, f"{missing} not rendered"
+    return {name: box for name, box in found.items() if box is not None}
+
+
 def _check_common_layout(page: Page, width: int) -> dict[str, Box]:
     assert page.evaluate("document.documentElement.scrollWidth") <= width
-    boxes = {name: _box(page, f"#view-live > .{name}") for name in PANELS}
+    boxes = _panel_boxes(page)
     for i, a in enumerate(PANELS):
         for b in PANELS[i + 1 :]:
             assert not _overlap(boxes[a], boxes[b]), (width, a, b, boxes[a], boxes[b])
