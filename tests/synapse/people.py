@@ -5,14 +5,11 @@ answer."""
 from __future__ import annotations
 
 import asyncio
-import io
 import itertools
 import logging
 
-import zxingcpp
-from PIL import Image
-
 from assistantx.adapters.messenger.matrix import MatrixClient
+from helpers.qr import qr_text
 from synapse.helpers import wait_joined
 from synapse.homeserver import Account
 from synapse.inbox import Inbox, Seen
@@ -78,8 +75,4 @@ class MatrixPerson(Inbox):
         """Download an image message and read the QR code in it, as a phone camera would."""
         assert image.msgtype == "m.image", image
         data = await self.client.download(str(image.content["url"]))
-        codes = zxingcpp.read_barcodes(Image.open(io.BytesIO(data)))
-        # zxing-cpp can report one symbol twice: what must hold is one code, read as one text
-        texts = {str(code.text) for code in codes}
-        assert len(texts) == 1, f"{len(texts)} QR codes in {image.body}: {sorted(texts)}"
-        return texts.pop()
+        return qr_text(data, image.body)
