@@ -26,6 +26,8 @@ from assistantx.core import english, language
 
 NameReading = Literal["person", "word", "ask"]
 
+_INDEFINITE = frozenset({"a", "an"})
+
 _COMMON = english.words("common")
 _PERSON_BEFORE = english.words("person_before")
 _WORD_BEFORE = english.words("word_before")
@@ -122,6 +124,8 @@ def is_word_name(word: str) -> bool:
 def read_name(slot: NameSlot) -> NameReading:
     """The reading of a one-word name: the person, the ordinary word, or ask which."""
     w = slot.word
+    if not slot.opens and slot.prev in _INDEFINITE and not slot.possessive:
+        return "word"  # "for a min": nobody is "a Min"; the word, whatever the name
     if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
     if _verb_slot(slot):

@@ -222,6 +222,8 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
             # a name that is also a word counts only where it is read as the person ("to
             # penny", "May's desk"; not "in May", "the grace period"); a role title is a role
             word = key[0]
+            if len(key) == 1 and n > 0 and words[n - 1].folded in ("a", "an"):
+                continue  # "for a min": nobody is "a Min" (the reader's reading too)
             if len(key) == 1 and word not in _ROLE_TITLES and is_word_name(word):
                 if not _written_as_name(words, n, items, name_words) and not _said_alone_as_fix(
                     words, n

@@ -713,6 +713,8 @@ class Lexicon:
         the word was a typo's correction (then only a name) or the requester already said
         which they meant."""
         t = tokens[i]
+        if i > 0 and tokens[i - 1].word in ("a", "an") and not t.possessive and not t.opens:
+            return "word"  # "for a min": nobody is "a Min" (``read_name`` says so too)
         if t.corrected or not is_word_name(t.word):
             return "person"
         if t.word in self.chosen:

@@ -68,6 +68,8 @@ _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
 _WILLING = english.words("request_markers")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
+# Whole withdrawals ("don't bother", "no need"): said after a refusal word, still one
+_WITHDRAW_WHOLE = frozenset(tuple(p.split()) for p in english.entries("withdraw"))
 _REFUSING = frozenset({"no", "nah", "nope"})
 _BORROW = english.words("borrow_words")
 _DONE_VERBS = english.words("done_verbs")
@@ -233,10 +235,15 @@ class SpeechActs:
                 rest = w[len(head) :]
                 if service_asked(self.lex, head, rest):
                     return False  # "scrap my old tyre" where the office scraps tyres
+                if tuple(rest) in _WITHDRAW_WHOLE:
+                    return True  # "actually no, don't bother": one withdrawal said twice
                 return not rest or not self._imperative(rest)
-        # "no forget it", "nah never mind", "(oh) wait never mind": a refusal word or a "wait"
-        # before a withdrawal only stresses it ("wait for me" withdraws nothing)
-        return len(w) > 1 and w[0] in _REFUSING | {"wait"} and self.withdrawal(w[1:])
+        # "no forget it", "nah never mind", "(oh) wait never mind", "no don't bother": a
+        # refusal word or a "wait" before a withdrawal only stresses it ("wait for me"
+        # withdraws nothing)
+        if len(w) > 1 and w[0] in _REFUSING | {"wait"}:
+            return tuple(w[1:]) in _WITHDRAW_WHOLE or self.withdrawal(w[1:])
+        return False
 
     def had_already(self, words: list[str]) -> bool:
         """ "oh actually Ida just brought me one", "someone else already did it", "thanks
