@@ -63,3 +63,12 @@ def test_for_a_min_is_a_minute() -> None:
 def test_a_stressed_dont_bother_withdraws(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == [] and frame.decline is not None and "dropped" in frame.decline
+
+
+def test_who_follows_the_mark_does_not_tell_the_owner() -> None:
+    """ "she'll never notice we took it": the owner is kept in the dark whoever follows; only
+    "without asking me" is the speaker's own say."""
+    frame = _frame("take Wang's seal while she's out, she'll never notice we used it")
+    assert frame.tasks == [] and frame.decline is not None, frame
+    frame = _frame("print my file without asking me again")
+    assert [t.kind for t in frame.tasks] == ["print"], frame

@@ -17,13 +17,19 @@ _COVERT = tuple(tuple(entry.split()) for entry in english.entries("covert_marks"
 
 # "print it without asking me again": the speaker's own say, nobody kept in the dark
 _SPEAKER = frozenset({"me", "us", "i", "we", "anyone", "anybody"})
+_TELLING = frozenset({"without", "dont", "do"})  # the marks a speaker's "me"/"us" may follow
 
 
 def _kept_in_the_dark(words: list[str]) -> bool:
     for n in range(len(words)):
         for mark in _COVERT:
             end = n + len(mark)
-            if words[n:end] == list(mark) and (end >= len(words) or words[end] not in _SPEAKER):
+            if words[n:end] != list(mark):
+                continue
+            # "without asking me", "don't tell us": the speaker's own say; "she'll never
+            # notice we took it" keeps the owner in the dark whoever follows
+            spoken_to = mark[0] in _TELLING and end < len(words) and words[end] in _SPEAKER
+            if not spoken_to:
                 return True
     return False
 
