@@ -26,6 +26,7 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
+        "unsupported",  # a place outside ("... to the applicant's house on Elm Road")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")

@@ -54,7 +54,7 @@ class Outsider:
 def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     """The screen's rule: a request piece whose recipient is nobody of the office."""
     del requester  # the earlier rules of the table took the pieces that ask nothing
-    if _sends_out(terms, msg):
+    if sends_out(terms, msg):
         return None  # "courier it to the client": a place outside, the destination's reading
     found = _recipient_outsider(terms, msg, piece)
     if found is None:
@@ -101,13 +101,13 @@ def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
 def outsider_recipient(terms: Terms, msg: Message, piece: Piece) -> str | None:
     """The phrase of a recipient who is nobody of the office ("the client"), as written;
     None where there is none or the office sends things out to such places."""
-    if _sends_out(terms, msg):
+    if sends_out(terms, msg):
         return None
     found = _recipient_outsider(terms, msg, piece)
     return found.phrase if found is not None else None
 
 
-def _sends_out(terms: Terms, msg: Message) -> bool:
+def sends_out(terms: Terms, msg: Message) -> bool:
     """Whether the message names a service that sends things outside the office (its verb,
     its name, or a facility that offers it): whoever it names outside is where it goes."""
     office = terms.office

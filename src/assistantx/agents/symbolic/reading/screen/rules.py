@@ -28,6 +28,7 @@ from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
+from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
@@ -67,6 +68,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unsupported", absent_owner),
     ("unsupported", covert),
     ("unsupported", break_in),
+    ("unsupported", outside_place),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     ("statement", elliptical_reason),
