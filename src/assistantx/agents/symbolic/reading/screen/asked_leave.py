@@ -9,13 +9,10 @@ from __future__ import annotations
 
 import re
 
-from assistantx.core import english
+from assistantx.agents.symbolic.reading.screen.english import phrases_pattern
 from assistantx.core.task_schema import Evidence
 
-_SLANG = "|".join(
-    r"\s+".join(re.escape(w) for w in entry.split())
-    for entry in sorted(english.entries("taking_slang"), key=len, reverse=True)
-)
+_SLANG = phrases_pattern("taking_slang")
 # "can I", "could i just", "may we", "mind if I", "ok if I": leave asked for the speaker
 _LEAVE = re.compile(
     rf"\b(?P<ask>(?:can|could|may|might)\s+(?:i|we)|(?:mind|ok|okay|alright)\s+if\s+(?:i|we))"

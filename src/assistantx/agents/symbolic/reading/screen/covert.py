@@ -7,10 +7,11 @@ mind ("he won't mind") is read as before: the owner is still asked."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.destructive import commanded
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-from assistantx.core import english, language
+from assistantx.core import english
 
 _COVERT = tuple(tuple(entry.split()) for entry in english.entries("covert_marks"))
 
@@ -34,20 +35,10 @@ def _kept_in_the_dark(words: list[str]) -> bool:
     return False
 
 
-def _asks(piece: Piece) -> bool:
-    """Whether a piece asks for something: request wording, or a verb in its plain form
-    first ("go to Zhang's desk and take his stapler while he's out, he'll never notice"),
-    a command the speech acts need not know."""
-    if piece.acts.request or piece.acts.imperative:
-        return True
-    words = piece.words
-    return bool(words) and not piece.asks and words[0] in language.verb_lemmas(words[0])
-
-
 def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     if not _kept_in_the_dark(piece.words):
         return None
-    if not (piece.acts.request or any(_asks(p) for p in msg.pieces)):
+    if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
         return None
     return Finding(
         "unsupported",

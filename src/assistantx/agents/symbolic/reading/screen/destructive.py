@@ -24,19 +24,20 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
                 continue  # "shred my drafts" where a shredder is offered: a service
             if starts_with(sub.words, at, verb):
                 return _declined(terms, piece, " ".join(verb))
-    if _told(terms, piece) and (container := _waste_container(terms, piece)) is not None:
+    if commanded(terms, piece) and (container := _waste_container(terms, piece)) is not None:
         return _declined(terms, piece, f"put things in the {container}", what="")
     return None
 
 
-def _told(terms: Terms, piece: Piece) -> bool:
+def commanded(terms: Terms, piece: Piece) -> bool:
     """Whether the piece tells the robot to do something: request wording, or a verb in its
-    plain form first ("chuck ...", "ditch ..."), a verb the office's words need not know."""
+    plain form first, after any lead-in or not ("chuck ...", "ditch ...", "go to Zhang's desk
+    and take ..."), a verb the office's words need not know."""
     if piece.acts.request:
         return True
     words = piece.words
     at = piece.verb_at(terms.en.lead_in)
-    return at < len(words) and words[at] in language.verb_lemmas(words[at])
+    return any(k < len(words) and words[k] in language.verb_lemmas(words[k]) for k in {0, at})
 
 
 def _waste_container(terms: Terms, piece: Piece) -> str | None:

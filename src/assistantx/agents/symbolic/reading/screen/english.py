@@ -4,6 +4,7 @@ tuples of words, and the small word-matching helpers every rule shares."""
 from __future__ import annotations
 
 import functools
+import re
 from dataclasses import dataclass
 
 from assistantx.core import language
@@ -94,3 +95,12 @@ def split_words(text: str) -> list[str]:
 
 def starts_with(words: list[str], at: int, phrase: tuple[str, ...]) -> bool:
     return tuple(words[at : at + len(phrase)]) == phrase
+
+
+def phrases_pattern(key: str) -> str:
+    """A regular expression (no groups) matching any phrase of ``english.yaml``'s list
+    ``key`` as typed, longest first, with any run of spaces between its words."""
+    return "|".join(
+        r"\s+".join(re.escape(w) for w in entry.split())
+        for entry in sorted(entries_of()[key], key=len, reverse=True)
+    )

@@ -8,13 +8,10 @@ from __future__ import annotations
 
 import re
 
-from assistantx.core import english
+from assistantx.agents.symbolic.reading.screen.english import phrases_pattern
 from assistantx.core.task_schema import Evidence
 
-_HEDGES = "|".join(
-    r"\s+".join(re.escape(w) for w in entry.split())
-    for entry in sorted(english.entries("parenthetical_hedges"), key=len, reverse=True)
-)
+_HEDGES = phrases_pattern("parenthetical_hedges")
 # set off on both sides: ", I think," / " - I think - "
 _SET_OFF = re.compile(rf"\s*(?:,|\s[-–—])\s*(?:{_HEDGES})\s*(?:,|[-–—]\s)\s*", re.IGNORECASE)
 
