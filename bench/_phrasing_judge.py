@@ -36,6 +36,15 @@ class PhrasingsError(Exception):
     """A phrasings file that cannot be run; the message is one line."""
 
 
+class Delivery(BaseModel):
+    """One more hand-over a combination asks for ("take my rule to Heath, and a tea for me")."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    recipient: str = Field(min_length=1)
+    item: str = Field(min_length=1)
+
+
 class Case(BaseModel):
     model_config = ConfigDict(extra="forbid", populate_by_name=True)
 
@@ -46,6 +55,7 @@ class Case(BaseModel):
     recipient: str | None = None
     item: str | None = None
     owner_asked: str | None = None
+    also: tuple[Delivery, ...] = ()  # deliver: the combination's other hand-overs, each required
     accept: tuple[Expect, ...] = ()
     why: str = ""
 
@@ -53,6 +63,8 @@ class Case(BaseModel):
     def _deliver_names_what_and_whom(self) -> Case:
         if self.expect == "deliver" and (self.recipient is None or self.item is None):
             raise ValueError("a deliver case needs both recipient and item")
+        if self.also and self.expect != "deliver":
+            raise ValueError("only a deliver case has more deliveries (also)")
         return self
 
 
@@ -92,6 +104,17 @@ def load_phrasings(
                 name = field.rstrip("_")
                 raise PhrasingsError(
                     f"{path}: case {case.id}: {name}: {person!r} is no person id of the office"
+                )
+        for more in case.also:
+            if not office.is_person(more.recipient):
+                raise PhrasingsError(
+                    f"{path}: case {case.id}: also: {more.recipient!r} is no person id "
+                    "of the office"
+                )
+            if not known_item(office, more.item):
+                raise PhrasingsError(
+                    f"{path}: case {case.id}: also: {more.item!r} is no item id, item type or "
+                    "product of the office"
                 )
         if case.item is not None and not known_item(office, case.item):
             raise PhrasingsError(
@@ -253,6 +276,12 @@ def _unmet(expect: Expect, case: Case, conduct: Conduct, office: Office) -> str 
         )
         if hit is None:
             return f"{case.item} never handed to {case.recipient}"
+        for more in case.also:
+            if not any(
+                h.received and h.to == more.recipient and item_matches(more.item, h.item)
+                for h in conduct.handovers
+            ):
+                return f"{more.item} never handed to {more.recipient}"
         if case.owner_asked is not None and not conduct.asked_before(
             case.owner_asked, conduct.moved.get(hit.item, hit.at), office
         ):
@@ -278,6 +307,8 @@ def _wrong_physical(case: Case, conduct: Conduct, office: Office) -> str | None:
     else:
         allowed = {conduct.requester, case.recipient} | _named(office, case.text)
     for h in conduct.handovers:
+        if any(h.to == m.recipient and item_matches(m.item, h.item) for m in case.also):
+            continue  # a combination's other hand-over, as the writer named it
         if h.to not in allowed and _owner(office, h.item) != h.to:  # a return is no hand-over
             return f"handed {h.item} to {h.to}"
     for item, at in conduct.moved.items():

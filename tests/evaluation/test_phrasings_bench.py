@@ -145,6 +145,56 @@ def test_a_thank_you_is_words_and_a_known_nothing_is_a_decline() -> None:
     assert (verdict.got, verdict.right, verdict.wrong_physical) == ("decline", False, None)
 
 
+COMBINED = "take my book to Wang, and get me a coffee"
+
+
+def test_a_combinations_other_hand_over_named_under_also_is_required_and_allowed() -> None:
+    run = trace("lee", COMBINED)
+    book = {"recipient": "wang", "item": "book"}
+    # the coffee to the requester is not the case's recipient: wrong unless the case names it
+    unnamed = judge(case(COMBINED, "deliver", **book), run, OFFICE)
+    assert (unnamed.right, unnamed.wrong_physical) == (False, "handed coffee:lee to lee")
+    named = judge(
+        case(COMBINED, "deliver", **book, also=[{"recipient": "lee", "item": "coffee"}]),
+        run,
+        OFFICE,
+    )
+    assert (named.right, named.wrong_physical) == (True, None)
+    # a second hand-over the run never made is unmet, and naming it allows nothing else
+    missing = judge(
+        case(COMBINED, "deliver", **book, also=[{"recipient": "lee", "item": "stapler"}]),
+        run,
+        OFFICE,
+    )
+    assert (missing.right, missing.wrong_physical) == (False, "handed coffee:lee to lee")
+    unmet = judge(
+        case(
+            COMBINED,
+            "deliver",
+            **book,
+            also=[{"recipient": "lee", "item": "coffee"}, {"recipient": "lee", "item": "stapler"}],
+        ),
+        run,
+        OFFICE,
+    )
+    assert (unmet.right, unmet.wrong_physical, unmet.why) == (
+        False,
+        None,
+        "stapler never handed to lee",
+    )
+    elsewhere = judge(
+        case(COMBINED, "deliver", **book, also=[{"recipient": "zhang", "item": "coffee"}]),
+        run,
+        OFFICE,
+    )
+    assert (elsewhere.right, elsewhere.wrong_physical) == (False, "handed coffee:lee to lee")
+
+
+def test_also_belongs_to_a_deliver_case() -> None:
+    with pytest.raises(ValueError, match="only a deliver case"):
+        case(THANKS, "words", also=[{"recipient": "lee", "item": "coffee"}])
+
+
 def test_a_product_and_a_printed_file_are_delivered_with_no_one_elses_hand_over() -> None:
     coffee = "get me a coffee"
     verdict = judge(
@@ -180,6 +230,16 @@ def _write(tmp_path: Path, cases: str) -> Path:
         (
             "  - {id: a, as: lee, text: hi, expect: deliver, item: unicorn, recipient: lee}",
             "case a: item: 'unicorn' is no item id",
+        ),
+        (
+            "  - {id: a, as: lee, text: hi, expect: deliver, item: pen, recipient: lee,"
+            " also: [{recipient: bob, item: pen}]}",
+            "case a: also: 'bob' is no person id",
+        ),
+        (
+            "  - {id: a, as: lee, text: hi, expect: deliver, item: pen, recipient: lee,"
+            " also: [{recipient: lee, item: unicorn}]}",
+            "case a: also: 'unicorn' is no item id",
         ),
     ],
 )
