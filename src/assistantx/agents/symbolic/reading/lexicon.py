@@ -111,6 +111,8 @@ _ALIAS_ARTICLES = frozenset({"the", "our"})
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
+# "have the Gaffer sign it", "let the manager stamp it": a verb that has someone do something
+_DOER_VERBS_BARE = english.words("doer_verbs_bare")
 # The copulas of a distance ("the lab is miles away")
 _DISTANCE_COPULAS = frozenset({"is", "s", "are", "was", "were", "isnt", "arent", "feels"})
 # "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
@@ -618,6 +620,8 @@ class Lexicon:
         if start >= 2 and tokens[start - 2].word in _MODALS:
             return False  # "could the office manager sign ...": the subject, not a modifier
         nxt = tokens[end]
+        if start >= 2 and tokens[start - 2].word in _DOER_VERBS_BARE and _bare_verb(nxt):
+            return False  # "have the Gaffer sign my form": the one made to sign it
         return (
             tokens[start - 1].word in _MODIFIER_DETERMINERS
             and not nxt.opens
@@ -763,6 +767,11 @@ class Lexicon:
         said = [tokens[k].text for k in range(start, end)]
         said[i - start] = said[i - start].lower()
         return " ".join(said)
+
+
+def _bare_verb(token: Token) -> bool:
+    """Whether a word is a verb in its plain form, its own lemma ("sign", "stamp")."""
+    return not token.opens and token.word in language.verb_lemmas(token.word)
 
 
 def _agent_noun(word: str, verb: str) -> bool:
