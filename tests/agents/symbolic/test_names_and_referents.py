@@ -53,6 +53,26 @@ def test_a_declared_nickname_is_the_doer(text: str, actor: str) -> None:
 
 
 @pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("bring my form to the Major", "dale"),
+        ("bring my form to the Major please", "dale"),
+        ("take the certificate over to the Gaffer", "otis"),
+    ],
+)
+def test_a_declared_nickname_after_the_is_the_recipient(text: str, recipient: str) -> None:
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [t.recipient for t in frame.tasks] == [recipient], frame
+
+
+@pytest.mark.parametrize("text", ["the major problem is my form", "bring my form to the major"])
+def test_the_word_in_lower_case_is_no_nickname(text: str) -> None:
+    frame = _frame(text)
+    assert all(t.recipient != "dale" for t in frame.tasks), frame
+
+
+@pytest.mark.parametrize(
     "text", ["have you got my form?", "have the forms been signed?", "the Major signed my form"]
 )
 def test_have_still_asks_or_tells(text: str) -> None:
@@ -177,7 +197,6 @@ def test_someone_named_to_find_is_still_asked_about(text: str) -> None:
         "Nell's headset died mid-session. Miles has a spare one, could you bring it to her?",
         "Nell's headset is broken. Miles has a spare one, can you grab it for her",
         "Nell's headset died. Miles has one, can you take it to Nell",
-        "Nell's headset died mid-session. Miles has a headset, could you bring it to her?",
     ],
 )
 def test_it_is_the_spare_one(text: str) -> None:
@@ -185,6 +204,20 @@ def test_it_is_the_spare_one(text: str) -> None:
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("transfer", "headset", "miles", "nell")
     ], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Miles has a drill. Brook has a drill. bring it to me",
+        "Miles has a drill and Brook has a drill, bring it to me",
+    ],
+)
+def test_two_of_a_kind_said_alike_pick_neither(text: str) -> None:
+    """Near-miss: two colleagues said to have one each, neither by "one": "it" is not
+    guessed as the later one's."""
+    frame = _frame(text)
+    assert [t.owner for t in frame.tasks if t.kind == "transfer"] in ([], [None]), frame
 
 
 def test_the_one_said_before_still_goes_where_said() -> None:

@@ -10,6 +10,7 @@ import re
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
+from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.core import language
@@ -23,6 +24,9 @@ def rewrite(
     terms: Terms, msg: Message, text: str, hints: list[Hint], context: list[str]
 ) -> tuple[str, list[Evidence]]:
     evidence: list[Evidence] = []
+    # "Rhys has a spare one": the item a statement's "one" stood for, had by its subject
+    held = {c.removeprefix(ONE_HELD) for c in context if c.startswith(ONE_HELD)}
+    context = [c.removeprefix(ONE_HELD) for c in context]
     text, found = purposes(terms, text)
     evidence += found
     text, found = kept_things(terms, msg, text)
@@ -57,9 +61,12 @@ def rewrite(
         # "Gao asked for my scissors, bring them to her": mine
         # Two things stated ("Lena has a loupe and Noor has a bone folder, bring it"): "it"
         # could be either, so it is left for the frames, which ask which one
-        # One kind stated several times ("Ivy's headset died. Rhys has a spare one"): "it"
-        # is the latest one said, the one that can still be brought
-        one_stated = len({s.partition("|")[0] for s in stated}) == 1
+        # One kind stated again by "one" ("Ivy's headset died. Rhys has a spare one"): "it"
+        # is the one said last, the one that can still be brought
+        again = (
+            bool(stated) and stated[-1] in held and len({s.partition("|")[0] for s in stated}) == 1
+        )
+        one_stated = len(set(stated)) == 1 or again
         back = ("it", "them") if stated and said[-1] == stated[-1] and one_stated else ()
         for phrase in (*terms.en.another_one, "some", *back):
             pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)

@@ -260,13 +260,15 @@ _POSSESSION_VERBS = english_words("possession_verbs")
 
 
 _ONE = frozenset({"one", "ones"})
+# how ``one_held`` marks its item for the rewrites: said last, it is what "it" means
+ONE_HELD = "one held:"
 
 
 def one_held(terms: Terms, msg: Message, piece: Piece) -> list[str]:
     """ "Ivy's headset died. *Rhys has a spare one*": a statement that one person has "one"
     (a describing word or two between) names no item itself; it is the item named last in
     the message before it, theirs ("headset|Rhys Ames's"), so a later "it" is the one they
-    have, not the one said before it. Nothing named before: nothing."""
+    have, not the one said before it (marked ``ONE_HELD``). Nothing named before: nothing."""
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     words = [t.word for t in tokens]
     people = [m for m in mentions if m.kind == "person"]
@@ -292,7 +294,7 @@ def one_held(terms: Terms, msg: Message, piece: Piece) -> list[str]:
     ]
     if not earlier:
         return []
-    return [f"{earlier[-1].ids[0]}|{_whose_name(terms, person)}"]
+    return [f"{ONE_HELD}{earlier[-1].ids[0]}|{_whose_name(terms, person)}"]
 
 
 # what may stand between a verb of having and "one": "a spare one", "another one", "an old one"
