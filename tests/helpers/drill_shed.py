@@ -10,7 +10,7 @@ from typing import Any
 from helpers import office_builder as ob
 
 _PEOPLE = (
-    ob.person("nell", "Nell Ashby", "headset", "tape"),
+    ob.person("nell", "Nell Ashby", "headset", "tape", aliases=["Sister Ashby"]),
     ob.person("miles", "Miles Dorran", "drill", "headset", "tape"),
     ob.person("brook", "Brook Hale", "tape", "drill"),
     ob.person("otis", "Otis Crane", "headset", aliases=["Gaffer"]),

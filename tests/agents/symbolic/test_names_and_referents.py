@@ -45,6 +45,9 @@ def _tasks(text: str, who: str = "sunny") -> list[tuple[str, str | None, str | N
         ("let the Gaffer sign my form", "otis"),
         ("can the Chief sign off my form", "rhea"),
         ("have Otis sign my form", "otis"),
+        ("have Sister Ashby sign my form", "nell"),
+        ("have Sister Ashby stamp my form please", "nell"),
+        ("can Sister Ashby sign my form", "nell"),
     ],
 )
 def test_a_declared_nickname_is_the_doer(text: str, actor: str) -> None:
@@ -64,6 +67,11 @@ def test_a_declared_nickname_after_the_is_the_recipient(text: str, recipient: st
     frame = _frame(text)
     assert frame.question is None, frame
     assert [t.recipient for t in frame.tasks] == [recipient], frame
+
+
+def test_a_nickname_opening_a_statement_of_work_is_no_choice() -> None:
+    frame = _frame("the Major needs to sign my form")
+    assert frame.question is None or "Do you mean" not in frame.question, frame
 
 
 @pytest.mark.parametrize("text", ["the major problem is my form", "bring my form to the major"])
@@ -197,6 +205,8 @@ def test_someone_named_to_find_is_still_asked_about(text: str) -> None:
         "Nell's headset died mid-session. Miles has a spare one, could you bring it to her?",
         "Nell's headset is broken. Miles has a spare one, can you grab it for her",
         "Nell's headset died. Miles has one, can you take it to Nell",
+        "Nell's headset died. Miles has a spare, bring it to her",
+        "Nell's headset died. Miles has got a spare one, bring it to her",
     ],
 )
 def test_it_is_the_spare_one(text: str) -> None:
@@ -218,6 +228,20 @@ def test_two_of_a_kind_said_alike_pick_neither(text: str) -> None:
     guessed as the later one's."""
     frame = _frame(text)
     assert [t.owner for t in frame.tasks if t.kind == "transfer"] in ([], [None]), frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Nell's headset died. Miles has a spare battery, bring it to her",
+        "Nell's headset died. Miles has a headset, bring it to her",
+    ],
+)
+def test_no_one_said_moves_nothing_to_the_holder(text: str) -> None:
+    """Near-miss: without "one" standing for the thing, Nell's headset never goes to Miles,
+    and Miles's is not guessed."""
+    frame = _frame(text)
+    assert all(t.recipient != "miles" and t.owner != "miles" for t in frame.tasks), frame
 
 
 def test_the_one_said_before_still_goes_where_said() -> None:

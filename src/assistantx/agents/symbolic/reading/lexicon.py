@@ -754,8 +754,8 @@ class Lexicon:
             return False
         if i == 0 or tokens[i - 1].word != "the":
             return False
-        nxt = tokens[i + 1] if i + 1 < len(tokens) and not tokens[i + 1].opens else None
-        return nxt is None or not self._known(nxt.word)
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) and not tokens[i + 1].opens else ""
+        return not (nxt in self.items or nxt in self.facilities or nxt in self.places)
 
     def _distance(self, tokens: Sequence[Token], i: int) -> bool:
         """ "the prep room is Miles away from S4": a plural noun of measure between a

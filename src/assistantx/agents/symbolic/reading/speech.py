@@ -805,6 +805,9 @@ class SpeechActs:
         k = start
         while k < len(w) and k < start + 3 and (self._named(w[k]) or w[k] in self.lex.roles):
             k += 1
+        for n in (3, 2):  # "have Sister Brennan sign it": an alias the office declares whole
+            if " ".join(w[start : start + n]) in self.lex.people:
+                k = max(k, start + n)
         if k == start or k >= len(w):
             return False
         return w[k] in language.verb_lemmas(w[k])

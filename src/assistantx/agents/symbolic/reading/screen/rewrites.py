@@ -38,7 +38,7 @@ def rewrite(
         text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
     subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
     said_of = {h.person for h in hints if h.kind in _SAID_OF and h.person}
-    holder = _holder_of_last(terms, subjects | said_of, context)
+    holder = _holder_of_last(terms, subjects | said_of, context, held)
     text = name_pronouns(terms, msg, text, hints, subjects - holder, holder)
     text, found = dangling_possessives(terms, msg, text)
     evidence += found
@@ -251,12 +251,15 @@ _BACK_PRONOUNS = frozenset({"him", "his", "her"})
 _SAID_OF = frozenset({"availability", "location", "condition"})
 
 
-def _holder_of_last(terms: Terms, subjects: set[str], context: list[str]) -> frozenset[str]:
+def _holder_of_last(
+    terms: Terms, subjects: set[str], context: list[str], held: set[str]
+) -> frozenset[str]:
     """ "Ivy's headset died. Rhys has a spare one, bring it to her": of the several people
-    the statements are about, the one who has the thing stated last (Rhys), who is not whom
-    "her" means (the thing is theirs already). One person only, or nobody's: nobody."""
+    the statements are about, the one the last statement says has "one" (Rhys), who is not
+    whom "her" means (the thing is theirs already). One person only, no "one" said last, or
+    nobody's: nobody."""
     stated = [c for c in context if not c.startswith(("person:", "product:", CHOSEN))]
-    if len(subjects) < 2 or not stated:
+    if len(subjects) < 2 or not stated or stated[-1] not in held:
         return frozenset()
     whose = stated[-1].partition("|")[2].removesuffix("'s")
     holders = frozenset(p for p in subjects if terms.office.person(p).name == whose)

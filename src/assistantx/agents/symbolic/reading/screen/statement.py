@@ -280,11 +280,15 @@ def one_held(terms: Terms, msg: Message, piece: Piece) -> list[str]:
     if not verb or verb[0] not in _POSSESSION_VERBS:
         return []
     rest = between[0 if person.possessive else 1 :]
+    rest = rest[1:] if rest[:1] == ["got"] else rest  # "has got one"
     ones = [k for k, w in enumerate(rest) if w in _ONE]
-    if not ones or ones[0] > 3 or not set(rest[: ones[0]]) <= _HELD_ONE_BEFORE | {"got"}:
+    if not ones and rest[:1] in (["a"], ["an"]) and rest[1:2] and rest[1] in _SPARE:
+        ones = [2]  # "Rhys has a spare": the describing word standing for the thing
+        rest = [*rest[:2], "one", *rest[2:]]
+    if not ones or ones[0] > 3 or not set(rest[: ones[0]]) <= _HELD_ONE_BEFORE:
         return []
     if any(language.is_noun(w) and w not in _ONE for w in rest[ones[0] + 1 : ones[0] + 2]):
-        return []  # "one battery": a thing of its own
+        return []  # "one battery", "a spare battery": a thing of its own
     earlier = [
         m
         for p in msg.pieces
@@ -298,7 +302,8 @@ def one_held(terms: Terms, msg: Message, piece: Piece) -> list[str]:
 
 
 # what may stand between a verb of having and "one": "a spare one", "another one", "an old one"
-_HELD_ONE_BEFORE = frozenset({"a", "an", "another", "spare", "extra", "old", "new", "second"})
+_SPARE = frozenset({"spare", "extra"})
+_HELD_ONE_BEFORE = _SPARE | {"a", "an", "another", "old", "new", "second"}
 
 
 def holder_of(mentions: Sequence[Mention], n: int, words: list[str]) -> Mention | None:
