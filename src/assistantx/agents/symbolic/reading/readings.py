@@ -372,6 +372,8 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
 
 
 _OWN = ("my", "our")
+# people named by what they are, nobody of the office ("client", "patient")
+_OUTSIDERS = english.words("outsider_nouns")
 
 
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
@@ -388,10 +390,13 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
     if m.possessive and following is not None and following.kind == "item":
         # "Smith's stapler"; but "an editor's notebook": a kind of person, said in lower
         # case after "a", is an ordinary noun, no name to look up
-        # "my client's certificate", "our patient's notes": the same for someone the speaker
-        # serves, named by what they are to them (the thing is the speaker's, kept for them)
-        kind_of_person = m.text[:1].islower() and language.is_noun(word)
-        return not (kind_of_person and prev in ("a", "an", *_OWN))
+        # "my client's certificate", "our patient's notes": the same for an outsider the
+        # speaker serves, named by what they are to them (the thing is the speaker's, kept
+        # for them); "my colleague's form" still asks who is meant
+        lower = m.text[:1].islower()
+        kind_of_person = lower and prev in ("a", "an") and language.is_noun(word)
+        outsider = lower and prev in _OWN and word in _OUTSIDERS
+        return not (kind_of_person or outsider)
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
     if prev == "for" and _modifies_next(tokens, m.end):
