@@ -26,7 +26,9 @@ from assistantx.core import english, language
 
 NameReading = Literal["person", "word", "ask"]
 
-_INDEFINITE = frozenset({"a", "an"})
+# "for a min", "some guy left his lunch", "every grace period": an indefinite article or a
+# quantifier before a name word makes it a kind of thing or person, nobody by name
+_INDEFINITE = frozenset({"a", "an", "some", "any", "another", "every", "each"})
 
 _COMMON = english.words("common")
 _PERSON_BEFORE = english.words("person_before")
@@ -125,11 +127,13 @@ def read_name(slot: NameSlot) -> NameReading:
     """The reading of a one-word name: the person, the ordinary word, or ask which."""
     w = slot.word
     if not slot.opens and slot.prev in _INDEFINITE and not slot.possessive:
-        return "word"  # "for a min": nobody is "a Min"; the word, whatever the name
+        return "word"  # "for a min", "some guy": nobody is "a Min"; the word, whatever the name
     if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
     if _verb_slot(slot):
         return "word"
+    if _titled_doer(slot):
+        return "person"
     prev = "" if slot.opens else slot.prev
     nxt = slot.next
     capital = slot.written[:1].isupper()
@@ -189,6 +193,25 @@ def _verb_slot(slot: NameSlot) -> bool:
         and not slot.next_possessive
         and not slot.next_after_pause
         and _base_verb(slot.word)
+    )
+
+
+# what follows a verb as its object, or the particle of a phrasal verb ("sign *off* my form")
+_VERB_FOLLOWERS = _VERB_OBJECT_STARTS | _VERB_SLOT_OBJECTS | {"off", "up", "over", "me", "us"}
+
+
+def _titled_doer(slot: NameSlot) -> bool:
+    """ "can the Major sign my form", "have the Major stamp it": a capitalised name word
+    after "the", with a plain verb and its object after it, is the subject of that verb. The
+    word read as a noun ("the major") would be someone too, doing the same, and "the major
+    sign" names nothing: the colleague called so, not a choice to ask about."""
+    return (
+        slot.prev == "the"
+        and not slot.possessive
+        and slot.written[:1].isupper()
+        and not slot.next_after_pause
+        and _base_verb(slot.next)
+        and slot.after_next in _VERB_FOLLOWERS
     )
 
 

@@ -111,6 +111,8 @@ _ALIAS_ARTICLES = frozenset({"the", "our"})
 _WORD_BEFORE = english.words("word_before")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
+# "have the Gaffer sign it", "let the manager stamp it": a verb that has someone do something
+_DOER_VERBS_BARE = english.words("doer_verbs_bare")
 # The copulas of a distance ("the lab is miles away")
 _DISTANCE_COPULAS = frozenset({"is", "s", "are", "was", "were", "isnt", "arent", "feels"})
 # "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
@@ -176,6 +178,8 @@ class Lexicon:
     # a one-word title declared with its article ("the Provost"): (article, word) pairs, so
     # "the provost" written so is the person, never the ordinary word
     with_article: set[tuple[str, str]] = field(default_factory=set)
+    # one-word aliases that are no word of anyone's full name ("Major", "Gaffer")
+    alias_words: set[str] = field(default_factory=set)
     # the reading the requester chose for a name word they were asked about (word → reading)
     chosen: dict[str, Reading] = field(default_factory=dict)
     # one-word names said like another person's name and spelled nearly so ("li": "lee")
@@ -243,6 +247,12 @@ class Lexicon:
                         lex.roles.setdefault(word, set()).add(p.id)
                 lex._declare(p.id, said)
             lex._declare(p.id, language.fold(p.name).replace(".", " ").split())
+        lex.alias_words = {
+            key_of(alias)
+            for p in office.people
+            for alias in p.aliases
+            if len(alias.split()) == 1 and key_of(alias) not in lex.name_words
+        }
         for phrase, holders in rank_titles(office).items():
             if phrase not in lex.people:  # "the Station Officer": the one who holds the rank
                 lex.people[phrase] = set(holders)
@@ -618,6 +628,8 @@ class Lexicon:
         if start >= 2 and tokens[start - 2].word in _MODALS:
             return False  # "could the office manager sign ...": the subject, not a modifier
         nxt = tokens[end]
+        if start >= 2 and tokens[start - 2].word in _DOER_VERBS_BARE and _bare_verb(nxt):
+            return False  # "have the Gaffer sign my form": the one made to sign it
         return (
             tokens[start - 1].word in _MODIFIER_DETERMINERS
             and not nxt.opens
@@ -721,6 +733,8 @@ class Lexicon:
             return self.chosen[t.word]
         if self._distance(tokens, i):
             return "word"
+        if self._alias_after_the(tokens, i):
+            return "person"
         slot = slot_at(
             tokens,
             i,
@@ -729,6 +743,19 @@ class Lexicon:
             with_article=self.with_article,
         )
         return read_name(slot)
+
+    def _alias_after_the(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "bring my form to the Major": a one-word nickname or rank the office declares
+        (not a word of anyone's name), capitalised after "the", is the colleague; "the
+        major" as a word names nothing of the office, so no choice is offered, unless the
+        words after it name a thing the office has ("the Major printer")."""
+        t = tokens[i]
+        if t.word not in self.alias_words or t.opens or not t.text[:1].isupper():
+            return False
+        if i == 0 or tokens[i - 1].word != "the":
+            return False
+        nxt = tokens[i + 1].word if i + 1 < len(tokens) and not tokens[i + 1].opens else ""
+        return not (nxt in self.items or nxt in self.facilities or nxt in self.places)
 
     def _distance(self, tokens: Sequence[Token], i: int) -> bool:
         """ "the prep room is Miles away from S4": a plural noun of measure between a
@@ -763,6 +790,11 @@ class Lexicon:
         said = [tokens[k].text for k in range(start, end)]
         said[i - start] = said[i - start].lower()
         return " ".join(said)
+
+
+def _bare_verb(token: Token) -> bool:
+    """Whether a word is a verb in its plain form, its own lemma ("sign", "stamp")."""
+    return not token.opens and token.word in language.verb_lemmas(token.word)
 
 
 def _agent_noun(word: str, verb: str) -> bool:

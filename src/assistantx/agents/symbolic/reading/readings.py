@@ -287,12 +287,13 @@ class MentionReader:
         ):
             n -= 1
             m = mentions[n]
-        if n < 2:
+        at = m.start
+        while at > 0 and tokens[at - 1].word in _TITLE_WORDS:
+            at -= 1  # "the impression for Mrs Kaur": a title before the name
+        if at < 2 or tokens[at - 1].word not in ("for", "from"):
             return False
-        before = mentions[n - 2]  # the paper, then "for" / "from"
-        if tokens[m.start - 1].word not in ("for", "from") or before.end != m.start - 1:
-            return False
-        if before.kind != "item" or len(before.ids) != 1:
+        before = next((x for x in mentions if x.end == at - 1), None)  # the paper, "for"
+        if before is None or before.kind != "item" or len(before.ids) != 1:
             return False
         return self.office.item_type(before.id).kind == "personal"
 
@@ -370,6 +371,11 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
     return any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
 
 
+_OWN = ("my", "our")
+# people named by what they are, nobody of the office ("client", "patient")
+_OUTSIDERS = english.words("outsider_nouns")
+
+
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
     m = mentions[n]
     word = tokens[m.start].word
@@ -384,7 +390,13 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
     if m.possessive and following is not None and following.kind == "item":
         # "Smith's stapler"; but "an editor's notebook": a kind of person, said in lower
         # case after "a", is an ordinary noun, no name to look up
-        return not (m.text[:1].islower() and prev in ("a", "an") and language.is_noun(word))
+        # "my client's certificate", "our patient's notes": the same for an outsider the
+        # speaker serves, named by what they are to them (the thing is the speaker's, kept
+        # for them); "my colleague's form" still asks who is meant
+        lower = m.text[:1].islower()
+        kind_of_person = lower and prev in ("a", "an") and language.is_noun(word)
+        outsider = lower and prev in _OWN and word in _OUTSIDERS
+        return not (kind_of_person or outsider)
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
     if prev == "for" and _modifies_next(tokens, m.end):

@@ -31,6 +31,10 @@ _MOVING = frozenset({"take", "carry", "move", "shift", "ferry", "wheel", "cart",
 # An answer that any one will do ("Anyone's, any will do", "whichever").
 _ANY = frozenset({"any", "anyones", "anybodys", "whichever", "whoevers"})
 _ASKED = re.compile(rf"^{SEVERAL_HAVE}(?:an?|some|a pair of) (?P<name>.+?): whose")
+# The frames' own question whose a personal thing is ("Whose document do you mean?")
+_WHOSE = re.compile(r"^Whose (?P<name>.+?) do you mean\?")
+# An answer that takes back what it says ("not mine", "it isn't mine")
+_NOT = frozenset({"not", "no", "nt", "isnt", "aint", "never"})
 
 
 def whose_of_several(
@@ -76,19 +80,27 @@ def _moved(tokens: Sequence[Token], clause: Clause, item_at: int) -> bool:
 def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | None:
     """``text`` with "the X" asked about replaced by the colleague the answer names ("Bruno's",
     "it's Bruno's tray"): "take Bruno Keel's tray over to Amber", or by "a tray" when any
-    will do; None when the answer says neither or the question is not this one."""
+    will do; to "Whose X do you mean?" also by the requester's own ("Mine.", "my own", "it's
+    mine": "my X"); None when the answer says neither or the question is not this one."""
     asked = _ASKED.match(question)
-    if asked is None:
+    whose = _WHOSE.match(question)
+    found = asked or whose
+    if found is None:
         return None
     said = lex.read(answer)
     people = {p for m in said.mentions if m.kind == "person" for p in m.ids}
-    name = asked.group("name")
-    pattern = re.compile(rf"\bthe\s+{re.escape(name)}\b", re.IGNORECASE)
+    name = found.group("name")
+    article = r"the" if asked is not None else r"the|an?|this|that"
+    pattern = re.compile(rf"\b(?:{article})\s+{re.escape(name)}\b", re.IGNORECASE)
     if pattern.search(text) is None:
         return None
     if len(people) == 1:
         owner = lex.office.person(next(iter(people))).name
         return pattern.sub(f"{owner}'s {name}", text, count=1)
-    if not people and {t.word for t in said.tokens} & _ANY:
+    words = {t.word for t in said.tokens}
+    own = any(m.kind == "self" for m in said.mentions)
+    if whose is not None and own and not people and not words & _NOT:
+        return pattern.sub(f"my {name}", text, count=1)  # "Mine.", "my own", "it's mine"
+    if not people and words & _ANY:
         return pattern.sub(a_thing(name), text, count=1)  # "any will do": "take a tray ..."
     return None

@@ -799,10 +799,16 @@ class SpeechActs:
             for x in w[2:6]:
                 if x in self.lex.cue_words and language.is_past_participle(x):
                     return True
-        k = 1
-        while k < len(w) and k < 4 and (w[k] in self.lex.name_words or w[k] in self.lex.people):
+        # "have the Gaffer sign it": a name the office declares with its "the" (a rank or
+        # nickname) is the person as much as the bare name
+        start = 2 if w[1:2] == ["the"] else 1
+        k = start
+        while k < len(w) and k < start + 3 and (self._named(w[k]) or w[k] in self.lex.roles):
             k += 1
-        if k == 1 or k >= len(w):
+        for n in (3, 2):  # "have Sister Brennan sign it": an alias the office declares whole
+            if " ".join(w[start : start + n]) in self.lex.people:
+                k = max(k, start + n)
+        if k == start or k >= len(w):
             return False
         return w[k] in language.verb_lemmas(w[k])
 

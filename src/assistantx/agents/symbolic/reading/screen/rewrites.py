@@ -10,6 +10,7 @@ import re
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
+from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.core import language
@@ -23,6 +24,9 @@ def rewrite(
     terms: Terms, msg: Message, text: str, hints: list[Hint], context: list[str]
 ) -> tuple[str, list[Evidence]]:
     evidence: list[Evidence] = []
+    # "Rhys has a spare one": the item a statement's "one" stood for, had by its subject
+    held = {c.removeprefix(ONE_HELD) for c in context if c.startswith(ONE_HELD)}
+    context = [c.removeprefix(ONE_HELD) for c in context]
     text, found = purposes(terms, text)
     evidence += found
     text, found = kept_things(terms, msg, text)
@@ -33,7 +37,9 @@ def rewrite(
         spaced = r"[\s']*".join(re.escape(w) for w in phrase)
         text = re.sub(rf"\b{spaced}\b", "needs", text, flags=re.IGNORECASE)
     subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
-    text = name_pronouns(terms, msg, text, hints, subjects)
+    said_of = {h.person for h in hints if h.kind in _SAID_OF and h.person}
+    holder = _holder_of_last(terms, subjects | said_of, context, held)
+    text = name_pronouns(terms, msg, text, hints, subjects - holder, holder)
     text, found = dangling_possessives(terms, msg, text)
     evidence += found
     said = [
@@ -55,7 +61,12 @@ def rewrite(
         # "Gao asked for my scissors, bring them to her": mine
         # Two things stated ("Lena has a loupe and Noor has a bone folder, bring it"): "it"
         # could be either, so it is left for the frames, which ask which one
-        one_stated = len(set(stated)) == 1
+        # One kind stated again by "one" ("Ivy's headset died. Rhys has a spare one"): "it"
+        # is the one said last, the one that can still be brought
+        again = (
+            bool(stated) and stated[-1] in held and len({s.partition("|")[0] for s in stated}) == 1
+        )
+        one_stated = len(set(stated)) == 1 or again
         back = ("it", "them") if stated and said[-1] == stated[-1] and one_stated else ()
         for phrase in (*terms.en.another_one, "some", *back):
             pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
@@ -204,20 +215,26 @@ def _subject(after: str) -> bool:
 
 
 def name_pronouns(
-    terms: Terms, msg: Message, text: str, hints: list[Hint], subjects: set[str]
+    terms: Terms,
+    msg: Message,
+    text: str,
+    hints: list[Hint],
+    subjects: set[str],
+    holder: frozenset[str] = frozenset(),
 ) -> str:
     """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
     pack": with the fact taken out, a pronoun that can only mean the one person it named
     gets the name back. Where another person is named before it ("Thảo's on the ladder and
     Ivy's free, take her a stool"), whom it goes to is left to the frames, which ask; whose
     it is ("bring Zhou her stapler. It's Zhang Wei's stapler") is still the one the facts
-    name."""
-    people = {h.person for h in hints if h.kind in ("availability", "location", "condition")}
-    people |= subjects
+    name. ``holder``: who has the thing the statements name last ("Rhys has a spare one"),
+    never whom the pronoun means."""
+    people = {h.person for h in hints if h.kind in _SAID_OF}
+    people = (people | subjects) - holder
     if len(people) != 1:
         return text
     name = terms.office.person(next(iter(people))).name
-    others_before = _named_before_pronoun(msg) - people
+    others_before = _named_before_pronoun(msg) - people - holder
 
     def named(match: re.Match[str]) -> str:
         word, gap, following = match.group(1).lower(), match.group(2), match.group(3)
@@ -230,6 +247,23 @@ def name_pronouns(
 
 
 _BACK_PRONOUNS = frozenset({"him", "his", "her"})
+# the facts said of a person that a pronoun may point back to
+_SAID_OF = frozenset({"availability", "location", "condition"})
+
+
+def _holder_of_last(
+    terms: Terms, subjects: set[str], context: list[str], held: set[str]
+) -> frozenset[str]:
+    """ "Ivy's headset died. Rhys has a spare one, bring it to her": of the several people
+    the statements are about, the one the last statement says has "one" (Rhys), who is not
+    whom "her" means (the thing is theirs already). One person only, no "one" said last, or
+    nobody's: nobody."""
+    stated = [c for c in context if not c.startswith(("person:", "product:", CHOSEN))]
+    if len(subjects) < 2 or not stated or stated[-1] not in held:
+        return frozenset()
+    whose = stated[-1].partition("|")[2].removesuffix("'s")
+    holders = frozenset(p for p in subjects if terms.office.person(p).name == whose)
+    return holders if len(holders) == 1 else frozenset()
 
 
 def _named_before_pronoun(msg: Message) -> set[str]:

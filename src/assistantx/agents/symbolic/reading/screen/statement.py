@@ -32,7 +32,7 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if piece.asks or not piece.acts.statement:
         return None
     named = (
-        tuple(stated_items(terms, piece, requester))
+        tuple(stated_items(terms, piece, requester) or one_held(terms, msg, piece))
         + tuple(f"person:{p}" for p in terms.named(piece.lexed, "person")[:1])
         + tuple(f"product:{p}" for p in stated_products(terms, piece))
     )
@@ -257,6 +257,53 @@ def _past_describing_words(tokens: Sequence[Token], mentions: Sequence[Mention],
 
 
 _POSSESSION_VERBS = english_words("possession_verbs")
+
+
+_ONE = frozenset({"one", "ones"})
+# how ``one_held`` marks its item for the rewrites: said last, it is what "it" means
+ONE_HELD = "one held:"
+
+
+def one_held(terms: Terms, msg: Message, piece: Piece) -> list[str]:
+    """ "Ivy's headset died. *Rhys has a spare one*": a statement that one person has "one"
+    (a describing word or two between) names no item itself; it is the item named last in
+    the message before it, theirs ("headset|Rhys Ames's"), so a later "it" is the one they
+    have, not the one said before it (marked ``ONE_HELD``). Nothing named before: nothing."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    people = [m for m in mentions if m.kind == "person"]
+    if len(people) != 1 or any(m.kind in ("item", "self") for m in mentions):
+        return []
+    person = people[0]
+    between = words[person.end :]
+    verb = ["has"] if person.possessive else between[:1]
+    if not verb or verb[0] not in _POSSESSION_VERBS:
+        return []
+    rest = between[0 if person.possessive else 1 :]
+    rest = rest[1:] if rest[:1] == ["got"] else rest  # "has got one"
+    ones = [k for k, w in enumerate(rest) if w in _ONE]
+    if not ones and rest[:1] in (["a"], ["an"]) and rest[1:2] and rest[1] in _SPARE:
+        ones = [2]  # "Rhys has a spare": the describing word standing for the thing
+        rest = [*rest[:2], "one", *rest[2:]]
+    if not ones or ones[0] > 3 or not set(rest[: ones[0]]) <= _HELD_ONE_BEFORE:
+        return []
+    if any(language.is_noun(w) and w not in _ONE for w in rest[ones[0] + 1 : ones[0] + 2]):
+        return []  # "one battery", "a spare battery": a thing of its own
+    earlier = [
+        m
+        for p in msg.pieces
+        if p.end <= piece.start
+        for m in p.lexed.mentions
+        if m.kind == "item" and len(m.ids) == 1
+    ]
+    if not earlier:
+        return []
+    return [f"{ONE_HELD}{earlier[-1].ids[0]}|{_whose_name(terms, person)}"]
+
+
+# what may stand between a verb of having and "one": "a spare one", "another one", "an old one"
+_SPARE = frozenset({"spare", "extra"})
+_HELD_ONE_BEFORE = _SPARE | {"a", "an", "another", "old", "new", "second"}
 
 
 def holder_of(mentions: Sequence[Mention], n: int, words: list[str]) -> Mention | None:
