@@ -9,7 +9,7 @@ rule's place in it is its priority, and the name says why it wins over the rules
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
@@ -111,12 +111,23 @@ class PersonSite:
     obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
     stood_in_for: bool = False  # "covering chem for Zhang": whom the speaker stands in for
     to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
+    # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
+    work_named: Mention | None = None
 
     @property
     def at_place(self) -> bool:
         """ "Wang's desk": the person's place, not something they own."""
         f = self.following
         return self.possessive and f is not None and f.kind == "word" and f.ids[0] in PLACE_WORDS
+
+    @property
+    def work(self) -> Mention | None:
+        """The task word the possessive names: right after it, or after words that describe
+        it ("Ngozi's wet signature", ``work_named``)."""
+        if self.work_named is not None:
+            return self.work_named
+        f = self.following
+        return f if f is not None and f.kind == "cue" else None
 
     @property
     def place(self) -> str:
@@ -147,11 +158,9 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "Wang's signature: Wang signs",
         lambda s: (
             s.possessive
-            and s.following is not None
-            and s.following.kind == "cue"
+            and s.work is not None
             and any(
-                k in s.following.ids and not task_kinds.needs_tool(k)
-                for k in task_kinds.person_kinds()
+                k in s.work.ids and not task_kinds.needs_tool(k) for k in task_kinds.person_kinds()
             )
         ),
         "actor",
@@ -240,6 +249,8 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
     )
+    if m.possessive:
+        site = replace(site, work_named=_work_after(tokens, ms, n))
     match person_rule(site).slot:
         case "recipient":
             roles.add_recipient(who, m.start)
@@ -257,6 +268,27 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             pass  # attached to the item that follows (``owner_of``)
         case "context":
             pass  # why the request was made ("because Rich asked"): no role in it
+
+
+# How many describing words may stand between a possessive and the work it names ("Ngozi's
+# sworn stamp", "Hal's official wet signature").
+_WORK_DESCRIBED = 2
+
+
+def _work_after(tokens: Sequence[Token], ms: list[Mention], n: int) -> Mention | None:
+    """The task word a possessive names, right after it or after words that describe it
+    ("Ngozi's *sworn* stamp"): words of no other phrase (no article, preposition, pronoun,
+    place word or pause between)."""
+    for k in range(n + 1, min(len(ms), n + 2 + _WORK_DESCRIBED)):
+        x = ms[k]
+        if x.kind == "cue":
+            return x
+        t = tokens[x.start]
+        if x.kind != "word" or t.opens or t.after_pause or t.possessive:
+            return None
+        if t.word in _PHRASE_ENDS or t.word in PLACE_WORDS:
+            return None
+    return None
 
 
 _COURTESY_AFTER = frozenset({"please", "pls", "plz", "thanks", "thx", "ta", "cheers", "x"})

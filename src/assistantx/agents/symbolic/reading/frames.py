@@ -146,6 +146,9 @@ class FrameReader:
             # "print my log. I need the spreadsheet for the meeting": the item a task already
             # works on for that person, named again as what they need, is context
             made = [t for t in made if not any(self._restates(e, t) for e in tasks)]
+            # "Hal still has to sign my policy. Take my policy to him and bring it back": the
+            # paper handed to whoever the earlier work is by is the way to that work
+            made = [t for t in made if not any(_to_the_doer(e, t) for e in tasks)]
             # "Ramón's long lens please, the telephoto, ...": the item named again by another
             # of its names in the same clause is the same errand, and keeps its owner
             made = [
@@ -615,4 +618,17 @@ def _first_leg(earlier: Task, made: list[Task]) -> bool:
         and earlier.kind == "transfer"
         and made[0].item in (earlier.item, None)  # None: "it", the item fetched
         and earlier.recipient == made[0].recipient
+    )
+
+
+def _to_the_doer(earlier: Task, task: Task) -> bool:
+    """Whether ``task`` hands the item of ``earlier``, a person's work (a signature, a
+    stamp), to the one who does that work: the way to it, which the work's own errand
+    already makes (it goes to them and comes back)."""
+    return (
+        task.kind == "transfer"
+        and earlier.kind in task_kinds.person_kinds()
+        and earlier.actor is not None
+        and task.recipient == earlier.actor
+        and (task.item, task.owner) == (earlier.item, earlier.owner)
     )

@@ -489,7 +489,9 @@ class Lexicon:
 
     def _compound_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "my wine list file": an item's name before a noun the office does not know is
-        the first part of a compound (``compound_heads``), a plain word, not the item."""
+        the first part of a compound (``compound_heads``), a plain word, not the item. So is
+        a facility's name inside an item's noun phrase that it does no work on ("my
+        *autoclave* log spreadsheet": a file, no sterilising; ``_facility_modifies``)."""
         return [
             Mention(
                 "word",
@@ -499,10 +501,47 @@ class Lexicon:
                 m.possessive,
                 m.text,
             )
-            if m.kind == "item" and modifies_a_noun(tokens, m.end, self._known)
+            if (m.kind == "item" and modifies_a_noun(tokens, m.end, self._known))
+            or (m.kind == "facility" and self._facility_modifies(tokens, mentions, n))
             else m
-            for m in mentions
+            for n, m in enumerate(mentions)
         ]
+
+    def _inner_noun(self, t: Token) -> bool:
+        """A word inside a noun phrase whose head comes later ("log", "cleaning", "rota" of
+        "my kiln cleaning rota spreadsheet"): in lower case, no word of the office and no
+        function word (the dictionary knows many such nouns as verbs only: "log")."""
+        word = t.word
+        if not t.text.isalpha() or not t.text[:1].islower() or t.corrected:
+            return False
+        return word not in COMMON and not self._known(word)
+
+    def _facility_modifies(self, tokens: Sequence[Token], mentions: list[Mention], n: int) -> bool:
+        """Whether facility mention ``n`` only says which of an item is meant: the item's
+        name follows it in the same noun phrase, after nothing or after nouns the office does
+        not know (``_inner_noun``: "my kiln log *spreadsheet*", "the microwave
+        *spreadsheet*"), and the facility makes no such item and works on none: "a vending
+        machine snack" is its product, "my microwave lunch" may be for heating, read as
+        before."""
+        m = mentions[n]
+        head = next((h for h in mentions[n + 1 :] if h.kind != "word"), None)
+        if m.possessive or head is None or len(m.ids) != 1:
+            return False
+        if head.kind != "item" or len(head.ids) != 1 or head.start - m.end > 2:
+            return False
+        for k in range(m.end, head.start + 1):
+            if tokens[k].opens or tokens[k].after_pause or tokens[k - 1].possessive:
+                return False
+            if k < head.start and not self._inner_noun(tokens[k]):
+                return False
+        facility = self.office.facility(m.ids[0])
+        item = head.ids[0]
+        if item in facility.products:
+            return False
+        return not any(
+            item in (self.office.operation(op).input, self.office.operation(op).product)
+            for op in facility.operations
+        )
 
     def _settled_by_owner(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Yang's book", "Yang said I could borrow his book": a name several people share

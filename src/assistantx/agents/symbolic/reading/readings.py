@@ -224,12 +224,18 @@ class MentionReader:
     def _owned_cue_items(
         self, mentions: Sequence[Mention], tokens: Sequence[Token]
     ) -> list[Mention]:
-        """ "Fang's seal", "my stamp": a task word after a possessive names an item."""
+        """ "Fang's seal", "my stamp", "Ngozi's sworn stamp": a task word after a possessive
+        (and up to two words that describe it) names an item."""
         out = list(mentions)
         for n in range(1, len(out)):
-            m, before = out[n], out[n - 1]
+            m = out[n]
             word = tokens[m.start].word
-            if m.kind == "cue" and word in self.lex.items and before.possessive:
+            if m.kind != "cue" or word not in self.lex.items:
+                continue
+            k = n - 1
+            while k > 0 and n - k <= 2 and _describes(out[k], tokens):
+                k -= 1
+            if out[k].possessive:
                 out[n] = Mention("item", m.start, m.end, (self.lex.items[word],), False, m.text)
         return out
 
@@ -500,3 +506,12 @@ def _phrase_ends(tokens: Sequence[Token], spaces: Sequence[str], k: int) -> bool
     if k >= len(tokens):
         return True
     return any(c in ".,;!?\n" for c in spaces[k]) or tokens[k].word in _AFTER_MEANS
+
+
+def _describes(m: Mention, tokens: Sequence[Token]) -> bool:
+    """A plain word between a possessive and its thing that only describes it ("sworn",
+    "official"): lower case, in the same phrase, no function word."""
+    t = tokens[m.start]
+    if m.kind != "word" or t.opens or t.after_pause or t.possessive or t.corrected:
+        return False
+    return t.text.isalpha() and t.text[:1].islower() and t.word not in COMMON

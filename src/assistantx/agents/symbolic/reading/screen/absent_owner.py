@@ -5,16 +5,31 @@ answers for them asks the robot to take the thing without that yes, so it is dec
 with the reason, before anything in it is read as an errand. The requester may ask for the
 thing plainly and the owner is then asked as usual.
 
+The owner may be said to be out in a clause of the request itself: "take Pat's seal and stamp
+my contract with it while she's out, she won't mind" (the conjunction, a pronoun, and a state
+of being away or busy elsewhere: "while he's in the meeting", "whilst they're at lunch").
+
 Either half alone is read as before: "borrow Rory's stapler, he won't mind" asks Rory (the
 covert rule's docstring), and "Otto is away, could you bring me his ruler" is a fact for the
 plan beside a plain request."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english
+
+
+def _phrases(key: str) -> tuple[tuple[str, ...], ...]:
+    return tuple(tuple(entry.split()) for entry in english.entries(key))
+
+
+_WHILE = _phrases("while_openers")
+_WHILE_SUBJECTS = _phrases("while_subjects")
+_WHILE_STATES = _phrases("while_away_states") + _phrases("away")
 
 # Someone's yes said on their behalf: "he won't mind", "she wouldn't care", "they'll be fine
 # with it". The words are matched after the pronoun that says whose yes it is.
@@ -66,15 +81,41 @@ def _away(terms: Terms, msg: Message, requester: str) -> set[str]:
     return out
 
 
+def _while_away(words: list[str]) -> bool:
+    """Whether the words say, in a clause of their own, that "he"/"she"/"they" are out:
+    "while she's out", "whilst he is in the meeting"."""
+    for n in range(len(words)):
+        for opener in _WHILE:
+            if not starts_with(words, n, opener):
+                continue
+            at = n + len(opener)
+            for subject in _WHILE_SUBJECTS:
+                if starts_with(words, at, subject) and any(
+                    starts_with(words, at + len(subject), state) for state in _WHILE_STATES
+                ):
+                    return True
+    return False
+
+
 def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:
     """Whether a request in the message asks for a thing of a colleague said to be away: by
     their name's possessive, or by "his"/"her" after the name ("Otto is away, take his
-    ruler"); "Otto is away, bring me some staples" asks for nobody's."""
+    ruler"); "Otto is away, bring me some staples" asks for nobody's. A request that says
+    its owner is out in a clause of its own ("take Pat's seal while she's out") asks for a
+    colleague's thing by their possessive or "his"/"her"."""
     away = _away(terms, msg, requester)
-    if not away:
-        return False
     for piece in msg.pieces:
         if not piece.acts.request:
+            continue
+        if _while_away(piece.words) and (
+            any(w in _THEIRS for w in piece.words)
+            or any(
+                m.kind == "person" and m.possessive and requester not in m.ids
+                for m in piece.lexed.mentions
+            )
+        ):
+            return True
+        if not away:
             continue
         if any(w in _THEIRS for w in piece.words):
             return True

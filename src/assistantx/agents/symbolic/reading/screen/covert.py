@@ -3,7 +3,13 @@ don't tell her", "take Min's mug on the quiet". An owner's yes is asked in their
 before any of their things moves, whatever the request says (text carries no authority), so a
 request to skip that is declined in words, with the reason; the requester may ask again
 plainly and the owner is then asked as usual. A request that only says the owner will not
-mind ("he won't mind") is read as before: the owner is still asked."""
+mind ("he won't mind") is read as before: the owner is still asked.
+
+A request to skip asking the owner ("grab his tape while he's at lunch, no need to ask", "take
+Pat's seal, don't ask her") is declined the same way, saying their own yes is needed: only
+where the message asks for a colleague's thing ("Pat's", "his"), so "print my report, no need
+to ask" is read as before, and a colleague named after the mark is its owner ("don't ask
+Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before)."""
 
 from __future__ import annotations
 
@@ -14,6 +20,9 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english
 
 _COVERT = tuple(tuple(entry.split()) for entry in english.entries("covert_marks"))
+_UNASKED = tuple(tuple(entry.split()) for entry in english.entries("unasked_marks"))
+# Whose thing, when it is not a name: a colleague's ("grab *his* tape")
+_THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
 
 
 # "print it without asking me again": the speaker's own say, nobody kept in the dark
@@ -35,7 +44,72 @@ def _kept_in_the_dark(words: list[str]) -> bool:
     return False
 
 
+def _unasked_at(words: list[str]) -> int | None:
+    """Where a mark that skips asking ends ("no need to ask| him"), or None; "don't ask me
+    again" is the speaker's own say."""
+    for n in range(len(words)):
+        for mark in _UNASKED:
+            end = n + len(mark)
+            if words[n:end] != list(mark):
+                continue
+            if end < len(words) and words[end] in _SPEAKER:
+                continue
+            return end
+    return None
+
+
+def _colleagues_things(msg: Message, requester: str) -> tuple[set[str], bool]:
+    """The colleagues whose things a request of the message names by their possessive, and
+    whether one names a thing by "his"/"her"/"their"."""
+    owners: set[str] = set()
+    pronoun = False
+    for p in msg.pieces:
+        if not (p.acts.request or p.acts.imperative):
+            continue
+        pronoun = pronoun or any(w in _THEIRS for w in p.words)
+        for m in p.lexed.mentions:
+            if m.kind == "person" and m.possessive and requester not in m.ids:
+                owners.update(m.ids)
+    return owners, pronoun
+
+
+def _skips_asking(msg: Message, requester: str) -> bool:
+    """Whether a piece of the message (its own, or one beside it that another rule reads as
+    a negation: "you don't need to ask him") asks that a colleague's thing be taken
+    without asking them."""
+    return any(_skips_asking_in(msg, p, requester) for p in msg.pieces)
+
+
+def _skips_asking_in(msg: Message, piece: Piece, requester: str) -> bool:
+    end = _unasked_at(piece.words)
+    if end is None:
+        return False
+    owners, pronoun = _colleagues_things(msg, requester)
+    named = piece.words[end : end + 1]  # the word after the mark: whom not to ask
+    tokens = piece.lexed.tokens
+    asked = [
+        m for m in piece.lexed.mentions if m.kind == "person" and [tokens[m.start].word] == named
+    ]
+    if asked:  # "don't ask Pat": only about Pat's own thing
+        return any(owners.intersection(m.ids) for m in asked)
+    return bool(owners) or pronoun
+
+
 def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    asks = piece.acts.request or piece.acts.imperative
+    if (asks or _unasked_at(piece.words) is not None) and _skips_asking(msg, requester):
+        if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
+            return None
+        return Finding(
+            "unsupported",
+            piece,
+            "a request to take a colleague's thing without asking them",
+            message=(
+                "Sorry, I can't take someone's things without asking them: I only take them "
+                "with the owner's own yes, asked in their chat. If you'd like, ask me again "
+                "and I'll ask them. I did nothing."
+            ),
+        )
     if not _kept_in_the_dark(piece.words):
         return None
     if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):

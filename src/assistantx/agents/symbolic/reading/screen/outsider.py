@@ -22,6 +22,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.event_clause import in_later_event
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
@@ -169,6 +170,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
         if before == "for" and _colleague_receives(msg):
             continue  # "print my quote for the juke customer and give it to Robin": about
 
+        if before == "to" and in_later_event(tokens, start):
+            continue  # "stamp it before it goes to the client": when, not whom it goes to
         if in_others_clause(tokens, breaks, mentions, start, later=piece.start > 0):
             continue  # "..., she wants to show it to the guest": why, not whom it goes to
         end = _described_where(tokens, breaks, n + 1, office_at)

@@ -25,6 +25,7 @@ from assistantx.agents.symbolic.reading.screen.self_introduction import self_int
 from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.timing import without_time_idioms
+from assistantx.agents.symbolic.reading.screen.undone_work import undone_work
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.speech_acts import acts_reader
 from assistantx.core.office import Office
@@ -57,7 +58,19 @@ class RequestScreen:
         text, hedged = without_hedges(text)  # "Holly, I think, has one": Holly has one
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
-        fixes = [*intro, *idioms, *restored, *stated, *taken, *leave, *hedged, *rejected, *fixes]
+        text, undone = undone_work(terms, text)  # "Hal still hasn't signed it. Can you ..."
+        fixes = [
+            *intro,
+            *idioms,
+            *restored,
+            *stated,
+            *taken,
+            *leave,
+            *hedged,
+            *rejected,
+            *fixes,
+            *undone,
+        ]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
             text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)
