@@ -233,3 +233,24 @@ def test_the_owner_said_in_the_answer_is_kept_through_the_reread() -> None:
     text = "Bring me Brook's charger, and as you go by print my pdf for me."
     frame = _answered(text, ["Brook Tamsin's charger."])
     assert sorted(_tasks(frame)) == sorted([_CHARGER, _PRINT]), frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "have the Boss sign my form",
+        "Have the Boss sign my form please",
+        "Have the boss sign my letter",
+    ],
+)
+def test_have_a_role_sign_is_a_request_that_they_sign(text: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.item, t.owner, t.actor) for t in frame.tasks] == [
+        ("sign", "document", "nina", "dora")
+    ], frame
+
+
+@pytest.mark.parametrize("text", ["Have the boss signed my form?", "Has the Boss signed my form?"])
+def test_have_the_boss_signed_is_still_a_question(text: str) -> None:
+    frame = _frame(text)
+    assert frame.tasks == [] and frame.question is None, frame
