@@ -77,6 +77,8 @@ class Wish:
     people: frozenset[str] = field(default_factory=frozenset)
     # the words they wrote, when no task says what they want (``from_words``)
     words: str | None = None
+    # whose each item of the goal is, where it is someone's (item type id, owner id)
+    whose_items: tuple[tuple[str, str], ...] = ()
 
     @classmethod
     def from_words(cls, office: Office, requester: str, text: str) -> Wish:
@@ -106,10 +108,13 @@ class Wish:
         items: list[str] = []
         own: list[str] = []
         operations: list[str] = []
+        whose: list[tuple[str, str]] = []
 
         def item(item_id: str) -> None:
             type_id, _, owner = item_id.partition(":")
             items.append(type_id)
+            if owner not in ("", "*"):
+                whose.append((type_id, owner))
             op = office.making(type_id)
             if op is not None and op.input is not None:
                 items.append(op.input)  # a printout is of a file
@@ -146,6 +151,7 @@ class Wish:
             destinations=tuple(dict.fromkeys(p.destination for p in parts if p.destination)),
             wants_something=bool(items or recipients),
             people=frozenset(people),
+            whose_items=tuple(dict.fromkeys(whose)),
         )
 
 
@@ -181,6 +187,9 @@ def answer(office: Office, wish: Wish, question: str) -> str:
     if re.search(r"\bwho(m|se)?\b", lowered):
         return _who(office, wish, lowered)
     if re.search(r"\b(which|what)\b", lowered) and wish.items:
+        asked = _asked_item(office, wish, lowered)
+        if asked is not None:  # "what you want me to do with the charger": whose it is
+            return f"{_whose_item(office, wish, asked)}."
         return f"The {_item_name(office, wish.items[0])}."
     return _plainly(office, wish)
 
@@ -214,6 +223,29 @@ def _who(office: Office, wish: Wish, lowered: str) -> str:
             return _name(office, named[0]) + "."
         return gets + "." if others else DONT_KNOW
     return gets + "."
+
+
+def _asked_item(office: Office, wish: Wish, lowered: str) -> str | None:
+    """The item of the wish the question names ("what you want me to do with the charger"),
+    or None."""
+    named = [
+        i
+        for i in wish.items
+        if re.search(rf"\b{re.escape(_item_name(office, i).lower())}\b", lowered)
+    ]
+    return named[0] if named else None
+
+
+def _whose_item(office: Office, wish: Wish, type_id: str) -> str:
+    """The item said as its owner would say it: "My stapler", "Brook Tamsin's charger", or
+    "The stapler" where it is nobody's in particular."""
+    thing = _item_name(office, type_id)
+    owners = [o for t, o in wish.whose_items if t == type_id]
+    if len(set(owners)) != 1:
+        return f"The {thing}"
+    if owners[0] == wish.requester:
+        return f"My {thing}"
+    return f"{_name(office, owners[0])}'s {thing}"
 
 
 def _whose_and_for_whom(office: Office, wish: Wish, gets: str) -> str:

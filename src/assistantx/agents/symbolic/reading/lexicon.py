@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_nouns,
     read_as_verbs,
 )
+from assistantx.agents.symbolic.reading.own_papers import OwnPapers
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
@@ -198,6 +199,8 @@ class Lexicon:
     courses: Courses = field(default_factory=lambda: Courses({}))
     made_objects: MadeObjects = field(default_factory=lambda: MadeObjects({}))
     clipped_verbs: ClippedVerbs = field(default_factory=lambda: ClippedVerbs({}, {}))
+    # the office's one personal paper said in an everyday noun ("my report", ``own_papers``)
+    own_papers: OwnPapers | None = None
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -222,6 +225,7 @@ class Lexicon:
         lex.courses = Courses.from_office(office)
         lex.made_objects = MadeObjects.from_office(office)
         lex.clipped_verbs = ClippedVerbs.from_office(office, lex.verb_phrases.forms)
+        lex.own_papers = OwnPapers.from_office(office)
         for form, op_id in lex.verb_phrases.forms.items():
             # a joined phrase ("3d print") is one token: its whole form is the cue
             ops.add(form)
@@ -485,7 +489,19 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
-        return self._settled_by_owner(tokens, self._compound_heads(tokens, mentions))
+        mentions = self._own_papers(tokens, self._compound_heads(tokens, mentions))
+        return self._settled_by_owner(tokens, mentions)
+
+    def _own_papers(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "take my report to Olive": the requester's paper in an everyday noun the office
+        does not list is its one personal paper (``own_papers``)."""
+        if self.own_papers is None:
+            return mentions
+        found = self.own_papers.found(tokens, mentions, self._known)
+        return [
+            Mention("item", m.start, m.end, (found[n],), m.possessive, m.text) if n in found else m
+            for n, m in enumerate(mentions)
+        ]
 
     def _compound_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "my wine list file": an item's name before a noun the office does not know is

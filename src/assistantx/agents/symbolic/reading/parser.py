@@ -60,6 +60,7 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
+from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
@@ -414,6 +415,8 @@ class InstructionParser:
                 lead = part.split()[0]
                 if lead.lower() in ("to", "into") and instead.lower().split()[:1] != [lead.lower()]:
                     instead = f"{lead} {instead}"  # "to the post room" → "Hana": "to Hana"
+                elif lead.lower() == "my" and not _determined(instead):
+                    instead = f"{lead} {instead}"  # "my memo" → "document": "my document"
                 text = text.replace(part, instead, 1)
                 frame = self.parse(text, requester)
                 continue
@@ -449,11 +452,18 @@ class InstructionParser:
                 frame = self._choosing(chosen).parse(text, requester)
                 continue
             asked_everything = frame.question == NOT_UNDERSTOOD
+            # what the request (and the answers) said of whose things are and who gets them:
+            # a re-read that contradicts it is never acted on; the question stays open
+            roles = said_roles([self.lex.read(t) for t in (text, *answers)], requester)
             combined = self.parse(f"{text}. {answer}", requester)
+            if combined.understood and contradicts(combined, roles):
+                continue
             if combined.understood or not asked_everything:
                 frame = combined
                 continue
             alone = self.parse(answer, requester)
+            if alone.understood and contradicts(alone, roles):
+                continue
             frame = alone if alone.understood else combined
         return frame
 
@@ -535,6 +545,20 @@ def _one_send_each(frame: TaskFrame) -> TaskFrame:
     if len(kept) == len(frame.tasks):
         return frame
     return frame.model_copy(update={"tasks": kept})
+
+
+# The words that open a noun phrase with its own say of whose or which thing it is.
+_DETERMINERS = frozenset(
+    {"a", "an", "the", "my", "your", "his", "her", "our", "their", "this", "that", "its", "it"}
+)
+
+
+def _determined(answer: str) -> bool:
+    """Whether an answer that takes a part's place says itself whose or which thing it is
+    ("the certificate", "Olive's memo", "it's my document"): a bare noun ("document") keeps
+    the request's own "my"."""
+    words = answer.lower().split()
+    return not words or words[0] in _DETERMINERS or "'" in words[0] or "’" in words[0]
 
 
 def _asks_who(question: str) -> bool:

@@ -12,6 +12,9 @@ done, the sending out silently left out, and "Done" reported). The parts no task
 - a send-out service asked for by a request's own verb, or a facility named as doing the
   work ("past legal"), on an item a task carries, run by no task ("courier my report to the
   head office and vet it" read as the review alone);
+- the requester's paper in an everyday noun the office has no one thing for ("my memo",
+  ``own_papers.unread_paper``): "take my memo to Olive, then bring me a cuppa" never does
+  the tea alone;
 - an operation named by its display name, or by the head noun of it after an article ("a
   legal read", "a read" where a legal read and a style read both exist), on an item the
   request names, run by no task (``operation_left_out``): after "Who should get your
@@ -28,6 +31,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.own_papers import unread_paper
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.agents.symbolic.reading.unread_compounds import (
@@ -87,6 +91,7 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     phrase = (
         unread_compound(office, readings.mentions, [t.text for t in readings.tokens])
         or unread_sent_thing(readings.mentions, [t.text for t in readings.tokens])
+        or unread_paper(readings.mentions, readings.tokens)
         or _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
         or _service_left_out(office, readings, frame)

@@ -148,6 +148,11 @@ class Act:
 _PERSON_TITLES = english.words("titles") - {"a", "an", "the", "our"}
 
 
+# The articles and titles before a person's name after a causative "have" ("have the Boss
+# sign it", "have Dr Osei sign it").
+_NAME_OPENERS = english.words("titles")
+
+
 # What opens the thing after a causative "have" ("have *my* proof signed", "have *it* done").
 _THING_OPENERS = frozenset({"my", "our", "the", "this", "that", "these", "those", "it", "them"})
 
@@ -792,25 +797,31 @@ class SpeechActs:
         return w
 
     def _causative(self, w: list[str]) -> bool:
-        """ "have Ines stamp my lease", "have Wang sign it": "have", a person's name, then a
-        verb in its plain form: someone made to do something, not "have you got ...?"; and
-        "have my proof signed by Femi": "have", the thing, then a task word's participle."""
+        """ "have Ines stamp my lease", "have the Boss sign it": "have", a person's name or
+        role (after an article or title), then a verb in its plain form: someone made to do
+        something, not "have you got ...?"; and "have my proof signed by Femi": "have", the
+        thing, then a task word's participle."""
         if w[1:2] and w[1] in _THING_OPENERS:
             for x in w[2:6]:
                 if x in self.lex.cue_words and language.is_past_participle(x):
                     return True
-        # "have the Gaffer sign it": a name the office declares with its "the" (a rank or
-        # nickname) is the person as much as the bare name
-        start = 2 if w[1:2] == ["the"] else 1
-        k = start
-        while k < len(w) and k < start + 3 and (self._named(w[k]) or w[k] in self.lex.roles):
+        k = 1
+        while k < 3 and k < len(w) and w[k] in _NAME_OPENERS and not self._named_or_role(w[k]):
+            k += 1  # "have *the* Boss sign my form", "have Dr Osei sign it"
+        start = k
+        while k < len(w) and k < start + 3 and self._named_or_role(w[k]):
             k += 1
-        for n in (3, 2):  # "have Sister Brennan sign it": an alias the office declares whole
-            if " ".join(w[start : start + n]) in self.lex.people:
-                k = max(k, start + n)
+        for at in (1, start):  # "have (the) Sister Brennan sign it": an alias declared whole
+            for n in (3, 2):
+                if " ".join(w[at : at + n]) in self.lex.people:
+                    start, k = min(start, at), max(k, at + n)
         if k == start or k >= len(w):
             return False
         return w[k] in language.verb_lemmas(w[k])
+
+    def _named_or_role(self, word: str) -> bool:
+        """A word of a colleague's name, or a role only they hold ("boss" of "the Boss")."""
+        return self._named(word) or word in self.lex.roles
 
     def _person_at(self, w: list[str], n: int) -> bool:
         k = n

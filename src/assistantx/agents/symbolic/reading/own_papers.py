@@ -1,0 +1,162 @@
+"""The requester's own paper said in an everyday noun the office does not list: "take my
+report to Olive", "email my memo to Sam", where the office's personal paper is a "document"
+(its other names "form", "contract"). In a request of two parts ("take my report to Olive,
+then bring me a cuppa") the unread noun made the first part vanish while the second was done.
+
+"my" and a noun of the English list ``paper_nouns`` that no name of the office reads (a plain
+word, perhaps after a modifier or two: "my draft memo", "my referral letter") is the office's
+paper when it has one candidate: its one personal paper (signable, or named by such a noun),
+else, asked to be sent on ("email", "forward"), its one electronic file. The stages after the
+lexicon then read it as they read the paper's own name (a file forwarded or printed, the paper
+carried). Where the office has no such one thing, the phrase is left a plain word and asked
+about (``unread_paper``), never dropped. A noun before another noun ("my report card") is the
+first part of a compound, not the paper; a colleague's ("Sam's report") is not the
+requester's own, and stays as it was; a noun that is a word of one of the office's longer
+item names ("notes" of its "session notes") is the office's own word, read as before.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Protocol
+
+from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english
+from assistantx.core.office import Office
+from assistantx.memory.names import normalize
+
+PAPER_NOUNS = english.words("paper_nouns")
+_COMMON = english.words("common")
+_SENDING = english.words("send_words")
+_MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
+
+
+class Mention(Protocol):
+    """The lexicon's mention, as this stage reads it."""
+
+    @property
+    def kind(self) -> str: ...
+    @property
+    def start(self) -> int: ...
+    @property
+    def end(self) -> int: ...
+    @property
+    def ids(self) -> tuple[str, ...]: ...
+    @property
+    def possessive(self) -> bool: ...
+
+
+def personal_papers(office: Office) -> tuple[str, ...]:
+    """The office's personal papers: personal item types, not electronic, that are signed or
+    named by an everyday paper noun."""
+    return tuple(
+        t.id
+        for t in office.item_types
+        if t.kind == "personal"
+        and not t.electronic
+        and (
+            t.signable
+            or any(w in PAPER_NOUNS for n in (t.name, *t.synonyms) for w in normalize(n).split())
+        )
+    )
+
+
+def paper_phrase(
+    mentions: Sequence[Mention], n: int, tokens: Sequence[Token], known: Callable[[str], bool]
+) -> int | None:
+    """Where ``mentions[n]`` is "my", the index of the mention of the paper noun that heads
+    the phrase it opens ("my [draft] memo"), or None."""
+    opener = mentions[n]
+    if opener.kind != "self" or not opener.possessive:
+        return None
+    end = opener.end
+    for k in range(n + 1, min(len(mentions), n + 2 + _MODIFIERS)):
+        m = mentions[k]
+        if m.kind != "word" or m.start != end or tokens[m.start].opens:
+            return None
+        word = m.ids[0]
+        if word not in PAPER_NOUNS and (word in _COMMON or not word.isalpha()):
+            return None
+        after = mentions[k + 1] if k + 1 < len(mentions) else None
+        if (
+            after is not None
+            and after.kind == "word"
+            and after.start == m.end
+            and after.ids[0] in PAPER_NOUNS
+        ):
+            end = m.end  # "my draft proposal": the last of the nouns is the head
+            continue
+        if word in PAPER_NOUNS and not tokens[m.start].corrected:
+            if modifies_a_noun(tokens, m.end, known):
+                return None  # "my report card": a compound, its head another noun
+            if after is not None and after.kind == "item" and after.start == m.end:
+                return None  # "my report file": the file
+            return k
+        end = m.end
+    return None
+
+
+@dataclass(frozen=True)
+class OwnPapers:
+    """What an office's papers are, read once: its personal papers and the words of its item
+    names."""
+
+    papers: tuple[str, ...]
+    named: frozenset[str]
+    file_type: str | None
+
+    @classmethod
+    def from_office(cls, office: Office) -> OwnPapers:
+        return cls(personal_papers(office), _item_name_words(office), office.file_type())
+
+    def found(
+        self, tokens: Sequence[Token], mentions: Sequence[Mention], known: Callable[[str], bool]
+    ) -> dict[int, str]:
+        """Which of ``mentions`` (by index) is the requester's paper said in an everyday
+        noun, and the office's one candidate item it is (see the module's text)."""
+        found: dict[int, str] = {}
+        for n in range(len(mentions)):
+            k = paper_phrase(mentions, n, tokens, known)
+            if k is None or mentions[k].ids[0] in self.named:
+                continue  # "my vet notes" where the file is the "session notes": as before
+            meant = self.papers[0] if len(self.papers) == 1 else None
+            if not self.papers and self.file_type is not None:
+                sentence = _sentence(tokens, mentions[k].start)
+                if {t.word for t in sentence} & _SENDING:
+                    meant = self.file_type
+            if meant is not None:
+                found[k] = meant
+        return found
+
+
+def _item_name_words(office: Office) -> frozenset[str]:
+    """The words of the office's item names and synonyms: a paper noun among them is the
+    office's own word, read (or asked about) by the stages that know that name."""
+    return frozenset(
+        w for t in office.item_types for n in (t.name, *t.synonyms) for w in normalize(n).split()
+    )
+
+
+def _sentence(tokens: Sequence[Token], k: int) -> Sequence[Token]:
+    start = k
+    while start > 0 and not tokens[start].opens:
+        start -= 1
+    end = k + 1
+    while end < len(tokens) and not tokens[end].opens:
+        end += 1
+    return tokens[start:end]
+
+
+def unread_paper(mentions: Sequence[Mention], tokens: Sequence[Token]) -> str | None:
+    """ "my memo" left a plain word (the office has several papers it may be, or none): the
+    phrase as said, to ask about before anything moves; None when there is none."""
+    office_words = {
+        tokens[k].word for m in mentions if m.kind != "word" for k in range(m.start, m.end)
+    }
+    for n, opener in enumerate(mentions):
+        k = paper_phrase(mentions, n, tokens, office_words.__contains__)
+        if k is not None:
+            return " ".join(t.text for t in tokens[opener.start : mentions[k].end])
+    return None
