@@ -97,6 +97,8 @@ def test_the_default_office_says_no_hour() -> None:
         "there's spare tape on my desk if anybody wants some",
         "left my ruler on the copy room shelf if someone needs one",
         "my stapler is on my desk if anyone else needs it",
+        "spare tape on my desk if anyone needs it",
+        "my stapler's free if anyone needs it",
     ],
 )
 def test_an_open_offer_is_answered_in_words(text: str) -> None:
@@ -107,6 +109,7 @@ def test_an_open_offer_is_answered_in_words(text: str) -> None:
     ("text", "expected"),
     [
         ("bring me a stapler if you can", [("transfer", "stapler", None, "odile")]),
+        ("bring me the tape if anyone needs it", [("transfer", "tape", None, "odile")]),
         ("can you bring Rena my stapler, she needs it", [("transfer", "stapler", "odile", "rena")]),
     ],
 )

@@ -32,8 +32,12 @@ _SPEAKER = frozenset({"i", "we", "id", "ill", "im", "just", "really", "only", "s
 
 
 def purpose(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    """A purpose clause or an open offer after other words: context, never a request."""
-    if piece.clause is None or not any(p.end <= piece.start for p in msg.pieces):
+    """A purpose clause or an open offer after other words: context, never a request; and
+    what the offer is of, before it, when that asks nothing ("spare tape on my desk", "my
+    stapler's free": no task word, no request wording, no question)."""
+    if piece.clause is None:
+        return _offered(msg, piece)
+    if not any(p.end <= piece.start for p in msg.pieces):
         return None
     if piece.clause == "purpose":
         return Finding("statement", piece, "what the request is for: context only")
@@ -43,6 +47,19 @@ def purpose(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding
         "an offer to whoever needs it: nothing to do",
         message="If anyone asks me for it, I'll tell them.",
     )
+
+
+def _offered(msg: Message, piece: Piece) -> Finding | None:
+    """ "spare tape on my desk" before "if anyone needs it": the thing offered, said."""
+    after = [p for p in msg.pieces if p.start >= piece.end]
+    if not after or after[0].clause != "open_offer" or "," in msg.text[piece.end : after[0].start]:
+        return None
+    acts = piece.acts
+    if piece.asks or acts.request or acts.imperative or acts.question is not None:
+        return None
+    if any(m.kind == "cue" for m in piece.lexed.mentions):
+        return None  # "bring me the tape if anyone needs it": a task word, read as before
+    return Finding("statement", piece, "a thing offered to whoever needs it: context only")
 
 
 def reason(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
