@@ -101,7 +101,7 @@ from assistantx.agents.symbolic.reading.unknown_items import (
     unknown_item,
     with_choice,
 )
-from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
+from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing, variety_of
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
@@ -264,6 +264,11 @@ class InstructionParser:
             unknown = unknown_item(terms, tokens, mentions) if which is None else None
             unlisted = unlisted_thing(mentions)
             if which is None and unknown is None and unlisted is not None:
+                # "a flat white from the coffee machine": a variety of the one thing it makes
+                variety = variety_of(self.office, mentions, unlisted[1])
+                said = with_choice(request, *variety) if variety is not None else None
+                if said is not None:
+                    return self._frame(whole, said, requester, sent_out, to_self, destination)
                 # "50 ml of chloroform from the chem store": declined by name, nothing swapped
                 unknown = self._not_there(*unlisted)
             if which is not None:

@@ -13,6 +13,8 @@ def test_the_rules_in_priority_order() -> None:
         "note",
         "exclusion",
         "exclusion",  # "not her camera" after one colleague was named
+        "statement",  # a purpose or open offer cut off ("so he can book ...", "if anyone needs it")
+        "statement",  # the reason for a request ("..., need it for the report")
         "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
@@ -31,6 +33,7 @@ def test_the_rules_in_priority_order() -> None:
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
         "fact",
+        "statement",  # when someone will be back ("back in an hour"), no thing to fetch
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
@@ -43,6 +46,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",
         "statement",  # where an item is ("fyi the tape's in the cupboard")
         "statement",  # told for information beside a tag ("..., just so you know")
+        "statement",  # a told sentence before a request that names its own thing
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
         "unsupported",  # a service nothing here offers, before an outsider is asked about

@@ -11,6 +11,8 @@ withdrawn       "never mind", "forget it", "forget about the scissors"          
                                                                                     said before
 exclusion       "not from Wang though", "not Chen's"                                a hint that
                                                                                     keeps them out
+purpose         "... so he can book the courier", "... if anyone needs it",         context
+                "..., need it for the report": why or for whom, never what to do
 wish            "keep everyone away from Mao's seal", "nobody take my mug"          words only
 thanks          "thanks for the pen!", "say thanks to Wang for the pen"             words only
 negated         "don't bring me ...", "no need to print ..."                        drops piece
@@ -62,9 +64,9 @@ removed from the original text by their character spans, never re-joined, so wha
 parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``contrast``,
-``wish``, ``thanks``, ``condition``, ``negation``, ``unsafe``, ``destructive``, ``placement``,
-``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``doing_after``, ``own_need``,
-``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
+``purpose``, ``wish``, ``thanks``, ``condition``, ``negation``, ``unsafe``, ``destructive``,
+``placement``, ``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``doing_after``,
+``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
 ``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
 reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
 screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:

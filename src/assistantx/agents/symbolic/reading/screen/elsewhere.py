@@ -19,6 +19,23 @@ _OFFICE_THINGS = frozenset({"person", "item", "facility", "place"})
 # A word of being gone before where: "*out* on a delivery", "*off* at the dentist", "*away* in
 # Leeds" say where the person is gone, like "on a delivery" alone.
 _GONE = frozenset({"out", "off", "away"})
+# "*gone down to* the river", "*popped over to* the bank": a verb of going and its particles,
+# then "to" where the person went.
+_GOING = english.words("gone_verbs")
+_PARTICLES = english.words("gone_particles")
+_TO = frozenset({"to", "into"})
+
+
+def _gone_to(state: list[str]) -> list[str]:
+    """ "gone down to the river" → "at the river": where a person went, as where they are."""
+    if not state or state[0] not in _GOING:
+        return state
+    n = 1
+    while n < len(state) and state[n] in _PARTICLES:
+        n += 1
+    if n < len(state) and state[n] in _TO:
+        return ["at", *state[n + 1 :]]
+    return state
 
 
 def state_said(state: list[str]) -> list[str]:
@@ -33,6 +50,7 @@ def away_elsewhere(state: list[str], lexed: Lexed, subject_end: int) -> bool:
     """Whether the state puts the person somewhere that is no place of this office: "at the
     dentist", "in Leeds", never "at his desk", nor a place, facility, item or person the
     office names (those are its own facts, read by the rule)."""
+    state = _gone_to(state)
     if len(state) > 2 and state[0] in _GONE and state[1] in _ELSEWHERE:
         state = state[1:]  # "out on a delivery till 3": gone, on a delivery
     if len(state) < 2 or state[0] not in _ELSEWHERE:

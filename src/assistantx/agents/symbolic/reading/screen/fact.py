@@ -8,7 +8,14 @@ from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.core import english
 from assistantx.core.task_schema import Hint
+
+_BACK = tuple(
+    sorted((tuple(p.split()) for p in english.entries("back_openers")), key=lambda p: -len(p))
+)
+_BACK_TIMES = english.words("back_times")
 
 
 def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -91,3 +98,23 @@ def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
     )
     thing = terms.office.item_type(item).name
     return Finding("fact", piece, f"a fact: the requester's {thing} is out of use", hint)
+
+
+def back_when(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """ "back in an hour", "should be back after lunch": when someone said to be gone (or the
+    speaker) will be back, said with no subject; a time, never a thing to fetch (not "an
+    hour", nor the lunch of "back after lunch"). "bring it back", "back to my desk with it
+    pls" have a verb or a place and are read as before."""
+    acts = piece.acts
+    if piece.asks or acts.request or acts.imperative or acts.question is not None:
+        return None
+    words = content(piece.words)
+    opener = next((p for p in _BACK if starts_with(words, 0, p)), None)
+    if opener is None:
+        return None
+    rest = words[len(opener) :]
+    if rest and rest[0] not in _BACK_TIMES:
+        return None
+    if any(m.kind == "cue" for m in piece.lexed.mentions):
+        return None  # "back in an hour, print my rota": a task word of its own
+    return Finding("statement", piece, "when someone will be back: context only")

@@ -6,12 +6,14 @@ they walk one message's pieces."""
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
-from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.english import phrases_pattern, split_words
 from assistantx.agents.symbolic.reading.speech_acts import Acts
 
 # A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
@@ -29,6 +31,36 @@ _TAG_PRONOUNS = frozenset({"he", "she", "they", "it", "we", "i", "you"})
 def tag_question(words: list[str]) -> bool:
     """Whether a sentence ends in a tag question after a statement of its own."""
     return len(words) > 3 and words[-2] in _TAG_AUXILIARIES and words[-1] in _TAG_PRONOUNS
+
+
+# A clause that says why the request is made ("... so he can book the courier") or offers a
+# thing to whoever wants it ("... on my desk if anyone needs it"): a piece of its own, so what
+# it names is never read into the request before it (``purpose``).
+_PURPOSE = re.compile(
+    rf"(?:{phrases_pattern('purpose_openers')})\s+(?!(?:you|u|ya)\b)[^\W\d_][\w-]*"
+    rf"(?:['’](?:ll|d)\b|\s+(?:{phrases_pattern('purpose_modals')})(?:n['’]?t)?\b)",
+    re.IGNORECASE,
+)
+_OPEN_OFFER = re.compile(
+    rf"if\s+(?:{phrases_pattern('open_offer_subjects')})\s+(?:\w+\s+)?"
+    rf"(?:{phrases_pattern('need_verbs')}|needed|wanted)\b",
+    re.IGNORECASE,
+)
+_CLAUSE_BREAK = re.compile(rf"(?<=\w)\s+(?={_PURPOSE.pattern}|{_OPEN_OFFER.pattern})", re.I)
+Clause = Literal["purpose", "open_offer"]
+
+
+def _clauses(chunk: str) -> list[tuple[int, str]]:
+    """A comma part cut before its purpose or open-offer clause: each clause with its offset."""
+    cuts = [0, *(m.end() for m in _CLAUSE_BREAK.finditer(chunk)), len(chunk)]
+    return [(a, chunk[a:b]) for a, b in itertools.pairwise(cuts)]
+
+
+def _clause(text: str) -> Clause | None:
+    """Whether a piece is a purpose clause or an open offer, by its opening words."""
+    if _PURPOSE.match(text):
+        return "purpose"
+    return "open_offer" if _OPEN_OFFER.match(text) else None
 
 
 _PIECE_BREAK = re.compile(r",|\s+(?:and|then|but)\s+", re.IGNORECASE)
@@ -55,6 +87,9 @@ class Piece(Part):
 
     lexed: Lexed  # its tokens, typos corrected, and the mentions of the office in them
     acts: Acts  # what it does (a request, a question, thanks ...), read once
+    # a purpose ("so he can book the courier") or an open offer ("if anyone needs it"):
+    # why or for whom, never what to do (``purpose``)
+    clause: Clause | None = None
 
 
 @dataclass
@@ -82,14 +117,20 @@ def pieces(
         sub = 0
         for b in [*re.finditer(",", text[sentence_start:end]), None]:
             stop = sentence_start + (b.start() if b is not None else end - sentence_start)
-            chunk = text[sentence_start + sub : stop]
-            lead = len(chunk) - len(chunk.lstrip())
-            piece_text = chunk.strip()
-            if piece_text:
-                start = sentence_start + sub + lead
+            clauses = _clauses(text[sentence_start + sub : stop])
+            for n, (offset, chunk) in enumerate(clauses):
+                lead = len(chunk) - len(chunk.lstrip())
+                piece_text = chunk.strip()
+                if not piece_text:
+                    continue
+                start = sentence_start + sub + offset + lead
                 words = split_words(piece_text)
                 asks = (  # its last part
-                    b is None and m is not None and "?" in m.group(0) and not tag_question(words)
+                    b is None
+                    and n == len(clauses) - 1
+                    and m is not None
+                    and "?" in m.group(0)
+                    and not tag_question(words)
                 )
                 out.append(
                     Piece(
@@ -100,6 +141,7 @@ def pieces(
                         asks,
                         lexed=read(piece_text),
                         acts=acts(words, asks),
+                        clause=_clause(piece_text),
                     )
                 )
             if b is not None:

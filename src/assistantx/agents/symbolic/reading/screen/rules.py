@@ -19,7 +19,7 @@ from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reas
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.facility_state_asked import facility_state_asked
-from assistantx.agents.symbolic.reading.screen.fact import fact
+from assistantx.agents.symbolic.reading.screen.fact import back_when, fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.fyi import fyi
 from assistantx.agents.symbolic.reading.screen.hope import hope
@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
 from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
+from assistantx.agents.symbolic.reading.screen.purpose import preamble, purpose, reason
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
@@ -55,6 +56,10 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("note", note),
     ("exclusion", exclusion),
     ("exclusion", pronoun_exclusion),
+    # a purpose, an open offer or the reason for a request: context before any rule reads
+    # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
+    ("statement", purpose),
+    ("statement", reason),
     ("statement", contrast),
     ("wish", wish),
     ("wish", hope),
@@ -73,6 +78,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unplaced", cut_off),
     ("statement", elliptical_reason),
     ("fact", fact),
+    ("statement", back_when),
     ("statement", facility_report),
     ("statement", own_doing),
     ("statement", doing_after),
@@ -85,6 +91,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", statement),
     ("statement", whereabouts),
     ("statement", fyi),  # after the statements that say more ("Thanks for telling me ...")
+    ("statement", preamble),  # a told sentence no rule above read, before a request
     ("which", several_kept),
     ("unsupported", variant),
     # a service nothing here offers is declined before an outsider recipient is asked
