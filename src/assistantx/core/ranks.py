@@ -4,10 +4,11 @@ them. The reader reads such a phrase as that person, and the consent guard count
 naming them, from this one table, so the two never disagree on who "the Station Officer" is.
 
 A rank two people hold names neither (it is no name of either); a courtesy title ("Dr",
-"Mr") is no rank; words of two letters ("SO Delaney") are initials, not words people say;
-one word before a surname is as often a given name or a nickname ("Big Dave Okoro") as a
-rank, and the roles of the titles list ("the professor") are read apart, so a rank is a
-phrase of two words or more."""
+"Mr") is no rank; words of two letters ("SO Delaney") are initials, not words people say.
+One word before a surname is as often a given name or a nickname ("Big Dave Okoro") as a
+rank, so it is a rank only where the dictionary knows it as a noun and never as an
+adjective ("Director Watanabe", "Captain MacLeod": "the Director"; not "Big", "Young" or
+"Dave"), and no one in the office bears it as a name."""
 
 from __future__ import annotations
 
@@ -35,7 +36,9 @@ def rank_titles(office: Office) -> dict[str, frozenset[str]]:
             rank = said[:-1]
             while rank and rank[0] in _ARTICLES:
                 rank = rank[1:]
-            if len(rank) > 1 and all(len(w) > 2 and w not in COURTESY_TITLES for w in rank):
+            if not rank or not all(len(w) > 2 and w not in COURTESY_TITLES for w in rank):
+                continue
+            if len(rank) > 1 or _rank_noun(rank[0]):
                 held.setdefault(" ".join(rank), set()).add(p.id)
     names = {w for p in office.people for w in said_words(p.name)}
     return {
@@ -43,6 +46,13 @@ def rank_titles(office: Office) -> dict[str, frozenset[str]]:
         for rank, ids in held.items()
         if len(ids) == 1 and not set(rank.split()) <= names  # "Olive B" is no rank
     }
+
+
+def _rank_noun(word: str) -> bool:
+    """A word that can stand alone as a rank: a noun, never an adjective ("director", not
+    "big"; "chief" is both, and a declared nickname of its own where an office means it)."""
+    kinds = language.lemmas(word)
+    return "NOUN" in kinds and "ADJ" not in kinds
 
 
 def said_words(name: str) -> list[str]:

@@ -260,6 +260,8 @@ class Lexicon:
         for phrase, holders in rank_titles(office).items():
             if phrase not in lex.people:  # "the Station Officer": the one who holds the rank
                 lex.people[phrase] = set(holders)
+            if " " not in phrase:  # "the Director" (of "Director Watanabe"): as a nickname
+                lex.alias_words.add(phrase)
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
                 key = key_of(name) or _title_word(name)  # "ms" for a manuscript
