@@ -1,7 +1,8 @@
 """A harbour operations office for the tests of a rank of one word: colleagues called by a
 single title before their surname ("Director Okafor", "Captain Reyes"), a one-word title two
 people hold ("Sister"), an adjective before a surname ("Young Park": a nickname, no rank),
-and a colleague whose given name is also a title's word ("Marshal Kowal")."""
+a colleague whose given name is also a title's word ("Marshal Kowal"), and a paper type
+named otherwise in a request ("permit" of "document")."""
 
 from __future__ import annotations
 
@@ -17,7 +18,9 @@ _PEOPLE = (
     ob.person("jin", "Jin Park", "radio", "timesheet", aliases=["Young Park"]),
     ob.person("marshal", "Marshal Kowal", "timesheet", aliases=["Deputy Kowal"]),
     ob.person("otto", "Otto Berg", "radio", "timesheet", aliases=["Marshal Berg"]),
-    ob.person("tom", "Tom Lund", "radio", "timesheet"),
+    ob.person("tom", "Tom Lund", "radio", "timesheet", "document"),
+    ob.person("kit", "Kit Moss", "radio"),
+    ob.person("drew", "Drew Fenn", "radio", aliases=["Drew"]),
 )
 
 
@@ -30,6 +33,7 @@ def raw_port_office() -> dict[str, Any]:
             ob.item("file", "file", "electronic", synonyms=["spreadsheet"]),
             ob.item("radio", "radio"),
             ob.item("timesheet", "timesheet", "personal", signable=True),
+            ob.item("document", "document", "personal", synonyms=["permit", "waiver"]),
         ],
         operations=[],
         facilities=[],

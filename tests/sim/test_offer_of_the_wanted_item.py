@@ -14,6 +14,7 @@ from assistantx.core.goals import Milestone
 from assistantx.sim.requester import Wish, answer
 from helpers.one_episode import ppdr_episode
 from helpers.outside_broadcast import outside_broadcast
+from helpers.tyre_bay import tyre_bay
 
 ANY_HEADSET: list[Milestone] = [{"holds": ["quill", "camera_headset:*"]}]
 RENEES_HEADSET: list[Milestone] = [{"holds": ["quill", "camera_headset:renee"]}]
@@ -97,3 +98,16 @@ async def test_the_question_offered_on_is_answered_yes_and_the_task_is_done(
     )
     assert episode.trace.outcome == "done", episode.trace.summary
     assert all(episode.milestones), (episode.milestones, episode.trace.summary)
+
+
+def test_a_supply_a_facility_keeps_is_anyones_to_the_requester() -> None:
+    """Blind round 37's eval class: the goal's charger was the lost-property locker's (a
+    facility's supply, anyone's to take), and "As far as I know, C, S and D have a phone
+    charger. Shall I bring you one?" got "No, thanks." as if the locker were an owner."""
+    office = tyre_bay()
+    wish = Wish.from_goal(office, "ines", [{"holds": ["ines", "staples:supply_room"]}])
+    assert (wish.own, wish.owners) == ("any", ())
+    offer = "As far as I know, Bruno Keel has a box of staples. Shall I bring you one?"
+    assert answer(office, wish, offer) == "Yes, please."
+    someone_elses = "Shall I bring Tove Lind a box of staples?"
+    assert answer(office, wish, someone_elses) == "No, thanks."

@@ -31,6 +31,9 @@ NameReading = Literal["person", "word", "ask"]
 _INDEFINITE = frozenset({"a", "an", "some", "any", "another", "every", "each"})
 
 _COMMON = english.words("common")
+_NUMBER_WORDS = english.words("number_words")
+# what opens a verb's object ("drew *a* blank", "drew *the* short straw")
+_OBJECT_OPENERS = frozenset({"a", "an", "the", "my", "his", "her", "our", "their", "some"})
 _PERSON_BEFORE = english.words("person_before")
 _WORD_BEFORE = english.words("word_before")
 _DATIVE_VERBS = english.words("dative_verbs")
@@ -128,6 +131,10 @@ def read_name(slot: NameSlot) -> NameReading:
     w = slot.word
     if not slot.opens and slot.prev in _INDEFINITE and not slot.possessive:
         return "word"  # "for a min", "some guy": nobody is "a Min"; the word, whatever the name
+    if not slot.opens and numeral(slot.prev) and not slot.possessive:
+        return "word"  # "for 5 min", "two miles": a count of the word, nobody counted
+    if slot.opens and _past_verb_opening(slot):
+        return "word"  # "Drew a blank on the rota": the speaker's dropped "I", a past verb
     if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
     if _verb_slot(slot):
@@ -198,6 +205,21 @@ def _verb_slot(slot: NameSlot) -> bool:
 
 # what follows a verb as its object, or the particle of a phrasal verb ("sign *off* my form")
 _VERB_FOLLOWERS = _VERB_OBJECT_STARTS | _VERB_SLOT_OBJECTS | {"off", "up", "over", "me", "us"}
+
+
+def numeral(word: str) -> bool:
+    """A count said before a noun: digits ("5") or a number word ("two", "ten")."""
+    return word.isdigit() or word in _NUMBER_WORDS
+
+
+def _past_verb_opening(slot: NameSlot) -> bool:
+    """ "Drew a blank", "Drew the short straw": a name word opening a sentence that the
+    dictionary knows as a verb's past form ("drew" of "draw", not the plain "Mark"), with
+    an object's determiner right after it, is a verb with its subject left out."""
+    if slot.possessive or slot.next_after_pause or slot.next not in _OBJECT_OPENERS:
+        return False
+    verbs = language.lemmas(slot.word).get("VERB", ())
+    return bool(verbs) and slot.word not in verbs
 
 
 def _titled_doer(slot: NameSlot) -> bool:

@@ -118,9 +118,9 @@ class Wish:
             op = office.making(type_id)
             if op is not None and op.input is not None:
                 items.append(op.input)  # a printout is of a file
-            if owner not in ("", "*") and owner != requester:
+            if owner not in ("", "*") and owner != requester and office.is_person(owner):
                 owners.append(owner)
-            else:
+            else:  # nobody's, or a supply a facility keeps for anyone: any one will do
                 own.append("mine" if owner == requester else "any")
 
         for milestone in goal:

@@ -2,10 +2,11 @@
 
 "take the stopwatch over to Kasia", said by someone who has a stopwatch of their own: the
 definite article points at the one the speaker has at hand, their own, not one to be borrowed
-from a colleague on the way. Said of an item the requester does not have ("take the radio to
-Femi"), with "a" ("bring Kasia a stopwatch": any one will do), with a place or person it comes
-from ("the radio from Kasia"), or to the requester themself ("bring me the stopwatch": they
-want one they do not have at hand), the task is left as it was and the planner finds an owner.
+from a colleague on the way; "take this permit to Dr Okafor" points at it all the more. Said
+of an item the requester does not have ("take the radio to Femi"), with "a" ("bring Kasia a
+stopwatch": any one will do), with a place or person it comes from ("the radio from Kasia"),
+or to the requester themself ("bring me the stopwatch": they want one they do not have at
+hand), the task is left as it was and the planner finds an owner.
 """
 
 from __future__ import annotations
@@ -17,7 +18,8 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task
 
-_DEFINITE = frozenset({"the"})
+# "the", and the demonstratives of what is at hand ("this permit", "these forms")
+_DEFINITE = frozenset({"the", "this", "these"})
 
 
 def requesters_own(

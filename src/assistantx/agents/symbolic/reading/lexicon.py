@@ -46,7 +46,7 @@ from assistantx.agents.symbolic.reading.own_papers import OwnPapers
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
-from assistantx.core.name_reading import is_word_name, read_name, slot_at
+from assistantx.core.name_reading import is_word_name, numeral, read_name, slot_at
 from assistantx.core.office import Office
 from assistantx.core.ranks import COURTESY_TITLES, rank_titles
 from assistantx.core.task_schema import SHAPE_KIND
@@ -782,8 +782,9 @@ class Lexicon:
         the word was a typo's correction (then only a name) or the requester already said
         which they meant."""
         t = tokens[i]
-        if i > 0 and tokens[i - 1].word in ("a", "an") and not t.possessive and not t.opens:
-            return "word"  # "for a min": nobody is "a Min" (``read_name`` says so too)
+        counted = i > 0 and (tokens[i - 1].word in ("a", "an") or numeral(tokens[i - 1].word))
+        if counted and not t.possessive and not t.opens:
+            return "word"  # "for a min", "for 5 min": nobody is "a Min" (``read_name`` too)
         if t.corrected or not is_word_name(t.word):
             return "person"
         if t.word in self.chosen:

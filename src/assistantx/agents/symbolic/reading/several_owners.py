@@ -90,8 +90,12 @@ def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | Non
     said = lex.read(answer)
     people = {p for m in said.mentions if m.kind == "person" for p in m.ids}
     name = found.group("name")
-    article = r"the" if asked is not None else r"the|an?|this|that"
-    pattern = re.compile(rf"\b(?:{article})\s+{re.escape(name)}\b", re.IGNORECASE)
+    article = r"the" if asked is not None else r"the|an?|this|that|these|those"
+    # the question says the type's name ("document"), the request may have said another of
+    # its names ("this permit")
+    names = sorted(_names_of(lex, name), key=len, reverse=True)
+    said_as = "|".join(re.escape(n) for n in names)
+    pattern = re.compile(rf"\b(?:{article})\s+(?:{said_as})\b", re.IGNORECASE)
     if pattern.search(text) is None:
         return None
     if len(people) == 1:
@@ -104,3 +108,12 @@ def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | Non
     if not people and words & _ANY:
         return pattern.sub(a_thing(name), text, count=1)  # "any will do": "take a tray ..."
     return None
+
+
+def _names_of(lex: Lexicon, name: str) -> set[str]:
+    """Every name the office gives the item type called ``name`` (with ``name`` itself)."""
+    names = {name}
+    for t in lex.office.item_types:
+        if t.name.lower() == name.lower():
+            names |= {t.name, *t.synonyms, t.id.replace("_", " ")}
+    return names

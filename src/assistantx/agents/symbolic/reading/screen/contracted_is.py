@@ -2,8 +2,9 @@
 down again", "hall clock's stopped"): the "'s" is the verb, not a possessive, so the clause is
 read as the statement it is ("the bulb is gone", "the clock has stopped"), never as a request
 about a thing belonging to the bulb. Only a word of state or a past participle that ends its
-clause counts ("Zhang's broken stapler" owns a stapler, and stays), or a change of state with
-what it became ("the fridge light's gone amber again")."""
+clause counts ("Zhang's broken stapler" owns a stapler, and stays), a past participle with its
+object after it ("the printer's eaten another manifest"), or a change of state with what it
+became ("the fridge light's gone amber again")."""
 
 from __future__ import annotations
 
@@ -40,6 +41,12 @@ _PARTICIPLE_TAILS = frozenset(
         "so",
     }
 )
+# a determiner after a participle opens its object ("the printer's eaten *another* manifest",
+# "Zhang's broken *the* stapler"): a possessive's adjective never has one after it, so the
+# "'s" is "has"
+_OBJECT_DETERMINERS = frozenset(
+    {"a", "an", "another", "the", "my", "our", "your", "his", "her", "their", "some", "this"}
+)
 # a change of state said with its result ("the light's gone amber", "screen's turned blue"):
 # the word after it says what the thing became, and the clause is still a statement
 _BECOME = frozenset({"gone", "turned", "become", "grown"})
@@ -63,7 +70,7 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
         if subject.lower() in _PRONOUNS:
             return match.group(0)
         verb = "is" if state in _STATES else "has" if language.is_past_participle(state) else ""
-        tails = _TAILS if verb == "is" else _PARTICIPLE_TAILS
+        tails = _TAILS if verb == "is" else _PARTICIPLE_TAILS | _OBJECT_DETERMINERS
         read = language.lemmas(after) if after else {}
         # an adjective, never a place or a direction ("Zhang's gone home": he is away)
         if state in _BECOME and "ADJ" in read and "ADV" not in read:

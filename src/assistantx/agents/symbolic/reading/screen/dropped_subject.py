@@ -1,9 +1,11 @@
 """A sentence of chat that drops its subject "I" ("been at the machine all morning", "just
-knocked coffee all over my keyboard", "can't leave the vat"): the speaker's own state or doing,
-so it gets its "I" back before the pieces are judged and is read as the statement it is, never
-as a request naming a facility or an item ("heat a tea at the machine", "a knocked coffee",
-"dye a lunch at the vat"). Only a clause that opens so is restored: "can't you ...", "just
-bring ..." and "just put it ..." (a past form that is also the plain verb) are left as said."""
+knocked coffee all over my keyboard", "can't leave the vat", "drew a blank on the rota"): the
+speaker's own state or doing, so it gets its "I" back before the pieces are judged and is read
+as the statement it is, never as a request naming a facility or an item ("heat a tea at the
+machine", "a knocked coffee", "dye a lunch at the vat"). Only a clause that opens so is
+restored: "can't you ...", "just bring ..." and "just put it ..." (a past form that is also
+the plain verb) are left as said.
+"""
 
 from __future__ import annotations
 
@@ -21,6 +23,21 @@ _CANT = re.compile(rf"{_OPENS}(can'?t|cannot|couldn'?t)\s+([a-z]+)\b", re.IGNORE
 # "just knocked ...": "just" and a past form
 _JUST = re.compile(rf"{_OPENS}(just)\s+([a-z]+)\b", re.IGNORECASE)
 _ASKED_OF = english.words("request_askees") | english.words("subject_pronouns")
+# "drew a blank on the rota", "left my badge at home": a past form (never also the plain verb)
+# opening a clause, with its object's determiner after it
+_PAST = re.compile(
+    rf"{_OPENS}([a-z]+)\s+(?=(?:a|an|the|my|our|some|his|her|their)\b)", re.IGNORECASE
+)
+# "got a stapler?" asks for one (have got: possession), whatever its tense
+_ASKING_PASTS = frozenset({"got", "gotten"})
+
+
+def _ends_asking(text: str, at: int) -> bool:
+    """Whether the sentence going on at ``at`` ends with a question mark."""
+    end = re.search(r"[.!?\n]", text[at:])
+    return end is not None and end.group(0) == "?"
+
+
 # "photocopy my invoice, need 1 for the files": after a request, "need" and a number with no
 # noun of its own is how many of what was asked the speaker needs (never at the message's
 # start, nor with a thing named: "need two pens" asks)
@@ -33,7 +50,8 @@ _NEED_COUNT = re.compile(
 
 def subject_restored(text: str) -> tuple[str, list[Evidence]]:
     """``text`` with "I" back before a clause that opens with "been", "can't" + a verb,
-    "just" + a past form, or (after a request) "need" + a number."""
+    "just" + a past form, a past form and its object ("drew a blank"), or (after a
+    request) "need" + a number."""
     found: list[Evidence] = []
 
     def been(match: re.Match[str]) -> str:
@@ -58,6 +76,18 @@ def subject_restored(text: str) -> tuple[str, list[Evidence]]:
         found.append(Evidence(words=match.group(2), meaning="I need (the speaker)"))
         return f"{match.group(1)}I {match.group(2)} "
 
+    def past(match: re.Match[str]) -> str:
+        verb = match.group(2).lower()
+        if not language.is_past_verb(verb) or verb in language.verb_lemmas(verb):
+            return match.group(0)  # "put the box ...", "bring the ...": asked, or no verb
+        if verb in _ASKING_PASTS or "AUX" in language.lemmas(verb):
+            return match.group(0)  # "got a light meter?", "did my proof go out?": asked
+        if _ends_asking(match.string, match.end()):
+            return match.group(0)  # "left the keys in your office?": a question
+        found.append(Evidence(words=match.group(0).strip(" ,.;"), meaning="I (the speaker) did"))
+        return f"{match.group(1)}I {verb} "
+
+    text = _PAST.sub(past, text)
     text = _BEEN.sub(been, text)
     text = _CANT.sub(cant, text)
     text = _NEED_COUNT.sub(need, text)
