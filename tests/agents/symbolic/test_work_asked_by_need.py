@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import pytest
 
+from assistantx.core.office import load_office
 from helpers.notary_office import notary_office
 from helpers.reading import frame_reader
 
@@ -122,3 +123,22 @@ def test_a_paper_taken_to_a_colleague_for_nothing_is_a_hand_over() -> None:
 def test_the_client_after_a_plain_hand_over_is_still_asked_about() -> None:
     frame = _frame("take my letter to the client")
     assert frame.question is not None and "client" in frame.question, frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Zhang still hasn't signed the new travel policy. Can you take my copy to him and bring "
+        "it back once he has?",
+        "Zhang still hasn't signed the new travel policy, take my copy to him",
+    ],
+)
+def test_a_paper_the_office_names_otherwise_is_its_one_paper_to_sign(text: str) -> None:
+    """Blind round 34 after its fixes: "the new fire safety policy" is no name the office
+    gives its paper, so the work was not read and a photocopy was made and handed to the
+    signer (a wrong physical action). The work is on a paper one signs; an office with one
+    such paper means it."""
+    frame = frame_reader(load_office, "lee")(text)
+    assert [(t.kind, t.owner, t.actor, t.recipient) for t in frame.tasks] == [
+        ("sign", "lee", "zhang", "lee")
+    ], frame

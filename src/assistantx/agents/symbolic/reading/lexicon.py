@@ -110,6 +110,7 @@ _AFTER_NAME = _POLITE | frozenset(
 _ALIAS_ARTICLES = frozenset({"the", "our"})
 # A determiner before a name word makes it the ordinary word ("the grace period").
 _WORD_BEFORE = english.words("word_before")
+_CHAT_SHORTHAND = english.wording("chat_shorthand")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
 _MODALS = english.words("request_modals")
 # "have the Gaffer sign it", "let the manager stamp it": a verb that has someone do something
@@ -434,6 +435,8 @@ class Lexicon:
         In a verb's place the task verbs are tried first, so a misspelt verb is never turned
         into a noun that is closer by letters (a typo keeps its part of speech). A typo as
         near to two words is left alone, unless both are names (the parser then asks whom)."""
+        if word in _CHAT_SHORTHAND:  # "frm": from, as typed in chat
+            return _CHAT_SHORTHAND[word]
         if (
             language.typo_limit(word) == 0
             or not word.isalpha()

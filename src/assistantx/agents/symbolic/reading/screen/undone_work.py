@@ -45,6 +45,10 @@ def undone_work(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
             continue
         said = m.group("said")
         papers = {x.ids[0] for x in terms.lex.read(said).mentions if x.kind == "item"}
+        if not papers:  # "hasn't signed the new policy": a paper the office names otherwise
+            papers = {t.id for t in terms.office.item_types if t.signable}
+            if len(papers) == 1:  # the office's one paper to sign, by its own name
+                said = f" the {terms.office.item_type(next(iter(papers))).name}"
         rest = out[m.end() :]
         owns = []
         for phrase in _copies_of(terms, papers):
