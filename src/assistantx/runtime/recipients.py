@@ -60,6 +60,7 @@ _TITLES = english.words("titles") - {"a", "an", "the", "our"}
 _ADDRESS_TITLES = frozenset({"mr", "mrs", "ms", "mx", "miss", "sir", "madam", "dr"})
 _ROLE_TITLES = _TITLES - _ADDRESS_TITLES
 _PRONOUNS = english.words("object_pronouns")
+_IT = frozenset({"it", "them"})  # the thing handed over, said again
 _FILLERS = english.words("courtesy") | frozenset(
     {"to", "for", "it", "its", "is", "the", "one", "please", "oh", "sorry", "i", "mean", "meant"}
 )
@@ -383,6 +384,16 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
             if not (m.possessive and m.start > n) and _before(words, m.start) != "from"
             for person in m.people
         } - {requester}
+        if len(candidates) > 1 and any(x.folded in _IT for x in words[max(0, n - 3) : n]):
+            # "Nadia needs Miles's dev kit, take it to her": the owner of the thing "it" is
+            # no receiver of it either, where one other person is named ("Hal's clipboard
+            # snapped, Dawn says: lend him mine" admits no one)
+            candidates = {
+                person
+                for m in mentions
+                if not m.possessive and _before(words, m.start) != "from"
+                for person in m.people
+            } - {requester}
         if len(candidates) == 1:
             named |= candidates
     return frozenset(named - {requester})

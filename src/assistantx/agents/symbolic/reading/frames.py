@@ -111,14 +111,20 @@ class FrameReader:
                 later = _named_later(clauses, k + 1)
                 if later is None and named_once is not None:
                     later = (-1, named_once)  # "Is Otto in? I need his ruler": Otto's
-                if later is None:
+                besides = _besides_owners(
+                    tokens, readings.mentions, clause, requester, last_person, addressed
+                )
+                if later is None and besides is not None:
+                    roles = besides  # "Nadia needs Miles's kit, take it to her": Nadia
+                elif later is None:
                     unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
                     return TaskFrame(requester=requester, question=unclear)
-                # "bring me his stapler. Zhang Wei": the answer names him
-                answered.add(later[0])
-                roles = clause_roles(
-                    tokens, clause, requester, [*last_person, later[1]], addressed=addressed
-                )
+                else:
+                    # "bring me his stapler. Zhang Wei": the answer names him
+                    answered.add(later[0])
+                    roles = clause_roles(
+                        tokens, clause, requester, [*last_person, later[1]], addressed=addressed
+                    )
             unclear_place = kept_owners(self.office, tokens, clause, roles, requester, placed)
             if unclear_place is not None:  # "the ladder in the kitchen", where none is kept
                 return TaskFrame(requester=requester, question=unclear_place)
@@ -186,6 +192,7 @@ class FrameReader:
         tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
         question = (
             self._uncovered(objects, tasks)
+            or self._whose_service(tasks, readings, requester)
             or which_work(self.office, tasks, readings.mentions, requester)
             or self._check(tasks, requester, to_self)
         )
@@ -381,6 +388,29 @@ class FrameReader:
                     )
             if t.kind == "send_file" and t.owner == t.recipient:
                 return f"Who should I pass your {file_noun(self.office)} on to?"
+        return None
+
+    def _whose_service(
+        self, tasks: Sequence[Task], readings: Readings, requester: str
+    ) -> str | None:
+        """ "Could you weigh the parcel?" said by someone who has no parcel: a service on a
+        thing whose owner is not said is the requester's own only if they have one; with none
+        of theirs and none the office keeps for anyone, whose it is is asked (never a thing
+        tried from the requester's desk where there is none). "my parcel" is left as said."""
+        said_mine = any(
+            m.kind == "self" and readings.tokens[m.start].word in ("my", "mine")
+            for m in readings.mentions
+        )
+        for t in tasks:
+            if t.kind != "heat" or t.item is None or t.owner != requester or said_mine:
+                continue
+            if self.reader.kinds.get(t.item) == "electronic":
+                continue
+            if requester in self.office.owners_of(t.item):
+                continue
+            if self.office.kept_owner(t.item, besides=requester) is not None:
+                continue
+            return f"Whose {self._item_name(t.item)} do you mean?"
         return None
 
     def _item_name(self, type_id: str) -> str:
@@ -632,3 +662,42 @@ def _to_the_doer(earlier: Task, task: Task) -> bool:
         and task.recipient == earlier.actor
         and (task.item, task.owner) == (earlier.item, earlier.owner)
     )
+
+
+def _besides_owners(
+    tokens: Sequence[Token],
+    mentions: Sequence[Mention],
+    clause: Clause,
+    requester: str,
+    last_person: Sequence[str],
+    addressed: str | None,
+) -> Roles | None:
+    """ "Nadia needs Miles's dev kit - could you ask him and take it to her?": of the two
+    colleagues named, the one said as the owner of a thing ("Miles's dev kit") is not whom
+    "her" brings it to; with exactly one other colleague named, the pronoun is them. None:
+    still unclear (the reader asks)."""
+    owned = {
+        m.ids[0]: mentions[n + 1].ids
+        for n, m in enumerate(mentions[:-1])
+        if m.kind == "person"
+        and m.possessive
+        and len(m.ids) == 1
+        and mentions[n + 1].kind == "item"
+        and mentions[n + 1].start == m.end
+    }
+    things = {i for ids in owned.values() for i in ids}
+    # the owner's thing is what this clause hands on: "it", or the thing named again ("Hal's
+    # clipboard snapped, Dawn's here, lend him mine" is no hand-over of Hal's clipboard)
+    again = any(
+        (m.kind == "pronoun" and tokens[m.start].word in ("it", "them"))
+        or (m.kind == "item" and set(m.ids) & things)
+        for m in clause.mentions
+    )
+    owners = set(owned) if again else set()
+    left = [x for x in dict.fromkeys(last_person) if x != requester and x not in owners]
+    if not owners & set(last_person) or len(left) != 1:
+        return None
+    try:
+        return clause_roles(tokens, clause, requester, left, addressed=addressed)
+    except UnresolvedPronoun:
+        return None

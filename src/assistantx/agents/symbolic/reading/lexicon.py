@@ -244,7 +244,11 @@ class Lexicon:
                 if key:
                     lex.people.setdefault(key, set()).add(p.id)
             for word in p.name.split():
-                lex.name_words.setdefault(key_of(word), set()).add(p.id)
+                key = key_of(word)
+                # "Anne-Marie" is two words to the tokenizer: the given name alone is
+                # the phrase of both ("Anne-Marie's calculator")
+                found = lex.people if " " in key else lex.name_words
+                found.setdefault(key, set()).add(p.id)
             for alias in p.aliases:
                 said = language.fold(alias).replace(".", " ").split()
                 for word in said:

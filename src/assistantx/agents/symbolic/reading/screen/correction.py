@@ -116,8 +116,27 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = terms.office.person(new.ids[0]).name
     if new.kind == "item":
         said = terms.office.item_type(new.ids[0]).name
-    fixed = before[: old.start()] + said + before[old.end() :] + rest
+    between = before[old.end() :]
+    if new.kind == "person" and new.possessive:
+        between = _owner_said_again(terms, between, said)
+    fixed = before[: old.start()] + said + between + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+
+
+_OWNER_PRONOUN = re.compile(r"\b(?:his|her|their)\s+", re.IGNORECASE)
+
+
+def _owner_said_again(terms: Terms, between: str, said: str) -> str:
+    """ "ask Olive to lend me her calculator? Sorry, I meant Anne-Marie's": a possessive
+    correction says whose the thing is, so the owner's pronoun after the name it replaces
+    ("her calculator") is the new owner's too, whatever is said beside the correction
+    ("..., Olive took hers home" names the old owner again, and must not take it back)."""
+    for pronoun in _OWNER_PRONOUN.finditer(between):
+        tokens = terms.lex.tokens(between[pronoun.end() :])
+        head = [m for m in terms.lex.scan(tokens[:4]) if m.start <= 1]
+        if head and head[0].kind == "item":
+            return between[: pronoun.start()] + f"{said}'s " + between[pronoun.end() :]
+    return between
 
 
 # Words after a name that make it the subject of what follows ("sorry, Otto has it")
