@@ -5,6 +5,7 @@ form") makes nobody a party. Properties over generated requests on a small clini
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -14,6 +15,7 @@ from assistantx.runtime import consent
 from assistantx.runtime.recipients import named_recipients
 from helpers.clinic import clinic, raw_clinic
 from helpers.consent_memory import answered, exchange, memory
+from helpers.drill_shed import drill_shed
 from helpers.packing_loft import packing_loft
 from helpers.watch_room import watch_room
 
@@ -217,3 +219,16 @@ def test_a_lower_case_name_said_as_a_correction_is_the_receiver() -> None:
         assert named_recipients(office, memory("lena", text)) == {"robin"}, text
     stm = memory("lena", "take my file to sam. sorry not sam, robin told me")
     assert named_recipients(office, stm) == {"sam_k", "sam_r"}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Nell's headset died mid-session. Miles has a spare one, could you bring it to her?",
+        "Nell's headset died. Miles has a spare, bring it to her",
+    ],
+)
+def test_the_one_said_to_have_it_is_no_receiver_of_her(text: str) -> None:
+    """Blind round 36 after its fixes: the reader gave Miles's headset to Nell, and the
+    guard refused Nell, counting "Miles has a spare one" as the one "her" may mean."""
+    assert named_recipients(drill_shed(), memory("sunny", text)) == {"nell"}

@@ -381,7 +381,9 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         candidates = {
             person
             for m in mentions
-            if not (m.possessive and m.start > n) and _before(words, m.start) != "from"
+            if not (m.possessive and m.start > n)
+            and _before(words, m.start) != "from"
+            and not _holder(words, m.end)
             for person in m.people
         } - {requester}
         if len(candidates) > 1 and any(x.folded in _IT for x in words[max(0, n - 3) : n]):
@@ -397,6 +399,15 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         if len(candidates) == 1:
             named |= candidates
     return frozenset(named - {requester})
+
+
+_HAS = frozenset({"has", "have", "had"})
+
+
+def _holder(words: list[_Word], end: int) -> bool:
+    """Whether the name ending at ``end`` is said to have something ("Rhys has a spare one,
+    bring it to her"): the one it comes from, never the "her" it goes to."""
+    return end < len(words) and words[end].folded in _HAS
 
 
 def _just_a_name(office: Office, text: str) -> frozenset[str]:
