@@ -1,8 +1,9 @@
 """A possessive written without its apostrophe (blind round 28's class, on an office no
 sentence was written for, ``helpers.rota_desk``): "could u bring ottos ruler" is Otto's
 ruler brought to the requester, Otto asked; on main the typo correction made "ottos" plain
-"otto" and the ruler went to Otto. A plural that is an English word ("bills", "marks") is
-left as written: whose is not guessed."""
+"otto" and the ruler went to Otto. A plural that is an English word ("bills", "marks") is the
+possessive only where the colleague it names keeps that item (Mark and Bill keep rulers;
+Chase keeps none, so "chases ruler" is left as written)."""
 
 from __future__ import annotations
 
@@ -21,6 +22,8 @@ _frame = frame_reader(rota_desk, "ada")
         ("could u bring me Ottos ruler", "otto"),
         ("can i borrow rhiannons ruler", "rhiannon"),
         ("pls fetch ottos steel rule for me", "otto"),
+        ("could u bring marks ruler", "mark"),
+        ("could u bring me bills ruler", "bill"),
     ],
 )
 def test_a_name_and_s_before_an_item_is_its_owner(text: str, owner: str) -> None:
@@ -30,8 +33,8 @@ def test_a_name_and_s_before_an_item_is_its_owner(text: str, owner: str) -> None
     ], frame
 
 
-@pytest.mark.parametrize("text", ["could u bring marks ruler", "could u bring me bills ruler"])
-def test_an_english_plural_is_not_taken_for_a_name(text: str) -> None:
+@pytest.mark.parametrize("text", ["could u bring chases ruler", "could u bring me chases ruler"])
+def test_an_english_plural_is_not_taken_for_a_name_without_the_item(text: str) -> None:
     frame = _frame(text)
     assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("ruler", None, "ada")]
 

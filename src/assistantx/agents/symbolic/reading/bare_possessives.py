@@ -3,13 +3,15 @@ ruler" (Ida's, Otto's). A word that is a colleague's one-word name plus "s", its
 and no English word, right before a word of one of the office's items in the same clause,
 is that name's possessive. Read on the tokens before the typo correction, which would
 otherwise make "ottos" plain "otto" ("bring Otto the ruler": Otto would receive his own
-ruler). An English word ("bills ruler", "marks ruler") is left as written: whose is asked,
-never guessed. "James' ruler" is already a possessive (the tokenizer's "s'").
+ruler). An English word ("hunters pad", "marks ruler") is the possessive only where the
+colleague it names keeps that item (Hunter has a pad): otherwise ("bills ruler" where Bill has
+none) it is left as written, and whose is not taken from the word. "James' ruler" is already a
+possessive (the tokenizer's "s'").
 """
 
 from __future__ import annotations
 
-from collections.abc import Collection, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import replace
 
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -19,23 +21,27 @@ _SHORTEST_NAME = 2  # "Al" + "s"
 
 
 def read_bare_possessives(
-    tokens: Sequence[Token], names: Collection[str], item_words: Collection[str]
+    tokens: Sequence[Token],
+    names: Collection[str],
+    item_words: Collection[str],
+    owned: Mapping[str, Collection[str]] | None = None,
 ) -> list[Token]:
     """``tokens`` with each apostrophe-less possessive of a name read as the name's
     possessive. ``names``: the office's one-word names of people (folded); ``item_words``:
-    the words that open an item's name (folded)."""
+    the words that open an item's name (folded); ``owned``: a name → the words that open
+    the names of the items the person it names keeps."""
     out = list(tokens)
     for n, t in enumerate(tokens):
         nxt = tokens[n + 1] if n + 1 < len(tokens) else None
         if nxt is None or nxt.opens or nxt.after_pause or nxt.word not in item_words:
             continue
-        if _bare_possessive(t, names):
+        if _bare_possessive(t, names, (owned or {}).get(t.word[:-1], ()), nxt.word):
             base = t.word[:-1]
             out[n] = replace(t, word=base, typed=base, possessive=True)
     return out
 
 
-def _bare_possessive(t: Token, names: Collection[str]) -> bool:
+def _bare_possessive(t: Token, names: Collection[str], kept: Collection[str], item: str) -> bool:
     word = t.word
     return (
         not t.possessive
@@ -43,5 +49,5 @@ def _bare_possessive(t: Token, names: Collection[str]) -> bool:
         and len(word) > _SHORTEST_NAME
         and word[:-1] in names
         and word not in names
-        and not language.is_english_word(word)
+        and (not language.is_english_word(word) or item in kept)
     )

@@ -398,7 +398,9 @@ class Lexicon:
     def tokens(self, text: str) -> list[Token]:
         """The tokens of ``text`` (stage 1), each corrected against this office's words."""
         # "bring idas ruler": a name's possessive without its apostrophe, before correction
-        raw = read_bare_possessives(tokenize(text), self._one_word_names, self._item_openers)
+        raw = read_bare_possessives(
+            tokenize(text), self._one_word_names, self._item_openers, self._owned_openers
+        )
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
@@ -427,6 +429,23 @@ class Lexicon:
     @functools.cached_property
     def _item_openers(self) -> frozenset[str]:
         return frozenset(k.split()[0] for k in self.items)
+
+    @functools.cached_property
+    def _owned_openers(self) -> dict[str, frozenset[str]]:
+        """Each one-word name of a person → the first words of the names of the items that
+        every person it names owns ("hunter" → "pad" where Hunter keeps a pad)."""
+        owned: dict[str, frozenset[str]] = {}
+        for word in self._one_word_names:
+            ids = {*self.people.get(word, ()), *self.name_words.get(word, ())}
+            if not ids:
+                continue
+            kinds = [
+                {o.type for o in self.office.person(i).owns} if self.office.is_person(i) else set()
+                for i in ids
+            ]
+            common = set.intersection(*kinds)
+            owned[word] = frozenset(k.split()[0] for k, t in self.items.items() if t in common)
+        return owned
 
     def _modifier_word(self, word: str) -> bool:
         """A word that may describe an operation's noun ("a *quick* proofread", "a *legal*

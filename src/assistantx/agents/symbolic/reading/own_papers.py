@@ -30,6 +30,8 @@ from assistantx.memory.names import normalize
 PAPER_NOUNS = english.words("paper_nouns")
 _COMMON = english.words("common")
 _SENDING = english.words("send_words")
+FILE_NOUNS = english.words("file_nouns")
+_FILE_VERBS = english.words("file_verbs")
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
 
 
@@ -64,10 +66,14 @@ def personal_papers(office: Office) -> tuple[str, ...]:
 
 
 def paper_phrase(
-    mentions: Sequence[Mention], n: int, tokens: Sequence[Token], known: Callable[[str], bool]
+    mentions: Sequence[Mention],
+    n: int,
+    tokens: Sequence[Token],
+    known: Callable[[str], bool],
+    heads: frozenset[str] | set[str] = PAPER_NOUNS,
 ) -> int | None:
-    """Where ``mentions[n]`` is "my", the index of the mention of the paper noun that heads
-    the phrase it opens ("my [draft] memo"), or None."""
+    """Where ``mentions[n]`` is "my", the index of the mention of the paper noun (one of
+    ``heads``) that heads the phrase it opens ("my [draft] memo"), or None."""
     opener = mentions[n]
     if opener.kind != "self" or not opener.possessive:
         return None
@@ -77,18 +83,18 @@ def paper_phrase(
         if m.kind != "word" or m.start != end or tokens[m.start].opens:
             return None
         word = m.ids[0]
-        if word not in PAPER_NOUNS and (word in _COMMON or not word.isalpha()):
+        if word not in heads and (word in _COMMON or not word.replace("-", "").isalpha()):
             return None
         after = mentions[k + 1] if k + 1 < len(mentions) else None
         if (
             after is not None
             and after.kind == "word"
             and after.start == m.end
-            and after.ids[0] in PAPER_NOUNS
+            and after.ids[0] in heads
         ):
             end = m.end  # "my draft proposal": the last of the nouns is the head
             continue
-        if word in PAPER_NOUNS and not tokens[m.start].corrected:
+        if word in heads and not tokens[m.start].corrected:
             if modifies_a_noun(tokens, m.end, known):
                 return None  # "my report card": a compound, its head another noun
             if after is not None and after.kind == "item" and after.start == m.end:
@@ -119,6 +125,16 @@ class OwnPapers:
         found: dict[int, str] = {}
         for n in range(len(mentions)):
             k = paper_phrase(mentions, n, tokens, known)
+            if k is None and self.file_type is not None:
+                # "send Sam my profiler capture": a noun of what a computer keeps, with a
+                # verb whose input is a file, is the requester's electronic file
+                k = paper_phrase(mentions, n, tokens, known, PAPER_NOUNS | FILE_NOUNS)
+                if k is None or not _file_verb(tokens, mentions[k].start):
+                    continue
+                said = {t.word for t in tokens[mentions[n].end : mentions[k].end]}
+                if not said & self.named:
+                    found[k] = self.file_type
+                continue
             if k is None or mentions[k].ids[0] in self.named:
                 continue  # "my vet notes" where the file is the "session notes": as before
             meant = self.papers[0] if len(self.papers) == 1 else None
@@ -137,6 +153,14 @@ def _item_name_words(office: Office) -> frozenset[str]:
     return frozenset(
         w for t in office.item_types for n in (t.name, *t.synonyms) for w in normalize(n).split()
     )
+
+
+def _file_verb(tokens: Sequence[Token], k: int) -> bool:
+    """Whether the sentence of token ``k`` says, before it, a verb whose input is a file."""
+    start = k
+    while start > 0 and not tokens[start].opens:
+        start -= 1
+    return any(t.word in _FILE_VERBS for t in tokens[start:k])
 
 
 def _sentence(tokens: Sequence[Token], k: int) -> Sequence[Token]:
