@@ -65,6 +65,8 @@ SELF_WORDS = english.words("self_words")
 PRONOUNS = english.words("pronouns")
 OTHER_POSSESSIVES = english.words("other_possessives")
 # A clipped given name never stands after a determiner: "my Mum's ruler" is no Mumtaz's.
+# "this week's vouchers", "today's rota": a time's possessive says when, not whose.
+_TIME_POSSESSORS = english.words("time_possessors")
 _CLIP_NEVER_AFTER = english.words("object_starts") | english.words("other_possessives")
 # Words that connect a person to a role in the sentence.
 PREPOSITIONS = english.words("party_prepositions")
@@ -733,6 +735,8 @@ class Lexicon:
         after_determiner = i > 0 and tokens[i - 1].word in _CLIP_NEVER_AFTER  # "my Mum's"
         if clipped and not self._known(w) and not after_determiner:  # "Rhi's": Rhiannon's
             return Mention("person", i, i + 1, clipped, True, t.text)
+        if t.possessive and w in _TIME_POSSESSORS:
+            return Mention("word", i, i + 1, (w,), False, t.text)  # "this week's": when
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
 
     def _work_asked(self, tokens: Sequence[Token], i: int) -> bool:
