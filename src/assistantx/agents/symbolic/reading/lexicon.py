@@ -34,6 +34,7 @@ from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipp
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
@@ -396,6 +397,7 @@ class Lexicon:
         """The tokens of ``text`` (stage 1), each corrected against this office's words."""
         # "bring idas ruler": a name's possessive without its apostrophe, before correction
         raw = read_bare_possessives(tokenize(text), self._one_word_names, self._item_openers)
+        raw = read_held_copies(raw)  # "Kenji's copy of the contract": Kenji's contract
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
