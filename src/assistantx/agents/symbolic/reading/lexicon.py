@@ -34,6 +34,7 @@ from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipp
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
@@ -65,6 +66,8 @@ SELF_WORDS = english.words("self_words")
 PRONOUNS = english.words("pronouns")
 OTHER_POSSESSIVES = english.words("other_possessives")
 # A clipped given name never stands after a determiner: "my Mum's ruler" is no Mumtaz's.
+# "this week's vouchers", "today's rota": a time's possessive says when, not whose.
+_TIME_POSSESSORS = english.words("time_possessors")
 _CLIP_NEVER_AFTER = english.words("object_starts") | english.words("other_possessives")
 # Words that connect a person to a role in the sentence.
 PREPOSITIONS = english.words("party_prepositions")
@@ -401,6 +404,7 @@ class Lexicon:
         raw = read_bare_possessives(
             tokenize(text), self._one_word_names, self._item_openers, self._owned_openers
         )
+        raw = read_held_copies(raw)  # "Kenji's copy of the contract": Kenji's contract
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
@@ -759,6 +763,8 @@ class Lexicon:
         after_determiner = i > 0 and tokens[i - 1].word in _CLIP_NEVER_AFTER  # "my Mum's"
         if clipped and not self._known(w) and not after_determiner:  # "Rhi's": Rhiannon's
             return Mention("person", i, i + 1, clipped, True, t.text)
+        if t.possessive and w in _TIME_POSSESSORS:
+            return Mention("word", i, i + 1, (w,), False, t.text)  # "this week's": when
         return Mention("word", i, i + 1, (w,), t.possessive, t.text)
 
     def _work_asked(self, tokens: Sequence[Token], i: int) -> bool:

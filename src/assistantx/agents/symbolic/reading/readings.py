@@ -473,14 +473,18 @@ def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Ment
 def participle_adjectives(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
     """ "send the signed form to Kasia": a person-service's past participle between a
     determiner (or a possessive) and the item it describes is an adjective, a plain word; the
-    request is the sentence's own verb, not that service."""
+    request is the sentence's own verb, not that service. Plain words that also describe
+    the item may stand between ("courier the signed *publishing* contract")."""
     out = list(mentions)
     for n, m in enumerate(out[:-1]):
-        if m.kind != "cue" or m.end - m.start != 1 or out[n + 1].kind != "item":
+        if m.kind != "cue" or m.end - m.start != 1:
             continue
         if not set(m.ids) <= set(task_kinds.person_kinds()):
             continue  # "the printed report": an office service's product, read as before
-        if out[n + 1].start != m.end or m.start == 0:
+        k, at = n + 1, m.end
+        while k < len(out) - 1 and out[k].start == at and _describes(out[k], tokens):
+            k, at = k + 1, out[k].end  # "the signed publishing contract"
+        if out[k].kind != "item" or out[k].start != at or m.start == 0:
             continue
         before = tokens[m.start - 1]
         if before.word not in _DETERMINERS and not before.possessive:

@@ -54,6 +54,9 @@ _STANCE = tuple(tuple(p.split()) for p in english.entries("stance_phrases"))
 _THANKS = english.words("thanks_words")
 _RELAY = english.words("relay_verbs")
 _PRAISE = tuple(tuple(p.split()) for p in english.entries("praise_openers"))
+_APPROVAL_VERBS = english.words("approval_verbs")
+_APPROVAL_OBJECTS = english.words("approval_objects")
+_APPROVAL_DEGREE = english.words("approval_degree")
 _NOBODY = tuple(tuple(p.split()) for p in english.entries("prohibition_subjects"))
 _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
@@ -142,6 +145,7 @@ class Act:
     kind: Literal["question", "thanks", "wish", "withdrawal", "statement", "need"]
     question: QuestionKind | None = None
     relay: bool = False  # thanks to be passed on to someone else
+    approval: bool = False  # "Love it.": a reaction to what was said, no thanks to anyone
 
 
 # The titles said before a person's name ("Dr", "Mrs"), not the articles the titles list has.
@@ -164,6 +168,16 @@ def _left_at_someones_place(w: list[str]) -> bool:
         a in MEET_AT and (b in PLACE_PRONOUNS or b in _OWN) and c in PLACE_WORDS
         for a, b, c in zip(w, w[1:], w[2:], strict=False)
     )
+
+
+def _approval(w: list[str]) -> bool:
+    """ "love it", "I absolutely love this", "loving it so much": the whole piece is degree
+    words around one approving verb and its object ("it", "this"), nothing else."""
+    verbs = [n for n, x in enumerate(w) if x in _APPROVAL_VERBS]
+    if len(verbs) != 1 or verbs[0] + 1 >= len(w) or w[verbs[0] + 1] not in _APPROVAL_OBJECTS:
+        return False
+    rest = w[: verbs[0]] + w[verbs[0] + 2 :]
+    return all(x in _APPROVAL_DEGREE for x in rest)
 
 
 def content(words: list[str]) -> list[str]:
@@ -403,6 +417,8 @@ class SpeechActs:
 
     def thanks(self, words: list[str]) -> Act | None:
         w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        if _approval(w):
+            return Act("thanks", approval=True)  # "Love it.", "I really love this": nothing asked
         if self._asks_you(w):
             w = w[next(n for n, x in enumerate(w) if x in _YOU) + 1 :]  # "could you thank ..."
             asked = True

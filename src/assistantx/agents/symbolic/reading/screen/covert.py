@@ -30,7 +30,8 @@ _SPEAKER = frozenset({"me", "us", "i", "we", "anyone", "anybody"})
 _TELLING = frozenset({"without", "dont", "do"})  # the marks a speaker's "me"/"us" may follow
 
 
-def _kept_in_the_dark(words: list[str]) -> bool:
+def kept_in_the_dark(words: list[str]) -> bool:
+    """Whether ``words`` say the owner is to be kept in the dark (``covert_marks``)."""
     for n in range(len(words)):
         for mark in _COVERT:
             end = n + len(mark)
@@ -110,7 +111,7 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 "and I'll ask them. I did nothing."
             ),
         )
-    if not _kept_in_the_dark(piece.words):
+    if not kept_in_the_dark(piece.words):
         return None
     if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
         return None

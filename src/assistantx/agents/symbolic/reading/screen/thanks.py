@@ -1,5 +1,5 @@
 """Thanks: "thanks for the pen!", answered in words; thanks to pass on ("say thanks to Wang
-for the pen") is the requester's to give."""
+for the pen") is the requester's to give; approval ("Love it.") is answered in words too."""
 
 from __future__ import annotations
 
@@ -17,4 +17,6 @@ def thanks(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
         who = terms.office.person(people[0]).name if len(people) == 1 else "them"
         message = f"I only pass on messages as part of an errand, so please tell {who} yourself."
         return Finding("thanks", piece, "thanks to pass on, not a request", message=message)
+    if act.approval:  # "Love it.": a reaction to what was said
+        return Finding("thanks", piece, "approval, not a request", message="Glad you like it!")
     return Finding("thanks", piece, "thanks, not a request", message="You're welcome!")

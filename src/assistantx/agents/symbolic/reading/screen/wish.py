@@ -3,6 +3,7 @@ warmer": answered in words; nothing is moved."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.covert import kept_in_the_dark
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -18,6 +19,8 @@ def wish(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
         )
     if not piece.acts.wish:
         return None
+    if kept_in_the_dark(piece.words) and any(p is not piece and p.acts.request for p in msg.pieces):
+        return None  # "grab Pat's mug, nobody will know": a request kept from the owner
     things = terms.named(piece.lexed, "item")
     what = f"the {terms.office.item_type(things[0]).name}" if len(things) == 1 else "anything"
     return Finding(
