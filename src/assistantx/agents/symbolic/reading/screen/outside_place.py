@@ -171,13 +171,6 @@ def outside_place(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
         )
     if not asks or sends_out(terms, msg):
         return None
-    office_at = {
-        k
-        for m in piece.lexed.mentions
-        if m.kind in ("place", "facility", "person", "group")
-        for k in range(m.start, m.end)
-        if not m.possessive
-    }
     if not _outside_at(piece, office_at):
         return None
     return Finding(
