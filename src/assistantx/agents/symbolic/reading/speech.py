@@ -474,6 +474,8 @@ class SpeechActs:
                     or self._named(before)
                     or before.isdigit()
                     or before in ("one", "two", "and", "or", "the", "no")
+                    # "the new lights make the bay look bright": a plural subject's own verb
+                    or (before not in _YOU and language.is_plural_noun(before))
                 )
             ):
                 continue
@@ -626,6 +628,8 @@ class SpeechActs:
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
             if x in self.lex.items:
                 continue  # "Hu's scissors": an item of the office, never the verb
+            if _plural_subjects_verb(w, n):
+                return True  # "the new drills make a lot of noise": told of the drills
             if self._work_obliged(w, n):
                 return False  # "my banner has to be fireproofed": the work is needed
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
@@ -846,6 +850,29 @@ class SpeechActs:
                 return True
             k += 1
         return False
+
+
+# what opens a verb's object ("make *the* bay look bright", "make *a* lot of noise")
+_VERB_OBJECT_OPENERS = english.words("object_starts") | frozenset({"me", "us", "it", "them"})
+
+
+def _plural_subjects_verb(w: list[str], n: int) -> bool:
+    """Whether ``w[n]`` is a plain verb with its object after it, right after the plural
+    noun that ends a subject opened by a determiner ("the new lights make the bay ...",
+    "these drills make a lot ..."): a verb agreeing with it, told, not a command (which
+    opens with its verb); "the standards team need ..." is a compound noun's head."""
+    x, before = w[n], w[n - 1]
+    return (
+        n >= 2
+        and n + 1 < len(w)
+        and w[n + 1] in _VERB_OBJECT_OPENERS  # "make *the* bay": a verb and its object
+        and w[0] in _SUBJECTS
+        and x in language.verb_lemmas(x)
+        and x not in _MODALS | _AUX
+        and "AUX" not in language.lemmas(x)
+        and before not in _YOU
+        and language.is_plural_noun(before)
+    )
 
 
 def _asks_after_reason(w: list[str]) -> bool:
