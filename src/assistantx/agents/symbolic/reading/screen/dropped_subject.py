@@ -25,9 +25,8 @@ _JUST = re.compile(rf"{_OPENS}(just)\s+([a-z]+)\b", re.IGNORECASE)
 _ASKED_OF = english.words("request_askees") | english.words("subject_pronouns")
 # "drew a blank on the rota", "left my badge at home": a past form (never also the plain verb)
 # opening a clause, with its object's determiner after it
-_PAST = re.compile(
-    rf"{_OPENS}([a-z]+)\s+(?=(?:a|an|the|my|our|some|his|her|their)\b)", re.IGNORECASE
-)
+_OBJECT_STARTS = "|".join(sorted(english.words("object_starts")))
+_PAST = re.compile(rf"{_OPENS}([a-z]+)\s+(?=(?:{_OBJECT_STARTS})\b)", re.IGNORECASE)
 # "got a stapler?" asks for one (have got: possession), whatever its tense
 _ASKING_PASTS = frozenset({"got", "gotten"})
 

@@ -13,7 +13,7 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
-from assistantx.core import language
+from assistantx.core import english, language
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
 
@@ -279,7 +279,7 @@ def _named_before_pronoun(msg: Message) -> set[str]:
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").
-_OBJECT_OPENERS = frozenset({"this", "that", "these", "those", "the", "my", "our", "some"})
+_OBJECT_OPENERS = english.words("object_starts") | frozenset({"that"})
 
 
 def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
