@@ -46,7 +46,11 @@ from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.ranks import rank_titles
-from assistantx.core.receiving_place import names_receiving_place, pronoun_receiving_place
+from assistantx.core.receiving_place import (
+    Ahead,
+    names_receiving_place,
+    pronoun_receiving_place,
+)
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
 
@@ -251,13 +255,30 @@ def _said_alone_as_fix(words: list[_Word], n: int) -> bool:
     return any(said[len(said) - len(mark) :] == mark for mark in _CORRECTION_MARKS)
 
 
-def _before(words: list[_Word], at: int) -> str:
-    """The word before position ``at``, skipping titles and articles ("to Dr. Hal", "by the
-    manager")."""
+def _before_at(words: list[_Word], at: int) -> int:
+    """Where the word before position ``at`` is, skipping titles and articles ("to Dr. Hal",
+    "by the manager"); -1 where there is none."""
     k = at - 1
     while k >= 0 and (words[k].folded in _TITLES or words[k].folded in _ARTICLES):
         k -= 1
+    return k
+
+
+def _before(words: list[_Word], at: int) -> str:
+    """The word before position ``at``, skipping titles and articles."""
+    k = _before_at(words, at)
     return words[k].folded if k >= 0 else ""
+
+
+def _ahead(words: list[_Word], at: int) -> Ahead:
+    """The two words before the word before ``at``, within its sentence and phrase, as the
+    reader takes them: "the one" in "the one on Hal's desk" (where the item lies)."""
+    k = _before_at(words, at)
+    if k <= 0 or words[k].opens or words[k].after_pause:
+        return Ahead()
+    near = words[k - 1]
+    far = words[k - 2].folded if k >= 2 and not near.opens and not near.after_pause else ""
+    return Ahead(words=(far, near.folded) if far else (near.folded,), contracted=near.possessive)
 
 
 def _is_give(word: str, operations: frozenset[str]) -> bool:
@@ -280,7 +301,7 @@ def _receiving(
     before = _before(words, start)
     after = words[end].folded if end < len(words) else ""
     if possessive:  # "on Hal's desk": their place; "Hal's form": an owner
-        return names_receiving_place(before, after)
+        return names_receiving_place(before, after, _ahead(words, start))
     if before in _TO or before in _BY or _is_give(before, operations):
         return True
     if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
@@ -370,7 +391,9 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
     named -= refused
     for n, w in enumerate(words):
         after = words[n + 1].folded if n + 1 < len(words) else ""
-        at_place = pronoun_receiving_place(_before(words, n), w.folded, after)  # "at her desk"
+        at_place = pronoun_receiving_place(  # "at her desk", not "the one on her desk"
+            _before(words, n), w.folded, after, _ahead(words, n)
+        )
         if not at_place and (
             w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations)
         ):

@@ -7,6 +7,8 @@ names the rule it must reach, through the real parser on the default office.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from assistantx.agents.symbolic import InstructionParser
@@ -14,6 +16,7 @@ from assistantx.agents.symbolic.reading._kinds import KIND_RULES
 from assistantx.agents.symbolic.reading._parties import PERSON_RULES, PersonSite, person_rule
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.core.office import Office
+from assistantx.core.receiving_place import Ahead
 
 
 def _site(
@@ -38,6 +41,14 @@ _SIGN = Mention("cue", 3, 4, ("sign",))
 _ITEM = Mention("item", 3, 4, ("stapler",))
 
 PERSON_CASES = [
+    (
+        replace(_site("on", following=_DESK, possessive=True), ahead=Ahead(("the", "one"))),
+        "the one on Wang's desk, the book that's on Wang's desk: where it lies, the source",
+    ),
+    (
+        replace(_site("on", following=_DESK, possessive=True), ahead=Ahead(("leave", "one"))),
+        "at Wang's desk: met there",
+    ),
     (_site("at", following=_DESK, possessive=True), "at Wang's desk: met there"),
     (_site("from", following=_DESK, possessive=True), "from Wang's desk: the source"),
     (_site("", following=_DESK, possessive=True), "Wang's desk: named, no role yet"),

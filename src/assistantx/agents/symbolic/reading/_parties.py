@@ -20,10 +20,14 @@ from assistantx.agents.symbolic.reading.vocative import yours_addressed
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.receiving_place import (
+    MEET_AT,
     PLACE_WORDS,
+    Ahead,
+    lies_there,
     names_receiving_place,
     pronoun_receiving_place,
 )
+from assistantx.memory.names import TITLES
 
 _DATIVE_VERBS = english.words("dative_verbs")
 _OBJECT_PRONOUNS = english.words("object_pronouns")
@@ -113,6 +117,9 @@ class PersonSite:
     to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
     # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
     work_named: Mention | None = None
+    ahead: Ahead = field(
+        default_factory=Ahead
+    )  # the words before ``prev``: "the one" in "the one on Wang's desk"
 
     @property
     def at_place(self) -> bool:
@@ -148,8 +155,13 @@ class PersonRule:
 # Highest priority first; the first rule that applies gives the person's role.
 PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule(
+        "the one on Wang's desk, the book that's on Wang's desk: where it lies, the source",
+        lambda s: s.at_place and s.prev in MEET_AT and lies_there(s.ahead),
+        "source",
+    ),
+    PersonRule(
         "at Wang's desk: met there",
-        lambda s: s.at_place and names_receiving_place(s.prev, s.place),
+        lambda s: s.at_place and names_receiving_place(s.prev, s.place, s.ahead),
         "recipient",
     ),
     PersonRule("from Wang's desk: the source", lambda s: s.at_place and s.prev == "from", "source"),
@@ -232,10 +244,24 @@ def _next_item_start(ms: list[Mention], n: int, default: int) -> int:
     return next((x.start for x in ms[n + 1 :] if x.kind == "item"), default)
 
 
+def _ahead_of(tokens: Sequence[Token], start: int) -> Ahead:
+    """The two words before the one before token ``start`` (titles skipped), within its
+    sentence and phrase: "the", "one" in "the one on Dr Wang's desk"."""
+    k = start - 1
+    while k >= 0 and tokens[k].word in TITLES:
+        k -= 1
+    if k <= 0 or tokens[k].opens or tokens[k].after_pause:
+        return Ahead()
+    near = tokens[k - 1]
+    far = tokens[k - 2].word if k >= 2 and not near.opens and not near.after_pause else ""
+    return Ahead(words=(far, near.word) if far else (near.word,), contracted=near.possessive)
+
+
 def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
     m = ms[n]
     site = PersonSite(
         prev=prev_word(tokens, m.start),
+        ahead=_ahead_of(tokens, m.start),
         nxt=tokens[m.end].word if m.end < len(tokens) else "",
         following=ms[n + 1] if n + 1 < len(ms) else None,
         possessive=m.possessive,
@@ -495,7 +521,8 @@ def _asked_to_do_person_work(tokens: Sequence[Token], m: Mention) -> bool:
 def _at_their_place(tokens: Sequence[Token], m: Mention) -> bool:
     """ "at her desk", "in his office": a possessive pronoun naming a person's own place."""
     after = tokens[m.end].word if m.end < len(tokens) and not tokens[m.end].opens else ""
-    return pronoun_receiving_place(prev_word(tokens, m.start), tokens[m.start].word, after)
+    word, before = tokens[m.start].word, prev_word(tokens, m.start)
+    return pronoun_receiving_place(before, word, after, _ahead_of(tokens, m.start))
 
 
 def _article_between(tokens: Sequence[Token], a: Mention, b: Mention) -> bool:
