@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
+from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
@@ -750,7 +751,8 @@ class Lexicon:
         if made is not None:  # "print labels": the label run's product, not its verb
             return Mention("item", i, i + 1, (made,), t.possessive, t.text)
         if w in self.cue_words and (
-            self._noun_use(tokens, i)
+            idiom_at(tokens, i)  # "take care of it": handle it
+            or self._noun_use(tokens, i)
             or (event_noun(tokens, i, self.operation_words) and not self._work_asked(tokens, i))
         ):
             return Mention("word", i, i + 1, (w,), t.possessive, t.text)  # "the print run"
