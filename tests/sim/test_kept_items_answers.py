@@ -148,3 +148,72 @@ async def test_the_generators_verification_agrees_when_every_stapler_at_hand_is_
     away = [t for t in tasks if set(t.unavailable) >= {"kit", "bea"}]
     assert away and not any(t.achievable for t in away)
     await verify_tasks(office, tasks)  # raises DatasetError on a disagreement
+
+
+@functools.cache
+def deed_office() -> Office:
+    """Two seals: Cy's is kept in the safe Kit looks after (Cy guards it too), Bea keeps hers
+    at her desk; Ann has a deed to be sealed."""
+    desks = [("ann", "Ann Roe"), ("bea", "Bea Lund"), ("cy", "Cy Park"), ("kit", "Kit Moss")]
+    own_seal = {
+        "bea": [{"type": "seal"}],
+        "cy": [{"type": "seal", "at": "vault", "facility": "safe"}],
+    }
+    return parse_office(
+        {
+            "name": "deed office",
+            "locations": [
+                *(
+                    {"id": f"desk_{p}", "kind": "workstation", "name": f"{n}'s desk", "x": x}
+                    | {"y": 2.0}
+                    for x, (p, n) in zip((2.0, 6.0, 10.0, 14.0), desks, strict=True)
+                ),
+                {"id": "vault", "kind": "facility", "name": "Vault", "x": 8, "y": 9},
+            ],
+            "item_types": [
+                {"id": "seal", "name": "seal", "seals": True},
+                {"id": "document", "name": "deed", "kind": "personal", "signable": True},
+            ],
+            "people": [
+                {
+                    "id": p,
+                    "name": n,
+                    "location": f"desk_{p}",
+                    "handle": f"@{p}",
+                    "owns": [{"type": "document"}, *own_seal.get(p, [])],
+                }
+                for p, n in desks
+            ],
+            "facilities": [
+                {"id": "safe", "name": "safe", "location": "vault", "guards": ["kit", "cy"]},
+            ],
+            "groups": [{"id": "all", "name": "Everyone", "members": [p for p, _ in desks]}],
+            "robot": {"home": "vault"},
+        },
+        "deed office",
+    )
+
+
+def test_in_a_group_an_owner_whose_seal_is_kept_in_a_safe_does_not_offer_to_seal() -> None:
+    office = deed_office()
+    world = World.from_office(office)
+    question = "Could anyone stamp Ann Roe's deed with the seal?"
+    assert [r.person for r in group_replies(world, ["bea", "cy", "kit"], question)] == ["bea"]
+    role = Role(key="owner:seal", kind="owner", question="", item_type="seal")
+    assert {p for p in ("bea", "cy", "kit") if able(role, office, p)} == {"bea"}
+
+
+async def test_the_generators_verification_agrees_when_the_seal_at_hand_is_away() -> None:
+    # Bea away: the dry run finds no seal at hand, and the simulated Cy (whose seal is in the
+    # safe) no longer answers the group's call to stamp the deed
+    office = deed_office()
+    base = BaseInstruction(
+        id="s1",
+        requester="ann",
+        text="Could you get my deed stamped with the seal?",
+        parts=(Part(kind="seal"),),
+    )
+    tasks = every_task(office, base)
+    away = [t for t in tasks if "bea" in t.unavailable]
+    assert away and not any(t.achievable for t in away)
+    await verify_tasks(office, tasks)

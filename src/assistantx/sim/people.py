@@ -51,7 +51,12 @@ def can_do(world: World, person: str, request: str) -> bool:
         return True  # an office's own operation, also one named like a kind ("seal" a bag)
     if request in task_kinds.person_kinds():  # by hand: with its tool, if it needs one (seal)
         tool = task_kinds.tool_type(request, world.office)
-        return not task_kinds.needs_tool(request) or (tool is not None and world.owns(person, tool))
+        # a tool the office keeps in a safe or cupboard is not at hand to work with, by the
+        # oracle's rule (``oracle.plan.able``): the dataset generator's dry run and a group
+        # chat's volunteers must agree on who can do the work
+        return not task_kinds.needs_tool(request) or (
+            tool is not None and world.owns(person, tool) and kept_at(world, person, tool) is None
+        )
     if request == FILE_KIND:
         return any(
             world.office.item_type(o.type).kind == "electronic" for o in _owns(world, person)
