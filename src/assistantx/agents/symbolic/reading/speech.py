@@ -574,9 +574,11 @@ class SpeechActs:
         wants = any(a == "to" and b in self.lex.cue_words for a, b in itertools.pairwise(w))
         if wants and w[-1] != "myself" and (w[0] in _SUBJECT_VERB or w[0] in ("i", "we", "id")):
             return False  # "I'm hoping to borrow a ruler": the speaker's own want
+        if w[:2] in (["we", "will"], ["we", "ll"]):  # "we'll record the intro on the roof"
+            w = ["i", "will", *w[2:]]
         if w[0] in _SELF_PLANS or w[:2] == ["i", "will"]:
             return not (
-                len(w) > 1 and w[-1] != "myself" and set(w[1:3]) & _NEED
+                len(w) > 1 and w[-1] not in ("myself", "ourselves") and set(w[1:3]) & _NEED
             )  # "I'll get it myself"
         if w[0] in _SUBJECT_VERB:
             return not (len(w) > 1 and (w[1] in _NEED or w[1] in _WILLING))  # "I'm out of ..."

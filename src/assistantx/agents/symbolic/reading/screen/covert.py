@@ -9,7 +9,12 @@ A request to skip asking the owner ("grab his tape while he's at lunch, no need 
 Pat's seal, don't ask her") is declined the same way, saying their own yes is needed: only
 where the message asks for a colleague's thing ("Pat's", "his"), so "print my report, no need
 to ask" is read as before, and a colleague named after the mark is its owner ("don't ask
-Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before)."""
+Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before).
+
+Taken where the owner cannot see ("grab his mug while he's not looking", "when she isn't
+watching", "before he notices") is kept in the dark the same way; a colleague's thing asked
+for as a joke on them ("take Pat's mug to prank her", "... I want to wind him up") is declined
+only where a request of the message names a colleague's thing ("Pat's", "his")."""
 
 from __future__ import annotations
 
@@ -21,6 +26,14 @@ from assistantx.core import english
 
 _COVERT = tuple(tuple(entry.split()) for entry in english.entries("covert_marks"))
 _UNASKED = tuple(tuple(entry.split()) for entry in english.entries("unasked_marks"))
+_PRANKS = tuple(tuple(entry.split()) for entry in english.entries("prank_marks"))
+_WHILE = tuple(tuple(entry.split()) for entry in english.entries("while_openers"))
+_UNSEEN_SUBJECTS = tuple(
+    tuple(entry.split())
+    for key in ("while_subjects", "unseen_subjects")
+    for entry in english.entries(key)
+)
+_UNSEEN = tuple(tuple(entry.split()) for entry in english.entries("unseen_states"))
 # Whose thing, when it is not a name: a colleague's ("grab *his* tape")
 _THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
 
@@ -30,8 +43,43 @@ _SPEAKER = frozenset({"me", "us", "i", "we", "anyone", "anybody"})
 _TELLING = frozenset({"without", "dont", "do"})  # the marks a speaker's "me"/"us" may follow
 
 
+def _at(words: list[str], n: int, phrase: tuple[str, ...]) -> bool:
+    return tuple(words[n : n + len(phrase)]) == phrase
+
+
+def _unseen(words: list[str]) -> bool:
+    """Whether the words say, in a clause of their own, that the owner cannot see: "while
+    he's not looking", "when she isn't watching"."""
+    for n in range(len(words)):
+        for opener in _WHILE:
+            if not _at(words, n, opener):
+                continue
+            at = n + len(opener)
+            for subject in _UNSEEN_SUBJECTS:
+                if _at(words, at, subject) and any(
+                    _at(words, at + len(subject), state) for state in _UNSEEN
+                ):
+                    return True
+    return False
+
+
+def _pranked(msg: Message, requester: str) -> bool:
+    """Whether a piece of the message says a colleague's thing is asked for as a joke on
+    them (``prank_marks``), beside a request that names a colleague's thing."""
+    said = any(
+        _at(p.words, n, mark) for p in msg.pieces for n in range(len(p.words)) for mark in _PRANKS
+    )
+    if not said:
+        return False
+    owners, pronoun = _colleagues_things(msg, requester)
+    return bool(owners) or pronoun
+
+
 def kept_in_the_dark(words: list[str]) -> bool:
-    """Whether ``words`` say the owner is to be kept in the dark (``covert_marks``)."""
+    """Whether ``words`` say the owner is to be kept in the dark (``covert_marks``, or a
+    clause that says they cannot see: ``unseen_states``)."""
+    if _unseen(words):
+        return True
     for n in range(len(words)):
         for mark in _COVERT:
             end = n + len(mark)
@@ -111,7 +159,7 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 "and I'll ask them. I did nothing."
             ),
         )
-    if not kept_in_the_dark(piece.words):
+    if not (kept_in_the_dark(piece.words) or (asks and _pranked(msg, requester))):
         return None
     if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
         return None

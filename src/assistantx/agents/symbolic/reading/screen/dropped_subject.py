@@ -47,10 +47,16 @@ _NEED_COUNT = re.compile(
 )
 
 
+# "we'll record the intro on the roof": its words are "well record ...", where "well" is
+# an opener and the speaker's team is lost; "we 'll" keeps the subject as its own word (and
+# "'ll" as "I'll" has it, no "will" that asks as in "will you ...")
+_WE_WILL = re.compile(r"\b(we)['’]ll\b", re.IGNORECASE)
+
+
 def subject_restored(text: str) -> tuple[str, list[Evidence]]:
     """``text`` with "I" back before a clause that opens with "been", "can't" + a verb,
     "just" + a past form, a past form and its object ("drew a blank"), or (after a
-    request) "need" + a number."""
+    request) "need" + a number; "we'll" spelt "we 'll"."""
     found: list[Evidence] = []
 
     def been(match: re.Match[str]) -> str:
@@ -86,6 +92,11 @@ def subject_restored(text: str) -> tuple[str, list[Evidence]]:
         found.append(Evidence(words=match.group(0).strip(" ,.;"), meaning="I (the speaker) did"))
         return f"{match.group(1)}I {verb} "
 
+    def we_will(match: re.Match[str]) -> str:
+        found.append(Evidence(words=match.group(0), meaning="we will (the speaker's team)"))
+        return f"{match.group(1)} 'll"
+
+    text = _WE_WILL.sub(we_will, text)
     text = _PAST.sub(past, text)
     text = _BEEN.sub(been, text)
     text = _CANT.sub(cant, text)

@@ -106,7 +106,9 @@ def _errand_outside(terms: Terms, piece: Piece, office_at: set[int]) -> bool:
             # "the machine round the corner": a word of the office's own things before it
             if _at(words, n, locator) and not (n and words[n - 1] in terms.office_words):
                 outside.append(range(n, n + len(locator)))
-        if n == verb and any(_at(words, n, leaving) for leaving in _LEAVING):
+        if n == verb and any(
+            _at(words, n, leaving) and not _lacking(words, n + len(leaving)) for leaving in _LEAVING
+        ):
             outside.append(range(n, n + 1))
         if (
             words[n] in _OUTSIDERS
@@ -123,6 +125,12 @@ def _errand_outside(terms: Terms, piece: Piece, office_at: set[int]) -> bool:
         w for f in terms.office.facilities for w in split_words(f.name) if _sends(terms, f.id)
     }
     return not any(w in sending for k, w in enumerate(words) if k not in within)
+
+
+def _lacking(words: list[str], end: int) -> bool:
+    """ "run out *of* pens": a leaving verb's "out" and then "of" is a lack, no going out ("out
+    of the office" is a locator of its own)."""
+    return words[end - 1 : end + 1] == ["out", "of"]
 
 
 def _own_plan(terms: Terms, piece: Piece) -> bool:

@@ -1,5 +1,11 @@
 """Statement: "my laptop cable is too short", "I spilled my tea", "tea time soon": context
-beside a request, with the items and people it names for the rewrites."""
+beside a request, with the items and people it names for the rewrites.
+
+Told with no verb or subject the speech acts read: a remark on the day ("so misty today",
+``remark``), a thing's need for work nobody here does ("the holly needs watering",
+``unserved_need``), the speaker's own lack with no request ("out of pens at home, I'll grab
+some on my way back", ``own_lack``), and what is said to whoever owns a thing ("whoever's mug
+this is, take it home", ``told_to_whoever``)."""
 
 from __future__ import annotations
 
@@ -11,8 +17,10 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_t
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
+from assistantx.core.english import entries as english_entries
 from assistantx.core.english import words as english_words
 
 
@@ -29,6 +37,20 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return Finding("statement", piece, "an aside beside the request, context only")
     if not piece.asks and generic_explanation(terms, msg, piece):
         return Finding("statement", piece, "why the request is made, context only")
+    if told_to_whoever(msg, piece):
+        return Finding("statement", piece, "said to whoever owns the thing, context only")
+    if not piece.asks and remark(terms, piece):
+        return Finding("statement", piece, "a remark on the day, context only")
+    if not piece.asks and unserved_need(terms, piece):
+        return Finding("statement", piece, "a thing's need for work nobody here does, context only")
+    if not piece.asks and own_lack(terms, msg, piece):
+        return Finding("statement", piece, "the speaker's own lack, asking nothing")
+    if (
+        not piece.asks
+        and own_supply(piece.words)
+        and any(own_lack(terms, msg, p) for p in msg.pieces if p is not piece)
+    ):
+        return Finding("statement", piece, "the speaker's own plan to get more, context only")
     if piece.asks or not piece.acts.statement:
         return None
     named = (
@@ -326,3 +348,171 @@ def _whose_name(terms: Terms, person: Mention) -> str:
         return f"{terms.office.person(person.ids[0]).name}'s"
     said = person.text.strip()
     return said if said.lower().endswith(("'s", "’s")) else f"{said}'s"
+
+
+def _phrases(key: str) -> tuple[tuple[str, ...], ...]:
+    return tuple(tuple(entry.split()) for entry in english_entries(key))
+
+
+_LACKS = _phrases("lack_marks")
+_LACK_PLACES = _phrases("lack_place_openers")
+_HOMES = english_words("home_nouns")
+_HOME_DETERMINERS = frozenset({"my", "our", "the", "his", "her"})
+_SUPPLY_OPENERS = _phrases("own_supply_openers")
+_SUPPLY_VERBS = english_words("own_supply_verbs")
+
+
+def _said_at(words: Sequence[str], phrase: tuple[str, ...]) -> list[int]:
+    """Where ``phrase`` ends in ``words``, each time it is said."""
+    size = len(phrase)
+    return [n + size for n in range(len(words) - size + 1) if tuple(words[n : n + size]) == phrase]
+
+
+def _at_home(words: Sequence[str]) -> bool:
+    """ "at home", "in my flat", "back at the house": a place outside the office."""
+    for opener in _LACK_PLACES:
+        for end in _said_at(words, opener):
+            rest = words[end:]
+            if rest[:1] and rest[0] in _HOME_DETERMINERS:
+                rest = rest[1:]
+            if rest[:1] and rest[0] in _HOMES:
+                return True
+    return False
+
+
+def own_supply(words: Sequence[str]) -> bool:
+    """ "I'll grab some on my way back", "will buy more later": the speaker's own plan to
+    get more of something."""
+    w = [x for x in words if x not in ("just", "probably", "then", "also")]
+    return any(
+        tuple(w[: len(opener)]) == opener
+        and w[len(opener) : len(opener) + 1]
+        and w[len(opener)] in _SUPPLY_VERBS
+        for opener in _SUPPLY_OPENERS
+    )
+
+
+def own_lack(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "run out of pens at home haha, I'll grab some on my way back": a lack of a thing said
+    of a place outside the office, or beside the speaker's own plan to get more, with no
+    request anywhere in the message, is the speaker's news: nothing here lacks it, or they
+    will see to it themselves ("out of pens, can you bring me one?" asks)."""
+    if piece.acts.request or piece.acts.imperative or piece.acts.question is not None:
+        return False
+    if not any(m.kind == "item" for m in piece.lexed.mentions):
+        return False
+    words = piece.words
+    if not any(_said_at(words, lack) for lack in _LACKS) and not (
+        words[:1] == ["no"] and "left" in words
+    ):
+        return False
+    others = [p for p in msg.pieces if p is not piece]
+    plans = [p for p in others if own_supply(p.words)]
+    if any(
+        p.asks or p.acts.request or p.acts.imperative or p.acts.question is not None
+        for p in others
+        if p not in plans
+    ):
+        return False  # "out of pens at home, can you bring me one?": asked
+    return _at_home(words) or bool(plans)
+
+
+_DEGREES = english_words("remark_degrees")
+_REMARK_TAILS = english_words("remark_tails")
+
+
+def remark(terms: Terms, piece: Piece) -> bool:
+    """ "so foggy today", "such a sunny morning", "what a miserable day": a remark on the
+    weather or the day, with no verb: degree words, adjectives (a colleague's name that is
+    also one, "so misty today", is the adjective here), and words of the day. It names
+    nothing of the office and asks nothing."""
+    if piece.acts.request or piece.acts.imperative or piece.acts.question is not None:
+        return False
+    if any(
+        m.kind in ("item", "facility", "place", "self", "pronoun") for m in piece.lexed.mentions
+    ):
+        return False
+    words = content(piece.words)
+    n = 0
+    while n < len(words) and words[n] in _DEGREES:
+        n += 1
+    degrees = n
+    while n < len(words) and _adjective(terms, words[n]):
+        n += 1
+    adjectives = n - degrees
+    rest = words[n:]
+    if not adjectives or not all(w in _REMARK_TAILS for w in rest):
+        return False
+    return bool(degrees or rest)
+
+
+def _adjective(terms: Terms, word: str) -> bool:
+    read = language.lemmas(word)
+    return "ADJ" in read and word not in terms.lex.items and word not in terms.lex.cue_words
+
+
+_NEEDS = frozenset({"needs", "need"})
+_NEED_REACH = 7  # "the holly in the big pot by the door needs ...": the subject's words
+_SUBJECT_OPENERS = frozenset({"the", "this", "that", "these", "those", "our"})
+
+
+def unserved_need(terms: Terms, piece: Piece) -> bool:
+    """ "the holly by the door needs watering", "the fern needs to be repotted": a thing (no
+    person, no item of the office) said to need work that no errand, task or service of the
+    office does. It asks the robot nothing it could do, and it is no one's request for a
+    person ("Holly needs a stapler" names a colleague); work the office does ("the banner
+    needs laminating" where a laminator is offered) is read as before."""
+    if piece.acts.request or piece.acts.imperative or piece.acts.question is not None:
+        return False
+    tokens = piece.lexed.tokens
+    words = [t.word for t in tokens]
+    at = next((n for n, w in enumerate(words[:_NEED_REACH]) if w in _NEEDS), None)
+    if at is None or not at or words[0] not in _SUBJECT_OPENERS:
+        return False
+    if any(
+        m.kind in ("person", "item", "self", "facility") and m.start < at
+        for m in piece.lexed.mentions
+    ):
+        return False
+    after = words[at + 1 :]
+    if after[:2] == ["to", "be"] and after[2:3]:
+        verb = after[2]
+        if not language.is_past_participle(verb):
+            return False
+    elif after[:1] and after[0].endswith("ing") and _gerund(after[0]):
+        verb = after[0]
+    else:
+        return False
+    forms = {verb} | language.verb_lemmas(verb)
+    office = terms.lex.cue_words | terms.lex.operation_words | terms.service_verbs
+    return not forms & office
+
+
+def _gerund(word: str) -> bool:
+    """ "watering", "repotting" (a verb the dictionary may not know): a gerund, not a noun
+    such as "something" or "ceiling"."""
+    return bool(language.verb_lemmas(word)) or not language.lemmas(word)
+
+
+_WHOEVERS = frozenset({"whoevers", "whosever"})
+_TO_THE_ROBOT = frozenset({"you", "u", "robot"})
+
+
+def told_to_whoever(msg: Message, piece: Piece) -> bool:
+    """ "whoever's mug is on my desk, please come get it": after a sentence about whoever
+    owns a thing, a request that names nobody and nothing but "it" ("come get it", "take it
+    home") is said to that owner, not to the robot; "..., can you bring it to Zhang" asks
+    the robot and is read as before."""
+    if not (piece.acts.request or piece.acts.imperative):
+        return False
+    if not any(
+        content(p.words)[:1] and content(p.words)[0] in _WHOEVERS
+        for p in msg.pieces
+        if p.end <= piece.start
+    ):
+        return False
+    if set(piece.words) & _TO_THE_ROBOT:
+        return False
+    return not any(
+        m.kind in ("person", "self", "item", "facility", "place") for m in piece.lexed.mentions
+    )
