@@ -9,7 +9,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
-from assistantx.core import english
+from assistantx.core import english, wording
 from assistantx.core.task_schema import Hint
 
 _BACK = tuple(
@@ -26,6 +26,8 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
             return None
         k += 1
     if k < len(mentions) and mentions[k].kind == "self":
+        return own_item_fact(terms, msg, piece, requester)
+    if k == 0 and mentions and mentions[0].kind == "item":  # "stapler's broken"
         return own_item_fact(terms, msg, piece, requester)
     if k >= len(mentions) or mentions[k].kind != "person" or len(mentions[k].ids) != 1:
         return None
@@ -76,10 +78,15 @@ def _availability(piece: Piece, person: str, name: str, value: str) -> Finding:
 
 def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     """ "I can't find my stapler", "my stapler is broken": the requester's own item is out
-    of use (so they want someone else's), said as a fact, not a request."""
+    of use (so they want someone else's), said as a fact, not a request. Chat drops the
+    "my" ("stapler's broken", "controller is dead"): a bare item opening the piece with its
+    condition is the requester's own where they have one, else told as context; either way
+    it asks for nothing by itself."""
     tokens = piece.lexed.tokens
     words = [t.word for t in tokens]
     items = [m for m in piece.lexed.mentions if m.kind == "item"]
+    if len(items) == 1 and items[0].start == 0:
+        return _bare_item_fact(terms, piece, items[0].ids[0], words[items[0].end :], requester)
     if len(items) != 1 or items[0].start == 0 or words[items[0].start - 1] != "my":
         return None
     before, after = words[: items[0].start - 1], words[items[0].end :]
@@ -97,7 +104,27 @@ def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
         kind="condition", person=requester, value="missing", item_type=item, said=piece.text
     )
     thing = terms.office.item_type(item).name
-    return Finding("fact", piece, f"a fact: the requester's {thing} is out of use", hint)
+    return Finding("fact", piece, f"a fact: your {thing} {wording.is_are(thing)} out of use", hint)
+
+
+def _bare_item_fact(
+    terms: Terms, piece: Piece, item: str, after: list[str], requester: str
+) -> Finding | None:
+    """ "stapler is broken" (a bare item, its copula and a condition, nothing more asked)."""
+    acts = piece.acts
+    if piece.asks or acts.request or acts.imperative or acts.question is not None:
+        return None
+    copula = next((c for c in terms.en.copulas if starts_with(after, 0, c)), None)
+    if copula is None or not any(starts_with(after, len(copula), c) for c in terms.en.conditions):
+        return None
+    thing = terms.office.item_type(item).name
+    if requester not in terms.office.owners_of(item):
+        said = f"a statement: the {thing} {wording.is_are(thing)} out of use"
+        return Finding("statement", piece, said)
+    hint = Hint(
+        kind="condition", person=requester, value="missing", item_type=item, said=piece.text
+    )
+    return Finding("fact", piece, f"a fact: your {thing} {wording.is_are(thing)} out of use", hint)
 
 
 def back_when(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:

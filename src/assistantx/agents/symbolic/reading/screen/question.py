@@ -76,6 +76,7 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
     asked = [p for p in terms.named(piece.lexed, "person") if p != requester]
     names = [terms.office.person(o).name for o in owners[:4]]
     makers = [f for f in terms.office.facilities if item in f.products]
+    supplier = terms.office.supplier(item)
     whose = ""
     a_thing = wording.a_thing(t.name, mass=t.mass)  # "some gloves"
     if says_mine(piece.lexed, item):  # "did anyone find my umbrella?"
@@ -90,6 +91,10 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
     elif makers:
         where = terms.office.location(makers[0].location).name
         answer = f"The {makers[0].name} at the {where} makes them."
+    elif supplier is not None:  # "any AAs going spare?": the cupboard's, anyone's to have
+        some = a_thing.startswith("some ")
+        there = f"There are {t.name}" if some else f"There is {a_thing}"
+        answer = f"{there} in the {supplier.name}."
     elif names:
         has = "has" if len(names) == 1 else "have"
         answer = f"As far as I know, {listed(names)} {has} {a_thing}."
@@ -105,7 +110,7 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
         message = f"{answer} Tell me when you need it and I'll {verb} you one then."
         meaning = "a question about a later need, answered"
         return Finding("question", piece, meaning, message=message)
-    shall = f"Shall I {verb} you one?"
+    shall = f"Shall I {verb} you {'some' if a_thing.startswith('some ') else 'one'}?"
     return Finding(
         "question",
         piece,
