@@ -377,6 +377,10 @@ class TaskReader:
         seal = office.seal_tool()
         self.tool_owners = frozenset(office.owners_of(seal) if seal else ())
 
+    def made_from_nothing(self, item: str) -> bool:
+        """Whether ``item`` is what a service makes from nothing (a coffee, a tea)."""
+        return any(o.product == item and o.input is None for o in self.office.operations)
+
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
 
