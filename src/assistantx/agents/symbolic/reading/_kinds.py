@@ -377,6 +377,10 @@ class TaskReader:
         seal = office.seal_tool()
         self.tool_owners = frozenset(office.owners_of(seal) if seal else ())
 
+    def made_from_nothing(self, item: str) -> bool:
+        """Whether ``item`` is what a service makes from nothing (a coffee, a tea)."""
+        return any(o.product == item and o.input is None for o in self.office.operations)
+
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
 
@@ -677,6 +681,7 @@ class TaskReader:
                 ][:1]
         # every object of the verb is a task of its own: "a stapler and a coffee"
         objects = [m for m in items if m in s.files or m in physical or m in s.products]
+        objects = _ones_again(s, objects)
         tasks: list[Task] = []
         for k, m in enumerate(objects):
             to = s.recipient if len(objects) == 1 else recipient_of(objects, k, roles, s.recipient)
@@ -712,6 +717,23 @@ class TaskReader:
             elif "recipient" not in update and task.recipient == requester:
                 update["recipient"] = who
         return task.model_copy(update=update) if update else task
+
+
+def _ones_again(s: Scene, objects: list[Mention]) -> list[Mention]:
+    """ "a tea for me and one for Sun Li", "bring me a stapler and one for Wang": "one" after
+    an object, with whom it is for said right after it, is another of that object, for that
+    person; each is a task of its own. A "one" with nobody named after it is read as
+    before."""
+    out = list(objects)
+    for m in s.clause.mentions:
+        if m.kind != "word" or m.ids[0] != "one" or m.start in s.clause.modifiers:
+            continue
+        before = [o for o in out if o.end <= m.start]
+        after = min((o.start for o in out if o.start > m.start), default=1 << 30)
+        if not before or s.roles.recipient_between(m.end, after) is None:
+            continue
+        out.append(Mention("item", m.start, m.end, before[-1].ids, False, m.text))
+    return sorted(out, key=lambda o: o.start)
 
 
 def product_of_shape(office: Office, shape: OperationShape) -> str | None:

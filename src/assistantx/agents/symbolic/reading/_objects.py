@@ -151,11 +151,37 @@ def _time_phrase(tokens: Sequence[Token], m: Mention) -> bool:
     return m.start > 0 and tokens[m.start - 1].word in TIME_PREPOSITIONS
 
 
+# Plain words that may describe the item between its determiner and it ("for the *grant*
+# report", "for my *quarterly* report")
+_DESCRIBING_WORDS = 2
+
+
 def _modifier_phrase(tokens: Sequence[Token], m: Mention) -> bool:
+    """ "a mug for my coffee", "paper for the grant report": the item after a modifying
+    preposition, past its determiner or possessive and up to two describing words after
+    that determiner (never bare words: "for Zhang Wei's" is a person's)."""
     k = m.start - 1
+    j = k
+    while j >= 0 and k - j < _DESCRIBING_WORDS and _describing(tokens[j]):
+        j -= 1
+    if j < k and j >= 0 and (tokens[j].word in DETERMINERS or tokens[j].possessive):
+        k = j  # "the grant report": the determiner before the describing words
     while k >= 0 and (tokens[k].word in DETERMINERS or tokens[k].possessive):
         k -= 1
     return k >= 0 and tokens[k].word in MODIFIER_PREPOSITIONS
+
+
+def _describing(token: Token) -> bool:
+    """A plain word that may stand between an item's determiner and the item."""
+    word = token.word
+    return (
+        word.isalpha()
+        and not token.possessive
+        and not token.after_pause
+        and word not in DETERMINERS
+        and word not in MODIFIER_PREPOSITIONS
+        and word not in TIME_PREPOSITIONS
+    )
 
 
 def _container(

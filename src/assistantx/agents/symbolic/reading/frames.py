@@ -56,6 +56,12 @@ from assistantx.core.wording import file_noun
 _BREAK_WORDS = english.words("clause_breaks")
 _JOIN_WORDS = english.words("clause_joins")
 _SKIP_AFTER_JOIN = english.words("skip_after_join")
+# the requester as the subject of a wish ("I'd like", "I want"), and the wish's verbs
+_SUBJECT_SELF = english.words("self_subjects")
+_WISH_VERBS = english.words("wish_verbs")
+_IN_ADDITION = english.words("in_addition")
+# the cues of a clause that hands things over, whose coordinated objects are its own
+_HANDING_CUES = frozenset({"give", "make", "send"})
 
 
 NOT_UNDERSTOOD = (
@@ -286,7 +292,11 @@ class FrameReader:
             ended = "".join(gaps[since : m.start + 1])
             hard = (any(c in ended for c in ".!?;") or spaced_dash) and bool(clauses[-1].mentions)
             soft = bool(aside) or (
-                (joined or "," in gap) and self._starts_request(mentions, after_join, tokens)
+                (joined or "," in gap)
+                and (
+                    self._starts_request(mentions, after_join, tokens)
+                    or self._made_beside(clauses[-1], mentions, after_join, tokens)
+                )
             )
             if (hard or soft) and clauses[-1].mentions:
                 clauses.append(Clause([]))
@@ -315,6 +325,39 @@ class FrameReader:
             mentions[n].kind == "cue"
             or asks_someone_to_work(mentions, n, tokens)
             or hands_across(mentions, n, tokens)
+        )
+
+    def _made_beside(
+        self, current: Clause, mentions: Sequence[Mention], n: int, tokens: Sequence[Token]
+    ) -> bool:
+        """ "print my slides, and I'd like a cappuccino too", "..., and a tea for me too":
+        after a request for work on an item (a print, a copy, a seal), the requester's own
+        wish with its object ("I'd like", "I want") or a thing a service makes from nothing
+        said to be wanted besides ("too", "as well") opens a request of its own: the work
+        cannot act on a drink. A clause that hands things over ("bring me the stapler and a
+        coffee") keeps its coordinated objects, and whom they go to."""
+        cues = {k for m in current.mentions if m.kind == "cue" for k in m.ids}
+        if not cues or cues & _HANDING_CUES:
+            return False
+        while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
+            n += 1
+        if n >= len(mentions):
+            return False
+        first = mentions[n]
+        if first.kind == "self" and tokens[first.start].word in _SUBJECT_SELF:
+            k = n + 1  # "I would also like": past the modal and "also"
+            while k < len(mentions) and tokens[mentions[k].start].word in _SKIP_AFTER_JOIN:
+                k += 1
+            return (
+                k + 1 < len(mentions)
+                and mentions[k].kind == "cue"
+                and tokens[mentions[k].start].word in _WISH_VERBS
+                and mentions[k + 1].kind == "item"
+            )
+        return (
+            first.kind == "item"
+            and self.reader.made_from_nothing(first.id)
+            and _said_in_addition(tokens, first.end)
         )
 
     # -- checks ----------------------------------------------------------------------------
@@ -556,6 +599,19 @@ def holder(lexed: Lexed, requester: str) -> str | None:
         if m.kind == "person" and m.possessive and len(m.ids) == 1 and nxt in _PLACE_WORDS:
             return m.ids[0]  # "it's on Bill's desk"
     return None
+
+
+def _said_in_addition(tokens: Sequence[Token], at: int) -> bool:
+    """Whether the phrase from token ``at`` to its pause says it is asked for besides ("a
+    coffee for me *too*", "a tea *as well*"): without it, "print my document and a visitor
+    pass" may ask for the pass printed, and is asked about."""
+    words: list[str] = []
+    for t in tokens[at:]:
+        if words and (t.after_pause or t.word in _JOIN_WORDS):
+            break
+        words.append(t.word)
+    pairs = {" ".join(words[k : k + 2]) for k in range(len(words) - 1)}
+    return bool((set(words) | pairs) & _IN_ADDITION)
 
 
 def _rejected_items(readings: Readings) -> set[str]:
