@@ -168,6 +168,31 @@ def _tool_used(s: Scene) -> bool:
     return False
 
 
+def _tool_handed(s: Scene) -> bool:
+    """Whether the stamping tool itself is what the clause hands to a colleague who does not
+    own it ("take my seal to Sun Li, she needs to stamp the agreements", "lend Sun my seal"):
+    the tool is lent for that person's own work, so it is moved, and no paper of the
+    requester's is stamped. It is the object of a verb of passing on (only possessives or the
+    one it goes to between them), and that person is among the clause's recipients."""
+    if s.seal_tool is None:
+        return False
+    mentions = s.clause.mentions
+    for n, m in enumerate(mentions):
+        if m.kind != "item" or m.id != s.seal_tool:
+            continue
+        k = n - 1
+        while k >= 0 and (
+            mentions[k].possessive or (mentions[k].kind == "person" and len(mentions[k].ids) == 1)
+        ):
+            k -= 1  # "lend *Sun Li* *my* seal"
+        if k < 0 or mentions[k].kind != "cue" or "give" not in mentions[k].ids:
+            continue
+        owner = s.owner(m) or s.requester
+        if any(p != owner and p != s.requester for p in s.roles.recipient):
+            return True
+    return False
+
+
 def _verb_position(mentions: list[Mention], n: int) -> bool:
     """Whether a service word is the clause's verb, with its object after it ("stamp my
     lease", "please emboss it", "have Ines stamp my lease"), not a noun ("bring me the
@@ -316,10 +341,12 @@ KIND_RULES: tuple[KindRule, ...] = (
         _sign,
     ),
     KindRule(
-        "a seal on a document (the seal named or asked for)",
+        "a seal on a document (the seal named or asked for), unless the tool itself is "
+        "handed to a colleague for their own work",
         lambda s: (
             ("seal" in s.cues or bool(_seal_items(s)))
             and (s.doc is not None or (s.signable is not None and _tool_used(s)))
+            and not _tool_handed(s)
         ),
         _seal,
     ),

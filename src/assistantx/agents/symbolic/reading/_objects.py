@@ -40,6 +40,9 @@ DETERMINERS = english.words("determiners")
 # Conjunctions that open a reason clause: what it names explains the request, never joins it.
 REASON_CONJUNCTIONS = english.words("reason_conjunctions")
 STATE_VERBS = english.words("state_verbs")
+# The verbs of everyday services, some of them nouns the dictionary has no verb for ("to
+# courier"): after "to", a purpose, never a place.
+_SERVICE_VERBS = english.words("service_verbs")
 # The words before a file type that name a product's format ("to PDF", "into a PDF").
 _FORMAT_LINKS = frozenset({"to", "into", "as"})
 _ARTICLES = frozenset({"a", "an", "another"})
@@ -132,7 +135,13 @@ def _purpose(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bo
     if nxt.kind == "word":
         # "to Hartwell & Co": a capitalized word that is no verb names a place, not a purpose
         named = nxt.text[:1].isupper() and not language.verb_lemmas(nxt.ids[0])
-        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit() and not named
+        # "to microbiology by the tube": a noun that is never a verb names a place
+        place = (
+            not language.verb_lemmas(nxt.ids[0])
+            and nxt.ids[0] not in _SERVICE_VERBS
+            and language.is_noun(nxt.ids[0])
+        )
+        return nxt.ids[0] not in DETERMINERS and not nxt.ids[0].isdigit() and not (named or place)
     if nxt.kind == "cue":
         return any(m.kind == "item" for m in mentions[n + 2 :])
     return False

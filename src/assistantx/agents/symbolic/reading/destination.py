@@ -29,8 +29,9 @@ _PERSONS = frozenset({"i", "im", "we", "you", "he", "she", "they", "me", "us", "
 # Words of going or sending before a statement's destination ("needs to go out *to* ...").
 _GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
 # The words that name a service as the means of sending ("send it to the council *by* courier",
-# "go out to the plant *with the* courier"), an article or "our" between them and the service.
-_MEANS = frozenset({"by", "via", "with"})
+# "go out to the plant *with the* courier", "off to the lab *on the* tube"), an article or "our"
+# between them and the service.
+_MEANS = frozenset({"by", "via", "with", "on"})
 _MEANS_ARTICLES = frozenset({"the", "a", "our", "your"})
 # A join that opens the request's next clause of handing or telling ("to the client *and let*
 # me know", "*and then bring* me the camera"), not a firm's name ("Smith and Sons"); a verb of

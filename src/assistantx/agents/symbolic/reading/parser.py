@@ -54,6 +54,11 @@ from assistantx.agents.symbolic.reading.antecedent import (
     unanchored_it,
     with_antecedent,
 )
+from assistantx.agents.symbolic.reading.doubted_person import (
+    chosen_of_two,
+    doubted_recipient,
+    either_doer,
+)
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     FrameReader,
@@ -239,6 +244,11 @@ class InstructionParser:
             # "print my file? it's Fern who needs the hard copy, not me": for Fern
             frame = for_needer(frame, needer(whole, requester, self.lex.name_words))
             frame = declined_use_up(self.office, frame)
+            # "Mao or Sun can do it": either stamps it, and it comes back to the requester
+            frame = frame.model_copy(update={"tasks": either_doer(whole, frame.tasks, requester)})
+            doubted = doubted_recipient(self.office, whole, frame.tasks, requester)
+            if doubted is not None:  # "to Wei... or was it Wang?": whom is asked
+                return TaskFrame(requester=requester, question=doubted)
             unread = unread_part(self.office, readings, frame) if frame.understood else None
             if unread is not None:  # a part no task carries: asked, never dropped
                 frame = TaskFrame(requester=requester, question=unread)
@@ -401,6 +411,10 @@ class InstructionParser:
                 meant = self.parse(with_work(text, answer), requester)
                 if meant.understood:
                     text, frame = with_work(text, answer), meant
+                continue
+            one = chosen_of_two(self.lex, text, frame.question or "", answer)
+            if one is not None:  # "Who should get your pen: Wei Na or Wang Fang?" "Wang"
+                text, frame = one, self.parse(one, requester)
                 continue
             owned = with_owner(self.lex, text, frame.question or "", answer)
             if owned is not None:  # "Several colleagues have a tray: whose ...?" "Bruno's"
