@@ -44,6 +44,8 @@ def rewrite(
     text = name_pronouns(terms, msg, text, hints, subjects - holder, holder)
     text, found = dangling_possessives(terms, msg, text)
     evidence += found
+    text, found = products_said_before(terms, text)
+    evidence += found
     said = [
         f"{h.item_type}|"
         for h in hints
@@ -217,6 +219,44 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
+
+
+# "we need a new label, can you print one": "one" after the verb of a service (and whom it
+# is for) stands for the one product named before it, not for a second thing
+_ONE_MADE = re.compile(
+    r"\b(?P<verb>[a-z]+)(?P<whom>\s+(?:me|us))?\s+(?P<one>one|some)\b(?!\s+(?:of|more|else)\b)",
+    re.IGNORECASE,
+)
+
+
+def products_said_before(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
+    """ "we need a new label for bed 4, can u print one": the "one" a service's verb makes is
+    the office's product named before it (one kind of product named, and no other item), so
+    the verb asks for that product rather than for a second thing of its own (the requester's
+    file printed). Any other "one" is left as it was."""
+    office = terms.office
+    verbs = {normalize(v).split()[0] for op in office.operations for v in op.verbs if v.strip()}
+    evidence: list[Evidence] = []
+
+    def one(match: re.Match[str]) -> str:
+        if match.group("verb").lower() not in verbs:
+            return match.group(0)
+        named = {
+            i
+            for m in terms.lex.read(text[: match.start()]).mentions
+            if m.kind == "item"
+            for i in m.ids
+        }
+        if len(named) != 1:
+            return match.group(0)
+        made = office.item_type(next(iter(named)))
+        if made.kind != "product" or not any(op.product == made.id for op in office.operations):
+            return match.group(0)
+        said = f"{match.group('verb')}{match.group('whom') or ''} a {made.name}"
+        evidence.append(Evidence(words=match.group(0), meaning=said))
+        return said
+
+    return _ONE_MADE.sub(one, text), evidence
 
 
 # "for the afternoon", "for an hour", "for a few minutes": how long, never a purpose
