@@ -44,6 +44,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_nouns,
     read_as_verbs,
 )
+from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
@@ -406,6 +407,8 @@ class Lexicon:
             tokenize(text), self._one_word_names, self._item_openers, self._owned_openers
         )
         raw = read_held_copies(raw)  # "Kenji's copy of the contract": Kenji's contract
+        # "the note I just saved": the speaker's own, as "my note"
+        raw = read_own_made(raw, self._one_word_names.__contains__)
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer

@@ -140,7 +140,9 @@ class OwnPapers:
             meant = self.papers[0] if len(self.papers) == 1 else None
             if not self.papers and self.file_type is not None:
                 sentence = _sentence(tokens, mentions[k].start)
-                if {t.word for t in sentence} & _SENDING:
+                # "email my memo", "print my draft": a paper noun sent on, or the object of
+                # a verb whose input is a file, is the requester's file
+                if {t.word for t in sentence} & _SENDING or _file_verb(tokens, mentions[k].start):
                     meant = self.file_type
             if meant is not None:
                 found[k] = meant

@@ -169,6 +169,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
             continue
         if before == "for" and _colleague_receives(msg):
             continue  # "print my quote for the juke customer and give it to Robin": about
+        if before == "for" and _requester_receives(msg):
+            continue  # "a label for the man in bed 4, print one and bring it here": about
 
         if before == "to" and in_later_event(tokens, start):
             continue  # "stamp it before it goes to the client": when, not whom it goes to
@@ -216,6 +218,33 @@ def _colleague_receives(msg: Message) -> bool:
         and (tokens[m.start - 1].word == "to" or tokens[m.start - 1].word in _GIVING)
         for m in msg.lexed.mentions
     )
+
+
+# what a handing verb's thing goes to when it comes back to the speaker: "bring it here",
+# "drop it over to me", "give me one"
+_TO_SPEAKER = frozenset({"here", "me", "us"})
+_HANDED_WITHIN = 4  # "bring it back over here": the words between the verb and where
+
+
+def _requester_receives(msg: Message) -> bool:
+    """Whether the message hands its thing to the requester ("... and bring it here", "give
+    it to me", "bring me one"): a "for the man in bed 4" beside it says whom the thing is
+    for, not whom it goes to; the requester passes it on."""
+    tokens = msg.lexed.tokens
+    for n, t in enumerate(tokens):
+        if t.word not in _GIVING:
+            continue
+        for k in range(n + 1, min(len(tokens), n + 1 + _HANDED_WITHIN)):
+            if tokens[k].opens:
+                break
+            if tokens[k].word in _TO_SPEAKER:
+                return True
+            if tokens[k].word in _TO:
+                # "bring it to me" is the speaker; "to Robin", "for the man" someone else
+                if k + 1 < len(tokens) and tokens[k + 1].word in _TO_SPEAKER:
+                    return True
+                break
+    return False
 
 
 def _item_at(mentions: Sequence[Mention], at: int) -> bool:

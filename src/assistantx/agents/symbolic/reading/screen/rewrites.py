@@ -13,6 +13,8 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
+from assistantx.agents.symbolic.reading.tokens import gaps
+from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.core import english, language
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
@@ -41,6 +43,8 @@ def rewrite(
     holder = _holder_of_last(terms, subjects | said_of, context, held)
     text = name_pronouns(terms, msg, text, hints, subjects - holder, holder)
     text, found = dangling_possessives(terms, msg, text)
+    evidence += found
+    text, found = products_said_before(terms, text)
     evidence += found
     said = [
         f"{h.item_type}|"
@@ -173,30 +177,96 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
                 return terms.office.item_type(items[-1].ids[0]).name
         return None
 
+    # "Zoe, mind if I borrow yours?": "yours" is the addressed colleague's, as "your ruler"
+    # is there (reading/vocative.py); said to nobody in particular it is left as it was
+    lexed = msg.lexed
+    addressed = addressed_person(lexed.tokens, lexed.mentions, gaps(lexed.text, lexed.tokens))
+    pronouns = {"mine": "my", **({"yours": "your"} if addressed is not None else {})}
+
     def whole(match: re.Match[str]) -> str:
         word = match.group(1)
         owner = re.sub(r"['’]s$", "", word)
-        if word.lower() != "mine" and not terms.is_person_word(owner):
+        pronoun = pronouns.get(word.lower())
+        if word.lower() in ("mine", "yours") and pronoun is None:
             return word
-        if word.lower() == "mine" and _subject(text[match.end() :]):
+        if pronoun is None and not terms.is_person_word(owner):
+            return word
+        if pronoun is not None and _subject(text[match.end() :]):
             return word  # "mine ran out in June": what it says of mine, not an object
         thing = last_item(text[: match.start()])
         if thing is None:
             return word
-        said = f"my {thing}" if word.lower() == "mine" else f"{word} {thing}"
+        said = f"{pronoun} {thing}" if pronoun is not None else f"{word} {thing}"
         evidence.append(Evidence(words=word, meaning=said))
         return said
 
     # "mine" is never followed by its noun, so wherever it stands ("take mine down to Hattie
     # in repro", with "her" already named back) it is the requester's own item of the kind
     # named last; "Rich's" is a possessive only where no noun can follow it
+    # ... and so is one followed by how long it is had ("borrow Zoe's for the afternoon"):
+    # how long is no thing to get, so it is read away after a colleague's possessive
+    spans = re.compile(rf"\b(\w+['’]s)\s+{_SPAN}\b(?!\s*['’]s)", re.IGNORECASE)
+    text = spans.sub(
+        lambda m: (
+            m.group(1) if terms.is_person_word(re.sub(r"['’]s$", "", m.group(1))) else m.group(0)
+        ),
+        text,
+    )
     pattern = re.compile(
-        r"(?<!\bof\s)\b(mine\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
+        r"(?<!\bof\s)\b(mine\b|yours\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
         r"and|or|for now|for a bit|for today|(?:(?:down|up|over|round|across)\s+)?(?:for|to) "
         r"(?:me|us|him|her|them)|back|over)\b)))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
+
+
+# "we need a new label, can you print one": "one" after the verb of a service (and whom it
+# is for) stands for the one product named before it, not for a second thing
+_ONE_MADE = re.compile(
+    r"\b(?P<verb>[a-z]+)(?P<whom>\s+(?:me|us))?\s+(?P<one>one|some)\b(?!\s+(?:of|more|else)\b)",
+    re.IGNORECASE,
+)
+
+
+def products_said_before(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
+    """ "we need a new label for bed 4, can u print one": the "one" a service's verb makes is
+    the office's product named before it (one kind of product named, and no other item), so
+    the verb asks for that product rather than for a second thing of its own (the requester's
+    file printed). Any other "one" is left as it was."""
+    office = terms.office
+    verbs = {normalize(v).split()[0] for op in office.operations for v in op.verbs if v.strip()}
+    evidence: list[Evidence] = []
+
+    def one(match: re.Match[str]) -> str:
+        if match.group("verb").lower() not in verbs:
+            return match.group(0)
+        named = {
+            i
+            for m in terms.lex.read(text[: match.start()]).mentions
+            if m.kind == "item"
+            for i in m.ids
+        }
+        if len(named) != 1:
+            return match.group(0)
+        made = office.item_type(next(iter(named)))
+        if made.kind != "product" or not any(op.product == made.id for op in office.operations):
+            return match.group(0)
+        said = f"{match.group('verb')}{match.group('whom') or ''} a {made.name}"
+        evidence.append(Evidence(words=match.group(0), meaning=said))
+        return said
+
+    return _ONE_MADE.sub(one, text), evidence
+
+
+# "for the afternoon", "for an hour", "for a few minutes": how long, never a purpose
+_SPAN = (
+    r"for\s+(?:(?:"
+    + "|".join(sorted(english.words("span_fillers")))
+    + r")\s+){0,4}(?:"
+    + "|".join(sorted(english.words("span_words"), key=len, reverse=True))
+    + ")"
+)
 
 
 # what follows a subject: "mine's broken", "mine is", "mine ran out"; "mine" may stand for
