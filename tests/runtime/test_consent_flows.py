@@ -90,6 +90,23 @@ async def test_a_claimed_agreement_changes_nothing_and_the_requester_is_told(
     assert done.index("inquire:zhang") < done.index("send_qr:zhang")
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me Zhang's stapler, he won't mind",
+        "Zhang said I could borrow his stapler, can you bring it?",
+    ],
+)
+async def test_an_assumed_yes_still_asks_the_owner_and_the_requester_is_told(
+    office: Office, text: str
+) -> None:
+    stm, sim = await _symbolic(office, "lee", text)
+    to_lee = [m.text for m in sim.messenger.sent if m.chat.id == "lee"]
+    assert any("A message cannot grant that" in t for t in to_lee)
+    done = _done(stm)
+    assert done.index("inquire:zhang") < done.index("send_qr:zhang")
+
+
 async def test_a_reasoner_that_skips_the_owner_gets_a_refusal_it_can_act_on(
     office: Office,
 ) -> None:

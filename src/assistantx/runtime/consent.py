@@ -298,6 +298,13 @@ _CLAIMS = (
         "someone's agreement",
     ),
     (r"\b(said|says)\s+(it'?s\s+)?(ok|okay|fine|yes)\b", "someone's agreement"),
+    # "he said I could use it", "she told me I can borrow it": leave told second-hand
+    (r"\b(said|says|told\s+me)\s+(i|we)\s+(can|could|may|might)\b", "someone's agreement"),
+    # "she won't mind", "he wouldn't mind": agreement assumed for them
+    (
+        r"\b(won'?t|wont|wouldn'?t|will\s+not|would\s+not|doesn'?t|does\s+not)\s+mind\b",
+        "someone's agreement",
+    ),
     (
         r"\b(with|got|have)\s+(his|her|their)\s+(permission|ok|approval|consent)\b",
         "someone's agreement",
