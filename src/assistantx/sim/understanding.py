@@ -132,7 +132,10 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
     }
     haystack = _without_things(original, things, products, phrases)
     haystack = _means_left_out(office, words, haystack)
-    rest = original  # the office's words are used up as they are read
+    # the office's words are used up as they are read; a thing whose name holds a word of
+    # work by hand ("date stamp", "signature pad") is taken out first, so lending it is no
+    # request to seal or sign (a one-word name stays: "stamp my form" asks for the work)
+    rest = _without_things(original, [n for n in things if " " in n], set(), phrases)
     # the longest phrase first, whichever operation's: "3d print" is the 3D printer's, not
     # the plotter's "print" inside it
     office_forms = sorted(
