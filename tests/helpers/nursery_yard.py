@@ -42,7 +42,7 @@ def raw_nursery_yard() -> dict[str, Any]:
         operations=[
             ob.operation("print", "print", input="file", product="plot"),
             ob.operation("make_tea", "brew", name="make tea", product="tea"),
-            ob.operation("make_coffee", "brew", name="make coffee", product="coffee"),
+            ob.operation("make_coffee", "percolate", name="make coffee", product="coffee"),
         ],
         facilities=[
             ob.facility(
