@@ -90,6 +90,7 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
+from assistantx.agents.symbolic.reading.purpose import lacked_purposes
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
@@ -187,6 +188,7 @@ class InstructionParser:
         ``to_self``: the requester answered "me" to whom their own item goes;
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
         frame = self._frame(

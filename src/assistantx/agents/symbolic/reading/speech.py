@@ -117,6 +117,17 @@ def _verb_like(word: str) -> bool:
 
 _SUBJECT_REACH = 11
 _IN_PLACE_PHRASE = frozenset({"on", "in", "at", "by", "near", "under", "behind"})
+# a preposition and a determiner open a noun phrase: the next word is its noun, never a
+# finite verb ("from the shed", "in my drawer")
+_NOUN_OPENERS = frozenset({"the", "a", "an", "my", "your", "our", "their", "his", "her", "its"})
+_PREPOSITIONS = _IN_PLACE_PHRASE | {"from", "off", "into", "inside", "beside", "to"}
+
+
+def _after_preposition(w: list[str], n: int) -> bool:
+    """Whether ``w[n]`` comes right after a preposition and a determiner ("from the shed")."""
+    return n >= 2 and w[n - 1] in _NOUN_OPENERS and w[n - 2] in _PREPOSITIONS
+
+
 _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
@@ -634,10 +645,25 @@ class SpeechActs:
                 return True  # "the new drills make a lot of noise": told of the drills
             if self._work_obliged(w, n):
                 return False  # "my banner has to be fireproofed": the work is needed
+            if _after_preposition(w, n) or self._in_office_phrase(w, n):
+                continue  # "some twine from the (potting) shed": a noun, not "shed"
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
                 return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
+        return False
+
+    def _in_office_phrase(self, w: list[str], n: int) -> bool:
+        """Whether ``w[n]`` is the last word of a name of several words of the office's
+        items, facilities or places ("potting shed", "print room"): a noun there, never
+        the statement's verb."""
+        lex = self.lex
+        for size in (2, 3, 4):
+            if n + 1 < size:
+                break
+            phrase = " ".join(w[n + 1 - size : n + 1])
+            if phrase in lex.items or phrase in lex.facilities or phrase in lex.places:
+                return True
         return False
 
     def _bare_subject(self, w: list[str]) -> bool:

@@ -80,4 +80,14 @@ def _drink_named(terms: Terms, text: str) -> str | None:
         names = (kind.name, *kind.synonyms)
         if category_named(kind.name) is hot or any(is_member(hot, n) for n in names):
             return kind.name
+    # "Brew please. Milk, no sugar.": the verb of the office's service that makes a hot drink
+    # from nothing, said for the drink it makes
+    words = set(language.words(text))
+    for op in terms.office.operations:
+        if op.product is None or op.input is not None or not words & set(op.verbs):
+            continue
+        kind = terms.office.item_type(op.product)
+        names = (kind.name, *kind.synonyms)
+        if category_named(kind.name) is hot or any(is_member(hot, n) for n in names):
+            return kind.name
     return None
