@@ -14,6 +14,9 @@ from assistantx.core import english, language
 
 # "in the skip", "into a bin", "to the rubbish": where a put-request sends its thing.
 _INTO = english.words("to_facility_prepositions") | {"down"}
+# "mine went in the compost": a word the speaker names themself or their own with is the
+# subject, never a verb in its plain form (though "mine" is one too).
+_SELF = english.words("self_words")
 
 
 def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -24,8 +27,28 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
                 continue  # "shred my drafts" where a shredder is offered: a service
             if starts_with(sub.words, at, verb):
                 return _declined(terms, piece, " ".join(verb))
-    if commanded(terms, piece) and (container := _waste_container(terms, piece)) is not None:
-        return _declined(terms, piece, f"put things in the {container}", what="")
+    if commanded(terms, piece) and (found := _waste_container(terms, piece)) is not None:
+        container, offered = found
+        if not offered:
+            return _declined(terms, piece, f"put things in the {container}", what="")
+        owner = _colleague(terms, piece, requester)
+        if owner is not None and piece.acts.statement:
+            # "chuck Ellis's drawings in the recycling": the office's own disposal, by a
+            # verb that is no errand, of a colleague's thing: refused, not noted as told
+            return _declined(terms, piece, f"put {owner}'s things in the {container}", what="")
+    return None
+
+
+def _colleague(terms: Terms, piece: Piece, requester: str) -> str | None:
+    """The colleague whose thing the piece names ("Ellis's drawing set"), by name; none
+    where a name opens the piece ("Mark's drawings went in the recycling": told, the name
+    no verb)."""
+    mentions = piece.lexed.mentions
+    if mentions and mentions[0].start == 0 and mentions[0].kind == "person":
+        return None
+    for m in mentions:
+        if m.kind == "person" and m.possessive and len(m.ids) == 1 and m.ids[0] != requester:
+            return terms.office.person(m.ids[0]).name
     return None
 
 
@@ -37,12 +60,16 @@ def commanded(terms: Terms, piece: Piece) -> bool:
         return True
     words = piece.words
     at = piece.verb_at(terms.en.lead_in)
-    return any(k < len(words) and words[k] in language.verb_lemmas(words[k]) for k in {0, at})
+    return any(
+        k < len(words) and words[k] not in _SELF and words[k] in language.verb_lemmas(words[k])
+        for k in {0, at}
+    )
 
 
-def _waste_container(terms: Terms, piece: Piece) -> str | None:
-    """The waste container a request puts its thing into ("in the skip"), unless the words
-    are the office's own facility ("the confidential recycling bin", a service there)."""
+def _waste_container(terms: Terms, piece: Piece) -> tuple[str, bool] | None:
+    """The waste container a request puts its thing into ("in the skip"), and whether the
+    words are the office's own facility ("the confidential recycling bin", a service there)
+    or its own service ("in the compost" where composting is offered: the service asked)."""
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     words = [t.word for t in tokens]
     for n, word in enumerate(words):
@@ -58,9 +85,8 @@ def _waste_container(terms: Terms, piece: Piece) -> str | None:
             office_name = any(
                 m.kind in ("facility", "item", "place") and m.start < end and k < m.end
                 for m in mentions
-            )
-            if not office_name:
-                return " ".join(phrase)
+            ) or any(w in terms.lex.operation_words for w in phrase)
+            return " ".join(phrase), office_name
     return None
 
 

@@ -21,7 +21,7 @@ _NEED = english.words("need_verbs")
 _SUBJECTS = english.words("subject_pronouns") - {"you", "u", "ya"}
 _SENTENCE_END = frozenset(".!")
 # What a request after a statement points back to it with: "heat *it* up", "bring me *one*".
-_POINTERS = frozenset(
+POINTERS = frozenset(
     {"it", "them", "one", "ones", "that", "this", "those", "these", "same", "his", "hers"}
     | {"theirs", "another", "too", "also", "there"}
 )
@@ -112,7 +112,7 @@ def preamble(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         return None
     later = [p for p in msg.pieces if p.start > piece.end and not _same_sentence(msg, piece, p)]
     asks = [p for p in later if p.acts.request or p.acts.imperative]
-    if not asks or any(set(p.words) & _POINTERS for p in later):
+    if not asks or any(set(p.words) & POINTERS for p in later):
         return None
     return Finding("statement", piece, "what the speaker tells before the request: context only")
 

@@ -32,6 +32,7 @@ from assistantx.agents.symbolic.reading.screen.outside_place import outside_plac
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
+from assistantx.agents.symbolic.reading.screen.past_event import past_event
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
@@ -60,6 +61,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
     ("statement", reason),
+    # what already happened to the speaker's own thing beside a request ("mine went in the
+    # compost"): before a service or waste container its words name is read as asked for
+    ("statement", past_event),
     ("statement", contrast),
     ("wish", wish),
     ("wish", hope),
