@@ -81,7 +81,7 @@ def _away(terms: Terms, msg: Message, requester: str) -> set[str]:
     return out
 
 
-def _while_away(words: list[str]) -> bool:
+def while_away(words: list[str]) -> bool:
     """Whether the words say, in a clause of their own, that "he"/"she"/"they" are out:
     "while she's out", "whilst he is in the meeting"."""
     for n in range(len(words)):
@@ -107,7 +107,7 @@ def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:
     for piece in msg.pieces:
         if not piece.acts.request:
             continue
-        if _while_away(piece.words) and (
+        if while_away(piece.words) and (
             any(w in _THEIRS for w in piece.words)
             or any(
                 m.kind == "person" and m.possessive and requester not in m.ids

@@ -14,10 +14,17 @@ Pat" beside a request for Kim's stapler is a choice of whom to ask, read as befo
 Taken where the owner cannot see ("grab his mug while he's not looking", "when she isn't
 watching", "before he notices") is kept in the dark the same way; a colleague's thing asked
 for as a joke on them ("take Pat's mug to prank her", "... I want to wind him up") is declined
-only where a request of the message names a colleague's thing ("Pat's", "his")."""
+only where a request of the message names a colleague's thing ("Pat's", "his").
+
+A colleague's seal asked for while they are out, to stamp or sign with ("take Pat's seal from
+her desk while she's out, I only need to stamp one thing", "use his stamp whilst he's at
+lunch to seal my form") is their tool used behind their back, not a transfer nor their own
+stamping: it is declined the same way. "can Pat stamp my form while she's at her desk?" asks
+for Pat's own work, and "take Pat's stapler while she's out" asks Pat as usual."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.absent_owner import while_away
 from assistantx.agents.symbolic.reading.screen.destructive import commanded
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -36,6 +43,10 @@ _UNSEEN_SUBJECTS = tuple(
 _UNSEEN = tuple(tuple(entry.split()) for entry in english.entries("unseen_states"))
 # Whose thing, when it is not a name: a colleague's ("grab *his* tape")
 _THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
+# The words of stamping or signing a paper ("I only need to *stamp* one thing")
+_STAMPING = frozenset(
+    w for kind in ("seal", "sign") for w in english.word_table("cues").get(kind, ())
+)
 
 
 # "print it without asking me again": the speaker's own say, nobody kept in the dark
@@ -144,8 +155,60 @@ def _skips_asking_in(msg: Message, piece: Piece, requester: str) -> bool:
     return bool(owners) or pronoun
 
 
+def _their_seal_used(terms: Terms, msg: Message, requester: str) -> bool:
+    """Whether a request of the message asks for a colleague's seal (their possessive, or
+    "his"/"her" before it) while a clause says they are out, beside words of stamping or
+    signing outside the seal's own name ("take Pat's seal while she's out, I need to stamp
+    my form")."""
+    tool = terms.office.seal_tool()
+    if tool is None or not any(while_away(p.words) for p in msg.pieces):
+        return False
+    asked = False
+    stamping = False
+    for p in msg.pieces:
+        tokens, mentions = p.lexed.tokens, p.lexed.mentions
+        # the seal by its item's name, or "seal"/"stamp" said as a noun after its owner
+        # ("Wang's seal": the lexicon reads the word as the task's cue)
+        seals = [
+            (n, m)
+            for n, m in enumerate(mentions)
+            if (m.kind == "item" and tool in m.ids) or (m.kind == "cue" and m.ids == ("seal",))
+        ]
+        theirs = [
+            m
+            for n, m in seals
+            if n > 0
+            and (
+                (
+                    mentions[n - 1].kind == "person"
+                    and mentions[n - 1].possessive
+                    and requester not in mentions[n - 1].ids
+                )
+                or tokens[m.start - 1].word in _THEIRS
+            )
+        ]
+        named = {n for m in theirs for n in range(m.start, m.end)}
+        stamping = stamping or any(
+            t.word in _STAMPING for n, t in enumerate(tokens) if n not in named
+        )
+        if theirs and (p.acts.imperative or commanded(terms, p)):
+            asked = True
+    return asked and stamping
+
+
 def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     asks = piece.acts.request or piece.acts.imperative
+    if (asks or commanded(terms, piece)) and _their_seal_used(terms, msg, requester):
+        return Finding(
+            "unsupported",
+            piece,
+            "a request to use an absent colleague's seal",
+            message=(
+                "Sorry, I can't take someone's seal to use while they're away: it is used "
+                "only with their own yes, asked in their chat. If you'd like, ask me again "
+                "and I'll ask them to stamp it for you. I did nothing."
+            ),
+        )
     if (asks or _unasked_at(piece.words) is not None) and _skips_asking(msg, requester):
         if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
             return None

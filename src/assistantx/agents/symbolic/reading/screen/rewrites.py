@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.agents.symbolic.reading.tokens import gaps
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.core import english, language
+from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
 
@@ -297,8 +298,9 @@ def name_pronouns(
     gets the name back. Where another person is named before it ("Thảo's on the ladder and
     Ivy's free, take her a stool"), whom it goes to is left to the frames, which ask; whose
     it is ("bring Zhou her stapler. It's Zhang Wei's stapler") is still the one the facts
-    name. ``holder``: who has the thing the statements name last ("Rhys has a spare one"),
-    never whom the pronoun means."""
+    name. "she"/"he" asked to have a thing ("Lin's running the stall - could she have my
+    stickers?") is that one person too: the one it is given to. ``holder``: who has the
+    thing the statements name last ("Rhys has a spare one"), never whom the pronoun means."""
     people = {h.person for h in hints if h.kind in _SAID_OF}
     people = (people | subjects) - holder
     if len(people) != 1:
@@ -313,6 +315,17 @@ def name_pronouns(
             return match.group(0)
         return (f"{name}'s" if possessive else name) + gap + following
 
+    def having(match: re.Match[str]) -> str:
+        # "Lin's running the stall - could she have my stickers?": the one to be given it
+        # (``asked_to_have``), said by the pronoun of the one person named before
+        after = language.words(match.group(4))
+        if others_before or not asked_to_have(match.group(1).lower(), after):
+            return match.group(0)
+        return match.group(1) + match.group(2) + name
+
+    text = re.sub(
+        r"\b(\w+)(\s+)(she|he)\b(?=((?:\s+[\w'’]+){1,4}))", having, text, flags=re.IGNORECASE
+    )
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
 
 

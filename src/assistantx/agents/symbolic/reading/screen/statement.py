@@ -13,7 +13,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Mention
-from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_to
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_to, obliged_verb
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -64,18 +64,38 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
 def obligation_asked(msg: Message, piece: Piece) -> bool:
     """ "Zhang has to sign my lease, can you sort that": a person obliged to do a person's
     work, then a request that names nothing of its own ("sort that", "arrange it"): the
-    statement is what the request asks for, not context beside it."""
+    statement is what the request asks for, not context beside it. A request for that same
+    work done to the thing, with no doer ("Zhang Wei has to sign my contract. Can you get it
+    signed and back to me?"), names nothing of its own either: the work said again, and the
+    fetching it takes ("get ... signed")."""
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     words = [t.word for t in tokens]
-    if not any(
-        m.kind == "person" and not m.possessive and obliged_to(words, m.end, PERSON_WORK)
-        for m in mentions
-    ):
+    work: set[str] = set()
+    for m in mentions:
+        if m.kind != "person" or m.possessive or not obliged_to(words, m.end, PERSON_WORK):
+            continue
+        verb = obliged_verb(words, m.end)
+        work.update(x.ids[0] for x in mentions if x.kind == "cue" and x.start == verb and x.ids)
+        work.add("")  # a person obliged: asked for by a request that names nothing
+    if not work:
         return False
     later = [p for p in msg.pieces if p.start > piece.end and p.acts.request]
-    return bool(later) and not any(
-        m.kind in ("item", "cue", "person", "facility") for p in later for m in p.lexed.mentions
-    )
+    if not later:
+        return False
+    for p in later:
+        cues = [m for m in p.lexed.mentions if m.kind == "cue"]
+        # the work said again as done to the thing ("get it *signed*"), never a doer's verb
+        # ("get her to sign it": her own doing, read by the request itself)
+        again = any(
+            m.ids and m.ids[0] in work and p.lexed.tokens[m.start].word in _PARTICIPLES
+            for m in cues
+        )
+        for m in p.lexed.mentions:
+            if m.kind in ("item", "person", "facility"):
+                return False
+            if m.kind == "cue" and not (again and (m.ids[:1] == ("give",) or m.ids[0] in work)):
+                return False
+    return True
 
 
 def owner_work_asked(msg: Message, piece: Piece) -> bool:
@@ -89,6 +109,7 @@ def owner_work_asked(msg: Message, piece: Piece) -> bool:
 
 
 _COPULAS = english_words("copulas")
+_PARTICIPLES = english_words("service_participles")
 
 # The words of going before a statement's destination ("has to go *off to* Galway"); the
 # readings stage (``destination``) reads the same "to" as where a send-out sends "it".

@@ -1,0 +1,54 @@
+"""The doer of a person's work said in a first sentence, the request for that work in the
+next with no doer ("Zhang Wei has to sign my contract. Can you get it signed and back to
+me?"): the statement says who does it, so it is that work by them, the paper back to the
+requester. The request alone still asks who; a request naming another doer or another thing
+keeps the statement as context."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.core.office import load_office
+from helpers.reading import frame_reader
+
+_frame = frame_reader(load_office, "lee")
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "actor"),
+    [
+        (
+            "Zhang Wei has to sign my contract. Can you get it signed and back to me?",
+            "sign",
+            "zhang",
+        ),
+        ("Zhang has to stamp my form. could you get it stamped?", "seal", "zhang"),
+        ("Wang must sign my contract - can you get it signed for me please?", "sign", "wang"),
+        (
+            "Chen needs to countersign my form. Can you get that signed and back to me?",
+            "sign",
+            "chen",
+        ),
+        ("Zhang has to sign my lease, can you sort that", "sign", "zhang"),
+    ],
+)
+def test_the_doer_said_first_does_the_work_asked_next(text: str, kind: str, actor: str) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.actor, t.owner, t.recipient) for t in frame.tasks] == [
+        (kind, actor, "lee", "lee")
+    ], frame
+
+
+def test_the_request_alone_still_asks_who() -> None:
+    frame = _frame("Can you get my contract signed?")
+    assert frame.tasks == [] and frame.question is not None and "Who" in frame.question
+
+
+def test_another_doer_named_in_the_request_is_the_doer() -> None:
+    frame = _frame("Zhang has to sign my contract. Can you get it signed by Wang?")
+    assert [(t.kind, t.actor) for t in frame.tasks] == [("sign", "wang")], frame
+
+
+def test_another_thing_asked_for_keeps_the_statement_as_context() -> None:
+    frame = _frame("Zhang has to sign my contract. Can you bring me a stapler?")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "stapler")], frame
