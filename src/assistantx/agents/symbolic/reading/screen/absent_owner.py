@@ -15,7 +15,7 @@ plan beside a plain request."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.english import starts_with
+from assistantx.agents.symbolic.reading.screen.english import while_clause
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -84,17 +84,7 @@ def _away(terms: Terms, msg: Message, requester: str) -> set[str]:
 def while_away(words: list[str]) -> bool:
     """Whether the words say, in a clause of their own, that "he"/"she"/"they" are out:
     "while she's out", "whilst he is in the meeting"."""
-    for n in range(len(words)):
-        for opener in _WHILE:
-            if not starts_with(words, n, opener):
-                continue
-            at = n + len(opener)
-            for subject in _WHILE_SUBJECTS:
-                if starts_with(words, at, subject) and any(
-                    starts_with(words, at + len(subject), state) for state in _WHILE_STATES
-                ):
-                    return True
-    return False
+    return while_clause(words, _WHILE_SUBJECTS, _WHILE_STATES, _WHILE)
 
 
 def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:

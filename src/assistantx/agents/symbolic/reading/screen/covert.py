@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.absent_owner import while_away
 from assistantx.agents.symbolic.reading.screen.destructive import commanded
+from assistantx.agents.symbolic.reading.screen.english import starts_with, while_clause
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -54,31 +55,20 @@ _SPEAKER = frozenset({"me", "us", "i", "we", "anyone", "anybody"})
 _TELLING = frozenset({"without", "dont", "do"})  # the marks a speaker's "me"/"us" may follow
 
 
-def _at(words: list[str], n: int, phrase: tuple[str, ...]) -> bool:
-    return tuple(words[n : n + len(phrase)]) == phrase
-
-
 def _unseen(words: list[str]) -> bool:
     """Whether the words say, in a clause of their own, that the owner cannot see: "while
     he's not looking", "when she isn't watching"."""
-    for n in range(len(words)):
-        for opener in _WHILE:
-            if not _at(words, n, opener):
-                continue
-            at = n + len(opener)
-            for subject in _UNSEEN_SUBJECTS:
-                if _at(words, at, subject) and any(
-                    _at(words, at + len(subject), state) for state in _UNSEEN
-                ):
-                    return True
-    return False
+    return while_clause(words, _UNSEEN_SUBJECTS, _UNSEEN, _WHILE)
 
 
 def _pranked(msg: Message, requester: str) -> bool:
     """Whether a piece of the message says a colleague's thing is asked for as a joke on
     them (``prank_marks``), beside a request that names a colleague's thing."""
     said = any(
-        _at(p.words, n, mark) for p in msg.pieces for n in range(len(p.words)) for mark in _PRANKS
+        starts_with(p.words, n, mark)
+        for p in msg.pieces
+        for n in range(len(p.words))
+        for mark in _PRANKS
     )
     if not said:
         return False

@@ -97,6 +97,25 @@ def starts_with(words: list[str], at: int, phrase: tuple[str, ...]) -> bool:
     return tuple(words[at : at + len(phrase)]) == phrase
 
 
+Phrases = tuple[tuple[str, ...], ...]
+
+
+def while_clause(words: list[str], subjects: Phrases, states: Phrases, openers: Phrases) -> bool:
+    """Whether the words hold a clause of its own of one of ``openers``, a subject and a
+    state ("while she's out", "when he isn't looking")."""
+    for n in range(len(words)):
+        for opener in openers:
+            if not starts_with(words, n, opener):
+                continue
+            at = n + len(opener)
+            for subject in subjects:
+                if starts_with(words, at, subject) and any(
+                    starts_with(words, at + len(subject), state) for state in states
+                ):
+                    return True
+    return False
+
+
 def phrases_pattern(key: str) -> str:
     """A regular expression (no groups) matching any phrase of ``english.yaml``'s list
     ``key`` as typed, longest first, with any run of spaces between its words."""
