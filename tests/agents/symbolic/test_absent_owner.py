@@ -23,6 +23,10 @@ _frame = frame_reader(tyre_bay, "ines")
         "Bruno is on holiday, bring me his ruler, he'll be fine with it",
         "Tove is off sick. Take her tray to Amber, she wouldn't mind",
         "Bruno is away, bring me Bruno's ruler, he won't mind",
+        # the absence said after the request, in a piece of its own, by a pronoun
+        "grab Bruno's ruler for me, he won't mind, he's out today",
+        "bring me Tove's tray, she's off today, she wouldn't mind",
+        "take Bruno's ruler for me, he won't mind. he is away",
     ],
 )
 def test_an_absent_owners_yes_said_for_them_is_declined(text: str) -> None:
@@ -38,6 +42,8 @@ def test_an_absent_owners_yes_said_for_them_is_declined(text: str) -> None:
         ("borrow Bruno's ruler, he won't mind", "bruno"),
         ("Bruno is away, bring me a box of staples, he won't mind", None),
         ("Bruno is away today, could you bring me a box of staples", None),
+        ("grab Bruno's ruler for me, he's out today", "bruno"),
+        ("he's out today, bring me a box of staples, he won't mind", None),
     ],
 )
 def test_either_half_alone_is_read_as_before(text: str, owner: str | None) -> None:

@@ -7,7 +7,8 @@ thing plainly and the owner is then asked as usual.
 
 The owner may be said to be out in a clause of the request itself: "take Pat's seal and stamp
 my contract with it while she's out, she won't mind" (the conjunction, a pronoun, and a state
-of being away or busy elsewhere: "while he's in the meeting", "whilst they're at lunch").
+of being away or busy elsewhere: "while he's in the meeting", "whilst they're at lunch"), or
+in a piece of its own after it: "grab Pat's lunch for me, she won't mind, she's out today".
 
 Either half alone is read as before: "borrow Rory's stapler, he won't mind" asks Rory (the
 covert rule's docstring), and "Otto is away, could you bring me his ruler" is a fact for the
@@ -15,7 +16,7 @@ plan beside a plain request."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.english import while_clause
+from assistantx.agents.symbolic.reading.screen.english import starts_with, while_clause
 from assistantx.agents.symbolic.reading.screen.fact import fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -65,6 +66,21 @@ def _answers_for_someone(words: list[str]) -> bool:
     return False
 
 
+# A third person said to be away in a piece of its own, by a pronoun: "she's out today",
+# "he is away", "they're off": the colleague whose thing the request names.
+_SAID_AWAY = tuple(
+    (*subject, *state)
+    for subject in (("shes",), ("hes",), ("theyre",), ("she", "is"), ("he", "is"), ("they", "are"))
+    for state in _phrases("away")
+)
+# At most this many words after the state ("today", "all day"): more is another clause.
+_AWAY_TAIL = 2
+
+
+def _said_away(words: list[str]) -> bool:
+    return any(starts_with(words, 0, p) and len(words) <= len(p) + _AWAY_TAIL for p in _SAID_AWAY)
+
+
 # Whose thing, when it is not a name: the absent colleague's ("take *his* ruler").
 _THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
 
@@ -94,10 +110,11 @@ def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:
     its owner is out in a clause of its own ("take Pat's seal while she's out") asks for a
     colleague's thing by their possessive or "his"/"her"."""
     away = _away(terms, msg, requester)
+    pronoun_away = any(_said_away(p.words) for p in msg.pieces)
     for piece in msg.pieces:
         if not piece.acts.request:
             continue
-        if while_away(piece.words) and (
+        if (while_away(piece.words) or pronoun_away) and (
             any(w in _THEIRS for w in piece.words)
             or any(
                 m.kind == "person" and m.possessive and requester not in m.ids
