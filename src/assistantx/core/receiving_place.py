@@ -13,7 +13,9 @@ desk", "the file sitting in his office"): that is where it is fetched from.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
 from assistantx.core import english
 
@@ -37,6 +39,32 @@ class Ahead:
 
     words: tuple[str, ...] = ()
     contracted: bool = False
+
+
+class PlacedWord(Protocol):
+    """A word as the reader's ``Token`` and the consent guard's word both carry it."""
+
+    @property
+    def word(self) -> str: ...  # folded, without a possessive 's
+
+    @property
+    def possessive(self) -> bool: ...
+
+    @property
+    def opens(self) -> bool: ...  # the first word of a sentence
+
+    @property
+    def after_pause(self) -> bool: ...  # a comma before it
+
+
+def ahead_at(words: Sequence[PlacedWord], k: int) -> Ahead:
+    """The two words before the preposition at ``k``, within its sentence and phrase ("the",
+    "one" in "the one on Hal's desk"); nothing where the preposition opens either."""
+    if k <= 0 or words[k].opens or words[k].after_pause:
+        return Ahead()
+    near = words[k - 1]
+    far = words[k - 2].word if k >= 2 and not near.opens and not near.after_pause else ""
+    return Ahead(words=(far, near.word) if far else (near.word,), contracted=near.possessive)
 
 
 def lies_there(ahead: Ahead | None) -> bool:

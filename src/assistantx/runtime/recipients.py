@@ -48,6 +48,7 @@ from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.ranks import rank_titles
 from assistantx.core.receiving_place import (
     Ahead,
+    ahead_at,
     names_receiving_place,
     pronoun_receiving_place,
 )
@@ -273,12 +274,7 @@ def _before(words: list[_Word], at: int) -> str:
 def _ahead(words: list[_Word], at: int) -> Ahead:
     """The two words before the word before ``at``, within its sentence and phrase, as the
     reader takes them: "the one" in "the one on Hal's desk" (where the item lies)."""
-    k = _before_at(words, at)
-    if k <= 0 or words[k].opens or words[k].after_pause:
-        return Ahead()
-    near = words[k - 1]
-    far = words[k - 2].folded if k >= 2 and not near.opens and not near.after_pause else ""
-    return Ahead(words=(far, near.folded) if far else (near.folded,), contracted=near.possessive)
+    return ahead_at(words, _before_at(words, at))
 
 
 def _is_give(word: str, operations: frozenset[str]) -> bool:

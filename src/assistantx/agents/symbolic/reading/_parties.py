@@ -23,6 +23,7 @@ from assistantx.core.receiving_place import (
     MEET_AT,
     PLACE_WORDS,
     Ahead,
+    ahead_at,
     lies_there,
     names_receiving_place,
     pronoun_receiving_place,
@@ -250,11 +251,7 @@ def _ahead_of(tokens: Sequence[Token], start: int) -> Ahead:
     k = start - 1
     while k >= 0 and tokens[k].word in TITLES:
         k -= 1
-    if k <= 0 or tokens[k].opens or tokens[k].after_pause:
-        return Ahead()
-    near = tokens[k - 1]
-    far = tokens[k - 2].word if k >= 2 and not near.opens and not near.after_pause else ""
-    return Ahead(words=(far, near.word) if far else (near.word,), contracted=near.possessive)
+    return ahead_at(tokens, k)
 
 
 def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:

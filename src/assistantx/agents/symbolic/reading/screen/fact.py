@@ -93,13 +93,22 @@ def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
     lost = any(
         starts_with(before, n, p) for n in range(len(before)) for p in terms.en.own_item_lost
     )
-    copula = next((c for c in terms.en.copulas if starts_with(after, 0, c)), None)
-    broken = copula is not None and any(
-        starts_with(after, len(copula), c) for c in terms.en.conditions
-    )
+    broken = _out_of_use(terms, after)
     if not (lost and before[:1] == ["i"]) and not (broken and not before):
         return None
-    item = items[0].ids[0]
+    return _own_out_of_use(terms, piece, items[0].ids[0], requester)
+
+
+def _out_of_use(terms: Terms, after: list[str]) -> bool:
+    """Whether the words after an item say it is out of use: a copula and a condition."""
+    copula = next((c for c in terms.en.copulas if starts_with(after, 0, c)), None)
+    return copula is not None and any(
+        starts_with(after, len(copula), c) for c in terms.en.conditions
+    )
+
+
+def _own_out_of_use(terms: Terms, piece: Piece, item: str, requester: str) -> Finding:
+    """The requester's own item out of use: a hint that they want someone else's."""
     hint = Hint(
         kind="condition", person=requester, value="missing", item_type=item, said=piece.text
     )
@@ -114,17 +123,13 @@ def _bare_item_fact(
     acts = piece.acts
     if piece.asks or acts.request or acts.imperative or acts.question is not None:
         return None
-    copula = next((c for c in terms.en.copulas if starts_with(after, 0, c)), None)
-    if copula is None or not any(starts_with(after, len(copula), c) for c in terms.en.conditions):
+    if not _out_of_use(terms, after):
         return None
-    thing = terms.office.item_type(item).name
     if requester not in terms.office.owners_of(item):
+        thing = terms.office.item_type(item).name
         said = f"a statement: the {thing} {wording.is_are(thing)} out of use"
         return Finding("statement", piece, said)
-    hint = Hint(
-        kind="condition", person=requester, value="missing", item_type=item, said=piece.text
-    )
-    return Finding("fact", piece, f"a fact: your {thing} {wording.is_are(thing)} out of use", hint)
+    return _own_out_of_use(terms, piece, item, requester)
 
 
 def back_when(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
