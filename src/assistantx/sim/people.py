@@ -82,8 +82,9 @@ def _operation_here(
             op = office.operation(op_id)
             if op.shape(office) in shapes:
                 found.append(op)
+    # the name split as the message is ("date-stamp" is the words date and stamp in both)
     words = set(re.findall(r"[a-z]+", told.lower()))
-    asked = [op for op in found if set(op.name.lower().split()) <= words]
+    asked = [op for op in found if set(re.findall(r"[a-z]+", op.name.lower())) <= words]
     return next(iter(asked or found), None)
 
 
