@@ -32,6 +32,7 @@ _COMMON = english.words("common")
 _SENDING = english.words("send_words")
 FILE_NOUNS = english.words("file_nouns")
 _FILE_VERBS = english.words("file_verbs")
+_DATA_NOUNS = english.words("data_nouns")
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
 
 
@@ -71,11 +72,13 @@ def paper_phrase(
     tokens: Sequence[Token],
     known: Callable[[str], bool],
     heads: frozenset[str] | set[str] = PAPER_NOUNS,
+    openers: tuple[str, ...] = ("self",),
 ) -> int | None:
-    """Where ``mentions[n]`` is "my", the index of the mention of the paper noun (one of
-    ``heads``) that heads the phrase it opens ("my [draft] memo"), or None."""
+    """Where ``mentions[n]`` is "my" (or another possessive of ``openers``' kinds), the index
+    of the mention of the paper noun (one of ``heads``) that heads the phrase it opens ("my
+    [draft] memo"), or None."""
     opener = mentions[n]
-    if opener.kind != "self" or not opener.possessive:
+    if opener.kind not in openers or not opener.possessive:
         return None
     end = opener.end
     for k in range(n + 1, min(len(mentions), n + 2 + _MODIFIERS)):
@@ -124,6 +127,10 @@ class OwnPapers:
         noun, and the office's one candidate item it is (see the module's text)."""
         found: dict[int, str] = {}
         for n in range(len(mentions)):
+            k = self._colleagues_data(tokens, mentions, n, known)
+            if k is not None and self.file_type is not None:
+                found[k] = self.file_type
+                continue
             k = paper_phrase(mentions, n, tokens, known)
             if k is None and self.file_type is not None:
                 # "send Sam my profiler capture": a noun of what a computer keeps, with a
@@ -147,6 +154,26 @@ class OwnPapers:
             if meant is not None:
                 found[k] = meant
         return found
+
+    def _colleagues_data(
+        self,
+        tokens: Sequence[Token],
+        mentions: Sequence[Mention],
+        n: int,
+        known: Callable[[str], bool],
+    ) -> int | None:
+        """ "need Ivy's plate reader data", "get me Tom's survey results", "her gel images":
+        a colleague's possessive before a noun of what an instrument or a computer records
+        (``data_nouns``, after a modifier or two that name none of the office's items) is
+        that colleague's electronic file, where the office has one; elsewhere it is left a
+        plain word and asked about, as before."""
+        if self.file_type is None:
+            return None
+        k = paper_phrase(mentions, n, tokens, known, _DATA_NOUNS, openers=("person", "pronoun"))
+        if k is None:
+            return None
+        said = {t.word for t in tokens[mentions[n].end : mentions[k].end]}
+        return None if said & self.named else k
 
 
 def _item_name_words(office: Office) -> frozenset[str]:

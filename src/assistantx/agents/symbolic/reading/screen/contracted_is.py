@@ -51,6 +51,11 @@ _BECOME = frozenset({"gone", "turned", "become", "grown"})
 _PRONOUNS = english.words("subject_pronouns") | frozenset(
     {"that", "this", "there", "here", "what", "who", "where", "let", "he", "she", "mine", "yours"}
 )
+# where someone is, said with "'s" ("Chen's back from the offsite", "Ida's off to the sim
+# tomorrow", "Wang's away till Monday"): the word, then the end of the clause or one of the
+# words that go on saying where or when; "Zhang's back brace" (a noun after it) owns a brace
+_WHEREABOUTS = english.words("contracted_whereabouts")
+_WHEREABOUTS_TAILS = english.words("contracted_whereabouts_tails") | _TAILS
 _CONTRACTED = re.compile(
     r"\b(?P<subject>[^\W\d_]+)['’]s\s+(?P<state>[a-z]+)\b(?P<rest>\s*(?:[^\W\d_]+)?)",
     re.IGNORECASE,
@@ -69,6 +74,8 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
             return match.group(0)
         verb = "is" if state in _STATES else "has" if language.is_past_participle(state) else ""
         tails = _TAILS if verb == "is" else _PARTICIPLE_TAILS | _OBJECT_DETERMINERS
+        if state in _WHEREABOUTS:
+            verb, tails = "is", _WHEREABOUTS_TAILS
         read = language.lemmas(after) if after else {}
         # an adjective, never a place or a direction ("Zhang's gone home": he is away)
         if state in _BECOME and "ADJ" in read and "ADV" not in read:

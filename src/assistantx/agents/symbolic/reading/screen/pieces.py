@@ -15,9 +15,15 @@ from typing import Literal
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.english import phrases_pattern, split_words
 from assistantx.agents.symbolic.reading.speech_acts import Acts
+from assistantx.core import english
 
-# A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota").
-_SENTENCE_END = re.compile(r"[.!?;\n]+|\s[-–—]+\s")
+# A spaced dash joins two sentences as a full stop would ("I'm on the ward - print my rota"),
+# and so does chat's laugh between two of them ("my badge is peeling lol can it go through
+# the laminator"): a laugh is no word of either; one that ends the message stays with it.
+_LAUGHS = "|".join(sorted(map(re.escape, english.words("chat_laughs")), key=len, reverse=True))
+_SENTENCE_END = re.compile(
+    rf"[.!?;\n]+|\s[-–—]+\s|(?<=\w)[\s,]+(?:{_LAUGHS})\b[\s,.!?;]+(?=\w)", re.IGNORECASE
+)
 # A tag question closing a statement ("Robin's got a spare one hasn't he?", "... isn't it?"):
 # a negated auxiliary and a pronoun, said to have the statement confirmed. It asks nothing of
 # its own, so its question mark does not make the statement a question: what the statement

@@ -51,14 +51,16 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         and any(own_lack(terms, msg, p) for p in msg.pieces if p is not piece)
     ):
         return Finding("statement", piece, "the speaker's own plan to get more, context only")
-    if piece.asks or not piece.acts.statement:
+    praise = not piece.asks and praise_remark(piece)
+    if not praise and (piece.asks or not piece.acts.statement):
         return None
     named = (
         tuple(stated_items(terms, piece, requester) or one_held(terms, msg, piece))
         + tuple(f"person:{p}" for p in terms.named(piece.lexed, "person")[:1])
         + tuple(f"product:{p}" for p in stated_products(terms, piece))
     )
-    return Finding("statement", piece, "a statement, context only", context=named)
+    said = "praise for someone's work" if praise else "a statement"
+    return Finding("statement", piece, f"{said}, context only", context=named)
 
 
 def obligation_asked(msg: Message, piece: Piece) -> bool:
@@ -465,6 +467,40 @@ def remark(terms: Terms, piece: Piece) -> bool:
     if not adjectives or not all(w in _REMARK_TAILS for w in rest):
         return False
     return bool(degrees or rest)
+
+
+_PRAISED_WORK = english_words("praised_work")
+_PRAISE_WHOLE = tuple(tuple(p.split()) for p in english_entries("praise_remarks"))
+_ASKING = english_words("request_markers") | english_words("request_modals")
+
+
+def praise_remark(piece: Piece) -> bool:
+    """ "sterling effort on the clean-up yesterday, everyone", "great job today, team", "well
+    done all": praise of someone's work, with no verb of its own: degree words, adjectives
+    (a colleague's name that is also one, "sterling", "grand", is the adjective here), then
+    a noun of work ("effort", "job"), or a whole phrase of praise ("well done"), and no
+    request wording after it. It asks nothing; whatever it names is context."""
+    if piece.acts.request or piece.acts.imperative or piece.acts.question is not None:
+        return False
+    words = content(piece.words)
+    whole = next((p for p in _PRAISE_WHOLE if tuple(piece.words[: len(p)]) == p), None)
+    if whole is not None:  # "well done": "well" is also an opener, left out of ``content``
+        words, n = piece.words, len(whole)
+    else:
+        n = 0
+        while n < len(words) and words[n] in _DEGREES:
+            n += 1
+        adjectives = n
+        while n < len(words) and _praise_adjective(words[n]):
+            n += 1
+        if n == adjectives or n >= len(words) or words[n] not in _PRAISED_WORK:
+            return False
+        n += 1
+    return not set(words[n:]) & (_ASKING | {"you", "u"} - {"thank"})
+
+
+def _praise_adjective(word: str) -> bool:
+    return "ADJ" in language.lemmas(word)
 
 
 def _adjective(terms: Terms, word: str) -> bool:
