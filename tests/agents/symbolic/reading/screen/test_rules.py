@@ -28,6 +28,7 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # a send to an account outside ("to my personal gmail")
         "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")
+        "unsupported",  # every one of a kind colleagues own ("wipe all the drives")
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
         "unsupported",  # a place outside ("... to the applicant's house on Elm Road")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand

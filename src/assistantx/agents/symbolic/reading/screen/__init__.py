@@ -44,8 +44,9 @@ outsider        a recipient who is nobody of the office ("for the man at the    
 unsupported     a service the office does not offer ("scan my contract",            declines
                 "make me a cup of tea"), a send to an outside account ("to my
                 personal gmail"), a request behind an owner's back ("borrow
-                Zhang's stapler without telling him"), or an absent owner's yes
-                said for them ("Otto is away, take his ruler, he won't mind")
+                Zhang's stapler without telling him"), an absent owner's yes
+                said for them ("Otto is away, take his ruler, he won't mind"),
+                or every one of a kind colleagues own ("wipe all the drives")
 ==============  ==================================================================  ==========
 
 The speech acts (wish, thanks, question, statement) are read by ``speech``: only a request moves the

@@ -42,9 +42,11 @@ _PARTICIPLE_TAILS = frozenset(
     }
 )
 # a determiner after a participle opens its object ("the printer's eaten *another* manifest",
-# "Zhang's broken *the* stapler"): a possessive's adjective never has one after it, so the
-# "'s" is "has"
-_OBJECT_DETERMINERS = english.words("object_starts") | frozenset({"another"})
+# "Zhang's broken *the* stapler", "someone's eaten *half* my lunch"): a possessive's adjective
+# never has one after it, so the "'s" is "has"
+_OBJECT_DETERMINERS = (
+    english.words("object_starts") | english.words("object_quantifiers") | frozenset({"another"})
+)
 # a change of state said with its result ("the light's gone amber", "screen's turned blue"):
 # the word after it says what the thing became, and the clause is still a statement
 _BECOME = frozenset({"gone", "turned", "become", "grown"})

@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
+from assistantx.agents.symbolic.reading.screen.everyones import everyones
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.facility_state_asked import facility_state_asked
@@ -76,6 +77,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unsupported", outside_account),
     ("unsupported", absent_owner),
     ("unsupported", covert),
+    # every one of a kind colleagues own ("wipe all the drives"): never the speaker's own one
+    ("unsupported", everyones),
     ("unsupported", break_in),
     ("unsupported", outside_place),
     ("unplaced", unplaced),
