@@ -88,7 +88,10 @@ class RequestScreen:
         """What is left of the message once the pieces that ask nothing are taken out,
         rewritten so the later stages can read it (``rewrites``)."""
         context = [
-            c for f in spoken.live if f.verdict in ("statement", "condition") for c in f.context
+            c
+            for f in spoken.live
+            if f.verdict in ("statement", "condition", "thanks")
+            for c in f.context
         ]
         left, anyone = anyones(spoken.left)  # "can someone lend me theirs": one, anyone's
         text, rewrites = rewrite(self.terms, spoken.msg, left, spoken.hints, context)
