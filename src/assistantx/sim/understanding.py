@@ -152,6 +152,13 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
             at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
             haystack = haystack.replace(f" {form} ", " | ")
             rest = rest.replace(f" {form} ", " | ")
+    # an operation's one-word verb that is also its machine's name, said as the verb asked
+    # for ("could you autoclave my glassware in the autoclave?"): the machine's name was
+    # taken out as a thing, but the work is asked for all the same
+    for kind, form in _verbs_named_as_machines(office, words, by_person):
+        asked = re.search(rf" (?:you|please|pls|plz) {re.escape(form)} ", original)
+        if asked is not None:
+            at[kind] = min(at.get(kind, len(original)), asked.start() + 1)
     # the English words of signing, sealing and sending, in what the office's words left
     for kind in (*by_person, FILE_KIND):
         for form in (f for w in words[kind] for f in word_forms(w)):
@@ -182,6 +189,23 @@ def facility_requests(office: Office, text: str) -> list[str]:
 
 # Before a thing's name, words that make it the thing: "at *the* heat press".
 _DETERMINERS = r"(?:the|a|an|my|your|our|their|his|her|this|that)"
+
+
+def _verbs_named_as_machines(
+    office: Office, words: dict[str, tuple[str, ...]], by_person: dict[str, tuple[str, ...]]
+) -> list[tuple[str, str]]:
+    """(request kind, word form) for each one-word verb of an operation that is also the
+    name of a facility ("autoclave", "microwave")."""
+    machines = {normalize(n) for f in office.facilities for n in (f.name, *f.synonyms)}
+    return [
+        (kind, form)
+        for kind in words
+        if kind not in by_person and kind != FILE_KIND
+        for w in words[kind]
+        if " " not in w
+        for form in word_forms(w)
+        if form in machines
+    ]
 
 
 def _without_things(text: str, things: list[str], products: set[str], verbs: set[str]) -> str:

@@ -376,6 +376,18 @@ class Roles:
             ]
         return [p for _, p in sorted(said)]
 
+    def _yes_in_group_since(self, role: Role, person: str, q: Question, ev: Evidence) -> bool:
+        """Whether ``person``, who answered ``q`` in their own chat, said yes in the group
+        after it: the newer answer wins. Not where their own item leaves them (that yes is
+        given in their own chat, runtime/consent.py)."""
+        group_q = self._group_asked(role, ev)
+        if role.own_item_leaves or group_q is None:
+            return False
+        mine = [t.time for t in ev.answers(q) if t.person == person]
+        since = max(mine) if mine else q.time
+        later = [t for t in ev.answers(group_q) if t.person == person and t.time > since]
+        return bool(later) and stance(later[-1].text) == "yes"
+
     def _exclusion(
         self, role: Role, person: str, ltm: LongTermMemory, ev: Evidence, now: float
     ) -> str | None:
@@ -392,8 +404,10 @@ class Roles:
         q = ev.asked(person, self.question(role, person))
         if q is not None:
             said = ev.stance_of(q, person)
-            if said == "no":
+            if said == "no" and not self._yes_in_group_since(role, person, q, ev):
                 return "said no"
+            if said == "no":
+                return None  # "sorry, I can't" in private, then "I can help" in the group
             if said is None and ev.expired(q):
                 return "did not answer"
             if (

@@ -66,6 +66,8 @@ _OWN = frozenset({"my", "our"})  # the requester's own thing
 _IN_PLACE = frozenset({"in", "at", "inside"})
 _RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
 _SUBJECTS = english.words("statement_subjects")
+# Where a spilled thing went ("got *on* my notes", "went *everywhere*"): no errand's words
+_SPREAD = frozenset({"on", "onto", "into", "in", "over", "all", "everywhere", "across"})
 _PLEASE = frozenset({"please", "pls", "plz", "plse", "pleeease"})
 _SUBJECT_VERB = english.words("subject_contractions")
 _STATE_VERBS = english.words("state_verbs")
@@ -626,6 +628,7 @@ class SpeechActs:
             and not self._named(w[0])
             and not possessive
             and not self._bare_subject(w)
+            and not self._thing_happened(w)
         ):
             return False
         # a subject may carry where its thing is ("the holly wreath on the reception desk
@@ -652,6 +655,19 @@ class SpeechActs:
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
         return False
+
+    def _thing_happened(self, w: list[str]) -> bool:
+        """ "coffee spilled all over my keyboard", "water got on my notes": a thing of the
+        office said bare, then a past verb that is no errand's: what happened, told (the
+        reason beside a request), not the thing asked for."""
+        if len(w) < 2 or w[0] not in self.lex.items:
+            return False
+        verb, cues = w[1], self.lex.cue_words
+        spread = w[2:3] and w[2] in _SPREAD  # "water got on my notes", "tea went everywhere"
+        errand = verb in cues or any(lemma in cues for lemma in language.verb_lemmas(verb))
+        if errand and not spread:
+            return False  # "coffee made for Wang": the errand's own verb, read as before
+        return language.is_past_verb(verb) and language.is_finite_verb(verb)
 
     def _in_office_phrase(self, w: list[str], n: int) -> bool:
         """Whether ``w[n]`` is the last word of a name of several words of the office's

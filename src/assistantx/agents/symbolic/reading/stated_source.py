@@ -2,6 +2,10 @@
 the rig, the art room has some", "... there are some in the art room", "... art room should
 have some" (the frames stage, once the tasks are read).
 
+A statement that a colleague has one ("need scissors, Sun Li has a pair", "I think Zhang has
+one", "Liu's got a spare stapler") names whom to borrow from, as "Sun Li's scissors" would;
+where the office knows of none of theirs, the requester is asked.
+
 A statement that a place or facility of the office has some (a modal may come before "have":
 "should", "might", "will"), or that there are some in/at it, names the source of the item the
 request leaves to anyone: the one kept there, as "cable ties from the art room" would. None
@@ -21,7 +25,9 @@ from assistantx.core.office import Office
 from assistantx.core.task_schema import Task
 
 # "has some", "should have a few": the words that say some are there (not which)
-_SOME = frozenset({"some", "them", "plenty", "loads", "lots", "spares", "spare", "few", "one"})
+_SOME = frozenset(
+    {"some", "them", "plenty", "loads", "lots", "spares", "spare", "few", "one", "pair"}
+)
 _HAVE = frozenset({"has", "have", "got", "keeps", "keep", "stocks"})
 _MODALS = frozenset({"should", "might", "may", "will", "would", "must", "probably", "definitely"})
 _BE = frozenset({"is", "are", "be", "were", "was"})
@@ -31,19 +37,31 @@ _FILLERS = frozenset({"the", "a", "an", "still", "also", "usually", "always", "s
 
 @dataclass(frozen=True)
 class StatedSource:
-    """A place or facility said to have some."""
+    """A place, facility or colleague said to have some."""
 
     place: str  # its name, as the office writes it
-    kind: Literal["facility", "place"]
-    where: str  # the facility's or location's id
+    kind: Literal["facility", "place", "person"]
+    where: str  # the facility's, location's or person's id
+    item: str | None = None  # the item type named after "has" ("has a spare stapler")
 
 
 def stated_sources(
     office: Office, tokens: Sequence[Token], mentions: Sequence[Mention]
 ) -> list[StatedSource]:
-    """The places the text says have some ("P has some", "there are some in P")."""
+    """The places the text says have some ("P has some", "there are some in P"), and the
+    colleagues ("Sun Li has a pair", "Liu's got a spare stapler")."""
     found: list[StatedSource] = []
     for m in mentions:
+        if m.kind == "person" and len(m.ids) == 1:
+            if _has_some_after(tokens, m.end, tokens[m.end - 1].possessive):
+                named = [
+                    n.ids[0]
+                    for n in mentions
+                    if n.kind == "item" and m.end <= n.start < m.end + 5 and len(n.ids) == 1
+                ]
+                name = office.person(m.ids[0]).name
+                found.append(StatedSource(name, "person", m.ids[0], named[0] if named else None))
+            continue
         if m.kind not in ("facility", "place"):
             continue
         if _has_some_after(tokens, m.end, tokens[m.end - 1].possessive) or _there_some_before(
@@ -108,11 +126,33 @@ def from_stated_source(
         if task.kind != "transfer" or task.item is None or task.owner or task.source:
             out.append(task)
             continue
+        # a colleague said to have another thing, or the one it goes to: not the source
+        fit = [
+            s
+            for s in sources
+            if s.kind != "person" or (s.item in (None, task.item) and s.where != task.recipient)
+        ]
+        if not fit:
+            out.append(task)
+            continue
+        sources = fit
         name = office.item_type(task.item).name
+        person = sources[0]
+        if all(s.kind == "person" and s.where == person.where for s in sources):
+            if person.where not in office.owners_of(task.item):
+                return [], (
+                    f"I don't know of any {name} of {person.place}'s. Where should I get one from?"
+                )
+            out.append(task.model_copy(update={"owner": person.where}))
+            continue
         if len({s.place for s in sources}) > 1:
-            places = " or ".join(f"the {s.place}" for s in sources)
+            places = " or ".join(
+                s.place if s.kind == "person" else f"the {s.place}" for s in sources
+            )
             return [], f"Where should I get the {name} from: {places}?"
         source = sources[0]
+        if source.kind == "person":  # a colleague said twice: the place's name is theirs
+            return [], f"Where should I get the {name} from?"
         there = items_kept_at(office, source.kind, source.where)
         kept = tuple(
             dict.fromkeys(

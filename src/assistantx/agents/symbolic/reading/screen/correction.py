@@ -13,12 +13,13 @@ from assistantx.core import language
 from assistantx.core.task_schema import Evidence
 
 # "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
-# a pen": the words after it correct
+# a pen", "- sorry, make that a water": the words after it correct
 # what was just said (only when they name one person or item, ``corrected``)
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
     r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|no(?=[,!.]))\b"
-    r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
+    r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?(?:[,]?\s*(?:actually,?\s*)?make\s+(?:it|that)\b)?"
+    r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
     r"[,:]?\s*",
     re.IGNORECASE,
 )
@@ -38,6 +39,7 @@ _NEXT_REQUEST = re.compile(
     re.IGNORECASE,
 )
 _TRAILING = " .…,;-–—"
+REPLACED = "means "  # the evidence's meaning where a person or item said was replaced
 
 
 def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
@@ -117,10 +119,30 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if new.kind == "item":
         said = terms.office.item_type(new.ids[0]).name
     between = before[old.end() :]
+    head = before[: old.start()]
+    if new.kind == "person" and not new.possessive:
+        head = _role_said_again(tokens, new, head)
     if new.kind == "person" and new.possessive:
         between = _owner_said_again(terms, between, said)
-    fixed = before[: old.start()] + said + between + rest
-    return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"means {said}")]
+    fixed = head + said + between + rest
+    return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{said}")]
+
+
+# The words that say which way a thing goes with a person: to them, or from them.
+_ROLE_WORDS = frozenset({"to", "from", "for"})
+_ROLE_BEFORE = re.compile(r"\b(to|from|for)(\s+)$", re.IGNORECASE)
+
+
+def _role_said_again(tokens: Sequence[Token], new: Mention, head: str) -> str:
+    """ "get a stapler to Zhang - sorry, I mean one FROM Zhang": a correction that says the
+    person with another "to"/"from" than before turns the way the thing goes, not only who:
+    the old word before the name is replaced with the new one."""
+    if new.start == 0 or tokens[new.start - 1].word not in _ROLE_WORDS:
+        return head
+    said = _ROLE_BEFORE.search(head)
+    if said is None or said.group(1).lower() == tokens[new.start - 1].word:
+        return head
+    return head[: said.start()] + tokens[new.start - 1].word + said.group(2)
 
 
 _OWNER_PRONOUN = re.compile(r"\b(?:his|her|their)\s+", re.IGNORECASE)

@@ -11,7 +11,7 @@ from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.asked_leave import asked_leave
 from assistantx.agents.symbolic.reading.screen.contracted_is import contracted_is
-from assistantx.agents.symbolic.reading.screen.correction import corrected
+from assistantx.agents.symbolic.reading.screen.correction import REPLACED, corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
@@ -73,7 +73,10 @@ class RequestScreen:
         ]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))
         msg = Message(
-            text=text, pieces=pieces(text, terms.lex.read, acts), lexed=terms.lex.read(text)
+            text=text,
+            pieces=pieces(text, terms.lex.read, acts),
+            lexed=terms.lex.read(text),
+            replaced=any(e.meaning.startswith(REPLACED) for e in fixes),
         )
         findings: list[Finding] = []
         for piece in msg.pieces:
@@ -88,7 +91,10 @@ class RequestScreen:
         """What is left of the message once the pieces that ask nothing are taken out,
         rewritten so the later stages can read it (``rewrites``)."""
         context = [
-            c for f in spoken.live if f.verdict in ("statement", "condition") for c in f.context
+            c
+            for f in spoken.live
+            if f.verdict in ("statement", "condition", "thanks")
+            for c in f.context
         ]
         left, anyone = anyones(spoken.left)  # "can someone lend me theirs": one, anyone's
         text, rewrites = rewrite(self.terms, spoken.msg, left, spoken.hints, context)

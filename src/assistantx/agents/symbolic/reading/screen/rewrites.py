@@ -12,6 +12,7 @@ from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.thanks import THANKED
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.agents.symbolic.reading.tokens import gaps
 from assistantx.agents.symbolic.reading.vocative import addressed_person
@@ -29,6 +30,9 @@ def rewrite(
     evidence: list[Evidence] = []
     # "Rhys has a spare one": the item a statement's "one" stood for, had by its subject
     held = {c.removeprefix(ONE_HELD) for c in context if c.startswith(ONE_HELD)}
+    # "thanks for the milk earlier! could you bring a bit more": more of the thing thanked for
+    thanked = [c.removeprefix(THANKED) for c in context if c.startswith(THANKED)]
+    context = [c for c in context if not c.startswith(THANKED)]
     context = [c.removeprefix(ONE_HELD) for c in context]
     text, found = purposes(terms, text)
     evidence += found
@@ -88,7 +92,22 @@ def rewrite(
         else:
             text, found = container_of(terms, text, thing)
             evidence += found
+    elif len(thanked) == 1 and not terms.names_an_item(text):
+        text, found = more_of_thanked(terms, text, thanked[0])
+        evidence += found
     return text, evidence
+
+
+def more_of_thanked(terms: Terms, text: str, item: str) -> tuple[str, list[Evidence]]:
+    """ "could you bring a bit more" after thanks for the milk: a milk, read as asked for;
+    a request with no such words keeps its reading."""
+    thing = terms.office.item_type(item).name
+    for phrase in terms.en.another_one:
+        match = re.search(rf"\b{re.escape(phrase)}\b", text, re.IGNORECASE)
+        if match:
+            evidence = [Evidence(words=match.group(0), meaning=f"more {thing}")]
+            return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
+    return text, []
 
 
 # "his yr9 scheme of work would you": a possessive, then up to six words to the clause's end

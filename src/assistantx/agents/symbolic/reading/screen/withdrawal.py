@@ -21,7 +21,7 @@ _CONTRACTED_WILL = re.compile(r"\w['’]ll\b", re.IGNORECASE)
 
 
 def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    found = withdrawal(terms, piece)
+    found = withdrawal(terms, piece, msg)
     if found is not None:
         msg.withdrawing = True
         return found
@@ -102,12 +102,15 @@ def _still_wanted(piece: Piece) -> bool:
     return bool(set(piece.words) & _PRONOUNS)
 
 
-def withdrawal(terms: Terms, piece: Piece) -> Finding | None:
+def withdrawal(terms: Terms, piece: Piece, msg: Message | None = None) -> Finding | None:
     if tuple(without_fillers(piece.words)) in terms.en.withdraw or piece.acts.withdrawal:
         return Finding("withdrawn", piece, "withdraws the request")
     said = tuple(w for w in piece.words if w not in ("oh", "ok", "okay", "wait", "hmm"))
     if piece.start > 0 and said in terms.en.elliptical_withdrawals:
         return Finding("withdrawn", piece, "withdraws what was asked before")
-    if piece.start > 0 and not piece.asks and piece.acts.had_already:
+    # "a coffee - sorry, make that a water, I've had 3 already": why the thing corrected away
+    # is not wanted (read as a statement); the corrected request stands
+    replaced = msg is not None and msg.replaced
+    if piece.start > 0 and not piece.asks and piece.acts.had_already and not replaced:
         return Finding("withdrawn", piece, "what was asked for is had already")
     return None
