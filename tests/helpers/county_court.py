@@ -15,7 +15,12 @@ _PEOPLE = (
     ob.person("omar", "Omar Fenwick", "case_papers", "courtroom_keys", "stapler"),
     ob.person("ruth", "Ruth Bridger", "case_papers", "cryovial"),
     ob.person("sam", "Sam Records", "case_papers", "courtroom_keys"),
-    ob.person("tess", "Tess Hale", "case_papers", "stapler", "charger"),
+    ob.person("tess", "Tess Hale", "case_papers", "stapler", "charger", "timesheet"),
+    ob.person(
+        "vera", "Vera Lind", "courtroom_keys", "stapler", "timesheet", aliases=["Judge's Clerk"]
+    ),
+    ob.person("wyn", "Wyn Moss", "stapler", "timesheet", aliases=["Head of Department"]),
+    ob.person("yara", "Yara Stone", "timesheet", aliases=["Director's PA", "practice manager"]),
 )
 
 
@@ -31,6 +36,7 @@ def raw_county_court() -> dict[str, Any]:
         item_types=[
             ob.item("stapler", "stapler"),
             ob.item("charger", "charger"),
+            ob.item("timesheet", "timesheet", "personal", signable=True, synonyms=["form"]),
             ob.item("courtroom_keys", "courtroom keys", synonyms=["keys"]),
             ob.item("case_papers", "case papers", "personal", synonyms=["case file"]),
             ob.item("cryovial", "cryovials", "personal", synonyms=["cryovial"]),
