@@ -15,7 +15,7 @@ _PEOPLE = (
     ob.person("omar", "Omar Fenwick", "case_papers", "courtroom_keys", "stapler"),
     ob.person("ruth", "Ruth Bridger", "case_papers", "cryovial"),
     ob.person("sam", "Sam Records", "case_papers", "courtroom_keys"),
-    ob.person("tess", "Tess Hale", "case_papers", "stapler", "charger", "timesheet"),
+    ob.person("tess", "Tess Hale", "case_papers", "stapler", "charger", "timesheet", "court_order"),
     ob.person(
         "vera", "Vera Lind", "courtroom_keys", "stapler", "timesheet", aliases=["Judge's Clerk"]
     ),
@@ -40,6 +40,9 @@ def raw_county_court() -> dict[str, Any]:
             ob.item("courtroom_keys", "courtroom keys", synonyms=["keys"]),
             ob.item("case_papers", "case papers", "personal", synonyms=["case file"]),
             ob.item("cryovial", "cryovials", "personal", synonyms=["cryovial"]),
+            ob.item("court_order", "court order", "personal", synonyms=["order", "judgment"]),
+            ob.item("copy", "photocopy", "product", synonyms=["copy"]),
+            ob.item("certified_copy", "certified copy", "product", synonyms=["sealed copy"]),
         ],
         operations=[
             ob.operation(
@@ -61,8 +64,17 @@ def raw_county_court() -> dict[str, Any]:
                 sends_out=True,
                 destination_asked="which lab",
             ),
+            ob.operation("photocopy", "photocopy", "copy", input="court_order", product="copy"),
+            ob.operation("certify", "certify", input="court_order", product="certified_copy"),
         ],
         facilities=[
+            ob.facility(
+                "copier",
+                "copier",
+                at="archive_room",
+                guards=["omar"],
+                operations=["photocopy", "certify"],
+            ),
             ob.facility(
                 "archive_desk",
                 "archive desk",

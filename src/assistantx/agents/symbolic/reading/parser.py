@@ -243,6 +243,7 @@ class InstructionParser:
                 sent_out=sent_out,
                 destination=destination,
                 errands=readings.errands,
+                whole=whole,
             )
             frame = _one_send_each(frame)
             # "print my file? it's Fern who needs the hard copy, not me": for Fern
