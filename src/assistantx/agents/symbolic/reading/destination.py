@@ -19,7 +19,9 @@ from assistantx.core import english, language
 
 # What ends a destination: a sentence or clause end, or a courtesy word after it.
 _END_MARKS = frozenset(".!?;,\n")
-_END_WORDS = frozenset({"please", "pls", "thanks", "thank", "thx", "asap", "today", "now"})
+_END_WORDS = frozenset(
+    {"please", "pls", "thanks", "thank", "thx", "asap", "today", "tonight", "tomorrow", "now"}
+)
 _TAIL_WORDS = 3  # the town (and postcode) after an address's comma
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
 # The object pronouns of a request whose item (and destination) a statement before it named.
@@ -109,6 +111,8 @@ def find_outside(
             to = k
             break
     means = _means_before(words, verb_start)
+    if to is None and means is None:
+        to = _at_a_name(tokens, gaps, verb_end, names)  # "archive it at Ironbridge Store"
     if to is None and means is not None:
         to = _to_before(words, gaps, means)  # "send my agreement to the council by courier"
     stop = len(tokens)
@@ -158,6 +162,26 @@ def find_outside(
         if phrase is None:
             start = end = None
     return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
+
+
+def _at_a_name(
+    tokens: Sequence[Token], gaps: Sequence[str], verb_end: int, names: Collection[int]
+) -> int | None:
+    """The "at" of the verb's clause before a proper name that names nothing of the office
+    ("archive my papers *at* Ironbridge Records Store"): where the service sends the item,
+    said as the place it ends up; "at" before anything else (a time, a desk) is none."""
+    for k in range(verb_end, len(tokens) - 1):
+        if _ends(gaps[k]) or tokens[k].word == "to":
+            return None
+        if (
+            tokens[k].word == "at"
+            and tokens[k + 1].text[:1].isupper()
+            and k + 1 not in names
+            and not _ends(gaps[k + 1])
+            and not language.is_weekday(tokens[k + 1].word)
+        ):
+            return k
+    return None
 
 
 def _means_before(words: Sequence[str], verb_start: int) -> int | None:

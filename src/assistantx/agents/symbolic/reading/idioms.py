@@ -5,6 +5,7 @@ it points at. The phrases are general English (``english.yaml``: ``verb_idioms``
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -27,3 +28,27 @@ def idiom_at(tokens: Sequence[Token], i: int) -> bool:
         ):
             return True
     return False
+
+
+# "could Mo put her signature on my form", "adding his signature to it": a person's signature
+# put on a paper is that person signing it (the verb's form kept: "putting" → "signing").
+_SIGNATURE_PUT = re.compile(
+    r"\b(?P<verb>put|puts|putting|add|adds|added|adding|stick|sticks|sticking)\s+"
+    r"(?:(?:her|his|their|your|my|our|a)\s+)?(?:own\s+)?signature\s+(?:on|onto|to)\b",
+    re.IGNORECASE,
+)
+_SIGN_FORMS = {"putting": "signing", "adding": "signing", "sticking": "signing"}
+
+
+def signature_put(text: str) -> str:
+    """The text with a signature said as put on a paper read as signing it ("could Mo put her
+    signature on my form" → "could Mo sign my form"); a signature asked for by name ("Mo's
+    signature on my form") is read by the signature's own rule."""
+
+    def sign(match: re.Match[str]) -> str:
+        verb = match.group("verb").lower()
+        if verb in _SIGN_FORMS:
+            return _SIGN_FORMS[verb]
+        return "signs" if verb.endswith("s") else "signed" if verb == "added" else "sign"
+
+    return _SIGNATURE_PUT.sub(sign, text)

@@ -301,6 +301,7 @@ class Lexicon:
             *(n for t in office.item_types for n in (t.name, *t.synonyms)),
             *(n for f in office.facilities for n in (f.name, *f.synonyms)),
             *(loc.name for loc in office.locations),
+            *(a for p in office.people for a in p.aliases),  # "the Judge's Clerk"
         ]
         lex.inner_possessives = frozenset(
             variant

@@ -81,6 +81,7 @@ class OperationChooser:
         sent_out: bool = False,
         destination: str | None = None,
         errands: frozenset[int] = frozenset(),
+        whole: Lexed | None = None,
     ) -> TaskFrame:
         """Name the operation where the office has several of a task's shape ("scan" or
         "copy" a contract); ask which when the words do not say. ``sent_out``: the requester
@@ -88,7 +89,8 @@ class OperationChooser:
         ``destination``: the requester's answer to "Where should I courier it to?", the place
         outside in their words where the request's own words named none.
         ``errands``: the tokens of hurrying verbs of an errand ("*run* it over to Will"),
-        never a service's verb."""
+        never a service's verb; ``whole``: the whole message, whose products named beside the
+        request (in a statement the screen set aside) say which service makes one."""
         # the words said as verbs: not those inside a thing's name ("an A1 print" names the
         # plot, its "print" is no print asked for), nor an errand's hurrying verb
         inside = {n for m in lexed.mentions if m.kind == "item" for n in range(m.start, m.end)}
@@ -102,6 +104,7 @@ class OperationChooser:
             for op in self.office.facility(m.ids[0]).operations
         }
         products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
+        named_products = {i for m in (whole or lexed).mentions if m.kind == "item" for i in m.ids}
         # "as label sheets", "into a PDF": the products the item is to be made into
         made = {
             i
@@ -151,6 +154,13 @@ class OperationChooser:
                 said = [op for op in ops if self._op_words[op.id] & words]
                 if not said:  # "put my contract in the scanner": the facility's own service
                     said = [op for op in ops if op.id in facility_ops]
+                if not said:
+                    # "a client wants a certified copy of her order, can you get one done?":
+                    # the product the message named (its longest name, as the lexicon reads
+                    # it: "certified copy", never its "copy") says which service makes it
+                    said = [
+                        op for op in ops if op.product is not None and op.product in named_products
+                    ]
                 if len(said) != 1:
                     names = " or ".join(op.name for op in ops)
                     return TaskFrame(

@@ -65,6 +65,7 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
+from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.named_once import the_one_named
@@ -189,6 +190,7 @@ class InstructionParser:
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
+        text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
         frame = self._frame(
@@ -241,6 +243,7 @@ class InstructionParser:
                 sent_out=sent_out,
                 destination=destination,
                 errands=readings.errands,
+                whole=whole,
             )
             frame = _one_send_each(frame)
             # "print my file? it's Fern who needs the hard copy, not me": for Fern

@@ -627,6 +627,7 @@ class SpeechActs:
             w[0] not in _SUBJECTS
             and not self._named(w[0])
             and not possessive
+            and not self._numbered_subject(w)
             and not self._bare_subject(w)
             and not self._thing_happened(w)
         ):
@@ -681,6 +682,20 @@ class SpeechActs:
             if phrase in lex.items or phrase in lex.facilities or phrase in lex.places:
                 return True
         return False
+
+    def _numbered_subject(self, w: list[str]) -> bool:
+        """ "Court 3 is locked", "bay 2's flooded": a noun and its number name a room or a
+        thing (whether the office lists it or not), a subject like "the lab", though the noun
+        alone may be a verb ("court", "room"); never a request's verb and its count ("print
+        3 copies", "need 2 pens")."""
+        return (
+            len(w) > 2
+            and w[0].isalpha()
+            and any(c.isdigit() for c in w[1])
+            and (w[2] in _BARE_COPULAS or language.is_past_participle(w[2]))  # "3's locked"
+            and w[0] not in self.lex.cue_words
+            and w[0] not in _MODALS | _AUX | _NEED | _WILLING | _PLEASE
+        )
 
     def _bare_subject(self, w: list[str]) -> bool:
         """ "kettle is broken", "uv bulb has gone": chat drops the subject's article; one to

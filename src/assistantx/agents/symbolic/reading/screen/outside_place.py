@@ -20,6 +20,8 @@ is the office's; a send-out service named beside it sends things there, read as 
 
 from __future__ import annotations
 
+import itertools
+
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.outsider import sends_out
@@ -44,6 +46,8 @@ _SPEAKER = frozenset({"i", "we", "id", "im", "need", "want", "like"})
 _STREETS = english.words("street_words")
 _TO = frozenset({"to", "round", "over", "at"})
 _REACH = 5  # "to the new applicant's house": the words between "to" and the place
+# After "go", the words of going somewhere ("go to", "go down to", "go over to")
+_TO_GO = frozenset({"to", "down", "over", "round", "across", "into"})
 
 
 def _outside_at(piece: Piece, office_at: set[int]) -> bool:
@@ -143,10 +147,13 @@ def _own_plan(terms: Terms, piece: Piece) -> bool:
 def _told_to_go(terms: Terms, piece: Piece) -> bool:
     """ "drive over to ...", "run to the pharmacy and ...": a verb the office has no word for
     opening the piece, told to the robot (no "I"/"we" before it: "I need to pop to the bank"
-    is the speaker's own plan)."""
+    is the speaker's own plan); "go to ..." too, though "go" and "to" are lead-in words ("go
+    print it")."""
     verb = piece.verb_at(terms.en.lead_in)
     if verb >= len(piece.words) or _SPEAKER.intersection(piece.words[:verb]):
         return False
+    if any(a == "go" and b in _TO_GO for a, b in itertools.pairwise(piece.words[: verb + 1])):
+        return True  # "go to the Starbucks across the street and ...": "go" is a lead-in word
     return bool(language.verb_lemmas(piece.words[verb]))
 
 
