@@ -34,6 +34,10 @@ def test_the_corrected_thing_is_made(text: str, item: str) -> None:
     [
         ("i need to get a stapler to Zhang - sorry, I mean I need one FROM Zhang", "zhang", "lee"),
         ("i need to get a stapler to Zhang - sorry, I mean from Zhang", "zhang", "lee"),
+        # the receiver named with no "to" ("bring Zhang a stapler"): from them, to the speaker
+        ("bring Zhang a stapler - sorry, I mean one from Zhang", "zhang", "lee"),
+        ("get Zhang a stapler, sorry, I meant one from Zhang", "zhang", "lee"),
+        ("grab Wang a stapler - no wait, I mean one from Wang", "wang", "lee"),
         ("get a stapler from Zhang, sorry, I mean to Zhang", None, "zhang"),
         ("take my book to Wang - sorry, I mean to Zhang", "lee", "zhang"),
         ("take my document to Wang, no wait, not to Wang, to Zhang", "lee", "zhang"),

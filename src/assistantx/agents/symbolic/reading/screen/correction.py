@@ -121,6 +121,13 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     between = before[old.end() :]
     head = before[: old.start()]
     if new.kind == "person" and not new.possessive:
+        same = old.group(0).lower() in {n.lower() for n in spellings(terms, "person", fix)}
+        if same and _turned_from_receiver(tokens, new, head):
+            # "bring Zhang a stapler - sorry, I mean one from Zhang": the person named as the
+            # receiver, with no "to" to turn, is who it comes from; it goes to the speaker
+            fixed = f"{head}me{between.rstrip(_TRAILING)} from {said}{rest}"
+            meaning = f"{REPLACED}{said}, as whom it comes from"
+            return fixed, [Evidence(words=text[match.start() :].strip(), meaning=meaning)]
         head = _role_said_again(tokens, new, head)
     if new.kind == "person" and new.possessive:
         between = _owner_said_again(terms, between, said)
@@ -143,6 +150,22 @@ def _role_said_again(tokens: Sequence[Token], new: Mention, head: str) -> str:
     if said is None or said.group(1).lower() == tokens[new.start - 1].word:
         return head
     return head[: said.start()] + tokens[new.start - 1].word + said.group(2)
+
+
+def _turned_from_receiver(tokens: Sequence[Token], new: Mention, head: str) -> bool:
+    """Whether a correction says the person "from" whom the thing comes where the request
+    named them, with no "to"/"from"/"for" before, as its receiver ("bring *Zhang* a
+    stapler"): only a name right after the request's first verb."""
+    if new.start == 0 or tokens[new.start - 1].word != "from":
+        return False
+    if _ROLE_BEFORE.search(head):
+        return False  # "to Zhang": turned by _role_said_again
+    words = re.findall(r"[^\W\d_]+", head.lower())
+    return bool(words) and words[-1] in _GIVING_VERBS
+
+
+# a verb whose first object is who receives ("bring *Zhang* a stapler", "get her one")
+_GIVING_VERBS = frozenset({"bring", "get", "take", "fetch", "grab", "hand", "give", "pass"})
 
 
 _OWNER_PRONOUN = re.compile(r"\b(?:his|her|their)\s+", re.IGNORECASE)
