@@ -60,6 +60,7 @@ _SKIP_AFTER_JOIN = english.words("skip_after_join")
 _SUBJECT_SELF = english.words("self_subjects")
 _WISH_VERBS = english.words("wish_verbs")
 _IN_ADDITION = english.words("in_addition")
+_REQUEST_MODALS = english.words("request_modals")
 # the cues of a clause that hands things over, whose coordinated objects are its own
 _HANDING_CUES = frozenset({"give", "make", "send"})
 
@@ -103,6 +104,8 @@ class FrameReader:
         last_person: list[str] = []
         objects: list[Mention] = []
         previous_cues = True
+        previous_roles = Roles()  # the roles of the clause before
+        previous_asked: list[str] = []  # whom the clause before asked ("could Liu read ...")
         previous_need = False  # the clause before said someone needs something
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
@@ -178,11 +181,16 @@ class FrameReader:
                 made = []
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
+                # "can Zhang check my report and sign it": the one asked to look it over
+                asked = [*previous_roles.actor, *previous_roles.bare, *previous_asked]
+                made = [_by_the_one_asked(t, asked, requester) for t in made]
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
                 # "get my lunch out of the fridge and heat it": one errand, on the item
                 # fetched ("the parcel in the post room ..., courier it": the one kept there)
                 made = [self._on_fetched(tasks.pop(), made[0], requester)]
             previous_cues = bool(clause.cues)
+            previous_roles = roles
+            previous_asked = _asked_subjects(tokens, clause)
             if made:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
@@ -693,6 +701,32 @@ def _for_another(earlier: Task, task: Task, clause: Clause, requester: str) -> b
         and earlier.recipient == requester
         and task.recipient != requester
     )
+
+
+def _by_the_one_asked(task: Task, asked: Sequence[str], requester: str) -> Task:
+    """A person's work on "it" (a signature) whose doer is unsaid, after a clause with no
+    work of its own that asks a colleague to look the item over ("can Zhang check my report
+    and sign it", "ask Zhang to read my contract and sign it"): that colleague does it. The
+    subject of a statement ("Zhang has my report") is no party, so never the doer."""
+    if task.actor is not None or task.kind not in task_kinds.person_kinds():
+        return task
+    if task_kinds.needs_tool(task.kind):
+        return task
+    doer = next((p for p in asked if p != requester), None)
+    return task if doer is None else task.model_copy(update={"actor": doer})
+
+
+def _asked_subjects(tokens: Sequence[Token], clause: Clause) -> list[str]:
+    """The colleagues a clause asks something of as the subject of a request's modal
+    ("could Liu Yang read my report": Liu, whatever the verb's form)."""
+    return [
+        m.ids[0]
+        for m in clause.mentions
+        if m.kind == "person"
+        and len(m.ids) == 1
+        and m.start > 0
+        and tokens[m.start - 1].word in _REQUEST_MODALS
+    ]
 
 
 def _first_leg(earlier: Task, made: list[Task]) -> bool:
