@@ -61,6 +61,8 @@ _SUBJECT_SELF = english.words("self_subjects")
 _WISH_VERBS = english.words("wish_verbs")
 _IN_ADDITION = english.words("in_addition")
 _REQUEST_MODALS = english.words("request_modals")
+_PAPER_NOUNS = english.words("paper_nouns") | english.words("paper_heads")
+_DEFINITE = frozenset({"the", "this", "that", "our"})
 # the cues of a clause that hands things over, whose coordinated objects are its own
 _HANDING_CUES = frozenset({"give", "make", "send"})
 
@@ -481,7 +483,8 @@ class FrameReader:
         named = first_part_item(self.office, readings.mentions, prop, requester)
         if named is not None:
             return task.model_copy(update={"item": named, "owner": task.owner or requester})
-        if _my_unknown_words(readings) != 1:
+        mine = _my_unknown_words(readings)
+        if mine != 1 and not (mine == 0 and _unlisted_papers(readings) == 1):
             return task
         person = self.office.person(requester)
         fits = [o.type for o in person.owns if getattr(self.office.item_type(o.type), prop)]
@@ -650,6 +653,28 @@ def _my_unknown_words(readings: Readings) -> int:
         and tokens[k + 1].word.isalpha()
         and not any(c in ".,;:!?" for c in readings.gaps[k + 1])
     )
+
+
+def _unlisted_papers(readings: Readings) -> int:
+    """How many times the request names a paper by words the lexicon read as no name of
+    the office, headed by a word for a paper ("the sampling plan", "this risk assessment",
+    "the rota"): a definite word, up to two plain words, then the paper's noun."""
+    tokens, mentions = readings.tokens, readings.mentions
+    named = {k for m in mentions if m.kind != "word" for k in range(m.start, m.end)}
+    count = 0
+    for k, t in enumerate(tokens):
+        if t.word not in _PAPER_NOUNS or k in named:
+            continue
+        j = k - 1
+        while j >= 0 and k - j <= 3 and tokens[j].word not in _DEFINITE:
+            if j in named or not tokens[j].word.isalpha():
+                break
+            if any(c in ".,;:!?" for c in readings.gaps[j + 1]):
+                break
+            j -= 1
+        if j >= 0 and tokens[j].word in _DEFINITE:  # "this" may be read as a pronoun
+            count += 1
+    return count
 
 
 def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:
