@@ -1,7 +1,8 @@
 """A field survey hut for the reader's tests of blind round 50's signer classes (the round's
 own office and sentences were never read): colleagues usually called by title and surname
 ("Dr Halvorsen", "Ms Adeyemi") who sign the requester's paper, a signable paper type with
-other names than the one a request may use, and a stores room with a supply for anyone."""
+other names than the one a request may use, a stores room with a supply for anyone, and van
+keys two colleagues keep in a key safe."""
 
 from __future__ import annotations
 
@@ -9,10 +10,11 @@ from typing import Any
 
 from helpers import office_builder as ob
 
+_KEYS = ob.kept("van_keys", at="yard", facility="key_safe")
 _PEOPLE = (
-    ob.person("okafor", "Ada Okafor", "gauge"),
+    ob.person("okafor", "Ada Okafor", "gauge", _KEYS),
     ob.person("halvorsen", "Ingrid Halvorsen", aliases=["Dr Halvorsen", "Dr. Halvorsen"]),
-    ob.person("adeyemi", "Ruth Adeyemi", "gauge", aliases=["Ms Adeyemi"]),
+    ob.person("adeyemi", "Ruth Adeyemi", "gauge", _KEYS, aliases=["Ms Adeyemi"]),
     ob.person("miles", "Miles Brook", "gauge", "clipboard"),
     ob.person("pim", "Pim Vos", "clipboard"),
 )
@@ -37,10 +39,12 @@ def raw_survey_hut() -> dict[str, Any]:
                 synonyms=["paper", "document", "report", "contract"],
             ),
             ob.item("vest", "hi-vis vest", consumable=True, synonyms=["vest"]),
+            ob.item("van_keys", "van keys", "personal", synonyms=["keys"]),
         ],
         operations=[],
         facilities=[
             ob.facility("stores_shelf", "stores", at="stores", guards=["pim"], supplies=["vest"]),
+            ob.facility("key_safe", "key safe", at="yard", guards=["pim"]),
         ],
         everyone_owns=["paper"],
         home="stores",

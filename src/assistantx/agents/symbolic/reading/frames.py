@@ -204,6 +204,7 @@ class FrameReader:
         tasks = [self._given_back(t, holder) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
+        tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
         tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
         question = (
@@ -491,6 +492,31 @@ class FrameReader:
         if len(fits) != 1:
             return task
         return task.model_copy(update={"item": fits[0], "owner": task.owner or requester})
+
+    def _kept_fragment(
+        self, task: Task, clauses: Sequence[Clause], gaps: Sequence[str], requester: str
+    ) -> Task:
+        """ "lunch. fridge. pls", "keys - key safe - now": terse fragments that name a
+        personal item and, in a fragment of its own with no verb, the facility where the
+        requester's own item of that type is kept: the requester's own. Nobody's said, and
+        the requester keeps none there, whose is still asked."""
+        if task.kind != "transfer" or task.owner is not None or task.item is None:
+            return task
+        if self.reader.kinds[task.item] != "personal" or task.source is not None:
+            return task
+        keeper = self.office.keeper(requester, task.item)
+        if keeper is None:
+            return task
+        for c in clauses:
+            if c.cues:
+                continue
+            there = [m for m in c.mentions if m.kind == "facility" and keeper.id in m.ids]
+            alone = all(m.kind in ("facility", "word") for m in c.mentions)
+            # "lunch, fridge, now pls": set off by a comma or dash in the item's own clause
+            set_off = any(any(ch in gaps[m.start] for ch in ",-–—/") for m in there)
+            if there and (alone or set_off):
+                return task.model_copy(update={"owner": requester})
+        return task
 
     def _named_elsewhere(
         self,

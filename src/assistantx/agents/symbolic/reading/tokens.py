@@ -16,7 +16,8 @@ from assistantx.core import language
 from assistantx.memory.names import TITLES
 
 _SENTENCE_END = re.compile(r"[.!?;\n]")
-_PAUSE = re.compile(r"[,:]")
+# a comma, a colon, or a dash set off by spaces ("keys - key safe - now"): not "hi-vis"
+_PAUSE = re.compile(r"[,:]|\s[-–—]+\s")
 
 
 @dataclass(frozen=True)
