@@ -60,6 +60,9 @@ _SKIP_AFTER_JOIN = english.words("skip_after_join")
 _SUBJECT_SELF = english.words("self_subjects")
 _WISH_VERBS = english.words("wish_verbs")
 _IN_ADDITION = english.words("in_addition")
+_REQUEST_MODALS = english.words("request_modals")
+_PAPER_NOUNS = english.words("paper_nouns") | english.words("paper_heads")
+_DEFINITE = frozenset({"the", "this", "that", "our"})
 # the cues of a clause that hands things over, whose coordinated objects are its own
 _HANDING_CUES = frozenset({"give", "make", "send"})
 
@@ -103,6 +106,8 @@ class FrameReader:
         last_person: list[str] = []
         objects: list[Mention] = []
         previous_cues = True
+        previous_roles = Roles()  # the roles of the clause before
+        previous_asked: list[str] = []  # whom the clause before asked ("could Liu read ...")
         previous_need = False  # the clause before said someone needs something
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
@@ -178,11 +183,16 @@ class FrameReader:
                 made = []
             if made and tasks and not previous_cues and self._refers_back(clause):
                 tasks.pop()  # "my lunch is in the fridge, please heat it up": context only
+                # "can Zhang check my report and sign it": the one asked to look it over
+                asked = [*previous_roles.actor, *previous_roles.bare, *previous_asked]
+                made = [_by_the_one_asked(t, asked, requester) for t in made]
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
                 # "get my lunch out of the fridge and heat it": one errand, on the item
                 # fetched ("the parcel in the post room ..., courier it": the one kept there)
                 made = [self._on_fetched(tasks.pop(), made[0], requester)]
             previous_cues = bool(clause.cues)
+            previous_roles = roles
+            previous_asked = _asked_subjects(tokens, clause)
             if made:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
@@ -194,6 +204,7 @@ class FrameReader:
         tasks = [self._given_back(t, holder) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
+        tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
         tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
         question = (
@@ -473,13 +484,39 @@ class FrameReader:
         named = first_part_item(self.office, readings.mentions, prop, requester)
         if named is not None:
             return task.model_copy(update={"item": named, "owner": task.owner or requester})
-        if _my_unknown_words(readings) != 1:
+        mine = _my_unknown_words(readings)
+        if mine != 1 and not (mine == 0 and _unlisted_papers(readings) == 1):
             return task
         person = self.office.person(requester)
         fits = [o.type for o in person.owns if getattr(self.office.item_type(o.type), prop)]
         if len(fits) != 1:
             return task
         return task.model_copy(update={"item": fits[0], "owner": task.owner or requester})
+
+    def _kept_fragment(
+        self, task: Task, clauses: Sequence[Clause], gaps: Sequence[str], requester: str
+    ) -> Task:
+        """ "lunch. fridge. pls", "keys - key safe - now": terse fragments that name a
+        personal item and, in a fragment of its own with no verb, the facility where the
+        requester's own item of that type is kept: the requester's own. Nobody's said, and
+        the requester keeps none there, whose is still asked."""
+        if task.kind != "transfer" or task.owner is not None or task.item is None:
+            return task
+        if self.reader.kinds[task.item] != "personal" or task.source is not None:
+            return task
+        keeper = self.office.keeper(requester, task.item)
+        if keeper is None:
+            return task
+        for c in clauses:
+            if c.cues:
+                continue
+            there = [m for m in c.mentions if m.kind == "facility" and keeper.id in m.ids]
+            alone = all(m.kind in ("facility", "word") for m in c.mentions)
+            # "lunch, fridge, now pls": set off by a comma or dash in the item's own clause
+            set_off = any(any(ch in gaps[m.start] for ch in ",-–—/") for m in there)
+            if there and (alone or set_off):
+                return task.model_copy(update={"owner": requester})
+        return task
 
     def _named_elsewhere(
         self,
@@ -644,6 +681,28 @@ def _my_unknown_words(readings: Readings) -> int:
     )
 
 
+def _unlisted_papers(readings: Readings) -> int:
+    """How many times the request names a paper by words the lexicon read as no name of
+    the office, headed by a word for a paper ("the sampling plan", "this risk assessment",
+    "the rota"): a definite word, up to two plain words, then the paper's noun."""
+    tokens, mentions = readings.tokens, readings.mentions
+    named = {k for m in mentions if m.kind != "word" for k in range(m.start, m.end)}
+    count = 0
+    for k, t in enumerate(tokens):
+        if t.word not in _PAPER_NOUNS or k in named:
+            continue
+        j = k - 1
+        while j >= 0 and k - j <= 3 and tokens[j].word not in _DEFINITE:
+            if j in named or not tokens[j].word.isalpha():
+                break
+            if any(c in ".,;:!?" for c in readings.gaps[j + 1]):
+                break
+            j -= 1
+        if j >= 0 and tokens[j].word in _DEFINITE:  # "this" may be read as a pronoun
+            count += 1
+    return count
+
+
 def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:
     """A clause from ``first`` on that only names one person (an answer like "Zhang Wei" or
     "I mean Wang"): its index and the person."""
@@ -693,6 +752,32 @@ def _for_another(earlier: Task, task: Task, clause: Clause, requester: str) -> b
         and earlier.recipient == requester
         and task.recipient != requester
     )
+
+
+def _by_the_one_asked(task: Task, asked: Sequence[str], requester: str) -> Task:
+    """A person's work on "it" (a signature) whose doer is unsaid, after a clause with no
+    work of its own that asks a colleague to look the item over ("can Zhang check my report
+    and sign it", "ask Zhang to read my contract and sign it"): that colleague does it. The
+    subject of a statement ("Zhang has my report") is no party, so never the doer."""
+    if task.actor is not None or task.kind not in task_kinds.person_kinds():
+        return task
+    if task_kinds.needs_tool(task.kind):
+        return task
+    doer = next((p for p in asked if p != requester), None)
+    return task if doer is None else task.model_copy(update={"actor": doer})
+
+
+def _asked_subjects(tokens: Sequence[Token], clause: Clause) -> list[str]:
+    """The colleagues a clause asks something of as the subject of a request's modal
+    ("could Liu Yang read my report": Liu, whatever the verb's form)."""
+    return [
+        m.ids[0]
+        for m in clause.mentions
+        if m.kind == "person"
+        and len(m.ids) == 1
+        and m.start > 0
+        and tokens[m.start - 1].word in _REQUEST_MODALS
+    ]
 
 
 def _first_leg(earlier: Task, made: list[Task]) -> bool:

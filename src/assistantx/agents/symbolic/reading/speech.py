@@ -99,6 +99,8 @@ _DEFERRALS = tuple(tuple(p.split()) for p in english.entries("deferrals"))
 _SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ill", "im", "ive", "wed", "well"})
 NEED_PHRASES = tuple(tuple(p.split()) for p in english.entries("need_phrases"))
 _YOU = frozenset({"you", "u", "ya"})
+# "would you be so kind as to ...", "would you be good enough to ...": the asked one's grace
+_GRACIOUS = english.words("gracious_asks")
 # How far a statement's verb is looked for after its subject: six words for a plain subject,
 # ten where it carries a phrase of place ("the holly wreath on the reception desk is ...").
 _PLAIN_SUBJECT = 7
@@ -507,6 +509,21 @@ class SpeechActs:
                 return True
         return False
 
+    def _graciously_asked(self, rest: list[str]) -> bool:
+        """ "be so kind as to get ...", "be good enough to bring ...": after "would you", the
+        asked one's grace, then "to" and a task's word ("... to tell me where Bo sits" is
+        still a question)."""
+        if rest[:1] != ["be"]:
+            return False
+        grace = next((n for n, w in enumerate(rest[1:4], 1) if w in _GRACIOUS), None)
+        if grace is None:
+            return False
+        after = rest[grace + 1 : grace + 4]
+        if "to" not in after or after.index("to") + 1 >= len(after):
+            return False
+        verb = after[after.index("to") + 1]
+        return bool(language.verb_lemmas(verb) & self.lex.cue_words)
+
     @staticmethod
     def _asks_you(w: list[str]) -> bool:
         """ "could you ...", "if you could ...": someone is asked to do something."""
@@ -539,6 +556,8 @@ class SpeechActs:
             return "info"  # "can you even carry a tea without spilling it?"
         if first in _MODALS and second in _YOU and w[2:5] == ["be", "able", "to"]:
             return "polite"  # "would you be able to bring me a pen?": asked, politely
+        if first in _MODALS and second in _YOU and self._graciously_asked(w[2:]):
+            return "polite"  # "would you be so kind as to get Ms Ede to sign my plan?"
         if first in _MODALS and asked and "be" in w[2:4]:
             return "info"  # "will Ray be in tomorrow?"
         if first in _MODALS and second in _YOU and self._ability_only(w[2:]):

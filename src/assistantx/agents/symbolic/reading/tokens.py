@@ -16,7 +16,8 @@ from assistantx.core import language
 from assistantx.memory.names import TITLES
 
 _SENTENCE_END = re.compile(r"[.!?;\n]")
-_PAUSE = re.compile(r"[,:]")
+# a comma, a colon, or a dash set off by spaces ("keys - key safe - now"): not "hi-vis"
+_PAUSE = re.compile(r"[,:]|\s[-–—]+\s")
 
 
 @dataclass(frozen=True)
@@ -46,6 +47,8 @@ def tokenize(text: str) -> tuple[Token, ...]:
     out: list[Token] = []
     for n, match in enumerate(found):
         raw = match.group(0)
+        if _bare_apostrophe(flat, match.start(), match.end()):
+            raw += "'"  # "James' stapler", "miles' gauge": the apostrophe is the word's
         lower = language.fold(raw)
         possessive = lower.endswith("'s") or lower.endswith("s'")
         word = re.sub(r"'s$|'$", "", lower).replace("'", "")
@@ -55,6 +58,17 @@ def tokenize(text: str) -> tuple[Token, ...]:
         opens = n == 0 or bool(_SENTENCE_END.search(gap))
         out.append(Token(raw, word, possessive, word, opens, after_pause=bool(_PAUSE.search(gap))))
     return tuple(out)
+
+
+def _bare_apostrophe(flat: str, start: int, end: int) -> bool:
+    """Whether the word at ``start:end`` of ``flat`` ends in "s" with an apostrophe right
+    after it and no letter after that ("James' stapler", "miles' gauge"): a plural or a
+    name's possessive, not a closing quote ("the 'boss' stapler" opened one before it)."""
+    if flat[end : end + 1] != "'" or not flat[start:end].lower().endswith("s"):
+        return False
+    if start > 0 and flat[start - 1] == "'":
+        return False
+    return end + 1 >= len(flat) or not flat[end + 1].isalnum()
 
 
 def gaps(text: str, tokens: Sequence[Token]) -> tuple[str, ...]:

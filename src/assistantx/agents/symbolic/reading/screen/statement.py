@@ -19,9 +19,10 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import language, wording
 from assistantx.core.english import entries as english_entries
 from assistantx.core.english import words as english_words
+from assistantx.core.office import Facility
 
 
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -51,6 +52,9 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         and any(own_lack(terms, msg, p) for p in msg.pieces if p is not piece)
     ):
         return Finding("statement", piece, "the speaker's own plan to get more, context only")
+    offered = lack_offer(terms, msg, piece) if not piece.asks else None
+    if offered is not None:
+        return offered
     praise = not piece.asks and praise_remark(piece)
     if not praise and (piece.asks or not piece.acts.statement):
         return None
@@ -383,6 +387,7 @@ _HOMES = english_words("home_nouns")
 _HOME_DETERMINERS = frozenset({"my", "our", "the", "his", "her"})
 _SUPPLY_OPENERS = _phrases("own_supply_openers")
 _SUPPLY_VERBS = english_words("own_supply_verbs")
+_SELF_LACKS = _phrases("self_lack_phrases")
 
 
 def _said_at(words: Sequence[str], phrase: tuple[str, ...]) -> list[int]:
@@ -426,7 +431,7 @@ def own_lack(terms: Terms, msg: Message, piece: Piece) -> bool:
         return False
     words = piece.words
     if not any(_said_at(words, lack) for lack in _LACKS) and not (
-        words[:1] == ["no"] and "left" in words
+        words[:1] == ["no"] and ("left" in words or _at_home(words))
     ):
         return False
     others = [p for p in msg.pieces if p is not piece]
@@ -438,6 +443,55 @@ def own_lack(terms: Terms, msg: Message, piece: Piece) -> bool:
     ):
         return False  # "out of pens at home, can you bring me one?": asked
     return _at_home(words) or bool(plans)
+
+
+def lack_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | None:
+    """ "I'm out on a job in twenty minutes and I haven't got a hi-vis vest": the speaker's
+    own lack of a thing the office keeps for anyone, with no request anywhere in the message,
+    is met with an offer ("Shall I bring you a hi-vis vest from the stores?"), never fetched
+    on the statement alone. A lack said of home, or beside the speaker's own plan to get
+    more ("out of paper at home, will buy some"), stays words (``own_lack``)."""
+    acts = piece.acts
+    if acts.request or acts.imperative or acts.question is not None or acts.condition:
+        return None
+    words = piece.words
+    if not any(_said_at(words, lack) for lack in _SELF_LACKS) or _at_home(words):
+        return None
+    items = terms.named(piece.lexed, "item")
+    if len(items) != 1:
+        return None
+    t = terms.office.item_type(items[0])
+    supplier = terms.office.supplier(items[0]) or _maker(terms, items[0])
+    if supplier is None or t.kind not in ("belonging", "product"):
+        return None
+    others = [p for p in msg.pieces if p is not piece]
+    if any(own_supply(p.words) for p in msg.pieces):
+        return None  # "I haven't got a pen, I'll grab one on the way": their own plan
+    if any(
+        p.asks or p.acts.request or p.acts.imperative or p.acts.question is not None for p in others
+    ):
+        return None  # a request beside it is read as usual
+    a_thing = wording.a_thing(t.name, mass=t.mass)
+    one = "some" if a_thing.startswith("some ") else "one"
+    verb = "get" if t.kind == "product" else "bring"
+    return Finding(
+        "statement",
+        piece,
+        f"the speaker's lack of {a_thing}, which the {supplier.name} keeps: offered",
+        message=f"The {supplier.name} can give you {a_thing}.",
+        offer=f"{verb} me {a_thing}",
+        shall=f"Shall I {verb} you {one}?",
+    )
+
+
+def _maker(terms: Terms, item: str) -> Facility | None:
+    """The facility that makes ``item`` from nothing for anyone (a cupboard that hands out
+    notepads, a coffee machine), if any."""
+    free = {o.id for o in terms.office.operations if o.product == item and o.input is None}
+    return next(
+        (f for f in terms.office.facilities if item in f.products and set(f.operations) & free),
+        None,
+    )
 
 
 _DEGREES = english_words("remark_degrees")
