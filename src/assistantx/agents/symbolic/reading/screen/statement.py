@@ -95,7 +95,7 @@ def obligation_asked(msg: Message, piece: Piece) -> bool:
         again = any(
             m.ids and m.ids[0] in work and p.lexed.tokens[m.start].word in _PARTICIPLES
             for m in cues
-        )
+        ) or any(t.word in _WORK_DONE for t in p.lexed.tokens)  # "get that done"
         for m in p.lexed.mentions:
             if m.kind in ("item", "person", "facility"):
                 return False
@@ -116,6 +116,8 @@ def owner_work_asked(msg: Message, piece: Piece) -> bool:
 
 _COPULAS = english_words("copulas")
 _PARTICIPLES = english_words("service_participles")
+# the work said again without its verb ("could you get that *done*", "have it *sorted*")
+_WORK_DONE = frozenset({"done", "sorted", "handled"})
 
 # The words of going before a statement's destination ("has to go *off to* Galway"); the
 # readings stage (``destination``) reads the same "to" as where a send-out sends "it".
