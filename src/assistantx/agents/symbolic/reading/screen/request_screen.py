@@ -147,7 +147,7 @@ class RequestScreen:
             # "Min needs scissors.": restate and ask before moving; not "Robin needs to sign
             # my report.", its owner's request for the signature
             out.confirm = not all(owner_work_asked(spoken.msg, p) for p in needs)
-        if unasked(kept):
+        if unasked(terms, kept):
             # nothing asked, and no request said short: told, so restate it and ask first
             out.confirm = True
         out.evidence += request.evidence

@@ -5,17 +5,19 @@ must not become one because a word of it names a colleague or a thing. The rules
 statements read the kinds of telling they know; this is the net under them, for the kinds no
 rule knows yet, on any office.
 
-A piece asks when it has request wording (an imperative, a polite question, one's own need, a
-third person's need, someone's work on the speaker's thing), a question mark, or a word that
-asks however short it is ("pls", "asap", "thanks"). A bare fragment that opens with the thing
-wanted, after its determiners, owner and describing words ("stapler", "my lunch from the
-fridge", "Wang's stapler on my desk", "two coffees"), is a request said short and is read as
-before."""
+A piece asks when it has request wording (an imperative or a plain verb first, a polite
+question, one's own need, a third person's need, someone's work on the speaker's thing), a
+question mark, or a word that asks however short it is ("pls", "asap", "thanks"). A bare
+fragment that opens with the thing wanted, after its determiners, owner and describing
+words ("stapler", "my lunch from the fridge", "Wang's stapler on my desk", "two coffees",
+"something to cut this with"), is a request said short and is read as before."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.destructive import commanded
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.pieces import Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english, language
 
@@ -27,11 +29,12 @@ _QUANTITIES = english.words("object_quantifiers") | frozenset(
     {"some", "any", "another", "more", "one", "few", "couple", "of", "extra", "spare", "new"}
 )
 _OWN = frozenset({"my", "our", "your", "his", "her", "their"})
+_ANY_THING = frozenset({"something", "anything", "smth", "sth", "summat"})
 
 
-def unasked(kept: list[Piece]) -> bool:
+def unasked(terms: Terms, kept: list[Piece]) -> bool:
     """Whether no piece of ``kept`` asks for anything, and none is a request said short."""
-    return bool(kept) and not any(_asks(p) or _bare_request(p) for p in kept)
+    return bool(kept) and not any(_asks(p) or commanded(terms, p) or _bare_request(p) for p in kept)
 
 
 def _asks(piece: Piece) -> bool:
@@ -51,12 +54,16 @@ def _bare_request(piece: Piece) -> bool:
     if not said:
         return False
     skip = len(tokens) - len(said) if [t.word for t in tokens][-len(said) :] == said else 0
+    if said[0] in _ANY_THING:
+        return True  # "something to cut this with": the thing wanted, by its use
     starts = {m.start: m for m in mentions}
     k = skip
     while k < len(tokens):
         m = starts.get(k)
         if m is not None and m.kind in ("item", "cue"):
-            return m.kind == "item"  # a task word first ("print ...") is no thing
+            # the thing wanted, or a task word first ("printe my file": a typo the lexicon
+            # reads as "print", an imperative the speech acts did not see)
+            return m.kind == "item" or k == skip
         if m is not None and m.kind in ("person", "pronoun") and m.possessive:
             k = m.end  # "Wang's stapler", "her mug"
             continue
