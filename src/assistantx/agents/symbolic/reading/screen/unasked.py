@@ -28,6 +28,7 @@ _ASKING = frozenset(
 _QUANTITIES = english.words("object_quantifiers") | frozenset(
     {"some", "any", "another", "more", "one", "few", "couple", "of", "extra", "spare", "new"}
 )
+_WANTING = frozenset({"need", "needs", "needed", "want", "wants", "wanted", "wanna"})
 _OWN = frozenset({"my", "our", "your", "his", "her", "their"})
 _ANY_THING = frozenset({"something", "anything", "smth", "sth", "summat"})
 
@@ -43,7 +44,10 @@ def _asks(piece: Piece) -> bool:
         return True
     if acts.need or acts.owner_work or acts.note_asks:
         return True
-    return bool(set(piece.words) & _ASKING)
+    if any(m.kind == "cue" for m in piece.lexed.mentions):
+        return True  # a task word anywhere ("cld u get me ...", "needs stamping", "hoping to
+        # borrow"): the rules for requests read it; the net is for messages with none
+    return bool(set(piece.words) & (_ASKING | _WANTING))
 
 
 def _bare_request(piece: Piece) -> bool:
