@@ -46,6 +46,7 @@ def test_the_rules_in_priority_order() -> None:
         "question",  # the choices said with a question ("..., workshop store or dry store?")
         "statement",  # a problem reported after a question about a facility's state
         "statement",
+        "statement",  # something on a thing, verbless ("oil on the stapler again")
         "statement",  # where an item is ("fyi the tape's in the cupboard")
         "statement",  # told for information beside a tag ("..., just so you know")
         "statement",  # a told sentence before a request that names its own thing

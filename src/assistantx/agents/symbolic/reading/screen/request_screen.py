@@ -25,6 +25,7 @@ from assistantx.agents.symbolic.reading.screen.self_introduction import self_int
 from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.timing import without_time_idioms
+from assistantx.agents.symbolic.reading.screen.unasked import unasked
 from assistantx.agents.symbolic.reading.screen.undone_work import undone_work
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.speech_acts import acts_reader
@@ -146,6 +147,9 @@ class RequestScreen:
             # "Min needs scissors.": restate and ask before moving; not "Robin needs to sign
             # my report.", its owner's request for the signature
             out.confirm = not all(owner_work_asked(spoken.msg, p) for p in needs)
+        if unasked(terms, kept):
+            # nothing asked, and no request said short: told, so restate it and ask first
+            out.confirm = True
         out.evidence += request.evidence
         out.text = request.text
         return out

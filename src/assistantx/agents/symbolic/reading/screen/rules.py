@@ -28,6 +28,7 @@ from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
@@ -96,6 +97,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("question", choices),
     ("statement", problem),
     ("statement", statement),
+    ("statement", on_a_thing),  # "oil on the stapler again": told of the thing, not asked
     ("statement", whereabouts),
     ("statement", fyi),  # after the statements that say more ("Thanks for telling me ...")
     ("statement", preamble),  # a told sentence no rule above read, before a request

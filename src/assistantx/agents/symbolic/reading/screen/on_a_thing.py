@@ -1,0 +1,96 @@
+"""On a thing: "oil on the stapler again", "Olive oil on the velvet AGAIN", "glue all over my
+scissors", "crumbs in the printer tray": a fragment with no verb and no request wording that
+says something is on, in or over a thing of the office is a remark about that thing, told,
+never a request for it. It had fetched the thing it named (someone's fabric, a stapler): a
+bare fragment is read as asking for what it names first, and here that is the oil.
+
+Only where a word that names no item of the office comes before the preposition, and every
+item the piece names comes after one: "the stapler on my desk please" (the thing first),
+"paper in the printer" and "some twine from the potting shed" are read as before, as is any
+piece with request wording, a question mark or a verb."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.core import english, language
+from assistantx.core.receiving_place import PLACE_WORDS
+
+# where one thing lies on another ("on", "all over", "in"); "from"/"for"/"to" say where a
+# thing comes from or goes, and stay requests
+_ON = frozenset({"on", "over", "in", "inside", "under", "across", "onto", "into"})
+# words that ask, however short the fragment ("stapler on my desk pls", "... asap")
+_ASKING = frozenset(
+    {
+        "now",
+        "asap",
+        "quick",
+        "quickly",
+        "urgently",
+        "pls",
+        "please",
+        "plz",
+        "thanks",
+        "ta",
+        "cheers",
+    }
+)
+
+
+def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    acts = piece.acts
+    if piece.asks or acts.request or acts.imperative or acts.question is not None:
+        return None
+    if acts.need or acts.wish or acts.note is not None or acts.condition:
+        return None
+    words = content(piece.words)
+    if not words or set(words) & _ASKING:
+        return None
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    items = [m for m in mentions if m.kind in ("item", "cue")]
+    if not items or any(
+        m.kind not in ("item", "person", "word", "self", "pronoun") for m in mentions
+    ):
+        return None
+    at = next((k for k, t in enumerate(tokens) if k and t.word in _ON), None)
+    if at is None:
+        return None
+    said = [t.word for t in tokens]
+    before = said[:at]
+    if any(m.start < at for m in items):
+        # "the stapler on my desk": the thing said first is asked for, brought there;
+        # "coffee on my keyboard again": on something that is no place, it was spilt
+        return _spilt(piece, at) if items[0].start < at and not _after(items, at) else None
+    if any(language.is_finite_verb(w) and not language.is_noun(w) for w in before):
+        return None  # "put oil on the stapler": a verb, read by the rules for it
+    if not any(language.is_noun(w) for w in before):
+        return None
+    return Finding("statement", piece, "a remark about something on a thing, asking nothing")
+
+
+# where a thing asked for may be left: "coffee on my desk", "paper on the shelf"
+_RECEIVING = (PLACE_WORDS | english.words("surface_words")) - {"floor"}  # no one asks for the floor
+_WHOSE = frozenset({"my", "our", "the", "his", "her", "their", "your", "a", "this", "that"})
+
+
+def _after(items: list[Mention], at: int) -> bool:
+    return any(m.start > at for m in items)
+
+
+def _spilt(piece: Piece, at: int) -> Finding | None:
+    """ "coffee on my keyboard again": the thing first, then on a plain noun that is no place
+    to leave it (no desk, shelf or tray, no place or facility of the office), and nothing
+    else: a mess told, not a request to bring the thing there."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    after = [m for m in mentions if m.start > at]
+    if any(m.kind not in ("word", "self") for m in after):
+        return None  # a person, a place, a facility: where to take it
+    rest = [t.word for t in tokens[at + 1 :]]
+    while rest and rest[0] in _WHOSE:
+        rest = rest[1:]
+    if not rest or rest[0] in _RECEIVING or not language.is_noun(rest[0]):
+        return None
+    return Finding("statement", piece, "a remark about something spilt on a thing, asking nothing")
