@@ -404,10 +404,9 @@ class Roles:
         q = ev.asked(person, self.question(role, person))
         if q is not None:
             said = ev.stance_of(q, person)
-            if said == "no" and not self._yes_in_group_since(role, person, q, ev):
-                return "said no"
             if said == "no":
-                return None  # "sorry, I can't" in private, then "I can help" in the group
+                # "sorry, I can't" in private, then "I can help" in the group: the newer wins
+                return None if self._yes_in_group_since(role, person, q, ev) else "said no"
             if said is None and ev.expired(q):
                 return "did not answer"
             if (

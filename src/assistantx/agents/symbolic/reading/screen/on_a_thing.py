@@ -22,22 +22,8 @@ from assistantx.core.receiving_place import PLACE_WORDS
 # where one thing lies on another ("on", "all over", "in"); "from"/"for"/"to" say where a
 # thing comes from or goes, and stay requests
 _ON = frozenset({"on", "over", "in", "inside", "under", "across", "onto", "into"})
-# words that ask, however short the fragment ("stapler on my desk pls", "... asap")
-_ASKING = frozenset(
-    {
-        "now",
-        "asap",
-        "quick",
-        "quickly",
-        "urgently",
-        "pls",
-        "please",
-        "plz",
-        "thanks",
-        "ta",
-        "cheers",
-    }
-)
+# words that ask, however short the fragment ("stapler on my desk pls"), and haste
+_ASKING = english.words("asking_words") | frozenset({"quick", "quickly"})
 
 
 def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:

@@ -21,14 +21,11 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english, language
 
-# words that ask, however short the fragment
-_ASKING = frozenset(
-    {"please", "pls", "plz", "plse", "asap", "now", "thanks", "thx", "ta", "cheers", "urgently"}
-)
+_ASKING = english.words("asking_words")
 _QUANTITIES = english.words("object_quantifiers") | frozenset(
     {"some", "any", "another", "more", "one", "few", "couple", "of", "extra", "spare", "new"}
 )
-_WANTING = frozenset({"need", "needs", "needed", "want", "wants", "wanted", "wanna"})
+_WANTING = english.words("need_verbs") | frozenset({"needed", "wanted", "wanna"})
 _OWN = frozenset({"my", "our", "your", "his", "her", "their"})
 _ANY_THING = frozenset({"something", "anything", "smth", "sth", "summat"})
 
