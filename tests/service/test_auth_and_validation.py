@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import AsyncIterator
+from pathlib import Path
 
 import httpx
 import pytest
@@ -78,7 +79,17 @@ async def test_a_person_submits_only_as_themselves(api: httpx.AsyncClient) -> No
     assert r.status_code == 202
 
 
-async def test_a_person_sees_only_their_own_instructions(api: httpx.AsyncClient) -> None:
+@pytest_asyncio.fixture
+async def unhurried(tmp_path: Path) -> AsyncIterator[httpx.AsyncClient]:
+    """A service at speed-up 1: an instruction it starts is still running minutes later, so
+    a test can cancel it whatever the load (at the tests' speed-up 50 a stapler's whole
+    fetch takes a few seconds of wall time, and a loaded machine let it end first)."""
+    async with running_service(tmp_path / "data", speedup=1) as client:
+        yield client
+
+
+async def test_a_person_sees_only_their_own_instructions(unhurried: httpx.AsyncClient) -> None:
+    api = unhurried
     r = await api.post(
         "/v1/instructions", json={"requester": "lee", "text": "a stapler"}, headers=AS_LEE
     )
