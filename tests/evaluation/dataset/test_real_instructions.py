@@ -7,9 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+from assistantx.core.errors import DatasetError
 from assistantx.core.office import Office, load_office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
-from assistantx.evaluation.dataset.generate import verify_tasks
+from assistantx.evaluation.dataset.generate import generate, verify_tasks
 from assistantx.sim.world import World
 from helpers.dataset_tasks import every_task
 
@@ -73,3 +74,18 @@ async def test_the_optimal_policy_achieves_every_generated_task(office: Office) 
     assert {t.base for t in tasks} == {"r1", "r2", "r3"}
     assert any(t.achievable for t in tasks if t.base == "r2")
     await verify_tasks(office, tasks)
+
+
+def test_a_base_the_optimal_agent_cannot_do_with_everyone_in_is_named_in_one_line(
+    office: Office,
+) -> None:
+    # Lee's own lunch asked for without `owner: lee`: the parts mean someone else's lunch,
+    # lent, which nobody does; the generator said only StopIteration.
+    base = BaseInstruction(
+        id="own-lunch",
+        requester="lee",
+        text="grab my lunch out of the fridge pls",
+        parts=(Part(kind="fetch", item="lunch"),),
+    )
+    with pytest.raises(DatasetError, match=r"'own-lunch' .* run is unachievable; check its parts"):
+        generate(office, [base])

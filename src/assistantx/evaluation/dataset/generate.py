@@ -97,6 +97,7 @@ def generate(
     pools = {b.id: classify(b, office) for b in bases}
     chosen: list[Variant] = []
     for base in bases:
+        _require_l1_with_everyone_in(base, pools[base.id])
         chosen += _pick_l1(base, office, pools[base.id].get("L1", []), rng)
     for category, target in TARGETS.items():
         chosen += _pick_round_robin(bases, office, pools, category, target, rng)
@@ -107,6 +108,25 @@ def generate(
     if verify:
         asyncio.run(verify_tasks(office, tasks))
     return tasks
+
+
+def _require_l1_with_everyone_in(
+    base: BaseInstruction, pool: dict[Category, list[Variant]]
+) -> None:
+    """Every base instruction's tasks start from the run with everyone in, which must be L1
+    (achievable without a fallback); a base whose parts the optimal agent cannot do then (an
+    ownerless fetch of a kind only the requester has, say) is a mistake in the base, told in
+    one line, where it was a bare StopIteration."""
+    if any(not v.unavailable for v in pool.get("L1", [])):
+        return
+    category = next(
+        (c for c, variants in pool.items() for v in variants if not v.unavailable), "no run"
+    )
+    found = "unachievable" if category == "unachievable" else f"{category}, not L1"
+    raise DatasetError(
+        f"base instruction {base.id!r} ({base.text!r}): with everyone in, the optimal agent's"
+        f" run is {found}; check its parts (the item's owner, who is asked, where it is kept)"
+    )
 
 
 def _bystanders(base: BaseInstruction, office: Office) -> list[str]:
