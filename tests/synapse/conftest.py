@@ -103,11 +103,29 @@ async def gateway(base_config: MatrixConfig) -> AsyncIterator[AppserviceGateway]
         yield running
 
 
-@pytest.fixture
-def gateway_mounts(gateway: AppserviceGateway) -> Iterator[AppserviceGateway]:
-    """The gateway, emptied again after the test."""
+@pytest_asyncio.fixture(loop_scope="session")
+async def gateway_mounts(
+    gateway: AppserviceGateway, base_config: MatrixConfig
+) -> AsyncIterator[AppserviceGateway]:
+    """The gateway, emptied again after the test, with Synapse's appservice back up.
+
+    A test whose service answered one of Synapse's transactions with an error as it stopped
+    leaves the appservice marked down: Synapse then holds every later event and retries after
+    2, 4, 8 ... seconds, so the next test's first pushed message came after its 20 s wait
+    (seen once, under load, after test_matrix_courtesy). A ping that the emptied gateway
+    answers makes Synapse recover at once; what it held goes to the gateway, which discards
+    it, not to the next test's messenger.
+    """
     yield gateway
     gateway.unmount()
+    async with MatrixClient(
+        base_config.homeserver_url, base_config.as_token.get_secret_value()
+    ) as client:
+        await client.request(
+            "POST",
+            f"/_matrix/client/v1/appservice/{base_config.appservice_id}/ping",
+            json={"transaction_id": f"recover-{uuid.uuid4().hex[:8]}"},
+        )
 
 
 @pytest.fixture
