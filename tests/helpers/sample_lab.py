@@ -53,7 +53,11 @@ def raw_sample_lab() -> dict[str, Any]:
         ],
         facilities=[
             ob.facility(
-                "staff_fridge", "staff fridge", at="staff_room", guards=["wren"], synonyms=["fridge"]
+                "staff_fridge",
+                "staff fridge",
+                at="staff_room",
+                guards=["wren"],
+                synonyms=["fridge"],
             ),
             ob.facility("lab_cabinet", "lab cabinet", at="lab", guards=["kofi"]),
             ob.facility(
