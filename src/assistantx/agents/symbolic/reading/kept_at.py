@@ -72,6 +72,8 @@ def kept_owners(
         item = phrase.item.id
         name = office.item_type(item).name
         if len(phrase.owners) == 1:
+            if _another_of_ones_own(office, phrase, requester):
+                continue  # "need a tape measure in the lab", the requester's own one there
             owner = placed[item] = phrase.owners[0]
             if owner != office.kept_owner(item, besides=requester):
                 roles.owners[phrase.item.start] = owner
@@ -137,6 +139,16 @@ def place_phrases(
         bare = m.start == 0 or tokens[m.start - 1].word not in _DETERMINERS
         out.append(PlacePhrase(m, place, kept, definite, where.kind, where.ids[0], said, bare))
     return out
+
+
+def _another_of_ones_own(office: Office, phrase: PlacePhrase, requester: str) -> bool:
+    """ "need a tape measure in the lab": the one kept there is the requester's own, with them
+    (on their desk, in their room), and they ask for "a" one: another one, anyone's, as for a
+    requester with none. Their own kept by a facility there ("a thermometer from the lab
+    cabinet") is a fine reading, and so is "the tape measure in the lab"."""
+    if phrase.definite or phrase.owners != (requester,):
+        return False
+    return office.keeper(requester, phrase.item.id) is None
 
 
 def _supplied_elsewhere(office: Office, item: str) -> bool:
