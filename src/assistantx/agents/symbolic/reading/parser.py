@@ -201,6 +201,10 @@ class InstructionParser:
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
+        if any(m.guessed for m in spoken.msg.lexed.mentions):
+            # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
+            # "Shall I shred your document for you?"
+            screened.confirm = True
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _frame(
