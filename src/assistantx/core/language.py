@@ -118,6 +118,16 @@ def is_plural_noun(phrase: str) -> bool:
     return last.endswith("s") and forms.get("NNS", ()) == (last,) == forms.get("NN", ())
 
 
+def indefinite(phrase: str) -> str:
+    """The article of an unknown one of ``phrase``: "any" for several or for stuff ("any exam
+    gloves", "any glue"), else "an" before a vowel ("an apron"), "a" ("a ruler"); a phrase
+    of a measure is counted by its head ("a pair of scissors")."""
+    head = phrase.split(" of ")[0]
+    if is_plural_noun(head) or is_mass_noun(head):
+        return "any"
+    return "an" if phrase[:1].lower() in "aeiou" else "a"
+
+
 def is_mass_noun(phrase: str) -> bool:
     """Whether a noun phrase names stuff, not a thing: the dictionary's only plural of its
     last word is the word itself ("glue", "ink", "stationery"). Nouns used both ways

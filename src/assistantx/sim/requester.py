@@ -168,7 +168,10 @@ def _operation_of(office: Office, milestone: str, item_id: str) -> list[str]:
 
 def answer(office: Office, wish: Wish, question: str) -> str:
     """What the requester says to ``question``."""
-    options = _options(question)
+    # "Which item do you mean for me to heat or test or shred?": the works listed are what
+    # was asked to be done, not options; the answer names the item
+    which_item = _WHICH_ITEM.search(question.lower()) is not None
+    options = [] if which_item else _options(question)
     if wish.words is not None:
         return _from_words(office, wish.words, question, options)
     if len(options) >= 2:
@@ -195,6 +198,7 @@ def answer(office: Office, wish: Wish, question: str) -> str:
 
 
 DONT_KNOW = "Sorry, I don't know."
+_WHICH_ITEM = re.compile(r"\b(which|what) (item|thing)\b")
 _WHOLE_REQUEST = re.compile(
     r"\bwhat (should|shall|can) i do\b|\bwhat do you (need|want)\b|"
     r"\bwhat would you like me to do\b"

@@ -8,6 +8,14 @@ the belonging a person keeps at a facility there (asked of its owner as usual), 
 the desk of whoever sits at a workstation named. Exactly one such item: that one. None, or
 several: the requester is asked, never a guess at another one elsewhere (said with "a" or
 "some", any one will do, as before).
+
+Two readings come before asking. Several people keep one there and the requester is one of
+them ("lunch from the fridge", where three keep a lunch): nobody asks for a colleague's lunch
+without naming them, so it is the requester's own. None is kept there but a supply of the
+kind is kept elsewhere, the thing said with no article ("need gloves at the nurses' station",
+gloves in the store cupboard; "the kettle in the laundry" is still asked about): the place is
+where it should be brought, not where it is; at the requester's own place that
+is the requester, and elsewhere the requester is asked who there should get it.
 """
 
 from __future__ import annotations
@@ -18,13 +26,16 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading._parties import Clause, Roles
 from assistantx.agents.symbolic.reading.kept_items import items_kept_at
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.parts import ASKED, ASKED_END
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import language
 from assistantx.core.office import Office
 
 # The words between an item and a place that make the place where the item is now.
 _AT = frozenset({"in", "at", "from", "on", "inside"})
 _ARTICLES = frozenset({"the", "a", "an"})
 _INDEFINITE = frozenset({"a", "an", "some", "any", "another"})
+_DETERMINERS = _ARTICLES | {"this", "that", "these", "those"}
 
 
 @dataclass(frozen=True)
@@ -35,6 +46,10 @@ class PlacePhrase:
     place: str  # the place's or facility's name, as the office writes it
     owners: tuple[str, ...]  # owner parts of the items of its type kept there
     definite: bool  # "the kettle in the kitchen" (not "a kettle from the kitchen")
+    kind: str  # "facility" or "place"
+    where: str  # the facility's or the place's id
+    said: str  # the place phrase in the requester's words ("at the nurses station")
+    bare: bool  # said with no article at all ("need gloves at ...", not "the gloves at ...")
 
 
 def kept_owners(
@@ -57,6 +72,8 @@ def kept_owners(
         item = phrase.item.id
         name = office.item_type(item).name
         if len(phrase.owners) == 1:
+            if _another_of_ones_own(office, phrase, requester):
+                continue  # "need a tape measure in the lab", the requester's own one there
             owner = placed[item] = phrase.owners[0]
             if owner != office.kept_owner(item, besides=requester):
                 roles.owners[phrase.item.start] = owner
@@ -68,10 +85,23 @@ def kept_owners(
             if personal and requester in office.owners_of(item):
                 roles.owners[phrase.item.start] = placed[item] = requester
                 continue
+            if phrase.bare and _supplied_elsewhere(office, item):
+                if _own_place(office, phrase, requester):
+                    continue  # "need gloves at my desk": brought to the requester
+                there = _people_at(office, phrase)
+                return (
+                    f"{ASKED}{phrase.said}{ASKED_END} {language.plural(name).capitalize()} "
+                    f"are kept elsewhere, so I can bring them to the {phrase.place}: who there "
+                    f"should get them?{there}"
+                )
             return (
-                f"I don't know of a {name} kept at the {phrase.place}. Which {name} do you "
-                f"mean, or whose is it?"
+                f"I don't know of {language.indefinite(name)} {name} kept at the "
+                f"{phrase.place}. Which {name} do you mean, or whose is it?"
             )
+        if requester in phrase.owners:
+            # "lunch from the fridge", several lunches there and one the requester's
+            roles.owners[phrase.item.start] = placed[item] = requester
+            continue
         whose = " or ".join(_owner_name(office, o) for o in phrase.owners)
         return f"Which {name} at the {phrase.place} do you mean: {whose}?"
     return None
@@ -105,8 +135,43 @@ def place_phrases(
         definite = m.start == 0 or tokens[m.start - 1].word not in _INDEFINITE
         there = items_kept_at(office, where.kind, where.ids[0])
         kept = tuple(dict.fromkeys(k.owner for k in there if k.type_id == m.id))
-        out.append(PlacePhrase(m, place, kept, definite))
+        said = " ".join(t.text for t in tokens[prep.start : where.end])
+        bare = m.start == 0 or tokens[m.start - 1].word not in _DETERMINERS
+        out.append(PlacePhrase(m, place, kept, definite, where.kind, where.ids[0], said, bare))
     return out
+
+
+def _another_of_ones_own(office: Office, phrase: PlacePhrase, requester: str) -> bool:
+    """ "need a tape measure in the lab": the one kept there is the requester's own, with them
+    (on their desk, in their room), and they ask for "a" one: another one, anyone's, as for a
+    requester with none. Their own kept by a facility there ("a thermometer from the lab
+    cabinet") is a fine reading, and so is "the tape measure in the lab"."""
+    if phrase.definite or phrase.owners != (requester,):
+        return False
+    return office.keeper(requester, phrase.item.id) is None
+
+
+def _supplied_elsewhere(office: Office, item: str) -> bool:
+    """Whether a facility keeps ``item`` in stock for anyone (owned by nobody)."""
+    return any(s.type == item and s.count != 0 for f in office.facilities for s in f.supplies)
+
+
+def _people_at(office: Office, phrase: PlacePhrase) -> str:
+    """ " (Nell Amadi is there.)": who is at the place named, to answer with; "" if nobody."""
+    at = office.facility(phrase.where).location if phrase.kind == "facility" else phrase.where
+    names = [p.name for p in office.people if p.location == at]
+    if not names:
+        return ""
+    return f" ({' or '.join(names)} {'is' if len(names) == 1 else 'are'} there.)"
+
+
+def _own_place(office: Office, phrase: PlacePhrase, requester: str) -> bool:
+    """Whether the place named is where the requester is (their workstation or room, or a
+    facility there)."""
+    at = office.person(requester).location
+    if phrase.kind == "facility":
+        return office.facility(phrase.where).location == at
+    return phrase.where == at
 
 
 def _ran_out_of(tokens: Sequence[Token], start: int) -> bool:

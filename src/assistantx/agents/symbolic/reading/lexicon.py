@@ -143,6 +143,9 @@ class Mention:
     # a person's name that may also be meant as the ordinary word: the words it would then
     # be read as ("the grace period talk"); the parser asks which was meant
     alternative: str = ""
+    # an item read from the work asked, not from its noun ("shred my questionnaire": the
+    # document shredding takes): restated to the requester before anything is done
+    guessed: bool = False
 
     @property
     def id(self) -> str:
@@ -535,8 +538,13 @@ class Lexicon:
         if self.own_papers is None:
             return mentions
         found = self.own_papers.found(tokens, mentions, self._known)
+        guessed = self.own_papers.guessed(tokens, mentions, found)
         return [
-            Mention("item", m.start, m.end, (found[n],), m.possessive, m.text) if n in found else m
+            Mention("item", m.start, m.end, (found[n],), m.possessive, m.text)
+            if n in found
+            else Mention("item", m.start, m.end, (guessed[n],), m.possessive, m.text, guessed=True)
+            if n in guessed
+            else m
             for n, m in enumerate(mentions)
         ]
 

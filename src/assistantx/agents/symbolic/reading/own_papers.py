@@ -17,13 +17,13 @@ item names ("notes" of its "session notes") is the office's own word, read as be
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english
+from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.memory.names import normalize
 
@@ -33,6 +33,8 @@ _SENDING = english.words("send_words")
 FILE_NOUNS = english.words("file_nouns")
 _FILE_VERBS = english.words("file_verbs")
 _DATA_NOUNS = english.words("data_nouns")
+_ASKING = english.words("asking_words")
+_PARTICLES = frozenset({"out", "up", "off", "down", "away", "through", "over"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
 
 
@@ -115,10 +117,58 @@ class OwnPapers:
     papers: tuple[str, ...]
     named: frozenset[str]
     file_type: str | None
+    # each form of an operation's verbs → the item types of the operations it names
+    worked: tuple[tuple[str, frozenset[str]], ...] = ()
 
     @classmethod
     def from_office(cls, office: Office) -> OwnPapers:
-        return cls(personal_papers(office), _item_name_words(office), office.file_type())
+        return cls(
+            personal_papers(office),
+            _item_name_words(office),
+            office.file_type(),
+            _worked_on(office),
+        )
+
+    def guessed(
+        self, tokens: Sequence[Token], mentions: Sequence[Mention], found: Collection[int]
+    ) -> dict[int, str]:
+        """ "shred my old medical questionnaire", where shredding takes a document: a noun
+        after "my" (as typed, not a rewrite) that no name of the office reads, the object of
+        a verb of operations that take one item type ("shred my ...", "print out my ..."), is
+        the requester's item of that type. A guess from the work asked, never from the noun:
+        the reader restates it before acting ("Shall I shred your document for you?").
+        ``found``: mentions read already."""
+        out: dict[int, str] = {}
+        for n, opener in enumerate(mentions):
+            if opener.kind != "self" or not opener.possessive:
+                continue
+            if tokens[opener.start].typed not in ("", "my"):
+                continue  # "the rota I typed up", read as "my rota": the speaker's own doing
+            head, end = None, opener.end
+            for k in range(n + 1, min(len(mentions), n + 2 + _MODIFIERS)):
+                m = mentions[k]
+                if m.kind != "word" or m.start != end or tokens[m.start].opens or k in found:
+                    break
+                if not _plain(m.ids[0]):
+                    break  # "shred my questionnaire please": the phrase ends before it
+                head, end = k, m.end
+            after = mentions[head + 1] if head is not None and head + 1 < len(mentions) else None
+            if head is None or (
+                after is not None
+                and after.start == end
+                and (after.kind == "item" or (after.kind == "word" and _plain(after.ids[0])))
+            ):
+                continue  # nothing plain after "my", or a noun of a longer phrase
+            word = mentions[head].ids[0]
+            if word in self.named or word in _COMMON or not word.isalpha():
+                continue
+            if tokens[mentions[head].start].corrected or not _may_be_noun(word):
+                continue
+            verb = _verb_before(tokens, opener.start)
+            types = {t for form, ts in self.worked if form == verb for t in ts}
+            if len(types) == 1:
+                out[head] = next(iter(types))
+        return out
 
     def found(
         self, tokens: Sequence[Token], mentions: Sequence[Mention], known: Callable[[str], bool]
@@ -174,6 +224,44 @@ class OwnPapers:
             return None
         said = {t.word for t in tokens[mentions[n].end : mentions[k].end]}
         return None if said & self.named else k
+
+
+def _verb_before(tokens: Sequence[Token], k: int) -> str | None:
+    """The word that may govern the phrase at token ``k``: the one just before it, or before
+    a particle ("shred my ...", "print out my ..."; in "drop it at my desk" it is "at", no
+    verb); None at the message's start."""
+    j = k - 1
+    if j >= 0 and tokens[j].word in _PARTICLES and not tokens[j].opens:
+        j -= 1
+    return tokens[j].word if j >= 0 else None
+
+
+def _plain(word: str) -> bool:
+    """A word that may be part of a noun phrase: not an everyday filler nor a courtesy."""
+    return word not in _COMMON and word not in _ASKING
+
+
+def _may_be_noun(word: str) -> bool:
+    """Whether a word may head a noun phrase: the dictionary has it as a noun or a verb (an
+    unknown noun is often guessed a verb: "questionnaire"), or does not know it ("payslip");
+    never a word it knows only as an adjective or adverb ("old", "quickly")."""
+    found = language.lemmas(word)
+    return not found or "NOUN" in found or "VERB" in found
+
+
+def _worked_on(office: Office) -> tuple[tuple[str, frozenset[str]], ...]:
+    """Each form of the office's operation verbs (one word), with the item types the
+    operations it names take."""
+    types: dict[str, set[str]] = {}
+    for op in office.operations:
+        if op.input is None:
+            continue
+        for verb in op.verbs:
+            words = language.fold(verb).split()
+            if len(words) == 1:
+                for form in language.verb_forms(words[0]) | {words[0]}:
+                    types.setdefault(form, set()).add(op.input)
+    return tuple((form, frozenset(ts)) for form, ts in types.items())
 
 
 def _item_name_words(office: Office) -> frozenset[str]:

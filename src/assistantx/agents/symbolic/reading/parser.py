@@ -115,6 +115,8 @@ from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
 
+# The words of a place phrase that named where a thing should be ("gloves *at* the station").
+_AT_PLACE = ("at", "in", "on")
 # The words of an answer to "send it out, or bring it to Bill?" that choose the hand-over.
 _INSIDE_WORDS = frozenset(
     {"bring", "hand", "give", "take", "deliver", "desk", "him", "her", "them", "here", "inside"}
@@ -199,6 +201,10 @@ class InstructionParser:
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
+        if any(m.guessed for m in spoken.msg.lexed.mentions):
+            # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
+            # "Shall I shred your document for you?"
+            screened.confirm = True
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _frame(
@@ -439,6 +445,11 @@ class InstructionParser:
                 lead = part.split()[0]
                 if lead.lower() in ("to", "into") and instead.lower().split()[:1] != [lead.lower()]:
                     instead = f"{lead} {instead}"  # "to the post room" → "Hana": "to Hana"
+                elif lead.lower() in _AT_PLACE and instead.lower().split()[:1] not in (
+                    [w] for w in (*_AT_PLACE, "to", "for")
+                ):
+                    # "gloves at the nurses' station" (kept elsewhere) → "Nell": "for Nell"
+                    instead = f"for {instead}"
                 elif lead.lower() == "my" and not _determined(instead):
                     instead = f"{lead} {instead}"  # "my memo" → "document": "my document"
                 text = text.replace(part, instead, 1)

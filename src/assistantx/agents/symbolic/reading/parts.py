@@ -68,7 +68,7 @@ _TO_PLACE = frozenset({"to", "into"})
 _NAME_ARTICLES = frozenset({"a", "an", "the", "another", "its", "some"})
 # How the question quotes the part, so the answer can take its place in the request.
 ASKED = "Sorry, I'm not sure what you mean by “"
-_ASKED_END = "”."
+ASKED_END = "”."
 # How a question about an operation's name lists the work it may mean.
 WHICH_WORK = " I can arrange "
 
@@ -98,7 +98,7 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     )
     if phrase is None:
         return None
-    return f"{ASKED}{phrase}{_ASKED_END}{_means(office)} Could you tell me?"
+    return f"{ASKED}{phrase}{ASKED_END}{_means(office)} Could you tell me?"
 
 
 def operation_left_out(
@@ -129,7 +129,7 @@ def operation_left_out(
         ]
         phrase = " ".join(t.text for t in tokens[at[0] : at[1]])
         offer = " or ".join(f"a {n}" for n in dict.fromkeys(meant))
-        return f"{ASKED}{phrase}{_ASKED_END}{WHICH_WORK}{offer}. Could you tell me?"
+        return f"{ASKED}{phrase}{ASKED_END}{WHICH_WORK}{offer}. Could you tell me?"
     return None
 
 
@@ -181,7 +181,7 @@ def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str
         kept = f" ({names} {'is' if len(keepers) == 1 else 'are'} there.)"
         phrase = " ".join(t.text for t in tokens[k : m.end])
         return (
-            f"{ASKED}{phrase}{_ASKED_END} I hand things to people, not to rooms: who "
+            f"{ASKED}{phrase}{ASKED_END} I hand things to people, not to rooms: who "
             f"there should get it?{kept if keepers else ''}"
         )
     return None
@@ -232,9 +232,9 @@ def _said_at(
 def asked_part(question: str) -> str | None:
     """The part of the request a question of ``unread_part`` asked about, in the requester's
     words; None for any other question."""
-    if not question.startswith(ASKED) or _ASKED_END not in question:
+    if not question.startswith(ASKED) or ASKED_END not in question:
         return None
-    return question[len(ASKED) : question.index(_ASKED_END)]
+    return question[len(ASKED) : question.index(ASKED_END)]
 
 
 def _means(office: Office) -> str:

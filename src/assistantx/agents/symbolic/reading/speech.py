@@ -79,6 +79,12 @@ _REFUSING = frozenset({"no", "nah", "nope"})
 _BORROW = english.words("borrow_words")
 _DONE_VERBS = english.words("done_verbs")
 _DONE_MARKERS = tuple(tuple(p.split()) for p in english.entries("done_markers"))
+# "Olu's got one i think": the speaker's doubt about what someone else has; its "I" is no
+# speaker who has the thing
+_SPEAKERS_DOUBT = tuple(
+    tuple(p.split())
+    for p in sorted(english.entries("parenthetical_hedges"), key=lambda p: -len(p.split()))
+)
 _DECLINING_THANKS = tuple(tuple(p.split()) for p in english.entries("declining_thanks"))
 _PAST_TIMES = tuple(tuple(p.split()) for p in english.entries("past_times"))
 # Another one of what was asked for: "X brought me *one*", "Ida lent me *hers*"
@@ -250,6 +256,21 @@ def _perfect_after(words: list[str]) -> bool:
     return any(language.is_past_verb(x) and x != "got" for x in words)
 
 
+def _without_hedges(words: list[str]) -> list[str]:
+    """``words`` less the speaker's hedges ("i think", "pretty sure"): "Olu's got one i think"
+    tells what Olu has, not what the speaker has."""
+    kept: list[str] = []
+    n = 0
+    while n < len(words):
+        hedge = next((h for h in _SPEAKERS_DOUBT if _starts(words[n:], h)), None)
+        if hedge is None:
+            kept.append(words[n])
+            n += 1
+        else:
+            n += len(hedge)
+    return kept
+
+
 def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
     return tuple(words[: len(phrase)]) == phrase
 
@@ -288,6 +309,7 @@ class SpeechActs:
         w = [x for x in words if x not in ("oh", "ah", "ok", "okay", "well", "so")]
         if any(_starts(w[n:], p) for n in range(len(w)) for p in _DECLINING_THANKS):
             return True
+        w = _without_hedges(w)
         if not w or self._imperative(w) or w[0] in _MODALS or w[0] in _AUX - {"did"}:
             return False  # "could you ...", "did Ida bring one?" (a question) is no news
         marked = any(_starts(w[n:], p) for n in range(len(w)) for p in _DONE_MARKERS)
