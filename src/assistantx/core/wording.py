@@ -52,13 +52,73 @@ def purpose_text(
         return (locker_text(purpose) or "{item}").format(item=thing)
     if shape == "transform" and op.product and office.item_type(op.product).electronic:
         made = office.item_type(op.product).name  # a PDF goes by message, not into the locker
-        return f"take {thing} out, {op.name} it, send the {made} to its owner and put it back"
+        return f"take {thing} out, {verb_it(op)}, send the {made} to its owner and put it back"
     if shape == "transform":
-        return f"take {thing} out, {op.name} it and put the original and the {op.name} back"
+        return f"take {thing} out, {verb_it(op)} and put the original and the {op.name} back"
     if not op.returns_item:  # shredded, faxed out: nothing goes back into the locker
-        to = f" to {destination}" if op.sends_out and destination else ""
-        return f"take {thing} out and {op.name} it{to}"
-    return f"take {thing} out, {op.name} it and put it back"
+        to = destination if op.sends_out and destination else None
+        return f"take {thing} out and {verb_it(op, to)}"
+    return f"take {thing} out, {verb_it(op)} and put it back"
+
+
+def verb_it(
+    op: Operation, destination: str | None = None, *, bare: bool = False, obj: str = "it"
+) -> str:
+    """An operation said with "it" for its object, in English whatever its name looks like:
+    "fax it", "laser print it", "send it off"; a name that carries its own place ("send to
+    the lab") puts "it" after its verb ("send it to the lab"), and a ``destination`` said
+    replaces that place ("courier it to the Axiom lab"); ``bare``: without that place, for a
+    question of where ("Where should I send it to?"). A name of several words where the
+    office declares verbs is said by its first verb ("courier"). ``obj``: another object
+    than "it" ("test masks", "courier blood samples"), said where "it" would be."""
+    phrase = op.verbs[0] if " " in op.name.strip() and op.verbs else op.name
+    return with_object(phrase, obj, destination, bare=bare)
+
+
+def with_object(
+    phrase: str, obj: str, destination: str | None = None, *, bare: bool = False
+) -> str:
+    """A verb phrase of an operation ("send off", "send to the lab", "print") with ``obj``
+    put where English puts it: after the verb and before a particle ("send it off"), before
+    the phrase's own complement ("send it to the lab"), else after the phrase ("laser print
+    it"); ``destination`` replaces the own complement, ``bare`` leaves it out."""
+    said = phrase.split()
+    if not said:
+        return f"do {obj}"
+    openers = words("verb_complement_openers")
+    cut = next((k for k in range(1, len(said)) if said[k].lower() in openers), len(said))
+    head, own = said[:cut], said[cut:]
+    particles = words("verb_particles")
+    if all(w.lower() in particles for w in head[1:]):
+        spoken = [head[0], obj, *head[1:]]  # "send it off"
+    else:
+        spoken = [*head, obj]  # "laser print it"
+    if destination:
+        spoken += ["to", destination]
+    elif not bare:
+        spoken += own
+    return " ".join(spoken)
+
+
+def verb_alone(op: Operation) -> str:
+    """An operation's verb as said with no object of its own ("things I can courier"): its
+    name where that is one word, else its first declared verb, else its name's verb before
+    its own complement ("send" of "send to the lab")."""
+    if " " not in op.name.strip():
+        return op.name
+    if op.verbs:
+        return op.verbs[0]
+    said = op.name.split()
+    openers = words("verb_complement_openers")
+    cut = next((k for k in range(1, len(said)) if said[k].lower() in openers), len(said))
+    return " ".join(said[:cut])
+
+
+def by_means(op: Operation) -> str:
+    """How a send-out is named after "by" ("by fax", "by courier"): its one-word name or
+    verb; "" where it has none (a name of several words is no means: "by send off")."""
+    word = next((w for w in (op.name, *op.verbs) if w.strip() and " " not in w.strip()), None)
+    return f"by {word} " if word else ""
 
 
 def done_words(op: Operation) -> str:

@@ -46,6 +46,7 @@ from assistantx.core.goals import Milestone, parse_milestone
 from assistantx.core.name_reading import is_word_name
 from assistantx.core.office import Office, Person
 from assistantx.core.task_schema import Part
+from assistantx.core.wording import verb_it
 from assistantx.sim.understanding import mentioned_item_types, mentioned_requests
 
 _OFFER = re.compile(
@@ -476,7 +477,7 @@ def _plainly(office: Office, wish: Wish) -> str:
     sent = [o for o in wish.operations if office.operation(o).sends_out]
     if sent and wish.destinations:
         op = office.operation(sent[0])
-        return f"I mean {whose}: please {op.name} it to {wish.destinations[0]}."
+        return f"I mean {whose}: please {verb_it(op, wish.destinations[0])}."
     others = [p for p in wish.recipients if p != wish.requester]
     to = f", for {_name(office, others[0])}" if others else ", for me"
     by = f", signed by {_name(office, wish.doers[0])}" if wish.doers else ""

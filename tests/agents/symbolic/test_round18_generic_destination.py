@@ -32,7 +32,7 @@ def _sent(frame: TaskFrame) -> list[tuple[str | None, str | None, str | None]]:
 def test_a_described_lab_is_asked_which(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == []
-    assert frame.question is not None and "Where should I send off it to?" in frame.question
+    assert frame.question is not None and "Where should I send it off to?" in frame.question
 
 
 @pytest.mark.parametrize(
@@ -73,4 +73,4 @@ def test_the_name_said_after_the_description_is_the_destination(text: str) -> No
 def test_no_name_after_the_description_still_asks(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == []
-    assert frame.question is not None and "Where should I send off it to?" in frame.question
+    assert frame.question is not None and "Where should I send it off to?" in frame.question

@@ -16,7 +16,7 @@ from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
-from assistantx.core.wording import file_noun
+from assistantx.core.wording import file_noun, with_object
 from assistantx.memory.graph import LongTermMemory
 
 RoleKind = Literal["named", "owner", "guard"]
@@ -175,11 +175,12 @@ def _machine_guard(office: Office, part: Part, who: str) -> tuple[Operation, Rol
     op = part_operation(office, part)
     place_name = office.facility(facility_for(office, op.id)).name
     thing = office.item_type(op.input or "").name
+    whose_thing = f"{who}'s {thing}"
     role = _guard(
         office,
         op.id,
-        f"Could you {op.name} {who}'s {thing} at the {place_name}?",
-        f"Could anyone {op.name} {who}'s {thing} at the {place_name}?",
+        f"Could you {with_object(op.name, whose_thing)} at the {place_name}?",
+        f"Could anyone {with_object(op.name, whose_thing)} at the {place_name}?",
     )
     return op, role
 
@@ -392,11 +393,12 @@ def _add_part(
             place_name = office.facility(facility_for(office, op.id)).name
             # who sends it outside is told where to, as the embedded planner tells them
             to = f" to {part.destination}" if op.sends_out and part.destination else ""
+            said = with_object(op.name, f"{who}'s {thing}", bare=bool(to))
             op_role = _guard(
                 office,
                 op.id,
-                f"Could you {op.name} {who}'s {thing} at the {place_name}{to}?",
-                f"Could anyone {op.name} {who}'s {thing} at the {place_name}{to}?",
+                f"Could you {said} at the {place_name}{to}?",
+                f"Could anyone {said} at the {place_name}{to}?",
             )
             _put_in(plan, kept, a, who, office)
             plan.add_role(op_role)

@@ -22,7 +22,7 @@ from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import TaskKind, kind_shape
-from assistantx.core.wording import a_thing
+from assistantx.core.wording import a_thing, with_object
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.names import normalize
 
@@ -156,7 +156,8 @@ class Roles:
                     f"be at your desk soon to receive a delivery from {self._name(role.requester)}"
                 )
             case "print" | "copy":
-                return f"{self._operation_name(role)} {self._whose(role)} {thing} at the {place}"
+                said = with_object(self._operation_name(role), f"{self._whose(role)} {thing}")
+                return f"{said} at the {place}"
             case kind if task_kinds.kind_of(kind) and task_kinds.kind(kind).ask:
                 # a person's work from the table ("sign X's document", "stamp ... with a seal")
                 ask = task_kinds.kind(kind).ask or ""
@@ -168,12 +169,12 @@ class Roles:
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
             case "heat" if role.destination:  # the one who faxes it must know where to
-                return (
-                    f"{self._operation_name(role)} {self._whose(role)} {thing} in the {place}"
-                    f" to {role.destination}"
-                )
+                obj = f"{self._whose(role)} {thing}"
+                said = with_object(self._operation_name(role), obj, bare=True)
+                return f"{said} in the {place} to {role.destination}"
             case "heat":
-                return f"{self._operation_name(role)} {self._whose(role)} {thing} in the {place}"
+                said = with_object(self._operation_name(role), f"{self._whose(role)} {thing}")
+                return f"{said} in the {place}"
             case "send_file":
                 return f"send me your {thing} for {beneficiary}"
         raise ValueError(role.kind)  # pragma: no cover

@@ -789,12 +789,16 @@ class Lexicon:
         return tokens[i].word in work and i >= 2 and tokens[i - 2].word == "for"
 
     def _noun_use(self, tokens: Sequence[Token], i: int) -> bool:
-        """ "for the printing job", "my rebind queue": a service's verb between a determiner
-        (or a possessive) and a noun the office does not know modifies that noun; it asks
-        for no work ("get the printing done" still does: no noun follows)."""
+        """ "for the printing job", "my rebind queue", "Gwen's fitness test results": a
+        service's verb between a determiner (or a possessive, with nouns the office does not
+        know between: "fitness") and a noun the office does not know modifies that noun; it
+        asks for no work ("get the printing done" still does: no noun follows)."""
         if tokens[i].word not in self.operation_words or i == 0 or tokens[i].opens:
             return False
-        before = tokens[i - 1]
+        k = i - 1
+        while k > 0 and i - k <= 2 and self._modifier_noun(tokens, k):
+            k -= 1  # "Gwen's *fitness* test results": a noun of the same phrase before it
+        before = tokens[k]
         if before.word not in _MODIFIER_DETERMINERS and not before.possessive:
             return False
         if i + 1 >= len(tokens) or tokens[i + 1].opens or tokens[i].possessive:
@@ -802,12 +806,38 @@ class Lexicon:
         if tokens[i + 1].after_pause:
             return False  # "needs a proofread, deal with it": a comma ends the noun
         nxt = tokens[i + 1].word
-        return (
-            nxt not in COMMON
-            and not self._known(nxt)
-            and language.is_noun(nxt)
-            and not language.is_finite_verb(nxt)
-        )
+        if nxt in COMMON or self._known(nxt):
+            return False
+        if (
+            i + 2 < len(tokens)
+            and tokens[i + 2].word in self.items
+            and tokens[i + 1].text.isalpha()
+        ):
+            # "my test log file": the phrase goes on to a thing of the office, its head
+            return not (tokens[i + 2].opens or tokens[i + 2].after_pause)
+        if not language.is_noun(nxt):
+            return False
+        if not language.is_finite_verb(nxt):
+            return True
+        # "the test results", "my print notes": a plural noun that is also a verb's -s form
+        # is the noun where the phrase ends after it or goes on with a thing; "my print
+        # looks faded" is a subject and its verb
+        if not language.is_plural_noun(nxt):
+            return False
+        if i + 2 >= len(tokens) or tokens[i + 2].opens or tokens[i + 2].after_pause:
+            return True
+        after = tokens[i + 2].word
+        return after in COMMON or after in self.items or self._modifier_noun(tokens, i + 2)
+
+    def _modifier_noun(self, tokens: Sequence[Token], k: int) -> bool:
+        """A plain noun inside a noun phrase: in lower case, no word of the office, no
+        function word, no verb's finite form nor a describing word only."""
+        t = tokens[k]
+        if t.opens or t.after_pause or t.possessive or not t.text.isalpha():
+            return False
+        if not t.text[:1].islower() or t.corrected or t.word in COMMON or self._known(t.word):
+            return False
+        return language.is_noun(t.word) and not language.is_finite_verb(t.word)
 
     def _person_ids(
         self, tokens: Sequence[Token], idx: list[int], ids: set[str]

@@ -16,13 +16,13 @@ from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
-from assistantx.core.wording import a_thing
+from assistantx.core.wording import a_thing, by_means, verb_alone, verb_it
 from assistantx.memory.names import normalize
 
 _KIND_SHAPE = {kind: shape for shape, kind in SHAPE_KIND.items()}
 WHERE_TO = "Where should I "  # the question for a send-out service's place outside
 # The question when a send-out service's destination is a colleague's name.
-OUT_OR_IN = "Should I send it out by "
+OUT_OR_IN = "Should I send it out "
 
 
 # The words before what an item is made into ("print it *as* labels", "*into* a PDF").
@@ -185,7 +185,7 @@ class OperationChooser:
                 if where is None:
                     return TaskFrame(
                         requester=frame.requester,
-                        question=f"{WHERE_TO}{op.name} it to? Please give me "
+                        question=f"{WHERE_TO}{verb_it(op, bare=True)} to? Please give me "
                         f"{op.destination_asked}.",
                     )
                 colleague = _colleague(lexed, outside) if not sent_out else None
@@ -195,7 +195,7 @@ class OperationChooser:
                     name = self.office.person(colleague).name
                     return TaskFrame(
                         requester=frame.requester,
-                        question=f"{OUT_OR_IN}{op.name} to {where} outside the office, "
+                        question=f"{OUT_OR_IN}{by_means(op)}to {where} outside the office, "
                         f"or bring it to {name} here?",
                     )
                 t = t.model_copy(update={"operation": op.id, "destination": where})
@@ -369,10 +369,10 @@ class OperationChooser:
 
     def _cannot_treat(self, ops: list[Operation], item: str) -> str:
         """Why a service the office offers cannot be run on this item, with what it is for."""
-        asked = " or ".join(dict.fromkeys(op.name for op in ops))
+        asked = " or ".join(dict.fromkeys(verb_alone(op) for op in ops))
         thing = self._item_name(item)
         fits = [
-            f"{op.name} {language.plural(self._item_name(op.input))}"
+            verb_it(op, obj=language.plural(self._item_name(op.input)))
             for op in ops
             if op.input is not None
         ]

@@ -31,6 +31,7 @@ from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import SHAPE_KIND
+from assistantx.core.wording import verb_alone, verb_it
 
 # Words that may stand before an item word used as a verb ("can u book ...", "pls water ...").
 _BEFORE_VERB = english.words("before_verb") | {""}  # "": the start of the text
@@ -194,10 +195,10 @@ class MentionReader:
             if here[0].kind == "facility" and said_name.lower() in PRONOUNS:
                 said_name = self.office.facility(here[0].id).name  # "them": the desk meant
             name = f"the {said_name}"
-        verb = self.office.operation(outside.operation).name
+        op = self.office.operation(outside.operation)
         return (
-            f"{name[:1].upper()}{name[1:]}{HERE_NOT_OUTSIDE}{verb} things to "
-            f"places outside it. Where should I {verb} it to?"
+            f"{name[:1].upper()}{name[1:]}{HERE_NOT_OUTSIDE}{verb_alone(op)} things to "
+            f"places outside it. Where should I {verb_it(op, bare=True)} to?"
         )
 
     def _sent_out(

@@ -275,6 +275,10 @@ def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
     return tuple(words[: len(phrase)]) == phrase
 
 
+# a thing's state said with its participle ("sample is labelled", "sample's labelled")
+_BE_OR_HAVE = frozenset({"is", "was", "are", "were", "has", "have", "had"})
+
+
 class SpeechActs:
     """Classifies the pieces of a message against one office's vocabulary."""
 
@@ -704,6 +708,11 @@ class SpeechActs:
         reason beside a request), not the thing asked for."""
         if len(w) < 2 or w[0] not in self.lex.items:
             return False
+        if w[1] in _BE_OR_HAVE and w[2:3] and language.is_past_participle(w[2]):
+            # "sample is labelled and in the rack" ("sample's labelled", its "'s" read as
+            # "has"): the thing's state, told; not
+            # "scissors are needed" (a need, read as before)
+            return not language.verb_lemmas(w[2]) & {"need", "want", "require"}
         verb, cues = w[1], self.lex.cue_words
         spread = w[2:3] and w[2] in _SPREAD  # "water got on my notes", "tea went everywhere"
         errand = verb in cues or any(lemma in cues for lemma in language.verb_lemmas(verb))

@@ -21,6 +21,7 @@ def test_the_rules_in_priority_order() -> None:
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
         "statement",  # how a question beside it is meant ("just curious", "no rush")
+        "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
         "condition",
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")

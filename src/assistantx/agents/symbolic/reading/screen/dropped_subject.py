@@ -27,6 +27,10 @@ _ASKED_OF = english.words("request_askees") | english.words("subject_pronouns")
 # opening a clause, with its object's determiner after it
 _OBJECT_STARTS = "|".join(sorted(english.words("object_starts")))
 _PAST = re.compile(rf"{_OPENS}([a-z]+)\s+(?=(?:{_OBJECT_STARTS})\b)", re.IGNORECASE)
+# "drew blood from the mare", "chased payment all week": a past form opening a clause with a
+# bare noun for its object, written in lower case (a capital after it is a surname: "Drew
+# Stone needs ...") and no possessive
+_PAST_BARE = re.compile(rf"{_OPENS}([A-Za-z]+)\s+(?=([a-z]+)\b(?!['’]))")
 # "got a stapler?" asks for one (have got: possession), whatever its tense
 _ASKING_PASTS = frozenset({"got", "gotten"})
 
@@ -53,10 +57,12 @@ _NEED_COUNT = re.compile(
 _WE_WILL = re.compile(r"\b(we)['’]ll\b", re.IGNORECASE)
 
 
-def subject_restored(text: str) -> tuple[str, list[Evidence]]:
+def subject_restored(text: str, things: frozenset[str] = frozenset()) -> tuple[str, list[Evidence]]:
     """``text`` with "I" back before a clause that opens with "been", "can't" + a verb,
-    "just" + a past form, a past form and its object ("drew a blank"), or (after a
-    request) "need" + a number; "we'll" spelt "we 'll"."""
+    "just" + a past form, a past form and its object ("drew a blank"; a bare noun too, "drew
+    blood", unless a name of the office's ``things`` follows: "printed file for Ana" asks for
+    one),
+    or (after a request) "need" + a number; "we'll" spelt "we 'll"."""
     found: list[Evidence] = []
 
     def been(match: re.Match[str]) -> str:
@@ -92,12 +98,24 @@ def subject_restored(text: str) -> tuple[str, list[Evidence]]:
         found.append(Evidence(words=match.group(0).strip(" ,.;"), meaning="I (the speaker) did"))
         return f"{match.group(1)}I {verb} "
 
+    def past_bare(match: re.Match[str]) -> str:
+        noun = match.group(3)
+        said = " ".join(language.words(match.string[match.end() :])[:4])
+        if any(f"{said} ".startswith(f"{thing} ") for thing in things):
+            return match.group(0)  # "printed file for Ana", "signed form": a thing asked for
+        if not language.is_noun(noun) or noun in _ASKED_OF or noun.endswith("s"):
+            return match.group(0)  # "drew needs ...": a verb's -s form, or a plural
+        if set(language.lemmas(noun)) - {"NOUN", "VERB"}:
+            return match.group(0)  # a word that is also a pronoun, adverb, adjective ...
+        return past(match)
+
     def we_will(match: re.Match[str]) -> str:
         found.append(Evidence(words=match.group(0), meaning="we will (the speaker's team)"))
         return f"{match.group(1)} 'll"
 
     text = _WE_WILL.sub(we_will, text)
     text = _PAST.sub(past, text)
+    text = _PAST_BARE.sub(past_bare, text)
     text = _BEEN.sub(been, text)
     text = _CANT.sub(cant, text)
     text = _NEED_COUNT.sub(need, text)

@@ -52,7 +52,8 @@ class RequestScreen:
         terms = self.terms
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
-        text, restored = subject_restored(text)  # "been at the machine": I've been
+        # "been at the machine": I've been
+        text, restored = subject_restored(text, frozenset(terms.lex.items))
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
         text, taken = how_taken(terms, text)  # "a brew, milk no sugar": no milk to fetch
         text, leave = asked_leave(text)  # "can I nick Robin's mute?": asks to borrow it

@@ -11,7 +11,7 @@ from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
 from assistantx.agents.symbolic.reading.screen.covert import covert
-from assistantx.agents.symbolic.reading.screen.curious import curious
+from assistantx.agents.symbolic.reading.screen.curious import asks_for_time, curious
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
@@ -71,6 +71,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("wish", hope),
     ("thanks", thanks),
     ("statement", curious),
+    ("statement", asks_for_time),
     ("condition", condition),
     ("negated", negated),
     ("destructive", unsafe),

@@ -17,6 +17,13 @@ from assistantx.core import english, language
 
 # Who a request asks ("can someone ...", "could anybody ..."): never a verb's modifier.
 _ASKEES = english.words("request_askees")
+# How a thing is said to be, right after its name ("phone dead", "laptop nearly flat", "phone
+# out of charge"): the word is that thing, the subject of a state, no service's verb
+_STATES = tuple(
+    tuple(entry.split())
+    for key in ("conditions", "facility_faults")
+    for entry in english.entries(key)
+)
 
 
 def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -27,6 +34,10 @@ def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
         # "I need to pay the bill. Could you bring me a calculator?": what the speaker
         # will do themselves is context for the request beside it, not asked of me
         return Finding("statement", piece, "the speaker's own doing, context only")
+    if found is not None and asked_elsewhere(terms, msg, piece) and state_told(terms, piece):
+        # "need a charging cable, phone at 2%": the service word is a thing, its state the
+        # reason for the request beside it (a fragment with no verb), not a service asked for
+        return Finding("statement", piece, "why the request is made, context only")
     outside = outsider_recipient(terms, msg, piece) if found is not None else None
     if found is not None and outside is not None:
         # "... and email them to the client": the other half cannot be done either, and is
@@ -43,6 +54,35 @@ def own_doing(terms: Terms, piece: Piece) -> bool:
     if not w or w[0] not in terms.self_words or set(w) & {"you", "u"}:
         return False
     return "to" in w[1:4]
+
+
+_WHEN = english.words("state_tails") | frozenset({"later", "now", "soon", "first", "next"})
+
+
+def state_told(terms: Terms, piece: Piece) -> bool:
+    """ "phone at 2%", "phone dead", "phone nearly flat": a word of a service said first,
+    then how the thing it names is (a state, a level with a number) and no object: a noun
+    and its state, told, never the service asked for ("phone Ana", "phone the lab")."""
+    if piece.asks or piece.acts.question is not None:
+        return False
+    w = content(piece.words)
+    while w and w[0] in ("my", "the", "our"):
+        w = w[1:]
+    if len(w) < 2 or w[0] not in terms.en.service_verbs or set(w) & {"you", "u", "please"}:
+        return False
+    rest = w[1:]
+    while rest and set(language.lemmas(rest[0])) == {"ADV"}:
+        rest = rest[1:]  # "nearly", "almost", "completely"
+    if not rest:
+        return False
+    if rest[0] in ("at", "on") and rest[1:2] and any(c.isdigit() for c in rest[1]):
+        return True  # "phone at 2%", "phone on 5 percent"
+    if any(tuple(rest[: len(state)]) == state for state in _STATES):
+        return True  # "phone dead", "phone out of charge"
+    if rest[0] in _WHEN:
+        return False  # "phone later", "phone tonight": when the call is asked for
+    kinds = set(language.lemmas(rest[0]))
+    return "ADJ" in kinds and "VERB" not in kinds  # "phone flat", never "phone home"
 
 
 def asked_elsewhere(terms: Terms, msg: Message, piece: Piece) -> bool:

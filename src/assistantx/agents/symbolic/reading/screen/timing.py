@@ -17,10 +17,16 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core.task_schema import Evidence
 
 # The nouns of a short while: "a sec", "a mo", "a tick", "a spare minute".
-_WHILE = (
-    r"(?:spare\s+|free\s+|quick\s+|few\s+)?"
-    r"(?:secs?|seconds?|mins?|minutes?|mo|moments?|tick|jiffy|chance|bit|while|tic)"
-)
+_WHILE_NOUN = r"(?:secs?|seconds?|mins?|minutes?|mo|moments?|ticks?|jiffy|chance|bit|while|tic)"
+_WHILE = rf"(?:spare\s+|free\s+|quick\s+|few\s+)?{_WHILE_NOUN}"
+
+
+def is_while_noun(word: str) -> bool:
+    """Whether ``word`` names a short while ("sec", "min", "tick"), as the idioms of time
+    here read it ("give me a min" asks for one, ``curious.asks_for_time``)."""
+    return re.fullmatch(_WHILE_NOUN, word, re.IGNORECASE) is not None
+
+
 _YOU = r"(?:you|u|ya|yo)"
 _HAVE = r"(?:'ve\s+got|'ve|\s+have\s+got|\s+have|\s+get|\s+got|\s+find|\s+are\s+free|'re\s+free)"
 # "when you get a sec", "whenever you've a minute", "in a tick", "whenever (you can)": each

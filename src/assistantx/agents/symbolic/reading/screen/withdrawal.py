@@ -112,5 +112,32 @@ def withdrawal(terms: Terms, piece: Piece, msg: Message | None = None) -> Findin
     # is not wanted (read as a statement); the corrected request stands
     replaced = msg is not None and msg.replaced
     if piece.start > 0 and not piece.asks and piece.acts.had_already and not replaced:
+        if msg is not None and _told_of_the_recipient(msg, piece):
+            return None
         return Finding("withdrawn", piece, "what was asked for is had already")
     return None
+
+
+def _told_of_the_recipient(msg: Message, piece: Piece) -> bool:
+    """ "take my calculator back to Ana, she lent me hers": the one said to have lent or given
+    the speaker something is the one the request before it takes a thing to (named in it, not
+    as an owner), so the fact is the back-story of the errand (a thing going back to whom it
+    came from), not a sign that the speaker has what was asked for. Its subject is that person
+    by name, or "he"/"she"/"they" when the request names exactly one person."""
+    asked = [
+        p for p in msg.pieces if p.start < piece.start and p.acts.request and not p.acts.withdrawal
+    ]
+    if not asked:
+        return False
+    named = {
+        m.id
+        for p in asked
+        for m in p.lexed.mentions
+        if m.kind == "person" and len(m.ids) == 1 and not m.possessive
+    }
+    if not named:
+        return False
+    first = next((m for m in piece.lexed.mentions if m.start == 0), None)
+    if first is not None and first.kind == "person":
+        return len(first.ids) == 1 and first.id in named
+    return len(named) == 1 and piece.words[:1] in (["he"], ["she"], ["they"])
