@@ -8,6 +8,7 @@ thing matches in the best tier; otherwise the caller reports ambiguity, never gu
 from __future__ import annotations
 
 import difflib
+import functools
 import re
 from collections.abc import Iterable
 
@@ -18,6 +19,9 @@ TITLES = english.words("titles")
 _NON_WORD = re.compile(r"[\W_]+")
 
 
+# A reader normalizes the office's names and the message's words many times over (650 k calls
+# in the agents' tests): the last answers are kept.
+@functools.lru_cache(maxsize=8192)
 def normalize(text: str) -> str:
     """Fold (case, diacritics: "José Müller" is "jose muller"), drop punctuation, possessive
     's, and titles; collapse spaces."""

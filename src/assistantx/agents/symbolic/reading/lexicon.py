@@ -127,6 +127,8 @@ _EVERYDAY = english.phrase_table("everyday_names")
 # What makes one of those names that is also a verb ("brew") a thing: an article before it
 # The words before a thing's name that say whose or which one it is ("my ms", "the ms").
 _OWNING_WORDS = frozenset({"my", "your", "his", "her", "our", "their", "the", "this", "that"})
+_TEXTS_KEPT = 512  # Lexicon.tokens: texts whose tokens are kept
+
 _THING_ARTICLES = frozenset({"a", "an", "another", "the", "some", "quick", "nice", "proper"})
 
 
@@ -210,6 +212,12 @@ class Lexicon:
     clipped_verbs: ClippedVerbs = field(default_factory=lambda: ClippedVerbs({}, {}))
     # the office's one personal paper said in an everyday noun ("my report", ``own_papers``)
     own_papers: OwnPapers | None = None
+    # the tokens of the texts last read: one message is tokenized four or five times over
+    # (the parser's frame, its pieces, the request screen, the drinks screen) and stage 1
+    # reads only the tables above, which are fixed once the lexicon is built
+    _tokens_of: dict[str, tuple[Token, ...]] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -406,6 +414,14 @@ class Lexicon:
 
     def tokens(self, text: str) -> list[Token]:
         """The tokens of ``text`` (stage 1), each corrected against this office's words."""
+        kept = self._tokens_of.get(text)
+        if kept is None:
+            if len(self._tokens_of) >= _TEXTS_KEPT:
+                self._tokens_of.clear()
+            kept = self._tokens_of[text] = tuple(self._read_tokens(text))
+        return list(kept)
+
+    def _read_tokens(self, text: str) -> list[Token]:
         # "bring idas ruler": a name's possessive without its apostrophe, before correction
         raw = read_bare_possessives(
             tokenize(text), self._one_word_names, self._item_openers, self._owned_openers

@@ -207,7 +207,7 @@ def content(words: list[str]) -> list[str]:
     nothing to act on."""
     k = 0
     while k < len(words):
-        phrase = next((p for p in _STANCE if _starts(words[k:], p)), None)
+        phrase = _phrase_at(words, k, _STANCE_AT)
         if phrase is not None:
             k += len(phrase)
         elif _stance_infinitive(words[k : k + 3]):
@@ -247,7 +247,7 @@ def _hedged(w: list[str]) -> tuple[str, ...] | None:
 
 
 def _has_need_phrase(w: list[str]) -> bool:
-    return any(_starts(w[n:], p) for n in range(len(w)) for p in NEED_PHRASES)
+    return _said_anywhere(w, _NEED_AT)
 
 
 def _perfect_after(words: list[str]) -> bool:
@@ -262,7 +262,7 @@ def _without_hedges(words: list[str]) -> list[str]:
     kept: list[str] = []
     n = 0
     while n < len(words):
-        hedge = next((h for h in _SPEAKERS_DOUBT if _starts(words[n:], h)), None)
+        hedge = _phrase_at(words, n, _DOUBT_AT)
         if hedge is None:
             kept.append(words[n])
             n += 1
@@ -271,8 +271,50 @@ def _without_hedges(words: list[str]) -> list[str]:
     return kept
 
 
-def _starts(words: list[str], phrase: tuple[str, ...]) -> bool:
-    return tuple(words[: len(phrase)]) == phrase
+PhraseIndex = dict[str, tuple[tuple[str, ...], ...]]
+
+
+def _by_first_word(phrases: tuple[tuple[str, ...], ...]) -> PhraseIndex:
+    """The phrases by their first word, each word's in the list's order: the reader looks for
+    every phrase list at every word of every piece, and only those that start with the word
+    there can be said there."""
+    index: dict[str, list[tuple[str, ...]]] = {}
+    for phrase in phrases:
+        if phrase:
+            index.setdefault(phrase[0], []).append(phrase)
+    return {first: tuple(said) for first, said in index.items()}
+
+
+def _phrase_at(words: list[str], at: int, index: PhraseIndex) -> tuple[str, ...] | None:
+    """The first phrase of the list said at ``words[at]``."""
+    for phrase in index.get(words[at], ()):
+        if tuple(words[at : at + len(phrase)]) == phrase:
+            return phrase
+    return None
+
+
+def _said_anywhere(words: list[str], index: PhraseIndex) -> bool:
+    return any(_phrase_at(words, n, index) is not None for n in range(len(words)))
+
+
+_STANCE_AT = _by_first_word(_STANCE)
+_NEED_AT = _by_first_word(NEED_PHRASES)
+_DOUBT_AT = _by_first_word(_SPEAKERS_DOUBT)
+_DECLINING_THANKS_AT = _by_first_word(_DECLINING_THANKS)
+_DONE_MARKERS_AT = _by_first_word(_DONE_MARKERS)
+_PAST_TIMES_AT = _by_first_word(_PAST_TIMES)
+_DEFERRALS_AT = _by_first_word(_DEFERRALS)
+
+
+def _starts(words: list[str], phrase: tuple[str, ...], at: int = 0) -> bool:
+    """Whether ``phrase`` is said at ``words[at]``. The reader asks this millions of times
+    (every phrase list at every word): the first word is compared before any slice is made."""
+    end = at + len(phrase)
+    if end > len(words):
+        return False
+    if phrase and words[at] != phrase[0]:
+        return False
+    return tuple(words[at:end]) == phrase
 
 
 # a thing's state said with its participle ("sample is labelled", "sample's labelled")
@@ -311,13 +353,13 @@ class SpeechActs:
         about "it", marked as news ("already", "actually") or said of "one"/"it"; a later
         fact with no such mark ("fetch the copies, Priya made them for me") is context."""
         w = [x for x in words if x not in ("oh", "ah", "ok", "okay", "well", "so")]
-        if any(_starts(w[n:], p) for n in range(len(w)) for p in _DECLINING_THANKS):
+        if _said_anywhere(w, _DECLINING_THANKS_AT):
             return True
         w = _without_hedges(w)
         if not w or self._imperative(w) or w[0] in _MODALS or w[0] in _AUX - {"did"}:
             return False  # "could you ...", "did Ida bring one?" (a question) is no news
-        marked = any(_starts(w[n:], p) for n in range(len(w)) for p in _DONE_MARKERS)
-        if not marked and any(_starts(w[n:], p) for n in range(len(w)) for p in _PAST_TIMES):
+        marked = _said_anywhere(w, _DONE_MARKERS_AT)
+        if not marked and _said_anywhere(w, _PAST_TIMES_AT):
             return False  # "he lent me his last week": back-story told with the request
         mine = bool(set(w) & (_FOR_SPEAKER | {"us", "we", "weve"}))
         for n, x in enumerate(w):
@@ -342,7 +384,7 @@ class SpeechActs:
         """ "I'll let you know", "will tell you when": the asking is put off; not the
         stance that opens a message ("just to let you know I'm off tomorrow")."""
         w = content(words)
-        return any(_starts(w[n:], p) for n in range(len(w)) for p in _DEFERRALS)
+        return _said_anywhere(w, _DEFERRALS_AT)
 
     def future_need(self, words: list[str], deferred: bool) -> bool:
         """ "I might need Hal's ruler later", "may need a calculator if ...": the speaker's
@@ -419,7 +461,7 @@ class SpeechActs:
         if any(a == "on" and language.is_weekday(b) for a, b in itertools.pairwise(w)):
             return True
         return any(
-            _starts(w[n:], p) and (n == 0 or w[n - 1] not in _DEADLINES)  # "by tomorrow": now
+            _starts(w, p, n) and (n == 0 or w[n - 1] not in _DEADLINES)  # "by tomorrow": now
             for n in range(len(w))
             for p in _LATER
         )
@@ -428,7 +470,7 @@ class SpeechActs:
         """A wish or prohibition about other people's conduct: nothing to fetch."""
         w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
         for n in range(len(w)):
-            if any(_starts(w[n:], p) for p in _NOBODY):
+            if any(_starts(w, p, n) for p in _NOBODY):
                 return True  # "nobody take my mug", "make sure no one uses ..."
         if w[:1] and w[0] in _GUARD_VERBS and not _left_at_someones_place(w[1:]):
             # "leave it on her desk", "leave it in my office": where it is delivered to,

@@ -94,6 +94,9 @@ def split_words(text: str) -> list[str]:
 
 
 def starts_with(words: list[str], at: int, phrase: tuple[str, ...]) -> bool:
+    # asked of every phrase at every word: the first word is compared before any slice
+    if phrase and (at >= len(words) or words[at] != phrase[0]):
+        return False
     return tuple(words[at : at + len(phrase)]) == phrase
 
 
