@@ -157,8 +157,11 @@ async def test_a_small_structured_call_is_schema_valid_and_counted(
 async def test_each_agent_call_is_schema_valid_or_counted(
     llama_server: LlamaServer, office: Office, server_speed: ServerSpeed
 ) -> None:
-    """As many agents as the measured speed allows in two minutes; each one that completes
-    is schema-valid, each one cut off by its budget is counted with what it cost."""
+    """The agent with the smallest prompt always, then as many others as the measured speed
+    allows in one minute; each one that completes is schema-valid, each one cut off by its
+    budget is counted with what it cost. (The other agents' prompts are larger, and on a
+    loaded machine none of them fitted two minutes either: the first call is what makes this
+    test check something on any machine.)"""
     reasoner = LLMReasonerFactory(
         model_for(llama_server, CALL_CAP_S), AgentPrompts.load(), output_retries=1
     )()
@@ -174,14 +177,19 @@ async def test_each_agent_call_is_schema_valid_or_counted(
             ctx, percept, plan, decision, [], Observation(robot_place="meeting_room")
         ),
     }
-    deadline = time.monotonic() + 120.0
+    deadline = time.monotonic() + 60.0
     completed: list[str] = []
+    called: list[str] = []
     for agent in sorted(AGENT_SCHEMAS, key=lambda a: prompt_tokens(messages[a])):
         size = prompt_tokens(messages[agent])
         left = deadline - time.monotonic()
-        if not server_speed.fits(size, 160, left):
+        if not called:
+            budget = server_speed.must_finish_budget_s(size, 160)
+        elif server_speed.fits(size, 160, left):
+            budget = min(server_speed.budget_s(size, 160), left)
+        else:
             continue  # would not finish in what is left of the test's time
-        budget = min(server_speed.budget_s(size, 160), left)
+        called.append(agent)
         ledger = UsageLedger()
         outcome = await _call(model_for(llama_server, budget), ledger, agent, messages[agent])
         if isinstance(outcome, LLMCallFailed):
@@ -196,7 +204,7 @@ async def test_each_agent_call_is_schema_valid_or_counted(
         assert outcome.attempts[-1].response.finish_reason != "length"
         assert agent_call(agent, outcome.attempts).attempts == requests_sent(ledger)
         completed.append(agent)
-    print(f"completed within budget: {completed}")
+    print(f"called: {called}; completed within budget: {completed}")
 
 
 async def _call(
