@@ -268,7 +268,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
         stood_in_for=stands_in_for([t.word for t in tokens], m.start - 1),
         to_have=asked_to_have(
-            tokens[m.start - 1].word if m.start > 0 else "",
+            prev_word(tokens, m.start),  # "could Mr K have": the title skipped
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
     )

@@ -44,7 +44,7 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
-from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
@@ -600,7 +600,7 @@ def _said_to_have(lexed: Lexed, at: int) -> str | None:
     if person is None or person.kind != "person" or person.possessive or len(person.ids) != 1:
         return None
     tokens = lexed.tokens
-    before = tokens[person.start - 1].word if person.start > 0 else ""
+    before = prev_word(tokens, person.start)  # "could Mr K have": the title skipped
     if asked_to_have(before, [t.word for t in tokens[person.end : item.start]]):
         return None  # "could Nkechi have a stapler": she is to get one, not lend hers
     between = [t.word for t in lexed.tokens[person.end : item.start]]
