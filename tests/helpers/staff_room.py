@@ -1,8 +1,9 @@
 """A school staff room for the reader's tests of blind round 57-58's classes about whom an item
 is for, whose it is and who a name or pronoun points at (the round's own offices and sentences
-were never read): a fridge that keeps Ravi's flask, a kettle whose one operation is asked for with "brew" (tea), a coffee
-machine, colleagues known by a title and an initial ("Mr K", "Dr N"), word-names (Miles, Ivy),
-a short name (Bron for Bronwen) and things several people own (drill, torch, pen, charger)."""
+were never read): a fridge that keeps Ravi's flask, a kettle whose one operation is asked for
+with "brew" (tea), a coffee machine, colleagues known by a title and an initial ("Mr K", "Dr
+N"), word-names (Miles, Ivy), a short name (Bron for Bronwen) and things several people own
+(drill, torch, pen, charger)."""
 
 from __future__ import annotations
 
