@@ -49,6 +49,7 @@ import weakref
 from collections import OrderedDict
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
+from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
     unanchored_it,
@@ -193,6 +194,8 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
+        # "i need a pen. Lee's is fine": Lee's pen, asked of Lee
+        text = accepted_owners(text, self.screen.terms.is_person_word)
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
         frame = self._frame(
