@@ -1,9 +1,9 @@
 """A school staff room for the reader's tests of blind round 57-58's classes about whom an item
 is for, whose it is and who a name or pronoun points at (the round's own offices and sentences
-were never read): a fridge that keeps Ravi's flask, a kettle whose one operation is asked for
-with "brew" (tea), a coffee machine, colleagues known by a title and an initial ("Mr K", "Dr
-N"), word-names (Miles, Ivy), a short name (Bron for Bronwen) and things several people own
-(drill, torch, pen, charger)."""
+were never read): a fridge that keeps Ravi's flask, a prep cabinet that keeps Dr N's
+goggles, a kettle whose one operation is asked for with "brew" (tea), a coffee machine,
+colleagues known by a title and an initial ("Mr K", "Dr N"), word-names (Miles, Ivy), a short
+name (Bron for Bronwen) and things several people own (drill, torch, pen, charger)."""
 
 from __future__ import annotations
 
@@ -28,11 +28,16 @@ _PEOPLE = (
     ob.person("ivy", "Ivy Stone", "drill", aliases=["Ivy"]),
     ob.person("omar", "Omar Farouk", "torch", aliases=["Omar"]),
     ob.person("kit", "Kit Marsh", aliases=["Kit"]),
-    ob.person("nadia", "Nadia Novak", "goggles", aliases=["Dr N", "Nadia"]),
-    ob.person("lee", "Lee Park", "pen", "charger", aliases=["Lee"]),
+    ob.person(
+        "nadia",
+        "Nadia Novak",
+        ob.kept("goggles", at="store", facility="prep_cabinet"),
+        aliases=["Dr N", "Nadia"],
+    ),
+    ob.person("lee", "Lee Park", "pen", "charger", "stapler", aliases=["Lee"]),
     ob.person("ruth", "Ruth Bell", "charger", "pen", aliases=["Ruth"]),
     ob.person("zhang", "Zhang Min", aliases=["Zhang"]),
-    ob.person("ana", "Ana Silva", "stapler", aliases=["Ana"]),
+    ob.person("ana", "Ana Silva", aliases=["Ana"]),
 )
 
 
@@ -70,6 +75,7 @@ def raw_staff_room() -> dict[str, Any]:
                 products=["tea"],
             ),
             ob.facility("fridge", "fridge", at="kitchen", guards=["tam"]),
+            ob.facility("prep_cabinet", "prep cabinet", at="store", guards=["tam"]),
             ob.facility(
                 "coffee_machine",
                 "coffee machine",

@@ -856,10 +856,11 @@ def _besides_owners(
     last_person: Sequence[str],
     addressed: str | None,
 ) -> Roles | None:
-    """ "Nadia needs Miles's dev kit - could you ask him and take it to her?": of the two
-    colleagues named, the one said as the owner of a thing ("Miles's dev kit") is not whom
-    "her" brings it to; with exactly one other colleague named, the pronoun is them. None:
-    still unclear (the reader asks)."""
+    """ "Nadia needs Miles's dev kit - could you ask him and take it to her?", "Kit's after a
+    torch, take Omar's over to him": of the two colleagues named, the one said as the owner
+    of a thing ("Miles's dev kit", also in the clause itself) is not whom "her" brings it
+    to; with exactly one other colleague named, the pronoun is them. None: still unclear
+    (the reader asks)."""
     owned = {
         m.ids[0]: mentions[n + 1].ids
         for n, m in enumerate(mentions[:-1])
@@ -882,6 +883,10 @@ def _besides_owners(
     if not owners & set(last_person) or len(left) != 1:
         return None
     try:
-        return clause_roles(tokens, clause, requester, left, addressed=addressed)
+        # "Kit's after a torch, take Omar's over to him": Omar, named again in this clause
+        # as the owner, is not whom "him" means
+        return clause_roles(
+            tokens, clause, requester, left, addressed=addressed, not_meant=frozenset(owners)
+        )
     except UnresolvedPronoun:
         return None
