@@ -9,7 +9,7 @@ The reader (``agents.symbolic.reading._parties``, ``frames``) and the runtime's 
 reader planned go to the person named. The words: a request modal ("could", "can", "may") or
 "let" right before the name and a verb of having or borrowing right after it ("could Linh get
 me ..." makes Linh the one who gets it for the requester, not a recipient; "let Linh get one"
-does); or the name, then "could do with"."""
+and "could Linh get a coffee" do); or the name, then "could do with"."""
 
 from __future__ import annotations
 
@@ -19,6 +19,8 @@ from assistantx.core import english
 
 _ASKING = english.words("request_modals") | {"let"}
 _HAVING = frozenset({"have", "borrow", "get"})
+# "could Linh get a coffee": a thing right after "get" is what Linh is to have
+_SOME = frozenset({"a", "an", "another", "some", "one"})
 _DO_WITH = (["could", "do", "with"], ["can", "do", "with"])
 # "could Marguerite have a look at my form": a preposition before the thing makes it what an
 # activity is about, not what is given.
@@ -32,6 +34,6 @@ def asked_to_have(before: str, after: Sequence[str]) -> bool:
         return True
     if before not in _ASKING or not after or after[0] not in _HAVING:
         return False
-    if after[0] == "get" and before != "let":
+    if after[0] == "get" and before != "let" and (len(after) < 2 or after[1] not in _SOME):
         return False  # "could Linh get me one": Linh gets it for the requester
     return not any(w in _ABOUT for w in after[1:])

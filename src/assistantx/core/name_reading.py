@@ -137,6 +137,8 @@ def read_name(slot: NameSlot) -> NameReading:
         return "word"  # "Drew a blank on the rota": the speaker's dropped "I", a past verb
     if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
+    if _spoken_to(slot):
+        return "person"
     if _verb_slot(slot):
         return "word"
     if _titled_doer(slot):
@@ -184,6 +186,19 @@ def read_name(slot: NameSlot) -> NameReading:
     if word or compound:
         return "ask" if capital and not slot.opens else "word"
     return "person" if capital else "word"
+
+
+def _spoken_to(slot: NameSlot) -> bool:
+    """ "Miles, I need your drill", "Ivy - can I borrow it?": a capitalised name word that
+    opens a sentence, set off by a comma, colon or dash, is the colleague spoken to (a month
+    so set off is left to the date rules: "June, as usual")."""
+    return (
+        slot.opens
+        and slot.next_after_pause
+        and not slot.possessive
+        and slot.written[:1].isupper()
+        and not language.is_month(slot.word)
+    )
 
 
 def _verb_slot(slot: NameSlot) -> bool:

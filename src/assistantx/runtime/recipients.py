@@ -415,9 +415,34 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
                 if not m.possessive and _before(words, m.start) != "from"
                 for person in m.people
             } - {requester}
+        if len(candidates) > 1:
+            # "Kit's after a torch, take Omar's over to him": of several named, the one
+            # said to need a thing is whom it goes to (the owner and the one who said so
+            # are not), where exactly one is
+            needing = {p for m in mentions if _said_to_need(words, m) for p in m.people}
+            if len(needing & candidates) == 1:
+                candidates &= needing
         if len(candidates) == 1:
             named |= candidates
     return frozenset(named - {requester})
+
+
+# "needs", "is after", "could do with" (``need_phrases``): said right after a name; after a
+# possessive's "'s" (the "is" of "Kit's after a torch") without that "is"
+_NEEDS = (("needs",), ("need",), *(tuple(p.split()) for p in english.entries("need_phrases")))
+
+
+def _said_to_need(words: list[_Word], m: _Mention) -> bool:
+    """Whether the name ``m`` is the subject of a need: "Kit needs a torch", "Kit's after a
+    torch", "Kit is looking for one"."""
+    after = tuple(w.folded for w in words[m.end : m.end + 4])
+    for phrase in _NEEDS:
+        said = phrase[1:] if m.possessive and phrase[0] in ("s", "is") else phrase
+        if m.possessive and said == phrase:
+            continue  # "Kit's needs": no "is" in "'s" here
+        if said and after[: len(said)] == said:
+            return True
+    return False
 
 
 _HAS = frozenset({"has", "have", "had"})

@@ -403,6 +403,20 @@ class TaskReader:
         self.file = office.file_type() or ""  # what is forwarded
         seal = office.seal_tool()
         self.tool_owners = frozenset(office.owners_of(seal) if seal else ())
+        # each form of a verb that asks for exactly one operation making something from
+        # nothing → its product ("brew" → tea where brewing is the kettle's one operation)
+        makers: dict[str, set[str]] = {}
+        for o in office.operations:
+            for verb in o.verbs:
+                for form in language.verb_forms(language.fold(verb)):
+                    makers.setdefault(form, set()).add(
+                        o.product if o.product and o.input is None else ""
+                    )
+        self.verb_products = {
+            form: next(iter(made))
+            for form, made in makers.items()
+            if len(made) == 1 and "" not in made
+        }
 
     def made_from_nothing(self, item: str) -> bool:
         """Whether ``item`` is what a service makes from nothing (a coffee, a tea)."""
@@ -602,6 +616,7 @@ class TaskReader:
             return []  # "print my draft and take the printout to Sue": the same task, on
         if previous is not None and self._sends_made_file(clause, roles, previous):
             return []  # "scan my reel and send me the PDF": the scan's file, to whom it goes
+        clause = self._product_of_the_verb(clause)
         s = self.scene(clause, roles, requester, previous)
         each = self._each_product(s)
         if each:
@@ -610,6 +625,28 @@ class TaskReader:
         if rule is not None:
             return [rule.task(s)]
         return self._objects(s)
+
+    def _product_of_the_verb(self, clause: Clause) -> Clause:
+        """ "brew for me and one for Bron": an operation's verb said as the whole request,
+        with no thing named, names what it makes, where the office has exactly one operation
+        asked for with it (and that one makes something from nothing): the verb is read as
+        that product."""
+        if any(m.kind in ("item", "pronoun", "facility") for m in clause.mentions):
+            return clause
+        verbs = [
+            m
+            for m in clause.mentions
+            if m.kind == "cue" and m.start not in clause.modifiers and m.end - m.start == 1
+        ]
+        if len(verbs) != 1:
+            return clause
+        verb = verbs[0]
+        product = self.verb_products.get(language.fold(verb.text))
+        if product is None:
+            return clause
+        read = Mention("item", verb.start, verb.end, (product,), False, verb.text)
+        mentions = [read if m is verb else m for m in clause.mentions]
+        return dataclasses.replace(clause, mentions=mentions, cues=set())
 
     def _sends_made_file(self, clause: Clause, roles: Roles, previous: Task) -> bool:
         """Whether ``clause`` only sends on the electronic file the previous task's operation
@@ -746,14 +783,18 @@ class TaskReader:
         return task.model_copy(update=update) if update else task
 
 
+# "one" or "another" standing for one more of the thing just named
+_ANOTHER = frozenset({"one", "another"})
+
+
 def _ones_again(s: Scene, objects: list[Mention]) -> list[Mention]:
-    """ "a tea for me and one for Sun Li", "bring me a stapler and one for Wang": "one" after
+    """ "a tea for me and one for Sun Li", "make me a tea and another for Kit": "one" after
     an object, with whom it is for said right after it, is another of that object, for that
     person; each is a task of its own. A "one" with nobody named after it is read as
     before."""
     out = list(objects)
     for m in s.clause.mentions:
-        if m.kind != "word" or m.ids[0] != "one" or m.start in s.clause.modifiers:
+        if m.kind != "word" or m.ids[0] not in _ANOTHER or m.start in s.clause.modifiers:
             continue
         before = [o for o in out if o.end <= m.start]
         after = min((o.start for o in out if o.start > m.start), default=1 << 30)

@@ -268,7 +268,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
         stood_in_for=stands_in_for([t.word for t in tokens], m.start - 1),
         to_have=asked_to_have(
-            tokens[m.start - 1].word if m.start > 0 else "",
+            prev_word(tokens, m.start),  # "could Mr K have": the title skipped
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
     )
@@ -337,10 +337,12 @@ def clause_roles(
     last_person: list[str],
     *,
     addressed: str | None = None,
+    not_meant: frozenset[str] = frozenset(),
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
-    "your" is theirs, ``vocative``)."""
+    "your" is theirs, ``vocative``); ``not_meant``: colleagues a "him"/"her" that receives
+    cannot mean (the owner of the thing handed to them, ``frames._besides_owners``)."""
     roles = Roles()
     ms = clause.mentions
     for n, m in enumerate(ms):
@@ -360,7 +362,7 @@ def clause_roles(
         elif m.kind == "pronoun" and _at_their_place(tokens, m):
             # "Priya wants a stapler, leave one at her desk": she receives it there (the
             # consent guard reads the same words with the same rule)
-            others = [x for x in last_person if x != requester]
+            others = [x for x in last_person if x != requester and x not in not_meant]
             if len(set(others)) != 1:
                 raise UnresolvedPronoun(m.text)
             roles.add_recipient(others[-1], m.start)
@@ -373,7 +375,7 @@ def clause_roles(
             roles.actor.append(others[-1])
         elif m.kind == "pronoun" and tokens[m.start].word in _OBJECT_PRONOUNS:
             following = ms[n + 1] if n + 1 < len(ms) else None
-            others = [x for x in last_person if x != requester]
+            others = [x for x in last_person if x != requester and x not in not_meant]
             possessive_form = tokens[m.start].word in OTHER_POSSESSIVES
             owns_next = (
                 following is not None

@@ -44,7 +44,7 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
-from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
@@ -193,7 +193,10 @@ class FrameReader:
             previous_cues = bool(clause.cues)
             previous_roles = roles
             previous_asked = _asked_subjects(tokens, clause)
-            if made:
+            again = _one_more(tasks, clause, tokens, roles, made)
+            if again is not None:
+                tasks.append(again)  # "make me a coffee and bring Tam one too": Tam's own
+            elif made:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
@@ -348,7 +351,7 @@ class FrameReader:
         cannot act on a drink. A clause that hands things over ("bring me the stapler and a
         coffee") keeps its coordinated objects, and whom they go to."""
         cues = {k for m in current.mentions if m.kind == "cue" for k in m.ids}
-        if not cues or cues & _HANDING_CUES:
+        if not cues:
             return False
         while n < len(mentions) and tokens[mentions[n].start].word in _SKIP_AFTER_JOIN:
             n += 1
@@ -356,15 +359,22 @@ class FrameReader:
             return False
         first = mentions[n]
         if first.kind == "self" and tokens[first.start].word in _SUBJECT_SELF:
+            # "send my tripod to Noor, and I'd like my flask": the wish's own subject is its
+            # recipient, after handing work too
             k = n + 1  # "I would also like": past the modal and "also"
             while k < len(mentions) and tokens[mentions[k].start].word in _SKIP_AFTER_JOIN:
                 k += 1
+            j = k + 1  # "I'd like my flask": past the owner's word
+            if j < len(mentions) and mentions[j].kind == "self" and mentions[j].possessive:
+                j += 1
             return (
-                k + 1 < len(mentions)
+                j < len(mentions)
                 and mentions[k].kind == "cue"
                 and tokens[mentions[k].start].word in _WISH_VERBS
-                and mentions[k + 1].kind == "item"
+                and mentions[j].kind == "item"
             )
+        if cues & _HANDING_CUES:
+            return False
         return (
             first.kind == "item"
             and self.reader.made_from_nothing(first.id)
@@ -600,7 +610,7 @@ def _said_to_have(lexed: Lexed, at: int) -> str | None:
     if person is None or person.kind != "person" or person.possessive or len(person.ids) != 1:
         return None
     tokens = lexed.tokens
-    before = tokens[person.start - 1].word if person.start > 0 else ""
+    before = prev_word(tokens, person.start)  # "could Mr K have": the title skipped
     if asked_to_have(before, [t.word for t in tokens[person.end : item.start]]):
         return None  # "could Nkechi have a stapler": she is to get one, not lend hers
     between = [t.word for t in lexed.tokens[person.end : item.start]]
@@ -780,6 +790,39 @@ def _asked_subjects(tokens: Sequence[Token], clause: Clause) -> list[str]:
     ]
 
 
+# "one" or "another" standing for one more of the thing just named; the words before it that
+# make it a particular one ("the one", "which one") instead
+_ONE_MORE = frozenset({"one", "another"})
+_PARTICULAR = frozenset({"the", "this", "that", "which", "any", "every", "each", "no"})
+
+
+def _one_more(
+    tasks: list[Task], clause: Clause, tokens: Sequence[Token], roles: Roles, made: list[Task]
+) -> Task | None:
+    """ "make me a coffee and bring Tam one too", "... then another for Kit": a clause with
+    no thing of its own whose object is "one" or "another", with someone of its own to have
+    it, asks one more of what the clause before made or fetched (anyone's), for them."""
+    if made or not tasks or not roles.recipient:
+        return None
+    last = tasks[-1]
+    if last.kind not in ("produce", "transfer") or last.owner is not None:
+        return None
+    if any(m.kind in ("item", "pronoun") for m in clause.mentions):
+        return None
+    for m in clause.mentions:
+        if m.kind != "word" or m.ids[0] not in _ONE_MORE or m.possessive:
+            continue
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        if before in _PARTICULAR or after == "of":
+            continue
+        who = roles.recipient[-1]
+        if who == last.recipient:
+            return None
+        return last.model_copy(update={"recipient": who})
+    return None
+
+
 def _first_leg(earlier: Task, made: list[Task]) -> bool:
     """Whether ``earlier`` (a fetch of an item to someone) is only the way to the work a
     later clause does on that same item for the same person ("... and heat it")."""
@@ -813,10 +856,11 @@ def _besides_owners(
     last_person: Sequence[str],
     addressed: str | None,
 ) -> Roles | None:
-    """ "Nadia needs Miles's dev kit - could you ask him and take it to her?": of the two
-    colleagues named, the one said as the owner of a thing ("Miles's dev kit") is not whom
-    "her" brings it to; with exactly one other colleague named, the pronoun is them. None:
-    still unclear (the reader asks)."""
+    """ "Nadia needs Miles's dev kit - could you ask him and take it to her?", "Kit's after a
+    torch, take Omar's over to him": of the two colleagues named, the one said as the owner
+    of a thing ("Miles's dev kit", also in the clause itself) is not whom "her" brings it
+    to; with exactly one other colleague named, the pronoun is them. None: still unclear
+    (the reader asks)."""
     owned = {
         m.ids[0]: mentions[n + 1].ids
         for n, m in enumerate(mentions[:-1])
@@ -839,6 +883,10 @@ def _besides_owners(
     if not owners & set(last_person) or len(left) != 1:
         return None
     try:
-        return clause_roles(tokens, clause, requester, left, addressed=addressed)
+        # "Kit's after a torch, take Omar's over to him": Omar, named again in this clause
+        # as the owner, is not whom "him" means
+        return clause_roles(
+            tokens, clause, requester, left, addressed=addressed, not_meant=frozenset(owners)
+        )
     except UnresolvedPronoun:
         return None

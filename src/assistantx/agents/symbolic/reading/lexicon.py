@@ -685,6 +685,14 @@ class Lexicon:
         nxt = tokens[i + 1].word if i + 1 < len(tokens) else ""
         return nxt not in self.people and nxt not in self.name_words
 
+    def _titled_initial(self, tokens: Sequence[Token], i: int, word: str) -> bool:
+        """ "Mr K", "Dr N": a title and an initial the office declares as someone's alias,
+        said as declared (the initial alone is nobody's name, so it has no key of its own)."""
+        if len(word) != 1 or word not in self.titled or word in self.people or i == 0:
+            return False
+        prev = tokens[i - 1].word
+        return prev in TITLES and prev not in _THING_ARTICLES and prev not in ("our",)
+
     def _role_at(self, tokens: Sequence[Token], i: int) -> bool:
         """ "by the manager": a role title with no name after it names the one it stands for."""
         if tokens[i].word not in self.roles:
@@ -716,6 +724,9 @@ class Lexicon:
                     ids = self._person_ids(tokens, idx, named or self.people[phrase])
                     alt = self.word_phrase(tokens, idx[0]) if reading == "ask" else ""
                     return Mention("person", start, end, ids, poss, text, alt), n
+            if n == 1 and self._titled_initial(tokens, start, phrase):
+                ids = tuple(sorted(self.titled[phrase]))
+                return Mention("person", start, end, ids, poss, text), n
             in_verb_slot = n == 1 and phrase in self.cue_words and self._verb_slot(tokens, start)
             # a declared phrase joined into one token ("heat press" my file) is the verb: the
             # joining left it as the thing where a determiner stood before it

@@ -49,6 +49,7 @@ import weakref
 from collections import OrderedDict
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
+from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
     unanchored_it,
@@ -91,14 +92,16 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
-from assistantx.agents.symbolic.reading.purpose import lacked_purposes
+from assistantx.agents.symbolic.reading.purpose import contracted_needs, lacked_purposes
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
+from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.several_owners import with_owner
+from assistantx.agents.symbolic.reading.signed_on import signed_on
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
@@ -191,8 +194,15 @@ class InstructionParser:
         ``to_self``: the requester answered "me" to whom their own item goes;
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        # "Shiv here - ...": the speaker's sign-on, no party to the request
+        text = signed_on(text, self._one_name)
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
+        text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
+        # "Zhang asked if someone could bring him a coffee": a coffee for Zhang
+        text = reported_requests(text, self._one_name)
+        # "i need a pen. Lee's is fine": Lee's pen, asked of Lee
+        text = accepted_owners(text, self.screen.terms.is_person_word)
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
         frame = self._frame(
@@ -206,6 +216,12 @@ class InstructionParser:
             # "Shall I shred your document for you?"
             screened.confirm = True
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _one_name(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",
+        "Ana"; not "yesterday Ana")."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        return len(mentions) == 1 and mentions[0].kind == "person"
 
     def _frame(
         self,

@@ -61,3 +61,27 @@ def lacked_purposes(text: str) -> str:
         return f" {needs} something to {match.group('purpose')}"
 
     return _LACKED_PURPOSE.sub(need, text)
+
+
+# "Kit's after a torch", "Kit's looking for one": the need phrases said with "'s" for "is"
+# ("s after", "s looking for" of ``need_phrases``); "after" only before what is wanted ("Kit's
+# after a torch", never "Kit's after-school club")
+_WANTED_STARTS = r"(?:a|an|the|some|one|another|any|his|her|their|my|your)\b"
+_CONTRACTED_NEEDS = re.compile(
+    r"(?<=\w)['’]s\s+(?P<phrase>"
+    + "|".join(
+        r"\s+".join(re.escape(w) for w in p.split()[1:])
+        + (r"(?=\s+" + _WANTED_STARTS + ")" if p.split()[1:] == ["after"] else r"\b")
+        for p in english.entries("need_phrases")
+        if p.split()[0] == "s" and len(p.split()) > 1
+    )
+    + ")",
+    re.IGNORECASE,
+)
+
+
+def contracted_needs(text: str) -> str:
+    """ "Kit's after a torch" said as "Kit is after a torch": the "'s" of a need phrase is
+    "is", not a possessive, so the need is read as any other ("Kit is after a torch": whom
+    it is for)."""
+    return _CONTRACTED_NEEDS.sub(lambda m: f" is {m.group('phrase')}", text)

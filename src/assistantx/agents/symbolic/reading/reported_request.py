@@ -1,0 +1,56 @@
+"""A request reported on a colleague's behalf: "Professor Zhang asked if someone could bring
+him a coffee, can you do that?", "Ana was wondering if anyone could take her the stapler". The
+one reported asks for themselves: "him"/"her" in the reported request is that colleague, who
+receives. It is read as the request itself ("could someone bring Professor Zhang a coffee"),
+so the frames read the colleague as its recipient. A report with no such ask ("Zhang asked
+about the rota") is left alone, and so is one whose reported speaker is no colleague."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from assistantx.core import english
+
+
+def _alternatives(key: str) -> str:
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+_REPORTED = re.compile(
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:" + _alternatives("reporting_asks") + r")"
+    r"\s+(?:if|whether)\s+(?P<doer>" + _alternatives("reported_doers") + r")\s+"
+    r"(?P<modal>could|can|would|will|might)\s+(?P<rest>[^.?!;]*)",
+    re.IGNORECASE,
+)
+# "him"/"her" as whom something goes to: before what is given, after "to"/"for", or ending
+# the request ("bring it over to her")
+_RECEIVING = re.compile(
+    r"\b(?P<p>him|her)\b"
+    r"(?=\s+(?:a|an|the|some|one|another|his|her|their|my|over|up|down|back|round|across|it|"
+    r"them)\b|\s*[,]|\s*$)",
+    re.IGNORECASE,
+)
+
+
+def reported_requests(text: str, is_person: Callable[[str], bool]) -> str:
+    """``text`` with each request a colleague is reported to have made read as the request
+    for them (``is_person``: whether the words are one colleague's name)."""
+
+    def said(match: re.Match[str]) -> str:
+        said_who = match.group("who")
+        words = said_who.split()
+        # "Professor Zhang", "Liu Yang", "Ana": the longest tail of the words before the
+        # report that is one colleague's name ("so Ana was wondering": Ana)
+        tails = (" ".join(words[k:]) for k in range(len(words)))
+        who = next((t for t in tails if is_person(t)), None)
+        if who is None:
+            return match.group(0)
+        rest, found = _RECEIVING.subn(who, match.group("rest"))
+        if not found:
+            return match.group(0)
+        lead = said_who[: len(said_who) - len(who)]
+        return f"{lead}{match.group('modal')} {match.group('doer')} {rest}"
+
+    return _REPORTED.sub(said, text)
