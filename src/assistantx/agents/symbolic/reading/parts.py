@@ -118,7 +118,7 @@ def operation_left_out(
     for op in office.operations:
         if op.input is None or op.input not in items or op.id in run or not op.verbs:
             continue
-        at = _said_at(words, normalize(op.name).split(), office_words)
+        at = _said_at(words, normalize(op.name).split(), office_words | _words_of_things(readings))
         if at is None:
             continue
         head = normalize(op.name).split()[-1]
@@ -206,6 +206,13 @@ def _goes_to(
 def items_named(readings: Readings) -> set[str | None]:
     """The office's item types the request names."""
     return {m.id for m in readings.mentions if m.kind == "item"}
+
+
+def _words_of_things(readings: Readings) -> set[int]:
+    """Where a service's verb was read as a plain word of a thing's noun phrase ("the print
+    queue file", "Gwen's file on the shred bins", the lexicon's ``_noun_use`` and
+    ``_topic_of_thing``): the name of a thing or its topic, no work asked."""
+    return {m.start for m in readings.mentions if m.kind == "word" and m.in_name}
 
 
 def _said_at(
