@@ -381,6 +381,8 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
 _OWN = ("my", "our")
 # people named by what they are, nobody of the office ("client", "patient")
 _OUTSIDERS = english.words("outsider_nouns")
+# The determiners before a noun that modifies the next one ("the trustees' file")
+_MODIFIER_DETERMINERS = english.words("modifier_determiners")
 
 
 def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
@@ -402,6 +404,14 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         # for them); "my colleague's form" still asks who is meant
         lower = m.text[:1].islower()
         kind_of_person = lower and prev in ("a", "an") and language.is_noun(word)
+        # "the trustees' file", "the governors' report doc": a plural of people in lower
+        # case, its apostrophe after the s, after a determiner: a kind of paper, no name
+        kind_of_person = kind_of_person or (
+            lower
+            and m.text.endswith("s'")
+            and prev in _MODIFIER_DETERMINERS
+            and language.is_plural_noun(word)
+        )
         outsider = lower and prev in _OWN and word in _OUTSIDERS
         return not (kind_of_person or outsider)
     capital = m.text[:1].isupper() and m.start > 0
