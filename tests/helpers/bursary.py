@@ -10,7 +10,7 @@ from typing import Any
 from helpers import office_builder as ob
 
 _PEOPLE = (
-    ob.person("gwen", "Gwen Price", "stopwatch"),
+    ob.person("gwen", "Gwen Price", "stopwatch", "eraser", "clock", "fan"),
     ob.person("bronwen", "Bronwen Hale", "loupe"),
     ob.person("miles", "Miles Ford", "torch", aliases=["Miles"]),
     ob.person("james", "James Ode", "stapler", aliases=["James"]),
@@ -37,6 +37,9 @@ def raw_bursary() -> dict[str, Any]:
             ob.item("torch", "torch", synonyms=["flashlight"]),
             ob.item("stapler", "stapler"),
             ob.item("foil", "foil", consumable=True),
+            ob.item("eraser", "whiteboard eraser", synonyms=["board rubber"]),
+            ob.item("clock", "desk clock", synonyms=["table clock"]),
+            ob.item("fan", "desk fan", synonyms=["table fan"]),
             ob.item(
                 "marker",
                 "whiteboard marker",
