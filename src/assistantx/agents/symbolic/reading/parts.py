@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.unread_compounds import (
 from assistantx.core import language
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
+from assistantx.core.wording import ways_out
 from assistantx.memory.names import normalize
 
 _TO = frozenset({"to", "towards", "toward"})
@@ -246,10 +247,8 @@ def asked_part(question: str) -> str | None:
 
 def _means(office: Office) -> str:
     """How this office sends things out, for the requester's answer."""
-    names = list(dict.fromkeys(op.name for op in office.operations if op.sends_out))
-    if not names:
-        return ""
-    return f" I can send things out of the office by {' or '.join(names)}."
+    said = ways_out([op for op in office.operations if op.sends_out])
+    return f" {said}" if said else ""
 
 
 def _unknown_destination(readings: Readings, destinations: set[str]) -> str | None:
