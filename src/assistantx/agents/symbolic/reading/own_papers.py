@@ -35,6 +35,8 @@ _FILE_VERBS = english.words("file_verbs")
 _DATA_NOUNS = english.words("data_nouns")
 _ASKING = english.words("asking_words")
 _PARTICLES = frozenset({"out", "up", "off", "down", "away", "through", "over"})
+# Whom a thing is for, said as the verb's object before it ("print *me* the plan")
+_SPEAKER_OBJECTS = frozenset({"me", "us"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
 
 
@@ -140,12 +142,22 @@ class OwnPapers:
         ``found``: mentions read already."""
         out: dict[int, str] = {}
         for n, opener in enumerate(mentions):
-            if opener.kind != "self" or not opener.possessive:
+            # "print me the fire drill plan": the article has no mention; the phrase's first
+            # word opens it
+            at = opener.start - 1
+            article = (
+                at >= 0
+                and tokens[at].word == "the"
+                and opener.kind == "word"
+                and (n == 0 or mentions[n - 1].end <= at)
+            )
+            if not article and (opener.kind != "self" or not opener.possessive):
                 continue
-            if tokens[opener.start].typed not in ("", "my"):
+            if not article and tokens[opener.start].typed not in ("", "my"):
                 continue  # "the rota I typed up", read as "my rota": the speaker's own doing
-            head, end = None, opener.end
-            for k in range(n + 1, min(len(mentions), n + 2 + _MODIFIERS)):
+            first, start = (n, at) if article else (n + 1, opener.start)
+            head, end = None, opener.start if article else opener.end
+            for k in range(first, min(len(mentions), first + 1 + _MODIFIERS)):
                 m = mentions[k]
                 if m.kind != "word" or m.start != end or tokens[m.start].opens or k in found:
                     break
@@ -164,7 +176,9 @@ class OwnPapers:
                 continue
             if tokens[mentions[head].start].corrected or not _may_be_noun(word):
                 continue
-            verb = _verb_before(tokens, opener.start)
+            if article and not _for_the_speaker(tokens, start, end):
+                continue  # "print the fire drill plan" for nobody said: whose is not known
+            verb = _verb_before(tokens, start)
             types = {t for form, ts in self.worked if form == verb for t in ts}
             if len(types) == 1:
                 out[head] = next(iter(types))
@@ -233,7 +247,18 @@ def _verb_before(tokens: Sequence[Token], k: int) -> str | None:
     j = k - 1
     if j >= 0 and tokens[j].word in _PARTICLES and not tokens[j].opens:
         j -= 1
+    if j >= 1 and tokens[j].word in _SPEAKER_OBJECTS and not tokens[j].opens:
+        j -= 1  # "print me my ...", "print me the ...": the verb before whom it is for
     return tokens[j].word if j >= 0 else None
+
+
+def _for_the_speaker(tokens: Sequence[Token], start: int, end: int) -> bool:
+    """Whether the phrase from ``start`` to ``end`` is said to be for the speaker: "me" just
+    before it ("print me the fire drill plan") or "for me" just after ("print the plan for
+    me")."""
+    before = start >= 1 and tokens[start - 1].word in _SPEAKER_OBJECTS
+    after = [t.word for t in tokens[end : end + 2]] in (["for", "me"], ["for", "us"])
+    return before or after
 
 
 def _plain(word: str) -> bool:
