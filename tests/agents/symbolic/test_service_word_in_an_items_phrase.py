@@ -6,10 +6,14 @@ orders"). The service said as a verb, or asked for by its noun, is read as befor
 
 from __future__ import annotations
 
+import functools
+
 import pytest
 
+from assistantx.core.office import Office, load_office
 from helpers.bursary import bursary
-from helpers.reading import frame_reader
+from helpers.dataset_offices import DEFAULT_FILE
+from helpers.reading import frame_reader, parser_for
 
 _frame = frame_reader(bursary, "ana")
 
@@ -74,3 +78,30 @@ def test_the_service_asked_for_is_read_as_before(text: str, operation: str) -> N
 def test_an_operation_asked_as_a_noun_alone_is_still_asked_about() -> None:
     frame = _frame("my file needs a shred")
     assert frame.question is not None and "a shred" in frame.question, frame
+
+
+@functools.cache
+def _default() -> Office:
+    return load_office(DEFAULT_FILE)
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("forward the scan settings file to Wang", "lee"),
+        ("forward Zhang's scan settings file to Wang", "zhang"),
+        ("please send the scan log file to Wang", "lee"),
+    ],
+)
+def test_a_service_nobody_offers_inside_a_things_name_is_no_service(text: str, owner: str) -> None:
+    frame = parser_for(_default).parse(text, "lee")
+    assert frame.decline is None and frame.question is None, frame
+    assert [(t.kind, t.owner, t.recipient) for t in frame.tasks] == [
+        ("send_file", owner, "wang")
+    ], frame
+
+
+@pytest.mark.parametrize("text", ["bring me a scan", "get me a scan of my file", "scan my file"])
+def test_a_service_nobody_offers_asked_for_is_still_declined(text: str) -> None:
+    frame = parser_for(_default).parse(text, "lee")
+    assert frame.tasks == [] and frame.decline is not None and "scan" in frame.decline, frame
