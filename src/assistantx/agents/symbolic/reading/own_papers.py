@@ -35,6 +35,8 @@ _FILE_VERBS = english.words("file_verbs")
 _DATA_NOUNS = english.words("data_nouns")
 _ASKING = english.words("asking_words")
 _PARTICLES = frozenset({"out", "up", "off", "down", "away", "through", "over"})
+# The determiners before a kind of people's paper ("*the* trustees' report")
+_KIND_DETERMINERS = english.words("modifier_determiners")
 # Whom a thing is for, said as the verb's object before it ("print *me* the plan")
 _SPEAKER_OBJECTS = frozenset({"me", "us"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
@@ -195,11 +197,15 @@ class OwnPapers:
             if k is not None and self.file_type is not None:
                 found[k] = self.file_type
                 continue
-            k = paper_phrase(mentions, n, tokens, known)
+            # "the trustees' report": a kind of people's paper is the requester's, as "my"
+            openers = ("word",) if kind_of_people(tokens, mentions[n]) else ("self",)
+            k = paper_phrase(mentions, n, tokens, known, openers=openers)
             if k is None and self.file_type is not None:
                 # "send Sam my profiler capture": a noun of what a computer keeps, with a
                 # verb whose input is a file, is the requester's electronic file
-                k = paper_phrase(mentions, n, tokens, known, PAPER_NOUNS | FILE_NOUNS)
+                k = paper_phrase(
+                    mentions, n, tokens, known, PAPER_NOUNS | FILE_NOUNS, openers=openers
+                )
                 if k is None or not _file_verb(tokens, mentions[k].start):
                     continue
                 said = {t.word for t in tokens[mentions[n].end : mentions[k].end]}
@@ -238,6 +244,17 @@ class OwnPapers:
             return None
         said = {t.word for t in tokens[mentions[n].end : mentions[k].end]}
         return None if said & self.named else k
+
+
+def kind_of_people(tokens: Sequence[Token], m: Mention) -> bool:
+    """ "the trustees'", "the governors'": a plural of people in lower case, its apostrophe
+    after the s, after a determiner: a kind of paper's owners, nobody of the office."""
+    if m.kind != "word" or not m.possessive or m.start < 1:
+        return False
+    text = tokens[m.start].text
+    if not text[:1].islower() or not text.endswith(("s'", "s’")):
+        return False
+    return tokens[m.start - 1].word in _KIND_DETERMINERS and language.is_plural_noun(m.ids[0])
 
 
 def _verb_before(tokens: Sequence[Token], k: int) -> str | None:
