@@ -7,9 +7,14 @@ still declined."""
 
 from __future__ import annotations
 
+import functools
+
 import pytest
 
-from helpers.bursary import bursary
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import parse_office
+from helpers import office_builder as ob
+from helpers.bursary import bursary, raw_bursary
 from helpers.reading import answered_reader, frame_reader
 
 _frame = frame_reader(bursary, "ana")
@@ -51,3 +56,21 @@ def test_a_name_nothing_is_near_is_still_declined(text: str) -> None:
 def test_the_offices_own_name_is_read_as_before() -> None:
     frame = _frame("bring me a whiteboard marker")
     assert [(t.item, t.recipient) for t in frame.tasks] == [("marker", "ana")], frame
+
+
+@functools.cache
+def _two_kits() -> InstructionParser:
+    """The bursary with two things of near names: a first aid kit and a first aid bag."""
+    raw = raw_bursary()
+    raw["item_types"] += [ob.item("kit", "first aid kit"), ob.item("bag", "first aid bag")]
+    raw["people"][0]["owns"] += [{"type": "kit"}, {"type": "bag"}]
+    return InstructionParser(parse_office(raw, "bursary with two kits"))
+
+
+@pytest.mark.parametrize("text", ["bring me a first aid case", "bring me a first aid box"])
+def test_a_name_near_two_things_asks_which(text: str) -> None:
+    frame = _two_kits().parse(text, "ana")
+    assert frame.tasks == [] and frame.question is not None, frame
+    assert "first aid kit or first aid bag" in frame.question, frame
+    taken = _two_kits().parse_with_answers(text, "ana", ["the first aid bag"])
+    assert [(t.item, t.recipient) for t in taken.tasks] == [("bag", "ana")], taken
