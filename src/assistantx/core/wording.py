@@ -116,9 +116,40 @@ def verb_alone(op: Operation) -> str:
 
 def by_means(op: Operation) -> str:
     """How a send-out is named after "by" ("by fax", "by courier"): its one-word name or
-    verb; "" where it has none (a name of several words is no means: "by send off")."""
-    word = next((w for w in (op.name, *op.verbs) if w.strip() and " " not in w.strip()), None)
+    verb that is also a noun; "" where it has none (a name of several words is no means: "by
+    send off", nor a verb that names no means: "by send")."""
+    word = next(
+        (
+            w
+            for w in (op.name, *op.verbs)
+            if w.strip() and " " not in w.strip() and language.is_noun(w.strip())
+        ),
+        None,
+    )
     return f"by {word} " if word else ""
+
+
+def ways_out(ops: list[Operation]) -> str:
+    """How an office sends things out, in one English sentence: "I can send things out of
+    the office by fax or courier", "I can send things to the exam board" (a name that says
+    its own place, never "by send to the exam board"); "" where no operation sends out."""
+    means = list(dict.fromkeys(m.strip() for op in ops if (m := by_means(op))))
+    named = [
+        with_object(op.name if " " in op.name.strip() else verb_alone(op), "things")
+        for op in ops
+        if not by_means(op)
+    ]
+    said = []
+    if means:
+        listed = " or ".join(m.removeprefix("by ") for m in means)
+        said.append(f"send things out of the office by {listed}")
+    said += [
+        n
+        if any(w in n.split() for w in ("to", "into", "out", "off", "away"))
+        else f"{n} out of the office"
+        for n in dict.fromkeys(named)
+    ]
+    return f"I can {' or '.join(said)}." if said else ""
 
 
 def done_words(op: Operation) -> str:

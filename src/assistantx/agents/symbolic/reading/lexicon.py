@@ -117,6 +117,10 @@ _ALIAS_ARTICLES = frozenset({"the", "our"})
 _WORD_BEFORE = english.words("word_before")
 _CHAT_SHORTHAND = english.wording("chat_shorthand")
 _MODIFIER_DETERMINERS = english.words("modifier_determiners")
+# What opens a phrase that says what a paper or a thing is about ("the file *on* the rota")
+_TOPIC_PREPOSITIONS = english.words("topic_prepositions")
+# ... of those, the ones that also say where a thing is put ("on charge")
+_PLACING_PREPOSITIONS = english.words("placing_topic_prepositions")
 _MODALS = english.words("request_modals")
 # "have the Gaffer sign it", "let the manager stamp it": a verb that has someone do something
 _DOER_VERBS_BARE = english.words("doer_verbs_bare")
@@ -148,6 +152,9 @@ class Mention:
     # an item read from the work asked, not from its noun ("shred my questionnaire": the
     # document shredding takes): restated to the requester before anything is done
     guessed: bool = False
+    # a service's word read as a word of a thing's noun phrase or topic ("the *print* queue
+    # file", "Gwen's file on the *shred* bins"): it names no work left undone
+    in_name: bool = False
 
     @property
     def id(self) -> str:
@@ -453,6 +460,11 @@ class Lexicon:
     def _given_clips(self) -> dict[str, tuple[str, ...]]:
         taken = {*self.people, *self.name_words, *self.items, *self.facilities, *self.places}
         return given_name_clips(((p.name, p.id) for p in self.office.people), taken)
+
+    @functools.cached_property
+    def item_heads(self) -> frozenset[str]:
+        """The last words of the office's names of things ("marker" of "whiteboard marker")."""
+        return frozenset(k.split()[-1] for k in self.items)
 
     @functools.cached_property
     def _item_openers(self) -> frozenset[str]:
@@ -789,9 +801,11 @@ class Lexicon:
         made = self.made_objects.product_at(tokens, i, self._known)
         if made is not None:  # "print labels": the label run's product, not its verb
             return Mention("item", i, i + 1, (made,), t.possessive, t.text)
+        if self._noun_use(tokens, i) or self._topic_of_thing(tokens, i):
+            # "the print queue file", "my file on the shred bins": a word of a noun phrase
+            return Mention("word", i, i + 1, (w,), t.possessive, t.text, in_name=True)
         if w in self.cue_words and (
             idiom_at(tokens, i)  # "take care of it": handle it
-            or self._noun_use(tokens, i)
             or (event_noun(tokens, i, self.operation_words) and not self._work_asked(tokens, i))
         ):
             return Mention("word", i, i + 1, (w,), t.possessive, t.text)  # "the print run"
@@ -855,6 +869,31 @@ class Lexicon:
             return True
         after = tokens[i + 2].word
         return after in COMMON or after in self.items or self._modifier_noun(tokens, i + 2)
+
+    def _topic_of_thing(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "Gwen's file on the shred bins", "my doc about laminating", "the report on the
+        print costs": a service's word inside a phrase of topic (english.yaml
+        topic_prepositions) right after the name of a thing of the office says what the
+        thing is about; it asks for no work ("put my file on the laminator" names a
+        facility, no service word)."""
+        if tokens[i].word not in self.operation_words or tokens[i].opens:
+            return False
+        k = i - 1
+        while k > 0 and i - k <= 3 and not tokens[k + 1].after_pause:
+            t = tokens[k]
+            if t.word in _TOPIC_PREPOSITIONS:
+                break
+            if t.word not in _MODIFIER_DETERMINERS and not self._modifier_noun(tokens, k):
+                return False
+            k -= 1
+        else:
+            return False
+        if k < 1 or tokens[k].word not in _TOPIC_PREPOSITIONS or tokens[k].after_pause:
+            return False
+        if k == i - 1 and tokens[k].word in _PLACING_PREPOSITIONS:
+            return False  # "stick my jump pack on charge": where it goes, the work asked
+        thing = tokens[k - 1]
+        return not thing.opens and thing.word in self.item_heads
 
     def _modifier_noun(self, tokens: Sequence[Token], k: int) -> bool:
         """A plain noun inside a noun phrase: in lower case, no word of the office, no

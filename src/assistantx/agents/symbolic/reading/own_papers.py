@@ -35,6 +35,10 @@ _FILE_VERBS = english.words("file_verbs")
 _DATA_NOUNS = english.words("data_nouns")
 _ASKING = english.words("asking_words")
 _PARTICLES = frozenset({"out", "up", "off", "down", "away", "through", "over"})
+# The determiners before a kind of people's paper ("*the* trustees' report")
+_KIND_DETERMINERS = english.words("modifier_determiners")
+# Whom a thing is for, said as the verb's object before it ("print *me* the plan")
+_SPEAKER_OBJECTS = frozenset({"me", "us"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
 
 
@@ -140,12 +144,22 @@ class OwnPapers:
         ``found``: mentions read already."""
         out: dict[int, str] = {}
         for n, opener in enumerate(mentions):
-            if opener.kind != "self" or not opener.possessive:
+            # "print me the fire drill plan": the article has no mention; the phrase's first
+            # word opens it
+            at = opener.start - 1
+            article = (
+                at >= 0
+                and tokens[at].word == "the"
+                and opener.kind == "word"
+                and (n == 0 or mentions[n - 1].end <= at)
+            )
+            if not article and (opener.kind != "self" or not opener.possessive):
                 continue
-            if tokens[opener.start].typed not in ("", "my"):
+            if not article and tokens[opener.start].typed not in ("", "my"):
                 continue  # "the rota I typed up", read as "my rota": the speaker's own doing
-            head, end = None, opener.end
-            for k in range(n + 1, min(len(mentions), n + 2 + _MODIFIERS)):
+            first, start = (n, at) if article else (n + 1, opener.start)
+            head, end = None, opener.start if article else opener.end
+            for k in range(first, min(len(mentions), first + 1 + _MODIFIERS)):
                 m = mentions[k]
                 if m.kind != "word" or m.start != end or tokens[m.start].opens or k in found:
                     break
@@ -164,7 +178,9 @@ class OwnPapers:
                 continue
             if tokens[mentions[head].start].corrected or not _may_be_noun(word):
                 continue
-            verb = _verb_before(tokens, opener.start)
+            if article and not _for_the_speaker(tokens, start, end):
+                continue  # "print the fire drill plan" for nobody said: whose is not known
+            verb = _verb_before(tokens, start)
             types = {t for form, ts in self.worked if form == verb for t in ts}
             if len(types) == 1:
                 out[head] = next(iter(types))
@@ -181,11 +197,15 @@ class OwnPapers:
             if k is not None and self.file_type is not None:
                 found[k] = self.file_type
                 continue
-            k = paper_phrase(mentions, n, tokens, known)
+            # "the trustees' report": a kind of people's paper is the requester's, as "my"
+            openers = ("word",) if kind_of_people(tokens, mentions[n]) else ("self",)
+            k = paper_phrase(mentions, n, tokens, known, openers=openers)
             if k is None and self.file_type is not None:
                 # "send Sam my profiler capture": a noun of what a computer keeps, with a
                 # verb whose input is a file, is the requester's electronic file
-                k = paper_phrase(mentions, n, tokens, known, PAPER_NOUNS | FILE_NOUNS)
+                k = paper_phrase(
+                    mentions, n, tokens, known, PAPER_NOUNS | FILE_NOUNS, openers=openers
+                )
                 if k is None or not _file_verb(tokens, mentions[k].start):
                     continue
                 said = {t.word for t in tokens[mentions[n].end : mentions[k].end]}
@@ -226,6 +246,17 @@ class OwnPapers:
         return None if said & self.named else k
 
 
+def kind_of_people(tokens: Sequence[Token], m: Mention) -> bool:
+    """ "the trustees'", "the governors'": a plural of people in lower case, its apostrophe
+    after the s, after a determiner: a kind of paper's owners, nobody of the office."""
+    if m.kind != "word" or not m.possessive or m.start < 1:
+        return False
+    text = tokens[m.start].text
+    if not text[:1].islower() or not text.endswith(("s'", "s’")):
+        return False
+    return tokens[m.start - 1].word in _KIND_DETERMINERS and language.is_plural_noun(m.ids[0])
+
+
 def _verb_before(tokens: Sequence[Token], k: int) -> str | None:
     """The word that may govern the phrase at token ``k``: the one just before it, or before
     a particle ("shred my ...", "print out my ..."; in "drop it at my desk" it is "at", no
@@ -233,7 +264,18 @@ def _verb_before(tokens: Sequence[Token], k: int) -> str | None:
     j = k - 1
     if j >= 0 and tokens[j].word in _PARTICLES and not tokens[j].opens:
         j -= 1
+    if j >= 1 and tokens[j].word in _SPEAKER_OBJECTS and not tokens[j].opens:
+        j -= 1  # "print me my ...", "print me the ...": the verb before whom it is for
     return tokens[j].word if j >= 0 else None
+
+
+def _for_the_speaker(tokens: Sequence[Token], start: int, end: int) -> bool:
+    """Whether the phrase from ``start`` to ``end`` is said to be for the speaker: "me" just
+    before it ("print me the fire drill plan") or "for me" just after ("print the plan for
+    me")."""
+    before = start >= 1 and tokens[start - 1].word in _SPEAKER_OBJECTS
+    after = [t.word for t in tokens[end : end + 2]] in (["for", "me"], ["for", "us"])
+    return before or after
 
 
 def _plain(word: str) -> bool:

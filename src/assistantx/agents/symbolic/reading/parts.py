@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.unread_compounds import (
 from assistantx.core import language
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
+from assistantx.core.wording import ways_out
 from assistantx.memory.names import normalize
 
 _TO = frozenset({"to", "towards", "toward"})
@@ -118,7 +119,7 @@ def operation_left_out(
     for op in office.operations:
         if op.input is None or op.input not in items or op.id in run or not op.verbs:
             continue
-        at = _said_at(words, normalize(op.name).split(), office_words)
+        at = _said_at(words, normalize(op.name).split(), office_words | _words_of_things(readings))
         if at is None:
             continue
         head = normalize(op.name).split()[-1]
@@ -208,6 +209,13 @@ def items_named(readings: Readings) -> set[str | None]:
     return {m.id for m in readings.mentions if m.kind == "item"}
 
 
+def _words_of_things(readings: Readings) -> set[int]:
+    """Where a service's verb was read as a plain word of a thing's noun phrase ("the print
+    queue file", "Gwen's file on the shred bins", the lexicon's ``_noun_use`` and
+    ``_topic_of_thing``): the name of a thing or its topic, no work asked."""
+    return {m.start for m in readings.mentions if m.kind == "word" and m.in_name}
+
+
 def _said_at(
     words: Sequence[str], name: Sequence[str], office_words: set[int]
 ) -> tuple[int, int] | None:
@@ -239,10 +247,8 @@ def asked_part(question: str) -> str | None:
 
 def _means(office: Office) -> str:
     """How this office sends things out, for the requester's answer."""
-    names = list(dict.fromkeys(op.name for op in office.operations if op.sends_out))
-    if not names:
-        return ""
-    return f" I can send things out of the office by {' or '.join(names)}."
+    said = ways_out([op for op in office.operations if op.sends_out])
+    return f" {said}" if said else ""
 
 
 def _unknown_destination(readings: Readings, destinations: set[str]) -> str | None:

@@ -25,6 +25,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Lexicon,
     Mention,
 )
+from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
@@ -402,6 +403,9 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         # for them); "my colleague's form" still asks who is meant
         lower = m.text[:1].islower()
         kind_of_person = lower and prev in ("a", "an") and language.is_noun(word)
+        # "the trustees' file", "the governors' report doc": a plural of people in lower
+        # case, its apostrophe after the s, after a determiner: a kind of paper, no name
+        kind_of_person = kind_of_person or kind_of_people(tokens, m)
         outsider = lower and prev in _OWN and word in _OUTSIDERS
         return not (kind_of_person or outsider)
     capital = m.text[:1].isupper() and m.start > 0

@@ -54,9 +54,58 @@ def category_asked(
     words = _asked_words(tokens, mentions)
     if words is None:
         return None
-    category = _category(terms.unknown_thing(words), words)
+    thing = terms.unknown_thing(words)
+    category = _category(thing, words)
     choices = office_choices(terms.office, category) if category is not None else []
+    if category is None:
+        near = near_items(terms, thing)  # "a whiteboard pen": board pen or whiteboard marker?
+        choices = near if len(near) > 1 else []
     return which_question(choices) if choices else None
+
+
+def near_items(terms: Terms, thing: str) -> list[str]:
+    """The names of the office's things that a name of several words asked for, no name of
+    the office itself, nearly says ("a whiteboard pen" where the whiteboard marker is also
+    called a board pen): a name of one of them (or a synonym) with the same head noun and
+    another word the same, or all but one of its words the same, each word the same as
+    typed, a compound's end ("whiteboard", "board") or within a typo."""
+    said = thing.split()
+    if len(said) < 2 or said[-1] in _BACK_WORDS:
+        return []
+    out: list[str] = []
+    for t in terms.office.item_types:
+        for name in (t.name, *t.synonyms):
+            words = language.fold(name).lower().split()
+            if words == said:
+                return []  # the office's own name: nothing near to offer
+            matched = sum(any(_same_word(w, v) for v in words) for w in said)
+            head = _same_word(said[-1], words[-1])
+            if (head and matched >= 2) or (len(words) >= 2 and matched >= len(said) - 1 >= 2):
+                out.append(t.name)
+                break
+    return list(dict.fromkeys(out))
+
+
+def _same_word(typed: str, word: str) -> bool:
+    """A word of a name said as typed, as the end of a compound ("whiteboard" for "board")
+    or within a typo of it."""
+    if typed == word:
+        return True
+    shorter, longer = sorted((typed, word), key=len)
+    if len(shorter) >= 4 and longer.endswith(shorter):
+        return True
+    return bool(language.closest(typed, [word]))
+
+
+def _said_as_typed(tokens: Sequence[Token], thing: str) -> tuple[str, ...]:
+    """The words of ``thing`` as the requester typed them (before any typo was mended), so
+    the request can have them replaced."""
+    said = thing.split()
+    words = [t.word for t in tokens]
+    for k in range(len(words) - len(said) + 1):
+        if words[k : k + len(said)] == said:
+            return tuple(language.fold(t.text).lower() for t in tokens[k : k + len(said)])
+    return tuple(said)
 
 
 def one_choice(
@@ -72,7 +121,10 @@ def one_choice(
     thing = terms.unknown_thing(words)
     category, said = _category_said(thing, words)
     if category is None:
-        return None
+        near = near_items(terms, thing)
+        if len(near) != 1:
+            return None
+        return near[0], _said_as_typed(tokens, thing)
     choices = office_choices(terms.office, category)
     names = {t.name for t in terms.office.item_types}
     if len(choices) != 1 or choices[0] not in names:

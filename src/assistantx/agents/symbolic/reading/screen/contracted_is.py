@@ -41,6 +41,9 @@ _PARTICIPLE_TAILS = frozenset(
         "so",
     }
 )
+# a particle that makes a participle a thing's state of being used up ("the foil's run out",
+# "the glue's dried up", "the ink's run dry"): the "'s" is "has"
+_USED_UP_PARTICLES = english.words("used_up_particles")
 # a determiner after a participle opens its object ("the printer's eaten *another* manifest",
 # "Zhang's broken *the* stapler", "someone's eaten *half* my lunch"): a possessive's adjective
 # never has one after it, so the "'s" is "has"
@@ -75,7 +78,9 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
         if subject.lower() in _PRONOUNS:
             return match.group(0)
         verb = "is" if state in _STATES else "has" if language.is_past_participle(state) else ""
-        tails = _TAILS if verb == "is" else _PARTICIPLE_TAILS | _OBJECT_DETERMINERS
+        tails = (
+            _TAILS if verb == "is" else _PARTICIPLE_TAILS | _OBJECT_DETERMINERS | _USED_UP_PARTICLES
+        )
         if state in _WHEREABOUTS:
             verb, tails = "is", _WHEREABOUTS_TAILS
         read = language.lemmas(after) if after else {}
@@ -84,7 +89,10 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
             verb, tails = "has", frozenset({after})  # "light's gone amber": what it became
         if not verb or (after and after not in tails):
             return match.group(0)  # "Zhang's broken stapler": a possessive
-        found.append(Evidence(words=match.group(0).strip(), meaning=f"{subject} {verb} {state}"))
+        said = f"{subject} {verb} {state}"
+        if after in _USED_UP_PARTICLES:
+            said += f" {after}"  # "foil has run out"
+        found.append(Evidence(words=match.group(0).strip(), meaning=said))
         return f"{subject} {verb} {match.group('state')}{match.group('rest')}"
 
     return _CONTRACTED.sub(expand, text), found

@@ -20,11 +20,14 @@ _BETWEEN = frozenset({"still", "just", "really", "also", "first", "ve", "got"})
 def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     if piece.acts.imperative or piece.acts.question is not None or piece.asks:
         return None
-    if not any(p.acts.request for p in msg.pieces if p is not piece):
+    if not any(p.acts.request or _asks_for_a_thing(p) for p in msg.pieces if p is not piece):
         return None  # alone it may be the request itself: read on
     words = content(piece.words)
+    wish = words[:2] in (["id", "like"], ["i", "would"], ["we", "would"])
     if words[:1] and words[0] in _SPEAKER:
         words = words[1:]
+    if wish:  # "I'd like to look under the boiler": a plan of one's own, as "want to"
+        words = ["want", *words[2 if words[:1] == ["would"] else 1 :]]
     if not words or words[0] not in _OWN_PLAN:
         return None
     rest = words[1:]
@@ -39,3 +42,9 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if rest[0] in terms.lex.items or rest[0] in terms.office_words:
         return None
     return Finding("statement", piece, "the speaker's own doing, context only")
+
+
+def _asks_for_a_thing(piece: Piece) -> bool:
+    """ "Is there a loupe going spare?", "anyone got a torch?": a question about a thing of
+    the office, a request in disguise, that the speaker's own doing beside it explains."""
+    return piece.asks and any(m.kind == "item" for m in piece.lexed.mentions)

@@ -56,9 +56,25 @@ _CLAUSE_BREAK = re.compile(rf"(?<=\w)\s+(?={_PURPOSE.pattern}|{_OPEN_OFFER.patte
 Clause = Literal["purpose", "open_offer"]
 
 
+# The speaker's own doing told, then a need of theirs joined by "and" ("I'm covering a class
+# after lunch and need a stopwatch"): the need is a request of its own, cut from the account
+# before it, which stays context (a need joined to anyone else's doing is not cut: "Gwen and I
+# need ...").
+_OWN_DOING = re.compile(rf"(?:{phrases_pattern('own_doing_openers')})\s", re.IGNORECASE)
+_NEED_JOINED = re.compile(
+    rf"(?<=\w)\s+(?=and\s+(?:(?:i|we)\s+)?(?:{phrases_pattern('joined_needs')})\s+"
+    rf"(?!(?:{phrases_pattern('nothing_needed')})\b))",
+    re.IGNORECASE,
+)
+
+
 def _clauses(chunk: str) -> list[tuple[int, str]]:
-    """A comma part cut before its purpose or open-offer clause: each clause with its offset."""
-    cuts = [0, *(m.end() for m in _CLAUSE_BREAK.finditer(chunk)), len(chunk)]
+    """A comma part cut before its purpose or open-offer clause, and an account of the
+    speaker's own doing before a need joined to it: each clause with its offset."""
+    breaks = [m.end() for m in _CLAUSE_BREAK.finditer(chunk)]
+    if _OWN_DOING.match(chunk.lstrip()):
+        breaks += [m.end() for m in _NEED_JOINED.finditer(chunk)]
+    cuts = [0, *sorted(set(breaks)), len(chunk)]
     return [(a, chunk[a:b]) for a, b in itertools.pairwise(cuts)]
 
 

@@ -118,8 +118,29 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
             if w in terms.en.service_products and w not in terms.office_words:
                 if possessive_of_name(piece.text, w, terms.office_words):
                     continue  # "Chip's scanner": a colleague's, not "chips"
+                if names_a_thing(terms, words, n):
+                    continue  # "the scan settings file": a word of the file's name
                 return decline_service(terms, piece, w, product=True, nor=nor)
     return None
+
+
+def names_a_thing(terms: Terms, words: list[str], n: int) -> bool:
+    """Whether the word at ``n`` goes on, with up to two plain nouns, to the name of a thing
+    of the office ("the scan *settings file*", "the scan *log doc*"): a word of that thing's
+    noun phrase, no service asked."""
+    for k in range(n + 1, min(n + 4, len(words))):
+        w = words[k]
+        if w in terms.lex.item_heads:
+            return True
+        if (
+            w in DETERMINERS
+            or w in terms.en.modifier_prepositions
+            or w in terms.office_words
+            or not w.isalpha()
+            or (language.is_finite_verb(w) and not language.is_noun(w))
+        ):
+            return False
+    return False
 
 
 def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
