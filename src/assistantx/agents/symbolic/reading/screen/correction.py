@@ -13,11 +13,12 @@ from assistantx.core import language
 from assistantx.core.task_schema import Evidence
 
 # "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
-# a pen", "- sorry, make that a water": the words after it correct
+# a pen", "- sorry, make that a water", ". actually no, Ben's": the words after it correct
 # what was just said (only when they name one person or item, ``corrected``)
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
-    r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|no(?=[,!.]))\b"
+    r"(?:(?:actually,?\s+)?(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|"
+    r"no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?(?:[,]?\s*(?:actually,?\s*)?make\s+(?:it|that)\b)?"
     r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
     r"[,:]?\s*",
