@@ -29,6 +29,9 @@ _frame = frame_reader(notary_office, "ruth")
         "take Hana's stapler for me, no need to trouble her",
         "don't bother her, just bring me Hana's stapler",
         "borrow Kwesi's tape for me, he's off today so do not bother him",
+        # a request by a plain verb first: "use X's stamp on my paper"
+        "use Tomasz's stamp on my affidavit, no need to check with him",
+        "use Tomasz's stamp on my affidavit, he's out today so don't bother him",
     ],
 )
 def test_leaving_the_owner_undisturbed_is_declined(text: str) -> None:
@@ -68,6 +71,19 @@ def test_the_owner_is_asked_as_before(text: str, item: str, owner: str) -> None:
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("transfer", item, owner, "ruth")
     ], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "use Tomasz's stamp on my affidavit",
+        "use Tomasz's stamp on my affidavit, don't ask me again",
+    ],
+)
+def test_a_plain_use_of_a_colleagues_seal_still_asks_them(text: str) -> None:
+    frame = _frame(text)
+    assert frame.decline is None, frame
+    assert [(t.kind, t.actor) for t in frame.tasks] == [("seal", "tomasz")], frame
 
 
 async def test_end_to_end_nothing_moves_and_the_owner_is_not_asked() -> None:

@@ -129,13 +129,17 @@ def _unasked_in(piece: Piece) -> int | None:
     return _unasked_at(piece.words, names)
 
 
-def _colleagues_things(msg: Message, requester: str) -> tuple[set[str], bool]:
+def _colleagues_things(
+    msg: Message, requester: str, terms: Terms | None = None
+) -> tuple[set[str], bool]:
     """The colleagues whose things a request of the message names by their possessive, and
-    whether one names a thing by "his"/"her"/"their"."""
+    whether one names a thing by "his"/"her"/"their"; with ``terms``, a piece that tells the
+    robot to do something by a plain verb first ("use Pat's stamp on my form") is a request."""
     owners: set[str] = set()
     pronoun = False
     for p in msg.pieces:
-        if not (p.acts.request or p.acts.imperative):
+        told = terms is not None and commanded(terms, p)
+        if not (p.acts.request or p.acts.imperative or told):
             continue
         pronoun = pronoun or any(w in _THEIRS for w in p.words)
         for m in p.lexed.mentions:
@@ -144,18 +148,18 @@ def _colleagues_things(msg: Message, requester: str) -> tuple[set[str], bool]:
     return owners, pronoun
 
 
-def _skips_asking(msg: Message, requester: str) -> bool:
+def _skips_asking(msg: Message, requester: str, terms: Terms) -> bool:
     """Whether a piece of the message (its own, or one beside it that another rule reads as
     a negation: "you don't need to ask him") asks that a colleague's thing be taken
     without asking them."""
-    return any(_skips_asking_in(msg, p, requester) for p in msg.pieces)
+    return any(_skips_asking_in(msg, p, requester, terms) for p in msg.pieces)
 
 
-def _skips_asking_in(msg: Message, piece: Piece, requester: str) -> bool:
+def _skips_asking_in(msg: Message, piece: Piece, requester: str, terms: Terms) -> bool:
     end = _unasked_in(piece)
     if end is None:
         return False
-    owners, pronoun = _colleagues_things(msg, requester)
+    owners, pronoun = _colleagues_things(msg, requester, terms)
     named = piece.words[end : end + 1]  # the word after the mark: whom not to ask
     tokens = piece.lexed.tokens
     asked = [
@@ -220,7 +224,7 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 "and I'll ask them to stamp it for you. I did nothing."
             ),
         )
-    if (asks or _unasked_in(piece) is not None) and _skips_asking(msg, requester):
+    if (asks or _unasked_in(piece) is not None) and _skips_asking(msg, requester, terms):
         if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
             return None
         return Finding(
