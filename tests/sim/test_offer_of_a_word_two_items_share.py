@@ -17,7 +17,7 @@ from assistantx.core.goals import Milestone
 from assistantx.core.office import Office, parse_office
 from assistantx.sim.requester import Wish, answer
 from helpers import office_builder as ob
-from helpers.staff_room import raw_staff_room
+from helpers.cover_staff_room import raw_staff_room
 
 
 def _with_a_box_file() -> Office:

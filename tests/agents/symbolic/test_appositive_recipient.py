@@ -17,7 +17,7 @@ from assistantx.core.task_spec import BaseInstruction, Part
 from assistantx.evaluation.dataset.generate import generate, verify_tasks
 from assistantx.runtime.recipients import _in_roles
 from helpers.reading import frame_reader
-from helpers.staff_room import staff_room
+from helpers.cover_staff_room import staff_room
 
 _frame = frame_reader(staff_room, "tess")
 
