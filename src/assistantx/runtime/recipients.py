@@ -41,6 +41,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.core import english, language
+from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.office import Office
@@ -300,6 +301,8 @@ def _receiving(
         return names_receiving_place(before, after, _ahead(words, start))
     if before in _TO or before in _BY or _is_give(before, operations):
         return True
+    if appositive_preposition(words, start, end) in _TO:
+        return True  # "for the cover teacher, Ms Nguyen"
     if before in _DOER_VERBS or language.verb_lemmas(before) & _DOER_VERBS:
         return True
     if asked_to_have(before, [w.folded for w in words[end : end + 3]]):

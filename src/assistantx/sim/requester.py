@@ -7,7 +7,9 @@ they answer the question that was asked, from the task's truth (its goal milesto
   option that fits what they want ("the grace period talk");
 - "Shall I ...?" gets "Yes, please." when the offer fits what they want, else "No, thanks."
   (the people an answer names before the offer, "As far as I know, Dov and Renée have a
-  headset. Shall I bring you one?", are who has one, not whom it is for);
+  headset. Shall I bring you one?", are who has one, not whom it is for; a word the offer
+  says that names a wanted item and another too, "your file" where the office also keeps a
+  box file called a file, is the wanted one);
 - "Where should I courier it to?" gets the place outside the task sends it to ("To the
   regional federation.");
 - "Who should get ...?" / "Whose ...?" (also both at once) / "Who should sign ...?" / "Who do
@@ -47,7 +49,11 @@ from assistantx.core.name_reading import is_word_name
 from assistantx.core.office import Office, Person
 from assistantx.core.task_schema import Part
 from assistantx.core.wording import verb_it
-from assistantx.sim.understanding import mentioned_item_types, mentioned_requests
+from assistantx.sim.understanding import (
+    mentioned_item_types,
+    mentioned_requests,
+    said_only_as_another,
+)
 
 _OFFER = re.compile(
     r"^\s*(?:ok(?:ay)?[,.]?\s+)?(shall|should|do you want me to|would you like me to|may|can|"
@@ -392,7 +398,14 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
         return False
     *told, asked = re.split(r"(?<=[.!?])\s+", offer.strip())
     people = _people_in(office, asked) - {wish.requester}
-    items = set(mentioned_item_types(office, offer))
+    wanted = set(wish.items)
+    # "Shall I print your file for Wren?": a word that names a wanted item (the electronic
+    # file a printout is made from) and also another ("a box file") is the wanted one
+    items = {
+        i
+        for i in mentioned_item_types(office, offer)
+        if i in wanted or not said_only_as_another(office, offer, i, wanted)
+    }
     # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
     # did not ask for: no
     if people - wish.people or items - set(wish.items):

@@ -86,6 +86,24 @@ def _names(office: Office, *, only_products: bool = False) -> list[tuple[str, st
     return sorted((p for p in pairs if p[0]), key=lambda pair: -len(pair[0]))
 
 
+def said_only_as_another(office: Office, text: str, type_id: str, others: set[str]) -> bool:
+    """Whether every name of item type ``type_id`` that ``text`` says is also a name of one of
+    the types ``others``: "your file" where a box file is also called a file and the office's
+    electronic file is one of ``others`` may mean either, so it says nothing against them."""
+    haystack = _without_full_names(office, _words(text))
+    names = _names(office)
+    own = {n for n, t in names if t == type_id}
+    theirs = {n for n, t in names if t in others}
+    said = {
+        n
+        for n in own
+        if any(
+            f" {v} " in haystack for v in dict.fromkeys((n, n + "s", n + "es", language.plural(n)))
+        )
+    }
+    return bool(said) and said <= theirs
+
+
 def mentioned_item_types(office: Office, text: str) -> list[str]:
     """Item types named in ``text`` (longest names first, so 'data cable' beats 'cable'),
     in the singular or the plural. A colleague's full name is a name, never a thing: "Viola

@@ -18,6 +18,7 @@ from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import yours_addressed
 from assistantx.core import english, language, task_kinds
+from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.receiving_place import (
     MEET_AT,
@@ -256,8 +257,12 @@ def _ahead_of(tokens: Sequence[Token], start: int) -> Ahead:
 
 def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, roles: Roles) -> None:
     m = ms[n]
+    prev = prev_word(tokens, m.start)
+    if not m.possessive and prev not in _TO:
+        # "for the cover teacher, Ms Nguyen": the name is the receiving phrase's person
+        prev = appositive_preposition(tokens, m.start, m.end) or prev
     site = PersonSite(
-        prev=prev_word(tokens, m.start),
+        prev=prev,
         ahead=_ahead_of(tokens, m.start),
         nxt=tokens[m.end].word if m.end < len(tokens) else "",
         following=ms[n + 1] if n + 1 < len(ms) else None,

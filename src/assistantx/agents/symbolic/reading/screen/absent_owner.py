@@ -77,8 +77,22 @@ _SAID_AWAY = tuple(
 _AWAY_TAIL = 2
 
 
+# The words that end the clause of being away ("he's off today *so* he won't mind")
+_JOINS = frozenset((*english.entries("clause_joins"), *english.entries("consequence_joins")))
+
+
 def _said_away(words: list[str]) -> bool:
-    return any(starts_with(words, 0, p) and len(words) <= len(p) + _AWAY_TAIL for p in _SAID_AWAY)
+    """Whether the words say "he"/"she"/"they" are away in a clause of their own: the whole
+    piece ("she's out today"), or its first clause before a join ("he's off today so he won't
+    mind", "she's out, and she won't mind")."""
+    for p in _SAID_AWAY:
+        if not starts_with(words, 0, p):
+            continue
+        rest = words[len(p) :]
+        ends = next((n for n, w in enumerate(rest) if w in _JOINS), len(rest))
+        if ends <= _AWAY_TAIL:
+            return True
+    return False
 
 
 # Whose thing, when it is not a name: the absent colleague's ("take *his* ruler").

@@ -13,11 +13,12 @@ from assistantx.core import language
 from assistantx.core.task_schema import Evidence
 
 # "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
-# a pen", "- sorry, make that a water": the words after it correct
+# a pen", "- sorry, make that a water", ". actually no, Ben's": the words after it correct
 # what was just said (only when they name one person or item, ``corrected``)
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
-    r"(?:(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|no(?=[,!.]))\b"
+    r"(?:(?:actually,?\s+)?(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|"
+    r"no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?(?:[,]?\s*(?:actually,?\s*)?make\s+(?:it|that)\b)?"
     r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
     r"[,:]?\s*",
@@ -75,6 +76,10 @@ def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         # lunch": only the request broken off is withdrawn, not an earlier one beside it
         last = _NEXT_REQUEST.split(last)[-1]
         cut = trimmed.rfind(last) if last else len(before)
+        # "print my slides and take them to Ivo - sorry, I meant take it to Amber": a
+        # correction that says again a later part of the request (its verb) replaces only
+        # that part; the print still stands
+        cut = _part_said_again(tokens, before, cut)
         meaning = f"withdraws {before[cut:].strip()!r}, asks instead"
         # "just bring my lunch": the adverb said only of the correction; after "and then"
         # the request reads plainly
@@ -236,6 +241,31 @@ def _opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:
         words[0] in terms.lex.cue_words or words[0] in terms.lex.operation_words
     )
     return opens and terms.acts.request(words)
+
+
+# The words that join a later part of a request to the one before it ("print it *and* take it")
+_PART_JOINS = re.compile(r"(?:,|\band\b|\bthen\b)\s*(?:then\s+)?$", re.IGNORECASE)
+
+
+def _part_said_again(tokens: Sequence[Token], before: str, cut: int) -> int:
+    """Where the part a correction says again starts, in the request it breaks off: the last
+    place that request's later part (after "and", "then" or a comma) opens with the
+    correction's own verb, or a verb of handing a thing on where the correction's is one too
+    ("take it to Ivo" / "I meant bring it to Amber"); ``cut`` (the whole request) otherwise."""
+    start = cut
+    words = [t.word for t in tokens if t.word not in _FILLERS]
+    if not words:
+        return start
+    verb = words[0]
+    same = {verb} | (_GIVING_VERBS if verb in _GIVING_VERBS else set())
+    found = start
+    for m in re.finditer(r"[^\W\d_]+", before[start:]):
+        at = start + m.start()
+        if at == start or m.group(0).lower() not in same:
+            continue
+        if _PART_JOINS.search(before[start:at].rstrip()):
+            found = at
+    return found
 
 
 def _same_item_again(terms: Terms, mentions: list[Mention], before: str) -> bool:

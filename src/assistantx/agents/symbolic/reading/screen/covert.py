@@ -9,7 +9,10 @@ A request to skip asking the owner ("grab his tape while he's at lunch, no need 
 Pat's seal, don't ask her") is declined the same way, saying their own yes is needed: only
 where the message asks for a colleague's thing ("Pat's", "his"), so "print my report, no need
 to ask" is read as before, and a colleague named after the mark is its owner ("don't ask
-Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before).
+Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before). Leaving
+the owner undisturbed ("grab Pat's seal, she's out so don't bother her", "no need to trouble
+him") skips asking them the same way, only where whom to leave alone follows the mark
+("unasked_person_marks"): "don't bother bringing it back" is a negation of its own.
 
 Taken where the owner cannot see ("grab his mug while he's not looking", "when she isn't
 watching", "before he notices") is kept in the dark the same way; a colleague's thing asked
@@ -34,6 +37,8 @@ from assistantx.core import english
 
 _COVERT = tuple(tuple(entry.split()) for entry in english.entries("covert_marks"))
 _UNASKED = tuple(tuple(entry.split()) for entry in english.entries("unasked_marks"))
+_BOTHER = tuple(tuple(entry.split()) for entry in english.entries("unasked_person_marks"))
+_OBJECTS = frozenset(english.entries("object_pronouns"))
 _PRANKS = tuple(tuple(entry.split()) for entry in english.entries("prank_marks"))
 _WHILE = tuple(tuple(entry.split()) for entry in english.entries("while_openers"))
 _UNSEEN_SUBJECTS = tuple(
@@ -94,9 +99,12 @@ def kept_in_the_dark(words: list[str]) -> bool:
     return False
 
 
-def _unasked_at(words: list[str]) -> int | None:
+def _unasked_at(words: list[str], names: frozenset[str] = frozenset()) -> int | None:
     """Where a mark that skips asking ends ("no need to ask| him"), or None; "don't ask me
-    again" is the speaker's own say."""
+    again" is the speaker's own say. A mark of leaving someone undisturbed ("don't bother|
+    her") counts only with whom to leave so after it: "him", "her", "them", or a word of
+    ``names`` (the first words of the colleagues the piece names): "don't bother bringing it
+    back" skips nobody's yes."""
     for n in range(len(words)):
         for mark in _UNASKED:
             end = n + len(mark)
@@ -105,16 +113,33 @@ def _unasked_at(words: list[str]) -> int | None:
             if end < len(words) and words[end] in _SPEAKER:
                 continue
             return end
+        for mark in _BOTHER:
+            end = n + len(mark)
+            if words[n:end] == list(mark) and end < len(words):
+                if words[end] in _OBJECTS or words[end] in names:
+                    return end
     return None
 
 
-def _colleagues_things(msg: Message, requester: str) -> tuple[set[str], bool]:
+def _unasked_in(piece: Piece) -> int | None:
+    """Where a mark that skips asking ends in the piece (``_unasked_at``), with the names of
+    the colleagues it mentions."""
+    tokens = piece.lexed.tokens
+    names = frozenset(tokens[m.start].word for m in piece.lexed.mentions if m.kind == "person")
+    return _unasked_at(piece.words, names)
+
+
+def _colleagues_things(
+    msg: Message, requester: str, terms: Terms | None = None
+) -> tuple[set[str], bool]:
     """The colleagues whose things a request of the message names by their possessive, and
-    whether one names a thing by "his"/"her"/"their"."""
+    whether one names a thing by "his"/"her"/"their"; with ``terms``, a piece that tells the
+    robot to do something by a plain verb first ("use Pat's stamp on my form") is a request."""
     owners: set[str] = set()
     pronoun = False
     for p in msg.pieces:
-        if not (p.acts.request or p.acts.imperative):
+        told = terms is not None and commanded(terms, p)
+        if not (p.acts.request or p.acts.imperative or told):
             continue
         pronoun = pronoun or any(w in _THEIRS for w in p.words)
         for m in p.lexed.mentions:
@@ -123,18 +148,18 @@ def _colleagues_things(msg: Message, requester: str) -> tuple[set[str], bool]:
     return owners, pronoun
 
 
-def _skips_asking(msg: Message, requester: str) -> bool:
+def _skips_asking(msg: Message, requester: str, terms: Terms) -> bool:
     """Whether a piece of the message (its own, or one beside it that another rule reads as
     a negation: "you don't need to ask him") asks that a colleague's thing be taken
     without asking them."""
-    return any(_skips_asking_in(msg, p, requester) for p in msg.pieces)
+    return any(_skips_asking_in(msg, p, requester, terms) for p in msg.pieces)
 
 
-def _skips_asking_in(msg: Message, piece: Piece, requester: str) -> bool:
-    end = _unasked_at(piece.words)
+def _skips_asking_in(msg: Message, piece: Piece, requester: str, terms: Terms) -> bool:
+    end = _unasked_in(piece)
     if end is None:
         return False
-    owners, pronoun = _colleagues_things(msg, requester)
+    owners, pronoun = _colleagues_things(msg, requester, terms)
     named = piece.words[end : end + 1]  # the word after the mark: whom not to ask
     tokens = piece.lexed.tokens
     asked = [
@@ -199,7 +224,7 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 "and I'll ask them to stamp it for you. I did nothing."
             ),
         )
-    if (asks or _unasked_at(piece.words) is not None) and _skips_asking(msg, requester):
+    if (asks or _unasked_in(piece) is not None) and _skips_asking(msg, requester, terms):
         if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
             return None
         return Finding(
