@@ -16,8 +16,8 @@ import pytest
 from assistantx.core.task_spec import BaseInstruction, Part
 from assistantx.evaluation.dataset.generate import generate, verify_tasks
 from assistantx.runtime.recipients import _in_roles
-from helpers.reading import frame_reader
 from helpers.cover_staff_room import staff_room
+from helpers.reading import frame_reader
 
 _frame = frame_reader(staff_room, "tess")
 
