@@ -39,6 +39,27 @@ _MEANS_ARTICLES = frozenset({"the", "a", "our", "your"})
 # me know", "*and then bring* me the camera"), not a firm's name ("Smith and Sons"); a verb of
 # other work ("and vet it") stays unread, so the part is asked about, never reordered.
 _HANDING = english.words("handing_verbs") | english.words("dative_verbs") | {"let", "tell"}
+# The words that open a clause of its own after the destination ("to Acme Ltd, Leeds *so that*
+# they have it today", "to the clinic *because* ..."): a reason, a consequence or purpose, a
+# condition; the destination ends before them.
+_CLAUSE_OPENERS = (
+    english.words("reason_conjunctions")
+    | english.words("consequence_joins")
+    | {p for p in english.entries("purpose_openers") if " " not in p}
+    | {p for p in english.entries("condition_openers") if " " not in p}
+)
+# "for me", "for us": whom the request is for, said after the place.
+_FOR_WHOM = [["me"], ["us"]]
+# The words that are never part of a place's name after its comma ("..., it has to go today",
+# "..., print me a tag"): pronouns, said for a clause of its own.
+_NOT_PLACE = (
+    english.words("pronouns")
+    | english.words("object_pronouns")
+    | english.words("subject_pronouns")
+    | english.words("other_possessives")
+    | english.words("clause_breaks")
+    | {"me", "us", "my", "your", "our"}
+)
 
 
 @dataclass(frozen=True)
@@ -141,6 +162,10 @@ def find_outside(
                 continue
             if words[end] in _END_WORDS or _next_clause(words, end):
                 break
+            if end > start and words[end] in _CLAUSE_OPENERS:
+                break  # "to Acme Ltd so that they have it today": a clause of its own
+            if end > start and words[end] == "for" and words[end + 1 : end + 2] in _FOR_WHOM:
+                break  # "to Crown Court for me": whom the request is for, not the place
             if end > start and words[end] == "to" and words[end + 1 : end + 2] == ["be"]:
                 break  # "to Parkside Laundry to be laundered": the work, not the place
             end += 1
@@ -205,10 +230,11 @@ def _address_tail(
     Abernethy at 14 Rosebery Crescent, Edinburgh"; "Broadcast House, Portland Place"): only
     after a comma, only when the words so far look like an address (a house number, a person
     "at" a place) or are a place's proper name ("Broadcast House", "the BBC"), and only over a
-    short part that is all names or codes up to the clause's end ("Edinburgh", "Leeds LS1
-    4DY"), never a colleague's name nor a day; a clause of its own after the comma ("it has to
-    go today", "then print me a tag") ends the destination. ``end`` back when the destination
-    stops here."""
+    short part that is all names, codes or nouns up to the clause's end ("Edinburgh", "Leeds
+    LS1 4DY", "Ward 4", "pharmacy", "main reception"), never a colleague's name nor a day; a
+    clause of its own after the comma ("it has to go today", "then print me a tag") or in the
+    part ("Leeds so that they have it today": only "Leeds") ends the destination. ``end`` back
+    when the destination stops here."""
     if gaps[end].strip() != ",":
         return end
     so_far = tokens[start:end]
@@ -219,7 +245,13 @@ def _address_tail(
     ):
         return end
     k = end
-    while k < stop and (k == end or not _ends(gaps[k])) and tokens[k].word not in _END_WORDS:
+    while (
+        k < stop
+        and (k == end or not _ends(gaps[k]))
+        and tokens[k].word not in _END_WORDS
+        and tokens[k].word not in _CLAUSE_OPENERS
+        and not _next_clause([t.word for t in tokens], k)
+    ):
         k += 1
     part = tokens[end:k]
     # "Dublin, attention Customer Relations", "FAO the Registrar": who it is for there
@@ -229,9 +261,18 @@ def _address_tail(
         return end
     if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
         return end  # "to Ofcom, Monday": when, not where
-    if all(t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part):
+    if all(_place_word(t) for t in part):
         return k
     return end
+
+
+def _place_word(token: Token) -> bool:
+    """Whether a word after an address's comma may be part of the place: a name, a code or a
+    number ("Leeds", "LS1", "4"), or a noun that names a part of it ("pharmacy", "reception"),
+    never a pronoun nor a word that opens a clause ("it", "then")."""
+    if token.text[:1].isupper() or any(c.isdigit() for c in token.text):
+        return True
+    return token.word not in _NOT_PLACE and language.is_noun(token.word)
 
 
 # The words that open an address line naming who it is for ("attention Customer Relations").
