@@ -133,7 +133,7 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
     name ("printer" in "label printer", "stamp" in "stamped envelope") is not a request, nor
     is a word of a colleague's full name ("lend Frank Szabó your tape gun" where "frank" is
     the franking machine's verb)."""
-    original = _without_full_names(office, _words(text))
+    original = _without_full_names(office, _words(_without_destinations(office, text)))
     things = [n for n, _ in _names(office)]
     products = {n for n, _ in _names(office, only_products=True)}
     things += [normalize(n) for f in office.facilities for n in (f.name, *f.synonyms)]
@@ -183,6 +183,26 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
             if f" {form} " in rest:
                 at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
     return sorted(at, key=lambda k: at[k])
+
+
+def _without_destinations(office: Office, text: str) -> str:
+    """``text`` without the place a send-out service is asked to send to ("could you courier
+    Bo's proof *to the print works at Felling*?"): from the "to" after the service's verb and
+    its object to the end of the sentence (never the "to" of the service's own phrase: "send
+    to the cleaners"). A colleague reads which work is asked from the verb; a word of
+    another service inside the place's name ("print") asks for nothing."""
+    verbs = {
+        form
+        for op in office.operations
+        if op.sends_out and office.runnable(op.id)
+        for phrase in op.request_phrases
+        for form in word_forms(normalize(phrase).split()[0])
+        if normalize(phrase)
+    }
+    if not verbs:
+        return text
+    alternatives = "|".join(re.escape(v) for v in sorted(verbs, key=len, reverse=True))
+    return re.sub(rf"(?i)(\b(?:{alternatives})\s+(?!to\b)[^.?!;]*?)\bto\b[^.?!;]*", r"\1", text)
 
 
 def facility_requests(office: Office, text: str) -> list[str]:

@@ -53,7 +53,8 @@ async def test_a_fax_sent_outside_is_not_handed_back(fax: Office) -> None:
 async def test_who_faxes_it_is_told_where_to_in_the_question_and_the_code(fax: Office) -> None:
     run = await run_instruction(fax, "lee", "Please fax my document to the county tax office")
     question, code = [m.text for m in run.sim.messenger.sent if m.chat.id == "mao"]
-    assert "could you fax Lee Ming's document in the printer to the county tax office?" in question
+    assert "could you fax Lee Ming's document to the county tax office?" in question
+    assert question.endswith("The robot will bring it to you at the printer.")
     assert "take Lee Ming's document out and fax it to the county tax office." in code
     [sent] = run.sim.world.sent_out()
     assert sent.detail["item"] == "document:lee" and sent.detail["by"] == "mao"

@@ -16,7 +16,7 @@ from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
-from assistantx.core.wording import file_noun, with_object
+from assistantx.core.wording import file_noun, verb_it, with_object
 from assistantx.memory.graph import LongTermMemory
 
 RoleKind = Literal["named", "owner", "guard"]
@@ -394,11 +394,17 @@ def _add_part(
             # who sends it outside is told where to, as the embedded planner tells them
             to = f" to {part.destination}" if op.sends_out and part.destination else ""
             said = with_object(op.name, f"{who}'s {thing}", bare=bool(to))
+            asked = (f"{said} at the {place_name}{to}?", "")
+            if to:
+                # by the service's own verb, the place outside last ("courier Ana's proof to
+                # the print works at Felling"): no word of the place is read as the work
+                sent = verb_it(op, part.destination, obj=f"{who}'s {thing}")
+                asked = (f"{sent}?", f" The robot will bring it to you at the {place_name}.")
             op_role = _guard(
                 office,
                 op.id,
-                f"Could you {said} at the {place_name}{to}?",
-                f"Could anyone {said} at the {place_name}{to}?",
+                f"Could you {asked[0]}{asked[1]}",
+                f"Could anyone {asked[0]}{asked[1]}",
             )
             _put_in(plan, kept, a, who, office)
             plan.add_role(op_role)

@@ -169,9 +169,10 @@ class Roles:
             case "produce":
                 return f"get {thing} for {beneficiary} from the {place}"
             case "heat" if role.destination:  # the one who faxes it must know where to
+                # by the service's own verb ("courier X's document to Y"), the place outside
+                # last; the facility where the robot brings it is said after the question
                 obj = f"{self._whose(role)} {thing}"
-                said = with_object(self._operation_name(role), obj, bare=True)
-                return f"{said} in the {place} to {role.destination}"
+                return with_object(self._send_verb(role), obj, role.destination)
             case "heat":
                 said = with_object(self._operation_name(role), f"{self._whose(role)} {thing}")
                 return f"{said} in the {place}"
@@ -179,10 +180,28 @@ class Roles:
                 return f"send me your {thing} for {beneficiary}"
         raise ValueError(role.kind)  # pragma: no cover
 
+    def _send_verb(self, role: Role) -> str:
+        """The verb a send-out service is asked for by: its first declared verb ("courier"
+        of "send by courier"), else its name as a verb ("fax")."""
+        op_id = role.operation
+        if op_id is None and role.facility is not None:
+            shape = kind_shape(role.kind)
+            ops = self.office.facility(role.facility).operations
+            op_id = next(
+                (o for o in ops if self.office.operation(o).shape(self.office) == shape), None
+            )
+        if op_id is None:
+            return self._operation_name(role)
+        op = self.office.operation(op_id)
+        return op.verbs[0] if op.verbs else _as_verb(op)
+
     def question(self, role: Role, person: str) -> str:
         first = self.office.person(person).name.split()[0]
         comes = role.kind not in ("send_file", "allow")
         tail = " The robot will come to you for the hand-over." if comes else ""
+        if role.kind == "heat" and role.destination and role.facility is not None:
+            place = self.office.facility(role.facility).name
+            tail = f" The robot will bring it to you at the {place}."
         return f"Hi {first}, could you {self._request(role, anyone=False)}?{tail}"
 
     def group_question(self, role: Role) -> str:

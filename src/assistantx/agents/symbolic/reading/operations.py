@@ -95,12 +95,15 @@ class OperationChooser:
         # plot, its "print" is no print asked for), nor an errand's hurrying verb
         inside = {n for m in lexed.mentions if m.kind == "item" for n in range(m.start, m.end)}
         inside |= errands
+        # nor the words of a send-out's place outside ("courier it to the *print* works"):
+        # a place's name asks for no service of this office
+        inside |= _place_words(lexed, outside)
         in_order = [t.word for n, t in enumerate(lexed.tokens) if n not in inside]
         words = set(in_order)
         facility_ops = {
             op
             for m in lexed.mentions
-            if m.kind == "facility"
+            if m.kind == "facility" and not (outside is not None and outside.holds(m.start))
             for op in self.office.facility(m.ids[0]).operations
         }
         products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
@@ -396,6 +399,22 @@ def colleague_named(lexed: Lexed, start: int = 0, end: int | None = None) -> str
         if not person.start <= k < person.end
     }
     return person.ids[0] if rest <= COMMON else None
+
+
+def _place_words(lexed: Lexed, outside: Outside | None) -> set[int]:
+    """The tokens of a send-out's place outside, up to a join that opens a clause of other
+    work ("to the head office *and vet it*": its verb still asks, and is asked about); a join
+    inside a proper name ("the Print and Copy Centre") is the place's."""
+    if outside is None or outside.start is None or outside.end is None:
+        return set()
+    out: set[int] = set()
+    tokens = lexed.tokens
+    for n in range(outside.start, outside.end):
+        if tokens[n].word in ("and", "then") and n + 1 < outside.end:
+            if not tokens[n + 1].text[:1].isupper():
+                break
+        out.add(n)
+    return out
 
 
 def _colleague(lexed: Lexed, outside: Outside | None) -> str | None:
