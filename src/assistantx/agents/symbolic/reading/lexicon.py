@@ -161,6 +161,77 @@ class Mention:
         return self.ids[0]
 
 
+# The words before a participle that describes the item after it ("*my* signed letter").
+_PARTICIPLE_OPENERS = english.words("determiners") - {"me"}
+
+
+def described_by_participles(
+    tokens: Sequence[Token], mentions: list[Mention], files: frozenset[str] = frozenset()
+) -> list[Mention]:
+    """ "courier my *signed* letter to the court", "bring me the *stamped* invoice", "forward
+    the *printed* agenda": a task word in its past participle between a determiner (or a
+    possessive) and the noun after it says the state the item is already in, a plain word;
+    the request is the clause's own verb said before it. Without such a verb ("my printed
+    agenda please") and after the item ("get my contract signed") it is read as before; so is
+    an office service's participle before a file (``files``): "bring me the printed log" asks
+    for the print, a file being no thing to carry."""
+    out = list(mentions)
+    for n, m in enumerate(out):
+        if m.kind != "cue" or m.end - m.start != 1 or m.start == 0 or n + 1 >= len(out):
+            continue
+        before, after = tokens[m.start - 1], out[n + 1]
+        by_person = set(m.ids) <= set(task_kinds.person_kinds())
+        if not by_person and after.kind == "item" and set(after.ids) & files:
+            continue
+        if before.word not in _PARTICIPLE_OPENERS and not before.possessive:
+            continue
+        if after.start != m.end or tokens[after.start].opens or tokens[after.start].after_pause:
+            continue
+        if after.kind == "word" and (after.ids[0] in COMMON or not language.is_noun(after.ids[0])):
+            if language.lemmas(after.ids[0]):  # a word the dictionary knows, but not as a noun
+                continue
+        elif after.kind not in ("item", "word"):
+            continue
+        if not _participle(tokens[m.start].word):
+            continue
+        if not _asked_before(tokens, out[:n]):
+            continue
+        out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
+    return out
+
+
+def describing_participles(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[int]:
+    """The tokens of past participles read as plain words before the item they describe
+    ("courier my *printed* contract"): no later stage takes them for the service asked for."""
+    out: set[int] = set()
+    for n, m in enumerate(mentions[:-1]):
+        if m.kind != "word" or m.end - m.start != 1 or m.start == 0:
+            continue
+        before, after = tokens[m.start - 1], mentions[n + 1]
+        if before.word not in _PARTICIPLE_OPENERS and not before.possessive:
+            continue
+        if after.kind == "item" and after.start == m.end and not tokens[after.start].after_pause:
+            if _participle(tokens[m.start].word):
+                out.add(m.start)
+    return out
+
+
+def _participle(word: str) -> bool:
+    """A past participle the dictionary knows ("signed", "bound"), or the "-ed" form of a word
+    it does not know, an office's own verb ("couriered", "autoclaved")."""
+    return language.is_past_participle(word) or (word.endswith("ed") and not language.lemmas(word))
+
+
+def _asked_before(tokens: Sequence[Token], mentions: Sequence[Mention]) -> bool:
+    """Whether a task word stands before, in the same sentence: the clause's own verb."""
+    for m in reversed(mentions):
+        if m.kind == "cue":
+            return True
+        if any(t.opens for t in tokens[m.start : m.end]):
+            return False
+    return False
+
+
 @dataclass(frozen=True)
 class Lexed:
     """What the lexicon stage hands on: the text, its corrected tokens and its mentions."""
@@ -557,7 +628,9 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
-        mentions = self._own_papers(tokens, self._compound_heads(tokens, mentions))
+        files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
+        mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
+        mentions = self._own_papers(tokens, mentions)
         return self._settled_by_owner(tokens, mentions)
 
     def _own_papers(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:

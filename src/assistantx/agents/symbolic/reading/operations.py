@@ -11,7 +11,12 @@ from assistantx.agents.symbolic.reading.destination import (
     names_no_place,
     only_describes,
 )
-from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, inflections
+from assistantx.agents.symbolic.reading.lexicon import (
+    COMMON,
+    Lexed,
+    describing_participles,
+    inflections,
+)
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
@@ -98,6 +103,8 @@ class OperationChooser:
         # nor the words of a send-out's place outside ("courier it to the *print* works"):
         # a place's name asks for no service of this office
         inside |= _place_words(lexed, outside)
+        # nor a participle that only describes the item ("courier my *printed* contract")
+        inside |= describing_participles(lexed.tokens, lexed.mentions)
         in_order = [t.word for n, t in enumerate(lexed.tokens) if n not in inside]
         words = set(in_order)
         facility_ops = {

@@ -24,6 +24,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Lexed,
     Lexicon,
     Mention,
+    describing_participles,
 )
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.said_of import without_states
@@ -126,6 +127,8 @@ class MentionReader:
         names = {
             k for m in mentions if m.kind in ("place", "person") for k in range(m.start, m.end)
         } | errands
+        # nor a participle that describes the item ("bring me my *couriered* contract")
+        names |= describing_participles(tokens, mentions)
         outside = find_outside(tokens, spaces, self._sends_out, names)
         plain = None
         if (outside is None or outside.start is None) and self._send_inputs:
