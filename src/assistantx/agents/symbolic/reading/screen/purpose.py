@@ -15,7 +15,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
-from assistantx.core import english, language
+from assistantx.core import english, language, task_kinds
 
 _NEED = english.words("need_verbs")
 _SUBJECTS = english.words("subject_pronouns") - {"you", "u", "ya"}
@@ -84,6 +84,39 @@ def reason(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
     if subject and not set(subject) <= _SPEAKER and not _outsider(terms, subject):
         return None
     return Finding("statement", piece, "why the request is made: context only")
+
+
+# The words after "to ..." that still end the piece ("... to stamp, please").
+_COURTESY = english.words("courtesy") | {"please", "pls", "thanks"}
+# Who the work is said of: the robot ("can you stamp ..."), never the speaker's own doing.
+_ADDRESSEE = frozenset({"you", "u", "ya"})
+
+
+def tool_use(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """ "Siobhan's stamp please, I've a batch of requisitions to stamp": beside a piece that
+    asks for a tool (the office's stamp, its seal), the speaker's things to use it on ("a
+    pile of letters to seal") say what the tool is borrowed for: context, never the work done
+    for them. Asked of the robot ("can you stamp my letters") or of a colleague named, or with
+    no tool asked for ("get my letters stamped with Lee's seal"), it is read as before."""
+    if piece.acts.imperative:
+        return None
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    while words and words[-1] in _COURTESY:
+        words = words[:-1]
+    if len(words) < 3 or words[-2] != "to" or set(words) & _ADDRESSEE:
+        return None
+    last = len(words) - 1
+    cue = next((m for m in mentions if m.start == last and m.kind == "cue"), None)
+    if cue is None or terms.named(piece.lexed, "person"):
+        return None
+    tools = {t for kind in cue.ids if (t := task_kinds.tool_type(kind, terms.office)) is not None}
+    if not tools:
+        return None
+    others = [p for p in msg.pieces if p is not piece]
+    if not any(tools & set(terms.named(p.lexed, "item")) for p in others):
+        return None
+    return Finding("statement", piece, "what the tool asked for is for: context only")
 
 
 def _outsider(terms: Terms, subject: list[str]) -> bool:

@@ -39,7 +39,12 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
 from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
-from assistantx.agents.symbolic.reading.screen.purpose import preamble, purpose, reason
+from assistantx.agents.symbolic.reading.screen.purpose import (
+    preamble,
+    purpose,
+    reason,
+    tool_use,
+)
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
@@ -63,6 +68,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
     ("statement", reason),
+    # the things to use a tool asked for on ("..., I've a pile of letters to seal")
+    ("statement", tool_use),
     # what already happened to the speaker's own thing beside a request ("mine went in the
     # compost"): before a service or waste container its words name is read as asked for
     ("statement", past_event),
