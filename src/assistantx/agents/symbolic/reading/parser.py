@@ -111,7 +111,11 @@ from assistantx.agents.symbolic.reading.unknown_items import (
     unknown_item,
     with_choice,
 )
-from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing, variety_of
+from assistantx.agents.symbolic.reading.unlisted_thing import (
+    left_behind,
+    unlisted_thing,
+    variety_of,
+)
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
@@ -288,6 +292,9 @@ class InstructionParser:
                 frame = TaskFrame(requester=requester, question=left_out)
         if frame.question == NOT_UNDERSTOOD:
             terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
+            left = left_behind(tokens, mentions)
+            if left is not None:  # "the thing I left at the printer": which thing is asked
+                return TaskFrame(requester=requester, question=left)
             only = one_choice(terms, tokens, mentions)
             if only is not None:
                 # "something to write with" where a pen is the office's one such thing: no

@@ -12,11 +12,51 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.categories import categories, is_member
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english
 from assistantx.core.office import Office
 
 _COMMON = english.words("common")
 _FROM_WORDS = frozenset({"from", "at", "in", "of", "out"})
+_VAGUE = english.words("vague_things")
+_LEFT = english.words("left_behind_verbs")
+_LEFT_SUBJECTS = english.words("left_behind_subjects")
+_RELATIVES = frozenset({"that", "which"})
+_WHERE = frozenset({"at", "in", "on", "by", "near", "beside", "next"})
+# What ends the place said after "left at": a courtesy, whom for, a time.
+_PLACE_ENDS = english.words("courtesy") | {"please", "pls", "thanks", "for", "earlier", "today"}
+_PLACE_ENDS |= {"yesterday", "this", "last", "and", "so", "because", "if", "when"}
+
+
+def left_behind(tokens: Sequence[Token], mentions: Sequence[Mention]) -> str | None:
+    """ "bring me the thing I left at the printer", "grab the stuff I forgot in the meeting
+    room": a vague word for a thing ("thing", "stuff", "bits") the speaker says they left at
+    a place is their own thing there, but which thing is not said: the question what it is
+    ("What did you leave at the printer?"), never "left" read as a thing the office lacks."""
+    words = [t.word for t in tokens]
+    for n, word in enumerate(words):
+        if word not in _VAGUE or n + 2 >= len(words):
+            continue
+        k = n + 1
+        if words[k] in _RELATIVES:
+            k += 1
+        if k + 1 >= len(words) or words[k] not in _LEFT_SUBJECTS or words[k + 1] not in _LEFT:
+            continue
+        k += 2
+        if k < len(words) and words[k] in ("behind", "there"):
+            k += 1
+        if k >= len(words) or words[k] not in _WHERE:
+            return "What did you leave there, and where is it?"
+        end = k + 1
+        while end < len(words) and words[end] not in _PLACE_ENDS and not tokens[end].opens:
+            if tokens[end].after_pause:
+                break
+            end += 1
+        if end == k + 1:
+            return None
+        place = " ".join(t.text for t in tokens[k:end])
+        return f"What did you leave {place}?"
+    return None
 
 
 def unlisted_thing(mentions: Sequence[Mention]) -> tuple[str, str] | None:
