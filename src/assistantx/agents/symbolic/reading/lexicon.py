@@ -26,7 +26,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.asking_forms import asking_forms, done_forms, event_noun
 from assistantx.agents.symbolic.reading.bare_possessives import read_bare_possessives
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_given import clipped_owner, given_name_clips
@@ -240,6 +240,7 @@ class Lexicon:
         for op in office.operations:
             # "ran" of "run" tells, never asks: not a cue of the operation
             forms = {form for verb in op.verbs for form in asking_forms(key_of(verb))}
+            forms |= done_forms(op, office)  # "restrung": the office's own word for what it did
             ops |= forms
             kind = SHAPE_KIND.get(op.shape(office))
             if kind is not None:
