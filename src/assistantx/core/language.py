@@ -32,6 +32,8 @@ from collections.abc import Iterable
 
 from lemminflect import getAllInflections, getAllInflectionsOOV, getAllLemmas
 
+from assistantx.core import english
+
 # Combining marks (accents typed or pasted as a letter plus a mark, the decomposed form NFD):
 # not word characters to ``re``, yet part of the letter before them ("Sia\u0302n" is "Siân").
 _MARKS = "\u0300-\u036f\u1ab0-\u1aff\u1dc0-\u1dff\u20d0-\u20ff\ufe20-\ufe2f"
@@ -87,8 +89,41 @@ def lemmas(word: str) -> dict[str, tuple[str, ...]]:
 
 
 def verb_lemmas(word: str) -> frozenset[str]:
-    """The verbs a word is a form of: "bound" → {bind, bound}, "got" → {get}."""
-    return frozenset(lemmas(word).get("VERB", ()))
+    """The verbs a word is a form of: "bound" → {bind, bound}, "got" → {get}; a word the
+    dictionary lacks that is a prefix and an inflected form it knows: "restrung" →
+    {restring} (never a bare stem: "Unwin" is no form of "unwin")."""
+    found = lemmas(word).get("VERB", ())
+    if found or lemmas(word):
+        return frozenset(found)
+    return _prefixed_lemmas(word.lower())
+
+
+@functools.cache
+def _prefixed_lemmas(word: str) -> frozenset[str]:
+    for prefix in sorted(english.words("verb_prefixes"), key=len, reverse=True):
+        for lead in (f"{prefix}-", prefix):
+            stem = word.removeprefix(lead)
+            if stem == word or len(stem) < 3:
+                continue
+            stems = [s for s in getAllLemmas(stem).get("VERB", ()) if s != stem]
+            if stems:
+                return frozenset(lead + s for s in stems)
+    return frozenset()
+
+
+def past_participle(verb: str) -> str:
+    """A verb's past participle: "shred" → shredded, "restring" → restrung (its stem's)."""
+    found = getAllInflections(verb, upos="VERB") or _prefixed_inflections(verb)
+    forms = found.get("VBN") or found.get("VBD")
+    if forms:
+        return forms[0]
+    guessed = getAllInflectionsOOV(verb, upos="VERB").get("VBN", ())
+    return guessed[0] if guessed else f"{verb.removesuffix('e')}ed"
+
+
+def _verb_inflections(lemma: str) -> dict[str, tuple[str, ...]]:
+    """The dictionary's forms of a verb, or of its stem after a prefix ("restring")."""
+    return getAllInflections(lemma, upos="VERB") or _prefixed_inflections(lemma)
 
 
 @functools.cache
@@ -99,9 +134,28 @@ def verb_forms(verb: str) -> frozenset[str]:
     head, _, rest = verb.lower().strip().partition(" ")
     if not head:
         return frozenset()
-    found = getAllInflections(head, upos="VERB") or getAllInflectionsOOV(head, upos="VERB")
+    found = (
+        getAllInflections(head, upos="VERB")
+        or _prefixed_inflections(head)
+        or getAllInflectionsOOV(head, upos="VERB")
+    )
     forms = {head, *(f for group in found.values() for f in group)}
     return frozenset(f"{f} {rest}".strip() for f in forms)
+
+
+def _prefixed_inflections(verb: str) -> dict[str, tuple[str, ...]]:
+    """The forms of a verb the dictionary lacks that is a prefix and a verb it knows
+    ("restring" → restrung, "re-wind" → re-wound, "regrind" → reground), the prefix kept as
+    written; {} for any other (the regular endings are guessed then)."""
+    for prefix in sorted(english.words("verb_prefixes"), key=len, reverse=True):
+        for lead in (f"{prefix}-", prefix):
+            stem = verb.removeprefix(lead)
+            if stem == verb or len(stem) < 3:
+                continue
+            found = getAllInflections(stem, upos="VERB")
+            if found:
+                return {tag: tuple(lead + f for f in forms) for tag, forms in found.items()}
+    return {}
 
 
 @functools.cache
@@ -323,7 +377,7 @@ def is_finite_verb(word: str) -> bool:
     """A past or third-person form of a verb ("hurt", "needs", "broke"): after a name, the
     name is the subject ("Pat hurt her hand"), not a modifier."""
     for lemma in verb_lemmas(word):
-        forms = getAllInflections(lemma, upos="VERB")
+        forms = _verb_inflections(lemma)
         if word in forms.get("VBD", ()) or word in forms.get("VBZ", ()):
             return True
     return False
@@ -334,7 +388,7 @@ def is_past_participle(word: str) -> bool:
     """A past participle of a verb ("signed", "bound", "stamped"): before a noun it describes
     the thing ("the signed form"), it does not ask for the verb's work."""
     for lemma in verb_lemmas(word):
-        forms = getAllInflections(lemma, upos="VERB")
+        forms = _verb_inflections(lemma)
         # the dictionary lists a participle only where it differs from the past ("bound")
         if word in (forms.get("VBN") or forms.get("VBD", ())):
             return True
@@ -344,16 +398,14 @@ def is_past_participle(word: str) -> bool:
 @functools.cache
 def is_present_participle(word: str) -> bool:
     """A verb's -ing form ("bringing", "printing"): after its subject, what is under way."""
-    return any(
-        word in getAllInflections(lemma, upos="VERB").get("VBG", ()) for lemma in verb_lemmas(word)
-    )
+    return any(word in _verb_inflections(lemma).get("VBG", ()) for lemma in verb_lemmas(word))
 
 
 @functools.cache
 def is_past_verb(word: str) -> bool:
     """A past form of a verb ("brought", "made", "done"): what is told as already done."""
     for lemma in verb_lemmas(word):
-        forms = getAllInflections(lemma, upos="VERB")
+        forms = _verb_inflections(lemma)
         if word in forms.get("VBD", ()) or word in forms.get("VBN", ()):
             return True
     return False

@@ -157,12 +157,8 @@ def done_words(op: Operation) -> str:
     ``done`` ("scanned to PDF"), else its verb's past participle ("shredded", "faxed")."""
     if op.done:
         return op.done
-    import lemminflect  # loaded when an outcome is first worded, not with the dashboard
-
     verb, _, rest = op.name.partition(" ")
-    forms = lemminflect.getInflection(verb, "VBN")
-    past = forms[0] if forms else f"{verb.removesuffix('e')}ed"
-    return f"{past} {rest}".strip()
+    return f"{language.past_participle(verb)} {rest}".strip()
 
 
 def _operation_on(

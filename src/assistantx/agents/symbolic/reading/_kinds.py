@@ -401,6 +401,16 @@ class TaskReader:
         # the file types, which may name the format of what a service makes ("to PDF")
         self.formats = frozenset(t.id for t in office.item_types if t.electronic)
         self.file = office.file_type() or ""  # what is forwarded
+        # the words of each item type's names of several words ("master" of "master file")
+        self._name_words = {
+            t.id: frozenset(
+                w
+                for n in (t.name, *t.synonyms)
+                if len(language.words(n)) > 1
+                for w in language.words(n)
+            )
+            for t in office.item_types
+        }
         seal = office.seal_tool()
         self.tool_owners = frozenset(office.owners_of(seal) if seal else ())
         # each form of a verb that asks for exactly one operation making something from
@@ -617,6 +627,10 @@ class TaskReader:
         if previous is not None and self._sends_made_file(clause, roles, previous):
             return []  # "scan my reel and send me the PDF": the scan's file, to whom it goes
         clause = self._product_of_the_verb(clause)
+        apart = self._made_of_apart(clause)
+        if apart is not None:
+            # "bring me a tea and a printout of my rota": the print of the rota, and the tea
+            return [t for part in apart for t in self.tasks(part, roles, requester, previous)]
         s = self.scene(clause, roles, requester, previous)
         each = self._each_product(s)
         if each:
@@ -625,6 +639,61 @@ class TaskReader:
         if rule is not None:
             return [rule.task(s)]
         return self._objects(s)
+
+    def _made_of_apart(self, clause: Clause) -> tuple[Clause, Clause] | None:
+        """ "a tea and a printout of my rota": a product named with what it is made of ("a
+        <product> of <input>", made by an operation of the office from that input) beside
+        other things the clause asks for, which are neither that input nor another product
+        of it: the product's words and the rest as two clauses, in the order said, each
+        read as it would be alone. None for any other clause ("a copy of my plan for Noor
+        and a PDF for Bill" stays one paper's two products)."""
+        objects = clause.objects()
+        if len(objects) < 2:
+            return None
+        by_start = {m.start: m for m in clause.mentions}
+        for product in objects:
+            of = by_start.get(product.end)
+            if of is None or of.kind != "word" or of.ids[:1] != ("of",):
+                continue
+            k = of.end
+            while k in by_start and by_start[k].kind in ("self", "person", "word"):
+                if by_start[k].kind == "word" and not by_start[k].possessive:
+                    break
+                k = by_start[k].end
+            source = by_start.get(k)
+            if source is None or source.kind not in ("item", "word") or not source.ids:
+                continue
+            # the input named, or a word of its name ("of my master": the master file)
+            inputs = {
+                o.input
+                for o in self.office.operations
+                if o.product == product.id
+                and o.input is not None
+                and (
+                    o.input == source.ids[0]
+                    or (source.kind == "word" and source.ids[0] in self._name_words[o.input])
+                    or (  # "a printout of my report": the report's file is printed
+                        source.kind == "item"
+                        and o.shape(self.office) == "render"
+                        and self.kinds[source.ids[0]] in ("electronic", "personal")
+                    )
+                )
+            }
+            if len(inputs) != 1:
+                continue
+            made_of = {o.product for o in self.office.operations if o.input in inputs and o.product}
+            others = [m for m in objects if not product.start <= m.start < source.end]
+            if not others or any(m.id in made_of or m.id in inputs for m in others):
+                return None
+            span = range(product.start, source.end)
+            made = dataclasses.replace(
+                clause, mentions=[m for m in clause.mentions if m not in others]
+            )
+            rest = dataclasses.replace(
+                clause, mentions=[m for m in clause.mentions if m.start not in span]
+            )
+            return (made, rest) if product.start < others[0].start else (rest, made)
+        return None
 
     def _product_of_the_verb(self, clause: Clause) -> Clause:
         """ "brew for me and one for Bron": an operation's verb said as the whole request,

@@ -15,8 +15,13 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
+from assistantx.core.office import Office, Operation
 
 _DETERMINERS = english.words("modifier_determiners")
+_FUNCTION_WORDS = english.words("common")
+# The words of the generic tasks (bring, send, take ...): a ``done:`` word of theirs ("sent
+# with the courier") keeps its own reading.
+_CUE_WORDS = frozenset(w for words in english.word_table("cues").values() for w in words)
 _PREPOSITIONS = english.words("time_prepositions") | english.words("modifier_prepositions")
 # What may end the phrase after the event's noun: a clause's join, or another preposition.
 _PHRASE_ENDS = _PREPOSITIONS | english.words("clause_joins") | {"so", "then", "please"}
@@ -29,6 +34,34 @@ def asking_forms(verb: str) -> set[str]:
     head = verb.lower().strip().partition(" ")[0]
     told = language.past_only_forms(head)
     return {f for f in forms if f.partition(" ")[0] not in told or f.partition(" ")[0] == head}
+
+
+def done_forms(op: Operation, office: Office) -> set[str]:
+    """The office's own word for what ``op`` did ("rewound", "restrung", "spooled" in its
+    ``done:``), which names the work as its verbs' participle does ("get it restrung"): the
+    ``done:`` field's first word where it is a form of one of the operation's verbs, a word
+    the dictionary knows as no verb's form at all, or a participle of a verb that is no
+    generic task's word and no other operation's (never "sent" of "sent with the courier",
+    which keeps its own reading)."""
+    if not op.done:
+        return set()
+    first = language.fold(op.done).split()[0].strip(".,;:!?")
+    if not first.isalpha() or first in _FUNCTION_WORDS:
+        return set()
+    own = {f for verb in op.verbs for f in language.verb_forms(verb.split()[0])}
+    lemmas = language.verb_lemmas(first)
+    if first in own or not lemmas:
+        return {first}
+    others = {
+        f
+        for other in office.operations
+        if other.id != op.id
+        for verb in other.request_phrases
+        for f in language.verb_forms(verb.split()[0])
+    }
+    if language.is_past_participle(first) and not lemmas & (_CUE_WORDS | others):
+        return {first}
+    return set()
 
 
 def event_noun(tokens: Sequence[Token], i: int, verbs: frozenset[str]) -> bool:

@@ -30,6 +30,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.asking_forms import done_forms
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
@@ -79,6 +80,13 @@ class FrameReader:
     def __init__(self, office: Office) -> None:
         self.office = office
         self.reader = TaskReader(office)
+        # every form of each operation's one-word verbs and its own ``done:`` word → the
+        # operations it names ("rewinding", "rewound" → rewind)
+        self._op_of: dict[str, set[str]] = {}
+        for op in office.operations:
+            forms = {f for v in op.verbs for f in language.verb_forms(v.split()[0]) if " " not in v}
+            for form in forms | done_forms(op, office):
+                self._op_of.setdefault(form, set()).add(op.id)
 
     def frame(
         self,
@@ -109,6 +117,7 @@ class FrameReader:
         previous_roles = Roles()  # the roles of the clause before
         previous_asked: list[str] = []  # whom the clause before asked ("could Liu read ...")
         previous_need = False  # the clause before said someone needs something
+        previous_ops: set[str] = set()  # the operations the clause before named by verb
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
         addressed = addressed_person(tokens, readings.mentions, readings.gaps)
@@ -173,6 +182,12 @@ class FrameReader:
             ]
             if tasks and previous_need:  # "P needs a printout of X, print one for her": one
                 made = [t for t in made if not same_work(tasks[-1], t)]
+            said_ops = self._ops_said(clause, tokens)
+            if tasks and self._refers_back(clause) and said_ops and said_ops <= previous_ops:
+                # "my tape needs rewinding, get it rewound": the work the need said, asked
+                # for again on "it" by the same operation's verb, is the same work, once
+                made = [t for t in made if not same_work(tasks[-1], _on_item(t, tasks[-1]))]
+            previous_ops = said_ops
             if tasks and previous_need and self._refers_back(clause) and met_by(tasks[-1], made):
                 tasks.pop()  # "Priya needs the agenda, print it for her": the print meets it
             previous_need = says_a_need(clause, tokens)
@@ -279,6 +294,15 @@ class FrameReader:
             and earlier.item == task.item
             and task_kinds.works_on_item(earlier.kind)
         )
+
+    def _ops_said(self, clause: Clause, tokens: Sequence[Token]) -> set[str]:
+        """The operations a clause names by a form of a verb of theirs."""
+        return {
+            op
+            for m in clause.mentions
+            if m.kind == "cue"
+            for op in self._op_of.get(tokens[m.start].word, ())
+        }
 
     @staticmethod
     def _refers_back(clause: Clause) -> bool:
@@ -724,6 +748,11 @@ def _named_later(clauses: list[Clause], first: int) -> tuple[int, str] | None:
         if len(people) == 1 and len(next(iter(people))) == 1:
             return k, next(iter(people))[0]
     return None
+
+
+def _on_item(task: Task, earlier: Task) -> Task:
+    """``task`` on ``earlier``'s item where its own object was only "it"."""
+    return task if task.item is not None else task.model_copy(update={"item": earlier.item})
 
 
 def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:

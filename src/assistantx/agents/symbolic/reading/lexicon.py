@@ -26,7 +26,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
-from assistantx.agents.symbolic.reading.asking_forms import asking_forms, event_noun
+from assistantx.agents.symbolic.reading.asking_forms import asking_forms, done_forms, event_noun
 from assistantx.agents.symbolic.reading.bare_possessives import read_bare_possessives
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_given import clipped_owner, given_name_clips
@@ -311,6 +311,7 @@ class Lexicon:
         for op in office.operations:
             # "ran" of "run" tells, never asks: not a cue of the operation
             forms = {form for verb in op.verbs for form in asking_forms(key_of(verb))}
+            forms |= done_forms(op, office)  # "restrung": the office's own word for what it did
             ops |= forms
             kind = SHAPE_KIND.get(op.shape(office))
             if kind is not None:
@@ -374,6 +375,11 @@ class Lexicon:
                 key = key_of(name)
                 if key:
                     lex.facilities.setdefault(key, f.id)
+        # "on the charger" of a "radio charger": its head word, the agent noun of its work
+        for word, facility_id in _agent_names(office).items():
+            if not lex._known(word) and not any(word in k.split() for k in lex.items):
+                for variant in (word, _plural(word)):
+                    lex.facilities.setdefault(variant, facility_id)
         for loc in office.locations:  # "the mail room", "the post desk": places, not verbs
             for name in (loc.name, loc.id.replace("_", " ")):
                 key = key_of(name)
@@ -1068,6 +1074,27 @@ class Lexicon:
 def _bare_verb(token: Token) -> bool:
     """Whether a word is a verb in its plain form, its own lemma ("sign", "stamp")."""
     return not token.opens and token.word in language.verb_lemmas(token.word)
+
+
+def _agent_names(office: Office) -> dict[str, str]:
+    """The words that name a facility by what it does ("the charger" of a charging rack
+    whose synonym is "radio charger"): the head word of a name of several words of the
+    facility that is the agent noun of a one-word verb of one of its operations; a word two
+    facilities would share names neither. An agent noun the office never uses for the
+    facility ("poster" of a facility that posts) keeps its everyday meaning."""
+    found: dict[str, set[str]] = {}
+    for f in office.facilities:
+        verbs = {
+            key_of(v)
+            for op_id in f.operations
+            for v in office.operation(op_id).request_phrases
+            if " " not in v.strip()
+        }
+        for name in (f.name, *f.synonyms):
+            words = key_of(name).split()
+            if len(words) > 1 and any(_agent_noun(words[-1], v) for v in verbs):
+                found.setdefault(words[-1], set()).add(f.id)
+    return {w: next(iter(ids)) for w, ids in found.items() if len(ids) == 1}
 
 
 def _agent_noun(word: str, verb: str) -> bool:

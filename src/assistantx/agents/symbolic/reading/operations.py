@@ -5,6 +5,7 @@ outside taken from the readings ("send out my drawing to the client") or asked f
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.asking_forms import done_forms
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
     named_after,
@@ -74,6 +75,7 @@ class OperationChooser:
                 for form in inflections(verb)
             }
             | phrases.of_operation(op.id)
+            | done_forms(op, office)
             for op in office.operations
         }
 

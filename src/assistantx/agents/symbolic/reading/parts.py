@@ -90,7 +90,9 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if left_out is not None:
         return left_out
     phrase = (
-        unread_compound(office, readings.mentions, [t.text for t in readings.tokens])
+        unread_compound(
+            office, readings.mentions, [t.text for t in readings.tokens], _inputs(office, frame)
+        )
         or unread_sent_thing(readings.mentions, [t.text for t in readings.tokens])
         or unread_paper(readings.mentions, readings.tokens)
         or _unknown_destination(readings, destinations)
@@ -100,6 +102,16 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if phrase is None:
         return None
     return f"{ASKED}{phrase}{ASKED_END}{_means(office)} Could you tell me?"
+
+
+def _inputs(office: Office, frame: TaskFrame) -> frozenset[str]:
+    """The item types the frame's operations take as their input, each on its task's item."""
+    found: set[str] = set()
+    for t in frame.tasks:
+        op_id = operation_of(office, t)
+        if op_id is not None and t.item is not None and office.operation(op_id).input == t.item:
+            found.add(t.item)
+    return frozenset(found)
 
 
 def operation_left_out(

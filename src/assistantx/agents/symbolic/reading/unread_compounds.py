@@ -49,11 +49,24 @@ def name_words(office: Office) -> frozenset[str]:
 
 
 def unread_compound(
-    office: Office, mentions: Sequence[Mention], texts: Sequence[str]
+    office: Office,
+    mentions: Sequence[Mention],
+    texts: Sequence[str],
+    worked_on: frozenset[str] = frozenset(),
 ) -> str | None:
     """The words of the first such phrase (opener kept), or None. ``texts``: each token's
-    text as written (an article is no mention of its own)."""
+    text as written (an article is no mention of its own); ``worked_on``: the item types
+    the request's operations take as their input ("burn a CD of *my master*", where burning
+    takes a file): the head alone after its opener, a word of such a type's name ("master
+    file"), is that item, whatever other thing's name shares the word ("master tape")."""
     words = name_words(office)
+    taken = {
+        w
+        for t in office.item_types
+        if t.id in worked_on
+        for name in (t.name, *t.synonyms)
+        for w in normalize(name).split()
+    }
     ends = {m.end: m for m in mentions}
     for n, first in enumerate(mentions):
         if first.kind != "word" or first.start < 1:
@@ -75,6 +88,8 @@ def unread_compound(
         after = next((m for m in mentions if heads and m.start == run[heads[-1]].end), None)
         if after is not None and after.kind == "item":
             continue  # "my wine list file": the item after it is the phrase's head
+        if heads == [0] and run[0].ids[0] in taken:
+            continue  # "burn my master": the master file burning takes, no question
         if heads:
             return " ".join(texts[begin : run[heads[-1]].end])
     return None

@@ -25,6 +25,8 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
         for verb in terms.en.destructive:
             if verb[0] in terms.lex.operation_words:
                 continue  # "shred my drafts" where a shredder is offered: a service
+            if len(verb) == 1 and _onto_a_service(terms, piece):
+                continue  # "throw my radio on the charger": put there for its service
             if starts_with(sub.words, at, verb):
                 return _declined(terms, piece, " ".join(verb))
     if commanded(terms, piece) and (found := _waste_container(terms, piece)) is not None:
@@ -37,6 +39,22 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
             # verb that is no errand, of a colleague's thing: refused, not noted as told
             return _declined(terms, piece, f"put {owner}'s things in the {container}", what="")
     return None
+
+
+def _onto_a_service(terms: Terms, piece: Piece) -> bool:
+    """Whether the piece puts its thing on or into a facility of the office that runs an
+    operation ("throw my radio on the charger", "toss it in the laminator"): the verb only
+    says how it is put there for that work, nothing is disposed of."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    for m in mentions:
+        if m.kind != "facility" or not terms.office.facility(m.ids[0]).operations:
+            continue
+        k = m.start - 1
+        while k >= 0 and tokens[k].word in DETERMINERS:
+            k -= 1
+        if k > 0 and tokens[k].word in _INTO:
+            return True
+    return False
 
 
 def _colleague(terms: Terms, piece: Piece, requester: str) -> str | None:

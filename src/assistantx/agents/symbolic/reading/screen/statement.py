@@ -26,6 +26,8 @@ from assistantx.core.office import Facility
 
 
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if conditional_addition(msg, piece):
+        return None  # "bring me a hard hat. and a tea if the kettle's on": the tea asked too
     if obligation_asked(msg, piece):
         return None  # "Zhang has to sign my lease, can you sort that": what "that" asks
     if owner_work_asked(msg, piece):
@@ -65,6 +67,39 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     )
     said = "praise for someone's work" if praise else "a statement"
     return Finding("statement", piece, f"{said}, context only", context=named)
+
+
+# Words before a thing added to the request before it ("*oh and* a tea ..."), the article of
+# the thing, and the words after it before its condition ("a tea *too* if ...").
+_ADDING = frozenset({"oh", "ah", "and", "also", "plus", "maybe"})
+_ONE_OF = frozenset({"a", "an", "some", "one", "another", "any"})
+_AS_WELL = frozenset({"too", "as", "well", "also", "please", "pls", "plz"})
+
+
+def conditional_addition(msg: Message, piece: Piece) -> bool:
+    """ "could you bring me a hard hat? and a tea if the kettle's on", "... a tea too if it's
+    no trouble": after a request, one more thing named with no verb of its own and a
+    condition on whether it can be had ("if" and what follows) is that thing asked for too,
+    not a statement: the condition is about availability, which the errand finds out (a
+    thing that cannot be had is said so at the end, never dropped in silence)."""
+    if not any(p.acts.request for p in msg.pieces if p.end <= piece.start):
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    words = [t.word for t in tokens]
+    if "if" not in words:
+        return False
+    cut = words.index("if")
+    k = 0
+    while k < cut and words[k] in _ADDING:
+        k += 1
+    if k >= cut or words[k] not in _ONE_OF:
+        return False
+    k += 1
+    thing = next((m for m in mentions if m.start == k), None)
+    if thing is None or thing.kind != "item":
+        return False
+    rest = words[thing.end : cut]
+    return all(w in _AS_WELL for w in rest) and cut + 1 < len(words)
 
 
 def obligation_asked(msg: Message, piece: Piece) -> bool:
