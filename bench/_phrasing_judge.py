@@ -134,6 +134,24 @@ def known_item(office: Office, item: str) -> bool:
     return type_id in types and holder in holders
 
 
+def truth_goal(case: Case) -> list[dict[str, list[str]]] | None:
+    """What the requester of a deliver case really wants, as goal milestones (``holds``: the
+    recipient holds the item, and each hand-over under ``also``), so the simulated requester
+    answers the assistant's offers and questions as a person who wants exactly that would: the
+    item is the case's, its owner the one whose yes is asked (``owner_asked``) when the case
+    names only a type, else nobody in particular. None for an ask, words or decline case: a
+    yes there would be a guess, so the requester answers from their words only."""
+    if case.expect != "deliver" or case.recipient is None or case.item is None:
+        return None
+    item = case.item
+    if ":" not in item and case.owner_asked is not None:
+        item = f"{item}:{case.owner_asked}"
+    return [
+        {"holds": [case.recipient, item]},
+        *({"holds": [more.recipient, more.item]} for more in case.also),
+    ]
+
+
 def item_matches(wanted: str, item: str) -> bool:
     """Whether the item handed over (``type:holder``) is the one the case names: that item
     id, or any item of the type (a product type is the type of what a facility makes)."""

@@ -2,8 +2,10 @@
 the writer's expected outcome (the file format and the rules: docs/phrasings.md).
 
 Each case is one ``assistantx run --as P --json --quiet --office O --reasoner symbolic
---trace-out T TEXT`` in its own process, with this interpreter and the current PYTHONPATH
-(``--src`` puts a source tree first on it), so it measures whichever code that path holds::
+--trace-out T [--goal G] TEXT`` in its own process, with this interpreter and the current
+PYTHONPATH (``--src`` puts a source tree first on it), so it measures whichever code that path
+holds. A deliver case's requester answers the assistant's questions from the case's truth
+(``--goal``: recipient, item, owner), an ask, words or decline case's from their words only::
 
     python bench/phrasings.py --phrasings FILE.yaml [--jobs 2] [--label L] [--out DIR]
         [--src SRC] [--office O] [--timeout-s 120]
@@ -27,7 +29,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from _phrasing_judge import Case, PhrasingsError, Verdict, judge, load_phrasings
+from _phrasing_judge import Case, PhrasingsError, Verdict, judge, load_phrasings, truth_goal
 
 from assistantx.core.office import Office
 
@@ -60,6 +62,7 @@ def run_case(
             "symbolic",
             "--trace-out",
             str(trace_file),
+            *_goal_option(case),
             "--",  # a text that starts with a dash is still the instruction
             case.text,
         ]
@@ -75,6 +78,12 @@ def run_case(
         trace: dict[str, Any] = json.loads(trace_file.read_text())
     verdict = judge(case, trace, office)
     return Result(case.id, case.expect, verdict, trace.get("summary") or ""), trace
+
+
+def _goal_option(case: Case) -> list[str]:
+    """``--goal`` with a deliver case's truth, so the requester answers as one who wants it."""
+    goal = truth_goal(case)
+    return [] if goal is None else ["--goal", json.dumps(goal)]
 
 
 def _no_trace(case: Case, why: str) -> Result:

@@ -32,7 +32,7 @@ def _words(*spec: str) -> list[_W]:
 def test_the_neighbours_and_what_the_office_says_of_the_next_word() -> None:
     words = _words("give", "penny", "a", "pen")
     assert slot_at(words, 1, items={"pen"}, name_words={"penny"}) == NameSlot(
-        word="penny", written="penny", prev="give", next="a", after_next="pen"
+        word="penny", written="penny", prev="give", next="a", after_next="pen", prev_opens=True
     )
     slot = slot_at(_words("give", "penny", "pens"), 1, items={"pens"}, name_words=set())
     assert slot.next_is_item and not slot.next_is_name
@@ -45,6 +45,14 @@ def test_the_next_word_stops_at_a_sentence_end_the_previous_one_does_not() -> No
     assert (slot.prev, slot.next) == ("thanks", "")
     slot = slot_at(_words("thanks", "|Mark", "is", "here"), 1, items=set(), name_words=set())
     assert slot.opens and slot.prev == "thanks"
+
+
+def test_whether_the_word_before_opens_and_the_word_after_the_next_is_a_name() -> None:
+    """ "is tam in?", "are tam and wren in?": the question's opening verb, the name joined."""
+    slot = slot_at(_words("are", "tam", "and", "wren"), 1, items=set(), name_words={"wren"})
+    assert slot.prev_opens and slot.after_next_is_name
+    slot = slot_at(_words("so", "is", "tam", "in"), 2, items=set(), name_words=set())
+    assert not slot.prev_opens and not slot.after_next_is_name
 
 
 def test_a_title_declared_with_its_article() -> None:

@@ -18,6 +18,7 @@ import pytest
 from assistantx.agents.registry import reasoner_factory
 from assistantx.core.office import load_office
 from assistantx.core.settings import Settings
+from assistantx.sim.requester import Wish
 from assistantx.sim.run import run_in_sim
 
 BENCH = Path(__file__).resolve().parents[2] / "bench"
@@ -28,6 +29,7 @@ from _phrasing_judge import (  # noqa: E402  (bench/ is no package: on the path 
     PhrasingsError,
     judge,
     load_phrasings,
+    truth_goal,
 )
 
 OFFICE = load_office()
@@ -45,6 +47,21 @@ def _run(requester: str, text: str) -> str:
 def trace(requester: str, text: str) -> dict[str, Any]:
     loaded: dict[str, Any] = json.loads(_run(requester, text))
     return loaded
+
+
+@cache
+def _run_as_the_case_says(
+    text: str, expect: str, recipient: str | None, item: str = "printout"
+) -> str:
+    """The trace JSON of a real run whose requester answers as the bench's does: from the
+    case's truth for a deliver case (``truth_goal``, what ``--goal`` carries), else from the
+    words they wrote."""
+    fields = {} if recipient is None else {"recipient": recipient, "item": item}
+    goal = truth_goal(case(text, expect, **fields))
+    wish = None if goal is None else Wish.from_goal(OFFICE, "lee", goal)
+    factory = reasoner_factory("symbolic", OFFICE, Settings())
+    run = asyncio.run(run_in_sim(OFFICE, "lee", text, factory, reasoner_name="symbolic", wish=wish))
+    return run.trace.model_dump_json()
 
 
 def case(text: str, expect: str, **fields: Any) -> Case:
@@ -209,6 +226,63 @@ def test_a_product_and_a_printed_file_are_delivered_with_no_one_elses_hand_over(
     assert (verdict.right, verdict.wrong_physical) == (True, None)
 
 
+# "questionnaire" is no word of the office: the reader restates before it acts
+PRINT_MINE = "pls print my questionnaire for me, thx"
+PRINT_FIXED = "print my questionnaire and take it to Wang. Sorry, I meant Chen"
+
+
+@pytest.mark.parametrize(("text", "recipient"), [(PRINT_MINE, "lee"), (PRINT_FIXED, "chen")])
+def test_a_right_restatement_of_a_deliver_case_is_answered_yes_and_delivered(
+    text: str, recipient: str
+) -> None:
+    run = json.loads(_run_as_the_case_says(text, "deliver", recipient))
+    assert "Shall I print your file for" in json.dumps(run)  # it was restated and asked
+    verdict = judge(case(text, "deliver", recipient=recipient, item="printout"), run, OFFICE)
+    assert (verdict.got, verdict.right, verdict.wrong_physical) == ("deliver", True, None)
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient", "item"),
+    [
+        (PRINT_MINE, "wang", "printout"),  # the wrong person: "for you"
+        (PRINT_FIXED, "wang", "printout"),  # the wrong person: "for Chen Jie"
+        (PRINT_FIXED, "lee", "printout"),
+        (PRINT_MINE, "lee", "book"),  # the wrong item
+    ],
+)
+def test_a_wrong_restatement_of_the_cases_truth_is_answered_no(
+    text: str, recipient: str, item: str
+) -> None:
+    run = json.loads(_run_as_the_case_says(text, "deliver", recipient, item))
+    verdict = judge(case(text, "deliver", recipient=recipient, item=item), run, OFFICE)
+    assert (verdict.got, verdict.right, verdict.wrong_physical) == ("ask", False, None)
+    assert "won't do anything" in run["summary"]
+
+
+@pytest.mark.parametrize("text", [PRINT_MINE, PRINT_FIXED])
+def test_an_ask_case_keeps_the_requester_of_the_words_only(text: str) -> None:
+    assert truth_goal(case(text, "ask")) is None
+    assert truth_goal(case(text, "words")) is None
+    run = json.loads(_run_as_the_case_says(text, "ask", None))
+    assert judge(case(text, "ask"), run, OFFICE).right
+    assert "won't do anything" in run["summary"]  # a yes would be a guess: "No, thanks."
+
+
+def test_the_truth_of_a_deliver_case_is_its_hand_overs_with_the_owner_asked() -> None:
+    borrowed = case(BORROW, "deliver", recipient="lee", item="stapler", owner_asked="zhang")
+    assert truth_goal(borrowed) == [{"holds": ["lee", "stapler:zhang"]}]
+    combined = case(
+        COMBINED,
+        "deliver",
+        recipient="wang",
+        item="book",
+        also=[{"recipient": "lee", "item": "coffee"}],
+    )
+    assert truth_goal(combined) == [{"holds": ["wang", "book"]}, {"holds": ["lee", "coffee"]}]
+    wish = Wish.from_goal(OFFICE, "lee", truth_goal(borrowed) or [])
+    assert (wish.owners, wish.recipients) == (("zhang",), ("lee",))
+
+
 def _write(tmp_path: Path, cases: str) -> Path:
     office = Path(__file__).resolve().parents[2] / "dataset" / "office.yaml"
     path = tmp_path / "phrasings.yaml"
@@ -257,7 +331,10 @@ def test_the_tool_runs_each_case_in_its_own_process_and_ends_with_one_json_line(
     path = _write(
         tmp_path,
         f'  - {{id: thanks, as: lee, text: "{THANKS}", expect: words}}\n'
-        f'  - {{id: taken, as: lee, text: "{BORROW}", expect: words}}',
+        f'  - {{id: taken, as: lee, text: "{BORROW}", expect: words}}\n'
+        # restated before it acts: the requester answers the offer from the case's truth
+        f'  - {{id: printed, as: lee, text: "{PRINT_MINE}", expect: deliver, recipient: lee,'
+        " item: printout}",
     )
     env = {**os.environ, "PYTHONPATH": str(BENCH.parent / "src")}
     done = subprocess.run(
@@ -272,19 +349,46 @@ def test_the_tool_runs_each_case_in_its_own_process_and_ends_with_one_json_line(
         timeout=120,
     )
     lines = done.stdout.splitlines()
-    assert lines[:2] == [
+    assert lines[:3] == [
         "thanks: expected words, got words, right",
         "taken: expected words, got deliver, WRONG (wrong physical action: move on a words case)",
+        "printed: expected deliver, got deliver, right",
     ]
     report = json.loads(lines[-1])
     assert report == {
         "label": "t",
-        "cases": 2,
-        "right": 1,
+        "cases": 3,
+        "right": 2,
         "wrong_physical": 1,
-        "by_expect": {"words": {"cases": 2, "right": 1, "wrong_physical": 1}},
+        "by_expect": {
+            "words": {"cases": 2, "right": 1, "wrong_physical": 1},
+            "deliver": {"cases": 1, "right": 1, "wrong_physical": 0},
+        },
         "wrong": ["taken"],
     }
     kept = json.loads((tmp_path / "out" / "results.json").read_text())
-    assert [c["id"] for c in kept["per_case"]] == ["thanks", "taken"]
+    assert [c["id"] for c in kept["per_case"]] == ["thanks", "taken", "printed"]
     assert json.loads((tmp_path / "out" / "traces" / "taken.json").read_text())["text"] == BORROW
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("goal", "error"),
+    [
+        ("not json", "--goal is no JSON"),
+        ("{}", "--goal is a JSON list of milestones"),
+        ('[{"wants": ["lee"]}]', "unknown predicate 'wants'"),
+    ],
+)
+def test_a_bad_goal_on_the_command_line_is_one_line(goal: str, error: str) -> None:
+    done = subprocess.run(
+        [sys.executable, "-m", "assistantx", "run", "--as", "lee", "--goal", goal, BORROW],
+        env={**os.environ, "PYTHONPATH": str(BENCH.parent / "src")},
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert done.returncode == 2
+    assert done.stderr.strip().startswith("error: ")
+    assert error in done.stderr and len(done.stderr.strip().splitlines()) == 1

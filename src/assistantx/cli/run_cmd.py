@@ -4,7 +4,9 @@ With ``--json`` stdout is exactly one JSON object with ``outcome``, ``steps``, `
 the goal-free facts: messages sent, distance driven, usage), so a script can parse it whole; the
 readable trace then goes to stderr. ``--trace-out`` writes the full trace JSON to a file. Names
 (``--as``, ``--unavailable``) are matched like any name a person types; errors are one line on
-stderr.
+stderr. ``--goal`` says what the requester really wants, as the JSON list of a task's goal
+milestones (``[{"holds": ["lee", "stapler:zhang"]}]``): the simulated requester then answers the
+assistant's questions from it, as in an evaluation; without it, from the words they wrote.
 """
 
 from __future__ import annotations
@@ -20,10 +22,12 @@ from assistantx.adapters.model import model_from_settings
 from assistantx.agents.registry import PPDR_REASONERS, needs_llm, reasoner_factory
 from assistantx.cli._people import resolve_people
 from assistantx.core.errors import AssistantXError, GroundingError, OfficeError
-from assistantx.core.office import load_office
+from assistantx.core.goals import parse_milestone
+from assistantx.core.office import Office, load_office
 from assistantx.core.settings import Settings
 from assistantx.core.trace import Trace
 from assistantx.runtime.loop import LoopLimits
+from assistantx.sim.requester import Wish
 from assistantx.sim.run import run_in_sim
 
 
@@ -43,6 +47,12 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p.add_argument("--json", action="store_true", help="end with one JSON summary line")
     p.add_argument("--trace-out", default=None, help="write the full trace JSON here")
     p.add_argument("--quiet", action="store_true", help="do not print the trace")
+    p.add_argument(
+        "--goal",
+        default=None,
+        help="what the requester really wants, as JSON goal milestones; they answer questions "
+        "from it (default: from the words they wrote)",
+    )
     p.set_defaults(func=_run)
 
 
@@ -51,7 +61,8 @@ def _run(args: argparse.Namespace) -> int:
     try:
         office = load_office(args.office or settings.office)
         args.requester, args.unavailable = resolve_people(office, args.requester, args.unavailable)
-    except (OfficeError, GroundingError) as exc:
+        args.wish = _wish(office, args.requester, args.goal)
+    except (OfficeError, GroundingError, ValueError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     kind = args.reasoner or settings.effective_reasoner
@@ -71,6 +82,21 @@ def _run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(summary))
     return 0 if trace.outcome in ("done", "unachievable") else 1
+
+
+def _wish(office: Office, requester: str, goal: str | None) -> Wish | None:
+    """The requester's wish from ``--goal`` (JSON milestones, each checked), or None."""
+    if goal is None:
+        return None
+    try:
+        milestones = json.loads(goal)
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"--goal is no JSON: {exc}") from exc
+    if not isinstance(milestones, list) or not milestones:
+        raise ValueError("--goal is a JSON list of milestones")
+    for milestone in milestones:
+        parse_milestone(milestone)
+    return Wish.from_goal(office, requester, milestones)
 
 
 async def _execute(
@@ -95,6 +121,7 @@ async def _execute(
         unavailable=unavailable,
         limits=limits,
         reasoner_name=kind,
+        wish=args.wish,
     )
     sim = run.sim
     trace = run.trace

@@ -46,6 +46,17 @@ _POLITE = english.words("polite")
 _MODALS = english.words("request_modals")
 _VERB_SLOT_BEFORE = english.words("verb_slot_before")
 _VERB_SLOT_OBJECTS = english.words("verb_slot_objects")
+# "is tam in today?": the verb that opens a question of whether someone is here, and the first
+# words of what it asks (a person's being here or away: english.yaml's ``here`` and ``away``)
+_PRESENCE_BE = english.words("presence_question_verbs")
+_PRESENCE_BE_PLURAL = english.words("presence_question_verbs_plural")
+# "if wren doesn't mind": a condition on someone's leave (english.yaml)
+_CONSENT_IF = english.words("consent_conditions")
+_MINDS = frozenset(english.entries("minding_after_name"))
+_PRESENCE = (
+    frozenset(p.split()[0] for p in (*english.entries("here"), *english.entries("away")))
+    | english.words("presence_question_words")
+) - {"not"}
 
 
 @dataclass(frozen=True)
@@ -66,6 +77,8 @@ class NameSlot:
     after_next: str = ""  # the word after the next one (folded; "" at a sentence's edge)
     # the office declares "<prev> <word>" as someone's alias ("the Provost", "our Dean")
     declared_with_prev: bool = False
+    prev_opens: bool = False  # the word before opens the sentence ("*is* tam in today?")
+    after_next_is_name: bool = False  # the word after the next is a word of someone's name
 
 
 class SlotWord(Protocol):
@@ -116,6 +129,8 @@ def slot_at(
         next_after_pause=nxt is not None and nxt.after_pause,
         after_next=after.word if after is not None and not after.opens else "",
         declared_with_prev=n > 0 and (words[n - 1].word, w.word) in with_article,
+        prev_opens=n > 0 and words[n - 1].opens,
+        after_next_is_name=after is not None and not after.opens and after.word in name_words,
     )
 
 
@@ -157,6 +172,9 @@ def read_name(slot: NameSlot) -> NameReading:
         # "Can Penny sign my report?": the subject of a modal's question, before its verb
         or (prev in _MODALS and bool(nxt) and nxt in language.verb_lemmas(nxt))
         or _doer(prev, nxt, slot.after_next)
+        or _presence_asked(slot)
+        or _consenting(slot)
+        or _joined_names(slot)
     )
     if language.is_month(w) and not slot.possessive:
         day = language.is_day_number(prev) or language.is_day_number(nxt)
@@ -166,7 +184,7 @@ def read_name(slot: NameSlot) -> NameReading:
             return "ask"  # "print the rota for May": for her, or the month's rota?
     word = (
         modal
-        or prev in _WORD_BEFORE
+        or (prev in _WORD_BEFORE and not (_presence_asked(slot) or _joined_names(slot)))
         or ((slot.opens or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS)
     )
     # "grace period": a noun right after it makes a compound
@@ -186,6 +204,33 @@ def read_name(slot: NameSlot) -> NameReading:
     if word or compound:
         return "ask" if capital and not slot.opens else "word"
     return "person" if capital else "word"
+
+
+def _presence_asked(slot: NameSlot) -> bool:
+    """ "is tam in today?", "was reed around?", "is wren free": a name word right after the
+    "is" or "was" that opens a question, before a word that says whether someone is here or
+    away, is whom the question asks about; "is grace period over" (a noun after it) is not."""
+    if slot.opens or not slot.prev_opens or slot.possessive or slot.next_after_pause:
+        return False
+    return slot.prev in _PRESENCE_BE and slot.next in _PRESENCE
+
+
+def _joined_names(slot: NameSlot) -> bool:
+    """ "tam and wren are in", "are tam and wren in?": a name word that opens a sentence (or
+    follows the "are"/"were" opening a question), joined by "and"/"or" to another name word,
+    is the first of the people named together."""
+    if slot.possessive or slot.next_after_pause or slot.next not in ("and", "or"):
+        return False
+    first = slot.opens or (slot.prev_opens and slot.prev in _PRESENCE_BE_PLURAL)
+    return first and slot.after_next_is_name
+
+
+def _consenting(slot: NameSlot) -> bool:
+    """ "if wren doesn't mind", "unless reed minds": a name word between "if"/"unless" and a
+    word of someone's minding or agreeing is whose leave is meant ("if bill is due": no)."""
+    if slot.possessive or slot.next_after_pause or slot.prev not in _CONSENT_IF:
+        return False
+    return slot.next in _MINDS or f"{slot.next} {slot.after_next}" in _MINDS
 
 
 def _spoken_to(slot: NameSlot) -> bool:

@@ -9,7 +9,8 @@ they answer the question that was asked, from the task's truth (its goal milesto
   (the people an answer names before the offer, "As far as I know, Dov and Renée have a
   headset. Shall I bring you one?", are who has one, not whom it is for; a word the offer
   says that names a wanted item and another too, "your file" where the office also keeps a
-  box file called a file, is the wanted one);
+  box file called a file, is the wanted one; an offer to do it "for you" is no to one who wants
+  it for someone else);
 - "Where should I courier it to?" gets the place outside the task sends it to ("To the
   regional federation.");
 - "Who should get ...?" / "Whose ...?" (also both at once) / "Who should sign ...?" / "Who do
@@ -392,6 +393,11 @@ def _choose(office: Office, wish: Wish, options: list[str]) -> str | None:
     return scored[0][2] if scored[0][0] >= 0 else None
 
 
+_FOR_YOU = re.compile(
+    r"\b(?:for|to) you\b|\b(?:bring|get|hand|give|fetch|make|buy|send) you\b", re.IGNORECASE
+)
+
+
 def _fits(office: Office, wish: Wish, offer: str) -> bool:
     """Whether an offer ("Shall I bring you Zhang's stapler?") is what the requester wants."""
     if not wish.wants_something:
@@ -409,6 +415,9 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
     # "Shall I go ahead?" names nothing: yes; an offer that names someone or something they
     # did not ask for: no
     if people - wish.people or items - set(wish.items):
+        return False
+    # "Shall I print your file for you?" to one who wants it for someone else: no
+    if _FOR_YOU.search(asked) and wish.recipients and wish.requester not in wish.recipients:
         return False
     # "As far as I know, Dov and Renée have a headset. Shall I bring you one?": the people
     # before the offer are who has one, not whom it is for; any one will do for a wish of

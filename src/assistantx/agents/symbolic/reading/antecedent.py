@@ -17,6 +17,7 @@ _ANAPHORS = frozenset({"it", "them"})
 _ANCHORS = frozenset({"item", "facility", "place"})
 WHICH_FILE = "Which file do you mean by"
 _BARE_POSSESSIVE = re.compile(r"['’]s$|s['’]$")
+_OTHERS_POSSESSIVES = frozenset({"his", "her", "their"})
 
 
 def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None:
@@ -49,3 +50,33 @@ def with_antecedent(text: str, answer: str, kind: str = "") -> str:
         said = f"{said} {kind}"  # "Kwame's" → "Kwame's shoot file": the kind asked about
     pattern = r"\b(?:" + "|".join(sorted(_ANAPHORS)) + r")\b"
     return re.sub(pattern, lambda _: said, text, count=1, flags=re.IGNORECASE)
+
+
+def anothers_it(
+    office: Office, whole: Lexed, tasks: list[Task], requester: str, named_once: str | None
+) -> str | None:
+    """ "Tam's seating chart is done, can you print it for me?", "Tam finished her seating
+    chart, print it": the tasks read "it" as the requester's own file, but the message names
+    the thing only as another colleague's (a possessive, or "his"/"her" of the one colleague
+    named) and never as the requester's ("my"): whose it is, that colleague; None otherwise."""
+    words = {t.word for t in whole.tokens}
+    if not words & _ANAPHORS or not tasks:
+        return None
+    if not all(t.item and office.item_type(t.item).kind == "electronic" for t in tasks):
+        return None
+    if any(t.owner != requester for t in tasks):
+        return None
+    owners: set[str] = set()
+    for m in whole.mentions:
+        if not m.possessive:
+            continue
+        if m.kind == "self":
+            return None  # "my seating chart": the requester's own, as read
+        if m.kind == "person":
+            owners.update(m.ids)
+        elif m.kind == "pronoun" and whole.tokens[m.start].word in _OTHERS_POSSESSIVES:
+            if named_once is None:
+                return None
+            owners.add(named_once)
+    owners.discard(requester)
+    return next(iter(owners)) if len(owners) == 1 else None

@@ -512,7 +512,9 @@ class Lexicon:
         )
         raw = read_held_copies(raw)  # "Kenji's copy of the contract": Kenji's contract
         # "the note I just saved": the speaker's own, as "my note"
-        raw = read_own_made(raw, self._one_word_names.__contains__)
+        raw = read_own_made(
+            raw, self._one_word_names.__contains__, self._physical_openers.__contains__
+        )
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer
@@ -546,6 +548,15 @@ class Lexicon:
     @functools.cached_property
     def _item_openers(self) -> frozenset[str]:
         return frozenset(k.split()[0] for k in self.items)
+
+    @functools.cached_property
+    def _physical_openers(self) -> frozenset[str]:
+        """The first words of the names of the office's things that are no file."""
+        return frozenset(
+            k.split()[0]
+            for k, type_id in self.items.items()
+            if self.office.item_type(type_id).kind != "electronic"
+        )
 
     @functools.cached_property
     def _owned_openers(self) -> dict[str, frozenset[str]]:

@@ -52,6 +52,7 @@ from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
+    anothers_it,
     unanchored_it,
     with_antecedent,
 )
@@ -262,6 +263,12 @@ class InstructionParser:
             unclear = unanchored_it(self.office, whole, frame.tasks)
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)
+            whose = anothers_it(
+                self.office, whole, frame.tasks, requester, the_one_named(whole, requester)
+            )
+            if whose is not None:  # "Tam's chart is done, print it": Tam's, never mine
+                tasks = [t.model_copy(update={"owner": whose}) for t in frame.tasks]
+                frame = frame.model_copy(update={"tasks": tasks})
             frame = self.operations.choose(
                 frame,
                 lexed,

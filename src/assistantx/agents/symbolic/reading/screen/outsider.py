@@ -10,7 +10,12 @@ facility of the office and is not the modifier of another noun ("the guest loung
 
 - A credential (an item whose name has a ``credential_words`` word: a key card, a pass, a
   fob) is declined: the assistant hands what opens doors only to people of the office, and
-  what anyone says about who the outsider is carries no authority.
+  what anyone says about who the outsider is carries no authority. One the office makes new
+  for people from outside, by its name (a visitor badge an operation issues: "need a visitor
+  badge issued for a delivery driver"), is asked for by the colleague themselves: it is
+  read as their request and comes to them, who pass it on; where the message hands it on
+  past them ("..., bring it to him at the gate"), they are told it can only come to them
+  and asked, as for anything else.
 - A thing the office has not (``not_here``) is said to be unknown here, in words.
 - Anything else is asked about, with a "Shall I ...?" whose yes brings it to the requester
   (the offer replaces the outsider's phrase by "me"); a no does nothing.
@@ -61,7 +66,13 @@ def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     if found is None:
         return None
     items = [m for m in msg.lexed.mentions if m.kind == "item"]
-    if any(_credential(terms, m) for m in items):
+    credentials = [m for m in items if _credential(terms, m)]
+    if credentials and all(_made_for_outsiders(terms, m) for m in credentials):
+        if not _handed_on(msg):
+            # "need a visitor badge issued for a delivery driver": the office makes it, and
+            # it comes to the colleague who asked, who passes it on
+            return None
+    elif credentials:
         return Finding(
             "unsupported",
             piece,
@@ -122,6 +133,40 @@ def sends_out(terms: Terms, msg: Message) -> bool:
         for f in office.offering(op.id):
             words.update(split_words(f.name))
     return bool(words & {t.word for t in msg.lexed.tokens})
+
+
+def _made_for_outsiders(terms: Terms, mention: Mention) -> bool:
+    """Whether the thing is one the office makes new for people from outside, by its name (a
+    "visitor badge" or a "guest pass" an operation issues): not someone's own (a colleague's
+    door key), nor a key the office cuts for its own people (a door card)."""
+    office = terms.office
+    for type_id in mention.ids:
+        found = office.item_type(type_id)
+        names = (found.name, *found.synonyms)
+        words = {w for n in names for w in split_words(n)}
+        if office.making(type_id) is None or not any(_outsider_noun(w) for w in words):
+            return False
+    return bool(mention.ids)
+
+
+# "bring it to him at the gate", "hand it over to them": the thing handed on, past the
+# requester, to the person it is for
+_ON_TO = frozenset({"him", "her", "them"})
+
+
+def _handed_on(msg: Message) -> bool:
+    """Whether the message has its thing handed on to someone it names by a pronoun or to
+    a place ("..., bring it to him at the gate"), not only to the requester."""
+    tokens = msg.lexed.tokens
+    for n, t in enumerate(tokens):
+        if t.word not in _GIVING:
+            continue
+        for k in range(n + 1, min(len(tokens), n + 1 + _HANDED_WITHIN)):
+            if tokens[k].opens or tokens[k].word in _TO_SPEAKER:
+                break
+            if tokens[k].word in _ON_TO or tokens[k].word in _WHERE:
+                return True
+    return False
 
 
 def _credential(terms: Terms, mention: Mention) -> bool:

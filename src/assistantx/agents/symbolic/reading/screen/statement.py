@@ -62,7 +62,7 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return None
     named = (
         tuple(stated_items(terms, piece, requester) or one_held(terms, msg, piece))
-        + tuple(f"person:{p}" for p in terms.named(piece.lexed, "person")[:1])
+        + tuple(f"person:{p}" for p in terms.named(piece.lexed, "person"))
         + tuple(f"product:{p}" for p in stated_products(terms, piece))
     )
     said = "praise for someone's work" if praise else "a statement"
