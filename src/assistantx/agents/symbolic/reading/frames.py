@@ -59,6 +59,7 @@ _SKIP_AFTER_JOIN = english.words("skip_after_join")
 # the requester as the subject of a wish ("I'd like", "I want"), and the wish's verbs
 _SUBJECT_SELF = english.words("self_subjects")
 _WISH_VERBS = english.words("wish_verbs")
+_SELF_TAKING = english.words("self_taking_verbs")
 _IN_ADDITION = english.words("in_addition")
 _REQUEST_MODALS = english.words("request_modals")
 _PAPER_NOUNS = english.words("paper_nouns") | english.words("paper_heads")
@@ -357,6 +358,12 @@ class FrameReader:
             n += 1
         if n >= len(mentions):
             return False
+        if (  # "..., and may I use Chen's scissors": the modal before its subject
+            n + 1 < len(mentions)
+            and tokens[mentions[n].start].word in _REQUEST_MODALS
+            and mentions[n + 1].kind == "self"
+        ):
+            n += 1
         first = mentions[n]
         if first.kind == "self" and tokens[first.start].word in _SUBJECT_SELF:
             # "send my tripod to Noor, and I'd like my flask": the wish's own subject is its
@@ -364,15 +371,30 @@ class FrameReader:
             k = n + 1  # "I would also like": past the modal and "also"
             while k < len(mentions) and tokens[mentions[k].start].word in _SKIP_AFTER_JOIN:
                 k += 1
-            j = k + 1  # "I'd like my flask": past the owner's word
-            if j < len(mentions) and mentions[j].kind == "self" and mentions[j].possessive:
-                j += 1
-            return (
+            if k >= len(mentions):
+                return False
+            verb = tokens[mentions[k].start].word
+            # "... and could I borrow Piet's clamp", "can I have my flask": a verb of having
+            # with the requester as its subject asks for the thing for them too
+            if not (
+                (mentions[k].kind == "cue" and verb in _WISH_VERBS)
+                or (mentions[k].kind in ("cue", "word") and verb in _SELF_TAKING)
+            ):
+                return False
+            j = k + 1
+            if (  # "I'd like to borrow Piet's clamp": past "to" and the verb of having
+                j + 1 < len(mentions)
+                and tokens[mentions[j].start].word == "to"
+                and tokens[mentions[j + 1].start].word in _SELF_TAKING
+            ):
+                j += 2
+            if (  # "I'd like my flask", "borrow Piet's clamp": past the owner's word
                 j < len(mentions)
-                and mentions[k].kind == "cue"
-                and tokens[mentions[k].start].word in _WISH_VERBS
-                and mentions[j].kind == "item"
-            )
+                and mentions[j].kind in ("self", "person")
+                and mentions[j].possessive
+            ):
+                j += 1
+            return j < len(mentions) and mentions[j].kind == "item"
         if cues & _HANDING_CUES:
             return False
         return (
