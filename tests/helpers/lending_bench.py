@@ -16,8 +16,8 @@ _PEOPLE = (
     ob.person("bea", "Bea Soto", "lamp", "headphones", aliases=["Bea"]),
     ob.person("jory", "Jory Quint", "clamp", "tape_measure", "charger", aliases=["Jory"]),
     ob.person("omar", "Omar Reyes", "clamp", aliases=["Omar"]),
-    ob.person("tilly", "Tilly Grant", "lamp", aliases=["Tilly"]),
-    ob.person("grant", "Grant Okoro", "drill", "headphones", aliases=["Grant"]),
+    ob.person("tilly", "Tilly Grant", "lamp"),
+    ob.person("grant", "Grant Okoro", "drill", "headphones"),
     ob.person("wren", "Wren Adey", "drill", "tape_measure", aliases=["Wren"]),
 )
 
