@@ -62,6 +62,8 @@ _bench = frame_reader(lending_bench, "mira")
         "give my lamp to Bea and I'd like to borrow Jory's clamp",
         "drop my lamp at Bea's desk and could I get Jory's clamp",
         "take my lamp to Bea, and may I use Jory's clamp for an hour",
+        "take my lamp to Bea and I'll borrow Jory's clamp",
+        "pass my lamp to Bea, and then can I grab Jory's clamp?",
     ],
 )
 def test_a_clause_of_having_is_the_requesters(text: str) -> None:

@@ -50,7 +50,7 @@ from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.office import Office
-from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
+from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task, TaskFrame
 from assistantx.core.wording import file_noun
 
 _BREAK_WORDS = english.words("clause_breaks")
@@ -211,6 +211,9 @@ class FrameReader:
         tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
         tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
+        unsent = self._no_files(tasks)
+        if unsent is not None:  # "fwd my invoice pdf to Ravi" where no file is kept
+            return TaskFrame(requester=requester, decline=unsent)
         question = (
             self._uncovered(objects, tasks)
             or self._whose_service(tasks, readings, requester)
@@ -474,6 +477,21 @@ class FrameReader:
                     )
             if t.kind == "send_file" and t.owner == t.recipient:
                 return f"Who should I pass your {file_noun(self.office)} on to?"
+        return None
+
+    def _no_files(self, tasks: Sequence[Task]) -> str | None:
+        """A file to pass on ("email my invoice", "fwd my invoice pdf") where the office
+        keeps no electronic files: said in words, never the paper carried instead."""
+        if self.office.file_type() is not None:
+            return None
+        for t in tasks:
+            if t.kind == FILE_KIND:
+                people = {p.id: p.name for p in self.office.people}
+                to = f" to {people[t.recipient]}" if t.recipient in people else ""
+                return (
+                    "Sorry, I can't pass on electronic files: this office keeps none I can "
+                    f"send. If you'd like the paper taken{to} instead, just ask me."
+                )
         return None
 
     def _whose_service(
