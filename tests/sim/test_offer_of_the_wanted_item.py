@@ -79,19 +79,24 @@ def test_an_offer_of_anything_else_gets_a_no(goal: list[Milestone], question: st
 
 
 @pytest.mark.parametrize(
-    "instruction",
+    ("instruction", "offered"),
     [
-        "anyone got a spare camera headset? mine's crackling",
-        "does anyone have a headset?",
-        "has anybody got spare batteries",
+        # the speaker's own one amiss beside the ask makes it a request: no offer to answer
+        # (blind round 59-60 class 3)
+        ("anyone got a spare camera headset? mine's crackling", False),
+        ("does anyone have a headset?", True),
+        ("has anybody got spare batteries", True),
     ],
 )
 async def test_the_question_offered_on_is_answered_yes_and_the_task_is_done(
-    instruction: str,
+    instruction: str, offered: bool
 ) -> None:
     office = outside_broadcast()
     asked = InstructionParser(office).parse(instruction, "quill").question
-    assert asked is not None and asked.endswith("Shall I bring you one?")
+    if offered:
+        assert asked is not None and asked.endswith("Shall I bring you one?")
+    else:
+        assert asked is None
     wanted = "battery" if "batter" in instruction else "camera_headset"
     episode = await ppdr_episode(
         office, "quill", instruction, [{"holds": ["quill", f"{wanted}:*"]}, {"informed": "quill"}]

@@ -113,15 +113,14 @@ def test_a_clipped_item_name_is_the_item(
     assert _tasks(text, "hazel") == expected
 
 
-def test_a_clipped_name_with_a_reason_is_offered_and_done_on_yes() -> None:
+def test_a_clipped_name_with_a_reason_is_fetched_for_the_asker() -> None:
     """3: "anyone got a spare steth? mine's in the wash" reads as the whole name would: the
-    holders are offered, and a yes fetches one for the asker."""
+    speaker's own one amiss beside the ask makes it a request (blind round 59-60 class 3),
+    so one is fetched for the asker, its owner asked."""
     read = answered_reader(vet_practice, "hazel")
     text = "anyone got a spare steth? mine's in the wash, puppy wee all over it lol"
-    first = read(text)
-    assert not first.tasks and first.question and "stethoscope" in first.question
-    assert [(t.kind, t.item, t.recipient) for t in read(text, ["yes please"]).tasks] == [
-        ("transfer", "stethoscope", "hazel")
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in read(text).tasks] == [
+        ("transfer", "stethoscope", None, "hazel")
     ]
 
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
@@ -822,7 +822,11 @@ class TaskReader:
             helper = next(iter(roles.actor + roles.bare + roles.returned_to), None)
             if kind == "product":
                 tasks.append(Task(kind="produce", item=m.id, recipient=to))
-            elif kind == "electronic" or (kind == "personal" and sends and not roles.source):
+            elif kind == "electronic" or (
+                kind == "personal"
+                and (sends or said_as_a_file(clause.mentions, m))
+                and not roles.source
+            ):
                 file_owner = s.owner(m) or helper or requester
                 tasks.append(Task(kind=FILE_KIND, item=self.file, owner=file_owner, recipient=to))
             else:
@@ -850,6 +854,42 @@ class TaskReader:
             elif "recipient" not in update and task.recipient == requester:
                 update["recipient"] = who
         return task.model_copy(update=update) if update else task
+
+
+# The words of an electronic format ("my invoice *pdf*", "the *scan* of my bill"), and the
+# words that join one to the paper it is of ("the pdf *of* my invoice", "my invoice *as* a pdf").
+_FORMATS = english.words("electronic_formats")
+
+
+def said_as_a_file(mentions: Sequence[Mention], m: Mention) -> bool:
+    """ "fwd my invoice pdf", "my pdf invoice", "the pdf of my invoice", "my invoice as a
+    pdf": a paper said with a word of an electronic format is its electronic file, whatever
+    the verb ("bring my invoice" alone is the paper)."""
+
+    def said(j: int) -> bool:
+        return (
+            0 <= j < len(mentions)
+            and mentions[j].kind == "word"
+            and bool(mentions[j].ids)
+            and mentions[j].ids[0] in _FORMATS
+        )
+
+    def word(j: int, w: str) -> bool:
+        return 0 <= j < len(mentions) and mentions[j].kind == "word" and mentions[j].ids == (w,)
+
+    k = next((j for j, x in enumerate(mentions) if x is m), -1)
+    if k < 0:
+        return False
+    if said(k + 1) and mentions[k + 1].start == m.end:
+        return True  # "my invoice pdf"
+    if said(k - 1) and mentions[k - 1].end == m.start:
+        return True  # "my pdf invoice"
+    if word(k + 1, "as") and said(k + 2):
+        return True  # "my invoice as a pdf"
+    j = k - 1
+    if 0 <= j < len(mentions) and mentions[j].possessive and mentions[j].kind in ("self", "person"):
+        j -= 1
+    return word(j, "of") and said(j - 1)  # "the pdf of my invoice"
 
 
 # "one" or "another" standing for one more of the thing just named

@@ -51,7 +51,7 @@ from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.office import Office
-from assistantx.core.task_schema import SHAPE_KIND, Task, TaskFrame
+from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task, TaskFrame
 from assistantx.core.wording import file_noun
 
 _BREAK_WORDS = english.words("clause_breaks")
@@ -60,6 +60,7 @@ _SKIP_AFTER_JOIN = english.words("skip_after_join")
 # the requester as the subject of a wish ("I'd like", "I want"), and the wish's verbs
 _SUBJECT_SELF = english.words("self_subjects")
 _WISH_VERBS = english.words("wish_verbs")
+_SELF_TAKING = english.words("self_taking_verbs")
 _IN_ADDITION = english.words("in_addition")
 _REQUEST_MODALS = english.words("request_modals")
 _PAPER_NOUNS = english.words("paper_nouns") | english.words("paper_heads")
@@ -225,6 +226,9 @@ class FrameReader:
         tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
         tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
+        unsent = self._no_files(tasks)
+        if unsent is not None:  # "fwd my invoice pdf to Ravi" where no file is kept
+            return TaskFrame(requester=requester, decline=unsent)
         question = (
             self._uncovered(objects, tasks)
             or self._whose_service(tasks, readings, requester)
@@ -381,6 +385,12 @@ class FrameReader:
             n += 1
         if n >= len(mentions):
             return False
+        if (  # "..., and may I use Chen's scissors": the modal before its subject
+            n + 1 < len(mentions)
+            and tokens[mentions[n].start].word in _REQUEST_MODALS
+            and mentions[n + 1].kind == "self"
+        ):
+            n += 1
         first = mentions[n]
         if first.kind == "self" and tokens[first.start].word in _SUBJECT_SELF:
             # "send my tripod to Noor, and I'd like my flask": the wish's own subject is its
@@ -388,15 +398,30 @@ class FrameReader:
             k = n + 1  # "I would also like": past the modal and "also"
             while k < len(mentions) and tokens[mentions[k].start].word in _SKIP_AFTER_JOIN:
                 k += 1
-            j = k + 1  # "I'd like my flask": past the owner's word
-            if j < len(mentions) and mentions[j].kind == "self" and mentions[j].possessive:
-                j += 1
-            return (
+            if k >= len(mentions):
+                return False
+            verb = tokens[mentions[k].start].word
+            # "... and could I borrow Piet's clamp", "can I have my flask": a verb of having
+            # with the requester as its subject asks for the thing for them too
+            if not (
+                (mentions[k].kind == "cue" and verb in _WISH_VERBS)
+                or (mentions[k].kind in ("cue", "word") and verb in _SELF_TAKING)
+            ):
+                return False
+            j = k + 1
+            if (  # "I'd like to borrow Piet's clamp": past "to" and the verb of having
+                j + 1 < len(mentions)
+                and tokens[mentions[j].start].word == "to"
+                and tokens[mentions[j + 1].start].word in _SELF_TAKING
+            ):
+                j += 2
+            if (  # "I'd like my flask", "borrow Piet's clamp": past the owner's word
                 j < len(mentions)
-                and mentions[k].kind == "cue"
-                and tokens[mentions[k].start].word in _WISH_VERBS
-                and mentions[j].kind == "item"
-            )
+                and mentions[j].kind in ("self", "person")
+                and mentions[j].possessive
+            ):
+                j += 1
+            return j < len(mentions) and mentions[j].kind == "item"
         if cues & _HANDING_CUES:
             return False
         return (
@@ -476,6 +501,21 @@ class FrameReader:
                     )
             if t.kind == "send_file" and t.owner == t.recipient:
                 return f"Who should I pass your {file_noun(self.office)} on to?"
+        return None
+
+    def _no_files(self, tasks: Sequence[Task]) -> str | None:
+        """A file to pass on ("email my invoice", "fwd my invoice pdf") where the office
+        keeps no electronic files: said in words, never the paper carried instead."""
+        if self.office.file_type() is not None:
+            return None
+        for t in tasks:
+            if t.kind == FILE_KIND:
+                people = {p.id: p.name for p in self.office.people}
+                to = f" to {people[t.recipient]}" if t.recipient in people else ""
+                return (
+                    "Sorry, I can't pass on electronic files: this office keeps none I can "
+                    f"send. If you'd like the paper taken{to} instead, just ask me."
+                )
         return None
 
     def _whose_service(

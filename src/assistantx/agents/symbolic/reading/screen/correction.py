@@ -43,10 +43,34 @@ _TRAILING = " .…,;-–—"
 REPLACED = "means "  # the evidence's meaning where a person or item said was replaced
 
 
+# The name said first and "I mean" after it, or the name with the speaker refused after it,
+# in a sentence of its own after the request ("... his drill? Grant Okoro I mean", "...
+# Grant Okoro, not me lol"): the same correction as "I mean Grant Okoro".
+_NAME_THEN_MEANT = re.compile(
+    r"(?P<end>[.!?;…]|\s[-–—]+)\s*\(?\s*(?P<name>[^\W\d_][\w'’-]*(?:\s+[^\W\d_][\w'’-]*){0,2}?)"
+    r"(?:\s+i\s+mean[t]?\b|(?=,?\s+not\s+me\b))",
+    re.IGNORECASE,
+)
+
+
 def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
     correction of one person or item right after it is said replaces it; the retracted
-    one is never acted on (nor is the whole message dropped as withdrawn)."""
+    one is never acted on (nor is the whole message dropped as withdrawn). The name said
+    before "I mean", or before "not me", in a sentence of its own is the same correction."""
+    found = _NAME_THEN_MEANT.search(text)
+    if found is not None and not _CORRECTION.search(text[: found.start("name")]):
+        said = found.group("name")
+        mentions = [m for m in terms.lex.scan(terms.lex.tokens(said)) if m.kind == "person"]
+        if len(mentions) == 1 and len(mentions[0].ids) == 1:
+            turned = f"{text[: found.end('end')]} I mean {said}{text[found.end() :]}"
+            fixed, evidence = _corrected(terms, turned)
+            if evidence:
+                return fixed, evidence
+    return _corrected(terms, text)
+
+
+def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     # the first to start: "fetch X... actually, no, just print" is corrected at "actually"
     found = [m for m in (_CORRECTION.search(text), _ELLIPSIS_ACTUALLY.search(text)) if m]
     if not found:

@@ -21,7 +21,7 @@ from assistantx.core import english
 
 # "(anyone) got a light meter (anywhere)?": who may be asked before the verb of having.
 _ASKED = english.words("request_askees") - {"i", "we", "the", "robot"}
-_HAVING = frozenset({"got", "have"})
+_HAVING = frozenset({"got", "have", "has"})
 _AUXILIARIES = frozenset({"have", "has", "do", "does"})
 _ANYWHERE = frozenset({"anywhere", "around", "about", "handy"})
 _INDEFINITE = frozenset({"a", "an", "any", "some", "another", "one"})
@@ -32,6 +32,9 @@ _REASON_LEAD = frozenset({"i", "just", "so", "only", "id", "ill"})
 _SPEAKER = frozenset({"i", "we"})
 _MODALS = frozenset({"can", "could", "may", "might"})
 _SPARE = "spare"
+# The speaker's own one of the kind ("mine's dead", "my one is broken", "my own died").
+_MINE = frozenset({"mine", "mines"})
+_ONE = frozenset({"one", "own", "ones"})
 
 
 def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
@@ -43,12 +46,20 @@ def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
     (answered, an offer at most)."""
     if len(_things(piece)) != 1 or terms.named(piece.lexed, "person"):
         return False
-    if not (_having_one(piece.words) or _one_anywhere(piece)):
+    if not (_having_one(piece) or _one_anywhere(piece)):
         return False
     if _wanted_by_the_asker(piece) and not piece.acts.later:
         return True  # "anyone got a stopwatch I can nab?", "... going spare?"
     later = [p for p in msg.pieces if p.start > piece.end]
-    return bool(later) and _gives_a_reason(terms, later[0]) and later[0].acts.question is None
+    if later and _gives_a_reason(terms, later[0]) and later[0].acts.question is None:
+        return True
+    # "anyone got a spare charger? mine's dead", "mine's dead - anyone got a charger?"; a
+    # request of its own beside them ("..., take it to Jory") may be about the speaker's own
+    if any(p.acts.request or p.acts.imperative for p in msg.pieces if p is not piece):
+        return False
+    before = [p for p in msg.pieces if p.end < piece.start]
+    asked = _things(piece)[0].ids
+    return any(_own_one_amiss(p, asked) for p in [*before[-1:], *later[:1]])
 
 
 def _wanted_by_the_asker(piece: Piece) -> bool:
@@ -74,11 +85,22 @@ def _things(piece: Piece) -> list[Mention]:
     return [m for m in without_states(tokens, mentions) if m.kind == "item"]
 
 
-def _having_one(w: list[str]) -> bool:
-    """ "(have you / has anyone / anyone) got a ...", "(does anyone) have a ..."."""
-    k = 1 if w[:1] and w[0] in _AUXILIARIES else 0
+def _having_one(piece: Piece) -> bool:
+    """ "(have you / has anyone / anyone) got a ...", "(does anyone) have a ...", "(any
+    chance someone) has a ...", "anyone got earphones" (a plural with no article)."""
+    w = piece.words
+    k = 2 if w[:2] == ["any", "chance"] else 0
+    k += 1 if w[k : k + 1] and w[k] in _AUXILIARIES else 0
     k += 1 if w[k : k + 1] and w[k] in _ASKED else 0
-    return len(w) > k + 2 and w[k] in _HAVING and w[k + 1] in _INDEFINITE
+    if not (len(w) > k + 1 and w[k] in _HAVING):
+        return False
+    if len(w) > k + 2 and w[k + 1] in _INDEFINITE:
+        return True
+    # the thing right after the verb, with no article ("anyone got earphones?")
+    tokens = piece.lexed.tokens
+    return len(tokens) == len(w) and any(
+        m.kind == "item" and m.start == k + 1 for m in piece.lexed.mentions
+    )
 
 
 def _one_anywhere(piece: Piece) -> bool:
@@ -97,11 +119,42 @@ def elliptical_reason(terms: Terms, msg: Message, piece: Piece, requester: str) 
     at the negatives*"): context for the thing asked for, never an errand of its own on the
     things it names (the negatives are what the speaker already has in hand)."""
     before = [p for p in msg.pieces if p.end < piece.start]
+    later = [p for p in msg.pieces if p.start > piece.end]
+    for p in [*before[-1:], *later[:1]]:
+        # "mine just crackles", "I left mine at home", said before or after the ask
+        asked = _things(p)
+        if len(asked) == 1 and _own_one_amiss(piece, asked[0].ids):
+            if elliptical_ask(terms, msg, p):
+                return Finding("statement", piece, "the speaker's reason for the thing asked for")
     if not before or not _gives_a_reason(terms, piece):
         return None
     if not elliptical_ask(terms, msg, before[-1]):
         return None
     return Finding("statement", piece, "the speaker's reason for the thing asked for")
+
+
+def _own_one_amiss(piece: Piece, asked: tuple[str, ...]) -> bool:
+    """ "mine just crackles on one side", "mine's dead", "I left mine at home", "my one is
+    broken", "my charger is dead": the speaker's own thing of the kind ``asked`` said in a
+    statement beside an ask for one is why they ask, never the thing asked for. A piece that
+    asks for anything itself, names a person or another thing ("want to print my draft"), or
+    asks a question is not."""
+    a = piece.acts
+    if a.request or a.imperative or a.question is not None or a.withdrawal or a.thanks:
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    if any(m.kind in ("person", "facility") for m in mentions):
+        return False
+    items = [n for n, m in enumerate(mentions) if m.kind == "item"]
+    if items:  # "my charger is dead": the speaker's own, said by its name
+        return all(
+            n and tokens[mentions[n - 1].start].word == "my" and mentions[n].ids == asked
+            for n in items
+        )
+    w = piece.words
+    return any(x in _MINE for x in w) or any(
+        a == "my" and b in _ONE for a, b in itertools.pairwise(w)
+    )
 
 
 def _gives_a_reason(terms: Terms, piece: Piece) -> bool:
