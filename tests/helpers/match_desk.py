@@ -1,7 +1,7 @@
 """A sports picture desk for the reader's tests of blind rounds 61-62's statement classes (the
 rounds' own offices and sentences were never read): two colleagues who share a first name
 (Owen Abbott, Owen Marsh), a name typed with diacritics (Björn Åkesson) and a hyphenated one
-(Jean-Luc Ricard), a colleague whose name is also a word of a thing (Olive, beside olive oil),
+(Jean-Luc Ricard, "JL"), a colleague whose name is also a word of a thing (Olive, beside olive oil),
 a seal, a shredder, a kettle, a staff fridge, a vending machine, a coffee machine and a kit
 cabinet that keeps batteries."""
 
@@ -12,7 +12,7 @@ from typing import Any
 from helpers import office_builder as ob
 
 _PEOPLE = (
-    ob.person("jeanluc", "Jean-Luc Ricard", "stapler", aliases=["Jean-Luc"]),
+    ob.person("jeanluc", "Jean-Luc Ricard", "stapler", aliases=["Jean-Luc", "JL"]),
     ob.person("bjorn", "Björn Åkesson", "stapler", "seal", aliases=["Björn"]),
     ob.person("owena", "Owen Abbott", "flashgun"),
     ob.person("owenm", "Owen Marsh", "flashgun", "stapler"),
