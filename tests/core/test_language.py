@@ -99,6 +99,13 @@ def test_folding_is_case_and_diacritics_blind() -> None:
     assert language.words("José Müller's ﬁle") == ["jose", "mullers", "file"]
 
 
+@pytest.mark.parametrize(
+    ("written", "typed"), [("Bjørn Søndergaard", "bjorn sondergaard"), ("Łukasz", "lukasz")]
+)
+def test_a_letter_with_a_stroke_folds_to_the_plain_letter(written: str, typed: str) -> None:
+    assert language.fold(written) == language.fold(typed) == typed
+
+
 def test_finite_verbs() -> None:
     assert language.is_finite_verb("hurt") and language.is_finite_verb("needs")
     assert not language.is_finite_verb("deck") and not language.is_finite_verb("period")

@@ -74,7 +74,13 @@ def _fold_unicode(text: str) -> str:
     decomposed = unicodedata.normalize("NFD", text)
     return unicodedata.normalize(
         "NFC", "".join(c for c in decomposed if not unicodedata.combining(c))
-    )
+    ).translate(_PLAIN_LETTERS)
+
+
+# Letters with a stroke, which have no accent to take off ("Bjørn" typed "Bjorn", "Łukasz"
+# typed "Lukasz"): the plain letter each is typed as (one for one, so a folded word keeps
+# its length).
+_PLAIN_LETTERS = str.maketrans({"ø": "o", "ł": "l", "đ": "d", "ð": "d", "ı": "i", "ħ": "h"})
 
 
 def words(text: str) -> list[str]:

@@ -344,6 +344,13 @@ class Lexicon:
                 # the phrase of both ("Anne-Marie's calculator")
                 found = lex.people if " " in key else lex.name_words
                 found.setdefault(key, set()).add(p.id)
+            # "Owen A": the given name and the initial of the surname, as a sign-off or chat
+            # tells two colleagues of one given name apart (an initial after the name is read
+            # as one only where no thing follows it: "give Owen a flashgun")
+            parts = key_of(p.name).split()
+            if len(parts) > 1:
+                initialled = " ".join((*parts[:-1], parts[-1][0]))
+                lex.people.setdefault(initialled, set()).add(p.id)
             for alias in p.aliases:
                 said = language.fold(alias).replace(".", " ").split()
                 for word in said:

@@ -102,7 +102,7 @@ from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.several_owners import with_owner
-from assistantx.agents.symbolic.reading.signed_on import signed_on
+from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
@@ -178,6 +178,8 @@ class InstructionParser:
         self.readings = MentionReader(office, self.lex)
         self.frames = FrameReader(office)
         self.operations = OperationChooser(office)
+        # the initials colleagues sign on with ("JL: ...")
+        self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
         self._remembered: OrderedDict[tuple[str, str, tuple[str, ...]], TaskFrame] | None = None
 
@@ -200,7 +202,12 @@ class InstructionParser:
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         # "Shiv here - ...": the speaker's sign-on, no party to the request
-        text = signed_on(text, self._one_name)
+        text = signed_on(
+            text,
+            self._one_name,
+            signs=self._signs,
+            is_speaker=lambda said: self._names_only(said, requester),
+        )
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
@@ -221,6 +228,11 @@ class InstructionParser:
             # "Shall I shred your document for you?"
             screened.confirm = True
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _names_only(self, phrase: str, person: str) -> bool:
+        """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        return len(mentions) == 1 and mentions[0].kind == "person" and mentions[0].ids == (person,)
 
     def _one_name(self, phrase: str) -> bool:
         """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",

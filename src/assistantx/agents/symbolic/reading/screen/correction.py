@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import english, language
 from assistantx.core.task_schema import Evidence
 
 # "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
@@ -20,10 +20,18 @@ _CORRECTION = re.compile(
     r"(?:(?:actually,?\s+)?(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|"
     r"no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?(?:[,]?\s*(?:actually,?\s*)?make\s+(?:it|that)\b)?"
-    r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b)"
+    r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b"
+    # "..., change that to a snack", "... - actually, switch it for a water"
+    r"|(?:actually,?\s*)?(?:change|switch|swap)\s+(?:it|that)\s+(?:to|for)\b"
+    # "..., actually a snack instead": a thing, then "instead"
+    r"|actually,?(?=\s+(?:an?\s+|some\s+|the\s+)?[^\W\d_]+(?:\s+[^\W\d_]+)?\s+instead\b))"
     r"[,:]?\s*",
     re.IGNORECASE,
 )
+# "sorry, forget the coffee": dropped, not corrected to the coffee
+_WITHDRAWING = tuple(tuple(p.split()) for p in english.entries("correction_withdrawals"))
+# "make that a snack *from the vending machine*": where the corrected thing comes from
+_SOURCES = tuple(tuple(p.split()) for p in english.entries("correction_sources"))
 # "bring me the… actually, just print it", "... - actually, ...": after a trailing-off or a
 # dash, "actually" corrects too.
 _ELLIPSIS_ACTUALLY = re.compile(
@@ -83,6 +91,9 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
+    words = [t.word for t in tokens]
+    if any(tuple(words[: len(w)]) == w for w in _WITHDRAWING):
+        return text, []  # "sorry, forget the coffee": a withdrawal, read as one
     refused: Sequence[Token] = ()
     if tokens and tokens[0].word == "not" and rest.startswith(","):
         # "no wait not rob's, Kiz's one": what is rejected first, then what replaces it
@@ -115,6 +126,7 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     # the correction replaces; the correction itself is the part before "not"
     cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
     tokens, rejected = tokens[:cut], [*refused, *tokens[cut:]]
+    tokens, source = _source_kept(tokens, fix)
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
@@ -146,7 +158,7 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         # lower-case word for the ordinary one
         said = terms.office.person(new.ids[0]).name
     if new.kind == "item":
-        said = terms.office.item_type(new.ids[0]).name
+        said = terms.office.item_type(new.ids[0]).name + source
     between = before[old.end() :]
     head = before[: old.start()]
     if new.kind == "person" and not new.possessive:
@@ -162,6 +174,21 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         between = _owner_said_again(terms, between, said)
     fixed = head + said + between + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{said}")]
+
+
+def _source_kept(tokens: list[Token], fix: str) -> tuple[list[Token], str]:
+    """ "a snack from the vending machine": a correction too long to be one thing, whose
+    thing is followed by where it comes from, is that thing (the first tokens) and the
+    words of where, said after the thing it replaces (" from the vending machine")."""
+    if len(tokens) <= 5:
+        return tokens, ""
+    words = [t.word for t in tokens]
+    for k in range(1, 6):
+        if any(tuple(words[k : k + len(s)]) == s for s in _SOURCES):
+            said = re.search(rf"\b{re.escape(tokens[k].text)}\b", fix, re.IGNORECASE)
+            if said is not None:
+                return tokens[:k], " " + fix[said.start() :].strip()
+    return tokens, ""
 
 
 # The words that say which way a thing goes with a person: to them, or from them.

@@ -15,7 +15,11 @@ him") skips asking them the same way, only where whom to leave alone follows the
 ("unasked_person_marks"): "don't bother bringing it back" is a negation of its own.
 
 Taken where the owner cannot see ("grab his mug while he's not looking", "when she isn't
-watching", "before he notices") is kept in the dark the same way; a colleague's thing asked
+watching", "before he notices") is kept in the dark the same way; so is a colleague's thing
+taken before they are back or see ("grab Pat's stapler before she's back", "take his seal and
+stamp my invoices before he gets back", "before Pat notices"), only where a request of the
+message names a colleague's thing ("bring me a coffee before the boss gets back" and "bring
+me Pat's report before the meeting" are read as before); a colleague's thing asked
 for as a joke on them ("take Pat's mug to prank her", "... I want to wind him up") is declined
 only where a request of the message names a colleague's thing ("Pat's", "his").
 
@@ -47,6 +51,8 @@ _UNSEEN_SUBJECTS = tuple(
     for entry in english.entries(key)
 )
 _UNSEEN = tuple(tuple(entry.split()) for entry in english.entries("unseen_states"))
+_BEFORE_WHO = tuple(tuple(entry.split()) for entry in english.entries("covert_before_subjects"))
+_BEFORE_STATES = tuple(tuple(entry.split()) for entry in english.entries("covert_before_states"))
 # Whose thing, when it is not a name: a colleague's ("grab *his* tape")
 _THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
 # The words of stamping or signing a paper ("I only need to *stamp* one thing")
@@ -64,6 +70,28 @@ def _unseen(words: list[str]) -> bool:
     """Whether the words say, in a clause of their own, that the owner cannot see: "while
     he's not looking", "when she isn't watching"."""
     return while_clause(words, _UNSEEN_SUBJECTS, _UNSEEN, _WHILE)
+
+
+def _before_back(piece: Piece, requester: str) -> bool:
+    """Whether the piece says a thing is to be taken before its owner is back or sees:
+    "before she's back", "before he gets back", "before Pat notices", "before anyone sees".
+    "before the meeting", "before 3pm", "before I get back" are times, not the owner's."""
+    words, tokens = piece.words, piece.lexed.tokens
+    for n, word in enumerate(words):
+        if word != "before":
+            continue
+        ends = [n + 1 + len(who) for who in _BEFORE_WHO if starts_with(words, n + 1, who)]
+        ends += [
+            m.end
+            for m in piece.lexed.mentions
+            if m.kind == "person"
+            and requester not in m.ids
+            and m.start == n + 1
+            and len(tokens) == len(words)
+        ]
+        if any(starts_with(words, end, state) for end in ends for state in _BEFORE_STATES):
+            return True
+    return False
 
 
 def _pranked(msg: Message, requester: str) -> bool:
@@ -237,7 +265,11 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 "and I'll ask them. I did nothing."
             ),
         )
-    if not (kept_in_the_dark(piece.words) or (asks and _pranked(msg, requester))):
+    if not (
+        kept_in_the_dark(piece.words)
+        or (asks and _pranked(msg, requester))
+        or (_before_back(piece, requester) and any(_colleagues_things(msg, requester, terms)))
+    ):
         return None
     if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
         return None

@@ -24,6 +24,11 @@ _GONE = frozenset({"out", "off", "away"})
 _GOING = english.words("gone_verbs")
 _PARTICLES = english.words("gone_particles")
 _TO = frozenset({"to", "into"})
+# "heading to the match", "off to the site visit in a bit", "on her way to the airport": still
+# here, about to go (``leaving_soon``)
+_LEAVING = tuple(
+    sorted((tuple(p.split()) for p in english.entries("leaving_soon")), key=lambda p: -len(p))
+)
 
 
 def _gone_to(state: list[str]) -> list[str]:
@@ -36,6 +41,13 @@ def _gone_to(state: list[str]) -> list[str]:
     if n < len(state) and state[n] in _TO:
         return ["at", *state[n + 1 :]]
     return state
+
+
+def leaving_soon(state: list[str]) -> bool:
+    """Whether the state says the person is about to go, not gone: "heading to the match",
+    "off to the site visit in a bit", "on his way to the depot" (they are here till then, so
+    a thing may still be taken to them); "off today", "gone to the bank" are away."""
+    return any(state[: len(p)] == list(p) for p in _LEAVING)
 
 
 def state_said(state: list[str]) -> list[str]:

@@ -1,7 +1,14 @@
 """Facility report: "scanner's jammed btw", "the label printer's out of ribbon again, ugh": a
 facility of the office said to be in some state, with no request wording and no question.
 Answered in words; nothing moves, and the facility's name is never read as its operation's
-verb ("scanner" is no "scan this")."""
+verb ("scanner" is no "scan this").
+
+A complaint of what it does is a report the same way: "the shredder's making a horrible
+grinding noise again", "the kettle keeps tripping the fuse" (a participle after the facility,
+or "keeps" and one). A participle that says it is only at its work ("the printer's warming
+up", ``facility_at_work``) is told with nothing wrong; an errand's own verb with one of the
+office's things after it ("the coffee machine is making my coffee") is read as before. A
+fault is answered with what the assistant cannot do about it: it repairs nothing."""
 
 from __future__ import annotations
 
@@ -10,9 +17,16 @@ from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-from assistantx.core import english
+from assistantx.core import english, language
 
 _FAULTS = tuple(tuple(p.split()) for p in english.entries("facility_faults"))
+_WORKING = tuple(tuple(p.split()) for p in english.entries("facility_working"))
+_AT_WORK = english.words("facility_at_work")
+_KEEPS = tuple(
+    sorted((tuple(p.split()) for p in english.entries("facility_keeps")), key=lambda p: -len(p))
+)
+_SAID_BACK = english.wording("said_back")
+_REPAIR = "I can't repair it myself, so please tell whoever looks after it."
 
 
 def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -29,17 +43,49 @@ def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) ->
         return None
     subject = mentions[k]
     rest = [t.word for t in tokens[subject.end :]]
+    name = terms.office.facility(subject.ids[0]).name
+    keeps = next((p for p in _KEEPS if starts_with(rest, 0, p)), None)
+    # "the kettle keeps tripping the fuse"
+    if keeps is not None and _doing(terms, piece, rest[len(keeps) :], subject.end + len(keeps)):
+        return _report(piece, f"the {name} {' '.join(state_said(rest))}", fault=True)
     copula = next((c for c in terms.en.copulas if starts_with(rest, 0, c)), None)
     if copula is None and not subject.possessive:
         return None  # "the scanner jammed my strip": told as what it did, read elsewhere
-    state = state_said(rest[len(copula) :] if copula else rest)
+    told = rest[len(copula) :] if copula else rest
+    state = state_said(told)
+    if told[:1] and told[0] in _AT_WORK:  # "the printer's warming up": told, nothing wrong
+        return _report(piece, f"the {name} is {' '.join(state)}", fault=False)
+    if _doing(terms, piece, told, subject.end + len(copula or ())):
+        return _report(piece, f"the {name} is {' '.join(state)}", fault=True)  # "making a noise"
     if not any(starts_with(state, 0, f) for f in (*terms.en.conditions, *_FAULTS)):
         return None
-    name = terms.office.facility(subject.ids[0]).name
-    said = " ".join(state)
+    working = any(starts_with(state, 0, f) for f in _WORKING)
+    return _report(piece, f"the {name} is {' '.join(state)}", fault=not working)
+
+
+def _doing(terms: Terms, piece: Piece, state: list[str], at: int) -> bool:
+    """Whether the state opens with a participle that tells what a facility does wrong
+    ("making a horrible noise", "eating my paper"): not one of it only at its work
+    ("warming up"), nor an errand's verb with a thing of the office after it ("making my
+    coffee")."""
+    if not state or not state[0].endswith("ing") or state[0] in _AT_WORK:
+        return False
+    if not language.is_present_participle(state[0]):
+        return False
+    if not language.verb_lemmas(state[0]) & terms.lex.cue_words:
+        return True
+    return not any(
+        m.kind in ("item", "person", "facility") for m in piece.lexed.mentions if m.start > at
+    )
+
+
+def _report(piece: Piece, said: str, *, fault: bool) -> Finding:
+    """The report, answered in words; a fault with what the assistant cannot do about it."""
+    said = " ".join(_SAID_BACK.get(w, w) for w in said.split())
+    message = f"Thanks for letting me know {said}."
     return Finding(
         "statement",
         piece,
-        f"a report: the {name} is {said}",
-        message=f"Thanks for letting me know the {name} is {said}.",
+        f"a report: {said}",
+        message=f"{message} {_REPAIR}" if fault else message,
     )

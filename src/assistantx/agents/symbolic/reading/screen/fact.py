@@ -3,7 +3,11 @@ can't find my stapler": a hint for the plan; the piece is dropped."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.elsewhere import away_elsewhere, state_said
+from assistantx.agents.symbolic.reading.screen.elsewhere import (
+    away_elsewhere,
+    leaving_soon,
+    state_said,
+)
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -51,6 +55,8 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
         hint = Hint(kind="condition", person=person, value=said, item_type=item, said=piece.text)
         thing = terms.office.item_type(item).name
         return Finding("fact", piece, f"a fact: {name}'s {thing} is {said}", hint)
+    if leaving_soon(state):  # "Owen is heading to the match": still here, not away
+        return None
     if _says(state_said(state), terms.en.away, after=2):  # "Wang is away today"
         return _availability(piece, person, name, "away")
     if state and state[0] in terms.en.location_prepositions:

@@ -40,6 +40,16 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         return Finding("statement", piece, "an aside beside the request, context only")
     if not piece.asks and generic_explanation(terms, msg, piece):
         return Finding("statement", piece, "why the request is made, context only")
+    if plea_to_others(msg, piece):
+        return Finding(
+            "statement",
+            piece,
+            "a plea to others, asking nothing of the assistant",
+            message=(
+                "I hear you, but that's said to whoever is doing it: I don't know who they "
+                "are, so I can't pass it on or do anything about it."
+            ),
+        )
     if told_to_whoever(msg, piece):
         return Finding("statement", piece, "said to whoever owns the thing, context only")
     if not piece.asks and remark(terms, piece):
@@ -644,6 +654,80 @@ def _gerund(word: str) -> bool:
 
 _WHOEVERS = frozenset({"whoevers", "whosever"})
 _TO_THE_ROBOT = frozenset({"you", "u", "robot"})
+
+
+_PLEA_SUBJECTS = tuple(
+    sorted((tuple(p.split()) for p in english_entries("plea_subjects")), key=lambda p: -len(p))
+)
+_PLEA_STOPS = tuple(tuple(p.split()) for p in english_entries("plea_stops"))
+_PLEA_TAILS = tuple(
+    sorted((tuple(p.split()) for p in english_entries("plea_stop_tails")), key=lambda p: -len(p))
+)
+_PLEA_MODALS = frozenset({"can", "could", "will", "would", "please", "pls", "plz", "just"})
+
+
+def _stop_at(words: list[str], n: int) -> int | None:
+    """Where a word of asking to stop that starts at ``n`` ends ("stop", "cut it out")."""
+    stop = next((s for s in _PLEA_STOPS if tuple(words[n : n + len(s)]) == s), None)
+    return None if stop is None else n + len(stop)
+
+
+def _bare_stop(words: list[str]) -> bool:
+    """ "please stop", "stop it now", "just stop": asking to stop, and nothing more."""
+    k = 0
+    while k < len(words) and words[k] in _PLEA_MODALS:
+        k += 1
+    end = _stop_at(words, k)
+    if end is None:
+        return False
+    while end < len(words):
+        tail = next((t for t in _PLEA_TAILS if tuple(words[end : end + len(t)]) == t), None)
+        if tail is None:
+            return False
+        end += len(tail)
+    return True
+
+
+def plea_to_others(msg: Message, piece: Piece) -> bool:
+    """A plea to unknown others, which asks nothing of the assistant: "whoever keeps nicking
+    the oat milk, please stop" (a bare "please stop" after a piece that opens with
+    "whoever"), "to whoever keeps taking my stapler: stop it", "can people stop leaving mugs
+    in the sink" (someone unnamed, then asking them to stop). "can you ask whoever has the
+    oat milk to bring it back" asks the assistant and is read as before."""
+    words = content(piece.words)
+    if set(words) & _TO_THE_ROBOT:
+        return False
+    if words[:1] == ["to"]:
+        words = words[1:]  # "to whoever keeps ...": said to them
+    k = 0
+    while k < len(words) and words[k] in _PLEA_MODALS:
+        k += 1
+    subject = next((s for s in _PLEA_SUBJECTS if tuple(words[k : k + len(s)]) == s), None)
+    if subject is not None:
+        after = k + len(subject)
+        while after < len(words) and words[after] in _PLEA_MODALS:
+            after += 1
+        if _stop_at(words, after) is not None:
+            return True  # "can people stop ...", "everyone please stop ..."
+        if subject[0].startswith("whoever") and any(
+            _stop_at(words, n) is not None for n in range(after, len(words))
+        ):
+            return True  # "whoever keeps taking my stapler: please stop"
+        if subject[0].startswith("whoever") and any(
+            _bare_stop(content(p.words)) for p in msg.pieces if p.start >= piece.end
+        ):
+            return True  # "whoever keeps moving my stapler|, stop it": who it is said to
+    if not _bare_stop(words):
+        return False
+    return any(
+        content(p.words)[:2] and content(p.words)[int(content(p.words)[0] == "to")] in _PLEA_OPENERS
+        for p in msg.pieces
+        if p.end <= piece.start
+    )
+
+
+# The words that open a sentence said of whoever does something ("whoever keeps ...")
+_PLEA_OPENERS = frozenset({"whoever", "whoevers", "whosever"})
 
 
 def told_to_whoever(msg: Message, piece: Piece) -> bool:
