@@ -7,9 +7,12 @@ before a clause of its own (", thanks", ", it has to go today", "so that ...", "
 
 from __future__ import annotations
 
+from typing import Any
+
 import pytest
 
-from helpers.courier_room import courier_room
+from helpers import office_builder as ob
+from helpers.courier_room import courier_room, raw_courier_room
 from helpers.reading import frame_reader
 
 _frame = frame_reader(courier_room, "bjorn")
@@ -61,3 +64,38 @@ def test_the_destination_keeps_its_address_parts(text: str, place: str) -> None:
 def test_whom_it_is_for_is_no_part_of_the_place(text: str) -> None:
     frame = _frame(text)
     assert [t.destination for t in frame.tasks] == ["Crown Court"], frame
+
+
+def _with_a_colleague_called_ward() -> dict[str, Any]:
+    raw = raw_courier_room()
+    raw["people"].append(
+        {
+            **raw["people"][-1],
+            "id": "ward",
+            "name": "Ward Ellis",
+            "aliases": ["Ward"],
+            "handle": "@ward",
+        }
+    )
+    return raw
+
+
+_ward_frame = frame_reader(ob.parsed(_with_a_colleague_called_ward), "bjorn")
+
+
+@pytest.mark.parametrize(
+    ("text", "place"),
+    [
+        # a colleague's name followed by a number is a part of the place, not the colleague
+        ("Can my contract go by courier to St Luke's, Ward 4?", "St Luke's, Ward 4"),
+        ("courier my form to the Royal Infirmary, Ward 12 please", "the Royal Infirmary, Ward 12"),
+    ],
+)
+def test_a_colleagues_name_before_a_number_is_part_of_the_place(text: str, place: str) -> None:
+    frame = _ward_frame(text)
+    assert [(t.operation, t.destination) for t in frame.tasks] == [("courier", place)], frame
+
+
+def test_a_colleagues_name_after_the_comma_still_ends_the_place() -> None:
+    frame = _ward_frame("courier my contract to St Luke's, Ward")
+    assert [t.destination for t in frame.tasks] == ["St Luke's"], frame

@@ -257,13 +257,29 @@ def _address_tail(
     # "Dublin, attention Customer Relations", "FAO the Registrar": who it is for there
     while part and part[0].word in _ATTENTION:
         part = part[1:]
-    if not part or len(part) > _TAIL_WORDS or any(n in names for n in range(end, k)):
+    if (
+        not part
+        or len(part) > _TAIL_WORDS
+        or any(_a_person(tokens, n, k, names) for n in range(end, k))
+    ):
         return end
     if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
         return end  # "to Ofcom, Monday": when, not where
     if all(_place_word(t) for t in part):
         return k
     return end
+
+
+def _a_person(tokens: Sequence[Token], n: int, stop: int, names: Collection[int]) -> bool:
+    """Whether token ``n`` of an address's part names someone of the office: a name followed
+    by a number or code names a part of the place ("St Luke's, Ward 4" where a colleague is
+    called Ward; "Block 7"), not the colleague."""
+    if n not in names:
+        return False
+    after = n + 1
+    while after < stop and after in names:
+        after += 1
+    return not (after < stop and any(c.isdigit() for c in tokens[after].text))
 
 
 def _place_word(token: Token) -> bool:
