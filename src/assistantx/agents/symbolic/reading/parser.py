@@ -68,6 +68,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.idioms import signature_put
+from assistantx.agents.symbolic.reading.item_answered import WHICH_ITEM, with_item_answered
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.named_once import the_one_named
@@ -465,6 +466,12 @@ class InstructionParser:
                 if meant.understood:
                     text, frame = with_work(text, answer), meant
                 continue
+            named = with_item_answered(self.lex, self.office, text, frame.question or "", answer)
+            if named is not None:  # "send my signed statement …" "The document.": that one
+                meant = self.parse(named, requester)
+                if meant.understood or not (meant.question or "").startswith(WHICH_ITEM):
+                    text, frame = named, meant
+                    continue
             one = chosen_of_two(self.lex, text, frame.question or "", answer)
             if one is not None:  # "Who should get your pen: Wei Na or Wang Fang?" "Wang"
                 text, frame = one, self.parse(one, requester)
