@@ -45,6 +45,8 @@ QuestionKind = Literal["polite", "info"]
 _WH = english.words("wh_words")
 _AUX = english.words("question_auxiliaries")
 _MODALS = english.words("request_modals")
+# Words between "go" and "to" of a thing sent on ("should go *back* to Lee")
+_GOING_PARTICLES = frozenset({"back", "over", "across", "along", "round", "straight"})
 _ASKEES = english.words("request_askees")
 _OPENERS = english.words("speech_openers")
 # "can't read these", "couldn't see a thing": the speaker's inability, the "I" left out
@@ -736,6 +738,8 @@ class SpeechActs:
                 return True  # "the new drills make a lot of noise": told of the drills
             if self._work_obliged(w, n):
                 return False  # "my banner has to be fireproofed": the work is needed
+            if self._sent_to_someone(w, n):
+                return False  # "my stapler should go to Lee": where it is wanted, asked
             if _after_preposition(w, n) or self._in_office_phrase(w, n):
                 continue  # "some twine from the (potting) shed": a noun, not "shed"
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
@@ -817,6 +821,22 @@ class SpeechActs:
             # names nothing alone: "reg is on the job card" is told
             self._known = frozenset(p.split()[-1] for p in phrases if p)
         return self._known
+
+    def _sent_to_someone(self, w: list[str], n: int) -> bool:
+        """ "should go (back) to Lee", "has to go over to Sam", "is for Ana" from ``n``: an
+        obligation to go, or "is for", then a colleague's name: the thing is wanted with that
+        person, a delivery asked for (the reader resolves the thing and the person), not a
+        fact told. "went to Ana yesterday" is past, told; "should be in my drawer" names
+        nobody."""
+        verb = obliged_verb(w, n)
+        if verb is not None and w[verb] == "go":
+            at = verb + 1
+            while at < len(w) and w[at] in _GOING_PARTICLES:
+                at += 1
+            return w[at : at + 1] == ["to"] and at + 1 < len(w) and self._named(w[at + 1])
+        if w[n] in ("is", "are") and w[n + 1 : n + 2] == ["for"] and n + 2 < len(w):
+            return self._named(w[n + 2])
+        return False
 
     def _work_obliged(self, w: list[str], n: int) -> bool:
         """ "has to be / must be" and a form of one of the office's own verbs from ``n``:

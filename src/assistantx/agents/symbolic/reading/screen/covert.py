@@ -9,7 +9,9 @@ A request to skip asking the owner ("grab his tape while he's at lunch, no need 
 Pat's seal, don't ask her") is declined the same way, saying their own yes is needed: only
 where the message asks for a colleague's thing ("Pat's", "his"), so "print my report, no need
 to ask" is read as before, and a colleague named after the mark is its owner ("don't ask
-Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before). Leaving
+Pat" beside a request for Kim's stapler is a choice of whom to ask, read as before). Skipping
+telling the owner ("no need to tell her", "you don't need to tell him", "she won't need to
+know") is the same mark ("unasked_marks"); "no need to tell me" is the speaker's own say. Leaving
 the owner undisturbed ("grab Pat's seal, she's out so don't bother her", "no need to trouble
 him") skips asking them the same way, only where whom to leave alone follows the mark
 ("unasked_person_marks"): "don't bother bringing it back" is a negation of its own.

@@ -11,6 +11,7 @@ find <item> <place word>". A piece with a task word of its own is read on as a r
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.obligation import obliged_verb
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.statement import destination_stated, stated_items
@@ -41,6 +42,8 @@ def whereabouts(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
     subject = _subject(mentions, words)
     if subject is None:
         return None
+    if obliged_verb(words, subject.end) is not None:
+        return None  # "Pat's book has to go to Sam": an obligation, never where it is
     after = words[subject.end :]
     verb = tokens[subject.end - 1].possessive  # "tape's in": the 's is the "is"
     n = 0
