@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
     asks_someone_to_work,
     hands_across,
+    has_it_done,
 )
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
@@ -367,6 +368,7 @@ class FrameReader:
             mentions[n].kind == "cue"
             or asks_someone_to_work(mentions, n, tokens)
             or hands_across(mentions, n, tokens)
+            or has_it_done(mentions, n, tokens)
         )
 
     def _made_beside(
