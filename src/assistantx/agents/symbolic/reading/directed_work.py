@@ -67,3 +67,39 @@ def hands_across(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -
         and after[0] in _ACROSS
         and after[1:] == ["to"]
     )
+
+
+# The verbs that have work done on a thing ("have my letter digitised", "get it signed").
+_DONE_ON = english.words("done_on_verbs")
+# The cues that hand or make a thing rather than work on it ("... and my notes sent too").
+_NOT_WORK = frozenset({"give", "make", "send"})
+
+
+def has_it_done(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -> bool:
+    """Whether mention ``n`` opens a thing to have worked on, after another request ("forward
+    my slides to Bo and have my letter digitised", "... and get my contract signed by Lee",
+    "... and my report printed"): "have"/"get", the owner's word, the item and right after it
+    the participle of a work's verb. Read as words that ran on from the clause before, the
+    second piece of work was silently dropped. Without "have"/"get" the owner must be said
+    ("my report printed"), so "send my notes to Bo and the report too" keeps its reading."""
+    k = n
+    causative = (
+        k < len(mentions)
+        and mentions[k].kind == "word"
+        and tokens[mentions[k].start].word in _DONE_ON
+    )
+    if causative:
+        k += 1
+    owned = k < len(mentions) and mentions[k].kind in ("self", "person") and mentions[k].possessive
+    if owned:
+        k += 1
+    if not (causative or owned) or k + 1 >= len(mentions):
+        return False
+    thing, work = mentions[k], mentions[k + 1]
+    return (
+        thing.kind == "item"
+        and work.kind == "cue"
+        and work.start == thing.end
+        and not set(work.ids) & _NOT_WORK
+        and language.is_past_participle(tokens[work.start].word)
+    )

@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
     asks_someone_to_work,
     hands_across,
+    has_it_done,
 )
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
@@ -119,6 +120,7 @@ class FrameReader:
         previous_asked: list[str] = []  # whom the clause before asked ("could Liu read ...")
         previous_need = False  # the clause before said someone needs something
         previous_ops: set[str] = set()  # the operations the clause before named by verb
+        previous_places: set[str] = set()  # the places the clause before named
         clauses = self._clauses(readings)
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
         addressed = addressed_person(tokens, readings.mentions, readings.gaps)
@@ -202,11 +204,21 @@ class FrameReader:
                 # "can Zhang check my report and sign it": the one asked to look it over
                 asked = [*previous_roles.actor, *previous_roles.bare, *previous_asked]
                 made = [_by_the_one_asked(t, asked, requester) for t in made]
+            elif (
+                tasks
+                and self._refers_back(clause)
+                and (at := self._carried_to_work(tasks[-1], made, said_ops, previous_places))
+            ):
+                # "take my deed down to the studio and have it digitised": carrying the
+                # thing to where the work is done is the way to that work, done on it
+                work = self._on_fetched(tasks.pop(), made[0], requester)
+                made = [work if work.facility else work.model_copy(update={"facility": at})]
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
                 # "get my lunch out of the fridge and heat it": one errand, on the item
                 # fetched ("the parcel in the post room ..., courier it": the one kept there)
                 made = [self._on_fetched(tasks.pop(), made[0], requester)]
             previous_cues = bool(clause.cues)
+            previous_places = {m.id for m in clause.mentions if m.kind == "place"}
             previous_roles = roles
             previous_asked = _asked_subjects(tokens, clause)
             again = _one_more(tasks, clause, tokens, roles, made)
@@ -308,6 +320,27 @@ class FrameReader:
             for op in self._op_of.get(tokens[m.start].word, ())
         }
 
+    def _carried_to_work(
+        self, earlier: Task, made: list[Task], ops: set[str], places: set[str]
+    ) -> str | None:
+        """The facility where ``earlier`` only carries a thing to ("take my deed down to
+        the studio"), at a place the clause before named, that does the work a later clause
+        asks on "it" ("... and have it digitised") for the same person: the carrying is the
+        way to that work. A thing taken to a person ("down to Drew in the studio") is a
+        delivery, read as before."""
+        if not (
+            len(made) == 1
+            and ops
+            and earlier.kind == "transfer"
+            and earlier.owner == earlier.recipient == made[0].recipient
+            and made[0].item in (earlier.item, None)
+        ):
+            return None
+        found = [
+            f.id for f in self.office.facilities if f.location in places and set(f.operations) & ops
+        ]
+        return found[0] if len(found) == 1 else None
+
     @staticmethod
     def _refers_back(clause: Clause) -> bool:
         return any(m.kind == "pronoun" and not m.possessive for m in clause.mentions) and not any(
@@ -367,6 +400,7 @@ class FrameReader:
             mentions[n].kind == "cue"
             or asks_someone_to_work(mentions, n, tokens)
             or hands_across(mentions, n, tokens)
+            or has_it_done(mentions, n, tokens)
         )
 
     def _made_beside(

@@ -95,7 +95,7 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
     for sub in sub_pieces(piece):
         words = sub.words
         at = sub.verb_at(terms.en.lead_in)
-        while at + 1 < len(words) and words[at] in _ASKEES:
+        while at + 1 < len(words) and (words[at] in _ASKEES or _doers(terms, words, at)):
             at += 1  # "could someone scan ...": the verb after who is asked
         modified = modified_service(terms, words, at)
         if modified is not None:
@@ -122,6 +122,20 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
                     continue  # "the scan settings file": a word of the file's name
                 return decline_service(terms, piece, w, product=True, nor=nor)
     return None
+
+
+def _doers(terms: Terms, words: list[str], at: int) -> bool:
+    """Whether the word at ``at`` is a plural noun of people said as the subject of one of
+    the office's own verbs of work ("can the binders repair my book", "could the IT guys fix
+    it"): who does the work, asked for it, never a modifier making another service."""
+    verb = words[at + 1] if at + 1 < len(words) else ""
+    return (
+        words[at] not in terms.office_words
+        and words[at].isalpha()
+        and language.is_plural_noun(words[at])
+        and verb in terms.service_verbs
+        and (verb in terms.lex.cue_words or verb in terms.office_words)
+    )
 
 
 def names_a_thing(terms: Terms, words: list[str], n: int) -> bool:
