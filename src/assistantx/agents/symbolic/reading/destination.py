@@ -244,13 +244,14 @@ def _address_tail(
         and not _proper_name(so_far)
     ):
         return end
+    words = [t.word for t in tokens]
     k = end
     while (
         k < stop
         and (k == end or not _ends(gaps[k]))
-        and tokens[k].word not in _END_WORDS
-        and tokens[k].word not in _CLAUSE_OPENERS
-        and not _next_clause([t.word for t in tokens], k)
+        and words[k] not in _END_WORDS
+        and words[k] not in _CLAUSE_OPENERS
+        and not _next_clause(words, k)
     ):
         k += 1
     part = tokens[end:k]

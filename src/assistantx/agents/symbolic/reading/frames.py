@@ -69,6 +69,10 @@ _DEFINITE = frozenset({"the", "this", "that", "our"})
 # the cues of a clause that hands things over, whose coordinated objects are its own
 _HANDING_CUES = frozenset({"give", "make", "send"})
 
+# The question asked when a request names no item the office knows ("Which item do you mean
+# for me to send by courier?"); its answer is read by ``item_answered``.
+WHICH_ITEM = "Which item do you mean"
+
 
 NOT_UNDERSTOOD = (
     "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
@@ -511,7 +515,7 @@ class FrameReader:
             name = self._item_name(t.item) if t.item else "item"
             if t.item is None:
                 asked = self._asked_to(t.kind)
-                return f"Which item do you mean{' ' if asked else ''}{asked}?"
+                return f"{WHICH_ITEM}{' ' if asked else ''}{asked}?"
             done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
             if done_by_one and (t.actor is None or t.actor == requester):
                 return f"Who should do that with your {name}? Please tell me their name."

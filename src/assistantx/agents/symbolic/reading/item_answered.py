@@ -14,10 +14,9 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.frames import WHICH_ITEM
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.core.office import Office
-
-WHICH_ITEM = "Which item do you mean"
 
 # "my signed statement by courier": a determiner, up to two words, then the head noun before a
 # preposition, a conjunction or the end of the clause

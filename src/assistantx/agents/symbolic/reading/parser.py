@@ -63,12 +63,13 @@ from assistantx.agents.symbolic.reading.doubted_person import (
 )
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
+    WHICH_ITEM,
     FrameReader,
     holder,
     named_items,
 )
 from assistantx.agents.symbolic.reading.idioms import signature_put
-from assistantx.agents.symbolic.reading.item_answered import WHICH_ITEM, with_item_answered
+from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.named_once import the_one_named
