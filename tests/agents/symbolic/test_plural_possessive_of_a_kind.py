@@ -21,6 +21,10 @@ _frame = frame_reader(bursary, "ana")
         ("could you send the governors' file to Bronwen please", "send_file", "bronwen"),
         ("print the governors' file and take it to the Bursar", "print", "bursar"),
         ("please print the students' doc for Miles", "print", "miles"),
+        # an everyday noun for the paper ("report", "minutes") reads the same way
+        ("Please print the trustees' report and take it to the Bursar", "print", "bursar"),
+        ("email the governors' minutes to Miles", "send_file", "miles"),
+        ("send the governors' report to Bronwen", "send_file", "bronwen"),
     ],
 )
 def test_a_plural_of_people_before_a_paper_is_no_person(
@@ -50,21 +54,3 @@ def test_an_unknown_capitalised_name_is_still_asked_about() -> None:
     frame = _frame("forward Rhodes' file to Miles")
     assert frame.tasks == [] and frame.question is not None, frame
     assert "Rhodes" in frame.question, frame
-
-
-@pytest.mark.parametrize(
-    ("text", "kind", "recipient"),
-    [
-        ("Please print the trustees' report and take it to the Bursar", "print", "bursar"),
-        ("email the governors' minutes to Miles", "send_file", "miles"),
-        ("send the governors' report to Bronwen", "send_file", "bronwen"),
-    ],
-)
-def test_a_kind_of_peoples_paper_in_an_everyday_noun_is_the_requesters(
-    text: str, kind: str, recipient: str
-) -> None:
-    frame = _frame(text)
-    assert frame.question is None and frame.decline is None, frame
-    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
-        (kind, "file", "ana", recipient)
-    ], frame

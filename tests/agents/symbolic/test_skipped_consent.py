@@ -59,6 +59,11 @@ def test_an_owner_said_out_in_the_request_and_their_yes_said_for_them_is_decline
         ("bring me Kwesi's tape while he's at lunch", "tape", "kwesi"),
         ("bring me Hana's stapler, don't ask me again", "stapler", "hana"),
         ("borrow Hana's stapler, don't ask Kwesi", "stapler", "hana"),
+        # near misses of leaving the owner undisturbed (test_undisturbed_owner.py)
+        ("bring me Hana's stapler, don't bother bringing it back", "stapler", "hana"),
+        ("don't bother Kwesi, bring me Hana's stapler", "stapler", "hana"),
+        ("borrow Hana's stapler for me, she said it's fine", "stapler", "hana"),
+        ("bring me Kwesi's tape, he's off today so he can't use it", "tape", "kwesi"),
     ],
 )
 def test_the_owner_is_asked_as_before(text: str, item: str, owner: str) -> None:

@@ -6,7 +6,8 @@ when whom to leave alone follows it ("him", "her", "them", or the owner's name);
 to be away in the first clause of a piece ("he's off today so he won't mind") is away as in a
 piece of its own. Near misses are read as before: "don't bother bringing it back" (a negation
 of its own), "don't bother Kwesi" beside a request for Hana's thing (whom not to ask is not the
-owner), "she said it's fine" and "he won't mind" alone (the owner is asked)."""
+owner), "she said it's fine" and "he won't mind" alone (the owner is asked). Those near misses are
+checked in test_skipped_consent.py beside the other cases where the owner is still asked."""
 
 from __future__ import annotations
 
@@ -53,24 +54,6 @@ def test_an_owner_said_away_before_a_join_and_their_yes_said_for_them_is_decline
     frame = _frame(text)
     assert frame.tasks == [] and frame.question is None, frame
     assert frame.decline is not None and "own yes" in frame.decline, frame
-
-
-@pytest.mark.parametrize(
-    ("text", "item", "owner"),
-    [
-        ("bring me Hana's stapler, don't bother bringing it back", "stapler", "hana"),
-        ("don't bother Kwesi, bring me Hana's stapler", "stapler", "hana"),
-        ("borrow Hana's stapler for me, she said it's fine", "stapler", "hana"),
-        ("borrow Hana's stapler, she won't mind", "stapler", "hana"),
-        ("bring me Kwesi's tape, he's off today so he can't use it", "tape", "kwesi"),
-    ],
-)
-def test_the_owner_is_asked_as_before(text: str, item: str, owner: str) -> None:
-    frame = _frame(text)
-    assert frame.decline is None, frame
-    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
-        ("transfer", item, owner, "ruth")
-    ], frame
 
 
 @pytest.mark.parametrize(
