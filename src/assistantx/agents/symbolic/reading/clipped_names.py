@@ -1,5 +1,5 @@
-"""A place's one-word name said clipped, as people say it: "repro" for "Reprographics" (or
-"Reprographics room")
+"""A place's name said short, as people say it: "repro" for "Reprographics" (or
+"Reprographics room"), "the studio" for the "Digitisation studio"
 (the lexicon stage, when its tables are built).
 
 The clipped form must be a word in use (``language.zipf`` at least ``_IN_USE``) that is no
@@ -39,6 +39,35 @@ def clipped_names(names: Iterable[tuple[str, str]], taken: Collection[str]) -> d
             if language.zipf(clip) >= _IN_USE:
                 found.setdefault(clip, set()).add(ident)
     return {clip: next(iter(ids)) for clip, ids in found.items() if len(ids) == 1}
+
+
+# Head words that do not name one place alone: too general ("the office", "my desk", "the
+# floor") or mostly meaning something else ("the post" is the mail, not a "security post").
+_NOT_ALONE = _ROOM_WORDS | frozenset(
+    {"desk", "floor", "corner", "door", "table", "side", "hall", "space", "point", "place"}
+    | {"post", "line", "end", "top", "front", "back"}
+)
+_HEAD_SHORTEST = 3
+
+
+def place_heads(names: Iterable[tuple[str, str]], taken: Collection[str]) -> dict[str, str]:
+    """Head word → id, for the last word of each several-word place name ("studio" of
+    "Digitisation studio"), as people say a place once they know which one they mean ("take
+    it down to the studio"). Only a head that ends the name of exactly one place, is a word
+    (no number), is not too general to name a place alone, and names nothing else of the
+    office (``taken``); a letter or number ("Cutting room A") never stands alone."""
+    found: dict[str, set[str]] = {}
+    for name, ident in names:
+        words = name.split(" ")
+        head = words[-1]
+        if len(words) < 2 or len(head) < _HEAD_SHORTEST or not head.isalpha() or head in _NOT_ALONE:
+            continue
+        found.setdefault(head, set()).add(ident)
+    return {
+        head: next(iter(ids))
+        for head, ids in found.items()
+        if len(ids) == 1 and head not in taken and language.plural(head) not in taken
+    }
 
 
 def _head(key: str) -> str | None:

@@ -30,7 +30,11 @@ from assistantx.agents.symbolic.reading.asking_forms import asking_forms, done_f
 from assistantx.agents.symbolic.reading.bare_possessives import read_bare_possessives
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_given import clipped_owner, given_name_clips
-from assistantx.agents.symbolic.reading.clipped_names import clipped_item, clipped_names
+from assistantx.agents.symbolic.reading.clipped_names import (
+    clipped_item,
+    clipped_names,
+    place_heads,
+)
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
@@ -399,6 +403,12 @@ class Lexicon:
         )
         for clip, loc_id in clipped.items():
             lex.places.setdefault(clip, loc_id)
+        # "down to the studio": a place named by the last word of its name, when only it ends so
+        heads = place_heads(
+            ((key_of(loc.name), loc.id) for loc in office.locations), taken | lex.cue_words
+        )
+        for head, loc_id in heads.items():
+            lex.places.setdefault(head, loc_id)
         named = [
             *(n for t in office.item_types for n in (t.name, *t.synonyms)),
             *(n for f in office.facilities for n in (f.name, *f.synonyms)),
