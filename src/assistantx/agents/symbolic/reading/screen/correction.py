@@ -61,11 +61,55 @@ _NAME_THEN_MEANT = re.compile(
 )
 
 
+# "... sorry, not Lee - Lin", "... Not Lee, Lin.", "..., not Lee but Lin", "... Lee, no, Lin":
+# a person refused after a request, then who is meant instead (a name, or "mine"/"me"), with
+# or without "sorry" before it; read as "sorry, not Lee, Lin" when both sides are people
+_NAME = r"[^\W\d_][\w'’-]*(?:\s+[^\W\d_][\w'’-]*){0,2}?"
+_NOT_THEN_SAID = re.compile(
+    r"(?P<lead>[,;.!?…]|\s[-–—]+)\s*"
+    r"(?:(?:sorry|oops|actually|no|nope|oh)\b(?:[,!.]|\s*[-–—]+)?\s*)*"
+    rf"(?:not\s+(?P<old>{_NAME})(?:\s*[,;:/]\s*|\s+[-–—]+\s*|\s+but\s+(?:rather\s+)?)"
+    rf"|(?P<again>{_NAME})\s*,?\s+no\b[,!.]?\s*)"
+    rf"(?P<new>{_NAME})\s*(?=[.!?;,]|\s[-–—]|$)",
+    re.IGNORECASE,
+)
+# The words of the speaker said as whom a correction means instead ("not Lee's - mine")
+_SELF_CORRECTED = frozenset({("mine",), ("me",), ("myself",), ("my", "own")})
+
+
+def _not_then_said(terms: Terms, text: str) -> str:
+    """ "Send Lee my file. sorry, not Lee - Lin Tao", "... Not Lee, Lin Tao", "..., not Lee
+    but Lin Tao", "... Lee, no, Lin Tao": a person named earlier in the message refused, then
+    one person (or the speaker) said in their place, is the correction "sorry, not Lee, Lin
+    Tao"; anything else refused ("not today - tomorrow") is left as said."""
+    for found in _NOT_THEN_SAID.finditer(text):
+        before = text[: found.start()]
+        old = found.group("old") or found.group("again")
+        new = found.group("new")
+        refused = [m for m in terms.lex.scan(terms.lex.tokens(old)) if m.kind == "person"]
+        said = terms.lex.tokens(new)
+        if len(refused) != 1 or len(terms.lex.tokens(old)) != refused[0].end:
+            continue
+        if not spellings(terms, "person", old) & spellings(terms, "person", before):
+            continue  # the person refused was never named before
+        if tuple(t.word for t in said) not in _SELF_CORRECTED:
+            people = [m for m in terms.lex.scan(said) if m.kind == "person"]
+            if len(people) != 1 or people[0].start or people[0].end != len(said):
+                continue
+        lead = found.group("lead")
+        if found.group("again") and lead not in ".!?;…":
+            continue  # "Lee, no, Lin" only as a sentence of its own
+        return f"{before}{lead} sorry, not {old}, {new}{text[found.end() :]}"
+    return text
+
+
 def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
     correction of one person or item right after it is said replaces it; the retracted
     one is never acted on (nor is the whole message dropped as withdrawn). The name said
-    before "I mean", or before "not me", in a sentence of its own is the same correction."""
+    before "I mean", or before "not me", in a sentence of its own is the same correction;
+    so is a person refused, then another said ("..., not Lee - Lin Tao")."""
+    text = _not_then_said(terms, text)
     found = _NAME_THEN_MEANT.search(text)
     if found is not None and not _CORRECTION.search(text[: found.start("name")]):
         said = found.group("name")
@@ -122,6 +166,8 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         return before[:cut] + after, [
             Evidence(words=text[match.start() :].strip(), meaning=meaning)
         ]
+    if refused and tuple(t.word for t in tokens) in _SELF_CORRECTED:
+        return _to_speaker(terms, text, match.start(), before, refused, rest)
     # "..., sorry, his laser, not the ruler": what is rejected after it says which one
     # the correction replaces; the correction itself is the part before "not"
     cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
@@ -174,6 +220,25 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         between = _owner_said_again(terms, between, said)
     fixed = head + said + between + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{said}")]
+
+
+def _to_speaker(
+    terms: Terms, text: str, start: int, before: str, refused: Sequence[Token], rest: str
+) -> tuple[str, list[Evidence]]:
+    """ "bring me Lee's stapler. sorry, not Lee's, mine": the person refused is replaced by
+    the speaker, as owner ("my") where they were said with "'s", else as "me"."""
+    names = spellings(terms, "person", " ".join(t.text for t in refused))
+    names &= spellings(terms, "person", before)
+    if not names:
+        return text, []
+    pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
+    spots = list(re.finditer(rf"\b(?:{pattern})(?P<s>['’]s\b)?", before, re.IGNORECASE))
+    if not spots:
+        return text, []
+    old = spots[-1]
+    said = "my" if old.group("s") else "me"
+    fixed = before[: old.start()] + said + before[old.end() :] + rest
+    return fixed, [Evidence(words=text[start:].strip(), meaning=f"{REPLACED}the speaker")]
 
 
 def _source_kept(tokens: list[Token], fix: str) -> tuple[list[Token], str]:
