@@ -89,6 +89,21 @@ class Outside:
         return self.start is not None and self.end is not None and self.start <= token < self.end
 
 
+def means_words(name: str) -> tuple[str, ...]:
+    """The means a send-out service's name says it sends by ("send by courier": "courier";
+    "dispatch via fax": "fax"): the one word after its "by" or "via", which also asks for the
+    service as a verb in any form ("have it couriered", "needs couriering to Leeds") or as the
+    means said anywhere in the request ("send it to Leeds by courier")."""
+    words = language.fold(name).split()
+    return tuple(
+        words[k + 1] for k, w in enumerate(words[:-1]) if w in _MEANS_NAMED and k + 2 == len(words)
+    )
+
+
+# The words of a service's name before the means it sends by ("send *by* courier").
+_MEANS_NAMED = frozenset({"by", "via"})
+
+
 def verb_phrases(operation: str, phrases: Iterable[str]) -> tuple[VerbPhrase, ...]:
     """The verb phrases of one send-out operation ("fax"; "courier", "send out")."""
     out: list[VerbPhrase] = []

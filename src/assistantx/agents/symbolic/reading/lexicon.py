@@ -40,6 +40,7 @@ from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
+from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
@@ -314,7 +315,10 @@ class Lexicon:
         ops: set[str] = set()
         for op in office.operations:
             # "ran" of "run" tells, never asks: not a cue of the operation
-            forms = {form for verb in op.verbs for form in asking_forms(key_of(verb))}
+            # a send-out service's means asks for it too ("send by courier": "courier it",
+            # "have it couriered")
+            means = means_words(op.name) if op.sends_out else ()
+            forms = {form for verb in (*op.verbs, *means) for form in asking_forms(key_of(verb))}
             forms |= done_forms(op, office)  # "restrung": the office's own word for what it did
             ops |= forms
             kind = SHAPE_KIND.get(op.shape(office))

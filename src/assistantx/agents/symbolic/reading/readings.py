@@ -15,7 +15,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from assistantx.agents.symbolic.reading.codes import code_of_a_thing
-from assistantx.agents.symbolic.reading.destination import Outside, find_outside, verb_phrases
+from assistantx.agents.symbolic.reading.destination import (
+    Outside,
+    find_outside,
+    means_words,
+    verb_phrases,
+)
 from assistantx.agents.symbolic.reading.errand import errand_verbs, facility_pronouns
 from assistantx.agents.symbolic.reading.event_clause import in_later_event
 from assistantx.agents.symbolic.reading.lexicon import (
@@ -96,11 +101,15 @@ class MentionReader:
             vp
             for op in office.operations
             if op.sends_out
-            for vp in verb_phrases(op.id, (*op.verbs, op.name))
+            for vp in verb_phrases(op.id, (*op.verbs, op.name, *means_words(op.name)))
         )
         self._send_inputs = {op.id: op.input for op in office.operations if op.sends_out}
         self._send_forms = {
-            op.id: frozenset(f for v in op.verbs for f in _phrase_forms(language.fold(v)))
+            op.id: frozenset(
+                f
+                for v in (*op.verbs, *means_words(op.name))
+                for f in _phrase_forms(language.fold(v))
+            )
             for op in office.operations
             if op.sends_out
         }

@@ -994,7 +994,7 @@ class SpeechActs:
         thing, then a task word's participle."""
         if w[1:2] and w[1] in _THING_OPENERS:
             for x in w[2:6]:
-                if x in self.lex.cue_words and language.is_past_participle(x):
+                if x in self.lex.cue_words and self._participle(x):
                     return True
         k = 1
         while k < 3 and k < len(w) and w[k] in _NAME_OPENERS and not self._named_or_role(w[k]):
@@ -1009,6 +1009,15 @@ class SpeechActs:
         if k == start or k >= len(w):
             return False
         return w[k] in language.verb_lemmas(w[k])
+
+    def _participle(self, word: str) -> bool:
+        """A past participle, also of a task word the dictionary knows only as a noun
+        ("couriered" of an office's "courier"): its "-ed" form."""
+        if language.is_past_participle(word):
+            return True
+        return word.endswith("ed") and (
+            word[:-2] in self.lex.cue_words or word[:-1] in self.lex.cue_words
+        )
 
     def _named_or_role(self, word: str) -> bool:
         """A word of a colleague's name, or a role only they hold ("boss" of "the Boss")."""

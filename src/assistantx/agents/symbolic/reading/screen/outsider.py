@@ -27,6 +27,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.event_clause import in_later_event
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.english import split_words
@@ -127,7 +128,7 @@ def sends_out(terms: Terms, msg: Message) -> bool:
     for op in office.operations:
         if not op.sends_out:
             continue
-        for phrase in (*op.verbs, op.name):
+        for phrase in (*op.verbs, op.name, *means_words(op.name)):
             head = split_words(phrase)[:1]
             words.update(f for w in head for f in language.verb_forms(w))
         for f in office.offering(op.id):

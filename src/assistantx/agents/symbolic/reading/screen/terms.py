@@ -5,6 +5,7 @@ operations and task words are called, and the questions every rule asks of a pie
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms
+from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Lexicon
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS, english, split_words
 from assistantx.agents.symbolic.reading.speech import SpeechActs
@@ -43,7 +44,7 @@ class Terms:
             form
             for op in office.operations
             if op.sends_out
-            for phrase in (*op.verbs, op.name)
+            for phrase in (*op.verbs, op.name, *means_words(op.name))
             if split_words(phrase)
             for form in language.verb_forms(split_words(phrase)[0])
         )
