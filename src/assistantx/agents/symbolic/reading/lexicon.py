@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -133,6 +133,7 @@ _DOER_VERBS_BARE = english.words("doer_verbs_bare")
 _DISTANCE_COPULAS = frozenset({"is", "s", "are", "was", "were", "isnt", "arent", "feels"})
 # "a brew", "a cuppa": everyday names of a thing by the plain name an office may give it
 _EVERYDAY = english.phrase_table("everyday_names")
+_CLIPS = english.phrase_table("clipped_words")
 # What makes one of those names that is also a verb ("brew") a thing: an article before it
 # The words before a thing's name that say whose or which one it is ("my ms", "the ms").
 _OWNING_WORDS = frozenset({"my", "your", "his", "her", "our", "their", "the", "this", "that"})
@@ -382,8 +383,11 @@ class Lexicon:
                 key = key_of(name) or _title_word(name)  # "ms" for a manuscript
                 if not key:
                     continue
-                for variant in (key, _plural(key)):
-                    lex.items.setdefault(variant, t.id)
+                # "walkietalkie", "headtorch": a name of several words written as one
+                joined = key.replace(" ", "") if " " in key else ""
+                for variant in (key, _plural(key), joined, _plural(joined) if joined else ""):
+                    if variant:
+                        lex.items.setdefault(variant, t.id)
         lex.everyday_verbs = lex._everyday_names(office, ops)
         for f in office.facilities:
             for name in (f.name, *f.synonyms, f.id.replace("_", " ")):
@@ -437,6 +441,11 @@ class Lexicon:
         compounds = [(k, i) for k, i in lex.items.items() if " " in k]
         used = {*lex.items, *lex.people, *lex.facilities}
         for form, type_id in clipped_phrases(compounds, used).items():
+            lex.items.setdefault(form, type_id)
+        # "a pic", "the spec": an English clip of a word of a thing's name
+        places = {w for k in (*lex.facilities, *lex.places) for w in k.split()}
+        taken = {*lex.items, *lex.people, *lex.name_words, *lex.cue_words, *places}
+        for form, type_id in _clipped_words(lex.items, taken).items():
             lex.items.setdefault(form, type_id)
         lex.operation_nouns = operation_nouns(office, lex._known)
         lex.operation_names = operation_names(office)
@@ -562,6 +571,11 @@ class Lexicon:
         return given_name_clips(((p.name, p.id) for p in self.office.people), taken)
 
     @functools.cached_property
+    def _item_words(self) -> frozenset[str]:
+        """Every word of the office's names of things."""
+        return frozenset(w for k in self.items for w in k.split())
+
+    @functools.cached_property
     def item_heads(self) -> frozenset[str]:
         """The last words of the office's names of things ("marker" of "whiteboard marker")."""
         return frozenset(k.split()[-1] for k in self.items)
@@ -614,6 +628,7 @@ class Lexicon:
             or not word.isalpha()
             or word in COMMON
             or self._known(word)
+            or word in self._item_words  # "walkie" of "walkie talkie": never "talkie"
             or language.zipf(word) >= language.COMMON_ZIPF
         ):
             return word
@@ -1148,6 +1163,33 @@ _INNER_APOSTROPHE = re.compile(r"(?<=[^\W_])'(?=[^\W_])")
 
 # A possessive "'s" inside a name, before another word ("reporter's notebook").
 _INNER_POSSESSIVE = re.compile(r"\w['’]s\s+\w")
+
+
+def _clipped_words(items: dict[str, str], taken: Collection[str]) -> dict[str, str]:
+    """ "pic" of "picture", "spec sheet" of "specification sheet": each name of a thing
+    (a key of ``items``, name → item type id) with one of its words said as its English clip
+    (english.yaml ``clipped_words``, a prefix of the word). Only where no word of another
+    thing's name starts with the clip ("mic" with a microphone and a microscope names
+    neither: asked about) and the clip is no name or word of the office (``taken``: "car" of
+    a car park)."""
+    starts: dict[str, set[str]] = {}
+    for key, type_id in items.items():
+        for word in key.split():
+            starts.setdefault(word, set()).add(type_id)
+    found: dict[str, str] = {}
+    for key, type_id in items.items():
+        words = key.split()
+        for n, word in enumerate(words):
+            for clip in _CLIPS.get(word, ()):
+                if not word.startswith(clip) or clip == word or clip in taken:
+                    continue
+                owners = {i for w, ids in starts.items() if w.startswith(clip) for i in ids}
+                if owners != {type_id}:
+                    continue
+                said = " ".join([*words[:n], clip, *words[n + 1 :]])
+                for variant in (said, _plural(said)):
+                    found.setdefault(variant, type_id)
+    return found
 
 
 def key_of(name: str) -> str:
