@@ -17,6 +17,11 @@ HARBOUR_FILE = ROOT / "dataset" / "offices" / "harbour" / "office.yaml"
 
 
 @functools.cache
+def default_office() -> Office:
+    return load_office(DEFAULT_FILE)
+
+
+@functools.cache
 def harbour_office() -> Office:
     return load_office(HARBOUR_FILE)
 

@@ -6,6 +6,8 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
+from helpers.dataset_offices import default_office
+from helpers.reading import frame_reader
 
 
 @pytest.mark.parametrize(
@@ -41,3 +43,28 @@ def test_the_stop_of_an_abbreviation_is_taken_out(text: str, read: str) -> None:
 )
 def test_other_stops_are_kept(text: str) -> None:
     assert undotted(text) == text
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [
+        ("leave it w/ Dr Vos", "leave it with Dr Vos"),
+        ("W/ Lee please", "with Lee please"),
+        ("a tea w/o sugar", "a tea without sugar"),
+        ("a tea W/O sugar", "a tea without sugar"),
+    ],
+)
+def test_a_slashed_with_or_without_is_written_out(text: str, read: str) -> None:
+    assert undotted(text) == read
+
+
+@pytest.mark.parametrize(
+    "text", ["the rota for w/c 5 May", "print and/or copy", "bring it w/out fail"]
+)
+def test_other_slashes_are_kept(text: str) -> None:
+    assert undotted(text) == text
+
+
+def test_a_printout_left_w_slash_a_colleague_goes_to_them() -> None:
+    frame = frame_reader(default_office, "lee")("pls print my file and leave it w/ Zhang")
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("print", "zhang")], frame
