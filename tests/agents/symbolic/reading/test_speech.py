@@ -30,6 +30,11 @@ def test_openers_and_stance_are_passed_over() -> None:
         ("is the printer working", "info"),
         ("can you print in colour", "info"),  # what it can do: nothing to act on
         ("bring me a stapler", None),
+        # "do" before an object is a command, before a subject the auxiliary of a question
+        ("do the thing with my document", None),
+        ("do a copy of my document for Zhang", None),
+        ("do you have a stapler", "info"),
+        ("do we have any tape", "info"),
     ],
 )
 def test_a_question_is_polite_or_for_information(

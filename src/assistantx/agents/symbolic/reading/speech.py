@@ -44,6 +44,7 @@ QuestionKind = Literal["polite", "info"]
 
 _WH = english.words("wh_words")
 _AUX = english.words("question_auxiliaries")
+_DO_COMMANDED = english.words("do_commanded")
 _MODALS = english.words("request_modals")
 # Words between "go" and "to" of a thing sent on ("should go *back* to Lee")
 _GOING_PARTICLES = frozenset({"back", "over", "across", "along", "round", "straight"})
@@ -636,6 +637,8 @@ class SpeechActs:
             return "polite"  # "could you ...", "can someone lend me ...", "may I have ..."
         if first in _MODALS and second in ("not", "nt"):
             return "polite"
+        if first == "do" and second in _DO_COMMANDED:
+            return None  # "do the thing with my bottle": a command, not "do you ...?"
         if first in _AUX and first in _SUBJECT_VERB and not asks:
             return None  # "we're trying to ...": a contraction, not "were ...?"
         if first == "have" and not asks and self._causative(w):
