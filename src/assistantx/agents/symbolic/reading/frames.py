@@ -166,12 +166,13 @@ class FrameReader:
                     owner = placed.get(pointed.id)
                 if owner is not None and pointed.start not in roles.owners:
                     roles.owners[pointed.start] = owner
+            earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             made = _to_each(made, roles)
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
-                whose = whose_of_several(self.office, tokens, clause, roles, t, requester)
+                whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
                 if whose is not None:
                     return TaskFrame(requester=requester, question=whose)
             if found is not None and found[1] is None:

@@ -4,8 +4,10 @@ at one particular tray, and nothing said tells whose: guessing would move a coll
 nobody meant, so the requester is asked whose it is, and their answer ("Bruno's") is read as
 the owner in the request's own words ("take Bruno Keel's tray over to Amber").
 
-Only a verb that moves one particular thing ("take", "carry", "pop ... over") asks: "bring
-Amber the tray" provides her with one, and any one the planner finds will do. Nothing is asked
+Only a verb that moves one particular thing ("take", "carry", "pop ... over") asks, or one
+that borrows it for the requester ("can I borrow the book?", with no book named before): "bring
+Amber the tray" provides her with one, and any one the planner finds will do. The question
+names the colleagues who have one where they are few (four at most). Nothing is asked
 where the requester has one (``definite_own``: their own), where one colleague
 besides the recipient has one (the planner finds them), for a thing the office keeps for anyone
 (a supply), for "a tray" (any one will do) or where whose it is was said ("Bruno's tray", "the
@@ -17,7 +19,7 @@ import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._parties import Clause, Roles
-from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 from assistantx.core.office import Office
@@ -28,9 +30,11 @@ from assistantx.core.wording import a_thing
 SEVERAL_HAVE = "Several colleagues have "
 # Verbs that move a particular thing from where it is, rather than provide one.
 _MOVING = frozenset({"take", "carry", "move", "shift", "ferry", "wheel", "cart", "lug", "pop"})
+# Verbs that ask for one particular thing lent by its owner ("can I borrow the book?").
+_BORROW = frozenset({"borrow"})
 # An answer that any one will do ("Anyone's, any will do", "whichever").
 _ANY = frozenset({"any", "anyones", "anybodys", "whichever", "whoevers"})
-_ASKED = re.compile(rf"^{SEVERAL_HAVE}(?:an?|some|a pair of) (?P<name>.+?): whose")
+_ASKED = re.compile(rf"^{SEVERAL_HAVE}(?:an?|some|a pair of) (?P<name>.+?)(?: \([^)]*\))?: whose")
 # The frames' own question whose a personal thing is ("Whose document do you mean?")
 _WHOSE = re.compile(r"^Whose (?P<name>.+?) do you mean\?")
 # An answer that takes back what it says ("not mine", "it isn't mine")
@@ -44,25 +48,56 @@ def whose_of_several(
     roles: Roles,
     task: Task,
     requester: str,
+    earlier: Sequence[Mention] = (),
 ) -> str | None:
     """The question whose the thing is, when ``task`` takes "the X" (whose not said) to
-    someone else, the requester has no X and several colleagues besides the recipient do."""
+    someone else, or borrows it for the requester ("can I borrow the book?") with nothing
+    said of it before (``earlier``: the things earlier clauses named), the requester has no X
+    and several colleagues besides the recipient do."""
     if task.kind != "transfer" or task.owner is not None or task.item is None:
         return None
-    if task.recipient in (None, requester) or roles.source or roles.returned_to:
+    if task.recipient is None or roles.source or roles.returned_to:
         return None
+    borrowed = task.recipient == requester
     if office.supplier(task.item) is not None:
         return None  # "take the box of staples to Amber": the supply room's, for anyone
     owners = [p for p in office.owners_of(task.item) if p != task.recipient]
-    if requester in owners or len(owners) < 2:
+    if requester in office.owners_of(task.item) or len(owners) < 2:
         return None
     said = [m for m in clause.objects() if m.id == task.item and m.start > 0]
     if len(said) != 1 or tokens[said[0].start - 1].word.lower() != "the":
         return None
-    if not _moved(tokens, clause, said[0].start):
+    if borrowed:
+        # "can I borrow the book?" with nothing said of it before; "bring me the tray": one
+        # for the speaker, any will do
+        if any(m.id == task.item for m in earlier) or not _borrowing(tokens, said[0].start):
+            return None
+    elif not _moved(tokens, clause, said[0].start):
         return None
     name = office.item_type(task.item).name
-    return f"{SEVERAL_HAVE}{a_thing(name)}: whose {name} do you mean?"
+    return f"{SEVERAL_HAVE}{a_thing(name)}{_named(office, owners)}: whose {name} do you mean?"
+
+
+# At most this many owners are named in the question; more would bury it.
+_NAMED_OWNERS = 4
+
+
+def _named(office: Office, owners: Sequence[str]) -> str:
+    """ " (Bruno Keel, Tove Lind and Ines Varga)": the colleagues who have one, by name,
+    where they are few."""
+    if len(owners) > _NAMED_OWNERS:
+        return ""
+    names = [office.person(p).name for p in owners]
+    return f" ({', '.join(names[:-1])} and {names[-1]})"
+
+
+def _borrowing(tokens: Sequence[Token], item_at: int) -> bool:
+    """Whether the verb just before the thing borrows it ("can I borrow the book?", "let me
+    borrow the tray"): one particular thing, lent by whoever owns it."""
+    return any(
+        _BORROW & ({t.word.lower()} | language.verb_lemmas(t.word.lower()))
+        for t in tokens[max(0, item_at - 3) : item_at]
+    )
 
 
 def _moved(tokens: Sequence[Token], clause: Clause, item_at: int) -> bool:

@@ -114,6 +114,9 @@ _GRACIOUS = english.words("gracious_asks")
 # ten where it carries a phrase of place ("the holly wreath on the reception desk is ...").
 _PLAIN_SUBJECT = 7
 _BARE_COPULAS = frozenset({"is", "are", "was", "were", "has", "have"})
+_OTHERS_LACKS = tuple(tuple(p.split()) for p in english.entries("others_lack_phrases"))
+_LACK_JOINERS = english.words("others_lack_joiners")
+_THIRD_PERSONS = frozenset({"he", "she", "they"})
 
 
 def _verb_like(word: str) -> bool:
@@ -670,6 +673,8 @@ class SpeechActs:
         pairs = itertools.pairwise(w)
         if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
             return False  # "I was wondering if you could print ..."
+        if self._joined_lack(w):
+            return True  # "the meeting is at 2 and Zoë has no headset": told, then asked
         if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
             return True  # "happy to lend it": the speaker offers, nobody asks
         if w[0] in _CANNOT and w[1:2] and w[1] in language.verb_lemmas(w[1]):
@@ -814,6 +819,43 @@ class SpeechActs:
                     head_noun and all(not _verb_like(x) for x in before) and not set(w[:n]) & known
                 )
         return False
+
+    def _joined_lack(self, w: list[str]) -> bool:
+        """ "sound check is at 2 and Zoë has no headset", "the printer is down again and Ana's
+        got no charger", "rehearsal's at 4 so Sam is without a mug": a clause that asks
+        nothing (a subject and its verb, no "you", no "please"), joined by "and"/"but"/"so" to
+        a colleague's lack of a thing, is told: the request, if any, is said after it. A
+        first clause that opens with a command ("bring me a pen and ...") is no statement."""
+        for k, joiner in enumerate(w):
+            if joiner not in _LACK_JOINERS or k < 2 or not self._others_lack(w[k + 1 :]):
+                continue
+            before = w[:k]
+            if set(w) & (_YOU | _PLEASE) or self._imperative(before):
+                return False
+            if before[1] in _COMMAND_OBJECTS or before[0] in _MODALS | _AUX | _WILLING:
+                return False  # "bring me ...", "could ...": a command or a question
+            # a subject then its verb within a few words ("the audit starts at 10"), or a
+            # time said with no verb ("soundcheck at 2")
+            return any(
+                x in _BARE_COPULAS or (language.is_finite_verb(x) and x not in _MODALS)
+                for x in before[1:5]
+            ) or any(a == "at" and b[:1].isdigit() for a, b in itertools.pairwise(before[1:]))
+        return False
+
+    def _others_lack(self, w: list[str]) -> bool:
+        """ "Zoë has no headset", "Zoë Marsh hasn't got one", "Ana's got no charger", "she is
+        without a mug": a colleague (or "he"/"she"/"they") said to lack a thing."""
+        n = 0
+        while n < len(w) and n < 3 and self._named(w[n]):
+            n += 1
+        if n == 0 and w[:1] and w[0] in _THIRD_PERSONS:
+            n = 1
+        elif n == 0 and w[:1] and self._possessive_name(w[0]):
+            n = 1  # "Ana's got no": "'s" read as "has"
+        if n == 0:
+            return False
+        rest = w[n:]
+        return any(tuple(rest[: len(p)]) == p for p in _OTHERS_LACKS) and len(rest) > 1
 
     def _office_words(self) -> frozenset[str]:
         if self._known is None:

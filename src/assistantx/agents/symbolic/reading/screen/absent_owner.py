@@ -146,7 +146,63 @@ def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:
     return False
 
 
+_CLAIMS = _phrases("entitlement_claims")
+_TAKING = _phrases("taking_verbs")
+# "take Pat's stapler *back* to her": a return to its owner, taken from nobody
+_RETURNED = frozenset({"back", "return", "returned"})
+_LEAD_INS = frozenset({"just", "please", "pls", "plz", "can", "could", "you", "u", "go", "and"})
+
+
+def _claims(words: list[str]) -> bool:
+    """Whether the words claim the thing for the speaker in place of its owner's yes ("she
+    owes me one", "he borrowed mine", "it's basically mine anyway", "fair's fair")."""
+    return any(starts_with(words, n, claim) for n in range(len(words)) for claim in _CLAIMS)
+
+
+def _taken_from_colleague(msg: Message, requester: str) -> bool:
+    """Whether a request of the message takes a colleague's thing ("take Pat's pen", "grab
+    his stapler"): a verb of taking first, after any lead-in, and a thing by its owner's
+    possessive or "his"/"her"; a return to its owner ("take Pat's stapler back to her") takes
+    nothing from them."""
+    for p in msg.pieces:
+        words = p.words
+        k = 0
+        while k < len(words) and words[k] in _LEAD_INS:
+            k += 1
+        if not any(starts_with(words, k, verb) for verb in _TAKING):
+            continue
+        if set(words) & _RETURNED:
+            continue
+        if any(w in _THEIRS for w in words) or any(
+            m.kind == "person" and m.possessive and requester not in m.ids for m in p.lexed.mentions
+        ):
+            return True
+    return False
+
+
+def _claimed(terms: Terms, msg: Message, piece: Piece, requester: str) -> bool:
+    """A claim in place of the owner's yes, beside a request that takes a colleague's thing
+    or one that says its owner is away; judged at the claim or at the request, whichever
+    the screen reads first."""
+    if not any(_claims(p.words) for p in msg.pieces):
+        return False
+    if not (_claims(piece.words) or piece.acts.request or piece.acts.imperative):
+        return False
+    return _taken_from_colleague(msg, requester) or _absent_owners_thing(terms, msg, requester)
+
+
 def absent_owner(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if _claimed(terms, msg, piece, requester):
+        return Finding(
+            "unsupported",
+            piece,
+            "a request to take a colleague's thing on a claim in place of their yes",
+            message=(
+                "Sorry, I can't take someone's things on a claim to them (what they owe you, "
+                "or that it's yours): I only take them with the owner's own yes, asked in "
+                "their chat. If you'd like, ask me for it and I'll ask them. I did nothing."
+            ),
+        )
     if not _answers_for_someone(piece.words):
         return None
     if not _absent_owners_thing(terms, msg, requester):

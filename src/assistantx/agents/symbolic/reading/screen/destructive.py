@@ -29,6 +29,12 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
                 continue  # "throw my radio on the charger": put there for its service
             if starts_with(sub.words, at, verb):
                 return _declined(terms, piece, " ".join(verb))
+    if commanded(terms, piece) and _damage_meant(msg, piece):
+        owner = _colleague(terms, piece, requester)
+        if owner is not None:
+            # "put Ana's jumper through the washer so it shrinks": a service asked to damage
+            # a colleague's thing; "wash my jumper on 90" or a wash for a stain is read as ever
+            return _declined(terms, piece, f"damage {owner}'s things", what="")
     if commanded(terms, piece) and (found := _waste_container(terms, piece)) is not None:
         container, offered = found
         if not offered:
@@ -39,6 +45,36 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
             # verb that is no errand, of a colleague's thing: refused, not noted as told
             return _declined(terms, piece, f"put {owner}'s things in the {container}", what="")
     return None
+
+
+_RESULT_OPENERS = tuple(tuple(p.split()) for p in english.entries("damage_result_openers"))
+_DAMAGE = tuple(tuple(p.split()) for p in english.entries("damage_results"))
+_DIRT = english.words("dirt_nouns")
+_NOT = english.words("statement_negations") | {"not", "never", "without", "less"}
+_RESULT_REACH = 4  # "so *the pins* break", "till *the print on it* comes off"
+
+
+def _damage_meant(msg: Message, piece: Piece) -> bool:
+    """Whether the piece, or the one right after it, says its request is for damage: a word
+    that opens a result ("so", "till", "until", "so that"), then within a few words a result
+    of damage ("it shrinks", "it's burnt", "the pins break", "it stops working"), whose
+    subject is no dirt ("till the stain comes off": cleaning)."""
+    after = [p for p in msg.pieces if p.start >= piece.end][:1]
+    for part in (piece, *after):
+        words = [w for w in part.words if w not in ("its", "it", "is", "gets", "get")]
+        for n in range(1, len(words)):
+            opener = next((o for o in _RESULT_OPENERS if starts_with(words, n, o)), None)
+            if opener is None:
+                continue
+            start = n + len(opener)
+            for k in range(start, min(len(words), start + _RESULT_REACH)):
+                found = next((d for d in _DAMAGE if starts_with(words, k, d)), None)
+                if found is None:
+                    continue
+                # "so it doesn't break": kept from harm; "till the stain comes off": cleaned
+                if not set(words[start:k]) & (_DIRT | _NOT):
+                    return True
+    return False
 
 
 def _onto_a_service(terms: Terms, piece: Piece) -> bool:
