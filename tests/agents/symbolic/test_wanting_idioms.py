@@ -32,6 +32,11 @@ def _tasks(text: str) -> list[tuple[str, str | None, str | None, str | None]]:
         "please take my torch to Ginger. Also I'd kill for a cappuccino!",
         "take my torch to Ginger, and I could really go for a cappuccino",
         "Two quick things: bring my torch to Ginger. I would absolutely murder a cappuccino",
+        "take my torch to Ginger, and I'm gagging for a cappuccino",
+        "take my torch to Ginger, and I'd give anything for a cappuccino",
+        "take my torch to Ginger, and im desperate for a cappuccino",
+        "take my torch to Ginger, and I'm craving a cappuccino",
+        "take my torch to Ginger, and I really fancy a cappuccino",
     ],
 )
 def test_an_idiom_of_wanting_after_a_request_is_a_second_request(text: str) -> None:
@@ -71,7 +76,21 @@ def test_an_opening_count_names_nothing(text: str) -> None:
         "I'm dying to know who took my torch",
         "I could kill for some peace and quiet",
         "two things are broken in here",
+        "I go for a walk every day",
+        "Ginger fancies a cappuccino",
     ],
 )
 def test_no_thing_wanted_moves_nothing(text: str) -> None:
     assert _frame(text).tasks == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I'd murder a cappuccino, and my torch needs to go to Ginger.",
+        "I'm dying for a cappuccino and my torch should go to Ginger",
+        "I need a cappuccino, and my torch has to go to Ginger",
+    ],
+)
+def test_a_delivery_said_after_the_want_keeps_its_own_recipient(text: str) -> None:
+    assert _tasks(text) == [_COFFEE, _TORCH]

@@ -90,19 +90,17 @@ def contracted_needs(text: str) -> str:
 # "I'd murder a coffee", "we could kill for some tea", "I'm dying for a snack", "I could
 # really go for a muffin": the speaker's idiom of wanting (``wanting_idioms``), after a helping
 # verb ("'d", "could", "'m") and any degree words, before what is wanted
+def _any_of(key: str) -> str:
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+_DEGREES = rf"(?:\s+(?:{_any_of('wanting_degrees')}))*\s+"
 _WANTING = re.compile(
-    r"\b(?P<subject>i|we)(?:\s*['’]\s*|\s+)(?:"
-    + "|".join(
-        re.escape(w) for w in sorted(english.entries("wanting_helpers"), key=len, reverse=True)
-    )
-    + r")(?:\s+(?:"
-    + "|".join(re.escape(w) for w in english.entries("wanting_degrees"))
-    + r"))*\s+(?:"
-    + "|".join(
-        r"\s+".join(re.escape(w) for w in p.split())
-        for p in sorted(english.entries("wanting_idioms"), key=len, reverse=True)
-    )
-    + r")\s+(?=(?:a|an|some|another|one|more|a\s+few|a\s+couple)\b)",
+    rf"\b(?P<subject>i|we)(?:(?:\s*['’]\s*|\s+|)(?:{_any_of('wanting_helpers')}){_DEGREES}"
+    rf"(?:{_any_of('wanting_idioms')}|{_any_of('wanting_verbs')})"
+    rf"|{_DEGREES}(?:{_any_of('wanting_verbs')}))"
+    r"\s+(?=(?:a|an|some|another|one|more|a\s+few|a\s+couple)\b)",
     re.IGNORECASE,
 )
 
