@@ -27,6 +27,11 @@ _frame = frame_reader(lamp_works, "odile")
         ("we're out of tape. anybody got some?", "tape"),
         ("my mouse died. got a spare one anywhere?", "mouse"),
         ("my torch is broken. does anyone have a spare I could use?", "torch"),
+        # the complaint after the ask, said bare, or with words before its subject
+        ("anyone got a spare? my charger just died", "charger"),
+        ("charger's dead. anyone got a spare?", "charger"),
+        ("ugh, my charger has died. does anyone have a spare?", "charger"),
+        ("I lost my charger. anyone got a spare?", "charger"),
     ],
 )
 def test_a_spare_asked_after_a_complaint_is_one_of_that_kind(text: str, item: str) -> None:
@@ -68,3 +73,9 @@ def test_a_bare_ask_for_a_spare_asks_back_in_words(text: str) -> None:
     frame = _frame(text)
     assert frame.tasks == [] and frame.decline is not None, frame
     assert "Which item do you need a spare of?" in frame.decline
+
+
+def test_a_colleagues_complaint_asks_no_spare_for_them() -> None:
+    frame = _frame("Ginger's charger is dead. anyone got a spare?")
+    assert frame.tasks == [] and frame.decline is not None, frame
+    assert "Which item" not in frame.decline

@@ -90,8 +90,11 @@ def _spare_after_complaint(msg: Message, piece: Piece) -> bool:
         return False
     if any(p.acts.request or p.acts.imperative for p in msg.pieces if p is not piece):
         return False
+    # the complaint just before the ask, or just after it ("anyone got a spare? mine ... my
+    # charger just died")
     before = [p for p in msg.pieces if p.end < piece.start]
-    return bool(before) and _kind_amiss(before[-1])
+    later = [p for p in msg.pieces if p.start > piece.end]
+    return any(_kind_amiss(p) for p in [*before[-1:], *later[:1]])
 
 
 def spare_asked(piece: Piece) -> bool:
@@ -108,10 +111,16 @@ def spare_asked(piece: Piece) -> bool:
     return all(x in _SPARE_WORDS for x in w[k + 1 :])
 
 
+# What may open a complaint before its subject ("ugh, my charger has died").
+_INTERJECTIONS = frozenset(
+    {"ugh", "argh", "oh", "no", "great", "so", "well", "damn", "sigh", "welp"}
+)
+
+
 def _kind_amiss(piece: Piece) -> bool:
-    """ "my charger is dead", "my mouse died", "ran out of tape", "we're out of tape": a
-    statement of one thing of a kind, the speaker's own ("my"/"our") or used up ("out of"),
-    naming no one."""
+    """ "my charger is dead", "charger's dead", "my mouse died", "ran out of tape": a statement
+    of one thing of a kind, its subject (the speaker's own, or said bare) or used up ("out
+    of"), naming no one."""
     a = piece.acts
     if a.request or a.imperative or a.question is not None or a.withdrawal or a.thanks:
         return False
@@ -123,7 +132,11 @@ def _kind_amiss(piece: Piece) -> bool:
         return False
     at = items[0].start
     before = [t.word for t in tokens[max(0, at - 2) : at]]
-    return before[-1:] in (["my"], ["our"]) or before == ["out", "of"]
+    if before == ["out", "of"]:
+        return True  # "ran out of tape"
+    # the thing as the statement's subject: "my charger is dead", "charger's dead"
+    lead = [t.word for t in tokens[:at] if t.word not in _INTERJECTIONS]
+    return before[-1:] in (["my"], ["our"]) or lead in ([], ["the"])  # "I lost my charger"
 
 
 def _wanted_by_the_asker(piece: Piece) -> bool:

@@ -43,7 +43,7 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         p = terms.office.person(people[0])
         where = terms.office.location(p.location).name
         message = f"{p.name} works at {where}; I can't see whether they are there right now."
-    elif spare_asked(piece):
+    elif spare_asked(piece) and not any(terms.named(p.lexed, "item") for p in msg.pieces):
         # "anyone got a spare?" with no thing said anywhere: answered in words, asking back
         message = "Which item do you need a spare of? Tell me and I'll get you one."
         return Finding("question", piece, "an ask for a spare, of no thing said", message=message)
