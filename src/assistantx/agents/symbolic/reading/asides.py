@@ -6,6 +6,7 @@ verb follows the aside. The phrases are English data (``request_asides``)."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
@@ -31,3 +32,25 @@ def aside_length(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -
         if n + inside < len(mentions) and mentions[n + inside].kind == "cue":
             return inside
     return 0
+
+
+def _alternatives(key: str) -> str:
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+# "Two things: ...", "A couple of quick things - ...": a count of what follows, then a colon
+# or a dash, at the start of the message or of a sentence
+_ANNOUNCED = re.compile(
+    rf"(?:^|(?<=[.!?])\s+)(?:{_alternatives('list_counts')})\s+"
+    rf"(?:(?:{_alternatives('list_degrees')})\s+)*(?:{_alternatives('list_nouns')})"
+    r"(?:\s+(?:please|pls|for\s+you))?\s*(?::|\s[-–—]+)\s*",
+    re.IGNORECASE,
+)
+
+
+def announced_list(text: str) -> str:
+    """ "Two things: take my torch to Ida, and I need a coffee": the opening count names no
+    item and asks nothing; it is dropped, so what follows is read as if said alone (never a
+    statement about "things")."""
+    return _ANNOUNCED.sub(lambda m: " " if m.start() else "", text)

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.obligation import obliged_verb
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english, language
 
@@ -67,6 +68,21 @@ def hands_across(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -
         and after[0] in _ACROSS
         and after[1:] == ["to"]
     )
+
+
+def obliged_to_go(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -> bool:
+    """Whether mention ``n`` opens a thing said to have to go somewhere ("..., and my torch
+    needs to go to Ida", "and the stapler should go back to Wang"): a delivery of its own,
+    never whom the clause before is for ("I need a coffee, and my torch needs to go to Ida":
+    the coffee stays the speaker's)."""
+    k = n
+    if k < len(mentions) and mentions[k].kind in ("self", "person") and k + 1 < len(mentions):
+        k += 1  # "my torch", "Ida's torch"
+    if k >= len(mentions) or mentions[k].kind != "item":
+        return False
+    words = [t.word for t in tokens[mentions[k].end : mentions[k].end + 6]]
+    verb = obliged_verb(words, 0)
+    return verb is not None and words[verb] == "go"
 
 
 # The verbs that have work done on a thing ("have my letter digitised", "get it signed").

@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.directed_work import (
     asks_someone_to_work,
     hands_across,
     has_it_done,
+    obliged_to_go,
 )
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
@@ -406,6 +407,7 @@ class FrameReader:
             or asks_someone_to_work(mentions, n, tokens)
             or hands_across(mentions, n, tokens)
             or has_it_done(mentions, n, tokens)
+            or obliged_to_go(mentions, n, tokens)
         )
 
     def _made_beside(

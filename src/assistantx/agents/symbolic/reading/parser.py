@@ -56,6 +56,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     unanchored_it,
     with_antecedent,
 )
+from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
     doubted_recipient,
@@ -95,7 +96,11 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
-from assistantx.agents.symbolic.reading.purpose import contracted_needs, lacked_purposes
+from assistantx.agents.symbolic.reading.purpose import (
+    contracted_needs,
+    lacked_purposes,
+    wanting_idioms,
+)
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
@@ -212,6 +217,8 @@ class InstructionParser:
         )
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
+        text = announced_list(text)  # "Two things: ...": the count names nothing
+        text = wanting_idioms(text)  # "I'd murder a coffee": I need a coffee
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
         # "Zhang asked if someone could bring him a coffee": a coffee for Zhang
         text = reported_requests(text, self._one_name)

@@ -85,3 +85,30 @@ def contracted_needs(text: str) -> str:
     "is", not a possessive, so the need is read as any other ("Kit is after a torch": whom
     it is for)."""
     return _CONTRACTED_NEEDS.sub(lambda m: f" is {m.group('phrase')}", text)
+
+
+# "I'd murder a coffee", "we could kill for some tea", "I'm dying for a snack", "I could
+# really go for a muffin": the speaker's idiom of wanting (``wanting_idioms``), after a helping
+# verb ("'d", "could", "'m") and any degree words, before what is wanted
+def _any_of(key: str) -> str:
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+_DEGREES = rf"(?:\s+(?:{_any_of('wanting_degrees')}))*\s+"
+_WANTING = re.compile(
+    rf"\b(?P<subject>i|we)(?:(?:\s*['’]\s*|\s+|)(?:{_any_of('wanting_helpers')}){_DEGREES}"
+    rf"(?:{_any_of('wanting_idioms')}|{_any_of('wanting_verbs')})"
+    rf"|{_DEGREES}(?:{_any_of('wanting_verbs')}))"
+    r"\s+(?=(?:a|an|some|another|one|more|a\s+few|a\s+couple)\b)",
+    re.IGNORECASE,
+)
+
+
+def wanting_idioms(text: str) -> str:
+    """ "I'd murder a coffee", "... and I could kill for a snack" said as "I need a coffee":
+    the speaker's idiom of wanting is their need of the thing, read as any need of theirs (a
+    request for them, also as the second part of a message). Only before what is wanted (an
+    article or a quantity): "I'd murder whoever took my pen" and "I'm dying to know who ..."
+    keep their readings."""
+    return _WANTING.sub(lambda m: f"{m.group('subject')} need ", text)

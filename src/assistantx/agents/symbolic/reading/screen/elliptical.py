@@ -44,7 +44,11 @@ def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
     for one for the speaker; it is left in the request. "got the light meter back from Will
     yet?", "who's got the light meter?" and a bare "got a light meter?" stay questions
     (answered, an offer at most)."""
-    if len(_things(piece)) != 1 or terms.named(piece.lexed, "person"):
+    if terms.named(piece.lexed, "person"):
+        return False
+    if not _things(piece):
+        return _spare_after_complaint(msg, piece)
+    if len(_things(piece)) != 1:
         return False
     if not (_having_one(piece) or _one_anywhere(piece)):
         return False
@@ -60,6 +64,79 @@ def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
     before = [p for p in msg.pieces if p.end < piece.start]
     asked = _things(piece)[0].ids
     return any(_own_one_amiss(p, asked) for p in [*before[-1:], *later[:1]])
+
+
+# What an ask for "a spare" may say besides it: "anyone got *a spare one anywhere*?", "does
+# anybody have *one I could use*?", "anyone have *some*?"
+_SPARE_WORDS = (
+    _INDEFINITE
+    | _ANYWHERE
+    | _SPEAKER
+    | _MODALS
+    | frozenset(
+        {"spare", "extra", "ones", "more", "few", "couple", "of", "going", "lying", "please", "pls"}
+        | {"use", "borrow", "have", "nab", "pinch", "grab", "take", "here", "me", "lend", "to"}
+    )
+)
+
+
+def _spare_after_complaint(msg: Message, piece: Piece) -> bool:
+    """ "my charger is dead. anyone got a spare?", "ran out of tape, anyone have some?": an
+    ask whether anyone has one, naming no thing, right after the speaker's own thing of a kind
+    said amiss asks for one of that kind for the speaker (another's, or the office's supply),
+    left in the request, where the rewrites read "a spare"/"one" as the thing said amiss. A
+    bare "anyone got a spare?" and one after a request of its own keep their readings."""
+    if not spare_asked(piece):
+        return False
+    if any(p.acts.request or p.acts.imperative for p in msg.pieces if p is not piece):
+        return False
+    # the complaint just before the ask, or just after it ("anyone got a spare? mine ... my
+    # charger just died")
+    before = [p for p in msg.pieces if p.end < piece.start]
+    later = [p for p in msg.pieces if p.start > piece.end]
+    return any(_kind_amiss(p) for p in [*before[-1:], *later[:1]])
+
+
+def spare_asked(piece: Piece) -> bool:
+    """ "anyone got a spare?", "does anybody have one I could use?", "anyone have some?": an
+    ask whether anyone has one of something, with no thing named."""
+    if _things(piece):
+        return False
+    w = piece.words
+    k = 2 if w[:2] == ["any", "chance"] else 0
+    k += 1 if w[k : k + 1] and w[k] in _AUXILIARIES else 0
+    k += 1 if w[k : k + 1] and w[k] in _ASKED else 0
+    if not (len(w) > k + 1 and w[k] in _HAVING and w[k + 1] in _INDEFINITE | {"spare"}):
+        return False
+    return all(x in _SPARE_WORDS for x in w[k + 1 :])
+
+
+# What may open a complaint before its subject ("ugh, my charger has died").
+_INTERJECTIONS = frozenset(
+    {"ugh", "argh", "oh", "no", "great", "so", "well", "damn", "sigh", "welp"}
+)
+
+
+def _kind_amiss(piece: Piece) -> bool:
+    """ "my charger is dead", "charger's dead", "my mouse died", "ran out of tape": a statement
+    of one thing of a kind, its subject (the speaker's own, or said bare) or used up ("out
+    of"), naming no one."""
+    a = piece.acts
+    if a.request or a.imperative or a.question is not None or a.withdrawal or a.thanks:
+        return False
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    if any(m.kind in ("person", "facility") for m in mentions):
+        return False
+    items = [m for m in mentions if m.kind == "item"]
+    if len({m.ids for m in items}) != 1:
+        return False
+    at = items[0].start
+    before = [t.word for t in tokens[max(0, at - 2) : at]]
+    if before == ["out", "of"]:
+        return True  # "ran out of tape"
+    # the thing as the statement's subject: "my charger is dead", "charger's dead"
+    lead = [t.word for t in tokens[:at] if t.word not in _INTERJECTIONS]
+    return before[-1:] in (["my"], ["our"]) or lead in ([], ["the"])  # "I lost my charger"
 
 
 def _wanted_by_the_asker(piece: Piece) -> bool:

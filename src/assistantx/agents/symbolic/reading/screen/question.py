@@ -5,7 +5,7 @@ answered and met with "Shall I bring you one?"."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
-from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_ask
+from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_ask, spare_asked
 from assistantx.agents.symbolic.reading.screen.facility_state_asked import in_service
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -43,6 +43,10 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         p = terms.office.person(people[0])
         where = terms.office.location(p.location).name
         message = f"{p.name} works at {where}; I can't see whether they are there right now."
+    elif spare_asked(piece) and not any(terms.named(p.lexed, "item") for p in msg.pieces):
+        # "anyone got a spare?" with no thing said anywhere: answered in words, asking back
+        message = "Which item do you need a spare of? Tell me and I'll get you one."
+        return Finding("question", piece, "an ask for a spare, of no thing said", message=message)
     else:
         thing = terms.unknown_thing(piece.words)
         if not thing:
