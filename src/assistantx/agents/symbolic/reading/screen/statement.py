@@ -35,7 +35,9 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if destination_stated(terms, msg, piece):
         return None  # "my parcel has to go off to Galway, post it": where "it" goes
     if not piece.asks and context_fragment(terms, msg, piece):
-        return Finding("statement", piece, "context beside the request")
+        # "Min's been asking for crisps. get her a bag": the one it is about, for "her"
+        people = tuple(f"person:{p}" for p in terms.named(piece.lexed, "person"))
+        return Finding("statement", piece, "context beside the request", context=people)
     if not piece.asks and verbless_aside(terms, msg, piece):
         return Finding("statement", piece, "an aside beside the request, context only")
     if not piece.asks and generic_explanation(terms, msg, piece):
