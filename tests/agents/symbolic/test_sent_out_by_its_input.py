@@ -96,3 +96,70 @@ def test_what_no_service_sends_is_declined_as_before(text: str) -> None:
 def test_an_office_with_no_send_out_service_declines_as_before() -> None:
     frame = _default_frame("send my document off to Coastline Deli on Mill Road")
     assert frame.tasks == [] and frame.decline is not None, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "operation", "destination"),
+    [
+        (
+            "this form needs to go by courier to Harrow Homes, 3 Kiln Lane",
+            "document",
+            "courier",
+            "Harrow Homes, 3 Kiln Lane",
+        ),
+        (
+            "this form needs to go by courier to the agent, Harrow Homes, 3 Kiln Lane",
+            "document",
+            "courier",
+            "the agent, Harrow Homes, 3 Kiln Lane",
+        ),
+        (
+            "these forms should go by courier to Harrow Homes, 3 Kiln Lane",
+            "document",
+            "courier",
+            "Harrow Homes, 3 Kiln Lane",
+        ),
+        (
+            "this parcel has to go by post to Coastline Deli on Mill Road",
+            "parcel",
+            "parcel_post",
+            "Coastline Deli on Mill Road",
+        ),
+    ],
+)
+def test_a_thing_that_has_to_go_by_the_services_means_is_sent(
+    text: str, item: str, operation: str, destination: str
+) -> None:
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.item, t.owner, t.operation, t.destination) for t in frame.tasks] == [
+        (item, "nadia", operation, destination)
+    ], frame
+
+
+def test_a_role_then_its_holders_name_is_one_destination() -> None:
+    frame = _frame("courier my contract to the buyer, Ms Ada Kerr, 12 Elm Road")
+    assert [t.destination for t in frame.tasks] == ["the buyer, Ms Ada Kerr, 12 Elm Road"], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "destination"),
+    [
+        ("courier my contract to the agent, it has to go today", "the agent"),
+        ("courier my contract to the lab, the Bristol one", "the Bristol lab"),
+    ],
+)
+def test_a_comma_after_a_role_with_no_name_ends_it_as_before(text: str, destination: str) -> None:
+    frame = _frame(text)
+    assert [t.destination for t in frame.tasks] == [destination], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [("my form needs to go to Owen", "owen"), ("this form has to go to Owen", "owen")],
+)
+def test_a_thing_that_has_to_go_to_a_colleague_is_still_delivered(
+    text: str, recipient: str
+) -> None:
+    frame = _frame(text)
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("transfer", recipient)], frame
