@@ -257,6 +257,7 @@ def _address_tail(
         not any(any(c.isdigit() for c in t.text) for t in so_far)
         and not any(t.word == "at" for t in so_far[1:])
         and not _proper_name(so_far)
+        and not _role_named(tokens, gaps, start, end)
     ):
         return end
     words = [t.word for t in tokens]
@@ -341,6 +342,25 @@ def _address_after(
 # Small words a place's proper name may hold between its capitalised words ("the Bank of
 # England", "Marks and Spencer").
 _NAME_JOINS = frozenset({"the", "of", "and", "&", "for", "on", "upon", "de", "la"})
+
+
+# The words that may open a role said before its holder's name ("the agent, Harrow Homes")
+_ROLE_OPENERS = frozenset({"the", "our", "their", "my", "his", "her"})
+
+
+def _role_named(tokens: Sequence[Token], gaps: Sequence[str], start: int, end: int) -> bool:
+    """ "to the agent, Harrow Homes, 3 Kiln Lane": a role said first (a determiner and at
+    most two lower-case nouns), then after its comma the proper name of who holds it; the
+    name and the address after it are the destination too."""
+    comma = next((k for k in range(start + 1, end + 1) if gaps[k].strip() == ","), None)
+    if comma is None or comma >= len(tokens) or not 2 <= comma - start <= 3:
+        return False
+    role = tokens[start:comma]
+    if role[0].word not in _ROLE_OPENERS:
+        return False
+    if not all(t.text[:1].islower() and language.is_noun(t.word) for t in role[1:]):
+        return False
+    return tokens[comma].text[:1].isupper()
 
 
 def _proper_name(words: Sequence[Token]) -> bool:

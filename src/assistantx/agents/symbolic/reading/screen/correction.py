@@ -12,13 +12,14 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.task_schema import Evidence
 
-# "sorry, I meant ...", "no wait, ...", "..., no, a pen", "I mean ...", "... actually, make it
-# a pen", "- sorry, make that a water", ". actually no, Ben's": the words after it correct
-# what was just said (only when they name one person or item, ``corrected``)
+# "sorry, I meant ...", "no wait, ...", "on second thoughts, ...", "..., no, a pen", "I mean
+# ...", "... actually, make it a pen", "- sorry, make that a water", ". actually no, Ben's":
+# the words after it correct what was just said (only when they name one person or item,
+# ``corrected``)
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
     r"(?:(?:actually,?\s+)?(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|"
-    r"no(?=[,!.]))\b"
+    r"on\s+second\s+thoughts?|no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?(?:[,]?\s*(?:actually,?\s*)?make\s+(?:it|that)\b)?"
     r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b"
     # "..., change that to a snack", "... - actually, switch it for a water"
@@ -163,6 +164,7 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         # "just bring my lunch": the adverb said only of the correction; after "and then"
         # the request reads plainly
         after = re.sub(r"^(?:(?:just|simply|rather|instead)\s+)+", "", after, flags=re.IGNORECASE)
+        after = _thing_kept(terms, before[cut:], tokens, after)
         return before[:cut] + after, [
             Evidence(words=text[match.start() :].strip(), meaning=meaning)
         ]
@@ -347,6 +349,40 @@ def _last_of_chain(after: str) -> str:
 
 # The most words of a correction that is itself corrected at once ("STEAM", "the blue one").
 _CHAINED_WORDS = 4
+
+
+# The words a correction's own request says the thing of the request it replaces by
+_KEPT_THING = re.compile(
+    r"\b(it|them|that)\b(?=\s*(?:$|[,.!?;]|\s[-–—]|\s+(?:to|for|over|back)\b))", re.IGNORECASE
+)
+
+
+def _thing_kept(terms: Terms, withdrawn: str, tokens: Sequence[Token], after: str) -> str:
+    """ "take my mug to the kitchenette - no wait, give it to Fang": a correction that says
+    a request of its own with "it"/"them"/"that" for its thing, and names no thing itself,
+    keeps the thing (and its owner) of the request it replaces; only where and to whom it
+    goes is new. A withdrawn request naming no one thing leaves "it" as said."""
+    if any(m.kind == "item" for m in terms.lex.scan(list(tokens))):
+        return after  # "bring me a pen - no wait, bring me a pencil": the thing replaced
+    said = terms.lex.tokens(withdrawn)
+    mentions = terms.lex.scan(said)
+    items = [n for n, m in enumerate(mentions) if m.kind == "item"]
+    if len(items) != 1:
+        return after
+    n = items[0]
+    item = mentions[n]
+    start = item.start
+    owner = mentions[n - 1] if n else None
+    if owner is not None and owner.kind in ("self", "person") and owner.possessive:
+        if item.start - owner.end <= 2:
+            start = owner.start
+    phrase = " ".join(t.text for t in said[start : item.end])
+    if start == item.start:
+        phrase = f"the {phrase}"
+    found = _KEPT_THING.search(after)
+    if found is None:
+        return after
+    return after[: found.start()] + phrase + after[found.end() :]
 
 
 def _opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:

@@ -24,7 +24,7 @@ import itertools
 
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
-from assistantx.agents.symbolic.reading.screen.outsider import sends_out
+from assistantx.agents.symbolic.reading.screen.outsider import sends_its_input, sends_out
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english, language
@@ -128,6 +128,8 @@ def _errand_outside(terms: Terms, piece: Piece, office_at: set[int]) -> bool:
     sending = terms.send_out_verbs | {
         w for f in terms.office.facilities for w in split_words(f.name) if _sends(terms, f.id)
     }
+    if sends_its_input(terms, tokens, mentions):
+        return False  # "send my parcel off to the deli on Mill Road": the service's destination
     return not any(w in sending for k, w in enumerate(words) if k not in within)
 
 

@@ -133,7 +133,25 @@ def sends_out(terms: Terms, msg: Message) -> bool:
             words.update(f for w in head for f in language.verb_forms(w))
         for f in office.offering(op.id):
             words.update(split_words(f.name))
-    return bool(words & {t.word for t in msg.lexed.tokens})
+    said = {t.word for t in msg.lexed.tokens}
+    return bool(words & said) or sends_its_input(terms, msg.lexed.tokens, msg.lexed.mentions)
+
+
+# The verbs of sending a thing away ("send my parcel off to ...", "post it to ...")
+_SENDING = english.words("sending_verbs")
+
+
+def sends_its_input(terms: Terms, tokens: Sequence[Token], mentions: Sequence[Mention]) -> bool:
+    """ "send my parcel off to Coastline Deli": a verb of sending said of a thing that only the
+    office's send-out service takes (every reading of the thing that service's input): that
+    service, whose destination is where it is sent, though its own words are not said."""
+    inputs = {op.input for op in terms.office.operations if op.sends_out and op.input}
+    if not inputs:
+        return False
+    if not any(language.verb_lemmas(t.word) & _SENDING for t in tokens):
+        return False
+    items = [m for m in mentions if m.kind == "item" and m.ids]
+    return bool(items) and all(set(m.ids) <= inputs for m in items)
 
 
 def _made_for_outsiders(terms: Terms, mention: Mention) -> bool:

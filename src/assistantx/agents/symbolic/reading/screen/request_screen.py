@@ -22,7 +22,7 @@ from assistantx.agents.symbolic.reading.screen.rejection import rejected_alterna
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
 from assistantx.agents.symbolic.reading.screen.self_introduction import self_introduction
-from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked
+from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked, sent_by_means
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.timing import without_time_idioms
 from assistantx.agents.symbolic.reading.screen.unasked import unasked
@@ -60,6 +60,7 @@ class RequestScreen:
         text, hedged = without_hedges(text)  # "Holly, I think, has one": Holly has one
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
+        text, sent = sent_by_means(terms, text)  # "this form needs to go by courier to ..."
         text, undone = undone_work(terms, text)  # "Hal still hasn't signed it. Can you ..."
         fixes = [
             *intro,
@@ -71,6 +72,7 @@ class RequestScreen:
             *hedged,
             *rejected,
             *fixes,
+            *sent,
             *undone,
         ]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))

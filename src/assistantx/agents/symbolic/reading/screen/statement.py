@@ -9,6 +9,7 @@ this is, take it home", ``told_to_whoever``)."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._objects import modifiers
@@ -23,6 +24,7 @@ from assistantx.core import language, wording
 from assistantx.core.english import entries as english_entries
 from assistantx.core.english import words as english_words
 from assistantx.core.office import Facility
+from assistantx.core.task_schema import Evidence
 
 
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -35,7 +37,9 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if destination_stated(terms, msg, piece):
         return None  # "my parcel has to go off to Galway, post it": where "it" goes
     if not piece.asks and context_fragment(terms, msg, piece):
-        return Finding("statement", piece, "context beside the request")
+        # "Min's been asking for crisps. get her a bag": the one it is about, for "her"
+        people = tuple(f"person:{p}" for p in terms.named(piece.lexed, "person"))
+        return Finding("statement", piece, "context beside the request", context=people)
     if not piece.asks and verbless_aside(terms, msg, piece):
         return Finding("statement", piece, "an aside beside the request, context only")
     if not piece.asks and generic_explanation(terms, msg, piece):
@@ -168,6 +172,40 @@ _WORK_DONE = frozenset({"done", "sorted", "handled"})
 # readings stage (``destination``) reads the same "to" as where a send-out sends "it".
 _GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
 _OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that"})
+
+
+# "this form needs to go by courier to ...", "my parcel has to go off to ... by post": the
+# thing said (with "this"/"my"/a name's), the obligation to go, and what follows it
+_GOES_BY = re.compile(
+    r"\b(?P<thing>(?:this|these|that|those|my|our|the|[^\W\d_][\w-]*['’]s)"
+    r"(?:\s+[\w-]+){1,4}?)\s+"
+    r"(?:needs?\s+to|ha(?:s|ve)\s+(?:got\s+)?to|should|must|is\s+to|are\s+to|ought\s+to)"
+    r"\s+go\b(?P<rest>[^.!?;]*)",
+    re.IGNORECASE,
+)
+_BY_MEANS = re.compile(r"\b(?:by|via)\s+(?P<means>[^\W\d_]+)\b", re.IGNORECASE)
+
+
+def sent_by_means(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
+    """ "this form needs to go by courier to Harrow Homes, 3 Kiln Lane": a thing of the
+    office that has to go somewhere by the means of one of its send-out services (a verb or
+    the means of its name: "by courier", "by post") asks for that service, read as "send
+    this form by courier to ..."; the thing keeps its words ("this form": the speaker's). A
+    thing that only has to go somewhere ("has to go to Lee") is read as before."""
+    for found in _GOES_BY.finditer(text):
+        rest = found.group("rest")
+        means = _BY_MEANS.search(rest)
+        if means is None or language.fold(means.group("means")) not in terms.send_out_verbs:
+            continue
+        if not re.search(r"\bto\b", rest, re.IGNORECASE):
+            continue
+        thing = found.group("thing")
+        if not terms.names_an_item(thing):
+            continue
+        said = f"send {thing}{rest}"
+        evidence = Evidence(words=found.group(0).strip(), meaning=said.strip())
+        return text[: found.start()] + said + text[found.end() :], [evidence]
+    return text, []
 
 
 def destination_stated(terms: Terms, msg: Message, piece: Piece) -> bool:
