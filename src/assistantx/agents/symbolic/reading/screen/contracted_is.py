@@ -61,8 +61,11 @@ _PRONOUNS = english.words("subject_pronouns") | frozenset(
 # words that go on saying where or when; "Zhang's back brace" (a noun after it) owns a brace
 _WHEREABOUTS = english.words("contracted_whereabouts")
 _WHEREABOUTS_TAILS = english.words("contracted_whereabouts_tails") | _TAILS
+# an adverb between the "'s" and the state ("the sun's finally out", "scanner's still down")
+_ADVERBS = "|".join(sorted(english.words("contracted_adverbs")))
 _CONTRACTED = re.compile(
-    r"\b(?P<subject>[^\W\d_]+)['’]s\s+(?P<state>[a-z]+)\b(?P<rest>\s*(?:[^\W\d_]+)?)",
+    rf"\b(?P<subject>[^\W\d_]+)['’]s\s+(?P<adverb>(?:{_ADVERBS})\s+)?(?P<state>[a-z]+)\b"
+    r"(?P<rest>\s*(?:[^\W\d_]+)?)",
     re.IGNORECASE,
 )
 
@@ -93,6 +96,7 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
         if after in _USED_UP_PARTICLES:
             said += f" {after}"  # "foil has run out"
         found.append(Evidence(words=match.group(0).strip(), meaning=said))
-        return f"{subject} {verb} {match.group('state')}{match.group('rest')}"
+        adverb = match.group("adverb") or ""
+        return f"{subject} {verb} {adverb}{match.group('state')}{match.group('rest')}"
 
     return _CONTRACTED.sub(expand, text), found

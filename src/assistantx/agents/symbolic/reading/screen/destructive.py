@@ -2,7 +2,14 @@
 the office offers it as a service ("shred" where a shredder is). So is a request that puts a
 thing into a waste container ("chuck Reed's clipboard in the skip"), whatever its verb: a
 verb the reader does not know must not turn disposal into an errand, and the container, no
-place of the office, is no destination to deliver to."""
+place of the office, is no destination to deliver to.
+
+A verb that destroys only what it is said of ("rip up", "cut up", "snap": english.yaml
+destructive_of_others) is declined when its object is a colleague's thing ("cut up Ana's
+contract", "tear Ana's notes up"): that thing is never fetched for it. Said of the speaker's
+own or of no one's ("cut up my old draft", "snap a photo of the board") it reads as before.
+So is a service asked for a result of damage on a colleague's thing ("put Ana's jumper through
+the washer so it shrinks"; english.yaml damage_results)."""
 
 from __future__ import annotations
 
@@ -29,6 +36,12 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
                 continue  # "throw my radio on the charger": put there for its service
             if starts_with(sub.words, at, verb):
                 return _declined(terms, piece, " ".join(verb))
+        for verb in terms.en.destructive_of_others:
+            if verb[0] in terms.lex.operation_words:
+                continue  # the office's own work by that verb: a service
+            owner = _others_object(terms, piece, sub.words, at, verb, requester)
+            if owner is not None:
+                return _declined(terms, piece, f"{' '.join(verb)} {owner}'s things", what="")
     if commanded(terms, piece) and _damage_meant(msg, piece):
         owner = _colleague(terms, piece, requester)
         if owner is not None:
@@ -75,6 +88,48 @@ def _damage_meant(msg: Message, piece: Piece) -> bool:
                 if not set(words[start:k]) & (_DIRT | _NOT):
                     return True
     return False
+
+
+def _others_object(
+    terms: Terms,
+    piece: Piece,
+    words: list[str],
+    at: int,
+    verb: tuple[str, ...],
+    requester: str,
+) -> str | None:
+    """The colleague whose thing is the object of ``verb`` at ``at``, by name: their
+    possessive name right after the whole verb ("rip up Ana's notes"), or right after its
+    first word with the rest of the verb after the thing ("rip Ana's notes up")."""
+    if not words or at >= len(words) or words[at] != verb[0]:
+        return None
+    if starts_with(words, at, verb):
+        return _possessive_at(terms, piece, words, at + len(verb), requester)
+    if len(verb) == 1:
+        return None
+    owner = _possessive_at(terms, piece, words, at + 1, requester)
+    if owner is None:
+        return None
+    rest = verb[1:]
+    # the thing named after the name: a few words, then the rest of the verb
+    return owner if any(starts_with(words, k, rest) for k in range(at + 3, at + 7)) else None
+
+
+def _possessive_at(
+    terms: Terms, piece: Piece, words: list[str], at: int, requester: str
+) -> str | None:
+    """The colleague named with 's at word ``at`` ("Ana's", "Sun Li's"), by name."""
+    if at >= len(words):
+        return None
+    tokens = piece.lexed.tokens  # "Reed's" is the token "reed", the word "reeds"
+    for m in piece.lexed.mentions:
+        if m.kind != "person" or not m.possessive or len(m.ids) != 1:
+            continue
+        if m.ids[0] == requester:
+            continue
+        if words[at] in (tokens[m.start].word, tokens[m.start].word + "s"):
+            return terms.office.person(m.ids[0]).name
+    return None
 
 
 def _onto_a_service(terms: Terms, piece: Piece) -> bool:

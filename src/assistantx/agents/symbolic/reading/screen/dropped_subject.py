@@ -2,7 +2,9 @@
 knocked coffee all over my keyboard", "can't leave the vat", "drew a blank on the rota"): the
 speaker's own state or doing, so it gets its "I" back before the pieces are judged and is read
 as the statement it is, never as a request naming a facility or an item ("heat a tea at the
-machine", "a knocked coffee", "dye a lunch at the vat"). Only a clause that opens so is
+machine", "a knocked coffee", "dye a lunch at the vat"). So does the speaker's own going
+("Off to a site meeting in a min", "Heading to the bank"): "I'm" is put back and the going is
+context, never an errand outside the office. Only a clause that opens so is
 restored: "can't you ...", "just bring ..." and "just put it ..." (a past form that is also
 the plain verb) are left as said.
 """
@@ -11,6 +13,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.screen.english import phrases_pattern
 from assistantx.core import english, language
 from assistantx.core.task_schema import Evidence
 
@@ -31,6 +34,20 @@ _PAST = re.compile(rf"{_OPENS}([a-z]+)\s+(?=(?:{_OBJECT_STARTS})\b)", re.IGNOREC
 # bare noun for its object, written in lower case (a capital after it is a surname: "Drew
 # Stone needs ...") and no possessive
 _PAST_BARE = re.compile(rf"{_OPENS}([A-Za-z]+)\s+(?=([a-z]+)\b(?!['’]))")
+# "off to a site meeting ...", "popping out to the bank": the speaker's own going
+_GOING = re.compile(
+    rf"{_OPENS}((?:just\s+)?(?:{phrases_pattern('own_going_openers')}))\b", re.IGNORECASE
+)
+# "Drew up the report last night", "marked out the site yesterday": a past form and its
+# particle opening a sentence that says the thing is done; a capital past form is no name then
+_PARTICLES = "|".join(sorted(english.words("verb_particles")))
+_PAST_PARTICLE = re.compile(
+    rf"{_OPENS}([A-Za-z]+)\s+(?=(?:{_PARTICLES})\s+(?:{_OBJECT_STARTS})\b)", re.IGNORECASE
+)
+_DONE_TIMES = tuple(
+    tuple(language.words(p))
+    for p in (*english.entries("past_times"), *english.entries("done_times"))
+)
 # "got a stapler?" asks for one (have got: possession), whatever its tense
 _ASKING_PASTS = frozenset({"got", "gotten"})
 
@@ -62,7 +79,8 @@ def subject_restored(text: str, things: frozenset[str] = frozenset()) -> tuple[s
     "just" + a past form, a past form and its object ("drew a blank"; a bare noun too, "drew
     blood", unless a name of the office's ``things`` follows: "printed file for Ana" asks for
     one),
-    or (after a request) "need" + a number; "we'll" spelt "we 'll"."""
+    or (after a request) "need" + a number; "I'm" before the speaker's own going ("off to
+    ..."); "we'll" spelt "we 'll"."""
     found: list[Evidence] = []
 
     def been(match: re.Match[str]) -> str:
@@ -109,14 +127,33 @@ def subject_restored(text: str, things: frozenset[str] = frozenset()) -> tuple[s
             return match.group(0)  # a word that is also a pronoun, adverb, adjective ...
         return past(match)
 
+    def going(match: re.Match[str]) -> str:
+        if _ends_asking(match.string, match.end()):
+            return match.group(0)  # "heading to the kitchen?": asked of the robot
+        found.append(Evidence(words=match.group(2), meaning="I'm (the speaker) going"))
+        return f"{match.group(1)}I'm {match.group(2)}"
+
+    def past_particle(match: re.Match[str]) -> str:
+        end = re.search(r"[.!?\n]", match.string[match.end() :])
+        said = language.words(
+            match.string[match.end() : match.end() + end.start() if end else None]
+        )
+        if not any(
+            said[n : n + len(time)] == list(time) for time in _DONE_TIMES for n in range(len(said))
+        ):
+            return match.group(0)  # "Drew up the road ...", no time it was done: as said
+        return past(match)
+
     def we_will(match: re.Match[str]) -> str:
         found.append(Evidence(words=match.group(0), meaning="we will (the speaker's team)"))
         return f"{match.group(1)} 'll"
 
     text = _WE_WILL.sub(we_will, text)
     text = _PAST.sub(past, text)
+    text = _PAST_PARTICLE.sub(past_particle, text)
     text = _PAST_BARE.sub(past_bare, text)
     text = _BEEN.sub(been, text)
     text = _CANT.sub(cant, text)
     text = _NEED_COUNT.sub(need, text)
+    text = _GOING.sub(going, text)
     return _JUST.sub(just, text), found

@@ -24,6 +24,8 @@ class English:
     negators: tuple[tuple[str, ...], ...]
     negation_fillers: frozenset[str]
     destructive: tuple[tuple[str, ...], ...]
+    # "rip up", "snap": destroying only said of a colleague's thing ("snap a photo" is none)
+    destructive_of_others: tuple[tuple[str, ...], ...]
     unsafe_acts: tuple[tuple[str, ...], ...]  # fire, false alarms: a danger, never done
     waste_containers: tuple[
         tuple[str, ...], ...
@@ -66,6 +68,7 @@ def english() -> English:
         negators=phrases("negators"),
         negation_fillers=word_set("negation_fillers"),
         destructive=phrases("destructive"),
+        destructive_of_others=phrases("destructive_of_others"),
         unsafe_acts=phrases("unsafe_acts"),
         waste_containers=phrases("waste_containers"),
         copulas=phrases("copulas"),

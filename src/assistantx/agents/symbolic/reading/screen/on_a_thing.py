@@ -22,6 +22,10 @@ from assistantx.core.receiving_place import PLACE_WORDS
 # where one thing lies on another ("on", "all over", "in"); "from"/"for"/"to" say where a
 # thing comes from or goes, and stay requests
 _ON = frozenset({"on", "over", "in", "inside", "under", "across", "onto", "into"})
+# what a remark on a thing may name besides the thing
+_TOLD = frozenset({"item", "person", "word", "self", "pronoun"})
+# "everywhere": a thing said to be spread so is a mess ("all over" too)
+_EVERYWHERE = frozenset({"everywhere"})
 # words that ask, however short the fragment ("stapler on my desk pls"), and haste
 _ASKING = english.words("asking_words") | frozenset({"quick", "quickly"})
 
@@ -37,14 +41,17 @@ def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
         return None
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     items = [m for m in mentions if m.kind in ("item", "cue")]
-    if not items or any(
-        m.kind not in ("item", "person", "word", "self", "pronoun") for m in mentions
-    ):
+    if not items:
+        return None
+    said = [t.word for t in tokens]
+    if _mess(said, items) and all(m.kind in _TOLD or m.kind == "cue" for m in mentions):
+        # "red wax all over the floor": an operation's word ("wax") is the mess's thing too
+        return Finding("statement", piece, "a remark about a mess, asking nothing")
+    if any(m.kind not in _TOLD for m in mentions):
         return None
     at = next((k for k, t in enumerate(tokens) if k and t.word in _ON), None)
     if at is None:
         return None
-    said = [t.word for t in tokens]
     before = said[:at]
     if any(m.start < at for m in items):
         # "the stapler on my desk": the thing said first is asked for, brought there;
@@ -60,6 +67,16 @@ def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
 # where a thing asked for may be left: "coffee on my desk", "paper on the shelf"
 _RECEIVING = (PLACE_WORDS | english.words("surface_words")) - {"floor"}  # no one asks for the floor
 _WHOSE = frozenset({"my", "our", "the", "his", "her", "their", "your", "a", "this", "that"})
+
+
+def _mess(said: list[str], items: list[Mention]) -> bool:
+    """ "red wax all over the floor", "glitter everywhere again": a thing named, then said to be
+    spread over anything or everywhere: a mess told, never where to take it."""
+    for k, word in enumerate(said):
+        spread = word in _EVERYWHERE or (word == "over" and k and said[k - 1] == "all")
+        if spread and k and all(m.start < k - (word == "over") for m in items):
+            return True
+    return False
 
 
 def _after(items: list[Mention], at: int) -> bool:

@@ -581,18 +581,18 @@ def _maker(terms: Terms, item: str) -> Facility | None:
 
 _DEGREES = english_words("remark_degrees")
 _REMARK_TAILS = english_words("remark_tails")
+# "lovely day *to* eat lunch outside", "grim morning *for* a site visit"
+_DAYS = english_words("remark_days")
+_GOOD_FOR = frozenset({"to", "for"})
 
 
 def remark(terms: Terms, piece: Piece) -> bool:
     """ "so foggy today", "such a sunny morning", "what a miserable day": a remark on the
     weather or the day, with no verb: degree words, adjectives (a colleague's name that is
     also one, "so misty today", is the adjective here), and words of the day. It names
-    nothing of the office and asks nothing."""
+    nothing of the office and asks nothing; or names what the day is good for ("lovely day
+    to eat lunch outside"), whatever that names."""
     if piece.acts.request or piece.acts.imperative or piece.acts.question is not None:
-        return False
-    if any(
-        m.kind in ("item", "facility", "place", "self", "pronoun") for m in piece.lexed.mentions
-    ):
         return False
     words = content(piece.words)
     n = 0
@@ -603,6 +603,14 @@ def remark(terms: Terms, piece: Piece) -> bool:
         n += 1
     adjectives = n - degrees
     rest = words[n:]
+    if adjectives and len(rest) > 2 and rest[0] in _DAYS and rest[1] in _GOOD_FOR:
+        return not (
+            piece.acts.need or piece.acts.wish
+        )  # "lovely day to eat lunch outside": what the day is good for, told
+    if any(
+        m.kind in ("item", "facility", "place", "self", "pronoun") for m in piece.lexed.mentions
+    ):
+        return False
     if not adjectives or not all(w in _REMARK_TAILS for w in rest):
         return False
     return bool(degrees or rest)
