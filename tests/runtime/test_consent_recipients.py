@@ -26,6 +26,8 @@ RECIPIENT = (
     "hand {x} my {item} please",
     "my {item} is for {x}, can you drop it off",
     "lend {x} my {item}",
+    "leave my {item} with {x}",
+    "pls leave my {item} w/ {x}",  # the chat shorthand the reader writes out
 )
 EXPLANATION = (
     "because {b} asked for it",

@@ -40,6 +40,7 @@ import weakref
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
+from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.core import english, language
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
@@ -362,7 +363,8 @@ def _corrects(words: list[_Word], mentions: list[_Mention], k: int) -> bool:
 
 
 def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:
-    return _roles_in(_words_of(office), text, requester)
+    # read as the reader reads it: "leave it w/ Hal" is "leave it with Hal"
+    return _roles_in(_words_of(office), undotted(text), requester)
 
 
 # A reading depends on the office's words, the text and who wrote it only: remembered, as
