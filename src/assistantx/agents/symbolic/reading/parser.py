@@ -101,7 +101,7 @@ from assistantx.agents.symbolic.reading.purpose import (
     lacked_purposes,
     wanting_idioms,
 )
-from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader
+from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader, Readings
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
@@ -274,6 +274,11 @@ class InstructionParser:
             named_once=the_one_named(whole, requester),
         )
         if frame.understood:
+            # "a lemonade from the vending machine and Wang's stapler": the unlisted variety of
+            # the one thing the facility makes is that thing, beside the other objects too
+            as_made = self._variety_beside(readings, frame, request)
+            if as_made is not None:
+                return self._frame(whole, as_made, requester, sent_out, to_self, destination)
             # "need cable ties, the art room has some": the one kept where the requester said
             # (said anywhere, also in a statement the screen set aside)
             sources = stated_sources(self.office, whole.tokens, whole.mentions)
@@ -348,6 +353,20 @@ class InstructionParser:
             elif unknown is not None:
                 frame = TaskFrame(requester=requester, decline=unknown)
         return frame
+
+    def _variety_beside(self, readings: Readings, frame: TaskFrame, request: str) -> str | None:
+        """The request with an unlisted thing asked for from a facility ("a coke from the
+        vending machine") said as the one product of that facility it is a variety of, where
+        the frames read the request's other objects and dropped that one; None otherwise."""
+        unlisted = unlisted_thing(readings.mentions)
+        if unlisted is None:
+            return None
+        made = set(self.office.facility(unlisted[1]).products)
+        if any(t.kind == "produce" and t.item in made for t in frame.tasks):
+            return None
+        variety = variety_of(self.office, readings.mentions, unlisted[1])
+        said = with_choice(request, *variety) if variety is not None else None
+        return said if said is not None and said != request else None
 
     def _not_there(self, thing: str, facility_id: str) -> str:
         """The decline of a thing the facility named does not make or keep, with what it does."""
