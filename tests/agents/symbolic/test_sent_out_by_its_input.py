@@ -163,3 +163,26 @@ def test_a_thing_that_has_to_go_to_a_colleague_is_still_delivered(
 ) -> None:
     frame = _frame(text)
     assert [(t.kind, t.recipient) for t in frame.tasks] == [("transfer", recipient)], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Send my parcel off to the Harbour Cafe on Quay Street, and bring me Owen's stapler",
+        "bring me Owen's stapler and send my parcel off to the Harbour Cafe on Quay Street",
+    ],
+)
+def test_a_thing_sent_out_beside_another_request_is_still_sent(text: str) -> None:
+    """The other request's thing (a stapler no send-out service takes) does not make the
+    sending an errand outside: the thing sent is the one named after the sending verb."""
+    frame = _frame(text)
+    assert frame.decline is None and frame.question is None, frame
+    assert sorted((t.item, t.operation, t.destination) for t in frame.tasks) == [
+        ("parcel", "parcel_post", "the Harbour Cafe on Quay Street"),
+        ("stapler", None, None),
+    ], frame
+
+
+def test_another_thing_sent_outside_is_declined_as_before() -> None:
+    frame = _frame("send my stapler off to the Harbour Cafe on Quay Street")
+    assert frame.tasks == [] and frame.decline is not None, frame

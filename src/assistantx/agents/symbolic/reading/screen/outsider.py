@@ -148,10 +148,13 @@ def sends_its_input(terms: Terms, tokens: Sequence[Token], mentions: Sequence[Me
     inputs = {op.input for op in terms.office.operations if op.sends_out and op.input}
     if not inputs:
         return False
-    if not any(language.verb_lemmas(t.word) & _SENDING for t in tokens):
+    sending = [n for n, t in enumerate(tokens) if language.verb_lemmas(t.word) & _SENDING]
+    if not sending:
         return False
-    items = [m for m in mentions if m.kind == "item" and m.ids]
-    return bool(items) and all(set(m.ids) <= inputs for m in items)
+    # the thing sent: the first named after the verb ("send my parcel off ..., and bring me a
+    # latte": the latte is another request's)
+    sent = next((m for m in mentions if m.kind == "item" and m.ids and m.start > sending[0]), None)
+    return sent is not None and set(sent.ids) <= inputs
 
 
 def _made_for_outsiders(terms: Terms, mention: Mention) -> bool:
