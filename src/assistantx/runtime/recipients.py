@@ -17,7 +17,9 @@ words alone (never from a reasoner's reading), by the position of the name:
 - picked out as the one who needs it: "it's Hal who needs the copy, not me" (the cleft says
   who, where a plain "Hal wants it" may only be a wish);
 - a pronoun in one of those places ("take her my ice pack") when exactly one person the
-  requester named is neither an owner ("May's ice pack") nor the requester;
+  requester named is neither an owner ("May's ice pack") nor the requester, and such a
+  pronoun as the first of a verb's two objects, whatever the verb ("Hal needs a stapler,
+  can you sort him one?", "find her one");
 - a reply in their own chat that is just a name ("Hal Brooks.", "to Hal, please"): the
   answer to "Who should get it?";
 - a "Shall I ...?" of the assistant in the requester's chat, answered yes by the requester,
@@ -314,6 +316,23 @@ def _receiving(
     return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
 
 
+# What stands after the first object of "sort him one", "find her some", "get them a few":
+# a second object that is a thing, so the pronoun is the one it is for
+_SECOND_OBJECT = frozenset({"one", "some", "a", "an", "another", "any", "two", "few", "spare"})
+
+
+def _double_object(words: list[_Word], n: int) -> bool:
+    """Whether the pronoun at ``n`` is the first of a verb's two objects ("can you sort him
+    one?", "find her one", "get them some"): the one the thing is got for, whatever the
+    verb. "find her pen" (her own pen) has no second object, and a verb must come first."""
+    if n == 0 or words[n].opens or n + 1 >= len(words) or words[n + 1].opens:
+        return False
+    if words[n].folded not in _PRONOUNS or words[n + 1].folded not in _SECOND_OBJECT:
+        return False
+    verb = words[n - 1].folded
+    return bool(language.verb_lemmas(verb)) and verb not in _PRONOUNS
+
+
 _CLEFT_VERBS = frozenset({"need", "want", "use"})
 
 
@@ -396,7 +415,8 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
             _before(words, n), w.folded, after, _ahead(words, n)
         )
         if not at_place and (
-            w.folded not in _PRONOUNS or not _receiving(words, n, n + 1, False, operations)
+            w.folded not in _PRONOUNS
+            or not (_receiving(words, n, n + 1, False, operations) or _double_object(words, n))
         ):
             continue
         # the one person named who is not the owner of what is handed over (named after

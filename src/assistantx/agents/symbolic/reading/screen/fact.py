@@ -20,6 +20,7 @@ _BACK = tuple(
     sorted((tuple(p.split()) for p in english.entries("back_openers")), key=lambda p: -len(p))
 )
 _BACK_TIMES = english.words("back_times")
+_BACK_LEADS = english.words("back_leads")
 
 
 def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -139,14 +140,17 @@ def _bare_item_fact(
 
 
 def back_when(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    """ "back in an hour", "should be back after lunch": when someone said to be gone (or the
-    speaker) will be back, said with no subject; a time, never a thing to fetch (not "an
+    """ "back in an hour", "should be back after lunch", "just back from site", "back off the
+    hill": when someone said to be gone (or the speaker) will be or is back, said with no
+    subject; a time, never a thing to fetch (not "an
     hour", nor the lunch of "back after lunch"). "bring it back", "back to my desk with it
     pls" have a verb or a place and are read as before."""
     acts = piece.acts
     if piece.asks or acts.request or acts.imperative or acts.question is not None:
         return None
     words = content(piece.words)
+    while words and words[0] in _BACK_LEADS:  # "just back from site", "finally back"
+        words = words[1:]
     opener = next((p for p in _BACK if starts_with(words, 0, p)), None)
     if opener is None:
         return None
