@@ -40,6 +40,7 @@ EXPLANATION = (
 PRONOUN = (
     "{x} hurt {pos} hand, take {obj} my {item}",
     "{x} needs a {item}, please bring {obj} mine",
+    "{x} has no {item}. Please take my {item} to {obj}",  # a lack: whom it goes to
 )
 
 

@@ -473,10 +473,17 @@ def _said_to_need(words: list[_Word], m: _Mention) -> bool:
 _HAS = frozenset({"has", "have", "had"})
 
 
+# "has no", "has none", "has not got": a lack, not a having
+_NONE = frozenset({"no", "none", "nothing", "not", "nt"})
+
+
 def _holder(words: list[_Word], end: int) -> bool:
     """Whether the name ending at ``end`` is said to have something ("Rhys has a spare one,
-    bring it to her"): the one it comes from, never the "her" it goes to."""
-    return end < len(words) and words[end].folded in _HAS
+    bring it to her"): the one it comes from, never the "her" it goes to. One said to have
+    none ("Zoë has no headset, take her mine") lacks it: whom it goes to."""
+    if end >= len(words) or words[end].folded not in _HAS:
+        return False
+    return not (end + 1 < len(words) and words[end + 1].folded in _NONE)
 
 
 def _just_a_name(office: Office, text: str) -> frozenset[str]:
