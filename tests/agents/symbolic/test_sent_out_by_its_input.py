@@ -29,6 +29,15 @@ def _default() -> Office:
 _default_frame = frame_reader(_default, "mao")
 
 
+def _assert_sent(text: str, item: str, operation: str, destination: str) -> None:
+    """Nadia's ``item`` goes out by ``operation`` to ``destination``, asked nothing."""
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.item, t.owner, t.operation, t.destination) for t in frame.tasks] == [
+        (item, "nadia", operation, destination)
+    ], frame
+
+
 @pytest.mark.parametrize(
     ("text", "item", "operation", "destination"),
     [
@@ -61,11 +70,7 @@ _default_frame = frame_reader(_default, "mao")
 def test_its_input_sent_outside_is_the_send_out_service(
     text: str, item: str, operation: str, destination: str
 ) -> None:
-    frame = _frame(text)
-    assert frame.question is None and frame.decline is None, frame
-    assert [(t.item, t.owner, t.operation, t.destination) for t in frame.tasks] == [
-        (item, "nadia", operation, destination)
-    ], frame
+    _assert_sent(text, item, operation, destination)
 
 
 def test_on_an_office_whose_service_has_no_word_of_sending() -> None:
@@ -130,11 +135,7 @@ def test_an_office_with_no_send_out_service_declines_as_before() -> None:
 def test_a_thing_that_has_to_go_by_the_services_means_is_sent(
     text: str, item: str, operation: str, destination: str
 ) -> None:
-    frame = _frame(text)
-    assert frame.question is None and frame.decline is None, frame
-    assert [(t.item, t.owner, t.operation, t.destination) for t in frame.tasks] == [
-        (item, "nadia", operation, destination)
-    ], frame
+    _assert_sent(text, item, operation, destination)
 
 
 def test_a_role_then_its_holders_name_is_one_destination() -> None:
