@@ -195,11 +195,9 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         names = (spellings(terms, new.kind, said_no) & names) or names
     if not names:
         return text, []
-    pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
-    spots = list(re.finditer(rf"\b(?:{pattern})\b", before, re.IGNORECASE))
-    if not spots:
+    old = _last_said(names, before)
+    if old is None:
         return text, []
-    old = spots[-1]
     said = new.text.replace("’", "'").removesuffix("'s")
     if alone:
         # "robin" said alone: written as the person's name, so no later stage takes the
@@ -224,6 +222,15 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{said}")]
 
 
+def _last_said(names: set[str], text: str, *, with_s: bool = False) -> re.Match[str] | None:
+    """Where one of ``names`` (a person's spellings) is said last in ``text``, the longest
+    spelling first; ``with_s``: a possessive "'s" after it is part of the match (group "s")."""
+    pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
+    tail = r"(?P<s>['’]s\b)?" if with_s else r"\b"
+    spots = list(re.finditer(rf"\b(?:{pattern}){tail}", text, re.IGNORECASE))
+    return spots[-1] if spots else None
+
+
 def _to_speaker(
     terms: Terms, text: str, start: int, before: str, refused: Sequence[Token], rest: str
 ) -> tuple[str, list[Evidence]]:
@@ -233,11 +240,9 @@ def _to_speaker(
     names &= spellings(terms, "person", before)
     if not names:
         return text, []
-    pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
-    spots = list(re.finditer(rf"\b(?:{pattern})(?P<s>['’]s\b)?", before, re.IGNORECASE))
-    if not spots:
+    old = _last_said(names, before, with_s=True)
+    if old is None:
         return text, []
-    old = spots[-1]
     said = "my" if old.group("s") else "me"
     fixed = before[: old.start()] + said + before[old.end() :] + rest
     return fixed, [Evidence(words=text[start:].strip(), meaning=f"{REPLACED}the speaker")]

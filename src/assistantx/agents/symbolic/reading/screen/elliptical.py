@@ -117,16 +117,22 @@ _INTERJECTIONS = frozenset(
 )
 
 
+def _tells_of_things_only(piece: Piece) -> bool:
+    """A piece that only tells (no request, command, question, withdrawal or thanks) and
+    names no person or facility: what a statement of a thing amiss must be."""
+    a = piece.acts
+    if a.request or a.imperative or a.question is not None or a.withdrawal or a.thanks:
+        return False
+    return not any(m.kind in ("person", "facility") for m in piece.lexed.mentions)
+
+
 def _kind_amiss(piece: Piece) -> bool:
     """ "my charger is dead", "charger's dead", "my mouse died", "ran out of tape": a statement
     of one thing of a kind, its subject (the speaker's own, or said bare) or used up ("out
     of"), naming no one."""
-    a = piece.acts
-    if a.request or a.imperative or a.question is not None or a.withdrawal or a.thanks:
+    if not _tells_of_things_only(piece):
         return False
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
-    if any(m.kind in ("person", "facility") for m in mentions):
-        return False
     items = [m for m in mentions if m.kind == "item"]
     if len({m.ids for m in items}) != 1:
         return False
@@ -216,12 +222,9 @@ def _own_one_amiss(piece: Piece, asked: tuple[str, ...]) -> bool:
     statement beside an ask for one is why they ask, never the thing asked for. A piece that
     asks for anything itself, names a person or another thing ("want to print my draft"), or
     asks a question is not."""
-    a = piece.acts
-    if a.request or a.imperative or a.question is not None or a.withdrawal or a.thanks:
+    if not _tells_of_things_only(piece):
         return False
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
-    if any(m.kind in ("person", "facility") for m in mentions):
-        return False
     items = [n for n, m in enumerate(mentions) if m.kind == "item"]
     if items:  # "my charger is dead": the speaker's own, said by its name
         return all(
