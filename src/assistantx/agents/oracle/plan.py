@@ -9,7 +9,7 @@ need no visit (forwarding a file), the visits, and the final deliveries, in that
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from assistantx.core import task_kinds
@@ -80,8 +80,21 @@ class TaskPlan:
         return next(r for r in self.roles if r.key == key)
 
     def add_role(self, role: Role) -> None:
-        if all(r.key != role.key for r in self.roles):
-            self.roles.append(role)
+        """Add ``role``; a person already in the plan for another part (the one who receives
+        the requester's item and lends their own in return) is asked both things at once, so
+        the lend question, where their yes is given, is never dropped."""
+        for n, known in enumerate(self.roles):
+            if known.key != role.key:
+                continue
+            if role.question not in known.question:
+                self.roles[n] = replace(
+                    known,
+                    question=f"{known.question} {role.question}",
+                    wants_file=known.wants_file or role.wants_file,
+                    own_item_leaves=known.own_item_leaves or role.own_item_leaves,
+                )
+            return
+        self.roles.append(role)
 
     def add_goal(self, milestone: Milestone) -> None:
         if milestone not in self.goal:
