@@ -641,14 +641,17 @@ def _role_key(phase: Phase) -> str | None:
 def role_text(role: Role, office: Office) -> str:
     """What the role's person is asked to do, in words: "lend a stapler"."""
     thing = item_type_name(office, role.item_type) if role.item_type else "it"
-    article = "" if thing == "it" else "a "
+    if thing == "it":
+        a_one = thing
+    else:  # "an umbrella", "some glue", "a pair of scissors"
+        a_one = a_thing(thing, mass=office.item_type(role.item_type or "").mass)
     the = thing if thing == "it" else f"the {thing}"
     shape = kind_shape(role.kind)
     if shape is not None and shape != "make":  # the office's own name for its operation
         op = role.operation or next((o.id for o in office.with_shape(shape)), None)
         verb = office.operation(op).name if op else role.kind
         return f"{verb} {the}"
-    return wording("role_wording").get(role.kind, "help").format(a=f"{article}{thing}", the=the)
+    return wording("role_wording").get(role.kind, "help").format(a=a_one, the=the)
 
 
 def describe(task: Task, office: Office, you: str | None = None) -> str:

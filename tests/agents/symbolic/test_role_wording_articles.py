@@ -1,0 +1,27 @@
+"""What a role's person is asked to do takes the article its noun takes: "no one could lend
+an umbrella", never "a umbrella" (the wording used a bare "a " before every item type)."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistantx.agents.symbolic.planning import role_text
+from assistantx.agents.symbolic.roles import Role
+from helpers.dataset_offices import default_office, harbour_office
+
+
+@pytest.mark.parametrize(
+    ("office", "item_type", "expected"),
+    [
+        ("harbour", "umbrella", "lend an umbrella"),
+        ("harbour", "ruler", "lend a ruler"),
+        ("default", "scissors", "lend a pair of scissors"),
+        ("default", "stapler", "lend a stapler"),
+    ],
+)
+def test_the_lend_wording_takes_the_nouns_article(
+    office: str, item_type: str, expected: str
+) -> None:
+    the_office = harbour_office() if office == "harbour" else default_office()
+    role = Role(key="0.source", kind="lend", requester="x", item_type=item_type)
+    assert role_text(role, the_office) == expected
