@@ -14,7 +14,7 @@ import itertools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from assistantx.agents.symbolic.reading import at_hand
+from assistantx.agents.symbolic.reading import at_hand, shared_object
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.doer_nouns import is_doer_noun
 from assistantx.agents.symbolic.reading.lexicon import Mention
@@ -581,6 +581,18 @@ class TaskReader:
             if self.kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
                 doc = Mention("item", -1, -1, (previous.item,))
                 roles.owners[-1] = previous.owner or requester
+        if (
+            doc is None
+            and not items
+            and previous is not None
+            and previous.item is not None
+            and self.kinds.get(previous.item) == "personal"
+            and shared_object.opens_with_participle(clause.mentions)
+        ):
+            # "I need this photocopied and signed by Mark": the second participle's object
+            # is the first one's
+            doc = Mention("item", -1, -1, (previous.item,))
+            roles.owners[-1] = previous.owner or requester
         if (
             doc is None
             and not items
