@@ -14,7 +14,9 @@ import itertools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading import at_hand, shared_object
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
+from assistantx.agents.symbolic.reading.doer_nouns import is_doer_noun
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.made_from import input_of_product
 from assistantx.agents.symbolic.reading.stated_source import says_has_some
@@ -511,6 +513,15 @@ class TaskReader:
             for m in facilities_said
         ):
             cues.add("copy")
+        # "run this through the copier" where the printer also prints: the name said for the
+        # machine is the doer noun of its copying verb, so its copying is asked (doer_nouns)
+        if any(
+            word_before(m) in _TO_FACILITY | _THROUGH
+            and not persons_place(m)
+            and self._names_transform(m)
+            for m in facilities_said
+        ):
+            cues.add("copy")
         # "run my drawing through the plotter", "put my file on the printer": a file taken
         # to a facility that renders files asks for that rendering (which of the office's
         # renderings, the facility's own: operations.py)
@@ -570,6 +581,33 @@ class TaskReader:
             if self.kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
                 doc = Mention("item", -1, -1, (previous.item,))
                 roles.owners[-1] = previous.owner or requester
+        if (
+            doc is None
+            and not items
+            and previous is not None
+            and previous.item is not None
+            and self.kinds.get(previous.item) == "personal"
+            and shared_object.opens_with_participle(clause.mentions)
+        ):
+            # "I need this photocopied and signed by Mark": the second participle's object
+            # is the first one's
+            doc = Mention("item", -1, -1, (previous.item,))
+            roles.owners[-1] = previous.owner or requester
+        if (
+            doc is None
+            and not items
+            and previous is None
+            and at_hand.points_at_hand(clause.mentions, bool(facilities))
+        ):
+            # "copy this please", "run it through the laminator": the thing held out is the
+            # requester's own item of the type the service works on
+            doer = [*roles.actor, *roles.bare, *(p for p in roles.recipient if p != requester)]
+            held = at_hand.held_type(
+                self.office, clause.mentions, cues, facilities, requester, bool(doer)
+            )
+            if held is not None:
+                doc = Mention("item", -1, -1, (held,))
+                roles.owners[-1] = requester
         return Scene(
             clause,
             roles,
@@ -590,6 +628,20 @@ class TaskReader:
             self.office.signable_type(),
             self.tool_owners,
         )
+
+    def _names_transform(self, m: Mention) -> bool:
+        """Whether the facility's name as said is the doer noun of a verb of one of its
+        operations that makes something from an item ("copier" of "copy")."""
+        said = language.words(m.text)
+        if not said:
+            return False
+        for op_id in self.office.facility(m.id).operations:
+            op = self.office.operation(op_id)
+            if op.shape(self.office) == "transform" and any(
+                is_doer_noun(said[-1], v.split()[0]) for v in op.verbs
+            ):
+                return True
+        return False
 
     def _facility_doing(self, clause: Clause, items: list[Mention], roles: Roles) -> set[str]:
         """ "could the reel reader do my slide?", "can the sealer take my chart?": a facility

@@ -193,7 +193,9 @@ def described_by_participles(
             continue
         if after.start != m.end or tokens[after.start].opens or tokens[after.start].after_pause:
             continue
-        if after.kind == "word" and (after.ids[0] in COMMON or not language.is_noun(after.ids[0])):
+        if after.kind == "word" and after.ids[0] in COMMON:
+            continue  # "this scanned *and* signed": a function word, no noun described
+        if after.kind == "word" and not language.is_noun(after.ids[0]):
             if language.lemmas(after.ids[0]):  # a word the dictionary knows, but not as a noun
                 continue
         elif after.kind not in ("item", "word"):

@@ -344,6 +344,10 @@ class SpeechActs:
                     return False  # "scrap my old tyre" where the office scraps tyres
                 if tuple(rest) in _WITHDRAW_WHOLE:
                     return True  # "actually no, don't bother": one withdrawal said twice
+                if language.is_present_participle(rest[0]) if rest else False:
+                    # "never mind copying this", "forget about printing it": the gerund of
+                    # a service is what is withdrawn, its object, never a command
+                    return True
                 return not rest or not self._imperative(rest)
         # "no forget it", "nah never mind", "(oh) wait never mind", "no don't bother": a
         # refusal word or a "wait" before a withdrawal only stresses it ("wait for me"

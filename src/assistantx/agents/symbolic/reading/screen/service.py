@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.at_hand import POINTERS
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.outsider import outsider_recipient
+from assistantx.agents.symbolic.reading.screen.passed_through import through_a_facility
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -107,6 +109,8 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
             nxt = words[at + 1] if at + 1 < len(words) else ""
             ours = verb in terms.lex.cue_words or verb in terms.office_words
             if not ours or (verb not in terms.lex.cue_words and nxt in DETERMINERS):
+                if through_a_facility(terms, piece.text):
+                    continue  # "feed this through the shredder": that facility's service
                 return decline_service(terms, piece, verb, nor=nor)
         cue = next((n for n, w in enumerate(words) if terms.request_verb(words, n)), None)
         if cue is None:
@@ -176,6 +180,8 @@ def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
     word = words[at]
     if word in terms.office_words or word in terms.en.serial_verbs or word in _ASKEES:
         return None  # "could someone print it": who is asked, no modifier of the verb
+    if word in POINTERS or word in DETERMINERS:
+        return None  # "I need this photocopied": the object before its participle
     kinds = set(language.lemmas(word))
     glued = any(c.isdigit() for c in word) and any(c.isalpha() for c in word)
     if glued or ("NOUN" in kinds and not kinds & {"ADV", "ADJ"}):
