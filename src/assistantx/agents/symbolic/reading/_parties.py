@@ -14,6 +14,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
+from assistantx.agents.symbolic.reading.source_not_recipient import not_the_source
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import yours_addressed
@@ -343,11 +344,14 @@ def clause_roles(
     *,
     addressed: str | None = None,
     not_meant: frozenset[str] = frozenset(),
+    taken_from: Sequence[str] = (),
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
     "your" is theirs, ``vocative``); ``not_meant``: colleagues a "him"/"her" that receives
-    cannot mean (the owner of the thing handed to them, ``frames._besides_owners``)."""
+    cannot mean (the owner of the thing handed to them, ``frames._besides_owners``);
+    ``taken_from``: whom an earlier clause took the thing this one hands on from ("get it from
+    June and bring it to her": not June)."""
     roles = Roles()
     ms = clause.mentions
     for n, m in enumerate(ms):
@@ -394,6 +398,9 @@ def clause_roles(
             dative = (
                 prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
             )
+            if prev in ("to", "for") or dative:
+                # "take it from Pat to her": not Pat, the one it is taken from
+                others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)
             if (prev in ("to", "for") or dative) and len(set(others)) != 1:
                 # never the requester by default, nor the last of two people named ("Thảo's
                 # on the ladder and Ivy's busy, take her a stool": whom?)
