@@ -30,6 +30,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.asked_sender import sent_by_the_asked
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
@@ -191,6 +192,8 @@ class FrameReader:
             earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            # "could Mark send me his file?": Mark's own, sent by him
+            made = sent_by_the_asked(made, _asked_subjects(tokens, clause), clause, tokens)
             made = _to_each(made, roles)
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
@@ -884,7 +887,10 @@ def _to_each(made: list[Task], roles: Roles) -> list[Task]:
     named as a recipient (a copy costs nothing; one physical item could not)."""
     if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
         return made
-    people = list(dict.fromkeys([*roles.recipient, *roles.bare]))
+    # "could Mark send me his file?": Mark sends it; a file is never passed on to whose it is
+    people = [p for p in dict.fromkeys([*roles.recipient, *roles.bare]) if p != made[0].owner]
+    if len(people) == 1:
+        return [made[0].model_copy(update={"recipient": people[0]})]
     if len(people) < 2:
         return made
     return [made[0].model_copy(update={"recipient": who}) for who in people]
