@@ -47,6 +47,7 @@ from assistantx.core import english, language
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
+from assistantx.core.occasion_noun import occasion_noun
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.core.ranks import rank_titles
@@ -187,7 +188,7 @@ class _OfficeWords:
     several readings per consent check, on the event loop). The names are looked up by their
     first word, longest first, so a text is read in one pass, not once per name."""
 
-    __slots__ = ("items", "name_words", "names_by_first", "operations")
+    __slots__ = ("items", "name_words", "names_by_first", "operations", "rooms")
 
     def __init__(self, office: Office) -> None:
         self.names_by_first: dict[str, list[tuple[tuple[str, ...], frozenset[str]]]] = {}
@@ -196,6 +197,15 @@ class _OfficeWords:
         self.items = _item_words(office)
         self.name_words = _name_words(office)
         self.operations = _operation_verbs(office)
+        # the words of the office's rooms and facilities ("post desk", "lounge")
+        self.rooms = frozenset(
+            w
+            for name in (
+                *(loc.name for loc in office.locations),
+                *(n for f in office.facilities for n in (f.name, *f.synonyms)),
+            )
+            for w in language.fold(name).split()
+        )
 
 
 OFFICES_KEPT = 16  # offices whose words are kept (a service serves a few)
@@ -409,6 +419,9 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
             receiving_end = m.end
             last_receiver = m.people
     named -= refused
+    for m in mentions:  # "for Grace's meeting": whose occasion the thing is for
+        if _for_an_occasion(words, m, office_words):
+            named |= m.people
     for n, w in enumerate(words):
         after = words[n + 1].folded if n + 1 < len(words) else ""
         at_place = pronoun_receiving_place(  # "at her desk", not "the one on her desk"
@@ -450,6 +463,29 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         if len(candidates) == 1:
             named |= candidates
     return frozenset(named - {requester})
+
+
+def _for_an_occasion(words: list[_Word], m: _Mention, office_words: _OfficeWords) -> bool:
+    """ "bring some tape to the post desk for Grace's meeting": a possessive after "for"
+    before a word that names an occasion of theirs (``core.occasion_noun``), not a thing of
+    the office ("for Grace's ruler" is hers, whoever gets it), in words that take the thing
+    to a room: the one it is for."""
+    if not m.possessive or m.end >= len(words) or _before(words, m.start) != "for":
+        return False
+    nxt = words[m.end].folded
+    if nxt in office_words.items or words[m.end].opens or words[m.end].after_pause:
+        return False
+    return occasion_noun(nxt) and _taken_to_a_room(words, office_words.rooms)
+
+
+def _taken_to_a_room(words: list[_Word], rooms: frozenset[str]) -> bool:
+    """Whether the words take a thing "to"/"into" a room of the office ("to the post desk"),
+    as the reader's ``occasion.taken_to_a_room``: without one, an occasion says only why."""
+    return any(
+        w.folded in ("to", "into")
+        and any(x.folded in rooms for x in words[n + 1 : n + 4] if x.folded not in _ARTICLES)
+        for n, w in enumerate(words)
+    )
 
 
 # "needs", "is after", "could do with" (``need_phrases``): said right after a name; after a

@@ -39,6 +39,7 @@ def _site(
 _DESK = Mention("word", 3, 4, ("desk",))
 _SIGN = Mention("cue", 3, 4, ("sign",))
 _ITEM = Mention("item", 3, 4, ("stapler",))
+_MEETING = Mention("word", 3, 4, ("meeting",))
 
 PERSON_CASES = [
     (
@@ -53,6 +54,11 @@ PERSON_CASES = [
     (_site("from", following=_DESK, possessive=True), "from Wang's desk: the source"),
     (_site("", following=_DESK, possessive=True), "Wang's desk: named, no role yet"),
     (_site("get", following=_SIGN, possessive=True), "Wang's signature: Wang signs"),
+    (
+        replace(_site("for", following=_MEETING, possessive=True), occasion=True),
+        "for Grace's meeting: whose occasion it is receives, unless another is named",
+    ),
+    (_site("for", following=_MEETING, possessive=True), "Wang's stapler: an owner of the item"),
     (_site("from", following=_ITEM, possessive=True), "Wang's stapler: an owner of the item"),
     (_site("because", nxt="needs"), "because Rich ...: the reason, not a party"),
     (

@@ -14,6 +14,8 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
+from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
+from assistantx.agents.symbolic.reading.source_not_recipient import not_the_source
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import yours_addressed
@@ -80,6 +82,9 @@ class Roles:
     actor: list[str] = field(default_factory=list)
     bare: list[str] = field(default_factory=list)
     owners: dict[int, str] = field(default_factory=dict)  # item mention start → owner id
+    # "for Grace's meeting": whose occasion the thing is for (the recipient if none is named)
+    occasion: list[str] = field(default_factory=list)
+    occasion_at: list[int] = field(default_factory=list)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -119,6 +124,7 @@ class PersonSite:
     to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
     # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
     work_named: Mention | None = None
+    occasion: bool = False  # an occasion of theirs follows the possessive: "Grace's meeting"
     ahead: Ahead = field(
         default_factory=Ahead
     )  # the words before ``prev``: "the one" in "the one on Wang's desk"
@@ -144,7 +150,7 @@ class PersonSite:
         return self.following.ids[0] if self.at_place and self.following is not None else ""
 
 
-Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner", "context"]
+Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner", "context", "occasion"]
 
 
 @dataclass(frozen=True)
@@ -178,6 +184,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
             )
         ),
         "actor",
+    ),
+    PersonRule(
+        "for Grace's meeting: whose occasion it is receives, unless another is named",
+        lambda s: s.possessive and s.prev == "for" and s.occasion,
+        "occasion",
     ),
     PersonRule("Wang's stapler: an owner of the item", lambda s: s.possessive, "owner"),
     PersonRule(
@@ -278,7 +289,8 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         ),
     )
     if m.possessive:
-        site = replace(site, work_named=_work_after(tokens, ms, n))
+        occasion = is_occasion(tokens, site.following, m.end)
+        site = replace(site, work_named=_work_after(tokens, ms, n), occasion=occasion)
     match person_rule(site).slot:
         case "recipient":
             roles.add_recipient(who, m.start)
@@ -296,6 +308,9 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             pass  # attached to the item that follows (``owner_of``)
         case "context":
             pass  # why the request was made ("because Rich asked"): no role in it
+        case "occasion":
+            roles.occasion.append(who)
+            roles.occasion_at.append(m.start)
 
 
 # How many describing words may stand between a possessive and the work it names ("Ngozi's
@@ -343,11 +358,14 @@ def clause_roles(
     *,
     addressed: str | None = None,
     not_meant: frozenset[str] = frozenset(),
+    taken_from: Sequence[str] = (),
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
     "your" is theirs, ``vocative``); ``not_meant``: colleagues a "him"/"her" that receives
-    cannot mean (the owner of the thing handed to them, ``frames._besides_owners``)."""
+    cannot mean (the owner of the thing handed to them, ``frames._besides_owners``);
+    ``taken_from``: whom an earlier clause took the thing this one hands on from ("get it from
+    June and bring it to her": not June)."""
     roles = Roles()
     ms = clause.mentions
     for n, m in enumerate(ms):
@@ -394,6 +412,9 @@ def clause_roles(
             dative = (
                 prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
             )
+            if prev in ("to", "for") or dative:
+                # "take it from Pat to her": not Pat, the one it is taken from
+                others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)
             if (prev in ("to", "for") or dative) and len(set(others)) != 1:
                 # never the requester by default, nor the last of two people named ("Thảo's
                 # on the ladder and Ivy's busy, take her a stool": whom?)
@@ -404,6 +425,9 @@ def clause_roles(
             owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
             if owner is not None:
                 roles.owners[m.start] = owner
+    if roles.occasion and not roles.recipient and taken_to_a_room(tokens, ms):
+        # "take a ruler to the lounge for Mark's workshop": Mark, as nobody else receives it
+        roles.add_recipient(roles.occasion[-1], roles.occasion_at[-1])
     return roles
 
 

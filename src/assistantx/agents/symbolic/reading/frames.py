@@ -30,6 +30,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.asked_sender import sent_by_the_asked
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
@@ -47,6 +48,7 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
+from assistantx.agents.symbolic.reading.source_not_recipient import taken_from
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.agents.symbolic.reading.work_unsaid import which_work
@@ -130,11 +132,21 @@ class FrameReader:
         answered: set[int] = set()  # clauses that only named whom a pronoun meant
         addressed = addressed_person(tokens, readings.mentions, readings.gaps)
         placed: dict[str, str] = {}  # item type → the one a place phrase named
+        said_from: list[str] = []  # whom the clauses take a thing from ("from Pat")
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
+            # "get it from June and bring it to her": the same thing, so not June
+            passed_on = said_from if self._passes_it_on(clause, tokens) else []
             try:
-                roles = clause_roles(tokens, clause, requester, last_person, addressed=addressed)
+                roles = clause_roles(
+                    tokens,
+                    clause,
+                    requester,
+                    last_person,
+                    addressed=addressed,
+                    taken_from=passed_on,
+                )
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
                 if later is None and named_once is not None:
@@ -150,9 +162,19 @@ class FrameReader:
                 else:
                     # "bring me his stapler. Zhang Wei": the answer names him
                     answered.add(later[0])
-                    roles = clause_roles(
-                        tokens, clause, requester, [*last_person, later[1]], addressed=addressed
-                    )
+                    try:
+                        roles = clause_roles(
+                            tokens,
+                            clause,
+                            requester,
+                            [*last_person, later[1]],
+                            addressed=addressed,
+                            taken_from=passed_on,
+                        )
+                    except UnresolvedPronoun:
+                        # "take it from Faith to him": the one named is whom it comes from
+                        unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
+                        return TaskFrame(requester=requester, question=unclear)
             unclear_place = kept_owners(self.office, tokens, clause, roles, requester, placed)
             if unclear_place is not None:  # "the ladder in the kitchen", where none is kept
                 return TaskFrame(requester=requester, question=unclear_place)
@@ -170,6 +192,8 @@ class FrameReader:
             earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            # "could Mark send me his file?": Mark's own, sent by him
+            made = sent_by_the_asked(made, _asked_subjects(tokens, clause), clause, tokens)
             made = _to_each(made, roles)
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
@@ -226,6 +250,7 @@ class FrameReader:
             previous_cues = bool(clause.cues)
             previous_places = {m.id for m in clause.mentions if m.kind == "place"}
             previous_roles = roles
+            said_from += roles.source
             previous_asked = _asked_subjects(tokens, clause)
             again = _one_more(tasks, clause, tokens, roles, made)
             if again is not None:
@@ -239,6 +264,8 @@ class FrameReader:
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
         tasks = [self._given_back(t, holder) for t in tasks]
+        # "Ms Okafor needs her tape back, take it from Pat to her": Pat hands it over
+        tasks = [taken_from(self.office, t, said_from) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
         tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
@@ -346,6 +373,13 @@ class FrameReader:
             f.id for f in self.office.facilities if f.location in places and set(f.operations) & ops
         ]
         return found[0] if len(found) == 1 else None
+
+    @staticmethod
+    def _passes_it_on(clause: Clause, tokens: Sequence[Token]) -> bool:
+        """Whether the clause hands on a thing said before by "it"/"them", naming none."""
+        return any(
+            m.kind == "pronoun" and tokens[m.start].word in ("it", "them") for m in clause.mentions
+        ) and not any(m.kind == "item" for m in clause.mentions)
 
     @staticmethod
     def _refers_back(clause: Clause) -> bool:
@@ -853,7 +887,10 @@ def _to_each(made: list[Task], roles: Roles) -> list[Task]:
     named as a recipient (a copy costs nothing; one physical item could not)."""
     if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
         return made
-    people = list(dict.fromkeys([*roles.recipient, *roles.bare]))
+    # "could Mark send me his file?": Mark sends it; a file is never passed on to whose it is
+    people = [p for p in dict.fromkeys([*roles.recipient, *roles.bare]) if p != made[0].owner]
+    if len(people) == 1:
+        return [made[0].model_copy(update={"recipient": people[0]})]
     if len(people) < 2:
         return made
     return [made[0].model_copy(update={"recipient": who}) for who in people]

@@ -51,6 +51,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
 )
 from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers
+from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, task_kinds
@@ -273,6 +274,8 @@ class Lexicon:
     # "Dr. Kim" of another (word → the people it is declared for, bare or after a title)
     bare: dict[str, set[str]] = field(default_factory=dict)
     titled: dict[str, set[str]] = field(default_factory=dict)
+    # family name → whose it is ("Mr Yang": Yang Lei, not Liu Yang; ``surnames``)
+    family: dict[str, set[str]] = field(default_factory=dict)
     # a one-word title declared with its article ("the Provost"): (article, word) pairs, so
     # "the provost" written so is the person, never the ordinary word
     with_article: set[tuple[str, str]] = field(default_factory=set)
@@ -369,6 +372,7 @@ class Lexicon:
                         lex.roles.setdefault(word, set()).add(p.id)
                 lex._declare(p.id, said)
             lex._declare(p.id, language.fold(p.name).replace(".", " ").split())
+        lex.family = family_names(office, key_of)
         lex.alias_words = {
             key_of(alias)
             for p in office.people
@@ -511,9 +515,12 @@ class Lexicon:
         prev = tokens[i - 1].word if i > 0 else ""
         if prev in TITLES and prev not in ("a", "an", "the", "our") and word in self.titled:
             return self.titled[word]
+        found = self.people.get(word, set()) | self.name_words.get(word, set())
+        family = self.family.get(word, set()) & found
+        if after_title(prev) and family and len(found) > 1:
+            return family  # "Mr Yang": a title goes with a family name
         if word in self.bare:
             return self.bare[word]
-        found = self.people.get(word, set()) | self.name_words.get(word, set())
         alike = {
             p
             for other in self.sound_alike.get(word, ())

@@ -31,6 +31,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import unread_paper
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -169,6 +170,10 @@ def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str
     is asked (naming who looks after it), never the place dropped and the item brought back
     to the requester."""
     tokens = readings.tokens
+    # "to the post desk for Grace's meeting": where Grace's meeting is; she gets it
+    occasions = occasion_people(tokens, readings.mentions)
+    if occasions and all(t.recipient in occasions for t in frame.tasks):
+        return None
     for m in readings.mentions:
         if m.kind not in ("place", "facility") or m.start < 1:
             continue

@@ -31,6 +31,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Mention,
     describing_participles,
 )
+from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
@@ -347,6 +348,8 @@ class MentionReader:
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
             if m.kind == "facility" and _where_an_item_is_wanted(tokens, mentions, n):
                 continue  # "a tape measure in the rehearsal room": the place, not its service
+            if m.kind == "facility" and _where_an_occasion_is(tokens, mentions, n):
+                continue  # "to the lounge for Mark's workshop": where it is, not its service
             if m.kind == "facility" and self._unsupported_facility(m.id):
                 f = self.office.facility(m.id)
                 out.append(
@@ -389,6 +392,19 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
     if before not in _LOCATION_PREPOSITIONS and not taken_from:
         return False
     return any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
+
+
+def _where_an_occasion_is(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """ "take a ruler to the lounge for Mark's workshop": a facility a thing is taken to, in
+    a sentence that names a colleague's occasion the thing is for, is where the occasion is,
+    not which service is asked for (``occasion``)."""
+    start = mentions[n].start
+    while start > 0 and tokens[start - 1].word in _ARTICLES:
+        start -= 1
+    if start == 0 or tokens[start - 1].word not in ("to", "into"):
+        return False
+    has_item = any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
+    return has_item and bool(occasion_people(tokens, mentions))
 
 
 _OWN = ("my", "our")

@@ -14,6 +14,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.english import phrases_pattern, split_words
+from assistantx.agents.symbolic.reading.screen.thing_then_need import need_after_thing
 from assistantx.agents.symbolic.reading.speech_acts import Acts
 from assistantx.core import english
 
@@ -74,6 +75,7 @@ def _clauses(chunk: str) -> list[tuple[int, str]]:
     breaks = [m.end() for m in _CLAUSE_BREAK.finditer(chunk)]
     if _OWN_DOING.match(chunk.lstrip()):
         breaks += [m.end() for m in _NEED_JOINED.finditer(chunk)]
+    breaks += need_after_thing(chunk)  # "my lunch is stuck in the fridge and I need it"
     cuts = [0, *sorted(set(breaks)), len(chunk)]
     return [(a, chunk[a:b]) for a, b in itertools.pairwise(cuts)]
 

@@ -1,0 +1,63 @@
+"""A title goes with a surname: "Ms Okafor", "Mr Yang", "Prof Sato".
+
+Which word of a full name is the family name is the office's own data: where it writes a
+title before a name in an alias ("Dr. Zhang" of Zhang Wei, "Professor Kowalski" of Art
+Kowalski), the word after the title is the first or the last word of that person's full
+name, and the office writes its names in that order throughout (family name first, or
+last). An office that declares no titled alias is read the English way: the family name last.
+
+A name word that is one person's family name and another's given name ("Yang": Yang Lei's
+family name, Liu Yang's given name) means, after a title, the one whose family name it is;
+bare, it is still asked about.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from assistantx.core import language
+from assistantx.core.office import Office
+from assistantx.core.ranks import COURTESY_TITLES
+from assistantx.memory.names import TITLES
+
+# the titles of address before a family name (not the articles of the titles' list)
+_ADDRESS = frozenset(TITLES) - {"a", "an", "the", "our"}
+
+
+def family_first(office: Office) -> bool:
+    """Whether the office writes family names first: more of its titled aliases name the
+    first word of the full name than the last (none: the English order, family name last)."""
+    first = last = 0
+    for p in office.people:
+        words = _words(p.name)
+        if len(words) < 2:
+            continue
+        for alias in p.aliases:
+            said = _words(alias)
+            if len(said) != 2 or said[0] not in _ADDRESS:
+                continue
+            first += said[1] == words[0]
+            last += said[1] == words[-1]
+    return first > last
+
+
+def family_names(office: Office, key: Callable[[str], str]) -> dict[str, set[str]]:
+    """The family name of each person of several name words, by ``key`` (the lexicon's
+    lookup key) → the people whose family name it is."""
+    at = 0 if family_first(office) else -1
+    found: dict[str, set[str]] = {}
+    for p in office.people:
+        words = p.name.split()
+        if len(words) > 1 and (k := key(words[at])):
+            found.setdefault(k, set()).add(p.id)
+    return found
+
+
+def after_title(prev: str) -> bool:
+    """Whether the word ``prev`` is a title of address ("Mr", "Ms", "Dr", "Prof") or a
+    courtesy title, not an article."""
+    return prev in _ADDRESS or (prev in COURTESY_TITLES and prev not in ("a", "an", "the", "our"))
+
+
+def _words(name: str) -> list[str]:
+    return language.fold(name).replace(".", " ").split()
