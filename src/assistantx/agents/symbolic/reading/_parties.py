@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
@@ -117,6 +118,9 @@ class PersonSite:
     obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
     stood_in_for: bool = False  # "covering chem for Zhang": whom the speaker stands in for
     to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
+    # "make Zhang a copy", "print Mark my file": after a giving or making verb, before the
+    # thing's noun phrase (``indirect_object``)
+    indirect: bool = False
     # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
     work_named: Mention | None = None
     ahead: Ahead = field(
@@ -228,6 +232,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "recipient",
     ),
     PersonRule(
+        "make Zhang a copy, print Mark my file: whom the thing made is for",
+        lambda s: s.indirect,
+        "recipient",
+    ),
+    PersonRule(
         "Rich asked for it, Hal said so: the subject of a statement, not a party",
         lambda s: s.subject,
         "context",
@@ -276,6 +285,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             prev_word(tokens, m.start),  # "could Mr K have": the title skipped
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
+        indirect=is_indirect_object(tokens, ms, n, prev),
     )
     if m.possessive:
         site = replace(site, work_named=_work_after(tokens, ms, n))
@@ -393,7 +403,7 @@ def clause_roles(
             # "take her my ice pack", "bring her some": she receives (not "forward them to")
             dative = (
                 prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
-            )
+            ) or is_indirect_object(tokens, ms, n, prev)
             if (prev in ("to", "for") or dative) and len(set(others)) != 1:
                 # never the requester by default, nor the last of two people named ("Thảo's
                 # on the ladder and Ivy's busy, take her a stool": whom?)
