@@ -41,6 +41,8 @@ PRONOUN = (
     "{x} hurt {pos} hand, take {obj} my {item}",
     "{x} needs a {item}, please bring {obj} mine",
     "{x} has no {item}. Please take my {item} to {obj}",  # a lack: whom it goes to
+    # the perfect of "be": a state she was in, no having of anything
+    "{x} has been out on site all day, take {obj} my {item}",
 )
 
 
@@ -234,4 +236,17 @@ def test_a_lower_case_name_said_as_a_correction_is_the_receiver() -> None:
 def test_the_one_said_to_have_it_is_no_receiver_of_her(text: str) -> None:
     """Blind round 36 after its fixes: the reader gave Miles's headset to Nell, and the
     guard refused Nell, counting "Miles has a spare one" as the one "her" may mean."""
+    assert named_recipients(drill_shed(), memory("sunny", text)) == {"nell"}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Nell has been out in the rain all morning, bring her my headset",
+        "Nell has been at the dentist, could you take her my headset when she's back",
+    ],
+)
+def test_one_who_has_been_somewhere_is_no_holder(text: str) -> None:
+    """Blind round 72's class: "has been" was read as "has" (a holder), so the guard refused
+    the one "her" means the code for the thing the reader handed to her."""
     assert named_recipients(drill_shed(), memory("sunny", text)) == {"nell"}

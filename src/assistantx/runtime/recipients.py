@@ -516,10 +516,14 @@ _NONE = frozenset({"no", "none", "nothing", "not", "nt"})
 def _holder(words: list[_Word], end: int) -> bool:
     """Whether the name ending at ``end`` is said to have something ("Rhys has a spare one,
     bring it to her"): the one it comes from, never the "her" it goes to. One said to have
-    none ("Zoë has no headset, take her mine") lacks it: whom it goes to."""
+    none ("Zoë has no headset, take her mine") lacks it: whom it goes to; one who "has been"
+    somewhere holds nothing by that."""
     if end >= len(words) or words[end].folded not in _HAS:
         return False
-    return not (end + 1 < len(words) and words[end + 1].folded in _NONE)
+    after = words[end + 1].folded if end + 1 < len(words) else ""
+    # "Grace has been out on site all day, take her a ruler": "has been" is the perfect of
+    # "be", a state she was in, no having
+    return after not in _NONE and after != "been"
 
 
 def _just_a_name(office: Office, text: str) -> frozenset[str]:

@@ -40,6 +40,8 @@ _DESK = Mention("word", 3, 4, ("desk",))
 _SIGN = Mention("cue", 3, 4, ("sign",))
 _ITEM = Mention("item", 3, 4, ("stapler",))
 _MEETING = Mention("word", 3, 4, ("meeting",))
+_COPY = Mention("cue", 3, 4, ("copy",))
+_MY = Mention("self", 2, 3, (), possessive=True)
 
 PERSON_CASES = [
     (
@@ -95,6 +97,15 @@ PERSON_CASES = [
     ),
     (_site("bring", following=_ITEM), "give Wang a stapler: the recipient"),
     (_site("bring", following=_SIGN), "otherwise: named, no role yet"),
+    (
+        replace(_site("make", nxt="a", following=_COPY), indirect=True),
+        "make Zhang a copy, print Mark my file: whom the thing made is for",
+    ),
+    (
+        replace(_site("print", nxt="my", following=_MY), indirect=True),
+        "make Zhang a copy, print Mark my file: whom the thing made is for",
+    ),
+    (_site("make", nxt="copy", following=_COPY), "otherwise: named, no role yet"),
     (
         _site("and", nxt="asked", subject=True),
         "Rich asked for it, Hal said so: the subject of a statement, not a party",

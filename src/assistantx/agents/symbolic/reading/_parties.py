@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
@@ -122,6 +123,9 @@ class PersonSite:
     obliged: bool = False  # an obligation to do a person's work follows: "Zhang has to sign"
     stood_in_for: bool = False  # "covering chem for Zhang": whom the speaker stands in for
     to_have: bool = False  # "could Zhang have a stapler": Zhang is asked to be given one
+    # "make Zhang a copy", "print Mark my file": after a giving or making verb, before the
+    # thing's noun phrase (``indirect_object``)
+    indirect: bool = False
     # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
     work_named: Mention | None = None
     occasion: bool = False  # an occasion of theirs follows the possessive: "Grace's meeting"
@@ -239,6 +243,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "recipient",
     ),
     PersonRule(
+        "make Zhang a copy, print Mark my file: whom the thing made is for",
+        lambda s: s.indirect,
+        "recipient",
+    ),
+    PersonRule(
         "Rich asked for it, Hal said so: the subject of a statement, not a party",
         lambda s: s.subject,
         "context",
@@ -287,6 +296,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             prev_word(tokens, m.start),  # "could Mr K have": the title skipped
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
+        indirect=is_indirect_object(tokens, ms, n, prev),
     )
     if m.possessive:
         occasion = is_occasion(tokens, site.following, m.end)
@@ -411,7 +421,7 @@ def clause_roles(
             # "take her my ice pack", "bring her some": she receives (not "forward them to")
             dative = (
                 prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
-            )
+            ) or is_indirect_object(tokens, ms, n, prev)
             if prev in ("to", "for") or dative:
                 # "take it from Pat to her": not Pat, the one it is taken from
                 others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)

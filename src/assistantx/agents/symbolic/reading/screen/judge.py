@@ -7,6 +7,7 @@ evidence of what was understood."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.planning import describe
+from assistantx.agents.symbolic.reading.screen.been_through import present_hints, reworded_evidence
 from assistantx.agents.symbolic.reading.screen.findings import Screened
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Evidence, Task, TaskFrame
@@ -36,11 +37,15 @@ def judge(
     """The frame read from what the screen left, with the screen's hints and evidence; a
     need to restate asked first unless ``confirmed`` (the requester already said yes)."""
     said = screened.text.strip()
-    evidence = [*screened.evidence, *(task_evidence(office, t, said) for t in frame.tasks)]
+    # "Zhang's been out in the rain, bring him a coffee": where the one delivered to has
+    # been is no absence (``been_through``)
+    hints = present_hints(screened.hints, frame.tasks)
+    told = reworded_evidence(screened.evidence, screened.hints, hints)
+    evidence = [*told, *(task_evidence(office, t, said) for t in frame.tasks)]
     if frame.understood and screened.confirm and not confirmed:
         what = " and ".join(describe(t, office, requester) for t in frame.tasks)
         frame = TaskFrame(requester=requester, question=f"Shall I {what}?")
-    return frame.model_copy(update={"hints": screened.hints, "evidence": evidence})
+    return frame.model_copy(update={"hints": hints, "evidence": evidence})
 
 
 def task_evidence(office: Office, task: Task, said: str) -> Evidence:
