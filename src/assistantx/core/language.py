@@ -146,7 +146,34 @@ def verb_forms(verb: str) -> frozenset[str]:
         or getAllInflectionsOOV(head, upos="VERB")
     )
     forms = {head, *(f for group in found.values() for f in group)}
+    forms |= {v for f in forms for v in _doubling_variants(head, f)}
     return frozenset(f"{f} {rest}".strip() for f in forms)
+
+
+_VOWELS = frozenset("aeiou")
+
+
+def _doubling_variants(head: str, form: str) -> tuple[str, ...]:
+    """The other spelling of an "-ed"/"-ing" form where English spells a verb's last consonant
+    both single and doubled ("programed"/"programmed", "traveled"/"travelled", "labeled"/
+    "labelled"): a verb of more than one syllable ending in one vowel and one consonant (not
+    w, x or y); one syllable always doubles ("scanned"). A single spelling that is a form of
+    another word ("taped" of tape, "hoped") is never added."""
+    if len(head) < 3 or head[-1] in _VOWELS or head[-1] in "wxy":
+        return ()
+    if head[-2] not in _VOWELS or head[-3] in _VOWELS:
+        return ()
+    if len(re.findall(r"[aeiouy]+", head)) < 2:
+        return ()
+    out = []
+    for ending in ("ed", "ing"):
+        if form == head + ending:
+            out.append(head + head[-1] + ending)
+        elif form == head + head[-1] + ending:
+            single = head + ending
+            if not (read := lemmas(single)) or any(head in ls for ls in read.values()):
+                out.append(single)
+    return tuple(out)
 
 
 def _prefixed_inflections(verb: str) -> dict[str, tuple[str, ...]]:

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.answers import stance
-from assistantx.core import english, task_kinds
+from assistantx.core import english, name_parts, task_kinds
 from assistantx.core.actions import Action, ForwardFile, SendQR
 from assistantx.core.dialogue import DialogueTurn
 from assistantx.core.office import Office, Person
@@ -265,7 +265,7 @@ def named_groups(office: Office, stm: ShortTermMemory) -> set[str]:
 
 def _mentions(text: str, person: Person) -> bool:
     names = {person.id, person.id.replace("_", " "), person.name, *person.aliases}
-    names.update(w for w in person.name.split() if len(w) > 1)
+    names.update(w for w in name_parts.calling_words(person) if len(w) > 1)
     return any(_has_words(text, n) and not _only_as_a_word(text, n) for n in names if n)
 
 

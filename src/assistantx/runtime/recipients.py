@@ -43,7 +43,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.reading.abbreviations import undotted
-from assistantx.core import english, language
+from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
@@ -135,8 +135,11 @@ def _names(office: Office) -> list[tuple[tuple[str, ...], frozenset[str]]]:
         for s in {p.name, *p.aliases, p.id, p.id.replace("_", " ")}:
             if k := key(s):
                 declared.setdefault(k, set()).add(p.id)
-        for w in p.name.split():
+        for w in name_parts.calling_words(p):  # never a middle "van", "bin", "Thị" alone
             if len(w) > 1 and (k := key(w)):
+                parts.setdefault(k, set()).add(p.id)
+        for s in name_parts.surname_phrases(p):  # "de la Cruz", "van Dijk"
+            if len(k := key(s)) > 1:
                 parts.setdefault(k, set()).add(p.id)
         for alias in p.aliases:  # "Manager Mao": "the manager" names them too
             alias_words = re.findall(r"\w+", language.fold(alias))
@@ -167,7 +170,7 @@ def _item_words(office: Office) -> frozenset[str]:
 
 
 def _name_words(office: Office) -> frozenset[str]:
-    return frozenset(language.fold(w) for p in office.people for w in p.name.split())
+    return frozenset(language.fold(w) for p in office.people for w in name_parts.calling_words(p))
 
 
 def _written_as_name(

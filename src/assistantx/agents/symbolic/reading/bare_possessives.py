@@ -6,7 +6,8 @@ otherwise make "ottos" plain "otto" ("bring Otto the ruler": Otto would receive 
 ruler). An English word ("hunters pad", "marks ruler") is the possessive only where the
 colleague it names keeps that item (Hunter has a pad): otherwise ("bills ruler" where Bill has
 none) it is left as written, and whose is not taken from the word. "James' ruler" is already a
-possessive (the tokenizer's "s'").
+possessive (the tokenizer's "s'"). A word of English's closed classes ("this", "his") is
+never a possessive, even where a colleague is called by it without its "s" ("Thi").
 """
 
 from __future__ import annotations
@@ -15,9 +16,10 @@ from collections.abc import Collection, Mapping, Sequence
 from dataclasses import replace
 
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import english, language
 
 _SHORTEST_NAME = 2  # "Al" + "s"
+_FUNCTION_WORDS = english.words("common")
 
 
 def read_bare_possessives(
@@ -49,5 +51,18 @@ def _bare_possessive(t: Token, names: Collection[str], kept: Collection[str], it
         and len(word) > _SHORTEST_NAME
         and word[:-1] in names
         and word not in names
-        and (not language.is_english_word(word) or item in kept)
+        and _may_be_a_possessive(word, item, kept)
     )
+
+
+def _may_be_a_possessive(word: str, item: str, kept: Collection[str]) -> bool:
+    """A word no English knows ("idas") may be a name's possessive; an English word only
+    where the dictionary reads it as a form of the name's word ("hunters": hunter, "marks":
+    mark) and the colleague keeps that item. A word that is no form of it ("this" of Thị,
+    "his", "was") and a function word never are: the "s" is part of another word."""
+    if word in _FUNCTION_WORDS:
+        return False
+    if language.is_english_word(word):
+        base = word[:-1]
+        return item in kept and any(base in forms for forms in language.lemmas(word).values())
+    return True

@@ -54,7 +54,7 @@ from assistantx.agents.symbolic.reading.own_papers import OwnPapers
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
-from assistantx.core import english, language, task_kinds
+from assistantx.core import english, language, name_parts, task_kinds
 from assistantx.core.name_reading import is_word_name, numeral, read_name, slot_at
 from assistantx.core.office import Office
 from assistantx.core.ranks import COURTESY_TITLES, rank_titles
@@ -352,7 +352,14 @@ class Lexicon:
                 key = key_of(name)
                 if key:
                     lex.people.setdefault(key, set()).add(p.id)
-            for word in p.name.split():
+            # "Nguyễn Thị Mai": no middle word names her alone (``core.name_parts``), but
+            # her surname with its particles does ("de la Cruz", "van Dijk")
+            for phrase in name_parts.surname_phrases(p):
+                # a phrase of one word once its function words are dropped ("Văn An":
+                # "van") would make that word a name after all
+                if " " in (key := key_of(phrase)):
+                    lex.people.setdefault(key, set()).add(p.id)
+            for word in name_parts.calling_words(p):
                 key = key_of(word)
                 # "Anne-Marie" is two words to the tokenizer: the given name alone is
                 # the phrase of both ("Anne-Marie's calculator")

@@ -408,6 +408,9 @@ def _where_an_occasion_is(tokens: Sequence[Token], mentions: Sequence[Mention], 
 
 
 _OWN = ("my", "our")
+# "the client's contract", "this customer's form": an outsider the speaker serves, named by a
+# determiner, is as much the speaker's care as "my client's" (nobody of the office holds it)
+_OUTSIDER_DETERMINERS = (*_OWN, "the", "this", "that", "a", "an")
 # people named by what they are, nobody of the office ("client", "patient")
 _OUTSIDERS = english.words("outsider_nouns")
 
@@ -434,7 +437,7 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         # "the trustees' file", "the governors' report doc": a plural of people in lower
         # case, its apostrophe after the s, after a determiner: a kind of paper, no name
         kind_of_person = kind_of_person or kind_of_people(tokens, m)
-        outsider = lower and prev in _OWN and word in _OUTSIDERS
+        outsider = lower and prev in _OUTSIDER_DETERMINERS and word in _OUTSIDERS
         return not (kind_of_person or outsider)
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS

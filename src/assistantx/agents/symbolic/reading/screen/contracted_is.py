@@ -70,9 +70,30 @@ _CONTRACTED = re.compile(
 )
 
 
-def contracted_is(text: str) -> tuple[str, list[Evidence]]:
+# what may end an ongoing state of a thing ("my stapler's playing up", "the binder's falling
+# apart"): a particle of the phrasal verb
+_ONGOING_TAILS = _TAILS | frozenset({"up", "apart", "about", "out", "off", "again"})
+
+
+def _state_of_a_thing(subject: str, state: str, after: str, things: frozenset[str]) -> bool:
+    """ "my laptop's flat", "the stapler's playing up": after the name of one of the office's
+    things, an adjective or a verb's "-ing" that ends its clause says how the thing is; a
+    thing owns no "flat" and no "playing", so the "'s" is "is". A noun after it ("the
+    laptop's charger") is still its part, and a person's "'s" ("Zhang's flat") is read as
+    before."""
+    if subject.lower() not in things:
+        return False
+    read = language.lemmas(state)
+    ongoing = state.endswith("ing") and "VERB" in read
+    if not ongoing and "ADJ" not in read:
+        return False
+    return not after or after in (_ONGOING_TAILS if ongoing else _TAILS)
+
+
+def contracted_is(text: str, things: frozenset[str] = frozenset()) -> tuple[str, list[Evidence]]:
     """``text`` with "X's <state>" written "X is <state>" (or "X has <participle>") where
-    the state ends its clause."""
+    the state ends its clause; ``things``: the office's words that end a thing's name, whose
+    adjectives and ongoing states are read so too (``_state_of_a_thing``)."""
     found: list[Evidence] = []
 
     def expand(match: re.Match[str]) -> str:
@@ -90,6 +111,8 @@ def contracted_is(text: str) -> tuple[str, list[Evidence]]:
         # an adjective, never a place or a direction ("Zhang's gone home": he is away)
         if state in _BECOME and "ADJ" in read and "ADV" not in read:
             verb, tails = "has", frozenset({after})  # "light's gone amber": what it became
+        if not verb and _state_of_a_thing(subject, state, after, things):
+            verb, tails = "is", frozenset({after})
         if not verb or (after and after not in tails):
             return match.group(0)  # "Zhang's broken stapler": a possessive
         said = f"{subject} {verb} {state}"

@@ -136,6 +136,13 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
     rest = after[len(fix) :]
     tokens = terms.lex.tokens(fix)
+    told = _what_it_is(terms, tokens, rest)
+    if told:
+        # "no wait, it's the paper one, photocopy it instead": what the thing is, said
+        # before the request that corrects; the request is the correction
+        fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
+        after, rest = rest[1:].lstrip(), rest[1 + len(fix) :]
+        tokens = terms.lex.tokens(fix)
     words = [t.word for t in tokens]
     if any(tuple(words[: len(w)]) == w for w in _WITHDRAWING):
         return text, []  # "sorry, forget the coffee": a withdrawal, read as one
@@ -358,8 +365,29 @@ _CHAINED_WORDS = 4
 
 # The words a correction's own request says the thing of the request it replaces by
 _KEPT_THING = re.compile(
-    r"\b(it|them|that)\b(?=\s*(?:$|[,.!?;]|\s[-–—]|\s+(?:to|for|over|back)\b))", re.IGNORECASE
+    r"\b(it|them|that)\b(?=\s*(?:$|[,.!?;]|\s[-–—]|\s+(?:to|for|over|back|instead|please|pls|"
+    r"plz|again|now|thanks)\b))",
+    re.IGNORECASE,
 )
+
+
+# "it's", "it is", "that's": the thing just said, described
+_IT_IS = (("it", "is"), ("that", "is"), ("its",), ("thats",))
+
+
+def _what_it_is(terms: Terms, tokens: Sequence[Token], rest: str) -> bool:
+    """Whether a correction's first clause only says what the thing is ("it's the paper
+    one", "it is a paper copy"), naming nobody, and a request of its own follows it after a
+    comma."""
+    words = [t.word for t in tokens]
+    if tokens and tokens[0].word in ("it", "that") and tokens[0].possessive:
+        words = [tokens[0].word, "is", *words[1:]]  # "it's": "it is"
+    if not any(tuple(words[: len(w)]) == w for w in _IT_IS) or not rest.startswith(","):
+        return False
+    if any(m.kind == "person" for m in terms.lex.scan(list(tokens))):
+        return False  # "it's Gao's, bring me that one": whose it is corrects the owner
+    nxt = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
+    return _opens_request(terms, terms.lex.tokens(nxt))
 
 
 def _thing_kept(terms: Terms, withdrawn: str, tokens: Sequence[Token], after: str) -> str:

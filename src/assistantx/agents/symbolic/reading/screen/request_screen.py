@@ -54,7 +54,8 @@ class RequestScreen:
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
-        text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
+        # "UV bulb's gone": the bulb is gone; "my laptop's flat": the laptop is
+        text, stated = contracted_is(text, terms.lex.item_heads)
         text, taken = how_taken(terms, text)  # "a brew, milk no sugar": no milk to fetch
         text, leave = asked_leave(text)  # "can I nick Robin's mute?": asks to borrow it
         text, hedged = without_hedges(text)  # "Holly, I think, has one": Holly has one

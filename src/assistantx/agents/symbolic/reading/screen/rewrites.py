@@ -10,6 +10,7 @@ import re
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
+from assistantx.agents.symbolic.reading.screen.service_input import worked_on
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import THANKED
@@ -63,6 +64,11 @@ def rewrite(
     stated = [c for c in context if not c.startswith(("person:", "product:", CHOSEN))]
     products = [c.removeprefix("product:") for c in context if c.startswith("product:")]
     said += stated
+    # "my contract's got coffee on it, could you photocopy it": of the things stated, the one
+    # the service asked takes
+    worked = worked_on(terms, text, stated) if len(set(stated)) > 1 else None
+    if worked is not None:
+        said.append(worked)
     if said and not terms.names_an_item(text):
         item, _, whose = said[-1].partition("|")
         thing = terms.office.item_type(item).name
@@ -75,8 +81,9 @@ def rewrite(
         again = (
             bool(stated) and stated[-1] in held and len({s.partition("|")[0] for s in stated}) == 1
         )
-        one_stated = len(set(stated)) == 1 or again
-        back = ("it", "them") if stated and said[-1] == stated[-1] and one_stated else ()
+        one_stated = len(set(stated)) == 1 or again or worked is not None
+        last = worked if worked is not None else stated[-1] if stated else None
+        back = ("it", "them") if stated and said[-1] == last and one_stated else ()
         for phrase in (*terms.en.another_one, "some", *back):
             pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
             match = pattern.search(text)
