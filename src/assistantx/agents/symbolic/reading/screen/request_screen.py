@@ -17,6 +17,7 @@ from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
+from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
@@ -52,6 +53,7 @@ class RequestScreen:
         terms = self.terms
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
+        text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
@@ -65,6 +67,7 @@ class RequestScreen:
         fixes = [
             *intro,
             *idioms,
+            *later,
             *restored,
             *stated,
             *taken,
