@@ -15,6 +15,7 @@ from assistantx.agents.symbolic.reading.screen.correction import REPLACED, corre
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
+from assistantx.agents.symbolic.reading.screen.head_noun_back import head_noun_back
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
@@ -54,6 +55,7 @@ class RequestScreen:
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
+        text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
@@ -68,6 +70,7 @@ class RequestScreen:
             *intro,
             *idioms,
             *later,
+            *heads,
             *restored,
             *stated,
             *taken,
