@@ -10,6 +10,7 @@ from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.asked_leave import asked_leave
+from assistantx.agents.symbolic.reading.screen.brought_back import brought_back
 from assistantx.agents.symbolic.reading.screen.contracted_is import contracted_is
 from assistantx.agents.symbolic.reading.screen.correction import REPLACED, corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
@@ -56,6 +57,7 @@ class RequestScreen:
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
         text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
+        text, back = brought_back(terms, text)  # "and a coffee on the way back": mine
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
         text, stated = contracted_is(text)  # "UV bulb's gone": the bulb is gone
@@ -71,6 +73,7 @@ class RequestScreen:
             *idioms,
             *later,
             *heads,
+            *back,
             *restored,
             *stated,
             *taken,
