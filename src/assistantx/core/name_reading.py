@@ -175,6 +175,7 @@ def read_name(slot: NameSlot) -> NameReading:
         or _presence_asked(slot)
         or _consenting(slot)
         or _joined_names(slot)
+        or _asked_for_theirs(slot)
     )
     if language.is_month(w) and not slot.possessive:
         day = language.is_day_number(prev) or language.is_day_number(nxt)
@@ -186,6 +187,7 @@ def read_name(slot: NameSlot) -> NameReading:
         modal
         or (prev in _WORD_BEFORE and not (_presence_asked(slot) or _joined_names(slot)))
         or ((slot.opens or prev in _POLITE) and nxt in _VERB_OBJECT_STARTS)
+        or _asked_verb(slot)
     )
     # "grace period": a noun right after it makes a compound
     compound = (
@@ -204,6 +206,39 @@ def read_name(slot: NameSlot) -> NameReading:
     if word or compound:
         return "ask" if capital and not slot.opens else "word"
     return "person" if capital else "word"
+
+
+# "chase frank for his signature", "nudge bill about her stamp": what is asked of someone,
+# said as theirs
+_ASKED_OF = frozenset({"for", "about"})
+_THEIRS = frozenset({"his", "her", "their"})
+# "can you chase ...": the one asked, before the verb of what is asked
+_YOU = frozenset({"you", "u", "ya"})
+
+
+def _asked_for_theirs(slot: NameSlot) -> bool:
+    """ "chase mark for his signature", "bug frank about her stamp": a name word followed by
+    "for"/"about" and "his"/"her"/"their" is the one asked for something of their own; the
+    pronoun says a person, never "a mark" nor "the frank" (an article makes the word)."""
+    return (
+        not slot.possessive
+        and not slot.next_after_pause
+        and slot.next in _ASKED_OF
+        and slot.after_next in _THEIRS
+    )
+
+
+def _asked_verb(slot: NameSlot) -> bool:
+    """ "can you chase frank for ...", "pls chase frank ...", "chase frank ...": a name word
+    that is a plain verb, where the verb of a request goes (after "you" of "can you", after
+    "please", or first, in lower case), with its object after it (a word of someone's name
+    or a determiner), is the verb; a person there would have no verb ("can you Chase ...").
+    "thank you Chase, ..." (a pause) and "thank you Chase for the pen" (no object) say
+    nothing."""
+    if slot.possessive or slot.next_after_pause or not _base_verb(slot.word):
+        return False
+    where = slot.prev in _YOU or slot.prev in _POLITE or (slot.opens and slot.written[:1].islower())
+    return where and (slot.next_is_name or slot.next in _VERB_OBJECT_STARTS)
 
 
 def _presence_asked(slot: NameSlot) -> bool:

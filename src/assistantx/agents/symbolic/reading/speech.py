@@ -32,6 +32,7 @@ import itertools
 from dataclasses import dataclass
 from typing import Literal
 
+from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
@@ -408,12 +409,24 @@ class SpeechActs:
         if at is None:
             return False
         before = w[:at]
+        # the speaker's own verb, never a third person's "needs" ("Will needs ...": Will's),
+        # nor "I'll need you to bring ...": the assistant asked, in so many words
+        verb = w[at] in _NEED and not w[at].endswith("s") and not future_need.said_now(w)
+        verb = verb and not (w[at + 1 : at + 2] and w[at + 1] in _YOU)
+        if verb and future_need.speakers_future(before):
+            return True  # "gonna need a ruler", "we're going to need the tape"
         if before and not (set(before) & (_SPEAKER_SUBJECTS | _POSSIBLY | _MODALS)):
             return False  # "Ida might need ...": someone else's, read as a need of theirs
         if before[:1] and before[0] in _MODALS and before[1:2] and before[1] in _FOR_SPEAKER:
             before = before[2:]  # "may I borrow ...": a polite question, not a "may" of doubt
         if set(before) & _POSSIBLY and not (set(before) & _YOU):
             return True
+        if verb and set(before) <= _SPEAKER_SUBJECTS | _POSSIBLY:
+            # "I need scissors tomorrow", "need a ruler for the workshop later": put off by
+            # a time after now in the need's own clause
+            # "need the stamp for tomorrow": wanted ready for then, as "by tomorrow" is
+            if self.later(future_need.need_clause(w, at), _DEADLINES | {"for"}):
+                return True
         return deferred and self.later(w)
 
     def note(self, words: list[str]) -> list[str] | None:
@@ -465,13 +478,16 @@ class SpeechActs:
         return False
 
     @staticmethod
-    def later(words: list[str]) -> bool:
-        """ "... I could use later", "... tomorrow", "... on Friday": a time after now."""
+    def later(words: list[str], deadlines: frozenset[str] = _DEADLINES) -> bool:
+        """ "... I could use later", "... tomorrow", "... on Friday": a time after now; not
+        one after a word of ``deadlines`` ("by tomorrow": wanted ready by then, so now)."""
         w = content(words)
         if any(a == "on" and language.is_weekday(b) for a, b in itertools.pairwise(w)):
             return True
+        if future_need.clock_time(w):
+            return True  # "at 3", "at noon"
         return any(
-            _starts(w, p, n) and (n == 0 or w[n - 1] not in _DEADLINES)  # "by tomorrow": now
+            _starts(w, p, n) and (n == 0 or w[n - 1] not in deadlines)  # "by tomorrow": now
             for n in range(len(w))
             for p in _LATER
         )
@@ -916,7 +932,12 @@ class SpeechActs:
         w = content(words)
         if not w:
             return False
-        if self._imperative(w) or set(w) & _WILLING or self._minded(w):
+        said = set(w)
+        if len(w) > 1 and self._named(w[0]) and w[1] in _NEED and w[1].endswith("s"):
+            # "Will needs the umbrella": a name before a third person's verb is its subject,
+            # never the "will" of a request (a modal takes no "-s" verb after it)
+            said = set(w[1:])
+        if self._imperative(w) or said & _WILLING or self._minded(w):
             return True
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
 

@@ -9,8 +9,9 @@ words as typed: "3D-print", "3-D print" and "3D print" are one phrase), and that
 operation's own cue; the shorter verb it holds is no longer a word of the sentence.
 
 The phrases come from the office file only: an operation's compound verbs (words glued
-before a verb: "3d print", "heat press"; not a verb with its particle or object, "send out",
-"seal in plastic", whose head verb already asks and whose other words keep their readings),
+before a verb: "3d print", "heat press"; not a verb with its particle, "send out", whose head
+verb already asks and whose other words keep their readings), its verbs with a complement
+("write to tape", "seal in plastic": ``complement_verbs``, also said with the object between),
 and its name where that is such a compound opening with one of its own verbs and naming no
 thing of the office ("laser cut" for an operation asked for by "laser"; never "buy a snack",
 whose "snack" is the product to be named). A phrase two operations share is left to be asked
@@ -25,6 +26,11 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms
+from assistantx.agents.symbolic.reading.complement_verbs import (
+    complement_verb,
+    separated_complement,
+    tails_of,
+)
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
@@ -65,11 +71,13 @@ def particle_verb(phrase: str, own: Sequence[str]) -> bool:
 
 def _named_phrases(office: Office, op: Operation, things: set[str]) -> list[str]:
     """The phrases of several words that ask for ``op``: its compound verbs, its verbs with
-    a particle whose head alone asks for other work, and its name where the name is one that
+    a particle whose head alone asks for other work, its verbs with a complement
+    (``complement_verbs``), and its name where the name is one that
     opens with one of its own verbs and names no thing."""
     verbs = [_key(v) for v in op.verbs]
     own = [v for v in verbs if " " not in v]
     found = [v for v in verbs if compound_verb(v)]
+    found += [v for v in verbs if complement_verb(v)]
     if not op.sends_out:  # a send's destination is read after its verb's words
         found += [v for v in verbs if particle_verb(v, own)]
     name = _key(op.name)
@@ -101,6 +109,8 @@ class VerbPhrases:
     longest: int  # words in the longest form
     # each form without its spaces → the form: "3-D print" is typed as "3", "d", "print"
     glued: dict[str, str] = field(default_factory=dict)
+    # each head of a verb with a complement → its complements ("write" → ("to", "tape"))
+    tails: dict[str, tuple[tuple[str, ...], ...]] = field(default_factory=dict)
 
     @classmethod
     def from_office(cls, office: Office) -> VerbPhrases:
@@ -108,14 +118,18 @@ class VerbPhrases:
             _key(n) for t in office.item_types for n in (t.name, *t.synonyms)
         }
         claimed: dict[str, set[str]] = {}
+        complements: list[str] = []
         for op in office.operations:
             for phrase in _named_phrases(office, op, things):
                 for form in phrase_forms(phrase):
                     claimed.setdefault(form, set()).add(op.id)
+                if complement_verb(phrase):
+                    complements += phrase_forms(phrase)
         forms = {form: next(iter(ops)) for form, ops in claimed.items() if len(ops) == 1}
         glued = {f.replace(" ", ""): f for f in forms}
         longest = max((len(f.split()) for f in forms), default=0) + 1  # "3 d print"
-        return cls(forms, frozenset(things), longest, glued)
+        tails = tails_of([f for f in complements if f in forms])
+        return cls(forms, frozenset(things), longest, glued, tails)
 
     def of_operation(self, op_id: str) -> set[str]:
         return {form for form, op in self.forms.items() if op == op_id}
@@ -160,6 +174,13 @@ class VerbPhrases:
             at = separated_particle(out, n, self.forms)
             if at is not None:
                 out.insert(n + 1, out.pop(at))
+            # "write my file to tape": the complement back next to its verb, likewise
+            apart = separated_complement(out, n, self.tails)
+            if apart is not None:
+                start, size = apart
+                moved = out[start : start + size]
+                del out[start : start + size]
+                out[n + 1 : n + 1] = moved
         return out
 
     def _phrase_at(self, tokens: Sequence[Token], n: int) -> tuple[int, str]:

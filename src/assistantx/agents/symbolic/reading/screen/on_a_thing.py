@@ -28,6 +28,8 @@ _TOLD = frozenset({"item", "person", "word", "self", "pronoun"})
 _EVERYWHERE = frozenset({"everywhere"})
 # words that ask, however short the fragment ("stapler on my desk pls"), and haste
 _ASKING = english.words("asking_words") | frozenset({"quick", "quickly"})
+# asides that join a second part to the errand before it ("on the way back")
+_ASIDES = tuple(tuple(p.split()) for p in english.entries("request_asides"))
 
 
 def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -50,7 +52,7 @@ def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
     if any(m.kind not in _TOLD for m in mentions):
         return None
     at = next((k for k, t in enumerate(tokens) if k and t.word in _ON), None)
-    if at is None:
+    if at is None or _aside_at(said, at):
         return None
     before = said[:at]
     if any(m.start < at for m in items):
@@ -67,6 +69,13 @@ def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
 # where a thing asked for may be left: "coffee on my desk", "paper on the shelf"
 _RECEIVING = (PLACE_WORDS | english.words("surface_words")) - {"floor"}  # no one asks for the floor
 _WHOSE = frozenset({"my", "our", "the", "his", "her", "their", "your", "a", "this", "that"})
+
+
+def _aside_at(said: list[str], at: int) -> bool:
+    """ "a coffee for me on the way back", "... on your way past": the "on" opens an aside
+    that joins the piece to the errand before it (``request_asides``), the way no surface
+    anything was spilt on: the piece asks for its thing as a second part."""
+    return any(tuple(said[at : at + len(p)]) == p for p in _ASIDES)
 
 
 def _mess(said: list[str], items: list[Mention]) -> bool:

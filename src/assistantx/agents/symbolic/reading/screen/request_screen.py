@@ -10,13 +10,16 @@ from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.asked_leave import asked_leave
+from assistantx.agents.symbolic.reading.screen.brought_back import brought_back
 from assistantx.agents.symbolic.reading.screen.contracted_is import contracted_is
 from assistantx.agents.symbolic.reading.screen.correction import REPLACED, corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
+from assistantx.agents.symbolic.reading.screen.head_noun_back import head_noun_back
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
+from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
@@ -52,6 +55,9 @@ class RequestScreen:
         terms = self.terms
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
+        text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
+        text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
+        text, back = brought_back(terms, text)  # "and a coffee on the way back": mine
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
         # "UV bulb's gone": the bulb is gone; "my laptop's flat": the laptop is
@@ -66,6 +72,9 @@ class RequestScreen:
         fixes = [
             *intro,
             *idioms,
+            *later,
+            *heads,
+            *back,
             *restored,
             *stated,
             *taken,

@@ -1,0 +1,65 @@
+"""A need said for a time after now: "I'll need scissors tomorrow", "gonna need a ruler",
+"we're going to need the calculator", "need a ruler for the workshop later", "... at 3".
+
+English puts a need off in two ways: by the tense of its verb (a future form before it) or by
+a time after now said in the need's own clause. Either way the speaker has not asked for the
+thing now, and only a request moves the robot: the need is answered (``screen.condition``),
+never fetched at once. "now" or "asap" in the same words make it a need of now all the same
+("I'll need it now for the meeting later"); a time said after the need's clause has ended
+belongs to another clause ("I need a ruler and I'll give it back later").
+
+The words are English's, from ``data/english.yaml``; nothing here knows an office.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+from assistantx.core import english
+
+_FUTURE_FORMS = tuple(tuple(p.split()) for p in english.entries("future_forms"))
+_NOW = tuple(tuple(p.split()) for p in english.entries("now_words"))
+_JOINERS = english.words("clause_joiners")
+_CLOCK = english.words("clock_words")
+# The speaker as a future's subject ("I'll", "we're", "I am"), and an adverb between
+# the future form and the verb ("I'll probably need ...").
+_SPEAKER = frozenset({"i", "we", "ill", "well", "im", "were", "am", "are"}) | english.words(
+    "possibility_words"
+)
+_FUTURE_WORDS = english.words("future_forms") | frozenset({"also", "definitely", "still"})
+
+
+def _has(words: list[str], phrases: tuple[tuple[str, ...], ...]) -> bool:
+    return any(tuple(words[n : n + len(p)]) == p for n in range(len(words)) for p in phrases)
+
+
+def future_form(before: list[str]) -> bool:
+    """The words before a need verb put it in the future: "I'll", "we're going to", "gonna"
+    (the future form is the last thing before the verb, an adverb aside: "I'll probably")."""
+    return _has(before[-3:], _FUTURE_FORMS)
+
+
+def speakers_future(before: list[str]) -> bool:
+    """The words before a need verb are the speaker's future: a future form, with the
+    speaker or nobody as its subject ("I'll", "we're going to", "gonna", "I will probably");
+    "Mark will need ..." is Mark's need, read as a third person's."""
+    if not future_form(before):
+        return False
+    return all(w in _SPEAKER or w in _FUTURE_WORDS for w in before)
+
+
+def said_now(words: list[str]) -> bool:
+    """ "... now", "... asap": the time is now, whatever else is said."""
+    return _has(words, _NOW)
+
+
+def clock_time(words: list[str]) -> bool:
+    """ "at 3", "at 3pm", "at noon", "at half two": a time of day, said after "at"."""
+    return any(a == "at" and (b[:1].isdigit() or b in _CLOCK) for a, b in itertools.pairwise(words))
+
+
+def need_clause(words: list[str], at: int) -> list[str]:
+    """The words of the need's own clause from its verb at ``at``: up to the first word that
+    joins another clause ("... and I'll give it back later")."""
+    end = next((n for n in range(at + 1, len(words)) if words[n] in _JOINERS), len(words))
+    return words[at:end]
