@@ -43,6 +43,7 @@ from assistantx.agents.symbolic.reading.directed_work import (
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
+from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
@@ -259,6 +260,8 @@ class FrameReader:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+            if tasks:  # "needs a ruler, can you take one from Mark to her": Mark's ruler
+                tasks[-1] = owned_as_one_from(tasks[-1], one_from(tokens, clause.mentions))
         rejected = _rejected_items(readings)
         # a rejected item is never fetched; with nothing left, the checks below ask
         tasks = [t for t in tasks if t.item not in rejected]
