@@ -195,7 +195,7 @@ class FrameReader:
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
             # "could Mark send me his file?": Mark's own, sent by him
             made = sent_by_the_asked(made, _asked_subjects(tokens, clause), clause, tokens)
-            made = _to_each(made, roles)
+            made = _to_each(made, roles, _asked_subjects(tokens, clause))
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
@@ -885,13 +885,19 @@ def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:
     ]
 
 
-def _to_each(made: list[Task], roles: Roles) -> list[Task]:
+def _to_each(made: list[Task], roles: Roles, asked: Sequence[str] = ()) -> list[Task]:
     """ "send my rota to Hal and to Dawn", "... to Hal and Dawn": a file goes to each person
-    named as a recipient (a copy costs nothing; one physical item could not)."""
+    named as a recipient (a copy costs nothing; one physical item could not). ``asked``: the
+    colleagues the clause asks to do the sending ("could Zhang send Wang my file?"): the
+    sender is no recipient of it, so the file goes to Wang only."""
     if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
         return made
     # "could Mark send me his file?": Mark sends it; a file is never passed on to whose it is
-    people = [p for p in dict.fromkeys([*roles.recipient, *roles.bare]) if p != made[0].owner]
+    people = [
+        p
+        for p in dict.fromkeys([*roles.recipient, *roles.bare])
+        if p != made[0].owner and p not in asked
+    ]
     if len(people) == 1:
         return [made[0].model_copy(update={"recipient": people[0]})]
     if len(people) < 2:
