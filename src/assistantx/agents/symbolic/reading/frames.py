@@ -21,6 +21,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping, Sequence
 
+from assistantx.agents.symbolic.reading import shared_object
 from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading._parties import (
@@ -134,6 +135,7 @@ class FrameReader:
         addressed = addressed_person(tokens, readings.mentions, readings.gaps)
         placed: dict[str, str] = {}  # item type → the one a place phrase named
         said_from: list[str] = []  # whom the clauses take a thing from ("from Pat")
+        waiting: tuple[Clause, Roles] | None = None  # a service on "it", waiting for the thing
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
@@ -193,6 +195,26 @@ class FrameReader:
             earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            if not made and shared_object.waits_for_object(clause.mentions):
+                waiting = (clause, roles)  # "get it copied and ...": the thing said next
+            elif (
+                waiting is not None
+                and made
+                and shared_object.opens_with_participle(clause.mentions)
+            ):
+                # "get it copied and stamped": the stamp found the paper; the copy, said
+                # first on the same "it", is done on it too, first
+                made = [*self.reader.tasks(*waiting, requester, made[0]), *made]
+                waiting = None
+            else:
+                waiting = None
+            said = [m for m in objects if m.id in self.reader.kinds]
+            if not made and tasks and said and shared_object.opens_with_participle(clause.mentions):
+                # "my document printed and copied": the print read a file for the document,
+                # the copy's object is the paper as said, not the print's file
+                if said[-1].id != tasks[-1].item:
+                    paper = tasks[-1].model_copy(update={"item": said[-1].id})
+                    made = self.reader.tasks(clause, roles, requester, paper)
             # "could Mark send me his file?": Mark's own, sent by him
             made = sent_by_the_asked(made, _asked_subjects(tokens, clause), clause, tokens)
             made = _to_each(made, roles, _asked_subjects(tokens, clause))

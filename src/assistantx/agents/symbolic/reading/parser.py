@@ -117,6 +117,7 @@ from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
     category_asked,
@@ -242,6 +243,8 @@ class InstructionParser:
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"
             screened.confirm = True
+        # "scanned and stamped" where nobody has a seal: told (or asked) before anything moves
+        frame = without_toolless(self.office, frame, requester, confirmed=confirmed)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _names_only(self, phrase: str, person: str) -> bool:
