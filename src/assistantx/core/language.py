@@ -417,6 +417,13 @@ def is_finite_verb(word: str) -> bool:
 
 
 @functools.cache
+def is_third_person_verb(word: str) -> bool:
+    """A verb's third-person present form ("needs", "wants", "says", "has", "is"): the form
+    only a singular subject takes, never the bare verb a modal takes ("may need")."""
+    return any(word in _verb_inflections(lemma).get("VBZ", ()) for lemma in verb_lemmas(word))
+
+
+@functools.cache
 def is_past_participle(word: str) -> bool:
     """A past participle of a verb ("signed", "bound", "stamped"): before a noun it describes
     the thing ("the signed form"), it does not ask for the verb's work."""

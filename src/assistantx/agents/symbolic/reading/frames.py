@@ -21,6 +21,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping, Sequence
 
+from assistantx.agents.symbolic.reading import shared_object
 from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading._parties import (
@@ -43,6 +44,7 @@ from assistantx.agents.symbolic.reading.directed_work import (
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
+from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
@@ -133,6 +135,7 @@ class FrameReader:
         addressed = addressed_person(tokens, readings.mentions, readings.gaps)
         placed: dict[str, str] = {}  # item type → the one a place phrase named
         said_from: list[str] = []  # whom the clauses take a thing from ("from Pat")
+        waiting: tuple[Clause, Roles] | None = None  # a service on "it", waiting for the thing
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
@@ -192,9 +195,29 @@ class FrameReader:
             earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            if not made and shared_object.waits_for_object(clause.mentions):
+                waiting = (clause, roles)  # "get it copied and ...": the thing said next
+            elif (
+                waiting is not None
+                and made
+                and shared_object.opens_with_participle(clause.mentions)
+            ):
+                # "get it copied and stamped": the stamp found the paper; the copy, said
+                # first on the same "it", is done on it too, first
+                made = [*self.reader.tasks(*waiting, requester, made[0]), *made]
+                waiting = None
+            else:
+                waiting = None
+            said = [m for m in objects if m.id in self.reader.kinds]
+            if not made and tasks and said and shared_object.opens_with_participle(clause.mentions):
+                # "my document printed and copied": the print read a file for the document,
+                # the copy's object is the paper as said, not the print's file
+                if said[-1].id != tasks[-1].item:
+                    paper = tasks[-1].model_copy(update={"item": said[-1].id})
+                    made = self.reader.tasks(clause, roles, requester, paper)
             # "could Mark send me his file?": Mark's own, sent by him
             made = sent_by_the_asked(made, _asked_subjects(tokens, clause), clause, tokens)
-            made = _to_each(made, roles)
+            made = _to_each(made, roles, _asked_subjects(tokens, clause))
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
@@ -259,6 +282,8 @@ class FrameReader:
                 tasks = [*_without_subsumed(tasks, made), *made]
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+            if tasks:  # "needs a ruler, can you take one from Mark to her": Mark's ruler
+                tasks[-1] = owned_as_one_from(tasks[-1], one_from(tokens, clause.mentions))
         rejected = _rejected_items(readings)
         # a rejected item is never fetched; with nothing left, the checks below ask
         tasks = [t for t in tasks if t.item not in rejected]
@@ -882,13 +907,19 @@ def _without_subsumed(earlier: list[Task], made: list[Task]) -> list[Task]:
     ]
 
 
-def _to_each(made: list[Task], roles: Roles) -> list[Task]:
+def _to_each(made: list[Task], roles: Roles, asked: Sequence[str] = ()) -> list[Task]:
     """ "send my rota to Hal and to Dawn", "... to Hal and Dawn": a file goes to each person
-    named as a recipient (a copy costs nothing; one physical item could not)."""
+    named as a recipient (a copy costs nothing; one physical item could not). ``asked``: the
+    colleagues the clause asks to do the sending ("could Zhang send Wang my file?"): the
+    sender is no recipient of it, so the file goes to Wang only."""
     if len(made) != 1 or made[0].kind != "send_file" or not roles.recipient:
         return made
     # "could Mark send me his file?": Mark sends it; a file is never passed on to whose it is
-    people = [p for p in dict.fromkeys([*roles.recipient, *roles.bare]) if p != made[0].owner]
+    people = [
+        p
+        for p in dict.fromkeys([*roles.recipient, *roles.bare])
+        if p != made[0].owner and p not in asked
+    ]
     if len(people) == 1:
         return [made[0].model_copy(update={"recipient": people[0]})]
     if len(people) < 2:

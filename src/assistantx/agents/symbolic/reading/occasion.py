@@ -31,32 +31,37 @@ def is_occasion(tokens: Sequence[Token], following: Mention | None, end: int) ->
 
 
 def occasion_people(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[str]:
-    """The colleagues a text names as the one whose occasion a thing taken to a room is for
-    ("to the post desk for Grace's meeting"): one person each, after "for"."""
+    """The colleagues a text names as the one a thing taken to a room is for, one person
+    each after "for": whose occasion it is ("to the post desk for Grace's meeting") or the
+    colleague themself ("take a ruler to the lounge for Mark", "drop my calculator at the
+    kitchen for Rose"): a plain "for" a person beside a room says whom the thing is for,
+    and the robot hands things to people, so that person receives it where they are met."""
     found: set[str] = set()
     for n, m in enumerate(mentions):
-        if m.kind != "person" or not m.possessive or len(m.ids) != 1 or m.start == 0:
+        if m.kind != "person" or len(m.ids) != 1 or m.start == 0:
             continue
         if tokens[m.start - 1].word != "for":
             continue
         following = mentions[n + 1] if n + 1 < len(mentions) else None
-        if is_occasion(tokens, following, m.end):
-            found.add(m.ids[0])
+        if not m.possessive or is_occasion(tokens, following, m.end):
+            found.add(m.ids[0])  # "for Mark", "for Mark's workshop"; not "for Mark's sake"
     return found if taken_to_a_room(tokens, mentions) else set()
 
 
 _ARTICLES = frozenset({"the", "a", "an", "our", "their", "this", "that"})
+_TO_A_ROOM = frozenset({"to", "into", "at"})
 
 
 def taken_to_a_room(tokens: Sequence[Token], mentions: Sequence[Mention]) -> bool:
     """Whether the words take a thing to a room of the office: a place or facility after
-    "to"/"into" (an article between): "to the post desk", "down to the lounge"."""
+    "to"/"into"/"at" (an article between): "to the post desk", "down to the lounge", "drop
+    it at the kitchen"."""
     for m in mentions:
         if m.kind not in ("place", "facility"):
             continue
         k = m.start
         while k > 0 and tokens[k - 1].word in _ARTICLES:
             k -= 1
-        if k > 0 and tokens[k - 1].word in ("to", "into"):
+        if k > 0 and tokens[k - 1].word in _TO_A_ROOM:
             return True
     return False

@@ -302,6 +302,15 @@ class OperationChooser:
             return [task], f"Which do you mean: {either}?"
         if len(said) == 1:
             shape = said[0].shape(self.office)
+            own = _KIND_SHAPE.get(task.kind)
+            own_said = own is not None and any(
+                self._op_words[op.id] & set(words) for op in self.office.with_shape(own)
+            )
+            if peers > 1 and SHAPE_KIND.get(shape) != task.kind and own_said:
+                # "my document scanned and laminated": the one service said that takes the
+                # item is the other task's; this task's own verb ("laminated") asked for other
+                # work (left to be run or refused as that work), never a second scan
+                return [task], None
             # only where the clause read another shape, or several share this one: a lone
             # operation of its shape is left to the plain reading
             if SHAPE_KIND.get(shape) != task.kind or len(self.office.with_shape(shape)) > 1:

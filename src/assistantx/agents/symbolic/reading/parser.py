@@ -73,6 +73,12 @@ from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.machine_choice import (
+    machine_choices,
+    service_answered,
+    service_question,
+    with_service,
+)
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
@@ -111,6 +117,7 @@ from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
     category_asked,
@@ -236,6 +243,8 @@ class InstructionParser:
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"
             screened.confirm = True
+        # "scanned and stamped" where nobody has a seal: told (or asked) before anything moves
+        frame = without_toolless(self.office, frame, requester, confirmed=confirmed)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _names_only(self, phrase: str, person: str) -> bool:
@@ -325,6 +334,9 @@ class InstructionParser:
                 frame = TaskFrame(requester=requester, question=left_out)
         if frame.question == NOT_UNDERSTOOD:
             terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
+            choices = machine_choices(self.office, tokens, mentions, requester)
+            if choices:  # "put this through the printer": "Print your file, or copy ...?"
+                return TaskFrame(requester=requester, question=service_question(choices))
             left = left_behind(tokens, mentions)
             if left is not None:  # "the thing I left at the printer": which thing is asked
                 return TaskFrame(requester=requester, question=left)
@@ -486,6 +498,10 @@ class InstructionParser:
                     continue  # "Kwame's" read as someone else's file: asked, never guessed
                 text, frame = with_antecedent(text, answer, kind), meant
                 continue
+            served = self._machine_chosen(text, requester, frame.question, answer)
+            if served is not None:  # "Print your file, or copy your document?" "Copy."
+                text, frame = served, self.parse(served, requester)
+                continue
             if frame.question is not None and frame.question.startswith(WHICH_WORK):
                 # "do something with my prep" → "vacuum seal or blast chill?" → "vacuum
                 # seal": the work said, done to the item; anything else is asked again
@@ -577,6 +593,20 @@ class InstructionParser:
                 continue
             frame = alone if alone.understood else combined
         return frame
+
+    def _machine_chosen(
+        self, text: str, requester: str, question: str | None, answer: str
+    ) -> str | None:
+        """The request with the service the answer chose, where the question asked which
+        service of the machine the thing at hand is put through for (``machine_choice``)."""
+        if question is None:
+            return None
+        readings = self.readings.read(self.lex.read(text), requester)
+        choices = machine_choices(self.office, readings.tokens, readings.mentions, requester)
+        if not choices or question != service_question(choices):
+            return None
+        choice = service_answered(choices, answer)
+        return with_service(text, choice) if choice is not None else None
 
     def _out_or_in(self, text: str, requester: str, answer: str, asked: TaskFrame) -> TaskFrame:
         """The answer to "send it out by courier to Bill, or bring it to Bill here?": the

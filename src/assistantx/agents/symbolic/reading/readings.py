@@ -395,13 +395,14 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
 
 
 def _where_an_occasion_is(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
-    """ "take a ruler to the lounge for Mark's workshop": a facility a thing is taken to, in
-    a sentence that names a colleague's occasion the thing is for, is where the occasion is,
-    not which service is asked for (``occasion``)."""
+    """ "take a ruler to the lounge for Mark's workshop", "... to the lounge for Mark": a
+    facility a thing is taken to, in a sentence that names the colleague (or their occasion)
+    the thing is for, is where it goes for them, not which service is asked for
+    (``occasion``)."""
     start = mentions[n].start
     while start > 0 and tokens[start - 1].word in _ARTICLES:
         start -= 1
-    if start == 0 or tokens[start - 1].word not in ("to", "into"):
+    if start == 0 or tokens[start - 1].word not in ("to", "into", "at"):
         return False
     has_item = any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
     return has_item and bool(occasion_people(tokens, mentions))

@@ -29,3 +29,23 @@ def opens_with_participle(mentions: Sequence[Mention]) -> bool:
     if not language.is_past_participle(language.fold(rest[0].text)):
         return False
     return not any(m.kind == "item" or m.possessive or m.kind == "pronoun" for m in rest)
+
+
+# The pronouns a clause may leave for the next participle to name ("get *it* copied and
+# stamped"): a thing, never a person.
+_THING_POINTERS = frozenset({"it", "this", "that", "them", "these", "those"})
+
+
+def waits_for_object(mentions: Sequence[Mention]) -> bool:
+    """Whether a clause that made no task asks for a service on a pronoun's thing by a past
+    participle ("get it copied"): the participle coordinated after it ("and stamped") works
+    on the same thing, so once that clause finds the thing, this clause's service is on it
+    too, never dropped in silence."""
+    pointed = any(
+        m.kind == "pronoun" and not m.possessive and m.text.lower() in _THING_POINTERS
+        for m in mentions
+    )
+    said = any(
+        m.kind == "cue" and language.is_past_participle(language.fold(m.text)) for m in mentions
+    )
+    return pointed and said and not any(m.kind == "item" for m in mentions)

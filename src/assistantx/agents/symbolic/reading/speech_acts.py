@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.indirect_asks import chance_reworded, indirect_ask
+from assistantx.agents.symbolic.reading.modal_subject import modals_as_subjects
 from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
 
 # Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it".
@@ -70,7 +71,9 @@ def acts_reader(
     def read(words: list[str], asks: bool) -> Acts:
         # "any chance I could nab ...": read as the question it softens ("could I nab ...")
         words = chance_reworded(words) or words
-        note = speech.note(words)
+        note = speech.note(words)  # a note keeps its words as said ("note: May needs tape")
+        # "May needs her tape back": a name before its verb in -s, no modal (modal_subject)
+        words = modals_as_subjects(words)
         return Acts(
             request=speech.request(words),
             imperative=speech.imperative(words),
