@@ -82,6 +82,10 @@ def test_a_colleagues_need_for_later_is_asked_before_anything_moves(
         ("default", "Lee will need a stapler, please bring him one", "stapler", "lee"),
         ("default", "I need a stapler now for the meeting later", "stapler", "zhang"),
         ("default", "I need a stapler by tomorrow", "stapler", "zhang"),
+        # a time in a deadline's clause ("before ... at 4") says by when, not that it can wait
+        ("default", "need a stapler before the courier leaves at 4", "stapler", "zhang"),
+        ("harbour", "I need a ruler before the meeting this afternoon", "ruler", "pat"),
+        ("harbour", "need a highlighter until the workshop ends at 5", "highlighter", "pat"),
         # a time said in another clause than the need's: the need is now
         ("default", "I need a stapler and I'll give it back later", "stapler", "zhang"),
         ("default", "I need a stapler", "stapler", "zhang"),
@@ -96,6 +100,14 @@ def test_a_need_asked_for_now_is_still_delivered(
     frame = _read(office, text)
     assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
     assert _tasks(frame) == [("transfer", item, person)]
+
+
+def test_a_signature_needed_before_a_deadline_is_asked_for_now() -> None:
+    """ "need Dr Wang's signature on my document before the truck leaves at 4": the time is
+    the deadline's, so the signature is a request of now (blind round 72 after fix74c)."""
+    frame = _read("default", "need Dr Wang's signature on my document before the truck leaves at 4")
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert [(t.kind, t.actor) for t in frame.tasks] == [("sign", "wang")]
 
 
 def test_a_things_future_need_is_no_colleagues() -> None:

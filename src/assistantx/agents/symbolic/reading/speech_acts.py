@@ -72,10 +72,13 @@ def acts_reader(
         # "any chance I could nab ...": read as the question it softens ("could I nab ...")
         words = chance_reworded(words) or words
         note = speech.note(words)  # a note keeps its words as said ("note: May needs tape")
-        # "May needs her tape back": a name before its verb in -s, no modal (modal_subject)
+        # "May needs her tape back": a name before its verb in -s, no modal (modal_subject);
+        # the two acts that read a named subject themselves ("Will needs the umbrella" is
+        # Will's need, restated and asked) keep the name as said
+        as_said = words
         words = modals_as_subjects(words)
         return Acts(
-            request=speech.request(words),
+            request=speech.request(as_said),
             imperative=speech.imperative(words),
             # a polite indirect ask is read by the verb it asks for ("would somebody be able
             # to bring me ...", "would anyone know where ..."), else by the question's shape
@@ -87,7 +90,7 @@ def acts_reader(
             withdrawal=speech.withdrawal(without_fillers(words)),
             had_already=speech.had_already(words),
             statement=speech.statement(words),
-            need=speech.need(words, self_words),
+            need=speech.need(as_said, self_words),
             note=tuple(note) if note is not None else None,
             note_asks=bool(note) and speech.request(note or []),
             condition=speech.condition(words, asks),
