@@ -85,7 +85,10 @@ def _operation_here(
     # the name split as the message is ("date-stamp" is the words date and stamp in both)
     words = set(re.findall(r"[a-z]+", told.lower()))
     asked = [op for op in found if set(re.findall(r"[a-z]+", op.name.lower())) <= words]
-    return next(iter(asked or found), None)
+    # else by the operation's own verb ("scan it" asks for "scan to PDF", whose whole name the
+    # code's message need not say): without it, the machine's first service ran instead
+    verbed = [op for op in found if words & {v.lower() for v in op.verbs if " " not in v}]
+    return next(iter(asked or verbed or found), None)
 
 
 def direct_reply(world: World, person: str, text: str) -> Reply | None:
