@@ -200,6 +200,9 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
     offers: list[tuple[int, str, str]] = []
     files: list[tuple[int, str, str]] = []
     serving: set[str] = set()  # who got a code to run a service (print, heat, ...)
+    # a service whose product is electronic (scan to PDF) sends it to the paper's owner by
+    # message once its operator has the paper: (position, product id, operator)
+    files_made: list[tuple[int, str, str]] = []
     for at, result in enumerate(results):
         action = result["action"]
         kind = action["type"]
@@ -213,19 +216,27 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
                 offers.append((at, action["item"], action["contact"]))
             elif action["purpose"] not in _CARRY:
                 serving.add(action["contact"])
+                made = _sent_by_message(office, action)
+                if made is not None:
+                    files_made.append((at, made, action["contact"]))
         if kind == "forward_file" and result["ok"]:
             item = action.get("file") or f"{office.file_type() or 'file'}:{action['source']}"
             moved.setdefault(item, at)
             files.append((at, item, action["target"]))
-    handovers = [
-        Handover(at, item, to, _opened_for(results, at, to)) for at, item, to in offers
-    ] + [
-        # a file forwarded to whoever then runs a service (the printer's keeper) is that
-        # service's input, not a delivery
-        Handover(at, item, to, True)
-        for at, item, to in files
-        if to not in serving
-    ]
+    handovers = (
+        [Handover(at, item, to, _opened_for(results, at, to)) for at, item, to in offers]
+        + [
+            # a file forwarded to whoever then runs a service (the printer's keeper) is that
+            # service's input, not a delivery
+            Handover(at, item, to, True)
+            for at, item, to in files
+            if to not in serving
+        ]
+        + [
+            Handover(at, item, item.partition(":")[2], _opened_for(results, at, operator))
+            for at, item, operator in files_made
+        ]
+    )
     return Conduct(
         requester=trace["requester"],
         outcome=trace.get("outcome"),
@@ -234,6 +245,21 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
         moved=moved,
         handovers=tuple(sorted(handovers, key=lambda h: h.at)),
     )
+
+
+def _sent_by_message(office: Office, action: dict[str, Any]) -> str | None:
+    """The electronic product a work code's service makes of the item ("scan_pdf:amara" from
+    scanning "document:amara"), which the operator sends to its owner by message."""
+    op_id = action.get("operation")
+    if not op_id:
+        return None
+    try:
+        product = office.operation(op_id).product
+    except KeyError:
+        return None
+    if product is None or not office.item_type(product).electronic:
+        return None
+    return f"{product}:{action['item'].partition(':')[2]}"
 
 
 def _opened_for(results: list[dict[str, Any]], at: int, person: str) -> bool:

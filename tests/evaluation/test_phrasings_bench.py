@@ -14,9 +14,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+import yaml
 
 from assistantx.agents.registry import reasoner_factory
-from assistantx.core.office import load_office
+from assistantx.core.office import Office, load_office, parse_office
 from assistantx.core.settings import Settings
 from assistantx.sim.requester import Wish
 from assistantx.sim.run import run_in_sim
@@ -392,3 +393,43 @@ def test_a_bad_goal_on_the_command_line_is_one_line(goal: str, error: str) -> No
     assert done.returncode == 2
     assert done.stderr.strip().startswith("error: ")
     assert error in done.stderr and len(done.stderr.strip().splitlines()) == 1
+
+
+def _office_that_scans_to_pdf() -> Office:
+    """The default office with a scan to PDF at its printer: the PDF is an electronic type
+    of its own, sent to the paper's owner by message when the keeper scans it."""
+    raw = yaml.safe_load(
+        (Path(__file__).resolve().parents[2] / "dataset" / "office.yaml").read_text()
+    )
+    raw["item_types"].append(
+        {"id": "scan_pdf", "name": "scanned PDF", "synonyms": ["pdf"], "kind": "electronic"}
+    )
+    raw["operations"].append(
+        {
+            "id": "scan",
+            "name": "scan to PDF",
+            "verbs": ["scan"],
+            "input": "document",
+            "product": "scan_pdf",
+        }
+    )
+    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
+    printer["operations"].append("scan")
+    printer["products"].append("scan_pdf")
+    return parse_office(raw)
+
+
+def test_a_pdf_sent_by_message_by_the_scanner_is_delivered_to_the_papers_owner() -> None:
+    """A scan to PDF hands the PDF over by message, not at the locker: the judge counts it
+    as delivered to the paper's owner once the keeper took the paper to scan it (blind round
+    77 counted 'scan my waybill to pdf' wrong although the PDF reached its owner)."""
+    office = _office_that_scans_to_pdf()
+    text = "scan my document to pdf please"
+    factory = reasoner_factory("symbolic", office, Settings())
+    run = asyncio.run(run_in_sim(office, "lee", text, factory, reasoner_name="symbolic"))
+    scanned = json.loads(run.trace.model_dump_json())
+    assert scanned["outcome"] == "done", scanned["summary"]
+    mine = judge(case(text, "deliver", recipient="lee", item="scan_pdf"), scanned, office)
+    assert (mine.right, mine.wrong_physical) == (True, None), mine.why
+    theirs = judge(case(text, "deliver", recipient="chen", item="scan_pdf"), scanned, office)
+    assert not theirs.right
