@@ -45,3 +45,18 @@ def surname_phrases(person: Person) -> tuple[str, ...]:
     if len(words) <= 2:
         return ()
     return tuple(" ".join(words[k:]) for k in range(1, len(words) - 1))
+
+
+def greeting_name(person: Person) -> str:
+    """The name a message greets ``person`` by ("Hi Mai"): the name people use. The office
+    says it by the person's first one-word alias that is a word of their full name (Mai for
+    "Nguyễn Thị Mai", Wei for "Zhang Wei"): a full name's first word is the family name in
+    many languages, so it is used only where no such alias is declared. An alias outside the
+    full name ("Boss") or a title is a way to refer to them, not a given name to greet."""
+    words = _proper(person)
+    own = {w.casefold() for w in words}
+    for alias in person.aliases:
+        said = alias.split()
+        if len(said) == 1 and said[0].casefold() in own and said[0].casefold() not in _TITLES:
+            return said[0]
+    return words[0] if words else person.name

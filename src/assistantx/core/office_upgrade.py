@@ -32,6 +32,11 @@ STANDARD_SERVICES = Path(__file__).resolve().parents[1] / "data" / "standard_ser
 _LEGACY_PROPERTY_IDS = {"signable": "document", "seals": "seal"}
 
 
+def standard() -> dict[str, dict[str, dict[str, Any]]]:
+    """The standard services and item types, by section ("operations", "item_types") and id."""
+    return _standard()
+
+
 @functools.cache
 def _standard() -> dict[str, dict[str, dict[str, Any]]]:
     raw = yaml.safe_load(STANDARD_SERVICES.read_text(encoding="utf-8"))

@@ -20,6 +20,7 @@ from typing import Literal
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.evidence import Evidence, Question
 from assistantx.core import language, task_kinds
+from assistantx.core.name_parts import greeting_name
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import TaskKind, kind_shape
 from assistantx.core.wording import a_thing, with_object
@@ -196,7 +197,7 @@ class Roles:
         return op.verbs[0] if op.verbs else _as_verb(op)
 
     def question(self, role: Role, person: str) -> str:
-        first = self.office.person(person).name.split()[0]
+        first = greeting_name(self.office.person(person))
         comes = role.kind not in ("send_file", "allow")
         tail = " The robot will come to you for the hand-over." if comes else ""
         if role.kind == "heat" and role.destination and role.facility is not None:
@@ -209,7 +210,7 @@ class Roles:
         return f"Hi all, could anyone {self._request(role, anyone=True)}?{tail}"
 
     def inform(self, role: Role, person: str) -> str:
-        first = self.office.person(person).name.split()[0]
+        first = greeting_name(self.office.person(person))
         return (
             f"Hi {first}, the robot is on its way to you: could you "
             f"{self._request(role, anyone=False)}? I'll send you a locker code."

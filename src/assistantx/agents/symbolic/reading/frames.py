@@ -45,6 +45,11 @@ from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
 from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
+from assistantx.agents.symbolic.reading.original_back import (
+    ORIGINAL_ELSEWHERE,
+    original_back,
+    original_to_its_source,
+)
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
@@ -244,8 +249,10 @@ class FrameReader:
                 # for again on "it" by the same operation's verb, is the same work, once
                 made = [t for t in made if not same_work(tasks[-1], _on_item(t, tasks[-1]))]
             previous_ops = said_ops
-            if tasks and previous_need and self._refers_back(clause) and met_by(tasks[-1], made):
-                tasks.pop()  # "Priya needs the agenda, print it for her": the print meets it
+            if tasks and previous_need and self._unnamed(clause) and met_by(tasks[-1], made):
+                # "Priya needs the agenda, print it for her", "Chen needs my contract, make
+                # her a copy": the work on the needed thing (by "it", or unsaid) meets it
+                tasks.pop()
             previous_need = says_a_need(clause, tokens)
             if tasks and len(made) == 1 and _for_another(tasks[-1], made[0], clause, requester):
                 # "please scan my invoice. Mark needs a scan of it": the same work, and whom
@@ -280,6 +287,11 @@ class FrameReader:
                 tasks.append(again)  # "make me a coffee and bring Tam one too": Tam's own
             elif made:
                 tasks = [*_without_subsumed(tasks, made), *made]
+            elif tasks and original_back(tasks[-1], clause, tokens):
+                # "make him a copy of it and bring me the original back": the copy's original
+                # comes back to whoever put it in; the copy still goes where it was asked
+                if not original_to_its_source(tasks[-1], roles, requester):
+                    return TaskFrame(requester=requester, question=ORIGINAL_ELSEWHERE)
             elif tasks:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
             if tasks:  # "needs a ruler, can you take one from Mark to her": Mark's ruler
@@ -405,6 +417,14 @@ class FrameReader:
         return any(
             m.kind == "pronoun" and tokens[m.start].word in ("it", "them") for m in clause.mentions
         ) and not any(m.kind == "item" for m in clause.mentions)
+
+    def _unnamed(self, clause: Clause) -> bool:
+        """Whether a clause names no item of its own to work on ("print it", "make her a
+        copy": the copy is what the work makes, not a thing it takes)."""
+        return not any(
+            m.kind == "item" and any(self.office.item_type(i).kind != "product" for i in m.ids)
+            for m in clause.mentions
+        )
 
     @staticmethod
     def _refers_back(clause: Clause) -> bool:

@@ -360,7 +360,11 @@ class Lexicon:
                 if " " in (key := key_of(phrase)):
                     lex.people.setdefault(key, set()).add(p.id)
             for word in name_parts.calling_words(p):
-                key = key_of(word)
+                # "An" (Trần Văn An): a name that is also an article or a title is still a
+                # name, kept as its own word, never as the empty key of nothing said
+                key = key_of(word) or _name_word(word)
+                if not key:
+                    continue
                 # "Anne-Marie" is two words to the tokenizer: the given name alone is
                 # the phrase of both ("Anne-Marie's calculator")
                 found = lex.people if " " in key else lex.name_words
@@ -384,7 +388,7 @@ class Lexicon:
             key_of(alias)
             for p in office.people
             for alias in p.aliases
-            if len(alias.split()) == 1 and key_of(alias) not in lex.name_words
+            if len(alias.split()) == 1 and key_of(alias) not in lex.name_words and key_of(alias)
         }
         for phrase, holders in rank_titles(office).items():
             if phrase not in lex.people:  # "the Station Officer": the one who holds the rank
@@ -684,6 +688,7 @@ class Lexicon:
             or self._role_at(tokens, i)
             or self._initial_at(tokens, i)
             or self._title_naming_a_thing(tokens, i)
+            or self._function_word_name_at(tokens, i)
         ]
         mentions: list[Mention] = []
         k = 0
@@ -701,6 +706,20 @@ class Lexicon:
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._own_papers(tokens, mentions)
         return self._settled_by_owner(tokens, mentions)
+
+    def _function_word_name_at(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "take my stapler to An", "give An my tape": a colleague's one-word name that is
+        also an article or a title ("An" of Trần Văn An), in a clear name slot: capitalised
+        inside a sentence, or after "to", "for" or "from" with nothing after it that the
+        article could open ("to an office" is the article)."""
+        t = tokens[i]
+        if t.word not in self.name_words:
+            return False
+        if t.text[:1].isupper() and not t.opens and i > 0:
+            return True
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else None
+        ends = nxt is None or nxt.opens or nxt.word in _SLOT_ENDS
+        return i > 0 and tokens[i - 1].word in ("to", "for", "from") and ends
 
     def _own_papers(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "take my report to Olive": the requester's paper in an everyday noun the office
@@ -1214,6 +1233,16 @@ def key_of(name: str) -> str:
     ``okeeffe``, so "First O'Surname's ruler" finds the name), after a possessive "'s"."""
     folded = re.sub(r"'s\b", "", language.fold(name))
     return normalize(_INNER_APOSTROPHE.sub("", folded))
+
+
+# What may follow a name that ends a clause ("to An please", "for An, thanks", "from An now").
+_SLOT_ENDS = english.words("polite") | frozenset({"now", "today", "asap", "thanks", "too"})
+
+
+def _name_word(word: str) -> str:
+    """A one-word name that ``key_of`` drops as a title or an article ("An", "Don"): the
+    folded word itself, as the tokenizer reads it."""
+    return re.sub(r"[^\w]", "", language.fold(word))
 
 
 def _title_word(name: str) -> str:

@@ -37,8 +37,15 @@ def met_by(need: Task, made: Sequence[Task]) -> bool:
         work.kind != need.kind
         and work.item == need.item
         and work.recipient == need.recipient
-        and (work.kind == "print" or task_kinds.works_on_item(work.kind))
+        and (_makes_from(work.kind) or task_kinds.works_on_item(work.kind))
     )
+
+
+def _makes_from(kind_id: str) -> bool:
+    """Whether a kind makes a product from the item (a printout of the file, a copy or a
+    scan of the paper): the product is what the one who needs the item gets, so "Zhang needs
+    my report, make him a copy of it" is one copy, not the report handed over as well."""
+    return task_kinds.kind(kind_id).shape in ("render", "transform")
 
 
 def same_work(earlier: Task, task: Task) -> bool:

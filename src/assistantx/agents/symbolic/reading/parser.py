@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     with_antecedent,
 )
 from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
     doubted_recipient,
@@ -215,6 +216,7 @@ class InstructionParser:
         ``to_self``: the requester answered "me" to whom their own item goes;
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "Shiv here - ...": the speaker's sign-on, no party to the request
         text = signed_on(
             text,
@@ -427,7 +429,8 @@ class InstructionParser:
         question asked for the whole request. A reply answers the question asked: it never
         starts a request of its own ("Yes, I have a stapler" to "Shall I bring you one?" is
         a no, not a yes nor a new request for a stapler)."""
-        text, answers = undotted(text), [undotted(a) for a in answers]
+        text = spelled_are(undotted(text))
+        answers = [spelled_are(undotted(a)) for a in answers]
         frame = self.parse(text, requester)
         for answer in answers:
             if frame.understood or frame.decline is not None:

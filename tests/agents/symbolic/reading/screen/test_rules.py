@@ -55,6 +55,7 @@ def test_the_rules_in_priority_order() -> None:
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
         "unsupported",  # a service nothing here offers, before an outsider is asked about
+        "instead",  # a colleague asked to run a facility they do not ("get Zhang to copy it")
         "instead",  # a recipient who is nobody of the office ("the courier guy")
     ]
 

@@ -36,6 +36,10 @@ variant         a made thing in a variant the office does not make: "a master ke
                                                                                     make an
                                                                                     ordinary
                                                                                     one?"
+asked_doer      a colleague asked to do a facility's work they do not run ("get     "Shall I get
+                Zhang to make me a copy" where Zhang keeps no printer)              it done at
+                                                                                    the printer
+                                                                                    instead?"
 outsider        a recipient who is nobody of the office ("for the man at the        declines a
                 desk", "bring the courier guy a tea")                               credential;
                                                                                     "Shall I
@@ -68,12 +72,12 @@ Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``con
 ``purpose``, ``wish``, ``thanks``, ``condition``, ``negation``, ``unsafe``, ``destructive``,
 ``placement``, ``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``doing_after``,
 ``own_need``, ``question``, ``problem``, ``statement``, ``whereabouts``, ``kept``, ``variant``,
-``outsider``, ``service``), tried in the order of ``rules``; each reads the piece's lexicon
-reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before the
-screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:
-``verdicts`` (the pieces judged: ``Spoken``), ``request`` (what is left, ``rewrites``:
-``Request``), and, after the readings and frames, ``decide`` (the message as a whole,
-``answer``: ``Screened``); ``judge`` is the last stage.
+``service``, ``asked_doer``, ``outsider``), tried in the order of ``rules``; each reads the piece's
+lexicon reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before
+the screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:
+``verdicts`` (the pieces judged: ``Spoken``), ``request`` (what is left, ``rewrites``: ``Request``),
+and, after the readings and frames, ``decide`` (the message as a whole, ``answer``: ``Screened``);
+``judge`` is the last stage.
 """
 
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Screened

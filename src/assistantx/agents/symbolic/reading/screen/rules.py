@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
+from assistantx.agents.symbolic.reading.screen.asked_doer import asked_doer
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
@@ -115,5 +116,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # about: "scan my drawings and email them to the client" where there is no scanner
     # cannot be done for anyone, so a question would only offer what was never asked
     ("unsupported", unsupported),
+    # "get Zhang to make me a copy" where Zhang does not run the copier: asked, not rerouted
+    ("instead", asked_doer),
     ("instead", outsider),
 )

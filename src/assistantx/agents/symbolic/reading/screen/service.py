@@ -10,6 +10,7 @@ from assistantx.agents.symbolic.reading.at_hand import POINTERS
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
+from assistantx.agents.symbolic.reading.screen.made_product import unmade_product
 from assistantx.agents.symbolic.reading.screen.outsider import outsider_recipient
 from assistantx.agents.symbolic.reading.screen.passed_through import through_a_facility
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
@@ -125,7 +126,8 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
                 if names_a_thing(terms, words, n):
                     continue  # "the scan settings file": a word of the file's name
                 return decline_service(terms, piece, w, product=True, nor=nor)
-    return None
+    # "make Mark a copy of my document" where nothing copies: never the document handed over
+    return unmade_product(terms, piece)
 
 
 def _doers(terms: Terms, words: list[str], at: int) -> bool:
