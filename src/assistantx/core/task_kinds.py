@@ -86,6 +86,8 @@ class KindSpec:
     done_sent: str | None = None  # the outcome when it sent the item outside ({dest}: where)
     todo_sent: str | None = None  # the task in a plan's words when it sends the item outside
     done_file: str | None = None  # the outcome when its product is a file sent by message
+    # the outcome when the product went to someone else and the original back to the requester
+    done_elsewhere: str | None = None
     works_on: ItemProperty | None = None
     tool: ItemProperty | None = None
     ask: str | None = None
@@ -139,6 +141,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         locker="take {item} out, copy it and put the original and the copy back",
         todo="{verb} {whose} for {to}",
         done="{whose} and its {product} were handed to {to}",
+        done_elsewhere="the {product} of {whose} was handed to {to}, and the original back to {back}",
         done_file="{whose} was {done}: the {product} was sent to {to} by message",
     ),
     KindSpec(

@@ -262,12 +262,22 @@ class Decider:
         owner = collected[0].split(":", 1)[1] if collected else task.owner
         if task.kind != "transfer":
             owner = task.owner
-        made = next((i.partition(":")[0] for i in collected if i.partition(":")[2]), "")
-        made = made if made and made != task.item else ""
+        # what was made: the collected thing that is not the item worked on (a copy handed to
+        # a colleague after the original went back to the requester)
+        made = next(
+            (
+                t
+                for i in collected
+                if (t := i.partition(":")[0]) != task.item and i.partition(":")[2]
+            ),
+            "",
+        )
         op_id = operation_of(self.office, task)
         op = self.office.operation(op_id) if op_id else None
         spec = task_kinds.kind(task.kind)
         template = spec.done
+        if spec.done_elsewhere and task.recipient not in (None, requester):
+            template = spec.done_elsewhere  # the copy to a colleague, the original back
         product = op.product if op is not None else None
         if product and self.office.item_type(product).electronic and spec.done_file:
             template, made = spec.done_file, product  # scanned to PDF: the file was sent
@@ -286,6 +296,7 @@ class Decider:
             by=who(task.actor),
             done=done_words(op) if op else task.kind,
             dest=task.destination or "",
+            back=who(task.owner or requester),  # whoever put the original in gets it back
         )
         return text + by
 
