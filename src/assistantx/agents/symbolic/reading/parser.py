@@ -114,6 +114,7 @@ from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
+from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
@@ -482,6 +483,12 @@ class InstructionParser:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
                     continue
+            subject = with_subject_answered(
+                self.screen.terms, text, requester, frame.question or "", answer
+            )
+            if subject is not None:  # "she needs ..." → "Who do you mean by 'she'?" → "Rose"
+                text, frame = subject, self.parse(subject, requester)
+                continue
             if frame.question is not None and frame.question.startswith(WHICH_FILE):
                 # "print it" → "Which file do you mean by 'it'?" → "Kwame's shoot": the
                 # answer is the request's own object, in the place of its "it"

@@ -39,6 +39,7 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
 from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
+from assistantx.agents.symbolic.reading.screen.pronoun_subject import unnamed_subject
 from assistantx.agents.symbolic.reading.screen.purpose import (
     preamble,
     purpose,
@@ -64,6 +65,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("note", note),
     ("exclusion", exclusion),
     ("exclusion", pronoun_exclusion),
+    # "she needs the umbrella" with nobody named: whom "she" means is asked, never the speaker
+    ("which", unnamed_subject),
     # a purpose, an open offer or the reason for a request: context before any rule reads
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
