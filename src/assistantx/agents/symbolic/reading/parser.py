@@ -535,6 +535,10 @@ class InstructionParser:
                 text, frame = whole, self.parse(whole, requester)
                 continue
             part = asked_part(frame.question) if frame.question is not None else None
+            if part is not None and not_known(answer):
+                # "Sorry, I don't know more than I wrote": no answer, so the part is still
+                # unread and asked again, never replaced by the reply's words (the rest done)
+                continue
             if part is not None and not names_work(self.office, frame.question or "", answer):
                 continue  # "a read?" "Me.": the work is still not said; asked again
             if part is not None and part in text:
