@@ -114,6 +114,7 @@ from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
+from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
@@ -488,6 +489,12 @@ class InstructionParser:
             )
             if subject is not None:  # "she needs ..." → "Who do you mean by 'she'?" → "Rose"
                 text, frame = subject, self.parse(subject, requester)
+                continue
+            picked = with_owned_chosen(
+                self.screen.terms, text, requester, frame.question or "", answer
+            )
+            if picked is not None:  # "my lamp" → "your inspection lamp or ...?" → "the desk one"
+                text, frame = picked, self.parse(picked, requester)
                 continue
             if frame.question is not None and frame.question.startswith(WHICH_FILE):
                 # "print it" → "Which file do you mean by 'it'?" → "Kwame's shoot": the
