@@ -115,6 +115,8 @@ from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
+from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
+from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
@@ -485,6 +487,18 @@ class InstructionParser:
                     text = text.replace(said.phrase, place.rstrip(" .!?"), 1)
                     frame = self.parse(text, requester)
                     continue
+            subject = with_subject_answered(
+                self.screen.terms, text, requester, frame.question or "", answer
+            )
+            if subject is not None:  # "she needs ..." → "Who do you mean by 'she'?" → "Rose"
+                text, frame = subject, self.parse(subject, requester)
+                continue
+            picked = with_owned_chosen(
+                self.screen.terms, text, requester, frame.question or "", answer
+            )
+            if picked is not None:  # "my lamp" → "your inspection lamp or ...?" → "the desk one"
+                text, frame = picked, self.parse(picked, requester)
+                continue
             if frame.question is not None and frame.question.startswith(WHICH_FILE):
                 # "print it" → "Which file do you mean by 'it'?" → "Kwame's shoot": the
                 # answer is the request's own object, in the place of its "it"
@@ -531,6 +545,10 @@ class InstructionParser:
                 text, frame = whole, self.parse(whole, requester)
                 continue
             part = asked_part(frame.question) if frame.question is not None else None
+            if part is not None and not_known(answer):
+                # "Sorry, I don't know more than I wrote": no answer, so the part is still
+                # unread and asked again, never replaced by the reply's words (the rest done)
+                continue
             if part is not None and not names_work(self.office, frame.question or "", answer):
                 continue  # "a read?" "Me.": the work is still not said; asked again
             if part is not None and part in text:

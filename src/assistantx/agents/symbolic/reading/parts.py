@@ -15,6 +15,9 @@ done, the sending out silently left out, and "Done" reported). The parts no task
 - the requester's paper in an everyday noun the office has no one thing for ("my memo",
   ``own_papers.unread_paper``): "take my memo to Olive, then bring me a cuppa" never does
   the tea alone;
+- any thing an errand's verb takes, "my"/a colleague's and a noun no name of the office
+  reads (``unnamed_things``): "take my lamp to Rose, and bring me Grace's highlighter"
+  never brings the highlighter alone;
 - an operation named by its display name, or by the head noun of it after an article ("a
   legal read", "a read" where a legal read and a style read both exist), on an item the
   request names, run by no task (``operation_left_out``): after "Who should get your
@@ -35,6 +38,7 @@ from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import unread_paper
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.unnamed_things import unnamed_thing
 from assistantx.agents.symbolic.reading.unread_compounds import (
     unread_compound,
     unread_sent_thing,
@@ -96,6 +100,9 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
         )
         or unread_sent_thing(readings.mentions, [t.text for t in readings.tokens])
         or unread_paper(readings.mentions, readings.tokens)
+        or unnamed_thing(
+            readings.mentions, readings.tokens, _unnamed_owners(readings, frame), frame.requester
+        )
         or _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
         or _service_left_out(office, readings, frame)
@@ -103,6 +110,13 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if phrase is None:
         return None
     return f"{ASKED}{phrase}{ASKED_END}{_means(office)} Could you tell me?"
+
+
+def _unnamed_owners(readings: Readings, frame: TaskFrame) -> frozenset[str | None]:
+    """Whose things the tasks carry where no name of the thing was said: read from a plain
+    noun by another stage ("take my lease to Ines to be stamped": my one paper to stamp)."""
+    named = {i for m in readings.mentions if m.kind == "item" for i in m.ids}
+    return frozenset(t.owner for t in frame.tasks if t.item not in named)
 
 
 def _inputs(office: Office, frame: TaskFrame) -> frozenset[str]:

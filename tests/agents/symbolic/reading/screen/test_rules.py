@@ -13,6 +13,8 @@ def test_the_rules_in_priority_order() -> None:
         "note",
         "exclusion",
         "exclusion",  # "not her camera" after one colleague was named
+        "which",  # "she needs the umbrella" with nobody named: whom "she" means is asked
+        "which",  # "my lamp" where two of the speaker's things are lamps
         "statement",  # a purpose or open offer cut off ("so he can book ...", "if anyone needs it")
         "statement",  # the reason for a request ("..., need it for the report")
         "statement",  # the things to use a tool asked for on ("..., a pile of letters to seal")

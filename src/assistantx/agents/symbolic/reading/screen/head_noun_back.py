@@ -47,7 +47,7 @@ def head_noun_back(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     pos = 0
     for match in _AFTER_DETERMINER.finditer(text):
         head = match.group("head").lower()
-        if _names_something(terms, head):
+        if names_something(terms, head):
             continue  # "a ruler", "the tape": the office's own word, read as it is
         before = _named_before(text, named, match.start())
         owners = {i for i in before if head in _heads(terms, i)}
@@ -60,7 +60,7 @@ def head_noun_back(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     return "".join(out) + text[pos:], found
 
 
-def _names_something(terms: Terms, word: str) -> bool:
+def names_something(terms: Terms, word: str) -> bool:
     """Whether a word alone names something of the office (a thing, a person, a place, a
     facility) or asks for work."""
     lex = terms.lex

@@ -20,7 +20,9 @@ from assistantx.agents.symbolic.reading.screen.head_noun_back import head_noun_b
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
+from assistantx.agents.symbolic.reading.screen.owned_head import owned_head
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
+from assistantx.agents.symbolic.reading.screen.pronoun_subject import named_subject
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
@@ -56,7 +58,9 @@ class RequestScreen:
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
+        text, subject = named_subject(terms, text, requester)  # "Rose is wet, she needs ..."
         text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
+        text, owned = owned_head(terms, text, requester)  # "my lamp": my inspection lamp
         text, back = brought_back(terms, text)  # "and a coffee on the way back": mine
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
@@ -73,7 +77,9 @@ class RequestScreen:
             *intro,
             *idioms,
             *later,
+            *subject,
             *heads,
+            *owned,
             *back,
             *restored,
             *stated,

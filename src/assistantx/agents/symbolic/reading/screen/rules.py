@@ -35,11 +35,13 @@ from assistantx.agents.symbolic.reading.screen.outside_place import outside_plac
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
+from assistantx.agents.symbolic.reading.screen.owned_head import several_owned_heads
 from assistantx.agents.symbolic.reading.screen.past_event import past_event
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
 from assistantx.agents.symbolic.reading.screen.problem import problem
 from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
+from assistantx.agents.symbolic.reading.screen.pronoun_subject import unnamed_subject
 from assistantx.agents.symbolic.reading.screen.purpose import (
     preamble,
     purpose,
@@ -65,6 +67,10 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("note", note),
     ("exclusion", exclusion),
     ("exclusion", pronoun_exclusion),
+    # "she needs the umbrella" with nobody named: whom "she" means is asked, never the speaker
+    ("which", unnamed_subject),
+    # "my lamp" where two of the speaker's things are lamps: asked which, never guessed
+    ("which", several_owned_heads),
     # a purpose, an open offer or the reason for a request: context before any rule reads
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),

@@ -1,0 +1,170 @@
+"""A third person's pronoun as the subject of a need ("she needs the umbrella", "he could use
+a ruler", "they want a calculator") means someone the message named before it, never the
+speaker: the speaker says "I". Without this the reader dropped the pronoun and the need was
+read as the speaker's own, so the thing was handed to the speaker (a wrong hand-over).
+
+Two steps:
+
+- ``named_subject`` (a rewrite before the pieces are judged): where exactly one colleague (not
+  the speaker) is named before the pronoun ("Rose is soaked, she needs the umbrella"), the
+  pronoun becomes that name, so the need is read as "Rose needs the umbrella" is (restated
+  and asked).
+- ``unnamed_subject`` (a rule of the screen): a piece opened by such a pronoun with nobody
+  named before it is asked about ("Who do you mean by 'she'?"), never acted on; so is one
+  after several colleagues where nothing else in the message is asked ("Rose and Mark are
+  here, she needs the umbrella": "Rose Adeyemi or Mark Lindqvist?"). The answer names whom
+  it means (``with_subject_answered``).
+
+A pronoun in any other place ("take it to her", "could she have ...") is left to the stages
+that read it (``rewrites.name_pronouns``, the frames)."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english
+from assistantx.core.task_schema import Evidence
+
+_PRONOUNS = ("she", "he", "they")
+# the verbs a need is said with after its subject, besides the need phrases of the English
+# data ("is after", "could use"); "'s"/"is" forms are written both ways
+_NEED_VERBS = ("needs", "need", "wants", "want", "would like", "d like", "really needs")
+_ADVERBS = ("really", "still", "also", "urgently", "desperately", "just", "badly")
+# what may stand before the pronoun at the start of its clause: the message's start, a
+# sentence's or part's end, or a joining word ("Rose is soaked and she needs ...")
+_OPENING = r"(?:^|(?<=[.,;:!?\-–—(])\s*|\b(?:and|but|so|now|plus)\s+)"
+
+
+# what follows a need's verb when the need is no thing wanted: work to do ("she needs to stamp
+# it": the request's own doer) or a thing said before ("she needs it today": the reason for
+# the part that names it, read where that part is)
+_NOT_A_THING = ("to", "it", "one", "them", "that", "this", "these", "those")
+
+
+def _verb_pattern() -> str:
+    # "asked for", "is asking for": a report of what was asked, not a need ("he asked for
+    # the numbers" is news, "bring Hedda a ruler, she just asked for one" a reason)
+    phrases = {
+        p
+        for p in (*_NEED_VERBS, *english.entries("need_phrases"))
+        if not {"asked", "asking"} & set(p.split())
+    }
+    forms: list[str] = []
+    for phrase in sorted(phrases, key=len, reverse=True):
+        words = phrase.split()
+        if words[0] in ("s", "d"):  # "'s after", "'d like": the contraction on the pronoun
+            forms.append(r"['’]?" + words[0] + r"\s+" + r"\s+".join(map(re.escape, words[1:])))
+            continue
+        forms.append(r"\s+" + r"\s+".join(map(re.escape, words)))
+    return "(?:" + "|".join(forms) + ")"
+
+
+_PRONOUN_NEED = re.compile(
+    _OPENING
+    + r"(?P<pronoun>"
+    + "|".join(_PRONOUNS)
+    + r")(?P<adverb>\s+(?:"
+    + "|".join(_ADVERBS)
+    + r"))?(?P<verb>"
+    + _verb_pattern()
+    + r")\b(?!\s+(?:"
+    + "|".join(_NOT_A_THING)
+    + r")\b)",
+    re.IGNORECASE,
+)
+
+
+def _colleagues(terms: Terms, text: str, requester: str) -> list[str]:
+    """The colleagues (not the speaker) that ``text`` names, in order."""
+    return [p for p in terms.named(terms.lex.read(text), "person") if p != requester]
+
+
+def named_subject(terms: Terms, text: str, requester: str) -> tuple[str, list[Evidence]]:
+    """``text`` with the pronoun subject of a need written as the one colleague it means."""
+    found: list[Evidence] = []
+
+    def meant(match: re.Match[str]) -> str:
+        before = set(_colleagues(terms, text[: match.start("pronoun")], requester))
+        if len(before) > 1:
+            return match.group(0)  # whom it means is the frames' (or the rule's) to ask
+        if not before:
+            return match.group(0)  # nobody named: asked (``unnamed_subject``)
+        who = next(iter(before))
+        name = terms.office.person(who).name
+        verb = match.group("verb")
+        if match.group("pronoun").lower() == "they":
+            # "they need" of one colleague: the singular verb of the name
+            verb = re.sub(r"\bneed\b", "needs", re.sub(r"\bwant\b", "wants", verb))
+            verb = re.sub(r"^['’]?re\b", " is", verb)
+        said = match.group(0)[: match.start("pronoun") - match.start()]
+        said += name + (match.group("adverb") or "") + verb
+        found.append(
+            Evidence(words=match.group(0).strip(), meaning=f"{name}'s need, said by a pronoun")
+        )
+        return said
+
+    return _PRONOUN_NEED.sub(meant, text), found
+
+
+def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """A need whose subject is "she"/"he"/"they" with nobody named before it: asked whom the
+    pronoun means, never read as the speaker's own need."""
+    match = _PRONOUN_NEED.search(piece.text)
+    if match is None or piece.text[: match.start("pronoun")].strip(" ,.-–—;:!?"):
+        return None  # not the piece's own subject ("if she needs it" is a condition)
+    before = {
+        p
+        for earlier in msg.pieces
+        if earlier.end <= piece.start
+        for p in terms.named(earlier.lexed, "person")
+        if p != requester
+    }
+    asked = any(p.acts.request or p.acts.imperative for p in msg.pieces if p is not piece)
+    if len(before) == 1 or (before and asked):
+        # one named: written as the name before (``named_subject``); several beside a
+        # request ("take Mark's ruler to Grace, she needs it"): the reason for it
+        return None
+    said = match.group("pronoun")
+    question = f"Who do you mean by {said!r}? Please tell me their name."
+    if before:
+        names = " or ".join(terms.office.person(p).name for p in sorted(before))
+        question = f"Who do you mean by {said!r}: {names}?"
+    return Finding("which", piece, f"whom {said!r} means is asked", message=question)
+
+
+_ASKED = re.compile(r"^Who do you mean by '(?P<pronoun>\w+)'")
+_ME = frozenset({"me", "i", "myself", "mine"})
+
+
+def with_subject_answered(
+    terms: Terms, text: str, requester: str, question: str, answer: str
+) -> str | None:
+    """The request with the pronoun ``unnamed_subject`` asked about written as the colleague
+    the answer names ("she needs the umbrella" → "Who do you mean by 'she'?" → "Rose": "Rose
+    needs the umbrella"); "me" makes it the speaker's own need. None where the question was
+    another's or the answer names nobody, or several (the question stays open)."""
+    asked = _ASKED.match(question)
+    if asked is None or asked.group("pronoun").lower() not in _PRONOUNS:
+        return None
+    said = asked.group("pronoun").lower()
+    match = next(
+        (m for m in _PRONOUN_NEED.finditer(text) if m.group("pronoun").lower() == said), None
+    )
+    if match is None:
+        return None
+    words = terms.lex.read(answer).tokens
+    people = set(terms.named(terms.lex.read(answer), "person"))
+    verb = match.group("verb")
+    if people == {requester} or (not people and [t.word for t in words] in ([w] for w in _ME)):
+        name = "I"
+        verb = re.sub(r"\bneeds\b", "need", re.sub(r"\bwants\b", "want", verb))
+    elif len(people) == 1:
+        name = terms.office.person(next(iter(people))).name
+        verb = re.sub(r"\bneed\b", "needs", re.sub(r"\bwant\b", "wants", verb))
+    else:
+        return None
+    start, end = match.start("pronoun"), match.end("verb")
+    return text[:start] + name + (match.group("adverb") or "") + verb + text[end:]

@@ -1,0 +1,98 @@
+"""A thing an errand's verb takes that the office has no name for: "take my lamp to Rose, and
+bring me Grace's highlighter" in an office with no lamp. The frames read the part they can (the
+highlighter) and the part with the unknown noun made no task, so it vanished and "Done"
+was reported for the rest (or, worse, the rest took that part's recipient: "bring me Grace's
+highlighter and take my lamp to Rose" handed the highlighter to Rose).
+
+The rule is about English and the office's own names: an errand's verb (a task word of the
+lexicon), then perhaps whom it is for ("me", a colleague), then a possessive ("my", "Grace's")
+and a plain noun no name of the office reads (after a modifier or two) is a thing the request
+asks to move. No task can carry it, so the part is asked about before anything moves
+(``parts.unread_part``), quoting the phrase. A noun that modifies an office's item ("my desk
+lamp" where "lamp" is an item's name) is that item; a statement or reason beside a request
+("- mine's broken") has no errand's verb before it and is never asked about.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+
+from assistantx.agents.symbolic.reading.categories import category_named
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+
+_COMMON = english.words("common")
+_VAGUE = english.words("vague_things")
+_MODIFIERS = 2  # plain words before the noun ("my old desk lamp")
+# whom the thing is for, said between the verb and the thing ("bring *me* Grace's ...")
+_FOR_WHOM = frozenset({"self", "person"})
+# the task words that move a thing to someone ("take", "bring", "borrow"), less the ones that
+# only say a wish ("I'd like my ...")
+_GIVE = "give"
+_WISHES = frozenset({"like", "love", "need", "needs", "want", "wants"})
+# the articles before a thing the lexicon leaves without a mention ("take *a* lamp to Rose")
+_ARTICLES = frozenset({"a", "an", "the", "some", "this", "that"})
+
+
+def unnamed_thing(
+    mentions: Sequence[Mention], tokens: Sequence[Token], owners: Collection[str | None], me: str
+) -> str | None:
+    """The phrase of the first thing an errand's verb takes that names nothing of the office
+    ("my lamp", "a lamp"), as said; None when there is none. ``owners``: whose things the
+    tasks read carry where no name of the thing was said (None: nobody's); a phrase of an owner
+    among them was read as their thing by another stage ("take my lease to Ines to be
+    stamped": the one paper of mine a seal takes), not left out."""
+    for n, verb in enumerate(mentions):
+        if verb.kind != "cue" or _GIVE not in verb.ids or tokens[verb.start].word in _WISHES:
+            continue
+        k = n + 1
+        if _next(mentions, k, verb.end) and mentions[k].kind in _FOR_WHOM:
+            if not mentions[k].possessive:
+                k += 1  # "bring me ...", "give Rose ..."
+        said = _thing_said(mentions, tokens, k, mentions[k - 1].end, me)
+        if said is not None and said[1] not in owners:
+            return said[0]
+    return None
+
+
+def _next(mentions: Sequence[Mention], k: int, end: int) -> bool:
+    """Whether ``mentions[k]`` follows straight on from the token ``end``."""
+    return k < len(mentions) and mentions[k].start == end
+
+
+def _thing_said(
+    mentions: Sequence[Mention], tokens: Sequence[Token], k: int, end: int, me: str
+) -> tuple[str, str | None] | None:
+    """The phrase "my/Grace's/a/the [modifier] noun" from the token ``end`` (``mentions[k]``
+    on) whose noun no name of the office reads, and whose it says (None: nobody's)."""
+    if _next(mentions, k, end) and mentions[k].possessive and mentions[k].kind in _FOR_WHOM:
+        opener = mentions[k]
+        whose = me if opener.kind == "self" else opener.ids[0] if len(opener.ids) == 1 else ""
+        start, k = opener.start, k + 1
+    elif end < len(tokens) and tokens[end].word in _ARTICLES:
+        whose, start = None, end  # "take a lamp to Rose": the article is no mention
+    else:
+        return None
+    run: list[Mention] = []
+    at = start + 1
+    for m in mentions[k:]:
+        if m.start != at or tokens[m.start].opens or tokens[m.start].after_pause:
+            break
+        if m.kind != "word":
+            return None  # "my desk lamp" where the lamp is the office's: that item
+        word = m.ids[0] if m.ids else tokens[m.start].word
+        if word in _COMMON or word in _VAGUE or not word.isalpha():
+            break
+        run.append(m)
+        at = m.end
+    if not run or len(run) > 1 + _MODIFIERS:
+        return None  # nothing said, or too long a phrase to be one thing's name
+    head = run[-1]
+    noun = tokens[head.start].word
+    if not language.is_noun(noun) or tokens[head.start].corrected or whose == "":
+        return None
+    named = " ".join(tokens[m.start].word for m in run)
+    if category_named(named) is not None or category_named(noun) is not None:
+        return None  # "a drink", "a hot drink": a kind of thing, asked or offered by its stage
+    return " ".join(t.text for t in tokens[start : head.end]), whose
