@@ -24,6 +24,7 @@ from assistantx.core import english, language
 
 _COMMON = english.words("common")
 _VAGUE = english.words("vague_things")
+_POINTING_BACK = english.words("pointing_back")  # "bring me the original back"
 _MODIFIERS = 2  # plain words before the noun ("my old desk lamp")
 # whom the thing is for, said between the verb and the thing ("bring *me* Grace's ...")
 _FOR_WHOM = frozenset({"self", "person"})
@@ -82,7 +83,7 @@ def _thing_said(
         if m.kind != "word":
             return None  # "my desk lamp" where the lamp is the office's: that item
         word = m.ids[0] if m.ids else tokens[m.start].word
-        if word in _COMMON or word in _VAGUE or not word.isalpha():
+        if word in _COMMON or word in _VAGUE or word in _POINTING_BACK or not word.isalpha():
             break
         run.append(m)
         at = m.end
