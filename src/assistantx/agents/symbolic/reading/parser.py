@@ -71,6 +71,7 @@ from assistantx.agents.symbolic.reading.frames import (
 )
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
+from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
@@ -215,6 +216,7 @@ class InstructionParser:
         ``to_self``: the requester answered "me" to whom their own item goes;
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Shiv here - ...": the speaker's sign-on, no party to the request
         text = signed_on(
             text,
