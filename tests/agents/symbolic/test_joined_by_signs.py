@@ -1,8 +1,11 @@
 """Two requests joined by "+" or "&" as by "and" (``joining_signs``). Before, "copy my
 document & bring me a water" asked "what you want me to do with the water" and did neither
 part; now both are read, as with "and". "print my file + a coffee pls" is read as "print my
-file and a coffee pls" is: the coffee with no verb of its own and no "too" is still asked
-about (the reader's rule of test_made_beside_work), with "too" both parts are read."""
+file and a coffee pls" is: the coffee with no verb of its own and no "too" may be a second
+request or not, so the whole is restated and asked first ("Shall I print your file for you
+and get coffee for you?", ``frames._made_beside(unsaid=True)``); a yes does both, a no
+nothing. Before, only "what you want me to do with the coffee" was asked, a question the
+requester could not answer, and nothing was done. With "too" both parts are read at once."""
 
 from __future__ import annotations
 
@@ -10,10 +13,12 @@ import pytest
 
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from helpers.dataset_offices import default_office, harbour_office
-from helpers.reading import frame_reader
+from helpers.reading import answered_reader, frame_reader
 
 _DEFAULT = frame_reader(default_office, "wang")
 _HARBOUR = frame_reader(harbour_office, "may")
+_DEFAULT_ANSWERED = answered_reader(default_office, "wang")
+_HARBOUR_ANSWERED = answered_reader(harbour_office, "may")
 
 
 def _parts(frame) -> list[tuple[str, str, str | None]]:  # type: ignore[no-untyped-def]
@@ -50,10 +55,25 @@ def test_harbour_both_parts_are_read(text: str, parts: list[tuple[str, str]]) ->
 
 
 @pytest.mark.parametrize("sign", ["+", "&", "and"])
-def test_a_made_thing_with_no_verb_is_asked_about_as_with_and(sign: str) -> None:
-    """The same question whichever joins: nothing moves before the coffee is understood."""
-    frame = _DEFAULT(f"print my file {sign} a coffee pls")
-    assert not frame.tasks and frame.question is not None and "coffee" in frame.question
+def test_a_made_thing_with_no_verb_is_restated_with_both_parts(sign: str) -> None:
+    """The same question whichever joins: nothing moves before both parts are confirmed."""
+    text = f"print my file {sign} a coffee pls"
+    frame = _DEFAULT(text)
+    assert not frame.tasks and frame.question is not None, frame
+    assert frame.question.startswith("Shall I print your file")
+    assert "coffee" in frame.question
+    yes = _DEFAULT_ANSWERED(text, ["yes"])
+    assert _parts(yes) == [("print", "file", "wang"), ("produce", "coffee", "wang")]
+    no = _DEFAULT_ANSWERED(text, ["no"])
+    assert not no.tasks
+
+
+def test_harbour_a_tea_after_a_print_is_restated_with_both_parts() -> None:
+    frame = _HARBOUR("print my file + a tea pls")
+    assert frame.question is not None and "print your file" in frame.question
+    assert "tea" in frame.question
+    yes = _HARBOUR_ANSWERED("print my file + a tea pls", ["yes"])
+    assert _parts(yes) == [("print", "file", "may"), ("produce", "tea", "may")]
 
 
 def test_the_other_part_keeps_its_own_recipient() -> None:

@@ -64,6 +64,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
 )
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
+    RESTATED,
     WHICH_ITEM,
     FrameReader,
     holder,
@@ -241,6 +242,9 @@ class InstructionParser:
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
+        if any(e.meaning == RESTATED for e in frame.evidence):
+            # "print my file and a coffee": the coffee may be a second request, or not
+            screened.confirm = True
         if any(m.guessed for m in spoken.msg.lexed.mentions):
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"
