@@ -43,7 +43,7 @@ def test_a_made_product_beside_work_on_an_item_is_a_request_of_its_own(
     ["Print my slides and a coffee", "print my slides and a coffee for Zhang"],
 )
 def test_a_made_product_said_as_the_works_object_is_still_asked_about(text: str) -> None:
-    """Nothing says the coffee is asked for besides: what to do with it is asked."""
+    """Nothing says the coffee is asked for besides: asked first (the whole restated)."""
     frame = parser("default").parse(text, "lee")
     assert frame.tasks == [] and frame.question is not None
     assert "coffee" in frame.question

@@ -67,6 +67,9 @@ class Clause:
     mentions: list[Mention]
     cues: set[str] = field(default_factory=set)
     modifiers: set[int] = field(default_factory=set)  # starts of mentions that only modify
+    # "print my file and a coffee": a thing made from nothing, split off the work before it
+    # with no "too" to say it is asked besides; the whole request is restated and asked first
+    restated: bool = False
 
     def objects(self) -> list[Mention]:
         """The item mentions the request acts on, in text order."""

@@ -62,7 +62,7 @@ from assistantx.agents.symbolic.reading.work_unsaid import which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.office import Office
-from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task, TaskFrame
+from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Evidence, Task, TaskFrame
 from assistantx.core.wording import file_noun
 
 _BREAK_WORDS = english.words("clause_breaks")
@@ -78,6 +78,9 @@ _PAPER_NOUNS = english.words("paper_nouns") | english.words("paper_heads")
 _DEFINITE = frozenset({"the", "this", "that", "our"})
 # the cues of a clause that hands things over, whose coordinated objects are its own
 _HANDING_CUES = frozenset({"give", "make", "send"})
+# The meaning of a frame's evidence that asks the parser to restate the whole request first
+# ("print my file and a coffee": "Shall I print your file and bring you a coffee?")
+RESTATED = "a thing made from nothing after other work, with no 'too': restated first"
 
 # The question asked when a request names no item the office knows ("Which item do you mean
 # for me to send by courier?"); its answer is read by ``item_answered``.
@@ -317,8 +320,15 @@ class FrameReader:
             or which_work(self.office, tasks, readings.mentions, requester)
             or self._check(tasks, requester, to_self)
         )
+        # "print my file and a coffee": both read, the whole restated before anything moves
+        restated = (
+            [Evidence(words="", meaning=RESTATED)] if any(c.restated for c in clauses) else []
+        )
         return TaskFrame(
-            requester=requester, tasks=tasks if question is None else [], question=question
+            requester=requester,
+            tasks=tasks if question is None else [],
+            question=question,
+            evidence=restated,
         )
 
     def _on_fetched(self, fetched: Task, work: Task, requester: str) -> Task:
@@ -458,8 +468,13 @@ class FrameReader:
                     or self._made_beside(clauses[-1], mentions, after_join, tokens)
                 )
             )
-            if (hard or soft) and clauses[-1].mentions:
-                clauses.append(Clause([]))
+            unsaid = (
+                not soft
+                and joined
+                and self._made_beside(clauses[-1], mentions, after_join, tokens, unsaid=True)
+            )
+            if (hard or soft or unsaid) and clauses[-1].mentions:
+                clauses.append(Clause([], restated=unsaid))
             if aside:
                 aside_end = after_join + aside
                 continue
@@ -490,7 +505,13 @@ class FrameReader:
         )
 
     def _made_beside(
-        self, current: Clause, mentions: Sequence[Mention], n: int, tokens: Sequence[Token]
+        self,
+        current: Clause,
+        mentions: Sequence[Mention],
+        n: int,
+        tokens: Sequence[Token],
+        *,
+        unsaid: bool = False,
     ) -> bool:
         """ "print my slides, and I'd like a cappuccino too", "..., and a tea for me too":
         after a request for work on an item (a print, a copy, a seal), the requester's own
@@ -544,11 +565,13 @@ class FrameReader:
             return j < len(mentions) and mentions[j].kind == "item"
         if cues & _HANDING_CUES:
             return False
-        return (
-            first.kind == "item"
-            and self.reader.made_from_nothing(first.id)
-            and _said_in_addition(tokens, first.end)
-        )
+        if first.kind != "item" or not self.reader.made_from_nothing(first.id):
+            return False
+        if not unsaid:
+            return _said_in_addition(tokens, first.end)
+        # ``unsaid``: "print my file and a coffee", no "too": a thing no work of the clause
+        # makes (a print makes no coffee) may be a second request; read as one, restated
+        return not any(first.id in self.reader.products_of(k) for k in cues)
 
     # -- checks ----------------------------------------------------------------------------
     def _uncovered(self, objects: list[Mention], tasks: list[Task]) -> str | None:

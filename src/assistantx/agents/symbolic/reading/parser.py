@@ -65,6 +65,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
 )
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
+    RESTATED,
     WHICH_ITEM,
     FrameReader,
     holder,
@@ -72,6 +73,7 @@ from assistantx.agents.symbolic.reading.frames import (
 )
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
+from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
@@ -219,6 +221,7 @@ class InstructionParser:
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
+        text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Shiv here - ...": the speaker's sign-on, no party to the request
         text = signed_on(
             text,
@@ -243,6 +246,9 @@ class InstructionParser:
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
+        if any(e.meaning == RESTATED for e in frame.evidence):
+            # "print my file and a coffee": the coffee may be a second request, or not
+            screened.confirm = True
         if any(m.guessed for m in spoken.msg.lexed.mentions):
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"

@@ -33,6 +33,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
 )
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
+from assistantx.agents.symbolic.reading.result_form import products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
@@ -114,6 +115,7 @@ class MentionReader:
             for op in office.operations
             if op.sends_out
         }
+        self._products = products(office)  # "scan to PDF ...": what the work makes
         self._kind_of = {
             op.id: kind
             for op in office.operations
@@ -122,7 +124,7 @@ class MentionReader:
 
     def read(self, lexed: Lexed, requester: str | None = None) -> Readings:
         tokens = lexed.tokens
-        mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens))
+        mentions = verb_uses(tokens, self._owned_cue_items(lexed.mentions, tokens), self._products)
         if requester is not None:
             mentions = not_the_writer(mentions, requester)
         mentions = participle_adjectives(tokens, mentions)
@@ -494,11 +496,16 @@ def not_the_writer(mentions: Sequence[Mention], requester: str) -> list[Mention]
     return out
 
 
-def verb_uses(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
-    """Mentions with one-word items used as verbs ("book me a taxi") turned into plain words."""
+def verb_uses(
+    tokens: Sequence[Token], mentions: Sequence[Mention], made: frozenset[str] = frozenset()
+) -> list[Mention]:
+    """Mentions with one-word items used as verbs ("book me a taxi") turned into plain words;
+    a product of ``made`` said as a service's result ("scan to PDF my form") stays the item."""
     out = list(mentions)
     for n, m in enumerate(out):
         if m.kind != "item" or m.end - m.start != 1 or m.possessive:
+            continue
+        if result_form(tokens, out, n, made):
             continue
         before = tokens[m.start - 1].word if m.start > 0 else ""
         after = tokens[m.end].word if m.end < len(tokens) else ""

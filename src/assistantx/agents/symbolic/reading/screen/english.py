@@ -37,6 +37,7 @@ class English:
     conditions: tuple[tuple[str, ...], ...]
     fact_openers: frozenset[str]
     another_one: tuple[str, ...]
+    others_ones: tuple[str, ...]  # "someone else's": a colleague's one of the thing said
     purpose_heads: tuple[str, ...]
     purpose_links: tuple[str, ...]
     purpose_tail: frozenset[str]
@@ -78,6 +79,7 @@ def english() -> English:
         conditions=phrases("conditions"),
         fact_openers=word_set("fact_openers"),
         another_one=tuple(sorted((str(p) for p in raw["another_one"]), key=lambda p: -len(p))),
+        others_ones=tuple(sorted((str(p) for p in raw["others_ones"]), key=lambda p: -len(p))),
         purpose_heads=tuple(str(p) for p in raw["purpose_heads"]),
         purpose_links=tuple(str(p) for p in raw["purpose_links"]),
         purpose_tail=word_set("purpose_tail"),

@@ -8,6 +8,7 @@ import re
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.still_needed import still_needed
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import language
 
@@ -20,6 +21,9 @@ def negated(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding
     if found is not None:
         msg.negating = True
         return found
+    if msg.negating and still_needed(piece):
+        # "don't shred my document, I still need it for the meeting": why it is not wanted
+        return Finding("negated", piece, "the speaker still needs it: why the errand is not wanted")
     if msg.negating and _told_reason(terms, msg, piece):
         # "don't bother bringing the level, Otto's lending me his": why the errand is not
         # wanted, told as what is happening, not an errand of its own
@@ -51,6 +55,10 @@ def negation(terms: Terms, piece: Piece) -> Finding | None:
             k = at + len(neg)
             while k < len(words):  # "don't actually need", "do not ever print"
                 if terms.request_verb(words, k) or terms.errand_gerund(words[k]):
+                    return Finding("negated", piece, f"negated: not to {words[k]}")
+                # "don't shred my document": a verb that destroys, called off, is no errand
+                # to decline, whether the office has the machine or not
+                if any(starts_with(words, k, d) for d in terms.en.destructive):
                     return Finding("negated", piece, f"negated: not to {words[k]}")
                 if words[k] not in terms.en.negation_fillers:
                     break

@@ -84,7 +84,8 @@ def rewrite(
         one_stated = len(set(stated)) == 1 or again or worked is not None
         last = worked if worked is not None else stated[-1] if stated else None
         back = ("it", "them") if stated and said[-1] == last and one_stated else ()
-        for phrase in (*terms.en.another_one, "some", *back):
+        # "someone else's" first: its "one" is no "one" of its own
+        for phrase in (*terms.en.others_ones, *terms.en.another_one, "some", *back):
             pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
             match = pattern.search(text)
             if match:

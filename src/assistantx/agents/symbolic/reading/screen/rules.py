@@ -27,6 +27,7 @@ from assistantx.agents.symbolic.reading.screen.fyi import fyi
 from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
+from assistantx.agents.symbolic.reading.screen.need_to_know import need_to_know
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
@@ -75,6 +76,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
     ("statement", reason),
+    # what someone else wants to know ("a visitor wants to know the coffee prices"): a topic,
+    # never a thing asked for
+    ("statement", need_to_know),
     # the things to use a tool asked for on ("..., I've a pile of letters to seal")
     ("statement", tool_use),
     # what already happened to the speaker's own thing beside a request ("mine went in the
