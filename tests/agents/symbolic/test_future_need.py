@@ -86,6 +86,9 @@ def test_a_colleagues_need_for_later_is_asked_before_anything_moves(
         ("default", "need a stapler before the courier leaves at 4", "stapler", "zhang"),
         ("harbour", "I need a ruler before the meeting this afternoon", "ruler", "pat"),
         ("harbour", "need a highlighter until the workshop ends at 5", "highlighter", "pat"),
+        # a time of the event the thing is for: needed before it, so asked for now
+        ("default", "I need Wang's stapler for a consult at 3", "stapler", "zhang"),
+        ("harbour", "need a ruler for the meeting at 2", "ruler", "pat"),
         # a time said in another clause than the need's: the need is now
         ("default", "I need a stapler and I'll give it back later", "stapler", "zhang"),
         ("default", "I need a stapler", "stapler", "zhang"),

@@ -21,6 +21,8 @@ _FUTURE_FORMS = tuple(tuple(p.split()) for p in english.entries("future_forms"))
 _NOW = tuple(tuple(p.split()) for p in english.entries("now_words"))
 _JOINERS = english.words("clause_joiners")
 _CLOCK = english.words("clock_words")
+# what opens an event's noun phrase after "for" ("for a consult at 3", "for my 2 o'clock")
+_EVENT_OPENERS = [["a"], ["an"], ["the"], ["my"], ["our"], ["his"], ["her"], ["their"], ["this"]]
 # The speaker as a future's subject ("I'll", "we're", "I am"), and an adverb between
 # the future form and the verb ("I'll probably need ...").
 _SPEAKER = frozenset({"i", "we", "ill", "well", "im", "were", "am", "are"}) | english.words(
@@ -60,6 +62,16 @@ def clock_time(words: list[str]) -> bool:
 
 def need_clause(words: list[str], at: int) -> list[str]:
     """The words of the need's own clause from its verb at ``at``: up to the first word that
-    joins another clause ("... and I'll give it back later")."""
-    end = next((n for n in range(at + 1, len(words)) if words[n] in _JOINERS), len(words))
+    joins another clause ("... and I'll give it back later"), or to a purpose's event ("for
+    a consult at 3", "for the meeting at 2": the time is the event's, which the thing is
+    needed before, not when it may come)."""
+    end = next(
+        (
+            n
+            for n in range(at + 1, len(words))
+            if words[n] in _JOINERS
+            or (words[n] == "for" and words[n + 1 : n + 2] in _EVENT_OPENERS)
+        ),
+        len(words),
+    )
     return words[at:end]
