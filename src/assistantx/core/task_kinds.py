@@ -141,7 +141,9 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         locker="take {item} out, copy it and put the original and the copy back",
         todo="{verb} {whose} for {to}",
         done="{whose} and its {product} were handed to {to}",
-        done_elsewhere="the {product} of {whose} was handed to {to}, and the original back to {back}",
+        done_elsewhere=(
+            "the {product} of {whose} was handed to {to}, and the original back to {back}"
+        ),
         done_file="{whose} was {done}: the {product} was sent to {to} by message",
     ),
     KindSpec(
