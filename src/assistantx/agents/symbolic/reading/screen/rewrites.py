@@ -6,7 +6,9 @@ the name back, a dangling possessive ("lend him mine") gets its item."""
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
@@ -15,7 +17,7 @@ from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import THANKED
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
-from assistantx.agents.symbolic.reading.tokens import gaps
+from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.core import english, language
 from assistantx.core.asked_to_have import asked_to_have
@@ -376,15 +378,31 @@ def _holder_of_last(
 
 
 def _named_before_pronoun(msg: Message) -> set[str]:
-    """Everyone a name before the message's first "him/his/her" may mean."""
+    """Everyone a name before the message's first "him/his/her" may mean: not the one a thing
+    is taken from ("take Dawn's calculator to him", "take some from Jack to him"), who has it
+    and is its source, never whom it is taken to."""
     tokens = msg.lexed.tokens
+    mentions = msg.lexed.mentions
     first = next((n for n, t in enumerate(tokens) if t.word in _BACK_PRONOUNS), len(tokens))
     return {
         person
-        for m in msg.lexed.mentions
-        if m.kind == "person" and m.start < first
+        for n, m in enumerate(mentions)
+        if m.kind == "person" and m.start < first and not _source(tokens, mentions, n)
         for person in m.ids
     }
+
+
+def _source(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """Whether the person ``mentions[n]`` is said as whom a thing comes from: its owner right
+    before it ("Dawn's calculator") or after "from" ("from Jack")."""
+    m = mentions[n]
+    if m.start and tokens[m.start - 1].word == _FROM:
+        return True
+    after = mentions[n + 1] if n + 1 < len(mentions) else None
+    return m.possessive and after is not None and after.start == m.end and after.kind == "item"
+
+
+_FROM = "from"
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").
