@@ -26,6 +26,8 @@ _default = frame_reader(default_office, "zhang")
         ),
         ("Mark says he needs tape, can you take some from Jack to him", ("tape", "jack", "mark")),
         ("Mark has no ruler, can you take Grace's ruler to him", ("ruler", "grace", "mark")),
+        ("Mark has no calculator, can you take Dawn's to him", ("calculator", "dawn", "mark")),
+        ("Mark has no ruler, could you bring Grace's to him", ("ruler", "grace", "mark")),
     ],
 )
 def test_the_source_is_not_whom_the_pronoun_means(text: str, task: tuple[str, str, str]) -> None:
@@ -49,10 +51,19 @@ def test_an_own_thing_back_from_one_who_has_it_now(text: str, source: str) -> No
     ]
 
 
-def test_on_the_default_office_too() -> None:
-    frame = _default("Lee has no stapler, can you take Wang's stapler to him")
+@pytest.mark.parametrize(
+    ("text", "to"),
+    [
+        ("Lee has no stapler, can you take Wang's stapler to him", "lee"),
+        ("Lee has no stapler, can you take Wang's to him", "lee"),
+        # a colleague named, not a pronoun: that colleague
+        ("Lee has no stapler, can you take Wang's to Chen", "chen"),
+    ],
+)
+def test_on_the_default_office_too(text: str, to: str) -> None:
+    frame = _default(text)
     assert frame.question is None, frame
-    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("stapler", "wang", "lee")]
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("stapler", "wang", to)]
 
 
 def test_a_return_with_nobody_it_is_taken_from_is_still_asked() -> None:

@@ -232,6 +232,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     # "mine" is never followed by its noun, so wherever it stands ("take mine down to Hattie
     # in repro", with "her" already named back) it is the requester's own item of the kind
     # named last; "Rich's" is a possessive only where no noun can follow it
+    # ... and so is one followed by "to" and a colleague's name ("take Dawn's to Mark", or
+    # "to him" with the name put back by ``name_pronouns``)
     # ... and so is one followed by how long it is had ("borrow Zoe's for the afternoon"):
     # how long is no thing to get, so it is read away after a colleague's possessive
     spans = re.compile(rf"\b(\w+['’]s)\s+{_SPAN}\b(?!\s*['’]s)", re.IGNORECASE)
@@ -244,7 +246,7 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     pattern = re.compile(
         r"(?<!\bof\s)\b(mine\b|yours\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
         r"and|or|for now|for a bit|for today|(?:(?:down|up|over|round|across)\s+)?(?:for|to) "
-        r"(?:me|us|him|her|them)|back|over)\b)))",
+        r"(?:me|us|him|her|them)|to [A-Z]\w+|back|over)\b)))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
@@ -394,15 +396,20 @@ def _named_before_pronoun(msg: Message) -> set[str]:
 
 def _source(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
     """Whether the person ``mentions[n]`` is said as whom a thing comes from: its owner right
-    before it ("Dawn's calculator") or after "from" ("from Jack")."""
+    before it ("Dawn's calculator", "Dawn's to him") or after "from" ("from Jack")."""
     m = mentions[n]
     if m.start and tokens[m.start - 1].word == _FROM:
         return True
+    if not m.possessive or m.end >= len(tokens):
+        return False
+    if tokens[m.end].word == _TO:
+        return True  # "take Dawn's to him": the bare possessive of the thing said before
     after = mentions[n + 1] if n + 1 < len(mentions) else None
-    return m.possessive and after is not None and after.start == m.end and after.kind == "item"
+    return after is not None and after.start == m.end and after.kind == "item"
 
 
 _FROM = "from"
+_TO = "to"
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").
