@@ -162,6 +162,15 @@ class OperationChooser:
                 if len(fits) == 1 and len(ops) > 1:  # named where several share the shape
                     t = t.model_copy(update={"operation": fits[0].id})
                 ops = fits
+            elif ops and t.item is not None and not _takes(ops, t):
+                # "scan my badge" where the scanner takes documents: a service runs only on
+                # the item types it takes (the office's own inputs), whatever its shape;
+                # never run on the wrong thing
+                by_verb = [op for op in ops if self._op_words[op.id] & words]
+                return TaskFrame(
+                    requester=frame.requester,
+                    decline=self._cannot_treat(by_verb or ops, t.item),
+                )
             if len(ops) > 1 and t.operation is None:
                 said = [op for op in ops if self._op_words[op.id] & words]
                 if not said:  # "put my contract in the scanner": the facility's own service
@@ -401,6 +410,13 @@ class OperationChooser:
 
     def _item_name(self, type_id: str) -> str:
         return self.office.item_type(type_id).name
+
+
+def _takes(ops: list[Operation], task: Task) -> bool:
+    """Whether the service the task names, else any of ``ops`` (those of its shape), takes
+    the task's item type; an operation with no input (a coffee made from nothing) takes any."""
+    named = [op for op in ops if op.id == task.operation] if task.operation else ops
+    return any(op.input is None or op.input == task.item for op in named or ops)
 
 
 def colleague_named(lexed: Lexed, start: int = 0, end: int | None = None) -> str | None:

@@ -34,6 +34,15 @@ def original_back(task: Task, clause: Clause, tokens: Sequence[Token]) -> bool:
     return bool(said & _ORIGINAL)
 
 
+def original_of_copy(phrase: str, tasks: Sequence[Task]) -> bool:
+    """Whether ``phrase`` ("the original") names the original of a copy some task makes:
+    it is that copy's own return, never a thing the office has no name for."""
+    words = set(phrase.lower().split())
+    return bool(words & _ORIGINAL) and any(
+        task_kinds.kind(t.kind).shape == "transform" for t in tasks
+    )
+
+
 def original_to_its_source(task: Task, roles: Roles, requester: str) -> bool:
     """Whether the clause hands the original to the one it comes back to anyway: the
     requester, who owns it or puts it in (or nobody named: "and keep the original")."""

@@ -18,6 +18,8 @@ done, the sending out silently left out, and "Done" reported). The parts no task
 - any thing an errand's verb takes, "my"/a colleague's and a noun no name of the office
   reads (``unnamed_things``): "take my lamp to Rose, and bring me Grace's highlighter"
   never brings the highlighter alone;
+- a facility's name said as someone's belonging (``owned_facility``): "take my kettle to Mark"
+  never makes Mark a tea at the kitchen's kettle;
 - an operation named by its display name, or by the head noun of it after an article ("a
   legal read", "a read" where a legal read and a style read both exist), on an item the
   request names, run by no task (``operation_left_out``): after "Who should get your
@@ -35,7 +37,9 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.occasion import occasion_people
+from assistantx.agents.symbolic.reading.original_back import original_of_copy
 from assistantx.agents.symbolic.reading.own_papers import unread_paper
+from assistantx.agents.symbolic.reading.owned_facility import owned_facility
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.agents.symbolic.reading.unnamed_things import unnamed_thing
@@ -95,14 +99,13 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if left_out is not None:
         return left_out
     phrase = (
-        unread_compound(
+        owned_facility(readings.mentions, readings.tokens)
+        or unread_compound(
             office, readings.mentions, [t.text for t in readings.tokens], _inputs(office, frame)
         )
         or unread_sent_thing(readings.mentions, [t.text for t in readings.tokens])
         or unread_paper(readings.mentions, readings.tokens)
-        or unnamed_thing(
-            readings.mentions, readings.tokens, _unnamed_owners(readings, frame), frame.requester
-        )
+        or _unnamed(readings, frame)
         or _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
         or _service_left_out(office, readings, frame)
@@ -110,6 +113,16 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     if phrase is None:
         return None
     return f"{ASKED}{phrase}{ASKED_END}{_means(office)} Could you tell me?"
+
+
+def _unnamed(readings: Readings, frame: TaskFrame) -> str | None:
+    """The thing an errand's verb takes that no name of the office reads (``unnamed_thing``),
+    less "the original" of a copy the frame makes: "make Zhang a copy of my document and
+    bring me the original back" is the copy's own return (``original_back``)."""
+    said = unnamed_thing(
+        readings.mentions, readings.tokens, _unnamed_owners(readings, frame), frame.requester
+    )
+    return None if said is None or original_of_copy(said, frame.tasks) else said
 
 
 def _unnamed_owners(readings: Readings, frame: TaskFrame) -> frozenset[str | None]:

@@ -33,14 +33,20 @@ def taken_from(office: Office, task: Task, sources: Sequence[str]) -> Task:
     """A thing going back to its owner ("Ms Okafor needs her tape back") that the request
     takes from one colleague ("from Pat"): that colleague hands over the one they have. The
     office file knows only the things it lists, so it is theirs to hand over (as "take the
-    tape from Pat to May" reads), asked of them; unchanged where the thing already has a
-    holder, several or no colleague is taken from, or that colleague has no such thing."""
+    tape from Pat to May" reads), asked of them; where that colleague has no such thing of
+    their own, the owner's, which they have now (the source). Unchanged where the thing
+    already has a holder, or several or no colleague is taken from."""
     found = set(sources)
     if task.kind != "transfer" or task.item is None or len(found) != 1:
         return task
     if task.owner is None or task.owner != task.recipient or task.source is not None:
         return task
     giver = next(iter(found))
-    if giver == task.owner or giver not in office.owners_of(task.item):
+    if giver == task.owner:
         return task
+    if giver not in office.owners_of(task.item):
+        # "Rose wants her umbrella back, take it from Pat to her" where the office lists no
+        # umbrella of Pat's: Rose's own, which Pat has now (as a lent thing said to be on
+        # someone's desk is taken from them), never a question whether Rose should get it
+        return task.model_copy(update={"source": giver})
     return task.model_copy(update={"owner": giver})

@@ -34,6 +34,11 @@ _GIVE = "give"
 _WISHES = frozenset({"like", "love", "need", "needs", "want", "wants"})
 # the articles before a thing the lexicon leaves without a mention ("take *a* lamp to Rose")
 _ARTICLES = frozenset({"a", "an", "the", "some", "this", "that"})
+# The joining word of a second thing the same verb takes ("a stapler *and* the projector").
+_AND = "and"
+_TO = "to"
+# The words after a joined thing that end its clause ("and the projector *please*").
+_CLAUSE_ENDS = frozenset({"please", "pls", "too", "as", "and", "then", "to", "for", "asap", "now"})
 
 
 def unnamed_thing(
@@ -52,9 +57,68 @@ def unnamed_thing(
             if not mentions[k].possessive:
                 k += 1  # "bring me ...", "give Rose ..."
         said = _thing_said(mentions, tokens, k, mentions[k - 1].end, me)
+        if said is None:
+            said = _joined_thing(mentions, tokens, k, mentions[k - 1].end, me)
         if said is not None and said[1] not in owners:
             return said[0]
     return None
+
+
+def _joined_thing(
+    mentions: Sequence[Mention], tokens: Sequence[Token], k: int, end: int, me: str
+) -> tuple[str, str | None] | None:
+    """A thing no name of the office reads joined by "and" to the verb's known object ("bring
+    me a stapler *and the projector*"): a noun with no verb of its own shares the verb before
+    it, so it is a thing the request asks to move, never a part to drop. Only a phrase that
+    ends its clause ("and the projector", "and a lamp please") is such a noun: "and the
+    meeting starts at 3" is a clause of its own."""
+    while True:
+        k, end = _known_object(mentions, tokens, k, end)
+        if end < 0 or not _next(mentions, k, end) or tokens[end].word != _AND:
+            return None
+        k, end = k + 1, mentions[k].end
+        said = _thing_said(mentions, tokens, k, end, me)
+        if said is None:
+            continue  # "a stapler and scissors": known too, or none; on to what follows
+        last = _phrase_end(tokens, end)
+        if last < len(tokens) and not (
+            tokens[last].after_pause or tokens[last].opens or tokens[last].word in _CLAUSE_ENDS
+        ):
+            return None
+        return said
+
+
+def _known_object(
+    mentions: Sequence[Mention], tokens: Sequence[Token], k: int, end: int
+) -> tuple[int, int]:
+    """The mention index after the object read at the token ``end`` ("a stapler", "my
+    stapler", "Lee's pen"), and the token after it; (k, -1) where no item is read there."""
+    if _next(mentions, k, end) and mentions[k].possessive and mentions[k].kind in _FOR_WHOM:
+        k, end = k + 1, mentions[k].end
+    elif end < len(tokens) and tokens[end].word in _ARTICLES:
+        end += 1
+    if not (_next(mentions, k, end) and mentions[k].kind == "item"):
+        return k, -1
+    k, end = k + 1, mentions[k].end
+    if _next(mentions, k, end) and tokens[end].word == _TO and _next(mentions, k + 1, end + 1):
+        if mentions[k + 1].kind in _FOR_WHOM:
+            # "my stapler to Lee and the projector to Wang": the first thing's recipient
+            k, end = k + 2, mentions[k + 1].end
+    return k, end
+
+
+def _phrase_end(tokens: Sequence[Token], start: int) -> int:
+    """The token after the noun phrase from ``start`` (its opener, then plain words)."""
+    at = start + 1
+    while (
+        at < len(tokens)
+        and not tokens[at].after_pause
+        and tokens[at].word not in _COMMON
+        and tokens[at].word not in _CLAUSE_ENDS
+        and at - start <= 1 + _MODIFIERS
+    ):
+        at += 1
+    return at
 
 
 def _next(mentions: Sequence[Mention], k: int, end: int) -> bool:

@@ -37,6 +37,9 @@ _ADVERBS = ("really", "still", "also", "urgently", "desperately", "just", "badly
 # sentence's or part's end, or a joining word ("Rose is soaked and she needs ...")
 _OPENING = r"(?:^|(?<=[.,;:!?\-–—(])\s*|\b(?:and|but|so|now|plus)\s+)"
 
+# a joining word before the pronoun ("and she needs"), and the marks that already end a part
+_JOINED = re.compile(r"\s*\b(?:and|but|so|now|plus)\s+", re.IGNORECASE)
+_PAUSES = frozenset(".,;:!?-–—(")
 
 # what follows a need's verb when the need is no thing wanted: work to do ("she needs to stamp
 # it": the request's own doer) or a thing said before ("she needs it today": the reason for
@@ -88,8 +91,10 @@ def named_subject(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
 
     def meant(match: re.Match[str]) -> str:
         before = set(_colleagues(terms, text[: match.start("pronoun")], requester))
+        opening = _opening(text, match)
         if len(before) > 1:
-            return match.group(0)  # whom it means is the frames' (or the rule's) to ask
+            # whom it means is the frames' (or the rule's) to ask, on a piece of its own
+            return opening + match.group(0)[match.start("pronoun") - match.start() :]
         if not before:
             return match.group(0)  # nobody named: asked (``unnamed_subject``)
         who = next(iter(before))
@@ -99,14 +104,24 @@ def named_subject(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
             # "they need" of one colleague: the singular verb of the name
             verb = re.sub(r"\bneed\b", "needs", re.sub(r"\bwant\b", "wants", verb))
             verb = re.sub(r"^['’]?re\b", " is", verb)
-        said = match.group(0)[: match.start("pronoun") - match.start()]
-        said += name + (match.group("adverb") or "") + verb
+        said = opening + name + (match.group("adverb") or "") + verb
         found.append(
             Evidence(words=match.group(0).strip(), meaning=f"{name}'s need, said by a pronoun")
         )
         return said
 
     return _PRONOUN_NEED.sub(meant, text), found
+
+
+def _opening(text: str, match: re.Match[str]) -> str:
+    """What stands before the pronoun of ``match``, a joining word written as a pause: in
+    "Chen is cold and she needs a coffee" the need is a clause of its own, not part of the
+    state said before it; the pause keeps it a piece of its own, read as "Chen needs a
+    coffee" is (the joining word folded it into the statement: "Noted")."""
+    said = match.group(0)[: match.start("pronoun") - match.start()]
+    if not _JOINED.fullmatch(said):
+        return said
+    return " " if text[: match.start()].rstrip()[-1:] in _PAUSES else ", "
 
 
 def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:

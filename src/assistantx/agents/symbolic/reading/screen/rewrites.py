@@ -6,7 +6,9 @@ the name back, a dangling possessive ("lend him mine") gets its item."""
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
@@ -15,7 +17,7 @@ from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import THANKED
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
-from assistantx.agents.symbolic.reading.tokens import gaps
+from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.core import english, language
 from assistantx.core.asked_to_have import asked_to_have
@@ -231,6 +233,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     # "mine" is never followed by its noun, so wherever it stands ("take mine down to Hattie
     # in repro", with "her" already named back) it is the requester's own item of the kind
     # named last; "Rich's" is a possessive only where no noun can follow it
+    # ... and so is one followed by "to" and a colleague's name ("take Dawn's to Mark", or
+    # "to him" with the name put back by ``name_pronouns``)
     # ... and so is one followed by how long it is had ("borrow Zoe's for the afternoon"):
     # how long is no thing to get, so it is read away after a colleague's possessive
     spans = re.compile(rf"\b(\w+['’]s)\s+{_SPAN}\b(?!\s*['’]s)", re.IGNORECASE)
@@ -243,7 +247,7 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     pattern = re.compile(
         r"(?<!\bof\s)\b(mine\b|yours\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
         r"and|or|for now|for a bit|for today|(?:(?:down|up|over|round|across)\s+)?(?:for|to) "
-        r"(?:me|us|him|her|them)|back|over)\b)))",
+        r"(?:me|us|him|her|them)|to [A-Z]\w+|back|over)\b)))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
@@ -377,15 +381,36 @@ def _holder_of_last(
 
 
 def _named_before_pronoun(msg: Message) -> set[str]:
-    """Everyone a name before the message's first "him/his/her" may mean."""
+    """Everyone a name before the message's first "him/his/her" may mean: not the one a thing
+    is taken from ("take Dawn's calculator to him", "take some from Jack to him"), who has it
+    and is its source, never whom it is taken to."""
     tokens = msg.lexed.tokens
+    mentions = msg.lexed.mentions
     first = next((n for n, t in enumerate(tokens) if t.word in _BACK_PRONOUNS), len(tokens))
     return {
         person
-        for m in msg.lexed.mentions
-        if m.kind == "person" and m.start < first
+        for n, m in enumerate(mentions)
+        if m.kind == "person" and m.start < first and not _source(tokens, mentions, n)
         for person in m.ids
     }
+
+
+def _source(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """Whether the person ``mentions[n]`` is said as whom a thing comes from: its owner right
+    before it ("Dawn's calculator", "Dawn's to him") or after "from" ("from Jack")."""
+    m = mentions[n]
+    if m.start and tokens[m.start - 1].word == _FROM:
+        return True
+    if not m.possessive or m.end >= len(tokens):
+        return False
+    if tokens[m.end].word == _TO:
+        return True  # "take Dawn's to him": the bare possessive of the thing said before
+    after = mentions[n + 1] if n + 1 < len(mentions) else None
+    return after is not None and after.start == m.end and after.kind == "item"
+
+
+_FROM = "from"
+_TO = "to"
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").

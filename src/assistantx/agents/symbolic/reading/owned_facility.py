@@ -1,0 +1,33 @@
+"""A facility's name said as someone's belonging: "take my kettle to Mark, then fetch me a
+ruler" where the kettle is the kitchen's, owned by nobody. The lexicon reads "kettle" as the
+facility, so the frames read its service (a tea made for Mark): a wrong physical action, since
+the requester spoke of a thing of theirs to move, and a facility is nobody's and never moves.
+
+The rule is about English and the office's own data: a possessive ("my", "Grace's") straight
+before a facility's name (a name the lexicon reads as a facility, so no item type anyone owns
+goes by it) names no service of the facility. The part is asked about before anything moves
+(``parts.unread_part``), quoting the phrase; the answer takes its place, and the clear part is
+done after it. "make Mark a tea", "get Mark a tea from the kettle" say no owner of the kettle
+and keep their reading.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+
+# The possessives that say whose a thing is: the requester's own ("my") or a colleague's.
+_OWNERS = frozenset({"self", "person"})
+
+
+def owned_facility(mentions: Sequence[Mention], tokens: Sequence[Token]) -> str | None:
+    """The first phrase "my/Grace's <facility>" as said; None when there is none."""
+    for before, m in itertools.pairwise(mentions):
+        if m.kind != "facility" or before.end != m.start:
+            continue
+        if before.kind in _OWNERS and before.possessive:
+            return " ".join(t.text for t in tokens[before.start : m.end])
+    return None
