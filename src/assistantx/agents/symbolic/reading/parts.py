@@ -105,7 +105,7 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
         )
         or unread_sent_thing(readings.mentions, [t.text for t in readings.tokens])
         or unread_paper(readings.mentions, readings.tokens)
-        or _unnamed(readings, frame)
+        or _unnamed(office, readings, frame)
         or _unknown_destination(readings, destinations)
         or _unsent(readings, destinations)
         or _service_left_out(office, readings, frame)
@@ -115,14 +115,35 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     return f"{ASKED}{phrase}{ASKED_END}{_means(office)} Could you tell me?"
 
 
-def _unnamed(readings: Readings, frame: TaskFrame) -> str | None:
+def _unnamed(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
     """The thing an errand's verb takes that no name of the office reads (``unnamed_thing``),
     less "the original" of a copy the frame makes: "make Zhang a copy of my document and
-    bring me the original back" is the copy's own return (``original_back``)."""
+    bring me the original back" is the copy's own return (``original_back``), and less what
+    the frame's own services make, said in a form the names do not list ("photocopy my form
+    and bring me the copies")."""
     said = unnamed_thing(
         readings.mentions, readings.tokens, _unnamed_owners(readings, frame), frame.requester
     )
-    return None if said is None or original_of_copy(said, frame.tasks) else said
+    if said is None or original_of_copy(said, frame.tasks):
+        return None
+    return None if _made_here(office, said, frame) else said
+
+
+def _made_here(office: Office, phrase: str, frame: TaskFrame) -> bool:
+    """Whether the noun ending ``phrase`` is, in any inflection, a word of the name of what
+    one of the frame's services makes ("the copies" of a photocopy)."""
+    noun = phrase.lower().split()[-1]
+    forms = {noun, *language.lemmas(noun).get("NOUN", ())}
+    for t in frame.tasks:
+        op_id = operation_of(office, t)
+        product = office.operation(op_id).product if op_id is not None else None
+        if product is None:
+            continue
+        made = office.item_type(product)
+        names = {w for p in (made.name, *made.synonyms, product) for w in p.lower().split()}
+        if forms & names:
+            return True
+    return False
 
 
 def _unnamed_owners(readings: Readings, frame: TaskFrame) -> frozenset[str | None]:

@@ -96,6 +96,10 @@ class MentionReader:
     def __init__(self, office: Office, lex: Lexicon) -> None:
         self.office = office
         self.lex = lex
+        # the words of what the office's services make and of the services' names ("PDF" of
+        # "scanned PDF", "scan to PDF"): said after "to"/"into"/"as", the form of a result
+        # ("scan my waybill to PDF"), never someone to look up
+        self._result_words = _result_words(office)
         # the verb phrases of services that send an item out of the office (a fax, a
         # courier), first word in any form: what follows their "to" is a destination outside,
         # not a colleague to look up. A phrase counts whole ("send out", never plain "send").
@@ -320,6 +324,16 @@ class MentionReader:
             return False
         return self.office.item_type(before.id).kind == "personal"
 
+    def _result_form(self, tokens: Sequence[Token], m: Mention) -> bool:
+        """Whether ``m`` is one word of a product or service name said after "to", "into"
+        or "as" ("... to PDF"), in a message that names one of the office's services."""
+        if m.end - m.start != 1 or m.start < 1 or tokens[m.start - 1].word not in _INTO_FORM:
+            return False
+        if tokens[m.start].word not in self._result_words:
+            return False
+        said = {t.word for t in tokens}
+        return any(said & {v.lower() for v in op.verbs} for op in self.office.operations)
+
     def _made_from_nothing(self, word: str) -> bool:
         """Whether ``word`` names the product of a service that makes it from nothing."""
         item = self.lex.items.get(word)
@@ -345,6 +359,8 @@ class MentionReader:
                 continue  # "the insurance form for Biscuit": whom the paper is about
             if m.kind == "word" and in_later_event(tokens, m.start):
                 continue  # "before it goes to Acme": when, by what happens to it later
+            if m.kind == "word" and self._result_form(tokens, m):
+                continue  # "scan my signed waybill to PDF": the result's form, not a person
             if m.kind == "word" and _unknown_name(tokens, mentions, n):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
@@ -563,3 +579,18 @@ def _describes(m: Mention, tokens: Sequence[Token]) -> bool:
     if m.kind != "word" or t.opens or t.after_pause or t.possessive or t.corrected:
         return False
     return t.text.isalpha() and t.text[:1].islower() and t.word not in COMMON
+
+
+_INTO_FORM = frozenset({"to", "into", "as"})
+_NOT_NAME_WORDS = frozenset({"a", "an", "the", "to", "of", "and", "for", "into", "as", "up"})
+
+
+def _result_words(office: Office) -> frozenset[str]:
+    """The words of the office's product names and synonyms and of its services' names."""
+    phrases: list[str] = [op.name for op in office.operations]
+    for op in office.operations:
+        if op.product:
+            t = office.item_type(op.product)
+            phrases += [t.name, *t.synonyms]
+    words = {w for p in phrases for w in p.lower().split() if w.isalpha()}
+    return frozenset(words - _NOT_NAME_WORDS)
