@@ -18,9 +18,11 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
 
 # The possessives that say whose a thing is: the requester's own ("my") or a colleague's.
 _OWNERS = frozenset({"self", "person"})
+_COMMON = english.words("common")
 
 
 def owned_facility(mentions: Sequence[Mention], tokens: Sequence[Token]) -> str | None:
@@ -28,6 +30,19 @@ def owned_facility(mentions: Sequence[Mention], tokens: Sequence[Token]) -> str 
     for before, m in itertools.pairwise(mentions):
         if m.kind != "facility" or before.end != m.start:
             continue
-        if before.kind in _OWNERS and before.possessive:
+        if before.kind in _OWNERS and before.possessive and not runs_into_a_noun(tokens, m):
             return " ".join(t.text for t in tokens[before.start : m.end])
     return None
+
+
+def runs_into_a_noun(tokens: Sequence[Token], m: Mention) -> bool:
+    """Whether a facility's name runs on into a noun ("my hydro session plan", "her kitchen
+    rota"): it describes the thing, which is what is owned, not the facility."""
+    if m.end >= len(tokens):
+        return False
+    after = tokens[m.end]
+    word = after.word
+    if not word.isalpha() or after.after_pause or word in _COMMON:
+        return False
+    # a noun, or a word the dictionary has no verb for ("rota"): what the phrase names
+    return language.is_noun(word) or not language.verb_lemmas(word)

@@ -33,6 +33,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
 )
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
+from assistantx.agents.symbolic.reading.owned_facility import runs_into_a_noun
 from assistantx.agents.symbolic.reading.result_form import products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
@@ -368,6 +369,8 @@ class MentionReader:
                 continue  # "a tape measure in the rehearsal room": the place, not its service
             if m.kind == "facility" and _where_an_occasion_is(tokens, mentions, n):
                 continue  # "to the lounge for Mark's workshop": where it is, not its service
+            if m.kind == "facility" and _modifies_a_thing(tokens, m):
+                continue  # "print my hydro session plan": what the paper is about
             if m.kind == "facility" and self._unsupported_facility(m.id):
                 f = self.office.facility(m.id)
                 out.append(
@@ -594,3 +597,12 @@ def _result_words(office: Office) -> frozenset[str]:
             phrases += [t.name, *t.synonyms]
     words = {w for p in phrases for w in p.lower().split() if w.isalpha()}
     return frozenset(words - _NOT_NAME_WORDS)
+
+
+_POSSESSIVES = frozenset({"my", "your", "our", "his", "her", "their"})
+
+
+def _modifies_a_thing(tokens: Sequence[Token], m: Mention) -> bool:
+    """Whether a facility's name said after "my"/"your"/... runs on into a noun ("my hydro
+    session plan"): it describes the thing owned, not a service asked."""
+    return m.start >= 1 and tokens[m.start - 1].word in _POSSESSIVES and runs_into_a_noun(tokens, m)
