@@ -350,7 +350,9 @@ class Planner:
                     f"{n}.maker",
                     "produce",
                     requester,
-                    fixed=self._runs_alone(t, requester),
+                    # "can Gao knock one up?": the keeper asked to make it, when the reader
+                    # named one (it names only a keeper of a facility that makes it)
+                    fixed=t.actor or self._runs_alone(t, requester),
                     item_type=item,
                     facility=self._facility_for(t),
                     operation=op,

@@ -31,6 +31,7 @@ from assistantx.agents.symbolic.reading._parties import (
     clause_roles,
 )
 from assistantx.agents.symbolic.reading.asides import aside_length
+from assistantx.agents.symbolic.reading.asked_maker import asked_maker
 from assistantx.agents.symbolic.reading.asked_sender import sent_by_the_asked
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
@@ -203,6 +204,11 @@ class FrameReader:
             earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
             made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            # "I need a coffee. can Gao knock one up?": Gao makes it, and it is still mine;
+            # the clause's own "one" ("pour one") is that product again, no second one
+            maker = asked_maker(self.office, tasks, clause, tokens, made)
+            if maker is not None:
+                tasks[-1], made = maker, []
             if not made and shared_object.waits_for_object(clause.mentions):
                 waiting = (clause, roles)  # "get it copied and ...": the thing said next
             elif (
@@ -285,8 +291,10 @@ class FrameReader:
             previous_roles = roles
             said_from += roles.source
             previous_asked = _asked_subjects(tokens, clause)
-            again = _one_more(tasks, clause, tokens, roles, made)
-            if again is not None:
+            again = None if maker is not None else _one_more(tasks, clause, tokens, roles, made)
+            if maker is not None:
+                pass  # the product asked for before, now with its maker (above)
+            elif again is not None:
                 tasks.append(again)  # "make me a coffee and bring Tam one too": Tam's own
             elif made:
                 tasks = [*_without_subsumed(tasks, made), *made]
