@@ -14,13 +14,13 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.registry import reasoner_factory
-from assistantx.core.office import Office, load_office, parse_office
+from assistantx.core.office import Office, load_office
 from assistantx.core.settings import Settings
 from assistantx.sim.requester import Wish
 from assistantx.sim.run import run_in_sim
+from helpers.dataset_offices import default_office_that_scans
 
 BENCH = Path(__file__).resolve().parents[2] / "bench"
 sys.path.insert(0, str(BENCH))
@@ -398,25 +398,8 @@ def test_a_bad_goal_on_the_command_line_is_one_line(goal: str, error: str) -> No
 def _office_that_scans_to_pdf() -> Office:
     """The default office with a scan to PDF at its printer: the PDF is an electronic type
     of its own, sent to the paper's owner by message when the keeper scans it."""
-    raw = yaml.safe_load(
-        (Path(__file__).resolve().parents[2] / "dataset" / "office.yaml").read_text()
-    )
-    raw["item_types"].append(
-        {"id": "scan_pdf", "name": "scanned PDF", "synonyms": ["pdf"], "kind": "electronic"}
-    )
-    raw["operations"].append(
-        {
-            "id": "scan",
-            "name": "scan to PDF",
-            "verbs": ["scan"],
-            "input": "document",
-            "product": "scan_pdf",
-        }
-    )
-    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
-    printer["operations"].append("scan")
-    printer["products"].append("scan_pdf")
-    return parse_office(raw)
+    product = {"id": "scan_pdf", "name": "scanned PDF", "synonyms": ["pdf"]}
+    return default_office_that_scans("scan", product)
 
 
 def test_a_pdf_sent_by_message_by_the_scanner_is_delivered_to_the_papers_owner() -> None:

@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import functools
 from pathlib import Path
+from typing import Any
 
 import pytest
+import yaml
 
-from assistantx.core.office import Office, load_office
+from assistantx.core.office import Office, load_office, parse_office
 
 ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_FILE = ROOT / "dataset" / "office.yaml"
@@ -30,3 +32,32 @@ def harbour_office() -> Office:
 def harbour() -> Office:
     """The dataset's harbour office (dataset/offices/harbour)."""
     return harbour_office()
+
+
+def default_office_that_scans(
+    op_id: str, product: str | dict[str, Any], *, pdf_names_files: bool = True
+) -> Office:
+    """The default office with a scan to PDF at its printer (beside print and copy):
+    ``product`` is an item type id already there ("file") or a new electronic type's entry;
+    without ``pdf_names_files`` "pdf" is no name of the office's files (only part of the
+    scan's product's name, as in blind round 77's ferry office)."""
+    raw = yaml.safe_load(DEFAULT_FILE.read_text())
+    if not pdf_names_files:
+        files = next(t for t in raw["item_types"] if t["id"] == "file")
+        files["synonyms"] = [w for w in files["synonyms"] if w != "pdf"]
+    if isinstance(product, dict):
+        raw["item_types"].append({"kind": "electronic", **product})
+        product = str(product["id"])
+    raw["operations"].append(
+        {
+            "id": op_id,
+            "name": "scan to PDF",
+            "verbs": ["scan"],
+            "input": "document",
+            "product": product,
+        }
+    )
+    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
+    printer["operations"].append(op_id)
+    printer["products"].append(product)
+    return parse_office(raw)

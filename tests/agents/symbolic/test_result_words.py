@@ -7,36 +7,16 @@ stop's first fixes)."""
 from __future__ import annotations
 
 import pytest
-import yaml
 
-from assistantx.core.office import Office, parse_office
+from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
-from helpers.dataset_offices import DEFAULT_FILE, default_office
+from helpers.dataset_offices import default_office, default_office_that_scans
 from helpers.reading import frame_reader
 
 
 def _scans_to_pdf() -> Office:
-    raw = yaml.safe_load(DEFAULT_FILE.read_text())
-    # as blind round 77's ferry office: "pdf" is no name of its files, only part of the
-    # scan's product's name
-    files = next(t for t in raw["item_types"] if t["id"] == "file")
-    files["synonyms"] = [w for w in files["synonyms"] if w != "pdf"]
-    raw["item_types"].append(
-        {"id": "scan_pdf", "name": "scanned PDF", "synonyms": ["pdf scan"], "kind": "electronic"}
-    )
-    raw["operations"].append(
-        {
-            "id": "scan_pdf",
-            "name": "scan to PDF",
-            "verbs": ["scan"],
-            "input": "document",
-            "product": "scan_pdf",
-        }
-    )
-    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
-    printer["operations"].append("scan_pdf")
-    printer["products"].append("scan_pdf")
-    return parse_office(raw)
+    product = {"id": "scan_pdf", "name": "scanned PDF", "synonyms": ["pdf scan"]}
+    return default_office_that_scans("scan_pdf", product, pdf_names_files=False)
 
 
 _scanning = frame_reader(_scans_to_pdf, "wang")

@@ -10,30 +10,10 @@ from __future__ import annotations
 import asyncio
 
 import pytest
-import yaml
 
-from assistantx.core.office import Office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part
-from helpers.dataset_offices import DEFAULT_FILE
+from helpers.dataset_offices import default_office_that_scans
 from helpers.dataset_tasks import verify_every_variant
-
-
-def _office_that_scans_at_the_copier() -> Office:
-    raw = yaml.safe_load(DEFAULT_FILE.read_text())
-    raw["operations"].append(
-        {
-            "id": "scan",
-            "name": "scan to PDF",
-            "verbs": ["scan"],
-            "input": "document",
-            "product": "file",
-        }
-    )
-    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
-    printer["operations"].append("scan")
-    printer["products"].append("file")
-    return parse_office(raw)
-
 
 SCAN = BaseInstruction(
     id="scan1",
@@ -50,7 +30,7 @@ COPY = BaseInstruction(
 def test_each_service_of_the_machine_is_run_as_asked_in_every_variant(
     base: BaseInstruction,
 ) -> None:
-    tasks = asyncio.run(verify_every_variant(_office_that_scans_at_the_copier(), base))
+    tasks = asyncio.run(verify_every_variant(default_office_that_scans("scan", "file"), base))
     achievable = [t for t in tasks if t.achievable]
     assert achievable
     if base is SCAN:

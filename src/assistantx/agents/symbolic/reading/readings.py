@@ -34,7 +34,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.owned_facility import runs_into_a_noun
-from assistantx.agents.symbolic.reading.result_form import products, result_form
+from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
@@ -328,7 +328,7 @@ class MentionReader:
     def _result_form(self, tokens: Sequence[Token], m: Mention) -> bool:
         """Whether ``m`` is one word of a product or service name said after "to", "into"
         or "as" ("... to PDF"), in a message that names one of the office's services."""
-        if m.end - m.start != 1 or m.start < 1 or tokens[m.start - 1].word not in _INTO_FORM:
+        if m.end - m.start != 1 or m.start < 1 or tokens[m.start - 1].word not in INTO_WORDS:
             return False
         if tokens[m.start].word not in self._result_words:
             return False
@@ -584,7 +584,6 @@ def _describes(m: Mention, tokens: Sequence[Token]) -> bool:
     return t.text.isalpha() and t.text[:1].islower() and t.word not in COMMON
 
 
-_INTO_FORM = frozenset({"to", "into", "as"})
 _NOT_NAME_WORDS = frozenset({"a", "an", "the", "to", "of", "and", "for", "into", "as", "up"})
 
 

@@ -13,7 +13,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core.office import Office
 
-_INTO = frozenset({"to", "into", "as"})
+INTO_WORDS = frozenset({"to", "into", "as"})  # "scan to PDF", "burn into", "save as"
 
 
 def products(office: Office) -> frozenset[str]:
@@ -29,7 +29,7 @@ def result_form(
     m = mentions[n]
     if m.kind != "item" or not set(m.ids) & made or m.start < 2:
         return False
-    if tokens[m.start - 1].word not in _INTO or tokens[m.start].after_pause:
+    if tokens[m.start - 1].word not in INTO_WORDS or tokens[m.start].after_pause:
         return False
     verb = next((v for v in mentions[:n] if v.end == m.start - 1), None)
     return verb is not None and verb.kind == "cue"
