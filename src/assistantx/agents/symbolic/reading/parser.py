@@ -121,7 +121,7 @@ from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chos
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.several_owners import with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
-from assistantx.agents.symbolic.reading.something_from import something_from
+from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
@@ -198,6 +198,7 @@ class InstructionParser:
         self.readings = MentionReader(office, self.lex)
         self.frames = FrameReader(office)
         self.operations = OperationChooser(office)
+        self._something_from = SomethingFrom(office)  # "something from the vending machine"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -224,7 +225,7 @@ class InstructionParser:
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "something from the vending machine": the one kind of thing it makes
-        text = something_from(text, self.office)
+        text = self._something_from(text)
         # "Shiv here - ...": the speaker's sign-on, no party to the request
         text = signed_on(
             text,

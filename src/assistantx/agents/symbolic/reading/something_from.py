@@ -17,20 +17,28 @@ from assistantx.core.wording import a_thing
 _VAGUE = r"(?:something|a\s+thing|summat|sth)"
 
 
-def something_from(text: str, office: Office) -> str:
-    """``text`` with each "something from the <facility>" written as "<a product> from the
-    <facility>" where the facility makes exactly one kind of thing."""
-    for facility in office.facilities:
-        made = sorted(set(facility.products))
-        if len(made) != 1 or not _from_nothing(office, facility.operations, made[0]):
-            continue
-        names = sorted({facility.name, *facility.synonyms}, key=len, reverse=True)
-        said = "|".join(re.escape(n) for n in names if n)
-        product = office.item_type(made[0])
-        thing = a_thing(product.name, mass=product.mass)
-        pattern = rf"\b{_VAGUE}(\s+(?:from|out\s+of)\s+(?:the\s+)?(?:{said})\b)"
-        text = re.sub(pattern, rf"{thing}\1", text, flags=re.IGNORECASE)
-    return text
+class SomethingFrom:
+    """The rewrite for one office, its patterns made once (it runs on every message)."""
+
+    def __init__(self, office: Office) -> None:
+        self._rewrites: list[tuple[re.Pattern[str], str]] = []
+        for facility in office.facilities:
+            made = sorted(set(facility.products))
+            if len(made) != 1 or not _from_nothing(office, facility.operations, made[0]):
+                continue
+            names = sorted({facility.name, *facility.synonyms}, key=len, reverse=True)
+            said = "|".join(re.escape(n) for n in names if n)
+            product = office.item_type(made[0])
+            thing = a_thing(product.name, mass=product.mass)
+            pattern = rf"\b{_VAGUE}(\s+(?:from|out\s+of)\s+(?:the\s+)?(?:{said})\b)"
+            self._rewrites.append((re.compile(pattern, re.IGNORECASE), rf"{thing}\1"))
+
+    def __call__(self, text: str) -> str:
+        """``text`` with each "something from the <facility>" written as "<a product> from
+        the <facility>" where the facility makes exactly one kind of thing from nothing."""
+        for pattern, thing in self._rewrites:
+            text = pattern.sub(thing, text)
+        return text
 
 
 def _from_nothing(office: Office, operations: tuple[str, ...], product: str) -> bool:
