@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from helpers.dataset_offices import default_office, harbour_office
-from helpers.reading import frame_reader
+from helpers.reading import frame_reader, parser_for
 
 _DEFAULT = frame_reader(default_office, "wang")
 _HARBOUR = frame_reader(harbour_office, "may")
@@ -66,6 +66,10 @@ def test_a_reported_request_is_still_read() -> None:
 
 
 def test_a_want_of_the_thing_is_still_a_want() -> None:
-    """Neighbour: "a visitor wants a coffee" wants the thing, not to know about it."""
+    """Neighbour: "a visitor wants a coffee" wants the thing, not to know about it. Said of
+    someone else, the want is restated and asked (``outsider_need``, test_outsider_wants):
+    a yes makes the coffee, for the speaker to pass on."""
     frame = _DEFAULT("a visitor wants a coffee")
-    assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "coffee")]
+    assert frame.tasks == [] and frame.question == "Shall I get coffee for you?"
+    yes = parser_for(default_office).parse_with_answers("a visitor wants a coffee", "wang", ["yes"])
+    assert [(t.kind, t.item, t.recipient) for t in yes.tasks] == [("produce", "coffee", "wang")]

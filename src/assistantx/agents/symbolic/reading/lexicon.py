@@ -51,6 +51,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
 )
 from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers
+from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
@@ -565,6 +566,8 @@ class Lexicon:
         raw = read_own_made(
             raw, self._one_word_names.__contains__, self._physical_openers.__contains__
         )
+        # "Rose really needs an umbrella": the adverb says how badly, not who needs it
+        raw = read_subject_adverbs(raw, self._one_word_names.__contains__)
         out: list[Token] = []
         for n, t in enumerate(raw):
             # a word right before a determiner is a verb: "printe my file" is print, not printer

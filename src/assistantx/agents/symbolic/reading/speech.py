@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
+from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.core import english, language
@@ -206,6 +207,11 @@ def _approval(w: list[str]) -> bool:
         return False
     rest = w[: verbs[0]] + w[verbs[0] + 2 :]
     return all(x in _APPROVAL_DEGREE for x in rest)
+
+
+def _needs_to(w: list[str], n: int) -> bool:
+    """ "the courier needs to sign": what they must do, not a thing they want."""
+    return n + 1 < len(w) and w[n + 1] == "to"
 
 
 def content(words: list[str]) -> list[str]:
@@ -924,7 +930,11 @@ class SpeechActs:
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
+                if outsider_subject(subject) and not _needs_to(w, n):
+                    return True  # "a visitor wants a coffee": a want, not the speaker's ask
                 return not set(subject) & requester_words and self._person_at(w, 0)
+            if w[n] in _NEED and outsider_subject(w[:n]) and not _needs_to(w, n):
+                return True  # "the visitors want coffee": their want, said as a fact
         return False
 
     def request(self, words: list[str]) -> bool:

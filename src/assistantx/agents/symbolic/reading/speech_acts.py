@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading.indirect_asks import chance_reworded, indirect_ask
 from assistantx.agents.symbolic.reading.modal_subject import modals_as_subjects
 from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
+from assistantx.agents.symbolic.reading.subject_adverbs import without_subject_adverbs
 
 # Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it".
 WITHDRAWAL_FILLERS = frozenset({"actually", "oh", "ok", "okay", "please"})
@@ -67,10 +68,16 @@ def acts_reader(
     read once for whether it puts its need off; the reader takes a piece's words and
     whether it ends with a question mark."""
     deferred = speech.defers(message_words)
+    lex = speech.lex
+
+    def names(word: str) -> bool:
+        return word in lex.people or word in lex.name_words
 
     def read(words: list[str], asks: bool) -> Acts:
         # "any chance I could nab ...": read as the question it softens ("could I nab ...")
         words = chance_reworded(words) or words
+        # "Zhang definitely has to sign": the adverb says how sure, the subject is Zhang's
+        words = without_subject_adverbs(words, names)
         note = speech.note(words)  # a note keeps its words as said ("note: May needs tape")
         # "May needs her tape back": a name before its verb in -s, no modal (modal_subject);
         # the two acts that read a named subject themselves ("Will needs the umbrella" is

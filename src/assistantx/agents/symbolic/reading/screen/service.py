@@ -105,7 +105,7 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
             typed = r"[\s-]+".join(re.escape(w) for w in modified.split())
             said = re.search(rf"\b{typed}\b", piece.text, re.IGNORECASE)
             return decline_service(terms, piece, said.group(0) if said else modified, nor=nor)
-        if at < len(words) and words[at] in terms.en.service_verbs:
+        if at < len(words) and words[at] in terms.en.service_verbs and not _subject_noun(words, at):
             verb = words[at]
             nxt = words[at + 1] if at + 1 < len(words) else ""
             ours = verb in terms.lex.cue_words or verb in terms.office_words
@@ -128,6 +128,18 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
                 return decline_service(terms, piece, w, product=True, nor=nor)
     # "make Mark a copy of my document" where nothing copies: never the document handed over
     return unmade_product(terms, piece)
+
+
+# an article opens a noun phrase: the service's word after it is a noun
+_ARTICLES = frozenset({"a", "an", "the"})
+
+
+def _subject_noun(words: list[str], at: int) -> bool:
+    """ "the courier needs a pen": a service's word after an article and before a finite
+    verb is the noun that verb's subject ends with (a person, a thing), never the service
+    asked for (a verb follows no article)."""
+    nxt = words[at + 1] if at + 1 < len(words) else ""
+    return at > 0 and words[at - 1] in _ARTICLES and language.is_finite_verb(nxt)
 
 
 def _doers(terms: Terms, words: list[str], at: int) -> bool:
