@@ -112,6 +112,11 @@ from assistantx.agents.symbolic.reading.purpose import (
 )
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader, Readings
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
+from assistantx.agents.symbolic.reading.room_receiver import (
+    own_thing_unplaced,
+    room_receiver,
+    rooms_taken_to,
+)
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
@@ -330,15 +335,26 @@ class InstructionParser:
             frame = _one_send_each(frame)
             # "print my file? it's Fern who needs the hard copy, not me": for Fern
             frame = for_needer(frame, needer(whole, requester, self.lex.name_words))
+            # "Zhang needs my stapler. take it to the meeting room": Zhang gets it there
+            receiver = room_receiver(whole, requester)
+            frame = for_needer(frame, receiver)
             frame = declined_use_up(self.office, frame)
             # "Mao or Sun can do it": either stamps it, and it comes back to the requester
             frame = frame.model_copy(update={"tasks": either_doer(whole, frame.tasks, requester)})
             doubted = doubted_recipient(self.office, whole, frame.tasks, requester)
             if doubted is not None:  # "to Wei... or was it Wang?": whom is asked
                 return TaskFrame(requester=requester, question=doubted)
-            unread = unread_part(self.office, readings, frame) if frame.understood else None
+            received = frozenset({receiver} if receiver is not None else ())
+            unread = (
+                unread_part(self.office, readings, frame, received) if frame.understood else None
+            )
             if unread is not None:  # a part no task carries: asked, never dropped
                 frame = TaskFrame(requester=requester, question=unread)
+            elif not to_self and rooms_taken_to(readings.tokens, readings.mentions):
+                # "take my stapler to <a room>" with nobody there found: never back to me
+                unplaced = own_thing_unplaced(self.office, frame, requester)
+                if unplaced is not None:
+                    frame = TaskFrame(requester=requester, question=unplaced)
         elif frame.question is not None and _asks_who(frame.question):
             # "my proof needs a read, can you sort it", the read not understood: which work
             # is meant is asked, not who gets the proof (it comes back to the requester)
