@@ -82,6 +82,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     service_question,
     with_service,
 )
+from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
@@ -264,6 +265,11 @@ class InstructionParser:
             screened.confirm = True
         # "scanned and stamped" where nobody has a seal: told (or asked) before anything moves
         frame = without_toolless(self.office, frame, requester, confirmed=confirmed)
+        # "could Wang make one? I need a coffee": Wang makes it only if Wang keeps a machine
+        # that makes it; else said, and asked before the keepers make it
+        frame = with_named_maker(
+            self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
+        )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _names_only(self, phrase: str, person: str) -> bool:
