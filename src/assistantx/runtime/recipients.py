@@ -425,6 +425,19 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
     for m in mentions:  # "for Grace's meeting": whose occasion the thing is for
         if _for_an_occasion(words, m, office_words):
             named |= m.people
+    if not named and _taken_to_a_room(words, office_words.rooms):
+        # "Zhang needs my stapler. take it to the meeting room": nobody is named to receive
+        # it, and the one colleague said to need it (or to be in that room) is whom it goes
+        # to there (the reader's ``room_receiver``); several such decide nothing
+        there = {
+            p
+            for m in mentions
+            if len(m.people) == 1
+            and (_said_to_need(words, m) or _said_in_a_room(words, m, office_words.rooms))
+            for p in m.people
+        } - {requester}
+        if len(there) == 1:
+            named |= there
     for n, w in enumerate(words):
         after = words[n + 1].folded if n + 1 < len(words) else ""
         at_place = pronoun_receiving_place(  # "at her desk", not "the one on her desk"
@@ -507,6 +520,26 @@ def _said_to_need(words: list[_Word], m: _Mention) -> bool:
         if said and after[: len(said)] == said:
             return True
     return False
+
+
+_BE = frozenset({"is", "was"})
+_IN = frozenset({"in", "at", "inside"})
+
+
+def _said_in_a_room(words: list[_Word], m: _Mention, rooms: frozenset[str]) -> bool:
+    """Whether the name ``m`` is said to be in a room of the office: "Zhang is in the
+    meeting room", "Zhang's at the lounge" (the reader's ``room_receiver``)."""
+    at = m.end
+    if not m.possessive:
+        if at >= len(words) or words[at].folded not in _BE:
+            return False
+        at += 1
+    if at >= len(words) or words[at].folded not in _IN:
+        return False
+    at += 1
+    while at < len(words) and words[at].folded in _ARTICLES:
+        at += 1
+    return at < len(words) and words[at].folded in rooms
 
 
 _HAS = frozenset({"has", "have", "had"})

@@ -44,12 +44,19 @@ def test_the_name_in_apposition_receives(text: str) -> None:
 @pytest.mark.parametrize(
     "text",
     [
-        "take my worksheet to the print room, Ada needs it",
+        "take my worksheet to the print room, Ada will pick it up",
         "print my worksheet for the meeting. Ada will collect it",
     ],
 )
 def test_a_name_of_a_clause_of_its_own_is_no_apposition(text: str) -> None:
     assert _in_roles(staff_room(), text, "tess") == frozenset()
+
+
+def test_a_clause_of_its_own_that_says_who_needs_it_names_them() -> None:
+    """No apposition, but a thing taken to a room and one colleague said to need it: she is
+    whom it goes to there (``room_receiver``, test_room_receiver.py)."""
+    text = "take my worksheet to the print room, Ada needs it"
+    assert _in_roles(staff_room(), text, "tess") == {"ada"}
 
 
 def test_the_optimal_policy_delivers_to_the_person_in_apposition() -> None:

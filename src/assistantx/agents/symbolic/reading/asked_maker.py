@@ -5,9 +5,10 @@ After a clause that asks for a product (a need, "a coffee please"), a clause who
 a colleague after a request's modal ("can Gao ...") and whose verb makes a thing ("make",
 "knock up", "whip up", "sort out") with "one" as its object asks that colleague to make the
 product just asked for. The product still goes to whom the earlier clause said; the colleague
-is its maker where they keep a facility that makes it (else the keepers are asked, as for any
-product). Read as "bring Gao one", the coffee would be handed to the maker: a wrong physical
-action. Someone named after the verb is still whom it is for ("can you make Gao one")."""
+is its maker where they keep a facility that makes it (else the parser's ``named_maker`` says
+they don't and asks before the keepers make it). Read as "bring Gao one", the coffee would be
+handed to the maker: a wrong physical action. Someone named after the verb is still whom it is
+for ("can you make Gao one")."""
 
 from __future__ import annotations
 

@@ -54,6 +54,7 @@ from assistantx.agents.symbolic.reading.original_back import (
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
+from assistantx.agents.symbolic.reading.room_receiver import rooms_taken_to
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.source_not_recipient import taken_from
@@ -326,7 +327,9 @@ class FrameReader:
             self._uncovered(objects, tasks)
             or self._whose_service(tasks, readings, requester)
             or which_work(self.office, tasks, readings.mentions, requester)
-            or self._check(tasks, requester, to_self)
+            or self._check(
+                tasks, requester, to_self, bool(rooms_taken_to(tokens, readings.mentions))
+            )
         )
         # "print my file and a coffee": both read, the whole restated before anything moves
         restated = (
@@ -619,7 +622,12 @@ class FrameReader:
             return f"for me to {' or '.join(dict.fromkeys(names))}"
         return task_kinds.kind(kind).which_item
 
-    def _check(self, tasks: list[Task], requester: str, to_self: bool = False) -> str | None:
+    def _check(
+        self, tasks: list[Task], requester: str, to_self: bool = False, to_room: bool = False
+    ) -> str | None:
+        """The question still open about ``tasks``; ``to_room``: the words take a thing to a
+        room, so who gets the requester's own thing is the room's question (whom the message
+        says needs it, else who there: ``room_receiver``, ``parts``), not asked here."""
         if not tasks:
             return NOT_UNDERSTOOD
         for t in tasks:
@@ -638,6 +646,8 @@ class FrameReader:
                 kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
                 held = t.source is not None and t.source != t.owner  # "it's on my desk"
                 if t.owner is not None and t.owner == t.recipient and not (kept or held):
+                    if to_room and t.owner == requester:
+                        continue  # "take my stapler to the meeting room": who there, later
                     who = "you" if t.owner == requester else self.office.person(t.owner).name
                     if who != "you" and t.owner not in self.office.owners_of(t.item):
                         # "Hedda lent me her umbrella ...": not one the office knows as hers

@@ -82,6 +82,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     service_question,
     with_service,
 )
+from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
@@ -112,6 +113,11 @@ from assistantx.agents.symbolic.reading.purpose import (
 )
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader, Readings
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
+from assistantx.agents.symbolic.reading.room_receiver import (
+    own_thing_unplaced,
+    room_receiver,
+    rooms_taken_to,
+)
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
@@ -259,6 +265,11 @@ class InstructionParser:
             screened.confirm = True
         # "scanned and stamped" where nobody has a seal: told (or asked) before anything moves
         frame = without_toolless(self.office, frame, requester, confirmed=confirmed)
+        # "could Wang make one? I need a coffee": Wang makes it only if Wang keeps a machine
+        # that makes it; else said, and asked before the keepers make it
+        frame = with_named_maker(
+            self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
+        )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _names_only(self, phrase: str, person: str) -> bool:
@@ -330,15 +341,26 @@ class InstructionParser:
             frame = _one_send_each(frame)
             # "print my file? it's Fern who needs the hard copy, not me": for Fern
             frame = for_needer(frame, needer(whole, requester, self.lex.name_words))
+            # "Zhang needs my stapler. take it to the meeting room": Zhang gets it there
+            receiver = room_receiver(whole, requester)
+            frame = for_needer(frame, receiver)
             frame = declined_use_up(self.office, frame)
             # "Mao or Sun can do it": either stamps it, and it comes back to the requester
             frame = frame.model_copy(update={"tasks": either_doer(whole, frame.tasks, requester)})
             doubted = doubted_recipient(self.office, whole, frame.tasks, requester)
             if doubted is not None:  # "to Wei... or was it Wang?": whom is asked
                 return TaskFrame(requester=requester, question=doubted)
-            unread = unread_part(self.office, readings, frame) if frame.understood else None
+            received = frozenset({receiver} if receiver is not None else ())
+            unread = (
+                unread_part(self.office, readings, frame, received) if frame.understood else None
+            )
             if unread is not None:  # a part no task carries: asked, never dropped
                 frame = TaskFrame(requester=requester, question=unread)
+            elif not to_self and rooms_taken_to(readings.tokens, readings.mentions):
+                # "take my stapler to <a room>" with nobody there found: never back to me
+                unplaced = own_thing_unplaced(self.office, frame, requester)
+                if unplaced is not None:
+                    frame = TaskFrame(requester=requester, question=unplaced)
         elif frame.question is not None and _asks_who(frame.question):
             # "my proof needs a read, can you sort it", the read not understood: which work
             # is meant is asked, not who gets the proof (it comes back to the requester)

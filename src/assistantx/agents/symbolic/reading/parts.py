@@ -83,9 +83,15 @@ ASKED_END = "”."
 WHICH_WORK = " I can arrange "
 
 
-def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
+def unread_part(
+    office: Office,
+    readings: Readings,
+    frame: TaskFrame,
+    received: frozenset[str] = frozenset(),
+) -> str | None:
     """The question about a part of the request that no task of ``frame`` carries, or None
-    when every part is read."""
+    when every part is read. ``received``: who the message says gets a thing taken to a room
+    (``room_receiver``), whom no room's question is then asked about."""
     if not frame.understood:
         return None
     destinations = {
@@ -94,7 +100,7 @@ def unread_part(office: Office, readings: Readings, frame: TaskFrame) -> str | N
     run = {operation_of(office, t) for t in frame.tasks}
     items = {t.item for t in frame.tasks}
     left_out = operation_left_out(office, readings, run, items) or _place_left_out(
-        office, readings, frame
+        office, readings, frame, received
     )
     if left_out is not None:
         return left_out
@@ -211,7 +217,9 @@ def names_work(office: Office, question: str, answer: str) -> bool:
     return bool(said & words)
 
 
-def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str | None:
+def _place_left_out(
+    office: Office, readings: Readings, frame: TaskFrame, received: frozenset[str]
+) -> str | None:
     """The question about a place of the office the request takes something to ("print my
     agenda and take it to the post room") that no task goes to: no task's facility, source,
     operation or person is there. The robot hands things to people, so who there gets it
@@ -219,7 +227,8 @@ def _place_left_out(office: Office, readings: Readings, frame: TaskFrame) -> str
     to the requester."""
     tokens = readings.tokens
     # "to the post desk for Grace's meeting": where Grace's meeting is; she gets it
-    occasions = occasion_people(tokens, readings.mentions)
+    # "Zhang needs it. take it to the meeting room": Zhang, said to need it, gets it
+    occasions = occasion_people(tokens, readings.mentions) | received
     if occasions and all(t.recipient in occasions for t in frame.tasks):
         return None
     for m in readings.mentions:

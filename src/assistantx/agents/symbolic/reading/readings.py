@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+from assistantx.agents.symbolic.reading.carried_to import carried_to
 from assistantx.agents.symbolic.reading.codes import code_of_a_thing
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
@@ -371,6 +372,8 @@ class MentionReader:
                 continue  # "to the lounge for Mark's workshop": where it is, not its service
             if m.kind == "facility" and _modifies_a_thing(tokens, m):
                 continue  # "print my hydro session plan": what the paper is about
+            if m.kind == "facility" and carried_to(tokens, mentions, n):
+                continue  # "take my stapler to the meeting room": where it goes
             if m.kind == "facility" and self._unsupported_facility(m.id):
                 f = self.office.facility(m.id)
                 out.append(
