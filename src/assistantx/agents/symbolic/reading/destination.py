@@ -11,9 +11,10 @@ an organisation) for the outcome the requester reads.
 from __future__ import annotations
 
 import re
-from collections.abc import Collection, Iterable, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.destination_detail import detail_after
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
@@ -83,10 +84,15 @@ class Outside:
     end: int | None
     phrase: str | None  # the destination in the requester's words
     means: bool = False  # the service named as the means of sending ("by courier")
+    # the end of a clause after the place that says how to reach it ("..., their number is
+    # 01632 960 123"); its words are the destination's too, never a person or an item
+    detail_end: int | None = None
 
     def holds(self, token: int) -> bool:
         """Whether token index ``token`` is part of the destination."""
-        return self.start is not None and self.end is not None and self.start <= token < self.end
+        if self.start is None or self.end is None:
+            return False
+        return self.start <= token < max(self.end, self.detail_end or 0)
 
 
 def means_words(name: str) -> tuple[str, ...]:
@@ -120,10 +126,13 @@ def find_outside(
     gaps: Sequence[str],
     phrases: Sequence[VerbPhrase],
     names: Collection[int] = (),
+    details: Mapping[str, frozenset[str]] | None = None,
 ) -> Outside | None:
     """The first send-out verb phrase of ``tokens`` (``gaps``: the punctuation before each
     token), with the phrase after the first "to" in the verb's own clause, if any. ``names``:
-    token indices inside a name of the office ("the *post* room"), never the verb."""
+    token indices inside a name of the office ("the *post* room"), never the verb.
+    ``details``: by operation, the words that name a way of reaching its place ("number",
+    "postcode"), read in a clause after the place (reading/destination_detail.py)."""
     words = [t.word for t in tokens]
     found = next(
         (
@@ -157,6 +166,7 @@ def find_outside(
         stop = verb_start  # the destination stops where the request's clause begins
     start = end = None
     phrase = None
+    detail_end = None
     if to is not None and to + 1 < len(tokens):
         start = end = to + 1
         if means is not None and means > to:
@@ -201,7 +211,14 @@ def find_outside(
             phrase = None  # "sent off to be dry cleaned": the work asked, no place said
         if phrase is None:
             start = end = None
-    return Outside(operation, verb_start, verb_end, start, end, phrase, means is not None)
+        else:
+            naming = (details or {}).get(operation, english.words("destination_details"))
+            detail = detail_after(tokens, gaps, end, stop, naming)
+            if detail is not None:  # "..., their number is 01632 960 123": the operator's too
+                phrase, detail_end = f"{phrase}, {detail.said}", detail.end
+    return Outside(
+        operation, verb_start, verb_end, start, end, phrase, means is not None, detail_end
+    )
 
 
 def _at_a_name(

@@ -12,12 +12,14 @@ from assistantx.agents.symbolic.reading.destination import (
     names_no_place,
     only_describes,
 )
+from assistantx.agents.symbolic.reading.destination_detail import detail_in_message, naming_words
 from assistantx.agents.symbolic.reading.lexicon import (
     COMMON,
     Lexed,
     describing_participles,
     inflections,
 )
+from assistantx.agents.symbolic.reading.tokens import gaps
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
@@ -202,6 +204,8 @@ class OperationChooser:
                         where = None  # "..., Ivy please": the colleague addressed, not a place
                 if where is not None and names_no_place(where, (op.name, *op.verbs, op.done or "")):
                     where = None  # "off to the cleaners": which cleaner is still to ask
+                if where is not None and where == (outside.phrase if outside else None):
+                    where = self._with_detail(where, op, lexed, outside, whole)
                 where = where or destination
                 if where is None:
                     return TaskFrame(
@@ -222,6 +226,29 @@ class OperationChooser:
                 t = t.model_copy(update={"operation": op.id, "destination": where})
             tasks.append(t)
         return frame.model_copy(update={"tasks": tasks})
+
+    def _with_detail(
+        self,
+        where: str,
+        op: Operation,
+        lexed: Lexed,
+        outside: Outside | None,
+        whole: Lexed | None,
+    ) -> str:
+        """The place with how to reach it, said in a clause after it that the screen set aside
+        ("..., their number is 01632 960 123": a statement), so the operator is told it too."""
+        if outside is None or outside.end is None or outside.detail_end is not None:
+            return where  # none said, or already read with the place
+        if whole is None:
+            return where
+        said = [t.word for t in lexed.tokens[outside.verb_start : outside.end]]
+        detail = detail_in_message(
+            whole.tokens,
+            gaps(whole.text, whole.tokens),
+            said,
+            naming_words(op.destination_asked),
+        )
+        return where if detail is None else f"{where}, {detail.said}"
 
     def sending_words(self) -> frozenset[str]:
         """Every form of the verbs of the office's send-out services ("courier", "faxed")."""

@@ -22,6 +22,7 @@ from assistantx.agents.symbolic.reading.destination import (
     means_words,
     verb_phrases,
 )
+from assistantx.agents.symbolic.reading.destination_detail import naming_words
 from assistantx.agents.symbolic.reading.errand import errand_verbs, facility_pronouns
 from assistantx.agents.symbolic.reading.event_clause import in_later_event
 from assistantx.agents.symbolic.reading.lexicon import (
@@ -111,6 +112,10 @@ class MentionReader:
             if op.sends_out
             for vp in verb_phrases(op.id, (*op.verbs, op.name, *means_words(op.name)))
         )
+        # the words that name how each one's place is reached ("the fax number": number)
+        self._details = {
+            op.id: naming_words(op.destination_asked) for op in office.operations if op.sends_out
+        }
         self._send_inputs = {op.id: op.input for op in office.operations if op.sends_out}
         self._send_forms = {
             op.id: frozenset(
@@ -147,7 +152,7 @@ class MentionReader:
         } | errands
         # nor a participle that describes the item ("bring me my *couriered* contract")
         names |= describing_participles(tokens, mentions)
-        outside = find_outside(tokens, spaces, self._sends_out, names)
+        outside = find_outside(tokens, spaces, self._sends_out, names, self._details)
         plain = None
         if (outside is None or outside.start is None) and self._send_inputs:
             # "need sending off to Edexcel", "send it to Parkside Laundry to be laundered"
