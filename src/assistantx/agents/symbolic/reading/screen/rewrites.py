@@ -10,6 +10,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
+from assistantx.agents.symbolic.reading.screen.elided_possessive import elided_item
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
@@ -200,12 +201,17 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     message); "for the exam" after "Rich's" is a purpose, which leaves it alone."""
     evidence: list[Evidence] = []
 
-    def last_item(before: str) -> str | None:
-        for mentions in (terms.lex.scan(terms.lex.tokens(before)), msg.lexed.mentions):
-            items = [m for m in mentions if m.kind == "item"]
-            if items:
-                return terms.office.item_type(items[-1].ids[0]).name
-        return None
+    def last_item(before: str, word: str) -> str | None:
+        items = [m for m in terms.lex.scan(terms.lex.tokens(before)) if m.kind == "item"]
+        if items:
+            return terms.office.item_type(items[-1].ids[0]).name
+        # not in this piece: the nearest thing named before it in the whole message ("my
+        # stapler's broken, can I have Wang's? and a coffee": the stapler, not the coffee)
+        found = elided_item(msg.lexed, word)
+        if found is not None:
+            return terms.office.item_type(found).name
+        items = [m for m in msg.lexed.mentions if m.kind == "item"]
+        return terms.office.item_type(items[-1].ids[0]).name if items else None
 
     # "Zoe, mind if I borrow yours?": "yours" is the addressed colleague's, as "your ruler"
     # is there (reading/vocative.py); said to nobody in particular it is left as it was
@@ -223,7 +229,7 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
             return word
         if pronoun is not None and _subject(text[match.end() :]):
             return word  # "mine ran out in June": what it says of mine, not an object
-        thing = last_item(text[: match.start()])
+        thing = last_item(text[: match.start()], word)
         if thing is None:
             return word
         said = f"{pronoun} {thing}" if pronoun is not None else f"{word} {thing}"

@@ -1,0 +1,55 @@
+"""An elided possessive refers back: "my stapler's broken, can I have Wang's? and grab me a
+coffee too" asks for Wang's stapler and a coffee, not Wang's coffee. English leaves the noun
+out of "X's" (and "mine") only where the listener already has it, so the thing meant is the
+nearest one named *before* the possessive; a noun named after it fills it only where nothing
+was named before ("can I have Wang's? the stapler, I mean").
+
+The rule reads the whole message (its tokens and the lexicon's mentions), because the piece
+the possessive stands in may have lost the clause that named the thing ("my stapler's
+broken" is screened as a statement of its own)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
+from assistantx.core import language
+
+
+def elided_item(lexed: Lexed, word: str) -> str | None:
+    """The item type id the elided possessive ``word`` ("Wang's", "mine") of the message
+    ``lexed`` stands for: the last item named before it, else the first named after it; None
+    where the message names no item, or where ``word`` is not found as such a possessive."""
+    items = [m for m in lexed.mentions if m.kind == "item"]
+    if not items:
+        return None
+    at = _position(lexed, word)
+    if at is None:
+        return None
+    before = [m for m in items if m.end <= at]
+    if before:
+        return before[-1].ids[0]
+    after = [m for m in items if m.start > at]
+    return after[0].ids[0] if after else None
+
+
+def _position(lexed: Lexed, word: str) -> int | None:
+    """The token index of ``word`` said with no item after it: the first "mine"/"yours", or
+    the first possessive token of the name ("Wang" of "Wang's") whose next token opens no
+    item (an "X's stapler" somewhere else in the message is a possessive with its noun)."""
+    key = language.fold(word).replace("’", "'")
+    possessive = key.endswith("'s")
+    key = key.removesuffix("'s")
+    tokens = lexed.tokens
+    for n, t in enumerate(tokens):
+        if t.word != key and t.typed != key:
+            continue
+        if possessive != t.possessive:
+            continue
+        if not _item_at(lexed.mentions, n + 1):
+            return n
+    return None
+
+
+def _item_at(mentions: Sequence[Mention], n: int) -> bool:
+    return any(m.kind == "item" and m.start == n for m in mentions)
