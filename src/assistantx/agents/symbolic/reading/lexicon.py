@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.clipped_names import (
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.container_names import container_phrase, doubted_container
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.destination import means_words
@@ -1106,7 +1107,10 @@ class Lexicon:
             name_words=self.name_words,
             with_article=self.with_article,
         )
-        return read_name(slot)
+        reading = read_name(slot)
+        if reading == "person" and doubted_container(tokens, i):
+            return "ask"  # "give my report to skip": Skip Larsen, or the skip?
+        return reading
 
     def _alias_after_the(self, tokens: Sequence[Token], i: int) -> bool:
         """ "bring my form to the Major": a one-word nickname or rank the office declares
@@ -1140,6 +1144,8 @@ class Lexicon:
         period talk" (a determiner before it, the nouns after it)."""
         if language.is_month(tokens[i].word):
             return f"the month of {tokens[i].text.capitalize()}"
+        if doubted_container(tokens, i):
+            return container_phrase(tokens, i)  # "to skip": the skip
         start = i - 1 if i > 0 and tokens[i - 1].word in _WORD_BEFORE else i
         end = i + 1
         while (

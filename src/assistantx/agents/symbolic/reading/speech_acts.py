@@ -19,8 +19,9 @@ from assistantx.agents.symbolic.reading.modal_subject import modals_as_subjects
 from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
 from assistantx.agents.symbolic.reading.subject_adverbs import without_subject_adverbs
 
-# Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it".
-WITHDRAWAL_FILLERS = frozenset({"actually", "oh", "ok", "okay", "please"})
+# Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it",
+# "just skip it".
+WITHDRAWAL_FILLERS = frozenset({"actually", "oh", "ok", "okay", "please", "just"})
 
 
 @dataclass(frozen=True)

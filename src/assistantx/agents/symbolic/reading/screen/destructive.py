@@ -13,8 +13,12 @@ the washer so it shrinks"; english.yaml damage_results)."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS, starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.named_words import named_at
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english, language
@@ -35,6 +39,8 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
             if len(verb) == 1 and _onto_a_service(terms, piece):
                 continue  # "throw my radio on the charger": put there for its service
             if starts_with(sub.words, at, verb):
+                if len(verb) == 1 and named_at(piece, sub, at):
+                    continue  # "Bin needs a stapler": a colleague called Bin, no verb
                 return _declined(terms, piece, " ".join(verb))
         for verb in terms.en.destructive_of_others:
             if verb[0] in terms.lex.operation_words:
@@ -191,12 +197,21 @@ def _waste_container(terms: Terms, piece: Piece) -> tuple[str, bool] | None:
             end = k + len(phrase)
             if not starts_with(words, k, phrase):
                 continue
+            if _named_person(mentions, k, end):
+                continue  # "send my file to Skip": a colleague so called (container_names)
             office_name = any(
                 m.kind in ("facility", "item", "place") and m.start < end and k < m.end
                 for m in mentions
             ) or any(w in terms.lex.operation_words for w in phrase)
             return " ".join(phrase), office_name
     return None
+
+
+def _named_person(mentions: Sequence[Mention], start: int, end: int) -> bool:
+    """Whether the container's words at ``start`` are read as a colleague's name: "to Skip",
+    "Bin's", or "to skip" while asked whom (or what) is meant. After an article the name
+    reading makes them the word ("in the skip"), so the container stays."""
+    return any(m.kind == "person" and m.start == start and m.end <= end for m in mentions)
 
 
 def _declined(terms: Terms, piece: Piece, said: str, what: str = " anything") -> Finding:

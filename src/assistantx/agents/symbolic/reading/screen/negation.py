@@ -7,6 +7,7 @@ import re
 
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.named_words import named_at
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.still_needed import still_needed
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -50,6 +51,8 @@ def negation(terms: Terms, piece: Piece) -> Finding | None:
                 continue
             if at and words[at - 1] not in terms.en.lead_in:
                 continue  # "I can't find my stapler": not the request verb
+            if len(neg) == 1 and named_at(piece, piece, at):
+                continue  # "Skip needs a ruler": a colleague called Skip, no negator
             if terms.request_verb(words, at + len(neg) - 1):
                 return Finding("negated", piece, f"negated: {' '.join(neg)}")  # "no longer need"
             k = at + len(neg)

@@ -1,0 +1,48 @@
+"""The dataset's offices with some colleagues renamed, for the reader's tests of names: a
+name that is also a word of the office's English ("Skip", "Bin"), or one colleague's given
+name that is another's family name ("Morgan")."""
+
+from __future__ import annotations
+
+import copy
+import functools
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from assistantx.core.office import Office, parse_office
+from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+
+# person id → (full name, aliases)
+Renames = tuple[tuple[str, str, tuple[str, ...]], ...]
+
+
+@functools.cache
+def _raw(path: Path) -> dict[str, Any]:
+    loaded: dict[str, Any] = yaml.safe_load(path.read_text(encoding="utf-8"))
+    return loaded
+
+
+def renamed(path: Path, renames: Renames, label: str) -> Office:
+    """The office file at ``path`` with each (id, name, aliases) of ``renames`` so called."""
+    raw = copy.deepcopy(_raw(path))
+    by_id = {person_id: (name, aliases) for person_id, name, aliases in renames}
+    for p in raw["people"]:
+        if p["id"] in by_id:
+            p["name"], aliases = by_id[p["id"]]
+            p["aliases"] = list(aliases)
+    return parse_office(raw, label)
+
+
+@functools.cache
+def harbour_with_skip() -> Office:
+    """Harbour, Bill Ferreira now Skip Larsen, called "Skip" (id ``bill`` kept)."""
+    return renamed(HARBOUR_FILE, (("bill", "Skip Larsen", ("Skip",)),), "harbour with a Skip")
+
+
+@functools.cache
+def default_with_bin() -> Office:
+    """The default office, Dang Hao now Dang Bin, called "Bin" (family name first, as the
+    office writes its names; id ``dang`` kept)."""
+    return renamed(DEFAULT_FILE, (("dang", "Dang Bin", ("Bin",)),), "default with a Bin")
