@@ -126,6 +126,8 @@ class Message:
     noting: int | None = None  # where a note began ("note this down: ...")
     withdrawing: bool = False  # a withdrawal was read: what follows may be its reason
     negating: bool = False  # a negated errand was read: what follows may be its reason
+    # a wish kept the speaker's own thing from others: "I need it" after it is why
+    keeping: bool = False
     # a thing said was corrected to another ("a coffee - sorry, make that a water"): "I've had
     # 3 already" after it is why the first was dropped, not the new one withdrawn
     replaced: bool = False
