@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from assistantx.agents.symbolic.reading.at_hand import POINTERS
+from assistantx.agents.symbolic.reading.name_inner_words import inside_a_name
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
@@ -108,7 +109,11 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
         if at < len(words) and words[at] in terms.en.service_verbs and not _subject_noun(words, at):
             verb = words[at]
             nxt = words[at + 1] if at + 1 < len(words) else ""
-            ours = verb in terms.lex.cue_words or verb in terms.office_words
+            # a word said only inside a longer name of a thing ("heat" of "heat pack") is
+            # no word of the office where it heads the request: it is the verb asked
+            ours = verb in terms.lex.cue_words or (
+                verb in terms.office_words and not _only_in_a_name(terms, words, at)
+            )
             if not ours or (verb not in terms.lex.cue_words and nxt in DETERMINERS):
                 if through_a_facility(terms, piece.text):
                     continue  # "feed this through the shredder": that facility's service
@@ -140,6 +145,12 @@ def _subject_noun(words: list[str], at: int) -> bool:
     asked for (a verb follows no article)."""
     nxt = words[at + 1] if at + 1 < len(words) else ""
     return at > 0 and words[at - 1] in _ARTICLES and language.is_finite_verb(nxt)
+
+
+def _only_in_a_name(terms: Terms, words: list[str], at: int) -> bool:
+    """Whether the word at ``at`` is one the office says only inside a longer name of a
+    thing, and that name is not said whole there ("heat up my lunch", not "heat pack")."""
+    return words[at] in terms.name_inner_words and not inside_a_name(terms.lex, words, at)
 
 
 def _doers(terms: Terms, words: list[str], at: int) -> bool:

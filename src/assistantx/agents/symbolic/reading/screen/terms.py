@@ -7,6 +7,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms
 from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Lexicon
+from assistantx.agents.symbolic.reading.name_inner_words import name_inner_words
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS, english, split_words
 from assistantx.agents.symbolic.reading.speech import SpeechActs
 from assistantx.core import language
@@ -38,6 +39,10 @@ class Terms:
         self.office_words = self.thing_words | {
             w for phrase in lex.facilities for w in split_words(phrase)
         }
+        # the words said only inside a longer name of a thing ("heat" of "heat pack", "pocket"
+        # and "book" of "pocket book" where nothing is called just "book"): alone they name no
+        # thing of the office, so one that heads an imperative is its verb
+        self.name_inner_words = name_inner_words(office, lex)
 
         # every form of the verbs of the services that send an item out ("courier", "posted")
         self.send_out_verbs = frozenset(
