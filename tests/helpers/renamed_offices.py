@@ -46,3 +46,35 @@ def default_with_bin() -> Office:
     """The default office, Dang Hao now Dang Bin, called "Bin" (family name first, as the
     office writes its names; id ``dang`` kept)."""
     return renamed(DEFAULT_FILE, (("dang", "Dang Bin", ("Bin",)),), "default with a Bin")
+
+
+@functools.cache
+def harbour_with_morgans() -> Office:
+    """Harbour, Bill Ferreira now Morgan Tallis (called "Morgan") and Jack Moreau now Priya
+    Morgan (called "Inspector Morgan"); ids ``bill`` and ``jack`` kept."""
+    return renamed(
+        HARBOUR_FILE,
+        (
+            ("bill", "Morgan Tallis", ("Morgan",)),
+            ("jack", "Priya Morgan", ("Inspector Morgan",)),
+        ),
+        "harbour with two Morgans",
+    )
+
+
+@functools.cache
+def harbour_with_grants() -> Office:
+    """Harbour, Ray Castillo now Grant Osei (called "Grant") and Faith Oduya now Lucía Grant
+    (called "Lucía"); ids ``ray`` and ``faith`` kept."""
+    return renamed(
+        HARBOUR_FILE,
+        (("ray", "Grant Osei", ("Grant",)), ("faith", "Lucía Grant", ("Lucía",))),
+        "harbour with two Grants",
+    )
+
+
+@functools.cache
+def default_with_two_taos() -> Office:
+    """The default office (family name first), Dang Hao now Tao Hao (called "Hao"), beside
+    Lin Tao (called "Tao"); id ``dang`` kept."""
+    return renamed(DEFAULT_FILE, (("dang", "Tao Hao", ("Hao",)),), "default with two Taos")

@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.container_names import container_phrase,
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.destination import means_words
+from assistantx.agents.symbolic.reading.family_of_another import also_meant
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.near_forms import NearForms
@@ -533,7 +534,8 @@ class Lexicon:
         if after_title(prev) and family and len(found) > 1:
             return family  # "Mr Yang": a title goes with a family name
         if word in self.bare:
-            return self.bare[word]
+            # "Morgan": Morgan Tallis's alias, and Priya Morgan's family name: either (asked)
+            return self.bare[word] | (also_meant(word, self.bare, self.family) & found)
         alike = {
             p
             for other in self.sound_alike.get(word, ())
