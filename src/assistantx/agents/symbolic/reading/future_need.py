@@ -21,6 +21,8 @@ _FUTURE_FORMS = tuple(tuple(p.split()) for p in english.entries("future_forms"))
 _NOW = tuple(tuple(p.split()) for p in english.entries("now_words"))
 _JOINERS = english.words("clause_joiners")
 _CLOCK = english.words("clock_words")
+_SPAN_WORDS = english.words("span_words")
+_SPAN_FILLERS = english.words("span_fillers")
 # what opens an event's noun phrase after "for" ("for a consult at 3", "for my 2 o'clock")
 _EVENT_OPENERS = [["a"], ["an"], ["the"], ["my"], ["our"], ["his"], ["her"], ["their"], ["this"]]
 # The speaker as a future's subject ("I'll", "we're", "I am"), and an adverb between
@@ -58,6 +60,32 @@ def said_now(words: list[str]) -> bool:
 def clock_time(words: list[str]) -> bool:
     """ "at 3", "at 3pm", "at noon", "at half two": a time of day, said after "at"."""
     return any(a == "at" and (b[:1].isdigit() or b in _CLOCK) for a, b in itertools.pairwise(words))
+
+
+def without_events(words: list[str]) -> list[str]:
+    """``words`` without each event a thing is said to be for ("for the review at 2", "for my
+    3pm call", up to the next clause's joiner): the event's time says by when the thing is
+    needed, so it is needed now, never that it can wait. A span ("for the afternoon", "for an
+    hour") is how long the thing is had, not an event: it and its time are kept."""
+    out: list[str] = []
+    n = 0
+    while n < len(words):
+        if (
+            words[n] == "for"
+            and words[n + 1 : n + 2] in _EVENT_OPENERS
+            and not _span(words[n + 1 :])
+        ):
+            n = next((k for k in range(n + 2, len(words)) if words[k] in _JOINERS), len(words))
+            continue
+        out.append(words[n])
+        n += 1
+    return out
+
+
+def _span(words: list[str]) -> bool:
+    """ "the afternoon", "a few hours", "an hour": a while, said after "for"."""
+    head = next((w for w in words if w not in _SPAN_FILLERS), None)
+    return head in _SPAN_WORDS
 
 
 def need_clause(words: list[str], at: int) -> list[str]:

@@ -433,7 +433,7 @@ class SpeechActs:
             # "need the stamp for tomorrow": wanted ready for then, as "by tomorrow" is
             if self.later(future_need.need_clause(w, at), _DEADLINES | {"for"}):
                 return True
-        return deferred and self.later(w)
+        return deferred and self.later(w, events=True)
 
     def note(self, words: list[str]) -> list[str] | None:
         """ "note this down: the tape ran out", "for the record, ...": the words of a note
@@ -484,10 +484,15 @@ class SpeechActs:
         return False
 
     @staticmethod
-    def later(words: list[str], deadlines: frozenset[str] = _DEADLINES) -> bool:
+    def later(
+        words: list[str], deadlines: frozenset[str] = _DEADLINES, *, events: bool = False
+    ) -> bool:
         """ "... I could use later", "... tomorrow", "... on Friday": a time after now; not
-        one after a word of ``deadlines`` ("by tomorrow": wanted ready by then, so now)."""
-        w = content(words)
+        one after a word of ``deadlines`` ("by tomorrow": wanted ready by then, so now), nor
+        one of the event the thing is for ("... I can borrow for the review at 2?": by then,
+        so now); with ``events`` an event's time counts too (the asking put off in so many
+        words: "... for the meeting at 3? I'll let you know" waits for the word)."""
+        w = content(words) if events else future_need.without_events(content(words))
         if any(a == "on" and language.is_weekday(b) for a, b in itertools.pairwise(w)):
             return True
         if future_need.clock_time(w):

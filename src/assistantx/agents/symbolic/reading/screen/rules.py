@@ -50,6 +50,7 @@ from assistantx.agents.symbolic.reading.screen.purpose import (
     tool_use,
 )
 from assistantx.agents.symbolic.reading.screen.question import question
+from assistantx.agents.symbolic.reading.screen.recipients_reason import recipients_reason
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -76,6 +77,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
     ("statement", reason),
+    # "..., he needs it for his file": why the colleague the request names needs it
+    ("statement", recipients_reason),
     # what someone else wants to know ("a visitor wants to know the coffee prices"): a topic,
     # never a thing asked for
     ("statement", need_to_know),
