@@ -58,6 +58,8 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
         return Finding("fact", piece, f"a fact: {name}'s {thing} is {said}", hint)
     if leaving_soon(state):  # "Owen is heading to the match": still here, not away
         return None
+    if _ran_out(state, terms.en.away):  # "Min is out of paper": her supply, not her
+        return None
     if _says(state_said(state), terms.en.away, after=2):  # "Wang is away today"
         return _availability(piece, person, name, "away")
     if state and state[0] in terms.en.location_prepositions:
@@ -71,6 +73,15 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
     if _says(state, terms.en.here, after=1):  # "Zhang is back"
         return _availability(piece, person, name, "here")
     return None
+
+
+def _ran_out(state: list[str], away: tuple[tuple[str, ...], ...]) -> bool:
+    """ "Min is out of paper", "Gao's out of staples": "out of" a thing says a supply ran
+    out, not that the person is away; only the away phrases that say "out of" themselves
+    ("out of office", "out of the office") are an absence."""
+    if state[:2] != ["out", "of"]:
+        return False
+    return not any(p[:2] == ("out", "of") and starts_with(state, 0, p) for p in away)
 
 
 def _says(state: list[str], phrases: tuple[tuple[str, ...], ...], *, after: int) -> bool:
