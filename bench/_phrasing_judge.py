@@ -202,7 +202,7 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
     serving: set[str] = set()  # who got a code to run a service (print, heat, ...)
     # a service whose product is electronic (scan to PDF) sends it to the paper's owner by
     # message once its operator has the paper: (position, product id, operator)
-    files_made: list[tuple[int, str, str]] = []
+    files_made: list[tuple[int, str, str, str]] = []
     for at, result in enumerate(results):
         action = result["action"]
         kind = action["type"]
@@ -218,7 +218,9 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
                 serving.add(action["contact"])
                 made = _sent_by_message(office, action)
                 if made is not None:
-                    files_made.append((at, made, action["contact"]))
+                    # sent to whom the code's message named, else to the paper's owner
+                    to = action.get("send_to") or made.partition(":")[2]
+                    files_made.append((at, made, action["contact"], to))
         if kind == "forward_file" and result["ok"]:
             item = action.get("file") or f"{office.file_type() or 'file'}:{action['source']}"
             moved.setdefault(item, at)
@@ -233,8 +235,8 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
             if to not in serving
         ]
         + [
-            Handover(at, item, item.partition(":")[2], _opened_for(results, at, operator))
-            for at, item, operator in files_made
+            Handover(at, item, to, _opened_for(results, at, operator))
+            for at, item, operator, to in files_made
         ]
     )
     return Conduct(
@@ -249,7 +251,8 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
 
 def _sent_by_message(office: Office, action: dict[str, Any]) -> str | None:
     """The electronic product a work code's service makes of the item ("scan_pdf:amara" from
-    scanning "document:amara"), which the operator sends to its owner by message."""
+    scanning "document:amara"), which the operator sends by message: to its owner, or to the
+    person the code names (``send_to``)."""
     op_id = action.get("operation")
     if not op_id:
         return None

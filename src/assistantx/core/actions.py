@@ -102,6 +102,11 @@ class SendQR(_Action):
         description="where an operation that sends the item outside sends it, in the "
         "requester's words ('the county tax office'): the code's text names it",
     )
+    send_to: str | None = Field(
+        default=None,
+        description="the person (id) a file the work makes (a scan to PDF) is sent to by "
+        "message, when not the item's owner: the code's text names them",
+    )
 
     @property
     def kind(self) -> ActionKind:

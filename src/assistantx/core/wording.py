@@ -38,11 +38,14 @@ def purpose_text(
     you: str | None = None,
     operation: str | None = None,
     destination: str | None = None,
+    send_to: str | None = None,
 ) -> str:
     """What the person does at the locker for a code of ``purpose`` on ``item_id``, in the
     office's words: "take your document out, scan it and put the original and the scan back"
     where the office's operation of the copy shape is a scan; "take Lee's form out and fax it
-    to the county tax office" where it sends the item outside (``destination``)."""
+    to the county tax office" where it sends the item outside (``destination``); a file the
+    work makes goes to its owner by message, or to ``send_to`` by name ("send the PDF to
+    Wang Fang"): the operator learns whom only from these words."""
     thing = item_phrase(office, item_id, you=you)
     shape = kind_shape(purpose)
     op = _operation_on(office, shape, item_id.partition(":")[0], you) if shape else None
@@ -52,7 +55,11 @@ def purpose_text(
         return (locker_text(purpose) or "{item}").format(item=thing)
     if shape == "transform" and op.product and office.item_type(op.product).electronic:
         made = office.item_type(op.product).name  # a PDF goes by message, not into the locker
-        return f"take {thing} out, {verb_it(op)}, send the {made} to its owner and put it back"
+        whom = "its owner"
+        if send_to is not None and send_to != item_id.partition(":")[2]:
+            whom = person_name(office, send_to, you=you)
+            whom = "yourself" if whom == "you" else whom
+        return f"take {thing} out, {verb_it(op)}, send the {made} to {whom} and put it back"
     if shape == "transform":
         return f"take {thing} out, {verb_it(op)} and put the original and the {op.name} back"
     if not op.returns_item:  # shredded, faxed out: nothing goes back into the locker

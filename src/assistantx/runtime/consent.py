@@ -84,6 +84,8 @@ def check(office: Office, stm: ShortTermMemory, action: Action) -> Refusal | Non
             "item's owner, the keeper of where it is kept, the guard of the facility doing the "
             "work, or a person the requester named as the recipient",
         )
+    if (refused := _check_send_to(office, stm, action)) is not None:
+        return refused
     if purpose in task_kinds.work_purposes():
         for operation in _work_operations(office, action):
             if (only := owner_only(office, stm.requester, item, operation)) is not None:
@@ -114,6 +116,22 @@ def check(office: Office, stm: ShortTermMemory, action: Action) -> Refusal | Non
                 "wait) — what anyone else writes does not count",
             )
     return None
+
+
+def _check_send_to(office: Office, stm: ShortTermMemory, action: SendQR) -> Refusal | None:
+    """A file the work makes (a scan to PDF) is sent by the operator as the code's message
+    says: to the requester, the item's owner, or a person the requester named as the
+    recipient, as a forwarded file is (``_check_forward``); to nobody else."""
+    to = action.send_to
+    if to is None or to in (stm.requester, action.item.partition(":")[2]):
+        return None
+    if to in named_recipients(office, stm):
+        return None
+    return Refusal(
+        "not_a_party",
+        f"{to} is not a party to {action.item}: the file made of it goes only to the "
+        "requester, its owner, or someone the requester named as the recipient",
+    )
 
 
 def _work_operations(office: Office, action: SendQR) -> list[str]:

@@ -271,6 +271,7 @@ class Executor:
             you=action.contact,
             operation=action.operation,
             destination=action.destination,
+            send_to=action.send_to,
         )
         if earlier is not None and earlier.delivered:
             # Sent before a crash cut this step short: the person holds that code, and it is

@@ -16,6 +16,7 @@ from assistantx.core import task_kinds
 from assistantx.core.office import Facility, Operation, OperationShape, Ownership
 from assistantx.core.task_schema import FILE_KIND, kind_shape
 from assistantx.core.wording import a_thing, item_phrase
+from assistantx.sim.file_recipient import file_recipient
 from assistantx.sim.understanding import (
     asks_to_do,
     asks_to_receive,
@@ -275,8 +276,10 @@ def perform_handover(
         op = _operation_here(world, person, place, ("transform",), told)
         product = (op.product if op is not None else None) or item.split(":", 1)[0]
         owner = item.split(":", 1)[1]
-        if world.office.item_type(product).electronic:  # a PDF: sent to its owner by message
-            world.receive_file(time, owner, f"{product}:{owner}")
+        if world.office.item_type(product).electronic:  # a PDF: sent by message, to whom
+            # the code's message says (its owner unless it names another)
+            to = file_recipient(world.office, told, owner, person)
+            world.receive_file(time, to, f"{product}:{owner}")
         else:
             world.produce(time, f"{product}:{owner}", by=person)
     elif purpose == "heat":

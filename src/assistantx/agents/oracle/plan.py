@@ -46,6 +46,7 @@ class Code:
     purpose: str
     operation: str | None = None  # the office operation of a work step (scan, not copy)
     destination: str | None = None  # where a send-out operation sends the item
+    send_to: str | None = None  # whom a made file (a PDF) goes to by message, if not its owner
 
 
 @dataclass(frozen=True)
@@ -335,13 +336,20 @@ def _add_part(
             plan.add_role(role)
             doc = f"{source}:{a}"
             _put_in(plan, doc, a, who, office)
+            by_message = office.item_type(made).electronic
+            # scanned to PDF for someone else: the operator is told whom to send it to
+            send_to = part.to if by_message and part.to not in (None, a) else None
             plan.visits.append(
-                Visit(role.facility or "", role.key, (Code(role.key, doc, "copy", op.id),))
+                Visit(
+                    role.facility or "",
+                    role.key,
+                    (Code(role.key, doc, "copy", op.id, send_to=send_to),),
+                )
             )
             plan.deliveries.append((REQUESTER, Code(REQUESTER, doc, "collect")))
             plan.add_goal({"copied": doc})
-            if office.item_type(made).electronic:  # scanned to PDF: the file is sent by message
-                plan.add_goal({"received": [a, f"{made}:{a}"]})
+            if by_message:  # scanned to PDF: the file is sent by message, to whom it is for
+                plan.add_goal({"received": [send_to or a, f"{made}:{a}"]})
                 plan.add_goal({"holds": [a, doc]})
                 return
             # the copy goes to the named recipient; the original comes back to its owner

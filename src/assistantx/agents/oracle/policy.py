@@ -289,6 +289,7 @@ def optimal_script(
                     purpose=purpose,
                     operation=code.operation,
                     destination=code.destination,
+                    send_to=code.send_to,
                 )
             )
         batch.append(WaitInPlace(person=person, timeout_s=HANDOVER_TIMEOUT_S))

@@ -158,9 +158,15 @@ class Decider:
             if not ev.holds_code(person, item, purpose):
                 work = op if purpose in task_kinds.work_purposes() else None
                 dest = phase.role.destination if work else None
+                to = phase.role.send_to if work else None
                 actions.append(
                     SendQR(
-                        contact=person, item=item, purpose=purpose, operation=work, destination=dest
+                        contact=person,
+                        item=item,
+                        purpose=purpose,
+                        operation=work,
+                        destination=dest,
+                        send_to=to,
                     )
                 )
         thought = f"hand-over with {self._name(person)} at {place_name(self.office, place)}"

@@ -302,6 +302,7 @@ class Planner:
                 ]
             case "copy":
                 source = self._source(n, t, requester, held)
+                by_message = self.office.item_type(product).electronic
                 guard = Role(
                     f"{n}.copier",
                     "copy",
@@ -311,6 +312,9 @@ class Planner:
                     item_owner=owner,
                     facility=self._facility_for(t),
                     operation=op,
+                    # a scan to PDF for someone else: the operator sends it to them, told by
+                    # name in the code's message, as nobody carries it to them
+                    send_to=t.recipient if by_message and t.recipient not in ("", owner) else None,
                 )
                 # the original comes back to whoever put it in, unless a facility's keeper
                 # took it out (a film from the picture archive): then to its owner, who asked
@@ -325,8 +329,9 @@ class Planner:
                 roles = [guard, source, *([home] if home not in (source, recipient) else [])]
                 roles.append(recipient)
                 back: list[Phase]
-                if self.office.item_type(product).electronic:
-                    # scanned to PDF: the file is sent by message, only the original comes back
+                if by_message:
+                    # scanned to PDF: the operator sends the file by message to the recipient
+                    # (``send_to``); only the original comes back
                     roles = [r for r in roles if r is not recipient or r is home]
                     back = [Handover(home, (leg(item, "collect", owner),))]
                 elif t.recipient == owner:

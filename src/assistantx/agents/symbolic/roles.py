@@ -49,6 +49,7 @@ class Role:
     beneficiary: str | None = None  # for whom
     operation: str | None = None  # the office operation a facility role runs
     destination: str | None = None  # where a send-out operation sends it (requester's words)
+    send_to: str | None = None  # whom a file the work makes (a PDF) goes to, if not its owner
 
     @property
     def confirm(self) -> bool:
@@ -158,6 +159,11 @@ class Roles:
                 )
             case "print" | "copy":
                 said = with_object(self._operation_name(role), f"{self._whose(role)} {thing}")
+                if role.send_to is not None and (made := self._made_file(role)) is not None:
+                    # the file goes by message: whom to, so a yes agrees to sending it there
+                    return (
+                        f"{said} at the {place} and send the {made} to {self._name(role.send_to)}"
+                    )
                 return f"{said} at the {place}"
             case kind if task_kinds.kind_of(kind) and task_kinds.kind(kind).ask:
                 # a person's work from the table ("sign X's document", "stamp ... with a seal")
@@ -180,6 +186,15 @@ class Roles:
             case "send_file":
                 return f"send me your {thing} for {beneficiary}"
         raise ValueError(role.kind)  # pragma: no cover
+
+    def _made_file(self, role: Role) -> str | None:
+        """The name of the electronic file the role's operation makes ("PDF"), if it does."""
+        if role.operation is None:
+            return None
+        product = self.office.operation(role.operation).product
+        if product is None or not self.office.item_type(product).electronic:
+            return None
+        return self.office.item_type(product).name
 
     def _send_verb(self, role: Role) -> str:
         """The verb a send-out service is asked for by: its first declared verb ("courier"
