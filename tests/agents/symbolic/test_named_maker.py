@@ -113,7 +113,11 @@ def test_must_not_change_a_name_after_the_verb_is_whom_it_is_for(
 
 def test_must_not_change_a_colleague_asked_for_other_work() -> None:
     """Wang is asked to print, not to make the coffee: nothing is said about Wang and the
-    coffee machine (the coffee is read as before)."""
-    frame = _DEFAULT("could Wang print my file? I need a coffee too")
-    assert "look after" not in (frame.question or ""), frame
-    assert ("produce", "coffee", None) in [(t.kind, t.item, t.actor) for t in frame.tasks], frame
+    coffee machine (the coffee is read as before). Wang keeps no printer either, which is
+    said and asked (``named_doer``); a yes prints and makes the coffee with the keepers."""
+    text = "could Wang print my file? I need a coffee too"
+    frame = _DEFAULT(text)
+    assert "coffee machine" not in (frame.question or ""), frame
+    assert (frame.question or "").startswith("Wang Fang doesn't look after the printer."), frame
+    yes = _DEFAULT_ANSWERED(text, ["yes"])
+    assert ("produce", "coffee", None) in [(t.kind, t.item, t.actor) for t in yes.tasks], yes

@@ -120,12 +120,23 @@ class Planner:
         return [self._compile(n, t, frame.requester) for n, t in enumerate(frame.tasks)]
 
     def _facility_for(self, t: Task) -> str:
-        """The facility that offers the task's operation (the first that does)."""
+        """The facility that offers the task's operation: one its named doer keeps ("could
+        Mao print my file?"), else the first that does."""
         op = operation_of(self.office, t)
         offering = self.office.offering(op) if op else []
         if not offering:
             raise LookupError(f"no facility for {t.kind} {t.item}")
-        return offering[0].id
+        kept = [f for f in offering if t.actor is not None and t.actor in f.guards]
+        return (kept or offering)[0].id
+
+    def _runner(self, t: Task, requester: str) -> str | None:
+        """Who runs the facility for the task: the keeper the request named ("could Mao print
+        my file?", ``reading.named_doer``), or the requester who is its only keeper, or any
+        keeper (None). A named doer who keeps none of them is no runner."""
+        guards = self.office.facility(self._facility_for(t)).guards
+        if t.actor is not None and t.actor in guards:
+            return t.actor
+        return self._runs_alone(t, requester)
 
     def _runs_alone(self, t: Task, requester: str) -> str | None:
         """The requester, when they are the only guard of the facility the task needs: they
@@ -271,7 +282,7 @@ class Planner:
                     f"{n}.renderer",
                     "print",
                     requester,
-                    fixed=self._runs_alone(t, requester),
+                    fixed=self._runner(t, requester),
                     item_type=source_type,
                     item_owner=owner,
                     facility=self._facility_for(t),
@@ -307,7 +318,7 @@ class Planner:
                     f"{n}.copier",
                     "copy",
                     requester,
-                    fixed=self._runs_alone(t, requester),
+                    fixed=self._runner(t, requester),
                     item_type=item,
                     item_owner=owner,
                     facility=self._facility_for(t),
@@ -377,7 +388,7 @@ class Planner:
                     f"{n}.{spec.doer}",
                     kind,
                     requester,
-                    fixed=t.actor if spec.by_person else self._runs_alone(t, requester),
+                    fixed=t.actor if spec.by_person else self._runner(t, requester),
                     item_type=item,
                     item_owner=owner,
                     facility=None if spec.by_person else self._facility_for(t),

@@ -82,6 +82,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     service_question,
     with_service,
 )
+from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
@@ -268,6 +269,10 @@ class InstructionParser:
         # "could Wang make one? I need a coffee": Wang makes it only if Wang keeps a machine
         # that makes it; else said, and asked before the keepers make it
         frame = with_named_maker(
+            self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
+        )
+        # "could Wang print my file?": the same for a service done on the requester's thing
+        frame = with_named_doer(
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)

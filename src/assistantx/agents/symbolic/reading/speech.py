@@ -149,7 +149,9 @@ def _after_preposition(w: list[str], n: int) -> bool:
 _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
-_NEGATIONS = english.words("statement_negations")
+# "Wang doesn't need", and "Wang *hardly* needs": an adverb that denies the verb after it
+# makes the statement a denial too ("rarely", "barely", "scarcely", "seldom")
+_NEGATIONS = english.words("statement_negations") | english.words("negative_adverbs")
 _SO = frozenset({"so", "then"})  # a reason, then the request it leads to
 # Words that open how a task would be done, not on what: "print *in* colour", "copy *double*-sided"
 _MANNER = english.words("manner_openers")

@@ -66,7 +66,14 @@ def english() -> English:
     return English(
         lead_in=word_set("lead_in"),
         withdraw=phrases("withdraw"),
-        negators=phrases("negators"),
+        # "I *hardly* need a stapler": an adverb that denies the verb after it negates the
+        # errand as "don't" does
+        negators=tuple(
+            sorted(
+                set(phrases("negators")) | {(w,) for w in word_set("negative_adverbs")},
+                key=lambda p: (-len(p), p),
+            )
+        ),
         negation_fillers=word_set("negation_fillers"),
         destructive=phrases("destructive"),
         destructive_of_others=phrases("destructive_of_others"),

@@ -57,12 +57,30 @@ def _hoped(terms: Terms, piece: Piece) -> bool:
         n += 1
     if n >= len(words) or not (_hoping(words[n]) or words[n] == _WISH):
         return False
+    if _colleagues_possessive(piece, words[n]):
+        return False  # "need a ruler. Hope's please": the colleague's, no verb
     if n == 0 and words[n] in terms.lex.name_words:
         return False  # the word opens the piece and is someone's name here
     hoped = words[n + 1 :]
     if words[n] == _WISH and not set(hoped) & _THEIR_OWN:
         return False  # "I wish Hal would sign the form": who is to do the work, asked
     return hoped[:1] not in ([], ["to"]) and not set(hoped) & _ASKED_OR_FOR_ME
+
+
+def _colleagues_possessive(piece: Piece, word: str) -> bool:
+    """Whether ``word`` (folded: "hopes") was written as a colleague's name with "'s",
+    capitalised ("Hope's please", "Hope's would do"): a verb is never spelled with an
+    apostrophe, and the capital makes it the name, as the lexicon read it. Lower-case
+    ("hope's not lost") is the ordinary word and stays a hope."""
+    tokens = piece.lexed.tokens
+    return any(
+        m.kind == "person"
+        and m.possessive
+        and m.end - m.start == 1
+        and tokens[m.start].text[:1].isupper()
+        and tokens[m.start].word + "s" == word
+        for m in piece.lexed.mentions
+    )
 
 
 def _hoping(word: str) -> bool:

@@ -25,6 +25,7 @@ import re
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.subject_adverbs import is_adverb_before_verb
 from assistantx.core import english
 from assistantx.core.task_schema import Evidence
 
@@ -32,7 +33,10 @@ _PRONOUNS = ("she", "he", "they")
 # the verbs a need is said with after its subject, besides the need phrases of the English
 # data ("is after", "could use"); "'s"/"is" forms are written both ways
 _NEED_VERBS = ("needs", "need", "wants", "want", "would like", "d like", "really needs")
-_ADVERBS = ("really", "still", "also", "urgently", "desperately", "just", "badly")
+# "she *really* / *definitely* / *still* needs": up to two words between the pronoun and the
+# verb, each an adverb by the dictionary (``subject_adverbs``); one that denies ("she
+# *hardly* needs") is no need, and leaves the pronoun unread here
+_ADVERB_WORDS = 2
 # what may stand before the pronoun at the start of its clause: the message's start, a
 # sentence's or part's end, or a joining word ("Rose is soaked and she needs ...")
 _OPENING = r"(?:^|(?<=[.,;:!?\-–—(])\s*|\b(?:and|but|so|now|plus)\s+)"
@@ -45,6 +49,15 @@ _PAUSES = frozenset(".,;:!?-–—(")
 # it": the request's own doer) or a thing said before ("she needs it today": the reason for
 # the part that names it, read where that part is)
 _NOT_A_THING = ("to", "it", "one", "them", "that", "this", "these", "those")
+
+
+def _need_matches(text: str) -> list[re.Match[str]]:
+    """The pronoun needs of ``text`` whose words before the verb, if any, are all adverbs."""
+    return [m for m in _PRONOUN_NEED.finditer(text) if _adverbs_only(m)]
+
+
+def _adverbs_only(match: re.Match[str]) -> bool:
+    return all(is_adverb_before_verb(w.lower()) for w in (match.group("adverb") or "").split())
 
 
 def _verb_pattern() -> str:
@@ -69,9 +82,9 @@ _PRONOUN_NEED = re.compile(
     _OPENING
     + r"(?P<pronoun>"
     + "|".join(_PRONOUNS)
-    + r")(?P<adverb>\s+(?:"
-    + "|".join(_ADVERBS)
-    + r"))?(?P<verb>"
+    + r")(?P<adverb>(?:\s+[^\W\d_]+){1,"
+    + str(_ADVERB_WORDS)
+    + r"}?)??(?P<verb>"
     + _verb_pattern()
     + r")\b(?!\s+(?:"
     + "|".join(_NOT_A_THING)
@@ -90,6 +103,8 @@ def named_subject(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
     found: list[Evidence] = []
 
     def meant(match: re.Match[str]) -> str:
+        if not _adverbs_only(match):
+            return match.group(0)  # "she hardly needs": no need, and no pronoun of one
         before = set(_colleagues(terms, text[: match.start("pronoun")], requester))
         opening = _opening(text, match)
         if len(before) > 1:
@@ -127,7 +142,7 @@ def _opening(text: str, match: re.Match[str]) -> str:
 def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     """A need whose subject is "she"/"he"/"they" with nobody named before it: asked whom the
     pronoun means, never read as the speaker's own need."""
-    match = _PRONOUN_NEED.search(piece.text)
+    match = next(iter(_need_matches(piece.text)), None)
     if match is None or piece.text[: match.start("pronoun")].strip(" ,.-–—;:!?"):
         return None  # not the piece's own subject ("if she needs it" is a condition)
     before = {
@@ -165,9 +180,7 @@ def with_subject_answered(
     if asked is None or asked.group("pronoun").lower() not in _PRONOUNS:
         return None
     said = asked.group("pronoun").lower()
-    match = next(
-        (m for m in _PRONOUN_NEED.finditer(text) if m.group("pronoun").lower() == said), None
-    )
+    match = next((m for m in _need_matches(text) if m.group("pronoun").lower() == said), None)
     if match is None:
         return None
     words = terms.lex.read(answer).tokens
