@@ -39,6 +39,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_v
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
+from assistantx.agents.symbolic.reading.thing_state import state_told
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
 
@@ -791,6 +792,8 @@ class SpeechActs:
         """ "coffee spilled all over my keyboard", "water got on my notes": a thing of the
         office said bare, then a past verb that is no errand's: what happened, told (the
         reason beside a request), not the thing asked for."""
+        if state_told(w, self.lex.items):
+            return True  # "stapler is working fine now": how the thing is, told
         if len(w) < 2 or w[0] not in self.lex.items:
             return False
         if w[1] in _BE_OR_HAVE and w[2:3] and language.is_past_participle(w[2]):
