@@ -34,6 +34,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
+from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
@@ -690,6 +691,8 @@ class SpeechActs:
         """A statement of fact, not a request: a subject, then a state or past verb, before
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
         w = self._untitled(content(words))
+        if declines_more(w, self.lex.items):
+            return True  # "no more water for me thanks": the speaker wants none
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if set(words[1:]) & _PLEASE:
