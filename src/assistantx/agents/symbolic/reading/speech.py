@@ -34,11 +34,13 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
+from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
+from assistantx.agents.symbolic.reading.thing_state import state_told
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
 
@@ -691,6 +693,8 @@ class SpeechActs:
         """A statement of fact, not a request: a subject, then a state or past verb, before
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
         w = self._untitled(content(words))
+        if declines_more(w, self.lex.items):
+            return True  # "no more water for me thanks": the speaker wants none
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if set(words[1:]) & _PLEASE:
@@ -793,6 +797,8 @@ class SpeechActs:
         """ "coffee spilled all over my keyboard", "water got on my notes": a thing of the
         office said bare, then a past verb that is no errand's: what happened, told (the
         reason beside a request), not the thing asked for."""
+        if state_told(w, self.lex.items):
+            return True  # "stapler is working fine now": how the thing is, told
         if len(w) < 2 or w[0] not in self.lex.items:
             return False
         if w[1] in _BE_OR_HAVE and w[2:3] and language.is_past_participle(w[2]):

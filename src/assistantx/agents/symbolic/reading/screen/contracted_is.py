@@ -87,7 +87,11 @@ def _state_of_a_thing(subject: str, state: str, after: str, things: frozenset[st
     ongoing = state.endswith("ing") and "VERB" in read
     if not ongoing and "ADJ" not in read:
         return False
-    return not after or after in (_ONGOING_TAILS if ongoing else _TAILS)
+    if not after or after in (_ONGOING_TAILS if ongoing else _TAILS):
+        return True
+    # "the stapler's working fine now", "the ruler's totally fine": an adverb of how it
+    # works; a thing of the office after it ("the printer's working copy") is its part
+    return "ADV" in language.lemmas(after) and after not in things
 
 
 def contracted_is(text: str, things: frozenset[str] = frozenset()) -> tuple[str, list[Evidence]]:

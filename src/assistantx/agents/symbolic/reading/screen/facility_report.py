@@ -14,6 +14,10 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.elsewhere import state_said
 from assistantx.agents.symbolic.reading.screen.english import starts_with
+from assistantx.agents.symbolic.reading.screen.facility_place import (
+    facility_after_place,
+    failure_said,
+)
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -37,8 +41,12 @@ def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) ->
     k = 0
     while k < len(mentions) and mentions[k].kind == "word":
         if tokens[mentions[k].start].word not in terms.en.fact_openers:
-            return None
+            break
         k += 1
+    # "the kitchen coffee machine", "copy room printer": where it stands said before it
+    k = facility_after_place(tokens, mentions, k)
+    if k < len(mentions) and mentions[k].kind == "word":
+        return None
     if k >= len(mentions) or mentions[k].kind != "facility" or len(mentions[k].ids) != 1:
         return None
     subject = mentions[k]
@@ -48,6 +56,9 @@ def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) ->
     # "the kettle keeps tripping the fuse"
     if keeps is not None and _doing(terms, piece, rest[len(keeps) :], subject.end + len(keeps)):
         return _report(piece, f"the {name} {' '.join(state_said(rest))}", fault=True)
+    failed = failure_said(rest)
+    if failed:  # "the kettle has died again": a fault, said with "has"
+        return _report(piece, f"the {name} has {' '.join(failed)}", fault=True)
     copula = next((c for c in terms.en.copulas if starts_with(rest, 0, c)), None)
     if copula is None and not subject.possessive:
         return None  # "the scanner jammed my strip": told as what it did, read elsewhere
