@@ -106,6 +106,7 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
+from assistantx.agents.symbolic.reading.possessive_place import possessive_places
 from assistantx.agents.symbolic.reading.purpose import (
     contracted_needs,
     lacked_purposes,
@@ -246,6 +247,8 @@ class InstructionParser:
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
         # "Zhang asked if someone could bring him a coffee": a coffee for Zhang
         text = reported_requests(text, self._one_name)
+        # "take this book to Wang's if he's in": Wang's desk, so Wang gets it
+        text = possessive_places(text, self.screen.terms.is_person_word)
         # "i need a pen. Lee's is fine": Lee's pen, asked of Lee
         text = accepted_owners(text, self.screen.terms.is_person_word)
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
