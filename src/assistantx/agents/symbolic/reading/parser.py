@@ -106,6 +106,7 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
+from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
 from assistantx.agents.symbolic.reading.purpose import (
     contracted_needs,
@@ -249,6 +250,8 @@ class InstructionParser:
         text = reported_requests(text, self._one_name)
         # "take this book to Wang's if he's in": Wang's desk, so Wang gets it
         text = possessive_places(text, self.screen.terms.is_person_word)
+        # "a stapler, not Wang's, Zhang's", "Hu's stapler, Gao's": one stapler, Zhang's / Gao's
+        text = possessive_corrections(text, self.screen.terms.is_person_word)
         # "i need a pen. Lee's is fine": Lee's pen, asked of Lee
         text = accepted_owners(text, self.screen.terms.is_person_word)
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
