@@ -108,6 +108,7 @@ from assistantx.agents.symbolic.reading.parts import (
 )
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
+from assistantx.agents.symbolic.reading.products_listed import ProductsListed
 from assistantx.agents.symbolic.reading.purpose import (
     contracted_needs,
     lacked_purposes,
@@ -207,6 +208,7 @@ class InstructionParser:
         self.frames = FrameReader(office)
         self.operations = OperationChooser(office)
         self._something_from = SomethingFrom(office)  # "something from the vending machine"
+        self._products_listed = ProductsListed(office)  # "copy my document and a printout"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -232,6 +234,8 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "copy my document and a printout": the printout is printing's, a task of its own
+        text = self._products_listed(text)
         # "something from the vending machine": the one kind of thing it makes
         text = self._something_from(text)
         # "Shiv here - ...": the speaker's sign-on, no party to the request
