@@ -84,6 +84,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
 )
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
+from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
@@ -209,6 +210,7 @@ class InstructionParser:
         self.operations = OperationChooser(office)
         self._something_from = SomethingFrom(office)  # "something from the vending machine"
         self._products_listed = ProductsListed(office)  # "copy my document and a printout"
+        self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -234,6 +236,8 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "with Rosa - Álvarez, not Lindqvist": the namesake the later words name
+        text = self._namesake_surnames(text)
         # "copy my document and a printout": the printout is printing's, a task of its own
         text = self._products_listed(text)
         # "something from the vending machine": the one kind of thing it makes
@@ -371,7 +375,11 @@ class InstructionParser:
                 unplaced = own_thing_unplaced(self.office, frame, requester)
                 if unplaced is not None:
                     frame = TaskFrame(requester=requester, question=unplaced)
-        elif frame.question is not None and _asks_who(frame.question):
+        elif (
+            frame.question is not None
+            and _asks_who(frame.question)
+            and not _whom_meant(frame.question)
+        ):
             # "my proof needs a read, can you sort it", the read not understood: which work
             # is meant is asked, not who gets the proof (it comes back to the requester)
             named = items_named(readings)
@@ -767,6 +775,12 @@ def _determined(answer: str) -> bool:
 
 def _asks_who(question: str) -> bool:
     return question.lower().startswith("who ")
+
+
+def _whom_meant(question: str) -> bool:
+    """Whether ``question`` asks which colleague a name means ("Who do you mean by 'Rosa':
+    ...?"): no question of who gets the thing, so it is asked before the work around it."""
+    return question.lower().startswith("who do you mean by")
 
 
 def _is_me(answer: str) -> bool:
