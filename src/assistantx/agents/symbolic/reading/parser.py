@@ -85,6 +85,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
 from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
+from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
@@ -107,6 +108,9 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
+from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
+from assistantx.agents.symbolic.reading.possessive_place import possessive_places
+from assistantx.agents.symbolic.reading.products_listed import ProductsListed
 from assistantx.agents.symbolic.reading.purpose import (
     contracted_needs,
     lacked_purposes,
@@ -206,6 +210,8 @@ class InstructionParser:
         self.frames = FrameReader(office)
         self.operations = OperationChooser(office)
         self._something_from = SomethingFrom(office)  # "something from the vending machine"
+        self._products_listed = ProductsListed(office)  # "copy my document and a printout"
+        self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -231,6 +237,10 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "with Rosa - Álvarez, not Lindqvist": the namesake the later words name
+        text = self._namesake_surnames(text)
+        # "copy my document and a printout": the printout is printing's, a task of its own
+        text = self._products_listed(text)
         # "something from the vending machine": the one kind of thing it makes
         text = self._something_from(text)
         # "Shiv here - ...": the speaker's sign-on, no party to the request
@@ -247,6 +257,10 @@ class InstructionParser:
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
         # "Zhang asked if someone could bring him a coffee": a coffee for Zhang
         text = reported_requests(text, self._one_name)
+        # "take this book to Wang's if he's in": Wang's desk, so Wang gets it
+        text = possessive_places(text, self.screen.terms.is_person_word)
+        # "a stapler, not Wang's, Zhang's", "Hu's stapler, Gao's": one stapler, Zhang's / Gao's
+        text = possessive_corrections(text, self.screen.terms.is_person_word)
         # "i need a pen. Lee's is fine": Lee's pen, asked of Lee
         text = accepted_owners(text, self.screen.terms.is_person_word)
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
@@ -366,7 +380,11 @@ class InstructionParser:
                 unplaced = own_thing_unplaced(self.office, frame, requester)
                 if unplaced is not None:
                     frame = TaskFrame(requester=requester, question=unplaced)
-        elif frame.question is not None and _asks_who(frame.question):
+        elif (
+            frame.question is not None
+            and _asks_who(frame.question)
+            and not _whom_meant(frame.question)
+        ):
             # "my proof needs a read, can you sort it", the read not understood: which work
             # is meant is asked, not who gets the proof (it comes back to the requester)
             named = items_named(readings)
@@ -762,6 +780,12 @@ def _determined(answer: str) -> bool:
 
 def _asks_who(question: str) -> bool:
     return question.lower().startswith("who ")
+
+
+def _whom_meant(question: str) -> bool:
+    """Whether ``question`` asks which colleague a name means ("Who do you mean by 'Rosa':
+    ...?"): no question of who gets the thing, so it is asked before the work around it."""
+    return question.lower().startswith("who do you mean by")
 
 
 def _is_me(answer: str) -> bool:

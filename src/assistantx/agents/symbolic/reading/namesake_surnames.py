@@ -1,0 +1,118 @@
+"""Namesakes told apart by a word of one's name said later: "drop the copy with Rosa at
+reception - Álvarez, not Lindqvist", "give my contract to Rosa, the Álvarez one", "... to
+Rosa, not Lindqvist". Where a name several colleagues share is said alone, a part set off
+after it in the same sentence (by a comma or a dash) that says only words of the namesakes'
+other names (with "not", "the", "one") picks the one it names, or the one left when it names
+the others with "not". The name is then read as that colleague's full name and the part left
+out, as "drop the copy with Rosa Álvarez at reception" is read. Before, the shared name was
+asked about though the message said which.
+
+A part that names nobody among the namesakes ("to Rosa, not Wang") or leaves several is left
+alone: the name is asked about, as before."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.core import english, language
+from assistantx.core.office import Office
+
+# the words a part that picks a namesake may say besides the names ("the Álvarez one please")
+_GLUE = frozenset({"the", "one", "not", "no", "but", "and", "only", "i", "mean"}) | (
+    english.words("asking_words")
+)
+_REFUSALS = frozenset({"not", "no"})
+_SENTENCE = re.compile(r"[^.!?;\n]+[.!?;\n]*|[.!?;\n]+")
+_PAUSE = re.compile(r"\s*(?:[,:]|\s[-–—]+)\s*")
+
+
+class NamesakeSurnames:
+    """The office's shared name words, with the other words of each namesake's names."""
+
+    def __init__(self, office: Office) -> None:
+        words_of: dict[str, set[str]] = {}  # a person → the words of their names
+        for p in office.people:
+            words_of[p.id] = {
+                language.fold(w) for name in (p.name, *p.aliases) for w in language.words(name)
+            }
+        holders: dict[str, list[str]] = {}
+        for pid, said in words_of.items():
+            for w in said:
+                holders.setdefault(w, []).append(pid)
+        self._full = {p.id: p.name for p in office.people}
+        # a name word several share → each holder's words that none of the others has
+        self._shared: dict[str, dict[str, set[str]]] = {}
+        for word, pids in holders.items():
+            if len(pids) < 2:
+                continue
+            own = {
+                pid: words_of[pid] - {w for o in pids if o != pid for w in words_of[o]}
+                for pid in pids
+            }
+            self._shared[word] = own
+
+    def __call__(self, text: str) -> str:
+        """``text`` with each shared name a later part picks said as that one's full name."""
+        if not self._shared:
+            return text
+        return "".join(self._picked(m.group(0)) for m in _SENTENCE.finditer(text))
+
+    def _picked(self, said_whole: str) -> str:
+        body = said_whole.rstrip(".!?;\n")  # the sentence's own end kept as it was
+        return self._picked_in(body) + said_whole[len(body) :]
+
+    def _picked_in(self, sentence: str) -> str:
+        for said in language.WORD.finditer(sentence):
+            own = self._shared.get(language.fold(said.group(0)))
+            if own is None or self._followed_by_own(sentence, said.end(), own):
+                continue
+            rest = sentence[said.end() :]
+            pauses = list(_PAUSE.finditer(rest))
+            chosen: set[str] = set()
+            refused: set[str] = set()
+            cut: list[tuple[int, int]] = []
+            for n, pause in enumerate(pauses):
+                end = pauses[n + 1].start() if n + 1 < len(pauses) else len(rest)
+                part = rest[pause.end() : end]
+                named = _part_names(part, own)
+                if named is None:
+                    continue
+                chosen |= named[0]
+                refused |= named[1]
+                cut.append((pause.start(), end))
+            if not cut:
+                continue
+            left = (chosen or set(own)) - refused
+            if len(left) != 1:
+                continue
+            (pid,) = left
+            kept = rest
+            for start, end in reversed(cut):
+                kept = kept[:start] + kept[end:]
+            return sentence[: said.start()] + self._full[pid] + kept
+        return sentence
+
+    @staticmethod
+    def _followed_by_own(sentence: str, at: int, own: dict[str, set[str]]) -> bool:
+        """Whether the shared name is said with a word of one namesake's own right after it
+        ("Rosa Álvarez"): it names that one already."""
+        nxt = language.WORD.match(sentence, at + len(sentence[at:]) - len(sentence[at:].lstrip()))
+        return nxt is not None and any(language.fold(nxt.group(0)) in w for w in own.values())
+
+
+def _part_names(part: str, own: dict[str, set[str]]) -> tuple[set[str], set[str]] | None:
+    """The namesakes a part picks and refuses, where it says nothing but their own words and
+    the glue ("Álvarez", "the Álvarez one", "not Lindqvist"); None otherwise."""
+    words = [language.fold(w) for w in language.words(part)]
+    if not words:
+        return None
+    chosen: set[str] = set()
+    refused: set[str] = set()
+    for n, w in enumerate(words):
+        if w in _GLUE:
+            continue
+        pids = {pid for pid, said in own.items() if w in said}
+        if len(pids) != 1:
+            return None
+        (refused if n and words[n - 1] in _REFUSALS else chosen).update(pids)
+    return (chosen, refused) if chosen or refused else None

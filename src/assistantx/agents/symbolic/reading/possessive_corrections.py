@@ -1,0 +1,172 @@
+"""Whose one, said again after a pause: a colleague's bare possessive ("Zhang's", no noun of
+its own) set off after the thing asked for corrects or picks that thing's owner; it is never
+a second thing. "can I have a stapler, not Wang's, Zhang's": one stapler, Zhang's (the refused
+one is left out; before, anyone's stapler AND Zhang's were fetched); "bring me Hu's stapler,
+Gao's": a correction, Gao's stapler (before, both were fetched); "a stapler, Zhang's please":
+Zhang's, as "a stapler, Zhang's" is read (before, anyone's AND Zhang's).
+
+Only a possessive with nothing after it but a courtesy word ("please", "instead") before a
+pause or the sentence's end corrects: "Zhang's too", "Zhang's scissors", "Zhang's is broken"
+say something else and are left alone; so is a refusal with no choice after it ("Wang's
+stapler, not Zhang's"), and a choice among two owners said before it. The choice left ("a
+stapler, Zhang's") is read by ``accepted_owner``, which runs after this."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from assistantx.core import english
+
+_REFUSALS = english.words("exclusion_openers") | {"no"}
+_COURTESY = english.words("asking_words") | {"instead", "then"}
+_MARKERS = english.entries("owner_correction_markers")
+
+# a pause, then words that mark a correction, right before the choice ("..., no wait, Dawn's")
+_MARKED = re.compile(
+    r"\s*[,:\-–—]\s*(?:(?:{m})(?:\s*,?\s*(?:{m}))*\s*[,:\-–—]?\s*)?$".format(
+        m="|".join(r"\s+".join(map(re.escape, m.split())) for m in _MARKERS)
+    ),
+    re.IGNORECASE,
+)
+# words that name no thing: what a correction is said with
+_SAID_WITH = english.words("owner_correction_markers") | _REFUSALS | _COURTESY
+_SENTENCE = re.compile(r"[^.!?;]+[.!?;]*|[.!?;]+")
+_POSSESSIVE = re.compile(r"\b(?P<owner>[^\W\d_]+)['’]s\b")
+_NEXT_WORD = re.compile(r"\s*(?P<word>[^\W\d_]+)")
+_PAUSES = ",:-–—"
+_ENDS = ",;:.!?-–—"
+
+
+@dataclass(frozen=True)
+class _Owner:
+    """A colleague's possessive in a sentence: where it is, and where its bare part stops
+    (past the courtesy words after it); ``stop`` is None where a noun or another word
+    follows it (it is whose thing, or says something else)."""
+
+    start: int
+    end: int
+    name: str
+    stop: int | None
+
+
+def possessive_corrections(text: str, is_person: Callable[[str], bool]) -> str:
+    """``text`` with each sentence's bare possessive of a colleague that corrects or picks
+    whose thing it asks for read as that thing's one owner (``is_person``: whether a word
+    names a colleague)."""
+    return "".join(_corrected(m.group(0), is_person) for m in _SENTENCE.finditer(text))
+
+
+def _owners(sentence: str, is_person: Callable[[str], bool]) -> list[_Owner]:
+    return [
+        _Owner(m.start(), m.end(), m.group("owner"), _bare_stop(sentence, m.end()))
+        for m in _POSSESSIVE.finditer(sentence)
+        if is_person(f"{m.group('owner')}'s")
+    ]
+
+
+def _bare_stop(sentence: str, at: int) -> int | None:
+    """Past the courtesy words after ``at``, where a pause, "but" or the sentence's end
+    comes; None where another word comes first."""
+    while True:
+        word = _NEXT_WORD.match(sentence, at)
+        if word is None:
+            rest = sentence[at:].lstrip()
+            return at if not rest or rest[0] in _ENDS else None
+        said = word.group("word").lower()
+        if said == "but":
+            return at
+        if said not in _COURTESY:
+            return None
+        at = word.end()
+
+
+def _words_before(sentence: str, at: int) -> list[str]:
+    return [w.lower() for w in re.findall(r"[^\W\d_]+", sentence[:at])]
+
+
+def _refused(sentence: str, owner: _Owner) -> bool:
+    """Whether the bare possessive is refused: a refusal word right before it, no pause
+    between ("not Wang's"; "no, Zhang's" picks Zhang's)."""
+    head = sentence[: owner.start]
+    said = re.search(r"([^\W\d_]+)\s+$", head)
+    return owner.stop is not None and said is not None and said.group(1).lower() in _REFUSALS
+
+
+def _opened(sentence: str, owner: _Owner) -> bool:
+    """Whether the possessive opens a part of its own: after a pause, "but", or words that
+    mark a correction ("no, Zhang's", "sorry I mean Zhang's")."""
+    head = sentence[: owner.start].rstrip()
+    if head and head[-1] in _PAUSES:
+        return True
+    said = " ".join(_words_before(sentence, owner.start))
+    return said.endswith(" but") or any(said.endswith(f" {m}") for m in _MARKERS)
+
+
+def _corrected(sentence: str, is_person: Callable[[str], bool]) -> str:
+    owners = _owners(sentence, is_person)
+    chosen = [
+        o
+        for o in owners
+        if o.stop is not None and not _refused(sentence, o) and _opened(sentence, o)
+    ]
+    if len(chosen) != 1:
+        return sentence
+    choice = chosen[0]
+    refused = [o for o in owners if _refused(sentence, o)]
+    if not _thing_before(sentence, min(o.start for o in [*refused, choice])):
+        # "Bring me Lee's stapler. Not Lee's, Lin's.": the thing is in another sentence, read
+        # by the corrections across sentences (``screen``)
+        return sentence
+    if refused:
+        # "a stapler, not Wang's, Zhang's please": the refused one left out, the choice kept
+        out = sentence
+        for o in sorted(refused, key=lambda r: -r.start):
+            out = _without_refusal(out, o)
+        return _corrected(out, is_person)
+    said_before = [o for o in owners if o.stop is None and o.end <= choice.start]
+    assert choice.stop is not None
+    if len(said_before) == 1:
+        if said_before[0].name.lower() == choice.name.lower():
+            return sentence
+        # "bring me Hu's stapler, Gao's": the one thing, Gao's
+        first = said_before[0]
+        cut = _part_start(sentence, choice.start)
+        return (
+            sentence[: first.start]
+            + f"{choice.name}'s"
+            + sentence[first.end : cut]
+            + sentence[choice.stop :]
+        )
+    if not said_before:
+        # "a stapler, Zhang's please", "a stapler, no, Zhang's": the choice, as "a stapler,
+        # Zhang's" is read (the courtesy and the correction's words said with it left out)
+        head = _MARKED.sub(", ", sentence[: choice.start], count=1)
+        return head + sentence[choice.start : choice.end] + sentence[choice.stop :]
+    return sentence
+
+
+def _part_start(sentence: str, at: int) -> int:
+    """Where the part the possessive at ``at`` opens begins: at its pause, before the words
+    that mark it a correction ("..., no wait, Dawn's")."""
+    marked = _MARKED.search(sentence[:at])
+    return marked.start() if marked is not None else at
+
+
+def _thing_before(sentence: str, at: int) -> bool:
+    """Whether a word other than a correction's own comes before ``at`` in the sentence: the
+    thing asked for is said there, not in a sentence before ("actually, no, Chen's")."""
+    return any(w not in _SAID_WITH for w in _words_before(sentence, at))
+
+
+def _without_refusal(sentence: str, owner: _Owner) -> str:
+    """``sentence`` without "not Wang's" and the pause or "but" after it; a pause left
+    dangling before the sentence's end goes too."""
+    assert owner.stop is not None
+    start = sentence.rfind(" ", 0, owner.start - 1) + 1  # the refusal word
+    joined = re.match(r"\s*(?:[,:]|[-–—])?\s*(?:but\b\s*)?", sentence[owner.stop :])
+    end = owner.stop + (joined.end() if joined is not None else 0)
+    out = sentence[:start] + sentence[end:]
+    out = re.sub(r"([,:])\s*[,:]", r"\1", out)
+    return re.sub(r"\s*[,:]\s*(?=[.!?;]*\s*$)", "", out)
