@@ -176,6 +176,7 @@ def read_name(slot: NameSlot) -> NameReading:
         or _consenting(slot)
         or _joined_names(slot)
         or _asked_for_theirs(slot)
+        or _question_subject(slot)
     )
     if language.is_month(w) and not slot.possessive:
         day = language.is_day_number(prev) or language.is_day_number(nxt)
@@ -239,6 +240,34 @@ def _asked_verb(slot: NameSlot) -> bool:
         return False
     where = slot.prev in _YOU or slot.prev in _POLITE or (slot.opens and slot.written[:1].islower())
     return where and (slot.next_is_name or slot.next in _VERB_OBJECT_STARTS)
+
+
+# "does mark still have ...", "did ken get ...": the auxiliary that opens a question whose
+# subject comes next; "has bill got ...": "has" asking with "got"
+_DO_AUXILIARIES = frozenset({"does", "did", "doesnt", "didnt"})
+_HAS_AUXILIARIES = frozenset({"has", "hasnt"})
+
+
+def _question_subject(slot: NameSlot) -> bool:
+    """ "does mark still have his ruler?", "did ken get one?", "has bill got a charger?": a
+    name word right after the "does"/"did"/"has" that opens a question, before a bare verb
+    (an adverb such as "still" may come first), is the question's subject, a person: the
+    word ("a mark", "the ken") would need an article there, and "does mark" as a verb has
+    none. "does grace period apply" (a noun after it) is not."""
+    if slot.opens or not slot.prev_opens or slot.possessive or slot.next_after_pause:
+        return False
+    if slot.prev in _HAS_AUXILIARIES:
+        return slot.next == "got"
+    if slot.prev not in _DO_AUXILIARIES:
+        return False
+    verb = slot.after_next if _adverb_only(slot.next) else slot.next
+    return bool(verb) and _base_verb(verb)
+
+
+def _adverb_only(word: str) -> bool:
+    """Whether ``word`` is an adverb a question puts between its subject and verb ("does
+    she *still* have", "did he *already* send"), no verb of its own."""
+    return bool(word) and "ADV" in language.lemmas(word) and not _base_verb(word)
 
 
 def _presence_asked(slot: NameSlot) -> bool:

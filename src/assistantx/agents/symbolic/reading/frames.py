@@ -44,6 +44,7 @@ from assistantx.agents.symbolic.reading.directed_work import (
 )
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
+from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
 from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
 from assistantx.agents.symbolic.reading.original_back import (
@@ -56,6 +57,7 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.room_receiver import rooms_taken_to
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
+from assistantx.agents.symbolic.reading.said_owner import passed_over, pronoun_owner
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.source_not_recipient import taken_from
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
@@ -819,6 +821,8 @@ def named_items(lexed: Lexed, requester: str) -> tuple[NamedItem, ...]:
                 owner = requester
             elif before.kind == "person" and before.possessive and len(before.ids) == 1:
                 owner = before.ids[0]
+            else:  # "does Wang still have his stapler?": his, Wang's
+                owner = pronoun_owner(lexed, before, the_one_named(lexed, requester))
         owner = owner or _said_to_have(lexed, n)
         out.append((m.ids[0], owner))
     return tuple(out)
@@ -838,7 +842,8 @@ def _said_to_have(lexed: Lexed, at: int) -> str | None:
     before = prev_word(tokens, person.start)  # "could Mr K have": the title skipped
     if asked_to_have(before, [t.word for t in tokens[person.end : item.start]]):
         return None  # "could Nkechi have a stapler": she is to get one, not lend hers
-    between = [t.word for t in lexed.tokens[person.end : item.start]]
+    # "does Mark still have a ruler": the adverb says when, and is passed over
+    between = [t.word for t in lexed.tokens[person.end : item.start] if not passed_over(t.word)]
     if not between or between[0] not in _HAVE:
         return None
     if not all(w in _HAVE or w in _DETERMINERS for w in between):

@@ -130,7 +130,7 @@ from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judg
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
-from assistantx.agents.symbolic.reading.several_owners import with_owner
+from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
@@ -590,6 +590,10 @@ class InstructionParser:
             one = chosen_of_two(self.lex, text, frame.question or "", answer)
             if one is not None:  # "Who should get your pen: Wei Na or Wang Fang?" "Wang"
                 text, frame = one, self.parse(one, requester)
+                continue
+            unowned = unowned_mine(self.lex, frame.question or "", answer, requester)
+            if unowned is not None:  # "Whose lunch ...?" "Mine." from one with none: said
+                frame = TaskFrame(requester=requester, question=unowned)
                 continue
             owned = with_owner(self.lex, text, frame.question or "", answer)
             if owned is not None:  # "Several colleagues have a tray: whose ...?" "Bruno's"

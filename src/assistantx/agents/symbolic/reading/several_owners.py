@@ -128,9 +128,12 @@ def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | Non
     article = r"the" if asked is not None else r"the|an?|this|that|these|those"
     # the question says the type's name ("document"), the request may have said another of
     # its names ("this permit")
-    names = sorted(_names_of(lex, name), key=len, reverse=True)
+    names = sorted(_names_of(lex, name) | _said_as(lex, text, name), key=len, reverse=True)
     said_as = "|".join(re.escape(n) for n in names)
-    pattern = re.compile(rf"\b(?:{article})\s+(?:{said_as})\b", re.IGNORECASE)
+    # "take lunch to Chen" → "Whose lunch do you mean?": the frames ask whatever the thing
+    # was said with, so their answer fills a bare noun too; "the" alone for the several
+    opener = rf"(?:(?:{article})\s+)?" if whose is not None else rf"(?:{article})\s+"
+    pattern = re.compile(rf"\b{opener}(?:{said_as})\b", re.IGNORECASE)
     if pattern.search(text) is None:
         return None
     if len(people) == 1:
@@ -143,6 +146,32 @@ def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | Non
     if not people and words & _ANY:
         return pattern.sub(a_thing(name), text, count=1)  # "any will do": "take a tray ..."
     return None
+
+
+def _said_as(lex: Lexicon, text: str, name: str) -> set[str]:
+    """The words ``text`` said the item type called ``name`` with where the lexicon read them
+    as it without the office listing them ("paperwork" read as the requester's paper)."""
+    ids = {t.id for t in lex.office.item_types if t.name.lower() == name.lower()}
+    return {m.text for m in lex.read(text).mentions if m.kind == "item" and set(m.ids) & ids}
+
+
+def unowned_mine(lex: Lexicon, question: str, answer: str, requester: str) -> str | None:
+    """ "Whose lunch do you mean?" "Mine." from someone with no lunch: the question again,
+    saying so, never their own thing looked for where there is none; None where the answer
+    is no "mine" or they have one."""
+    whose = _WHOSE.match(question)
+    if whose is None:
+        return None
+    said = lex.read(answer)
+    words = {t.word for t in said.tokens}
+    own = any(m.kind == "self" for m in said.mentions)
+    if not own or words & _NOT or any(m.kind == "person" for m in said.mentions):
+        return None
+    name = whose.group("name")
+    ids = {t.id for t in lex.office.item_types if t.name.lower() == name.lower()}
+    if any(requester in lex.office.owners_of(i) for i in ids):
+        return None
+    return f"Whose {name} do you mean? As far as I know, you have no {name} of your own."
 
 
 def _names_of(lex: Lexicon, name: str) -> set[str]:

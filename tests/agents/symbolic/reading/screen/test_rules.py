@@ -27,6 +27,7 @@ def test_the_rules_in_priority_order() -> None:
         "thanks",
         "statement",  # how a question beside it is meant ("just curious", "no rush")
         "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
+        "statement",  # an event and its time after a request ("..., ground run in 10")
         "condition",
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")

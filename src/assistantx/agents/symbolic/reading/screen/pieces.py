@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.agents.symbolic.reading.screen.confirming_tag import confirming_tag
 from assistantx.agents.symbolic.reading.screen.english import phrases_pattern, split_words
 from assistantx.agents.symbolic.reading.screen.thing_then_need import need_after_thing
 from assistantx.agents.symbolic.reading.speech_acts import Acts
@@ -37,6 +38,8 @@ _TAG_PRONOUNS = frozenset({"he", "she", "they", "it", "we", "i", "you"})
 
 def tag_question(words: list[str]) -> bool:
     """Whether a sentence ends in a tag question after a statement of its own."""
+    if confirming_tag(words):  # "Zhang has scissors right?": the one-word tag
+        return True
     return len(words) > 3 and words[-2] in _TAG_AUXILIARIES and words[-1] in _TAG_PRONOUNS
 
 

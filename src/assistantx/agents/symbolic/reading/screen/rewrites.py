@@ -13,6 +13,7 @@ from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.elided_possessive import elided_item
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
+from assistantx.agents.symbolic.reading.screen.purpose_object import purpose_words
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -435,7 +436,13 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         return text, evidence
     verb = stem(match.group(1).lower())
     tail = match.group(2).split()
-    keep = 0
+
+    def declared(phrase: str) -> list[str]:
+        return [t.name for t in terms.office.item_types if phrase in map(purpose, t.purposes)]
+
+    # "something to check continuity with": the object of a declared purpose is part of it
+    said = purpose_words(declared, verb, tail)
+    keep = said
     while keep < len(tail) and tail[keep].lower() in terms.en.purpose_tail:
         keep += 1
     # "anything I can trim *this ribbon with*": the purpose's own object, up to its "with",
@@ -451,14 +458,9 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0
     )
-    following = tail[0].lower() if tail else ""
-
-    def declared(phrase: str) -> list[str]:
-        return [t.name for t in terms.office.item_types if phrase in map(purpose, t.purposes)]
-
-    # "to write on" (paper) before "to write" (pen, "to write with")
-    types = declared(f"{verb} {following}") if following else []
-    types = types or declared(verb)
+    # "to write on" (paper) before "to write" (pen, "to write with"); "to check continuity"
+    # (a multimeter) before "to check"
+    types = declared(" ".join([verb, *(w.lower() for w in tail[:said])]))
     if len(types) != 1:
         return text, evidence  # none or several: the parser asks which item
     name = types[0]

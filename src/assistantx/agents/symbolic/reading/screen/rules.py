@@ -55,6 +55,7 @@ from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
+from assistantx.agents.symbolic.reading.screen.timed_event import timed_event
 from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
@@ -93,6 +94,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("thanks", thanks),
     ("statement", curious),
     ("statement", asks_for_time),
+    # "..., ground run in 10": an event's name and its time after a request, never a
+    # service asked for (a modifier on a service's verb would decline it below)
+    ("statement", timed_event),
     ("condition", condition),
     ("negated", negated),
     ("destructive", unsafe),
