@@ -34,7 +34,8 @@ def _deliveries(text: str) -> list[tuple[str, str | None, str]]:
         ("could Dr N have a pen please", [("transfer", "pen", "nadia")]),
         ("Could Mr K borrow a pen", [("transfer", "pen", "kofi")]),
         ("Mr K could do with a coffee", [("produce", "coffee", "kofi")]),
-        ("Tam could do with a coffee", [("produce", "coffee", "tam")]),
+        # "Tam could do with a coffee" is Tam's need, restated and asked as "Tam needs a
+        # coffee" is: test_named_want
         ("get Mr K a tea", [("produce", "tea", "kofi")]),
         ("bring Dr N a pen", [("transfer", "pen", "nadia")]),
     ],

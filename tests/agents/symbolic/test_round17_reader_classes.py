@@ -230,7 +230,8 @@ async def test_the_pen_comes_from_robin_o_not_from_another_owner() -> None:
         ("Could Linh have a pair of scissors? He's cutting out name cards", "scissors", "linh"),
         ("can Linh borrow a hole punch?", "hole_punch", "linh"),
         ("let Linh have a hole punch", "hole_punch", "linh"),
-        ("Linh could do with a hole punch", "hole_punch", "linh"),
+        # "Linh could do with a hole punch" is Linh's need, restated and asked as "Linh needs
+        # a hole punch" is: test_named_want
         ("get Linh a hole punch please", "hole_punch", "linh"),
     ],
 )

@@ -85,6 +85,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
 from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
+from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
@@ -252,6 +253,8 @@ class InstructionParser:
         )
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
+        # "Zhang would like / 'd like / could use a stapler": Zhang wants one
+        text = named_wants(text, self._one_name)
         text = announced_list(text)  # "Two things: ...": the count names nothing
         text = wanting_idioms(text)  # "I'd murder a coffee": I need a coffee
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it

@@ -38,6 +38,7 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # every one of a kind colleagues own ("wipe all the drives")
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
         "unsupported",  # a place outside ("... to the applicant's house on Elm Road")
+        "unsupported",  # ordering from outside ("order us some sandwiches for the meeting")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")

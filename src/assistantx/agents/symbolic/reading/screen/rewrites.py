@@ -244,6 +244,22 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     # "to him" with the name put back by ``name_pronouns``)
     # ... and so is one followed by how long it is had ("borrow Zoe's for the afternoon"):
     # how long is no thing to get, so it is read away after a colleague's possessive
+    # "some of mine", "a few sheets of mine": "mine" after a quantity (and the word that
+    # counts it) is the requester's item of the kind named last, so the requester stays its
+    # owner ("some of my paper"); "a friend of mine" counts nothing and is left as said
+    def part(match: re.Match[str]) -> str:
+        thing = last_item(text[: match.start()], "mine")
+        if thing is None or _subject(text[match.end() :]):
+            return match.group(0)
+        many, noun = match.group("many"), match.group("noun")
+        if noun and not terms.names_at(noun):
+            many = f"{many} {noun}"  # "a few sheets": the word that counts it stays
+        # a counting word that names the item itself ("sheets" of paper) is said once
+        said = f"{many} my {thing}" if many.lower().endswith(" of") else f"{many} of my {thing}"
+        evidence.append(Evidence(words=match.group(0), meaning=said))
+        return said
+
+    text = _PART_OF_MINE.sub(part, text)
     spans = re.compile(rf"\b(\w+['’]s)\s+{_SPAN}\b(?!\s*['’]s)", re.IGNORECASE)
     text = spans.sub(
         lambda m: (
@@ -348,7 +364,13 @@ def name_pronouns(
 
     def named(match: re.Match[str]) -> str:
         word, gap, following = match.group(1).lower(), match.group(2), match.group(3)
-        possessive = word == "his" or (word == "her" and normalize(following) in terms.lex.items)
+        # "her stapler", and "at her desk": a place of hers (``place_words``) is hers too,
+        # so the one named receives there ("Gao is out of paper, drop some at her desk"),
+        # never "at Gao Min desk", a place nobody has
+        possessive = word == "his" or (
+            word == "her"
+            and (normalize(following) in terms.lex.items or following.lower() in _PLACE_WORDS)
+        )
         if others_before and not possessive:
             return match.group(0)
         return (f"{name}'s" if possessive else name) + gap + following
@@ -368,6 +390,13 @@ def name_pronouns(
 
 
 _BACK_PRONOUNS = frozenset({"him", "his", "her"})
+_PART_OF_MINE = re.compile(
+    r"\b(?P<many>(?:"
+    + "|".join(sorted(english.words("partitive_quantities"), key=len, reverse=True))
+    + r")(?:\s+of)?)(?:\s+(?P<noun>[a-z]+))?\s+of\s+mine\b",
+    re.IGNORECASE,
+)
+_PLACE_WORDS = english.words("place_words")
 # the facts said of a person that a pronoun may point back to
 _SAID_OF = frozenset({"availability", "location", "condition"})
 

@@ -31,6 +31,7 @@ from assistantx.agents.symbolic.reading.screen.need_to_know import need_to_know
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
+from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
@@ -108,6 +109,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unsupported", everyones),
     ("unsupported", break_in),
     ("unsupported", outside_place),
+    # "order us some sandwiches": buying from outside, never a colleague's thing fetched
+    ("unsupported", ordering),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     ("statement", elliptical_reason),

@@ -1,0 +1,68 @@
+"""A colleague's want said with a helping verb: "Zhang would like a stapler", "Zhang'd like a
+stapler", "Zhang could use a stapler", "Zhang could do with some tape" (``modal_wants``).
+
+Said of a name, each is that person's want, read as "Zhang needs a stapler": a third
+person's need, restated and asked before anything moves ("Shall I bring a stapler to Zhang
+Wei?"). Left as said, "would like" read as the speaker's own wish (a stapler fetched for the
+speaker), "Zhang'd" was taken for an unknown name, and "could use" for request wording (the
+stapler brought at once). The want is read only before what is wanted (an article or a
+possessive): "Zhang would like you to print it" and "Zhang would like to know" are read as
+before. Asked of a name ("would Zhang like a stapler?") it is the same want put as a question:
+read as "Zhang needs a stapler?", restated and asked, never the speaker's borrowing of
+Zhang's stapler ("would you like ...", naming nobody, is left as said)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from assistantx.core import english
+
+
+def _alternatives(key: str) -> str:
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+# what is wanted opens with a determiner or a possessive ("a stapler", "some of my tape")
+_WANTED = r"(?:a|an|the|some|one|another|any|more|his|her|their|my|your|our)\b"
+# "Zhang'd like": the "'d" after a name is "would" (the speaker's "I'd" is left as said)
+_WOULD = re.compile(r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)['’]d\b", re.IGNORECASE)
+_WANTING = re.compile(
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:" + _alternatives("modal_wants") + r")"
+    r"(?=\s+" + _WANTED + ")",
+    re.IGNORECASE,
+)
+# "would Zhang like a stapler?": the helping verb before the name that wants
+_ASKED = re.compile(
+    r"\bwould\s+(?P<who>[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:like|love)(?=\s+" + _WANTED + ")",
+    re.IGNORECASE,
+)
+
+
+def named_wants(text: str, is_person: Callable[[str], bool]) -> str:
+    """``text`` with each colleague's want said with a helping verb read as "<name> needs"
+    (``is_person``: whether the words are one colleague's name)."""
+
+    def said(match: re.Match[str]) -> str:
+        said_who = match.group("who")
+        words = said_who.split()
+        # "Professor Zhang", "Liu Yang": the longest tail of the words before the want that
+        # is one colleague's name; "I would like ..." names nobody and is left as said
+        tails = (" ".join(words[k:]) for k in range(len(words)))
+        who = next((t for t in tails if is_person(t)), None)
+        if who is None:
+            return match.group(0)
+        return f"{said_who} needs"
+
+    def asked(match: re.Match[str]) -> str:
+        who = match.group("who")
+        return f"{who} needs" if is_person(who) else match.group(0)
+
+    def would(match: re.Match[str]) -> str:
+        said_who = match.group("who")
+        words = said_who.split()
+        named = any(is_person(" ".join(words[k:])) for k in range(len(words)))
+        return f"{said_who} would" if named else match.group(0)
+
+    return _ASKED.sub(asked, _WANTING.sub(said, _WOULD.sub(would, text)))
