@@ -65,7 +65,10 @@ def sent_off(
             operation = taking[0] if len(taking) == 1 else None
         if operation is None:
             continue
-        others = [n for n in range(len(tokens)) if n != k]
+        # the verb is this "send": an earlier one is no verb of it ("send ... send"); the
+        # office's own names stay names, so an address's parts after its comma ("Café Lune,
+        # 12 Mill Street") are read as the place's, never as a colleague
+        others = {*names, *(n for n in range(k) if words[n] == word)}
         return find_outside(tokens, gaps, [VerbPhrase(operation, frozenset({word}), ())], others)
     return None
 

@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
+from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.agents.symbolic.reading.thing_state import state_told
@@ -509,7 +510,8 @@ class SpeechActs:
 
     def wish(self, words: list[str]) -> bool:
         """A wish or prohibition about other people's conduct: nothing to fetch."""
-        w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
+        # "nobody's to use ...": "nobody is to use ...", not a possessive
+        w = with_is(content([x for x in words if x not in ("please", "pls", "plz", "kindly")]))
         for n in range(len(w)):
             if any(_starts(w, p, n) for p in _NOBODY):
                 return True  # "nobody take my mug", "make sure no one uses ..."

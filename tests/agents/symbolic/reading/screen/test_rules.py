@@ -31,6 +31,7 @@ def test_the_rules_in_priority_order() -> None:
         "condition",
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
+        "statement",  # what the speaker will do with the thing asked for ("..., need to eat it")
         "destructive",
         "unsupported",  # a send to an account outside ("to my personal gmail")
         "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")

@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
 from assistantx.agents.symbolic.reading.screen.owned_head import owned_head
+from assistantx.agents.symbolic.reading.screen.person_is import person_is
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import named_subject
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
@@ -58,6 +59,7 @@ class RequestScreen:
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
+        text, person = person_is(terms, text, requester)  # "Gao's busy and needs ...": is
         text, subject = named_subject(terms, text, requester)  # "Rose is wet, she needs ..."
         text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
         text, owned = owned_head(terms, text, requester)  # "my lamp": my inspection lamp
@@ -77,6 +79,7 @@ class RequestScreen:
             *intro,
             *idioms,
             *later,
+            *person,
             *subject,
             *heads,
             *owned,

@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.screen.outside_place import outside_plac
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
+from assistantx.agents.symbolic.reading.screen.own_use import own_use
 from assistantx.agents.symbolic.reading.screen.owned_head import several_owned_heads
 from assistantx.agents.symbolic.reading.screen.past_event import past_event
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -101,6 +102,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("condition", condition),
     ("negated", negated),
     ("destructive", unsafe),
+    # "..., need to eat it": what the speaker will do with the thing, before its verb is
+    # read as a doing asked of me
+    ("statement", own_use),
     ("destructive", destructive),
     ("unsupported", outside_account),
     ("unsupported", absent_owner),
