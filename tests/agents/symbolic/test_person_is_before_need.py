@@ -40,6 +40,10 @@ def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str | None, str | No
             ("transfer", "stapler", "mao", "gao"),
         ),
         (
+            "Gao's doing slides and needs a stapler, take her mine",
+            ("transfer", "stapler", "mao", "gao"),
+        ),
+        (
             "Gao's swamped and really needs scissors, bring her mine",
             ("transfer", "scissors", "mao", "gao"),
         ),
@@ -69,6 +73,10 @@ def test_the_need_is_the_colleagues_on_the_default_office(
         (
             "Mark's working on the mailout and needs tape, take him mine",
             ("transfer", "tape", "may", "mark"),
+        ),
+        (
+            "Mark's sorting invoices and needs a ruler, take him Grace's",
+            ("transfer", "ruler", "grace", "mark"),
         ),
         (
             "Rose's with a client and wants a calculator, bring her Mark's",

@@ -47,7 +47,7 @@ def person_is(terms: Terms, text: str, requester: str) -> tuple[str, list[Eviden
         if not _colleague(terms, subject, requester) or not _need_joined(clause[2:]):
             return match.group(0)
         state, after = clause[1], clause[2] if len(clause) > 2 else None
-        if not _says_is(terms, state, after):
+        if not (_says_is(terms, state, after) or _doing_before_need(state, clause[2:])):
             return match.group(0)
         found.append(Evidence(words=match.group(0), meaning=f"{subject} is {state}"))
         return f"{subject} is {match.group('state')}"
@@ -90,6 +90,15 @@ def _says_is(terms: Terms, state: str, after: str | None) -> bool:
         return True  # "Gao's busy"
     # "Gao's swamped", "Gao's tied up": a past participle
     return any(lemma != state for lemma in read.get("VERB", ()))
+
+
+def _doing_before_need(state: str, rest: list[str]) -> bool:
+    """ "Gao's doing slides and needs ...": a present participle and its bare object, then
+    "and" with no finite verb between. A possessive's noun phrase ("Gao's charging cable")
+    would be a subject with no verb of its own before the need, so the "'s" is the verb."""
+    if not language.is_present_participle(state) or "and" not in rest:
+        return False
+    return not set(rest[: rest.index("and")]) & _FINITE
 
 
 def _noun_like(terms: Terms, word: str) -> bool:
