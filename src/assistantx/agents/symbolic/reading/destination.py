@@ -275,6 +275,7 @@ def _address_tail(
         and not any(t.word == "at" for t in so_far[1:])
         and not _proper_name(so_far)
         and not _role_named(tokens, gaps, start, end)
+        and not _street_line(tokens[end : end + 2])
     ):
         return end
     words = [t.word for t in tokens]
@@ -302,6 +303,13 @@ def _address_tail(
     if all(_place_word(t) for t in part):
         return k
     return end
+
+
+def _street_line(first: Sequence[Token]) -> bool:
+    """Whether the words after a comma open a street address, a house number and then a
+    capitalised name ("Channel Nine legal, 12 Harbour Road"): the place before it may be
+    said in lower case, and still the address goes on."""
+    return len(first) == 2 and first[0].text.isdigit() and first[1].text[:1].isupper()
 
 
 def _a_person(tokens: Sequence[Token], n: int, stop: int, names: Collection[int]) -> bool:
