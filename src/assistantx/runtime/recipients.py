@@ -47,6 +47,7 @@ from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
+from assistantx.core.needed_instead import needs_the_thing
 from assistantx.core.occasion_noun import occasion_noun
 from assistantx.core.office import Office
 from assistantx.core.ports.messenger import ChatRef
@@ -265,9 +266,12 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
 def _said_alone_as_fix(words: list[_Word], n: int) -> bool:
     """ "to sam. sorry not sam, robin": a name word said alone as a correction, at its
     sentence's end, is the person (the reader reads it so, ``screen.correction``): a
-    correction replaces what was just said, and a bird is nothing it could replace."""
+    correction replaces what was just said, and a bird is nothing it could replace. So is
+    one said as the subject of the correction's need of the thing ("no wait, will needs it"),
+    as the reader takes it (``core.needed_instead``)."""
     if n + 1 < len(words) and not words[n + 1].opens:
-        return False
+        if not needs_the_thing(_clause_after(words, n + 1)):
+            return False
     at = n - 2 if n >= 2 and words[n - 2].folded == "not" else n  # "not sam, robin"
     said = tuple(w.folded for w in words[:at])
     return any(said[len(said) - len(mark) :] == mark for mark in _CORRECTION_MARKS)
@@ -384,14 +388,27 @@ def _corrects(words: list[_Word], mentions: list[_Mention], k: int) -> bool:
     one stood, so after a receiver it receives."""
     at, end = mentions[k].start, mentions[k].end
     after = words[end].folded if end < len(words) else ""
-    if after in _SUBJECT_AFTER or language.is_finite_verb(after):
-        return False  # "... sorry, Dawn has it": Dawn is the subject of news, no receiver
+    clause = _clause_after(words, end)
+    if (after in _SUBJECT_AFTER or language.is_finite_verb(after)) and not needs_the_thing(clause):
+        # "... sorry, Dawn has it": Dawn is the subject of news, no receiver; "..., no wait,
+        # Dawn needs it first" names who it goes to instead (the reader's correction)
+        return False
     before = mentions[k - 1] if k >= 1 else None
     if before is not None and before.end == at and before.start >= 1:
         if words[before.start - 1].folded == "not":
             at = before.start - 1  # the name refused, then the one meant
     said = tuple(w.folded for w in words[:at])
     return any(said[len(said) - len(mark) :] == mark for mark in _CORRECTION_MARKS if mark)
+
+
+def _clause_after(words: list[_Word], end: int) -> list[str]:
+    """The words from ``end`` to the next pause or sentence end."""
+    out: list[str] = []
+    for w in words[end:]:
+        if out and (w.opens or w.after_pause):
+            break
+        out.append(w.folded)
+    return out
 
 
 def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:

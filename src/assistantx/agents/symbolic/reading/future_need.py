@@ -19,6 +19,8 @@ from assistantx.core import english
 
 _FUTURE_FORMS = tuple(tuple(p.split()) for p in english.entries("future_forms"))
 _NOW = tuple(tuple(p.split()) for p in english.entries("now_words"))
+# the times after now ("tonight", "later on"), the longest said first
+_LATER = sorted((tuple(p.split()) for p in english.entries("later_times")), key=len, reverse=True)
 _JOINERS = english.words("clause_joiners")
 _CLOCK = english.words("clock_words")
 _SPAN_WORDS = english.words("span_words")
@@ -66,10 +68,18 @@ def without_events(words: list[str]) -> list[str]:
     """``words`` without each event a thing is said to be for ("for the review at 2", "for my
     3pm call", up to the next clause's joiner): the event's time says by when the thing is
     needed, so it is needed now, never that it can wait. A span ("for the afternoon", "for an
-    hour") is how long the thing is had, not an event: it and its time are kept."""
+    hour") is how long the thing is had, not an event: it and its time are kept. A time said
+    right after "for" ("a stapler I can borrow for tonight", "for later") is the time it is
+    used, as an event's is: had by then, so now; said without "for" ("bring me one tonight")
+    it is when the thing is wanted, and kept."""
     out: list[str] = []
     n = 0
     while n < len(words):
+        if words[n] == "for":
+            use = next((p for p in _LATER if tuple(words[n + 1 : n + 1 + len(p)]) == p), None)
+            if use is not None:
+                n += 1 + len(use)
+                continue
         if (
             words[n] == "for"
             and words[n + 1 : n + 2] in _EVENT_OPENERS

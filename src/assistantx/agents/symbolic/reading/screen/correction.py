@@ -10,6 +10,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
+from assistantx.core.needed_instead import needer_end
 from assistantx.core.task_schema import Evidence
 
 # "sorry, I meant ...", "no wait, ...", "on second thoughts, ...", "..., no, a pen", "I mean
@@ -182,6 +183,10 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     cut = next((k for k, t in enumerate(tokens) if t.word == "not" and k), len(tokens))
     tokens, rejected = tokens[:cut], [*refused, *tokens[cut:]]
     tokens, source = _source_kept(tokens, fix)
+    needer = needer_end([t.word for t in tokens])
+    if needer is not None:
+        # "no wait, Zhang needs it first": who needs the thing is who it goes to instead
+        tokens = tokens[:needer]
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
