@@ -70,6 +70,9 @@ _PLACE_PREPOSITIONS = english.words("to_facility_prepositions") | english.words(
     "from_facility_prepositions"
 )
 _LOCATION_PREPOSITIONS = english.words("location_prepositions")
+# Where a thing is wanted may also be a surface or a floor of a room ("paper on the studio
+# floor", "on the deck"): said of a facility nobody's service is asked of, "on" names a place
+_WANTED_AT = _LOCATION_PREPOSITIONS | {"on"}
 _TITLE_WORDS = frozenset({"dr", "mr", "mrs", "ms", "prof", "professor", "doctor"})
 # The question when a send-out service's destination is a place or group of the office; the
 # answer names the place outside instead (``InstructionParser.parse_with_answers``).
@@ -418,7 +421,7 @@ def _where_an_item_is_wanted(tokens: Sequence[Token], mentions: Sequence[Mention
     taken_from = before == "from" or (
         before == "of" and start >= 2 and tokens[start - 2].word == "out"
     )
-    if before not in _LOCATION_PREPOSITIONS and not taken_from:
+    if before not in _WANTED_AT and not taken_from:
         return False
     return any(m.kind == "item" for i, m in enumerate(mentions) if i != n)
 

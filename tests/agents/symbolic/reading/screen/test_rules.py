@@ -57,6 +57,8 @@ def test_the_rules_in_priority_order() -> None:
         "statement",
         "statement",  # something on a thing, verbless ("oil on the stapler again")
         "statement",  # where an item is ("fyi the tape's in the cupboard")
+        "statement",  # where it is not, beside a where-question ("where's X? not on his desk")
+        "statement",  # an obligation on nobody named ("someone should ring the engineer")
         "statement",  # told for information beside a tag ("..., just so you know")
         "statement",  # a told sentence before a request that names its own thing
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")

@@ -53,7 +53,9 @@ from assistantx.agents.symbolic.reading.screen.purpose import (
 )
 from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.recipients_reason import recipients_reason
+from assistantx.agents.symbolic.reading.screen.ruled_out_place import ruled_out_place
 from assistantx.agents.symbolic.reading.screen.service import unsupported
+from assistantx.agents.symbolic.reading.screen.someones_job import someones_job
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
@@ -132,6 +134,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", statement),
     ("statement", on_a_thing),  # "oil on the stapler again": told of the thing, not asked
     ("statement", whereabouts),
+    ("statement", ruled_out_place),  # "where's X? not on his desk": where it was not
+    ("statement", someones_job),  # "someone's gonna have to ring the engineer": a remark
     ("statement", fyi),  # after the statements that say more ("Thanks for telling me ...")
     ("statement", preamble),  # a told sentence no rule above read, before a request
     ("which", several_kept),
