@@ -61,3 +61,38 @@ def default_office_that_scans(
     printer["operations"].append(op_id)
     printer["products"].append(product)
     return parse_office(raw)
+
+
+@functools.cache
+def default_office_that_sends_out(op_id: str, name: str, verb: str, asked: str) -> Office:
+    """The default office whose printer room also sends a document out of the office (a
+    fax, a courier, a dispatch): ``name`` and ``verb`` are the operation's words, ``asked``
+    what its operator needs to know ("the fax number")."""
+    raw: dict[str, Any] = yaml.safe_load(DEFAULT_FILE.read_text())
+    raw["operations"].append(
+        {
+            "id": op_id,
+            "name": name,
+            "verbs": [verb],
+            "input": "document",
+            "sends_out": True,
+            "destination_asked": asked,
+        }
+    )
+    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
+    printer["operations"].append(op_id)
+    return parse_office(raw)
+
+
+@functools.cache
+def harbour_that_posts() -> Office:
+    """Harbour whose franking machine takes a document and posts it out."""
+    raw: dict[str, Any] = yaml.safe_load(HARBOUR_FILE.read_text())
+    frank = next(o for o in raw["operations"] if o["id"] == "frank")
+    del frank["product"]
+    frank.update(
+        {"input": "document", "sends_out": True, "destination_asked": "the postal address"}
+    )
+    machine = next(f for f in raw["facilities"] if f["id"] == "franking_machine")
+    machine["products"] = []
+    return parse_office(raw)

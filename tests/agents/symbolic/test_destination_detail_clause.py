@@ -13,52 +13,20 @@ document out (its "frank"/"post" verbs, "the postal address" asked)."""
 
 from __future__ import annotations
 
-import functools
-from typing import Any
-
 import pytest
-import yaml
 
-from assistantx.core.office import Office, parse_office
+from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
-from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+from helpers.dataset_offices import default_office_that_sends_out, harbour_that_posts
 from helpers.reading import frame_reader
 
 
-@functools.cache
 def _default_with_a_fax() -> Office:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_FILE.read_text())
-    raw["operations"].append(
-        {
-            "id": "fax",
-            "name": "fax",
-            "verbs": ["fax"],
-            "input": "document",
-            "sends_out": True,
-            "destination_asked": "the fax number",
-        }
-    )
-    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
-    printer["operations"].append("fax")
-    return parse_office(raw)
-
-
-@functools.cache
-def _harbour_that_posts() -> Office:
-    """Harbour whose franking machine takes a document and posts it out."""
-    raw: dict[str, Any] = yaml.safe_load(HARBOUR_FILE.read_text())
-    frank = next(o for o in raw["operations"] if o["id"] == "frank")
-    del frank["product"]
-    frank.update(
-        {"input": "document", "sends_out": True, "destination_asked": "the postal address"}
-    )
-    machine = next(f for f in raw["facilities"] if f["id"] == "franking_machine")
-    machine["products"] = []
-    return parse_office(raw)
+    return default_office_that_sends_out("fax", "fax", "fax", "the fax number")
 
 
 _fax = frame_reader(_default_with_a_fax, "mao")
-_post = frame_reader(_harbour_that_posts, "may")
+_post = frame_reader(harbour_that_posts, "may")
 
 
 def _sent(frame: TaskFrame) -> list[tuple[str | None, str | None]]:

@@ -8,54 +8,26 @@ as it does after the service's own verb. ", thanks" and a clause of its own are 
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
 import pytest
-import yaml
 
-from assistantx.core.office import Office, parse_office
+from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
-from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+from helpers.dataset_offices import default_office_that_sends_out, harbour_that_posts
 from helpers.reading import frame_reader
 
 
-@functools.cache
 def _default_that_dispatches() -> Office:
     """The default office whose printer room dispatches a document by courier, asked for as
     "send out" (so "send ... out" is read in plain English)."""
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_FILE.read_text())
-    raw["operations"].append(
-        {
-            "id": "courier",
-            "name": "dispatch",
-            "verbs": ["send out"],
-            "input": "document",
-            "sends_out": True,
-            "destination_asked": "the name and address of the place",
-        }
+    return default_office_that_sends_out(
+        "courier", "dispatch", "send out", "the name and address of the place"
     )
-    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
-    printer["operations"].append("courier")
-    return parse_office(raw)
-
-
-@functools.cache
-def _harbour_that_posts() -> Office:
-    """Harbour whose franking machine takes a document and posts it out."""
-    raw: dict[str, Any] = yaml.safe_load(HARBOUR_FILE.read_text())
-    frank = next(o for o in raw["operations"] if o["id"] == "frank")
-    del frank["product"]
-    frank.update(
-        {"input": "document", "sends_out": True, "destination_asked": "the postal address"}
-    )
-    machine = next(f for f in raw["facilities"] if f["id"] == "franking_machine")
-    machine["products"] = []
-    return parse_office(raw)
 
 
 _dispatch = frame_reader(_default_that_dispatches, "mao")
-_post = frame_reader(_harbour_that_posts, "may")
+_post = frame_reader(harbour_that_posts, "may")
 
 
 def _sent(frame: TaskFrame) -> list[tuple[str | None, str | None]]:

@@ -7,34 +7,18 @@ are still no part of the place."""
 
 from __future__ import annotations
 
-import functools
-from typing import Any
-
 import pytest
-import yaml
 
-from assistantx.core.office import Office, parse_office
-from helpers.dataset_offices import DEFAULT_FILE
+from assistantx.core.office import Office
+from helpers.dataset_offices import default_office_that_sends_out
 from helpers.reading import frame_reader
 
 
-@functools.cache
 def _default_that_couriers() -> Office:
     """The default office whose printer room couriers a document out."""
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_FILE.read_text())
-    raw["operations"].append(
-        {
-            "id": "courier",
-            "name": "courier",
-            "verbs": ["courier"],
-            "input": "document",
-            "sends_out": True,
-            "destination_asked": "the name and address of the place",
-        }
+    return default_office_that_sends_out(
+        "courier", "courier", "courier", "the name and address of the place"
     )
-    printer = next(f for f in raw["facilities"] if f["id"] == "printer")
-    printer["operations"].append("courier")
-    return parse_office(raw)
 
 
 _read = frame_reader(_default_that_couriers, "mao")

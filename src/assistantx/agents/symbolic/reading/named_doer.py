@@ -17,8 +17,8 @@ printed") is whom it is for, never the doer: only the modal's subject is read he
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.agents.symbolic.reading.named_maker import done_by_keeper_or_asked
 from assistantx.core import english
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import Task, TaskFrame, operation_of
@@ -71,15 +71,6 @@ def with_named_doer(
     facilities = _offering(office, services[0])
     if not facilities:
         return frame  # offered by no facility of the office: read (and declined) as it was
-    if any(doer in f.guards for f in facilities):
-        tasks = [t.model_copy(update={"actor": doer}) if t in services else t for t in frame.tasks]
-        return frame.model_copy(update={"tasks": tasks})
-    if confirmed:
-        return frame  # "Shall I print it for you?" "Yes": done by the keepers
-    who = office.person(doer).name
-    where = " or the ".join(dict.fromkeys(f.name for f in facilities))
-    what = " and ".join(describe(t, office, requester) for t in frame.tasks)
-    return TaskFrame(
-        requester=requester,
-        question=f"{who} doesn't look after the {where}. Shall I {what}?",
+    return done_by_keeper_or_asked(
+        frame, office, requester, doer, facilities, services, confirmed=confirmed
     )

@@ -94,12 +94,33 @@ def with_named_maker(
     facilities = _makers_of(office, item)
     if not facilities:
         return frame  # made by no machine of the office: read as it was
-    if any(maker in f.guards for f in facilities):
-        tasks = [t.model_copy(update={"actor": maker}) if t in made else t for t in frame.tasks]
+    return done_by_keeper_or_asked(
+        frame, office, requester, maker, facilities, made, confirmed=confirmed
+    )
+
+
+def done_by_keeper_or_asked(
+    frame: TaskFrame,
+    office: Office,
+    requester: str,
+    colleague: str,
+    facilities: Sequence[Facility],
+    asked_of: Sequence[Task],
+    *,
+    confirmed: bool,
+) -> TaskFrame:
+    """The tasks ``asked_of`` the colleague done by them where they keep one of
+    ``facilities``; where they keep none, the question that says so and offers to do it
+    anyway (unless ``confirmed``: the requester said yes, and the keepers do it). Shared by
+    the maker asked to make a thing and the colleague asked to run a service."""
+    if any(colleague in f.guards for f in facilities):
+        tasks = [
+            t.model_copy(update={"actor": colleague}) if t in asked_of else t for t in frame.tasks
+        ]
         return frame.model_copy(update={"tasks": tasks})
     if confirmed:
-        return frame  # "Shall I make it for you?" "Yes": made with the keepers
-    who = office.person(maker).name
+        return frame  # "Shall I make it for you?" "Yes": done by the keepers
+    who = office.person(colleague).name
     where = " or the ".join(dict.fromkeys(f.name for f in facilities))
     what = " and ".join(describe(t, office, requester) for t in frame.tasks)
     return TaskFrame(
