@@ -3,8 +3,11 @@
 Which word of a full name is the family name is the office's own data: where it writes a
 title before a name in an alias ("Dr. Zhang" of Zhang Wei, "Professor Kowalski" of Art
 Kowalski), the word after the title is the first or the last word of that person's full
-name, and the office writes its names in that order throughout (family name first, or
-last). An office that declares no titled alias is read the English way: the family name last.
+name, and the office writes its names in that order (family name first, or last). A
+person's own alias with a title or a rank before one word of their name ("Inspector Morgan"
+of Priya Morgan) says their own order, whatever the office's: one "Ms Nguyễn" makes an office
+of English names family-first, but not Priya Morgan. An office that declares no titled
+alias is read the English way: the family name last.
 
 A name word that is one person's family name and another's given name ("Yang": Yang Lei's
 family name, Liu Yang's given name) means, after a title, the one whose family name it is;
@@ -13,7 +16,7 @@ bare, it is still asked about.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 from assistantx.core import language
 from assistantx.core.office import Office
@@ -44,13 +47,34 @@ def family_first(office: Office) -> bool:
 def family_names(office: Office, key: Callable[[str], str]) -> dict[str, set[str]]:
     """The family name of each person of several name words, by ``key`` (the lexicon's
     lookup key) → the people whose family name it is."""
-    at = 0 if family_first(office) else -1
+    office_at = 0 if family_first(office) else -1
     found: dict[str, set[str]] = {}
     for p in office.people:
         words = p.name.split()
-        if len(words) > 1 and (k := key(words[at])):
+        if len(words) < 2:
+            continue
+        at = _own_order(p.name, p.aliases)
+        if k := key(words[office_at if at is None else at]):
             found.setdefault(k, set()).add(p.id)
     return found
+
+
+def _own_order(name: str, aliases: Sequence[str]) -> int | None:
+    """Where a person's own alias of a title or rank and one word of their name puts their
+    family name ("Inspector Morgan" of Priya Morgan: -1, "Manager Mao" of Mao Jun: 0); None
+    when no alias of theirs says."""
+    words = _words(name)
+    if len(words) < 2:
+        return None
+    for alias in aliases:
+        said = _words(alias)
+        if len(said) != 2 or said[0] in words or said[0] in ("a", "an", "the", "our"):
+            continue
+        if said[1] == words[0]:
+            return 0
+        if said[1] == words[-1]:
+            return -1
+    return None
 
 
 def after_title(prev: str) -> bool:
