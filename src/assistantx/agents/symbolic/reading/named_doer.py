@@ -18,7 +18,10 @@ printed") is whom it is for, never the doer: only the modal's subject is read he
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
-from assistantx.agents.symbolic.reading.named_maker import done_by_keeper_or_asked
+from assistantx.agents.symbolic.reading.named_maker import (
+    asked_colleagues,
+    done_by_keeper_or_asked,
+)
 from assistantx.core import english
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import Task, TaskFrame, operation_of
@@ -27,18 +30,13 @@ _REQUEST_MODALS = english.words("request_modals")
 
 
 def _asked_to_do(whole: Lexed, requester: str, kind: str) -> set[str]:
-    """The colleagues the message asks to do work of ``kind``: a person named right after a
-    request's modal, the work's own verb right after the name."""
-    tokens = whole.tokens
-    found: set[str] = set()
-    for m in whole.mentions:
-        if m.kind != "person" or len(m.ids) != 1 or m.possessive or m.id == requester:
-            continue
-        if m.start == 0 or tokens[m.start - 1].word not in _REQUEST_MODALS:
-            continue
-        if any(c.kind == "cue" and c.start == m.end and kind in c.ids for c in whole.mentions):
-            found.add(m.id)
-    return found
+    """The colleagues the message asks to do work of ``kind``: the work's own verb right
+    after the name."""
+
+    def doing(at: int) -> bool:
+        return any(c.kind == "cue" and c.start == at and kind in c.ids for c in whole.mentions)
+
+    return asked_colleagues(whole, requester, doing)
 
 
 def _services(office: Office, tasks: list[Task]) -> list[Task]:

@@ -17,7 +17,7 @@ the verb ("can you make Gao one") is whom it is for, never the maker.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from assistantx.agents.symbolic.planning import describe
 from assistantx.agents.symbolic.reading.lexicon import Lexed
@@ -47,9 +47,10 @@ def _makes_it(whole: Lexed, at: int, item: str) -> bool:
     return any(m.start == k and m.kind == "item" and m.ids == (item,) for m in whole.mentions)
 
 
-def _asked_to_make(whole: Lexed, requester: str, item: str) -> set[str]:
-    """The colleagues the message asks to make ``item``: a person named right after a
-    request's modal, a verb of making right after the name, the thing its object."""
+def asked_colleagues(whole: Lexed, requester: str, work_at: Callable[[int], bool]) -> set[str]:
+    """The colleagues the message asks to do some work: a person (not the requester) named
+    right after a request's modal ("could Wang ..."), ``work_at`` true of the word right
+    after the name (the work's verb)."""
     tokens = whole.tokens
     found: set[str] = set()
     for m in whole.mentions:
@@ -57,10 +58,20 @@ def _asked_to_make(whole: Lexed, requester: str, item: str) -> set[str]:
             continue
         if m.start == 0 or tokens[m.start - 1].word not in _REQUEST_MODALS:
             continue
-        if m.end < len(tokens) and tokens[m.end].word in _MAKING:
-            if _makes_it(whole, m.end, item):
-                found.add(m.id)
+        if work_at(m.end):
+            found.add(m.id)
     return found
+
+
+def _asked_to_make(whole: Lexed, requester: str, item: str) -> set[str]:
+    """The colleagues the message asks to make ``item``: a verb of making right after the
+    name, the thing its object."""
+    tokens = whole.tokens
+
+    def making(at: int) -> bool:
+        return at < len(tokens) and tokens[at].word in _MAKING and _makes_it(whole, at, item)
+
+    return asked_colleagues(whole, requester, making)
 
 
 def _makers_of(office: Office, item: str) -> list[Facility]:

@@ -28,20 +28,30 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         words = words[1:]
     if wish:  # "I'd like to look under the boiler": a plan of one's own, as "want to"
         words = ["want", *words[2 if words[:1] == ["would"] else 1 :]]
-    if not words or words[0] not in _OWN_PLAN:
-        return None
-    rest = words[1:]
-    while rest and rest[0] in _BETWEEN:
-        rest = rest[1:]
-    if words[0] != "gotta":
-        if rest[:1] != ["to"]:
-            return None  # "I need you to scan ...": asked of someone, read on
-        rest = rest[1:]
+    rest = after_plan(words, _OWN_PLAN, _BETWEEN)
     if not rest or terms.request_verb(rest, 0) or rest[0] in terms.service_verbs:
         return None  # "need to get my shoot printed": an errand asked
     if rest[0] in terms.lex.items or rest[0] in terms.office_words:
         return None
     return Finding("statement", piece, "the speaker's own doing, context only")
+
+
+def after_plan(
+    words: list[str], plans: frozenset[str], between: frozenset[str]
+) -> list[str] | None:
+    """The words after a plan's "need to" / "have to" / "gotta" (``plans``, with any of
+    ``between`` before its "to"): "need to check the contacts" → "check the contacts"; None
+    where the words open with no plan, or the plan is asked of someone ("I need you to ...")."""
+    if not words or words[0] not in plans:
+        return None
+    rest = words[1:]
+    while rest and rest[0] in between:
+        rest = rest[1:]
+    if words[0] != "gotta":
+        if rest[:1] != ["to"]:
+            return None  # "I need you to scan ...": asked of someone, read on
+        rest = rest[1:]
+    return rest
 
 
 def _asks_for_a_thing(piece: Piece) -> bool:

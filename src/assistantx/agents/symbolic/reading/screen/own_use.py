@@ -13,6 +13,7 @@ request takes from a colleague ("grab Wang's lunch, need to eat it": the taking 
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.own_doing import after_plan
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -47,16 +48,8 @@ def _own_verb(words: list[str]) -> str | None:
     """The verb of "[I] need to <verb> it/them ...", else None."""
     if words[:1] and words[0] in _SPEAKER:
         words = words[1:]
-    if not words or words[0] not in _PLAN:
-        return None
-    rest = words[1:]
-    while rest and rest[0] in _BETWEEN:
-        rest = rest[1:]
-    if words[0] != "gotta":
-        if rest[:1] != ["to"]:
-            return None  # "I need you to ...": asked of someone, read on
-        rest = rest[1:]
-    if len(rest) < 2 or rest[1] not in _THE_THING:
+    rest = after_plan(words, _PLAN, _BETWEEN)
+    if rest is None or len(rest) < 2 or rest[1] not in _THE_THING:
         return None  # "need to eat my lunch": the thing named anew, read on
     return rest[0]
 
