@@ -16,20 +16,14 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from assistantx.core import english
-
-
-def _alternatives(key: str) -> str:
-    phrases = sorted(english.entries(key), key=len, reverse=True)
-    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
-
+from assistantx.agents.symbolic.reading.reported_request import named_tail, phrase_alternatives
 
 # what is wanted opens with a determiner or a possessive ("a stapler", "some of my tape")
 _WANTED = r"(?:a|an|the|some|one|another|any|more|his|her|their|my|your|our)\b"
 # "Zhang'd like": the "'d" after a name is "would" (the speaker's "I'd" is left as said)
 _WOULD = re.compile(r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)['’]d\b", re.IGNORECASE)
 _WANTING = re.compile(
-    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:" + _alternatives("modal_wants") + r")"
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:" + phrase_alternatives("modal_wants") + r")"
     r"(?=\s+" + _WANTED + ")",
     re.IGNORECASE,
 )
@@ -46,12 +40,8 @@ def named_wants(text: str, is_person: Callable[[str], bool]) -> str:
 
     def said(match: re.Match[str]) -> str:
         said_who = match.group("who")
-        words = said_who.split()
-        # "Professor Zhang", "Liu Yang": the longest tail of the words before the want that
-        # is one colleague's name; "I would like ..." names nobody and is left as said
-        tails = (" ".join(words[k:]) for k in range(len(words)))
-        who = next((t for t in tails if is_person(t)), None)
-        if who is None:
+        # "I would like ..." names nobody and is left as said
+        if named_tail(said_who, is_person) is None:
             return match.group(0)
         return f"{said_who} needs"
 

@@ -13,14 +13,18 @@ from collections.abc import Callable
 from assistantx.core import english
 
 
-def _alternatives(key: str) -> str:
+def phrase_alternatives(key: str) -> str:
+    """A regex alternation of the phrases of english.yaml's list ``key``, longest first,
+    any run of spaces between their words."""
     phrases = sorted(english.entries(key), key=len, reverse=True)
     return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
 
 
 _REPORTED = re.compile(
-    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:" + _alternatives("reporting_asks") + r")"
-    r"\s+(?:if|whether)\s+(?P<doer>" + _alternatives("reported_doers") + r")\s+"
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:"
+    + phrase_alternatives("reporting_asks")
+    + r")"
+    r"\s+(?:if|whether)\s+(?P<doer>" + phrase_alternatives("reported_doers") + r")\s+"
     r"(?P<modal>could|can|would|will|might)\s+(?P<rest>[^.?!;]*)",
     re.IGNORECASE,
 )
@@ -40,11 +44,7 @@ def reported_requests(text: str, is_person: Callable[[str], bool]) -> str:
 
     def said(match: re.Match[str]) -> str:
         said_who = match.group("who")
-        words = said_who.split()
-        # "Professor Zhang", "Liu Yang", "Ana": the longest tail of the words before the
-        # report that is one colleague's name ("so Ana was wondering": Ana)
-        tails = (" ".join(words[k:]) for k in range(len(words)))
-        who = next((t for t in tails if is_person(t)), None)
+        who = named_tail(said_who, is_person)  # "so Ana was wondering": Ana
         if who is None:
             return match.group(0)
         rest, found = _RECEIVING.subn(who, match.group("rest"))
@@ -54,3 +54,11 @@ def reported_requests(text: str, is_person: Callable[[str], bool]) -> str:
         return f"{lead}{match.group('modal')} {match.group('doer')} {rest}"
 
     return _REPORTED.sub(said, text)
+
+
+def named_tail(said: str, is_person: Callable[[str], bool]) -> str | None:
+    """The longest tail of the words ``said`` that is one colleague's name ("Professor
+    Zhang", "Liu Yang", "so Ana": Ana), or None where no tail is."""
+    words = said.split()
+    tails = (" ".join(words[k:]) for k in range(len(words)))
+    return next((t for t in tails if is_person(t)), None)
