@@ -11,7 +11,8 @@ words alone (never from a reasoner's reading), by the position of the name:
   and a place of theirs: "on Hal's desk", "at her desk" (``core.receiving_place``, the rule
   the reader reads the recipient with);
 - right after a giving verb, in any of its forms: "bring Hal a thermometer", "lent Hal ...";
-- as a doer: "by Hal", "get Hal to sign", "Hal to sign it";
+- as a doer: "by Hal", "get Hal to sign", "Hal to sign it", "could Hal sign it?", "would Hal
+  be able to stamp it?";
 - asked to be given it: "could Hal have a thermometer?", "Hal could do with one"
   (``core.asked_to_have``, the rule the reader reads the recipient with);
 - picked out as the one who needs it: "it's Hal who needs the copy, not me" (the cleft says
@@ -64,6 +65,8 @@ from assistantx.memory.short_term import ShortTermMemory
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
 _BY = frozenset({"by"})
 _DOER_VERBS = frozenset({"get", "ask", "have", "let", "make"})
+# A question asked of a colleague's work: "could Hal sign it?", "can Hal stamp my form?"
+_MODALS = frozenset({"could", "can", "would", "will", "might"})
 _DOING = frozenset({"sign", "seal", "stamp", "chop", "initial", "approve", "countersign"})
 _GIVE = english.words("dative_verbs") | english.words("handing_verbs")
 _TITLES = english.words("titles") - {"a", "an", "the", "our"}
@@ -330,7 +333,21 @@ def _receiving(
     if _picked_out(words, start, end):
         return True  # "it's Linh who needs it"
     nxt = words[end + 1].folded if end + 1 < len(words) else ""
-    return after == "to" and (nxt in _DOING or bool(language.verb_lemmas(nxt) & _DOING))
+    if before in _MODALS and _does_by_hand([w.folded for w in words[end : end + 4]]):
+        return True  # "could Hal sign my form?", "would Hal be able to stamp it?"
+    return after == "to" and _is_doing(nxt)
+
+
+def _is_doing(word: str) -> bool:
+    return word in _DOING or bool(language.verb_lemmas(word) & _DOING)
+
+
+def _does_by_hand(after: list[str]) -> bool:
+    """Whether the words after a name asked with a modal are the work done by hand: "sign
+    ...", "be able to sign ..."."""
+    if after[:3] == ["be", "able", "to"]:
+        after = after[3:]
+    return bool(after) and _is_doing(after[0])
 
 
 # What stands after the first object of "sort him one", "find her some", "get them a few":
