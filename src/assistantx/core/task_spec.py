@@ -178,5 +178,12 @@ def check_base(base: BaseInstruction, office: Office) -> None:
             facility = office.offering(op.id)[0]
             if not facility.guards:
                 raise ValueError(f"nobody runs the {facility.id}")
+            if op.sends_out and part.destination is None:
+                # whatever goes out unaddressed is lost: an instruction that does not say where
+                # is met with a question, and its answer is part of the task's spec
+                raise ValueError(
+                    f"{op.id} sends the item out of the office: the part needs its destination "
+                    f"({op.destination_asked})"
+                )
             # a guard may ask too: another guard runs it, or, when the requester is the only
             # one, they run it themselves with the robot (agents/oracle/policy.runs_it_alone)
