@@ -50,19 +50,38 @@ def test_an_outsider_in_anothers_clause_is_no_recipient(text: str, expected: lis
     assert _tasks(text) == expected
 
 
-@pytest.mark.parametrize(
-    "text",
-    [
-        "photocopy my contract for the client",
-        "burn my file onto a disc for the guest",
-        "take my file to Tobin. I need you to give it to the guest",
-        "Tobin wants a disc of my file for the guest",
-    ],
-)
-def test_an_outsider_the_request_hands_to_is_still_asked(text: str) -> None:
-    frame = _frame(text)
+def test_an_outsider_the_request_hands_to_is_still_asked() -> None:
+    frame = _frame("take my file to Tobin. I need you to give it to the guest")
     assert frame.tasks == [] and frame.question is not None
     assert frame.question.startswith(_OUTSIDER_ASKED)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("photocopy my contract for the client", [_COPY_TO_ME]),
+        (
+            "burn my file onto a disc for the guest",
+            [("print", "burn", "doc_file", "odile", "odile")],
+        ),
+    ],
+)
+def test_a_service_on_my_own_thing_for_an_outsider_comes_to_me(
+    text: str, expected: list[Row]
+) -> None:
+    # fixer 93d, class 3 (screen.own_serviced): "for the client" says whom the copy is for;
+    # the copy comes back to the requester, who passes it on (was asked about before)
+    frame = _frame(text)
+    assert frame.question is None, frame.question
+    assert _tasks(text) == expected
+
+
+def test_a_colleague_who_wants_it_for_an_outsider_is_its_recipient() -> None:
+    # fixer 93d, class 2 (screen.colleague_need): Tobin wants it, so it would go to Tobin;
+    # told, not asked, so confirmed first (was asked about as the guest's before)
+    frame = _frame("Tobin wants a disc of my file for the guest")
+    assert frame.tasks == [] and frame.question is not None
+    assert "Tobin" in frame.question and not frame.question.startswith(_OUTSIDER_ASKED)
 
 
 @pytest.mark.parametrize(

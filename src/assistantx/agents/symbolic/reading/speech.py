@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.agents.symbolic.reading.thing_state import state_told
+from assistantx.agents.symbolic.reading.used_today import used_later_today
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
 
@@ -685,7 +686,8 @@ class SpeechActs:
             return None  # "have Ines stamp my lease": a request that she does it
         if first in _AUX:
             if self._for_me(w):  # "does anyone have a stapler I could borrow?"
-                return "info" if self.later(w) else "polite"  # "... I could use later?"
+                # "... I could use later?": answered; "... I can use this afternoon?": now
+                return "info" if self.later(w) and not used_later_today(w) else "polite"
             return "info"
         if asks and not self._imperative(w) and not (set(w) & _WILLING):
             return "info" if first in _AUX | _WH else None

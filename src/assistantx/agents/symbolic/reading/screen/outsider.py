@@ -30,10 +30,15 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.event_clause import in_later_event
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.colleague_need import colleague_needs
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.not_here import thing_not_here
 from assistantx.agents.symbolic.reading.screen.others_clause import in_others_clause
+from assistantx.agents.symbolic.reading.screen.own_serviced import (
+    modifies_a_thing,
+    own_thing_serviced,
+)
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
@@ -67,7 +72,8 @@ def outsider(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     if found is None:
         return None
     items = [m for m in msg.lexed.mentions if m.kind == "item"]
-    credentials = [m for m in items if _credential(terms, m)]
+    # "my access card form": a document about a card, no card
+    credentials = [m for m in items if _credential(terms, m) and not modifies_a_thing(msg, m)]
     if credentials and all(_made_for_outsiders(terms, m) for m in credentials):
         if not _handed_on(msg):
             # "need a visitor badge issued for a delivery driver": the office makes it, and
@@ -236,6 +242,10 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
             continue
         if before == "for" and _colleague_receives(msg):
             continue  # "print my quote for the juke customer and give it to Robin": about
+        if before == "for" and colleague_needs(msg, piece):
+            continue  # "Mark needs my ruler for a student on his course": what it is for
+        if before == "for" and own_thing_serviced(terms, msg) and not _handed_on(msg):
+            continue  # "print my form for the visitor": the printout comes to the requester
         if before == "for" and _requester_receives(msg):
             continue  # "a label for the man in bed 4, print one and bring it here": about
 

@@ -11,6 +11,8 @@ from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Findi
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.agents.symbolic.reading.used_today import used_later_today
 from assistantx.core import wording
 
 
@@ -108,9 +110,10 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
         answer = f"I can't tell that about the {t.name} from what I know."
         return Finding("question", piece, "a question, answered in words", message=answer)
     verb = "get" if t.kind == "product" else "bring"
-    if piece.acts.later:
+    if piece.acts.later and not used_later_today(content(piece.words)):
         # "... I could use tomorrow?": a need for later is answered, with the offer for
-        # then in words; nothing is fetched now and no question is left open on it
+        # then in words; nothing is fetched now and no question is left open on it ("...
+        # I need this afternoon?" is had by then, so answered and offered for now)
         message = f"{answer} Tell me when you need it and I'll {verb} you one then."
         meaning = "a question about a later need, answered"
         return Finding("question", piece, meaning, message=message)

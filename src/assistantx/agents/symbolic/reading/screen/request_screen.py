@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
 from assistantx.agents.symbolic.reading.screen.owned_head import owned_head
+from assistantx.agents.symbolic.reading.screen.participle_clause import own_participle
 from assistantx.agents.symbolic.reading.screen.person_is import person_is
 from assistantx.agents.symbolic.reading.screen.pieces import Message, pieces
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import named_subject
@@ -66,6 +67,7 @@ class RequestScreen:
         text, back = brought_back(terms, text)  # "and a coffee on the way back": mine
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
+        text, doing = own_participle(text, terms.lex.read)  # "?, doing a survey on ...": I'm
         # "UV bulb's gone": the bulb is gone; "my laptop's flat": the laptop is
         text, stated = contracted_is(text, terms.lex.item_heads)
         text, taken = how_taken(terms, text)  # "a brew, milk no sugar": no milk to fetch
@@ -85,6 +87,7 @@ class RequestScreen:
             *owned,
             *back,
             *restored,
+            *doing,
             *stated,
             *taken,
             *leave,
