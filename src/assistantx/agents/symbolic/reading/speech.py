@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
+from assistantx.agents.symbolic.reading.thing_needs import work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
 from assistantx.core import english, language
 from assistantx.core.receiving_place import MEET_AT, PLACE_PRONOUNS, PLACE_WORDS
@@ -337,6 +338,8 @@ def _starts(words: list[str], phrase: tuple[str, ...], at: int = 0) -> bool:
 
 # a thing's state said with its participle ("sample is labelled", "sample's labelled")
 _BE_OR_HAVE = frozenset({"is", "was", "are", "were", "has", "have", "had"})
+# the task kind whose words make a thing, never work done to one ("fix me a coffee")
+_NO_WORK = frozenset({"make"})
 
 
 class SpeechActs:
@@ -345,6 +348,19 @@ class SpeechActs:
     def __init__(self, lex: Lexicon) -> None:
         self.lex = lex
         self._known: frozenset[str] | None = None  # the office's words, read on first use
+        # the words that ask for work on a thing: the office's operations by verb, near
+        # form ("dying" of "dye"), noun ("a review") or a word of their names ("a read"),
+        # and every task word but those of making ("fix" me a coffee says nothing of work
+        # done to a thing); "moving", "delivering" hand it on, an errand
+        self._work_words = (
+            lex.operation_words
+            | frozenset(
+                w for kind, words in lex.cues.items() if kind not in _NO_WORK for w in words
+            )
+            | frozenset(lex.operation_nouns)
+            | frozenset(w for name in lex.operation_names for w in name)
+            | frozenset(said[0] for said in lex.near_forms.forms if len(said) == 1)
+        )
 
     def withdrawal(self, words: list[str]) -> bool:
         """ "forget about the scissors", "never mind the stapler", "cancel my request"."""
@@ -703,6 +719,8 @@ class SpeechActs:
             # "a copy of my file printed for Zhang please": asked, not told ("pls is the
             # stapler here": a "please" that opens a question is read with the question)
             return False
+        if work_told(w, self.lex.items, self._work_words):
+            return True  # "the cup needs washing": how the thing is, not the thing asked for
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
         if self._minded(w):
