@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progr
 from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
+from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
@@ -674,6 +675,8 @@ class SpeechActs:
                     rest = ["is", *inner]  # "if anyone has ...": a yes/no question
                 return self.question(rest, asks=True) or "info"
         first, second = w[0], (w[1] if len(w) > 1 else "")
+        if offered(w, asks):
+            return "info"  # "would you like a ruler?": offered to the assistant, nothing asked
         if first in _WH:
             if second == "about":  # "how about a coffee?"
                 return "polite"
