@@ -38,7 +38,7 @@ from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
-from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
+from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
@@ -963,6 +963,8 @@ class SpeechActs:
         w = content(words)
         if _has_need_phrase(w) and (self._named(w[0]) or self._has_done(w)):
             return True  # "Min asked for scissors", "jonno's asked for a thermometer"
+        if outsider_wants(w):
+            return True  # "a friend of mine needs a ruler": their want, told
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
@@ -978,6 +980,8 @@ class SpeechActs:
         w = content(words)
         if not w:
             return False
+        if outsider_wants(w):
+            return False  # "a client of ours could do with a pen": their want, no "could" asked
         said = set(w)
         if len(w) > 1 and self._named(w[0]) and w[1] in _NEED and w[1].endswith("s"):
             # "Will needs the umbrella": a name before a third person's verb is its subject,
