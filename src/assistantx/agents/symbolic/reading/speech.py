@@ -72,6 +72,7 @@ _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
 _AWAY = english.words("guard_away")
 _NEED = english.words("need_verbs")
+_PUTTING = english.words("putting_verbs")  # "leave", "put", "pop": a thing put down
 _OWN = frozenset({"my", "our"})  # the requester's own thing
 _IN_PLACE = frozenset({"in", "at", "inside"})
 _RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
@@ -1072,8 +1073,8 @@ class SpeechActs:
         k = 0
         while k < len(w) and w[k] in ("please", "pls", "plz", "kindly", "just", "also", "then"):
             k += 1
-        if k < len(w) and w[k] == "leave" and _left_at_someones_place(w[k + 1 :]):
-            return True  # "leave it on her desk": where it is delivered, a command
+        if k < len(w) and w[k] in _PUTTING and _left_at_someones_place(w[k + 1 :]):
+            return True  # "leave it / put mine on her desk": where it is delivered, a command
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
 
     def _for_me(self, w: list[str]) -> bool:
