@@ -3,14 +3,16 @@ colleague's place (reading/near_possessive.py). "put the ruler next to Mark's" f
 rulers for the speaker, one of them Mark's own: the bare possessive was read as a second
 thing asked for. After a verb of putting down, "<next to / beside / by ...> Mark's" is
 where the thing goes: Mark's desk, one delivery, and Mark's own ruler never moves. "bring me
-the ruler and Mark's" still asks for two."""
+the ruler and Mark's" still asks for two. The consent guard reads the place as the reader
+does, so the hand-over at Mark's desk is one the guard knows Mark was named for."""
 
 from __future__ import annotations
 
 import pytest
 
+from assistantx.runtime.recipients import _in_roles
 from helpers.dataset_offices import default_office, harbour_office
-from helpers.reading import ReadFrame, frame_reader
+from helpers.reading import OfficeOf, ReadFrame, frame_reader
 
 _default = frame_reader(default_office, "lee")
 _harbour = frame_reader(harbour_office, "rose")
@@ -59,3 +61,20 @@ def test_two_things_or_a_place_said_in_full_are_read_as_before(
 ) -> None:
     frame = read(text)
     assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == tasks, frame
+
+
+@pytest.mark.parametrize(
+    ("office", "text", "who", "named"),
+    [
+        (harbour_office, "put the ruler next to Mark's", "rose", {"mark"}),
+        (harbour_office, "leave the calculator beside Will's please", "rose", {"will"}),
+        (default_office, "put the book next to Wang's", "lee", {"wang"}),
+        # a description of which one, or an owner: nobody named to receive it
+        (harbour_office, "bring me the ruler next to Mark's", "rose", set()),
+        (harbour_office, "bring me the ruler and Mark's", "rose", set()),
+    ],
+)
+def test_the_consent_guard_reads_the_owner_s_place_as_the_reader_does(
+    office: OfficeOf, text: str, who: str, named: set[str]
+) -> None:
+    assert _in_roles(office(), text, who) == named
