@@ -44,6 +44,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.reading.abbreviations import undotted
+from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
@@ -429,8 +430,14 @@ def _clause_after(words: list[_Word], end: int) -> list[str]:
 
 
 def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:
-    # read as the reader reads it: "leave it w/ Hal" is "leave it with Hal"
-    return _roles_in(_words_of(office), undotted(text), requester)
+    office_words = _words_of(office)
+
+    def is_person(said: str) -> bool:
+        return any(m.possessive for m in _mentions(office_words, _tokens(said)))
+
+    # read as the reader reads it: "leave it w/ Hal" is "leave it with Hal", and "put the
+    # ruler next to Hal's" is "at Hal's desk" (near_possessive), where Hal receives it
+    return _roles_in(office_words, near_possessives(undotted(text), is_person), requester)
 
 
 # A reading depends on the office's words, the text and who wrote it only: remembered, as

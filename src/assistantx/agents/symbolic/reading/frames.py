@@ -53,6 +53,7 @@ from assistantx.agents.symbolic.reading.original_back import (
     original_to_its_source,
 )
 from assistantx.agents.symbolic.reading.purpose import others_purpose
+from assistantx.agents.symbolic.reading.put_for import puts_at_someones_place
 from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.room_receiver import rooms_taken_to
@@ -479,6 +480,11 @@ class FrameReader:
                 and (
                     self._starts_request(mentions, after_join, tokens)
                     or self._made_beside(clauses[-1], mentions, after_join, tokens)
+                    # "Mark needs a ruler, leave mine on his desk": how the need is met
+                    or (
+                        says_a_need(clauses[-1], tokens)
+                        and puts_at_someones_place(mentions, after_join, tokens)
+                    )
                 )
             )
             unsaid = (

@@ -87,6 +87,7 @@ from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
+from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
@@ -262,6 +263,8 @@ class InstructionParser:
         text = reported_requests(text, self._one_name)
         # "take this book to Wang's if he's in": Wang's desk, so Wang gets it
         text = possessive_places(text, self.screen.terms.is_person_word)
+        # "put the ruler next to Mark's": at Mark's desk, not Mark's ruler fetched too
+        text = near_possessives(text, self.screen.terms.is_person_word)
         # "a stapler, not Wang's, Zhang's", "Hu's stapler, Gao's": one stapler, Zhang's / Gao's
         text = possessive_corrections(text, self.screen.terms.is_person_word)
         # "i need a pen. Lee's is fine": Lee's pen, asked of Lee

@@ -37,10 +37,12 @@ from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progr
 from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
-from assistantx.agents.symbolic.reading.outsider_need import outsider_subject
+from assistantx.agents.symbolic.reading.offers import offered
+from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
+from assistantx.agents.symbolic.reading.thing_needs import work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
 from assistantx.agents.symbolic.reading.used_today import used_later_today
 from assistantx.core import english, language
@@ -71,6 +73,7 @@ _EVERYONE = english.words("everyone_words")
 _GUARD_VERBS = english.words("guard_verbs")
 _AWAY = english.words("guard_away")
 _NEED = english.words("need_verbs")
+_PUTTING = english.words("putting_verbs")  # "leave", "put", "pop": a thing put down
 _OWN = frozenset({"my", "our"})  # the requester's own thing
 _IN_PLACE = frozenset({"in", "at", "inside"})
 _RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
@@ -338,6 +341,8 @@ def _starts(words: list[str], phrase: tuple[str, ...], at: int = 0) -> bool:
 
 # a thing's state said with its participle ("sample is labelled", "sample's labelled")
 _BE_OR_HAVE = frozenset({"is", "was", "are", "were", "has", "have", "had"})
+# the task kind whose words make a thing, never work done to one ("fix me a coffee")
+_NO_WORK = frozenset({"make"})
 
 
 class SpeechActs:
@@ -346,6 +351,19 @@ class SpeechActs:
     def __init__(self, lex: Lexicon) -> None:
         self.lex = lex
         self._known: frozenset[str] | None = None  # the office's words, read on first use
+        # the words that ask for work on a thing: the office's operations by verb, near
+        # form ("dying" of "dye"), noun ("a review") or a word of their names ("a read"),
+        # and every task word but those of making ("fix" me a coffee says nothing of work
+        # done to a thing); "moving", "delivering" hand it on, an errand
+        self._work_words = (
+            lex.operation_words
+            | frozenset(
+                w for kind, words in lex.cues.items() if kind not in _NO_WORK for w in words
+            )
+            | frozenset(lex.operation_nouns)
+            | frozenset(w for name in lex.operation_names for w in name)
+            | frozenset(said[0] for said in lex.near_forms.forms if len(said) == 1)
+        )
 
     def withdrawal(self, words: list[str]) -> bool:
         """ "forget about the scissors", "never mind the stapler", "cancel my request"."""
@@ -659,6 +677,8 @@ class SpeechActs:
                     rest = ["is", *inner]  # "if anyone has ...": a yes/no question
                 return self.question(rest, asks=True) or "info"
         first, second = w[0], (w[1] if len(w) > 1 else "")
+        if offered(w, asks):
+            return "info"  # "would you like a ruler?": offered to the assistant, nothing asked
         if first in _WH:
             if second == "about":  # "how about a coffee?"
                 return "polite"
@@ -705,6 +725,8 @@ class SpeechActs:
             # "a copy of my file printed for Zhang please": asked, not told ("pls is the
             # stapler here": a "please" that opens a question is read with the question)
             return False
+        if work_told(w, self.lex.items, self._work_words):
+            return True  # "the cup needs washing": how the thing is, not the thing asked for
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
         if self._minded(w):
@@ -944,6 +966,8 @@ class SpeechActs:
         w = content(words)
         if _has_need_phrase(w) and (self._named(w[0]) or self._has_done(w)):
             return True  # "Min asked for scissors", "jonno's asked for a thermometer"
+        if outsider_wants(w):
+            return True  # "a friend of mine needs a ruler": their want, told
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
@@ -959,6 +983,8 @@ class SpeechActs:
         w = content(words)
         if not w:
             return False
+        if outsider_wants(w):
+            return False  # "a client of ours could do with a pen": their want, no "could" asked
         said = set(w)
         if len(w) > 1 and self._named(w[0]) and w[1] in _NEED and w[1].endswith("s"):
             # "Will needs the umbrella": a name before a third person's verb is its subject,
@@ -1049,8 +1075,8 @@ class SpeechActs:
         k = 0
         while k < len(w) and w[k] in ("please", "pls", "plz", "kindly", "just", "also", "then"):
             k += 1
-        if k < len(w) and w[k] == "leave" and _left_at_someones_place(w[k + 1 :]):
-            return True  # "leave it on her desk": where it is delivered, a command
+        if k < len(w) and w[k] in _PUTTING and _left_at_someones_place(w[k + 1 :]):
+            return True  # "leave it / put mine on her desk": where it is delivered, a command
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
 
     def _for_me(self, w: list[str]) -> bool:

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.indirect_asks import chance_reworded, indirect_ask
 from assistantx.agents.symbolic.reading.modal_subject import modals_as_subjects
+from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
 from assistantx.agents.symbolic.reading.subject_adverbs import without_subject_adverbs
 
@@ -55,9 +56,11 @@ def without_fillers(words: list[str]) -> list[str]:
     return [w for w in words if w not in WITHDRAWAL_FILLERS]
 
 
-def _indirect(speech: SpeechActs, words: list[str]) -> QuestionKind | None:
+def _indirect(speech: SpeechActs, words: list[str], asks: bool) -> QuestionKind | None:
     """A polite indirect ask's kind by the verb it asks for; a doubt of what the assistant
     can do ("could you bring it without dropping it?") is left to be answered and offered."""
+    if offered(content(words), asks):
+        return None  # "would you like a ruler?": an offer, not a verb asked for
     kind = indirect_ask(content(words), speech.lex.cue_words)
     return None if kind == "polite" and speech.doubts_ability(words) else kind
 
@@ -90,7 +93,7 @@ def acts_reader(
             imperative=speech.imperative(words),
             # a polite indirect ask is read by the verb it asks for ("would somebody be able
             # to bring me ...", "would anyone know where ..."), else by the question's shape
-            question=_indirect(speech, words) or speech.question(words, asks),
+            question=_indirect(speech, words, asks) or speech.question(words, asks),
             doubts_ability=speech.doubts_ability(words),
             thanks=speech.thanks(words),
             wish=speech.wish(words),

@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.screen.own_serviced import (
 )
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speaker_wants import speaker_wants
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.core import english, language
 
@@ -308,6 +309,8 @@ def _requester_receives(msg: Message) -> bool:
     it to me", "bring me one"): a "for the man in bed 4" beside it says whom the thing is
     for, not whom it goes to; the requester passes it on."""
     tokens = msg.lexed.tokens
+    if speaker_wants([t.word for t in tokens]) and not _handed_on(msg):
+        return True  # "I need a ruler for a friend": the speaker's own need, theirs to pass on
     for n, t in enumerate(tokens):
         if t.word not in _GIVING:
             continue

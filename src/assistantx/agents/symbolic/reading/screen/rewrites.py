@@ -10,6 +10,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
+from assistantx.agents.symbolic.reading.screen.described_one import described_ones
 from assistantx.agents.symbolic.reading.screen.elided_possessive import elided_item
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.pieces import Message
@@ -88,6 +89,8 @@ def rewrite(
         one_stated = len(set(stated)) == 1 or again or worked is not None
         last = worked if worked is not None else stated[-1] if stated else None
         back = ("it", "them") if stated and said[-1] == last and one_stated else ()
+        # "bring me a clean one": its describing words name no other thing, another one
+        text = described_ones(text, terms.lex.items)
         # "someone else's" first: its "one" is no "one" of its own
         for phrase in (*terms.en.others_ones, *terms.en.another_one, "some", *back):
             pattern = re.compile(rf"\b{re.escape(phrase)}\b", re.IGNORECASE)
