@@ -30,7 +30,8 @@ _PRONOUNS = frozenset({"it", "them", "this", "that"})
 # Subjects that make a statement of going a person's own ("I'm going to the bank").
 _PERSONS = frozenset({"i", "im", "we", "you", "he", "she", "they", "me", "us", "him", "her"})
 # Words of going or sending before a statement's destination ("needs to go out *to* ...").
-_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
+# ("go *back* to the supplier": the thing goes there all the same)
+_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over", "back"})
 # The words that name a service as the means of sending ("send it to the council *by* courier",
 # "go out to the plant *with the* courier", "off to the lab *on the* tube"), an article or "our"
 # between them and the service.

@@ -206,7 +206,7 @@ def described_by_participles(
             continue
         if not _participle(tokens[m.start].word):
             continue
-        if not _asked_before(tokens, out[:n]):
+        if not (_asked_before(tokens, out[:n]) or _asked_after(tokens, out[n + 1 :])):
             continue
         out[n] = Mention("word", m.start, m.end, (tokens[m.start].word,), False, m.text)
     return out
@@ -241,6 +241,29 @@ def _asked_before(tokens: Sequence[Token], mentions: Sequence[Mention]) -> bool:
             return True
         if any(t.opens for t in tokens[m.start : m.end]):
             return False
+    return False
+
+
+# "my signed contract *needs couriering*", "the printed agenda *has to be posted*": the
+# most words between the described thing and the task word of its own clause
+_OWN_VERB_REACH = 3
+
+
+def _asked_after(tokens: Sequence[Token], mentions: Sequence[Mention]) -> bool:
+    """Whether the described thing is the subject of a task word said right after it, in the
+    same clause ("my signed contract needs couriering to Leeds", "the stamped invoice has to
+    be posted"): that word is what is asked, and the participle before the thing its state.
+    Past a comma or a new sentence ("my printed agenda, and bring me a pen") it is not."""
+    if not mentions:
+        return False
+    thing = mentions[0]
+    for m in mentions[1:]:
+        if m.start - thing.end > _OWN_VERB_REACH:
+            return False
+        if any(t.opens or t.after_pause for t in tokens[thing.end : m.end]):
+            return False
+        if m.kind == "cue":
+            return True
     return False
 
 

@@ -153,6 +153,21 @@ def _after_preposition(w: list[str], n: int) -> bool:
     return n >= 2 and w[n - 1] in _NOUN_OPENERS and w[n - 2] in _PREPOSITIONS
 
 
+# Words that only ever open a noun phrase: the word right after one is a modifier or the
+# noun ("my *signed* contract", "the *printed* agenda"), never a finite verb. "her", "his"
+# and "its" are left out: chat writes "its" for "it's", and "her" may be an object.
+_ONLY_DETERMINERS = frozenset({"the", "a", "an", "my", "your", "our", "their"})
+
+
+def _attributive(w: list[str], n: int) -> bool:
+    """Whether ``w[n]`` is a past participle between a word that only opens a noun phrase
+    and the noun after it ("my signed contract needs couriering"): then it describes the
+    thing, and the statement's verb is later. Any other word there is read as before."""
+    if n < 1 or n + 1 >= len(w) or w[n - 1] not in _ONLY_DETERMINERS:
+        return False
+    return language.is_past_participle(w[n]) and language.is_noun(w[n + 1])
+
+
 _SELF_PLANS = frozenset({"ill"})
 _EMBEDDED_QUESTIONS = tuple(tuple(p.split()) for p in english.entries("embedded_questions"))
 _REFLEXIVES = frozenset({"myself", "himself", "herself", "themselves", "ourselves"})
@@ -813,6 +828,8 @@ class SpeechActs:
                 return False  # "my stapler should go to Lee": where it is wanted, asked
             if _after_preposition(w, n) or self._in_office_phrase(w, n):
                 continue  # "some twine from the (potting) shed": a noun, not "shed"
+            if _attributive(w, n):
+                continue  # "my signed contract needs ...": a modifier, not "signed"
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
                 return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":

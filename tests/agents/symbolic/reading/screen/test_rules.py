@@ -49,6 +49,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
+        "statement",  # a colleague's thing to send out ("Dev's contract needs couriering")
         "question",  # a facility's state asked with no verb ("laminator working today?")
         "question",  # where a thing is kept ("where do we keep the clay?"), in words
         "question",

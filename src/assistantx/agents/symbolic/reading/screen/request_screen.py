@@ -15,6 +15,7 @@ from assistantx.agents.symbolic.reading.screen.contracted_is import contracted_i
 from assistantx.agents.symbolic.reading.screen.correction import REPLACED, corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.facility_means import facility_means
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Request, Screened, Spoken
 from assistantx.agents.symbolic.reading.screen.head_noun_back import head_noun_back
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
@@ -76,6 +77,7 @@ class RequestScreen:
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
         text, fixes = corrected(terms, text)
         text, sent = sent_by_means(terms, text)  # "this form needs to go by courier to ..."
+        text, means = facility_means(terms, text)  # "send my form via the courier desk to ..."
         text, undone = undone_work(terms, text)  # "Hal still hasn't signed it. Can you ..."
         fixes = [
             *intro,
@@ -95,6 +97,7 @@ class RequestScreen:
             *rejected,
             *fixes,
             *sent,
+            *means,
             *undone,
         ]
         acts = acts_reader(terms.acts, terms.self_words, split_words(text))

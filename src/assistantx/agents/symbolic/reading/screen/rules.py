@@ -32,6 +32,7 @@ from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
+from assistantx.agents.symbolic.reading.screen.others_send_out import others_send_out
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
@@ -126,6 +127,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_doing),
     ("statement", doing_after),
     ("statement", own_need),
+    # "Dev's contract needs couriering to Leeds": someone else's thing, never sent on it
+    ("statement", others_send_out),
     ("question", facility_state_asked),
     ("question", kept_where),
     ("question", question),

@@ -170,7 +170,8 @@ _WORK_DONE = frozenset({"done", "sorted", "handled"})
 
 # The words of going before a statement's destination ("has to go *off to* Galway"); the
 # readings stage (``destination``) reads the same "to" as where a send-out sends "it".
-_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over"})
+# ("go *back* to the supplier": the thing goes there all the same)
+_GOING = frozenset({"go", "goes", "going", "gone", "out", "off", "away", "over", "back"})
 _OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that"})
 
 
