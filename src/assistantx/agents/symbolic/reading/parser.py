@@ -82,6 +82,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     service_question,
     with_service,
 )
+from assistantx.agents.symbolic.reading.name_chosen import with_name_chosen
 from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
@@ -550,6 +551,10 @@ class InstructionParser:
             )
             if subject is not None:  # "she needs ..." → "Who do you mean by 'she'?" → "Rose"
                 text, frame = subject, self.parse(subject, requester)
+                continue
+            chosen_name = with_name_chosen(self.lex, text, frame.question or "", answer)
+            if chosen_name is not None:  # "Who do you mean by 'Tomás': ...?" "Tomás Herrera"
+                text, frame = chosen_name, self.parse(chosen_name, requester)
                 continue
             picked = with_owned_chosen(
                 self.screen.terms, text, requester, frame.question or "", answer
