@@ -1137,6 +1137,10 @@ class Lexicon:
             return "word"
         if self._alias_after_the(tokens, i):
             return "person"
+        if i > 0 and after_title(tokens[i - 1].word) and t.word in self.family:
+            # "could Ms Grant sign my form?": a title of address goes with a family name;
+            # nobody puts "Ms" before the word "grant"
+            return "person"
         slot = slot_at(
             tokens,
             i,
