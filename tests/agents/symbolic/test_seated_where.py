@@ -112,3 +112,16 @@ def test_a_need_with_a_place_is_still_restated_first() -> None:
     frame = parser("default").parse("Wang at the print room needs a pen", "mao")
     assert not frame.tasks
     assert frame.question is not None and "Wang Fang" in frame.question
+
+
+async def test_the_highlighter_reaches_sue_in_the_simulated_office() -> None:
+    # the consent guard reads Sue as the one it goes to (runtime.recipients), so it is done
+    from symbolic_run import run_instruction
+
+    from helpers.dataset_offices import harbour_office
+
+    text = "Sue on reception needs a highlighter, can you take one down from the cupboard"
+    run = await run_instruction(harbour_office(), "rose", text)
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"holds": ["sue", "highlighter:*"]})
+    assert not run.sim.world.check({"holds": ["rose", "highlighter:*"]})

@@ -70,3 +70,12 @@ def test_the_word_without_a_title_is_no_person() -> None:
     frame = _parser("harbour").parse("the grant sign is broken", "mark")
     assert not frame.tasks
     assert frame.question is None
+
+
+async def test_ms_grant_signs_in_the_simulated_office() -> None:
+    from symbolic_run import run_instruction
+
+    run = await run_instruction(_parser("harbour").office, "mark", "could Ms Grant sign my form?")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    asked = [r.action for r in run.stm.trace.actions() if r.action.type == "inquire"]
+    assert [a.contact for a in asked] == ["ray"]  # type: ignore[attr-defined]
