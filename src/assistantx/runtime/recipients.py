@@ -45,6 +45,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
+from assistantx.agents.symbolic.reading.surnames import family_names
 from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
@@ -196,7 +197,7 @@ class _OfficeWords:
     several readings per consent check, on the event loop). The names are looked up by their
     first word, longest first, so a text is read in one pass, not once per name."""
 
-    __slots__ = ("items", "name_words", "names_by_first", "operations", "rooms")
+    __slots__ = ("family", "items", "name_words", "names_by_first", "operations", "rooms")
 
     def __init__(self, office: Office) -> None:
         self.names_by_first: dict[str, list[tuple[tuple[str, ...], frozenset[str]]]] = {}
@@ -204,6 +205,14 @@ class _OfficeWords:
             self.names_by_first.setdefault(key[0], []).append((key, people))
         self.items = _item_words(office)
         self.name_words = _name_words(office)
+        # "Ms Grant": the people whose family name a word is, in the office's name order (the
+        # reader's ``surnames.family_names``), for a name said after a title of address
+        self.family = {
+            k: frozenset(ids)
+            for k, ids in family_names(
+                office, lambda s: " ".join(w.folded for w in _tokens(s))
+            ).items()
+        }
         self.operations = _operation_verbs(office)
         # the words of the office's rooms and facilities ("post desk", "lounge")
         self.rooms = frozenset(
@@ -259,6 +268,12 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
                     continue
             hit = _Mention(people, n, n + len(key), words[n + len(key) - 1].possessive)
             break
+        family = words_of_office.family.get(words[n].folded)
+        titled = n > 0 and words[n - 1].folded in _ADDRESS_TITLES and family is not None
+        if titled and family and (hit is None or hit.end - hit.start == 1):
+            # "could Ms Grant sign it?": a title goes with a family name (Nadia Grant, not
+            # Grant O'Sullivan, whose given name it is), as the reader reads it
+            hit = _Mention(family, n, n + 1, words[n].possessive)
         if hit is None:
             n += 1
             continue
@@ -479,6 +494,20 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         } - {requester}
         if len(there) == 1:
             named |= there
+    if not named and _one_handed(words, operations):
+        # "Sue (on reception) needs a highlighter, can you take one down": nobody named in a
+        # receiving place, and "one" handed over is the thing the one colleague said to need
+        # it needs; several such decide nothing
+        needing = {
+            p
+            for m in mentions
+            if len(m.people) == 1
+            and not m.possessive
+            and _said_to_need(words, m, office_words.rooms)
+            for p in m.people
+        } - {requester}
+        if len(needing) == 1:
+            named |= needing
     for n, w in enumerate(words):
         after = words[n + 1].folded if n + 1 < len(words) else ""
         at_place = pronoun_receiving_place(  # "at her desk", not "the one on her desk"
@@ -550,10 +579,20 @@ def _taken_to_a_room(words: list[_Word], rooms: frozenset[str]) -> bool:
 _NEEDS = (("needs",), ("need",), *(tuple(p.split()) for p in english.entries("need_phrases")))
 
 
-def _said_to_need(words: list[_Word], m: _Mention) -> bool:
+def _said_to_need(words: list[_Word], m: _Mention, rooms: frozenset[str] = frozenset()) -> bool:
     """Whether the name ``m`` is the subject of a need: "Kit needs a torch", "Kit's after a
-    torch", "Kit is looking for one"."""
-    after = tuple(w.folded for w in words[m.end : m.end + 4])
+    torch", "Kit is looking for one", "Kit on reception needs one" (where Kit is, from
+    ``rooms``, the words of the office's places, comes between)."""
+    at = m.end
+    if not m.possessive and at < len(words) and words[at].folded in _PLACING:
+        k = at + 1
+        while k < len(words) and words[k].folded in _ARTICLES:
+            k += 1
+        if k < len(words) and words[k].folded in rooms:
+            while k < len(words) and words[k].folded in rooms:
+                k += 1
+            at = k
+    after = tuple(w.folded for w in words[at : at + 4])
     for phrase in _NEEDS:
         said = phrase[1:] if m.possessive and phrase[0] in ("s", "is") else phrase
         if m.possessive and said == phrase:
@@ -564,6 +603,20 @@ def _said_to_need(words: list[_Word], m: _Mention) -> bool:
 
 
 _BE = frozenset({"is", "was"})
+# where a person is, said after their name ("Sue on reception", "Wang at the print room")
+_PLACING = frozenset({"on", "at", "in", "by", "near"})
+_STAND_INS = frozenset({"one", "some"})
+
+
+def _one_handed(words: list[_Word], operations: frozenset[str]) -> bool:
+    """Whether a giving verb takes "one" or "some" right after it ("take one down", "grab
+    some"): the thing said before, handed to nobody named in the same breath."""
+    return any(
+        _is_give(w.folded, operations) and words[n + 1].folded in _STAND_INS
+        for n, w in enumerate(words[:-1])
+    )
+
+
 _IN = frozenset({"in", "at", "inside"})
 
 

@@ -427,12 +427,17 @@ def test_an_alias_or_the_owner_settles_who_is_meant(
 
 async def test_the_question_comes_before_anything_moves() -> None:
     """In the simulated office the requester is asked "Who do you mean by 'Li'?", naming
-    both, in their own chat, and nothing is handed to either."""
+    both, in their own chat, before the robot moves; the simulated requester answers "Sun
+    Li" (the option that has the word they wrote), and the answer that names one of the two
+    settles it (``reading.name_chosen``): Sun Li gets the contract, Lee Ming never does."""
     run = await run_instruction(_office("default"), "mao", "give my contract to Li")
-    asked = [r.action for r in run.stm.trace.actions() if r.action.type == "inquire"]
+    actions = [r.action for r in run.stm.trace.actions()]
+    asked = [a for a in actions if a.type == "inquire"]
     assert asked and asked[0].contact == "mao"  # type: ignore[attr-defined]
     assert "Sun Li" in asked[0].question and "Lee Ming" in asked[0].question  # type: ignore[attr-defined]
-    assert not run.sim.world.check({"holds": ["sun", "document:mao"]})
+    moves = [n for n, a in enumerate(actions) if a.type == "move"]
+    assert not moves or actions.index(asked[0]) < moves[0]
+    assert run.sim.world.check({"holds": ["sun", "document:mao"]})
     assert not run.sim.world.check({"holds": ["lee", "document:mao"]})
 
 

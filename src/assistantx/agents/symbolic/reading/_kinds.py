@@ -19,6 +19,7 @@ from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient
 from assistantx.agents.symbolic.reading.doer_nouns import is_doer_noun
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.made_from import input_of_product
+from assistantx.agents.symbolic.reading.one_from_source import one_of_the_previous
 from assistantx.agents.symbolic.reading.stated_source import says_has_some
 from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.core import english, language, task_kinds
@@ -855,6 +856,11 @@ class TaskReader:
                 for p in self.office.facility(f).products[:1]
                 if p not in (self.printout, self.copy) and ("give" in s.cues or "make" in s.cues)
             ]
+            if one_of_the_previous(clause.mentions, previous):
+                # "Sue needs a highlighter, take one down from the cupboard": that "one" is
+                # the highlighter just asked for, and the cupboard where it comes from; never
+                # a second thing, the cupboard's own product, for the requester
+                made = []
             if made and unlisted_thing(clause.mentions) is None:
                 # "50 ml of chloroform from the chem store": never what the store makes instead
                 return [Task(kind="produce", item=p, recipient=s.recipient) for p in made]

@@ -23,7 +23,7 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Collection, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, done_forms, event_noun
@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.container_names import container_phrase,
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.destination import means_words
+from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled
 from assistantx.agents.symbolic.reading.family_of_another import also_meant
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
@@ -716,6 +717,7 @@ class Lexicon:
             if t.word not in TITLES
             or self._role_at(tokens, i)
             or self._initial_at(tokens, i)
+            or self._place_letter_at(tokens, i)
             or self._title_naming_a_thing(tokens, i)
             or self._function_word_name_at(tokens, i)
         ]
@@ -734,7 +736,19 @@ class Lexicon:
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._own_papers(tokens, mentions)
-        return self._settled_by_owner(tokens, mentions)
+        return self._exactly_spelled(tokens, self._settled_by_owner(tokens, mentions))
+
+    def _exactly_spelled(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "Tomás" beside Tomáš Novák: a name written with its diacritics means the people
+        who spell it so (``exact_spelling``)."""
+        out: list[Mention] = []
+        for m in mentions:
+            if m.kind == "person" and m.ids:
+                written = [t.text for t in tokens[m.start : m.end] if t.word not in TITLES]
+                ids = exactly_spelled(self.office, written, m.ids)
+                m = replace(m, ids=ids) if ids != m.ids else m
+            out.append(m)
+        return out
 
     def _function_word_name_at(self, tokens: Sequence[Token], i: int) -> bool:
         """ "take my stapler to An", "give An my tape": a colleague's one-word name that is
@@ -874,6 +888,27 @@ class Lexicon:
         nxt = tokens[i + 1] if i + 1 < len(tokens) else None
         ends = nxt is None or nxt.opens or nxt.after_pause or nxt.word in _AFTER_NAME
         return tokens[i].possessive or ends
+
+    def _place_letter_at(self, tokens: Sequence[Token], i: int) -> bool:
+        """ "in Studio A", "to Lab A": a one-letter word that, with the words before it, is
+        the whole name of a place or facility of the office is the last word of that name,
+        not the article "a" (which the titles' list would skip, leaving "Studio" and a
+        message that seemed cut off after "a"); capitalised, or ending the clause ("to
+        Studio A please"): "to the studio a bit later" keeps its article."""
+        t = tokens[i]
+        if i == 0 or len(t.word) != 1 or t.opens:
+            return False
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else None
+        ends = nxt is None or nxt.opens or nxt.after_pause or nxt.word in _AFTER_NAME
+        if not (t.text.isupper() or ends):
+            return False
+        for k in range(1, self.max_words):
+            if i - k < 0 or (tokens[i - k + 1].opens and k > 1):
+                break
+            phrase = " ".join(x.word for x in tokens[i - k : i + 1])
+            if phrase in self.places or phrase in self.facilities:
+                return True
+        return False
 
     def _title_naming_a_thing(self, tokens: Sequence[Token], i: int) -> bool:
         """ "my ms": a title's word ("Ms") that is also a name of one of the office's things
@@ -1124,6 +1159,10 @@ class Lexicon:
         if self._distance(tokens, i):
             return "word"
         if self._alias_after_the(tokens, i):
+            return "person"
+        if i > 0 and after_title(tokens[i - 1].word) and t.word in self.family:
+            # "could Ms Grant sign my form?": a title of address goes with a family name;
+            # nobody puts "Ms" before the word "grant"
             return "person"
         slot = slot_at(
             tokens,

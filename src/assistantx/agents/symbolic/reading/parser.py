@@ -82,6 +82,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     service_question,
     with_service,
 )
+from assistantx.agents.symbolic.reading.name_chosen import with_name_chosen
 from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named
@@ -132,6 +133,7 @@ from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judg
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
+from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
@@ -252,6 +254,9 @@ class InstructionParser:
             signs=self._signs,
             is_speaker=lambda said: self._names_only(said, requester),
         )
+        # "Sue on reception needs a pen": where Sue is, no part of the request (before the
+        # readings of "<name> would like", which take the name next to the verb)
+        text, _ = without_seating(self.screen.terms, text)
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
         # "Zhang would like / 'd like / could use a stapler": Zhang wants one
@@ -553,6 +558,10 @@ class InstructionParser:
             )
             if subject is not None:  # "she needs ..." → "Who do you mean by 'she'?" → "Rose"
                 text, frame = subject, self.parse(subject, requester)
+                continue
+            chosen_name = with_name_chosen(self.lex, text, frame.question or "", answer)
+            if chosen_name is not None:  # "Who do you mean by 'Tomás': ...?" "Tomás Herrera"
+                text, frame = chosen_name, self.parse(chosen_name, requester)
                 continue
             picked = with_owned_chosen(
                 self.screen.terms, text, requester, frame.question or "", answer

@@ -1,0 +1,52 @@
+"""An exact spelling tells two people apart whose names differ only by diacritics.
+
+The lexicon folds names ("Tomás" and "Tomáš" are both ``tomas``) so that a writer without
+the marks still finds the person. A writer who types the marks, though, has spelled one of
+them: "Tomás" is how Tomás Herrera writes his name and not how Tomáš Novák writes his. So of
+several people a folded name means, those whose own spelling is exactly the written one are
+meant, when some but not all are. A name written without any mark ("Tomas") says nothing of
+which spelling was meant and stays ambiguous (asked)."""
+
+from __future__ import annotations
+
+import unicodedata
+from collections.abc import Iterable, Sequence
+
+from assistantx.core.office import Office
+
+
+def _spelled(text: str) -> str:
+    """The word as written, case aside: composed (NFC) so that "á" typed as one character or
+    as "a" and a combining accent is the same spelling; possessive and apostrophes dropped."""
+    word = unicodedata.normalize("NFC", text.replace("’", "'")).casefold()
+    if word.endswith("'s"):
+        word = word[:-2]
+    return word.rstrip("'")
+
+
+def _marked(word: str) -> bool:
+    """Whether a written word carries a diacritic (a letter beyond plain ASCII)."""
+    return any(ord(c) > 127 and c.isalpha() for c in word)
+
+
+def _own_words(office: Office, person: str) -> frozenset[str]:
+    p = office.person(person)
+    return frozenset(_spelled(w) for name in (p.name, *p.aliases) for w in name.split())
+
+
+def exactly_spelled(office: Office, written: Iterable[str], ids: Sequence[str]) -> tuple[str, ...]:
+    """Of ``ids`` (people one folded name means), those whose own names spell every written
+    word exactly, where the writer typed a diacritic and that leaves some but not all of
+    them. Where none of ``ids`` spells it so (Tomás Herrera's alias "Tomás" won the folded
+    "tomas", but "Tomáš" was typed), the colleagues who do spell it so. Else ``ids``."""
+    words = [_spelled(w) for w in written]
+    if not ids or not any(_marked(w) for w in words):
+        return tuple(ids)
+
+    def spells(person: str) -> bool:
+        return all(w in _own_words(office, person) for w in words)
+
+    exact = tuple(i for i in ids if spells(i))
+    if not exact:
+        return tuple(p.id for p in office.people if spells(p.id)) or tuple(ids)
+    return exact if len(exact) < len(ids) else tuple(ids)
