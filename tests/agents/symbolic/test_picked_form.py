@@ -65,3 +65,9 @@ def test_a_paper_and_a_file_without_a_pick_read_as_before() -> None:
 def test_blank_paper_picked_by_another_word_is_still_paper() -> None:
     tasks = _tasks(_default("I need some paper, the printer one"))
     assert [(k, i, r) for k, i, _, r in tasks] == [("transfer", "paper", "lee")]
+
+
+def test_a_head_that_is_another_thing_of_the_office_keeps_its_words() -> None:
+    # blank paper is the default office's own thing: "the printed one" picks no document
+    tasks = _tasks(_default("I need some paper, the printed one"))
+    assert [(k, i, r) for k, i, _, r in tasks] == [("transfer", "paper", "lee")]

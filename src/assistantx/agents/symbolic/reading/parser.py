@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     with_antecedent,
 )
 from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
@@ -242,6 +243,7 @@ class InstructionParser:
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's document, the pdf one": the form picks the office's file or paper
         text = self._picked_form(text)
+        text = carrying_particles(text)  # "bring some up to reception": to reception
         # "with Rosa - Álvarez, not Lindqvist": the namesake the later words name
         text = self._namesake_surnames(text)
         # "copy my document and a printout": the printout is printing's, a task of its own

@@ -7,9 +7,10 @@ file sent. Before, "the paper one" named the office's blank paper (fetched as a 
 and "the pdf one" a second file with nobody to pass it to.
 
 The pick is read from the office's own data: the head said before it must be a name of the
-office's paper or file type (or an everyday noun of either, ``paper_nouns``/``file_nouns``),
-and it is said again as the name of the picked type, the pick dropped. A head that is no
-paper or file ("a cup, the paper one") and an office without both forms keep their words.
+office's paper or file type (or an everyday noun of either, ``paper_nouns``/``file_nouns``,
+that names no other thing of the office), and it is said again as the name of the picked
+type, the pick dropped. A head that is no paper or file ("a cup, the paper one", "some paper,
+the printed one" where paper is blank paper) and an office without both forms keep their words.
 """
 
 from __future__ import annotations
@@ -46,6 +47,14 @@ class PickedForm:
         heads = set(english.entries("paper_nouns")) | set(english.entries("file_nouns"))
         for t in (office.item_type(paper), office.item_type(file)):
             heads |= {language.fold(n) for n in (t.name, *t.synonyms)}
+        # a name of another of the office's things is that thing ("some paper, the printed
+        # one" where paper is the printer's blank paper): no paper or file to pick
+        heads -= {
+            language.fold(n)
+            for t in office.item_types
+            if t.id not in (paper, file)
+            for n in (t.name, *t.synonyms)
+        }
         forms = _ELECTRONIC | _PAPER
         polite = rf"(?P<polite>(?:\s+(?:{_alternation(set(_POLITE))}))?)"
         self._pattern = re.compile(
