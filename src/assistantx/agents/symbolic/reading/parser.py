@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     with_antecedent,
 )
 from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
@@ -111,6 +112,7 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
+from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
@@ -215,6 +217,7 @@ class InstructionParser:
         self.operations = OperationChooser(office)
         self._something_from = SomethingFrom(office)  # "something from the vending machine"
         self._products_listed = ProductsListed(office)  # "copy my document and a printout"
+        self._picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
         self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
@@ -241,6 +244,9 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "Wang's document, the pdf one": the form picks the office's file or paper
+        text = self._picked_form(text)
+        text = carrying_particles(text)  # "bring some up to reception": to reception
         # "with Rosa - Álvarez, not Lindqvist": the namesake the later words name
         text = self._namesake_surnames(text)
         # "copy my document and a printout": the printout is printing's, a task of its own

@@ -104,6 +104,12 @@ _ONE_MORE = frozenset({"one", "some", "hers", "his", "mine", "theirs"})
 # The errand itself, said again: "someone already did *it*"
 _THE_ERRAND = frozenset({"it", "that", "this"})
 _HAVE_NOW = frozenset({"have", "ive", "weve", "got"})
+# "it's already got coffee on it", "this one has already got a crease": what a thing has is its
+# state, never the speaker's having what was asked for; the subject is read past the helping
+# words between it and "have"/"got"
+_THING_SUBJECTS = frozenset({"it", "its", "this", "that", "one"})
+_BEFORE_HAVING = frozenset({"s", "has", "have", "ve", "d", "had"}) | english.words("done_markers")
+_BEFORE_HAVING |= {"just", "still", "also", "now"}
 # "he can have mine", "you may have it": a "have" given leave or promised, not had now
 _MAY_HAVE = _MODALS | {"can", "could", "may", "might", "will", "would", "shall", "should", "to"}
 _PREPOSITIONS = frozenset({"in", "to", "for", "with", "on", "of", "at"})
@@ -360,6 +366,15 @@ _BE_OR_HAVE = frozenset({"is", "was", "are", "were", "has", "have", "had"})
 _NO_WORK = frozenset({"make"})
 
 
+def _thing_subject(before: list[str]) -> bool:
+    """Whether the subject said before a "have"/"got" of having is a thing ("it", "this one"),
+    past the helping words and news marks between them ("it's already", "this one has")."""
+    k = len(before)
+    while k > 0 and before[k - 1] in _BEFORE_HAVING:
+        k -= 1
+    return k > 0 and before[k - 1] in _THING_SUBJECTS
+
+
 class SpeechActs:
     """Classifies the pieces of a message against one office's vocabulary."""
 
@@ -412,12 +427,16 @@ class SpeechActs:
         if _said_anywhere(w, _DECLINING_THANKS_AT):
             return True
         w = _without_hedges(w)
-        if not w or self._imperative(w) or w[0] in _MODALS or w[0] in _AUX - {"did"}:
+        marked = bool(w) and _said_anywhere(w, _DONE_MARKERS_AT)
+        # "got one already": a having marked as news opens no question ("got any tape?")
+        news = marked and w[0] in _HAVE_NOW
+        if not w or self._imperative(w) or w[0] in _MODALS or (w[0] in _AUX - {"did"} and not news):
             return False  # "could you ...", "did Ida bring one?" (a question) is no news
-        marked = _said_anywhere(w, _DONE_MARKERS_AT)
         if not marked and _said_anywhere(w, _PAST_TIMES_AT):
             return False  # "he lent me his last week": back-story told with the request
         mine = bool(set(w) & (_FOR_SPEAKER | {"us", "we", "weve"}))
+        # "got one already, thanks": a having with its subject dropped is the speaker's
+        mine = mine or w[0] in _HAVE_NOW
         for n, x in enumerate(w):
             if not language.is_past_verb(x) and x not in _HAVE_NOW:
                 continue
@@ -425,6 +444,8 @@ class SpeechActs:
                 continue  # "I've lost mine": "have" of the perfect, its verb read next
             if x in _HAVE_NOW and n > 0 and w[n - 1] in _MAY_HAVE:
                 continue  # "so he can have mine": an offer of the speaker's, nothing had
+            if x in _HAVE_NOW and _thing_subject(w[:n]):
+                continue  # "it's already got a stain on it": the thing's state
             lemmas = language.verb_lemmas(x) or {"have"}
             if not lemmas & (self.lex.cue_words | _DONE_VERBS):
                 continue

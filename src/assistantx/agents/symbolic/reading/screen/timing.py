@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english
 from assistantx.core.task_schema import Evidence
 
 # The nouns of a short while: "a sec", "a mo", "a tick", "a spare minute".
@@ -30,8 +31,14 @@ def is_while_noun(word: str) -> bool:
 _YOU = r"(?:you|u|ya|yo)"
 _HAVE = r"(?:'ve\s+got|'ve|\s+have\s+got|\s+have|\s+get|\s+got|\s+find|\s+are\s+free|'re\s+free)"
 # "when you get a sec", "whenever you've a minute", "in a tick", "whenever (you can)": each
-# must end its clause (a stop, a comma, a join or a courtesy, or the end of the message).
-_END = r"(?=\s*(?:$|[.,;:!?)…-]|(?:and|then|please|pls|plz|thanks|thank|thx|ta|cheers|x)\b))"
+# must end its clause (a stop, a comma, a join or a courtesy, or the end of the message), or
+# open the request said right after it unpunctuated: its modal and "you" ("when you get a sec
+# could you print ...")
+_ASKED_NEXT = rf"(?:{'|'.join(sorted(english.words('request_modals')))})\s+(?:you|u|ya)\b"
+_END = (
+    r"(?=\s*(?:$|[.,;:!?)…-]|(?:and|then|please|pls|plz|thanks|thank|thx|ta|cheers|x)\b"
+    rf"|{_ASKED_NEXT}))"
+)
 _IDIOM = re.compile(
     r"(?:,\s*)?\b(?:"
     rf"when(?:ever)?\s+{_YOU}{_HAVE}\s+(?:a|the)\s+{_WHILE}"
