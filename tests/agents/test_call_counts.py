@@ -78,7 +78,10 @@ async def test_a_request_that_timed_out_after_a_repair_is_counted(
         return malformed_json() if len(scripted_llm.requests) == 1 else slow(30)
 
     scripted_llm.respond_with(answer)
-    trace = await _trace(office, scripted_llm, name)
+    # a timeout a loaded machine's connect and first answer fit in (0.5 s did not, at load
+    # 20), the repair still never back within it; no retries of the timed-out request, so
+    # the wait is one timeout per call
+    trace = await _trace(office, scripted_llm, name, llm_timeout_s=1.5, llm_max_retries=0)
 
     assert len(scripted_llm.requests) >= 2
     assert trace.usage.llm_calls == len(scripted_llm.requests)
