@@ -8,6 +8,7 @@ from __future__ import annotations
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
+    means_words,
     named_after,
     names_no_place,
     only_describes,
@@ -52,6 +53,11 @@ def _verbs_of_another(by_verb: list[Operation], task: Task, tasks: list[Task]) -
     return any(op.input == u.item != task.item for op in by_verb for u in tasks)
 
 
+def _means_of(op: Operation) -> tuple[str, ...]:
+    """The means a send-out service's name says it sends by ("courier"); none for others."""
+    return means_words(op.name) if op.sends_out else ()
+
+
 def _filler(word: str) -> bool:
     return word in _BETWEEN_VERB_AND_PRODUCT or word.isdigit()
 
@@ -78,6 +84,10 @@ class OperationChooser:
             }
             | phrases.of_operation(op.id)
             | done_forms(op, office)
+            # a send-out service is also named by the means its name says ("send by
+            # courier": "courier my form", "by courier"): that service, never another
+            # that happens to take the item
+            | {form for means in _means_of(op) for form in inflections(means)}
             for op in office.operations
         }
 

@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.owned_facility import runs_into_a_noun
+from assistantx.agents.symbolic.reading.possessed_thing import possessed
 from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
@@ -458,6 +459,8 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
     if any(c.isdigit() for c in word):
         return False  # "down to A4", "for the Y9 trip": a size or a code, nobody's name
     following = mentions[n + 1] if n + 1 < len(mentions) else None
+    if m.possessive:  # "Kit's *signed* statement": the thing past the words describing it
+        following = possessed(tokens, mentions, n)
     prev = prev_word(tokens, m.start, skip_titles=False)
     if m.possessive and following is not None and following.kind == "item":
         # "Smith's stapler"; but "an editor's notebook": a kind of person, said in lower

@@ -66,6 +66,7 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
         "unsupported",  # a service nothing here offers, before an outsider is asked about
         "instead",  # a colleague asked to run a facility they do not ("get Zhang to copy it")
+        "instead",  # a means of sending out the office lacks ("go out with the courier")
         "instead",  # a recipient who is nobody of the office ("the courier guy")
     ]
 

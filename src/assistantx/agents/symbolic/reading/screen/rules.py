@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
 from assistantx.agents.symbolic.reading.screen.timed_event import timed_event
+from assistantx.agents.symbolic.reading.screen.unoffered_means import unoffered_means
 from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
@@ -149,5 +150,7 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unsupported", unsupported),
     # "get Zhang to make me a copy" where Zhang does not run the copier: asked, not rerouted
     ("instead", asked_doer),
+    # "can my contract go out with the courier" where only the post sends: offered, not swapped
+    ("instead", unoffered_means),
     ("instead", outsider),
 )
