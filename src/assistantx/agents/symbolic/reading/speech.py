@@ -171,7 +171,12 @@ def _attributive(w: list[str], n: int) -> bool:
     thing, and the statement's verb is later. Any other word there is read as before."""
     if n < 1 or n + 1 >= len(w) or w[n - 1] not in _ONLY_DETERMINERS:
         return False
+    if w[n + 1] in _ONE:
+        return False  # "the printed one": a thing picked by how it is, no statement's subject
     return language.is_past_participle(w[n]) and language.is_noun(w[n + 1])
+
+
+_ONE = frozenset({"one", "ones"})
 
 
 _SELF_PLANS = frozenset({"ill"})
