@@ -17,7 +17,8 @@ TEST_INSTALLS := install-synapse install-browser install-llm-server install-post
 # The suite runs on TEST_WORKERS processes (pytest-xdist): most of a test's time is spent
 # waiting on a server, a subprocess or a simulated second, so two workers overlap those waits
 # even on 2 cores. `--dist loadgroup` keeps the tests that share one session server (Synapse,
-# llama.cpp) on one worker (tests/conftest.py groups them). TEST_WORKERS=0 runs in one process.
+# llama.cpp) on one worker (tests/conftest.py groups them), and hands the other tests out a
+# module at a time (tests/helpers/xdist_schedule.py). TEST_WORKERS=0 runs in one process.
 # Compiled bytecode is cached (under .cache/pycache) even where the environment sets
 # PYTHONDONTWRITEBYTECODE: without it every worker, served app and CLI subprocess compiles
 # and assertion-rewrites every module again (collection alone: 20 CPU-s, 11.5 with the cache).

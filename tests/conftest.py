@@ -21,7 +21,7 @@ from helpers.postgres import (  # noqa: F401  (the tests' PostgreSQL, and both s
     postgres_cluster,
     postgres_url,
 )
-from helpers.xdist_schedule import long_modules_first, name_groups_in_ids
+from helpers.xdist_schedule import ModuleScheduling, long_modules_first, name_groups_in_ids
 from netguard import guarded_connect, guarded_connect_ex, guarded_getaddrinfo
 
 # Under pytest-xdist (`make test` runs two workers, `--dist loadgroup`), the tests that share
@@ -75,6 +75,13 @@ def pytest_collection_modifyitems(
         name_groups_in_ids(items)
         items[:] = long_modules_first(items)
     return result
+
+
+# `--dist loadgroup` hands out whole modules (and groups), not single tests: see
+# `helpers.xdist_schedule.ModuleScheduling`.
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config: pytest.Config, log: object) -> ModuleScheduling | None:
+    return ModuleScheduling(config, log) if config.getvalue("dist") == "loadgroup" else None
 
 
 # What collection built (every test module, its imports, the items and their parameters)

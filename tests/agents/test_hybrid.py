@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.hybrid import (
     UNSURE_QUESTION,
@@ -20,6 +19,7 @@ from assistantx.sim.office import SimOffice
 from fakes.fixtures import scripted_llm  # noqa: F401
 from fakes.scripted_llm import ScriptedLLM, json_reply
 from helpers.llm_office import llm_model, llm_settings, make_assistant
+from helpers.yaml_files import raw_yaml
 
 
 @pytest.fixture(scope="module")
@@ -172,7 +172,7 @@ async def test_the_cascade_never_sends_a_fax_to_an_answer_that_says_i_dont_know(
     # "please fax my document": the embedded reader asks where to; the requester of `run`
     # knows no more than they wrote. Read as the answer, "Sorry, I don't ..." was the place
     # the fax went to; the question stays open, and the model (unsure here) is asked instead
-    raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw = raw_yaml(DEFAULT_OFFICE)
     raw["operations"].append(
         {"id": "fax", "name": "fax", "verbs": ["fax"], "input": "document", "sends_out": True}
     )

@@ -6,15 +6,13 @@ Lan"), for the reader's tests that no ordinary word stands for a person."""
 
 from __future__ import annotations
 
-import copy
 import functools
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 # id, full name, aliases, desk
 PEOPLE: tuple[tuple[str, str, list[str], str], ...] = (
@@ -32,7 +30,7 @@ ADDED = frozenset(p[0] for p in PEOPLE)
 def raw_with_many_part_names(base: Path, kept: str) -> dict[str, Any]:
     """``base``'s office file with the people above, each keeping a paper document, a file
     and a ``kept`` thing."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(base.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(base)
     for pid, name, aliases, desk in PEOPLE:
         raw["people"].append(
             {

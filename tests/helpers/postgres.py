@@ -24,7 +24,6 @@ from pathlib import Path
 import pytest
 
 from helpers.eventually import eventually_sync
-from helpers.servers import free_port
 
 UNPRIVILEGED = "nobody"
 START_TIMEOUT_S = 60.0
@@ -110,6 +109,8 @@ def start_cluster() -> Cluster:
          "-E", "UTF8", "--locale=C"],
         check=True, capture_output=True, cwd=folder, **as_user,  # type: ignore[call-overload]
     )  # fmt: skip
+    from helpers.servers import free_port  # FastAPI: not at import (tests/conftest.py's)
+
     port = free_port()
     options = [f"-c{key}={value}" for key, value in SETTINGS.items()]
     log = (folder / "postgres.log").open("wb")

@@ -9,10 +9,9 @@ import functools
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 # person id → (full name, aliases)
 Renames = tuple[tuple[str, str, tuple[str, ...]], ...]
@@ -20,7 +19,7 @@ Renames = tuple[tuple[str, str, tuple[str, ...]], ...]
 
 @functools.cache
 def _raw(path: Path) -> dict[str, Any]:
-    loaded: dict[str, Any] = yaml.safe_load(path.read_text(encoding="utf-8"))
+    loaded: dict[str, Any] = raw_yaml(path)
     return loaded
 
 

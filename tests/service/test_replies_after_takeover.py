@@ -42,7 +42,9 @@ def unanswered(record: dict[str, Any]) -> list[str]:
 async def test_an_answer_written_after_the_office_moved_is_heard(
     tmp_path: Path, database_url: str | None
 ) -> None:
-    settings: dict[str, Any] = {"robot": "sim", "database_url": database_url}
+    # speed-up 200 (the tests' default is 50): the test is about the end state, two errands run
+    # to done, not about their pace
+    settings: dict[str, Any] = {"robot": "sim", "database_url": database_url, "speedup": 200}
     async with serving_runtime(tmp_path / "replica-a", **settings) as (api, _):
         first = await run_one(api, "lee", "Please bring me a stapler.")
     # The next process: the same folder when the journal is there, another replica's

@@ -4,7 +4,6 @@ from the office's own tables (a "label printer" is a thing to lend, not a reques
 from __future__ import annotations
 
 import pytest
-import yaml
 
 from assistantx.agents.symbolic import build_factory
 from assistantx.core.office import DEFAULT_OFFICE, Office, load_office, parse_office
@@ -14,6 +13,7 @@ from assistantx.sim.requester import Wish, answer
 from assistantx.sim.run import run_in_sim
 from assistantx.sim.understanding import mentioned_requests
 from assistantx.sim.world import World
+from helpers.yaml_files import raw_yaml
 
 
 @pytest.fixture(scope="module")
@@ -190,7 +190,7 @@ def test_a_keeper_reads_whose_item_by_the_full_name_not_a_colleagues_given_name(
 def _with_anna_mao(owned: dict[str, str]) -> Office:
     """The default office with Anna Mao, whose family name is a colleague's given name (Mao
     Jun), owning ``owned``."""
-    raw = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw = raw_yaml(DEFAULT_OFFICE)
     raw["people"].append(
         {
             "id": "anna",

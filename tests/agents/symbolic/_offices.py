@@ -3,19 +3,17 @@ mail room of services whose names are verbs (shred, bind, fax) and people with d
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
-
-import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import Office, load_office, parse_office
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE, harbour_office
+from helpers.yaml_files import raw_yaml
 
 
 def _mail_room_office() -> Office:
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     raw["locations"].append(
         {"id": "mail_room", "kind": "facility", "name": "Mail room", "x": 37.0, "y": 16.0}
     )

@@ -8,7 +8,6 @@ import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.reading.categories import (
@@ -25,6 +24,7 @@ from helpers.clinic import clinic
 from helpers.hostel import hostel, raw_hostel
 from helpers.playhouse import playhouse
 from helpers.printshop import printshop
+from helpers.yaml_files import raw_yaml
 
 _HARBOUR = DEFAULT_OFFICE.parent / "offices" / "harbour" / "office.yaml"
 
@@ -68,7 +68,7 @@ def _place_names(office: Office) -> set[str]:
 
 
 def _table_phrases() -> set[str]:
-    raw: dict[str, Any] = yaml.safe_load(CATEGORIES_FILE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(CATEGORIES_FILE)
     phrases = [str(k) for k in raw] + [
         str(w) for entry in raw.values() for key in entry for w in entry[key]
     ]

@@ -5,23 +5,22 @@ the colleague in a clear name slot (capitalised inside a sentence, or after "to"
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _office() -> Office:
     """Harbour where Mark is Trần Văn An, called An."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     for p in raw["people"]:
         if p["id"] == "mark":
             p["name"], p["aliases"] = "Trần Văn An", ["An"]

@@ -4,17 +4,16 @@ alias is Mai), else the first word of the full name; never the family name said 
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.core.name_parts import greeting_name
 from assistantx.core.office import Office, load_office, parse_office
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 _NAMES = {
     "may": ("Nguyễn Thị Mai", ["Mai"]),
@@ -27,7 +26,7 @@ _NAMES = {
 @functools.cache
 def _office() -> Office:
     """Harbour whose people include family-name-first names."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     for p in raw["people"]:
         if p["id"] in _NAMES:
             p["name"], p["aliases"] = _NAMES[p["id"]][0], list(_NAMES[p["id"]][1])

@@ -10,12 +10,12 @@ from __future__ import annotations
 import functools
 
 import pytest
-import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import HARBOUR_FILE, default_office
 from helpers.reading import answered_reader, frame_reader, parser_for
+from helpers.yaml_files import raw_yaml
 
 _DEFAULT = frame_reader(default_office, "lee")
 _ANSWERED = answered_reader(default_office, "lee")
@@ -25,7 +25,7 @@ _ANSWERED = answered_reader(default_office, "lee")
 def _harbour_with_a_multifunction_scanner() -> Office:
     """The harbour office whose scanner also prints files, also called "the office machine"
     (a name of neither service: "the scanner" itself picks its scan)."""
-    raw = yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8"))
+    raw = raw_yaml(HARBOUR_FILE)
     for facility in raw["facilities"]:
         if facility["id"] == "scanner":
             facility["operations"] = [*facility["operations"], "print"]

@@ -4,23 +4,22 @@
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 from _offices import parser, tasks_of
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import parse_office
 from helpers.dataset_offices import HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _without(operation: str) -> InstructionParser:
     """Harbour with one operation, and every facility's use of it, taken away."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     gone = next(o for o in raw["operations"] if o["id"] == operation)
     raw["operations"].remove(gone)
     for f in raw["facilities"]:

@@ -16,16 +16,16 @@ import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import HARBOUR_FILE, default_office, harbour_office
 from helpers.reading import frame_reader
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _harbour_with_long_names() -> Office:
-    raw: dict[str, Any] = yaml.safe_load(HARBOUR_FILE.read_text())
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     raw["item_types"] += [
         {
             "id": "hand_warmer",

@@ -12,18 +12,18 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part
 from assistantx.evaluation.dataset.generate import verify_tasks
 from helpers.dataset_tasks import every_task
+from helpers.yaml_files import raw_yaml
 
 
 @pytest.fixture(scope="module")
 def office() -> Office:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     raw["operations"] += [
         {"id": "fax", "name": "fax", "verbs": ["fax"], "input": "document"},
         {"id": "bind", "name": "bind", "verbs": ["bind"], "input": "document"},
@@ -74,7 +74,7 @@ async def test_a_new_service_runs_to_done_and_is_told_with_its_own_verb(
 async def test_a_service_that_consumes_the_item_hands_nothing_back() -> None:
     """A shredder (``consumes: true``): the document goes in and stays shredded; the requester
     is told "shredded", and no code asks anyone to take it out again."""
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     raw["operations"].append(
         {"id": "shred", "name": "shred", "verbs": ["shred"], "input": "document", "consumes": True}
     )

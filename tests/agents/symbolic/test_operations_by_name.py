@@ -7,7 +7,6 @@ from __future__ import annotations
 
 from typing import Any
 
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.core.actions import SendQR
@@ -18,10 +17,11 @@ from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
 from assistantx.runtime import consent
 from assistantx.runtime.consent import check
 from helpers.consent_memory import answered, memory
+from helpers.yaml_files import raw_yaml
 
 
 def _raw() -> dict[str, Any]:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     return raw
 
 

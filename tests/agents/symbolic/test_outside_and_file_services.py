@@ -8,17 +8,17 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.agents.oracle.plan import build_plan
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
 from assistantx.core.task_spec import BaseInstruction, Part, check_base
 from assistantx.evaluation.dataset.generate import _task, classify, verify_tasks
+from helpers.yaml_files import raw_yaml
 
 
 def _office(**op: Any) -> Office:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     raw["item_types"].append({"id": "pdf", "name": "PDF", "kind": "electronic"})
     raw["operations"] = [o for o in raw["operations"] if o["id"] != "copy"]
     raw["operations"].append({"verbs": [op["name"]], "input": "document", **op})

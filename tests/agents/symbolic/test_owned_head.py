@@ -8,21 +8,20 @@ here: harbour and the default office, each with a few types of several words add
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import Office, parse_office
 from assistantx.core.task_schema import TaskFrame
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 
 def _with(file: Any, types: list[dict[str, Any]], owns: dict[str, list[str]], name: str) -> Office:
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(file.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(file)
     raw["item_types"] += types
     for p in raw["people"]:
         for type_id in owns.get(p["id"], []):

@@ -11,17 +11,17 @@ import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.core.office import Office, parse_office
 from assistantx.core.task_schema import TaskFrame
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE, default_office
 from helpers.reading import frame_reader
+from helpers.yaml_files import raw_yaml
 
 
 def _with_tool(path: Any, owner: str, entry: dict[str, Any]) -> Office:
     """The office at ``path`` with one more item type, owned by ``owner``."""
-    raw = yaml.safe_load(path.read_text())
+    raw = raw_yaml(path)
     raw["item_types"].append(entry)
     person = next(p for p in raw["people"] if p["id"] == owner)
     person.setdefault("owns", []).append({"type": entry["id"]})

@@ -11,12 +11,12 @@ import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.core.office import Office, parse_office
 from assistantx.core.task_schema import operation_of
 from helpers.dataset_offices import DEFAULT_FILE, HARBOUR_FILE
 from helpers.reading import frame_reader
+from helpers.yaml_files import raw_yaml
 
 _PDF = {"name": "scanned PDF", "synonyms": ["pdf", "scan"], "kind": "electronic"}
 
@@ -29,7 +29,7 @@ def _without_pdf(raw: dict[str, Any]) -> None:
 
 @functools.cache
 def _default_that_scans() -> Office:
-    raw = yaml.safe_load(DEFAULT_FILE.read_text())
+    raw = raw_yaml(DEFAULT_FILE)
     _without_pdf(raw)
     raw["item_types"].append({"id": "scanned_pdf", **_PDF})
     raw["operations"].append(
@@ -44,7 +44,7 @@ def _default_that_scans() -> Office:
 
 @functools.cache
 def _harbour_that_scans_to_pdf() -> Office:
-    raw = yaml.safe_load(HARBOUR_FILE.read_text())
+    raw = raw_yaml(HARBOUR_FILE)
     _without_pdf(raw)
     scan = next(t for t in raw["item_types"] if t["id"] == "scan")
     scan.update(_PDF)

@@ -8,17 +8,17 @@ import functools
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import DEFAULT_OFFICE, Office, parse_office
 from assistantx.core.task_schema import TaskFrame
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _courier_office() -> Office:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     raw["operations"].append(
         {
             "id": "courier",
@@ -103,7 +103,7 @@ async def test_the_courier_is_told_the_statements_destination() -> None:
 def _permit_office() -> Office:
     """The default office where Lee also owns a signable permit (two signable papers) and
     Mao owns nothing signable."""
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     raw["item_types"].append(
         {"id": "permit", "name": "permit", "kind": "personal", "signable": True}
     )

@@ -17,7 +17,6 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.agents.oracle.plan import build_plan
@@ -37,6 +36,8 @@ from helpers.dataset_tasks import verify_every_variant
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "bench"))
 from _phrasing_judge import Case, judge  # bench/ is no package: on the path above
 
+from helpers.yaml_files import raw_yaml
+
 
 def _default() -> Office:
     return default_office_that_scans("scan", "file")
@@ -44,7 +45,7 @@ def _default() -> Office:
 
 def _harbour_pdf() -> Office:
     """Harbour with its scanner scanning to PDF (its own electronic file type), not to paper."""
-    raw: dict[str, Any] = yaml.safe_load(HARBOUR_FILE.read_text())
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     op = next(o for o in raw["operations"] if o["id"] == "scan")
     op["product"], op["name"] = "file", "scan to PDF"
     next(f for f in raw["facilities"] if f["id"] == "scanner")["products"] = ["file"]

@@ -8,24 +8,23 @@ is no service ("bring it to Wang") after two things stated still asks which."""
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 from _offices import parser, tasks_of
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core import language
 from assistantx.core.office import parse_office
 from helpers.dataset_offices import HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _key_desk() -> InstructionParser:
     """Harbour with car keys ("fob") and a key programmer in the badge office."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     raw["item_types"].append(
         {"id": "car_key", "name": "car key", "synonyms": ["fob", "key fob"], "kind": "personal"}
     )

@@ -8,7 +8,6 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import run_instruction
 
 from assistantx.agents.oracle.plan import build_plan
@@ -20,10 +19,11 @@ from assistantx.evaluation.dataset.generate import _task, classify, generate, ve
 from assistantx.runtime.consent import consent_owner
 from assistantx.sim.people import handover_problem
 from assistantx.sim.world import World
+from helpers.yaml_files import raw_yaml
 
 
 def _raw(**cupboard: Any) -> dict[str, Any]:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     raw["item_types"].append(
         {"id": "tape", "name": "tape", "synonyms": ["sticky tape"], "consumable": True}
     )

@@ -8,23 +8,22 @@ still a part of the thing."""
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 from _offices import parser, tasks_of
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import parse_office
 from helpers.dataset_offices import HARBOUR_FILE
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _charging() -> InstructionParser:
     """Harbour with laptops and a charging dock in the copy room."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     raw["item_types"].append({"id": "laptop", "name": "laptop", "kind": "personal"})
     raw["operations"].append(
         {"id": "charge", "name": "charge", "verbs": ["charge", "recharge"], "input": "laptop"}

@@ -7,24 +7,23 @@ two people share is still asked about."""
 
 from __future__ import annotations
 
-import copy
 import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.symbolic.reading.surnames import family_first
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import HARBOUR_FILE, default_office, harbour_office
 from helpers.reading import frame_reader
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _given_and_family() -> Office:
     """Harbour where one colleague's family name is another's given name (Lina Omar beside
     Omar Haddad), and no alias has a title: the office says nothing of the order."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(HARBOUR_FILE.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
     for p in raw["people"]:
         if p["id"] == "may":
             p["name"], p["aliases"] = "Lina Omar", []

@@ -6,18 +6,18 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-import yaml
 from symbolic_run import answer_first_question, expected_tasks, run_instruction
 
 from assistantx.agents.symbolic import InstructionParser, Task
 from assistantx.core.office import Office, parse_office
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.sim.requester import NOTHING_TO_ADD
+from helpers.yaml_files import raw_yaml
 
 PARAPHRASES = Path(__file__).with_name("paraphrases.yaml")
 
 
-PARAPHRASE_CASES: list[dict[str, Any]] = yaml.safe_load(PARAPHRASES.read_text(encoding="utf-8"))
+PARAPHRASE_CASES: list[dict[str, Any]] = raw_yaml(PARAPHRASES)
 
 
 def test_the_paraphrase_set_is_large() -> None:

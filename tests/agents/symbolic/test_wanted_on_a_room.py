@@ -6,16 +6,15 @@ tests' own, built from the default office and harbour with a room called by a sh
 
 from __future__ import annotations
 
-import copy
 import functools
 from pathlib import Path
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.core.office import Office, load_office, parse_office
 from helpers.reading import frame_reader
+from helpers.yaml_files import raw_yaml
 
 _DATA = Path(__file__).parents[3] / "dataset"
 
@@ -23,7 +22,7 @@ _DATA = Path(__file__).parents[3] / "dataset"
 def _renamed(path: Path, facility: str, name: str, synonyms: list[str]) -> Office:
     """The office at ``path`` with ``facility`` (a room nobody's service is run in) called
     ``name``, and ``synonyms`` its short names."""
-    raw: dict[str, Any] = copy.deepcopy(yaml.safe_load(path.read_text(encoding="utf-8")))
+    raw: dict[str, Any] = raw_yaml(path)
     for row in raw["facilities"]:
         if row["id"] == facility:
             row["name"], row["synonyms"] = name, synonyms

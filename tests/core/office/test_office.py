@@ -11,6 +11,7 @@ import yaml
 
 from assistantx.core.errors import OfficeError
 from assistantx.core.office import DEFAULT_OFFICE, load_office
+from helpers.yaml_files import raw_yaml
 
 PAPER_PEOPLE = {
     "mao",
@@ -72,7 +73,7 @@ def test_default_office_matches_the_paper() -> None:
 
 
 def _write(tmp_path: Path, mutate: Any) -> Path:
-    raw = yaml.safe_load(DEFAULT_OFFICE.read_text())
+    raw = raw_yaml(DEFAULT_OFFICE)
     mutate(raw)
     path = tmp_path / "office.yaml"
     path.write_text(yaml.safe_dump(raw))

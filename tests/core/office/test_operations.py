@@ -7,16 +7,16 @@ import copy
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.core.errors import OfficeError
 from assistantx.core.office import Office, parse_office
 from helpers.dataset_offices import HARBOUR_FILE as HARBOUR
+from helpers.yaml_files import raw_yaml
 
 
 @pytest.fixture
 def raw() -> dict[str, Any]:
-    data: dict[str, Any] = yaml.safe_load(HARBOUR.read_text(encoding="utf-8"))
+    data: dict[str, Any] = raw_yaml(HARBOUR)
     return copy.deepcopy(data)
 
 
@@ -96,7 +96,7 @@ def test_inconsistent_office_is_refused_naming_file_entry_and_problem(
 def test_an_item_kept_where_several_facilities_stand_goes_to_the_one_with_no_service() -> None:
     """The previous format named no keeper: the fridge beside the kettle keeps the lunch
     (office_upgrade; the loader says so in a warning)."""
-    raw = yaml.safe_load(HARBOUR.read_text(encoding="utf-8"))
+    raw = raw_yaml(HARBOUR)
     raw["people"][2]["owns"][3].pop("facility")
     office = parse_office(raw, "harbour")
     keeper = office.keeper("will", "lunch")

@@ -13,7 +13,6 @@ import functools
 from typing import Any
 
 import pytest
-import yaml
 
 from assistantx.agents.oracle.plan import build_plan
 from assistantx.agents.oracle.policy import dry_run
@@ -25,11 +24,12 @@ from assistantx.core.task_spec import BaseInstruction, Part, check_base
 from assistantx.sim.office import SimOffice
 from helpers.dataset_tasks import verify_every_variant
 from helpers.office import run_one, sim_assistant
+from helpers.yaml_files import raw_yaml
 
 
 @functools.cache
 def _raw() -> dict[str, Any]:
-    raw: dict[str, Any] = yaml.safe_load(DEFAULT_OFFICE.read_text(encoding="utf-8"))
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
     return raw
 
 
