@@ -107,6 +107,16 @@ def part_operation(office: Office, part: Part) -> Operation:
         if not ops:
             raise ValueError(f"the office has no operation for {part.kind}")
         op = ops[0]
+        if len(ops) > 1:
+            # a photocopier and a scan to PDF both copy: the one the kind names, never
+            # whichever the office file happens to list first
+            named = [o for o in ops if part.kind == o.id or part.kind in o.verbs]
+            if len(named) != 1:
+                raise ValueError(
+                    f"several operations do {part.kind} here ({', '.join(o.id for o in ops)}):"
+                    " name one with operation:"
+                )
+            op = named[0]
     if op.shape(office) != shape:
         raise ValueError(f"operation {op.id!r} does not fit {part.kind}")
     if not office.offering(op.id):
