@@ -45,6 +45,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
+from assistantx.agents.symbolic.reading.placed_thing import placed_things
 from assistantx.agents.symbolic.reading.surnames import family_names
 from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
@@ -451,8 +452,10 @@ def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:
         return any(m.possessive for m in _mentions(office_words, _tokens(said)))
 
     # read as the reader reads it: "leave it w/ Hal" is "leave it with Hal", and "put the
-    # ruler next to Hal's" is "at Hal's desk" (near_possessive), where Hal receives it
-    return _roles_in(office_words, near_possessives(undotted(text), is_person), requester)
+    # ruler next to Hal's" is "at Hal's desk" (near_possessive), where Hal receives it; "bring
+    # me the ruler at Hal's desk" is Hal's ruler, Hal no receiver (placed_thing)
+    read = near_possessives(placed_things(undotted(text), is_person), is_person)
+    return _roles_in(office_words, read, requester)
 
 
 # A reading depends on the office's words, the text and who wrote it only: remembered, as

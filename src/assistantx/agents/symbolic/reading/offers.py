@@ -17,6 +17,9 @@ from assistantx.core import english, language
 
 _MODALS = english.words("request_modals") | frozenset({"do", "does", "did", "will", "shall"})
 _YOU = frozenset({"you", "u", "ya", "yous", "yall"})
+# "would anyone like a coffee?": the speaker offers the office at large, most likely in the
+# wrong chat; nobody asked the assistant for anything
+_GROUP = frozenset({"anyone", "anybody", "someone", "somebody", "everyone", "everybody"})
 _WANTING = frozenset({"like", "love", "want", "fancy", "need"})
 # "would you care for a tea?": a verb that wants with "for"
 _WANTING_FOR = frozenset({"care"})
@@ -35,11 +38,11 @@ def offered(w: list[str], asks: bool) -> bool:
         if w[1:2] and w[1] in _SPEAKER:
             return _gives_you(w[2:])  # "can I get you a tea?"
         k = 1
-    if w[k : k + 1] and w[k] in _YOU:
+    if w[k : k + 1] and w[k] in _YOU | _GROUP:
         k += 1
     elif k == 1 or not asks:
-        return False  # "would anyone like ...": the office asked, read as before
-    if k == 1 and not (asks and w[0] in _YOU):
+        return False
+    if k == 1 and not (asks and w[0] in _YOU | _GROUP):
         return False  # "you want a pen?" is an offer only as a question
     rest = w[k:]
     if rest[:1] and rest[0] in _WANTING_FOR and rest[1:2] == ["for"]:

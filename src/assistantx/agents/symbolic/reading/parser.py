@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     with_antecedent,
 )
 from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.doubted_person import (
@@ -113,6 +114,7 @@ from assistantx.agents.symbolic.reading.parts import (
     unread_part,
 )
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
+from assistantx.agents.symbolic.reading.placed_thing import placed_things
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
@@ -274,8 +276,14 @@ class InstructionParser:
         text = reported_requests(text, self._one_name)
         # "take this book to Wang's if he's in": Wang's desk, so Wang gets it
         text = possessive_places(text, self.screen.terms.is_person_word)
+        # "bring me the ruler at Mark's desk": which ruler, where it lies; Mark's, to me
+        text = placed_things(text, self.screen.terms.is_person_word)
         # "put the ruler next to Mark's": at Mark's desk, not Mark's ruler fetched too
         text = near_possessives(text, self.screen.terms.is_person_word)
+        # "leave the calculator beside Will's lamp": a placement the robot cannot make
+        out_of_reach = beside_a_thing(text, self.screen.terms.is_person_word)
+        if out_of_reach is not None:
+            return TaskFrame(requester=requester, decline=out_of_reach)
         # "a stapler, not Wang's, Zhang's", "Hu's stapler, Gao's": one stapler, Zhang's / Gao's
         text = possessive_corrections(text, self.screen.terms.is_person_word)
         # "i need a pen. Lee's is fine": Lee's pen, asked of Lee

@@ -42,7 +42,7 @@ from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, o
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
-from assistantx.agents.symbolic.reading.thing_needs import work_told
+from assistantx.agents.symbolic.reading.thing_needs import part_told, work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
 from assistantx.agents.symbolic.reading.used_today import used_later_today
 from assistantx.core import english, language
@@ -768,6 +768,8 @@ class SpeechActs:
             return False
         if work_told(w, self.lex.items, self._work_words):
             return True  # "the cup needs washing": how the thing is, not the thing asked for
+        if part_told(w, self.lex.items, self._work_words):
+            return True  # "the calculator needs new batteries": none kept, nothing to fetch
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
         if self._minded(w):

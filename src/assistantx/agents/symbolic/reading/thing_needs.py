@@ -26,6 +26,9 @@ _NEEDS = frozenset({"needs", "need", "wants", "want"})
 _MODAL_NEEDS = (("could", "do", "with"), ("could", "use"))
 _ARTICLES = frozenset({"a", "an", "some", "another", "new", "good", "proper", "quick"})
 _MOST_WORDS = 3  # the longest name of a thing looked for ("laptop charger stand")
+# "new batteries", "more staples", "fresh ink": words before the part or supply needed
+_SUPPLY_OPENERS = _ARTICLES | frozenset({"fresh", "more", "spare", "replacement", "its"})
+_SUPPLY_WORDS = 2  # "new batteries", "ink cartridge": the longest part or supply read
 
 
 def work_told(w: list[str], items: Container[str], asked: Container[str]) -> bool:
@@ -48,6 +51,39 @@ def work_told(w: list[str], items: Container[str], asked: Container[str]) -> boo
     if work is None:
         return False
     return not any(form in asked for form in {work, *language.verb_lemmas(work)})
+
+
+def part_told(w: list[str], items: Container[str], asked: Container[str]) -> bool:
+    """Whether ``w`` says a thing of ``items`` needs a part or supply the office does not
+    keep: "the calculator needs new batteries", "the stapler needs staples", "my pen needs
+    fresh ink". The thing is the subject, so it is not what is asked for; the part is no
+    item of the office, so there is nothing to fetch either: how the thing is, a statement.
+    Left as it was, the thing itself was fetched for the speaker (a wrong physical action).
+    A part the office keeps ("the printer needs paper"), work ("needs a signature") or a
+    person ("needs Mark") is left to the rules for things and work."""
+    at = 1 if w[:1] and w[0] in _OPENERS else 0
+    size = next((k for k in range(_MOST_WORDS, 0, -1) if " ".join(w[at : at + k]) in items), 0)
+    if not size:
+        return False
+    rest = w[at + size :]
+    if not rest or rest[0] not in _NEEDS:
+        return False
+    rest = rest[1:]
+    k = 0
+    while k < len(rest) and rest[k] in _SUPPLY_OPENERS:
+        k += 1
+    part = rest[k:]
+    if not part or len(part) > _SUPPLY_WORDS or not all(p.isalpha() for p in part):
+        return False  # "needs to go back", "needs new batteries before Friday": read as before
+    if part[0] in _NOT_PARTS or any(language.is_present_participle(p) for p in part):
+        return False  # "needs flame-proofing": work, said with a gerund
+    said = {*part, " ".join(part)}
+    lemmas = {lemma for p in part for lemma in language.verb_lemmas(p)}
+    return not any(x in items or x in asked for x in said | lemmas)
+
+
+# what follows "needs" and is no part: a pronoun, an infinitive's "to", a doer
+_NOT_PARTS = frozenset({"to", "it", "me", "us", "you", "him", "her", "them", "someone"})
 
 
 def _work(rest: list[str], items: Container[str]) -> str | None:
