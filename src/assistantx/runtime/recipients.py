@@ -64,6 +64,7 @@ from assistantx.core.receiving_place import (
 )
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
+from assistantx.runtime.handed_over import subject_asked_to_have, taken_across
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
 _BY = frozenset({"by"})
@@ -497,10 +498,14 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         } - {requester}
         if len(there) == 1:
             named |= there
-    if not named and _one_handed(words, operations):
+    folded = [w.folded for w in words]
+    if not named and (
+        _one_handed(words, operations) or taken_across(folded, lambda w: _is_give(w, operations))
+    ):
         # "Sue (on reception) needs a highlighter, can you take one down": nobody named in a
         # receiving place, and "one" handed over is the thing the one colleague said to need
-        # it needs; several such decide nothing
+        # it needs; several such decide nothing. So is "it" taken over ("Mark needs my
+        # ruler, can you take it over"): to the one said to need it, whoever else is named
         needing = {
             p
             for m in mentions
@@ -516,9 +521,15 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         at_place = pronoun_receiving_place(  # "at her desk", not "the one on her desk"
             _before(words, n), w.folded, after, _ahead(words, n)
         )
-        if not at_place and (
-            w.folded not in _PRONOUNS
-            or not (_receiving(words, n, n + 1, False, operations) or _double_object(words, n))
+        # "Will's calculator died, can he have mine?": "he" asked to have it receives it
+        asked = subject_asked_to_have(_before(words, n), w.folded, folded[n + 1 : n + 4])
+        if (
+            not at_place
+            and not asked
+            and (
+                w.folded not in _PRONOUNS
+                or not (_receiving(words, n, n + 1, False, operations) or _double_object(words, n))
+            )
         ):
             continue
         # the one person named who is not the owner of what is handed over (named after

@@ -13,6 +13,7 @@ from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.described_one import described_ones
 from assistantx.agents.symbolic.reading.screen.elided_possessive import elided_item
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
+from assistantx.agents.symbolic.reading.screen.own_one import own_ones
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.purpose_object import purpose_words
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
@@ -263,6 +264,9 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
         return said
 
     text = _PART_OF_MINE.sub(part, text)
+    # "take him my spare one": the requester's own thing of the kind named last, as "mine"
+    text, found = own_ones(text, terms.lex.items, lambda before: last_item(before, "my"))
+    evidence += found
     spans = re.compile(rf"\b(\w+['’]s)\s+{_SPAN}\b(?!\s*['’]s)", re.IGNORECASE)
     text = spans.sub(
         lambda m: (
