@@ -33,6 +33,11 @@ def _tasks(frame: TaskFrame) -> list[tuple[str, str | None, str | None]]:
         "Can you scan my signed document to PDF for me?",
         "scan my document to PDF please",
         "could you scan my printed document into PDF",
+        # the service's verb in another form (blind round 89: "I need my access request form
+        # scanned to PDF for the customer" asked who PDF is)
+        "I need my document scanned to PDF",
+        "can my document be scanned into PDF please",
+        "my document needs scanning to PDF",
     ],
 )
 def test_a_products_word_after_to_is_the_results_form(text: str) -> None:
@@ -42,9 +47,12 @@ def test_a_products_word_after_to_is_the_results_form(text: str) -> None:
     assert frame.tasks[0].operation == "scan_pdf"
 
 
-def test_an_unknown_capitalised_name_after_to_is_still_asked_about() -> None:
+@pytest.mark.parametrize(
+    "text", ["take my stapler to Bob", "my document was scanned, take it to Bob"]
+)
+def test_an_unknown_capitalised_name_after_to_is_still_asked_about(text: str) -> None:
     """Not a product's word: "take my stapler to Bob" still asks who Bob is."""
-    frame = _scanning("take my stapler to Bob")
+    frame = _scanning(text)
     assert frame.question is not None and "Bob" in frame.question, frame.question
 
 

@@ -342,8 +342,9 @@ class MentionReader:
             return False
         if tokens[m.start].word not in self._result_words:
             return False
-        said = {t.word for t in tokens}
-        return any(said & {v.lower() for v in op.verbs} for op in self.office.operations)
+        verbs = {v.lower() for op in self.office.operations for v in op.verbs}
+        # "scan it to PDF", and "I need my form scanned to PDF": a service's verb in any form
+        return any(t.word in verbs or language.verb_lemmas(t.word) & verbs for t in tokens)
 
     def _made_from_nothing(self, word: str) -> bool:
         """Whether ``word`` names the product of a service that makes it from nothing."""
