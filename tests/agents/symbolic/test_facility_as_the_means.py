@@ -12,9 +12,10 @@ from __future__ import annotations
 
 import pytest
 
+from assistantx.core.office import Office, parse_office
 from helpers.courier_room import courier_room
 from helpers.dataset_offices import harbour_office, harbour_that_posts
-from helpers.dispatch_office import dispatch_office
+from helpers.dispatch_office import dispatch_office, raw_dispatch_office
 from helpers.reading import frame_reader
 
 _dispatch = frame_reader(dispatch_office, "lena")
@@ -157,3 +158,29 @@ def test_a_facility_that_sends_nothing_out_is_no_means() -> None:
     # plain harbour franks envelopes and sends nothing out: "Hull" is asked about as before
     frame = frame_reader(harbour_office, "may")("pop my letter in the post machine for Hull")
     assert frame.tasks == [] and frame.question is not None, frame
+
+
+def _goods_out() -> Office:
+    """The dispatch office whose parcel service is called "returns" at a "goods out"
+    hatch: only its verbs say how it sends ("ship", "courier")."""
+    raw = raw_dispatch_office()
+    courier = next(o for o in raw["operations"] if o["id"] == "courier")
+    courier.update({"name": "returns", "verbs": ["ship", "courier", "send back"]})
+    desk = next(f for f in raw["facilities"] if f["id"] == "courier_desk")
+    desk.update({"name": "goods out", "synonyms": ["dispatch hatch"]})
+    return parse_office(raw)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # blind round 89's shape: the service named by a verb of its own that names a sender
+        "My broken charger needs to go back to the supplier, can it go out with the courier today?",
+        "could my sample go with the courier to the lab",
+    ],
+)
+def test_a_sender_named_by_the_services_own_verb_is_the_means(text: str) -> None:
+    frame = frame_reader(_goods_out, "lena")(text)
+    assert frame.decline is None and frame.question is None, frame
+    assert [(t.item, t.operation) for t in frame.tasks] == [("parcel", "courier")]
+    assert frame.tasks[0].destination in ("the supplier", "the lab")

@@ -78,7 +78,10 @@ def _means_phrases(office: Office) -> list[tuple[str, Operation]]:
         if len(ops) != 1 or not ops[0].sends_out:
             continue
         op = ops[0]
-        for name in (facility.name, *facility.synonyms, *means_words(op.name)):
+        # and its verbs that name a sender ("ship back" whose verbs say "courier": "can it
+        # go out with the courier?")
+        senders = [v for v in op.verbs if " " not in v and language.is_noun(v)]
+        for name in (facility.name, *facility.synonyms, *means_words(op.name), *senders):
             out.append((language.fold(name), op))
     return sorted(out, key=lambda p: -len(p[0]))
 
