@@ -184,3 +184,42 @@ def test_a_sender_named_by_the_services_own_verb_is_the_means(text: str) -> None
     assert frame.decline is None and frame.question is None, frame
     assert [(t.item, t.operation) for t in frame.tasks] == [("parcel", "courier")]
     assert frame.tasks[0].destination in ("the supplier", "the lab")
+
+
+def _bag_and_fax_at_one_desk() -> Office:
+    """The dispatch office whose letters go "in the diplomatic bag" from a desk that also faxes
+    them: the desk names no one service, the bag names its own."""
+    raw = raw_dispatch_office()
+    post = next(o for o in raw["operations"] if o["id"] == "post")
+    post.update({"name": "send in the diplomatic bag", "verbs": ["pouch"]})
+    raw["operations"].append(
+        {"id": "fax", "name": "fax", "verbs": ["fax"], "input": "letter", "sends_out": True}
+    )
+    bag = next(f for f in raw["facilities"] if f["id"] == "post_bag")
+    bag.update({"name": "agency desk", "synonyms": [], "operations": ["post", "fax"]})
+    return parse_office(raw)
+
+
+@pytest.mark.parametrize(
+    ("text", "sent"),
+    [
+        # blind round 91's shape: "send my customs declaration in the ship's bag to <a ship>"
+        (
+            "Please send my declaration in the diplomatic bag to the embassy at Lisbon",
+            ("post", "the embassy at Lisbon"),
+        ),
+        ("can my form go in the diplomatic bag to the consulate?", ("post", "the consulate")),
+        ("fax my form to 0113 496 0000", ("fax", "0113 496 0000")),
+    ],
+)
+def test_a_service_named_by_what_it_sends_in_is_the_means(text: str, sent: tuple[str, str]) -> None:
+    frame = frame_reader(_bag_and_fax_at_one_desk, "lena")(text)
+    assert frame.decline is None and frame.question is None, frame
+    assert [(t.operation, t.destination) for t in frame.tasks] == [sent]
+
+
+def test_a_desk_of_two_services_said_as_the_means_names_neither() -> None:
+    frame = frame_reader(_bag_and_fax_at_one_desk, "lena")(
+        "send my form via the agency desk to Leeds"
+    )
+    assert not [t for t in frame.tasks if t.operation == "post"]

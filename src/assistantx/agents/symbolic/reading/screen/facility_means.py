@@ -71,6 +71,11 @@ def _means_phrases(office: Office) -> list[tuple[str, Operation]]:
     """The words that name each send-out facility or its one service's means ("courier
     desk", "post bag", "courier"), longest first, each with that service."""
     out: list[tuple[str, Operation]] = []
+    for op in office.operations:
+        # a service whose name says what it sends in ("send in the ship's bag") names itself
+        # by that, wherever it is done, also at a desk that runs other services
+        if op.sends_out and (container := _container(op.name)):
+            out.append((container, op))
     for facility in office.facilities:
         ops = [office.operation(o) for o in facility.operations]
         # a facility that also works on things here ("can my tunic go through the hot
@@ -84,6 +89,21 @@ def _means_phrases(office: Office) -> list[tuple[str, Operation]]:
         for name in (facility.name, *facility.synonyms, *means_words(op.name), *senders):
             out.append((language.fold(name), op))
     return sorted(out, key=lambda p: -len(p[0]))
+
+
+_CONTAINER_OPENERS = frozenset({"in", "into", "inside"})
+_ARTICLES = frozenset({"the", "a", "an", "our"})
+
+
+def _container(name: str) -> str | None:
+    """What a send-out service's name says it sends things in: "send in the ship's bag":
+    "ship's bag" (two words at least, so "send in" alone names nothing)."""
+    words = language.fold(name).split()
+    for k, w in enumerate(words):
+        if w in _CONTAINER_OPENERS:
+            rest = [x for x in words[k + 1 :] if x not in _ARTICLES]
+            return " ".join(rest) if len(rest) >= 2 else None
+    return None
 
 
 def _verb(op: Operation) -> str:
