@@ -23,6 +23,9 @@ _default = frame_reader(default_office, "lee")
         "is there any tea? fetch a couple up to reception",
         "any tea going? could you send some round to reception",
         "Any tea left in the kitchen? could you bring some to reception",
+        # the particle ends the clause, no destination said (blind round 93, after the fix)
+        "is there any tea in the kitchen? could you bring some up, ours has gone off",
+        "any tea going? send a couple over.",
     ],
 )
 def test_the_stand_in_is_the_thing_asked_about_in_harbour(text: str) -> None:
@@ -50,6 +53,9 @@ def test_a_named_pen_sent_up_to_the_speakers_desk() -> None:
         ("run it over to them", True),  # the errand's own particle after "it"
         ("send one down to the lab", False),
         ("send a couple round to Mark", False),
+        ("could you bring some up, ours has gone off", False),
+        ("pick it up, please", True),  # a pronoun's particle makes another verb
+        ("some up front costs", True),  # no clause's end after it
     ],
 )
 def test_only_a_stand_in_before_to_loses_its_particle(text: str, kept: bool) -> None:

@@ -43,8 +43,18 @@ _CARRIED = re.compile(
     r"(?=\s+to\s+(?!\d))",
     re.IGNORECASE,
 )
+# "could you bring some up, ours has gone off", "send one down.": after a quantity, the
+# particle ends the clause with no destination said (a pronoun's "pick it up" is left: its
+# particle makes another verb)
+_CARRIED_TO_NOWHERE = re.compile(
+    rf"\b(?P<quantity>{_alternation(_QUANTITIES)})\s+(?:{_alternation(_PARTICLES | _ACROSS)})"
+    r"(?=\s*(?:[,.!?;]|$))",
+    re.IGNORECASE,
+)
 
 
 def carrying_particles(text: str) -> str:
-    """``text`` with a carrying verb's particle between a stand-in object and "to" dropped."""
-    return _CARRIED.sub(lambda m: m.group("object") or m.group("quantity"), text)
+    """``text`` with a carrying verb's particle between a stand-in object and "to" (or the
+    clause's end, after a quantity) dropped."""
+    text = _CARRIED.sub(lambda m: m.group("object") or m.group("quantity"), text)
+    return _CARRIED_TO_NOWHERE.sub(lambda m: m.group("quantity"), text)
