@@ -26,7 +26,12 @@ _GOING = r"go|goes|going|went"
 _ON_ITS_WAY = r"(?:\s+(?:out|off|back|away|over))?"
 _BY = r"(?:via|through|in|into|with|using|by)"
 # A thing said with whose it is ("my letter", "this form", "Dev's contract", "it")
-_THING = r"(?:(?:this|these|that|those|my|our|the|[^\W\d_][\w-]*['’]s)(?:\s+[\w-]+){1,3}?|it|them)"
+# (its words never "to" or "for": "send my proof to Tomas with the courier bag" sends nothing
+# by the courier)
+_THING = (
+    r"(?:(?:this|these|that|those|my|our|the|[^\W\d_][\w-]*['’]s)"
+    r"(?:\s+(?!(?:to|for)\b)[\w-]+){1,3}?|it|them)"
+)
 _ASKED = r"(?:(?:can|could|would|will|may|might)\s+)"
 
 
