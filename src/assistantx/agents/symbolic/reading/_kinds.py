@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading import at_hand, shared_object
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
 from assistantx.agents.symbolic.reading.doer_nouns import is_doer_noun
+from assistantx.agents.symbolic.reading.file_had import colleagues_file, file_again
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.made_from import input_of_product
 from assistantx.agents.symbolic.reading.one_from_source import one_of_the_previous
@@ -438,6 +439,17 @@ class TaskReader:
     def product_of(self, kind: str) -> str | None:
         return {"print": self.printout, "copy": self.copy}.get(kind)
 
+    def _file_had(
+        self, m: Mention, clause: Clause, roles: Roles, requester: str, previous: Task | None
+    ) -> bool:
+        """Whether ``m`` is a file someone has although the office also makes its type
+        (``file_had``): a colleague's, or the one a task before was on."""
+        if self.kinds.get(m.id) != "electronic" or m.id not in self.made:
+            return False
+        owner = roles.owners.get(m.start) or roles.source_for(m.start)
+        before = previous.item if previous is not None else None
+        return colleagues_file(owner, requester) or file_again(m, clause.mentions, before)
+
     def products_of(self, kind: str) -> frozenset[str]:
         """Every product a task of ``kind`` may hand over (a copy, a PDF)."""
         return frozenset(p for p, k in self.made.items() if k == kind)
@@ -445,7 +457,11 @@ class TaskReader:
     def scene(self, clause: Clause, roles: Roles, requester: str, previous: Task | None) -> Scene:
         items = clause.objects()
         cues = set(clause.cues)
+        # "Wang's budget file" where a scan also makes files: the colleague's own file
+        owned = {m.start for m in items if self._file_had(m, clause, roles, requester, previous)}
         for m in items:  # products of the printer are cues: "a printout", "a copy"
+            if m.start in owned:
+                continue
             if m.id == self.printout:
                 cues.add("print")
             if m.id == self.copy:
@@ -558,7 +574,7 @@ class TaskReader:
             or "heat" in doing
             or any(word_before(m) in _TO_FACILITY for m in treating)
         )
-        items = [m for m in items if m.id not in self.sourced]
+        items = [m for m in items if m.id not in self.sourced or m.start in owned]
         files = [m for m in items if self.kinds[m.id] == "electronic"]
         personal = [m for m in items if self.kinds[m.id] == "personal"]
         products = [m for m in items if self.kinds[m.id] == "product"]

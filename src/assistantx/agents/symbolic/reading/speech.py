@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
@@ -850,6 +851,8 @@ class SpeechActs:
                 continue  # "Hu's scissors": an item of the office, never the verb
             if _plural_subjects_verb(w, n):
                 return True  # "the new drills make a lot of noise": told of the drills
+            if linked_state(w, n, _SUBJECTS):
+                return True  # "the copies look great": how the copies are, told
             if self._work_obliged(w, n):
                 return False  # "my banner has to be fireproofed": the work is needed
             if self._sent_to_someone(w, n):

@@ -47,6 +47,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # when someone will be back ("back in an hour"), no thing to fetch
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
         "statement",  # the speaker's own doing beside a request ("need to check the contacts")
+        "statement",  # a thing of an occasion beside a request ("need a copy of the new signing")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)
         "statement",  # a colleague's thing to send out ("Dev's contract needs couriering")

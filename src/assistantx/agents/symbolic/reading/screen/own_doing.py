@@ -10,6 +10,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
+from assistantx.core import language
 
 _SPEAKER = frozenset({"i", "we", "id", "ive", "im", "ill"})
 # "need to", "have to", "got to", "gotta", "want to": the speaker's own plan or obligation
@@ -29,11 +30,25 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if wish:  # "I'd like to look under the boiler": a plan of one's own, as "want to"
         words = ["want", *words[2 if words[:1] == ["would"] else 1 :]]
     rest = after_plan(words, _OWN_PLAN, _BETWEEN)
-    if not rest or terms.request_verb(rest, 0) or rest[0] in terms.service_verbs:
-        return None  # "need to get my shoot printed": an errand asked
+    if not rest or rest[0] in terms.lex.cue_words or rest[0] in terms.service_verbs:
+        return None  # "need to get my shoot printed": an errand or a service here, asked
+    if infinitive(words, rest):
+        return Finding("statement", piece, "the speaker's own doing, context only")
+    if terms.request_verb(rest, 0):
+        return None
     if rest[0] in terms.lex.items or rest[0] in terms.office_words:
         return None
     return Finding("statement", piece, "the speaker's own doing, context only")
+
+
+def infinitive(words: list[str], rest: list[str]) -> bool:
+    """Whether the plan's "to" is said and the word after it is a verb of English: "need to
+    *book* in the delivery", "have to *file* the invoices" name the speaker's own doing by a
+    verb, even where the same word names a thing of the office (a book, a file) or a
+    service nothing here offers ("book"); read as the thing, the reason fetched a book or
+    declined the whole request. The office's own errands and services are no such verb (the
+    caller reads them as asked). "gotta" says no "to" ("gotta book?" is "got a book?")."""
+    return words[0] != "gotta" and rest[0] in language.verb_lemmas(rest[0])
 
 
 def after_plan(

@@ -17,6 +17,7 @@ from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
+from assistantx.agents.symbolic.reading.screen.event_of import event_of
 from assistantx.agents.symbolic.reading.screen.everyones import everyones
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
@@ -126,6 +127,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", back_when),
     ("statement", facility_report),
     ("statement", own_doing),
+    # "..., need a copy of the new signing": a thing of an occasion, why it is asked
+    ("statement", event_of),
     ("statement", doing_after),
     ("statement", own_need),
     # "Dev's contract needs couriering to Leeds": someone else's thing, never sent on it

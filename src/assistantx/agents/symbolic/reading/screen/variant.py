@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.categories import categories
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.content_named import named_by_content
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -135,6 +136,8 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         # an authority phrase may start with a word that stops a modifier ("all-access")
         reach = tuple(t.word for t in tokens[max(0, start - 1) : m.start])
         authority = any(_has(reach, phrase) and set(phrase) & set(words) for phrase in _AUTHORITY)
+        if not authority and named_by_content(terms.office, m.ids[0]):
+            continue  # "Wang's budget planning file": which file, by its topic
         if (
             not authority
             and not any(_names_a_kind(terms, w) for w in words)
