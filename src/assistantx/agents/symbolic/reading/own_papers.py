@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.forwarded_theirs import forwarded_phrase
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.office import Office
@@ -195,6 +196,11 @@ class OwnPapers:
         for n in range(len(mentions)):
             k = self._colleagues_data(tokens, mentions, n, known)
             if k is not None and self.file_type is not None:
+                found[k] = self.file_type
+                continue
+            k = forwarded_phrase(tokens, mentions, n, self.named)
+            if k is not None and self.file_type is not None:
+                # "forward me Wang's budget pack": only a file can be forwarded
                 found[k] = self.file_type
                 continue
             # "the trustees' report": a kind of people's paper is the requester's, as "my"
