@@ -12,8 +12,8 @@ with the speaker as their first object ("send me ...", "ping us ...")."""
 from __future__ import annotations
 
 from collections.abc import Collection, Sequence
-from typing import Protocol
 
+from assistantx.agents.symbolic.reading.mention_view import MentionView as Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
@@ -25,21 +25,6 @@ _SPEAKER = frozenset({"me", "us"})
 _COMMON = english.words("common")
 _ASKING = english.words("asking_words")
 _MOST_WORDS = 3  # "Wang's quarterly budget pack"
-
-
-class Mention(Protocol):
-    """The lexicon's mention, as this stage reads it."""
-
-    @property
-    def kind(self) -> str: ...
-    @property
-    def start(self) -> int: ...
-    @property
-    def end(self) -> int: ...
-    @property
-    def ids(self) -> tuple[str, ...]: ...
-    @property
-    def possessive(self) -> bool: ...
 
 
 def forwarded_phrase(

@@ -19,10 +19,10 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass
-from typing import Protocol
 
 from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.forwarded_theirs import forwarded_phrase
+from assistantx.agents.symbolic.reading.mention_view import MentionView as Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.office import Office
@@ -41,21 +41,6 @@ _KIND_DETERMINERS = english.words("modifier_determiners")
 # Whom a thing is for, said as the verb's object before it ("print *me* the plan")
 _SPEAKER_OBJECTS = frozenset({"me", "us"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
-
-
-class Mention(Protocol):
-    """The lexicon's mention, as this stage reads it."""
-
-    @property
-    def kind(self) -> str: ...
-    @property
-    def start(self) -> int: ...
-    @property
-    def end(self) -> int: ...
-    @property
-    def ids(self) -> tuple[str, ...]: ...
-    @property
-    def possessive(self) -> bool: ...
 
 
 def personal_papers(office: Office) -> tuple[str, ...]:

@@ -107,6 +107,7 @@ class MentionReader:
         # "scanned PDF", "scan to PDF"): said after "to"/"into"/"as", the form of a result
         # ("scan my waybill to PDF"), never someone to look up
         self._result_words = _result_words(office)
+        self._service_verbs = frozenset(v.lower() for op in office.operations for v in op.verbs)
         # the verb phrases of services that send an item out of the office (a fax, a
         # courier), first word in any form: what follows their "to" is a destination outside,
         # not a colleague to look up. A phrase counts whole ("send out", never plain "send").
@@ -342,7 +343,7 @@ class MentionReader:
             return False
         if tokens[m.start].word not in self._result_words:
             return False
-        verbs = {v.lower() for op in self.office.operations for v in op.verbs}
+        verbs = self._service_verbs
         # "scan it to PDF", and "I need my form scanned to PDF": a service's verb in any form
         return any(t.word in verbs or language.verb_lemmas(t.word) & verbs for t in tokens)
 
