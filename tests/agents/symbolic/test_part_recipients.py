@@ -178,3 +178,58 @@ def test_a_pronoun_before_a_thing_still_receives_it() -> None:
     """ "bring them a coffee" (no "and"): "them" is whom the coffee is for, asked who."""
     frame = _default("print the slides and bring them a coffee")
     assert frame.tasks == [] and frame.question is not None and "them" in frame.question
+
+
+@pytest.mark.parametrize(
+    ("office", "text", "expected"),
+    [
+        (
+            "default",
+            "copy my document and get a water, all for Sun",
+            [("copy", "document", "lee", "sun"), ("produce", "water", None, "sun")],
+        ),
+        (
+            "harbour",
+            "scan my document and make a tea, both for Jack",
+            [("copy", "document", "may", "jack"), ("produce", "tea", None, "jack")],
+        ),
+    ],
+)
+def test_a_recipient_said_of_both_parts_is_each_parts(
+    office: str, text: str, expected: list[Row]
+) -> None:
+    assert _tasks(text, office) == expected
+
+
+@pytest.mark.parametrize(
+    ("office", "text", "question"),
+    [
+        # the class's neighbour: restated with the one recipient for both, never the
+        # printout to the requester
+        (
+            "default",
+            "print my file and a coffee, both for Wang",
+            "Shall I print your file for Wang Fang and get coffee for Wang Fang?",
+        ),
+        (
+            "harbour",
+            "print my file and a tea, both for Grace",
+            "Shall I print your file for Grace Huang and get tea for Grace Huang?",
+        ),
+        # must not change: "for Wang" with no "both" is the coffee's alone, as restated
+        (
+            "default",
+            "print my file and a coffee for Wang",
+            "Shall I print your file for you and get coffee for Wang Fang?",
+        ),
+        # a part that named its own recipient keeps it
+        (
+            "default",
+            "print my file for Zhang and a coffee, both for Wang",
+            "Shall I print your file for Zhang Wei and get coffee for Wang Fang?",
+        ),
+    ],
+)
+def test_both_for_restates_one_recipient(office: str, text: str, question: str) -> None:
+    frame = (_default if office == "default" else _harbour)(text)
+    assert frame.tasks == [] and frame.question == question, frame

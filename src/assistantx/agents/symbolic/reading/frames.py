@@ -47,15 +47,16 @@ from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
 from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
-from assistantx.agents.symbolic.reading.part_recipients import (
-    closes_a_part,
-    handed_along,
-    names_a_recipient,
-)
 from assistantx.agents.symbolic.reading.original_back import (
     ORIGINAL_ELSEWHERE,
     original_back,
     original_to_its_source,
+)
+from assistantx.agents.symbolic.reading.part_recipients import (
+    closes_a_part,
+    handed_along,
+    names_a_recipient,
+    shared_recipient,
 )
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.put_for import puts_at_someones_place
@@ -154,6 +155,7 @@ class FrameReader:
         placed: dict[str, str] = {}  # item type → the one a place phrase named
         said_from: list[str] = []  # whom the clauses take a thing from ("from Pat")
         waiting: tuple[Clause, Roles] | None = None  # a service on "it", waiting for the thing
+        unaddressed: list[Task] = []  # the latest tasks whose clauses named no recipient
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
@@ -303,6 +305,17 @@ class FrameReader:
             if made and tasks and handed_along(clause.mentions, tokens, roles.recipient_at):
                 # "print the slides and bring them and a coffee to Zhang": the slides too
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+            whole = shared_recipient(tokens, roles.recipient, roles.recipient_at)
+            if whole is not None:
+                # "print my file and a coffee, both for Wang": the printout is Wang's too
+                tasks = [
+                    t.model_copy(update={"recipient": whole})
+                    if any(t is u for u in unaddressed)
+                    else t
+                    for t in tasks
+                ]
+            # "print my file": no recipient said yet (one said of all may come later)
+            unaddressed = [*unaddressed, *made] if not roles.recipient else []
             again = None if maker is not None else _one_more(tasks, clause, tokens, roles, made)
             if maker is not None:
                 pass  # the product asked for before, now with its maker (above)

@@ -14,6 +14,9 @@ neighbouring part, and handed each thing to the other's person (a wrong physical
   ("bring them and a coffee to Zhang") the clause is not closed before the join, and both
   go to the one recipient: ``handed_along`` gives the thing said before that recipient too.
 
+A recipient said of all the parts ("print my file and a coffee, *both* for Wang", "..., all
+to Zhang") is every part's that named none of its own: ``shared_recipient``.
+
 A new part that names no recipient of its own ("take it to Wang, and a coffee") may be for
 the requester or for Wang: ``names_a_recipient`` is false, and the whole request is restated
 and asked before anything moves.
@@ -39,6 +42,8 @@ _OWN_WORDS = frozenset({"my", "our"})
 _DATIVE_VERBS = english.words("dative_verbs")
 # the words that add a second object to the one before: "them and a coffee"
 _ALONG = frozenset({"and", "plus"})
+# "both for Wang", "all to Zhang", "each for me": the phrase is said of every thing before
+_ALL_OF_THEM = frozenset({"both", "all", "each"})
 
 
 def after_a_new_object(ms: Sequence[MentionView], recipient_at: int, at: int) -> bool:
@@ -123,3 +128,15 @@ def coordinated(tokens: Sequence[Token], m: MentionView) -> bool:
     """Whether "and"/"plus" follows a pronoun right after a giving verb: "bring *them and* a
     coffee" hands them on with the coffee; "bring them a coffee" gives them the coffee."""
     return m.end < len(tokens) and tokens[m.end].word in _ALONG
+
+
+def shared_recipient(
+    tokens: Sequence[Token], recipient: Sequence[str], recipient_at: Sequence[int]
+) -> str | None:
+    """Whom a clause's receiving phrase said of all the parts names ("both for Wang"), else
+    None."""
+    for who, at in zip(recipient, recipient_at, strict=True):
+        k = at - 1
+        if k >= 1 and tokens[k].word in _RECEIVING and tokens[k - 1].word in _ALL_OF_THEM:
+            return who
+    return None
