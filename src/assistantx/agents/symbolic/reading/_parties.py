@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.indirect_object import is_indirect_objec
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
+from assistantx.agents.symbolic.reading.part_recipients import after_a_new_object, coordinated
 from assistantx.agents.symbolic.reading.source_not_recipient import not_the_source
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
@@ -354,11 +355,14 @@ def _a_favour(
     tokens: Sequence[Token], ms: Sequence[Mention], n: int, roles: Roles, requester: str
 ) -> bool:
     """ "... to Zhang for me (please)": a "for me" that ends the clause after a colleague
-    already named after "to" asks a favour; it names no second recipient."""
+    already named after "to" asks a favour; it names no second recipient. With a new object
+    between ("my stapler to Wang and a coffee for me") it is that object's recipient."""
     if any(tokens[m.start].word not in _COURTESY_AFTER for m in ms[n + 1 :]):
         return False
     return any(
-        who != requester and prev_word(tokens, at) == "to"
+        who != requester
+        and prev_word(tokens, at) == "to"
+        and not after_a_new_object(ms, at, ms[n].start)
         for who, at in zip(roles.recipient, roles.recipient_at, strict=True)
     )
 
@@ -423,7 +427,10 @@ def clause_roles(
             prev = prev_word(tokens, m.start)
             # "take her my ice pack", "bring her some": she receives (not "forward them to")
             dative = (
-                prev in _DATIVE_VERBS and following is not None and _object_start(tokens, following)
+                prev in _DATIVE_VERBS
+                and following is not None
+                and _object_start(tokens, following)
+                and not coordinated(tokens, m)  # "bring them and a coffee": two objects
             ) or is_indirect_object(tokens, ms, n, prev)
             if prev in ("to", "for") or dative:
                 # "take it from Pat to her": not Pat, the one it is taken from

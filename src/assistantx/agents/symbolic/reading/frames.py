@@ -52,6 +52,12 @@ from assistantx.agents.symbolic.reading.original_back import (
     original_back,
     original_to_its_source,
 )
+from assistantx.agents.symbolic.reading.part_recipients import (
+    closes_a_part,
+    handed_along,
+    names_a_recipient,
+    shared_recipient,
+)
 from assistantx.agents.symbolic.reading.purpose import others_purpose
 from assistantx.agents.symbolic.reading.put_for import puts_at_someones_place
 from assistantx.agents.symbolic.reading.readings import Readings
@@ -149,6 +155,7 @@ class FrameReader:
         placed: dict[str, str] = {}  # item type → the one a place phrase named
         said_from: list[str] = []  # whom the clauses take a thing from ("from Pat")
         waiting: tuple[Clause, Roles] | None = None  # a service on "it", waiting for the thing
+        unaddressed: list[Task] = []  # the latest tasks whose clauses named no recipient
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
@@ -295,6 +302,20 @@ class FrameReader:
             previous_roles = roles
             said_from += roles.source
             previous_asked = _asked_subjects(tokens, clause)
+            if made and tasks and handed_along(clause.mentions, tokens, roles.recipient_at):
+                # "print the slides and bring them and a coffee to Zhang": the slides too
+                tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
+            whole = shared_recipient(tokens, roles.recipient, roles.recipient_at)
+            if whole is not None:
+                # "print my file and a coffee, both for Wang": the printout is Wang's too
+                tasks = [
+                    t.model_copy(update={"recipient": whole})
+                    if any(t is u for u in unaddressed)
+                    else t
+                    for t in tasks
+                ]
+            # "print my file": no recipient said yet (one said of all may come later)
+            unaddressed = [*unaddressed, *made] if not roles.recipient else []
             again = None if maker is not None else _one_more(tasks, clause, tokens, roles, made)
             if maker is not None:
                 pass  # the product asked for before, now with its maker (above)
@@ -461,6 +482,8 @@ class FrameReader:
         tokens, mentions, gaps = readings.tokens, readings.mentions, readings.gaps
         clauses: list[Clause] = [Clause([])]
         aside_end = 0  # an aside's mentions, skipped ("and while you're at it grab ...")
+        # clauses that start a new part after one handing "it" to its recipient
+        opened_after_part: set[int] = set()
         for n, m in enumerate(mentions):
             if n < aside_end:
                 continue
@@ -480,6 +503,8 @@ class FrameReader:
                 and (
                     self._starts_request(mentions, after_join, tokens)
                     or self._made_beside(clauses[-1], mentions, after_join, tokens)
+                    # "take it to Wang, and a coffee for me": the print's part is whole
+                    or closes_a_part(clauses[-1].mentions, mentions, after_join, tokens)
                     # "Mark needs a ruler, leave mine on his desk": how the need is met
                     or (
                         says_a_need(clauses[-1], tokens)
@@ -493,13 +518,26 @@ class FrameReader:
                 and self._made_beside(clauses[-1], mentions, after_join, tokens, unsaid=True)
             )
             if (hard or soft or unsaid) and clauses[-1].mentions:
+                closed = (
+                    not hard
+                    and (joined or "," in gap)
+                    and closes_a_part(clauses[-1].mentions, mentions, after_join, tokens)
+                )
                 clauses.append(Clause([], restated=unsaid))
+                if closed:
+                    opened_after_part.add(len(clauses) - 1)
             if aside:
                 aside_end = after_join + aside
                 continue
             if m.kind == "word" and (word in _JOIN_WORDS or word in _BREAK_WORDS):
                 continue
             clauses[-1].mentions.append(m)
+        for k in opened_after_part:
+            # "take it to Wang, and a coffee": for me or for Wang? restated and asked first
+            # (a part with a verb of its own, "also bring a coffee", is read as before)
+            said = clauses[k].mentions
+            if not names_a_recipient(said, tokens) and not any(m.kind == "cue" for m in said):
+                clauses[k].restated = True
         for c in clauses:
             c.modifiers = modifiers(tokens, c.mentions, self.reader.sourced, self.reader.formats)
             c.modifiers |= others_purpose(tokens, c.mentions)  # "... so it can be couriered"
