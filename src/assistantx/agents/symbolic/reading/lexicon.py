@@ -46,6 +46,7 @@ from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled
 from assistantx.agents.symbolic.reading.family_of_another import also_meant
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
+from assistantx.agents.symbolic.reading.measured_items import singular_spans, singulars, unit_of
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -328,6 +329,9 @@ class Lexicon:
     clipped_verbs: ClippedVerbs = field(default_factory=lambda: ClippedVerbs({}, {}))
     # the office's one personal paper said in an everyday noun ("my report", ``own_papers``)
     own_papers: OwnPapers | None = None
+    # the singular of each plural name of a thing ("post it" of "post its"), read as that
+    # thing where a counted noun stands (``measured_items``)
+    singulars: dict[str, str] = field(default_factory=dict)
     # the tokens of the texts last read: one message is tokenized four or five times over
     # (the parser's frame, its pieces, the request screen, the drinks screen) and stage 1
     # reads only the tables above, which are fixed once the lexicon is built
@@ -493,6 +497,7 @@ class Lexicon:
             lex.items.setdefault(form, type_id)
         lex.operation_nouns = operation_nouns(office, lex._known)
         lex.operation_names = operation_names(office)
+        lex.singulars = singulars(list(lex.items.items()), lex._known)
         return lex
 
     def _everyday_names(self, office: Office, verbs: set[str]) -> frozenset[str]:
@@ -733,10 +738,28 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
+        mentions = self._measured(tokens, mentions)
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._own_papers(tokens, mentions)
         return self._exactly_spelled(tokens, self._settled_by_owner(tokens, mentions))
+
+    def _measured(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "a post-it pad", "a box of staples": an item named by a unit of it, or by the
+        singular of its plural name (``measured_items``)."""
+        kinds = {k: m.kind for m in mentions for k in range(m.start, m.end)}
+        for start, end, type_id in singular_spans(tokens, kinds, self.singulars, self.max_words):
+            text = " ".join(t.text for t in tokens[start:end])
+            found = Mention("item", start, end, (type_id,), tokens[end - 1].possessive, text)
+            mentions = _replaced(mentions, found)
+        for m in list(mentions):
+            after = [n for n in mentions if n.start == m.start + 2 and n.kind == "item"]
+            if m.end == m.start + 1 and unit_of(tokens, m.start) and after:
+                thing = after[0]  # "a box of staples": the staples, the box their measure
+                text = " ".join(t.text for t in tokens[m.start : thing.end])
+                merged = Mention("item", m.start, thing.end, thing.ids, thing.possessive, text)
+                mentions = _replaced(mentions, merged)
+        return mentions
 
     def _exactly_spelled(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Tomás" beside Tomáš Novák: a name written with its diacritics means the people
@@ -1298,6 +1321,12 @@ def _clipped_words(items: dict[str, str], taken: Collection[str]) -> dict[str, s
                 for variant in (said, _plural(said)):
                     found.setdefault(variant, type_id)
     return found
+
+
+def _replaced(mentions: list[Mention], found: Mention) -> list[Mention]:
+    """``mentions`` with ``found`` in place of every mention inside its tokens."""
+    kept = [m for m in mentions if m.end <= found.start or m.start >= found.end]
+    return sorted([*kept, found], key=lambda m: m.start)
 
 
 def key_of(name: str) -> str:
