@@ -20,6 +20,7 @@ _SUPPLIES = (
     "copier_paper",
     "wipes",
     "paint_roller",
+    "lint_roller",
     "ink_pad",
 )
 
@@ -54,8 +55,10 @@ def raw_stores() -> dict[str, Any]:
             ob.item("staples", "staples", consumable=True),
             ob.item("copier_paper", "copier paper", consumable=True, mass=True),
             ob.item("wipes", "wipes", synonyms=["wet wipes"], consumable=True),
-            # two types whose names end in one noun: "roller" and "pad" are shared heads
-            ob.item("paint_roller", "paint roller", synonyms=["lint roller"]),
+            # two types whose names end in one noun ("roller"); a unit noun heading one
+            # type's names ("pad")
+            ob.item("paint_roller", "paint roller", synonyms=["decorating roller"]),
+            ob.item("lint_roller", "lint roller", synonyms=["fluff roller"]),
             ob.item("ink_pad", "ink pad", synonyms=["stamp pad"]),
             ob.item("mug", "mug"),
         ],
