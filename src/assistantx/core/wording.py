@@ -226,9 +226,37 @@ def a_thing(name: str, *, mass: bool = False) -> str:
     return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
 
 
-def is_are(name: str) -> str:
-    """The verb "to be" that agrees with an item's name: "the gloves are", "the tape is"."""
-    return "are" if language.is_plural_noun(name) else "is"
+def is_are(name: str, *, mass: bool = False) -> str:
+    """The verb "to be" that agrees with an item's name: "the gloves are", "the tape is";
+    stuff (``mass``) is one thing to the verb whatever its name's last word looks like."""
+    return "are" if language.is_plural_noun(name) and not mass else "is"
+
+
+def _counted_plural(name: str, *, mass: bool) -> bool:
+    """Whether ``name`` takes a plural verb: a plural that is not stuff ("gloves", not
+    "some hand sanitiser"), nor a noun said as a pair ("a pair of scissors")."""
+    return a_thing(name, mass=mass).startswith("some ") and is_are(name, mass=mass) == "are"
+
+
+def there_is(name: str, *, mass: bool = False) -> str:
+    """ "There are gloves", "There is some hand sanitiser", "There is a stapler": the
+    existential sentence agrees with what its thing is, several things or one lot of stuff."""
+    if _counted_plural(name, mass=mass):
+        return f"There are {name}"
+    return f"There is {a_thing(name, mass=mass)}"
+
+
+def some_or_one(name: str, *, mass: bool = False) -> str:
+    """What stands for an item in "I'll bring you ___": "some" gloves or stuff, "one"
+    stapler (and one pair of scissors)."""
+    return "some" if a_thing(name, mass=mass).startswith("some ") else "one"
+
+
+def them_or_it(name: str, *, mass: bool = False) -> str:
+    """The pronoun for an item named in general: "makes them" (gloves, staplers made one by
+    one), "makes it" (stuff: coffee the office names as stuff, glue)."""
+    stuff = mass or language.is_mass_noun(name)
+    return "it" if stuff and not language.is_plural_noun(name) else "them"
 
 
 def item_phrase(office: Office, item_id: str, *, you: str | None = None) -> str:

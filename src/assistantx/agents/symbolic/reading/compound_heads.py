@@ -26,7 +26,7 @@ from assistantx.core import english, language
 
 _COMMON = english.words("common")
 # A unit after an item's name measures the item ("a scissors pair"): not a head of its own.
-_UNITS = english.words("portion_words")
+_UNITS = english.words("portion_words") | english.words("unit_nouns")
 # Words that open a clause of their own ("a radio *cause* ..."), though also nouns.
 _OPENERS = english.words("reason_conjunctions") | english.words("clause_breaks")
 # "a stopwatch *i* can borrow": a pronoun starts a clause of its own (the dictionary lists

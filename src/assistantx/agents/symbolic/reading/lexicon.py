@@ -44,8 +44,10 @@ from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled
 from assistantx.agents.symbolic.reading.family_of_another import also_meant
+from assistantx.agents.symbolic.reading.head_names import head_names
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
+from assistantx.agents.symbolic.reading.measured_items import singular_spans, singulars, unit_of
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
@@ -142,6 +144,8 @@ _CLIPS = english.phrase_table("clipped_words")
 # What makes one of those names that is also a verb ("brew") a thing: an article before it
 # The words before a thing's name that say whose or which one it is ("my ms", "the ms").
 _OWNING_WORDS = frozenset({"my", "your", "his", "her", "our", "their", "the", "this", "that"})
+# the possessive determiners ("*my* notes"); a name's "'s" is the token's own mark
+_OWNED_BY = frozenset({"my", "your", "his", "her", "our", "their", "its"})
 _TEXTS_KEPT = 512  # Lexicon.tokens: texts whose tokens are kept
 
 _THING_ARTICLES = frozenset({"a", "an", "another", "the", "some", "quick", "nice", "proper"})
@@ -328,6 +332,15 @@ class Lexicon:
     clipped_verbs: ClippedVerbs = field(default_factory=lambda: ClippedVerbs({}, {}))
     # the office's one personal paper said in an everyday noun ("my report", ``own_papers``)
     own_papers: OwnPapers | None = None
+    # the singular of each plural name of a thing ("post it" of "post its"), read as that
+    # thing where a counted noun stands (``measured_items``)
+    singulars: dict[str, str] = field(default_factory=dict)
+    # the nouns that head several names of two item types or more ("roller" of a paint
+    # roller and a lint roller) → those types: asked which, never read as one (``head_names``)
+    shared_heads: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    # the head nouns read as one type ("gel"), no name the office gave it: not a thing said
+    # as someone's where no one owns one ("my notes" beside a cupboard's sticky notes)
+    head_forms: frozenset[str] = frozenset()
     # the tokens of the texts last read: one message is tokenized four or five times over
     # (the parser's frame, its pieces, the request screen, the drinks screen) and stage 1
     # reads only the tables above, which are fixed once the lexicon is built
@@ -486,6 +499,15 @@ class Lexicon:
         used = {*lex.items, *lex.people, *lex.facilities}
         for form, type_id in clipped_phrases(compounds, used).items():
             lex.items.setdefault(form, type_id)
+        # "any gel going?": the noun that heads several names of one type ("hand gel",
+        # "alcohol gel") is that type (``head_names``)
+        type_names = [(key_of(n), t.id) for t in office.item_types for n in (t.name, *t.synonyms)]
+        others = [key_of(n) for f in office.facilities for n in (f.name, *f.synonyms)]
+        others += [key_of(loc.name) for loc in office.locations]
+        heads, lex.shared_heads = head_names(type_names, others, lex._known)
+        for form, type_id in heads.items():
+            lex.items.setdefault(form, type_id)
+        lex.head_forms = frozenset(f for f, t in heads.items() if lex.items[f] == t)
         # "a pic", "the spec": an English clip of a word of a thing's name
         places = {w for k in (*lex.facilities, *lex.places) for w in k.split()}
         taken = {*lex.items, *lex.people, *lex.name_words, *lex.cue_words, *places}
@@ -493,6 +515,7 @@ class Lexicon:
             lex.items.setdefault(form, type_id)
         lex.operation_nouns = operation_nouns(office, lex._known)
         lex.operation_names = operation_names(office)
+        lex.singulars = singulars(list(lex.items.items()), lex._known)
         return lex
 
     def _everyday_names(self, office: Office, verbs: set[str]) -> frozenset[str]:
@@ -733,10 +756,42 @@ class Lexicon:
             mention, used = found
             mentions.append(mention)
             k += used
+        mentions = self._unowned_heads(tokens, self._measured(tokens, mentions))
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._own_papers(tokens, mentions)
         return self._exactly_spelled(tokens, self._settled_by_owner(tokens, mentions))
+
+    def _measured(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "a post-it pad", "a box of staples": an item named by a unit of it, or by the
+        singular of its plural name (``measured_items``)."""
+        kinds = {k: m.kind for m in mentions for k in range(m.start, m.end)}
+        for start, end, type_id in singular_spans(tokens, kinds, self.singulars, self.max_words):
+            text = " ".join(t.text for t in tokens[start:end])
+            found = Mention("item", start, end, (type_id,), tokens[end - 1].possessive, text)
+            mentions = _replaced(mentions, found)
+        for m in list(mentions):
+            after = [n for n in mentions if n.start == m.start + 2 and n.kind == "item"]
+            if m.end == m.start + 1 and unit_of(tokens, m.start) and after:
+                thing = after[0]  # "a box of staples": the staples, the box their measure
+                text = " ".join(t.text for t in tokens[m.start : thing.end])
+                merged = Mention("item", m.start, thing.end, thing.ids, thing.possessive, text)
+                mentions = _replaced(mentions, merged)
+        return mentions
+
+    def _unowned_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "my notes", "Tomas's gel": a head noun read as a type (``head_names``) said as
+        someone's where no one in the office owns one is no guess to make: a plain word."""
+        out: list[Mention] = []
+        for m in mentions:
+            said = " ".join(t.word for t in tokens[m.start : m.end])
+            if m.kind == "item" and said in self.head_forms and m.start > 0:
+                before = tokens[m.start - 1]
+                owned = before.possessive or before.word in _OWNED_BY
+                if owned and not self.office.owners_of(m.ids[0]):
+                    m = Mention("word", m.start, m.end, (said,), m.possessive, m.text)
+            out.append(m)
+        return out
 
     def _exactly_spelled(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Tomás" beside Tomáš Novák: a name written with its diacritics means the people
@@ -1298,6 +1353,12 @@ def _clipped_words(items: dict[str, str], taken: Collection[str]) -> dict[str, s
                 for variant in (said, _plural(said)):
                     found.setdefault(variant, type_id)
     return found
+
+
+def _replaced(mentions: list[Mention], found: Mention) -> list[Mention]:
+    """``mentions`` with ``found`` in place of every mention inside its tokens."""
+    kept = [m for m in mentions if m.end <= found.start or m.start >= found.end]
+    return sorted([*kept, found], key=lambda m: m.start)
 
 
 def key_of(name: str) -> str:

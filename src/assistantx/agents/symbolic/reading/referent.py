@@ -19,6 +19,8 @@ from assistantx.core import english, language
 
 NamedItem = tuple[str, str | None]  # an item type and whose it was said to be (None: unsaid)
 
+# the portions that point back ("a sheet"), not every unit: "anyone got a mug? bring me a
+# set" leaves open a set of what
 _UNITS = english.words("portion_words")
 _POINTERS = frozenset({"it", "that", "this", "one", "some", "them"})
 _ARTICLES = frozenset({"a", "an", "one", "another", "some"})

@@ -15,6 +15,7 @@ from assistantx.agents.symbolic.reading.categories import (
     office_choices,
     which_question,
 )
+from assistantx.agents.symbolic.reading.head_names import shared_types
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -60,6 +61,9 @@ def category_asked(
     if category is None:
         near = near_items(terms, thing)  # "a whiteboard pen": board pen or whiteboard marker?
         choices = near if len(near) > 1 else []
+    if not choices:  # "a roller": the paint roller or the lint roller? (``head_names``)
+        shared = shared_types(terms.lex.shared_heads, thing)
+        choices = [terms.office.item_type(t).name for t in shared]
     return which_question(choices) if choices else None
 
 

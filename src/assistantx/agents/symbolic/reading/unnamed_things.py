@@ -38,6 +38,11 @@ _ARTICLES = frozenset({"a", "an", "the", "some", "this", "that"})
 _AND = "and"
 _TO = "to"
 # The words after a joined thing that end its clause ("and the projector *please*").
+# The word that says where a thing comes from, and what it names: "from the cupboard".
+_FROM = "from"
+_SOURCES = frozenset({"facility", "place", "person"})
+# A thing said: its phrase, whose it is (None: nobody's), and the token after it.
+Said = tuple[str, str | None, int]
 _CLAUSE_ENDS = frozenset({"please", "pls", "too", "as", "and", "then", "to", "for", "asap", "now"})
 
 
@@ -50,8 +55,11 @@ def unnamed_thing(
     among them was read as their thing by another stage ("take my lease to Ines to be
     stamped": the one paper of mine a seal takes), not left out."""
     for n, verb in enumerate(mentions):
-        if verb.kind != "cue" or _GIVE not in verb.ids or tokens[verb.start].word in _WISHES:
+        if verb.kind != "cue" or _GIVE not in verb.ids:
             continue
+        # "I need a break": a wish names no errand, unless it says where the thing is to
+        # come from ("I need a gizmo pad from the cupboard"): then it asks for a fetch
+        wish = tokens[verb.start].word in _WISHES
         k = n + 1
         if _next(mentions, k, verb.end) and mentions[k].kind in _FOR_WHOM:
             if not mentions[k].possessive:
@@ -59,14 +67,29 @@ def unnamed_thing(
         said = _thing_said(mentions, tokens, k, mentions[k - 1].end, me)
         if said is None:
             said = _joined_thing(mentions, tokens, k, mentions[k - 1].end, me)
-        if said is not None and said[1] not in owners:
-            return said[0]
+        if said is None or said[1] in owners:
+            continue
+        if wish and not _source_at(mentions, tokens, said[2]):
+            continue
+        return said[0]
     return None
+
+
+def _source_at(mentions: Sequence[Mention], tokens: Sequence[Token], at: int) -> bool:
+    """Whether "from" and one of the office's own places, facilities or people stand at the
+    token ``at`` ("... *from the cupboard*", "... from Tomas"): where a thing is fetched from,
+    which ends the noun phrase of the thing before it."""
+    if at >= len(tokens) or tokens[at].word != _FROM or tokens[at].after_pause:
+        return False
+    k = at + 1
+    while k < len(tokens) and tokens[k].word in _ARTICLES:
+        k += 1
+    return any(m.start == k and m.kind in _SOURCES for m in mentions)
 
 
 def _joined_thing(
     mentions: Sequence[Mention], tokens: Sequence[Token], k: int, end: int, me: str
-) -> tuple[str, str | None] | None:
+) -> Said | None:
     """A thing no name of the office reads joined by "and" to the verb's known object ("bring
     me a stapler *and the projector*"): a noun with no verb of its own shares the verb before
     it, so it is a thing the request asks to move, never a part to drop. Only a phrase that
@@ -82,7 +105,10 @@ def _joined_thing(
             continue  # "a stapler and scissors": known too, or none; on to what follows
         last = _phrase_end(tokens, end)
         if last < len(tokens) and not (
-            tokens[last].after_pause or tokens[last].opens or tokens[last].word in _CLAUSE_ENDS
+            tokens[last].after_pause
+            or tokens[last].opens
+            or tokens[last].word in _CLAUSE_ENDS
+            or _source_at(mentions, tokens, last)  # "and a flux pad from the cupboard"
         ):
             return None
         return said
@@ -96,6 +122,8 @@ def _known_object(
     if _next(mentions, k, end) and mentions[k].possessive and mentions[k].kind in _FOR_WHOM:
         k, end = k + 1, mentions[k].end
     elif end < len(tokens) and tokens[end].word in _ARTICLES:
+        if _next(mentions, k, end):
+            k += 1  # "some" is a word of the lexicon's, "a" none
         end += 1
     if not (_next(mentions, k, end) and mentions[k].kind == "item"):
         return k, -1
@@ -104,6 +132,10 @@ def _known_object(
         if mentions[k + 1].kind in _FOR_WHOM:
             # "my stapler to Lee and the projector to Wang": the first thing's recipient
             k, end = k + 2, mentions[k + 1].end
+    if _next(mentions, k, end) and _source_at(mentions, tokens, end):
+        # "a stapler from Sun Li and a lamp ...": where the first thing comes from
+        source = next(n for n in range(k + 1, len(mentions)) if mentions[n].kind in _SOURCES)
+        k, end = source + 1, mentions[source].end
     return k, end
 
 
@@ -128,15 +160,18 @@ def _next(mentions: Sequence[Mention], k: int, end: int) -> bool:
 
 def _thing_said(
     mentions: Sequence[Mention], tokens: Sequence[Token], k: int, end: int, me: str
-) -> tuple[str, str | None] | None:
+) -> Said | None:
     """The phrase "my/Grace's/a/the [modifier] noun" from the token ``end`` (``mentions[k]``
-    on) whose noun no name of the office reads, and whose it says (None: nobody's)."""
+    on) whose noun no name of the office reads, whose it says (None: nobody's), and the token
+    after it."""
     if _next(mentions, k, end) and mentions[k].possessive and mentions[k].kind in _FOR_WHOM:
         opener = mentions[k]
         whose = me if opener.kind == "self" else opener.ids[0] if len(opener.ids) == 1 else ""
         start, k = opener.start, k + 1
     elif end < len(tokens) and tokens[end].word in _ARTICLES:
         whose, start = None, end  # "take a lamp to Rose": the article is no mention
+        if _next(mentions, k, end):
+            k += 1  # "get me some gizmo": "some" is a word of the lexicon's
     else:
         return None
     run: list[Mention] = []
@@ -160,4 +195,4 @@ def _thing_said(
     named = " ".join(tokens[m.start].word for m in run)
     if category_named(named) is not None or category_named(noun) is not None:
         return None  # "a drink", "a hot drink": a kind of thing, asked or offered by its stage
-    return " ".join(t.text for t in tokens[start : head.end]), whose
+    return " ".join(t.text for t in tokens[start : head.end]), whose, head.end

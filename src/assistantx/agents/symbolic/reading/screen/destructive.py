@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.named_words import named_at
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.verb_in_item_name import opens_item_name
 from assistantx.core import english, language
 
 # "in the skip", "into a bin", "to the rubbish": where a put-request sends its thing.
@@ -31,6 +32,7 @@ _SELF = english.words("self_words")
 
 
 def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    names = terms.lex.items.keys() | terms.lex.facilities.keys()  # spelled as said
     for sub in sub_pieces(piece):
         at = sub.verb_at(terms.en.lead_in)
         for verb in terms.en.destructive:
@@ -41,10 +43,14 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
             if starts_with(sub.words, at, verb):
                 if len(verb) == 1 and named_at(piece, sub, at):
                     continue  # "Bin needs a stapler": a colleague called Bin, no verb
+                if opens_item_name(piece, sub, at, len(verb), names):
+                    continue  # "bin bags to desk 5": the office's supply of that name
                 return _declined(terms, piece, " ".join(verb))
         for verb in terms.en.destructive_of_others:
             if verb[0] in terms.lex.operation_words:
                 continue  # the office's own work by that verb: a service
+            if opens_item_name(piece, sub, at, len(verb), names):
+                continue  # "cut flowers for Ana's desk": the office's thing of that name
             owner = _others_object(terms, piece, sub.words, at, verb, requester)
             if owner is not None:
                 return _declined(terms, piece, f"{' '.join(verb)} {owner}'s things", what="")

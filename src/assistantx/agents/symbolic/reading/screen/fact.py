@@ -130,8 +130,9 @@ def _own_out_of_use(terms: Terms, piece: Piece, item: str, requester: str) -> Fi
     hint = Hint(
         kind="condition", person=requester, value="missing", item_type=item, said=piece.text
     )
-    thing = terms.office.item_type(item).name
-    return Finding("fact", piece, f"a fact: your {thing} {wording.is_are(thing)} out of use", hint)
+    kind = terms.office.item_type(item)
+    be = wording.is_are(kind.name, mass=kind.mass)
+    return Finding("fact", piece, f"a fact: your {kind.name} {be} out of use", hint)
 
 
 def _bare_item_fact(
@@ -144,8 +145,10 @@ def _bare_item_fact(
     if not _out_of_use(terms, after):
         return None
     if requester not in terms.office.owners_of(item):
-        thing = terms.office.item_type(item).name
-        said = f"a statement: the {thing} {wording.is_are(thing)} out of use"
+        kind = terms.office.item_type(item)
+        said = (
+            f"a statement: the {kind.name} {wording.is_are(kind.name, mass=kind.mass)} out of use"
+        )
         return Finding("statement", piece, said)
     return _own_out_of_use(terms, piece, item, requester)
 

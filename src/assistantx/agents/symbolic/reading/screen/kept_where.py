@@ -12,7 +12,7 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms, listed
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english
 from assistantx.core.office import Facility
-from assistantx.core.wording import is_are
+from assistantx.core.wording import is_are, some_or_one
 
 _KEEPING = english.words("kept_where_verbs")
 _PRONOUNS = frozenset({"it", "them", "they", "these", "those"})
@@ -76,8 +76,8 @@ def _topic_items(terms: Terms, msg: Message, piece: Piece) -> list[str]:
 
 def _where_kept(terms: Terms, item: str) -> str:
     office = terms.office
-    thing = office.item_type(item).name
-    be = is_are(thing)
+    thing, mass = office.item_type(item).name, office.item_type(item).mass
+    be = is_are(thing, mass=mass)
     keeping = [f for f in office.facilities if any(s.type == item for s in f.supplies)]
     if not keeping:  # where each owner's one is kept, when it is not on their desk
         keepers = (office.keeper(p, item) for p in office.owners_of(item, known_only=True))
@@ -90,7 +90,8 @@ def _where_kept(terms: Terms, item: str) -> str:
     owners = [office.person(p).name for p in office.owners_of(item, known_only=True)]
     if owners and office.item_type(item).physical:
         has = "has" if len(owners) == 1 else "each have"
-        return f"As far as I know, {listed(owners[:4])} {has} one at their desk."
+        one = some_or_one(thing, mass=mass)
+        return f"As far as I know, {listed(owners[:4])} {has} {one} at their desk."
     return f"I don't know where the {thing} {be} kept here."
 
 

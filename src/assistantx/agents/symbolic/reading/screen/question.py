@@ -96,11 +96,11 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
             answer = f"As far as I know, {who} has no {t.name}."
     elif makers:
         where = terms.office.location(makers[0].location).name
-        answer = f"The {makers[0].name} at the {where} makes them."
+        answer = (
+            f"The {makers[0].name} at the {where} makes {wording.them_or_it(t.name, mass=t.mass)}."
+        )
     elif supplier is not None:  # "any AAs going spare?": the cupboard's, anyone's to have
-        some = a_thing.startswith("some ")
-        there = f"There are {t.name}" if some else f"There is {a_thing}"
-        answer = f"{there} in the {supplier.name}."
+        answer = f"{wording.there_is(t.name, mass=t.mass)} in the {supplier.name}."
     elif names:
         has = "has" if len(names) == 1 else "have"
         answer = f"As far as I know, {listed(names)} {has} {a_thing}."
@@ -114,10 +114,11 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
         # "... I could use tomorrow?": a need for later is answered, with the offer for
         # then in words; nothing is fetched now and no question is left open on it ("...
         # I need this afternoon?" is had by then, so answered and offered for now)
-        message = f"{answer} Tell me when you need it and I'll {verb} you one then."
+        one = wording.some_or_one(t.name, mass=t.mass)
+        message = f"{answer} Tell me when you need it and I'll {verb} you {one} then."
         meaning = "a question about a later need, answered"
         return Finding("question", piece, meaning, message=message)
-    shall = f"Shall I {verb} you {'some' if a_thing.startswith('some ') else 'one'}?"
+    shall = f"Shall I {verb} you {wording.some_or_one(t.name, mass=t.mass)}?"
     return Finding(
         "question",
         piece,

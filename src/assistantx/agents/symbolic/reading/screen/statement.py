@@ -558,7 +558,7 @@ def lack_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | None:
     ):
         return None  # a request beside it is read as usual
     a_thing = wording.a_thing(t.name, mass=t.mass)
-    one = "some" if a_thing.startswith("some ") else "one"
+    one = wording.some_or_one(t.name, mass=t.mass)
     verb = "get" if t.kind == "product" else "bring"
     return Finding(
         "statement",

@@ -51,8 +51,8 @@ def whereabouts(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
         n, verb = n + 1, True
     if n >= len(after) or after[n] not in _WHERE or not (verb or found):
         return None
-    thing = terms.office.item_type(subject.ids[0]).name
-    be = is_are(thing)
+    kind = terms.office.item_type(subject.ids[0])
+    thing, be = kind.name, is_are(kind.name, mass=kind.mass)
     stated = tuple(stated_items(terms, piece, requester))
     return Finding(
         "statement",

@@ -1,0 +1,117 @@
+"""An item named by a unit or a container of it: "a *box of* staples", "a post-it *pad*",
+"a copier paper *ream*", "a *pack of* wipes".
+
+English counts stuff and small things by a unit noun (english.yaml ``unit_nouns``): the
+thing is named after "of" ("a box of staples") or as the first part of a compound before the
+unit ("a post-it pad"), and either way what is wanted is the thing. The office lists its
+supplies by their own names, often plural ("post-its", "sticky notes"); a noun used as the
+first part of a compound is said in the singular ("a post-it pad", never "a post-its pad"),
+and so is one of them ("a post-it"). So:
+
+- a unit noun, "of", then an item's name is that item, the unit and "of" included in the
+  mention (nothing is left for a later stage to take for an unknown "box");
+- the singular of an item's plural name (its last word's singular, "post it" from "post
+  its") is that item where a compound's first part or a counted noun stands: before a unit
+  noun, or after an article or a possessive ("a post-it", "my post-it"). A singular of one
+  word that is also a verb ("wipe" of "wipes") is left alone after an article: "give it a
+  wipe" is an act, not the office's wipes; before a unit it is still the item ("a wipe
+  pack").
+
+Only words no other name of the office reads are read so: a singular that is already a name
+of the office (a person, place, facility, another item, a task word) keeps that reading.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping, Sequence
+
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+
+UNITS = english.words("unit_nouns")
+_OF = "of"
+# what stands before a counted noun: an article, a number word, a possessive
+_COUNTED_BEFORE = english.words("object_starts") | frozenset({"one", "another", "any", "each"})
+# the mention kinds a singular may replace: words the lexicon read as nothing of the office,
+# and the pronoun "it" of "post-it"
+_PLAIN = frozenset({"word", "pronoun"})
+
+
+def singulars(names: Iterable[tuple[str, str]], known: Callable[[str], bool]) -> dict[str, str]:
+    """The singular phrase of each plural name (key, type id) that no name of the office
+    reads already: "post it" for "post its", "bin bag" for "bin bags"."""
+    found: dict[str, str] = {}
+    for key, type_id in names:
+        *head, last = key.split()
+        if not language.is_plural_noun(key) and not last.endswith("s"):
+            continue
+        for one in _singular_words(last):
+            phrase = " ".join((*head, one))
+            if phrase != key and language.plural(phrase) == key and not known(phrase):
+                found.setdefault(phrase, type_id)
+    return found
+
+
+def _singular_words(word: str) -> list[str]:
+    """The nouns ``word`` may be the plural of: the dictionary's, then "-s" dropped ("its":
+    the pronoun "it" is no noun the dictionary inflects)."""
+    out = [w for w in language.lemmas(word).get("NOUN", ()) if w != word]
+    if word.endswith("es"):
+        out.append(word[:-2])
+    if word.endswith("s") and not word.endswith("ss"):
+        out.append(word[:-1])
+    return out
+
+
+def singular_spans(
+    tokens: Sequence[Token],
+    kinds: Mapping[int, str],
+    found: Mapping[str, str],
+    longest: int,
+) -> list[tuple[int, int, str]]:
+    """The (start, end, type id) of each singular of a plural name said where a counted noun
+    stands; ``kinds``: the mention kind the lexicon read at each token."""
+    out: list[tuple[int, int, str]] = []
+    i = 0
+    while i < len(tokens):
+        span = _singular_at(tokens, kinds, found, longest, i)
+        if span is None:
+            i += 1
+            continue
+        out.append(span)
+        i = span[1]
+    return out
+
+
+def _singular_at(
+    tokens: Sequence[Token],
+    kinds: Mapping[int, str],
+    found: Mapping[str, str],
+    longest: int,
+    i: int,
+) -> tuple[int, int, str] | None:
+    for n in range(min(longest, len(tokens) - i), 0, -1):
+        end = i + n
+        if any(kinds.get(k) not in _PLAIN for k in range(i, end)):
+            continue
+        if any(tokens[k].opens or tokens[k].after_pause for k in range(i + 1, end)):
+            continue  # "post. It ...": no one name across a break
+        phrase = " ".join(t.word for t in tokens[i:end])
+        type_id = found.get(phrase)
+        if type_id is None:
+            continue
+        before_unit = end < len(tokens) and tokens[end].word in UNITS
+        counted = i > 0 and tokens[i - 1].word in _COUNTED_BEFORE
+        if before_unit or (counted and (n > 1 or not language.verb_lemmas(phrase))):
+            return i, end, type_id
+    return None
+
+
+def unit_of(tokens: Sequence[Token], start: int) -> bool:
+    """Whether a unit noun and "of" stand at ``start`` ("a *box of* staples")."""
+    return (
+        start + 1 < len(tokens)
+        and tokens[start].word in UNITS
+        and tokens[start + 1].word == _OF
+        and not tokens[start + 1].after_pause
+    )
