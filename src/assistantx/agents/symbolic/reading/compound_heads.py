@@ -14,13 +14,15 @@ that is no adverb or adjective ("the wine *today*", "take my file *home*" say wh
 finite verb ("my stapler *works*"), no unit ("a scissors *pair*"), no word of the office (a
 name, a task word, a place), written in lower case and not after a pause or a sentence break.
 The dictionary's parts of speech are English, not the office's, so the rule holds for any
-office.
+office. A number or letter label between the name and the noun ("the *level* 3 drawings")
+leaves the name a modifier (``number_labels``).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+from assistantx.agents.symbolic.reading.number_labels import past_label
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
@@ -42,14 +44,20 @@ _PRONOUNS = (
 def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bool]) -> bool:
     """Whether the word at ``end`` (right after an item's name) is a noun the name modifies:
     the name is then the first part of a compound whose head comes later."""
-    if end >= len(tokens):
+    if end >= len(tokens) or tokens[end - 1].possessive:
         return False
-    t = tokens[end]
-    if t.opens or t.after_pause or tokens[end - 1].possessive:
+    # "the level 3 drawings": the labelled name modifies the noun after its label
+    labelled = past_label(tokens, end)
+    if labelled >= len(tokens):
         return False
-    if _says_how_it_is(tokens, end):
+    t = tokens[labelled]
+    if t.opens or t.after_pause:
         return False
-    return compound_noun(t, known)
+    if _says_how_it_is(tokens, labelled):
+        return False
+    # after a label a plural that is also a verb ("the level 3 plans") is the noun: a
+    # labelled thing is no subject of a request's verb
+    return compound_noun(t, known, verb_too=labelled > end)
 
 
 def _says_how_it_is(tokens: Sequence[Token], end: int) -> bool:
@@ -64,8 +72,9 @@ def _says_how_it_is(tokens: Sequence[Token], end: int) -> bool:
     return "ADJ" in parts or "ADV" in parts
 
 
-def compound_noun(t: Token, known: Callable[[str], bool]) -> bool:
-    """A word that can only be a noun inside a noun phrase here (see the module's note)."""
+def compound_noun(t: Token, known: Callable[[str], bool], *, verb_too: bool = False) -> bool:
+    """A word that can only be a noun inside a noun phrase here (see the module's note);
+    ``verb_too``: a noun that is also a finite verb's form counts ("plans")."""
     word = t.word
     if not t.text.isalpha() or not t.text[:1].islower() or t.corrected:
         return False  # "won't": a contraction, no noun; "Tobin": a name
@@ -73,4 +82,4 @@ def compound_noun(t: Token, known: Callable[[str], bool]) -> bool:
         return False
     parts = language.lemmas(word)
     describes = "ADV" in parts or "ADJ" in parts  # "real quick", "home", "back"
-    return "NOUN" in parts and not describes and not language.is_finite_verb(word)
+    return "NOUN" in parts and not describes and (verb_too or not language.is_finite_verb(word))

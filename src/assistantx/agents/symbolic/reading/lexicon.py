@@ -49,6 +49,7 @@ from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.measured_items import singular_spans, singulars, unit_of
 from assistantx.agents.symbolic.reading.near_forms import NearForms
+from assistantx.agents.symbolic.reading.number_labels import after_label
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
     operation_nouns,
@@ -826,6 +827,10 @@ class Lexicon:
             return mentions
         found = self.own_papers.found(tokens, mentions, self._known)
         guessed = self.own_papers.guessed(tokens, mentions, found)
+        # "print the floor 2 plans for me": a noun after a label names the requester's papers
+        # of that number, no guess to restate; the work asked says which item they are
+        labelled = {n: t for n, t in guessed.items() if after_label(tokens, mentions[n].start)}
+        found = {**found, **labelled}
         return [
             Mention("item", m.start, m.end, (found[n],), m.possessive, m.text)
             if n in found

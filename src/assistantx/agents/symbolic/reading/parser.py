@@ -60,6 +60,10 @@ from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
+from assistantx.agents.symbolic.reading.described_items import (
+    named_later,
+    without_hyphened_description,
+)
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
     doubted_recipient,
@@ -246,6 +250,10 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "Wang's budget plan? just send me the file": the plan is Wang's file
+        text = named_later(self.lex, text)
+        # "Wang's setting-out file": the description is no owner or part; Wang's file
+        text = without_hyphened_description(self.lex, text)
         # "Wang's document, the pdf one": the form picks the office's file or paper
         text = self._picked_form(text)
         text = carrying_particles(text)  # "bring some up to reception": to reception
