@@ -10,7 +10,7 @@ its first word alone (``reading.operation_nouns``)."""
 from __future__ import annotations
 
 import pytest
-from _offices import tasks_of
+from _offices import parser, tasks_of
 from symbolic_run import run_instruction
 
 from helpers.reading import frame_reader
@@ -83,6 +83,22 @@ def test_the_same_on_the_dataset_offices(
     office: str, requester: str, text: str, item: str, kind: str
 ) -> None:
     assert tasks_of(office, text, requester) == [(kind, item, requester, requester)]
+
+
+def test_a_paper_due_a_colleagues_signature_goes_to_them_to_sign() -> None:
+    # a colleague's work on a paper is a service of the office too ("signature" of sign)
+    frame = parser("default").parse(
+        "my contract is due Zhang's signature, can you take it over", "sun"
+    )
+    assert [(t.kind, t.item, t.owner, t.actor, t.recipient) for t in frame.tasks] == [
+        ("sign", "document", "sun", "zhang", "sun")
+    ], frame
+
+
+def test_a_signature_due_from_an_unsaid_signer_is_asked() -> None:
+    # "a signature from Zhang" is read as "needs a signature from Zhang" is: who signs is asked
+    frame = _lab("my contract is due a signature, can you take it over")
+    assert not frame.tasks and frame.question, frame
 
 
 # -- must not change: "due" of no service of the office ------------------------------------

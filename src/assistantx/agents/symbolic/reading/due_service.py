@@ -14,9 +14,10 @@ from collections.abc import Iterable
 from assistantx.core.office import Office
 from assistantx.memory.names import normalize
 
-# What may stand between "due (for)" and the service: an article or a possessive, and up to
-# two describing words ("due a *quick* bump test", "due its *annual* service").
-_OPENERS = r"(?:a|an|another|the|its|their|his|her|my|our|your)"
+# What may stand between "due (for)" and the service: an article or a possessive (a
+# colleague's too: "due Zhang's signature"), and up to two describing words ("due a *quick*
+# bump test", "due its *annual* service").
+_OPENERS = r"(?:a|an|another|the|its|their|his|her|my|our|your|[^\W\d_][\w.-]*['’]s)"
 
 
 def _alternation(phrases: Iterable[str]) -> str:
@@ -25,7 +26,10 @@ def _alternation(phrases: Iterable[str]) -> str:
 
 
 class DueService:
-    """Rewrites "<thing> is (over)due (for) a <service>" as "<thing> needs a <service>"."""
+    """Rewrites "<thing> is (over)due (for) a <service>" as "<thing> needs a <service>".
+    ``nouns``: the words the lexicon reads as a service besides its declared verbs and
+    names: the nouns of operations ("a lamination") and of a colleague's work on a paper
+    ("a signature", "a stamp")."""
 
     def __init__(self, office: Office, nouns: Iterable[str] = ()) -> None:
         phrases = {

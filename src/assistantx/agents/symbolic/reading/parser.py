@@ -222,7 +222,8 @@ class InstructionParser:
         self._products_listed = ProductsListed(office)  # "copy my document and a printout"
         self._picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
         # "my 4-gas is due a bump test": it needs one
-        self._due_service = DueService(office, self.lex.operation_nouns)
+        work = {w for k in task_kinds.person_kinds() for w in self.lex.cues.get(k, ())}
+        self._due_service = DueService(office, {*self.lex.operation_nouns, *work})
         self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
