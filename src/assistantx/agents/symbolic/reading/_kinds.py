@@ -23,6 +23,7 @@ from assistantx.agents.symbolic.reading.made_from import input_of_product
 from assistantx.agents.symbolic.reading.one_from_source import one_of_the_previous
 from assistantx.agents.symbolic.reading.stated_source import says_has_some
 from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
+from assistantx.agents.symbolic.reading.where_it_lives import lives_there
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office, OperationShape
 from assistantx.core.task_schema import FILE_KIND, SHAPE_KIND, Task
@@ -510,7 +511,10 @@ class TaskReader:
         treating = [
             m
             for m in treating
-            if not persons_place(m) and not has_some(m) and not what_it_is_for(m)
+            if not persons_place(m)
+            and not has_some(m)
+            and not what_it_is_for(m)
+            and not lives_there(m, before)  # "the meter that lives in the drying cabinet"
         ]
         if any(word_before(m) not in _FROM_FACILITY for m in treating):
             cues.add("heat")

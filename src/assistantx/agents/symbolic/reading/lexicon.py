@@ -60,6 +60,7 @@ from assistantx.agents.symbolic.reading.own_papers import OwnPapers
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
+from assistantx.agents.symbolic.reading.verb_named_places import in_a_place_slot, verb_named_places
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, name_parts, task_kinds
 from assistantx.core.name_reading import is_word_name, numeral, read_name, slot_at
@@ -292,6 +293,9 @@ class Lexicon:
     items: dict[str, str] = field(default_factory=dict)  # phrase → item type id
     facilities: dict[str, str] = field(default_factory=dict)  # phrase → facility id
     places: dict[str, str] = field(default_factory=dict)  # phrase → location id
+    # one-word place names that are also a service's verb ("dispatch"): places only in a
+    # place's slot ("in dispatch"), the verb elsewhere (``verb_named_places``)
+    verb_places: dict[str, str] = field(default_factory=dict)
     max_words: int = 1
     cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
     cue_words: frozenset[str] = frozenset()
@@ -462,6 +466,9 @@ class Lexicon:
                 key = key_of(name)
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
+        lex.verb_places = verb_named_places(
+            ((key_of(loc.name), loc.id) for loc in office.locations), lex.cue_words
+        )
         # "down to repro": a place's one-word name clipped as people say it
         taken = {*lex.people, *lex.name_words, *lex.items, *lex.facilities, *lex.places}
         clipped = clipped_names(
@@ -1081,6 +1088,8 @@ class Lexicon:
             return Mention("self", i, i + 1, (), w in ("my", "mine"), t.text)
         if w in PRONOUNS or w in OTHER_POSSESSIVES:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
+        if w in self.verb_places and in_a_place_slot(tokens, i):  # "Mateus in dispatch"
+            return Mention("place", i, i + 1, (self.verb_places[w],), t.possessive, t.text)
         if self._thing_named(tokens, i):  # "a brew": the office's tea
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         made = self.made_objects.product_at(tokens, i, self._known)

@@ -63,7 +63,9 @@ def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, s
             if len(words) == 1:
                 nouns |= _nominals(words[0])
         name = normalize(op.name).split()
-        if name and language.is_noun(name[-1]) and not _ends_with_thing(name, things):
+        if _is_a_declared_phrase(name, op.verbs):
+            pass  # "a bump test": the declared phrase itself, joined as the verb later
+        elif name and language.is_noun(name[-1]) and not _ends_with_thing(name, things):
             nouns.add(name[-1])  # "legal review": its head noun
         for noun in nouns:
             named.setdefault(noun, set()).add(verb)
@@ -72,6 +74,14 @@ def operation_nouns(office: Office, taken: Callable[[str], bool]) -> dict[str, s
         for noun, verbs in named.items()
         if len(verbs) == 1 and not taken(noun)
     }
+
+
+def _is_a_declared_phrase(name: list[str], verbs: Sequence[str]) -> bool:
+    """Whether an operation's display name of several words is one of its own declared verb
+    phrases ("bump test" asked for by "bump test"): the lexicon joins that phrase into one
+    verb token wherever it is said ("needs a bump test"), so reading its head noun as the
+    phrase's first word alone would leave "bump bump", no operation at all."""
+    return len(name) > 1 and " ".join(name) in {" ".join(normalize(v).split()) for v in verbs}
 
 
 def _thing_names(office: Office) -> set[tuple[str, ...]]:
@@ -100,6 +110,8 @@ def operation_names(office: Office) -> dict[tuple[str, ...], str]:
         if not op.verbs:
             continue
         name = tuple(normalize(op.name).split())
+        if _is_a_declared_phrase(list(name), op.verbs):
+            continue  # the name is the operation's own verb phrase ("bump test")
         if len(name) >= 2 and language.is_noun(name[-1]):
             named.setdefault(name, set()).add(normalize(op.verbs[0]).split()[0])
     return {name: next(iter(verbs)) for name, verbs in named.items() if len(verbs) == 1}

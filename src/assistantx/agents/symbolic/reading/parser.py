@@ -69,6 +69,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
     doubted_recipient,
     either_doer,
 )
+from assistantx.agents.symbolic.reading.due_service import DueService
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     RESTATED,
@@ -224,6 +225,9 @@ class InstructionParser:
         self._something_from = SomethingFrom(office)  # "something from the vending machine"
         self._products_listed = ProductsListed(office)  # "copy my document and a printout"
         self._picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
+        # "my 4-gas is due a bump test": it needs one
+        work = {w for k in task_kinds.person_kinds() for w in self.lex.cues.get(k, ())}
+        self._due_service = DueService(office, {*self.lex.operation_nouns, *work})
         self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
@@ -275,6 +279,7 @@ class InstructionParser:
         text, _ = without_seating(self.screen.terms, text)
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
+        text = self._due_service(text)  # "my 4-gas is due a bump test": it needs one
         # "Zhang would like / 'd like / could use a stapler": Zhang wants one
         text = named_wants(text, self._one_name)
         text = announced_list(text)  # "Two things: ...": the count names nothing

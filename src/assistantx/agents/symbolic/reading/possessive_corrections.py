@@ -3,13 +3,16 @@ its own) set off after the thing asked for corrects or picks that thing's owner;
 a second thing. "can I have a stapler, not Wang's, Zhang's": one stapler, Zhang's (the refused
 one is left out; before, anyone's stapler AND Zhang's were fetched); "bring me Hu's stapler,
 Gao's": a correction, Gao's stapler (before, both were fetched); "a stapler, Zhang's please":
-Zhang's, as "a stapler, Zhang's" is read (before, anyone's AND Zhang's).
+Zhang's, as "a stapler, Zhang's" is read (before, anyone's AND Zhang's). "Seun's one" is the
+same bare possessive with the thing's pro-form after it ("I need the moisture meter that lives
+in the drying room, Seun's one": Seun's; before, anyone's).
 
-Only a possessive with nothing after it but a courtesy word ("please", "instead") before a
-pause or the sentence's end corrects: "Zhang's too", "Zhang's scissors", "Zhang's is broken"
-say something else and are left alone; so is a refusal with no choice after it ("Wang's
-stapler, not Zhang's"), and a choice among two owners said before it. The choice left ("a
-stapler, Zhang's") is read by ``accepted_owner``, which runs after this."""
+Only a possessive with nothing after it but "one" or a courtesy word ("please", "instead")
+before a pause or the sentence's end corrects: "Zhang's too", "Zhang's scissors", "Zhang's is
+broken", "Zhang's one is broken" say something else and are left alone; so is a refusal with
+no choice after it ("Wang's stapler, not Zhang's"), and a choice among two owners said before
+it. The choice left ("a stapler, Zhang's") is read by ``accepted_owner``, which runs after
+this."""
 
 from __future__ import annotations
 
@@ -21,6 +24,8 @@ from assistantx.core import english
 
 _REFUSALS = english.words("exclusion_openers") | {"no"}
 _COURTESY = english.words("asking_words") | {"instead", "then"}
+# "Seun's one": the pro-form of the thing said before, no second thing
+_ONE = frozenset({"one", "ones"})
 _MARKERS = english.entries("owner_correction_markers")
 
 # a pause, then words that mark a correction, right before the choice ("..., no wait, Dawn's")
@@ -77,7 +82,7 @@ def _bare_stop(sentence: str, at: int) -> int | None:
         said = word.group("word").lower()
         if said == "but":
             return at
-        if said not in _COURTESY:
+        if said not in _COURTESY and said not in _ONE:
             return None
         at = word.end()
 
