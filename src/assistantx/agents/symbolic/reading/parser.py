@@ -141,6 +141,8 @@ from assistantx.agents.symbolic.reading.screen.seated_where import without_seati
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
+from assistantx.agents.symbolic.reading.speaker_lack import speaker_lacks
+from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
@@ -157,6 +159,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
     variety_of,
 )
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
+from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -266,6 +269,10 @@ class InstructionParser:
         # readings of "<name> would like", which take the name next to the verb)
         text, _ = without_seating(self.screen.terms, text)
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
+        # "I've got 40 forms to sign and no pen": the forms are why the pen is wanted
+        text = work_as_purpose(
+            text, self._lacks, self._names_item, self.screen.terms.is_person_word
+        )
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
         # "Zhang would like / 'd like / could use a stapler": Zhang wants one
         text = named_wants(text, self._one_name)
@@ -315,6 +322,17 @@ class InstructionParser:
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _lacks(self, clause: str) -> bool:
+        """Whether ``clause`` opens with the speaker's lack of an item ("I've run out of
+        wipes")."""
+        words = content([t.word for t in self.lex.tokens(clause)])
+        return speaker_lacks(words, lambda said: " ".join(said) in self.lex.items)
+
+    def _names_item(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one of the office's items and nothing else ("pen")."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        return len(mentions) == 1 and mentions[0].kind == "item"
 
     def _names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
