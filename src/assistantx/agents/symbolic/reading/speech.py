@@ -35,6 +35,7 @@ from typing import Literal
 from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.declined_more import declines_more
+from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
@@ -776,6 +777,8 @@ class SpeechActs:
             return False  # "Chen is looking for a pen": a need
         if self._lacks(w):
             return False  # "I've run out of wipes": said to the assistant, a want
+        if facility_told(w, self.lex.facilities):
+            return True  # "coffee machine's been making a weird noise": told of the machine
         if self._minded(w):
             return False  # "I hope you don't mind bringing me a pen": asked, gently
         if self._command_inside(w):
