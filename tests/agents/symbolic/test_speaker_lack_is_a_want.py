@@ -70,11 +70,14 @@ def test_a_lack_of_what_a_machine_makes_is_made_for_the_speaker() -> None:
         "I've run out of pens at home, I'll pick some up tonight",  # their own plan
         "I have no idea",  # no thing of the office
         "I'm out of the office today",
+        # one's own lunch, paper or file is nobody's to bring: news, as before
+        "I have no lunch today",
+        "I have no document",
     ],
 )
 def test_no_lack_of_the_speakers_moves_nothing(text: str) -> None:
     frame = frame_reader(default_office, "lee")(text)
-    assert frame.tasks == [], frame
+    assert frame.tasks == [] and frame.question is None, frame
 
 
 @pytest.mark.parametrize(

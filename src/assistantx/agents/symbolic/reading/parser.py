@@ -141,7 +141,7 @@ from assistantx.agents.symbolic.reading.screen.seated_where import without_seati
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
-from assistantx.agents.symbolic.reading.speaker_lack import speaker_lacks
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
@@ -327,12 +327,12 @@ class InstructionParser:
         """Whether ``clause`` opens with the speaker's lack of an item ("I've run out of
         wipes")."""
         words = content([t.word for t in self.lex.tokens(clause)])
-        return speaker_lacks(words, lambda said: " ".join(said) in self.lex.items)
+        return speaker_lacks(words, given_thing(self.lex))
 
     def _names_item(self, phrase: str) -> bool:
-        """Whether ``phrase`` is one of the office's items and nothing else ("pen")."""
-        mentions = self.lex.scan(self.lex.tokens(phrase))
-        return len(mentions) == 1 and mentions[0].kind == "item"
+        """Whether ``phrase`` is one of the office's items the office can give and nothing
+        else ("pen")."""
+        return given_thing(self.lex)([t.word for t in self.lex.tokens(phrase)])
 
     def _names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""

@@ -12,9 +12,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.core import english
 
 _PHRASES = tuple(tuple(p.split()) for p in english.entries("speaker_lack_phrases"))
+# the kinds of thing the office can give the speaker: a belonging someone has or a supply, and
+# what a machine makes; one's own lunch, paper or file is nobody's to bring ("I have no lunch
+# today" is news)
+_GIVEN = frozenset({"belonging", "product"})
 _TAILS = tuple(tuple(p.split()) for p in english.entries("speaker_lack_tails"))
 # the words between the lack and its thing ("out of *any* paper", "no *more* pens")
 _BEFORE_THING = frozenset({"a", "an", "any", "the", "my", "our", "some", "more", "clean", "spare"})
@@ -43,3 +48,13 @@ def _thing_at(w: Sequence[str], k: int, names_item: Callable[[list[str]], bool])
         if k + size <= len(w) and names_item(list(w[k : k + size])):
             return k + size
     return None
+
+
+def given_thing(lex: Lexicon) -> Callable[[list[str]], bool]:
+    """Whether words name an item of ``lex``'s office of a kind the office can give."""
+
+    def given(said: list[str]) -> bool:
+        type_id = lex.items.get(" ".join(said))
+        return type_id is not None and lex.office.item_type(type_id).kind in _GIVEN
+
+    return given

@@ -43,7 +43,7 @@ from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
-from assistantx.agents.symbolic.reading.speaker_lack import speaker_lacks
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.agents.symbolic.reading.thing_needs import part_told, work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
@@ -1051,7 +1051,7 @@ class SpeechActs:
     def _lacks(self, w: list[str]) -> bool:
         """ "I've run out of wipes", "no pens left": the speaker's own lack of an item, no
         statement (``screen.unasked`` reads it as asking)."""
-        return speaker_lacks(w, lambda said: " ".join(said) in self.lex.items)
+        return speaker_lacks(w, given_thing(self.lex))
 
     @staticmethod
     def doubts_ability(words: list[str]) -> bool:

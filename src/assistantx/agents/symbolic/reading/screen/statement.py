@@ -18,7 +18,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_t
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
-from assistantx.agents.symbolic.reading.speaker_lack import speaker_lacks
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language, wording
@@ -537,7 +537,7 @@ def told_lack(terms: Terms, piece: Piece) -> bool:
     """ "I've run out of wipes", "no pens left": the speaker's own lack of one of the
     office's items (``speaker_lack``)."""
     said = content(piece.words)
-    return speaker_lacks(said, lambda w: " ".join(w) in terms.lex.items)
+    return speaker_lacks(said, given_thing(terms.lex))
 
 
 def lack_beside_request(terms: Terms, msg: Message, piece: Piece) -> bool:
