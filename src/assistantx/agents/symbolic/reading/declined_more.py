@@ -53,6 +53,11 @@ _TAIL = frozenset(
         "fine",
         "ok",
         "okay",
+        # "no pen needed, thanks": the thing said not to be wanted at all
+        "needed",
+        "required",
+        "necessary",
+        "wanted",
     }
 )
 

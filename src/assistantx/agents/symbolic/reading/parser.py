@@ -146,6 +146,8 @@ from assistantx.agents.symbolic.reading.screen.seated_where import without_seati
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
+from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
@@ -162,6 +164,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
     variety_of,
 )
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
+from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -278,6 +281,10 @@ class InstructionParser:
         # readings of "<name> would like", which take the name next to the verb)
         text, _ = without_seating(self.screen.terms, text)
         text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
+        # "I've got 40 forms to sign and no pen": the forms are why the pen is wanted
+        text = work_as_purpose(
+            text, self._lacks, self._names_item, self.screen.terms.is_person_word
+        )
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
         text = self._due_service(text)  # "my 4-gas is due a bump test": it needs one
         # "Zhang would like / 'd like / could use a stapler": Zhang wants one
@@ -328,6 +335,17 @@ class InstructionParser:
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _lacks(self, clause: str) -> bool:
+        """Whether ``clause`` opens with the speaker's lack of an item ("I've run out of
+        wipes")."""
+        words = content([t.word for t in self.lex.tokens(clause)])
+        return speaker_lacks(words, given_thing(self.lex))
+
+    def _names_item(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one of the office's items the office can give and nothing
+        else ("pen")."""
+        return given_thing(self.lex)([t.word for t in self.lex.tokens(phrase)])
 
     def _names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""

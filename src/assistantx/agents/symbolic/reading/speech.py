@@ -35,6 +35,7 @@ from typing import Literal
 from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.declined_more import declines_more
+from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
@@ -42,6 +43,7 @@ from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.agents.symbolic.reading.thing_needs import part_told, work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
@@ -773,6 +775,10 @@ class SpeechActs:
             return True  # "the calculator needs new batteries": none kept, nothing to fetch
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
+        if self._lacks(w):
+            return False  # "I've run out of wipes": said to the assistant, a want
+        if facility_told(w, self.lex.facilities):
+            return True  # "coffee machine's been making a weird noise": told of the machine
         if self._minded(w):
             return False  # "I hope you don't mind bringing me a pen": asked, gently
         if self._command_inside(w):
@@ -1041,6 +1047,11 @@ class SpeechActs:
         if self._imperative(w) or said & _WILLING or self._minded(w):
             return True
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
+
+    def _lacks(self, w: list[str]) -> bool:
+        """ "I've run out of wipes", "no pens left": the speaker's own lack of an item, no
+        statement (``screen.unasked`` reads it as asking)."""
+        return speaker_lacks(w, given_thing(self.lex))
 
     @staticmethod
     def doubts_ability(words: list[str]) -> bool:

@@ -40,13 +40,14 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
         "unsupported",  # a place outside ("... to the applicant's house on Elm Road")
         "unsupported",  # ordering from outside ("order us some sandwiches for the meeting")
+        "statement",  # the speaker's own doing beside a request ("need to check the contacts"),
+        # before its place ("..., need to check levels on L2") is read as a placement
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
         "fact",
         "statement",  # when someone will be back ("back in an hour"), no thing to fetch
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
-        "statement",  # the speaker's own doing beside a request ("need to check the contacts")
         "statement",  # a thing of an occasion beside a request ("need a copy of the new signing")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)

@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.supply_going import supply_going
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english
 
@@ -46,6 +47,8 @@ def elliptical_ask(terms: Terms, msg: Message, piece: Piece) -> bool:
     (answered, an offer at most)."""
     if terms.named(piece.lexed, "person"):
         return False
+    if supply_going(terms, piece):
+        return True  # "is there any paper going?": the office's supply, wanted
     if not _things(piece):
         return _spare_after_complaint(msg, piece)
     if len(_things(piece)) != 1:

@@ -2,10 +2,14 @@
 need to do something that is no errand or service of the office ("check", "look over"), said
 beside a request, is why the request is made. What it names ("the contacts") is the object of
 the speaker's own activity, never the request's, so the piece is context, not read for tasks.
-"I need to get my shoot printed" is no such piece: "get" is an errand's verb."""
+"I need to get my shoot printed" is no such piece: "get" is an errand's verb. A colleague's
+work said as the speaker's own ("grab me a pen, gotta sign the contracts") is theirs to do,
+and the doing is read before its place or thing is taken for a placement ("can u grab
+bjorns laser, need to check levels on L2")."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -30,9 +34,14 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if wish:  # "I'd like to look under the boiler": a plan of one's own, as "want to"
         words = ["want", *words[2 if words[:1] == ["would"] else 1 :]]
     rest = after_plan(words, _OWN_PLAN, _BETWEEN)
-    if not rest or rest[0] in terms.lex.cue_words or rest[0] in terms.service_verbs:
-        return None  # "need to get my shoot printed": an errand or a service here, asked
-    if infinitive(words, rest):
+    if not rest or rest[0] in terms.service_verbs:
+        return None  # "need to heat it up": a service here, asked
+    # "gotta sign the contracts": a colleague's work ("sign", "seal") done by the speaker
+    # themselves, never asked of the robot; an errand ("get", "send") is asked
+    own_work = rest[0] in PERSON_WORK
+    if rest[0] in terms.lex.cue_words and not own_work:
+        return None  # "need to get my shoot printed": an errand here, asked
+    if own_work or infinitive(words, rest):
         return Finding("statement", piece, "the speaker's own doing, context only")
     if terms.request_verb(rest, 0):
         return None

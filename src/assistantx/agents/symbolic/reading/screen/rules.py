@@ -120,13 +120,15 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("unsupported", outside_place),
     # "order us some sandwiches": buying from outside, never a colleague's thing fetched
     ("unsupported", ordering),
+    # "..., need to check levels on L2": the speaker's own doing, why the request is made,
+    # before its place ("on L2") or its thing ("levels") is read as a placement asked
+    ("statement", own_doing),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     ("statement", elliptical_reason),
     ("fact", fact),
     ("statement", back_when),
     ("statement", facility_report),
-    ("statement", own_doing),
     # "..., need a copy of the new signing": a thing of an occasion, why it is asked
     ("statement", event_of),
     ("statement", doing_after),

@@ -18,6 +18,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_t
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language, wording
@@ -72,7 +73,8 @@ def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if offered is not None:
         return offered
     praise = not piece.asks and praise_remark(piece)
-    if not praise and (piece.asks or not piece.acts.statement):
+    told = praise or lack_beside_request(terms, msg, piece)
+    if not told and (piece.asks or not piece.acts.statement):
         return None
     named = (
         tuple(stated_items(terms, piece, requester) or one_held(terms, msg, piece))
@@ -529,6 +531,29 @@ def own_lack(terms: Terms, msg: Message, piece: Piece) -> bool:
     ):
         return False  # "out of pens at home, can you bring me one?": asked
     return _at_home(words) or bool(plans)
+
+
+def told_lack(terms: Terms, piece: Piece) -> bool:
+    """ "I've run out of wipes", "no pens left": the speaker's own lack of one of the
+    office's items (``speaker_lack``)."""
+    said = content(piece.words)
+    return speaker_lacks(said, given_thing(terms.lex))
+
+
+def lack_beside_request(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "I ran out of paper. Could you bring me a pen?": the speaker's lack, read as their
+    want when it is all they say (``speaker_lack``), is why they ask when another piece of
+    the message asks: told, context only (its thing stays for "some" in "... find me some")."""
+    acts = piece.acts
+    if piece.asks or acts.request or acts.imperative or acts.question is not None:
+        return False
+    if not told_lack(terms, piece):
+        return False
+    return any(
+        p.asks or p.acts.request or p.acts.imperative or p.acts.question is not None
+        for p in msg.pieces
+        if p is not piece
+    )
 
 
 def lack_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | None:

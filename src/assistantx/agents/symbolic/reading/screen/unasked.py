@@ -10,13 +10,16 @@ question, one's own need, a third person's need, someone's work on the speaker's
 question mark, or a word that asks however short it is ("pls", "asap", "thanks"). A bare
 fragment that opens with the thing wanted, after its determiners, owner and describing
 words ("stapler", "my lunch from the fridge", "Wang's stapler on my desk", "two coffees",
-"something to cut this with"), is a request said short and is read as before."""
+"something to cut this with"), is a request said short and is read as before, and so is the
+speaker's own lack of a thing ("I've run out of wipes", ``statement.told_lack``): said to
+the assistant, a want."""
 
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.destructive import commanded
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.pieces import Piece
+from assistantx.agents.symbolic.reading.screen.statement import told_lack
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english, language
@@ -32,7 +35,9 @@ _ANY_THING = frozenset({"something", "anything", "smth", "sth", "summat"})
 
 def unasked(terms: Terms, kept: list[Piece]) -> bool:
     """Whether no piece of ``kept`` asks for anything, and none is a request said short."""
-    return bool(kept) and not any(_asks(p) or commanded(terms, p) or _bare_request(p) for p in kept)
+    return bool(kept) and not any(
+        _asks(p) or commanded(terms, p) or _bare_request(p) or told_lack(terms, p) for p in kept
+    )
 
 
 def _asks(piece: Piece) -> bool:
