@@ -40,9 +40,17 @@ def test_a_head_of_one_types_names_is_that_type(text: str, item: str, to: str) -
     assert _tasks(frame) == [("transfer", item, to)]
 
 
-def test_a_question_by_the_head_is_answered_for_the_type() -> None:
-    question = _stores("is there any gel going?").question or ""
+@pytest.mark.parametrize("text", ["do we have any gel?", "is there any gel?"])
+def test_a_question_by_the_head_is_answered_for_the_type(text: str) -> None:
+    question = _stores(text).question or ""
     assert question.startswith("There is some hand sanitiser in the stores cupboard."), question
+
+
+def test_any_gel_going_is_a_want_of_the_type() -> None:
+    # "any X going?" of a supply the office holds is a want (``screen.supply_going``)
+    frame = _stores("is there any gel going?")
+    assert frame.question is None and frame.decline is None, (frame.question, frame.decline)
+    assert _tasks(frame) == [("transfer", "sanitiser", "ada")]
 
 
 @pytest.mark.parametrize(
