@@ -23,8 +23,9 @@ _PEOPLE = (
 )
 
 
-def _raw_site_office() -> dict[str, Any]:
-    """A site office with a laser level ("level") and a plotter that prints ("plot")."""
+def _raw_site_office(file_words: tuple[str, ...] = ()) -> dict[str, Any]:
+    """A site office with a laser level ("level") and a plotter that prints ("plot");
+    ``file_words``: more names of the electronic file ("drawings")."""
     return ob.office_file(
         "site office",
         _PEOPLE,
@@ -33,7 +34,7 @@ def _raw_site_office() -> dict[str, Any]:
         item_types=[
             ob.item("level", "laser level", synonyms=["level", "line laser"]),
             ob.item("stapler", "stapler"),
-            ob.item("file", "electronic file", "electronic", synonyms=["file", "pdf"]),
+            ob.item("file", "electronic file", "electronic", synonyms=["file", "pdf", *file_words]),
             ob.item("printout", "printout", "product", synonyms=["print"]),
         ],
         operations=[ob.operation("print", "print", "plot", input="file", product="printout")],
@@ -52,6 +53,10 @@ def _raw_site_office() -> dict[str, Any]:
 
 
 _SITE = frame_reader(ob.parsed(_raw_site_office), "rhea")
+# the same office where the file is also called "drawings" (an office's own word for it)
+_DRAWINGS_SITE = frame_reader(
+    ob.parsed(lambda: _raw_site_office(("drawing", "drawings", "plans"))), "rhea"
+)
 _DEFAULT = frame_reader(default_office, "lee")
 _HARBOUR = frame_reader(harbour_office, "will")
 
@@ -74,6 +79,29 @@ def test_a_labelled_item_name_before_a_noun_is_no_item(text: str) -> None:
     frame = _SITE(text)
     assert frame.question is None, frame
     assert _tasks(frame) == [("print", "file", "rhea", "rhea")], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("plot the level 3 drawings for me", [("print", "file", "rhea", "rhea")]),
+        ("print the level B plans for me", [("print", "file", "rhea", "rhea")]),
+        # the labelled file as the second part of a request
+        (
+            "bring me Iris's stapler, and plot the level 3 drawings for me",
+            [("print", "file", "rhea", "rhea"), ("transfer", "stapler", "iris", "rhea")],
+        ),
+        # must not change: the level itself, labelled or not, and a pause before the file
+        ("bring me the level 3", [("transfer", "level", None, "rhea")]),
+        ("bring me Iris's level", [("transfer", "level", "iris", "rhea")]),
+    ],
+)
+def test_a_labelled_item_name_before_another_items_name_names_that_item(
+    text: str, expected: list[tuple[str, str, str | None, str]]
+) -> None:
+    frame = _DRAWINGS_SITE(text)
+    assert frame.question is None, frame
+    assert _tasks(frame) == expected, frame
 
 
 @pytest.mark.parametrize(

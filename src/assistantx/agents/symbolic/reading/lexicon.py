@@ -49,7 +49,7 @@ from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.measured_items import singular_spans, singulars, unit_of
 from assistantx.agents.symbolic.reading.near_forms import NearForms
-from assistantx.agents.symbolic.reading.number_labels import after_label
+from assistantx.agents.symbolic.reading.number_labels import after_label, labels_an_item
 from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_names,
     operation_nouns,
@@ -852,6 +852,7 @@ class Lexicon:
         the first part of a compound (``compound_heads``), a plain word, not the item. So is
         a facility's name inside an item's noun phrase that it does no work on ("my
         *autoclave* log spreadsheet": a file, no sterilising; ``_facility_modifies``)."""
+        item_starts = {m.start for m in mentions if m.kind == "item"}
         return [
             Mention(
                 "word",
@@ -861,7 +862,13 @@ class Lexicon:
                 m.possessive,
                 m.text,
             )
-            if (m.kind == "item" and modifies_a_noun(tokens, m.end, self._known))
+            if (
+                m.kind == "item"
+                and (
+                    modifies_a_noun(tokens, m.end, self._known)
+                    or labels_an_item(tokens, m.end, item_starts)
+                )
+            )
             or (m.kind == "facility" and self._facility_modifies(tokens, mentions, n))
             else m
             for n, m in enumerate(mentions)

@@ -15,7 +15,7 @@ word, not a label, and so is "I" ("the level I need"): the speaker.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 from assistantx.agents.symbolic.reading.tokens import Token
 
@@ -38,3 +38,17 @@ def after_label(tokens: Sequence[Token], at: int) -> bool:
     """Whether the word at ``at`` comes right after a label that follows a word ("floor 2
     *plans*"): a noun the labelled word modifies."""
     return at >= 2 and is_label(tokens[at - 1]) and tokens[at - 2].word.isalpha()
+
+
+def labels_an_item(tokens: Sequence[Token], end: int, item_starts: Collection[int]) -> bool:
+    """Whether an item's name ending at ``end`` is followed by a label and then another of
+    the office's items ("the *level* 3 drawings" where "drawings" is the file's synonym): the
+    labelled name says which of those is meant, so the thing is the one after the label."""
+    at = past_label(tokens, end)
+    return (
+        at > end
+        and at in item_starts
+        and not tokens[end - 1].possessive
+        and not tokens[at].after_pause
+        and tokens[at].text[:1].islower()
+    )
