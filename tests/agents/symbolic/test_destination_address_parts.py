@@ -47,6 +47,23 @@ _frame = frame_reader(courier_room, "bjorn")
         ("courier my contract to Acme Ltd, it has to go today", "Acme Ltd"),
         ("courier my contract to Smith and Sons, Leeds", "Smith and Sons, Leeds"),
         ("courier my contract to the head office", "the head office"),
+        # a numbered street line longer than a town's ("Unit 4 Dockside Road")
+        (
+            "courier my form to Baxter Steel Ltd, Unit 4 Dockside Road",
+            "Baxter Steel Ltd, Unit 4 Dockside Road",
+        ),
+        (
+            "courier my form to Baxter Steel Ltd, Unit 4 Dockside Road, thanks",
+            "Baxter Steel Ltd, Unit 4 Dockside Road",
+        ),
+        # a number to dial after the place, whatever the place looks like
+        ("courier my form to Dr Osei's clinic, 01632 960442", "Dr Osei's clinic, 01632 960442"),
+        ("courier my form to the clinic, 01632 960442 please", "the clinic, 01632 960442"),
+        # a proper name with its joining words
+        ("courier my form to Dr Okafor, School of Pharmacy", "Dr Okafor, School of Pharmacy"),
+        # must not change: a small number is no number to dial, a lower-case clause no street
+        ("courier my form to the clinic, 3 please", "the clinic"),
+        ("courier my form to Baxter Steel Ltd, it has to go by 4 today", "Baxter Steel Ltd"),
     ],
 )
 def test_the_destination_keeps_its_address_parts(text: str, place: str) -> None:

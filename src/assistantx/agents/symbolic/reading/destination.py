@@ -24,6 +24,10 @@ _END_WORDS = frozenset(
     {"please", "pls", "thanks", "thank", "thx", "asap", "today", "tonight", "tomorrow", "now"}
 )
 _TAIL_WORDS = 3  # the town (and postcode) after an address's comma
+# a street line after an address's comma ("Unit 4 Dockside Road", "Flat 2, 14 Elm Road"): a
+# number among capitalised words, so a part of it may be longer than a town's
+_STREET_WORDS = 6
+_DIALLED_DIGITS = 6  # the fewest digits of a phone or fax number said after a comma
 _LONGEST = 80  # a destination longer than this is not one phrase: ask instead
 # The object pronouns of a request whose item (and destination) a statement before it named.
 _PRONOUNS = frozenset({"it", "them", "this", "that"})
@@ -277,6 +281,7 @@ def _address_tail(
         and not _proper_name(so_far)
         and not _role_named(tokens, gaps, start, end)
         and not _street_line(tokens[end : end + 2])
+        and not _numbers_only(tokens, gaps, end, stop)
     ):
         return end
     words = [t.word for t in tokens]
@@ -295,15 +300,37 @@ def _address_tail(
         part = part[1:]
     if (
         not part
-        or len(part) > _TAIL_WORDS
+        or len(part) > (_STREET_WORDS if _numbered(part) else _TAIL_WORDS)
         or any(_a_person(tokens, n, k, names) for n in range(end, k))
     ):
         return end
     if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
         return end  # "to Ofcom, Monday": when, not where
-    if all(_place_word(t) for t in part):
+    # "School of Pharmacy": a proper name's small joining words are part of the place too
+    if all(_place_word(t) for t in part) or _proper_name(part):
         return k
     return end
+
+
+def _numbered(part: Sequence[Token]) -> bool:
+    """Whether an address's part after a comma is a numbered line ("Unit 4 Dockside Road",
+    "14 Quay Road"): a number and, but for it, capitalised words only."""
+    return any(t.text.isdigit() for t in part) and all(
+        t.text.isdigit() or t.text[:1].isupper() for t in part
+    )
+
+
+def _numbers_only(tokens: Sequence[Token], gaps: Sequence[str], end: int, stop: int) -> bool:
+    """Whether the part after the comma at ``end`` is only a number to dial ("Dr Osei's
+    clinic, 01632 960442"): the place's phone or fax number, said after it; the destination
+    goes on over it, whatever the words before the comma look like."""
+    k = end
+    while k < stop and (k == end or not _ends(gaps[k])) and tokens[k].word not in _END_WORDS:
+        if not tokens[k].text.isdigit():
+            return False
+        k += 1
+    # a number to dial has some digits: "the clinic, 3 please" may be how many
+    return sum(len(t.text) for t in tokens[end:k]) >= _DIALLED_DIGITS
 
 
 def _street_line(first: Sequence[Token]) -> bool:
