@@ -73,6 +73,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
     doubted_recipient,
     either_doer,
 )
+from assistantx.agents.symbolic.reading.emailed_paper import BRING, emailed_paper
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     RESTATED,
@@ -258,6 +259,12 @@ class InstructionParser:
         text = named_later(self.lex, text)
         # "Wang's setting-out file": the description is no owner or part; Wang's file
         text = without_hyphened_description(self.lex, text)
+        # "could I have Wang's report? just email it to me": a copy the office makes
+        # electronic ("scan it"), else asked whether the paper is brought (a yes: brought)
+        emailed = emailed_paper(self.lex, text)
+        if emailed is not None and (emailed.operation_verb is not None or confirmed):
+            text = emailed.with_verb(text, emailed.operation_verb or BRING)
+            emailed = None
         # "Wang's document, the pdf one": the form picks the office's file or paper
         text = self._picked_form(text)
         text = carrying_particles(text)  # "bring some up to reception": to reception
@@ -308,6 +315,8 @@ class InstructionParser:
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
+        if emailed is not None:
+            return TaskFrame(requester=requester, question=emailed.question)
         doubt = recipient_in_doubt(self.lex, text, requester)
         if doubt is not None:
             # "could I have Wang's plan? Zhang needs the file": Wang's, for me or for Zhang?
