@@ -34,6 +34,15 @@ def _tasks(frame: object) -> list[tuple[str, str, str | None, str | None]]:
             "could I have Wang's report? Zhang needs the report",
             "Wang's report for you, or for Zhang Wei?",
         ),
+        # the recipient after "to", and a want said with a helping verb
+        (
+            "could I have Wang's budget plan? send the file to Zhang",
+            "Wang's budget plan file for you, or for Zhang Wei?",
+        ),
+        (
+            "could I have Wang's budget plan? Zhang would like the file",
+            "Wang's budget plan file for you, or for Zhang Wei?",
+        ),
         (
             "can you send me Hu's quarterly forecast? Zhang wants the file",
             "Hu's quarterly forecast for you, or for Zhang Wei?",

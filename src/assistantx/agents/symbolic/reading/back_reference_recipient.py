@@ -32,7 +32,9 @@ _NEEDS = english.words("need_verbs")
 _FOR_WHOM = frozenset({"to", "for"})
 _BACK = frozenset({"the", "that", "this"})  # "the file", "that file"
 _BACK_PRONOUNS = frozenset({"it", "that", "this"})
-_NEGATORS = english.words("negators") | english.words("statement_negations")
+_NEGATORS = english.words("statement_negations") | {"neednt"}  # "Zhang doesn't need it"
+# "Zhang would like the file", "Zhang could use it": a want said with a helping verb
+_MODAL_WANTS = tuple(tuple(p.split()) for p in english.entries("modal_wants"))
 _SELF = english.words("self_words") - {"my", "mine"}  # the speaker as a party: "I", "me"
 _DESCRIBING = frozenset({"word"})
 _LONGEST = 4  # describing words before the item ("quarter end budget plan")
@@ -55,9 +57,10 @@ def recipient_as_need(tokens: Sequence[Token], m: Mention) -> bool:
     ("Zhang needs", "Zhang wants") or after "to"/"for" ("pass it to Zhang")."""
     if m.kind != "person" or m.possessive or len(m.ids) != 1:
         return False
-    after = tokens[m.end].word if m.end < len(tokens) else ""
+    after = tuple(t.word for t in tokens[m.end : m.end + 2])
     before = tokens[m.start - 1].word if m.start > 0 else ""
-    return after in _NEEDS or before in _FOR_WHOM
+    wants = after[:1] in {(w,) for w in _NEEDS} or any(after[: len(p)] == p for p in _MODAL_WANTS)
+    return wants or before in _FOR_WHOM
 
 
 def recipient_in_doubt(lex: Lexicon, text: str, requester: str) -> Doubt | None:
