@@ -114,3 +114,17 @@ def test_must_not_change_neighbours(
 ) -> None:
     frame = _default(text)
     assert frame.question is None and _tasks(frame) == expected, frame
+
+
+def test_a_colleague_named_as_whom_it_is_emailed_to_is_kept() -> None:
+    # was Wang's paper carried to Zhang; now said, and a yes brings it to Zhang
+    text = "could I have Wang's report? email it to Zhang"
+    question = "I can't email a paper document here. Shall I bring Wang's report to Zhang Wei?"
+    assert _default(text).question == question
+    assert _tasks(_default_answered(text, ["Yes, please."])) == [
+        ("transfer", "document", "wang", "zhang")
+    ]
+    # an office that scans it: the copy for the one named
+    assert _tasks(_harbour("could I have Pat's contract? email it to Bill")) == [
+        ("copy", "document", "pat", "bill")
+    ]

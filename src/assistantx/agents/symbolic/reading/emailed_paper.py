@@ -26,6 +26,7 @@ from assistantx.core.office import Office
 
 _SENDING = english.words("electronic_sending")
 _BACK = frozenset({"it", "that", "this"})
+_TO = frozenset({"to", "for"})
 _PAPER_NOUNS = english.words("paper_nouns")
 _ELECTRONIC_WORDS = english.words("electronic_formats") | english.words("electronic_picks")
 BRING = "bring"  # the send read as the paper brought, on a yes
@@ -43,20 +44,25 @@ class EmailedPaper:
     operation_verb: str | None  # the office's verb that makes an electronic copy ("scan")
     clause_end: int  # where the clause of the send ends (its last word's end)
     asked: int  # where the clause asking for the paper starts
+    to: str | None  # the colleague the send names ("email it to Zhang"); None: the speaker
 
     def with_verb(self, text: str, verb: str) -> str:
         """The request and its send said as one with ``verb``, for the speaker ("scan Wang's
         report for me", "bring Wang's report to me"): "over", "across" and the like say no
         more than that."""
         to = "to" if verb == BRING else "for"
-        return f"{text[: self.asked]}{verb} {self.thing} {to} me{text[self.clause_end :]}"
+        whom = self.to or "me"
+        return f"{text[: self.asked]}{verb} {self.thing} {to} {whom}{text[self.clause_end :]}"
 
     @property
     def question(self) -> str:
-        return f"I can't {self.verb} a paper {self.paper} here. Shall I bring {self.thing} to you?"
+        whom = self.to or "you"
+        return (
+            f"I can't {self.verb} a paper {self.paper} here. Shall I bring {self.thing} to {whom}?"
+        )
 
 
-def emailed_paper(lex: Lexicon, text: str) -> EmailedPaper | None:
+def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | None:
     """The paper of ``text`` sent electronically by a later clause (see the module)."""
     tokens = lex.tokens(text)
     spans = [m.span() for m in language.WORD.finditer(text.replace("’", "'"))]
@@ -73,10 +79,10 @@ def emailed_paper(lex: Lexicon, text: str) -> EmailedPaper | None:
         copy_verb = _copy_verb(office, item.id)
         if copy_verb is None and not _is_paper(office, item.id):
             continue  # a paper by its data, or by the office's scan of it
-        found = _sending_back(tokens, mentions, item.end)
+        found = _sending_back(tokens, mentions, item.end, requester)
         if found is None:
             continue
-        verb, clause_end = found
+        verb, clause_end, to = found
         thing = text[spans[opener.start][0] : spans[item.end - 1][1]]
         said = tokens[verb].word
         return EmailedPaper(
@@ -88,6 +94,7 @@ def emailed_paper(lex: Lexicon, text: str) -> EmailedPaper | None:
             copy_verb,
             spans[clause_end - 1][1],
             spans[_clause_start(tokens, opener.start)][0],
+            office.person(to).name if to is not None else None,
         )
     return None
 
@@ -108,24 +115,31 @@ def _is_paper(office: Office, type_id: str) -> bool:
 
 
 def _sending_back(
-    tokens: Sequence[Token], mentions: Sequence[Mention], end: int
-) -> tuple[int, int] | None:
-    """The token of the electronic send of "it" in a later clause, to the speaker or to
-    nobody named ("just email it to me", "message it over"), and the clause's end; None
-    where there is none."""
+    tokens: Sequence[Token], mentions: Sequence[Mention], end: int, requester: str
+) -> tuple[int, int, str | None] | None:
+    """The token of the electronic send of "it" in a later clause ("just email it to me",
+    "message it over", "email it to Zhang"), the clause's end and the colleague it names
+    after "to"/"for" (None: the speaker); None where there is none."""
     at = end
     while at < len(tokens) and not (tokens[at].opens or tokens[at].after_pause):
         at += 1
     stop = at + 1
     while stop < len(tokens) and not (tokens[stop].opens or tokens[stop].after_pause):
         stop += 1
-    if any(
-        m.kind in ("person", "item", "place", "facility") for m in mentions if at <= m.start < stop
-    ):
-        return None  # "email it to Zhang", "email it and the file": a request of its own
+    said = [m for m in mentions if at <= m.start < stop]
+    if any(m.kind in ("item", "place", "facility") for m in said):
+        return None  # "email it and the file": a request of its own
+    people = [m for m in said if m.kind == "person"]
+    to: str | None = None
+    if people:
+        m = people[0]
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        if len(people) > 1 or len(m.ids) != 1 or m.possessive or before not in _TO:
+            return None  # "email it to Zhang and Hu", "email Zhang's": read as before
+        to = None if m.id == requester else m.id
     for i in range(at, stop - 1):
         if tokens[i].word in _SENDING and tokens[i + 1].word in _BACK:
-            return i, stop
+            return i, stop, to
     return None
 
 

@@ -261,7 +261,7 @@ class InstructionParser:
         text = without_hyphened_description(self.lex, text)
         # "could I have Wang's report? just email it to me": a copy the office makes
         # electronic ("scan it"), else asked whether the paper is brought (a yes: brought)
-        emailed = emailed_paper(self.lex, text)
+        emailed = emailed_paper(self.lex, text, requester)
         if emailed is not None and (emailed.operation_verb is not None or confirmed):
             text = emailed.with_verb(text, emailed.operation_verb or BRING)
             emailed = None
