@@ -109,10 +109,16 @@ def test_hyphened_description_rewrite(text: str, expected: str) -> None:
             "could I have Wang's stapler? just bring me the file",
             "could I have Wang's stapler? just bring me the file",
         ),
-        # another party named first: "the file" may be theirs, left to the frames
+        # another party named first as whom it is for: still Wang's thing, said as the
+        # file (for whom is then asked: reading.back_reference_recipient)
         (
             "could I have Wang's budget plan? Zhang needs the file",
-            "could I have Wang's budget plan? Zhang needs the file",
+            "could I have Wang's budget plan file? Zhang needs the file",
+        ),
+        # another party named as whom to ask: "the file" may be theirs, left to the frames
+        (
+            "could I have Wang's budget plan? ask Zhang for the file",
+            "could I have Wang's budget plan? ask Zhang for the file",
         ),
         # no later "the <item>"
         ("could I have Wang's budget plan? thanks", "could I have Wang's budget plan? thanks"),

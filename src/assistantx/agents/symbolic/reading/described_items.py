@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.back_reference_recipient import recipient_as_need
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
@@ -178,6 +179,8 @@ def _later_item(tokens: Sequence[Token], mentions: Sequence[Mention], end: int) 
             if before[-1:] != [_THE] or _NEGATORS & set(before):
                 return None  # "not the blue folder": the one not meant names nothing
             return m
+        if recipient_as_need(tokens, m):
+            continue  # "Zhang needs the file": whom it is for, no owner of it
         if m.kind in _PARTY or (m.kind == "pronoun" and m.possessive):
             return None
     return None

@@ -13,9 +13,11 @@ and so is one of them ("a post-it"). So:
 - the singular of an item's plural name (its last word's singular, "post it" from "post
   its") is that item where a compound's first part or a counted noun stands: before a unit
   noun, or after an article or a possessive ("a post-it", "my post-it"). A singular of one
-  word that is also a verb ("wipe" of "wipes") is left alone after an article: "give it a
-  wipe" is an act, not the office's wipes; before a unit it is still the item ("a wipe
-  pack").
+  word that is also a verb ("wipe" of "wipes") is the item after an article only where it
+  is asked for: right after the one it is for ("bring me a wipe", "hand Zhang a wipe") or a
+  verb of asking or having ("I need a wipe", "could I have a wipe"); after a thing or "it"
+  ("give the desk a wipe", "give it a wipe") it is the act, not the office's wipes; before a
+  unit it is still the item ("a wipe pack").
 
 Only words no other name of the office reads are read so: a singular that is already a name
 of the office (a person, place, facility, another item, a task word) keeps that reading.
@@ -35,6 +37,17 @@ _COUNTED_BEFORE = english.words("object_starts") | frozenset({"one", "another", 
 # the mention kinds a singular may replace: words the lexicon read as nothing of the office,
 # and the pronoun "it" of "post-it"
 _PLAIN = frozenset({"word", "pronoun"})
+# A counted noun that is also a verb is the thing where it is asked for: after its article,
+# after the one it is for (a person, "me") or a verb of asking or having
+_ARTICLES = frozenset({"a", "an", "one", "another", "any"})
+_ASKING_KINDS = frozenset({"person", "cue"})
+_ASKING_WORDS = (
+    english.words("self_taking_verbs")
+    | english.words("possession_verbs")
+    | english.words("need_verbs")
+    | english.words("wish_verbs")
+)
+_OWNING = frozenset({"my", "mine"})
 
 
 def singulars(names: Iterable[tuple[str, str]], known: Callable[[str], bool]) -> dict[str, str]:
@@ -104,7 +117,24 @@ def _singular_at(
         counted = i > 0 and tokens[i - 1].word in _COUNTED_BEFORE
         if before_unit or (counted and (n > 1 or not language.verb_lemmas(phrase))):
             return i, end, type_id
+        if counted and _asked_for(tokens, kinds, i - 1):
+            return i, end, type_id  # "bring me a wipe": the thing, not the act
     return None
+
+
+def _asked_for(tokens: Sequence[Token], kinds: Mapping[int, str], article: int) -> bool:
+    """Whether a noun that is also a verb, after the article at ``article``, is a thing asked
+    for: an article ("a", never "my") right after the one it is for ("bring *me* a wipe",
+    "hand *Zhang* a wipe") or after a verb of asking or taking ("I need a wipe", "could I
+    *have* a wipe", "anyone *got* a wipe?"). After a thing ("give *the desk* a wipe") or
+    "it" ("give it a wipe") the noun is the act done to it (a light verb's object), left
+    alone."""
+    if article == 0 or tokens[article].word not in _ARTICLES or tokens[article].after_pause:
+        return False
+    before = article - 1
+    if kinds.get(before) == "self":
+        return not tokens[before].possessive and tokens[before].word not in _OWNING
+    return kinds.get(before) in _ASKING_KINDS or tokens[before].word in _ASKING_WORDS
 
 
 def unit_of(tokens: Sequence[Token], start: int) -> bool:

@@ -57,6 +57,10 @@ from assistantx.agents.symbolic.reading.antecedent import (
     with_antecedent,
 )
 from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.back_reference_recipient import (
+    chosen_recipient,
+    recipient_in_doubt,
+)
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
@@ -70,6 +74,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
     either_doer,
 )
 from assistantx.agents.symbolic.reading.due_service import DueService
+from assistantx.agents.symbolic.reading.emailed_paper import BRING, emailed_paper
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     RESTATED,
@@ -261,6 +266,12 @@ class InstructionParser:
         text = named_later(self.lex, text)
         # "Wang's setting-out file": the description is no owner or part; Wang's file
         text = without_hyphened_description(self.lex, text)
+        # "could I have Wang's report? just email it to me": a copy the office makes
+        # electronic ("scan it"), else asked whether the paper is brought (a yes: brought)
+        emailed = emailed_paper(self.lex, text, requester)
+        if emailed is not None and (emailed.operation_verb is not None or confirmed):
+            text = emailed.with_verb(text, emailed.operation_verb or BRING)
+            emailed = None
         # "Wang's document, the pdf one": the form picks the office's file or paper
         text = self._picked_form(text)
         text = carrying_particles(text)  # "bring some up to reception": to reception
@@ -316,6 +327,12 @@ class InstructionParser:
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
+        if emailed is not None:
+            return TaskFrame(requester=requester, question=emailed.question)
+        doubt = recipient_in_doubt(self.lex, text, requester)
+        if doubt is not None:
+            # "could I have Wang's plan? Zhang needs the file": Wang's, for me or for Zhang?
+            return TaskFrame(requester=requester, question=doubt.question)
         if any(e.meaning == RESTATED for e in frame.evidence):
             # "print my file and a coffee": the coffee may be a second request, or not
             screened.confirm = True
@@ -647,6 +664,10 @@ class InstructionParser:
                 if meant.understood or not (meant.question or "").startswith(WHICH_ITEM):
                     text, frame = named, meant
                     continue
+            whom = chosen_recipient(self.lex, frame.question or "", answer)
+            if whom is not None:  # "Wang's plan file for you, or for Zhang Wei?" "For Zhang."
+                text, frame = whom, self.parse(whom, requester)
+                continue
             one = chosen_of_two(self.lex, text, frame.question or "", answer)
             if one is not None:  # "Who should get your pen: Wei Na or Wang Fang?" "Wang"
                 text, frame = one, self.parse(one, requester)

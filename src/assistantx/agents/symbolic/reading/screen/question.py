@@ -8,6 +8,7 @@ from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_ask, spare_asked
 from assistantx.agents.symbolic.reading.screen.facility_state_asked import in_service
 from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Finding
+from assistantx.agents.symbolic.reading.screen.kept_at_place import kept_at, place_asked
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
@@ -106,6 +107,11 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
         answer = f"As far as I know, {listed(names)} {has} {a_thing}."
     else:
         answer = f"I don't know of anyone here with {a_thing}."
+    place = place_asked(piece.lexed) if not asked else None
+    if place is not None:
+        # "any wipes in the kitchenette?": what is kept there; who has one elsewhere after
+        there, kept = kept_at(terms.office, item, *place)
+        answer = there if kept else f"{there} {answer}"
     if t.kind not in ("belonging", "product"):  # a document, a file: not for me to tell
         answer = f"I can't tell that about the {t.name} from what I know."
         return Finding("question", piece, "a question, answered in words", message=answer)

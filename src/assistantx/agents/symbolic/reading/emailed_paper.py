@@ -1,0 +1,157 @@
+"""A paper asked for, then to be sent electronically: "could I have Wang's report? just email
+it to me". The requester named a channel: an electronic copy, never the paper carried over.
+
+The paper is an item of the office that is paper by its own data (signable, or named with an
+everyday noun of a paper: ``paper_nouns``), said as a colleague's; the later clause sends
+"it"/"that" by a verb of electronic sending (``electronic_sending``) to the speaker or
+nobody named. What the office can do decides, read from its operations, never its names:
+
+- an operation that takes that paper and makes an electronic thing (its product is an
+  electronic item, or named as one: "scanned copy", "PDF") makes the copy: the send is read
+  as that operation's verb ("... just scan it to me"), done with the owner's yes as any work
+  on a colleague's paper;
+- none: said, and asked whether to bring the paper instead ("I can't email a paper document
+  here. Shall I bring Wang's report to you?"); a yes reads the send as "bring".
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english, language
+from assistantx.core.office import Office
+
+_SENDING = english.words("electronic_sending")
+_BACK = frozenset({"it", "that", "this"})
+_TO = frozenset({"to", "for"})
+_PAPER_NOUNS = english.words("paper_nouns")
+_ELECTRONIC_WORDS = english.words("electronic_formats") | english.words("electronic_picks")
+BRING = "bring"  # the send read as the paper brought, on a yes
+
+
+@dataclass(frozen=True)
+class EmailedPaper:
+    """Where the send verb stands in the text, and what is to be said in its place."""
+
+    start: int  # character span of the send verb
+    end: int
+    verb: str  # the verb said ("email")
+    thing: str  # the paper as said ("Wang's report")
+    paper: str  # the paper's type name ("document")
+    operation_verb: str | None  # the office's verb that makes an electronic copy ("scan")
+    clause_end: int  # where the clause of the send ends (its last word's end)
+    asked: int  # where the clause asking for the paper starts
+    to: str | None  # the colleague the send names ("email it to Zhang"); None: the speaker
+
+    def with_verb(self, text: str, verb: str) -> str:
+        """The request and its send said as one with ``verb``, for the speaker ("scan Wang's
+        report for me", "bring Wang's report to me"): "over", "across" and the like say no
+        more than that."""
+        to = "to" if verb == BRING else "for"
+        whom = self.to or "me"
+        return f"{text[: self.asked]}{verb} {self.thing} {to} {whom}{text[self.clause_end :]}"
+
+    @property
+    def question(self) -> str:
+        whom = self.to or "you"
+        return (
+            f"I can't {self.verb} a paper {self.paper} here. Shall I bring {self.thing} to {whom}?"
+        )
+
+
+def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | None:
+    """The paper of ``text`` sent electronically by a later clause (see the module)."""
+    tokens = lex.tokens(text)
+    spans = [m.span() for m in language.WORD.finditer(text.replace("’", "'"))]
+    if len(spans) != len(tokens):
+        return None
+    mentions = lex.scan(tokens)
+    office = lex.office
+    for n, opener in enumerate(mentions[:-1]):
+        item = mentions[n + 1]
+        if opener.kind != "person" or not opener.possessive or len(opener.ids) != 1:
+            continue
+        if item.kind != "item" or item.start != opener.end or len(item.ids) != 1:
+            continue
+        copy_verb = _copy_verb(office, item.id)
+        if copy_verb is None and not _is_paper(office, item.id):
+            continue  # a paper by its data, or by the office's scan of it
+        found = _sending_back(tokens, mentions, item.end, requester)
+        if found is None:
+            continue
+        verb, clause_end, to = found
+        thing = text[spans[opener.start][0] : spans[item.end - 1][1]]
+        said = tokens[verb].word
+        return EmailedPaper(
+            spans[verb][0],
+            spans[verb][1],
+            said,
+            thing,
+            office.item_type(item.id).name,
+            copy_verb,
+            spans[clause_end - 1][1],
+            spans[_clause_start(tokens, opener.start)][0],
+            office.person(to).name if to is not None else None,
+        )
+    return None
+
+
+def _clause_start(tokens: Sequence[Token], at: int) -> int:
+    while at > 0 and not (tokens[at].opens or tokens[at].after_pause):
+        at -= 1
+    return at
+
+
+def _is_paper(office: Office, type_id: str) -> bool:
+    """Whether the office's item is a paper: one signs it, or it is named as a paper."""
+    t = office.item_type(type_id)
+    if not t.physical or t.kind == "product":
+        return False
+    names = {w for n in (t.name, *t.synonyms) for w in n.lower().split()}
+    return t.signable or bool(names & _PAPER_NOUNS)
+
+
+def _sending_back(
+    tokens: Sequence[Token], mentions: Sequence[Mention], end: int, requester: str
+) -> tuple[int, int, str | None] | None:
+    """The token of the electronic send of "it" in a later clause ("just email it to me",
+    "message it over", "email it to Zhang"), the clause's end and the colleague it names
+    after "to"/"for" (None: the speaker); None where there is none."""
+    at = end
+    while at < len(tokens) and not (tokens[at].opens or tokens[at].after_pause):
+        at += 1
+    stop = at + 1
+    while stop < len(tokens) and not (tokens[stop].opens or tokens[stop].after_pause):
+        stop += 1
+    said = [m for m in mentions if at <= m.start < stop]
+    if any(m.kind in ("item", "place", "facility") for m in said):
+        return None  # "email it and the file": a request of its own
+    people = [m for m in said if m.kind == "person"]
+    to: str | None = None
+    if people:
+        m = people[0]
+        before = tokens[m.start - 1].word if m.start > 0 else ""
+        if len(people) > 1 or len(m.ids) != 1 or m.possessive or before not in _TO:
+            return None  # "email it to Zhang and Hu", "email Zhang's": read as before
+        to = None if m.id == requester else m.id
+    for i in range(at, stop - 1):
+        if tokens[i].word in _SENDING and tokens[i + 1].word in _BACK:
+            return i, stop, to
+    return None
+
+
+def _copy_verb(office: Office, paper: str) -> str | None:
+    """The verb of an operation that makes an electronic thing of ``paper`` and that a
+    facility of the office runs; None where the office has none."""
+    run = {op for f in office.facilities for op in f.operations}
+    for op in office.operations:
+        if op.input != paper or op.product is None or op.id not in run or not op.verbs:
+            continue
+        product = office.item_type(op.product)
+        named = {w for n in (product.name, *product.synonyms) for w in n.lower().split()}
+        if product.electronic or named & _ELECTRONIC_WORDS:
+            return op.verbs[0]
+    return None
