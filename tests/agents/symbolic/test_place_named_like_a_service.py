@@ -33,6 +33,44 @@ def _room_named_like_its_facility() -> Office:
 _named_room = frame_reader(_room_named_like_its_facility, "ines")
 
 
+def _two_word_dispatch_room() -> Office:
+    """The seed lab where the room is the "Dispatch room": said "dispatch" alone, the kind of
+    place left out, as people do."""
+    raw = raw_seed_lab()
+    for loc in raw["locations"]:
+        if loc["id"] == "dispatch":
+            loc["name"] = "Dispatch room"
+    return parse_office(raw, "seed lab, a two-word dispatch room")
+
+
+_dispatch_room = frame_reader(_two_word_dispatch_room, "ines")
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "pls drop my pocket balance off with Mateus in dispatch",
+            [("transfer", "pocket_balance", "ines", "mateus", None)],
+        ),
+        (
+            "bring me Rania's stapler from dispatch",
+            [("transfer", "stapler", "rania", "ines", None)],
+        ),
+    ],
+)
+def test_a_two_word_room_said_by_its_service_verb_alone_is_the_room(
+    text: str, expected: list[tuple[str, str, str, str, None]]
+) -> None:
+    frame = _dispatch_room(text)
+    assert _tasks(frame) == expected, frame
+
+
+def test_the_verb_of_a_two_word_room_still_asks_for_the_service() -> None:
+    frame = _dispatch_room("please dispatch my contract to Acme Ltd")
+    assert [t.operation for t in frame.tasks] == ["courier"], frame
+
+
 def _tasks(frame: object) -> list[tuple[str, str | None, str | None, str | None, str | None]]:
     return [(t.kind, t.item, t.owner, t.recipient, t.operation) for t in frame.tasks]  # type: ignore[attr-defined]
 

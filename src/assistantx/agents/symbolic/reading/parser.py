@@ -124,6 +124,7 @@ from assistantx.agents.symbolic.reading.parts import (
     unread_part,
 )
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
+from assistantx.agents.symbolic.reading.pictographs import without_pictographs
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
@@ -259,6 +260,7 @@ class InstructionParser:
         ``sent_out``: a send-out to a colleague's name is meant to leave the office;
         ``to_self``: the requester answered "me" to whom their own item goes;
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
+        text = without_pictographs(text)  # "... and no marker 😩": the face is tone only
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"

@@ -21,8 +21,16 @@ _ARTICLES = frozenset({"the", "our", "that"})
 
 def verb_named_places(names: Iterable[tuple[str, str]], verbs: Collection[str]) -> dict[str, str]:
     """The one-word names among ``names`` (key, location id) that are also a service verb of
-    ``verbs``: the places the lexicon reads as a place only in a place's slot."""
-    return {key: loc for key, loc in names if key and " " not in key and key in verbs}
+    ``verbs``: the places the lexicon reads as a place only in a place's slot. A two-word
+    name is also said by its first word alone, the kind of place left out ("Mateus in
+    dispatch" of the "Dispatch room", "from print" of the "Print room")."""
+    found: dict[str, str] = {}
+    for key, loc in names:
+        words = key.split()
+        said = words[0] if len(words) == 2 else key
+        if said and " " not in said and said in verbs:
+            found.setdefault(said, loc)
+    return found
 
 
 def in_a_place_slot(tokens: Sequence[Token], i: int) -> bool:
