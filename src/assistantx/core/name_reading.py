@@ -156,6 +156,10 @@ def read_name(slot: NameSlot) -> NameReading:
         return "person"
     if _verb_slot(slot):
         return "word"
+    if _verb_frame(slot):
+        # the syntax makes the verb; a capital says the writer may mean the person all the
+        # same ("to Mark the boxes" slipped for "to Mark: the boxes"), so ask then
+        return "ask" if slot.written[:1].isupper() else "word"
     if _titled_doer(slot):
         return "person"
     prev = "" if slot.opens else slot.prev
@@ -325,6 +329,38 @@ def _verb_slot(slot: NameSlot) -> bool:
         and not slot.next_after_pause
         and _base_verb(slot.word)
     )
+
+
+# What a verb takes right after it, where a person would need a verb of their own first: a
+# phrasal verb's particle ("to mark *up* 20 pages"), the opening of an object ("to chase
+# *the* invoices", "to mark *20* pages", "to mark *him* down") (english.yaml)
+_VERB_PARTICLES = english.words("verb_particles")
+_OBJECT_PRONOUNS = english.words("object_pronouns") | _VERB_SLOT_OBJECTS
+# "to Drew this afternoon", "to Mark first thing": a time after the recipient, not an object
+_TIME_NOUNS = english.words("time_nouns")
+_WHERE_AFTER_PARTICLE = english.words("location_prepositions") | {"there", "here", "on", "at"}
+
+
+def _verb_frame(slot: NameSlot) -> bool:
+    """ "I'm out of highlighters to mark up 20 pages", "a pen to chase the invoices": a name
+    that is also a verb, where a bare verb goes ("to", "not", a modal), followed by what a
+    verb takes (a particle, an object's determiner, a number, an object pronoun), is the
+    verb by its syntax: a person after "to" ends the clause or is followed by what a
+    recipient is ("to Mark please", "to Mark's desk", "to Mark, thanks", "to Mark in the post
+    room", "to Mark to sign"). A time after the name ("to Drew this afternoon") is no
+    object."""
+    if slot.opens or slot.possessive or slot.next_possessive or slot.next_after_pause:
+        return False
+    if slot.prev not in _VERB_SLOT_BEFORE or not _base_verb(slot.word):
+        return False
+    nxt = slot.next
+    if nxt in _VERB_OBJECT_STARTS or numeral(nxt):
+        return slot.after_next not in _TIME_NOUNS
+    if nxt in _VERB_PARTICLES:
+        # "to Mark over in accounts", "to Chase up there": the particle says where the
+        # recipient is, no phrasal verb
+        return slot.after_next not in _WHERE_AFTER_PARTICLE
+    return nxt in _OBJECT_PRONOUNS
 
 
 # what follows a verb as its object, or the particle of a phrasal verb ("sign *off* my form")

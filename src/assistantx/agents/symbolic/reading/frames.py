@@ -52,6 +52,8 @@ from assistantx.agents.symbolic.reading.original_back import (
     original_back,
     original_to_its_source,
 )
+from assistantx.agents.symbolic.reading.others_thing import others_thing_declined
+from assistantx.agents.symbolic.reading.owners_need import back_to_owner
 from assistantx.agents.symbolic.reading.part_recipients import (
     closes_a_part,
     handed_along,
@@ -344,6 +346,12 @@ class FrameReader:
         tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
         tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
+        # "Olek's 4-gas is due a bump test": the owner's thing goes back to its owner
+        tasks = [back_to_owner(t, tokens, readings.mentions, requester) for t in tasks]
+        # "Zhang's laptop needs printing": never the requester's own file in its place
+        others = others_thing_declined(self.office, tokens, readings.mentions, tasks, requester)
+        if others is not None:
+            return TaskFrame(requester=requester, decline=others)
         unsent = self._no_files(tasks)
         if unsent is not None:  # "fwd my invoice pdf to Ravi" where no file is kept
             return TaskFrame(requester=requester, decline=unsent)

@@ -99,9 +99,13 @@ class Terms:
         name no item of this office."""
         for n, w in enumerate(words):
             if w in ("a", "an", "any", "some"):
-                rest = []
+                rest: list[str] = []
                 for x in words[n + 1 :]:
                     if x in DETERMINERS or x in self.en.modifier_prepositions or x in ("i", "me"):
+                        break
+                    if x == "to" and rest:
+                        # "a pen to mark the boxes": the thing's name ends where its purpose
+                        # (or whom it goes to) starts; "pen to mark" names nothing
                         break
                     rest.append(x)
                 return " ".join(rest[:3])
