@@ -13,6 +13,7 @@ from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
+from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
@@ -90,6 +91,9 @@ class Roles:
     # "for Grace's meeting": whose occasion the thing is for (the recipient if none is named)
     occasion: list[str] = field(default_factory=list)
     occasion_at: list[int] = field(default_factory=list)
+    # "bring Wang and Sun a coffee": the groups of people joined as one recipient, each of
+    # whom receives (``joined_recipients``; the frame makes or asks, ``for_each``)
+    each: list[tuple[str, ...]] = field(default_factory=list)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -376,16 +380,22 @@ def clause_roles(
     addressed: str | None = None,
     not_meant: frozenset[str] = frozenset(),
     taken_from: Sequence[str] = (),
+    message_named: Sequence[str] = (),
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
     "your" is theirs, ``vocative``); ``not_meant``: colleagues a "him"/"her" that receives
     cannot mean (the owner of the thing handed to them, ``frames._besides_owners``);
     ``taken_from``: whom an earlier clause took the thing this one hands on from ("get it from
-    June and bring it to her": not June)."""
+    June and bring it to her": not June); ``message_named``: the colleagues the whole message
+    names, for a "them both" that follows no name of the request's own words."""
     roles = Roles()
     ms = clause.mentions
+    groups = joined_recipients(tokens, ms, requester, last_person or message_named)
+    grouped = frozenset(at for g in groups for at in g.pronouns)
     for n, m in enumerate(ms):
+        if m.start in grouped:
+            continue  # "bring him and Sun a coffee": "him" is one of a group (below)
         if m.kind == "person":
             who = m.ids[0]
             last_person.append(who)
@@ -445,10 +455,27 @@ def clause_roles(
             owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
             if owner is not None:
                 roles.owners[m.start] = owner
+    for group in groups:
+        if not group.people:  # "Wang is in, bring them both a water": both of whom?
+            raise UnresolvedPronoun("them")
+        _add_group(roles, group)
     if roles.occasion and not roles.recipient and taken_to_a_room(tokens, ms):
         # "take a ruler to the lounge for Mark's workshop": Mark, as nobody else receives it
         roles.add_recipient(roles.occasion[-1], roles.occasion_at[-1])
     return roles
+
+
+def _add_group(roles: Roles, group: Joined) -> None:
+    """Each of a group joined as one recipient receives: added where not read so already, the
+    recipients kept in text order (the last said is the clause's recipient), none of them
+    left a bare name."""
+    pairs = dict.fromkeys(zip(roles.recipient, roles.recipient_at, strict=True))
+    pairs.update(dict.fromkeys(zip(group.people, group.at, strict=True)))
+    ordered = sorted(pairs, key=lambda p: p[1])
+    roles.recipient = [who for who, _ in ordered]
+    roles.recipient_at = [at for _, at in ordered]
+    roles.bare = [who for who in roles.bare if who not in group.people]
+    roles.each.append(group.people)
 
 
 def owner_of(

@@ -91,7 +91,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
 from assistantx.agents.symbolic.reading.name_chosen import with_name_chosen
 from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
-from assistantx.agents.symbolic.reading.named_once import the_one_named
+from assistantx.agents.symbolic.reading.named_once import the_one_named, the_ones_named
 from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
@@ -358,6 +358,7 @@ class InstructionParser:
             to_self=to_self,
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
             named_once=the_one_named(whole, requester),
+            message_named=the_ones_named(whole, requester),
         )
         if frame.understood:
             # "a lemonade from the vending machine and Wang's stapler": the unlisted variety of
