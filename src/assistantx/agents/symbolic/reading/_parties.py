@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.gapped_recipient import gapped_recipient
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
 from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
 from assistantx.agents.symbolic.reading.lexicon import Mention
@@ -94,6 +95,9 @@ class Roles:
     # "bring Wang and Sun a coffee": the groups of people joined as one recipient, each of
     # whom receives (``joined_recipients``; the frame makes or asks, ``for_each``)
     each: list[tuple[str, ...]] = field(default_factory=list)
+    # "bring Wang a coffee and Sun a water": where a giving verb's recipient was said again
+    # after "and", the verb left unsaid (``gapped_recipient``): the next object's recipient
+    gapped_at: list[int] = field(default_factory=list)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -134,6 +138,9 @@ class PersonSite:
     # "make Zhang a copy", "print Mark my file": after a giving or making verb, before the
     # thing's noun phrase (``indirect_object``)
     indirect: bool = False
+    # "bring Wang a coffee and *Sun* a water": the giving verb's recipient again, the verb
+    # left unsaid (``gapped_recipient``)
+    gapped: bool = False
     # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
     work_named: Mention | None = None
     occasion: bool = False  # an occasion of theirs follows the possessive: "Grace's meeting"
@@ -256,6 +263,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "recipient",
     ),
     PersonRule(
+        "bring Wang a coffee and Sun a water: Sun is whom the unsaid verb gives the water",
+        lambda s: s.gapped,
+        "recipient",
+    ),
+    PersonRule(
         "Rich asked for it, Hal said so: the subject of a statement, not a party",
         lambda s: s.subject,
         "context",
@@ -305,6 +317,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
         indirect=is_indirect_object(tokens, ms, n, prev),
+        gapped=gapped_recipient(tokens, ms, n),
     )
     if m.possessive:
         occasion = is_occasion(tokens, site.following, m.end)
@@ -312,6 +325,8 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
     match person_rule(site).slot:
         case "recipient":
             roles.add_recipient(who, m.start)
+            if site.gapped:
+                roles.gapped_at.append(m.start)
         case "returned":  # "take the stapler back to Zhang": Zhang's, and Zhang gets it
             roles.add_recipient(who, m.start)
             roles.returned_to.append(who)
@@ -409,6 +424,9 @@ def clause_roles(
                 continue  # "take my stapler to Zhang for me": Zhang gets it, as a favour to me
             if prev in _TO or prev in _DATIVE_VERBS:
                 roles.add_recipient(requester, m.start)
+            elif gapped_recipient(tokens, ms, n):  # "get Pat a tea and me a highlighter"
+                roles.add_recipient(requester, m.start)
+                roles.gapped_at.append(m.start)
         elif m.kind == "pronoun" and _at_their_place(tokens, m):
             # "Priya wants a stapler, leave one at her desk": she receives it there (the
             # consent guard reads the same words with the same rule)
@@ -442,6 +460,11 @@ def clause_roles(
                 and _object_start(tokens, following)
                 and not coordinated(tokens, m)  # "bring them and a coffee": two objects
             ) or is_indirect_object(tokens, ms, n, prev)
+            # "bring Pat a tea and her a ruler": the giving verb's recipient again, unsaid
+            gapped = gapped_recipient(tokens, ms, n)
+            dative = dative or gapped
+            if gapped:  # "bring Pat a tea and her a ruler": "her" is someone besides Pat
+                others = [x for x in others if x not in roles.recipient]
             if prev in ("to", "for") or dative:
                 # "take it from Pat to her": not Pat, the one it is taken from
                 others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)
@@ -451,6 +474,8 @@ def clause_roles(
                 raise UnresolvedPronoun(m.text)
             if prev in ("to", "for") or dative:
                 roles.add_recipient(others[-1], m.start)
+                if gapped:
+                    roles.gapped_at.append(m.start)
         elif m.kind == "item":
             owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
             if owner is not None:
@@ -569,12 +594,26 @@ def _described_owner(
 
 def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> str:
     """Whom one of several objects is for: a "for/to X" right after it ("a coffee for me and
-    some water for Wang"), else one named before all objects ("get me X and Y"), else the
-    clause's recipient ("take my book and my pen to Wang")."""
+    some water for Wang"), else the recipient of a verb left unsaid right before it ("... and
+    Sun a water"), else one named before all objects ("get me X and Y"), else the clause's
+    recipient ("take my book and my pen to Wang")."""
     m = objects[k]
     end = objects[k + 1].start if k + 1 < len(objects) else 1 << 30
+    # "bring Wang a coffee and Sun a water": a recipient of an unsaid verb is the next
+    # object's, said right before it, never the object's before it
+    gapped = [
+        w
+        for w, at in zip(roles.recipient, roles.recipient_at, strict=True)
+        if at in roles.gapped_at and (objects[k - 1].end if k else 0) <= at < m.start
+    ]
+    after = [
+        w
+        for w, at in zip(roles.recipient, roles.recipient_at, strict=True)
+        if m.end <= at < end and at not in roles.gapped_at
+    ]
     return (
-        roles.recipient_between(m.end, end)
+        (after[-1] if after else None)
+        or (gapped[-1] if gapped else None)
         or roles.recipient_between(0, objects[0].start)
         or default
     )

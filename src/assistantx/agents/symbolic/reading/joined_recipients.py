@@ -59,15 +59,15 @@ class Joined:
 
 def _party(m: Mention, tokens: Sequence[Token]) -> bool:
     """Whether a mention can be one member of a group: a single named person, "me", or an
-    object pronoun, none of them possessive (``Wang's`` owns the thing after it)."""
+    object pronoun, none of them possessive (``Wang's`` owns the thing after it; "her" is
+    read either way, and "and" after or before it says it owns nothing)."""
+    if m.kind == "pronoun":
+        return tokens[m.start].word in _ONE_PERSON_PRONOUNS
     if m.possessive:
         return False
     if m.kind == "person":
         return len(m.ids) == 1
-    word = tokens[m.start].word
-    return (m.kind == "self" and word == "me") or (
-        m.kind == "pronoun" and word in _ONE_PERSON_PRONOUNS
-    )
+    return m.kind == "self" and tokens[m.start].word == "me"
 
 
 def _join(tokens: Sequence[Token], a: Mention, b: Mention) -> str:
