@@ -108,3 +108,56 @@ def test_a_gap_with_no_object_of_the_office_takes_no_object() -> None:
     frame = _HARBOUR("bring Mark a tea and Rose a water")
     assert ("produce", "tea", None, "mark") in _tasks(frame), frame
     assert all(t.recipient != "rose" for t in frame.tasks), frame
+
+
+@pytest.mark.parametrize(
+    ("text", "office", "expected"),
+    [
+        # the subject of a need after "and" is the next object's, not the one's before
+        (
+            "take my stapler to Wang and Sun needs a coffee",
+            "default",
+            [("produce", "coffee", None, "sun"), ("transfer", "stapler", "lee", "wang")],
+        ),
+        (
+            "bring my stapler to Wang and Sun wants a water",
+            "default",
+            [("produce", "water", None, "sun"), ("transfer", "stapler", "lee", "wang")],
+        ),
+        (
+            "take my ruler to Mark and Rose needs a tea",
+            "harbour",
+            [("produce", "tea", None, "rose"), ("transfer", "ruler", "will", "mark")],
+        ),
+    ],
+)
+def test_a_need_said_after_and_is_the_next_objects(
+    text: str, office: str, expected: list[tuple[str, str, str, str]]
+) -> None:
+    frame = (_DEFAULT if office == "default" else _HARBOUR)(text)
+    assert frame.question is None, frame
+    assert _tasks(frame) == sorted(expected), frame
+
+
+@pytest.mark.parametrize(
+    ("text", "office", "first", "second"),
+    [
+        # "needs" left unsaid the second time: restated as made-from-nothing parts are, each
+        # thing for its own person
+        ("Wang needs my stapler and Sun a coffee", "default", "Wang Fang", "Sun Li"),
+        ("Wang wants a coffee and Sun a water", "default", "Wang Fang", "Sun Li"),
+        ("Mark needs a ruler and Rose a tea", "harbour", "Mark Lindqvist", "Rose Adeyemi"),
+    ],
+)
+def test_a_need_left_unsaid_after_and(text: str, office: str, first: str, second: str) -> None:
+    frame = (_DEFAULT if office == "default" else _HARBOUR)(text)
+    assert frame.question is not None, frame
+    at_first, at_second = frame.question.find(first), frame.question.find(second)
+    assert 0 <= at_first < at_second, frame
+    assert frame.question.count(first) == 1, frame
+
+
+def test_one_in_need_of_two_things_gets_both() -> None:
+    """Neighbour: "Wang needs a stapler and a coffee": no second person, both for Wang."""
+    frame = _DEFAULT("Wang needs a stapler and a coffee")
+    assert frame.question is not None and frame.question.count("Wang Fang") == 2, frame

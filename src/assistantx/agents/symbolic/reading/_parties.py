@@ -95,9 +95,11 @@ class Roles:
     # "bring Wang and Sun a coffee": the groups of people joined as one recipient, each of
     # whom receives (``joined_recipients``; the frame makes or asks, ``for_each``)
     each: list[tuple[str, ...]] = field(default_factory=list)
-    # "bring Wang a coffee and Sun a water": where a giving verb's recipient was said again
-    # after "and", the verb left unsaid (``gapped_recipient``): the next object's recipient
-    gapped_at: list[int] = field(default_factory=list)
+    # where a recipient was said for the object after it, not the one before: a giving
+    # verb's recipient said again after "and", the verb left unsaid ("bring Wang a coffee
+    # and *Sun* a water", ``gapped_recipient``), or the subject of a need ("take my stapler
+    # to Wang and *Sun* needs a coffee")
+    for_next_at: list[int] = field(default_factory=list)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -325,8 +327,8 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
     match person_rule(site).slot:
         case "recipient":
             roles.add_recipient(who, m.start)
-            if site.gapped:
-                roles.gapped_at.append(m.start)
+            if site.gapped or site.nxt in _NEEDS:
+                roles.for_next_at.append(m.start)
         case "returned":  # "take the stapler back to Zhang": Zhang's, and Zhang gets it
             roles.add_recipient(who, m.start)
             roles.returned_to.append(who)
@@ -426,7 +428,7 @@ def clause_roles(
                 roles.add_recipient(requester, m.start)
             elif gapped_recipient(tokens, ms, n):  # "get Pat a tea and me a highlighter"
                 roles.add_recipient(requester, m.start)
-                roles.gapped_at.append(m.start)
+                roles.for_next_at.append(m.start)
         elif m.kind == "pronoun" and _at_their_place(tokens, m):
             # "Priya wants a stapler, leave one at her desk": she receives it there (the
             # consent guard reads the same words with the same rule)
@@ -475,7 +477,7 @@ def clause_roles(
             if prev in ("to", "for") or dative:
                 roles.add_recipient(others[-1], m.start)
                 if gapped:
-                    roles.gapped_at.append(m.start)
+                    roles.for_next_at.append(m.start)
         elif m.kind == "item":
             owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
             if owner is not None:
@@ -599,17 +601,17 @@ def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> 
     recipient ("take my book and my pen to Wang")."""
     m = objects[k]
     end = objects[k + 1].start if k + 1 < len(objects) else 1 << 30
-    # "bring Wang a coffee and Sun a water": a recipient of an unsaid verb is the next
-    # object's, said right before it, never the object's before it
+    # "bring Wang a coffee and Sun a water", "... and Sun needs a coffee": a recipient said
+    # for the object after it is that object's, never the object's before it
     gapped = [
         w
         for w, at in zip(roles.recipient, roles.recipient_at, strict=True)
-        if at in roles.gapped_at and (objects[k - 1].end if k else 0) <= at < m.start
+        if at in roles.for_next_at and (objects[k - 1].end if k else 0) <= at < m.start
     ]
     after = [
         w
         for w, at in zip(roles.recipient, roles.recipient_at, strict=True)
-        if m.end <= at < end and at not in roles.gapped_at
+        if m.end <= at < end and at not in roles.for_next_at
     ]
     return (
         (after[-1] if after else None)

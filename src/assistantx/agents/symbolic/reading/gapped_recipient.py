@@ -4,9 +4,10 @@ water" is "bring Wang a coffee and [bring] Sun a water" (English gapping).
 Read one name at a time, "Sun" after "and" had no verb before it and got no role, so the water
 went to the recipient said before all objects (Wang): a wrong hand-over. A person (or "me",
 "him"/"her") right after "and", with a noun phrase opening right after it, in a clause whose
-giving verb already had an indirect object ("bring *Wang* a coffee"), is that verb's
-indirect object again, for the object that follows it (``Roles.gapped_at``; the object's
-recipient is read by ``_parties.recipient_of``).
+giving verb already had an indirect object ("bring *Wang* a coffee"), or whose need had its
+subject ("*Wang* needs my stapler and Sun a coffee"), is that verb's indirect object again,
+for the object that follows it (``Roles.for_next_at``; the object's recipient is read by
+``_parties.recipient_of``).
 
 A name joined to the one before it ("bring Wang and Sun a coffee") is a group of recipients
 (``joined_recipients``), not a gap.
@@ -22,6 +23,7 @@ from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english
 
 _DATIVE_VERBS = english.words("dative_verbs")
+_NEEDS = english.words("need_verbs")
 _PARTY_WORDS = frozenset({"me", "him", "her"})
 
 
@@ -39,10 +41,16 @@ def _party(m: Mention, tokens: Sequence[Token]) -> bool:
 
 def _indirect_object(tokens: Sequence[Token], ms: Sequence[Mention], k: int) -> bool:
     """Whether mention ``k`` is a giving verb's indirect object: right after the verb, the
-    thing's noun phrase opening right after it ("bring *Wang* a coffee")."""
-    prev = prev_word(tokens, ms[k].start)
+    thing's noun phrase opening right after it ("bring *Wang* a coffee"), or the one in need
+    of it ("*Wang* needs my stapler and Sun a coffee": "needs" left unsaid the second time)."""
+    if not _party(ms[k], tokens):
+        return False
+    m = ms[k]
+    if m.end < len(tokens) and tokens[m.end].word in _NEEDS:
+        return opens_noun_phrase(tokens, m.end + 1)
+    prev = prev_word(tokens, m.start)
     verb = prev in _DATIVE_VERBS or gives_from_verb(tokens, ms, k, prev)
-    return _party(ms[k], tokens) and verb and opens_noun_phrase(tokens, ms[k].end)
+    return verb and opens_noun_phrase(tokens, m.end)
 
 
 def gapped_recipient(tokens: Sequence[Token], ms: Sequence[Mention], n: int) -> bool:
