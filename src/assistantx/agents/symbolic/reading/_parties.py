@@ -14,6 +14,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.gapped_recipient import gapped_recipient
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
+from assistantx.agents.symbolic.reading.joined_owners import joined_owners
 from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
@@ -100,6 +101,9 @@ class Roles:
     # and *Sun* a water", ``gapped_recipient``), or the subject of a need ("take my stapler
     # to Wang and *Sun* needs a coffee")
     for_next_at: list[int] = field(default_factory=list)
+    # "Wang and Sun's files": owner B → the people joined before B's possessive, who own
+    # such a thing too (``joined_owners``; the frame does the errand for each, ``each_owner``)
+    co_owners: dict[str, list[str]] = field(default_factory=dict)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -410,9 +414,15 @@ def clause_roles(
     ms = clause.mentions
     groups = joined_recipients(tokens, ms, requester, last_person or message_named)
     grouped = frozenset(at for g in groups for at in g.pronouns)
+    joined = joined_owners(tokens, ms)
     for n, m in enumerate(ms):
         if m.start in grouped:
             continue  # "bring him and Sun a coffee": "him" is one of a group (below)
+        if m.kind == "person" and m.start in joined:
+            # "bring me Wang and Sun's files": Wang owns one too, no party of the errand
+            roles.co_owners.setdefault(joined[m.start], []).append(m.ids[0])
+            last_person.append(m.ids[0])
+            continue
         if m.kind == "person":
             who = m.ids[0]
             last_person.append(who)

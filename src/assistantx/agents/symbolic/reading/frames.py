@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.directed_work import (
     has_it_done,
     obliged_to_go,
 )
+from assistantx.agents.symbolic.reading.joined_owners import each_owner
 from assistantx.agents.symbolic.reading.joined_recipients import for_each
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
@@ -256,6 +257,7 @@ class FrameReader:
                 whom_asked = whom_asked or each
             else:
                 made = each  # "bring Wang and Sun a coffee": a coffee each
+            made = each_owner(made, roles.co_owners)  # "Wang and Sun's files": both files
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
