@@ -229,4 +229,15 @@ def _whom_of(task: Task, group: Sequence[str], office: Office, requester: str) -
     thing = office.item_type(task.item).name if task.item is not None else "it"
     the = f"the {thing}" if task.item is not None else thing
     choices = ", or to ".join(names)
-    return f"Should {the} go to {choices}? I can hand it to only one of them."
+    return f"Should {the} go to {choices}? {ONLY_ONE}"
+
+
+# How the question of whom in a group ends: the answer names one of them (``group_answered``)
+ONLY_ONE = "I can hand it to only one of them."
+
+
+def group_spans(tokens: Sequence[Token], ms: Sequence[Mention]) -> list[tuple[int, int]]:
+    """The token spans [start, end) of the joined groups of party words in a text (its
+    lexicon's mentions, the function words among them left out)."""
+    said = [m for m in ms if m.kind != "word"]
+    return [(said[run[0]].start, said[run[-1]].end) for run in _chains(said, tokens)]

@@ -77,6 +77,7 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
+from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -528,6 +529,10 @@ class InstructionParser:
                 break
             if frame.question is not None and frame.question.startswith(OUT_OR_IN):
                 frame = self._out_or_in(text, requester, answer, frame)
+                continue
+            one_of = with_one_of_group(self.lex, text, frame.question or "", answer)
+            if one_of is not None:  # "Should the stapler go to Wang, or to Sun?" "Wang"
+                text, frame = one_of, self.parse(one_of, requester)
                 continue
             if frame.question is not None and frame.question.startswith(PROPOSED):
                 # "I can get you a pen. Would you like that?": yes asks for the pen
