@@ -107,6 +107,10 @@ PERSON_CASES = [
     ),
     (_site("make", nxt="copy", following=_COPY), "otherwise: named, no role yet"),
     (
+        replace(_site("and", nxt="a", following=_COPY), gapped=True),
+        "bring Wang a coffee and Sun a water: Sun is whom the unsaid verb gives the water",
+    ),
+    (
         _site("and", nxt="asked", subject=True),
         "Rich asked for it, Hal said so: the subject of a statement, not a party",
     ),

@@ -12,7 +12,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.gapped_recipient import gapped_recipient
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
+from assistantx.agents.symbolic.reading.joined_owners import joined_owners
+from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
@@ -90,6 +93,17 @@ class Roles:
     # "for Grace's meeting": whose occasion the thing is for (the recipient if none is named)
     occasion: list[str] = field(default_factory=list)
     occasion_at: list[int] = field(default_factory=list)
+    # "bring Wang and Sun a coffee": the groups of people joined as one recipient, each of
+    # whom receives (``joined_recipients``; the frame makes or asks, ``for_each``)
+    each: list[tuple[str, ...]] = field(default_factory=list)
+    # where a recipient was said for the object after it, not the one before: a giving
+    # verb's recipient said again after "and", the verb left unsaid ("bring Wang a coffee
+    # and *Sun* a water", ``gapped_recipient``), or the subject of a need ("take my stapler
+    # to Wang and *Sun* needs a coffee")
+    for_next_at: list[int] = field(default_factory=list)
+    # "Wang and Sun's files": owner B → the people joined before B's possessive, who own
+    # such a thing too (``joined_owners``; the frame does the errand for each, ``each_owner``)
+    co_owners: dict[str, list[str]] = field(default_factory=dict)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -130,6 +144,9 @@ class PersonSite:
     # "make Zhang a copy", "print Mark my file": after a giving or making verb, before the
     # thing's noun phrase (``indirect_object``)
     indirect: bool = False
+    # "bring Wang a coffee and *Sun* a water": the giving verb's recipient again, the verb
+    # left unsaid (``gapped_recipient``)
+    gapped: bool = False
     # the task word after a possessive, over words that describe it: "Ngozi's *sworn* stamp"
     work_named: Mention | None = None
     occasion: bool = False  # an occasion of theirs follows the possessive: "Grace's meeting"
@@ -252,6 +269,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "recipient",
     ),
     PersonRule(
+        "bring Wang a coffee and Sun a water: Sun is whom the unsaid verb gives the water",
+        lambda s: s.gapped,
+        "recipient",
+    ),
+    PersonRule(
         "Rich asked for it, Hal said so: the subject of a statement, not a party",
         lambda s: s.subject,
         "context",
@@ -301,6 +323,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
         ),
         indirect=is_indirect_object(tokens, ms, n, prev),
+        gapped=gapped_recipient(tokens, ms, n),
     )
     if m.possessive:
         occasion = is_occasion(tokens, site.following, m.end)
@@ -308,6 +331,8 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
     match person_rule(site).slot:
         case "recipient":
             roles.add_recipient(who, m.start)
+            if site.gapped or site.nxt in _NEEDS:
+                roles.for_next_at.append(m.start)
         case "returned":  # "take the stapler back to Zhang": Zhang's, and Zhang gets it
             roles.add_recipient(who, m.start)
             roles.returned_to.append(who)
@@ -376,16 +401,28 @@ def clause_roles(
     addressed: str | None = None,
     not_meant: frozenset[str] = frozenset(),
     taken_from: Sequence[str] = (),
+    message_named: Sequence[str] = (),
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
     "your" is theirs, ``vocative``); ``not_meant``: colleagues a "him"/"her" that receives
     cannot mean (the owner of the thing handed to them, ``frames._besides_owners``);
     ``taken_from``: whom an earlier clause took the thing this one hands on from ("get it from
-    June and bring it to her": not June)."""
+    June and bring it to her": not June); ``message_named``: the colleagues the whole message
+    names, for a "them both" that follows no name of the request's own words."""
     roles = Roles()
     ms = clause.mentions
+    groups = joined_recipients(tokens, ms, requester, last_person or message_named)
+    grouped = frozenset(at for g in groups for at in g.pronouns)
+    joined = joined_owners(tokens, ms)
     for n, m in enumerate(ms):
+        if m.start in grouped:
+            continue  # "bring him and Sun a coffee": "him" is one of a group (below)
+        if m.kind == "person" and m.start in joined:
+            # "bring me Wang and Sun's files": Wang owns one too, no party of the errand
+            roles.co_owners.setdefault(joined[m.start], []).append(m.ids[0])
+            last_person.append(m.ids[0])
+            continue
         if m.kind == "person":
             who = m.ids[0]
             last_person.append(who)
@@ -399,6 +436,9 @@ def clause_roles(
                 continue  # "take my stapler to Zhang for me": Zhang gets it, as a favour to me
             if prev in _TO or prev in _DATIVE_VERBS:
                 roles.add_recipient(requester, m.start)
+            elif gapped_recipient(tokens, ms, n):  # "get Pat a tea and me a highlighter"
+                roles.add_recipient(requester, m.start)
+                roles.for_next_at.append(m.start)
         elif m.kind == "pronoun" and _at_their_place(tokens, m):
             # "Priya wants a stapler, leave one at her desk": she receives it there (the
             # consent guard reads the same words with the same rule)
@@ -432,6 +472,11 @@ def clause_roles(
                 and _object_start(tokens, following)
                 and not coordinated(tokens, m)  # "bring them and a coffee": two objects
             ) or is_indirect_object(tokens, ms, n, prev)
+            # "bring Pat a tea and her a ruler": the giving verb's recipient again, unsaid
+            gapped = gapped_recipient(tokens, ms, n)
+            dative = dative or gapped
+            if gapped:  # "bring Pat a tea and her a ruler": "her" is someone besides Pat
+                others = [x for x in others if x not in roles.recipient]
             if prev in ("to", "for") or dative:
                 # "take it from Pat to her": not Pat, the one it is taken from
                 others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)
@@ -441,14 +486,33 @@ def clause_roles(
                 raise UnresolvedPronoun(m.text)
             if prev in ("to", "for") or dative:
                 roles.add_recipient(others[-1], m.start)
+                if gapped:
+                    roles.for_next_at.append(m.start)
         elif m.kind == "item":
             owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
             if owner is not None:
                 roles.owners[m.start] = owner
+    for group in groups:
+        if not group.people:  # "Wang is in, bring them both a water": both of whom?
+            raise UnresolvedPronoun("them")
+        _add_group(roles, group)
     if roles.occasion and not roles.recipient and taken_to_a_room(tokens, ms):
         # "take a ruler to the lounge for Mark's workshop": Mark, as nobody else receives it
         roles.add_recipient(roles.occasion[-1], roles.occasion_at[-1])
     return roles
+
+
+def _add_group(roles: Roles, group: Joined) -> None:
+    """Each of a group joined as one recipient receives: added where not read so already, the
+    recipients kept in text order (the last said is the clause's recipient), none of them
+    left a bare name."""
+    pairs = dict.fromkeys(zip(roles.recipient, roles.recipient_at, strict=True))
+    pairs.update(dict.fromkeys(zip(group.people, group.at, strict=True)))
+    ordered = sorted(pairs, key=lambda p: p[1])
+    roles.recipient = [who for who, _ in ordered]
+    roles.recipient_at = [at for _, at in ordered]
+    roles.bare = [who for who in roles.bare if who not in group.people]
+    roles.each.append(group.people)
 
 
 def owner_of(
@@ -542,12 +606,26 @@ def _described_owner(
 
 def recipient_of(objects: list[Mention], k: int, roles: Roles, default: str) -> str:
     """Whom one of several objects is for: a "for/to X" right after it ("a coffee for me and
-    some water for Wang"), else one named before all objects ("get me X and Y"), else the
-    clause's recipient ("take my book and my pen to Wang")."""
+    some water for Wang"), else the recipient of a verb left unsaid right before it ("... and
+    Sun a water"), else one named before all objects ("get me X and Y"), else the clause's
+    recipient ("take my book and my pen to Wang")."""
     m = objects[k]
     end = objects[k + 1].start if k + 1 < len(objects) else 1 << 30
+    # "bring Wang a coffee and Sun a water", "... and Sun needs a coffee": a recipient said
+    # for the object after it is that object's, never the object's before it
+    gapped = [
+        w
+        for w, at in zip(roles.recipient, roles.recipient_at, strict=True)
+        if at in roles.for_next_at and (objects[k - 1].end if k else 0) <= at < m.start
+    ]
+    after = [
+        w
+        for w, at in zip(roles.recipient, roles.recipient_at, strict=True)
+        if m.end <= at < end and at not in roles.for_next_at
+    ]
     return (
-        roles.recipient_between(m.end, end)
+        (after[-1] if after else None)
+        or (gapped[-1] if gapped else None)
         or roles.recipient_between(0, objects[0].start)
         or default
     )

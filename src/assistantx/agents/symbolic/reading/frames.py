@@ -42,6 +42,8 @@ from assistantx.agents.symbolic.reading.directed_work import (
     has_it_done,
     obliged_to_go,
 )
+from assistantx.agents.symbolic.reading.joined_owners import each_owner
+from assistantx.agents.symbolic.reading.joined_recipients import for_each
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.named_once import the_one_named
@@ -130,6 +132,7 @@ class FrameReader:
         to_self: bool = False,
         kept_said: Mapping[str, str] | None = None,
         named_once: str | None = None,
+        message_named: Sequence[str] = (),
     ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
         who the whole message says has an item now (``holder``), for one given back;
@@ -138,7 +141,9 @@ class FrameReader:
         whom their own item or file goes, so it goes to them, not asked again;
         ``kept_said``: item type → its one keeper where the whole message says the thing
         is kept (``said_kept``); ``named_once``: the one colleague the whole message names
-        (``the_one_named``), whom "his" means when the request's own words name nobody."""
+        (``the_one_named``), whom "his" means when the request's own words name nobody;
+        ``message_named``: every colleague it names (``the_ones_named``), whom "them both"
+        means when the request's own words name nobody before it."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -158,6 +163,7 @@ class FrameReader:
         said_from: list[str] = []  # whom the clauses take a thing from ("from Pat")
         waiting: tuple[Clause, Roles] | None = None  # a service on "it", waiting for the thing
         unaddressed: list[Task] = []  # the latest tasks whose clauses named no recipient
+        whom_asked: str | None = None  # one thing for a group of recipients: to whom?
         for k, clause in enumerate(clauses):
             if k in answered:
                 continue
@@ -171,6 +177,7 @@ class FrameReader:
                     last_person,
                     addressed=addressed,
                     taken_from=passed_on,
+                    message_named=message_named,
                 )
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
@@ -245,6 +252,14 @@ class FrameReader:
             # "could Mark send me his file?": Mark's own, sent by him
             made = sent_by_the_asked(made, _asked_subjects(tokens, clause), clause, tokens)
             made = _to_each(made, roles, _asked_subjects(tokens, clause))
+            each = for_each(made, roles.each, self.office, requester)
+            if isinstance(each, str):
+                # "Wang and Sun need a stapler": one stapler, whose? Asked once the whole
+                # message is read (a later "him" of nobody is asked first, as before)
+                whom_asked = whom_asked or each
+            else:
+                made = each  # "bring Wang and Sun a coffee": a coffee each
+            made = each_owner(made, roles.co_owners)  # "Wang and Sun's files": both files
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
@@ -356,7 +371,8 @@ class FrameReader:
         if unsent is not None:  # "fwd my invoice pdf to Ravi" where no file is kept
             return TaskFrame(requester=requester, decline=unsent)
         question = (
-            self._uncovered(objects, tasks)
+            whom_asked
+            or self._uncovered(objects, tasks)
             or self._whose_service(tasks, readings, requester)
             or which_work(self.office, tasks, readings.mentions, requester)
             or self._check(

@@ -40,7 +40,7 @@ def opens_noun_phrase(tokens: Sequence[Token], at: int) -> bool:
     return token.word in _OPENERS or token.word.isdigit() or token.possessive
 
 
-def _verb_before(tokens: Sequence[Token], ms: Sequence[Mention], n: int, prev: str) -> bool:
+def gives_from_verb(tokens: Sequence[Token], ms: Sequence[Mention], n: int, prev: str) -> bool:
     """Whether the word before mention ``n`` (titles skipped: ``prev``) is a giving verb, or
     the office's task word for making something ("print", "scan"), not a person's own work."""
     if prev in _DATIVE_VERBS:
@@ -62,4 +62,4 @@ def is_indirect_object(tokens: Sequence[Token], ms: Sequence[Mention], n: int, p
     ("make *Zhang* a copy", "print *her* my file"). A possessive name ("print Zhang's file")
     is read as an owner before this is asked; "her" may be either, and the noun phrase that
     opens after it says it is no possessive here."""
-    return _verb_before(tokens, ms, n, prev) and opens_noun_phrase(tokens, ms[n].end)
+    return gives_from_verb(tokens, ms, n, prev) and opens_noun_phrase(tokens, ms[n].end)

@@ -21,3 +21,10 @@ def the_one_named(whole: Lexed, requester: str) -> str | None:
         people.add(m.ids[0])
     people.discard(requester)
     return next(iter(people)) if len(people) == 1 else None
+
+
+def the_ones_named(whole: Lexed, requester: str) -> tuple[str, ...]:
+    """The colleagues (not the requester) the message names, in order, each once; a name two
+    people share names nobody here ("them both" of it is asked)."""
+    people = [m.ids[0] for m in whole.mentions if m.kind == "person" and len(set(m.ids)) == 1]
+    return tuple(p for p in dict.fromkeys(people) if p != requester)

@@ -83,6 +83,7 @@ from assistantx.agents.symbolic.reading.frames import (
     holder,
     named_items,
 )
+from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -97,7 +98,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
 from assistantx.agents.symbolic.reading.name_chosen import with_name_chosen
 from assistantx.agents.symbolic.reading.named_doer import with_named_doer
 from assistantx.agents.symbolic.reading.named_maker import with_named_maker
-from assistantx.agents.symbolic.reading.named_once import the_one_named
+from assistantx.agents.symbolic.reading.named_once import the_one_named, the_ones_named
 from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
@@ -400,6 +401,7 @@ class InstructionParser:
             to_self=to_self,
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
             named_once=the_one_named(whole, requester),
+            message_named=the_ones_named(whole, requester),
         )
         if frame.understood:
             # "a lemonade from the vending machine and Wang's stapler": the unlisted variety of
@@ -569,6 +571,10 @@ class InstructionParser:
                 break
             if frame.question is not None and frame.question.startswith(OUT_OR_IN):
                 frame = self._out_or_in(text, requester, answer, frame)
+                continue
+            one_of = with_one_of_group(self.lex, text, frame.question or "", answer)
+            if one_of is not None:  # "Should the stapler go to Wang, or to Sun?" "Wang"
+                text, frame = one_of, self.parse(one_of, requester)
                 continue
             if frame.question is not None and frame.question.startswith(PROPOSED):
                 # "I can get you a pen. Would you like that?": yes asks for the pen

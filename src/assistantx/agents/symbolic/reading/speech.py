@@ -157,6 +157,10 @@ _NOUN_OPENERS = frozenset({"the", "a", "an", "my", "your", "our", "their", "his"
 _PREPOSITIONS = _IN_PLACE_PHRASE | {"from", "off", "into", "inside", "beside", "to"}
 
 
+# The prepositions that take a person as their object: "for Rose", "to Mark", "from Will".
+_PARTY_PREPOSITIONS = frozenset({"to", "for", "from", "with", "by", "off"})
+
+
 def _after_preposition(w: list[str], n: int) -> bool:
     """Whether ``w[n]`` comes right after a preposition and a determiner ("from the shed")."""
     return n >= 2 and w[n - 1] in _NOUN_OPENERS and w[n - 2] in _PREPOSITIONS
@@ -865,6 +869,10 @@ class SpeechActs:
                 return False  # "my stapler should go to Lee": where it is wanted, asked
             if _after_preposition(w, n) or self._in_office_phrase(w, n):
                 continue  # "some twine from the (potting) shed": a noun, not "shed"
+            if w[n - 1] in _PARTY_PREPOSITIONS and self._named(x):
+                # "..., both for Rose": a colleague's name after a preposition is its
+                # object (as the lexicon reads "to Mark"), never the verb ("rose" of "rise")
+                continue
             if _attributive(w, n):
                 continue  # "my signed contract needs ...": a modifier, not "signed"
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
