@@ -60,7 +60,11 @@ from assistantx.agents.symbolic.reading.own_papers import OwnPapers
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
-from assistantx.agents.symbolic.reading.verb_named_places import in_a_place_slot, verb_named_places
+from assistantx.agents.symbolic.reading.verb_named_places import (
+    clipped_verb_places,
+    in_a_place_slot,
+    verb_named_places,
+)
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, name_parts, task_kinds
 from assistantx.core.name_reading import is_word_name, numeral, read_name, slot_at
@@ -296,6 +300,7 @@ class Lexicon:
     # one-word place names that are also a service's verb ("dispatch"): places only in a
     # place's slot ("in dispatch"), the verb elsewhere (``verb_named_places``)
     verb_places: dict[str, str] = field(default_factory=dict)
+    clipped_verb_places: dict[str, str] = field(default_factory=dict)
     max_words: int = 1
     cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
     cue_words: frozenset[str] = frozenset()
@@ -467,6 +472,9 @@ class Lexicon:
                 if key and (len(key.split()) > 1 or key not in lex.cue_words):
                     lex.places.setdefault(key, loc.id)
         lex.verb_places = verb_named_places(
+            ((key_of(loc.name), loc.id) for loc in office.locations), lex.cue_words
+        )
+        lex.clipped_verb_places = clipped_verb_places(
             ((key_of(loc.name), loc.id) for loc in office.locations), lex.cue_words
         )
         # "down to repro": a place's one-word name clipped as people say it
@@ -1097,6 +1105,9 @@ class Lexicon:
             return Mention("pronoun", i, i + 1, (), w in OTHER_POSSESSIVES, t.text)
         if w in self.verb_places and in_a_place_slot(tokens, i):  # "Mateus in dispatch"
             return Mention("place", i, i + 1, (self.verb_places[w],), t.possessive, t.text)
+        room = self.clipped_verb_places.get(w)  # "in dispatch" of the "Dispatch room"
+        if room is not None and in_a_place_slot(tokens, i, by_too=False):
+            return Mention("place", i, i + 1, (room,), t.possessive, t.text)
         if self._thing_named(tokens, i):  # "a brew": the office's tea
             return Mention("item", i, i + 1, (self.items[w],), t.possessive, t.text)
         made = self.made_objects.product_at(tokens, i, self._known)

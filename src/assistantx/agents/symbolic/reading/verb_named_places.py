@@ -21,21 +21,26 @@ _ARTICLES = frozenset({"the", "our", "that"})
 
 def verb_named_places(names: Iterable[tuple[str, str]], verbs: Collection[str]) -> dict[str, str]:
     """The one-word names among ``names`` (key, location id) that are also a service verb of
-    ``verbs``: the places the lexicon reads as a place only in a place's slot. A two-word
-    name is also said by its first word alone, the kind of place left out ("Mateus in
-    dispatch" of the "Dispatch room", "from print" of the "Print room")."""
+    ``verbs``: the places the lexicon reads as a place only in a place's slot."""
+    return {key: loc for key, loc in names if key and " " not in key and key in verbs}
+
+
+def clipped_verb_places(names: Iterable[tuple[str, str]], verbs: Collection[str]) -> dict[str, str]:
+    """The two-word names among ``names`` whose first word alone is a service verb of
+    ``verbs``: people leave the kind of place out ("Mateus in dispatch" of the "Dispatch
+    room"). Read as the place only after a preposition of where other than "by": "by post"
+    of a "Post room" is still the means ("send it to Cardiff by post")."""
     found: dict[str, str] = {}
     for key, loc in names:
         words = key.split()
-        said = words[0] if len(words) == 2 else key
-        if said and " " not in said and said in verbs:
-            found.setdefault(said, loc)
+        if len(words) == 2 and words[0] in verbs:
+            found.setdefault(words[0], loc)
     return found
 
 
-def in_a_place_slot(tokens: Sequence[Token], i: int) -> bool:
+def in_a_place_slot(tokens: Sequence[Token], i: int, *, by_too: bool = True) -> bool:
     """Whether token ``i`` stands where English names a place: after a preposition of where
-    (an article between allowed), or after "out of"."""
+    (an article between allowed), or after "out of"; after "by" only when ``by_too``."""
     k = i - 1
     while k >= 0 and tokens[k].word in _ARTICLES:
         k -= 1
@@ -43,4 +48,4 @@ def in_a_place_slot(tokens: Sequence[Token], i: int) -> bool:
         return False
     before = tokens[k].word
     out_of = before == "of" and k >= 1 and tokens[k - 1].word == "out"
-    return before in _WHERE or out_of
+    return (before in _WHERE and (by_too or before != "by")) or out_of
