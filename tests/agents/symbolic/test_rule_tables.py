@@ -108,7 +108,7 @@ PERSON_CASES = [
     (_site("make", nxt="copy", following=_COPY), "otherwise: named, no role yet"),
     (
         replace(_site("and", nxt="a", following=_COPY), gapped=True),
-        "bring Wang a coffee and Sun a water: Sun is whom the unsaid verb gives the water",
+        "bring Wang a stapler and Sun a pen: Sun is whom the unsaid verb gives the pen",
     ),
     (
         _site("and", nxt="asked", subject=True),

@@ -269,7 +269,7 @@ PERSON_RULES: tuple[PersonRule, ...] = (
         "recipient",
     ),
     PersonRule(
-        "bring Wang a coffee and Sun a water: Sun is whom the unsaid verb gives the water",
+        "bring Wang a stapler and Sun a pen: Sun is whom the unsaid verb gives the pen",
         lambda s: s.gapped,
         "recipient",
     ),
