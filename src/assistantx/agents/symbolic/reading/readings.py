@@ -34,6 +34,11 @@ from assistantx.agents.symbolic.reading.lexicon import (
     describing_participles,
 )
 from assistantx.agents.symbolic.reading.occasion import occasion_people
+from assistantx.agents.symbolic.reading.outsider_owner import (
+    common_noun_owner,
+    office_people_words,
+    titled_outsider,
+)
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.owned_facility import runs_into_a_noun
 from assistantx.agents.symbolic.reading.possessed_thing import possessed
@@ -107,6 +112,9 @@ class MentionReader:
         # "scanned PDF", "scan to PDF"): said after "to"/"into"/"as", the form of a result
         # ("scan my waybill to PDF"), never someone to look up
         self._result_words = _result_words(office)
+        # every word of the office's names for its people: "the judge's" where someone is
+        # "the Judge's Clerk" is one of them, never an outsider by a common noun
+        self._people_words = office_people_words(office)
         self._service_verbs = frozenset(v.lower() for op in office.operations for v in op.verbs)
         # the verb phrases of services that send an item out of the office (a fax, a
         # courier), first word in any form: what follows their "to" is a destination outside,
@@ -374,7 +382,7 @@ class MentionReader:
                 continue  # "before it goes to Acme": when, by what happens to it later
             if m.kind == "word" and self._result_form(tokens, m):
                 continue  # "scan my signed waybill to PDF": the result's form, not a person
-            if m.kind == "word" and _unknown_name(tokens, mentions, n):
+            if m.kind == "word" and _unknown_name(tokens, mentions, n, self._people_words):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
             if m.kind == "facility" and _where_an_item_is_wanted(tokens, mentions, n):
@@ -451,7 +459,9 @@ _OUTSIDER_DETERMINERS = (*_OWN, "the", "this", "that", "a", "an")
 _OUTSIDERS = english.words("outsider_nouns")
 
 
-def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+def _unknown_name(
+    tokens: Sequence[Token], mentions: Sequence[Mention], n: int, people_words: frozenset[str]
+) -> bool:
     m = mentions[n]
     word = tokens[m.start].word
     if word in COMMON or word in PRONOUNS or word.isdigit() or len(word) < 2:
@@ -476,7 +486,11 @@ def _unknown_name(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) 
         # case, its apostrophe after the s, after a determiner: a kind of paper, no name
         kind_of_person = kind_of_person or kind_of_people(tokens, m)
         outsider = lower and prev in _OUTSIDER_DETERMINERS and word in _OUTSIDERS
+        # "the chiropodist's invoice": any common noun names a kind of person, not a list
+        outsider = outsider or common_noun_owner(word, m.text, prev, people_words)
         return not (kind_of_person or outsider)
+    if m.possessive and titled_outsider(prev):
+        return False  # "to check Mrs Baker's sats": an outsider said as context, no colleague
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
     if prev == "for" and _modifies_next(tokens, m.end):

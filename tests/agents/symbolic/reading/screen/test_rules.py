@@ -20,6 +20,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # why the colleague a request names needs it ("..., he needs it for his file")
         "statement",  # what someone wants to know ("a visitor wants to know the coffee prices")
         "statement",  # the things to use a tool asked for on ("..., a pile of letters to seal")
+        "statement",  # a count of things, why it is asked ("..., like 20 letters going out")
         "statement",  # a past event of the speaker's own thing ("..., mine went in the compost")
         "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",

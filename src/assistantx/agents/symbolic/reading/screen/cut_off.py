@@ -17,6 +17,9 @@ CUT_OFF = "Your message seems to be cut off after"
 _DANGLING = english.words("cut_off_words")
 # A subject or a relative word after the verb: a clause that may strand a preposition.
 _CLAUSE = english.words("cut_off_clauses")
+# "because the visitor lost *his*": a possessive said for the owner's one, in a reason
+_REASONS = english.words("reason_conjunctions")
+_POSSESSIVES = frozenset({"his", "her", "their", "our", "your", "my"})
 
 
 def cut_off(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -25,6 +28,8 @@ def cut_off(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding
     last = piece.words[-1]
     if last not in _DANGLING or _named_last(piece):
         return None
+    if last in _POSSESSIVES and _REASONS.intersection(piece.words[:-1]):
+        return None  # "I need scissors because the visitor lost his": his one, said why
     after_verb = piece.words[piece.verb_at(terms.en.lead_in) + 1 : -1]
     if set(after_verb) & _CLAUSE:
         return None  # "bring me the tray I asked for": stranded by its own clause

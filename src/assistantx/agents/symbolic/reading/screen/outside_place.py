@@ -21,12 +21,14 @@ is the office's; a send-out service named beside it sends things there, read as 
 from __future__ import annotations
 
 import itertools
+from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.outsider import sends_its_input, sends_out
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
 _HOMES = english.words("home_nouns")
@@ -50,12 +52,24 @@ _REACH = 5  # "to the new applicant's house": the words between "to" and the pla
 _TO_GO = frozenset({"to", "down", "over", "round", "across", "into"})
 
 
+def _infinitive(tokens: Sequence[Token], k: int) -> bool:
+    """Whether the word at ``k``, after "to", is a verb in its plain form ("to write", "to
+    check"): "to" is then the infinitive's, and what follows is the verb's object, no place
+    the thing goes. A name ("to Jack's flat"), a capital, or a home's word is no verb here."""
+    if k >= len(tokens):
+        return False
+    t = tokens[k]
+    if t.possessive or not t.text[:1].islower() or t.word in _HOMES or t.word in _STREETS:
+        return False
+    return t.word in language.verb_lemmas(t.word)
+
+
 def _outside_at(piece: Piece, office_at: set[int]) -> bool:
     tokens = piece.lexed.tokens
     words = [t.word for t in tokens]
     for n, w in enumerate(words):
-        if w != "to":
-            continue
+        if w != "to" or _infinitive(tokens, n + 1):
+            continue  # "a pen to write the client's address with": a purpose, no destination
         for k in range(n + 1, min(n + 1 + _REACH, len(words))):
             if k in office_at:
                 break  # "to Hal's desk", "to the post room": the office's own place

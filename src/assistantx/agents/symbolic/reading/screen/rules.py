@@ -11,6 +11,7 @@ from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.contrast import contrast
+from assistantx.agents.symbolic.reading.screen.counted_reason import counted_reason
 from assistantx.agents.symbolic.reading.screen.covert import covert
 from assistantx.agents.symbolic.reading.screen.curious import asks_for_time, curious
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
@@ -92,6 +93,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", need_to_know),
     # the things to use a tool asked for on ("..., I've a pile of letters to seal")
     ("statement", tool_use),
+    # "..., like 20 letters going out today": a count of the speaker's things, why it is asked
+    ("statement", counted_reason),
     # what already happened to the speaker's own thing beside a request ("mine went in the
     # compost"): before a service or waste container its words name is read as asked for
     ("statement", past_event),
