@@ -452,7 +452,15 @@ class Lexicon:
                     continue
                 # "walkietalkie", "headtorch": a name of several words written as one
                 joined = key.replace(" ", "") if " " in key else ""
-                for variant in (key, _plural(key), joined, _plural(joined) if joined else ""):
+                # "bills of lading": a name "N of M" is made plural on its head, N
+                head_plural = language.head_plural(key)
+                for variant in (
+                    key,
+                    _plural(key),
+                    head_plural,
+                    joined,
+                    _plural(joined) if joined else "",
+                ):
                     if variant:
                         lex.items.setdefault(variant, t.id)
         lex.everyday_verbs = lex._everyday_names(office, ops)
