@@ -202,6 +202,21 @@ def plural(noun: str) -> str:
     return " ".join([*head, forms[0] if forms else last + "s"])
 
 
+def head_plural(phrase: str) -> str:
+    """The plural of a name "N of M", whose head is N ("bill of lading" → bills of lading,
+    "pair of scissors" → pairs of scissors); "" for a name without a lone "of" between
+    words. Only the first "of" heads: "letter of credit of the bank" → letters of ..."""
+    head, sep, rest = phrase.partition(" of ")
+    if not sep or not head or not rest:
+        return ""
+    *lead, last = head.split(" ")
+    found = getAllInflections(last, upos="NOUN") or getAllInflectionsOOV(last, upos="NOUN")
+    forms = found.get("NNS", ())
+    if not forms or forms[0] == last:
+        return ""  # "series of talks": a head that is its own plural adds nothing
+    return " ".join([*lead, forms[0]]) + sep + rest
+
+
 def is_plural_noun(phrase: str) -> bool:
     """Whether a noun phrase names several things ("handling gloves", "wipes"): its last
     word is a plural form of another noun in the dictionary ("gloves" → glove), or a noun

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Collection, Sequence
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -452,7 +452,15 @@ class Lexicon:
                     continue
                 # "walkietalkie", "headtorch": a name of several words written as one
                 joined = key.replace(" ", "") if " " in key else ""
-                for variant in (key, _plural(key), joined, _plural(joined) if joined else ""):
+                # "bills of lading": a name "N of M" is made plural on its head, N
+                head_plural = language.head_plural(key)
+                for variant in (
+                    key,
+                    _plural(key),
+                    head_plural,
+                    joined,
+                    _plural(joined) if joined else "",
+                ):
                     if variant:
                         lex.items.setdefault(variant, t.id)
         lex.everyday_verbs = lex._everyday_names(office, ops)
@@ -873,7 +881,7 @@ class Lexicon:
             if (
                 m.kind == "item"
                 and (
-                    modifies_a_noun(tokens, m.end, self._known)
+                    modifies_a_noun(tokens, m.end, self._head_known(tokens, m.start))
                     or labels_an_item(tokens, m.end, item_starts)
                 )
             )
@@ -881,6 +889,15 @@ class Lexicon:
             else m
             for n, m in enumerate(mentions)
         ]
+
+    def _head_known(self, tokens: Sequence[Token], start: int) -> Callable[[str], bool]:
+        """The office's words that keep a noun after an item's name from heading a compound
+        with it. After "my", "your", ... the item's phrase is a noun phrase ("my works
+        order"), so a task's verb there ("order") can only be its head noun: no request's
+        verb follows its object; names, items, people and places still block."""
+        if start and tokens[start - 1].word in _OWNED_BY:
+            return lambda word: word not in self.cue_words and self._known(word)
+        return self._known
 
     def _inner_noun(self, t: Token) -> bool:
         """A word inside a noun phrase whose head comes later ("log", "cleaning", "rota" of

@@ -75,6 +75,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
 )
 from assistantx.agents.symbolic.reading.due_service import DueService
 from assistantx.agents.symbolic.reading.emailed_paper import BRING, emailed_paper
+from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     RESTATED,
@@ -269,6 +270,8 @@ class InstructionParser:
         text = named_later(self.lex, text)
         # "Wang's setting-out file": the description is no owner or part; Wang's file
         text = without_hyphened_description(self.lex, text)
+        # "Wang's pdf of the manifest": what a colleague's file is about is no second thing
+        text = without_file_subject(self.lex, self.office, text)
         # "could I have Wang's report? just email it to me": a copy the office makes
         # electronic ("scan it"), else asked whether the paper is brought (a yes: brought)
         emailed = emailed_paper(self.lex, text, requester)

@@ -39,6 +39,8 @@ def unknown_item(terms: Terms, tokens: Sequence[Token], mentions: Sequence[Menti
         return None  # "bring me a few": how many of something not named, so ask what
     if not thing or not all(language.lemmas(w) or language.zipf(w) > 0 for w in thing.split()):
         return None
+    if thing in terms.lex.items:
+        return None  # the office's own thing, misread around it: ask, never deny it exists
     return (
         f"Sorry, there is no {thing} in this office that I know of, so I can't get you "
         f"one. {terms.capabilities()}"

@@ -15,7 +15,11 @@ from assistantx.agents.symbolic.reading.screen.elided_possessive import elided_i
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.own_one import own_ones
 from assistantx.agents.symbolic.reading.screen.pieces import Message
-from assistantx.agents.symbolic.reading.screen.purpose_object import purpose_words
+from assistantx.agents.symbolic.reading.screen.purpose_object import (
+    object_nouns,
+    purpose_words,
+    without_articles,
+)
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -474,11 +478,16 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     tail = match.group(2).split()
 
     def declared(phrase: str) -> list[str]:
-        return [t.name for t in terms.office.item_types if phrase in map(purpose, t.purposes)]
+        said = without_articles(phrase)
+        return [
+            t.name
+            for t in terms.office.item_types
+            if said in {without_articles(purpose(p)) for p in t.purposes}
+        ]
 
     # "something to check continuity with": the object of a declared purpose is part of it
     said = purpose_words(declared, verb, tail)
-    keep = said
+    keep = object_nouns(tail, said)  # "check the tread *wear*": the object goes on
     while keep < len(tail) and tail[keep].lower() in terms.en.purpose_tail:
         keep += 1
     # "anything I can trim *this ribbon with*": the purpose's own object, up to its "with",
