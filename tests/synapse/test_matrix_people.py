@@ -133,7 +133,11 @@ async def test_a_collect_code_never_leaves_the_dm(office: Office) -> None:
         assert code.room_id == lee_dm
         assert await office.lee.read_qr(code)  # a real, readable code
         # The operator can scan a code sent over Matrix from the locker panel.
-        [held] = await locker_codes(office)
+        # The runtime records a code as held once its message has gone out, so Lee's client
+        # can show the message a moment before the panel lists it.
+        [held] = await eventually(
+            lambda: locker_codes(office), what="the code on the operator's locker panel"
+        )
         assert (held["person"], held["purpose"], held["scannable"]) == ("lee", "collect", True)
         about = await office.lee.expect(sender=bot, msgtype="m.text", room=lee_dm)
         assert "one-time code" in about.body
