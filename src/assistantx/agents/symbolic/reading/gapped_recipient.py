@@ -18,32 +18,20 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.indirect_object import gives_from_verb, opens_noun_phrase
+from assistantx.agents.symbolic.reading.joined_recipients import one_party
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english
 
 _DATIVE_VERBS = english.words("dative_verbs")
 _NEEDS = english.words("need_verbs")
-_PARTY_WORDS = frozenset({"me", "him", "her"})
-
-
-def _party(m: Mention, tokens: Sequence[Token]) -> bool:
-    """A person (one), "me", "him" or "her", not possessive ("her" is read either way: the
-    noun phrase the caller asks to open after it says it owns nothing here)."""
-    if m.kind == "pronoun":
-        return tokens[m.start].word in _PARTY_WORDS
-    if m.possessive:
-        return False
-    if m.kind == "person":
-        return len(m.ids) == 1
-    return m.kind == "self" and tokens[m.start].word in _PARTY_WORDS
 
 
 def _indirect_object(tokens: Sequence[Token], ms: Sequence[Mention], k: int) -> bool:
     """Whether mention ``k`` is a giving verb's indirect object: right after the verb, the
     thing's noun phrase opening right after it ("bring *Wang* a coffee"), or the one in need
     of it ("*Wang* needs my stapler and Sun a coffee": "needs" left unsaid the second time)."""
-    if not _party(ms[k], tokens):
+    if not one_party(ms[k], tokens):
         return False
     m = ms[k]
     if m.end < len(tokens) and tokens[m.end].word in _NEEDS:
@@ -57,11 +45,11 @@ def gapped_recipient(tokens: Sequence[Token], ms: Sequence[Mention], n: int) -> 
     """Whether mention ``n`` is the indirect object of a giving verb left unsaid after "and"
     ("... and *Sun* a water"), the clause's verb having had one before it."""
     m = ms[n]
-    if not _party(m, tokens) or prev_word(tokens, m.start) != "and":
+    if not one_party(m, tokens) or prev_word(tokens, m.start) != "and":
         return False
     if not opens_noun_phrase(tokens, m.end):
         return False
-    if n > 0 and _party(ms[n - 1], tokens) and ms[n - 1].end == m.start - 1:
+    if n > 0 and one_party(ms[n - 1], tokens) and ms[n - 1].end == m.start - 1:
         return False  # "Wang and Sun a coffee": one group (``joined_recipients``)
     if not _object_follows(ms, n):
         return False  # "... and Rose a <thing the office has not>": no object of the gap

@@ -57,7 +57,7 @@ class Joined:
     pronouns: frozenset[int]  # the starts of the pronoun mentions the group took in
 
 
-def _party(m: Mention, tokens: Sequence[Token]) -> bool:
+def one_party(m: Mention, tokens: Sequence[Token]) -> bool:
     """Whether a mention can be one member of a group: a single named person, "me", or an
     object pronoun, none of them possessive (``Wang's`` owns the thing after it; "her" is
     read either way, and "and" after or before it says it owns nothing)."""
@@ -87,11 +87,11 @@ def _chains(ms: Sequence[Mention], tokens: Sequence[Token]) -> list[list[int]]:
     chains: list[list[int]] = []
     n = 0
     while n < len(ms):
-        if not _party(ms[n], tokens):
+        if not one_party(ms[n], tokens):
             n += 1
             continue
         run, joins = [n], []
-        while n + 1 < len(ms) and _party(ms[n + 1], tokens):
+        while n + 1 < len(ms) and one_party(ms[n + 1], tokens):
             join = _join(tokens, ms[n], ms[n + 1])
             if not join:
                 break

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Collection
 
-from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.named_words import token_at
 from assistantx.agents.symbolic.reading.screen.pieces import Part, Piece
 
 # the readings of the office's own names of things, as the lexicon tags them
@@ -27,13 +27,10 @@ def opens_item_name(
     in ``piece``'s reading, the name of one of the office's things longer than the verb's
     ``verb_words`` words, spelled there word for word as one of ``names`` (the lexicon also
     reads a name with a word between, "bin the bags"; that is the verb and its object)."""
-    offset = part.start - piece.start
-    if offset < 0 or at >= len(part.words):
+    k = token_at(piece, part, at)
+    if k is None:
         return False
-    k = (len(split_words(piece.text[:offset])) if offset else 0) + at
     tokens = piece.lexed.tokens
-    if k >= len(tokens) or tokens[k].word != part.words[at]:
-        return False  # the words and the tokens do not line up: say nothing
     return any(
         m.kind in _THING_KINDS
         and m.start == k
