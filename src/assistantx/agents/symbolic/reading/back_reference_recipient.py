@@ -24,7 +24,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
-from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.tokens import Token, clause_end, clause_start
 from assistantx.core import english, language
 
 # The words that make a person the one a thing is for: "Zhang needs it", "to Zhang".
@@ -65,8 +65,8 @@ def recipient_as_need(tokens: Sequence[Token], m: Mention) -> bool:
 
 def recipient_in_doubt(lex: Lexicon, text: str, requester: str) -> Doubt | None:
     """The doubt of ``text`` (see the module); None where there is none."""
-    tokens = lex.tokens(text)
-    mentions = lex.scan(tokens)
+    lexed = lex.read(text)
+    tokens, mentions = lexed.tokens, lexed.mentions
     for n, opener in enumerate(mentions):
         if opener.kind != "person" or not opener.possessive or len(opener.ids) != 1:
             continue
@@ -76,8 +76,8 @@ def recipient_in_doubt(lex: Lexicon, text: str, requester: str) -> Doubt | None:
         item = _item_after(tokens, mentions, n + 1, opener.end)
         if item is None:
             continue
-        start = _clause_start(tokens, opener.start)
-        stop = _clause_end(tokens, item.end)
+        start = clause_start(tokens, opener.start)
+        stop = clause_end(tokens, item.end)
         if stop >= len(tokens) or not _names_speaker(mentions, start, stop):
             continue
         other = _later_recipient(tokens, mentions, stop, item, {owner, requester})
@@ -129,18 +129,6 @@ def _item_after(
     return None
 
 
-def _clause_start(tokens: Sequence[Token], at: int) -> int:
-    while at > 0 and not (tokens[at].opens or tokens[at].after_pause):
-        at -= 1
-    return at
-
-
-def _clause_end(tokens: Sequence[Token], at: int) -> int:
-    while at < len(tokens) and not (tokens[at].opens or tokens[at].after_pause):
-        at += 1
-    return at
-
-
 def _names_speaker(mentions: Sequence[Mention], start: int, stop: int) -> bool:
     """Whether the speaker is a party of the clause ("could I have", "send me")."""
     return any(m.kind == "self" and not m.possessive and start <= m.start < stop for m in mentions)
@@ -155,7 +143,7 @@ def _later_recipient(
 ) -> str | None:
     """The colleague the clause from ``start`` says needs the thing, where it refers back to
     it and is not negated; None otherwise."""
-    stop = _clause_end(tokens, start + 1)
+    stop = clause_end(tokens, start + 1)
     words = {t.word for t in tokens[start:stop]}
     if words & _NEGATORS:
         return None  # "Zhang doesn't need the file": nobody else is a recipient

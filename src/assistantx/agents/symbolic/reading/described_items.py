@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.aligned import aligned_reading
 from assistantx.agents.symbolic.reading.back_reference_recipient import recipient_as_need
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -53,7 +54,7 @@ _NEGATORS = english.words("negators")
 def without_hyphened_description(lex: Lexicon, text: str) -> str:
     """``text`` with a hyphened description between a possessive and an office's item left
     out ("Wang's setting-out file" → "Wang's file"); unchanged where there is none."""
-    spans, tokens, mentions = _read(lex, text)
+    spans, tokens, mentions = aligned_reading(lex, text)
     if spans is None:
         return text
     cuts: list[tuple[int, int]] = []
@@ -77,7 +78,7 @@ def named_later(lex: Lexicon, text: str) -> str:
     """``text`` with a colleague's thing the office has no item for said with the item a
     later clause names as "the <item>" ("Wang's budget plan? just send me the file" →
     "Wang's budget plan file? ..."); unchanged where nothing later names it."""
-    spans, tokens, mentions = _read(lex, text)
+    spans, tokens, mentions = aligned_reading(lex, text)
     if spans is None:
         return text
     for n, opener in enumerate(mentions):
@@ -106,18 +107,6 @@ def mentions_kind(mentions: Sequence[Mention], token: int) -> str:
         if m.start <= token < m.end:
             return m.kind
     return ""
-
-
-def _read(
-    lex: Lexicon, text: str
-) -> tuple[list[tuple[int, int]] | None, list[Token], list[Mention]]:
-    """The character spans of ``text``'s tokens (None where they do not line up with the
-    lexicon's tokens), the tokens and their mentions."""
-    tokens = lex.tokens(text)
-    spans = [m.span() for m in language.WORD.finditer(text.replace("’", "'"))]
-    if len(spans) != len(tokens):
-        return None, tokens, []
-    return spans, tokens, lex.scan(tokens)
 
 
 def _owner(m: Mention) -> bool:

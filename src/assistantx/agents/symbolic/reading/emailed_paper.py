@@ -19,9 +19,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.aligned import aligned_reading
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
-from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english, language
+from assistantx.agents.symbolic.reading.tokens import Token, clause_start
+from assistantx.core import english
 from assistantx.core.office import Office
 
 _SENDING = english.words("electronic_sending")
@@ -64,11 +65,9 @@ class EmailedPaper:
 
 def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | None:
     """The paper of ``text`` sent electronically by a later clause (see the module)."""
-    tokens = lex.tokens(text)
-    spans = [m.span() for m in language.WORD.finditer(text.replace("’", "'"))]
-    if len(spans) != len(tokens):
+    spans, tokens, mentions = aligned_reading(lex, text)
+    if spans is None:
         return None
-    mentions = lex.scan(tokens)
     office = lex.office
     for n, opener in enumerate(mentions[:-1]):
         item = mentions[n + 1]
@@ -93,16 +92,10 @@ def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | Non
             office.item_type(item.id).name,
             copy_verb,
             spans[clause_end - 1][1],
-            spans[_clause_start(tokens, opener.start)][0],
+            spans[clause_start(tokens, opener.start)][0],
             office.person(to).name if to is not None else None,
         )
     return None
-
-
-def _clause_start(tokens: Sequence[Token], at: int) -> int:
-    while at > 0 and not (tokens[at].opens or tokens[at].after_pause):
-        at -= 1
-    return at
 
 
 def _is_paper(office: Office, type_id: str) -> bool:

@@ -8,8 +8,9 @@ for a thing nobody wants moved.
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.aligned import aligned_reading
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
-from assistantx.core import english, language
+from assistantx.core import english
 from assistantx.core.office import Office
 
 # The prepositions that say what a file is about ("a pdf of the plan", "slides on the bid").
@@ -20,11 +21,9 @@ _DETERMINERS = english.words("determiners")
 def without_file_subject(lex: Lexicon, office: Office, text: str) -> str:
     """``text`` without the "of the <thing>" after a colleague's electronic file ("Wang's
     pdf of the manifest" → "Wang's pdf"); unchanged where there is none."""
-    tokens = lex.tokens(text)
-    spans = [m.span() for m in language.WORD.finditer(text.replace("’", "'"))]
-    if len(spans) != len(tokens):
+    spans, tokens, mentions = aligned_reading(lex, text)
+    if spans is None:
         return text
-    mentions = lex.scan(tokens)
     at = {m.start: m for m in mentions}
     cuts: list[tuple[int, int]] = []
     for owner in mentions:

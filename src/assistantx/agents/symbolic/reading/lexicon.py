@@ -357,6 +357,10 @@ class Lexicon:
     _tokens_of: dict[str, tuple[Token, ...]] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )
+    # the readings of the texts last read: the parser's early rewrites (a description said
+    # later, a hyphened description, a file's subject, an emailed paper, a recipient in
+    # doubt) each look at the same message before any of them changes it
+    _read_of: dict[str, Lexed] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @classmethod
     def from_office(cls, office: Office) -> Lexicon:
@@ -618,8 +622,13 @@ class Lexicon:
     def read(self, text: str) -> Lexed:
         """The lexicon's reading of a text: its tokens with typos corrected, and the mentions
         of this office's people, items, facilities and places in them."""
-        tokens = tuple(self.tokens(text))
-        return Lexed(text, tokens, tuple(self.scan(tokens)))
+        kept = self._read_of.get(text)
+        if kept is None:
+            if len(self._read_of) >= _TEXTS_KEPT:
+                self._read_of.clear()
+            tokens = tuple(self.tokens(text))
+            kept = self._read_of[text] = Lexed(text, tokens, tuple(self.scan(tokens)))
+        return kept
 
     def tokens(self, text: str) -> list[Token]:
         """The tokens of ``text`` (stage 1), each corrected against this office's words."""

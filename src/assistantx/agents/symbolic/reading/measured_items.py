@@ -85,9 +85,10 @@ def singular_spans(
     """The (start, end, type id) of each singular of a plural name said where a counted noun
     stands; ``kinds``: the mention kind the lexicon read at each token."""
     out: list[tuple[int, int, str]] = []
+    starts = {phrase.split(" ", 1)[0] for phrase in found}  # a name begins only there
     i = 0
     while i < len(tokens):
-        span = _singular_at(tokens, kinds, found, longest, i)
+        span = _singular_at(tokens, kinds, found, longest, i) if tokens[i].word in starts else None
         if span is None:
             i += 1
             continue

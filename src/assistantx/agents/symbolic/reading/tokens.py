@@ -95,3 +95,19 @@ def prev_word(tokens: Sequence[Token], start: int, *, skip_titles: bool = True) 
     while k >= 0 and skip_titles and tokens[k].word in TITLES:
         k -= 1
     return tokens[k].word if k >= 0 else ""
+
+
+def clause_start(tokens: Sequence[Token], at: int) -> int:
+    """Where the clause of token ``at`` begins: at a token that opens a sentence or follows
+    a pause, or at the first token."""
+    while at > 0 and not (tokens[at].opens or tokens[at].after_pause):
+        at -= 1
+    return at
+
+
+def clause_end(tokens: Sequence[Token], at: int) -> int:
+    """Where the clause of token ``at`` ends: before the next token that opens a sentence or
+    follows a pause, or at the end."""
+    while at < len(tokens) and not (tokens[at].opens or tokens[at].after_pause):
+        at += 1
+    return at
