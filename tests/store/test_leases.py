@@ -3,15 +3,18 @@ one of them paused past its lease's expiry while the other takes the office over
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Iterator
 from pathlib import Path
 
+import psycopg
 import pytest
 
 from assistantx.core.errors import LeaseLostError
 from assistantx.core.events import TraceEvent
 from assistantx.store.journal import Journal
-from assistantx.store.leases import Lease, Leases
+from assistantx.store.leases import Lease, Leases, fence
+from assistantx.store.postgres_store import IDLE_IN_TRANSACTION_TIMEOUT_S, connect_postgres
 
 TTL_S = 10.0
 
@@ -134,3 +137,40 @@ def test_a_released_office_goes_to_the_next_holder_with_a_new_token(
         a_journal.append_event(_event(1))
     a_leases.release(a_lease)  # no longer A's: B keeps it
     assert [(x.holder, x.token) for x in b_leases.holders()] == [("replica-b", 2)]
+
+
+@pytest.mark.postgres
+def test_a_replica_paused_inside_a_write_does_not_hold_the_office_for_ever(
+    postgres_url: str, clock: Clock
+) -> None:
+    """A paused in the middle of a journal write: its transaction holds the lease row FOR
+    SHARE (the fence's check). The server ends that idle transaction, so B takes the office
+    over, and nothing of A's half-done write lands."""
+    path = Path("unused.sqlite3")
+    a_leases = Leases.open(path, database_url=postgres_url, clock=clock)
+    b_leases = Leases.open(path, database_url=postgres_url, clock=clock)
+    a_conn = connect_postgres(postgres_url)
+    try:
+        a_lease = a_leases.acquire("floor-3", "replica-a", TTL_S)
+        assert a_lease is not None
+        a_conn.execute("CREATE TABLE writes (n INTEGER)")
+        a_conn.execute("BEGIN")
+        fence(a_lease, postgres=True)(a_conn)  # what every write under the lease runs first
+        a_conn.execute("INSERT INTO writes VALUES (1)")
+        # ... and A stops here, its transaction open.
+        clock.now += TTL_S + 1
+        taken: list[Lease | None] = []
+        takeover = threading.Thread(
+            target=lambda: taken.append(b_leases.acquire("floor-3", "replica-b", TTL_S))
+        )
+        takeover.start()
+        takeover.join(timeout=IDLE_IN_TRANSACTION_TIMEOUT_S * 4)
+        assert not takeover.is_alive(), "B's take-over still waits on A's paused transaction"
+        assert taken[0] is not None and taken[0].token == a_lease.token + 1
+        with pytest.raises(psycopg.errors.IdleInTransactionSessionTimeout):  # A wakes: ended
+            a_conn.execute("COMMIT")
+        assert a_conn.execute("SELECT count(*) FROM writes").fetchone()[0] == 0
+    finally:
+        a_conn.close()
+        a_leases.close()
+        b_leases.close()

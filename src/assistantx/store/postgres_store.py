@@ -33,6 +33,13 @@ from assistantx.store.sqlite_store import Schema, SchemaError, SqliteStore
 logger = logging.getLogger(__name__)
 
 CONNECT_TIMEOUT_S = 10
+# A transaction left open by a process that stopped (SIGSTOP, a frozen VM, a debugger) keeps
+# its row locks: a paused replica's journal write holds the lease row FOR SHARE, and the
+# standby's take-over would wait on it for as long as the pause lasts. The server ends such a
+# session after this long idle inside a transaction; its uncommitted writes are dropped, which
+# is what fencing wants from a replica that stopped mid-write. The stores' transactions are
+# short runs of statements from one thread, idle between them for microseconds.
+IDLE_IN_TRANSACTION_TIMEOUT_S = 5
 
 
 class Row(tuple[Any, ...]):
@@ -115,7 +122,12 @@ def redact(url: str) -> str:
 
 def _connect_raw(url: str) -> psycopg.Connection[Row]:
     conninfo = make_conninfo(url, connect_timeout=CONNECT_TIMEOUT_S, application_name="assistantx")
-    return psycopg.connect(conninfo, autocommit=True, row_factory=_row_factory)
+    conn = psycopg.connect(conninfo, autocommit=True, row_factory=_row_factory)
+    conn.execute(
+        "SELECT set_config('idle_in_transaction_session_timeout', %s, false)",
+        (f"{IDLE_IN_TRANSACTION_TIMEOUT_S * 1000}",),
+    )
+    return conn
 
 
 def connect_postgres(url: str) -> PgConnection:
