@@ -127,6 +127,11 @@ def past_participle(verb: str) -> str:
     return guessed[0] if guessed else f"{verb.removesuffix('e')}ed"
 
 
+def verb_inflections(lemma: str) -> dict[str, tuple[str, ...]]:
+    """A verb's forms by Penn tag ("VBD", "VBG", "VBN", "VBZ"), as the dictionary has them."""
+    return dict(_verb_inflections(lemma))
+
+
 def _verb_inflections(lemma: str) -> dict[str, tuple[str, ...]]:
     """The dictionary's forms of a verb, or of its stem after a prefix ("restring")."""
     return getAllInflections(lemma, upos="VERB") or _prefixed_inflections(lemma)

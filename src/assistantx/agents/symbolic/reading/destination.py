@@ -15,6 +15,7 @@ from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.destination_detail import detail_after
+from assistantx.agents.symbolic.reading.named_place import named_place
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
@@ -76,6 +77,9 @@ class VerbPhrase:
     operation: str
     forms: frozenset[str]
     rest: tuple[str, ...]
+    # the words the service's name says before its means ("send by *interlibrary* courier"):
+    # said between the article and the means ("with the interlibrary courier"), still the means
+    modifiers: frozenset[str] = frozenset()
 
 
 @dataclass(frozen=True)
@@ -102,27 +106,49 @@ class Outside:
 
 def means_words(name: str) -> tuple[str, ...]:
     """The means a send-out service's name says it sends by ("send by courier": "courier";
-    "dispatch via fax": "fax"): the one word after its "by" or "via", which also asks for the
-    service as a verb in any form ("have it couriered", "needs couriering to Leeds") or as the
-    means said anywhere in the request ("send it to Leeds by courier")."""
+    "dispatch via fax": "fax"; "send by interlibrary courier": "courier", the head noun that
+    ends the name after its "by" or "via"), which also asks for the service as a verb in any
+    form ("have it couriered", "needs couriering to Leeds") or as the means said anywhere in
+    the request ("send it to Leeds by courier")."""
+    return tuple(words[-1:]) if (words := _after_means_word(name)) else ()
+
+
+def means_modifiers(name: str) -> frozenset[str]:
+    """The words a send-out service's name says between its "by" and its means ("send by
+    *interlibrary* courier"): a requester may say them before the means too."""
+    return frozenset(_after_means_word(name)[:-1])
+
+
+def _after_means_word(name: str) -> list[str]:
+    """The words of a service's name after its last "by" or "via", when that ends it in at
+    most a few words (a means, not a clause: "send by courier", "send by interlibrary
+    courier"); none otherwise."""
     words = language.fold(name).split()
-    return tuple(
-        words[k + 1] for k, w in enumerate(words[:-1]) if w in _MEANS_NAMED and k + 2 == len(words)
-    )
+    at = max((k for k, w in enumerate(words) if w in _MEANS_NAMED), default=None)
+    if at is None or not 1 <= len(words) - at - 1 <= _MEANS_NAME_WORDS:
+        return []
+    return words[at + 1 :]
+
+
+# The most words a service's name says for its means after "by" ("by interlibrary courier").
+_MEANS_NAME_WORDS = 3
 
 
 # The words of a service's name before the means it sends by ("send *by* courier").
 _MEANS_NAMED = frozenset({"by", "via"})
 
 
-def verb_phrases(operation: str, phrases: Iterable[str]) -> tuple[VerbPhrase, ...]:
-    """The verb phrases of one send-out operation ("fax"; "courier", "send out")."""
+def verb_phrases(
+    operation: str, phrases: Iterable[str], modifiers: frozenset[str] = frozenset()
+) -> tuple[VerbPhrase, ...]:
+    """The verb phrases of one send-out operation ("fax"; "courier", "send out");
+    ``modifiers``: the words its name says before its means (``means_modifiers``)."""
     out: list[VerbPhrase] = []
     for phrase in phrases:
         words = language.fold(phrase).split()
         if words:
             forms = frozenset(language.verb_forms(words[0])) | {words[0]}
-            out.append(VerbPhrase(operation, forms, tuple(words[1:])))
+            out.append(VerbPhrase(operation, forms, tuple(words[1:]), modifiers))
     return tuple(out)
 
 
@@ -141,7 +167,7 @@ def find_outside(
     words = [t.word for t in tokens]
     found = next(
         (
-            (k, k + 1 + len(p.rest), p.operation)
+            (k, k + 1 + len(p.rest), p.operation, p.modifiers)
             for k, word in enumerate(words)
             for p in phrases
             if word in p.forms
@@ -152,7 +178,7 @@ def find_outside(
     )
     if found is None:
         return None
-    verb_start, verb_end, operation = found
+    verb_start, verb_end, operation, modifiers = found
     to = None
     for k in range(verb_end, len(tokens)):
         if _ends(gaps[k]):
@@ -160,7 +186,7 @@ def find_outside(
         if words[k] == "to":
             to = k
             break
-    means = _means_before(words, verb_start)
+    means = _means_before(words, verb_start, modifiers)
     if to is None and means is None:
         to = _at_a_name(tokens, gaps, verb_end, names)  # "archive it at Ironbridge Store"
     if to is None and means is not None:
@@ -246,10 +272,15 @@ def _at_a_name(
     return None
 
 
-def _means_before(words: Sequence[str], verb_start: int) -> int | None:
+def _means_before(
+    words: Sequence[str], verb_start: int, modifiers: frozenset[str] = frozenset()
+) -> int | None:
     """The index of the word that names the service as the means ("by courier", "with the
-    courier"), or None."""
+    courier", "with the interlibrary courier" where ``modifiers``, the words of the service's
+    name before its means, hold "interlibrary"), or None."""
     k = verb_start - 1
+    while k >= 1 and words[k] in modifiers:
+        k -= 1
     if k >= 1 and words[k] in _MEANS_ARTICLES:
         k -= 1
     return k if k >= 0 and words[k] in _MEANS else None
@@ -279,6 +310,7 @@ def _address_tail(
         not any(any(c.isdigit() for c in t.text) for t in so_far)
         and not any(t.word == "at" for t in so_far[1:])
         and not _proper_name(so_far)
+        and not named_place(so_far)  # "Eastgate campus, Room 12"
         and not _role_named(tokens, gaps, start, end)
         and not _street_line(tokens[end : end + 2])
         and not _numbers_only(tokens, gaps, end, stop)

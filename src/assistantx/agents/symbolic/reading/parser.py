@@ -157,6 +157,7 @@ from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
@@ -240,6 +241,10 @@ class InstructionParser:
         work = {w for k in task_kinds.person_kinds() for w in self.lex.cues.get(k, ())}
         self._due_service = DueService(office, {*self.lex.operation_nouns, *work})
         self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
+        # "get it notarised" where the seal is a notary stamp: the seal's work, said as such
+        self._lent_verbs = LentVerbs.from_office(
+            office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
+        )
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -264,6 +269,7 @@ class InstructionParser:
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = without_pictographs(text)  # "... and no marker 😩": the face is tone only
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's budget plan? just send me the file": the plan is Wang's file

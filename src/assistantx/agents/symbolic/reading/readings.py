@@ -19,6 +19,7 @@ from assistantx.agents.symbolic.reading.codes import code_of_a_thing
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
     find_outside,
+    means_modifiers,
     means_words,
     verb_phrases,
 )
@@ -123,7 +124,9 @@ class MentionReader:
             vp
             for op in office.operations
             if op.sends_out
-            for vp in verb_phrases(op.id, (*op.verbs, op.name, *means_words(op.name)))
+            for vp in verb_phrases(
+                op.id, (*op.verbs, op.name, *means_words(op.name)), means_modifiers(op.name)
+            )
         )
         # the words that name how each one's place is reached ("the fax number": number)
         self._details = {

@@ -10,9 +10,10 @@ names the service by its own verb's past participle, with or without the particl
 "be sent" with "off", "out" or "away" ("could my vials go out on dry ice to Kessler Labs") say
 the same of the item. A plain "send my papers to Ironbridge Records Store" sends out too when
 what follows the "to" is a proper name of a place (capitalised words, one of them a word of a
-place or firm, or a word nobody of the office is called) that names nobody and nothing of the
-office. What follows the "to" is then a destination outside, never a colleague to look up; a
-plain "send my scripts to Bram" stays a hand-over.
+place or firm, or a word nobody of the office is called; or capitalised words and the head
+noun of a kind of place: "Westgate branch") that names nobody and nothing of the office.
+What follows the "to" is then a destination outside, never a colleague to look up; a plain
+"send my scripts to Bram" stays a hand-over.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from collections.abc import Collection, Mapping, Sequence
 
 from assistantx.agents.symbolic.reading.destination import Outside, VerbPhrase, find_outside
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.named_place import named_place
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 
@@ -106,7 +108,9 @@ def _outside_name(
     run = k
     while run < stop and tokens[run].text[:1].isupper():
         run += 1
-    if run - k < 2:
+    # "Westgate branch": one capitalised word is a place's name when the head noun of a
+    # place follows it (reading/named_place.py)
+    if run - k < 2 and not (run > k and named_place(tokens[k - (k > start) : run + 1])):
         return False
     whole = [m for m in mentions if m.kind in ("person", "place", "facility", "group")]
     if any(m.start >= k and m.end >= run and m.start < run for m in whole):

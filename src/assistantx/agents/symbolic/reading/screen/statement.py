@@ -18,6 +18,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_t
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.title_cased_part import title_cased_part
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -29,6 +30,8 @@ from assistantx.core.task_schema import Evidence
 
 
 def statement(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if title_cased_part(msg, piece):
+        return None  # "..., School of Pharmacy, King's Building": a name said on, no clause
     if conditional_addition(msg, piece):
         return None  # "bring me a hard hat. and a tea if the kettle's on": the tea asked too
     if obligation_asked(msg, piece):
