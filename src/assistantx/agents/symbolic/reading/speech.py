@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_v
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
+from assistantx.agents.symbolic.reading.service_command import service_command
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
@@ -769,6 +770,8 @@ class SpeechActs:
             return True  # "no more water for me thanks": the speaker wants none
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
+        if service_command(w, self.lex.operation_words):
+            return False  # "fax the booking confirmation to ...": a service asked for
         if set(words[1:]) & _PLEASE:
             # "a copy of my file printed for Zhang please": asked, not told ("pls is the
             # stapler here": a "please" that opens a question is read with the question)
