@@ -50,6 +50,7 @@ from collections import OrderedDict
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
+from assistantx.agents.symbolic.reading.announced_borrowing import announced_borrowings
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
     anothers_it,
@@ -272,6 +273,8 @@ class InstructionParser:
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "I'm borrowing Wang's for the afternoon": the speaker's taking, asked of Wang
+        text = announced_borrowings(text, self.screen.terms.is_person_word)
         # "Wang's budget plan? just send me the file": the plan is Wang's file
         text = named_later(self.lex, text)
         # "Wang's setting-out file": the description is no owner or part; Wang's file

@@ -42,6 +42,8 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_v
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
+from assistantx.agents.symbolic.reading.service_command import service_command
+from assistantx.agents.symbolic.reading.service_noun_subject import service_noun_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
@@ -767,8 +769,12 @@ class SpeechActs:
         w = self._untitled(content(words))
         if declines_more(w, self.lex.items):
             return True  # "no more water for me thanks": the speaker wants none
+        if self._service_subject(w):
+            return True  # "courier leaves at 3", "print is too small": told of the thing
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
+        if service_command(w, self.lex.operation_words):
+            return False  # "fax the booking confirmation to ...": a service asked for
         if set(words[1:]) & _PLEASE:
             # "a copy of my file printed for Zhang please": asked, not told ("pls is the
             # stapler here": a "please" that opens a question is read with the question)
@@ -1144,7 +1150,13 @@ class SpeechActs:
             k += 1
         if k < len(w) and w[k] in _PUTTING and _left_at_someones_place(w[k + 1 :]):
             return True  # "leave it / put mine on her desk": where it is delivered, a command
+        if self._service_subject(w[k:]):
+            return False  # "print is too small on this form": the word is the subject
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
+
+    def _service_subject(self, w: list[str]) -> bool:
+        """ "courier leaves at 3", "post goes at 4": a service's word as its clause's subject."""
+        return service_noun_subject(w, self.lex.operation_words, self.lex.items)
 
     def _for_me(self, w: list[str]) -> bool:
         """ "... I could borrow", "... lend me one", "... for me": the asker wants it."""

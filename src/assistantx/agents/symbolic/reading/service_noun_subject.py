@@ -1,0 +1,67 @@
+"""A service's word said as the subject of a clause: "courier leaves at 3", "post goes at 4",
+"print is too small on this form", "water runs out fast". Many words of services are nouns
+too (the courier, the post, the print, the water), and an imperative is never followed by a
+verb that agrees with its word as a subject: a form of "be" or "have" ("is", "was", "has")
+right after it, or a verb in -s followed by when or how it happens ("leaves at 3", "comes
+around noon", "runs out", "goes early"), makes the word that clause's subject, and the
+clause a statement about it (context beside a request, never the service asked for). A verb
+in -s that is also a plural noun is read as the verb only with such a tail, and never when
+it names a thing of the office ("copy files at 3": the files are copied)."""
+
+from __future__ import annotations
+
+from collections.abc import Collection
+
+from assistantx.agents.symbolic.reading.future_need import clock_time
+from assistantx.agents.symbolic.reading.service_command import english_service_verbs
+from assistantx.core import language
+
+# Forms of "be" and "have" that agree with a singular subject: after a bare service word
+# they can only be its verb ("print is too small", "post has gone").
+_SINGULAR_BE_HAVE = frozenset(
+    {"is", "isnt", "was", "wasnt", "has", "hasnt", "seems", "looks", "gets", "got"}
+)
+# What may open the subject before the service's word ("the post goes at 4", "our water
+# has run out"); never a word that could be the object of the service's verb after it.
+_SUBJECT_OPENERS = frozenset({"the", "our", "this", "that", "your", "todays", "tomorrows"})
+
+
+def service_noun_subject(
+    w: list[str], office_verbs: Collection[str] = (), items: Collection[str] = ()
+) -> bool:
+    """Whether the content words ``w`` open with a service's word (English's, the standard
+    services' or ``office_verbs``) as the subject of the verb after it; ``items``: the
+    office's names of things, which after a service's word are its object."""
+    k = 1 if w[:1] and w[0] in _SUBJECT_OPENERS else 0
+    if k + 1 >= len(w):
+        return False
+    word, verb, tail = w[k], w[k + 1], w[k + 2 :]
+    services = english_service_verbs() | frozenset(office_verbs)
+    if word not in services and not _folded_is(word, services, verb):
+        return False
+    if word not in services:
+        return True  # "post's late today": "'s" folded into the word, a state after it
+    if not language.is_noun(word):
+        return False  # "type", "pay" with no noun reading: only a verb
+    if verb in _SINGULAR_BE_HAVE:
+        return True  # "print is too small on this form"
+    if not verb.endswith("s") or not language.is_finite_verb(verb) or verb in items:
+        return False  # "print labels", "copy files": a plural object, or a thing we keep
+    return clock_time(tail[:2]) or _how_or_when(tail[:1])
+
+
+def _folded_is(word: str, services: Collection[str], after: str) -> bool:
+    """ "post's late", "courier's gone": a service's word whose "'s" (is, has) was folded
+    into it, then a participle, or a word of state or time."""
+    if not word.endswith("s") or word[:-1] not in services:
+        return False
+    return language.is_past_participle(after) or _how_or_when([after])
+
+
+def _how_or_when(words: list[str]) -> bool:
+    """ "again", "early", "out", "today": a word that can say how or when (an adverb) and
+    cannot open an object (no determiner, pronoun or office thing starts with one)."""
+    if not words:
+        return False
+    kinds = set(language.lemmas(words[0]))
+    return "ADV" in kinds and not kinds & {"DET", "PRON"}
