@@ -37,7 +37,11 @@ from assistantx.agents.symbolic.reading.clipped_names import (
 )
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
-from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.compound_heads import (
+    modifies_a_noun,
+    modifies_one,
+    names_a_paper,
+)
 from assistantx.agents.symbolic.reading.container_names import container_phrase, doubted_container
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
@@ -861,7 +865,12 @@ class Lexicon:
         guessed = self.own_papers.guessed(tokens, mentions, found)
         # "print the floor 2 plans for me": a noun after a label names the requester's papers
         # of that number, no guess to restate; the work asked says which item they are
-        labelled = {n: t for n, t in guessed.items() if after_label(tokens, mentions[n].start)}
+        # "copy the book list": a paper named by its topic is the requester's, as labelled
+        labelled = {
+            n: t
+            for n, t in guessed.items()
+            if after_label(tokens, mentions[n].start) or self.own_papers.topic_paper(mentions, n)
+        }
         found = {**found, **labelled}
         return [
             Mention("item", m.start, m.end, (found[n],), m.possessive, m.text)
@@ -876,7 +885,8 @@ class Lexicon:
         """ "my wine list file": an item's name before a noun the office does not know is
         the first part of a compound (``compound_heads``), a plain word, not the item. So is
         a facility's name inside an item's noun phrase that it does no work on ("my
-        *autoclave* log spreadsheet": a file, no sterilising; ``_facility_modifies``)."""
+        *autoclave* log spreadsheet": a file, no sterilising; ``_facility_modifies``), or
+        before a paper's noun that heads the phrase ("the van schedule": ``names_a_paper``)."""
         item_starts = {m.start for m in mentions if m.kind == "item"}
         return [
             Mention(
@@ -892,9 +902,18 @@ class Lexicon:
                 and (
                     modifies_a_noun(tokens, m.end, self._head_known(tokens, m.start))
                     or labels_an_item(tokens, m.end, item_starts)
+                    or modifies_one(tokens, m.start, m.end)  # "the coffee one"
                 )
             )
-            or (m.kind == "facility" and self._facility_modifies(tokens, mentions, n))
+            or (
+                m.kind == "facility"
+                and (
+                    self._facility_modifies(tokens, mentions, n)
+                    # "the laminator budget": a paper named by its topic, no laminating
+                    or names_a_paper(tokens, m.end, self._known)
+                    or modifies_one(tokens, m.start, m.end)  # "the printer one"
+                )
+            )
             else m
             for n, m in enumerate(mentions)
         ]
