@@ -60,7 +60,8 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
     read_as_verbs,
 )
 from assistantx.agents.symbolic.reading.own_made import read_own_made
-from assistantx.agents.symbolic.reading.own_papers import OwnPapers
+from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
+from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
@@ -794,6 +795,7 @@ class Lexicon:
             mentions.append(mention)
             k += used
         mentions = self._unowned_heads(tokens, self._measured(tokens, mentions))
+        mentions = self._paper_parts(tokens, mentions)  # "my CRF pages": the CRF
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._own_papers(tokens, mentions)
@@ -815,6 +817,36 @@ class Lexicon:
                 merged = Mention("item", m.start, thing.end, thing.ids, thing.possessive, text)
                 mentions = _replaced(mentions, merged)
         return mentions
+
+    @functools.cached_property
+    def _papers(self) -> frozenset[str]:
+        """The office's papers and files, whose parts' nouns name them (``paper_parts``)."""
+        return frozenset(
+            t.id for t in self.office.item_types if t.signable or t.kind == "electronic"
+        ) | frozenset(personal_papers(self.office))
+
+    def _paper_parts(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "my CRF pages", "Rose's contract sheets": a paper's name with a noun of its parts
+        after it is the paper, the part noun no thing of its own (``paper_parts``)."""
+        for m in list(mentions):
+            if m.kind != "item" or len(m.ids) != 1:
+                continue
+            end = part_of_paper(tokens, m.start, m.end, m.ids[0], self._papers)
+            if end is not None:
+                text = " ".join(t.text for t in tokens[m.start : end])
+                found = Mention("item", m.start, end, m.ids, tokens[end - 1].possessive, text)
+                mentions = _replaced(mentions, found)
+        return mentions
+
+    def is_paper_part(self, tokens: Sequence[Token], m: Mention) -> bool:
+        """Whether mention ``m`` is a paper's name with a noun of its parts as its last word,
+        as ``_paper_parts`` read it ("CRF pages"), not a name of the office that ends so."""
+        return (
+            len(m.ids) == 1
+            and part_of_paper(tokens, m.start, m.end - 1, m.ids[0], self._papers) == m.end
+            and " ".join(t.word for t in tokens[m.start : m.end]) not in self.items
+            and " ".join(t.word for t in tokens[m.start : m.end - 1]) in self.items
+        )
 
     def _unowned_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "my notes", "Tomas's gel": a head noun read as a type (``head_names``) said as
