@@ -9,14 +9,18 @@ On the default office and harbour; no coffee is made and nothing laminated for a
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
+from typing import Any
 
 import pytest
 from symbolic_run import run_instruction
 
+from assistantx.core.office import Office, parse_office
 from assistantx.core.task_schema import Task
-from helpers.dataset_offices import default_office, harbour_office
+from helpers.dataset_offices import DEFAULT_FILE, default_office, harbour_office
 from helpers.reading import ReadFrame, frame_reader
+from helpers.yaml_files import raw_yaml
 
 _default = frame_reader(default_office, "lin")
 _harbour = frame_reader(harbour_office, "may")
@@ -144,3 +148,49 @@ async def test_no_coffee_is_made_for_the_coffee_rota_spreadsheet() -> None:
     assert run.stm.trace.outcome == "done", run.stm.trace.summary
     assert "forward_file" in run.actions, run.actions
     assert not {"send_qr", "move"} & set(run.actions), run.actions
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can I get Rose's deck? the kettle tea rota one",
+        "can I get Rose's deck? the umbrella stand one",
+    ],
+)
+def test_every_noun_before_one_describes_it(text: str) -> None:
+    """Several nouns between "the" and "one" (a facility's, a product's, one the office lacks)
+    all say which of Rose's files: nothing boiled, no tea, no umbrella."""
+    assert _rows(_harbour(text).tasks) == [("send_file", "file", "rose", "may")]
+
+
+@functools.cache
+def _lab() -> Office:
+    """The default office as a lab's would be: samples, the paper also called a "log", and
+    the cup also called a "coffee cup"."""
+    raw: dict[str, Any] = raw_yaml(DEFAULT_FILE)
+    for t in raw["item_types"]:
+        if t["id"] == "document":
+            t["synonyms"] = [*t.get("synonyms", []), "log"]
+        if t["id"] == "cup":
+            t["synonyms"] = [*t.get("synonyms", []), "coffee cup"]
+    raw["item_types"].append({"id": "sample", "name": "sample", "synonyms": ["specimen"]})
+    return parse_office(raw, "default with samples")
+
+
+_lab_frame = frame_reader(_lab, "lin")
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # "one" after Lee's file: the sample log describes it (main asked "whose document?")
+        ("can I have Lee's file? the sample log one", [("send_file", "file", "lee", "lin")]),
+        ("can I have Wang's sample log", [("transfer", "document", "wang", "lin")]),
+        ("copy the sample log for Wang", [("copy", "document", "lin", "wang")]),
+        # must not change: the office's longer name wins; the sample said alone is one
+        ("bring me a coffee cup", [("transfer", "cup", None, "lin")]),
+        ("bring me Wang's sample", [("transfer", "sample", "wang", "lin")]),
+    ],
+)
+def test_a_sample_log_is_a_paper(text: str, expected: list[Row]) -> None:
+    assert _rows(_lab_frame(text).tasks) == expected

@@ -69,21 +69,46 @@ def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bo
 
 # The determiners that open "the coffee one": a definite pick among things named before.
 _PICKING = frozenset({"the", "this", "that"})
+_ONE_WORDS = 3  # the most other nouns between "the" and "one" ("the coffee rota one")
 
 
 def modifies_one(tokens: Sequence[Token], start: int, end: int) -> bool:
     """Whether the name from ``start`` to ``end`` describes the pro-form "one" after it: "Lee's
-    spreadsheet? *the coffee one*", "a cup, *the coffee one*". "one" stands for a thing named
-    before, so it is the phrase's head and the name before it only says which of that thing:
-    no second thing. "one more", "one sugar" (after a pause) and "the coffee, one" keep it."""
-    if start < 1 or end >= len(tokens) or tokens[end - 1].possessive:
+    spreadsheet? *the coffee one*", "a cup, *the coffee one*", "Lee's file? *the sample log
+    one*". "one" stands for a thing named before, so it is the phrase's head and every noun
+    between "the" and it only says which of that thing: no second thing. "one more", "one
+    sugar" (after a pause) and "the coffee, one" keep their reading."""
+    if start < 1 or tokens[end - 1].possessive:
         return False
-    if tokens[start - 1].word not in _PICKING or tokens[start].opens:
+    first = start
+    while first > 0 and start - first < _ONE_WORDS and _inside(tokens[first - 1]):
+        first -= 1  # "the *sample* log one": other nouns before the name
+    if first < 1 or tokens[first - 1].word not in _PICKING or tokens[first].opens:
         return False
-    one = tokens[end]
-    if one.word != "one" or one.opens or one.after_pause:
+    last = end
+    while last < len(tokens) and last - end < _ONE_WORDS and _inside(tokens[last]):
+        last += 1  # "the sample *log* one"
+    if last >= len(tokens):
         return False
-    return end + 1 >= len(tokens) or tokens[end + 1].word != "more"
+    one = tokens[last]
+    if one.word != "one" or one.opens or one.after_pause or tokens[last - 1].possessive:
+        return False
+    return last + 1 >= len(tokens) or tokens[last + 1].word != "more"
+
+
+def _inside(t: Token) -> bool:
+    """A word that may stand between "the" and "one" in such a phrase: a plain word in lower
+    case, no function word, no pause before it."""
+    return (
+        t.text.isalpha()
+        and t.text[:1].islower()
+        and not t.opens
+        and not t.after_pause
+        and not t.possessive
+        and t.word != "one"
+        and t.word not in _COMMON
+        and t.word not in _PRONOUNS
+    )
 
 
 def names_a_paper(tokens: Sequence[Token], end: int, known: Callable[[str], bool]) -> bool:
