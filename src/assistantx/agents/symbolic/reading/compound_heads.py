@@ -27,6 +27,13 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
 _COMMON = english.words("common")
+# The English lists of what papers and files are called ("rota", "log"): nouns wherever they
+# are said, though the dictionary lacks some ("rota") or knows only the verb ("log"); after
+# an item's name ("the coffee *rota*", "the sample *log*") each is the compound's head.
+# A format word ("my invoice *pdf*") is no head: it says the form of the thing before it.
+_DOCUMENT_NOUNS = (
+    english.words("paper_nouns") | english.words("paper_heads") | english.words("file_nouns")
+) - english.words("electronic_formats")
 # A unit after an item's name measures the item ("a scissors pair"): not a head of its own.
 _UNITS = english.words("portion_words") | english.words("unit_nouns")
 # Words that open a clause of their own ("a radio *cause* ..."), though also nouns.
@@ -60,6 +67,63 @@ def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bo
     return compound_noun(t, known, verb_too=labelled > end)
 
 
+# The determiners that open "the coffee one": a definite pick among things named before.
+_PICKING = frozenset({"the", "this", "that"})
+_ONE_WORDS = 3  # the most other nouns between "the" and "one" ("the coffee rota one")
+
+
+def modifies_one(tokens: Sequence[Token], start: int, end: int) -> bool:
+    """Whether the name from ``start`` to ``end`` describes the pro-form "one" after it: "Lee's
+    spreadsheet? *the coffee one*", "a cup, *the coffee one*", "Lee's file? *the sample log
+    one*". "one" stands for a thing named before, so it is the phrase's head and every noun
+    between "the" and it only says which of that thing: no second thing. "one more", "one
+    sugar" (after a pause) and "the coffee, one" keep their reading."""
+    if start < 1 or tokens[end - 1].possessive:
+        return False
+    first = start
+    while first > 0 and start - first < _ONE_WORDS and _inside(tokens[first - 1]):
+        first -= 1  # "the *sample* log one": other nouns before the name
+    if first < 1 or tokens[first - 1].word not in _PICKING or tokens[first].opens:
+        return False
+    last = end
+    while last < len(tokens) and last - end < _ONE_WORDS and _inside(tokens[last]):
+        last += 1  # "the sample *log* one"
+    if last >= len(tokens):
+        return False
+    one = tokens[last]
+    if one.word != "one" or one.opens or one.after_pause or tokens[last - 1].possessive:
+        return False
+    return last + 1 >= len(tokens) or tokens[last + 1].word != "more"
+
+
+def _inside(t: Token) -> bool:
+    """A word that may stand between "the" and "one" in such a phrase: a plain word in lower
+    case, no function word, no pause before it."""
+    return (
+        t.text.isalpha()
+        and t.text[:1].islower()
+        and not t.opens
+        and not t.after_pause
+        and not t.possessive
+        and t.word != "one"
+        and t.word not in _COMMON
+        and t.word not in _PRONOUNS
+    )
+
+
+def names_a_paper(tokens: Sequence[Token], end: int, known: Callable[[str], bool]) -> bool:
+    """Whether the word at ``end`` (right after a facility's or an item's name) is a paper's or
+    a file's noun heading the phrase: "the *van* schedule", "the *laminator* budget one" say
+    which schedule or budget by its topic; the facility names no work and no place there. Only
+    the English nouns of papers and files count: "the fridge *drawer*" stays the fridge."""
+    if end >= len(tokens) or tokens[end - 1].possessive:
+        return False
+    t = tokens[end]
+    return (
+        not t.opens and not t.after_pause and t.word in _DOCUMENT_NOUNS and compound_noun(t, known)
+    )
+
+
 def _says_how_it_is(tokens: Sequence[Token], end: int) -> bool:
     """ "a stopwatch *going* spare", "my drill *sitting* idle": a verb's -ing form followed
     by a word that describes (or by nothing) says what the item is doing, no compound's head;
@@ -80,6 +144,8 @@ def compound_noun(t: Token, known: Callable[[str], bool], *, verb_too: bool = Fa
         return False  # "won't": a contraction, no noun; "Tobin": a name
     if word in _COMMON or word in _UNITS or word in _OPENERS or word in _PRONOUNS or known(word):
         return False
+    if word in _DOCUMENT_NOUNS and not language.is_finite_verb(word):
+        return True  # "the coffee rota", "the sample log": a paper or file by its topic
     parts = language.lemmas(word)
     describes = "ADV" in parts or "ADJ" in parts  # "real quick", "home", "back"
     return "NOUN" in parts and not describes and (verb_too or not language.is_finite_verb(word))

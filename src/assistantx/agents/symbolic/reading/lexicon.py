@@ -37,7 +37,11 @@ from assistantx.agents.symbolic.reading.clipped_names import (
 )
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
-from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
+from assistantx.agents.symbolic.reading.compound_heads import (
+    modifies_a_noun,
+    modifies_one,
+    names_a_paper,
+)
 from assistantx.agents.symbolic.reading.container_names import container_phrase, doubted_container
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
@@ -56,7 +60,8 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
     read_as_verbs,
 )
 from assistantx.agents.symbolic.reading.own_made import read_own_made
-from assistantx.agents.symbolic.reading.own_papers import OwnPapers
+from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
+from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
@@ -790,6 +795,7 @@ class Lexicon:
             mentions.append(mention)
             k += used
         mentions = self._unowned_heads(tokens, self._measured(tokens, mentions))
+        mentions = self._paper_parts(tokens, mentions)  # "my CRF pages": the CRF
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._own_papers(tokens, mentions)
@@ -811,6 +817,36 @@ class Lexicon:
                 merged = Mention("item", m.start, thing.end, thing.ids, thing.possessive, text)
                 mentions = _replaced(mentions, merged)
         return mentions
+
+    @functools.cached_property
+    def _papers(self) -> frozenset[str]:
+        """The office's papers and files, whose parts' nouns name them (``paper_parts``)."""
+        return frozenset(
+            t.id for t in self.office.item_types if t.signable or t.kind == "electronic"
+        ) | frozenset(personal_papers(self.office))
+
+    def _paper_parts(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "my CRF pages", "Rose's contract sheets": a paper's name with a noun of its parts
+        after it is the paper, the part noun no thing of its own (``paper_parts``)."""
+        for m in list(mentions):
+            if m.kind != "item" or len(m.ids) != 1:
+                continue
+            end = part_of_paper(tokens, m.start, m.end, m.ids[0], self._papers)
+            if end is not None:
+                text = " ".join(t.text for t in tokens[m.start : end])
+                found = Mention("item", m.start, end, m.ids, tokens[end - 1].possessive, text)
+                mentions = _replaced(mentions, found)
+        return mentions
+
+    def is_paper_part(self, tokens: Sequence[Token], m: Mention) -> bool:
+        """Whether mention ``m`` is a paper's name with a noun of its parts as its last word,
+        as ``_paper_parts`` read it ("CRF pages"), not a name of the office that ends so."""
+        return (
+            len(m.ids) == 1
+            and part_of_paper(tokens, m.start, m.end - 1, m.ids[0], self._papers) == m.end
+            and " ".join(t.word for t in tokens[m.start : m.end]) not in self.items
+            and " ".join(t.word for t in tokens[m.start : m.end - 1]) in self.items
+        )
 
     def _unowned_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "my notes", "Tomas's gel": a head noun read as a type (``head_names``) said as
@@ -861,7 +897,12 @@ class Lexicon:
         guessed = self.own_papers.guessed(tokens, mentions, found)
         # "print the floor 2 plans for me": a noun after a label names the requester's papers
         # of that number, no guess to restate; the work asked says which item they are
-        labelled = {n: t for n, t in guessed.items() if after_label(tokens, mentions[n].start)}
+        # "copy the book list": a paper named by its topic is the requester's, as labelled
+        labelled = {
+            n: t
+            for n, t in guessed.items()
+            if after_label(tokens, mentions[n].start) or self.own_papers.topic_paper(mentions, n)
+        }
         found = {**found, **labelled}
         return [
             Mention("item", m.start, m.end, (found[n],), m.possessive, m.text)
@@ -876,7 +917,8 @@ class Lexicon:
         """ "my wine list file": an item's name before a noun the office does not know is
         the first part of a compound (``compound_heads``), a plain word, not the item. So is
         a facility's name inside an item's noun phrase that it does no work on ("my
-        *autoclave* log spreadsheet": a file, no sterilising; ``_facility_modifies``)."""
+        *autoclave* log spreadsheet": a file, no sterilising; ``_facility_modifies``), or
+        before a paper's noun that heads the phrase ("the van schedule": ``names_a_paper``)."""
         item_starts = {m.start for m in mentions if m.kind == "item"}
         return [
             Mention(
@@ -892,9 +934,18 @@ class Lexicon:
                 and (
                     modifies_a_noun(tokens, m.end, self._head_known(tokens, m.start))
                     or labels_an_item(tokens, m.end, item_starts)
+                    or modifies_one(tokens, m.start, m.end)  # "the coffee one"
                 )
             )
-            or (m.kind == "facility" and self._facility_modifies(tokens, mentions, n))
+            or (
+                m.kind == "facility"
+                and (
+                    self._facility_modifies(tokens, mentions, n)
+                    # "the laminator budget": a paper named by its topic, no laminating
+                    or names_a_paper(tokens, m.end, self._known)
+                    or modifies_one(tokens, m.start, m.end)  # "the printer one"
+                )
+            )
             else m
             for n, m in enumerate(mentions)
         ]

@@ -32,6 +32,8 @@ PAPER_NOUNS = english.words("paper_nouns")
 _COMMON = english.words("common")
 _SENDING = english.words("send_words")
 FILE_NOUNS = english.words("file_nouns")
+# the everyday nouns of papers and files, a phrase's head after a word that says its topic
+DOCUMENT_NOUNS = PAPER_NOUNS | english.words("paper_heads") | FILE_NOUNS
 _FILE_VERBS = english.words("file_verbs")
 _DATA_NOUNS = english.words("data_nouns")
 _ASKING = english.words("asking_words")
@@ -109,6 +111,8 @@ class OwnPapers:
     file_type: str | None
     # each form of an operation's verbs → the item types of the operations it names
     worked: tuple[tuple[str, frozenset[str]], ...] = ()
+    # the words of the office's names of things and facilities: what a paper may be about
+    topics: frozenset[str] = frozenset()
 
     @classmethod
     def from_office(cls, office: Office) -> OwnPapers:
@@ -117,6 +121,7 @@ class OwnPapers:
             _item_name_words(office),
             office.file_type(),
             _worked_on(office),
+            _item_name_words(office) | _facility_name_words(office),
         )
 
     def guessed(
@@ -164,13 +169,33 @@ class OwnPapers:
                 continue
             if tokens[mentions[head].start].corrected or not _may_be_noun(word):
                 continue
-            if article and not _for_the_speaker(tokens, start, end):
+            topic = article and self.topic_paper(mentions, head)
+            if article and not (_for_the_speaker(tokens, start, end) or topic):
                 continue  # "print the fire drill plan" for nobody said: whose is not known
             verb = _verb_before(tokens, start)
             types = {t for form, ts in self.worked if form == verb for t in ts}
-            if len(types) == 1:
+            if len(types) == 1 and (not topic or self._paper_or_file(next(iter(types)))):
                 out[head] = next(iter(types))
         return out
+
+    def topic_paper(self, mentions: Sequence[Mention], head: int) -> bool:
+        """ "copy the *book* list", "print my *fridge* rota": a word the office names a thing
+        or a facility by, right before a paper's or a file's everyday noun (``compound_heads``
+        read it a plain word), says what that paper is about; the phrase is a paper, and the
+        work asked says which of the office's (its paper, its file). "the fire drill plan" (no
+        word of the office) and "the tea rota" laminated (laminating takes no paper) stay
+        unknown."""
+        if head < 1 or mentions[head].ids[0] not in DOCUMENT_NOUNS:
+            return False
+        before = mentions[head - 1]
+        return (
+            before.kind == "word"
+            and before.end == mentions[head].start
+            and before.ids[0] in self.topics
+        )
+
+    def _paper_or_file(self, type_id: str) -> bool:
+        return type_id in self.papers or type_id == self.file_type
 
     def found(
         self, tokens: Sequence[Token], mentions: Sequence[Mention], known: Callable[[str], bool]
@@ -302,6 +327,13 @@ def _item_name_words(office: Office) -> frozenset[str]:
     office's own word, read (or asked about) by the stages that know that name."""
     return frozenset(
         w for t in office.item_types for n in (t.name, *t.synonyms) for w in normalize(n).split()
+    )
+
+
+def _facility_name_words(office: Office) -> frozenset[str]:
+    """The words of the office's facility names ("fridge", "laminator"): a paper's topic."""
+    return frozenset(
+        w for f in office.facilities for n in (f.name, *f.synonyms) for w in normalize(n).split()
     )
 
 

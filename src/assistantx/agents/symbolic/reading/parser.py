@@ -119,6 +119,7 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
+from assistantx.agents.symbolic.reading.paper_parts_cut import without_paper_parts
 from assistantx.agents.symbolic.reading.parts import (
     asked_part,
     items_named,
@@ -279,6 +280,8 @@ class InstructionParser:
         text = named_later(self.lex, text)
         # "Wang's setting-out file": the description is no owner or part; Wang's file
         text = without_hyphened_description(self.lex, text)
+        # "My CRF pages need the stamp": the pages are the CRF
+        text = without_paper_parts(self.lex, text)
         # "Wang's pdf of the manifest": what a colleague's file is about is no second thing
         text = without_file_subject(self.lex, self.office, text)
         # "could I have Wang's report? just email it to me": a copy the office makes

@@ -4,8 +4,10 @@ whose name ends in it: "take my lamp to Rose" where the speaker owns an "inspect
 compound to its head when whose it is already says which thing is meant ("my lamp" of the
 one lamp I have), as it does after the thing was named (``head_noun_back``).
 
-The head is read so only where it names nothing of the office on its own and comes right
-after "my"/"our" (the speaker) or a colleague's possessive; it is written as the name of the
+The head is read so only where it names nothing of the office on its own, begins no longer
+name of the office said there ("Rose's *card reader*", the office's card machine, is no
+"registration card"), and comes right after "my"/"our" (the speaker) or a colleague's
+possessive; it is written as the name of the
 one type of that person's things that ends in it, and the later stages read it as if said in
 full. Where two of the owner's types end in it ("my lamp" with an inspection lamp and a desk
 lamp), which is asked (``several_owned_heads``); where none does, it keeps its reading (a
@@ -30,6 +32,7 @@ _OWNED = re.compile(
     r"\b(?P<owner>my|our|[^\W\d_]+['’]s?)\s+(?P<head>[^\W\d_]+)\b(?!['’])", re.IGNORECASE
 )
 _SPEAKER = frozenset({"my", "our"})
+_LONGEST = 4  # words of the longest name looked for at a head ("card reader", ...)
 # how the question opens (``InstructionParser.parse_with_answers`` reads the answer to it)
 ASKED = "Which item do you mean by "
 
@@ -40,6 +43,19 @@ def _heads(terms: Terms, type_id: str) -> frozenset[str]:
     t = terms.office.item_type(type_id)
     heads = {n.lower().split()[-1] for n in (t.name, *t.synonyms) if len(n.split()) > 1}
     return frozenset(heads | {language.plural(h) for h in heads})
+
+
+def _opens_a_name(terms: Terms, text: str, at: int) -> bool:
+    """Whether a name of the office of several words starts at character ``at``: "card" of
+    "Rose's *card reader*" where the office's card machine is also called so. The longest
+    name said wins over a shorter one's head ("registration *card*"), as the lexicon reads it."""
+    said = language.words(text[at:])[:_LONGEST]
+    lex = terms.lex
+    return any(
+        " ".join(said[:k]) in table
+        for k in range(2, len(said) + 1)
+        for table in (lex.items, lex.facilities, lex.places)
+    )
 
 
 def _owner(terms: Terms, said: str, requester: str) -> str | None:
@@ -61,6 +77,8 @@ def _owned_heads(
         head = match.group("head").lower()
         if names_something(terms, head):
             continue  # "my ruler", "Mark's document": the office's own word, read as it is
+        if _opens_a_name(terms, text, match.start("head")):
+            continue  # "Rose's card reader": the longer name said in full wins
         owner = _owner(terms, match.group("owner"), requester)
         if owner is None:
             continue
