@@ -34,6 +34,21 @@ def aside_length(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -
     return 0
 
 
+def without_asides(words: Sequence[str]) -> list[str]:
+    """``words`` without the aside phrases in them: "and a coffee for me while you are at it"
+    is no statement for the "you are" of its aside, which tells nothing of the world."""
+    out: list[str] = []
+    n = 0
+    while n < len(words):
+        phrase = next((p for p in _ASIDES if tuple(words[n : n + len(p)]) == p), None)
+        if phrase is None:
+            out.append(words[n])
+            n += 1
+        else:
+            n += len(phrase)
+    return out
+
+
 def _alternatives(key: str) -> str:
     phrases = sorted(english.entries(key), key=len, reverse=True)
     return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)

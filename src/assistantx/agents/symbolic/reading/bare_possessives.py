@@ -1,13 +1,17 @@
 """A possessive written without its apostrophe: "could u bring idas ruler", "borrow Ottos
 ruler" (Ida's, Otto's). A word that is a colleague's one-word name plus "s", itself no name
 and no English word, right before a word of one of the office's items in the same clause,
-is that name's possessive. Read on the tokens before the typo correction, which would
-otherwise make "ottos" plain "otto" ("bring Otto the ruler": Otto would receive his own
-ruler). An English word ("hunters pad", "marks ruler") is the possessive only where the
-colleague it names keeps that item (Hunter has a pad): otherwise ("bills ruler" where Bill has
-none) it is left as written, and whose is not taken from the word. "James' ruler" is already a
-possessive (the tokenizer's "s'"). A word of English's closed classes ("this", "his") is
-never a possessive, even where a colleague is called by it without its "s" ("Thi").
+is that name's possessive; so is one before words that describe the item first ("can i get
+wangs budget spreadsheet", "priyas viability spreadsheet": Wang's, Priya's spreadsheet), up to
+a few words none of which is a function word or a name, so that the name is never read as the
+recipient of a double object ("get Priya the spreadsheet"). Read on the tokens before the
+typo correction, which would otherwise make "ottos" plain "otto" ("bring Otto the ruler":
+Otto would receive his own ruler). An English word ("hunters pad", "marks ruler") is the
+possessive only where the colleague it names keeps that item (Hunter has a pad): otherwise
+("bills ruler" where Bill has none) it is left as written, and whose is not taken from the
+word. "James' ruler" is already a possessive (the tokenizer's "s'"). A word of English's
+closed classes ("this", "his") is never a possessive, even where a colleague is called by it
+without its "s" ("Thi").
 """
 
 from __future__ import annotations
@@ -19,6 +23,9 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
 _SHORTEST_NAME = 2  # "Al" + "s"
+# words that may describe the item between the possessive and the item's word ("wangs *Q3
+# budget* spreadsheet"); more is a clause of its own, not one noun phrase
+_MOST_MODIFIERS = 3
 _FUNCTION_WORDS = english.words("common")
 
 
@@ -34,13 +41,31 @@ def read_bare_possessives(
     the names of the items the person it names keeps."""
     out = list(tokens)
     for n, t in enumerate(tokens):
-        nxt = tokens[n + 1] if n + 1 < len(tokens) else None
-        if nxt is None or nxt.opens or nxt.after_pause or nxt.word not in item_words:
+        item = _item_after(tokens, n, names, item_words)
+        if item is None:
             continue
-        if _bare_possessive(t, names, (owned or {}).get(t.word[:-1], ()), nxt.word):
+        if _bare_possessive(t, names, (owned or {}).get(t.word[:-1], ()), item):
             base = t.word[:-1]
             out[n] = replace(t, word=base, typed=base, possessive=True)
     return out
+
+
+def _item_after(
+    tokens: Sequence[Token], n: int, names: Collection[str], item_words: Collection[str]
+) -> str | None:
+    """The word of an item's name that token ``n`` would be the possessive of: the next
+    token, or the first after a few describing words in the same noun phrase ("budget" of
+    "wangs budget spreadsheet"). None where a pause, a new sentence, a function word ("idas
+    for the ruler") or a name comes first: the noun phrase, if any, ended there."""
+    for k in range(n + 1, min(n + 2 + _MOST_MODIFIERS, len(tokens))):
+        nxt = tokens[k]
+        if nxt.opens or nxt.after_pause:
+            return None
+        if nxt.word in item_words:
+            return nxt.word
+        if nxt.possessive or nxt.word in _FUNCTION_WORDS or nxt.word in names:
+            return None
+    return None
 
 
 def _bare_possessive(t: Token, names: Collection[str], kept: Collection[str], item: str) -> bool:

@@ -175,6 +175,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
     variety_of,
 )
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
+from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
@@ -276,6 +277,8 @@ class InstructionParser:
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "I'm borrowing Wang's for the afternoon": the speaker's taking, asked of Wang
         text = announced_borrowings(text, self.screen.terms.is_person_word)
+        # "get Wang to sign my contract, and a coffee for me": "and get a coffee for me"
+        text = with_gapped_verbs(self.lex, text)
         # "Wang's budget plan? just send me the file": the plan is Wang's file
         text = named_later(self.lex, text)
         # "Wang's setting-out file": the description is no owner or part; Wang's file

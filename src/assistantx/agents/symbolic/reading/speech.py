@@ -46,6 +46,7 @@ from assistantx.agents.symbolic.reading.service_command import service_command
 from assistantx.agents.symbolic.reading.service_noun_subject import service_noun_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
+from assistantx.agents.symbolic.reading.taken_from_speaker import taken_from_speaker
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.agents.symbolic.reading.thing_needs import part_told, work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
@@ -463,6 +464,8 @@ class SpeechActs:
             lemmas = language.verb_lemmas(x) or {"have"}
             if not lemmas & (self.lex.cue_words | _DONE_VERBS):
                 continue
+            if taken_from_speaker(w, n, lemmas):
+                continue  # "the intern borrowed mine": why the speaker asks, nothing had
             after = set(w[n + 1 : n + 4])
             if mine and (marked or after & _ONE_MORE):
                 return True  # "Ida just brought me one", "I already have one"

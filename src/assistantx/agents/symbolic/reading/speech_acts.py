@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.asides import without_asides
 from assistantx.agents.symbolic.reading.indirect_asks import chance_reworded, indirect_ask
 from assistantx.agents.symbolic.reading.modal_subject import modals_as_subjects
 from assistantx.agents.symbolic.reading.offers import offered
@@ -100,7 +101,9 @@ def acts_reader(
             world_wish=speech.world_wish(words),
             withdrawal=speech.withdrawal(without_fillers(words)),
             had_already=speech.had_already(words),
-            statement=speech.statement(words),
+            # "..., and a coffee for me while you are at it": the aside's "you are" states
+            # nothing, the piece is the thing asked for besides
+            statement=speech.statement(without_asides(words)),
             need=speech.need(as_said, self_words),
             note=tuple(note) if note is not None else None,
             note_asks=bool(note) and speech.request(note or []),

@@ -1,0 +1,29 @@
+"""The speaker's own thing taken away by someone else, told beside a request: "bring me a pen,
+the intern borrowed mine", "I need a stapler, the visitor took my one". Such a clause is why
+the speaker asks (they are without theirs now), never news that what was asked for is had
+already: "borrowed" is a task word of the office ("borrow a pen"), and "mine" after it reads
+like "Ida brought me *mine*", so the request was dropped. A verb of taking a thing from its
+owner (the language data's ``taking_verbs``, and "borrow") whose subject is not the speaker,
+with the speaker's own ("mine", "my ...") right after it, says the speaker lacks it. The
+speaker's own taking ("I borrowed one already") is still had."""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+
+from assistantx.core import english
+
+# "borrow" is a taking of another's thing too; it is listed apart in the data as the
+# requester's own polite verb ("can I borrow ..."), never as a verb of taking away
+_TAKING = english.words("taking_verbs") | {"borrow"}
+_SPEAKERS_OWN = frozenset({"mine", "my"})
+_SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ive", "wed", "weve", "im"})
+
+
+def taken_from_speaker(words: Sequence[str], at: int, lemmas: Collection[str]) -> bool:
+    """Whether the past verb ``words[at]`` (its lemmas ``lemmas``) tells that someone other
+    than the speaker took the speaker's own thing: a verb of taking, the speaker's own right
+    after it, and no first-person subject before it in the clause."""
+    if not set(lemmas) & _TAKING or not set(words[at + 1 : at + 2]) & _SPEAKERS_OWN:
+        return False
+    return not set(words[:at]) & _SPEAKER_SUBJECTS

@@ -1,0 +1,125 @@
+"""A second conjunct said without its verb takes the verb of the request before it (English
+gapping): "get Wang to sign my contract, and a coffee for me" is "..., and *get* a coffee for
+me"; "take my stapler to Wang and Sun a coffee" is "... and *take* Sun a coffee".
+
+Read as it was written, the conjunct had no verb of its own: after "get Wang to sign", the
+"get" belongs to Wang's signing (get someone to do something), so the coffee was left to the
+signing, which cannot act on it, and the reader asked what to do with it; after "take X to
+Wang", "Sun a coffee" was read as a second recipient of the stapler. Two shapes, each right
+after "and" in a sentence that asks for something:
+
+- after "get <person> to <work>", a thing the work does not act on (the office's belongings
+  and the things it makes; never a paper or file, which the work may take too: "get Wang to
+  sign my contract and the invoice") opened by an article: "get" is inserted, for the
+  requester (or whoever "for <person>" names);
+- after a giving verb whose thing went "to <person>", another person and a noun phrase: the
+  same verb is inserted, giving that person the thing ("take Sun a coffee").
+
+"get Wang to sign my contract and Zhang" (no thing after the name) and "bring Wang my stapler
+and my scissors" (a thing with no verb missing: the verb's own second object) are left as
+written."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.aligned import aligned_reading
+from assistantx.agents.symbolic.reading.indirect_object import opens_noun_phrase
+from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
+from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.core import english
+
+_DATIVE_VERBS = english.words("dative_verbs")
+# "get Wang to sign": the verbs that have someone else do the work
+_CAUSING = frozenset({"get"})
+# the kinds of thing a colleague's work (signing, sealing) never takes: what is fetched or made
+_FETCHED_KINDS = frozenset({"belonging", "product"})
+# articles that open the conjunct's thing ("and *a* coffee", "and *some* water")
+_ARTICLES = frozenset({"a", "an", "some", "the", "another"})
+
+
+def with_gapped_verbs(lex: Lexicon, text: str) -> str:
+    """``text`` with the verb of the request put into each conjunct that left it unsaid."""
+    spans, tokens, mentions = aligned_reading(lex, text)
+    if spans is None or not mentions:
+        return text
+    inserts: list[tuple[int, str]] = []
+    for n, t in enumerate(tokens):
+        if t.word != "and" or n + 1 >= len(tokens) or tokens[n + 1].after_pause:
+            continue
+        start = _sentence_start(tokens, n)
+        verb = _causing_before(tokens, mentions, start, n)
+        if verb is not None and _fetched_thing_at(lex, tokens, mentions, n + 1):
+            inserts.append((spans[n + 1][0], verb))
+            continue
+        verb = _giving_to_before(tokens, mentions, start, n)
+        if verb is not None and _person_and_thing_at(tokens, mentions, n + 1):
+            inserts.append((spans[n + 1][0], verb))
+    for at, verb in reversed(inserts):
+        text = f"{text[:at]}{verb} {text[at:]}"
+    return text
+
+
+def _sentence_start(tokens: Sequence[Token], at: int) -> int:
+    k = at
+    while k > 0 and not tokens[k].opens:
+        k -= 1
+    return k
+
+
+def _mention_at(mentions: Sequence[Mention], at: int) -> Mention | None:
+    return next((m for m in mentions if m.start == at), None)
+
+
+def _causing_before(
+    tokens: Sequence[Token], mentions: Sequence[Mention], start: int, end: int
+) -> str | None:
+    """The "get" of "get <person> to <work>" between ``start`` and ``end``, as typed."""
+    for k in range(start, end):
+        if tokens[k].word not in _CAUSING:
+            continue
+        who = _mention_at(mentions, k + 1)
+        if who is None or who.kind != "person" or who.possessive or who.end + 1 >= end:
+            continue
+        work = _mention_at(mentions, who.end + 1)
+        if tokens[who.end].word == "to" and work is not None and work.kind == "cue":
+            return tokens[k].text.lower()
+    return None
+
+
+def _fetched_thing_at(
+    lex: Lexicon, tokens: Sequence[Token], mentions: Sequence[Mention], at: int
+) -> bool:
+    """Whether an article and a thing that is fetched or made, not worked on, open at ``at``
+    ("a coffee", "some water", "a stapler")."""
+    if tokens[at].word not in _ARTICLES:
+        return False
+    thing = _mention_at(mentions, at + 1)
+    if thing is None or thing.kind != "item":
+        return False
+    return all(lex.office.item_type(i).kind in _FETCHED_KINDS for i in thing.ids)
+
+
+def _giving_to_before(
+    tokens: Sequence[Token], mentions: Sequence[Mention], start: int, end: int
+) -> str | None:
+    """The giving verb of the clause before "and" (``end``) when its thing went "to" the
+    person said right before "and" ("take my stapler to Wang and ..."), as typed."""
+    last = next((m for m in mentions if m.end == end), None)
+    if last is None or last.kind != "person" or last.start == 0:
+        return None
+    if tokens[last.start - 1].word != "to":
+        return None
+    verbs = [k for k in range(start, last.start) if tokens[k].word in _DATIVE_VERBS]
+    return tokens[verbs[0]].text.lower() if verbs else None
+
+
+def _person_and_thing_at(tokens: Sequence[Token], mentions: Sequence[Mention], at: int) -> bool:
+    """Whether a person opens at ``at``, a noun phrase right after them that names a thing
+    ("Sun a coffee")."""
+    who = _mention_at(mentions, at)
+    if who is None or who.kind != "person" or who.possessive:
+        return False
+    if not opens_noun_phrase(tokens, who.end):
+        return False
+    return any(m.kind == "item" and who.end < m.start <= who.end + 3 for m in mentions)
