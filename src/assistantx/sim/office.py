@@ -33,6 +33,7 @@ from assistantx.core.ports.messenger import (
     SentMessage,
 )
 from assistantx.core.ports.robot import RobotBase
+from assistantx.sim.lent_back import lent_to_requester
 from assistantx.sim.lock.controller import LockController
 from assistantx.sim.lock.local import LocalLocker
 from assistantx.sim.people import Reply, direct_reply, group_replies, handover_problem
@@ -388,6 +389,8 @@ class SimOffice:
 
     def _use_code(self, code: HeldCode, place: str) -> None:
         now = self.clock.now()
+        if code.purpose == "deposit":
+            self._lent_back(code, now)
         problem = handover_problem(self.world, code.person, code.purpose, code.item, place)
         if problem is not None:
             # They keep the code and come again once the hand-over has become possible.
@@ -411,6 +414,16 @@ class SimOffice:
         task = asyncio.get_running_loop().create_task(self._visit(code, now, place))
         self._visits.add(task)
         task.add_done_callback(self._visits.discard)
+
+    def _lent_back(self, code: HeldCode, now: float) -> None:
+        """The requester putting in a colleague's thing they give back has it (they were lent
+        it): the world's record, still with its owner, is brought up to date first."""
+        wish = self.wishes.get(code.instruction_id)
+        if wish is None or self.requesters.get(code.instruction_id) != code.person:
+            return
+        if lent_to_requester(self.office, self.world.holder, wish, code.item):
+            self.world.holder[code.item] = code.person
+            self.world.note(now, "lent_earlier", item=code.item, to=code.person)
 
     async def _visit(self, code: HeldCode, now: float, place: str) -> None:
         """A hand-over at a networked locker: scan, swap the item, shut the door."""

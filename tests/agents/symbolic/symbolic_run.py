@@ -80,6 +80,7 @@ def expected_tasks(case: dict[str, Any], requester: str) -> list[Task]:
             recipient=t.get("recipient", requester),
             actor=t.get("actor"),
             operation=t.get("operation"),
+            source=t.get("source"),
         )
         for t in case["tasks"]
     ]

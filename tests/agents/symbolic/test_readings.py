@@ -183,7 +183,6 @@ def test_a_stated_item_keeps_its_owner_when_referred_back_to(
     [
         ("default", "lee", "Chen borrowed my stapler. Can you get it back for me?"),
         ("default", "wang", "get me a pen. no wait, a pencil"),
-        ("harbour", "may", "the ruler on my desk belongs to Ray, please return it to him"),
     ],
 )
 def test_an_unclear_owner_or_correction_is_asked_not_guessed(

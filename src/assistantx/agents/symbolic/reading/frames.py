@@ -42,6 +42,11 @@ from assistantx.agents.symbolic.reading.directed_work import (
     has_it_done,
     obliged_to_go,
 )
+from assistantx.agents.symbolic.reading.given_back import (
+    given_back_by_speaker,
+    returned_to_whom,
+    unowned_return,
+)
 from assistantx.agents.symbolic.reading.joined_owners import each_owner
 from assistantx.agents.symbolic.reading.joined_recipients import for_each
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
@@ -354,6 +359,14 @@ class FrameReader:
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
         tasks = [self._given_back(t, holder) for t in tasks]
+        # "return Wang's stapler", "give Wang his stapler back": from the speaker to Wang
+        tasks = [given_back_by_speaker(t, tokens, readings.mentions, requester) for t in tasks]
+        unowned = next(
+            (t for t in tasks if unowned_return(t, tokens, readings.mentions, requester)), None
+        )
+        if unowned is not None and unowned.item is not None:
+            whose = returned_to_whom(self._item_name(unowned.item))
+            return TaskFrame(requester=requester, question=whose)
         # "Ms Okafor needs her tape back, take it from Pat to her": Pat hands it over
         tasks = [taken_from(self.office, t, said_from) for t in tasks]
         tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
