@@ -165,11 +165,13 @@ class OwnPapers:
             ):
                 continue  # nothing plain after "my", or a noun of a longer phrase
             word = mentions[head].ids[0]
-            if word in self.named or word in _COMMON or not word.isalpha():
+            topic = article and self.topic_paper(mentions, head)
+            # "copy the sample log" where "delegation log" names the office's paper: a word of
+            # a longer name of the office still heads a topic compound on its own
+            if (word in self.named and not topic) or word in _COMMON or not word.isalpha():
                 continue
             if tokens[mentions[head].start].corrected or not _may_be_noun(word):
                 continue
-            topic = article and self.topic_paper(mentions, head)
             if article and not (_for_the_speaker(tokens, start, end) or topic):
                 continue  # "print the fire drill plan" for nobody said: whose is not known
             verb = _verb_before(tokens, start)
@@ -191,7 +193,8 @@ class OwnPapers:
         return (
             before.kind == "word"
             and before.end == mentions[head].start
-            and before.ids[0] in self.topics
+            # a noun before another is said in the singular ("the tube log" of "tubes")
+            and (before.ids[0] in self.topics or language.plural(before.ids[0]) in self.topics)
         )
 
     def _paper_or_file(self, type_id: str) -> bool:

@@ -47,6 +47,8 @@ def service_noun_subject(
         return True  # "print is too small on this form"
     if not verb.endswith("s") or not language.is_finite_verb(verb) or verb in items:
         return False  # "print labels", "copy files": a plural object, or a thing we keep
+    if f"{word} {verb}" in items:
+        return False  # "shredder bags to Tomas": the two words name a thing we keep
     return clock_time(tail[:2]) or _how_or_when(tail[:1])
 
 

@@ -396,6 +396,12 @@ class SpeechActs:
     def __init__(self, lex: Lexicon) -> None:
         self.lex = lex
         self._known: frozenset[str] | None = None  # the office's words, read on first use
+        # what may be a clause's subject before its verb ("courier leaves at 3"): the words of
+        # the office's services and the one-word names of its facilities ("van leaves at 3",
+        # where "the van" is the courier's)
+        self._subject_words = lex.operation_words | frozenset(
+            phrase for phrase in lex.facilities if " " not in phrase
+        )
         # the words that ask for work on a thing: the office's operations by verb, near
         # form ("dying" of "dye"), noun ("a review") or a word of their names ("a read"),
         # and every task word but those of making ("fix" me a coffee says nothing of work
@@ -1158,8 +1164,9 @@ class SpeechActs:
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
 
     def _service_subject(self, w: list[str]) -> bool:
-        """ "courier leaves at 3", "post goes at 4": a service's word as its clause's subject."""
-        return service_noun_subject(w, self.lex.operation_words, self.lex.items)
+        """ "courier leaves at 3", "post goes at 4", "van leaves at 3": a service's word or a
+        facility's one-word name as its clause's subject."""
+        return service_noun_subject(w, self._subject_words, self.lex.items)
 
     def _for_me(self, w: list[str]) -> bool:
         """ "... I could borrow", "... lend me one", "... for me": the asker wants it."""
