@@ -5,6 +5,7 @@ server refuses the connection (tries that never reached it: counted, at no token
 
 from __future__ import annotations
 
+import asyncio
 from typing import Any
 
 import pytest
@@ -67,24 +68,66 @@ async def test_unusable_answers_and_their_repairs_are_all_counted(
     assert trace.usage.llm_calls == len(scripted_llm.requests)
 
 
-@pytest.mark.parametrize("name", REASONERS)
-async def test_a_request_that_timed_out_after_a_repair_is_counted(
+# a timeout a loaded machine's connect and first answer fit in (0.5 s did not, at load 20),
+# the repair still never back within it; no retries of the timed-out request, so the wait is
+# one timeout per call
+REPAIR_TIMEOUT = {"llm_timeout_s": 1.5, "llm_max_retries": 0}
+
+
+@pytest.fixture(scope="module")
+def timed_out_after_a_repair(office: Office) -> dict[str, tuple[int, Trace] | BaseException]:
+    """Per reasoner: how many requests its scripted server received, and its trace, for a
+    request whose first answer is unusable and whose repair never comes back in time; or
+    what the run raised. Each reasoner has its own server and client, as in a test of its
+    own; they run side by side, each started once the one before has sent its repair, so
+    while a reasoner waits for an answer that must come in time, the others only wait out
+    their timeouts (one after the other, the eight waits took 12 s)."""
+    return asyncio.run(_timed_out_after_a_repair(office))
+
+
+async def _timed_out_after_a_repair(
     office: Office,
-    scripted_llm: ScriptedLLM,  # noqa: F811
-    name: str,
+) -> dict[str, tuple[int, Trace] | BaseException]:
+    results: dict[str, tuple[int, Trace] | BaseException] = {}
+
+    async def run(name: str, after: asyncio.Event, repair_sent: asyncio.Event) -> None:
+        await after.wait()
+        try:
+            async with ScriptedLLM() as llm:
+
+                def answer(_request: RecordedRequest) -> Reply:
+                    # the first answer is unusable, the repair never comes back in time
+                    if len(llm.requests) == 1:
+                        return malformed_json()
+                    repair_sent.set()
+                    return slow(30)
+
+                llm.respond_with(answer)
+                trace = await _trace(office, llm, name, **REPAIR_TIMEOUT)
+                results[name] = (len(llm.requests), trace)
+        except Exception as exc:
+            results[name] = exc
+        finally:
+            repair_sent.set()  # the next one starts, whatever became of this one
+
+    events = [asyncio.Event() for _ in range(len(REASONERS) + 1)]
+    events[0].set()
+    await asyncio.gather(*(run(name, events[n], events[n + 1]) for n, name in enumerate(REASONERS)))
+    return results
+
+
+@pytest.mark.shares_worker("timed_out_after_a_repair")  # the module fixture, built once
+@pytest.mark.parametrize("name", REASONERS)
+def test_a_request_that_timed_out_after_a_repair_is_counted(
+    timed_out_after_a_repair: dict[str, tuple[int, Trace] | BaseException], name: str
 ) -> None:
-    def answer(_request: RecordedRequest) -> Reply:
-        # the first answer is unusable, the repair never comes back in time
-        return malformed_json() if len(scripted_llm.requests) == 1 else slow(30)
+    result = timed_out_after_a_repair[name]
+    if isinstance(result, BaseException):
+        raise result
+    requests, trace = result
 
-    scripted_llm.respond_with(answer)
-    # a timeout a loaded machine's connect and first answer fit in (0.5 s did not, at load
-    # 20), the repair still never back within it; no retries of the timed-out request, so
-    # the wait is one timeout per call
-    trace = await _trace(office, scripted_llm, name, llm_timeout_s=1.5, llm_max_retries=0)
-
-    assert len(scripted_llm.requests) >= 2
-    assert trace.usage.llm_calls == len(scripted_llm.requests)
+    assert requests >= 2
+    assert trace.usage.llm_calls == requests
     assert trace.usage.estimated  # what the timed-out request cost is an estimate
 
 

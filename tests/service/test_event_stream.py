@@ -103,18 +103,28 @@ async def test_a_person_follows_only_their_own_instructions(api: httpx.AsyncClie
     def ids_seen(lines: list[str]) -> set[object]:
         return {data["instruction_id"] for _, _, data in events(lines)}
 
-    # 1.5 s at least (another person's events would show by then), and until one has come
-    _, lines = await _read(
-        api, "/v1/events", AS_LEE, 1.5, enough=lambda lines: bool(ids_seen(lines))
+    # The operator's stream: until both instructions have shown.
+    everyone = set(ids.values())
+    _, everything = await _read(
+        api, "/v1/events", OP, 0, enough=lambda lines: ids_seen(lines) >= everyone
     )
+    assert ids_seen(everything) == everyone
+    zhangs = [
+        int(seq) for seq, _, data in events(everything) if data["instruction_id"] == ids["zhang"]
+    ]
+
+    def past_one_of_zhangs(lines: list[str]) -> bool:
+        """Two of the events read lie on either side of one of Zhang's in the journal: the
+        stream had that event in hand, and left it out if all were Lee's."""
+        seqs = [int(seq) for seq, _, _ in events(lines)]
+        return bool(seqs) and any(min(seqs) < z < max(seqs) for z in zhangs)
+
+    # Lee's stream: until it is past one of Zhang's events (a fixed 1.5 s window stood in
+    # for this, time in which another person's events would have shown).
+    _, lines = await _read(api, "/v1/events", AS_LEE, 0, enough=past_one_of_zhangs)
+    assert past_one_of_zhangs(lines), lines
     seen = events(lines)
     assert seen and {data["instruction_id"] for _, _, data in seen} == {ids["lee"]}
     assert all(kind == data["kind"] for _, kind, data in seen)
     seqs = [int(seq) for seq, _, _ in seen]
     assert seqs == sorted(set(seqs))  # journal order, no repeats
-
-    everyone = set(ids.values())
-    _, lines = await _read(
-        api, "/v1/events", OP, 1.5, enough=lambda lines: ids_seen(lines) >= everyone
-    )
-    assert ids_seen(lines) == everyone

@@ -5,6 +5,7 @@ requester's last message says so too."""
 from __future__ import annotations
 
 import asyncio
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -14,13 +15,18 @@ from helpers.eventually import eventually
 from helpers.instructions import ended
 from service.inprocess import serving_runtime
 
-# Hand-overs take long enough (simulated time) for the cancel to come between the two: the
-# cancel is sent the moment the deposit is seen, and Lee's hand-over would take 1.2 s of wall
-# time (300 simulated seconds at a speed-up of 250; at 100 the test waited out 6 s of them).
-SETTINGS: dict[str, Any] = {"robot": "sim", "speedup": 250, "sim_handover_delay_s": 300.0}
+# People come to the locker 0.04 s of wall time after the robot stands at their desk (10
+# simulated seconds at a speed-up of 250). The cancel must come before Lee's hand-over: the
+# moment Wang's deposit is seen, Lee steps away (the simulated world's availability), so she
+# never comes for the stapler, however long the cancel takes (before, each hand-over took
+# 1.2 s of wall time, a window the cancel happened to fit in, and the test waited out two).
+SETTINGS: dict[str, Any] = {"robot": "sim", "speedup": 250, "sim_handover_delay_s": 10.0}
 
 
-def deposited_by(runtime: ServiceRuntime, person: str) -> asyncio.Future[None]:
+def deposited_by(
+    runtime: ServiceRuntime, person: str, then: Callable[[], None]
+) -> asyncio.Future[None]:
+    """Done when ``person`` has put their item in the locker; ``then`` runs at that moment."""
     done: asyncio.Future[None] = asyncio.get_running_loop().create_future()
 
     async def sink(event: TraceEvent) -> None:
@@ -28,6 +34,7 @@ def deposited_by(runtime: ServiceRuntime, person: str) -> asyncio.Future[None]:
         action = result.get("action") or {}
         if event.kind == "action_result" and action.get("type") == "wait_in_place":
             if action["person"] == person and result["ok"] and not done.done():
+                then()
                 done.set_result(None)
 
     runtime.assistant.subscribe(sink)
@@ -36,7 +43,9 @@ def deposited_by(runtime: ServiceRuntime, person: str) -> asyncio.Future[None]:
 
 async def test_a_cancel_with_the_lenders_stapler_aboard_gives_it_back(tmp_path: Path) -> None:
     async with serving_runtime(tmp_path / "data", **SETTINGS) as (api, runtime):
-        deposited = deposited_by(runtime, "wang")
+        deposited = deposited_by(
+            runtime, "wang", lambda: runtime.sim.world.set_available("lee", False)
+        )
         r = await api.post(
             "/v1/instructions", json={"requester": "lee", "text": "Please bring me a stapler."}
         )

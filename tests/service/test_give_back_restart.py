@@ -18,8 +18,14 @@ from helpers.instructions import ended
 from service.inprocess import serving_runtime
 from service.server import LEE, OPERATOR, free_port, serve, sse
 
-# Each hand-over takes 3 s of wall time: long enough to stop the service during the return.
-SETTINGS: dict[str, Any] = {"robot": "sim", "speedup": 100, "sim_handover_delay_s": 300.0}
+# People come to the locker 0.1 s of wall time after the robot stands at their desk; in process,
+# once Wang's stapler is in the locker he is made to take a day over it (the simulated people's
+# delay, read when the robot stands at his desk again), so the stop always comes while the
+# robot waits at his desk, not when a 3 s window happened to be long enough.
+SETTINGS: dict[str, Any] = {"robot": "sim", "speedup": 100, "sim_handover_delay_s": 10.0}
+A_DAY_S = 86_400.0
+# The real server process (kill -9): each hand-over takes 3 s of wall time, long enough to
+# kill it during the return.
 ENV = {
     "ASSISTANTX_ROBOT": "sim",
     "ASSISTANTX_SPEEDUP": "100",
@@ -47,6 +53,7 @@ async def test_a_give_back_cut_short_by_a_stop_resumes_on_start(tmp_path: Path) 
             result: dict[str, Any] = event.data.get("result") or {}
             action = result.get("action") or {}
             if action.get("type") == "wait_in_place" and result.get("ok"):
+                runtime.sim.handover_delay_s = A_DAY_S  # Wang does not come before the stop
                 deposited.set()
 
         runtime.assistant.subscribe(sink)

@@ -8,7 +8,7 @@ mechanisms, one test each:
 - a request whose lender's item another request already took does not send that lender a
   code, and borrows another colleague's;
 - a colleague who does not come to the robot within the wait gets no second code: the wait's
-  300 s are simulated seconds (3 wall seconds at the test's speed-up of 100), and a full
+  300 s are simulated seconds (1.5 wall seconds at the test's speed-up of 200), and a full
   wait read as "cut short by a message" kept him bound.
 """
 
@@ -81,13 +81,15 @@ async def test_a_colleague_who_does_not_come_gets_one_code_and_the_next_one_is_a
 ) -> None:
     # Wang takes a simulated day to walk to the robot: every wait for him runs out. The
     # instruction is cancelled the moment it has asked Zhang (an event, not a poll): Zhang's
-    # answer takes 20 simulated seconds, so no code can reach him before the cancel. At a
-    # speed-up of 100, Wang's 300 s wait passes in 3 s of wall time (6 s at the usual 50).
+    # answer takes 40 simulated seconds, so no code can reach him before the cancel. At a
+    # speed-up of 200, Wang's 300 s wait passes in 1.5 s of wall time (6 s at the usual 50),
+    # and an answer in 0.2 s, as at a speed-up of 100 with the default 20 s.
     async with serving_runtime(
         tmp_path / "data",
         robot="sim",
         sim_handover_delay_s=86_400.0,
-        speedup=100,
+        sim_reply_delay_s=40.0,
+        speedup=200,
         database_url=database_url,
     ) as (api, runtime):
         asked_zhang = asked_of(runtime, "zhang")

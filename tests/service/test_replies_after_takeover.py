@@ -42,9 +42,16 @@ def unanswered(record: dict[str, Any]) -> list[str]:
 async def test_an_answer_written_after_the_office_moved_is_heard(
     tmp_path: Path, database_url: str | None
 ) -> None:
-    # speed-up 200 (the tests' default is 50): the test is about the end state, two errands run
-    # to done, not about their pace
-    settings: dict[str, Any] = {"robot": "sim", "database_url": database_url, "speedup": 200}
+    # speed-up 200 (the tests' default is 50), colleagues who answer and come to the robot in
+    # 5 simulated seconds (20 and 30 by default): the test is about the end state, two errands
+    # run to done, not about their pace
+    settings: dict[str, Any] = {
+        "robot": "sim",
+        "database_url": database_url,
+        "speedup": 200,
+        "sim_reply_delay_s": 5.0,
+        "sim_handover_delay_s": 5.0,
+    }
     async with serving_runtime(tmp_path / "replica-a", **settings) as (api, _):
         first = await run_one(api, "lee", "Please bring me a stapler.")
     # The next process: the same folder when the journal is there, another replica's
