@@ -10,12 +10,16 @@ import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.phrase_index import by_first_word, without_phrases
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english
 
 _ASIDES: tuple[tuple[str, ...], ...] = tuple(
     sorted((tuple(p.split()) for p in english.entries("request_asides")), key=len, reverse=True)
 )
+
+
+_ASIDES_AT = by_first_word(_ASIDES)
 
 
 def aside_length(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -> int:
@@ -37,16 +41,7 @@ def aside_length(mentions: Sequence[Mention], n: int, tokens: Sequence[Token]) -
 def without_asides(words: Sequence[str]) -> list[str]:
     """``words`` without the aside phrases in them: "and a coffee for me while you are at it"
     is no statement for the "you are" of its aside, which tells nothing of the world."""
-    out: list[str] = []
-    n = 0
-    while n < len(words):
-        phrase = next((p for p in _ASIDES if tuple(words[n : n + len(p)]) == p), None)
-        if phrase is None:
-            out.append(words[n])
-            n += 1
-        else:
-            n += len(phrase)
-    return out
+    return without_phrases(words, _ASIDES_AT)
 
 
 def _alternatives(key: str) -> str:

@@ -41,6 +41,12 @@ from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
+from assistantx.agents.symbolic.reading.phrase_index import (
+    PhraseIndex,
+    by_first_word,
+    phrase_at,
+    without_phrases,
+)
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.service_command import service_command
 from assistantx.agents.symbolic.reading.service_noun_subject import service_noun_subject
@@ -265,7 +271,7 @@ def content(words: list[str]) -> list[str]:
     nothing to act on."""
     k = 0
     while k < len(words):
-        phrase = _phrase_at(words, k, _STANCE_AT)
+        phrase = phrase_at(words, k, _STANCE_AT)
         if phrase is not None:
             k += len(phrase)
         elif _stance_infinitive(words[k : k + 3]):
@@ -317,51 +323,20 @@ def _perfect_after(words: list[str]) -> bool:
 def _without_hedges(words: list[str]) -> list[str]:
     """``words`` less the speaker's hedges ("i think", "pretty sure"): "Olu's got one i think"
     tells what Olu has, not what the speaker has."""
-    kept: list[str] = []
-    n = 0
-    while n < len(words):
-        hedge = _phrase_at(words, n, _DOUBT_AT)
-        if hedge is None:
-            kept.append(words[n])
-            n += 1
-        else:
-            n += len(hedge)
-    return kept
-
-
-PhraseIndex = dict[str, tuple[tuple[str, ...], ...]]
-
-
-def _by_first_word(phrases: tuple[tuple[str, ...], ...]) -> PhraseIndex:
-    """The phrases by their first word, each word's in the list's order: the reader looks for
-    every phrase list at every word of every piece, and only those that start with the word
-    there can be said there."""
-    index: dict[str, list[tuple[str, ...]]] = {}
-    for phrase in phrases:
-        if phrase:
-            index.setdefault(phrase[0], []).append(phrase)
-    return {first: tuple(said) for first, said in index.items()}
-
-
-def _phrase_at(words: list[str], at: int, index: PhraseIndex) -> tuple[str, ...] | None:
-    """The first phrase of the list said at ``words[at]``."""
-    for phrase in index.get(words[at], ()):
-        if tuple(words[at : at + len(phrase)]) == phrase:
-            return phrase
-    return None
+    return without_phrases(words, _DOUBT_AT)
 
 
 def _said_anywhere(words: list[str], index: PhraseIndex) -> bool:
-    return any(_phrase_at(words, n, index) is not None for n in range(len(words)))
+    return any(phrase_at(words, n, index) is not None for n in range(len(words)))
 
 
-_STANCE_AT = _by_first_word(_STANCE)
-_NEED_AT = _by_first_word(NEED_PHRASES)
-_DOUBT_AT = _by_first_word(_SPEAKERS_DOUBT)
-_DECLINING_THANKS_AT = _by_first_word(_DECLINING_THANKS)
-_DONE_MARKERS_AT = _by_first_word(_DONE_MARKERS)
-_PAST_TIMES_AT = _by_first_word(_PAST_TIMES)
-_DEFERRALS_AT = _by_first_word(_DEFERRALS)
+_STANCE_AT = by_first_word(_STANCE)
+_NEED_AT = by_first_word(NEED_PHRASES)
+_DOUBT_AT = by_first_word(_SPEAKERS_DOUBT)
+_DECLINING_THANKS_AT = by_first_word(_DECLINING_THANKS)
+_DONE_MARKERS_AT = by_first_word(_DONE_MARKERS)
+_PAST_TIMES_AT = by_first_word(_PAST_TIMES)
+_DEFERRALS_AT = by_first_word(_DEFERRALS)
 
 
 def _starts(words: list[str], phrase: tuple[str, ...], at: int = 0) -> bool:
