@@ -50,6 +50,21 @@ def common_noun_owner(word: str, said: str, before: str, office_words: frozenset
     return language.is_noun(word)
 
 
+def clause_opening_owner(
+    word: str, said: str, opens_clause: bool, office_words: frozenset[str]
+) -> bool:
+    """Whether the possessive ``said`` (its folded ``word``) opening a later clause with no
+    determiner names a kind of person: "..., visitor's pen just ran out". A reason clause
+    typed in haste drops its article, yet a lower-case common noun still says what the
+    person is, never who: a colleague's name or alias ("wang's") and the words for the
+    office's own people ("boss's") are no outsider and are still looked up."""
+    if not opens_clause or not said[:1].islower():
+        return False
+    if word in _OFFICE_PEOPLE or word in office_words:
+        return False
+    return language.is_noun(word)
+
+
 def titled_outsider(before: str) -> bool:
     """Whether a possessive name the office does not have, after ``before``, is an outsider
     said as context: a title opens it ("Mrs Baker's"). Called only where the name owns no
