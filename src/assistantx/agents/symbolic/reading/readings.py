@@ -491,7 +491,9 @@ def _unknown_name(
         kind_of_person = kind_of_person or kind_of_people(tokens, m)
         outsider = lower and prev in _OUTSIDER_DETERMINERS and word in _OUTSIDERS
         # "the chiropodist's invoice": any common noun names a kind of person, not a list
-        outsider = outsider or common_noun_owner(word, m.text, prev, people_words)
+        # "... for the owner's file": a "for" before the determiner says what it is for
+        purpose = prev_word(tokens, m.start - 1, skip_titles=False) == "for"
+        outsider = outsider or common_noun_owner(word, m.text, prev, people_words, purpose=purpose)
         # "..., visitor's pen just ran out": the same with the article dropped, the owner
         # opening a later clause (a reason said after the request)
         opens_clause = m.start > 0 and (tokens[m.start].opens or tokens[m.start].after_pause)
