@@ -24,7 +24,8 @@ from assistantx.core.office import Office
 # the determiners a kind of person is named after ("the", "this", "my", "a")
 _DETERMINERS = frozenset({"my", "our", "the", "this", "that", "a", "an", "your"})
 # the words an office names its own people with ("the boss's", "my colleague's"): no outsider
-_OFFICE_PEOPLE = english.words("titles") | frozenset(
+_TITLE_WORDS = english.words("titles")
+_OFFICE_PEOPLE = _TITLE_WORDS | frozenset(
     {"coworker", "co-worker", "teammate", "team", "owner", "supervisor", "secretary"}
 )
 # a title before a surname ("Mrs Baker"), the outsider's form of address
@@ -39,11 +40,40 @@ def office_people_words(office: Office) -> frozenset[str]:
     return frozenset(w for s in said for w in language.words(language.fold(s).replace("'s", " ")))
 
 
-def common_noun_owner(word: str, said: str, before: str, office_words: frozenset[str]) -> bool:
+def common_noun_owner(
+    word: str,
+    said: str,
+    before: str,
+    office_words: frozenset[str],
+    *,
+    purpose: bool = False,
+) -> bool:
     """Whether the possessive ``said`` (its folded ``word``), after the word ``before``,
     names a kind of person: a lower-case common noun after a determiner, not one of the
-    words for the office's own people (English's, or the office's ``office_words``)."""
+    words for the office's own people (English's, or the office's ``office_words``).
+
+    ``purpose``: the phrase opens with "for" ("... for the owner's file"), saying what the
+    thing is for. There the relational words ("owner", "supervisor"), which elsewhere mean a
+    colleague of the thing or the team ("give it back to the owner"), say whose the file
+    is, a kind of person as much as "the client's"; English's titles ("boss", "manager")
+    and the office's own names still mean its people."""
     if not said[:1].islower() or before not in _DETERMINERS:
+        return False
+    office_people = _TITLE_WORDS if purpose else _OFFICE_PEOPLE
+    if word in office_people or word in office_words:
+        return False
+    return language.is_noun(word)
+
+
+def clause_opening_owner(
+    word: str, said: str, opens_clause: bool, office_words: frozenset[str]
+) -> bool:
+    """Whether the possessive ``said`` (its folded ``word``) opening a later clause with no
+    determiner names a kind of person: "..., visitor's pen just ran out". A reason clause
+    typed in haste drops its article, yet a lower-case common noun still says what the
+    person is, never who: a colleague's name or alias ("wang's") and the words for the
+    office's own people ("boss's") are no outsider and are still looked up."""
+    if not opens_clause or not said[:1].islower():
         return False
     if word in _OFFICE_PEOPLE or word in office_words:
         return False

@@ -66,6 +66,7 @@ from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
+from assistantx.agents.symbolic.reading.contracted_has_is import spelled_has_is
 from assistantx.agents.symbolic.reading.described_items import (
     named_later,
     without_hyphened_description,
@@ -276,6 +277,8 @@ class InstructionParser:
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
+        text = spelled_has_is(text)
         # "my stapler's broken so can I borrow Wang's": the "so" starts the ask, as after a comma
         text = consequence_boundaries(text)
         # "I'm borrowing Wang's for the afternoon": the speaker's taking, asked of Wang

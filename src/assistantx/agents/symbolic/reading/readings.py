@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
 )
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.outsider_owner import (
+    clause_opening_owner,
     common_noun_owner,
     office_people_words,
     titled_outsider,
@@ -490,7 +491,13 @@ def _unknown_name(
         kind_of_person = kind_of_person or kind_of_people(tokens, m)
         outsider = lower and prev in _OUTSIDER_DETERMINERS and word in _OUTSIDERS
         # "the chiropodist's invoice": any common noun names a kind of person, not a list
-        outsider = outsider or common_noun_owner(word, m.text, prev, people_words)
+        # "... for the owner's file": a "for" before the determiner says what it is for
+        purpose = prev_word(tokens, m.start - 1, skip_titles=False) == "for"
+        outsider = outsider or common_noun_owner(word, m.text, prev, people_words, purpose=purpose)
+        # "..., visitor's pen just ran out": the same with the article dropped, the owner
+        # opening a later clause (a reason said after the request)
+        opens_clause = m.start > 0 and (tokens[m.start].opens or tokens[m.start].after_pause)
+        outsider = outsider or clause_opening_owner(word, m.text, opens_clause, people_words)
         return not (kind_of_person or outsider)
     if m.possessive and titled_outsider(prev):
         return False  # "to check Mrs Baker's sats": an outsider said as context, no colleague

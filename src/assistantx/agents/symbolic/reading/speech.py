@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
+from assistantx.agents.symbolic.reading.outsider_report import outsider_reports
 from assistantx.agents.symbolic.reading.phrase_index import (
     PhraseIndex,
     by_first_word,
@@ -780,6 +781,8 @@ class SpeechActs:
         pairs = itertools.pairwise(w)
         if any((a in _MODALS and b in _YOU) or (a in _YOU and b in _MODALS) for a, b in pairs):
             return False  # "I was wondering if you could print ..."
+        if not self._named(w[0]) and outsider_reports(w):
+            return True  # "Dad at reception says his son's lost his tie": their report, told
         if self._joined_lack(w):
             return True  # "the meeting is at 2 and Zoë has no headset": told, then asked
         if w[0] in _SELF_OFFERS and w[1:2] == ["to"]:
