@@ -73,6 +73,7 @@ from assistantx.agents.symbolic.reading.readings import Readings
 from assistantx.agents.symbolic.reading.referent import NamedItem, referent
 from assistantx.agents.symbolic.reading.room_receiver import rooms_taken_to
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
+from assistantx.agents.symbolic.reading.said_operation import as_said
 from assistantx.agents.symbolic.reading.said_owner import passed_over, pronoun_owner
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.source_not_recipient import taken_from
@@ -228,7 +229,17 @@ class FrameReader:
                     roles.owners[pointed.start] = owner
             earlier = list(objects)  # the things named before this clause
             objects += clause.objects()
-            made = self.reader.tasks(clause, roles, requester, tasks[-1] if tasks else None)
+            # "scan my report and send the pdf to Wang": the earlier work as its verb named it
+            before = tasks[-1] if tasks else None
+            as_verb = as_said(before, previous_ops, self.office)
+            made = self.reader.tasks(clause, roles, requester, as_verb)
+            if tasks and as_verb is not None and not made and as_verb is not before:
+                if self.reader.makes_file(as_verb) and not self.reader.makes_file(tasks[-1]):
+                    # "scan my report and send the pdf to Wang": the verb's operation makes
+                    # the file this clause sends on; the task is that operation's from here
+                    tasks[-1] = as_verb
+            elif as_verb is not before:
+                made = self.reader.tasks(clause, roles, requester, before)
             # "I need a coffee. can Gao knock one up?": Gao makes it, and it is still mine;
             # the clause's own "one" ("pour one") is that product again, no second one
             maker = asked_maker(self.office, tasks, clause, tokens, made)

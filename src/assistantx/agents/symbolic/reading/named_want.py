@@ -17,13 +17,34 @@ import re
 from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.reported_request import named_tail, phrase_alternatives
+from assistantx.core import english
 
 # what is wanted opens with a determiner or a possessive ("a stapler", "some of my tape")
 _WANTED = r"(?:a|an|the|some|one|another|any|more|his|her|their|my|your|our)\b"
 # "Zhang'd like": the "'d" after a name is "would" (the speaker's "I'd" is left as said)
 _WOULD = re.compile(r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)['’]d\b", re.IGNORECASE)
+# "would probably like", "could really use": a hedge after the helping verb is the speaker's
+# doubt, the want unchanged (``want_hedges``)
+_HEDGE = r"(?:\s+(?:" + phrase_alternatives("want_hedges") + r"))?"
+
+
+def _hedged(key: str) -> str:
+    """The phrases of ``key`` as alternatives, each with an optional hedge after its first
+    word ("would probably like")."""
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(
+        re.escape(first) + _HEDGE + "".join(r"\s+" + re.escape(w) for w in rest)
+        for first, *rest in (p.split() for p in phrases)
+    )
+
+
+# "might want", "may want" said of a name are the same want put tentatively (``tentative_wants``)
 _WANTING = re.compile(
-    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:" + phrase_alternatives("modal_wants") + r")"
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:"
+    + _hedged("modal_wants")
+    + "|"
+    + _hedged("tentative_wants")
+    + r")"
     r"(?=\s+" + _WANTED + ")",
     re.IGNORECASE,
 )

@@ -20,6 +20,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     describing_participles,
     inflections,
 )
+from assistantx.agents.symbolic.reading.role_destination import names_only_a_role
 from assistantx.agents.symbolic.reading.tokens import gaps
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
@@ -214,6 +215,8 @@ class OperationChooser:
                         where = None  # "..., Ivy please": the colleague addressed, not a place
                 if where is not None and names_no_place(where, (op.name, *op.verbs, op.done or "")):
                     where = None  # "off to the cleaners": which cleaner is still to ask
+                if where is not None and names_only_a_role(where):
+                    where = None  # "to my agent": whom, not where; the service asks where
                 if where is not None and where == (outside.phrase if outside else None):
                     where = self._with_detail(where, op, lexed, outside, whole)
                 where = where or destination

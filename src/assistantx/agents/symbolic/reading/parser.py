@@ -107,6 +107,7 @@ from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
+from assistantx.agents.symbolic.reading.numeral_one import numeral_ones
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
 from assistantx.agents.symbolic.reading.offer_reply import (
@@ -281,6 +282,7 @@ class InstructionParser:
         text = spelled_has_is(text)
         # "my stapler's broken so can I borrow Wang's": the "so" starts the ask, as after a comma
         text = consequence_boundaries(text)
+        text = numeral_ones(text)  # "coffee for me and 1 for Wang": one more, Wang's
         # "I'm borrowing Wang's for the afternoon": the speaker's taking, asked of Wang
         text = announced_borrowings(text, self.screen.terms.is_person_word)
         # "get Wang to sign my contract, and a coffee for me": "and get a coffee for me"

@@ -1,0 +1,123 @@
+"""A send-out's "to" phrase that names only someone's role ("courier my book to my agent pls",
+"to my lawyer", "to our accountant") says whom, never where (``reading.role_destination``): the
+service asks its own question for where it goes, never sends the thing "to my agent". A place
+("Westgate branch", "the client's office") or an address ("the lawyer at 12 High Street") is
+where, and is sent as said; so is an outside firm said by its role ("the supplier", "the
+client", "our lawyers"), as the project read it before."""
+
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+import pytest
+
+from assistantx.agents.symbolic.reading.role_destination import names_only_a_role
+from assistantx.core.office import Office, parse_office
+from helpers.dataset_offices import HARBOUR_FILE
+from helpers.library_courier import library_courier
+from helpers.reading import frame_reader
+from helpers.yaml_files import raw_yaml
+
+
+@functools.cache
+def _harbour_courier() -> Office:
+    """Harbour with a courier at its post desk that sends a document out, asking "the
+    address" when none is said."""
+    raw: dict[str, Any] = raw_yaml(HARBOUR_FILE)
+    raw["operations"].append(
+        {
+            "id": "courier",
+            "name": "send by courier",
+            "verbs": ["courier"],
+            "input": "document",
+            "sends_out": True,
+            "destination_asked": "the address",
+        }
+    )
+    raw["facilities"].append(
+        {
+            "id": "courier_point",
+            "name": "courier point",
+            "location": "post_desk",
+            "operations": ["courier"],
+            "guards": ["mark"],
+            "products": [],
+        }
+    )
+    return parse_office(raw)
+
+
+_LIBRARY = frame_reader(library_courier, "wu")
+_HARBOUR = frame_reader(_harbour_courier, "will")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "courier my book to my agent pls",  # the class's analogue
+        "courier my book to my lawyer",
+        "courier my book to our accountant",
+        "courier my book to her solicitor",
+        "courier my book to my literary agent please",
+    ],
+)
+def test_a_role_is_no_destination_in_the_library(text: str) -> None:
+    frame = _LIBRARY(text)
+    assert not frame.tasks, frame
+    assert frame.question == "Where should I courier it to? Please give me the branch.", frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["courier my document to my solicitor", "courier my document to our publisher thanks"],
+)
+def test_a_role_is_no_destination_on_harbour(text: str) -> None:
+    frame = _HARBOUR(text)
+    assert not frame.tasks, frame
+    assert frame.question == "Where should I courier it to? Please give me the address.", frame
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        # must not change: a place, an address, a place of the role
+        ("courier my book to Westgate branch", "Westgate branch"),
+        ("courier my book to the lawyer at 12 High Street", "the lawyer at 12 High Street"),
+        ("courier my book to the client's office", "the client's office"),
+        ("courier my book to the central library", "the central library"),
+        # an outside firm said by its role, read as where before this and kept so
+        ("courier my book to the lawyer", "the lawyer"),
+        ("courier my book to the client", "the client"),
+        ("courier my book to our lawyers", "our lawyers"),
+    ],
+)
+def test_a_place_or_an_address_is_sent_to(text: str, where: str) -> None:
+    frame = _LIBRARY(text)
+    assert frame.question is None, frame
+    assert [(t.item, t.destination) for t in frame.tasks] == [("book", where)], frame
+
+
+def test_an_address_after_a_role_is_sent_to_on_harbour() -> None:
+    frame = _HARBOUR("courier my document to my solicitor at 4 Quay Street")
+    assert frame.question is None, frame
+    assert [t.destination for t in frame.tasks] == ["my solicitor at 4 Quay Street"], frame
+
+
+@pytest.mark.parametrize(
+    ("phrase", "role"),
+    [
+        ("my agent", True),
+        ("my lawyer pls", True),
+        ("our new accountant", True),
+        ("Westgate branch", False),
+        ("Agent Smith", False),
+        ("the lawyer at 12 High Street", False),
+        ("the client's office", False),
+        ("the bank", False),
+        ("the supplier", False),
+        ("our lawyers", False),
+    ],
+)
+def test_names_only_a_role(phrase: str, role: bool) -> None:
+    assert names_only_a_role(phrase) is role
