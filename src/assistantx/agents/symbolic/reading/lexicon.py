@@ -68,6 +68,7 @@ from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
+from assistantx.agents.symbolic.reading.unapostrophed import unapostrophed
 from assistantx.agents.symbolic.reading.verb_named_places import (
     clipped_verb_places,
     in_a_place_slot,
@@ -466,12 +467,16 @@ class Lexicon:
                 joined = key.replace(" ", "") if " " in key else ""
                 # "bills of lading": a name "N of M" is made plural on its head, N
                 head_plural = language.head_plural(key)
+                # "carpenters rule": a possessive word of the name written without its
+                # apostrophe, as people type it ("carpenter's rule")
+                bare = key_of(unapostrophed(name))
                 for variant in (
                     key,
                     _plural(key),
                     head_plural,
                     joined,
                     _plural(joined) if joined else "",
+                    bare if bare != key else "",
                 ):
                     if variant:
                         lex.items.setdefault(variant, t.id)
