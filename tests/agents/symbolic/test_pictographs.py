@@ -18,7 +18,7 @@ _default = frame_reader(default_office, "lee")
     ("text", "kept"),
     [
         ("no marker 😩", "no marker"),
-        ("a pen 🙏🏽 thx", "a pen thx"),  # a skin-tone modifier goes with its emoji
+        ("a pen 🙏🏽 thx", "a pen, thx"),  # a skin-tone modifier goes with its emoji
         ("👨‍💻 print my file", "print my file"),  # joined by zero-width joiners
         ("ok ❤️", "ok"),  # a variation selector
         ("Zoë's pen", "Zoë's pen"),  # letters of any script stay

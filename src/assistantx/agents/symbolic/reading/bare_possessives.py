@@ -9,9 +9,10 @@ typo correction, which would otherwise make "ottos" plain "otto" ("bring Otto th
 Otto would receive his own ruler). An English word ("hunters pad", "marks ruler") is the
 possessive only where the colleague it names keeps that item (Hunter has a pad): otherwise
 ("bills ruler" where Bill has none) it is left as written, and whose is not taken from the
-word. "James' ruler" is already a possessive (the tokenizer's "s'"). A word of English's
-closed classes ("this", "his") is never a possessive, even where a colleague is called by it
-without its "s" ("Thi").
+word: the two readings (Bill's, which he lacks, or anyone's) then lead to different errands,
+so ``doubted_possessives`` names it for the reader to ask which. "James' ruler" is already
+a possessive (the tokenizer's "s'"). A word of English's closed classes ("this", "his") is
+never a possessive, even where a colleague is called by it without its "s" ("Thi").
 """
 
 from __future__ import annotations
@@ -91,3 +92,35 @@ def _may_be_a_possessive(word: str, item: str, kept: Collection[str]) -> bool:
         base = word[:-1]
         return item in kept and any(base in forms for forms in language.lemmas(word).values())
     return True
+
+
+def doubted_possessives(
+    tokens: Sequence[Token],
+    names: Collection[str],
+    item_words: Collection[str],
+    owned: Mapping[str, Collection[str]],
+) -> list[tuple[str, str, str]]:
+    """The (name, item word, word as written) of each English word that is a colleague's
+    name plus "s", right before an item that colleague keeps none of ("can u grab bills
+    ruler": ("bill", "ruler", "bills") where Bill keeps no ruler). The writer may mean
+    Bill's (whom to ask for it) or the plain word (anyone's): different errands, and
+    nothing in the words decides, so the reader asks rather than pick one."""
+    out: list[tuple[str, str, str]] = []
+    for n, t in enumerate(tokens):
+        item = _item_after(tokens, n, names, item_words)
+        if item is None or t.possessive:
+            continue
+        word = t.word
+        base = word[:-1]
+        if (
+            word.endswith("s")
+            and len(word) > _SHORTEST_NAME
+            and base in names
+            and word not in names
+            and word not in _FUNCTION_WORDS
+            and language.is_english_word(word)
+            and item not in owned.get(base, ())
+            and any(base in forms for forms in language.lemmas(word).values())
+        ):
+            out.append((base, item, t.text))
+    return out

@@ -27,7 +27,10 @@ from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from assistantx.agents.symbolic.reading.asking_forms import asking_forms, done_forms, event_noun
-from assistantx.agents.symbolic.reading.bare_possessives import read_bare_possessives
+from assistantx.agents.symbolic.reading.bare_possessives import (
+    doubted_possessives,
+    read_bare_possessives,
+)
 from assistantx.agents.symbolic.reading.called_by import only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_given import clipped_owner, given_name_clips
 from assistantx.agents.symbolic.reading.clipped_names import (
@@ -65,6 +68,7 @@ from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
+from assistantx.agents.symbolic.reading.unapostrophed import unapostrophed
 from assistantx.agents.symbolic.reading.verb_named_places import (
     clipped_verb_places,
     in_a_place_slot,
@@ -463,12 +467,16 @@ class Lexicon:
                 joined = key.replace(" ", "") if " " in key else ""
                 # "bills of lading": a name "N of M" is made plural on its head, N
                 head_plural = language.head_plural(key)
+                # "carpenters rule": a possessive word of the name written without its
+                # apostrophe, as people type it ("carpenter's rule")
+                bare = key_of(unapostrophed(name))
                 for variant in (
                     key,
                     _plural(key),
                     head_plural,
                     joined,
                     _plural(joined) if joined else "",
+                    bare if bare != key else "",
                 ):
                     if variant:
                         lex.items.setdefault(variant, t.id)
@@ -671,6 +679,15 @@ class Lexicon:
         out = self.verb_phrases.join(out, text)
         # "vac my prep": a compound verb said by its first word, clipped ("vac pack")
         return self.clipped_verbs.read(out, self._known)
+
+    def doubted_possessives(self, text: str) -> list[tuple[str, str, str]]:
+        """The (name word, item word, word as written) of each "<name>s ITEM" in ``text``
+        where the name is also an English word and its colleague keeps no such item: Bill's,
+        or anyone's?
+        Read on the tokens before correction, as ``read_bare_possessives``."""
+        return doubted_possessives(
+            tokenize(text), self._one_word_names, self._item_openers, self._owned_openers
+        )
 
     @functools.cached_property
     def _one_word_names(self) -> frozenset[str]:

@@ -133,6 +133,7 @@ from assistantx.agents.symbolic.reading.parts import (
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.pictographs import without_pictographs
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
+from assistantx.agents.symbolic.reading.possessive_choice import with_possessive_chosen
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
@@ -597,6 +598,10 @@ class InstructionParser:
                 break
             if frame.question is not None and frame.question.startswith(OUT_OR_IN):
                 frame = self._out_or_in(text, requester, answer, frame)
+                continue
+            chose = with_possessive_chosen(self.lex, text, frame.question or "", answer)
+            if chose is not None:  # "grab bills ruler" → "Bill's ruler, or any?" → "any"
+                text, frame = chose, self.parse(chose, requester)
                 continue
             one_of = with_one_of_group(self.lex, text, frame.question or "", answer)
             if one_of is not None:  # "Should the stapler go to Wang, or to Sun?" "Wang"

@@ -44,6 +44,7 @@ from assistantx.agents.symbolic.reading.outsider_owner import (
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.owned_facility import runs_into_a_noun
 from assistantx.agents.symbolic.reading.possessed_thing import possessed
+from assistantx.agents.symbolic.reading.possessive_choice import theirs_or_any
 from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
@@ -201,6 +202,7 @@ class MentionReader:
             mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
         doubts = ([inside] if inside else []) + self._doubts(tokens, settled, outside)
+        doubts += self._possessive_doubts(lexed.text)
         return Readings(
             lexed.text,
             tokens,
@@ -404,6 +406,18 @@ class MentionReader:
                     "pass on files, and run errands at the office machines. What would you "
                     "like me to do?"
                 )
+        return out
+
+    def _possessive_doubts(self, text: str) -> list[str]:
+        """ "grab bills ruler" where Bill keeps no ruler: Bill's (which he lacks) or any
+        ruler are different errands, so ask which (``bare_possessives``)."""
+        out: list[str] = []
+        for word, item, _ in self.lex.doubted_possessives(text):
+            ids = {*self.lex.people.get(word, ()), *self.lex.name_words.get(word, ())}
+            if len(ids) != 1 or not self.office.is_person(next(iter(ids))):
+                continue  # a name several people share is asked about as such
+            name = self.office.person(next(iter(ids))).name
+            out.append(theirs_or_any(name, item))
         return out
 
     def _unsupported_facility(self, facility_id: str) -> bool:

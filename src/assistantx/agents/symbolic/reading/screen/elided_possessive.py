@@ -2,7 +2,10 @@
 coffee too" asks for Wang's stapler and a coffee, not Wang's coffee. English leaves the noun
 out of "X's" (and "mine") only where the listener already has it, so the thing meant is the
 nearest one named *before* the possessive; a noun named after it fills it only where nothing
-was named before ("can I have Wang's? the stapler, I mean").
+was named before ("can I have Wang's? the stapler, I mean"). A thing's word said bare after
+a preposition of time or going ("took the stapler *to lunch*", "*at lunch*") names an
+occasion, not a thing anyone holds, so it is never what the possessive means
+(``things_named``).
 
 The rule reads the whole message (its tokens and the lexicon's mentions), because the piece
 the possessive stands in may have lost the clause that named the thing ("my stapler's
@@ -13,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
 
 
@@ -20,7 +24,7 @@ def elided_item(lexed: Lexed, word: str) -> str | None:
     """The item type id the elided possessive ``word`` ("Wang's", "mine") of the message
     ``lexed`` stands for: the last item named before it, else the first named after it; None
     where the message names no item, or where ``word`` is not found as such a possessive."""
-    items = [m for m in lexed.mentions if m.kind == "item"]
+    items = things_named(lexed.tokens, lexed.mentions)
     if not items:
         return None
     at = _position(lexed, word)
@@ -31,6 +35,27 @@ def elided_item(lexed: Lexed, word: str) -> str | None:
         return before[-1].ids[0]
     after = [m for m in items if m.start > at]
     return after[0].ids[0] if after else None
+
+
+# "to lunch", "at lunch", "after lunch": a bare noun after these names when or where, an
+# occasion; with a determiner ("to the stapler", "after my lunch") it is a thing again
+_OCCASION_PREPOSITIONS = frozenset(
+    {"to", "at", "after", "before", "during", "over", "till", "until", "from"}
+)
+
+
+def things_named(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[Mention]:
+    """The item mentions of ``mentions`` that name a thing, in order: not those said bare
+    right after a preposition of time or going ("took the stapler to lunch": lunch is when,
+    not a thing), which an elided possessive never means."""
+    return [
+        m
+        for m in mentions
+        if m.kind == "item"
+        and not (
+            m.start > 0 and tokens[m.start - 1].word in _OCCASION_PREPOSITIONS and not m.possessive
+        )
+    ]
 
 
 def _position(lexed: Lexed, word: str) -> int | None:

@@ -11,7 +11,10 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.described_one import described_ones
-from assistantx.agents.symbolic.reading.screen.elided_possessive import elided_item
+from assistantx.agents.symbolic.reading.screen.elided_possessive import (
+    elided_item,
+    things_named,
+)
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.own_one import own_ones
 from assistantx.agents.symbolic.reading.screen.pieces import Message
@@ -211,7 +214,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     evidence: list[Evidence] = []
 
     def last_item(before: str, word: str) -> str | None:
-        items = [m for m in terms.lex.scan(terms.lex.tokens(before)) if m.kind == "item"]
+        tokens = terms.lex.tokens(before)
+        items = things_named(tokens, terms.lex.scan(tokens))  # never "to lunch": when
         if items:
             return terms.office.item_type(items[-1].ids[0]).name
         # not in this piece: the nearest thing named before it in the whole message ("my
