@@ -106,3 +106,29 @@ def test_a_name_or_a_number_keeps_its_sign(text: str) -> None:
     """Neighbours: "&" between capitalised words is a firm's name; "+" before digits a phone
     number."""
     assert signs_as_and(text) == text
+
+
+def test_chats_n_between_words_is_and() -> None:
+    assert signs_as_and("print my report n bring me a coffee") == (
+        "print my report and bring me a coffee"
+    )
+    assert signs_as_and("scan my form n send the pdf to Grace") == (
+        "scan my form and send the pdf to Grace"
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["take my document to room N please", "play some rock 'n' roll", "desk 4 n 5", "n"],
+)
+def test_an_n_that_is_no_chat_and_is_left_alone(text: str) -> None:
+    """Neighbours: a capital N (an initial, a room), "'n'" in a set phrase, an "n" after a
+    number, a lone "n"."""
+    assert signs_as_and(text) == text
+
+
+def test_chats_n_joins_two_requests() -> None:
+    """ "print my file n get Zhang a coffee": both parts, as with "and" (main asked what to do
+    with the coffee)."""
+    frame = _DEFAULT("print my file n get Zhang a coffee")
+    assert _parts(frame) == [("print", "file", "wang"), ("produce", "coffee", "zhang")]

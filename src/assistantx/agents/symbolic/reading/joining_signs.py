@@ -3,7 +3,9 @@ document & bring me a water". Chat writes "+" and "&" for "and"; set off by spac
 what is around them, so they are read as the word and every stage after reads the request as
 if "and" were written. Left alone: a sign inside a word ("R&D", "Q&A", "C++"), a "+" before a
 number ("+44 20 7946 0000": a phone number), and an "&" between two capitalised words, which
-is a firm's or a place's name ("Harlow & Sons", "Hartwell & Co")."""
+is a firm's or a place's name ("Harlow & Sons", "Hartwell & Co"). Chat's lower-case "n" set off by
+spaces between two words ("scan my form n send the pdf to Grace") is "and" as well; a capital
+"N" may be an initial, and "'n'" ("rock 'n' roll") is no lone letter."""
 
 from __future__ import annotations
 
@@ -13,13 +15,16 @@ import re
 _PLUS = re.compile(r"(?<=[^\s+&])\s+\+\s+(?=[^\s\d+&])")
 # "&" with a space on at least one side, between two things said
 _AMPERSAND = re.compile(r"(?<=[^\s+&])(?:\s+&\s*|\s*&\s+)(?=[^\s+&])")
+# chat's "n" for "and": a lone lower-case letter between two words
+_CHAT_N = re.compile(r"(?<=[^\W\d_])\s+n\s+(?=[^\W\d_])")
 _WORD_BEFORE = re.compile(r"(\S+)$")
 _WORD_AFTER = re.compile(r"^(\S+)")
 
 
 def signs_as_and(text: str) -> str:
-    """``text`` with every joining "+" or "&" written as "and"."""
+    """``text`` with every joining "+", "&" or chat's "n" written as "and"."""
     text = _PLUS.sub(" and ", text)
+    text = _CHAT_N.sub(" and ", text)
 
     def joined(match: re.Match[str]) -> str:
         before = _WORD_BEFORE.search(text[: match.start()])
