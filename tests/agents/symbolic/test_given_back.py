@@ -128,6 +128,9 @@ async def test_the_run_collects_from_the_speaker_and_hands_to_the_owner(
         default_office() if office == "default" else harbour_office(), requester, text
     )
     assert run.stm.trace.outcome == "done"
+    # the summary says it went back, in words, never "X now has X's stapler"
+    thing = item.split(":")[0]
+    assert f"now has their {thing} back" in run.stm.trace.summary, run.stm.trace.summary
     codes = [(c.person, c.purpose, c.item) for c in run.sim.codes]
     assert codes == [(requester, "deposit", item), (owner, "collect", item)]
     assert run.sim.world.holder[item] == owner

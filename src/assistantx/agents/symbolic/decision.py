@@ -291,10 +291,15 @@ class Decider:
             template = spec.done_consumed  # nothing was handed back
             if op.sends_out and task.destination and spec.done_sent:
                 template = spec.done_sent  # "your form was faxed to the tax office"
+        said_whose = whose_item(owner)
+        if task.kind == "transfer" and owner not in (None, requester) and owner == task.recipient:
+            # a thing given back: "Wang Fang now has their stapler back", not "... has Wang
+            # Fang's stapler"
+            said_whose = f"their {item} back"
         text = template.format(
             to=who(task.recipient),
             have="have" if task.recipient == requester else "has",
-            whose=whose_item(owner),
+            whose=said_whose,
             owner_s=whose(task.owner),
             file=file_noun(self.office),
             item=item,
