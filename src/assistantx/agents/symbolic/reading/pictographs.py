@@ -39,7 +39,9 @@ _DETERMINERS = english.words("determiners")
 
 
 def without_pictographs(text: str) -> str:
-    """``text`` with its pictographs taken out and the spaces they left closed up."""
+    """``text`` with its pictographs taken out and the spaces they left closed up; one (or a
+    run) between two words is a comma ending the clause before it, or a space after a
+    determiner ("a ☕ from the kitchen")."""
     if text.isascii():
         return text
     marked = "".join(_MARK if _pictographic(c) else c for c in text)
