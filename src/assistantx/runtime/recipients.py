@@ -723,6 +723,15 @@ def _frame(office: Office, stm: ShortTermMemory) -> TaskFrame:
     return shared_parser(office).parse_with_answers(stm.text, stm.requester, answers)
 
 
+def _frame_if_confirmed(office: Office, stm: ShortTermMemory) -> TaskFrame:
+    """The reader's frame of the request as if the requester had said yes to its question
+    (a "Shall I ...?"); a question that is no such offer leaves no tasks."""
+    from assistantx.agents.symbolic.reading.parser import shared_parser
+
+    answers = [*stm.requester_answers(), "yes"]
+    return shared_parser(office).parse_with_answers(stm.text, stm.requester, answers)
+
+
 def _written_by_requester(office: Office, stm: ShortTermMemory) -> set[str]:
     """Everyone a name in the requester's own words may mean (the instruction and their
     messages in their own chat)."""
@@ -741,6 +750,12 @@ def named_doers(office: Office, stm: ShortTermMemory) -> set[str]:
     or doing place (``named_recipients``) and the doers of the reader's frame of the request
     whom the requester's own words name."""
     frame = _frame(office, stm)
+    if not frame.tasks and frame.question is not None:
+        # The reader asked "Shall I get your form signed by Hal ...?" and no answer came (an
+        # LLM reasoner or the optimal policy need not ask): the doer of the reading it asked
+        # about is still the one the requester's words name in that role. Only doers come
+        # from it, and the work puts the item back in the locker.
+        frame = _frame_if_confirmed(office, stm)
     doers = {t.actor for t in frame.tasks if t.actor and t.actor != stm.requester}
     if doers:
         doers &= _written_by_requester(office, stm)
