@@ -28,6 +28,14 @@ _taos = frame_reader(default_with_two_taos, "lee")
 _grants = frame_reader(harbour_with_grants, "may")
 
 
+def test_an_unranked_family_name_yields_to_the_given_name() -> None:
+    # Lucía Grant has no rank before her family name: "Grant" alone is Grant Osei, as
+    # colleagues of an English-named office speak (``given_name_meant``); Morgan stays asked
+    # because Priya Morgan is "Inspector Morgan"
+    assert _recipients(_grants("give my file to Grant")) == ["ray"]
+    assert _recipients(_grants("give my file to Ms Grant")) == ["faith"]
+
+
 def _recipients(frame: TaskFrame) -> list[str | None]:
     assert frame.question is None and frame.decline is None, frame
     return [t.recipient for t in frame.tasks]
@@ -53,11 +61,6 @@ def test_the_shared_word_is_asked(text: str) -> None:
     [
         (_taos, "take my document to Tao", "Who do you mean by 'Tao': Tao Hao or Lin Tao?"),
         (_taos, "Tao needs a stapler", "Who do you mean by 'Tao': Tao Hao or Lin Tao?"),
-        (
-            _grants,
-            "give my file to Grant",
-            "Who do you mean by 'Grant': Lucía Grant or Grant Osei?",
-        ),
     ],
 )
 def test_in_either_order_of_names(reader: ReadFrame, text: str, asked: str) -> None:

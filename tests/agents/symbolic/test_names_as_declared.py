@@ -1,10 +1,12 @@
 """A one-word name means whom the office file says it is used for: a title with a surname
 ("Dr Ellis") the one addressed so, a role with its qualifier ("the practice manager") the one
 with that whole role, never everyone who shares the word or the role noun (blind round 4,
-classes A1-A4; own office and sentences). A bare alias ("Ellis") that is also another
-colleague's family name (Dawn Ellis) is asked about: English calls her Ellis too
-(``family_of_another``; round 81's class, before which the alias won silently); an item only
-one of them owns still says whose it is."""
+classes A1-A4; own office and sentences). A bare alias ("Ellis") that is Ellis Grant's given name
+and Dawn Ellis's family name is his: colleagues speak of her as "Dr Ellis", of him as "Ellis"
+(``given_name_meant``: outside testers of English-named offices expected the given name every
+time); a family name the office writes after a rank is still asked about (round 81's
+"Inspector Morgan", ``family_of_another``); an item only one of them owns still says whose it
+is."""
 
 from __future__ import annotations
 
@@ -59,15 +61,10 @@ def test_a_name_goes_to_whom_the_office_calls_so(text: str, who: str) -> None:
     assert [t[2] for t in _parties(text)] == [who]
 
 
-def test_a_bare_alias_that_is_anothers_family_name_is_asked() -> None:
-    frame = clinic_with_declared_names().parse("take my form to Ellis", "ines")
-    assert frame.tasks == [], frame
-    assert frame.question == "Who do you mean by 'Ellis': Dawn Ellis or Ellis Grant?", frame
-    for answer, who in (("Ellis Grant", "grant"), ("Dr Ellis", "dawn")):
-        answered = clinic_with_declared_names().parse_with_answers(
-            "take my form to Ellis", "ines", [answer]
-        )
-        assert [t.recipient for t in answered.tasks] == [who], (answer, answered)
+def test_a_bare_alias_that_is_his_given_name_and_her_family_name_is_his() -> None:
+    assert [t[2] for t in _parties("take my form to Ellis")] == ["grant"]
+    assert [t[2] for t in _parties("take my form to Dr Ellis")] == ["dawn"]
+    assert [t[2] for t in _parties("take my form to Ellis Grant")] == ["grant"]
 
 
 def test_a_possessive_bare_alias_is_its_person() -> None:

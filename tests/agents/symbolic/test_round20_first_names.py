@@ -1,8 +1,8 @@
 """A word that is one colleague's first name and another's family name (blind rounds 20-22's
 class, on ``helpers.galley``, an airline catering unit no sentence was written for: Cliff
 Adebayo and Marcus Cliff). Colleagues are called by their first names: "cliff's running
-order" is Cliff Adebayo's where he keeps one, or asked which Cliff; never Marcus Cliff's
-without asking, even where only Marcus Cliff keeps a running order."""
+order" is Cliff Adebayo's where he keeps one (also where both do, ``given_name_meant``);
+never Marcus Cliff's without asking, even where only Marcus Cliff keeps a running order."""
 
 from __future__ import annotations
 
@@ -51,13 +51,16 @@ def test_only_cliff_adebayo_keeps_one_and_it_is_his(text: str) -> None:
 
 
 @pytest.mark.parametrize(
-    ("answer", "owner"), [("Cliff Adebayo.", "cliff"), ("Marcus Cliff", "marcus")]
+    ("text", "owner"),
+    [
+        ("can you bring me cliff's running order", "cliff"),
+        ("can you bring me Marcus Cliff's running order", "marcus"),
+        ("can you bring me marcus's running order", "marcus"),
+    ],
 )
-def test_both_keep_one_and_the_answer_says_whose(answer: str, owner: str) -> None:
-    p = parser_for(galley)
-    text = "can you bring me cliff's running order"
-    assert p.parse(text, "nia").question is not None
-    frame = p.parse_with_answers(text, "nia", [answer])
+def test_both_keep_one_and_the_given_name_says_whose(text: str, owner: str) -> None:
+    frame = parser_for(galley).parse(text, "nia")
+    assert frame.question is None, frame.question
     assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("running_order", owner, "nia")
     ]

@@ -26,6 +26,7 @@ from assistantx.agents.symbolic.reading.destination import (
 from assistantx.agents.symbolic.reading.destination_detail import naming_words
 from assistantx.agents.symbolic.reading.errand import errand_verbs, facility_pronouns
 from assistantx.agents.symbolic.reading.event_clause import in_later_event
+from assistantx.agents.symbolic.reading.given_name_meant import GivenNameMeant
 from assistantx.agents.symbolic.reading.lexicon import (
     COMMON,
     PRONOUNS,
@@ -33,6 +34,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     Lexicon,
     Mention,
     describing_participles,
+    key_of,
 )
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.outsider_owner import (
@@ -111,6 +113,7 @@ class MentionReader:
     def __init__(self, office: Office, lex: Lexicon) -> None:
         self.office = office
         self.lex = lex
+        self._given_name = GivenNameMeant(office, key_of, lex.family, lex.bare)
         # the words of what the office's services make and of the services' names ("PDF" of
         # "scanned PDF", "scan to PDF"): said after "to"/"into"/"as", the form of a result
         # ("scan my waybill to PDF"), never someone to look up
@@ -201,6 +204,7 @@ class MentionReader:
         if outside is not None:
             mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
+        settled = self._given_name.settle(tokens, settled)  # "need frank to sign ..."
         doubts = ([inside] if inside else []) + self._doubts(tokens, settled, outside)
         doubts += self._possessive_doubts(lexed.text)
         return Readings(

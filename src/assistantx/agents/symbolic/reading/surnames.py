@@ -85,3 +85,21 @@ def after_title(prev: str) -> bool:
 
 def _words(name: str) -> list[str]:
     return language.fold(name).replace(".", " ").split()
+
+
+def given_names(office: Office, key: Callable[[str], str]) -> dict[str, set[str]]:
+    """The given name of each person of several name words, by ``key`` → the people whose
+    given name it is; empty for an office that writes family names first (there a bare name
+    is not read as the given one, ``given_name_meant``). A person whose own titled alias puts
+    their family name first ("Ms Nguyễn" of Nguyễn Thị Mai) has their last word as given."""
+    if family_first(office):
+        return {}
+    found: dict[str, set[str]] = {}
+    for p in office.people:
+        words = p.name.split()
+        if len(words) < 2:
+            continue
+        at = -1 if _own_order(p.name, p.aliases) == 0 else 0
+        if k := key(words[at]):
+            found.setdefault(k, set()).add(p.id)
+    return found
