@@ -26,6 +26,7 @@ def test_the_rules_in_priority_order() -> None:
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
+        "thanks",  # an acknowledgement said back ("crystal clear, thanks!", "will do")
         "statement",  # how a question beside it is meant ("just curious", "no rush")
         "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
         "statement",  # an event and its time after a request ("..., ground run in 10")

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
+from assistantx.agents.symbolic.reading.screen.acknowledgement import acknowledgement
 from assistantx.agents.symbolic.reading.screen.asked_doer import asked_doer
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
@@ -102,6 +103,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("wish", wish),
     ("wish", hope),
     ("thanks", thanks),
+    # "crystal clear, thanks!", "will do": said back, before a word of it is read as a name
+    ("thanks", acknowledgement),
     ("statement", curious),
     ("statement", asks_for_time),
     # "..., ground run in 10": an event's name and its time after a request, never a
