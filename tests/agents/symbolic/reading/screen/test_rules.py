@@ -46,6 +46,7 @@ def test_the_rules_in_priority_order() -> None:
         # before its place ("..., need to check levels on L2") is read as a placement
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
+        "unsupported",  # a thing put in a vehicle or a home ("put my book in my car")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
         "fact",
         "statement",  # when someone will be back ("back in an hour"), no thing to fetch

@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_send_out import others_send_out
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
+from assistantx.agents.symbolic.reading.screen.outside_vehicle import outside_vehicle
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
@@ -131,6 +132,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_doing),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
+    # "put Wang's stapler in my car": a vehicle or a home is outside, after "chuck it in
+    # the van" is asked
+    ("unsupported", outside_vehicle),
     ("statement", elliptical_reason),
     ("fact", fact),
     ("statement", back_when),
