@@ -48,9 +48,11 @@ def test_the_rules_in_priority_order() -> None:
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "unsupported",  # a thing put in a vehicle or a home ("put my book in my car")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
+        "statement",  # who deals with a fault ("..., Wang is on it"), before it is a whereabouts
         "fact",
         "statement",  # when someone will be back ("back in an hour"), no thing to fetch
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
+        "statement",  # a fault told with its auxiliary dropped ("printer jammed again")
         "statement",  # a thing of an occasion beside a request ("need a copy of the new signing")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)

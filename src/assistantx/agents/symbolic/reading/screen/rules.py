@@ -8,6 +8,7 @@ from collections.abc import Callable
 from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
 from assistantx.agents.symbolic.reading.screen.acknowledgement import acknowledgement
 from assistantx.agents.symbolic.reading.screen.asked_doer import asked_doer
+from assistantx.agents.symbolic.reading.screen.bare_fault import bare_fault
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
@@ -16,6 +17,7 @@ from assistantx.agents.symbolic.reading.screen.counted_reason import counted_rea
 from assistantx.agents.symbolic.reading.screen.covert import covert
 from assistantx.agents.symbolic.reading.screen.curious import asks_for_time, curious
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
+from assistantx.agents.symbolic.reading.screen.dealing import dealing
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
@@ -136,9 +138,13 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # the van" is asked
     ("unsupported", outside_vehicle),
     ("statement", elliptical_reason),
+    # "..., Wang is on it": who deals with a fault, before "is on" is read as a whereabouts
+    ("statement", dealing),
     ("fact", fact),
     ("statement", back_when),
     ("statement", facility_report),
+    # "printer jammed again": a fault told with its auxiliary dropped
+    ("statement", bare_fault),
     # "..., need a copy of the new signing": a thing of an occasion, why it is asked
     ("statement", event_of),
     ("statement", doing_after),
