@@ -53,6 +53,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # when someone will be back ("back in an hour"), no thing to fetch
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
         "statement",  # a fault told with its auxiliary dropped ("printer jammed again")
+        "statement",  # an owner's leave to keep their thing ("Wang can keep my stapler")
         "statement",  # a thing of an occasion beside a request ("need a copy of the new signing")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)

@@ -46,6 +46,7 @@ from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.own_use import own_use
 from assistantx.agents.symbolic.reading.screen.owned_head import several_owned_heads
+from assistantx.agents.symbolic.reading.screen.owner_leave import owner_leave
 from assistantx.agents.symbolic.reading.screen.past_event import past_event
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
@@ -145,6 +146,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", facility_report),
     # "printer jammed again": a fault told with its auxiliary dropped
     ("statement", bare_fault),
+    # "Wang can keep my stapler for now": an owner's leave, told
+    ("statement", owner_leave),
     # "..., need a copy of the new signing": a thing of an occasion, why it is asked
     ("statement", event_of),
     ("statement", doing_after),
