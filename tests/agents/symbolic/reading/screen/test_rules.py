@@ -26,6 +26,7 @@ def test_the_rules_in_priority_order() -> None:
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
+        "thanks",  # an acknowledgement said back ("crystal clear, thanks!", "will do")
         "statement",  # how a question beside it is meant ("just curious", "no rush")
         "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
         "statement",  # an event and its time after a request ("..., ground run in 10")
@@ -45,10 +46,14 @@ def test_the_rules_in_priority_order() -> None:
         # before its place ("..., need to check levels on L2") is read as a placement
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
+        "unsupported",  # a thing put in a vehicle or a home ("put my book in my car")
         "statement",  # the reason after an elliptical ask ("got a loupe? want to check ...")
+        "statement",  # who deals with a fault ("..., Wang is on it"), before it is a whereabouts
         "fact",
         "statement",  # when someone will be back ("back in an hour"), no thing to fetch
         "statement",  # a facility said to be in some state ("scanner's jammed btw")
+        "statement",  # a fault told with its auxiliary dropped ("printer jammed again")
+        "statement",  # an owner's leave to keep their thing ("Wang can keep my stapler")
         "statement",  # a thing of an occasion beside a request ("need a copy of the new signing")
         "statement",  # a service's participle after a request ("... Running minipreps in 10")
         "statement",  # a need of the requester's own ("I need the tripod" after a fetch)

@@ -7,6 +7,7 @@ or the request."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.screen.addressed import only_addressed
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.asked_leave import asked_leave
@@ -158,7 +159,7 @@ class RequestScreen:
             return out
         left = spoken.left
         meant = set(content(split_words(left))) - terms.en.courtesy  # "hi," left of a statement
-        if not meant or aside(terms, left, live, kept) or _only_addressed(spoken):
+        if not meant or aside(terms, left, live, kept) or only_addressed(spoken):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)
@@ -189,22 +190,3 @@ class RequestScreen:
     def capabilities(self) -> str:
         """What this office lets the assistant do, in words (``Terms.capabilities``)."""
         return self.terms.capabilities()
-
-
-def _only_addressed(spoken: Spoken) -> bool:
-    """ "Dang, I left my stapler at home": all that is left is the colleague's name that
-    opens the message (an address, or an exclamation that is also a name), the rest told;
-    nothing is asked. "Dang, can you bring me your stapler?" keeps its request."""
-    kept = spoken.kept
-    if len(kept) != 1 or kept[0] is not spoken.msg.pieces[0] or len(spoken.msg.pieces) < 2:
-        return False
-    piece = kept[0]
-    if piece.acts.request or piece.acts.imperative or piece.acts.question is not None:
-        return False
-    mentions = piece.lexed.mentions
-    return (
-        len(mentions) == 1
-        and mentions[0].kind == "person"
-        and not mentions[0].possessive
-        and bool(spoken.live)
-    )

@@ -6,7 +6,9 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
+from assistantx.agents.symbolic.reading.screen.acknowledgement import acknowledgement
 from assistantx.agents.symbolic.reading.screen.asked_doer import asked_doer
+from assistantx.agents.symbolic.reading.screen.bare_fault import bare_fault
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
 from assistantx.agents.symbolic.reading.screen.choices import choices
 from assistantx.agents.symbolic.reading.screen.condition import condition
@@ -15,6 +17,7 @@ from assistantx.agents.symbolic.reading.screen.counted_reason import counted_rea
 from assistantx.agents.symbolic.reading.screen.covert import covert
 from assistantx.agents.symbolic.reading.screen.curious import asks_for_time, curious
 from assistantx.agents.symbolic.reading.screen.cut_off import cut_off
+from assistantx.agents.symbolic.reading.screen.dealing import dealing
 from assistantx.agents.symbolic.reading.screen.destructive import destructive
 from assistantx.agents.symbolic.reading.screen.doing_after import doing_after
 from assistantx.agents.symbolic.reading.screen.elliptical import elliptical_reason
@@ -37,11 +40,13 @@ from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_send_out import others_send_out
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
+from assistantx.agents.symbolic.reading.screen.outside_vehicle import outside_vehicle
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.own_use import own_use
 from assistantx.agents.symbolic.reading.screen.owned_head import several_owned_heads
+from assistantx.agents.symbolic.reading.screen.owner_leave import owner_leave
 from assistantx.agents.symbolic.reading.screen.past_event import past_event
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
@@ -102,6 +107,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("wish", wish),
     ("wish", hope),
     ("thanks", thanks),
+    # "crystal clear, thanks!", "will do": said back, before a word of it is read as a name
+    ("thanks", acknowledgement),
     ("statement", curious),
     ("statement", asks_for_time),
     # "..., ground run in 10": an event's name and its time after a request, never a
@@ -128,10 +135,19 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_doing),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
+    # "put Wang's stapler in my car": a vehicle or a home is outside, after "chuck it in
+    # the van" is asked
+    ("unsupported", outside_vehicle),
     ("statement", elliptical_reason),
+    # "..., Wang is on it": who deals with a fault, before "is on" is read as a whereabouts
+    ("statement", dealing),
     ("fact", fact),
     ("statement", back_when),
     ("statement", facility_report),
+    # "printer jammed again": a fault told with its auxiliary dropped
+    ("statement", bare_fault),
+    # "Wang can keep my stapler for now": an owner's leave, told
+    ("statement", owner_leave),
     # "..., need a copy of the new signing": a thing of an occasion, why it is asked
     ("statement", event_of),
     ("statement", doing_after),

@@ -1,0 +1,75 @@
+"""A thing told to go into a vehicle or a home: "put Wang's stapler in my car", "leave the
+scissors in Wang's van", "pop my book in the boot". Any verb ("put", "leave", "stick"), the
+thing, then "in"/"into"/"to" a car, a van, someone's house: that is outside the office, where
+the robot never goes, so the request is declined in words, with the reason (and, where the
+thing is a colleague's, that it would need their yes anyway). It is never "Noted" (a placement
+is a request, however its verb reads) and never read as a fetch for the requester.
+
+Where the speaker says they did it ("I put my book in my car") it is their own doing, read by
+the other rules; a place of the office ("on my desk", "in the fridge") is a delivery, read as
+before."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english, language
+
+_OUTSIDE = english.words("outside_containers") | english.words("home_nouns")
+_INTO = english.words("to_facility_prepositions")  # "in", "into", "to" ...
+_OFFICE = frozenset({"place", "facility", "group"})
+# the speaker (or a colleague) as the subject before the verb: told, not asked
+_SUBJECTS = frozenset({"i", "we", "ive", "id", "he", "she", "they", "someone", "somebody"})
+_PARTICLES = frozenset({"back", "down", "over", "up", "away", "out", "it", "them"})
+
+
+def outside_vehicle(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    del msg, requester
+    if piece.asks and not piece.acts.request:
+        return None  # "did you put it in my car?": asked about, not asked for
+    words = piece.words
+    verb = piece.verb_at(terms.en.lead_in)
+    if verb >= len(words) or not language.verb_lemmas(words[verb]):
+        return None
+    if _SUBJECTS.intersection(words[:verb]) or any(
+        m.kind == "person" and not m.possessive for m in piece.lexed.mentions
+    ):
+        return None  # "I put my book in my car", "Wang left it in his van": told
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    told = [t.word for t in tokens]
+    thing = next((m for m in mentions if m.kind in ("item", "pronoun")), None)
+    if thing is None:
+        return None
+    n = thing.end
+    while n < len(told) and told[n] in _PARTICLES:
+        n += 1  # "leave it back in the van"
+    if n >= len(told) or told[n] not in _INTO:
+        return None
+    k = n + 1
+    while k < len(told) and (told[k] in DETERMINERS or tokens[k].possessive):
+        k += 1  # "in my car", "in Wang's van"
+    if k >= len(told) or told[k] not in _OUTSIDE:
+        return None
+    if any(m.kind in _OFFICE and m.start <= k < m.end for m in mentions):
+        return None  # a place of the office that shares the word
+    owner = next(
+        (m for m in mentions if m.kind == "person" and m.possessive and m.end <= thing.start),
+        None,
+    )
+    theirs = ""
+    if owner is not None and len(owner.ids) == 1:
+        name = terms.office.person(owner.id).name
+        theirs = f" It is {name}'s, too, so it would need their yes anyway."
+    where = " ".join(t.text for t in tokens[n + 1 : k + 1])  # "my car"
+    return Finding(
+        "unsupported",
+        piece,
+        f"a place outside the office: {where}",
+        message=(
+            f"Sorry, I can't take things outside the office ({where} is not a place here): "
+            f"I only go to people and places here.{theirs} If someone here should have it, "
+            "tell me who. I did nothing."
+        ),
+    )
