@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     unanchored_it,
     with_antecedent,
 )
+from assistantx.agents.symbolic.reading.approved_use import approved_uses
 from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.back_reference_recipient import (
     chosen_recipient,
@@ -278,6 +279,8 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
+        # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
+        text = approved_uses(text)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
