@@ -89,6 +89,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
+from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -281,6 +282,8 @@ class InstructionParser:
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
         text = approved_uses(text)
+        # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
+        text = held_by_clauses(text, self.screen.terms.is_person_word)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
