@@ -165,6 +165,7 @@ from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
@@ -284,6 +285,8 @@ class InstructionParser:
         text = approved_uses(text)
         # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
         text = held_by_clauses(text, self.screen.terms.is_person_word)
+        # "take my report to Wang to get it signed? need it back": signed by Wang, to me
+        text = taken_for_service(text, self.screen.terms.is_person_word)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
