@@ -316,6 +316,8 @@ _CLAIMS = (
         "someone's agreement",
     ),
     (r"\b(said|says)\s+(it'?s\s+)?(ok|okay|fine|yes)\b", "someone's agreement"),
+    # "Pat ok'd me using it": the verb alone reports the yes
+    (r"\b(ok['’]d|okd|oked|okayed|okay['’]d)\b", "someone's agreement"),
     # "he said I could use it", "she told me I can borrow it": leave told second-hand
     (r"\b(said|says|told\s+me)\s+(i|we)\s+(can|could|may|might)\b", "someone's agreement"),
     # "she won't mind", "he wouldn't mind": agreement assumed for them

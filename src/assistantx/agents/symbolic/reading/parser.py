@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.antecedent import (
     unanchored_it,
     with_antecedent,
 )
+from assistantx.agents.symbolic.reading.approved_use import approved_uses
 from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.back_reference_recipient import (
     chosen_recipient,
@@ -88,6 +89,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
+from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -163,6 +165,7 @@ from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
@@ -278,6 +281,12 @@ class InstructionParser:
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
+        # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
+        text = approved_uses(text)
+        # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
+        text = held_by_clauses(text, self.screen.terms.is_person_word)
+        # "take my report to Wang to get it signed? need it back": signed by Wang, to me
+        text = taken_for_service(text, self.screen.terms.is_person_word)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)

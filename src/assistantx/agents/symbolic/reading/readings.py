@@ -331,7 +331,10 @@ class MentionReader:
         Harlow Dairy": a name nobody in the office has, right after a personal paper and
         "for" or "from", says what the paper is about or where it came from (a patient, a
         supplier), not someone to hand it to or fetch it from; an ordinary thing "for Bob"
-        still asks who Bob is. Only capitalised words that name nothing of the office."""
+        still asks who Bob is. Only capitalised words that name nothing of the office. After
+        "from", any thing whose owner is said by a possessive right before it ("Zhang's file
+        from Berlin", "Miles's logs from Suzuka") is the same: its owner is known, so the
+        unknown word is where it came from, not someone to fetch it from."""
         m = mentions[n]
         if not m.text[:1].isupper() or m.possessive:
             return False
@@ -352,6 +355,10 @@ class MentionReader:
         before = next((x for x in mentions if x.end == at - 1), None)  # the paper, "for"
         if before is None or before.kind != "item" or len(before.ids) != 1:
             return False
+        if tokens[at - 1].word == "from" and _owned_by_possessive(mentions, before):
+            # "Zhang's file from Berlin": the thing has its owner already, so "from" says
+            # where it came from (a place outside), whatever kind of thing it is
+            return True
         return self.office.item_type(before.id).kind == "personal"
 
     def _result_form(self, tokens: Sequence[Token], m: Mention) -> bool:
@@ -663,3 +670,15 @@ def _modifies_a_thing(tokens: Sequence[Token], m: Mention) -> bool:
     """Whether a facility's name said after "my"/"your"/... runs on into a noun ("my hydro
     session plan"): it describes the thing owned, not a service asked."""
     return m.start >= 1 and tokens[m.start - 1].word in _POSSESSIVES and runs_into_a_noun(tokens, m)
+
+
+def _owned_by_possessive(mentions: Sequence[Mention], thing: Mention) -> bool:
+    """Whether a possessive right before ``thing`` says whose it is ("Zhang's file", "my
+    file"), a word of describing between them allowed ("Zhang's budget file")."""
+    before = [x for x in mentions if x.end <= thing.start]
+    if not before:
+        return False
+    last = before[-1]
+    if last.kind == "word" and thing.start - last.end == 0 and len(before) > 1:
+        last = before[-2]  # "Zhang's *budget* file": the describing word passed over
+    return last.possessive and last.kind in ("person", "pronoun")

@@ -751,7 +751,7 @@ class SpeechActs:
     def statement(self, words: list[str]) -> bool:
         """A statement of fact, not a request: a subject, then a state or past verb, before
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
-        w = self._untitled(content(words))
+        w = self._one_word_name(self._untitled(content(words)))
         if declines_more(w, self.lex.items):
             return True  # "no more water for me thanks": the speaker wants none
         if self._service_subject(w):
@@ -1169,6 +1169,27 @@ class SpeechActs:
 
     def _named(self, word: str) -> bool:
         return word in self.lex.name_words or word in self.lex.people
+
+    def _one_word_name(self, w: list[str]) -> list[str]:
+        """The words with a name of several words that opens them said as one ("Hye-jin's
+        cans have packed in" reads as "Hyejin's cans have packed in"): a hyphen or a space
+        inside a name splits it into words, and the subject is then no name at the start, so a
+        statement about a colleague's thing was read as a request for it. The name is said by
+        a word of it that names the person alone (the joined word, else its last word), its
+        possessive "s" kept."""
+        for n in (3, 2):
+            head = w[:n]
+            if len(head) < n or len(w) == n:
+                continue
+            last = head[-1]
+            owned = last.endswith("s") and " ".join([*head[:-1], last[:-1]]) in self.lex.people
+            if not owned and " ".join(head) not in self.lex.people:
+                continue
+            bare = [*head[:-1], last[:-1]] if owned else head
+            for one in ("".join(bare), bare[-1]):
+                if self._named(one):
+                    return [one + ("s" if owned else ""), *w[n:]]
+        return w
 
     def _untitled(self, w: list[str]) -> list[str]:
         """The words without a title before the name that opens them ("Dr Osei signed it"

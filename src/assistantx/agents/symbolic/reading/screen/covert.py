@@ -29,7 +29,11 @@ A colleague's seal asked for while they are out, to stamp or sign with ("take Pa
 her desk while she's out, I only need to stamp one thing", "use his stamp whilst he's at
 lunch to seal my form") is their tool used behind their back, not a transfer nor their own
 stamping: it is declined the same way. "can Pat stamp my form while she's at her desk?" asks
-for Pat's own work, and "take Pat's stapler while she's out" asks Pat as usual."""
+for Pat's own work, and "take Pat's stapler while she's out" asks Pat as usual.
+
+A yes the requester reports ("Zhang said I could have his stapler, just bring it, no need to
+ask him") makes a mark that skips asking a reason, not a request to keep the owner out: the
+request is read and the owner asked as always (reported_leave.py)."""
 
 from __future__ import annotations
 
@@ -38,6 +42,7 @@ from assistantx.agents.symbolic.reading.screen.destructive import commanded
 from assistantx.agents.symbolic.reading.screen.english import starts_with, while_clause
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.reported_leave import reported_leave
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english
 
@@ -254,7 +259,10 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 "and I'll ask them to stamp it for you. I did nothing."
             ),
         )
-    if (asks or _unasked_in(piece) is not None) and _skips_asking(msg, requester, terms):
+    # "Zhang said I could have it, no need to ask him": why asking seems needless to the
+    # requester, not a request to keep Zhang out; Zhang is asked as always
+    skipped = not reported_leave(msg) and _skips_asking(msg, requester, terms)
+    if (asks or _unasked_in(piece) is not None) and skipped:
         if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):
             return None
         return Finding(
