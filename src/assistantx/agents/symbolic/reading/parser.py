@@ -179,6 +179,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
     unlisted_thing,
     variety_of,
 )
+from assistantx.agents.symbolic.reading.unnamed_carried import unnamed_carried
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
@@ -439,6 +440,12 @@ class InstructionParser:
             named_once=the_one_named(whole, requester),
             message_named=the_ones_named(whole, requester),
         )
+        # only where the reader would act, or would pick a facility's service: a question
+        # it asks already ("take that to Wang": what should I do?) stays the one asked
+        acts = bool(frame.tasks) or any(m.kind == "facility" for m in whole.mentions)
+        carried = unnamed_carried(whole) if acts else None
+        if carried is not None:  # "take this over to the printer": what "this" is, asked
+            return TaskFrame(requester=requester, question=carried)
         if frame.understood:
             # "a lemonade from the vending machine and Wang's stapler": the unlisted variety of
             # the one thing the facility makes is that thing, beside the other objects too
