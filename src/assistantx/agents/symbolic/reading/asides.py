@@ -10,6 +10,7 @@ import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.listed_parts import listed_as_needs
 from assistantx.agents.symbolic.reading.phrase_index import by_first_word, without_phrases
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english
@@ -59,8 +60,23 @@ _ANNOUNCED = re.compile(
 )
 
 
+# the end of the listed parts: their sentence's end
+_SENTENCE_END = re.compile(r"[.!?](?:\s|$)")
+
+
 def announced_list(text: str) -> str:
     """ "Two things: take my torch to Ida, and I need a coffee": the opening count names no
     item and asks nothing; it is dropped, so what follows is read as if said alone (never a
-    statement about "things")."""
-    return _ANNOUNCED.sub(lambda m: " " if m.start() else "", text)
+    statement about "things"). The parts in note form after it ("2 things: my report
+    printed, and Wang's stapler") are each the speaker's need (``listed_as_needs``)."""
+    out: list[str] = []
+    at = 0
+    for m in _ANNOUNCED.finditer(text):
+        if m.start() < at:
+            continue
+        out.append(text[at : m.start()] + (" " if m.start() else ""))
+        end = _SENTENCE_END.search(text, m.end())
+        stop = end.start() if end is not None else len(text)
+        out.append(listed_as_needs(text[m.end() : stop]))
+        at = stop
+    return "".join(out) + text[at:]

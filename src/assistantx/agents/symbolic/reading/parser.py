@@ -166,6 +166,7 @@ from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
+from assistantx.agents.symbolic.reading.time_clause import without_time_clauses
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
@@ -181,6 +182,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
     unlisted_thing,
     variety_of,
 )
+from assistantx.agents.symbolic.reading.unnamed_carried import unnamed_carried
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
@@ -360,9 +362,12 @@ class InstructionParser:
         text = accepted_owners(text, self.screen.terms.is_person_word)
         spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
-        frame = self._frame(
-            spoken.msg.lexed, request.text, requester, sent_out, to_self, destination
+        # "... before I sign off tonight, can you sort it?": when, not a signing asked for
+        # (after the screen, which reads "before he notices" as taking behind one's back)
+        asked = without_time_clauses(
+            request.text, self.screen.terms.is_person_word, self._task_word
         )
+        frame = self._frame(spoken.msg.lexed, asked, requester, sent_out, to_self, destination)
         screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
         if screened.answered:
             return answered_frame(screened, requester)
@@ -391,6 +396,11 @@ class InstructionParser:
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _task_word(self, word: str) -> bool:
+        """Whether ``word`` is one of the office's task words or a form of one ("prints")."""
+        cues = self.lex.cue_words
+        return word in cues or bool(language.verb_lemmas(word) & cues)
 
     def _lacks(self, clause: str) -> bool:
         """Whether ``clause`` opens with the speaker's lack of an item ("I've run out of
@@ -439,6 +449,12 @@ class InstructionParser:
             named_once=the_one_named(whole, requester),
             message_named=the_ones_named(whole, requester),
         )
+        # only where the reader would act, or would pick a facility's service: a question
+        # it asks already ("take that to Wang": what should I do?) stays the one asked
+        acts = bool(frame.tasks) or any(m.kind == "facility" for m in whole.mentions)
+        carried = unnamed_carried(whole) if acts else None
+        if carried is not None:  # "take this over to the printer": what "this" is, asked
+            return TaskFrame(requester=requester, question=carried)
         if frame.understood:
             # "a lemonade from the vending machine and Wang's stapler": the unlisted variety of
             # the one thing the facility makes is that thing, beside the other objects too

@@ -5,16 +5,47 @@ part is read as the product it is (before, it was a statement and the second pro
 dropped in silence). A facility that makes several kinds, or none, or makes its thing from an
 item ("something from the printer" may be a printout of anything, or a paper left there)
 keeps the words as said (the reader asks what is meant). The facilities and their products
-are the office's own data."""
+are the office's own data.
+
+"something salty", "anything hot": the words that describe what is wanted say only which of
+the facility's things, so one kind is that kind; a word that names a party or a place
+("something for Wang from ...") is no description and leaves the words as said."""
 
 from __future__ import annotations
 
 import re
 
+from assistantx.core import english
 from assistantx.core.office import Office
 from assistantx.core.wording import a_thing
 
 _VAGUE = r"(?:something|a\s+thing|summat|sth)"
+# "anything from the coffee machine for me?" may ask whether something came; "anything hot
+# from the coffee machine" describes what is wanted, so "anything" is vague only when described
+_ANY = r"anything"
+
+# The words that are no description of the thing: who it is for or from, whose, where,
+# when ("something for Wang from ...", "something of mine from ...").
+_NOT_DESCRIBING = sorted(
+    {
+        *english.entries("prepositions_and_joins"),
+        *english.entries("party_prepositions"),
+        *english.entries("time_prepositions"),
+        *english.entries("determiners"),
+        *english.entries("pronouns"),
+        *english.entries("object_pronouns"),
+        *english.entries("subject_pronouns"),
+        "mine",
+        "yours",
+        "please",
+    },
+    key=len,
+    reverse=True,
+)
+_WORD = r"(?!(?:{})\b)[a-z][a-z'-]*".format("|".join(re.escape(w) for w in _NOT_DESCRIBING))
+# up to three describing words, "sweet", "hot and sweet", "salty, crunchy"
+_DESCRIBING = rf"(?:\s+|\s*,\s*)(?:(?:and|or)\s+)?{_WORD}"
+_DESCRIBED = rf"(?:{_VAGUE}(?:{_DESCRIBING}){{0,3}}|{_ANY}(?:{_DESCRIBING}){{1,3}})"
 
 
 class SomethingFrom:
@@ -30,7 +61,7 @@ class SomethingFrom:
             said = "|".join(re.escape(n) for n in names if n)
             product = office.item_type(made[0])
             thing = a_thing(product.name, mass=product.mass)
-            pattern = rf"\b{_VAGUE}(\s+(?:from|out\s+of)\s+(?:the\s+)?(?:{said})\b)"
+            pattern = rf"\b{_DESCRIBED}(\s+(?:from|out\s+of)\s+(?:the\s+)?(?:{said})\b)"
             self._rewrites.append((re.compile(pattern, re.IGNORECASE), rf"{thing}\1"))
 
     def __call__(self, text: str) -> str:

@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.facility_told import facility_told
+from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
@@ -756,6 +757,8 @@ class SpeechActs:
             return True  # "no more water for me thanks": the speaker wants none
         if self._service_subject(w):
             return True  # "courier leaves at 3", "print is too small": told of the thing
+        if w and subject_of_fault(w, 0):
+            return True  # "drive in slot 4 has died": a fault told, context for the ask
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if service_command(w, self.lex.operation_words):
@@ -1139,6 +1142,8 @@ class SpeechActs:
             return True  # "leave it / put mine on her desk": where it is delivered, a command
         if self._service_subject(w[k:]):
             return False  # "print is too small on this form": the word is the subject
+        if subject_of_fault(w, k):
+            return False  # "print queue 3 is jammed": the subject of a fault, no command
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
 
     def _service_subject(self, w: list[str]) -> bool:

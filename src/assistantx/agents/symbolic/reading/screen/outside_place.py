@@ -23,6 +23,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.outsider import sends_its_input, sends_out
@@ -124,8 +125,13 @@ def _errand_outside(terms: Terms, piece: Piece, office_at: set[int]) -> bool:
             # "the machine round the corner": a word of the office's own things before it
             if _at(words, n, locator) and not (n and words[n - 1] in terms.office_words):
                 outside.append(range(n, n + len(locator)))
-        if n == verb and any(
-            _at(words, n, leaving) and not _lacking(words, n + len(leaving)) for leaving in _LEAVING
+        if (
+            n == verb
+            and any(
+                _at(words, n, leaving) and not _lacking(words, n + len(leaving))
+                for leaving in _LEAVING
+            )
+            and not subject_of_fault(words, n)  # "Drive in slot 4 has died": a report
         ):
             outside.append(range(n, n + 1))
         if (
@@ -168,6 +174,8 @@ def _told_to_go(terms: Terms, piece: Piece) -> bool:
     verb = piece.verb_at(terms.en.lead_in)
     if verb >= len(piece.words) or _SPEAKER.intersection(piece.words[:verb]):
         return False
+    if subject_of_fault(piece.words, verb):
+        return False  # "Drive in slot 4 has died": the subject of a fault, no command
     if any(a == "go" and b in _TO_GO for a, b in itertools.pairwise(piece.words[: verb + 1])):
         return True  # "go to the Starbucks across the street and ...": "go" is a lead-in word
     return bool(language.verb_lemmas(piece.words[verb]))

@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from assistantx.agents.symbolic.reading.at_hand import POINTERS
+from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.name_inner_words import inside_a_name
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
@@ -106,7 +107,12 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
             typed = r"[\s-]+".join(re.escape(w) for w in modified.split())
             said = re.search(rf"\b{typed}\b", piece.text, re.IGNORECASE)
             return decline_service(terms, piece, said.group(0) if said else modified, nor=nor)
-        if at < len(words) and words[at] in terms.en.service_verbs and not _subject_noun(words, at):
+        if (
+            at < len(words)
+            and words[at] in terms.en.service_verbs
+            and not _subject_noun(words, at)
+            and not subject_of_fault(words, at)  # "Drive in slot 4 has died": a report
+        ):
             verb = words[at]
             nxt = words[at + 1] if at + 1 < len(words) else ""
             # a word said only inside a longer name of a thing ("heat" of "heat pack") is
