@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading import at_hand, shared_object
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
+from assistantx.agents.symbolic.reading.cued_tool import cued_tool_owner
 from assistantx.agents.symbolic.reading.doer_nouns import is_doer_noun
 from assistantx.agents.symbolic.reading.file_had import colleagues_file, file_again
 from assistantx.agents.symbolic.reading.lexicon import Mention
@@ -859,6 +860,7 @@ class TaskReader:
         """No one-task rule applied: a task per object of the verb."""
         clause, roles, requester, previous = s.clause, s.roles, s.requester, s.previous
         items, physical = s.items, s.physical
+        cued: dict[int, str | None] = {}  # the tool said by its work's word → whose
         sends = any(
             m.kind == "cue" and m.text.lower() in _SEND_WORDS and m.start not in clause.modifiers
             for m in clause.mentions
@@ -885,11 +887,13 @@ class TaskReader:
                 # "50 ml of chloroform from the chem store": never what the store makes instead
                 return [Task(kind="produce", item=p, recipient=s.recipient) for p in made]
             if "seal" in s.cues and s.seal_tool:  # "bring me the stamp": the seal as an item
+                words = [m for m in clause.mentions if m.kind == "cue" and "seal" in m.ids][:1]
                 items = physical = [
                     Mention("item", m.start, m.end, (s.seal_tool,), m.possessive, m.text)
-                    for m in clause.mentions
-                    if m.kind == "cue" and "seal" in m.ids
-                ][:1]
+                    for m in words
+                ]
+                # "bring me Siobhan's stamp": whose, said before the work's word
+                cued = {m.start: cued_tool_owner(clause.mentions, m, requester) for m in words}
         # every object of the verb is a task of its own: "a stapler and a coffee"
         objects = [m for m in items if m in s.files or m in physical or m in s.products]
         objects = _ones_again(s, objects)
@@ -908,9 +912,8 @@ class TaskReader:
                 file_owner = s.owner(m) or helper or requester
                 tasks.append(Task(kind=FILE_KIND, item=self.file, owner=file_owner, recipient=to))
             else:
-                tasks.append(
-                    Task(kind="transfer", item=m.id, owner=s.owner(m) or helper, recipient=to)
-                )
+                owner = s.owner(m) or cued.get(m.start) or helper
+                tasks.append(Task(kind="transfer", item=m.id, owner=owner, recipient=to))
         return list(dict.fromkeys(tasks))
 
     def fill(self, task: Task, roles: Roles, requester: str) -> Task:

@@ -52,6 +52,7 @@ from assistantx.agents.symbolic.reading.joined_recipients import for_each
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.named_once import the_one_named
+from assistantx.agents.symbolic.reading.named_tool import works_by_named_tool
 from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
 from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
 from assistantx.agents.symbolic.reading.original_back import (
@@ -330,7 +331,8 @@ class FrameReader:
                 # "get my lunch out of the fridge and heat it": one errand, on the item
                 # fetched ("the parcel in the post room ..., courier it": the one kept there)
                 made = [self._on_fetched(tasks.pop(), made[0], requester)]
-            previous_cues = bool(clause.cues)
+            # "put the clerk's stamp on my invoice and courier it": the tool named is the work
+            previous_cues = bool(clause.cues) or works_by_named_tool(self.office, clause, made)
             previous_places = {m.id for m in clause.mentions if m.kind == "place"}
             previous_roles = roles
             said_from += roles.source

@@ -48,6 +48,7 @@ from assistantx.agents.symbolic.reading.compound_heads import (
 from assistantx.agents.symbolic.reading.container_names import container_phrase, doubted_container
 from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
+from assistantx.agents.symbolic.reading.described_owner import as_described_roles
 from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled
 from assistantx.agents.symbolic.reading.family_of_another import also_meant
@@ -62,6 +63,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
     operation_nouns,
     read_as_verbs,
 )
+from assistantx.agents.symbolic.reading.outsider_owner import office_people_words
 from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
@@ -303,6 +305,8 @@ class Lexicon:
     office: Office
     people: dict[str, set[str]] = field(default_factory=dict)  # phrase → person ids (tier 0)
     name_words: dict[str, set[str]] = field(default_factory=dict)  # word → ids (tier 1)
+    # every word of the office's names for its people, "manager" of "Manager Mao" too
+    people_words: frozenset[str] = frozenset()
     items: dict[str, str] = field(default_factory=dict)  # phrase → item type id
     facilities: dict[str, str] = field(default_factory=dict)  # phrase → facility id
     places: dict[str, str] = field(default_factory=dict)  # phrase → location id
@@ -394,6 +398,7 @@ class Lexicon:
             if kind is not None:
                 cues.setdefault(kind, set()).update(forms)
         lex.verb_phrases = VerbPhrases.from_office(office)
+        lex.people_words = office_people_words(office)
         lex.near_forms = NearForms.from_office(office, inflections)
         lex.courses = Courses.from_office(office)
         lex.made_objects = MadeObjects.from_office(office)
@@ -640,7 +645,9 @@ class Lexicon:
             if len(self._read_of) >= _TEXTS_KEPT:
                 self._read_of.clear()
             tokens = tuple(self.tokens(text))
-            kept = self._read_of[text] = Lexed(text, tokens, tuple(self.scan(tokens)))
+            # "the Acme account manager's report": a described role, never Manager Mao
+            mentions = as_described_roles(tokens, self.scan(tokens), self.people_words)
+            kept = self._read_of[text] = Lexed(text, tokens, tuple(mentions))
         return kept
 
     def tokens(self, text: str) -> list[Token]:

@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 
 from assistantx.agents.symbolic.reading.carried_to import carried_to
 from assistantx.agents.symbolic.reading.codes import code_of_a_thing
+from assistantx.agents.symbolic.reading.described_owner import described_role
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
     find_outside,
@@ -523,6 +524,8 @@ def _unknown_name(
         # opening a later clause (a reason said after the request)
         opens_clause = m.start > 0 and (tokens[m.start].opens or tokens[m.start].after_pause)
         outsider = outsider or clause_opening_owner(word, m.text, opens_clause, people_words)
+        # "the site engineer's report": a kind of person described after the determiner
+        outsider = outsider or described_role(tokens, m, people_words)
         return not (kind_of_person or outsider)
     if m.possessive and titled_outsider(prev):
         return False  # "to check Mrs Baker's sats": an outsider said as context, no colleague

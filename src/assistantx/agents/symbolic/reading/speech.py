@@ -34,6 +34,7 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
+from assistantx.agents.symbolic.reading.compound_subject import compound_modifier
 from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
@@ -871,6 +872,8 @@ class SpeechActs:
                 continue
             if _attributive(w, n):
                 continue  # "my signed contract needs ...": a modifier, not "signed"
+            if compound_modifier(w, n, _NEED):
+                continue  # "the crew list needs ...": a noun of the subject, not "crowed"
             if x in _STATE_VERBS or (x not in _RECEIVE and language.is_finite_verb(x)):
                 return True  # "Hal printed his rota yesterday": a task word, told as done
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":

@@ -12,7 +12,12 @@ Only the words of the tool's own names (the office's data) lend verbs. The parse
 lent form as the same form of the work's own verb ("notarised" → "sealed"), before any rule
 reads the message, so every rule that knows the work's words ("get it sealed", "needs
 sealing") reads the lent verb the same way; a form that is already a word of the office's
-work or names is left as it is."""
+work or names is left as it is.
+
+A name is a thing, not an act: a verb none of whose forms is a word of another item type's
+names is lent ("claims stamp" lends no "claim" where the office's papers are "claim forms",
+so "hand my claim form to Wang" stays a claim form), and a lent form inside a name said whole
+("bring me the approved stamp", "Lee's claim folder") is that name's word, not the work."""
 
 from __future__ import annotations
 
@@ -80,7 +85,9 @@ class LentVerbs:
     """The lent forms of one office, each with the form of its work's own verb."""
 
     forms: Mapping[str, str]
-    pattern: re.Pattern[str] | None  # the forms as whole words, any case; None: no form
+    # the forms as whole words, any case, after the names of several words that hold one
+    # (matched first, so a form inside a name is left); None: no form
+    pattern: re.Pattern[str] | None
 
     @classmethod
     def from_office(cls, office: Office, taken: Collection[str]) -> LentVerbs:
@@ -93,22 +100,59 @@ class LentVerbs:
             if tool is None or not word_is_verb(own):
                 continue
             kept = office.item_type(tool)
+            others = _other_name_words(office, tool)
             for verb in sorted(derived_verbs((kept.name, *kept.synonyms))):
-                for form, said in same_forms(verb, own).items():
+                lent = same_forms(verb, own)
+                if others.intersection(lent):  # "claim" where papers are "claim forms"
+                    continue
+                for form, said in lent.items():
                     if form not in taken:
                         forms.setdefault(form, said)
-        return cls(forms, _word_pattern(tuple(sorted(forms))) if forms else None)
+        if not forms:
+            return cls(forms, None)
+        return cls(forms, _word_pattern(tuple(sorted(forms)), _names_holding(office, forms)))
 
     def read(self, text: str) -> str:
         """``text`` with each lent form said as the work's own ("get it notarised" → "get it
-        sealed"); a capital stays a capital."""
+        sealed"); a capital stays a capital, a name said whole stays as said."""
         if self.pattern is None:
             return text
-        return self.pattern.sub(lambda m: _cased(self.forms[m.group(0).lower()], m.group(0)), text)
+        return self.pattern.sub(self._said, text)
+
+    def _said(self, m: re.Match[str]) -> str:
+        said = m.group(0)
+        lent = self.forms.get(said.lower())
+        return said if lent is None else _cased(lent, said)
 
 
-def _word_pattern(words: tuple[str, ...]) -> re.Pattern[str]:
-    return re.compile(r"\b(?:" + "|".join(map(re.escape, words)) + r")\b", re.IGNORECASE)
+def _other_name_words(office: Office, tool: str) -> frozenset[str]:
+    """The words of every item type's names but the tool's own."""
+    return frozenset(
+        w
+        for t in office.item_types
+        if t.id != tool
+        for name in (t.name, *t.synonyms)
+        for w in language.words(name)
+    )
+
+
+def _names_holding(office: Office, forms: Collection[str]) -> tuple[str, ...]:
+    """The office's names of several words (items' and facilities') with a lent form among
+    their words: "approved stamp" is the tool, "claim folder" a folder."""
+    names = [n for t in office.item_types for n in (t.name, *t.synonyms)]
+    names += [n for f in office.facilities for n in (f.name, *f.synonyms)]
+    return tuple(
+        name
+        for name in names
+        if len(words := language.words(name)) > 1 and any(w in forms for w in words)
+    )
+
+
+def _word_pattern(words: tuple[str, ...], names: tuple[str, ...]) -> re.Pattern[str]:
+    """Whole names first, longest first, then the forms: a name is matched where it starts."""
+    said = [r"\s+".join(map(re.escape, n.split())) for n in names]
+    ordered = sorted(set(said), key=len, reverse=True) + [re.escape(w) for w in words]
+    return re.compile(r"\b(?:" + "|".join(ordered) + r")\b", re.IGNORECASE)
 
 
 def _cased(word: str, like: str) -> str:
