@@ -166,7 +166,7 @@ def test_a_thing_fetched_from_the_print_room_is_not_printed() -> None:
         ("dry my seed samples", "seed_sample", "dry"),
         ("put my seed samples in the drying cabinet", "seed_sample", "dry"),
         ("my seed samples need to sit in the drying cabinet", "seed_sample", "dry"),
-        ("courier my contract to the supplier", "document", "courier"),
+        ("courier my contract to the supplier at 3 Mill Lane", "document", "courier"),
         ("dispatch my contract to Acme Ltd", "document", "courier"),
     ],
 )
