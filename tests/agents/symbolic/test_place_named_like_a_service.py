@@ -181,8 +181,9 @@ def test_the_dispatched_paper_still_goes_where_it_was_sent() -> None:
 
 
 def test_a_lunch_put_in_the_microwave_is_still_heated() -> None:
-    assert tasks_of("default", "put my lunch in the microwave", "sun") == [
-        ("heat", "lunch", "sun", "sun")
+    # fix129e: lee has lunch in the fridge (sun has none: asked where it is)
+    assert tasks_of("default", "put my lunch in the microwave", "lee") == [
+        ("heat", "lunch", "lee", "lee")
     ]
 
 
