@@ -38,7 +38,12 @@ _frame = frame_reader(load_office, "wang")
             "print",
             "lee",
         ),
-        ("heat my lunch and then bring it to Chen - oops, I meant bring it to me", "heat", "wang"),
+        # fix129e: wang has no lunch in the fridge; Zhang's is there
+        (
+            "heat Zhang's lunch and then bring it to Chen - oops, I meant bring it to me",
+            "heat",
+            "wang",
+        ),
     ],
 )
 def test_the_repeated_part_is_replaced_and_the_rest_stands(

@@ -31,7 +31,8 @@ def _parts(frame) -> list[tuple[str, str, str | None]]:  # type: ignore[no-untyp
         ("print my file + a coffee too pls", [("print", "file"), ("produce", "coffee")]),
         ("copy my document & bring me a water", [("copy", "document"), ("produce", "water")]),
         ("print my file & get me a coffee", [("print", "file"), ("produce", "coffee")]),
-        ("heat my lunch + bring me a coffee pls", [("heat", "lunch"), ("produce", "coffee")]),
+        # fix129e: wang has no lunch in the fridge (asked where it is, test_own_item_unknown.py)
+        ("copy my document + bring me a coffee pls", [("copy", "document"), ("produce", "coffee")]),
         ("bring me the stapler & a coffee", [("transfer", "stapler"), ("produce", "coffee")]),
     ],
 )

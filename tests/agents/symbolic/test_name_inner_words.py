@@ -105,5 +105,7 @@ def test_a_thing_called_by_the_word_alone_keeps_it() -> None:
 
 def test_an_offered_verb_is_still_done() -> None:
     """The default office heats lunch: the same words ask for it."""
-    frame = _default("heat up my lunch in the microwave pls")
+    frame = _default(
+        "heat up my lunch in the microwave pls", "lee"
+    )  # fix129e: a requester with lunch in the fridge (one with none is asked where it is)
     assert [(t.kind, t.item) for t in frame.tasks] == [("heat", "lunch")]

@@ -36,10 +36,10 @@ def _tasks(name: str, who: str, text: str, answers: list[str] | None = None) -> 
         # other services, other people, other offices
         (
             "default",
-            "mao",
+            "lee",  # fix129e: one with lunch in the fridge
             "can Wang heat my lunch?",
             "Wang Fang doesn't look after the microwave. Shall I heat your lunch for you?",
-            ("heat", "lunch", "mao", "mao", None),
+            ("heat", "lunch", "lee", "lee", None),
         ),
         (
             "default",
@@ -91,9 +91,9 @@ def test_one_who_keeps_no_facility_for_it_is_said_and_asked(
         ),
         (
             "default",
-            "mao",
+            "lee",  # fix129e: one with lunch in the fridge
             "can Hu heat my lunch?",
-            ("heat", "lunch", "mao", "mao", "hu"),
+            ("heat", "lunch", "lee", "lee", "hu"),
         ),
         (
             "harbour",

@@ -166,7 +166,7 @@ def test_a_thing_fetched_from_the_print_room_is_not_printed() -> None:
         ("dry my seed samples", "seed_sample", "dry"),
         ("put my seed samples in the drying cabinet", "seed_sample", "dry"),
         ("my seed samples need to sit in the drying cabinet", "seed_sample", "dry"),
-        ("courier my contract to the supplier", "document", "courier"),
+        ("courier my contract to the supplier at 3 Mill Lane", "document", "courier"),
         ("dispatch my contract to Acme Ltd", "document", "courier"),
     ],
 )
@@ -181,8 +181,9 @@ def test_the_dispatched_paper_still_goes_where_it_was_sent() -> None:
 
 
 def test_a_lunch_put_in_the_microwave_is_still_heated() -> None:
-    assert tasks_of("default", "put my lunch in the microwave", "sun") == [
-        ("heat", "lunch", "sun", "sun")
+    # fix129e: lee has lunch in the fridge (sun has none: asked where it is)
+    assert tasks_of("default", "put my lunch in the microwave", "lee") == [
+        ("heat", "lunch", "lee", "lee")
     ]
 
 

@@ -72,7 +72,9 @@ def test_a_torch_asked_for_is_still_fetched(text: str, moves: list[tuple[str, ..
     ],
 )
 def test_microwaving_is_the_offices_service_only_on_what_it_heats(text: str, heats: bool) -> None:
-    frame = InstructionParser(load_office(DEFAULT_OFFICE)).parse_with_answers(text, "mao", [])
+    frame = InstructionParser(load_office(DEFAULT_OFFICE)).parse_with_answers(
+        text, "lee", []
+    )  # fix129e: lee has lunch
     if heats:
         assert [(t.kind, t.item) for t in frame.tasks] == [("heat", "lunch")]
     else:

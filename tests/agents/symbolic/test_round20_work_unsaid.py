@@ -73,9 +73,12 @@ def test_work_or_a_move_said_is_read_as_before(
     assert [(t.operation, t.item) for t in _frame(text).tasks] == expected
 
 
-def test_bring_me_my_own_item_still_asks_who() -> None:
-    """Near-miss: "bring me my prep" names a move (to nobody new): still "who should get"."""
-    assert _frame("bring me my prep").question == "Who should get your prep?"
+def test_bring_me_my_own_item_asks_where_it_is() -> None:
+    """Near-miss: "bring me my prep" names a move to the requester, who has it as far as the
+    office knows: where it is, not who should get it (fix129e)."""
+    assert _frame("bring me my prep").question == (
+        "Where is your prep? As far as I know you have it with you."
+    )
 
 
 @pytest.mark.parametrize(

@@ -312,7 +312,12 @@ def _with_service_synonyms() -> InstructionParser:
             "fax",
             "the council's planning office",
         ),
-        ("send my contract by fax to the insurers", "fax", "the insurers"),
+        # a firm said by its role alone asks where since fix129e (test_role_destination.py)
+        (
+            "send my contract by fax to the insurers at 5 Bank Street",
+            "fax",
+            "the insurers at 5 Bank Street",
+        ),
     ],
 )
 @pytest.mark.parametrize("short_names", [False, True])

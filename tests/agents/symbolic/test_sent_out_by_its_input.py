@@ -147,7 +147,7 @@ def test_a_role_then_its_holders_name_is_one_destination() -> None:
 @pytest.mark.parametrize(
     ("text", "destination"),
     [
-        ("courier my contract to the agent, it has to go today", "the agent"),
+        ("courier my contract to the Leeds agent, it has to go today", "the Leeds agent"),
         ("courier my contract to the lab, the Bristol one", "the Bristol lab"),
     ],
 )

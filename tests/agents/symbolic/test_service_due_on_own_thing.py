@@ -61,10 +61,10 @@ def test_another_owner_says_it_of_their_own() -> None:
 @pytest.mark.parametrize(
     ("office", "requester", "text", "item", "kind"),
     [
-        ("default", "sun", "my lunch is due a reheat", "lunch", "heat"),
+        ("default", "lee", "my lunch is due a reheat", "lunch", "heat"),  # fix129e: has lunch
         (
             "default",
-            "sun",
+            "lee",
             "my lunch is due a warm-up, can you take it down to the kitchenette",
             "lunch",
             "heat",

@@ -99,7 +99,7 @@ def test_beside_a_request_on_the_default_office_no_water_is_made() -> None:
 
 
 def test_the_service_asked_with_its_object_is_still_a_request() -> None:
-    frame = _courier_office().parse("courier my contract to the lawyer", "lin")
+    frame = _courier_office().parse("courier my contract to the lawyer at 4 Quay Street", "lin")
     assert frame.decline is None and len(frame.tasks) == 1
     assert frame.tasks[0].item == "document"
     # "courier it": the object is asked about, never read as told

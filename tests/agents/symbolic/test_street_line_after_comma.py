@@ -43,7 +43,10 @@ _read = frame_reader(_default_that_couriers, "mao")
         ("courier my document to Acme Legal, 12 Mill Road", "Acme Legal, 12 Mill Road"),
         # no street line after the comma: the place stops at it
         ("courier my document to Channel Nine legal, thanks", "Channel Nine legal"),
-        ("courier my document to the legal team, then bring me a coffee", "the legal team"),
+        (
+            "courier my document to the Leeds legal team, then bring me a coffee",
+            "the Leeds legal team",
+        ),
     ],
 )
 def test_a_street_line_goes_on_the_destination(text: str, destination: str) -> None:

@@ -197,8 +197,12 @@ async def test_the_lent_item_goes_from_the_borrower_back_to_its_lender() -> None
     ("text", "where"),
     [
         ("can you send out my report to Harlow & Finch", "Harlow & Finch"),
-        ("send out my drawing to the client today", "the client"),
-        ("please courier my contract to our lawyers", "our lawyers"),
+        # a role or firm alone ("the client", "our lawyers") asks where since fix129e
+        ("send out my drawing to the client's office today", "the client's office"),
+        (
+            "please courier my contract to our lawyers at 4 Quay Street",
+            "our lawyers at 4 Quay Street",
+        ),
         # a task word as the item's adjective says what was done, not what to do
         ("please send out the signed drawing to our surveyors in Leeds", "our surveyors in Leeds"),
     ],

@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.original_back import (
     original_to_its_source,
 )
 from assistantx.agents.symbolic.reading.others_thing import others_thing_declined
+from assistantx.agents.symbolic.reading.own_item_unknown import none_of_yours, own_item_unknown
 from assistantx.agents.symbolic.reading.owners_need import back_to_owner
 from assistantx.agents.symbolic.reading.part_recipients import (
     closes_a_part,
@@ -401,8 +402,14 @@ class FrameReader:
             or self._uncovered(objects, tasks)
             or self._whose_service(tasks, readings, requester)
             or which_work(self.office, tasks, readings.mentions, requester)
+            # "heat up my lunch" from someone with no lunch here: said and asked
+            or own_item_unknown(self.office, tasks, requester, self.reader.kinds)
             or self._check(
-                tasks, requester, to_self, bool(rooms_taken_to(tokens, readings.mentions))
+                tasks,
+                requester,
+                to_self,
+                bool(rooms_taken_to(tokens, readings.mentions)),
+                any(t.word == "me" for t in tokens),
             )
         )
         # "print my file and a coffee": both read, the whole restated before anything moves
@@ -719,11 +726,17 @@ class FrameReader:
         return task_kinds.kind(kind).which_item
 
     def _check(
-        self, tasks: list[Task], requester: str, to_self: bool = False, to_room: bool = False
+        self,
+        tasks: list[Task],
+        requester: str,
+        to_self: bool = False,
+        to_room: bool = False,
+        to_me: bool = False,
     ) -> str | None:
         """The question still open about ``tasks``; ``to_room``: the words take a thing to a
         room, so who gets the requester's own thing is the room's question (whom the message
-        says needs it, else who there: ``room_receiver``, ``parts``), not asked here."""
+        says needs it, else who there: ``room_receiver``, ``parts``), not asked here;
+        ``to_me``: the words say "me", so who gets it is said and where it is is asked."""
         if not tasks:
             return NOT_UNDERSTOOD
         for t in tasks:
@@ -751,6 +764,12 @@ class FrameReader:
                             f"As far as I know, {who} has no {name} of their own. Whose "
                             f"{name} is it, and who should get it?"
                         )
+                    if who == "you" and requester not in self.office.owners_of(t.item):
+                        return none_of_yours(self.office, t.item)  # "bring me my book", none
+                    if who == "you" and to_me:
+                        # "bring me my book" where it is on them as far as the office knows:
+                        # whom is said; where it is now is the open question
+                        return f"Where is your {name}? As far as I know you have it with you."
                     return (
                         f"Who should get {who}r {name}?"
                         if who == "you"

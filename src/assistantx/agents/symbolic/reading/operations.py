@@ -215,10 +215,12 @@ class OperationChooser:
                         where = None  # "..., Ivy please": the colleague addressed, not a place
                 if where is not None and names_no_place(where, (op.name, *op.verbs, op.done or "")):
                     where = None  # "off to the cleaners": which cleaner is still to ask
-                if where is not None and names_only_a_role(where):
-                    where = None  # "to my agent": whom, not where; the service asks where
                 if where is not None and where == (outside.phrase if outside else None):
                     where = self._with_detail(where, op, lexed, outside, whole)
+                if where is not None and names_only_a_role(where):
+                    # "to the supplier": whom, not where; the service asks where (after the
+                    # detail: "the insurers, their fax number is ..." says where)
+                    where = None
                 where = where or destination
                 if where is None:
                     return TaskFrame(
