@@ -61,6 +61,8 @@ def test_the_thing_the_requester_has_is_still_their_own() -> None:
         "bring me the file the team has",  # no colleague
         "the file I have",  # the requester's own
         "give the stapler to Wang, he has none",
+        "the kettle died, Wang has it in hand",  # a fault and who deals with it
+        "the printer jammed - Zhang has it under control",
     ],
 )
 def test_no_clause_of_a_colleagues_having_is_left_as_said(text: str) -> None:

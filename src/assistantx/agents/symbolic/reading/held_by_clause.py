@@ -17,6 +17,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from assistantx.core import language
+
 _WORD = r"[^\W\d_][\w-]*"
 # the determiner that opens the thing's phrase ("*the* file Wang has")
 _DETERMINERS = r"the|this|that"
@@ -50,8 +52,10 @@ def held_by_clauses(text: str, is_person_word: Callable[[str], bool]) -> str:
     ("the file Wang has" → "Wang's file")."""
 
     def named(who: str, thing: str) -> bool:
-        return all(is_person_word(w) for w in who.split()) and not any(
-            is_person_word(w) for w in thing.split()
+        return (
+            all(is_person_word(w) for w in who.split())
+            and not any(is_person_word(w) for w in thing.split())
+            and not _a_clause(thing)
         )
 
     def owned(m: re.Match[str]) -> str:
@@ -61,3 +65,10 @@ def held_by_clauses(text: str, is_person_word: Callable[[str], bool]) -> str:
         return f"{who}'s {thing}"
 
     return _BESIDE.sub(owned, _RELATIVE.sub(owned, text))
+
+
+def _a_clause(thing: str) -> bool:
+    """Whether the words taken for the thing are a clause of their own: a past verb that is
+    no noun after its subject ("the kettle died, Grace has it in hand": the fault, and who
+    deals with it, not Grace's kettle)."""
+    return any(language.is_past_verb(w) and not language.is_noun(w) for w in thing.split()[1:])
