@@ -110,6 +110,7 @@ from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurname
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
 from assistantx.agents.symbolic.reading.numeral_one import numeral_ones
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
 from assistantx.agents.symbolic.reading.offer_reply import (
@@ -159,6 +160,7 @@ from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
+from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
@@ -289,6 +291,8 @@ class InstructionParser:
         text = held_by_clauses(text, self.screen.terms.is_person_word)
         # "take my report to Wang to get it signed? need it back": signed by Wang, to me
         text = taken_for_service(text, self.screen.terms.is_person_word)
+        # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
+        text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
@@ -396,6 +400,11 @@ class InstructionParser:
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _work_verb(self, word: str) -> bool:
+        """A bare verb of the office's own services or of a colleague's work ("fix",
+        "sign"), for a thing sent to someone to have it done."""
+        return word in self.lex.operation_words or word in PERSON_WORK
 
     def _task_word(self, word: str) -> bool:
         """Whether ``word`` is one of the office's task words or a form of one ("prints")."""

@@ -13,11 +13,16 @@ after "and" in a sentence that asks for something:
   sign my contract and the invoice") opened by an article: "get" is inserted, for the
   requester (or whoever "for <person>" names);
 - after a giving verb whose thing went "to <person>", another person and a noun phrase: the
-  same verb is inserted, giving that person the thing ("take Sun a coffee").
+  same verb is inserted, giving that person the thing ("take Sun a coffee");
+- after "I need <thing> <participle> [by <person>]" (a service or a colleague's work wanted
+  done on the thing), a thing that is fetched or made, opened by an article: the need is
+  inserted ("I need my contract signed by Wang, and *I need* a coffee"). The participle ends
+  the first need's thing, so the second thing is no second object of the work: it was left
+  to the signing, which cannot act on a coffee, and asked about.
 
-"get Wang to sign my contract and Zhang" (no thing after the name) and "bring Wang my stapler
-and my scissors" (a thing with no verb missing: the verb's own second object) are left as
-written."""
+"get Wang to sign my contract and Zhang", "I need my contract signed by Wang and Zhang" (no
+thing after the name) and "bring Wang my stapler and my scissors" (a thing with no verb
+missing: the verb's own second object) are left as written."""
 
 from __future__ import annotations
 
@@ -27,13 +32,18 @@ from assistantx.agents.symbolic.reading.aligned import aligned_reading
 from assistantx.agents.symbolic.reading.indirect_object import opens_noun_phrase
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english
+from assistantx.core import english, language
 
 _DATIVE_VERBS = english.words("dative_verbs")
 # "get Wang to sign": the verbs that have someone else do the work
 _CAUSING = frozenset({"get"})
 # the kinds of thing a colleague's work (signing, sealing) never takes: what is fetched or made
 _FETCHED_KINDS = frozenset({"belonging", "product"})
+# "I need ...", "we want ...": the speaker's need whose thing a participle follows
+_NEEDERS = frozenset({"i", "we"})
+_NEEDS = frozenset({"need", "want"})
+# how far the need's thing may open after the need's verb ("need *my* contract")
+_THING_REACH = 3
 # articles that open the conjunct's thing ("and *a* coffee", "and *some* water")
 _ARTICLES = frozenset({"a", "an", "some", "the", "another"})
 
@@ -54,6 +64,10 @@ def with_gapped_verbs(lex: Lexicon, text: str) -> str:
             continue
         verb = _giving_to_before(tokens, mentions, start, n)
         if verb is not None and _person_and_thing_at(tokens, mentions, n + 1):
+            inserts.append((spans[n + 1][0], verb))
+            continue
+        verb = _need_done_before(tokens, mentions, start, n)
+        if verb is not None and _fetched_thing_at(lex, tokens, mentions, n + 1):
             inserts.append((spans[n + 1][0], verb))
     for at, verb in reversed(inserts):
         text = f"{text[:at]}{verb} {text[at:]}"
@@ -85,6 +99,37 @@ def _causing_before(
         if tokens[who.end].word == "to" and work is not None and work.kind == "cue":
             return tokens[k].text.lower()
     return None
+
+
+def _need_done_before(
+    tokens: Sequence[Token], mentions: Sequence[Mention], start: int, end: int
+) -> str | None:
+    """The "I need" of "I need <thing> <participle> [by <person>]" right before "and"
+    (``end``), as typed: the thing wanted with work done on it, and nothing after."""
+    for k in range(start + 1, end):
+        if tokens[k].word not in _NEEDS or tokens[k - 1].word not in _NEEDERS:
+            continue
+        thing = next(
+            (m for m in mentions if m.kind == "item" and k < m.start <= k + _THING_REACH), None
+        )
+        if thing is None or thing.end >= end:
+            continue
+        if any(m.kind not in ("word", "self") and k < m.start < thing.start for m in mentions):
+            continue  # "I need Wang to sign my contract": no thing of the need's own first
+        if not language.is_past_participle(tokens[thing.end].word):
+            continue
+        after = thing.end + 1
+        if after == end or _by_person_to(tokens, mentions, after, end):
+            return f"{tokens[k - 1].text} {tokens[k].text.lower()}"
+    return None
+
+
+def _by_person_to(tokens: Sequence[Token], mentions: Sequence[Mention], at: int, end: int) -> bool:
+    """Whether "by <person>" runs from ``at`` to ``end`` ("signed *by Wang*")."""
+    if tokens[at].word != "by":
+        return False
+    who = _mention_at(mentions, at + 1)
+    return who is not None and who.kind == "person" and who.end == end
 
 
 def _fetched_thing_at(
