@@ -764,6 +764,9 @@ class Lexicon:
             or word in COMMON
             or self._known(word)
             or word in self._item_words  # "walkie" of "walkie talkie": never "talkie"
+            # a word of any name of the office ("Lopes" of Marta Ferreira-Lopes, a name the
+            # tokenizer splits at its hyphen) is that name's word, never a typo of another's
+            or word in self._vocabulary_set
             or language.zipf(word) >= language.COMMON_ZIPF
         ):
             return word
