@@ -73,6 +73,10 @@ def test_the_guard_lets_exactly_the_frames_named_signer_sign(
 ) -> None:
     requester, x, b, text = statement
     frame = _PARSER.parse(text, requester)
+    if not frame.tasks and frame.question is not None:
+        # a reading only offered ("Shall I get your document signed by Zhang Wei?"): its
+        # doer, as if the requester said yes (test_consent_doer_of_an_offer.py)
+        frame = _PARSER.parse_with_answers(text, requester, ["yes"])
     doers = {t.actor for t in frame.tasks if t.kind == "sign"}
     everyone = [p.id for p in _OFFICE.people if p.id != requester]
     stm = memory(requester, text)
@@ -102,6 +106,16 @@ def test_a_person_the_requester_never_wrote_gets_no_code(
     answered(stm, z)
     refusal = consent.check(_OFFICE, stm, _sign_code(z, requester))
     assert refusal is not None and refusal.rule == "not_a_party", text
+
+
+def test_the_offered_reading_of_a_titled_signer_is_the_guards_too(office: Office) -> None:
+    # found by the property above: the reader offers "Shall I get your document signed by
+    # Zhang Wei?" for this, and the guard takes Zhang as the signer of that reading
+    text = "Dr. Zhang needs to sign my document because Lee Ming asked"
+    stm = memory("mao", text)
+    answered(stm, "zhang", "lee")
+    assert consent.check(office, stm, _sign_code("zhang", "mao")) is None
+    assert consent.check(office, stm, _sign_code("lee", "mao")).rule == "not_a_party"  # type: ignore[union-attr]
 
 
 def test_a_signer_named_in_a_statement_is_a_party_once_they_answered(office: Office) -> None:
