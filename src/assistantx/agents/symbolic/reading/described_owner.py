@@ -33,13 +33,17 @@ _OWN_PLACE = frozenset({"office", "team", "department", "floor"})
 
 
 def described_determiner(tokens: Sequence[Token], start: int, office_words: frozenset[str]) -> str:
-    """The determiner before the description of the possessive at ``start`` ("the" of "the
-    site engineer's"); "" where no description of a kind of person opens there."""
+    """The word that opens the description of the possessive at ``start``: its determiner
+    ("the" of "the site engineer's"), or the command's verb before a description a name opens
+    ("print" of "print Hartley loss adjuster's report": the determiner dropped, as in a
+    note); "" where no description of a kind of person opens there."""
     said, k = 0, start - 1
     while k >= 0:
         t = tokens[k]
         if t.word in _DETERMINERS:
             return t.word if said else ""
+        if said and tokens[k + 1].text[:1].isupper() and _plain_verb(t):
+            return t.word  # a name opens the description, right after the command's verb
         if said == _MOST_DESCRIBING or not _describing(t, office_words):
             return ""  # "drop my folder on ivy's desk": "on" describes nobody
         said += 1
@@ -47,6 +51,11 @@ def described_determiner(tokens: Sequence[Token], start: int, office_words: froz
             return ""
         k -= 1
     return ""
+
+
+def _plain_verb(t: Token) -> bool:
+    """ "print", "send": a verb's plain form in lower case, as a command opens with."""
+    return t.text[:1].islower() and not t.possessive and t.word in language.verb_lemmas(t.word)
 
 
 def _describing(t: Token, office_words: frozenset[str]) -> bool:
@@ -62,9 +71,13 @@ def _describing(t: Token, office_words: frozenset[str]) -> bool:
 
 
 def described_role(tokens: Sequence[Token], m: Mention, office_words: frozenset[str]) -> bool:
-    """Whether the possessive mention ``m`` (one lower-case word) is a role by its description
-    ("the site engineer's"), no colleague."""
-    if not m.possessive or m.end - m.start != 1 or not m.text[:1].islower():
+    """Whether the possessive mention ``m`` (one word, a noun, in lower or title case) is a
+    role by its description ("the site engineer's", "the Loss Adjuster's"), no colleague."""
+    if not m.possessive or m.end - m.start != 1:
+        return False
+    # in title case too ("the Hartley Loss Adjuster's"), where the word is no one's name here;
+    # a colleague's name in capitals ("a pen. Lee's is fine") is the colleague
+    if m.text[:1].isupper() and (m.kind != "word" or tokens[m.start].opens):
         return False
     word = tokens[m.start].word
     return language.is_noun(word) and bool(described_determiner(tokens, m.start, office_words))

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import itertools
 
-from assistantx.core import english
+from assistantx.core import english, language
 
 _FUTURE_FORMS = tuple(tuple(p.split()) for p in english.entries("future_forms"))
 _NOW = tuple(tuple(p.split()) for p in english.entries("now_words"))
@@ -33,6 +33,20 @@ _SPEAKER = frozenset({"i", "we", "ill", "well", "im", "were", "am", "are"}) | en
     "possibility_words"
 )
 _FUTURE_WORDS = english.words("future_forms") | frozenset({"also", "definitely", "still"})
+
+
+def _purpose_opens(words: list[str], n: int) -> bool:
+    """ "for" at ``n`` opens what the thing is for: an event ("for the review at 2") or a
+    doing ("for wrapping presents tonight", "for parking at the docks tomorrow"). A time
+    said inside it is the purpose's: the thing is had before then, so it is wanted now."""
+    if words[n] != "for" or n + 1 >= len(words):
+        return False
+    after = words[n + 1]
+    if [after] in _EVENT_OPENERS:
+        return True
+    # a verb's -ing form right after "for" is a doing, never a time ("for tonight" is kept
+    # apart by the caller; no time word is a verb's -ing form)
+    return after.endswith("ing") and language.is_present_participle(after)
 
 
 def _has(words: list[str], phrases: tuple[tuple[str, ...], ...]) -> bool:
@@ -71,7 +85,8 @@ def without_events(words: list[str]) -> list[str]:
     hour") is how long the thing is had, not an event: it and its time are kept. A time said
     right after "for" ("a stapler I can borrow for tonight", "for later") is the time it is
     used, as an event's is: had by then, so now; said without "for" ("bring me one tonight")
-    it is when the thing is wanted, and kept."""
+    it is when the thing is wanted, and kept. A doing said after "for" ("for wrapping
+    presents tonight") is a purpose as an event is, and goes with its time."""
     out: list[str] = []
     n = 0
     while n < len(words):
@@ -80,11 +95,7 @@ def without_events(words: list[str]) -> list[str]:
             if use is not None:
                 n += 1 + len(use)
                 continue
-        if (
-            words[n] == "for"
-            and words[n + 1 : n + 2] in _EVENT_OPENERS
-            and not _span(words[n + 1 :])
-        ):
+        if _purpose_opens(words, n) and not _span(words[n + 1 :]):
             n = next((k for k in range(n + 2, len(words)) if words[k] in _JOINERS), len(words))
             continue
         out.append(words[n])
@@ -104,12 +115,7 @@ def need_clause(words: list[str], at: int) -> list[str]:
     a consult at 3", "for the meeting at 2": the time is the event's, which the thing is
     needed before, not when it may come)."""
     end = next(
-        (
-            n
-            for n in range(at + 1, len(words))
-            if words[n] in _JOINERS
-            or (words[n] == "for" and words[n + 1 : n + 2] in _EVENT_OPENERS)
-        ),
+        (n for n in range(at + 1, len(words)) if words[n] in _JOINERS or _purpose_opens(words, n)),
         len(words),
     )
     return words[at:end]

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.categories import categories, is_member
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english
+from assistantx.core import english, language
 from assistantx.core.office import Office
 
 _COMMON = english.words("common")
@@ -22,6 +22,9 @@ _VAGUE = english.words("vague_things")
 _LEFT = english.words("left_behind_verbs")
 _LEFT_SUBJECTS = english.words("left_behind_subjects")
 _RELATIVES = frozenset({"that", "which"})
+# the times after now ("tonight", "later on"), said after "for" ("a coffee for tonight")
+_LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
+_TIME_OPENERS = frozenset({"for", "by", "until", "till"})
 _WHERE = frozenset({"at", "in", "on", "by", "near", "beside", "next"})
 # What ends the place said after "left at": a courtesy, whom for, a time.
 _PLACE_ENDS = english.words("courtesy") | {"please", "pls", "thanks", "for", "earlier", "today"}
@@ -59,6 +62,21 @@ def left_behind(tokens: Sequence[Token], mentions: Sequence[Mention]) -> str | N
     return None
 
 
+def _before_time(mentions: Sequence[Mention], k: int) -> int:
+    """The index of the mention before a time said after "for" that ends at ``k`` ("for
+    tonight", "for later on", "by Friday"): a time is never the thing asked for, the word
+    before it is; ``k`` itself where no such time ends there."""
+    words = [m.ids[0] if m.kind == "word" and m.ids else "" for m in mentions[: k + 1]]
+    spans = [p for p in _LATER if len(p) <= k + 1 and tuple(words[k + 1 - len(p) : k + 1]) == p]
+    if language.is_weekday(words[k]):
+        spans.append((words[k],))
+    for p in sorted(spans, key=len, reverse=True):
+        at = k - len(p)
+        if at >= 0 and words[at] in _TIME_OPENERS:
+            return at - 1
+    return k
+
+
 def unlisted_thing(mentions: Sequence[Mention]) -> tuple[str, str] | None:
     """The unlisted thing asked for from a facility and that facility's id, or None."""
     for n, m in enumerate(mentions):
@@ -68,6 +86,9 @@ def unlisted_thing(mentions: Sequence[Mention]) -> tuple[str, str] | None:
         while k >= 0 and mentions[k].kind == "word" and mentions[k].ids[0] in _FROM_WORDS:
             k -= 1  # "out of the store", "from the store"
         if k == n - 1 or k < 0:
+            continue
+        k = _before_time(mentions, k)  # "a couple of comps for tonight from the box office"
+        if k < 0:
             continue
         head = mentions[k]
         if head.kind != "word" or head.possessive:
@@ -103,6 +124,7 @@ def variety_of(
         k -= 1
     if k == at - 1:
         return None
+    k = _before_time(mentions, k)  # "a flat white for tonight from the coffee machine"
     said: list[str] = []
     while k >= 0 and len(said) < 3 and _plain_word(mentions[k]):
         said.insert(0, mentions[k].ids[0])

@@ -51,6 +51,8 @@ _TO = frozenset({"to", "round", "over", "at"})
 _REACH = 5  # "to the new applicant's house": the words between "to" and the place
 # After "go", the words of going somewhere ("go to", "go down to", "go over to")
 _TO_GO = frozenset({"to", "down", "over", "round", "across", "into"})
+# Between a verb of going and its "to" ("get down to", "drive over to", "head back to")
+_PARTICLES = frozenset({"down", "over", "round", "across", "back", "up", "out", "along"})
 
 
 def _infinitive(tokens: Sequence[Token], k: int) -> bool:
@@ -65,11 +67,33 @@ def _infinitive(tokens: Sequence[Token], k: int) -> bool:
     return t.word in language.verb_lemmas(t.word)
 
 
+def _purpose_going(tokens: Sequence[Token]) -> set[int]:
+    """The "to"s of an infinitive of purpose's verb of going and of its place ("I need the
+    keys to get to the Marsh Lane site", "an umbrella to walk down to the station"): the place
+    is where the speaker goes, the reason for the thing, not where the thing is taken ("bring
+    it to 12 Mill Lane" has no infinitive before its "to"). Only a verb with no object before
+    its "to" is one of going ("to take it to ..." still takes the thing there)."""
+    found: set[int] = set()
+    for n in range(len(tokens) - 2):
+        t = tokens[n + 1]
+        # "drive" is a street's word too ("Elm Drive"), but never one with "to" right after it
+        verb = not t.possessive and t.text[:1].islower() and t.word in language.verb_lemmas(t.word)
+        if tokens[n].word != "to" or not verb:
+            continue
+        k = n + 2
+        while k < len(tokens) and tokens[k].word in _PARTICLES:
+            k += 1  # "to get down to", "to drive over to"
+        if k < len(tokens) and tokens[k].word == "to":
+            found |= {n, k}
+    return found
+
+
 def _outside_at(piece: Piece, office_at: set[int]) -> bool:
     tokens = piece.lexed.tokens
     words = [t.word for t in tokens]
+    going = _purpose_going(tokens)  # "the keys to get to the site": why the thing is wanted
     for n, w in enumerate(words):
-        if w != "to" or _infinitive(tokens, n + 1):
+        if w != "to" or n in going or _infinitive(tokens, n + 1):
             continue  # "a pen to write the client's address with": a purpose, no destination
         for k in range(n + 1, min(n + 1 + _REACH, len(words))):
             if k in office_at:
