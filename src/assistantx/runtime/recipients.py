@@ -65,6 +65,7 @@ from assistantx.core.receiving_place import (
 from assistantx.core.task_schema import TaskFrame
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.handed_over import subject_asked_to_have, taken_across
+from assistantx.runtime.wanted_own import handed_on, wants_own_thing, wishes
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
 _BY = frozenset({"by"})
@@ -516,6 +517,24 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         } - {requester}
         if len(needing) == 1:
             named |= needing
+    if not named and handed_on(folded, lambda w: _is_give(w, operations)):
+        # "wang wants my report, can u send it over": the one colleague said to want the
+        # requester's own thing is whom "it" goes to (``wanted_own``); where another is said
+        # to want or need anything too ("and Will needs it too"), nobody is picked
+        wishing = {
+            p
+            for m in mentions
+            if not m.possessive and (wishes(folded, m.end) or _said_to_need(words, m))
+            for p in m.people
+        } - {requester}
+        wanting = {
+            p
+            for m in mentions
+            if len(m.people) == 1 and not m.possessive and wants_own_thing(folded, m.end)
+            for p in m.people
+        } - {requester}
+        if len(wanting) == 1 and wishing == wanting:
+            named |= wanting
     for n, w in enumerate(words):
         after = words[n + 1].folded if n + 1 < len(words) else ""
         at_place = pronoun_receiving_place(  # "at her desk", not "the one on her desk"

@@ -19,7 +19,7 @@ from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english, task_kinds
+from assistantx.core import english, language, task_kinds
 
 _DATIVE_VERBS = english.words("dative_verbs")
 # The words that open a noun phrase after the person: "a", "my", "some", "the", "two".
@@ -40,10 +40,16 @@ def opens_noun_phrase(tokens: Sequence[Token], at: int) -> bool:
     return token.word in _OPENERS or token.word.isdigit() or token.possessive
 
 
+def is_giving_verb(word: str) -> bool:
+    """Whether ``word`` is a giving verb in any of its forms: "bring", and "bringing" after
+    "would you mind", "brought" in a report; the form never changes whom the thing is for."""
+    return word in _DATIVE_VERBS or bool(language.verb_lemmas(word) & _DATIVE_VERBS)
+
+
 def gives_from_verb(tokens: Sequence[Token], ms: Sequence[Mention], n: int, prev: str) -> bool:
     """Whether the word before mention ``n`` (titles skipped: ``prev``) is a giving verb, or
     the office's task word for making something ("print", "scan"), not a person's own work."""
-    if prev in _DATIVE_VERBS:
+    if is_giving_verb(prev):
         return True
     if n == 0:
         return False

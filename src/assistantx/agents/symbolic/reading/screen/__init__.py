@@ -72,8 +72,8 @@ Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``con
 ``purpose``, ``need_to_know``, ``wish``, ``thanks``, ``condition``, ``negation``, ``unsafe``,
 ``destructive``,
 ``placement``, ``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``doing_after``,
-``own_need``, ``others_send_out``, ``question``, ``problem``, ``statement``, ``whereabouts``,
-``kept``, ``variant``,
+``own_need``, ``others_doing``, ``others_send_out``, ``question``, ``problem``, ``statement``,
+``whereabouts``, ``kept``, ``variant``,
 ``service``, ``asked_doer``, ``outsider``), tried in the order of ``rules``; each reads the piece's
 lexicon reading (``Piece.lexed``) and speech acts (``Piece.acts``, the ``speech_acts`` stage before
 the screen), never its text again. ``request_screen`` runs in three steps the parser calls in turn:

@@ -11,6 +11,7 @@ from assistantx.agents.symbolic.reading.screen.findings import UNANSWERED, Findi
 from assistantx.agents.symbolic.reading.screen.kept_at_place import kept_at, place_asked
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
+from assistantx.agents.symbolic.reading.screen.spare_of import spare_of, spares_only
 from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.used_today import used_later_today
@@ -26,6 +27,10 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     items = purpose_item(terms, piece) or terms.named(piece.lexed, "item")
     facilities = terms.named(piece.lexed, "facility")
     people = terms.named(piece.lexed, "person")
+    spare = spares_only(piece) and not items and not facilities and not people
+    if spare and len(spare_of(terms, msg, piece)) == 1:
+        # "my pen's run out... any spares around?": a spare of the pen said before it
+        items = spare_of(terms, msg, piece)
     if len(items) == 1 and not facilities:
         found = item_question(terms, piece, items[0], requester)
         if piece.acts.doubts_ability and found.offer:
@@ -46,7 +51,9 @@ def question(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         p = terms.office.person(people[0])
         where = terms.office.location(p.location).name
         message = f"{p.name} works at {where}; I can't see whether they are there right now."
-    elif spare_asked(piece) and not any(terms.named(p.lexed, "item") for p in msg.pieces):
+    elif (spare_asked(piece) or spare) and not any(
+        terms.named(p.lexed, "item") for p in msg.pieces
+    ):
         # "anyone got a spare?" with no thing said anywhere: answered in words, asking back
         message = "Which item do you need a spare of? Tell me and I'll get you one."
         return Finding("question", piece, "an ask for a spare, of no thing said", message=message)

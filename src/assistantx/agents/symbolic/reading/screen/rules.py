@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
+from assistantx.agents.symbolic.reading.screen.others_doing import others_doing
 from assistantx.agents.symbolic.reading.screen.others_send_out import others_send_out
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
@@ -133,6 +134,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "..., need to check levels on L2": the speaker's own doing, why the request is made,
     # before its place ("on L2") or its thing ("levels") is read as a placement asked
     ("statement", own_doing),
+    # "Priya needs to measure a carton. take her my tape measure": what a colleague will
+    # work on with the thing asked for, never a thing to fetch
+    ("statement", others_doing),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     # "put Wang's stapler in my car": a vehicle or a home is outside, after "chuck it in
