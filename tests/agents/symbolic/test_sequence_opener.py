@@ -91,3 +91,26 @@ def test_a_fault_told_after_then_is_still_told() -> None:
     assert _read("default", "lin", "print my file, then the stapler broke") == [
         ("print", None, "file")
     ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I'd like a copy of my contract, and then the original signed by Wang",
+        "a copy of my contract please, then the original signed by Zhang",
+    ],
+)
+def test_a_wanted_state_after_then_is_not_told(text: str) -> None:
+    # found by blind round 136 after this rule: "and then the original signed by Dr D'Souza"
+    # (no verb of its own: the work wanted on it) was dropped as a statement, and only the
+    # copy made; it is asked about, as before the rule, never silently left out
+    frame = _parser("default").parse(text, "lin")
+    assert not any(e.meaning == "a statement, context only" for e in frame.evidence), frame
+    assert frame.question is not None or any(t.kind == "sign" for t in frame.tasks), frame
+
+
+def test_a_passive_told_after_then_is_still_told() -> None:
+    # must not change: "then it was signed by Wang" says it happened
+    assert _read("default", "lin", "print my file, then it was signed by Wang") == [
+        ("print", None, "file")
+    ]

@@ -51,7 +51,7 @@ from assistantx.agents.symbolic.reading.phrase_index import (
     without_phrases,
 )
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
-from assistantx.agents.symbolic.reading.sequence_opener import after_sequence_word
+from assistantx.agents.symbolic.reading.sequence_opener import after_sequence_word, wanted_done_by
 from assistantx.agents.symbolic.reading.service_command import service_command
 from assistantx.agents.symbolic.reading.service_noun_subject import service_noun_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
@@ -756,6 +756,8 @@ class SpeechActs:
         any request wording ("my laptop cable is too short", "I spilled my tea")."""
         # "..., then have Wang sign it": the "then" joins, it is no subject told of
         w = self._one_word_name(self._untitled(after_sequence_word(content(words))))
+        if len(w) < len(content(words)) and wanted_done_by(w):
+            return False  # "and then the original signed by Dr Rao": a wanted state, asked
         if declines_more(w, self.lex.items):
             return True  # "no more water for me thanks": the speaker wants none
         if self._service_subject(w):
