@@ -84,3 +84,41 @@ def test_a_word_of_grammar_ends_the_description() -> None:
     """Neighbour: "on" describes nobody, so "wang's" is still the colleague in lower case."""
     frame = _default("drop my contract on wang's desk")
     assert _printed(frame) == [("transfer", "document", "lin", "wang")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the class's analogues, said without "the" or in title case
+        "print Hartley loss adjuster's report for me pls",
+        "print the Acme Claims Handler's report for me",
+        "can you print Smith site manager's report for me pls",
+        # variants of our own
+        "print Jones loss assessor's report for me",
+        "print Acme site engineer's invoice for me please",
+    ],
+)
+def test_a_described_owner_in_other_forms_is_no_colleague(text: str) -> None:
+    assert _printed(_default(text)) == [("print", "file", "lin", "lin")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "print Marsh loss adjuster's report for me",
+        "print the Westgate Port Agent's invoice for me pls",
+    ],
+)
+def test_a_described_owner_in_other_forms_in_harbour(text: str) -> None:
+    assert _printed(_harbour(text)) == [("print", "file", "may", "may")]
+
+
+@pytest.mark.parametrize(
+    ("text", "owner"),
+    [
+        ("print Wang's report for me", "wang"),  # must not change: a colleague named
+        ("print the Manager's report for me", "mao"),  # the office's title, undescribed
+    ],
+)
+def test_a_colleague_is_still_a_colleague_in_other_forms(text: str, owner: str) -> None:
+    assert _printed(_default(text)) == [("print", "file", owner, "lin")]
