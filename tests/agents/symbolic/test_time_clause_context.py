@@ -72,3 +72,29 @@ def test_the_robot_as_the_clauses_subject_is_no_context_clause() -> None:
     still brought."""
     frame = _default("when you are at the printer, bring me my printout")
     assert [(t.kind, t.recipient) for t in frame.tasks] == [("print", "lin")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # blind round 136 ("could you sit with bed 7 for ten minutes while I grab a coffee?")
+        # made the requester a drink: a wrong physical action; the coffee is theirs to grab
+        "could you sit with Wang for ten minutes while I grab a coffee?",
+        "could you watch my desk while I grab a coffee?",
+        "keep an eye on my desk whilst I grab a coffee",
+    ],
+)
+def test_the_speakers_own_errand_meanwhile_is_no_request(text: str) -> None:
+    frame = _default(text)
+    assert frame.tasks == [], frame
+
+
+def test_a_request_with_the_speakers_errand_meanwhile_keeps_its_request() -> None:
+    frame = _default("could you print my report while I grab a coffee?")
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("print", "lin")]
+
+
+def test_while_the_robot_is_somewhere_it_is_still_asked() -> None:
+    # must not change: "while you're at the printer" is the robot's own errand
+    frame = _default("while you're at the printer, grab me a coffee")
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [("produce", "coffee", "lin")]

@@ -4,8 +4,8 @@ prints the contracts*". Its verbs ("sign", "prints") are what the speaker or som
 does then, not work asked of the robot, so the clause is taken out before the request is read
 (before, "sign" was read as a signing task and the reader asked who should sign).
 
-The clause opens with a conjunction of time (before, after, until, till, when, once, as soon
-as) and a subject that is not the robot: "I", "he", "we" (or their contractions), a
+The clause opens with a conjunction of time (before, after, until, till, when, once, while,
+whilst, as soon as) and a subject that is not the robot: "I", "he", "we" (or their contractions), a
 colleague's name or "the <noun>" followed by a verb in -s or -ed or an auxiliary ("the agent
 arrives", "Wang has"). It runs to the next pause or sentence end, or to where an ask opens
 ("can you", "please", "then"); a third person's clause also ends at "and" before a verb not
@@ -32,6 +32,8 @@ _OPENERS: tuple[tuple[str, ...], ...] = (
     ("till",),
     ("when",),
     ("once",),
+    ("while",),  # "watch my desk while I grab a coffee": the speaker's own errand meanwhile
+    ("whilst",),
 )
 # The subjects that are people other than the robot. "you" is the robot (what it does then is
 # asked of it) and "it"/"they"-as-thing clauses are ``event_clause``'s; "ill"/"id" are words.
