@@ -10,6 +10,7 @@ have failed ("Wang broke it"): only a thing fails here. A person said beside it 
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.screen.facility_report import REPAIR
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -28,7 +29,6 @@ _TAILS = english.words("state_tails") | english.words("remark_tails")
 _DETERMINERS = english.words("determiners")
 _AUXILIARIES = frozenset({"has", "have", "had", "is", "was", "s", "just", "got"})
 _SUBJECT_WORDS = 4  # "the big colour printer": the most words a thing is named with here
-_REPAIR = "I can't repair it myself, so please tell whoever looks after it."
 
 
 def bare_fault(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -60,7 +60,7 @@ def bare_fault(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
         piece,
         f"a report: the {said}",
         context=tuple(terms.named(piece.lexed, "item")),  # "..., can you get me another"
-        message=message if dealt else f"{message} {_REPAIR}",
+        message=message if dealt else f"{message} {REPAIR}",
     )
 
 

@@ -30,7 +30,7 @@ _KEEPS = tuple(
     sorted((tuple(p.split()) for p in english.entries("facility_keeps")), key=lambda p: -len(p))
 )
 _SAID_BACK = english.wording("said_back")
-_REPAIR = "I can't repair it myself, so please tell whoever looks after it."
+REPAIR = "I can't repair it myself, so please tell whoever looks after it."
 
 
 def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -98,5 +98,5 @@ def _report(piece: Piece, said: str, *, fault: bool) -> Finding:
         "statement",
         piece,
         f"a report: {said}",
-        message=f"{message} {_REPAIR}" if fault else message,
+        message=f"{message} {REPAIR}" if fault else message,
     )
