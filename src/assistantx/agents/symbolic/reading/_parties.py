@@ -15,6 +15,7 @@ from typing import Literal
 from assistantx.agents.symbolic.reading.gapped_recipient import gapped_recipient
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
 from assistantx.agents.symbolic.reading.joined_owners import joined_owners
+from assistantx.agents.symbolic.reading.joined_doers import joined_doers
 from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
@@ -104,6 +105,9 @@ class Roles:
     # "Wang and Sun's files": owner B → the people joined before B's possessive, who own
     # such a thing too (``joined_owners``; the frame does the errand for each, ``each_owner``)
     co_owners: dict[str, list[str]] = field(default_factory=dict)
+    # "signed by Wang and Sun": the groups of people joined as the work's doer, each of whom
+    # does it (``joined_doers``; the frame makes one task each, ``each_doer``)
+    doers: list[tuple[str, ...]] = field(default_factory=list)
 
     def add_recipient(self, who: str, at: int) -> None:
         self.recipient.append(who)
@@ -496,6 +500,10 @@ def clause_roles(
         if not group.people:  # "Wang is in, bring them both a water": both of whom?
             raise UnresolvedPronoun("them")
         _add_group(roles, group)
+    busy = [*roles.recipient, *roles.source, *roles.returned_to]
+    roles.doers = joined_doers(tokens, ms, roles.actor, busy)
+    grouped_doers = {who for g in roles.doers for who in g}
+    roles.bare = [who for who in roles.bare if who not in grouped_doers]
     if roles.occasion and not roles.recipient and taken_to_a_room(tokens, ms):
         # "take a ruler to the lounge for Mark's workshop": Mark, as nobody else receives it
         roles.add_recipient(roles.occasion[-1], roles.occasion_at[-1])

@@ -47,6 +47,7 @@ from assistantx.agents.symbolic.reading.given_back import (
     returned_to_whom,
     unowned_return,
 )
+from assistantx.agents.symbolic.reading.joined_doers import each_doer
 from assistantx.agents.symbolic.reading.joined_owners import each_owner
 from assistantx.agents.symbolic.reading.joined_recipients import for_each
 from assistantx.agents.symbolic.reading.kept_at import kept_owners
@@ -278,6 +279,7 @@ class FrameReader:
             else:
                 made = each  # "bring Wang and Sun a coffee": a coffee each
             made = each_owner(made, roles.co_owners)  # "Wang and Sun's files": both files
+            made = each_doer(made, roles.doers)  # "signed by Wang and Sun": both sign
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
