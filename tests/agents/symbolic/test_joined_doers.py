@@ -36,6 +36,9 @@ def _signed_by(office: str, *signers: str) -> list[Read]:
         ("get my contract signed by Wang, then by Zhang", ("wang", "zhang")),
         ("get my document signed by Zhang and then Wang pls", ("zhang", "wang")),
         ("could Sun and Hu sign my contract?", ("sun", "hu")),
+        # a quantifier floated after the subject: "both", "each"
+        ("could Sun and Hu both sign my contract?", ("sun", "hu")),
+        ("can Wang and Zhang each sign my document", ("wang", "zhang")),
     ],
 )
 def test_default_each_signs(text: str, signers: tuple[str, ...]) -> None:
@@ -78,10 +81,28 @@ def test_one_signer_stays_one(text: str, tasks: list[Read]) -> None:
     assert _tasks(frame) == tasks, frame
 
 
-def test_one_thing_for_two_people_is_still_asked() -> None:
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring my stapler to Wang and Zhang",
+        # "both" floated after the group of the need: the group still receives (it was the
+        # requester who got Wang's stapler: a wrong hand-over)
+        "Wang and Zhang both need a stapler",
+    ],
+)
+def test_one_thing_for_two_people_is_still_asked(text: str) -> None:
     """A group that receives is no group of doers: one stapler, whose to get it is asked."""
-    frame = _DEFAULT("bring my stapler to Wang and Zhang")
+    frame = _DEFAULT(text)
     assert frame.question is not None and "only one of them" in frame.question, frame
+
+
+def test_both_need_a_made_thing_each() -> None:
+    frame = _DEFAULT("Wang and Zhang both need a coffee")
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("produce", "coffee", "wang"),
+        ("produce", "coffee", "zhang"),
+    ], frame
 
 
 async def test_both_signatures_are_collected() -> None:

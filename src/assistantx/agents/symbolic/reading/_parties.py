@@ -61,6 +61,8 @@ _MODALS = english.words("request_modals")
 _REASON = frozenset({"because", "since", "cos", "coz", "cause", "as"})
 # "Rich wants it": the thing already asked for, not a new one ("Min needs one" is new)
 _BACK_REFERENCES = frozenset({"it", "them", "this", "that", "these", "those"})
+# quantifiers English floats after a plural subject: "Wang and Sun both / each sign it"
+_FLOATED = frozenset({"both", "each"})
 
 
 class UnresolvedPronoun(Exception):
@@ -311,15 +313,17 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
     if not m.possessive and prev not in _TO:
         # "for the cover teacher, Ms Nguyen": the name is the receiving phrase's person
         prev = appositive_preposition(tokens, m.start, m.end) or prev
+    # "Wang and Sun both sign it": a quantifier floated after the subject is read past
+    after = m.end + (m.end + 1 < len(tokens) and tokens[m.end].word in _FLOATED)
     site = PersonSite(
         prev=prev,
         ahead=_ahead_of(tokens, m.start),
-        nxt=tokens[m.end].word if m.end < len(tokens) else "",
+        nxt=tokens[after].word if after < len(tokens) else "",
         following=ms[n + 1] if n + 1 < len(ms) else None,
         possessive=m.possessive,
         back=m.start >= 2 and tokens[m.start - 2].word == "back",
-        subject=m.end < len(tokens) and language.is_finite_verb(tokens[m.end].word),
-        then=tokens[m.end + 1].word if m.end + 1 < len(tokens) else "",
+        subject=after < len(tokens) and language.is_finite_verb(tokens[after].word),
+        then=tokens[after + 1].word if after + 1 < len(tokens) else "",
         obliged=obliged_to([t.word for t in tokens], m.end, _PERSON_WORK),
         stood_in_for=stands_in_for([t.word for t in tokens], m.start - 1),
         to_have=asked_to_have(

@@ -42,6 +42,8 @@ _RECEIVING = frozenset({"to", "for"})
 _ONE_PERSON_PRONOUNS = frozenset({"him", "her"})
 # "them both", "them each", "both of them", "the two of them", "all of them"
 _PLURAL_AFTER = frozenset({"both", "each"})
+# the same words floated after a plural subject: "Wang and Sun both need a stapler"
+_FLOATED = _PLURAL_AFTER
 _PLURAL_BEFORE = (("both", "of"), ("two", "of"))
 # The words that, after a receiving phrase's last name, start a new clause with that name as
 # its subject ("to Wang and Sun *will* sign it") rather than end the phrase
@@ -115,6 +117,8 @@ def _receives(
     where a recipient stands: an indirect object, a receiving phrase, the subject of a need."""
     prev = prev_word(tokens, start)
     after = tokens[end].word if end < len(tokens) and not tokens[end].after_pause else ""
+    if after in _FLOATED and end + 1 < len(tokens):  # "Wang and Sun both need ..."
+        after = tokens[end + 1].word
     if prev in _RECEIVING:
         return not (after and (after in _CLAUSE_GOES_ON or language.is_finite_verb(after)))
     if (prev in _DATIVE_VERBS or gives_from_verb(tokens, ms, first, prev)) and opens_noun_phrase(
