@@ -71,7 +71,10 @@ def test_harbour_each_signs(text: str, signers: tuple[str, ...]) -> None:
         # a signature and a coffee for someone else: the coffee's recipient signs nothing
         (
             "get my contract signed by Wang and bring Zhang a coffee",
-            [("sign", "document", "lin", "lin", "wang"), ("produce", "coffee", None, "zhang", None)],
+            [
+                ("sign", "document", "lin", "lin", "wang"),
+                ("produce", "coffee", None, "zhang", None),
+            ],
         ),
     ],
 )

@@ -67,17 +67,17 @@ def test_the_thing_after_a_need_done_is_needed_too(
 
 
 @pytest.mark.parametrize(
-    ("base", "requester", "text", "doer"),
+    ("base", "requester", "text", "doers"),
     [
-        # must not change: a second name after "and" is no thing; read as today (the first)
-        ("default", "lin", "I need my contract signed by Wang and Zhang", "wang"),
-        ("harbour", "will", "I need my document signed by Joy and Ray", "joy"),
+        # a second name after "and" is no thing needed: a second signer (``joined_doers``)
+        ("default", "lin", "I need my contract signed by Wang and Zhang", ("wang", "zhang")),
+        ("harbour", "will", "I need my document signed by Joy and Ray", ("joy", "ray")),
     ],
 )
 def test_a_second_signer_is_no_thing_needed(
-    base: str, requester: str, text: str, doer: str
+    base: str, requester: str, text: str, doers: tuple[str, ...]
 ) -> None:
-    assert _read(base, requester, text) == [("sign", doer, requester, "document")]
+    assert _read(base, requester, text) == [("sign", d, requester, "document") for d in doers]
 
 
 def test_a_paper_after_the_work_is_left_to_the_work() -> None:

@@ -14,8 +14,8 @@ from typing import Literal
 
 from assistantx.agents.symbolic.reading.gapped_recipient import gapped_recipient
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
-from assistantx.agents.symbolic.reading.joined_owners import joined_owners
 from assistantx.agents.symbolic.reading.joined_doers import joined_doers
+from assistantx.agents.symbolic.reading.joined_owners import joined_owners
 from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to

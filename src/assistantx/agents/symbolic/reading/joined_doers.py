@@ -5,13 +5,13 @@ Hal, Dawn and Pat to sign my form". Read one name at a time, the work's doer was
 (or the last) name and the others were dropped: a paper that needed two signatures came back
 with one, and the requester was told it was done.
 
-A group is colleagues named as a list ("A and B", "A, B and C"), or one after another ("by A,
-then by B", "A and then B"), by name only, one of whom the clause reads as the doer of the work (``Roles.actor``),
-while none of them receives, is taken from or gets the thing back in it. Each of them does the
-work, in the order said: one task per doer (``each_doer``). The paper comes back to its owner
-between two signatures, so every hand-over is the owner's own and each signer sees it from
-them; a chain from signer to signer would hand one colleague's paper to another without the
-owner between.
+A group is colleagues named as a list ("A and B", "A, B and C") or one after another ("by A,
+then by B", "A and then B"), by name only, one of whom the clause reads as the doer of the
+work (``Roles.actor``), while none of them receives, is taken from or gets the thing back in
+it. Each of them does the work, in the order said: one task per doer (``each_doer``). The
+paper comes back to its owner between two signatures, so every hand-over is the owner's own
+and each signer sees it from them; a chain from signer to signer would hand one colleague's
+paper to another without the owner between.
 """
 
 from __future__ import annotations
