@@ -76,11 +76,15 @@ def _words(text: str) -> str:
 
 
 def _names(office: Office, *, only_products: bool = False) -> list[tuple[str, str]]:
-    """(name, item type id) for the item types' names (only the products'), longest first."""
+    """(name, item type id) for the item types' names (only the products'), longest first.
+    A product is what an operation makes, whatever its kind: a scan sent as a PDF is an
+    electronic item, and its name is often the operation's own verb ("scan"); read as a
+    thing, the verb went with it and the keeper refused the work they run."""
+    made = {op.product for op in office.operations if op.product is not None}
     pairs = [
         (normalize(n), t.id)
         for t in office.item_types
-        if t.kind == "product" or not only_products
+        if t.kind == "product" or t.id in made or not only_products
         for n in (t.id.replace("_", " "), t.name, *t.synonyms)
     ]
     return sorted((p for p in pairs if p[0]), key=lambda pair: -len(pair[0]))

@@ -51,6 +51,7 @@ from assistantx.agents.symbolic.reading.possessive_choice import theirs_or_any
 from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
+from assistantx.agents.symbolic.reading.titled_stranger import titled_stranger
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
@@ -531,6 +532,10 @@ def _unknown_name(
         return False  # "to check Mrs Baker's sats": an outsider said as context, no colleague
     capital = m.text[:1].isupper() and m.start > 0
     titled = prev in _TITLE_WORDS
+    if titled_stranger(tokens, m.start, ()) and prev_word(tokens, m.start - 1) == "for":
+        # "one for Mrs Jenkins", "book a slot for Mr Evans": whom the work is for, outside
+        # the office; a "for" that hands a thing to them the screen has asked about already
+        return False
     if prev == "for" and _modifies_next(tokens, m.end):
         return False  # "for PE cover", "for Year 9": what it is for, nobody's name
     if code_of_a_thing(tokens, mentions, n):

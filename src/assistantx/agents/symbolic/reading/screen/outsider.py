@@ -6,7 +6,8 @@ would become the requester: the item would end in the wrong hands in the request
 The screen catches the recipient phrase first: ``for``/``to`` or a giving verb's first object,
 a noun phrase whose head is a noun that names a person by what they are (``outsider_nouns``
 in english.yaml: man, guy, visitor, courier ...), that names no person, group, item, place or
-facility of the office and is not the modifier of another noun ("the guest lounge").
+facility of the office and is not the modifier of another noun ("the guest lounge"); or a
+title and a name nobody of the office has ("give Mr Evans my stapler": ``titled_stranger``).
 
 - A credential (an item whose name has a ``credential_words`` word: a key card, a pass, a
   fob) is declined: the assistant hands what opens doors only to people of the office, and
@@ -42,6 +43,7 @@ from assistantx.agents.symbolic.reading.screen.own_serviced import (
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speaker_wants import speaker_wants
+from assistantx.agents.symbolic.reading.titled_stranger import titled_stranger
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.core import english, language
 
@@ -213,7 +215,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
     office_at = {k for m in mentions if m.kind in _OFFICE_KINDS for k in range(m.start, m.end)}
     breaks = gaps(piece.text, tokens)
     for n, tok in enumerate(tokens):
-        if n in office_at or not _outsider_noun(tok.word):
+        stranger = titled_stranger(tokens, n, office_at)  # "Mrs Jenkins", nobody here
+        if n in office_at or not (stranger or _outsider_noun(tok.word)):
             continue
         nxt = n + 1
         if nxt < len(tokens) and _outsider_noun(tokens[nxt].word) and nxt not in office_at:
