@@ -94,6 +94,16 @@ def _state_of_a_thing(subject: str, state: str, after: str, things: frozenset[st
     return "ADV" in language.lemmas(after) and after not in things
 
 
+def _named_thing(verb: str, state: str, after: str, things: frozenset[str]) -> bool:
+    """ "Owen's forecast", "Ada's cast", "Rob's set": a past participle that is also the name
+    of one of the office's things is the thing owned, unless what follows is the object a
+    verb takes ("the model's cast another part") or a particle of being used up; a state word
+    ("broken", "gone") or a word of whereabouts keeps its own reading."""
+    if verb != "has" or state not in things or state in _STATES or state in _WHEREABOUTS:
+        return False
+    return after not in _OBJECT_DETERMINERS and after not in _USED_UP_PARTICLES
+
+
 def contracted_is(text: str, things: frozenset[str] = frozenset()) -> tuple[str, list[Evidence]]:
     """``text`` with "X's <state>" written "X is <state>" (or "X has <participle>") where
     the state ends its clause; ``things``: the office's words that end a thing's name, whose
@@ -115,6 +125,8 @@ def contracted_is(text: str, things: frozenset[str] = frozenset()) -> tuple[str,
         # an adjective, never a place or a direction ("Zhang's gone home": he is away)
         if state in _BECOME and "ADJ" in read and "ADV" not in read:
             verb, tails = "has", frozenset({after})  # "light's gone amber": what it became
+        if _named_thing(verb, state, after, things):
+            return match.group(0)  # "can I get Owen's forecast?": the forecast is his
         if not verb and _state_of_a_thing(subject, state, after, things):
             verb, tails = "is", frozenset({after})
         if not verb or (after and after not in tails):
