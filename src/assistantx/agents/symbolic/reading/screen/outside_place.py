@@ -53,6 +53,9 @@ _REACH = 5  # "to the new applicant's house": the words between "to" and the pla
 _TO_GO = frozenset({"to", "down", "over", "round", "across", "into"})
 # Between a verb of going and its "to" ("get down to", "drive over to", "head back to")
 _PARTICLES = frozenset({"down", "over", "round", "across", "back", "up", "out", "along"})
+# A finite "be"/"have" right after the first word makes that word a subject ("mine is at the
+# repair shop", "Drive has gone to the depot"): a statement, no verb told to the robot
+_BE_HAVE = frozenset({"is", "was", "are", "were", "has", "had"})
 
 
 def _infinitive(tokens: Sequence[Token], k: int) -> bool:
@@ -200,6 +203,8 @@ def _told_to_go(terms: Terms, piece: Piece) -> bool:
         return False
     if subject_of_fault(piece.words, verb):
         return False  # "Drive in slot 4 has died": the subject of a fault, no command
+    if piece.words[verb + 1 : verb + 2] and piece.words[verb + 1] in _BE_HAVE:
+        return False  # "mine's at the repair shop": a subject and its verb, no command
     if any(a == "go" and b in _TO_GO for a, b in itertools.pairwise(piece.words[: verb + 1])):
         return True  # "go to the Starbucks across the street and ...": "go" is a lead-in word
     return bool(language.verb_lemmas(piece.words[verb]))
