@@ -452,6 +452,8 @@ class SpeechActs:
             if taken_from_speaker(w, n, lemmas):
                 continue  # "the intern borrowed mine": why the speaker asks, nothing had
             after = set(w[n + 1 : n + 4])
+            if x in _HAVE_NOW and _doing_after(w[n + 1 : n + 6]):
+                continue  # "we've got a little one going for bloods": someone doing, not had
             if mine and (marked or after & _ONE_MORE):
                 return True  # "Ida just brought me one", "I already have one"
             if marked and after & _THE_ERRAND:
@@ -1282,3 +1284,23 @@ def _asks_after_reason(w: list[str]) -> bool:
     """Whether a request follows a reason in one piece: "so" or "then" right before a
     request modal or marker ("... so could I get a vest", "... so please bring one")."""
     return any(a in _SO and (b in _MODALS or b in _WILLING) for a, b in itertools.pairwise(w))
+
+
+def _doing_after(rest: list[str]) -> bool:
+    """ "(got) a little one going for bloods", "(have) one intern measuring the hall",
+    "someone coming in at two": what is had is doing something (a present participle right
+    after "one"/"someone", or after the noun "one" counts), a small clause of what is
+    happening, not the thing asked for had already."""
+    for k, x in enumerate(rest):
+        if x not in ("one", "someone", "somebody"):
+            continue
+        doing = rest[k + 1 : k + 3] if x == "one" else rest[k + 1 : k + 2]
+        if x == "one" and doing[:1] and doing[0] in _A_THINGS_WAY:
+            continue  # "I've got one coming from stores": the thing itself, on its way
+        if any(language.is_present_participle(d) for d in doing):
+            return True
+    return False
+
+
+# what a thing had is said to be doing: on its way or waiting somewhere ("got one coming")
+_A_THINGS_WAY = frozenset({"coming", "arriving", "being", "waiting", "sitting", "lying"})
