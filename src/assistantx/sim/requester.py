@@ -354,10 +354,12 @@ def _plain_words(text: str) -> list[str]:
 
 def _options(question: str) -> list[str]:
     """The options a question names: "Do you mean A, or B?" → ["A", "B"]."""
+    # only a question offers options: "Please give me the name and address of the school or
+    # place." (an office's own words of what its courier asks for) asks for one thing
     sentences = [
         s
         for s in re.split(r"(?<=[.!?])\s+", question)
-        if " or " in s or (":" in s and "," in s.partition(":")[2])
+        if s.rstrip().endswith("?") and (" or " in s or (":" in s and "," in s.partition(":")[2]))
     ]
     if not sentences:
         return []
