@@ -9,7 +9,8 @@ The reader (``agents.symbolic.reading._parties``, ``frames``) and the runtime's 
 reader planned go to the person named. The words: a request modal ("could", "can", "may") or
 "let" right before the name and a verb of having or borrowing right after it ("could Linh get
 me ..." makes Linh the one who gets it for the requester, not a recipient; "let Linh get one"
-and "could Linh get a coffee" do); or the name, then "could do with"."""
+and "could Linh get a coffee" do); or the name, then "could do with" or "should get" and the
+thing ("Linh should get a copy of my notes")."""
 
 from __future__ import annotations
 
@@ -22,6 +23,11 @@ _HAVING = frozenset({"have", "borrow", "get"})
 # "could Linh get a coffee": a thing right after "get" is what Linh is to have
 _SOME = frozenset({"a", "an", "another", "some", "one"})
 _DO_WITH = (["could", "do", "with"], ["can", "do", "with"])
+# "Wang should get a copy": the name, then what they ought to receive ("should have" is a
+# belief of where a thing is, "Wang should have one by now", never a receiving)
+_SHOULD_GET = ["should", "get"]
+# what opens the thing to be received ("should get me one" has Wang get it for the requester)
+_THING_OPENERS = _SOME | {"the", "my", "our", "this", "these"}
 # "could Marguerite have a look at my form": a preposition before the thing makes it what an
 # activity is about, not what is given.
 _ABOUT = frozenset({"at", "on", "over", "through", "about", "into", "for", "to"})
@@ -32,6 +38,8 @@ def asked_to_have(before: str, after: Sequence[str]) -> bool:
     (up to the thing asked for) is asked to be given it."""
     if list(after[:3]) in _DO_WITH:
         return True
+    if list(after[:2]) == _SHOULD_GET and len(after) > 2 and after[2] in _THING_OPENERS:
+        return True  # "Wang should get a copy of my report": who is to end up with it
     if before not in _ASKING or not after or after[0] not in _HAVING:
         return False
     if after[0] == "get" and before != "let" and (len(after) < 2 or after[1] not in _SOME):

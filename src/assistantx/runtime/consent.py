@@ -10,7 +10,9 @@ reading can waste a step but cannot hand anything to the wrong person:
    guard of a facility whose operation works on or makes the item (a copy, a heat, a print);
    for ``sign``/``seal``, a person the requester named as the one to do it, in a doing place
    of their words or as the doer of the reader's frame of the request (and, for a seal,
-   anyone who owns the seal); for ``collect``, a person the requester named as the recipient.
+   anyone who owns the seal); for ``collect``, a person the requester named as the recipient,
+   or the one the reader's frame of the request makes a thing for (a copy or a printout of
+   the requester's own, a coffee) whom the requester's own words name (``made_for``).
    "Named as" means in that role, in the requester's own words (``recipients``): "take it to
    Hal", "bring Hal one", "get Hal to sign", a reply that is just the name, a yes to "Shall I
    bring Hal one?". A name standing elsewhere ("... because Rich asked for it", "Rich wants
@@ -50,7 +52,7 @@ from assistantx.core.office import Office, Person
 from assistantx.core.owner_only import owner_only, owner_only_reason
 from assistantx.core.ports.messenger import ChatRef
 from assistantx.memory.short_term import ShortTermMemory
-from assistantx.runtime.recipients import named_doers, named_recipients
+from assistantx.runtime.recipients import named_doers, named_receivers, named_recipients
 
 _COMMON = english.words("common")
 RefusalRule = Literal["not_a_party", "no_answer", "no_consent", "owner_only"]
@@ -246,7 +248,7 @@ def _is_party(office: Office, stm: ShortTermMemory, contact: str, item: str, pur
         keeper = _keeper(office, owner, item_type)
         return keeper is not None and contact in keeper
     if purpose == _COLLECT:
-        return contact in named_recipients(office, stm)
+        return contact in named_receivers(office, stm)
     if purpose in task_kinds.person_kinds():  # by hand, no facility: sign, seal, ...
         tool = task_kinds.tool_type(purpose, office)  # whoever owns the seal may stamp
         if tool is not None and _owns(office, contact, tool):

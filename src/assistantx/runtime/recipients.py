@@ -32,7 +32,10 @@ symbolic reasoner plans with, so the guard never refuses the hand-over that read
 for. The frame adds only people the requester's own words name, and only as doers: the work
 done by hand puts the item back in the locker, whereas a recipient keeps it, so a recipient
 is still read from the words alone (a frame that misreads "May wants it on the board, my
-clipboard is for Rich" as giving it to May must not make May a party).
+clipboard is for Rich" as giving it to May must not make May a party). The one exception is a
+thing made at the requester's request (``made_for``: a copy of their file, a printout, a
+coffee): nobody owns it but whom it is made for, so the recipient of the reader's frame, whom
+the requester's words name, may collect it ("Lin needs a copy of my report").
 """
 
 from __future__ import annotations
@@ -62,7 +65,7 @@ from assistantx.core.receiving_place import (
     names_receiving_place,
     pronoun_receiving_place,
 )
-from assistantx.core.task_schema import TaskFrame
+from assistantx.core.task_schema import Task, TaskFrame, operation_of
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.handed_over import subject_asked_to_have, taken_across
 from assistantx.runtime.wanted_own import handed_on, wants_own_thing, wishes
@@ -779,3 +782,38 @@ def named_doers(office: Office, stm: ShortTermMemory) -> set[str]:
     if doers:
         doers &= _written_by_requester(office, stm)
     return named_recipients(office, stm) | doers
+
+
+def named_receivers(office: Office, stm: ShortTermMemory) -> set[str]:
+    """Who may collect a hand-over: the recipients the requester named (``named_recipients``)
+    and the recipient of each thing the reader's frame of the request has made at the
+    requester's own request (``made_for``), whom the requester's own words name."""
+    return named_recipients(office, stm) | made_for(office, stm)
+
+
+def made_for(office: Office, stm: ShortTermMemory) -> set[str]:
+    """The recipients of what the reader's frame makes for the requester out of their own
+    thing or out of nothing (a copy of my file, a printout of my document, a coffee), where
+    the requester's own words name them: "Zhang needs a copy of my file", "Lin wants a
+    printout of my document". The reading the symbolic reasoner plans with is the reading
+    the guard lets collect, so "X needs" needs no second list of phrases here. Only made
+    things count: nobody owns them but the one it is made for (no owner's yes is due,
+    consent rule 3), and what it is made of is the requester's to give; a belonging of
+    anyone's, even the requester's own, still goes only to one named in a receiving place
+    (a frame that misreads "May wants it on the board, my clipboard is for Rich" cannot make
+    May a party)."""
+    frame = _frame(office, stm)
+    made = {
+        t.recipient
+        for t in frame.tasks
+        if t.recipient and t.owner in (None, stm.requester) and _makes_a_thing(office, t)
+    }
+    made.discard(stm.requester)
+    return made & _written_by_requester(office, stm) if made else set()
+
+
+def _makes_a_thing(office: Office, task: Task) -> bool:
+    """Whether the task's operation makes a new thing (a copy, a printout, a coffee), which
+    is what its recipient collects; one that gives its input back changed (a heat) does not."""
+    op = operation_of(office, task)
+    return op is not None and any(o.id == op and o.product for o in office.operations)

@@ -1,6 +1,7 @@
 """Clauses that open a request of their own on a word the lexicon has no cue for: a person
 asked to do a person's work ("... and ask Dov to sign my call sheet", "... and tell her to
-stamp it", "... and have the Boss sign my form": the clause opens on the verb of asking), and
+stamp it", "... and have the Boss sign my form": the clause opens on the verb of asking; "...,
+and can Mark sign my form": on the modal of a question put to them, the bare verb after), and
 a thing handed across with an everyday verb ("..., and then pop a rush tag over to me"). Read
 as words that run on from the clause before, they dropped a signature or left the thing
 unexplained."""
@@ -16,6 +17,8 @@ from assistantx.core import english, language
 
 # The verbs that ask a person to do something ("ask Dov to ...", "tell her to ...").
 _ASKING = frozenset({"ask", "tell", "have", "let"})
+# The modals that ask a colleague for work in a question ("can Mark sign ...", "could you").
+_ASKING_MODALS = frozenset({"can", "could", "would", "will"})
 _BACK_REFERENCES = frozenset({"it", "them", "this", "that", "these", "those"})
 # The verbs of asking followed by the bare verb of the work ("have the Boss sign my form").
 _BARE = english.words("doer_verbs_bare")
@@ -37,9 +40,13 @@ def asks_someone_to_work(mentions: Sequence[Mention], n: int, tokens: Sequence[T
     if who.kind not in ("person", "pronoun") or who.end >= len(tokens):
         return False
     verb = prev_word(tokens, who.start)
-    if verb not in _ASKING or work.kind != "cue":
+    if work.kind != "cue" or verb not in _ASKING | _ASKING_MODALS:
         return False
-    if tokens[who.end].word == "to":
+    if verb in _ASKING_MODALS:
+        # "..., and can Mark sign my form": a question asked of a colleague's work, the bare
+        # verb right after them, is a request of its own as "ask Mark to sign" is
+        said = work.start == who.end
+    elif tokens[who.end].word == "to":
         said = work.start == who.end + 1  # "ask Dov to sign"
     else:
         said = verb in _BARE and work.start == who.end  # "have the Boss sign"

@@ -1,5 +1,6 @@
 """A made thing the office cannot make: "make a copy of my document for Mark", "make Mark a
-copy of my document", "run off two copies of my report" where nothing in the office copies.
+copy of my document", "run off two copies of my report", "Mark needs a copy of my document"
+where nothing in the office copies.
 
 "Make (someone) a <product>" asks for a new thing to be made; the thing it is made from is
 only the input. Where no operation of the office makes a thing called by that word, the
@@ -31,6 +32,8 @@ _MAKING_WITH_OFF = frozenset({"run", "knock"})
 # Words between the verb and what it makes: who it is for ("me", "Mark") and how many.
 _FOR_WHOM = frozenset({"me", "us", "him", "her", "them", "you"})
 _HOW_MANY = frozenset({"another", "extra", "spare", "quick", "new", "more", "few", "couple", "of"})
+# Verbs whose object is wanted ("needs a copy of ..."): made, where it is made "of" a thing.
+_WANTING = frozenset({"needs", "need", "wants", "want", "get", "gets", "like"})
 # "I'll make a copy myself": the speaker's own doing, no request.
 _SPEAKER = frozenset({"i", "we", "ill", "id", "well", "im"})
 _NUMBERS = english.words("number_words")
@@ -77,6 +80,8 @@ def made_product(terms: Terms, words: list[str]) -> tuple[int, str] | None:
             n = at + 1
         elif w in _MAKING_WITH_OFF and at + 1 < len(words) and words[at + 1] == "off":
             n = at + 2
+        elif _wants_one_made_of(words, at, products):
+            return at + 2, words[at + 2]
         else:
             continue
         if _SPEAKER & set(words[max(0, at - 2) : at]):
@@ -93,6 +98,19 @@ def made_product(terms: Terms, words: list[str]) -> tuple[int, str] | None:
         if n < len(words) and words[n] in products:
             return n, words[n]
     return None
+
+
+def _wants_one_made_of(words: list[str], at: int, products: set[str]) -> bool:
+    """ "Hope needs a copy of my report", "Ray wants a printout of my notes", "Ray should get
+    a copy of it": a product made *of* a thing, wanted or to be got, asks for it to be made
+    as "make Hope a copy of my report" does; the thing it is made of is only the input."""
+    return (
+        words[at] in _WANTING
+        and at + 3 < len(words)
+        and words[at + 1] in ("a", "an")
+        and words[at + 2] in products
+        and words[at + 3] == "of"
+    )
 
 
 def _names_someone(terms: Terms, word: str) -> bool:

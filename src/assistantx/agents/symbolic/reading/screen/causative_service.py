@@ -1,0 +1,58 @@
+"""A service asked for in the causative: "get my report laminated", "have the contract
+shredded", "I need my file bound". English asks for work done on a thing by naming the thing
+after "get"/"have"/"need"/"want" and the work's past participle after it; where that work is
+one of English's services (``service_command.english_service_verbs``, irregular participles
+too: "bound" is "bind") and no operation of this office runs it, it is declined like the
+imperative "laminate my report" (``screen.service``), never read as handing the thing over.
+
+Only a definite thing counts ("my report", "the contract"): "get me a book bound in red" and
+"find a book bound in red" describe a thing to fetch ("bound" its adjective), and a verb
+with a recipient after it ("get me ...") fetches, never has work done."""
+
+from __future__ import annotations
+
+from assistantx.agents.symbolic.reading.screen.english import split_words
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.service_command import english_service_verbs
+from assistantx.core import language
+
+# the verbs that have work done on their object: "get it done", "have it done"
+_CAUSING = frozenset({"get", "have", "need", "want"})
+# what opens a definite object: the requester's thing, or one pointed at
+_DEFINITE = frozenset({"my", "our", "the", "this", "these", "that", "those", "it", "them"})
+# how many words a thing's name may run to between its opener and the participle
+_NAME_WORDS = 3
+
+
+def causative_service(terms: Terms, words: list[str], at: int) -> str | None:
+    """The service's verb ("laminate", "bind") when the words from ``at`` ask for it in the
+    causative and nothing in this office runs it; None otherwise."""
+    if 0 < at < len(words) and words[at] in _DEFINITE and words[at - 1] in _CAUSING:
+        at -= 1  # "I need my file bound": "need" is a lead-in of the request's verb
+    if at + 2 >= len(words) or not language.verb_lemmas(words[at]) & _CAUSING:
+        return None
+    if words[at + 1] not in _DEFINITE:
+        return None  # "get me a ...", "get a ...": a thing to fetch
+    first = at + 1 if words[at + 1] in ("it", "them") else at + 2
+    for n in range(first + 1, min(first + 1 + _NAME_WORDS, len(words))):
+        w = words[n]
+        if not language.is_past_participle(w):
+            continue
+        services = sorted(language.verb_lemmas(w) & english_service_verbs())
+        if not services:
+            return None  # "get my file fixed up"? no service of English's: not ours to say
+        if w in terms.service_verbs or set(services) & _office_verb_words(terms):
+            return None  # the office runs it ("get my file printed"): a request
+        return services[0]
+    return None
+
+
+def _office_verb_words(terms: Terms) -> frozenset[str]:
+    """Every word of the office's operations' verbs and names, in their bare form: "clean"
+    of "dry clean", which ``Terms.service_verbs`` keeps only the first word of."""
+    return frozenset(
+        w
+        for op in terms.office.operations
+        for phrase in (*op.verbs, op.name)
+        for w in split_words(phrase)
+    )
