@@ -74,6 +74,7 @@ from assistantx.agents.symbolic.reading.screen.unoffered_means import unoffered_
 from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
+from assistantx.agents.symbolic.reading.screen.whereabouts_reason import whereabouts_reason
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
 
@@ -141,6 +142,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "give Will my letter, she'll frank it later": what a colleague will do themselves,
     # never a service asked of the robot
     ("statement", others_plan),
+    # "where's Mark? need a word about the franking": why the question is asked, its topic
+    # never a service asked for
+    ("statement", whereabouts_reason),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     # "put Wang's stapler in my car": a vehicle or a home is outside, after "chuck it in
