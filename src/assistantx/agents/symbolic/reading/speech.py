@@ -40,6 +40,7 @@ from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
+from assistantx.agents.symbolic.reading.modal_told import told_with_modal
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
@@ -764,6 +765,8 @@ class SpeechActs:
             return True  # "no more water for me thanks": the speaker wants none
         if self._service_subject(w):
             return True  # "courier leaves at 3", "print is too small": told of the thing
+        if told_with_modal(w, self._named):
+            return True  # "van run might be off": a forecast about the thing, told
         if w and subject_of_fault(w, 0):
             return True  # "drive in slot 4 has died": a fault told, context for the ask
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
@@ -1057,6 +1060,8 @@ class SpeechActs:
             # "Will needs the umbrella": a name before a third person's verb is its subject,
             # never the "will" of a request (a modal takes no "-s" verb after it)
             said = set(w[1:])
+        if told_with_modal(w, self._named):
+            return False  # "the coffee could run out": a forecast, no "could" asked
         if self._imperative(w) or said & _WILLING or self._minded(w):
             return True
         return w[0] in ("i", "we", "id", "im", "need", "needs") and bool(set(w[:4]) & _NEED)
@@ -1151,6 +1156,8 @@ class SpeechActs:
             return True  # "leave it / put mine on her desk": where it is delivered, a command
         if self._service_subject(w[k:]):
             return False  # "print is too small on this form": the word is the subject
+        if told_with_modal(w[k:], self._named):
+            return False  # "frank might be pricey": a modal after it, so it is the subject
         if subject_of_fault(w, k):
             return False  # "print queue 3 is jammed": the subject of a fault, no command
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED

@@ -45,6 +45,8 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # the speaker's own doing beside a request ("need to check the contacts"),
         # before its place ("..., need to check levels on L2") is read as a placement
         "statement",  # a colleague's own doing beside a request ("needs to measure a box")
+        "statement",  # a colleague's own plan beside a request ("..., she'll frank it later")
+        "statement",  # why a colleague's whereabouts are asked ("where's X? need a word ...")
         "unplaced",  # a thing put where nothing of the office is, by a verb that is no errand
         "unplaced",  # a request cut off mid-sentence ("can you take my tray to")
         "unsupported",  # a thing put in a vehicle or a home ("put my book in my car")

@@ -68,19 +68,13 @@ _NEED_COUNT = re.compile(
 )
 
 
-# "we'll record the intro on the roof": its words are "well record ...", where "well" is
-# an opener and the speaker's team is lost; "we 'll" keeps the subject as its own word (and
-# "'ll" as "I'll" has it, no "will" that asks as in "will you ...")
-_WE_WILL = re.compile(r"\b(we)['’]ll\b", re.IGNORECASE)
-
-
 def subject_restored(text: str, things: frozenset[str] = frozenset()) -> tuple[str, list[Evidence]]:
     """``text`` with "I" back before a clause that opens with "been", "can't" + a verb,
     "just" + a past form, a past form and its object ("drew a blank"; a bare noun too, "drew
     blood", unless a name of the office's ``things`` follows: "printed file for Ana" asks for
     one),
     or (after a request) "need" + a number; "I'm" before the speaker's own going ("off to
-    ..."); "we'll" spelt "we 'll"."""
+    ...")."""
     found: list[Evidence] = []
 
     def been(match: re.Match[str]) -> str:
@@ -144,11 +138,6 @@ def subject_restored(text: str, things: frozenset[str] = frozenset()) -> tuple[s
             return match.group(0)  # "Drew up the road ...", no time it was done: as said
         return past(match)
 
-    def we_will(match: re.Match[str]) -> str:
-        found.append(Evidence(words=match.group(0), meaning="we will (the speaker's team)"))
-        return f"{match.group(1)} 'll"
-
-    text = _WE_WILL.sub(we_will, text)
     text = _PAST.sub(past, text)
     text = _PAST_PARTICLE.sub(past_particle, text)
     text = _PAST_BARE.sub(past_bare, text)

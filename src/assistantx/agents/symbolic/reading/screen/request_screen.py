@@ -13,6 +13,7 @@ from assistantx.agents.symbolic.reading.screen.anyones import anyones
 from assistantx.agents.symbolic.reading.screen.asked_leave import asked_leave
 from assistantx.agents.symbolic.reading.screen.brought_back import brought_back
 from assistantx.agents.symbolic.reading.screen.contracted_is import contracted_is
+from assistantx.agents.symbolic.reading.screen.contractions import contractions_apart
 from assistantx.agents.symbolic.reading.screen.correction import REPLACED, corrected
 from assistantx.agents.symbolic.reading.screen.dropped_subject import subject_restored
 from assistantx.agents.symbolic.reading.screen.english import split_words
@@ -67,6 +68,8 @@ class RequestScreen:
         text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
         text, owned = owned_head(terms, text, requester)  # "my lamp": my inspection lamp
         text, back = brought_back(terms, text)  # "and a coffee on the way back": mine
+        # "she'll frank it": "she 'll", never the word "shell" (before any word is looked up)
+        text, apart = contractions_apart(text)
         # "been at the machine": I've been
         text, restored = subject_restored(text, frozenset(terms.lex.items))
         text, doing = own_participle(text, terms.lex.read)  # "?, doing a survey on ...": I'm
@@ -89,6 +92,7 @@ class RequestScreen:
             *heads,
             *owned,
             *back,
+            *apart,
             *restored,
             *doing,
             *stated,

@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_doing import others_doing
+from assistantx.agents.symbolic.reading.screen.others_plan import others_plan
 from assistantx.agents.symbolic.reading.screen.others_send_out import others_send_out
 from assistantx.agents.symbolic.reading.screen.outside_account import outside_account
 from assistantx.agents.symbolic.reading.screen.outside_place import outside_place
@@ -73,6 +74,7 @@ from assistantx.agents.symbolic.reading.screen.unoffered_means import unoffered_
 from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
 from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
+from assistantx.agents.symbolic.reading.screen.whereabouts_reason import whereabouts_reason
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
 
@@ -137,6 +139,12 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "Priya needs to measure a carton. take her my tape measure": what a colleague will
     # work on with the thing asked for, never a thing to fetch
     ("statement", others_doing),
+    # "give Will my letter, she'll frank it later": what a colleague will do themselves,
+    # never a service asked of the robot
+    ("statement", others_plan),
+    # "where's Mark? need a word about the franking": why the question is asked, its topic
+    # never a service asked for
+    ("statement", whereabouts_reason),
     ("unplaced", unplaced),
     ("unplaced", cut_off),
     # "put Wang's stapler in my car": a vehicle or a home is outside, after "chuck it in

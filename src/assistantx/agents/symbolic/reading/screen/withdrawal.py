@@ -7,6 +7,7 @@ import itertools
 import re
 
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.past_service_reason import past_service_reason
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech_acts import without_fillers
@@ -114,6 +115,8 @@ def withdrawal(terms: Terms, piece: Piece, msg: Message | None = None) -> Findin
     if piece.start > 0 and not piece.asks and piece.acts.had_already and not replaced:
         if msg is not None and _told_of_the_recipient(msg, piece):
             return None
+        if msg is not None and past_service_reason(terms, msg, piece):
+            return None  # "..., shredded mine on a wire rope": why a new one is asked
         return Finding("withdrawn", piece, "what was asked for is had already")
     return None
 
