@@ -1,6 +1,6 @@
 """A send-out's place said only as someone's kind of place ("courier my report back to his
 school", "fax it to her office") names no place the service can send to: which school, and
-where? The place is asked (``reading.destination``), never sent as said; a place with a name,
+where? The place is asked (``reading.role_destination``), never sent as said; a place with a name,
 a number or an address, or an organisation said by its kind ("the county tax office"), is
 read as before."""
 

@@ -55,8 +55,6 @@ _CLAUSE_OPENERS = (
     | {p for p in english.entries("purpose_openers") if " " not in p}
     | {p for p in english.entries("condition_openers") if " " not in p}
 )
-# whose place a destination says without naming it ("to his school"): asked where
-_PLACE_OWNERS = frozenset({"his", "her", "their", "its"})
 # "for me", "for us": whom the request is for, said after the place.
 _FOR_WHOM = [["me"], ["us"]]
 # The words that are never part of a place's name after its comma ("..., it has to go today",
@@ -242,8 +240,6 @@ def find_outside(
             phrase = None  # "courier it to them": no place said; asked where
         if words[start] == "be":
             phrase = None  # "sent off to be dry cleaned": the work asked, no place said
-        if _someones_kind_of_place(tokens[start:end]):
-            phrase = None  # "courier my report back to his school": which school? asked
         if phrase is None:
             start = end = None
         else:
@@ -253,17 +249,6 @@ def find_outside(
                 phrase, detail_end = f"{phrase}, {detail.said}", detail.end
     return Outside(
         operation, verb_start, verb_end, start, end, phrase, means is not None, detail_end
-    )
-
-
-def _someones_kind_of_place(said: Sequence[Token]) -> bool:
-    """ "his school", "her office", "their place": a kind of place owned by a pronoun, no name,
-    number or address said: the service cannot send it anywhere with that (which school,
-    where?), so the place is asked, never sent as said."""
-    return (
-        len(said) >= 2
-        and said[0].word in _PLACE_OWNERS
-        and all(t.text[:1].islower() and not any(c.isdigit() for c in t.text) for t in said[1:])
     )
 
 

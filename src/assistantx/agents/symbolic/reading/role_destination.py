@@ -12,7 +12,8 @@ solicitors"). A capital (a proper name: "Bodegas Ruiz", "Westgate branch", "the 
 digit (an address: "12 High Street"), a word the dictionary lacks (a name said in lower case),
 any other word ("the supplier *in* Madrid", "the lawyer *at* 4 Quay Street") or a place head
 ("the client's *office*", "the central *library*", "the *bank*") makes it where, sent as
-said."""
+said; but a place head owned only by "his"/"her"/"their" ("back to his school", "to her
+office") says whose place, not which one nor where, and is asked too."""
 
 from __future__ import annotations
 
@@ -36,6 +37,9 @@ _PLACE_HEADS = (
 _OPENERS = frozenset({"the", "a", "an", "this", "that", "these", "those"}) | frozenset(
     {"my", "our", "your", "his", "her", "their"}
 )
+# a possessive of someone else that says whose a place is but not which or where ("courier my
+# report back to his school", "to her office"): asked, like a role
+_SOMEONES = frozenset({"his", "her", "their", "its"})
 # words that place or join ("up", "near", "back" are nouns or adjectives too): a phrase with
 # one says more than whom ("the supplier up north", "the agent near the port")
 _JOINS = english.words("prepositions_and_joins") | english.words("party_prepositions")
@@ -75,4 +79,6 @@ def names_only_a_role(phrase: str) -> bool:
     if not language.is_noun(head):
         return False
     lemmas = set(language.lemmas(head).get("NOUN", ())) | {head}
+    if said[0].lower() in _SOMEONES:
+        return True  # "his school", "her office": someone's place, never said which or where
     return not lemmas & _PLACE_HEADS  # "the client's office", "the bank": a place
