@@ -72,6 +72,7 @@ from assistantx.agents.symbolic.reading.described_items import (
     named_later,
     without_hyphened_description,
 )
+from assistantx.agents.symbolic.reading.described_outsider import outsider_only
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
     doubted_recipient,
@@ -457,6 +458,7 @@ class InstructionParser:
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
             named_once=the_one_named(whole, requester),
             message_named=the_ones_named(whole, requester),
+            outsider_said=outsider_only(whole, requester),
         )
         # only where the reader would act, or would pick a facility's service: a question
         # it asks already ("take that to Wang": what should I do?) stays the one asked
