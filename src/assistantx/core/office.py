@@ -314,9 +314,13 @@ class Office(_Model):
         """The office's electronic file type (what is forwarded and printed)."""
         return next((t.id for t in self.item_types if t.electronic), None)
 
-    def file_of(self, person: str) -> str:
+    def file_of(self, person: str, type_id: str | None = None) -> str:
         """The item id of ``person``'s file, whatever this office calls its electronic type
-        ("rota:ann", "log:bram"; ``file:…`` where the office has none)."""
+        ("rota:ann", "log:bram"; ``file:…`` where the office has none); ``type_id``: one of
+        the office's electronic types named ("my slides" where slides are a type of their
+        own beside the generic file), that one rather than the first."""
+        if type_id is not None and any(t.id == type_id and t.electronic for t in self.item_types):
+            return f"{type_id}:{person}"
         return f"{self.file_type() or FILE_WORD}:{person}"
 
     # -- items owned by nobody ------------------------------------------------------------

@@ -233,7 +233,8 @@ class Executor:
         file = action.file or self.ctx.office.file_of(action.source)
         have = set(stm.files_received.get(action.source, []))
         if action.source == stm.requester:
-            have.add(self.ctx.office.file_of(stm.requester))  # sent along with the instruction
+            # sent along with the instruction: the requester's file, of the type named
+            have.add(self.ctx.office.file_of(stm.requester, file.partition(":")[0]))
         if file not in have:
             return (
                 False,

@@ -104,7 +104,10 @@ def direct_reply(world: World, person: str, text: str) -> Reply | None:
     requests = mentioned_requests(world.office, text)
     wants_file = bool(electronic & set(named)) and FILE_KIND in requests
     if wants_file:
-        return Reply(person, "Sure, here is my file.", (world.office.file_of(person),))
+        # the file of the type asked for ("your slides" where slides are a type of their own)
+        kinds = [t for t in named if t in electronic]
+        asked = kinds[0] if len(kinds) == 1 else None
+        return Reply(person, "Sure, here is my file.", (world.office.file_of(person, asked),))
     service = [r for r in requests if r != FILE_KIND]
     if not service and not types and asks_to_do(text):
         service = facility_requests(world.office, text)  # "... through the 3D printer?"

@@ -422,7 +422,7 @@ class Planner:
                             beneficiary=t.recipient,
                         )
                     ]
-                phases = [Forward(owner, recipient, self.office.file_of(owner))]
+                phases = [Forward(owner, recipient, self.office.file_of(owner, item))]
         roles = [*self._consent(n, t, requester), *roles]
         confirms: list[Phase] = [Confirm(r) for r in roles if r.confirm]
         return CompiledTask(t, roles, [*confirms, *phases])

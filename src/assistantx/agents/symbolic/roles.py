@@ -408,7 +408,9 @@ class Roles:
                     said.append((turns[-1].time, person))
         if role.kind == "send_file":  # the file itself is the yes
             said += [
-                (0.0, p) for p in people if self.office.file_of(p) in ev.files_received.get(p, [])
+                (0.0, p)
+                for p in people
+                if self.office.file_of(p, role.item_type) in ev.files_received.get(p, [])
             ]
         return [p for _, p in sorted(said)]
 
@@ -449,7 +451,10 @@ class Roles:
                 role.kind == "send_file"
                 and said == "yes"
                 and ev.expired(q)
-                and (self.office.file_of(person) not in ev.files_received.get(person, []))
+                and (
+                    self.office.file_of(person, role.item_type)
+                    not in ev.files_received.get(person, [])
+                )
             ):
                 return "did not send the file"
             return None

@@ -910,7 +910,11 @@ class TaskReader:
                 and not roles.source
             ):
                 file_owner = s.owner(m) or helper or requester
-                tasks.append(Task(kind=FILE_KIND, item=self.file, owner=file_owner, recipient=to))
+                # the office's own electronic type the words named ("my slides" where slides
+                # are a type beside the generic file) is the file sent; a paper said as a
+                # file is the office's file
+                sent = m.id if kind == "electronic" else self.file
+                tasks.append(Task(kind=FILE_KIND, item=sent, owner=file_owner, recipient=to))
             else:
                 owner = s.owner(m) or cued.get(m.start) or helper
                 tasks.append(Task(kind="transfer", item=m.id, owner=owner, recipient=to))

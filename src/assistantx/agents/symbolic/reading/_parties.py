@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
+from assistantx.agents.symbolic.reading.described_outsider import points_to_outsider
 from assistantx.agents.symbolic.reading.gapped_recipient import gapped_recipient
 from assistantx.agents.symbolic.reading.indirect_object import is_indirect_object
 from assistantx.agents.symbolic.reading.joined_doers import joined_doers
@@ -22,6 +23,7 @@ from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
 from assistantx.agents.symbolic.reading.part_recipients import after_a_new_object, coordinated
 from assistantx.agents.symbolic.reading.source_not_recipient import not_the_source
+from assistantx.agents.symbolic.reading.speaker_wants import speaker_wants
 from assistantx.agents.symbolic.reading.standing_in import stands_in_for
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import yours_addressed
@@ -410,6 +412,7 @@ def clause_roles(
     not_meant: frozenset[str] = frozenset(),
     taken_from: Sequence[str] = (),
     message_named: Sequence[str] = (),
+    outsider_said: bool = False,
 ) -> Roles:
     """The roles of everyone a clause names; ``last_person`` collects who was named so far
     (for "him", "her"); ``addressed``: the colleague the message opens by addressing (whose
@@ -417,7 +420,9 @@ def clause_roles(
     cannot mean (the owner of the thing handed to them, ``frames._besides_owners``);
     ``taken_from``: whom an earlier clause took the thing this one hands on from ("get it from
     June and bring it to her": not June); ``message_named``: the colleagues the whole message
-    names, for a "them both" that follows no name of the request's own words."""
+    names, for a "them both" that follows no name of the request's own words;
+    ``outsider_said``: the whole message describes an outsider and names no colleague
+    (``described_outsider.outsider_only``), whom a "for him" with no one named means."""
     roles = Roles()
     ms = clause.mentions
     groups = joined_recipients(tokens, ms, requester, last_person or message_named)
@@ -488,6 +493,19 @@ def clause_roles(
             if prev in ("to", "for") or dative:
                 # "take it from Pat to her": not Pat, the one it is taken from
                 others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)
+            outsider = outsider_said or points_to_outsider(tokens, m.start)
+            # the speaker as the one it is handed to: "get *me* a coffee for him", "*I need*
+            # a coffee for him" ("bring a coffee for him" names nobody who takes it: asked)
+            mine = requester in roles.recipient or speaker_wants(
+                [t.word for t in tokens[: m.start]]
+            )
+            if prev == "for" and not dative and not others and outsider and mine:
+                # "a client's visiting from Dublin, get me a coffee for him": him is the
+                # outsider; only people of the office are handed anything, so the requester
+                # receives it to pass on
+                if requester not in roles.recipient:
+                    roles.add_recipient(requester, m.start)
+                continue
             if (prev in ("to", "for") or dative) and len(set(others)) != 1:
                 # never the requester by default, nor the last of two people named ("Thảo's
                 # on the ladder and Ivy's busy, take her a stool": whom?)

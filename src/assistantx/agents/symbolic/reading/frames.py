@@ -142,6 +142,7 @@ class FrameReader:
         kept_said: Mapping[str, str] | None = None,
         named_once: str | None = None,
         message_named: Sequence[str] = (),
+        outsider_said: bool = False,
     ) -> TaskFrame:
         """The tasks the readings ask for, or the question that is still open. ``holder``:
         who the whole message says has an item now (``holder``), for one given back;
@@ -152,7 +153,8 @@ class FrameReader:
         is kept (``said_kept``); ``named_once``: the one colleague the whole message names
         (``the_one_named``), whom "his" means when the request's own words name nobody;
         ``message_named``: every colleague it names (``the_ones_named``), whom "them both"
-        means when the request's own words name nobody before it."""
+        means when the request's own words name nobody before it; ``outsider_said``: it
+        describes an outsider and names no colleague, whom "for him" then means."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -187,6 +189,7 @@ class FrameReader:
                     addressed=addressed,
                     taken_from=passed_on,
                     message_named=message_named,
+                    outsider_said=outsider_said,
                 )
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)

@@ -72,6 +72,7 @@ from assistantx.agents.symbolic.reading.described_items import (
     named_later,
     without_hyphened_description,
 )
+from assistantx.agents.symbolic.reading.described_outsider import outsider_only
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
     doubted_recipient,
@@ -80,6 +81,7 @@ from assistantx.agents.symbolic.reading.doubted_person import (
 from assistantx.agents.symbolic.reading.due_service import DueService
 from assistantx.agents.symbolic.reading.emailed_paper import BRING, emailed_paper
 from assistantx.agents.symbolic.reading.file_subject import without_file_subject
+from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     RESTATED,
@@ -291,6 +293,8 @@ class InstructionParser:
         text = held_by_clauses(text, self.screen.terms.is_person_word)
         # "take my report to Wang to get it signed? need it back": signed by Wang, to me
         text = taken_for_service(text, self.screen.terms.is_person_word)
+        # "scan my form, customs want a pdf": why it is asked, not a second errand
+        text = without_format_reasons(text, self.screen.terms.is_person_word)
         # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
@@ -457,6 +461,7 @@ class InstructionParser:
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
             named_once=the_one_named(whole, requester),
             message_named=the_ones_named(whole, requester),
+            outsider_said=outsider_only(whole, requester),
         )
         # only where the reader would act, or would pick a facility's service: a question
         # it asks already ("take that to Wang": what should I do?) stays the one asked

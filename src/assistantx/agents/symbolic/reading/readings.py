@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 
 from assistantx.agents.symbolic.reading.carried_to import carried_to
 from assistantx.agents.symbolic.reading.codes import code_of_a_thing
+from assistantx.agents.symbolic.reading.described_outsider import named_things, outsider_origin
 from assistantx.agents.symbolic.reading.described_owner import described_role
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
@@ -401,6 +402,8 @@ class MentionReader:
                 continue  # "before it goes to Acme": when, by what happens to it later
             if m.kind == "word" and self._result_form(tokens, m):
                 continue  # "scan my signed waybill to PDF": the result's form, not a person
+            if m.kind == "word" and outsider_origin(tokens, m.start, named_things(mentions)):
+                continue  # "a visitor from Shenzhen": where an outsider comes from, a place
             if m.kind == "word" and _unknown_name(tokens, mentions, n, self._people_words):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
