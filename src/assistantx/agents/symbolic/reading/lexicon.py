@@ -1025,7 +1025,9 @@ class Lexicon:
     def _settled_by_owner(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Yang's book", "Yang said I could borrow his book": a name several people share
         means the one of them who owns the item it is said to own, when only one does (a typo
-        stays in doubt: the name itself is uncertain)."""
+        stays in doubt: the name itself is uncertain). Only ownership the assistant knows
+        counts: a thing the office lists as a colleague's but unknown to the assistant
+        (``known: false``) is no ground to pick them, so the name is asked."""
         out = list(mentions)
         for n, m in enumerate(out):
             if m.kind != "person" or len(m.ids) < 2 or tokens[m.start].corrected:
@@ -1033,7 +1035,7 @@ class Lexicon:
             item = self._owned_item(out, n)
             if item is None:
                 continue
-            owners = set(self.office.owners_of(item))
+            owners = set(self.office.owners_of(item, known_only=True))
             candidates = tuple(i for i in m.ids if i in owners)
             word = tokens[m.start].word
             spelled = self.people.get(word, set()) | self.name_words.get(word, set())
