@@ -832,7 +832,11 @@ class Lexicon:
         """ "a post-it pad", "a box of staples": an item named by a unit of it, or by the
         singular of its plural name (``measured_items``)."""
         kinds = {k: m.kind for m in mentions for k in range(m.start, m.end)}
-        for start, end, type_id in singular_spans(tokens, kinds, self.singulars, self.max_words):
+        items = {
+            k: (m.start, m.end) for m in mentions if m.kind == "item" for k in range(m.start, m.end)
+        }
+        spans = singular_spans(tokens, kinds, self.singulars, self.max_words, items)
+        for start, end, type_id in spans:
             text = " ".join(t.text for t in tokens[start:end])
             found = Mention("item", start, end, (type_id,), tokens[end - 1].possessive, text)
             mentions = _replaced(mentions, found)

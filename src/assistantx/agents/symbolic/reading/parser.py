@@ -89,6 +89,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
+from assistantx.agents.symbolic.reading.headed_supply import headed_supply
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
@@ -553,6 +554,10 @@ class InstructionParser:
                 # "a flat white from the coffee machine": a variety of the one thing it makes
                 variety = variety_of(self.office, mentions, unlisted[1])
                 said = with_choice(request, *variety) if variety is not None else None
+                # "a blade from the cupboard" where it keeps scalpel blades: those
+                headed = headed_supply(self.office, *unlisted) if said is None else None
+                if headed is not None:
+                    said = with_choice(request, unlisted[0].split(), headed)
                 if said is not None:
                     return self._frame(whole, said, requester, sent_out, to_self, destination)
                 # "50 ml of chloroform from the chem store": declined by name, nothing swapped
