@@ -120,6 +120,7 @@ from assistantx.agents.symbolic.reading.offer_reply import (
     offer_reply,
     plain_stance,
 )
+from assistantx.agents.symbolic.reading.operation_answered import operation_answered
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -638,6 +639,10 @@ class InstructionParser:
             if frame.question is not None and frame.question.startswith(OUT_OR_IN):
                 frame = self._out_or_in(text, requester, answer, frame)
                 continue
+            op_id = operation_answered(self.office, frame.question or "", answer)
+            if op_id is not None:  # "Which do you mean: print or large-format plot?" "plot"
+                frame = self._with_operation(op_id).parse(text, requester)
+                continue
             chose = with_possessive_chosen(self.lex, text, frame.question or "", answer)
             if chose is not None:  # "grab bills ruler" → "Bill's ruler, or any?" → "any"
                 text, frame = chose, self.parse(chose, requester)
@@ -875,6 +880,14 @@ class InstructionParser:
             for t in out.tasks
         ]
         return out.model_copy(update={"tasks": inside})
+
+    def _with_operation(self, op_id: str) -> InstructionParser:
+        """The same stages, with the operation the requester chose when asked which."""
+        other = copy.copy(self)
+        other._remembered = None  # reads differently: remembers nothing of its own
+        other.operations = copy.copy(self.operations)
+        other.operations.chosen = op_id
+        return other
 
     def _choosing(self, chosen: dict[str, Reading]) -> InstructionParser:
         """The same stages, with a lexicon that reads the name words the requester was asked
