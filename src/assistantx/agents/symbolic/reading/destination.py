@@ -14,6 +14,7 @@ import re
 from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
+from assistantx.agents.symbolic.reading.address_run import address_run
 from assistantx.agents.symbolic.reading.destination_detail import detail_after
 from assistantx.agents.symbolic.reading.named_place import named_place
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -210,6 +211,10 @@ def find_outside(
                 if one is not None:  # "the lab, the Bristol one": the Bristol lab
                     end, which = one
                     unclear = which is None
+                    break
+                run = address_run(tokens, gaps, end, stop, names)
+                if run is not None:  # "..., Civic Centre, Water Gardens, Harlow": all of it
+                    end = run
                     break
                 more = _address_tail(tokens, gaps, start, end, stop, names)
                 if more == end:

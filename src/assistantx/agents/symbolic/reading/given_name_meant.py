@@ -44,7 +44,9 @@ class GivenNameMeant:
         bare: Mapping[str, set[str]],
     ) -> None:
         self._given = given_names(office, key)
-        self._owned = {p.id: {o.type for o in p.owns} for p in office.people}
+        # what each colleague is known to own: a thing unknown to the assistant (``known:
+        # false``) never decides between namesakes
+        self._owned = {p.id: {o.type for o in p.owns if o.known} for p in office.people}
         self._ranked = _ranked_family_names(office, key)
         self._family = family
         self._bare = bare

@@ -832,7 +832,11 @@ class Lexicon:
         """ "a post-it pad", "a box of staples": an item named by a unit of it, or by the
         singular of its plural name (``measured_items``)."""
         kinds = {k: m.kind for m in mentions for k in range(m.start, m.end)}
-        for start, end, type_id in singular_spans(tokens, kinds, self.singulars, self.max_words):
+        items = {
+            k: (m.start, m.end) for m in mentions if m.kind == "item" for k in range(m.start, m.end)
+        }
+        spans = singular_spans(tokens, kinds, self.singulars, self.max_words, items)
+        for start, end, type_id in spans:
             text = " ".join(t.text for t in tokens[start:end])
             found = Mention("item", start, end, (type_id,), tokens[end - 1].possessive, text)
             mentions = _replaced(mentions, found)
@@ -1025,7 +1029,9 @@ class Lexicon:
     def _settled_by_owner(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Yang's book", "Yang said I could borrow his book": a name several people share
         means the one of them who owns the item it is said to own, when only one does (a typo
-        stays in doubt: the name itself is uncertain)."""
+        stays in doubt: the name itself is uncertain). Only ownership the assistant knows
+        counts: a thing the office lists as a colleague's but unknown to the assistant
+        (``known: false``) is no ground to pick them, so the name is asked."""
         out = list(mentions)
         for n, m in enumerate(out):
             if m.kind != "person" or len(m.ids) < 2 or tokens[m.start].corrected:
@@ -1033,7 +1039,7 @@ class Lexicon:
             item = self._owned_item(out, n)
             if item is None:
                 continue
-            owners = set(self.office.owners_of(item))
+            owners = set(self.office.owners_of(item, known_only=True))
             candidates = tuple(i for i in m.ids if i in owners)
             word = tokens[m.start].word
             spelled = self.people.get(word, set()) | self.name_words.get(word, set())

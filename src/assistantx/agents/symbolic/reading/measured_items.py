@@ -20,7 +20,11 @@ and so is one of them ("a post-it"). So:
   unit it is still the item ("a wipe pack").
 
 Only words no other name of the office reads are read so: a singular that is already a name
-of the office (a person, place, facility, another item, a task word) keeps that reading.
+of the office (a person, place, facility, another item, a task word) keeps that reading. But
+a singular of several words holds a shorter item's name whole as the plural does ("a *scalpel
+blade*" where a scalpel is another item, as "scalpel blades" is read whole, longest first):
+the longer name is the thing said, word by word its lemmas, not the scalpel and a stray
+"blade".
 """
 
 from __future__ import annotations
@@ -81,14 +85,20 @@ def singular_spans(
     kinds: Mapping[int, str],
     found: Mapping[str, str],
     longest: int,
+    items: Mapping[int, tuple[int, int]] | None = None,
 ) -> list[tuple[int, int, str]]:
     """The (start, end, type id) of each singular of a plural name said where a counted noun
-    stands; ``kinds``: the mention kind the lexicon read at each token."""
+    stands; ``kinds``: the mention kind the lexicon read at each token; ``items``: the span
+    of the item mention at each token read as one."""
     out: list[tuple[int, int, str]] = []
     starts = {phrase.split(" ", 1)[0] for phrase in found}  # a name begins only there
     i = 0
     while i < len(tokens):
-        span = _singular_at(tokens, kinds, found, longest, i) if tokens[i].word in starts else None
+        span = (
+            _singular_at(tokens, kinds, found, longest, i, items or {})
+            if tokens[i].word in starts
+            else None
+        )
         if span is None:
             i += 1
             continue
@@ -103,10 +113,11 @@ def _singular_at(
     found: Mapping[str, str],
     longest: int,
     i: int,
+    items: Mapping[int, tuple[int, int]],
 ) -> tuple[int, int, str] | None:
     for n in range(min(longest, len(tokens) - i), 0, -1):
         end = i + n
-        if any(kinds.get(k) not in _PLAIN for k in range(i, end)):
+        if any(not _free(kinds, items, k, i, end) for k in range(i, end)):
             continue
         if any(tokens[k].opens or tokens[k].after_pause for k in range(i + 1, end)):
             continue  # "post. It ...": no one name across a break
@@ -121,6 +132,24 @@ def _singular_at(
         if counted and _asked_for(tokens, kinds, i - 1):
             return i, end, type_id  # "bring me a wipe": the thing, not the act
     return None
+
+
+def _free(
+    kinds: Mapping[int, str], items: Mapping[int, tuple[int, int]], k: int, start: int, end: int
+) -> bool:
+    """Whether token ``k`` may be read as part of a singular spanning ``start``-``end``: a
+    word no name of the office reads, or a word of a shorter item's name said whole inside a
+    singular of several words ("scalpel" of "a scalpel blade")."""
+    if kinds.get(k) in _PLAIN:
+        return True
+    span = items.get(k)
+    return (
+        end - start > 1
+        and kinds.get(k) == "item"
+        and span is not None
+        and start <= span[0]
+        and span[1] <= end
+    )
 
 
 def _asked_for(tokens: Sequence[Token], kinds: Mapping[int, str], article: int) -> bool:

@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     inflections,
 )
 from assistantx.agents.symbolic.reading.role_destination import names_only_a_role
+from assistantx.agents.symbolic.reading.size_words import facility_sizes, sized_facility
 from assistantx.agents.symbolic.reading.tokens import gaps
 from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language
@@ -91,6 +92,11 @@ class OperationChooser:
             | {form for means in _means_of(op) for form in inflections(means)}
             for op in office.operations
         }
+        # the size each facility's own words say it works to ("A3 printer", "large-format")
+        self._sizes = facility_sizes(office)
+        # the operation the requester chose when asked which ("Which do you mean: print or
+        # large-format plot?"), for the re-read of the request with that answer
+        self.chosen: str | None = None
 
     def choose(
         self,
@@ -128,6 +134,12 @@ class OperationChooser:
             if m.kind == "facility" and not (outside is not None and outside.holds(m.start))
             for op in self.office.facility(m.ids[0]).operations
         }
+        if not facility_ops:
+            # "printed big, A1 if poss": the one facility whose own words say that size is
+            # named by it, as by its name
+            sized = sized_facility(self._sizes, in_order)
+            if sized is not None:
+                facility_ops = set(self.office.facility(sized).operations)
         products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
         named_products = {i for m in (whole or lexed).mentions if m.kind == "item" for i in m.ids}
         # "as label sheets", "into a PDF": the products the item is to be made into
@@ -195,6 +207,8 @@ class OperationChooser:
                     said = [
                         op for op in ops if op.product is not None and op.product in named_products
                     ]
+                if len(said) != 1:
+                    said = [op for op in ops if op.id == self.chosen] or said  # as answered
                 if len(said) != 1:
                     names = " or ".join(op.name for op in ops)
                     return TaskFrame(
@@ -296,8 +310,16 @@ class OperationChooser:
             for op in self.office.operations
             if op.input == task.item and self.office.runnable(op.id) and not op.sends_out
         ]
+        chosen = [op for op in fits if op.id == self.chosen]
+        if chosen:  # "Which do you mean: print or large-format plot?" "The plot."
+            return [self._as(task, chosen[0])], None
         order = {w: n for n, w in reversed(list(enumerate(words)))}
         said = [op for op in fits if self._op_words[op.id] & set(words)]
+        there = [op for op in said if op.id in facility_ops]
+        if len(said) > 1 and len(there) == 1 and place[1] == 1:
+            # "print my poster big" where the printer and the plotter both print: the one
+            # the facility named (or its size, ``size_words``) offers
+            said = there
         into = [op for op in fits if op.product in made]
         if len(into) == 1 and {op.shape(self.office) for op in [*said, *into]} == {
             into[0].shape(self.office)
@@ -332,6 +354,11 @@ class OperationChooser:
             return [self._as(task, sorted([*said, *at_named, *sent], key=said_at)[at])], None
         if len(said) > 1:
             said = self._made_into(said, words)
+        if len(said) > 1 and peers == 1 and self._one_word_for_all(said, set(words)):
+            # "print my drawings" where the printer and the plotter both print: one verb said,
+            # several services it names; which is meant is asked, never both run
+            either = " or ".join(op.name for op in said)
+            return [task], f"Which do you mean: {either}?"
         if len(said) > 1:
             # in the order they were said: "photocopy and bind" copies, then binds
             said.sort(key=lambda op: min(order.get(w, len(order)) for w in self._op_words[op.id]))
@@ -372,6 +399,12 @@ class OperationChooser:
             listed = ", ".join(names[:-1]) + " or " + names[-1]
             return [task], f"Which do you mean: {listed}?"
         return [task], None
+
+    def _one_word_for_all(self, said: list[Operation], words: set[str]) -> bool:
+        """Whether the services ``said`` were all named by the same words only (one verb
+        they share, "print"), none by a word of its own ("photocopy and bind")."""
+        named = [self._op_words[op.id] & words for op in said]
+        return all(n == named[0] for n in named)
 
     def _glued(self, said: list[Operation], lexed: Lexed) -> bool:
         """Whether the verbs of two of ``said`` stand side by side ("laser print")."""

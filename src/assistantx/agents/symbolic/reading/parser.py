@@ -91,6 +91,7 @@ from assistantx.agents.symbolic.reading.frames import (
     named_items,
 )
 from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
+from assistantx.agents.symbolic.reading.headed_supply import headed_supply
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
@@ -121,6 +122,7 @@ from assistantx.agents.symbolic.reading.offer_reply import (
     offer_reply,
     plain_stance,
 )
+from assistantx.agents.symbolic.reading.operation_answered import operation_answered
 from assistantx.agents.symbolic.reading.operations import (
     OUT_OR_IN,
     WHERE_TO,
@@ -558,6 +560,10 @@ class InstructionParser:
                 # "a flat white from the coffee machine": a variety of the one thing it makes
                 variety = variety_of(self.office, mentions, unlisted[1])
                 said = with_choice(request, *variety) if variety is not None else None
+                # "a blade from the cupboard" where it keeps scalpel blades: those
+                headed = headed_supply(self.office, *unlisted) if said is None else None
+                if headed is not None:
+                    said = with_choice(request, unlisted[0].split(), headed)
                 if said is not None:
                     return self._frame(whole, said, requester, sent_out, to_self, destination)
                 # "50 ml of chloroform from the chem store": declined by name, nothing swapped
@@ -637,6 +643,10 @@ class InstructionParser:
                 break
             if frame.question is not None and frame.question.startswith(OUT_OR_IN):
                 frame = self._out_or_in(text, requester, answer, frame)
+                continue
+            op_id = operation_answered(self.office, frame.question or "", answer)
+            if op_id is not None:  # "Which do you mean: print or large-format plot?" "plot"
+                frame = self._with_operation(op_id).parse(text, requester)
                 continue
             chose = with_possessive_chosen(self.lex, text, frame.question or "", answer)
             if chose is not None:  # "grab bills ruler" → "Bill's ruler, or any?" → "any"
@@ -875,6 +885,14 @@ class InstructionParser:
             for t in out.tasks
         ]
         return out.model_copy(update={"tasks": inside})
+
+    def _with_operation(self, op_id: str) -> InstructionParser:
+        """The same stages, with the operation the requester chose when asked which."""
+        other = copy.copy(self)
+        other._remembered = None  # reads differently: remembers nothing of its own
+        other.operations = copy.copy(self.operations)
+        other.operations.chosen = op_id
+        return other
 
     def _choosing(self, chosen: dict[str, Reading]) -> InstructionParser:
         """The same stages, with a lexicon that reads the name words the requester was asked

@@ -7,6 +7,7 @@ or the request."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.screen.address_part import outside_address_part
 from assistantx.agents.symbolic.reading.screen.addressed import only_addressed
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
 from assistantx.agents.symbolic.reading.screen.anyones import anyones
@@ -114,6 +115,8 @@ class RequestScreen:
         )
         findings: list[Finding] = []
         for piece in msg.pieces:
+            if outside_address_part(terms, msg, piece):
+                continue  # "..., Water Gardens, Harlow": the destination's, no rule reads it
             for _, rule in RULES:
                 found = rule(terms, msg, piece, requester)
                 if found is not None:
