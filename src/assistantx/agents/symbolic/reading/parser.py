@@ -136,6 +136,7 @@ from assistantx.agents.symbolic.reading.parts import (
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.pictographs import without_pictographs
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
+from assistantx.agents.symbolic.reading.placeholder_thing import placeholder_question
 from assistantx.agents.symbolic.reading.possessive_choice import with_possessive_chosen
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
@@ -283,6 +284,10 @@ class InstructionParser:
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = without_pictographs(text)  # "... and no marker 😩": the face is tone only
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        # "bring me the thing from the fridge": which thing is asked, nothing picked
+        placeholder = placeholder_question(self.office, self.lex.read(text))
+        if placeholder is not None:
+            return TaskFrame(requester=requester, question=placeholder)
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
