@@ -63,3 +63,24 @@ def raw_brewhouse() -> dict[str, Any]:
 
 
 brewhouse = ob.parsed(raw_brewhouse)
+
+
+def raw_brewhouse_that_couriers() -> dict[str, Any]:
+    """The brewery whose back office also couriers a document out ("send", "courier"), so a
+    past "sent" may be taken for that service."""
+    raw = raw_brewhouse()
+    raw["operations"].append(
+        ob.operation(
+            "courier",
+            "send",
+            "courier",
+            input="document",
+            sends_out=True,
+            destination_asked="the address",
+        )
+    )
+    next(f for f in raw["facilities"] if f["id"] == "laminator")["operations"].append("courier")
+    return raw
+
+
+brewhouse_that_couriers = ob.parsed(raw_brewhouse_that_couriers)

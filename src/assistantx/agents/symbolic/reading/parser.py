@@ -161,6 +161,7 @@ from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
+from assistantx.agents.symbolic.reading.sent_file import sent_files
 from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
@@ -292,6 +293,8 @@ class InstructionParser:
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
         text = approved_uses(text)
+        # "print the spreadsheet I sent", "the file Wang sent": my spreadsheet, Wang's file
+        text = sent_files(text, self.screen.terms.is_person_word, self._as_file)
         # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
         text = held_by_clauses(text, self.screen.terms.is_person_word)
         # "take my report to Wang to get it signed? need it back": signed by Wang, to me
@@ -426,6 +429,24 @@ class InstructionParser:
         """Whether ``phrase`` is one of the office's items the office can give and nothing
         else ("pen")."""
         return given_thing(self.lex)([t.word for t in self.lex.tokens(phrase)])
+
+    def _as_file(self, phrase: str) -> str | None:
+        """``phrase`` said as one of the office's electronic files: as it is where it ends in
+        a name of one ("invoice spreadsheet", "deck"); with the file's name after it where it
+        names nothing the office knows ("budget workbook": "budget workbook electronic file",
+        a thing sent to the robot that is no item of the office is a file); None where it
+        names another item, a person or a place ("the form I sent")."""
+        lexed = self.lex.read(phrase)
+        named = [m for m in lexed.mentions if m.kind != "word"]
+        if not named:
+            kind = self.office.file_type()
+            return None if kind is None else f"{phrase} {self.office.item_type(kind).name}"
+        last = named[-1]
+        if last.kind != "item" or last.end != len(lexed.tokens):
+            return None
+        if not all(self.office.item_type(i).kind == "electronic" for i in last.ids):
+            return None
+        return phrase
 
     def _names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
