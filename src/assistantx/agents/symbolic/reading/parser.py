@@ -93,6 +93,7 @@ from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
+from assistantx.agents.symbolic.reading.keeper_asked_work import keeper_asked_work
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
@@ -407,6 +408,12 @@ class InstructionParser:
         frame = with_named_doer(
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
+        if not frame.tasks and frame.question is not None:
+            # "need an ABV on my sample, can zosia run it": the work of the keeper's facility
+            # on the requester's thing, where the need's noun named none
+            plain = keeper_asked_work(self.office, spoken.msg.lexed, requester)
+            if plain is not None:
+                return self.parse(plain, requester, confirmed=confirmed)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _work_verb(self, word: str) -> bool:
