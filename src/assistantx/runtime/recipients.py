@@ -53,6 +53,7 @@ from assistantx.agents.symbolic.reading.surnames import family_names
 from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
 from assistantx.core.asked_to_have import asked_to_have
+from assistantx.core.handed_owner import carried_to
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.needed_instead import needs_the_thing
 from assistantx.core.occasion_noun import occasion_noun
@@ -563,6 +564,7 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
             if not (m.possessive and m.start > n)
             and _before(words, m.start) != "from"
             and not _holder(words, m.end)
+            and not _owner_carried(folded, m, n, office_words.items)
             for person in m.people
         } - {requester}
         if len(candidates) > 1 and any(x.folded in _IT for x in words[max(0, n - 3) : n]):
@@ -585,6 +587,16 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         if len(candidates) == 1:
             named |= candidates
     return frozenset(named - {requester})
+
+
+def _owner_carried(folded: list[str], m: _Mention, n: int, items: frozenset[str]) -> bool:
+    """Whether ``m`` is the possessive of the thing carried to the pronoun at ``n`` ("take
+    May's over to her", "bring Chen's scissors to him"): its owner, never whom "her" means
+    (``core.handed_owner``; "May's back to her" goes home to May)."""
+    if not m.possessive:
+        return False
+    to = carried_to(folded, m.end, items)
+    return to is not None and to + 1 == n
 
 
 def _for_an_occasion(words: list[_Word], m: _Mention, office_words: _OfficeWords) -> bool:

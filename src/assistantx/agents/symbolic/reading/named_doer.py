@@ -22,6 +22,7 @@ from assistantx.agents.symbolic.reading.named_maker import (
     asked_colleagues,
     done_by_keeper_or_asked,
 )
+from assistantx.agents.symbolic.reading.work_pro_verb import work_referred_to
 from assistantx.core import english
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import Task, TaskFrame, operation_of
@@ -34,6 +35,10 @@ def _asked_to_do(whole: Lexed, requester: str, kind: str) -> set[str]:
     after the name."""
 
     def doing(at: int) -> bool:
+        # "could Mark scan it", and "could Mark run it / do it": the work named before
+        # (``work_pro_verb``)
+        if work_referred_to(whole.tokens, at):
+            return True
         return any(c.kind == "cue" and c.start == at and kind in c.ids for c in whole.mentions)
 
     return asked_colleagues(whole, requester, doing)

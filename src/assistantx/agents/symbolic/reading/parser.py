@@ -96,6 +96,7 @@ from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
+from assistantx.agents.symbolic.reading.keeper_asked_work import keeper_asked_work
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
@@ -140,6 +141,7 @@ from assistantx.agents.symbolic.reading.parts import (
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.pictographs import without_pictographs
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
+from assistantx.agents.symbolic.reading.placeholder_thing import placeholder_question
 from assistantx.agents.symbolic.reading.possessive_choice import with_possessive_chosen
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
@@ -164,6 +166,7 @@ from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
+from assistantx.agents.symbolic.reading.sent_file import sent_files
 from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
@@ -287,10 +290,16 @@ class InstructionParser:
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
         text = without_pictographs(text)  # "... and no marker 😩": the face is tone only
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
+        # "bring me the thing from the fridge": which thing is asked, nothing picked
+        placeholder = placeholder_question(self.office, self.lex.read(text))
+        if placeholder is not None:
+            return TaskFrame(requester=requester, question=placeholder)
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
         text = approved_uses(text)
+        # "print the spreadsheet I sent", "the file Wang sent": my spreadsheet, Wang's file
+        text = sent_files(text, self.screen.terms.is_person_word, self._as_file)
         # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
         text = held_by_clauses(text, self.screen.terms.is_person_word)
         # "take my report to Wang to get it signed? need it back": signed by Wang, to me
@@ -405,6 +414,12 @@ class InstructionParser:
         frame = with_named_doer(
             self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
         )
+        if not frame.tasks and frame.question is not None:
+            # "need an ABV on my sample, can zosia run it": the work of the keeper's facility
+            # on the requester's thing, where the need's noun named none
+            plain = keeper_asked_work(self.office, spoken.msg.lexed, requester)
+            if plain is not None:
+                return self.parse(plain, requester, confirmed=confirmed)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
 
     def _work_verb(self, word: str) -> bool:
@@ -427,6 +442,24 @@ class InstructionParser:
         """Whether ``phrase`` is one of the office's items the office can give and nothing
         else ("pen")."""
         return given_thing(self.lex)([t.word for t in self.lex.tokens(phrase)])
+
+    def _as_file(self, phrase: str) -> str | None:
+        """``phrase`` said as one of the office's electronic files: as it is where it ends in
+        a name of one ("invoice spreadsheet", "deck"); with the file's name after it where it
+        names nothing the office knows ("budget workbook": "budget workbook electronic file",
+        a thing sent to the robot that is no item of the office is a file); None where it
+        names another item, a person or a place ("the form I sent")."""
+        lexed = self.lex.read(phrase)
+        named = [m for m in lexed.mentions if m.kind != "word"]
+        if not named:
+            kind = self.office.file_type()
+            return None if kind is None else f"{phrase} {self.office.item_type(kind).name}"
+        last = named[-1]
+        if last.kind != "item" or last.end != len(lexed.tokens):
+            return None
+        if not all(self.office.item_type(i).kind == "electronic" for i in last.ids):
+            return None
+        return phrase
 
     def _names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""

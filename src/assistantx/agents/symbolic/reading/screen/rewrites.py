@@ -32,6 +32,7 @@ from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.core import english, language
 from assistantx.core.asked_to_have import asked_to_have
+from assistantx.core.handed_owner import carried_to
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
 
@@ -285,7 +286,8 @@ def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, li
     pattern = re.compile(
         r"(?<!\bof\s)\b(mine\b|yours\b|\w+['’]s(?=\s*(?:[,.!?;]|$|\s+(?:please|too|instead|then|if|"
         r"and|or|for now|for a bit|for today|(?:(?:down|up|over|round|across)\s+)?(?:for|to) "
-        r"(?:me|us|him|her|them)|to [A-Z]\w+|back|over)\b)))",
+        r"(?:me|us|him|her|them)|(?:(?:down|up|over|round|around|across|along)\s+)?to [A-Z]\w+|"
+        r"back|over)\b)))",
         re.IGNORECASE,
     )
     return pattern.sub(whole, text), evidence
@@ -454,14 +456,15 @@ def _source(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> boo
         return True
     if not m.possessive or m.end >= len(tokens):
         return False
-    if tokens[m.end].word == _TO:
-        return True  # "take Dawn's to him": the bare possessive of the thing said before
+    if carried_to([t.word for t in tokens], m.end) is not None:
+        # "take Dawn's to him", "take May's over to her": the bare possessive of the thing
+        # said before, carried to someone else (``core.handed_owner``; "back to her" is not)
+        return True
     after = mentions[n + 1] if n + 1 < len(mentions) else None
     return after is not None and after.start == m.end and after.kind == "item"
 
 
 _FROM = "from"
-_TO = "to"
 
 
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").
