@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.joined_recipients import chains
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import task_kinds
@@ -39,39 +40,19 @@ def joined_doers(
     """The groups of colleagues joined as the doers of a clause's work, each in the order
     said: a list of names one of which is among ``actors``; ``busy``: the people the clause
     gives another role (a recipient, a source), whose list is no group of doers."""
+    said = [m for m in ms if m.kind != "word"]
     groups: list[tuple[str, ...]] = []
-    for run in _runs(tokens, [m for m in ms if m.kind != "word"]):
-        people = tuple(dict.fromkeys(m.ids[0] for m in run))
+    for run in chains(said, tokens, party=_one_person, join=_join):
+        people = tuple(dict.fromkeys(said[k].ids[0] for k in run))
         if len(people) < 2 or not set(people) & set(actors) or set(people) & set(busy):
             continue
         groups.append(people)
     return groups
 
 
-def _runs(tokens: Sequence[Token], said: Sequence[Mention]) -> list[list[Mention]]:
-    """Runs of two or more single named people (never "me": the requester does no work for
-    themself), each joined to the one before by "and"/"then" words or a list's comma."""
-    runs: list[list[Mention]] = []
-    n = 0
-    while n < len(said):
-        run, joins = [said[n]], []
-        while _one_person(run[-1]) and n + 1 < len(said) and _one_person(said[n + 1]):
-            join = _join(tokens, run[-1], said[n + 1])
-            if not join:
-                break
-            run.append(said[n + 1])
-            joins.append(join)
-            n += 1
-        while joins and joins[-1] == ",":  # "Wang, Sun needs ...": a comma ends no list
-            joins.pop()
-            run.pop()
-        if len(run) >= 2:
-            runs.append(run)
-        n += 1
-    return runs
-
-
-def _one_person(m: Mention) -> bool:
+def _one_person(m: Mention, tokens: Sequence[Token]) -> bool:
+    """A single named colleague, never "me": the requester does no work for themself."""
+    del tokens
     return m.kind == "person" and len(m.ids) == 1 and not m.possessive
 
 

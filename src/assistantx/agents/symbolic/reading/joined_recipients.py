@@ -24,7 +24,7 @@ for each; one physical thing cannot go to two people, so whom is asked.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.indirect_object import gives_from_verb, opens_noun_phrase
@@ -83,31 +83,39 @@ def _join(tokens: Sequence[Token], a: Mention, b: Mention) -> str:
     return ""
 
 
-def _chains(ms: Sequence[Mention], tokens: Sequence[Token]) -> list[list[int]]:
+def chains(
+    ms: Sequence[Mention],
+    tokens: Sequence[Token],
+    party: Callable[[Mention, Sequence[Token]], bool] | None = None,
+    join: Callable[[Sequence[Token], Mention, Mention], str] | None = None,
+) -> list[list[int]]:
     """Runs of two or more party mentions (by index), each joined by "and" to the one before,
-    or by commas in a list that ends with "and" ("Wang, Sun and Mao")."""
-    chains: list[list[int]] = []
+    or by commas in a list that ends with "and" ("Wang, Sun and Mao"); ``party`` says which
+    mentions may be members (``one_party``), ``join`` how two are joined ("and", "," or "")."""
+    party = party or one_party
+    join = join or _join
+    found: list[list[int]] = []
     n = 0
     while n < len(ms):
-        if not one_party(ms[n], tokens):
+        if not party(ms[n], tokens):
             n += 1
             continue
         run, joins = [n], []
-        while n + 1 < len(ms) and one_party(ms[n + 1], tokens):
-            join = _join(tokens, ms[n], ms[n + 1])
-            if not join:
+        while n + 1 < len(ms) and party(ms[n + 1], tokens):
+            how = join(tokens, ms[n], ms[n + 1])
+            if not how:
                 break
             run.append(n + 1)
-            joins.append(join)
+            joins.append(how)
             n += 1
         # a comma alone joins no list ("Wang, Sun needs a coffee" addresses Wang)
         while joins and joins[-1] != "and":
             joins.pop()
             run.pop()
         if len(run) >= 2:
-            chains.append(run)
+            found.append(run)
         n += 1
-    return chains
+    return found
 
 
 def _receives(
@@ -143,7 +151,7 @@ def joined_recipients(
     that points to nobody, or to either of two, gives no group (the caller's own reading
     asks whom it means)."""
     groups: list[Joined] = []
-    for run in _chains(ms, tokens):
+    for run in chains(ms, tokens):
         first, last = ms[run[0]], ms[run[-1]]
         if not _receives(tokens, ms, run[0], first.start, last.end):
             continue
@@ -244,4 +252,4 @@ def group_spans(tokens: Sequence[Token], ms: Sequence[Mention]) -> list[tuple[in
     """The token spans [start, end) of the joined groups of party words in a text (its
     lexicon's mentions, the function words among them left out)."""
     said = [m for m in ms if m.kind != "word"]
-    return [(said[run[0]].start, said[run[-1]].end) for run in _chains(said, tokens)]
+    return [(said[run[0]].start, said[run[-1]].end) for run in chains(said, tokens)]

@@ -25,7 +25,7 @@ _BETWEEN = frozenset({"still", "just", "really", "also", "first", "got"})
 def others_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     if piece.acts.imperative or piece.acts.question is not None or piece.asks:
         return None
-    subject = _colleague_first(piece, requester)
+    subject = colleague_first(piece, requester)
     if subject is None:
         return None
     if not any(
@@ -45,7 +45,7 @@ def others_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
     return Finding("statement", piece, "a colleague's own doing, context only")
 
 
-def _colleague_first(piece: Piece, requester: str) -> int | None:
+def colleague_first(piece: Piece, requester: str) -> int | None:
     """Where the words after the piece's subject start, when the piece opens with one
     colleague's name (not a possessive, not the speaker): "Priya needs ..." → 1."""
     mentions = piece.lexed.mentions

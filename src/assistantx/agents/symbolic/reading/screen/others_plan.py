@@ -10,6 +10,7 @@ request before it, are read as before."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.others_doing import colleague_first
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -52,15 +53,8 @@ def _after_subject(piece: Piece, words: list[str], requester: str) -> list[str] 
         return words[1:]
     if words[:1] and words[0] in _FUSED:
         return [_FUSED[words[0]], *words[1:]]
-    mentions = piece.lexed.mentions
-    if not mentions:
-        return None
-    first = mentions[0]
-    if first.start != 0 or first.kind != "person" or first.possessive:
-        return None
-    if len(first.ids) != 1 or first.ids[0] == requester:
-        return None
-    return content([t.word for t in piece.lexed.tokens[first.end :]])
+    end = colleague_first(piece, requester)
+    return None if end is None else content([t.word for t in piece.lexed.tokens[end:]])
 
 
 def _after_future(words: list[str]) -> list[str] | None:
