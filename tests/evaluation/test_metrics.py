@@ -215,6 +215,10 @@ def test_an_item_sent_out_counts_only_where_its_sender_was_told_the_destination(
         ("Broadcast Centre, White City", "Broadcast Centre, White City", True),
         ("Broadcast Centre", "Broadcast Centre, White City", False),  # half an address
         ("Relations", "Dublin customer relations", False),
+        # an address word in its short form tells the word written out, either way round
+        ("Powys County Council housing dept", "Powys County Council housing department", True),
+        ("Acme Limited, 4 Mill Road", "Acme Ltd, 4 Mill Rd", True),
+        ("Powys County Council", "Powys County Council housing dept", False),
     ],
 )
 def test_a_destination_is_told_when_all_its_words_are(

@@ -30,6 +30,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 
+from assistantx.core import english
 from assistantx.core.actions import Inquire, Move, Stop
 from assistantx.core.goals import parse_milestone
 from assistantx.core.language import fold
@@ -112,8 +113,14 @@ def wrong_handovers(episode: Episode) -> list[str]:
 
 
 def _words(text: str) -> frozenset[str]:
-    # one key for case, accents, curly apostrophes and punctuation
-    return frozenset(re.findall(r"[^\W_]+(?:'[^\W_]+)?", fold(text)))
+    # one key for case, accents, curly apostrophes and punctuation, and for an address word's
+    # short form ("dept", "Rd"): both sides are read alike, so "housing dept" tells
+    # "housing department"
+    found = re.findall(r"[^\W_]+(?:'[^\W_]+)?", fold(text))
+    return frozenset(_ADDRESS_WORDS.get(w, w) for w in found)
+
+
+_ADDRESS_WORDS = english.wording("address_abbreviations")
 
 
 def wrong_sends(episode: Episode) -> list[str]:
