@@ -31,7 +31,9 @@ _SEND = frozenset(language.verb_forms("send")) | {"send"}
 _GO = frozenset(language.verb_forms("go")) | {"go"}
 _PARTICLES = frozenset({"off", "out", "away"})
 _CLAUSE_END = frozenset(".!?;,\n")
-_REACH = 8  # how far after "send" its particle or "to" may stand
+# how far after "send" its particle or "to" may stand: "send my signed rental form out on the
+# van run to ..." puts ten words between (the clause's end bounds it too)
+_REACH = 12
 
 
 def sent_off(
