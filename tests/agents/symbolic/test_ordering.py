@@ -55,3 +55,29 @@ def test_a_thing_the_office_has_no_word_for_is_declined_as_before() -> None:
     frame = parser("default").parse("order a pizza for the team", "wu")
     assert not frame.tasks and frame.decline is not None, frame
     assert not frame.decline.startswith(_NOT_OFFERED), frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # blind round 148's class: the cupboard keeps the thing, but the order names a seller
+        # outside as its source; it fetched one from the cupboard (a wrong physical action)
+        "order some notepads from the supplier, we are almost out",
+        "order more notepads off the website pls",
+        "can you order a box of notepads from the wholesaler",
+    ],
+)
+def test_an_order_from_a_seller_outside_is_declined_whatever_the_cupboard_keeps(
+    text: str,
+) -> None:
+    frame = parser("harbour").parse(text, "will")
+    assert not frame.tasks and frame.question is None, frame
+    assert frame.decline is not None and frame.decline.startswith(_NOT_OFFERED), frame
+
+
+@pytest.mark.parametrize(
+    "text", ["order me a notepad", "order a notepad from the supply room", "get me a notepad"]
+)
+def test_an_order_the_cupboard_fills_is_still_got_here(text: str) -> None:
+    frame = parser("harbour").parse(text, "will")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "notepad")], frame
