@@ -141,7 +141,10 @@ from assistantx.agents.symbolic.reading.parts import (
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.pictographs import without_pictographs
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
-from assistantx.agents.symbolic.reading.placeholder_thing import placeholder_question
+from assistantx.agents.symbolic.reading.placeholder_thing import (
+    placeholder_question,
+    says_a_placeholder,
+)
 from assistantx.agents.symbolic.reading.possessive_choice import with_possessive_chosen
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
@@ -291,9 +294,10 @@ class InstructionParser:
         text = without_pictographs(text)  # "... and no marker 😩": the face is tone only
         text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
         # "bring me the thing from the fridge": which thing is asked, nothing picked
-        placeholder = placeholder_question(self.office, self.lex.read(text))
-        if placeholder is not None:
-            return TaskFrame(requester=requester, question=placeholder)
+        if says_a_placeholder(text):
+            placeholder = placeholder_question(self.office, self.lex.read(text))
+            if placeholder is not None:
+                return TaskFrame(requester=requester, question=placeholder)
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer

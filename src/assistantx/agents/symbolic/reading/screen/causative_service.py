@@ -11,7 +11,6 @@ with a recipient after it ("get me ...") fetches, never has work done."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.service_command import english_service_verbs
 from assistantx.core import language
@@ -41,18 +40,7 @@ def causative_service(terms: Terms, words: list[str], at: int) -> str | None:
         services = sorted(language.verb_lemmas(w) & english_service_verbs())
         if not services:
             return None  # "get my file fixed up"? no service of English's: not ours to say
-        if w in terms.service_verbs or set(services) & _office_verb_words(terms):
+        if w in terms.service_verbs or set(services) & terms.service_verb_words:
             return None  # the office runs it ("get my file printed"): a request
         return services[0]
     return None
-
-
-def _office_verb_words(terms: Terms) -> frozenset[str]:
-    """Every word of the office's operations' verbs and names, in their bare form: "clean"
-    of "dry clean", which ``Terms.service_verbs`` keeps only the first word of."""
-    return frozenset(
-        w
-        for op in terms.office.operations
-        for phrase in (*op.verbs, op.name)
-        for w in split_words(phrase)
-    )

@@ -8,7 +8,6 @@ actually shredded them already" still withdraws the shredding."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -24,7 +23,7 @@ def past_service_reason(terms: Terms, msg: Message, piece: Piece) -> bool:
     """Whether ``piece`` tells a past form of one of the office's services done to the
     speaker's own thing while no piece before it asks for that service."""
     words = content(piece.words)
-    services = _service_lemmas(terms)
+    services = terms.service_lemmas
     for n, x in enumerate(words):
         done = language.verb_lemmas(x) & services
         if not done or not language.is_past_verb(x) or x in done:
@@ -36,14 +35,3 @@ def past_service_reason(terms: Terms, msg: Message, piece: Piece) -> bool:
             return False  # "shred my drafts. shredded them already": the same service
         return True
     return False
-
-
-def _service_lemmas(terms: Terms) -> frozenset[str]:
-    """The plain verbs the office's services are asked with ("shred", "laminate", "frank");
-    not the first word of a service's name ("get water": "got one already" is a having)."""
-    return frozenset(
-        split_words(verb)[0]
-        for op in terms.office.operations
-        for verb in op.verbs
-        if split_words(verb)
-    )

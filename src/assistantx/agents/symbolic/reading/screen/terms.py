@@ -63,6 +63,23 @@ class Terms:
             if split_words(phrase)
         )
 
+        # the plain verbs the services are asked with ("shred", "frank"); not the first word
+        # of a service's name ("get water": "got one already" is a having)
+        self.service_lemmas = frozenset(
+            split_words(verb)[0]
+            for op in office.operations
+            for verb in op.verbs
+            if split_words(verb)
+        )
+        # every word of the services' verbs and names, bare: "clean" of "dry clean", which
+        # ``service_verbs`` keeps only the first word of
+        self.service_verb_words = frozenset(
+            w
+            for op in office.operations
+            for phrase in (*op.verbs, op.name)
+            for w in split_words(phrase)
+        )
+
     def request_verb(self, words: list[str], at: int) -> bool:
         w = words[at]
         return w in self.lex.cue_words or (
