@@ -16,7 +16,15 @@ journal). The run is bounded: nothing more is submitted after ``--max-min`` minu
 runs then gets three more minutes to end, and the figures say how many ended.
 
     python bench/instructions_10k.py [--n 10000] [--first 1000] [--every 1000] [--window 8]
-        [--speedup 10000] [--robot sim|navigator] [--max-min 25]
+        [--speedup 10000] [--robot sim|navigator] [--max-min 25] [--restarts 1]
+        [--keep DIR | --restart-only DIR] [--bytecode | --no-bytecode]
+
+``--restarts N`` starts the second ``serve`` N times on the journal, one after the other, and
+reports each and their median (one restart's wall time moves with the machine's load).
+``--keep DIR`` leaves the data folder (journal included) at DIR, so the restart can be
+measured again later with ``--restart-only DIR``, which submits nothing. By default the
+servers share a bytecode cache beside the data folder, as an installed package has one;
+``--no-bytecode`` runs with the environment's bytecode settings as they are.
 
 Targets (issue 26): RSS growth after the first 1,000 <= 10%; restart to ready <= 3 s.
 Last line: one JSON object.
@@ -29,6 +37,7 @@ import json
 import os
 import signal
 import socket
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -110,6 +119,12 @@ class Server:
     def start(cls, data: Path, args: argparse.Namespace, log: Path) -> Server:
         port = _free_port()
         env = {k: v for k, v in os.environ.items() if not k.startswith("ASSISTANTX_")}
+        if args.bytecode:
+            # As an installed package is (pip compiles it): the first start writes the
+            # bytecode, the restart reads it, where PYTHONDONTWRITEBYTECODE would have every
+            # start compile every module again (about a CPU-second)
+            env.pop("PYTHONDONTWRITEBYTECODE", None)
+            env["PYTHONPYCACHEPREFIX"] = str(data.parent / "pycache")
         env.update(
             ASSISTANTX_DATA_DIR=str(data),
             ASSISTANTX_OPERATOR_TOKEN=TOKEN,
@@ -227,6 +242,59 @@ def drive(server: Server, client: httpx.Client, args: argparse.Namespace, data: 
             return run
 
 
+@dataclass
+class Restart:
+    """One ``serve`` started on the journal of the run: until ready, and the first
+    instruction read back."""
+
+    wall_s: float
+    cpu_s: float
+    rss_mb: float
+    read_back: bool
+
+    def as_json(self) -> dict[str, object]:
+        return {
+            "wall_s": round(self.wall_s, 2),
+            "cpu_s": round(self.cpu_s, 2),
+            "rss_mb": round(self.rss_mb, 1),
+            "first_instruction_read_back": self.read_back,
+        }
+
+
+def restart(data: Path, args: argparse.Namespace, client: httpx.Client, first_id: str) -> Restart:
+    again = Server.start(data, args, args.log)
+    try:
+        wall_s = again.wait_ready(client)
+        cpu_s = process_cpu_s(again.process.pid)
+        rss_mb = _proc_status(again.process.pid)["VmRSS"]
+        first = client.get(f"{again.url}/v1/instructions/{first_id}")
+        read_back = first.status_code == 200 and first.json()["status"] not in ACTIVE
+    finally:
+        again.stop()
+    return Restart(wall_s, cpu_s, rss_mb, read_back)
+
+
+def restarts(
+    data: Path, args: argparse.Namespace, client: httpx.Client, first_id: str
+) -> dict[str, object]:
+    """``--restarts`` starts on the journal, one after the other: each, and their medians."""
+    runs = [restart(data, args, client, first_id) for _ in range(max(1, args.restarts))]
+    wall_s = statistics.median(r.wall_s for r in runs)
+    cpu_s = statistics.median(r.cpu_s for r in runs)
+    return {
+        "journal_mb": round(_journal_mb(data), 1),
+        "restart_wall_s": round(wall_s, 2),
+        "restart_cpu_s": round(cpu_s, 2),
+        "restart_rss_mb": round(runs[0].rss_mb, 1),
+        "restarts": [r.as_json() for r in runs],
+        "restart_ok": cpu_s <= RESTART_TARGET_S and wall_s <= RESTART_TARGET_S,
+        "first_instruction_read_back": all(r.read_back for r in runs),
+    }
+
+
+FIRST_ID_FILE = "bench-first-instruction-id"
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=10_000)
@@ -236,31 +304,44 @@ def main() -> None:
     parser.add_argument("--speedup", type=float, default=10_000.0)
     parser.add_argument("--robot", choices=["sim", "navigator"], default="sim")
     parser.add_argument("--max-min", type=float, default=25.0, help="stop submitting after")
+    parser.add_argument("--restarts", type=int, default=1, help="starts on the journal")
+    parser.add_argument("--bytecode", action=argparse.BooleanOptionalAction, default=True)
+    parser.add_argument("--keep", type=Path, help="leave the data folder here")
+    parser.add_argument("--restart-only", type=Path, help="a folder --keep left: restarts only")
     parser.add_argument("--log", type=Path, default=Path("results/bench/instructions_10k.log"))
     args = parser.parse_args()
     if args.first > args.n:
         parser.error("--first must be at most --n")
+    if args.keep is not None and args.keep.exists():
+        parser.error(f"--keep {args.keep}: already exists")
     args.log.parent.mkdir(parents=True, exist_ok=True)
     args.log.write_bytes(b"")
     headers = {"Authorization": f"Bearer {TOKEN}"}
+    if args.restart_only is not None:
+        data = args.restart_only / "data"
+        first_id = (args.restart_only / FIRST_ID_FILE).read_text(encoding="utf-8").strip()
+        with httpx.Client(headers=headers, timeout=60) as client:
+            again = restarts(data, args, client, first_id)
+        again["load_avg_1min"] = round(os.getloadavg()[0], 1)
+        print(
+            f"restart on {again['journal_mb']} MB of journal: {again['restart_wall_s']} s "
+            f"wall, {again['restart_cpu_s']} CPU-s (median of {max(1, args.restarts)})"
+        )
+        print(json.dumps(again))
+        return
     with tempfile.TemporaryDirectory() as tmp, httpx.Client(headers=headers, timeout=60) as client:
-        data = Path(tmp) / "data"
+        folder = args.keep or Path(tmp)
+        data = folder / "data"
         server = Server.start(data, args, args.log)
         try:
             first_ready_s = server.wait_ready(client)
             run = drive(server, client, args, data)
         finally:
             stop_s = server.stop()
-        journal_mb = _journal_mb(data)
-        again = Server.start(data, args, args.log)
-        try:
-            restart_wall_s = again.wait_ready(client)
-            restart_cpu_s = process_cpu_s(again.process.pid)
-            restart_rss_mb = _proc_status(again.process.pid)["VmRSS"]
-            first = client.get(f"{again.url}/v1/instructions/{run.first_id}")
-            first_read_back = first.status_code == 200 and first.json()["status"] not in ACTIVE
-        finally:
-            again.stop()
+        if run.first_id is None:
+            raise RuntimeError("no instruction was accepted")
+        (folder / FIRST_ID_FILE).write_text(run.first_id, encoding="utf-8")
+        again = restarts(data, args, client, run.first_id)
     result: dict[str, object] = {
         "n": run.submitted,
         "ended": run.ended,
@@ -282,21 +363,12 @@ def main() -> None:
             rss_ok=growth <= RSS_GROWTH_TARGET_PCT,
             server_cpu_s_per_instruction=round(last["server_cpu_s"] / max(1, run.ended), 4),
         )
-    result.update(
-        stop_s=round(stop_s, 2),
-        journal_mb=round(journal_mb, 1),
-        restart_wall_s=round(restart_wall_s, 2),
-        restart_cpu_s=round(restart_cpu_s, 2),
-        restart_rss_mb=round(restart_rss_mb, 1),
-        restart_ok=restart_cpu_s <= RESTART_TARGET_S and restart_wall_s <= RESTART_TARGET_S,
-        first_instruction_read_back=first_read_back,
-        load_avg_1min=round(os.getloadavg()[0], 1),
-    )
+    result.update(stop_s=round(stop_s, 2), **again, load_avg_1min=round(os.getloadavg()[0], 1))
     print(
         f"{run.ended} instructions ended: RSS {result.get('rss_mb_after_first')} MB after "
         f"{args.first}, {result.get('rss_mb_at_end')} MB at the end "
-        f"({result.get('rss_growth_pct')}%); restart to ready {restart_wall_s:.2f} s wall, "
-        f"{restart_cpu_s:.2f} CPU-s"
+        f"({result.get('rss_growth_pct')}%); restart to ready {again['restart_wall_s']} s "
+        f"wall, {again['restart_cpu_s']} CPU-s"
     )
     print(json.dumps(result))
 
