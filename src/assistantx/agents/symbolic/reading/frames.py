@@ -34,6 +34,7 @@ from assistantx.agents.symbolic.reading.asides import aside_length
 from assistantx.agents.symbolic.reading.asked_maker import asked_maker
 from assistantx.agents.symbolic.reading.asked_sender import sent_by_the_asked
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
+from assistantx.agents.symbolic.reading.collected_own import collected_for_work
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
@@ -333,6 +334,20 @@ class FrameReader:
                 # thing to where the work is done is the way to that work, done on it
                 work = self._on_fetched(tasks.pop(), made[0], requester)
                 made = [work if work.facility else work.model_copy(update={"facility": at})]
+            elif (
+                tasks
+                and self._refers_back(clause)
+                and collected_for_work(
+                    self.office,
+                    tasks[-1],
+                    made,
+                    _named_besides(previous_roles, requester),
+                    requester,
+                )
+            ):
+                # "get my form, then photocopy it for me": collected from the requester for
+                # the work, which hands it back; never asked where the thing is
+                made = [self._on_fetched(tasks.pop(), made[0], requester)]
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
                 # "get my lunch out of the fridge and heat it": one errand, on the item
                 # fetched ("the parcel in the post room ..., courier it": the one kept there)
@@ -1183,6 +1198,12 @@ def _one_more(
             return None
         return last.model_copy(update={"recipient": who})
     return None
+
+
+def _named_besides(roles: Roles, requester: str) -> set[str]:
+    """The people a clause's roles name besides the requester (a doer, a recipient, ...)."""
+    said = [*roles.recipient, *roles.source, *roles.actor, *roles.bare, *roles.returned_to]
+    return {p for p in said if p != requester}
 
 
 def _first_leg(earlier: Task, made: list[Task]) -> bool:
