@@ -33,7 +33,7 @@ def raw_atelier() -> dict[str, Any]:
             ob.item("spec_sheet", "spec sheet", "personal", signable=True, synonyms=["tech pack"]),
             ob.item("pattern_file", "pattern file", "electronic", synonyms=["file"]),
             ob.item("walkie", "walkie-talkie", synonyms=["radio", "walkie"]),
-            ob.item("pattern_plot", "pattern plot", "product", synonyms=["plot"]),
+            ob.item("pattern_plot", "pattern plot", "product", synonyms=["plot", "pattern"]),
             ob.item("copy", "photocopy", "product", synonyms=["copy"]),
         ],
         operations=[
