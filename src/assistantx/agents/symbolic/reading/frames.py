@@ -34,6 +34,7 @@ from assistantx.agents.symbolic.reading.asides import aside_length
 from assistantx.agents.symbolic.reading.asked_maker import asked_maker
 from assistantx.agents.symbolic.reading.asked_sender import sent_by_the_asked
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
+from assistantx.agents.symbolic.reading.collected_own import collected_for_work
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
 from assistantx.agents.symbolic.reading.directed_work import (
@@ -54,7 +55,12 @@ from assistantx.agents.symbolic.reading.kept_at import kept_owners
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.named_once import the_one_named
 from assistantx.agents.symbolic.reading.named_tool import works_by_named_tool
-from assistantx.agents.symbolic.reading.needs_met import met_by, same_work, says_a_need
+from assistantx.agents.symbolic.reading.needs_met import (
+    met_by,
+    needs_said_again,
+    same_work,
+    says_a_need,
+)
 from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
 from assistantx.agents.symbolic.reading.original_back import (
     ORIGINAL_ELSEWHERE,
@@ -165,6 +171,7 @@ class FrameReader:
         previous_roles = Roles()  # the roles of the clause before
         previous_asked: list[str] = []  # whom the clause before asked ("could Liu read ...")
         previous_need = False  # the clause before said someone needs something
+        from_need: list[Task] = []  # the tasks made by clauses that say a need
         previous_ops: set[str] = set()  # the operations the clause before named by verb
         previous_places: set[str] = set()  # the places the clause before named
         clauses = self._clauses(readings)
@@ -333,6 +340,20 @@ class FrameReader:
                 # thing to where the work is done is the way to that work, done on it
                 work = self._on_fetched(tasks.pop(), made[0], requester)
                 made = [work if work.facility else work.model_copy(update={"facility": at})]
+            elif (
+                tasks
+                and self._refers_back(clause)
+                and collected_for_work(
+                    self.office,
+                    tasks[-1],
+                    made,
+                    _named_besides(previous_roles, requester),
+                    requester,
+                )
+            ):
+                # "get my form, then photocopy it for me": collected from the requester for
+                # the work, which hands it back; never asked where the thing is
+                made = [self._on_fetched(tasks.pop(), made[0], requester)]
             elif tasks and self._refers_back(clause) and _first_leg(tasks[-1], made):
                 # "get my lunch out of the fridge and heat it": one errand, on the item
                 # fetched ("the parcel in the post room ..., courier it": the one kept there)
@@ -364,6 +385,8 @@ class FrameReader:
                 tasks.append(again)  # "make me a coffee and bring Tam one too": Tam's own
             elif made:
                 tasks = [*_without_subsumed(tasks, made), *made]
+                if previous_need:  # this clause's, by now
+                    from_need += made
             elif tasks and original_back(tasks[-1], clause, tokens):
                 # "make him a copy of it and bring me the original back": the copy's original
                 # comes back to whoever put it in; the copy still goes where it was asked
@@ -373,6 +396,9 @@ class FrameReader:
                 tasks[-1] = self.reader.fill(tasks[-1], roles, requester)
             if tasks:  # "needs a ruler, can you take one from Mark to her": Mark's ruler
                 tasks[-1] = owned_as_one_from(tasks[-1], one_from(tokens, clause.mentions))
+        # "Wang needs a printout for the meeting. Print my file and take it to him": the
+        # request is how the need is met, once its recipient is said; one printout
+        tasks = needs_said_again(tasks, from_need)
         rejected = _rejected_items(readings)
         # a rejected item is never fetched; with nothing left, the checks below ask
         tasks = [t for t in tasks if t.item not in rejected]
@@ -1183,6 +1209,12 @@ def _one_more(
             return None
         return last.model_copy(update={"recipient": who})
     return None
+
+
+def _named_besides(roles: Roles, requester: str) -> set[str]:
+    """The people a clause's roles name besides the requester (a doer, a recipient, ...)."""
+    said = [*roles.recipient, *roles.source, *roles.actor, *roles.bare, *roles.returned_to]
+    return {p for p in said if p != requester}
 
 
 def _first_leg(earlier: Task, made: list[Task]) -> bool:

@@ -67,6 +67,7 @@ from assistantx.agents.symbolic.reading.outsider_owner import office_people_word
 from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
+from assistantx.agents.symbolic.reading.participle_typos import participle_meant
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
@@ -772,6 +773,10 @@ class Lexicon:
             return word
         if any(_agent_noun(word, cue) for cue in self.operation_words):
             return word  # "recharger": a device named after the service, not the service
+        # "get my form signd by Wang": a service's participle with "-ed" clipped to "d"
+        # (outside a verb's place, where "printd my file" stays the verb asked for)
+        if not verb_slot and (past := participle_meant(word, self.cue_words)) is not None:
+            return past
         # an English word or word form ("reprint", "rebacking") is never made a task verb
         is_word = language.is_word_form(word)
         if verb_slot and not is_word:

@@ -55,14 +55,19 @@ _ASKED = re.compile(
 )
 
 
-def named_wants(text: str, is_person: Callable[[str], bool]) -> str:
+def named_wants(
+    text: str, is_person: Callable[[str], bool], is_subject: Callable[[str], bool]
+) -> str:
     """``text`` with each colleague's want said with a helping verb read as "<name> needs"
-    (``is_person``: whether the words are one colleague's name)."""
+    (``is_person``: whether the words are one colleague's name; ``is_subject``: whether they
+    are one in a subject's place, where a name that is also an English word, "frank",
+    "mark", is read as the name: "frank could do with a radio" is Frank's want, never a
+    request to take a colleague's radio to him at once)."""
 
     def said(match: re.Match[str]) -> str:
         said_who = match.group("who")
         # "I would like ..." names nobody and is left as said
-        if named_tail(said_who, is_person) is None:
+        if named_tail(said_who, is_person) is None and not is_subject(said_who.split()[-1]):
             return match.group(0)
         return f"{said_who} needs"
 

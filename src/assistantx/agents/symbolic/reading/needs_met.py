@@ -57,3 +57,16 @@ def same_work(earlier: Task, task: Task) -> bool:
         == (task.kind, task.item, task.owner, task.recipient, task.operation)
         and earlier.actor == task.actor
     )
+
+
+def needs_said_again(tasks: Sequence[Task], from_need: Sequence[Task]) -> list[Task]:
+    """``tasks`` without a later task that is the same work as one a need said ("Wang needs a
+    printout for the meeting. Can you print my file and take it to him?": the request's print
+    is for Wang only once "take it to him" is read, after the need was compared with it). Two
+    hand-overs stay two (``same_work``)."""
+    out: list[Task] = []
+    for t in tasks:
+        said = [n for n in out if any(n is m for m in from_need)]
+        if not any(same_work(n, t) for n in said):
+            out.append(t)
+    return out

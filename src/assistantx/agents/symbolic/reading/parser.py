@@ -248,6 +248,10 @@ def shared_parser(office: Office) -> InstructionParser:
         return kept[1]
 
 
+# A finite verb put after a phrase to read it in a subject's place ("frank needs").
+_SUBJECT_PROBE = "needs"
+
+
 class InstructionParser:
     """Parses instructions against one office."""
 
@@ -363,7 +367,7 @@ class InstructionParser:
         text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
         text = self._due_service(text)  # "my 4-gas is due a bump test": it needs one
         # "Zhang would like / 'd like / could use a stapler": Zhang wants one
-        text = named_wants(text, self._one_name)
+        text = named_wants(text, self._one_name, self._subject_name)
         text = announced_list(text)  # "Two things: ...": the count names nothing
         text = wanting_idioms(text)  # "I'd murder a coffee": I need a coffee
         text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
@@ -475,6 +479,18 @@ class InstructionParser:
         "Ana"; not "yesterday Ana")."""
         mentions = self.lex.scan(self.lex.tokens(phrase))
         return len(mentions) == 1 and mentions[0].kind == "person"
+
+    def _subject_name(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one colleague's name when a verb follows it: "frank" alone
+        is the English word, "frank needs" is Frank (``name_reading``'s subject slot)."""
+        tokens = self.lex.tokens(f"{phrase} {_SUBJECT_PROBE}")
+        mentions = self.lex.scan(tokens)
+        people = [m for m in mentions if m.kind == "person"]
+        return (
+            len(people) == 1
+            and (people[0].start, people[0].end) == (0, len(tokens) - 1)
+            and len(people[0].ids) == 1
+        )
 
     def _frame(
         self,

@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.content_named import named_by_content
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.reason_content import content_of_a_reason
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.core import english, language
@@ -138,6 +139,8 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         authority = any(_has(reach, phrase) and set(phrase) & set(words) for phrase in _AUTHORITY)
         if not authority and named_by_content(terms.office, m.ids[0]):
             continue  # "Wang's budget planning file": which file, by its topic
+        if not authority and content_of_a_reason(terms.office, msg, piece, m.ids[0], words):
+            continue  # "Wang needs the budget printout. Print my file for him": its content
         if (
             not authority
             and not any(_names_a_kind(terms, w) for w in words)
