@@ -44,6 +44,10 @@ def _serve(args: argparse.Namespace) -> int:
     # (about 1,600 objects, ~1 MB, now kept: frozen at ready with the rest, once). Off
     # until ready, where the heap is frozen (announce) and the collector is on again.
     gc.disable()
+    # before any thread allocates: a thread's arena is chosen at its first malloc
+    from assistantx.service.malloc_arenas import limit_arenas
+
+    limit_arenas()
     try:
         return _serve_collector_off(args)
     finally:
