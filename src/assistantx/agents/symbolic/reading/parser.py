@@ -839,6 +839,8 @@ class InstructionParser:
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request
+                if not_known(answer):
+                    continue  # "sorry, I don't know more than I wrote": no place; still asked
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 if re.match(r"be\b", place, flags=re.IGNORECASE):
                     continue  # "to be dry cleaned": the work again, no place; still asked
