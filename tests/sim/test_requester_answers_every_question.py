@@ -184,8 +184,9 @@ ASKED = (
         "could you take care of it",
         ({"heated": "form:ottilie"},),
         "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?",
-        "I mean the form: please courier it to the regional federation.",
-        (COURIER,),
+        # a bare "the regional federation" names no address: asked since fix151b
+        "I mean the form: please courier it to the regional federation in York.",
+        (Part(kind="heat", operation="courier", destination="the regional federation in York"),),
     ),
     Asked(
         "shall I (yes)",

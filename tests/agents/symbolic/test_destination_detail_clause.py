@@ -130,8 +130,8 @@ def test_a_clause_of_thanks_after_a_pronoun_send_changes_nothing() -> None:
 
 
 def test_a_second_request_after_the_place_stays_a_request() -> None:
-    frame = _post("post my form to the tax office, and then bring me a tape")
+    frame = _post("post my form to the Leeds tax office, and then bring me a tape")
     assert [(t.kind, t.item, t.destination) for t in frame.tasks] == [
-        ("heat", "document", "the tax office"),
+        ("heat", "document", "the Leeds tax office"),
         ("transfer", "tape", None),
     ]

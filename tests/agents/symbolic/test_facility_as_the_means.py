@@ -110,9 +110,9 @@ def test_a_thing_going_by_the_facility_is_sent(text: str, sent: tuple[str, str, 
 
 def test_harbour_thing_going_back_goes_through_its_mail_desk() -> None:
     frame = _harbour(
-        "my form needs to go back to the tax office, can it go through the mail desk today?"
+        "my form needs to go back to the Leeds tax office, can it go through the mail desk today?"
     )
-    assert _sent(frame) == [("document", "may", "frank", "the tax office")]
+    assert _sent(frame) == [("document", "may", "frank", "the Leeds tax office")]
 
 
 @pytest.mark.parametrize(

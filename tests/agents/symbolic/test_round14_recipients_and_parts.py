@@ -193,7 +193,7 @@ def test_a_part_no_task_carries_is_asked_about(text: str, part: str) -> None:
     [
         (
             "get my report past legal and then off to the head office",
-            "courier it to the head office",
+            "courier it to the Leeds head office",
         ),
         ("vet my report and then send it out", "fax it to the county office"),
     ],
@@ -210,9 +210,9 @@ def test_the_answer_takes_the_place_of_the_part(text: str, answer: str) -> None:
 @pytest.mark.parametrize(
     ("text", "operations"),
     [
-        ("vet my report and then courier it to the head office", ["vet", "courier"]),
+        ("vet my report and then courier it to the Leeds head office", ["vet", "courier"]),
         ("get my report past legal and then fax it to the head office", ["vet", "fax"]),
-        ("courier my report to the head office", ["courier"]),
+        ("courier my report to the Leeds head office", ["courier"]),
         ("get my report past legal", ["vet"]),
     ],
 )

@@ -61,7 +61,7 @@ def test_the_whole_place_is_the_destination(instruction: str, destination: str) 
         ("courier my tape to Ofcom, Monday latest", "Ofcom"),
         ("courier my tape to Broadcast Centre, thanks", "Broadcast Centre"),
         # a description is no proper name: a town after it is not its address
-        ("courier my tape to the lab, it has to go today", "the lab"),
+        ("courier my tape to the Bristol lab, it has to go today", "the Bristol lab"),
     ],
 )
 def test_what_follows_a_comma_and_is_no_address_stays_out(

@@ -88,7 +88,7 @@ def test_an_office_service_participle_still_asks_for_its_product(text: str) -> N
 @pytest.mark.parametrize(
     "text",
     [
-        "courier my signed waiver to the regional federation",
+        "courier my signed waiver to the regional federation in York",
         "please courier the signed form to the county rowing office",
     ],
 )

@@ -11,12 +11,15 @@ from __future__ import annotations
 from collections.abc import Collection, Sequence
 
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import english, language
 
 # The most words of one part ("Unit 4 Dockside Road", "Harlow Council planning department").
 _PART_WORDS = 6
 # Small words a proper name holds between its capitalised words ("Bank of England").
 _JOINS = frozenset({"the", "of", "and", "&", "for", "on", "upon", "de", "la"})
+# English's prepositions: "Mrs Patel *at* 14 Elm Road" is a person and where she is, two
+# things, never one street's name (a street's own small words are no English preposition)
+_RELATIONS = english.words("prepositions_and_joins") | english.words("party_prepositions")
 # What ends a part (a comma) or the sentence (the rest).
 _SENTENCE_ENDS = frozenset(".!?;\n")
 # Words that are never a place's, said after a comma as a clause or a courtesy.
@@ -80,4 +83,16 @@ def address_part(part: Sequence[Token], at: Sequence[int], names: Collection[int
     if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
         return False  # "to Ofcom, Monday": when, not where
     named = [t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part]
-    return named[0] and all(n or t.word in _JOINS for n, t in zip(named, part, strict=True))
+    # a numbered street line is a name in any language: a small word in lower case between
+    # two of its capitalised words joins them ("Rua *do* Almada 120", "Unter *den* Linden 5")
+    numbered = any(c.isdigit() for t in part for c in t.text)
+    return named[0] and all(
+        n
+        or t.word in _JOINS
+        or (numbered and t.word not in _RELATIONS and _between_names(named, k))
+        for k, (n, t) in enumerate(zip(named, part, strict=True))
+    )
+
+
+def _between_names(named: Sequence[bool], k: int) -> bool:
+    return 0 < k < len(named) - 1 and named[k - 1] and named[k + 1]

@@ -6,6 +6,7 @@ outside taken from the readings ("send out my drawing to the client") or asked f
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
+from assistantx.agents.symbolic.reading.bare_place import bare_common_noun, needs_address
 from assistantx.agents.symbolic.reading.destination import (
     Outside,
     means_words,
@@ -235,6 +236,10 @@ class OperationChooser:
                     # "to the supplier": whom, not where; the service asks where (after the
                     # detail: "the insurers, their fax number is ..." says where)
                     where = None
+                if where is not None and needs_address(op.destination_asked):
+                    if bare_common_noun(where):
+                        # "to the factory" where the courier needs an address: which one, asked
+                        where = None
                 where = where or destination
                 if where is None:
                     return TaskFrame(

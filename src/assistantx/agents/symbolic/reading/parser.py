@@ -156,6 +156,7 @@ from assistantx.agents.symbolic.reading.purpose import (
 )
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader, Readings
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
+from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
 from assistantx.agents.symbolic.reading.room_receiver import (
     own_thing_unplaced,
     room_receiver,
@@ -317,6 +318,8 @@ class InstructionParser:
         # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "get the duty manager, Frank, to sign it": Frank; the role only describes him
+        text = without_role_appositives(self.lex, text)
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
         # "my stapler's broken so can I borrow Wang's": the "so" starts the ask, as after a comma
@@ -852,6 +855,8 @@ class InstructionParser:
             if frame.question is not None and frame.question.startswith(WHERE_TO):
                 # the answer is the place outside ("the client", "to our lawyers"): read as
                 # the request's own "to ...", by the same stage, not as a new request
+                if not_known(answer):
+                    continue  # "sorry, I don't know more than I wrote": no place; still asked
                 place = re.sub(r"^\s*to\s+", "", answer.strip(), flags=re.IGNORECASE)
                 if re.match(r"be\b", place, flags=re.IGNORECASE):
                     continue  # "to be dry cleaned": the work again, no place; still asked

@@ -76,6 +76,7 @@ def test_the_rules_in_priority_order() -> None:
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
         "unsupported",  # a service nothing here offers, before an outsider is asked about
+        "unsupported",  # work no verb of the reader names ("polish my boots"; "sort out": asked)
         "instead",  # a colleague asked to run a facility they do not ("get Zhang to copy it")
         "instead",  # a means of sending out the office lacks ("go out with the courier")
         "instead",  # a recipient who is nobody of the office ("the courier guy")

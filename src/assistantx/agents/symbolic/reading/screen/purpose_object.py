@@ -50,3 +50,35 @@ def object_nouns(tail: Sequence[str], said: int) -> int:
 def _noun_only(word: str) -> bool:
     found = language.lemmas(word.lower())
     return "NOUN" in found and not found.keys() & {"ADV", "ADP", "AUX", "DET", "PRON"}
+
+
+# The words that only say which one or whose ("a", "the", "my", "some"): a purpose is the same
+# said with or without them ("open *a* parcel" is the declared "open parcels")
+_WHICH = frozenset({"a", "an", "the", "my", "our", "your", "his", "her", "their", "some", "any"})
+
+
+def purpose_key(phrase: str) -> tuple[str, ...]:
+    """A purpose's words as compared: no article or possessive, each noun in its singular
+    ("open a parcel" and "open parcels": open parcel); the verb as said (already a lemma)."""
+    words = [w for w in phrase.lower().split() if w not in _WHICH]
+    return tuple(_singular(w) if n else w for n, w in enumerate(words))
+
+
+def said_as_declared(said: str, declared: str) -> bool:
+    """Whether a purpose ``said`` is the ``declared`` one: the same words as compared, or the
+    same once a noun that only modifies the next noun is left out ("get *dog* hairs off" is
+    the declared "get hair off": the hair is what is got off, whatever animal's)."""
+    words, wanted = purpose_key(said), purpose_key(declared)
+    if words == wanted:
+        return True
+    plain = tuple(
+        w
+        for n, w in enumerate(words)
+        if not (0 < n < len(words) - 1 and _noun_only(w) and _noun_only(words[n + 1]))
+    )
+    return plain == wanted
+
+
+def _singular(word: str) -> str:
+    nouns = language.lemmas(word).get("NOUN", ())
+    return min(nouns, key=len) if nouns and _noun_only(word) else word

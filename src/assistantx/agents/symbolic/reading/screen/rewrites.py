@@ -21,7 +21,7 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.purpose_object import (
     object_nouns,
     purpose_words,
-    without_articles,
+    said_as_declared,
 )
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
@@ -467,6 +467,7 @@ def _source(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> boo
 _FROM = "from"
 
 
+_POSSESSIVE = re.compile(r"['’]s$")
 # Words that open the object of a purpose's verb ("to cut *this* ribbon with").
 _OBJECT_OPENERS = english.words("object_starts") | frozenset({"that"})
 
@@ -475,7 +476,7 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     heads = "|".join(re.escape(h) for h in sorted(terms.en.purpose_heads, key=len, reverse=True))
     links = "|".join(re.escape(h) for h in sorted(terms.en.purpose_links, key=len, reverse=True))
     pattern = re.compile(
-        rf"\b(?:{heads})\s+(?:{links})\s+([a-z]+)((?:\s+[a-z0-9]+)*)", re.IGNORECASE
+        rf"\b(?:{heads})\s+(?:{links})\s+([a-z]+)((?:\s+[a-z0-9]+(?:['’]s)?)*)", re.IGNORECASE
     )
     evidence: list[Evidence] = []
     match = pattern.search(text)
@@ -485,11 +486,11 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     tail = match.group(2).split()
 
     def declared(phrase: str) -> list[str]:
-        said = without_articles(phrase)
+        # "open a parcel" is the declared "open parcels", "get dog hairs off" "get hair off"
         return [
             t.name
             for t in terms.office.item_types
-            if said in {without_articles(purpose(p)) for p in t.purposes}
+            if any(said_as_declared(phrase, purpose(p)) for p in t.purposes)
         ]
 
     # "something to check continuity with": the object of a declared purpose is part of it
@@ -506,6 +507,8 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         keep = with_at + 1
     elif keep and keep < len(tail) and tail[keep - 1].lower() in _OBJECT_OPENERS:
         keep += 1  # "something to charge my phone": the phone is charged, never brought
+        while keep < len(tail) and _POSSESSIVE.search(tail[keep - 1]):
+            keep += 1  # "off a guest's coat": whose, then the thing it acts on, never brought
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0

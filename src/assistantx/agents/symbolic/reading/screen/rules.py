@@ -70,6 +70,7 @@ from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
 from assistantx.agents.symbolic.reading.screen.timed_event import timed_event
+from assistantx.agents.symbolic.reading.screen.unknown_work import unknown_work
 from assistantx.agents.symbolic.reading.screen.unoffered_means import unoffered_means
 from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
 from assistantx.agents.symbolic.reading.screen.variant import variant
@@ -184,6 +185,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # about: "scan my drawings and email them to the client" where there is no scanner
     # cannot be done for anyone, so a question would only offer what was never asked
     ("unsupported", unsupported),
+    # "can you polish my boots", "sort out my mug": work the reader has no verb for, or work
+    # unnamed, on a thing: declined or asked, never a transfer of the thing
+    ("unsupported", unknown_work),
     # "get Zhang to make me a copy" where Zhang does not run the copier: asked, not rerouted
     ("instead", asked_doer),
     # "can my contract go out with the courier" where only the post sends: offered, not swapped

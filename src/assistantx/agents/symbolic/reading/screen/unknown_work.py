@@ -1,0 +1,182 @@
+"""Work the reader has no verb for: "can you sew up the hem on my sample", "could you polish my
+boots", "please tidy up my report". A plain verb asked of the robot that is no errand verb the
+reader knows and no service of the office says work on its object that nothing here does, so
+it never falls through to a transfer of that object (which would bring the requester their
+own thing, a wrong physical action): declined, with what the office can do.
+
+A vague verb of work ("sort out my mug", "deal with my lunch", the English data's verbs that
+stand for work unnamed) on a thing of the requester's is asked where one service of the office
+works on it ("Shall I heat your lunch?"; a yes runs it), left to the frames stage's question
+by name where several do (``reading.work_unsaid``), and declined where none does.
+
+Only a verb the dictionary knows as a verb, said at the head of the request (alone, or after
+"can you", "please"), with a thing of the office after it and no recipient or destination
+("chuck me my stapler", "pop it over to Wang" carry a thing: a known errand, read as before).
+"""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.agents.symbolic.reading.lexicon import Lexed
+from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
+from assistantx.agents.symbolic.reading.screen.service import decline_service
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english, language
+from assistantx.core.office import Office
+
+# Every verb the English data names for a rule of the reader ("nab" of taking, "pop" of going,
+# "sort" of making or of work unnamed): a verb with a rule is no unknown work.
+_DATA_VERBS = frozenset(
+    w
+    for key, entries in english.entries_of().items()
+    if key.endswith("_verbs") or key in ("destructive", "cues")
+    for entry in entries
+    for w in entry.split()
+)
+# The verbs that stand for work without naming it ("do", "sort", "deal", "handle").
+_VAGUE = english.words("work_pro_verbs")
+_PARTICLES = english.words("verb_particles")
+# Particles of carrying a thing across the office ("over", "across", "round", "back"): the
+# verb moves its object, an errand however it is said
+_CARRYING = english.words("errand_particles") | {"back", "along"}
+# Who or where a thing goes ("to Wang", "into the meeting room", "me" after the verb)
+_GOING = frozenset({"to", "into", "onto", "towards", "till", "til"})
+_RECEIVERS = frozenset({"me", "us", "him", "her", "them", "everyone", "everybody"})
+# "I", "we" before the verb: the speaker's own doing or need, not work asked of the robot
+_SPEAKER = frozenset({"i", "id", "im", "ive", "we", "me", "to", "if", "do", "mind", "help"})
+_POSSESSIVES = frozenset({"my", "our", "your"})
+# A noun phrase's first word: the verb's object follows it at once ("polish *my* boots"), never
+# a clause ("just so you know *I* need ...", "hope *you* won't mind ...")
+_OPENING = english.words("determiners") - {"me"}
+# Where a thing is put, said after it ("chuck my prunings *in* the compost", "*on* charge"):
+# a placement, another rule's; said before it ("the hem *on* my sample") it is the object's
+_PUT = frozenset({"to", "into", "onto", "in", "on", "at", "from", "via", "inside", "under"})
+
+
+def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    """Work on a thing asked with a verb the reader has no rule for (declined), or with a
+    vague verb of work (asked or declined, see the module); None for anything else."""
+    for sub in sub_pieces(piece):
+        words = sub.words
+        at = sub.verb_at(terms.en.lead_in)
+        if at >= len(words) or set(words[:at]) & _SPEAKER:
+            return None  # "I need to iron my shirt": the speaker's own doing
+        if at and not (piece.acts.request or piece.asks):
+            return None  # asked only at the head ("varnish my desk") or in a request's words
+        verb = words[at]
+        lemmas = language.verb_lemmas(verb) or frozenset({verb})
+        if not language.lemmas(verb).get("VERB") or language.is_past_verb(verb):
+            return None  # no verb ("stapler please"), or one told ("dropped my pen")
+        if _known(terms, verb, lemmas):
+            vague = bool(lemmas & _VAGUE)
+            if not vague:
+                return None
+        else:
+            vague = False
+        rest = words[at + 1 :]
+        particle = 0
+        while particle < len(rest) and rest[particle] in _PARTICLES | {"with"}:
+            particle += 1
+        if set(rest) & (_GOING | _CARRYING) or (rest and rest[0] in _RECEIVERS):
+            return None  # "chuck me my pen", "pop it over to Wang": carried somewhere
+        after = " ".join(rest[particle:])
+        lexed = terms.lex.read(after)
+        if not _object_first(lexed) or _goes_somewhere(lexed):
+            return None
+        if any(m.kind == "cue" for m in terms.lex.read(sub.text).mentions):
+            return None  # "fire-proof my banner": the office's verb, as the lexicon reads it
+        items = [m for m in lexed.mentions if m.kind == "item" and len(m.ids) == 1]
+        if not items:
+            return None  # "could you tidy up the kitchen": nothing of the office to carry
+        if {t.word for t in lexed.tokens[items[-1].end :]} & _PUT:
+            return None  # "chuck my prunings in the compost": the thing put somewhere
+        thing = items[-1].id  # "the hem on my sample": the last thing said is worked on
+        said = " ".join(words[at : at + 1 + particle])
+        if not vague:
+            return _declined(terms, piece, said)
+        if not (rest[particle:] and rest[particle] in _POSSESSIVES):
+            return None  # "sort a coffee for me": a thing got, as before
+        return _asked(terms, piece, said, thing)
+    return None
+
+
+def _known(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
+    """Whether the reader has a rule for the verb: a task cue of the lexicon, a service's
+    verb of this office or of the English data, or a verb the data names for another rule."""
+    forms = {verb, *lemmas}
+    return bool(
+        forms & terms.lex.cue_words
+        or forms & terms.service_verbs
+        or forms & terms.en.service_verbs
+        or forms & terms.office_words
+        or forms & _DATA_VERBS
+    )
+
+
+def _object_first(lexed: Lexed) -> bool:
+    """Whether the words after the verb open with its object: a determiner or possessive, or
+    a thing or a colleague's possessive named at once ("mend Wang's stapler")."""
+    if not lexed.tokens:
+        return False
+    if lexed.tokens[0].word in _OPENING:
+        return True
+    first = lexed.mentions[0] if lexed.mentions else None
+    return (
+        first is not None
+        and first.start == 0
+        and (first.kind == "item" or (first.kind == "person" and first.possessive))
+    )
+
+
+def _goes_somewhere(lexed: Lexed) -> bool:
+    """A person named other than as an owner ("for Wang"), or a place or machine: the thing
+    goes there or is done there, no work the reader lacks a verb for."""
+    return any(
+        (m.kind == "person" and not m.possessive) or m.kind in ("place", "facility")
+        for m in lexed.mentions
+    )
+
+
+def _declined(terms: Terms, piece: Piece, said: str) -> Finding:
+    found = decline_service(terms, piece, said)
+    message = found.message.replace(
+        "nothing in this office offers that", "nothing in this office does that"
+    )
+    return Finding("unsupported", piece, f"no work of this office: {said}", message=message)
+
+
+def _asked(terms: Terms, piece: Piece, said: str, thing: str) -> Finding | None:
+    """The services of the office on the requester's thing, asked: one offered; none
+    declined (nothing here works on it); several left to the frames stage, which asks which
+    by name and reads the answer (``reading.work_unsaid``)."""
+    verbs = _services_on(terms.office, thing)
+    name = terms.office.item_type(thing).name.split()[-1]
+    if not verbs:
+        return _declined(terms, piece, said)
+    if len(verbs) == 1:
+        offer = re.sub(rf"\b{re.escape(said)}\b", verbs[0], piece.text, count=1, flags=re.I)
+        if offer == piece.text:  # "sort my lunch out": the particle apart from its verb
+            offer = re.sub(
+                rf"\b{re.escape(said.split()[0])}\b", verbs[0], piece.text, count=1, flags=re.I
+            )
+            # the particle left at the end ("heat my lunch out") belongs to the vague verb
+            offer = re.sub(rf"\s+(?:{'|'.join(sorted(_PARTICLES))})(?=[\s.!?,]*$)", "", offer)
+        return Finding(
+            "instead",
+            piece,
+            f"vague work on a thing one service works on: {verbs[0]}",
+            message=f"Shall I {verbs[0]} your {name}?",
+            offer=offer,
+        )
+    return None
+
+
+def _services_on(office: Office, thing: str) -> tuple[str, ...]:
+    """The first verb of each service the office runs on an item of ``thing``'s type."""
+    return tuple(
+        op.verbs[0].split()[0]
+        for op in office.operations
+        if op.input == thing and op.verbs and not op.sends_out and office.runnable(op.id)
+    )
