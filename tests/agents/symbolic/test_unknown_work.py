@@ -143,6 +143,10 @@ def test_vague_work_on_a_thing_no_service_works_on_is_declined() -> None:
         # a service of the office, said with its own verb
         (_ines, "can you press my sample", "press", None),
         (_zhang, "could you sort a coffee for me", "produce", "zhang"),
+        # a getting verb without a rule of its own, a thing got for someone: an errand
+        (_zhang, "could you track down a stapler for me", "transfer", "zhang"),
+        (_zhang, "can you scrounge a pen for me", "transfer", "zhang"),
+        (_zhang, "could you retrieve Wang's stapler for me", "transfer", "zhang"),
     ],
 )
 def test_known_errands_and_services_are_unchanged(
@@ -179,3 +183,9 @@ def test_the_speakers_own_doing_is_no_work_asked() -> None:
     # "I need to polish ...": what the speaker will do; not declined as work asked of me
     frame = _zhang("I need to polish my stapler")
     assert frame.decline is None or "polish" not in frame.decline, frame
+
+
+def test_work_on_the_speakers_own_thing_for_them_is_still_declined() -> None:
+    # "for me" of the speaker's own thing says whom the work is for, not where it goes
+    frame = _zhang("could you polish my stapler for me")
+    assert not frame.tasks and frame.decline is not None and "polish" in frame.decline, frame

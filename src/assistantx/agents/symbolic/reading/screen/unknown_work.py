@@ -131,10 +131,15 @@ def _object_first(lexed: Lexed) -> bool:
 
 
 def _goes_somewhere(lexed: Lexed) -> bool:
-    """A person named other than as an owner ("for Wang"), or a place or machine: the thing
-    goes there or is done there, no work the reader lacks a verb for."""
+    """A person named other than as an owner ("for Wang", "for me"), or a place or machine:
+    the thing goes there or is done there, no work the reader lacks a verb for ("could you
+    track down a stapler for me" gets one, whatever the verb). The speaker is no receiver of
+    their own thing ("could you polish my stapler for me": work on it, asked of me)."""
+    own = any(m.kind == "self" and m.possessive for m in lexed.mentions)
     return any(
-        (m.kind == "person" and not m.possessive) or m.kind in ("place", "facility")
+        (m.kind == "person" and not m.possessive)
+        or (m.kind == "self" and not m.possessive and not own)
+        or m.kind in ("place", "facility")
         for m in lexed.mentions
     )
 
