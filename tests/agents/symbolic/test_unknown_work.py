@@ -146,6 +146,9 @@ def test_vague_work_on_a_thing_no_service_works_on_is_declined() -> None:
         # a getting verb without a rule of its own, a thing got for someone: an errand
         (_zhang, "could you track down a stapler for me", "transfer", "zhang"),
         (_zhang, "can you scrounge a pen for me", "transfer", "zhang"),
+        # sent the speaker's way, a list included; a wish with no one asked
+        (_zhang, "chuck a stapler and some scissors my way", "transfer", "zhang"),
+        (_zhang, "could murder a coffee rn", "produce", "zhang"),
         (_zhang, "could you retrieve Wang's stapler for me", "transfer", "zhang"),
     ],
 )

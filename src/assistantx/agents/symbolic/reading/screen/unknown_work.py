@@ -16,6 +16,7 @@ Only a verb the dictionary knows as a verb, said at the head of the request (alo
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
@@ -47,6 +48,16 @@ _RECEIVERS = frozenset({"me", "us", "him", "her", "them", "everyone", "everybody
 # "I", "we" before the verb: the speaker's own doing or need, not work asked of the robot
 _SPEAKER = frozenset({"i", "id", "im", "ive", "we", "me", "to", "if", "do", "mind", "help"})
 _POSSESSIVES = frozenset({"my", "our", "your"})
+# Who a request before the verb is put to ("can *you* ...", "*please* ...", "could *someone*
+# ..."): without one, a modal's verb is the speaker's ("could murder a coffee")
+_ADDRESSED = (english.words("request_askees") - {"i", "we", "the"}) | {
+    "please",
+    "pls",
+    "plz",
+    "kindly",
+}
+# "my way", "his way": whose way a thing is sent, a receiver
+_WAYS_OF = frozenset({"my", "our", "his", "her", "their", "your"})
 # A noun phrase's first word: the verb's object follows it at once ("polish *my* boots"), never
 # a clause ("just so you know *I* need ...", "hope *you* won't mind ...")
 _OPENING = english.words("determiners") - {"me"}
@@ -65,6 +76,8 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None  # "I need to iron my shirt": the speaker's own doing
         if at and not (piece.acts.request or piece.asks):
             return None  # asked only at the head ("varnish my desk") or in a request's words
+        if at and not set(words[:at]) & _ADDRESSED:
+            return None  # "could murder a coffee": the speaker's own wish, nothing asked of me
         verb = words[at]
         lemmas = language.verb_lemmas(verb) or frozenset({verb})
         if not language.lemmas(verb).get("VERB") or language.is_past_verb(verb):
@@ -81,6 +94,9 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             particle += 1
         if set(rest) & (_GOING | _CARRYING) or (rest and rest[0] in _RECEIVERS):
             return None  # "chuck me my pen", "pop it over to Wang": carried somewhere
+        whole = piece.words  # "chuck a hairnet and some tape my way": the whole list goes
+        if any(w == "way" and b in _WAYS_OF for b, w in itertools.pairwise(whole)):
+            return None  # "chuck a hairnet my way": towards the speaker, an errand
         after = " ".join(rest[particle:])
         lexed = terms.lex.read(after)
         if not _object_first(lexed) or _goes_somewhere(lexed):
