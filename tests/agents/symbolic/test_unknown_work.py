@@ -149,6 +149,7 @@ def test_vague_work_on_a_thing_no_service_works_on_is_declined() -> None:
         # sent the speaker's way, a list included; a wish with no one asked
         (_zhang, "chuck a stapler and some scissors my way", "transfer", "zhang"),
         (_zhang, "could murder a coffee rn", "produce", "zhang"),
+        (_zhang, "coffee plz, double espresso", "produce", "zhang"),
         (_zhang, "could you retrieve Wang's stapler for me", "transfer", "zhang"),
     ],
 )

@@ -101,6 +101,8 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         lexed = terms.lex.read(after)
         if not _object_first(lexed) or _goes_somewhere(lexed):
             return None
+        if at == 0 and not particle and lexed.tokens[0].word not in _OPENING:
+            return None  # "coffee plz, double espresso": a word of the thing's kind, no verb
         if any(m.kind == "cue" for m in terms.lex.read(sub.text).mentions):
             return None  # "fire-proof my banner": the office's verb, as the lexicon reads it
         items = [m for m in lexed.mentions if m.kind == "item" and len(m.ids) == 1]
