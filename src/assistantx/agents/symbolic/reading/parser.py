@@ -50,6 +50,7 @@ from collections import OrderedDict
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
+from assistantx.agents.symbolic.reading.also_sent import also_sent, paper_makers
 from assistantx.agents.symbolic.reading.announced_borrowing import announced_borrowings
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
@@ -269,6 +270,7 @@ class InstructionParser:
         self._lent_verbs = LentVerbs.from_office(
             office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
         )
+        self._paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -313,6 +315,8 @@ class InstructionParser:
         # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
+        # "print my report and also send it to Wang": the file passed on, a second errand
+        text = also_sent(text, self._paper_makers)
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
         # "my stapler's broken so can I borrow Wang's": the "so" starts the ask, as after a comma
