@@ -178,6 +178,7 @@ from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
 from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
 from assistantx.agents.symbolic.reading.time_clause import without_time_clauses
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
@@ -270,6 +271,7 @@ class InstructionParser:
         self._lent_verbs = LentVerbs.from_office(
             office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
         )
+        self._keepers = kept_services(office)  # each keeper's services, by their verbs
         self._paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
@@ -314,6 +316,8 @@ class InstructionParser:
         text = without_format_reasons(text, self.screen.terms.is_person_word)
         # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
+        # "my bow needs rehairing, take it to the store for Frank": Frank rehairs it, kept back
+        text = taken_for_keeper(text, self._keepers, self._person_of)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "print my report and also send it to Wang": the file passed on, a second errand
         text = also_sent(text, self._paper_makers)
@@ -473,6 +477,13 @@ class InstructionParser:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
         mentions = self.lex.scan(self.lex.tokens(phrase))
         return len(mentions) == 1 and mentions[0].kind == "person" and mentions[0].ids == (person,)
+
+    def _person_of(self, phrase: str) -> str | None:
+        """The one colleague ``phrase`` names and nothing else ("Frank"), if any."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        if len(mentions) != 1 or mentions[0].kind != "person" or len(mentions[0].ids) != 1:
+            return None
+        return mentions[0].ids[0]
 
     def _one_name(self, phrase: str) -> bool:
         """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",
