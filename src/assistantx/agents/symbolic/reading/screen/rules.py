@@ -34,8 +34,8 @@ from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.need_to_know import need_to_know
 from assistantx.agents.symbolic.reading.screen.negation import negated
-from assistantx.agents.symbolic.reading.screen.nothing_follows import nothing_follows
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.nothing_follows import nothing_follows
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_doing import others_doing
