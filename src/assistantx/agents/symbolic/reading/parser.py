@@ -65,6 +65,7 @@ from assistantx.agents.symbolic.reading.back_reference_recipient import (
     recipient_in_doubt,
 )
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
+from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
@@ -271,6 +272,7 @@ class InstructionParser:
         self._lent_verbs = LentVerbs.from_office(
             office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
         )
+        self._means = send_out_means(office)  # "courier": what the send-outs send by
         self._keepers = kept_services(office)  # each keeper's services, by their verbs
         self._paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
@@ -316,6 +318,7 @@ class InstructionParser:
         text = without_format_reasons(text, self.screen.terms.is_person_word)
         # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
+        text = booked_means(text, self._means)  # "book a courier for my parcel": sent by it
         # "my bow needs rehairing, take it to the store for Frank": Frank rehairs it, kept back
         text = taken_for_keeper(text, self._keepers, self._person_of)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
