@@ -75,3 +75,18 @@ def test_a_service_the_named_colleague_does_not_run_is_not_theirs_to_do() -> Non
         "my stapler needs fixing, can you take it to the print room for Xu?", "zhang"
     )
     assert all(t.actor is None for t in frame.tasks), frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My bow needs rehairing, can you take it to Frank to rehair?",
+        "can you take my bow to Frank to rehair",
+        "can you take my bow to Frank for rehairing",
+    ],
+)
+def test_sent_to_the_keeper_for_work_no_dictionary_knows(text: str) -> None:
+    # "rehair" is the office's own verb, unknown to the dictionary: its forms are still read
+    # as the work (``sent_for_service``), so Frank rehairs it and it comes back, once
+    frame = _music().parse(text, "tom")
+    assert [_done(t) for t in frame.tasks] == [("bow", "tom", "frank", "tom")], frame
