@@ -94,7 +94,7 @@ def with_object(
         return f"do {obj}"
     openers = words("verb_complement_openers")
     cut = next((k for k in range(1, len(said)) if said[k].lower() in openers), len(said))
-    head, own = said[:cut], said[cut:]
+    head, own = _without_own_object(said[:cut]), said[cut:]
     particles = words("verb_particles")
     if all(w.lower() in particles for w in head[1:]):
         spoken = [head[0], obj, *head[1:]]  # "send it off"
@@ -105,6 +105,23 @@ def with_object(
     elif not bare:
         spoken += own
     return " ".join(spoken)
+
+
+def _without_own_object(said: list[str]) -> list[str]:
+    """An operation's name cut before the object it names of its own ("patch a tube", "wash
+    the mugs", "polish a trumpet": the verb alone): the real thing said after the verb takes
+    its place, never beside it ("patch a tube Miles's inner tube" is no English). The object
+    opens with an article or a possessive (``object_starts``); a name with none ("make
+    coffee", "laser print") is kept whole."""
+    starts = words("object_starts")
+    cut = next((k for k in range(1, len(said)) if said[k].lower() in starts), len(said))
+    return said[:cut]
+
+
+def operation_verb(name: str) -> str:
+    """The operation's name as the verb of a phrase whose object follows it ("patch" of
+    "patch a tube"; "print" and "make coffee" as they are)."""
+    return " ".join(_without_own_object(name.split())) or name
 
 
 def verb_alone(op: Operation) -> str:
@@ -164,7 +181,8 @@ def done_words(op: Operation) -> str:
     ``done`` ("scanned to PDF"), else its verb's past participle ("shredded", "faxed")."""
     if op.done:
         return op.done
-    verb, _, rest = op.name.partition(" ")
+    # "restrung", never "restrung a guitar": the name's own object is the item said before
+    verb, _, rest = operation_verb(op.name).partition(" ")
     return f"{language.past_participle(verb)} {rest}".strip()
 
 

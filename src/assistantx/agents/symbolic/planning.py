@@ -32,6 +32,7 @@ from assistantx.core.wording import (
     file_noun,
     item_phrase,
     item_type_name,
+    operation_verb,
     person_name,
     purpose_text,
 )
@@ -697,7 +698,8 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     whose = f"your {item}" if task.owner is not None and task.owner == you else whose
     to = name(task.recipient)
     op = operation_of(office, task)
-    verb = office.operation(op).name if op else task.kind  # the office's word ("scan")
+    # the office's word ("scan"), without an object of its own ("patch" of "patch a tube")
+    verb = operation_verb(office.operation(op).name) if op else task.kind
     spec = task_kinds.kind(task.kind)
     template = spec.todo
     if op is not None and office.operation(op).sends_out and task.destination and spec.todo_sent:

@@ -50,6 +50,7 @@ from collections import OrderedDict
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
+from assistantx.agents.symbolic.reading.also_sent import also_sent, paper_makers
 from assistantx.agents.symbolic.reading.announced_borrowing import announced_borrowings
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
@@ -64,6 +65,7 @@ from assistantx.agents.symbolic.reading.back_reference_recipient import (
     recipient_in_doubt,
 )
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
+from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
@@ -178,6 +180,7 @@ from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
+from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
 from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
 from assistantx.agents.symbolic.reading.time_clause import without_time_clauses
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
@@ -274,6 +277,9 @@ class InstructionParser:
         self._lent_verbs = LentVerbs.from_office(
             office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
         )
+        self._means = send_out_means(office)  # "courier": what the send-outs send by
+        self._keepers = kept_services(office)  # each keeper's services, by their verbs
+        self._paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
         self._signs = initials(p.name for p in office.people)
         # The frames read, by (text, requester, answers): the shared parser's only.
@@ -317,9 +323,14 @@ class InstructionParser:
         text = without_format_reasons(text, self.screen.terms.is_person_word)
         # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
+        text = booked_means(text, self._means)  # "book a courier for my parcel": sent by it
+        # "my bow needs rehairing, take it to the store for Frank": Frank rehairs it, kept back
+        text = taken_for_keeper(text, self._keepers, self._person_of)
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "get the duty manager, Frank, to sign it": Frank; the role only describes him
         text = without_role_appositives(self.lex, text)
+        # "print my report and also send it to Wang": the file passed on, a second errand
+        text = also_sent(text, self._paper_makers)
         # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
         text = spelled_has_is(text)
         # "my stapler's broken so can I borrow Wang's": the "so" starts the ask, as after a comma
@@ -476,6 +487,13 @@ class InstructionParser:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
         mentions = self.lex.scan(self.lex.tokens(phrase))
         return len(mentions) == 1 and mentions[0].kind == "person" and mentions[0].ids == (person,)
+
+    def _person_of(self, phrase: str) -> str | None:
+        """The one colleague ``phrase`` names and nothing else ("Frank"), if any."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        if len(mentions) != 1 or mentions[0].kind != "person" or len(mentions[0].ids) != 1:
+            return None
+        return mentions[0].ids[0]
 
     def _one_name(self, phrase: str) -> bool:
         """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",

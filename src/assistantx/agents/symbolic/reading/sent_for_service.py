@@ -36,6 +36,20 @@ _SENT = re.compile(
 )
 
 
+def _unlisted_lemmas(word: str) -> frozenset[str]:
+    """The bare verbs ``word`` is a form of where the dictionary does not know the verb (an
+    office's own work: "rehair", "rehairing"): each stem whose inflections, by the rules,
+    include the word ("rehairing" of "rehair", "taping" of "tape")."""
+    stems = {word}  # the word itself, for a bare verb
+    for end in ("ing", "ed", "es", "s"):
+        if word.endswith(end) and len(word) > len(end) + 2:
+            stem = word[: -len(end)]
+            stems.update({stem, f"{stem}e", stem[:-1]})
+    # a stem the word inflects, else the word as its own bare verb ("rehair")
+    found = frozenset(s for s in stems - {word} if word in language.verb_forms(s))
+    return found or frozenset({word})
+
+
 def sent_for_service(
     text: str, is_person_word: Callable[[str], bool], is_work_verb: Callable[[str], bool]
 ) -> str:
@@ -49,9 +63,10 @@ def sent_for_service(
         """The bare verb of the work ``word`` says: the verb itself, its past participle, or
         (``bare`` False) its -ing form."""
         w = word.lower()
+        lemmas = language.verb_lemmas(w) or _unlisted_lemmas(w)
         if bare:  # the bare verb only: "to fixed" says no work asked
-            return w if is_work_verb(w) and w in language.verb_lemmas(w) else None
-        return next((v for v in sorted(language.verb_lemmas(w)) if is_work_verb(v)), None)
+            return w if is_work_verb(w) and w in lemmas else None
+        return next((v for v in sorted(lemmas) if is_work_verb(v)), None)
 
     def goes(m: re.Match[str]) -> str:
         verb = work_of(m.group("done"), bare=False)

@@ -31,6 +31,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
         "statement",  # an event and its time after a request ("..., ground run in 10")
         "condition",
+        "statement",  # what a told state rules out ("printer's down, so no printing")
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "statement",  # what the speaker will do with the thing asked for ("..., need to eat it")

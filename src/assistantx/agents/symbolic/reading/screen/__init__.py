@@ -69,7 +69,8 @@ removed from the original text by their character spans, never re-joined, so wha
 parses as the person wrote it.
 
 Each rule is a module of its own (``withdrawal``, ``note``, ``exclusion``, ``contrast``,
-``purpose``, ``need_to_know``, ``wish``, ``thanks``, ``condition``, ``negation``, ``unsafe``,
+``purpose``, ``need_to_know``, ``wish``, ``thanks``, ``condition``, ``nothing_follows``,
+``negation``, ``unsafe``,
 ``destructive``,
 ``placement``, ``elliptical``, ``fact``, ``facility_report``, ``own_doing``, ``doing_after``,
 ``own_need``, ``others_doing``, ``others_send_out``, ``question``, ``problem``, ``statement``,

@@ -77,10 +77,10 @@ _ONGOING_TAILS = _TAILS | frozenset({"up", "apart", "about", "out", "off", "agai
 
 def _state_of_a_thing(subject: str, state: str, after: str, things: frozenset[str]) -> bool:
     """ "my laptop's flat", "the stapler's playing up": after the name of one of the office's
-    things, an adjective or a verb's "-ing" that ends its clause says how the thing is; a
-    thing owns no "flat" and no "playing", so the "'s" is "is". A noun after it ("the
-    laptop's charger") is still its part, and a person's "'s" ("Zhang's flat") is read as
-    before."""
+    things, an adjective or a verb's "-ing" that ends its clause, or an "-ing" with no noun
+    after it, says how the thing is; a thing owns no "flat" and no "playing", so the "'s" is
+    "is". A noun after it ("the laptop's charger") is still its part, and a person's "'s"
+    ("Zhang's flat") is read as before."""
     if subject.lower() not in things:
         return False
     read = language.lemmas(state)
@@ -88,6 +88,11 @@ def _state_of_a_thing(subject: str, state: str, after: str, things: frozenset[st
     if not ongoing and "ADJ" not in read:
         return False
     if not after or after in (_ONGOING_TAILS if ongoing else _TAILS):
+        return True
+    if ongoing and after not in things and not language.is_noun(after):
+        # "my bow's squeaking like mad", "the tap's dripping when I ...": a verb's "-ing"
+        # goes on with how or when, never a noun; a noun after it is its part ("the
+        # laptop's charging cable")
         return True
     # "the stapler's working fine now", "the ruler's totally fine": an adverb of how it
     # works; a thing of the office after it ("the printer's working copy") is its part

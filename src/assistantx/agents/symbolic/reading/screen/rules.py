@@ -35,6 +35,7 @@ from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.need_to_know import need_to_know
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
+from assistantx.agents.symbolic.reading.screen.nothing_follows import nothing_follows
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_doing import others_doing
@@ -119,6 +120,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # service asked for (a modifier on a service's verb would decline it below)
     ("statement", timed_event),
     ("condition", condition),
+    # "printer's down till tomorrow, so no printing": what the state rules out, told
+    ("statement", nothing_follows),
     ("negated", negated),
     ("destructive", unsafe),
     # "..., need to eat it": what the speaker will do with the thing, before its verb is

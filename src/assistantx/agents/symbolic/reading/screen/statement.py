@@ -312,13 +312,15 @@ def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
     modifying = modifiers(tokens, mentions)
 
     def compound(m: Mention) -> bool:  # "tea time": the item names a kind of time
+        if m.possessive:
+            return False  # "my tuner's battery died": the thing whose part it is, no kind
         after = tokens[m.end].word if m.end < len(tokens) else ""
         # "a thermometer down in kennels": a word that is also an adverb of place or
         # direction says where the item is wanted, not what kind of thing it names
         adverb = "ADV" in language.lemmas(after)
         return language.is_noun(after) and after not in terms.en.courtesy and not adverb
 
-    return all(m.start in modifying or compound(m) for m in items)
+    return all((m.start in modifying and not m.possessive) or compound(m) for m in items)
 
 
 def stated_products(terms: Terms, piece: Piece) -> list[str]:
