@@ -80,3 +80,41 @@ def test_one_recipient_for_the_list_stands(
     text: str, expected: list[tuple[str, str, str | None, str]]
 ) -> None:
     assert tasks_of("default", text, "zhou") == expected
+
+
+@pytest.mark.parametrize(
+    ("office", "requester", "text", "expected"),
+    [
+        # "a tea for Wang and a stapler for me" where the office has no stapler (harbour) or
+        # no such thing at all: the tea keeps its own "for", never carried to the speaker
+        (
+            "harbour",
+            "may",
+            "a tea for Will and a stapler for me",
+            [("produce", "tea", None, "will")],
+        ),
+        (
+            "harbour",
+            "may",
+            "a tea for Will and a widget for Rose",
+            [("produce", "tea", None, "will")],
+        ),
+        (
+            "default",
+            "zhou",
+            "a coffee for Wang and a muffin for me",
+            [("produce", "coffee", None, "wang")],
+        ),
+    ],
+)
+def test_the_one_thing_read_keeps_its_own_for(
+    office: str, requester: str, text: str, expected: list[tuple[str, str, str | None, str]]
+) -> None:
+    assert tasks_of(office, text, requester) == expected
+
+
+def test_two_things_read_each_keep_their_own_for() -> None:
+    assert tasks_of("harbour", "a tea for Will and a ruler for me", "may") == [
+        ("produce", "tea", None, "will"),
+        ("transfer", "ruler", None, "may"),
+    ]
