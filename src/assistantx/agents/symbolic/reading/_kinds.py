@@ -22,6 +22,7 @@ from assistantx.agents.symbolic.reading.file_had import colleagues_file, file_ag
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.made_from import input_of_product
 from assistantx.agents.symbolic.reading.one_from_source import one_of_the_previous
+from assistantx.agents.symbolic.reading.own_recipients import own_for_of_one, roles_of_parts
 from assistantx.agents.symbolic.reading.stated_source import says_has_some
 from assistantx.agents.symbolic.reading.unlisted_thing import unlisted_thing
 from assistantx.agents.symbolic.reading.where_it_lives import lives_there
@@ -704,7 +705,15 @@ class TaskReader:
         apart = self._made_of_apart(clause)
         if apart is not None:
             # "bring me a tea and a printout of my rota": the print of the rota, and the tea
-            return [t for part in apart for t in self.tasks(part, roles, requester, previous)]
+            # "a latte for me and a copy of my contract for Fang": each part's own "for X"
+            parts_roles = roles_of_parts(roles, apart)
+            return [
+                t
+                for part, own in zip(apart, parts_roles, strict=True)
+                for t in self.tasks(part, own, requester, previous)
+            ]
+        # "a tea for Will and a stapler for me" (no stapler here): the tea's own "for Will"
+        roles = own_for_of_one(roles, clause)
         s = self.scene(clause, roles, requester, previous)
         each = self._each_product(s)
         if each:

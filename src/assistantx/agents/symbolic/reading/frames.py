@@ -34,6 +34,7 @@ from assistantx.agents.symbolic.reading.asides import aside_length
 from assistantx.agents.symbolic.reading.asked_maker import asked_maker
 from assistantx.agents.symbolic.reading.asked_sender import sent_by_the_asked
 from assistantx.agents.symbolic.reading.asking_forms import done_forms
+from assistantx.agents.symbolic.reading.bare_take import whose_and_whom
 from assistantx.agents.symbolic.reading.collected_own import collected_for_work
 from assistantx.agents.symbolic.reading.compound_items import first_part_item
 from assistantx.agents.symbolic.reading.definite_own import requesters_own
@@ -293,6 +294,8 @@ class FrameReader:
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
+                # "take the stapler" from someone with none: whose, and to whom, unsaid
+                whose = whose or whose_and_whom(self.office, tokens, clause, roles, t, requester)
                 if whose is not None:
                     return TaskFrame(requester=requester, question=whose)
             if found is not None and found[1] is None:

@@ -64,6 +64,7 @@ from assistantx.agents.symbolic.reading.back_reference_recipient import (
     chosen_recipient,
     recipient_in_doubt,
 )
+from assistantx.agents.symbolic.reading.bare_take import with_whose_and_whom
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
@@ -837,6 +838,10 @@ class InstructionParser:
             unowned = unowned_mine(self.lex, frame.question or "", answer, requester)
             if unowned is not None:  # "Whose lunch ...?" "Mine." from one with none: said
                 frame = TaskFrame(requester=requester, question=unowned)
+                continue
+            whose_said = with_whose_and_whom(self.lex, text, frame.question or "", answer)
+            if whose_said is not None:  # "Whose stapler should I take ...?" "Zhang's, me"
+                text, frame = whose_said, self.parse(whose_said, requester)
                 continue
             owned = with_owner(self.lex, text, frame.question or "", answer)
             if owned is not None:  # "Several colleagues have a tray: whose ...?" "Bruno's"

@@ -47,6 +47,7 @@ from assistantx.agents.symbolic.reading.outsider_owner import (
 )
 from assistantx.agents.symbolic.reading.own_papers import kind_of_people
 from assistantx.agents.symbolic.reading.owned_facility import runs_into_a_noun
+from assistantx.agents.symbolic.reading.paper_topic import about_a_name
 from assistantx.agents.symbolic.reading.possessed_thing import possessed
 from assistantx.agents.symbolic.reading.possessive_choice import theirs_or_any
 from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
@@ -356,13 +357,22 @@ class MentionReader:
         if at < 2 or tokens[at - 1].word not in ("for", "from"):
             return False
         before = next((x for x in mentions if x.end == at - 1), None)  # the paper, "for"
+        if before is not None and _unknown_thing(tokens, before):
+            # "print the quote for Riverside House and give it to Wang": a thing the office
+            # has no name for, about the name as a paper would be; what it is, asked after
+            return tokens[at - 1].word == "for" and about_a_name(tokens, mentions, n, "personal")
         if before is None or before.kind != "item" or len(before.ids) != 1:
             return False
         if tokens[at - 1].word == "from" and _owned_by_possessive(mentions, before):
             # "Zhang's file from Berlin": the thing has its owner already, so "from" says
             # where it came from (a place outside), whatever kind of thing it is
             return True
-        return self.office.item_type(before.id).kind == "personal"
+        kind = self.office.item_type(before.id).kind
+        if kind == "personal":
+            return True
+        # "the pre-plan for Kestrel Mills ... give it to Eilidh": a place's or firm's name,
+        # or a name beside the colleague who gets it, says what the paper is about
+        return tokens[at - 1].word == "for" and about_a_name(tokens, mentions, n, kind)
 
     def _result_form(self, tokens: Sequence[Token], m: Mention) -> bool:
         """Whether ``m`` is one word of a product or service name said after "to", "into"
@@ -681,6 +691,19 @@ def _modifies_a_thing(tokens: Sequence[Token], m: Mention) -> bool:
     """Whether a facility's name said after "my"/"your"/... runs on into a noun ("my hydro
     session plan"): it describes the thing owned, not a service asked."""
     return m.start >= 1 and tokens[m.start - 1].word in _POSSESSIVES and runs_into_a_noun(tokens, m)
+
+
+def _unknown_thing(tokens: Sequence[Token], m: Mention) -> bool:
+    """Whether ``m`` is a lower-case noun after an article or a possessive that names nothing
+    of the office ("the *quote*", "my *pre-plan*")."""
+    return (
+        m.kind == "word"
+        and m.end - m.start == 1
+        and m.text[:1].islower()
+        and m.start > 0
+        and tokens[m.start - 1].word in ("the", "my", "our", "this", "that")
+        and language.is_noun(tokens[m.start].word)
+    )
 
 
 def _owned_by_possessive(mentions: Sequence[Mention], thing: Mention) -> bool:

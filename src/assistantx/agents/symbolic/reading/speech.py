@@ -51,6 +51,7 @@ from assistantx.agents.symbolic.reading.phrase_index import (
     phrase_at,
     without_phrases,
 )
+from assistantx.agents.symbolic.reading.place_name_subject import opens_with_place_name
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.sequence_opener import after_sequence_word, wanted_done_by
 from assistantx.agents.symbolic.reading.service_command import service_command
@@ -1160,6 +1161,8 @@ class SpeechActs:
             return False  # "frank might be pricey": a modal after it, so it is the subject
         if subject_of_fault(w, k):
             return False  # "print queue 3 is jammed": the subject of a fault, no command
+        if opens_with_place_name(w[k:], (*self.lex.facilities, *self.lex.places)):
+            return False  # "drying room's roasting again": the room's name, its subject
         return k < len(w) and w[k] in self.lex.cue_words and w[k] not in _NEED
 
     def _service_subject(self, w: list[str]) -> bool:

@@ -12,12 +12,14 @@ fault is answered with what the assistant cannot do about it: it repairs nothing
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.elsewhere import state_said
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.facility_place import (
     facility_after_place,
     failure_said,
 )
+from assistantx.agents.symbolic.reading.screen.felt_state import felt_state
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -47,11 +49,23 @@ def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) ->
     k = facility_after_place(tokens, mentions, k)
     if k < len(mentions) and mentions[k].kind == "word":
         return None
+    if k < len(mentions) and mentions[k].kind == "place" and len(mentions[k].ids) == 1:
+        return _place_felt(terms, piece, mentions[k])  # "print room's boiling today"
     if k >= len(mentions) or mentions[k].kind != "facility" or len(mentions[k].ids) != 1:
         return None
     subject = mentions[k]
     rest = [t.word for t in tokens[subject.end :]]
     name = terms.office.facility(subject.ids[0]).name
+    copula = next((c for c in terms.en.copulas if starts_with(rest, 0, c)), None)
+    felt = felt_state(rest[len(copula) :] if copula else rest, terms.lex.cue_words)
+    if (
+        (copula or subject.possessive)
+        and felt
+        and "ADJ" in language.lemmas(felt[-1])
+        and not any(f[:1] == (felt[-1],) for f in (*terms.en.conditions, *_FAULTS, *_WORKING))
+    ):
+        # "binding room's freezing again": how it feels, an adjective; no fault to repair
+        return _report(piece, f"the {name} is {' '.join(felt)}", fault=False)
     keeps = next((p for p in _KEEPS if starts_with(rest, 0, p)), None)
     # "the kettle keeps tripping the fuse"
     if keeps is not None and _doing(terms, piece, rest[len(keeps) :], subject.end + len(keeps)):
@@ -69,9 +83,29 @@ def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) ->
     if _doing(terms, piece, told, subject.end + len(copula or ())):
         return _report(piece, f"the {name} is {' '.join(state)}", fault=True)  # "making a noise"
     if not any(starts_with(state, 0, f) for f in (*terms.en.conditions, *_FAULTS)):
-        return None
+        # "drying room's absolutely roasting again": how it feels, told; no service asked
+        felt = felt_state(told, terms.lex.cue_words)
+        if felt is None:
+            return None
+        return _report(piece, f"the {name} is {' '.join(felt)}", fault=False)
     working = any(starts_with(state, 0, f) for f in _WORKING)
     return _report(piece, f"the {name} is {' '.join(state)}", fault=not working)
+
+
+def _place_felt(terms: Terms, piece: Piece, subject: Mention) -> Finding | None:
+    """ "print room's boiling today": how a place of the office feels, told."""
+    rest = [t.word for t in piece.lexed.tokens[subject.end :]]
+    copula = next((c for c in terms.en.copulas if starts_with(rest, 0, c)), None)
+    if copula is None and not subject.possessive:
+        return None
+    # "kitchen's boiling today": a place is hot, or a machine there at its work; either
+    # way told, no service asked (a request says it: "boil the kettle", "a brew please")
+    office = terms.office
+    felt = felt_state(rest[len(copula) :] if copula else rest, frozenset())
+    if felt is None:
+        return None
+    name = office.location(subject.ids[0]).name.lower()
+    return _report(piece, f"the {name} is {' '.join(felt)}", fault=False)
 
 
 def _doing(terms: Terms, piece: Piece, state: list[str], at: int) -> bool:

@@ -6,14 +6,19 @@ what is done with the thing, and where it ends up, are both unknown.
 A known errand verb keeps its place phrase as where the thing is ("bring me the clipboard on
 the shelf"), and a place the office names is read by the later stages ("put my lunch in the
 fridge" where a fridge is a facility); a waste container was declined before this rule
-(``destructive``)."""
+(``destructive``). Whom the favour is for ("chuck my tunic on the pump *for me*") places
+nothing: the pump is still no place of the office, and where the tunic should go is asked."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
 # "in the van", "onto the shelf": where a put-request sends its thing.
@@ -35,7 +40,8 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     if not items:
         return None
     thing = items[0]
-    if any(m.kind in _OFFICE_PLACES and not m.possessive for m in mentions):
+    placing = _without_favour(tokens, mentions, thing)
+    if any(m.kind in _OFFICE_PLACES and not m.possessive for m in placing):
         return None  # "run it down to Dot", "put my lunch in the fridge"
     n = thing.end
     while n < len(told) and told[n] in _PARTICLES:
@@ -49,11 +55,12 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
         return None  # "put the kettle on", "stick it on for me": no place named
     if _service_word(terms, told[k + 1 if told[k] == "to" else k]):
         return None  # "stick my jump pack on charge": the office's service, read later
-    if any(m.kind in _OFFICE_PLACES and m.start > n for m in mentions):
+    if any(m.kind in _OFFICE_PLACES and m.start > n for m in placing):
         return None  # "leave my form on Hal's desk": a person's place, a delivery
     verb = next((j for j, w in enumerate(told) if w == words[at]), 0)
     said = " ".join(t.text for t in tokens[verb + 1 : thing.end])
-    where = " ".join(t.text for t in tokens[n:])
+    stop = next((j for j in range(k, len(told)) if told[j] == "for"), len(told))
+    where = " ".join(t.text for t in tokens[n:stop])  # "on the pump", its "for me" left out
     return Finding(
         "unplaced",
         piece,
@@ -63,6 +70,24 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
             f"{terms.capabilities()} Who should I bring it to?"
         ),
     )
+
+
+def _without_favour(
+    tokens: Sequence[Token], mentions: Sequence[Mention], thing: Mention
+) -> list[Mention]:
+    """The mentions less whom the favour is for: "chuck *my* tunic on the pump for me" (the
+    speaker's own thing, onto words that name nothing of the office) says the pump is where
+    it goes, and "for me" only whom it pleases. Someone else's thing "for me" ("leave the
+    embosser on the shelf for me") is for the speaker to have, and a thing of the office
+    named in the place ("turn my plan into a PDF for Bill") is read later: both as before."""
+    own = any(m.kind == "self" and m.possessive and m.end == thing.start for m in mentions)
+    favour = [m for m in mentions if m.start > thing.end and tokens[m.start - 1].word == "for"]
+    if not own or not favour:
+        return list(mentions)
+    named = [m for m in mentions if thing.end <= m.start < favour[0].start and m.kind != "word"]
+    if named:
+        return list(mentions)
+    return [m for m in mentions if m not in favour]
 
 
 def _service_word(terms: Terms, word: str) -> bool:
