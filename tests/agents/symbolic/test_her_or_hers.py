@@ -80,6 +80,28 @@ def test_a_recipient_said_keeps_her_as_the_owner(text: str) -> None:
     ], frame
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Zhang is off sick, grab her stapler",  # at her desk: hers, lent to me
+        "Zhang's on holiday, can you get her stapler",
+        "Is Zhang in? grab her stapler",
+    ],
+)
+def test_a_thing_at_her_own_desk_is_hers_handed_to_me(text: str) -> None:
+    frame = _default(text)
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "stapler", "zhang", "lee")
+    ], frame
+
+
+def test_her_coffee_is_made_for_her_when_the_sentence_before_is_about_her() -> None:
+    frame = _default("Wang's in a meeting, can you bring her coffee")
+    assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
+        ("produce", "coffee", "wang")
+    ], frame
+
+
 def test_him_and_his_said_apart_are_unchanged() -> None:
     frame = _default("Wang's in a meeting, could you bring him his coffee")
     assert [(t.kind, t.recipient) for t in frame.tasks] == [("produce", "wang")], frame

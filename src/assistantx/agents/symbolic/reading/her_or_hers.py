@@ -6,7 +6,9 @@ away", "Wang's in a meeting"), the thing goes to her; when nothing decides, the 
 thing to the speaker on a guess (fix154a class 3: "Ngozi's stuck with a client, could you
 bring her lunch up from the fridge?" handed Ngozi's lunch to the speaker). A recipient said
 after the thing ("bring her lunch to me", "... to Wang") or before it ("bring me her lunch")
-decides it the other way: "her" is then only whose it is."""
+decides it the other way: "her" is then only whose it is. Only a thing the office keeps away
+from her own place (her lunch in the fridge) can be brought to her; one at her desk she has,
+and "her" says whose it is."""
 
 from __future__ import annotations
 
@@ -41,6 +43,18 @@ def giving_her(before: Sequence[str], after: Sequence[str]) -> bool:
         if word in ("to", "for") and k + 1 < len(after) and after[k + 1] not in _NO_RECIPIENT:
             return False  # "bring her lunch to me", "... for Wang": whose, not whom
     return True
+
+
+def kept_from_her(office: Office, person: str, item_type: str) -> bool:
+    """Whether ``person``'s own ``item_type`` is kept away from their own place (their lunch
+    in the fridge): only then can "bring her <thing>" take it to her. A thing at her own desk
+    she has already, so there "her" says whose it is, as before ("Zhang is off sick, grab her
+    stapler": hers, lent to the speaker with her yes)."""
+    home = office.person(person).location
+    return any(
+        o.type == item_type and o.at is not None and o.at != home
+        for o in office.person(person).owns
+    )
 
 
 def giving_her_in(text: str, at: int) -> bool:
@@ -106,6 +120,7 @@ def her_thing_asked(
             continue
         for task in made:
             others = task.owner is not None and task.owner != requester
+            others = others and kept_from_her(office, str(task.owner), thing.id)
             if task.item == thing.id and task.recipient == requester and others:
                 name = office.person(str(task.owner)).name
                 return her_or_you(name, office.item_type(thing.id).name)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from assistantx.agents.symbolic.reading.her_or_hers import giving_her_in
+from assistantx.agents.symbolic.reading.her_or_hers import giving_her_in, kept_from_her
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.described_one import described_ones
@@ -381,7 +381,8 @@ def name_pronouns(
     people = (people | subjects) - holder
     if len(people) != 1:
         return text
-    name = terms.office.person(next(iter(people))).name
+    person = next(iter(people))
+    name = terms.office.person(person).name
     others_before = _named_before_pronoun(msg) - people - holder
 
     def named(match: re.Match[str]) -> str:
@@ -395,7 +396,12 @@ def name_pronouns(
         )
         if others_before and not possessive:
             return match.group(0)
-        if possessive and word == "her" and giving_her_in(text, match.start()):
+        kind = terms.lex.items.get(normalize(following), "")
+        # her thing kept away from her (her lunch in the fridge), or one made for her ("bring
+        # her coffee": a product nobody owns, so "her" can only be whom it is for)
+        made = bool(kind) and terms.office.item_type(kind).kind == "product"
+        to_her = made or (kind and kept_from_her(terms.office, person, kind))
+        if possessive and word == "her" and to_her and giving_her_in(text, match.start()):
             # "Zhang can't get away, bring her lunch": the sentences before are about her, so
             # the thing goes to her ("bring Zhang Wei her lunch"); with someone else named or
             # her things told of, nothing decides, and the frames ask (``her_or_hers``)
