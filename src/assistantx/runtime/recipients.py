@@ -47,6 +47,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.answers import stance
 from assistantx.agents.symbolic.reading.abbreviations import undotted
+from assistantx.agents.symbolic.reading.exact_spelling import own_spellings, spelled_by
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
 from assistantx.agents.symbolic.reading.surnames import family_names
@@ -69,7 +70,7 @@ from assistantx.core.receiving_place import (
 from assistantx.core.task_schema import Task, TaskFrame, operation_of
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.handed_over import subject_asked_to_have, taken_across
-from assistantx.runtime.wanted_own import handed_on, wants_own_thing, wishes
+from assistantx.runtime.wanted_own import handed_on, wants_own_thing, wishes_said
 
 _TO = frozenset({"to", "for", "with", "towards", "toward", "onto"})
 _BY = frozenset({"by"})
@@ -204,7 +205,15 @@ class _OfficeWords:
     several readings per consent check, on the event loop). The names are looked up by their
     first word, longest first, so a text is read in one pass, not once per name."""
 
-    __slots__ = ("family", "items", "name_words", "names_by_first", "operations", "rooms")
+    __slots__ = (
+        "family",
+        "items",
+        "name_words",
+        "names_by_first",
+        "operations",
+        "rooms",
+        "spellings",
+    )
 
     def __init__(self, office: Office) -> None:
         self.names_by_first: dict[str, list[tuple[tuple[str, ...], frozenset[str]]]] = {}
@@ -212,6 +221,9 @@ class _OfficeWords:
             self.names_by_first.setdefault(key[0], []).append((key, people))
         self.items = _item_words(office)
         self.name_words = _name_words(office)
+        # how each colleague spells their own name: "Sofía" typed with its mark is Sofía
+        # Ramírez, not also Sofia Kowalczyk (the reader's ``exact_spelling``)
+        self.spellings = own_spellings(office)
         # "Ms Grant": the people whose family name a word is, in the office's name order (the
         # reader's ``surnames.family_names``), for a name said after a title of address
         self.family = {
@@ -273,6 +285,8 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
                     words, n
                 ):
                     continue
+            written = [w.text for w in words[n : n + len(key)]]
+            people = spelled_by(words_of_office.spellings, written, people)
             hit = _Mention(people, n, n + len(key), words[n + len(key) - 1].possessive)
             break
         family = words_of_office.family.get(words[n].folded)
@@ -528,13 +542,14 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
         wishing = {
             p
             for m in mentions
-            if not m.possessive and (wishes(folded, m.end) or _said_to_need(words, m))
+            if wishes_said(folded, m.end, folded_is=m.possessive)
+            or (not m.possessive and _said_to_need(words, m))
             for p in m.people
         } - {requester}
         wanting = {
             p
             for m in mentions
-            if len(m.people) == 1 and not m.possessive and wants_own_thing(folded, m.end)
+            if len(m.people) == 1 and wants_own_thing(folded, m.end, folded_is=m.possessive)
             for p in m.people
         } - {requester}
         if len(wanting) == 1 and wishing == wanting:

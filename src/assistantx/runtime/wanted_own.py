@@ -4,7 +4,9 @@ requester's, so only they may say where it goes, and the sentence that says who 
 where they said it: that colleague is whom "it" is sent to, as the reader reads it. Only the
 requester's own thing counts ("Wang wants Zhang's file" is a wish about another's thing, which
 its owner decides), and only "it"/"them" handed on with no receiver of its own ("send it to
-Mo" names Mo; "Rich wants it on the board" wants no thing of the requester's)."""
+Mo" names Mo; "Rich wants it on the board" wants no thing of the requester's). "Wang's after
+my stapler" is the same wish: its "'s" is "is", and "after" the requester's own thing wants
+it (fix154a class 2); "after the meeting" is a time."""
 
 from __future__ import annotations
 
@@ -12,6 +14,8 @@ from collections.abc import Callable, Sequence
 
 # the wish or need said right after the colleague's name
 _WANTS = frozenset({"wants", "needs", "want", "need", "wanted", "needed"})
+# "Wang's after my stapler": "'s" (is) and "after", which wants the thing
+_AFTER = "after"
 # the requester's own thing, right after the wish
 _OWN = frozenset({"my", "our"})
 # the thing handed over, said again
@@ -20,10 +24,19 @@ _IT = frozenset({"it", "them"})
 _RECEIVING = frozenset({"to", "for", "with"})
 
 
-def wants_own_thing(words: Sequence[str], end: int) -> bool:
+def wants_own_thing(words: Sequence[str], end: int, *, folded_is: bool = False) -> bool:
     """Whether the folded ``words`` right after a name ending at ``end`` say the person
-    wants or needs the requester's own thing ("wants my report")."""
-    return end + 1 < len(words) and words[end] in _WANTS and words[end + 1] in _OWN
+    wants or needs the requester's own thing ("wants my report"); ``folded_is``: the name
+    was written with "'s", which before "after" is "is" ("Wang's after my stapler": is
+    after, wants it), as the reader reads it."""
+    if end + 1 >= len(words) or words[end + 1] not in _OWN:
+        return False
+    return words[end] == _AFTER if folded_is else words[end] in _WANTS
+
+
+def wishes_said(words: Sequence[str], end: int, *, folded_is: bool = False) -> bool:
+    """``wishes``, and "<name>'s after ..." (``folded_is``) said as a wish too."""
+    return end < len(words) and words[end] == _AFTER if folded_is else wishes(words, end)
 
 
 def wishes(words: Sequence[str], end: int) -> bool:

@@ -18,6 +18,7 @@ from assistantx.agents.symbolic.reading.indirect_object import is_indirect_objec
 from assistantx.agents.symbolic.reading.joined_doers import joined_doers
 from assistantx.agents.symbolic.reading.joined_owners import joined_owners
 from assistantx.agents.symbolic.reading.joined_recipients import Joined, joined_recipients
+from assistantx.agents.symbolic.reading.left_with import left_with
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import obliged_to
 from assistantx.agents.symbolic.reading.occasion import is_occasion, taken_to_a_room
@@ -478,6 +479,8 @@ def clause_roles(
             if owns_next and possessive_form:
                 continue  # "her stapler": a possessive ("her a stapler": whom it goes to)
             prev = prev_word(tokens, m.start)
+            # "to her", "for him", and "drop it with her": whom the thing is handed to
+            handed = prev in ("to", "for") or left_with([t.word for t in tokens], m.start)
             # "take her my ice pack", "bring her some": she receives (not "forward them to")
             dative = (
                 prev in _DATIVE_VERBS
@@ -490,7 +493,7 @@ def clause_roles(
             dative = dative or gapped
             if gapped:  # "bring Pat a tea and her a ruler": "her" is someone besides Pat
                 others = [x for x in others if x not in roles.recipient]
-            if prev in ("to", "for") or dative:
+            if handed or dative:
                 # "take it from Pat to her": not Pat, the one it is taken from
                 others = not_the_source(others, [*taken_from, *roles.source], tokens, m.start)
             outsider = outsider_said or points_to_outsider(tokens, m.start)
@@ -506,11 +509,11 @@ def clause_roles(
                 if requester not in roles.recipient:
                     roles.add_recipient(requester, m.start)
                 continue
-            if (prev in ("to", "for") or dative) and len(set(others)) != 1:
+            if (handed or dative) and len(set(others)) != 1:
                 # never the requester by default, nor the last of two people named ("Thảo's
                 # on the ladder and Ivy's busy, take her a stool": whom?)
                 raise UnresolvedPronoun(m.text)
-            if prev in ("to", "for") or dative:
+            if handed or dative:
                 roles.add_recipient(others[-1], m.start)
                 if gapped:
                     roles.for_next_at.append(m.start)

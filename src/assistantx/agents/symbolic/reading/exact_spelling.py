@@ -10,7 +10,7 @@ which spelling was meant and stays ambiguous (asked)."""
 from __future__ import annotations
 
 import unicodedata
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 
 from assistantx.core.office import Office
 
@@ -32,6 +32,27 @@ def _marked(word: str) -> bool:
 def _own_words(office: Office, person: str) -> frozenset[str]:
     p = office.person(person)
     return frozenset(_spelled(w) for name in (p.name, *p.aliases) for w in name.split())
+
+
+def own_spellings(office: Office) -> dict[str, frozenset[str]]:
+    """Each colleague's own words of their name and aliases, as they spell them: what
+    ``spelled_by`` tells namesakes apart with, worked out once by a reader that keeps it."""
+    return {p.id: _own_words(office, p.id) for p in office.people}
+
+
+def spelled_by(
+    spellings: Mapping[str, frozenset[str]], written: Iterable[str], ids: Iterable[str]
+) -> frozenset[str]:
+    """``exactly_spelled`` with the colleagues' spellings given (``own_spellings``): of
+    ``ids``, those who spell every written word so, where a diacritic was typed and that
+    leaves some but not all of them; else ``ids``. The consent guard reads names with it,
+    so "Sofía" is Sofía Ramírez there too, never also Sofia Kowalczyk."""
+    ids = frozenset(ids)
+    words = [_spelled(w) for w in written]
+    if len(ids) < 2 or not any(_marked(w) for w in words):
+        return ids
+    exact = frozenset(i for i in ids if all(w in spellings.get(i, ()) for w in words))
+    return exact if exact and exact != ids else ids
 
 
 def exactly_spelled(office: Office, written: Iterable[str], ids: Sequence[str]) -> tuple[str, ...]:

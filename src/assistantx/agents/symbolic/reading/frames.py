@@ -49,6 +49,7 @@ from assistantx.agents.symbolic.reading.given_back import (
     returned_to_whom,
     unowned_return,
 )
+from assistantx.agents.symbolic.reading.her_or_hers import her_thing_asked
 from assistantx.agents.symbolic.reading.joined_doers import each_doer
 from assistantx.agents.symbolic.reading.joined_owners import each_owner
 from assistantx.agents.symbolic.reading.joined_recipients import for_each
@@ -292,6 +293,12 @@ class FrameReader:
             made = each_owner(made, roles.co_owners)  # "Wang and Sun's files": both files
             made = each_doer(made, roles.doers)  # "signed by Wang and Sun": both sign
             made = [requesters_own(self.office, tokens, clause, roles, t, requester) for t in made]
+            # "bring her lunch" with nothing to say whether to her or hers (to me): asked
+            her_or_you = her_thing_asked(
+                self.office, tokens, clause.mentions, made, requester, roles.recipient
+            )
+            if her_or_you is not None:
+                return TaskFrame(requester=requester, question=her_or_you)
             for t in made:  # "take the tray to Amber" where three colleagues have one
                 whose = whose_of_several(self.office, tokens, clause, roles, t, requester, earlier)
                 # "take the stapler" from someone with none: whose, and to whom, unsaid

@@ -96,6 +96,7 @@ from assistantx.agents.symbolic.reading.frames import (
 from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
 from assistantx.agents.symbolic.reading.headed_supply import headed_supply
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
+from assistantx.agents.symbolic.reading.her_or_hers import with_her_or_you
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -726,6 +727,10 @@ class InstructionParser:
             chose = with_possessive_chosen(self.lex, text, frame.question or "", answer)
             if chose is not None:  # "grab bills ruler" → "Bill's ruler, or any?" → "any"
                 text, frame = chose, self.parse(chose, requester)
+                continue
+            her_said = with_her_or_you(text, frame.question or "", answer)
+            if her_said is not None:  # "Should Zhang Wei's lunch go to Zhang Wei, or to you?"
+                text, frame = her_said, self.parse(her_said, requester)
                 continue
             one_of = with_one_of_group(self.lex, text, frame.question or "", answer)
             if one_of is not None:  # "Should the stapler go to Wang, or to Sun?" "Wang"

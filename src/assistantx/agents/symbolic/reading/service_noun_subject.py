@@ -6,7 +6,11 @@ right after it, or a verb in -s followed by when or how it happens ("leaves at 3
 around noon", "runs out", "goes early"), makes the word that clause's subject, and the
 clause a statement about it (context beside a request, never the service asked for). A verb
 in -s that is also a plural noun is read as the verb only with such a tail, and never when
-it names a thing of the office ("copy files at 3": the files are copied)."""
+it names a thing of the office ("copy files at 3": the files are copied).
+
+When the service comes is told the same way ("courier's due at 3", "courier's coming at 3",
+"post's going at 4", "courier coming at 3"): a deadline, context for the request beside it,
+never the service asked for (a museum's "Courier's due at 3." asked which item to courier)."""
 
 from __future__ import annotations
 
@@ -37,12 +41,16 @@ def service_noun_subject(
         return False
     word, verb, tail = w[k], w[k + 1], w[k + 2 :]
     services = english_service_verbs() | frozenset(office_verbs)
-    if word not in services and not _folded_is(word, services, verb):
-        return False
-    if word not in services:
+    # checked before the word's own forms: the office's verbs hold "couriers" too, and
+    # "courier's due" is no imperative either way
+    if _folded_is(word, services, verb):
         return True  # "post's late today": "'s" folded into the word, a state after it
+    if word not in services:
+        return False
     if not language.is_noun(word):
         return False  # "type", "pay" with no noun reading: only a verb
+    if _when_it_comes(verb, tail):
+        return True  # "courier coming at 3", "courier due at 3": said without its "is"
     if verb in _SINGULAR_BE_HAVE:
         return True  # "print is too small on this form"
     if not verb.endswith("s") or not language.is_finite_verb(verb) or verb in items:
@@ -57,7 +65,23 @@ def _folded_is(word: str, services: Collection[str], after: str) -> bool:
     into it, then a participle, or a word of state or time."""
     if not word.endswith("s") or word[:-1] not in services:
         return False
-    return language.is_past_participle(after) or _how_or_when([after])
+    return (
+        language.is_past_participle(after)
+        or language.is_present_participle(after)  # "courier's coming", "post's going"
+        or _how_or_when([after])
+    )
+
+
+def _when_it_comes(after: str, tail: list[str]) -> bool:
+    """ "coming at 3", "due at 3": an -ing form or a word of state (never a verb's bare
+    form, which an imperative's object could follow) right before a time of day: what the
+    service's word, said as a subject without its "is", does or is then."""
+    if not clock_time(tail[:2]) or tail[:1] != ["at"]:
+        return False
+    if language.is_present_participle(after):
+        return True
+    kinds = set(language.lemmas(after))
+    return "ADJ" in kinds and not kinds & {"VERB", "DET", "PRON"}
 
 
 def _how_or_when(words: list[str]) -> bool:

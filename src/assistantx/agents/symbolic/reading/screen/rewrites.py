@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.her_or_hers import giving_her_in, kept_from_her
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.described_one import described_ones
@@ -61,7 +62,8 @@ def rewrite(
     subjects = {c.removeprefix("person:") for c in context if c.startswith("person:")}
     said_of = {h.person for h in hints if h.kind in _SAID_OF and h.person}
     holder = _holder_of_last(terms, subjects | said_of, context, held)
-    text = name_pronouns(terms, msg, text, hints, subjects - holder, holder)
+    told = [c for c in context if not c.startswith(("person:", "product:", CHOSEN))]
+    text = name_pronouns(terms, msg, text, hints, subjects - holder, holder, bool(told))
     text, found = dangling_possessives(terms, msg, text)
     evidence += found
     text, found = products_said_before(terms, text)
@@ -363,6 +365,7 @@ def name_pronouns(
     hints: list[Hint],
     subjects: set[str],
     holder: frozenset[str] = frozenset(),
+    things_told: bool = False,
 ) -> str:
     """ "Zhang is at his desk. Get him to sign ...", "Pat hurt her hand, take her my ice
     pack": with the fact taken out, a pronoun that can only mean the one person it named
@@ -371,12 +374,15 @@ def name_pronouns(
     it is ("bring Zhou her stapler. It's Zhang Wei's stapler") is still the one the facts
     name. "she"/"he" asked to have a thing ("Lin's running the stall - could she have my
     stickers?") is that one person too: the one it is given to. ``holder``: who has the
-    thing the statements name last ("Rhys has a spare one"), never whom the pronoun means."""
+    thing the statements name last ("Rhys has a spare one"), never whom the pronoun means;
+    ``things_told``: the statements told of things, not only of people ("Zhang's lunch is in
+    the fridge"), so they do not say a "bring her lunch" is to her."""
     people = {h.person for h in hints if h.kind in _SAID_OF}
     people = (people | subjects) - holder
     if len(people) != 1:
         return text
-    name = terms.office.person(next(iter(people))).name
+    person = next(iter(people))
+    name = terms.office.person(person).name
     others_before = _named_before_pronoun(msg) - people - holder
 
     def named(match: re.Match[str]) -> str:
@@ -390,6 +396,18 @@ def name_pronouns(
         )
         if others_before and not possessive:
             return match.group(0)
+        kind = terms.lex.items.get(normalize(following), "")
+        # her thing kept away from her (her lunch in the fridge), or one made for her ("bring
+        # her coffee": a product nobody owns, so "her" can only be whom it is for)
+        made = bool(kind) and terms.office.item_type(kind).kind == "product"
+        to_her = made or (kind and kept_from_her(terms.office, person, kind))
+        if possessive and word == "her" and to_her and giving_her_in(text, match.start()):
+            # "Zhang can't get away, bring her lunch": the sentences before are about her, so
+            # the thing goes to her ("bring Zhang Wei her lunch"); with someone else named or
+            # her things told of, nothing decides, and the frames ask (``her_or_hers``)
+            if others_before or things_told:
+                return match.group(0)
+            return f"{name} {match.group(1)}{gap}{following}"
         return (f"{name}'s" if possessive else name) + gap + following
 
     def having(match: re.Match[str]) -> str:
