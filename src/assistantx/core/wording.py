@@ -79,24 +79,40 @@ def verb_it(
     office declares verbs is said by its first verb ("courier"). ``obj``: another object
     than "it" ("test masks", "courier blood samples"), said where "it" would be."""
     phrase = op.verbs[0] if " " in op.name.strip() and op.verbs else op.name
-    return with_object(phrase, obj, destination, bare=bare)
+    return with_object(phrase, obj, destination, bare=bare, made=product_words(op))
+
+
+def product_words(op: Operation) -> frozenset[str]:
+    """The words of what the operation makes ("banner" of a "print a banner" that makes
+    banners): where its name's own object is one of them, the name says what is made, not
+    what is worked on (``with_object``)."""
+    return frozenset(op.product.lower().replace("_", " ").split()) if op.product else frozenset()
 
 
 def with_object(
-    phrase: str, obj: str, destination: str | None = None, *, bare: bool = False
+    phrase: str,
+    obj: str,
+    destination: str | None = None,
+    *,
+    bare: bool = False,
+    made: frozenset[str] = frozenset(),
 ) -> str:
     """A verb phrase of an operation ("send off", "send to the lab", "print") with ``obj``
     put where English puts it: after the verb and before a particle ("send it off"), before
     the phrase's own complement ("send it to the lab"), else after the phrase ("laser print
-    it"); ``destination`` replaces the own complement, ``bare`` leaves it out."""
+    it"); ``destination`` replaces the own complement, ``bare`` leaves it out. A name whose
+    own object is what it makes (``made``: "print a banner") keeps it, and the thing worked on
+    comes after "from" ("print a banner from Amber's file")."""
     said = phrase.split()
     if not said:
         return f"do {obj}"
     openers = words("verb_complement_openers")
     cut = next((k for k in range(1, len(said)) if said[k].lower() in openers), len(said))
-    head, own = _without_own_object(said[:cut]), said[cut:]
+    head, own = _without_own_object(said[:cut], made), said[cut:]
     particles = words("verb_particles")
-    if all(w.lower() in particles for w in head[1:]):
+    if _names_what_it_makes(said[:cut], made):
+        spoken = [*head, "from", obj]  # "print a banner from Amber's file"
+    elif all(w.lower() in particles for w in head[1:]):
         spoken = [head[0], obj, *head[1:]]  # "send it off"
     else:
         spoken = [*head, obj]  # "laser print it"
@@ -107,21 +123,37 @@ def with_object(
     return " ".join(spoken)
 
 
-def _without_own_object(said: list[str]) -> list[str]:
+def _own_object_at(said: list[str]) -> int:
+    """Where the object an operation's name carries of its own begins (it opens with an
+    article or a possessive, ``object_starts``); the name's length where it has none."""
+    starts = words("object_starts")
+    return next((k for k in range(1, len(said)) if said[k].lower() in starts), len(said))
+
+
+def _names_what_it_makes(said: list[str], made: frozenset[str]) -> bool:
+    """Whether the name's own object is what the operation makes ("print a banner")."""
+    return bool(made) and bool({w.lower() for w in said[_own_object_at(said) :]} & made)
+
+
+def _without_own_object(said: list[str], made: frozenset[str] = frozenset()) -> list[str]:
     """An operation's name cut before the object it names of its own ("patch a tube", "wash
     the mugs", "polish a trumpet": the verb alone): the real thing said after the verb takes
-    its place, never beside it ("patch a tube Miles's inner tube" is no English). The object
-    opens with an article or a possessive (``object_starts``); a name with none ("make
-    coffee", "laser print") is kept whole."""
-    starts = words("object_starts")
-    cut = next((k for k in range(1, len(said)) if said[k].lower() in starts), len(said))
-    return said[:cut]
+    its place, never beside it ("patch a tube Miles's inner tube" is no English). A name with
+    none ("make coffee", "laser print") is kept whole, and so is one whose object is what it
+    makes (``made``: "print a banner" says which work it is; the thing comes after "from")."""
+    if _names_what_it_makes(said, made):
+        return said
+    return said[: _own_object_at(said)]
 
 
-def operation_verb(name: str) -> str:
+def operation_verb(name: str, made: frozenset[str] = frozenset()) -> str:
     """The operation's name as the verb of a phrase whose object follows it ("patch" of
-    "patch a tube"; "print" and "make coffee" as they are)."""
-    return " ".join(_without_own_object(name.split())) or name
+    "patch a tube"; "print" and "make coffee" as they are; "print a banner from" where the
+    banner is what it makes, ``made``)."""
+    said = name.split()
+    if _names_what_it_makes(said, made):
+        return f"{name} from"
+    return " ".join(_without_own_object(said)) or name
 
 
 def verb_alone(op: Operation) -> str:
@@ -182,7 +214,7 @@ def done_words(op: Operation) -> str:
     if op.done:
         return op.done
     # "restrung", never "restrung a guitar": the name's own object is the item said before
-    verb, _, rest = operation_verb(op.name).partition(" ")
+    verb, _, rest = " ".join(_without_own_object(op.name.split(), product_words(op))).partition(" ")
     return f"{language.past_participle(verb)} {rest}".strip()
 
 

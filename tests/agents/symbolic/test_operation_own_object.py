@@ -13,7 +13,7 @@ from assistantx.agents.symbolic.planning import describe
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Operation
 from assistantx.core.task_schema import Task
-from assistantx.core.wording import done_words, operation_verb, with_object
+from assistantx.core.wording import done_words, operation_verb, product_words, with_object
 from assistantx.evaluation import metrics
 from helpers.music_school import music_school
 from helpers.one_episode import ppdr_episode
@@ -35,6 +35,27 @@ from helpers.one_episode import ppdr_episode
 )
 def test_the_real_thing_takes_the_names_object_place(name: str, said: str) -> None:
     assert with_object(name, "Miles's inner tube") == said
+
+
+@pytest.mark.parametrize(
+    ("name", "made", "said"),
+    [
+        # the name's object is what the operation makes: kept, the thing worked on after "from"
+        ("print a banner", "banner", "print a banner from Amber's file"),
+        ("cut a key", "spare_key", "cut a key from Amber's file"),
+        # what it makes is no word of the name's object: the verb with the thing, as above
+        ("patch a tube", "repair_note", "patch Amber's file"),
+    ],
+)
+def test_a_name_whose_object_is_what_it_makes_keeps_it(name: str, made: str, said: str) -> None:
+    op = Operation(id="op", name=name, product=made)
+    assert with_object(name, "Amber's file", made=product_words(op)) == said
+
+
+def test_what_it_makes_is_said_in_the_verb_and_the_outcome() -> None:
+    op = Operation(id="b", name="print a banner", product="banner")
+    assert operation_verb(op.name, product_words(op)) == "print a banner from"
+    assert done_words(op) == "printed a banner"
 
 
 def test_the_verb_and_what_it_did() -> None:

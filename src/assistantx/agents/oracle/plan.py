@@ -16,7 +16,7 @@ from assistantx.core import task_kinds
 from assistantx.core.goals import Milestone
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_spec import BaseInstruction, Part, made_kind, part_operation
-from assistantx.core.wording import file_noun, verb_it, with_object
+from assistantx.core.wording import file_noun, product_words, verb_it, with_object
 from assistantx.memory.graph import LongTermMemory
 
 RoleKind = Literal["named", "owner", "guard"]
@@ -193,8 +193,10 @@ def _machine_guard(office: Office, part: Part, who: str) -> tuple[Operation, Rol
     role = _guard(
         office,
         op.id,
-        f"Could you {with_object(op.name, whose_thing)} at the {place_name}?",
-        f"Could anyone {with_object(op.name, whose_thing)} at the {place_name}?",
+        f"Could you {with_object(op.name, whose_thing, made=product_words(op))} at the "
+        f"{place_name}?",
+        f"Could anyone {with_object(op.name, whose_thing, made=product_words(op))} at the "
+        f"{place_name}?",
     )
     return op, role
 
@@ -414,7 +416,7 @@ def _add_part(
             place_name = office.facility(facility_for(office, op.id)).name
             # who sends it outside is told where to, as the embedded planner tells them
             to = f" to {part.destination}" if op.sends_out and part.destination else ""
-            said = with_object(op.name, f"{who}'s {thing}", bare=bool(to))
+            said = with_object(op.name, f"{who}'s {thing}", bare=bool(to), made=product_words(op))
             asked = (f"{said} at the {place_name}{to}?", "")
             if to:
                 # by the service's own verb, the place outside last ("courier Ana's proof to

@@ -34,6 +34,7 @@ from assistantx.core.wording import (
     item_type_name,
     operation_verb,
     person_name,
+    product_words,
     purpose_text,
 )
 from assistantx.memory.graph import LongTermMemory
@@ -699,7 +700,8 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
     to = name(task.recipient)
     op = operation_of(office, task)
     # the office's word ("scan"), without an object of its own ("patch" of "patch a tube")
-    verb = operation_verb(office.operation(op).name) if op else task.kind
+    operation = office.operation(op) if op else None
+    verb = operation_verb(operation.name, product_words(operation)) if operation else task.kind
     spec = task_kinds.kind(task.kind)
     template = spec.todo
     if op is not None and office.operation(op).sends_out and task.destination and spec.todo_sent:

@@ -23,7 +23,7 @@ from assistantx.core import language, task_kinds
 from assistantx.core.name_parts import greeting_name
 from assistantx.core.office import Office, Operation
 from assistantx.core.task_schema import TaskKind, kind_shape
-from assistantx.core.wording import a_thing, with_object
+from assistantx.core.wording import a_thing, product_words, with_object
 from assistantx.memory.graph import LongTermMemory
 from assistantx.memory.names import normalize
 
@@ -101,8 +101,8 @@ class Roles:
     def _thing(self, role: Role) -> str:
         return self.office.item_type(role.item_type).name if role.item_type else "item"
 
-    def _operation_name(self, role: Role) -> str:
-        """How the office names the operation the role runs at its facility ("print")."""
+    def _operation(self, role: Role) -> Operation | None:
+        """The operation the role runs at its facility."""
         shape = kind_shape(role.kind)
         if role.facility is not None:
             for op_id in self.office.facility(role.facility).operations:
@@ -110,8 +110,20 @@ class Roles:
                 if op.shape(self.office) == shape and (
                     role.operation is None or op.id == role.operation
                 ):
-                    return _as_verb(op)
-        return role.kind
+                    return op
+        return None
+
+    def _operation_name(self, role: Role) -> str:
+        """How the office names the operation the role runs at its facility ("print")."""
+        op = self._operation(role)
+        return _as_verb(op) if op is not None else role.kind
+
+    def _done_to(self, role: Role, obj: str) -> str:
+        """The operation said with its object ("print Ana's file", "patch Ana's inner tube",
+        "print a banner from Ana's file" where the banner is what it makes)."""
+        op = self._operation(role)
+        made = product_words(op) if op is not None else frozenset()
+        return with_object(self._operation_name(role), obj, made=made)
 
     def _making_named(self, role: Role) -> str | None:
         """The name of the operation that makes the role's product from nothing, where that
@@ -158,7 +170,7 @@ class Roles:
                     f"be at your desk soon to receive a delivery from {self._name(role.requester)}"
                 )
             case "print" | "copy":
-                said = with_object(self._operation_name(role), f"{self._whose(role)} {thing}")
+                said = self._done_to(role, f"{self._whose(role)} {thing}")
                 if role.send_to is not None and (made := self._made_file(role)) is not None:
                     # the file goes by message: whom to, so a yes agrees to sending it there
                     return (
@@ -181,7 +193,7 @@ class Roles:
                 obj = f"{self._whose(role)} {thing}"
                 return with_object(self._send_verb(role), obj, role.destination)
             case "heat":
-                said = with_object(self._operation_name(role), f"{self._whose(role)} {thing}")
+                said = self._done_to(role, f"{self._whose(role)} {thing}")
                 return f"{said} in the {place}"
             case "send_file":
                 return f"send me your {thing} for {beneficiary}"
