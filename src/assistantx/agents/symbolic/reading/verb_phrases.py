@@ -17,7 +17,8 @@ thing of the office ("laser cut" for an operation asked for by "laser"; never "b
 whose "snack" is the product to be named). A phrase two operations share is left to be asked
 about. Every ordinary form of the phrase asks for it: its head inflected and its last word
 inflected ("3D print(s/ed/ing)"). A phrase that is also a facility's or an item's name is a
-thing after a determiner ("at the heat press"), and stays one.
+thing after a determiner, a quantity or a receiver ("at the heat press", "some bubble wrap",
+"bring me bubble wrap"), and stays one.
 """
 
 from __future__ import annotations
@@ -37,6 +38,14 @@ from assistantx.core.office import Office, Operation
 from assistantx.memory.names import normalize
 
 _DETERMINERS = english.words("modifier_determiners")
+# What stands before a thing's name but never before a verb: a determiner or a quantity
+# ("some bubble wrap", "more bubble wrap"), or the receiver of a verb of giving ("bring me
+# bubble wrap"): a declared phrase that is also a thing's name is that thing there
+_THING_BEFORE = (
+    _DETERMINERS
+    | english.words("determiners")
+    | frozenset({"more", "extra", "enough", "spare", "us", "him", "them"})
+)
 _FUNCTION_WORDS = english.words("common")
 # The particles of phrasal verbs ("run off", "knock up"): grammar, not any office's words.
 _PARTICLES = frozenset({"off", "out", "up", "down", "over", "through", "away", "back"})
@@ -194,8 +203,8 @@ class VerbPhrases:
                 said = self.glued.get(said.replace(" ", ""), "")
             if not said or len(said.split()) > size:
                 continue
-            if said in self.things and n and tokens[n - 1].word in _DETERMINERS:
-                continue  # "at the heat press": the machine, not its work
+            if said in self.things and n and tokens[n - 1].word in _THING_BEFORE:
+                continue  # "at the heat press", "some bubble wrap": the thing, not the work
             return size, said
         return 0, ""
 
