@@ -29,6 +29,15 @@ _frame = frame_reader(courier_room, "kit")
             "courier my contract to Casa Lopes, Avenida da Liberdade 12, Lisboa",
             "Casa Lopes, Avenida da Liberdade 12, Lisboa",
         ),
+        # the number first, its small words before the street's name (round 153)
+        (
+            "Please courier my invoice to Mme Girard, 14 rue de Seine, Paris.",
+            "Mme Girard, 14 rue de Seine, Paris",
+        ),
+        (
+            "courier my contract to Studio Bleu, 3 place du Marché, Lyon",
+            "Studio Bleu, 3 place du Marché, Lyon",
+        ),
         # the class's other shapes, which held already
         (
             "courier my contract to Bayside Clinic, 4 Coffee Lane, Leeds",

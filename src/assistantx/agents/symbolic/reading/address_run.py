@@ -84,7 +84,8 @@ def address_part(part: Sequence[Token], at: Sequence[int], names: Collection[int
         return False  # "to Ofcom, Monday": when, not where
     named = [t.text[:1].isupper() or any(c.isdigit() for c in t.text) for t in part]
     # a numbered street line is a name in any language: a small word in lower case between
-    # two of its capitalised words joins them ("Rua *do* Almada 120", "Unter *den* Linden 5")
+    # its capitalised words or its number joins them ("Rua *do* Almada 120", "Unter *den*
+    # Linden 5", "14 *rue* de Seine")
     numbered = any(c.isdigit() for t in part for c in t.text)
     return named[0] and all(
         n
@@ -95,4 +96,7 @@ def address_part(part: Sequence[Token], at: Sequence[int], names: Collection[int
 
 
 def _between_names(named: Sequence[bool], k: int) -> bool:
-    return 0 < k < len(named) - 1 and named[k - 1] and named[k + 1]
+    """Whether a capitalised word or a number stands somewhere before the word at ``k`` and
+    somewhere after it in the part ("14 *rue* de Seine": the number before, "Seine" after the
+    small word "de")."""
+    return any(named[:k]) and any(named[k + 1 :])
