@@ -193,3 +193,22 @@ def test_work_on_the_speakers_own_thing_for_them_is_still_declined() -> None:
     # "for me" of the speaker's own thing says whom the work is for, not where it goes
     frame = _zhang("could you polish my stapler for me")
     assert not frame.tasks and frame.decline is not None and "polish" in frame.decline, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "verb"),
+    [
+        ("can you frame this print for the corridor?", "frame"),
+        ("please frame the print, it's for the lobby", "frame"),
+    ],
+)
+def test_a_service_word_said_as_a_noun_is_no_service_asked(text: str, verb: str) -> None:
+    # "this print": a thing after its determiner; the verb asked is the one no work here has
+    frame = _zhang(text)
+    assert not frame.tasks and frame.decline is not None, frame
+    assert f"can't {verb}" in frame.decline, frame
+
+
+def test_the_services_own_verb_before_its_noun_is_still_the_service() -> None:
+    frame = _zhang("print this copy")
+    assert frame.decline is None and [t.kind for t in frame.tasks] == ["print"], frame

@@ -103,15 +103,20 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None
         if at == 0 and not particle and lexed.tokens[0].word not in _OPENING:
             return None  # "coffee plz, double espresso": a word of the thing's kind, no verb
-        if any(m.kind == "cue" for m in terms.lex.read(sub.text).mentions):
+        whole_sub = terms.lex.read(sub.text)
+        if any(m.kind == "cue" and not _noun_use(whole_sub, m.start) for m in whole_sub.mentions):
             return None  # "fire-proof my banner": the office's verb, as the lexicon reads it
         items = [m for m in lexed.mentions if m.kind == "item" and len(m.ids) == 1]
+        said = " ".join(words[at : at + 1 + particle])
+        if not items and not vague and _service_word_as_object(lexed):
+            # "frame this print": the office's work named as a thing, worked on by a verb
+            # nothing here has; never the print asked for
+            return _declined(terms, piece, said)
         if not items:
             return None  # "could you tidy up the kitchen": nothing of the office to carry
         if {t.word for t in lexed.tokens[items[-1].end :]} & _PUT:
             return None  # "chuck my prunings in the compost": the thing put somewhere
         thing = items[-1].id  # "the hem on my sample": the last thing said is worked on
-        said = " ".join(words[at : at + 1 + particle])
         if not vague:
             return _declined(terms, piece, said)
         if not (rest[particle:] and rest[particle] in _POSSESSIVES):
@@ -131,6 +136,18 @@ def _known(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
         or forms & terms.office_words
         or forms & _DATA_VERBS
     )
+
+
+def _noun_use(lexed: Lexed, at: int) -> bool:
+    """Whether the word at token ``at`` follows a determiner ("frame *this print*", "the
+    scan"): a noun there, never the office's verb asked."""
+    return at > 0 and lexed.tokens[at - 1].word in _OPENING
+
+
+def _service_word_as_object(lexed: Lexed) -> bool:
+    """Whether the verb's object is a word of the office's work said as a noun, right after
+    the determiner that opens it ("this print", "the scans")."""
+    return _noun_use(lexed, 1) and any(m.kind == "cue" and m.start == 1 for m in lexed.mentions)
 
 
 def _object_first(lexed: Lexed) -> bool:
