@@ -13,7 +13,8 @@ from _offices import parser, tasks_of
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.task_schema import Task
-from helpers.music_school import music_school
+from helpers import office_builder as ob
+from helpers.music_school import music_school, raw_music_school
 
 
 @functools.cache
@@ -90,3 +91,21 @@ def test_sent_to_the_keeper_for_work_no_dictionary_knows(text: str) -> None:
     # as the work (``sent_for_service``), so Frank rehairs it and it comes back, once
     frame = _music().parse(text, "tom")
     assert [_done(t) for t in frame.tasks] == [("bow", "tom", "frank", "tom")], frame
+
+
+def _with_a_surname_frank() -> InstructionParser:
+    """The music school where Ada's surname is Frank: "Frank" names Frank Osei by his given
+    name and Ada Frank by her surname."""
+    raw = raw_music_school()
+    for person in raw["people"]:
+        if person["id"] == "ada":
+            person["name"] = "Ada Frank"
+    return InstructionParser(ob.parsed(lambda: raw)())
+
+
+def test_of_two_people_a_name_says_the_one_who_keeps_the_service_is_meant() -> None:
+    frame = _with_a_surname_frank().parse(
+        "My bow needs rehairing, can you take it down to the store for Frank?", "ines"
+    )
+    assert frame.question is None, frame
+    assert [_done(t) for t in frame.tasks] == [("bow", "ines", "frank", "ines")], frame

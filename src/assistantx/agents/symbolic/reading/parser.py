@@ -327,7 +327,9 @@ class InstructionParser:
         text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
         text = booked_means(text, self._means)  # "book a courier for my parcel": sent by it
         # "my bow needs rehairing, take it to the store for Frank": Frank rehairs it, kept back
-        text = taken_for_keeper(text, self._keepers, self._person_of)
+        text = taken_for_keeper(
+            text, self._keepers, self._people_of, lambda who: self.office.person(who).name
+        )
         text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
         # "get the duty manager, Frank, to sign it": Frank; the role only describes him
         text = without_role_appositives(self.lex, text)
@@ -496,6 +498,14 @@ class InstructionParser:
         if len(mentions) != 1 or mentions[0].kind != "person" or len(mentions[0].ids) != 1:
             return None
         return mentions[0].ids[0]
+
+    def _people_of(self, phrase: str) -> tuple[str, ...]:
+        """Every colleague ``phrase`` may name, where it names people and nothing else
+        ("Frank": the Frank by his given name and the one by her surname)."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        if len(mentions) != 1 or mentions[0].kind != "person":
+            return ()
+        return tuple(mentions[0].ids)
 
     def _one_name(self, phrase: str) -> bool:
         """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",

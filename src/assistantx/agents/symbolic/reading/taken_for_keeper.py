@@ -57,19 +57,24 @@ def _named_service(text: str, services: frozenset[str]) -> str | None:
 def taken_for_keeper(
     text: str,
     keepers: dict[str, frozenset[str]],
-    person_of: Callable[[str], str | None],
+    people_of: Callable[[str], tuple[str, ...]],
+    name_of: Callable[[str], str],
 ) -> str:
     """``text`` with "take it ... for <keeper>" said as "could <keeper> <verb> it" where the
-    text names a service that keeper runs (``keepers``: ``kept_services``)."""
+    text names a service that keeper runs (``keepers``: ``kept_services``). ``people_of``:
+    every colleague the words may name ("Frank": Frank Osei, and Liesl Frank by her surname);
+    of several, the one who keeps the service named is meant, said by their full name
+    (``name_of``) so no later step asks which."""
 
     def said(m: re.Match[str]) -> str:
-        who = person_of(m.group("who"))
-        if who is None or who not in keepers:
-            return m.group(0)
+        ids = people_of(m.group("who"))
         rest = text[: m.start()] + text[m.end() :]
-        verb = _named_service(rest, keepers[who])
-        if verb is None:
+        fit = [i for i in ids if i in keepers and _named_service(rest, keepers[i]) is not None]
+        if len(fit) != 1:
             return m.group(0)  # "take my stapler over for Wang": a delivery
-        return f"could {m.group('who')} {verb} {m.group('thing')}"
+        who = fit[0]
+        verb = _named_service(rest, keepers[who])
+        name = m.group("who") if len(ids) == 1 else name_of(who)
+        return f"could {name} {verb} {m.group('thing')}"
 
     return _CARRIED.sub(said, text)
