@@ -669,8 +669,11 @@ def role_text(role: Role, office: Office) -> str:
     shape = kind_shape(role.kind)
     if shape is not None and shape != "make":  # the office's own name for its operation
         op = role.operation or next((o.id for o in office.with_shape(shape)), None)
-        verb = office.operation(op).name if op else role.kind
-        return f"{verb} {the}"
+        if op is None:
+            return f"{role.kind} {the}"
+        # "patch the inner tube" of "patch a tube", "print a banner from the file"
+        operation = office.operation(op)
+        return f"{operation_verb(operation.name, product_words(operation))} {the}"
     return wording("role_wording").get(role.kind, "help").format(a=a_one, the=the)
 
 
