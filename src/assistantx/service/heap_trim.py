@@ -20,6 +20,8 @@ import logging
 from collections.abc import Callable
 from typing import Any
 
+from assistantx.service.libc import libc_function
+
 logger = logging.getLogger(__name__)
 
 TRIM_EVERY = 256  # ended instructions between two trims
@@ -29,15 +31,9 @@ Trim = Callable[[], Any]
 
 def malloc_trim() -> Trim | None:
     """glibc's ``malloc_trim(0)``; None where the C library has none."""
-    try:
-        libc = ctypes.CDLL(None)
-    except OSError:  # pragma: no cover - every POSIX system loads its own C library
-        return None
-    trim = getattr(libc, "malloc_trim", None)
+    trim = libc_function("malloc_trim", [ctypes.c_size_t], ctypes.c_int)
     if trim is None:
         return None
-    trim.argtypes = [ctypes.c_size_t]
-    trim.restype = ctypes.c_int
     return lambda: trim(0)
 
 

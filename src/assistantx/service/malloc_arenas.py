@@ -21,6 +21,8 @@ import ctypes
 import logging
 import os
 
+from assistantx.service.libc import libc_function
+
 logger = logging.getLogger(__name__)
 
 ARENAS = 2
@@ -34,15 +36,9 @@ def limit_arenas(count: int = ARENAS) -> bool:
         raise ValueError("count must be at least 1")
     if "MALLOC_ARENA_MAX" in os.environ:
         return False
-    try:
-        libc = ctypes.CDLL(None)
-    except OSError:  # pragma: no cover - every POSIX system loads its own C library
-        return False
-    mallopt = getattr(libc, "mallopt", None)
+    mallopt = libc_function("mallopt", [ctypes.c_int, ctypes.c_int], ctypes.c_int)
     if mallopt is None:
         return False
-    mallopt.argtypes = [ctypes.c_int, ctypes.c_int]
-    mallopt.restype = ctypes.c_int
     done = bool(mallopt(M_ARENA_MAX, count))
     if done:
         logger.debug("at most %d malloc arenas", count)
