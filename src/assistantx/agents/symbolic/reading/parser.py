@@ -489,15 +489,7 @@ class InstructionParser:
 
     def _names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
-        mentions = self.lex.scan(self.lex.tokens(phrase))
-        return len(mentions) == 1 and mentions[0].kind == "person" and mentions[0].ids == (person,)
-
-    def _person_of(self, phrase: str) -> str | None:
-        """The one colleague ``phrase`` names and nothing else ("Frank"), if any."""
-        mentions = self.lex.scan(self.lex.tokens(phrase))
-        if len(mentions) != 1 or mentions[0].kind != "person" or len(mentions[0].ids) != 1:
-            return None
-        return mentions[0].ids[0]
+        return self._people_of(phrase) == (person,)
 
     def _people_of(self, phrase: str) -> tuple[str, ...]:
         """Every colleague ``phrase`` may name, where it names people and nothing else
@@ -510,8 +502,7 @@ class InstructionParser:
     def _one_name(self, phrase: str) -> bool:
         """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",
         "Ana"; not "yesterday Ana")."""
-        mentions = self.lex.scan(self.lex.tokens(phrase))
-        return len(mentions) == 1 and mentions[0].kind == "person"
+        return bool(self._people_of(phrase))
 
     def _subject_name(self, phrase: str) -> bool:
         """Whether ``phrase`` is one colleague's name when a verb follows it: "frank" alone
