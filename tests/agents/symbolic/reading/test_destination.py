@@ -76,6 +76,41 @@ def test_an_address_goes_on_past_its_comma_to_the_clause_end(text: str, where: s
 @pytest.mark.parametrize(
     ("text", "where"),
     [
+        (
+            "courier my contract to Bandai Namco, 5-37-8 Shiba, Minato-ku, Tokyo.",
+            "Bandai Namco, 5-37-8 Shiba, Minato-ku, Tokyo",
+        ),
+        (
+            "courier it to 3 Rue Cardinale, Aix-en-Provence please",
+            "3 Rue Cardinale, Aix-en-Provence",
+        ),
+        (
+            "courier it to 12 Sheep Street, Stratford-upon-Avon",
+            "12 Sheep Street, Stratford-upon-Avon",
+        ),
+    ],
+)
+def test_a_hyphenated_place_name_s_lower_case_parts_belong_to_it(text: str, where: str) -> None:
+    """ "Minato-ku", "Aix-en-Provence": the lower-case words glued on by a hyphen are the
+    town's own; before, the address stopped at the comma before them."""
+    found = _outside(text)
+    assert found is not None and found.phrase == where
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("courier it to 9 Mill Lane, self-collect is fine", "9 Mill Lane"),
+    ],
+)
+def test_a_hyphenated_lower_case_clause_is_no_town(text: str, where: str) -> None:
+    found = _outside(text)
+    assert found is not None and found.phrase == where
+
+
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
         ("courier it to 9 Mill Lane, it has to go today", "9 Mill Lane"),
         ("fax my form to the county tax office, Frank", "the county tax office"),
         ("courier it to Ms Ito at 4 Elm Road, then tell me", "Ms Ito at 4 Elm Road"),

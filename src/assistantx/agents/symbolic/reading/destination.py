@@ -344,9 +344,20 @@ def _address_tail(
     if any(language.is_weekday(t.word) or language.is_month(t.word) for t in part):
         return end  # "to Ofcom, Monday": when, not where
     # "School of Pharmacy": a proper name's small joining words are part of the place too
-    if all(_place_word(t) for t in part) or _proper_name(part):
+    first = k - len(part)
+    glued = [_hyphen_glued(gaps, n) for n in range(first, k)]
+    if all(g or _place_word(t) for g, t in zip(glued, part, strict=True)):
+        return k
+    if _proper_name([t for g, t in zip(glued, part, strict=True) if not g]):
         return k
     return end
+
+
+def _hyphen_glued(gaps: Sequence[str], n: int) -> bool:
+    """Whether token ``n`` is joined to the word before it by a bare hyphen: the lower-case
+    parts of a hyphenated place name ("Minato-ku", "Aix-en-Provence", "Stratford-upon-Avon")
+    belong to the capitalised word they hang on, as its own letters do."""
+    return 0 < n < len(gaps) and gaps[n] == "-"
 
 
 def _numbered(part: Sequence[Token]) -> bool:
