@@ -28,6 +28,7 @@ from typing import Any
 from assistantx.adapters.messenger.builtin import BuiltinMessenger
 from assistantx.core.lifecycle import cancel_and_wait
 from assistantx.core.ports.messenger import InboundMessage, OutboundMessage
+from assistantx.service.live_memo import LiveMemo
 from assistantx.sim.office import HeldCode, SimOffice
 from assistantx.store.journal import Journal
 
@@ -107,7 +108,7 @@ def snapshot(sim: SimOffice) -> dict[str, Any]:
         "made": sorted(world.made),
         "received": sorted(world.received),
         "messages_to": dict(world.messages_to),
-        "codes": [dict(_held_code_record(_field_values(c))) for c in sim.codes],
+        "codes": [dict(r) for r in _HELD_CODE_RECORDS.values(map(_field_values, sim.codes))],
         "told": list(_sorted_told(frozenset(sim.told))),
         "robot": {"place": sim.robot.place, "odometer_m": sim.robot.odometer_m},
     }
@@ -128,9 +129,10 @@ _field_values = operator.attrgetter(*_ALL_FIELDS)
 # running), and most of its parts are as they were: each held code's record and the sorted
 # list of who was told are remembered by their contents (all plain values), so an unchanged
 # part costs a lookup, not a rebuild (sorting a few hundred pairs was a third of a snapshot).
+# A code's record is remembered while the code is held (``LiveMemo``): an LRU cache of 4,096
+# kept ended codes' records too and grew for most of a 10,000-instruction run.
 
 
-@functools.lru_cache(maxsize=4096)
 def _held_code_record(values: tuple[Any, ...]) -> dict[str, Any]:
     """A held code (its field values) as the snapshot names it: the payload by its digest.
     Shared by every snapshot naming it: copied before use."""
@@ -148,15 +150,20 @@ def phone_entries(codes: list[HeldCode]) -> dict[str, str]:
     """What the phones keep of ``codes``, by ``code_ref``: each whole held code with its
     payload, so a code that reached a phone after the last journaled snapshot (the process
     died in between) is still in that person's hands after a restart, as with a real phone."""
-    return {code_ref(c.payload): _phone_entry(_field_values(c)) for c in codes if c.payload}
+    held = [c for c in codes if c.payload]
+    entries = _PHONE_ENTRIES.values(map(_field_values, held))
+    return {code_ref(c.payload): e for c, e in zip(held, entries, strict=True)}
 
 
-@functools.lru_cache(maxsize=4096)
 def _phone_entry(values: tuple[Any, ...]) -> str:
     # Remembered by the code's field values (all plain): the phones are compared at every
     # checkpoint, and encoding each held code again (``dataclasses.asdict`` deep-copies) took
     # 2 ms of the loop per checkpoint with 100 codes held.
     return json.dumps(dict(zip(_ALL_FIELDS, values, strict=True)), sort_keys=True)
+
+
+_HELD_CODE_RECORDS = LiveMemo(_held_code_record)
+_PHONE_ENTRIES = LiveMemo(_phone_entry)
 
 
 def _phone_code(entry: str) -> HeldCode | None:
