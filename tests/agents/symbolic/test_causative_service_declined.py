@@ -62,3 +62,38 @@ def test_must_not_change_bound_describing_a_thing_to_fetch(text: str) -> None:
     frame = _default(text)
     assert frame.decline is None or "bind" not in frame.decline, text
     assert all(t.kind == "transfer" and t.item == "book" for t in frame.tasks), text
+
+
+@pytest.mark.parametrize(
+    ("text", "verb"),
+    [
+        ("get my form stamped and then scanned", "scan"),
+        ("can you get my contract stamped and faxed to the council", "fax"),
+        ("I need my report printed and laminated", "laminate"),
+    ],
+)
+def test_unoffered_work_joined_to_offered_work_is_declined(text: str, verb: str) -> None:
+    """ "stamped and then scanned" where nothing scans: the stamp alone was done, the scan
+    dropped unsaid; the joined participle asks the same thing's work, said as not offered."""
+    frame = _default(text)
+    assert not frame.tasks and frame.question is None, text
+    assert frame.decline is not None and frame.decline.startswith(f"Sorry, I can't {verb}:"), text
+
+
+def test_the_joined_work_in_another_office() -> None:
+    frame = _harbour("get my report printed and then bound")
+    assert frame.decline is not None and frame.decline.startswith("Sorry, I can't bind:")
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("get my form stamped and then bring it to Chen", ["seal"]),
+        ("I printed my report and scanned it, can you bring me a stapler", ["transfer"]),
+        ("get my report printed and then bring me the stapler", ["print", "transfer"]),
+    ],
+)
+def test_must_not_change_joined_requests_and_statements(text: str, kinds: list[str]) -> None:
+    frame = _default(text)
+    assert frame.decline is None, text
+    assert sorted(t.kind for t in frame.tasks) == kinds, text

@@ -9,7 +9,10 @@ import re
 from assistantx.agents.symbolic.reading.at_hand import POINTERS
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.name_inner_words import inside_a_name
-from assistantx.agents.symbolic.reading.screen.causative_service import causative_service
+from assistantx.agents.symbolic.reading.screen.causative_service import (
+    causative_service,
+    joined_service,
+)
 from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
@@ -98,14 +101,18 @@ def asked_elsewhere(terms: Terms, msg: Message, piece: Piece) -> bool:
 def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding | None:
     """The first service the piece asks for that nothing here offers, declined; ``nor``:
     what else in it cannot be done, said before what can."""
+    before: tuple[list[str], int] | None = None
     for sub in sub_pieces(piece):
         words = sub.words
         at = sub.verb_at(terms.en.lead_in)
         while at + 1 < len(words) and (words[at] in _ASKEES or _doers(terms, words, at)):
             at += 1  # "could someone scan ...": the verb after who is asked
         caused = causative_service(terms, words, at)
+        if caused is None and before is not None:
+            caused = joined_service(terms, *before, words)  # "... stamped and then scanned"
         if caused is not None:  # "get my report laminated" where nothing laminates
             return decline_service(terms, piece, caused, nor=nor)
+        before = (words, at)
         modified = modified_service(terms, words, at)
         if modified is not None:
             typed = r"[\s-]+".join(re.escape(w) for w in modified.split())
