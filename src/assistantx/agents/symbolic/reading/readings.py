@@ -53,6 +53,7 @@ from assistantx.agents.symbolic.reading.possessive_choice import theirs_or_any
 from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
+from assistantx.agents.symbolic.reading.title_words import inside_a_title
 from assistantx.agents.symbolic.reading.titled_stranger import titled_stranger
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
@@ -414,6 +415,8 @@ class MentionReader:
                 continue  # "scan my signed waybill to PDF": the result's form, not a person
             if m.kind == "word" and outsider_origin(tokens, m.start, named_things(mentions)):
                 continue  # "a visitor from Shenzhen": where an outsider comes from, a place
+            if m.kind == "word" and inside_a_title(tokens, mentions, n):
+                continue  # "Notices to Mariners": a word of a thing's title, nobody's name
             if m.kind == "word" and _unknown_name(tokens, mentions, n, self._people_words):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")
