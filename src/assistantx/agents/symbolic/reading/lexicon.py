@@ -56,6 +56,7 @@ from assistantx.agents.symbolic.reading.head_names import head_names
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.measured_items import singular_spans, singulars, unit_of
+from assistantx.agents.symbolic.reading.named_work import NamedWork
 from assistantx.agents.symbolic.reading.near_forms import NearForms
 from assistantx.agents.symbolic.reading.number_labels import after_label, labels_an_item
 from assistantx.agents.symbolic.reading.operation_nouns import (
@@ -344,6 +345,8 @@ class Lexicon:
     operation_nouns: dict[str, str] = field(default_factory=dict)
     # the office's verb phrases of several words ("3d print"), each read as one token
     verb_phrases: VerbPhrases = field(default_factory=lambda: VerbPhrases({}, frozenset(), 0))
+    # operations named by a verb and its object ("apply corrections"), read as that phrase
+    named_work: NamedWork = field(default_factory=lambda: NamedWork(()))
     # the office's names of things and places written with a possessive inside ("reporter's
     # notebook", "St John's room"), by key: the possessive there is part of the name
     inner_possessives: frozenset[str] = frozenset()
@@ -399,6 +402,7 @@ class Lexicon:
             if kind is not None:
                 cues.setdefault(kind, set()).update(forms)
         lex.verb_phrases = VerbPhrases.from_office(office)
+        lex.named_work = NamedWork.from_office(office)
         lex.people_words = office_people_words(office)
         lex.near_forms = NearForms.from_office(office, inflections)
         lex.courses = Courses.from_office(office)
@@ -683,6 +687,8 @@ class Lexicon:
         out = self.courses.read(out, self._known)
         # "needs a lamination": an operation named by a noun is read as its verb
         out = read_as_verbs(out, self.operation_nouns, self._modifier_word, self.operation_names)
+        # "apply this week's corrections to my charts": the operation named by verb and object
+        out = self.named_work.read(out)
         # "3D print my file": a declared phrase is one verb, not the plotter's "print"
         out = self.verb_phrases.join(out, text)
         # "vac my prep": a compound verb said by its first word, clipped ("vac pack")

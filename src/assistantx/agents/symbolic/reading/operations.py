@@ -21,6 +21,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     describing_participles,
     inflections,
 )
+from assistantx.agents.symbolic.reading.made_into import made_products
 from assistantx.agents.symbolic.reading.role_destination import names_only_a_role
 from assistantx.agents.symbolic.reading.size_words import facility_sizes, sized_facility
 from assistantx.agents.symbolic.reading.tokens import gaps
@@ -144,12 +145,7 @@ class OperationChooser:
         products = {i for m in lexed.mentions if m.kind == "item" for i in m.ids}
         named_products = {i for m in (whole or lexed).mentions if m.kind == "item" for i in m.ids}
         # "as label sheets", "into a PDF": the products the item is to be made into
-        made = {
-            i
-            for m in lexed.mentions
-            if m.kind == "item" and m.start and lexed.tokens[m.start - 1].word in _INTO_PRODUCT
-            for i in m.ids
-        }
+        made = made_products(lexed)  # "as a pull-up banner", "on a poster" too
         named: list[Task] = []
         for n, t in enumerate(frame.tasks):
             # the other tasks on the same item: "scan my plan and then bind it" is two

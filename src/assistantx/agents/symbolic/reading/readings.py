@@ -53,6 +53,8 @@ from assistantx.agents.symbolic.reading.possessive_choice import theirs_or_any
 from assistantx.agents.symbolic.reading.result_form import INTO_WORDS, products, result_form
 from assistantx.agents.symbolic.reading.said_of import without_states
 from assistantx.agents.symbolic.reading.send_off import sent_off
+from assistantx.agents.symbolic.reading.team_source import TeamSources, unknown_team
+from assistantx.agents.symbolic.reading.title_words import inside_a_title
 from assistantx.agents.symbolic.reading.titled_stranger import titled_stranger
 from assistantx.agents.symbolic.reading.tokens import Token, gaps, prev_word
 from assistantx.core import english, language, task_kinds
@@ -125,6 +127,8 @@ class MentionReader:
         # every word of the office's names for its people: "the judge's" where someone is
         # "the Judge's Clerk" is one of them, never an outsider by a common noun
         self._people_words = office_people_words(office)
+        # short names of facilities and places said after "from" ("from QA")
+        self._teams = TeamSources(office)
         self._service_verbs = frozenset(v.lower() for op in office.operations for v in op.verbs)
         # the verb phrases of services that send an item out of the office (a fax, a
         # courier), first word in any form: what follows their "to" is a destination outside,
@@ -166,6 +170,7 @@ class MentionReader:
         mentions = participle_adjectives(tokens, mentions)
         mentions = without_states(tokens, mentions)  # "a torque wrench going spare"
         mentions = self._noun_uses(tokens, mentions)
+        mentions = self._teams.read(tokens, mentions)  # "from QA": the QA lab's store
         spaces = gaps(lexed.text, tokens)
         # "run it over to them": an errand carried across the office, to the one desk named
         mentions, errands = errand_verbs(tokens, spaces, mentions)
@@ -414,6 +419,10 @@ class MentionReader:
                 continue  # "scan my signed waybill to PDF": the result's form, not a person
             if m.kind == "word" and outsider_origin(tokens, m.start, named_things(mentions)):
                 continue  # "a visitor from Shenzhen": where an outsider comes from, a place
+            if m.kind == "word" and unknown_team(tokens, m):
+                continue  # "from HR": a team, any one of the thing will do
+            if m.kind == "word" and inside_a_title(tokens, mentions, n):
+                continue  # "Notices to Mariners": a word of a thing's title, nobody's name
             if m.kind == "word" and _unknown_name(tokens, mentions, n, self._people_words):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")

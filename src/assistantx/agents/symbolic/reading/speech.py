@@ -45,6 +45,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_v
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
 from assistantx.agents.symbolic.reading.outsider_report import outsider_reports
+from assistantx.agents.symbolic.reading.passive_service import service_asked_in_passive
 from assistantx.agents.symbolic.reading.phrase_index import (
     PhraseIndex,
     by_first_word,
@@ -732,6 +733,8 @@ class SpeechActs:
             return "polite"  # "would you be able to bring me a pen?": asked, politely
         if first in _MODALS and second in _YOU and self._graciously_asked(w[2:]):
             return "polite"  # "would you be so kind as to get Ms Ede to sign my plan?"
+        if service_asked_in_passive(w, self.lex.operation_words):
+            return "polite"  # "could the proofs be comb-bound?": the office's work, asked
         if first in _MODALS and asked and "be" in w[2:4]:
             return "info"  # "will Ray be in tomorrow?"
         if first in _MODALS and second in _YOU and self._ability_only(w[2:]):

@@ -32,6 +32,7 @@ from assistantx.agents.symbolic.reading.complement_verbs import (
     separated_complement,
     tails_of,
 )
+from assistantx.agents.symbolic.reading.named_work import NamedWork
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.office import Office, Operation
@@ -135,6 +136,10 @@ class VerbPhrases:
                 if complement_verb(phrase):
                     complements += phrase_forms(phrase)
         forms = {form: next(iter(ops)) for form, ops in claimed.items() if len(ops) == 1}
+        # "apply corrections": an operation named by its verb and object, its verb read as
+        # this one phrase where the object follows it (``named_work``)
+        for phrase, op_id in NamedWork.from_office(office).phrases().items():
+            forms.setdefault(phrase, op_id)
         glued = {f.replace(" ", ""): f for f in forms}
         longest = max((len(f.split()) for f in forms), default=0) + 1  # "3 d print"
         tails = tails_of([f for f in complements if f in forms])
