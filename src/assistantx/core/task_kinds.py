@@ -27,7 +27,8 @@ words. The fields:
   the office calls a person's file: ``wording.file_noun``); ``todo_sent`` when its operation
   sends the item outside ({dest}: where, in the requester's words): "courier your drawings
   to Harlow";
-- ``done``: the outcome told to the requester ({done}: the operation's past participle);
+- ``done``: the outcome told to the requester ({done}: the operation's past participle;
+  {was}: "was", or "were" after a plural item, "your clippers were sharpened");
 - ``works_on``: the property of the item type a person-to-person kind works on ("signable":
   the office's paper), never a type id;
 - ``tool``: the property of the item type its doer must own ("seals": whoever owns the
@@ -144,7 +145,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         done_elsewhere=(
             "the {product} of {whose} was handed to {to}, and the original back to {back}"
         ),
-        done_file="{whose} was {done}: the {product} was sent to {to} by message",
+        done_file="{whose} {was} {done}: the {product} was sent to {to} by message",
     ),
     KindSpec(
         id="sign",
@@ -159,7 +160,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         steps=_work("sign"),
         locker="take {item} out, sign it and put it back",
         todo="get {whose} signed by {by}",
-        done="{whose} was signed by {by} and handed to {to}",
+        done="{whose} {was} signed by {by} and handed to {to}",
     ),
     KindSpec(
         id="seal",
@@ -175,7 +176,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         steps=_work("seal"),
         locker="take {item} out, stamp it with the seal and put it back",
         todo="get {whose} stamped with the seal",
-        done="{whose} was stamped with the seal and handed to {to}",
+        done="{whose} {was} stamped with the seal and handed to {to}",
     ),
     KindSpec(
         id="produce",
@@ -187,7 +188,7 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         steps=(Step("doer", "produce"), Step("recipient", "collect")),
         locker="make {item} and put it into the locker",
         todo="get {item} for {to}",
-        done="{item} was handed to {to}",
+        done="{item} {was} handed to {to}",
     ),
     KindSpec(
         id="heat",
@@ -199,9 +200,9 @@ _BUILT_IN: tuple[KindSpec, ...] = (
         steps=_work("heat"),
         locker="take {item} out, heat it and put it back",
         todo="{verb} {whose} for {to}",
-        done="{whose} was {done} and handed to {to}",
-        done_consumed="{whose} was {done}",
-        done_sent="{whose} was {done} to {dest}",
+        done="{whose} {was} {done} and handed to {to}",
+        done_consumed="{whose} {was} {done}",
+        done_sent="{whose} {was} {done} to {dest}",
         todo_sent="{verb} {whose} to {dest}",
     ),
     KindSpec(

@@ -104,3 +104,27 @@ async def test_a_service_that_consumes_the_item_hands_nothing_back() -> None:
     assert "your document was shredded" in told and "handed" not in told, told
     codes = [m.text for m in run.sim.messenger.sent if "locker" in m.text.lower()]
     assert not any("take your document out of the locker" in c for c in codes), codes
+
+
+async def test_the_outcome_agrees_with_a_plural_item() -> None:
+    """ "your scissors were sharpened": a plural item takes "were" (it read "your clippers
+    was sharpened" in a blind round's office); a singular one keeps "was" (above)."""
+    raw: dict[str, Any] = raw_yaml(DEFAULT_OFFICE)
+    raw["operations"].append(
+        {"id": "sharpen", "name": "sharpen", "verbs": ["sharpen", "hone"], "input": "scissors"}
+    )
+    raw["facilities"].append(
+        {
+            "id": "whetstone",
+            "name": "sharpening bench",
+            "location": "print_room",
+            "operations": ["sharpen"],
+            "guards": ["mao"],
+        }
+    )
+    office = parse_office(raw, "office-with-a-sharpener")
+    owner = next(p.id for p in office.people if any(o.type == "scissors" for o in p.owns))
+    run = await run_instruction(office, owner, "could you get my scissors sharpened")
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    told = run.sim.messenger.sent[-1]
+    assert "your scissors were sharpened and handed to you" in told.text, told.text

@@ -38,7 +38,14 @@ from assistantx.core.actions import (
 )
 from assistantx.core.office import Office
 from assistantx.core.task_schema import operation_of
-from assistantx.core.wording import done_words, file_noun, item_phrase, person_name, place_name
+from assistantx.core.wording import (
+    done_words,
+    file_noun,
+    is_are,
+    item_phrase,
+    person_name,
+    place_name,
+)
 
 MAX_ACTIONS = 4
 MAX_CLARIFICATIONS = 3  # questions to the requester in all (one re-ask of each)
@@ -247,7 +254,10 @@ class Decider:
         def whose(person: str | None) -> str:
             return "your" if person == requester else f"{who(person)}'s"
 
-        item = self.office.item_type(task.item).name if task.item else "item"
+        kind_of = self.office.item_type(task.item) if task.item else None
+        item = kind_of.name if kind_of else "item"
+        # "your clippers were sharpened", "your tape was cut": the verb agrees with the item
+        was = "was" if kind_of is None or is_are(item, mass=kind_of.mass) == "is" else "were"
 
         def whose_item(person: str | None) -> str:
             if person is not None and task.item and self.office.is_supply(f"{task.item}:{person}"):
@@ -306,6 +316,7 @@ class Decider:
             product=self.office.item_type(made).name if made else "result",
             by=who(task.actor),
             done=done_words(op) if op else task.kind,
+            was=was,
             dest=task.destination or "",
             back=who(task.owner or requester),  # whoever put the original in gets it back
         )
