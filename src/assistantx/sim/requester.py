@@ -50,6 +50,7 @@ from assistantx.core.name_reading import is_word_name
 from assistantx.core.office import Office, Person
 from assistantx.core.task_schema import Part
 from assistantx.core.wording import verb_it
+from assistantx.sim.able_doers import able_doers
 from assistantx.sim.understanding import (
     mentioned_item_types,
     mentioned_requests,
@@ -87,6 +88,9 @@ class Wish:
     words: str | None = None
     # whose each item of the goal is, where it is someone's (item type id, owner id)
     whose_items: tuple[tuple[str, str], ...] = ()
+    # who could do wanted work whose milestone names no doer (``able_doers``): any of them
+    # will do in place of a named colleague who is out
+    able: frozenset[str] = frozenset()
 
     @classmethod
     def from_words(cls, office: Office, requester: str, text: str) -> Wish:
@@ -117,6 +121,7 @@ class Wish:
         own: list[str] = []
         operations: list[str] = []
         whose: list[tuple[str, str]] = []
+        able: set[str] = set()
 
         def item(item_id: str) -> None:
             type_id, _, owner = item_id.partition(":")
@@ -133,6 +138,7 @@ class Wish:
 
         for milestone in goal:
             name, args = parse_milestone(milestone)
+            able |= able_doers(office, name, args)
             match name:
                 case "holds" | "received":
                     recipients.append(args[0])
@@ -160,6 +166,7 @@ class Wish:
             wants_something=bool(items or recipients),
             people=frozenset(people),
             whose_items=tuple(dict.fromkeys(whose)),
+            able=frozenset(able - {requester}),
         )
 
 
@@ -206,6 +213,7 @@ def answer(office: Office, wish: Wish, question: str) -> str:
 
 
 DONT_KNOW = "Sorry, I don't know."
+_ASKS_SOMEONE = re.compile(r"^\s*shall i ask\b", re.IGNORECASE)
 _WHICH_ITEM = re.compile(r"\b(which|what) (item|thing)\b")
 _WHOLE_REQUEST = re.compile(
     r"\bwhat (should|shall|can) i do\b|\bwhat do you (need|want)\b|"
@@ -406,6 +414,10 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
         return False
     *told, asked = re.split(r"(?<=[.!?])\s+", offer.strip())
     people = _people_in(office, asked) - {wish.requester}
+    # "Jo Bell isn't available. Shall I ask Sam Reid instead?": whom it asks to do work
+    # wanted of nobody in particular is no one they did not ask for, nor is the one out
+    standing_in = wish.able if _ASKS_SOMEONE.search(asked) else frozenset()
+    people -= standing_in
     wanted = set(wish.items)
     # "Shall I print your file for Wren?": a word that names a wanted item (the electronic
     # file a printout is made from) and also another ("a box file") is the wanted one
@@ -424,7 +436,7 @@ def _fits(office: Office, wish: Wish, offer: str) -> bool:
     # "As far as I know, Dov and Renée have a headset. Shall I bring you one?": the people
     # before the offer are who has one, not whom it is for; any one will do for a wish of
     # anyone's, and for a wish of someone's own only when no one else is named
-    holders = _people_in(office, " ".join(told)) - {wish.requester}
+    holders = _people_in(office, " ".join(told)) - {wish.requester} - standing_in
     return wish.own == "any" or not holders - wish.people
 
 

@@ -102,6 +102,8 @@ class Decider:
         task = agenda.active
         if task is None:
             return self._stop(agenda, ev)
+        if task.ask is not None:
+            return self._ask_requester(task.ask, ev)
         phase = task.current
         assert phase is not None  # an active task has an unmet phase
         if isinstance(phase.phase, Confirm):
@@ -113,6 +115,15 @@ class Decider:
                 ForwardFile(source=phase.phase.source, target=target, file=phase.phase.file)
             ]
         return self._handover(phase, phase.phase, ev)
+
+    @staticmethod
+    def _ask_requester(question: str, ev: Evidence) -> tuple[str, list[Action]]:
+        """A question only the requester can settle before the task goes on (``stand_in``):
+        asked once, then waited on."""
+        wait = Wait(reason="waiting for the requester's answer", timeout_s=CLARIFY_TIMEOUT_S)
+        if ev.asked(ev.requester, question) is not None:
+            return "waiting for the requester's answer", [wait]
+        return "ask the requester", [Inquire(contact=ev.requester, question=question), wait]
 
     def _confirm(self, state: RoleState, ev: Evidence) -> tuple[str, list[Action]]:
         role = state.role

@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from assistantx.agents.symbolic import stand_in
 from assistantx.agents.symbolic.evidence import Evidence
 from assistantx.agents.symbolic.plan_parts import left_out, moves_nothing
 from assistantx.agents.symbolic.roles import Role, RoleKind, Roles, RoleState
@@ -96,6 +97,9 @@ class TaskView:
     phases: list[PhaseView]
     status: TaskStatus
     reason: str = ""
+    # a question for the requester before the task goes on (a named doer is out: "Shall I ask
+    # Sam Reid instead?", ``stand_in``)
+    ask: str | None = None
 
     @property
     def current(self) -> PhaseView | None:
@@ -456,6 +460,7 @@ class Planner:
                     self._compile(n, task, requester, kept=False, held=held), ltm, ev, now, after
                 )
                 view = other if other.status != "unachievable" else view
+            view = self._stand_in(view, ltm, ev, now, after)
             item = self._item_in_hand(view.compiled.task, requester)
             if item in blocked and view.status == "active" and not _moved(view):
                 view.status = "unachievable"
@@ -520,6 +525,39 @@ class Planner:
                 status = "failed" if moved else "unachievable"
                 reason = "; ".join(self._why(s) for s in out)
         return TaskView(compiled, states, phases, status, reason)
+
+    def _stand_in(
+        self,
+        view: TaskView,
+        ltm: LongTermMemory,
+        ev: Evidence,
+        now: float,
+        after: dict[str, int],
+    ) -> TaskView:
+        """A task whose named doer is out (``stand_in``): on the requester's yes, the same task
+        with the doer's role open to the others the office lets do it (also once done, so the
+        outcome thanks whoever stood in); before their answer, the task waits on the question;
+        on a no, it ends as it was, saying so."""
+        if view.status == "active":
+            return view
+        out = stand_in.out_doer(view.compiled.task.actor, view.states)
+        if out is None:
+            return view
+        others = stand_in.stand_ins(self.office, out.role, ltm)
+        if not others:
+            return view  # nobody else may do it (a signature): ends as before
+        text = stand_in.question(self.office, out, others, role_text(out.role, self.office))
+        said = stand_in.answer(ev, text)
+        if said == "yes":
+            compiled = _with_role(view.compiled, out.role, stand_in.opened(out.role))
+            return self._view(compiled, ltm, ev, now, after)
+        if view.status == "done":
+            return view
+        if said == "no":
+            view.reason = f"{view.reason}; you did not want anyone else asked"
+            return view
+        view.status, view.ask = "active", text
+        return view
 
     def _phase(
         self,
@@ -718,4 +756,22 @@ def describe(task: Task, office: Office, you: str | None = None) -> str:
         to=to,
         by=name(task.actor),
         item=item,
+    )
+
+
+def _with_role(compiled: CompiledTask, old: Role, new: Role) -> CompiledTask:
+    """``compiled`` with role ``old`` replaced by ``new`` in its roles and phases."""
+
+    def swap(role: Role) -> Role:
+        return new if role == old else role
+
+    def phase(p: Phase) -> Phase:
+        if isinstance(p, Confirm):
+            return Confirm(swap(p.role))
+        if isinstance(p, Forward):
+            return Forward(p.source, swap(p.target_role), p.file)
+        return Handover(swap(p.role), p.legs)
+
+    return CompiledTask(
+        compiled.task, [swap(r) for r in compiled.roles], [phase(p) for p in compiled.phases]
     )

@@ -154,7 +154,7 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
         rest = rest[1 + len(fix) :]
         tokens = terms.lex.tokens(fix)
-    if _opens_request(terms, tokens):
+    if opens_request(terms, tokens):
         # "fetch Bill's tripod... actually, no, just print my draft": a correction that
         # says a request of its own withdraws the request it breaks off; the withdrawn
         # verb never runs (what came before that request's sentence stays)
@@ -172,7 +172,7 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         # "just bring my lunch": the adverb said only of the correction; after "and then"
         # the request reads plainly
         after = re.sub(r"^(?:(?:just|simply|rather|instead)\s+)+", "", after, flags=re.IGNORECASE)
-        after = _thing_kept(terms, before[cut:], tokens, after)
+        after = thing_kept(terms, before[cut:], tokens, after)
         return before[:cut] + after, [
             Evidence(words=text[match.start() :].strip(), meaning=meaning)
         ]
@@ -392,10 +392,10 @@ def _what_it_is(terms: Terms, tokens: Sequence[Token], rest: str) -> bool:
     if any(m.kind == "person" for m in terms.lex.scan(list(tokens))):
         return False  # "it's Gao's, bring me that one": whose it is corrects the owner
     nxt = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
-    return _opens_request(terms, terms.lex.tokens(nxt))
+    return opens_request(terms, terms.lex.tokens(nxt))
 
 
-def _thing_kept(terms: Terms, withdrawn: str, tokens: Sequence[Token], after: str) -> str:
+def thing_kept(terms: Terms, withdrawn: str, tokens: Sequence[Token], after: str) -> str:
     """ "take my mug to the kitchenette - no wait, give it to Fang": a correction that says
     a request of its own with "it"/"them"/"that" for its thing, and names no thing itself,
     keeps the thing (and its owner) of the request it replaces; only where and to whom it
@@ -423,7 +423,7 @@ def _thing_kept(terms: Terms, withdrawn: str, tokens: Sequence[Token], after: st
     return after[: found.start()] + phrase + after[found.end() :]
 
 
-def _opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:
+def opens_request(terms: Terms, tokens: Sequence[Token]) -> bool:
     """Whether a correction's words open with a request verb of their own ("just print my
     draft", "please bind my plan instead"), not a person or an item alone."""
     words = [t.word for t in tokens if t.word not in _FILLERS]

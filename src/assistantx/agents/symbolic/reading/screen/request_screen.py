@@ -7,6 +7,7 @@ or the request."""
 from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.screen.actually_instead import actually_instead
 from assistantx.agents.symbolic.reading.screen.address_part import outside_address_part
 from assistantx.agents.symbolic.reading.screen.addressed import only_addressed
 from assistantx.agents.symbolic.reading.screen.answer import answered, aside
@@ -32,6 +33,7 @@ from assistantx.agents.symbolic.reading.screen.pronoun_subject import named_subj
 from assistantx.agents.symbolic.reading.screen.rejection import rejected_alternative
 from assistantx.agents.symbolic.reading.screen.rewrites import rewrite
 from assistantx.agents.symbolic.reading.screen.rules import RULES
+from assistantx.agents.symbolic.reading.screen.same_work_added import same_work_added
 from assistantx.agents.symbolic.reading.screen.self_introduction import self_introduction
 from assistantx.agents.symbolic.reading.screen.statement import owner_work_asked, sent_by_means
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -80,6 +82,8 @@ class RequestScreen:
         text, leave = asked_leave(text)  # "can I nick Robin's mute?": asks to borrow it
         text, hedged = without_hedges(text)  # "Holly, I think, has one": Holly has one
         text, rejected = rejected_alternative(terms, text)  # "not a ruler, a tape measure"
+        text, added = same_work_added(terms, text)  # "... also print it for Sam": twice
+        text, actually = actually_instead(terms, text)  # ". actually, print it for Sam"
         text, fixes = corrected(terms, text)
         text, sent = sent_by_means(terms, text)  # "this form needs to go by courier to ..."
         text, means = facility_means(terms, text)  # "send my form via the courier desk to ..."
@@ -101,6 +105,8 @@ class RequestScreen:
             *leave,
             *hedged,
             *rejected,
+            *added,
+            *actually,
             *fixes,
             *sent,
             *means,
