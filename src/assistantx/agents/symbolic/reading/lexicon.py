@@ -68,6 +68,7 @@ from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.participle_typos import participle_meant
+from assistantx.agents.symbolic.reading.phrase_typos import read_phrase_typos
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
@@ -677,6 +678,8 @@ class Lexicon:
             # a word right before a determiner is a verb: "printe my file" is print, not printer
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
+        # "blu tac", "gaffa tap": one word of a thing's name of several words mistyped
+        out = read_phrase_typos(out, self.items, self._known)
         # "flame-proofed", "dying": near forms of the office's own verbs are those verbs
         out = self.near_forms.join(out, self._known)
         # "14 days of meloxicam" with a making service's verb: that service's product
