@@ -1,8 +1,9 @@
 """A possessive name several colleagues share ("Léa's scale rule" where two Léas work) means
 one of them only when exactly one is KNOWN (by the assistant's own data) to own the thing
 (round 143 class 3): a thing the office lists as a namesake's but the assistant does not know
-of (``known: false``) never chooses between them, so which one is asked. A unique family name
-and a namesake known to own the thing read as before."""
+of (``known: false``) never chooses between them, so which one is asked. Nor does one known
+owner among colleagues all called by the name (round 160): the other may own one unknown to
+the assistant. A unique family name reads as before."""
 
 from __future__ import annotations
 
@@ -25,6 +26,10 @@ _answered = answered_reader(namesake_studio, "noor")
         ("bring me Sam's stapler", ("Sam Birch", "Sam Ortiz")),
         # neither Sam owns one
         ("bring me Sam's scale rule", ("Sam Birch", "Sam Ortiz")),
+        # only Sam Ortiz is known to own one, but both are called Sam and the other may keep
+        # one the assistant does not know of (round 160: "Noor's controller",
+        # test_namesakes_called_alike.py); this was read as Sam Ortiz's before
+        ("bring me Sam's ruler", ("Sam Birch", "Sam Ortiz")),
         # a shared family name: Léa's is unknown, Ivo has none
         ("bring me Kaczmarek's scale rule", ("Ivo Kaczmarek", "Léa Kaczmarek")),
     ],
@@ -46,12 +51,11 @@ def test_the_answer_settles_which_namesake() -> None:
 @pytest.mark.parametrize(
     ("text", "item", "owner"),
     [
-        ("bring me Sam's ruler", "ruler", "sam_o"),  # only Sam Ortiz is known to own one
         ("bring me Fournier's mug", "mug", "lea_f"),  # a unique family name
         ("bring me Birch's stapler", "stapler", "sam_b"),  # unique, though unknown to own it
     ],
 )
-def test_one_known_owner_or_a_unique_name_is_read(text: str, item: str, owner: str) -> None:
+def test_a_unique_name_is_read(text: str, item: str, owner: str) -> None:
     frame = _read(text)
     assert frame.question is None and frame.decline is None, frame
     assert [(t.item, t.owner) for t in frame.tasks] == [(item, owner)]

@@ -3,7 +3,9 @@ you bring me a stapler? Ana's works". After a need or a request, a colleague's p
 the thing left out and said to be acceptable picks that colleague's one (their consent is
 asked, as for any owned thing). It is read as "Lee's please" in a sentence of its own, which
 the frames read as the owner of the thing asked before. "Lee's is broken", "not Lee's" say no
-such thing and are left alone; so is "it's fine", "that's fine" (no colleague).
+such thing and are left alone; so is "it's fine", "that's fine" (no colleague), and a possessive
+after a correction's word in its sentence ("... from Chen. actually, Lee's"): a correction,
+read by the corrections.
 
 The possessive offered as the choice says the same with nothing after it ("stapler pls,
 Wang's") or with a condition on it ("a stapler, Wang's if he's not using it", "..., Ana's
@@ -46,6 +48,8 @@ _CHOSEN = re.compile(
 
 
 _REFUSALS = frozenset(english.words("exclusion_openers") | {"no"})
+# the one-word marks of a correction ("actually", "sorry", "wait")
+_MARKERS = frozenset(m for m in english.entries("owner_correction_markers") if " " not in m)
 _SENTENCE_END = re.compile(r"[.!?;]")
 _POSSESSIVE = re.compile(r"\b[^\W\d_]+['’]s\b")
 
@@ -55,8 +59,8 @@ def _chosen_here(text: str, at: int, is_person: Callable[[str], bool]) -> bool:
     its sentence: "not Lee's, Lin's" (a refusal before it) or "bring Lee's stapler, Lin's"
     (an owner already said) is a correction, read by the corrections."""
     said = _SENTENCE_END.split(text[:at])[-1]
-    if set(english_words(said)) & _REFUSALS:
-        return False
+    if set(english_words(said)) & (_REFUSALS | _MARKERS):
+        return False  # "... from Chen. actually, Lee's": a correction, not a choice offered
     return not any(is_person(m.group(0)) for m in _POSSESSIVE.finditer(said))
 
 

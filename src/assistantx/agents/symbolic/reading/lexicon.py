@@ -31,7 +31,7 @@ from assistantx.agents.symbolic.reading.bare_possessives import (
     doubted_possessives,
     read_bare_possessives,
 )
-from assistantx.agents.symbolic.reading.called_by import only_in_full_name
+from assistantx.agents.symbolic.reading.called_by import called_alike, only_in_full_name
 from assistantx.agents.symbolic.reading.clipped_given import clipped_owner, given_name_clips
 from assistantx.agents.symbolic.reading.clipped_names import (
     clipped_item,
@@ -69,6 +69,7 @@ from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.participle_typos import participle_meant
+from assistantx.agents.symbolic.reading.phrase_typos import read_phrase_typos
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
@@ -681,6 +682,8 @@ class Lexicon:
             # a word right before a determiner is a verb: "printe my file" is print, not printer
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
+        # "blu tac", "gaffa tap": one word of a thing's name of several words mistyped
+        out = read_phrase_typos(out, self.items, self._known)
         # "flame-proofed", "dying": near forms of the office's own verbs are those verbs
         out = self.near_forms.join(out, self._known)
         # "14 days of meloxicam" with a making service's verb: that service's product
@@ -1042,7 +1045,9 @@ class Lexicon:
         means the one of them who owns the item it is said to own, when only one does (a typo
         stays in doubt: the name itself is uncertain). Only ownership the assistant knows
         counts: a thing the office lists as a colleague's but unknown to the assistant
-        (``known: false``) is no ground to pick them, so the name is asked."""
+        (``known: false``) is no ground to pick them, so the name is asked. It settles only
+        who is called by the name against who merely has it in their full name ("Yang's
+        book": Yang Lei, not Liu Yang); two who are both called so are asked about."""
         out = list(mentions)
         for n, m in enumerate(out):
             if m.kind != "person" or len(m.ids) < 2 or tokens[m.start].corrected:
@@ -1060,6 +1065,8 @@ class Lexicon:
                 others = [self.office.person(i) for i in m.ids if i != candidates[0]]
                 if only_in_full_name(self.office.person(candidates[0]), others, word):
                     continue  # "cliff's running order", only Marcus Cliff keeps one: ask
+                if called_alike(self.office.person(candidates[0]), others, word):
+                    continue  # "Noor's controller", two called Noor: the other may keep one
             if len(candidates) == 1:
                 out[n] = Mention("person", m.start, m.end, candidates, m.possessive, m.text)
         return out

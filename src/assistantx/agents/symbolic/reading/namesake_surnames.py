@@ -2,7 +2,8 @@
 reception - Álvarez, not Lindqvist", "give my contract to Rosa, the Álvarez one", "... to
 Rosa, not Lindqvist". Where a name several colleagues share is said alone, a part set off
 after it in the same sentence (by a comma or a dash) that says only words of the namesakes'
-other names (with "not", "the", "one") picks the one it names, or the one left when it names
+other names (with "not", "the", "one", or the shared name again: "Yang's book - Yang Lei, not
+Liu") picks the one it names, or the one left when it names
 the others with "not". The name is then read as that colleague's full name and the part left
 out, as "drop the copy with Rosa Álvarez at reception" is read. Before, the shared name was
 asked about though the message said which.
@@ -22,7 +23,10 @@ _GLUE = frozenset({"the", "one", "not", "no", "but", "and", "only", "i", "mean"}
     english.words("asking_words")
 )
 _REFUSALS = frozenset({"not", "no"})
+# the words after a refusal that turn to whom is meant ("not Lindqvist but Álvarez")
+_TURNS = frozenset({"but", "mean"})
 _SENTENCE = re.compile(r"[^.!?;\n]+[.!?;\n]*|[.!?;\n]+")
+_POSSESSIVE = re.compile(r"['’]s$", re.IGNORECASE)
 _PAUSE = re.compile(r"\s*(?:[,:]|\s[-–—]+)\s*")
 
 
@@ -63,9 +67,13 @@ class NamesakeSurnames:
 
     def _picked_in(self, sentence: str) -> str:
         for said in language.WORD.finditer(sentence):
-            own = self._shared.get(language.fold(said.group(0)))
+            # "Yang's book - Yang Lei, not Liu": the name of a possessive is the name said
+            name = _POSSESSIVE.sub("", said.group(0))
+            own = self._shared.get(language.fold(name))
             if own is None or self._followed_by_own(sentence, said.end(), own):
                 continue
+            if _preceded_by_own(sentence[: said.start()], own):
+                continue  # "- Liu Yang, not Lei": the full name, said in the part itself
             rest = sentence[said.end() :]
             pauses = list(_PAUSE.finditer(rest))
             chosen: set[str] = set()
@@ -74,7 +82,7 @@ class NamesakeSurnames:
             for n, pause in enumerate(pauses):
                 end = pauses[n + 1].start() if n + 1 < len(pauses) else len(rest)
                 part = rest[pause.end() : end]
-                named = _part_names(part, own)
+                named = _part_names(part, own, language.fold(name))
                 if named is None:
                     continue
                 chosen |= named[0]
@@ -89,7 +97,8 @@ class NamesakeSurnames:
             kept = rest
             for start, end in reversed(cut):
                 kept = kept[:start] + kept[end:]
-            return sentence[: said.start()] + self._full[pid] + kept
+            whose = said.group(0)[len(name) :]  # the possessive's "'s", kept as said
+            return sentence[: said.start()] + self._full[pid] + whose + kept
         return sentence
 
     @staticmethod
@@ -100,19 +109,34 @@ class NamesakeSurnames:
         return nxt is not None and any(language.fold(nxt.group(0)) in w for w in own.values())
 
 
-def _part_names(part: str, own: dict[str, set[str]]) -> tuple[set[str], set[str]] | None:
+def _part_names(
+    part: str, own: dict[str, set[str]], shared: str
+) -> tuple[set[str], set[str]] | None:
     """The namesakes a part picks and refuses, where it says nothing but their own words and
-    the glue ("Álvarez", "the Álvarez one", "not Lindqvist"); None otherwise."""
+    the glue ("Álvarez", "the Álvarez one", "not Lindqvist"); None otherwise. The shared name
+    said again with one's own word ("Yang's book - Yang Lei, not Liu") is that one's full
+    name: the shared word says nothing more, the other word picks."""
     words = [language.fold(w) for w in language.words(part)]
     if not words:
         return None
     chosen: set[str] = set()
     refused: set[str] = set()
-    for n, w in enumerate(words):
-        if w in _GLUE:
+    refusing = False  # "not Yang Lei": the refusal holds for the whole name after it
+    for w in words:
+        if w in _REFUSALS or w in _TURNS:
+            refusing = w in _REFUSALS
+            continue
+        if w in _GLUE or w == shared:
             continue
         pids = {pid for pid, said in own.items() if w in said}
         if len(pids) != 1:
             return None
-        (refused if n and words[n - 1] in _REFUSALS else chosen).update(pids)
+        (refused if refusing else chosen).update(pids)
     return (chosen, refused) if chosen or refused else None
+
+
+def _preceded_by_own(before: str, own: dict[str, set[str]]) -> bool:
+    """Whether the word right before the shared name (with only a space between) is a word of
+    one namesake's own ("Liu Yang"): the two say that one's full name already."""
+    last = re.search(r"(\w[\w'’]*)\s+$", before)
+    return last is not None and any(language.fold(last.group(1)) in w for w in own.values())

@@ -425,7 +425,11 @@ class InstructionParser:
         if any(e.meaning == RESTATED for e in frame.evidence):
             # "print my file and a coffee": the coffee may be a second request, or not
             screened.confirm = True
-        if any(m.guessed for m in spoken.msg.lexed.mentions):
+        # the guess is looked for in the request's own words too: a thing named in a reason
+        # beside it ("... tea keeps getting spilled on it") is context, and must not hide
+        # that the request's own thing was guessed (the badge was laminated unasked)
+        left = self.lex.read(request.text).mentions
+        if any(m.guessed for m in (*spoken.msg.lexed.mentions, *left)):
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"
             screened.confirm = True

@@ -5,7 +5,9 @@ one is left out; before, anyone's stapler AND Zhang's were fetched); "bring me H
 Gao's": a correction, Gao's stapler (before, both were fetched); "a stapler, Zhang's please":
 Zhang's, as "a stapler, Zhang's" is read (before, anyone's AND Zhang's). "Seun's one" is the
 same bare possessive with the thing's pro-form after it ("I need the moisture meter that lives
-in the drying room, Seun's one": Seun's; before, anyone's).
+in the drying room, Seun's one": Seun's; before, anyone's). A bare possessive said right after
+whom the thing was to come from replaces them ("a pen from Chen - actually Lee's": Lee's pen;
+before, Chen's and Lee's were both fetched).
 
 Only a possessive with nothing after it but "one" or a courtesy word ("please", "instead")
 before a pause or the sentence's end corrects: "Zhang's too", "Zhang's scissors", "Zhang's is
@@ -144,12 +146,42 @@ def _corrected(sentence: str, is_person: Callable[[str], bool]) -> str:
             + sentence[first.end : cut]
             + sentence[choice.stop :]
         )
+    cut = _part_start(sentence, choice.start)
+    source = _source_before(sentence, cut, is_person)
+    if not said_before and source is not None and not sentence[source.end() : cut].strip():
+        # "a pen from Chen - actually Lee's": whose it is, said right after whom it was to
+        # come from, replaces them (before, both were fetched); "a pen from Chen and a
+        # stapler, Zhang's" is the stapler's owner, read as before
+        return (
+            sentence[: source.start("name")]
+            + choice.name
+            + sentence[source.end("name") : cut]
+            + sentence[choice.stop :]
+        )
     if not said_before:
         # "a stapler, Zhang's please", "a stapler, no, Zhang's": the choice, as "a stapler,
         # Zhang's" is read (the courtesy and the correction's words said with it left out)
         head = _MARKED.sub(", ", sentence[: choice.start], count=1)
         return head + sentence[choice.start : choice.end] + sentence[choice.stop :]
     return sentence
+
+
+# "from Chen", "from Chen Jie": whom the thing is to come from (a name, no possessive)
+_SOURCE = re.compile(r"\bfrom\s+(?P<name>[^\W\d_]+(?:\s+[^\W\d_]+)?)\b(?!['’])", re.IGNORECASE)
+
+
+def _source_before(
+    sentence: str, at: int, is_person: Callable[[str], bool]
+) -> re.Match[str] | None:
+    """The last "from <colleague>" before ``at`` (the name's one or two words), if any."""
+    found = None
+    for m in _SOURCE.finditer(sentence, 0, at):
+        name = m.group("name")
+        if is_person(f"{name}'s"):
+            found = m
+        elif " " in name and is_person(f"{name.split()[0]}'s"):
+            found = re.compile(r"\bfrom\s+(?P<name>[^\W\d_]+)").match(sentence, m.start())
+    return found
 
 
 def _part_start(sentence: str, at: int) -> int:

@@ -363,6 +363,16 @@ _BE_OR_HAVE = frozenset({"is", "was", "are", "were", "has", "have", "had"})
 _NO_WORK = frozenset({"make"})
 
 
+def _passive(w: list[str], n: int) -> bool:
+    """Whether "got" at ``n`` is the passive's ("got spilled", "got knocked over"): a past
+    participle right after it that is no past form of a verb of having or giving to the
+    speaker ("got given one" is had)."""
+    nxt = w[n + 1] if n + 1 < len(w) else ""
+    if w[n] != "got" or not language.is_past_participle(nxt):
+        return False
+    return not language.verb_lemmas(nxt) & {"give", "send"}
+
+
 def _thing_subject(before: list[str]) -> bool:
     """Whether the subject said before a "have"/"got" of having is a thing ("it", "this one"),
     past the helping words and news marks between them ("it's already", "this one has")."""
@@ -449,6 +459,8 @@ class SpeechActs:
                 continue  # "so he can have mine": an offer of the speaker's, nothing had
             if x in _HAVE_NOW and _thing_subject(w[:n]):
                 continue  # "it's already got a stain on it": the thing's state
+            if n > 0 and not set(w[:n]) & _FOR_SPEAKER and _passive(w, n):
+                continue  # "tea got spilled on mine": what happened to a thing, not had
             lemmas = language.verb_lemmas(x) or {"have"}
             if not lemmas & (self.lex.cue_words | _DONE_VERBS):
                 continue
@@ -894,9 +906,10 @@ class SpeechActs:
         return False
 
     def _thing_happened(self, w: list[str]) -> bool:
-        """ "coffee spilled all over my keyboard", "water got on my notes": a thing of the
-        office said bare, then a past verb that is no errand's: what happened, told (the
-        reason beside a request), not the thing asked for."""
+        """ "coffee spilled all over my keyboard", "water got on my notes", "tea keeps
+        getting spilled on it", "coffee got spilled on it": a thing of the office said bare,
+        then a past or present verb that is no errand's (or the passive's "got"): what
+        happened, told (the reason beside a request), not the thing asked for."""
         if state_told(w, self.lex.items):
             return True  # "stapler is working fine now": how the thing is, told
         if len(w) < 2 or w[0] not in self.lex.items:
@@ -909,9 +922,17 @@ class SpeechActs:
         verb, cues = w[1], self.lex.cue_words
         spread = w[2:3] and w[2] in _SPREAD  # "water got on my notes", "tea went everywhere"
         errand = verb in cues or any(lemma in cues for lemma in language.verb_lemmas(verb))
-        if errand and not spread:
-            return False  # "coffee made for Wang": the errand's own verb, read as before
-        return language.is_past_verb(verb) and language.is_finite_verb(verb)
+        if errand and not spread and not _passive(w, 1):
+            # "coffee made for Wang": the errand's own verb, read as before; "coffee got
+            # spilled on it" is the passive's "got", what happened to the thing
+            return False
+        # "tea keeps getting spilled on it": what keeps happening to it, told as well
+        # ("stapler is urgent" is still the thing asked for: no "is", "has", "does")
+        keeps = language.is_third_person_verb(verb) and not (
+            language.verb_lemmas(verb) & {"be", "have", "do"}
+        )
+        said = language.is_past_verb(verb) or keeps
+        return said and language.is_finite_verb(verb)
 
     def _in_office_phrase(self, w: list[str], n: int) -> bool:
         """Whether ``w[n]`` is the last word of a name of several words of the office's

@@ -26,7 +26,10 @@ _CORRECTION = re.compile(
     # "..., change that to a snack", "... - actually, switch it for a water"
     r"|(?:actually,?\s*)?(?:change|switch|swap)\s+(?:it|that)\s+(?:to|for)\b"
     # "..., actually a snack instead": a thing, then "instead"
-    r"|actually,?(?=\s+(?:an?\s+|some\s+|the\s+)?[^\W\d_]+(?:\s+[^\W\d_]+)?\s+instead\b))"
+    r"|actually,?(?=\s+(?:an?\s+|some\s+|the\s+)?[^\W\d_]+(?:\s+[^\W\d_]+)?\s+instead\b)"
+    # ". actually Lee's, ...", ". Actually, Lin.": one word, a pause or the end after it (only
+    # a person or an item said so corrects, ``_corrected``)
+    r"|actually,?(?=\s+(?:an?\s+|some\s+|the\s+)?[^\W\d_]+(?:['’]s)?\s*(?:[,.!?;…]|\s[-–—]|$)))"
     r"[,:]?\s*",
     re.IGNORECASE,
 )
