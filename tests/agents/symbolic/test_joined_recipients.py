@@ -10,7 +10,7 @@ from assistantx.agents.symbolic.reading.joined_recipients import joined_recipien
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import tokenize
 from helpers.dataset_offices import default_office, harbour_office
-from helpers.reading import frame_reader
+from helpers.reading import ReadFrame, frame_reader
 
 _DEFAULT = frame_reader(default_office, "lee")
 _HARBOUR = frame_reader(harbour_office, "will")
@@ -166,3 +166,39 @@ def test_a_name_that_starts_a_clause_is_no_member() -> None:
         "take it to Wang and Sun will sign it", {3: ("person", "wang"), 5: ("person", "sun")}
     )
     assert joined_recipients(tokens, ms, "lee", []) == []
+
+
+@pytest.mark.parametrize(
+    ("read", "text", "expected"),
+    [
+        (
+            _DEFAULT,
+            "make a coffee for me and for Chen",
+            [("produce", "coffee", None, "chen"), ("produce", "coffee", None, "lee")],
+        ),
+        (
+            _DEFAULT,
+            "print my file for me and for Wang Fang",
+            [("print", "file", "lee", "lee"), ("print", "file", "lee", "wang")],
+        ),
+        (
+            _DEFAULT,
+            "take a water to Mao and to Sun",
+            [("produce", "water", None, "mao"), ("produce", "water", None, "sun")],
+        ),
+    ],
+)
+def test_the_receiving_word_said_again_joins_the_same_group(
+    read: ReadFrame, text: str, expected: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    """ "for me and for Chen": before, only the last got the thing and "me" was dropped unsaid
+    (one coffee, Chen's)."""
+    frame = read(text)
+    assert frame.question is None, frame
+    assert _tasks(frame) == expected, frame
+
+
+def test_one_thing_for_two_said_again_is_asked_about() -> None:
+    frame = _DEFAULT("bring Wang's stapler to Mao and to Sun")
+    assert not frame.tasks
+    assert frame.question is not None and "only one of them" in frame.question

@@ -78,6 +78,11 @@ def _join(tokens: Sequence[Token], a: Mention, b: Mention) -> str:
     between = [t.word for t in tokens[a.end : b.start]]
     if between == ["and"] and not tokens[b.start].after_pause:
         return "and"
+    # "for me and for Wang", "to Mao and to Sun": the receiving word said again joins the
+    # same phrase (before, only the last got the thing and "me" was dropped unsaid)
+    said_again = len(between) == 2 and between[0] == "and" and between[1] in _RECEIVING
+    if said_again and prev_word(tokens, a.start) == between[1]:
+        return "and"
     if not between and tokens[b.start].after_pause and not tokens[b.start].opens:
         return ","
     return ""
@@ -136,6 +141,12 @@ def _receives(
     return after in _NEEDS
 
 
+def _receiving_said_again(tokens: Sequence[Token], m: Mention) -> bool:
+    """Whether a word mention is "to"/"for" said again after "and" ("for me and for Wang")."""
+    word = tokens[m.start].word
+    return m.kind == "word" and word in _RECEIVING and prev_word(tokens, m.start) == "and"
+
+
 def _colleague_before(others: Sequence[str]) -> str:
     """The one colleague a "him"/"her" of a group points back to; several or none: whom is
     asked (``UnresolvedPronoun``, raised by the caller from the empty answer)."""
@@ -150,6 +161,8 @@ def joined_recipients(
     the colleagues named before the clause, in order, for a pronoun of the group. A pronoun
     that points to nobody, or to either of two, gives no group (the caller's own reading
     asks whom it means)."""
+    # "for me and *for* Wang": the receiving word said again is no break in the group
+    ms = [m for m in ms if not _receiving_said_again(tokens, m)]
     groups: list[Joined] = []
     for run in chains(ms, tokens):
         first, last = ms[run[0]], ms[run[-1]]
