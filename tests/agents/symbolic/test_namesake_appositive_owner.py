@@ -77,3 +77,26 @@ def test_the_shared_name_with_no_appositive_is_still_asked() -> None:
     frame = _rosas("default").parse("bring me Rosa's pen", "mao")
     assert frame.tasks == [] and frame.question is not None, frame
     assert "Rosa Álvarez" in frame.question and "Rosa Lindqvist" in frame.question
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("take Yang my pen - no wait, Liu Yang, not Lei", "liu"),
+        ("take Yang my pen - sorry, Yang Lei", "yang"),
+        ("take Yang my pen - oh wait no, Liu Yang", "liu"),
+    ],
+)
+def test_a_correction_opening_the_naming_part_goes_with_it(text: str, recipient: str) -> None:
+    """ "- no wait, Liu Yang, not Lei": the naming part was cut and "no wait" left alone,
+    which withdrew the whole request (blind round 130's case, broken by the appositive rule)."""
+    frame = office_parser("default").parse(text, "hu")
+    assert frame.decline is None and frame.question is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "pen", "hu", recipient)
+    ], frame
+
+
+def test_must_not_change_a_correction_to_another_request() -> None:
+    frame = office_parser("default").parse("take Yang my pen - no wait, give it to Zhang", "hu")
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [("transfer", "zhang")], frame

@@ -79,14 +79,21 @@ class NamesakeSurnames:
             chosen: set[str] = set()
             refused: set[str] = set()
             cut: list[tuple[int, int]] = []
+            opener: tuple[int, int] | None = None
             for n, pause in enumerate(pauses):
                 end = pauses[n + 1].start() if n + 1 < len(pauses) else len(rest)
                 part = rest[pause.end() : end]
                 named = _part_names(part, own, language.fold(name))
                 if named is None:
+                    # "- no wait, Liu Yang, not Lei": the words that open the naming part go
+                    # with it (left behind alone, "no wait" withdrew the whole request)
+                    opener = (pause.start(), end) if _only_correcting(part) else None
                     continue
                 chosen |= named[0]
                 refused |= named[1]
+                if opener is not None:
+                    cut.append(opener)
+                    opener = None
                 cut.append((pause.start(), end))
             if not cut:
                 continue
@@ -133,6 +140,15 @@ def _part_names(
             return None
         (refused if refusing else chosen).update(pids)
     return (chosen, refused) if chosen or refused else None
+
+
+# the words of a part that only says a correction follows ("no wait", "oh wait no", "sorry")
+_CORRECTING = frozenset({"no", "wait", "oh", "sorry", "actually", "i", "mean", "oops", "er"})
+
+
+def _only_correcting(part: str) -> bool:
+    words = [language.fold(w) for w in language.words(part)]
+    return bool(words) and all(w in _CORRECTING for w in words)
 
 
 def _preceded_by_own(before: str, own: dict[str, set[str]]) -> bool:
