@@ -3,7 +3,7 @@ offices and sentences were never read). A workshop sharpens clippers and a lamin
 laminates badges; a laundry washes costumes; the ingest desk in the edit suite ingests a
 camera card; the kit counter charges a camera battery and keeps AA batteries and a tape
 measure (for measuring) for anyone. Colleagues own clippers, folders (signable), badges,
-camera batteries, camera cards and spreadsheets."""
+camera batteries, camera cards, lapel microphones and spreadsheets."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from typing import Any
 
 from helpers import office_builder as ob
 
-_OWN = ("clippers", "folder", "badge", "camera_battery", "camera_card", "spreadsheet")
+_OWN = ("clippers", "folder", "badge", "camera_battery", "camera_card", "spreadsheet", "lav_mic")
 
 _PEOPLE = (
     ob.person("ana", "Ana Ruiz", *_OWN),
@@ -38,7 +38,11 @@ def raw_kit_room() -> dict[str, Any]:
             ob.item("folder", "folder", "personal", signable=True),
             ob.item("badge", "badge", "personal", synonyms=["id badge"]),
             ob.item("camera_battery", "camera battery", synonyms=["battery pack"]),
-            ob.item("aa_batteries", "AA batteries", consumable=True, synonyms=["aa battery"]),
+            ob.item(
+                "aa_batteries", "AA batteries", consumable=True, synonyms=["aa battery", "batts"]
+            ),
+            ob.item("lav_mic", "lapel microphone"),
+            ob.item("spare_mics", "handheld mics", synonyms=["mics"]),
             ob.item("camera_card", "camera card", "personal", synonyms=["memory card"]),
             ob.item("spreadsheet", "spreadsheet", "electronic", synonyms=["sheet"]),
             ob.item("costume", "costume", synonyms=["costumes"]),
@@ -76,7 +80,7 @@ def raw_kit_room() -> dict[str, Any]:
                 at="kit_room",
                 guards=["dev"],
                 operations=["charge"],
-                supplies=["aa_batteries", "tape_measure"],
+                supplies=["aa_batteries", "tape_measure", "spare_mics"],
             ),
         ],
         home="workshop",
