@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.modal_told import told_with_modal
+from assistantx.agents.symbolic.reading.no_work import no_work_told
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
@@ -770,6 +771,8 @@ class SpeechActs:
             return True  # "no more water for me thanks": the speaker wants none
         if reports_done_work(w, self._asking_verb):
             return True  # "they've just been sharpened": work done, told; never asked again
+        if no_work_told(w) and not set(w) & _YOU:
+            return True  # "I have nothing to print": no work, told; never the work asked
         if self._service_subject(w):
             return True  # "courier leaves at 3", "print is too small": told of the thing
         if told_with_modal(w, self._named):
