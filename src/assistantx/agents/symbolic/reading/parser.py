@@ -102,6 +102,7 @@ from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from assistantx.agents.symbolic.reading.keeper_asked_work import keeper_asked_work
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
+from assistantx.agents.symbolic.reading.lacked_purpose import lacked_purposes
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
     machine_choices,
@@ -153,11 +154,7 @@ from assistantx.agents.symbolic.reading.possessive_choice import with_possessive
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
-from assistantx.agents.symbolic.reading.purpose import (
-    contracted_needs,
-    lacked_purposes,
-    wanting_idioms,
-)
+from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader, Readings
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
@@ -377,7 +374,9 @@ class InstructionParser:
         # "Sue on reception needs a pen": where Sue is, no part of the request (before the
         # readings of "<name> would like", which take the name next to the verb)
         text, _ = without_seating(self.screen.terms, text)
-        text = lacked_purposes(text)  # "Hal has nothing to write with": Hal needs a pen
+        # "Hal has nothing to write with", "got nothing to measure it with": a need of the
+        # thing the office keeps for that use
+        text = lacked_purposes(text, (p for t in self.office.item_types for p in t.purposes))
         # "I've got 40 forms to sign and no pen": the forms are why the pen is wanted
         text = work_as_purpose(
             text, self._lacks, self._names_item, self.screen.terms.is_person_word

@@ -40,29 +40,6 @@ def others_purpose(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[
     return set()
 
 
-# "Hal has nothing to write with", "Min's got nothing to cut with", "I've nothing to write
-# on": someone's lack of a thing for a purpose, said as what they have not
-_LACKED_PURPOSE = re.compile(
-    r"\b(?P<verb>has|have|['’]s|['’]ve|s|ve)\s+(?:got\s+)?(?:nothing|no\s+way)\s+to\s+"
-    r"(?P<purpose>[a-z]+\s+(?:with|on))\b",
-    re.IGNORECASE,
-)
-
-
-def lacked_purposes(text: str) -> str:
-    """ "Hal has nothing to write with. Could someone lend him something?": a lack of a thing
-    for a purpose is that person's need of something for it ("Hal needs something to write
-    with"), so the purpose names the office's item declared for it and the request that
-    follows lends it to them; without a request the need is asked about as any need is."""
-
-    def need(match: re.Match[str]) -> str:
-        verb = match.group("verb").lower().lstrip("'’")
-        needs = "needs" if verb in ("has", "s") else "need"
-        return f" {needs} something to {match.group('purpose')}"
-
-    return _LACKED_PURPOSE.sub(need, text)
-
-
 # "Kit's after a torch", "Kit's looking for one": the need phrases said with "'s" for "is"
 # ("s after", "s looking for" of ``need_phrases``); "after" only before what is wanted ("Kit's
 # after a torch", never "Kit's after-school club")

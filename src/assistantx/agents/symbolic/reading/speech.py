@@ -36,11 +36,13 @@ from assistantx.agents.symbolic.reading import future_need
 from assistantx.agents.symbolic.reading.clipped_progressive import clipped_progressive
 from assistantx.agents.symbolic.reading.compound_subject import compound_modifier
 from assistantx.agents.symbolic.reading.declined_more import declines_more
+from assistantx.agents.symbolic.reading.done_passive import reports_done_work
 from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.modal_told import told_with_modal
+from assistantx.agents.symbolic.reading.no_work import no_work_told
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
@@ -779,6 +781,10 @@ class SpeechActs:
             return False  # "and then the original signed by Dr Rao": a wanted state, asked
         if declines_more(w, self.lex.items):
             return True  # "no more water for me thanks": the speaker wants none
+        if reports_done_work(w, self._asking_verb):
+            return True  # "they've just been sharpened": work done, told; never asked again
+        if no_work_told(w) and not set(w) & _YOU:
+            return True  # "I have nothing to print": no work, told; never the work asked
         if self._service_subject(w):
             return True  # "courier leaves at 3", "print is too small": told of the thing
         if told_with_modal(w, self._named):
@@ -904,6 +910,11 @@ class SpeechActs:
             if x in ("ve", "have", "has", "had", "got") and n + 1 < len(w) and w[n + 1] != "to":
                 return True  # "I've got some", "I have one"
         return False
+
+    def _asking_verb(self, word: str) -> bool:
+        """A word that may be the verb of a request ("bring", "print"): before "has been", it
+        makes the clause a relative one inside that request."""
+        return word in self.lex.cue_words or word in self.lex.operation_words
 
     def _thing_happened(self, w: list[str]) -> bool:
         """ "coffee spilled all over my keyboard", "water got on my notes", "tea keeps

@@ -17,6 +17,7 @@ def test_the_rules_in_priority_order() -> None:
         "which",  # "my lamp" where two of the speaker's things are lamps
         "statement",  # a purpose or open offer cut off ("so he can book ...", "if anyone needs it")
         "statement",  # the reason for a request ("..., need it for the report")
+        "statement",  # a reason naming a service as its topic ("..., need the laundry numbers")
         "statement",  # why the colleague a request names needs it ("..., he needs it for his file")
         "statement",  # what someone wants to know ("a visitor wants to know the coffee prices")
         "statement",  # the things to use a tool asked for on ("..., a pile of letters to seal")

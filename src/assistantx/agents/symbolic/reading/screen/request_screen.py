@@ -25,6 +25,7 @@ from assistantx.agents.symbolic.reading.screen.head_noun_back import head_noun_b
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
+from assistantx.agents.symbolic.reading.screen.owned_clipped import owned_clipped
 from assistantx.agents.symbolic.reading.screen.owned_head import owned_head
 from assistantx.agents.symbolic.reading.screen.participle_clause import own_participle
 from assistantx.agents.symbolic.reading.screen.person_is import person_is
@@ -70,6 +71,7 @@ class RequestScreen:
         text, subject = named_subject(terms, text, requester)  # "Rose is wet, she needs ..."
         text, heads = head_noun_back(terms, text)  # "got sticky tape? bring a dispenser"
         text, owned = owned_head(terms, text, requester)  # "my lamp": my inspection lamp
+        text, clipped = owned_clipped(terms, text, requester)  # "my batt": my camera battery
         text, back = brought_back(terms, text)  # "and a coffee on the way back": mine
         # "she'll frank it": "she 'll", never the word "shell" (before any word is looked up)
         text, apart = contractions_apart(text)
@@ -96,6 +98,7 @@ class RequestScreen:
             *subject,
             *heads,
             *owned,
+            *clipped,
             *back,
             *apart,
             *restored,

@@ -66,6 +66,7 @@ from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.recipients_reason import recipients_reason
 from assistantx.agents.symbolic.reading.screen.ruled_out_place import ruled_out_place
 from assistantx.agents.symbolic.reading.screen.service import unsupported
+from assistantx.agents.symbolic.reading.screen.service_word_reason import service_word_reason
 from assistantx.agents.symbolic.reading.screen.someones_job import someones_job
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -96,6 +97,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
     ("statement", reason),
+    # "..., need the laundry numbers": a reason naming a service only as its topic
+    ("statement", service_word_reason),
     # "..., he needs it for his file": why the colleague the request names needs it
     ("statement", recipients_reason),
     # what someone else wants to know ("a visitor wants to know the coffee prices"): a topic,
