@@ -9,6 +9,8 @@ from __future__ import annotations
 import pytest
 from _offices import tasks_of
 
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.agents.symbolic.reading.screen.owned_clipped import owned_clipped
 from assistantx.core.task_schema import TaskFrame
 from helpers.kit_room import kit_room
 from helpers.reading import frame_reader
@@ -74,3 +76,19 @@ def test_an_office_word_said_short_is_read_as_it_is() -> None:
     assert tasks_of("harbour", "bring my calc to Mark", "bill") == [
         ("transfer", "calculator", "bill", "mark")
     ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "need my batt pack charged",  # the thing is the pack: "batt" only says which
+        "courier my customs declaration asap",
+        "get my cert translation stamped",
+    ],
+)
+def test_a_word_said_before_a_noun_of_its_own_phrase_is_left_as_said(text: str) -> None:
+    """ "my cert translation stamped" (a blind round's office, where "cert" clipped two types)
+    was rewritten to the speaker's own type and the stamping lost: a word that modifies a noun
+    after it is no clipped thing."""
+    terms = InstructionParser(kit_room()).screen.terms
+    assert owned_clipped(terms, text, "ana") == (text, [])

@@ -39,6 +39,8 @@ def owned_clipped(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
         word = match.group("word").lower()
         if names_something(terms, word):
             continue  # "my stapler": the office's own word
+        if _modifies_a_noun(text[match.end("word") :]):
+            continue  # "my cert translation", "my customs declaration": the head comes after
         meant = _meant(terms, text, word, requester)
         if meant is None:
             continue
@@ -47,6 +49,19 @@ def owned_clipped(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
         pos = match.end("word")
         found.append(Evidence(words=match.group(0), meaning=f"the speaker's {name}"))
     return "".join(out) + text[pos:], found
+
+
+_NEXT = re.compile(r"\s+(?P<next>[^\W\d_]+)")
+
+
+def _modifies_a_noun(after: str) -> bool:
+    """Whether the word is said before a noun of its own phrase ("cert *translation*"): a
+    modifier of the thing named after it, never that thing clipped."""
+    nxt = _NEXT.match(after)
+    if nxt is None:
+        return False
+    word = nxt.group("next").lower()
+    return language.is_noun(word) and not language.is_finite_verb(word)
 
 
 def _meant(terms: Terms, text: str, word: str, requester: str) -> str | None:
