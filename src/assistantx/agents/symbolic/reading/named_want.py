@@ -48,6 +48,24 @@ _WANTING = re.compile(
     r"(?=\s+" + _WANTED + ")",
     re.IGNORECASE,
 )
+
+
+def _alternatives(*keys: str) -> str:
+    phrases = sorted((p for k in keys for p in english.entries(k)), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+# "Zhang is desperate for a coffee", "Zhang's also dying for a tea", "Zhang would kill for a
+# coffee": the speaker's idioms of wanting (``wanting_idioms``) said of a name, after "is",
+# "'s" or a helping verb and any degree or additive words: that colleague's want, like the
+# speaker's own is theirs (``reading.purpose.wanting_idioms``)
+_IDIOM_WANTING = re.compile(
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)(?:\s+(?:is|would|could)|['’]s)"
+    rf"(?:\s+(?:{_alternatives('wanting_degrees', 'wanting_additives')}))*"
+    rf"\s+(?:{_alternatives('wanting_idioms')})"
+    r"(?=\s+(?:a|an|some|another|one|more)\b)",
+    re.IGNORECASE,
+)
 # "would Zhang like a stapler?": the helping verb before the name that wants
 _ASKED = re.compile(
     r"\bwould\s+(?P<who>[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:like|love)(?=\s+" + _WANTED + ")",
@@ -81,4 +99,5 @@ def named_wants(
         named = any(is_person(" ".join(words[k:])) for k in range(len(words)))
         return f"{said_who} would" if named else match.group(0)
 
-    return _ASKED.sub(asked, _WANTING.sub(said, _WOULD.sub(would, text)))
+    text = _IDIOM_WANTING.sub(said, _WOULD.sub(would, text))
+    return _ASKED.sub(asked, _WANTING.sub(said, text))

@@ -163,6 +163,7 @@ from assistantx.agents.symbolic.reading.room_receiver import (
     room_receiver,
     rooms_taken_to,
 )
+from assistantx.agents.symbolic.reading.round_trip_work import round_trip_work
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
@@ -310,6 +311,8 @@ class InstructionParser:
                 return TaskFrame(requester=requester, question=placeholder)
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
+        # "take my lunch to the kitchenette and bring it back": heated, the room's work on it
+        text = round_trip_work(self.office, text, self._item_types)
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
         text = approved_uses(text)
         # "print the spreadsheet I sent", "the file Wang sent": my spreadsheet, Wang's file
@@ -450,6 +453,10 @@ class InstructionParser:
             if plain is not None:
                 return self.parse(plain, requester, confirmed=confirmed)
         return judge(self.office, screened, frame, requester, confirmed=confirmed)
+
+    def _item_types(self, phrase: str) -> set[str]:
+        """The item types ``phrase`` names."""
+        return {i for m in self.lex.read(phrase).mentions if m.kind == "item" for i in m.ids}
 
     def _work_verb(self, word: str) -> bool:
         """A bare verb of the office's own services or of a colleague's work ("fix",

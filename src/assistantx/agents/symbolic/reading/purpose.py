@@ -72,7 +72,9 @@ def _any_of(key: str) -> str:
     return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
 
 
-_DEGREES = rf"(?:\s+(?:{_any_of('wanting_degrees')}))*\s+"
+# an additive ("also", "still") among the degrees adds this want to the one before: the same
+# want, a second request ("bring me plasters? I'm also desperate for a tea")
+_DEGREES = rf"(?:\s+(?:{_any_of('wanting_degrees')}|{_any_of('wanting_additives')}))*\s+"
 _WANTING = re.compile(
     rf"\b(?P<subject>i|we)(?:(?:\s*['’]\s*|\s+|)(?:{_any_of('wanting_helpers')}){_DEGREES}"
     rf"(?:{_any_of('wanting_idioms')}|{_any_of('wanting_verbs')})"

@@ -80,18 +80,30 @@ def state_told(terms: Terms, piece: Piece) -> bool:
     if len(w) < 2 or w[0] not in terms.en.service_verbs or set(w) & {"you", "u", "please"}:
         return False
     rest = w[1:]
-    while rest and set(language.lemmas(rest[0])) == {"ADV"}:
-        rest = rest[1:]  # "nearly", "almost", "completely"
+    while rest and set(language.lemmas(rest[0])) == {"ADV"} and not _level(rest):
+        rest = rest[1:]  # "nearly", "almost", "completely" (never the "on" of "on 3%")
     if not rest:
         return False
-    if rest[0] in ("at", "on") and rest[1:2] and any(c.isdigit() for c in rest[1]):
-        return True  # "phone at 2%", "phone on 5 percent"
+    if _level(rest):
+        return True  # "phone at 2%", "phone on 5 percent", "phone on nearly 3%"
     if any(tuple(rest[: len(state)]) == state for state in _STATES):
         return True  # "phone dead", "phone out of charge"
     if rest[0] in _WHEN:
         return False  # "phone later", "phone tonight": when the call is asked for
     kinds = set(language.lemmas(rest[0]))
     return "ADJ" in kinds and "VERB" not in kinds  # "phone flat", never "phone home"
+
+
+def _level(words: list[str]) -> bool:
+    """ "at 2%", "on 5 percent", "on about 3%": a level with its number, after "at"/"on" (an
+    adverb between); the dictionary's adverb "on" ("carry on") is read here as the level's."""
+    if not words or words[0] not in ("at", "on"):
+        return False
+    rest = words[1:]
+    # "about", "nearly", and chat's hedging "like" ("on like 3%") before the number
+    while rest and (rest[0] == "like" or set(language.lemmas(rest[0])) == {"ADV"}):
+        rest = rest[1:]
+    return bool(rest) and any(c.isdigit() for c in rest[0])
 
 
 def asked_elsewhere(terms: Terms, msg: Message, piece: Piece) -> bool:
