@@ -70,3 +70,17 @@ def test_the_speaker_having_one_still_withdraws(text: str) -> None:
 def test_a_colleagues_own_thing_with_their_word_is_unchanged() -> None:
     frame = _default("bring me Wang's stapler, he said it's fine")
     assert _tasks(frame) == [("transfer", "stapler", "wang", "lin")], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "would you bring me a pen? I'm dying to know who took mine",
+        "bring me a pen, I wonder who took mine",
+    ],
+)
+def test_a_wondered_taker_is_why_the_speaker_asks(text: str) -> None:
+    """ "I'm dying to know who took mine": the taking's subject is "who", not the speaker
+    before it; before, the request was dropped as had already (noticed by fix169b)."""
+    frame = _default(text)
+    assert [(kind, item) for kind, item, _, _ in _tasks(frame)] == [("transfer", "pen")], frame

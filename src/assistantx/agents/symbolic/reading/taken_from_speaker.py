@@ -18,6 +18,8 @@ from assistantx.core import english
 _TAKING = english.words("taking_verbs") | {"borrow"}
 _SPEAKERS_OWN = frozenset({"mine", "my"})
 _SPEAKER_SUBJECTS = frozenset({"i", "we", "id", "ive", "wed", "weve", "im"})
+# the words that open a clause as its own subject: "... who took mine"
+_CLAUSE_SUBJECTS = frozenset({"who", "whoever", "someone", "somebody", "something"})
 
 
 def taken_from_speaker(words: Sequence[str], at: int, lemmas: Collection[str]) -> bool:
@@ -26,4 +28,8 @@ def taken_from_speaker(words: Sequence[str], at: int, lemmas: Collection[str]) -
     after it, and no first-person subject before it in the clause."""
     if not set(lemmas) & _TAKING or not set(words[at + 1 : at + 2]) & _SPEAKERS_OWN:
         return False
-    return not set(words[:at]) & _SPEAKER_SUBJECTS
+    # "I'm dying to know *who* took mine": the clause of the verb starts at its wh-word, whose
+    # subject it is; the speaker before it only wonders (before, read as the speaker's taking,
+    # news that a pen was had, and the request was dropped)
+    start = max((n + 1 for n in range(at) if words[n] in _CLAUSE_SUBJECTS), default=0)
+    return not set(words[start:at]) & _SPEAKER_SUBJECTS
