@@ -2,7 +2,12 @@
 names no item, no file, and nobody's thing. "it" points back at something said; with nothing
 said, which file is meant is asked, never guessed as the requester's own. "this" / "that"
 point at something at hand (a file attached, a paper held out) and keep their reading, and so
-does every message that names a thing ("print my shoot and bring it over")."""
+does every message that names a thing ("print my shoot and bring it over"), in words of the
+office or not: "print the press release and take it to Ngozi" says what "it" is (a thing put
+after the work's verb with its article) and sends it on to a colleague: the speaker's own to
+send, read as "print the press release" alone is (fix169a class 2: it asked which file "it"
+was). Brought to the speaker ("print the meeting note and bring it to me") whose it is stays
+asked."""
 
 from __future__ import annotations
 
@@ -18,6 +23,11 @@ _ANCHORS = frozenset({"item", "facility", "place"})
 WHICH_FILE = "Which file do you mean by"
 _BARE_POSSESSIVE = re.compile(r"['’]s$|s['’]$")
 _OTHERS_POSSESSIVES = frozenset({"his", "her", "their"})
+# The articles that open a noun phrase said as the work's object ("print *the* press release")
+_ARTICLES = frozenset({"the", "a", "an", "that", "these", "those"})
+# What ends the object's phrase ("... and take it"), and words that tie more to it
+_JOINS = frozenset({"and", "then", "&", "+", ",", "plus"})
+_LINKS = frozenset({"for", "from", "of", "by", "with", "about", "to", "at", "in", "on", "re"})
 
 
 def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None:
@@ -35,9 +45,35 @@ def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None
         return None
     if not all(office.item_type(t.item).kind == "electronic" for t in tasks if t.item):
         return None
+    if _object_said(whole) and all(t.recipient != t.owner for t in tasks):
+        # "print the press release and take it to Ngozi": "it" is the release, the speaker's
+        # to send on; brought to the speaker ("print the meeting note and bring it to me")
+        # it may be anyone's, and whose is still asked
+        return None
     said = next(t.text for t in whole.tokens if t.word in _ANAPHORS)
     kinds = list(dict.fromkeys(office.item_type(t.item).name for t in tasks if t.item))
     return f"{WHICH_FILE} {said!r}? Please tell me whose {' or '.join(kinds)} it is."
+
+
+def _object_said(whole: Lexed) -> bool:
+    """Whether a work's verb is followed by an article and a plain word before the first
+    "it"/"them": the thing the verb works on, said in words the office need not know ("print
+    the press release and take it to Ngozi"); a name or a pronoun after the article is none."""
+    first = next(n for n, t in enumerate(whole.tokens) if t.word in _ANAPHORS)
+    plain = {m.start for m in whole.mentions if m.kind == "word"}
+    for m in whole.mentions:
+        if m.kind != "cue" or m.end + 1 >= first or whole.tokens[m.end].word not in _ARTICLES:
+            continue
+        phrase = []
+        for k in range(m.end + 1, first):
+            if whole.tokens[k].word in _JOINS:
+                break
+            phrase.append(k)
+        # "the quote for Riverside House": a phrase with more than its noun's words (whom
+        # or what it is for) is no plain name of the thing; what it is is still asked
+        if phrase and all(k in plain and whole.tokens[k].word not in _LINKS for k in phrase):
+            return True
+    return False
 
 
 def with_antecedent(text: str, answer: str, kind: str = "") -> str:

@@ -28,7 +28,9 @@ _REFUSALS = english.words("exclusion_openers") | {"no"}
 _COURTESY = english.words("asking_words") | {"instead", "then"}
 # "Seun's one": the pro-form of the thing said before, no second thing
 _ONE = frozenset({"one", "ones"})
-_MARKERS = english.entries("owner_correction_markers")
+# "oh wait no": a sound said with the correction is part of it (fix169a class 4: "bring me
+# Zhang's stapler, oh wait no, Wang's" left "oh wait no" behind, read as a withdrawal)
+_MARKERS = english.entries("owner_correction_markers") + english.entries("correction_interjections")
 
 # a pause, then words that mark a correction, right before the choice ("..., no wait, Dawn's")
 _MARKED = re.compile(
@@ -38,10 +40,17 @@ _MARKED = re.compile(
     re.IGNORECASE,
 )
 # words that name no thing: what a correction is said with
-_SAID_WITH = english.words("owner_correction_markers") | _REFUSALS | _COURTESY
+_SAID_WITH = (
+    english.words("owner_correction_markers")
+    | english.words("correction_interjections")
+    | _REFUSALS
+    | _COURTESY
+)
 _SENTENCE = re.compile(r"[^.!?;]+[.!?;]*|[.!?;]+")
 _POSSESSIVE = re.compile(r"\b(?P<owner>[^\W\d_]+)['’]s\b")
 _NEXT_WORD = re.compile(r"\s*(?P<word>[^\W\d_]+)")
+# "if", "unless": a condition said after the possessive ends it, as a pause does
+_CONDITIONS = frozenset({"if", "unless", "provided", "assuming", "when", "whenever"})
 _PAUSES = ",:-–—"
 _ENDS = ",;:.!?-–—"
 
@@ -82,8 +91,8 @@ def _bare_stop(sentence: str, at: int) -> int | None:
             rest = sentence[at:].lstrip()
             return at if not rest or rest[0] in _ENDS else None
         said = word.group("word").lower()
-        if said == "but":
-            return at
+        if said == "but" or said in _CONDITIONS:
+            return at  # "Sun's if she's around": the condition is when, no thing of Sun's
         if said not in _COURTESY and said not in _ONE:
             return None
         at = word.end()
@@ -162,8 +171,22 @@ def _corrected(sentence: str, is_person: Callable[[str], bool]) -> str:
         # "a stapler, Zhang's please", "a stapler, no, Zhang's": the choice, as "a stapler,
         # Zhang's" is read (the courtesy and the correction's words said with it left out)
         head = _MARKED.sub(", ", sentence[: choice.start], count=1)
+        bare = _BARE_THING.search(head)
+        if bare is not None and not set(bare.group("thing").lower().split()) & _NOT_THING:
+            # "no wait, scissors - Sun's": a new thing said bare, then whose: Sun's scissors
+            # (before, anyone's scissors and Sun's were both read)
+            said = f"{choice.name}'s {bare.group('thing')}"
+            return head[: bare.start("thing")] + said + sentence[choice.stop :]
         return head + sentence[choice.start : choice.end] + sentence[choice.stop :]
     return sentence
+
+
+# A thing said bare (no article, one to three words) as its own part, right before the pause
+# the choice follows ("no wait, *scissors*, "): the possessive is that thing's
+_BARE_THING = re.compile(r"(?:^|[,:;!?\-–—]\s*)(?P<thing>[^\W\d_]+(?:\s+[^\W\d_]+){0,2}),\s*$")
+# words that make the part no bare thing: an article or a word of its own ("a stapler, Zhang's"
+# is read by ``accepted_owner``; "no wait, Zhang's" names nothing)
+_NOT_THING = english.words("determiners") | _SAID_WITH | {"i", "you", "it", "me", "can", "could"}
 
 
 # "from Chen", "from Chen Jie": whom the thing is to come from (a name, no possessive)

@@ -39,6 +39,7 @@ from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.done_passive import reports_done_work
 from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
+from assistantx.agents.symbolic.reading.handed_to_named import handed_to_named
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
 from assistantx.agents.symbolic.reading.modal_told import told_with_modal
@@ -595,6 +596,8 @@ class SpeechActs:
             # "leave it on her desk", "leave it in my office": where it is delivered to,
             # never "leave her alone"
             rest = set(w[1:])
+            if w[0] in _PUTTING and not rest & _AWAY and handed_to_named(w[1:], self._named):
+                return False  # "leave them with Fang", "on Fang's desk": handed to Fang
             if rest & _EVERYONE or rest & _AWAY:  # "keep everyone away from", "leave it alone"
                 return True
             if self._kept_in_place(w[1:]):  # "leave May's ice pack in the fridge"

@@ -198,6 +198,9 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         mentions = _name_said_alone(terms, tokens)
     if len(mentions) == 2 and _same_item_again(terms, mentions, before):
         mentions = mentions[:1]  # "I meant Mao's seal": the owner is what is corrected
+    owner = _owned_new_thing(terms, mentions)
+    if owner:
+        mentions = mentions[1:]  # "no wait, Sun's scissors": the scissors, Sun's
     # a name several people may have is kept as said: the reader asks whom it means later
     if len(mentions) != 1 or (len(mentions[0].ids) != 1 and mentions[0].kind != "person"):
         return text, []
@@ -222,6 +225,11 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = terms.office.item_type(new.ids[0]).name + source
     between = before[old.end() :]
     head = before[: old.start()]
+    if owner:
+        # "can i borrow a pen? no wait, Sun's scissors": whose the new thing is replaces the
+        # old thing's article or owner too (before, anyone's scissors were fetched)
+        head = _DETERMINER_AT_END.sub("", head)
+        said = f"{owner}'s {said}"
     if new.kind == "person" and not new.possessive:
         same = old.group(0).lower() in {n.lower() for n in spellings(terms, "person", fix)}
         if same and _turned_from_receiver(tokens, new, head):
@@ -235,6 +243,25 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         between = _owner_said_again(terms, between, said)
     fixed = head + said + between + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{said}")]
+
+
+# What opens the old thing's noun phrase, said right before it ("a", "the", "my", "Zhang's")
+_DETERMINER_AT_END = re.compile(
+    r"\b(?:a|an|the|some|any|my|your|his|her|their|our|[^\W\d_]+['’]s)\s*$", re.IGNORECASE
+)
+
+
+def _owned_new_thing(terms: Terms, mentions: list[Mention]) -> str:
+    """The one colleague's name where a correction says a thing with its owner ("no wait, Sun's
+    scissors": Sun Li); "" otherwise (one mention, or the owner is all that is corrected)."""
+    if len(mentions) != 2:
+        return ""
+    person, item = mentions
+    if person.kind != "person" or not person.possessive or len(person.ids) != 1:
+        return ""
+    if item.kind != "item" or item.start != person.end:
+        return ""
+    return terms.office.person(person.ids[0]).name
 
 
 def _last_said(names: set[str], text: str, *, with_s: bool = False) -> re.Match[str] | None:

@@ -36,6 +36,15 @@ _DATA_VERBS = frozenset(
     for entry in entries
     for w in entry.split()
 )
+# The verbs that move a thing, whatever else the office uses them for ("get", "take", "pass"):
+# never a service's verb alone ("pour" and "brew" make; "get" also fetches)
+_MOVING = (
+    (english.words("dative_verbs") - english.words("making_verbs"))
+    | english.words("self_taking_verbs")
+    | english.words("handing_verbs")
+    | english.words("putting_verbs")
+)
+_MAKING = english.words("making_verbs")  # "make", "pour", "brew": whatever the office makes
 # The verbs that stand for work without naming it ("do", "sort", "deal", "handle").
 _VAGUE = english.words("work_pro_verbs")
 _PARTICLES = english.words("verb_particles")
@@ -82,7 +91,10 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         lemmas = language.verb_lemmas(verb) or frozenset({verb})
         if not language.lemmas(verb).get("VERB") or language.is_past_verb(verb):
             return None  # no verb ("stapler please"), or one told ("dropped my pen")
-        if _known(terms, verb, lemmas):
+        # "pour up my impressions": a verb only of the office's services, none of which works
+        # on or makes the thing after it (checked below, once the thing is read)
+        misfit = _service_only(terms, verb, lemmas)
+        if _known(terms, verb, lemmas) and not misfit:
             vague = bool(lemmas & _VAGUE)
             if not vague:
                 return None
@@ -104,19 +116,31 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         if at == 0 and not particle and lexed.tokens[0].word not in _OPENING:
             return None  # "coffee plz, double espresso": a word of the thing's kind, no verb
         whole_sub = terms.lex.read(sub.text)
-        if any(m.kind == "cue" and not _noun_use(whole_sub, m.start) for m in whole_sub.mentions):
+        if not misfit and any(
+            m.kind == "cue" and not _noun_use(whole_sub, m.start) for m in whole_sub.mentions
+        ):
             return None  # "fire-proof my banner": the office's verb, as the lexicon reads it
         items = [m for m in lexed.mentions if m.kind == "item" and len(m.ids) == 1]
         said = " ".join(words[at : at + 1 + particle])
+        if misfit:
+            # "pour up my impressions in stone": the speaker's own thing, which nothing the
+            # verb names works on or makes; never a transfer of it, nor the service's product
+            if not (rest[particle:] and rest[particle] in _POSSESSIVES):
+                return None  # "pour a water", "pour one": the service's product, as before
+            if any(_made(terms.office, {verb, *lemmas}, m.id) for m in items):
+                return None  # "pour my coffee": a thing the office makes, asked as before
+            if any(m.kind in ("place", "facility") for m in lexed.mentions[1:]):
+                return None  # "... in the kitchen": a placement, another rule's
+            return _declined(terms, piece, said)
         if not items and not vague and _service_word_as_object(lexed):
             # "frame this print": the office's work named as a thing, worked on by a verb
             # nothing here has; never the print asked for
             return _declined(terms, piece, said)
         if not items:
             return None  # "could you tidy up the kitchen": nothing of the office to carry
+        thing = items[-1].id  # "the hem on my sample": the last thing said is worked on
         if {t.word for t in lexed.tokens[items[-1].end :]} & _PUT:
             return None  # "chuck my prunings in the compost": the thing put somewhere
-        thing = items[-1].id  # "the hem on my sample": the last thing said is worked on
         if not vague:
             return _declined(terms, piece, said)
         if not (rest[particle:] and rest[particle] in _POSSESSIVES):
@@ -135,6 +159,30 @@ def _known(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
         or forms & terms.en.service_verbs
         or forms & terms.office_words
         or forms & _DATA_VERBS
+    )
+
+
+def _service_only(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
+    """Whether the verb is English's for making ("pour", "brew"), a verb only of the office's
+    services that take nothing in ("pour" of its water) and of no errand: what it may mean
+    here is only making their products, so a
+    thing of the speaker's after it is work nothing here does (fix169a class 3: "can you pour
+    up my impressions in stone?" handed the requester their own impressions, or made them a
+    water). A service that works on an input ("heat") declines a wrong one in its own words."""
+    forms = {verb, *lemmas}
+    ops = [op for op in terms.office.operations if forms & set(op.verbs)]
+    if not forms & _MAKING or forms & (_MOVING | _VAGUE):
+        return False  # "frank my letter": a service's own verb may work on what it is said of
+    return bool(ops) and all(op.input is None for op in ops)
+
+
+def _made(office: Office, forms: set[str], thing: str) -> bool:
+    """Whether the verb asks for ``thing`` made: a service of the verb makes it, or the verb
+    is English's for making anything ("pour my coffee" where brewing makes the coffee; never
+    "steep my notebook" where a cupboard hands out notebooks)."""
+    general = bool(forms & _MAKING)
+    return any(
+        op.product == thing and (general or forms & set(op.verbs)) for op in office.operations
     )
 
 
