@@ -64,3 +64,11 @@ def test_a_services_own_verb_that_makes_nothing_is_left_alone() -> None:
 def test_a_service_with_an_input_declines_in_its_own_words() -> None:
     frame = _DEFAULT("can you heat up my stapler?")  # must not change
     assert frame.decline is not None and "only heat" in frame.decline, frame
+
+
+def test_no_thing_of_the_office_after_my_is_the_drink_asked_as_before() -> None:
+    """ "pour my usual please": no thing of the office follows "my", so nothing of the
+    speaker's is worked on; declined as work nobody does, it told an office with a water
+    dispenser that nothing here pours."""
+    frame = _DEFAULT("pour my usual please")
+    assert frame.decline is None or "nothing in this office does that" not in frame.decline
