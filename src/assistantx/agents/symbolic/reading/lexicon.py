@@ -67,6 +67,7 @@ from assistantx.agents.symbolic.reading.operation_nouns import (
 from assistantx.agents.symbolic.reading.outsider_owner import office_people_words
 from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
+from assistantx.agents.symbolic.reading.paper_head import names_another_paper
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.participle_typos import participle_meant
 from assistantx.agents.symbolic.reading.phrase_typos import read_phrase_typos
@@ -877,7 +878,11 @@ class Lexicon:
             if m.kind != "item" or len(m.ids) != 1:
                 continue
             end = part_of_paper(tokens, m.start, m.end, m.ids[0], self._papers)
-            if end is not None:
+            # "my rota form": a part noun that names another of the office's papers heads
+            # the phrase (``paper_head``), no part of the paper before it
+            if end is not None and not names_another_paper(
+                mentions, mentions.index(m), end, self._papers
+            ):
                 text = " ".join(t.text for t in tokens[m.start : end])
                 found = Mention("item", m.start, end, m.ids, tokens[end - 1].possessive, text)
                 mentions = _replaced(mentions, found)

@@ -99,6 +99,7 @@ from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.her_or_hers import with_her_or_you
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
+from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from assistantx.agents.symbolic.reading.keeper_asked_work import keeper_asked_work
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
@@ -315,6 +316,8 @@ class InstructionParser:
         text = round_trip_work(self.office, text, self._item_types)
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
         text = approved_uses(text)
+        # "would you mind laminating my badge, and getting my form signed": two requests
+        text = joined_gerunds(text)
         # "print the spreadsheet I sent", "the file Wang sent": my spreadsheet, Wang's file
         text = sent_files(text, self.screen.terms.is_person_word, self._as_file)
         # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
