@@ -127,8 +127,9 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             # verb names works on or makes; never a transfer of it, nor the service's product
             if not (rest[particle:] and rest[particle] in _POSSESSIVES):
                 return None  # "pour a water", "pour one": the service's product, as before
-            if not any(m.kind == "item" for m in lexed.mentions):
-                return None  # "pour my usual": no thing of the office, the drink asked as before
+            owned = rest[particle + 1] if len(rest) > particle + 1 else ""
+            if not any(m.kind == "item" for m in lexed.mentions) and not language.is_noun(owned):
+                return None  # "pour my usual": no thing after "my", the drink asked as before
             if any(_made(terms.office, {verb, *lemmas}, m.id) for m in items):
                 return None  # "pour my coffee": a thing the office makes, asked as before
             if any(m.kind in ("place", "facility") for m in lexed.mentions[1:]):
