@@ -533,6 +533,7 @@ class TaskReader:
             word_before(m) in _TO_FACILITY | _THROUGH
             and "transform" in shapes(m)
             and "render" not in shapes(m)
+            and not persons_place(m)  # "to Frank in the edit": where he is, not its service
             for m in facilities_said
         ):
             cues.add("copy")
