@@ -72,3 +72,19 @@ def test_no_thing_of_the_office_after_my_is_the_drink_asked_as_before() -> None:
     dispenser that nothing here pours."""
     frame = _DEFAULT("pour my usual please")
     assert frame.decline is None or "nothing in this office does that" not in frame.decline
+
+
+@pytest.mark.parametrize("text", ["can you pour up my ruler in resin?", "could you pour my ruler"])
+def test_a_making_verb_no_service_of_the_office_has_is_declined_on_the_speakers_thing(
+    text: str,
+) -> None:
+    """Harbour has no service that pours: "pour up my impressions in stone" in a blind round's
+    dental lab (nothing pours there either) handed the speaker their own impressions."""
+    frame = frame_reader(harbour_office, "mark")(text)
+    assert frame.tasks == [], frame
+    assert frame.decline is not None and "nothing in this office does that" in frame.decline
+
+
+def test_must_not_change_a_general_making_verb_where_no_service_has_it() -> None:
+    frame = frame_reader(harbour_office, "may")("make my file into a printout")
+    assert [t.kind for t in frame.tasks] == ["print"], frame

@@ -45,6 +45,8 @@ _MOVING = (
     | english.words("putting_verbs")
 )
 _MAKING = english.words("making_verbs")  # "make", "pour", "brew": whatever the office makes
+# the making verbs said of any work at all ("make my report into a pdf", "make me a copy")
+_ANY_MAKING = frozenset({"make", "do", "get", "produce", "create", "prepare"})
 # The verbs that stand for work without naming it ("do", "sort", "deal", "handle").
 _VAGUE = english.words("work_pro_verbs")
 _PARTICLES = english.words("verb_particles")
@@ -176,7 +178,11 @@ def _service_only(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
     ops = [op for op in terms.office.operations if forms & set(op.verbs)]
     if not forms & _MAKING or forms & (_MOVING | _VAGUE):
         return False  # "frank my letter": a service's own verb may work on what it is said of
-    return bool(ops) and all(op.input is None for op in ops)
+    if not ops:
+        # an office with no service of the verb at all ("pour up my impressions" where nothing
+        # pours): the same, but for the verbs that make anything ("make my document a copy")
+        return not forms & _ANY_MAKING
+    return all(op.input is None for op in ops)
 
 
 def _made(office: Office, forms: set[str], thing: str) -> bool:
