@@ -70,7 +70,7 @@ from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_pa
 from assistantx.agents.symbolic.reading.paper_head import names_another_paper
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
 from assistantx.agents.symbolic.reading.participle_typos import participle_meant
-from assistantx.agents.symbolic.reading.phrase_typos import read_phrase_typos
+from assistantx.agents.symbolic.reading.phrase_typos import PhraseTypos
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
 from assistantx.agents.symbolic.reading.surnames import after_title, family_names
 from assistantx.agents.symbolic.reading.tokens import Token, tokenize
@@ -684,7 +684,7 @@ class Lexicon:
             verb_slot = n + 1 < len(raw) and raw[n + 1].text.lower() in _VERB_OBJECT_STARTS
             out.append(t.corrected_to(self._correct(t.word, verb_slot=verb_slot)))
         # "blu tac", "gaffa tap": one word of a thing's name of several words mistyped
-        out = read_phrase_typos(out, self.items, self._known)
+        out = self._phrase_typos.read(out)
         # "flame-proofed", "dying": near forms of the office's own verbs are those verbs
         out = self.near_forms.join(out, self._known)
         # "14 days of meloxicam" with a making service's verb: that service's product
@@ -715,6 +715,11 @@ class Lexicon:
     def _given_clips(self) -> dict[str, tuple[str, ...]]:
         taken = {*self.people, *self.name_words, *self.items, *self.facilities, *self.places}
         return given_name_clips(((p.name, p.id) for p in self.office.people), taken)
+
+    @functools.cached_property
+    def _phrase_typos(self) -> PhraseTypos:
+        """The office's names of things of several words, for a slip in one of their words."""
+        return PhraseTypos(self.items, self._known)
 
     @functools.cached_property
     def _item_words(self) -> frozenset[str]:

@@ -13,7 +13,7 @@ words of two names is left alone."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Sequence
 
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import language
@@ -22,33 +22,49 @@ from assistantx.core import language
 _SHORTEST = 3
 
 
-def read_phrase_typos(
-    tokens: Sequence[Token], names: Mapping[str, str], known: Callable[[str], bool]
-) -> list[Token]:
-    """``tokens`` with the one mistyped word of a name of several words read as the name's
-    word (``names``: the office's names of things, folded, their words apart by spaces;
-    ``known``: whether a word is one of the office's own)."""
-    out = list(tokens)
-    phrases = [tuple(n.split()) for n in names if " " in n]
-    if not phrases:
+class PhraseTypos:
+    """The office's names of several words, indexed by each word and its place in the name,
+    so that a message is compared only with the names one of whose words it says where that
+    word stands (the lexicon reads every rewrite of a message: comparing each token with every
+    name cost more than the rest of the reading together)."""
+
+    def __init__(self, names: Collection[str], known: Callable[[str], bool]) -> None:
+        phrases = {tuple(n.split()) for n in names if " " in n}
+        # a word of any of the names is that word ("bubble wrap" beside "bubble wraps"), never
+        # a slip in another's
+        self._said_right = frozenset(w for n in names for w in n.split())
+        self._known = known
+        self._at: dict[tuple[int, str], list[tuple[str, ...]]] = {}
+        for words in sorted(phrases):
+            for k, word in enumerate(words):
+                self._at.setdefault((k, word), []).append(words)
+        self._longest = max((len(p) for p in phrases), default=0)
+
+    def _typo(self, word: str) -> bool:
+        return word not in self._said_right and not self._known(word)
+
+    def read(self, tokens: Sequence[Token]) -> list[Token]:
+        """``tokens`` with the one mistyped word of a name of several words read as the
+        name's word."""
+        out = list(tokens)
+        if not self._at:
+            return out
+        for i in range(len(out)):
+            # a name with one word mistyped says all its others where they stand
+            candidates = {
+                words
+                for k in range(min(self._longest, len(out) - i))
+                for words in self._at.get((k, out[i + k].word), ())
+            }
+            meant = {
+                (i + j, words[j])
+                for words in candidates
+                if (j := _one_slip(out, i, words, self._typo)) is not None
+            }
+            if len(meant) == 1:  # two names' words as near: left as typed
+                ((at, word),) = meant
+                out[at] = out[at].corrected_to(word)
         return out
-    # a word of any of the names is that word ("bubble wrap" beside "bubble wraps"), never a
-    # slip in another's
-    said_right = {w for n in names for w in n.split()}
-
-    def typo(word: str) -> bool:
-        return word not in said_right and not known(word)
-
-    for i in range(len(out)):
-        meant = {
-            (i + j, words[j])
-            for words in phrases
-            if (j := _one_slip(out, i, words, typo)) is not None
-        }
-        if len(meant) == 1:  # two names' words as near: left as typed
-            ((at, word),) = meant
-            out[at] = out[at].corrected_to(word)
-    return out
 
 
 def _one_slip(
