@@ -42,7 +42,7 @@ def counted_reason(terms: Terms, msg: Message, piece: Piece, requester: str) -> 
     # to the robot, but a piece that opens with a count opens with no verb at all
     if piece.asks or piece.acts.question is not None:
         return None
-    if not any(p.end <= piece.start and (p.acts.request or p.acts.imperative) for p in msg.pieces):
+    if not msg.asked_before(piece):
         return None  # a count said alone is no reason for anything
     words = [t.word for t in piece.lexed.tokens]
     at = _count_at(words)

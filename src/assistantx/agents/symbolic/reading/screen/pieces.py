@@ -135,6 +135,13 @@ class Message:
     # 3 already" after it is why the first was dropped, not the new one withdrawn
     replaced: bool = False
 
+    def asked_before(self, piece: Part) -> list[Piece]:
+        """The pieces before ``piece`` that ask something of the robot (a request or a
+        command): what a reason, a count or a topic said after them is about."""
+        return [
+            p for p in self.pieces if p.end <= piece.start and (p.acts.request or p.acts.imperative)
+        ]
+
 
 def pieces(
     text: str, read: Callable[[str], Lexed], acts: Callable[[list[str], bool], Acts]

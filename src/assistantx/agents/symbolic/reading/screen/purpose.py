@@ -70,7 +70,7 @@ def reason(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
     acts = piece.acts
     if piece.asks or acts.imperative or acts.question is not None:
         return None
-    if not any(p.end <= piece.start and (p.acts.request or p.acts.imperative) for p in msg.pieces):
+    if not msg.asked_before(piece):
         return None
     words = content(piece.words)
     at = next((n for n, w in enumerate(words) if w in _NEED), None)

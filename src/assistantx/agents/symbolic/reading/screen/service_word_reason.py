@@ -37,7 +37,7 @@ def service_word_reason(terms: Terms, msg: Message, piece: Piece, requester: str
     acts = piece.acts
     if piece.asks or acts.imperative or acts.question is not None:
         return None
-    if not any(p.end <= piece.start and (p.acts.request or p.acts.imperative) for p in msg.pieces):
+    if not msg.asked_before(piece):
         return None
     words = content(piece.words)
     if not _reason_opening(words) or set(piece.words) & _MORE:
@@ -56,12 +56,7 @@ def service_word_reason(terms: Terms, msg: Message, piece: Piece, requester: str
     ] + [op for op in terms.office.operations if set(op.verbs) & set(words)]
     if not operations:
         return None
-    asked = {
-        item
-        for p in msg.pieces
-        if p.end <= piece.start and (p.acts.request or p.acts.imperative)
-        for item in terms.named(p.lexed, "item")
-    }
+    asked = {item for p in msg.asked_before(piece) for item in terms.named(p.lexed, "item")}
     if any(op.input in asked for op in operations):
         return None  # "take my costume, for the laundry": the thing the service works on
     return Finding("statement", piece, "why the request is made, a service its topic: context")
