@@ -19,7 +19,7 @@ only where the verb is one an item of the office is declared for: "I have nothin
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Collection
 
 from assistantx.core import language
 
@@ -44,11 +44,11 @@ _LACKED = re.compile(
 )
 
 
-def lacked_purposes(text: str, purposes: Iterable[str]) -> str:
+def lacked_purposes(text: str, declared: Collection[str]) -> str:
     """``text`` with each lack of a thing for a purpose said as the need of something for it
-    ("Hal has nothing to write with" -> "Hal needs something to write with"). ``purposes``:
-    what the office's items are declared for ("measure", "write on")."""
-    declared = frozenset(p.lower() for p in purposes)
+    ("Hal has nothing to write with" -> "Hal needs something to write with"). ``declared``:
+    what the office's items are declared for, in lower case ("measure", "write on"), built
+    once per office by the caller (this runs on every message)."""
 
     def need(match: re.Match[str]) -> str:
         verb, said_with = match.group("verb"), (match.group("with") or "").strip().lower()
@@ -82,7 +82,7 @@ def lacked_purposes(text: str, purposes: Iterable[str]) -> str:
     return _LACKED.sub(need, text)
 
 
-def _declared(verb: str, said_with: str, declared: frozenset[str]) -> bool:
+def _declared(verb: str, said_with: str, declared: Collection[str]) -> bool:
     """Whether an item of the office is for ``verb`` (its lemma): "measure", or "write on"
     where "on" is said (paper is to write on, never to write "with")."""
     lemmas = language.verb_lemmas(verb.lower()) | {verb.lower()}

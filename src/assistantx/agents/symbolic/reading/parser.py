@@ -164,7 +164,7 @@ from assistantx.agents.symbolic.reading.room_receiver import (
     room_receiver,
     rooms_taken_to,
 )
-from assistantx.agents.symbolic.reading.round_trip_work import round_trip_work
+from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
@@ -279,6 +279,9 @@ class InstructionParser:
             office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
         )
         self._means = send_out_means(office)  # "courier": what the send-outs send by
+        self._round_trip = RoundTripWork(office)  # "take it to the kitchen and bring it back"
+        # what the office's things are declared for ("measure"), for a lack of one
+        self._purposes = frozenset(p.lower() for t in office.item_types for p in t.purposes)
         self._keepers = kept_services(office)  # each keeper's services, by their verbs
         self._paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
@@ -313,7 +316,7 @@ class InstructionParser:
         text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
         text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
         # "take my lunch to the kitchenette and bring it back": heated, the room's work on it
-        text = round_trip_work(self.office, text, self._item_types)
+        text = self._round_trip.read(text, self._item_types)
         # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
         text = approved_uses(text)
         # "would you mind laminating my badge, and getting my form signed": two requests
@@ -382,7 +385,7 @@ class InstructionParser:
         text, _ = without_seating(self.screen.terms, text)
         # "Hal has nothing to write with", "got nothing to measure it with": a need of the
         # thing the office keeps for that use
-        text = lacked_purposes(text, (p for t in self.office.item_types for p in t.purposes))
+        text = lacked_purposes(text, self._purposes)
         # "I've got 40 forms to sign and no pen": the forms are why the pen is wanted
         text = work_as_purpose(
             text, self._lacks, self._names_item, self.screen.terms.is_person_word

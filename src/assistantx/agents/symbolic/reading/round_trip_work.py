@@ -63,24 +63,33 @@ def _work_there(office: Office, room: str, types: set[str]) -> str | None:
     return office.operation(next(iter(ops))).verbs[0]
 
 
-def round_trip_work(office: Office, text: str, item_types: Callable[[str], set[str]]) -> str:
-    """``text`` with "take X to <room> and bring it back" said as the work the room's facility
-    does on X ("heat my lunch"); ``item_types`` gives the item types a phrase names (for "it",
-    those the whole message names)."""
-    rooms = _rooms(office)
-    if not rooms:
-        return text
-    names = "|".join(re.escape(n) for n in rooms)
-    pattern = re.compile(rf"{_CARRY}(?P<room>{names}){_BACK}", re.IGNORECASE)
+class RoundTripWork:
+    """Built once per office (its rooms and the pattern over their names), read on every
+    message."""
 
-    def as_work(m: re.Match[str]) -> str:
-        thing = m.group("thing")
-        # a pronoun's thing is the one the message named ("my lunch is cold, take it ...")
-        pronoun = thing.lower() in _PRONOUNS
-        types = item_types(text) if pronoun else item_types(thing)
-        verb = _work_there(office, rooms[m.group("room").lower()], types)
-        if verb is None:
-            return m.group(0)
-        return f"{verb} {thing}"
+    def __init__(self, office: Office) -> None:
+        self._office = office
+        self._rooms = _rooms(office)
+        names = "|".join(re.escape(n) for n in self._rooms)
+        self._pattern = (
+            re.compile(rf"{_CARRY}(?P<room>{names}){_BACK}", re.IGNORECASE) if names else None
+        )
 
-    return pattern.sub(as_work, text)
+    def read(self, text: str, item_types: Callable[[str], set[str]]) -> str:
+        """``text`` with "take X to <room> and bring it back" said as the work the room's
+        facility does on X ("heat my lunch"); ``item_types`` gives the item types a phrase
+        names (for "it", those the whole message names)."""
+        if self._pattern is None or "back" not in text.lower():
+            return text
+
+        def as_work(m: re.Match[str]) -> str:
+            thing = m.group("thing")
+            # a pronoun's thing is the one the message named ("my lunch is cold, take it ...")
+            pronoun = thing.lower() in _PRONOUNS
+            types = item_types(text) if pronoun else item_types(thing)
+            verb = _work_there(self._office, self._rooms[m.group("room").lower()], types)
+            if verb is None:
+                return m.group(0)
+            return f"{verb} {thing}"
+
+        return self._pattern.sub(as_work, text)
