@@ -35,6 +35,11 @@ def test_openers_and_stance_are_passed_over() -> None:
         ("do a copy of my document for Zhang", None),
         ("do you have a stapler", "info"),
         ("do we have any tape", "info"),
+        # "do you mind" before a task's gerund asks it, as "would you mind" does
+        ("do you mind copying my report", "polite"),
+        ("does anyone mind bringing me a stapler", "polite"),
+        ("do you mind if I borrow a pen", "polite"),  # leave to borrow: "may I borrow"
+        ("do you mind the noise", "info"),
     ],
 )
 def test_a_question_is_polite_or_for_information(

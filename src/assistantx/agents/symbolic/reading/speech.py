@@ -766,6 +766,8 @@ class SpeechActs:
             return None  # "we're trying to ...": a contraction, not "were ...?"
         if first == "have" and not asks and self._causative(w):
             return None  # "have Ines stamp my lease": a request that she does it
+        if first in _AUX and self._minded(w):
+            return "polite"  # "do you mind copying my report?": asked, as "would you mind ..."
         if first in _AUX:
             if self._for_me(w):  # "does anyone have a stapler I could borrow?"
                 # "... I could use later?": answered; "... I can use this afternoon?": now
