@@ -66,6 +66,17 @@ def test_default_office_thing_after_get_someone_to_work_is_got(text: str, also: 
             ("transfer", "book", "lin", "zhang", None),
             ("produce", "water", None, "wang", None),
         ),
+        # the second person said with "for", before the thing: the coffee had gone to Lin
+        (
+            "bring a coffee to Zhang and for me a water",
+            ("produce", "coffee", None, "zhang", None),
+            ("produce", "water", None, "lin", None),
+        ),
+        (
+            "take my book to Zhang and for Wang a stapler",
+            ("transfer", "book", "lin", "zhang", None),
+            ("transfer", "stapler", None, "wang", None),
+        ),
     ],
 )
 def test_default_office_gapped_giving_verb(text: str, first: Row, second: Row) -> None:

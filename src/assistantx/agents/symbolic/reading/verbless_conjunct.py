@@ -12,8 +12,10 @@ after "and" in a sentence that asks for something:
   and the things it makes; never a paper or file, which the work may take too: "get Wang to
   sign my contract and the invoice") opened by an article: "get" is inserted, for the
   requester (or whoever "for <person>" names);
-- after a giving verb whose thing went "to <person>", another person and a noun phrase: the
-  same verb is inserted, giving that person the thing ("take Sun a coffee");
+- after a giving verb whose thing went "to <person>", another person and a noun phrase, or
+  "for" someone (the speaker too) and a noun phrase: the same verb is inserted, giving that
+  person the thing ("take Sun a coffee", "bring a coffee to Zhang and *bring* for me a
+  tea": the coffee had gone to the speaker, and the tea was lost);
 - after "I need <thing> <participle> [by <person>]" (a service or a colleague's work wanted
   done on the thing), a thing that is fetched or made, opened by an article: the need is
   inserted ("I need my contract signed by Wang, and *I need* a coffee"). The participle ends
@@ -63,7 +65,10 @@ def with_gapped_verbs(lex: Lexicon, text: str) -> str:
             inserts.append((spans[n + 1][0], verb))
             continue
         verb = _giving_to_before(tokens, mentions, start, n)
-        if verb is not None and _person_and_thing_at(tokens, mentions, n + 1):
+        if verb is not None and (
+            _person_and_thing_at(tokens, mentions, n + 1)
+            or _for_someone_and_thing_at(tokens, mentions, n + 1)
+        ):
             inserts.append((spans[n + 1][0], verb))
             continue
         verb = _need_done_before(tokens, mentions, start, n)
@@ -164,6 +169,21 @@ def _person_and_thing_at(tokens: Sequence[Token], mentions: Sequence[Mention], a
     ("Sun a coffee")."""
     who = _mention_at(mentions, at)
     if who is None or who.kind != "person" or who.possessive:
+        return False
+    if not opens_noun_phrase(tokens, who.end):
+        return False
+    return any(m.kind == "item" and who.end < m.start <= who.end + 3 for m in mentions)
+
+
+def _for_someone_and_thing_at(
+    tokens: Sequence[Token], mentions: Sequence[Mention], at: int
+) -> bool:
+    """Whether "for" a person or the speaker opens at ``at``, a noun phrase right after them
+    that names a thing ("for me a tea", "for Sun a coffee")."""
+    if tokens[at].word != "for":
+        return False
+    who = _mention_at(mentions, at + 1)
+    if who is None or who.kind not in ("person", "self") or who.possessive:
         return False
     if not opens_noun_phrase(tokens, who.end):
         return False
