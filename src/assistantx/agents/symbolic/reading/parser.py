@@ -5,6 +5,11 @@ The frame says what to do (the task kinds of docs/task-semantics.md), with which
 for whom and by whom. Each stage takes the previous stage's immutable output and returns its
 own; none reaches back into an earlier one:
 
+0. ``surface``: the message said again in the forms the later stages read, by one ordered
+   table of small named rewrites (``surface.STEPS``: "Pat ok'd me using her stamp" → "Pat
+   said I could use her stamp"), reading phrases with the lexicon; a placeholder asked about
+   or a placement beside a colleague's thing ends the reading there, and a colleague's paper
+   asked to be emailed is kept to be asked once the screen is done (``Said``);
 1. ``tokens``: the words (Unicode), with their punctuation;
 2. ``lexicon``: typos corrected against the office's words, and the mentions of its people,
    items, facilities, places and task words (``Lexed``): the whole message and each of its
@@ -22,10 +27,16 @@ own; none reaches back into an earlier one:
 6. ``frames``: clauses, roles and task kinds → the tasks, or the question still open; then
    ``operations`` (the office's operation named where several share a shape, a send-out
    service's place) and ``unknown_items`` (a thing the office does not have, said as such);
-7. the screen's decision (``RequestScreen.decide``: ``Screened``) and ``screen.judge``: what
-   the reader answers: the screen's own reply where the message asks nothing (or declines),
-   else the frames with the screen's hints and evidence, a third person's need restated and
-   asked ("Shall I ...?").
+7. the screen's decision (``RequestScreen.decide``: ``Screened``), then what is answered
+   before anything else (the emailed paper's question, a recipient in doubt) and whether a
+   restated or guessed reading is confirmed first;
+8. ``doers``: who does the work (a service nobody has the tool for, a colleague named to make
+   or do it; a keeper's work said plainly and read again);
+9. ``screen.judge``: what the reader answers: the screen's own reply where the message asks
+   nothing (or declines), else the frames with the screen's hints and evidence, a third
+   person's need restated and asked ("Shall I ...?").
+
+``parse`` runs them in this order, one line or two a stage.
 
 The pieces' verdicts come before the readings because they decide what the request is: the
 frames are read only from what is left once the withdrawn, negated, answered and stated pieces
@@ -49,42 +60,25 @@ import weakref
 from collections import OrderedDict
 
 from assistantx.agents.symbolic.reading.abbreviations import undotted
-from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
-from assistantx.agents.symbolic.reading.also_sent import also_sent, paper_makers
-from assistantx.agents.symbolic.reading.announced_borrowing import announced_borrowings
 from assistantx.agents.symbolic.reading.antecedent import (
     WHICH_FILE,
     anothers_it,
     unanchored_it,
     with_antecedent,
 )
-from assistantx.agents.symbolic.reading.approved_use import approved_uses
-from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.back_reference_recipient import (
     chosen_recipient,
     recipient_in_doubt,
 )
 from assistantx.agents.symbolic.reading.bare_take import with_whose_and_whom
-from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
-from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
-from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
-from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
-from assistantx.agents.symbolic.reading.contracted_has_is import spelled_has_is
-from assistantx.agents.symbolic.reading.described_items import (
-    named_later,
-    without_hyphened_description,
-)
 from assistantx.agents.symbolic.reading.described_outsider import outsider_only
+from assistantx.agents.symbolic.reading.doers import keepers_work, with_doers
 from assistantx.agents.symbolic.reading.doubted_person import (
     chosen_of_two,
     doubted_recipient,
     either_doer,
 )
-from assistantx.agents.symbolic.reading.due_service import DueService
-from assistantx.agents.symbolic.reading.emailed_paper import BRING, emailed_paper
-from assistantx.agents.symbolic.reading.file_subject import without_file_subject
-from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.agents.symbolic.reading.frames import (
     NOT_UNDERSTOOD,
     RESTATED,
@@ -95,15 +89,9 @@ from assistantx.agents.symbolic.reading.frames import (
 )
 from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
 from assistantx.agents.symbolic.reading.headed_supply import headed_supply
-from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.her_or_hers import with_her_or_you
-from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
-from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
-from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
-from assistantx.agents.symbolic.reading.keeper_asked_work import keeper_asked_work
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
-from assistantx.agents.symbolic.reading.lacked_purpose import lacked_purposes
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
     machine_choices,
@@ -112,15 +100,8 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     with_service,
 )
 from assistantx.agents.symbolic.reading.name_chosen import with_name_chosen
-from assistantx.agents.symbolic.reading.named_doer import with_named_doer
-from assistantx.agents.symbolic.reading.named_maker import with_named_maker
 from assistantx.agents.symbolic.reading.named_once import the_one_named, the_ones_named
-from assistantx.agents.symbolic.reading.named_want import named_wants
-from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
-from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
-from assistantx.agents.symbolic.reading.numeral_one import numeral_ones
-from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
 from assistantx.agents.symbolic.reading.offer_reply import LATER as OFFER_LATER
 from assistantx.agents.symbolic.reading.offer_reply import LEFT as OFFER_LEFT
 from assistantx.agents.symbolic.reading.offer_reply import (
@@ -136,7 +117,6 @@ from assistantx.agents.symbolic.reading.operations import (
     OperationChooser,
     colleague_named,
 )
-from assistantx.agents.symbolic.reading.paper_parts_cut import without_paper_parts
 from assistantx.agents.symbolic.reading.parts import (
     asked_part,
     items_named,
@@ -144,48 +124,25 @@ from assistantx.agents.symbolic.reading.parts import (
     operation_left_out,
     unread_part,
 )
-from assistantx.agents.symbolic.reading.picked_form import PickedForm
-from assistantx.agents.symbolic.reading.pictographs import without_pictographs
-from assistantx.agents.symbolic.reading.placed_thing import placed_things
-from assistantx.agents.symbolic.reading.placeholder_thing import (
-    placeholder_question,
-    says_a_placeholder,
-)
 from assistantx.agents.symbolic.reading.possessive_choice import with_possessive_chosen
-from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
-from assistantx.agents.symbolic.reading.possessive_place import possessive_places
-from assistantx.agents.symbolic.reading.products_listed import ProductsListed
-from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
 from assistantx.agents.symbolic.reading.readings import HERE_NOT_OUTSIDE, MentionReader, Readings
-from assistantx.agents.symbolic.reading.reported_request import reported_requests
-from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
 from assistantx.agents.symbolic.reading.room_receiver import (
     own_thing_unplaced,
     room_receiver,
     rooms_taken_to,
 )
-from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
+from assistantx.agents.symbolic.reading.screen.findings import Request, Screened, Spoken
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
-from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
-from assistantx.agents.symbolic.reading.sent_file import sent_files
-from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
 from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
-from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
-from assistantx.agents.symbolic.reading.something_from import SomethingFrom
-from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
-from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
-from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
-from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
+from assistantx.agents.symbolic.reading.surface import Said, Surface
 from assistantx.agents.symbolic.reading.time_clause import without_time_clauses
-from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
-from assistantx.agents.symbolic.reading.toolless_parts import without_toolless
 from assistantx.agents.symbolic.reading.unknown_items import (
     PROPOSED,
     category_asked,
@@ -201,8 +158,6 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
 )
 from assistantx.agents.symbolic.reading.unnamed_carried import unnamed_carried
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
-from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
-from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
@@ -253,10 +208,6 @@ def shared_parser(office: Office) -> InstructionParser:
         return kept[1]
 
 
-# A finite verb put after a phrase to read it in a subject's place ("frank needs").
-_SUBJECT_PROBE = "needs"
-
-
 class InstructionParser:
     """Parses instructions against one office."""
 
@@ -267,25 +218,7 @@ class InstructionParser:
         self.readings = MentionReader(office, self.lex)
         self.frames = FrameReader(office)
         self.operations = OperationChooser(office)
-        self._something_from = SomethingFrom(office)  # "something from the vending machine"
-        self._products_listed = ProductsListed(office)  # "copy my document and a printout"
-        self._picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
-        # "my 4-gas is due a bump test": it needs one
-        work = {w for k in task_kinds.person_kinds() for w in self.lex.cues.get(k, ())}
-        self._due_service = DueService(office, {*self.lex.operation_nouns, *work})
-        self._namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
-        # "get it notarised" where the seal is a notary stamp: the seal's work, said as such
-        self._lent_verbs = LentVerbs.from_office(
-            office, {*self.lex.cue_words, *self.lex.items, *self.lex.name_words, *self.lex.people}
-        )
-        self._means = send_out_means(office)  # "courier": what the send-outs send by
-        self._round_trip = RoundTripWork(office)  # "take it to the kitchen and bring it back"
-        # what the office's things are declared for ("measure"), for a lack of one
-        self._purposes = frozenset(p.lower() for t in office.item_types for p in t.purposes)
-        self._keepers = kept_services(office)  # each keeper's services, by their verbs
-        self._paper_makers = paper_makers(office)  # "print": a paper made from a file
-        # the initials colleagues sign on with ("JL: ...")
-        self._signs = initials(p.name for p in office.people)
+        self.surface = Surface(office, self.lex, self.screen.terms)  # the message said again
         # The frames read, by (text, requester, answers): the shared parser's only.
         self._remembered: OrderedDict[tuple[str, str, tuple[str, ...]], TaskFrame] | None = None
 
@@ -306,114 +239,10 @@ class InstructionParser:
         ``sent_out``: a send-out to a colleague's name is meant to leave the office;
         ``to_self``: the requester answered "me" to whom their own item goes;
         ``destination``: their answer to where a send-out goes (a place outside, as said)."""
-        text = without_pictographs(text)  # "... and no marker 😩": the face is tone only
-        text = undotted(text)  # "Dr. Osei": an abbreviation's stop ends no sentence
-        # "bring me the thing from the fridge": which thing is asked, nothing picked
-        if says_a_placeholder(text):
-            placeholder = placeholder_question(self.office, self.lex.read(text))
-            if placeholder is not None:
-                return TaskFrame(requester=requester, question=placeholder)
-        text = self._lent_verbs.read(text)  # "notarised" of a notary stamp: "sealed"
-        text = spelled_are(text)  # "mine r blunt": chat's "r" for "are"
-        # "take my lunch to the kitchenette and bring it back": heated, the room's work on it
-        text = self._round_trip.read(text, self._item_types)
-        # "Pat ok'd me using her stamp, bring it": "Pat said I could use her stamp", a transfer
-        text = approved_uses(text)
-        # "would you mind laminating my badge, and getting my form signed": two requests
-        text = joined_gerunds(text)
-        # "print the spreadsheet I sent", "the file Wang sent": my spreadsheet, Wang's file
-        text = sent_files(text, self.screen.terms.is_person_word, self._as_file)
-        # "I need the file Wang has", "the stapler Zhang's got": Wang's file, Zhang's stapler
-        text = held_by_clauses(text, self.screen.terms.is_person_word)
-        # "take my report to Wang to get it signed? need it back": signed by Wang, to me
-        text = taken_for_service(text, self.screen.terms.is_person_word)
-        # "scan my form, customs want a pdf": why it is asked, not a second errand
-        text = without_format_reasons(text, self.screen.terms.is_person_word)
-        # "can it go to Wang to be fixed?", "take my mug to Wang to fix": Wang does the work
-        text = sent_for_service(text, self.screen.terms.is_person_word, self._work_verb)
-        text = booked_means(text, self._means)  # "book a courier for my parcel": sent by it
-        # "my bow needs rehairing, take it to the store for Frank": Frank rehairs it, kept back
-        text = taken_for_keeper(
-            text, self._keepers, self._people_of, lambda who: self.office.person(who).name
-        )
-        text = signs_as_and(text)  # "print my file + a coffee": "+" and "&" join as "and"
-        # "get the duty manager, Frank, to sign it": Frank; the role only describes him
-        text = without_role_appositives(self.lex, text)
-        # "print my report and also send it to Wang": the file passed on, a second errand
-        text = also_sent(text, self._paper_makers)
-        # "Wang's gone to lunch", "the visitor's gone home": a subject's "has"/"is", no owner
-        text = spelled_has_is(text)
-        # "my stapler's broken so can I borrow Wang's": the "so" starts the ask, as after a comma
-        text = consequence_boundaries(text)
-        text = numeral_ones(text)  # "coffee for me and 1 for Wang": one more, Wang's
-        # "I'm borrowing Wang's for the afternoon": the speaker's taking, asked of Wang
-        text = announced_borrowings(text, self.screen.terms.is_person_word)
-        # "get Wang to sign my contract, and a coffee for me": "and get a coffee for me"
-        text = with_gapped_verbs(self.lex, text)
-        # "Wang's budget plan? just send me the file": the plan is Wang's file
-        text = named_later(self.lex, text)
-        # "Wang's setting-out file": the description is no owner or part; Wang's file
-        text = without_hyphened_description(self.lex, text)
-        # "My CRF pages need the stamp": the pages are the CRF
-        text = without_paper_parts(self.lex, text)
-        # "Wang's pdf of the manifest": what a colleague's file is about is no second thing
-        text = without_file_subject(self.lex, self.office, text)
-        # "could I have Wang's report? just email it to me": a copy the office makes
-        # electronic ("scan it"), else asked whether the paper is brought (a yes: brought)
-        emailed = emailed_paper(self.lex, text, requester)
-        if emailed is not None and (emailed.operation_verb is not None or confirmed):
-            text = emailed.with_verb(text, emailed.operation_verb or BRING)
-            emailed = None
-        # "Wang's document, the pdf one": the form picks the office's file or paper
-        text = self._picked_form(text)
-        text = carrying_particles(text)  # "bring some up to reception": to reception
-        # "with Rosa - Álvarez, not Lindqvist": the namesake the later words name
-        text = self._namesake_surnames(text)
-        # "copy my document and a printout": the printout is printing's, a task of its own
-        text = self._products_listed(text)
-        # "something from the vending machine": the one kind of thing it makes
-        text = self._something_from(text)
-        # "Shiv here - ...": the speaker's sign-on, no party to the request
-        text = signed_on(
-            text,
-            self._one_name,
-            signs=self._signs,
-            is_speaker=lambda said: self._names_only(said, requester),
-        )
-        # "Sue on reception needs a pen": where Sue is, no part of the request (before the
-        # readings of "<name> would like", which take the name next to the verb)
-        text, _ = without_seating(self.screen.terms, text)
-        # "Hal has nothing to write with", "got nothing to measure it with": a need of the
-        # thing the office keeps for that use
-        text = lacked_purposes(text, self._purposes)
-        # "I've got 40 forms to sign and no pen": the forms are why the pen is wanted
-        text = work_as_purpose(
-            text, self._lacks, self._names_item, self.screen.terms.is_person_word
-        )
-        text = contracted_needs(text)  # "Kit's after a torch": Kit is after one
-        text = self._due_service(text)  # "my 4-gas is due a bump test": it needs one
-        # "Zhang would like / 'd like / could use a stapler": Zhang wants one
-        text = named_wants(text, self._one_name, self._subject_name)
-        text = announced_list(text)  # "Two things: ...": the count names nothing
-        text = wanting_idioms(text)  # "I'd murder a coffee": I need a coffee
-        text = signature_put(text)  # "could Mo put her signature on it": Mo signs it
-        # "Zhang asked if someone could bring him a coffee": a coffee for Zhang
-        text = reported_requests(text, self._one_name)
-        # "take this book to Wang's if he's in": Wang's desk, so Wang gets it
-        text = possessive_places(text, self.screen.terms.is_person_word)
-        # "bring me the ruler at Mark's desk": which ruler, where it lies; Mark's, to me
-        text = placed_things(text, self.screen.terms.is_person_word)
-        # "put the ruler next to Mark's": at Mark's desk, not Mark's ruler fetched too
-        text = near_possessives(text, self.screen.terms.is_person_word)
-        # "leave the calculator beside Will's lamp": a placement the robot cannot make
-        out_of_reach = beside_a_thing(text, self.screen.terms.is_person_word)
-        if out_of_reach is not None:
-            return TaskFrame(requester=requester, decline=out_of_reach)
-        # "a stapler, not Wang's, Zhang's", "Hu's stapler, Gao's": one stapler, Zhang's / Gao's
-        text = possessive_corrections(text, self.screen.terms.is_person_word)
-        # "i need a pen. Lee's is fine": Lee's pen, asked of Lee
-        text = accepted_owners(text, self.screen.terms.is_person_word)
-        spoken = self.screen.verdicts(text, requester)  # stages 1 to 4, piece by piece
+        said = self.surface(text, requester, confirmed=confirmed)  # said in the forms read
+        if said.stop is not None:  # a placeholder asked about, a placement declined
+            return said.stop
+        spoken = self.screen.verdicts(said.text, requester)  # stages 1 to 4, piece by piece
         request = self.screen.request(spoken)
         # "... before I sign off tonight, can you sort it?": when, not a signing asked for
         # (after the screen, which reads "before he notices" as taking behind one's back)
@@ -421,12 +250,29 @@ class InstructionParser:
             request.text, self.screen.terms.is_person_word, self._task_word
         )
         frame = self._frame(spoken.msg.lexed, asked, requester, sent_out, to_self, destination)
-        screened = self.screen.decide(spoken, request)  # stage 7, then what is answered
+        decided = self._decide(said, spoken, request, frame, requester)
+        if isinstance(decided, TaskFrame):
+            return decided
+        whole = spoken.msg.lexed
+        frame = with_doers(self.office, whole, frame, requester, confirmed=confirmed)
+        plain = keepers_work(self.office, whole, frame, requester)
+        if plain is not None:
+            return self.parse(plain, requester, confirmed=confirmed)
+        return judge(self.office, decided, frame, requester, confirmed=confirmed)
+
+    def _decide(
+        self, said: Said, spoken: Spoken, request: Request, frame: TaskFrame, requester: str
+    ) -> Screened | TaskFrame:
+        """The screen's decision on the message (stage 7), then what is answered before the
+        doers are checked: the screen's own reply where the message asks nothing, the
+        emailed paper's question, a recipient in doubt; else the decision, asking to confirm
+        a reading restated or guessed (``confirm``)."""
+        screened = self.screen.decide(spoken, request)
         if screened.answered:
             return answered_frame(screened, requester)
-        if emailed is not None:
-            return TaskFrame(requester=requester, question=emailed.question)
-        doubt = recipient_in_doubt(self.lex, text, requester)
+        if said.emailed is not None:
+            return TaskFrame(requester=requester, question=said.emailed.question)
+        doubt = recipient_in_doubt(self.lex, said.text, requester)
         if doubt is not None:
             # "could I have Wang's plan? Zhang needs the file": Wang's, for me or for Zhang?
             return TaskFrame(requester=requester, question=doubt.question)
@@ -441,96 +287,12 @@ class InstructionParser:
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"
             screened.confirm = True
-        # "scanned and stamped" where nobody has a seal: told (or asked) before anything moves
-        frame = without_toolless(self.office, frame, requester, confirmed=confirmed)
-        # "could Wang make one? I need a coffee": Wang makes it only if Wang keeps a machine
-        # that makes it; else said, and asked before the keepers make it
-        frame = with_named_maker(
-            self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
-        )
-        # "could Wang print my file?": the same for a service done on the requester's thing
-        frame = with_named_doer(
-            self.office, spoken.msg.lexed, frame, requester, confirmed=confirmed
-        )
-        if not frame.tasks and frame.question is not None:
-            # "need an ABV on my sample, can zosia run it": the work of the keeper's facility
-            # on the requester's thing, where the need's noun named none
-            plain = keeper_asked_work(self.office, spoken.msg.lexed, requester)
-            if plain is not None:
-                return self.parse(plain, requester, confirmed=confirmed)
-        return judge(self.office, screened, frame, requester, confirmed=confirmed)
-
-    def _item_types(self, phrase: str) -> set[str]:
-        """The item types ``phrase`` names."""
-        return {i for m in self.lex.read(phrase).mentions if m.kind == "item" for i in m.ids}
-
-    def _work_verb(self, word: str) -> bool:
-        """A bare verb of the office's own services or of a colleague's work ("fix",
-        "sign"), for a thing sent to someone to have it done."""
-        return word in self.lex.operation_words or word in PERSON_WORK
+        return screened
 
     def _task_word(self, word: str) -> bool:
         """Whether ``word`` is one of the office's task words or a form of one ("prints")."""
         cues = self.lex.cue_words
         return word in cues or bool(language.verb_lemmas(word) & cues)
-
-    def _lacks(self, clause: str) -> bool:
-        """Whether ``clause`` opens with the speaker's lack of an item ("I've run out of
-        wipes")."""
-        words = content([t.word for t in self.lex.tokens(clause)])
-        return speaker_lacks(words, given_thing(self.lex))
-
-    def _names_item(self, phrase: str) -> bool:
-        """Whether ``phrase`` is one of the office's items the office can give and nothing
-        else ("pen")."""
-        return given_thing(self.lex)([t.word for t in self.lex.tokens(phrase)])
-
-    def _as_file(self, phrase: str) -> str | None:
-        """``phrase`` said as one of the office's electronic files: as it is where it ends in
-        a name of one ("invoice spreadsheet", "deck"); with the file's name after it where it
-        names nothing the office knows ("budget workbook": "budget workbook electronic file",
-        a thing sent to the robot that is no item of the office is a file); None where it
-        names another item, a person or a place ("the form I sent")."""
-        lexed = self.lex.read(phrase)
-        named = [m for m in lexed.mentions if m.kind != "word"]
-        if not named:
-            kind = self.office.file_type()
-            return None if kind is None else f"{phrase} {self.office.item_type(kind).name}"
-        last = named[-1]
-        if last.kind != "item" or last.end != len(lexed.tokens):
-            return None
-        if not all(self.office.item_type(i).kind == "electronic" for i in last.ids):
-            return None
-        return phrase
-
-    def _names_only(self, phrase: str, person: str) -> bool:
-        """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
-        return self._people_of(phrase) == (person,)
-
-    def _people_of(self, phrase: str) -> tuple[str, ...]:
-        """Every colleague ``phrase`` may name, where it names people and nothing else
-        ("Frank": the Frank by his given name and the one by her surname)."""
-        mentions = self.lex.scan(self.lex.tokens(phrase))
-        if len(mentions) != 1 or mentions[0].kind != "person":
-            return ()
-        return tuple(mentions[0].ids)
-
-    def _one_name(self, phrase: str) -> bool:
-        """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",
-        "Ana"; not "yesterday Ana")."""
-        return bool(self._people_of(phrase))
-
-    def _subject_name(self, phrase: str) -> bool:
-        """Whether ``phrase`` is one colleague's name when a verb follows it: "frank" alone
-        is the English word, "frank needs" is Frank (``name_reading``'s subject slot)."""
-        tokens = self.lex.tokens(f"{phrase} {_SUBJECT_PROBE}")
-        mentions = self.lex.scan(tokens)
-        people = [m for m in mentions if m.kind == "person"]
-        return (
-            len(people) == 1
-            and (people[0].start, people[0].end) == (0, len(tokens) - 1)
-            and len(people[0].ids) == 1
-        )
 
     def _frame(
         self,
@@ -1005,6 +767,7 @@ class InstructionParser:
         other.lex = dataclasses.replace(self.lex, chosen=chosen)
         other.screen = RequestScreen(self.office, other.lex)
         other.readings = MentionReader(self.office, other.lex)
+        other.surface = self.surface.reading_with(other.lex, other.screen.terms)
         return other
 
     def _chosen_reading(self, text: str, answer: str) -> dict[str, Reading]:

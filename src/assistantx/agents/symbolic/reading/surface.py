@@ -1,0 +1,526 @@
+"""The message said again in the forms the later stages read: the reader's first stage after the
+lexicon, before the screen.
+
+People say one thing many ways ("Pat ok'd me using her stamp", "I'd murder a coffee", "Wang's
+gone to lunch"); the screen, the readings and the frames read a few. Each step of ``STEPS``
+rewrites one such way into the form they read ("Pat said I could use her stamp", "I need a
+coffee", "Wang has gone to lunch"), or leaves the text as it is. The steps run in the table's
+order, each on the text the one before it left: a later step reads the earlier ones' forms
+(the round trip's heating before the approved uses; the sign-on taken off before the seating).
+Adding a rewrite is one entry in the table, where its form is first needed.
+
+Three steps may end the reading here (``Said.stop``): a placeholder ("bring me the thing from
+the fridge": which thing is asked) and a placement beside a colleague's thing (declined); the
+third, a colleague's paper asked to be emailed, is kept (``Said.emailed``) and asked only if
+the screen leaves the message a request.
+
+The per-office parts of the steps (the office's lent verbs, its rooms' round trips, its
+keepers, ...) are built once per office (``Surface``); a parser that reads a name as the
+requester answered gets the same parts with its own lexicon (``Surface.reading_with``).
+
+Two steps are the screen's and a third leans on the frames' stage, run here, before the
+screen: the colleagues' names are the screen's terms (``Terms.is_person_word``), "Sue on
+reception needs a pen" is the screen's ``without_seating``, and the placeholder's question
+uses the parts' question markers (``parts``, which reads with the readings). The reader's
+layers contract names these imports (pyproject.toml, ``reader-passes-forward``).
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.abbreviations import undotted
+from assistantx.agents.symbolic.reading.accepted_owner import accepted_owners
+from assistantx.agents.symbolic.reading.also_sent import also_sent, paper_makers
+from assistantx.agents.symbolic.reading.announced_borrowing import announced_borrowings
+from assistantx.agents.symbolic.reading.approved_use import approved_uses
+from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
+from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
+from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
+from assistantx.agents.symbolic.reading.chat_copula import spelled_are
+from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
+from assistantx.agents.symbolic.reading.contracted_has_is import spelled_has_is
+from assistantx.agents.symbolic.reading.described_items import (
+    named_later,
+    without_hyphened_description,
+)
+from assistantx.agents.symbolic.reading.due_service import DueService
+from assistantx.agents.symbolic.reading.emailed_paper import BRING, EmailedPaper, emailed_paper
+from assistantx.agents.symbolic.reading.file_subject import without_file_subject
+from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
+from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
+from assistantx.agents.symbolic.reading.idioms import signature_put
+from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
+from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
+from assistantx.agents.symbolic.reading.lacked_purpose import lacked_purposes
+from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.named_want import named_wants
+from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
+from assistantx.agents.symbolic.reading.near_possessive import near_possessives
+from assistantx.agents.symbolic.reading.numeral_one import numeral_ones
+from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
+from assistantx.agents.symbolic.reading.paper_parts_cut import without_paper_parts
+from assistantx.agents.symbolic.reading.picked_form import PickedForm
+from assistantx.agents.symbolic.reading.pictographs import without_pictographs
+from assistantx.agents.symbolic.reading.placed_thing import placed_things
+from assistantx.agents.symbolic.reading.placeholder_thing import (
+    placeholder_question,
+    says_a_placeholder,
+)
+from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
+from assistantx.agents.symbolic.reading.possessive_place import possessive_places
+from assistantx.agents.symbolic.reading.products_listed import ProductsListed
+from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
+from assistantx.agents.symbolic.reading.reported_request import reported_requests
+from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
+from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
+from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
+from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.sent_file import sent_files
+from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
+from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
+from assistantx.agents.symbolic.reading.something_from import SomethingFrom
+from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
+from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
+from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
+from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
+from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
+from assistantx.core import task_kinds
+from assistantx.core.office import Office
+from assistantx.core.task_schema import TaskFrame
+
+__all__ = ["STEPS", "Asked", "Said", "Step", "Surface"]
+
+# A finite verb put after a phrase to read it in a subject's place ("frank needs").
+_SUBJECT_PROBE = "needs"
+
+
+@dataclass(frozen=True, slots=True)
+class Said:
+    """The message said again: its text in the forms the later stages read; ``stop``: the
+    reader's answer where a step ended the reading (a question, or a decline); ``emailed``:
+    a colleague's paper asked to be emailed, where the office cannot make it electronic and
+    the requester has not said yes to its being brought (asked once the screen is done)."""
+
+    text: str
+    stop: TaskFrame | None = None
+    emailed: EmailedPaper | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Asked:
+    """Who asks, and whether they already said yes to the restated reading."""
+
+    requester: str
+    confirmed: bool = False
+
+
+# A step: the text as the steps before it left it → the text it leaves, or a ``Said`` where it
+# ends the reading (``stop``) or keeps what is asked later (``emailed``).
+Rewrite = Callable[["Surface", str, Asked], "str | Said"]
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One rewrite of the surface stage: its name, what it does to its example, and how."""
+
+    name: str
+    example: str  # a message the step changes (in one of the offices of the tests)
+    rewrite: Rewrite
+
+
+class Surface:
+    """The surface stage of one office: ``STEPS`` with the office's parts they use."""
+
+    def __init__(self, office: Office, lex: Lexicon, terms: Terms) -> None:
+        self.office = office
+        self.lex = lex
+        self.terms = terms
+        self.is_person = terms.is_person_word  # whether a word names a colleague
+        self.steps = STEPS
+        self.something_from = SomethingFrom(office)  # "something from the vending machine"
+        self.products_listed = ProductsListed(office)  # "copy my document and a printout"
+        self.picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
+        # "my document is due a print": it needs one
+        work = {w for k in task_kinds.person_kinds() for w in lex.cues.get(k, ())}
+        self.due_service = DueService(office, {*lex.operation_nouns, *work})
+        self.namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
+        # "get it notarised" where the seal is a notary stamp: the seal's work, said as such
+        self.lent_verbs = LentVerbs.from_office(
+            office, {*lex.cue_words, *lex.items, *lex.name_words, *lex.people}
+        )
+        self.means = send_out_means(office)  # "courier": what the send-outs send by
+        self.round_trip = RoundTripWork(office)  # "take it to the kitchen and bring it back"
+        # what the office's things are declared for ("measure"), for a lack of one
+        self.purposes = frozenset(p.lower() for t in office.item_types for p in t.purposes)
+        self.keepers = kept_services(office)  # each keeper's services, by their verbs
+        self.paper_makers = paper_makers(office)  # "print": a paper made from a file
+        # the initials colleagues sign on with ("JL: ...")
+        self.signs = initials(p.name for p in office.people)
+
+    def reading_with(self, lex: Lexicon, terms: Terms) -> Surface:
+        """The same steps and office parts, read with ``lex`` (a name read as the requester
+        answered) and the screen's ``terms`` of it; nothing of this one changes."""
+        other = copy.copy(self)
+        other.lex = lex
+        other.terms = terms
+        other.is_person = terms.is_person_word
+        return other
+
+    def __call__(self, text: str, requester: str, *, confirmed: bool = False) -> Said:
+        """``text`` through the steps, in order; at the first step that ends the reading, what
+        it says."""
+        asked = Asked(requester, confirmed)
+        emailed: EmailedPaper | None = None
+        for step in self.steps:
+            out = step.rewrite(self, text, asked)
+            if isinstance(out, str):
+                text = out
+            elif out.stop is not None:
+                return Said(out.text, out.stop, emailed)
+            else:
+                text, emailed = out.text, out.emailed
+        return Said(text, None, emailed)
+
+    # -- what the steps ask of the office's words ----------------------------------------
+    def item_types(self, phrase: str) -> set[str]:
+        """The item types ``phrase`` names."""
+        return {i for m in self.lex.read(phrase).mentions if m.kind == "item" for i in m.ids}
+
+    def work_verb(self, word: str) -> bool:
+        """A bare verb of the office's own services or of a colleague's work ("fix",
+        "sign"), for a thing sent to someone to have it done."""
+        return word in self.lex.operation_words or word in PERSON_WORK
+
+    def lacks(self, clause: str) -> bool:
+        """Whether ``clause`` opens with the speaker's lack of an item ("I've run out of
+        wipes")."""
+        words = content([t.word for t in self.lex.tokens(clause)])
+        return speaker_lacks(words, given_thing(self.lex))
+
+    def names_item(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one of the office's items the office can give and nothing
+        else ("pen")."""
+        return given_thing(self.lex)([t.word for t in self.lex.tokens(phrase)])
+
+    def as_file(self, phrase: str) -> str | None:
+        """``phrase`` said as one of the office's electronic files: as it is where it ends in
+        a name of one ("invoice spreadsheet", "deck"); with the file's name after it where it
+        names nothing the office knows ("budget workbook": "budget workbook electronic file",
+        a thing sent to the robot that is no item of the office is a file); None where it
+        names another item, a person or a place ("the form I sent")."""
+        lexed = self.lex.read(phrase)
+        named = [m for m in lexed.mentions if m.kind != "word"]
+        if not named:
+            kind = self.office.file_type()
+            return None if kind is None else f"{phrase} {self.office.item_type(kind).name}"
+        last = named[-1]
+        if last.kind != "item" or last.end != len(lexed.tokens):
+            return None
+        if not all(self.office.item_type(i).kind == "electronic" for i in last.ids):
+            return None
+        return phrase
+
+    def names_only(self, phrase: str, person: str) -> bool:
+        """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
+        return self.people_of(phrase) == (person,)
+
+    def people_of(self, phrase: str) -> tuple[str, ...]:
+        """Every colleague ``phrase`` may name, where it names people and nothing else
+        ("Frank": the Frank by his given name and the one by her surname)."""
+        mentions = self.lex.scan(self.lex.tokens(phrase))
+        if len(mentions) != 1 or mentions[0].kind != "person":
+            return ()
+        return tuple(mentions[0].ids)
+
+    def name_of(self, person: str) -> str:
+        """The colleague's name as the office spells it."""
+        return self.office.person(person).name
+
+    def one_name(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one colleague's name and nothing else ("Professor Zhang",
+        "Ana"; not "yesterday Ana")."""
+        return bool(self.people_of(phrase))
+
+    def subject_name(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one colleague's name when a verb follows it: "frank" alone
+        is the English word, "frank needs" is Frank (``name_reading``'s subject slot)."""
+        tokens = self.lex.tokens(f"{phrase} {_SUBJECT_PROBE}")
+        mentions = self.lex.scan(tokens)
+        people = [m for m in mentions if m.kind == "person"]
+        return (
+            len(people) == 1
+            and (people[0].start, people[0].end) == (0, len(tokens) - 1)
+            and len(people[0].ids) == 1
+        )
+
+
+# -- the steps that end the reading, or keep what is asked later ------------------------------
+def _placeholder(s: Surface, text: str, asked: Asked) -> str | Said:
+    """Which thing is asked, where a placeholder is taken from a place of the office."""
+    if says_a_placeholder(text):
+        question = placeholder_question(s.office, s.lex.read(text))
+        if question is not None:
+            return Said(text, TaskFrame(requester=asked.requester, question=question))
+    return text
+
+
+def _emailed_paper(s: Surface, text: str, asked: Asked) -> str | Said:
+    """A copy the office makes electronic ("scan it"), else asked whether the paper is
+    brought once the screen is done (a yes: brought)."""
+    emailed = emailed_paper(s.lex, text, asked.requester)
+    if emailed is None:
+        return text
+    if emailed.operation_verb is not None or asked.confirmed:
+        return emailed.with_verb(text, emailed.operation_verb or BRING)
+    return Said(text, None, emailed)
+
+
+def _beside_a_thing(s: Surface, text: str, asked: Asked) -> str | Said:
+    """A placement beside a colleague's thing: one the robot cannot make, declined."""
+    out_of_reach = beside_a_thing(text, s.is_person)
+    if out_of_reach is not None:
+        return Said(text, TaskFrame(requester=asked.requester, decline=out_of_reach))
+    return text
+
+
+# The surface stage, in the order its steps run.
+STEPS: tuple[Step, ...] = (
+    # the face is tone only
+    Step("pictographs", "bring me a pen and no marker 😩", lambda s, t, a: without_pictographs(t)),
+    # an abbreviation's stop ends no sentence
+    Step("undotted", "bring the book to Dr. Grace Huang", lambda s, t, a: undotted(t)),
+    # which thing is asked, nothing picked (ends the reading)
+    Step("placeholder", "bring me the thing from the fridge", _placeholder),
+    # the tool's work said as the office's verb ("notarised" of a notary stamp: "sealed")
+    Step("lent_verbs", "get my contract notarized", lambda s, t, a: s.lent_verbs.read(t)),
+    # chat's "r" for "are"
+    Step("spelled_are", "mine r blunt, bring me a pen", lambda s, t, a: spelled_are(t)),
+    # heated: the room's work on it
+    Step(
+        "round_trip",
+        "take my lunch to the kitchenette and bring it back",
+        lambda s, t, a: s.round_trip.read(t, s.item_types),
+    ),
+    # "Pat said I could use her stamp": a transfer
+    Step(
+        "approved_uses", "Pat ok'd me using her stamp, bring it", lambda s, t, a: approved_uses(t)
+    ),
+    # two requests
+    Step(
+        "joined_gerunds",
+        "would you mind laminating my badge, and getting my document signed",
+        lambda s, t, a: joined_gerunds(t),
+    ),
+    # my spreadsheet, Wang's file
+    Step(
+        "sent_files",
+        "print the spreadsheet I sent",
+        lambda s, t, a: sent_files(t, s.is_person, s.as_file),
+    ),
+    # Wang's file, Zhang's stapler
+    Step(
+        "held_by_clauses",
+        "I need the stapler Zhang's got",
+        lambda s, t, a: held_by_clauses(t, s.is_person),
+    ),
+    # signed by Wang, back to me
+    Step(
+        "taken_for_service",
+        "take my document to Wang to get it signed? need it back",
+        lambda s, t, a: taken_for_service(t, s.is_person),
+    ),
+    # why it is asked, not a second errand
+    Step(
+        "format_reasons",
+        "scan my document, customs want a pdf",
+        lambda s, t, a: without_format_reasons(t, s.is_person),
+    ),
+    # Wang does the work
+    Step(
+        "sent_for_service",
+        "can my document go to Wang to be signed?",
+        lambda s, t, a: sent_for_service(t, s.is_person, s.work_verb),
+    ),
+    # sent by it
+    Step("booked_means", "book a courier for my parcel", lambda s, t, a: booked_means(t, s.means)),
+    # Frank rehairs it, kept back
+    Step(
+        "taken_for_keeper",
+        "my bow needs rehairing, take it to the store for Frank",
+        lambda s, t, a: taken_for_keeper(t, s.keepers, s.people_of, s.name_of),
+    ),
+    # "+" and "&" join as "and"
+    Step("signs_as_and", "print my file + a coffee", lambda s, t, a: signs_as_and(t)),
+    # the role only describes him
+    Step(
+        "role_appositives",
+        "get the duty manager, Wang, to sign my document",
+        lambda s, t, a: without_role_appositives(s.lex, t),
+    ),
+    # the file passed on, a second errand
+    Step(
+        "also_sent",
+        "print my report and also send it to Wang",
+        lambda s, t, a: also_sent(t, s.paper_makers),
+    ),
+    # a subject's "has"/"is", no owner
+    Step("spelled_has_is", "Wang's gone to lunch", lambda s, t, a: spelled_has_is(t)),
+    # the "so" starts the ask, as after a comma
+    Step(
+        "consequence_boundaries",
+        "my stapler's broken so can I borrow Wang's",
+        lambda s, t, a: consequence_boundaries(t),
+    ),
+    # one more, Wang's
+    Step("numeral_ones", "coffee for me and 1 for Wang", lambda s, t, a: numeral_ones(t)),
+    # the speaker's taking, asked of Wang
+    Step(
+        "announced_borrowings",
+        "I'm borrowing Wang's stapler for the afternoon",
+        lambda s, t, a: announced_borrowings(t, s.is_person),
+    ),
+    # "and get a coffee for me"
+    Step(
+        "gapped_verbs",
+        "get Wang to sign my contract, and a coffee for me",
+        lambda s, t, a: with_gapped_verbs(s.lex, t),
+    ),
+    # the plan is Wang's file
+    Step(
+        "named_later",
+        "Wang's budget plan? just send me the file",
+        lambda s, t, a: named_later(s.lex, t),
+    ),
+    # the description is no owner or part; Wang's file
+    Step(
+        "hyphened_description",
+        "Wang's setting-out file",
+        lambda s, t, a: without_hyphened_description(s.lex, t),
+    ),
+    # the pages are the contract
+    Step(
+        "paper_parts",
+        "My contract pages need stamping",
+        lambda s, t, a: without_paper_parts(s.lex, t),
+    ),
+    # what a colleague's file is about is no second thing
+    Step(
+        "file_subject",
+        "Wang's pdf of the stapler",
+        lambda s, t, a: without_file_subject(s.lex, s.office, t),
+    ),
+    # a copy the office makes electronic, else asked later (kept: ``Said.emailed``)
+    Step("emailed_paper", "could I have Wang's report? just email it to me", _emailed_paper),
+    # the form picks the office's file or paper
+    Step("picked_form", "Wang's document, the pdf one", lambda s, t, a: s.picked_form(t)),
+    # to reception
+    Step("carrying_particles", "bring some up to reception", lambda s, t, a: carrying_particles(t)),
+    # the namesake the later words name
+    Step(
+        "namesake_surnames",
+        "with Yang - Lei, not Liu",
+        lambda s, t, a: s.namesake_surnames(t),
+    ),
+    # the printout is printing's, a task of its own
+    Step(
+        "products_listed",
+        "copy my document and a printout",
+        lambda s, t, a: s.products_listed(t),
+    ),
+    # the one kind of thing it makes
+    Step(
+        "something_from",
+        "something from the vending machine",
+        lambda s, t, a: s.something_from(t),
+    ),
+    # the speaker's sign-on, no party to the request
+    Step(
+        "signed_on",
+        "Lee here - bring me a pen",
+        lambda s, t, a: signed_on(
+            t,
+            s.one_name,
+            signs=s.signs,
+            is_speaker=lambda said: s.names_only(said, a.requester),
+        ),
+    ),
+    # where Sue is, no part of the request (before the readings of "<name> would like",
+    # which take the name next to the verb)
+    Step(
+        "seating",
+        "Sue on reception needs a pen",
+        lambda s, t, a: without_seating(s.terms, t)[0],
+    ),
+    # a need of the thing the office keeps for that use
+    Step(
+        "lacked_purposes",
+        "Hal has nothing to write with",
+        lambda s, t, a: lacked_purposes(t, s.purposes),
+    ),
+    # the forms are why the pen is wanted
+    Step(
+        "work_as_purpose",
+        "I've got 40 forms to sign and no pen",
+        lambda s, t, a: work_as_purpose(t, s.lacks, s.names_item, s.is_person),
+    ),
+    # Kit is after one
+    Step("contracted_needs", "Kit's after a torch", lambda s, t, a: contracted_needs(t)),
+    # it needs one
+    Step("due_service", "my document is due a print", lambda s, t, a: s.due_service(t)),
+    # Zhang wants one
+    Step(
+        "named_wants",
+        "Zhang would like a stapler",
+        lambda s, t, a: named_wants(t, s.one_name, s.subject_name),
+    ),
+    # the count names nothing
+    Step("announced_list", "Two things: a pen and a stapler", lambda s, t, a: announced_list(t)),
+    # I need a coffee
+    Step("wanting_idioms", "I'd murder a coffee", lambda s, t, a: wanting_idioms(t)),
+    # Mo signs it
+    Step("signature_put", "could Mo put her signature on it", lambda s, t, a: signature_put(t)),
+    # a coffee for Zhang
+    Step(
+        "reported_requests",
+        "Zhang asked if someone could bring him a coffee",
+        lambda s, t, a: reported_requests(t, s.one_name),
+    ),
+    # Wang's desk, so Wang gets it
+    Step(
+        "possessive_places",
+        "take this book to Wang's if he's in",
+        lambda s, t, a: possessive_places(t, s.is_person),
+    ),
+    # which ruler, where it lies; Mark's, to me
+    Step(
+        "placed_things",
+        "bring me the ruler at Mark's desk",
+        lambda s, t, a: placed_things(t, s.is_person),
+    ),
+    # at Mark's desk, not Mark's ruler fetched too
+    Step(
+        "near_possessives",
+        "put the ruler next to Mark's",
+        lambda s, t, a: near_possessives(t, s.is_person),
+    ),
+    # a placement the robot cannot make (ends the reading)
+    Step("beside_a_thing", "leave the calculator beside Will's lamp", _beside_a_thing),
+    # one stapler, Zhang's
+    Step(
+        "possessive_corrections",
+        "a stapler, not Wang's, Zhang's",
+        lambda s, t, a: possessive_corrections(t, s.is_person),
+    ),
+    # Lee's pen, asked of Lee
+    Step(
+        "accepted_owners",
+        "i need a pen. Lee's is fine",
+        lambda s, t, a: accepted_owners(t, s.is_person),
+    ),
+)

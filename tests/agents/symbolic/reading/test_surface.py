@@ -1,0 +1,240 @@
+"""The surface stage: the message said again in the forms the later stages read, by one ordered
+table of steps (``surface.STEPS``) that the parser runs first. Each step's own example goes
+through the whole stage and is changed by that step, as its entry says; a placeholder and a
+placement beside a colleague's thing end the reading there; a text no step touches passes as
+it is."""
+
+from __future__ import annotations
+
+import copy
+import functools
+from collections.abc import Callable
+
+import pytest
+from _offices import office as office_named
+
+from assistantx.agents.symbolic.reading.parser import InstructionParser
+from assistantx.agents.symbolic.reading.surface import STEPS, Asked, Said, Step, Surface
+from assistantx.core.office import Office
+from helpers.courier_room import courier_room
+from helpers.law_firm import law_firm
+from helpers.music_school import music_school
+
+# The order of the rewrites as the parser ran them when they were one hand-written sequence.
+ORDER = [
+    "pictographs",
+    "undotted",
+    "placeholder",
+    "lent_verbs",
+    "spelled_are",
+    "round_trip",
+    "approved_uses",
+    "joined_gerunds",
+    "sent_files",
+    "held_by_clauses",
+    "taken_for_service",
+    "format_reasons",
+    "sent_for_service",
+    "booked_means",
+    "taken_for_keeper",
+    "signs_as_and",
+    "role_appositives",
+    "also_sent",
+    "spelled_has_is",
+    "consequence_boundaries",
+    "numeral_ones",
+    "announced_borrowings",
+    "gapped_verbs",
+    "named_later",
+    "hyphened_description",
+    "paper_parts",
+    "file_subject",
+    "emailed_paper",
+    "picked_form",
+    "carrying_particles",
+    "namesake_surnames",
+    "products_listed",
+    "something_from",
+    "signed_on",
+    "seating",
+    "lacked_purposes",
+    "work_as_purpose",
+    "contracted_needs",
+    "due_service",
+    "named_wants",
+    "announced_list",
+    "wanting_idioms",
+    "signature_put",
+    "reported_requests",
+    "possessive_places",
+    "placed_things",
+    "near_possessives",
+    "beside_a_thing",
+    "possessive_corrections",
+    "accepted_owners",
+]
+
+_OFFICES: dict[str, Callable[[], Office]] = {
+    "default": lambda: office_named("default"),
+    "harbour": lambda: office_named("harbour"),
+    "mail room": lambda: office_named("mail"),
+    "courier room": courier_room,
+    "law firm": law_firm,
+    "music school": music_school,
+}
+
+# Each step's effect on its own example: (the office it is said in, words there before the
+# step and gone after it, words there only after it, or "").
+EFFECTS: dict[str, tuple[str, str, str]] = {
+    "pictographs": ("default", "😩", ""),
+    "undotted": ("default", "Dr.", "Dr Grace"),
+    "lent_verbs": ("law firm", "notarized", "sealed"),
+    "spelled_are": ("default", " r ", "mine are blunt"),
+    "round_trip": ("default", "bring it back", "heat my lunch"),
+    "approved_uses": ("default", "ok'd", "said I could use"),
+    "joined_gerunds": ("default", "getting", "and get my"),
+    "sent_files": ("default", "I sent", "my spreadsheet"),
+    "held_by_clauses": ("default", "Zhang's got", "Zhang's stapler"),
+    "taken_for_service": ("default", "to Wang to", "signed by Wang"),
+    "format_reasons": ("default", "customs", ""),
+    "sent_for_service": ("default", "go to Wang", "could Wang sign"),
+    "booked_means": ("courier room", "book a courier", "by courier"),
+    "taken_for_keeper": ("music school", "to the store", "could Frank rehair it"),
+    "signs_as_and": ("default", "+", "file and a coffee"),
+    "role_appositives": ("default", "duty manager", "get Wang to sign"),
+    "also_sent": ("default", "send it", "forward it"),
+    "spelled_has_is": ("default", "Wang's", "Wang is"),
+    "consequence_boundaries": ("default", "broken so", "broken, so"),
+    "numeral_ones": ("default", " 1 ", "one for Wang"),
+    "announced_borrowings": ("default", "I'm borrowing", "can I borrow"),
+    "gapped_verbs": ("default", "and a coffee", "and get a coffee"),
+    "named_later": ("default", "plan?", "plan file?"),
+    "hyphened_description": ("default", "setting-out", "Wang's file"),
+    "paper_parts": ("default", "pages", "contract need"),
+    "file_subject": ("default", "of the stapler", ""),
+    "picked_form": ("default", "the pdf one", "electronic file"),
+    "carrying_particles": ("default", "up to", "some to reception"),
+    "namesake_surnames": ("default", "not Liu", "Yang Lei"),
+    "products_listed": ("default", "document and", "document. and"),
+    "something_from": ("default", "something", "a snack"),
+    "signed_on": ("default", "Lee here", "Bring me"),
+    "seating": ("harbour", "on reception", "Sue needs"),
+    "lacked_purposes": ("default", "has nothing", "needs something"),
+    "work_as_purpose": ("default", "I've got", "no pen to sign"),
+    "contracted_needs": ("default", "Kit's", "Kit is after"),
+    "due_service": ("default", "is due", "needs a print"),
+    "named_wants": ("default", "would like", "Zhang needs"),
+    "announced_list": ("default", "Two things", "I need a pen"),
+    "wanting_idioms": ("default", "murder", "I need a coffee"),
+    "signature_put": ("default", "signature", "Mo sign it"),
+    "reported_requests": ("default", "asked if", "bring Zhang"),
+    "possessive_places": ("default", "Wang's if", "Wang if"),
+    "placed_things": ("harbour", "at Mark's desk", "Mark's ruler"),
+    "near_possessives": ("harbour", "next to", "at Mark's desk"),
+    "possessive_corrections": ("default", "not Wang's", "a stapler, Zhang's"),
+    "accepted_owners": ("default", "is fine", "Lee's please"),
+}
+# The steps that end the reading (what they say), or keep what is asked later.
+STOPS = {"placeholder": ("default", "question"), "beside_a_thing": ("harbour", "decline")}
+KEPT = {"emailed_paper": "default"}
+
+
+@functools.cache
+def _parser(name: str) -> InstructionParser:
+    return InstructionParser(_OFFICES[name]())
+
+
+def _requester(name: str) -> str:
+    people = [p.id for p in _parser(name).office.people]
+    return "lee" if "lee" in people else people[0]
+
+
+def _step(name: str) -> Step:
+    return next(s for s in STEPS if s.name == name)
+
+
+def _recorded(surface: Surface) -> tuple[Surface, list[tuple[str, str, str | Said]]]:
+    """``surface`` with each step's text before and what it gave recorded, in the order run."""
+    seen: list[tuple[str, str, str | Said]] = []
+
+    def recording(step: Step) -> Step:
+        def rewrite(s: Surface, text: str, asked: Asked) -> str | Said:
+            out = step.rewrite(s, text, asked)
+            seen.append((step.name, text, out))
+            return out
+
+        return Step(step.name, step.example, rewrite)
+
+    other = copy.copy(surface)
+    other.steps = tuple(recording(s) for s in surface.steps)
+    return other, seen
+
+
+def _through(office: str, name: str, *, confirmed: bool = False) -> tuple[Said, str, str | Said]:
+    """The stage's value for step ``name``'s example, and that step's text before and after."""
+    surface, seen = _recorded(_parser(office).surface)
+    said = surface(_step(name).example, _requester(office), confirmed=confirmed)
+    before, after = next((b, a) for n, b, a in seen if n == name)
+    return said, before, after
+
+
+def test_the_table_runs_in_the_order_the_parser_ran_the_rewrites() -> None:
+    assert [s.name for s in STEPS] == ORDER
+    assert len({s.example for s in STEPS}) == len(STEPS)
+
+
+def test_the_parser_runs_the_table_first_every_step_in_order() -> None:
+    parser = copy.copy(_parser("default"))
+    parser.surface, seen = _recorded(parser.surface)
+    assert parser.surface.steps != STEPS and _parser("default").surface.steps is STEPS
+    frame = parser.parse("bring me a stapler please", "lee")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "stapler")]
+    assert [name for name, _, _ in seen] == ORDER
+
+
+def test_every_step_is_one_of_the_tested_ones() -> None:
+    assert set(EFFECTS) | set(STOPS) | set(KEPT) == set(ORDER)
+
+
+@pytest.mark.parametrize("name", sorted(EFFECTS))
+def test_each_example_is_changed_by_its_own_step(name: str) -> None:
+    office, gone, now = EFFECTS[name]
+    said, before, after = _through(office, name)
+    assert isinstance(after, str) and after != before, (before, after)
+    assert gone in before and gone not in after, (before, after)
+    if now:  # "" where the step only takes words out
+        assert now not in before and now in after, (before, after)
+    assert said.stop is None
+
+
+@pytest.mark.parametrize("name", sorted(STOPS))
+def test_an_early_exit_ends_the_stage_with_what_it_says(name: str) -> None:
+    office, said_as = STOPS[name]
+    said, before, after = _through(office, name)
+    assert isinstance(after, Said) and said.stop is not None
+    assert getattr(said.stop, said_as), said.stop
+    assert said.stop.tasks == [] and said.text == before
+    # the parser answers with it, reading nothing further
+    frame = _parser(office).parse(_step(name).example, _requester(office))
+    assert frame == said.stop
+
+
+def test_the_emailed_paper_is_kept_to_be_asked_or_brought_on_a_yes() -> None:
+    said, before, after = _through(KEPT["emailed_paper"], "emailed_paper")
+    assert said.stop is None and said.emailed is not None
+    assert isinstance(after, Said) and after.text == before == said.text
+    assert said.emailed.question in (
+        _parser("default").parse(_step("emailed_paper").example, "lee").question or ""
+    )
+    said, before, after = _through(KEPT["emailed_paper"], "emailed_paper", confirmed=True)
+    assert said.emailed is None and isinstance(after, str)
+    assert "email" in before and "email" not in after and "bring" in after
+
+
+@pytest.mark.parametrize("office", ["default", "harbour"])
+def test_a_text_no_step_touches_passes_unchanged(office: str) -> None:
+    text = "bring me a stapler please"
+    surface, seen = _recorded(_parser(office).surface)
+    said = surface(text, _requester(office))
+    assert said == Said(text)
+    assert len(seen) == len(STEPS) and all(before == after for _, before, after in seen)
