@@ -186,6 +186,17 @@ def test_a_name_that_starts_a_clause_is_no_member() -> None:
             "take a water to Mao and to Sun",
             [("produce", "water", None, "mao"), ("produce", "water", None, "sun")],
         ),
+        # a sequence word between: only Wang's printout was made, and "me" was dropped
+        (
+            _DEFAULT,
+            "print my file for me and then for Wang",
+            [("print", "file", "lee", "lee"), ("print", "file", "lee", "wang")],
+        ),
+        (
+            _DEFAULT,
+            "take a water to Mao and also to Sun",
+            [("produce", "water", None, "mao"), ("produce", "water", None, "sun")],
+        ),
     ],
 )
 def test_the_receiving_word_said_again_joins_the_same_group(
@@ -198,7 +209,11 @@ def test_the_receiving_word_said_again_joins_the_same_group(
     assert _tasks(frame) == expected, frame
 
 
-def test_one_thing_for_two_said_again_is_asked_about() -> None:
-    frame = _DEFAULT("bring Wang's stapler to Mao and to Sun")
+@pytest.mark.parametrize(
+    "text",
+    ["bring Wang's stapler to Mao and to Sun", "bring Wang's stapler to Mao and then to Sun"],
+)
+def test_one_thing_for_two_said_again_is_asked_about(text: str) -> None:
+    frame = _DEFAULT(text)
     assert not frame.tasks
     assert frame.question is not None and "only one of them" in frame.question

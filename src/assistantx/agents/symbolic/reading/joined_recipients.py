@@ -38,6 +38,8 @@ _DATIVE_VERBS = english.words("dative_verbs")
 _NEEDS = english.words("need_verbs")
 _MODALS = english.words("request_modals")
 _RECEIVING = frozenset({"to", "for"})
+# the words that may stand between "and" and the receiving word said again ("and then for")
+_SEQUENCE = (["then"], ["also"])
 # "him", "her" as a party of a group ("bring him and Sun ..."); "them" is the plural form below
 _ONE_PERSON_PRONOUNS = frozenset({"him", "her"})
 # "them both", "them each", "both of them", "the two of them", "all of them"
@@ -80,8 +82,14 @@ def _join(tokens: Sequence[Token], a: Mention, b: Mention) -> str:
         return "and"
     # "for me and for Wang", "to Mao and to Sun": the receiving word said again joins the
     # same phrase (before, only the last got the thing and "me" was dropped unsaid)
-    said_again = len(between) == 2 and between[0] == "and" and between[1] in _RECEIVING
-    if said_again and prev_word(tokens, a.start) == between[1]:
+    # "for me and then for Wang", "to Mao and also to Sun": a sequence word between
+    said_again = (
+        len(between) in (2, 3)
+        and between[0] == "and"
+        and between[1:-1] in ([], *_SEQUENCE)
+        and between[-1] in _RECEIVING
+    )
+    if said_again and prev_word(tokens, a.start) == between[-1]:
         return "and"
     if not between and tokens[b.start].after_pause and not tokens[b.start].opens:
         return ","
@@ -144,7 +152,12 @@ def _receives(
 def _receiving_said_again(tokens: Sequence[Token], m: Mention) -> bool:
     """Whether a word mention is "to"/"for" said again after "and" ("for me and for Wang")."""
     word = tokens[m.start].word
-    return m.kind == "word" and word in _RECEIVING and prev_word(tokens, m.start) == "and"
+    if m.kind != "word" or word not in _RECEIVING:
+        return False
+    before = prev_word(tokens, m.start)
+    if [before] in _SEQUENCE:  # "for me and then for Wang"
+        before = prev_word(tokens, m.start - 1)
+    return before == "and"
 
 
 def _colleague_before(others: Sequence[str]) -> str:
