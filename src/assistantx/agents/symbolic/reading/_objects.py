@@ -64,13 +64,16 @@ def modifiers(
     making = any(m.kind == "cue" and {"copy", "print"} & set(m.ids) for m in mentions)
     head_seen = False
     in_purpose = False
+    infinitive = False  # the purpose is an infinitive's ("a book to read")
     for n, m in enumerate(mentions):
+        if in_purpose and infinitive and m.kind == "item" and _second_thing(tokens, m):
+            in_purpose = infinitive = False  # "paper to write on, and a pen": a pen too
         if in_purpose:
             if m.kind in ("item", "cue"):
                 out.add(m.start)
             continue
         if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(tokens, mentions, n):
-            in_purpose = True
+            in_purpose = infinitive = True
             continue
         asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
         if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and asked:
@@ -97,6 +100,20 @@ def modifiers(
         else:
             head_seen = True
     return out
+
+
+# The words that open a second thing after a purpose infinitive ("..., and *a* pen")
+_SECOND_THING = english.words("second_thing_articles")
+
+
+def _second_thing(tokens: Sequence[Token], m: Mention) -> bool:
+    """ "i need some paper to write on, and a pen", "a book to read and a water": after a
+    purpose infinitive, "and" with an article opens a second thing of the request (the
+    infinitive's own objects have none: "a pen to sign my contract and letter with")."""
+    k = m.start - 1
+    while k >= 0 and tokens[k].word in _SECOND_THING:
+        k -= 1
+    return k + 1 < m.start and k >= 0 and tokens[k].word == "and"
 
 
 def _after(tokens: Sequence[Token], m: Mention, words: frozenset[str]) -> bool:

@@ -37,6 +37,7 @@ _ARTICLES = frozenset({"a", "an", "the", "some", "this", "that"})
 # The joining word of a second thing the same verb takes ("a stapler *and* the projector").
 _AND = "and"
 _TO = "to"
+_FOR = "for"
 # The words after a joined thing that end its clause ("and the projector *please*").
 # The word that says where a thing comes from, and what it names: "from the cupboard".
 _FROM = "from"
@@ -61,7 +62,9 @@ def unnamed_thing(
         # come from ("I need a gizmo pad from the cupboard"): then it asks for a fetch
         wish = tokens[verb.start].word in _WISHES
         k = n + 1
-        if _next(mentions, k, verb.end) and mentions[k].kind in _FOR_WHOM:
+        if _for_whom_first(mentions, k, verb.end):
+            k += 2  # "bring for me ...": whom it is for, said before the thing
+        elif _next(mentions, k, verb.end) and mentions[k].kind in _FOR_WHOM:
             if not mentions[k].possessive:
                 k += 1  # "bring me ...", "give Rose ..."
         said = _thing_said(mentions, tokens, k, mentions[k - 1].end, me)
@@ -73,6 +76,20 @@ def unnamed_thing(
             continue
         return said[0]
     return None
+
+
+def _for_whom_first(mentions: Sequence[Mention], k: int, end: int) -> bool:
+    """Whether "for" and whom the thing is for ("me", a colleague) follow the verb straight
+    on ("bring *for me* a tea"), before the thing."""
+    if not (_next(mentions, k, end) and _next(mentions, k + 1, mentions[k].end)):
+        return False
+    said, whom = mentions[k], mentions[k + 1]
+    return (
+        said.kind == "word"
+        and said.ids[:1] == (_FOR,)
+        and whom.kind in _FOR_WHOM
+        and not whom.possessive
+    )
 
 
 def _source_at(mentions: Sequence[Mention], tokens: Sequence[Token], at: int) -> bool:

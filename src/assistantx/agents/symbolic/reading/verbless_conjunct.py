@@ -15,7 +15,9 @@ after "and" in a sentence that asks for something:
 - after a giving verb whose thing went "to <person>", another person and a noun phrase, or
   "for" someone (the speaker too) and a noun phrase: the same verb is inserted, giving that
   person the thing ("take Sun a coffee", "bring a coffee to Zhang and *bring* for me a
-  tea": the coffee had gone to the speaker, and the tea was lost);
+  water": the coffee had gone to the speaker, and the water was lost); a thing the office
+  has no name for ("for me a tea") takes the verb too, and is declined or asked about as
+  "bring for me a tea" is, never lending its receiver to the coffee;
 - after "I need <thing> <participle> [by <person>]" (a service or a colleague's work wanted
   done on the thing), a thing that is fetched or made, opened by an article: the need is
   inserted ("I need my contract signed by Wang, and *I need* a coffee"). The participle ends
@@ -48,6 +50,8 @@ _NEEDS = frozenset({"need", "want"})
 _THING_REACH = 3
 # articles that open the conjunct's thing ("and *a* coffee", "and *some* water")
 _ARTICLES = frozenset({"a", "an", "some", "the", "another"})
+# the articles that open a thing the office has no name for ("for me *a* tea")
+_UNKNOWN_OPENERS = english.words("second_thing_articles")
 
 
 def with_gapped_verbs(lex: Lexicon, text: str) -> str:
@@ -175,6 +179,18 @@ def _person_and_thing_at(tokens: Sequence[Token], mentions: Sequence[Mention], a
     return any(m.kind == "item" and who.end < m.start <= who.end + 3 for m in mentions)
 
 
+def _unknown_thing_at(tokens: Sequence[Token], mentions: Sequence[Mention], at: int) -> bool:
+    """Whether an article and a noun no name of the office reads open at ``at`` ("a tea"
+    where the office has none): a thing all the same, whose verb is the one gapped (then
+    declined or asked about as such, never lending its receiver to the thing before)."""
+    if at + 1 >= len(tokens) or tokens[at].word not in _UNKNOWN_OPENERS:
+        return False
+    noun = _mention_at(mentions, at + 1)
+    if noun is not None and noun.kind != "word":
+        return False
+    return language.is_noun(tokens[at + 1].word) and not tokens[at + 1].after_pause
+
+
 def _for_someone_and_thing_at(
     tokens: Sequence[Token], mentions: Sequence[Mention], at: int
 ) -> bool:
@@ -187,4 +203,6 @@ def _for_someone_and_thing_at(
         return False
     if not opens_noun_phrase(tokens, who.end):
         return False
+    if _unknown_thing_at(tokens, mentions, who.end):
+        return True  # "for me a tea": a thing the office has none of, still a thing
     return any(m.kind == "item" and who.end < m.start <= who.end + 3 for m in mentions)

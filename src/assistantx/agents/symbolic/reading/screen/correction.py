@@ -193,6 +193,12 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     if not tokens or len(tokens) > 5:
         return text, []
     mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
+    if not mentions and not rejected:
+        moved = _place_corrected(terms, tokens, before, rest)
+        if moved is not None:
+            return moved[0], [
+                Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{moved[1]}")
+            ]
     alone = not mentions  # "sorry not sam, robin": a name word read as the ordinary word
     if alone:
         mentions = _name_said_alone(terms, tokens)
@@ -243,6 +249,36 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         between = _owner_said_again(terms, between, said)
     fixed = head + said + between + rest
     return fixed, [Evidence(words=text[match.start() :].strip(), meaning=f"{REPLACED}{said}")]
+
+
+# The words before a place a correction says alone ("no wait, *to the* kitchen")
+_PLACE_OPENERS = frozenset({"to", "at", "in", "into", "the"})
+_PLACE_KINDS = ("place", "facility")
+
+
+def _place_corrected(
+    terms: Terms, tokens: Sequence[Token], before: str, rest: str
+) -> tuple[str, str] | None:
+    """ "take my jug to the microwave, no wait, the kitchen": a correction that is one place
+    or facility alone replaces the last place or facility of the request it corrects (where
+    the thing goes, or the machine that works on it); what else the request said stands.
+    The text so corrected and the place's words; None where the correction names more than
+    a place, or the request named none."""
+    mentions = [m for m in terms.lex.scan(list(tokens)) if m.kind != "word"]
+    if len(mentions) != 1 or mentions[0].kind not in _PLACE_KINDS:
+        return None
+    new = mentions[0]
+    if new.end != len(tokens) or any(t.word not in _PLACE_OPENERS for t in tokens[: new.start]):
+        return None
+    said = [m for m in terms.lex.scan(terms.lex.tokens(before)) if m.kind in _PLACE_KINDS]
+    if not said:
+        return None
+    old = re.escape(said[-1].text).replace(r"\ ", r"\s+")
+    spots = list(re.finditer(rf"\b{old}\b", before, re.IGNORECASE))
+    if not spots:
+        return None
+    spot = spots[-1]
+    return before[: spot.start()] + new.text + before[spot.end() :] + rest, new.text
 
 
 # What opens the old thing's noun phrase, said right before it ("a", "the", "my", "Zhang's")
@@ -398,10 +434,12 @@ def _last_of_chain(after: str) -> str:
 _CHAINED_WORDS = 4
 
 
-# The words a correction's own request says the thing of the request it replaces by
+# The words a correction's own request says the thing of the request it replaces by: its
+# first "it" where it ends or goes on to where, for whom or a second verb ("scan *it* and give
+# it to Joel": the first is the thing, the second is what scanning it made)
 _KEPT_THING = re.compile(
     r"\b(it|them|that)\b(?=\s*(?:$|[,.!?;]|\s[-–—]|\s+(?:to|for|over|back|instead|please|pls|"
-    r"plz|again|now|thanks)\b))",
+    r"plz|again|now|thanks|and|then)\b))",
     re.IGNORECASE,
 )
 

@@ -152,6 +152,8 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
             continue
         for n in range(cue + 1, len(words)):
             w = words[n]
+            if n <= cue + 2 and _for_whom(terms, words, cue + 1):
+                continue  # "bring for me a tea": whom it is for, said before the thing
             if w in terms.en.modifier_prepositions or words[n - 1] in ("my", "our"):
                 break
             if w in terms.en.service_products and w not in terms.office_words:
@@ -162,6 +164,20 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
                 return decline_service(terms, piece, w, product=True, nor=nor)
     # "make Mark a copy of my document" where nothing copies: never the document handed over
     return unmade_product(terms, piece)
+
+
+# whom a thing is for, said between the verb and the thing ("bring *for me* a tea")
+_FOR = "for"
+_RECEIVERS = english.words("receiver_pronouns")
+
+
+def _for_whom(terms: Terms, words: list[str], at: int) -> bool:
+    """Whether "for" and whom the thing is for ("me", "him", a colleague's name) stand at
+    ``at``, right after the verb and before its thing ("bring for me a tea"): the receiver
+    said first, as "bring me a tea" says it, so the thing after it is still read."""
+    if at + 2 >= len(words) or words[at] != _FOR:
+        return False
+    return words[at + 1] in _RECEIVERS or terms.is_person_word(words[at + 1])
 
 
 # an article opens a noun phrase: the service's word after it is a noun
