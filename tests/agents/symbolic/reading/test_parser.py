@@ -60,3 +60,19 @@ def test_the_shared_parser_remembers_what_it_read_and_reads_it_alike() -> None:
     assert fresh.parse_with_answers(text, "may", []) is not fresh.parse_with_answers(
         text, "may", []
     )
+
+
+def test_one_errand_said_twice_on_ones_own_thing_is_one_task() -> None:
+    """ "take my lunch to the microwave. it needs heating": the room's work and the need each
+    read as the task, and the lunch was to be heated twice."""
+    p = InstructionParser(load_office())
+    rows = [
+        (t.kind, t.item, t.owner, t.recipient)
+        for t in p.parse("take my lunch to the microwave. it needs heating", "lee").tasks
+    ]
+    assert rows == [("heat", "lunch", "lee", "lee")]
+    twice = p.parse("heat my lunch and heat my lunch", "lee").tasks
+    assert len(twice) == 1
+    # things made for anyone are left as said: one for each recipient
+    coffees = p.parse("bring me a coffee and a coffee for Wang", "lee").tasks
+    assert [t.recipient for t in coffees] == ["lee", "wang"]

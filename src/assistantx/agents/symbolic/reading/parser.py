@@ -357,7 +357,7 @@ class InstructionParser:
                 errands=readings.errands,
                 whole=whole,
             )
-            frame = _one_send_each(frame)
+            frame = _each_errand_once(frame)
             # "print my file? it's Fern who needs the hard copy, not me": for Fern
             frame = for_needer(frame, needer(whole, requester, self.lex.name_words))
             # "Zhang needs my stapler. take it to the meeting room": Zhang gets it there
@@ -797,13 +797,18 @@ _ME = frozenset({"me", "myself", "mine", "i", "to", "for", "please", "just", "it
 _SELF = frozenset({"me", "myself", "mine"})
 
 
-def _one_send_each(frame: TaskFrame) -> TaskFrame:
-    """One item sent outside once: the same send-out said twice in one message ("the document
+def _each_errand_once(frame: TaskFrame) -> TaskFrame:
+    """One errand said twice in one message is one task: an item sent outside ("the document
     in the printer needs to go to the bank, can you fax it": the facility's service and the
-    verb each read as the task) is one task, as nothing sent out comes back to be sent again."""
+    verb each read as the task), as nothing sent out comes back to be sent again; and the same
+    work on, or move of, someone's own thing for the same person ("take my lunch to the
+    microwave. it needs heating": the room's work and the need each read as the task), as one
+    thing is not heated or handed over twice. Things made for anyone (a coffee, a printout of
+    nobody's file) are left as said: two of them may be meant."""
     kept: list[Task] = []
     for task in frame.tasks:
-        if task.destination is not None and any(task == k for k in kept):
+        once = task.destination is not None or task.owner is not None
+        if once and any(task == k for k in kept):
             continue
         kept.append(task)
     if len(kept) == len(frame.tasks):
