@@ -17,7 +17,12 @@ from assistantx.core.name_reading import NameSlot, read_name
         (NameSlot(word="holly", written="holly", prev="could", next="bring"), "person"),
         # "who" is said of people only (round 18: "it's fern who needs the hard copy")
         (NameSlot(word="fern", written="fern", prev="it", next="who"), "person"),
+        # a negated auxiliary's subject, as "grace has" is (fix175c: "grace hasnt approved
+        # my leave form yet. can you get her to sign it" asked who "her" was)
+        (NameSlot(word="grace", written="grace", opens=True, next="hasnt"), "person"),
+        (NameSlot(word="mark", written="mark", opens=True, next="didnt"), "person"),
         # the ordinary word stays the word
+        (NameSlot(word="may", written="may", opens=True, next="i"), "word"),
         (NameSlot(word="grace", written="grace", prev="the", next="period"), "word"),
         (NameSlot(word="will", written="Will", opens=True, next="you"), "word"),
         (NameSlot(word="penny", written="penny", prev="a", next="jar"), "word"),

@@ -35,6 +35,7 @@ _NUMBER_WORDS = english.words("number_words")
 # what opens a verb's object ("drew *a* blank", "drew *the* short straw")
 _OBJECT_OPENERS = frozenset({"a", "an", "the", "my", "his", "her", "our", "their", "some"})
 _PERSON_BEFORE = english.words("person_before")
+_NEGATED_FINITE = english.words("negated_finite_auxiliaries")
 _WORD_BEFORE = english.words("word_before")
 _DATIVE_VERBS = english.words("dative_verbs")
 _VERB_OBJECT_STARTS = english.words("object_starts")
@@ -172,6 +173,8 @@ def read_name(slot: NameSlot) -> NameReading:
         or prev in _PERSON_BEFORE
         or (prev in _DATIVE_VERBS and (nxt in _VERB_OBJECT_STARTS or slot.next_is_item))
         or ((slot.opens or not prev) and (nxt in ("is", "was", "has") or finite_next))
+        # "grace hasn't approved it": a negated auxiliary's subject, as "grace has" is
+        or ((slot.opens or not prev) and nxt in _NEGATED_FINITE and not slot.next_after_pause)
         or nxt == "who"  # "it's fern who needs it": "who" is said of people only
         # "Can Penny sign my report?": the subject of a modal's question, before its verb
         or (prev in _MODALS and bool(nxt) and nxt in language.verb_lemmas(nxt))

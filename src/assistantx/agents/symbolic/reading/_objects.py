@@ -48,6 +48,9 @@ _FORMAT_LINKS = frozenset({"to", "into", "as"})
 _ARTICLES = frozenset({"a", "an", "another"})
 # The task kinds whose work is a product named like the service ("a copy", "a print").
 _PRODUCT_KINDS = frozenset({"print", "copy"})
+# What links an occasion to the thing wanted for it ("for the signing", "before the printing");
+# not a place's "in"/"at" ("chuck it in the recycling": where it goes)
+_OCCASION_LINKS = frozenset({"for", "before", "after", "during"})
 
 
 def modifiers(
@@ -65,6 +68,11 @@ def modifiers(
     head_seen = False
     in_purpose = False
     infinitive = False  # the purpose is an infinitive's ("a book to read")
+    occasions = [
+        (start, m.start)
+        for m in mentions
+        if m.kind == "cue" and (start := _occasion_gerund(tokens, m)) is not None
+    ]
     for n, m in enumerate(mentions):
         if in_purpose and infinitive and m.kind == "item" and _second_thing(tokens, m):
             in_purpose = infinitive = False  # "paper to write on, and a pen": a pen too
@@ -76,6 +84,9 @@ def modifiers(
             in_purpose = infinitive = True
             continue
         asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
+        if asked and m.kind in ("item", "cue") and any(a <= m.start <= b for a, b in occasions):
+            out.add(m.start)  # "Wang's stapler for the contract signing": an occasion, why
+            continue
         if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and asked:
             in_purpose = True  # "... because there's no money for new stopwatches": context
             continue
@@ -195,6 +206,36 @@ def _modifier_phrase(tokens: Sequence[Token], m: Mention) -> bool:
     while k >= 0 and (tokens[k].word in DETERMINERS or tokens[k].possessive):
         k -= 1
     return k >= 0 and tokens[k].word in MODIFIER_PREPOSITIONS
+
+
+def _occasion_gerund(tokens: Sequence[Token], m: Mention) -> int | None:
+    """ "borrow Wang's stapler for the contract signing at 3", "a pen for the signing": a
+    task word's "-ing" form that ends a noun phrase opened by a determiner after "for" (or
+    "before"/"after"/"during") names an occasion (why or when the thing is wanted), never
+    work asked, and the things its phrase names ("contract") are none asked for either: the
+    phrase's first token, or None. "for signing" with no determiner ("take my contract to Wang for
+    signing") and "the printing schedule" (a noun after it: the gerund only modifies that
+    noun) are no occasion."""
+    word = tokens[m.start].word
+    lemmas = language.verb_lemmas(word)
+    if m.end != m.start + 1 or not word.endswith("ing") or not lemmas or word in lemmas:
+        return None
+    nxt = tokens[m.end] if m.end < len(tokens) else None
+    if nxt is not None and not nxt.opens and not nxt.after_pause and _noun_after(nxt.word):
+        return None
+    k = m.start - 1
+    j = k
+    while j >= 0 and k - j < _DESCRIBING_WORDS and _describing(tokens[j]):
+        j -= 1
+    if j < 1 or tokens[j].word not in DETERMINERS or tokens[j - 1].word not in _OCCASION_LINKS:
+        return None
+    return j
+
+
+def _noun_after(word: str) -> bool:
+    """Whether ``word`` may be the noun a gerund before it modifies ("printing *schedule*"),
+    not a preposition or a time that follows the phrase ("signing *at* 3")."""
+    return "NOUN" in language.lemmas(word) and word not in MODIFIER_PREPOSITIONS
 
 
 def _describing(token: Token) -> bool:

@@ -94,7 +94,8 @@ def anothers_it(
     """ "Tam's seating chart is done, can you print it for me?", "Tam finished her seating
     chart, print it": the tasks read "it" as the requester's own file, but the message names
     the thing only as another colleague's (a possessive, or "his"/"her" of the one colleague
-    named) and never as the requester's ("my"): whose it is, that colleague; None otherwise."""
+    named) and never as the requester's ("my", or "from me": "Wang needs the minutes from me,
+    send them to her" is the requester's file): whose it is, that colleague; None otherwise."""
     words = {t.word for t in whole.tokens}
     if not words & _ANAPHORS or not tasks:
         return None
@@ -104,6 +105,8 @@ def anothers_it(
         return None
     owners: set[str] = set()
     for m in whole.mentions:
+        if m.kind == "self" and m.start > 0 and whole.tokens[m.start - 1].word == "from":
+            return None  # "Wang needs the minutes from me": they come from the requester
         if not m.possessive:
             continue
         if m.kind == "self":

@@ -26,6 +26,9 @@ _POINTERS = frozenset({"it", "that", "this", "one", "some", "them"})
 _ARTICLES = frozenset({"a", "an", "one", "another", "some"})
 # words after a unit that end its phrase though a dictionary also lists them as nouns
 _FUNCTION = frozenset({"please", "now", "too", "then", "if", "thanks", "here", "today"})
+# "would *it be* possible to ...", "*it's* urgent": "it" as the subject of a copula points at
+# nothing moved (one-word copulas of english.yaml, and the bare "be" after a modal)
+_COPULAS = frozenset(c for c in english.entries("copulas") if " " not in c) | {"be"}
 # the cues of a clause that moves a thing to someone
 _MOVING = frozenset({"give"})
 
@@ -54,7 +57,8 @@ def _points(m: Mention, tokens: Sequence[Token]) -> bool:
     """ "it", "that", "one": a pronoun; "a sheet", "a couple": a unit after an article."""
     word = tokens[m.start].word
     if m.kind == "pronoun" and not m.possessive:
-        return word in _POINTERS
+        subject = m.end < len(tokens) and tokens[m.end].word in _COPULAS
+        return word in _POINTERS and not (word == "it" and subject)
     if m.kind != "word" or _modifies(tokens, m.end):
         return False  # "one battery", "a spare battery": a thing of its own, not named
     if word in _POINTERS - {"this", "that"}:

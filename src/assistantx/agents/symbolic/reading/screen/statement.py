@@ -127,7 +127,8 @@ def obligation_asked(msg: Message, piece: Piece) -> bool:
     statement is what the request asks for, not context beside it. A request for that same
     work done to the thing, with no doer ("Zhang Wei has to sign my contract. Can you get it
     signed and back to me?"), names nothing of its own either: the work said again, and the
-    fetching it takes ("get ... signed")."""
+    fetching it takes ("get ... signed"); so does one that only takes the thing to them and
+    back ("Rose has to sign off my timesheet. could you take it to her and bring it back?")."""
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     words = [t.word for t in tokens]
     work: set[str] = set()
@@ -150,10 +151,16 @@ def obligation_asked(msg: Message, piece: Piece) -> bool:
             m.ids and m.ids[0] in work and p.lexed.tokens[m.start].word in _PARTICIPLES
             for m in cues
         ) or any(t.word in _WORK_DONE for t in p.lexed.tokens)  # "get that done"
+        # "take it to her and bring it back": the thing's way to the one obliged and back,
+        # the trip the work takes (its doer said only by a pronoun, no one else named)
+        trip = any(t.word == "back" for t in p.lexed.tokens)
         for m in p.lexed.mentions:
             if m.kind in ("item", "person", "facility"):
                 return False
-            if m.kind == "cue" and not (again and (m.ids[:1] == ("give",) or m.ids[0] in work)):
+            moves = m.ids[:1] == ("give",)
+            if m.kind == "cue" and not (
+                (again and (moves or m.ids[0] in work)) or (trip and moves)
+            ):
                 return False
     return True
 

@@ -41,7 +41,7 @@ def undone_work(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
             continue
         starts = [s.end() for s in _SENTENCE_START.finditer(text, 0, m.start())]
         subject = text[starts[-1] if starts else 0 : m.start()].strip()
-        if not _a_colleague(terms, subject):
+        if not _a_colleague(terms, subject, m.group(0)):
             continue
         said = m.group("said")
         papers = {x.ids[0] for x in terms.lex.read(said).mentions if x.kind == "item"}
@@ -80,12 +80,19 @@ def _copies_of(terms: Terms, papers: set[str]) -> list[str]:
     return sorted(found, key=len, reverse=True)
 
 
-def _a_colleague(terms: Terms, subject: str) -> bool:
-    """Whether the words are one colleague's name, nothing more ("Pat", "Dr Hale")."""
+def _a_colleague(terms: Terms, subject: str, undone: str) -> bool:
+    """Whether the words are one colleague's name, nothing more ("Pat", "Dr Hale"): read
+    with the statement's verb after them (``undone``), whose subject a name that is also a
+    word is ("mark hasn't signed it": Mark, never the word "mark")."""
     if not subject:
         return False
-    lexed = terms.lex.read(subject)
-    named = [m for m in lexed.mentions if m.kind != "word" or m.ids[0] not in _TITLES]
+    said = len(terms.lex.read(subject).tokens)
+    lexed = terms.lex.read(f"{subject} {undone}")
+    named = [
+        m
+        for m in lexed.mentions
+        if m.start < said and (m.kind != "word" or m.ids[0] not in _TITLES)
+    ]
     return (
         len(named) == 1
         and named[0].kind == "person"
