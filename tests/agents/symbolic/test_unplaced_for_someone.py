@@ -79,3 +79,73 @@ def test_put_the_kettle_on_is_read_as_before() -> None:
     assert frame.tasks == [] and frame.question == (
         "Sorry, I'm not sure what you need. What should I do, with which item, and for whom?"
     ), frame
+
+
+# -- a colleague's thing, or any thing put by a verb of placing alone (fix175a, class 2) --------
+@pytest.mark.parametrize(
+    ("office", "requester", "text", "said"),
+    [
+        (
+            "default",
+            "lee",
+            "stick Wang's stapler in the snowcat for me",
+            "Wang's stapler (in the snowcat)",
+        ),
+        (
+            "default",
+            "lee",
+            "put Wang's stapler in the snowcat for me",
+            "Wang's stapler (in the snowcat)",
+        ),
+        (
+            "default",
+            "lee",
+            "load Zhang's scissors into the skiff for me",
+            "Zhang's scissors (into the skiff)",
+        ),
+        (
+            "default",
+            "lee",
+            "place Wang's stapler on the trolley for me",
+            "Wang's stapler (on the trolley)",
+        ),
+        (
+            "default",
+            "lee",
+            "stick Wang's stapler in the snowcat for Zhang",
+            "Wang's stapler (in the snowcat)",
+        ),
+        (
+            "default",
+            "lee",
+            "leave Wang's stapler in the snowcat for me",
+            "Wang's stapler (in the snowcat)",
+        ),
+        ("default", "lee", "pop the stapler in the skiff for me", "the stapler (in the skiff)"),
+        (
+            "harbour",
+            "may",
+            "stash Bill's ruler inside the dinghy for me",
+            "Bill's ruler (inside the dinghy)",
+        ),
+    ],
+)
+def test_someone_elses_thing_put_somewhere_unknown_is_asked(
+    office: str, requester: str, text: str, said: str
+) -> None:
+    _asked_where(parser(office).parse(text, requester), said)
+
+
+@pytest.mark.parametrize(
+    ("text", "task"),
+    [
+        # a verb that also gives, with a thing nobody is named as owning: for the speaker
+        ("leave the stapler on the shelf for me", ("transfer", "stapler", None, "lee")),
+        # a place of the office: read as before
+        ("put Wang's stapler on my desk for me", ("transfer", "stapler", "wang", "lee")),
+        ("bring me Wang's stapler", ("transfer", "stapler", "wang", "lee")),
+    ],
+)
+def test_the_neighbours_stay(text: str, task: tuple[str, str, str | None, str]) -> None:
+    frame = parser("default").parse(text, "lee")
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [task], frame

@@ -27,6 +27,8 @@ _OTHERS_POSSESSIVES = frozenset({"his", "her", "their"})
 _ARTICLES = frozenset({"the", "a", "an", "that", "these", "those"})
 # What ends the object's phrase ("... and take it"), and words that tie more to it
 _JOINS = frozenset({"and", "then", "&", "+", ",", "plus"})
+# The particles a work's verb may take after "it" ("print it *out*", "run them *off*")
+_PARTICLES = frozenset({"out", "off", "up", "over", "through", "again", "now", "quickly"})
 _LINKS = frozenset({"for", "from", "of", "by", "with", "about", "to", "at", "in", "on", "re"})
 
 
@@ -36,7 +38,10 @@ def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None
     words = {t.word for t in whole.tokens}
     if not words & _ANAPHORS:
         return None
+    purpose = _purpose_after_it(whole)
     for m in whole.mentions:
+        if m.start in purpose:
+            continue  # "print it off for the induction table": what it is for, not what it is
         if m.kind in _ANCHORS or (m.kind in ("person", "self") and m.possessive):
             return None  # "print my shoot and bring it over", "Kwame's file, print it"
         if m.kind == "pronoun" and whole.tokens[m.start].word not in _ANAPHORS:
@@ -53,6 +58,31 @@ def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None
     said = next(t.text for t in whole.tokens if t.word in _ANAPHORS)
     kinds = list(dict.fromkeys(office.item_type(t.item).name for t in tasks if t.item))
     return f"{WHICH_FILE} {said!r}? Please tell me whose {' or '.join(kinds)} it is."
+
+
+def _purpose_after_it(whole: Lexed) -> frozenset[int]:
+    """Where the phrase of whom or what "it" is for stands, right after it ("print it (off)
+    *for the induction table*", "... *for Zhang's 3pm slot*"): a place, a thing or a person's
+    thing named there says what the work is for, never which file "it" is; read as the
+    file's anchor, the speaker's own file was printed unasked. The phrase runs to the next
+    join ("print it for me, the budget file": the file is said after the comma)."""
+    tokens = whole.tokens
+    inside: set[int] = set()
+    for n, t in enumerate(tokens):
+        if t.word not in _ANAPHORS:
+            continue
+        k = n + 1
+        while k < len(tokens) and tokens[k].word in _PARTICLES:
+            k += 1  # "print it *off* for ..."
+        if k >= len(tokens) or tokens[k].word != "for":
+            continue
+        k += 1
+        while k < len(tokens) and tokens[k].word not in _JOINS:
+            inside.add(k)
+            k += 1
+            if k < len(tokens) and (tokens[k].after_pause or tokens[k].opens):
+                break  # a comma or a new sentence ends it
+    return frozenset(inside)
 
 
 def _object_said(whole: Lexed) -> bool:

@@ -53,6 +53,7 @@ from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled
 from assistantx.agents.symbolic.reading.family_of_another import also_meant
 from assistantx.agents.symbolic.reading.head_names import head_names
+from assistantx.agents.symbolic.reading.head_synonyms import head_synonyms
 from assistantx.agents.symbolic.reading.idioms import idiom_at
 from assistantx.agents.symbolic.reading.made_objects import MadeObjects
 from assistantx.agents.symbolic.reading.measured_items import singular_spans, singulars, unit_of
@@ -551,6 +552,10 @@ class Lexicon:
         compounds = [(k, i) for k, i in lex.items.items() if " " in k]
         used = {*lex.items, *lex.people, *lex.facilities}
         for form, type_id in clipped_phrases(compounds, used).items():
+            lex.items.setdefault(form, type_id)
+        # "a charging lead": another word for the head noun of a name ("charging cable")
+        type_keys = [(key_of(n), t.id) for t in office.item_types for n in (t.name, *t.synonyms)]
+        for form, type_id in head_synonyms(type_keys, used | lex.items.keys()).items():
             lex.items.setdefault(form, type_id)
         # "any gel going?": the noun that heads several names of one type ("hand gel",
         # "alcohol gel") is that type (``head_names``)

@@ -56,6 +56,7 @@ from assistantx.agents.symbolic.reading.phrase_index import (
     without_phrases,
 )
 from assistantx.agents.symbolic.reading.place_name_subject import opens_with_place_name
+from assistantx.agents.symbolic.reading.poor_prospect import poor_prospect
 from assistantx.agents.symbolic.reading.prohibition_contracted import with_is
 from assistantx.agents.symbolic.reading.sequence_opener import after_sequence_word, wanted_done_by
 from assistantx.agents.symbolic.reading.service_command import service_command
@@ -790,6 +791,8 @@ class SpeechActs:
             return True  # "they've just been sharpened": work done, told; never asked again
         if no_work_told(w) and not set(w) & _YOU:
             return True  # "I have nothing to print": no work, told; never the work asked
+        if poor_prospect(w, self._named):
+            return True  # "no chance of getting my file printed by 4": venting, told
         if self._service_subject(w):
             return True  # "courier leaves at 3", "print is too small": told of the thing
         if told_with_modal(w, self._named):

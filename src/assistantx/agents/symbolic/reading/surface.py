@@ -87,6 +87,7 @@ from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
 from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
+from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
@@ -376,6 +377,12 @@ STEPS: tuple[Step, ...] = (
         "consequence_boundaries",
         "my stapler's broken so can I borrow Wang's",
         lambda s, t, a: consequence_boundaries(t),
+    ),
+    # the ask opens a sentence of its own, as after a stop
+    Step(
+        "told_then_asked",
+        "my phone is on 2% pls get me a charging lead",
+        lambda s, t, a: told_then_asked(t),
     ),
     # one more, Wang's
     Step("numeral_ones", "coffee for me and 1 for Wang", lambda s, t, a: numeral_ones(t)),

@@ -25,6 +25,9 @@ from assistantx.core import english, language
 _INTO = english.words("to_facility_prepositions") - {"to"}
 # What a place phrase that names something of the office is.
 _OFFICE_PLACES = frozenset({"person", "self", "place", "facility"})
+# The verbs of placing that also give ("leave the embosser on the shelf for me": for the
+# speaker to have).
+_GIVING = english.words("placing_giving_verbs")
 # Words between a thing and where it is told to go ("stick it *back* in the drawer").
 _PARTICLES = frozenset({"back", "down", "over", "up", "away", "out"})
 
@@ -40,7 +43,7 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     if not items:
         return None
     thing = items[0]
-    placing = _without_favour(tokens, mentions, thing)
+    placing = _without_favour(tokens, mentions, thing, giving=words[at] in _GIVING)
     if any(m.kind in _OFFICE_PLACES and not m.possessive for m in placing):
         return None  # "run it down to Dot", "put my lunch in the fridge"
     n = thing.end
@@ -73,16 +76,22 @@ def unplaced(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
 
 
 def _without_favour(
-    tokens: Sequence[Token], mentions: Sequence[Mention], thing: Mention
+    tokens: Sequence[Token], mentions: Sequence[Mention], thing: Mention, *, giving: bool
 ) -> list[Mention]:
     """The mentions less whom the favour is for: "chuck *my* tunic on the pump for me" (the
     speaker's own thing, onto words that name nothing of the office) says the pump is where
-    it goes, and "for me" only whom it pleases. Someone else's thing "for me" ("leave the
-    embosser on the shelf for me") is for the speaker to have, and a thing of the office
-    named in the place ("turn my plan into a PDF for Bill") is read later: both as before."""
-    own = any(m.kind == "self" and m.possessive and m.end == thing.start for m in mentions)
+    it goes, and "for me" only whom it pleases; so does a colleague's thing ("stick Omar's
+    cable ties in the snowcat for me", "for Zhang"), and any thing put by a verb of placing
+    alone ("pop", "stick", "stash", "load"): read as a fetch for whom it pleases, the thing
+    was handed over and never put where it was told to go. Only a verb that also gives
+    (``giving``: "leave the embosser on the shelf for me") with a thing nobody is named as
+    owning leaves it for the speaker to have, and a thing of the office named in the place
+    ("turn my plan into a PDF for Bill") is read later: both as before."""
+    owned = any(
+        m.kind in ("self", "person") and m.possessive and m.end == thing.start for m in mentions
+    )
     favour = [m for m in mentions if m.start > thing.end and tokens[m.start - 1].word == "for"]
-    if not own or not favour:
+    if (giving and not owned) or not favour:
         return list(mentions)
     named = [m for m in mentions if thing.end <= m.start < favour[0].start and m.kind != "word"]
     if named:

@@ -1,0 +1,75 @@
+"""A level or state told, then a request without a stop between them ("my phone's on 2% pls
+get me a charging lead"): "pls" with a verb, or "can u"/"could you" with more words, opens
+the request of its own (``reading.told_then_asked``); before, the statement swallowed it
+("Noted. I did nothing."). And a thing named by another word for its head noun ("charging
+lead", "charger cord") is the office's thing of that name (``reading.head_synonyms``): the
+default office's data cable is a "charging cable" and a "charger cable" (fix175a class 4)."""
+
+from __future__ import annotations
+
+import copy
+import functools
+
+import pytest
+from _offices import parser, tasks_of
+
+from assistantx.agents.symbolic import InstructionParser
+from assistantx.core.office import parse_office
+from helpers.dataset_offices import DEFAULT_FILE
+from helpers.yaml_files import raw_yaml
+
+_CABLE = ("transfer", "data_cable", None, "lee")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my phone's on 2% pls get me a charging lead",
+        "my phone's on 2% pls get me a charging cable",
+        "my laptop is at 5% can u bring me a charger lead",
+        "phone is nearly dead please bring me a charging cord",
+    ],
+)
+def test_the_request_after_the_state_is_read(text: str) -> None:
+    assert tasks_of("default", text, "lee") == [_CABLE]
+
+
+def test_another_request_after_a_state_is_read_too() -> None:
+    assert tasks_of("default", "the printer is jammed can you bring me Wang's stapler", "lee") == [
+        ("transfer", "stapler", "wang", "lee")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my phone is dead please",  # no ask after the "please": told
+        "my phone is on 2%",
+    ],
+)
+def test_a_state_alone_is_told(text: str) -> None:
+    frame = parser("default").parse(text, "lee")
+    assert frame.tasks == [] and frame.question is None, frame
+
+
+def test_a_bare_lead_is_no_cable() -> None:
+    frame = parser("default").parse("bring me a pencil lead", "lee")
+    assert frame.tasks == [] and frame.decline is not None, frame
+
+
+@functools.cache
+def _usb_lead_office() -> InstructionParser:
+    """The default office with its cable named "usb lead" alone."""
+    raw = copy.deepcopy(raw_yaml(DEFAULT_FILE))
+    for row in raw["item_types"]:
+        if row["id"] == "data_cable":
+            row["name"], row["synonyms"] = "usb lead", []
+    return InstructionParser(parse_office(raw, "default with a usb lead"))
+
+
+@pytest.mark.parametrize(
+    "text", ["usb cable please", "can I borrow a usb cord", "bring me a usb wire"]
+)
+def test_another_word_for_the_head_noun_names_it(text: str) -> None:
+    frame = _usb_lead_office().parse(text, "lee")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "data_cable")], frame
