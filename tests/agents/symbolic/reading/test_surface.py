@@ -16,6 +16,7 @@ from _offices import office as office_named
 from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.agents.symbolic.reading.surface import STEPS, Asked, Said, Step, Surface
 from assistantx.core.office import Office
+from helpers.costume_shop import costume_shop
 from helpers.courier_room import courier_room
 from helpers.law_firm import law_firm
 from helpers.music_school import music_school
@@ -25,11 +26,13 @@ ORDER = [
     "pictographs",
     "undotted",
     "placeholder",
+    "place_doers",
     "lent_verbs",
     "spelled_are",
     "round_trip",
     "approved_uses",
     "joined_gerunds",
+    "form_said_after",
     "sent_files",
     "held_by_clauses",
     "taken_for_service",
@@ -47,6 +50,7 @@ ORDER = [
     "announced_borrowings",
     "gapped_verbs",
     "named_later",
+    "attributive_work",
     "hyphened_description",
     "paper_parts",
     "file_subject",
@@ -59,6 +63,7 @@ ORDER = [
     "signed_on",
     "seating",
     "lacked_purposes",
+    "problem_remedy",
     "work_as_purpose",
     "contracted_needs",
     "due_service",
@@ -80,6 +85,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
     "harbour": lambda: office_named("harbour"),
     "mail room": lambda: office_named("mail"),
     "courier room": courier_room,
+    "costume shop": costume_shop,
     "law firm": law_firm,
     "music school": music_school,
 }
@@ -89,11 +95,13 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 EFFECTS: dict[str, tuple[str, str, str]] = {
     "pictographs": ("default", "😩", ""),
     "undotted": ("default", "Dr.", "Dr Grace"),
+    "place_doers": ("costume shop", "laundry stitch", "you stitch it up at the laundry"),
     "lent_verbs": ("law firm", "notarized", "sealed"),
     "spelled_are": ("default", " r ", "mine are blunt"),
     "round_trip": ("default", "bring it back", "heat my lunch"),
     "approved_uses": ("default", "ok'd", "said I could use"),
     "joined_gerunds": ("default", "getting", "and get my"),
+    "form_said_after": ("default", "rota numbers from", "me Wang's spreadsheet?"),
     "sent_files": ("default", "I sent", "my spreadsheet"),
     "held_by_clauses": ("default", "Zhang's got", "Zhang's stapler"),
     "taken_for_service": ("default", "to Wang to", "signed by Wang"),
@@ -111,6 +119,7 @@ EFFECTS: dict[str, tuple[str, str, str]] = {
     "announced_borrowings": ("default", "I'm borrowing", "can I borrow"),
     "gapped_verbs": ("default", "and a coffee", "and get a coffee"),
     "named_later": ("default", "plan?", "plan file?"),
+    "attributive_work": ("default", "printing budget", "his budget"),
     "hyphened_description": ("default", "setting-out", "Wang's file"),
     "paper_parts": ("default", "pages", "contract need"),
     "file_subject": ("default", "of the stapler", ""),
@@ -122,6 +131,7 @@ EFFECTS: dict[str, tuple[str, str, str]] = {
     "signed_on": ("default", "Lee here", "Bring me"),
     "seating": ("harbour", "on reception", "Sue needs"),
     "lacked_purposes": ("default", "has nothing", "needs something"),
+    "problem_remedy": ("costume shop", "anything to sort it out", "got a lint roller"),
     "work_as_purpose": ("default", "I've got", "no pen to sign"),
     "contracted_needs": ("default", "Kit's", "Kit is after"),
     "due_service": ("default", "is due", "needs a print"),

@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.also_sent import also_sent, paper_makers
 from assistantx.agents.symbolic.reading.announced_borrowing import announced_borrowings
 from assistantx.agents.symbolic.reading.approved_use import approved_uses
 from assistantx.agents.symbolic.reading.asides import announced_list
+from assistantx.agents.symbolic.reading.attributive_work import without_attributive_work
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
@@ -50,6 +51,7 @@ from assistantx.agents.symbolic.reading.described_items import (
 from assistantx.agents.symbolic.reading.due_service import DueService
 from assistantx.agents.symbolic.reading.emailed_paper import BRING, EmailedPaper, emailed_paper
 from assistantx.agents.symbolic.reading.file_subject import without_file_subject
+from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.idioms import signature_put
@@ -65,6 +67,7 @@ from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
 from assistantx.agents.symbolic.reading.paper_parts_cut import without_paper_parts
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.pictographs import without_pictographs
+from assistantx.agents.symbolic.reading.place_doer import PlaceDoers
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
 from assistantx.agents.symbolic.reading.placeholder_thing import (
     placeholder_question,
@@ -72,6 +75,7 @@ from assistantx.agents.symbolic.reading.placeholder_thing import (
 )
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
+from assistantx.agents.symbolic.reading.problem_remedy import ProblemRemedies
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
 from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
@@ -159,6 +163,13 @@ class Surface:
         self.round_trip = RoundTripWork(office)  # "take it to the kitchen and bring it back"
         # what the office's things are declared for ("measure"), for a lack of one
         self.purposes = frozenset(p.lower() for t in office.item_types for p in t.purposes)
+        # the verbs whose -ing form before a noun only describes it ("his printing budget")
+        self.work_lemmas = frozenset(
+            w for op in office.operations for v in op.verbs for w in v.lower().split()[:1]
+        ) | frozenset(w for words in lex.cues.values() for w in words if " " not in w)
+        self.office_phrases = frozenset({*lex.items, *lex.facilities, *lex.places})
+        self.place_doers = PlaceDoers(office)  # "can laundry stitch it up?"
+        self.remedies = ProblemRemedies(office)  # "... dog hair, got anything to sort it out?"
         self.keepers = kept_services(office)  # each keeper's services, by their verbs
         self.paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
@@ -282,6 +293,15 @@ def _emailed_paper(s: Surface, text: str, asked: Asked) -> str | Said:
     return Said(text, None, emailed)
 
 
+def _remedy(s: Surface, text: str, asked: Asked) -> str | Said:
+    """The remedy asked for a problem said before it: the one thing that fits, else which
+    (ends the reading)."""
+    remedy = s.remedies(text, s.item_types)
+    if remedy.question is not None:
+        return Said(text, TaskFrame(requester=asked.requester, question=remedy.question))
+    return remedy.text
+
+
 def _beside_a_thing(s: Surface, text: str, asked: Asked) -> str | Said:
     """A placement beside a colleague's thing: one the robot cannot make, declined."""
     out_of_reach = beside_a_thing(text, s.is_person)
@@ -298,6 +318,12 @@ STEPS: tuple[Step, ...] = (
     Step("undotted", "bring the book to Dr. Grace Huang", lambda s, t, a: undotted(t)),
     # which thing is asked, nothing picked (ends the reading)
     Step("placeholder", "bring me the thing from the fridge", _placeholder),
+    # the place does the work: the office's service there
+    Step(
+        "place_doers",
+        "tore my apron, can laundry stitch it up?",
+        lambda s, t, a: s.place_doers(t),
+    ),
     # the tool's work said as the office's verb ("notarised" of a notary stamp: "sealed")
     Step("lent_verbs", "get my contract notarized", lambda s, t, a: s.lent_verbs.read(t)),
     # chat's "r" for "are"
@@ -317,6 +343,12 @@ STEPS: tuple[Step, ...] = (
         "joined_gerunds",
         "would you mind laminating my badge, and getting my document signed",
         lambda s, t, a: joined_gerunds(t),
+    ),
+    # the content's form said next: Wang's file
+    Step(
+        "form_said_after",
+        "get me the rota numbers from Wang? She keeps them in a spreadsheet",
+        lambda s, t, a: with_form_said_after(t, s.as_file, s.one_name),
     ),
     # my spreadsheet, Wang's file
     Step(
@@ -404,6 +436,12 @@ STEPS: tuple[Step, ...] = (
         "Wang's budget plan? just send me the file",
         lambda s, t, a: named_later(s.lex, t),
     ),
+    # the service's word only describes the thing: Wang's file
+    Step(
+        "attributive_work",
+        "get Wang to send me his printing budget",
+        lambda s, t, a: without_attributive_work(t, s.work_lemmas, s.office_phrases),
+    ),
     # the description is no owner or part; Wang's file
     Step(
         "hyphened_description",
@@ -469,6 +507,12 @@ STEPS: tuple[Step, ...] = (
         "lacked_purposes",
         "Hal has nothing to write with",
         lambda s, t, a: lacked_purposes(t, s.purposes),
+    ),
+    # the thing that puts the problem said right, or which is asked (ends the reading)
+    Step(
+        "problem_remedy",
+        "my coat is covered in dog hair, got anything to sort it out?",
+        _remedy,
     ),
     # the forms are why the pen is wanted
     Step(

@@ -1,0 +1,114 @@
+"""A problem stated, then a remedy asked for: "my coat is covered in dog hair and I'm on in ten,
+got anything to sort it out?", "the hem's come down - have you got something to fix it?".
+
+Asking for "anything to sort it out" after saying what is wrong is asking for the thing that
+puts that problem right: the office's item declared for it. The problem's words are matched
+against what the office's things are declared for (their ``purposes``: a lint roller "to
+remove hair") and against their names' head nouns (a "fluff roller" for "covered in
+fluff"; never a describing word, the "black" of a "black umbrella"); a thing the
+problem itself names ("my coat") is what the problem is about, never its remedy. Where
+exactly one thing fits, the ask names it ("got a lint roller?") and the reader's own reading
+of that question answers it ("There is a lint roller in ... Shall I bring you one?"); where
+several fit, or none, which is asked, never "I can't answer that".
+
+The remedy verbs, their heads and the words of a problem that name nothing are English
+(``remedy_verbs``, ``remedy_heads``, ``remedy_plain_words`` in data/english.yaml); the
+things and what they are for are the office's.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from assistantx.agents.symbolic.reading.categories import which_question
+from assistantx.core import english, language
+from assistantx.core.office import Office
+
+
+def _alternatives(key: str) -> str:
+    phrases = sorted(english.entries(key), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+
+
+# "(have you) got anything to sort it out?", "do you have something to fix this with?"
+_ASK = re.compile(
+    rf"(?P<head>\b(?:{_alternatives('remedy_heads')}))\s+(?:to|that\s+(?:can|could|would|will))"
+    rf"\s+(?P<verb>{_alternatives('remedy_verbs')})"
+    r"(?:\s+(?:it|this|that|them|these|those))?(?:\s+(?:out|up|off))?(?:\s+with)?"
+    r"(?=\s*(?:\?|$|please\b|pls\b|\.))",
+    re.IGNORECASE,
+)
+_WORD = re.compile(r"[a-z]+")
+# the words of one thing's purpose or name that may say a problem's matter
+_NAMING = frozenset(english.words("prepositions_and_joins"))
+
+
+@dataclass(frozen=True, slots=True)
+class Remedy:
+    """The rewrite of the ask (``text``), or the question where no one thing fits."""
+
+    text: str
+    question: str | None = None
+
+
+class ProblemRemedies:
+    """The office's things declared for a use, each with the words of its uses and name."""
+
+    def __init__(self, office: Office) -> None:
+        self._plain = english.words("remedy_plain_words") | _NAMING
+        self._things: list[tuple[str, str, frozenset[str]]] = []  # id, name, words
+        for t in office.item_types:
+            if not t.purposes or t.kind == "electronic":
+                continue
+            # what it is for, every word; its names by their head nouns only ("a *roller*",
+            # never the "black" of "black umbrella" for a black jacket)
+            heads = [n.split()[-1] for n in (t.name, *t.synonyms) if n.split()]
+            said = " ".join([*t.purposes, *heads])
+            words = frozenset(_forms(_WORD.findall(language.fold(said)))) - self._plain
+            self._things.append((t.id, t.name, words))
+
+    def __call__(self, text: str, named: Callable[[str], set[str]]) -> Remedy:
+        """``text`` with a remedy asked after a stated problem said as the one thing that
+        fits ("got a lint roller?"); ``named``: the item types a phrase names."""
+        if not self._things:
+            return Remedy(text)
+        ask = _ASK.search(text)
+        if ask is None:
+            return Remedy(text)
+        problem = text[: ask.start()]
+        words = set(_forms(_WORD.findall(language.fold(problem)))) - self._plain
+        if not words:
+            return Remedy(text)  # no problem said: "got anything to sort it out?" alone
+        about = named(problem)
+        fits = [
+            (type_id, name)
+            for type_id, name, said in self._things
+            if type_id not in about and said & words
+        ]
+        names = list(dict.fromkeys(name for _, name in fits))
+        if len(names) == 1:
+            thing = _one(names[0])
+            return Remedy(f"{text[: ask.start()]}{thing}{text[ask.end() :]}")
+        if names:
+            return Remedy(text, which_question([_one(n) for n in names]))
+        return Remedy(
+            text,
+            "I'm not sure which of the things here would sort that out. What should I bring you?",
+        )
+
+
+def _one(name: str) -> str:
+    """One of a thing, said ("a lint roller", "any wipes")."""
+    return f"{language.indefinite(name)} {name}"
+
+
+def _forms(words: list[str]) -> list[str]:
+    """Each word with its singular and its verbs' lemmas ("hairs": hair; "cutting": cut)."""
+    out: list[str] = []
+    for w in words:
+        out.append(w)
+        out.extend(language.lemmas(w).get("NOUN", ()))
+        out.extend(language.verb_lemmas(w))
+    return out
