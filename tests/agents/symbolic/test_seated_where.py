@@ -53,6 +53,45 @@ def test_where_they_are_is_no_part_of_the_request(
 @pytest.mark.parametrize(
     ("office", "requester", "text", "tasks"),
     [
+        # a recipient at a facility: the printout was the requester's and a coffee made for
+        # Wang
+        (
+            "default",
+            "lee",
+            "print my file and give it to Wang at the coffee machine, he needs it at 3",
+            [("print", "file", "lee", "wang")],
+        ),
+        (
+            "default",
+            "lee",
+            "print my file. no wait, print it and give it to Wang at the vending machine",
+            [("print", "file", "lee", "wang")],
+        ),
+        (
+            "default",
+            "lee",
+            "take my stapler to Mao by the water dispenser",
+            [("transfer", "stapler", "lee", "mao")],
+        ),
+        # must not change: the facility's own product named, and a room the thing goes to
+        (
+            "default",
+            "lee",
+            "bring a coffee to Wang at the coffee machine",
+            [("produce", "coffee", None, "wang")],
+        ),
+        ("default", "lee", "take my lunch to the microwave", [("heat", "lunch", "lee", "lee")]),
+    ],
+)
+def test_a_recipient_at_a_facility_is_where_they_are(
+    office: str, requester: str, text: str, tasks: list[tuple[str, str | None, str | None, str]]
+) -> None:
+    assert tasks_of(office, text, requester) == tasks
+
+
+@pytest.mark.parametrize(
+    ("office", "requester", "text", "tasks"),
+    [
         (
             "harbour",
             "rose",
