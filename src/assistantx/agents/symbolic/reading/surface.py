@@ -132,10 +132,10 @@ Rewrite = Callable[["Surface", str, Asked], "str | Said"]
 
 @dataclass(frozen=True, slots=True)
 class Step:
-    """One rewrite of the surface stage: its name, what it does to its example, and how."""
+    """One rewrite of the surface stage: its name and how (its example, a message it changes,
+    is in the comment above it, and the tests run each on it)."""
 
     name: str
-    example: str  # a message the step changes (in one of the offices of the tests)
     rewrite: Rewrite
 
 
@@ -313,181 +313,192 @@ def _beside_a_thing(s: Surface, text: str, asked: Asked) -> str | Said:
 # The surface stage, in the order its steps run.
 STEPS: tuple[Step, ...] = (
     # the face is tone only
-    Step("pictographs", "bring me a pen and no marker 😩", lambda s, t, a: without_pictographs(t)),
+    # e.g. "bring me a pen and no marker 😩"
+    Step("pictographs", lambda s, t, a: without_pictographs(t)),
     # an abbreviation's stop ends no sentence
-    Step("undotted", "bring the book to Dr. Grace Huang", lambda s, t, a: undotted(t)),
+    # e.g. "bring the book to Dr. Grace Huang"
+    Step("undotted", lambda s, t, a: undotted(t)),
     # which thing is asked, nothing picked (ends the reading)
-    Step("placeholder", "bring me the thing from the fridge", _placeholder),
+    # e.g. "bring me the thing from the fridge"
+    Step("placeholder", _placeholder),
     # the place does the work: the office's service there
+    # e.g. "tore my apron, can laundry stitch it up?"
     Step(
         "place_doers",
-        "tore my apron, can laundry stitch it up?",
         lambda s, t, a: s.place_doers(t),
     ),
     # the tool's work said as the office's verb ("notarised" of a notary stamp: "sealed")
-    Step("lent_verbs", "get my contract notarized", lambda s, t, a: s.lent_verbs.read(t)),
+    # e.g. "get my contract notarized"
+    Step("lent_verbs", lambda s, t, a: s.lent_verbs.read(t)),
     # chat's "r" for "are"
-    Step("spelled_are", "mine r blunt, bring me a pen", lambda s, t, a: spelled_are(t)),
+    # e.g. "mine r blunt, bring me a pen"
+    Step("spelled_are", lambda s, t, a: spelled_are(t)),
     # heated: the room's work on it
+    # e.g. "take my lunch to the kitchenette and bring it back"
     Step(
         "round_trip",
-        "take my lunch to the kitchenette and bring it back",
         lambda s, t, a: s.round_trip.read(t, s.item_types),
     ),
     # "Pat said I could use her stamp": a transfer
-    Step(
-        "approved_uses", "Pat ok'd me using her stamp, bring it", lambda s, t, a: approved_uses(t)
-    ),
+    # e.g. "Pat ok"d me using her stamp, bring it"
+    Step("approved_uses", lambda s, t, a: approved_uses(t)),
     # two requests
+    # e.g. "would you mind laminating my badge, and getting my document signed"
     Step(
         "joined_gerunds",
-        "would you mind laminating my badge, and getting my document signed",
         lambda s, t, a: joined_gerunds(t),
     ),
     # the content's form said next: Wang's file
+    # e.g. "get me the rota numbers from Wang? She keeps them in a spreadsheet"
     Step(
         "form_said_after",
-        "get me the rota numbers from Wang? She keeps them in a spreadsheet",
         lambda s, t, a: with_form_said_after(t, s.as_file, s.one_name),
     ),
     # my spreadsheet, Wang's file
+    # e.g. "print the spreadsheet I sent"
     Step(
         "sent_files",
-        "print the spreadsheet I sent",
         lambda s, t, a: sent_files(t, s.is_person, s.as_file),
     ),
     # Wang's file, Zhang's stapler
+    # e.g. "I need the stapler Zhang"s got"
     Step(
         "held_by_clauses",
-        "I need the stapler Zhang's got",
         lambda s, t, a: held_by_clauses(t, s.is_person),
     ),
     # signed by Wang, back to me
+    # e.g. "take my document to Wang to get it signed? need it back"
     Step(
         "taken_for_service",
-        "take my document to Wang to get it signed? need it back",
         lambda s, t, a: taken_for_service(t, s.is_person),
     ),
     # why it is asked, not a second errand
+    # e.g. "scan my document, customs want a pdf"
     Step(
         "format_reasons",
-        "scan my document, customs want a pdf",
         lambda s, t, a: without_format_reasons(t, s.is_person),
     ),
     # Wang does the work
+    # e.g. "can my document go to Wang to be signed?"
     Step(
         "sent_for_service",
-        "can my document go to Wang to be signed?",
         lambda s, t, a: sent_for_service(t, s.is_person, s.work_verb),
     ),
     # sent by it
-    Step("booked_means", "book a courier for my parcel", lambda s, t, a: booked_means(t, s.means)),
+    # e.g. "book a courier for my parcel"
+    Step("booked_means", lambda s, t, a: booked_means(t, s.means)),
     # Frank rehairs it, kept back
+    # e.g. "my bow needs rehairing, take it to the store for Frank"
     Step(
         "taken_for_keeper",
-        "my bow needs rehairing, take it to the store for Frank",
         lambda s, t, a: taken_for_keeper(t, s.keepers, s.people_of, s.name_of),
     ),
     # "+" and "&" join as "and"
-    Step("signs_as_and", "print my file + a coffee", lambda s, t, a: signs_as_and(t)),
+    # e.g. "print my file + a coffee"
+    Step("signs_as_and", lambda s, t, a: signs_as_and(t)),
     # the role only describes him
+    # e.g. "get the duty manager, Wang, to sign my document"
     Step(
         "role_appositives",
-        "get the duty manager, Wang, to sign my document",
         lambda s, t, a: without_role_appositives(s.lex, t),
     ),
     # the file passed on, a second errand
+    # e.g. "print my report and also send it to Wang"
     Step(
         "also_sent",
-        "print my report and also send it to Wang",
         lambda s, t, a: also_sent(t, s.paper_makers),
     ),
     # a subject's "has"/"is", no owner
-    Step("spelled_has_is", "Wang's gone to lunch", lambda s, t, a: spelled_has_is(t)),
+    # e.g. "Wang"s gone to lunch"
+    Step("spelled_has_is", lambda s, t, a: spelled_has_is(t)),
     # the "so" starts the ask, as after a comma
+    # e.g. "my stapler"s broken so can I borrow Wang"s"
     Step(
         "consequence_boundaries",
-        "my stapler's broken so can I borrow Wang's",
         lambda s, t, a: consequence_boundaries(t),
     ),
     # the ask opens a sentence of its own, as after a stop
+    # e.g. "my phone is on 2% pls get me a charging lead"
     Step(
         "told_then_asked",
-        "my phone is on 2% pls get me a charging lead",
         lambda s, t, a: told_then_asked(t),
     ),
     # one more, Wang's
-    Step("numeral_ones", "coffee for me and 1 for Wang", lambda s, t, a: numeral_ones(t)),
+    # e.g. "coffee for me and 1 for Wang"
+    Step("numeral_ones", lambda s, t, a: numeral_ones(t)),
     # the speaker's taking, asked of Wang
+    # e.g. "I"m borrowing Wang"s stapler for the afternoon"
     Step(
         "announced_borrowings",
-        "I'm borrowing Wang's stapler for the afternoon",
         lambda s, t, a: announced_borrowings(t, s.is_person),
     ),
     # "and get a coffee for me"
+    # e.g. "get Wang to sign my contract, and a coffee for me"
     Step(
         "gapped_verbs",
-        "get Wang to sign my contract, and a coffee for me",
         lambda s, t, a: with_gapped_verbs(s.lex, t),
     ),
     # the plan is Wang's file
+    # e.g. "Wang"s budget plan? just send me the file"
     Step(
         "named_later",
-        "Wang's budget plan? just send me the file",
         lambda s, t, a: named_later(s.lex, t),
     ),
     # the service's word only describes the thing: Wang's file
+    # e.g. "get Wang to send me his printing budget"
     Step(
         "attributive_work",
-        "get Wang to send me his printing budget",
         lambda s, t, a: without_attributive_work(t, s.work_lemmas, s.office_phrases),
     ),
     # the description is no owner or part; Wang's file
+    # e.g. "Wang"s setting-out file"
     Step(
         "hyphened_description",
-        "Wang's setting-out file",
         lambda s, t, a: without_hyphened_description(s.lex, t),
     ),
     # the pages are the contract
+    # e.g. "My contract pages need stamping"
     Step(
         "paper_parts",
-        "My contract pages need stamping",
         lambda s, t, a: without_paper_parts(s.lex, t),
     ),
     # what a colleague's file is about is no second thing
+    # e.g. "Wang"s pdf of the stapler"
     Step(
         "file_subject",
-        "Wang's pdf of the stapler",
         lambda s, t, a: without_file_subject(s.lex, s.office, t),
     ),
     # a copy the office makes electronic, else asked later (kept: ``Said.emailed``)
-    Step("emailed_paper", "could I have Wang's report? just email it to me", _emailed_paper),
+    # e.g. "could I have Wang"s report? just email it to me"
+    Step("emailed_paper", _emailed_paper),
     # the form picks the office's file or paper
-    Step("picked_form", "Wang's document, the pdf one", lambda s, t, a: s.picked_form(t)),
+    # e.g. "Wang"s document, the pdf one"
+    Step("picked_form", lambda s, t, a: s.picked_form(t)),
     # to reception
-    Step("carrying_particles", "bring some up to reception", lambda s, t, a: carrying_particles(t)),
+    # e.g. "bring some up to reception"
+    Step("carrying_particles", lambda s, t, a: carrying_particles(t)),
     # the namesake the later words name
+    # e.g. "with Yang - Lei, not Liu"
     Step(
         "namesake_surnames",
-        "with Yang - Lei, not Liu",
         lambda s, t, a: s.namesake_surnames(t),
     ),
     # the printout is printing's, a task of its own
+    # e.g. "copy my document and a printout"
     Step(
         "products_listed",
-        "copy my document and a printout",
         lambda s, t, a: s.products_listed(t),
     ),
     # the one kind of thing it makes
+    # e.g. "something from the vending machine"
     Step(
         "something_from",
-        "something from the vending machine",
         lambda s, t, a: s.something_from(t),
     ),
     # the speaker's sign-on, no party to the request
+    # e.g. "Lee here - bring me a pen"
     Step(
         "signed_on",
-        "Lee here - bring me a pen",
         lambda s, t, a: signed_on(
             t,
             s.one_name,
@@ -497,81 +508,87 @@ STEPS: tuple[Step, ...] = (
     ),
     # where Sue is, no part of the request (before the readings of "<name> would like",
     # which take the name next to the verb)
+    # e.g. "Sue on reception needs a pen"
     Step(
         "seating",
-        "Sue on reception needs a pen",
         lambda s, t, a: without_seating(s.terms, t)[0],
     ),
     # a need of the thing the office keeps for that use
+    # e.g. "Hal has nothing to write with"
     Step(
         "lacked_purposes",
-        "Hal has nothing to write with",
         lambda s, t, a: lacked_purposes(t, s.purposes),
     ),
     # the thing that puts the problem said right, or which is asked (ends the reading)
+    # e.g. "my coat is covered in dog hair, got anything to sort it out?"
     Step(
         "problem_remedy",
-        "my coat is covered in dog hair, got anything to sort it out?",
         _remedy,
     ),
     # the forms are why the pen is wanted
+    # e.g. "I"ve got 40 forms to sign and no pen"
     Step(
         "work_as_purpose",
-        "I've got 40 forms to sign and no pen",
         lambda s, t, a: work_as_purpose(t, s.lacks, s.names_item, s.is_person),
     ),
     # Kit is after one
-    Step("contracted_needs", "Kit's after a torch", lambda s, t, a: contracted_needs(t)),
+    # e.g. "Kit"s after a torch"
+    Step("contracted_needs", lambda s, t, a: contracted_needs(t)),
     # it needs one
-    Step("due_service", "my document is due a print", lambda s, t, a: s.due_service(t)),
+    # e.g. "my document is due a print"
+    Step("due_service", lambda s, t, a: s.due_service(t)),
     # Zhang wants one
+    # e.g. "Zhang would like a stapler"
     Step(
         "named_wants",
-        "Zhang would like a stapler",
         lambda s, t, a: named_wants(t, s.one_name, s.subject_name),
     ),
     # the count names nothing
-    Step("announced_list", "Two things: a pen and a stapler", lambda s, t, a: announced_list(t)),
+    # e.g. "Two things: a pen and a stapler"
+    Step("announced_list", lambda s, t, a: announced_list(t)),
     # I need a coffee
-    Step("wanting_idioms", "I'd murder a coffee", lambda s, t, a: wanting_idioms(t)),
+    # e.g. "I"d murder a coffee"
+    Step("wanting_idioms", lambda s, t, a: wanting_idioms(t)),
     # Mo signs it
-    Step("signature_put", "could Mo put her signature on it", lambda s, t, a: signature_put(t)),
+    # e.g. "could Mo put her signature on it"
+    Step("signature_put", lambda s, t, a: signature_put(t)),
     # a coffee for Zhang
+    # e.g. "Zhang asked if someone could bring him a coffee"
     Step(
         "reported_requests",
-        "Zhang asked if someone could bring him a coffee",
         lambda s, t, a: reported_requests(t, s.one_name),
     ),
     # Wang's desk, so Wang gets it
+    # e.g. "take this book to Wang"s if he"s in"
     Step(
         "possessive_places",
-        "take this book to Wang's if he's in",
         lambda s, t, a: possessive_places(t, s.is_person),
     ),
     # which ruler, where it lies; Mark's, to me
+    # e.g. "bring me the ruler at Mark"s desk"
     Step(
         "placed_things",
-        "bring me the ruler at Mark's desk",
         lambda s, t, a: placed_things(t, s.is_person),
     ),
     # at Mark's desk, not Mark's ruler fetched too
+    # e.g. "put the ruler next to Mark"s"
     Step(
         "near_possessives",
-        "put the ruler next to Mark's",
         lambda s, t, a: near_possessives(t, s.is_person),
     ),
     # a placement the robot cannot make (ends the reading)
-    Step("beside_a_thing", "leave the calculator beside Will's lamp", _beside_a_thing),
+    # e.g. "leave the calculator beside Will"s lamp"
+    Step("beside_a_thing", _beside_a_thing),
     # one stapler, Zhang's
+    # e.g. "a stapler, not Wang"s, Zhang"s"
     Step(
         "possessive_corrections",
-        "a stapler, not Wang's, Zhang's",
         lambda s, t, a: possessive_corrections(t, s.is_person),
     ),
     # Lee's pen, asked of Lee
+    # e.g. "i need a pen. Lee"s is fine"
     Step(
         "accepted_owners",
-        "i need a pen. Lee's is fine",
         lambda s, t, a: accepted_owners(t, s.is_person),
     ),
 )
