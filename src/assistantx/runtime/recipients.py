@@ -704,6 +704,8 @@ _HAS = frozenset({"has", "have", "had"})
 
 # "has no", "has none", "has not got": a lack, not a having
 _NONE = frozenset({"no", "none", "nothing", "not", "nt"})
+# "has got", "has gotten": a having said with "got", no perfect of another verb
+_GOT = frozenset({"got", "gotten"})
 
 
 def _holder(words: list[_Word], end: int) -> bool:
@@ -715,8 +717,10 @@ def _holder(words: list[_Word], end: int) -> bool:
         return False
     after = words[end + 1].folded if end + 1 < len(words) else ""
     # "Grace has been out on site all day, take her a ruler": "has been" is the perfect of
-    # "be", a state she was in, no having
-    return after not in _NONE and after != "been"
+    # "be", a state she was in, no having; so is any perfect ("Mei has hurt her ankle, take
+    # her an ice pack": what happened to her), but "has got" is a having
+    perfect = after not in _GOT and language.is_past_participle(after)
+    return after not in _NONE and after != "been" and not perfect
 
 
 def _just_a_name(office: Office, text: str) -> frozenset[str]:

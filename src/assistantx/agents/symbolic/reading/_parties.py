@@ -548,6 +548,45 @@ def _add_group(roles: Roles, group: Joined) -> None:
     roles.each.append(group.people)
 
 
+# A person the office does not know, said by what they are ("the client", "our auditor", "the
+# visitors"): the antecedent of a possessive pronoun after it when no colleague is named
+_OUTSIDER_NOUNS = (english.words("outsider_nouns") | english.words("role_nouns")) - {
+    "someone",
+    "somebody",
+    "person",
+    "people",
+}
+_OUTSIDER_DETERMINERS = frozenset(
+    {"the", "a", "an", "our", "my", "your", "this", "that", "these", "those", "some"}
+)
+
+
+# What an outsider is said to want, the reason a request is made ("the client *wants* a
+# copy", "the auditors *would like* one", "the visitor *asked* for it")
+_OUTSIDER_WANTS = english.words("need_verbs") | {"like", "asked", "asks", "requested"}
+_WANT_NEAR = 3  # "the client really would like"
+
+
+def _outsider_before(tokens: Sequence[Token], at: int) -> bool:
+    """Whether an outsider, said by a determiner and a noun of a kind of person in a clause
+    after the request, is said to want something before ``at`` ("photocopy my contract, the
+    client wants a copy for *their* files"): the reason for the request, whose "their" is
+    the outsider's."""
+    for k in range(1, at):
+        word = tokens[k].word
+        singular = word[:-1] if word.endswith("s") else word
+        det = tokens[k - 1]
+        if det.word not in _OUTSIDER_DETERMINERS:
+            continue
+        if k - 1 == 0 or not (det.after_pause or det.opens or tokens[k - 2].word in _REASON):
+            continue  # said after the request, as its reason ("..., the client wants ...")
+        if word not in _OUTSIDER_NOUNS and singular not in _OUTSIDER_NOUNS:
+            continue
+        if any(t.word in _OUTSIDER_WANTS for t in tokens[k + 1 : min(at, k + 1 + _WANT_NEAR)]):
+            return True
+    return False
+
+
 def owner_of(
     tokens: Sequence[Token],
     ms: list[Mention],
@@ -569,6 +608,10 @@ def owner_of(
             return p.ids[0]
         if p.kind == "pronoun" and p.possessive:
             others = [x for x in last_person if x != requester]
+            if not others and _outsider_before(tokens, p.start):
+                # "..., the client wants a copy for their files": theirs, an outsider's, no
+                # colleague to ask about
+                return None
             if not others:  # "his stapler" with nobody named before: whose?
                 raise UnresolvedPronoun(p.text)
             return others[-1]

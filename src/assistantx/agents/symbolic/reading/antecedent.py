@@ -19,6 +19,10 @@ from assistantx.core.task_schema import Task
 
 # Words that refer back to something said before, never to something at hand.
 _ANAPHORS = frozenset({"it", "them"})
+# The far demonstratives said alone as a work's object ("print *that* out for me"): like "it",
+# they point back at something said; with nothing said, which file is asked ("this"/"these"
+# point at something at hand and keep their reading)
+_FAR = frozenset({"that", "those"})
 _ANCHORS = frozenset({"item", "facility", "place"})
 WHICH_FILE = "Which file do you mean by"
 _BARE_POSSESSIVE = re.compile(r"['’]s$|s['’]$")
@@ -35,8 +39,8 @@ _LINKS = frozenset({"for", "from", "of", "by", "with", "about", "to", "at", "in"
 def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None:
     """The question to ask where the tasks' file is only "it" and the message names nothing
     it could be; None where it names something, or a task is no file's."""
-    words = {t.word for t in whole.tokens}
-    if not words & _ANAPHORS:
+    back = _pointing_back(whole)
+    if not back:
         return None
     purpose = _purpose_after_it(whole)
     for m in whole.mentions:
@@ -44,7 +48,7 @@ def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None
             continue  # "print it off for the induction table": what it is for, not what it is
         if m.kind in _ANCHORS or (m.kind in ("person", "self") and m.possessive):
             return None  # "print my shoot and bring it over", "Kwame's file, print it"
-        if m.kind == "pronoun" and whole.tokens[m.start].word not in _ANAPHORS:
+        if m.kind == "pronoun" and m.start not in back:
             return None  # "print this": at hand
     if not tasks or any(t.item is None for t in tasks):
         return None
@@ -55,9 +59,24 @@ def unanchored_it(office: Office, whole: Lexed, tasks: list[Task]) -> str | None
         # to send on; brought to the speaker ("print the meeting note and bring it to me")
         # it may be anyone's, and whose is still asked
         return None
-    said = next(t.text for t in whole.tokens if t.word in _ANAPHORS)
+    said = whole.tokens[min(back)].text
     kinds = list(dict.fromkeys(office.item_type(t.item).name for t in tasks if t.item))
     return f"{WHICH_FILE} {said!r}? Please tell me whose {' or '.join(kinds)} it is."
+
+
+def _pointing_back(whole: Lexed) -> frozenset[int]:
+    """Where a word that points back at something said stands: "it"/"them" anywhere, and
+    "that"/"those" said alone right after a work's verb ("print that (out)"); a far
+    demonstrative before its noun ("print that report") or after any other word ("tell Wang
+    that ...") is none."""
+    tokens = whole.tokens
+    cues = {m.end for m in whole.mentions if m.kind == "cue"}
+    named = {m.start for m in whole.mentions if m.kind != "word"}
+    back = {n for n, t in enumerate(tokens) if t.word in _ANAPHORS}
+    for n, t in enumerate(tokens):
+        if t.word in _FAR and n in cues and n + 1 not in named:
+            back.add(n)
+    return frozenset(back)
 
 
 def _purpose_after_it(whole: Lexed) -> frozenset[int]:
@@ -68,8 +87,9 @@ def _purpose_after_it(whole: Lexed) -> frozenset[int]:
     join ("print it for me, the budget file": the file is said after the comma)."""
     tokens = whole.tokens
     inside: set[int] = set()
-    for n, t in enumerate(tokens):
-        if t.word not in _ANAPHORS:
+    back = _pointing_back(whole)
+    for n, _ in enumerate(tokens):
+        if n not in back:
             continue
         k = n + 1
         while k < len(tokens) and tokens[k].word in _PARTICLES:
@@ -89,7 +109,7 @@ def _object_said(whole: Lexed) -> bool:
     """Whether a work's verb is followed by an article and a plain word before the first
     "it"/"them": the thing the verb works on, said in words the office need not know ("print
     the press release and take it to Ngozi"); a name or a pronoun after the article is none."""
-    first = next(n for n, t in enumerate(whole.tokens) if t.word in _ANAPHORS)
+    first = min(_pointing_back(whole))
     plain = {m.start for m in whole.mentions if m.kind == "word"}
     for m in whole.mentions:
         if m.kind != "cue" or m.end + 1 >= first or whole.tokens[m.end].word not in _ARTICLES:
@@ -114,8 +134,12 @@ def with_antecedent(text: str, answer: str, kind: str = "") -> str:
     said = answer.strip().rstrip(" .!?")
     if kind and _BARE_POSSESSIVE.search(said):
         said = f"{said} {kind}"  # "Kwame's" → "Kwame's shoot file": the kind asked about
-    pattern = r"\b(?:" + "|".join(sorted(_ANAPHORS)) + r")\b"
-    return re.sub(pattern, lambda _: said, text, count=1, flags=re.IGNORECASE)
+    # "it"/"them" where said, else the "that" the question was asked of ("print that out")
+    for words in (_ANAPHORS, _FAR):
+        pattern = r"\b(?:" + "|".join(sorted(words)) + r")\b"
+        if re.search(pattern, text, flags=re.IGNORECASE):
+            return re.sub(pattern, lambda _: said, text, count=1, flags=re.IGNORECASE)
+    return text
 
 
 def anothers_it(

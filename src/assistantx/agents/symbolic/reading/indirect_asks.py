@@ -73,8 +73,27 @@ def _frame_end(w: list[str]) -> int | None:
     return None
 
 
-# Who may follow "any chance (that)": the speaker asking for themself, or anyone asked.
+# Who may follow "any chance (that)": the speaker asking for themself, or anyone asked; or
+# the thing the work is asked on, said by a pronoun ("any chance *it* could go through the
+# wash") or a noun phrase opened by a determiner ("any chance *my apron* could be washed").
 _CHANCE_SUBJECTS = english.words("request_askees") - {"the", "robot"}
+_CHANCE_THINGS = english.words("subject_pronouns") | english.words("placeholder_determiners")
+_CHANCE_OPENERS = english.words("modifier_determiners")
+_CHANCE_PHRASE = 4  # "my old grey apron" before the modal
+
+
+def _chance_subject_end(w: list[str], k: int) -> int | None:
+    """Where the subject that ``w`` says at ``k`` ends, right before a modal: one asked or a
+    pronoun ("you", "it"), or a determiner's noun phrase ("my apron"); else None."""
+    if len(w) > k + 2 and w[k] in _CHANCE_SUBJECTS | _CHANCE_THINGS and w[k + 1] in _MODALS:
+        return k + 1
+    if k < len(w) and w[k] in _CHANCE_OPENERS:
+        for end in range(k + 2, min(k + 1 + _CHANCE_PHRASE, len(w) - 1)):
+            if w[end] in _MODALS:
+                return end
+            if w[end] in _CHANCE_OPENERS:
+                return None
+    return None
 
 
 def chance_reworded(w: list[str]) -> list[str] | None:
@@ -89,9 +108,10 @@ def chance_reworded(w: list[str]) -> list[str] | None:
         return ["could", "i", "have", *w[k + 1 :]]
     if w[k : k + 1] == ["that"]:
         k += 1
-    if len(w) > k + 2 and w[k] in _CHANCE_SUBJECTS and w[k + 1] in _MODALS:
-        return [w[k + 1], w[k], *w[k + 2 :]]
-    return None
+    end = _chance_subject_end(w, k)
+    if end is None:
+        return None
+    return [w[end], *w[k:end], *w[end + 1 :]]
 
 
 def indirect_ask(w: list[str], task_verbs: frozenset[str]) -> QuestionKind | None:

@@ -98,6 +98,10 @@ _AWAY = english.words("guard_away")
 _NEED = english.words("need_verbs")
 _PUTTING = english.words("putting_verbs")  # "leave", "put", "pop": a thing put down
 _OWN = frozenset({"my", "our"})  # the requester's own thing
+# A thing said before, by a pronoun after a work's verb ("sign *it*"), and the particles
+# that may stand between ("sign *off* on it")
+_SAID_BEFORE = frozenset({"it", "them"})
+_WORK_PARTICLES = frozenset({"off", "on", "up", "over"})
 _IN_PLACE = frozenset({"in", "at", "inside"})
 _RECEIVE = english.words("receive_verbs")  # "Min gets the printout": a recipient, not a fact
 _SUBJECTS = english.words("statement_subjects")
@@ -813,6 +817,8 @@ class SpeechActs:
             return True  # "the calculator needs new batteries": none kept, nothing to fetch
         if _has_need_phrase(w):
             return False  # "Chen is looking for a pen": a need
+        if self._obliged_on_it(w):
+            return False  # "Wang has to sign it": a need of the thing said before
         if self._lacks(w):
             return False  # "I've run out of wipes": said to the assistant, a want
         if facility_told(w, self.lex.facilities):
@@ -1082,6 +1088,8 @@ class SpeechActs:
             return True  # "Min asked for scissors", "jonno's asked for a thermometer"
         if outsider_wants(w):
             return True  # "a friend of mine needs a ruler": their want, told
+        if self._obliged_on_it(w):
+            return True  # "Wang has to sign it": as "Wang needs to sign it", told
         for n in range(1, min(len(w), 5)):
             if w[n] in _NEED and w[n].endswith("s"):
                 subject = w[:n]
@@ -1232,6 +1240,23 @@ class SpeechActs:
                 past = "had" in w[at:verb]  # "Robin had to sign my report": told as done
                 work = w[verb] in PERSON_WORK and bool(_OWN & set(w[verb + 1 : verb + 3]))
                 return work and not past
+        return False
+
+    def _obliged_on_it(self, w: list[str]) -> bool:
+        """ "Wang has to sign it before it goes to HR", "Ida must stamp them": someone named,
+        obliged to do a person's work on a thing said before by a pronoun (the speaker's, "I've
+        got the incident form"): their need of the thing, said as a fact, as "Wang needs to
+        sign it" is (restated and asked, never done unasked); not one told as past ("had
+        to"), nor one on "my form" (``owner_work``)."""
+        for at in range(1, min(len(w), 4)):
+            if not all(self._named(x) for x in w[:at]):
+                return False
+            verb = obliged_verb(w, at)
+            if verb is not None:
+                past = "had" in w[at:verb]
+                after = [x for x in w[verb + 1 : verb + 3] if x not in _WORK_PARTICLES]
+                said_before = after[:1] and after[0] in _SAID_BEFORE
+                return w[verb] in PERSON_WORK and bool(said_before) and not past
         return False
 
     def _named(self, word: str) -> bool:

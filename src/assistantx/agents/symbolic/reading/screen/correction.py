@@ -7,6 +7,7 @@ import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
@@ -19,8 +20,8 @@ from assistantx.core.task_schema import Evidence
 # ``corrected``)
 _CORRECTION = re.compile(
     r"(?:[,;.!?…]|\s[-–—]+)\s*"
-    r"(?:(?:actually,?\s+)?(?:sorry|oops|no wait|wait no|oh wait|no sorry|sorry no|nope|nah|"
-    r"on\s+second\s+thoughts?|no(?=[,!.]))\b"
+    r"(?:(?:actually,?\s+)?(?:or\s+rather|sorry|oops|no wait|wait no|oh wait|no sorry|"
+    r"sorry no|nope|nah|on\s+second\s+thoughts?|no(?=[,!.]))\b"
     r"[,!.]?\s*(?:i\s+mean[t]?\b|meant\b)?(?:[,]?\s*(?:actually,?\s*)?make\s+(?:it|that)\b)?"
     r"|i\s+mean[t]?\b|(?:actually,?\s*)?make\s+(?:it|that)\b"
     # "..., change that to a snack", "... - actually, switch it for a water"
@@ -108,12 +109,50 @@ def _not_then_said(terms: Terms, text: str) -> str:
     return text
 
 
+# A correction's words said right after a word, with no pause ("a pen no wait a stapler", "a
+# pen or rather a pencil"), and "actually" right before a thing said anew ("a pen actually a
+# stapler"): the pause is put back, so it reads as the punctuated correction.
+_UNPAUSED = re.compile(
+    r"(?<=\w)\s+(?=(?:"
+    + "|".join(
+        r"\s+".join(re.escape(w) for w in p.split())
+        for p in sorted(english.entries("unpaused_corrections"), key=len, reverse=True)
+    )
+    + r")\b)"
+    # "actually" after a copula says what is so ("it's actually a stapler i need"), no mind
+    # changed
+    r"|(?<=\w)(?<!\bis)(?<![’']s)(?<!\bwas)(?<!\bare)\s+(?=actually\s+(?:an?|some)\s)",
+    re.IGNORECASE,
+)
+
+
+def _paused(text: str) -> str:
+    """``text`` with a comma before each correction said with no pause before it."""
+    return _UNPAUSED.sub(", ", text)
+
+
+def _purposes_named(terms: Terms, text: str) -> str:
+    """``text`` with each thing said by its purpose ("something to cut with") as the office's
+    item declared for it, where one is: a correction says one thing in place of another."""
+    for _ in range(4):
+        fixed, found = purposes(terms, text)
+        if not found:
+            break
+        text = fixed
+    return text
+
+
 def corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     """ "bring me Rich's clipboard - sorry, I meant Dawn's", "..., no wait, Dawn's": a
     correction of one person or item right after it is said replaces it; the retracted
     one is never acted on (nor is the whole message dropped as withdrawn). The name said
     before "I mean", or before "not me", in a sentence of its own is the same correction;
-    so is a person refused, then another said ("..., not Lee - Lin Tao")."""
+    so is a person refused, then another said ("..., not Lee - Lin Tao"). A correction
+    said with no pause before it is the same; a thing said by its purpose on either side of
+    one ("something to write with, no wait, something to cut with") is the item for it."""
+    text = _paused(text)
+    if _CORRECTION.search(text):
+        text = _purposes_named(terms, text)
     text = _not_then_said(terms, text)
     found = _NAME_THEN_MEANT.search(text)
     if found is not None and not _CORRECTION.search(text[: found.start("name")]):
