@@ -54,6 +54,7 @@ from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
+from assistantx.agents.symbolic.reading.hurried_errand import hurried_errands
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -95,6 +96,7 @@ from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
+from assistantx.agents.symbolic.reading.work_said_as_product import WorkSaidAsProduct
 from assistantx.core import task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
@@ -150,6 +152,7 @@ class Surface:
         self.steps = STEPS
         self.something_from = SomethingFrom(office)  # "something from the vending machine"
         self.products_listed = ProductsListed(office)  # "copy my document and a printout"
+        self.work_as_product = WorkSaidAsProduct(office)  # "print it and take the print-out"
         self.picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
         # "my document is due a print": it needs one
         work = {w for k in task_kinds.person_kinds() for w in lex.cues.get(k, ())}
@@ -477,11 +480,20 @@ STEPS: tuple[Step, ...] = (
     # to reception
     # e.g. "bring some up to reception"
     Step("carrying_particles", lambda s, t, a: carrying_particles(t)),
+    # the hurrying verb's carrying idiom: a giving verb
+    # e.g. "Wang needs a stapler, can you run mine over to her"
+    Step("hurried_errands", lambda s, t, a: hurried_errands(t)),
     # the namesake the later words name
     # e.g. "with Yang - Lei, not Liu"
     Step(
         "namesake_surnames",
         lambda s, t, a: s.namesake_surnames(t),
+    ),
+    # the print-out of the printing just asked: its product, one printout
+    # e.g. "print my file and take the print-out to Mao"
+    Step(
+        "work_as_product",
+        lambda s, t, a: s.work_as_product(t),
     ),
     # the printout is printing's, a task of its own
     # e.g. "copy my document and a printout"

@@ -15,6 +15,7 @@ def test_the_rules_in_priority_order() -> None:
         "exclusion",  # "not her camera" after one colleague was named
         "which",  # "she needs the umbrella" with nobody named: whom "she" means is asked
         "which",  # "my lamp" where two of the speaker's things are lamps
+        "which",  # two things as alternatives ("the stapler? or the scissors, not sure which")
         "statement",  # a purpose or open offer cut off ("so he can book ...", "if anyone needs it")
         "statement",  # the reason for a request ("..., need it for the report")
         "statement",  # a reason naming a service as its topic ("..., need the laundry numbers")
@@ -36,10 +37,12 @@ def test_the_rules_in_priority_order() -> None:
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "statement",  # what the speaker will do with the thing asked for ("..., need to eat it")
+        "unsupported",  # a facility asked for work it does not do ("shred it in the printer")
         "destructive",
         "unsupported",  # a send to an account outside ("to my personal gmail")
         "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")
+        "unsupported",  # against a colleague ("disable Pat's badge so she can't get in")
         "unsupported",  # every one of a kind colleagues own ("wipe all the drives")
         "unsupported",  # into a colleague's closed things ("unlock Wang's drawer and take ...")
         "unsupported",  # a place outside ("... to the applicant's house on Elm Road")

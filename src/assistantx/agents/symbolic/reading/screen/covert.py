@@ -112,7 +112,7 @@ def _pranked(msg: Message, requester: str) -> bool:
     )
     if not said:
         return False
-    owners, pronoun = _colleagues_things(msg, requester)
+    owners, pronoun = colleagues_things(msg, requester)
     return bool(owners) or pronoun
 
 
@@ -164,7 +164,7 @@ def _unasked_in(piece: Piece) -> int | None:
     return _unasked_at(piece.words, names)
 
 
-def _colleagues_things(
+def colleagues_things(
     msg: Message, requester: str, terms: Terms | None = None
 ) -> tuple[set[str], bool]:
     """The colleagues whose things a request of the message names by their possessive, and
@@ -194,7 +194,7 @@ def _skips_asking_in(msg: Message, piece: Piece, requester: str, terms: Terms) -
     end = _unasked_in(piece)
     if end is None:
         return False
-    owners, pronoun = _colleagues_things(msg, requester, terms)
+    owners, pronoun = colleagues_things(msg, requester, terms)
     named = piece.words[end : end + 1]  # the word after the mark: whom not to ask
     tokens = piece.lexed.tokens
     asked = [
@@ -278,7 +278,7 @@ def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
     if not (
         kept_in_the_dark(piece.words)
         or (asks and _pranked(msg, requester))
-        or (_before_back(piece, requester) and any(_colleagues_things(msg, requester, terms)))
+        or (_before_back(piece, requester) and any(colleagues_things(msg, requester, terms)))
     ):
         return None
     if not (piece.acts.request or any(commanded(terms, p) for p in msg.pieces)):

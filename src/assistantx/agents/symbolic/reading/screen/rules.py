@@ -7,6 +7,7 @@ from collections.abc import Callable
 
 from assistantx.agents.symbolic.reading.screen.absent_owner import absent_owner
 from assistantx.agents.symbolic.reading.screen.acknowledgement import acknowledgement
+from assistantx.agents.symbolic.reading.screen.alternatives import alternatives
 from assistantx.agents.symbolic.reading.screen.asked_doer import asked_doer
 from assistantx.agents.symbolic.reading.screen.bare_fault import bare_fault
 from assistantx.agents.symbolic.reading.screen.break_in import break_in
@@ -68,6 +69,7 @@ from assistantx.agents.symbolic.reading.screen.ruled_out_place import ruled_out_
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.service_word_reason import service_word_reason
 from assistantx.agents.symbolic.reading.screen.someones_job import someones_job
+from assistantx.agents.symbolic.reading.screen.spite import spite
 from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
@@ -80,6 +82,7 @@ from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.whereabouts_reason import whereabouts_reason
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
+from assistantx.agents.symbolic.reading.screen.wrong_instrument import wrong_instrument
 
 # A rule reads one piece of a message with the office's terms; None: not this kind of piece.
 Rule = Callable[[Terms, Message, Piece, str], Finding | None]
@@ -93,6 +96,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("which", unnamed_subject),
     # "my lamp" where two of the speaker's things are lamps: asked which, never guessed
     ("which", several_owned_heads),
+    # "the stapler? or the scissors, not sure which": one of two, asked which
+    ("which", alternatives),
     # a purpose, an open offer or the reason for a request: context before any rule reads
     # what it names ("so he can book the courier", "if anyone needs it", "need it for ...")
     ("statement", purpose),
@@ -130,10 +135,14 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "..., need to eat it": what the speaker will do with the thing, before its verb is
     # read as a doing asked of me
     ("statement", own_use),
+    # "shred my stapler in the printer": a facility asked for work it does not do
+    ("unsupported", wrong_instrument),
     ("destructive", destructive),
     ("unsupported", outside_account),
     ("unsupported", absent_owner),
     ("unsupported", covert),
+    # "disable Pat's badge so she can't get in": a colleague's thing acted on against them
+    ("unsupported", spite),
     # every one of a kind colleagues own ("wipe all the drives"): never the speaker's own one
     ("unsupported", everyones),
     ("unsupported", break_in),

@@ -49,6 +49,8 @@ _MAKING = english.words("making_verbs")  # "make", "pour", "brew": whatever the 
 _ANY_MAKING = frozenset({"make", "do", "get", "produce", "create", "prepare"})
 # The verbs that stand for work without naming it ("do", "sort", "deal", "handle").
 _VAGUE = english.words("work_pro_verbs")
+# what a facility named as the instrument reads the same way (``wrong_instrument``)
+DATA_VERBS, MOVING, MAKING, ANY_MAKING, VAGUE = _DATA_VERBS, _MOVING, _MAKING, _ANY_MAKING, _VAGUE
 _PARTICLES = english.words("verb_particles")
 # Particles of carrying a thing across the office ("over", "across", "round", "back"): the
 # verb moves its object, an errand however it is said
@@ -67,6 +69,7 @@ _ADDRESSED = (english.words("request_askees") - {"i", "we", "the"}) | {
     "plz",
     "kindly",
 }
+ADDRESSED = _ADDRESSED  # the same, for ``wrong_instrument``
 # "my way", "his way": whose way a thing is sent, a receiver
 _WAYS_OF = frozenset({"my", "our", "his", "her", "their", "your"})
 # A noun phrase's first word: the verb's object follows it at once ("polish *my* boots"), never
@@ -91,8 +94,12 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None  # "could murder a coffee": the speaker's own wish, nothing asked of me
         verb = words[at]
         lemmas = language.verb_lemmas(verb) or frozenset({verb})
-        if not language.lemmas(verb).get("VERB") or language.is_past_verb(verb):
-            return None  # no verb ("stapler please"), or one told ("dropped my pen")
+        if not language.lemmas(verb).get("VERB") or (
+            language.is_past_verb(verb) and verb not in lemmas
+        ):
+            # no verb ("stapler please"), or one told ("dropped my pen"); a base form that is
+            # also its past ("reset", "cut") is the verb asked
+            return None
         # "pour up my impressions": a verb only of the office's services, none of which works
         # on or makes the thing after it (checked below, once the thing is read)
         misfit = _service_only(terms, verb, lemmas)
@@ -115,7 +122,7 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         lexed = terms.lex.read(after)
         if not _object_first(lexed) or _goes_somewhere(lexed):
             return None
-        if at == 0 and not particle and lexed.tokens[0].word not in _OPENING:
+        if at == 0 and not particle and not _opens_phrase(lexed):
             return None  # "coffee plz, double espresso": a word of the thing's kind, no verb
         whole_sub = terms.lex.read(sub.text)
         if not misfit and any(
@@ -205,6 +212,17 @@ def _service_word_as_object(lexed: Lexed) -> bool:
     """Whether the verb's object is a word of the office's work said as a noun, right after
     the determiner that opens it ("this print", "the scans")."""
     return _noun_use(lexed, 1) and any(m.kind == "cue" and m.start == 1 for m in lexed.mentions)
+
+
+def _opens_phrase(lexed: Lexed) -> bool:
+    """Whether the words after the verb open a noun phrase by a word that can only open one:
+    a determiner ("polish *my* boots") or a colleague's possessive ("disable *Jack's* badge",
+    fix180a class 1: the verb nothing here does on a colleague's thing was read as fetching
+    it); never a word of the thing's own kind ("coffee plz, double espresso")."""
+    if lexed.tokens[0].word in _OPENING:
+        return True
+    first = lexed.mentions[0] if lexed.mentions else None
+    return first is not None and first.start == 0 and first.kind == "person" and first.possessive
 
 
 def _object_first(lexed: Lexed) -> bool:
