@@ -51,6 +51,10 @@ _PRODUCT_KINDS = frozenset({"print", "copy"})
 # What links an occasion to the thing wanted for it ("for the signing", "before the printing");
 # not a place's "in"/"at" ("chuck it in the recycling": where it goes)
 _OCCASION_LINKS = frozenset({"for", "before", "after", "during"})
+# What opens an occasion named by an operation's noun ("for *the* audit")
+_OCCASION_DETERMINERS = frozenset({"the", "this", "that", "our", "tomorrows", "todays"})
+# What says a thing is the speaker's own ("my stopwatch"): its work may be what is asked
+_SPEAKERS = frozenset({"my", "our"})
 
 
 def modifiers(
@@ -71,7 +75,9 @@ def modifiers(
     occasions = [
         (start, m.start)
         for m in mentions
-        if m.kind == "cue" and (start := _occasion_gerund(tokens, m)) is not None
+        if m.kind == "cue"
+        and (start := _occasion_gerund(tokens, m) or _occasion_noun(tokens, mentions, m))
+        is not None
     ]
     for n, m in enumerate(mentions):
         if in_purpose and infinitive and m.kind == "item" and _second_thing(tokens, m):
@@ -204,7 +210,13 @@ def _modifier_phrase(tokens: Sequence[Token], m: Mention) -> bool:
     if j < k and j >= 0 and (tokens[j].word in DETERMINERS or tokens[j].possessive):
         k = j  # "the grant report": the determiner before the describing words
     while k >= 0 and (tokens[k].word in DETERMINERS or tokens[k].possessive):
+        owner = tokens[k].possessive
         k -= 1
+        j = k
+        while owner and j >= 0 and k - j < _DESCRIBING_WORDS and _describing(tokens[j]):
+            j -= 1
+        if j < k and j >= 0 and tokens[j].word in DETERMINERS:
+            k = j  # "for a new starter's badge": the owner's describing words and determiner
     return k >= 0 and tokens[k].word in MODIFIER_PREPOSITIONS
 
 
@@ -230,6 +242,49 @@ def _occasion_gerund(tokens: Sequence[Token], m: Mention) -> int | None:
     if j < 1 or tokens[j].word not in DETERMINERS or tokens[j - 1].word not in _OCCASION_LINKS:
         return None
     return j
+
+
+def _occasion_noun(tokens: Sequence[Token], mentions: Sequence[Mention], m: Mention) -> int | None:
+    """ "can someone lend me a stopwatch for the fitness test", "a stapler for the 3pm
+    review": an operation's noun that ends a noun phrase opened by "the" (or "this", "that",
+    "our") after "for"/"before"/"after"/"during", right after a thing asked for that is not
+    the speaker's own, names an occasion (why the thing is wanted), as the "-ing" form does
+    (``_occasion_gerund``): the phrase's first token, or None. "test my stopwatch for the
+    fitness test" (no thing before the phrase) and "take my stopwatch to the lab for the
+    test" (the speaker's own thing, whose work it may be) are no such occasion."""
+    word = tokens[m.start].word
+    if m.end != m.start + 1 or word.endswith("ing") or "NOUN" not in language.lemmas(word):
+        return None
+    nxt = tokens[m.end] if m.end < len(tokens) else None
+    if nxt is not None and not nxt.opens and not nxt.after_pause and _noun_after(nxt.word):
+        return None
+    j = m.start - 1
+    while j >= 0 and m.start - 1 - j < _DESCRIBING_WORDS and _said_of_an_occasion(tokens[j]):
+        j -= 1
+    if j < 2 or tokens[j].word not in _OCCASION_DETERMINERS:
+        return None
+    if tokens[j - 1].word not in _OCCASION_LINKS:
+        return None
+    thing = [t for t in mentions if t.kind == "item" and t.end == j - 1]
+    if not thing or _speakers_own(tokens, thing[0]):
+        return None
+    return j
+
+
+def _said_of_an_occasion(token: Token) -> bool:
+    """A word that may describe an occasion before its noun: a plain word or a time ("3pm")."""
+    word = token.word
+    if word in DETERMINERS or word in _OCCASION_DETERMINERS or word in _OCCASION_LINKS:
+        return False
+    return _describing(token) or (word.isalnum() and any(c.isdigit() for c in word))
+
+
+def _speakers_own(tokens: Sequence[Token], thing: Mention) -> bool:
+    """Whether an owner word of the speaker opens the phrase of ``thing`` ("my stopwatch")."""
+    k = thing.start - 1
+    while k >= 0 and thing.start - k <= _DESCRIBING_WORDS and _describing(tokens[k]):
+        k -= 1
+    return k >= 0 and tokens[k].word in _SPEAKERS
 
 
 def _noun_after(word: str) -> bool:

@@ -147,6 +147,7 @@ class FrameReader:
         named: Sequence[NamedItem] = (),
         *,
         to_self: bool = False,
+        any_owner: bool = False,
         kept_said: Mapping[str, str] | None = None,
         named_once: str | None = None,
         message_named: Sequence[str] = (),
@@ -156,13 +157,15 @@ class FrameReader:
         who the whole message says has an item now (``holder``), for one given back;
         ``named``: the items the whole message names (``named_items``), for a task whose
         object was no item word of the office; ``to_self``: the requester answered "me" to
-        whom their own item or file goes, so it goes to them, not asked again;
-        ``kept_said``: item type → its one keeper where the whole message says the thing
-        is kept (``said_kept``); ``named_once``: the one colleague the whole message names
-        (``the_one_named``), whom "his" means when the request's own words name nobody;
-        ``message_named``: every colleague it names (``the_ones_named``), whom "them both"
-        means when the request's own words name nobody before it; ``outsider_said``: it
-        describes an outsider and names no colleague, whom "for him" then means."""
+        whom their own item or file goes, so it goes to them, not asked again; ``any_owner``:
+        the requester answered whose the thing is with any owner ("anyone's"), so it is
+        anyone's, not asked again; ``kept_said``: item type → its one keeper where the whole
+        message says the thing is kept (``said_kept``); ``named_once``: the one colleague the
+        whole message names (``the_one_named``), whom "his" means when the request's own
+        words name nobody; ``message_named``: every colleague it names (``the_ones_named``),
+        whom "them both" means when the request's own words name nobody before it;
+        ``outsider_said``: it describes an outsider and names no colleague, whom "for him"
+        then means."""
         if readings.doubt is not None:
             return TaskFrame(requester=requester, question=readings.doubt)
         tokens = readings.tokens
@@ -438,10 +441,12 @@ class FrameReader:
         unsent = self._no_files(tasks)
         if unsent is not None:  # "fwd my invoice pdf to Ravi" where no file is kept
             return TaskFrame(requester=requester, decline=unsent)
+        if any_owner:
+            tasks = [self._anyones(t, requester) for t in tasks]
         question = (
             whom_asked
             or self._uncovered(objects, tasks)
-            or self._whose_service(tasks, readings, requester)
+            or (None if any_owner else self._whose_service(tasks, readings, requester))
             or which_work(self.office, tasks, readings.mentions, requester)
             # "heat up my lunch" from someone with no lunch here: said and asked
             or own_item_unknown(self.office, tasks, requester, self.reader.kinds)
@@ -451,6 +456,7 @@ class FrameReader:
                 to_self,
                 bool(rooms_taken_to(tokens, readings.mentions)),
                 any(t.word == "me" for t in tokens),
+                any_owner=any_owner,
             )
         )
         # "print my file and a coffee": both read, the whole restated before anything moves
@@ -773,11 +779,14 @@ class FrameReader:
         to_self: bool = False,
         to_room: bool = False,
         to_me: bool = False,
+        *,
+        any_owner: bool = False,
     ) -> str | None:
         """The question still open about ``tasks``; ``to_room``: the words take a thing to a
         room, so who gets the requester's own thing is the room's question (whom the message
         says needs it, else who there: ``room_receiver``, ``parts``), not asked here;
-        ``to_me``: the words say "me", so who gets it is said and where it is is asked."""
+        ``to_me``: the words say "me", so who gets it is said and where it is is asked;
+        ``any_owner``: any owner's thing will do, so whose it is is not asked."""
         if not tasks:
             return NOT_UNDERSTOOD
         for t in tasks:
@@ -791,7 +800,8 @@ class FrameReader:
             if done_by_one and (t.actor is None or t.actor == requester):
                 return f"Who should do that with your {name}? Please tell me their name."
             if t.kind == "transfer":
-                if t.owner is None and self.reader.kinds[t.item] == "personal":
+                personal = self.reader.kinds[t.item] == "personal"
+                if t.owner is None and personal and not any_owner:
                     return f"Whose {name} do you mean?"
                 kept = t.owner is not None and self.office.keeper(t.owner, t.item) is not None
                 held = t.source is not None and t.source != t.owner  # "it's on my desk"
@@ -834,6 +844,15 @@ class FrameReader:
                     f"send. If you'd like the paper taken{to} instead, just ask me."
                 )
         return None
+
+    def _anyones(self, task: Task, requester: str) -> Task:
+        """``task`` on anyone's thing where the requester said any owner will do: their own
+        read where they have none is nobody's in particular."""
+        if task.item is None or task.owner != requester:
+            return task
+        if requester in self.office.owners_of(task.item):
+            return task
+        return task.model_copy(update={"owner": None})
 
     def _whose_service(
         self, tasks: Sequence[Task], readings: Readings, requester: str

@@ -70,6 +70,7 @@ from assistantx.agents.symbolic.reading.own_made import read_own_made
 from assistantx.agents.symbolic.reading.own_papers import OwnPapers, personal_papers
 from assistantx.agents.symbolic.reading.paper_head import names_another_paper
 from assistantx.agents.symbolic.reading.paper_parts import part_of_paper
+from assistantx.agents.symbolic.reading.paper_subject import paper_subjects
 from assistantx.agents.symbolic.reading.participle_typos import participle_meant
 from assistantx.agents.symbolic.reading.phrase_typos import PhraseTypos
 from assistantx.agents.symbolic.reading.subject_adverbs import read_subject_adverbs
@@ -850,8 +851,19 @@ class Lexicon:
         mentions = self._paper_parts(tokens, mentions)  # "my CRF pages": the CRF
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
-        mentions = self._own_papers(tokens, mentions)
+        mentions = self._paper_subjects(tokens, self._own_papers(tokens, mentions))
         return self._exactly_spelled(tokens, self._settled_by_owner(tokens, mentions))
+
+    def _paper_subjects(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "sign my requisition for the new staplers": a thing after a worked paper's "for"
+        is what the paper is about (``paper_subject``), a plain word, no thing to fetch."""
+        found = paper_subjects(tokens, mentions, self._papers)
+        return [
+            Mention("word", m.start, m.end, (_said(tokens, m),), m.possessive, m.text)
+            if n in found
+            else m
+            for n, m in enumerate(mentions)
+        ]
 
     def _measured(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "a post-it pad", "a box of staples": an item named by a unit of it, or by the
@@ -1570,3 +1582,8 @@ def inflections(verb: str) -> set[str]:
 
 def _plural(phrase: str) -> str:
     return language.plural(phrase)
+
+
+def _said(tokens: Sequence[Token], m: Mention) -> str:
+    """The words of mention ``m`` as the tokens read them."""
+    return " ".join(t.word for t in tokens[m.start : m.end])

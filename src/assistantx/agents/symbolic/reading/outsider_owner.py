@@ -18,11 +18,16 @@ is the speaker's in hand (the existing reading of "my client's certificate")."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.office import Office
 
 # the determiners a kind of person is named after ("the", "this", "my", "a")
 _DETERMINERS = frozenset({"my", "our", "the", "this", "that", "a", "an", "your"})
+# how many describing words may stand between the determiner and the person's noun
+_DESCRIBING = 2
 # the words an office names its own people with ("the boss's", "my colleague's"): no outsider
 _TITLE_WORDS = english.words("titles")
 _OFFICE_PEOPLE = _TITLE_WORDS | frozenset(
@@ -63,6 +68,31 @@ def common_noun_owner(
     if word in office_people or word in office_words:
         return False
     return language.is_noun(word)
+
+
+def described_before(tokens: Sequence[Token], at: int) -> tuple[str, int] | None:
+    """The determiner before the possessive at token ``at`` and where it stands, past one
+    or two lower-case words that describe the person ("a *new* starter's", "our *external*
+    contractor's"); None where no such words stand between them."""
+    k = at - 1
+    while k >= 0 and at - k <= _DESCRIBING and _describes(tokens[k]):
+        k -= 1
+    if k == at - 1 or k < 0 or tokens[k].word not in _DETERMINERS:
+        return None
+    return tokens[k].word, k
+
+
+def _describes(token: Token) -> bool:
+    """A lower-case word that may describe a person before their noun ("new", "external")."""
+    word = token.word
+    return (
+        token.text[:1].islower()
+        and not token.possessive
+        and not token.opens
+        and word.isalpha()
+        and word not in _DETERMINERS
+        and "ADJ" in language.lemmas(word)
+    )
 
 
 def clause_opening_owner(

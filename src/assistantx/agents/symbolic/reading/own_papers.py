@@ -42,6 +42,8 @@ _PARTICLES = frozenset({"out", "up", "off", "down", "away", "through", "over"})
 _KIND_DETERMINERS = english.words("modifier_determiners")
 # Whom a thing is for, said as the verb's object before it ("print *me* the plan")
 _SPEAKER_OBJECTS = frozenset({"me", "us"})
+# the verbs that have work done on their object ("get my swab tested")
+_CAUSING = frozenset({"get", "have"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
 
 
@@ -150,6 +152,7 @@ class OwnPapers:
                 continue  # "the rota I typed up", read as "my rota": the speaker's own doing
             first, start = (n, at) if article else (n + 1, opener.start)
             head, end = None, opener.start if article else opener.end
+            caused = _causing(tokens, start)
             for k in range(first, min(len(mentions), first + 1 + _MODIFIERS)):
                 m = mentions[k]
                 if m.kind != "word" or m.start != end or tokens[m.start].opens or k in found:
@@ -158,8 +161,15 @@ class OwnPapers:
                     break  # "shred my questionnaire please": the phrase ends before it
                 head, end = k, m.end
             after = mentions[head + 1] if head is not None and head + 1 < len(mentions) else None
+            done = (
+                caused
+                and after is not None
+                and after.start == end
+                and self._work_done(tokens[after.start].word)
+            )
             if head is None or (
-                after is not None
+                not done
+                and after is not None
                 and after.start == end
                 and (after.kind == "item" or (after.kind == "word" and _plain(after.ids[0])))
             ):
@@ -174,11 +184,17 @@ class OwnPapers:
                 continue
             if article and not (_for_the_speaker(tokens, start, end) or topic):
                 continue  # "print the fire drill plan" for nobody said: whose is not known
-            verb = _verb_before(tokens, start)
+            # "get my swab tested": the work is the participle after the thing
+            verb = tokens[end].word if done else _verb_before(tokens, start)
             types = {t for form, ts in self.worked if form == verb for t in ts}
             if len(types) == 1 and (not topic or self._paper_or_file(next(iter(types)))):
                 out[head] = next(iter(types))
         return out
+
+    def _work_done(self, word: str) -> bool:
+        """Whether ``word`` is the past participle of one of the office's operation verbs
+        ("tested", "printed"): the work a causative asks done on the thing before it."""
+        return language.is_past_participle(word) and any(form == word for form, _ in self.worked)
 
     def topic_paper(self, mentions: Sequence[Mention], head: int) -> bool:
         """ "copy the *book* list", "print my *fridge* rota": a word the office names a thing
@@ -286,6 +302,12 @@ def _verb_before(tokens: Sequence[Token], k: int) -> str | None:
     if j >= 1 and tokens[j].word in _SPEAKER_OBJECTS and not tokens[j].opens:
         j -= 1  # "print me my ...", "print me the ...": the verb before whom it is for
     return tokens[j].word if j >= 0 else None
+
+
+def _causing(tokens: Sequence[Token], k: int) -> bool:
+    """Whether the phrase at token ``k`` is the object of a causative's verb ("get my swab
+    tested", "have my form stamped"): the work asked is the participle after it."""
+    return k >= 1 and not tokens[k].opens and tokens[k - 1].word in _CAUSING
 
 
 def _for_the_speaker(tokens: Sequence[Token], start: int, end: int) -> bool:

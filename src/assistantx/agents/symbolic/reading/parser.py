@@ -139,7 +139,11 @@ from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judg
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
-from assistantx.agents.symbolic.reading.several_owners import unowned_mine, with_owner
+from assistantx.agents.symbolic.reading.several_owners import (
+    any_owner_meant,
+    unowned_mine,
+    with_owner,
+)
 from assistantx.agents.symbolic.reading.stated_source import from_stated_source, stated_sources
 from assistantx.agents.symbolic.reading.surface import Said, Surface
 from assistantx.agents.symbolic.reading.time_clause import without_time_clauses
@@ -232,13 +236,15 @@ class InstructionParser:
         sent_out: bool = False,
         to_self: bool = False,
         destination: str | None = None,
+        any_owner: bool = False,
     ) -> TaskFrame:
         """The frame of a request: its pieces lexed and screened (speech acts, withdrawn,
         negated, destructive, facts, unsupported services), the tasks read from what is left,
         then judged. ``confirmed``: the requester already said yes to the restated reading;
         ``sent_out``: a send-out to a colleague's name is meant to leave the office;
         ``to_self``: the requester answered "me" to whom their own item goes;
-        ``destination``: their answer to where a send-out goes (a place outside, as said)."""
+        ``destination``: their answer to where a send-out goes (a place outside, as said);
+        ``any_owner``: they answered "Whose X do you mean?" with any owner ("anyone's")."""
         said = self.surface(text, requester, confirmed=confirmed)  # said in the forms read
         if said.stop is not None:  # a placeholder asked about, a placement declined
             return said.stop
@@ -249,7 +255,9 @@ class InstructionParser:
         asked = without_time_clauses(
             request.text, self.screen.terms.is_person_word, self._task_word
         )
-        frame = self._frame(spoken.msg.lexed, asked, requester, sent_out, to_self, destination)
+        frame = self._frame(
+            spoken.msg.lexed, asked, requester, sent_out, to_self, destination, any_owner
+        )
         decided = self._decide(said, spoken, request, frame, requester)
         if isinstance(decided, TaskFrame):
             return decided
@@ -302,6 +310,7 @@ class InstructionParser:
         sent_out: bool,
         to_self: bool = False,
         destination: str | None = None,
+        any_owner: bool = False,
     ) -> TaskFrame:
         """The tasks of the request the screen left (``request``), read from its readings;
         ``whole`` is the whole message as the lexicon read it for the screen: who has an item
@@ -315,6 +324,7 @@ class InstructionParser:
             holder(whole, requester),
             named_items(whole, requester),
             to_self=to_self,
+            any_owner=any_owner,
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
             named_once=the_one_named(whole, requester),
             message_named=the_ones_named(whole, requester),
@@ -331,7 +341,9 @@ class InstructionParser:
             # the one thing the facility makes is that thing, beside the other objects too
             as_made = self._variety_beside(readings, frame, request)
             if as_made is not None:
-                return self._frame(whole, as_made, requester, sent_out, to_self, destination)
+                return self._frame(
+                    whole, as_made, requester, sent_out, to_self, destination, any_owner
+                )
             # "need cable ties, the art room has some": the one kept where the requester said
             # (said anywhere, also in a statement the screen set aside)
             sources = stated_sources(self.office, whole.tokens, whole.mentions)
@@ -406,7 +418,9 @@ class InstructionParser:
                 # (a supply, a product; a colleague's is offered: "I can get you ...")
                 said = with_choice(request, only[1], only[0])
                 if said is not None and self._anyones(only[0]):
-                    return self._frame(whole, said, requester, sent_out, to_self, destination)
+                    return self._frame(
+                        whole, said, requester, sent_out, to_self, destination, any_owner
+                    )
                 return TaskFrame(requester=requester, question=proposal(only[0]))
             which = category_asked(terms, tokens, mentions)  # "a drink": tea or cocoa?
             unknown = unknown_item(terms, tokens, mentions) if which is None else None
@@ -420,7 +434,9 @@ class InstructionParser:
                 if headed is not None:
                     said = with_choice(request, unlisted[0].split(), headed)
                 if said is not None:
-                    return self._frame(whole, said, requester, sent_out, to_self, destination)
+                    return self._frame(
+                        whole, said, requester, sent_out, to_self, destination, any_owner
+                    )
                 # "50 ml of chloroform from the chem store": declined by name, nothing swapped
                 unknown = self._not_there(*unlisted)
             if which is not None:
@@ -626,6 +642,10 @@ class InstructionParser:
             whose_said = with_whose_and_whom(self.lex, text, frame.question or "", answer)
             if whose_said is not None:  # "Whose stapler should I take ...?" "Zhang's, me"
                 text, frame = whose_said, self.parse(whose_said, requester)
+                continue
+            if any_owner_meant(self.lex, frame.question or "", answer):
+                # "Whose stopwatch do you mean?" "Anyone's, any will do.": any owner's
+                frame = self.parse(text, requester, any_owner=True)
                 continue
             owned = with_owner(self.lex, text, frame.question or "", answer)
             if owned is not None:  # "Several colleagues have a tray: whose ...?" "Bruno's"

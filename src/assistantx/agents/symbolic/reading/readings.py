@@ -42,6 +42,7 @@ from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.outsider_owner import (
     clause_opening_owner,
     common_noun_owner,
+    described_before,
     office_people_words,
     titled_outsider,
 )
@@ -543,6 +544,13 @@ def _unknown_name(
         # "... for the owner's file": a "for" before the determiner says what it is for
         purpose = prev_word(tokens, m.start - 1, skip_titles=False) == "for"
         outsider = outsider or common_noun_owner(word, m.text, prev, people_words, purpose=purpose)
+        # "a new starter's pass", "our external contractor's badge": the same with words that
+        # describe the person between the determiner and the noun
+        described = described_before(tokens, m.start)
+        if described is not None and not outsider:
+            det, at = described
+            purpose = prev_word(tokens, at, skip_titles=False) == "for"
+            outsider = common_noun_owner(word, m.text, det, people_words, purpose=purpose)
         # "..., visitor's pen just ran out": the same with the article dropped, the owner
         # opening a later clause (a reason said after the request)
         opens_clause = m.start > 0 and (tokens[m.start].opens or tokens[m.start].after_pause)

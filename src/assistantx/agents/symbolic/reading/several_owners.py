@@ -21,7 +21,7 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading._parties import Clause, Roles
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import english, language
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task
 from assistantx.core.wording import a_thing
@@ -37,6 +37,11 @@ _ANY = frozenset({"any", "anyones", "anybodys", "whichever", "whoevers"})
 _ASKED = re.compile(rf"^{SEVERAL_HAVE}(?:an?|some|a pair of) (?P<name>.+?)(?: \([^)]*\))?: whose")
 # The frames' own question whose a personal thing is ("Whose document do you mean?")
 _WHOSE = re.compile(r"^Whose (?P<name>.+?) do you mean\?")
+# An answer to "Whose X do you mean?" that any owner's will do: its words, or its phrases
+_ANY_OWNER = english.words("any_owner_words")
+_PHRASES = [re.escape(p) for p in sorted(english.words("any_owner_phrases"))]
+# "doesn't matter", "don't mind": a negation that says any will do
+_NO_MATTER = frozenset({"matter", "mind", "care", "fussed", "bothered"})
 # An answer that takes back what it says ("not mine", "it isn't mine")
 _NOT = frozenset({"not", "no", "nt", "isnt", "aint", "never"})
 
@@ -146,6 +151,22 @@ def with_owner(lex: Lexicon, text: str, question: str, answer: str) -> str | Non
     if not people and words & _ANY:
         return pattern.sub(a_thing(name), text, count=1)  # "any will do": "take a tray ..."
     return None
+
+
+def any_owner_meant(lex: Lexicon, question: str, answer: str) -> bool:
+    """Whether ``answer`` to the frames' "Whose X do you mean?" says any owner's will do
+    ("Anyone's, any will do.", "doesn't matter", "whoever's"), naming nobody (not even the
+    requester: "mine")."""
+    if _WHOSE.match(question) is None:
+        return False
+    said = lex.read(answer)
+    if any(m.kind in ("person", "self") for m in said.mentions):
+        return False
+    folded = language.fold(answer).replace("'", "").replace("’", "")
+    words = set(language.words(folded))
+    if words & _NOT and not words & _NO_MATTER:
+        return False  # "not anyone's": no answer of any owner
+    return bool(words & _ANY_OWNER) or any(re.search(rf"\b{p}\b", folded) for p in _PHRASES)
 
 
 def _said_as(lex: Lexicon, text: str, name: str) -> set[str]:

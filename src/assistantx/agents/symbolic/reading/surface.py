@@ -41,6 +41,7 @@ from assistantx.agents.symbolic.reading.attributive_work import without_attribut
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
+from assistantx.agents.symbolic.reading.caused_reason import caused_then_told
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
 from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
 from assistantx.agents.symbolic.reading.contracted_has_is import spelled_has_is
@@ -426,6 +427,9 @@ STEPS: tuple[Step, ...] = (
         "told_then_asked",
         lambda s, t, a: told_then_asked(t),
     ),
+    # the reason after a causative is a clause of its own, as after a comma
+    # e.g. "get my swab tested the reading looked off on my kit"
+    Step("caused_then_told", lambda s, t, a: caused_then_told(t)),
     # one more, Wang's
     # e.g. "coffee for me and 1 for Wang"
     Step("numeral_ones", lambda s, t, a: numeral_ones(t)),
