@@ -45,3 +45,37 @@ def test_a_send_out_service_asks_where_to_unless_the_readings_found_it(
     assert asked.question is not None and asked.question.startswith(f"{WHERE_TO}courier it to?")
     sent = choose(office, "courier my form to the rowing club", "form")
     assert [(t.operation, t.destination) for t in sent.tasks] == [("courier", "the rowing club")]
+
+
+def _two_makers() -> Office:
+    """A printer and a laminator that both make something from a file, the laminator's
+    service asked for as "make a laminated copy"."""
+    from assistantx.core.office import parse_office
+    from helpers.swab_clinic import raw_swab_clinic
+
+    raw = raw_swab_clinic()
+    for op in raw["operations"]:
+        if op["id"] == "laminate":
+            op["verbs"] = ["laminate", "make a laminated copy"]
+    return parse_office(raw)
+
+
+@pytest.mark.parametrize(
+    ("text", "operations"),
+    [
+        # two services by two verbs: the product named after "make" took both (only the
+        # laminated copy was made)
+        ("print my report and make a laminated copy from it too", ["print", "laminate"]),
+        ("make a laminated copy from my report and print it", ["laminate", "print"]),
+        # must not change: one service each
+        ("make a laminated copy from my report", ["laminate"]),
+        ("print my report", ["print"]),
+    ],
+)
+def test_two_services_said_by_their_own_verbs_are_two_tasks(
+    text: str, operations: list[str]
+) -> None:
+    from assistantx.agents.symbolic.reading.parser import InstructionParser
+
+    frame = InstructionParser(_two_makers()).parse(text, "ines")
+    assert [t.operation for t in frame.tasks] == operations, frame

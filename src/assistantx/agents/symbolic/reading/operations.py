@@ -329,10 +329,15 @@ class OperationChooser:
         # "print spine labels from my list", "get the labels printed": a product named as
         # the object of a generic verb of one shape is made by its own operation; the verb
         # (the printer's "print") is only the means
+        # (only where one word named every service said: "print my artwork and make a plate
+        # from it" says two services by two verbs, each its own task, never the plate only)
         objects = [op for op in fits if op.product in self._verb_objects(lexed, said)]
-        if len(objects) == 1 and {op.shape(self.office) for op in [*said, *objects]} == {
-            objects[0].shape(self.office)
-        }:
+        if (
+            len(objects) == 1
+            and {op.shape(self.office) for op in [*said, *objects]}
+            == {objects[0].shape(self.office)}
+            and self._one_word_for_all(said, set(words))
+        ):
             said = objects
         # "scan my contract to PDF", "send my plan to PDF": the product named says which
         said = said or [op for op in fits if op.product in products]
