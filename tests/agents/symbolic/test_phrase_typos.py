@@ -91,3 +91,20 @@ def test_two_ordinary_words_stay_english() -> None:
 
 def test_a_name_said_exactly_is_unchanged() -> None:
     assert _items("bring me some sticky tape and a paper cup") == ["sticky_tape", "paper_cup"]
+
+
+def test_an_everyday_word_is_no_slip_in_a_name() -> None:
+    """ "my order for ..." is no "order form" typed with a slip: the "for" went to the name (and
+    to a "form" of another thing), so in blind round 180 "sign my purchase order for the new
+    rollers" asked what to do with the rollers."""
+    raw = _raw_print_shop()
+    raw["item_types"].append({"id": "order", "name": "order form", "kind": "personal"})
+    office = ob.parsed(lambda: raw)()
+    lex = InstructionParser(office).lex
+    for text in ("bring my order for the new pen", "bring me my order for Rui"):
+        said = [m.text.lower() for m in lex.read(text).mentions if m.kind == "item"]
+        assert not any("for" in name.split() for name in said), said
+    # must not change: a slip in a word that is no everyday word
+    assert [m.ids for m in lex.read("bring my ordr form").mentions if m.kind == "item"] == [
+        ("order",)
+    ]

@@ -8,18 +8,22 @@ the one left is a single slip from the name's word, that word is the name's.
 The slip is a letter left out or added, or two neighbours swapped ("tac", "tap", "blue"). A
 letter changed for another makes another English word as often as not ("paper cut" beside a
 paper cup), so it is taken for a slip only beside a word English rarely uses ("gaffa tapr").
-A word that is itself one of the office's words is never changed, and a typo as near to the
-words of two names is left alone."""
+A word that is itself one of the office's words is never changed, nor one of English's most
+common words ("for" after "order" is no slip of an "order form": read so, "sign my purchase
+order for the new rollers" lost its "for" to the office's "form" and asked what to do with the
+rollers), and a typo as near to the words of two names is left alone."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Sequence
 
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import language
+from assistantx.core import english, language
 
 # the shortest typed word taken for a slip in a name's word ("tac", "tap")
 _SHORTEST = 3
+# the everyday words ("for", "from", "back") that are never a slip in a name's word
+_COMMON = english.words("common")
 
 
 class PhraseTypos:
@@ -41,7 +45,7 @@ class PhraseTypos:
         self._longest = max((len(p) for p in phrases), default=0)
 
     def _typo(self, word: str) -> bool:
-        return word not in self._said_right and not self._known(word)
+        return word not in self._said_right and not self._known(word) and word not in _COMMON
 
     def read(self, tokens: Sequence[Token]) -> list[Token]:
         """``tokens`` with the one mistyped word of a name of several words read as the
