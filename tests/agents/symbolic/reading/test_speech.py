@@ -87,3 +87,22 @@ def test_withdrawal_and_wishes(acts: SpeechActs) -> None:
     assert acts.wish(split_words("nobody take my mug"))
     assert acts.world_wish(split_words("I wish the printer were faster"))
     assert not acts.wish(split_words("bring me my mug"))
+
+
+@pytest.mark.parametrize(
+    ("text", "told"),
+    [
+        # an adjective and a noun, then a past verb: a subject told of (blind round 177's
+        # "free chlorine looked low on my kit" was read as "free ...!", and the kit asked about)
+        ("free chlorine looked low on my kit", True),
+        ("clean towels ran out this morning", True),
+        # must not change: the same words as commands
+        ("free the stapler from the drawer", False),
+        ("clean my mug please", False),
+        ("print files sent by Wang", False),
+    ],
+)
+def test_an_adjectives_subject_is_told_not_commanded(
+    acts: SpeechActs, text: str, told: bool
+) -> None:
+    assert acts.statement(split_words(text)) is told

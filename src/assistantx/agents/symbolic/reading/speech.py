@@ -803,6 +803,8 @@ class SpeechActs:
             return True  # "van run might be off": a forecast about the thing, told
         if w and subject_of_fault(w, 0):
             return True  # "drive in slot 4 has died": a fault told, context for the ask
+        if _adjective_subject_told(w):
+            return True  # "free chlorine looked low on my kit": told, "free" is no command
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if service_command(w, self.lex.operation_words):
@@ -1382,3 +1384,12 @@ def _doing_after(rest: list[str]) -> bool:
 
 # what a thing had is said to be doing: on its way or waiting somewhere ("got one coming")
 _A_THINGS_WAY = frozenset({"coming", "arriving", "being", "waiting", "sitting", "lying"})
+
+
+def _adjective_subject_told(w: list[str]) -> bool:
+    """ "free chlorine looked low", "clean towels ran out": an adjective and a noun, then a past
+    verb, is a subject told of, never a command whose verb the adjective also is ("free",
+    "clean", "empty"); read as one, the clause's later thing ("on my kit") was asked about."""
+    if len(w) < 3 or "ADJ" not in language.lemmas(w[0]):
+        return False
+    return language.is_noun(w[1]) and language.is_past_verb(w[2])
