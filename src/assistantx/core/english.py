@@ -10,6 +10,7 @@ office file. The file is read once, on first use.
 from __future__ import annotations
 
 import functools
+import re
 from pathlib import Path
 
 import yaml
@@ -59,6 +60,13 @@ def entries(key: str) -> tuple[str, ...]:
         return entries_of()[key]
     except KeyError as exc:
         raise KeyError(f"{WORDS_FILE}: no list {key!r}") from exc
+
+
+def alternation(*keys: str) -> str:
+    """The phrases listed under ``keys`` as one regular-expression alternation, longest first
+    (so "could use" is tried before "could"), the words of a phrase joined by any spaces."""
+    phrases = sorted((p for k in keys for p in entries(k)), key=len, reverse=True)
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
 
 
 def words(key: str) -> frozenset[str]:

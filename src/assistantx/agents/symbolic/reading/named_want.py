@@ -50,9 +50,7 @@ _WANTING = re.compile(
 )
 
 
-def _alternatives(*keys: str) -> str:
-    phrases = sorted((p for k in keys for p in english.entries(k)), key=len, reverse=True)
-    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+_alternatives = english.alternation  # the lists' phrases as one regex alternation
 
 
 # "Zhang is desperate for a coffee", "Zhang's also dying for a tea", "Zhang would kill for a

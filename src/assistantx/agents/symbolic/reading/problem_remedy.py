@@ -26,10 +26,7 @@ from assistantx.agents.symbolic.reading.categories import which_question
 from assistantx.core import english, language
 from assistantx.core.office import Office
 
-
-def _alternatives(key: str) -> str:
-    phrases = sorted(english.entries(key), key=len, reverse=True)
-    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in phrases)
+_alternatives = english.alternation  # the lists' phrases as one regex alternation
 
 
 # "(have you) got anything to sort it out?", "do you have something to fix this with?"

@@ -344,7 +344,7 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: s.round_trip.read(t, s.item_types),
     ),
     # "Pat said I could use her stamp": a transfer
-    # e.g. "Pat ok"d me using her stamp, bring it"
+    # e.g. "Pat ok'd me using her stamp, bring it"
     Step("approved_uses", lambda s, t, a: approved_uses(t)),
     # two requests
     # e.g. "would you mind laminating my badge, and getting my document signed"
@@ -365,7 +365,7 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: sent_files(t, s.is_person, s.as_file),
     ),
     # Wang's file, Zhang's stapler
-    # e.g. "I need the stapler Zhang"s got"
+    # e.g. "I need the stapler Zhang's got"
     Step(
         "held_by_clauses",
         lambda s, t, a: held_by_clauses(t, s.is_person),
@@ -413,10 +413,10 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: also_sent(t, s.paper_makers),
     ),
     # a subject's "has"/"is", no owner
-    # e.g. "Wang"s gone to lunch"
+    # e.g. "Wang's gone to lunch"
     Step("spelled_has_is", lambda s, t, a: spelled_has_is(t)),
     # the "so" starts the ask, as after a comma
-    # e.g. "my stapler"s broken so can I borrow Wang"s"
+    # e.g. "my stapler's broken so can I borrow Wang's"
     Step(
         "consequence_boundaries",
         lambda s, t, a: consequence_boundaries(t),
@@ -434,7 +434,7 @@ STEPS: tuple[Step, ...] = (
     # e.g. "coffee for me and 1 for Wang"
     Step("numeral_ones", lambda s, t, a: numeral_ones(t)),
     # the speaker's taking, asked of Wang
-    # e.g. "I"m borrowing Wang"s stapler for the afternoon"
+    # e.g. "I'm borrowing Wang's stapler for the afternoon"
     Step(
         "announced_borrowings",
         lambda s, t, a: announced_borrowings(t, s.is_person),
@@ -446,7 +446,7 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: with_gapped_verbs(s.lex, t),
     ),
     # the plan is Wang's file
-    # e.g. "Wang"s budget plan? just send me the file"
+    # e.g. "Wang's budget plan? just send me the file"
     Step(
         "named_later",
         lambda s, t, a: named_later(s.lex, t),
@@ -458,7 +458,7 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: without_attributive_work(t, s.work_lemmas, s.office_phrases),
     ),
     # the description is no owner or part; Wang's file
-    # e.g. "Wang"s setting-out file"
+    # e.g. "Wang's setting-out file"
     Step(
         "hyphened_description",
         lambda s, t, a: without_hyphened_description(s.lex, t),
@@ -470,16 +470,16 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: without_paper_parts(s.lex, t),
     ),
     # what a colleague's file is about is no second thing
-    # e.g. "Wang"s pdf of the stapler"
+    # e.g. "Wang's pdf of the stapler"
     Step(
         "file_subject",
         lambda s, t, a: without_file_subject(s.lex, s.office, t),
     ),
     # a copy the office makes electronic, else asked later (kept: ``Said.emailed``)
-    # e.g. "could I have Wang"s report? just email it to me"
+    # e.g. "could I have Wang's report? just email it to me"
     Step("emailed_paper", _emailed_paper),
     # the form picks the office's file or paper
-    # e.g. "Wang"s document, the pdf one"
+    # e.g. "Wang's document, the pdf one"
     Step("picked_form", lambda s, t, a: s.picked_form(t)),
     # to reception
     # e.g. "bring some up to reception"
@@ -542,13 +542,13 @@ STEPS: tuple[Step, ...] = (
         _remedy,
     ),
     # the forms are why the pen is wanted
-    # e.g. "I"ve got 40 forms to sign and no pen"
+    # e.g. "I've got 40 forms to sign and no pen"
     Step(
         "work_as_purpose",
         lambda s, t, a: work_as_purpose(t, s.lacks, s.names_item, s.is_person),
     ),
     # Kit is after one
-    # e.g. "Kit"s after a torch"
+    # e.g. "Kit's after a torch"
     Step("contracted_needs", lambda s, t, a: contracted_needs(t)),
     # it needs one
     # e.g. "my document is due a print"
@@ -563,7 +563,7 @@ STEPS: tuple[Step, ...] = (
     # e.g. "Two things: a pen and a stapler"
     Step("announced_list", lambda s, t, a: announced_list(t)),
     # I need a coffee
-    # e.g. "I"d murder a coffee"
+    # e.g. "I'd murder a coffee"
     Step("wanting_idioms", lambda s, t, a: wanting_idioms(t)),
     # Mo signs it
     # e.g. "could Mo put her signature on it"
@@ -575,34 +575,34 @@ STEPS: tuple[Step, ...] = (
         lambda s, t, a: reported_requests(t, s.one_name),
     ),
     # Wang's desk, so Wang gets it
-    # e.g. "take this book to Wang"s if he"s in"
+    # e.g. "take this book to Wang's if he's in"
     Step(
         "possessive_places",
         lambda s, t, a: possessive_places(t, s.is_person),
     ),
     # which ruler, where it lies; Mark's, to me
-    # e.g. "bring me the ruler at Mark"s desk"
+    # e.g. "bring me the ruler at Mark's desk"
     Step(
         "placed_things",
         lambda s, t, a: placed_things(t, s.is_person),
     ),
     # at Mark's desk, not Mark's ruler fetched too
-    # e.g. "put the ruler next to Mark"s"
+    # e.g. "put the ruler next to Mark's"
     Step(
         "near_possessives",
         lambda s, t, a: near_possessives(t, s.is_person),
     ),
     # a placement the robot cannot make (ends the reading)
-    # e.g. "leave the calculator beside Will"s lamp"
+    # e.g. "leave the calculator beside Will's lamp"
     Step("beside_a_thing", _beside_a_thing),
     # one stapler, Zhang's
-    # e.g. "a stapler, not Wang"s, Zhang"s"
+    # e.g. "a stapler, not Wang's, Zhang's"
     Step(
         "possessive_corrections",
         lambda s, t, a: possessive_corrections(t, s.is_person),
     ),
     # Lee's pen, asked of Lee
-    # e.g. "i need a pen. Lee"s is fine"
+    # e.g. "i need a pen. Lee's is fine"
     Step(
         "accepted_owners",
         lambda s, t, a: accepted_owners(t, s.is_person),
