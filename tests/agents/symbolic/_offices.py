@@ -73,3 +73,14 @@ def tasks_of(name: str, text: str, requester: str) -> list[tuple[str, str | None
     """(kind, item, owner, recipient) of each task, or [] when nothing is to be done yet."""
     frame = parser(name).parse(text, requester)
     return [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]
+
+
+Row = tuple[str, str | None, str | None, str]
+
+
+def understood_tasks(name: str, who: str, text: str) -> list[Row]:
+    """``tasks_of`` where the reader must neither ask nor decline (the frame says which if it
+    did)."""
+    frame = parser(name).parse(text, who)
+    assert frame.question is None and frame.decline is None, frame
+    return [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks]

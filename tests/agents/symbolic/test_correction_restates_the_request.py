@@ -8,16 +8,9 @@ replaces where the request took the thing, and the rest of the request stands
 from __future__ import annotations
 
 import pytest
-from _offices import parser, tasks_of
-
-_Row = tuple[str, str | None, str | None, str]
-
-
-def _tasks(name: str, who: str, text: str) -> list[_Row]:
-    """The tasks read, where the reader neither asks nor declines."""
-    frame = parser(name).parse(text, who)
-    assert frame.question is None and frame.decline is None, frame
-    return tasks_of(name, text, who)
+from _offices import Row as _Row
+from _offices import parser
+from _offices import understood_tasks as _tasks
 
 
 @pytest.mark.parametrize(

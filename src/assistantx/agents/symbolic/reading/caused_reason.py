@@ -14,6 +14,11 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.clause_marks import (
+    WORD,
+    clause_ends_between,
+    with_commas_at,
+)
 from assistantx.core import english, language
 
 _CAUSING = frozenset({"get", "have", "got", "had", "getting", "having"})
@@ -23,15 +28,12 @@ _STATES = english.words("state_verbs")
 _PRONOUNS = english.words("subject_pronouns")
 _NAME_WORDS = 3  # the words of the thing's name between its determiner and the participle
 _SUBJECT_WORDS = 2  # the words of the reason's subject after its determiner
-_WORD = re.compile(r"[\w'’%]+")
-# where a clause ends: a stop, a comma, a colon or a dash
-_CLAUSE_END = re.compile(r"[.!?;,:\n]|\s[-–—]\s")
 
 
 def caused_then_told(text: str) -> str:
     """``text`` with a comma after each causative's participle that a told reason follows
     without one."""
-    words = list(_WORD.finditer(text))
+    words = list(WORD.finditer(text))
     said = [w.group(0).lower() for w in words]
     cuts: list[int] = []
     for n, word in enumerate(said):
@@ -44,14 +46,12 @@ def caused_then_told(text: str) -> str:
             if language.is_past_participle(said[p]) and _reason_at(text, words, said, p + 1):
                 cuts.append(words[p].end())
                 break
-    for at in reversed(cuts):
-        text = f"{text[:at]},{text[at:]}"
-    return text
+    return with_commas_at(text, cuts)
 
 
 def _joined(text: str, words: list[re.Match[str]], n: int, p: int) -> bool:
     """Whether a clause ends between word ``n`` and word ``p``."""
-    return bool(_CLAUSE_END.search(text[words[n].end() : words[p].start()]))
+    return clause_ends_between(text, words[n], words[p])
 
 
 def _reason_at(text: str, words: list[re.Match[str]], said: list[str], k: int) -> bool:

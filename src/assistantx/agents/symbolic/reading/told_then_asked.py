@@ -13,6 +13,11 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.clause_marks import (
+    WORD,
+    clause_ends_between,
+    with_commas_at,
+)
 from assistantx.core import english, language
 
 _POLITE = english.words("polite")
@@ -26,18 +31,15 @@ _ASKING = (
     | english.words("wh_words")
     | _POLITE
 )
-_WORD = re.compile(r"[\w'’%]+")
-# where a clause ends: a stop, a comma, a colon or a dash
-_CLAUSE_END = re.compile(r"[.!?;,:\n]|\s[-–—]\s")
 
 
 def told_then_asked(text: str) -> str:
     """``text`` with a comma before each ask said right after a told state without one."""
-    words = list(_WORD.finditer(text))
+    words = list(WORD.finditer(text))
     cuts: list[int] = []
     start = 0  # the first word of the current clause
     for n, m in enumerate(words):
-        if n > start and _CLAUSE_END.search(text[words[n - 1].end() : m.start()]):
+        if n > start and clause_ends_between(text, words[n - 1], m):
             start = n
         if n - start < 3 or not _ask_at(words, n):
             continue
@@ -46,9 +48,7 @@ def told_then_asked(text: str) -> str:
             continue
         cuts.append(words[n - 1].end())
         start = n
-    for at in reversed(cuts):
-        text = f"{text[:at]},{text[at:]}"
-    return text
+    return with_commas_at(text, cuts)
 
 
 def _ask_at(words: list[re.Match[str]], n: int) -> bool:
