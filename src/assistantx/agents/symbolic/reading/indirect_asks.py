@@ -58,8 +58,12 @@ def _frame_end(w: list[str]) -> int | None:
         return 2  # "would somebody ...", "could you possibly ..."
     if w[0] in _BE and w[1] in _ASKED - _YOU and w[2] == "able":
         return 2  # "is anyone able to grab me ..." ("are you able to" asks what I can do)
+    k = None
     if w[0] in _MODALS and w[1:4] == ["it", "be", "possible"]:
         k = 4  # "would it be possible (for someone) to get ..."
+    elif w[0] in _BE and w[1:3] == ["it", "possible"]:
+        k = 3  # "is it possible (for someone) to bring ...": the same ask, not "is X on?"
+    if k is not None:
         if w[k : k + 1] == ["for"] and w[k + 1 : k + 2] and w[k + 1] in _ASKED:
             k += 2
         return k if w[k : k + 1] == ["to"] else None

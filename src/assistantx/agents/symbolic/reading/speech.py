@@ -63,7 +63,10 @@ from assistantx.agents.symbolic.reading.service_command import service_command
 from assistantx.agents.symbolic.reading.service_noun_subject import service_noun_subject
 from assistantx.agents.symbolic.reading.service_verb_heads import service_asked
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
-from assistantx.agents.symbolic.reading.taken_from_speaker import taken_from_speaker
+from assistantx.agents.symbolic.reading.taken_from_speaker import (
+    mishap_to_thing,
+    taken_from_speaker,
+)
 from assistantx.agents.symbolic.reading.thanks_ahead import thanks_ahead
 from assistantx.agents.symbolic.reading.thing_needs import part_told, work_told
 from assistantx.agents.symbolic.reading.thing_state import state_told
@@ -219,6 +222,8 @@ _NEGATIONS = english.words("statement_negations") | english.words("negative_adve
 _SO = frozenset({"so", "then"})  # a reason, then the request it leads to
 # Words that open how a task would be done, not on what: "print *in* colour", "copy *double*-sided"
 _MANNER = english.words("manner_openers")
+# The words before a facility that is the subject of a wished clause ("if only *the* printer")
+_WISHED_SUBJECT_DETERMINERS = frozenset({"the", "this", "that", "our", "these", "those"})
 _WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
 _FOR_SPEAKER = frozenset({"i", "me", "my", "mine", "id", "im", "ive"})
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
@@ -474,6 +479,8 @@ class SpeechActs:
                 continue
             if taken_from_speaker(w, n, lemmas):
                 continue  # "the intern borrowed mine": why the speaker asks, nothing had
+            if mishap_to_thing(w, n, lemmas):
+                continue  # "I dropped mine down the radiator": why the speaker asks
             after = set(w[n + 1 : n + 4])
             if x in _HAVE_NOW and _doing_after(w[n + 1 : n + 6]):
                 continue  # "we've got a little one going for bloods": someone doing, not had
@@ -622,8 +629,18 @@ class SpeechActs:
         rest = w[len(opener) :]
         if not rest or set(rest) & (_YOU | _FOR_SPEAKER):
             return False
-        mentions = self.lex.scan(self.lex.tokens(" ".join(rest)))
-        return not any(m.kind in ("person", "self", "cue") for m in mentions)
+        tokens = self.lex.tokens(" ".join(rest))
+        mentions = self.lex.scan(tokens)
+        if any(m.kind in ("person", "self") for m in mentions):
+            return False
+        if not any(m.kind == "cue" for m in mentions):
+            return True
+        # "would be great if the coffee machine made hot chocolate one day", "if only the
+        # printer printed in colour": the facility is the wished clause's subject, its task
+        # word what the facility would do, nothing asked of anyone
+        first = min(mentions, key=lambda m: m.start)
+        before = {t.word for t in tokens[: first.start]}
+        return first.kind == "facility" and before <= _WISHED_SUBJECT_DETERMINERS
 
     def thanks(self, words: list[str]) -> Act | None:
         w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])

@@ -20,7 +20,11 @@ from assistantx.agents.symbolic.reading.modal_subject import modals_as_subjects
 from assistantx.agents.symbolic.reading.offers import offered
 from assistantx.agents.symbolic.reading.speech import Act, QuestionKind, SpeechActs, content
 from assistantx.agents.symbolic.reading.subject_adverbs import without_subject_adverbs
+from assistantx.core import english
 
+# Chat's laughs: one that closes a piece ("... if I just walked over myself haha") is no word
+# of it, as one that opens it is an opener (``speech_openers``); read without it.
+_LAUGHS = english.words("chat_laughs")
 # Words that do not change whether a piece withdraws: "oh, never mind", "ok forget it",
 # "just skip it".
 WITHDRAWAL_FILLERS = frozenset({"actually", "oh", "ok", "okay", "please", "just"})
@@ -57,6 +61,14 @@ def without_fillers(words: list[str]) -> list[str]:
     return [w for w in words if w not in WITHDRAWAL_FILLERS]
 
 
+def without_closing_laughs(words: list[str]) -> list[str]:
+    """A piece's words without the laughs that close it ("... myself haha")."""
+    end = len(words)
+    while end > 1 and words[end - 1] in _LAUGHS:
+        end -= 1
+    return words if end == len(words) else words[:end]
+
+
 def _indirect(speech: SpeechActs, words: list[str], asks: bool) -> QuestionKind | None:
     """A polite indirect ask's kind by the verb it asks for; a doubt of what the assistant
     can do ("could you bring it without dropping it?") is left to be answered and offered."""
@@ -79,6 +91,7 @@ def acts_reader(
         return word in lex.people or word in lex.name_words
 
     def read(words: list[str], asks: bool) -> Acts:
+        words = without_closing_laughs(words)
         # "any chance I could nab ...": read as the question it softens ("could I nab ...")
         words = chance_reworded(words) or words
         # "Zhang definitely has to sign": the adverb says how sure, the subject is Zhang's

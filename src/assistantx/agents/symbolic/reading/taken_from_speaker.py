@@ -33,3 +33,27 @@ def taken_from_speaker(words: Sequence[str], at: int, lemmas: Collection[str]) -
     # news that a pen was had, and the request was dropped)
     start = max((n + 1 for n in range(at) if words[n] in _CLAUSE_SUBJECTS), default=0)
     return not set(words[start:at]) & _SPEAKER_SUBJECTS
+
+
+_MISHAP = english.words("mishap_verbs")
+_FALLEN = english.words("fallen_places")
+_HANDING = english.words("handing_particles")
+_FELL_THINGS = frozenset({"it", "them", "one"})
+# how far past a pronoun object the place it fell is looked for ("dropped it *down* the back")
+_FALL_REACH = 3
+
+
+def mishap_to_thing(words: Sequence[str], at: int, lemmas: Collection[str]) -> bool:
+    """Whether the past verb ``words[at]`` tells a mishap to a thing, why the speaker asks
+    ("I dropped mine down the back of the radiator", "dropped my pen", "dropped it on the
+    floor"): a verb of mishap (``mishap_verbs``) with the speaker's own right after it, or a
+    pronoun and where it fell; not "drop" with a handing particle after its object ("Ida
+    dropped one off already": had)."""
+    if not set(lemmas) & _MISHAP:
+        return False
+    after = list(words[at + 1 : at + 1 + _FALL_REACH + 1])
+    if not after or set(after[:3]) & _HANDING:
+        return False
+    if after[0] in _SPEAKERS_OWN | {"our", "ours"}:
+        return True
+    return after[0] in _FELL_THINGS and bool(set(after[1:]) & _FALLEN)

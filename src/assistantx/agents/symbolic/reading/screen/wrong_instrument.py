@@ -61,6 +61,8 @@ def wrong_instrument(terms: Terms, msg: Message, piece: Piece, requester: str) -
         verb = words[at]
         if not language.lemmas(verb).get("VERB"):
             continue
+        if verb not in language.verb_lemmas(verb):
+            continue  # "freezing in the meeting room": a state told, no verb asked (plain)
         forms = {verb, *language.verb_lemmas(verb)}
         if forms & (MOVING | VAGUE | MAKING | ANY_MAKING | _TOSSING):
             continue
