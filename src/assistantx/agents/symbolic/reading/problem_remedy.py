@@ -11,6 +11,14 @@ exactly one thing fits, the ask names it ("got a lint roller?") and the reader's
 of that question answers it ("There is a lint roller in ... Shall I bring you one?"); where
 several fit, or none, which is asked, never "I can't answer that".
 
+A need said by a body part or a complaint ("got anything for my cut finger?", "anything for a
+headache?", "got anything for my hands? they're raw") asks the same: the words of the
+complaint, and of what is said after the ask, are matched against what the things are for
+*beyond* the verb of their purpose (plasters "cover *cuts*"; the scissors' "cut" is their
+verb, not a cut finger) and their head nouns. Where one thing fits it is asked for, where
+several fit which is asked, and where none does the reader says what the office has; a
+complaint that names a thing of the office ("anything for my stapler?") is left as said.
+
 The remedy verbs, their heads and the words of a problem that name nothing are English
 (``remedy_verbs``, ``remedy_heads``, ``remedy_plain_words`` in data/english.yaml); the
 things and what they are for are the office's.
@@ -37,6 +45,16 @@ _ASK = re.compile(
     r"(?=\s*(?:\?|$|please\b|pls\b|\.))",
     re.IGNORECASE,
 )
+# "(got) anything for my cut finger?", "anything for a headache": asked as a sentence of its
+# own (never "bring me something for the meeting"), the complaint up to the ask's end
+_FOR = re.compile(
+    r"(?:^|(?<=[.!?])\s*)\s*(?:(?:have|has|do|does)\s+)?"
+    r"(?:(?:you|u|we|anyone|anybody|someone|somebody)\s+)?(?:(?:got|have|has)\s+)?"
+    rf"(?P<head>\b(?:{_alternatives('remedy_heads')}))\s+for\s+"
+    r"(?P<complaint>(?:(?:my|a|an|the|these|this|sore|bad|achy)\s+)[a-z' ]*?[a-z]+)"
+    r"\s*(?=\?|$|\.|!|,\s*(?:please|pls)\b)",
+    re.IGNORECASE,
+)
 _WORD = re.compile(r"[a-z]+")
 # the words of one thing's purpose or name that may say a problem's matter
 _NAMING = frozenset(english.words("prepositions_and_joins"))
@@ -44,10 +62,12 @@ _NAMING = frozenset(english.words("prepositions_and_joins"))
 
 @dataclass(frozen=True, slots=True)
 class Remedy:
-    """The rewrite of the ask (``text``), or the question where no one thing fits."""
+    """The rewrite of the ask (``text``), or the question where no one thing fits, or
+    (``none_fits``) that nothing of the office is for the complaint said."""
 
     text: str
     question: str | None = None
+    none_fits: bool = False
 
 
 class ProblemRemedies:
@@ -56,6 +76,8 @@ class ProblemRemedies:
     def __init__(self, office: Office) -> None:
         self._plain = english.words("remedy_plain_words") | _NAMING
         self._things: list[tuple[str, str, frozenset[str]]] = []  # id, name, words
+        # the same, with each purpose's own verb left out ("cover *cuts*", never "cut")
+        self._for: list[tuple[str, str, frozenset[str]]] = []
         for t in office.item_types:
             if not t.purposes or t.kind == "electronic":
                 continue
@@ -65,6 +87,10 @@ class ProblemRemedies:
             said = " ".join([*t.purposes, *heads])
             words = frozenset(_forms(_WORD.findall(language.fold(said)))) - self._plain
             self._things.append((t.id, t.name, words))
+            objects = [" ".join(_beyond_verb(p.split())) for p in t.purposes]
+            said_for = " ".join([*objects, *heads])
+            words_for = frozenset(_forms(_WORD.findall(language.fold(said_for)))) - self._plain
+            self._for.append((t.id, t.name, words_for))
 
     def __call__(self, text: str, named: Callable[[str], set[str]]) -> Remedy:
         """``text`` with a remedy asked after a stated problem said as the one thing that
@@ -94,6 +120,35 @@ class ProblemRemedies:
             text,
             "I'm not sure which of the things here would sort that out. What should I bring you?",
         )
+
+    def for_complaint(self, text: str, named: Callable[[str], bool]) -> Remedy:
+        """``text`` with a need said by a complaint ("got anything for my cut finger?") said
+        as the one thing that fits, or the question which, or ``none_fits``; ``named``:
+        whether a phrase names an item, a person or a place of the office."""
+        if not self._things:
+            return Remedy(text)
+        ask = _FOR.search(text)
+        if ask is None or named(ask.group("complaint")):
+            return Remedy(text)
+        said = f"{ask.group('complaint')} {text[ask.end() :]}"
+        words = set(_forms(_WORD.findall(language.fold(said)))) - self._plain
+        if not words:
+            return Remedy(text)
+        names = list(dict.fromkeys(name for _, name, w in self._for if w & words))
+        if len(names) == 1:
+            thing = _one(names[0])
+            return Remedy(f"{text[: ask.start()]}{thing}{text[ask.end() :]}")
+        if names:
+            return Remedy(text, which_question([_one(n) for n in names]))
+        return Remedy(text, none_fits=True)
+
+
+def _beyond_verb(words: list[str]) -> list[str]:
+    """A purpose's words after its own verb ("cover cuts": "cuts"; "grip": none); a purpose
+    that opens with no verb is all its words ("headache relief")."""
+    if words and words[0].lower() in language.verb_lemmas(words[0].lower()):
+        return words[1:]
+    return words
 
 
 def _one(name: str) -> str:

@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from assistantx.agents.symbolic.reading.lacked_purpose import lacked_purposes
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
+from assistantx.agents.symbolic.reading.material_work import material_work
 from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
@@ -208,6 +209,11 @@ class Surface:
         """The item types ``phrase`` names."""
         return {i for m in self.lex.read(phrase).mentions if m.kind == "item" for i in m.ids}
 
+    def names_something(self, phrase: str) -> bool:
+        """Whether ``phrase`` names an item, a person or a place of the office."""
+        named = ("item", "person", "place", "facility")
+        return any(m.kind in named for m in self.lex.read(phrase).mentions)
+
     def work_verb(self, word: str) -> bool:
         """A bare verb of the office's own services or of a colleague's work ("fix",
         "sign"), for a thing sent to someone to have it done."""
@@ -301,6 +307,13 @@ def _remedy(s: Surface, text: str, asked: Asked) -> str | Said:
     """The remedy asked for a problem said before it: the one thing that fits, else which
     (ends the reading)."""
     remedy = s.remedies(text, s.item_types)
+    if remedy.question is not None:
+        return Said(text, TaskFrame(requester=asked.requester, question=remedy.question))
+    # "got anything for my cut finger?": the complaint's remedy, the same way
+    remedy = s.remedies.for_complaint(remedy.text, s.names_something)
+    if remedy.none_fits:
+        nothing = f"As far as I know, nothing here is for that. {s.terms.capabilities()}"
+        return Said(text, TaskFrame(requester=asked.requester, decline=nothing))
     if remedy.question is not None:
         return Said(text, TaskFrame(requester=asked.requester, question=remedy.question))
     return remedy.text
@@ -528,6 +541,14 @@ STEPS: tuple[Step, ...] = (
     Step(
         "seating",
         lambda s, t, a: without_seating(s.terms, t)[0],
+    ),
+    # a need of the thing for the work said, where the material is none of the office's
+    # e.g. "need to cut some string for the parcel, got anything?"
+    Step(
+        "material_work",
+        lambda s, t, a: material_work(
+            t, s.purposes, s.lex.operation_words, s.names_something, s.item_types
+        ),
     ),
     # a need of the thing the office keeps for that use
     # e.g. "Hal has nothing to write with"

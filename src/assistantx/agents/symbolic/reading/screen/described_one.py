@@ -1,6 +1,6 @@
 """A thing said again by "one" with words that describe it: "the cup needs washing, bring me
 a *clean* one", "this ruler is bent, get me a *straight* one", "my pen's dead, a *working*
-one please".
+one please"; a thing said as a pair the same way ("tore my gloves, need a *fresh* pair").
 
 English leaves the noun out after describing words and puts "one" in its place; the words
 between the article and "one" describe the thing, they name no other thing. Read as "another
@@ -15,9 +15,11 @@ from collections.abc import Container
 
 from assistantx.core import language
 
-# "a clean one", "a nice clean one", "a working one": up to two describing words
+# "a clean one", "a nice clean one", "a working one", "a fresh pair": up to two describing
+# words; "a new pair of boots" names its thing, never one said before
 _DESCRIBED_ONE = re.compile(
-    r"\b(?P<article>an?)\s+(?P<words>[^\W\d_]+(?:\s+[^\W\d_]+)?)\s+one\b", re.IGNORECASE
+    r"\b(?P<article>an?)\s+(?P<words>[^\W\d_]+(?:\s+[^\W\d_]+)?)\s+(?:one|pair(?!\s+of\b))\b",
+    re.IGNORECASE,
 )
 
 

@@ -5,7 +5,10 @@ the speaker's own activity, never the request's, so the piece is context, not re
 "I need to get my shoot printed" is no such piece: "get" is an errand's verb. A colleague's
 work said as the speaker's own ("grab me a pen, gotta sign the contracts") is theirs to do,
 and the doing is read before its place or thing is taken for a placement ("can u grab
-bjorns laser, need to check levels on L2")."""
+bjorns laser, need to check levels on L2"). The speaker about to do a thing ("bring me goggles
+and gloves, heading in to weigh", "..., about to print") is theirs too, even where it is a
+service of the office: the going says who does it, so no service is run on the things
+asked."""
 
 from __future__ import annotations
 
@@ -14,12 +17,19 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
-from assistantx.core import language
+from assistantx.core import english, language
 
 _SPEAKER = frozenset({"i", "we", "id", "ive", "im", "ill"})
 # "need to", "have to", "got to", "gotta", "want to": the speaker's own plan or obligation
 _OWN_PLAN = frozenset({"need", "needs", "have", "has", "got", "want", "must", "gotta", "going"})
 _BETWEEN = frozenset({"still", "just", "really", "also", "first", "ve", "got"})
+# "heading in to", "about to": the speaker's own going to do a thing (english.yaml)
+_ABOUT_TO = tuple(tuple(p.split()) for p in english.entries("own_about_to"))
+_SPEAKER_IS = frozenset({"im", "i", "am", "just", "were", "we", "are"})
+# "going to need a pen": a need said, asked, never the speaker's own doing
+_NEEDING = english.words("need_verbs") | english.words("wanting_verbs")
+# "going to get ...", "about to bring ...": an errand's verb, asked
+_ERRANDS = english.words("handing_verbs") | english.words("dative_verbs")
 
 
 def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -33,6 +43,8 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         words = words[1:]
     if wish:  # "I'd like to look under the boiler": a plan of one's own, as "want to"
         words = ["want", *words[2 if words[:1] == ["would"] else 1 :]]
+    if _about_to(words):
+        return Finding("statement", piece, "the speaker's own doing, context only")
     rest = after_plan(words, _OWN_PLAN, _BETWEEN)
     if not rest or rest[0] in terms.service_verbs:
         return None  # "need to heat it up": a service here, asked
@@ -48,6 +60,22 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     if rest[0] in terms.lex.items or rest[0] in terms.office_words:
         return None
     return Finding("statement", piece, "the speaker's own doing, context only")
+
+
+def _about_to(words: list[str]) -> bool:
+    """Whether ``words`` (the speaker's subject dropped) say the speaker is about to do a
+    thing: "heading in to weigh", "about to print the proofs" ("to", then a verb); a need
+    ("going to need a pen") or an errand ("going to get ...") is asked."""
+    while words and words[0] in _SPEAKER_IS:
+        words = words[1:]
+    for phrase in _ABOUT_TO:
+        n = len(phrase)
+        if tuple(words[:n]) == phrase and len(words) > n:
+            verb = words[n]
+            if verb in _NEEDING or verb in _ERRANDS:
+                return False
+            return verb in language.verb_lemmas(verb)
+    return False
 
 
 def infinitive(words: list[str], rest: list[str]) -> bool:
