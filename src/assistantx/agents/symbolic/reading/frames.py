@@ -90,7 +90,7 @@ from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.source_not_recipient import taken_from
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import addressed_person
-from assistantx.agents.symbolic.reading.work_unsaid import which_work
+from assistantx.agents.symbolic.reading.work_unsaid import fetch_or_work, which_work
 from assistantx.core import english, language, task_kinds
 from assistantx.core.asked_to_have import asked_to_have
 from assistantx.core.office import Office
@@ -443,11 +443,15 @@ class FrameReader:
             return TaskFrame(requester=requester, decline=unsent)
         if any_owner:
             tasks = [self._anyones(t, requester) for t in tasks]
+        if to_self:  # "X already has their Y; who should get it?" "Me.": to the requester
+            tasks = [_to_requester(t, requester) for t in tasks]
         question = (
             whom_asked
             or self._uncovered(objects, tasks)
             or (None if any_owner else self._whose_service(tasks, readings, requester))
             or which_work(self.office, tasks, readings.mentions, requester)
+            # "get my costume sorted" where the office mends costumes: fetch, or mend?
+            or fetch_or_work(self.office, tasks, tokens, requester)
             # "heat up my lunch" from someone with no lunch here: said and asked
             or own_item_unknown(self.office, tasks, requester, self.reader.kinds)
             or self._check(
@@ -1313,3 +1317,11 @@ def _besides_owners(
         )
     except UnresolvedPronoun:
         return None
+
+
+def _to_requester(task: Task, requester: str) -> Task:
+    """``task`` handing a colleague's thing to that colleague again, given to the requester
+    instead: the requester answered "me" to who should get it."""
+    if task.kind != "transfer" or task.owner in (None, requester) or task.recipient != task.owner:
+        return task
+    return task.model_copy(update={"recipient": requester})

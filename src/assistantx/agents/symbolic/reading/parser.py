@@ -66,6 +66,10 @@ from assistantx.agents.symbolic.reading.antecedent import (
     unanchored_it,
     with_antecedent,
 )
+from assistantx.agents.symbolic.reading.attributive_name import (
+    attributive_name,
+    with_attribute_chosen,
+)
 from assistantx.agents.symbolic.reading.back_reference_recipient import (
     chosen_recipient,
     recipient_in_doubt,
@@ -162,7 +166,11 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
 )
 from assistantx.agents.symbolic.reading.unnamed_carried import unnamed_carried
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
-from assistantx.agents.symbolic.reading.work_unsaid import WHICH_WORK, with_work
+from assistantx.agents.symbolic.reading.work_unsaid import (
+    WHICH_WORK,
+    with_fetch_or_work,
+    with_work,
+)
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import Task, TaskFrame, TaskKind
@@ -284,6 +292,10 @@ class InstructionParser:
         if doubt is not None:
             # "could I have Wang's plan? Zhang needs the file": Wang's, for me or for Zhang?
             return TaskFrame(requester=requester, question=doubt.question)
+        attribute = attributive_name(self.office, self.lex, spoken.msg.lexed, requester)
+        if attribute is not None:
+            # "bring me the amber accord" where Amber owns one: hers, or an amber one?
+            return TaskFrame(requester=requester, question=attribute)
         if any(e.meaning == RESTATED for e in frame.evidence):
             # "print my file and a coffee": the coffee may be a second request, or not
             screened.confirm = True
@@ -519,6 +531,10 @@ class InstructionParser:
             if op_id is not None:  # "Which do you mean: print or large-format plot?" "plot"
                 frame = self._with_operation(op_id).parse(text, requester)
                 continue
+            attributed = with_attribute_chosen(self.lex, text, frame.question or "", answer)
+            if attributed is not None:  # "the amber accord" → "Amber Shaw's, or ...?" "hers"
+                text, frame = attributed, self.parse(attributed, requester)
+                continue
             chose = with_possessive_chosen(self.lex, text, frame.question or "", answer)
             if chose is not None:  # "grab bills ruler" → "Bill's ruler, or any?" → "any"
                 text, frame = chose, self.parse(chose, requester)
@@ -613,6 +629,10 @@ class InstructionParser:
             served = self._machine_chosen(text, requester, frame.question, answer)
             if served is not None:  # "Print your file, or copy your document?" "Copy."
                 text, frame = served, self.parse(served, requester)
+                continue
+            fetched_or = with_fetch_or_work(self.office, text, frame.question or "", answer)
+            if fetched_or is not None:  # "Shall I bring you your costume, or have it mended?"
+                text, frame = fetched_or, self.parse(fetched_or, requester)
                 continue
             if frame.question is not None and frame.question.startswith(WHICH_WORK):
                 # "do something with my prep" → "vacuum seal or blast chill?" → "vacuum
@@ -813,8 +833,13 @@ class InstructionParser:
 
 
 # The words of an answer that names only the one who asks: "me", "to me", "myself please".
-_ME = frozenset({"me", "myself", "mine", "i", "to", "for", "please", "just", "its", "it", "is"})
+_ME = frozenset(
+    {"me", "myself", "mine", "i", "to", "for", "please", "just", "its", "it", "is", "do", "will"}
+    | {"thanks", "thank", "you", "cheers", "ta"}
+)
 _SELF = frozenset({"me", "myself", "mine"})
+# "I do.", "I will": the requester answering who as the subject of the question's verb
+_I_DO = (("i", "do"), ("i", "will"))
 
 
 def _each_errand_once(frame: TaskFrame) -> TaskFrame:
@@ -851,7 +876,10 @@ def _determined(answer: str) -> bool:
 
 
 def _asks_who(question: str) -> bool:
-    return question.lower().startswith("who ")
+    """Whether ``question`` asks who: "Who should get your reel?", and the same asked after
+    what is known ("Isla Bell already has their case opener; who should get it?")."""
+    asked = question.lower()
+    return asked.startswith("who ") or "; who " in asked
 
 
 def _whom_meant(question: str) -> bool:
@@ -861,6 +889,8 @@ def _whom_meant(question: str) -> bool:
 
 
 def _is_me(answer: str) -> bool:
-    """Whether an answer only names the requester ("Me.", "to me", "myself", "me please")."""
+    """Whether an answer only names the requester ("Me.", "to me", "myself", "me please", "I
+    do")."""
     words = language.words(answer.lower())
-    return bool(words) and set(words) <= _ME and bool(set(words) & _SELF)
+    said_i = any(tuple(words[n : n + 2]) in _I_DO for n in range(len(words) - 1))
+    return bool(words) and set(words) <= _ME and (bool(set(words) & _SELF) or said_i)

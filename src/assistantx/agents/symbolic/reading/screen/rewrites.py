@@ -490,6 +490,10 @@ _POSSESSIVE = re.compile(r"['’]s$")
 _OBJECT_OPENERS = english.words("object_starts") | frozenset({"that"})
 
 
+# A possessive right before the purpose's head: "her thing for ...", "Isla's gadget for ...".
+_OWNER_BEFORE = re.compile(r"(?:\b(?:my|our|your|his|her|their)|[^\W\d_]['’]s?)\s+$", re.IGNORECASE)
+
+
 def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     heads = "|".join(re.escape(h) for h in sorted(terms.en.purpose_heads, key=len, reverse=True))
     links = "|".join(re.escape(h) for h in sorted(terms.en.purpose_links, key=len, reverse=True))
@@ -538,7 +542,11 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         return text, evidence  # none or several: the parser asks which item
     name = types[0]
     evidence.append(Evidence(words=text[match.start() : end], meaning=f"a {name} (to {verb})"))
-    return text[: match.start()] + f"a {name}" + text[end:], evidence
+    # "her thing for opening cases", "Isla's thing for ...": the owner said is its
+    # determiner, so no article ("her a case opener" read "her" as whom it is for)
+    before = text[: match.start()]
+    owned = _OWNER_BEFORE.search(before) is not None
+    return before + (name if owned else f"a {name}") + text[end:], evidence
 
 
 # -- helpers -------------------------------------------------------------------------
