@@ -2,7 +2,10 @@
 read; ``helpers.safety_bench`` is the tests' own office):
 
 - the speaker's own thing broken or dirty, then one borrowed: someone else's, never the
-  speaker's own (class 1; the reader already read these, kept here as must-not-change);
+  speaker's own (class 1: on the tests' office the reader already read these; where the
+  speaker owns one, the state said with "'s" and where it came from ("my cup's dirty from
+  lunch", english ``state_tails``, ``cause_prepositions``) or a part of the thing told of ("my
+  cup handle snapped", ``screen.statement``) failed);
 - a need said by the work the speaker will do to a material the office lacks: the thing
   for that work (class 2, ``reading.material_work``);
 - "a fresh pair" after the speaker's own gloves were named: another pair of those (class 3,
@@ -46,6 +49,43 @@ def test_a_borrowed_one_for_a_broken_own_is_someone_elses(text: str) -> None:
 def test_a_dirty_own_mug_then_one_borrowed() -> None:
     text = "my cup is still dirty from lunch, could you borrow a mug for me"
     assert _tasks(text) == [("transfer", "mug", None, "lee")]
+
+
+# Dang owns a cup in the default office: the borrowed one is still someone else's when the
+# state is said with "'s" and where it came from, or of a part of the speaker's thing.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my cup's still filthy from the meeting, can you borrow a mug for me",
+        "my cup's dirty from lunch, could someone lend me one",
+        "my cup is dirty from the coffee, can someone lend me theirs",
+        "my cup handle just snapped, can someone lend me theirs",
+    ],
+)
+def test_one_borrowed_for_an_own_cup_out_of_use_is_anyones(text: str) -> None:
+    assert understood_tasks("default", "dang", text) == [("transfer", "cup", None, "dang")]
+
+
+def test_a_part_of_an_own_thing_told_then_one_borrowed() -> None:
+    text = "my stapler spring just broke, can someone lend me theirs"
+    assert understood_tasks("default", "dang", text) == [("transfer", "stapler", None, "dang")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a colleague's thing described, not told of: still theirs
+        ("bring me Zhang's dirty cup from the kitchenette", [("transfer", "cup", "zhang", "dang")]),
+        # a part told of with nothing asked: noted
+        ("my cup handle just snapped", []),
+        # the request names its own thing: the told one is context
+        ("my coffee break is at 3, bring me a pen", [("transfer", "pen", None, "dang")]),
+    ],
+)
+def test_own_thing_told_neighbours(
+    text: str, expected: list[tuple[str, str, str | None, str]]
+) -> None:
+    assert tasks_of("default", text, "dang") == expected
 
 
 # -- class 2: the work on a material the office lacks ------------------------------------------

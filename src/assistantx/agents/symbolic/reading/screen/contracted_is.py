@@ -21,8 +21,9 @@ _STATES = frozenset(
     for entry in english.entries(key)
     if " " not in entry
 )
+# ... and where the state came from ("my cup's dirty *from* lunch")
 _TAILS = english.words("state_tails") | frozenset(
-    {"already", "completely", "totally", "again", "too"}
+    {"already", "completely", "totally", "again", "too", "from"}
 )
 # what may follow a participle and still end its clause: "asked for ..." goes on
 _PARTICIPLE_TAILS = frozenset(

@@ -303,6 +303,10 @@ def generic_explanation(terms: Terms, msg: Message, piece: Piece) -> bool:
     return True
 
 
+# whose a thing is, said before it: "*my* stapler spring" is a part of someone's stapler
+_OWNERS = english_words("owner_determiners")
+
+
 def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
     """ "Tea time soon. Could you bring me a ruler?": a fragment with no request wording
     whose items only modify other words ("tea time"), beside a sentence that asks for
@@ -321,6 +325,8 @@ def context_fragment(terms: Terms, msg: Message, piece: Piece) -> bool:
     def compound(m: Mention) -> bool:  # "tea time": the item names a kind of time
         if m.possessive:
             return False  # "my tuner's battery died": the thing whose part it is, no kind
+        if m.start > 0 and tokens[m.start - 1].word in _OWNERS:
+            return False  # "my stapler spring just snapped": someone's thing, and its part
         after = tokens[m.end].word if m.end < len(tokens) else ""
         # "a thermometer down in kennels": a word that is also an adverb of place or
         # direction says where the item is wanted, not what kind of thing it names
@@ -357,8 +363,14 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
     modifying = modifiers(tokens, mentions)
     out: list[str] = []
     for n, m in enumerate(mentions):
+        part_of = _owned_part_of(terms, words, m)
+        if part_of is not None:
+            out.append(f"{part_of}|{'my' if words[m.start - 1] == 'my' else ''}")
+            continue
         if m.kind != "item" or len(m.ids) != 1 or m.start in modifying:
             continue
+        if out and _after_cause(words, m.start):
+            continue  # "my cup is dirty from lunch": the cup is what is told of, not lunch
         k = _past_describing_words(tokens, mentions, n)
         before = mentions[k - 1] if k else None
         whose = ""
@@ -380,6 +392,34 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
                         whose = f"{terms.office.person(owner[0].ids[0]).name}'s"
         out.append(f"{m.ids[0]}|{whose}")
     return out
+
+
+def _owned_part_of(terms: Terms, words: Sequence[str], m: Mention) -> str | None:
+    """ "my *cup* handle just snapped", "her stapler spring broke": a thing of the office
+    after whose it is and before a plain noun that is none of the office's words is the thing
+    a part of which is told of (the lexicon reads it as the noun's modifier); its item."""
+    if m.kind != "word" or m.end - m.start != 1 or m.start == 0 or m.end >= len(words):
+        return None
+    if words[m.start - 1] not in _OWNERS:
+        return None
+    item = terms.lex.items.get(words[m.start])
+    part = words[m.end]
+    if item is None or part in terms.office_words or not language.is_noun(part):
+        return None
+    return item
+
+
+# what opens a phrase of when or from what, after the thing a statement is about ("my cup is
+# dirty *from* lunch", "the stapler's jammed *since* the meeting")
+_CAUSES = english_words("cause_prepositions")
+
+
+def _after_cause(words: Sequence[str], at: int) -> bool:
+    """Whether the word at ``at`` follows one of ``_CAUSES``, with at most an article between."""
+    k = at - 1
+    if k >= 0 and words[k] in ("the", "a", "an", "this", "that"):
+        k -= 1
+    return k >= 0 and words[k] in _CAUSES
 
 
 # "his leftover soup", "Wren's big red ruler": words that describe the item between it and
