@@ -1,0 +1,47 @@
+"""A thing poured or thrown away ("tip the rest of Wang's coffee down the drain", "chuck
+Zhang's old cable out", fix186a class 2): "down the drain" (sink, loo ...) whatever the verb,
+"into the sink" or "away"/"out" with a verb of discarding and no one the thing goes to, is
+disposal (``screen.destructive``): declined, never a fetch of the colleague's thing nor the
+office's coffee made. Making, giving, taking out and putting read as before."""
+
+from __future__ import annotations
+
+import pytest
+from _offices import parser, understood_tasks
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "tip the rest of Wang's coffee down the drain, it's gone cold",
+        "pour Wang's coffee down the sink",
+        "pour away Wang's coffee",
+        "pour Wang's coffee away",
+        "empty Wang's water into the sink",
+        "chuck Zhang's old cable out, it's frayed",
+        "tip out Zhang's cable",
+        "chuck Zhang's old cable in the skip, it's frayed",  # as before
+    ],
+)
+def test_disposal_is_declined(text: str) -> None:
+    frame = parser("default").parse(text, "lee")
+    assert not frame.tasks, frame
+    assert frame.decline is not None and "won't" in frame.decline, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "tasks"),
+    [
+        ("pour me a coffee", [("produce", "coffee", None, "lee")]),
+        ("pour Wang a coffee", [("produce", "coffee", None, "wang")]),
+        ("pour out a coffee for Wang", [("produce", "coffee", None, "wang")]),
+        ("chuck me Wang's stapler", [("transfer", "stapler", "wang", "lee")]),
+        ("take Wang's lunch out of the fridge", [("transfer", "lunch", "wang", "lee")]),
+        ("get the paper out for me", [("transfer", "paper", None, "lee")]),
+        ("print out my report", [("print", "file", "lee", "lee")]),
+    ],
+)
+def test_other_verbs_read_as_before(
+    text: str, tasks: list[tuple[str, str, str | None, str]]
+) -> None:
+    assert understood_tasks("default", "lee", text) == tasks
