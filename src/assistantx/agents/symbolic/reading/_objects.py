@@ -93,7 +93,11 @@ def modifiers(
         if asked and m.kind in ("item", "cue") and any(a <= m.start <= b for a, b in occasions):
             out.add(m.start)  # "Wang's stapler for the contract signing": an occasion, why
             continue
-        if m.kind == "word" and m.ids[0] in REASON_CONJUNCTIONS and asked:
+        if (
+            m.kind == "word"
+            and asked
+            and (m.ids[0] in REASON_CONJUNCTIONS or _reason_as(tokens, m))
+        ):
             in_purpose = True  # "... because there's no money for new stopwatches": context
             continue
         if asked and _object_word(tokens, m):
@@ -179,6 +183,23 @@ def _purpose(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bo
     if nxt.kind == "cue":
         return any(m.kind == "item" for m in mentions[n + 2 :])
     return False
+
+
+# The subjects after which "as" opens a reason ("..., as he prefers it on paper"), never the
+# "as" of a manner or a comparison ("as soon as you can", "as a PDF")
+_REASON_AS_SUBJECTS = english.words("subject_pronouns") - english.words("addressee_pronouns")
+
+
+def _reason_as(tokens: Sequence[Token], m: Mention) -> bool:
+    """ "print my report for Mao as he prefers it on paper": "as" then a subject pronoun and
+    a word after it opens a reason clause, like "because"; what it names is context."""
+    k = m.start
+    return (
+        tokens[k].word == "as"
+        and k + 2 < len(tokens)
+        and tokens[k + 1].word in _REASON_AS_SUBJECTS
+        and tokens[k + 2].word.isalpha()
+    )
 
 
 def _subject_of_state(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:

@@ -69,6 +69,45 @@ def destructive(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
             # "chuck Ellis's drawings in the recycling": the office's own disposal, by a
             # verb that is no errand, of a colleague's thing: refused, not noted as told
             return _declined(terms, piece, f"put {owner}'s things in the {container}", what="")
+    if commanded(terms, piece) and (said := _thrown_away(terms, piece)) is not None:
+        return _declined(terms, piece, said, what="")
+    return None
+
+
+_DRAINS = tuple(tuple(p.split()) for p in english.entries("drain_places"))
+_DISCARDING = english.words("discarding_verbs")
+_AWAY = english.words("discarding_particles")
+# Who a thing thrown "out" goes to after all ("chuck me out a pen", "tip some out for Wang")
+_RECEIVING = english.words("receiver_pronouns") | {"for", "to"}
+
+
+def _thrown_away(terms: Terms, piece: Piece) -> str | None:
+    """What the request throws away, said as the refusal names it: its thing sent "down the
+    drain" (or the sink, the loo) whatever the verb, emptied "into the sink" by a verb of
+    discarding, or thrown "away"/"out" by one ("chuck Zhang's cable out", "pour away Wang's
+    coffee") with no one it goes to. A verb of the office's own work or of giving ("take it
+    out", "print out my report") and a verb of storing ("stash it away") are never one."""
+    words = piece.words
+    at = piece.verb_at(terms.en.lead_in)
+    if at >= len(words):
+        return None
+    verb = words[at]
+    forms = {verb, *language.verb_lemmas(verb)}
+    discarding = bool(forms & _DISCARDING)
+    served = bool(forms & terms.lex.operation_words)  # "pour out a coffee": the office's work
+    for n in range(at + 1, len(words)):
+        word = words[n]
+        k = n + 1
+        while k < len(words) and words[k] in DETERMINERS:
+            k += 1
+        drain = next((d for d in _DRAINS if starts_with(words, k, d)), None)
+        if drain is not None and (word == "down" or (discarding and word in _INTO)):
+            return f"pour things down the {' '.join(drain)}"
+        if word not in _AWAY or not discarding or (served and word != "away"):
+            continue  # "pour away" throws away even where the office pours
+        if not (k < len(words) and words[k] == "of"):
+            if not set(words[at + 1 :]) & _RECEIVING:
+                return f"{verb} things {word}"
     return None
 
 

@@ -44,6 +44,7 @@ _MOVING = (
     | english.words("handing_verbs")
     | english.words("putting_verbs")
 )
+_TOSSING = english.words("tossing_verbs")
 _MAKING = english.words("making_verbs")  # "make", "pour", "brew": whatever the office makes
 # the making verbs said of any work at all ("make my report into a pdf", "make me a copy")
 _ANY_MAKING = frozenset({"make", "do", "get", "produce", "create", "prepare"})
@@ -103,7 +104,10 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         # "pour up my impressions": a verb only of the office's services, none of which works
         # on or makes the thing after it (checked below, once the thing is read)
         misfit = _service_only(terms, verb, lemmas)
-        if _known(terms, verb, lemmas) and not misfit:
+        # "tip Zhang's cable", "hurl Wang's stapler": a verb only of tossing a thing somewhere,
+        # no errand's, read below on a colleague's thing said nowhere to go
+        tossed = _only_tossed(terms, verb, lemmas)
+        if _known(terms, verb, lemmas) and not misfit and not tossed:
             vague = bool(lemmas & _VAGUE)
             if not vague:
                 return None
@@ -122,6 +126,8 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         lexed = terms.lex.read(after)
         if not _object_first(lexed) or _goes_somewhere(lexed):
             return None
+        if tossed and not _colleagues_first(lexed, requester):
+            return None  # "chuck my lunch", "tip the paper": read as before
         if at == 0 and not particle and not _opens_phrase(lexed):
             return None  # "coffee plz, double espresso": a word of the thing's kind, no verb
         whole_sub = terms.lex.read(sub.text)
@@ -171,6 +177,33 @@ def _known(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
         or forms & terms.en.service_verbs
         or forms & terms.office_words
         or forms & _DATA_VERBS
+    )
+
+
+def _only_tossed(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
+    """Whether the verb is one only of tossing a thing in or on something ("chuck", "tip",
+    "hurl", "stash": english.yaml tossing_verbs), none of the office's work, task words or
+    verbs of giving and fetching: with nowhere said, it never asks for the thing brought
+    (fix186a class 2: "tip Zhang's cable" fetched it for the speaker)."""
+    forms = {verb, *lemmas}
+    return bool(forms & _TOSSING) and not (
+        forms & terms.lex.cue_words
+        or forms & terms.service_verbs
+        or forms & terms.en.service_verbs
+        or forms & terms.office_words
+        or forms & _MOVING
+    )
+
+
+def _colleagues_first(lexed: Lexed, requester: str) -> bool:
+    """Whether the words after the verb open with a colleague's possessive ("Zhang's")."""
+    first = lexed.mentions[0] if lexed.mentions else None
+    return (
+        first is not None
+        and first.start == 0
+        and first.kind == "person"
+        and first.possessive
+        and first.ids != (requester,)
     )
 
 

@@ -121,6 +121,8 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
     for m in mentions:
         if m.kind != "item" or not _made_here(terms, m) or _named_for(tokens, mentions, m):
             continue
+        if _in_a_proper_name(tokens, breaks, m):
+            continue  # "post my parcel to Blue Kettle Coffee": a place's name, no product
         start = m.start
         while (
             start > 0
@@ -153,6 +155,36 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         if span is not None:
             return Variant(m.ids[0], tuple(t.text for t in said), authority, *span)
     return None
+
+
+# The words a proper name after "to" or "at" may hold uncapitalised ("Bank *of* England")
+_NAME_JOINS = frozenset({"of", "and", "&", "the", "on", "upon", "de", "la"})
+# What opens the name of a place a thing goes to or is at
+_PLACE_OPENERS = frozenset({"to", "at"})
+
+
+def _in_a_proper_name(tokens: tuple[Token, ...], breaks: tuple[str, ...], m: Mention) -> bool:
+    """Whether the product's name is written capitalised inside a proper name of two words or
+    more, opened by "to" or "at" ("post my parcel to *Blue Kettle Coffee* on Mill Street",
+    "ship it to *Coffee Republic*"): a business, a street or a town, where the thing goes;
+    the office's product word in it is a part of the name, never a product asked for."""
+    if not all(t.text[:1].isupper() for t in tokens[m.start : m.end]):
+        return False
+    start = m.start
+    while start > 0 and not breaks[start].strip() and _name_word(tokens[start - 1]):
+        start -= 1
+    end = m.end
+    while end < len(tokens) and not breaks[end].strip() and _name_word(tokens[end]):
+        end += 1
+    while start < m.start and tokens[start].word in _NAME_JOINS:
+        start += 1  # "to the Blue Kettle Coffee": the article is no part of the name
+    if start == 0 or tokens[start - 1].word not in _PLACE_OPENERS:
+        return False
+    return sum(1 for t in tokens[start:end] if t.text[:1].isupper()) >= 2
+
+
+def _name_word(token: Token) -> bool:
+    return token.text[:1].isupper() or token.word in _NAME_JOINS
 
 
 def _named_for(tokens: tuple[Token, ...], mentions: tuple[Mention, ...], m: Mention) -> bool:
