@@ -9,6 +9,7 @@ from __future__ import annotations
 import functools
 
 import pytest
+from _offices import understood_tasks
 
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.core.office import Office
@@ -102,6 +103,34 @@ def test_the_rewrite_leaves_wants_of_the_request(text: str) -> None:
 def test_the_rewrite_drops_the_reason() -> None:
     said = "scan my duty return pls, customs want a pdf"
     assert without_format_reasons(said, lambda w: False) == "scan my duty return pls"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could you print my spreadsheet and hand it to Manager Mao? he'd like it on paper",
+        "print my spreadsheet for Mao, he wants a paper copy",
+        "copy my report for Wang since she needs it on paper",
+    ],
+)
+def test_the_want_of_the_one_served_is_the_reason(text: str) -> None:
+    """The colleague the request already serves, named again by a pronoun wanting the
+    result in some form: why it is asked, never a second errand (paper brought to the
+    speaker was a wrong physical action)."""
+    tasks = understood_tasks("default", "dang", text)
+    assert len(tasks) == 1 and tasks[0][0] in ("print", "copy") and tasks[0][3] in ("mao", "wang")
+
+
+@pytest.mark.parametrize(
+    ("text", "kept"),
+    [
+        ("print my sheet, she wants it on paper", True),  # nobody named before: whose want?
+        ("print my sheet for Mao, he wants it on paper", False),
+    ],
+)
+def test_the_rewrite_drops_a_pronouns_want_only_after_a_person(text: str, kept: bool) -> None:
+    said = without_format_reasons(text, lambda w: w.lower() == "mao")
+    assert (said == text) is kept
 
 
 async def test_the_scan_comes_back_to_the_requester() -> None:
