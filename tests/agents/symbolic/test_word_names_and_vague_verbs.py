@@ -1,4 +1,4 @@
-"""Fixer 186d's classes of the reader (analogues of outside testers' sentences, none of them),
+"""Round 186's classes of the reader (analogues of outside testers' sentences, none of them),
 on a tack room of our own (``helpers.tack_room``): asking a colleague named by a lower-case
 surname to borrow "her thing for <purpose>", and "me" answered to who should get it; a
 colleague's name that is also a describing word before a thing they own; a service said as

@@ -1,4 +1,4 @@
-"""Fixer 175d's classes of the reader (analogues of outside testers' sentences, none of them):
+"""Round 175's classes of the reader (analogues of outside testers' sentences, none of them):
 a colleague's content asked for with its form said in the next sentence; a service's -ing form
 as a modifier of a noun; a room, facility or team said as who does a service; a problem said,
 then a remedy asked for. Each with neighbours whose reading must stay."""

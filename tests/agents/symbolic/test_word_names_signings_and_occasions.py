@@ -1,4 +1,4 @@
-"""Fixer 175c's reader classes, by mechanism, on sentences of our own against the default
+"""Round 175's reader classes, by mechanism, on sentences of our own against the default
 office, harbour (whose colleagues have word names: Grace, Mark, Rose, May, Will) and harbour
 with a stapler May and Rose own (the dataset's harbour has none):
 

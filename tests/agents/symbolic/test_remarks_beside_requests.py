@@ -1,4 +1,4 @@
-"""What asks nothing and what does ask (fix186b), on the default office as Lee and on
+"""What asks nothing and what does ask (round 186), on the default office as Lee and on
 harbour as May:
 
 * a mishap to the speaker's own thing told beside a request ("can anyone lend me a pen? I
