@@ -35,8 +35,10 @@ def _alternation(phrases: Iterable[str]) -> str:
 
 # The thing said going for the service: "my harness", "the van", "this buckle's strap".
 # (a word of its name is no preposition: "send my harness *to Tom* for inspection" is not one)
+# A pronoun too, for the thing said before it ("the strings on my racket are shot, can it go
+# for a restring": ``referent`` reads "it" after this).
 _THING = (
-    r"(?P<thing>(?:my|our|the|this|that|these|those|his|her|their)"
+    r"(?P<thing>(?:it|them)(?=\s)|(?:my|our|the|this|that|these|those|his|her|their)"
     r"(?:\s+(?!(?:to|for|in|off|away|out|over|with|from|at|by)\b)[^\W\d_][\w-]*){1,3}?)"
 )
 
@@ -62,10 +64,13 @@ class DueService:
                 rf"(?=(?:(?:{_OPENERS})\s+)?(?:[a-z0-9-]+\s+){{0,2}}?"
                 rf"(?:{_alternation(phrases)})\b)"
             )
-            # "can my harness go in for (an) inspection", "send my harness off for inspection"
+            # "can my harness go in for (an) inspection", "send my harness off for inspection",
+            # "book my racket in for a restring"
             self._goes = re.compile(
-                rf"\b(?:(?:can|could|will|would|may|should)\s+{_THING}\s+(?:go|be\s+sent)"
-                rf"|send\s+{_THING.replace('thing', 'sent')})"
+                rf"\b(?:(?:can|could|will|would|may|should)\s+{_THING}\s+"
+                rf"(?:go|be\s+(?:sent|booked))"
+                rf"|(?:(?:can|could|will|would)\s+you\s+(?:please\s+)?)?(?:send|book)\s+"
+                rf"{_THING.replace('thing', 'sent')})"
                 rf"\s+(?:(?:in|off|away|out)\s+)?for\s+{service}",
                 re.IGNORECASE,
             )

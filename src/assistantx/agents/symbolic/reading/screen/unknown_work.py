@@ -76,6 +76,10 @@ _WAYS_OF = frozenset({"my", "our", "his", "her", "their", "your"})
 # A noun phrase's first word: the verb's object follows it at once ("polish *my* boots"), never
 # a clause ("just so you know *I* need ...", "hope *you* won't mind ...")
 _OPENING = english.words("determiners") - {"me"}
+# The determiners that say a particular thing, one there already to work on ("*the* desk")
+_DEFINITE = frozenset({"the", "this", "that", "these", "those"})
+_NAME_REACH = 3  # the words of a thing's name after "the": "the Amati copy", "the old desk"
+_WORDS = re.compile(r"\b[^\W\d_][\w'’-]*")
 # Where a thing is put, said after it ("chuck my prunings *in* the compost", "*on* charge"):
 # a placement, another rule's; said before it ("the hem *on* my sample") it is the object's
 _PUT = frozenset({"to", "into", "onto", "in", "on", "at", "from", "via", "inside", "under"})
@@ -124,7 +128,11 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None  # "chuck a hairnet my way": towards the speaker, an errand
         after = " ".join(rest[particle:])
         lexed = terms.lex.read(after)
-        if not _object_first(lexed) or _goes_somewhere(lexed):
+        # "lacquer the violin for me": a verb with no particle on a thing said definitely is
+        # work on that thing, the speaker its beneficiary ("track down a stapler for me" gets
+        # one, as before)
+        worked = not particle and bool(lexed.tokens) and lexed.tokens[0].word in _DEFINITE
+        if not _object_first(lexed) or _goes_somewhere(lexed, for_self=worked):
             return None
         if tossed and not _colleagues_first(lexed, requester):
             return None  # "chuck my lunch", "tip the paper": read as before
@@ -153,6 +161,10 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         if not items and not vague and _service_word_as_object(lexed):
             # "frame this print": the office's work named as a thing, worked on by a verb
             # nothing here has; never the print asked for
+            return _declined(terms, piece, said)
+        if not items and not vague and worked and _named_thing(lexed, _names(sub.text)):
+            # "lacquer the Amati copy", "varnish the desk": a thing the office does not list,
+            # which no verb of its work or errands names; a person does it, never the robot
             return _declined(terms, piece, said)
         if not items:
             return None  # "could you tidy up the kitchen": nothing of the office to carry
@@ -238,7 +250,19 @@ def _made(office: Office, forms: set[str], thing: str) -> bool:
 def _noun_use(lexed: Lexed, at: int) -> bool:
     """Whether the word at token ``at`` follows a determiner ("frame *this print*", "the
     scan"): a noun there, never the office's verb asked."""
-    return at > 0 and lexed.tokens[at - 1].word in _OPENING
+    if at > 0 and lexed.tokens[at - 1].word in _OPENING:
+        return True
+    # "the Amati copy": a copy of a named instrument or model, after a capitalised name that
+    # follows a determiner; never the copy operation's product
+    named = lexed.tokens[at - 1] if at > 1 else None
+    after = lexed.tokens[at + 1 : at + 2]
+    return (
+        named is not None
+        and (not after or after[0].word == "for")  # "let the Gaffer sign my form": a verb
+        and named.text[:1].isupper()
+        and not named.opens
+        and lexed.tokens[at - 2].word in _OPENING
+    )
 
 
 def _service_word_as_object(lexed: Lexed) -> bool:
@@ -273,12 +297,30 @@ def _object_first(lexed: Lexed) -> bool:
     )
 
 
-def _goes_somewhere(lexed: Lexed) -> bool:
+def _names(text: str) -> frozenset[str]:
+    """The words capitalised inside ``text`` (not its first word), folded: names."""
+    said = _WORDS.findall(text)[1:]
+    return frozenset(w.lower() for w in said if w[:1].isupper() and not w.isupper())
+
+
+def _named_thing(lexed: Lexed, names: frozenset[str]) -> bool:
+    """Whether the words after the definite determiner name a thing: a noun, or a capitalised
+    name ("the Amati copy"), with no person, place or facility among them."""
+    if any(m.kind in ("person", "place", "facility") for m in lexed.mentions):
+        return False
+    said = [t.word for t in lexed.tokens[1:]]
+    if said[-2:] in (["for", "me"], ["for", "us"]):
+        said = said[:-2]  # "varnish the desk for me": the speaker its beneficiary
+    # the noun phrase alone, never a clause after it ("let the Gaffer sign my form")
+    return 0 < len(said) <= _NAME_REACH and all(w in names or language.is_noun(w) for w in said)
+
+
+def _goes_somewhere(lexed: Lexed, *, for_self: bool = False) -> bool:
     """A person named other than as an owner ("for Wang", "for me"), or a place or machine:
     the thing goes there or is done there, no work the reader lacks a verb for ("could you
     track down a stapler for me" gets one, whatever the verb). The speaker is no receiver of
     their own thing ("could you polish my stapler for me": work on it, asked of me)."""
-    own = any(m.kind == "self" and m.possessive for m in lexed.mentions)
+    own = for_self or any(m.kind == "self" and m.possessive for m in lexed.mentions)
     return any(
         (m.kind == "person" and not m.possessive)
         or (m.kind == "self" and not m.possessive and not own)
