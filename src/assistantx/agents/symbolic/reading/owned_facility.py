@@ -19,20 +19,39 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
+from assistantx.core.office import Office
 
 # The possessives that say whose a thing is: the requester's own ("my") or a colleague's.
 _OWNERS = frozenset({"self", "person"})
 _COMMON = english.words("common")
 
 
-def owned_facility(mentions: Sequence[Mention], tokens: Sequence[Token]) -> str | None:
-    """The first phrase "my/Grace's <facility>" as said; None when there is none."""
+def owned_facility(
+    mentions: Sequence[Mention], tokens: Sequence[Token], office: Office
+) -> str | None:
+    """The first phrase "my/Grace's <facility>" as said; None when there is none. "from
+    Priya's cabinet", Priya one who looks after it, names the facility as where a thing comes
+    from (``keepers_place``), no thing of hers."""
     for before, m in itertools.pairwise(mentions):
         if m.kind != "facility" or before.end != m.start:
+            continue
+        if _keepers_own(office, tokens, before, m):
             continue
         if before.kind in _OWNERS and before.possessive and not runs_into_a_noun(tokens, m):
             return " ".join(t.text for t in tokens[before.start : m.end])
     return None
+
+
+# the words before "<colleague>'s <facility>" that make it where a thing is taken from
+_FROM = frozenset({"from", "off", "of"})
+
+
+def _keepers_own(office: Office, tokens: Sequence[Token], owner: Mention, m: Mention) -> bool:
+    """ "from Priya's cabinet" where Priya looks after the cabinet: the place, named by its
+    keeper."""
+    if owner.kind != "person" or owner.start == 0 or tokens[owner.start - 1].word not in _FROM:
+        return False
+    return any(p in office.facility(f).guards for f in m.ids for p in owner.ids)
 
 
 def runs_into_a_noun(tokens: Sequence[Token], m: Mention) -> bool:

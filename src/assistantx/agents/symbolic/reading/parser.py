@@ -95,6 +95,7 @@ from assistantx.agents.symbolic.reading.group_answered import with_one_of_group
 from assistantx.agents.symbolic.reading.headed_supply import headed_supply
 from assistantx.agents.symbolic.reading.her_or_hers import with_her_or_you
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
+from assistantx.agents.symbolic.reading.keepers_place import from_keepers_place, keepers_places
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
 from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
@@ -363,6 +364,12 @@ class InstructionParser:
             if unclear_source is not None:
                 return TaskFrame(requester=requester, question=unclear_source)
             frame = frame.model_copy(update={"tasks": tasks})
+            # "get a tube from Priya's cabinet": the supply kept where Priya looks after it
+            places = keepers_places(self.office, whole.tokens, whole.mentions)
+            tasks, unclear_place = from_keepers_place(self.office, frame.tasks, places)
+            if unclear_place is not None:
+                return TaskFrame(requester=requester, question=unclear_place)
+            frame = frame.model_copy(update={"tasks": tasks})
             unclear = unanchored_it(self.office, whole, frame.tasks)
             if unclear is not None:  # "print it", nothing said that "it" could be
                 return TaskFrame(requester=requester, question=unclear)
@@ -562,6 +569,12 @@ class InstructionParser:
                     )
             if frame.question is not None and "Shall I" in frame.question:
                 screened = self.screen.screen(text, requester)
+                if not screened.offer:
+                    # "anything for my sore hands?" is asked as "got a hand cream?" (the
+                    # surface's remedy): the offer is the one the reading asked
+                    restated = self.surface(text, requester)
+                    if restated.stop is None and restated.text != text:
+                        screened = self.screen.screen(restated.text, requester)
                 offer = screened.offer
                 if offer and screened.outcome != "done" and not_known(answer):
                     # "Shall I get you an ordinary coffee instead?" "Sorry, I don't know

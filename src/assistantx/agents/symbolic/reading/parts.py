@@ -105,7 +105,7 @@ def unread_part(
     if left_out is not None:
         return left_out
     phrase = (
-        owned_facility(readings.mentions, readings.tokens)
+        owned_facility(readings.mentions, readings.tokens, office)
         or unread_compound(
             office, readings.mentions, [t.text for t in readings.tokens], _inputs(office, frame)
         )

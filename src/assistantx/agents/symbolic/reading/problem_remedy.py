@@ -15,8 +15,10 @@ A need said by a body part or a complaint ("got anything for my cut finger?", "a
 headache?", "got anything for my hands? they're raw") asks the same: the words of the
 complaint, and of what is said after the ask, are matched against what the things are for
 *beyond* the verb of their purpose (plasters "cover *cuts*"; the scissors' "cut" is their
-verb, not a cut finger) and their head nouns. Where one thing fits it is asked for, where
-several fit which is asked, and where none does the reader says what the office has; a
+verb, not a cut finger) and their head nouns. Where one thing fits the ask stays a
+question about it ("got anything for my knees?": "got a plaster?", answered and offered,
+"Shall I bring you one?": only the yes brings it; "..., please" asks for it), where several
+fit which is asked, and where none does the reader says what the office has; a
 complaint that names a thing of the office ("anything for my stapler?") is left as said.
 
 The remedy verbs, their heads and the words of a problem that name nothing are English
@@ -56,6 +58,8 @@ _FOR = re.compile(
     re.IGNORECASE,
 )
 _WORD = re.compile(r"[a-z]+")
+# how a complaint's ask said with no verb ("anything for a headache?") is asked for one thing
+_GOT = "got"
 # the words of one thing's purpose or name that may say a problem's matter
 _NAMING = frozenset(english.words("prepositions_and_joins"))
 
@@ -112,7 +116,7 @@ class ProblemRemedies:
         ]
         names = list(dict.fromkeys(name for _, name in fits))
         if len(names) == 1:
-            thing = _one(names[0])
+            thing = _asked_as_question(text, ask.start(), ask.end(), _one(names[0]))
             return Remedy(f"{text[: ask.start()]}{thing}{text[ask.end() :]}")
         if names:
             return Remedy(text, which_question([_one(n) for n in names]))
@@ -136,11 +140,31 @@ class ProblemRemedies:
             return Remedy(text)
         names = list(dict.fromkeys(name for _, name, w in self._for if w & words))
         if len(names) == 1:
-            thing = _one(names[0])
-            return Remedy(f"{text[: ask.start()]}{thing}{text[ask.end() :]}")
+            # still a question ("got anything for my knees?" → "got a plaster?"): answered,
+            # and the thing offered; only a yes brings it
+            head = ask.start("head")
+            thing = _asked_as_question(text, head, ask.end(), _one(names[0]))
+            return Remedy(f"{text[:head]}{thing}{text[ask.end() :]}")
         if names:
             return Remedy(text, which_question([_one(n) for n in names]))
         return Remedy(text, none_fits=True)
+
+
+# the end of a clause before an ask ("my coat is covered in dog hair, anything to ...?")
+_CLAUSE_END = re.compile(r"[.,;:!?()\-–—]")
+# an ask said as a request ("..., please"), not as a question
+_PLEASE = re.compile(r"\s*,?\s*(?:please|pls)\b", re.IGNORECASE)
+
+
+def _asked_as_question(text: str, start: int, end: int, thing: str) -> str:
+    """The one thing that fits, said in place of the ask at ``start``..``end``: after the
+    ask's own question words ("got", "do you have") as it is; with none ("anything for a
+    headache?", "..., anything to sort it out?") said as "got <thing>", so the message stays
+    a question, answered and offered, never a fetch unasked; said with "please", the thing."""
+    clause = _CLAUSE_END.split(text[:start])[-1]
+    if _WORD.search(clause.lower()) or _PLEASE.match(text[end:]):
+        return thing
+    return f"{_GOT} {thing}"
 
 
 def _beyond_verb(words: list[str]) -> list[str]:

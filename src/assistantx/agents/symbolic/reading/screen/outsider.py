@@ -56,6 +56,10 @@ _WHERE = english.words("location_prepositions")
 _STOPS = _STARTS | _TO | english.words("clause_joins") | english.words("polite") | {"then"}
 _OFFICE_KINDS = frozenset({"person", "group", "item", "place", "facility"})
 _MOST_MODIFIERS = 3  # "the tall delivery guy"
+# "get someone to sign it", "have somebody check it": a verb whose object does the next verb
+_DOER_VERBS = english.words("doer_verbs_to") | english.words("doer_verbs_bare")
+# "someone", "anybody", "a person": a doer said without naming anyone
+_UNNAMED = english.words("unnamed_doers")
 
 
 @dataclass(frozen=True)
@@ -241,6 +245,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
         before = tokens[start - 1].word if start > 0 else ""
         if before == "for" and nxt < len(tokens) and tokens[nxt].word == "to":
             continue  # "would it be possible for someone to fetch me …": the doer, not whom
+        if before in _DOER_VERBS and _unnamed_doer(tokens, n):
+            continue  # "get someone to sign my contract": who does it is open, asked later
         given = before in _GIVING and _item_after(mentions, n)
         if before not in _TO and not given:
             continue
@@ -328,6 +334,18 @@ def _requester_receives(msg: Message) -> bool:
                     return True
                 break
     return False
+
+
+def _unnamed_doer(tokens: tuple[Token, ...], at: int) -> bool:
+    """Whether the word at ``at`` is a doer that names nobody ("someone") and a verb of its
+    own follows ("get someone to sign my contract", "have somebody check it"): the one who
+    should do the work, not whom a thing goes to, and that one is not said."""
+    if tokens[at].word not in _UNNAMED:
+        return False
+    nxt = at + 1
+    if nxt < len(tokens) and tokens[nxt].word == "to":
+        nxt += 1
+    return nxt < len(tokens) and bool(language.verb_lemmas(tokens[nxt].word))
 
 
 def _item_at(mentions: Sequence[Mention], at: int) -> bool:
