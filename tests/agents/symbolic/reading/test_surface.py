@@ -25,6 +25,7 @@ from helpers.music_school import music_school
 ORDER = [
     "pictographs",
     "undotted",
+    "excluded_owners",
     "placeholder",
     "place_doers",
     "lent_verbs",
@@ -98,6 +99,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 EXAMPLES: dict[str, str] = {
     "pictographs": "bring me a pen and no marker 😩",
     "undotted": "bring the book to Dr. Grace Huang",
+    "excluded_owners": "could u bring me a stapler? anyone's but Wang's",
     "placeholder": "bring me the thing from the fridge",
     "place_doers": "tore my apron, can laundry stitch it up?",
     "lent_verbs": "get my contract notarized",
@@ -161,6 +163,7 @@ EXAMPLES: dict[str, str] = {
 EFFECTS: dict[str, tuple[str, str, str]] = {
     "pictographs": ("default", "😩", ""),
     "undotted": ("default", "Dr.", "Dr Grace"),
+    "excluded_owners": ("default", "anyone's but", "? not Wang's"),
     "place_doers": ("costume shop", "laundry stitch", "you stitch it up at the laundry"),
     "lent_verbs": ("law firm", "notarized", "sealed"),
     "spelled_are": ("default", " r ", "mine are blunt"),

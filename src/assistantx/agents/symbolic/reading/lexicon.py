@@ -1380,6 +1380,8 @@ class Lexicon:
         found = set(ids)
         if len(idx) == 1 and tokens[idx[0]].corrected:
             typed = tokens[idx[0]].typed
+            if typed.endswith("s") and typed[:-1] == tokens[idx[0]].word:
+                return tuple(sorted(found))  # "wangs": Wang's without its apostrophe, no typo
             keys = [k for k in (*self.people, *self.name_words) if " " not in k]
             for key in language.within(typed, keys, language.typo_limit(typed) + 1):
                 found |= self.people.get(key, set()) | self.name_words.get(key, set())

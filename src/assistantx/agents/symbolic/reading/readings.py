@@ -539,7 +539,17 @@ def _unknown_name(
         # "the trustees' file", "the governors' report doc": a plural of people in lower
         # case, its apostrophe after the s, after a determiner: a kind of paper, no name
         kind_of_person = kind_of_person or kind_of_people(tokens, m)
-        outsider = lower and prev in _OUTSIDER_DETERMINERS and word in _OUTSIDERS
+        # "client's laptop lost a key": the same with the article dropped where the owner
+        # opens the message or a clause of it; an office's own word for its people asks
+        bare = m.start == 0 or tokens[m.start].opens or tokens[m.start].after_pause
+        outsider = lower and word in _OUTSIDERS and word not in people_words
+        outsider = outsider and (prev in _OUTSIDER_DETERMINERS or bare)
+        # "mr okafor's order is in my tray, ...": a title and a name nobody of the office has,
+        # opening the message or a clause, is a stranger whose thing is told of, no colleague
+        # to ask about ("bring me Mr Smith's stapler" asks for it: who is meant is asked)
+        title = m.start - 1
+        told = title == 0 or (title > 0 and (tokens[title].opens or tokens[title].after_pause))
+        outsider = outsider or (titled_outsider(prev) and told)
         # "the chiropodist's invoice": any common noun names a kind of person, not a list
         # "... for the owner's file": a "for" before the determiner says what it is for
         purpose = prev_word(tokens, m.start - 1, skip_titles=False) == "for"

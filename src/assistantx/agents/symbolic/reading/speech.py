@@ -39,6 +39,7 @@ from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.done_passive import reports_done_work
 from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
+from assistantx.agents.symbolic.reading.grumble import grumble, grumbled
 from assistantx.agents.symbolic.reading.handed_to_named import handed_to_named
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
@@ -162,6 +163,14 @@ _BARE_COPULAS = frozenset({"is", "are", "was", "were", "has", "have"})
 _OTHERS_LACKS = tuple(tuple(p.split()) for p in english.entries("others_lack_phrases"))
 _LACK_JOINERS = english.words("others_lack_joiners")
 _THIRD_PERSONS = frozenset({"he", "she", "they"})
+# people named by what they are, nobody of the office ("client", "patient")
+_OUTSIDER_NOUNS = english.words("outsider_nouns") - english.words("statement_subjects")
+
+
+def _outsider_possessive(word: str) -> bool:
+    """ "clients" from "client's": a noun naming an outsider by what they are, with its
+    possessive "s" (the words are folded: "customers" of "customer's")."""
+    return word.endswith("s") and word[:-1] in _OUTSIDER_NOUNS
 
 
 def _verb_like(word: str) -> bool:
@@ -806,6 +815,8 @@ class SpeechActs:
         w = self._one_word_name(self._untitled(after_sequence_word(content(words))))
         if len(w) < len(content(words)) and wanted_done_by(w):
             return False  # "and then the original signed by Dr Rao": a wanted state, asked
+        if grumbled(words, self._named):
+            return True  # "ugh", "argh Frank": an interjection of annoyance, to a colleague or not
         if declines_more(w, self.lex.items):
             return True  # "no more water for me thanks": the speaker wants none
         if reports_done_work(w, self._asking_verb):
@@ -830,6 +841,8 @@ class SpeechActs:
             # "a copy of my file printed for Zhang please": asked, not told ("pls is the
             # stapler here": a "please" that opens a question is read with the question)
             return False
+        if grumble(w, self.lex.items.__contains__):
+            return True  # "ugh still miles to go with these invoices": venting, told
         if work_told(w, self.lex.items, self._work_words):
             return True  # "the cup needs washing": how the thing is, not the thing asked for
         if part_told(w, self.lex.items, self._work_words):
@@ -898,6 +911,10 @@ class SpeechActs:
         ):
             return True  # "two parcels going out with Otto later": under way, context
         possessive = self._possessive_name(w[0])  # "Hal's clipboard snapped"
+        # "client's laptop lost a key": an outsider's thing, its article dropped
+        possessive = possessive or _outsider_possessive(w[0])
+        # "Mr Okafor's order is ...": the title taken off (``_untitled``), a stranger's thing
+        possessive = possessive or (len(w) < len(words) and self._stranger_possessive(w[0]))
         if (
             w[0] not in _SUBJECTS
             and not self._named(w[0])
@@ -1307,7 +1324,20 @@ class SpeechActs:
         reads as "Osei signed it"): the subject is the person, the title no verb."""
         if len(w) > 1 and w[0] in _PERSON_TITLES and self._named(w[1]):
             return w[1:]
+        if len(w) > 2 and w[0] in _PERSON_TITLES and self._stranger_possessive(w[1]):
+            return w[1:]  # "Mr Okafor's order is ...": a stranger's thing, its owner no verb
         return w
+
+    def _stranger_possessive(self, word: str) -> bool:
+        """ "okafors" of "Mr Okafor's": a possessive after a title, of a name nobody of the
+        office has (a colleague's own is ``_possessive_name``)."""
+        return (
+            word.endswith("s")
+            and not self._named(word[:-1])
+            and not self._named(word)
+            and word not in _SUBJECTS
+            and not _verb_like(word)
+        )
 
     def _causative(self, w: list[str]) -> bool:
         """ "have Ines stamp my lease", "have the Boss sign it": "have", a person's name or

@@ -51,6 +51,7 @@ from assistantx.agents.symbolic.reading.described_items import (
 )
 from assistantx.agents.symbolic.reading.due_service import DueService
 from assistantx.agents.symbolic.reading.emailed_paper import BRING, EmailedPaper, emailed_paper
+from assistantx.agents.symbolic.reading.excluded_owner import excluded_owners
 from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
@@ -335,6 +336,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # any owner's but one colleague's: that colleague's ruled out
+    # e.g. "could u bring me a stapler? anyone's but Wang's"
+    Step("excluded_owners", lambda s, t, a: excluded_owners(t)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),
