@@ -24,7 +24,7 @@ from assistantx.agents.symbolic.reading.compound_heads import modifies_a_noun
 from assistantx.agents.symbolic.reading.forwarded_theirs import forwarded_phrase
 from assistantx.agents.symbolic.reading.mention_view import MentionView as Mention
 from assistantx.agents.symbolic.reading.tokens import Token
-from assistantx.core import english, language
+from assistantx.core import english, language, task_kinds
 from assistantx.core.office import Office
 from assistantx.memory.names import normalize
 
@@ -115,6 +115,8 @@ class OwnPapers:
     worked: tuple[tuple[str, frozenset[str]], ...] = ()
     # the words of the office's names of things and facilities: what a paper may be about
     topics: frozenset[str] = frozenset()
+    # each form of a person's work on a paper with a tool ("stamp") → the office's paper
+    person_worked: tuple[tuple[str, frozenset[str]], ...] = ()
 
     @classmethod
     def from_office(cls, office: Office) -> OwnPapers:
@@ -124,6 +126,7 @@ class OwnPapers:
             office.file_type(),
             _worked_on(office),
             _item_name_words(office) | _facility_name_words(office),
+            _person_worked_on(office),
         )
 
     def guessed(
@@ -187,6 +190,13 @@ class OwnPapers:
             # "get my swab tested": the work is the participle after the thing
             verb = tokens[end].word if done else _verb_before(tokens, start)
             types = {t for form, ts in self.worked if form == verb for t in ts}
+            if not types and article and word not in DOCUMENT_NOUNS and _phrase_ends(tokens, end):
+                # "seal the cert for me" ("my" papers are the seal's own paper in the frames
+                # already: "stamp my lease with his embosser"): a person's work, on a phrase
+                # that ends there (a word after it may go on naming the paper: "sign my
+                # merch *order* form" is read by the paper's own names); an everyday paper
+                # noun ("my lease") is the office's paper by ``found``, no guess
+                types = {t for form, ts in self.person_worked if form == verb for t in ts}
             if len(types) == 1 and (not topic or self._paper_or_file(next(iter(types)))):
                 out[head] = next(iter(types))
         return out
@@ -310,6 +320,19 @@ def _causing(tokens: Sequence[Token], k: int) -> bool:
     return k >= 1 and not tokens[k].opens and tokens[k - 1].word in _CAUSING
 
 
+# what may follow a paper's phrase at its end ("stamp the cert *for* me", "... *please*")
+_PHRASE_ENDS = frozenset({"for", "with", "please", "pls", "plz", "thanks", "asap", "today"})
+
+
+def _phrase_ends(tokens: Sequence[Token], end: int) -> bool:
+    """Whether the noun phrase ending before token ``end`` ends there: the text's or the
+    clause's end, or a word that never goes on naming a thing."""
+    if end >= len(tokens):
+        return True
+    after = tokens[end]
+    return after.opens or after.after_pause or after.word in _PHRASE_ENDS
+
+
 def _for_the_speaker(tokens: Sequence[Token], start: int, end: int) -> bool:
     """Whether the phrase from ``start`` to ``end`` is said to be for the speaker: "me" just
     before it ("print me the fire drill plan") or "for me" just after ("print the plan for
@@ -337,14 +360,34 @@ def _worked_on(office: Office) -> tuple[tuple[str, frozenset[str]], ...]:
     operations it names take."""
     types: dict[str, set[str]] = {}
     for op in office.operations:
-        if op.input is None:
-            continue
-        for verb in op.verbs:
-            words = language.fold(verb).split()
-            if len(words) == 1:
-                for form in language.verb_forms(words[0]) | {words[0]}:
-                    types.setdefault(form, set()).add(op.input)
+        if op.input is not None:
+            for verb in op.verbs:
+                _add_forms(types, verb, op.input)
     return tuple((form, frozenset(ts)) for form, ts in types.items())
+
+
+def _person_worked_on(office: Office) -> tuple[tuple[str, frozenset[str]], ...]:
+    """Each form of the verbs of a person's work on a paper done with a tool ("stamp",
+    "seal": the task kinds that work on an item of a property with a tool), with the office's
+    item of that property ("seal the cert for me": the office's seal is no thing to bring)."""
+    types: dict[str, set[str]] = {}
+    for kind_id in task_kinds.person_kinds():
+        spec = task_kinds.kind(kind_id)
+        paper = office.type_with(spec.works_on) if spec.works_on else None
+        # only a work done with a tool of the office ("seal", "stamp"), whose verb may be
+        # read as the tool's name; signing a paper nobody lists is asked about as before
+        if paper is not None and spec.tool is not None:
+            for verb in spec.words or english.kind_words(kind_id):
+                if language.verb_lemmas(verb):
+                    _add_forms(types, verb, paper)
+    return tuple((form, frozenset(ts)) for form, ts in types.items())
+
+
+def _add_forms(types: dict[str, set[str]], verb: str, item: str) -> None:
+    words = language.fold(verb).split()
+    if len(words) == 1:
+        for form in language.verb_forms(words[0]) | {words[0]}:
+            types.setdefault(form, set()).add(item)
 
 
 def _item_name_words(office: Office) -> frozenset[str]:
