@@ -62,6 +62,8 @@ from assistantx.agents.symbolic.reading.needs_met import (
     needs_said_again,
     same_work,
     says_a_need,
+    says_an_unnamed_need,
+    unnamed_need_met,
 )
 from assistantx.agents.symbolic.reading.one_from import one_from, owned_as_one_from
 from assistantx.agents.symbolic.reading.original_back import (
@@ -176,6 +178,7 @@ class FrameReader:
         previous_roles = Roles()  # the roles of the clause before
         previous_asked: list[str] = []  # whom the clause before asked ("could Liu read ...")
         previous_need = False  # the clause before said someone needs something
+        previous_unnamed_need = False  # ... someone named by what they are ("an intern")
         from_need: list[Task] = []  # the tasks made by clauses that say a need
         previous_ops: set[str] = set()  # the operations the clause before named by verb
         previous_places: set[str] = set()  # the places the clause before named
@@ -333,7 +336,13 @@ class FrameReader:
                 # "Priya needs the agenda, print it for her", "Chen needs my contract, make
                 # her a copy": the work on the needed thing (by "it", or unsaid) meets it
                 tasks.pop()
+            # "an intern needs a stapler. could you bring a stapler (one) to Wang?": one, to
+            # Wang, never a second for the speaker the need was read as
+            unnamed_need = previous_unnamed_need
+            if tasks and unnamed_need and unnamed_need_met(tasks[-1], made, requester):
+                tasks.pop()
             previous_need = says_a_need(clause, tokens)
+            previous_unnamed_need = says_an_unnamed_need(clause, tokens)
             if tasks and len(made) == 1 and _for_another(tasks[-1], made[0], clause, requester):
                 # "please scan my invoice. Mark needs a scan of it": the same work, and whom
                 # its product is for; one scan, handed to Mark
@@ -395,6 +404,8 @@ class FrameReader:
             if maker is not None:
                 pass  # the product asked for before, now with its maker (above)
             elif again is not None:
+                if tasks and unnamed_need and unnamed_need_met(tasks[-1], [again], requester):
+                    tasks.pop()
                 tasks.append(again)  # "make me a coffee and bring Tam one too": Tam's own
             elif made:
                 tasks = [*_without_subsumed(tasks, made), *made]

@@ -7,6 +7,11 @@ the same person ("print it for her") is how the need is met, so the need's task 
 it. The work a need names, asked for again for the same person ("needs a printout ...,
 print one for her"), is one print. An errand said as two requests ("send Priya my agenda and
 print it for her") keeps both: only a need gives way.
+
+An unnamed person's need ("an intern needs a stapler", "one of the beginners needs a marking
+pen"), then a hand-over of that thing to a colleague ("could you bring one to Wang?"): the
+colleague is how it reaches them; the need read as the speaker's own made a second one for the
+speaker (``unnamed_need_met``).
 """
 
 from __future__ import annotations
@@ -14,7 +19,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._parties import Clause
-from assistantx.agents.symbolic.reading.tokens import Token
+from assistantx.agents.symbolic.reading.outsider_need import outsider_wants
+from assistantx.agents.symbolic.reading.speech import content
+from assistantx.agents.symbolic.reading.tokens import Token, clause_start
 from assistantx.core import english, task_kinds
 from assistantx.core.task_schema import Task
 
@@ -70,3 +77,32 @@ def needs_said_again(tasks: Sequence[Task], from_need: Sequence[Task]) -> list[T
         if not any(same_work(n, t) for n in said):
             out.append(t)
     return out
+
+
+# "*one of the* beginners needs ...": one of a group named by what they are
+_ONE_OF = ("one", "of")
+
+
+def says_an_unnamed_need(clause: Clause, tokens: Sequence[Token]) -> bool:
+    """Whether a clause says a person named by what they are needs something ("an intern
+    needs a stapler", "one of the beginners needs a pen"), nobody of the office."""
+    if not clause.mentions:
+        return False
+    # the article before the first mention is no mention: from the clause's first word
+    start, end = clause_start(tokens, clause.mentions[0].start), clause.mentions[-1].end
+    words = content([t.word for t in tokens[start:end]])
+    if tuple(words[:2]) == _ONE_OF:
+        words = words[2:]
+    return outsider_wants(words)
+
+
+def unnamed_need_met(need: Task, made: Sequence[Task], requester: str) -> bool:
+    """Whether ``made`` hands the thing an unnamed person needs (read as the speaker's) to
+    a colleague: that hand-over meets the need, which is no errand of its own."""
+    return (
+        need.kind in _HANDING
+        and need.recipient == requester
+        and any(
+            t.kind == need.kind and t.item == need.item and t.recipient != requester for t in made
+        )
+    )
