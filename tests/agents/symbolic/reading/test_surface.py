@@ -25,6 +25,7 @@ from helpers.music_school import music_school
 ORDER = [
     "pictographs",
     "undotted",
+    "hyphened_nouns",
     "excluded_owners",
     "placeholder",
     "place_doers",
@@ -99,6 +100,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 EXAMPLES: dict[str, str] = {
     "pictographs": "bring me a pen and no marker 😩",
     "undotted": "bring the book to Dr. Grace Huang",
+    "hyphened_nouns": "could you bring me a pen for the warm-up drill?",
     "excluded_owners": "could u bring me a stapler? anyone's but Wang's",
     "placeholder": "bring me the thing from the fridge",
     "place_doers": "tore my apron, can laundry stitch it up?",
@@ -163,6 +165,7 @@ EXAMPLES: dict[str, str] = {
 EFFECTS: dict[str, tuple[str, str, str]] = {
     "pictographs": ("default", "😩", ""),
     "undotted": ("default", "Dr.", "Dr Grace"),
+    "hyphened_nouns": ("default", "warm-up", "the warmup drill"),
     "excluded_owners": ("default", "anyone's but", "? not Wang's"),
     "place_doers": ("costume shop", "laundry stitch", "you stitch it up at the laundry"),
     "lent_verbs": ("law firm", "notarized", "sealed"),

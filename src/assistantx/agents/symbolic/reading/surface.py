@@ -57,6 +57,7 @@ from assistantx.agents.symbolic.reading.form_said_after import with_form_said_af
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.hurried_errand import hurried_errands
+from assistantx.agents.symbolic.reading.hyphened_nouns import hyphened_nouns
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
@@ -336,6 +337,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # a verb and its particle hyphened before a noun: one noun, no work asked
+    # e.g. "could you bring me a pen for the warm-up drill?"
+    Step("hyphened_nouns", lambda s, t, a: hyphened_nouns(t, s.terms.office_words)),
     # any owner's but one colleague's: that colleague's ruled out
     # e.g. "could u bring me a stapler? anyone's but Wang's"
     Step("excluded_owners", lambda s, t, a: excluded_owners(t)),
