@@ -55,6 +55,7 @@ from assistantx.agents.symbolic.reading.excluded_owner import excluded_owners
 from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
+from assistantx.agents.symbolic.reading.group_member import group_member
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.hurried_errand import hurried_errands
 from assistantx.agents.symbolic.reading.hyphened_nouns import hyphened_nouns
@@ -340,6 +341,9 @@ STEPS: tuple[Step, ...] = (
     # a verb and its particle hyphened before a noun: one noun, no work asked
     # e.g. "could you bring me a pen for the warm-up drill?"
     Step("hyphened_nouns", lambda s, t, a: hyphened_nouns(t, s.terms.office_words)),
+    # one of a group as a clause's subject: that one person, told of
+    # e.g. "bring me a cup please, one of the interns took mine"
+    Step("group_member", lambda s, t, a: group_member(t, s.terms.office_words)),
     # any owner's but one colleague's: that colleague's ruled out
     # e.g. "could u bring me a stapler? anyone's but Wang's"
     Step("excluded_owners", lambda s, t, a: excluded_owners(t)),
