@@ -12,8 +12,10 @@ ending so ("tape dispenser") says no more than that the thing is a kind of it: a
 A head of two types' names ("roller" of a paint roller and a lint roller) is no one type's:
 which of them is asked (``unknown_items.category_asked``), never guessed. A head that is
 already a word of the office (a name, another type's synonym, a task word), that ends a
-facility's or a place's name too ("machine" of "coffee machine"), or that is a unit noun ("a
-*pad*", "a *set*": a unit of anything) is never read so.
+facility's or a place's name too ("machine" of "coffee machine"), that is said inside a
+facility's, a place's or another type's name ("aid" of "band-aid" where the office has a
+"first aid room" and a "first aid bag"), or that is a unit noun ("a *pad*", "a *set*": a unit
+of anything) is never read so.
 """
 
 from __future__ import annotations
@@ -66,12 +68,22 @@ def head_names(
     by several types (singular → their ids, in the office's order). ``items``: (name key,
     type id) of every name and synonym of the office's item types; ``others``: the keys of
     its facilities' and places' names; ``known``: whether a word is already the office's."""
+    items = list(items)
+    others = list(others)
     taken = {_singular(head) for key in others if (head := head_of(key))}
+    # a word inside another name, before its head ("aid" of "first aid bag", "first aid
+    # room"): "from first aid" names that place or thing, never "band-aids" by their head
+    inside = {w for key in others for w in key.split()[:-1]}
     one: dict[str, str] = {}
     shared: dict[str, tuple[str, ...]] = {}
-    for head, counted in _heads(items).items():
+    heads = _heads(items)
+    for key, type_id in items:
+        for w in key.split()[:-1]:
+            if heads.get(w) and set(heads[w]) != {type_id}:
+                inside.add(w)
+    for head, counted in heads.items():
         forms = (head, language.plural(head))
-        if head in _UNITS or head in taken or any(known(f) for f in forms):
+        if head in _UNITS or head in taken or head in inside or any(known(f) for f in forms):
             continue
         if len(counted) > 1:
             shared[head] = tuple(counted)
