@@ -29,9 +29,7 @@ def hyphened_nouns(text: str, office_words: Container[str]) -> str:
 
     def join(m: re.Match[str]) -> str:
         verb, particle = m.group("verb"), m.group("particle")
-        joined = (verb + particle).lower()
-        spaced = f"{verb} {particle}".lower()
-        if joined in office_words or spaced in office_words:
+        if (verb + particle).lower() in office_words:
             return m.group(0)
         if not language.is_noun(m.group("noun")) or m.group("noun").lower() in office_words:
             return m.group(0)  # "the print-out to Mao", "the print-out paper"

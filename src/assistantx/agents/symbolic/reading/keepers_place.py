@@ -51,7 +51,7 @@ def keepers_places(
     office: Office, tokens: Sequence[Token], mentions: Sequence[Mention]
 ) -> list[KeepersPlace]:
     """The places "from <colleague>'s <place word>" the message says a thing comes from."""
-    names = {w for f in office.facilities for n in (f.name, *f.synonyms) for w in _words(n)}
+    names: set[str] | None = None  # the words of the facilities' names, read when needed
     found: list[KeepersPlace] = []
     for n, m in enumerate(mentions):
         if m.kind != "person" or len(m.ids) != 1 or not m.possessive or m.start == 0:
@@ -65,7 +65,11 @@ def keepers_places(
         if after is not None and after.kind == "facility" and after.start == m.end:
             found.append(KeepersPlace(m.ids[0], after.ids[0] if len(after.ids) == 1 else None))
             continue
-        if m.end < len(tokens) and _place_word(tokens[m.end].word, names):
+        if m.end >= len(tokens):
+            continue
+        if names is None:  # most messages say no "from <colleague>'s": no scan on every parse
+            names = {w for f in office.facilities for n in (f.name, *f.synonyms) for w in _words(n)}
+        if _place_word(tokens[m.end].word, names):
             if after is not None and after.start == m.end and after.kind == "item":
                 continue  # "from Tom's box file": a thing of theirs, not a place
             found.append(KeepersPlace(m.ids[0], None))
