@@ -103,6 +103,29 @@ def _tasks(text: str, office: str) -> list[Row]:
             "a tea for Mark and bring Rose's ruler to me",
             [("produce", "tea", None, "mark"), ("transfer", "ruler", "rose", "may")],
         ),
+        # the recipient said by a putting verb's "with", or as the owner of the place the
+        # thing is left at, closes the part as "to X" does (round 193's class: the printout
+        # went to the speaker of the later "for me")
+        (
+            "default",
+            "print my report and drop it with Zhang, then a coffee for me",
+            [("print", "file", "lee", "zhang"), ("produce", "coffee", None, "lee")],
+        ),
+        (
+            "default",
+            "print my report and drop it with Zhang, and a coffee for me",
+            [("print", "file", "lee", "zhang"), ("produce", "coffee", None, "lee")],
+        ),
+        (
+            "default",
+            "print my report and drop it at Zhang's desk, then a coffee for me",
+            [("print", "file", "lee", "zhang"), ("produce", "coffee", None, "lee")],
+        ),
+        (
+            "harbour",
+            "print my agenda and drop it with Rose, then a tea for me",
+            [("print", "file", "may", "rose"), ("produce", "tea", None, "may")],
+        ),
     ],
 )
 def test_each_part_keeps_its_own_recipient(office: str, text: str, expected: list[Row]) -> None:

@@ -26,9 +26,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.left_with import left_with
 from assistantx.agents.symbolic.reading.mention_view import MentionView
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.core import english
+from assistantx.core.receiving_place import MEET_AT, PLACE_WORDS
 
 # "it", "them", "this", "those": the thing said before, handed on by the clause
 _BACK_REFERENCES = frozenset({"it", "them", "this", "that", "these", "those"})
@@ -62,13 +64,20 @@ def _hands_back_reference_on(current: Sequence[MentionView], tokens: Sequence[To
         for m in current
         if m.kind == "pronoun" and not m.possessive and tokens[m.start].word in _BACK_REFERENCES
     ]
-    return bool(back) and any(
-        m.kind in ("person", "self", "pronoun")
-        and not m.possessive
-        and m.start > back[0]
-        and prev_word(tokens, m.start) in _RECEIVING
-        for m in current
-    )
+    return bool(back) and any(m.start > back[0] and _receives(m, tokens) for m in current)
+
+
+def _receives(m: MentionView, tokens: Sequence[Token]) -> bool:
+    """Whether a person mention says whom the thing goes to: after "to"/"for", after the
+    "with" of a verb that puts a thing down ("drop it with Zhang"), or as the owner of the
+    place it is left at ("leave it on Zhang's desk")."""
+    if m.kind not in ("person", "self", "pronoun"):
+        return False
+    before = prev_word(tokens, m.start)
+    if m.possessive:
+        after = tokens[m.end].word if m.end < len(tokens) else ""
+        return before in MEET_AT and after in PLACE_WORDS
+    return before in _RECEIVING or left_with([t.word for t in tokens], m.start)
 
 
 def _opens_object(ms: Sequence[MentionView], n: int, tokens: Sequence[Token]) -> bool:
