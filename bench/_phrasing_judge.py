@@ -215,7 +215,8 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
             if action["purpose"] == "collect":
                 offers.append((at, action["item"], action["contact"]))
             elif action["purpose"] not in _CARRY:
-                serving.add(action["contact"])
+                if _works_on_a_file(office, action):
+                    serving.add(action["contact"])
                 made = _sent_by_message(office, action)
                 if made is not None:
                     # sent to whom the code's message named, else to the paper's owner
@@ -247,6 +248,23 @@ def read_conduct(trace: dict[str, Any], office: Office) -> Conduct:
         moved=moved,
         handovers=tuple(sorted(handovers, key=lambda h: h.at)),
     )
+
+
+def _works_on_a_file(office: Office, action: dict[str, Any]) -> bool:
+    """Whether a work code's service takes an electronic file as its input (a print makes
+    a printout from one): the file forwarded to its operator is that input, while one
+    forwarded to a colleague who then makes a water for someone is a delivery."""
+    op_id = action.get("operation")
+    if op_id:
+        try:
+            op_ = office.operation(op_id)
+        except KeyError:
+            return True
+        return op_.input is not None and office.item_type(op_.input).kind == "electronic"
+    maker = office.making(action["item"].partition(":")[0])
+    if maker is None:
+        return True  # no operation known for the code: as before, read as the input
+    return maker.input is not None and office.item_type(maker.input).kind == "electronic"
 
 
 def _sent_by_message(office: Office, action: dict[str, Any]) -> str | None:

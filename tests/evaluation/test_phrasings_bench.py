@@ -227,6 +227,32 @@ def test_a_product_and_a_printed_file_are_delivered_with_no_one_elses_hand_over(
     assert (verdict.right, verdict.wrong_physical) == (True, None)
 
 
+def test_a_file_sent_to_a_colleague_who_then_makes_a_drink_is_delivered_to_them() -> None:
+    # Lin Tao is the water's first maker: the file forwarded to him is a delivery, not the
+    # input of a service (only a service that works on a file, a print, takes one)
+    text = "send my slides to Lin Tao and get me a glass of water"
+    run = trace("lee", text)
+    makers = [
+        a["contact"]
+        for step in run["steps"]
+        for a in step["decision"]["actions"]
+        if a["type"] == "send_qr" and a["purpose"] == "produce"
+    ]
+    assert makers == ["lin"]
+    verdict = judge(
+        case(
+            text,
+            "deliver",
+            recipient="lin",
+            item="file:lee",
+            also=[{"recipient": "lee", "item": "water"}],
+        ),
+        run,
+        OFFICE,
+    )
+    assert (verdict.right, verdict.wrong_physical) == (True, None)
+
+
 # "questionnaire" is no word of the office: the reader restates before it acts
 PRINT_MINE = "pls print my questionnaire for me, thx"
 PRINT_FIXED = "print my questionnaire and take it to Wang. Sorry, I meant Chen"
