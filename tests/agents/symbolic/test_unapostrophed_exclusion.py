@@ -47,3 +47,32 @@ def test_a_name_shared_by_two_as_a_given_and_a_family_name_is_asked_between_them
 def test_neighbours_keep_their_reading(text: str, owner: str | None) -> None:
     frame = _frame(text)
     assert [(t.item, t.owner) for t in frame.tasks] == [("stapler", owner)], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "can anyone but Wang bring me a stapler",
+        "could someone other than Wang lend me a stapler?",
+        "can anybody except Wang Fang bring me a stapler please",
+        "can anyone but wang bring me a stapler. thanks",
+    ],
+)
+def test_a_doer_ruled_out_is_an_owner_ruled_out(text: str) -> None:
+    # the one who lends a stapler is its owner: Wang's is not taken, and she is not asked
+    frame = _frame(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("stapler", None, "hu")]
+    assert any(h.person == "wang" and h.value == "not wanted" for h in frame.hints), frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "anyone but me can do it",  # the speaker, no colleague: as before
+        "can anyone bring me Wang's stapler",  # no exclusion: Wang's, as before
+    ],
+)
+def test_no_colleague_ruled_out_leaves_the_message_as_said(text: str) -> None:
+    frame = _frame(text)
+    assert not any(h.value == "not wanted" for h in frame.hints), frame

@@ -345,8 +345,8 @@ STEPS: tuple[Step, ...] = (
     # e.g. "bring me a cup please, one of the interns took mine"
     Step("group_member", lambda s, t, a: group_member(t, s.terms.office_words)),
     # any owner's but one colleague's: that colleague's ruled out
-    # e.g. "could u bring me a stapler? anyone's but Wang's"
-    Step("excluded_owners", lambda s, t, a: excluded_owners(t)),
+    # e.g. "could u bring me a stapler? anyone's but Wang's", "can anyone but Wang lend me a pen"
+    Step("excluded_owners", lambda s, t, a: excluded_owners(t, s.one_name)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),
