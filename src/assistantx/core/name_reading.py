@@ -31,6 +31,8 @@ NameReading = Literal["person", "word", "ask"]
 _INDEFINITE = frozenset({"a", "an", "some", "any", "another", "every", "each"})
 
 _COMMON = english.words("common")
+# Nouns the dictionary lacks that are words all the same ("cox"): a name word with a word reading.
+_GAP_NOUNS = english.words("dictionary_gap_nouns")
 _NUMBER_WORDS = english.words("number_words")
 # what opens a verb's object ("drew *a* blank", "drew *the* short straw")
 _OBJECT_OPENERS = frozenset({"a", "an", "the", "my", "his", "her", "our", "their", "some"})
@@ -139,7 +141,12 @@ def is_word_name(word: str) -> bool:
     """Whether a (folded) name word is also an ordinary English word ("penny", "ivy", "may"):
     only such a name has a word reading at all. A month is one whatever the dictionary's
     frequency says of it ("June": "mine ran out in June" is a date)."""
-    return language.is_english_word(word) or word in _COMMON or language.is_month(word)
+    return (
+        language.is_english_word(word)
+        or word in _COMMON
+        or word in _GAP_NOUNS
+        or language.is_month(word)
+    )
 
 
 def read_name(slot: NameSlot) -> NameReading:

@@ -50,6 +50,7 @@ from assistantx.agents.symbolic.reading.abbreviations import undotted
 from assistantx.agents.symbolic.reading.exact_spelling import own_spellings, spelled_by
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.placed_thing import placed_things
+from assistantx.agents.symbolic.reading.seated_subject import SeatedSubject
 from assistantx.agents.symbolic.reading.surnames import family_names
 from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
@@ -212,6 +213,7 @@ class _OfficeWords:
         "names_by_first",
         "operations",
         "rooms",
+        "seated",
         "spellings",
     )
 
@@ -221,6 +223,12 @@ class _OfficeWords:
             self.names_by_first.setdefault(key[0], []).append((key, people))
         self.items = _item_words(office)
         self.name_words = _name_words(office)
+        # "the carver on bench 3 needs ...": the colleague of that workstation, named (the
+        # reader's ``seated_subject``)
+        said = [(t.name, *t.synonyms) for t in office.item_types]
+        said += [(f.name, *f.synonyms) for f in office.facilities]
+        thing_names = (name.lower() for names in said for name in names)
+        self.seated = SeatedSubject(office, {w for name in thing_names for w in name.split()})
         # how each colleague spells their own name: "Sofía" typed with its mark is Sofía
         # Ramírez, not also Sofia Kowalczyk (the reader's ``exact_spelling``)
         self.spellings = own_spellings(office)
@@ -475,6 +483,7 @@ def _in_roles(office: Office, text: str, requester: str) -> frozenset[str]:
     # ruler next to Hal's" is "at Hal's desk" (near_possessive), where Hal receives it; "bring
     # me the ruler at Hal's desk" is Hal's ruler, Hal no receiver (placed_thing)
     read = near_possessives(placed_things(undotted(text), is_person), is_person)
+    read = office_words.seated(read)
     return _roles_in(office_words, read, requester)
 
 

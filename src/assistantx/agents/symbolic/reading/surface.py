@@ -89,6 +89,7 @@ from assistantx.agents.symbolic.reading.role_appositive import without_role_appo
 from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
 from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.seated_subject import SeatedSubject
 from assistantx.agents.symbolic.reading.sent_file import sent_files
 from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
@@ -176,6 +177,10 @@ class Surface:
             w for op in office.operations for v in op.verbs for w in v.lower().split()[:1]
         ) | frozenset(w for words in lex.cues.values() for w in words if " " not in w)
         self.office_phrases = frozenset({*lex.items, *lex.facilities, *lex.places})
+        # "the carver on bench 3 needs ...": a colleague described by their workstation
+        self.seated_subject = SeatedSubject(
+            office, {w for name in (*lex.items, *lex.facilities) for w in name.split()}
+        )
         self.place_doers = PlaceDoers(office)  # "can laundry stitch it up?"
         self.remedies = ProblemRemedies(office)  # "... dog hair, got anything to sort it out?"
         self.keepers = kept_services(office)  # each keeper's services, by their verbs
@@ -347,6 +352,9 @@ STEPS: tuple[Step, ...] = (
     # any owner's but one colleague's: that colleague's ruled out
     # e.g. "could u bring me a stapler? anyone's but Wang's", "can anyone but Wang lend me a pen"
     Step("excluded_owners", lambda s, t, a: excluded_owners(t, s.one_name)),
+    # a colleague described by their workstation, as a need's subject: that colleague
+    # e.g. "the carver on bench 3 needs a set square, could you bring him mine"
+    Step("seated_subject", lambda s, t, a: s.seated_subject(t)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),

@@ -531,6 +531,10 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         keep += 1  # "something to charge my phone": the phone is charged, never brought
         while keep < len(tail) and _POSSESSIVE.search(tail[keep - 1]):
             keep += 1  # "off a guest's coat": whose, then the thing it acts on, never brought
+        # "on the lift control panel": the nouns after the first go on naming where it is
+        # used, never left glued to the thing found ("a multimeter control panel")
+        while keep < len(tail) and _more_of_the_noun(tail[keep - 1], tail[keep]):
+            keep += 1
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0
@@ -550,6 +554,19 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
 
 
 # -- helpers -------------------------------------------------------------------------
+
+
+_PHRASE_ENDS = english.words("common")
+
+
+def _more_of_the_noun(before: str, word: str) -> bool:
+    """Whether ``word`` goes on the noun phrase ``before`` ends (a noun after a noun: "lift
+    *control* *panel*"); a possessive ends the phrase's noun it owns, a function word or a
+    verb's form ("needs") ends it."""
+    w = word.lower()
+    if _POSSESSIVE.search(before) or w in _PHRASE_ENDS or not w.isalpha():
+        return False
+    return language.is_noun(w) and not language.is_finite_verb(w)
 
 
 def stem(word: str) -> str:
