@@ -516,6 +516,7 @@ class TaskReader:
             if not persons_place(m)
             and not has_some(m)
             and not what_it_is_for(m)
+            and m.start not in clause.modifiers  # "a meter to check the compressor's wiring"
             and not lives_there(m, before)  # "the meter that lives in the drying cabinet"
         ]
         if any(word_before(m) not in _FROM_FACILITY for m in treating):

@@ -63,7 +63,7 @@ def modifiers(
     sourced: frozenset[str] = frozenset(),
     formats: frozenset[str] = frozenset(),
 ) -> set[int]:
-    """Start tokens of the clause's item and cue mentions that are not its request.
+    """Start tokens of the clause's item, cue and facility mentions that are not its request.
     ``sourced``: the products made from an item ("a copy of my form"); ``formats``: the file
     types, which after "to"/"into"/"as" in a clause that asks to copy or print name the
     format of what is made ("scan my contract to PDF"), never a thing or a person."""
@@ -72,6 +72,7 @@ def modifiers(
     head_seen = False
     in_purpose = False
     infinitive = False  # the purpose is an infinitive's ("a book to read")
+    moved_there = False  # the purpose's verb moves the thing ("needs to go in the annealer")
     occasions = [
         (start, m.start)
         for m in mentions
@@ -83,11 +84,15 @@ def modifiers(
         if in_purpose and infinitive and m.kind == "item" and _second_thing(tokens, m):
             in_purpose = infinitive = False  # "paper to write on, and a pen": a pen too
         if in_purpose:
-            if m.kind in ("item", "cue"):
+            # "a multimeter to check the compressor's wiring": the facility is where the
+            # thing is used, no service asked of it ("it needs to go in the annealer": to it)
+            if m.kind in ("item", "cue") or (m.kind == "facility" and not moved_there):
                 out.add(m.start)
             continue
         if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(tokens, mentions, n):
             in_purpose = infinitive = True
+            verb = tokens[m.end].word if m.end < len(tokens) else ""
+            moved_there = bool(language.verb_lemmas(verb) & _PLACE_MOVING)
             continue
         asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
         if asked and m.kind in ("item", "cue") and any(a <= m.start <= b for a, b in occasions):
@@ -159,6 +164,9 @@ def _object_word(tokens: Sequence[Token], m: Mention) -> bool:
         after_article = m.start > 0 and tokens[m.start - 1].word in _ARTICLES
         return after_article and bool(m.ids) and set(m.ids) <= _PRODUCT_KINDS
     return m.kind == "word" and m.ids[0] == "one"
+
+
+_PLACE_MOVING = english.words("place_moving_verbs")
 
 
 def _purpose(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
