@@ -39,10 +39,19 @@ def test_a_thing_taken_to_a_person_in_that_room_is_delivered() -> None:
     ], frame
 
 
+def test_the_rooms_one_service_on_the_thing_is_done() -> None:
+    # the copy room's scanner is its one service on documents (``reading.room_service``):
+    # before, who in the room should get the document was asked
+    frame = _frame("take my document to the copy room")
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("copy", "document", "may", "may")
+    ], frame
+
+
 @pytest.mark.parametrize(
     "text",
     [
-        "take my document to the copy room",
         # the place named has no facility for the work: the old reading, which asks
         "take my document to the kitchen and have it scanned",
     ],

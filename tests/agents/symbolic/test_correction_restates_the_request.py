@@ -76,13 +76,14 @@ def test_a_place_corrected_replaces_where_the_thing_goes(text: str) -> None:
     assert _tasks("default", "lee", text) == [("heat", "lunch", "lee", "lee")]
 
 
-def test_a_place_corrected_to_a_room_asks_as_the_room_does() -> None:
+def test_a_place_corrected_to_a_room_reads_as_the_room_does() -> None:
     """ "take my lunch to the microwave, no wait, the kitchenette": read as "take my lunch to
-    the kitchenette", whose receiver is asked (before, "no wait" withdrew it all)."""
+    the kitchenette" (before, "no wait" withdrew it all): the kitchenette's one service on a
+    lunch, its microwave's heating (``reading.room_service``)."""
     p = parser("default")
-    said = p.parse("take my lunch to the kitchenette", "lee").question
+    said = p.parse("take my lunch to the kitchenette", "lee")
     frame = p.parse("take my lunch to the microwave, no wait, the kitchenette", "lee")
-    assert said is not None and frame.question == said
+    assert said.tasks and frame.tasks == said.tasks and frame.question is None
 
 
 @pytest.mark.parametrize(

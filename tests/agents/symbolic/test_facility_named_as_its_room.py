@@ -70,6 +70,11 @@ def test_the_work_needed_is_done_in_the_room_named(text: str) -> None:
     ], frame
 
 
-def test_a_thing_only_taken_to_the_room_still_asks_who_gets_it() -> None:
+def test_a_thing_only_taken_to_the_room_is_the_rooms_one_service_on_it() -> None:
+    # the room's one service on the kit, its wash (``reading.room_service``): before, who in
+    # the room should get the kit was asked
     frame = _frame("take my training kit to the kit room")
-    assert frame.tasks == [] and frame.question is not None, frame
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.operation or "wash", t.recipient) for t in frame.tasks] == [
+        ("heat", "kit", "wash", "ines")
+    ], frame

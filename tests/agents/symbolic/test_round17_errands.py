@@ -5,7 +5,8 @@
    both, in order, and both happen.
 5. "take X down to repro to be bound": "repro", the clipped name of the Reprographics room
    where the comb binder stands, and "to be bound" the binder's work, done there and the
-   item back to the requester; where the place is not understood, nothing is reported done."""
+   item back to the requester; "take my portfolio down to repro" with no work said is the
+   room's one service on a portfolio, the binding (``reading.room_service``)."""
 
 from __future__ import annotations
 
@@ -71,9 +72,14 @@ def test_taken_to_a_place_to_be_bound_is_the_binding(who: str, text: str) -> Non
     ]
 
 
-def test_taken_to_repro_with_no_work_named_is_asked_about() -> None:
+def test_taken_to_repro_with_no_work_named_is_its_one_service_on_the_portfolio() -> None:
+    # the comb binder is the room's one service on a portfolio (``reading.room_service``):
+    # before, who in the room should get it was asked
     frame = _frame("take my portfolio down to repro please", "priya")
-    assert frame.tasks == [] and frame.question is not None
+    assert frame.question is None, frame
+    assert [(t.operation, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("bind", "portfolio", "priya", "priya")
+    ]
 
 
 def test_a_clipped_name_is_a_word_in_use_and_no_dictionary_word() -> None:
@@ -119,7 +125,8 @@ async def test_the_portfolio_is_bound_and_comes_back() -> None:
     assert any("bind" in a for a in asked), asked
 
 
-async def test_taken_to_repro_with_no_work_named_is_never_reported_done() -> None:
+async def test_taken_to_repro_with_no_work_named_is_bound_and_comes_back() -> None:
     run = await run_instruction(arts_block(), "priya", "take my portfolio down to repro please")
-    assert run.stm.trace.outcome != "done", run.stm.trace.summary
-    assert run.sim.world.handovers() == []
+    assert run.stm.trace.outcome == "done", run.stm.trace.summary
+    assert run.sim.world.check({"heated": ["portfolio:priya"]})
+    assert run.sim.world.holder["portfolio:priya"] == "priya"

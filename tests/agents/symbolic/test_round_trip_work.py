@@ -2,8 +2,9 @@
 from the office's data (the operation there that takes this kind of thing): "my lunch is
 cold, take it to the kitchenette and bring it back" heats it, "take my document to the copy
 room, then back to me" scans it where the copy room's scanner is the one that takes documents.
-With no return said, a thing no operation there takes, or a colleague it is for, nothing
-changes: who there gets it is asked, or the colleague gets it."""
+With no return said, the room's one service on the thing is still done
+(``reading.room_service``); a thing no operation there takes, or a colleague it is for,
+changes nothing: who there gets it is asked, or the colleague gets it."""
 
 from __future__ import annotations
 
@@ -62,13 +63,21 @@ def test_harbour_round_trip_is_the_rooms_work(text: str, kind: str, item: str) -
     [
         "take my mug to the kitchenette",  # no return, no work on mugs: who there is asked
         "take my mug to the kitchenette and bring it back",  # nothing there works on mugs
-        "take my lunch to the kitchenette",  # no return: a hand-over, whom asked
     ],
 )
 def test_default_office_no_round_trip_work_asks_who_there(text: str) -> None:
     frame = _DEFAULT(text)
     assert not frame.tasks, frame
     assert frame.question is not None and "who there" in frame.question, frame
+
+
+def test_default_office_no_return_said_is_still_the_rooms_one_service() -> None:
+    # "take my lunch to the kitchenette": the microwave is the room's one service on a lunch
+    # (``reading.room_service``); before, who there should get it was asked
+    frame = _DEFAULT("take my lunch to the kitchenette")
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("heat", "lunch", "wu", "wu")
+    ], frame
 
 
 def test_taken_to_the_room_for_a_colleague_is_a_hand_over() -> None:

@@ -189,6 +189,10 @@ class Planner:
                 f"{n}.source",
                 "keep",
                 requester,
+                # the requester who alone keeps it takes it out themselves (their request is
+                # their yes), as the oracle plans it (``policy.runs_it_alone``); a fellow
+                # keeper is asked first (``roles.resolve``)
+                fixed=requester if set(kept.guards) == {requester} else None,
                 item_type=item_type,
                 item_owner=t.owner,
                 facility=kept.id,
@@ -277,12 +281,12 @@ class Planner:
                 source = self._source(n, t, requester, held)
                 roles = [source, recipient]
                 it = leg(item, "deposit", t.owner, None if t.owner else source)
-                phases = [
-                    Handover(source, (it,)),
-                    Handover(
-                        recipient, (Leg(it.item_type, it.owner_fixed, it.owner_role, "collect"),)
-                    ),
-                ]
+                out = Leg(it.item_type, it.owner_fixed, it.owner_role, "collect")
+                phases = [Handover(source, (it,)), Handover(recipient, (out,))]
+                if source.kind == "keep" and source.fixed == requester == t.recipient:
+                    # the requester takes it out of the facility they keep and takes it from
+                    # the robot there: both codes at one stop, as the oracle hands them
+                    roles, phases = [source], [Handover(source, (it, out))]
             case "print":
                 guard = Role(
                     f"{n}.renderer",

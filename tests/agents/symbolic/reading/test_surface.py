@@ -16,6 +16,7 @@ from _offices import office as office_named
 from assistantx.agents.symbolic.reading.parser import InstructionParser
 from assistantx.agents.symbolic.reading.surface import STEPS, Asked, Said, Step, Surface
 from assistantx.core.office import Office
+from helpers.chambers_post import chambers_post
 from helpers.costume_shop import costume_shop
 from helpers.courier_room import courier_room
 from helpers.law_firm import law_firm
@@ -93,6 +94,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
     "harbour": lambda: office_named("harbour"),
     "mail room": lambda: office_named("mail"),
     "courier room": courier_room,
+    "chambers post": chambers_post,
     "costume shop": costume_shop,
     "law firm": law_firm,
     "music school": music_school,
@@ -136,7 +138,7 @@ EXAMPLES: dict[str, str] = {
     "hyphened_description": "Wang's setting-out file",
     "paper_parts": "My contract pages need stamping",
     "file_subject": "Wang's pdf of the stapler",
-    "emailed_paper": "could I have Wang's report? just email it to me",
+    "emailed_paper": "could I have Greta's brief? just email it to me",
     "picked_form": "Wang's document, the pdf one",
     "carrying_particles": "bring some up to reception",
     "hurried_errands": "Wang needs a stapler, can you run mine over to her",
@@ -230,7 +232,7 @@ EFFECTS: dict[str, tuple[str, str, str]] = {
 }
 # The steps that end the reading (what they say), or keep what is asked later.
 STOPS = {"placeholder": ("default", "question"), "beside_a_thing": ("harbour", "decline")}
-KEPT = {"emailed_paper": "default"}
+KEPT = {"emailed_paper": "chambers post"}
 
 
 @functools.cache
@@ -319,7 +321,7 @@ def test_the_emailed_paper_is_kept_to_be_asked_or_brought_on_a_yes() -> None:
     assert said.stop is None and said.emailed is not None
     assert isinstance(after, Said) and after.text == before == said.text
     assert said.emailed.question in (
-        _parser("default").parse(EXAMPLES["emailed_paper"], "lee").question or ""
+        _parser("chambers post").parse(EXAMPLES["emailed_paper"], "nadia").question or ""
     )
     said, before, after = _through(KEPT["emailed_paper"], "emailed_paper", confirmed=True)
     assert said.emailed is None and isinstance(after, str)

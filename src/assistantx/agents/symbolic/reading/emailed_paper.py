@@ -10,8 +10,16 @@ nobody named. What the office can do decides, read from its operations, never it
   electronic item, or named as one: "scanned copy", "PDF") makes the copy: the send is read
   as that operation's verb ("... just scan it to me"), done with the owner's yes as any work
   on a colleague's paper;
-- none: said, and asked whether to bring the paper instead ("I can't email a paper document
-  here. Shall I bring Wang's report to you?"); a yes reads the send as "bring".
+- none, where the office keeps its papers' electronic files too (a generic electronic file
+  type, and the paper one of the personal things a sending verb reads as that file: "email
+  me Wang's report" is Wang's file): the send is that file's ("get Chen's report and send
+  it to me" → "forward Chen's report to me"), asked of the owner as any file is;
+- none else: said, and asked whether to bring the paper instead ("I can't email a paper
+  document here. Shall I bring Wang's report to you?"); a yes reads the send as "bring".
+
+The send is a later clause (after a stop or a comma), or one joined by "and"/"then" with
+nothing named between ("get Chen's report and email it to me"). The colleague may be said by
+a possessive pronoun after the one asked ("ask Wang for her report and email it to me").
 """
 
 from __future__ import annotations
@@ -28,9 +36,13 @@ from assistantx.core.office import Office
 _SENDING = english.words("electronic_sending")
 _BACK = frozenset({"it", "that", "this"})
 _TO = frozenset({"to", "for"})
+_JOINS = english.words("emailed_paper_joins")
+_FILLERS = english.words("emailed_paper_fillers")
+_OWNER_PRONOUNS = english.words("others_possessives")
 _PAPER_NOUNS = english.words("paper_nouns")
 _ELECTRONIC_WORDS = english.words("electronic_formats") | english.words("electronic_picks")
 BRING = "bring"  # the send read as the paper brought, on a yes
+FORWARD = "forward"  # the send read as the paper's electronic file forwarded
 
 
 @dataclass(frozen=True)
@@ -46,12 +58,13 @@ class EmailedPaper:
     clause_end: int  # where the clause of the send ends (its last word's end)
     asked: int  # where the clause asking for the paper starts
     to: str | None  # the colleague the send names ("email it to Zhang"); None: the speaker
+    as_file: bool = False  # the office reads the paper sent as its electronic file
 
     def with_verb(self, text: str, verb: str) -> str:
         """The request and its send said as one with ``verb``, for the speaker ("scan Wang's
         report for me", "bring Wang's report to me"): "over", "across" and the like say no
         more than that."""
-        to = "to" if verb == BRING else "for"
+        to = "to" if verb in (BRING, FORWARD) else "for"
         whom = self.to or "me"
         return f"{text[: self.asked]}{verb} {self.thing} {to} {whom}{text[self.clause_end :]}"
 
@@ -71,7 +84,8 @@ def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | Non
     office = lex.office
     for n, opener in enumerate(mentions[:-1]):
         item = mentions[n + 1]
-        if opener.kind != "person" or not opener.possessive or len(opener.ids) != 1:
+        owner = _owner(tokens, mentions, n)
+        if owner is None:
             continue
         if item.kind != "item" or item.start != opener.end or len(item.ids) != 1:
             continue
@@ -83,6 +97,9 @@ def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | Non
             continue
         verb, clause_end, to = found
         thing = text[spans[opener.start][0] : spans[item.end - 1][1]]
+        if opener.kind == "pronoun":  # "ask Wang for her report": Wang's
+            noun = text[spans[item.start][0] : spans[item.end - 1][1]]
+            thing = f"{office.person(owner).name}'s {noun}"
         said = tokens[verb].word
         return EmailedPaper(
             spans[verb][0],
@@ -94,8 +111,32 @@ def emailed_paper(lex: Lexicon, text: str, requester: str) -> EmailedPaper | Non
             spans[clause_end - 1][1],
             spans[clause_start(tokens, opener.start)][0],
             office.person(to).name if to is not None else None,
+            copy_verb is None and _sent_as_file(office, item.id),
         )
     return None
+
+
+def _owner(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> str | None:
+    """The colleague whose thing mention ``n`` opens: a colleague's possessive ("Wang's"), or
+    a possessive pronoun after the one colleague named before it in its clause ("ask Wang
+    for her report"); None where it is neither."""
+    opener = mentions[n]
+    if opener.kind == "person":
+        return opener.id if opener.possessive and len(opener.ids) == 1 else None
+    if opener.kind != "pronoun" or tokens[opener.start].word not in _OWNER_PRONOUNS:
+        return None
+    start = clause_start(tokens, opener.start)
+    people = [m for m in mentions[:n] if m.start >= start and m.kind == "person"]
+    if len(people) != 1 or len(people[0].ids) != 1 or people[0].possessive:
+        return None
+    return people[0].id
+
+
+def _sent_as_file(office: Office, type_id: str) -> bool:
+    """Whether a sending verb reads the office's paper as its electronic file ("email me
+    Wang's report": Wang's file): the office has an electronic file type, and the paper is
+    one of the personal things (``reading._kinds``, a personal thing sent)."""
+    return office.file_type() is not None and office.item_type(type_id).kind == "personal"
 
 
 def _is_paper(office: Office, type_id: str) -> bool:
@@ -115,6 +156,11 @@ def _sending_back(
     after "to"/"for" (None: the speaker); None where there is none."""
     at = end
     while at < len(tokens) and not (tokens[at].opens or tokens[at].after_pause):
+        if tokens[at].word in _JOINS and _sends_next(tokens, at + 1):
+            # "... and email it to me": a clause of its own, after nothing else named
+            if any(end <= m.start < at and m.kind in ("item", "person") for m in mentions):
+                return None  # "get Wang's report from Zhang and send it": read as before
+            break
         at += 1
     stop = at + 1
     while stop < len(tokens) and not (tokens[stop].opens or tokens[stop].after_pause):
@@ -134,6 +180,14 @@ def _sending_back(
         if tokens[i].word in _SENDING and tokens[i + 1].word in _BACK:
             return i, stop, to
     return None
+
+
+def _sends_next(tokens: Sequence[Token], at: int) -> bool:
+    """Whether the words from ``at`` send "it" electronically, after fillers ("then just
+    email it")."""
+    while at < len(tokens) - 1 and tokens[at].word in _FILLERS:
+        at += 1
+    return at < len(tokens) - 1 and tokens[at].word in _SENDING and tokens[at + 1].word in _BACK
 
 
 def _copy_verb(office: Office, paper: str) -> str | None:

@@ -136,6 +136,13 @@ from assistantx.agents.symbolic.reading.room_receiver import (
     room_receiver,
     rooms_taken_to,
 )
+from assistantx.agents.symbolic.reading.room_service import (
+    own_thing_to_room,
+    room_service_answered,
+    room_service_question,
+    room_services,
+    with_room_service,
+)
 from assistantx.agents.symbolic.reading.said_kept import kept_where_said
 from assistantx.agents.symbolic.reading.screen import RequestScreen
 from assistantx.agents.symbolic.reading.screen.cut_off import completed
@@ -400,6 +407,28 @@ class InstructionParser:
             doubted = doubted_recipient(self.office, whole, frame.tasks, requester)
             if doubted is not None:  # "to Wei... or was it Wang?": whom is asked
                 return TaskFrame(requester=requester, question=doubted)
+            own = None if to_self else own_thing_to_room(frame, requester)
+            served = (
+                room_services(self.office, readings.tokens, readings.mentions, own)
+                if own is not None
+                else None
+            )
+            if served is not None and len(served[1]) == 1:
+                # "take my wheel down to wrapping", one service there works on cheeses: that
+                # service, the wheel back to the requester
+                return self._frame(
+                    whole,
+                    with_room_service(self.office, request, served[1][0]),
+                    requester,
+                    sent_out,
+                    to_self,
+                    destination,
+                    any_owner,
+                )
+            if own is not None and served is not None and served[1]:
+                # several: which is asked, never the thing handed back to the requester
+                question = room_service_question(self.office, own, *served)
+                return TaskFrame(requester=requester, question=question)
             received = frozenset({receiver} if receiver is not None else ())
             unread = (
                 unread_part(self.office, readings, frame, received) if frame.understood else None
@@ -770,10 +799,22 @@ class InstructionParser:
             return None
         readings = self.readings.read(self.lex.read(text), requester)
         choices = machine_choices(self.office, readings.tokens, readings.mentions, requester)
-        if not choices or question != service_question(choices):
-            return None
-        choice = service_answered(choices, answer)
-        return with_service(text, choice) if choice is not None else None
+        if choices and question == service_question(choices):
+            choice = service_answered(choices, answer)
+            return with_service(text, choice) if choice is not None else None
+        # "What should I do with your cheese in the Wrapping room: wax it, or ...?" "wax"
+        for m in readings.mentions:
+            served = (
+                room_services(self.office, readings.tokens, readings.mentions, m.id)
+                if m.kind == "item"
+                else None
+            )
+            if served is None or len(served[1]) < 2:
+                continue
+            if question == room_service_question(self.office, m.id, *served):
+                op = room_service_answered(served[1], answer)
+                return with_room_service(self.office, text, op) if op is not None else None
+        return None
 
     def _out_or_in(self, text: str, requester: str, answer: str, asked: TaskFrame) -> TaskFrame:
         """The answer to "send it out by courier to Bill, or bring it to Bill here?": the

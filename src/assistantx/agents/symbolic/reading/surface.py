@@ -50,7 +50,12 @@ from assistantx.agents.symbolic.reading.described_items import (
     without_hyphened_description,
 )
 from assistantx.agents.symbolic.reading.due_service import DueService
-from assistantx.agents.symbolic.reading.emailed_paper import BRING, EmailedPaper, emailed_paper
+from assistantx.agents.symbolic.reading.emailed_paper import (
+    BRING,
+    FORWARD,
+    EmailedPaper,
+    emailed_paper,
+)
 from assistantx.agents.symbolic.reading.excluded_owner import excluded_owners
 from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
@@ -301,11 +306,14 @@ def _placeholder(s: Surface, text: str, asked: Asked) -> str | Said:
 
 
 def _emailed_paper(s: Surface, text: str, asked: Asked) -> str | Said:
-    """A copy the office makes electronic ("scan it"), else asked whether the paper is
-    brought once the screen is done (a yes: brought)."""
+    """A copy the office makes electronic ("scan it"), else the paper's electronic file where
+    the office keeps one ("forward it"), else asked whether the paper is brought once the
+    screen is done (a yes: brought)."""
     emailed = emailed_paper(s.lex, text, asked.requester)
     if emailed is None:
         return text
+    if emailed.as_file:
+        return emailed.with_verb(text, FORWARD)
     if emailed.operation_verb is not None or asked.confirmed:
         return emailed.with_verb(text, emailed.operation_verb or BRING)
     return Said(text, None, emailed)
