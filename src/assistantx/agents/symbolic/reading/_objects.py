@@ -92,7 +92,12 @@ def modifiers(
         if m.kind == "word" and m.ids[0] == "to" and head_seen and _purpose(tokens, mentions, n):
             in_purpose = infinitive = True
             verb = tokens[m.end].word if m.end < len(tokens) else ""
-            moved_there = bool(language.verb_lemmas(verb) & _PLACE_MOVING)
+            # "my samples need to sit in the drying cabinet": what the thing itself needs,
+            # said before "to", is the facility's work, not a use of the thing there
+            own_need = m.start > 0 and bool(
+                language.verb_lemmas(tokens[m.start - 1].word) & _THINGS_NEED
+            )
+            moved_there = own_need or bool(language.verb_lemmas(verb) & _PLACE_MOVING)
             continue
         asked = head_seen or any(c.kind == "cue" for c in mentions[:n])
         if asked and m.kind in ("item", "cue") and any(a <= m.start <= b for a, b in occasions):
@@ -167,6 +172,7 @@ def _object_word(tokens: Sequence[Token], m: Mention) -> bool:
 
 
 _PLACE_MOVING = english.words("place_moving_verbs")
+_THINGS_NEED = frozenset({"need", "have", "want", "ought"})
 
 
 def _purpose(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
