@@ -21,6 +21,11 @@ from assistantx.core.name_reading import NameSlot, read_name
         # my leave form yet. can you get her to sign it" asked who "her" was)
         (NameSlot(word="grace", written="grace", opens=True, next="hasnt"), "person"),
         (NameSlot(word="mark", written="mark", opens=True, next="didnt"), "person"),
+        # the subject of a clause after a verb that takes one (fix201a: "i hope mark wont
+        # mind but can i borrow his ruler" asked who "his" was)
+        (NameSlot(word="mark", written="mark", prev="hope", next="wont"), "person"),
+        (NameSlot(word="mark", written="mark", prev="know", next="is"), "person"),
+        (NameSlot(word="mark", written="mark", prev="hope", next="the"), "word"),
         # the ordinary word stays the word
         (NameSlot(word="may", written="may", opens=True, next="i"), "word"),
         (NameSlot(word="grace", written="grace", prev="the", next="period"), "word"),

@@ -56,6 +56,9 @@ _PRESENCE_BE_PLURAL = english.words("presence_question_verbs_plural")
 # "if wren doesn't mind": a condition on someone's leave (english.yaml)
 _CONSENT_IF = english.words("consent_conditions")
 _MINDS = frozenset(english.entries("minding_after_name"))
+# the verbs that take a clause; "hope" is a colleague's name in some offices, so its forms are
+# never listed with the English data (as ``reading/screen/hope.py`` keeps them)
+_CLAUSE_VERBS = english.words("clause_verbs") | frozenset({"hope", "hoping", "hopefully"})
 _PRESENCE = (
     frozenset(p.split()[0] for p in (*english.entries("here"), *english.entries("away")))
     | english.words("presence_question_words")
@@ -188,6 +191,7 @@ def read_name(slot: NameSlot) -> NameReading:
         or _doer(prev, nxt, slot.after_next)
         or _presence_asked(slot)
         or _consenting(slot)
+        or _clause_subject(slot)
         or _joined_names(slot)
         or _asked_for_theirs(slot)
         or _question_subject(slot)
@@ -309,6 +313,16 @@ def _consenting(slot: NameSlot) -> bool:
     if slot.possessive or slot.next_after_pause or slot.prev not in _CONSENT_IF:
         return False
     return slot.next in _MINDS or f"{slot.next} {slot.after_next}" in _MINDS
+
+
+def _clause_subject(slot: NameSlot) -> bool:
+    """ "i know mark is busy", "i hope grace won't mind": a name word right after a verb
+    that takes a clause, with a finite verb (or a negated auxiliary) after it, is that
+    clause's subject; "i hope mark the boxes" has no verb after it."""
+    if slot.possessive or slot.next_after_pause or slot.prev not in _CLAUSE_VERBS:
+        return False
+    nxt = slot.next
+    return nxt in ("is", "was", "has") or nxt in _NEGATED_FINITE or language.is_finite_verb(nxt)
 
 
 def _spoken_to(slot: NameSlot) -> bool:

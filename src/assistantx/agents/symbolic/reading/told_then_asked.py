@@ -7,7 +7,9 @@ a comma is put back before the ask, as ``consequence_boundary`` puts one before 
 
 Only after a told clause: one with a copula ("is", "are", "was") and that opens with no
 asking word of its own ("is it free can you ...", "could you ... please bring ..." stay as
-said), and only where the ask has words after it."""
+said), and only where the ask has words after it. A preface that ends in "but" needs no
+copula ("I hope Mark won't mind but can I borrow his ruler"), and its ask may be the
+speaker's own ("can I", "could we")."""
 
 from __future__ import annotations
 
@@ -24,6 +26,11 @@ _POLITE = english.words("polite")
 _MODALS = frozenset({"can", "could", "would", "will"})
 _ASKEES = frozenset({"you", "u", "ya"})
 _COPULAS = frozenset({"is", "are", "am", "was", "were"})
+# A preface that ends in "but" ("I hope Mark won't mind but can I borrow his ruler", "sorry to
+# bother you but could you ..."): told or not, it closes where the ask opens, and the ask may
+# be the speaker's own ("can I", "could we")
+_BUT = "but"
+_ASKERS = frozenset({"i", "we"})
 # what may open the clause before as an ask or a question of its own: then it is no told state
 _ASKING = (
     english.words("request_modals")
@@ -41,21 +48,24 @@ def told_then_asked(text: str) -> str:
     for n, m in enumerate(words):
         if n > start and clause_ends_between(text, words[n - 1], m):
             start = n
-        if n - start < 3 or not _ask_at(words, n):
+        if n - start < 3:
             continue
         clause = [w.group(0).lower() for w in words[start:n]]
-        if clause[0] in _ASKING or not set(clause[1:]) & _COPULAS:
+        prefaced = clause[-1] == _BUT and _ask_at(words, n, _ASKEES | _ASKERS)
+        if not (prefaced or _ask_at(words, n)):
+            continue
+        if clause[0] in _ASKING or not (prefaced or set(clause[1:]) & _COPULAS):
             continue
         cuts.append(words[n - 1].end())
         start = n
     return with_commas_at(text, cuts)
 
 
-def _ask_at(words: list[re.Match[str]], n: int) -> bool:
+def _ask_at(words: list[re.Match[str]], n: int, askees: frozenset[str] = _ASKEES) -> bool:
     """Whether an ask opens at word ``n``: "pls get ...", "can u bring ...", words after it."""
     said = [w.group(0).lower() for w in words[n : n + 3]]
     if len(said) < 2:
         return False
     if said[0] in _POLITE:
         return said[1] in language.verb_lemmas(said[1])  # "pls get", never "pls thanks"
-    return said[0] in _MODALS and said[1] in _ASKEES and len(said) == 3
+    return said[0] in _MODALS and said[1] in askees and len(said) == 3

@@ -8,24 +8,51 @@ from assistantx.agents.symbolic.reading.screen.english import split_words
 from assistantx.agents.symbolic.reading.screen.findings import SAYS_NOTHING_TO_DO, Finding, Screened
 from assistantx.agents.symbolic.reading.screen.pieces import Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import language
 
 
-def aside(terms: Terms, left: str, live: list[Finding], kept: list[Piece]) -> bool:
+def aside(
+    terms: Terms, left: str, live: list[Finding], kept: list[Piece], *, withdrawn: bool = False
+) -> bool:
     """What is left beside a thanks, wish or withdrawal, or after a note, condition or
     report, names nothing of this office and asks for nothing ("..., lifesaver", "...,
     all sorted"): an aside, not a request. Before a report it is no closing remark
-    ("hello there. I don't know more than I wrote" still says nothing of what is needed)."""
-    anywhere = any(f.verdict in ("thanks", "wish", "withdrawn") for f in live)
+    ("hello there. I don't know more than I wrote" still says nothing of what is needed).
+    ``withdrawn``: the message withdrew something; the withdrawal itself is no live verdict
+    (what counts begins after it), yet what follows it and names nothing ("forget about the
+    biscuits, not hungry anymore") is its reason, not a request to ask about."""
+    anywhere = withdrawn or any(f.verdict in ("thanks", "wish", "withdrawn") for f in live)
     reports = [f.piece.start for f in live if f.verdict in SAYS_NOTHING_TO_DO]
     closing = bool(reports) and all(p.start > min(reports) for p in kept)
     if not (anywhere or closing):
         return False
     words = split_words(left)
-    if set(words) & terms.office_words or terms.acts.request(words):
+    if set(_unpaired(words)) & terms.office_words or terms.acts.request(words):
         return False
     # "something longer?", "another one": what a statement beside it makes a request of
     helpers = {w for p in (*terms.en.purpose_heads, *terms.en.another_one) for w in split_words(p)}
     return not set(words) & helpers
+
+
+def _unpaired(words: list[str]) -> list[str]:
+    """The words without an adjective paired by "and" with an adjective that is no verb
+    ("lovely and warm", "nice and clean"): said of how something is, never the office's
+    service of the same word (to warm, to clean)."""
+    return [
+        w
+        for k, w in enumerate(words)
+        if not (
+            k >= 2
+            and words[k - 1] == "and"
+            and _adjective_only(words[k - 2])
+            and "ADJ" in language.lemmas(w)
+        )
+    ]
+
+
+def _adjective_only(word: str) -> bool:
+    said = language.lemmas(word)
+    return "ADJ" in said and "VERB" not in said
 
 
 def answered(out: Screened, live: list[Finding], *, withdrawn: bool) -> Screened:

@@ -175,7 +175,8 @@ class RequestScreen:
             return out
         left = spoken.left
         meant = set(content(split_words(left))) - terms.en.courtesy  # "hi," left of a statement
-        if not meant or aside(terms, left, live, kept) or only_addressed(spoken):
+        aside_left = aside(terms, left, live, kept, withdrawn=bool(withdrawn))
+        if not meant or aside_left or only_addressed(spoken):
             negated = [f for f in live if f.verdict == "negated"]
             if negated:
                 said = "; ".join(repr(f.piece.text) for f in negated)

@@ -6,22 +6,33 @@ from __future__ import annotations
 import itertools
 import re
 
+from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.past_service_reason import past_service_reason
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.speech_acts import without_fillers
 from assistantx.core import english, language
 
 _PRONOUNS = english.words("pronouns")
+# the words that open a withdrawal with an object ("don't worry about", "never mind")
+_WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
 # "..., Thandi's already run one off", "..., Ravi has just done it": done by now, a reason
 _DONE_BY_NOW = frozenset({"already", "just"})
 # "..., Joss will bring it", "..., she's gonna print one": what someone else will do
 _WILL = frozenset({"will", "gonna"})
 _CONTRACTED_WILL = re.compile(r"\w['’]ll\b", re.IGNORECASE)
+# the withdrawal heads that correct what was just said ("no wait", "actually no")
+_CORRECTING = frozenset({"no", "wait"})
+# a stop (or "...") between a request and a withdrawal: said as second thoughts
+_SENTENCE_BREAK = re.compile(r"[.!?;…\n]")
 
 
 def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if _detail_of_the_request(terms, msg, piece):
+        # "get me a coffee, and don't worry about the sugar": what the errand may leave out
+        return Finding("statement", piece, "what the request may go without, context only")
     found = withdrawal(terms, piece, msg)
     if found is not None:
         msg.withdrawing = True
@@ -53,6 +64,34 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         # of the withdrawn request, kept; a need said of it is the reason, not a new errand
         return Finding("withdrawn", piece, "the reason the request is withdrawn: still needed")
     return None
+
+
+def _detail_of_the_request(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "get me a coffee, and don't worry about the sugar": a withdrawal with an object after
+    a request, where the object is nothing the requests before it said (no word of theirs),
+    nothing of the office and no pronoun of what was asked ("it", "that"), lets the errand go
+    without a detail of it; it withdraws no request. "never mind the coffee", "forget it",
+    "scratch the printout" (the office's) withdraw as before."""
+    if not piece.acts.withdrawal:
+        return False
+    asked = msg.asked_before(piece)
+    if not asked:
+        return False  # "actually forget about the biscuits": a withdrawal, whatever it names
+    if "actually" in piece.words or _SENTENCE_BREAK.search(msg.text, asked[-1].end, piece.start):
+        return False  # "get me a coffee. actually forget the biscuits": second thoughts
+    said = content(without_fillers(piece.words))
+    head = next((h for h in _WITHDRAW_HEADS if tuple(said[: len(h)]) == h), None)
+    if head is None or set(head) & _CORRECTING:
+        return False  # "no wait sorry, a soundpost setter": a correction, never a detail
+    obj = [w for w in said[len(head) :] if w not in DETERMINERS]
+    if not obj or set(obj) & (_PRONOUNS | terms.office_words | terms.en.courtesy):
+        return False
+    if not language.is_noun(obj[-1]):
+        return False  # a thing is named ("the sugar"), not a word of the exchange
+    if any(m.kind not in ("word", "cue") for m in piece.lexed.mentions):
+        return False
+    before = {w for p in asked for w in p.words}
+    return not set(obj) & before
 
 
 def _done_by_now(piece: Piece) -> bool:
