@@ -33,6 +33,7 @@ def _site(
         kw.get("obliged", False),
         kw.get("stood_in_for", False),
         kw.get("to_have", False),
+        later_use=kw.get("later_use", False),
     )
 
 
@@ -74,6 +75,10 @@ PERSON_CASES = [
     (
         _site("could", nxt="have", subject=True, to_have=True),
         "could Min have / let Min borrow scissors: the one asked for receives",
+    ),
+    (
+        _site("", nxt="wants", subject=True, later_use=True),
+        "fetch me tape? Zhang wants to wrap a parcel: Zhang's use of it, not a recipient",
     ),
     (_site("", nxt="needs", subject=True), "Min needs / gets scissors: the one in need receives"),
     (_site("from"), "from Wang: the source"),

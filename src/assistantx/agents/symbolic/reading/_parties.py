@@ -162,6 +162,9 @@ class PersonSite:
     ahead: Ahead = field(
         default_factory=Ahead
     )  # the words before ``prev``: "the one" in "the one on Wang's desk"
+    # "fetch me some tape? Zhang wants to wrap a parcel": a part of its own, after the one
+    # the thing is handed to was named, telling what the person wants to do (``_later_use``)
+    later_use: bool = False
 
     @property
     def at_place(self) -> bool:
@@ -233,6 +236,11 @@ PERSON_RULES: tuple[PersonRule, ...] = (
     PersonRule(
         "Rich wants it (on the board): a wish about what was asked, not a recipient",
         lambda s: s.nxt in _NEEDS and s.then in _BACK_REFERENCES,
+        "context",
+    ),
+    PersonRule(
+        "fetch me tape? Zhang wants to wrap a parcel: Zhang's use of it, not a recipient",
+        lambda s: s.later_use,
         "context",
     ),
     PersonRule("Zhang has to / must sign: the doer", lambda s: s.obliged, "actor"),
@@ -335,6 +343,7 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         ),
         indirect=is_indirect_object(tokens, ms, n, prev),
         gapped=gapped_recipient(tokens, ms, n),
+        later_use=_later_use(tokens, m.start, after),
     )
     if m.possessive:
         occasion = is_occasion(tokens, site.following, m.end)
@@ -361,6 +370,41 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         case "occasion":
             roles.occasion.append(who)
             roles.occasion_at.append(m.start)
+
+
+# "Zhang wants to borrow / have / use it": taking the thing, which makes Zhang its recipient
+_TAKING = frozenset({"have", "get", "borrow", "use", "keep", "take", "grab", "hold", "receive"})
+_TAKEN = _BACK_REFERENCES | _ARTICLES | {"one", "mine", "yours"}
+
+
+def _later_use(tokens: Sequence[Token], start: int, after: int) -> bool:
+    """Whether the person at ``start`` opens a part of their own, after a request that hands
+    the thing to the speaker, and is said to want to do something other than take the thing
+    ("fetch me some tape? Zhang wants to wrap a parcel later"): why it is asked for, a
+    colleague's purpose, never whom it is handed to (fix201b class 5: before, Zhang was read
+    as the recipient, and the run sent Zhang the locker's code)."""
+    t = tokens[start]
+    if start == 0 or not (t.opens or t.after_pause):
+        return False
+    said = [x.word for x in tokens[after : after + 4]]
+    if len(said) < 3 or said[0] not in _NEEDS or said[1] != "to":
+        return False
+    if said[2] in _TAKING and (len(said) == 3 or said[3] in _TAKEN):
+        return False  # "Zhang wants to borrow it": Zhang takes it ("to take notes" does not)
+    return _speaker_receives([x.word for x in tokens[:start]])
+
+
+# "fetch me", "for me", "to us": the speaker named as whom the thing is handed to
+_SPEAKER_OBJECTS = frozenset({"me", "us"})
+
+
+def _speaker_receives(words: Sequence[str]) -> bool:
+    """Whether ``words`` name the speaker as whom the thing is handed to ("fetch me some
+    tape", "... for me", "I need some tape")."""
+    return speaker_wants(words) or any(
+        w in _SPEAKER_OBJECTS and n > 0 and (words[n - 1] in _DATIVE_VERBS or words[n - 1] in _TO)
+        for n, w in enumerate(words)
+    )
 
 
 # How many describing words may stand between a possessive and the work it names ("Ngozi's

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from assistantx.agents.symbolic.reading.aligned import aligned_reading
 from assistantx.agents.symbolic.reading.lexicon import Lexicon, Mention
 from assistantx.agents.symbolic.reading.tokens import Token, clause_start
-from assistantx.core import english
+from assistantx.core import english, language
 from assistantx.core.office import Office
 
 _SENDING = english.words("electronic_sending")
@@ -41,6 +41,10 @@ _FILLERS = english.words("emailed_paper_fillers")
 _OWNER_PRONOUNS = english.words("others_possessives")
 _PAPER_NOUNS = english.words("paper_nouns")
 _ELECTRONIC_WORDS = english.words("electronic_formats") | english.words("electronic_picks")
+# who a send is told of ("she emailed it"), and the words said between them ("she already
+# sent it")
+_SUBJECTS = frozenset({"i", "we", "he", "she", "they", "someone", "somebody"})
+_TOLD_ADVERBS = frozenset({"already", "just", "accidentally", "mistakenly", "wrongly", "also"})
 BRING = "bring"  # the send read as the paper brought, on a yes
 FORWARD = "forward"  # the send read as the paper's electronic file forwarded
 
@@ -178,6 +182,8 @@ def _sending_back(
         to = None if m.id == requester else m.id
     for i in range(at, stop - 1):
         if tokens[i].word in _SENDING and tokens[i + 1].word in _BACK:
+            if _told_of(tokens, mentions, i):
+                return None
             return i, stop, to
     return None
 
@@ -188,6 +194,24 @@ def _sends_next(tokens: Sequence[Token], at: int) -> bool:
     while at < len(tokens) - 1 and tokens[at].word in _FILLERS:
         at += 1
     return at < len(tokens) - 1 and tokens[at].word in _SENDING and tokens[at + 1].word in _BACK
+
+
+def _told_of(tokens: Sequence[Token], mentions: Sequence[Mention], verb: int) -> bool:
+    """Whether the send at ``verb`` is told of its subject, said right before it ("she
+    emailed it to the wrong person", "Zhang already sent it"): what happened to the paper,
+    the request's back-story, never a send asked for (fix201b class 4: before, "Could you get
+    Wang's report file for me? She emailed it to the wrong person." asked whether to bring
+    the paper, a question the requester could only answer no)."""
+    k = verb - 1
+    while k >= 0 and tokens[k].word in _TOLD_ADVERBS:
+        k -= 1
+    if k < 0:
+        return False
+    if tokens[k].word in _SUBJECTS:
+        return True
+    return any(
+        m.kind == "person" and not m.possessive and m.end == k + 1 for m in mentions
+    ) and language.is_past_verb(tokens[verb].word)
 
 
 def _copy_verb(office: Office, paper: str) -> str | None:

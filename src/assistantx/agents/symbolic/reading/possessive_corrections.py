@@ -39,6 +39,15 @@ _MARKED = re.compile(
     ),
     re.IGNORECASE,
 )
+# the same words said with no pause before them, right before the choice ("bring me Wang's
+# stapler no wait Zhang's"): the part starts at the first of them (fix201b class 1: before,
+# "no wait" was left behind and read as a withdrawal of the corrected request)
+_MARKED_UNPAUSED = re.compile(
+    r"\s+(?:{m})(?:\s*,?\s*(?:{m}))*\s*[,:\-–—]?\s*$".format(
+        m="|".join(r"\s+".join(map(re.escape, m.split())) for m in _MARKERS)
+    ),
+    re.IGNORECASE,
+)
 # words that name no thing: what a correction is said with
 _SAID_WITH = (
     english.words("owner_correction_markers")
@@ -209,8 +218,9 @@ def _source_before(
 
 def _part_start(sentence: str, at: int) -> int:
     """Where the part the possessive at ``at`` opens begins: at its pause, before the words
-    that mark it a correction ("..., no wait, Dawn's")."""
-    marked = _MARKED.search(sentence[:at])
+    that mark it a correction ("..., no wait, Dawn's"), or at those words where no pause
+    comes before them ("... no wait Dawn's")."""
+    marked = _MARKED.search(sentence[:at]) or _MARKED_UNPAUSED.search(sentence[:at])
     return marked.start() if marked is not None else at
 
 

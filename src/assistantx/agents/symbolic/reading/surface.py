@@ -43,6 +43,7 @@ from assistantx.agents.symbolic.reading.booked_means import booked_means, send_o
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.caused_reason import caused_then_told
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
+from assistantx.agents.symbolic.reading.cleft_need import cleft_needs
 from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
 from assistantx.agents.symbolic.reading.contracted_has_is import spelled_has_is
 from assistantx.agents.symbolic.reading.described_items import (
@@ -614,6 +615,9 @@ STEPS: tuple[Step, ...] = (
     # I need a coffee
     # e.g. "I'd murder a coffee"
     Step("wanting_idioms", lambda s, t, a: wanting_idioms(t)),
+    # I need a stapler
+    # e.g. "it's a stapler I need", "what I need is a stapler"
+    Step("cleft_needs", lambda s, t, a: cleft_needs(t)),
     # Mo signs it
     # e.g. "could Mo put her signature on it"
     Step("signature_put", lambda s, t, a: signature_put(t)),

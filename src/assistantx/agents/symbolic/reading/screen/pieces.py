@@ -128,6 +128,7 @@ class Message:
     lexed: Lexed  # the whole message, read once by the lexicon (a rule that looks beyond its piece)
     noting: int | None = None  # where a note began ("note this down: ...")
     withdrawing: bool = False  # a withdrawal was read: what follows may be its reason
+    withdrawn_at: int = 0  # where the last withdrawal read begins
     negating: bool = False  # a negated errand was read: what follows may be its reason
     # a wish kept the speaker's own thing from others: "I need it" after it is why
     keeping: bool = False

@@ -36,6 +36,7 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     found = withdrawal(terms, piece, msg)
     if found is not None:
         msg.withdrawing = True
+        msg.withdrawn_at = piece.start
         return found
     if (
         msg.withdrawing
@@ -54,6 +55,7 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         msg.withdrawing
         and told
         and not any(p.acts.request for p in msg.pieces if p.start >= piece.start)
+        and not _asked_since_withdrawal(msg, piece)
     ):
         # "never mind, found the stapler in my drawer, thanks": the reason for it, told as
         # what happened, not an errand; a request after it ("..., bring me a pen instead")
@@ -92,6 +94,18 @@ def _detail_of_the_request(terms: Terms, msg: Message, piece: Piece) -> bool:
         return False
     before = {w for p in asked for w in p.words}
     return not set(obj) & before
+
+
+def _asked_since_withdrawal(msg: Message, piece: Piece) -> bool:
+    """Whether a new request stands between the last withdrawal and ``piece`` ("a pen - no
+    wait I've got one, I need a stapler, mine jammed"): what is told after it is that
+    request's reason, never the withdrawal's (fix201b class 2: before, "mine jammed" was read
+    as why the pen was withdrawn, and the stapler was dropped with it)."""
+    return any(
+        p.acts.request and not p.acts.withdrawal
+        for p in msg.pieces
+        if msg.withdrawn_at < p.start < piece.start
+    )
 
 
 def _done_by_now(piece: Piece) -> bool:
