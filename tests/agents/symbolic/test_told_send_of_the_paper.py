@@ -49,8 +49,9 @@ def test_the_told_send_is_the_back_story(text: str, task: tuple[str, ...]) -> No
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [task], frame
 
 
-def test_a_send_asked_for_is_still_asked_about() -> None:
-    # must not change: the paper asked to be emailed, which the office cannot do
+def test_a_send_asked_for_is_still_a_send() -> None:
+    # must not change: the report asked to be emailed is its owner's file, forwarded
+    # (``emailed_paper``: the office keeps electronic files), never back-story
     frame = _lee("could I have Wang's report? just email it to me")
-    assert frame.tasks == [] and frame.question is not None, frame
-    assert "Shall I bring Wang's report to you?" in frame.question, frame
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.kind, t.owner, t.recipient) for t in frame.tasks] == [("send_file", "wang", "lee")]
