@@ -76,7 +76,34 @@ def said_as_declared(said: str, declared: str) -> bool:
         for n, w in enumerate(words)
         if not (0 < n < len(words) - 1 and _noun_only(w) and _noun_only(words[n + 1]))
     )
-    return plain == wanted
+    return plain == wanted or _clipped(words, wanted)
+
+
+# "check the temps" of a declared "check temperatures": a word of the object said clipped, as
+# people type it in chat; at least this many letters, and this many short of the word
+_CLIP_SHORTEST = 4
+_CLIP_SHORT_BY = 3
+
+
+def _clipped(words: tuple[str, ...], wanted: tuple[str, ...]) -> bool:
+    """Whether ``words`` are ``wanted`` with the verb the same and each object word the same
+    or its clipped form ("temp" of "temperature"); the verb is never clipped."""
+    if len(words) != len(wanted) or len(words) < 2 or words[0] != wanted[0]:
+        return False
+    clipped = [
+        w != v and any(_clips(c, v) for c in (w, w.removesuffix("s")))  # "temps": temp + s
+        for w, v in zip(words[1:], wanted[1:], strict=True)
+    ]
+    same = [w == v for w, v in zip(words[1:], wanted[1:], strict=True)]
+    return any(clipped) and all(c or s for c, s in zip(clipped, same, strict=True))
+
+
+def _clips(short: str, word: str) -> bool:
+    return (
+        len(short) >= _CLIP_SHORTEST
+        and len(word) - len(short) >= _CLIP_SHORT_BY
+        and word.startswith(short)
+    )
 
 
 def _singular(word: str) -> str:
