@@ -58,3 +58,25 @@ def test_must_not_change_without_a_place() -> None:
 def test_must_not_change_a_facility_is_asked_about_itself() -> None:
     # "in the fridge": the facility's own answer, as before
     assert "is in service" in (_default("any wipes in the fridge?").decline or "")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Zhang needs a stapler at desk 4, could you take him one",
+        "Zhang needs a stapler at Desk 4 - can you bring him one",
+    ],
+)
+def test_a_colleagues_need_at_their_own_place_is_another_one_brought_there(text: str) -> None:
+    # Zhang sits at desk 4 with his own stapler: "a stapler at desk 4" is where he needs
+    # one, not his own there (it was "Zhang Wei already has their stapler; who should get it?")
+    frame = _default(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("stapler", None, "zhang")]
+
+
+@pytest.mark.parametrize("text", ["I need a stapler from desk 4", "I need the stapler at desk 4"])
+def test_a_thing_from_a_colleagues_place_for_the_requester_is_theirs(text: str) -> None:
+    # must not change: taken from desk 4 for the requester, it is the one there, Zhang's
+    frame = _default(text)
+    assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [("stapler", "zhang", "lee")]

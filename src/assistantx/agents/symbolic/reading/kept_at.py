@@ -72,8 +72,10 @@ def kept_owners(
         item = phrase.item.id
         name = office.item_type(item).name
         if len(phrase.owners) == 1:
-            if _another_of_ones_own(office, phrase, requester):
-                continue  # "need a tape measure in the lab", the requester's own one there
+            if _another_of_ones_own(office, phrase, {requester, *roles.recipient}):
+                # "need a tape measure in the lab", "Walker needs a muzzle at the daycare
+                # desk": the own one there of whom it is for, so another one, there
+                continue
             owner = placed[item] = phrase.owners[0]
             if owner != office.kept_owner(item, besides=requester):
                 roles.owners[phrase.item.start] = owner
@@ -141,14 +143,16 @@ def place_phrases(
     return out
 
 
-def _another_of_ones_own(office: Office, phrase: PlacePhrase, requester: str) -> bool:
-    """ "need a tape measure in the lab": the one kept there is the requester's own, with them
-    (on their desk, in their room), and they ask for "a" one: another one, anyone's, as for a
-    requester with none. Their own kept by a facility there ("a thermometer from the lab
-    cabinet") is a fine reading, and so is "the tape measure in the lab"."""
-    if phrase.definite or phrase.owners != (requester,):
+def _another_of_ones_own(office: Office, phrase: PlacePhrase, receivers: set[str]) -> bool:
+    """ "need a tape measure in the lab": the one kept there is the own one of whom it is for
+    (the requester, or the colleague said to need it: "Walker needs a muzzle at the daycare
+    desk"), with them (on their desk, in their room), and "a" one is asked: another one,
+    anyone's, brought there, as for someone with none. Their own kept by a facility there ("a
+    thermometer from the lab cabinet") is a fine reading, and so is "the tape measure in the
+    lab"."""
+    if phrase.definite or len(phrase.owners) != 1 or phrase.owners[0] not in receivers:
         return False
-    return office.keeper(requester, phrase.item.id) is None
+    return office.keeper(phrase.owners[0], phrase.item.id) is None
 
 
 def _supplied_elsewhere(office: Office, item: str) -> bool:
