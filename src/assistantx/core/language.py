@@ -479,6 +479,21 @@ def is_stance_adverb(word: str) -> bool:
     return word.endswith("ly") and set(lemmas(word)) == {"ADV"}
 
 
+# A word seen this often in writing (Zipf 6: once in a thousand words) that the dictionary
+# knows as no noun, verb or adjective is a function word ("in", "the", "of", "at", "by").
+FUNCTION_ZIPF = 6.0
+
+
+def is_function_word(word: str) -> bool:
+    """Whether ``word`` only builds the sentence ("in", "of", "the"): very frequent and no
+    open-class word of the dictionary; a name ("zhang") or a rare word is none."""
+    w = word.lower()
+    said = lemmas(w)
+    if "NOUN" in said or "VERB" in said or "ADJ" in said:
+        return False
+    return _zipf_english(w) >= FUNCTION_ZIPF
+
+
 def is_noun(word: str) -> bool:
     """Whether the dictionary knows the word as a noun."""
     return "NOUN" in lemmas(word)

@@ -27,7 +27,9 @@ def aside(
     if not (anywhere or closing):
         return False
     words = split_words(left)
-    if set(_unpaired(words)) & terms.office_words or terms.acts.request(words):
+    # "machine in the laundry": a function word of a longer name names nothing alone
+    named = {w for w in _unpaired(words) if not language.is_function_word(w)}
+    if named & terms.office_words or terms.acts.request(words):
         return False
     # "something longer?", "another one": what a statement beside it makes a request of
     helpers = {w for p in (*terms.en.purpose_heads, *terms.en.another_one) for w in split_words(p)}
