@@ -11,7 +11,8 @@ print it for her") keeps both: only a need gives way.
 An unnamed person's need ("an intern needs a stapler", "one of the beginners needs a marking
 pen"), then a hand-over of that thing to a colleague ("could you bring one to Wang?"): the
 colleague is how it reaches them; the need read as the speaker's own made a second one for the
-speaker (``unnamed_need_met``).
+speaker (``unnamed_need_met``). So is a person described by a noun that names nothing of the
+office ("the carver needs a set square, could you take him mine", once "him" is named).
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from assistantx.agents.symbolic.reading._parties import Clause
 from assistantx.agents.symbolic.reading.outsider_need import outsider_wants
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token, clause_start
-from assistantx.core import english, task_kinds
+from assistantx.core import english, language, task_kinds
 from assistantx.core.task_schema import Task
 
 _NEEDS = english.words("need_verbs")
@@ -93,7 +94,27 @@ def says_an_unnamed_need(clause: Clause, tokens: Sequence[Token]) -> bool:
     words = content([t.word for t in tokens[start:end]])
     if tuple(words[:2]) == _ONE_OF:
         words = words[2:]
-    return outsider_wants(words)
+    return outsider_wants(words) or _described_party_needs(clause, tokens, start)
+
+
+# "the carver", "a new lad": the articles that open a described person's phrase
+_ARTICLES = frozenset({"the", "a", "an", "this", "that"})
+_INDEFINITE = frozenset({"a", "an", "some", "another", "one"})
+
+
+def _described_party_needs(clause: Clause, tokens: Sequence[Token], start: int) -> bool:
+    """ "the carver needs a set square": an article, at most one describing word and a noun,
+    none of them a name of the office (no mention of a thing, place or colleague covers
+    them), then a need verb: someone described, whose need a later hand-over meets."""
+    need = next((m.start for m in clause.mentions if tokens[m.start].word in _NEEDS), None)
+    if need is None or not 2 <= need - start <= 3 or tokens[start].word not in _ARTICLES:
+        return False
+    if any(m.kind != "word" and m.start < need for m in clause.mentions):
+        return False
+    # "needs *a* set square": a thing they lack, not work on a thing ("needs stamping")
+    if need + 1 >= len(tokens) or tokens[need + 1].word not in _INDEFINITE:
+        return False
+    return language.is_noun(tokens[need - 1].word)
 
 
 def unnamed_need_met(need: Task, made: Sequence[Task], requester: str) -> bool:

@@ -6,11 +6,12 @@ you bring him mine": him is Eoin, mine the speaker's, one hand-over). Without th
 read as the speaker's own and a thing was fetched for the speaker as well.
 
 The subject is a determiner, at most two describing words and a head noun, then "on", "at"
-or "by" and the workstation's name, then a verb of need (english.yaml ``need_verbs``). No word
-of it may be a word of the office's things or facilities ("the stapler on desk 3 needs ..." is
-a thing, never rewritten; a colleague's name word after the determiner is the English word:
-"the mason"), and the workstation must be the place of exactly one colleague (none, or several:
-left as it is). Nothing here knows an office's words: they come from its file.
+or "by" and the workstation's name, then a verb of need (english.yaml ``need_verbs``). Its head
+noun may not end a name of the office's things or facilities ("the stapler on desk 3 needs ..."
+is a thing, never rewritten); a word that only describes one may ("mason" of a "mason's
+square": "the mason on banker 3 needs ..."; a colleague's name word after the determiner is
+the English word), and the workstation must be the place of exactly one colleague (none, or
+several: left as it is). Nothing here knows an office's words: they come from its file.
 """
 
 from __future__ import annotations
@@ -28,9 +29,9 @@ _DETERMINERS = ("the", "a", "an", "that", "this", "our", "your", "my")
 class SeatedSubject:
     """The rewrite for one office: its workstations of one colleague each."""
 
-    def __init__(self, office: Office, thing_words: Collection[str]) -> None:
-        """``thing_words``: the words of the office's things and facilities' names."""
-        self.thing_words = thing_words
+    def __init__(self, office: Office, thing_heads: Collection[str]) -> None:
+        """``thing_heads``: the last words of the office's things' and facilities' names."""
+        self.thing_heads = thing_heads
         seated: dict[str, list[str]] = {}
         for p in office.people:
             seated.setdefault(p.location, []).append(p.name)
@@ -58,8 +59,8 @@ class SeatedSubject:
             return text
 
         def named(m: re.Match[str]) -> str:
-            if any(w.lower() in self.thing_words for w in m.group("noun").split()):
-                return m.group(0)
+            if m.group("noun").split()[-1].lower() in self.thing_heads:
+                return m.group(0)  # "the stapler on desk 3 needs ...": a thing
             place = " ".join(m.group("place").lower().split())
             return f"{self.names[place]} {m.group('verb')}"
 

@@ -404,6 +404,14 @@ def _thing_subject(before: list[str]) -> bool:
     return k > 0 and before[k - 1] in _THING_SUBJECTS
 
 
+# the articles that open a described person's phrase ("the carver", "a new lad"); not a
+# possessive ("my laptop needs a charger" is the speaker's own thing)
+_DESCRIBING_ARTICLES = frozenset({"the", "a", "an", "this", "that"})
+# what opens the thing a described person needs ("needs *a* set square"); a thing's own need
+# is of work ("the crew list needs stamping", "the quote needs Mark's signature") or of "it"
+_INDEFINITE_OBJECTS = frozenset({"a", "an", "some", "another", "one"})
+
+
 class SpeechActs:
     """Classifies the pieces of a message against one office's vocabulary."""
 
@@ -1078,6 +1086,18 @@ class SpeechActs:
         rest = w[n:]
         return any(tuple(rest[: len(p)]) == p for p in _OTHERS_LACKS) and len(rest) > 1
 
+    def _described_party(self, subject: list[str]) -> bool:
+        """ "the carver", "a new lad": an article, at most one describing word and a noun that
+        names nothing of this office (no thing, place or colleague): someone described, not
+        the speaker, whose need is told ("the carver needs a set square" had fetched one for
+        the speaker). "my laptop" (the speaker's own) and "the stapler" (a thing) are none."""
+        if not 2 <= len(subject) <= 3 or subject[0] not in _DESCRIBING_ARTICLES:
+            return False
+        head = subject[-1]
+        if not language.is_noun(head) or head in self._office_words():
+            return False
+        return not any(self._named(x) for x in subject[1:])
+
     def _office_words(self) -> frozenset[str]:
         if self._known is None:
             lex = self.lex
@@ -1131,6 +1151,12 @@ class SpeechActs:
                 subject = w[:n]
                 if outsider_subject(subject) and not _needs_to(w, n):
                     return True  # "a visitor wants a coffee": a want, not the speaker's ask
+                if (
+                    self._described_party(subject)
+                    and w[n + 1 : n + 2]
+                    and (w[n + 1] in _INDEFINITE_OBJECTS)
+                ):
+                    return True  # "the carver needs a set square": theirs, told
                 return not set(subject) & requester_words and self._person_at(w, 0)
             if w[n] in _NEED and outsider_subject(w[:n]) and not _needs_to(w, n):
                 return True  # "the visitors want coffee": their want, said as a fact

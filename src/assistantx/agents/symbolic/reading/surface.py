@@ -185,7 +185,7 @@ class Surface:
         self.office_phrases = frozenset({*lex.items, *lex.facilities, *lex.places})
         # "the carver on bench 3 needs ...": a colleague described by their workstation
         self.seated_subject = SeatedSubject(
-            office, {w for name in (*lex.items, *lex.facilities) for w in name.split()}
+            office, {name.split()[-1] for name in (*lex.items, *lex.facilities) if name.split()}
         )
         self.place_doers = PlaceDoers(office)  # "can laundry stitch it up?"
         self.remedies = ProblemRemedies(office)  # "... dog hair, got anything to sort it out?"
