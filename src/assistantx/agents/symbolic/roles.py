@@ -337,14 +337,6 @@ class Roles:
             return state
         if role.fixed is not None:
             return state
-        if self._keeps_it_too(role, ltm) and role.requester not in state.excluded:
-            # the requester keeps the facility too, and no fellow keeper could: they take it
-            # out themselves (no one asked, their request is their yes), before the group
-            failed = ev.failed_handover(role.requester)
-            if failed is None:
-                state.status, state.person = "bound", role.requester
-                return state
-            state.excluded[role.requester] = "did not come"
         for person in helpers if role.own_item_leaves else []:
             # said yes in the group: now asked in their own chat, where consent is given
             if person in state.excluded:
@@ -366,15 +358,6 @@ class Roles:
         if group is not None:
             state.status, state.group = "group", group
         return state
-
-    @staticmethod
-    def _keeps_it_too(role: Role, ltm: LongTermMemory) -> bool:
-        """Whether ``role`` takes a thing out of a facility the requester keeps too."""
-        return (
-            role.kind == "keep"
-            and role.facility is not None
-            and role.requester in ltm.guards(role.facility)
-        )
 
     @staticmethod
     def _lent_out(role: Role, person: str, ltm: LongTermMemory) -> bool:
