@@ -945,6 +945,8 @@ class SpeechActs:
                 return False  # "I need", "Min needs", "I'd like", "I meant a stapler"
             if x in self.lex.items:
                 continue  # "Hu's scissors": an item of the office, never the verb
+            if any(" ".join(w[n : n + k]) in self.lex.items for k in (2, 3)):
+                continue  # "some wet wipes would be great": a name's first word, no verb
             if _plural_subjects_verb(w, n):
                 return True  # "the new drills make a lot of noise": told of the drills
             if linked_state(w, n, _SUBJECTS):
