@@ -74,6 +74,7 @@ from assistantx.agents.symbolic.reading.material_work import material_work
 from assistantx.agents.symbolic.reading.named_want import named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
+from assistantx.agents.symbolic.reading.needed_done import needed_done
 from assistantx.agents.symbolic.reading.numeral_one import numeral_ones
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
 from assistantx.agents.symbolic.reading.paper_parts_cut import without_paper_parts
@@ -109,7 +110,7 @@ from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_said_as_product import WorkSaidAsProduct
-from assistantx.core import task_kinds
+from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
 
@@ -175,6 +176,10 @@ class Surface:
             office, {*lex.cue_words, *lex.items, *lex.name_words, *lex.people}
         )
         self.means = send_out_means(office)  # "courier": what the send-outs send by
+        # the forms of the office's services and colleagues' work ("photocopied", "signed")
+        self.work_forms = terms.service_verbs | {
+            f for w in PERSON_WORK for f in language.verb_forms(w)
+        }
         self.round_trip = RoundTripWork(office)  # "take it to the kitchen and bring it back"
         # what the office's things are declared for ("measure"), for a lack of one
         self.purposes = frozenset(p.lower() for t in office.item_types for p in t.purposes)
@@ -364,6 +369,9 @@ STEPS: tuple[Step, ...] = (
     # a colleague described by their workstation, as a need's subject: that colleague
     # e.g. "the carver on bench 3 needs a set square, could you bring him mine"
     Step("seated_subject", lambda s, t, a: s.seated_subject(t)),
+    # an unknown paper needed with work done to it: the work asked, as with "get"
+    # e.g. "need my certificate photocopied, the auditors want one"
+    Step("needed_done", lambda s, t, a: needed_done(t, s.work_forms, s.names_something)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),
