@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.announced_borrowing import announced_bor
 from assistantx.agents.symbolic.reading.approved_use import approved_uses
 from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.attributive_work import without_attributive_work
+from assistantx.agents.symbolic.reading.bare_room import BareRoom
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
@@ -176,6 +177,11 @@ class Surface:
             office, {*lex.cue_words, *lex.items, *lex.name_words, *lex.people}
         )
         self.means = send_out_means(office)  # "courier": what the send-outs send by
+        # "down to wrapping": a room said by the first word of its name
+        self.bare_room = BareRoom(
+            (loc.name for loc in office.locations),
+            {*terms.thing_words, *(w for name in lex.facilities for w in name.split())},
+        )
         # the forms of the office's services and colleagues' work ("photocopied", "signed")
         self.work_forms = terms.service_verbs | {
             f for w in PERSON_WORK for f in language.verb_forms(w)
@@ -372,6 +378,9 @@ STEPS: tuple[Step, ...] = (
     # an unknown paper needed with work done to it: the work asked, as with "get"
     # e.g. "need my certificate photocopied, the auditors want one"
     Step("needed_done", lambda s, t, a: needed_done(t, s.work_forms, s.names_something)),
+    # a room said bare by the first word of its name, after "to": the room
+    # e.g. "can you take my lunch down to kitchenette"
+    Step("bare_rooms", lambda s, t, a: s.bare_room(t)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),
