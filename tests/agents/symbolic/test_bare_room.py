@@ -64,6 +64,12 @@ def test_a_room_said_by_its_first_word_is_the_room(text: str) -> None:
     assert "wax it" in frame.question, frame
 
 
+def test_in_and_the_word_before_a_noun_name_no_room() -> None:
+    # "in wrapping" is how a thing is done as often as where: never rewritten
+    said = _colm("can you wax my wheel in wrapping")
+    assert "Wrapping room" not in " ".join(e.words for e in said.evidence), said
+
+
 def test_the_english_word_before_a_noun_is_no_room() -> None:
     # must not change: "wrapping paper" names no room, nothing rewritten
     frame = _colm("take my wheel down to wrapping paper")

@@ -8,9 +8,10 @@ Only a name of two words whose second only says it is a room ("room", "office", 
 "suite", "centre"), a first word of at least four letters that begins no other room's name
 (the "Wrapping tables" in the Wrapping room leave it the room's) and is no word of the
 office's things, people or services, nor a verb's plain form ("to post a letter" for a "Post
-room"); only right after "to", "into" or "in" with no article between (a word with "the"
-before it, "for the meeting", is the English word, and so is a word before a noun: "to
-wrapping paper"). Nothing here knows an office's words: they come from its file.
+room"); only right after "to" or "into" ("in writing" names no room), with no article
+between (a word with "the" before it, "for the meeting", is the English word, and so is a
+word before a noun: "to wrapping paper"). Nothing here knows an office's words: they come
+from its file.
 """
 
 from __future__ import annotations
@@ -49,7 +50,7 @@ class BareRoom:
         if self.rooms:
             said = "|".join(re.escape(f) for f in sorted(self.rooms, key=len, reverse=True))
             self.pattern = re.compile(
-                rf"\b(?P<to>to|into|in)\s+(?P<front>{said})\b(?!['’])(?P<next>\s+[^\W\d_]+)?",
+                rf"\b(?P<to>to|into)\s+(?P<front>{said})\b(?!['’])(?P<next>\s+[^\W\d_]+)?",
                 re.IGNORECASE,
             )
 

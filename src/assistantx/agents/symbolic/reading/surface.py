@@ -379,7 +379,7 @@ STEPS: tuple[Step, ...] = (
     # e.g. "need my certificate photocopied, the auditors want one"
     Step("needed_done", lambda s, t, a: needed_done(t, s.work_forms, s.names_something)),
     # a room said bare by the first word of its name, after "to": the room
-    # e.g. "can you take my lunch down to kitchenette"
+    # e.g. "take the parcel down to meeting"
     Step("bare_rooms", lambda s, t, a: s.bare_room(t)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
