@@ -130,27 +130,3 @@ async def test_end_to_end_the_owner_is_asked_and_the_requester_told_first() -> N
     assert any("A message cannot grant that" in t for t in to_mao), to_mao
     assert any(t.startswith("I'll ask Zhang Wei first") for t in to_mao), to_mao
     assert run.sim.world.check({"holds": ["mao", "stapler:zhang"]})
-
-
-@pytest.mark.parametrize(
-    "text",
-    [
-        "Wang said I could borrow her stapler",
-        "Wang says I can take her stapler",
-        "Wang told me I could have her stapler",
-        "wang said i could borrow her stapler, can you get it",
-    ],
-)
-def test_leave_to_have_a_thing_reported_alone_is_the_thing_wanted(text: str) -> None:
-    # it had been a statement ("Noted."): the thing is wanted, its owner asked as always
-    frame = frame_reader(default_office, "lee")(text)
-    assert frame.question is None and frame.decline is None, frame
-    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
-        ("transfer", "stapler", "wang", "lee")
-    ]
-
-
-def test_leave_for_no_thing_is_still_told() -> None:
-    # must not change: "go home early" is no thing of the office
-    frame = frame_reader(default_office, "lee")("Wang said I could go home early")
-    assert frame.tasks == [] and frame.question is None, frame

@@ -7,12 +7,7 @@ reads it as the reported leave it already knows.
 
 Only after a verb of giving leave (``leave_verbs``) with the speaker ("me", "my", "us", "our")
 and a verb in -ing that the dictionary knows: "Pat ok'd the budget" and "Pat approved my
-leave" are left as said.
-
-The leave reported with another verb of having the thing ("frank said I could borrow his
-torch", "Wang says I can take her stapler", "she told me I could have it") is the same leave:
-said as "use", it reads as the thing wanted (it had been a statement, "Noted."), and the owner
-is asked as always."""
+leave" are left as said."""
 
 from __future__ import annotations
 
@@ -30,22 +25,9 @@ _APPROVED = re.compile(
 _WE = frozenset({"us", "our"})
 
 
-# "said I could borrow", "says I can take", "told me I could have": leave to have the thing
-_HAVING = re.compile(
-    r"\b(?:said|says|told\s+me)\s+(?:that\s+)?(?P<who>i|we)\s+(?:could|can|may|might)\s+"
-    r"(?:borrow|have|take|grab|nab|pinch)\b",
-    re.IGNORECASE,
-)
-
-
 def approved_uses(text: str) -> str:
     """``text`` with each reported leave for the speaker's doing said as "said I could <verb>"
-    ("ok'd me using his stamp" → "said I could use his stamp"), and each reported leave to
-    have a thing said with "use" ("said I could borrow his torch" → "said I could use his
-    torch")."""
-    text = _HAVING.sub(
-        lambda m: f"said {'we' if m.group('who').lower() == 'we' else 'I'} could use", text
-    )
+    ("ok'd me using his stamp" → "said I could use his stamp")."""
 
     def said(m: re.Match[str]) -> str:
         verbs = sorted(language.verb_lemmas(m.group("doing").lower()))
