@@ -228,7 +228,9 @@ class _OfficeWords:
         said = [(t.name, *t.synonyms) for t in office.item_types]
         said += [(f.name, *f.synonyms) for f in office.facilities]
         thing_names = (name.lower() for names in said for name in names)
-        self.seated = SeatedSubject(office, {w for name in thing_names for w in name.split()})
+        # the last word of each name, as the reader passes it ("the mason on banker 3" where a
+        # "mason's square" is a thing is still the colleague seated there)
+        self.seated = SeatedSubject(office, {n.split()[-1] for n in thing_names if n.split()})
         # how each colleague spells their own name: "Sofía" typed with its mark is Sofía
         # Ramírez, not also Sofia Kowalczyk (the reader's ``exact_spelling``)
         self.spellings = own_spellings(office)

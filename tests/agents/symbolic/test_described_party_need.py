@@ -12,6 +12,8 @@ from __future__ import annotations
 import pytest
 
 from assistantx.agents.symbolic.reading.parser import InstructionParser
+from assistantx.runtime.recipients import named_recipients
+from helpers.consent_memory import memory
 from helpers.dataset_offices import default_office
 from helpers.dive_van import raw_dive_van
 from helpers.office_builder import Row, parsed
@@ -65,7 +67,7 @@ def _with_masons_square() -> Row:
     raw = raw_dive_van()
     for t in raw["item_types"]:
         if t["id"] == "set_square":
-            t["synonyms"] = ["square", "mason's square"]
+            t["synonyms"] = ["square", "mason's square", "mason square"]
     return raw
 
 
@@ -76,3 +78,9 @@ def test_a_word_describing_a_thing_still_describes_the_seated_colleague() -> Non
     assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("set_square", "lee", "eoin")
     ], frame
+
+
+def test_the_consent_guard_reads_the_seated_colleague_as_the_reader_does() -> None:
+    # the code for Eoin's set square may go to Eoin: the guard names him as the reader does
+    said = "the mason on bench 3 needs a set square. could you bring him mine"
+    assert "eoin" in named_recipients(parsed(_with_masons_square)(), memory("lee", said))

@@ -190,8 +190,8 @@ class Planner:
                 "keep",
                 requester,
                 # the requester who alone keeps it takes it out themselves (their request is
-                # their yes), as the oracle plans it (``policy.runs_it_alone``); a fellow
-                # keeper is asked first (``roles.resolve``)
+                # their yes), as the oracle plans it (``policy.runs_it_alone``); with a fellow
+                # keeper, that keeper is asked, never the requester instead
                 fixed=requester if set(kept.guards) == {requester} else None,
                 item_type=item_type,
                 item_owner=t.owner,
