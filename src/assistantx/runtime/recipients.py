@@ -227,10 +227,7 @@ class _OfficeWords:
         # reader's ``seated_subject``)
         said = [(t.name, *t.synonyms) for t in office.item_types]
         said += [(f.name, *f.synonyms) for f in office.facilities]
-        thing_names = (name.lower() for names in said for name in names)
-        # the last word of each name, as the reader passes it ("the mason on banker 3" where a
-        # "mason's square" is a thing is still the colleague seated there)
-        self.seated = SeatedSubject(office, {n.split()[-1] for n in thing_names if n.split()})
+        self.seated = SeatedSubject.of_names(office, (name for names in said for name in names))
         # how each colleague spells their own name: "Sofía" typed with its mark is Sofía
         # Ramírez, not also Sofia Kowalczyk (the reader's ``exact_spelling``)
         self.spellings = own_spellings(office)

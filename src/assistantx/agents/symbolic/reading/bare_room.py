@@ -19,9 +19,9 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterable
 
+from assistantx.agents.symbolic.reading.clipped_names import ROOM_WORDS
 from assistantx.core import language
 
-_ROOM_WORDS = frozenset({"room", "office", "area", "suite", "centre", "center"})
 _SHORTEST = 4
 
 
@@ -34,7 +34,7 @@ class BareRoom:
         fronts: dict[str, list[str]] = {}
         for name in names:
             words = name.split()
-            if len(words) == 2 and words[1].lower() in _ROOM_WORDS:
+            if len(words) == 2 and words[1].lower() in ROOM_WORDS:
                 fronts.setdefault(words[0].lower(), []).append(name)
         self.rooms = {
             front: rooms[0]

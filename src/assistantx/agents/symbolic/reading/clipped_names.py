@@ -18,7 +18,7 @@ from assistantx.core import language
 
 # "Reprographics room", "Reprographics office": the room is the one word before a word that
 # only says it is a room, so "repro" clips it too.
-_ROOM_WORDS = frozenset({"room", "office", "area", "suite", "centre", "center"})
+ROOM_WORDS = frozenset({"room", "office", "area", "suite", "centre", "center"})
 _SHORTEST = 5
 _SHORT_BY = 3
 _IN_USE = 2.0
@@ -43,7 +43,7 @@ def clipped_names(names: Iterable[tuple[str, str]], taken: Collection[str]) -> d
 
 # Head words that do not name one place alone: too general ("the office", "my desk", "the
 # floor") or mostly meaning something else ("the post" is the mail, not a "security post").
-_NOT_ALONE = _ROOM_WORDS | frozenset(
+_NOT_ALONE = ROOM_WORDS | frozenset(
     {"desk", "floor", "corner", "door", "table", "side", "hall", "space", "point", "place"}
     | {"post", "line", "end", "top", "front", "back"}
 )
@@ -76,7 +76,7 @@ def _head(key: str) -> str | None:
     words = key.split(" ")
     if len(words) == 1:
         return words[0]
-    if len(words) == 2 and words[1] in _ROOM_WORDS:
+    if len(words) == 2 and words[1] in ROOM_WORDS:
         return words[0]
     return None
 

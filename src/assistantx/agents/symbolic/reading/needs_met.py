@@ -20,7 +20,11 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading._parties import Clause
-from assistantx.agents.symbolic.reading.outsider_need import outsider_wants
+from assistantx.agents.symbolic.reading.outsider_need import (
+    DESCRIBING_ARTICLES,
+    LACKED_OPENERS,
+    outsider_wants,
+)
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.tokens import Token, clause_start
 from assistantx.core import english, language, task_kinds
@@ -97,22 +101,17 @@ def says_an_unnamed_need(clause: Clause, tokens: Sequence[Token]) -> bool:
     return outsider_wants(words) or _described_party_needs(clause, tokens, start)
 
 
-# "the carver", "a new lad": the articles that open a described person's phrase
-_ARTICLES = frozenset({"the", "a", "an", "this", "that"})
-_INDEFINITE = frozenset({"a", "an", "some", "another", "one"})
-
-
 def _described_party_needs(clause: Clause, tokens: Sequence[Token], start: int) -> bool:
     """ "the carver needs a set square": an article, at most one describing word and a noun,
     none of them a name of the office (no mention of a thing, place or colleague covers
     them), then a need verb: someone described, whose need a later hand-over meets."""
     need = next((m.start for m in clause.mentions if tokens[m.start].word in _NEEDS), None)
-    if need is None or not 2 <= need - start <= 3 or tokens[start].word not in _ARTICLES:
+    if need is None or not 2 <= need - start <= 3 or tokens[start].word not in DESCRIBING_ARTICLES:
         return False
     if any(m.kind != "word" and m.start < need for m in clause.mentions):
         return False
     # "needs *a* set square": a thing they lack, not work on a thing ("needs stamping")
-    if need + 1 >= len(tokens) or tokens[need + 1].word not in _INDEFINITE:
+    if need + 1 >= len(tokens) or tokens[need + 1].word not in LACKED_OPENERS:
         return False
     return language.is_noun(tokens[need - 1].word)
 

@@ -34,6 +34,12 @@ _HELPED_WANTS = tuple(
     tuple(p.split()) for p in (*english.entries("modal_wants"), *english.entries("need_phrases"))
 )
 _NEEDS = english.words("need_verbs")
+# a person described by what they do, not listed ("the carver", "a new lad"): the articles
+# that open the phrase (never a possessive: "my laptop needs a charger" is the speaker's own
+# thing), and what opens the thing they need ("needs *a* set square"; a thing's own need is
+# of work, "the crew list needs stamping", or of "it")
+DESCRIBING_ARTICLES = frozenset({"the", "a", "an", "this", "that"})
+LACKED_OPENERS = frozenset({"a", "an", "some", "another", "one"})
 _LONGEST_SUBJECT = 6  # "my two young guests of ours" at most
 
 

@@ -17,7 +17,7 @@ several: left as it is). Nothing here knows an office's words: they come from it
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Iterable
 
 from assistantx.core import english
 from assistantx.core.office import Office
@@ -52,6 +52,12 @@ class SeatedSubject:
                 r"(?P<place>" + places + r")\s+(?P<verb>" + "|".join(sorted(_NEEDS)) + r")\b",
                 re.IGNORECASE,
             )
+
+    @classmethod
+    def of_names(cls, office: Office, thing_names: Iterable[str]) -> SeatedSubject:
+        """The rewrite, with the heads of ``thing_names`` (the office's things' and
+        facilities' names as said) as the nouns it leaves alone."""
+        return cls(office, {n.split()[-1].lower() for n in thing_names if n.split()})
 
     def __call__(self, text: str) -> str:
         """``text`` with each such subject said as the colleague's name."""

@@ -47,7 +47,12 @@ from assistantx.agents.symbolic.reading.modal_told import told_with_modal
 from assistantx.agents.symbolic.reading.no_work import no_work_told
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
-from assistantx.agents.symbolic.reading.outsider_need import outsider_subject, outsider_wants
+from assistantx.agents.symbolic.reading.outsider_need import (
+    DESCRIBING_ARTICLES,
+    LACKED_OPENERS,
+    outsider_subject,
+    outsider_wants,
+)
 from assistantx.agents.symbolic.reading.outsider_report import outsider_reports
 from assistantx.agents.symbolic.reading.passive_service import service_asked_in_passive
 from assistantx.agents.symbolic.reading.phrase_index import (
@@ -402,14 +407,6 @@ def _thing_subject(before: list[str]) -> bool:
     while k > 0 and before[k - 1] in _BEFORE_HAVING:
         k -= 1
     return k > 0 and before[k - 1] in _THING_SUBJECTS
-
-
-# the articles that open a described person's phrase ("the carver", "a new lad"); not a
-# possessive ("my laptop needs a charger" is the speaker's own thing)
-_DESCRIBING_ARTICLES = frozenset({"the", "a", "an", "this", "that"})
-# what opens the thing a described person needs ("needs *a* set square"); a thing's own need
-# is of work ("the crew list needs stamping", "the quote needs Mark's signature") or of "it"
-_INDEFINITE_OBJECTS = frozenset({"a", "an", "some", "another", "one"})
 
 
 class SpeechActs:
@@ -1093,7 +1090,7 @@ class SpeechActs:
         names nothing of this office (no thing, place or colleague): someone described, not
         the speaker, whose need is told ("the carver needs a set square" had fetched one for
         the speaker). "my laptop" (the speaker's own) and "the stapler" (a thing) are none."""
-        if not 2 <= len(subject) <= 3 or subject[0] not in _DESCRIBING_ARTICLES:
+        if not 2 <= len(subject) <= 3 or subject[0] not in DESCRIBING_ARTICLES:
             return False
         head = subject[-1]
         if not language.is_noun(head) or head in self._office_words():
@@ -1156,7 +1153,7 @@ class SpeechActs:
                 if (
                     self._described_party(subject)
                     and w[n + 1 : n + 2]
-                    and (w[n + 1] in _INDEFINITE_OBJECTS)
+                    and (w[n + 1] in LACKED_OPENERS)
                 ):
                     return True  # "the carver needs a set square": theirs, told
                 return not set(subject) & requester_words and self._person_at(w, 0)

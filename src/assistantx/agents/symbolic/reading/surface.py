@@ -195,9 +195,7 @@ class Surface:
         ) | frozenset(w for words in lex.cues.values() for w in words if " " not in w)
         self.office_phrases = frozenset({*lex.items, *lex.facilities, *lex.places})
         # "the carver on bench 3 needs ...": a colleague described by their workstation
-        self.seated_subject = SeatedSubject(
-            office, {name.split()[-1] for name in (*lex.items, *lex.facilities) if name.split()}
-        )
+        self.seated_subject = SeatedSubject.of_names(office, (*lex.items, *lex.facilities))
         self.place_doers = PlaceDoers(office)  # "can laundry stitch it up?"
         self.remedies = ProblemRemedies(office)  # "... dog hair, got anything to sort it out?"
         self.keepers = kept_services(office)  # each keeper's services, by their verbs
