@@ -169,8 +169,9 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
         ),
         key=lambda pair: -len(pair[0]),
     )
+    said_as_verb = _product_names_said_as_verbs(office, haystack)
     for form, kind in office_forms:
-        if f" {form} " in haystack:
+        if f" {form} " in haystack and (form, kind) not in said_as_verb:
             at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
             haystack = haystack.replace(f" {form} ", " | ")
             rest = rest.replace(f" {form} ", " | ")
@@ -187,6 +188,26 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
             if f" {form} " in rest:
                 at[kind] = min(at.get(kind, len(original)), original.find(f" {form} "))
     return sorted(at, key=lambda k: at[k])
+
+
+def _product_names_said_as_verbs(office: Office, haystack: str) -> set[tuple[str, str]]:
+    """(form, operation) pairs of a product's one-word name that the text says only in the
+    verb's place, right after "you" or "please": "could you spare Sam some of your lube"
+    asks to lend, where "spare" is also a name of the key cutter's product (a spare key).
+    The operation's own verbs are never in it ("could you duplicate my key")."""
+    found: set[tuple[str, str]] = set()
+    for op in office.operations:
+        if op.product is None:
+            continue
+        verbs = {f for v in op.request_phrases for f in word_forms(normalize(v))}
+        product = office.item_type(op.product)
+        for name in (normalize(n) for n in (product.name, *product.synonyms)):
+            if not name or " " in name or name in verbs:
+                continue
+            said = [m.start() for m in re.finditer(rf"(?<= ){re.escape(name)}(?= )", haystack)]
+            if said and all(re.search(r" (?:you|please|pls|plz) $", haystack[:at]) for at in said):
+                found.update((form, op.id) for form in word_forms(name))
+    return found
 
 
 def _without_destinations(office: Office, text: str) -> str:
