@@ -135,3 +135,44 @@ def test_the_verb_without_its_object_keeps_its_reading(
 
 def test_a_verb_with_another_object_names_no_work() -> None:
     assert _repro("apply for leave for me").tasks == []
+
+
+def _default_rig() -> Office:
+    """The default office with a check named by verb and object, at a machine whose name
+    holds the object's word ("run diagnostics" at the "diagnostics rig")."""
+    raw: dict[str, Any] = raw_yaml(DEFAULT_FILE)
+    op = {"id": "check", "name": "run diagnostics", "verbs": ["diagnose"], "input": "document"}
+    raw["operations"].append(op)
+    raw["facilities"].append(
+        {
+            "id": "rig",
+            "name": "diagnostics rig",
+            "location": "print_room",
+            "operations": ["check"],
+            "guards": ["xu"],
+        }
+    )
+    return parse_office(raw, "default with a diagnostics rig")
+
+
+_rig_frame = frame_reader(_default_rig, "zhou")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the machine's name holds the work's object: the word is the machine's (blind round
+        # 211: the object's word was taken from the machine's name, and the thing between
+        # went with it: "What should I do, with which item?")
+        "run my document through the diagnostics rig",
+        "could you run my document through the diagnostics rig please",
+        # the work named whole, as before
+        "run diagnostics on my document",
+        "could you diagnose my document",
+    ],
+)
+def test_a_word_of_a_machines_name_is_not_the_works_object(text: str) -> None:
+    frame = _rig_frame(text)
+    assert [(t.kind, t.item, t.owner, t.recipient, t.operation) for t in frame.tasks] == [
+        ("heat", "document", "zhou", "zhou", "check")
+    ], frame

@@ -127,10 +127,18 @@ class NamedWork:
     """Reads the office's verb-and-object operation names in a message's tokens."""
 
     names: tuple[WorkName, ...]
+    # the office's things named in several words ("diagnostics rig"): a word inside one is
+    # that thing's, never the work's object ("run my phone through the diagnostics rig")
+    things: frozenset[tuple[str, ...]] = frozenset()
 
     @classmethod
     def from_office(cls, office: Office) -> NamedWork:
-        return cls(work_names(office))
+        names = (
+            *(n for f in office.facilities for n in (f.name, *f.synonyms)),
+            *(n for t in office.item_types for n in (t.name, *t.synonyms)),
+        )
+        things = frozenset(tuple(w) for n in names if len(w := key(n).split()) > 1)
+        return cls(work_names(office), things)
 
     def phrases(self) -> dict[str, str]:
         """Each name's phrase → its operation: the verb token's word once read."""
@@ -148,7 +156,7 @@ class NamedWork:
             for name in self.names:
                 if name.verb not in verbs or t.possessive:
                     continue
-                at = _object_at(out, n, name.head)
+                at = _object_at(out, n, name.head, self.things)
                 if at is None:
                     continue
                 out[n] = t.corrected_to(name.phrase)
@@ -163,15 +171,28 @@ class NamedWork:
         return out
 
 
-def _object_at(tokens: Sequence[Token], n: int, head: str) -> int | None:
-    """Where the object's head noun stands after the verb at ``n``, within its clause."""
+def _object_at(
+    tokens: Sequence[Token], n: int, head: str, things: frozenset[tuple[str, ...]] = frozenset()
+) -> int | None:
+    """Where the object's head noun stands after the verb at ``n``, within its clause; a
+    word of a thing's name of several words is that thing's ("the diagnostics rig")."""
     for k in range(n + 1, min(len(tokens), n + 1 + _REACH)):
         t = tokens[k]
         if t.opens or t.word in _CLAUSE_ENDS or (t.after_pause and k > n + 1):
             return None
-        if not t.possessive and head in _noun_lemmas(t.word):
+        if not t.possessive and head in _noun_lemmas(t.word) and not _in_thing(tokens, k, things):
             return k
     return None
+
+
+def _in_thing(tokens: Sequence[Token], k: int, things: frozenset[tuple[str, ...]]) -> bool:
+    """Whether ``tokens[k]`` is a word of one of ``things`` said there."""
+    words = [t.word for t in tokens]
+    return any(
+        tuple(words[start : start + len(thing)]) == thing
+        for thing in things
+        for start in range(max(0, k - len(thing) + 1), k + 1)
+    )
 
 
 def _done_to(tokens: Sequence[Token], at: int, inputs: frozenset[str]) -> bool:
