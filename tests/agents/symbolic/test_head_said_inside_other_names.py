@@ -28,3 +28,22 @@ def test_a_head_said_nowhere_else_names_its_type() -> None:
     items = [("hand gel", "sanitiser"), ("alcohol gel", "sanitiser"), ("first aid bag", "bag")]
     one, _ = head_names(items, ["first aid room"], _known)
     assert one["gel"] == "sanitiser" and one["gels"] == "sanitiser"
+
+
+def test_a_head_of_two_types_inside_a_machines_name_is_still_asked_about() -> None:
+    # blind round 211: a "protector cutter" (a machine) beside a glass and a hydrogel
+    # protector: "a protector" was "no protector in this office"; it is which of the two
+    items = [
+        ("tempered glass protector", "glass"),
+        ("screen protector", "glass"),
+        ("hydrogel protector", "film"),
+        ("custom protector", "film"),
+    ]
+    one, shared = head_names(items, ["protector cutter"], _known)
+    assert shared["protector"] == ("glass", "film") and "protector" not in one
+
+
+def test_a_head_of_one_type_inside_a_machines_name_stays_no_name() -> None:
+    items = [("tempered glass protector", "glass"), ("screen protector", "glass")]
+    one, shared = head_names(items, ["protector cutter"], _known)
+    assert "protector" not in one and "protector" not in shared

@@ -73,7 +73,8 @@ def head_names(
     taken = {_singular(head) for key in others if (head := head_of(key))}
     # a word inside another name, before its head ("aid" of "first aid bag", "first aid
     # room"): "from first aid" names that place or thing, never "band-aids" by their head
-    inside = {w for key in others for w in key.split()[:-1]}
+    in_places = {w for key in others for w in key.split()[:-1]}
+    inside: set[str] = set()
     one: dict[str, str] = {}
     shared: dict[str, tuple[str, ...]] = {}
     heads = _heads(items)
@@ -85,7 +86,11 @@ def head_names(
         forms = (head, language.plural(head))
         if head in _UNITS or head in taken or head in inside or any(known(f) for f in forms):
             continue
+        if head in in_places and len(counted) == 1:
+            continue  # "from first aid": the room's name clipped, never plasters fetched
         if len(counted) > 1:
+            # only ever asked ("which protector: the glass or the hydrogel one?"), so also
+            # where a machine's name holds it ("protector cutter"): a question moves nothing
             shared[head] = tuple(counted)
             continue
         ((type_id, names),) = counted.items()
