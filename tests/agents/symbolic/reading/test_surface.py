@@ -11,6 +11,7 @@ import functools
 from collections.abc import Callable
 
 import pytest
+from _gear_office import gear_office
 from _offices import office as office_named
 
 from assistantx.agents.symbolic.reading.parser import InstructionParser
@@ -30,6 +31,7 @@ ORDER = [
     "group_member",
     "excluded_owners",
     "seated_subject",
+    "thing_for_thing",
     "needed_done",
     "bare_rooms",
     "placeholder",
@@ -38,6 +40,7 @@ ORDER = [
     "spelled_are",
     "round_trip",
     "approved_uses",
+    "hedged_leaves",
     "joined_gerunds",
     "form_said_after",
     "sent_files",
@@ -101,6 +104,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
     "costume shop": costume_shop,
     "law firm": law_firm,
     "music school": music_school,
+    "gear studio": gear_office,
 }
 
 # Each step's example, a message it changes in one of the offices below.
@@ -111,6 +115,7 @@ EXAMPLES: dict[str, str] = {
     "group_member": "bring me a cup please, one of the interns took mine",
     "excluded_owners": "could u bring me a stapler? anyone's but Wang's",
     "seated_subject": "the new guy at desk 4 needs a stapler, could you take him one",
+    "thing_for_thing": "the DI box needs a fresh 9V battery, could you fetch me one?",
     "needed_done": "need my certificate photocopied, the auditors want one",
     "bare_rooms": "take the parcel down to meeting",
     "placeholder": "bring me the thing from the fridge",
@@ -119,6 +124,7 @@ EXAMPLES: dict[str, str] = {
     "spelled_are": "mine r blunt, bring me a pen",
     "round_trip": "take my lunch to the kitchenette and bring it back",
     "approved_uses": "Pat ok'd me using her stamp, bring it",
+    "hedged_leaves": "i hope mark won't mind if i borrow his ruler",
     "joined_gerunds": "would you mind laminating my badge, and getting my document signed",
     "form_said_after": "get me the rota numbers from Wang? She keeps them in a spreadsheet",
     "sent_files": "print the spreadsheet I sent",
@@ -181,6 +187,7 @@ EFFECTS: dict[str, tuple[str, str, str]] = {
     "group_member": ("default", "one of the interns", "an intern took"),
     "excluded_owners": ("default", "anyone's but", "? not Wang's"),
     "seated_subject": ("default", "the new guy at desk 4", "Zhang Wei needs"),
+    "thing_for_thing": ("gear studio", "needs a fresh", "me a fresh 9V battery for the DI box"),
     "needed_done": ("default", "need my", "get my"),
     "bare_rooms": ("courier room", "to meeting", "the Meeting room"),
     "place_doers": ("costume shop", "laundry stitch", "you stitch it up at the laundry"),
@@ -188,6 +195,7 @@ EFFECTS: dict[str, tuple[str, str, str]] = {
     "spelled_are": ("default", " r ", "mine are blunt"),
     "round_trip": ("default", "bring it back", "heat my lunch"),
     "approved_uses": ("default", "ok'd", "said I could use"),
+    "hedged_leaves": ("harbour", "mind if i", "mind, can i borrow"),
     "joined_gerunds": ("default", "getting", "and get my"),
     "form_said_after": ("default", "rota numbers from", "me Wang's spreadsheet?"),
     "sent_files": ("default", "I sent", "my spreadsheet"),

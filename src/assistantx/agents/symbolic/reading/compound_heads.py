@@ -48,9 +48,36 @@ _PRONOUNS = (
 )
 
 
-def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bool]) -> bool:
+# What counts more than one thing before a name ("*some* cable ties", "*two* cable ties"):
+# the plural after the name is then the phrase's head, never a verb with the name as subject.
+_COUNTING = (
+    english.words("partitive_quantities") | english.words("number_words") | {"these", "those"}
+) - {"one", "bit", "half"}
+
+
+# "the" and its kind before a name said as a verb's object ("cut *the* cable ties")
+_DEFINITE = frozenset({"the", "my", "your", "our", "his", "her", "their", "these", "those"})
+# verbs that may open a question or a clause of their own ("did the cable ties arrive")
+_AUXILIARIES = frozenset({"be", "do", "have", "will", "can", "shall", "may", "must"})
+
+
+def _object_of_a_verb(tokens: Sequence[Token], start: int) -> bool:
+    """Whether the name at ``start`` opens a verb's object ("need to cut the cable ties"): a
+    determiner before it, and a verb (no helping verb) before that, with no pause between."""
+    if start < 2 or tokens[start - 1].word not in _DEFINITE or tokens[start - 1].after_pause:
+        return False
+    verb = tokens[start - 2]
+    lemmas = language.verb_lemmas(verb.word)
+    return bool(lemmas) and not lemmas & _AUXILIARIES and not tokens[start].after_pause
+
+
+def modifies_a_noun(
+    tokens: Sequence[Token], end: int, known: Callable[[str], bool], start: int | None = None
+) -> bool:
     """Whether the word at ``end`` (right after an item's name) is a noun the name modifies:
-    the name is then the first part of a compound whose head comes later."""
+    the name is then the first part of a compound whose head comes later. ``start``: where
+    the name begins, where a counting word before it ("some cable ties") makes a plural that
+    is also a verb's form ("ties") the head: "some cable" is no subject of "ties"."""
     if end >= len(tokens) or tokens[end - 1].possessive:
         return False
     # "the level 3 drawings": the labelled name modifies the noun after its label
@@ -64,7 +91,13 @@ def modifies_a_noun(tokens: Sequence[Token], end: int, known: Callable[[str], bo
         return False
     # after a label a plural that is also a verb ("the level 3 plans") is the noun: a
     # labelled thing is no subject of a request's verb
-    return compound_noun(t, known, verb_too=labelled > end)
+    counted = (
+        start is not None
+        and start > 0
+        and language.is_plural_noun(t.word)
+        and (tokens[start - 1].word in _COUNTING or _object_of_a_verb(tokens, start))
+    )
+    return compound_noun(t, known, verb_too=labelled > end or counted)
 
 
 # The determiners that open "the coffee one": a definite pick among things named before.

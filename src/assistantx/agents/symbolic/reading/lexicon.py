@@ -1004,7 +1004,7 @@ class Lexicon:
             if (
                 m.kind == "item"
                 and (
-                    modifies_a_noun(tokens, m.end, self._head_known(tokens, m.start))
+                    modifies_a_noun(tokens, m.end, self._head_known(tokens, m.start), m.start)
                     or labels_an_item(tokens, m.end, item_starts)
                     or modifies_one(tokens, m.start, m.end)  # "the coffee one"
                 )

@@ -63,6 +63,7 @@ from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
 from assistantx.agents.symbolic.reading.group_member import group_member
+from assistantx.agents.symbolic.reading.hedged_leave import hedged_leaves
 from assistantx.agents.symbolic.reading.held_by_clause import held_by_clauses
 from assistantx.agents.symbolic.reading.hurried_errand import hurried_errands
 from assistantx.agents.symbolic.reading.hyphened_nouns import hyphened_nouns
@@ -106,6 +107,7 @@ from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
 from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
+from assistantx.agents.symbolic.reading.thing_for_thing import ThingForThing
 from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
@@ -196,6 +198,8 @@ class Surface:
         self.office_phrases = frozenset({*lex.items, *lex.facilities, *lex.places})
         # "the carver on bench 3 needs ...": a colleague described by their workstation
         self.seated_subject = SeatedSubject.of_names(office, (*lex.items, *lex.facilities))
+        # "the printer needs paper, grab some": the paper, for the printer
+        self.thing_for_thing = ThingForThing(self.item_types, self.names_item)
         self.place_doers = PlaceDoers(office)  # "can laundry stitch it up?"
         self.remedies = ProblemRemedies(office)  # "... dog hair, got anything to sort it out?"
         self.keepers = kept_services(office)  # each keeper's services, by their verbs
@@ -373,6 +377,9 @@ STEPS: tuple[Step, ...] = (
     # a colleague described by their workstation, as a need's subject: that colleague
     # e.g. "the carver on bench 3 needs a set square, could you bring him mine"
     Step("seated_subject", lambda s, t, a: s.seated_subject(t)),
+    # a thing that needs another, asked for by "one": only the other is wanted
+    # e.g. "the DI needs a fresh 9V battery, could you fetch me one?"
+    Step("thing_for_thing", lambda s, t, a: s.thing_for_thing(t)),
     # an unknown paper needed with work done to it: the work asked, as with "get"
     # e.g. "need my certificate photocopied, the auditors want one"
     Step("needed_done", lambda s, t, a: needed_done(t, s.work_forms, s.names_something)),
@@ -403,6 +410,9 @@ STEPS: tuple[Step, ...] = (
     # "Pat said I could use her stamp": a transfer
     # e.g. "Pat ok'd me using her stamp, bring it"
     Step("approved_uses", lambda s, t, a: approved_uses(t)),
+    # the hope is politeness; what follows "if I" is asked
+    # e.g. "i hope mark won't mind if i borrow his ruler"
+    Step("hedged_leaves", lambda s, t, a: hedged_leaves(t)),
     # two requests
     # e.g. "would you mind laminating my badge, and getting my document signed"
     Step(

@@ -5,6 +5,10 @@ the robot never goes, so the request is declined in words, with the reason (and,
 thing is a colleague's, that it would need their yes anyway). It is never "Noted" (a placement
 is a request, however its verb reads) and never read as a fetch for the requester.
 
+Words that are part of the name of one of the office's operations ("send out on the van")
+name that service, not a place: "send my contract out on the van to Fairfield Farm" asks for
+it. "bring my contract to the van" says no service's name and is declined as ever.
+
 Where the speaker says they did it ("I put my book in my car") it is their own doing, read by
 the other rules; a place of the office ("on my desk", "in the fridge") is a delivery, read as
 before."""
@@ -23,6 +27,18 @@ _OFFICE = frozenset({"place", "facility", "group"})
 # the speaker (or a colleague) as the subject before the verb: told, not asked
 _SUBJECTS = frozenset({"i", "we", "ive", "id", "he", "she", "they", "someone", "somebody"})
 _PARTICLES = frozenset({"back", "down", "over", "up", "away", "out", "it", "them"})
+
+
+def _service_named(terms: Terms, said: list[str]) -> bool:
+    """Whether ``said`` ("on the van") is said inside the name of one of the office's
+    operations ("send out on the van"): the service is named, not a place outside asked for;
+    its own destination ("to Fairfield Farm") is read by the send-out rules."""
+    size = len(said)
+    for op in terms.office.operations:
+        name = [w.casefold() for w in op.name.split()]
+        if any(name[n : n + size] == said for n in range(len(name) - size + 1)):
+            return True
+    return False
 
 
 def outside_vehicle(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -54,6 +70,8 @@ def outside_vehicle(terms: Terms, msg: Message, piece: Piece, requester: str) ->
         return None
     if any(m.kind in _OFFICE and m.start <= k < m.end for m in mentions):
         return None  # a place of the office that shares the word
+    if _service_named(terms, told[n : k + 1]):
+        return None  # "send it out on the van": the words of a service's own name
     owner = next(
         (m for m in mentions if m.kind == "person" and m.possessive and m.end <= thing.start),
         None,
