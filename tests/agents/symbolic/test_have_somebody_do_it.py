@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 from _offices import parser
 
-_WHO = "Who should do that with your document? Please tell me their name."
+_WHO = "Who should sign your document? Please tell me their name."
 
 
 @pytest.mark.parametrize(

@@ -821,7 +821,8 @@ class FrameReader:
                 return f"{WHICH_ITEM}{' ' if asked else ''}{asked}?"
             done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
             if done_by_one and (t.actor is None or t.actor == requester):
-                return f"Who should do that with your {name}? Please tell me their name."
+                # "have somebody sign my contract": the work said ("Who should sign ...?")
+                return f"Who should {_work_said(t.kind)} your {name}? Please tell me their name."
             if t.kind == "transfer":
                 personal = self.reader.kinds[t.item] == "personal"
                 if t.owner is None and personal and not any_owner:
@@ -1088,6 +1089,17 @@ def _said_in_addition(tokens: Sequence[Token], at: int) -> bool:
         words.append(t.word)
     pairs = {" ".join(words[k : k + 2]) for k in range(len(words) - 1)}
     return bool((set(words) | pairs) & _IN_ADDITION)
+
+
+def _work_said(kind: str) -> str:
+    """The work a person is asked to do, as its verb ("sign"), where the kind's first word
+    is one; else "do that with"."""
+    try:
+        words = english.kind_words(kind)
+    except KeyError:
+        words = ()
+    first = words[0] if words else ""
+    return first if first and first in language.verb_lemmas(first) else "do that with"
 
 
 # "the stapler can wait": the words after a thing that put it off
