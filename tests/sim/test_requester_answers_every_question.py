@@ -156,7 +156,7 @@ ASKED = (
         "ottilie",
         "get my form signed",
         ({"signed": ["form:ottilie", "bram"]},),
-        "Who should do that with your form? Please tell me their name.",
+        "Who should sign your form? Please tell me their name.",
         "Bram Okafor.",
     ),
     Asked(
@@ -222,7 +222,7 @@ ASKED = (
         "ottilie",
         "get my form signed",
         ({"holds": ["bram", "form:ottilie"]},),
-        "Who should do that with your form? Please tell me their name.",
+        "Who should sign your form? Please tell me their name.",
         DONT_KNOW,
     ),
 )

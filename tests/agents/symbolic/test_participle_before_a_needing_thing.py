@@ -118,7 +118,7 @@ def test_default_office_sends_the_described_own_thing(
 def test_a_thing_that_needs_signing_still_asks_the_signer(read: object) -> None:
     frame = read("my contract needs signing")  # type: ignore[operator]
     assert frame.tasks == [] and frame.question is not None, frame
-    assert "Who should do that" in frame.question
+    assert "Who should sign" in frame.question
 
 
 @pytest.mark.parametrize("read", [_courier_room, _harbour, _default])

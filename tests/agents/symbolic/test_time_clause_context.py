@@ -1,7 +1,7 @@
 """A clause of time with a subject of its own ("before I sign off tonight", "before Wang
 prints the contracts") says when, not what to do: its verbs are no requests. Before, "sign"
 in "my report needs printing before I sign off tonight, can you sort it?" was read as a
-signing task ("Who should do that with your document?"), and "prints" in "bring me a stapler
+signing task ("Who should sign your document?"), and "prints" in "bring me a stapler
 before Wang prints the contracts" left the stapler's errand unread. A time phrase without a
 subject ("before lunch") and a clause whose subject is the robot ("when you are at the
 printer") are no such clause."""

@@ -90,7 +90,9 @@ def test_default_second_thoughts_withdraw_the_request(text: str) -> None:
 
 def test_default_correction_head_is_no_detail() -> None:
     """ "no wait sorry, a pen": the head corrects what was just asked (and "sorry" names no
-    thing), so it is still read as a withdrawal, never as what the request goes without."""
+    thing), never read as what the request goes without; the pen replaces the stapler, which
+    "can wait" (before, the chain "no wait sorry" was a withdrawal and both were fetched)."""
     frame = _DEFAULT("can you bring me a stapler, no wait sorry, a pen. the stapler can wait")
     said = {e.words: e.meaning for e in frame.evidence}
-    assert said.get("no wait sorry") == "withdraws the request", frame
+    assert "what the request may go without, context only" not in said.values(), frame
+    assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "pen")], frame

@@ -163,7 +163,7 @@ def test_work_asked_beside_or_without_an_occasion_is_read_as_before(
 
 def test_a_thing_the_office_lacks_before_an_occasion_is_not_its_paper() -> None:
     """Harbour has no stapler: the contract of the occasion is never the thing borrowed (it
-    asked "Who should do that with your document?"), and the dummy "it" of "would it be
+    asked "Who should sign your document?"), and the dummy "it" of "would it be
     possible" points at nothing."""
     frame = _harbour(
         "Would it be possible to borrow Ms Okafor's good stapler for the contract signing at 3?"

@@ -438,7 +438,15 @@ class FrameReader:
             return TaskFrame(requester=requester, question=whose)
         # "Ms Okafor needs her tape back, take it from Pat to her": Pat hands it over
         tasks = [taken_from(self.office, t, said_from) for t in tasks]
-        tasks = [self._named_elsewhere(t, named, requester, placed) for t in tasks]
+        # "shred my old thingy, and bring me a coffee": the coffee, another task's object that
+        # no work of the office takes, is that task's own, never the shred's
+        worked = {op.input for op in self.office.operations if op.input is not None}
+        objects_of_tasks = frozenset(
+            t.item for t in tasks if t.item is not None and t.item not in worked
+        )
+        tasks = [
+            self._named_elsewhere(t, named, requester, placed, objects_of_tasks) for t in tasks
+        ]
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
         tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
@@ -813,7 +821,8 @@ class FrameReader:
                 return f"{WHICH_ITEM}{' ' if asked else ''}{asked}?"
             done_by_one = t.kind in task_kinds.person_kinds() and not task_kinds.needs_tool(t.kind)
             if done_by_one and (t.actor is None or t.actor == requester):
-                return f"Who should do that with your {name}? Please tell me their name."
+                # "have somebody sign my contract": the work said ("Who should sign ...?")
+                return f"Who should {_work_said(t.kind)} your {name}? Please tell me their name."
             if t.kind == "transfer":
                 personal = self.reader.kinds[t.item] == "personal"
                 if t.owner is None and personal and not any_owner:
@@ -949,11 +958,14 @@ class FrameReader:
         named: Sequence[NamedItem],
         requester: str,
         placed: dict[str, str],
+        taken: frozenset[str] = frozenset(),
     ) -> Task:
         """ "get Wren to sign off the bill? it's the invoice on my desk": a task whose object
         is no item word of the office ("the bill", a word that is also a name) takes the one
         item of the kind it works on that another sentence names; two such items, or none,
-        still ask "which item?"."""
+        still ask "which item?". An item another task of the message acts on that no work of
+        the office takes (``taken``: "shred my old thingy, and bring me a coffee") is that
+        request's own object, never borrowed: the task's own object is still asked."""
         if task.item is not None:
             return task
         spec = task_kinds.kind(task.kind) if task_kinds.kind_of(task.kind) else None
@@ -961,7 +973,7 @@ class FrameReader:
         fits = {
             (item, owner)
             for item, owner in named
-            if prop is None or getattr(self.office.item_type(item), prop)
+            if (prop is None or getattr(self.office.item_type(item), prop)) and item not in taken
         }
         if len({item for item, _ in fits}) != 1:
             return task
@@ -1079,6 +1091,21 @@ def _said_in_addition(tokens: Sequence[Token], at: int) -> bool:
     return bool((set(words) | pairs) & _IN_ADDITION)
 
 
+def _work_said(kind: str) -> str:
+    """The work a person is asked to do, as its verb ("sign"), where the kind's first word
+    is one; else "do that with"."""
+    try:
+        words = english.kind_words(kind)
+    except KeyError:
+        words = ()
+    first = words[0] if words else ""
+    return first if first and first in language.verb_lemmas(first) else "do that with"
+
+
+# "the stapler can wait": the words after a thing that put it off
+_PUT_OFF = frozenset(tuple(p.split()) for p in english.entries("put_off_phrases"))
+
+
 def _rejected_items(readings: Readings) -> set[str]:
     """Item types the requester rejected outright ("..., sorry, a pen, not the stapler")."""
     tokens = readings.tokens
@@ -1090,6 +1117,10 @@ def _rejected_items(readings: Readings) -> set[str]:
         while k >= 0 and tokens[k].word in _DETERMINERS:
             k -= 1
         if k >= 0 and tokens[k].word == "not":
+            rejected.update(m.ids)
+        # "bring me a pen. the stapler can wait": the thing said to wait is put off, not asked
+        after = tuple(t.word for t in tokens[m.end : m.end + 2])
+        if after in _PUT_OFF and (m.start == 0 or k < 0 or tokens[k + 1].opens):
             rejected.update(m.ids)
     return rejected
 

@@ -45,6 +45,11 @@ _SPEAKER_OBJECTS = frozenset({"me", "us"})
 # the verbs that have work done on their object ("get my swab tested")
 _CAUSING = frozenset({"get", "have"})
 _MODIFIERS = 2  # plain words between "my" and the paper noun ("my draft expenses report")
+# the ordinary heads of a paper document, said of the operation's own paper ("document_heads")
+_DOCUMENT_HEADS = english.words("document_heads")
+_WORKED_MODIFIERS = 4  # "shred my old alarm code sheet": modifiers before such a head
+# what ends a noun phrase besides a clause's opening ("my sheet *and* a coffee")
+_JOINS = frozenset({"and", "then", "or"})
 
 
 def personal_papers(office: Office) -> tuple[str, ...]:
@@ -233,6 +238,10 @@ class OwnPapers:
         noun, and the office's one candidate item it is (see the module's text)."""
         found: dict[int, str] = {}
         for n in range(len(mentions)):
+            worked = self._worked_paper(tokens, mentions, n)
+            if worked is not None:
+                found[worked[0]] = worked[1]
+                continue
             k = self._colleagues_data(tokens, mentions, n, known)
             if k is not None and self.file_type is not None:
                 found[k] = self.file_type
@@ -269,6 +278,40 @@ class OwnPapers:
             if meant is not None:
                 found[k] = meant
         return found
+
+    def _worked_paper(
+        self, tokens: Sequence[Token], mentions: Sequence[Mention], n: int
+    ) -> tuple[int, str] | None:
+        """ "shred my old alarm code sheet", where shredding takes the office's one personal
+        paper: "my" (as typed), then plain words ending in an ordinary head of a paper document
+        (``document_heads``) that ends the phrase, the object of a verb whose operations take
+        that paper and nothing else, is the requester's paper: the mention of the head and the
+        paper's item type, or None. The head may be a word of a longer name of the office
+        ("job sheet"): the work says which thing it is. A head the office lists as another
+        thing, or a noun that is no paper's ("my old coffee"), is read as before."""
+        opener = mentions[n]
+        if opener.kind != "self" or not opener.possessive:
+            return None
+        if tokens[opener.start].typed not in ("", "my"):
+            return None
+        verb = _verb_before(tokens, opener.start)
+        types = {t for form, ts in self.worked if form == verb for t in ts}
+        if len(types) != 1 or not set(types) <= set(self.papers):
+            return None
+        end = opener.end
+        for k in range(n + 1, min(len(mentions), n + 2 + _WORKED_MODIFIERS)):
+            m = mentions[k]
+            if m.kind != "word" or m.start != end or tokens[m.start].opens:
+                return None
+            word = m.ids[0]
+            if tokens[m.start].corrected or not _plain(word) or not word.isalpha():
+                return None
+            end = m.end
+            if word in _DOCUMENT_HEADS and (
+                _phrase_ends(tokens, end) or tokens[end].word in _JOINS
+            ):
+                return k, next(iter(types))
+        return None
 
     def _colleagues_data(
         self,

@@ -89,6 +89,9 @@ _MODALS = english.words("request_modals")
 # Words between "go" and "to" of a thing sent on ("should go *back* to Lee")
 _GOING_PARTICLES = frozenset({"back", "over", "across", "along", "round", "straight"})
 _ASKEES = english.words("request_askees")
+# "have *somebody* sign my contract": whom the requester leaves unnamed, made to do it
+_UNNAMED_DOERS = english.words("unnamed_doers")
+_GROUP_DOERS = frozenset({"person", "people", "whoever"})
 _OPENERS = english.words("speech_openers")
 # "can't read these", "couldn't see a thing": the speaker's inability, the "I" left out
 _CANNOT = frozenset({"cant", "cannot", "couldnt"})
@@ -1373,6 +1376,10 @@ class SpeechActs:
             for x in w[2:6]:
                 if x in self.lex.cue_words and self._participle(x):
                     return True
+        if len(w) > 2 and w[1] in _UNNAMED_DOERS and w[1] not in _GROUP_DOERS:
+            # "have somebody sign my contract": someone unnamed made to do it (who, asked),
+            # not "have somebody signed it?" nor "have anyone seen my pen?"
+            return w[2] in language.verb_lemmas(w[2])
         k = 1
         while k < 3 and k < len(w) and w[k] in _NAME_OPENERS and not self._named_or_role(w[k]):
             k += 1  # "have *the* Boss sign my form", "have Dr Osei sign it"

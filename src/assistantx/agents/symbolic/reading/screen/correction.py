@@ -126,9 +126,19 @@ _UNPAUSED = re.compile(
 )
 
 
+# "bring me Wang's stapler no Zhang's": a thing said with its owner's "'s", then "no" and
+# another owner's "'s" with no pause: the "no" corrects the owner, as ", no, Zhang's" does
+_UNPAUSED_OWNER_NO = re.compile(
+    r"(\b[^\W\d_]+['’]s(?:\s+[^\W\d_]+){1,3})\s+no\s+(?=[^\W\d_][\w-]*['’]s\b)",
+    re.IGNORECASE,
+)
+# "no wait, also a pen": a correction's words that add a thing to the request, not replace
+_ADDING = english.words("added_words")
+
+
 def _paused(text: str) -> str:
     """``text`` with a comma before each correction said with no pause before it."""
-    return _UNPAUSED.sub(", ", text)
+    return _UNPAUSED_OWNER_NO.sub(r"\1, no, ", _UNPAUSED.sub(", ", text))
 
 
 def _purposes_named(terms: Terms, text: str) -> str:
@@ -173,6 +183,8 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         return text, []
     match = min(found, key=lambda m: m.start())
     before, after = text[: match.start()], text[match.end() :]
+    # "no wait sorry, a pen": more words of correcting before what is said anew
+    after = _MORE_MARKS.sub("", after, count=1) or after
     after = _last_of_chain(after)
     # the correction ends at its sentence's end or at a comma: what follows is said beside it
     # ("... I meant Mao's seal, Wang needs hers today": the reason, read as a piece of its own)
@@ -189,6 +201,12 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     words = [t.word for t in tokens]
     if any(tuple(words[: len(w)]) == w for w in _WITHDRAWING):
         return text, []  # "sorry, forget the coffee": a withdrawal, read as one
+    if words and words[0] in _ADDING:
+        # "bring me a stapler. no wait, also a pen": the thing said is added to the request,
+        # nothing it said is replaced; read as "bring me a stapler. also a pen"
+        lead = text[match.start() : match.end()].lstrip()[:1]
+        joined = lead if lead in ".!?;" else ","
+        return f"{before.rstrip()}{joined} {after.lstrip()}", []
     refused: Sequence[Token] = ()
     if tokens and tokens[0].word == "not" and rest.startswith(","):
         # "no wait not rob's, Kiz's one": what is rejected first, then what replaces it
@@ -455,6 +473,10 @@ def _name_said_alone(terms: Terms, tokens: Sequence[Token]) -> list[Mention]:
         return []
     token = tokens[0]
     return [Mention("person", 0, 1, tuple(ids), token.possessive, token.text)]
+
+
+# Words of correcting said again after a correction's mark ("no wait *sorry*, a pen")
+_MORE_MARKS = re.compile(r"^(?:(?:sorry|oops|actually|wait)\b[,!.]?\s*)+", re.IGNORECASE)
 
 
 def _last_of_chain(after: str) -> str:

@@ -52,8 +52,79 @@ def unsupported(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fin
         # "... and email them to the client": the other half cannot be done either, and is
         # said so, not asked about
         nor = f"Nor can I send anything to {outside}: I hand things only to people of this office."
-        found = unsupported_service(terms, piece, nor=nor)
+        return unsupported_service(terms, piece, nor=nor)
+    if found is not None and found.message.startswith(_NO_PRODUCT):
+        word = found.meaning.removeprefix(_NOT_OFFERED)
+        rest = doable_rest(terms, msg, piece, word)
+        if rest is not None:
+            # "bring a coffee to Zhang and bring for me a tea": the tea is said not to be here,
+            # and the coffee still offered, never the whole message declined
+            return Finding(
+                "instead",
+                piece,
+                f"{found.meaning}; the rest still asked: {rest!r}",
+                message=f"Sorry, I can't get you any {word}: nothing in this office offers "
+                f"that, and I won't swap it for something else. Shall I still "
+                f"{_as_told(terms, rest)}?",
+                offer=rest,
+            )
     return found
+
+
+_NO_PRODUCT = "Sorry, I can't get you any "
+_NOT_OFFERED = "not offered here: "
+_JOINS = r"(?:and|then|but|also|plus)"
+# the requester's words said back to them ("bring *me* a coffee" → "bring you a coffee")
+_SAID_BACK = {"me": "you", "my": "your", "mine": "yours", "i": "you", "myself": "yourself"}
+
+
+def doable_rest(terms: Terms, msg: Message, piece: Piece, word: str) -> str | None:
+    """The message without the part of ``piece`` that asks for ``word`` (a thing nothing in
+    the office offers), where that part is a request of its own (its own verb) and what is
+    left still asks something (another piece's request, or another part of this piece with
+    a verb of its own); None otherwise ("bring me a tea and a stapler": the stapler is no
+    request of its own, the whole is declined as before)."""
+    parts = sub_pieces(piece)
+    lead_in = terms.en.lead_in
+
+    def asks(part_words: list[str]) -> bool:
+        return any(terms.request_verb(part_words, n) for n in range(len(part_words)))
+
+    gone = next((p for p in parts if word in p.words), None)
+    if gone is None or not asks(gone.words[gone.verb_at(lead_in) :]):
+        return None
+    others = [p for p in parts if p is not gone]
+    if any(asks(p.words) for p in others) or any(
+        p.acts.request for p in msg.pieces if p is not piece
+    ):
+        text = msg.text[: gone.start] + " " + msg.text[gone.end :]
+    else:
+        # "bring me a tea and a stapler": the thing said last in its part, another thing of
+        # the office after it with no verb of its own: that thing is still asked by the verb
+        after = next((p for p in others if p.start > gone.start), None)
+        said = re.search(
+            rf"\b(?:(?:a|an|some|any|the)\s+)?{re.escape(word)}\W*$", gone.text, re.IGNORECASE
+        )
+        if after is None or said is None or not terms.names_an_item(after.text):
+            return None
+        text = msg.text[: gone.start + said.start()] + " " + msg.text[after.start :]
+    text = re.sub(rf"\b{_JOINS}\s+(?:{_JOINS}\b\s*)+", lambda m: m.group(0).split()[0] + " ", text)
+    text = re.sub(rf"^[\s,.;]*{_JOINS}?\b[\s,]*", "", text, flags=re.IGNORECASE)
+    text = re.sub(rf"[\s,]*\b{_JOINS}[\s,.;]*$", "", text, flags=re.IGNORECASE)
+    text = re.sub(r"\s+", " ", text).strip(" ,;")
+    return text or None
+
+
+def _as_told(terms: Terms, rest: str) -> str:
+    """What is left of a request, said back to the requester after "Shall I still ...": its
+    lead-in ("could you", "please") left out, "me"/"my" said as "you"/"your"."""
+    words = rest.rstrip(".!?").split()
+    while words and words[0].lower().strip(",") in terms.en.lead_in and len(words) > 1:
+        words = words[1:]
+    said = [_SAID_BACK.get(w.lower(), w) for w in words]
+    if said and said[0][:1].isupper() and said[0].lower() in terms.lex.cue_words:
+        said[0] = said[0].lower()
+    return " ".join(said)
 
 
 def own_doing(terms: Terms, piece: Piece) -> bool:
