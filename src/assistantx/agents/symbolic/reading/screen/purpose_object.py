@@ -42,12 +42,14 @@ def object_nouns(tail: Sequence[str], said: int) -> int:
     dictionary also reads as an adverb, preposition, auxiliary or determiner ends it ("for",
     "today")."""
     n = said
-    while 0 < said and n < len(tail) and n - said < _LONGEST_OBJECT and _noun_only(tail[n]):
+    while 0 < said and n < len(tail) and n - said < _LONGEST_OBJECT and noun_only(tail[n]):
         n += 1
     return n
 
 
-def _noun_only(word: str) -> bool:
+def noun_only(word: str) -> bool:
+    """Whether the dictionary reads ``word`` as a noun and never as an adverb, a
+    preposition, an auxiliary, a determiner or a pronoun."""
     found = language.lemmas(word.lower())
     return "NOUN" in found and not found.keys() & {"ADV", "ADP", "AUX", "DET", "PRON"}
 
@@ -74,7 +76,7 @@ def said_as_declared(said: str, declared: str) -> bool:
     plain = tuple(
         w
         for n, w in enumerate(words)
-        if not (0 < n < len(words) - 1 and _noun_only(w) and _noun_only(words[n + 1]))
+        if not (0 < n < len(words) - 1 and noun_only(w) and noun_only(words[n + 1]))
     )
     return plain == wanted or _clipped(words, wanted)
 
@@ -108,4 +110,4 @@ def _clips(short: str, word: str) -> bool:
 
 def _singular(word: str) -> str:
     nouns = language.lemmas(word).get("NOUN", ())
-    return min(nouns, key=len) if nouns and _noun_only(word) else word
+    return min(nouns, key=len) if nouns and noun_only(word) else word

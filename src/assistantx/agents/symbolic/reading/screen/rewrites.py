@@ -20,6 +20,7 @@ from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.own_one import own_ones
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.purpose_object import (
+    noun_only,
     object_nouns,
     purpose_words,
     said_as_declared,
@@ -535,6 +536,14 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         # used, never left glued to the thing found ("a multimeter control panel")
         while keep < len(tail) and _more_of_the_noun(tail[keep - 1], tail[keep]):
             keep += 1
+    if not keep and tail and _bare_object(tail[0]):
+        # "something to cut ribbon with": a bare noun after the verb is what it works on,
+        # its "with" the tool's; left behind it was glued to the tool ("a scissors ribbon")
+        keep = 1
+        while keep < len(tail) and _more_of_the_noun(tail[keep - 1], tail[keep]):
+            keep += 1
+        if keep < len(tail) and tail[keep].lower() == "with":
+            keep += 1
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0
@@ -557,6 +566,15 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
 
 
 _PHRASE_ENDS = english.words("common")
+
+
+def _bare_object(word: str) -> bool:
+    """Whether ``word``, right after a purpose's verb, is a bare noun that verb acts on
+    ("cut *ribbon*"): a noun only, never a function word, a particle or a verb's form."""
+    w = word.lower()
+    if _POSSESSIVE.search(word) or w in _PHRASE_ENDS or not w.isalpha():
+        return False
+    return noun_only(w)
 
 
 def _more_of_the_noun(before: str, word: str) -> bool:
