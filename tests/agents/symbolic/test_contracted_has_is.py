@@ -74,6 +74,11 @@ def test_a_colleague_away_is_context_for_the_request(
         ("Zhang's at lunch", "Zhang is at lunch"),
         ("Dad says his son's lost his tie", "Dad says his son has lost his tie"),
         ("the client's left already", "the client has left already"),
+        # a noun described before it (blind round 212: "My phone cable's at home. Could I
+        # borrow Dang's?" asked where the speaker's own cable was)
+        ("My phone cable's at home", "My phone cable is at home"),
+        ("my old laptop cable's gone", "my old laptop cable is gone"),
+        ("the stapler on Wang's in the drawer", "the stapler on Wang's in the drawer"),
         # possessives: before a noun, a hyphened compound, after a preposition
         ("bring me Wang's gone-off milk", "bring me Wang's gone-off milk"),
         ("bring me Wang's lost stapler", "bring me Wang's lost stapler"),
@@ -90,6 +95,7 @@ def test_what_is_spelled_out(text: str, spelled: str) -> None:
     ("read", "text", "item", "owner", "who"),
     [
         (_lin, "bring me Wang's stapler", "stapler", "wang", "lin"),
+        (_lin, "My phone cable's at home. Could I borrow Dang's?", "data_cable", "dang", "lin"),
         (_lin, "put the stapler on Wang's desk", "stapler", None, "wang"),
         (_may, "bring me Joy's ruler", "ruler", "joy", "may"),
     ],

@@ -36,11 +36,12 @@ _NO_NOUN = (
 _NOT_A_NOUN = frozenset({"let"})
 
 # a subject opens its clause: at the text's start, after a stop or a comma, after a joining
-# word or a verb of saying ("says his son's lost ..."), at most a determiner before it; "put
-# it on Wang's in the morning" is a possessive after a preposition, no subject
+# word or a verb of saying ("says his son's lost ..."), at most a determiner before it, and
+# after one up to two words that describe the noun ("my phone cable's at home"); "put it on
+# Wang's in the morning" is a possessive after a preposition, no subject
 _SUBJECT_OPENING = re.compile(
     r"(?:^|[,.;:!?(–—-]|\b(?:and|but|because|cos|since|as|so|then|when|while|though|says|said|thinks|reckons|that)\b)"
-    r"\s*(?:(?:the|a|an|this|that|my|our|your|his|her|their)\s+)?$",
+    r"\s*(?:(?:the|a|an|this|that|my|our|your|his|her|their)\s+(?:(?!(?:on|in|at|to|for|from|with|of|by|off|and|or)\b)[^\W\d_][\w-]*\s+){0,2})?$",
     re.IGNORECASE,
 )
 
