@@ -73,3 +73,30 @@ def _usb_lead_office() -> InstructionParser:
 def test_another_word_for_the_head_noun_names_it(text: str) -> None:
     frame = _usb_lead_office().parse(text, "lee")
     assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "data_cable")], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my laptop's on 5% can someone bring me a charger lead",
+        "my laptop is at 5% could anyone bring me a charging cable",
+        "my phone's nearly dead can somebody get me a data cable",
+    ],
+)
+def test_an_ask_put_to_anyone_after_a_state_is_read(text: str) -> None:
+    """Fix213a class 5: "can someone" opens the ask as "can u" does."""
+    assert tasks_of("default", text, "lee") == [_CABLE]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # one clause with no told state before the modal: read as before
+        ("I can someone bring me a data cable", [_CABLE]),
+        ("can someone bring me a data cable", [_CABLE]),
+    ],
+)
+def test_an_ask_to_anyone_with_no_state_before_is_unchanged(
+    text: str, expected: list[tuple[str, str, str | None, str]]
+) -> None:
+    assert tasks_of("default", text, "lee") == expected

@@ -1,9 +1,10 @@
 """An ask said after a told state without a stop: "my phone is on 2% pls get me a charging
 lead", "the printer is jammed can you bring me my file". Chat leaves out the stop between a
 statement and the request after it; "please"/"pls" with a verb, or an asking modal with whom
-it asks ("can u", "could you"), opens a request of its own wherever it stands. Read as one
-sentence, the statement's reading won and the request was lost ("Noted. I did nothing."):
-a comma is put back before the ask, as ``consequence_boundary`` puts one before "so".
+it asks ("can u", "could you", "can someone"), opens a request of its own wherever it
+stands. Read as one sentence, the statement's reading won and the request was lost ("Noted.
+I did nothing."): a comma is put back before the ask, as ``consequence_boundary`` puts one
+before "so".
 
 Only after a told clause: one with a copula ("is", "are", "was") and that opens with no
 asking word of its own ("is it free can you ...", "could you ... please bring ..." stay as
@@ -24,7 +25,10 @@ from assistantx.core import english, language
 
 _POLITE = english.words("polite")
 _MODALS = frozenset({"can", "could", "would", "will"})
-_ASKEES = frozenset({"you", "u", "ya"})
+# whom the ask is put to: "can u ...", and anyone at all ("can someone bring me ...")
+_ASKEES = frozenset({"you", "u", "ya"}) | (
+    english.words("request_askees") & english.words("unnamed_doers")
+)
 _COPULAS = frozenset({"is", "are", "am", "was", "were"})
 # A preface that ends in "but" ("I hope Mark won't mind but can I borrow his ruler", "sorry to
 # bother you but could you ..."): told or not, it closes where the ask opens, and the ask may
