@@ -13,6 +13,13 @@ gerund, a gerund after "and" ("and then", "and also") that takes an object ("my"
 A clause with a subject of its own in between ("would you mind bringing me a pen, I'm
 drawing and labelling the boxes") is no conjunct of the request: nothing after it changes. A
 gerund before a noun ("and packing tape") describes the noun, no verb: kept as said.
+
+The same lead-in put to anyone at all ("would someone mind heating up my lunch", "would
+anyone mind fetching ...") asks for the work as "could someone heat up my lunch" does; the
+reader knows "mind" as a lead-in only after "you", and read "mind heating" as a verb nothing
+offers (declined). There the gerund after "mind" is said as its plain verb and "mind" goes,
+the joined gerunds too ("would someone heat up my lunch"); "would anyone mind if I ...",
+"I don't mind waiting" have no such lead-in and stay as said.
 """
 
 from __future__ import annotations
@@ -24,6 +31,14 @@ from assistantx.core import english, language
 # "would you mind bringing ...", "do you mind taking ...": the lead-in and its gerund
 _MIND = re.compile(r"\bmind\s+[^\W\d_]+ing\b", re.IGNORECASE)
 # the end of a sentence: a conjunct joins inside one
+# "would someone mind heating ...": a modal, whom it is put to (anyone at all), "mind" and a
+# gerund taking an object
+_MODALS = "|".join(sorted(english.words("request_modals") - {"mind"}))
+_ANYONE = "|".join(sorted(english.words("request_askees") & english.words("unnamed_doers")))
+_ANYONE_MIND = re.compile(
+    rf"\b(?P<modal>{_MODALS})\s+(?P<who>{_ANYONE})\s+mind\s+(?P<doing>[^\W\d_]+ing)\b",
+    re.IGNORECASE,
+)
 _SENTENCE_END = re.compile(r"[.?!;]")
 _OBJECT_STARTS = english.words("object_starts") | english.words("pronouns") | {"me", "us"}
 _JOINED = re.compile(
@@ -45,7 +60,10 @@ _SUBJECTS = (english.words("subject_pronouns") - {"it", "you", "u", "ya"}) | {
 
 def joined_gerunds(text: str) -> str:
     """``text`` with each gerund joined by "and" to a "mind <verb>-ing" request said as its
-    plain verb ("..., and getting my form signed" → "..., and get my form signed")."""
+    plain verb ("..., and getting my form signed" → "..., and get my form signed"); a "mind
+    <verb>-ing" put to anyone at all said as its plain verb ("would someone mind heating my
+    lunch" → "would someone heat my lunch")."""
+    text = _anyone_minding(text)
     out: list[str] = []
     at = 0
     for lead in _MIND.finditer(text):
@@ -58,6 +76,20 @@ def joined_gerunds(text: str) -> str:
         at = stop
     out.append(text[at:])
     return "".join(out)
+
+
+def _anyone_minding(text: str) -> str:
+    """``text`` with each "<modal> someone mind <verb>-ing" said "<modal> someone <verb>", its
+    joined gerunds plain too, up to the end of the sentence."""
+    for lead in reversed(list(_ANYONE_MIND.finditer(text))):
+        plain = _plain(lead.group("doing").lower())
+        if plain is None:
+            continue
+        end = _SENTENCE_END.search(text, lead.end())
+        stop = end.start() if end else len(text)
+        said = f"{lead.group('modal')} {lead.group('who')} {plain}"
+        text = text[: lead.start()] + said + _conjuncts(text[lead.end() : stop]) + text[stop:]
+    return text
 
 
 def _conjuncts(rest: str) -> str:
