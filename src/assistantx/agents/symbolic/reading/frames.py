@@ -49,6 +49,7 @@ from assistantx.agents.symbolic.reading.given_back import (
     returned_to_whom,
     unowned_return,
 )
+from assistantx.agents.symbolic.reading.group_recipient import without_group_pronoun
 from assistantx.agents.symbolic.reading.her_or_hers import her_thing_asked
 from assistantx.agents.symbolic.reading.joined_doers import each_doer
 from assistantx.agents.symbolic.reading.joined_owners import each_owner
@@ -213,8 +214,23 @@ class FrameReader:
                 besides = _besides_owners(
                     tokens, readings.mentions, clause, requester, last_person, addressed
                 )
+                grouped = without_group_pronoun(tokens, clauses, k, str(exc.args[0]))
                 if later is None and besides is not None:
                     roles = besides  # "Nadia needs Miles's kit, take it to her": Nadia
+                elif later is None and grouped is not None:
+                    # "can we get them some water? bring it to me": the group's thing goes
+                    # to the speaker, whom the later clause names
+                    clause = grouped
+                    roles = clause_roles(
+                        tokens,
+                        clause,
+                        requester,
+                        last_person,
+                        addressed=addressed,
+                        taken_from=passed_on,
+                        message_named=message_named,
+                        outsider_said=outsider_said,
+                    )
                 elif later is None:
                     unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
                     return TaskFrame(requester=requester, question=unclear)
