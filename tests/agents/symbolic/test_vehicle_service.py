@@ -6,7 +6,11 @@ and a colleague is still a delivery."""
 
 from __future__ import annotations
 
-from _gear_office import read_as_lee
+import pytest
+from _gear_office import _raw, read_as_lee
+
+from helpers.office_builder import parsed
+from helpers.reading import frame_reader
 
 
 def test_a_service_said_by_its_vehicle_is_run() -> None:
@@ -28,3 +32,38 @@ def test_sent_to_a_colleague_is_a_delivery() -> None:
     assert [(t.kind, t.item, t.recipient) for t in frame.tasks] == [
         ("transfer", "contract", "zhang")
     ], frame
+
+
+def _noted_raw() -> dict[str, object]:
+    """The gear office with its contract also called a "delivery note"."""
+    raw = _raw()
+    for row in raw["item_types"]:  # type: ignore[attr-defined]
+        if row["id"] == "contract":
+            row["synonyms"] = ["delivery note"]
+    return raw
+
+
+_read_noted = frame_reader(parsed(_noted_raw), "lee")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "send my delivery note out on the van please",
+        "send my contract out on the van please",
+        "send my signed contract out",
+    ],
+)
+def test_a_send_out_with_its_particle_after_the_object_asks_where(text: str) -> None:
+    """Fix213a class 6: "send my X out ..." (the particle after the object) is the send-out
+    service, as "send out my X" is: where it goes is asked, never what "the van" means."""
+    asked = _read_noted(text).question
+    assert asked == _read_noted("send out my contract").question, asked
+    assert asked is not None and asked.startswith("Where should I dispatch it to?"), asked
+
+
+def test_a_colleague_after_the_split_particle_is_asked_about_as_before() -> None:
+    assert (
+        read_as_lee("send my contract out to Zhang").question
+        == read_as_lee("send out my contract to Zhang").question
+    )

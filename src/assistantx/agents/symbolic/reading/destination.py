@@ -168,7 +168,7 @@ def find_outside(
     words = [t.word for t in tokens]
     found = next(
         (
-            (k, k + 1 + len(p.rest), p.operation, p.modifiers)
+            (k, k + 1 + len(p.rest), p.operation, p.modifiers, k + 1 + len(p.rest))
             for k, word in enumerate(words)
             for p in phrases
             if word in p.forms
@@ -176,12 +176,14 @@ def find_outside(
             and tuple(words[k + 1 : k + 1 + len(p.rest)]) == p.rest
         ),
         None,
-    )
+    ) or _split_particle(words, gaps, phrases, names)
     if found is None:
         return None
-    verb_start, verb_end, operation, modifiers = found
+    # "send my contract *out* ...": the particle said after the object; its place is read
+    # after the particle (``said_to``), the object between stays the object
+    verb_start, verb_end, operation, modifiers, said_to = found
     to = None
-    for k in range(verb_end, len(tokens)):
+    for k in range(said_to, len(tokens)):
         if _ends(gaps[k]):
             break  # "please fax my form, it has to go today": another clause's "to"
         if words[k] == "to":
@@ -255,6 +257,36 @@ def find_outside(
     return Outside(
         operation, verb_start, verb_end, start, end, phrase, means is not None, detail_end
     )
+
+
+# The most words of the object said between a send-out's verb and its particle ("send *my
+# signed delivery note* out").
+_SPLIT_OBJECT = 4
+_VERB_PARTICLES = english.words("verb_particles")
+
+
+def _split_particle(
+    words: Sequence[str],
+    gaps: Sequence[str],
+    phrases: Sequence[VerbPhrase],
+    names: Collection[int],
+) -> tuple[int, int, str, frozenset[str], int] | None:
+    """A send-out verb phrase of a verb and one particle ("send out") said with its object
+    between them ("send my delivery note out"), in one clause and with no "to" between: the
+    verb alone as the phrase's words (``verb_start``, ``verb_end``), the object left to be
+    read as the object, and where the words after the particle start."""
+    for k, word in enumerate(words):
+        if k in names:
+            continue
+        for p in phrases:
+            if word not in p.forms or len(p.rest) != 1 or p.rest[0] not in _VERB_PARTICLES:
+                continue
+            for j in range(k + 2, min(len(words), k + 2 + _SPLIT_OBJECT)):
+                if _ends(gaps[j]) or words[j] in ("to", "and", "then"):
+                    break
+                if words[j] == p.rest[0]:
+                    return k, k + 1, p.operation, p.modifiers, j + 1
+    return None
 
 
 def _at_a_name(
