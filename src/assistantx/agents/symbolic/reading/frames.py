@@ -899,8 +899,9 @@ class FrameReader:
     ) -> str | None:
         """ "Could you weigh the parcel?" said by someone who has no parcel: a service on a
         thing whose owner is not said is the requester's own only if they have one; with none
-        of theirs and none the office keeps for anyone, whose it is is asked (never a thing
-        tried from the requester's desk where there is none). "my parcel" is left as said."""
+        of theirs and none the office keeps for anyone (a supply; a colleague's belonging kept
+        at a facility is theirs, no supply), whose it is is asked (never a thing tried from the
+        requester's desk where there is none). "my parcel" is left as said."""
         said_mine = any(
             m.kind == "self" and readings.tokens[m.start].word in ("my", "mine")
             for m in readings.mentions
@@ -912,8 +913,10 @@ class FrameReader:
                 continue
             if requester in self.office.owners_of(t.item):
                 continue
-            if self.office.kept_owner(t.item, besides=requester) is not None:
-                continue
+            if self.office.supplier(t.item) is not None:
+                continue  # the office's own, kept for anyone
+            # a colleague's kept at a facility is still a colleague's: whose is asked, never
+            # the requester's own put in (fix213a class 4: "could you get the key copied")
             return f"Whose {self._item_name(t.item)} do you mean?"
         return None
 
