@@ -157,7 +157,7 @@ def _corrected(sentence: str, is_person: Callable[[str], bool]) -> str:
             return sentence
         # "bring me Hu's stapler, Gao's": the one thing, Gao's
         first = said_before[0]
-        cut = _part_start(sentence, choice.start)
+        cut = _reason_start(sentence, first.end, _part_start(sentence, choice.start))
         return (
             sentence[: first.start]
             + f"{choice.name}'s"
@@ -222,6 +222,28 @@ def _part_start(sentence: str, at: int) -> int:
     comes before them ("... no wait Dawn's")."""
     marked = _MARKED.search(sentence[:at]) or _MARKED_UNPAUSED.search(sentence[:at])
     return marked.start() if marked is not None else at
+
+
+# a pause, then words that mark a correction, opening a part said before the choice ("...,
+# no wait she's using it on the filing, Zhang's then")
+_MARKED_OPENING = re.compile(
+    r"\s*[,:\-–—]\s*(?:{m})\b".format(
+        m="|".join(r"\s+".join(map(re.escape, m.split())) for m in _MARKERS)
+    ),
+    re.IGNORECASE,
+)
+
+
+def _reason_start(sentence: str, start: int, cut: int) -> int:
+    """Where the correction starts, between the thing's owner said first (ending at
+    ``start``) and the choice's part (at ``cut``): at a pause and words that mark a
+    correction, where a part of its own (why the first owner will not do) stands between
+    them ("Wang's stapler, no wait she's using it on the filing, Zhang's then": that part
+    goes with the correction; before, it was left behind and read as withdrawing all)."""
+    marked = _MARKED_OPENING.search(sentence, start, cut)
+    if marked is None or not sentence[marked.end() : cut].strip(" ,:-–—"):
+        return cut
+    return marked.start()
 
 
 def _thing_before(sentence: str, at: int) -> bool:

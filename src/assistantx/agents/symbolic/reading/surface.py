@@ -111,6 +111,7 @@ from assistantx.agents.symbolic.reading.thing_for_thing import ThingForThing
 from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
+from assistantx.agents.symbolic.reading.withdrawn_thing import withdrawn_thing
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_said_as_product import WorkSaidAsProduct
 from assistantx.core import language, task_kinds
@@ -467,6 +468,9 @@ STEPS: tuple[Step, ...] = (
     # "+" and "&" join as "and"
     # e.g. "print my file + a coffee"
     Step("signs_as_and", lambda s, t, a: signs_as_and(t)),
+    # one listed thing withdrawn: the request without it
+    # e.g. "bring me a stapler and a pen. actually forget the stapler"
+    Step("withdrawn_thing", lambda s, t, a: withdrawn_thing(t, s.lex, s.item_types)),
     # the role only describes him
     # e.g. "get the duty manager, Wang, to sign my document"
     Step(

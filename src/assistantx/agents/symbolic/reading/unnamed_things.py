@@ -44,6 +44,9 @@ _FROM = "from"
 _SOURCES = frozenset({"facility", "place", "person"})
 # A thing said: its phrase, whose it is (None: nobody's), and the token after it.
 Said = tuple[str, str | None, int]
+# the nouns of a unit or a portion of a thing ("a *sheet* of paper", "a *box* of gizmos")
+_UNITS = english.words("unit_nouns") | english.words("portion_words")
+_OF = "of"
 _CLAUSE_ENDS = frozenset({"please", "pls", "too", "as", "and", "then", "to", "for", "asap", "now"})
 
 
@@ -120,7 +123,7 @@ def _joined_thing(
         said = _thing_said(mentions, tokens, k, end, me)
         if said is None:
             continue  # "a stapler and scissors": known too, or none; on to what follows
-        last = _phrase_end(tokens, end)
+        last = max(_phrase_end(tokens, end), said[2])
         if last < len(tokens) and not (
             tokens[last].after_pause
             or tokens[last].opens
@@ -212,4 +215,31 @@ def _thing_said(
     named = " ".join(tokens[m.start].word for m in run)
     if category_named(named) is not None or category_named(noun) is not None:
         return None  # "a drink", "a hot drink": a kind of thing, asked or offered by its stage
-    return " ".join(t.text for t in tokens[start : head.end]), whose, head.end
+    end = head.end
+    if noun in _UNITS and end < len(tokens) and tokens[end].word == _OF:
+        # "a sheet of paper", "a box of gizmos": the thing is what the unit is of, and the
+        # phrase goes on to it (before, it stopped at "of" and the thing was dropped unsaid)
+        end = _unit_of(mentions, tokens, end + 1)
+        if end < 0:
+            return None  # "a box of staples": of the office's own thing, read as that
+    return " ".join(t.text for t in tokens[start:end]), whose, end
+
+
+def _unit_of(mentions: Sequence[Mention], tokens: Sequence[Token], at: int) -> int:
+    """The token after the plain noun phrase that starts at ``at`` (after a unit's "of"):
+    -1 where it names a thing of the office or no noun."""
+    end = at
+    for m in mentions:
+        if m.end <= at:
+            continue
+        if m.start != end or tokens[m.start].after_pause or end - at > _MODIFIERS:
+            break
+        if m.kind != "word":
+            return -1
+        word = m.ids[0] if m.ids else tokens[m.start].word
+        if word in _COMMON or not word.isalpha():
+            break
+        end = m.end
+    if end == at or not language.is_noun(tokens[end - 1].word):
+        return -1
+    return end

@@ -198,6 +198,14 @@ def _corrected(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
         after, rest = rest[1:].lstrip(), rest[1 + len(fix) :]
         tokens = terms.lex.tokens(fix)
+    elif _why_ruled_out(terms, tokens):
+        # "Wang's stapler, no wait she's using it on the filing. Zhang's then": why the one
+        # said is ruled out, then who or what instead; the choice after it is the correction
+        # (before, "no wait" and the reason were read as withdrawing the whole request)
+        chosen = _choice_after_reason(terms, rest)
+        if chosen is not None:
+            fix, rest = chosen
+            tokens = terms.lex.tokens(fix)
     words = [t.word for t in tokens]
     if any(tuple(words[: len(w)]) == w for w in _WITHDRAWING):
         return text, []  # "sorry, forget the coffee": a withdrawal, read as one
@@ -522,6 +530,58 @@ def _what_it_is(terms: Terms, tokens: Sequence[Token], rest: str) -> bool:
         return False  # "it's Gao's, bring me that one": whose it is corrects the owner
     nxt = re.split(r"[,.!?;\n]|\s[-–—]+\s", rest[1:], maxsplit=1)[0]
     return opens_request(terms, terms.lex.tokens(nxt))
+
+
+# who a reason that rules the one said out is told of ("*she*'s using it", "*it*'s broken")
+_REASON_SUBJECTS = frozenset({"he", "she", "they", "it", "that", "its", "thats", "hes", "shes"})
+# what opens a choice said after the reason: "*try* Zhang's", "Zhang's *then*"
+_CHOICE_WORDS = frozenset({"try", "then", "instead", "ask", "get", "use", "maybe", "so"})
+
+
+def _why_ruled_out(terms: Terms, tokens: Sequence[Token]) -> bool:
+    """Whether a correction's first clause only tells why the one just said will not do: a
+    subject told of ("she", "he", "it" or a colleague) and a verb after it ("she's using
+    it", "he needs it today", "it's broken"), naming no thing of the office."""
+    if len(tokens) < 2 or opens_request(terms, tokens):
+        return False
+    mentions = terms.lex.scan(list(tokens))
+    if any(
+        m.kind in ("item", "facility", "place") or (m.kind == "person" and m.start > 0)
+        for m in mentions
+    ):
+        return False
+    first = tokens[0]
+    if first.word not in _REASON_SUBJECTS and not (mentions and mentions[0].kind == "person"):
+        return False
+    words = [t.word for t in tokens[1:]]
+    return first.possessive or any(
+        language.is_finite_verb(w) or language.is_present_participle(w) for w in words
+    )
+
+
+def _choice_after_reason(terms: Terms, rest: str) -> tuple[str, str] | None:
+    """The clause right after a reason (``rest`` opens with its pause or stop) and what
+    follows it, where that clause names one colleague's thing or one thing of the office
+    and asks nothing of its own ("Zhang's then", "try Zhang's", "a pencil instead")."""
+    lead = re.match(r"\s*(?:[,.;!?…]+|[-–—]+)\s*", rest)
+    if lead is None or not lead.group(0).strip():
+        return None
+    after = rest[lead.end() :]
+    fix = re.split(r"[,.!?;\n]|\s[-–—]+\s", after, maxsplit=1)[0]
+    tokens = terms.lex.tokens(fix)
+    if not tokens or len(tokens) > 4 or opens_request(terms, tokens):
+        return None
+    mentions = [m for m in terms.lex.scan(tokens) if m.kind in ("person", "item")]
+    others = [
+        t.word
+        for n, t in enumerate(tokens)
+        if not any(m.start <= n < m.end for m in mentions) and t.word not in _CHOICE_WORDS
+    ]
+    if len(mentions) != 1 or others:
+        return None
+    if mentions[0].kind == "person" and not mentions[0].possessive:
+        return None  # "..., she's using it. Zhang needs one too": news, no choice
+    return fix, after[len(fix) :]
 
 
 def thing_kept(terms: Terms, withdrawn: str, tokens: Sequence[Token], after: str) -> str:

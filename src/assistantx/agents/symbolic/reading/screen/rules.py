@@ -82,6 +82,7 @@ from assistantx.agents.symbolic.reading.screen.whereabouts import whereabouts
 from assistantx.agents.symbolic.reading.screen.whereabouts_reason import whereabouts_reason
 from assistantx.agents.symbolic.reading.screen.wish import wish
 from assistantx.agents.symbolic.reading.screen.withdrawal import withdrawn
+from assistantx.agents.symbolic.reading.screen.wrong_input import wrong_input
 from assistantx.agents.symbolic.reading.screen.wrong_instrument import wrong_instrument
 
 # A rule reads one piece of a message with the office's terms; None: not this kind of piece.
@@ -137,6 +138,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_use),
     # "shred my stapler in the printer": a facility asked for work it does not do
     ("unsupported", wrong_instrument),
+    # "shred my coffee": a service's verb said of a drink the office makes, never one made
+    ("unsupported", wrong_input),
     ("destructive", destructive),
     ("unsupported", outside_account),
     ("unsupported", absent_owner),
