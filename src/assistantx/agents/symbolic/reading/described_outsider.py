@@ -1,11 +1,13 @@
 """An outsider described in the message, and what points back to them or says where they come
 from: "I need a coffee for a visitor from Shenzhen", "we've got a client visiting from Dublin,
-could you get me a coffee for him?", "an instructor coming over from Verbier".
+could you get me a coffee for him?", "an instructor coming over from Verbier", "Mrs Hughes
+is coming in at 3. I need a printout for her meeting".
 
 A person described by what they are (a determiner, at most a few describing words, and a noun
 that names a person by what they are or by their work: "a visitor", "the client", "our
 auditor"), or as travelling ("an instructor visiting", "a visiting instructor", "someone
-coming over"), is nobody of the office. Two things follow, both rules about English:
+coming over"), or named by a title and a name nobody of the office has ("Mrs Hughes"), is
+nobody of the office. Two things follow, both rules about English:
 
 - a capitalised word after "from" right after such a person ("a visitor from Shenzhen", "a
   client visiting from Dublin") says where they come from: a place, no colleague to look up;
@@ -21,6 +23,7 @@ from collections.abc import Collection, Sequence
 from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.named_once import the_ones_named
 from assistantx.agents.symbolic.reading.outsider_need import is_outsider_noun
+from assistantx.agents.symbolic.reading.titled_stranger import titled_stranger
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 
@@ -76,8 +79,13 @@ def _described_at(tokens: Sequence[Token], k: int, taken: Collection[int]) -> in
 
 
 def described_outsiders(tokens: Sequence[Token], taken: Collection[int]) -> list[int]:
-    """The heads of the described outsiders of the message, in order."""
-    found = (_described_at(tokens, k, taken) for k in range(len(tokens)))
+    """The heads of the described outsiders of the message, in order: a person described by
+    what they are, or named by a title and a name nobody of the office has ("Mrs Hughes is
+    coming in at 3": ``titled_stranger``; the name is the head)."""
+    found = (
+        k if titled_stranger(tokens, k, taken) else _described_at(tokens, k, taken)
+        for k in range(len(tokens))
+    )
     return [h for h in found if h is not None]
 
 

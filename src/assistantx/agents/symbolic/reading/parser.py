@@ -174,6 +174,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
 )
 from assistantx.agents.symbolic.reading.unnamed_carried import unnamed_carried
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
+from assistantx.agents.symbolic.reading.usual_thing import usual_asked
 from assistantx.agents.symbolic.reading.work_unsaid import (
     WHICH_WORK,
     with_fetch_or_work,
@@ -337,6 +338,9 @@ class InstructionParser:
         now is said anywhere, also in a statement the screen set aside ("P lent me her
         ruler. Please return it to her; it's on my desk")."""
         lexed = self.lex.read(request)  # the rewritten request, read once; later stages get it
+        usual = usual_asked(self.office, lexed)
+        if usual is not None:  # "bring me the usual from stores": which thing, asked
+            return TaskFrame(requester=requester, question=usual)
         readings = self.readings.read(lexed, requester)
         frame = self.frames.frame(
             readings,

@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.announced_borrowing import announced_bor
 from assistantx.agents.symbolic.reading.approved_use import approved_uses
 from assistantx.agents.symbolic.reading.asides import announced_list
 from assistantx.agents.symbolic.reading.attributive_work import without_attributive_work
+from assistantx.agents.symbolic.reading.authored import authored_things
 from assistantx.agents.symbolic.reading.bare_room import BareRoom
 from assistantx.agents.symbolic.reading.beside_a_thing import beside_a_thing
 from assistantx.agents.symbolic.reading.booked_means import booked_means, send_out_means
@@ -276,6 +277,17 @@ class Surface:
             return None
         return phrase
 
+    def authored(self, phrase: str) -> bool:
+        """Whether ``phrase`` ends in a name of the office's files or papers (a personal thing
+        one signs) and names nothing else ("sales slides", "report"): a thing a colleague
+        makes and owns ("the lunch Wang made" is no such thing)."""
+        lexed = self.lex.read(phrase)
+        named = [m for m in lexed.mentions if m.kind != "word"]
+        if len(named) != 1 or named[0].kind != "item" or named[0].end != len(lexed.tokens):
+            return False
+        types = [self.office.item_type(i) for i in named[0].ids]
+        return all(t.kind == "electronic" or (t.kind == "personal" and t.signable) for t in types)
+
     def names_only(self, phrase: str, person: str) -> bool:
         """Whether ``phrase`` is a name of ``person`` and nothing else ("Jean-Luc")."""
         return self.people_of(phrase) == (person,)
@@ -431,6 +443,12 @@ STEPS: tuple[Step, ...] = (
     Step(
         "sent_files",
         lambda s, t, a: sent_files(t, s.is_person, s.as_file),
+    ),
+    # Zhang's slides, Wang's report
+    # e.g. "can you send me the report Wang wrote"
+    Step(
+        "authored_things",
+        lambda s, t, a: authored_things(t, s.is_person, s.authored),
     ),
     # Wang's file, Zhang's stapler
     # e.g. "I need the stapler Zhang's got"

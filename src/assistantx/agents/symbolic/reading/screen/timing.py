@@ -33,11 +33,12 @@ _HAVE = r"(?:'ve\s+got|'ve|\s+have\s+got|\s+have|\s+get|\s+got|\s+find|\s+are\s+
 # "when you get a sec", "whenever you've a minute", "in a tick", "whenever (you can)": each
 # must end its clause (a stop, a comma, a join or a courtesy, or the end of the message), or
 # open the request said right after it unpunctuated: its modal and "you" ("when you get a sec
-# could you print ...")
+# could you print ..."), or an errand's verb in the imperative ("when you get a sec grab me a
+# pen": the word after it, ``next``, is checked against the office's errand verbs)
 _ASKED_NEXT = rf"(?:{'|'.join(sorted(english.words('request_modals')))})\s+(?:you|u|ya)\b"
 _END = (
     r"(?=\s*(?:$|[.,;:!?)…-]|(?:and|then|please|pls|plz|thanks|thank|thx|ta|cheers|x)\b"
-    rf"|{_ASKED_NEXT}))"
+    rf"|{_ASKED_NEXT})|\s+(?P<next>[^\W\d_]+)\b)"
 )
 _IDIOM = re.compile(
     r"(?:,\s*)?\b(?:"
@@ -67,6 +68,9 @@ def without_time_idioms(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         said = re.findall(r"[a-z]+", match.group(0).lower())
         if said[-1] in terms.lex.items:
             return match.group(0)  # the office's own thing, not a while
+        following = match.group("next")
+        if following is not None and following.lower() not in terms.lex.cue_words:
+            return match.group(0)  # "in a bit of a rush", "when you get a sec I ...": said on
         found.append(Evidence(words=match.group(0).strip(" ,"), meaning="when: soon, no time"))
         return ""
 
