@@ -89,6 +89,7 @@ from assistantx.agents.symbolic.reading.room_receiver import rooms_taken_to
 from assistantx.agents.symbolic.reading.said_kept import owned_as_said
 from assistantx.agents.symbolic.reading.said_operation import as_said
 from assistantx.agents.symbolic.reading.said_owner import passed_over, pronoun_owner
+from assistantx.agents.symbolic.reading.service_modifier import describes_work
 from assistantx.agents.symbolic.reading.several_owners import whose_of_several
 from assistantx.agents.symbolic.reading.source_not_recipient import taken_from
 from assistantx.agents.symbolic.reading.tokens import Token, prev_word
@@ -443,6 +444,8 @@ class FrameReader:
         # a rejected item is never fetched; with nothing left, the checks below ask
         tasks = [t for t in tasks if t.item not in rejected]
         objects = [m for m in objects if m.id not in rejected]
+        # "my glove needs a virkon dip": the virkon says how the dip is done, no object
+        objects = [m for m in objects if not describes_work(tokens, readings.mentions, m)]
         tasks = [self._given_back(t, holder) for t in tasks]
         # "return Wang's stapler", "give Wang his stapler back": from the speaker to Wang
         tasks = [given_back_by_speaker(t, tokens, readings.mentions, requester) for t in tasks]

@@ -31,7 +31,7 @@ from assistantx.memory.names import normalize
 # The endings a verb takes to name its act: "laminat-ion", "inspect-ion", "approv-al".
 _NOMINAL_ENDINGS = ("ion", "ation", "ment", "al")
 # What says its subject needs something done: "needs", "wants", "requires", "is due".
-_NEEDING = english.words("need_verbs") | {"needed", "wanted", "requires", "require", "due"}
+NEEDING = english.words("need_verbs") | {"needed", "wanted", "requires", "require", "due"}
 # Two words that say the same: "could use a", "could do with a", "should get a".
 _NEEDING_PAIRS = frozenset(
     {("could", "use"), ("do", "with"), ("should", "get"), ("should", "have"), ("to", "get")}
@@ -129,7 +129,7 @@ def _needed_before(words: Sequence[str], at: int, skippable: Callable[[str], boo
         k -= 1
     if k < 0:
         return False
-    return words[k] in _NEEDING or (k >= 1 and (words[k - 1], words[k]) in _NEEDING_PAIRS)
+    return words[k] in NEEDING or (k >= 1 and (words[k - 1], words[k]) in _NEEDING_PAIRS)
 
 
 def read_as_verbs(
@@ -171,4 +171,4 @@ def _by_whole_name(words: Sequence[str], n: int, names: dict[tuple[str, ...], st
 
 
 def _describing(word: str) -> bool:
-    return word.isalpha() and word not in _ARTICLES and word not in _NEEDING
+    return word.isalpha() and word not in _ARTICLES and word not in NEEDING

@@ -38,6 +38,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
     describing_participles,
     key_of,
 )
+from assistantx.agents.symbolic.reading.made_for_outsider import made_for_outsider
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.outsider_owner import (
     clause_opening_owner,
@@ -424,6 +425,10 @@ class MentionReader:
                 continue  # "from HR": a team, any one of the thing will do
             if m.kind == "word" and inside_a_title(tokens, mentions, n):
                 continue  # "Notices to Mariners": a word of a thing's title, nobody's name
+            if m.kind == "word" and made_for_outsider(
+                self.office, tokens, mentions, n, self._people_words
+            ):
+                continue  # "chopped quail for Blaze please": made for the speaker's use
             if m.kind == "word" and _unknown_name(tokens, mentions, n, self._people_words):
                 name = m.text.replace("’", "'").removesuffix("'s").removesuffix("'")
                 out.append(f"I don't know anyone called {name!r} in this office. Who do you mean?")

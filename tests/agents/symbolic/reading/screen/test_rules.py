@@ -24,11 +24,13 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # the things to use a tool asked for on ("..., a pile of letters to seal")
         "statement",  # a count of things, why it is asked ("..., like 20 letters going out")
         "statement",  # a past event of the speaker's own thing ("..., mine went in the compost")
+        "statement",  # news of someone no colleague ("Blaze flew brilliantly today")
         "statement",  # a contrast of kinds beside a request ("the file not a printout")
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",
         "thanks",  # an acknowledgement said back ("crystal clear, thanks!", "will do")
+        "statement",  # a fragment of news, its things after prepositions ("2 mins to the lure")
         "statement",  # how a question beside it is meant ("just curious", "no rush")
         "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
         "statement",  # an event and its time after a request ("..., ground run in 10")

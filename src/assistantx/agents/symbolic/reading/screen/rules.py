@@ -33,6 +33,7 @@ from assistantx.agents.symbolic.reading.screen.fyi import fyi
 from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
+from assistantx.agents.symbolic.reading.screen.narrative import narrative_fragment, told_subject
 from assistantx.agents.symbolic.reading.screen.need_to_know import need_to_know
 from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
@@ -117,12 +118,18 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # what already happened to the speaker's own thing beside a request ("mine went in the
     # compost"): before a service or waste container its words name is read as asked for
     ("statement", past_event),
+    # "Blaze flew brilliantly today, 2 mins to the lure and back to the fist": news told,
+    # its subject nobody of the office, its fragments where it went; nothing fetched
+    ("statement", told_subject),
     ("statement", contrast),
     ("wish", wish),
     ("wish", hope),
     ("thanks", thanks),
     # "crystal clear, thanks!", "will do": said back, before a word of it is read as a name
     ("thanks", acknowledgement),
+    # "..., 2 mins to the lure and straight back to the fist": a fragment of the news told
+    # (after an acknowledgement: "..., all good" is one)
+    ("statement", narrative_fragment),
     ("statement", curious),
     ("statement", asks_for_time),
     # "..., ground run in 10": an event's name and its time after a request, never a
