@@ -19,10 +19,9 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from assistantx.agents.symbolic.reading.sent_file import relative_clauses
 from assistantx.core import english
 
-_WORD = r"[^\W\d_][\w-]*"
-_DETERMINERS = r"the|this|that|those|these"
 _VERBS = "|".join(sorted(english.words("authoring_verbs"), key=len, reverse=True))
 _PARTICLES = "|".join(sorted(english.words("own_making_particles")))
 # when it was made: said after the clause and dropped with it
@@ -30,23 +29,8 @@ _WHEN = (
     r"(?:\s+(?:earlier|yesterday|today|just\s+now|this\s+morning|this\s+week|last\s+night"
     r"|last\s+week|last\s+month|the\s+other\s+day))?"
 )
-# the clause ends: its end, a stop, or a word that opens a phrase of its own
-_AFTER = (
-    r"(?=\s*(?:$|[,.;:!?)]|(?:and|so|then|now|please|pls|to|for|on|at|in|into|with|can"
-    r"|could|would|asap)\b))"
-)
-_WHO = rf"{_WORD}(?:\s+(?!(?:just|has|had)\b){_WORD})?"
-# the thing's words, the longest first ("the sales slides Zhang did": not "sales" with
-# "slides Zhang" taken for who made them)
-_CLAUSES = tuple(
-    re.compile(
-        rf"\b(?:{_DETERMINERS})\s+(?P<thing>{_WORD}(?:\s+{_WORD}){{{n - 1}}})\s+"
-        rf"(?:(?:that|which)\s+)?(?P<who>{_WHO})\s+(?:just\s+|already\s+)?(?:{_VERBS})"
-        rf"(?:\s+(?:{_PARTICLES}))?{_WHEN}{_AFTER}",
-        re.IGNORECASE,
-    )
-    for n in (3, 2, 1)
-)
+# "the slides Zhang did": the relative clause of a making verb (``sent_file``'s shape)
+_CLAUSES = relative_clauses(rf"(?:{_VERBS})(?:\s+(?:{_PARTICLES}))?{_WHEN}")
 
 
 def authored_things(

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Mapping, Sequence
+from functools import partial
 
 from assistantx.agents.symbolic.reading import shared_object
 from assistantx.agents.symbolic.reading._kinds import FILE_KINDS, TaskReader
@@ -197,17 +198,18 @@ class FrameReader:
                 continue
             # "get it from June and bring it to her": the same thing, so not June
             passed_on = said_from if self._passes_it_on(clause, tokens) else []
+            roles_of = partial(
+                clause_roles,
+                tokens,
+                requester=requester,
+                last_person=last_person,
+                addressed=addressed,
+                taken_from=passed_on,
+                message_named=message_named,
+                outsider_said=outsider_said,
+            )
             try:
-                roles = clause_roles(
-                    tokens,
-                    clause,
-                    requester,
-                    last_person,
-                    addressed=addressed,
-                    taken_from=passed_on,
-                    message_named=message_named,
-                    outsider_said=outsider_said,
-                )
+                roles = roles_of(clause)
             except UnresolvedPronoun as exc:
                 later = _named_later(clauses, k + 1)
                 if later is None and named_once is not None:
@@ -222,16 +224,7 @@ class FrameReader:
                     # "can we get them some water? bring it to me": the group's thing goes
                     # to the speaker, whom the later clause names
                     clause = grouped
-                    roles = clause_roles(
-                        tokens,
-                        clause,
-                        requester,
-                        last_person,
-                        addressed=addressed,
-                        taken_from=passed_on,
-                        message_named=message_named,
-                        outsider_said=outsider_said,
-                    )
+                    roles = roles_of(clause)
                 elif later is None:
                     unclear = f"Who do you mean by {exc.args[0]!r}? Please tell me their name."
                     return TaskFrame(requester=requester, question=unclear)

@@ -35,17 +35,23 @@ _AFTER = (
     r"|could|would|asap)\b))"
 )
 _WHO = rf"{_WORD}(?:\s+(?!(?:just|has|had)\b){_WORD})?"
-# the thing's words, the longest first ("the invoice spreadsheet I sent": not "invoice" with
-# "spreadsheet I" taken for who sent it)
-_CLAUSES = tuple(
-    re.compile(
-        rf"\b(?:{_DETERMINERS})\s+(?P<thing>{_WORD}(?:\s+{_WORD}){{{n - 1}}})\s+"
-        rf"(?:(?:that|which)\s+)?(?P<who>{_WHO})\s+(?:just\s+|already\s+)?(?:{_SENT})"
-        rf"{_TAIL}{_AFTER}",
-        re.IGNORECASE,
+
+
+def relative_clauses(verb: str) -> tuple[re.Pattern[str], ...]:
+    """The patterns of "<determiner> <thing> (that) <who> <verb> ..." ending its clause, for a
+    ``verb`` pattern (with what may follow it): the thing's words the longest first ("the
+    invoice spreadsheet I sent": not "invoice" with "spreadsheet I" taken for who sent it)."""
+    return tuple(
+        re.compile(
+            rf"\b(?:{_DETERMINERS})\s+(?P<thing>{_WORD}(?:\s+{_WORD}){{{n - 1}}})\s+"
+            rf"(?:(?:that|which)\s+)?(?P<who>{_WHO})\s+(?:just\s+|already\s+)?{verb}{_AFTER}",
+            re.IGNORECASE,
+        )
+        for n in (3, 2, 1)
     )
-    for n in (3, 2, 1)
-)
+
+
+_CLAUSES = relative_clauses(rf"(?:{_SENT}){_TAIL}")
 _SPEAKER = "i"
 
 
