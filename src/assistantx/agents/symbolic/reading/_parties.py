@@ -562,7 +562,15 @@ def clause_roles(
                 if gapped:
                     roles.for_next_at.append(m.start)
         elif m.kind == "item":
-            owner = owner_of(tokens, ms, n, requester, last_person, addressed=addressed)
+            owner = owner_of(
+                tokens,
+                ms,
+                n,
+                requester,
+                last_person,
+                addressed=addressed,
+                outsider_said=outsider_said,
+            )
             if owner is not None:
                 roles.owners[m.start] = owner
     for group in groups:
@@ -639,6 +647,7 @@ def owner_of(
     last_person: list[str],
     *,
     addressed: str | None = None,
+    outsider_said: bool = False,
 ) -> str | None:
     m = ms[n]
     # "my / Zhang's / his [own] stapler": a possessive up to two words before the item
@@ -652,9 +661,13 @@ def owner_of(
             return p.ids[0]
         if p.kind == "pronoun" and p.possessive:
             others = [x for x in last_person if x != requester]
-            if not others and _outsider_before(tokens, p.start):
-                # "..., the client wants a copy for their files": theirs, an outsider's, no
-                # colleague to ask about
+            for_theirs = prev_word(tokens, p.start) == "for" and (
+                outsider_said or points_to_outsider(tokens, p.start)
+            )
+            if not others and (for_theirs or _outsider_before(tokens, p.start)):
+                # "..., the client wants a copy for their files", "Mrs Okafor is coming in
+                # at 3. I need a mount for her etching": theirs, an outsider's, what the
+                # work is for; no colleague to ask about
                 return None
             if not others:  # "his stapler" with nobody named before: whose?
                 raise UnresolvedPronoun(p.text)
