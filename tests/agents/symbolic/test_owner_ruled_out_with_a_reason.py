@@ -22,6 +22,10 @@ _ZHANGS = [("transfer", "stapler", "zhang", "lee")]
         "bring me Wang's stapler, no wait she's using it. try Zhang's",
         "bring me Wang's stapler, no wait she's using it. Zhang's instead",
         "bring me Wang's stapler, oh wait he needs it today. Zhang's then",
+        # where the one said is busy is no thing asked for (blind round 213, after its fixes:
+        # "... no wait he's using it on the vault shelves. Hunter's then" was dropped)
+        "can you bring me Wang's stapler, no wait she's using it in the meeting room. Zhang's then",
+        "bring me Wang's stapler, no wait she's busy at the print room. Zhang's then",
     ],
 )
 def test_the_choice_after_the_reason_is_the_owner(text: str) -> None:

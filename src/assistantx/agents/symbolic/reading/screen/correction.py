@@ -546,7 +546,9 @@ def _why_ruled_out(terms: Terms, tokens: Sequence[Token]) -> bool:
         return False
     mentions = terms.lex.scan(list(tokens))
     if any(
-        m.kind in ("item", "facility", "place") or (m.kind == "person" and m.start > 0)
+        m.kind == "item"
+        or (m.kind in ("facility", "place") and not _where_at(tokens, m.start))
+        or (m.kind == "person" and m.start > 0)
         for m in mentions
     ):
         return False
@@ -557,6 +559,19 @@ def _why_ruled_out(terms: Terms, tokens: Sequence[Token]) -> bool:
     return first.possessive or any(
         language.is_finite_verb(w) or language.is_present_participle(w) for w in words
     )
+
+
+# "she's using it *on* the vault shelves": where the one said is busy, no thing asked for
+_WHERE = frozenset({"on", "in", "at", "by", "near", "inside", "over", "under", "down", "up"})
+
+
+def _where_at(tokens: Sequence[Token], at: int) -> bool:
+    """Whether the place or facility said at ``at`` follows a preposition of where (its
+    article between): where the reason's subject is busy, not a thing of the request."""
+    k = at - 1
+    while k >= 0 and tokens[k].word in ("the", "a", "an", "our", "his", "her", "their"):
+        k -= 1
+    return k >= 0 and tokens[k].word in _WHERE
 
 
 def _choice_after_reason(terms: Terms, rest: str) -> tuple[str, str] | None:
