@@ -61,3 +61,49 @@ def test_my_key_is_as_said() -> None:
 
 def test_a_named_owner_is_as_said() -> None:
     assert _said("could you get Bo's key copied", "dee") == [("heat", "key", "bo")]
+
+
+def _cut_keys_raw() -> dict[str, object]:
+    """Keys kept by their owners, and a cutter that makes a copy of one (a product: the work
+    read as a copy, not a heat; blind round 213, after its fixes)."""
+    return office_file(
+        "Key desk",
+        [person("bo", "Bo", "key"), person("cy", "Cy", "key"), person("dee", "Dee")],
+        rooms=[room("shed", "Key shed", 20.0, 10.0), room("dock", "Dock", 1.0, 1.0)],
+        item_types=[item("key", "key", "personal"), item("spare_key", "spare key", "product")],
+        operations=[
+            operation(
+                "cut_key",
+                "duplicate",
+                "copy",
+                name="duplicate a key",
+                input="key",
+                product="spare_key",
+            )
+        ],
+        facilities=[
+            facility(
+                "cutter",
+                "key cutting machine",
+                at="shed",
+                guards=["cy"],
+                operations=["cut_key"],
+                products=["spare_key"],
+            )
+        ],
+        home="dock",
+    )
+
+
+_cut = frame_reader(parsed(_cut_keys_raw), "dee")
+
+
+def test_whose_key_is_asked_where_the_work_makes_a_copy() -> None:
+    frame = _cut("could you get the key copied")
+    assert frame.tasks == [] and frame.question == "Whose key do you mean?", frame
+
+
+def test_an_owner_gets_their_own_copied() -> None:
+    assert [(t.item, t.owner) for t in _cut("could you get the key copied", "bo").tasks] == [
+        ("key", "bo")
+    ]

@@ -903,7 +903,12 @@ class FrameReader:
             for m in readings.mentions
         )
         for t in tasks:
-            if t.kind != "heat" or t.item is None or t.owner != requester or said_mine:
+            if (
+                t.kind not in ("heat", "copy")
+                or t.item is None
+                or t.owner != requester
+                or said_mine
+            ):
                 continue
             if self.reader.kinds.get(t.item) == "electronic":
                 continue
