@@ -1,8 +1,8 @@
 """A simulated colleague reads "could you spare Sam some of your lube?" as a request to lend,
 where "spare" is also a name of the key cutter's product (a spare key): a product's one-word
-name said in the verb's place, right after "you" or "please", is the verb. Blind round 205:
-every owner of the lube answered "Sorry, I can't help with that (cut)" to the robot's
-question, and eleven tasks failed."""
+name said in the verb's place, right after "you", "anyone" or "please", is the verb. Blind
+round 205: every owner of the lube answered "Sorry, I can't help with that (cut)" to the
+robot's question, and eleven tasks failed."""
 
 from __future__ import annotations
 
@@ -28,6 +28,8 @@ def _office() -> Office:
     [
         ("Hi Ines, could you spare Odile some of your trimmings?", []),
         ("please spare me a minute", []),
+        # the group's question, asked of anyone (round 205 at L3: "I can help with that (cut)")
+        ("Hi all, could anyone spare Odile some trimmings? Please reply here if you can", []),
         # the product asked for as a thing stays the run that makes it
         ("could you do me a spare of Odile's file?", ["print"]),
         ("a spare of Odile's file please", ["print"]),

@@ -192,8 +192,8 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
 
 def _product_names_said_as_verbs(office: Office, haystack: str) -> set[tuple[str, str]]:
     """(form, operation) pairs of a product's one-word name that the text says only in the
-    verb's place, right after "you" or "please": "could you spare Sam some of your lube"
-    asks to lend, where "spare" is also a name of the key cutter's product (a spare key).
+    verb's place, right after "you", "anyone" or "please": "could you spare Sam some of your
+    lube" asks to lend, where "spare" is also a name of the key cutter's product (a spare key).
     The operation's own verbs are never in it ("could you duplicate my key")."""
     found: set[tuple[str, str]] = set()
     for op in office.operations:
@@ -205,7 +205,12 @@ def _product_names_said_as_verbs(office: Office, haystack: str) -> set[tuple[str
             if not name or " " in name or name in verbs:
                 continue
             said = [m.start() for m in re.finditer(rf"(?<= ){re.escape(name)}(?= )", haystack)]
-            if said and all(re.search(r" (?:you|please|pls|plz) $", haystack[:at]) for at in said):
+            if said and all(
+                re.search(
+                    r" (?:you|anyone|anybody|someone|somebody|please|pls|plz) $", haystack[:at]
+                )
+                for at in said
+            ):
                 found.update((form, op.id) for form in word_forms(name))
     return found
 
