@@ -46,6 +46,21 @@ def test_a_borrowed_one_for_a_broken_own_is_someone_elses(text: str) -> None:
     assert _tasks(text) == [("transfer", "stapler", None, "lee")]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        # what it broke during is no thing stated (round 207's default set: Liu Yang's
+        # document was brought to Chen for "my stapler broke halfway thru the report, can i
+        # borrow one")
+        "my stapler broke halfway thru the report, can i borrow one",
+        "my stapler broke during the report, can someone lend me one",
+        "my stapler jammed halfway through the contract, can i borrow one",
+    ],
+)
+def test_what_it_broke_during_is_no_thing_borrowed(text: str) -> None:
+    assert understood_tasks("default", "chen", text) == [("transfer", "stapler", None, "chen")]
+
+
 def test_a_dirty_own_mug_then_one_borrowed() -> None:
     text = "my cup is still dirty from lunch, could you borrow a mug for me"
     assert _tasks(text) == [("transfer", "mug", None, "lee")]
