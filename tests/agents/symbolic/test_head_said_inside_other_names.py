@@ -47,3 +47,17 @@ def test_a_head_of_one_type_inside_a_machines_name_stays_no_name() -> None:
     items = [("tempered glass protector", "glass"), ("screen protector", "glass")]
     one, shared = head_names(items, ["protector cutter"], _known)
     assert "protector" not in one and "protector" not in shared
+
+
+def test_a_head_of_several_types_inside_another_things_name_is_still_asked_about() -> None:
+    # round 207 (read): three mics beside a "mic cable" (a cable's name): "a mic" was "no mic
+    # in this office"; the longer name is still read whole by the lexicon ("a mic cable")
+    items = [
+        ("ribbon mic", "ribbon"),
+        ("dynamic mic", "dynamic"),
+        ("condenser mic", "condenser"),
+        ("mic cable", "xlr"),
+        ("xlr", "xlr"),
+    ]
+    one, shared = head_names(items, ["mic locker"], _known)
+    assert shared["mic"] == ("ribbon", "dynamic", "condenser") and "mic" not in one

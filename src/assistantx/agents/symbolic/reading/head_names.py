@@ -84,15 +84,16 @@ def head_names(
                 inside.add(w)
     for head, counted in heads.items():
         forms = (head, language.plural(head))
-        if head in _UNITS or head in taken or head in inside or any(known(f) for f in forms):
+        if head in _UNITS or head in taken or any(known(f) for f in forms):
             continue
-        if head in in_places and len(counted) == 1:
-            continue  # "from first aid": the room's name clipped, never plasters fetched
         if len(counted) > 1:
             # only ever asked ("which protector: the glass or the hydrogel one?"), so also
-            # where a machine's name holds it ("protector cutter"): a question moves nothing
+            # where a machine's or another thing's name holds it ("protector cutter", "mic
+            # cable" beside three mics): a question moves nothing
             shared[head] = tuple(counted)
             continue
+        if head in inside or head in in_places:
+            continue  # "from first aid": the room's name clipped, never plasters fetched
         ((type_id, names),) = counted.items()
         if names >= _ENOUGH:
             for form in forms:
