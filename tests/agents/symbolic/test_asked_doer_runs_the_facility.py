@@ -9,6 +9,10 @@ from __future__ import annotations
 import pytest
 from _offices import parser, tasks_of
 
+from assistantx.core.office import Office
+from helpers.dataset_offices import default_office_that_sends_out
+from helpers.reading import frame_reader
+
 
 @pytest.mark.parametrize(
     ("text", "who", "facility", "task"),
@@ -87,3 +91,27 @@ def test_must_not_change(
 def test_a_signature_asked_of_a_colleague_is_theirs() -> None:
     frame = parser("default").parse("get Zhang to sign my document", "wang")
     assert [(t.kind, t.actor) for t in frame.tasks] == [("sign", "zhang")]
+
+
+def _couriers() -> Office:
+    return default_office_that_sends_out("courier", "courier", "send off", "the address")
+
+
+_courier_frame = frame_reader(_couriers, "wang")
+
+
+def test_a_verb_with_a_particle_is_asked_only_whole() -> None:
+    # round 207 (read): "send" of a courier's "send off" made "get Ravi to send me his rough
+    # mix" a courier run by someone who does not keep the courier desk; it is his file
+    frame = _courier_frame("could you get Zhang to send me his file")
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("send_file", "file", "zhang", "wang")
+    ], frame
+
+
+@pytest.mark.parametrize(
+    "text", ["ask Zhang to send off my document", "ask Zhang to send my document off"]
+)
+def test_the_whole_verb_is_still_the_facilitys_work(text: str) -> None:
+    frame = _courier_frame(text)
+    assert frame.question is not None and "doesn't run the printer" in frame.question, frame

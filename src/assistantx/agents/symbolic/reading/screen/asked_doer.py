@@ -58,7 +58,7 @@ def _work_asked(office: Office, words: list[str]) -> Operation | None:
         if not office.runnable(op.id):
             continue
         forms = {f for verb in op.verbs for f in asking_forms(split_words(verb)[0])}
-        if words[0] in forms:
+        if words[0] in forms and _whole_verb_said(op, words):
             return op
         if words[0] in _MAKING and op.product is not None:
             product = office.item_type(op.product)
@@ -72,6 +72,23 @@ def _work_asked(office: Office, words: list[str]) -> Operation | None:
             if any(w in names for w in words[1:6]):
                 return op
     return None
+
+
+# the most words of an object between a verb and its particle ("send *the drive* off")
+_OBJECT_WORDS = 4
+
+
+def _whole_verb_said(op: Operation, words: list[str]) -> bool:
+    """Whether the words say one of ``op``'s verbs whole: a one-word verb by its head, a verb
+    with a particle ("send off") with the particle said within a short object after it ("get
+    Ravi to send me his mix" asks no courier's "send off")."""
+    for verb in op.verbs:
+        head, *rest = split_words(verb)
+        if words[0] not in asking_forms(head):
+            continue
+        if not rest or any(w == rest[0] for w in words[1 : 2 + _OBJECT_WORDS]):
+            return True
+    return False
 
 
 def _asked(
