@@ -446,15 +446,18 @@ class Lexicon:
                 # the phrase of both ("Anne-Marie's calculator")
                 found = lex.people if " " in key else lex.name_words
                 found.setdefault(key, set()).add(p.id)
-            # "Dan" of an alias "Dan Okonkwo" (a short given name and the surname): the
-            # given name calls them as the full name's first word does, and where two people
-            # are so called, which is asked
-            own = {key_of(w) for w in p.name.split()}
+            # "Dan" of an alias "Dan Okonkwo" for Daniel Okonkwo (the given name shortened,
+            # and the surname): it calls them as the full name's first word does, and where
+            # two people are so called, which is asked; a role before the surname ("Chef
+            # Ortiz") shortens no given name, and stays the alias it is
+            own = [key_of(w) for w in p.name.split()]
             for alias in p.aliases:
                 said = language.fold(alias).replace(".", " ").split()
-                if len(said) == 2 and key_of(said[1]) in own and said[0] not in TITLES:
-                    if (key := key_of(said[0])) and key not in own:
-                        lex.name_words.setdefault(key, set()).add(p.id)
+                if len(said) != 2 or key_of(said[1]) not in own or said[0] in TITLES:
+                    continue
+                key = key_of(said[0])
+                if key and key not in own and own[0].startswith(key[:2]):
+                    lex.name_words.setdefault(key, set()).add(p.id)
             # "Owen A": the given name and the initial of the surname, as a sign-off or chat
             # tells two colleagues of one given name apart (an initial after the name is read
             # as one only where no thing follows it: "give Owen a flashgun")
