@@ -304,6 +304,13 @@ class Lexed:
     mentions: tuple[Mention, ...]
 
 
+# who a helping verb that opens an ask is put to ("can *you* ...", "could *someone* ...")
+_ASKED_SUBJECTS = frozenset(
+    {"you", "u", "ya", "i", "we", "they", "he", "she", "someone", "somebody", "anyone"}
+    | {"anybody", "everyone", "one", "it", "this", "that", "there"}
+)
+
+
 @dataclass
 class Lexicon:
     """Phrase tables built from one office."""
@@ -864,7 +871,34 @@ class Lexicon:
         files = frozenset(t.id for t in self.office.item_types if t.kind == "electronic")
         mentions = described_by_participles(tokens, self._compound_heads(tokens, mentions), files)
         mentions = self._paper_subjects(tokens, self._own_papers(tokens, mentions))
+        mentions = self._modals_asking(tokens, mentions)
         return self._exactly_spelled(tokens, self._settled_by_owner(tokens, mentions))
+
+    def _modals_asking(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
+        """ "can you rotavate plot 12", "Can I borrow Björn's can?": a thing's one-word name
+        that is also a helping verb ("can", "will"), said before its subject (a pronoun or a
+        colleague's name) opens a question or an ask, no thing (a watering can called "can"
+        had been fetched for every "can you ...")."""
+        out: list[Mention] = []
+        for m in mentions:
+            if (
+                m.kind == "item"
+                and m.end == m.start + 1
+                and not tokens[m.start].possessive
+                and "AUX" in language.lemmas(tokens[m.start].word)
+                and m.end < len(tokens)
+                and not tokens[m.end].opens
+                and (
+                    tokens[m.end].word in _ASKED_SUBJECTS
+                    or tokens[m.end].word in self.name_words
+                    or tokens[m.end].word in self.people
+                )
+                and (m.start == 0 or tokens[m.start].opens or tokens[m.start].after_pause)
+            ):
+                out.append(Mention("word", m.start, m.end, (_said(tokens, m),), False, m.text))
+            else:
+                out.append(m)
+        return out
 
     def _paper_subjects(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "sign my requisition for the new staplers": a thing after a worked paper's "for"
