@@ -22,6 +22,8 @@ _NO_TEA = (
         ("bring a coffee to Zhang. bring me a tea", "bring a coffee to Zhang"),
         ("could you bring me a tea and then bring Zhang a stapler", "bring Zhang a stapler"),
         ("bring me a tea and a stapler", "bring you a stapler"),
+        # the rest said with no verb of its own is said back with one
+        ("could I get a tea, a stapler please", "bring you a stapler please"),
     ],
 )
 def test_the_tea_is_told_and_the_rest_offered(text: str, rest: str) -> None:
@@ -63,3 +65,12 @@ def test_neighbour_nothing_else_asked_is_declined(text: str) -> None:
 def test_neighbour_an_unknown_thing_beside_a_known_one_is_asked() -> None:
     frame = parser("default").parse("bring me a stapler and a unicorn", "lee")
     assert frame.question == "Sorry, I'm not sure what you mean by “a unicorn”. Could you tell me?"
+
+
+@pytest.mark.parametrize("text", ["could I get a tea, strong one please"])
+def test_more_said_of_the_missing_thing_is_no_rest(text: str) -> None:
+    # round 216 (read after its final measure): "could I get a coffee, strong one please" in
+    # an office with no coffee had asked "Shall I still strong one please?"
+    frame = parser("default").parse(text, "lee")
+    assert frame.tasks == [] and frame.question is None, frame
+    assert frame.decline is not None and frame.decline.startswith(_NO_TEA[:30]), frame

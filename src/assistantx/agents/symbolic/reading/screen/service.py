@@ -94,8 +94,12 @@ def doable_rest(terms: Terms, msg: Message, piece: Piece, word: str) -> str | No
     if gone is None or not asks(gone.words[gone.verb_at(lead_in) :]):
         return None
     others = [p for p in parts if p is not gone]
+    # another piece asks only with a verb or a thing of its own: "could I get a coffee,
+    # strong one please" says more of the coffee, no second request
     if any(asks(p.words) for p in others) or any(
-        p.acts.request for p in msg.pieces if p is not piece
+        p.acts.request and (asks(p.words) or terms.names_an_item(p.text))
+        for p in msg.pieces
+        if p is not piece
     ):
         text = msg.text[: gone.start] + " " + msg.text[gone.end :]
     else:
@@ -124,6 +128,9 @@ def _as_told(terms: Terms, rest: str) -> str:
     said = [_SAID_BACK.get(w.lower(), w) for w in words]
     if said and said[0][:1].isupper() and said[0].lower() in terms.lex.cue_words:
         said[0] = said[0].lower()
+    plain = [w.lower().strip(",.!?") for w in said]
+    if said and not any(terms.request_verb(plain, n) for n in range(len(plain))):
+        said = ["bring", "you", *said]  # "a tea, a stapler please": "bring you a stapler"
     return " ".join(said)
 
 
