@@ -305,10 +305,7 @@ class Lexed:
 
 
 # who a helping verb that opens an ask is put to ("can *you* ...", "could *someone* ...")
-_ASKED_SUBJECTS = frozenset(
-    {"you", "u", "ya", "i", "we", "they", "he", "she", "someone", "somebody", "anyone"}
-    | {"anybody", "everyone", "one", "it", "this", "that", "there"}
-)
+_ASKED_SUBJECTS = english.words("subject_pronouns") | english.words("unnamed_doers")
 
 
 @dataclass

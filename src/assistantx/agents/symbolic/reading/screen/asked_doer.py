@@ -57,8 +57,7 @@ def _work_asked(office: Office, words: list[str]) -> Operation | None:
     for op in office.operations:
         if not office.runnable(op.id):
             continue
-        forms = {f for verb in op.verbs for f in asking_forms(split_words(verb)[0])}
-        if words[0] in forms and _whole_verb_said(op, words):
+        if _whole_verb_said(op, words):
             return op
         if words[0] in _MAKING and op.product is not None:
             product = office.item_type(op.product)

@@ -7,6 +7,7 @@ import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.screen.english import DETERMINERS
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.tokens import Token
@@ -569,7 +570,7 @@ def _where_at(tokens: Sequence[Token], at: int) -> bool:
     """Whether the place or facility said at ``at`` follows a preposition of where (its
     article between): where the reason's subject is busy, not a thing of the request."""
     k = at - 1
-    while k >= 0 and tokens[k].word in ("the", "a", "an", "our", "his", "her", "their"):
+    while k >= 0 and tokens[k].word in DETERMINERS:
         k -= 1
     return k >= 0 and tokens[k].word in _WHERE
 
