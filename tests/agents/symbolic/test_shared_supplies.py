@@ -165,6 +165,40 @@ async def test_the_oracle_falls_back_alike(office: Office) -> None:
     await verify_tasks(office, [task])  # the oracle in the sim: done, in the planned steps
 
 
+def test_what_was_asked_admits_a_colleagues_pen_when_the_tape_makes_it_unachievable(
+    office: Office,
+) -> None:
+    """Round 221 (blind): "bring me a drill and some gaffer tape" with the tool store's
+    keepers away is unachievable (nobody lends tape), yet the drill part may be done with a
+    colleague's drill, lent with their own yes, as the planner does; the task's requested
+    goal said only the store's drill, so that hand-over counted as wrong."""
+    base = BaseInstruction(
+        id="s6",
+        requester="zhang",
+        text="Could you get me a pen and some tape?",
+        parts=(Part(kind="fetch", item="pen"), Part(kind="fetch", item="tape")),
+    )
+    away = [v for v in classify(base, office)["unachievable"] if "xu" in v.unavailable]
+    assert away
+    task = _task(away[0], office, 1)
+    assert task.goal == [{"informed": "zhang"}]
+    assert {"holds": ["zhang", "pen:cupboard"]} in task.requested_goal
+    assert {"holds": ["zhang", "pen:*"]} in task.requested_goal  # a colleague's, lent
+    assert {"holds": ["zhang", "tape:cupboard"]} in task.requested_goal
+    # an unachievable task that uses nothing kept asks only what it asked
+    own = BaseInstruction(
+        id="s7",
+        requester="zhang",
+        text="bring me Lee's book",
+        parts=(Part(kind="fetch", item="book", owner="lee"),),
+    )
+    lee_away = [v for v in classify(own, office)["unachievable"] if "lee" in v.unavailable]
+    assert _task(lee_away[0], office, 2).requested_goal == [
+        {"holds": ["zhang", "book:lee"]},
+        {"informed": "zhang"},
+    ]
+
+
 async def test_an_empty_counted_supply_sends_the_robot_to_a_colleague() -> None:
     office = parse_office(_raw(supplies=[{"type": "pen", "count": 0}]))
     run = await run_instruction(office, "zhang", "Could you get me a pen?")

@@ -21,6 +21,7 @@ import logging
 import random
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from assistantx.agents.oracle.optimal import OptimalReasoner
 from assistantx.agents.oracle.plan import TaskPlan, able, build_plan, candidates
@@ -220,6 +221,16 @@ def _pick_round_robin(
     return picked  # pragma: no cover - the loop returns
 
 
+def _asked(base: BaseInstruction, plan: TaskPlan, office: Office) -> list[dict[str, Any]]:
+    """What an unachievable task asked for, whose parts that can be done may be done: a thing
+    nobody's was named for comes from where one is kept, or is a colleague's lent with their
+    own yes (the fallback the planner and the oracle take when the keeper is away)."""
+    if not plan.uses_kept:
+        return plan.goal
+    lent = build_plan(base, office, kept=False).goal
+    return [*plan.goal, *(m for m in lent if m not in plan.goal)]
+
+
 def _task(variant: Variant, office: Office, number: int) -> Task:
     base = variant.base
     plan = build_plan(base, office)
@@ -228,7 +239,7 @@ def _task(variant: Variant, office: Office, number: int) -> Task:
     if variant.run.log.fell_back and plan.fallback is not None:
         plan = plan.fallback  # a colleague's was borrowed: any of the type will do
     goal = plan.goal if achievable else [{"informed": base.requester}]
-    extra = {} if achievable else {"requested_goal": plan.goal}
+    extra = {} if achievable else {"requested_goal": _asked(base, plan, office)}
     return Task(
         id=f"t{number:03d}",
         base=base.id,
