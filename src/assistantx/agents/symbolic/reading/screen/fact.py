@@ -3,6 +3,8 @@ can't find my stapler": a hint for the plan; the piece is dropped."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from assistantx.agents.symbolic.reading.screen.elsewhere import (
     away_elsewhere,
     leaving_soon,
@@ -10,6 +12,7 @@ from assistantx.agents.symbolic.reading.screen.elsewhere import (
 )
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
+from assistantx.agents.symbolic.reading.screen.left_behind import left_behind, lend_offer
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -25,6 +28,10 @@ _BACK_LEADS = english.words("back_leads")
 
 def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    if any(m.kind == "self" for m in mentions):  # "ugh laptop's dead and I forgot my cable"
+        behind = own_item_fact(terms, msg, piece, requester)
+        if behind is not None and behind.offer:
+            return behind
     k = 0
     while k < len(mentions) and mentions[k].kind == "word":
         if tokens[mentions[k].start].word not in terms.en.fact_openers:
@@ -112,9 +119,15 @@ def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
         starts_with(before, n, p) for n in range(len(before)) for p in terms.en.own_item_lost
     )
     broken = _out_of_use(terms, after)
-    if not (lost and before[:1] == ["i"]) and not (broken and not before):
+    behind = left_behind(before, after)  # "... and I left my cable at home"
+    if not (lost and before[:1] == ["i"]) and not (broken and not before) and not behind:
         return None
-    return _own_out_of_use(terms, piece, items[0].ids[0], requester)
+    found = _own_out_of_use(terms, piece, items[0].ids[0], requester)
+    offered = lend_offer(terms, items[0].ids[0], requester) if behind else None
+    if offered is None:
+        return found
+    known, offer, shall = offered
+    return replace(found, message=known, offer=offer, shall=shall)
 
 
 def _out_of_use(terms: Terms, after: list[str]) -> bool:

@@ -1,0 +1,53 @@
+"""Left behind: "my phone's on 2% and I left my cable at home", "I forgot my stapler": the
+speaker's own thing is not here, said as a fact. With nothing asked beside it, a thing a
+colleague could lend or a cupboard keeps is offered ("As far as I know, Dang Hao and Zhou Yan
+have a data cable. Shall I bring you one?"), never fetched on the statement alone and never
+only noted: the speaker said what they lack. A thing nobody lends (a lunch), or one left at
+a place in the office ("I left my stapler in the meeting room": where it is), is noted as
+before."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from assistantx.agents.symbolic.reading.screen.terms import Terms, listed
+from assistantx.core import english, wording
+
+_LEFT = english.words("left_behind_verbs") - {"dropped", "put"}
+_SUBJECTS = english.words("left_behind_subjects")
+_OUTSIDE = english.words("home_nouns") | english.words("outside_containers")
+_AT = english.words("lack_place_openers") | {"on"}
+
+
+def left_behind(before: Sequence[str], after: Sequence[str]) -> bool:
+    """Whether the words around "my <thing>" say the speaker left it outside the office:
+    "... and I left | my cable | at home", "I forgot | my pass |" (nothing after)."""
+    if len(before) < 2 or before[-1] not in _LEFT or before[-2] not in _SUBJECTS:
+        return False
+    rest = list(after)
+    while rest and rest[-1] in ("today", "again", "lol", "this", "morning"):
+        rest.pop()
+    if not rest:
+        return True
+    return rest[0] in _AT and any(w in _OUTSIDE for w in rest[1:4])
+
+
+def lend_offer(terms: Terms, item: str, requester: str) -> tuple[str, str, str] | None:
+    """(what the office knows of one, the request a yes carries out, the question) for a
+    thing the speaker left behind, or None where nobody here could lend one."""
+    t = terms.office.item_type(item)
+    if t.kind != "belonging":
+        return None  # a lunch, a document: nobody else's will do
+    a_thing = wording.a_thing(t.name, mass=t.mass)
+    supplier = terms.office.supplier(item)
+    owners = [o for o in terms.office.owners_of(item, known_only=True) if o != requester]
+    if supplier is not None:
+        known = f"{wording.there_is(t.name, mass=t.mass)} in the {supplier.name}."
+    elif owners:
+        names = [terms.office.person(o).name for o in owners[:4]]
+        has = "has" if len(names) == 1 else "have"
+        known = f"As far as I know, {listed(names)} {has} {a_thing}."
+    else:
+        return None
+    one = wording.some_or_one(t.name, mass=t.mass)
+    return known, f"bring me {a_thing}", f"Shall I bring you {one}?"
