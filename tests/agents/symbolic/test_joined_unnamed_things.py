@@ -72,3 +72,53 @@ def test_a_ruler_and_a_highlighter_for_a_colleague() -> None:
         ("ruler", "rose"),
         ("highlighter", "rose"),
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "phrase"),
+    [
+        # no errand's verb: the things are joined all the same (the tea was made and the
+        # biscuit never mentioned)
+        ("a tea and a biscuit please", "a biscuit"),
+        ("can I have a tea and a biscuit", "a biscuit"),
+        ("a ruler and some biscuits please", "some biscuits"),
+        # a word no dictionary knows, after an article, is a thing's name all the same
+        ("a tea and some paperclips please", "some paperclips"),
+        ("fetch me a ruler and some paperclips", "some paperclips"),
+    ],
+)
+def test_an_unknown_thing_joined_with_no_verb_is_asked_about(text: str, phrase: str) -> None:
+    frame = _harbour(text)
+    assert frame.tasks == [] and frame.question is not None, frame
+    assert f"“{phrase}”" in frame.question
+
+
+@pytest.mark.parametrize(
+    ("text", "items"),
+    [
+        ("a tea and a ruler please", ["tea", "ruler"]),
+        ("a tea please and the meeting starts at 3", ["tea"]),
+    ],
+)
+def test_known_things_with_no_verb_are_done(text: str, items: list[str]) -> None:
+    frame = _harbour(text)
+    assert frame.question is None, frame
+    assert [t.item for t in frame.tasks] == items
+
+
+def test_a_statement_of_things_had_asks_nothing() -> None:
+    frame = _harbour("I had a tea and a biscuit")
+    assert frame.tasks == [] and frame.question is None, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("bring me some paperclips", "there are no paperclips in this office"),
+        ("bring me some biscuits", "so I can't get you any."),
+        ("bring me a tape measure", "there is no tape measure in this office"),
+    ],
+)
+def test_an_unknown_thing_is_declined_in_its_number(text: str, said: str) -> None:
+    frame = _harbour(text)
+    assert frame.decline is not None and said in frame.decline, frame

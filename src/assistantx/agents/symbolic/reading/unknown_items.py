@@ -41,10 +41,20 @@ def unknown_item(terms: Terms, tokens: Sequence[Token], mentions: Sequence[Menti
         return None
     if thing in terms.lex.items:
         return None  # the office's own thing, misread around it: ask, never deny it exists
+    several = _several(thing)
     return (
-        f"Sorry, there is no {thing} in this office that I know of, so I can't get you "
-        f"one. {terms.capabilities()}"
+        f"Sorry, there {'are' if several else 'is'} no {thing} in this office that I know of, "
+        f"so I can't get you {'any' if several else 'one'}. {terms.capabilities()}"
     )
+
+
+def _several(thing: str) -> bool:
+    """Whether an unknown thing's name is a plural: the dictionary's ("biscuits"), or a word
+    it does not know ending as plurals do ("paperclips", not "class")."""
+    last = thing.split()[-1]
+    if language.is_plural_noun(thing):
+        return True
+    return not language.lemmas(last) and last.endswith("s") and not last.endswith("ss")
 
 
 def category_asked(

@@ -78,6 +78,21 @@ def unnamed_thing(
         if wish and not _source_at(mentions, tokens, said[2]):
             continue
         return said[0]
+    return _joined_without_verb(mentions, tokens, owners, me)
+
+
+def _joined_without_verb(
+    mentions: Sequence[Mention], tokens: Sequence[Token], owners: Collection[str | None], me: str
+) -> str | None:
+    """ "a tea and a biscuit please", "can I have a ruler and a gizmo": a request said with no
+    errand's verb still joins its things by "and"; the one no name of the office reads is a
+    thing asked for (the tea was made and the biscuit never mentioned)."""
+    for n, m in enumerate(mentions):
+        if m.kind != "item" or any(x.kind == "cue" and x.end <= m.start for x in mentions):
+            continue
+        said = _joined_thing(mentions, tokens, n, m.start, me)
+        if said is not None and said[1] not in owners:
+            return said[0]
     return None
 
 
@@ -210,7 +225,10 @@ def _thing_said(
         return None  # nothing said, or too long a phrase to be one thing's name
     head = run[-1]
     noun = tokens[head.start].word
-    if not language.is_noun(noun) or tokens[head.start].corrected or whose == "":
+    # a word no dictionary knows after an article ("some paperclips", "a hairnet") is a
+    # thing's name all the same: one the office does not have
+    unknown = not language.lemmas(noun)
+    if not (language.is_noun(noun) or unknown) or tokens[head.start].corrected or whose == "":
         return None
     named = " ".join(tokens[m.start].word for m in run)
     if category_named(named) is not None or category_named(noun) is not None:
