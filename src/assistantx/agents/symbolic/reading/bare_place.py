@@ -6,13 +6,15 @@ address of the place.") before anything moves, never sending the thing "to the f
 
 The office's data says what its send-out needs (``destination_asked``): a service that asks
 for an address is owed one. The phrase is bare when, past courtesy and an article or
-possessive, it is one or two lower-case words the dictionary knows as nouns or adjectives,
-with no proper name, no digit and no preposition ("the factory", "head office", "the main
-lab"); a name ("Acme Ltd"), an address ("4 Mill Road"), or anything more ("the factory in
-Leeds") is where it goes, as said."""
+possessive, it is one or two lower-case words the dictionary knows as nouns or adjectives (or
+a doer noun made from a verb it knows, "the distributor"; or a participle that describes the
+noun after it, "the pressing plant"), with no proper name, no digit and no preposition ("the
+factory", "head office", "the main lab"); a name ("Acme Ltd"), an address ("4 Mill Road"), or
+anything more ("the factory in Leeds") is where it goes, as said."""
 
 from __future__ import annotations
 
+from assistantx.agents.symbolic.reading.doer_nouns import is_made_doer_noun
 from assistantx.core import english, language
 
 _OPENERS = frozenset({"the", "a", "an", "our", "my", "your", "their", "his", "her"})
@@ -36,10 +38,14 @@ def bare_common_noun(phrase: str) -> bool:
         said = said[1:]
     if not said or len(said) > _BARE_WORDS:
         return False
-    for word in said:
+    for at, word in enumerate(said):
         if not word.isalpha() or not word.islower():
             return False  # "Acme", "4", "client's": a name, a number, an owner
         kinds = language.lemmas(_CLIPPED.get(word, word))
-        if "NOUN" not in kinds and "ADJ" not in kinds:
-            return False  # "the celestia": a word no dictionary has, a name in lower case
-    return language.is_noun(_CLIPPED.get(said[-1], said[-1]))
+        if "NOUN" in kinds or "ADJ" in kinds or is_made_doer_noun(word):
+            continue  # "the main lab", "the distributor"
+        if at < len(said) - 1 and language.is_present_participle(word):
+            continue  # "the *pressing* plant", "the *sorting* office": a kind described
+        return False  # "the celestia": a word no dictionary has, a name in lower case
+    last = said[-1]
+    return language.is_noun(_CLIPPED.get(last, last)) or is_made_doer_noun(last)

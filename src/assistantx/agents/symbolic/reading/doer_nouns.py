@@ -3,7 +3,12 @@ the doer nouns of "copy", "photocopy", "scan", "laminate". Where one facility of
 services ("the printer" that also copies), the name the requester used for it ("run this
 through the copier") says which of its services is asked: the one whose verb the name is
 made from. The rule is English morphology (verb + "-er"/"-or", "y" → "i", a doubled last
-consonant, a dropped "e"), applied to the office's own verbs and names, never a list."""
+consonant, a dropped "e"), applied to the office's own verbs and names, never a list.
+
+The same morphology tells a doer noun the dictionary lacks from a name said in lower case
+("the distributor": distribute + "-or"; "the reseller": resell + "-er"; never "the celestia"):
+a word in use whose stem is a verb the dictionary knows is a common noun, someone by their
+work (``is_made_doer_noun``)."""
 
 from __future__ import annotations
 
@@ -12,17 +17,34 @@ from assistantx.core import language
 _SUFFIXES = ("er", "or", "r")
 
 
-def is_doer_noun(noun: str, verb: str) -> bool:
-    """Whether ``noun`` (one word) is the doer noun of ``verb`` ("copier" of "copy")."""
-    noun, verb = language.fold(noun), language.fold(verb)
+def _verbs_of(noun: str) -> tuple[str, ...]:
+    """The verbs ``noun`` (folded) could be the doer noun of, by English morphology: its stem
+    before "-er"/"-or"/"-r", as said, with a dropped "e", "i" for "y", or the last consonant
+    doubled before "-er" undone."""
+    found: list[str] = []
     for suffix in _SUFFIXES:
         if not noun.endswith(suffix) or len(noun) <= len(suffix) + 1:
             continue
         stem = noun[: -len(suffix)]
-        if stem == verb or stem + "e" == verb:
-            return True  # "printer", "laminator" (laminat + e)
-        if stem.endswith("i") and stem[:-1] + "y" == verb:
-            return True  # "copier"
-        if len(stem) > 2 and stem[-1] == stem[-2] and stem[:-1] == verb:
-            return True  # "scanner", "shredder"
-    return False
+        found += [stem, stem + "e"]  # "printer", "laminator" (laminat + e)
+        if stem.endswith("i"):
+            found.append(stem[:-1] + "y")  # "copier"
+        if suffix == "er" and len(stem) > 2 and stem[-1] == stem[-2]:
+            found.append(stem[:-1])  # "scanner", "shredder"
+    return tuple(found)
+
+
+def is_doer_noun(noun: str, verb: str) -> bool:
+    """Whether ``noun`` (one word) is the doer noun of ``verb`` ("copier" of "copy")."""
+    return language.fold(verb) in _verbs_of(language.fold(noun))
+
+
+def is_made_doer_noun(word: str) -> bool:
+    """Whether ``word``, a lower-case word the dictionary lacks, is a doer noun made from a
+    verb it knows ("distributor", "resellers"), and in use in writing: a common noun, never a
+    name said in lower case ("celestia", "zhang")."""
+    w = language.fold(word)
+    if not w.isalpha() or language.lemmas(w) or not language.is_word_form(w):
+        return False
+    one = w[:-1] if w.endswith("s") else w  # "distributors"
+    return any(v in language.lemmas(v).get("VERB", ()) for v in _verbs_of(one))

@@ -8,7 +8,8 @@ I courier it to? Please give me the address.") rather than send the thing "to th
 The phrase is a role when, past courtesy ("pls"), it is a determiner or a possessive ("the",
 "my", "our") and then only lower-case words the dictionary knows as nouns or adjectives, the
 last a noun that names no place ("the importer", "our new accountant", "the other side's
-solicitors"). A capital (a proper name: "Bodegas Ruiz", "Westgate branch", "the Celestia"), a
+solicitors"; "the distributor", a doer noun the dictionary lacks made from a verb it knows).
+A capital (a proper name: "Bodegas Ruiz", "Westgate branch", "the Celestia"), a
 digit (an address: "12 High Street"), a word the dictionary lacks (a name said in lower case),
 any other word ("the supplier *in* Madrid", "the lawyer *at* 4 Quay Street") or a place head
 ("the client's *office*", "the central *library*", "the *bank*") makes it where, sent as
@@ -19,6 +20,7 @@ from __future__ import annotations
 
 import re
 
+from assistantx.agents.symbolic.reading.doer_nouns import is_made_doer_noun
 from assistantx.core import english, language
 
 # The head nouns that name a place, an establishment or a building, never a person: where a
@@ -58,11 +60,14 @@ def _said_words(phrase: str) -> list[str]:
 def _common(word: str) -> bool:
     """Whether ``word`` is a common word of a noun phrase: lower case (no proper name), no
     preposition, and known to the dictionary as a noun, an adjective or a participle that
-    describes ("the *shipping* agent", "the *forwarding* firm")."""
+    describes ("the *shipping* agent", "the *forwarding* firm"), or a doer noun it lacks made
+    from a verb it knows ("the *distributor*")."""
     if not word.islower() or word in _JOINS:
         return False
     parts = language.lemmas(word)
-    return "NOUN" in parts or "ADJ" in parts or language.is_present_participle(word)
+    if "NOUN" in parts or "ADJ" in parts or language.is_present_participle(word):
+        return True
+    return is_made_doer_noun(word)
 
 
 def names_only_a_role(phrase: str) -> bool:
@@ -76,7 +81,7 @@ def names_only_a_role(phrase: str) -> bool:
     if not all(_common(w) for w in rest):
         return False  # a name, a digit, a preposition: "the supplier in Madrid"
     head = rest[-1]
-    if not language.is_noun(head):
+    if not (language.is_noun(head) or is_made_doer_noun(head)):
         return False
     lemmas = set(language.lemmas(head).get("NOUN", ())) | {head}
     if said[0].lower() in _SOMEONES:
