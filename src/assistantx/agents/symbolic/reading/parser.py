@@ -171,6 +171,7 @@ from assistantx.agents.symbolic.reading.unlisted_thing import (
     left_behind,
     unlisted_thing,
     variety_of,
+    vessel_of,
 )
 from assistantx.agents.symbolic.reading.unnamed_carried import unnamed_carried
 from assistantx.agents.symbolic.reading.used_up import declined_use_up
@@ -480,6 +481,8 @@ class InstructionParser:
             if which is None and unknown is None and unlisted is not None:
                 # "a flat white from the coffee machine": a variety of the one thing it makes
                 variety = variety_of(self.office, mentions, unlisted[1])
+                # "a flask of the dewar": a vessel the office lacks, of what the dewar makes
+                variety = variety or vessel_of(self.office, mentions, unlisted[1])
                 said = with_choice(request, *variety) if variety is not None else None
                 # "a blade from the cupboard" where it keeps scalpel blades: those
                 headed = headed_supply(self.office, *unlisted) if said is None else None

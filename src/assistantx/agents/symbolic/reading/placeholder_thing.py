@@ -11,6 +11,12 @@ names what the place makes and keeps (the office's own data) to help the answer,
 the placeholder's place in the request ("the thing" → "my lunch": "bring me my lunch from the
 fridge").
 
+Counted or qualified ("a few bits", "some stuff", "a couple of things", "the usual bits",
+"some odds and ends"), a vague word points at no one thing, but said of a place that makes or
+keeps several things for anyone (a store's drills, tape, sandpaper) it still does not say
+which: that is asked the same way. Of a place with one such thing ("some stuff from the
+stationery cupboard" that makes notepads) it is read as before.
+
 "something from the vending machine" (indefinite: any of what it makes, ``something_from``)
 and "the printout from the printer" (a thing named) are no placeholder, and "the thing I left
 at the printer" is asked by ``unlisted_thing.left_behind``.
@@ -30,6 +36,9 @@ _PLACEHOLDERS = (english.words("vague_things") | english.words("placeholder_noun
     "whatever"  # "whatever from the vending machine": any, said as the indefinite is
 }
 _POINTING = english.words("placeholder_determiners")
+_QUANTITIES = english.words("vague_quantities")
+_PHRASES = tuple(tuple(p.split()) for p in english.entries("vague_thing_phrases"))
+_PHRASE_ENDS = frozenset(p[-1] for p in _PHRASES)
 _SOURCES = english.words("placeholder_sources")
 _OF = frozenset({"of"})  # "out of the fridge"
 _PLACE_OPENERS = frozenset({"the", "my", "our", "that", "this"})
@@ -39,7 +48,8 @@ _PLACES = frozenset({"facility", "place"})
 def says_a_placeholder(text: str) -> bool:
     """Whether ``text`` has a placeholder noun at all: the cheap test before the lexicon reads
     it for ``placeholder_question`` (nearly every request has none)."""
-    return not _PLACEHOLDERS.isdisjoint(re.findall(r"[a-z]+", text.lower()))
+    said = re.findall(r"[a-z]+", text.lower())
+    return not (_PLACEHOLDERS.isdisjoint(said) and _PHRASE_ENDS.isdisjoint(said))
 
 
 def placeholder_question(office: Office, lexed: Lexed) -> str | None:
@@ -48,15 +58,48 @@ def placeholder_question(office: Office, lexed: Lexed) -> str | None:
     the message has none."""
     tokens = lexed.tokens
     words = [t.word for t in tokens]
-    for n, word in enumerate(words):
-        if word not in _PLACEHOLDERS or n == 0 or words[n - 1] not in _POINTING:
+    for n in range(len(words)):
+        noun = _noun_start(words, n)
+        if noun is None or noun == 0:
+            continue
+        start = noun
+        while start > 0 and words[start - 1] in _QUANTITIES and not tokens[start].after_pause:
+            start -= 1  # "a couple of things", "the usual bits"
+        pointed = words[noun - 1] in _POINTING
+        if start == noun and not pointed:
             continue
         place = _place_after(lexed.mentions, words, n + 1)
         if place is None:
             continue
-        said = f"{tokens[n - 1].text} {tokens[n].text}"
+        if not pointed and len(_things_there(office, place)) < 2:
+            continue  # "some stuff from the vending machine": its one thing, as before
+        said = " ".join(t.text for t in tokens[start if not pointed else noun - 1 : n + 1])
         return f"{ASKED}{said}{ASKED_END} {_what_is_there(office, place)} Could you tell me?"
     return None
+
+
+def _noun_start(words: Sequence[str], n: int) -> int | None:
+    """Where the placeholder that ends at ``n`` begins: ``n`` for a word ("stuff"), the first
+    word of a phrase ("odds and ends"); None where none ends there."""
+    if words[n] in _PLACEHOLDERS:
+        return n
+    for phrase in _PHRASES:
+        k = n + 1 - len(phrase)
+        if k >= 0 and tuple(words[k : n + 1]) == phrase:
+            return k
+    return None
+
+
+def _things_there(office: Office, place: Mention) -> set[str]:
+    """The item types the facility (or the facilities of the room) makes or keeps for
+    anyone: its own supplies and products, never a colleague's belonging kept there."""
+    facilities = (
+        [office.facility(place.ids[0])]
+        if place.kind == "facility"
+        else [f for f in office.facilities if f.location == place.ids[0]]
+    )
+    made = {t for f in facilities for t in f.products}
+    return made | {s.type for f in facilities for s in f.supplies}
 
 
 def _place_after(mentions: Sequence[Mention], words: Sequence[str], at: int) -> Mention | None:

@@ -19,6 +19,8 @@ from assistantx.core.office import Office
 _COMMON = english.words("common")
 _FROM_WORDS = frozenset({"from", "at", "in", "of", "out"})
 _VAGUE = english.words("vague_things")
+_VESSELS = english.words("vessel_nouns")
+_POURABLE = english.words("pourable_words")
 _LEFT = english.words("left_behind_verbs")
 _LEFT_SUBJECTS = english.words("left_behind_subjects")
 _RELATIVES = frozenset({"that", "which"})
@@ -133,6 +135,41 @@ def variety_of(
         if _same_kind(" ".join(said[n:]), (product.name, *product.synonyms)):
             return tuple(said[n:]), product.name
     return None
+
+
+def vessel_of(
+    office: Office, mentions: Sequence[Mention], facility_id: str
+) -> tuple[tuple[str, ...], str] | None:
+    """ "fill me a wash bottle of milli-q", "a jug from the urn", "a flask of the dewar": a
+    vessel the office does not list (a word no name reads), said of or from a facility that
+    makes one product to be poured (one of its names has a word of ``pourable_words``) and
+    keeps nothing, is asked for that product: the vessel's words and the product's name, so
+    the request is read as for the product. A facility that makes nothing, or several things,
+    or things that are not poured (printouts) is no such source; the vessel is declined."""
+    facility = office.facility(facility_id)
+    if len(facility.products) != 1 or facility.supplies:
+        return None
+    product = office.item_type(facility.products[0])
+    names = (product.name, *product.synonyms)
+    if not any(w in _POURABLE for name in names for w in language.words(name)):
+        return None
+    at = next(
+        (n for n, m in enumerate(mentions) if m.kind == "facility" and m.ids == (facility_id,)),
+        None,
+    )
+    if at is None:
+        return None
+    k = at - 1
+    while k >= 0 and mentions[k].kind == "word" and mentions[k].ids[0] in _FROM_WORDS:
+        k -= 1
+    if k == at - 1 or k < 0 or not _plain_word(mentions[k]):
+        return None
+    if mentions[k].ids[0] not in _VESSELS:
+        return None
+    said = [mentions[k].ids[0]]
+    if k > 0 and _plain_word(mentions[k - 1]):  # "a *wash* bottle"
+        said.insert(0, mentions[k - 1].ids[0])
+    return tuple(said), product.name
 
 
 def _plain_word(m: Mention) -> bool:
