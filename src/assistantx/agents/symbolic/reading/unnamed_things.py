@@ -135,7 +135,7 @@ def _joined_thing(
         if end < 0 or not _next(mentions, k, end) or tokens[end].word != _AND:
             return None
         k, end = k + 1, mentions[k].end
-        said = _thing_said(mentions, tokens, k, end, me)
+        said = _thing_said(mentions, tokens, k, end, me, joined=True)
         if said is None:
             continue  # "a stapler and scissors": known too, or none; on to what follows
         last = max(_phrase_end(tokens, end), said[2])
@@ -194,7 +194,13 @@ def _next(mentions: Sequence[Mention], k: int, end: int) -> bool:
 
 
 def _thing_said(
-    mentions: Sequence[Mention], tokens: Sequence[Token], k: int, end: int, me: str
+    mentions: Sequence[Mention],
+    tokens: Sequence[Token],
+    k: int,
+    end: int,
+    me: str,
+    *,
+    joined: bool = False,
 ) -> Said | None:
     """The phrase "my/Grace's/a/the [modifier] noun" from the token ``end`` (``mentions[k]``
     on) whose noun no name of the office reads, whose it says (None: nobody's), and the token
@@ -225,9 +231,10 @@ def _thing_said(
         return None  # nothing said, or too long a phrase to be one thing's name
     head = run[-1]
     noun = tokens[head.start].word
-    # a word no dictionary knows after an article ("some paperclips", "a hairnet") is a
-    # thing's name all the same: one the office does not have
-    unknown = not language.lemmas(noun)
+    # a word no dictionary knows, joined by "and" to a thing asked for ("and some
+    # paperclips"), is a thing's name all the same; alone after the verb it may be a file's
+    # form ("send Omar the pdf of my invoice")
+    unknown = joined and not language.lemmas(noun)
     if not (language.is_noun(noun) or unknown) or tokens[head.start].corrected or whose == "":
         return None
     named = " ".join(tokens[m.start].word for m in run)
