@@ -1,9 +1,11 @@
-"""The speaker's own thing left outside the office, said as a fact ("my phone's on 2% and i
-left my cable at home", round 216's default-office class, read after its measure), is met
-with an offer of one a colleague could lend or a cupboard keeps ("Shall I bring you one?") and
-comes on a yes; it was only noted ("your data cable is out of use. I did nothing."). Nothing
-moves on the statement alone; a thing left at a place in the office, a thing nobody lends (a
-lunch) and a request beside it are read as before."""
+"""The speaker's own thing left outside the office, said as a fact beside why it is wanted
+now ("my phone's on 2% and i left my cable at home", round 216's default-office class, read
+after its measure), is met with an offer of one a colleague could lend or a cupboard keeps
+("Shall I bring you one?") and comes on a yes; it was only noted ("your data cable is out of
+use. I did nothing."). Nothing moves on the statement alone; said alone or after an
+exclamation it is news (round 40's "gosh, I left my stapler at home"), and a thing left at a
+place in the office, a thing nobody lends (a lunch) and a request beside it are read as
+before."""
 
 from __future__ import annotations
 
@@ -20,10 +22,9 @@ _answered = answered_reader(load_office, "hu")
     "text",
     [
         "my phone's on 2% and i left my cable at home",
-        "i left my cable at home",
-        "I forgot my cable",
         "laptop nearly dead and I forgot my cable again",
-        "ugh i left my cable in the car",
+        "my phone is dying and i left my cable in the car",
+        "got a call in five and i forgot my cable",
     ],
 )
 def test_a_thing_left_behind_is_offered(text: str) -> None:
@@ -44,6 +45,10 @@ def test_the_offer_brings_one_on_a_yes() -> None:
 @pytest.mark.parametrize(
     ("text", "said"),
     [
+        # news: nothing said of why it is wanted now
+        ("i left my cable at home", "your data cable is out of use"),
+        ("I forgot my cable", "your data cable is out of use"),
+        ("ugh i left my cable in the car", "Noted."),
         # where it is in the office, not a lack
         ("i left my cable at my desk", "your data cable is out of use"),
         ("i left my stapler in the meeting room", "your stapler is out of use"),

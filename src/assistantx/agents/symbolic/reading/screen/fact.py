@@ -12,7 +12,11 @@ from assistantx.agents.symbolic.reading.screen.elsewhere import (
 )
 from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
-from assistantx.agents.symbolic.reading.screen.left_behind import left_behind, lend_offer
+from assistantx.agents.symbolic.reading.screen.left_behind import (
+    left_behind,
+    lend_offer,
+    situation_said,
+)
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
@@ -123,7 +127,8 @@ def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
     if not (lost and before[:1] == ["i"]) and not (broken and not before) and not behind:
         return None
     found = _own_out_of_use(terms, piece, items[0].ids[0], requester)
-    offered = lend_offer(terms, items[0].ids[0], requester) if behind else None
+    needed = behind and situation_said(before)
+    offered = lend_offer(terms, items[0].ids[0], requester) if needed else None
     if offered is None:
         return found
     known, offer, shall = offered

@@ -1,10 +1,10 @@
-"""Left behind: "my phone's on 2% and I left my cable at home", "I forgot my stapler": the
-speaker's own thing is not here, said as a fact. With nothing asked beside it, a thing a
+"""Left behind: "my phone's on 2% and I left my cable at home": the speaker's own thing is
+not here, said as a fact beside why it is wanted now. With nothing asked beside it, a thing a
 colleague could lend or a cupboard keeps is offered ("As far as I know, Dang Hao and Zhou Yan
 have a data cable. Shall I bring you one?"), never fetched on the statement alone and never
-only noted: the speaker said what they lack. A thing nobody lends (a lunch), or one left at
-a place in the office ("I left my stapler in the meeting room": where it is), is noted as
-before."""
+only noted. Said alone ("I forgot my cable", "gosh, I left my stapler at home") it is news,
+noted as before; so is a thing nobody lends (a lunch), or one left at a place in the office
+("I left my stapler in the meeting room": where it is)."""
 
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ _LEFT = english.words("left_behind_verbs") - {"dropped", "put"}
 _SUBJECTS = english.words("left_behind_subjects")
 _OUTSIDE = english.words("home_nouns") | english.words("outside_containers")
 _AT = english.words("lack_place_openers") | {"on"}
+_JOINS = frozenset({"and", "so", "but"})
 
 
 def left_behind(before: Sequence[str], after: Sequence[str]) -> bool:
@@ -30,6 +31,14 @@ def left_behind(before: Sequence[str], after: Sequence[str]) -> bool:
     if not rest:
         return True
     return rest[0] in _AT and any(w in _OUTSIDE for w in rest[1:4])
+
+
+def situation_said(before: Sequence[str]) -> bool:
+    """Whether a clause of the speaker's situation stands before "and I left ..." ("my
+    phone's on 2% and I left my cable at home", "laptop nearly dead and I forgot my cable"):
+    why the thing is wanted now. Alone, or after an exclamation or a name ("gosh, I left my
+    stapler at home", "Dang, ..."), it is news, answered in words."""
+    return len(before) >= 5 and before[-3] in _JOINS
 
 
 def lend_offer(terms: Terms, item: str, requester: str) -> tuple[str, str, str] | None:
