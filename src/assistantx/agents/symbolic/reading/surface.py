@@ -115,6 +115,7 @@ from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_ver
 from assistantx.agents.symbolic.reading.withdrawn_thing import withdrawn_thing
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_said_as_product import WorkSaidAsProduct
+from assistantx.agents.symbolic.reading.worked_room import WorkedRoom
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
@@ -186,6 +187,8 @@ class Surface:
             (loc.name for loc in office.locations),
             {*terms.thing_words, *(w for name in lex.facilities for w in name.split())},
         )
+        # "get that done in the centrifuge room": the room's one machine that works on things
+        self.worked_room = WorkedRoom(office)
         # the forms of the office's services and colleagues' work ("photocopied", "signed")
         self.work_forms = terms.service_verbs | {
             f for w in PERSON_WORK for f in language.verb_forms(w)
@@ -399,6 +402,9 @@ STEPS: tuple[Step, ...] = (
     # a room said bare by the first word of its name, after "to": the room
     # e.g. "take the parcel down to meeting"
     Step("bare_rooms", lambda s, t, a: s.bare_room(t)),
+    # a room named where work already spoken of is done: the room's one working machine
+    # e.g. "my badge isnt laminated, can you get it done in the badge office"
+    Step("worked_rooms", lambda s, t, a: s.worked_room(t)),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),

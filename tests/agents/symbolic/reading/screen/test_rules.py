@@ -40,6 +40,7 @@ def test_the_rules_in_priority_order() -> None:
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
         "statement",  # what the speaker will do with the thing asked for ("..., need to eat it")
         "unsupported",  # a facility asked for work it does not do ("shred it in the printer")
+        "unsupported",  # a test the office lacks, asked by a generic verb ("run an NMR on it")
         "unsupported",  # a service's verb said of a drink the office makes ("shred my coffee")
         "destructive",
         "unsupported",  # a send to an account outside ("to my personal gmail")

@@ -75,6 +75,7 @@ from assistantx.agents.symbolic.reading.screen.statement import statement
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.screen.thanks import thanks
 from assistantx.agents.symbolic.reading.screen.timed_event import timed_event
+from assistantx.agents.symbolic.reading.screen.unknown_test import unknown_test
 from assistantx.agents.symbolic.reading.screen.unknown_work import unknown_work
 from assistantx.agents.symbolic.reading.screen.unoffered_means import unoffered_means
 from assistantx.agents.symbolic.reading.screen.unsafe import unsafe
@@ -145,6 +146,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", own_use),
     # "shred my stapler in the printer": a facility asked for work it does not do
     ("unsupported", wrong_instrument),
+    # "run an NMR on my sample" where the office has no NMR: never its one analysis run
+    ("unsupported", unknown_test),
     # "shred my coffee": a service's verb said of a drink the office makes, never one made
     ("unsupported", wrong_input),
     ("destructive", destructive),

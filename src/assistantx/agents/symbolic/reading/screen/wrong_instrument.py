@@ -87,7 +87,7 @@ def wrong_instrument(terms: Terms, msg: Message, piece: Piece, requester: str) -
             piece,
             f"the {facility.name} asked for work it does not do: {verb}",
             message=(
-                f"{_does(terms.office, facility)}; I can't {said} in it, and I won't make "
+                f"{does(terms.office, facility)}; I can't {said} in it, and I won't make "
                 "or bring something else instead. I did nothing."
             ),
         )
@@ -138,8 +138,9 @@ def _asks_work(terms: Terms, forms: set[str]) -> bool:
     return not (forms & terms.lex.cue_words or forms & terms.office_words or forms & DATA_VERBS)
 
 
-def _does(office: Office, facility: Facility) -> str:
-    """What the facility does, said: "The microwave can heat lunches"."""
+def does(office: Office, facility: Facility) -> str:
+    """What the facility does, said: "The microwave can heat lunches" (also the office's
+    machines listed where a test it lacks is asked for: ``unknown_test``)."""
     said = []
     for op_id in facility.operations:
         op = office.operation(op_id)
