@@ -639,6 +639,35 @@ def _outsider_before(tokens: Sequence[Token], at: int) -> bool:
     return False
 
 
+def _outsider_subject(tokens: Sequence[Token], at: int) -> bool:
+    """Whether the possessive at ``at`` ("their") is said of the outsider who opens its
+    clause as the subject of a want or need right before it: "a visitor needs their pass
+    signed off", "customer needs their receipt stamped", "my patient needs their form
+    copied". The outsider is named by a kind of person, after a determiner or bare."""
+    start = max((k for k in range(at) if tokens[k].opens or tokens[k].after_pause), default=0)
+    k = start + 1 if tokens[start].word in _OUTSIDER_DETERMINERS else start
+    if k >= at:
+        return False
+    word = tokens[k].word
+    singular = word[:-1] if word.endswith("s") else word
+    if word not in _OUTSIDER_NOUNS and singular not in _OUTSIDER_NOUNS:
+        return False
+    between = [t.word for t in tokens[k + 1 : at]]
+    return 0 < len(between) <= _WANT_NEAR and between[-1] in _OUTSIDER_WANTS
+
+
+def _outsiders_in_hand(tokens: Sequence[Token], at: int, end: int) -> bool:
+    """Whether "their" at ``at`` is the outsider's who opens its clause (``_outsider_subject``)
+    and the thing it owns, ending at ``end``, is to be worked on: a participle of the work
+    after it ("their pass signed off", "their form copied") or what it should bear ("their
+    receipt with the stamp on it"); never a thing wanted back ("their stapler back")."""
+    if tokens[at].word != "their" or end >= len(tokens):
+        return False
+    after = tokens[end].word
+    worked = after == "with" or language.is_past_participle(after)
+    return worked and _outsider_subject(tokens, at)
+
+
 def owner_of(
     tokens: Sequence[Token],
     ms: list[Mention],
@@ -664,6 +693,10 @@ def owner_of(
             for_theirs = prev_word(tokens, p.start) == "for" and (
                 outsider_said or points_to_outsider(tokens, p.start)
             )
+            if not others and _outsiders_in_hand(tokens, p.start, m.end):
+                # "a visitor needs their pass signed off": the outsider's thing, to be worked
+                # on, is in the speaker's hands (no colleague's to ask about)
+                return requester
             if not others and (for_theirs or _outsider_before(tokens, p.start)):
                 # "..., the client wants a copy for their files", "Mrs Okafor is coming in
                 # at 3. I need a mount for her etching": theirs, an outsider's, what the

@@ -97,7 +97,7 @@ from assistantx.agents.symbolic.reading.her_or_hers import with_her_or_you
 from assistantx.agents.symbolic.reading.item_answered import with_item_answered
 from assistantx.agents.symbolic.reading.keepers_place import from_keepers_place, keepers_places
 from assistantx.agents.symbolic.reading.kept_roles import contradicts, said_roles
-from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Reading
+from assistantx.agents.symbolic.reading.lexicon import COMMON, Lexed, Lexicon, Mention, Reading
 from assistantx.agents.symbolic.reading.machine_choice import (
     machine_choices,
     service_answered,
@@ -151,6 +151,7 @@ from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judg
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
+from assistantx.agents.symbolic.reading.screen.recipients_doing import RECIPIENTS_DOING
 from assistantx.agents.symbolic.reading.several_owners import (
     any_owner_meant,
     unowned_mine,
@@ -313,7 +314,7 @@ class InstructionParser:
         # beside it ("... tea keeps getting spilled on it") is context, and must not hide
         # that the request's own thing was guessed (the badge was laminated unasked)
         left = self.lex.read(request.text).mentions
-        if any(m.guessed for m in (*spoken.msg.lexed.mentions, *left)):
+        if any(m.guessed for m in (*_said_mentions(spoken), *left)):
             # "shred my questionnaire" (the requester's words, not a rewrite of the screen's):
             # "Shall I shred your document for you?"
             screened.confirm = True
@@ -901,6 +902,17 @@ _ME = frozenset(
 _SELF = frozenset({"me", "myself", "mine"})
 # "I do.", "I will": the requester answering who as the subject of the question's verb
 _I_DO = (("i", "do"), ("i", "will"))
+
+
+def _said_mentions(spoken: Spoken) -> tuple[Mention, ...]:
+    """The message's mentions a guess of the request's thing is looked for in: the whole
+    message's, or, where the screen set aside what the colleague given to will do ("...,
+    she needs to check my results first"), the other pieces' (a thing that piece names is
+    theirs to work on, never the request's, so no guess of it is confirmed)."""
+    aside = [f.piece for f in spoken.findings if f.meaning == RECIPIENTS_DOING]
+    if not aside:
+        return spoken.msg.lexed.mentions
+    return tuple(m for p in spoken.msg.pieces if p not in aside for m in p.lexed.mentions)
 
 
 def _each_errand_once(frame: TaskFrame) -> TaskFrame:

@@ -20,6 +20,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # the reason for a request ("..., need it for the report")
         "statement",  # a reason naming a service as its topic ("..., need the laundry numbers")
         "statement",  # why the colleague a request names needs it ("..., he needs it for his file")
+        "statement",  # what the colleague given to will do ("..., she needs to check my results")
         "statement",  # what someone wants to know ("a visitor wants to know the coffee prices")
         "statement",  # the things to use a tool asked for on ("..., a pile of letters to seal")
         "statement",  # a count of things, why it is asked ("..., like 20 letters going out")
@@ -34,6 +35,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # how a question beside it is meant ("just curious", "no rush")
         "statement",  # a moment asked for ("give me a min to find another", "hang on a tick")
         "statement",  # an event and its time after a request ("..., ground run in 10")
+        "statement",  # the speaker's own plan, told ("might heat my soup a bit later")
         "condition",
         "statement",  # what a told state rules out ("printer's down, so no printing")
         "negated",

@@ -12,13 +12,19 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english
 
 _TAGS = tuple(tuple(entry.split()) for entry in english.entries("fyi_tags"))
+# the tags that close a piece ("btw" is a filler where it opens one, "btw can you ...")
+_CLOSING = tuple(tuple(entry.split()) for entry in english.entries("fyi_closing_tags"))
 _FILLERS = frozenset({"oh", "and", "but", "ok", "okay", "btw", "also", "thanks", "cheers"})
 
 
 def _tag(words: list[str]) -> tuple[str, ...] | None:
-    """The tag a piece opens with, if any ("fyi", "just so you know")."""
+    """The tag a piece opens with, if any ("fyi", "just so you know"), or closes with ("...
+    start at 9 this year btw")."""
     w = [x for x in words if x not in _FILLERS]
-    return next((t for t in _TAGS if tuple(w[: len(t)]) == t), None)
+    opening = next((t for t in _TAGS if tuple(w[: len(t)]) == t), None)
+    if opening is not None:
+        return opening
+    return next((t for t in _CLOSING if len(words) > len(t) and tuple(words[-len(t) :]) == t), None)
 
 
 def _only_a_tag(piece: Piece) -> bool:

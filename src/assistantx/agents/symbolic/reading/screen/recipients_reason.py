@@ -63,6 +63,17 @@ def _party(piece: Piece) -> bool:
     return any(_not_source(tokens, m) for m in mentions if m.kind == "person")
 
 
+def party_ids(piece: Piece) -> set[str]:
+    """The colleagues a request names who are no owner or source of the thing (``_party``),
+    each named as one person."""
+    tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
+    return {
+        m.ids[0]
+        for m in mentions
+        if m.kind == "person" and len(m.ids) == 1 and _not_source(tokens, m)
+    }
+
+
 def _not_source(tokens: tuple[Token, ...], m: Mention) -> bool:
     if m.possessive:
         return False

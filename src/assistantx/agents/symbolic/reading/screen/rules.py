@@ -48,6 +48,7 @@ from assistantx.agents.symbolic.reading.screen.outside_place import outside_plac
 from assistantx.agents.symbolic.reading.screen.outside_vehicle import outside_vehicle
 from assistantx.agents.symbolic.reading.screen.outsider import outsider
 from assistantx.agents.symbolic.reading.screen.own_doing import own_doing
+from assistantx.agents.symbolic.reading.screen.own_intention import own_intention
 from assistantx.agents.symbolic.reading.screen.own_need import own_need
 from assistantx.agents.symbolic.reading.screen.own_use import own_use
 from assistantx.agents.symbolic.reading.screen.owned_head import several_owned_heads
@@ -65,6 +66,7 @@ from assistantx.agents.symbolic.reading.screen.purpose import (
     tool_use,
 )
 from assistantx.agents.symbolic.reading.screen.question import question
+from assistantx.agents.symbolic.reading.screen.recipients_doing import recipients_doing
 from assistantx.agents.symbolic.reading.screen.recipients_reason import recipients_reason
 from assistantx.agents.symbolic.reading.screen.ruled_out_place import ruled_out_place
 from assistantx.agents.symbolic.reading.screen.service import unsupported
@@ -109,6 +111,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", service_word_reason),
     # "..., he needs it for his file": why the colleague the request names needs it
     ("statement", recipients_reason),
+    # "..., she needs to check my results first": what the colleague given to will do
+    ("statement", recipients_doing),
     # what someone else wants to know ("a visitor wants to know the coffee prices"): a topic,
     # never a thing asked for
     ("statement", need_to_know),
@@ -136,6 +140,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "..., ground run in 10": an event's name and its time after a request, never a
     # service asked for (a modifier on a service's verb would decline it below)
     ("statement", timed_event),
+    # "might heat my soup a bit later", "think I'll print my slides tomorrow": the speaker's
+    # own plan, told, before its verb is read as work asked of me
+    ("statement", own_intention),
     ("condition", condition),
     # "printer's down till tomorrow, so no printing": what the state rules out, told
     ("statement", nothing_follows),

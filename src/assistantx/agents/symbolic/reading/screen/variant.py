@@ -65,6 +65,8 @@ _STOPS = (
     | english.words("instrument_prepositions")
     | english.words("time_prepositions")
     | english.words("clause_breaks")
+    # "three copies": how many, never a kind of copy
+    | english.words("number_words")
     | {"of", "as", "then", "one", "ones", "up", "down", "back", "away", "over", "around"}
 )
 _QUALITY_ANYWAY = english.words("replacement_words") | english.words("service_participles")

@@ -25,11 +25,18 @@ _WILL = frozenset({"will", "gonna"})
 _CONTRACTED_WILL = re.compile(r"\w['’]ll\b", re.IGNORECASE)
 # the withdrawal heads that correct what was just said ("no wait", "actually no")
 _CORRECTING = frozenset({"no", "wait"})
+_NUMBERS = english.words("number_words")
+_COUNT_OPENERS = english.words("count_openers")
+_COUNT_SAID_AGAIN = english.words("count_said_again")
 # a stop (or "...") between a request and a withdrawal: said as second thoughts
 _SENTENCE_BREAK = re.compile(r"[.!?;…\n]")
 
 
 def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if _count_again(msg, piece):
+        # "buy me two bags of compost, no wait, just one is fine": the count is corrected, the
+        # request stands (it carries no count of its own to change)
+        return Finding("statement", piece, "the count said again: the request stands")
     if _detail_of_the_request(terms, msg, piece):
         # "get me a coffee, and don't worry about the sugar": what the errand may leave out
         return Finding("statement", piece, "what the request may go without, context only")
@@ -66,6 +73,33 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         # of the withdrawn request, kept; a need said of it is the reason, not a new errand
         return Finding("withdrawn", piece, "the reason the request is withdrawn: still needed")
     return None
+
+
+def _count(words: list[str]) -> bool:
+    """ "just one is fine", "actually two is enough", "make it 3": a number and only words
+    about it (no thing, no verb of a new errand)."""
+    said = [w for w in words if w not in _COUNT_OPENERS]
+    return (
+        bool(said)
+        and (said[0] in _NUMBERS or said[0].isdigit())
+        and all(w in _COUNT_SAID_AGAIN for w in said[1:])
+    )
+
+
+def _count_again(msg: Message, piece: Piece) -> bool:
+    """A count said again after a request: the piece is one ("no wait, just one is fine"),
+    or it opens a correction whose next piece is one ("..., no wait, | just one is fine")."""
+    if not msg.asked_before(piece) or piece.asks:
+        return False
+    said = content(without_fillers(piece.words))
+    head = next((h for h in _WITHDRAW_HEADS if tuple(said[: len(h)]) == h), None)
+    if head is not None and not set(head) & _CORRECTING:
+        return False  # "never mind, just one": withdrawn, whatever follows
+    rest = said[len(head) :] if head is not None else said
+    if rest:
+        return _count(rest)
+    after = next((p for p in msg.pieces if p.start > piece.start), None)
+    return head is not None and after is not None and _count(after.words)
 
 
 def _detail_of_the_request(terms: Terms, msg: Message, piece: Piece) -> bool:
