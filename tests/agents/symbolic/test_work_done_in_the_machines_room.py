@@ -80,3 +80,32 @@ def test_the_first_clause_alone_is_a_statement() -> None:
 def test_nothing_before_it_is_asked() -> None:
     frame = _lab("can you get it done in the centrifuge room")
     assert not frame.tasks and frame.question is not None, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "operation"),
+    [
+        # the machine named by the last word of its name ("the booth" of the "spray booth",
+        # round 221's class)
+        (
+            "the curtain for scene 3 isnt heat sealed yet, can you sort it in the bay",
+            "curtain",
+            "seal",
+        ),
+        ("the curtain isnt heat sealed yet, can you get it done at the bay", "curtain", "seal"),
+    ],
+)
+def test_the_machine_named_by_its_head_word_works_on_it(
+    text: str, item: str, operation: str
+) -> None:
+    frame = _lab(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.kind, t.item, t.owner, t.operation) for t in frame.tasks] == [
+        ("heat", item, "lee", operation)
+    ], frame
+
+
+def test_a_head_word_of_a_machine_that_works_on_nothing_is_no_machine() -> None:
+    # the coffee machine makes coffee from nothing: "the machine" names no work on the sample
+    frame = _lab("my sample hasnt been spun down yet, can you get it done at the machine")
+    assert not any(t.operation == "coffee" for t in frame.tasks), frame

@@ -25,6 +25,12 @@ _ASKED = (
 )
 
 
+def _head(name: str) -> str:
+    """The last word of a name of several words ("booth" of "spray booth"); "" otherwise."""
+    words = name.lower().split()
+    return words[-1] if len(words) > 1 and words[-1].isalpha() else ""
+
+
 class WorkedRoom:
     """The rewrite for one office: its rooms of one working machine, named as the machine."""
 
@@ -38,6 +44,20 @@ class WorkedRoom:
             for loc in office.locations
             if loc.kind != "workstation" and len(machines.get(loc.id, ())) == 1
         }
+        # "get it done in the booth" of the "spray booth": the last word that the names of
+        # one working machine end in (its room's too), when no other facility or place's does
+        heads: dict[str, set[str]] = {}
+        for f in office.facilities:
+            for name in (f.name, *f.synonyms):
+                heads.setdefault(_head(name), set()).add(f.name)
+        for loc in office.locations:
+            held = machines.get(loc.id, ())
+            heads.setdefault(_head(loc.name), set()).add(held[0] if len(held) == 1 else loc.id)
+        working = {n for names in machines.values() for n in names}
+        for head, named in heads.items():
+            only = next(iter(named))
+            if head and len(named) == 1 and only in working:
+                self._machine.setdefault(head, only)
         names = sorted(self._machine, key=len, reverse=True)
         self._pattern = (
             re.compile(
