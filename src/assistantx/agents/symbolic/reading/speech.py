@@ -536,6 +536,8 @@ class SpeechActs:
             return False  # "Ida might need ...": someone else's, read as a need of theirs
         if before[:1] and before[0] in _MODALS and before[1:2] and before[1] in _FOR_SPEAKER:
             before = before[2:]  # "may I borrow ...": a polite question, not a "may" of doubt
+            if before[:1] and before[0] in _POSSIBLY:
+                before = before[1:]  # "could I possibly borrow ...": politer still
         if set(before) & _POSSIBLY and not (set(before) & _YOU):
             return True
         if verb and set(before) <= _SPEAKER_SUBJECTS | _POSSIBLY:

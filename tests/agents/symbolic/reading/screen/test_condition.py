@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from assistantx.agents.symbolic.reading.screen.condition import condition
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from reading.screen._judge import Judge, Read
@@ -35,3 +37,24 @@ def test_a_possible_new_one_is_of_the_item_an_earlier_piece_named(
     alone = message("I might need a new one")  # no item named before it: nothing to offer
     found = condition(terms, alone, alone.pieces[0], "lee")
     assert found is None or not found.offer
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # round 207's class: the adverb after "could I" is politeness, not doubt
+        "could i possibly borrow Zhang's stapler for the handouts?",
+        "could I perhaps borrow a stapler",
+        "may I possibly borrow a pen",
+    ],
+)
+def test_a_polite_possibly_after_could_i_is_a_request_for_now(judged: Judge, text: str) -> None:
+    assert judged(condition, text, "lee") is None
+
+
+@pytest.mark.parametrize("text", ["I might possibly need a stapler", "maybe I'll need a pen"])
+def test_a_possible_need_said_as_such_is_still_for_later(judged: Judge, text: str) -> None:
+    found = judged(condition, text, "lee")
+    assert (
+        found is not None and found.meaning == "a need that may come later, not a request for now"
+    )
