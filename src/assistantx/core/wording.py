@@ -156,6 +156,44 @@ def operation_verb(name: str, made: frozenset[str] = frozenset()) -> str:
     return " ".join(_without_own_object(said)) or name
 
 
+def works_on(op: Operation, things: str) -> str:
+    """What an operation does said with the things it works on, in English whatever its name
+    looks like: "laminate papers", "spin down samples" (a particle stays with its verb),
+    "send samples to the lab", "patch inner tubes" (the name's own object is the thing worked
+    on, said as the office names it), and "run an IR on samples" (the name's own object is
+    the work, kept, and the things come after "on")."""
+    said = op.name.split()
+    made = product_words(op)
+    openers = words("verb_complement_openers")  # "send to the lab": no object of its own
+    cut = next((k for k in range(1, len(said)) if said[k].lower() in openers), len(said))
+    own = said[_own_object_at(said[:cut]) : cut]
+    if own and not _names_what_it_makes(said, made) and not _same_thing(own, things.split()):
+        return f"{op.name} on {things}"
+    particles = words("verb_particles")
+    if len(said) > 1 and all(w.lower() in particles for w in said[1:]):
+        return f"{op.name} {things}"  # "spin down samples"
+    return with_object(op.name, things, made=made)
+
+
+def _same_thing(own: list[str], things: list[str]) -> bool:
+    """Whether an operation name's own object ("a tube") names the things said ("inner
+    tubes"): a noun of one is a noun of the other, one or several."""
+
+    def nouns(said: list[str]) -> set[str]:
+        return {n for w in said for n in (w.lower(), *language.lemmas(w.lower()).get("NOUN", ()))}
+
+    return bool(nouns(own[1:]) & nouns(things))
+
+
+def things_worked_on(name: str) -> str:
+    """An item type's name as the things a machine works on, in general: several of them
+    ("samples", "bills of lading"), as it is where it is plural already or stuff ("papers",
+    "data")."""
+    if language.is_plural_noun(name) or language.is_mass_noun(name):
+        return name
+    return language.head_plural(name) or language.plural(name)
+
+
 def verb_alone(op: Operation) -> str:
     """An operation's verb as said with no object of its own ("things I can courier"): its
     name where that is one word, else its first declared verb, else its name's verb before

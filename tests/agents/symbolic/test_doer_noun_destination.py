@@ -105,6 +105,12 @@ _ASKED = "Please give me the name and address of the place."
         "post my form to the client",
         "ship my parcel over to the supplier",
         "courier my drive back to the lab",
+        # fix59e class 2: an "-ist" noun the dictionary lacks, made from a noun it knows
+        "courier my drive to the stockist",
+        "courier my drive over to our stockists",
+        # ... and those it knows, as before
+        "post my form to the florist",
+        "ship my parcel back to the cellist",
     ],
 )
 def test_a_role_or_a_kind_of_place_is_asked(text: str) -> None:
@@ -123,6 +129,8 @@ def test_a_role_or_a_kind_of_place_is_asked(text: str) -> None:
         ("courier my drive to 12 High Street, Leeds", "12 High Street, Leeds"),
         ("post my form to the Leeds office", "the Leeds office"),
         ("courier my drive to the distributor in Leeds", "the distributor in Leeds"),
+        ("courier my drive to the stockist in Leeds", "the stockist in Leeds"),
+        ("courier my drive to celestia", "celestia"),  # a name said in lower case
         # class 2: a hedged request is still a request
         ("maybe courier my drive to Warner Bros tomorrow?", "Warner Bros"),
         ("might you courier my drive to Harlow Ltd?", "Harlow Ltd"),
@@ -161,6 +169,10 @@ def test_a_colleague_is_asked_in_or_out() -> None:
         ("celestia", False),
         ("harlow", False),
         ("supplier", False),  # the dictionary's own noun, not made here
+        ("stockist", True),  # stock + -ist
+        ("stockists", True),
+        ("kist", False),  # no stem
+        ("zhangist", False),  # a stem no dictionary knows
     ],
 )
 def test_is_made_doer_noun(word: str, made: bool) -> None:
@@ -188,6 +200,7 @@ def test_bare_common_noun(phrase: str, bare: bool) -> None:
         ("our distributors", True),
         ("the reseller pls", True),
         ("the celestia", False),
+        ("the stockist", True),
         ("the pressing plant", False),  # a place head: a kind of place, not a role
     ],
 )

@@ -91,6 +91,7 @@ from assistantx.agents.symbolic.reading.placeholder_thing import (
 )
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
+from assistantx.agents.symbolic.reading.poured_vessel import PouredVessel
 from assistantx.agents.symbolic.reading.problem_remedy import ProblemRemedies
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
 from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
@@ -111,6 +112,7 @@ from assistantx.agents.symbolic.reading.taken_for_service import taken_for_servi
 from assistantx.agents.symbolic.reading.thing_for_thing import ThingForThing
 from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
+from assistantx.agents.symbolic.reading.undone_service import UndoneService
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.withdrawn_thing import withdrawn_thing
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
@@ -170,6 +172,8 @@ class Surface:
         self.is_person = terms.is_person_word  # whether a word names a colleague
         self.steps = STEPS
         self.something_from = SomethingFrom(office)  # "something from the vending machine"
+        # "a mug from the coffee machine": a listed vessel of what the machine pours
+        self.poured_vessel = PouredVessel(office, frozenset(lex.items))
         self.products_listed = ProductsListed(office)  # "copy my document and a printout"
         self.work_as_product = WorkSaidAsProduct(office)  # "print it and take the print-out"
         self.picked_form = PickedForm(office)  # "Wang's file, the paper one": the paper
@@ -189,6 +193,8 @@ class Surface:
         )
         # "get that done in the centrifuge room": the room's one machine that works on things
         self.worked_room = WorkedRoom(office)
+        # "my badge isnt laminated, can you get it done": the work the participle names
+        self.undone_service = UndoneService(office)
         # the forms of the office's services and colleagues' work ("photocopied", "signed")
         self.work_forms = terms.service_verbs | {
             f for w in PERSON_WORK for f in language.verb_forms(w)
@@ -365,6 +371,15 @@ def _remedy(s: Surface, text: str, asked: Asked) -> str | Said:
     return remedy.text
 
 
+def _undone_service(s: Surface, text: str, asked: Asked) -> str | Said:
+    """The work a participle said before "get it done" names, else which is asked (ends the
+    reading)."""
+    text, question = s.undone_service(text)
+    if question is not None:
+        return Said(text, TaskFrame(requester=asked.requester, question=question))
+    return text
+
+
 def _beside_a_thing(s: Surface, text: str, asked: Asked) -> str | Said:
     """A placement beside a colleague's thing: one the robot cannot make, declined."""
     out_of_reach = beside_a_thing(text, s.is_person)
@@ -405,6 +420,10 @@ STEPS: tuple[Step, ...] = (
     # a room named where work already spoken of is done: the room's one working machine
     # e.g. "my badge isnt laminated, can you get it done in the badge office"
     Step("worked_rooms", lambda s, t, a: s.worked_room(t)),
+    # work said not done, then asked by a pro-form: the one operation the participle names,
+    # else which (ends the reading)
+    # e.g. "my badge hasn't been laminated yet, can you get it done"
+    Step("undone_services", _undone_service),
     # which thing is asked, nothing picked (ends the reading)
     # e.g. "bring me the thing from the fridge"
     Step("placeholder", _placeholder),
@@ -606,6 +625,9 @@ STEPS: tuple[Step, ...] = (
         "something_from",
         lambda s, t, a: s.something_from(t),
     ),
+    # a listed vessel of or from a machine of one poured thing: that thing in it
+    # e.g. "a mug from the coffee machine please"
+    Step("poured_vessels", lambda s, t, a: s.poured_vessel(t)),
     # the speaker's sign-on, no party to the request
     # e.g. "Lee here - bring me a pen"
     Step(

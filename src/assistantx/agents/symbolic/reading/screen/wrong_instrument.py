@@ -36,6 +36,7 @@ from assistantx.agents.symbolic.reading.screen.unknown_work import (
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
 from assistantx.core.office import Facility, Office
+from assistantx.core.wording import things_worked_on, works_on
 
 # The words that make a facility the instrument: "in the microwave", "with the printer"
 _BY = frozenset({"in", "into", "inside", "with", "on", "using", "through", "via"})
@@ -145,8 +146,7 @@ def does(office: Office, facility: Facility) -> str:
     for op_id in facility.operations:
         op = office.operation(op_id)
         what = op.name
-        if op.input is not None:
-            name = office.item_type(op.input).name.split()
-            what = f"{what} {' '.join([*name[:-1], language.plural(name[-1])])}"
+        if op.input is not None:  # "laminate papers", "run an IR on samples"
+            what = works_on(op, things_worked_on(office.item_type(op.input).name))
         said.append(what)
     return f"The {facility.name} can {' or '.join(said)}"
