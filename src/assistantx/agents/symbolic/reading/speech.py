@@ -39,7 +39,7 @@ from assistantx.agents.symbolic.reading.declined_more import declines_more
 from assistantx.agents.symbolic.reading.done_passive import reports_done_work
 from assistantx.agents.symbolic.reading.facility_told import facility_told
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
-from assistantx.agents.symbolic.reading.grumble import grumble, grumbled
+from assistantx.agents.symbolic.reading.grumble import grumble, grumbled, wished_better
 from assistantx.agents.symbolic.reading.handed_to_named import handed_to_named
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
@@ -827,6 +827,8 @@ class SpeechActs:
             return False  # "and then the original signed by Dr Rao": a wanted state, asked
         if grumbled(words, self._named):
             return True  # "ugh", "argh Frank": an interjection of annoyance, to a colleague or not
+        if wished_better(w, self._names_person):
+            return True  # "wish i had a stapler that actually worked": a grumble, told
         if declines_more(w, self.lex.items):
             return True  # "no more water for me thanks": the speaker wants none
         if reports_done_work(w, self._asking_verb):
@@ -1213,6 +1215,11 @@ class SpeechActs:
         return any(
             " ".join(w[n : n + k]) in self.lex.items for n in range(len(w)) for k in (1, 2, 3)
         )
+
+    def _names_person(self, w: list[str]) -> bool:
+        """Whether the words name a person of the office (a name, a role)."""
+        mentions = self.lex.scan(self.lex.tokens(" ".join(w)))
+        return any(m.kind == "person" for m in mentions)
 
     def _possessive_name(self, word: str) -> bool:
         """ "franks" from "Frank's": a name of the office with its possessive "s"."""
