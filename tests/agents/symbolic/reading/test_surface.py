@@ -27,6 +27,7 @@ from helpers.music_school import music_school
 ORDER = [
     "pictographs",
     "undotted",
+    "question_preface",
     "hyphened_nouns",
     "group_member",
     "excluded_owners",
@@ -116,6 +117,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 EXAMPLES: dict[str, str] = {
     "pictographs": "bring me a pen and no marker 😩",
     "undotted": "bring the book to Dr. Grace Huang",
+    "question_preface": "frank question: who's got a stapler I could use tomorrow?",
     "hyphened_nouns": "could you bring me a pen for the warm-up drill?",
     "group_member": "bring me a cup please, one of the interns took mine",
     "excluded_owners": "could u bring me a stapler? anyone's but Wang's",
@@ -193,6 +195,7 @@ EXAMPLES: dict[str, str] = {
 EFFECTS: dict[str, tuple[str, str, str]] = {
     "pictographs": ("default", "😩", ""),
     "undotted": ("default", "Dr.", "Dr Grace"),
+    "question_preface": ("default", "frank question:", ""),
     "hyphened_nouns": ("default", "warm-up", "the warmup drill"),
     "group_member": ("default", "one of the interns", "an intern took"),
     "excluded_owners": ("default", "anyone's but", "? not Wang's"),

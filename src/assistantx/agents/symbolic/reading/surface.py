@@ -95,6 +95,7 @@ from assistantx.agents.symbolic.reading.poured_vessel import PouredVessel
 from assistantx.agents.symbolic.reading.problem_remedy import ProblemRemedies
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
 from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
+from assistantx.agents.symbolic.reading.question_preface import without_question_preface
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
 from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
@@ -396,6 +397,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # a preface that announces a question names nobody and asks nothing
+    # e.g. "frank question: who's got a stapler I could use tomorrow?"
+    Step("question_preface", lambda s, t, a: without_question_preface(t)),
     # a verb and its particle hyphened before a noun: one noun, no work asked
     # e.g. "could you bring me a pen for the warm-up drill?"
     Step("hyphened_nouns", lambda s, t, a: hyphened_nouns(t, s.terms.office_words)),
