@@ -965,14 +965,18 @@ class Lexicon:
 
     def _unowned_heads(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "my notes", "Tomas's gel": a head noun read as a type (``head_names``) said as
-        someone's where no one in the office owns one is no guess to make: a plain word."""
+        someone's where no one in the office owns one is no guess to make: a plain word; so is
+        one said as a unit after a number ("150 bar" where a hydrant bar is a thing)."""
         out: list[Mention] = []
         for m in mentions:
             said = " ".join(t.word for t in tokens[m.start : m.end])
             if m.kind == "item" and said in self.head_forms and m.start > 0:
                 before = tokens[m.start - 1]
                 owned = before.possessive or before.word in _OWNED_BY
-                if owned and not self.office.owners_of(m.ids[0]):
+                # "down to 150 bar": a head noun in the singular after a count above one is
+                # a unit the count measures, never that many of the thing ("2 bars" is)
+                measured = before.word.isdigit() and int(before.word) > 1 and not said.endswith("s")
+                if (owned and not self.office.owners_of(m.ids[0])) or measured:
                     m = Mention("word", m.start, m.end, (said,), m.possessive, m.text)
             out.append(m)
         return out

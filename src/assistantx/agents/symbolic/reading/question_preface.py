@@ -2,10 +2,11 @@
 tomorrow?", "quick q - anyone have a calculator ...", "honest question, ...". One or two
 adjectives (words the dictionary knows as such: "frank", "quick", "honest", "random") and a
 noun of asking (``preface_nouns``), then a colon, a dash or a comma, opening the message, a
-sentence or a part after a comma: it names nobody and asks nothing, and is dropped, so what follows is read as if said
-alone. Read as said, the adjective was a colleague's name when one is called so ("Frank"), and
-the question a request made of them now. "Frank, who's got a stapler?" (the comma before the
-noun of asking: Frank addressed) and "Wang question: ..." (no adjective) are left as said."""
+sentence or a part after a comma: it names nobody and asks nothing, and is dropped, so what
+follows is read as if said alone. Read as said, the adjective was a colleague's name when one
+is called so ("Frank"), and the question a request made of them now. "Frank, who's got a
+stapler?" (the comma before the noun of asking: Frank addressed) and "Wang question: ..." (no
+adjective) are left as said."""
 
 from __future__ import annotations
 
