@@ -157,6 +157,9 @@ def test_a_thing_asked_for_at_a_place_that_keeps_none_is_still_asked_about() -> 
         "This invoice needs the office stamp on it before it goes to Acme, could you sort that?",
         "my invoice needs stamping before it goes to Acme",
         "can you stamp my invoice before they go out to Acme",
+        # the speaker's own trip (round 226's class, read after its final measure)
+        "my invoice needs stamping before I head out to Acme's",
+        "can you stamp my invoice before we go to Acme",
     ],
 )
 def test_a_name_in_a_clause_of_a_later_event_is_context(text: str) -> None:

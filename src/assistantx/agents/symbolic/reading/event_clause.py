@@ -4,7 +4,8 @@ the work must be done, by what happens to the thing afterwards, not whom the rob
 to; a name nobody in the office has there is context, not someone to ask about.
 
 The clause opens with a conjunction of time and a pronoun as its subject ("before it", "once
-they"), and the name comes after its "to", with no pause or new sentence between.
+they", "before I head out to Pryce's": the speaker's own trip), and the name comes after its
+"to", with no pause or new sentence between.
 """
 
 from __future__ import annotations
@@ -14,7 +15,8 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading.tokens import Token
 
 _TIME_OPENERS = frozenset({"before", "after", "once", "when", "until", "till"})
-_SUBJECTS = frozenset({"it", "they", "this", "that", "these", "those"})
+# the thing's going, or the speaker's or another's own trip ("before I head out to Pryce's")
+_SUBJECTS = frozenset({"it", "they", "this", "that", "these", "those", "i", "we", "he", "she"})
 _REACH = 6  # the most words from the conjunction to the name's "to"
 
 
