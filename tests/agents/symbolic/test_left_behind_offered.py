@@ -48,7 +48,7 @@ def test_the_offer_brings_one_on_a_yes() -> None:
         # news: nothing said of why it is wanted now
         ("i left my cable at home", "your data cable is out of use"),
         ("I forgot my cable", "your data cable is out of use"),
-        ("ugh i left my cable in the car", "Noted."),
+        ("ugh i left my cable in the car", "your data cable is out of use"),
         # where it is in the office, not a lack
         ("i left my cable at my desk", "your data cable is out of use"),
         ("i left my stapler in the meeting room", "your stapler is out of use"),
@@ -68,3 +68,26 @@ def test_a_request_beside_it_is_read_as_before() -> None:
     assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("transfer", "data_cable", "dang", "hu")
     ], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # round 226's class (read after its final measure): the speaker's own thing out of use
+        # after a clause of their situation; it had asked where Frank's head torch was
+        "meeting at Pryce's tonight and my stapler is broken. could someone lend me one",
+        "in a rush and my stapler is dead, can i borrow one",
+    ],
+)
+def test_a_broken_thing_after_the_situation_is_a_fact_and_one_is_borrowed(text: str) -> None:
+    frame = _hu(text)
+    assert frame.question is None, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [
+        ("transfer", "stapler", None, "hu")
+    ], frame
+
+
+def test_a_broken_thing_after_the_situation_alone_is_noted() -> None:
+    frame = _hu("i'm in a rush and my stapler is broken")
+    assert frame.tasks == [] and frame.question is None, frame
+    assert frame.decline is not None and "your stapler is out of use" in frame.decline

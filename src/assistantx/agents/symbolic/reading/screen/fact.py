@@ -27,6 +27,7 @@ _BACK = tuple(
     sorted((tuple(p.split()) for p in english.entries("back_openers")), key=lambda p: -len(p))
 )
 _BACK_TIMES = english.words("back_times")
+_JOINS = frozenset({"and", "but", "so"})
 _BACK_LEADS = english.words("back_leads")
 
 
@@ -34,8 +35,8 @@ def fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | 
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     if any(m.kind == "self" for m in mentions):  # "ugh laptop's dead and I forgot my cable"
         behind = own_item_fact(terms, msg, piece, requester)
-        if behind is not None and behind.offer:
-            return behind
+        if behind is not None:
+            return behind  # "calving at Pryce's tonight and my head torch is dead"
     k = 0
     while k < len(mentions) and mentions[k].kind == "word":
         if tokens[mentions[k].start].word not in terms.en.fact_openers:
@@ -124,7 +125,10 @@ def own_item_fact(terms: Terms, msg: Message, piece: Piece, requester: str) -> F
     )
     broken = _out_of_use(terms, after)
     behind = left_behind(before, after)  # "... and I left my cable at home"
-    if not (lost and before[:1] == ["i"]) and not (broken and not before) and not behind:
+    # "my stapler is broken", and after a clause of the speaker's situation ("calving at
+    # Pryce's tonight and my head torch is dead")
+    broken = broken and (not before or before[-1] in _JOINS)
+    if not (lost and before[:1] == ["i"]) and not broken and not behind:
         return None
     found = _own_out_of_use(terms, piece, items[0].ids[0], requester)
     needed = behind and situation_said(before)
