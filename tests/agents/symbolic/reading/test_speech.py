@@ -106,3 +106,26 @@ def test_an_adjectives_subject_is_told_not_commanded(
     acts: SpeechActs, text: str, told: bool
 ) -> None:
     assert acts.statement(split_words(text)) is told
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # round 229's class (read after its final measure): others' habits wished for
+        "wish someone would refill the coffee machine more often lol",
+        "I wish somebody would tidy the print room",
+        "wish people would print less",
+        "wish someone would heat the kitchen up in the mornings",
+    ],
+)
+def test_a_wish_that_someone_would_do_something_is_about_the_place(
+    acts: SpeechActs, text: str
+) -> None:
+    assert acts.world_wish(split_words(text))
+
+
+@pytest.mark.parametrize(
+    "text", ["I wish someone would bring me a coffee", "wish someone would lend me a stapler"]
+)
+def test_a_wish_for_the_speaker_is_no_wish_about_the_place(acts: SpeechActs, text: str) -> None:
+    assert not acts.world_wish(split_words(text))

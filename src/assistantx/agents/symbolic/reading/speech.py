@@ -241,6 +241,7 @@ _SO = frozenset({"so", "then"})  # a reason, then the request it leads to
 _MANNER = english.words("manner_openers")
 # The words before a facility that is the subject of a wished clause ("if only *the* printer")
 _WISHED_SUBJECT_DETERMINERS = frozenset({"the", "this", "that", "our", "these", "those"})
+_UNNAMED_DOERS = english.words("unnamed_doers")
 _WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
 _FOR_SPEAKER = frozenset({"i", "me", "my", "mine", "id", "im", "ive"})
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
@@ -648,6 +649,8 @@ class SpeechActs:
         rest = w[len(opener) :]
         if not rest or set(rest) & (_YOU | _FOR_SPEAKER):
             return False
+        if rest[0] in _UNNAMED_DOERS and rest[1:2] in (["would"], ["wd"]):
+            return True  # "wish someone would refill the urn more often": others' habits
         tokens = self.lex.tokens(" ".join(rest))
         mentions = self.lex.scan(tokens)
         if any(m.kind in ("person", "self") for m in mentions):
