@@ -151,7 +151,7 @@ from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judg
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
-from assistantx.agents.symbolic.reading.screen.recipients_doing import RECIPIENTS_DOING
+from assistantx.agents.symbolic.reading.screen.recipients_doing import ASIDES
 from assistantx.agents.symbolic.reading.several_owners import (
     any_owner_meant,
     unowned_mine,
@@ -909,7 +909,7 @@ def _said_mentions(spoken: Spoken) -> tuple[Mention, ...]:
     message's, or, where the screen set aside what the colleague given to will do ("...,
     she needs to check my results first"), the other pieces' (a thing that piece names is
     theirs to work on, never the request's, so no guess of it is confirmed)."""
-    aside = [f.piece for f in spoken.findings if f.meaning == RECIPIENTS_DOING]
+    aside = [f.piece for f in spoken.findings if f.meaning in ASIDES]
     if not aside:
         return spoken.msg.lexed.mentions
     return tuple(m for p in spoken.msg.pieces if p not in aside for m in p.lexed.mentions)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from assistantx.core import language
+from assistantx.core import english, language
 
 # "check the continuity of the loom" is said, never declared: a purpose is short
 _LONGEST_OBJECT = 3
@@ -111,3 +111,50 @@ def _clips(short: str, word: str) -> bool:
 def _singular(word: str) -> str:
     nouns = language.lemmas(word).get("NOUN", ())
     return min(nouns, key=len) if nouns and noun_only(word) else word
+
+
+# "something *to* wipe ...", "anything *I can* clean ... with": what says the thing is named by
+# the verb after it ("for" names what it is for by a noun: "something for the tea")
+_VERB_LINKS = tuple(
+    tuple(p.split())
+    for p in sorted(english.entries("purpose_links"), key=len, reverse=True)
+    if p != "for"
+)
+_HEADS = tuple(
+    tuple(p.split()) for p in sorted(english.entries("purpose_heads"), key=len, reverse=True)
+)
+_PARTICLES = english.words("verb_particles")  # "wipe *up* the tea", "clean *off* the desk"
+_OPENERS = english.words("object_starts") | english.words("determiners")  # "*its* lid"
+_SUBJECTS = english.words("subject_pronouns")  # "the tea *I* knocked over": a clause begins
+
+
+def used_on(words: Sequence[str]) -> range | None:
+    """Where, in ``words`` (lower case), the object of a purpose's verb is: "need something to
+    wipe up *the tea* I knocked over", "anything to clean *the water* off my desk". A purpose
+    names the thing wanted by its verb; what the verb acts on is what it is used on, never a
+    thing asked for. None where no purpose's verb has an object ("something to wipe with")."""
+    for n in range(len(words)):
+        head = next((h for h in _HEADS if tuple(words[n : n + len(h)]) == h), None)
+        if head is None:
+            continue
+        at = n + len(head)
+        link = next((k for k in _VERB_LINKS if tuple(words[at : at + len(k)]) == k), None)
+        if link is None:
+            continue
+        verb = at + len(link)
+        if verb >= len(words) or words[verb] not in language.verb_lemmas(words[verb]):
+            continue
+        start = verb + 1
+        while start < len(words) and words[start] in _PARTICLES:
+            start += 1
+        end = start + (start < len(words) and words[start] in _OPENERS)
+        first = end
+        while end < len(words) and end - first < _LONGEST_OBJECT and _noun_of_object(words[end]):
+            end += 1
+        if end > first:
+            return range(start, end)
+    return None
+
+
+def _noun_of_object(word: str) -> bool:
+    return word not in _SUBJECTS and noun_only(word)

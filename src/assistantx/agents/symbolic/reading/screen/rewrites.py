@@ -24,6 +24,7 @@ from assistantx.agents.symbolic.reading.screen.purpose_object import (
     object_nouns,
     purpose_words,
     said_as_declared,
+    used_on,
 )
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
@@ -51,7 +52,7 @@ def rewrite(
     thanked = [c.removeprefix(THANKED) for c in context if c.startswith(THANKED)]
     context = [c for c in context if not c.startswith(THANKED)]
     context = [c.removeprefix(ONE_HELD) for c in context]
-    text, found = purposes(terms, text)
+    text, found = purposes(terms, text, unmet=True)
     evidence += found
     text, found = kept_things(terms, msg, text)
     evidence += found
@@ -495,7 +496,10 @@ _OBJECT_OPENERS = english.words("object_starts") | frozenset({"that"})
 _OWNER_BEFORE = re.compile(r"(?:\b(?:my|our|your|his|her|their)|[^\W\d_]['’]s?)\s+$", re.IGNORECASE)
 
 
-def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
+def purposes(terms: Terms, text: str, *, unmet: bool = False) -> tuple[str, list[Evidence]]:
+    """``text`` with a thing said by its purpose ("something to cut this with") as the item
+    declared for it; ``unmet``: where no item is, the purpose's object dropped (what it would
+    be used on is no thing asked for: "something to mop up *the coffee*")."""
     heads = "|".join(re.escape(h) for h in sorted(terms.en.purpose_heads, key=len, reverse=True))
     links = "|".join(re.escape(h) for h in sorted(terms.en.purpose_links, key=len, reverse=True))
     pattern = re.compile(
@@ -551,8 +555,12 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
     # "to write on" (paper) before "to write" (pen, "to write with"); "to check continuity"
     # (a multimeter) before "to check"
     types = declared(" ".join([verb, *(w.lower() for w in tail[:said])]))
+    if not types and unmet:
+        # "something to mop up the coffee I spilled" with nothing declared for it: what it
+        # is used on is no thing asked for; the parser asks what is meant
+        return _without_object(text, match.start(), evidence)
     if len(types) != 1:
-        return text, evidence  # none or several: the parser asks which item
+        return text, evidence  # several: the parser asks which item
     name = types[0]
     evidence.append(Evidence(words=text[match.start() : end], meaning=f"a {name} (to {verb})"))
     # "her thing for opening cases", "Isla's thing for ...": the owner said is its
@@ -563,6 +571,24 @@ def purposes(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
 
 
 # -- helpers -------------------------------------------------------------------------
+
+
+_WORD = re.compile(r"\S+")
+_PUNCTUATION = ".,!?;:"
+
+
+def _without_object(text: str, at: int, evidence: list[Evidence]) -> tuple[str, list[Evidence]]:
+    """``text`` without the object of the verb of the purpose said at ``at`` ("the coffee" of
+    "something to mop up the coffee"), said back in the evidence as what it is used on."""
+    spans = list(_WORD.finditer(text, at))
+    used = used_on([m.group().lower().strip(_PUNCTUATION) for m in spans])
+    if used is None:
+        return text, evidence
+    start = spans[used.start].start()
+    last = spans[used.stop - 1]
+    end = last.start() + len(last.group().rstrip(_PUNCTUATION))
+    said = text[start:end]
+    return text[:start] + text[end:], [*evidence, Evidence(words=said, meaning="used on")]
 
 
 _PHRASE_ENDS = english.words("common")

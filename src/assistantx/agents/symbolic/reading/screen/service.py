@@ -20,6 +20,7 @@ from assistantx.agents.symbolic.reading.screen.made_product import unmade_produc
 from assistantx.agents.symbolic.reading.screen.outsider import outsider_recipient
 from assistantx.agents.symbolic.reading.screen.passed_through import through_a_facility
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
+from assistantx.agents.symbolic.reading.screen.purpose_object import used_on
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.core import english, language
@@ -228,8 +229,11 @@ def unsupported_service(terms: Terms, piece: Piece, *, nor: str = "") -> Finding
         cue = next((n for n, w in enumerate(words) if terms.request_verb(words, n)), None)
         if cue is None:
             continue
+        used = used_on(words) or range(0)  # "something to wipe up *the tea*": used on, not asked
         for n in range(cue + 1, len(words)):
             w = words[n]
+            if n in used:
+                continue
             if n <= cue + 2 and _for_whom(terms, words, cue + 1):
                 continue  # "bring for me a tea": whom it is for, said before the thing
             if w in terms.en.modifier_prepositions or words[n - 1] in ("my", "our"):
