@@ -10,13 +10,15 @@ reader planned go to the person named. The words: a request modal ("could", "can
 "let" right before the name and a verb of having or borrowing right after it ("could Linh get
 me ..." makes Linh the one who gets it for the requester, not a recipient; "let Linh get one"
 and "could Linh get a coffee" do); or the name, then "could do with" or "should get" and the
-thing ("Linh should get a copy of my notes")."""
+thing ("Linh should get a copy of my notes"). A causative has the thing made for the one
+named: "could Linh get my report printed", "can Zhang have his badge laminated" (``caused_for``).
+"""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-from assistantx.core import english
+from assistantx.core import english, language
 
 _ASKING = english.words("request_modals") | {"let"}
 _HAVING = frozenset({"have", "borrow", "get"})
@@ -45,3 +47,36 @@ def asked_to_have(before: str, after: Sequence[str]) -> bool:
     if after[0] == "get" and before != "let" and (len(after) < 2 or after[1] not in _SOME):
         return False  # "could Linh get me one": Linh gets it for the requester
     return not any(w in _ABOUT for w in after[1:])
+
+
+# "could Linh get/have my report printed": the verbs of a causative asked of a colleague
+_CAUSING = frozenset({"get", "have"})
+# what cannot open the thing the causative's work is done to ("could Linh get *me* one
+# printed": Linh gets it for the requester); anything else may ("get *his* badge laminated",
+# "get Ray Castillo's badge laminated", "get 5 copies made")
+_NOT_THINGS = frozenset({"me", "us", "you", "him", "them", "it", "myself", "there", "here"})
+# what ends the thing's noun phrase before any participle: the thing goes elsewhere, or a
+# clause of its own follows ("could Linh get the report to me printed" is no causative of hers)
+_CAUSED_ENDS = _ABOUT | {"me", "us", "and", "or", "from", "off", "then", "so", "if"}
+# how many words the thing's noun phrase may run to before its participle ("a copy of my
+# report made")
+_CAUSED_SPAN = 6
+
+
+def caused_for(before: str, after: Sequence[str]) -> bool:
+    """Whether the person named between the folded word ``before`` (a request modal) and the
+    words ``after`` is asked to have a thing made or worked on for them: "could Linh get my
+    report printed", "can Zhang have his badge laminated", "can Lee get a copy of my report
+    made" (the verb of having, the thing's noun phrase, then the work's past participle).
+    The one named is whom the thing is for; "could Linh get me one printed" (Linh does it for
+    the requester) and "could Linh get the signed form" (no work asked) are not."""
+    if before not in english.words("request_modals") or len(after) < 4:
+        return False
+    if after[0] not in _CAUSING or after[1] in _NOT_THINGS or after[1] in _CAUSED_ENDS:
+        return False
+    for n, w in enumerate(after[2 : 2 + _CAUSED_SPAN], start=2):
+        if w in _CAUSED_ENDS:
+            return False
+        if n > 2 and language.is_past_participle(w):
+            return True  # a participle before the noun only describes it ("the signed form")
+    return False

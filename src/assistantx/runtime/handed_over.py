@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from assistantx.core import english, language
-from assistantx.core.asked_to_have import asked_to_have
+from assistantx.core.asked_to_have import asked_to_have, caused_for
 
 # the thing handed over, said again
 _IT = frozenset({"it", "them"})
@@ -46,5 +46,8 @@ def taken_across(words: Sequence[str], is_give: Callable[[str], bool]) -> bool:
 
 def subject_asked_to_have(before: str, pronoun: str, after: Sequence[str]) -> bool:
     """Whether ``pronoun`` is a colleague's subject pronoun asked to have the thing: "can he
-    have mine?", "could she borrow it?" (the words ``before`` and ``after`` it, folded)."""
-    return pronoun in _SUBJECT_PRONOUNS and asked_to_have(before, after)
+    have mine?", "could she borrow it?", "can he get his badge laminated" (the words ``before``
+    and ``after`` it, folded; the first three of ``after`` for a having, all for a causative)."""
+    if pronoun not in _SUBJECT_PRONOUNS:
+        return False
+    return asked_to_have(before, after[:3]) or caused_for(before, after)

@@ -54,7 +54,7 @@ from assistantx.agents.symbolic.reading.seated_subject import SeatedSubject
 from assistantx.agents.symbolic.reading.surnames import family_names
 from assistantx.core import english, language, name_parts
 from assistantx.core.appositive import appositive_preposition
-from assistantx.core.asked_to_have import asked_to_have
+from assistantx.core.asked_to_have import asked_to_have, caused_for
 from assistantx.core.handed_owner import carried_to
 from assistantx.core.name_reading import is_word_name, read_name, slot_at
 from assistantx.core.needed_instead import needs_the_thing
@@ -374,6 +374,8 @@ def _receiving(
         return True
     if asked_to_have(before, [w.folded for w in words[end : end + 3]]):
         return True  # "could Linh have a stapler?", "Linh could do with one"
+    if caused_for(before, [w.folded for w in words[end : end + 9]]):
+        return True  # "could Linh get my report printed": made for her
     if _picked_out(words, start, end):
         return True  # "it's Linh who needs it"
     nxt = words[end + 1].folded if end + 1 < len(words) else ""
@@ -568,7 +570,7 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
             _before(words, n), w.folded, after, _ahead(words, n)
         )
         # "Will's calculator died, can he have mine?": "he" asked to have it receives it
-        asked = subject_asked_to_have(_before(words, n), w.folded, folded[n + 1 : n + 4])
+        asked = subject_asked_to_have(_before(words, n), w.folded, folded[n + 1 : n + 10])
         if (
             not at_place
             and not asked

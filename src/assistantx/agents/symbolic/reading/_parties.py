@@ -30,7 +30,7 @@ from assistantx.agents.symbolic.reading.tokens import Token, prev_word
 from assistantx.agents.symbolic.reading.vocative import yours_addressed
 from assistantx.core import english, language, task_kinds
 from assistantx.core.appositive import appositive_preposition
-from assistantx.core.asked_to_have import asked_to_have
+from assistantx.core.asked_to_have import asked_to_have, caused_for
 from assistantx.core.receiving_place import (
     MEET_AT,
     PLACE_WORDS,
@@ -340,7 +340,9 @@ def person_role(tokens: Sequence[Token], ms: list[Mention], n: int, who: str, ro
         to_have=asked_to_have(
             prev_word(tokens, m.start),  # "could Mr K have": the title skipped
             [t.word for t in tokens[m.end : _next_item_start(ms, n, m.end + 3)]],
-        ),
+        )
+        # "could Linh get my report printed": the thing made for her
+        or caused_for(prev_word(tokens, m.start), [t.word for t in tokens[m.end : m.end + 9]]),
         indirect=is_indirect_object(tokens, ms, n, prev),
         gapped=gapped_recipient(tokens, ms, n),
         later_use=_later_use(tokens, m.start, after),

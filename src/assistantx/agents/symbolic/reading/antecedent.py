@@ -15,6 +15,7 @@ import re
 
 from assistantx.agents.symbolic.reading.lexicon import Lexed
 from assistantx.core.office import Office
+from assistantx.core.receiving_place import ahead_at, names_receiving_place
 from assistantx.core.task_schema import Task
 
 # Words that refer back to something said before, never to something at hand.
@@ -149,7 +150,9 @@ def anothers_it(
     chart, print it": the tasks read "it" as the requester's own file, but the message names
     the thing only as another colleague's (a possessive, or "his"/"her" of the one colleague
     named) and never as the requester's ("my", or "from me": "Wang needs the minutes from me,
-    send them to her" is the requester's file): whose it is, that colleague; None otherwise."""
+    send them to her" is the requester's file): whose it is, that colleague; None otherwise.
+    A possessive of the place "it" is left at ("print the rota and stick it on Tam's desk")
+    is the place's, whom it is left for, never whose the thing is (fix59f class 2)."""
     words = {t.word for t in whole.tokens}
     if not words & _ANAPHORS or not tasks:
         return None
@@ -161,7 +164,7 @@ def anothers_it(
     for m in whole.mentions:
         if m.kind == "self" and m.start > 0 and whole.tokens[m.start - 1].word == "from":
             return None  # "Wang needs the minutes from me": they come from the requester
-        if not m.possessive:
+        if not m.possessive or _left_at_their_place(whole, m.start):
             continue
         if m.kind == "self":
             return None  # "my seating chart": the requester's own, as read
@@ -173,3 +176,17 @@ def anothers_it(
             owners.add(named_once)
     owners.discard(requester)
     return next(iter(owners)) if len(owners) == 1 else None
+
+
+def _left_at_their_place(whole: Lexed, at: int) -> bool:
+    """Whether the possessive at token ``at`` names the place "it" is left at ("stick it *on
+    Tam's* desk", "put them down in her tray"), not where a thing lies ("the chart on Tam's
+    desk", "the one on Tam's desk"): "it"/"them" just before the place's preposition."""
+    tokens = whole.tokens
+    if at == 0 or at + 1 >= len(tokens):
+        return False
+    before, after = tokens[at - 1].word, tokens[at + 1].word
+    ahead = ahead_at(tokens, at - 1)
+    if not set(ahead.words) & _ANAPHORS:
+        return False
+    return names_receiving_place(before, after, ahead)

@@ -15,6 +15,11 @@ Two steps:
   here, she needs the umbrella": "Rose Adeyemi or Mark Lindqvist?"). The answer names whom
   it means (``with_subject_answered``).
 
+The same holds for "she"/"he" as the subject of a causative asked with a modal ("can she get
+my report printed", ``asked_to_have.caused_for``): the thing is made for the one it means,
+written as the name by ``rewrites.name_pronouns`` where one colleague was named before, and
+asked about here where nobody was (fix59f class 1), never read as made for the speaker.
+
 A pronoun in any other place ("take it to her", "could she have ...") is left to the stages
 that read it (``rewrites.name_pronouns``, the frames)."""
 
@@ -26,7 +31,8 @@ from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.subject_adverbs import is_adverb_before_verb
-from assistantx.core import english
+from assistantx.core import english, language
+from assistantx.core.asked_to_have import caused_for
 from assistantx.core.task_schema import Evidence
 
 _PRONOUNS = ("she", "he", "they")
@@ -99,7 +105,8 @@ def _colleagues(terms: Terms, text: str, requester: str) -> list[str]:
 
 
 def named_subject(terms: Terms, text: str, requester: str) -> tuple[str, list[Evidence]]:
-    """``text`` with the pronoun subject of a need written as the one colleague it means."""
+    """``text`` with the pronoun subject of a need, or of a causative asked with a modal
+    ("can she get my report printed"), written as the one colleague it means."""
     found: list[Evidence] = []
 
     def meant(match: re.Match[str]) -> str:
@@ -125,7 +132,17 @@ def named_subject(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
         )
         return said
 
-    return _PRONOUN_NEED.sub(meant, text), found
+    text = _PRONOUN_NEED.sub(meant, text)
+    for caused in reversed(_caused_matches(text)):
+        # "we've a new volunteer, Rose, starting tomorrow. can she get a badge laminated": the
+        # thing is made for the one colleague named before the pronoun
+        before = set(_colleagues(terms, text[: caused.start("pronoun")], requester))
+        if len(before) != 1:
+            continue  # none, or several: asked (``unnamed_subject``)
+        name = terms.office.person(next(iter(before))).name
+        found.append(Evidence(words=caused.group(0), meaning=f"made for {name}, said by a pronoun"))
+        text = text[: caused.start("pronoun")] + name + text[caused.end("pronoun") :]
+    return text, found
 
 
 def _opening(text: str, match: re.Match[str]) -> str:
@@ -139,11 +156,34 @@ def _opening(text: str, match: re.Match[str]) -> str:
     return " " if text[: match.start()].rstrip()[-1:] in _PAUSES else ", "
 
 
+# "can she get my report printed": a modal, then the pronoun the causative is asked of
+_CAUSED_SUBJECT = re.compile(
+    r"\b(?P<modal>"
+    + "|".join(sorted(english.words("request_modals"), key=len, reverse=True))
+    + r")\s+(?P<pronoun>she|he)\b",
+    re.IGNORECASE,
+)
+
+
+def _caused_matches(text: str) -> list[re.Match[str]]:
+    """The "<modal> she/he" of ``text`` that a causative follows ("can she get my report
+    printed": the thing is made for the one the pronoun means)."""
+    return [
+        m
+        for m in _CAUSED_SUBJECT.finditer(text)
+        if caused_for(m.group("modal").lower(), language.words(text[m.end() :]))
+    ]
+
+
 def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
-    """A need whose subject is "she"/"he"/"they" with nobody named before it: asked whom the
-    pronoun means, never read as the speaker's own need."""
+    """A need whose subject is "she"/"he"/"they" with nobody named before it, or a causative
+    asked of "she"/"he" ("can she get my report printed"): asked whom the pronoun means, never
+    read as the speaker's own need."""
     match = next(iter(_need_matches(piece.text)), None)
-    if match is None or piece.text[: match.start("pronoun")].strip(" ,.-–—;:!?"):
+    if match is None:
+        caused = next(iter(_caused_matches(piece.text)), None)
+        return None if caused is None else _whom_caused(terms, msg, piece, requester, caused)
+    if piece.text[: match.start("pronoun")].strip(" ,.-–—;:!?"):
         return None  # not the piece's own subject ("if she needs it" is a condition)
     before = {
         p
@@ -158,6 +198,28 @@ def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) ->
         # request ("take Mark's ruler to Grace, she needs it"): the reason for it
         return None
     said = match.group("pronoun")
+    question = f"Who do you mean by {said!r}? Please tell me their name."
+    if before:
+        names = " or ".join(terms.office.person(p).name for p in sorted(before))
+        question = f"Who do you mean by {said!r}: {names}?"
+    return Finding("which", piece, f"whom {said!r} means is asked", message=question)
+
+
+def _whom_caused(
+    terms: Terms, msg: Message, piece: Piece, requester: str, caused: re.Match[str]
+) -> Finding | None:
+    """Whom the causative's "she"/"he" means, asked where no colleague, or several, were
+    named before it (one named: written as the name, ``rewrites.name_pronouns``)."""
+    before = {
+        p
+        for earlier in msg.pieces
+        if earlier.end <= piece.start
+        for p in terms.named(earlier.lexed, "person")
+        if p != requester
+    } | set(_colleagues(terms, piece.text[: caused.start("pronoun")], requester))
+    if len(before) == 1:
+        return None
+    said = caused.group("pronoun")
     question = f"Who do you mean by {said!r}? Please tell me their name."
     if before:
         names = " or ".join(terms.office.person(p).name for p in sorted(before))
@@ -182,7 +244,7 @@ def with_subject_answered(
     said = asked.group("pronoun").lower()
     match = next((m for m in _need_matches(text) if m.group("pronoun").lower() == said), None)
     if match is None:
-        return None
+        return _caused_answered(terms, text, requester, said, answer)
     words = terms.lex.read(answer).tokens
     people = set(terms.named(terms.lex.read(answer), "person"))
     verb = match.group("verb")
@@ -196,3 +258,21 @@ def with_subject_answered(
         return None
     start, end = match.start("pronoun"), match.end("verb")
     return text[:start] + name + (match.group("adverb") or "") + verb + text[end:]
+
+
+def _caused_answered(terms: Terms, text: str, requester: str, said: str, answer: str) -> str | None:
+    """The causative's pronoun asked about (``_whom_caused``) written as the colleague the
+    answer names ("can she get my report printed" → "Zhang": "can Zhang Wei get my report
+    printed"); "me" makes it the speaker's ("can I get ..."); None otherwise."""
+    match = next((m for m in _caused_matches(text) if m.group("pronoun").lower() == said), None)
+    if match is None:
+        return None
+    words = terms.lex.read(answer).tokens
+    people = set(terms.named(terms.lex.read(answer), "person"))
+    if people == {requester} or (not people and [t.word for t in words] in ([w] for w in _ME)):
+        name = "I"
+    elif len(people) == 1:
+        name = terms.office.person(next(iter(people))).name
+    else:
+        return None
+    return text[: match.start("pronoun")] + name + text[match.end("pronoun") :]

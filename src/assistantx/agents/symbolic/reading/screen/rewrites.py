@@ -34,7 +34,7 @@ from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
 from assistantx.agents.symbolic.reading.vocative import addressed_person
 from assistantx.core import english, language
-from assistantx.core.asked_to_have import asked_to_have
+from assistantx.core.asked_to_have import asked_to_have, caused_for
 from assistantx.core.handed_owner import carried_to
 from assistantx.core.task_schema import Evidence, Hint
 from assistantx.memory.names import normalize
@@ -416,12 +416,13 @@ def name_pronouns(
         # "Lin's running the stall - could she have my stickers?": the one to be given it
         # (``asked_to_have``), said by the pronoun of the one person named before
         after = language.words(match.group(4))
-        if others_before or not asked_to_have(match.group(1).lower(), after):
+        before = match.group(1).lower()
+        if others_before or not (asked_to_have(before, after[:4]) or caused_for(before, after)):
             return match.group(0)
         return match.group(1) + match.group(2) + name
 
     text = re.sub(
-        r"\b(\w+)(\s+)(she|he)\b(?=((?:\s+[\w'’]+){1,4}))", having, text, flags=re.IGNORECASE
+        r"\b(\w+)(\s+)(she|he)\b(?=((?:\s+[\w'’]+){1,9}))", having, text, flags=re.IGNORECASE
     )
     return re.sub(r"\b(him|his|her)\b(\s*)(\w*)", named, text, flags=re.IGNORECASE)
 

@@ -27,6 +27,9 @@ from assistantx.core import english, language
 
 # Who a request asks ("can someone ...", "could anybody ..."): never a verb's modifier.
 _ASKEES = english.words("request_askees")
+# "can he get it printed": a subject pronoun before the verb is who does or has it done,
+# never a noun that modifies the verb ("he" is also helium's symbol)
+_SUBJECTS = english.words("subject_pronouns")
 # How a thing is said to be, right after its name ("phone dead", "laptop nearly flat", "phone
 # out of charge"): the word is that thing, the subject of a state, no service's verb
 _STATES = tuple(
@@ -330,7 +333,7 @@ def modified_service(terms: Terms, words: list[str], at: int) -> str | None:
     if at + 1 >= len(words) or words[at + 1] not in terms.service_verbs:
         return None
     word = words[at]
-    if word in terms.office_words or word in terms.en.serial_verbs or word in _ASKEES:
+    if word in terms.office_words or word in terms.en.serial_verbs or word in _ASKEES | _SUBJECTS:
         return None  # "could someone print it": who is asked, no modifier of the verb
     if word in POINTERS or word in DETERMINERS:
         return None  # "I need this photocopied": the object before its participle
