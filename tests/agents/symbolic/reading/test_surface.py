@@ -27,6 +27,7 @@ from helpers.music_school import music_school
 ORDER = [
     "pictographs",
     "undotted",
+    "possessive_pronouns",
     "question_preface",
     "hyphened_nouns",
     "group_member",
@@ -117,6 +118,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 EXAMPLES: dict[str, str] = {
     "pictographs": "bring me a pen and no marker 😩",
     "undotted": "bring the book to Dr. Grace Huang",
+    "possessive_pronouns": "Wang and Zhou both sent slides. print hers and bring it to me",
     "question_preface": "frank question: who's got a stapler I could use tomorrow?",
     "hyphened_nouns": "could you bring me a pen for the warm-up drill?",
     "group_member": "bring me a cup please, one of the interns took mine",
@@ -195,6 +197,7 @@ EXAMPLES: dict[str, str] = {
 EFFECTS: dict[str, tuple[str, str, str]] = {
     "pictographs": ("default", "😩", ""),
     "undotted": ("default", "Dr.", "Dr Grace"),
+    "possessive_pronouns": ("default", "print hers", "print her one"),
     "question_preface": ("default", "frank question:", ""),
     "hyphened_nouns": ("default", "warm-up", "the warmup drill"),
     "group_member": ("default", "one of the interns", "an intern took"),

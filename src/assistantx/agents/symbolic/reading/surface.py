@@ -91,6 +91,7 @@ from assistantx.agents.symbolic.reading.placeholder_thing import (
 )
 from assistantx.agents.symbolic.reading.possessive_corrections import possessive_corrections
 from assistantx.agents.symbolic.reading.possessive_place import possessive_places
+from assistantx.agents.symbolic.reading.possessive_pronouns import possessive_pronouns
 from assistantx.agents.symbolic.reading.poured_vessel import PouredVessel
 from assistantx.agents.symbolic.reading.problem_remedy import ProblemRemedies
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
@@ -397,6 +398,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # a possessive pronoun for a thing named before: "her one", of whoever she is
+    # e.g. "Wang and Zhou both sent slides. print hers and bring it to me"
+    Step("possessive_pronouns", lambda s, t, a: possessive_pronouns(t)),
     # a preface that announces a question names nobody and asks nothing
     # e.g. "frank question: who's got a stapler I could use tomorrow?"
     Step("question_preface", lambda s, t, a: without_question_preface(t)),

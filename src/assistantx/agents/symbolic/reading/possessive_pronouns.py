@@ -1,0 +1,45 @@
+"""A possessive pronoun said for a thing named before: "Inés and Thảo both sent retouches.
+print hers and bring it to me", "can someone lend me theirs". "hers" is "her one": the thing
+of the kind just named, of whoever "her" is (asked when two are named). Read as said, "hers"
+named nothing and the speaker's own file was printed. Only as the object of a verb of doing or
+after whom it goes to ("is this pen hers?" says whose it is). "his" is left as said: it is
+also the determiner ("his stapler"), and "his one" loses its owner to "one"; "mine" and
+"yours" have their own readings (``rewrites.dangling_possessives``)."""
+
+from __future__ import annotations
+
+import re
+
+from assistantx.core import language
+
+# what may follow the pronoun where it stands for the thing: the end of the message or a
+# clause, or a join or courtesy ("print hers and bring it to me", "his please")
+_AFTER = r"(?=\s*(?:$|[.,!?;:]|(?:and|please|pls|plz|too|then|as well|for me|to me)\b))"
+_PRONOUNS = re.compile(r"\b(?P<p>hers|theirs)\b" + _AFTER, re.IGNORECASE)
+_AS_DETERMINER = {"hers": "her", "theirs": "their"}
+# whom a thing is given to, said before it ("bring me hers")
+_GIVEN_TO = frozenset({"me", "us", "him", "them"})
+# verbs that say what a thing is ("is this pen his?"), never what is done with it
+_BEING = frozenset({"is", "are", "was", "were", "be", "been", "s", "isnt", "arent"})
+
+
+def possessive_pronouns(text: str) -> str:
+    """``text`` with each possessive pronoun that stands for a thing said as "<her> one"."""
+
+    def one(m: re.Match[str]) -> str:
+        said = m.group("p")
+        before = re.findall(r"[a-z]+", text[: m.start()].lower())[-1:]
+        if not before or not _object_slot(before[0]):
+            return said
+        word = _AS_DETERMINER[said.lower()]
+        return f"{word.capitalize() if said[:1].isupper() else word} one"
+
+    return _PRONOUNS.sub(one, text)
+
+
+def _object_slot(word: str) -> bool:
+    """Whether the word before the pronoun makes it an object: a verb that does something
+    ("print hers", "borrow his") or whom it goes to ("bring me hers")."""
+    if word in _GIVEN_TO:
+        return True
+    return word not in _BEING and "VERB" in language.lemmas(word)
