@@ -18,9 +18,15 @@ _AFTER = r"(?=\s*(?:$|[.,!?;:]|(?:and|please|pls|plz|too|then|as well|for me|to 
 _PRONOUNS = re.compile(r"\b(?P<p>hers|theirs)\b" + _AFTER, re.IGNORECASE)
 _AS_DETERMINER = {"hers": "her", "theirs": "their"}
 # whom a thing is given to, said before it ("bring me hers")
-_GIVEN_TO = frozenset({"me", "us", "him", "them"})
+_GIVEN_TO_END = re.compile(r"\b(?:me|us|him|them)\s*$", re.IGNORECASE)
 # verbs that say what a thing is ("is this pen his?"), never what is done with it
 _BEING = frozenset({"is", "are", "was", "were", "be", "been", "s", "isnt", "arent"})
+# a verb said to the robot: opening the message or a clause, or after "you", a courtesy or
+# a join ("print hers", "... job. print hers", "could you borrow hers", "and print hers")
+_ASKED_VERB_END = re.compile(
+    r"(?:^|[.!?;:,]\s*|\b(?:you|u|ya|please|pls|plz|and|then|just|to)\s+)(?P<verb>[a-z]+)\s*$",
+    re.IGNORECASE,
+)
 
 
 def possessive_pronouns(text: str) -> str:
@@ -28,8 +34,7 @@ def possessive_pronouns(text: str) -> str:
 
     def one(m: re.Match[str]) -> str:
         said = m.group("p")
-        before = re.findall(r"[a-z]+", text[: m.start()].lower())[-1:]
-        if not before or not _object_slot(before[0]):
+        if not _object_slot(text[: m.start()]):
             return said
         word = _AS_DETERMINER[said.lower()]
         return f"{word.capitalize() if said[:1].isupper() else word} one"
@@ -37,9 +42,15 @@ def possessive_pronouns(text: str) -> str:
     return _PRONOUNS.sub(one, text)
 
 
-def _object_slot(word: str) -> bool:
-    """Whether the word before the pronoun makes it an object: a verb that does something
-    ("print hers", "borrow his") or whom it goes to ("bring me hers")."""
-    if word in _GIVEN_TO:
+def _object_slot(before: str) -> bool:
+    """Whether the words ``before`` the pronoun make it the robot's object: whom it goes to
+    ("bring me hers") or a verb said to the robot, opening its clause ("print hers", "could
+    you borrow hers"); "Will needs hers", "she's using hers" are what another does."""
+    given = _GIVEN_TO_END.search(before)
+    if given is not None:
         return True
-    return word not in _BEING and "VERB" in language.lemmas(word)
+    asked = _ASKED_VERB_END.search(before)
+    if asked is None:
+        return False
+    verb = asked.group("verb").lower()
+    return verb not in _BEING and "VERB" in language.lemmas(verb)
