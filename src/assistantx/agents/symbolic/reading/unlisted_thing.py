@@ -14,7 +14,7 @@ from assistantx.agents.symbolic.reading.categories import categories, is_member
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english, language
-from assistantx.core.office import Office
+from assistantx.core.office import ItemType, Office
 
 _COMMON = english.words("common")
 _FROM_WORDS = frozenset({"from", "at", "in", "of", "out"})
@@ -111,21 +111,10 @@ def variety_of(
     drink): the words that named it and the product's name, so the request is read as for
     the product. A thing of no shared kind ("chloroform" from a store that makes ethanol) is
     still declined by name."""
-    facility = office.facility(facility_id)
-    if len(facility.products) != 1 or facility.supplies:
+    source = _sole_product_source(office, mentions, facility_id)
+    if source is None:
         return None
-    product = office.item_type(facility.products[0])
-    at = next(
-        (n for n, m in enumerate(mentions) if m.kind == "facility" and m.ids == (facility_id,)),
-        None,
-    )
-    if at is None:
-        return None
-    k = at - 1
-    while k >= 0 and mentions[k].kind == "word" and mentions[k].ids[0] in _FROM_WORDS:
-        k -= 1
-    if k == at - 1:
-        return None
+    product, k = source
     k = _before_time(mentions, k)  # "a flat white for tonight from the coffee machine"
     said: list[str] = []
     while k >= 0 and len(said) < 3 and _plain_word(mentions[k]):
@@ -137,21 +126,14 @@ def variety_of(
     return None
 
 
-def vessel_of(
+def _sole_product_source(
     office: Office, mentions: Sequence[Mention], facility_id: str
-) -> tuple[tuple[str, ...], str] | None:
-    """ "fill me a wash bottle of milli-q", "a jug from the urn", "a flask of the dewar": a
-    vessel the office does not list (a word no name reads), said of or from a facility that
-    makes one product to be poured (one of its names has a word of ``pourable_words``) and
-    keeps nothing, is asked for that product: the vessel's words and the product's name, so
-    the request is read as for the product. A facility that makes nothing, or several things,
-    or things that are not poured (printouts) is no such source; the vessel is declined."""
+) -> tuple[ItemType, int] | None:
+    """The one product of a facility that keeps nothing for anyone, and the mention index of
+    the last word said before "from"/"of" and the facility's name; None where the facility
+    makes several things or none, keeps supplies, or is not said after such a word."""
     facility = office.facility(facility_id)
     if len(facility.products) != 1 or facility.supplies:
-        return None
-    product = office.item_type(facility.products[0])
-    names = (product.name, *product.synonyms)
-    if not any(w in _POURABLE for name in names for w in language.words(name)):
         return None
     at = next(
         (n for n, m in enumerate(mentions) if m.kind == "facility" and m.ids == (facility_id,)),
@@ -162,7 +144,28 @@ def vessel_of(
     k = at - 1
     while k >= 0 and mentions[k].kind == "word" and mentions[k].ids[0] in _FROM_WORDS:
         k -= 1
-    if k == at - 1 or k < 0 or not _plain_word(mentions[k]):
+    if k == at - 1:
+        return None
+    return office.item_type(facility.products[0]), k
+
+
+def vessel_of(
+    office: Office, mentions: Sequence[Mention], facility_id: str
+) -> tuple[tuple[str, ...], str] | None:
+    """ "fill me a wash bottle of milli-q", "a jug from the urn", "a flask of the dewar": a
+    vessel the office does not list (a word no name reads), said of or from a facility that
+    makes one product to be poured (one of its names has a word of ``pourable_words``) and
+    keeps nothing, is asked for that product: the vessel's words and the product's name, so
+    the request is read as for the product. A facility that makes nothing, or several things,
+    or things that are not poured (printouts) is no such source; the vessel is declined."""
+    source = _sole_product_source(office, mentions, facility_id)
+    if source is None:
+        return None
+    product, k = source
+    names = (product.name, *product.synonyms)
+    if not any(w in _POURABLE for name in names for w in language.words(name)):
+        return None
+    if k < 0 or not _plain_word(mentions[k]):
         return None
     if mentions[k].ids[0] not in _VESSELS:
         return None
