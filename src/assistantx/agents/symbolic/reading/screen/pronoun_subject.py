@@ -197,12 +197,7 @@ def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) ->
         # one named: written as the name before (``named_subject``); several beside a
         # request ("take Mark's ruler to Grace, she needs it"): the reason for it
         return None
-    said = match.group("pronoun")
-    question = f"Who do you mean by {said!r}? Please tell me their name."
-    if before:
-        names = " or ".join(terms.office.person(p).name for p in sorted(before))
-        question = f"Who do you mean by {said!r}: {names}?"
-    return Finding("which", piece, f"whom {said!r} means is asked", message=question)
+    return _who_asked(terms, piece, match.group("pronoun"), before)
 
 
 def _whom_caused(
@@ -219,7 +214,11 @@ def _whom_caused(
     } | set(_colleagues(terms, piece.text[: caused.start("pronoun")], requester))
     if len(before) == 1:
         return None
-    said = caused.group("pronoun")
+    return _who_asked(terms, piece, caused.group("pronoun"), before)
+
+
+def _who_asked(terms: Terms, piece: Piece, said: str, before: set[str]) -> Finding:
+    """The question whom the pronoun ``said`` means, listing the colleagues named before it."""
     question = f"Who do you mean by {said!r}? Please tell me their name."
     if before:
         names = " or ".join(terms.office.person(p).name for p in sorted(before))
