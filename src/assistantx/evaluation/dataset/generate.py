@@ -227,7 +227,7 @@ def _asked(base: BaseInstruction, plan: TaskPlan, office: Office) -> list[dict[s
     own yes (the fallback the planner and the oracle take when the keeper is away)."""
     if not plan.uses_kept:
         return plan.goal
-    lent = build_plan(base, office, kept=False).goal
+    lent = (plan.fallback or build_plan(base, office, kept=False)).goal
     return [*plan.goal, *(m for m in lent if m not in plan.goal)]
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from assistantx.agents.symbolic.reading.screen.terms import Terms, listed
+from assistantx.agents.symbolic.reading.screen.terms import Terms, who_has
 from assistantx.core import english, wording
 
 _LEFT = english.words("left_behind_verbs") - {"dropped", "put"}
@@ -54,8 +54,7 @@ def lend_offer(terms: Terms, item: str, requester: str) -> tuple[str, str, str] 
         known = f"{wording.there_is(t.name, mass=t.mass)} in the {supplier.name}."
     elif owners:
         names = [terms.office.person(o).name for o in owners[:4]]
-        has = "has" if len(names) == 1 else "have"
-        known = f"As far as I know, {listed(names)} {has} {a_thing}."
+        known = who_has(names, a_thing)
     else:
         return None
     one = wording.some_or_one(t.name, mass=t.mass)

@@ -12,7 +12,7 @@ from assistantx.agents.symbolic.reading.screen.kept_at_place import kept_at, pla
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.spare_of import spare_of, spares_only
-from assistantx.agents.symbolic.reading.screen.terms import Terms, article, listed
+from assistantx.agents.symbolic.reading.screen.terms import Terms, article, who_has
 from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.used_today import used_later_today
 from assistantx.core import wording
@@ -110,8 +110,7 @@ def item_question(terms: Terms, piece: Piece, item: str, requester: str) -> Find
     elif supplier is not None:  # "any AAs going spare?": the cupboard's, anyone's to have
         answer = f"{wording.there_is(t.name, mass=t.mass)} in the {supplier.name}."
     elif names:
-        has = "has" if len(names) == 1 else "have"
-        answer = f"As far as I know, {listed(names)} {has} {a_thing}."
+        answer = who_has(names, a_thing)
     else:
         answer = f"I don't know of anyone here with {a_thing}."
     place = place_asked(piece.lexed) if not asked else None

@@ -173,3 +173,10 @@ def article(noun: str) -> str:
 
 def listed(words: list[str]) -> str:
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+
+
+def who_has(names: list[str], a_thing: str) -> str:
+    """ "As far as I know, Dang Hao and Zhou Yan have a data cable.": colleagues who own
+    ``a_thing`` (said with its article), as the assistant knows them."""
+    has = "has" if len(names) == 1 else "have"
+    return f"As far as I know, {listed(names)} {has} {a_thing}."
