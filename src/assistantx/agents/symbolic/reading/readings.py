@@ -585,7 +585,23 @@ def _unknown_name(
         return False  # "for PE cover", "for Year 9": what it is for, nobody's name
     if code_of_a_thing(tokens, mentions, n):
         return False  # "the bag for LIS": an airport's code, nobody's name
-    return capital and (titled or prev in ("to", "for", "from", "by", "ask"))
+    return capital and (
+        titled or prev in ("to", "for", "from", "by", "ask") or _given_to(tokens, m)
+    )
+
+
+# "get Priya a coffee", "bring Tomasz the spare key": the verbs a thing is handed with, before
+# whom it is for and then the thing (its determiner or count)
+_GIVING = frozenset({"get", "bring", "give", "fetch", "grab", "make", "send", "hand", "pass"})
+_THING_OPENERS = frozenset({"a", "an", "the", "some", "one", "two", "another", "his", "her"})
+
+
+def _given_to(tokens: Sequence[Token], m: Mention) -> bool:
+    """Whether ``m`` stands between a verb of handing and the thing handed: whom it is for
+    ("get Priya a coffee"), a name to look up like one after "for" is."""
+    if m.start < 1 or m.end >= len(tokens) or tokens[m.start].possessive:
+        return False
+    return tokens[m.start - 1].word in _GIVING and tokens[m.end].word in _THING_OPENERS
 
 
 def _modifies_next(tokens: Sequence[Token], at: int) -> bool:

@@ -26,6 +26,7 @@ that read it (``rewrites.name_pronouns``, the frames)."""
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
@@ -165,14 +166,36 @@ _CAUSED_SUBJECT = re.compile(
 )
 
 
+# "can he have a coffee", "could she borrow the projector": the verbs by which a thing is
+# asked for whom a modal's pronoun means (as a causative is, above)
+_HAVING = frozenset({"have", "borrow", "use"})
+# what after such a verb is no thing asked for ("can she have a look", "could he use a hand"
+# are help, and "can he have it" a thing said before: read where it is named)
+_NOT_HAD = frozenset({"a look", "a go", "a hand", "a word", "a think", "a chat", "a break"})
+
+
+def _had_for(after: Sequence[str]) -> bool:
+    """Whether ``after`` (the words past "<modal> she/he") asks for a thing for the one the
+    pronoun means: "have a coffee", "please borrow my stapler"."""
+    words = list(after[1:] if after[:1] == ["please"] else after)
+    if len(words) < 2 or words[0] not in _HAVING:
+        return False
+    if " ".join(words[1:3]) in _NOT_HAD or words[1] in ("to", "it", "them", "that", "this"):
+        return False
+    return True
+
+
 def _caused_matches(text: str) -> list[re.Match[str]]:
     """The "<modal> she/he" of ``text`` that a causative follows ("can she get my report
-    printed": the thing is made for the one the pronoun means)."""
-    return [
-        m
-        for m in _CAUSED_SUBJECT.finditer(text)
-        if caused_for(m.group("modal").lower(), language.words(text[m.end() :]))
-    ]
+    printed": the thing is made for the one the pronoun means), or a thing had, borrowed or
+    used ("can he have a coffee": the coffee is for the one the pronoun means, never the
+    speaker's)."""
+    out: list[re.Match[str]] = []
+    for m in _CAUSED_SUBJECT.finditer(text):
+        after = language.words(text[m.end() :])
+        if caused_for(m.group("modal").lower(), after) or _had_for(after):
+            out.append(m)
+    return out
 
 
 def unnamed_subject(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
