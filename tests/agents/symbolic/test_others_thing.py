@@ -22,6 +22,10 @@ from _offices import parser, tasks_of
         ("default", "Zhang's laptop needs printing", "lee", "Zhang Wei's laptop"),
         ("default", "Wang's tablet could do with a copy", "lee", "Wang Fang's tablet"),
         ("default", "can you print Zhang's monitor, thanks", "lee", "Zhang Wei's monitor"),
+        # a word the dictionary lacks names a thing as well: printing the speaker's own
+        # file for "Mao's rota" was a wrong physical action
+        ("default", "print Mao's rota", "sun", "Mao Jun's rota"),
+        ("default", "print Mao's powerpoint", "sun", "Mao Jun's powerpoint"),
     ],
 )
 def test_a_colleagues_other_thing_is_declined_not_swapped(

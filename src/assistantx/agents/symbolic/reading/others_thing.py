@@ -56,7 +56,8 @@ def others_thing_declined(
         if thing is None or thing.kind != "word" or thing.end - thing.start != 1:
             continue
         word = tokens[thing.start].word
-        if word in _PRO_FORMS or not language.is_noun(word):
+        # "Mao's rota", "Zhang's powerpoint": a word the dictionary lacks names a thing too
+        if word in _PRO_FORMS or not (language.is_noun(word) or not language.lemmas(word)):
             continue
         owner = office.person(m.id).name
         item = office.item_type(stood_in[0].item or "").name
