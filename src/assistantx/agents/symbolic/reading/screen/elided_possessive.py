@@ -48,14 +48,38 @@ def things_named(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list[M
     """The item mentions of ``mentions`` that name a thing, in order: not those said bare
     right after a preposition of time or going ("took the stapler to lunch": lunch is when,
     not a thing), which an elided possessive never means."""
+    items = [m for m in mentions if m.kind == "item"]
     return [
         m
-        for m in mentions
-        if m.kind == "item"
-        and not (
+        for m in items
+        if not (
             m.start > 0 and tokens[m.start - 1].word in _OCCASION_PREPOSITIONS and not m.possessive
         )
+        and not _purpose_of(tokens, mentions, items, m)
     ]
+
+
+# how many words may stand between "for" and the thing a purpose names ("for *her moss*
+# packets")
+_PURPOSE_WORDS = 3
+# what may stand there: plain words and whose it is ("for *her* moss packets", "for *my* labels")
+_DESCRIBING = frozenset({"word", "pronoun", "self"})
+
+
+def _purpose_of(
+    tokens: Sequence[Token], mentions: Sequence[Mention], items: Sequence[Mention], m: Mention
+) -> bool:
+    """Whether item ``m`` is what another thing named before it is for ("a bone folder *for
+    her moss packets*, can you take mine"): the thing worked on, never the one lent, so an
+    elided possessive never means it."""
+    at = m.start - 1
+    while at >= 0 and m.start - at <= _PURPOSE_WORDS and tokens[at].word != "for":
+        if any(x.start <= at < x.end and x.kind not in _DESCRIBING for x in mentions):
+            return False  # a person, a place or another thing between: no plain purpose
+        at -= 1
+    if at < 1 or tokens[at].word != "for":
+        return False
+    return any(x.end == at for x in items)
 
 
 def _position(lexed: Lexed, word: str) -> int | None:
