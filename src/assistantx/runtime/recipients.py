@@ -212,6 +212,7 @@ class _OfficeWords:
         "name_words",
         "names_by_first",
         "operations",
+        "ranks",
         "rooms",
         "seated",
         "spellings",
@@ -223,6 +224,9 @@ class _OfficeWords:
             self.names_by_first.setdefault(key[0], []).append((key, people))
         self.items = _item_words(office)
         self.name_words = _name_words(office)
+        # "to the curator" (of "Curator Moreau"): a one-word rank is a role title, named in
+        # lower case too, as the reader reads it
+        self.ranks = frozenset(r for r in rank_titles(office) if " " not in r)
         # "the carver on bench 3 needs ...": the colleague of that workstation, named (the
         # reader's ``seated_subject``)
         said = [(t.name, *t.synonyms) for t in office.item_types]
@@ -287,7 +291,8 @@ def _mentions(words_of_office: _OfficeWords, words: list[_Word]) -> list[_Mentio
             word = key[0]
             if len(key) == 1 and n > 0 and words[n - 1].folded in ("a", "an"):
                 continue  # "for a min": nobody is "a Min" (the reader's reading too)
-            if len(key) == 1 and word not in _ROLE_TITLES and is_word_name(word):
+            role = word in _ROLE_TITLES or word in words_of_office.ranks
+            if len(key) == 1 and not role and is_word_name(word):
                 if not _written_as_name(words, n, items, name_words) and not _said_alone_as_fix(
                     words, n
                 ):

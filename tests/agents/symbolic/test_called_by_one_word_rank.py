@@ -73,3 +73,32 @@ def test_the_guard_counts_the_title_as_naming_its_holder() -> None:
     assert named_recipients(office, sent) == {"luis"}
     shared = memory("tom", "send my spreadsheet to the Sister")
     assert named_recipients(office, shared) == set()
+
+
+@pytest.mark.parametrize(
+    ("text", "recipient"),
+    [
+        ("take my radio to the captain", "luis"),
+        ("send my spreadsheet to the director pls", "ada"),
+    ],
+)
+def test_the_rank_in_lower_case_names_its_holder(text: str, recipient: str) -> None:
+    # round 234: "give the hard copy to the curator" (of "Curator Moreau") printed the
+    # file for the speaker; people type ranks in lower case as "the manager" is
+    frame = _frame(text)
+    assert frame.question is None, frame
+    assert [t.recipient for t in frame.tasks] == [recipient], frame
+    assert named_recipients(port_office(), memory("tom", text)) == {recipient}
+
+
+def test_the_lower_case_rank_as_signer_is_counted_by_the_guard() -> None:
+    text = "get the director to sign my timesheet"
+    frame = _frame(text)
+    assert [(t.kind, t.actor) for t in frame.tasks] == [("sign", "ada")], frame
+    assert named_doers(port_office(), memory("tom", text)) == {"ada"}
+
+
+def test_a_lower_case_shared_rank_still_names_nobody() -> None:
+    assert (
+        named_recipients(port_office(), memory("tom", "send my spreadsheet to the sister")) == set()
+    )

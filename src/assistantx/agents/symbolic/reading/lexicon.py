@@ -488,6 +488,9 @@ class Lexicon:
                 lex.people[phrase] = set(holders)
             if " " not in phrase:  # "the Director" (of "Director Watanabe"): as a nickname
                 lex.alias_words.add(phrase)
+                # "give it to the curator" (of "Curator Moreau"): a rank is a role, said in
+                # lower case too, as "the manager" of "Manager Mao" is
+                lex.roles.setdefault(phrase, set()).update(holders)
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
                 key = key_of(name) or _title_word(name)  # "ms" for a manuscript
