@@ -139,3 +139,37 @@ def test_a_persons_work_on_the_thing_handed_is_read_as_before() -> None:
 def test_a_plan_on_a_thing_of_the_office_is_read_as_before() -> None:
     frame = _lab("Take my binder to Kai, he needs to sign my form")
     assert [(t.kind, t.item) for t in frame.tasks] == [("transfer", "binder")], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "task"),
+    [
+        # round 234: the fish's treatment sheet is the speaker's, not someone to ask about
+        (
+            "the new seedlings in the lab need their document copied, can you sort that",
+            ("copy", "document", "lee", "lee"),
+        ),
+        (
+            "the new tadpoles in the quarantine tank need their document copied pls",
+            ("copy", "document", "lee", "lee"),
+        ),
+    ],
+)
+def test_things_or_creatures_their_is_in_the_speakers_hands(
+    text: str, task: tuple[str, str, str, str]
+) -> None:
+    frame = parser("default").parse(text, "lee", confirmed=True)
+    assert frame.question is None or "their" not in frame.question, frame
+    assert [(t.kind, t.item, t.owner, t.recipient) for t in frame.tasks] == [task], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Mark and Grace need their document copied",  # colleagues: whose is asked
+        "they need their document copied",  # a pronoun: nobody to take it from
+    ],
+)
+def test_colleagues_or_pronouns_before_their_are_no_things(text: str) -> None:
+    frame = parser("default").parse(text, "lee", confirmed=True)
+    assert frame.tasks == [], frame

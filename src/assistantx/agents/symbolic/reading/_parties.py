@@ -641,11 +641,15 @@ def _outsider_before(tokens: Sequence[Token], at: int) -> bool:
     return False
 
 
-def _outsider_subject(tokens: Sequence[Token], at: int) -> bool:
+def _outsider_subject(
+    tokens: Sequence[Token], at: int, people_at: frozenset[int] = frozenset()
+) -> bool:
     """Whether the possessive at ``at`` ("their") is said of the outsider who opens its
     clause as the subject of a want or need right before it: "a visitor needs their pass
     signed off", "customer needs their receipt stamped", "my patient needs their form
-    copied". The outsider is named by a kind of person, after a determiner or bare."""
+    copied". The outsider is named by a kind of person, after a determiner or bare, or is a
+    plural of things or creatures (``_things_subject``); ``people_at``: where colleagues
+    are named, who are never such a subject."""
     start = max((k for k in range(at) if tokens[k].opens or tokens[k].after_pause), default=0)
     k = start + 1 if tokens[start].word in _OUTSIDER_DETERMINERS else start
     if k >= at:
@@ -653,12 +657,40 @@ def _outsider_subject(tokens: Sequence[Token], at: int) -> bool:
     word = tokens[k].word
     singular = word[:-1] if word.endswith("s") else word
     if word not in _OUTSIDER_NOUNS and singular not in _OUTSIDER_NOUNS:
-        return False
+        return _things_subject(tokens, k, at, people_at)
     between = [t.word for t in tokens[k + 1 : at]]
     return 0 < len(between) <= _WANT_NEAR and between[-1] in _OUTSIDER_WANTS
 
 
-def _outsiders_in_hand(tokens: Sequence[Token], at: int, end: int) -> bool:
+# how many words a plural subject's phrase may run to before its need ("the new tangs in QT")
+_SUBJECT_WORDS = 7
+# words that are no part of a thing's or creature's noun phrase
+_NO_SUBJECT = (
+    english.words("pronouns") | english.words("subject_pronouns") | english.words("self_words")
+)
+
+
+def _things_subject(tokens: Sequence[Token], k: int, at: int, people_at: frozenset[int]) -> bool:
+    """Whether the clause opening at ``k`` is a plural noun phrase of no colleague, then a
+    want or need right before ``at``: "the new tangs in QT need their treatment sheet
+    stamped", "the seedlings need their labels printed". Creatures and things the speaker
+    looks after are nobody of the office, so their paper is in the speaker's hands."""
+    if at - 1 <= k or tokens[at - 1].word not in _OUTSIDER_WANTS or at - 1 - k > _SUBJECT_WORDS:
+        return False
+    phrase = range(k, at - 1)
+    if any(i in people_at or tokens[i].word in _NO_SUBJECT for i in phrase):
+        return False
+    return any(_plural_noun(tokens[i].word) for i in phrase)
+
+
+def _plural_noun(word: str) -> bool:
+    """A plural the dictionary knows as a noun ("tangs", "seedlings")."""
+    return word.endswith("s") and language.is_noun(word) and language.is_plural_noun(word)
+
+
+def _outsiders_in_hand(
+    tokens: Sequence[Token], at: int, end: int, people_at: frozenset[int] = frozenset()
+) -> bool:
     """Whether "their" at ``at`` is the outsider's who opens its clause (``_outsider_subject``)
     and the thing it owns, ending at ``end``, is to be worked on: a participle of the work
     after it ("their pass signed off", "their form copied") or what it should bear ("their
@@ -667,7 +699,7 @@ def _outsiders_in_hand(tokens: Sequence[Token], at: int, end: int) -> bool:
         return False
     after = tokens[end].word
     worked = after == "with" or language.is_past_participle(after)
-    return worked and _outsider_subject(tokens, at)
+    return worked and _outsider_subject(tokens, at, people_at)
 
 
 def owner_of(
@@ -695,7 +727,10 @@ def owner_of(
             for_theirs = prev_word(tokens, p.start) == "for" and (
                 outsider_said or points_to_outsider(tokens, p.start)
             )
-            if not others and _outsiders_in_hand(tokens, p.start, m.end):
+            people_at = frozenset(
+                i for x in ms if x.kind == "person" for i in range(x.start, x.end)
+            )
+            if not others and _outsiders_in_hand(tokens, p.start, m.end, people_at):
                 # "a visitor needs their pass signed off": the outsider's thing, to be worked
                 # on, is in the speaker's hands (no colleague's to ask about)
                 return requester
