@@ -9,7 +9,7 @@ import re
 from collections.abc import Sequence
 
 from assistantx.agents.symbolic.reading.her_or_hers import giving_her_in, kept_from_her
-from assistantx.agents.symbolic.reading.lexicon import Mention
+from assistantx.agents.symbolic.reading.lexicon import Lexed, Mention
 from assistantx.agents.symbolic.reading.screen.contrast import CHOSEN
 from assistantx.agents.symbolic.reading.screen.described_one import described_ones
 from assistantx.agents.symbolic.reading.screen.elided_possessive import (
@@ -28,7 +28,7 @@ from assistantx.agents.symbolic.reading.screen.purpose_object import (
 )
 from assistantx.agents.symbolic.reading.screen.service_input import worked_on
 from assistantx.agents.symbolic.reading.screen.statement import ONE_HELD
-from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.agents.symbolic.reading.screen.terms import Terms, article
 from assistantx.agents.symbolic.reading.screen.thanks import THANKED
 from assistantx.agents.symbolic.reading.speech import NEED_PHRASES
 from assistantx.agents.symbolic.reading.tokens import Token, gaps
@@ -55,6 +55,8 @@ def rewrite(
     text, found = purposes(terms, text, unmet=True)
     evidence += found
     text, found = kept_things(terms, msg, text)
+    evidence += found
+    text, found = container_of_named(terms, msg, text)
     evidence += found
     # "jonno's asked for ...": the "'s" of "has", so the need's subject is Jonno
     text = _HAS_ASKED.sub(r"\1 has asked", text)
@@ -209,6 +211,71 @@ def container_of(terms: Terms, text: str, thing: str) -> tuple[str, list[Evidenc
         evidence = [Evidence(words=match.group(0), meaning=f"a {noun} of {thing}")]
         return text[: match.start()] + f"a {thing}" + text[match.end() :], evidence
     return text, []
+
+
+# A container or measure a thing is counted in ("a box", "a roll", "a ream", "a handful"):
+# its unit nouns and the portions of a thing, less the words that count no container
+_CONTAINERS = (english.words("unit_nouns") | english.words("portion_words")) - frozenset(
+    {"one", "ones", "couple", "few"}
+)
+# what ends an exclamation or a fragment said alone ("tape!!!", "staples...", "gloves -")
+_FRAGMENT_END = re.compile(r"\s*(?:[.!?;…]+|\s[-–—]+)\s*")
+_ASKED_ONE = re.compile(r"\b(?:a|an|one|another)\s+([a-z]+)\b", re.IGNORECASE)
+
+
+def container_of_named(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
+    """ "tape!!! a roll from the cupboard please", "staples... grab me a box from the
+    cabinet": a thing named first and alone, as an exclamation or a fragment (a piece that is
+    only an item's name, ended as a sentence is), then a container or measure of no name of
+    the office asked for after it ("a roll", not "a roll of tape", nor "a power bank") is
+    that much of the thing named: the container is said as the thing and the fragment drops.
+    Only a thing counted so is: a supply used up, stuff, or a plural said ("pens!"), never
+    one singular thing ("stapler! a box"). A container asked for with nothing named before it
+    is left as said."""
+    first = next((p for p in msg.pieces if p.words), None)
+    if first is None or not _named_alone(first.lexed):
+        return text, []
+    item = first.lexed.mentions[0].ids[0]
+    kind = terms.office.item_type(item)
+    if not (kind.consumable or kind.mass or language.is_plural_noun(first.text.lower())):
+        return text, []  # "stapler! a box": no box holds one stapler
+    lead = len(text) - len(text.lstrip())
+    if not text[lead:].startswith(first.text):
+        return text, []
+    end = _FRAGMENT_END.match(text, lead + len(first.text))
+    if end is None:
+        return text, []
+    rest = text[end.end() :]
+    for match in _ASKED_ONE.finditer(rest):
+        noun = match.group(1).lower()
+        if terms.names_an_item(rest[: match.start()]):
+            break  # another thing named between: the container may be of that one
+        after = rest[match.end() :]
+        if noun not in _CONTAINERS or terms.names_at(rest[match.start(1) :]):
+            continue
+        if re.match(r"\s+of\b", after, re.IGNORECASE) or compound_head(after):
+            continue  # "a box of pens", "a bag clip": what it holds is said, or its own thing
+        thing = kind.name
+        said = f"{article(thing)} {thing}"
+        words = f"{first.text} ... {match.group(0)}"
+        evidence = [Evidence(words=words, meaning=f"a {noun} of {thing}")]
+        return rest[: match.start()] + said + after, evidence
+    return text, []
+
+
+def _named_alone(lexed: Lexed) -> bool:
+    """Whether a piece's words are all one item's name, read as that item alone."""
+    mentions = [m for m in lexed.mentions if m.kind != "word"]
+    if len(mentions) != 1:
+        return False
+    m = mentions[0]
+    return (
+        m.kind == "item"
+        and len(m.ids) == 1
+        and not m.possessive
+        and m.start == 0
+        and m.end == len(lexed.tokens)
+    )
 
 
 def dangling_possessives(terms: Terms, msg: Message, text: str) -> tuple[str, list[Evidence]]:
