@@ -27,6 +27,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # a past event of the speaker's own thing ("..., mine went in the compost")
         "statement",  # news of someone no colleague ("Blaze flew brilliantly today")
         "statement",  # a contrast of kinds beside a request ("the file not a printout")
+        "statement",  # a hedged view of what a thing needs ("imo the room could use a table")
         "wish",
         "wish",  # a hope about a colleague ("really hope Otto gets his phone back")
         "thanks",

@@ -39,6 +39,7 @@ from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.nothing_follows import nothing_follows
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
+from assistantx.agents.symbolic.reading.screen.opinion import opinion
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_doing import others_doing
 from assistantx.agents.symbolic.reading.screen.others_plan import others_plan
@@ -127,6 +128,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # its subject nobody of the office, its fragments where it went; nothing fetched
     ("statement", told_subject),
     ("statement", contrast),
+    # "I reckon the report needs a full rewrite": a view of what a thing needs, with no
+    # request in the message, told; before its need is read as a thing wanted or declined
+    ("statement", opinion),
     ("wish", wish),
     ("wish", hope),
     ("thanks", thanks),
