@@ -29,6 +29,19 @@ from assistantx.agents.symbolic.answers import says_not_known, stance
         ("Yes, it's in the key safe: Noémie can take it out for the robot.", "yes"),
         ("Sure, ask Nöel", "yes"),
         ("No, Noémie has it", "no"),
+        # a refusing word inside a name ("the negative vault", "the lost property box") is
+        # no refusal: an owner's yes naming where the thing is kept was read as a no
+        (
+            "Yes, you can have my negatives. It is kept in the negative vault, not with me: "
+            "Tom can take it out for the robot.",
+            "yes",
+        ),
+        ("sure, it's in the lost property box", "yes"),
+        ("yes, after the busy season", "yes"),
+        ("yes but I lost it", "no"),
+        ("sorry, it's in the negative vault", "no"),
+        ("that's a negative", "no"),
+        ("yes, I'm away", "no"),
     ],
 )
 def test_stance(text: str, expected: str) -> None:

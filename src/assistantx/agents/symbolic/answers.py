@@ -43,9 +43,18 @@ def _clean(text: str) -> str:
     return re.sub(r"\s+", " ", re.sub(r"[^a-z0-9 ]+", " ", text)).strip()
 
 
+# "it is kept in the negative vault", "in the lost property box", "over the busy season": a
+# refusing word said after a determiner and before another word describes a thing, a place's
+# or a time's name, and refuses nothing
+_NAMING = re.compile(
+    r"\b(?:the|a|an|my|our|your|his|her|their|this|that)\s+(?:negative|lost|busy|away|none)"
+    r"(?=\s+(?!and\b|or\b|but\b)[a-z])"
+)
+
+
 def stance(text: str) -> Stance:
     """Whether a reply agrees, refuses, or says neither."""
-    t = _clean(text)
+    t = _NAMING.sub(" ", _clean(text))
     for phrase in _POSITIVE_PHRASES:
         t = t.replace(phrase, "no problem_ok")
     positive = bool(_POSITIVE.search(t)) or "problem_ok" in t
