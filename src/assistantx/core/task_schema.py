@@ -96,6 +96,12 @@ class Hint(BaseModel):
     said: str = Field(description="the requester's words")
 
 
+# How the reader's evidence opens for a fallback it kept back ("bring me a stapler, or if
+# there isn't one, scissors": only the stapler is fetched), so the outcome can say it was not
+# used (reading/fallback.py, decision.py).
+FALLBACK_MEANING = "a fallback: "
+
+
 class Evidence(BaseModel):
     """Which words gave which part of the reading."""
 

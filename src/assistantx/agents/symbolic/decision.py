@@ -37,7 +37,7 @@ from assistantx.core.actions import (
     WaitInPlace,
 )
 from assistantx.core.office import Office
-from assistantx.core.task_schema import operation_of
+from assistantx.core.task_schema import FALLBACK_MEANING, operation_of
 from assistantx.core.wording import (
     done_words,
     file_noun,
@@ -234,6 +234,12 @@ class Decider:
             if ev.locker:
                 kept = ", ".join(self._item_words(i, requester) for i in ev.locker)
                 parts.append(f"Still in the robot's locker: {kept}.")
+        # a fallback the reading kept back ("..., or if there isn't one, scissors"): never
+        # fetched with the first, so the requester is told it was not used
+        for said in (
+            e.words for e in agenda.frame.evidence if e.meaning.startswith(FALLBACK_MEANING)
+        ):
+            parts.append(f'Your fallback ("{said}") was not used; ask me if you want it.')
         summary = " ".join(parts)[:2000] or "Nothing to do."
         if not not_done:
             return "every task is done", [Stop(outcome="done", summary=summary)]

@@ -27,6 +27,7 @@ from helpers.music_school import music_school
 ORDER = [
     "pictographs",
     "undotted",
+    "fallback",
     "possessive_pronouns",
     "question_preface",
     "hyphened_nouns",
@@ -118,6 +119,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 EXAMPLES: dict[str, str] = {
     "pictographs": "bring me a pen and no marker 😩",
     "undotted": "bring the book to Dr. Grace Huang",
+    "fallback": "bring me a stapler, or if there isn't one, scissors",
     "possessive_pronouns": "Wang and Zhou both sent slides. print hers and bring it to me",
     "question_preface": "frank question: who's got a stapler I could use tomorrow?",
     "hyphened_nouns": "could you bring me a pen for the warm-up drill?",
@@ -271,6 +273,8 @@ EFFECTS: dict[str, tuple[str, str, str]] = {
 # The steps that end the reading (what they say), or keep what is asked later.
 STOPS = {"placeholder": ("default", "question"), "beside_a_thing": ("harbour", "decline")}
 KEPT = {"emailed_paper": "chambers post"}
+# The steps that take words out and say why in the reading's evidence (``Said.notes``).
+NOTED = {"fallback": ("default", "scissors")}
 
 
 @functools.cache
@@ -328,7 +332,17 @@ def test_the_parser_runs_the_table_first_every_step_in_order() -> None:
 
 
 def test_every_step_is_one_of_the_tested_ones() -> None:
-    assert set(EFFECTS) | set(STOPS) | set(KEPT) == set(ORDER)
+    assert set(EFFECTS) | set(STOPS) | set(KEPT) | set(NOTED) == set(ORDER)
+
+
+@pytest.mark.parametrize("name", sorted(NOTED))
+def test_a_step_that_takes_words_out_says_so_in_the_evidence(name: str) -> None:
+    office, gone = NOTED[name]
+    said, before, after = _through(office, name)
+    assert isinstance(after, Said) and after.stop is None and after.notes
+    assert gone in before and gone not in after.text and said.notes == after.notes
+    frame = _parser(office).parse(EXAMPLES[name], _requester(office))
+    assert frame.evidence[: len(said.notes)] == list(said.notes)
 
 
 @pytest.mark.parametrize("name", sorted(EFFECTS))

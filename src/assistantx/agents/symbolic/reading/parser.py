@@ -279,13 +279,13 @@ class InstructionParser:
         )
         decided = self._decide(said, spoken, request, frame, requester)
         if isinstance(decided, TaskFrame):
-            return decided
+            return _noted(decided, said)
         whole = spoken.msg.lexed
         frame = with_doers(self.office, whole, frame, requester, confirmed=confirmed)
         plain = keepers_work(self.office, whole, frame, requester)
         if plain is not None:
             return self.parse(plain, requester, confirmed=confirmed)
-        return judge(self.office, decided, frame, requester, confirmed=confirmed)
+        return _noted(judge(self.office, decided, frame, requester, confirmed=confirmed), said)
 
     def _decide(
         self, said: Said, spoken: Spoken, request: Request, frame: TaskFrame, requester: str
@@ -913,6 +913,14 @@ def _said_mentions(spoken: Spoken) -> tuple[Mention, ...]:
     if not aside:
         return spoken.msg.lexed.mentions
     return tuple(m for p in spoken.msg.pieces if p not in aside for m in p.lexed.mentions)
+
+
+def _noted(frame: TaskFrame, said: Said) -> TaskFrame:
+    """The frame with what the surface took out said first in its evidence (a fallback kept
+    back: "a fallback: 'scissors' only if stapler cannot be had, ...")."""
+    if not said.notes:
+        return frame
+    return frame.model_copy(update={"evidence": [*said.notes, *frame.evidence]})
 
 
 def _each_errand_once(frame: TaskFrame) -> TaskFrame:

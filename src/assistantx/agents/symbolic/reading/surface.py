@@ -60,6 +60,7 @@ from assistantx.agents.symbolic.reading.emailed_paper import (
     emailed_paper,
 )
 from assistantx.agents.symbolic.reading.excluded_owner import excluded_owners
+from assistantx.agents.symbolic.reading.fallback import fallback
 from assistantx.agents.symbolic.reading.file_subject import without_file_subject
 from assistantx.agents.symbolic.reading.form_said_after import with_form_said_after
 from assistantx.agents.symbolic.reading.format_reason import without_format_reasons
@@ -122,7 +123,7 @@ from assistantx.agents.symbolic.reading.work_said_as_product import WorkSaidAsPr
 from assistantx.agents.symbolic.reading.worked_room import WorkedRoom
 from assistantx.core import language, task_kinds
 from assistantx.core.office import Office
-from assistantx.core.task_schema import TaskFrame
+from assistantx.core.task_schema import Evidence, TaskFrame
 
 __all__ = ["STEPS", "Asked", "Said", "Step", "Surface"]
 
@@ -140,6 +141,8 @@ class Said:
     text: str
     stop: TaskFrame | None = None
     emailed: EmailedPaper | None = None
+    # what a step took out and why, for the reading's evidence (a fallback kept back)
+    notes: tuple[Evidence, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -234,15 +237,17 @@ class Surface:
         it says."""
         asked = Asked(requester, confirmed)
         emailed: EmailedPaper | None = None
+        notes: tuple[Evidence, ...] = ()
         for step in self.steps:
             out = step.rewrite(self, text, asked)
             if isinstance(out, str):
                 text = out
             elif out.stop is not None:
-                return Said(out.text, out.stop, emailed)
+                return Said(out.text, out.stop, emailed, notes)
             else:
-                text, emailed = out.text, out.emailed
-        return Said(text, None, emailed)
+                text, emailed = out.text, out.emailed or emailed
+                notes += out.notes
+        return Said(text, None, emailed, notes)
 
     # -- what the steps ask of the office's words ----------------------------------------
     def item_types(self, phrase: str) -> set[str]:
@@ -334,6 +339,11 @@ class Surface:
 
 
 # -- the steps that end the reading, or keep what is asked later ------------------------------
+def _fallback(s: Surface, text: str) -> str | Said:
+    rest, notes = fallback(s.office, s.lex, text)
+    return Said(rest, notes=tuple(notes)) if notes else text
+
+
 def _placeholder(s: Surface, text: str, asked: Asked) -> str | Said:
     """Which thing is asked, where a placeholder is taken from a place of the office."""
     if says_a_placeholder(text):
@@ -398,6 +408,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # a second thing wanted only where the first cannot be had: kept back, never fetched too
+    # e.g. "bring me a stapler, or if there isn't one, scissors"
+    Step("fallback", lambda s, t, a: _fallback(s, t)),
     # a possessive pronoun for a thing named before: "her one", of whoever she is
     # e.g. "Wang and Zhou both sent slides. print hers and bring it to me"
     Step("possessive_pronouns", lambda s, t, a: possessive_pronouns(t)),

@@ -13,7 +13,7 @@ enough; said in another piece of the message ("..., not sure which yet. can you 
 one") a mark of doubt ties it to the request: "? or", "or maybe", or one of
 ``unsure_choice_marks`` ("not sure which", "whichever", "either"). A bare fragment that opens
 with "either" and the two things is a request said short. "X and Y" asks for both; "X, or if
-there isn't one, Y" is a fallback (no thing right after "or") and is read as before."""
+there isn't one, Y" is a fallback, never asked which: the surface keeps Y back (``fallback``)."""
 
 from __future__ import annotations
 
