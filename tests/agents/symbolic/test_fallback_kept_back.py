@@ -118,6 +118,7 @@ async def test_end_to_end_only_the_first_is_handed_over_and_the_fallback_told() 
     handed = _handed_to(run, "sun")
     assert handed == {"stapler"}, trace.summary
     assert "fallback" in (trace.summary or "") and "scissors" in (trace.summary or "")
+    assert "was not needed" in (trace.summary or ""), trace.summary
 
 
 async def test_end_to_end_two_things_joined_are_both_handed_over_untold() -> None:

@@ -239,7 +239,10 @@ class Decider:
         for said in (
             e.words for e in agenda.frame.evidence if e.meaning.startswith(FALLBACK_MEANING)
         ):
-            parts.append(f'Your fallback ("{said}") was not used; ask me if you want it.')
+            if not_done:
+                parts.append(f'Your fallback ("{said}") was not used; ask me if you want it.')
+            else:
+                parts.append(f'Your fallback ("{said}") was not needed.')
         summary = " ".join(parts)[:2000] or "Nothing to do."
         if not not_done:
             return "every task is done", [Stop(outcome="done", summary=summary)]
