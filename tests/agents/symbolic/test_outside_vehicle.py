@@ -57,3 +57,18 @@ def test_the_speakers_own_doing_is_told() -> None:
     frame = _default("I put my book in my car")
     assert frame.tasks == [] and frame.question is None, frame
     assert frame.decline is not None and "outside the office" not in frame.decline, frame
+
+
+@pytest.mark.parametrize(
+    ("text", "item"),
+    [
+        # round 231: where a lack is, said with "we're" (a verb of being), is no placement;
+        # the request after it asks for a bag of what ran out
+        ("we're out of paper in the van, can you grab a pack from the supply room", "paper"),
+        ("we're out of paper on the van, can you bring me some", "paper"),
+    ],
+)
+def test_where_a_lack_is_is_no_placement(text: str, item: str) -> None:
+    frame = _default(text)
+    assert frame.decline is None or "outside the office" not in frame.decline, frame
+    assert [(t.item, t.recipient) for t in frame.tasks] == [(item, "sun")], frame

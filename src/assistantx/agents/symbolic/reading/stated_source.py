@@ -54,6 +54,10 @@ def stated_sources(
     for m in mentions:
         if m.kind == "person" and len(m.ids) == 1:
             if _has_some_after(tokens, m.end, tokens[m.end - 1].possessive):
+                kept = _kept_in(tokens, mentions, m.end)
+                if kept is not None:  # "Siobhán usually has them in the key press": there
+                    found.append(_source(office, kept))
+                    continue
                 named = [
                     n.ids[0]
                     for n in mentions
@@ -69,6 +73,27 @@ def stated_sources(
         ):
             found.append(_source(office, m))
     return found
+
+
+# how far after a colleague's "has some" the place they keep them may be said ("has them
+# *in the key press*", "usually has a few spare ones *at the stores*")
+_KEPT_NEAR = 8
+
+
+def _kept_in(tokens: Sequence[Token], mentions: Sequence[Mention], at: int) -> Mention | None:
+    """The facility or place of the office said after a colleague's "has some", with "in",
+    "at" or "on" before it, in the same clause: where the things are, which the colleague
+    only looks after or keeps there ("Siobhán usually has them in the key press")."""
+    for m in mentions:
+        if m.kind not in ("facility", "place") or not at <= m.start < at + _KEPT_NEAR:
+            continue
+        if any(t.opens or t.after_pause for t in tokens[at : m.start + 1]):
+            return None
+        n = m.start - 1
+        while n >= at and tokens[n].word in _FILLERS:
+            n -= 1
+        return m if n >= at and tokens[n].word in _AT else None
+    return None
 
 
 def _has_some_after(tokens: Sequence[Token], at: int, contracted: bool) -> bool:

@@ -49,6 +49,8 @@ def head_noun_back(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         head = match.group("head").lower()
         if names_something(terms, head):
             continue  # "a ruler", "the tape": the office's own word, read as it is
+        if opens_a_long_name(terms, text[match.start("head") :]):
+            continue  # "in the key press": the first word of a facility's own name
         before = _named_before(text, named, match.start())
         owners = {i for i in before if head in _heads(terms, i)}
         if len(owners) != 1:
@@ -68,6 +70,16 @@ def names_something(terms: Terms, word: str) -> bool:
         word in table
         for table in (lex.items, lex.people, lex.name_words, lex.facilities, lex.places)
     ) or (word in lex.cue_words)
+
+
+def opens_a_long_name(terms: Terms, rest: str, kinds: frozenset[str] | None = None) -> bool:
+    """Whether ``rest`` opens with a name of the office of two words or more ("key press" of
+    the key cabinet, "test records" of the work pack), of one of ``kinds`` (any where None):
+    its first word is that name's, never a word to read back or unclip on its own."""
+    first = next(iter(terms.lex.read(rest).mentions), None)
+    if first is None or first.start != 0 or first.end < 2 or first.kind == "word":
+        return False
+    return kinds is None or first.kind in kinds
 
 
 def _named_before(text: str, named: list[Mention], at: int) -> set[str]:

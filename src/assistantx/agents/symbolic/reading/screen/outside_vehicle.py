@@ -27,6 +27,9 @@ _OFFICE = frozenset({"place", "facility", "group"})
 # the speaker (or a colleague) as the subject before the verb: told, not asked
 _SUBJECTS = frozenset({"i", "we", "ive", "id", "he", "she", "they", "someone", "somebody"})
 _PARTICLES = frozenset({"back", "down", "over", "up", "away", "out", "it", "them"})
+# "(we)'re out of ties on the van", "(it)'s in my car", "have some in the van": a verb of being
+# or having (its subject dropped with the contraction) tells where things are, asks nothing
+_STATES = frozenset({"be", "have"})
 
 
 def _service_named(terms: Terms, said: list[str]) -> bool:
@@ -49,6 +52,8 @@ def outside_vehicle(terms: Terms, msg: Message, piece: Piece, requester: str) ->
     verb = piece.verb_at(terms.en.lead_in)
     if verb >= len(words) or not language.verb_lemmas(words[verb]):
         return None
+    if language.verb_lemmas(words[verb]) & _STATES:
+        return None  # "we're out of zip ties on the van": where a lack is, no placement
     if _SUBJECTS.intersection(words[:verb]) or any(
         m.kind == "person" and not m.possessive for m in piece.lexed.mentions
     ):

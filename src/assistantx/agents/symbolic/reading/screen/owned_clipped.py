@@ -19,7 +19,10 @@ from __future__ import annotations
 
 import re
 
-from assistantx.agents.symbolic.reading.screen.head_noun_back import names_something
+from assistantx.agents.symbolic.reading.screen.head_noun_back import (
+    names_something,
+    opens_a_long_name,
+)
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import language
 from assistantx.core.task_schema import Evidence
@@ -28,6 +31,7 @@ _SPEAKERS = r"my|our"
 _OWNED = re.compile(rf"\b(?:{_SPEAKERS})\s+(?P<word>[^\W\d_]+)\b", re.IGNORECASE)
 _SHORTEST = 3  # "mic" of "microphone"
 _SHORT_BY = 2  # "batt" of "battery"
+_ITEMS = frozenset({"item"})
 
 
 def owned_clipped(terms: Terms, text: str, requester: str) -> tuple[str, list[Evidence]]:
@@ -41,6 +45,8 @@ def owned_clipped(terms: Terms, text: str, requester: str) -> tuple[str, list[Ev
             continue  # "my stapler": the office's own word
         if _modifies_a_noun(text[match.end("word") :]):
             continue  # "my cert translation", "my customs declaration": the head comes after
+        if opens_a_long_name(terms, text[match.start("word") :], _ITEMS):
+            continue  # "my test records": the office's own name of several words, as said
         meant = _meant(terms, text, word, requester)
         if meant is None:
             continue
