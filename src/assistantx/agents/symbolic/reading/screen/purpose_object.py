@@ -78,7 +78,28 @@ def said_as_declared(said: str, declared: str) -> bool:
         for n, w in enumerate(words)
         if not (0 < n < len(words) - 1 and noun_only(w) and noun_only(words[n + 1]))
     )
-    return plain == wanted or _clipped(words, wanted)
+    return plain == wanted or _clipped(words, wanted) or _split_particle(words, wanted)
+
+
+# "cut my pots off" of a declared "cut off": the object of a phrasal verb said between the verb
+# and its particle, as English puts a noun object there; up to this many words of it
+_SPLIT_OBJECT = 2
+_PARTICLES = frozenset({"off", "up", "out", "down", "away", "back", "over", "apart", "open"})
+
+
+def _split_particle(words: tuple[str, ...], wanted: tuple[str, ...]) -> bool:
+    """Whether ``words`` are the declared phrasal verb ``wanted`` ("cut off") with an object
+    between its verb and its particle ("cut pot off")."""
+    if len(wanted) != 2 or wanted[1] not in _PARTICLES:
+        return False
+    between = words[1:-1]
+    return (
+        len(words) >= 3
+        and words[0] == wanted[0]
+        and words[-1] == wanted[1]
+        and len(between) <= _SPLIT_OBJECT
+        and all(noun_only(w) for w in between)
+    )
 
 
 # "check the temps" of a declared "check temperatures": a word of the object said clipped, as
