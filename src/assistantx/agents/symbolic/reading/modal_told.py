@@ -56,3 +56,16 @@ def _subject_word(word: str) -> bool:
     """A word a subject is made of: a determiner, a noun, or a verb's "-ing" said as one
     ("laminating could take a while")."""
     return word in _OPENERS or language.is_noun(word) or language.is_present_participle(word)
+
+
+# "can barely see a thing", "could hardly hear you": a modal of ability with its subject
+# dropped and an adverb that nearly denies the verb tells the speaker's state; nobody asks
+# "can you barely ...?" ("not" left out: "can not" is rare in chat and reads either way)
+_ABILITY = frozenset({"can", "could", "cant", "couldnt"})
+_NEARLY_DENIED = english.words("negative_adverbs") - {"not", "longer", "nowhere"}
+
+
+def denied_ability(w: list[str]) -> bool:
+    """Whether the content words ``w`` open with "can"/"could" and an adverb that nearly
+    denies the verb after it ("can barely see a thing"): the speaker's state, told."""
+    return len(w) > 2 and w[0] in _ABILITY and w[1] in _NEARLY_DENIED

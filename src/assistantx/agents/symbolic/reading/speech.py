@@ -43,7 +43,7 @@ from assistantx.agents.symbolic.reading.grumble import grumble, grumbled, wished
 from assistantx.agents.symbolic.reading.handed_to_named import handed_to_named
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.linked_state import linked_state
-from assistantx.agents.symbolic.reading.modal_told import told_with_modal
+from assistantx.agents.symbolic.reading.modal_told import denied_ability, told_with_modal
 from assistantx.agents.symbolic.reading.no_work import no_work_told
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_verb
 from assistantx.agents.symbolic.reading.offers import offered
@@ -844,6 +844,8 @@ class SpeechActs:
             return True  # "courier leaves at 3", "print is too small": told of the thing
         if told_with_modal(w, self._named):
             return True  # "van run might be off": a forecast about the thing, told
+        if denied_ability(w):
+            return True  # "can barely see a thing": the speaker's state, told
         if w and subject_of_fault(w, 0):
             return True  # "drive in slot 4 has died": a fault told, context for the ask
         if _adjective_subject_told(w):
