@@ -144,4 +144,31 @@ def contracted_is(text: str, things: frozenset[str] = frozenset()) -> tuple[str,
         adverb = match.group("adverb") or ""
         return f"{subject} {verb} {adverb}{match.group('state')}{match.group('rest')}"
 
-    return _CONTRACTED.sub(expand, text), found
+    text, unmarked = _unmarked_is(text, things)
+    return _CONTRACTED.sub(expand, text), [*unmarked, *found]
+
+
+# "my probes dead": chat drops the apostrophe of "probe's"; a thing's word with an "s" stuck
+# on, then a one-word state that ends the clause, is the thing and "is"
+_UNMARKED = re.compile(
+    r"\b(?P<owner>my|our|the|your|his|her|their)\s+(?P<subject>[^\W\d_]+?)s\s+"
+    r"(?P<state>[a-z]+)\b(?=\s*(?:$|[.,;:!?\-–—]|\b(?:again|already|now|today)\b))",
+    re.IGNORECASE,
+)
+
+
+def _unmarked_is(text: str, things: frozenset[str]) -> tuple[str, list[Evidence]]:
+    """``text`` with "my probes dead" written "my probe is dead": the singular is one of the
+    office's things' words, the state one of a thing's ("dead", "broken", "flat") ending its
+    clause; a plural said as such ("my probes are dead") has its verb, and stays."""
+    found: list[Evidence] = []
+
+    def expand(match: re.Match[str]) -> str:
+        subject, state = match.group("subject"), match.group("state").lower()
+        if subject.lower() not in things or state not in _STATES:
+            return match.group(0)
+        said = f"{match.group('owner')} {subject} is {match.group('state')}"
+        found.append(Evidence(words=match.group(0), meaning=said))
+        return said
+
+    return _UNMARKED.sub(expand, text), found
