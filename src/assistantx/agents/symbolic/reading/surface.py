@@ -97,6 +97,7 @@ from assistantx.agents.symbolic.reading.poured_vessel import PouredVessel
 from assistantx.agents.symbolic.reading.problem_remedy import ProblemRemedies
 from assistantx.agents.symbolic.reading.products_listed import ProductsListed
 from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting_idioms
+from assistantx.agents.symbolic.reading.purpose_modifier import without_purpose_modifier
 from assistantx.agents.symbolic.reading.question_preface import without_question_preface
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
@@ -129,6 +130,9 @@ __all__ = ["STEPS", "Asked", "Said", "Step", "Surface"]
 
 # A finite verb put after a phrase to read it in a subject's place ("frank needs").
 _SUBJECT_PROBE = "needs"
+# the cues of errands, sendings and buyings: a purpose said with one ("for the take") is none
+# of the services a purpose's modifier names
+_NOT_SERVICE_CUES = frozenset({"give", "send", "make", "produce"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -212,6 +216,25 @@ class Surface:
             w for op in office.operations for v in op.verbs for w in v.lower().split()[:1]
         ) | frozenset(w for words in lex.cues.values() for w in words if " " not in w)
         self.office_phrases = frozenset({*lex.items, *lex.facilities, *lex.places})
+        # the words of the services and colleagues' work, any form, a purpose's modifier
+        # ("for the signature comparisons"); not an errand's, a sending's or a buying's
+        self.service_words = (
+            frozenset(
+                w
+                for kind, words in lex.cues.items()
+                if kind not in _NOT_SERVICE_CUES
+                for w in words
+                if " " not in w
+            )
+            | frozenset(
+                form
+                for op in office.operations
+                for v in op.verbs
+                for w in v.lower().split()[:1]
+                for form in language.verb_forms(w)
+            )
+            | frozenset(lex.operation_nouns)
+        )
         # "the carver on bench 3 needs ...": a colleague described by their workstation
         self.seated_subject = SeatedSubject.of_names(office, (*lex.items, *lex.facilities))
         # "the printer needs paper, grab some": the paper, for the printer
@@ -591,6 +614,12 @@ STEPS: tuple[Step, ...] = (
     Step(
         "attributive_work",
         lambda s, t, a: without_attributive_work(t, s.work_lemmas, s.office_phrases),
+    ),
+    # the service's word only says what the purpose is; no signing asked
+    # e.g. "Wang needs my stapler for the signature pages, can you take it to him"
+    Step(
+        "purpose_modifier",
+        lambda s, t, a: without_purpose_modifier(t, s.service_words, s.office_phrases),
     ),
     # the description is no owner or part; Wang's file
     # e.g. "Wang's setting-out file"
