@@ -212,3 +212,37 @@ def test_a_service_word_said_as_a_noun_is_no_service_asked(text: str, verb: str)
 def test_the_services_own_verb_before_its_noun_is_still_the_service() -> None:
     frame = _zhang("print this copy")
     assert frame.decline is None and [t.kind for t in frame.tasks] == ["print"], frame
+
+
+_lee = frame_reader(load_office, "lee")
+
+
+@pytest.mark.parametrize(
+    ("text", "verb"),
+    [
+        ("can you dust my report for prints", "dust"),
+        ("can you dust my cheque for prints", "dust"),
+        ("can you swab my mug for prints", "swab"),
+        ("could you photograph my report for copies", "photograph"),
+    ],
+)
+def test_a_plural_goal_after_for_is_no_service_asked(text: str, verb: str) -> None:
+    """Fixer 60e class 2: "prints" after "for" is what the unknown verb's work looks for, never
+    the print service run on the speaker's file."""
+    frame = _lee(text)
+    assert frame.tasks == []
+    assert frame.decline is not None and f"can't {verb}" in frame.decline
+
+
+@pytest.mark.parametrize(
+    ("text", "operation", "recipient"),
+    [
+        ("can you print my report for Wang", "print", "wang"),
+        ("send my file for printing", "print", "lee"),
+    ],
+)
+def test_the_service_asked_or_named_as_purpose_is_unchanged(
+    text: str, operation: str, recipient: str
+) -> None:
+    frame = _lee(text)
+    assert [(t.kind, t.recipient) for t in frame.tasks] == [(operation, recipient)]

@@ -87,6 +87,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # a told sentence before a request that names its own thing
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
+        "instead",  # a kind of machine the office lacks ("the raku kiln"): asked
         "unsupported",  # a service nothing here offers, before an outsider is asked about
         "unsupported",  # work no verb of the reader names ("polish my boots"; "sort out": asked)
         "instead",  # a colleague asked to run a facility they do not ("get Zhang to copy it")

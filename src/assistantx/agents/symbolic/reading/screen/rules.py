@@ -27,6 +27,7 @@ from assistantx.agents.symbolic.reading.screen.everyones import everyones
 from assistantx.agents.symbolic.reading.screen.exclusion import exclusion
 from assistantx.agents.symbolic.reading.screen.facility_report import facility_report
 from assistantx.agents.symbolic.reading.screen.facility_state_asked import facility_state_asked
+from assistantx.agents.symbolic.reading.screen.facility_variant import facility_variant
 from assistantx.agents.symbolic.reading.screen.fact import back_when, fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.fyi import fyi
@@ -220,6 +221,9 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", preamble),  # a told sentence no rule above read, before a request
     ("which", several_kept),
     ("unsupported", variant),
+    # "fire my jug in the raku kiln" where the office has one plain kiln: asked, never run on
+    # the office's one
+    ("instead", facility_variant),
     # a service nothing here offers is declined before an outsider recipient is asked
     # about: "scan my drawings and email them to the client" where there is no scanner
     # cannot be done for anyone, so a question would only offer what was never asked

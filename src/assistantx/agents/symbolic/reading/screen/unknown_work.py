@@ -140,7 +140,10 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None  # "coffee plz, double espresso": a word of the thing's kind, no verb
         whole_sub = terms.lex.read(sub.text)
         if not misfit and any(
-            m.kind == "cue" and not _noun_use(whole_sub, m.start) for m in whole_sub.mentions
+            m.kind == "cue"
+            and not _noun_use(whole_sub, m.start)
+            and not _goal_after_for(whole_sub, m.start)
+            for m in whole_sub.mentions
         ):
             return None  # "fire-proof my banner": the office's verb, as the lexicon reads it
         items = [m for m in lexed.mentions if m.kind == "item" and len(m.ids) == 1]
@@ -165,6 +168,10 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         if not items and not vague and worked and _named_thing(lexed, _names(sub.text)):
             # "lacquer the Amati copy", "varnish the desk": a thing the office does not list,
             # which no verb of its work or errands names; a person does it, never the robot
+            return _declined(terms, piece, said)
+        if not items and not vague and _any_goal_after_for(whole_sub):
+            # "dust my cheque for prints": the verb's goal, never the office's print run on
+            # whatever the speaker's words could mean
             return _declined(terms, piece, said)
         if not items:
             return None  # "could you tidy up the kitchen": nothing of the office to carry
@@ -263,6 +270,21 @@ def _noun_use(lexed: Lexed, at: int) -> bool:
         and not named.opens
         and lexed.tokens[at - 2].word in _OPENING
     )
+
+
+def _goal_after_for(lexed: Lexed, at: int) -> bool:
+    """Whether the word at token ``at`` is a plural noun after "for" ("dust my cheque *for
+    prints*", "search my bag for stamps"): what the asked verb's work looks for, its goal;
+    never the office's service whose product or verb shares the word ("for printing", a
+    gerund, names the service as the purpose and is no plural)."""
+    before = [t.word for t in lexed.tokens[max(0, at - 2) : at]]
+    if not before or not (before[-1] == "for" or before[-2:] == ["for", "any"]):
+        return False
+    return language.is_plural_noun(lexed.tokens[at].word)
+
+
+def _any_goal_after_for(lexed: Lexed) -> bool:
+    return any(m.kind == "cue" and _goal_after_for(lexed, m.start) for m in lexed.mentions)
 
 
 def _service_word_as_object(lexed: Lexed) -> bool:

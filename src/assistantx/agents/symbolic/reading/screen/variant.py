@@ -70,8 +70,8 @@ _STOPS = (
     | {"of", "as", "then", "one", "ones", "up", "down", "back", "away", "over", "around"}
 )
 _QUALITY_ANYWAY = english.words("replacement_words") | english.words("service_participles")
-_OFFICE_KINDS = frozenset({"person", "group", "item", "place", "facility", "cue", "self"})
-_MOST_MODIFIERS = 3
+OFFICE_KINDS = frozenset({"person", "group", "item", "place", "facility", "cue", "self"})
+MOST_MODIFIERS = 3
 
 
 @dataclass(frozen=True)
@@ -118,7 +118,7 @@ def variant(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding
 
 def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
-    office_at = {k for m in mentions if m.kind in _OFFICE_KINDS for k in range(m.start, m.end)}
+    office_at = {k for m in mentions if m.kind in OFFICE_KINDS for k in range(m.start, m.end)}
     breaks = gaps(piece.text, tokens)
     for m in mentions:
         if m.kind != "item" or not _made_here(terms, m) or _named_for(tokens, mentions, m):
@@ -128,10 +128,10 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         start = m.start
         while (
             start > 0
-            and m.start - start < _MOST_MODIFIERS
+            and m.start - start < MOST_MODIFIERS
             and (start - 1) not in office_at
             and not breaks[start].strip()
-            and _modifier(terms, tokens[start - 1], first=start == 1)
+            and modifier(terms, tokens[start - 1], first=start == 1)
         ):
             start -= 1
         said = tokens[start : m.start]
@@ -153,7 +153,7 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
             continue
         if authority:
             said = tokens[max(0, start - 1) : m.start] if reach != words else said
-        span = _span(msg, piece, said)
+        span = span_of(msg, piece, said)
         if span is not None:
             return Variant(m.ids[0], tuple(t.text for t in said), authority, *span)
     return None
@@ -202,7 +202,7 @@ def _made_here(terms: Terms, mention: Mention) -> bool:
     return len(mention.ids) == 1 and office.making(mention.ids[0]) is not None
 
 
-def _modifier(terms: Terms, token: Token, *, first: bool) -> bool:
+def modifier(terms: Terms, token: Token, *, first: bool) -> bool:
     """Whether a word before a product's name may modify it (not a determiner, a number, a
     verb that asks for it, a preposition, a pronoun); the first word of a piece in a verb's
     plain form is the verb ("run off box labels"), not a modifier."""
@@ -249,7 +249,7 @@ def _has(words: tuple[str, ...], phrase: tuple[str, ...]) -> bool:
     return any(words[k : k + n] == phrase for k in range(len(words) - n + 1))
 
 
-def _span(msg: Message, piece: Piece, said: tuple[Token, ...]) -> tuple[int, int] | None:
+def span_of(msg: Message, piece: Piece, said: tuple[Token, ...]) -> tuple[int, int] | None:
     pattern = r"[\s\W]*".join(re.escape(t.text) for t in said)
     found = re.compile(pattern).search(msg.text.replace("’", "'"), piece.start)
     return (found.start(), found.end()) if found else None
