@@ -480,7 +480,7 @@ class FrameReader:
             whom_asked
             or self._uncovered(objects, tasks)
             or (None if any_owner else self._whose_service(tasks, readings, requester))
-            or which_work(self.office, tasks, readings.mentions, requester)
+            or which_work(self.office, tasks, readings.mentions, requester, tokens)
             # "get my costume sorted" where the office mends costumes: fetch, or mend?
             or fetch_or_work(self.office, tasks, tokens, requester)
             # "heat up my lunch" from someone with no lunch here: said and asked

@@ -688,7 +688,8 @@ class InstructionParser:
                 # "do something with my prep" → "vacuum seal or blast chill?" → "vacuum
                 # seal": the work said, done to the item; anything else is asked again
                 meant = self.parse(with_work(text, answer), requester)
-                if meant.understood:
+                # "sign": the work said, its own question next ("Who should sign ...?")
+                if meant.understood or not (meant.question or WHICH_WORK).startswith(WHICH_WORK):
                     text, frame = with_work(text, answer), meant
                 continue
             named = with_item_answered(self.lex, self.office, text, frame.question or "", answer)

@@ -18,6 +18,14 @@ fetched it. One short question names both ("Shall I bring you your costume, or h
 mended?"); the answer that says the work ("mended", "mend it") is read as that work done to
 it, one that says bringing ("bring it", "just bring it") as the thing brought. Where no
 operation takes the thing, the reading is as before.
+
+The same vague work said as a participle right after the requester's own thing, under a verb
+of needing or getting ("I need my bowl sorted before the crit", "can you get my contract
+dealt with today"), wants work done to it, not the thing moved: the need or the "get" is no
+fetch (fixer fix60g class 2: the reader brought the thing back). Where two or more of the
+office's services take the thing, the question names them as above. The office's signable
+paper counts signing, and stamping with its seal where it has one, among its services
+("Which should I do with your document: copy, sign or seal?").
 """
 
 from __future__ import annotations
@@ -36,33 +44,66 @@ FETCH_OR_WORK = "Shall I bring you your "
 _FETCH_OR = re.compile(r"^Shall I bring you your .+?, or have it (?P<done>[\w-]+)\?$")
 # "sort out", "deal with", "see to": said of a thing, no work named
 _VAGUE = tuple(tuple(p.split()) for p in english.entries("vague_work"))
+# "my bowl *sorted*", "my contract *dealt with*": the work wanted, said after the thing
+_VAGUE_DONE = tuple(tuple(p.split()) for p in english.entries("vague_done"))
 # the answer that takes the bringing
 _BRINGING = frozenset({"bring", "fetch", "brought", "bringing", "fetched"})
 _POLITE_END = re.compile(r"[\s,]*(?:please|pls|thanks|thank you)?[\s.!?]*$", re.IGNORECASE)
 
 
 def which_work(
-    office: Office, tasks: Sequence[Task], mentions: Sequence[Mention], requester: str
+    office: Office,
+    tasks: Sequence[Task],
+    mentions: Sequence[Mention],
+    requester: str,
+    tokens: Sequence[Token] = (),
 ) -> str | None:
     """The question which operation is meant, when no word of the request asks for any work
-    and its one task would only bring the requester's own item back to them."""
-    if any(m.kind == "cue" for m in mentions) or len(tasks) != 1:
+    (or only a verb of needing or getting, with vague work said after the thing) and its one
+    task would only bring the requester's own item back to them."""
+    if len(tasks) != 1:
         return None
     [task] = tasks
     if task.kind != "transfer" or task.item is None:
         return None
     if not (task.owner == task.recipient == requester) or task.source is not None:
         return None
-    ops = [
-        op
-        for op in office.operations
-        if op.input == task.item and office.runnable(op.id) and not op.sends_out
-    ]
-    if len(ops) < 2:
+    cues = [m for m in mentions if m.kind == "cue"]
+    if cues and not (
+        all(m.ids == ("give",) for m in cues) and _done_after(task.item, mentions, tokens)
+    ):
         return None
-    names = [op.name for op in ops]
+    names = services_on(office, task.item)
+    if len(names) < 2:
+        return None
     name = office.item_type(task.item).name
     return f"{WHICH_WORK}{name}: {', '.join(names[:-1])} or {names[-1]}?"
+
+
+def services_on(office: Office, item: str) -> list[str]:
+    """The names of the office's services that take an item of type ``item``: its
+    operations on it, and signing and sealing where it is the office's signable paper."""
+    names = [
+        op.name
+        for op in office.operations
+        if op.input == item and office.runnable(op.id) and not op.sends_out
+    ]
+    if item == office.signable_type():
+        names.append("sign")
+        if office.seal_tool() is not None:
+            names.append("seal")
+    return names
+
+
+def _done_after(item: str, mentions: Sequence[Mention], tokens: Sequence[Token]) -> bool:
+    """Whether a participle of vague work follows the requester's own ``item`` at once ("my
+    bowl sorted", "my contract dealt with")."""
+    words = [t.word for t in tokens]
+    return any(
+        m.kind == "item" and item in m.ids and tuple(words[m.end : m.end + len(p)]) == p
+        for m in mentions
+        for p in _VAGUE_DONE
+    )
 
 
 def with_work(text: str, answer: str) -> str:
@@ -94,6 +135,8 @@ def fetch_or_work(
     ]
     if len(ops) != 1:
         return None  # two or more: ``which_work`` asks which
+    if len(services_on(office, task.item)) != 1:
+        return None  # signing or sealing besides: ``which_work`` asks which
     name = office.item_type(task.item).name
     return f"{FETCH_OR_WORK}{name}, or have it {language.past_participle(ops[0].verbs[0])}?"
 

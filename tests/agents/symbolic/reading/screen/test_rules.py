@@ -41,6 +41,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # what a told state rules out ("printer's down, so no printing")
         "negated",
         "destructive",  # an unsafe act: fire, a false alarm ("set light to Reed's banner")
+        "destructive",  # a running machine opened ("..., I know it's still brewing")
         "statement",  # what the speaker will do with the thing asked for ("..., need to eat it")
         "unsupported",  # a facility asked for work it does not do ("shred it in the printer")
         "unsupported",  # a test the office lacks, asked by a generic verb ("run an NMR on it")

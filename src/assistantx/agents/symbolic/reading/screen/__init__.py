@@ -18,6 +18,8 @@ thanks          "thanks for the pen!", "say thanks to Wang for the pen"         
 negated         "don't bring me ...", "no need to print ..."                        drops piece
 unsafe          "set light to Reed's banner", "set off the fire alarm", "torch      declines
                 Reed's banner" (not "bring me a torch")
+running_machine "get my mug out of the coffee machine while it's still brewing",     declines
+                "..., I know it's mid-job" (not "... once it's done")
 destructive     "throw away Wang's stapler", "hide ...", "get rid of ...",          declines
                 "chuck Reed's clipboard in the skip" (any verb, a waste container)
 unplaced        "stick Reed's clipboard in the van": a verb that is no errand, to   asks what

@@ -2,7 +2,8 @@
 on a preposition or an article, so where the thing goes (or whose it is) was never said. The
 later stages would fill the gap with the requester; instead it is asked, and the answer
 completes the sentence (``completed``). A preposition stranded by a clause of its own ("bring
-me the tray I asked for", "the battery Joss was talking about") ends a whole sentence."""
+me the tray I asked for", "the battery Joss was talking about") ends a whole sentence, and so
+does a participle of vague work ("can you get my pot seen to", ``reading.work_unsaid``)."""
 
 from __future__ import annotations
 
@@ -20,6 +21,8 @@ _CLAUSE = english.words("cut_off_clauses")
 # "because the visitor lost *his*": a possessive said for the owner's one, in a reason
 _REASONS = english.words("reason_conjunctions")
 _POSSESSIVES = frozenset({"his", "her", "their", "our", "your", "my"})
+# "my pot seen to", "my bike looked after": vague work said, ending on its particle
+_VAGUE_DONE = tuple(tuple(p.split()) for p in english.entries("vague_done"))
 
 
 def cut_off(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -28,6 +31,8 @@ def cut_off(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding
     last = piece.words[-1]
     if last not in _DANGLING or _named_last(piece):
         return None
+    if any(tuple(piece.words[-len(p) :]) == p for p in _VAGUE_DONE):
+        return None  # "can you get my pot seen to": work on it wanted, nothing left hanging
     if last in _POSSESSIVES and _REASONS.intersection(piece.words[:-1]):
         return None  # "I need scissors because the visitor lost his": his one, said why
     after_verb = piece.words[piece.verb_at(terms.en.lead_in) + 1 : -1]

@@ -71,6 +71,7 @@ from assistantx.agents.symbolic.reading.screen.question import question
 from assistantx.agents.symbolic.reading.screen.recipients_doing import recipients_doing
 from assistantx.agents.symbolic.reading.screen.recipients_reason import recipients_reason
 from assistantx.agents.symbolic.reading.screen.ruled_out_place import ruled_out_place
+from assistantx.agents.symbolic.reading.screen.running_machine import running_machine
 from assistantx.agents.symbolic.reading.screen.service import unsupported
 from assistantx.agents.symbolic.reading.screen.service_word_reason import service_word_reason
 from assistantx.agents.symbolic.reading.screen.someones_job import someones_job
@@ -153,6 +154,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", nothing_follows),
     ("negated", negated),
     ("destructive", unsafe),
+    # "get my mug out of the coffee machine while it's still brewing": declined in words
+    ("destructive", running_machine),
     # "..., need to eat it": what the speaker will do with the thing, before its verb is
     # read as a doing asked of me
     ("statement", own_use),

@@ -386,9 +386,11 @@ def _asked(terms: Terms, piece: Piece, said: str, thing: str) -> Finding | None:
 
 
 def _services_on(office: Office, thing: str) -> tuple[str, ...]:
-    """The first verb of each service the office runs on an item of ``thing``'s type."""
+    """The first verb of each service the office runs on an item of ``thing``'s type; its
+    signable paper is also signed, and sealed where it has a seal (``reading.work_unsaid``)."""
+    signing = ("sign", "seal") if office.seal_tool() is not None else ("sign",)
     return tuple(
         op.verbs[0].split()[0]
         for op in office.operations
         if op.input == thing and op.verbs and not op.sends_out and office.runnable(op.id)
-    )
+    ) + (signing if thing == office.signable_type() else ())
