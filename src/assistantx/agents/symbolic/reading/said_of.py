@@ -28,6 +28,8 @@ def said_of_item(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -
         return False
     if before in _DESCRIBING and earlier[-1].end != m.start - 1:
         return False  # "the stapler is here, a spare too": not right after the thing
+    if earlier[-1].end == m.start and _subject_of_a_verb(tokens, m.end):
+        return False  # "my poster proof needs the stamp": the compound's head, a thing
     return "ADJ" in language.lemmas(tokens[m.start].word)
 
 
@@ -39,3 +41,11 @@ def without_states(tokens: Sequence[Token], mentions: Sequence[Mention]) -> list
         else m
         for n, m in enumerate(mentions)
     ]
+
+
+def _subject_of_a_verb(tokens: Sequence[Token], at: int) -> bool:
+    """Whether a finite verb follows at ``at`` in the same clause: the words before it are
+    its subject's noun phrase, whose last noun is the thing ("poster *proof* needs")."""
+    if at >= len(tokens) or tokens[at].after_pause or tokens[at].opens:
+        return False
+    return language.is_finite_verb(tokens[at].word)

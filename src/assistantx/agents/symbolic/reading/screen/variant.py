@@ -194,7 +194,27 @@ def _named_for(tokens: tuple[Token, ...], mentions: tuple[Mention, ...], m: Ment
     after "for" ("make up a kit for my 10Y2 electrolysis practical"): the words there name
     what the thing is for (the lesson), not another kind of it."""
     earlier = [e for e in mentions if e.kind == "item" and e.ids == m.ids and e.end <= m.start]
-    return bool(earlier) and "for" in {t.word for t in tokens[earlier[0].end : m.start]}
+    if earlier and "for" in {t.word for t in tokens[earlier[0].end : m.start]}:
+        return True
+    return _what_another_is_for(tokens, mentions, m)
+
+
+def _what_another_is_for(
+    tokens: tuple[Token, ...], mentions: tuple[Mention, ...], m: Mention
+) -> bool:
+    """Whether the product is what another thing asked before it is for or used on: "a foam
+    board *to mount the RAG week poster*", "Drew's artwork *for the climbing soc banner*".
+    The words before it say which poster the other thing serves, never a kind of it to make."""
+    before = [e for e in mentions if e.kind == "item" and e.end <= m.start and e.ids != m.ids]
+    if not before:
+        return False
+    between = [t.word for t in tokens[before[-1].end : m.start]]
+    if "for" in between:
+        return True
+    return any(
+        w == "to" and k + 1 < len(between) and language.verb_lemmas(between[k + 1])
+        for k, w in enumerate(between)
+    )
 
 
 def _made_here(terms: Terms, mention: Mention) -> bool:
