@@ -981,8 +981,27 @@ class Lexicon:
                 measured = before.word.isdigit() and int(before.word) > 1 and not said.endswith("s")
                 if (owned and not self.office.owners_of(m.ids[0])) or measured:
                     m = Mention("word", m.start, m.end, (said,), m.possessive, m.text)
+                elif self._other_kind(before, m.ids[0]):
+                    m = Mention("word", m.start, m.end, (said,), m.possessive, m.text)
             out.append(m)
         return out
+
+    def _other_kind(self, before: Token, type_id: str) -> bool:
+        """ "a microfiche reader" where the office has a card reader: a noun before a head
+        read as a type (``head_names``) that none of the type's own names puts there says
+        another kind of the thing, one the office does not have; an adjective ("the new
+        reader") or a word of the office ("the sd reader") says which of its own."""
+        word = before.word
+        if before.possessive or word in _OWNED_BY or word in COMMON or self._known(word):
+            return False
+        t = self.office.item_type(type_id)
+        own = {w for n in (t.name, t.id.replace("_", " "), *t.synonyms) for w in key_of(n).split()}
+        if word in own or before.corrected:
+            return False
+        kinds = language.lemmas(word)
+        if not kinds:  # "barcode": a word in use the dictionary lacks names a kind too
+            return language.zipf(word) >= language.WORD_IN_USE_ZIPF
+        return "NOUN" in kinds and "ADJ" not in kinds
 
     def _exactly_spelled(self, tokens: Sequence[Token], mentions: list[Mention]) -> list[Mention]:
         """ "Tomás" beside Tomáš Novák: a name written with its diacritics means the people
