@@ -992,7 +992,9 @@ class Lexicon:
         another kind of the thing, one the office does not have; an adjective ("the new
         reader") or a word of the office ("the sd reader") says which of its own."""
         word = before.word
-        if before.possessive or word in _OWNED_BY or word in COMMON or self._known(word):
+        if not word.isalpha() or before.possessive or word in _OWNED_BY or word in COMMON:
+            return False  # "2 bars": a count, no kind
+        if self._known(word):
             return False
         t = self.office.item_type(type_id)
         own = {w for n in (t.name, t.id.replace("_", " "), *t.synonyms) for w in key_of(n).split()}

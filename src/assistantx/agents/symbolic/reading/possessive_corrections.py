@@ -76,19 +76,34 @@ class _Owner:
     stop: int | None
 
 
-def possessive_corrections(text: str, is_person: Callable[[str], bool]) -> str:
+def possessive_corrections(
+    text: str, is_person: Callable[[str], bool], one_name: Callable[[str], bool] | None = None
+) -> str:
     """``text`` with each sentence's bare possessive of a colleague that corrects or picks
     whose thing it asks for read as that thing's one owner (``is_person``: whether a word
-    names a colleague)."""
-    return "".join(_corrected(m.group(0), is_person) for m in _SENTENCE.finditer(text))
+    names a colleague; ``one_name``: whether words are one colleague's whole name, so that
+    "Tom Hughes's" is corrected whole)."""
+    whole = one_name or (lambda _: False)
+    return "".join(_corrected(m.group(0), is_person, whole) for m in _SENTENCE.finditer(text))
 
 
-def _owners(sentence: str, is_person: Callable[[str], bool]) -> list[_Owner]:
-    return [
-        _Owner(m.start(), m.end(), m.group("owner"), _bare_stop(sentence, m.end()))
-        for m in _POSSESSIVE.finditer(sentence)
-        if is_person(f"{m.group('owner')}'s")
-    ]
+# the word right before a possessive ("*Tom* Hughes's"): a given name said with the surname
+_WORD_BEFORE = re.compile(r"(?P<word>[^\W\d_]+)\s+$")
+
+
+def _owners(
+    sentence: str, is_person: Callable[[str], bool], one_name: Callable[[str], bool]
+) -> list[_Owner]:
+    out: list[_Owner] = []
+    for m in _POSSESSIVE.finditer(sentence):
+        if not is_person(f"{m.group('owner')}'s"):
+            continue
+        start = m.start()
+        before = _WORD_BEFORE.search(sentence[:start])
+        if before is not None and one_name(f"{before.group('word')} {m.group(0)}"):
+            start = before.start("word")  # "Tom Hughes's": the whole name is whose
+        out.append(_Owner(start, m.end(), m.group("owner"), _bare_stop(sentence, m.end())))
+    return out
 
 
 def _bare_stop(sentence: str, at: int) -> int | None:
@@ -129,8 +144,10 @@ def _opened(sentence: str, owner: _Owner) -> bool:
     return said.endswith(" but") or any(said.endswith(f" {m}") for m in _MARKERS)
 
 
-def _corrected(sentence: str, is_person: Callable[[str], bool]) -> str:
-    owners = _owners(sentence, is_person)
+def _corrected(
+    sentence: str, is_person: Callable[[str], bool], one_name: Callable[[str], bool]
+) -> str:
+    owners = _owners(sentence, is_person, one_name)
     chosen = [
         o
         for o in owners
@@ -149,7 +166,7 @@ def _corrected(sentence: str, is_person: Callable[[str], bool]) -> str:
         out = sentence
         for o in sorted(refused, key=lambda r: -r.start):
             out = _without_refusal(out, o)
-        return _corrected(out, is_person)
+        return _corrected(out, is_person, one_name)
     said_before = [o for o in owners if o.stop is None and o.end <= choice.start]
     assert choice.stop is not None
     if len(said_before) == 1:

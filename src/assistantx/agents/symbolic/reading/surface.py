@@ -777,7 +777,7 @@ STEPS: tuple[Step, ...] = (
     # e.g. "a stapler, not Wang's, Zhang's"
     Step(
         "possessive_corrections",
-        lambda s, t, a: possessive_corrections(t, s.is_person),
+        lambda s, t, a: possessive_corrections(t, s.is_person, s.terms.is_one_person),
     ),
     # Lee's pen, asked of Lee
     # e.g. "i need a pen. Lee's is fine"

@@ -372,7 +372,19 @@ def _last_said(names: set[str], text: str, *, with_s: bool = False) -> re.Match[
     pattern = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True))
     tail = r"(?P<s>['’]s\b)?" if with_s else r"\b"
     spots = list(re.finditer(rf"\b(?:{pattern}){tail}", text, re.IGNORECASE))
-    return spots[-1] if spots else None
+    if not spots:
+        return None
+    # "Tom Hughes's": a given name and a surname said one after the other are one name, all
+    # of it corrected (only "Hughes's" replaced left "Tom", whom the reader then asked about)
+    start = spots[-1].start()
+    for spot in reversed(spots[:-1]):
+        if spot.end() > start or text[spot.end() : start].strip() or spot.group(0).endswith("s"):
+            break
+        start = spot.start()
+    if start == spots[-1].start():
+        return spots[-1]
+    said = re.escape(text[start : spots[-1].start()])
+    return re.compile(rf"{said}(?:{pattern}){tail}", re.IGNORECASE).match(text, start)
 
 
 def _to_speaker(

@@ -160,6 +160,17 @@ class Terms:
         tokens = self.lex.tokens(word)
         return any(m.kind == "person" for m in self.lex.scan(tokens))
 
+    def is_one_person(self, phrase: str) -> bool:
+        """Whether ``phrase`` is one colleague's name, all of it ("Tom Hughes's"), not two
+        names side by side ("Tom Mai's")."""
+        tokens = self.lex.tokens(phrase)
+        mentions = self.lex.scan(tokens)
+        return (
+            len(mentions) == 1
+            and mentions[0].kind == "person"
+            and (mentions[0].start, mentions[0].end) == (0, len(tokens))
+        )
+
     def names_at(self, text: str) -> bool:
         """Whether ``text`` opens with a name of this office ("lunch box", "Sun Li"); a word
         that is only part of one ("box" of "lunch box") is not."""
