@@ -30,8 +30,8 @@ _PHRASE = re.compile(
     r"(?P<next>\s+[a-z]+)?",
     re.IGNORECASE,
 )
-# words after the -ing form that are no noun it modifies
-_NOT_NOUNS = (
+# words after a modifier that are no noun it modifies (``purpose_modifier`` reads with them)
+NOT_NOUNS = (
     english.words("prepositions_and_joins")
     | english.words("determiners")
     | english.words("pronouns")
@@ -61,10 +61,10 @@ def without_attributive_work(
         modifier, noun = match.group("modifier").lower(), match.group("noun").lower()
         if not language.verb_lemmas(modifier) & set(work_verbs):
             return match.group(0)
-        if noun in _NOT_NOUNS or (noun not in _PAPERS and "NOUN" not in language.lemmas(noun)):
+        if noun in NOT_NOUNS or (noun not in _PAPERS and "NOUN" not in language.lemmas(noun)):
             return match.group(0)
         after = (match.group("next") or "").strip().lower()
-        if after and after not in _NOT_NOUNS and "NOUN" in language.lemmas(after):
+        if after and after not in NOT_NOUNS and "NOUN" in language.lemmas(after):
             return match.group(0)  # "my cupping notes file": the head is later, read as it is
         said = f"{modifier} {noun}"
         if any(said in p or p == modifier for p in office_phrases):

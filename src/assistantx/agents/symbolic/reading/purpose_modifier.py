@@ -18,6 +18,7 @@ from __future__ import annotations
 import re
 from collections.abc import Collection
 
+from assistantx.agents.symbolic.reading.attributive_work import NOT_NOUNS
 from assistantx.core import english, language
 
 _DETERMINERS = "|".join(
@@ -27,19 +28,8 @@ _PHRASE = re.compile(
     rf"\bfor\s+(?P<det>(?:{_DETERMINERS})\s+)?(?P<modifier>[a-z]+)\s+(?P<noun>[a-z]+)\b",
     re.IGNORECASE,
 )
-# words after the modifier that are no noun it modifies
-_NOT_NOUNS = (
-    english.words("prepositions_and_joins")
-    | english.words("determiners")
-    | english.words("pronouns")
-    | english.words("copulas")
-    | english.words("modal_auxiliaries")
-    | english.words("state_tails")
-    | english.words("time_nouns")
-    | english.words("now_words")
-    | english.words("later_times")
-    | english.words("request_markers")
-)
+# words after the modifier that are no noun it modifies ("for the signature *please*")
+_NOT_NOUNS = NOT_NOUNS | english.words("request_markers")
 
 
 def without_purpose_modifier(
