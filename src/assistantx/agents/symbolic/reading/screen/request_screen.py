@@ -25,6 +25,7 @@ from assistantx.agents.symbolic.reading.screen.head_noun_back import head_noun_b
 from assistantx.agents.symbolic.reading.screen.hedges import without_hedges
 from assistantx.agents.symbolic.reading.screen.how_taken import how_taken
 from assistantx.agents.symbolic.reading.screen.later_service import without_later_service
+from assistantx.agents.symbolic.reading.screen.opened_machine import opened_to_take
 from assistantx.agents.symbolic.reading.screen.others_future_need import others_future_need
 from assistantx.agents.symbolic.reading.screen.owned_clipped import owned_clipped
 from assistantx.agents.symbolic.reading.screen.owned_head import owned_head
@@ -68,6 +69,7 @@ class RequestScreen:
         text, intro = self_introduction(terms.office, requester, text)  # "Bren here, ..."
         text, idioms = without_time_idioms(terms, text)  # "when you get a sec": no thing
         text, after = without_later_service(terms, text)  # "before it goes on the ESDA"
+        text, opened = opened_to_take(terms, text)  # "open the microwave and take my lunch out"
         text, later = others_future_need(terms, text)  # "Mark's going to need": Mark needs
         text, person = person_is(terms, text, requester)  # "Gao's busy and needs ...": is
         text, subject = named_subject(terms, text, requester)  # "Rose is wet, she needs ..."
@@ -96,6 +98,7 @@ class RequestScreen:
             *intro,
             *idioms,
             *after,
+            *opened,
             *later,
             *person,
             *subject,
