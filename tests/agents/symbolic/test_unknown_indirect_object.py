@@ -21,6 +21,8 @@ _frame = frame_reader(load_office, "sun")
         ("bring Tomasz the spare key", "Tomasz"),
         ("could you make Olu a coffee please", "Olu"),
         ("hand Ines some paper", "Ines"),
+        ("get Priya my stapler", "Priya"),  # the thing opened by whose it is
+        ("find Tomasz a seat", "Tomasz"),  # any verb that takes whom a thing is for
     ],
 )
 def test_an_unknown_receiver_is_asked(text: str, name: str) -> None:

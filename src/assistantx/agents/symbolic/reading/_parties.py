@@ -685,7 +685,7 @@ def _things_subject(tokens: Sequence[Token], k: int, at: int, people_at: frozens
 
 def _plural_noun(word: str) -> bool:
     """A plural the dictionary knows as a noun ("tangs", "seedlings")."""
-    return word.endswith("s") and language.is_noun(word) and language.is_plural_noun(word)
+    return word.endswith("s") and language.is_plural_noun(word)
 
 
 def _outsiders_in_hand(

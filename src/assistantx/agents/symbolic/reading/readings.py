@@ -590,10 +590,14 @@ def _unknown_name(
     )
 
 
-# "get Priya a coffee", "bring Tomasz the spare key": the verbs a thing is handed with, before
-# whom it is for and then the thing (its determiner or count)
-_GIVING = frozenset({"get", "bring", "give", "fetch", "grab", "make", "send", "hand", "pass"})
-_THING_OPENERS = frozenset({"a", "an", "the", "some", "one", "two", "another", "his", "her"})
+# "get Priya a coffee", "bring Tomasz the spare key": the verbs that take whom a thing is for
+# before the thing, and what opens the thing (its determiner or count)
+_GIVING = english.words("dative_verbs")
+_THING_OPENERS = (
+    english.words("object_starts")
+    | english.words("object_quantifiers")
+    | frozenset({"one", "another"})
+)
 
 
 def _given_to(tokens: Sequence[Token], m: Mention) -> bool:

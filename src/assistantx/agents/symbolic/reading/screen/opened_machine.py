@@ -29,9 +29,11 @@ def opened_to_take(terms: Terms, text: str) -> tuple[str, list[Evidence]]:
         machine = match.group("machine")
         said = re.sub(r"^the\s+", "", machine, flags=re.IGNORECASE)
         # read with its article: "microwave" alone is also the verb of heating
-        named = [m for m in terms.lex.read(f"the {said}").mentions if m.kind != "word"]
-        words = len(terms.lex.tokens(f"the {said}"))
-        if not (len(named) == 1 and named[0].kind == "facility" and named[0].end == words):
+        lexed = terms.lex.read(f"the {said}")
+        named = [m for m in lexed.mentions if m.kind != "word"]
+        if not (
+            len(named) == 1 and named[0].kind == "facility" and named[0].end == len(lexed.tokens)
+        ):
             return match.group(0)
         out = f"{match.group('verb')} {match.group('thing')} out of the {said}"
         found.append(Evidence(words=match.group(0), meaning=out))

@@ -84,13 +84,13 @@ def said_as_declared(said: str, declared: str) -> bool:
 # "cut my pots off" of a declared "cut off": the object of a phrasal verb said between the verb
 # and its particle, as English puts a noun object there; up to this many words of it
 _SPLIT_OBJECT = 2
-_PARTICLES = frozenset({"off", "up", "out", "down", "away", "back", "over", "apart", "open"})
+PARTICLES = frozenset({"off", "up", "out", "down", "away", "back", "over", "apart", "open"})
 
 
 def _split_particle(words: tuple[str, ...], wanted: tuple[str, ...]) -> bool:
     """Whether ``words`` are the declared phrasal verb ``wanted`` ("cut off") with an object
     between its verb and its particle ("cut pot off")."""
-    if len(wanted) != 2 or wanted[1] not in _PARTICLES:
+    if len(wanted) != 2 or wanted[1] not in PARTICLES:
         return False
     between = words[1:-1]
     return (

@@ -20,6 +20,7 @@ from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.own_one import own_ones
 from assistantx.agents.symbolic.reading.screen.pieces import Message
 from assistantx.agents.symbolic.reading.screen.purpose_object import (
+    PARTICLES,
     noun_only,
     object_nouns,
     purpose_words,
@@ -560,10 +561,6 @@ _POSSESSIVE = re.compile(r"['’]s$")
 _OBJECT_OPENERS = english.words("object_starts") | frozenset({"that"})
 
 
-# The particles a phrasal verb's purpose ends in ("cut off"), said after its object
-_PARTICLE_ENDS = frozenset({"off", "up", "out", "down", "away", "back", "over", "apart", "open"})
-
-
 # A possessive right before the purpose's head: "her thing for ...", "Isla's gadget for ...".
 _OWNER_BEFORE = re.compile(r"(?:\b(?:my|our|your|his|her|their)|[^\W\d_]['’]s?)\s+$", re.IGNORECASE)
 
@@ -602,7 +599,7 @@ def purposes(terms: Terms, text: str, *, unmet: bool = False) -> tuple[str, list
     with_at = next(
         (j for j in range(keep, min(len(tail), keep + 4)) if tail[j].lower() == "with"), None
     )
-    if keep and with_at is not None and tail[keep - 1].lower() in _OBJECT_OPENERS | _PARTICLE_ENDS:
+    if keep and with_at is not None and tail[keep - 1].lower() in _OBJECT_OPENERS | PARTICLES:
         # "anything I can trim *this ribbon with*", "to cut my pots off *the wheel with*": the
         # rest, up to the tool's "with", says what it works on and where
         keep = with_at + 1
