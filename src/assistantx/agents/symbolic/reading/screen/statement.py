@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from assistantx.agents.symbolic.reading._objects import modifiers
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK, obliged_to, obliged_verb
+from assistantx.agents.symbolic.reading.screen.english import starts_with
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.terms import Terms
@@ -384,6 +385,8 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
                 whose = f"{terms.office.person(next(iter(people))[0]).name}'s"
         elif (holder := holder_of(mentions, n, words)) is not None:
             whose = _whose_name(terms, holder)  # "Bram has a stopwatch"
+        elif (giver := _leave_giver(terms, mentions, n, words)) is not None:
+            whose = _whose_name(terms, giver)  # "Baker said I could borrow the cake knife"
         else:
             for k in range(len(words) - 1):
                 if words[k : k + 2] == ["belongs", "to"]:
@@ -507,6 +510,27 @@ def holder_of(mentions: Sequence[Mention], n: int, words: list[str]) -> Mention 
     return people[0] if verb and verb[0] in _POSSESSION_VERBS else None
 
 
+def _leave_giver(
+    terms: Terms, mentions: Sequence[Mention], n: int, words: list[str]
+) -> Mention | None:
+    """The one colleague a statement reports as letting the speaker have "the" thing
+    ("Baker said I could borrow *the* cake knife"), where they own one of that kind: the
+    thing they let the speaker have is theirs, so a later "it" is theirs, not anyone's (which
+    fetched another colleague's). Where they own none, "the" is the office's shared one."""
+    item = mentions[n]
+    if item.start == 0 or words[item.start - 1] != "the":
+        return None
+    people = [m for m in mentions[:n] if m.kind == "person"]
+    if len(people) != 1 or people[0].possessive:
+        return None
+    between = words[people[0].end : item.start - 1]
+    if not any(starts_with(between, 0, mark) for mark in _REPORTED_LEAVES):
+        return None
+    if not set(people[0].ids) & set(terms.office.owners_of(item.ids[0])):
+        return None
+    return people[0]  # a name several people share is asked about ("Yang's book")
+
+
 def _whose_name(terms: Terms, person: Mention) -> str:
     """The owner a statement names, for the rewritten request: the person's full name, or,
     where the name is several people's ("Robin's" with two Robins), the name as written, so
@@ -522,6 +546,7 @@ def _phrases(key: str) -> tuple[tuple[str, ...], ...]:
 
 
 _LACKS = _phrases("lack_marks")
+_REPORTED_LEAVES = _phrases("reported_leave_marks")
 _LACK_PLACES = _phrases("lack_place_openers")
 _HOMES = english_words("home_nouns")
 _HOME_DETERMINERS = frozenset({"my", "our", "the", "his", "her"})
