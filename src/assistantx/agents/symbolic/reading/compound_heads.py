@@ -36,6 +36,8 @@ _DOCUMENT_NOUNS = (
 ) - english.words("electronic_formats")
 # A unit after an item's name measures the item ("a scissors pair"): not a head of its own.
 _UNITS = english.words("portion_words") | english.words("unit_nouns")
+# "dye my trousers *navy*": a colour after a name says its colour, no head it modifies
+_COLOURS = english.words("colour_names")
 # Words that open a clause of their own ("a radio *cause* ..."), though also nouns.
 _OPENERS = english.words("reason_conjunctions") | english.words("clause_breaks")
 # "a stopwatch *i* can borrow": a pronoun starts a clause of its own (the dictionary lists
@@ -180,5 +182,6 @@ def compound_noun(t: Token, known: Callable[[str], bool], *, verb_too: bool = Fa
     if word in _DOCUMENT_NOUNS and not language.is_finite_verb(word):
         return True  # "the coffee rota", "the sample log": a paper or file by its topic
     parts = language.lemmas(word)
-    describes = "ADV" in parts or "ADJ" in parts  # "real quick", "home", "back"
+    # "real quick", "home", "back", and a colour ("navy")
+    describes = "ADV" in parts or "ADJ" in parts or word in _COLOURS
     return "NOUN" in parts and not describes and (verb_too or not language.is_finite_verb(word))

@@ -78,6 +78,7 @@ _WAYS_OF = frozenset({"my", "our", "his", "her", "their", "your"})
 _OPENING = english.words("determiners") - {"me"}
 # The determiners that say a particular thing, one there already to work on ("*the* desk")
 _DEFINITE = frozenset({"the", "this", "that", "these", "those"})
+_PARTICULAR = _DEFINITE | _POSSESSIVES
 _NAME_REACH = 3  # the words of a thing's name after "the": "the Amati copy", "the old desk"
 _WORDS = re.compile(r"\b[^\W\d_][\w'’-]*")
 # Where a thing is put, said after it ("chuck my prunings *in* the compost", "*on* charge"):
@@ -131,7 +132,9 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
         # "lacquer the violin for me": a verb with no particle on a thing said definitely is
         # work on that thing, the speaker its beneficiary ("track down a stapler for me" gets
         # one, as before)
-        worked = not particle and bool(lexed.tokens) and lexed.tokens[0].word in _DEFINITE
+        # "polish my boots", "engrave my ring for the customer": the speaker's own thing is
+        # as particular, there already to be worked on
+        worked = not particle and bool(lexed.tokens) and lexed.tokens[0].word in _PARTICULAR
         if not _object_first(lexed) or _goes_somewhere(lexed, for_self=worked):
             return None
         if tossed and not _colleagues_first(lexed, requester):
@@ -331,8 +334,9 @@ def _named_thing(lexed: Lexed, names: frozenset[str]) -> bool:
     if any(m.kind in ("person", "place", "facility") for m in lexed.mentions):
         return False
     said = [t.word for t in lexed.tokens[1:]]
-    if said[-2:] in (["for", "me"], ["for", "us"]):
-        said = said[:-2]  # "varnish the desk for me": the speaker its beneficiary
+    if "for" in said[1:]:
+        # "varnish the desk for me", "engrave my ring for the customer": whom it is done for
+        said = said[: said.index("for")]
     # the noun phrase alone, never a clause after it ("let the Gaffer sign my form")
     return 0 < len(said) <= _NAME_REACH and all(w in names or language.is_noun(w) for w in said)
 
