@@ -36,7 +36,7 @@ def test_work_nothing_here_does_on_ones_own_thing_is_declined(text: str, verb: s
 @pytest.mark.parametrize(
     ("text", "item", "owner", "recipient"),
     [
-        ("can you grab my stapler for me", "stapler", "lee", "lee"),  # a known errand verb
+        ("can you grab Zhang's stapler for me", "stapler", "zhang", "lee"),  # a known errand verb
         ("bring me the navy mug", "cup", None, "lee"),  # a colour before the name
         ("can you take my stapler to Wang", "stapler", "lee", "wang"),
     ],
@@ -51,5 +51,5 @@ def test_errands_and_colours_before_a_name_read_as_before(
 
 
 def test_a_colour_after_a_name_is_no_compound_head() -> None:
-    frame = _frame("can you bring me my stapler, the navy one")
-    assert [(t.item, t.owner) for t in frame.tasks] == [("stapler", "lee")], frame
+    frame = _frame("can you bring me Zhang's stapler, the navy one")
+    assert [(t.item, t.owner) for t in frame.tasks] == [("stapler", "zhang")], frame
