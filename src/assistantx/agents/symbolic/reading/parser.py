@@ -149,6 +149,7 @@ from assistantx.agents.symbolic.reading.screen.cut_off import completed
 from assistantx.agents.symbolic.reading.screen.findings import Request, Screened, Spoken
 from assistantx.agents.symbolic.reading.screen.judge import answered_frame, judge
 from assistantx.agents.symbolic.reading.screen.kept import chosen_kept
+from assistantx.agents.symbolic.reading.screen.one_of_several import chosen_of_several
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.screen.recipients_doing import ASIDES
@@ -777,6 +778,11 @@ class InstructionParser:
             kept = chosen_kept(self.screen.terms, text, answer)
             if kept is not None:  # "do you mean the lunch box or the worn book?"
                 text = kept
+                frame = self.parse(text, requester)
+                continue
+            picked = chosen_of_several(self.screen.terms, text, answer)
+            if picked is not None:  # "one of Sunny's tools": "do you mean the pump or ...?"
+                text = picked
                 frame = self.parse(text, requester)
                 continue
             chosen = self._chosen_reading(text, answer)

@@ -40,6 +40,7 @@ from assistantx.agents.symbolic.reading.screen.negation import negated
 from assistantx.agents.symbolic.reading.screen.note import note
 from assistantx.agents.symbolic.reading.screen.nothing_follows import nothing_follows
 from assistantx.agents.symbolic.reading.screen.on_a_thing import on_a_thing
+from assistantx.agents.symbolic.reading.screen.one_of_several import several_of_theirs
 from assistantx.agents.symbolic.reading.screen.opinion import opinion
 from assistantx.agents.symbolic.reading.screen.ordering import ordering
 from assistantx.agents.symbolic.reading.screen.others_doing import others_doing
@@ -223,6 +224,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("statement", fyi),  # after the statements that say more ("Thanks for telling me ...")
     ("statement", preamble),  # a told sentence no rule above read, before a request
     ("which", several_kept),
+    # "one of Sunny's tools" where Sunny has a pump, a multitool and levers: which, asked
+    ("which", several_of_theirs),
     ("unsupported", variant),
     # "fire my jug in the raku kiln" where the office has one plain kiln: asked, never run on
     # the office's one
