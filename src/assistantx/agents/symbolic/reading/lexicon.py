@@ -491,6 +491,9 @@ class Lexicon:
                 # "give it to the curator" (of "Curator Moreau"): a rank is a role, said in
                 # lower case too, as "the manager" of "Manager Mao" is
                 lex.roles.setdefault(phrase, set()).update(holders)
+        # a name as the office writes it first, then the forms made from names: "scales" named
+        # for the weighing scales is never the plural of another thing's "scale"
+        derived: list[tuple[str, str]] = []
         for t in office.item_types:
             for name in (t.id.replace("_", " "), t.name, *t.synonyms):
                 key = key_of(name) or _title_word(name)  # "ms" for a manuscript
@@ -503,8 +506,8 @@ class Lexicon:
                 # "carpenters rule": a possessive word of the name written without its
                 # apostrophe, as people type it ("carpenter's rule")
                 bare = key_of(unapostrophed(name))
+                lex.items.setdefault(key, t.id)
                 for variant in (
-                    key,
                     _plural(key),
                     head_plural,
                     joined,
@@ -512,7 +515,9 @@ class Lexicon:
                     bare if bare != key else "",
                 ):
                     if variant:
-                        lex.items.setdefault(variant, t.id)
+                        derived.append((variant, t.id))
+        for variant, type_id in derived:
+            lex.items.setdefault(variant, type_id)
         lex.everyday_verbs = lex._everyday_names(office, ops)
         for f in office.facilities:
             for name in (f.name, *f.synonyms, f.id.replace("_", " ")):

@@ -114,6 +114,7 @@ from assistantx.agents.symbolic.reading.speech import content
 from assistantx.agents.symbolic.reading.taken_for_keeper import kept_services, taken_for_keeper
 from assistantx.agents.symbolic.reading.taken_for_service import taken_for_service
 from assistantx.agents.symbolic.reading.thing_for_thing import ThingForThing
+from assistantx.agents.symbolic.reading.thing_wants import without_thing_wants
 from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.undone_service import UndoneService
@@ -179,6 +180,11 @@ class Surface:
         self.lex = lex
         self.terms = terms
         self.is_person = terms.is_person_word  # whether a word names a colleague
+        # the words of the names of the office's machines and places, and of its work, and
+        # the one-word names of its things ("storybook"; never "register" of "finds register")
+        self.machine_words = frozenset(
+            w for name in (*lex.facilities, *lex.places, *lex.cue_words) for w in name.split()
+        ) | frozenset(name for name in lex.items if " " not in name)
         self.steps = STEPS
         self.something_from = SomethingFrom(office)  # "something from the vending machine"
         # "a mug from the coffee machine": a listed vessel of what the machine pours
@@ -536,6 +542,12 @@ STEPS: tuple[Step, ...] = (
     Step(
         "format_reasons",
         lambda s, t, a: without_format_reasons(t, s.is_person),
+    ),
+    # what a record wants, why it is asked: no one to hand anything to
+    # e.g. "bring me a stapler, the register wants everything bagged"
+    Step(
+        "thing_wants",
+        lambda s, t, a: without_thing_wants(t, s.is_person, s.machine_words),
     ),
     # Wang does the work
     # e.g. "can my document go to Wang to be signed?"

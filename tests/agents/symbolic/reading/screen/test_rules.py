@@ -87,6 +87,7 @@ def test_the_rules_in_priority_order() -> None:
         "statement",  # told for information beside a tag ("..., just so you know")
         "statement",  # a told sentence before a request that names its own thing
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
+        "which",  # one of a colleague's several things by a word for a kind ("one of X's tools")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
         "instead",  # a kind of machine the office lacks ("the raku kiln"): asked
         "unsupported",  # a service nothing here offers, before an outsider is asked about

@@ -619,6 +619,8 @@ def purposes(terms: Terms, text: str, *, unmet: bool = False) -> tuple[str, list
             keep += 1
         if keep < len(tail) and tail[keep].lower() == "with":
             keep += 1
+    if keep:
+        keep = _past_contents(tail, keep)
     used_tail = " ".join(tail[:keep])
     end = match.start(2) + (
         len(match.group(2)) - len(match.group(2).lstrip()) + len(used_tail) if keep else 0
@@ -663,6 +665,31 @@ def _without_object(text: str, at: int, evidence: list[Evidence]) -> tuple[str, 
 
 
 _PHRASE_ENDS = english.words("common")
+
+
+# What a purpose's object may end on, said last ("something to weigh this bag on"): the thing
+# found is what it is done on or with, never a word of its own
+_STRANDED = frozenset({"on", "in", "into", "onto", "under", "with", "over"})
+_CONTENT_DETERMINERS = frozenset({"the", "my", "our", "these", "those", "this", "that"})
+
+
+def _past_contents(tail: list[str], keep: int) -> int:
+    """``keep`` moved past what the purpose's object holds ("this bag *of nails*": the nails
+    are weighed in their bag, never a thing asked for) and past a preposition left at the
+    end ("to weigh this bag of nails *on*")."""
+    while keep + 1 < len(tail) and tail[keep].lower() == "of":
+        k = keep + 1
+        if tail[k].lower() in _CONTENT_DETERMINERS:
+            k += 1
+        w = tail[k].lower() if k < len(tail) else ""
+        if not w.isalpha() or w in _PHRASE_ENDS or not language.is_noun(w):
+            break  # "of" then a noun ("coins", also a verb's form): what the object holds
+        keep = k + 1
+        while keep < len(tail) and _more_of_the_noun(tail[keep - 1], tail[keep]):
+            keep += 1
+    if keep == len(tail) - 1 and tail[keep].lower() in _STRANDED:
+        keep += 1
+    return keep
 
 
 def _bare_object(word: str) -> bool:
